@@ -1,0 +1,250 @@
+//! The command line (SPEC §4): clap definitions, dispatch by precision, and
+//! the single place where a report or an error is printed.
+
+use crate::commands;
+use crate::error::{Error, Result};
+use crate::num::Precision;
+use crate::report::{Report, Style};
+use clap::{Args, Parser, Subcommand};
+use std::ffi::OsString;
+use std::path::PathBuf;
+
+/// grafika — worked solutions for the 3D viewing pipeline and shading.
+#[derive(Parser, Debug)]
+#[command(name = "grafika", version, about, long_about = None, propagate_version = true)]
+pub struct Cli {
+    /// Output and precision options.
+    #[command(flatten)]
+    pub common: Common,
+    /// What to compute.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// Options every calculator command takes.
+#[derive(Args, Debug, Clone)]
+pub struct Common {
+    /// Arithmetic: exact (sums of surds, with decimals), f64 or f32.
+    #[arg(long, value_enum, default_value_t = Precision::Exact, global = true)]
+    pub precision: Precision,
+    /// Significant digits of the decimals shown.
+    #[arg(long, default_value_t = 4, global = true, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
+    /// Print one JSON object (SPEC §3) instead of the worked solution.
+    #[arg(long, global = true)]
+    pub json: bool,
+}
+
+/// The subcommands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Camera basis u, v, n from eye, look-at point and up vector.
+    Basis(CameraArgs),
+    /// View matrix and eye coordinates of world points.
+    View {
+        #[command(flatten)]
+        camera: CameraArgs,
+        /// A world point NAME=X,Y,Z (repeatable).
+        #[arg(long = "point", value_name = "NAME=X,Y,Z", allow_hyphen_values = true)]
+        points: Vec<String>,
+    },
+    /// Perspective or orthographic projection of eye-coordinate points.
+    Project(ProjectArgs),
+    /// Viewing window from fovy/aspect/near, and the viewport mapping.
+    Window(WindowArgs),
+    /// 3D line clipping with 6-bit outcodes (cross-checked by Liang–Barsky).
+    Clip(ClipArgs),
+    /// A whole problem from a TOML file.
+    Solve {
+        /// The problem file.
+        file: PathBuf,
+    },
+}
+
+/// The camera flags.
+#[derive(Args, Debug)]
+pub struct CameraArgs {
+    /// Eye position Pe, X,Y,Z.
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub eye: String,
+    /// Look-at (reference) point Pr, X,Y,Z.
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub look: String,
+    /// Up vector Vup, X,Y,Z.
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub up: String,
+}
+
+/// The projection flags.
+#[derive(Args, Debug)]
+pub struct ProjectArgs {
+    /// Centre of projection at the origin, view plane z = D.
+    #[arg(long, allow_hyphen_values = true, value_name = "D")]
+    pub d: Option<String>,
+    /// Centre of projection at z = ZPRP on the z axis (general form, with --plane).
+    #[arg(long, allow_hyphen_values = true, value_name = "ZPRP")]
+    pub cop: Option<String>,
+    /// View plane z = ZVP (general form, with --cop).
+    #[arg(long, allow_hyphen_values = true, value_name = "ZVP")]
+    pub plane: Option<String>,
+    /// Orthographic projection (xp = x, yp = y, zp = 0).
+    #[arg(long)]
+    pub ortho: bool,
+    /// An eye-coordinate point NAME=X,Y,Z (repeatable).
+    #[arg(long = "point", value_name = "NAME=X,Y,Z", allow_hyphen_values = true)]
+    pub points: Vec<String>,
+}
+
+/// The window flags.
+#[derive(Args, Debug)]
+pub struct WindowArgs {
+    /// Vertical field of view (degrees; append `rad` for radians).
+    #[arg(long, allow_hyphen_values = true)]
+    pub fovy: String,
+    /// Aspect ratio width/height.
+    #[arg(long, allow_hyphen_values = true)]
+    pub aspect: String,
+    /// Distance to the near plane.
+    #[arg(long, allow_hyphen_values = true)]
+    pub near: String,
+    /// Distance to the far plane (adds the far-plane window).
+    #[arg(long, allow_hyphen_values = true)]
+    pub far: Option<String>,
+    /// Viewport size in pixels, WxH.
+    #[arg(long, value_name = "WxH")]
+    pub viewport: Option<String>,
+    /// A projected point NAME=X,Y on the near plane (repeatable; needs --viewport).
+    #[arg(long = "point", value_name = "NAME=X,Y", allow_hyphen_values = true)]
+    pub points: Vec<String>,
+}
+
+/// The clipping flags.
+#[derive(Args, Debug)]
+pub struct ClipArgs {
+    /// Box corner (xmin, ymin, zmin).
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub min: String,
+    /// Box corner (xmax, ymax, zmax).
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub max: String,
+    /// Segment start P0.
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub from: String,
+    /// Segment end P1.
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub to: String,
+}
+
+/// Runs a generic command at the precision asked for.
+macro_rules! at_precision {
+    ($p:expr, $f:ident ( $($arg:expr),* )) => {
+        match $p {
+            Precision::Exact => $f::<crate::num::Real>($($arg),*),
+            Precision::F64 => $f::<f64>($($arg),*),
+            Precision::F32 => $f::<f32>($($arg),*),
+        }
+    };
+}
+
+/// Runs one parsed command line.
+pub fn run(cli: &Cli) -> Result<Report> {
+    let p = cli.common.precision;
+    match &cli.command {
+        Command::Basis(c) => at_precision!(p, basis(c)),
+        Command::View { camera, points } => at_precision!(p, view(camera, points)),
+        Command::Project(a) => at_precision!(p, project(a)),
+        Command::Window(a) => at_precision!(p, window(a)),
+        Command::Clip(a) => at_precision!(p, clip(a)),
+        Command::Solve { file } => at_precision!(p, solve(file)),
+    }
+}
+
+fn basis<T: crate::num::Scalar>(c: &CameraArgs) -> Result<Report> {
+    commands::basis::<T>(c)
+}
+fn view<T: crate::num::Scalar>(c: &CameraArgs, pts: &[String]) -> Result<Report> {
+    commands::view::<T>(c, pts)
+}
+fn project<T: crate::num::Scalar>(a: &ProjectArgs) -> Result<Report> {
+    commands::project::<T>(a)
+}
+fn window<T: crate::num::Scalar>(a: &WindowArgs) -> Result<Report> {
+    commands::window::<T>(a)
+}
+fn clip<T: crate::num::Scalar>(a: &ClipArgs) -> Result<Report> {
+    commands::clip::<T>(a)
+}
+fn solve<T: crate::num::Scalar>(file: &std::path::Path) -> Result<Report> {
+    crate::solve::solve_file::<T>(file)
+}
+
+/// Parses the arguments, runs, prints; returns the exit status (0, or 2 for
+/// any error).
+pub fn main_with_args(args: Vec<OsString>) -> i32 {
+    let wants_json = args.iter().any(|a| a == "--json");
+    let cli = match Cli::try_parse_from(&args) {
+        Ok(c) => c,
+        Err(e) => {
+            use clap::error::{ContextKind, ErrorKind};
+            if matches!(
+                e.kind(),
+                ErrorKind::DisplayHelp
+                    | ErrorKind::DisplayVersion
+                    | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+            ) {
+                let _ = e.print();
+                return if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+                    2
+                } else {
+                    0
+                };
+            }
+            let field = e
+                .get(ContextKind::InvalidArg)
+                .map(|v| v.to_string())
+                .unwrap_or_else(|| "arguments".to_string());
+            let message = e.kind().to_string();
+            return report_error(
+                &Error::new(field, message),
+                wants_json,
+                Some(e.render().to_string()),
+            );
+        }
+    };
+    match run(&cli) {
+        Ok(report) => {
+            for w in &report.warnings {
+                eprintln!("warning: {w}");
+            }
+            if cli.common.json {
+                println!(
+                    "{}",
+                    serde_json::to_string_pretty(&report.to_json()).unwrap_or_default()
+                );
+            } else {
+                let style = Style {
+                    digits: cli.common.digits as usize,
+                    exact_mode: cli.common.precision == Precision::Exact,
+                };
+                print!("{}", report.to_text(&style));
+            }
+            0
+        }
+        Err(e) => report_error(&e, cli.common.json, None),
+    }
+}
+
+/// Prints an error (stderr; and JSON on stdout with `--json`), returns 2.
+fn report_error(e: &Error, json: bool, long: Option<String>) -> i32 {
+    match long {
+        Some(text) => eprint!("{text}"),
+        None => eprintln!("error: {e}"),
+    }
+    if json {
+        println!(
+            "{}",
+            serde_json::json!({ "error": { "field": e.field, "message": e.message } })
+        );
+    }
+    2
+}

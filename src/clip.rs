@@ -1,0 +1,419 @@
+//! 3D clipping against an axis-aligned box: 6-bit outcodes (the text's region
+//! codes), the text's outcode line clipping (intersect with each violated
+//! plane, keep intersections whose own code is 000000), and Liang–Barsky as
+//! an independent cross-check.
+
+use crate::error::{Error, Result};
+use crate::num::Scalar;
+use crate::trace::{Step, Trace, Val};
+use crate::vec::{self, V3};
+
+/// The box xmin ≤ x ≤ xmax, ymin ≤ y ≤ ymax, zmin ≤ z ≤ zmax (boundary inside).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ClipBox<T> {
+    /// (xmin, ymin, zmin).
+    pub min: V3<T>,
+    /// (xmax, ymax, zmax).
+    pub max: V3<T>,
+}
+
+impl<T: Scalar> ClipBox<T> {
+    /// Checks min ≤ max on every axis.
+    pub fn validate(&self) -> Result<()> {
+        for (k, axis) in ["x", "y", "z"].iter().enumerate() {
+            if self.min[k] > self.max[k] {
+                return Err(Error::new(
+                    "min",
+                    format!(
+                        "{axis}min = {} is greater than {axis}max = {}",
+                        self.min[k].to_f64(),
+                        self.max[k].to_f64()
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The outcome of clipping a segment.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Status {
+    /// Both ends inside: kept whole.
+    Accepted,
+    /// Nothing of it inside.
+    Rejected,
+    /// Cut to the part inside.
+    Clipped,
+}
+
+impl Status {
+    /// The SPEC's word for it.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Status::Accepted => "accepted",
+            Status::Rejected => "rejected",
+            Status::Clipped => "clipped",
+        }
+    }
+}
+
+/// The result of clipping P0P1.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Clipped<T> {
+    /// Outcode of P0.
+    pub code0: u8,
+    /// Outcode of P1.
+    pub code1: u8,
+    /// Accepted, rejected or clipped.
+    pub status: Status,
+    /// The part inside, in the direction P0 → P1.
+    pub segment: Option<(V3<T>, V3<T>)>,
+}
+
+/// The six planes in bit order: (bit index 0..6, axis, is_max, name).
+pub const PLANES: [(usize, bool, &str, &str); 6] = [
+    (0, false, "x = xmin", "kiri (left)"),
+    (0, true, "x = xmax", "kanan (right)"),
+    (1, false, "y = ymin", "bawah (bottom)"),
+    (1, true, "y = ymax", "atas (top)"),
+    (2, false, "z = zmin", "depan (front)"),
+    (2, true, "z = zmax", "belakang (back)"),
+];
+
+/// The 6-bit outcode: bit 1 (rightmost) x < xmin, bit 2 x > xmax, bit 3
+/// y < ymin, bit 4 y > ymax, bit 5 z < zmin, bit 6 z > zmax.
+pub fn outcode<T: Scalar>(b: &ClipBox<T>, p: &V3<T>) -> u8 {
+    let mut c = 0u8;
+    for (bit, &(axis, is_max, _, _)) in PLANES.iter().enumerate() {
+        let out = if is_max {
+            p[axis] > b.max[axis]
+        } else {
+            p[axis] < b.min[axis]
+        };
+        if out {
+            c |= 1 << bit;
+        }
+    }
+    c
+}
+
+/// An outcode written bit 6 first, as the text writes it (`001001`).
+pub fn code_str(c: u8) -> String {
+    format!("{c:06b}")
+}
+
+/// Clips the segment P0P1 to the box the text's way:
+///
+/// P(t) = P0 + t·(P1 − P0), 0 ≤ t ≤ 1. Both codes 000000: accept;
+/// code0 AND code1 ≠ 0: reject; otherwise intersect with each plane an
+/// endpoint violates (t = (plane − P0)/(P1 − P0) on that axis) and keep the
+/// intersections whose own code is 000000; the kept points and the inside
+/// endpoints bound the clipped segment.
+pub fn clip_segment<T: Scalar>(
+    b: &ClipBox<T>,
+    p0: &V3<T>,
+    p1: &V3<T>,
+    tr: &mut impl Trace,
+) -> Clipped<T> {
+    // Compute outcodes for both endpoints
+    let (code0, code1) = (outcode(b, p0), outcode(b, p1));
+    tr.step(|| code_step("P0", b, p0, code0));
+    tr.step(|| code_step("P1", b, p1, code1));
+    let and = code0 & code1;
+    tr.step(|| {
+        Step::new(
+            "Trivial tests",
+            "both codes 000000 → accept;  code0 AND code1 ≠ 000000 → reject;  otherwise clip",
+        )
+        .val("code0", Val::text(code_str(code0)))
+        .val("code1", Val::text(code_str(code1)))
+        .res("code0 AND code1", Val::text(code_str(and)))
+        .note(if code0 | code1 == 0 {
+            "both ends inside: accepted whole"
+        } else if and != 0 {
+            "both ends outside the same plane: rejected"
+        } else {
+            "neither test decides: intersect with the planes the ends violate"
+        })
+    });
+    if code0 | code1 == 0 {
+        return Clipped {
+            code0,
+            code1,
+            status: Status::Accepted,
+            segment: Some((p0.clone(), p1.clone())),
+        };
+    }
+    if and != 0 {
+        return Clipped {
+            code0,
+            code1,
+            status: Status::Rejected,
+            segment: None,
+        };
+    }
+
+    // Intersect with every plane one endpoint violates
+    let delta = vec::sub(p1, p0);
+    let mut kept: Vec<(T, V3<T>)> = Vec::new();
+    for (bit, &(axis, is_max, plane, name)) in PLANES.iter().enumerate() {
+        if (code0 | code1) & (1 << bit) == 0 {
+            continue;
+        }
+        let bound = if is_max { &b.max[axis] } else { &b.min[axis] };
+        // delta[axis] ≠ 0: exactly one end is outside this plane.
+        let t = (bound.clone() - p0[axis].clone()) / delta[axis].clone();
+        let mut q = vec::add(p0, &vec::scale(&delta, &t));
+        q[axis] = bound.clone(); // on the plane exactly, whatever the rounding
+        let c = outcode(b, &q);
+        tr.step(|| {
+            Step::new(
+                format!("Intersection with the {name} plane {plane}"),
+                format!(
+                    "t = ({plane_side} − {a}0)/({a}1 − {a}0),  P(t) = P0 + t·(P1 − P0)",
+                    plane_side = &plane[4..],
+                    a = ["x", "y", "z"][axis]
+                ),
+            )
+            .val("t", Val::num(&t))
+            .res("P(t)", Val::vec3(&q))
+            .res("code", Val::text(code_str(c)))
+            .note(if c == 0 {
+                "code 000000: kept"
+            } else {
+                "code not 000000: outside the box, discarded"
+            })
+        });
+        if c == 0 {
+            kept.push((t, q));
+        }
+    }
+    if code0 == 0 {
+        kept.push((T::zero(), p0.clone()));
+    }
+    if code1 == 0 {
+        kept.push((T::one(), p1.clone()));
+    }
+    let first = kept
+        .iter()
+        .min_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal));
+    let last = kept
+        .iter()
+        .max_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal));
+    let result = match (first, last) {
+        (Some(a), Some(z)) => Clipped {
+            code0,
+            code1,
+            status: Status::Clipped,
+            segment: Some((a.1.clone(), z.1.clone())),
+        },
+        _ => Clipped {
+            code0,
+            code1,
+            status: Status::Rejected,
+            segment: None,
+        },
+    };
+    tr.step(|| {
+        let s = Step::new("Clipped segment", "from the kept point with the smallest t to the one with the largest t (inside ends count as t = 0 and t = 1)");
+        match &result.segment {
+            Some((a, z)) => s.res("from", Val::vec3(a)).res("to", Val::vec3(z)).note(if a == z {
+                "the segment touches the box in a single point"
+            } else {
+                "the part of P0P1 inside the box"
+            }),
+            None => s.res("segment", Val::Null).note("no intersection is inside the box: the segment misses it (rejected)"),
+        }
+    });
+    result
+}
+
+/// The step explaining one endpoint's outcode, bit by bit.
+fn code_step<T: Scalar>(name: &str, b: &ClipBox<T>, p: &V3<T>, code: u8) -> Step {
+    let mut s = Step::new(
+        format!("Outcode of {name}"),
+        "bit 1 x<xmin (kiri) · bit 2 x>xmax (kanan) · bit 3 y<ymin (bawah) · bit 4 y>ymax (atas) · bit 5 z<zmin (depan) · bit 6 z>zmax (belakang)",
+    )
+    .val(name.to_string(), Val::vec3(p));
+    for (bit, &(axis, is_max, _, side)) in PLANES.iter().enumerate() {
+        let a = ["x", "y", "z"][axis];
+        let (op, lim) = if is_max {
+            (">", &b.max[axis])
+        } else {
+            ("<", &b.min[axis])
+        };
+        let set = code & (1 << bit) != 0;
+        s = s.val(
+            format!(
+                "bit {} {a} {op} {a}{}",
+                bit + 1,
+                if is_max { "max" } else { "min" }
+            ),
+            Val::text(format!(
+                "{} ({} {op} {}: {side})",
+                u8::from(set),
+                p[axis].to_f64(),
+                lim.to_f64()
+            )),
+        );
+    }
+    s.res("code", Val::text(code_str(code)))
+}
+
+/// Liang–Barsky: with Δ = P1 − P0, for each of the six pairs
+/// p_k = −Δx, Δx, −Δy, Δy, −Δz, Δz and q_k = x0 − xmin, xmax − x0, ...:
+/// p_k = 0 and q_k < 0 → outside; p_k < 0 → t0 = max(t0, q_k/p_k);
+/// p_k > 0 → t1 = min(t1, q_k/p_k); the segment is P(t0)..P(t1) if t0 ≤ t1.
+pub fn liang_barsky<T: Scalar>(
+    b: &ClipBox<T>,
+    p0: &V3<T>,
+    p1: &V3<T>,
+    tr: &mut impl Trace,
+) -> Option<(V3<T>, V3<T>)> {
+    let delta = vec::sub(p1, p0);
+    let (mut t0, mut t1) = (T::zero(), T::one());
+    let mut inside = true;
+    for axis in 0..3 {
+        for (p, q) in [
+            (-delta[axis].clone(), p0[axis].clone() - b.min[axis].clone()),
+            (delta[axis].clone(), b.max[axis].clone() - p0[axis].clone()),
+        ] {
+            if p.is_zero_value() {
+                if q < T::zero() {
+                    inside = false;
+                }
+            } else {
+                let r = q / p.clone();
+                if p < T::zero() {
+                    if r > t0 {
+                        t0 = r;
+                    }
+                } else if r < t1 {
+                    t1 = r;
+                }
+            }
+        }
+    }
+    let result = if inside && t0 <= t1 {
+        let at = |t: &T| {
+            let mut q = vec::add(p0, &vec::scale(&delta, t));
+            snap(b, &mut q);
+            q
+        };
+        Some((
+            if t0.is_zero_value() {
+                p0.clone()
+            } else {
+                at(&t0)
+            },
+            if t1 == T::one() { p1.clone() } else { at(&t1) },
+        ))
+    } else {
+        None
+    };
+    tr.step(|| {
+        let s = Step::new("Cross-check by Liang–Barsky", "t0 = max over entering planes of q/p,  t1 = min over leaving planes of q/p,  visible if t0 ≤ t1")
+            .val("t0", Val::num(&t0))
+            .val("t1", Val::num(&t1));
+        match &result {
+            Some((a, z)) => s.res("from", Val::vec3(a)).res("to", Val::vec3(z)),
+            None => s.res("segment", Val::Null),
+        }
+    });
+    result
+}
+
+/// Moves coordinates that rounding put a hair outside the box back onto it.
+fn snap<T: Scalar>(b: &ClipBox<T>, q: &mut V3<T>) {
+    for k in 0..3 {
+        if q[k] < b.min[k] {
+            q[k] = b.min[k].clone();
+        } else if q[k] > b.max[k] {
+            q[k] = b.max[k].clone();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::trace::NoTrace;
+
+    fn bx() -> ClipBox<f64> {
+        ClipBox {
+            min: V3::new(0.0, 0.0, 0.0),
+            max: V3::new(3.0, 4.0, 3.0),
+        }
+    }
+
+    #[test]
+    fn text_example_outcodes_and_clip() {
+        // P0 (4,2,2): x > 3 → bit 2 → 000010. P1 (−2,6,1): x < 0 (bit 1), y > 4 (bit 4) → 001001.
+        let (p0, p1) = (V3::new(4.0, 2.0, 2.0), V3::new(-2.0, 6.0, 1.0));
+        let r = clip_segment(&bx(), &p0, &p1, &mut NoTrace);
+        assert_eq!(code_str(r.code0), "000010");
+        assert_eq!(code_str(r.code1), "001001");
+        assert_eq!(r.status, Status::Clipped);
+        // x = 3: t = (3−4)/(−6) = 1/6 → (3, 2 + 4/6, 2 − 1/6) = (3, 8/3, 11/6).
+        // y = 4: t = (4−2)/4 = 1/2 → (4 − 3, 4, 2 − 1/2) = (1, 4, 3/2).
+        let (a, c) = r.segment.unwrap();
+        approx::assert_relative_eq!(a, V3::new(3.0, 8.0 / 3.0, 11.0 / 6.0), epsilon = 1e-15);
+        approx::assert_relative_eq!(c, V3::new(1.0, 4.0, 1.5), epsilon = 1e-15);
+        let lb = liang_barsky(&bx(), &p0, &p1, &mut NoTrace).unwrap();
+        approx::assert_relative_eq!(lb.0, a, epsilon = 1e-15);
+        approx::assert_relative_eq!(lb.1, c, epsilon = 1e-15);
+    }
+
+    #[test]
+    fn text_and_rule() {
+        // The text's P3 (010101) and P4 (100110): AND = 000100.
+        assert_eq!(code_str(0b010101 & 0b100110), "000100");
+    }
+
+    #[test]
+    fn trivial_cases_and_misses() {
+        let inside = clip_segment(
+            &bx(),
+            &V3::new(1.0, 1.0, 1.0),
+            &V3::new(2.0, 2.0, 2.0),
+            &mut NoTrace,
+        );
+        assert_eq!(inside.status, Status::Accepted);
+        let same_side = clip_segment(
+            &bx(),
+            &V3::new(-1.0, 1.0, 1.0),
+            &V3::new(-2.0, 2.0, 2.0),
+            &mut NoTrace,
+        );
+        assert_eq!(same_side.status, Status::Rejected);
+        // Passes the corner (3,4) region diagonally outside: x + y = 8 never meets x ≤ 3, y ≤ 4.
+        let miss = clip_segment(
+            &bx(),
+            &V3::new(2.0, 6.0, 1.0),
+            &V3::new(6.0, 2.0, 1.0),
+            &mut NoTrace,
+        );
+        assert_eq!(miss.status, Status::Rejected);
+        // Touches the corner (3,4,1) exactly: x + y = 7.
+        let touch = clip_segment(
+            &bx(),
+            &V3::new(2.0, 5.0, 1.0),
+            &V3::new(5.0, 2.0, 1.0),
+            &mut NoTrace,
+        );
+        assert_eq!(touch.status, Status::Clipped);
+        let (a, b) = touch.segment.unwrap();
+        assert_eq!(a, b);
+        assert_eq!(a, V3::new(3.0, 4.0, 1.0));
+    }
+
+    #[test]
+    fn inverted_box_is_an_error() {
+        let b = ClipBox {
+            min: V3::new(0.0, 5.0, 0.0),
+            max: V3::new(1.0, 4.0, 1.0),
+        };
+        assert!(b.validate().unwrap_err().message.contains("ymin"));
+    }
+}

@@ -1,0 +1,296 @@
+//! The calculator commands: flags → validated values → stage functions →
+//! a report. No math here; that is in the stage modules.
+
+use crate::camera::{self, Camera};
+use crate::cli::{CameraArgs, ClipArgs, ProjectArgs, WindowArgs};
+use crate::clip::{self, ClipBox};
+use crate::error::{Error, Result};
+use crate::input;
+use crate::num::Scalar;
+use crate::projection::{self, Projection};
+use crate::report::Report;
+use crate::trace::{Recorder, Val};
+use crate::window;
+use serde_json::{json, Value};
+
+/// A report from a finished recorder.
+pub fn report<T: Scalar>(
+    command: &str,
+    input: Value,
+    result: Vec<(String, Val)>,
+    rec: Recorder,
+) -> Report {
+    Report {
+        command: command.into(),
+        input,
+        result,
+        steps: rec.steps,
+        warnings: rec.warnings,
+        notes: vec![],
+        precision: T::PRECISION,
+        extra: Default::default(),
+    }
+}
+
+/// The camera from its flags.
+pub fn camera_from<T: Scalar>(c: &CameraArgs) -> Result<Camera<T>> {
+    Ok(Camera {
+        pe: input::vec3("eye", &c.eye)?,
+        pr: input::vec3("look", &c.look)?,
+        vup: input::vec3("up", &c.up)?,
+    })
+}
+
+/// Input JSON of a camera.
+pub fn camera_json<T: Scalar>(c: &Camera<T>) -> Value {
+    json!({ "eye": input::json3(&c.pe), "look": input::json3(&c.pr), "up": input::json3(&c.vup) })
+}
+
+/// The basis as named results.
+pub fn basis_result<T: Scalar>(b: &camera::Basis<T>) -> Vec<(String, Val)> {
+    vec![
+        ("u".into(), Val::vec3(&b.u)),
+        ("v".into(), Val::vec3(&b.v)),
+        ("n".into(), Val::vec3(&b.n)),
+    ]
+}
+
+/// `grafika basis`.
+pub fn basis<T: Scalar>(c: &CameraArgs) -> Result<Report> {
+    let cam = camera_from::<T>(c)?;
+    let mut rec = Recorder::new();
+    let b = camera::basis(&cam, &mut rec)?;
+    Ok(report::<T>(
+        "basis",
+        camera_json(&cam),
+        basis_result(&b),
+        rec,
+    ))
+}
+
+/// `grafika view`.
+pub fn view<T: Scalar>(c: &CameraArgs, points: &[String]) -> Result<Report> {
+    let cam = camera_from::<T>(c)?;
+    let pts = input::points3::<T>("point", points)?;
+    let mut rec = Recorder::new();
+    let b = camera::basis(&cam, &mut rec)?;
+    let m = camera::view_matrix(&b, &cam.pe, &mut rec);
+    let eye: Vec<(String, Val)> = pts
+        .iter()
+        .map(|(n, p)| {
+            (
+                n.clone(),
+                Val::vec3(&camera::to_eye(&b, &cam.pe, n, p, &mut rec)),
+            )
+        })
+        .collect();
+    let mut result = basis_result(&b);
+    result.push(("matrix".into(), Val::mat4(&m)));
+    result.push(("points".into(), Val::Map(eye)));
+    let mut inp = camera_json(&cam);
+    inp["points"] = points_json(&pts);
+    Ok(report::<T>("view", inp, result, rec))
+}
+
+fn points_json<T: Scalar>(pts: &[(String, crate::vec::V3<T>)]) -> Value {
+    Value::Object(
+        pts.iter()
+            .map(|(n, p)| (n.clone(), input::json3(p)))
+            .collect(),
+    )
+}
+
+/// `grafika project`.
+pub fn project<T: Scalar>(a: &ProjectArgs) -> Result<Report> {
+    let proj = match (&a.d, &a.cop, &a.plane, a.ortho) {
+        (Some(d), None, None, false) => Projection::Plane {
+            d: input::num::<T>("d", d)?,
+        },
+        (None, Some(c), Some(p), false) => Projection::General {
+            zprp: input::num("cop", c)?,
+            zvp: input::num("plane", p)?,
+        },
+        (None, None, None, true) => Projection::Ortho,
+        (None, Some(_), None, false) => {
+            return Err(Error::new(
+                "plane",
+                "--cop needs --plane (the view plane z = ZVP)",
+            ))
+        }
+        (None, None, Some(_), false) => {
+            return Err(Error::new(
+                "cop",
+                "--plane needs --cop (the centre of projection z = ZPRP)",
+            ))
+        }
+        _ => {
+            return Err(Error::new(
+                "d",
+                "choose one projection: --d D, or --cop ZPRP --plane ZVP, or --ortho",
+            ))
+        }
+    };
+    proj.validate()?;
+    let pts = input::points3::<T>("point", &a.points)?;
+    let mut rec = Recorder::new();
+    let mut out = Vec::new();
+    for (n, p) in &pts {
+        let q = projection::project(&proj, n, p, &mut rec)?;
+        out.push((n.clone(), Val::vec3(&q)));
+    }
+    let kind = match &proj {
+        Projection::Plane { d } => json!({ "d": d.to_f64() }),
+        Projection::General { zprp, zvp } => json!({ "cop": zprp.to_f64(), "plane": zvp.to_f64() }),
+        Projection::Ortho => json!({ "ortho": true }),
+    };
+    let inp = json!({ "projection": kind, "points": points_json(&pts) });
+    Ok(report::<T>(
+        "project",
+        inp,
+        vec![("points".into(), Val::Map(out))],
+        rec,
+    ))
+}
+
+/// `grafika window`.
+pub fn window<T: Scalar>(a: &WindowArgs) -> Result<Report> {
+    let fovy: T = input::angle_deg("fovy", &a.fovy)?;
+    let aspect: T = input::num("aspect", &a.aspect)?;
+    let near: T = input::num("near", &a.near)?;
+    let far: Option<T> = a.far.as_deref().map(|f| input::num("far", f)).transpose()?;
+    let vp: Option<(T, T)> = a
+        .viewport
+        .as_deref()
+        .map(|v| input::size("viewport", v))
+        .transpose()?;
+    let pts = input::points2::<T>("point", &a.points)?;
+    if !pts.is_empty() && vp.is_none() {
+        return Err(Error::new(
+            "viewport",
+            "--point needs --viewport WxH to map points to pixels",
+        ));
+    }
+    if let Some(f) = &far {
+        if *f <= near {
+            return Err(Error::new(
+                "far",
+                format!(
+                    "must be greater than near = {}, got {}",
+                    near.to_f64(),
+                    f.to_f64()
+                ),
+            ));
+        }
+    }
+    let mut rec = Recorder::new();
+    let w = window::window(&fovy, &aspect, &near, "near", &mut rec)?;
+    let mut result = window_result(&w, "");
+    if let Some(f) = &far {
+        let fw = window::window(&fovy, &aspect, f, "far", &mut rec)?;
+        result.extend(
+            window_result(&fw, "far_")
+                .into_iter()
+                .filter(|(k, _)| !k.ends_with("height") && !k.ends_with("width")),
+        );
+    }
+    if let Some((vw, vh)) = &vp {
+        window::validate_viewport(vw, vh)?;
+        let mut px = Vec::new();
+        for (n, (x, y)) in &pts {
+            let (a, b) = window::to_viewport(&w, (vw, vh), n, (x, y), &mut rec);
+            px.push((n.clone(), Val::vec2(&a, &b)));
+        }
+        if !px.is_empty() {
+            result.push(("pixels".into(), Val::Map(px)));
+        }
+    }
+    let inp = json!({
+        "fovy": fovy.to_f64(), "aspect": aspect.to_f64(), "near": near.to_f64(),
+        "far": far.as_ref().map(Scalar::to_f64),
+        "viewport": vp.as_ref().map(|(w, h)| json!([w.to_f64(), h.to_f64()])),
+        "points": Value::Object(pts.iter().map(|(n, (x, y))| (n.clone(), json!([x.to_f64(), y.to_f64()]))).collect()),
+    });
+    Ok(report::<T>("window", inp, result, rec))
+}
+
+/// The window's named results, keys prefixed (`far_top`, ...).
+pub fn window_result<T: Scalar>(w: &window::Window<T>, prefix: &str) -> Vec<(String, Val)> {
+    [
+        ("top", &w.top),
+        ("bottom", &w.bottom),
+        ("left", &w.left),
+        ("right", &w.right),
+        ("height", &w.height),
+        ("width", &w.width),
+    ]
+    .into_iter()
+    .map(|(k, v)| (format!("{prefix}{k}"), Val::num(v)))
+    .collect()
+}
+
+/// `grafika clip`.
+pub fn clip<T: Scalar>(a: &ClipArgs) -> Result<Report> {
+    let b = ClipBox {
+        min: input::vec3::<T>("min", &a.min)?,
+        max: input::vec3("max", &a.max)?,
+    };
+    b.validate()?;
+    let (p0, p1) = (
+        input::vec3::<T>("from", &a.from)?,
+        input::vec3::<T>("to", &a.to)?,
+    );
+    let mut rec = Recorder::new();
+    let result = clip_run(&b, &p0, &p1, &mut rec);
+    let inp = json!({ "min": input::json3(&b.min), "max": input::json3(&b.max), "from": input::json3(&p0), "to": input::json3(&p1) });
+    Ok(report::<T>("clip", inp, result, rec))
+}
+
+/// Clips one segment by outcodes and by Liang–Barsky, records whether they
+/// agree, and returns the SPEC's clip result keys.
+pub fn clip_run<T: Scalar>(
+    b: &ClipBox<T>,
+    p0: &crate::vec::V3<T>,
+    p1: &crate::vec::V3<T>,
+    rec: &mut Recorder,
+) -> Vec<(String, Val)> {
+    let r = clip::clip_segment(b, p0, p1, rec);
+    let lb = clip::liang_barsky(b, p0, p1, rec);
+    let agree = match (&r.segment, &lb) {
+        (None, None) => true,
+        (Some((a, z)), Some((c, d))) => close(a, c) && close(z, d),
+        _ => false,
+    };
+    use crate::trace::Trace;
+    rec.step(|| {
+        crate::trace::Step::new(
+            "Do the two methods agree?",
+            "outcode clipping vs Liang–Barsky",
+        )
+        .res("agree", Val::Bool(agree))
+        .note(if agree {
+            "both methods give the same segment"
+        } else {
+            "the methods disagree: please report this input"
+        })
+    });
+    vec![
+        ("code0".into(), Val::text(clip::code_str(r.code0))),
+        ("code1".into(), Val::text(clip::code_str(r.code1))),
+        ("status".into(), Val::text(r.status.as_str())),
+        (
+            "segment".into(),
+            match &r.segment {
+                Some((a, z)) => Val::List(vec![Val::vec3(a), Val::vec3(z)]),
+                None => Val::Null,
+            },
+        ),
+    ]
+}
+
+/// Equal up to rounding (exact values compare exactly).
+fn close<T: Scalar>(a: &crate::vec::V3<T>, b: &crate::vec::V3<T>) -> bool {
+    (0..3).all(|k| {
+        let (x, y) = (a[k].to_f64(), b[k].to_f64());
+        a[k] == b[k] || (x - y).abs() <= 1e-5 * (1.0 + x.abs().max(y.abs()))
+    })
+}

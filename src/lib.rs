@@ -1,0 +1,23 @@
+//! grafika: a step-by-step tutor and calculator for the 3D viewing pipeline
+//! and shading of the course text.
+//!
+//! Data flows one way: command-line flags or a problem file are validated
+//! into plain values, the stage functions (camera → projection → window →
+//! clip) compute with them at the chosen precision while writing their
+//! steps to a [`trace::Trace`], and a [`report::Report`] turns the steps and
+//! results into text or JSON.
+
+pub mod camera;
+pub mod cli;
+pub mod clip;
+pub mod commands;
+pub mod error;
+pub mod input;
+pub mod num;
+pub mod problem;
+pub mod projection;
+pub mod report;
+pub mod solve;
+pub mod trace;
+pub mod vec;
+pub mod window;

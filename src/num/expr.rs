@@ -1,0 +1,467 @@
+//! The input-number parser (SPEC §2): integers, exact decimals (`0.1` is
+//! 1/10, `2.5e-7`), `pi`, `sqrt(...)`, `+ - * / ^` and parentheses, parsed
+//! once into an [`Expr`] and evaluated at any precision. A student's own
+//! notation is accepted too: `√2`, `π`, the minus sign `−`, and a number
+//! written directly before `sqrt`, `pi` or `(` (`5sqrt(2)` = 5·√2).
+
+use super::{Real, Scalar};
+use std::fmt;
+
+/// A parsed number expression.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Expr {
+    /// A decimal literal as written (`12`, `0.1`, `2.5e-7`).
+    Lit(String),
+    /// π.
+    Pi,
+    /// √x.
+    Sqrt(Box<Expr>),
+    /// −x.
+    Neg(Box<Expr>),
+    /// x + y.
+    Add(Box<Expr>, Box<Expr>),
+    /// x − y.
+    Sub(Box<Expr>, Box<Expr>),
+    /// x · y.
+    Mul(Box<Expr>, Box<Expr>),
+    /// x / y.
+    Div(Box<Expr>, Box<Expr>),
+    /// xⁿ, n an integer.
+    Pow(Box<Expr>, Box<Expr>),
+}
+
+impl Expr {
+    /// The value of the expression at precision `T`; an error message when a
+    /// divisor is zero, a square root's argument negative, an exponent not a
+    /// whole number, or the value not finite at that precision.
+    pub fn eval<T: Scalar>(&self) -> Result<T, String> {
+        let v = self.eval_inner::<T>()?;
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(format!(
+                "`{self}` is not a finite number at {:?} precision",
+                T::PRECISION
+            )
+            .to_lowercase())
+        }
+    }
+
+    fn eval_inner<T: Scalar>(&self) -> Result<T, String> {
+        Ok(match self {
+            Expr::Lit(s) => {
+                let r = Real::from_decimal(s).ok_or_else(|| format!("`{s}` is not a number"))?;
+                T::from_real(&r)
+            }
+            Expr::Pi => T::pi(),
+            Expr::Sqrt(x) => {
+                let v = x.eval_inner::<T>()?;
+                if v < T::zero() {
+                    return Err(format!(
+                        "sqrt({x}) takes the square root of a negative number"
+                    ));
+                }
+                v.sqrt()
+            }
+            Expr::Neg(x) => -x.eval_inner::<T>()?,
+            Expr::Add(a, b) => a.eval_inner::<T>()? + b.eval_inner::<T>()?,
+            Expr::Sub(a, b) => a.eval_inner::<T>()? - b.eval_inner::<T>()?,
+            Expr::Mul(a, b) => a.eval_inner::<T>()? * b.eval_inner::<T>()?,
+            Expr::Div(a, b) => {
+                let d = b.eval_inner::<T>()?;
+                if d.is_zero_value() {
+                    return Err(format!("`{self}` divides by zero"));
+                }
+                a.eval_inner::<T>()? / d
+            }
+            Expr::Pow(a, b) => {
+                let base = a.eval_inner::<T>()?;
+                let e = b.eval_inner::<f64>()?;
+                if e.fract() != 0.0 || e.abs() > 1024.0 {
+                    return Err(format!(
+                        "the exponent in `{self}` must be a whole number from -1024 to 1024"
+                    ));
+                }
+                let p = base.powi(e.abs() as u32);
+                if e < 0.0 {
+                    if p.is_zero_value() {
+                        return Err(format!("`{self}` divides by zero"));
+                    }
+                    T::one() / p
+                } else {
+                    p
+                }
+            }
+        })
+    }
+}
+
+impl fmt::Display for Expr {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Expr::Lit(s) => write!(f, "{s}"),
+            Expr::Pi => write!(f, "pi"),
+            Expr::Sqrt(x) => write!(f, "sqrt({x})"),
+            Expr::Neg(x) => write!(f, "-{}", Paren(x)),
+            Expr::Add(a, b) => write!(f, "{a}+{b}"),
+            Expr::Sub(a, b) => write!(f, "{a}-{}", Paren(b)),
+            Expr::Mul(a, b) => write!(f, "{}*{}", Paren(a), Paren(b)),
+            Expr::Div(a, b) => write!(f, "{}/{}", Paren(a), Paren(b)),
+            Expr::Pow(a, b) => write!(f, "{}^{}", Paren(a), Paren(b)),
+        }
+    }
+}
+
+/// Writes a sub-expression, in parentheses when it is a sum or difference.
+struct Paren<'a>(&'a Expr);
+impl fmt::Display for Paren<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.0 {
+            Expr::Add(..) | Expr::Sub(..) | Expr::Neg(..) => write!(f, "({})", self.0),
+            e => write!(f, "{e}"),
+        }
+    }
+}
+
+/// Parses one number expression; the error says what was expected and at
+/// which character (1-based column).
+pub fn parse_expr(text: &str) -> Result<Expr, String> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut p = Parser { s: &chars, i: 0 };
+    p.skip_ws();
+    if p.at_end() {
+        return Err("expected a number, found nothing".into());
+    }
+    let e = p.sum()?;
+    p.skip_ws();
+    if !p.at_end() {
+        return Err(p.err("an operator or the end of the number"));
+    }
+    Ok(e)
+}
+
+/// Parses `x,y,z` into three expressions.
+pub fn parse_vec3(text: &str) -> Result<[Expr; 3], String> {
+    let parts = split_top_level(text);
+    if parts.len() != 3 {
+        return Err(format!(
+            "expected three numbers x,y,z separated by commas, found {} in `{text}`",
+            parts.len()
+        ));
+    }
+    let mut out = Vec::with_capacity(3);
+    for (k, part) in parts.iter().enumerate() {
+        let e = parse_expr(part)
+            .map_err(|m| format!("{} component `{}`: {m}", ["x", "y", "z"][k], part.trim()))?;
+        out.push(e);
+    }
+    let [x, y, z]: [Expr; 3] = out
+        .try_into()
+        .map_err(|_| "expected three numbers".to_string())?;
+    Ok([x, y, z])
+}
+
+/// Splits on commas that are not inside parentheses.
+pub fn split_top_level(text: &str) -> Vec<&str> {
+    let mut parts = Vec::new();
+    let mut depth = 0i32;
+    let mut start = 0;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            ',' if depth == 0 => {
+                parts.push(&text[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    parts.push(&text[start..]);
+    parts
+}
+
+/// The unit an angle is written in (degrees unless `rad` follows it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AngleUnit {
+    /// Degrees (the default).
+    Deg,
+    /// Radians (written `0.785rad`).
+    Rad,
+}
+
+/// An angle as typed: a number expression and its unit.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Angle {
+    /// The number.
+    pub value: Expr,
+    /// Its unit.
+    pub unit: AngleUnit,
+}
+
+impl Angle {
+    /// Parses `45`, `45deg`, `45°`, `pi/4 rad`, `0.785rad`.
+    pub fn parse(text: &str) -> Result<Angle, String> {
+        let t = text.trim();
+        let (body, unit) = if let Some(b) = t.strip_suffix("rad") {
+            (b, AngleUnit::Rad)
+        } else if let Some(b) = t.strip_suffix("deg").or_else(|| t.strip_suffix('°')) {
+            (b, AngleUnit::Deg)
+        } else {
+            (t, AngleUnit::Deg)
+        };
+        Ok(Angle {
+            value: parse_expr(body)?,
+            unit,
+        })
+    }
+
+    /// The angle in degrees at precision `T` (radians are converted with
+    /// 180/π, which makes the value approximate).
+    pub fn degrees<T: Scalar>(&self) -> Result<T, String> {
+        let v = self.value.eval::<T>()?;
+        Ok(match self.unit {
+            AngleUnit::Deg => v,
+            AngleUnit::Rad => v * T::from_i64(180) / T::pi(),
+        })
+    }
+}
+
+impl fmt::Display for Angle {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.unit {
+            AngleUnit::Deg => write!(f, "{}°", self.value),
+            AngleUnit::Rad => write!(f, "{} rad", self.value),
+        }
+    }
+}
+
+struct Parser<'a> {
+    s: &'a [char],
+    i: usize,
+}
+
+impl Parser<'_> {
+    fn at_end(&self) -> bool {
+        self.i >= self.s.len()
+    }
+    fn peek(&self) -> Option<char> {
+        self.s.get(self.i).copied()
+    }
+    fn skip_ws(&mut self) {
+        while self.peek().is_some_and(char::is_whitespace) {
+            self.i += 1;
+        }
+    }
+    fn err(&self, expected: &str) -> String {
+        match self.peek() {
+            Some(c) => format!("expected {expected} at column {}, found `{c}`", self.i + 1),
+            None => format!(
+                "expected {expected} at column {}, found the end",
+                self.i + 1
+            ),
+        }
+    }
+    fn eat(&mut self, c: char) -> bool {
+        self.skip_ws();
+        if self.peek() == Some(c) {
+            self.i += 1;
+            true
+        } else {
+            false
+        }
+    }
+    fn eat_word(&mut self, w: &str) -> bool {
+        self.skip_ws();
+        let n = w.chars().count();
+        if self.s.len() >= self.i + n
+            && self.s[self.i..self.i + n].iter().copied().eq(w.chars())
+            && !self
+                .s
+                .get(self.i + n)
+                .is_some_and(|c| c.is_ascii_alphanumeric())
+        {
+            self.i += n;
+            true
+        } else {
+            false
+        }
+    }
+
+    /// sum := product (('+' | '-') product)*
+    fn sum(&mut self) -> Result<Expr, String> {
+        let mut e = self.product()?;
+        loop {
+            if self.eat('+') {
+                e = Expr::Add(Box::new(e), Box::new(self.product()?));
+            } else if self.eat('-') || self.eat('−') {
+                e = Expr::Sub(Box::new(e), Box::new(self.product()?));
+            } else {
+                return Ok(e);
+            }
+        }
+    }
+
+    /// product := unary (('*' | '/' | implicit) unary)*
+    fn product(&mut self) -> Result<Expr, String> {
+        let mut e = self.unary()?;
+        loop {
+            if self.eat('*') || self.eat('×') || self.eat('·') {
+                e = Expr::Mul(Box::new(e), Box::new(self.unary()?));
+            } else if self.eat('/') {
+                e = Expr::Div(Box::new(e), Box::new(self.unary()?));
+            } else if self.implicit_factor_follows() {
+                e = Expr::Mul(Box::new(e), Box::new(self.power()?));
+            } else {
+                return Ok(e);
+            }
+        }
+    }
+
+    /// A factor written directly after another: `5sqrt(2)`, `2pi`, `3(1+x)`, `2√3`.
+    fn implicit_factor_follows(&mut self) -> bool {
+        self.skip_ws();
+        match self.peek() {
+            Some('(' | '√' | 'π') => true,
+            Some('s' | 'p') => {
+                let rest: String = self.s[self.i..].iter().take(4).collect();
+                rest.starts_with("sqrt") || rest.starts_with("pi")
+            }
+            _ => false,
+        }
+    }
+
+    /// unary := ('-' | '+') unary | power
+    fn unary(&mut self) -> Result<Expr, String> {
+        if self.eat('-') || self.eat('−') {
+            Ok(Expr::Neg(Box::new(self.unary()?)))
+        } else if self.eat('+') {
+            self.unary()
+        } else {
+            self.power()
+        }
+    }
+
+    /// power := atom ('^' unary)?
+    fn power(&mut self) -> Result<Expr, String> {
+        let base = self.atom()?;
+        if self.eat('^') {
+            Ok(Expr::Pow(Box::new(base), Box::new(self.unary()?)))
+        } else {
+            Ok(base)
+        }
+    }
+
+    /// atom := number | 'pi' | 'π' | 'sqrt' '(' sum ')' | '√' atom | '(' sum ')'
+    fn atom(&mut self) -> Result<Expr, String> {
+        self.skip_ws();
+        if self.eat('(') {
+            let e = self.sum()?;
+            if !self.eat(')') {
+                return Err(self.err("`)`"));
+            }
+            return Ok(e);
+        }
+        if self.eat_word("pi") || self.eat('π') {
+            return Ok(Expr::Pi);
+        }
+        if self.eat_word("sqrt") {
+            if !self.eat('(') {
+                return Err(self.err("`(` after sqrt"));
+            }
+            let e = self.sum()?;
+            if !self.eat(')') {
+                return Err(self.err("`)`"));
+            }
+            return Ok(Expr::Sqrt(Box::new(e)));
+        }
+        if self.eat('√') {
+            return Ok(Expr::Sqrt(Box::new(self.power()?)));
+        }
+        self.number()
+    }
+
+    /// number := digits ('.' digits)? (('e' | 'E') ('+' | '-')? digits)?
+    fn number(&mut self) -> Result<Expr, String> {
+        self.skip_ws();
+        let start = self.i;
+        let digits = |p: &mut Self| {
+            let s = p.i;
+            while p.peek().is_some_and(|c| c.is_ascii_digit()) {
+                p.i += 1;
+            }
+            p.i - s
+        };
+        let mut n = digits(self);
+        if self.peek() == Some('.') {
+            self.i += 1;
+            n += digits(self);
+        }
+        if n == 0 {
+            self.i = start;
+            return Err(self.err("a number"));
+        }
+        if matches!(self.peek(), Some('e' | 'E')) {
+            let save = self.i;
+            self.i += 1;
+            if matches!(self.peek(), Some('+' | '-')) {
+                self.i += 1;
+            }
+            if digits(self) == 0 {
+                self.i = save;
+            }
+        }
+        Ok(Expr::Lit(self.s[start..self.i].iter().collect()))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn f(s: &str) -> f64 {
+        parse_expr(s)
+            .and_then(|e| e.eval::<f64>())
+            .unwrap_or(f64::NAN)
+    }
+
+    #[test]
+    fn arithmetic_and_precedence() {
+        assert_eq!(f("1+2*3"), 7.0);
+        assert_eq!(f("(1+2)*3"), 9.0);
+        assert_eq!(f("-2^2"), -4.0);
+        assert_eq!(f("2^-1"), 0.5);
+        assert_eq!(f("2^3^2"), 512.0);
+        assert_eq!(f("1/4"), 0.25);
+        assert_eq!(f("-5*sqrt(4)/2"), -5.0);
+        assert_eq!(f("5sqrt(4)"), 10.0);
+        assert_eq!(f("√4+−1"), 1.0);
+        assert_eq!(f("2.5e-1"), 0.25);
+        assert_eq!(f(".5"), 0.5);
+        assert!((f("pi/2") - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+    }
+
+    #[test]
+    fn errors_name_the_column() {
+        let e = parse_expr("1+*2").unwrap_err();
+        assert!(e.contains("column 3"), "{e}");
+        assert!(parse_expr("sqrt(2").unwrap_err().contains("`)`"));
+        assert!(parse_expr("").is_err());
+        assert!(parse_expr("1 2").is_err());
+        let div = parse_expr("1/(2-2)").map(|e| e.eval::<f64>());
+        assert!(matches!(div, Ok(Err(m)) if m.contains("divides by zero")));
+        assert!(parse_expr("sqrt(-1)").unwrap().eval::<f64>().is_err());
+        assert!(parse_expr("2^0.5").unwrap().eval::<f64>().is_err());
+        assert!(parse_expr("1e999").unwrap().eval::<f64>().is_err());
+    }
+
+    #[test]
+    fn vectors_and_angles() {
+        let v = parse_vec3("-2, 6, sqrt(2)/2").unwrap();
+        assert_eq!(v[0].eval::<f64>(), Ok(-2.0));
+        assert!(parse_vec3("1,2").is_err());
+        let a = Angle::parse("pi/2rad").unwrap();
+        assert!((a.degrees::<f64>().unwrap() - 90.0).abs() < 1e-12);
+        assert_eq!(Angle::parse("45").unwrap().unit, AngleUnit::Deg);
+    }
+}

@@ -1,0 +1,153 @@
+//! `Scalar` for `f32` and `f64`: the IEEE types with the error-free
+//! transformations that keep the stages accurate near cancellation.
+
+use super::{Precision, Real, Scalar, Shown};
+
+/// Implements `Scalar` for one float type; `$bits` names its to-bits method,
+/// `$prec` its precision.
+macro_rules! float_scalar {
+    ($t:ty, $prec:expr) => {
+        impl Scalar for $t {
+            const PRECISION: Precision = $prec;
+
+            fn from_real(x: &Real) -> Self {
+                x.to_f64() as $t
+            }
+            fn from_f64(x: f64) -> Self {
+                x as $t
+            }
+            fn from_i64(x: i64) -> Self {
+                x as $t
+            }
+            fn to_f64(&self) -> f64 {
+                *self as f64
+            }
+            fn to_real(&self) -> Real {
+                Real::from_f64(*self as f64)
+            }
+            fn sqrt(&self) -> Self {
+                <$t>::sqrt(*self)
+            }
+            fn abs(&self) -> Self {
+                <$t>::abs(*self)
+            }
+            fn powi(&self, n: u32) -> Self {
+                <$t>::powi(*self, n.min(i32::MAX as u32) as i32)
+            }
+            fn pi() -> Self {
+                std::f64::consts::PI as $t
+            }
+            fn tan_deg(&self) -> Self {
+                (deg_reduce(*self as f64).to_radians().tan()) as $t
+            }
+            fn sin_deg(&self) -> Self {
+                (deg_reduce(*self as f64).to_radians().sin()) as $t
+            }
+            fn cos_deg(&self) -> Self {
+                (deg_reduce(*self as f64).to_radians().cos()) as $t
+            }
+            /// Kahan: w = c·d; e = fma(−c, d, w) (the rounding error of w);
+            /// f = fma(a, b, −w); result f + e. Error ≤ 1.5 ulp of the result.
+            #[inline]
+            fn diff_of_products(a: &Self, b: &Self, c: &Self, d: &Self) -> Self {
+                let w = c * d;
+                let e = (-c).mul_add(*d, w);
+                let f = a.mul_add(*b, -w);
+                f + e
+            }
+            #[inline]
+            fn sum_of_products(a: &Self, b: &Self, c: &Self, d: &Self) -> Self {
+                Self::diff_of_products(a, b, &-c, d)
+            }
+            /// Compensated dot product (Ogita–Rump–Oishi Dot2 with FMA):
+            /// as accurate as if computed in twice the precision, then rounded.
+            #[inline]
+            fn dot3(a: [&Self; 3], b: [&Self; 3]) -> Self {
+                let mut s: $t = 0.0;
+                let mut c: $t = 0.0;
+                for i in 0..3 {
+                    let p = a[i] * b[i];
+                    let pe = a[i].mul_add(*b[i], -p); // exact error of the product
+                    let t = s + p;
+                    let z = t - s;
+                    let se = (s - (t - z)) + (p - z); // exact error of the sum (TwoSum)
+                    s = t;
+                    c += pe + se;
+                }
+                s + c
+            }
+            fn hypot3(a: &Self, b: &Self, c: &Self) -> Self {
+                let m = a.abs().max(b.abs()).max(c.abs());
+                if m == 0.0 || !m.is_finite() {
+                    return m;
+                }
+                // 2^-e with e the exponent of m: scaling by a power of two is exact.
+                let e = m.log2().floor();
+                let k = (2.0 as $t).powi(-(e as i32));
+                let (x, y, z) = (a * k, b * k, c * k);
+                Self::dot3([&x, &y, &z], [&x, &y, &z]).sqrt() / k
+            }
+            fn is_finite(&self) -> bool {
+                <$t>::is_finite(*self)
+            }
+            fn shown(&self) -> Shown {
+                // Shortest decimal that reads back to this value at its own
+                // precision, carried in an f64 that prints the same digits.
+                let value = format!("{}", self).parse::<f64>().unwrap_or(*self as f64);
+                Shown {
+                    value,
+                    exact: None,
+                    pretty: None,
+                }
+            }
+        }
+    };
+}
+
+float_scalar!(f64, Precision::F64);
+float_scalar!(f32, Precision::F32);
+
+/// Reduces an angle in degrees to (−180, 180] exactly where it is a whole
+/// multiple of common angles, so that tan 45° is 1 to the last bit as far as
+/// the float libraries allow.
+fn deg_reduce(d: f64) -> f64 {
+    let r = d % 360.0;
+    if r > 180.0 {
+        r - 360.0
+    } else if r <= -180.0 {
+        r + 360.0
+    } else {
+        r
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn kahan_difference_of_products_survives_cancellation() {
+        // a*b - c*d with a*b and c*d equal to the last bit of their product in
+        // f64: (2^27+1)(2^27-1) - 2^54 = -1 exactly, while naive evaluation
+        // rounds 2^54 - 1 to 2^54 and returns 0.
+        let a = 134_217_729.0_f64;
+        let b = 134_217_727.0_f64;
+        let c = 134_217_728.0_f64;
+        assert_eq!(f64::diff_of_products(&a, &b, &c, &c), -1.0);
+    }
+
+    #[test]
+    fn compensated_dot_recovers_small_result() {
+        // (1e16, 1, -1e16)·(1, 1, 1) = 1, which plain summation loses.
+        let x = [1e16, 1.0, -1e16];
+        let y = [1.0, 1.0, 1.0];
+        assert_eq!(f64::dot3([&x[0], &x[1], &x[2]], [&y[0], &y[1], &y[2]]), 1.0);
+    }
+
+    #[test]
+    fn f32_shown_prints_short() {
+        let s = 0.1f32.shown();
+        assert_eq!(format!("{}", s.value), "0.1");
+        assert_eq!(s.value as f32, 0.1f32);
+    }
+}

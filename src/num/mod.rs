@@ -1,0 +1,154 @@
+//! Numbers: the scalar trait every stage is generic over, its float
+//! implementations (with the error-free transformations the stable formulas
+//! need), the exact number type [`Real`], and the input-expression parser.
+//!
+//! The stages are written once, over `T: Scalar`, and run at three precisions:
+//! `f32`, `f64` and [`Real`] (exact sums of surds, falling back to a marked
+//! approximation where no exact form exists).
+
+pub mod expr;
+mod float;
+pub mod real;
+
+pub use expr::{parse_expr, parse_vec3, Angle, AngleUnit, Expr};
+pub use real::Real;
+
+use std::fmt::Debug;
+use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+
+/// The precision a calculation runs at (`--precision`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum, serde::Serialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum Precision {
+    /// Exact sums of surds where the mathematics is exact, marked `≈` otherwise.
+    #[default]
+    Exact,
+    /// IEEE double precision with stable formulas.
+    F64,
+    /// IEEE single precision with stable formulas.
+    F32,
+}
+
+/// A number shown to the user: its value (at the precision it was computed)
+/// and, where known, an exact form.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Shown {
+    /// The value; for f32 results, the f64 nearest the f32's shortest decimal,
+    /// so that it prints as the f32 does and reads back to the same f32.
+    pub value: f64,
+    /// ASCII exact form (`-sqrt(2)/60`), `None` when the value is not exact.
+    pub exact: Option<String>,
+    /// Unicode exact form (`−√2/60`) for people.
+    pub pretty: Option<String>,
+}
+
+/// The scalar the stages compute with.
+///
+/// Implemented for `f32`, `f64` and [`Real`]. The arithmetic operators are the
+/// field operations; the methods below are the few things a stage needs that
+/// the operators do not give, each with a float version that is numerically
+/// stable and an exact version where one exists.
+pub trait Scalar:
+    Clone
+    + PartialEq
+    + PartialOrd
+    + Debug
+    + Send
+    + Sync
+    + 'static
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + AddAssign
+    + SubAssign
+    + MulAssign
+    + DivAssign
+    + num_traits::Zero
+    + num_traits::One
+{
+    /// The name of the precision, as `--precision` spells it.
+    const PRECISION: Precision;
+
+    /// The value of an exact number at this precision (nearest float).
+    fn from_real(x: &Real) -> Self;
+    /// The value of a float at this precision (exact for `Real`, since every
+    /// finite float is a rational).
+    fn from_f64(x: f64) -> Self;
+    /// A small integer.
+    fn from_i64(x: i64) -> Self;
+    /// This number as the nearest f64.
+    fn to_f64(&self) -> f64;
+    /// This number as an exact [`Real`] (every float is rational), or the
+    /// approximation it is for an approximate `Real`.
+    fn to_real(&self) -> Real;
+
+    /// √x for x ≥ 0 (exact where the root has a closed form in `Real`).
+    fn sqrt(&self) -> Self;
+    /// |x|.
+    fn abs(&self) -> Self {
+        if *self < Self::zero() {
+            -self.clone()
+        } else {
+            self.clone()
+        }
+    }
+    /// xⁿ for an integer n ≥ 0 (exact in `Real`).
+    fn powi(&self, n: u32) -> Self {
+        let mut acc = Self::one();
+        let mut base = self.clone();
+        let mut e = n;
+        while e > 0 {
+            if e & 1 == 1 {
+                acc *= base.clone();
+            }
+            base = base.clone() * base;
+            e >>= 1;
+        }
+        acc
+    }
+    /// π (an approximation in every precision, marked `≈` in `Real`).
+    fn pi() -> Self;
+    /// tan of an angle in degrees (exact in `Real` for multiples of 15° and 22.5°).
+    fn tan_deg(&self) -> Self;
+    /// sin of an angle in degrees (exact in `Real` for multiples of 15° and 22.5°).
+    fn sin_deg(&self) -> Self;
+    /// cos of an angle in degrees (exact in `Real` for multiples of 15° and 22.5°).
+    fn cos_deg(&self) -> Self;
+
+    /// `a*b - c*d` with one rounding where it matters (Kahan's algorithm with
+    /// FMA for floats), so that cross products and 2×2 determinants do not
+    /// lose all their digits to cancellation.
+    fn diff_of_products(a: &Self, b: &Self, c: &Self, d: &Self) -> Self {
+        a.clone() * b.clone() - c.clone() * d.clone()
+    }
+    /// `a*b + c*d` with the same care as [`Scalar::diff_of_products`].
+    fn sum_of_products(a: &Self, b: &Self, c: &Self, d: &Self) -> Self {
+        a.clone() * b.clone() + c.clone() * d.clone()
+    }
+    /// `a₀b₀ + a₁b₁ + a₂b₂` (compensated for floats).
+    fn dot3(a: [&Self; 3], b: [&Self; 3]) -> Self {
+        a[0].clone() * b[0].clone() + a[1].clone() * b[1].clone() + a[2].clone() * b[2].clone()
+    }
+
+    /// |(a, b, c)| = √(a² + b² + c²), without overflow or underflow in
+    /// floats (scaled by a power of two near the largest component).
+    fn hypot3(a: &Self, b: &Self, c: &Self) -> Self {
+        Self::dot3([a, b, c], [a, b, c]).sqrt()
+    }
+
+    /// Whether the value is a finite number.
+    fn is_finite(&self) -> bool;
+    /// Whether the value is exact (always true for floats: they are exactly
+    /// what they are, even if rounded from something else).
+    fn is_exact(&self) -> bool {
+        true
+    }
+    /// Whether the value is exactly zero.
+    fn is_zero_value(&self) -> bool {
+        *self == Self::zero()
+    }
+    /// The number for display and JSON.
+    fn shown(&self) -> Shown;
+}

@@ -1,0 +1,305 @@
+//! Problem files (SPEC §5): the TOML schema, read with line and column in
+//! every syntax error, into plain expressions that any precision evaluates.
+
+use crate::error::{Error, Result};
+use crate::num::{parse_expr, Expr};
+use serde::de::{self, Deserializer};
+use serde::Deserialize;
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// A number in a file: a TOML integer or float (taken at its written decimal
+/// value) or a string holding an expression.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Num(pub Expr);
+
+impl<'de> Deserialize<'de> for Num {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Num, D::Error> {
+        struct V;
+        impl de::Visitor<'_> for V {
+            type Value = Num;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a number or a string with a number expression such as \"sqrt(2)/2\"")
+            }
+            fn visit_i64<E: de::Error>(self, v: i64) -> std::result::Result<Num, E> {
+                Ok(Num(Expr::Lit(v.unsigned_abs().to_string()).neg_if(v < 0)))
+            }
+            fn visit_u64<E: de::Error>(self, v: u64) -> std::result::Result<Num, E> {
+                Ok(Num(Expr::Lit(v.to_string())))
+            }
+            fn visit_f64<E: de::Error>(self, v: f64) -> std::result::Result<Num, E> {
+                if !v.is_finite() {
+                    return Err(E::custom(format!("{v} is not a finite number")));
+                }
+                // Rust prints the shortest decimal that reads back to v: the
+                // value as written in the file.
+                let s = format!("{}", v.abs());
+                Ok(Num(Expr::Lit(s).neg_if(v.is_sign_negative())))
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> std::result::Result<Num, E> {
+                parse_expr(v)
+                    .map(Num)
+                    .map_err(|m| E::custom(format!("`{v}`: {m}")))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+impl Expr {
+    /// −self when `neg`, else self.
+    fn neg_if(self, neg: bool) -> Expr {
+        if neg {
+            Expr::Neg(Box::new(self))
+        } else {
+            self
+        }
+    }
+}
+
+/// A vector [x, y, z].
+pub type Vec3In = [Num; 3];
+
+/// `[camera]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CameraIn {
+    /// Pe.
+    pub eye: Vec3In,
+    /// Pr.
+    pub look: Vec3In,
+    /// Vup.
+    pub up: Vec3In,
+}
+
+/// `[perspective]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PerspectiveIn {
+    /// Near-plane distance.
+    pub near: Option<Num>,
+    /// Far-plane distance.
+    pub far: Option<Num>,
+    /// Vertical field of view (degrees; a string ending in `rad` for radians).
+    pub fovy: Option<AngleIn>,
+    /// width / height.
+    pub aspect: Option<Num>,
+    /// [W, H] pixels.
+    pub viewport: Option<[Num; 2]>,
+    /// The projection plane z = d (default −near).
+    pub d: Option<Num>,
+}
+
+/// An angle: a number (degrees) or a string (`"45"`, `"pi/4 rad"`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct AngleIn(pub crate::num::Angle);
+
+impl<'de> Deserialize<'de> for AngleIn {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<AngleIn, D::Error> {
+        #[derive(Deserialize)]
+        #[serde(untagged)]
+        enum Raw {
+            S(String),
+            N(Num),
+        }
+        match Raw::deserialize(d)? {
+            Raw::S(s) => crate::num::Angle::parse(&s)
+                .map(AngleIn)
+                .map_err(|m| de::Error::custom(format!("`{s}`: {m}"))),
+            Raw::N(n) => Ok(AngleIn(crate::num::Angle {
+                value: n.0,
+                unit: crate::num::AngleUnit::Deg,
+            })),
+        }
+    }
+}
+
+/// One `[[clip.segment]]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SegmentIn {
+    /// P0.
+    pub from: Vec3In,
+    /// P1.
+    pub to: Vec3In,
+}
+
+/// `[clip]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ClipIn {
+    /// (xmin, ymin, zmin).
+    pub min: Vec3In,
+    /// (xmax, ymax, zmax).
+    pub max: Vec3In,
+    /// The segments to clip.
+    #[serde(default)]
+    pub segment: Vec<SegmentIn>,
+}
+
+/// One `[[errata]]` entry: where the source's printed answer is wrong, and why.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ErratumIn {
+    /// The result key (`project.points.B`).
+    pub key: String,
+    /// The reason.
+    pub why: String,
+}
+
+/// A whole problem file.
+#[derive(Clone, Debug, Deserialize)]
+pub struct ProblemIn {
+    /// The problem's title.
+    pub title: String,
+    /// Where it comes from.
+    pub source: Option<String>,
+    /// The statement, as a student reads it.
+    pub statement: Option<String>,
+    /// The parts asked for; default: all the data allow.
+    pub ask: Option<Vec<String>>,
+    /// The camera.
+    pub camera: Option<CameraIn>,
+    /// The perspective set-up.
+    pub perspective: Option<PerspectiveIn>,
+    /// World points, in file order.
+    #[serde(default)]
+    pub points: toml::Table,
+    /// A clipping box and segments.
+    pub clip: Option<ClipIn>,
+    /// The lighting problem (see the shade command).
+    pub shade: Option<toml::Table>,
+    /// Lights for the lighting problem.
+    #[serde(default)]
+    pub light: Vec<toml::Table>,
+    /// The answers printed in the source, keyed like the JSON results.
+    #[serde(default)]
+    pub printed: toml::Table,
+    /// Where and why the printed answers are wrong.
+    #[serde(default)]
+    pub errata: Vec<ErratumIn>,
+    /// Any other key: kept for tools, ignored by solve.
+    #[serde(flatten)]
+    pub other: BTreeMap<String, toml::Value>,
+}
+
+/// The parts a problem can ask for, in the order solve runs them.
+pub const PARTS: [&str; 6] = ["view", "project", "window", "viewport", "clip", "shade"];
+
+impl ProblemIn {
+    /// Parses a problem from TOML text; syntax and type errors carry the line
+    /// and column (`file:line:col`).
+    pub fn parse(text: &str, origin: &str) -> Result<ProblemIn> {
+        let p: ProblemIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
+        if let Some(ask) = &p.ask {
+            for a in ask {
+                if !PARTS.contains(&a.as_str()) {
+                    return Err(Error::new(
+                        "ask",
+                        format!("unknown part `{a}`; the parts are {}", PARTS.join(", ")),
+                    ));
+                }
+            }
+        }
+        Ok(p)
+    }
+
+    /// Reads and parses a problem file.
+    pub fn read(path: &Path) -> Result<ProblemIn> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| Error::new("file", format!("cannot read {}: {e}", path.display())))?;
+        ProblemIn::parse(&text, &path.display().to_string())
+    }
+
+    /// The points in file order, each parsed.
+    pub fn points(&self) -> Result<Vec<(String, Vec3In)>> {
+        self.points
+            .iter()
+            .map(|(name, v)| {
+                let arr: Vec3In = v.clone().try_into().map_err(|e: toml::de::Error| {
+                    Error::new(
+                        format!("points.{name}"),
+                        format!("expected [x, y, z]: {}", e.message()),
+                    )
+                })?;
+                Ok((name.clone(), arr))
+            })
+            .collect()
+    }
+
+    /// Whether the part is asked for (explicitly, or by default when the data allow it).
+    pub fn asks(&self, part: &str) -> bool {
+        match &self.ask {
+            Some(a) => a.iter().any(|x| x == part),
+            None => true,
+        }
+    }
+}
+
+/// A TOML error as `origin:line:col: message`, field = the key at fault if known.
+pub fn toml_error(origin: &str, text: &str, e: &toml::de::Error) -> Error {
+    let (line, col) = e.span().map(|s| line_col(text, s.start)).unwrap_or((0, 0));
+    let msg = e.message().trim().to_string();
+    let field = msg
+        .split('`')
+        .nth(1)
+        .filter(|_| msg.contains("field") || msg.contains("key"))
+        .unwrap_or("file")
+        .to_string();
+    Error::new(field, format!("{origin}:{line}:{col}: {msg}"))
+}
+
+/// 1-based line and column of a byte offset.
+pub fn line_col(text: &str, offset: usize) -> (usize, usize) {
+    let before = &text[..offset.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let col = before
+        .rfind('\n')
+        .map(|i| before[i + 1..].chars().count())
+        .unwrap_or(before.chars().count())
+        + 1;
+    (line, col)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_keep_their_written_value() {
+        let p = ProblemIn::parse(
+            "title='t'\n[perspective]\nnear = 0.1\naspect = \"sqrt(2)/2\"\nfar = -3\n",
+            "t",
+        )
+        .unwrap();
+        let per = p.perspective.unwrap();
+        assert_eq!(per.near.unwrap().0, Expr::Lit("0.1".into()));
+        assert_eq!(
+            per.far.unwrap().0,
+            Expr::Neg(Box::new(Expr::Lit("3".into())))
+        );
+        assert!(matches!(per.aspect.unwrap().0, Expr::Div(..)));
+    }
+
+    #[test]
+    fn errors_have_line_and_column() {
+        let e = ProblemIn::parse(
+            "title='t'\n[camera]\neye = [1, 2]\nlook=[0,0,0]\nup=[0,1,0]\n",
+            "p.toml",
+        )
+        .unwrap_err();
+        assert!(e.message.starts_with("p.toml:3:"), "{e}");
+        let e = ProblemIn::parse(
+            "title='t'\n[camera]\neye = [1, 2, \"1+\"]\nlook=[0,0,0]\nup=[0,1,0]\n",
+            "p.toml",
+        )
+        .unwrap_err();
+        assert!(e.message.contains("p.toml:3:"), "{e}");
+        let e = ProblemIn::parse(
+            "title='t'\n[camera]\neye=[0,0,1]\nlok=[0,0,0]\nup=[0,1,0]\n",
+            "p.toml",
+        )
+        .unwrap_err();
+        assert!(e.message.contains("p.toml:4:"), "{e}");
+    }
+}

@@ -1,0 +1,188 @@
+//! Projection of eye-coordinate points onto a view plane: perspective with
+//! the centre of projection (COP) at the origin and the plane z = d, the
+//! general perspective set-up (COP at z = zprp, plane z = zvp), and
+//! orthographic projection.
+
+use crate::error::{Error, Result};
+use crate::num::Scalar;
+use crate::trace::{Step, Trace, Val};
+use crate::vec::{self, V3};
+
+/// A projection set-up.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Projection<T> {
+    /// COP at the origin, view plane z = d: xp = d·x/z, yp = d·y/z, zp = d.
+    Plane {
+        /// d, the plane's z (the text's worked example uses d = −near).
+        d: T,
+    },
+    /// COP at (0, 0, zprp), view plane z = zvp:
+    /// xp = x·(zprp − zvp)/(zprp − z), yp likewise, zp = zvp.
+    General {
+        /// zprp, the z of the centre of projection.
+        zprp: T,
+        /// zvp, the z of the view plane.
+        zvp: T,
+    },
+    /// Orthographic: xp = x, yp = y, zp = 0.
+    Ortho,
+}
+
+impl<T: Scalar> Projection<T> {
+    /// Checks that the plane does not pass through the centre of projection.
+    pub fn validate(&self) -> Result<()> {
+        match self {
+            Projection::Plane { d } if d.is_zero_value() => Err(Error::new(
+                "d",
+                "the view plane z = 0 passes through the centre of projection at the origin",
+            )),
+            Projection::General { zprp, zvp } if zprp == zvp => Err(Error::new(
+                "plane",
+                format!(
+                    "the view plane z = {} passes through the centre of projection",
+                    zvp.to_f64()
+                ),
+            )),
+            _ => Ok(()),
+        }
+    }
+
+    /// The z of the centre of projection (None for orthographic).
+    fn cop_z(&self) -> Option<T> {
+        match self {
+            Projection::Plane { .. } => Some(T::zero()),
+            Projection::General { zprp, .. } => Some(zprp.clone()),
+            Projection::Ortho => None,
+        }
+    }
+}
+
+/// Projects the eye-coordinate point `p` (named `name` in steps and errors).
+///
+/// Errors when the point lies in the plane through the centre of projection
+/// parallel to the view plane (its projector never meets the view plane).
+/// A point behind the centre of projection is projected (the formula still
+/// applies, its image is inverted) with a warning.
+pub fn project<T: Scalar>(
+    proj: &Projection<T>,
+    name: &str,
+    p: &V3<T>,
+    tr: &mut impl Trace,
+) -> Result<V3<T>> {
+    let (x, y, z) = (&p[0], &p[1], &p[2]);
+    let (scale, plane_z, formula) = match proj {
+        Projection::Ortho => {
+            let r = vec::v3(x.clone(), y.clone(), T::zero());
+            tr.step(|| {
+                Step::new(
+                    format!("Orthographic projection of {name}"),
+                    "xp = x,  yp = y,  zp = 0",
+                )
+                .val(name.to_string(), Val::vec3(p))
+                .res(format!("{name}''"), Val::vec3(&r))
+            });
+            return Ok(r);
+        }
+        Projection::Plane { d } => {
+            if z.is_zero_value() {
+                return Err(Error::new(
+                    format!("points.{name}"),
+                    format!("{name} has z = 0: it lies in the plane of the centre of projection and has no image"),
+                ));
+            }
+            (
+                d.clone() / z.clone(),
+                d.clone(),
+                "xp = d·x/z,  yp = d·y/z,  zp = d",
+            )
+        }
+        Projection::General { zprp, zvp } => {
+            let den = zprp.clone() - z.clone();
+            if den.is_zero_value() {
+                return Err(Error::new(
+                    format!("points.{name}"),
+                    format!(
+                        "{name} has z = zprp = {}: it lies in the plane of the centre of projection and has no image",
+                        zprp.to_f64()
+                    ),
+                ));
+            }
+            (
+                (zprp.clone() - zvp.clone()) / den,
+                zvp.clone(),
+                "xp = x·(zprp − zvp)/(zprp − z),  yp = y·(zprp − zvp)/(zprp − z),  zp = zvp",
+            )
+        }
+    };
+    let r = vec::v3(
+        x.clone() * scale.clone(),
+        y.clone() * scale.clone(),
+        plane_z.clone(),
+    );
+    // Behind: the point and the plane are on opposite sides of the COP.
+    let cop = proj.cop_z().unwrap_or_else(T::zero);
+    let behind = (z.clone() - cop.clone() < T::zero()) != (plane_z - cop < T::zero());
+    if behind {
+        tr.warn(|| format!("{name} is behind the centre of projection: its image is inverted and it cannot be seen"));
+    }
+    tr.step(|| {
+        let mut s = Step::new(format!("Perspective projection of {name}"), formula)
+            .val(name.to_string(), Val::vec3(p))
+            .val("scale factor", Val::num(&scale))
+            .res(format!("{name}''"), Val::vec3(&r));
+        if behind {
+            s = s.note("behind the centre of projection: projected, but inverted and not visible");
+        }
+        s
+    });
+    Ok(r)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::trace::NoTrace;
+
+    #[test]
+    fn plane_projection_by_similar_triangles() {
+        // d = −0.1, P = (1, 2, −4): xp = −0.1·1/−4 = 0.025, yp = 0.05.
+        let p = project(
+            &Projection::Plane { d: -0.1 },
+            "P",
+            &V3::new(1.0, 2.0, -4.0),
+            &mut NoTrace,
+        )
+        .unwrap();
+        approx::assert_relative_eq!(p, V3::new(0.025, 0.05, -0.1), epsilon = 1e-16);
+    }
+
+    #[test]
+    fn cop_on_positive_z_axis() {
+        // COP at z = d = 10, plane z = 0: xp = x·d/(d − z) = 4·10/(10 − (−10)) = 2.
+        let g = Projection::General {
+            zprp: 10.0,
+            zvp: 0.0,
+        };
+        let p = project(&g, "P", &V3::new(4.0, -6.0, -10.0), &mut NoTrace).unwrap();
+        approx::assert_relative_eq!(p, V3::new(2.0, -3.0, 0.0), epsilon = 1e-15);
+    }
+
+    #[test]
+    fn point_in_cop_plane_is_an_error() {
+        let e = project(
+            &Projection::Plane { d: -1.0 },
+            "Q",
+            &V3::new(1.0, 1.0, 0.0),
+            &mut NoTrace,
+        )
+        .unwrap_err();
+        assert_eq!(e.field, "points.Q");
+        assert!(Projection::Plane { d: 0.0 }.validate().is_err());
+        assert!(Projection::General {
+            zprp: 2.0,
+            zvp: 2.0
+        }
+        .validate()
+        .is_err());
+    }
+}
