@@ -59,6 +59,10 @@ pub enum Command {
         /// The problem file.
         file: PathBuf,
     },
+    /// Mark a student's answers to a problem, and diagnose the mistakes.
+    Check(crate::check_cmd::CheckArgs),
+    /// Generate problems, question sheets and answer keys.
+    Generate(crate::generate::GenerateArgs),
 }
 
 /// The camera flags.
@@ -156,6 +160,10 @@ pub fn run(cli: &Cli) -> Result<Report> {
         Command::Window(a) => at_precision!(p, window(a)),
         Command::Clip(a) => at_precision!(p, clip(a)),
         Command::Solve { file } => at_precision!(p, solve(file)),
+        Command::Check(_) | Command::Generate(_) => Err(Error::new(
+            "command",
+            "check and generate print their own output: use main_with_args",
+        )),
     }
 }
 
@@ -211,6 +219,24 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
             );
         }
     };
+    let own_output = match &cli.command {
+        Command::Check(a) => Some(crate::check_cmd::run(
+            a,
+            cli.common.json,
+            cli.common.digits as usize,
+        )),
+        Command::Generate(a) => Some(crate::generate::run(a, cli.common.json)),
+        _ => None,
+    };
+    if let Some(out) = own_output {
+        return match out {
+            Ok(text) => {
+                print!("{text}");
+                0
+            }
+            Err(e) => report_error(&e, cli.common.json, None),
+        };
+    }
     match run(&cli) {
         Ok(report) => {
             for w in &report.warnings {

@@ -8,15 +8,21 @@
 //! results into text or JSON.
 
 pub mod camera;
+pub mod check;
+pub mod check_cmd;
 pub mod cli;
 pub mod clip;
 pub mod commands;
+pub mod diagnose;
 pub mod error;
+pub mod generate;
 pub mod input;
 pub mod num;
 pub mod problem;
 pub mod projection;
 pub mod report;
+pub mod report_doc;
+pub mod rng;
 pub mod solve;
 pub mod trace;
 pub mod vec;

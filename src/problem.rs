@@ -147,6 +147,18 @@ pub struct ErratumIn {
     pub why: String,
 }
 
+/// `[check]`: how `grafika check` marks answers to this problem.
+#[derive(Clone, Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CheckIn {
+    /// Relative tolerance (default 0.001).
+    pub tolerance: Option<f64>,
+    /// Minimum significant figures of a rounded decimal answer (default 2).
+    pub sig_figs: Option<u32>,
+    /// The answer keys expected (default: every answer the problem asks for).
+    pub keys: Option<Vec<String>>,
+}
+
 /// A whole problem file.
 #[derive(Clone, Debug, Deserialize)]
 pub struct ProblemIn {
@@ -178,6 +190,8 @@ pub struct ProblemIn {
     /// Where and why the printed answers are wrong.
     #[serde(default)]
     pub errata: Vec<ErratumIn>,
+    /// Settings for `grafika check` (tolerance, significant figures, the answers expected).
+    pub check: Option<CheckIn>,
     /// Any other key: kept for tools, ignored by solve.
     #[serde(flatten)]
     pub other: BTreeMap<String, toml::Value>,

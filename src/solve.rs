@@ -36,8 +36,32 @@ fn eval3<T: Scalar>(field: &str, v: &Vec3In) -> Result<V3<T>> {
     ))
 }
 
+/// Alterations applied to stage results between stages. Solving uses none;
+/// the mistake catalog (`diagnose`) sets one to re-run the real stages with
+/// one step done the wrong way, instead of copying the pipeline's math.
+pub struct Hooks<T> {
+    /// Applied to the camera basis before it is used.
+    pub basis: fn(&mut camera::Basis<T>),
+    /// Applied to the near-plane window before it is used (given fovy in degrees).
+    pub window: fn(&mut window::Window<T>, &T),
+}
+
+impl<T> Default for Hooks<T> {
+    fn default() -> Self {
+        Hooks {
+            basis: |_| {},
+            window: |_, _| {},
+        }
+    }
+}
+
 /// Solves a parsed problem at precision `T`.
 pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
+    solve_with::<T>(p, &Hooks::default())
+}
+
+/// Solves a parsed problem at precision `T`, with stage results altered by `hooks`.
+pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> {
     let mut rec = Recorder::new();
     let mut result: Vec<(String, Val)> = Vec::new();
     let points: Vec<(String, V3<T>)> = p
@@ -66,7 +90,8 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
                 .note("the objects are already given in world coordinates")
         });
         rec.section("Step 2: viewing transformation (world → eye coordinates)");
-        let b = camera::basis(&cam, &mut rec).map_err(|e| camera_field(e))?;
+        let mut b = camera::basis(&cam, &mut rec).map_err(|e| camera_field(e))?;
+        (hooks.basis)(&mut b);
         let m = camera::view_matrix(&b, &cam.pe, &mut rec);
         for (n, q) in &points {
             eye_pts.push((n.clone(), camera::to_eye(&b, &cam.pe, n, q, &mut rec)));
@@ -148,8 +173,9 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
                 .map_err(|m| Error::new("perspective.fovy", m))?;
             let aspect: T = eval("perspective.aspect", aspect)?;
             rec.section("Step 4: window and clipping");
-            let w = window::window(&fovy, &aspect, near, "near", &mut rec)
+            let mut w = window::window(&fovy, &aspect, near, "near", &mut rec)
                 .map_err(|e| perspective_field(e))?;
+            (hooks.window)(&mut w, &fovy);
             let mut r = window_result(&w, "");
             let far: Option<T> = per
                 .far

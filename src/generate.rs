@@ -1,0 +1,678 @@
+//! `grafika generate`: exams with answer keys. Each problem is a problem file
+//! (SPEC §5) drawn from a seeded [`SplitMix64`] with nice numbers for its
+//! difficulty, checked to be non-degenerate and solvable, and solved exactly
+//! for its key; the question sheet and the key (with the full worked
+//! solution) are rendered as Markdown, LaTeX or JSON.
+//!
+//! Nice numbers: at easy level |Pe − Pr| is an integer (Pythagorean triples,
+//! also for |Vup × (Pe − Pr)|, so u, v, n are rational), fovy = 90°, clipping
+//! boxes at the origin; at medium level the answers have a single surd (one
+//! of the two norms is an integer), fovy ∈ {30°, 45°, 60°, 120°}; at hard
+//! level anything goes. Never degenerate: the up vector is not parallel to
+//! the view direction, points lie beyond the near plane (so not on the
+//! projection plane), clipping endpoints are off the box planes and no
+//! segment lies in a box plane. Clipping problems cycle through partial
+//! (clipped), accepted and rejected segments at every level.
+
+use crate::check::default_keys;
+use crate::error::{Error, Result};
+use crate::num::Real;
+use crate::problem::ProblemIn;
+use crate::report::{fmt_dec, Report, Style};
+use crate::report_doc::Doc;
+use crate::rng::SplitMix64;
+use crate::solve::{self, lookup};
+use crate::trace::Val;
+use clap::{Args, ValueEnum};
+use serde_json::{json, Value};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// What the problems are about.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Topic {
+    /// The camera basis u, v, n.
+    Basis,
+    /// The basis and eye coordinates of points.
+    View,
+    /// Projection onto the near plane.
+    Project,
+    /// The viewing window from fovy, aspect and near.
+    Window,
+    /// Line clipping with outcodes.
+    Clip,
+    /// Lighting at one point.
+    Shade,
+    /// The whole chain: view, projection, window, viewport.
+    Pipeline,
+}
+
+/// How nice the numbers are.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Difficulty {
+    /// Integer norms, rational answers.
+    Easy,
+    /// One surd in the answers.
+    Medium,
+    /// General.
+    Hard,
+}
+
+/// The format of the question sheet and the key.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    /// Only the problem files and the answer-key files (TOML).
+    Toml,
+    /// questions.md and key.md.
+    Md,
+    /// questions.tex and key.tex (plain pdflatex).
+    Latex,
+    /// exam.json (statements, answers, worked steps).
+    Json,
+}
+
+/// The `generate` flags.
+#[derive(Args, Debug, Clone)]
+pub struct GenerateArgs {
+    /// The topic.
+    #[arg(long, value_enum)]
+    pub topic: Topic,
+    /// Problems per exam.
+    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=500))]
+    pub count: u32,
+    /// The seed: the same seed gives the same files, byte for byte.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// How nice the numbers are.
+    #[arg(long, value_enum, default_value_t = Difficulty::Medium)]
+    pub difficulty: Difficulty,
+    /// The format of the question sheet and key.
+    #[arg(long, value_enum, default_value_t = Format::Md)]
+    pub format: Format,
+    /// The output directory (created if needed).
+    #[arg(long)]
+    pub out: PathBuf,
+    /// Versions of the exam (one per student), each with its own key.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=500))]
+    pub variants: u32,
+}
+
+/// One generated problem.
+pub struct Generated {
+    /// The problem file's text.
+    pub toml: String,
+    /// The parsed problem.
+    pub problem: ProblemIn,
+    /// The exact solution.
+    pub report: Report,
+    /// The answers asked for.
+    pub keys: Vec<String>,
+}
+
+/// Runs `grafika generate`; returns what to print.
+pub fn run(a: &GenerateArgs, json: bool) -> Result<String> {
+    let files = write_exams(a)?;
+    Ok(if json {
+        serde_json::to_string_pretty(&json!({
+            "command": "generate",
+            "seed": a.seed,
+            "files": files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>(),
+        }))
+        .unwrap_or_default()
+            + "\n"
+    } else {
+        let mut s = format!(
+            "wrote {} files ({} variant{} of {} {} problem{}, seed {}) to {}\n",
+            files.len(),
+            a.variants,
+            if a.variants == 1 { "" } else { "s" },
+            a.count,
+            format!("{:?}", a.topic).to_lowercase(),
+            if a.count == 1 { "" } else { "s" },
+            a.seed,
+            a.out.display()
+        );
+        for f in files.iter().take(12) {
+            let _ = writeln!(s, "  {}", f.display());
+        }
+        if files.len() > 12 {
+            let _ = writeln!(s, "  … and {} more", files.len() - 12);
+        }
+        s
+    })
+}
+
+/// Generates and writes every variant; returns the files written.
+pub fn write_exams(a: &GenerateArgs) -> Result<Vec<PathBuf>> {
+    let mut files = Vec::new();
+    for v in 0..a.variants {
+        let dir = if a.variants == 1 {
+            a.out.clone()
+        } else {
+            a.out.join(format!("variant-{:02}", v + 1))
+        };
+        std::fs::create_dir_all(&dir)
+            .map_err(|e| Error::new("out", format!("cannot create {}: {e}", dir.display())))?;
+        let exam = exam(a.topic, a.difficulty, a.count, variant_seed(a.seed, v))?;
+        files.extend(write_exam(&dir, a, v + 1, &exam)?);
+    }
+    Ok(files)
+}
+
+/// The seed of variant v (variant 0 of seed S is S itself).
+fn variant_seed(seed: u64, v: u32) -> u64 {
+    if v == 0 {
+        seed
+    } else {
+        SplitMix64::fork(seed, 0x5641_5249_0000_0000 | v as u64).next_u64()
+    }
+}
+
+/// The problems of one exam.
+pub fn exam(topic: Topic, diff: Difficulty, count: u32, seed: u64) -> Result<Vec<Generated>> {
+    (0..count)
+        .map(|i| {
+            let mut rng = SplitMix64::fork(seed, i as u64);
+            problem(topic, diff, i as usize, &mut rng)
+        })
+        .collect()
+}
+
+/// One problem: drawn until it is non-degenerate and solves.
+pub fn problem(
+    topic: Topic,
+    diff: Difficulty,
+    index: usize,
+    rng: &mut SplitMix64,
+) -> Result<Generated> {
+    if topic == Topic::Shade {
+        return Err(Error::new(
+            "topic",
+            "lighting problems need the lighting stage, which this build does not have yet",
+        ));
+    }
+    for _ in 0..500 {
+        let toml = match topic {
+            Topic::Basis | Topic::View | Topic::Project | Topic::Pipeline => {
+                camera_problem(topic, diff, index, rng)
+            }
+            Topic::Window => window_problem(diff, index, rng),
+            Topic::Clip => clip_problem(diff, index, rng),
+            Topic::Shade => unreachable!("rejected above"),
+        };
+        if let Some(g) = accept(&toml, topic, diff, index) {
+            return Ok(g);
+        }
+    }
+    Err(Error::new(
+        "seed",
+        "could not draw a non-degenerate problem in 500 tries",
+    ))
+}
+
+/// Parses, solves and screens a drawn problem.
+fn accept(toml: &str, topic: Topic, diff: Difficulty, index: usize) -> Option<Generated> {
+    let problem = ProblemIn::parse(toml, "generated").ok()?;
+    let f64_result = solve::solve::<f64>(&problem).ok()?.result;
+    if !screen(&problem, &f64_result, topic, diff, index) {
+        return None;
+    }
+    let report = solve::solve::<Real>(&problem).ok()?;
+    if !report.warnings.is_empty() {
+        return None;
+    }
+    let keys = problem
+        .check
+        .as_ref()
+        .and_then(|c| c.keys.clone())
+        .unwrap_or_else(|| default_keys(&report.result));
+    Some(Generated {
+        toml: toml.to_string(),
+        problem,
+        report,
+        keys,
+    })
+}
+
+/// Non-degeneracy and the clipping status wanted.
+fn screen(
+    p: &ProblemIn,
+    r: &[(String, Val)],
+    topic: Topic,
+    diff: Difficulty,
+    index: usize,
+) -> bool {
+    let num = |v: &Val| match v {
+        Val::Num(s) => Some(s.value),
+        _ => None,
+    };
+    // Points strictly beyond the near plane (never on the projection plane
+    // z' = −near, never behind the eye), and not grazing it.
+    if let Some(Val::Map(pts)) = lookup(r, "view.points") {
+        let near = p
+            .perspective
+            .as_ref()
+            .and_then(|x| x.near.as_ref())
+            .and_then(|n| n.0.eval::<f64>().ok())
+            .unwrap_or(0.0);
+        for (_, e) in pts {
+            if let Val::List(c) = e {
+                match c.get(2).and_then(num) {
+                    Some(z) if z < -(near + 0.5) => {}
+                    _ => return false,
+                }
+            }
+        }
+    }
+    // Projected points inside the window for the pipeline (a clean exam).
+    if topic == Topic::Pipeline {
+        if let Some(Val::Map(px)) = lookup(r, "viewport.pixels") {
+            let vp: Vec<f64> = p
+                .perspective
+                .as_ref()
+                .and_then(|x| x.viewport.as_ref())
+                .map(|v| v.iter().filter_map(|n| n.0.eval::<f64>().ok()).collect())
+                .unwrap_or_default();
+            for (_, q) in px {
+                if let Val::List(c) = q {
+                    let (x, y) = (c.first().and_then(num), c.get(1).and_then(num));
+                    match (x, y, vp.first(), vp.get(1)) {
+                        (Some(x), Some(y), Some(w), Some(h))
+                            if x > 0.0 && x < *w && y > 0.0 && y < *h => {}
+                        _ => return false,
+                    }
+                }
+            }
+        }
+    }
+    if topic == Topic::Clip {
+        let want = ["clipped", "accepted", "rejected"][index % 3];
+        let ok = matches!(lookup(r, "clip.status"), Some(Val::Text(s)) if s == want);
+        if !ok {
+            return false;
+        }
+        if want == "clipped" {
+            // a real piece, not a single point
+            if let Some(Val::List(seg)) = lookup(r, "clip.segment") {
+                if seg.first() == seg.get(1) {
+                    return false;
+                }
+            }
+        }
+        let _ = diff;
+    }
+    true
+}
+
+/// `[a, b, c]` for a TOML file.
+fn arr(v: &[String]) -> String {
+    format!("[{}]", v.join(", "))
+}
+
+fn ints(v: [i64; 3]) -> String {
+    arr(&v.iter().map(|x| x.to_string()).collect::<Vec<_>>())
+}
+
+/// A TOML string literal.
+fn tstr(s: &str) -> String {
+    toml::Value::String(s.to_string()).to_string()
+}
+
+/// (x, y, z) for a statement.
+fn tuple(v: [i64; 3]) -> String {
+    format!("({}, {}, {})", v[0], v[1], v[2])
+}
+
+const TRIPLES: [(i64, i64); 6] = [(3, 4), (4, 3), (5, 12), (12, 5), (6, 8), (8, 6)];
+
+/// Pe − Pr and Vup for the difficulty.
+fn direction(diff: Difficulty, rng: &mut SplitMix64) -> ([i64; 3], [i64; 3]) {
+    let sign = |r: &mut SplitMix64| if r.coin() { 1 } else { -1 };
+    match diff {
+        Difficulty::Easy => {
+            // (a, 0, c) with a² + c² a square, or (3, 12, 4)-like: |d| = 13
+            // and |Vup × d| = 5 are both integers.
+            if rng.below(3) == 0 {
+                let (a, c) = *rng.pick(&[(3, 4), (4, 3)]);
+                ([sign(rng) * a, sign(rng) * 12, sign(rng) * c], [0, 1, 0])
+            } else {
+                let (a, c) = *rng.pick(&TRIPLES[..4]);
+                ([sign(rng) * a, 0, sign(rng) * c], [0, 1, 0])
+            }
+        }
+        Difficulty::Medium => {
+            if rng.coin() {
+                // (a, 0, c): |d| = |Vup × d| = √(a² + c²), one surd
+                let a = rng.range(-3, 3);
+                let c = rng.range(1, 3) * sign(rng);
+                ([a, 0, c], [0, 1, 0])
+            } else {
+                // a² + c² square, b ≠ 0: u rational, |d| = √(25 + b²)
+                let (a, c) = *rng.pick(&TRIPLES[..2]);
+                let b = rng.range(1, 3) * sign(rng);
+                ([sign(rng) * a, b, sign(rng) * c], [0, 1, 0])
+            }
+        }
+        Difficulty::Hard => {
+            let d = [rng.range(-5, 5), rng.range(-5, 5), rng.range(-5, 5)];
+            let up = *rng.pick(&[[0, 1, 0], [0, 0, 1], [1, 1, 0], [0, 1, 1]]);
+            (d, up)
+        }
+    }
+}
+
+fn camera_problem(topic: Topic, diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String {
+    let (d, up) = direction(diff, rng);
+    let look = [rng.range(-2, 2), rng.range(-2, 2), rng.range(-2, 2)];
+    let eye = [look[0] + d[0], look[1] + d[1], look[2] + d[2]];
+    let npts = match topic {
+        Topic::Basis => 0,
+        Topic::Pipeline => 3,
+        _ => 2 + rng.below(2) as usize,
+    };
+    let spread = if diff == Difficulty::Hard { 3 } else { 2 };
+    let pts: Vec<(String, [i64; 3])> = ["A", "B", "C"][..npts]
+        .iter()
+        .map(|n| {
+            let p = [
+                look[0] + rng.range(-spread, spread),
+                look[1] + rng.range(-spread, spread),
+                look[2] + rng.range(-spread, spread),
+            ];
+            (n.to_string(), p)
+        })
+        .collect();
+    let near: &str = match diff {
+        Difficulty::Easy => *rng.pick(&["1", "2"]),
+        Difficulty::Medium => *rng.pick(&["0.5", "1", "2"]),
+        Difficulty::Hard => *rng.pick(&["0.1", "0.25", "0.5"]),
+    };
+    let mut t = String::new();
+    let n = index + 1;
+    let pts_text = pts
+        .iter()
+        .map(|(n, p)| format!("{n}{}", tuple(*p)))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let cam_text = format!(
+        "A camera at Pe = {} looks at Pr = {} with up vector Vup = {}.",
+        tuple(eye),
+        tuple(look),
+        tuple(up)
+    );
+    let (title, ask, statement) = match topic {
+        Topic::Basis => (
+            "camera basis",
+            r#"["view"]"#,
+            format!("{cam_text} Find the camera axes n, u and v."),
+        ),
+        Topic::View => (
+            "eye coordinates",
+            r#"["view"]"#,
+            format!("{cam_text} Find the camera axes n, u, v and the eye coordinates of the points {pts_text}."),
+        ),
+        Topic::Project => (
+            "projection onto the near plane",
+            r#"["project"]"#,
+            format!("{cam_text} With near = {near}, project the points {pts_text} onto the near plane z = d = −near (centre of projection at the eye); give (xp, yp, zp)."),
+        ),
+        _ => (
+            "the viewing pipeline",
+            r#"["view", "project", "window", "viewport"]"#,
+            String::new(),
+        ),
+    };
+    let _ = writeln!(t, "title = {}", tstr(&format!("Problem {n}: {title}")));
+    let mut statement = statement;
+    let mut per = String::new();
+    if topic == Topic::Project {
+        let _ = writeln!(per, "[perspective]\nnear = {near}\n");
+    }
+    if topic == Topic::Pipeline {
+        let fovy = *rng.pick(match diff {
+            Difficulty::Easy => &[90][..],
+            Difficulty::Medium => &[45, 60, 90][..],
+            Difficulty::Hard => &[40, 50, 70][..],
+        });
+        let aspect = *rng.pick(&["1", "2", "1.5"]);
+        let vp = *rng.pick(&["[200, 100]", "[400, 200]", "[300, 200]"]);
+        statement = format!(
+            "{cam_text} The perspective set-up is near = {near}, fovy = {fovy}°, aspect = {aspect}, viewport {} pixels. For the points {pts_text}: (1) find n, u, v and the eye coordinates; (2) project them onto the near plane z = −near; (3) find the viewing window (top, bottom, left, right, height, width); (4) find the pixel coordinates of the projected points.",
+            vp.trim_matches(['[', ']']).replace(", ", "x")
+        );
+        let _ = writeln!(
+            per,
+            "[perspective]\nnear = {near}\nfovy = {fovy}\naspect = {aspect}\nviewport = {vp}\n"
+        );
+    }
+    let _ = writeln!(t, "statement = {}", tstr(&statement));
+    let _ = writeln!(t, "ask = {ask}\n");
+    let _ = writeln!(
+        t,
+        "[camera]\neye = {}\nlook = {}\nup = {}\n",
+        ints(eye),
+        ints(look),
+        ints(up)
+    );
+    t.push_str(&per);
+    if !pts.is_empty() {
+        t.push_str("[points]\n");
+        for (n, p) in &pts {
+            let _ = writeln!(t, "{n} = {}", ints(*p));
+        }
+        t.push('\n');
+    }
+    if topic == Topic::Basis {
+        t.push_str("[check]\nkeys = [\"view.n\", \"view.u\", \"view.v\"]\n");
+    }
+    t
+}
+
+fn window_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String {
+    let (fovy, aspect, near): (i64, &str, &str) = match diff {
+        Difficulty::Easy => (90, *rng.pick(&["1", "2"]), *rng.pick(&["1", "2", "3"])),
+        Difficulty::Medium => (
+            *rng.pick(&[30, 45, 60, 120]),
+            *rng.pick(&["1.5", "2", "4/3"]),
+            *rng.pick(&["0.5", "1", "0.1"]),
+        ),
+        Difficulty::Hard => (
+            *rng.pick(&[40, 50, 70, 75]),
+            *rng.pick(&["16/9", "1.6", "1.25"]),
+            *rng.pick(&["0.1", "0.25", "0.3"]),
+        ),
+    };
+    let aspect_toml = if aspect.contains('/') {
+        tstr(aspect)
+    } else {
+        aspect.to_string()
+    };
+    format!(
+        "title = {}\nstatement = {}\nask = [\"window\"]\n\n[perspective]\nnear = {near}\nfovy = {fovy}\naspect = {aspect_toml}\n",
+        tstr(&format!("Problem {}: the viewing window", index + 1)),
+        tstr(&format!("A perspective camera has fovy = {fovy}°, aspect ratio {aspect} and near = {near}. Find the viewing window on the near plane: top, bottom, left, right, height and width.")),
+    )
+}
+
+fn clip_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String {
+    let (min, max, pad) = match diff {
+        Difficulty::Easy => (
+            [0, 0, 0],
+            [rng.range(2, 4), rng.range(2, 4), rng.range(2, 4)],
+            2,
+        ),
+        Difficulty::Medium => {
+            let min = [rng.range(-3, 0), rng.range(-3, 0), rng.range(-3, 0)];
+            (
+                min,
+                [
+                    min[0] + rng.range(2, 5),
+                    min[1] + rng.range(2, 5),
+                    min[2] + rng.range(2, 5),
+                ],
+                3,
+            )
+        }
+        Difficulty::Hard => {
+            let min = [rng.range(-5, 0), rng.range(-5, 0), rng.range(-5, 0)];
+            (
+                min,
+                [
+                    min[0] + rng.range(3, 8),
+                    min[1] + rng.range(3, 8),
+                    min[2] + rng.range(3, 8),
+                ],
+                4,
+            )
+        }
+    };
+    let draw = |r: &mut SplitMix64| -> [i64; 3] {
+        std::array::from_fn(|k| r.range(min[k] - pad, max[k] + pad))
+    };
+    let (p0, p1) = (draw(rng), draw(rng));
+    // Off the box planes, and not lying in one.
+    let on_plane = |p: &[i64; 3]| (0..3).any(|k| p[k] == min[k] || p[k] == max[k]);
+    if on_plane(&p0) || on_plane(&p1) || p0 == p1 {
+        return String::new(); // rejected by accept()
+    }
+    format!(
+        "title = {}\nstatement = {}\nask = [\"clip\"]\n\n[clip]\nmin = {}\nmax = {}\n\n[[clip.segment]]\nfrom = {}\nto = {}\n",
+        tstr(&format!("Problem {}: line clipping", index + 1)),
+        tstr(&format!(
+            "The view volume is the box {}min ≤ x ≤ {}max... with corners {} and {}. For the segment P0{} P1{}: (a) give the region codes of P0 and P1 (6 bits, bit 1 rightmost: left, right, bottom, top, front, back); (b) is the segment accepted, rejected or clipped, and what is left of it?",
+            "", "", tuple(min), tuple(max), tuple(p0), tuple(p1)
+        ).replace(" box min ≤ x ≤ max... with corners", " box with corners")),
+        ints(min),
+        ints(max),
+        ints(p0),
+        ints(p1)
+    )
+}
+
+/// The answer-key file: `key = value` lines in `grafika check` format, each
+/// value exact where it has an exact form.
+pub fn key_toml(g: &Generated) -> String {
+    let mut s = format!("# Answer key: {}\n", g.problem.title);
+    for k in &g.keys {
+        if let Some(v) = lookup(&g.report.result, k) {
+            let _ = writeln!(s, "{k} = {}", answer_value(v));
+        }
+    }
+    s
+}
+
+/// A value as a check answer (TOML).
+fn answer_value(v: &Val) -> String {
+    match v {
+        Val::Num(n) => tstr(&n.exact.clone().unwrap_or_else(|| format!("{}", n.value))),
+        Val::List(items) => arr(&items.iter().map(answer_value).collect::<Vec<_>>()),
+        Val::Text(t) => tstr(t),
+        Val::Null => tstr("none"),
+        Val::Bool(b) => b.to_string(),
+        Val::Map(_) => tstr(""),
+    }
+}
+
+/// Writes one exam's files.
+fn write_exam(
+    dir: &Path,
+    a: &GenerateArgs,
+    variant: u32,
+    exam: &[Generated],
+) -> Result<Vec<PathBuf>> {
+    let mut files = Vec::new();
+    let mut put = |name: String, text: String| -> Result<()> {
+        let path = dir.join(name);
+        std::fs::write(&path, text)
+            .map_err(|e| Error::new("out", format!("cannot write {}: {e}", path.display())))?;
+        files.push(path);
+        Ok(())
+    };
+    for (i, g) in exam.iter().enumerate() {
+        put(format!("problem-{:02}.toml", i + 1), g.toml.clone())?;
+        put(format!("problem-{:02}.key.toml", i + 1), key_toml(g))?;
+    }
+    let title = format!(
+        "grafika exam: {} ({}), seed {}{}",
+        format!("{:?}", a.topic).to_lowercase(),
+        format!("{:?}", a.difficulty).to_lowercase(),
+        a.seed,
+        if a.variants > 1 {
+            format!(", variant {variant}")
+        } else {
+            String::new()
+        }
+    );
+    let style = Style {
+        digits: 4,
+        exact_mode: true,
+    };
+    match a.format {
+        Format::Toml => {}
+        Format::Md | Format::Latex => {
+            let doc = if a.format == Format::Md {
+                Doc::Markdown
+            } else {
+                Doc::Latex
+            };
+            let ext = if doc == Doc::Markdown { "md" } else { "tex" };
+            let (q, k) = sheets(doc, exam, &style);
+            put(format!("questions.{ext}"), doc.document(&title, &q))?;
+            put(
+                format!("key.{ext}"),
+                doc.document(&format!("{title} — answer key"), &k),
+            )?;
+        }
+        Format::Json => {
+            let problems: Vec<Value> = exam
+                .iter()
+                .enumerate()
+                .map(|(i, g)| {
+                    json!({
+                        "file": format!("problem-{:02}.toml", i + 1),
+                        "title": g.problem.title,
+                        "statement": g.problem.statement,
+                        "keys": g.keys,
+                        "answers": g.keys.iter().filter_map(|k| lookup(&g.report.result, k).map(|v| (k.clone(), json!({
+                            "decimal": crate::report::value_json(v), "exact": crate::report::exact_json(v) })))).collect::<serde_json::Map<_, _>>(),
+                        "solution": g.report.to_json(),
+                    })
+                })
+                .collect();
+            let j =
+                json!({ "title": title, "seed": a.seed, "variant": variant, "problems": problems });
+            put(
+                "exam.json".into(),
+                serde_json::to_string_pretty(&j).unwrap_or_default() + "\n",
+            )?;
+        }
+    }
+    Ok(files)
+}
+
+/// The question sheet and the key bodies.
+fn sheets(doc: Doc, exam: &[Generated], st: &Style) -> (String, String) {
+    let mut q = String::new();
+    let mut k = String::new();
+    for g in exam {
+        let title = &g.problem.title;
+        let statement = g.problem.statement.clone().unwrap_or_default();
+        q.push_str(&doc.heading(1, title));
+        q.push_str(&doc.text(&statement));
+        q.push_str("\n\n");
+        k.push_str(&doc.heading(1, title));
+        k.push_str(&doc.text(&statement));
+        k.push_str("\n\n");
+        k.push_str(&doc.heading(2, "Answers"));
+        let items: Vec<(String, Val)> = g
+            .keys
+            .iter()
+            .filter_map(|key| lookup(&g.report.result, key).map(|v| (key.clone(), v.clone())))
+            .collect();
+        k.push_str(&doc.answers(st, &items));
+        k.push_str(&doc.heading(2, "Worked solution"));
+        k.push_str(&doc.steps(&g.report, st));
+    }
+    let _ = fmt_dec;
+    (q, k)
+}
