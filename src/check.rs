@@ -599,8 +599,9 @@ fn judge_number(text: &str, e: &Shown, s: &Settings, carry: bool) -> Judged {
             }
         }
     }
-    // Exact forms compare to 1e-12 when exact arithmetic cannot decide.
-    if places.is_none() && (g - ev).abs() <= ZERO_TOLERANCE * ev.abs().max(1.0) {
+    // Equal to 1e-12 (relative): exact, when exact arithmetic cannot decide
+    // (a terminating decimal such as 0.6 = 3/5 is exact, however few digits).
+    if (g - ev).abs() <= ZERO_TOLERANCE * ev.abs().max(1.0) {
         return Judged::new(Verdict::Correct, "correct.exact", "exact");
     }
     if let Some(j) = within_tolerance(g, ev, s, places) {

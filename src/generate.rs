@@ -526,13 +526,53 @@ fn clip_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String 
             )
         }
     };
-    let draw = |r: &mut SplitMix64| -> [i64; 3] {
-        std::array::from_fn(|k| r.range(min[k] - pad, max[k] + pad))
+    // A coordinate off the box planes: inside (strictly) or outside.
+    let inside = |r: &mut SplitMix64, k: usize| r.range(min[k] + 1, max[k] - 1);
+    let any = |r: &mut SplitMix64, k: usize| loop {
+        let x = r.range(min[k] - pad, max[k] + pad);
+        if x != min[k] && x != max[k] {
+            return x;
+        }
     };
-    let (p0, p1) = (draw(rng), draw(rng));
-    // Off the box planes, and not lying in one.
-    let on_plane = |p: &[i64; 3]| (0..3).any(|k| p[k] == min[k] || p[k] == max[k]);
-    if on_plane(&p0) || on_plane(&p1) || p0 == p1 {
+    let (p0, p1): ([i64; 3], [i64; 3]) = match index % 3 {
+        // clipped: one end inside and the other anywhere, or both anywhere
+        0 => {
+            let a: [i64; 3] = if rng.coin() {
+                std::array::from_fn(|k| inside(rng, k))
+            } else {
+                std::array::from_fn(|k| any(rng, k))
+            };
+            let b: [i64; 3] = std::array::from_fn(|k| any(rng, k));
+            if rng.coin() {
+                (a, b)
+            } else {
+                (b, a)
+            }
+        }
+        // accepted: both ends strictly inside
+        1 => (
+            std::array::from_fn(|k| inside(rng, k)),
+            std::array::from_fn(|k| inside(rng, k)),
+        ),
+        // rejected: both ends beyond one plane, or anywhere (a segment
+        // that passes the box by is rejected only after clipping)
+        _ => {
+            let mut a: [i64; 3] = std::array::from_fn(|k| any(rng, k));
+            let mut b: [i64; 3] = std::array::from_fn(|k| any(rng, k));
+            if rng.below(3) != 0 {
+                let k = rng.below(3) as usize;
+                let (lo, hi) = if rng.coin() {
+                    (min[k] - pad, min[k] - 1)
+                } else {
+                    (max[k] + 1, max[k] + pad)
+                };
+                a[k] = rng.range(lo, hi);
+                b[k] = rng.range(lo, hi);
+            }
+            (a, b)
+        }
+    };
+    if p0 == p1 {
         return String::new(); // rejected by accept()
     }
     format!(
@@ -564,7 +604,13 @@ pub fn key_toml(g: &Generated) -> String {
 /// A value as a check answer (TOML).
 fn answer_value(v: &Val) -> String {
     match v {
-        Val::Num(n) => tstr(&n.exact.clone().unwrap_or_else(|| format!("{}", n.value))),
+        Val::Num(n) => tstr(&n.exact.clone().unwrap_or_else(|| {
+            if n.value == 0.0 {
+                "0".into() // not "-0"
+            } else {
+                format!("{}", n.value)
+            }
+        })),
         Val::List(items) => arr(&items.iter().map(answer_value).collect::<Vec<_>>()),
         Val::Text(t) => tstr(t),
         Val::Null => tstr("none"),

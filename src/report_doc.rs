@@ -29,7 +29,7 @@ impl Doc {
         match self {
             Doc::Markdown => format!("{} {}\n\n", "#".repeat(level + 1), self.text(s)),
             Doc::Latex => {
-                let cmd = ["section*", "subsection*", "subsubsection*"][level.min(2)];
+                let cmd = ["section*", "subsection*", "subsubsection*", "paragraph"][level.min(3)];
                 format!("\\{cmd}{{{}}}\n\n", latex_text(s))
             }
         }
@@ -101,7 +101,7 @@ impl Doc {
             if s.section.as_deref() != section {
                 section = s.section.as_deref();
                 if let Some(sec) = section {
-                    out.push_str(&self.heading(2, sec));
+                    out.push_str(&self.heading(3, sec));
                 }
             }
             out.push_str(&self.step(i + 1, s, st));
