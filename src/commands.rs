@@ -284,7 +284,24 @@ pub fn clip_run<T: Scalar>(
                 None => Val::Null,
             },
         ),
+        (
+            "intersections".into(),
+            Val::Map(r.intersections.iter().map(intersection_val).collect()),
+        ),
     ]
+}
+
+/// One tried intersection as a result: its plane's key and t, point, code, kept.
+fn intersection_val<T: Scalar>(i: &clip::Intersection<T>) -> (String, Val) {
+    (
+        clip::PLANE_KEYS[i.bit].to_string(),
+        Val::Map(vec![
+            ("t".into(), Val::num(&i.t)),
+            ("point".into(), Val::vec3(&i.point)),
+            ("code".into(), Val::text(clip::code_str(i.code))),
+            ("kept".into(), Val::Bool(i.code == 0)),
+        ]),
+    )
 }
 
 /// Equal up to rounding (exact values compare exactly).

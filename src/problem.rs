@@ -178,6 +178,9 @@ pub struct ProblemIn {
     /// Where and why the printed answers are wrong.
     #[serde(default)]
     pub errata: Vec<ErratumIn>,
+    /// Remarks on the source beyond single answers (misprinted rules).
+    #[serde(default)]
+    pub source_notes: Vec<String>,
     /// Any other key: kept for tools, ignored by solve.
     #[serde(flatten)]
     pub other: BTreeMap<String, toml::Value>,

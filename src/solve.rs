@@ -252,6 +252,15 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
         rec,
     );
     report.notes = notes;
+    if !p.source_notes.is_empty() {
+        let lines: Vec<String> = p.source_notes.iter().map(|n| format!("  - {n}")).collect();
+        report
+            .notes
+            .push(format!("Notes on the source:\n{}", lines.join("\n")));
+        report
+            .extra
+            .insert("source_notes".into(), json!(p.source_notes));
+    }
     if !comparison.is_empty() {
         report
             .extra
