@@ -291,7 +291,8 @@ fn code_step<T: Scalar>(name: &str, b: &ClipBox<T>, p: &V3<T>, code: u8) -> Step
 /// A number for a one-line remark: its exact form, else a short decimal.
 fn short<T: Scalar>(x: &T) -> String {
     let s = x.shown();
-    s.pretty.unwrap_or_else(|| crate::report::fmt_dec(s.value, 6).replace('-', "−"))
+    s.pretty
+        .unwrap_or_else(|| crate::report::fmt_dec(s.value, 6).replace('-', "−"))
 }
 
 /// Liang–Barsky: with Δ = P1 − P0, for each of the six pairs
