@@ -9,7 +9,7 @@ use crate::commands::{basis_result, clip_run, window_result};
 use crate::error::{Error, Result};
 use crate::input;
 use crate::num::{Expr, Scalar};
-use crate::problem::{Num, ProblemIn, Vec3In};
+use crate::problem::{Num, PointRef, ProblemIn, Vec3In};
 use crate::projection::{self, Projection};
 use crate::report::{fmt_dec, Report, Style};
 use crate::trace::{Recorder, Step, Trace, Val};
@@ -225,7 +225,8 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
         let mut all = Vec::new();
         for (i, s) in c.segment.iter().enumerate() {
             let f = format!("clip.segment[{i}]");
-            let (p0, p1): (V3<T>, V3<T>) = (eval3(&f, &s.from)?, eval3(&f, &s.to)?);
+            let p0: V3<T> = point_ref(&format!("{f}.from"), &s.from, &points)?;
+            let p1: V3<T> = point_ref(&format!("{f}.to"), &s.to, &points)?;
             rec.section(if c.segment.len() == 1 {
                 "Line clipping".to_string()
             } else {
@@ -267,6 +268,31 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
             .insert("comparison".into(), Value::Array(comparison));
     }
     Ok(report)
+}
+
+/// A segment end: its coordinates, or the named point's.
+fn point_ref<T: Scalar>(field: &str, r: &PointRef, points: &[(String, V3<T>)]) -> Result<V3<T>> {
+    match r {
+        PointRef::At(v) => eval3(field, v),
+        PointRef::Named(name) => points
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, p)| p.clone())
+            .ok_or_else(|| {
+                let known: Vec<&str> = points.iter().map(|(n, _)| n.as_str()).collect();
+                Error::new(
+                    field,
+                    if known.is_empty() {
+                        format!("unknown point `{name}`: the problem has no [points]")
+                    } else {
+                        format!(
+                            "unknown point `{name}`; the points are {}",
+                            known.join(", ")
+                        )
+                    },
+                )
+            }),
+    }
 }
 
 fn camera_field(e: Error) -> Error {

@@ -173,6 +173,8 @@ fn clip_cases_cover_every_outcome() {
     close_vec(&segs[4]["segment"][0], &[3.0, 4.0, 1.0], 1e-15);
     close_vec(&segs[4]["segment"][1], &[3.0, 4.0, 1.0], 1e-15);
     close_vec(&segs[5]["segment"][1], &[1.0, 1.0, 3.0], 1e-15);
+    // Case 7 names its ends: A(−1,2,2) → B(2,2,2) enters the box at x = 0.
+    close_vec(&segs[6]["segment"][0], &[0.0, 2.0, 2.0], 1e-15);
 }
 
 #[test]
