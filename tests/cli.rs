@@ -166,7 +166,7 @@ fn clip_cases_cover_every_outcome() {
     let status: Vec<&str> = segs.iter().map(|s| s["status"].as_str().unwrap()).collect();
     assert_eq!(
         status,
-        ["accepted", "rejected", "rejected", "rejected", "clipped", "clipped"]
+        ["accepted", "rejected", "rejected", "rejected", "clipped", "clipped", "clipped"]
     );
     assert_eq!(segs[3]["segment"], serde_json::Value::Null);
     // Case 5 touches only the edge point (3, 4, 1): both ends equal.
