@@ -246,12 +246,7 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
     }
 
     let (notes, comparison) = compare_printed(p, &result);
-    let mut report = crate::commands::report::<T>(
-        "solve",
-        json!({ "title": p.title, "source": p.source, "ask": p.ask }),
-        result,
-        rec,
-    );
+    let mut report = crate::commands::report::<T>("solve", input_json(p), result, rec);
     report.notes = notes;
     if !p.source_notes.is_empty() {
         let lines: Vec<String> = p.source_notes.iter().map(|n| format!("  - {n}")).collect();
@@ -268,6 +263,43 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
             .insert("comparison".into(), Value::Array(comparison));
     }
     Ok(report)
+}
+
+/// The problem's inputs as JSON numbers (f64 values of the written numbers;
+/// names for named segment ends).
+fn input_json(p: &ProblemIn) -> Value {
+    let n = |x: &Num| x.0.eval::<f64>().map(|v| json!(v)).unwrap_or(Value::Null);
+    let v3 = |v: &Vec3In| json!([n(&v[0]), n(&v[1]), n(&v[2])]);
+    let pref = |r: &PointRef| match r {
+        PointRef::At(v) => v3(v),
+        PointRef::Named(name) => json!(name),
+    };
+    let mut o = json!({ "title": p.title, "source": p.source, "ask": p.ask });
+    if let Some(c) = &p.camera {
+        o["camera"] = json!({ "eye": v3(&c.eye), "look": v3(&c.look), "up": v3(&c.up) });
+    }
+    if let Ok(points) = p.points() {
+        o["points"] = Value::Object(points.iter().map(|(k, v)| (k.clone(), v3(v))).collect());
+    }
+    if let Some(per) = &p.perspective {
+        o["perspective"] = json!({
+            "near": per.near.as_ref().map(n),
+            "far": per.far.as_ref().map(n),
+            "fovy": per.fovy.as_ref().and_then(|a| a.0.degrees::<f64>().ok()),
+            "aspect": per.aspect.as_ref().map(n),
+            "viewport": per.viewport.as_ref().map(|v| json!([n(&v[0]), n(&v[1])])),
+            "d": per.d.as_ref().map(n),
+        });
+    }
+    if let Some(c) = &p.clip {
+        let segs: Vec<Value> = c
+            .segment
+            .iter()
+            .map(|s| json!({ "from": pref(&s.from), "to": pref(&s.to) }))
+            .collect();
+        o["clip"] = json!({ "min": v3(&c.min), "max": v3(&c.max), "segment": segs });
+    }
+    o
 }
 
 /// A segment end: its coordinates, or the named point's.
