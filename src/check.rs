@@ -10,7 +10,7 @@
 
 use crate::diagnose::{self, Mistake};
 use crate::error::{Error, Result};
-use crate::num::{parse_expr, Real, Scalar, Shown};
+use crate::num::{parse_expr, Real, Shown};
 use crate::problem::ProblemIn;
 use crate::report::{exact_json, value_json, Style};
 use crate::solve::{self, lookup};

@@ -229,16 +229,20 @@ pub static CATALOG: &[Mistake] = &[
         apply: |p| {
             let base = solved(p)?;
             let c = p.clip.as_ref()?;
+            let points: Vec<(String, crate::vec::V3<f64>)> = p
+                .points()
+                .ok()?
+                .iter()
+                .map(|(n, v)| {
+                    let e: Option<Vec<f64>> = v.iter().map(|x| x.0.eval::<f64>().ok()).collect();
+                    e.map(|e| (n.clone(), crate::vec::v3(e[0], e[1], e[2])))
+                })
+                .collect::<Option<_>>()?;
+            let end = |r| solve::point_ref("clip", r, &points).ok().map(|q| Val::vec3(&q));
             let ends: Vec<(Val, Val)> = c
                 .segment
                 .iter()
-                .map(|s| {
-                    let v = |x: &crate::problem::Vec3In| {
-                        let e: Option<Vec<f64>> = x.iter().map(|n| n.0.eval::<f64>().ok()).collect();
-                        e.map(|e| Val::vec3(&crate::vec::v3(e[0], e[1], e[2])))
-                    };
-                    Some((v(&s.from)?, v(&s.to)?))
-                })
+                .map(|s| Some((end(&s.from)?, end(&s.to)?)))
                 .collect::<Option<_>>()?;
             // Variant 0 keeps P0, variant 1 keeps P1, in every clipped segment.
             let variants = (0..2)
