@@ -165,7 +165,8 @@ impl Marking {
 }
 
 /// The answer keys a problem expects by default: every answer of the parts
-/// it solves, except the view matrix and the far-plane window (checked when
+/// it solves, except the view matrix, the far-plane window and the clipping
+/// intersections tried (checked when
 /// given, not required).
 pub fn default_keys(result: &Tree) -> Vec<String> {
     let mut keys = Vec::new();
@@ -180,7 +181,7 @@ pub fn default_keys(result: &Tree) -> Vec<String> {
             }
             (_, Val::Map(kv)) => {
                 for (k, x) in kv {
-                    if k == "matrix" || k.starts_with("far_") {
+                    if k == "matrix" || k == "intersections" || k.starts_with("far_") {
                         continue;
                     }
                     match x {
@@ -337,12 +338,18 @@ fn diagnose_all(
             let Some((_, given)) = answers.iter().find(|(k, _)| k == key) else {
                 continue;
             };
+            let Some(right) = &marked[i].expected else {
+                continue;
+            };
+            // The mistake must change this answer, and the answer must then
+            // be what the mistake gives.
             let hit = variants.iter().any(|tree| {
                 lookup(tree, key).is_some_and(|mv| {
-                    matches!(
-                        judge(given, mv, settings, key, true).verdict,
-                        Verdict::Correct | Verdict::TooCoarse
-                    )
+                    differs(mv, right)
+                        && matches!(
+                            judge(given, mv, settings, key, true).verdict,
+                            Verdict::Correct | Verdict::TooCoarse
+                        )
                 })
             });
             if hit {
@@ -372,6 +379,22 @@ fn diagnose_all(
         }
     }
     folded
+}
+
+/// Whether two values differ (numbers by more than a relative 1e-9).
+fn differs(a: &Val, b: &Val) -> bool {
+    match (a, b) {
+        (Val::Num(x), Val::Num(y)) => {
+            (x.value - y.value).abs() > 1e-9 * x.value.abs().max(y.value.abs()).max(1e-300)
+        }
+        (Val::List(xs), Val::List(ys)) => {
+            xs.len() != ys.len() || xs.iter().zip(ys).any(|(x, y)| differs(x, y))
+        }
+        (Val::Map(xs), Val::Map(ys)) => {
+            xs.len() != ys.len() || xs.iter().zip(ys).any(|((_, x), (_, y))| differs(x, y))
+        }
+        _ => a != b,
+    }
 }
 
 /// A TOML answer as the student wrote it.
@@ -425,12 +448,23 @@ fn judge(given: &toml::Value, expected: &Val, s: &Settings, key: &str, carry: bo
                     format!("expected {} values, got {}", items.len(), parts.len()),
                 );
             }
+            let nested = items.iter().any(|x| matches!(x, Val::List(_)));
+            let label = |i: usize| {
+                if nested {
+                    format!("point {}", i + 1)
+                } else if items.len() <= 3 {
+                    ["x", "y", "z"][i].to_string()
+                } else {
+                    format!("component {}", i + 1)
+                }
+            };
             combine(
                 parts
                     .iter()
                     .zip(items)
                     .map(|(g, e)| judge(g, e, s, key, carry))
                     .collect(),
+                label,
             )
         }
         Val::Text(t) => {
@@ -494,7 +528,7 @@ fn scalar_text(v: &toml::Value) -> Option<String> {
 }
 
 /// The verdict on a list: its worst element; the weakest kind of correct.
-fn combine(parts: Vec<Judged>) -> Judged {
+fn combine(parts: Vec<Judged>, label: impl Fn(usize) -> String) -> Judged {
     let worst = parts
         .iter()
         .map(|j| j.verdict)
@@ -518,11 +552,19 @@ fn combine(parts: Vec<Judged>) -> Judged {
             .map(|j| j.code)
             .unwrap_or("wrong")
     };
+    // The notes of the components that decided the verdict.
     let notes: Vec<String> = parts
         .iter()
         .enumerate()
-        .filter(|(_, j)| !j.note.is_empty() && (worst == Verdict::Correct || j.verdict == worst))
-        .map(|(i, j)| format!("component {}: {}", i + 1, j.note))
+        .filter(|(_, j)| {
+            !j.note.is_empty()
+                && if worst == Verdict::Correct {
+                    j.code == code
+                } else {
+                    j.verdict == worst
+                }
+        })
+        .map(|(i, j)| format!("{}: {}", label(i), j.note))
         .collect();
     // One note when every component says the same.
     let note = if !notes.is_empty()
