@@ -244,19 +244,21 @@ pub fn settings_for(p: &ProblemIn, tolerance: Option<f64>, sig_figs: Option<u32>
     }
 }
 
-/// Solves the problem exactly and marks the answers; `expected_keys` None
-/// means the problem's `[check] keys` or [`default_keys`]; `errata` gives a
-/// reason to add to the note of a key.
+/// Solves the problem exactly and marks the answers. With `from_text` the
+/// answers are the source's printed ones: only those keys are marked, and a
+/// wrong one gets the reason from the file's `[[errata]]`; otherwise the keys
+/// expected are the problem's `[check] keys` (default: [`default_keys`]) plus
+/// any other key given.
 pub fn mark(
     p: &ProblemIn,
     who: &str,
     answers: &[(String, toml::Value)],
     settings: Settings,
-    only_given: bool,
+    from_text: bool,
 ) -> Result<Marking> {
     let report = solve::solve::<Real>(p)?;
     let result = report.result;
-    let keys: Vec<String> = if only_given {
+    let keys: Vec<String> = if from_text {
         answers.iter().map(|(k, _)| k.clone()).collect()
     } else {
         let mut k = p
@@ -286,7 +288,7 @@ pub fn mark(
             Some(g) => judge(g, expected, &settings, key, false),
         };
         let mut note = j.note;
-        if let Some(e) = p.errata.iter().find(|e| &e.key == key) {
+        if let (true, Some(e)) = (from_text, p.errata.iter().find(|e| &e.key == key)) {
             if j.verdict == Verdict::Wrong {
                 note = format!("{note}; {}", e.why);
             }

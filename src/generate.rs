@@ -595,27 +595,33 @@ pub fn key_toml(g: &Generated) -> String {
     let mut s = format!("# Answer key: {}\n", g.problem.title);
     for k in &g.keys {
         if let Some(v) = lookup(&g.report.result, k) {
-            let _ = writeln!(s, "{k} = {}", answer_value(v));
+            let _ = writeln!(s, "{k} = {}", answer_toml(v));
         }
     }
     s
 }
 
-/// A value as a check answer (TOML).
-fn answer_value(v: &Val) -> String {
+/// A value as a check answer: numbers as strings, exact where they have an
+/// exact form; a rejected segment as "none".
+pub fn answer_toml(v: &Val) -> toml::Value {
+    use toml::Value as T;
     match v {
-        Val::Num(n) => tstr(&n.exact.clone().unwrap_or_else(|| {
+        Val::Num(n) => T::String(n.exact.clone().unwrap_or_else(|| {
             if n.value == 0.0 {
                 "0".into() // not "-0"
             } else {
                 format!("{}", n.value)
             }
         })),
-        Val::List(items) => arr(&items.iter().map(answer_value).collect::<Vec<_>>()),
-        Val::Text(t) => tstr(t),
-        Val::Null => tstr("none"),
-        Val::Bool(b) => b.to_string(),
-        Val::Map(_) => tstr(""),
+        Val::List(items) => T::Array(items.iter().map(answer_toml).collect()),
+        Val::Text(t) => T::String(t.clone()),
+        Val::Null => T::String("none".into()),
+        Val::Bool(b) => T::Boolean(*b),
+        Val::Map(kv) => T::Table(
+            kv.iter()
+                .map(|(k, x)| (k.clone(), answer_toml(x)))
+                .collect(),
+        ),
     }
 }
 
