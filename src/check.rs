@@ -198,9 +198,12 @@ pub fn default_keys(result: &Tree) -> Vec<String> {
     keys
 }
 
+/// Answers keyed by dotted result keys, in the order given.
+pub type Answers = Vec<(String, toml::Value)>;
+
 /// Answers from a TOML table, flattened to dotted keys (`view.points.A`).
 /// A top-level `student` string names the student and is not an answer.
-pub fn answers_from_table(t: &toml::Table) -> (Option<String>, Vec<(String, toml::Value)>) {
+pub fn answers_from_table(t: &toml::Table) -> (Option<String>, Answers) {
     let mut out = Vec::new();
     let mut student = None;
     for (k, v) in t {
@@ -224,9 +227,7 @@ fn flatten(key: &str, v: &toml::Value, out: &mut Vec<(String, toml::Value)>) {
 }
 
 /// Reads an answer file.
-pub fn read_answers(
-    path: &std::path::Path,
-) -> Result<(Option<String>, Vec<(String, toml::Value)>)> {
+pub fn read_answers(path: &std::path::Path) -> Result<(Option<String>, Answers)> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| Error::new("answers", format!("cannot read {}: {e}", path.display())))?;
     let t: toml::Table = toml::from_str(&text)

@@ -382,10 +382,10 @@ fn camera_problem(topic: Topic, diff: Difficulty, index: usize, rng: &mut SplitM
             (n.to_string(), p)
         })
         .collect();
-    let near: &str = match diff {
-        Difficulty::Easy => *rng.pick(&["1", "2"]),
-        Difficulty::Medium => *rng.pick(&["0.5", "1", "2"]),
-        Difficulty::Hard => *rng.pick(&["0.1", "0.25", "0.5"]),
+    let near: &&str = match diff {
+        Difficulty::Easy => rng.pick(&["1", "2"]),
+        Difficulty::Medium => rng.pick(&["0.5", "1", "2"]),
+        Difficulty::Hard => rng.pick(&["0.1", "0.25", "0.5"]),
     };
     let mut t = String::new();
     let n = index + 1;

@@ -327,7 +327,7 @@ fn pieces(s: &str) -> Vec<Piece> {
             '^' => text("\\^{}"),
             '~' => text("\\~{}"),
             c if c.is_ascii() => Piece::Text(c.to_string()),
-            _ => text("?"),
+            other => Piece::Text(format!("[U+{:04X}]", other as u32)),
         });
     }
     out
