@@ -341,7 +341,7 @@ mod tests {
     fn latex_maps_symbols_to_ascii_commands() {
         assert_eq!(
             latex_text("−√2/60 ≈ −0.02357"),
-            "$-\\sqrt{2}$/60 $\\approx -$0.02357"
+            "$-\\sqrt{2}$/60 $\\approx $ $-$0.02357"
         );
         assert_eq!(latex_text("√(a+b)"), "$\\sqrt{a+b}$");
         assert_eq!(latex_text("x_1 50%"), "x\\_1 50\\%");
