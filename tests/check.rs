@@ -228,3 +228,25 @@ fn check_needs_exactly_one_source_of_answers() {
     let e = json_err(&["check", "problems/view-surds.toml", "--answers-from-text"]);
     assert_eq!(e["field"], "answers-from-text");
 }
+
+#[test]
+fn per_problem_check_settings_apply_and_flags_override_them() {
+    // A problem that asks only for the window top, with a 1% tolerance.
+    let dir = std::env::temp_dir().join(format!("grafika-check-{}-settings", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let prob = dir.join("p.toml");
+    std::fs::write(
+        &prob,
+        "title = \"window\"\nask = [\"window\"]\n[perspective]\nnear = 1\nfovy = 90\naspect = 1\n[check]\ntolerance = 0.01\nkeys = [\"window.top\"]\n",
+    )
+    .unwrap();
+    // fovy 90°: top = 1·tan 45° = 1; 1.005 is 0.5% off.
+    let ans = dir.join("a.toml");
+    std::fs::write(&ans, "window.top = \"1.005\"\n").unwrap();
+    let (p, a) = (prob.to_str().unwrap(), ans.to_str().unwrap());
+    let v = json_ok(&["check", p, "--answers", a]);
+    assert_eq!(v["score"]["total"], 1);
+    assert_eq!(answer(&v, "window.top")["code"], "correct.tolerance");
+    let v = json_ok(&["check", p, "--answers", a, "--tolerance", "0.001"]);
+    assert_eq!(answer(&v, "window.top")["verdict"], "wrong");
+}
