@@ -7,6 +7,20 @@
 //! absolute 1e-12 near zero), or when it is the exact value correctly
 //! rounded to the decimal places the student wrote. A rounded decimal with
 //! fewer significant figures than required is "too coarse".
+//!
+//! Verdicts and their stable codes (for autograders):
+//!
+//! | verdict | code | meaning | marks |
+//! |---|---|---|---|
+//! | correct | `correct.exact` | equal to the exact value (any equivalent form) | 1 |
+//! | correct | `correct.tolerance` | within the relative tolerance | 1 |
+//! | correct | `correct.rounded` | the exact value rounded to the digits written | 1 |
+//! | too_coarse | `too_coarse` | right, but fewer significant figures than required | ½ |
+//! | wrong | `wrong` | none of the above (diagnosed where a known mistake reproduces it) | 0 |
+//! | missing | `missing` | no answer | 0 |
+//! | unparseable | `unparseable` | not a number, list or code grafika can read | 0 |
+//!
+//! A list (a point, a segment) takes its worst component's verdict.
 
 use crate::diagnose::{self, Mistake};
 use crate::error::{Error, Result};

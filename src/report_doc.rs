@@ -84,12 +84,21 @@ impl Doc {
                     body.join(" \\\\ ")
                 )
             }
-            _ => format!(
-                "{}{} = {}",
-                self.text(lead),
-                self.text(name),
-                self.text(&st.val_inline(v))
-            ),
+            _ => {
+                // "top ≈ 0.182", not "top = ≈ 0.182"
+                let val = st.val_inline(v);
+                let (sign, val) = match val.strip_prefix("≈ ") {
+                    Some(rest) => ("≈", rest.to_string()),
+                    None => ("=", val),
+                };
+                format!(
+                    "{}{} {} {}",
+                    self.text(lead),
+                    self.text(name),
+                    self.text(sign),
+                    self.text(&val)
+                )
+            }
         }
     }
 
