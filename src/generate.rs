@@ -198,7 +198,7 @@ pub fn problem(
             }
             Topic::Window => window_problem(diff, index, rng),
             Topic::Clip => clip_problem(diff, index, rng),
-            Topic::Shade => unreachable!("rejected above"),
+            Topic::Shade => shade_problem(diff, index, rng),
         };
         if let Some(g) = accept(&toml, topic, diff, index) {
             return Ok(g);
@@ -283,6 +283,13 @@ fn screen(
                     }
                 }
             }
+        }
+    }
+    // Lighting: the light clearly in front of the surface.
+    if topic == Topic::Shade {
+        match lookup(r, "shade.cos_alpha").and_then(num) {
+            Some(c) if c > 0.05 => {}
+            _ => return false,
         }
     }
     if topic == Topic::Clip {
@@ -586,6 +593,91 @@ fn clip_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String 
         ints(max),
         ints(p0),
         ints(p1)
+    )
+}
+
+/// A lighting problem at one point: white directional light L, viewer V,
+/// normal N, surface color Cs. Easy: L = V = (0, 0, 1) (the text's) and a
+/// normal with a rational length (3-4-5), so every answer is rational;
+/// medium: normals like (0, 1, 1) with one surd, the models phong, lambert
+/// and blinn; hard: any small vectors and coefficients. Always lit (N·L > 0).
+fn shade_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String {
+    let colors: [[&str; 3]; 5] = [
+        ["1", "1", "0"],
+        ["1", "0", "0"],
+        ["0", "0.5", "1"],
+        ["1", "0.5", "0"],
+        ["0.5", "0.5", "0.5"],
+    ];
+    let color = *rng.pick(&colors);
+    let (n, l, v, model, k): ([i64; 3], [i64; 3], [i64; 3], &str, Option<[&str; 4]>) = match diff {
+        Difficulty::Easy => (
+            *rng.pick(&[
+                [0, 3, 4],
+                [3, 0, 4],
+                [0, 4, 3],
+                [4, 0, 3],
+                [0, -3, 4],
+                [-3, 0, 4],
+            ]),
+            [0, 0, 1],
+            [0, 0, 1],
+            "phong",
+            None,
+        ),
+        Difficulty::Medium => (
+            *rng.pick(&[
+                [0, 1, 1],
+                [1, 0, 1],
+                [0, -1, 1],
+                [-1, 0, 1],
+                [0, 1, 2],
+                [1, 0, 2],
+            ]),
+            [0, 0, 1],
+            *rng.pick(&[[0, 0, 1], [0, 1, 1], [1, 0, 1]]),
+            *rng.pick(&["phong", "lambert", "blinn"]),
+            None,
+        ),
+        Difficulty::Hard => {
+            let vec = |r: &mut SplitMix64| [r.range(-2, 3), r.range(-2, 3), r.range(1, 3)];
+            let k = [
+                *rng.pick(&["0.2", "0.3", "0.4"]),
+                *rng.pick(&["0.5", "0.6", "0.7"]),
+                *rng.pick(&["0.5", "0.7", "0.9"]),
+                *rng.pick(&["3", "5", "8", "10"]),
+            ];
+            (
+                vec(rng),
+                vec(rng),
+                vec(rng),
+                *rng.pick(&["phong", "blinn", "lambert"]),
+                Some(k),
+            )
+        }
+    };
+    let coeffs = k.map_or(String::new(), |k| {
+        format!(
+            "ka = {}\nkd = {}\nks = {}\nshininess = {}\n",
+            k[0], k[1], k[2], k[3]
+        )
+    });
+    let (ka, kd, ks, sh) = k.map_or(("0.4", "0.6", "0.7", "4"), |k| (k[0], k[1], k[2], k[3]));
+    let statement = format!(
+        "A surface point with normal N = {} and color Cs = ({}) is lit by one white directional light from L = {} and seen from V = {}. With the {model} model (ka = {ka}, kd = {kd}, ks = {ks}, n = {sh}), find cos α = L·N, R = 2N(L·N) − L, cos β = R·V, the ambient, diffuse and specular terms and the color (each channel clamped to [0, 1]).",
+        tuple(n),
+        color.join(", "),
+        tuple(l),
+        tuple(v)
+    );
+    format!(
+        "title = {}\nstatement = {}\nask = [\"shade\"]\n\n[shade]\nmodel = \"{model}\"\nlight = {}\nnormal = {}\nview = {}\ncolor = {}\n{coeffs}",
+        tstr(&format!("Problem {}: lighting at a point", index + 1)),
+        tstr(&statement),
+        ints(l),
+        ints(n),
+        ints(v),
+        arr(&color.iter().map(|c| c.to_string()).collect::<Vec<_>>()),
     )
 }
 
