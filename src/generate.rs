@@ -610,7 +610,15 @@ fn shade_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String
         ["0.5", "0.5", "0.5"],
     ];
     let color = *rng.pick(&colors);
-    let (n, l, v, model, k): ([i64; 3], [i64; 3], [i64; 3], &str, Option<[&str; 4]>) = match diff {
+    // (N, L, V, model, [ka, kd, ks, n] unless the text's)
+    type Draw = (
+        [i64; 3],
+        [i64; 3],
+        [i64; 3],
+        &'static str,
+        Option<[&'static str; 4]>,
+    );
+    let (n, l, v, model, k): Draw = match diff {
         Difficulty::Easy => (
             *rng.pick(&[
                 [0, 3, 4],
