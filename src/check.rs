@@ -124,8 +124,10 @@ pub struct Marked {
     pub verdict: Verdict,
     /// The stable code (see the module docs and README).
     pub code: &'static str,
-    /// The answer as written (None when missing).
+    /// The answer as written, on one line (None when missing).
     pub given: Option<String>,
+    /// The answer as given in the file.
+    pub given_value: Option<toml::Value>,
     /// The expected value (None when grafika has no such answer).
     pub expected: Option<Val>,
     /// A short note: how it was judged, or what was expected.
@@ -313,6 +315,7 @@ pub fn mark(
             verdict: j.verdict,
             code: j.code,
             given: given.map(written),
+            given_value: given.cloned(),
             expected: Some(expected.clone()),
             note,
             diagnosis: vec![],
@@ -730,7 +733,7 @@ pub fn to_json(m: &Marking) -> Value {
                 "key": a.key,
                 "verdict": a.verdict.as_str(),
                 "code": a.code,
-                "given": a.given,
+                "given": a.given_value.as_ref().and_then(|g| serde_json::to_value(g).ok()),
                 "expected": a.expected.as_ref().map(|e| json!({ "decimal": value_json(e), "exact": exact_json(e) })),
                 "note": a.note,
                 "diagnosis": a.diagnosis,
