@@ -48,14 +48,21 @@ impl Doc {
         let lead = if arrow { "⇒ " } else { "" };
         match (self, v) {
             (Doc::Markdown, Val::List(rows)) if v.is_matrix() => {
+                // A table with an empty header row (Markdown tables need one).
+                let width = match rows.first() {
+                    Some(Val::List(c)) => c.len(),
+                    _ => 0,
+                };
                 let mut s = format!("{lead}{} =\n\n", self.text(name));
-                for (i, r) in rows.iter().enumerate() {
+                s.push_str(&format!(
+                    "|{}\n|{}\n",
+                    "   |".repeat(width),
+                    "---|".repeat(width)
+                ));
+                for r in rows {
                     if let Val::List(cells) = r {
                         let cs: Vec<String> = cells.iter().map(|c| cell(st, c)).collect();
                         s.push_str(&format!("| {} |\n", cs.join(" | ")));
-                        if i == 0 {
-                            s.push_str(&format!("|{}\n", "---|".repeat(cs.len())));
-                        }
                     }
                 }
                 s
@@ -136,7 +143,7 @@ impl Doc {
                 let mut out = format!("**Step {k}. {}**\n\n", self.text(&s.title));
                 for l in lines {
                     if l.contains('\n') {
-                        out.push_str(&format!("{l}\n"));
+                        out.push_str(&format!("\n{l}\n"));
                     } else {
                         out.push_str(&format!("- {l}\n"));
                     }
