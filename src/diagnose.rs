@@ -364,3 +364,41 @@ fn for_each_clip(t: &mut Tree, mut f: impl FnMut(&mut Vec<(String, Val)>)) {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn codes_are_unique_and_found() {
+        for (i, m) in CATALOG.iter().enumerate() {
+            assert!(!m.code.is_empty() && !m.description.is_empty());
+            assert!(CATALOG[..i].iter().all(|o| o.code != m.code), "{}", m.code);
+            assert_eq!(find(m.code).map(|x| x.code), Some(m.code));
+        }
+    }
+
+    #[test]
+    fn fovy_not_halved_doubles_the_angle() {
+        // fovy = 60°, near = 1: the right top is tan 30° = 0.57735; with
+        // tan(fovy) it is tan 60° = 1.73205.
+        let p = ProblemIn::parse(
+            "title = 't'\nask = ['window']\n[perspective]\nnear = 1\nfovy = 60\naspect = 1\n",
+            "t",
+        )
+        .unwrap();
+        let m = find("fovy_not_halved").unwrap();
+        let t = &(m.apply)(&p).unwrap()[0];
+        let Some(Val::Num(top)) = solve::lookup(t, "window.top") else {
+            panic!()
+        };
+        assert!((top.value - 3f64.sqrt()).abs() < 1e-12);
+        // degrees as radians: tan(30 rad) = −6.405331196646276
+        let m = find("degrees_as_radians").unwrap();
+        let t = &(m.apply)(&p).unwrap()[0];
+        let Some(Val::Num(top)) = solve::lookup(t, "window.top") else {
+            panic!()
+        };
+        assert!((top.value - 30f64.tan()).abs() < 1e-9, "{}", top.value);
+    }
+}
