@@ -13,6 +13,8 @@ pub mod clip;
 pub mod commands;
 pub mod error;
 pub mod input;
+pub mod lighting;
+pub mod lighting_input;
 pub mod num;
 pub mod problem;
 pub mod projection;

@@ -240,7 +240,25 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
         }
     }
 
-    if result.is_empty() && p.shade.is_none() {
+    // Lighting
+    if let (true, Some(sh)) = (p.asks("shade"), &p.shade) {
+        rec.section("Lighting");
+        let file = crate::lighting_input::LightsFileIn {
+            global_ambient: p.global_ambient.clone(),
+            material: None,
+            light: p.light.clone(),
+        };
+        let setup = crate::lighting_input::build::<T>(sh, &file, "shade.", "light", &mut rec)?;
+        let r = crate::lighting_input::run(&setup, &mut rec);
+        result.push(("shade".into(), Val::Map(r)));
+    } else if !p.light.is_empty() && p.shade.is_none() {
+        return Err(Error::new(
+            "shade",
+            "[[light]] tables need a [shade] table (normal, color, ...)",
+        ));
+    }
+
+    if result.is_empty() {
         return Err(Error::new("ask", "nothing to solve: the file has no part that its data allow (camera + points, perspective, clip)"));
     }
 
