@@ -49,14 +49,20 @@ fn text_models_at_a_tilted_normal() {
     let sh = run(Model::Diffuse, y, l, &s);
     close(&sh.color, [d, d, 0.0]);
     assert!((sh.cos_alpha.unwrap() - 0.5f64.sqrt()).abs() < EPS);
-    assert!(sh.r.is_none(), "the diffuse model does not compute R under NoTrace");
+    assert!(
+        sh.r.is_none(),
+        "the diffuse model does not compute R under NoTrace"
+    );
     let sh = run(Model::Phong, y, l, &s);
     let r = sh.r.unwrap();
     close(&[r[0], r[1], r[2]], [0.0, 1.0, 0.0]);
     assert!(sh.cos_beta.unwrap().abs() < EPS);
     close(&run(Model::Ambient, y, l, &s).color, [0.4, 0.4, 0.0]);
     close(&run(Model::Specular, y, l, &s).color, [0.0, 0.0, 0.0]);
-    close(&run(Model::Lambert, y, l, &s).color, [d + 0.4, d + 0.4, 0.0]);
+    close(
+        &run(Model::Lambert, y, l, &s).color,
+        [d + 0.4, d + 0.4, 0.0],
+    );
     close(&run(Model::Phong, y, l, &s).color, [d + 0.4, d + 0.4, 0.0]);
 }
 
@@ -123,7 +129,10 @@ fn shininess_zero_and_specular_off() {
     let sh = shade(&m, &[Light::directional(l)], &s, &mut NoTrace);
     close(&sh.specular, [0.7; 3]);
     m.specular_on = false;
-    close(&shade(&m, &[Light::directional(l)], &s, &mut NoTrace).specular, [0.0; 3]);
+    close(
+        &shade(&m, &[Light::directional(l)], &s, &mut NoTrace).specular,
+        [0.0; 3],
+    );
     m.specular_on = true;
     m.ks = 0.0;
     let sh = shade(&m, &[Light::directional(l)], &s, &mut NoTrace);
@@ -156,7 +165,15 @@ fn attenuation_and_range() {
 
 fn spot_at(x: f64, z: f64, falloff: f64) -> f64 {
     let l = unit_v(x, 0.0, z); // from the origin to the light at (x, 0, z)
-    spot_factor(&l, &v(0.0, 0.0, -1.0), &60.0, &90.0, &falloff, (0, 1), &mut NoTrace)
+    spot_factor(
+        &l,
+        &v(0.0, 0.0, -1.0),
+        &60.0,
+        &90.0,
+        &falloff,
+        (0, 1),
+        &mut NoTrace,
+    )
 }
 
 /// Spot along −z, θ = 60° (cos 30° = √3/2), φ = 90° (cos 45° = √2/2).
@@ -185,7 +202,10 @@ fn validation_names_the_field() {
     assert_eq!(m.validate("").unwrap_err().field, "color");
     let mut l = Light::<f64>::text_default();
     l.attenuation = [0.0; 3];
-    assert_eq!(l.validate("light[0]").unwrap_err().field, "light[0].attenuation");
+    assert_eq!(
+        l.validate("light[0]").unwrap_err().field,
+        "light[0].attenuation"
+    );
     let e = unit("N", "normal", &v(0.0, 0.0, 0.0), &mut NoTrace).unwrap_err();
     assert_eq!(e.field, "normal");
 }
@@ -204,8 +224,8 @@ fn text_defaults_at_f32() {
     let sh = shade(&m, &[Light::text_default()], &s, &mut NoTrace);
     // L = N = V: cos α = cos β = 1; C = 0.6·Cs + 0.7 + 0.4·Cs = Cs + 0.7
     let want = [0.5f32 + 0.7, 0.25 + 0.7, 1.0 + 0.7];
-    for c in 0..3 {
-        assert!((sh.unclamped[c] - want[c]).abs() < 1e-6);
+    for (got, want) in sh.unclamped.iter().zip(want) {
+        assert!((got - want).abs() < 1e-6);
     }
     assert_eq!(sh.color, [1.0, 0.95, 1.0]);
 }

@@ -66,7 +66,7 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
                 .note("the objects are already given in world coordinates")
         });
         rec.section("Step 2: viewing transformation (world → eye coordinates)");
-        let b = camera::basis(&cam, &mut rec).map_err(|e| camera_field(e))?;
+        let b = camera::basis(&cam, &mut rec).map_err(camera_field)?;
         let m = camera::view_matrix(&b, &cam.pe, &mut rec);
         for (n, q) in &points {
             eye_pts.push((n.clone(), camera::to_eye(&b, &cam.pe, n, q, &mut rec)));
@@ -149,7 +149,7 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
             let aspect: T = eval("perspective.aspect", aspect)?;
             rec.section("Step 4: window and clipping");
             let w = window::window(&fovy, &aspect, near, "near", &mut rec)
-                .map_err(|e| perspective_field(e))?;
+                .map_err(perspective_field)?;
             let mut r = window_result(&w, "");
             let far: Option<T> = per
                 .far
@@ -164,7 +164,7 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
                     ));
                 }
                 let fw = window::window(&fovy, &aspect, f, "far", &mut rec)
-                    .map_err(|e| perspective_field(e))?;
+                    .map_err(perspective_field)?;
                 r.extend(
                     window_result(&fw, "far_")
                         .into_iter()
@@ -300,7 +300,7 @@ fn point_inside_step<T: Scalar>(
     far: Option<&T>,
 ) {
     let in_window = window::inside(w, &q[0], &q[1]);
-    let in_depth = e[2] <= -near.clone() && far.is_none_or(|f| e[2] >= -f.clone());
+    let in_depth = e[2] <= -near.clone() && far.map_or(true, |f| e[2] >= -f.clone());
     rec.step(|| {
         Step::new(
             format!("Is {name}'' inside the view volume?"),

@@ -10,7 +10,11 @@ fn grafika() -> Command {
 
 fn json(args: &[&str]) -> Value {
     let out = grafika().args(args).arg("--json").output().unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     serde_json::from_slice(&out.stdout).unwrap()
 }
 
@@ -32,7 +36,19 @@ fn close(a: [f64; 3], b: [f64; 3]) {
 /// cos α = √2/2, R = (0,1,0), cos β = 0; C = 0.6·(√2/2)·Cs + 0.4·Cs.
 #[test]
 fn phong_at_the_texts_defaults() {
-    let j = json(&["shade", "--light", "0,0,1", "--normal", "0,1,1", "--view", "0,0,1", "--color", "1,1,0", "--precision", "f64"]);
+    let j = json(&[
+        "shade",
+        "--light",
+        "0,0,1",
+        "--normal",
+        "0,1,1",
+        "--view",
+        "0,0,1",
+        "--color",
+        "1,1,0",
+        "--precision",
+        "f64",
+    ]);
     let r = &j["result"];
     let d = 0.3 * 2f64.sqrt();
     close(rgb(&r["color"]), [d + 0.4, d + 0.4, 0.0]);
@@ -48,8 +64,25 @@ fn phong_at_the_texts_defaults() {
 /// V = (−3/5, 0, 4/5), H = norm((−3/5, 0, 9/5)) = (−1, 0, 3)/√10, N·H = 3/√10.
 #[test]
 fn blinn_with_a_local_viewer() {
-    let j = json(&["shade", "--light", "0,0,1", "--normal", "0,0,1", "--color", "1,0,0", "--model", "blinn",
-                   "--camera", "-3,0,4", "--position", "0,0,0", "--ks", "1", "--shininess", "2"]);
+    let j = json(&[
+        "shade",
+        "--light",
+        "0,0,1",
+        "--normal",
+        "0,0,1",
+        "--color",
+        "1,0,0",
+        "--model",
+        "blinn",
+        "--camera",
+        "-3,0,4",
+        "--position",
+        "0,0,0",
+        "--ks",
+        "1",
+        "--shininess",
+        "2",
+    ]);
     let r = &j["result"];
     let k = 10f64.sqrt();
     close(rgb(&r["H"]), [-1.0 / k, 0.0, 3.0 / k]);
@@ -95,7 +128,11 @@ fn solve_two_lights() {
 fn every_lighting_problem_solves() {
     for e in std::fs::read_dir("problems").unwrap() {
         let p = e.unwrap().path();
-        if p.file_name().unwrap().to_string_lossy().starts_with("shade-") {
+        if p.file_name()
+            .unwrap()
+            .to_string_lossy()
+            .starts_with("shade-")
+        {
             grafika().arg("solve").arg(&p).assert().success();
         }
     }
@@ -109,13 +146,59 @@ fn lights_file() {
     // A point light at (0,0,2) with Att = 1/(a2·d²) = 1/(0.25·4) = 1,
     // straight above N: Lambert on white = 0.6 + 0.4·(Ga 0.5 + La 1) = 1.2 → 1.
     std::fs::write(&f, "global_ambient = [0.5, 0.5, 0.5]\n[[light]]\ntype = \"point\"\nposition = [0, 0, 2]\nattenuation = [0, 0, 0.25]\n").unwrap();
-    let j = json(&["shade", "--lights", f.to_str().unwrap(), "--normal", "0,0,1", "--color", "1,1,1", "--model", "lambert"]);
+    let j = json(&[
+        "shade",
+        "--lights",
+        f.to_str().unwrap(),
+        "--normal",
+        "0,0,1",
+        "--color",
+        "1,1,1",
+        "--model",
+        "lambert",
+    ]);
     close(rgb(&j["result"]["unclamped"]), [1.2; 3]);
-    std::fs::write(&f, "[[light]]\ntype = \"spot\"\nposition = [0, 0, 2]\ndirection = [0, 0, -1]\n").unwrap();
-    let out = grafika().args(["shade", "--lights", f.to_str().unwrap(), "--normal", "0,0,1", "--color", "1,1,1"]).output().unwrap();
+    std::fs::write(
+        &f,
+        "[[light]]\ntype = \"spot\"\nposition = [0, 0, 2]\ndirection = [0, 0, -1]\n",
+    )
+    .unwrap();
+    let out = grafika()
+        .args([
+            "shade",
+            "--lights",
+            f.to_str().unwrap(),
+            "--normal",
+            "0,0,1",
+            "--color",
+            "1,1,1",
+        ])
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("direction") && err.contains(":5:"), "{err}");
+    assert!(err.contains("light[0].direction"), "{err}");
+    // An unknown key is a TOML error with file:line:col
+    std::fs::write(
+        &f,
+        "[[light]]\ntype = \"point\"\nposition = [0, 0, 2]\ncolour = [1, 1, 1]\n",
+    )
+    .unwrap();
+    let out = grafika()
+        .args([
+            "shade",
+            "--lights",
+            f.to_str().unwrap(),
+            "--normal",
+            "0,0,1",
+            "--color",
+            "1,1,1",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("colour") && err.contains("l.toml:4:"), "{err}");
 }
 
 fn fails_naming(args: &[&str], field: &str) {
@@ -127,20 +210,62 @@ fn fails_naming(args: &[&str], field: &str) {
 
 #[test]
 fn errors_exit_2_and_name_the_field() {
-    fails_naming(&["shade", "--light", "0,0,0", "--normal", "0,0,1", "--color", "1,0,0"], "light");
-    fails_naming(&["shade", "--light", "0,0,1", "--normal", "0,0,0", "--color", "1,0,0"], "normal");
-    fails_naming(&["shade", "--light", "0,0,1", "--normal", "0,0,1", "--view", "0,0,0", "--color", "1,0,0"], "view");
-    fails_naming(&["shade", "--light", "0,0,1", "--normal", "0,0,1", "--color", "1,2,0"], "color");
-    fails_naming(&["shade", "--light", "0,0,1", "--normal", "0,0,1", "--color", "1,0,0", "--ka", "-1"], "ka");
+    fails_naming(
+        &[
+            "shade", "--light", "0,0,0", "--normal", "0,0,1", "--color", "1,0,0",
+        ],
+        "light",
+    );
+    fails_naming(
+        &[
+            "shade", "--light", "0,0,1", "--normal", "0,0,0", "--color", "1,0,0",
+        ],
+        "normal",
+    );
+    fails_naming(
+        &[
+            "shade", "--light", "0,0,1", "--normal", "0,0,1", "--view", "0,0,0", "--color", "1,0,0",
+        ],
+        "view",
+    );
+    fails_naming(
+        &[
+            "shade", "--light", "0,0,1", "--normal", "0,0,1", "--color", "1,2,0",
+        ],
+        "color",
+    );
+    fails_naming(
+        &[
+            "shade", "--light", "0,0,1", "--normal", "0,0,1", "--color", "1,0,0", "--ka", "-1",
+        ],
+        "ka",
+    );
     fails_naming(&["shade", "--normal", "0,0,1", "--color", "1,0,0"], "light");
 }
 
 /// The explanation states that the text's code adds specular behind the surface.
 #[test]
 fn light_behind_is_explained() {
-    let out = grafika().args(["shade", "--light", "0,0,-1", "--normal", "0,0,1", "--view", "0,0,-1", "--color", "1,0,0"]).output().unwrap();
+    let out = grafika()
+        .args([
+            "shade", "--light", "0,0,-1", "--normal", "0,0,1", "--view", "0,0,-1", "--color",
+            "1,0,0",
+        ])
+        .output()
+        .unwrap();
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("--specular-requires-lit"), "{text}");
-    let j = json(&["shade", "--light", "0,0,-1", "--normal", "0,0,1", "--view", "0,0,-1", "--color", "1,0,0", "--specular-requires-lit"]);
+    let j = json(&[
+        "shade",
+        "--light",
+        "0,0,-1",
+        "--normal",
+        "0,0,1",
+        "--view",
+        "0,0,-1",
+        "--color",
+        "1,0,0",
+        "--specular-requires-lit",
+    ]);
     close(rgb(&j["result"]["specular"]), [0.0; 3]);
 }
