@@ -6,11 +6,13 @@
 //! viewer) and unit length where they are directions: `L` points to the
 //! light, `V` to the viewer, `N` is the surface normal.
 //!
-//!     R = 2N(L·N) − L,   cos α = L·N,   cos β = R·V  (Blinn: N·H)
-//!     ambient  = ka · Ca ⊙ (Ga + Σᵢ Attᵢ·Spotᵢ·Laᵢ)
-//!     diffuse  = kd · Cs ⊙ Σᵢ Attᵢ·Spotᵢ·Ldᵢ · max(cos αᵢ, 0)
-//!     specular = ks · Csp ⊙ Σᵢ Attᵢ·Spotᵢ·Lsᵢ · max(cos βᵢ, 0)ⁿ
-//!     color    = clamp₀₁(ambient + diffuse + specular + emissive)
+//! ```text
+//! R = 2N(L·N) − L,   cos α = L·N,   cos β = R·V  (Blinn: N·H)
+//! ambient  = ka · Ca ⊙ (Ga + Σᵢ Attᵢ·Spotᵢ·Laᵢ)
+//! diffuse  = kd · Cs ⊙ Σᵢ Attᵢ·Spotᵢ·Ldᵢ · max(cos αᵢ, 0)
+//! specular = ks · Csp ⊙ Σᵢ Attᵢ·Spotᵢ·Lsᵢ · max(cos βᵢ, 0)ⁿ
+//! color    = clamp₀₁(ambient + diffuse + specular + emissive)
+//! ```
 //!
 //! **How the text and Direct3D agree.** The text's model is Direct3D's
 //! equation with one white directional light (La = Ld = Ls = white,
@@ -411,11 +413,15 @@ fn listening<Tr: Trace>(_: &Tr) -> bool {
     Tr::ON
 }
 
-fn label(i: usize, count: usize) -> String {
-    if count > 1 {
-        format!("Light {}: ", i + 1)
+/// A step title, prefixed "Light i: " when there are several lights.
+fn label(at: (usize, usize), what: &str) -> String {
+    if at.1 > 1 {
+        format!("Light {}: {what}", at.0 + 1)
     } else {
-        String::new()
+        let mut c = what.chars();
+        c.next()
+            .map(|f| f.to_uppercase().chain(c).collect())
+            .unwrap_or_default()
     }
 }
 
@@ -503,7 +509,7 @@ pub fn shade_with_ambient<T: Scalar>(
         [&sum_a, &sum_d, &sum_s],
         [&ambient, &diffuse, &specular],
         global_ambient,
-        lights.len(),
+        lights,
         tr,
     );
     tr.step(|| {
@@ -592,7 +598,7 @@ pub fn light_term<T: Scalar>(
                 if d2 > r.clone() * r.clone() {
                     tr.step(|| {
                         Step::new(
-                            format!("{}out of range", label(at.0, at.1)),
+                            label(at, "out of range"),
                             "d² = |Pl − P|² > range²  ⇒  the light is not evaluated",
                         )
                         .val("d²", Val::num(&d2))
@@ -610,7 +616,7 @@ pub fn light_term<T: Scalar>(
             let l = crate::vec::div(&to, &d);
             tr.step(|| {
                 Step::new(
-                    format!("{}direction to the light", label(at.0, at.1)),
+                    label(at, "direction to the light"),
                     "d = |Pl − P|,  L = (Pl − P)/d",
                 )
                 .val("Pl", Val::vec3(pos))
@@ -634,14 +640,11 @@ pub fn light_term<T: Scalar>(
                 a[0].clone() + a[1].clone() * d.clone() + a[2].clone() * d.clone() * d.clone();
             let att = T::one() / den.clone();
             tr.step(|| {
-                Step::new(
-                    format!("{}attenuation", label(at.0, at.1)),
-                    "Att = 1/(a0 + a1·d + a2·d²)",
-                )
-                .val("(a0, a1, a2)", Val::List(a.iter().map(Val::num).collect()))
-                .val("d", Val::num(d))
-                .val("a0 + a1·d + a2·d²", Val::num(&den))
-                .res("Att", Val::num(&att))
+                Step::new(label(at, "attenuation"), "Att = 1/(a0 + a1·d + a2·d²)")
+                    .val("(a0, a1, a2)", Val::List(a.iter().map(Val::num).collect()))
+                    .val("d", Val::num(d))
+                    .val("a0 + a1·d + a2·d²", Val::num(&den))
+                    .res("Att", Val::num(&att))
             });
             att
         }
@@ -678,7 +681,7 @@ pub fn light_term<T: Scalar>(
     let cos_alpha = dot(&l, n);
     tr.step(|| {
         let s = Step::new(
-            format!("{}cos α = L·N", label(at.0, at.1)),
+            label(at, "cos α = L·N"),
             "cos α = Lx·Nx + Ly·Ny + Lz·Nz,  then max(cos α, 0)",
         )
         .val("L", Val::vec3(&l))
@@ -719,7 +722,7 @@ pub fn light_term<T: Scalar>(
     let cos_beta = dot(&r, v);
     tr.step(|| {
         Step::new(
-            format!("{}reflection R and cos β", label(at.0, at.1)),
+            label(at, "reflection R and cos β"),
             "R = 2N(L·N) − L,  cos β = R·V",
         )
         .val("2(L·N)", Val::num(&two_ln))
@@ -733,7 +736,7 @@ pub fn light_term<T: Scalar>(
         let nh = dot(n, &h);
         tr.step(|| {
             Step::new(
-                format!("{}half vector H and N·H (Blinn)", label(at.0, at.1)),
+                label(at, "half vector H and N·H (Blinn)"),
                 if s.camera.is_some() {
                     "H = norm(norm(Cp − Vp) + Ldir) = norm(V + L),  cos = N·H"
                 } else {
@@ -761,7 +764,7 @@ pub fn light_term<T: Scalar>(
         term.highlight = pow(&max0(&cos_spec), &mat.shininess);
         tr.step(|| {
             let s = Step::new(
-                format!("{}highlight", label(at.0, at.1)),
+                label(at, "highlight"),
                 if mat.model == Model::Blinn {
                     "max(N·H, 0)ⁿ"
                 } else {
@@ -778,7 +781,7 @@ pub fn light_term<T: Scalar>(
         });
     } else {
         tr.step(|| {
-            Step::new(format!("{}highlight", label(at.0, at.1)), "not added")
+            Step::new(label(at, "highlight"), "not added")
                 .res("highlight", Val::num(&T::zero()))
                 .note(if !want_spec {
                     "the specular term is off for this model / setting (ks = 0, --specular off, or a model without it)"
@@ -815,7 +818,7 @@ pub fn spot_factor<T: Scalar>(
     };
     tr.step(|| {
         Step::new(
-            format!("{}spot factor", label(at.0, at.1)),
+            label(at, "spot factor"),
             "ρ = (−L)·axis;  Spot = 1 if ρ ≥ cos(θ/2), 0 if ρ ≤ cos(φ/2), else ((ρ − cos(φ/2))/(cos(θ/2) − cos(φ/2)))^falloff",
         )
         .val("ρ", Val::num(&rho))
@@ -828,6 +831,14 @@ pub fn spot_factor<T: Scalar>(
     f
 }
 
+/// Whether the lights are the text's: one white directional light, Ga = 0.
+fn is_text_setting<T: Scalar>(lights: &[Light<T>], ga: &Rgb<T>) -> bool {
+    let white = |c: &Rgb<T>| c.iter().all(|x| *x == T::one());
+    matches!(lights, [l] if matches!(l.kind, LightKind::Directional { .. })
+        && white(&l.ambient) && white(&l.diffuse) && white(&l.specular))
+        && ga.iter().all(|x| x.is_zero_value())
+}
+
 /// Records how the per-light sums become the three terms.
 fn record_totals<T: Scalar>(
     mat: &Material<T>,
@@ -835,15 +846,16 @@ fn record_totals<T: Scalar>(
     [sum_a, sum_d, sum_s]: [&Rgb<T>; 3],
     [ra, rd, rs]: [&Rgb<T>; 3],
     ga: &Rgb<T>,
-    count: usize,
+    lights: &[Light<T>],
     tr: &mut impl Trace,
 ) {
     let ca = mat.ambient_color.as_ref().unwrap_or(&mat.color);
     let one_note = |on: bool, what: &str| {
         if !on {
             format!("the {} model has no {what} term", mat.model.name())
-        } else if count == 1 && ga.iter().all(|x| x.is_zero_value()) {
-            "one white light, no global ambient: the sum is the text's single factor".to_string()
+        } else if is_text_setting(lights, ga) {
+            "the text's single white light and no global ambient: the sum is 1·(the text's factor)"
+                .to_string()
         } else {
             "summed over the lights in range".to_string()
         }

@@ -269,3 +269,52 @@ fn light_behind_is_explained() {
     ]);
     close(rgb(&j["result"]["specular"]), [0.0; 3]);
 }
+
+/// Errors inside a problem's `[shade]` table name `shade.<key>`; unknown keys
+/// are TOML errors with file:line:col.
+#[test]
+fn problem_errors() {
+    let dir = std::env::temp_dir().join(format!("grafika-shade-prob-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join("p.toml");
+    std::fs::write(
+        &f,
+        "title = 't'\n[shade]\nlight = [0, 0, 1]\nnormal = [0, 0, 0]\ncolor = [1, 0, 0]\n",
+    )
+    .unwrap();
+    let out = grafika()
+        .arg("solve")
+        .arg(&f)
+        .arg("--json")
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let j: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(j["error"]["field"], "shade.normal");
+    std::fs::write(
+        &f,
+        "title = 't'\n[shade]\nlight = [0, 0, 1]\nnormal = [0, 0, 1]\nkolor = [1, 0, 0]\n",
+    )
+    .unwrap();
+    let out = grafika().arg("solve").arg(&f).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("kolor") && err.contains("p.toml:5:"), "{err}");
+}
+
+/// The Blinn step explains the handedness of Direct3D's (0,0,1).
+#[test]
+fn blinn_explains_the_d3d_viewer_axis() {
+    let out = grafika()
+        .args([
+            "shade", "--light", "1,0,1", "--normal", "0,0,1", "--color", "1,0,0", "--model",
+            "blinn",
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("left-handed") && text.contains("right-handed"),
+        "{text}"
+    );
+}
