@@ -391,13 +391,14 @@ pub fn unit<T: Scalar>(name: &str, field: &str, v: &V3<T>, tr: &mut impl Trace) 
 }
 
 /// xⁿ: exact repeated multiplication for a whole n ≥ 0, otherwise through
-/// f64 (approximate; Direct3D's Power and falloff may be fractional).
+/// f64, marked approximate in exact arithmetic (Direct3D's Power and
+/// falloff may be fractional).
 pub fn pow<T: Scalar>(x: &T, n: &T) -> T {
     let nf = n.to_f64();
     if nf >= 0.0 && nf.fract() == 0.0 && nf <= f64::from(u32::MAX) {
         x.powi(nf as u32)
     } else {
-        T::from_f64(x.to_f64().powf(nf))
+        T::from_real(&crate::num::Real::Approx(x.to_f64().powf(nf)))
     }
 }
 
@@ -681,7 +682,7 @@ pub fn light_term<T: Scalar>(
     let cos_alpha = dot(&l, n);
     tr.step(|| {
         let s = Step::new(
-            label(at, "cos α = L·N"),
+            label(at, "angle of incidence: cos α = L·N"),
             "cos α = Lx·Nx + Ly·Ny + Lz·Nz,  then max(cos α, 0)",
         )
         .val("L", Val::vec3(&l))

@@ -367,7 +367,7 @@ fn point_inside_step<T: Scalar>(
     far: Option<&T>,
 ) {
     let in_window = window::inside(w, &q[0], &q[1]);
-    let in_depth = e[2] <= -near.clone() && far.map_or(true, |f| e[2] >= -f.clone());
+    let in_depth = e[2] <= -near.clone() && far.is_none_or(|f| e[2] >= -f.clone());
     rec.step(|| {
         Step::new(
             format!("Is {name}'' inside the view volume?"),
