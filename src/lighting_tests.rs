@@ -261,3 +261,30 @@ proptest! {
         }
     }
 }
+
+/// Exact arithmetic: L = (1,1,1) → (√3/3, √3/3, √3/3); with N = (0,1,1)/√2
+/// and V = (0,0,1): cos α = √6/3, R = 2N(√6/3) − L = (−√3/3, √3/3, √3/3),
+/// cos β = √3/3, (√3/3)⁴ = 1/9, specular = 0.7/9 = 7/90, diffuse = 0.6·√6/3
+/// = √6/5 on the yellow channels.
+#[test]
+fn exact_forms_through_the_generic_code() {
+    use crate::num::Real;
+    let r = |x: i64| Real::from_i64(x);
+    let l = unit("L", "light", &v3(r(1), r(1), r(1)), &mut NoTrace).unwrap();
+    assert_eq!(l[0].exact_ascii().as_deref(), Some("sqrt(3)/3"));
+    let n = unit("N", "normal", &v3(r(0), r(1), r(1)), &mut NoTrace).unwrap();
+    let s = Surface {
+        normal: n,
+        view: v3(r(0), r(0), r(1)),
+        position: v3(r(0), r(0), r(0)),
+        camera: None,
+    };
+    let m = Material::text_default([r(1), r(1), r(0)]);
+    let sh = shade(&m, &[Light::directional(l)], &s, &mut NoTrace);
+    assert_eq!(sh.specular[2], Real::from_ratio(7, 90));
+    assert_eq!(sh.diffuse[0].exact_ascii().as_deref(), Some("sqrt(6)/5"));
+    assert_eq!(
+        sh.cos_beta.unwrap().exact_ascii().as_deref(),
+        Some("sqrt(3)/3")
+    );
+}

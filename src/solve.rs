@@ -260,7 +260,7 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
     }
 
     if result.is_empty() {
-        return Err(Error::new("ask", "nothing to solve: the file has no part that its data allow (camera + points, perspective, clip)"));
+        return Err(Error::new("ask", "nothing to solve: the file has no part that its data allow (camera + points, perspective, clip, shade)"));
     }
 
     let (notes, comparison) = compare_printed(p, &result);
@@ -316,6 +316,23 @@ fn input_json(p: &ProblemIn) -> Value {
             .map(|s| json!({ "from": pref(&s.from), "to": pref(&s.to) }))
             .collect();
         o["clip"] = json!({ "min": v3(&c.min), "max": v3(&c.max), "segment": segs });
+    }
+    if let Some(sh) = &p.shade {
+        let ov = |v: &Option<Vec3In>| v.as_ref().map(v3);
+        o["shade"] = json!({
+            "model": sh.model.unwrap_or_default().name(),
+            "light": ov(&sh.light), "normal": ov(&sh.normal), "view": ov(&sh.view),
+            "color": ov(&sh.color), "camera": ov(&sh.camera), "position": ov(&sh.position),
+            "ka": sh.ka.as_ref().map(n), "kd": sh.kd.as_ref().map(n),
+            "ks": sh.ks.as_ref().map(n), "shininess": sh.shininess.as_ref().map(n),
+        });
+        if !p.light.is_empty() {
+            o["light"] =
+                json!(p.light.iter().map(|l| json!({
+                "type": format!("{:?}", l.kind).to_lowercase(),
+                "direction": ov(&l.direction), "position": ov(&l.position), "axis": ov(&l.axis),
+            })).collect::<Vec<_>>());
+        }
     }
     o
 }
