@@ -3,6 +3,7 @@
 
 use super::*;
 use crate::trace::NoTrace;
+use crate::vec::{dot, scale};
 use proptest::prelude::*;
 
 const EPS: f64 = 1e-12;
