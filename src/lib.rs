@@ -17,6 +17,8 @@ pub mod diagnose;
 pub mod error;
 pub mod generate;
 pub mod input;
+pub mod lighting;
+pub mod lighting_input;
 pub mod num;
 pub mod problem;
 pub mod projection;
