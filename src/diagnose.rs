@@ -8,10 +8,12 @@
 //! Adding a mistake is one entry in [`CATALOG`].
 
 use crate::camera::Basis;
+use crate::lighting::Rules;
 use crate::num::{Angle, AngleUnit, Expr};
 use crate::problem::{Num, ProblemIn};
 use crate::solve::{self, Hooks};
 use crate::trace::Val;
+use crate::vec;
 use crate::window::Window;
 
 /// A result tree, as `solve` returns it.
@@ -268,6 +270,40 @@ pub static CATALOG: &[Mistake] = &[
                 })
                 .collect();
             Some(variants)
+        },
+    },
+    Mistake {
+        code: "reflect_plus_l",
+        description: "R computed as 2N(L·N) + L instead of 2N(L·N) − L",
+        apply: |p| {
+            p.shade.as_ref()?;
+            hooked(
+                p,
+                Hooks {
+                    shade: Rules {
+                        reflect: |n, l, two_ln| vec::add(&vec::scale(n, two_ln), l),
+                        ..Rules::default()
+                    },
+                    ..Hooks::default()
+                },
+            )
+        },
+    },
+    Mistake {
+        code: "specular_no_max",
+        description: "the specular term without max(·, 0): a negative cos β raised to the power n",
+        apply: |p| {
+            p.shade.as_ref()?;
+            hooked(
+                p,
+                Hooks {
+                    shade: Rules {
+                        highlight_base: |c| *c,
+                        ..Rules::default()
+                    },
+                    ..Hooks::default()
+                },
+            )
         },
     },
 ];

@@ -185,12 +185,6 @@ pub fn problem(
     index: usize,
     rng: &mut SplitMix64,
 ) -> Result<Generated> {
-    if topic == Topic::Shade {
-        return Err(Error::new(
-            "topic",
-            "lighting problems need the lighting stage, which this build does not have yet",
-        ));
-    }
     for _ in 0..500 {
         let toml = match topic {
             Topic::Basis | Topic::View | Topic::Project | Topic::Pipeline => {

@@ -491,6 +491,15 @@ fn opt_num<T: Scalar>(v: &Option<T>) -> Val {
 /// `cos_alpha`, `cos_beta` — per light (lists) when there are several, with
 /// `lights` (attenuation, spot, in range) for lights from a file.
 pub fn run<T: Scalar>(s: &Setup<T>, rec: &mut Recorder) -> Vec<(String, Val)> {
+    run_with(s, &lighting::Rules::default(), rec)
+}
+
+/// [`run`] under the given lighting rules (the mistake catalog's way in).
+pub fn run_with<T: Scalar>(
+    s: &Setup<T>,
+    rules: &lighting::Rules<T>,
+    rec: &mut Recorder,
+) -> Vec<(String, Val)> {
     let m = &s.material;
     rec.step(|| {
         Step::new("Material and model", format!("model = {}", m.model.name()))
@@ -506,7 +515,7 @@ pub fn run<T: Scalar>(s: &Setup<T>, rec: &mut Recorder) -> Vec<(String, Val)> {
                 "the text's constants unless given: ka = 0.4, kd = 0.6, ks = 0.7, n = 4, white specular"
             })
     });
-    let sh = lighting::shade_with_ambient(m, &s.lights, &s.global_ambient, &s.surface, rec);
+    let sh = lighting::shade_with_rules(m, &s.lights, &s.global_ambient, &s.surface, rules, rec);
     let mut out: Vec<(String, Val)> = vec![
         ("color".into(), rgb_val(&sh.color)),
         ("unclamped".into(), rgb_val(&sh.unclamped)),
@@ -533,13 +542,14 @@ pub fn run<T: Scalar>(s: &Setup<T>, rec: &mut Recorder) -> Vec<(String, Val)> {
             .iter()
             .enumerate()
             .map(|(i, l)| {
-                lighting::light_term(
+                lighting::light_term_with(
                     m,
                     l,
                     (i, s.lights.len()),
                     &s.surface,
                     &sh.view,
                     true,
+                    rules,
                     &mut NoTrace,
                 )
             })

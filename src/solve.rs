@@ -44,13 +44,16 @@ pub struct Hooks<T> {
     pub basis: fn(&mut camera::Basis<T>),
     /// Applied to the near-plane window before it is used (given fovy in degrees).
     pub window: fn(&mut window::Window<T>, &T),
+    /// The lighting stage's rules (the text's by default).
+    pub shade: crate::lighting::Rules<T>,
 }
 
-impl<T> Default for Hooks<T> {
+impl<T: Scalar> Default for Hooks<T> {
     fn default() -> Self {
         Hooks {
             basis: |_| {},
             window: |_, _| {},
+            shade: crate::lighting::Rules::default(),
         }
     }
 }
@@ -276,7 +279,7 @@ pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> 
             light: p.light.clone(),
         };
         let setup = crate::lighting_input::build::<T>(sh, &file, "shade.", "light", &mut rec)?;
-        let r = crate::lighting_input::run(&setup, &mut rec);
+        let r = crate::lighting_input::run_with(&setup, &hooks.shade, &mut rec);
         result.push(("shade".into(), Val::Map(r)));
     } else if !p.light.is_empty() && p.shade.is_none() {
         return Err(Error::new(

@@ -10,7 +10,8 @@ use grafika::solve::lookup;
 use grafika::trace::Val;
 use std::path::{Path, PathBuf};
 
-const TOPICS: [Topic; 6] = [
+const TOPICS: [Topic; 7] = [
+    Topic::Shade,
     Topic::Basis,
     Topic::View,
     Topic::Project,
@@ -120,7 +121,7 @@ fn every_generated_problem_solves_and_its_key_scores_full_marks() {
 #[test]
 fn a_planted_mistake_is_caught_and_named() {
     let mut planted = std::collections::BTreeSet::new();
-    for topic in [Topic::View, Topic::Pipeline, Topic::Clip] {
+    for topic in [Topic::View, Topic::Pipeline, Topic::Clip, Topic::Shade] {
         for level in LEVELS {
             for g in generate::exam(topic, level, 3, 5).unwrap() {
                 for m in CATALOG {
@@ -174,7 +175,7 @@ fn a_planted_mistake_is_caught_and_named() {
             }
         }
     }
-    // Every mistake of the viewing pipeline was planted somewhere.
+    // Every mistake of the catalog was planted somewhere.
     for code in [
         "cross_order",
         "n_reversed",
@@ -188,6 +189,8 @@ fn a_planted_mistake_is_caught_and_named() {
         "matrix_transposed",
         "outcode_reversed",
         "endpoint_kept",
+        "reflect_plus_l",
+        "specular_no_max",
     ] {
         assert!(planted.contains(code), "{code} never planted: {planted:?}");
     }
@@ -321,14 +324,15 @@ fn json_and_toml_formats() {
         1e-12,
     );
     assert!(p["solution"]["steps"].as_array().unwrap().len() >= 2);
+    // a count of 0 is refused on the command line
     let e = json_err(&[
         "generate",
         "--topic",
-        "shade",
+        "view",
         "--count",
-        "1",
+        "0",
         "--out",
         dir.to_str().unwrap(),
     ]);
-    assert_eq!(e["field"], "topic");
+    assert!(e["field"].as_str().unwrap().contains("count"), "{e}");
 }

@@ -1,10 +1,12 @@
 //! One light at the point: direction and distance, range, attenuation,
 //! spot factor, cos α, R and cos β, the half vector H and the highlight.
 
-use super::{label, listening, max0, pow, Light, LightKind, LightTerm, Material, Model, Surface};
+use super::{
+    label, listening, max0, pow, Light, LightKind, LightTerm, Material, Model, Rules, Surface,
+};
 use crate::num::Scalar;
 use crate::trace::{Step, Trace, Val};
-use crate::vec::{add, dot, scale, sub, V3};
+use crate::vec::{add, dot, sub, V3};
 
 /// One light's geometry and factors at the point; `None` when the point is
 /// beyond the light's range (the light is not evaluated at all) or at the
@@ -16,6 +18,21 @@ pub fn light_term<T: Scalar>(
     s: &Surface<T>,
     v: &V3<T>,
     want_spec: bool,
+    tr: &mut impl Trace,
+) -> Option<LightTerm<T>> {
+    light_term_with(mat, light, at, s, v, want_spec, &Rules::default(), tr)
+}
+
+/// [`light_term`] under the given [`Rules`] (the text's by default).
+#[allow(clippy::too_many_arguments)]
+pub fn light_term_with<T: Scalar>(
+    mat: &Material<T>,
+    light: &Light<T>,
+    at: (usize, usize),
+    s: &Surface<T>,
+    v: &V3<T>,
+    want_spec: bool,
+    rules: &Rules<T>,
     tr: &mut impl Trace,
 ) -> Option<LightTerm<T>> {
     let n = &s.normal;
@@ -149,7 +166,7 @@ pub fn light_term<T: Scalar>(
         return Some(term);
     }
     let two_ln = T::from_i64(2) * term.cos_alpha.clone();
-    let r = sub(&scale(n, &two_ln), &term.l);
+    let r = (rules.reflect)(n, &term.l, &two_ln);
     let cos_beta = dot(&r, v);
     tr.step(|| {
         Step::new(
@@ -198,7 +215,7 @@ pub fn light_term<T: Scalar>(
     term.r = Some(r);
     term.cos_beta = Some(cos_beta);
     if active {
-        term.highlight = pow(&max0(&cos_spec), &mat.shininess);
+        term.highlight = pow(&(rules.highlight_base)(&cos_spec), &mat.shininess);
         tr.step(|| {
             let s = Step::new(
                 label(at, "highlight"),

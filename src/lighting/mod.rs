@@ -36,7 +36,7 @@ use crate::trace::{Step, Trace, Val};
 use crate::vec::{normalize, sub, v3, V3};
 
 mod light;
-pub use light::{light_term, spot_factor};
+pub use light::{light_term, light_term_with, spot_factor};
 
 /// The lighting model (`--model`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum, serde::Deserialize)]
@@ -429,6 +429,27 @@ fn label(at: (usize, usize), what: &str) -> String {
     }
 }
 
+/// Two rules of the lighting stage, as replaceable functions: the text's
+/// (the default) or, for the mistake catalog (`diagnose`), one done the way
+/// a student might get it wrong — so that a mistaken answer is reproduced by
+/// re-running this stage, not by a second copy of its math.
+#[derive(Clone, Copy)]
+pub struct Rules<T> {
+    /// R from N, L and 2(L·N): the text's R = 2N(L·N) − L.
+    pub reflect: fn(&V3<T>, &V3<T>, &T) -> V3<T>,
+    /// The base of the highlight power: the text's max(cos β, 0) (N·H for Blinn).
+    pub highlight_base: fn(&T) -> T,
+}
+
+impl<T: Scalar> Default for Rules<T> {
+    fn default() -> Self {
+        Rules {
+            reflect: |n, l, two_ln| sub(&crate::vec::scale(n, two_ln), l),
+            highlight_base: max0,
+        }
+    }
+}
+
 fn rgb_val<T: Scalar>(c: &Rgb<T>) -> Val {
     Val::List(c.iter().map(Val::num).collect())
 }
@@ -453,6 +474,18 @@ pub fn shade_with_ambient<T: Scalar>(
     s: &Surface<T>,
     tr: &mut impl Trace,
 ) -> Shaded<T> {
+    shade_with_rules(mat, lights, global_ambient, s, &Rules::default(), tr)
+}
+
+/// [`shade_with_ambient`] under the given [`Rules`].
+pub fn shade_with_rules<T: Scalar>(
+    mat: &Material<T>,
+    lights: &[Light<T>],
+    global_ambient: &Rgb<T>,
+    s: &Surface<T>,
+    rules: &Rules<T>,
+    tr: &mut impl Trace,
+) -> Shaded<T> {
     let (want_a, want_d, want_s) = mat.model.terms();
     let want_spec = want_s && mat.specular_on && !mat.ks.is_zero_value();
     let v = view_vector(s, tr);
@@ -464,7 +497,8 @@ pub fn shade_with_ambient<T: Scalar>(
     let mut first: Option<LightTerm<T>> = None;
     let mut used = 0;
     for (i, light) in lights.iter().enumerate() {
-        let Some(t) = light_term(mat, light, (i, lights.len()), s, &v, want_spec, tr) else {
+        let Some(t) = light_term_with(mat, light, (i, lights.len()), s, &v, want_spec, rules, tr)
+        else {
             continue;
         };
         used += 1;
