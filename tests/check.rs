@@ -250,3 +250,51 @@ fn per_problem_check_settings_apply_and_flags_override_them() {
     let v = json_ok(&["check", p, "--answers", a, "--tolerance", "0.001"]);
     assert_eq!(answer(&v, "window.top")["verdict"], "wrong");
 }
+
+#[test]
+fn lighting_mistakes_are_diagnosed() {
+    // The text's Phong point: N = (0,1,1)/√2, L = V = (0,0,1).
+    // cos α = 1/√2; R = 2N(L·N) − L = (0,1,1) − (0,0,1) = (0,1,0); cos β = 0.
+    // With R = 2N(L·N) + L = (0,1,2): cos β = R·V = 2.
+    let file = answers_file(
+        "reflect",
+        "shade.R = [\"0\", \"1\", \"2\"]\nshade.cos_beta = \"2\"\nshade.cos_alpha = \"sqrt(2)/2\"\n",
+    );
+    let v = json_ok(&[
+        "check",
+        "problems/shade-phong.toml",
+        "--answers",
+        file.to_str().unwrap(),
+    ]);
+    assert_eq!(answer(&v, "shade.cos_alpha")["code"], "correct.exact");
+    for k in ["shade.R", "shade.cos_beta"] {
+        assert!(codes(answer(&v, k)).contains(&"reflect_plus_l".to_string()));
+    }
+    // A point where cos β < 0: N = (4,0,3)/5, L = V = (0,0,1): cos α = 3/5,
+    // R = (24/25, 0, −7/25), cos β = −7/25, so the highlight max(cos β,0)⁴ = 0.
+    // Without the max: 0.7·(7/25)⁴ = 0.7·2401/390625 = 0.004302592 per channel.
+    let dir = std::env::temp_dir().join(format!("grafika-check-{}-nomax", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let prob = dir.join("p.toml");
+    std::fs::write(
+        &prob,
+        "title = \"t\"\n[shade]\nlight = [0, 0, 1]\nnormal = [4, 0, 3]\nview = [0, 0, 1]\ncolor = [1, 0.5, 0]\n",
+    )
+    .unwrap();
+    let ans = dir.join("a.toml");
+    std::fs::write(
+        &ans,
+        "shade.specular = [\"0.0043\", \"0.0043\", \"0.0043\"]\nshade.cos_beta = \"-7/25\"\n",
+    )
+    .unwrap();
+    let v = json_ok(&[
+        "check",
+        prob.to_str().unwrap(),
+        "--answers",
+        ans.to_str().unwrap(),
+    ]);
+    assert_eq!(answer(&v, "shade.cos_beta")["verdict"], "correct");
+    let s = answer(&v, "shade.specular");
+    assert_eq!(s["verdict"], "wrong");
+    assert_eq!(codes(s), ["specular_no_max"]);
+}
