@@ -291,7 +291,11 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
             cli.common.json,
             cli.common.digits as usize,
         )),
-        Command::Generate(a) => Some(crate::generate::run(a, cli.common.json)),
+        Command::Generate(a) => Some(crate::generate::run(
+            a,
+            cli.common.json,
+            cli.common.digits as usize,
+        )),
         _ => None,
     };
     if let Some(out) = own_output {

@@ -110,8 +110,8 @@ pub struct Generated {
 }
 
 /// Runs `grafika generate`; returns what to print.
-pub fn run(a: &GenerateArgs, json: bool) -> Result<String> {
-    let files = write_exams(a)?;
+pub fn run(a: &GenerateArgs, json: bool, digits: usize) -> Result<String> {
+    let files = write_exams(a, digits)?;
     Ok(if json {
         serde_json::to_string_pretty(&json!({
             "command": "generate",
@@ -143,7 +143,8 @@ pub fn run(a: &GenerateArgs, json: bool) -> Result<String> {
 }
 
 /// Generates and writes every variant; returns the files written.
-pub fn write_exams(a: &GenerateArgs) -> Result<Vec<PathBuf>> {
+/// `digits`: significant digits of the decimals in the sheets and keys.
+pub fn write_exams(a: &GenerateArgs, digits: usize) -> Result<Vec<PathBuf>> {
     let mut files = Vec::new();
     for v in 0..a.variants {
         let dir = if a.variants == 1 {
@@ -154,7 +155,7 @@ pub fn write_exams(a: &GenerateArgs) -> Result<Vec<PathBuf>> {
         std::fs::create_dir_all(&dir)
             .map_err(|e| Error::new("out", format!("cannot create {}: {e}", dir.display())))?;
         let exam = exam(a.topic, a.difficulty, a.count, variant_seed(a.seed, v))?;
-        files.extend(write_exam(&dir, a, v + 1, &exam)?);
+        files.extend(write_exam(&dir, a, v + 1, &exam, digits)?);
     }
     Ok(files)
 }
@@ -748,7 +749,7 @@ fn write_exam(
         }
     );
     let style = Style {
-        digits: 4,
+        digits,
         exact_mode: true,
     };
     match a.format {
