@@ -724,6 +724,7 @@ fn write_exam(
     a: &GenerateArgs,
     variant: u32,
     exam: &[Generated],
+    digits: usize,
 ) -> Result<Vec<PathBuf>> {
     let mut files = Vec::new();
     let mut put = |name: String, text: String| -> Result<()> {
