@@ -74,9 +74,9 @@ pub enum Format {
 /// The `generate` flags.
 #[derive(Args, Debug, Clone)]
 pub struct GenerateArgs {
-    /// The topic.
-    #[arg(long, value_enum)]
-    pub topic: Topic,
+    /// The topic; several, comma-separated, alternate through the exam.
+    #[arg(long, value_enum, value_delimiter = ',', required = true)]
+    pub topic: Vec<Topic>,
     /// Problems per exam.
     #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=500))]
     pub count: u32,
@@ -127,7 +127,7 @@ pub fn run(a: &GenerateArgs, json: bool, digits: usize) -> Result<String> {
             a.variants,
             if a.variants == 1 { "" } else { "s" },
             a.count,
-            format!("{:?}", a.topic).to_lowercase(),
+            topics_name(&a.topic),
             if a.count == 1 { "" } else { "s" },
             a.seed,
             a.out.display()
@@ -154,7 +154,7 @@ pub fn write_exams(a: &GenerateArgs, digits: usize) -> Result<Vec<PathBuf>> {
         };
         std::fs::create_dir_all(&dir)
             .map_err(|e| Error::new("out", format!("cannot create {}: {e}", dir.display())))?;
-        let exam = exam(a.topic, a.difficulty, a.count, variant_seed(a.seed, v))?;
+        let exam = exam(&a.topic, a.difficulty, a.count, variant_seed(a.seed, v))?;
         files.extend(write_exam(&dir, a, v + 1, &exam, digits)?);
     }
     Ok(files)
@@ -170,13 +170,26 @@ fn variant_seed(seed: u64, v: u32) -> u64 {
 }
 
 /// The problems of one exam.
-pub fn exam(topic: Topic, diff: Difficulty, count: u32, seed: u64) -> Result<Vec<Generated>> {
-    (0..count)
+/// The problems of one exam: problem i is on topic i mod (number of topics).
+pub fn exam(topics: &[Topic], diff: Difficulty, count: u32, seed: u64) -> Result<Vec<Generated>> {
+    if topics.is_empty() {
+        return Err(Error::new("topic", "give at least one topic"));
+    }
+    (0..count as usize)
         .map(|i| {
             let mut rng = SplitMix64::fork(seed, i as u64);
-            problem(topic, diff, i as usize, &mut rng)
+            // k: the problem's index among those of its topic
+            problem(topics[i % topics.len()], diff, i / topics.len(), &mut rng)
         })
         .collect()
+}
+
+/// `view,clip` for the titles.
+fn topics_name(t: &[Topic]) -> String {
+    t.iter()
+        .map(|x| format!("{x:?}").to_lowercase())
+        .collect::<Vec<_>>()
+        .join(",")
 }
 
 /// One problem: drawn until it is non-degenerate and solves.
@@ -189,11 +202,11 @@ pub fn problem(
     for _ in 0..500 {
         let toml = match topic {
             Topic::Basis | Topic::View | Topic::Project | Topic::Pipeline => {
-                camera_problem(topic, diff, index, rng)
+                camera_problem(topic, diff, rng)
             }
-            Topic::Window => window_problem(diff, index, rng),
+            Topic::Window => window_problem(diff, rng),
             Topic::Clip => clip_problem(diff, index, rng),
-            Topic::Shade => shade_problem(diff, index, rng),
+            Topic::Shade => shade_problem(diff, rng),
         };
         if let Some(g) = accept(&toml, topic, diff, index) {
             return Ok(g);
@@ -306,6 +319,14 @@ fn screen(
     true
 }
 
+/// The first letter in upper case.
+fn capitalized(s: &str) -> String {
+    let mut c = s.chars();
+    c.next()
+        .map(|f| f.to_uppercase().chain(c).collect())
+        .unwrap_or_default()
+}
+
 /// `[a, b, c]` for a TOML file.
 fn arr(v: &[String]) -> String {
     format!("[{}]", v.join(", "))
@@ -363,7 +384,7 @@ fn direction(diff: Difficulty, rng: &mut SplitMix64) -> ([i64; 3], [i64; 3]) {
     }
 }
 
-fn camera_problem(topic: Topic, diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String {
+fn camera_problem(topic: Topic, diff: Difficulty, rng: &mut SplitMix64) -> String {
     let (d, up) = direction(diff, rng);
     let look = [rng.range(-2, 2), rng.range(-2, 2), rng.range(-2, 2)];
     let eye = [look[0] + d[0], look[1] + d[1], look[2] + d[2]];
@@ -390,7 +411,6 @@ fn camera_problem(topic: Topic, diff: Difficulty, index: usize, rng: &mut SplitM
         Difficulty::Hard => rng.pick(&["0.1", "0.25", "0.5"]),
     };
     let mut t = String::new();
-    let n = index + 1;
     let pts_text = pts
         .iter()
         .map(|(n, p)| format!("{n}{}", tuple(*p)))
@@ -424,7 +444,7 @@ fn camera_problem(topic: Topic, diff: Difficulty, index: usize, rng: &mut SplitM
             String::new(),
         ),
     };
-    let _ = writeln!(t, "title = {}", tstr(&format!("Problem {n}: {title}")));
+    let _ = writeln!(t, "title = {}", tstr(&capitalized(title)));
     let mut statement = statement;
     let mut per = String::new();
     if topic == Topic::Project {
@@ -470,7 +490,7 @@ fn camera_problem(topic: Topic, diff: Difficulty, index: usize, rng: &mut SplitM
     t
 }
 
-fn window_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String {
+fn window_problem(diff: Difficulty, rng: &mut SplitMix64) -> String {
     let (fovy, aspect, near): (i64, &str, &str) = match diff {
         Difficulty::Easy => (90, *rng.pick(&["1", "2"]), *rng.pick(&["1", "2", "3"])),
         Difficulty::Medium => (
@@ -491,7 +511,7 @@ fn window_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> Strin
     };
     format!(
         "title = {}\nstatement = {}\nask = [\"window\"]\n\n[perspective]\nnear = {near}\nfovy = {fovy}\naspect = {aspect_toml}\n",
-        tstr(&format!("Problem {}: the viewing window", index + 1)),
+        tstr("The viewing window"),
         tstr(&format!("A perspective camera has fovy = {fovy}°, aspect ratio {aspect} and near = {near}. Find the viewing window on the near plane: top, bottom, left, right, height and width.")),
     )
 }
@@ -579,7 +599,7 @@ fn clip_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String 
     }
     format!(
         "title = {}\nstatement = {}\nask = [\"clip\"]\n\n[clip]\nmin = {}\nmax = {}\n\n[[clip.segment]]\nfrom = {}\nto = {}\n",
-        tstr(&format!("Problem {}: line clipping", index + 1)),
+        tstr("Line clipping"),
         tstr(&format!(
             "The view volume is the box {}min ≤ x ≤ {}max... with corners {} and {}. For the segment P0{} P1{}: (a) give the region codes of P0 and P1 (6 bits, bit 1 rightmost: left, right, bottom, top, front, back); (b) is the segment accepted, rejected or clipped, and what is left of it?",
             "", "", tuple(min), tuple(max), tuple(p0), tuple(p1)
@@ -596,7 +616,7 @@ fn clip_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String 
 /// normal with a rational length (3-4-5), so every answer is rational;
 /// medium: normals like (0, 1, 1) with one surd, the models phong, lambert
 /// and blinn; hard: any small vectors and coefficients. Always lit (N·L > 0).
-fn shade_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String {
+fn shade_problem(diff: Difficulty, rng: &mut SplitMix64) -> String {
     let colors: [[&str; 3]; 5] = [
         ["1", "1", "0"],
         ["1", "0", "0"],
@@ -675,7 +695,7 @@ fn shade_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String
     );
     format!(
         "title = {}\nstatement = {}\nask = [\"shade\"]\n\n[shade]\nmodel = \"{model}\"\nlight = {}\nnormal = {}\nview = {}\ncolor = {}\n{coeffs}",
-        tstr(&format!("Problem {}: lighting at a point", index + 1)),
+        tstr("Lighting at a point"),
         tstr(&statement),
         ints(l),
         ints(n),
@@ -740,7 +760,7 @@ fn write_exam(
     }
     let title = format!(
         "grafika exam: {} ({}), seed {}{}",
-        format!("{:?}", a.topic).to_lowercase(),
+        topics_name(&a.topic),
         format!("{:?}", a.difficulty).to_lowercase(),
         a.seed,
         if a.variants > 1 {
@@ -800,8 +820,8 @@ fn write_exam(
 fn sheets(doc: Doc, exam: &[Generated], st: &Style) -> (String, String) {
     let mut q = String::new();
     let mut k = String::new();
-    for g in exam {
-        let title = &g.problem.title;
+    for (i, g) in exam.iter().enumerate() {
+        let title = &format!("Problem {}: {}", i + 1, g.problem.title);
         let statement = g.problem.statement.clone().unwrap_or_default();
         q.push_str(&doc.heading(1, title));
         q.push_str(&doc.text(&statement));

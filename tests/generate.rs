@@ -93,7 +93,7 @@ fn the_same_seed_gives_the_same_files_byte_for_byte() {
 fn every_generated_problem_solves_and_its_key_scores_full_marks() {
     for topic in TOPICS {
         for level in LEVELS {
-            let exam = generate::exam(topic, level, 3, 9).expect("generates");
+            let exam = generate::exam(&[topic], level, 3, 9).expect("generates");
             for g in &exam {
                 let answers: Vec<(String, toml::Value)> = g
                     .keys
@@ -123,7 +123,7 @@ fn a_planted_mistake_is_caught_and_named() {
     let mut planted = std::collections::BTreeSet::new();
     for topic in [Topic::View, Topic::Pipeline, Topic::Clip, Topic::Shade] {
         for level in LEVELS {
-            for g in generate::exam(topic, level, 3, 5).unwrap() {
+            for g in generate::exam(&[topic], level, 3, 5).unwrap() {
                 for m in CATALOG {
                     let Some(variants) = (m.apply)(&g.problem) else {
                         continue;
@@ -210,7 +210,7 @@ fn differs(a: &Val, b: &Val) -> bool {
 #[test]
 fn clipping_covers_accept_reject_and_partial_at_every_level() {
     for level in LEVELS {
-        let exam = generate::exam(Topic::Clip, level, 3, 1).unwrap();
+        let exam = generate::exam(&[Topic::Clip], level, 3, 1).unwrap();
         let statuses: Vec<String> = exam
             .iter()
             .map(|g| match lookup(&g.report.result, "clip.status") {
@@ -243,7 +243,7 @@ fn clipping_covers_accept_reject_and_partial_at_every_level() {
 fn easy_cameras_have_rational_axes() {
     // Pythagorean directions: |Pe − Pr| and |Vup × (Pe − Pr)| are integers,
     // so n, u, v are rational — their exact forms have no square root.
-    for g in generate::exam(Topic::Basis, Difficulty::Easy, 6, 3).unwrap() {
+    for g in generate::exam(&[Topic::Basis], Difficulty::Easy, 6, 3).unwrap() {
         for k in ["view.u", "view.v", "view.n"] {
             let Some(Val::List(c)) = lookup(&g.report.result, k) else {
                 panic!()
@@ -335,4 +335,39 @@ fn json_and_toml_formats() {
         dir.to_str().unwrap(),
     ]);
     assert!(e["field"].as_str().unwrap().contains("count"), "{e}");
+}
+
+#[test]
+fn several_topics_alternate_through_the_exam() {
+    let exam = generate::exam(&[Topic::View, Topic::Clip], Difficulty::Medium, 4, 2).unwrap();
+    let kinds: Vec<bool> = exam.iter().map(|g| g.problem.clip.is_some()).collect();
+    assert_eq!(kinds, [false, true, false, true]);
+    // the clipping problems still cycle through their statuses
+    let st: Vec<String> = [1, 3]
+        .iter()
+        .map(|&i| match lookup(&exam[i].report.result, "clip.status") {
+            Some(Val::Text(s)) => s.clone(),
+            other => panic!("{other:?}"),
+        })
+        .collect();
+    assert_eq!(st, ["clipped", "accepted"]);
+    let dir = tmp("mixed");
+    grafika()
+        .args([
+            "generate",
+            "--topic",
+            "view,clip,shade",
+            "--count",
+            "3",
+            "--format",
+            "md",
+        ])
+        .args(["--out", dir.to_str().unwrap()])
+        .assert()
+        .success();
+    let q = std::fs::read_to_string(dir.join("questions.md")).unwrap();
+    assert!(
+        q.contains("Problem 2: Line clipping") && q.contains("Problem 3: Lighting"),
+        "{q}"
+    );
 }
