@@ -134,6 +134,9 @@ pub struct Marked {
     pub note: String,
     /// Codes of the mistakes that reproduce this (wrong) answer.
     pub diagnosis: Vec<&'static str>,
+    /// Why the source's printed answer is wrong (its `[[errata]]`), when
+    /// checking the source's own answers.
+    pub why: Option<String>,
 }
 
 /// One mistake that explains some wrong answers.
@@ -304,12 +307,11 @@ pub fn mark(
             None => Judged::new(Verdict::Missing, "missing", "no answer given"),
             Some(g) => judge(g, expected, &settings, key, false),
         };
-        let mut note = j.note;
-        if let (true, Some(e)) = (from_text, p.errata.iter().find(|e| &e.key == key)) {
-            if j.verdict == Verdict::Wrong {
-                note = format!("{note}; {}", e.why);
-            }
-        }
+        let note = j.note;
+        let why = match (from_text, p.errata.iter().find(|e| &e.key == key)) {
+            (true, Some(e)) if j.verdict == Verdict::Wrong => Some(e.why.clone()),
+            _ => None,
+        };
         marked.push(Marked {
             key: key.clone(),
             verdict: j.verdict,
@@ -319,6 +321,7 @@ pub fn mark(
             expected: Some(expected.clone()),
             note,
             diagnosis: vec![],
+            why,
         });
     }
     let diagnoses = diagnose_all(p, answers, &mut marked, &settings);
@@ -737,6 +740,7 @@ pub fn to_json(m: &Marking) -> Value {
                 "expected": a.expected.as_ref().map(|e| json!({ "decimal": value_json(e), "exact": exact_json(e) })),
                 "note": a.note,
                 "diagnosis": a.diagnosis,
+                "why": a.why,
             })
         })
         .collect();
@@ -782,6 +786,15 @@ pub fn to_text(m: &Marking, style: &Style) -> String {
         ]);
     }
     let mut out = format!("{} — answers of {}\n{t}\n", m.title, m.who);
+    let whys: Vec<String> = m
+        .answers
+        .iter()
+        .filter_map(|a| a.why.as_ref().map(|w| format!("  • {}: {w}\n", a.key)))
+        .collect();
+    if !whys.is_empty() {
+        out.push_str("\nWhy the printed answers are wrong (the problem file's errata):\n");
+        out.push_str(&whys.concat());
+    }
     if !m.diagnoses.is_empty() {
         out.push_str("\nDiagnosis:\n");
         for d in &m.diagnoses {

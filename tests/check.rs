@@ -62,7 +62,7 @@ fn the_texts_printed_answers_are_marked_and_its_errors_found() {
     let d = v["diagnosis"].as_array().unwrap();
     assert_eq!(d[0]["code"], "height_is_half_extent");
     // The file's errata give the reason in the note.
-    assert!(h["note"].as_str().unwrap().contains("half-height"), "{h}");
+    assert!(h["why"].as_str().unwrap().contains("half-height"), "{h}");
 }
 
 #[test]
