@@ -686,15 +686,33 @@ fn shade_problem(diff: Difficulty, rng: &mut SplitMix64) -> String {
         )
     });
     let (ka, kd, ks, sh) = k.map_or(("0.4", "0.6", "0.7", "4"), |k| (k[0], k[1], k[2], k[3]));
+    // What is asked, and the answers checked, follow the model.
+    let (consts, asked, keys) = match model {
+        "lambert" => (
+            format!("ka = {ka}, kd = {kd}"),
+            "cos α = L·N, the ambient and diffuse terms",
+            r#"["shade.cos_alpha", "shade.ambient", "shade.diffuse", "shade.color"]"#,
+        ),
+        "blinn" => (
+            format!("ka = {ka}, kd = {kd}, ks = {ks}, n = {sh}"),
+            "cos α = L·N, the half vector H = norm(L + V) and N·H, the ambient, diffuse and specular terms",
+            r#"["shade.cos_alpha", "shade.H", "shade.N_dot_H", "shade.ambient", "shade.diffuse", "shade.specular", "shade.color"]"#,
+        ),
+        _ => (
+            format!("ka = {ka}, kd = {kd}, ks = {ks}, n = {sh}"),
+            "cos α = L·N, R = 2N(L·N) − L, cos β = R·V, the ambient, diffuse and specular terms",
+            r#"["shade.cos_alpha", "shade.R", "shade.cos_beta", "shade.ambient", "shade.diffuse", "shade.specular", "shade.color"]"#,
+        ),
+    };
     let statement = format!(
-        "A surface point with normal N = {} and color Cs = ({}) is lit by one white directional light from L = {} and seen from V = {}. With the {model} model (ka = {ka}, kd = {kd}, ks = {ks}, n = {sh}), find cos α = L·N, R = 2N(L·N) − L, cos β = R·V, the ambient, diffuse and specular terms and the color (each channel clamped to [0, 1]).",
+        "A surface point with normal N = {} and color Cs = ({}) is lit by one white directional light from L = {} and seen from V = {}. With the {model} model ({consts}), find {asked} and the color (each channel clamped to [0, 1]).",
         tuple(n),
         color.join(", "),
         tuple(l),
         tuple(v)
     );
     format!(
-        "title = {}\nstatement = {}\nask = [\"shade\"]\n\n[shade]\nmodel = \"{model}\"\nlight = {}\nnormal = {}\nview = {}\ncolor = {}\n{coeffs}",
+        "title = {}\nstatement = {}\nask = [\"shade\"]\n\n[shade]\nmodel = \"{model}\"\nlight = {}\nnormal = {}\nview = {}\ncolor = {}\n{coeffs}\n[check]\nkeys = {keys}\n",
         tstr("Lighting at a point"),
         tstr(&statement),
         ints(l),
