@@ -59,6 +59,8 @@ pub enum Command {
         /// The problem file.
         file: PathBuf,
     },
+    /// Render a scene file (TOML) to a PNG: flat, Gouraud or Phong shading.
+    Render(crate::render_cmd::RenderArgs),
 }
 
 /// The camera flags.
@@ -156,6 +158,8 @@ pub fn run(cli: &Cli) -> Result<Report> {
         Command::Window(a) => at_precision!(p, window(a)),
         Command::Clip(a) => at_precision!(p, clip(a)),
         Command::Solve { file } => at_precision!(p, solve(file)),
+        // The renderer computes at f32 (the calculator's precisions are for explaining).
+        Command::Render(a) => crate::render_cmd::run(a),
     }
 }
 
