@@ -41,6 +41,8 @@ pub struct Options {
     pub width: u32,
     /// Image height.
     pub height: u32,
+    /// Use `shading` for every object, even those that name their own.
+    pub force_shading: bool,
     /// Show a progress bar on a terminal for renders over half a second.
     pub progress: bool,
 }
@@ -53,6 +55,7 @@ impl Options {
             normals: scene.normals,
             width: scene.width,
             height: scene.height,
+            force_shading: false,
             progress: false,
         }
     }
@@ -129,14 +132,24 @@ pub struct Frame {
     pub tris: Vec<Tri>,
     /// Their corners.
     pub corners: Vec<[Corner; 3]>,
-    /// Per object: its material and the lights that reach it.
-    pub lights: Vec<(Material<f32>, Vec<Light<f32>>)>,
+    /// Per object: how it is shaded.
+    pub looks: Vec<Look>,
     /// Whether the view was orthographic (the viewer along +z).
     pub ortho: bool,
-    /// The shading mode it was rendered with.
-    pub shading: Shading,
     /// Counters and times.
     pub stats: Stats,
+}
+
+/// How one object is shaded: its material, the lights that reach it and
+/// the shading mode.
+#[derive(Clone, Debug)]
+pub struct Look {
+    /// Material (specular switched off when ks = 0).
+    pub material: Material<f32>,
+    /// The lights within range of the object.
+    pub lights: Vec<Light<f32>>,
+    /// Flat, Gouraud or Phong.
+    pub shading: Shading,
 }
 
 /// The view transforms of a scene at an image size.
@@ -223,6 +236,7 @@ struct Prep<'a> {
     closed: bool,
     material: Material<f32>,
     lights: Vec<Light<f32>>,
+    shading: Shading,
 }
 
 fn mul4(m: &Matrix4<f32>, p: [f32; 3]) -> [f32; 4] {
@@ -289,6 +303,11 @@ fn prepare<'a>(
     stats: &mut Stats,
 ) -> Option<Prep<'a>> {
     let mesh = &obj.mesh;
+    let shading = if opt.force_shading {
+        opt.shading
+    } else {
+        obj.shading.unwrap_or(opt.shading)
+    };
     let eye_from_model = vs.eye_from_world * obj.model;
     let clip_from_model = vs.clip_from_eye * eye_from_model;
     // Bounding box of the model, its corners' outcodes: whole-object tests.
@@ -350,7 +369,7 @@ fn prepare<'a>(
         .map(|m| m.transpose())
         .unwrap_or(lin)
         .cast();
-    let vnormals: Vec<[f32; 3]> = if opt.shading == Shading::Flat {
+    let vnormals: Vec<[f32; 3]> = if shading == Shading::Flat {
         Vec::new()
     } else {
         match opt.normals {
@@ -423,7 +442,7 @@ fn prepare<'a>(
     let closed = mesh.is_closed();
     // Gouraud on a closed mesh without per-face colours: light each vertex once.
     let lit =
-        if opt.shading == Shading::Gouraud && closed && !matches!(obj.colors, Colors::Faces(_)) {
+        if shading == Shading::Gouraud && closed && !matches!(obj.colors, Colors::Faces(_)) {
             let l: Vec<[f32; 3]> = (0..eye.len())
                 .into_par_iter()
                 .map(|v| {
@@ -454,6 +473,7 @@ fn prepare<'a>(
         closed,
         material,
         lights,
+        shading,
     })
 }
 
@@ -588,7 +608,7 @@ fn triangles(
                     cs[k][6..9].copy_from_slice(&p.eye[v]);
                     cs[k][9..12].copy_from_slice(&s);
                 }
-                match opt.shading {
+                match p.shading {
                     Shading::Flat => {
                         let fnrm = v3(mesh.face_normal(face as usize));
                         // The polygon's normal in eye space: the triangle's own
@@ -751,17 +771,25 @@ pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
     let mut tris = Vec::new();
     let mut corners = Vec::new();
     // Per object: the material and the lights that reach it.
-    let mut lights: Vec<(Material<f32>, Vec<Light<f32>>)> = Vec::new();
+    let mut looks = Vec::new();
     for (oi, obj) in scene.objects.iter().enumerate() {
         let Some(p) = prepare(obj, &vs, &scene.lights, opt, &mut stats) else {
-            lights.push((obj.material.clone(), Vec::new()));
+            looks.push(Look {
+                material: obj.material.clone(),
+                lights: Vec::new(),
+                shading: opt.shading,
+            });
             continue;
         };
         let (t, c, s) = triangles(&p, oi as u32, &vs, scene, opt);
         tris.extend(t);
         corners.extend(c);
         stats.add(&s);
-        lights.push((p.material, p.lights));
+        looks.push(Look {
+            material: p.material,
+            lights: p.lights,
+            shading: p.shading,
+        });
     }
     stats.geometry = t0.elapsed();
 
@@ -783,12 +811,12 @@ pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
     let mut rgb = vec![0u8; 3 * n];
     let bg = to_u8(scene.background);
     let w = opt.width as usize;
-    let shaded: u64 = rgb
+    let shaded: (u64, u64) = rgb
         .par_chunks_mut(3 * w * BAND)
         .zip(ids.par_chunks(w * BAND))
         .enumerate()
         .map(|(band, (out, id))| {
-            let mut count = 0u64;
+            let (mut count, mut evals) = (0u64, 0u64);
             for (k, &t) in id.iter().enumerate() {
                 let px = &mut out[3 * k..3 * k + 3];
                 if t == NONE {
@@ -796,28 +824,21 @@ pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
                     continue;
                 }
                 count += 1;
+                let tri = &tris[t as usize];
+                if looks[tri.obj as usize].shading == Shading::Phong {
+                    evals += 1;
+                }
                 let (i, j) = ((k % w) as u32, (band * BAND + k / w) as u32);
-                let c = pixel_color(
-                    &tris[t as usize],
-                    &corners[t as usize],
-                    i,
-                    j,
-                    opt.shading,
-                    &lights,
-                    vs.ortho,
-                    &mut NoTrace,
-                );
+                let c = pixel_color(tri, &corners[t as usize], i, j, &looks, vs.ortho, &mut NoTrace);
                 px.copy_from_slice(&to_u8(c));
             }
             progress.tick();
-            count
+            (count, evals)
         })
-        .sum();
+        .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
     progress.finish();
-    stats.pixels_shaded = shaded;
-    if opt.shading == Shading::Phong {
-        stats.lighting_evals += shaded;
-    }
+    stats.pixels_shaded = shaded.0;
+    stats.lighting_evals += shaded.1;
     stats.shading = t3.elapsed();
     Ok(Frame {
         width: opt.width,
@@ -827,9 +848,8 @@ pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
         depth,
         tris,
         corners,
-        lights,
+        looks,
         ortho: vs.ortho,
-        shading: opt.shading,
         stats,
     })
 }
@@ -844,12 +864,12 @@ pub fn pixel_color(
     c: &[Corner; 3],
     i: u32,
     j: u32,
-    shading: Shading,
-    lights: &[(Material<f32>, Vec<Light<f32>>)],
+    looks: &[Look],
     ortho: bool,
     tr: &mut impl Trace,
 ) -> [f32; 3] {
-    match shading {
+    let look = &looks[t.obj as usize];
+    match look.shading {
         Shading::Flat => [c[0][0], c[0][1], c[0][2]],
         Shading::Gouraud => {
             let m = t.mu(i, j);
@@ -861,8 +881,7 @@ pub fn pixel_color(
             let n = Vector3::new(at(3), at(4), at(5));
             let p = Vector3::new(at(6), at(7), at(8));
             let s = [at(9), at(10), at(11)];
-            let (mat, l) = &lights[t.obj as usize];
-            light_at(mat, l, s, n, p, ortho, tr)
+            light_at(&look.material, &look.lights, s, n, p, ortho, tr)
         }
     }
 }

@@ -52,6 +52,7 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
     let scene = Scene::read(&a.scene)?;
     let mut opt = Options::of(&scene);
     opt.shading = a.shading.unwrap_or(opt.shading);
+    opt.force_shading = a.shading.is_some();
     opt.normals = a.normals.unwrap_or(opt.normals);
     opt.width = a.width.unwrap_or(opt.width);
     opt.height = a.height.unwrap_or(opt.height);
@@ -319,8 +320,9 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
         .res("μ", Val::vec3(&Vector3::new(m[0], m[1], m[2])))
     });
     let at = |i: usize| m[0] * c[0][i] + m[1] * c[1][i] + m[2] * c[2][i];
-    let (mat, lights) = &f.lights[t.obj as usize];
-    match f.shading {
+    let look = &f.looks[t.obj as usize];
+    let (mat, lights) = (&look.material, &look.lights);
+    match look.shading {
         Shading::Flat => {
             rec.step(|| {
                 Step::new(
@@ -385,7 +387,7 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
                 .res("C", Val::vec3(&Vector3::new(at(9), at(10), at(11))))
             });
             rec.section("Lighting of the pixel (lighting::shade)");
-            render::pixel_color(t, c, x, y, Shading::Phong, &f.lights, f.ortho, rec);
+            render::pixel_color(t, c, x, y, &f.looks, f.ortho, rec);
         }
     }
     rec.section(format!("Pixel ({x}, {y})"));
@@ -395,8 +397,7 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
         c,
         x,
         y,
-        f.shading,
-        &f.lights,
+        &f.looks,
         f.ortho,
         &mut crate::trace::NoTrace,
     );

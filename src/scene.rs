@@ -247,6 +247,7 @@ pub struct ObjectIn {
     face_colors: Option<Vec<Rgb>>,
     vertex_colors: Option<Vec<Rgb>>,
     material: Option<MaterialIn>,
+    shading: Option<Shading>,
 }
 
 /// A scene file as written.
@@ -320,6 +321,8 @@ pub struct Object {
     pub colors: Colors,
     /// Material (the scene's, overridden per object).
     pub material: Material<f32>,
+    /// Shading of this object, if it differs from the scene's.
+    pub shading: Option<Shading>,
 }
 
 /// A validated scene.
@@ -785,6 +788,7 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
         model,
         colors,
         material,
+        shading: o.shading,
     })
 }
 
