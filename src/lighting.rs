@@ -165,8 +165,9 @@ pub fn shade<T: Scalar>(
     mat: &Material<T>,
     lights: &[Light<T>],
     s: &Surface<T>,
-    _tr: &mut impl Trace,
+    tr: &mut impl Trace,
 ) -> Shaded<T> {
+    tr.step(|| crate::trace::Step::new("shim lighting", "shim"));
     let z = || [T::zero(), T::zero(), T::zero()];
     let (mut a, mut d, mut sp) = (z(), z(), z());
     let n = vec::normalize(&s.normal)

@@ -17,6 +17,7 @@
 
 use crate::error::{Error, Result};
 use crate::lighting::{self, Light, LightKind, Material, Surface};
+use crate::num::Fast32;
 use crate::raster::{self, ScreenVert, Tri, BAND, NONE};
 use crate::scene::{Colors, Normals, Object, Scene, Shading, View};
 use crate::trace::{NoTrace, Trace};
@@ -145,9 +146,9 @@ pub struct Frame {
 #[derive(Clone, Debug)]
 pub struct Look {
     /// Material (specular switched off when ks = 0).
-    pub material: Material<f32>,
+    pub material: Material<Fast32>,
     /// The lights within range of the object.
-    pub lights: Vec<Light<f32>>,
+    pub lights: Vec<Light<Fast32>>,
     /// Flat, Gouraud or Phong.
     pub shading: Shading,
 }
@@ -234,8 +235,8 @@ struct Prep<'a> {
     vnormals: Vec<[f32; 3]>,
     lit: Option<Vec<[f32; 3]>>,
     closed: bool,
-    material: Material<f32>,
-    lights: Vec<Light<f32>>,
+    material: Material<Fast32>,
+    lights: Vec<Light<Fast32>>,
     shading: Shading,
 }
 
@@ -273,11 +274,12 @@ fn view_dir(ortho: bool, p: Vector3<f32>) -> Vector3<f32> {
     }
 }
 
-/// One lighting evaluation through the calculator's `lighting::shade`.
+/// One lighting evaluation through the calculator's `lighting::shade`, at
+/// [`Fast32`] (plain f32 arithmetic).
 #[inline]
 pub fn light_at(
-    mat: &Material<f32>,
-    lights: &[Light<f32>],
+    mat: &Material<Fast32>,
+    lights: &[Light<Fast32>],
     color: [f32; 3],
     n: Vector3<f32>,
     p: Vector3<f32>,
@@ -285,14 +287,60 @@ pub fn light_at(
     tr: &mut impl Trace,
 ) -> [f32; 3] {
     let mut m = mat.clone();
-    m.color = color;
+    m.color = color.map(Fast32);
+    let f = |v: Vector3<f32>| Vector3::new(Fast32(v.x), Fast32(v.y), Fast32(v.z));
     let s = Surface {
-        normal: n,
-        view: view_dir(ortho, p),
-        position: p,
+        normal: f(n),
+        view: f(view_dir(ortho, p)),
+        position: f(p),
         camera: if ortho { None } else { Some(Vector3::zeros()) },
     };
-    lighting::shade(&m, lights, &s, tr).color
+    lighting::shade(&m, lights, &s, tr).color.map(|c| c.0)
+}
+
+/// A material at [`Fast32`].
+pub fn fast_material(m: &Material<f32>) -> Material<Fast32> {
+    Material {
+        model: m.model,
+        ka: Fast32(m.ka),
+        kd: Fast32(m.kd),
+        ks: Fast32(m.ks),
+        shininess: Fast32(m.shininess),
+        color: m.color.map(Fast32),
+        specular: m.specular.map(Fast32),
+        emissive: m.emissive.map(Fast32),
+        specular_on: m.specular_on,
+        specular_requires_lit: m.specular_requires_lit,
+    }
+}
+
+/// A light at [`Fast32`].
+pub fn fast_light(l: &Light<f32>) -> Light<Fast32> {
+    let v = |a: &Vector3<f32>| a.map(Fast32);
+    Light {
+        kind: match &l.kind {
+            LightKind::Directional { dir } => LightKind::Directional { dir: v(dir) },
+            LightKind::Point { pos } => LightKind::Point { pos: v(pos) },
+            LightKind::Spot {
+                pos,
+                dir,
+                theta,
+                phi,
+                falloff,
+            } => LightKind::Spot {
+                pos: v(pos),
+                dir: v(dir),
+                theta: Fast32(*theta),
+                phi: Fast32(*phi),
+                falloff: Fast32(*falloff),
+            },
+        },
+        ambient: l.ambient.map(Fast32),
+        diffuse: l.diffuse.map(Fast32),
+        specular: l.specular.map(Fast32),
+        attenuation: l.attenuation.map(Fast32),
+        range: l.range.map(Fast32),
+    }
 }
 
 fn prepare<'a>(
@@ -373,8 +421,8 @@ fn prepare<'a>(
         Vec::new()
     } else {
         match opt.normals {
-            Normals::Average => mesh
-                .vertex_normals()
+            Normals::Average => obj
+                .vnormals
                 .par_iter()
                 .map(|&n| {
                     let v = (nmat * v3(n)).normalize();
@@ -427,41 +475,40 @@ fn prepare<'a>(
         if far {
             stats.lights_skipped += 1;
         } else {
-            lights.push(l.clone());
+            lights.push(fast_light(l));
         }
     }
-    let mut material = obj.material.clone();
+    let mut material = fast_material(&obj.material);
     let has_spec = matches!(
         material.model,
         lighting::Model::Phong | lighting::Model::Blinn | lighting::Model::Specular
     );
-    if material.ks == 0.0 || !material.specular_on || !has_spec {
+    if material.ks.0 == 0.0 || !material.specular_on || !has_spec {
         material.specular_on = false;
         stats.specular_skipped += 1;
     }
-    let closed = mesh.is_closed();
+    let closed = obj.closed;
     // Gouraud on a closed mesh without per-face colours: light each vertex once.
-    let lit =
-        if shading == Shading::Gouraud && closed && !matches!(obj.colors, Colors::Faces(_)) {
-            let l: Vec<[f32; 3]> = (0..eye.len())
-                .into_par_iter()
-                .map(|v| {
-                    light_at(
-                        &material,
-                        &lights,
-                        surface(obj, 0, v as u32),
-                        v3(vnormals[v]),
-                        v3(eye[v]),
-                        vs.ortho,
-                        &mut NoTrace,
-                    )
-                })
-                .collect();
-            stats.lighting_evals += l.len() as u64;
-            Some(l)
-        } else {
-            None
-        };
+    let lit = if shading == Shading::Gouraud && closed && !matches!(obj.colors, Colors::Faces(_)) {
+        let l: Vec<[f32; 3]> = (0..eye.len())
+            .into_par_iter()
+            .map(|v| {
+                light_at(
+                    &material,
+                    &lights,
+                    surface(obj, 0, v as u32),
+                    v3(vnormals[v]),
+                    v3(eye[v]),
+                    vs.ortho,
+                    &mut NoTrace,
+                )
+            })
+            .collect();
+        stats.lighting_evals += l.len() as u64;
+        Some(l)
+    } else {
+        None
+    };
     Some(Prep {
         obj,
         eye,
@@ -557,7 +604,7 @@ fn triangles(
     opt: &Options,
 ) -> (Vec<Tri>, Vec<[Corner; 3]>, Stats) {
     let mesh = &p.obj.mesh;
-    let t = mesh.triangles();
+    let t = &p.obj.tris;
     let (w, h) = (opt.width, opt.height);
     let chunks: Vec<(Vec<Tri>, Vec<[Corner; 3]>, Stats)> = t
         .tris
@@ -775,7 +822,7 @@ pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
     for (oi, obj) in scene.objects.iter().enumerate() {
         let Some(p) = prepare(obj, &vs, &scene.lights, opt, &mut stats) else {
             looks.push(Look {
-                material: obj.material.clone(),
+                material: fast_material(&obj.material),
                 lights: Vec::new(),
                 shading: opt.shading,
             });
@@ -829,7 +876,15 @@ pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
                     evals += 1;
                 }
                 let (i, j) = ((k % w) as u32, (band * BAND + k / w) as u32);
-                let c = pixel_color(tri, &corners[t as usize], i, j, &looks, vs.ortho, &mut NoTrace);
+                let c = pixel_color(
+                    tri,
+                    &corners[t as usize],
+                    i,
+                    j,
+                    &looks,
+                    vs.ortho,
+                    &mut NoTrace,
+                );
                 px.copy_from_slice(&to_u8(c));
             }
             progress.tick();

@@ -392,15 +392,7 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
     }
     rec.section(format!("Pixel ({x}, {y})"));
     let px = &f.rgb[3 * k..3 * k + 3];
-    let col = render::pixel_color(
-        t,
-        c,
-        x,
-        y,
-        &f.looks,
-        f.ortho,
-        &mut crate::trace::NoTrace,
-    );
+    let col = render::pixel_color(t, c, x, y, &f.looks, f.ortho, &mut crate::trace::NoTrace);
     rec.step(|| {
         Step::new("Pixel colour", "8-bit value = round(255 · clamp(C, 0, 1))")
             .val("C", Val::vec3(&Vector3::new(col[0], col[1], col[2])))

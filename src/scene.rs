@@ -323,6 +323,12 @@ pub struct Object {
     pub material: Material<f32>,
     /// Shading of this object, if it differs from the scene's.
     pub shading: Option<Shading>,
+    /// The mesh's triangles (computed once, when the scene is read).
+    pub tris: mesh::Triangles,
+    /// Whether the mesh is closed (back faces may be culled).
+    pub closed: bool,
+    /// Vertex normals in model coordinates.
+    pub vnormals: Vec<[f32; 3]>,
 }
 
 /// A validated scene.
@@ -784,11 +790,14 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
     };
     Ok(Object {
         name: format!("{field} ({tname})"),
-        mesh,
         model,
         colors,
         material,
         shading: o.shading,
+        tris: mesh.triangles(),
+        closed: mesh.is_closed(),
+        vnormals: mesh.vertex_normals(),
+        mesh,
     })
 }
 
