@@ -370,9 +370,9 @@ impl Mesh {
     }
 }
 
-/// A height formula in the grid indices x and z: numbers, x, z, pi,
-/// + − * / ^, parentheses and exp, sqrt, sin, cos, abs (the text's landscape
-/// is `100*exp(-(x-6)^2/40 - (z-6)^2/40)`).
+/// A height formula in the grid indices x and z: numbers, x, z, pi, the
+/// operators `+ - * / ^`, parentheses and exp, sqrt, sin, cos, abs (the
+/// text's landscape is `100*exp(-(x-6)^2/40 - (z-6)^2/40)`).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Height {
     /// A number.

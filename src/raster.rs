@@ -189,7 +189,8 @@ impl Tri {
         ];
         let s = q[0] + q[1] + q[2];
         if s != 0.0 {
-            [q[0] / s, q[1] / s, q[2] / s]
+            let r = 1.0 / s;
+            [q[0] * r, q[1] * r, q[2] * r]
         } else {
             l
         }
@@ -238,15 +239,27 @@ pub fn visibility(
         .zip(bins.par_iter())
         .enumerate()
         .for_each(|(band, ((dz, id), bin))| {
-            dz.fill(f32::INFINITY);
-            id.fill(NONE);
-            let r0 = (band * BAND) as u32;
-            let r1 = r0 + (dz.len() / w) as u32 - 1;
-            for &t in bin {
-                raster_one(&tris[t as usize], t, r0, r1, w, dz, id);
-            }
+            visibility_band(tris, bin, (band * BAND) as u32, w, dz, id);
             done();
         });
+}
+
+/// The visibility pass of one band (rows from `r0`): clears it, then draws
+/// its triangles in order.
+pub fn visibility_band(
+    tris: &[Tri],
+    bin: &[u32],
+    r0: u32,
+    w: usize,
+    dz: &mut [f32],
+    id: &mut [u32],
+) {
+    dz.fill(f32::INFINITY);
+    id.fill(NONE);
+    let r1 = r0 + (dz.len() / w) as u32 - 1;
+    for &t in bin {
+        raster_one(&tris[t as usize], t, r0, r1, w, dz, id);
+    }
 }
 
 /// Rasterizes one triangle into rows r0..=r1 of a band.
@@ -354,7 +367,7 @@ mod tests {
         let t = setup([sv(1.0, 1.0), sv(9.0, 2.0), sv(3.0, 8.0)], 10, 10).unwrap();
         let u = setup([sv(1.0, 1.0), sv(3.0, 8.0), sv(9.0, 2.0)], 10, 10).unwrap();
         assert!(!t.1 && u.1);
-        assert_eq!(coverage(&[t.0.clone()], 10, 10), coverage(&[u.0], 10, 10));
+        assert_eq!(coverage(std::slice::from_ref(&t.0), 10, 10), coverage(&[u.0], 10, 10));
         // At a vertex's own position λ is 1 for it (vertex 0 at (1,1) is not a
         // centre, so check the sum and a centre near vertex 2 instead).
         let l = t.0.lambda(3, 6);

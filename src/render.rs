@@ -93,16 +93,18 @@ pub struct Stats {
     pub geometry: Duration,
     /// Time: binning triangles into bands.
     pub binning: Duration,
-    /// Time: the visibility pass.
+    /// Thread time (summed over bands): visibility.
     pub raster: Duration,
-    /// Time: the shading pass.
+    /// Thread time (summed over bands): shading.
     pub shading: Duration,
+    /// Wall time of the band pass (visibility and shading, in parallel).
+    pub pass: Duration,
 }
 
 impl Stats {
     /// Raster + shading time of the frame (everything but file output).
     pub fn frame(&self) -> Duration {
-        self.geometry + self.binning + self.raster + self.shading
+        self.geometry + self.binning + self.pass
     }
 
     fn add(&mut self, o: &Stats) {
@@ -396,17 +398,17 @@ fn prepare<'a>(
     let c32: Matrix4<f32> = clip_from_model.cast();
     let eye: Vec<[f32; 3]> = mesh
         .positions
-        .par_iter()
+        .iter()
         .map(|&p| {
             let v = mul4(&e32, p);
             [v[0], v[1], v[2]]
         })
         .collect();
-    let clip: Vec<[f32; 4]> = mesh.positions.par_iter().map(|&p| mul4(&c32, p)).collect();
+    let clip: Vec<[f32; 4]> = mesh.positions.iter().map(|&p| mul4(&c32, p)).collect();
     let codes: Vec<u8> = if inside {
         Vec::new()
     } else {
-        clip.par_iter()
+        clip.iter()
             .map(|c| crate::clip::outcode_clip_space(&Vector4::new(c[0], c[1], c[2], c[3])))
             .collect()
     };
@@ -423,7 +425,7 @@ fn prepare<'a>(
         match opt.normals {
             Normals::Average => obj
                 .vnormals
-                .par_iter()
+                .iter()
                 .map(|&n| {
                     let v = (nmat * v3(n)).normalize();
                     [v.x, v.y, v.z]
@@ -845,24 +847,26 @@ pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
     stats.binning = t1.elapsed();
 
     let n = (opt.width * opt.height) as usize;
-    let progress = Progress::new(opt.progress, 2 * bins.len() as u64);
+    let progress = Progress::new(opt.progress, bins.len() as u64);
     let t2 = Instant::now();
     let mut depth = vec![0.0f32; n];
     let mut ids = vec![0u32; n];
-    raster::visibility(&tris, &bins, opt.width, &mut depth, &mut ids, &|| {
-        progress.tick()
-    });
-    stats.raster = t2.elapsed();
-
-    let t3 = Instant::now();
     let mut rgb = vec![0u8; 3 * n];
     let bg = to_u8(scene.background);
     let w = opt.width as usize;
-    let shaded: (u64, u64) = rgb
+    // One pass over bands in parallel: the band's visibility (nearest
+    // triangle per pixel), then its shading while the band is in cache.
+    let (shaded, evals, raster_t, shade_t) = rgb
         .par_chunks_mut(3 * w * BAND)
-        .zip(ids.par_chunks(w * BAND))
+        .zip(depth.par_chunks_mut(w * BAND))
+        .zip(ids.par_chunks_mut(w * BAND))
+        .zip(bins.par_iter())
         .enumerate()
-        .map(|(band, (out, id))| {
+        .map(|(band, (((out, dz), id), bin))| {
+            let t = Instant::now();
+            raster::visibility_band(&tris, bin, (band * BAND) as u32, w, dz, id);
+            let raster_t = t.elapsed();
+            let t = Instant::now();
             let (mut count, mut evals) = (0u64, 0u64);
             for (k, &t) in id.iter().enumerate() {
                 let px = &mut out[3 * k..3 * k + 3];
@@ -888,13 +892,18 @@ pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
                 px.copy_from_slice(&to_u8(c));
             }
             progress.tick();
-            (count, evals)
+            (count, evals, raster_t, t.elapsed())
         })
-        .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
+        .reduce(
+            || (0, 0, Duration::ZERO, Duration::ZERO),
+            |a, b| (a.0 + b.0, a.1 + b.1, a.2 + b.2, a.3 + b.3),
+        );
     progress.finish();
-    stats.pixels_shaded = shaded.0;
-    stats.lighting_evals += shaded.1;
-    stats.shading = t3.elapsed();
+    stats.pixels_shaded = shaded;
+    stats.lighting_evals += evals;
+    stats.raster = raster_t;
+    stats.shading = shade_t;
+    stats.pass = t2.elapsed();
     Ok(Frame {
         width: opt.width,
         height: opt.height,

@@ -153,7 +153,7 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
             "lights_skipped": st.lights_skipped, "specular_skipped": st.specular_skipped,
             "frame_ms": ms(frame_t), "geometry_ms": ms(median(&|s| s.geometry)),
             "binning_ms": ms(median(&|s| s.binning)), "raster_ms": ms(median(&|s| s.raster)),
-            "shading_ms": ms(median(&|s| s.shading)), "png_ms": ms(encode),
+            "shading_ms": ms(median(&|s| s.shading)), "bands_ms": ms(median(&|s| s.pass)), "png_ms": ms(encode),
             "repeat": a.repeat, "mpixels_per_s": mpix,
         }),
     );
@@ -174,11 +174,14 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
     })
 }
 
+/// The median over the runs of one stage's time.
+type Median<'a> = dyn Fn(&dyn Fn(&Stats) -> Duration) -> Duration + 'a;
+
 fn stats_text(
     st: &Stats,
     runs: &[Stats],
     shading: Shading,
-    median: &dyn Fn(&dyn Fn(&Stats) -> Duration) -> Duration,
+    median: &Median<'_>,
     encode: Duration,
 ) -> String {
     let ms = |d: Duration| d.as_secs_f64() * 1e3;
@@ -231,11 +234,15 @@ fn stats_text(
         format!("{:.2} ms", ms(median(&|s| s.binning))),
     );
     line(
-        "time: raster (visibility)",
+        "time: bands (raster + shading)",
+        format!("{:.2} ms", ms(median(&|s| s.pass))),
+    );
+    line(
+        "  thread time: raster",
         format!("{:.2} ms", ms(median(&|s| s.raster))),
     );
     line(
-        "time: shading",
+        "  thread time: shading",
         format!("{:.2} ms", ms(median(&|s| s.shading))),
     );
     line(
