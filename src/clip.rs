@@ -69,9 +69,27 @@ pub struct Clipped<T> {
     pub status: Status,
     /// The part inside, in the direction P0 → P1.
     pub segment: Option<(V3<T>, V3<T>)>,
+    /// Every intersection tried, in bit order.
+    pub intersections: Vec<Intersection<T>>,
 }
 
-/// The six planes in bit order: (bit index 0..6, axis, is_max, name).
+/// One intersection of the line with a plane an endpoint violates.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Intersection<T> {
+    /// The plane's bit (0 = bit 1, x < xmin, ... 5 = bit 6, z > zmax).
+    pub bit: usize,
+    /// The line parameter t.
+    pub t: T,
+    /// The point P(t).
+    pub point: V3<T>,
+    /// Its outcode (000000: kept).
+    pub code: u8,
+}
+
+/// The short names of the six planes in bit order, as result keys.
+pub const PLANE_KEYS: [&str; 6] = ["left", "right", "bottom", "top", "front", "back"];
+
+/// The six planes in bit order: (axis, is_max, equation, the text's name).
 pub const PLANES: [(usize, bool, &str, &str); 6] = [
     (0, false, "x = xmin", "kiri (left)"),
     (0, true, "x = xmax", "kanan (right)"),
@@ -165,6 +183,7 @@ pub fn clip_segment<T: Scalar>(
             code1,
             status: Status::Accepted,
             segment: Some((p0.clone(), p1.clone())),
+            intersections: vec![],
         };
     }
     if and != 0 {
@@ -173,12 +192,14 @@ pub fn clip_segment<T: Scalar>(
             code1,
             status: Status::Rejected,
             segment: None,
+            intersections: vec![],
         };
     }
 
     // Intersect with every plane one endpoint violates
     let delta = vec::sub(p1, p0);
     let mut kept: Vec<(T, V3<T>)> = Vec::new();
+    let mut intersections = Vec::new();
     for (bit, &(axis, is_max, plane, name)) in PLANES.iter().enumerate() {
         if (code0 | code1) & (1 << bit) == 0 {
             continue;
@@ -208,8 +229,14 @@ pub fn clip_segment<T: Scalar>(
             })
         });
         if c == 0 {
-            kept.push((t, q));
+            kept.push((t.clone(), q.clone()));
         }
+        intersections.push(Intersection {
+            bit,
+            t,
+            point: q,
+            code: c,
+        });
     }
     if code0 == 0 {
         kept.push((T::zero(), p0.clone()));
@@ -229,12 +256,14 @@ pub fn clip_segment<T: Scalar>(
             code1,
             status: Status::Clipped,
             segment: Some((a.1.clone(), z.1.clone())),
+            intersections,
         },
         _ => Clipped {
             code0,
             code1,
             status: Status::Rejected,
             segment: None,
+            intersections,
         },
     };
     tr.step(|| {
@@ -266,21 +295,26 @@ fn code_step<T: Scalar>(name: &str, b: &ClipBox<T>, p: &V3<T>, code: u8) -> Step
             ("<", &b.min[axis])
         };
         let set = code & (1 << bit) != 0;
+        let word = if set { "true" } else { "false" };
         s = s.val(
-            format!(
-                "bit {} {a} {op} {a}{}",
-                bit + 1,
-                if is_max { "max" } else { "min" }
-            ),
+            format!("bit {} ({side})", bit + 1),
             Val::text(format!(
-                "{} ({} {op} {}: {side})",
+                "{} — {a} {op} {a}{}: {} {op} {} is {word}",
                 u8::from(set),
-                p[axis].to_f64(),
-                lim.to_f64()
+                if is_max { "max" } else { "min" },
+                short(&p[axis]),
+                short(lim)
             )),
         );
     }
     s.res("code", Val::text(code_str(code)))
+}
+
+/// A number for a one-line remark: its exact form, else a short decimal.
+fn short<T: Scalar>(x: &T) -> String {
+    let s = x.shown();
+    s.pretty
+        .unwrap_or_else(|| crate::report::fmt_dec(s.value, 6).replace('-', "−"))
 }
 
 /// Liang–Barsky: with Δ = P1 − P0, for each of the six pairs

@@ -139,8 +139,10 @@ pub fn project<T: Scalar>(a: &ProjectArgs) -> Result<Report> {
         out.push((n.clone(), Val::vec3(&q)));
     }
     let kind = match &proj {
-        Projection::Plane { d } => json!({ "d": d.to_f64() }),
-        Projection::General { zprp, zvp } => json!({ "cop": zprp.to_f64(), "plane": zvp.to_f64() }),
+        Projection::Plane { d } => json!({ "d": input::jnum(d) }),
+        Projection::General { zprp, zvp } => {
+            json!({ "cop": input::jnum(zprp), "plane": input::jnum(zvp) })
+        }
         Projection::Ortho => json!({ "ortho": true }),
     };
     let inp = json!({ "projection": kind, "points": points_json(&pts) });
@@ -205,10 +207,10 @@ pub fn window<T: Scalar>(a: &WindowArgs) -> Result<Report> {
         }
     }
     let inp = json!({
-        "fovy": fovy.to_f64(), "aspect": aspect.to_f64(), "near": near.to_f64(),
-        "far": far.as_ref().map(Scalar::to_f64),
-        "viewport": vp.as_ref().map(|(w, h)| json!([w.to_f64(), h.to_f64()])),
-        "points": Value::Object(pts.iter().map(|(n, (x, y))| (n.clone(), json!([x.to_f64(), y.to_f64()]))).collect()),
+        "fovy": input::jnum(&fovy), "aspect": input::jnum(&aspect), "near": input::jnum(&near),
+        "far": far.as_ref().map(input::jnum),
+        "viewport": vp.as_ref().map(|(w, h)| json!([input::jnum(w), input::jnum(h)])),
+        "points": Value::Object(pts.iter().map(|(n, (x, y))| (n.clone(), json!([input::jnum(x), input::jnum(y)]))).collect()),
     });
     Ok(report::<T>("window", inp, result, rec))
 }
@@ -284,7 +286,24 @@ pub fn clip_run<T: Scalar>(
                 None => Val::Null,
             },
         ),
+        (
+            "intersections".into(),
+            Val::Map(r.intersections.iter().map(intersection_val).collect()),
+        ),
     ]
+}
+
+/// One tried intersection as a result: its plane's key and t, point, code, kept.
+fn intersection_val<T: Scalar>(i: &clip::Intersection<T>) -> (String, Val) {
+    (
+        clip::PLANE_KEYS[i.bit].to_string(),
+        Val::Map(vec![
+            ("t".into(), Val::num(&i.t)),
+            ("point".into(), Val::vec3(&i.point)),
+            ("code".into(), Val::text(clip::code_str(i.code))),
+            ("kept".into(), Val::Bool(i.code == 0)),
+        ]),
+    )
 }
 
 /// Equal up to rounding (exact values compare exactly).

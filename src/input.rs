@@ -110,7 +110,12 @@ pub fn size<T: Scalar>(field: &str, text: &str) -> Result<(T, T)> {
     Ok((num(field, w)?, num(field, h)?))
 }
 
-/// A vector as input JSON (f64 values).
+/// A number as input JSON, printed as its own precision prints it.
+pub fn jnum<T: Scalar>(x: &T) -> Value {
+    json!(x.shown().value)
+}
+
+/// A vector as input JSON.
 pub fn json3<T: Scalar>(a: &V3<T>) -> Value {
-    json!([a[0].to_f64(), a[1].to_f64(), a[2].to_f64()])
+    json!([jnum(&a[0]), jnum(&a[1]), jnum(&a[2])])
 }

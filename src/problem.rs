@@ -114,14 +114,48 @@ impl<'de> Deserialize<'de> for AngleIn {
     }
 }
 
+/// A segment end: coordinates `[x, y, z]`, or the name of a point in
+/// `[points]` (`from = "A"`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum PointRef {
+    /// Coordinates.
+    At(Box<Vec3In>),
+    /// A point of the problem, by name.
+    Named(String),
+}
+
+impl<'de> Deserialize<'de> for PointRef {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<PointRef, D::Error> {
+        struct V;
+        impl<'de> de::Visitor<'de> for V {
+            type Value = PointRef;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("[x, y, z] or the name of a point in [points]")
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> std::result::Result<PointRef, E> {
+                Ok(PointRef::Named(v.to_string()))
+            }
+            fn visit_seq<A: de::SeqAccess<'de>>(
+                self,
+                seq: A,
+            ) -> std::result::Result<PointRef, A::Error> {
+                let v: Vec3In =
+                    Deserialize::deserialize(de::value::SeqAccessDeserializer::new(seq))?;
+                Ok(PointRef::At(Box::new(v)))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
 /// One `[[clip.segment]]`.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SegmentIn {
     /// P0.
-    pub from: Vec3In,
+    pub from: PointRef,
     /// P1.
-    pub to: Vec3In,
+    pub to: PointRef,
 }
 
 /// `[clip]`.
@@ -178,6 +212,9 @@ pub struct ProblemIn {
     /// Where and why the printed answers are wrong.
     #[serde(default)]
     pub errata: Vec<ErratumIn>,
+    /// Remarks on the source beyond single answers (misprinted rules).
+    #[serde(default)]
+    pub source_notes: Vec<String>,
     /// Any other key: kept for tools, ignored by solve.
     #[serde(flatten)]
     pub other: BTreeMap<String, toml::Value>,

@@ -283,11 +283,7 @@ impl Report {
 /// Writes one answer, opening maps (e.g. points) into one line per entry.
 fn push_answer(out: &mut String, style: &Style, indent: &str, k: &str, v: &Val) {
     match v {
-        Val::Map(kv)
-            if kv
-                .iter()
-                .any(|(_, x)| matches!(x, Val::Map(_) | Val::List(_))) =>
-        {
+        Val::Map(kv) => {
             out.push_str(&format!("{indent}{k}:\n"));
             for (k2, v2) in kv {
                 push_answer(out, style, &format!("{indent}  "), k2, v2);

@@ -9,7 +9,7 @@ use crate::commands::{basis_result, clip_run, window_result};
 use crate::error::{Error, Result};
 use crate::input;
 use crate::num::{Expr, Scalar};
-use crate::problem::{Num, ProblemIn, Vec3In};
+use crate::problem::{Num, PointRef, ProblemIn, Vec3In};
 use crate::projection::{self, Projection};
 use crate::report::{fmt_dec, Report, Style};
 use crate::trace::{Recorder, Step, Trace, Val};
@@ -66,7 +66,7 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
                 .note("the objects are already given in world coordinates")
         });
         rec.section("Step 2: viewing transformation (world → eye coordinates)");
-        let b = camera::basis(&cam, &mut rec).map_err(|e| camera_field(e))?;
+        let b = camera::basis(&cam, &mut rec).map_err(camera_field)?;
         let m = camera::view_matrix(&b, &cam.pe, &mut rec);
         for (n, q) in &points {
             eye_pts.push((n.clone(), camera::to_eye(&b, &cam.pe, n, q, &mut rec)));
@@ -149,7 +149,7 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
             let aspect: T = eval("perspective.aspect", aspect)?;
             rec.section("Step 4: window and clipping");
             let w = window::window(&fovy, &aspect, near, "near", &mut rec)
-                .map_err(|e| perspective_field(e))?;
+                .map_err(perspective_field)?;
             let mut r = window_result(&w, "");
             let far: Option<T> = per
                 .far
@@ -164,7 +164,7 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
                     ));
                 }
                 let fw = window::window(&fovy, &aspect, f, "far", &mut rec)
-                    .map_err(|e| perspective_field(e))?;
+                    .map_err(perspective_field)?;
                 r.extend(
                     window_result(&fw, "far_")
                         .into_iter()
@@ -225,7 +225,8 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
         let mut all = Vec::new();
         for (i, s) in c.segment.iter().enumerate() {
             let f = format!("clip.segment[{i}]");
-            let (p0, p1): (V3<T>, V3<T>) = (eval3(&f, &s.from)?, eval3(&f, &s.to)?);
+            let p0: V3<T> = point_ref(&format!("{f}.from"), &s.from, &points)?;
+            let p1: V3<T> = point_ref(&format!("{f}.to"), &s.to, &points)?;
             rec.section(if c.segment.len() == 1 {
                 "Line clipping".to_string()
             } else {
@@ -245,19 +246,85 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
     }
 
     let (notes, comparison) = compare_printed(p, &result);
-    let mut report = crate::commands::report::<T>(
-        "solve",
-        json!({ "title": p.title, "source": p.source, "ask": p.ask }),
-        result,
-        rec,
-    );
+    let mut report = crate::commands::report::<T>("solve", input_json(p), result, rec);
     report.notes = notes;
+    if !p.source_notes.is_empty() {
+        let lines: Vec<String> = p.source_notes.iter().map(|n| format!("  - {n}")).collect();
+        report
+            .notes
+            .push(format!("Notes on the source:\n{}", lines.join("\n")));
+        report
+            .extra
+            .insert("source_notes".into(), json!(p.source_notes));
+    }
     if !comparison.is_empty() {
         report
             .extra
             .insert("comparison".into(), Value::Array(comparison));
     }
     Ok(report)
+}
+
+/// The problem's inputs as JSON numbers (f64 values of the written numbers;
+/// names for named segment ends).
+fn input_json(p: &ProblemIn) -> Value {
+    let n = |x: &Num| x.0.eval::<f64>().map(|v| json!(v)).unwrap_or(Value::Null);
+    let v3 = |v: &Vec3In| json!([n(&v[0]), n(&v[1]), n(&v[2])]);
+    let pref = |r: &PointRef| match r {
+        PointRef::At(v) => v3(v),
+        PointRef::Named(name) => json!(name),
+    };
+    let mut o = json!({ "title": p.title, "source": p.source, "ask": p.ask });
+    if let Some(c) = &p.camera {
+        o["camera"] = json!({ "eye": v3(&c.eye), "look": v3(&c.look), "up": v3(&c.up) });
+    }
+    if let Ok(points) = p.points() {
+        o["points"] = Value::Object(points.iter().map(|(k, v)| (k.clone(), v3(v))).collect());
+    }
+    if let Some(per) = &p.perspective {
+        o["perspective"] = json!({
+            "near": per.near.as_ref().map(n),
+            "far": per.far.as_ref().map(n),
+            "fovy": per.fovy.as_ref().and_then(|a| a.0.degrees::<f64>().ok()),
+            "aspect": per.aspect.as_ref().map(n),
+            "viewport": per.viewport.as_ref().map(|v| json!([n(&v[0]), n(&v[1])])),
+            "d": per.d.as_ref().map(n),
+        });
+    }
+    if let Some(c) = &p.clip {
+        let segs: Vec<Value> = c
+            .segment
+            .iter()
+            .map(|s| json!({ "from": pref(&s.from), "to": pref(&s.to) }))
+            .collect();
+        o["clip"] = json!({ "min": v3(&c.min), "max": v3(&c.max), "segment": segs });
+    }
+    o
+}
+
+/// A segment end: its coordinates, or the named point's.
+fn point_ref<T: Scalar>(field: &str, r: &PointRef, points: &[(String, V3<T>)]) -> Result<V3<T>> {
+    match r {
+        PointRef::At(v) => eval3(field, v),
+        PointRef::Named(name) => points
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, p)| p.clone())
+            .ok_or_else(|| {
+                let known: Vec<&str> = points.iter().map(|(n, _)| n.as_str()).collect();
+                Error::new(
+                    field,
+                    if known.is_empty() {
+                        format!("unknown point `{name}`: the problem has no [points]")
+                    } else {
+                        format!(
+                            "unknown point `{name}`; the points are {}",
+                            known.join(", ")
+                        )
+                    },
+                )
+            }),
+    }
 }
 
 fn camera_field(e: Error) -> Error {

@@ -36,7 +36,8 @@ impl Expr {
     /// whole number, or the value not finite at that precision.
     pub fn eval<T: Scalar>(&self) -> Result<T, String> {
         let v = self.eval_inner::<T>()?;
-        if v.is_finite() {
+        // Exact values must also fit an f64, or nothing could show them.
+        if v.is_finite() && v.to_f64().is_finite() {
             Ok(v)
         } else {
             Err(format!(

@@ -37,14 +37,20 @@ macro_rules! float_scalar {
             fn pi() -> Self {
                 std::f64::consts::PI as $t
             }
+            /// Through the exact type, so that standard angles (multiples of
+            /// 15° and 22.5°) give the correctly rounded value: tan 45° = 1.
             fn tan_deg(&self) -> Self {
-                (deg_reduce(*self as f64).to_radians().tan()) as $t
+                Real::from_f64(*self as f64).tan_deg().to_f64() as $t
             }
+            /// Through the exact type, so that standard angles (multiples of
+            /// 15° and 22.5°) give the correctly rounded value: tan 45° = 1.
             fn sin_deg(&self) -> Self {
-                (deg_reduce(*self as f64).to_radians().sin()) as $t
+                Real::from_f64(*self as f64).sin_deg().to_f64() as $t
             }
+            /// Through the exact type, so that standard angles (multiples of
+            /// 15° and 22.5°) give the correctly rounded value: tan 45° = 1.
             fn cos_deg(&self) -> Self {
-                (deg_reduce(*self as f64).to_radians().cos()) as $t
+                Real::from_f64(*self as f64).cos_deg().to_f64() as $t
             }
             /// Kahan: w = c·d; e = fma(−c, d, w) (the rounding error of w);
             /// f = fma(a, b, −w); result f + e. Error ≤ 1.5 ulp of the result.
@@ -106,20 +112,6 @@ macro_rules! float_scalar {
 
 float_scalar!(f64, Precision::F64);
 float_scalar!(f32, Precision::F32);
-
-/// Reduces an angle in degrees to (−180, 180] exactly where it is a whole
-/// multiple of common angles, so that tan 45° is 1 to the last bit as far as
-/// the float libraries allow.
-fn deg_reduce(d: f64) -> f64 {
-    let r = d % 360.0;
-    if r > 180.0 {
-        r - 360.0
-    } else if r <= -180.0 {
-        r + 360.0
-    } else {
-        r
-    }
-}
 
 #[cfg(test)]
 mod tests {

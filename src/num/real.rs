@@ -1,76 +1,349 @@
-//! INTERIM: replaced by the exact surd type before this lands.
-use super::{Precision, Scalar, Shown};
-use std::ops::*;
+//! The exact number type [`Real`]: a canonical sum of rationals times square
+//! roots of square-free integers ([`Surd`]), or, where no exact form exists
+//! here (π, tan 50°, a square root that does not denest, anything computed
+//! from an approximation), an `f64` marked as approximate.
+//!
+//! Field arithmetic is exact (division rationalizes its denominator), order is
+//! decided by exact sign determination, and nothing panics: division by an
+//! exact zero gives an approximate ±∞ or NaN, as IEEE division would.
 
-#[derive(Clone, Debug, PartialEq, PartialOrd)]
+mod convert;
+mod format;
+mod surd;
+mod trig;
+
+pub use surd::Surd;
+
+use std::cmp::Ordering;
+use std::fmt;
+use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, Zero};
+
+use super::{Precision, Scalar, Shown};
+
+/// An exact sum of surds, or a marked approximation.
+#[derive(Clone)]
 pub enum Real {
+    /// Σ qᵣ·√r exactly.
+    Exact(Surd),
+    /// A value with no exact form here.
     Approx(f64),
 }
+
 impl Real {
-    pub fn from_decimal(s: &str) -> Option<Real> {
-        s.parse::<f64>().ok().map(Real::Approx)
+    /// A rational number.
+    pub fn from_rational(q: BigRational) -> Real {
+        Real::Exact(Surd::from_rational(q))
     }
+
+    /// An integer.
+    pub fn from_bigint(n: BigInt) -> Real {
+        Real::Exact(Surd::from_integer(n))
+    }
+
+    /// The rational n/d; d = 0 gives the IEEE quotient (±∞ or NaN), approximate.
+    pub fn from_ratio(n: i64, d: i64) -> Real {
+        if d == 0 {
+            return Real::Approx(n as f64 / 0.0);
+        }
+        Real::from_rational(BigRational::new(BigInt::from(n), BigInt::from(d)))
+    }
+
+    /// A small integer.
+    pub fn from_i64(n: i64) -> Real {
+        Real::from_bigint(BigInt::from(n))
+    }
+
+    /// The exact value of a finite float; ±∞ and NaN stay approximate.
     pub fn from_f64(x: f64) -> Real {
-        Real::Approx(x)
+        match convert::f64_to_rational(x) {
+            Some(q) => Real::from_rational(q),
+            None => Real::Approx(x),
+        }
     }
+
+    /// Parses a decimal literal exactly: `123`, `-1.25`, `.5`, `2.5e-7`,
+    /// `1E30` (so 0.1 is 1/10). `None` if it is not one, or its exponent
+    /// exceeds 100000 in magnitude.
+    pub fn from_decimal(s: &str) -> Option<Real> {
+        convert::parse_decimal(s).map(Real::from_rational)
+    }
+
+    /// The exact surd, if the value is exact.
+    pub fn as_surd(&self) -> Option<&Surd> {
+        match self {
+            Real::Exact(s) => Some(s),
+            Real::Approx(_) => None,
+        }
+    }
+
+    /// Whether the value is exact.
+    pub fn is_exact(&self) -> bool {
+        matches!(self, Real::Exact(_))
+    }
+
+    /// Whether the value is an exact rational.
+    pub fn is_rational(&self) -> bool {
+        self.as_surd().is_some_and(Surd::is_rational)
+    }
+
+    /// The value as a rational, if it is an exact one.
+    pub fn as_rational(&self) -> Option<BigRational> {
+        self.as_surd().and_then(Surd::as_rational)
+    }
+
+    /// The sign: −1, 0 or 1, exact for exact values (0 for NaN).
+    pub fn signum(&self) -> i8 {
+        match self {
+            Real::Exact(s) => s.signum(),
+            Real::Approx(x) if *x > 0.0 => 1,
+            Real::Approx(x) if *x < 0.0 => -1,
+            Real::Approx(_) => 0,
+        }
+    }
+
+    /// The f64 nearest the value (correctly rounded for exact values).
     pub fn to_f64(&self) -> f64 {
         match self {
+            Real::Exact(s) => s.to_f64(),
             Real::Approx(x) => *x,
         }
     }
-    pub fn exact_ascii(&self) -> Option<String> {
-        None
-    }
-    pub fn signum(&self) -> i8 {
-        let x = self.to_f64();
-        if x > 0.0 {
-            1
-        } else if x < 0.0 {
-            -1
-        } else {
-            0
+
+    /// √x: exact for rationals and denestable `a + b√r`, approximate
+    /// otherwise, NaN for x < 0.
+    pub fn sqrt(&self) -> Real {
+        match self {
+            Real::Exact(s) => match s.sqrt() {
+                Some(r) => Real::Exact(r),
+                None if s.signum() < 0 => Real::Approx(f64::NAN),
+                None => Real::Approx(s.to_f64().sqrt()),
+            },
+            Real::Approx(x) => Real::Approx(x.sqrt()),
         }
     }
+
+    /// |x|.
+    pub fn abs(&self) -> Real {
+        match self {
+            Real::Exact(s) if s.signum() < 0 => Real::Exact(-s),
+            Real::Exact(_) => self.clone(),
+            Real::Approx(x) => Real::Approx(x.abs()),
+        }
+    }
+
+    /// sin of an angle in degrees (exact for multiples of 15°).
+    pub fn sin_deg(&self) -> Real {
+        trig::sin_deg(self)
+    }
+
+    /// cos of an angle in degrees (exact for multiples of 15°).
+    pub fn cos_deg(&self) -> Real {
+        trig::cos_deg(self)
+    }
+
+    /// tan of an angle in degrees (exact for multiples of 15° and 22.5°;
+    /// ±∞ at 90° + k·180°).
+    pub fn tan_deg(&self) -> Real {
+        trig::tan_deg(self)
+    }
+
+    /// The ASCII exact form (`(sqrt(2)-1)/10`), `None` if approximate.
+    pub fn exact_ascii(&self) -> Option<String> {
+        self.as_surd().map(|s| format::format_surd(s, false))
+    }
+
+    /// The Unicode exact form (`(√2−1)/10`), `None` if approximate.
+    pub fn exact_pretty(&self) -> Option<String> {
+        self.as_surd().map(|s| format::format_surd(s, true))
+    }
 }
-macro_rules! op {
-    ($tr:ident, $m:ident, $tra:ident, $ma:ident, $o:tt) => {
-        impl $tr for Real { type Output = Real; fn $m(self, o: Real) -> Real { Real::Approx(self.to_f64() $o o.to_f64()) } }
-        impl $tra for Real { fn $ma(&mut self, o: Real) { *self = Real::Approx(self.to_f64() $o o.to_f64()) } }
+
+impl From<Surd> for Real {
+    fn from(s: Surd) -> Real {
+        Real::Exact(s)
+    }
+}
+
+impl From<BigRational> for Real {
+    fn from(q: BigRational) -> Real {
+        Real::from_rational(q)
+    }
+}
+
+impl From<i64> for Real {
+    fn from(n: i64) -> Real {
+        Real::from_i64(n)
+    }
+}
+
+fn add_ref(a: &Real, b: &Real) -> Real {
+    match (a, b) {
+        (Real::Exact(x), Real::Exact(y)) => Real::Exact(x + y),
+        _ => Real::Approx(a.to_f64() + b.to_f64()),
+    }
+}
+
+fn sub_ref(a: &Real, b: &Real) -> Real {
+    match (a, b) {
+        (Real::Exact(x), Real::Exact(y)) => Real::Exact(x - y),
+        _ => Real::Approx(a.to_f64() - b.to_f64()),
+    }
+}
+
+fn mul_ref(a: &Real, b: &Real) -> Real {
+    match (a, b) {
+        (Real::Exact(x), Real::Exact(y)) => Real::Exact(x * y),
+        _ => Real::Approx(a.to_f64() * b.to_f64()),
+    }
+}
+
+fn div_ref(a: &Real, b: &Real) -> Real {
+    match (a, b) {
+        (Real::Exact(x), Real::Exact(y)) => match x.checked_div(y) {
+            Some(q) => Real::Exact(q),
+            // Exact zero divisor: ±∞ or NaN, as x / +0.0 is in IEEE.
+            None => Real::Approx(a.to_f64() / b.to_f64()),
+        },
+        _ => Real::Approx(a.to_f64() / b.to_f64()),
+    }
+}
+
+macro_rules! binop {
+    ($tr:ident, $method:ident, $f:ident, $atr:ident, $amethod:ident) => {
+        impl $tr<&Real> for &Real {
+            type Output = Real;
+            fn $method(self, rhs: &Real) -> Real {
+                $f(self, rhs)
+            }
+        }
+        impl $tr<Real> for &Real {
+            type Output = Real;
+            fn $method(self, rhs: Real) -> Real {
+                $f(self, &rhs)
+            }
+        }
+        impl $tr<&Real> for Real {
+            type Output = Real;
+            fn $method(self, rhs: &Real) -> Real {
+                $f(&self, rhs)
+            }
+        }
+        impl $tr<Real> for Real {
+            type Output = Real;
+            fn $method(self, rhs: Real) -> Real {
+                $f(&self, &rhs)
+            }
+        }
+        impl $atr<&Real> for Real {
+            fn $amethod(&mut self, rhs: &Real) {
+                *self = $f(self, rhs);
+            }
+        }
+        impl $atr<Real> for Real {
+            fn $amethod(&mut self, rhs: Real) {
+                *self = $f(self, &rhs);
+            }
+        }
     };
 }
-op!(Add, add, AddAssign, add_assign, +);
-op!(Sub, sub, SubAssign, sub_assign, -);
-op!(Mul, mul, MulAssign, mul_assign, *);
-op!(Div, div, DivAssign, div_assign, /);
+
+binop!(Add, add, add_ref, AddAssign, add_assign);
+binop!(Sub, sub, sub_ref, SubAssign, sub_assign);
+binop!(Mul, mul, mul_ref, MulAssign, mul_assign);
+binop!(Div, div, div_ref, DivAssign, div_assign);
+
 impl Neg for Real {
     type Output = Real;
     fn neg(self) -> Real {
-        Real::Approx(-self.to_f64())
+        match self {
+            Real::Exact(s) => Real::Exact(-s),
+            Real::Approx(x) => Real::Approx(-x),
+        }
     }
 }
-impl num_traits::Zero for Real {
-    fn zero() -> Self {
-        Real::Approx(0.0)
+
+impl Neg for &Real {
+    type Output = Real;
+    fn neg(self) -> Real {
+        match self {
+            Real::Exact(s) => Real::Exact(-s),
+            Real::Approx(x) => Real::Approx(-x),
+        }
+    }
+}
+
+impl Zero for Real {
+    fn zero() -> Real {
+        Real::Exact(Surd::zero())
     }
     fn is_zero(&self) -> bool {
-        self.to_f64() == 0.0
+        match self {
+            Real::Exact(s) => s.is_empty(),
+            Real::Approx(x) => *x == 0.0,
+        }
     }
 }
-impl num_traits::One for Real {
-    fn one() -> Self {
-        Real::Approx(1.0)
+
+impl One for Real {
+    fn one() -> Real {
+        Real::Exact(Surd::one())
     }
 }
+
+/// Exact values compare structurally (which is numerically, the form being
+/// canonical); anything involving an approximation compares as f64.
+impl PartialEq for Real {
+    fn eq(&self, other: &Real) -> bool {
+        match (self, other) {
+            (Real::Exact(a), Real::Exact(b)) => a == b,
+            _ => self.to_f64() == other.to_f64(),
+        }
+    }
+}
+
+/// Exact values are ordered by exact sign determination of their difference.
+impl PartialOrd for Real {
+    fn partial_cmp(&self, other: &Real) -> Option<Ordering> {
+        match (self, other) {
+            (Real::Exact(a), Real::Exact(b)) => Some(a.cmp(b)),
+            _ => self.to_f64().partial_cmp(&other.to_f64()),
+        }
+    }
+}
+
+impl fmt::Display for Real {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Real::Exact(s) => f.write_str(&format::format_surd(s, true)),
+            Real::Approx(x) => write!(f, "≈{x}"),
+        }
+    }
+}
+
+impl fmt::Debug for Real {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Real::Exact(s) => write!(f, "Exact({})", format::format_surd(s, false)),
+            Real::Approx(x) => write!(f, "Approx({x:?})"),
+        }
+    }
+}
+
 impl Scalar for Real {
     const PRECISION: Precision = Precision::Exact;
+
     fn from_real(x: &Real) -> Self {
         x.clone()
     }
     fn from_f64(x: f64) -> Self {
-        Real::Approx(x)
+        Real::from_f64(x)
     }
     fn from_i64(x: i64) -> Self {
-        Real::Approx(x as f64)
+        Real::from_i64(x)
     }
     fn to_f64(&self) -> f64 {
         Real::to_f64(self)
@@ -79,31 +352,43 @@ impl Scalar for Real {
         self.clone()
     }
     fn sqrt(&self) -> Self {
-        Real::Approx(self.to_f64().sqrt())
+        Real::sqrt(self)
+    }
+    fn abs(&self) -> Self {
+        Real::abs(self)
     }
     fn pi() -> Self {
         Real::Approx(std::f64::consts::PI)
     }
     fn tan_deg(&self) -> Self {
-        Real::Approx(self.to_f64().to_radians().tan())
+        Real::tan_deg(self)
     }
     fn sin_deg(&self) -> Self {
-        Real::Approx(self.to_f64().to_radians().sin())
+        Real::sin_deg(self)
     }
     fn cos_deg(&self) -> Self {
-        Real::Approx(self.to_f64().to_radians().cos())
+        Real::cos_deg(self)
     }
     fn is_finite(&self) -> bool {
-        self.to_f64().is_finite()
+        match self {
+            Real::Exact(_) => true,
+            Real::Approx(x) => x.is_finite(),
+        }
     }
     fn is_exact(&self) -> bool {
-        false
+        Real::is_exact(self)
+    }
+    fn is_zero_value(&self) -> bool {
+        Zero::is_zero(self)
     }
     fn shown(&self) -> Shown {
         Shown {
-            value: self.to_f64(),
-            exact: None,
-            pretty: None,
+            value: Real::to_f64(self),
+            exact: self.exact_ascii(),
+            pretty: self.exact_pretty(),
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

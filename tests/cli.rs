@@ -1,0 +1,415 @@
+//! The binary end to end: every problem file, the text's worked examples
+//! checked against values derived by hand, and every kind of bad input.
+
+mod common;
+use common::*;
+use std::f64::consts::SQRT_2;
+
+#[test]
+fn every_problem_file_solves_at_every_precision() {
+    let mut n = 0;
+    for entry in std::fs::read_dir(root().join("problems")).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "toml") {
+            for p in ["exact", "f64", "f32"] {
+                let v = json_ok(&["solve", path.to_str().unwrap(), "--precision", p]);
+                assert_eq!(v["command"], "solve");
+                assert!(v["result"].is_object() && v["steps"].is_array(), "{path:?}");
+                assert!(!v["steps"].as_array().unwrap().is_empty());
+            }
+            // and the worked solution as text
+            grafika()
+                .args(["solve", path.to_str().unwrap()])
+                .assert()
+                .success();
+            n += 1;
+        }
+    }
+    assert!(
+        n >= 8,
+        "expected the text's three examples and at least five more, found {n}"
+    );
+}
+
+#[test]
+fn every_error_file_fails_naming_its_field() {
+    let mut n = 0;
+    for entry in std::fs::read_dir(root().join("problems/errors")).unwrap() {
+        let path = entry.unwrap().path();
+        let text = std::fs::read_to_string(&path).unwrap();
+        let want = text
+            .lines()
+            .find_map(|l| l.strip_prefix("expect_error = "))
+            .map(|s| s.trim_matches('"').to_string())
+            .unwrap_or_else(|| panic!("{path:?} has no expect_error"));
+        for p in ["exact", "f64", "f32"] {
+            let e = json_err(&["solve", path.to_str().unwrap(), "--precision", p]);
+            assert_eq!(e["field"], want.as_str(), "{path:?}: {e}");
+        }
+        n += 1;
+    }
+    assert!(n >= 8);
+}
+
+#[test]
+fn text_triangle_example_by_hand() {
+    let v = json_ok(&["solve", "problems/text-triangle.toml", "--precision", "f64"]);
+    let r = &v["result"];
+    // n = (1,0,1)/√2, u = (Vup × n)/|..| = (1,0,−1)/√2, v = (0,1,0).
+    let h = SQRT_2 / 2.0;
+    close_vec(&r["view"]["n"], &[h, 0.0, h], 1e-15);
+    close_vec(&r["view"]["u"], &[h, 0.0, -h], 1e-15);
+    close_vec(&r["view"]["v"], &[0.0, 1.0, 0.0], 1e-15);
+    // A − Pe = (−3,−1,−3): (0, −1, −6/√2); B − Pe = (−2,−1,−3): (1/√2, −1, −5/√2).
+    close_vec(
+        &r["view"]["points"]["A"],
+        &[0.0, -1.0, -6.0 / SQRT_2],
+        1e-14,
+    );
+    close_vec(
+        &r["view"]["points"]["B"],
+        &[1.0 / SQRT_2, -1.0, -5.0 / SQRT_2],
+        1e-14,
+    );
+    // d = −0.1: A'' = (0, (−0.1)(−1)/(−6/√2)) = (0, −√2/60); B'' = (1/50, −√2/50).
+    close_vec(
+        &r["project"]["points"]["A"],
+        &[0.0, -SQRT_2 / 60.0, -0.1],
+        1e-15,
+    );
+    close_vec(
+        &r["project"]["points"]["B"],
+        &[0.02, -SQRT_2 / 50.0, -0.1],
+        1e-15,
+    );
+    // top = 0.1·tan 22.5° = (√2 − 1)/10; right = 2·top; height = 2·top; width = 4·top.
+    let top = (SQRT_2 - 1.0) / 10.0;
+    close(f(&r["window"]["top"]), top, 1e-16);
+    close(f(&r["window"]["right"]), 2.0 * top, 1e-16);
+    close(f(&r["window"]["height"]), 2.0 * top, 1e-16);
+    close(f(&r["window"]["width"]), 4.0 * top, 1e-16);
+    close(f(&r["window"]["far_top"]), 100.0 * top, 1e-13);
+    // px = (0 + 2top)/(4top)·200 = 100; py = (−√2/60 + top)/(2top)·100 = 25(4 − √2)/3.
+    close_vec(
+        &r["viewport"]["pixels"]["A"],
+        &[100.0, 25.0 * (4.0 - SQRT_2) / 3.0],
+        1e-12,
+    );
+}
+
+#[test]
+fn text_triangle_finds_the_texts_wrong_answers() {
+    let v = json_ok(&["solve", "problems/text-triangle.toml"]);
+    let cmp = v["comparison"].as_array().unwrap();
+    let verdict = |k: &str| {
+        cmp.iter()
+            .find(|c| c["key"] == k)
+            .map(|c| c["agrees"].clone())
+            .unwrap()
+    };
+    assert_eq!(verdict("view.points.A"), true);
+    assert_eq!(verdict("project.points.A"), true);
+    assert_eq!(verdict("project.points.B"), false); // 0.0067 printed for 1/50
+    assert_eq!(verdict("project.points.C"), false);
+    assert_eq!(verdict("window.top"), true); // 0.041 ≈ 0.0414 to the digits printed
+    assert_eq!(verdict("window.height"), false); // the half-height given as the height
+    assert_eq!(verdict("window.width"), false);
+}
+
+#[test]
+fn text_clip_example_by_hand() {
+    let v = json_ok(&["solve", "problems/text-clip.toml", "--precision", "f64"]);
+    let c = &v["result"]["clip"];
+    assert_eq!(c["code0"], "000010");
+    assert_eq!(c["code1"], "001001");
+    assert_eq!(c["status"], "clipped");
+    // P(t) = (4 − 6t, 2 + 4t, 2 − t): x = 3 at t = 1/6, y = 4 at t = 1/2.
+    close_vec(&c["segment"][0], &[3.0, 8.0 / 3.0, 11.0 / 6.0], 1e-15);
+    close_vec(&c["segment"][1], &[1.0, 4.0, 1.5], 1e-15);
+    assert_eq!(c["intersections"]["left"]["code"], "001000");
+    assert_eq!(c["intersections"]["left"]["kept"], false);
+    let cmp = v["comparison"].as_array().unwrap();
+    let wrong: Vec<&str> = cmp
+        .iter()
+        .filter(|c| c["agrees"] == false)
+        .map(|c| c["key"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        wrong,
+        [
+            "clip.intersections.right.point",
+            "clip.intersections.top.point",
+            "clip.segment"
+        ]
+    );
+}
+
+#[test]
+fn text_camera_example_by_hand() {
+    let v = json_ok(&["solve", "problems/text-camera.toml", "--precision", "f64"]);
+    let r = &v["result"]["view"];
+    close_vec(&r["n"], &[0.8, 0.6, 0.0], 1e-15);
+    close_vec(&r["u"], &[0.0, 0.0, -1.0], 1e-15);
+    close_vec(&r["v"], &[-0.6, 0.8, 0.0], 1e-15);
+    close_vec(&r["points"]["Pref"], &[0.0, 0.0, -5.0], 1e-14);
+    // V's translation column is −(u·Pe, v·Pe, n·Pe) = −(−4, 4/5, 28/5).
+    let m = &r["matrix"];
+    close_vec(&m[0], &[0.0, 0.0, -1.0, 4.0], 1e-15);
+    close_vec(&m[1], &[-0.6, 0.8, 0.0, -0.8], 1e-15);
+    close_vec(&m[2], &[0.8, 0.6, 0.0, -5.6], 1e-14);
+}
+
+#[test]
+fn clip_cases_cover_every_outcome() {
+    let v = json_ok(&["solve", "problems/clip-cases.toml", "--precision", "f64"]);
+    let segs = v["result"]["clip"].as_array().unwrap();
+    let status: Vec<&str> = segs.iter().map(|s| s["status"].as_str().unwrap()).collect();
+    assert_eq!(
+        status,
+        ["accepted", "rejected", "rejected", "rejected", "clipped", "clipped", "clipped"]
+    );
+    assert_eq!(segs[3]["segment"], serde_json::Value::Null);
+    // Case 5 touches only the edge point (3, 4, 1): both ends equal.
+    close_vec(&segs[4]["segment"][0], &[3.0, 4.0, 1.0], 1e-15);
+    close_vec(&segs[4]["segment"][1], &[3.0, 4.0, 1.0], 1e-15);
+    close_vec(&segs[5]["segment"][1], &[1.0, 1.0, 3.0], 1e-15);
+    // Case 7 names its ends: A(−1,2,2) → B(2,2,2) enters the box at x = 0.
+    close_vec(&segs[6]["segment"][0], &[0.0, 2.0, 2.0], 1e-15);
+}
+
+#[test]
+fn behind_the_eye_is_a_warning_not_an_error() {
+    let v = json_ok(&[
+        "solve",
+        "problems/project-behind.toml",
+        "--precision",
+        "f64",
+    ]);
+    let w = v["warnings"].as_array().unwrap();
+    assert!(
+        w.iter()
+            .any(|x| x.as_str().unwrap().contains("B is behind")),
+        "{w:?}"
+    );
+    // B(1,1,2): d·x/z = −1·1/2 = −0.5 (inverted image).
+    close_vec(
+        &v["result"]["project"]["points"]["B"],
+        &[-0.5, -0.5, -1.0],
+        1e-15,
+    );
+}
+
+#[test]
+fn subcommands_by_flags_with_negative_values() {
+    let v = json_ok(&[
+        "basis",
+        "--eye",
+        "4,4,4",
+        "--look",
+        "0,1,4",
+        "--up",
+        "0,1,0",
+        "--precision",
+        "f64",
+    ]);
+    close_vec(&v["result"]["u"], &[0.0, 0.0, -1.0], 1e-15);
+    let v = json_ok(&[
+        "project",
+        "--d",
+        "-0.1",
+        "--point",
+        "B=1/sqrt(2),-1,-5/sqrt(2)",
+        "--precision",
+        "f64",
+    ]);
+    close_vec(
+        &v["result"]["points"]["B"],
+        &[0.02, -SQRT_2 / 50.0, -0.1],
+        1e-15,
+    );
+    // COP on +z at d = 10, plane z = 0: xp = x·d/(d − z) = 4·10/20 = 2.
+    let v = json_ok(&[
+        "project",
+        "--cop",
+        "10",
+        "--plane",
+        "0",
+        "--point",
+        "P=4,-6,-10",
+        "--precision",
+        "f64",
+    ]);
+    close_vec(&v["result"]["points"]["P"], &[2.0, -3.0, 0.0], 1e-15);
+    let v = json_ok(&["project", "--ortho", "--point", "P=4,-6,-10"]);
+    close_vec(&v["result"]["points"]["P"], &[4.0, -6.0, 0.0], 0.0);
+    let v = json_ok(&[
+        "clip", "--min", "0,0,0", "--max", "3,4,3", "--from", "4,2,2", "--to", "-2,6,1",
+    ]);
+    assert_eq!(v["result"]["status"], "clipped");
+    let v = json_ok(&[
+        "window",
+        "--fovy",
+        "90",
+        "--aspect",
+        "2",
+        "--near",
+        "1",
+        "--viewport",
+        "200x100",
+        "--point",
+        "A=-2,-1",
+    ]);
+    close(f(&v["result"]["right"]), 2.0, 1e-15);
+    close_vec(&v["result"]["pixels"]["A"], &[0.0, 0.0], 1e-13);
+    let v = json_ok(&[
+        "window",
+        "--fovy",
+        "pi/2 rad",
+        "--aspect",
+        "1",
+        "--near",
+        "1",
+        "--precision",
+        "f64",
+    ]);
+    close(f(&v["result"]["top"]), 1.0, 1e-15);
+}
+
+#[test]
+fn f32_results_print_as_f32() {
+    // 1/10 as f32 is 0.100000001490116…; the JSON must say 0.1 (its shortest form).
+    let out = grafika()
+        .args([
+            "project",
+            "--ortho",
+            "--point",
+            "P=0.1,0.2,0.3",
+            "--precision",
+            "f32",
+            "--json",
+        ])
+        .output()
+        .unwrap();
+    let s = String::from_utf8(out.stdout).unwrap();
+    assert!(s.contains("0.1,") || s.contains("0.1\n"), "{s}");
+    assert!(!s.contains("0.10000000149"), "{s}");
+}
+
+#[test]
+fn bad_flags_name_the_field() {
+    let cam = |eye: &str, look: &str, up: &str| {
+        json_err(&["basis", "--eye", eye, "--look", look, "--up", up])["field"].clone()
+    };
+    assert_eq!(cam("0,5,0", "0,0,0", "0,1,0"), "up"); // parallel
+    assert_eq!(cam("1,1,1", "1,1,1", "0,1,0"), "look"); // eye = look
+    assert_eq!(cam("0,0,5", "0,0,0", "0,0,0"), "up"); // zero up
+    assert_eq!(cam("1e999,0,0", "0,0,0", "0,1,0"), "eye"); // not finite
+    assert_eq!(cam("1+,0,0", "0,0,0", "0,1,0"), "eye"); // malformed
+    assert_eq!(cam("1,2", "0,0,0", "0,1,0"), "eye"); // two components
+    let win = |fovy: &str, aspect: &str, near: &str| {
+        json_err(&["window", "--fovy", fovy, "--aspect", aspect, "--near", near])["field"].clone()
+    };
+    assert_eq!(win("180", "1", "1"), "fovy");
+    assert_eq!(win("-5", "1", "1"), "fovy");
+    assert_eq!(win("45", "0", "1"), "aspect");
+    assert_eq!(win("45", "1", "-0.1"), "near");
+    assert_eq!(
+        json_err(&["window", "--fovy", "45", "--aspect", "1", "--near", "2", "--far", "1"])
+            ["field"],
+        "far"
+    );
+    assert_eq!(
+        json_err(&["project", "--d", "0", "--point", "A=1,1,1"])["field"],
+        "d"
+    );
+    assert_eq!(
+        json_err(&["project", "--d", "-1", "--point", "A=1,1,0"])["field"],
+        "points.A"
+    );
+    assert_eq!(
+        json_err(&["project", "--d", "-1", "--point", "A1,1,0"])["field"],
+        "point"
+    );
+    assert_eq!(json_err(&["project", "--point", "A=1,1,1"])["field"], "d");
+    assert_eq!(
+        json_err(&["clip", "--min", "5,0,0", "--max", "3,4,3", "--from", "0,0,0", "--to", "1,1,1"])
+            ["field"],
+        "min"
+    );
+    assert_eq!(
+        json_err(&[
+            "clip", "--min", "0,0,0", "--max", "3,4,3", "--from", "1/0,0,0", "--to", "1,1,1"
+        ])["field"],
+        "from"
+    );
+    assert_eq!(json_err(&["solve", "no/such/file.toml"])["field"], "file");
+    // clap-level errors: missing flag, unknown flag
+    assert_eq!(
+        json_err(&["basis", "--eye", "1,2,3", "--look", "0,0,0"])["field"],
+        "--up <X,Y,Z>"
+    );
+    let e = json_err(&["basis", "--bogus"]);
+    assert!(e["message"].as_str().unwrap().contains("argument"), "{e}");
+}
+
+#[test]
+fn text_output_is_a_worked_solution() {
+    let out = grafika()
+        .args(["solve", "problems/text-triangle.toml"])
+        .output()
+        .unwrap();
+    let s = String::from_utf8(out.stdout).unwrap();
+    for needle in [
+        "Step 1: modeling",
+        "Step 2: viewing",
+        "Step 3: projection",
+        "Step 4: window",
+        "n = (Pe − Pr) / |Pe − Pr|",
+        "the text is WRONG here",
+    ] {
+        assert!(s.contains(needle), "missing {needle:?}");
+    }
+}
+
+#[test]
+fn exact_forms_of_the_text_examples() {
+    // The text's own exact answers, in canonical form: −6/√2 = −3√2, −5/√2 = −5√2/2,
+    // A'' = (0, −√2/60), B'' = (1/50, −√2/50), top = 0.1·tan 22.5° = (√2 − 1)/10.
+    let v = json_ok(&["solve", "problems/text-triangle.toml"]);
+    let e = &v["exact"];
+    assert_eq!(
+        e["view"]["points"]["A"],
+        serde_json::json!(["0", "-1", "-3*sqrt(2)"])
+    );
+    assert_eq!(
+        e["view"]["points"]["B"],
+        serde_json::json!(["sqrt(2)/2", "-1", "-5*sqrt(2)/2"])
+    );
+    assert_eq!(
+        e["project"]["points"]["A"],
+        serde_json::json!(["0", "-sqrt(2)/60", "-1/10"])
+    );
+    assert_eq!(
+        e["project"]["points"]["B"],
+        serde_json::json!(["1/50", "-sqrt(2)/50", "-1/10"])
+    );
+    assert_eq!(e["window"]["top"], "(sqrt(2)-1)/10");
+    let c = json_ok(&["solve", "problems/text-clip.toml"]);
+    assert_eq!(
+        c["exact"]["clip"]["segment"],
+        serde_json::json!([["3", "8/3", "11/6"], ["1", "4", "3/2"]])
+    );
+    // f64 runs have no exact forms.
+    let f = json_ok(&[
+        "basis",
+        "--eye",
+        "3,1,3",
+        "--look",
+        "2,1,2",
+        "--up",
+        "0,1,0",
+        "--precision",
+        "f64",
+    ]);
+    assert_eq!(f["exact"]["u"], serde_json::json!([null, null, null]));
+}

@@ -1,0 +1,62 @@
+//! Helpers shared by the integration tests: run the binary, read its JSON.
+#![allow(dead_code)]
+
+use assert_cmd::Command;
+use serde_json::Value;
+use std::path::PathBuf;
+
+/// The repository root (where problems/ lives).
+pub fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// A command for the grafika binary, run from the repository root.
+pub fn grafika() -> Command {
+    let mut c = Command::cargo_bin("grafika").expect("binary builds");
+    c.current_dir(root());
+    c
+}
+
+/// Runs grafika with `args` plus `--json`, expects success, returns the JSON.
+pub fn json_ok(args: &[&str]) -> Value {
+    let out = grafika().args(args).arg("--json").output().expect("runs");
+    assert!(
+        out.status.success(),
+        "grafika {args:?} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("stdout is one JSON object")
+}
+
+/// Runs grafika with `args` plus `--json`, expects exit 2, returns the error object.
+pub fn json_err(args: &[&str]) -> Value {
+    let out = grafika().args(args).arg("--json").output().expect("runs");
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "grafika {args:?} should fail with 2; stdout {}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    assert!(!out.stderr.is_empty(), "an error message on stderr");
+    let v: Value = serde_json::from_slice(&out.stdout).expect("stdout is one JSON object");
+    v["error"].clone()
+}
+
+/// A number from JSON.
+pub fn f(v: &Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
+}
+
+/// Asserts |a − b| ≤ tol.
+pub fn close(a: f64, b: f64, tol: f64) {
+    assert!((a - b).abs() <= tol, "{a} vs {b} (tolerance {tol})");
+}
+
+/// Asserts a JSON array of numbers equals `want` to `tol`.
+pub fn close_vec(v: &Value, want: &[f64], tol: f64) {
+    let a = v.as_array().unwrap_or_else(|| panic!("not an array: {v}"));
+    assert!(a.len() >= want.len(), "{v} shorter than {want:?}");
+    for (x, w) in a.iter().zip(want) {
+        close(f(x), *w, tol);
+    }
+}
