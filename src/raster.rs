@@ -64,8 +64,11 @@ pub struct Tri {
     pub verts: [ScreenVert; 3],
 }
 
+/// v in 1/256 pixel, rounded half away from zero (casts, no libm call).
+#[inline]
 fn snap(v: f32) -> i64 {
-    (v as f64 * ONE as f64).round() as i64
+    let t = v as f64 * ONE as f64;
+    (t + if t >= 0.0 { 0.5 } else { -0.5 }) as i64
 }
 
 /// Sets up a triangle for an image of `w` × `h` pixels. Returns `None` when
@@ -367,7 +370,10 @@ mod tests {
         let t = setup([sv(1.0, 1.0), sv(9.0, 2.0), sv(3.0, 8.0)], 10, 10).unwrap();
         let u = setup([sv(1.0, 1.0), sv(3.0, 8.0), sv(9.0, 2.0)], 10, 10).unwrap();
         assert!(!t.1 && u.1);
-        assert_eq!(coverage(std::slice::from_ref(&t.0), 10, 10), coverage(&[u.0], 10, 10));
+        assert_eq!(
+            coverage(std::slice::from_ref(&t.0), 10, 10),
+            coverage(&[u.0], 10, 10)
+        );
         // At a vertex's own position λ is 1 for it (vertex 0 at (1,1) is not a
         // centre, so check the sum and a centre near vertex 2 instead).
         let l = t.0.lambda(3, 6);

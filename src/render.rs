@@ -813,12 +813,29 @@ impl Progress {
 
 /// Renders a scene.
 pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
+    render_reusing(scene, opt, None)
+}
+
+/// Renders a scene into the buffers of a previous frame when it has the
+/// same size (as a real-time loop would: no fresh allocation per frame).
+pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Result<Frame> {
     crate::scene::check_size(opt.width, opt.height)?;
     let t0 = Instant::now();
     let vs = view_setup(scene, opt.width, opt.height)?;
+    let n = (opt.width * opt.height) as usize;
+    let (mut tris, mut corners, mut depth, mut ids, mut rgb) = match prev {
+        Some(f) if f.rgb.len() == 3 * n => (f.tris, f.corners, f.depth, f.ids, f.rgb),
+        _ => (
+            Vec::new(),
+            Vec::new(),
+            vec![0.0f32; n],
+            vec![0u32; n],
+            vec![0u8; 3 * n],
+        ),
+    };
+    tris.clear();
+    corners.clear();
     let mut stats = Stats::default();
-    let mut tris = Vec::new();
-    let mut corners = Vec::new();
     // Per object: the material and the lights that reach it.
     let mut looks = Vec::new();
     for (oi, obj) in scene.objects.iter().enumerate() {
@@ -846,12 +863,8 @@ pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
     let bins = raster::bin(&tris, opt.height);
     stats.binning = t1.elapsed();
 
-    let n = (opt.width * opt.height) as usize;
     let progress = Progress::new(opt.progress, bins.len() as u64);
     let t2 = Instant::now();
-    let mut depth = vec![0.0f32; n];
-    let mut ids = vec![0u32; n];
-    let mut rgb = vec![0u8; 3 * n];
     let bg = to_u8(scene.background);
     let w = opt.width as usize;
     // One pass over bands in parallel: the band's visibility (nearest
@@ -868,28 +881,36 @@ pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
             let raster_t = t.elapsed();
             let t = Instant::now();
             let (mut count, mut evals) = (0u64, 0u64);
-            for (k, &t) in id.iter().enumerate() {
-                let px = &mut out[3 * k..3 * k + 3];
-                if t == NONE {
-                    px.copy_from_slice(&bg);
-                    continue;
+            for (r, (orow, irow)) in out
+                .chunks_exact_mut(3 * w)
+                .zip(id.chunks_exact(w))
+                .enumerate()
+            {
+                let j = (band * BAND + r) as u32;
+                for (i, (px, &t)) in orow.chunks_exact_mut(3).zip(irow).enumerate() {
+                    let c = if t == NONE {
+                        bg
+                    } else {
+                        count += 1;
+                        let tri = &tris[t as usize];
+                        if looks[tri.obj as usize].shading == Shading::Phong {
+                            evals += 1;
+                        }
+                        let c = &corners[t as usize];
+                        to_u8(pixel_color(
+                            tri,
+                            c,
+                            i as u32,
+                            j,
+                            &looks,
+                            vs.ortho,
+                            &mut NoTrace,
+                        ))
+                    };
+                    px[0] = c[0];
+                    px[1] = c[1];
+                    px[2] = c[2];
                 }
-                count += 1;
-                let tri = &tris[t as usize];
-                if looks[tri.obj as usize].shading == Shading::Phong {
-                    evals += 1;
-                }
-                let (i, j) = ((k % w) as u32, (band * BAND + k / w) as u32);
-                let c = pixel_color(
-                    tri,
-                    &corners[t as usize],
-                    i,
-                    j,
-                    &looks,
-                    vs.ortho,
-                    &mut NoTrace,
-                );
-                px.copy_from_slice(&to_u8(c));
             }
             progress.tick();
             (count, evals, raster_t, t.elapsed())

@@ -73,7 +73,7 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
         let mut times = Vec::new();
         let mut last = None;
         for _ in 0..a.repeat {
-            let f = render::render(&scene, &opt)?;
+            let f = render::render_reusing(&scene, &opt, last.take())?;
             times.push(f.stats.clone());
             last = Some(f);
         }
