@@ -14,6 +14,7 @@ pub mod commands;
 pub mod error;
 pub mod input;
 pub mod lighting;
+pub mod lighting_input;
 pub mod mesh;
 pub mod num;
 pub mod problem;

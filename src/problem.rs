@@ -202,10 +202,12 @@ pub struct ProblemIn {
     /// A clipping box and segments.
     pub clip: Option<ClipIn>,
     /// The lighting problem (see the shade command).
-    pub shade: Option<toml::Table>,
+    pub shade: Option<crate::lighting_input::ShadeIn>,
     /// Lights for the lighting problem.
     #[serde(default)]
-    pub light: Vec<toml::Table>,
+    pub light: Vec<crate::lighting_input::LightIn>,
+    /// Ga, the global ambient light of the lighting problem.
+    pub global_ambient: Option<Vec3In>,
     /// The answers printed in the source, keyed like the JSON results.
     #[serde(default)]
     pub printed: toml::Table,

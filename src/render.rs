@@ -260,22 +260,6 @@ fn surface(obj: &Object, face: u32, vertex: u32) -> [f32; 3] {
     }
 }
 
-/// The direction to the viewer from an eye-space point: +z for the tilt
-/// view, toward the eye at the origin for a camera.
-#[inline]
-fn view_dir(ortho: bool, p: Vector3<f32>) -> Vector3<f32> {
-    if ortho {
-        Vector3::new(0.0, 0.0, 1.0)
-    } else {
-        let l = p.norm();
-        if l > 0.0 {
-            -p / l
-        } else {
-            Vector3::new(0.0, 0.0, 1.0)
-        }
-    }
-}
-
 /// One lighting evaluation through the calculator's `lighting::shade`, at
 /// [`Fast32`] (plain f32 arithmetic).
 #[inline]
@@ -291,9 +275,14 @@ pub fn light_at(
     let mut m = mat.clone();
     m.color = color.map(Fast32);
     let f = |v: Vector3<f32>| Vector3::new(Fast32(v.x), Fast32(v.y), Fast32(v.z));
+    // shade takes a unit N (an interpolated normal is shorter than 1).
+    let len = n.norm();
+    let n = if len > 0.0 { n / len } else { n };
+    // The tilt view's viewer is along +z; a camera is a local viewer at the
+    // eye-space origin, V = norm(0 − P), which shade computes itself.
     let s = Surface {
         normal: f(n),
-        view: f(view_dir(ortho, p)),
+        view: f(Vector3::new(0.0, 0.0, 1.0)),
         position: f(p),
         camera: if ortho { None } else { Some(Vector3::zeros()) },
     };
@@ -313,6 +302,7 @@ pub fn fast_material(m: &Material<f32>) -> Material<Fast32> {
         emissive: m.emissive.map(Fast32),
         specular_on: m.specular_on,
         specular_requires_lit: m.specular_requires_lit,
+        ambient_color: m.ambient_color.map(|c| c.map(Fast32)),
     }
 }
 

@@ -589,6 +589,7 @@ fn material(m: &MaterialIn, base: Material<f32>) -> Result<Material<f32>> {
     if let Some(b) = m.specular_requires_lit {
         out.specular_requires_lit = b;
     }
+    out.validate("material")?;
     Ok(out)
 }
 
@@ -619,10 +620,16 @@ fn light(l: &LightIn) -> Result<Light<f32>> {
             falloff: l.falloff.map_or(1.0, |x| x.0 as f32),
         },
     };
-    if let LightKind::Directional { dir } = &out.kind {
-        if dir.norm() == 0.0 {
-            return Err(Error::new("direction", "must not be the zero vector"));
+    // shade takes unit directions.
+    match &mut out.kind {
+        LightKind::Directional { dir } | LightKind::Spot { dir, .. } => {
+            let n = dir.norm();
+            if n == 0.0 {
+                return Err(Error::new("direction", "must not be the zero vector"));
+            }
+            *dir /= n;
         }
+        LightKind::Point { .. } => {}
     }
     if let Some(c) = l.color {
         out.diffuse = c.0;
@@ -641,6 +648,8 @@ fn light(l: &LightIn) -> Result<Light<f32>> {
         out.attenuation = a.map(|x| x.0 as f32);
     }
     out.range = l.range.map(|r| r.0 as f32);
+    out.validate("light")
+        .map_err(|e| Error::new(e.field.trim_start_matches("light.").to_string(), e.message))?;
     Ok(out)
 }
 

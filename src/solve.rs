@@ -241,8 +241,26 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
         }
     }
 
-    if result.is_empty() && p.shade.is_none() {
-        return Err(Error::new("ask", "nothing to solve: the file has no part that its data allow (camera + points, perspective, clip)"));
+    // Lighting
+    if let (true, Some(sh)) = (p.asks("shade"), &p.shade) {
+        rec.section("Lighting");
+        let file = crate::lighting_input::LightsFileIn {
+            global_ambient: p.global_ambient.clone(),
+            material: None,
+            light: p.light.clone(),
+        };
+        let setup = crate::lighting_input::build::<T>(sh, &file, "shade.", "light", &mut rec)?;
+        let r = crate::lighting_input::run(&setup, &mut rec);
+        result.push(("shade".into(), Val::Map(r)));
+    } else if !p.light.is_empty() && p.shade.is_none() {
+        return Err(Error::new(
+            "shade",
+            "[[light]] tables need a [shade] table (normal, color, ...)",
+        ));
+    }
+
+    if result.is_empty() {
+        return Err(Error::new("ask", "nothing to solve: the file has no part that its data allow (camera + points, perspective, clip, shade)"));
     }
 
     let (notes, comparison) = compare_printed(p, &result);
@@ -298,6 +316,23 @@ fn input_json(p: &ProblemIn) -> Value {
             .map(|s| json!({ "from": pref(&s.from), "to": pref(&s.to) }))
             .collect();
         o["clip"] = json!({ "min": v3(&c.min), "max": v3(&c.max), "segment": segs });
+    }
+    if let Some(sh) = &p.shade {
+        let ov = |v: &Option<Vec3In>| v.as_ref().map(v3);
+        o["shade"] = json!({
+            "model": sh.model.unwrap_or_default().name(),
+            "light": ov(&sh.light), "normal": ov(&sh.normal), "view": ov(&sh.view),
+            "color": ov(&sh.color), "camera": ov(&sh.camera), "position": ov(&sh.position),
+            "ka": sh.ka.as_ref().map(n), "kd": sh.kd.as_ref().map(n),
+            "ks": sh.ks.as_ref().map(n), "shininess": sh.shininess.as_ref().map(n),
+        });
+        if !p.light.is_empty() {
+            o["light"] =
+                json!(p.light.iter().map(|l| json!({
+                "type": format!("{:?}", l.kind).to_lowercase(),
+                "direction": ov(&l.direction), "position": ov(&l.position), "axis": ov(&l.axis),
+            })).collect::<Vec<_>>());
+        }
     }
     o
 }
