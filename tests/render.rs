@@ -280,3 +280,26 @@ fn explain_pixel_shows_the_lighting_steps_and_the_pixel() {
         .unwrap();
     assert!(String::from_utf8_lossy(&out.stdout).contains("background"));
 }
+
+#[test]
+fn what_a_scene_does_not_need_is_skipped_and_counted() {
+    // A box far to the right of the 41-pixel-wide window: its bounding box
+    // is wholly beyond x = xmax, so it is rejected whole (12 triangles).
+    // A point light 10 units from the visible box with range 1 never
+    // reaches it; ks = 0 means no specular work at all.
+    let f = draw(
+        "[image]\nwidth = 41\nheight = 41\n[material]\nks = 0\n\
+         [[light]]\ntype = \"point\"\nposition = [0, 0, 30]\nrange = 1\n\
+         [[light]]\ntype = \"directional\"\ndirection = [0, 0, 1]\n\
+         [[object]]\ntype = \"box\"\nsize = [10, 10, 10]\ncolor = [1, 1, 1]\n\
+         [[object]]\ntype = \"box\"\nsize = [10, 10, 10]\ntransform = [{ translate = [500, 0, 0] }]\n",
+    );
+    assert_eq!(f.stats.objects_rejected, 1);
+    assert_eq!(f.stats.rejected, 12);
+    assert_eq!(f.stats.lights_skipped, 1, "{:?}", f.stats);
+    // Counted for the object that is drawn (the rejected one never gets that far).
+    assert_eq!(f.stats.specular_skipped, 1);
+    // The front face (N = L = (0,0,1)) lit by the directional light only:
+    // ka + kd·1 = 0.4 + 0.6 = 1 → white.
+    assert_eq!(pixel(&f, 20, 20), [255, 255, 255]);
+}
