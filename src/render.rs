@@ -272,8 +272,18 @@ pub fn light_at(
     ortho: bool,
     tr: &mut impl Trace,
 ) -> [f32; 3] {
-    let mut m = mat.clone();
-    m.color = color.map(Fast32);
+    // A one-colour object's material already holds its colour: no copy.
+    let color = color.map(Fast32);
+    let recoloured;
+    let m = if mat.color == color {
+        mat
+    } else {
+        recoloured = Material {
+            color,
+            ..mat.clone()
+        };
+        &recoloured
+    };
     let f = |v: Vector3<f32>| Vector3::new(Fast32(v.x), Fast32(v.y), Fast32(v.z));
     // shade takes a unit N (an interpolated normal is shorter than 1).
     let len = n.norm();
@@ -286,7 +296,7 @@ pub fn light_at(
         position: f(p),
         camera: if ortho { None } else { Some(Vector3::zeros()) },
     };
-    lighting::shade(&m, lights, &s, tr).color.map(|c| c.0)
+    lighting::shade(m, lights, &s, tr).color.map(|c| c.0)
 }
 
 /// A material at [`Fast32`].
@@ -471,6 +481,9 @@ fn prepare<'a>(
         }
     }
     let mut material = fast_material(&obj.material);
+    if let Colors::One(c) = obj.colors {
+        material.color = c.map(Fast32);
+    }
     let has_spec = matches!(
         material.model,
         lighting::Model::Phong | lighting::Model::Blinn | lighting::Model::Specular
