@@ -13,6 +13,9 @@ use serde::Deserialize;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
 
+/// The most triangles one object may have (memory: about 350 bytes each).
+pub const MAX_TRIANGLES: usize = 4_000_000;
+
 /// A finite number, evaluated from a TOML number or an expression string
 /// while the file is read (so a bad value is reported at its position).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -472,12 +475,12 @@ impl Scene {
     }
 }
 
-/// Checks an image size: 1 to 16384 pixels each way.
+/// Checks an image size: 1 to 8192 pixels each way.
 pub fn check_size(w: u32, h: u32) -> Result<()> {
-    if !(1..=16384).contains(&w) || !(1..=16384).contains(&h) {
+    if !(1..=8192).contains(&w) || !(1..=8192).contains(&h) {
         return Err(Error::new(
             "image",
-            format!("width and height must be from 1 to 16384 pixels, got {w}x{h}"),
+            format!("width and height must be from 1 to 8192 pixels, got {w}x{h}"),
         ));
     }
     Ok(())
@@ -763,6 +766,13 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
         }
     };
     mesh.validate(&field)?;
+    let ntris: usize = mesh.faces.iter().map(|f| f.len() - 2).sum();
+    if ntris > MAX_TRIANGLES {
+        return Err(Error::new(
+            field,
+            format!("has {ntris} triangles; the renderer takes at most {MAX_TRIANGLES} per object"),
+        ));
+    }
     let mut model = Matrix4::identity();
     for t in &o.transform {
         model = transform_matrix(t) * model;
