@@ -8,8 +8,6 @@
 //! or left edge: two triangles sharing an edge never both cover a pixel on
 //! it and never both miss it, because the edge functions are exact integers.
 
-use rayon::prelude::*;
-
 /// Sub-pixel bits of the fixed-point screen coordinates.
 pub const SUB: i64 = 8;
 const ONE: i64 = 1 << SUB;
@@ -224,31 +222,9 @@ pub fn bin(tris: &[Tri], h: u32) -> Vec<Vec<u32>> {
     bins
 }
 
-/// The visibility pass: for every pixel, the nearest triangle (strictly
-/// nearer wins, so the first drawn keeps a tie) and its depth. `depth` and
-/// `ids` are the whole image, row by row; `done` is called once per band.
-pub fn visibility(
-    tris: &[Tri],
-    bins: &[Vec<u32>],
-    w: u32,
-    depth: &mut [f32],
-    ids: &mut [u32],
-    done: &(dyn Fn() + Sync),
-) {
-    let w = w as usize;
-    depth
-        .par_chunks_mut(w * BAND)
-        .zip(ids.par_chunks_mut(w * BAND))
-        .zip(bins.par_iter())
-        .enumerate()
-        .for_each(|(band, ((dz, id), bin))| {
-            visibility_band(tris, bin, (band * BAND) as u32, w, dz, id);
-            done();
-        });
-}
-
 /// The visibility pass of one band (rows from `r0`): clears it, then draws
-/// its triangles in order.
+/// its triangles in order; for every pixel the nearest triangle wins
+/// (strictly nearer, so the first drawn keeps a tie).
 pub fn visibility_band(
     tris: &[Tri],
     bin: &[u32],
