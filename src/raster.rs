@@ -1,6 +1,6 @@
 //! Rasterization: triangle setup in fixed point, edge functions with the
-//! top-left fill rule, a depth test, and the visibility pass over horizontal
-//! bands of the image in parallel.
+//! top-left fill rule, a depth test, binning into horizontal bands and the
+//! visibility pass of one band (the renderer runs the bands in parallel).
 //!
 //! Screen coordinates here are pixels with the origin at the *top* left
 //! (rows as the PNG stores them), snapped to 1/256 pixel. A pixel (i, j) is
