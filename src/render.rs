@@ -9,11 +9,12 @@
 //! z-buffer) → shading (`lighting::shade`, with `NoTrace`, at f32): flat per
 //! face, Gouraud per vertex, Phong per pixel.
 //!
-//! The frame is rendered in two passes over horizontal bands in parallel: a
-//! visibility pass (nearest triangle per pixel) and a shading pass (each
-//! visible pixel lit once), so the work per pixel does not depend on how
-//! many triangles overlap it, and the output does not depend on the number
-//! of threads.
+//! The frame is rendered band by band (32 rows), the bands in parallel:
+//! first a band's visibility (the nearest triangle per pixel), then its
+//! shading (each visible pixel lit once), so the lighting work does not
+//! depend on how many triangles overlap a pixel, and the output does not
+//! depend on the number of threads (each band draws its triangles in
+//! submission order).
 
 use crate::error::{Error, Result};
 use crate::lighting::{self, Light, LightKind, Material, Surface};
