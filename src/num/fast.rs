@@ -91,9 +91,18 @@ impl Scalar for Fast32 {
     fn abs(&self) -> Self {
         Fast32(self.0.abs())
     }
+    /// xⁿ by repeated squaring, inline (f32::powi is a library call).
     #[inline(always)]
     fn powi(&self, n: u32) -> Self {
-        Fast32(self.0.powi(n.min(i32::MAX as u32) as i32))
+        let (mut acc, mut base, mut e) = (1.0f32, self.0, n);
+        while e > 0 {
+            if e & 1 == 1 {
+                acc *= base;
+            }
+            base *= base;
+            e >>= 1;
+        }
+        Fast32(acc)
     }
     fn pi() -> Self {
         Fast32(std::f32::consts::PI)
