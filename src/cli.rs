@@ -65,6 +65,8 @@ pub enum Command {
     Check(crate::check_cmd::CheckArgs),
     /// Generate problems, question sheets and answer keys.
     Generate(crate::generate::GenerateArgs),
+    /// Render a scene file (TOML) to a PNG: flat, Gouraud or Phong shading.
+    Render(crate::render_cmd::RenderArgs),
 }
 
 /// The camera flags.
@@ -227,6 +229,8 @@ pub fn run(cli: &Cli) -> Result<Report> {
             "command",
             "check and generate print their own output: use main_with_args",
         )),
+        // The renderer computes at f32 (the calculator's precisions are for explaining).
+        Command::Render(a) => crate::render_cmd::run(a),
     }
 }
 

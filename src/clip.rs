@@ -116,6 +116,28 @@ pub fn outcode<T: Scalar>(b: &ClipBox<T>, p: &V3<T>) -> u8 {
     c
 }
 
+/// The 6-bit outcode of a point in homogeneous clip space (x, y, z, w),
+/// against the view volume −w ≤ x, y, z ≤ w, in the same bit order as
+/// [`outcode`] (the box [−w, w]³): bit 1 x < −w, bit 2 x > w, bit 3 y < −w,
+/// bit 4 y > w, bit 5 z < −w (in front of the near plane), bit 6 z > w
+/// (beyond the far plane). Comparing with w instead of dividing by it means
+/// no division happens, so points at or behind the eye (w ≤ 0) get codes too.
+#[inline]
+pub fn outcode_clip_space<T: Scalar>(p: &nalgebra::Vector4<T>) -> u8 {
+    let w = &p[3];
+    let nw = -w.clone();
+    let mut c = 0u8;
+    for axis in 0..3 {
+        if p[axis] < nw {
+            c |= 1 << (2 * axis);
+        }
+        if p[axis] > *w {
+            c |= 1 << (2 * axis + 1);
+        }
+    }
+    c
+}
+
 /// An outcode written bit 6 first, as the text writes it (`001001`).
 pub fn code_str(c: u8) -> String {
     format!("{c:06b}")
@@ -373,6 +395,33 @@ fn snap<T: Scalar>(b: &ClipBox<T>, q: &mut V3<T>) {
 mod tests {
     use super::*;
     use crate::trace::NoTrace;
+
+    #[test]
+    fn clip_space_outcode_is_the_box_outcode_of_minus_w_to_w() {
+        // With w = 2 the volume is the box [−2, 2]³: the same bits as outcode().
+        let b = ClipBox {
+            min: V3::new(-2.0, -2.0, -2.0),
+            max: V3::new(2.0, 2.0, 2.0),
+        };
+        for p in [
+            [3.0, 0.0, 0.0],
+            [-3.0, 2.5, 0.0],
+            [0.0, -9.0, -2.5],
+            [1.0, 1.0, 7.0],
+            [2.0, -2.0, 2.0],
+        ] {
+            let h = nalgebra::Vector4::new(p[0], p[1], p[2], 2.0);
+            assert_eq!(
+                outcode_clip_space(&h),
+                outcode(&b, &V3::new(p[0], p[1], p[2]))
+            );
+        }
+        // A point behind the eye (w < 0) is outside on some plane.
+        assert_ne!(
+            outcode_clip_space(&nalgebra::Vector4::new(0.0, 0.0, 1.0, -1.0)),
+            0
+        );
+    }
 
     fn bx() -> ClipBox<f64> {
         ClipBox {

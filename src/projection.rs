@@ -140,6 +140,56 @@ pub fn project<T: Scalar>(
     Ok(r)
 }
 
+/// The perspective projection as a 4×4 matrix (eye → homogeneous clip
+/// space), built from the viewing window on the near plane
+/// ([`crate::window::window`]: top = near·tan(fovy/2), right = aspect·top):
+///
+/// ```text
+/// | near/right  0         0                     0                  |
+/// | 0           near/top  0                     0                  |
+/// | 0           0         −(far+near)/(far−near) −2·far·near/(far−near) |
+/// | 0           0         −1                    0                  |
+/// ```
+///
+/// so w = −z and x/w = (−near·x/z)/right: the text's projection onto the
+/// near plane (d = −near, xp = d·x/z) divided by the window's half width,
+/// −1 … 1 across the window. z/w runs from −1 on the near plane to +1 on the
+/// far plane (nearer is smaller).
+pub fn perspective_matrix<T: Scalar>(
+    win: &crate::window::Window<T>,
+    near: &T,
+    far: &T,
+) -> nalgebra::Matrix4<T> {
+    let mut m = nalgebra::Matrix4::<T>::zeros();
+    let depth = far.clone() - near.clone();
+    m[(0, 0)] = near.clone() / win.right.clone();
+    m[(1, 1)] = near.clone() / win.top.clone();
+    m[(2, 2)] = -(far.clone() + near.clone()) / depth.clone();
+    m[(2, 3)] = -(T::from_i64(2) * far.clone() * near.clone()) / depth;
+    m[(3, 2)] = -T::one();
+    m
+}
+
+/// The orthographic projection (xp = x, yp = y) as a 4×4 matrix onto the
+/// same clip space: the window [left, right] × [bottom, top] maps to −1 … 1
+/// and eye z from −near to −far maps to −1 … 1 (w = 1).
+pub fn ortho_matrix<T: Scalar>(
+    win: &crate::window::Window<T>,
+    near: &T,
+    far: &T,
+) -> nalgebra::Matrix4<T> {
+    let two = T::from_i64(2);
+    let mut m = nalgebra::Matrix4::<T>::identity();
+    m[(0, 0)] = two.clone() / win.width.clone();
+    m[(0, 3)] = -(win.right.clone() + win.left.clone()) / win.width.clone();
+    m[(1, 1)] = two.clone() / win.height.clone();
+    m[(1, 3)] = -(win.top.clone() + win.bottom.clone()) / win.height.clone();
+    let depth = far.clone() - near.clone();
+    m[(2, 2)] = -two / depth.clone();
+    m[(2, 3)] = -(far.clone() + near.clone()) / depth;
+    m
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -167,6 +217,24 @@ mod tests {
         };
         let p = project(&g, "P", &V3::new(4.0, -6.0, -10.0), &mut NoTrace).unwrap();
         approx::assert_relative_eq!(p, V3::new(2.0, -3.0, 0.0), epsilon = 1e-15);
+    }
+
+    #[test]
+    fn perspective_matrix_is_the_near_plane_projection_over_the_window() {
+        // fovy 90°, aspect 2, near 0.5: top = 0.5, right = 1.
+        let w = crate::window::window(&90.0, &2.0, &0.5, "near", &mut NoTrace).unwrap();
+        let m = perspective_matrix(&w, &0.5, &10.0);
+        let p = V3::new(1.0, 2.0, -4.0);
+        let c = m * nalgebra::Vector4::new(p.x, p.y, p.z, 1.0);
+        // The text's projection onto z = −near, then divided by right and top.
+        let q = project(&Projection::Plane { d: -0.5 }, "P", &p, &mut NoTrace).unwrap();
+        approx::assert_relative_eq!(c.x / c.w, q.x / w.right, epsilon = 1e-15);
+        approx::assert_relative_eq!(c.y / c.w, q.y / w.top, epsilon = 1e-15);
+        // The near plane goes to z/w = −1 and the far plane to +1.
+        let n = m * nalgebra::Vector4::new(0.0, 0.0, -0.5, 1.0);
+        let f = m * nalgebra::Vector4::new(0.0, 0.0, -10.0, 1.0);
+        approx::assert_relative_eq!(n.z / n.w, -1.0, epsilon = 1e-15);
+        approx::assert_relative_eq!(f.z / f.w, 1.0, epsilon = 1e-15);
     }
 
     #[test]

@@ -136,8 +136,7 @@ pub fn to_viewport<T: Scalar>(
     p: (&T, &T),
     tr: &mut impl Trace,
 ) -> (T, T) {
-    let px = (p.0.clone() - w.left.clone()) / w.width.clone() * size.0.clone();
-    let py = (p.1.clone() - w.bottom.clone()) / w.height.clone() * size.1.clone();
+    let (px, py) = viewport_xy(w, size, p);
     tr.step(|| {
         Step::new(
             format!("Viewport coordinates of {name}"),
@@ -147,6 +146,17 @@ pub fn to_viewport<T: Scalar>(
         .val("W × H", Val::vec2(size.0, size.1))
         .res(format!("{name} pixel"), Val::vec2(&px, &py))
     });
+    (px, py)
+}
+
+/// The viewport formula alone (what [`to_viewport`] explains and the
+/// renderer calls per vertex), origin at the bottom left:
+///
+/// px = (xp − left)/(right − left)·W,  py = (yp − bottom)/(top − bottom)·H.
+#[inline]
+pub fn viewport_xy<T: Scalar>(w: &Window<T>, size: (&T, &T), p: (&T, &T)) -> (T, T) {
+    let px = (p.0.clone() - w.left.clone()) / w.width.clone() * size.0.clone();
+    let py = (p.1.clone() - w.bottom.clone()) / w.height.clone() * size.1.clone();
     (px, py)
 }
 

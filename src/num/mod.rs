@@ -7,10 +7,12 @@
 //! approximation where no exact form exists).
 
 pub mod expr;
+pub mod fast;
 mod float;
 pub mod real;
 
 pub use expr::{parse_expr, parse_vec3, Angle, AngleUnit, Expr};
+pub use fast::Fast32;
 pub use real::Real;
 
 use std::fmt::Debug;

@@ -1,0 +1,424 @@
+//! The renderer: the calculator's stages at scale.
+//!
+//! model → view (`camera::basis`, `camera::view_matrix`, or the text's tilt)
+//! → clip space (`projection::perspective_matrix` / `ortho_matrix` over the
+//! window from `window::window`) → homogeneous outcodes
+//! (`clip::outcode_clip_space`: trivial accept/reject of objects and
+//! triangles) → clipping of the triangles that cross a plane (so no divide by
+//! w ≤ 0) → viewport (`window::viewport_xy`) → raster (`raster`: fill rule,
+//! z-buffer) → shading (`lighting::shade`, with `NoTrace`, at f32): flat per
+//! face, Gouraud per vertex, Phong per pixel.
+//!
+//! The frame is rendered band by band (32 rows), the bands in parallel:
+//! first a band's visibility (the nearest triangle per pixel), then its
+//! shading (each visible pixel lit once), so the lighting work does not
+//! depend on how many triangles overlap a pixel, and the output does not
+//! depend on the number of threads (each band draws its triangles in
+//! submission order).
+
+use crate::error::{Error, Result};
+use crate::lighting::{Light, Material};
+use crate::num::Fast32;
+use crate::raster::{self, Tri, BAND, NONE};
+use crate::scene::{Normals, Scene, Shading, View};
+use crate::trace::NoTrace;
+use crate::window::Window;
+use nalgebra::{Matrix4, Vector3};
+use rayon::prelude::*;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::{Duration, Instant};
+
+mod geometry;
+mod shade;
+
+use geometry::{prepare, triangles};
+pub use shade::{fast_light, fast_material, light_at, pixel_color, to_u8};
+
+/// Per-corner data of a triangle: lit colour (flat, Gouraud), eye-space
+/// normal, eye-space position, surface colour.
+pub type Corner = [f32; 12];
+
+/// What to render.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Options {
+    /// Shading mode.
+    pub shading: Shading,
+    /// Vertex-normal source.
+    pub normals: Normals,
+    /// Image width.
+    pub width: u32,
+    /// Image height.
+    pub height: u32,
+    /// Use `shading` for every object, even those that name their own.
+    pub force_shading: bool,
+    /// Show a progress bar on a terminal for renders over half a second.
+    pub progress: bool,
+}
+
+impl Options {
+    /// The scene's own settings.
+    pub fn of(scene: &Scene) -> Options {
+        Options {
+            shading: scene.shading,
+            normals: scene.normals,
+            width: scene.width,
+            height: scene.height,
+            force_shading: false,
+            progress: false,
+        }
+    }
+}
+
+/// What was done and what was skipped.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Stats {
+    /// Triangles in the scene.
+    pub tris_in: u64,
+    /// Back faces of closed meshes, culled.
+    pub culled: u64,
+    /// Triangles wholly outside one plane of the view volume (outcodes).
+    pub rejected: u64,
+    /// Objects whose bounding box is wholly outside one plane.
+    pub objects_rejected: u64,
+    /// Objects whose bounding box is wholly inside (no per-triangle tests).
+    pub objects_inside: u64,
+    /// Triangles that crossed a plane and were clipped.
+    pub clipped: u64,
+    /// Triangles set up for rasterization (after clipping).
+    pub drawn: u64,
+    /// Triangles that cover no pixel centre.
+    pub no_pixels: u64,
+    /// Pixels that got a colour from a triangle.
+    pub pixels_shaded: u64,
+    /// Calls of `lighting::shade`.
+    pub lighting_evals: u64,
+    /// (object, light) pairs skipped because the object is out of range.
+    pub lights_skipped: u64,
+    /// Objects drawn without specular work (ks = 0 or specular off).
+    pub specular_skipped: u64,
+    /// Time: transforms, culling, clipping, setup, per-face/vertex lighting.
+    pub geometry: Duration,
+    /// Time: binning triangles into bands.
+    pub binning: Duration,
+    /// Thread time (summed over bands): visibility.
+    pub raster: Duration,
+    /// Thread time (summed over bands): shading.
+    pub shading: Duration,
+    /// Wall time of the band pass (visibility and shading, in parallel).
+    pub pass: Duration,
+}
+
+impl Stats {
+    /// Raster + shading time of the frame (everything but file output).
+    pub fn frame(&self) -> Duration {
+        self.geometry + self.binning + self.pass
+    }
+
+    fn add(&mut self, o: &Stats) {
+        self.tris_in += o.tris_in;
+        self.culled += o.culled;
+        self.rejected += o.rejected;
+        self.clipped += o.clipped;
+        self.drawn += o.drawn;
+        self.no_pixels += o.no_pixels;
+        self.lighting_evals += o.lighting_evals;
+    }
+}
+
+/// A rendered frame.
+#[derive(Clone, Debug)]
+pub struct Frame {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// RGB, 8 bits each, rows from the top.
+    pub rgb: Vec<u8>,
+    /// The visible triangle per pixel ([`NONE`] for background).
+    pub ids: Vec<u32>,
+    /// Depth z/w per pixel.
+    pub depth: Vec<f32>,
+    /// The set-up triangles.
+    pub tris: Vec<Tri>,
+    /// Their corners.
+    pub corners: Vec<[Corner; 3]>,
+    /// Per object: how it is shaded.
+    pub looks: Vec<Look>,
+    /// Whether the view was orthographic (the viewer along +z).
+    pub ortho: bool,
+    /// Counters and times.
+    pub stats: Stats,
+}
+
+/// How one object is shaded: its material, the lights that reach it and
+/// the shading mode.
+#[derive(Clone, Debug)]
+pub struct Look {
+    /// Material (specular switched off when ks = 0).
+    pub material: Material<Fast32>,
+    /// The lights within range of the object.
+    pub lights: Vec<Light<Fast32>>,
+    /// Flat, Gouraud or Phong.
+    pub shading: Shading,
+}
+
+/// The view transforms of a scene at an image size.
+#[derive(Clone, Debug)]
+pub struct ViewSetup {
+    /// World → eye.
+    pub eye_from_world: Matrix4<f64>,
+    /// Eye → clip.
+    pub clip_from_eye: Matrix4<f64>,
+    /// The window on the near plane (or the tilt view's pixel window).
+    pub win: Window<f32>,
+    /// Orthographic (the text's tilt view): the viewer is along +z.
+    pub ortho: bool,
+}
+
+/// The view of a scene: the camera's view matrix and the perspective over
+/// its window, or the tilt rotation and an orthographic window of W × H
+/// units centred on the origin (1 unit = 1 pixel).
+pub fn view_setup(scene: &Scene, w: u32, h: u32) -> Result<ViewSetup> {
+    let (wf, hf) = (w as f64, h as f64);
+    match &scene.view {
+        View::Tilt { x, y } => {
+            let rot = Matrix4::from_axis_angle(&Vector3::x_axis(), *x)
+                * Matrix4::from_axis_angle(&Vector3::y_axis(), *y);
+            let win = Window {
+                top: hf / 2.0,
+                bottom: -hf / 2.0,
+                left: -wf / 2.0,
+                right: wf / 2.0,
+                height: hf,
+                width: wf,
+            };
+            // Depth range ±10⁶ units: nothing the text draws comes near it.
+            let clip = crate::projection::ortho_matrix(&win, &-1e6, &1e6);
+            Ok(ViewSetup {
+                eye_from_world: rot,
+                clip_from_eye: clip,
+                win: win32(&win),
+                ortho: true,
+            })
+        }
+        View::Camera {
+            camera,
+            fovy,
+            aspect,
+            near,
+            far,
+        } => {
+            let b = crate::camera::basis(camera, &mut NoTrace)?;
+            let v = crate::camera::view_matrix(&b, &camera.pe, &mut NoTrace);
+            let aspect = aspect.unwrap_or(wf / hf);
+            let win = crate::window::window(fovy, &aspect, near, "near", &mut NoTrace)?;
+            let p = crate::projection::perspective_matrix(&win, near, far);
+            Ok(ViewSetup {
+                eye_from_world: v,
+                clip_from_eye: p,
+                win: win32(&win),
+                ortho: false,
+            })
+        }
+    }
+}
+
+fn win32(w: &Window<f64>) -> Window<f32> {
+    Window {
+        top: w.top as f32,
+        bottom: w.bottom as f32,
+        left: w.left as f32,
+        right: w.right as f32,
+        height: w.height as f32,
+        width: w.width as f32,
+    }
+}
+
+/// A progress bar that appears on a terminal once a render has taken half a
+/// second.
+struct Progress {
+    bar: Option<indicatif::ProgressBar>,
+    start: Instant,
+    shown: AtomicBool,
+}
+
+impl Progress {
+    fn new(on: bool, total: u64) -> Progress {
+        use std::io::IsTerminal;
+        let bar = (on && std::io::stderr().is_terminal()).then(|| {
+            let b = indicatif::ProgressBar::with_draw_target(
+                Some(total),
+                indicatif::ProgressDrawTarget::hidden(),
+            );
+            if let Ok(s) =
+                indicatif::ProgressStyle::with_template("{msg} {bar:40} {pos}/{len} bands")
+            {
+                b.set_style(s);
+            }
+            b.set_message("rendering");
+            b
+        });
+        Progress {
+            bar,
+            start: Instant::now(),
+            shown: AtomicBool::new(false),
+        }
+    }
+    fn tick(&self) {
+        if let Some(b) = &self.bar {
+            b.inc(1);
+            if self.start.elapsed() > Duration::from_millis(500)
+                && !self.shown.swap(true, Ordering::Relaxed)
+            {
+                b.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+            }
+        }
+    }
+    fn finish(&self) {
+        if let Some(b) = &self.bar {
+            b.finish_and_clear();
+        }
+    }
+}
+
+/// Renders a scene.
+pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
+    render_reusing(scene, opt, None)
+}
+
+/// Renders a scene into the buffers of a previous frame when it has the
+/// same size (as a real-time loop would: no fresh allocation per frame).
+pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Result<Frame> {
+    crate::scene::check_size(opt.width, opt.height)?;
+    let t0 = Instant::now();
+    let vs = view_setup(scene, opt.width, opt.height)?;
+    let n = (opt.width * opt.height) as usize;
+    let (mut tris, mut corners, mut depth, mut ids, mut rgb) = match prev {
+        Some(f) if f.rgb.len() == 3 * n => (f.tris, f.corners, f.depth, f.ids, f.rgb),
+        _ => (
+            Vec::new(),
+            Vec::new(),
+            vec![0.0f32; n],
+            vec![0u32; n],
+            vec![0u8; 3 * n],
+        ),
+    };
+    tris.clear();
+    corners.clear();
+    let mut stats = Stats::default();
+    // Per object: the material and the lights that reach it.
+    let mut looks = Vec::new();
+    for (oi, obj) in scene.objects.iter().enumerate() {
+        let Some(p) = prepare(obj, &vs, &scene.lights, opt, &mut stats) else {
+            looks.push(Look {
+                material: fast_material(&obj.material),
+                lights: Vec::new(),
+                shading: opt.shading,
+            });
+            continue;
+        };
+        let (t, c, s) = triangles(&p, oi as u32, &vs, scene, opt);
+        tris.extend(t);
+        corners.extend(c);
+        stats.add(&s);
+        looks.push(Look {
+            material: p.material,
+            lights: p.lights,
+            shading: p.shading,
+        });
+    }
+    stats.geometry = t0.elapsed();
+
+    let t1 = Instant::now();
+    let bins = raster::bin(&tris, opt.height);
+    stats.binning = t1.elapsed();
+
+    let progress = Progress::new(opt.progress, bins.len() as u64);
+    let t2 = Instant::now();
+    let bg = to_u8(scene.background);
+    let w = opt.width as usize;
+    // One pass over bands in parallel: the band's visibility (nearest
+    // triangle per pixel), then its shading while the band is in cache.
+    let (shaded, evals, raster_t, shade_t) = rgb
+        .par_chunks_mut(3 * w * BAND)
+        .zip(depth.par_chunks_mut(w * BAND))
+        .zip(ids.par_chunks_mut(w * BAND))
+        .zip(bins.par_iter())
+        .enumerate()
+        .map(|(band, (((out, dz), id), bin))| {
+            let t = Instant::now();
+            raster::visibility_band(&tris, bin, (band * BAND) as u32, w, dz, id);
+            let raster_t = t.elapsed();
+            let t = Instant::now();
+            let (mut count, mut evals) = (0u64, 0u64);
+            for (r, (orow, irow)) in out
+                .chunks_exact_mut(3 * w)
+                .zip(id.chunks_exact(w))
+                .enumerate()
+            {
+                let j = (band * BAND + r) as u32;
+                for (i, (px, &t)) in orow.chunks_exact_mut(3).zip(irow).enumerate() {
+                    let c = if t == NONE {
+                        bg
+                    } else {
+                        count += 1;
+                        let tri = &tris[t as usize];
+                        if looks[tri.obj as usize].shading == Shading::Phong {
+                            evals += 1;
+                        }
+                        let c = &corners[t as usize];
+                        to_u8(pixel_color(
+                            tri,
+                            c,
+                            i as u32,
+                            j,
+                            &looks,
+                            vs.ortho,
+                            &mut NoTrace,
+                        ))
+                    };
+                    px[0] = c[0];
+                    px[1] = c[1];
+                    px[2] = c[2];
+                }
+            }
+            progress.tick();
+            (count, evals, raster_t, t.elapsed())
+        })
+        .reduce(
+            || (0, 0, Duration::ZERO, Duration::ZERO),
+            |a, b| (a.0 + b.0, a.1 + b.1, a.2 + b.2, a.3 + b.3),
+        );
+    progress.finish();
+    stats.pixels_shaded = shaded;
+    stats.lighting_evals += evals;
+    stats.raster = raster_t;
+    stats.shading = shade_t;
+    stats.pass = t2.elapsed();
+    Ok(Frame {
+        width: opt.width,
+        height: opt.height,
+        rgb,
+        ids,
+        depth,
+        tris,
+        corners,
+        looks,
+        ortho: vs.ortho,
+        stats,
+    })
+}
+
+/// Writes the frame as an 8-bit RGB PNG.
+pub fn write_png(frame: &Frame, path: &std::path::Path) -> Result<()> {
+    let err = |e: String| Error::new("output", format!("cannot write {}: {e}", path.display()));
+    let file = std::fs::File::create(path).map_err(|e| err(e.to_string()))?;
+    let mut enc = png::Encoder::new(std::io::BufWriter::new(file), frame.width, frame.height);
+    enc.set_color(png::ColorType::Rgb);
+    enc.set_depth(png::BitDepth::Eight);
+    enc.set_compression(png::Compression::Fast);
+    let mut wr = enc.write_header().map_err(|e| err(e.to_string()))?;
+    wr.write_image_data(&frame.rgb)
+        .map_err(|e| err(e.to_string()))?;
+    wr.finish().map_err(|e| err(e.to_string()))
+}

@@ -1,0 +1,135 @@
+//! The shading stage of the renderer: one call of `lighting::shade` at
+//! [`Fast32`] per face (flat), vertex (Gouraud) or pixel (Phong), and the
+//! colour of a covered pixel.
+
+use crate::lighting::{self, Light, LightKind, Material, Surface};
+use crate::num::Fast32;
+use crate::raster::Tri;
+use crate::scene::Shading;
+use crate::trace::Trace;
+use nalgebra::Vector3;
+
+use super::{Corner, Look};
+
+/// One lighting evaluation through the calculator's `lighting::shade`, at
+/// [`Fast32`] (plain f32 arithmetic).
+#[inline]
+pub fn light_at(
+    mat: &Material<Fast32>,
+    lights: &[Light<Fast32>],
+    color: [f32; 3],
+    n: Vector3<f32>,
+    p: Vector3<f32>,
+    ortho: bool,
+    tr: &mut impl Trace,
+) -> [f32; 3] {
+    // A one-colour object's material already holds its colour: no copy.
+    let color = color.map(Fast32);
+    let recoloured;
+    let m = if mat.color == color {
+        mat
+    } else {
+        recoloured = Material {
+            color,
+            ..mat.clone()
+        };
+        &recoloured
+    };
+    let f = |v: Vector3<f32>| Vector3::new(Fast32(v.x), Fast32(v.y), Fast32(v.z));
+    // shade takes a unit N (an interpolated normal is shorter than 1).
+    let len = n.norm();
+    let n = if len > 0.0 { n / len } else { n };
+    // The tilt view's viewer is along +z; a camera is a local viewer at the
+    // eye-space origin, V = norm(0 − P), which shade computes itself.
+    let s = Surface {
+        normal: f(n),
+        view: f(Vector3::new(0.0, 0.0, 1.0)),
+        position: f(p),
+        camera: if ortho { None } else { Some(Vector3::zeros()) },
+    };
+    lighting::shade(m, lights, &s, tr).color.map(|c| c.0)
+}
+
+/// A material at [`Fast32`].
+pub fn fast_material(m: &Material<f32>) -> Material<Fast32> {
+    Material {
+        model: m.model,
+        ka: Fast32(m.ka),
+        kd: Fast32(m.kd),
+        ks: Fast32(m.ks),
+        shininess: Fast32(m.shininess),
+        color: m.color.map(Fast32),
+        specular: m.specular.map(Fast32),
+        emissive: m.emissive.map(Fast32),
+        specular_on: m.specular_on,
+        specular_requires_lit: m.specular_requires_lit,
+        ambient_color: m.ambient_color.map(|c| c.map(Fast32)),
+    }
+}
+
+/// A light at [`Fast32`].
+pub fn fast_light(l: &Light<f32>) -> Light<Fast32> {
+    let v = |a: &Vector3<f32>| a.map(Fast32);
+    Light {
+        kind: match &l.kind {
+            LightKind::Directional { dir } => LightKind::Directional { dir: v(dir) },
+            LightKind::Point { pos } => LightKind::Point { pos: v(pos) },
+            LightKind::Spot {
+                pos,
+                dir,
+                theta,
+                phi,
+                falloff,
+            } => LightKind::Spot {
+                pos: v(pos),
+                dir: v(dir),
+                theta: Fast32(*theta),
+                phi: Fast32(*phi),
+                falloff: Fast32(*falloff),
+            },
+        },
+        ambient: l.ambient.map(Fast32),
+        diffuse: l.diffuse.map(Fast32),
+        specular: l.specular.map(Fast32),
+        attenuation: l.attenuation.map(Fast32),
+        range: l.range.map(Fast32),
+    }
+}
+
+/// The colour of pixel (i, j) covered by triangle `t`: flat and Gouraud
+/// interpolate stored colours (no lighting here), Phong interpolates the
+/// normal, position and surface colour and calls `lighting::shade`.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn pixel_color(
+    t: &Tri,
+    c: &[Corner; 3],
+    i: u32,
+    j: u32,
+    looks: &[Look],
+    ortho: bool,
+    tr: &mut impl Trace,
+) -> [f32; 3] {
+    let look = &looks[t.obj as usize];
+    match look.shading {
+        Shading::Flat => [c[0][0], c[0][1], c[0][2]],
+        Shading::Gouraud => {
+            let m = t.mu(i, j);
+            [0, 1, 2].map(|k| m[0] * c[0][k] + m[1] * c[1][k] + m[2] * c[2][k])
+        }
+        Shading::Phong => {
+            let m = t.mu(i, j);
+            let at = |k: usize| m[0] * c[0][k] + m[1] * c[1][k] + m[2] * c[2][k];
+            let n = Vector3::new(at(3), at(4), at(5));
+            let p = Vector3::new(at(6), at(7), at(8));
+            let s = [at(9), at(10), at(11)];
+            light_at(&look.material, &look.lights, s, n, p, ortho, tr)
+        }
+    }
+}
+
+/// A colour 0…1 as 8-bit: round(255·c), clamped.
+#[inline]
+pub fn to_u8(c: [f32; 3]) -> [u8; 3] {
+    c.map(|x| (x.clamp(0.0, 1.0) * 255.0 + 0.5) as u8)
+}

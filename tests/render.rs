@@ -1,0 +1,305 @@
+//! The renderer from first principles: pixel colours that `lighting::shade`
+//! predicts, background outside silhouettes, depth order, near-plane
+//! clipping, open meshes, bad scene files and determinism across threads.
+
+use assert_cmd::Command;
+use grafika::lighting::{self, Light, Material, Surface};
+use grafika::render::{self, Frame, Options};
+use grafika::scene::Scene;
+use grafika::trace::NoTrace;
+use nalgebra::Vector3;
+use std::path::Path;
+
+fn scene(text: &str) -> Scene {
+    Scene::parse(text, "test.toml", Path::new(".")).unwrap()
+}
+
+fn draw(text: &str) -> Frame {
+    let s = scene(text);
+    render::render(&s, &Options::of(&s)).unwrap()
+}
+
+fn pixel(f: &Frame, x: u32, y: u32) -> [u8; 3] {
+    let k = 3 * (y * f.width + x) as usize;
+    [f.rgb[k], f.rgb[k + 1], f.rgb[k + 2]]
+}
+
+/// What `lighting::shade` gives for a surface with normal N seen along +z
+/// under the text's default light and material, as 8-bit.
+fn expected(color: [f32; 3], n: Vector3<f32>) -> [u8; 3] {
+    let s = Surface {
+        normal: n,
+        view: Vector3::new(0.0, 0.0, 1.0),
+        position: Vector3::zeros(),
+        camera: None,
+    };
+    let c = lighting::shade(
+        &Material::text_default(color),
+        &[Light::text_default()],
+        &s,
+        &mut NoTrace,
+    );
+    render::to_u8(c.color)
+}
+
+fn close(a: [u8; 3], b: [u8; 3]) -> bool {
+    a.iter()
+        .zip(b)
+        .all(|(x, y)| (*x as i32 - y as i32).abs() <= 1)
+}
+
+#[test]
+fn centre_of_a_head_on_sphere_has_the_colour_shade_gives_for_n_v_l_equal() {
+    // Tilt 0: the viewer and the light are along +z. A 41×41 image puts the
+    // centre of pixel (20, 20) at x = y = 0, where the sphere's normal is
+    // (0, 0, 1) = V = L (a vertex sits there: slices divisible by 4, even
+    // stacks). With ka 0.4, kd 0.6, ks 0.7: C·(0.4 + 0.6·1) + 0.7·1ⁿ =
+    // (1, 0.7, 0.7) for red — and shade must agree.
+    for shading in ["phong", "gouraud"] {
+        let f = draw(&format!(
+            "shading = \"{shading}\"\n[image]\nwidth = 41\nheight = 41\n\
+             [[object]]\ntype = \"sphere\"\nn = 16\nr = 15\ncolor = [1, 0, 0]\n"
+        ));
+        let want = expected([1.0, 0.0, 0.0], Vector3::new(0.0, 0.0, 1.0));
+        assert!(close(want, [255, 179, 179]), "{want:?}");
+        assert!(
+            close(pixel(&f, 20, 20), want),
+            "{shading}: {:?}",
+            pixel(&f, 20, 20)
+        );
+    }
+}
+
+#[test]
+fn a_flat_face_has_the_colour_shade_gives_for_its_normal() {
+    // A box turned 0.5 rad about y: its front face has N = (sin 0.5, 0, cos 0.5).
+    let f = draw(
+        "[image]\nwidth = 61\nheight = 61\n[[object]]\ntype = \"box\"\nsize = [40, 40, 40]\n\
+         color = [0, 1, 0]\ntransform = [{ rotate_y = 0.5 }]\n",
+    );
+    let n = Vector3::new(0.5f32.sin(), 0.0, 0.5f32.cos());
+    // The centre pixel sees the front face (it is nearest along +z there).
+    assert_eq!(pixel(&f, 30, 30), expected([0.0, 1.0, 0.0], n));
+    // Flat: one evaluation per triangle drawn, none per pixel.
+    assert_eq!(f.stats.lighting_evals, f.stats.drawn);
+}
+
+#[test]
+fn pixels_outside_the_silhouette_keep_the_background() {
+    // A sphere of radius 10 at the centre of 41×41: every pixel centre
+    // farther than 10 from the centre is background.
+    let f = draw(
+        "[image]\nwidth = 41\nheight = 41\nbackground = [0.2, 0.4, 0.6]\n\
+         [[object]]\ntype = \"sphere\"\nn = 24\nr = 10\ncolor = [1, 1, 1]\n",
+    );
+    let bg = render::to_u8([0.2, 0.4, 0.6]);
+    for y in 0..41 {
+        for x in 0..41 {
+            let (dx, dy) = (x as f32 - 20.0, y as f32 - 20.0);
+            if (dx * dx + dy * dy).sqrt() > 10.5 {
+                assert_eq!(pixel(&f, x, y), bg, "({x}, {y})");
+            }
+        }
+    }
+    assert_ne!(pixel(&f, 20, 20), bg);
+}
+
+#[test]
+fn overlapping_objects_resolve_by_depth_whichever_is_drawn_first() {
+    // Red box in front (z = +50, toward the viewer), blue behind at z = 0.
+    let red = "[[object]]\ntype = \"box\"\nsize = [20, 20, 20]\ncolor = [1, 0, 0]\ntransform = [{ translate = [0, 0, 50] }]\n";
+    let blue = "[[object]]\ntype = \"box\"\nsize = [30, 30, 30]\ncolor = [0, 0, 1]\n";
+    // ks = 0: no white highlight, so red stays (1, 0, 0)·(ka + kd·N·L).
+    let head = "[image]\nwidth = 41\nheight = 41\n[material]\nks = 0\n";
+    let a = draw(&format!("{head}{red}{blue}"));
+    let b = draw(&format!("{head}{blue}{red}"));
+    for f in [&a, &b] {
+        let c = pixel(f, 20, 20);
+        assert!(c[0] > 0 && c[2] == 0, "{c:?}");
+        // Where only the blue box is (|x| between 10 and 15): blue.
+        let c = pixel(f, 20 + 13, 20);
+        assert!(c[2] > 0 && c[0] == 0, "{c:?}");
+    }
+    assert_eq!(a.rgb, b.rgb);
+}
+
+#[test]
+fn a_floor_crossing_the_near_plane_is_clipped_without_artifacts() {
+    // Camera 1 above a floor that extends behind it, looking level: the
+    // floor's triangles cross the near plane and the plane through the eye.
+    // Nothing of the floor can appear above the horizon (the middle row).
+    let f = draw(
+        "[image]\nwidth = 80\nheight = 60\n\
+         [camera]\neye = [0, 1, 0]\nlook = [0, 1, -1]\nup = [0, 1, 0]\n\
+         [perspective]\nfovy = 60\nnear = 0.1\nfar = 100\n\
+         [[object]]\ntype = \"plane\"\nnx = 5\nnz = 5\ndx = 10\ndz = 10\ncolor = [1, 1, 1]\n\
+         transform = [{ translate = [-20, 0, -20] }]\n",
+    );
+    assert!(f.stats.clipped > 0, "{:?}", f.stats);
+    for y in 0..29 {
+        for x in 0..80 {
+            assert_eq!(
+                pixel(&f, x, y),
+                [0, 0, 0],
+                "floor above the horizon at ({x}, {y})"
+            );
+        }
+    }
+    // The bottom row is floor.
+    assert!(pixel(&f, 40, 59) != [0, 0, 0]);
+    assert!(f.depth.iter().all(|z| !z.is_nan()));
+}
+
+#[test]
+fn an_open_mesh_seen_from_behind_is_not_culled() {
+    // A plane faces +y; tilted by −0.5 about x it shows its underside to
+    // the viewer. It has open edges, so it must still be drawn.
+    let f = draw(
+        "[image]\nwidth = 60\nheight = 60\n[tilt]\nx = -0.5\n\
+         [[object]]\ntype = \"plane\"\nnx = 3\nnz = 3\ndx = 20\ndz = 20\ncolor = [1, 1, 1]\n\
+         transform = [{ translate = [-20, 0, -20] }]\n",
+    );
+    assert_eq!(f.stats.culled, 0);
+    assert!(f.stats.pixels_shaded > 100, "{:?}", f.stats);
+    // A closed box seen the same way has its back faces culled.
+    let g =
+        draw("[image]\nwidth = 60\nheight = 60\n[[object]]\ntype = \"box\"\nsize = [20, 20, 20]\n");
+    // Seen along z only the +z face faces the viewer; the other five (four
+    // edge-on, one turned away) are culled: 5 faces × 2 triangles.
+    assert_eq!(g.stats.culled, 10);
+}
+
+fn grafika() -> Command {
+    Command::cargo_bin("grafika").unwrap()
+}
+
+fn bad(text: &str, want: &[&str]) {
+    let dir = std::env::temp_dir().join(format!("grafika-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(format!("s{}.toml", text.len()));
+    std::fs::write(&p, text).unwrap();
+    let out = grafika()
+        .args(["render"])
+        .arg(&p)
+        .args(["-o"])
+        .arg(dir.join("x.png"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    for w in want {
+        assert!(err.contains(w), "`{w}` not in: {err}");
+    }
+}
+
+#[test]
+fn bad_scene_files_name_line_and_column_and_exit_2() {
+    bad("[[object]]\ntype = \"pyramid\"\n", &[":2:", "pyramid"]);
+    bad(
+        "[[object]]\ntype = \"cone\"\nn = -4\nr = 1\nh = 1\n",
+        &[":3:", "-4"],
+    );
+    bad(
+        "[[object]]\ntype = \"sphere\"\nn = 8\nr = inf\n",
+        &[":4:", "finite"],
+    );
+    bad(
+        "\n\n[[object]]\ntype = \"obj\"\npath = \"no/such/model.obj\"\n",
+        &[":3:", "model.obj"],
+    );
+    bad(
+        "[[object]]\ntype = \"sphere\"\nn = 8\nr = 1\nwobble = 2\n",
+        &[":5:", "wobble"],
+    );
+}
+
+#[test]
+fn same_png_bytes_at_any_thread_count() {
+    let dir = std::env::temp_dir().join(format!("grafika-thr-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("s.toml");
+    std::fs::write(
+        &scene,
+        "shading = \"phong\"\n[image]\nwidth = 96\nheight = 96\n\
+         [[object]]\ntype = \"sphere\"\nn = 12\nr = 40\nface_colors = [[1, 0, 0], [0, 1, 0]]\n\
+         [[object]]\ntype = \"box\"\nsize = [50, 50, 50]\ncolor = [0, 0, 1]\n",
+    )
+    .unwrap();
+    let mut bytes = Vec::new();
+    for t in ["1", "2", "3"] {
+        let png = dir.join(format!("t{t}.png"));
+        grafika()
+            .arg("render")
+            .arg(&scene)
+            .arg("-o")
+            .arg(&png)
+            .args(["--threads", t])
+            .assert()
+            .success();
+        bytes.push(std::fs::read(&png).unwrap());
+    }
+    assert_eq!(bytes[0], bytes[1]);
+    assert_eq!(bytes[0], bytes[2]);
+}
+
+#[test]
+fn explain_pixel_shows_the_lighting_steps_and_the_pixel() {
+    let dir = std::env::temp_dir().join(format!("grafika-exp-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("s.toml");
+    std::fs::write(
+        &scene,
+        "shading = \"phong\"\n[image]\nwidth = 41\nheight = 41\n\
+         [[object]]\ntype = \"sphere\"\nn = 16\nr = 15\ncolor = [1, 0, 0]\n",
+    )
+    .unwrap();
+    let out = grafika()
+        .arg("render")
+        .arg(&scene)
+        .arg("-o")
+        .arg(dir.join("e.png"))
+        .args(["--explain-pixel", "20,20"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("Barycentric"), "{text}");
+    assert!(text.contains("lighting::shade"), "{text}");
+    assert!(
+        text.contains("(255, 179, 179)") || text.contains("(255, 178, 178)"),
+        "{text}"
+    );
+    // A background pixel says so.
+    let out = grafika()
+        .arg("render")
+        .arg(&scene)
+        .arg("-o")
+        .arg(dir.join("e.png"))
+        .args(["--explain-pixel", "0,0"])
+        .output()
+        .unwrap();
+    assert!(String::from_utf8_lossy(&out.stdout).contains("background"));
+}
+
+#[test]
+fn what_a_scene_does_not_need_is_skipped_and_counted() {
+    // A box far to the right of the 41-pixel-wide window: its bounding box
+    // is wholly beyond x = xmax, so it is rejected whole (12 triangles).
+    // A point light 10 units from the visible box with range 1 never
+    // reaches it; ks = 0 means no specular work at all.
+    let f = draw(
+        "[image]\nwidth = 41\nheight = 41\n[material]\nks = 0\n\
+         [[light]]\ntype = \"point\"\nposition = [0, 0, 30]\nrange = 1\n\
+         [[light]]\ntype = \"directional\"\ndirection = [0, 0, 1]\n\
+         [[object]]\ntype = \"box\"\nsize = [10, 10, 10]\ncolor = [1, 1, 1]\n\
+         [[object]]\ntype = \"box\"\nsize = [10, 10, 10]\ntransform = [{ translate = [500, 0, 0] }]\n",
+    );
+    assert_eq!(f.stats.objects_rejected, 1);
+    assert_eq!(f.stats.rejected, 12);
+    assert_eq!(f.stats.lights_skipped, 1, "{:?}", f.stats);
+    // Counted for the object that is drawn (the rejected one never gets that far).
+    assert_eq!(f.stats.specular_skipped, 1);
+    // The front face (N = L = (0,0,1)) lit by the directional light only:
+    // ka + kd·1 = 0.4 + 0.6 = 1 → white.
+    assert_eq!(pixel(&f, 20, 20), [255, 255, 255]);
+}
