@@ -54,6 +54,13 @@ pub enum Command {
     Window(WindowArgs),
     /// 3D line clipping with 6-bit outcodes (cross-checked by Liang–Barsky).
     Clip(ClipArgs),
+    /// Run time against error: time per operation and error in ulps
+    /// against the exact path, per stage and precision.
+    Bench {
+        /// A few cases and passes only (seconds, for tests).
+        #[arg(long)]
+        quick: bool,
+    },
     /// A whole problem from a TOML file.
     Solve {
         /// The problem file.
@@ -156,6 +163,10 @@ pub fn run(cli: &Cli) -> Result<Report> {
         Command::Window(a) => at_precision!(p, window(a)),
         Command::Clip(a) => at_precision!(p, clip(a)),
         Command::Solve { file } => at_precision!(p, solve(file)),
+        Command::Bench { .. } => Err(Error::new(
+            "command",
+            "bench prints its own table (run it through main_with_args)",
+        )),
     }
 }
 
@@ -211,6 +222,24 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
             );
         }
     };
+    if let Command::Bench { quick } = cli.command {
+        let set = if quick {
+            crate::bench::Settings::quick()
+        } else {
+            crate::bench::Settings::full()
+        };
+        let (inp, rows) = crate::bench::measure(&set);
+        if cli.common.json {
+            println!(
+                "{}",
+                serde_json::to_string_pretty(&crate::bench::to_json(&inp, &rows))
+                    .unwrap_or_default()
+            );
+        } else {
+            print!("{}", crate::bench::table(&inp, &rows));
+        }
+        return 0;
+    }
     match run(&cli) {
         Ok(report) => {
             for w in &report.warnings {
