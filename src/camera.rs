@@ -34,13 +34,16 @@ pub struct Basis<T> {
     pub v: V3<T>,
     /// n, the camera's z axis (the camera looks along −n).
     pub n: V3<T>,
-    /// Pe − Pr, parallel to n.
+    /// Pe − Pr times a power of two (one in exact arithmetic) that brings
+    /// its largest component near 1: parallel to n.
     pub d: V3<T>,
-    /// Vup × (Pe − Pr), parallel to u.
+    /// Vup times a power of two, likewise.
+    pub up: V3<T>,
+    /// up × d, parallel to u.
     pub su: V3<T>,
-    /// (Pe − Pr) × (Vup × (Pe − Pr)), parallel to v.
+    /// d × (up × d), parallel to v.
     pub sv: V3<T>,
-    /// |Pe − Pr|, |su|, |sv|.
+    /// |d|, |su|, |sv|.
     pub norms: [T; 3],
 }
 
@@ -50,7 +53,10 @@ pub struct Basis<T> {
 ///
 /// Computed from the unrounded direction d = Pe − Pr: u ∥ Vup × d and
 /// v ∥ d × (Vup × d), each normalized once, which is the same vector in exact
-/// arithmetic and loses no accuracy to a rounded n in floats.
+/// arithmetic and loses no accuracy to a rounded n in floats. In floats, d
+/// and Vup are first scaled by powers of two (exactly) so that their largest
+/// components are near 1: the cross products can then neither overflow nor
+/// underflow for coordinates from 1e-30 to 1e30, even in f32.
 ///
 /// Errors: Pe = Pr (no view direction), Vup = 0 or parallel to Pe − Pr.
 /// Warns when Vup is within [`NEAR_PARALLEL_RAD`] of the view direction.
@@ -83,7 +89,10 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
     if vec::normalize(vup).is_none() {
         return Err(Error::new("up", "the up vector Vup is the zero vector"));
     }
-    let su = vec::cross(vup, &d);
+    // Exact power-of-two scaling (one for Real): directions are unchanged.
+    let ds = vec::scale(&d, &T::pow2_scale(&[&d[0], &d[1], &d[2]]));
+    let ups = vec::scale(vup, &T::pow2_scale(&[&vup[0], &vup[1], &vup[2]]));
+    let su = vec::cross(&ups, &ds);
     let (u, sun) = vec::normalize(&su).ok_or_else(|| {
         Error::new(
             "up",
@@ -95,7 +104,7 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
         )
     })?;
     // sin of the angle between Vup and d = |Vup × d| / (|Vup| |d|)
-    let sin_angle = sun.to_f64() / (vec::norm(vup).to_f64() * dn.to_f64());
+    let sin_angle = sun.to_f64() / (vec::norm(&ups).to_f64() * vec::norm(&ds).to_f64());
     let angle = sin_angle.clamp(-1.0, 1.0).asin();
     if angle < NEAR_PARALLEL_RAD {
         tr.warn(|| {
@@ -104,8 +113,8 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
             )
         });
     }
-    let vxn = vec::cross(vup, &n);
     tr.step(|| {
+        let vxn = vec::cross(vup, &n);
         Step::new("Camera axis u (to the right)", "u = (Vup × n) / |Vup × n|")
             .val("Vup", Val::vec3(vup))
             .val("Vup × n", Val::vec3(&vxn))
@@ -114,7 +123,7 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
     });
 
     // v completes the right-handed frame
-    let sv = vec::cross(&d, &su);
+    let sv = vec::cross(&ds, &su);
     let (v, svn) = vec::normalize(&sv).ok_or_else(|| Error::new("up", "v = n × u vanished"))?;
     tr.step(|| {
         Step::new("Camera axis v (up in the picture)", "v = n × u")
@@ -126,10 +135,11 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
         u,
         v,
         n,
-        d,
+        norms: [vec::norm(&ds), sun, svn],
+        d: ds,
+        up: ups,
         su,
         sv,
-        norms: [dn, sun, svn],
     };
     tr.step(|| check_step(&b));
     Ok(b)
@@ -220,8 +230,17 @@ fn rows<T: Scalar>(a: &V3<T>, b: &V3<T>, c: &V3<T>) -> Matrix4<T> {
 
 /// Eye coordinates of a world point: P' = V·P = (u·(P − Pe), v·(P − Pe), n·(P − Pe)).
 ///
-/// Computed as s·(P − Pe)/|s| with the unnormalized axes s of [`Basis`], so
-/// that no rounded unit vector enters the result.
+/// Computed from the unnormalized axes of [`Basis`] so that no rounded unit
+/// vector enters the result, each numerator from the camera's own inputs
+/// (up, d) and w = P − Pe rather than from rounded cross products:
+///
+/// u·w = (up × d)·w / |up × d| = det[up; d; w] / |su|,
+/// v·w = (d × (up × d))·w / |sv| = ((d·d)(up·w) − (d·up)(d·w)) / |sv|,
+/// n·w = d·w / |d|,
+///
+/// with [`Scalar::triple_product`] and [`Scalar::double_cross_dot`], which
+/// keep the digits of a coordinate much smaller than |w| (a point near a
+/// camera plane).
 pub fn to_eye<T: Scalar>(
     b: &Basis<T>,
     pe: &V3<T>,
@@ -230,9 +249,10 @@ pub fn to_eye<T: Scalar>(
     tr: &mut impl Trace,
 ) -> V3<T> {
     let rel = vec::sub(p, pe);
+    let (up, d, w) = (refs(&b.up), refs(&b.d), refs(&rel));
     let e = vec::v3(
-        vec::dot(&b.su, &rel) / b.norms[1].clone(),
-        vec::dot(&b.sv, &rel) / b.norms[2].clone(),
+        T::triple_product(up, d, w) / b.norms[1].clone(),
+        T::double_cross_dot(d, up, w) / b.norms[2].clone(),
         vec::dot(&b.d, &rel) / b.norms[0].clone(),
     );
     tr.step(|| {
@@ -245,6 +265,11 @@ pub fn to_eye<T: Scalar>(
         .res(format!("{name}'"), Val::vec3(&e))
     });
     e
+}
+
+/// The components of a vector by reference.
+fn refs<T>(a: &V3<T>) -> [&T; 3] {
+    [&a[0], &a[1], &a[2]]
 }
 
 /// A vector written for an error message.

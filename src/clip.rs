@@ -185,8 +185,7 @@ pub fn clip_segment<T: Scalar>(
         let bound = if is_max { &b.max[axis] } else { &b.min[axis] };
         // delta[axis] ≠ 0: exactly one end is outside this plane.
         let t = (bound.clone() - p0[axis].clone()) / delta[axis].clone();
-        let mut q = vec::add(p0, &vec::scale(&delta, &t));
-        q[axis] = bound.clone(); // on the plane exactly, whatever the rounding
+        let q = intersection_point(p0, p1, &delta, axis, bound, &t);
         let c = outcode(b, &q);
         tr.step(|| {
             Step::new(
@@ -256,6 +255,50 @@ pub fn clip_segment<T: Scalar>(
         }
     });
     result
+}
+
+/// P(t) = P0 + t·Δ on the plane `axis` = `bound`, where t = (bound − P0ₐ)/Δₐ.
+///
+/// Each other coordinate is evaluated as one quotient of the exact
+/// differences, (Pₖ·Δₐ + (bound − Pₐ)·Δₖ)/Δₐ with P the end nearer the plane, with the numerator a sum of
+/// products rounded once ([`Scalar::sum_of_products`]); the same value as
+/// P0ₖ + t·Δₖ in exact arithmetic, but without the rounding of t being
+/// magnified when P(t) lies much nearer the origin than P0. Should the
+/// products overflow the float range, the plain form is used. The plane's
+/// own coordinate is the bound itself, whatever the rounding.
+fn intersection_point<T: Scalar>(
+    p0: &V3<T>,
+    p1: &V3<T>,
+    delta: &V3<T>,
+    axis: usize,
+    bound: &T,
+    t: &T,
+) -> V3<T> {
+    // Measured from the end nearer the plane (the same point exactly, since
+    // P(t) = P1 + (t − 1)·Δ): its difference to the plane is the smaller,
+    // most accurately rounded one.
+    let num0 = bound.clone() - p0[axis].clone();
+    let num1 = bound.clone() - p1[axis].clone();
+    let (base, num) = if num1.abs() < num0.abs() {
+        (p1, num1)
+    } else {
+        (p0, num0)
+    };
+    let mut q = p0.clone();
+    for k in 0..3 {
+        q[k] = if k == axis {
+            bound.clone()
+        } else {
+            let r =
+                T::sum_of_products(&base[k], &delta[axis], &num, &delta[k]) / delta[axis].clone();
+            if r.is_finite() {
+                r
+            } else {
+                p0[k].clone() + t.clone() * delta[k].clone()
+            }
+        };
+    }
+    q
 }
 
 /// The step explaining one endpoint's outcode, bit by bit.

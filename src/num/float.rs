@@ -93,6 +93,37 @@ macro_rules! float_scalar {
                 let (x, y, z) = (a * k, b * k, c * k);
                 Self::dot3([&x, &y, &z], [&x, &y, &z]).sqrt() / k
             }
+            fn triple_product(a: [&Self; 3], b: [&Self; 3], c: [&Self; 3]) -> Self {
+                let w = |x: [&Self; 3]| [*x[0] as f64, *x[1] as f64, *x[2] as f64];
+                let (a, b, c) = (w(a), w(b), w(c));
+                let x = f64::diff_of_products(&b[1], &c[2], &b[2], &c[1]);
+                let y = f64::diff_of_products(&b[2], &c[0], &b[0], &c[2]);
+                let z = f64::diff_of_products(&b[0], &c[1], &b[1], &c[0]);
+                f64::dot3([&a[0], &a[1], &a[2]], [&x, &y, &z]) as $t
+            }
+            fn double_cross_dot(a: [&Self; 3], b: [&Self; 3], c: [&Self; 3]) -> Self {
+                let w = |x: [&Self; 3]| [*x[0] as f64, *x[1] as f64, *x[2] as f64];
+                let (a, b, c) = (w(a), w(b), w(c));
+                let aa = f64::dot3(r(&a), r(&a));
+                let bc = f64::dot3(r(&b), r(&c));
+                let ab = f64::dot3(r(&a), r(&b));
+                let ac = f64::dot3(r(&a), r(&c));
+                f64::diff_of_products(&aa, &bc, &ab, &ac) as $t
+            }
+            fn pow2_scale(xs: &[&Self]) -> Self {
+                let m = xs.iter().fold(0.0 as $t, |m, x| m.max(x.abs()));
+                if m == 0.0 || !m.is_finite() {
+                    return 1.0;
+                }
+                // e = floor(log2 m) from the f64 exponent bits (m is normal
+                // in f64 even when it is a subnormal f32), clamped so that
+                // 2^-e is a normal number of this type.
+                let bits = (m as f64).to_bits();
+                let be = ((bits >> 52) & 0x7ff) as i32;
+                let e = if be == 0 { -1023 } else { be - 1023 };
+                let e = e.clamp(<$t>::MIN_EXP, <$t>::MAX_EXP - 2);
+                f64::from_bits(((1023 - e) as u64) << 52) as $t
+            }
             fn is_finite(&self) -> bool {
                 <$t>::is_finite(*self)
             }
@@ -108,6 +139,11 @@ macro_rules! float_scalar {
             }
         }
     };
+}
+
+/// The components of an array by reference.
+fn r(x: &[f64; 3]) -> [&f64; 3] {
+    [&x[0], &x[1], &x[2]]
 }
 
 float_scalar!(f64, Precision::F64);
