@@ -83,6 +83,11 @@ impl Expr {
                         "the exponent in `{self}` must be a whole number from -1024 to 1024"
                     ));
                 }
+                // |base|^e beyond 2^±8192 cannot lead to a value an f64 can
+                // show, and exact powers that large would take long to form.
+                if !base.is_zero_value() && (base.to_f64().abs().log2() * e).abs() > 8192.0 {
+                    return Err(format!("`{self}` is too large or too small a power"));
+                }
                 let p = base.powi(e.abs() as u32);
                 if e < 0.0 {
                     if p.is_zero_value() {
