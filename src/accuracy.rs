@@ -370,22 +370,30 @@ pub fn inputs(n: usize) -> Inputs {
         });
     }
     for i in 0..n / 2 {
-        // Up vector (a, b, c) and view direction (x, y, c') with a·y − b·x = 1:
-        // |up × d| ≥ 1 while |up|·|d| ≈ 2^41, an angle near 5e-13 rad. Every
-        // other case instead perturbs d by a few units (about 1e-6 rad).
-        let a = rng.range(M20 / 2, M20 - 1);
-        let mut b = rng.range(M20 / 2, M20 - 1);
+        // Up vector (a, b, 0) and view direction (x, y, 0) with a·y − b·x = 1
+        // (adding (a, b) to (x, y) keeps that, and makes |d| ≥ |up|):
+        // |up × d| = 1 while |up|·|d| ≥ 2·(3·2^18)² ≈ 1.2e12, an angle below 1e-12 rad, with Pe
+        // and Pr = ∓d/2 within 2^20. Every other case instead perturbs d by
+        // a few units (about 1e-6 rad). Axes are then permuted and flipped.
+        let a = rng.range(3 * M20 / 4, M20 - 1);
+        let mut b = rng.range(3 * M20 / 4, M20 - 2);
         while gcd(a, b) != 1 {
             b += 1;
         }
         let (x, y) = farey_neighbour(a, b);
-        let (mut up, mut d) = if i % 2 == 0 {
+        let (x, y) = (x + a, y + b);
+        let farey = i % 2 == 0;
+        let (mut up, mut d) = if farey {
             ([a, b, 0], [x, y, 0])
         } else {
             ([a, b, 0], [a + rng.int(3), b + rng.int(3), rng.int(3)])
         };
         shuffle(&mut rng, &mut up, &mut d);
-        let pr = [rng.int(1 << 10), rng.int(1 << 10), rng.int(1 << 10)];
+        let pr = if farey {
+            [-d[0] / 2, -d[1] / 2, -d[2] / 2]
+        } else {
+            [rng.int(1 << 10), rng.int(1 << 10), rng.int(1 << 10)]
+        };
         let pe = [pr[0] + d[0], pr[1] + d[1], pr[2] + d[2]];
         // The point: on the view axis, next to it, or random.
         let p = match i % 3 {
