@@ -11,6 +11,31 @@
 //! or a 24-bit integer times a power of two), so the f32, f64 and exact runs
 //! all solve the same problem and the error measured is the error of the
 //! computation alone, not of reading the inputs.
+//!
+//! What the measurement shows (issue 3, point 4), and why:
+//!
+//! - basis, view, project, clip on integers up to 2^20 (near-parallel up
+//!   vectors down to 5e-13 rad, points next to the plane of the centre of
+//!   projection, segment ends on box planes included): within 4 ulps at
+//!   f64 and f32 (about 0.5–2.2 ulps measured). The formulas that make it
+//!   so: cross products by Kahan's FMA difference of products; eye
+//!   coordinates as triple products of the *inputs* (not of rounded axes),
+//!   evaluated in f64 for f32; projection as one scaled x·num/den; clip
+//!   intersections as one quotient of exact differences measured from the
+//!   end nearer the plane.
+//! - window: no target in the issue. The edges are within 1.5 ulps; the
+//!   viewport mapping (xp − left)/width·W cancels when xp is near an edge,
+//!   and the rounding of left (tan of the half angle, rounded once, then
+//!   two products) is magnified by |left|/|xp − left|: tens of ulps
+//!   measured. Removing it needs the edges to more than working precision.
+//! - values from 1e-30 to 1e30 are outside the target's domain: the
+//!   differences of inputs of unlike magnitude (P1 − P0, bound − P0) are
+//!   themselves rounded, and no formula over the rounded differences can
+//!   recover the lost digits in general; measured and reported. Where the
+//!   exact square roots of such inputs are beyond `Real` (radicands it
+//!   cannot factor), the case has no reference and is not counted.
+//! - f32 results beyond the f32 range are errors (the projection says so),
+//!   never infinities.
 
 use crate::camera::{self, Basis, Camera};
 use crate::clip::{self, ClipBox};

@@ -185,7 +185,7 @@ pub fn clip_segment<T: Scalar>(
         let bound = if is_max { &b.max[axis] } else { &b.min[axis] };
         // delta[axis] ≠ 0: exactly one end is outside this plane.
         let t = (bound.clone() - p0[axis].clone()) / delta[axis].clone();
-        let q = intersection_point(p0, p1, &delta, axis, bound, &t);
+        let q = intersection_point(p0, p1, &delta, axis, bound);
         let c = outcode(b, &q);
         tr.step(|| {
             Step::new(
@@ -264,7 +264,7 @@ pub fn clip_segment<T: Scalar>(
 /// products rounded once ([`Scalar::sum_of_products`]); the same value as
 /// P0ₖ + t·Δₖ in exact arithmetic, but without the rounding of t being
 /// magnified when P(t) lies much nearer the origin than P0. Should the
-/// products overflow the float range, the plain form is used. The plane's
+/// products overflow the float range, Pₖ + (bound − Pₐ)·(Δₖ/Δₐ) is used. The plane's
 /// own coordinate is the bound itself, whatever the rounding.
 fn intersection_point<T: Scalar>(
     p0: &V3<T>,
@@ -272,7 +272,6 @@ fn intersection_point<T: Scalar>(
     delta: &V3<T>,
     axis: usize,
     bound: &T,
-    t: &T,
 ) -> V3<T> {
     // Measured from the end nearer the plane (the same point exactly, since
     // P(t) = P1 + (t − 1)·Δ): its difference to the plane is the smaller,
@@ -294,7 +293,8 @@ fn intersection_point<T: Scalar>(
             if r.is_finite() {
                 r
             } else {
-                p0[k].clone() + t.clone() * delta[k].clone()
+                // The products overflow (floats only): the ratio first.
+                base[k].clone() + num.clone() * (delta[k].clone() / delta[axis].clone())
             }
         };
     }
