@@ -22,13 +22,10 @@ pub struct Settings {
 }
 
 impl Settings {
-    /// The full run (about 30 s in release on two cores).
+    /// The full run (about 15 s in release on two cores).
     pub fn full() -> Settings {
         Settings {
-            cases: std::env::var("GRAFIKA_BENCH_CASES")
-                .ok()
-                .and_then(|s| s.parse().ok())
-                .unwrap_or(60),
+            cases: 60,
             float_budget: Duration::from_millis(400),
             exact_budget: Duration::from_millis(1500),
         }

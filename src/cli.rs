@@ -60,6 +60,10 @@ pub enum Command {
         /// A few cases and passes only (seconds, for tests).
         #[arg(long)]
         quick: bool,
+        /// Random cases per stage (each stage adds about as many adversarial
+        /// ones); default 60, or 6 with --quick.
+        #[arg(long, value_parser = clap::value_parser!(u16).range(2..=5000))]
+        cases: Option<u16>,
     },
     /// A whole problem from a TOML file.
     Solve {
@@ -222,12 +226,15 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
             );
         }
     };
-    if let Command::Bench { quick } = cli.command {
-        let set = if quick {
+    if let Command::Bench { quick, cases } = cli.command {
+        let mut set = if quick {
             crate::bench::Settings::quick()
         } else {
             crate::bench::Settings::full()
         };
+        if let Some(n) = cases {
+            set.cases = n as usize;
+        }
         let (inp, rows) = crate::bench::measure(&set);
         if cli.common.json {
             println!(
