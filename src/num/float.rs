@@ -40,17 +40,26 @@ macro_rules! float_scalar {
             /// Through the exact type, so that standard angles (multiples of
             /// 15° and 22.5°) give the correctly rounded value: tan 45° = 1.
             fn tan_deg(&self) -> Self {
-                Real::from_f64(*self as f64).tan_deg().to_f64() as $t
+                match table_index(*self as f64) {
+                    Some(k) => trig_table()[k][2] as $t,
+                    None => Real::from_f64(*self as f64).tan_deg().to_f64() as $t,
+                }
             }
             /// Through the exact type, so that standard angles (multiples of
             /// 15° and 22.5°) give the correctly rounded value: tan 45° = 1.
             fn sin_deg(&self) -> Self {
-                Real::from_f64(*self as f64).sin_deg().to_f64() as $t
+                match table_index(*self as f64) {
+                    Some(k) => trig_table()[k][0] as $t,
+                    None => Real::from_f64(*self as f64).sin_deg().to_f64() as $t,
+                }
             }
             /// Through the exact type, so that standard angles (multiples of
             /// 15° and 22.5°) give the correctly rounded value: tan 45° = 1.
             fn cos_deg(&self) -> Self {
-                Real::from_f64(*self as f64).cos_deg().to_f64() as $t
+                match table_index(*self as f64) {
+                    Some(k) => trig_table()[k][1] as $t,
+                    None => Real::from_f64(*self as f64).cos_deg().to_f64() as $t,
+                }
             }
             /// Kahan: w = c·d; e = fma(−c, d, w) (the rounding error of w);
             /// f = fma(a, b, −w); result f + e. Error ≤ 1.5 ulp of the result.
@@ -141,6 +150,30 @@ macro_rules! float_scalar {
     };
 }
 
+/// k mod 48 when x = k·7.5° exactly (the angles whose trig values the table
+/// holds), else `None`.
+fn table_index(x: f64) -> Option<usize> {
+    let k = (x / 7.5).round();
+    (k.abs() < 1e12 && k * 7.5 == x).then(|| k.rem_euclid(48.0) as usize)
+}
+
+/// sin, cos and tan of k·7.5° for k = 0 … 47, from the exact type once (so
+/// the same values as going through `Real` each time, correctly rounded
+/// where the value is exact, without its cost on every call).
+fn trig_table() -> &'static [[f64; 3]; 48] {
+    static TABLE: std::sync::OnceLock<[[f64; 3]; 48]> = std::sync::OnceLock::new();
+    TABLE.get_or_init(|| {
+        std::array::from_fn(|k| {
+            let a = Real::from_f64(k as f64 * 7.5);
+            [
+                a.sin_deg().to_f64(),
+                a.cos_deg().to_f64(),
+                a.tan_deg().to_f64(),
+            ]
+        })
+    })
+}
+
 /// The components of an array by reference.
 fn r(x: &[f64; 3]) -> [&f64; 3] {
     [&x[0], &x[1], &x[2]]
@@ -170,6 +203,37 @@ mod tests {
         let x = [1e16, 1.0, -1e16];
         let y = [1.0, 1.0, 1.0];
         assert_eq!(f64::dot3([&x[0], &x[1], &x[2]], [&y[0], &y[1], &y[2]]), 1.0);
+    }
+
+    #[test]
+    fn trig_table_agrees_with_the_exact_type() {
+        // Every multiple of 7.5° from −720° to 720°, and its neighbours
+        // (which miss the table), give what the exact type gives.
+        for k in -96..=96 {
+            let x = k as f64 * 7.5;
+            for y in [x, x + 0.25, f64::from_bits(x.to_bits() + 1)] {
+                let r = Real::from_f64(y);
+                assert_eq!(
+                    y.tan_deg().to_bits(),
+                    r.tan_deg().to_f64().to_bits(),
+                    "tan {y}"
+                );
+                assert_eq!(
+                    y.sin_deg().to_bits(),
+                    r.sin_deg().to_f64().to_bits(),
+                    "sin {y}"
+                );
+                assert_eq!(
+                    y.cos_deg().to_bits(),
+                    r.cos_deg().to_f64().to_bits(),
+                    "cos {y}"
+                );
+            }
+        }
+        // By hand: tan 45° = 1, sin 30° = 1/2, cos 60° = 1/2 exactly.
+        assert_eq!(45.0f64.tan_deg(), 1.0);
+        assert_eq!(30.0f64.sin_deg(), 0.5);
+        assert_eq!(60.0f32.cos_deg(), 0.5);
     }
 
     #[test]
