@@ -726,7 +726,7 @@ impl<T: Scalar> Prepared<T> {
             Stage::View => {
                 let b = self.bases[i].as_ref()?;
                 let (c, p) = &self.cameras[i];
-                let e = camera::to_eye(b, &c.pe, "P", p, &mut NoTrace);
+                let e = camera::to_eye(b, &c.pe, "P", p, &mut NoTrace).ok()?;
                 Some(e.iter().map(|x| (x.clone(), false)).collect())
             }
             Stage::Project => {

@@ -64,6 +64,16 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
     let Camera { pe, pr, vup } = cam;
     // n from the view direction
     let d = vec::sub(pe, pr);
+    if !vec::is_finite(&d) {
+        return Err(Error::new(
+            "look",
+            format!(
+                "Pe − Pr = {} is too large for {} precision",
+                fmt3(&d),
+                precision_name::<T>()
+            ),
+        ));
+    }
     let (n, dn) = vec::normalize(&d).ok_or_else(|| {
         Error::new(
             "look",
@@ -188,7 +198,10 @@ pub fn camera_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>) -> Matrix4<T> {
 
 /// The view matrix V = Mcam⁻¹ (world to eye coordinates): rows u, v, n times
 /// the translation by −Pe, so its last column is (−u·Pe, −v·Pe, −n·Pe, 1).
-pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> Matrix4<T> {
+///
+/// Errors when the translation column is too large for the precision (f32
+/// with coordinates near 1e38).
+pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> Result<Matrix4<T>> {
     let rot = rows(&b.u, &b.v, &b.n);
     let mut trans = Matrix4::<T>::identity();
     for r in 0..3 {
@@ -198,6 +211,15 @@ pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> 
     view[(0, 3)] = -vec::dot(&b.u, pe);
     view[(1, 3)] = -vec::dot(&b.v, pe);
     view[(2, 3)] = -vec::dot(&b.n, pe);
+    if !(0..3).all(|r| view[(r, 3)].is_finite()) {
+        return Err(Error::new(
+            "eye",
+            format!(
+                "the view matrix's translation −(u·Pe, v·Pe, n·Pe) is too large for {} precision",
+                precision_name::<T>()
+            ),
+        ));
+    }
     tr.step(|| {
         Step::new(
             "Camera matrix Mcam (camera to world)",
@@ -214,7 +236,7 @@ pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> 
         .val("T(−Pe)", Val::mat4(&trans))
         .res("V", Val::mat4(&view))
     });
-    view
+    Ok(view)
 }
 
 /// The matrix with rows a, b, c (and 0 0 0 1).
@@ -229,6 +251,8 @@ fn rows<T: Scalar>(a: &V3<T>, b: &V3<T>, c: &V3<T>) -> Matrix4<T> {
 }
 
 /// Eye coordinates of a world point: P' = V·P = (u·(P − Pe), v·(P − Pe), n·(P − Pe)).
+///
+/// Errors when they are too large for the precision (f32 near 1e38).
 ///
 /// Computed from the unnormalized axes of [`Basis`] so that no rounded unit
 /// vector enters the result, each numerator from the camera's own inputs
@@ -247,7 +271,7 @@ pub fn to_eye<T: Scalar>(
     name: &str,
     p: &V3<T>,
     tr: &mut impl Trace,
-) -> V3<T> {
+) -> Result<V3<T>> {
     let rel = vec::sub(p, pe);
     let (up, d, w) = (refs(&b.up), refs(&b.d), refs(&rel));
     let e = vec::v3(
@@ -264,7 +288,25 @@ pub fn to_eye<T: Scalar>(
         .val(format!("{name} − Pe"), Val::vec3(&rel))
         .res(format!("{name}'"), Val::vec3(&e))
     });
-    e
+    if !vec::is_finite(&e) {
+        return Err(Error::new(
+            format!("points.{name}"),
+            format!(
+                "the eye coordinates of {name} are too large for {} precision",
+                precision_name::<T>()
+            ),
+        ));
+    }
+    Ok(e)
+}
+
+/// The precision's name as `--precision` spells it.
+fn precision_name<T: Scalar>() -> &'static str {
+    match T::PRECISION {
+        crate::num::Precision::Exact => "exact",
+        crate::num::Precision::F64 => "f64",
+        crate::num::Precision::F32 => "f32",
+    }
 }
 
 /// The components of a vector by reference.
@@ -302,7 +344,7 @@ mod tests {
         approx::assert_relative_eq!(b.u, V3::new(0.0, 0.0, -1.0), epsilon = 1e-15);
         approx::assert_relative_eq!(b.v, V3::new(-0.6, 0.8, 0.0), epsilon = 1e-15);
         // Pr − Pe = (−4,−3,0): u· = 0, v· = 12/5 − 12/5 = 0, n· = −16/5 − 9/5 = −5.
-        let e = to_eye(&b, &c.pe, "P", &c.pr, &mut NoTrace);
+        let e = to_eye(&b, &c.pe, "P", &c.pr, &mut NoTrace).unwrap();
         approx::assert_relative_eq!(e, V3::new(0.0, 0.0, -5.0), epsilon = 1e-14);
     }
 
@@ -310,9 +352,9 @@ mod tests {
     fn view_matrix_agrees_with_eye_coordinates() {
         let c = cam([3.0, 1.0, 3.0], [2.0, 1.0, 2.0], [0.0, 1.0, 0.0]);
         let b = basis(&c, &mut NoTrace).unwrap();
-        let v = view_matrix(&b, &c.pe, &mut NoTrace);
+        let v = view_matrix(&b, &c.pe, &mut NoTrace).unwrap();
         let p = V3::new(1.0, 0.0, 0.0);
-        let e = to_eye(&b, &c.pe, "B", &p, &mut NoTrace);
+        let e = to_eye(&b, &c.pe, "B", &p, &mut NoTrace).unwrap();
         let h = v * nalgebra::Vector4::new(1.0, 0.0, 0.0, 1.0);
         approx::assert_relative_eq!(h.xyz(), e, epsilon = 1e-14);
         // B' = (1/√2, −1, −5/√2) by hand.

@@ -17,7 +17,8 @@ use proptest::prelude::*;
 const M20: i64 = 1 << 20;
 
 /// A coordinate: a small or 2^20-sized integer, zero, or a wide value
-/// (a 24-bit mantissa times 2^-123 … 2^75, about 1e-30 to 1e30).
+/// (a 24-bit mantissa times 2^-123 … 2^104: about 1e-30 to 3e38, the top of
+/// the f32 range, where differences and products overflow f32).
 fn coord() -> impl Strategy<Value = f64> {
     prop_oneof![
         3 => -M20..=M20,
@@ -26,7 +27,7 @@ fn coord() -> impl Strategy<Value = f64> {
     .prop_map(|x| x as f64)
     .boxed()
     .prop_union(
-        ((1i64 << 23)..(1i64 << 24), -123i32..=75, any::<bool>())
+        ((1i64 << 23)..(1i64 << 24), -123i32..=104, any::<bool>())
             .prop_map(|(m, e, s)| {
                 let x = m as f64 * accuracy::pow2(e);
                 if s {
@@ -67,8 +68,12 @@ fn no_nan_anywhere<T: Scalar>(
     };
     if let Ok(b) = camera::basis(&cam, &mut NoTrace) {
         prop_assert!(finite(&b.u) && finite(&b.v) && finite(&b.n), "{:?}", b);
-        let e = camera::to_eye(&b, &cam.pe, "P", &v(p), &mut NoTrace);
-        prop_assert!(finite(&e), "eye {:?}", e);
+        if let Ok(e) = camera::to_eye(&b, &cam.pe, "P", &v(p), &mut NoTrace) {
+            prop_assert!(finite(&e), "eye {:?}", e);
+        }
+        if let Ok(m) = camera::view_matrix(&b, &cam.pe, &mut NoTrace) {
+            prop_assert!(m.iter().all(|x| x.is_finite()), "{:?}", m);
+        }
     }
     let q = v::<T>(p);
     for proj in [
@@ -109,7 +114,7 @@ fn no_nan_anywhere<T: Scalar>(
         prop_assert!(finite(s) && finite(e), "{:?}", r);
     }
     for i in &r.intersections {
-        prop_assert!(i.t.is_finite(), "t {:?}", i.t);
+        prop_assert!(i.t.is_finite() && finite(&i.point), "{:?}", i);
     }
     if let Some((s, e)) = clip::liang_barsky(&bx, &v(up), &q, &mut NoTrace) {
         prop_assert!(finite(&s) && finite(&e));
@@ -347,6 +352,38 @@ fn fixed_set_meets_the_targets() {
 /// give u exactly and warn.
 #[test]
 fn near_parallel_by_hand() {
+    near_parallel_inner();
+}
+
+/// A segment across the whole f32 range: P1 − P0 overflows f32, yet t and
+/// the points are right. By hand: x from −3.3e38 to 3.3e38 meets x = −3e38
+/// at t = 0.3/6.6 = 1/22 and x = 3e38 at t = 6.3/6.6 = 21/22; y = t/2.
+#[test]
+fn clip_across_the_f32_range() {
+    let bx = ClipBox {
+        min: V3::new(-3e38f32, -1.0, -1.0),
+        max: V3::new(3e38f32, 1.0, 1.0),
+    };
+    let r = clip::clip_segment(
+        &bx,
+        &V3::new(-3.3e38f32, 0.0, 0.0),
+        &V3::new(3.3e38f32, 0.5, 0.0),
+        &mut NoTrace,
+    );
+    let (a, b) = r.segment.expect("clipped");
+    assert!((r.intersections[0].t - 1.0 / 22.0).abs() < 1e-6);
+    assert!((a[1] - 1.0 / 44.0).abs() < 1e-6 && (b[1] - 21.0 / 44.0).abs() < 1e-6);
+    let lb = clip::liang_barsky(
+        &bx,
+        &V3::new(-3.3e38f32, 0.0, 0.0),
+        &V3::new(3.3e38f32, 0.5, 0.0),
+        &mut NoTrace,
+    )
+    .expect("visible");
+    assert!((lb.0[1] - 1.0 / 44.0).abs() < 1e-6 && (lb.1[1] - 21.0 / 44.0).abs() < 1e-6);
+}
+
+fn near_parallel_inner() {
     let k = (1i64 << 20) as f64;
     let up = [k - 1.0, k - 2.0, 0.0];
     let d = [k - 2.0, k - 3.0, 0.0];
