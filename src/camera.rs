@@ -43,8 +43,13 @@ pub struct Basis<T> {
     pub su: V3<T>,
     /// d × (up × d), parallel to v.
     pub sv: V3<T>,
-    /// |d|, |su|, |sv|.
+    /// |d|, |su|, |sv| (of the scaled vectors above: what eye coordinates
+    /// divide by).
     pub norms: [T; 3],
+    /// |Pe − Pr|, unscaled.
+    pub dist: T,
+    /// |Vup × n| = |Vup × (Pe − Pr)|/|Pe − Pr|, unscaled.
+    pub vxn_norm: T,
 }
 
 /// The camera basis:
@@ -100,8 +105,12 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
         return Err(Error::new("up", "the up vector Vup is the zero vector"));
     }
     // Exact power-of-two scaling (one for Real): directions are unchanged.
-    let ds = vec::scale(&d, &T::pow2_scale(&[&d[0], &d[1], &d[2]]));
-    let ups = vec::scale(vup, &T::pow2_scale(&[&vup[0], &vup[1], &vup[2]]));
+    let (kd, ku) = (
+        T::pow2_scale(&[&d[0], &d[1], &d[2]]),
+        T::pow2_scale(&[&vup[0], &vup[1], &vup[2]]),
+    );
+    let ds = vec::scale(&d, &kd);
+    let ups = vec::scale(vup, &ku);
     let su = vec::cross(&ups, &ds);
     let (u, sun) = vec::normalize(&su).ok_or_else(|| {
         Error::new(
@@ -145,6 +154,8 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
         u,
         v,
         n,
+        vxn_norm: sun.clone() / (ku * kd) / dn.clone(),
+        dist: dn,
         norms: [vec::norm(&ds), sun, svn],
         d: ds,
         up: ups,

@@ -54,6 +54,8 @@ pub enum Command {
     Window(WindowArgs),
     /// 3D line clipping with 6-bit outcodes (cross-checked by Liang–Barsky).
     Clip(ClipArgs),
+    /// Lighting at one surface point: the text's models and Direct3D 9 Blinn–Phong.
+    Shade(ShadeArgs),
     /// Run time against error: time per operation and error in ulps
     /// against the exact path, per stage and precision.
     Bench {
@@ -70,6 +72,10 @@ pub enum Command {
         /// The problem file.
         file: PathBuf,
     },
+    /// Mark a student's answers to a problem, and diagnose the mistakes.
+    Check(crate::check_cmd::CheckArgs),
+    /// Generate problems, question sheets and answer keys.
+    Generate(crate::generate::GenerateArgs),
 }
 
 /// The camera flags.
@@ -146,6 +152,66 @@ pub struct ClipArgs {
     pub to: String,
 }
 
+/// On or off (`--specular off`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum OnOff {
+    /// On.
+    #[default]
+    On,
+    /// Off.
+    Off,
+}
+
+/// The lighting flags (SPEC §4 and the Direct3D extras).
+#[derive(Args, Debug, Default)]
+pub struct ShadeArgs {
+    /// L, toward the light (one white directional light), X,Y,Z.
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub light: Option<String>,
+    /// N, the surface normal.
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub normal: Option<String>,
+    /// V, toward the viewer (default 0,0,1, the text's viewVector).
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub view: Option<String>,
+    /// Cs, the surface color, R,G,B in [0, 1].
+    #[arg(long, allow_hyphen_values = true, value_name = "R,G,B")]
+    pub color: Option<String>,
+    /// Ambient coefficient (default 0.4).
+    #[arg(long, allow_hyphen_values = true)]
+    pub ka: Option<String>,
+    /// Diffuse coefficient (default 0.6).
+    #[arg(long, allow_hyphen_values = true)]
+    pub kd: Option<String>,
+    /// Specular coefficient (default 0.7).
+    #[arg(long, allow_hyphen_values = true)]
+    pub ks: Option<String>,
+    /// Specular exponent n (default 4).
+    #[arg(long, allow_hyphen_values = true)]
+    pub shininess: Option<String>,
+    /// Lighting model (default phong).
+    #[arg(long, value_enum)]
+    pub model: Option<crate::lighting::Model>,
+    /// Camera position Cp: local viewer, V = norm(Cp − Vp).
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub camera: Option<String>,
+    /// Surface point Vp in eye space (default the origin).
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub position: Option<String>,
+    /// Specular term on or off (Direct3D's D3DRS_SPECULARENABLE).
+    #[arg(long, value_enum, default_value_t = OnOff::On)]
+    pub specular: OnOff,
+    /// No specular when the light is behind the surface (cos α ≤ 0); the text's code adds it.
+    #[arg(long)]
+    pub specular_requires_lit: bool,
+    /// Global ambient light Ga, R,G,B.
+    #[arg(long, allow_hyphen_values = true, value_name = "R,G,B")]
+    pub global_ambient: Option<String>,
+    /// Lights (and a Direct3D material) from a TOML file.
+    #[arg(long, value_name = "FILE.toml")]
+    pub lights: Option<PathBuf>,
+}
+
 /// Runs a generic command at the precision asked for.
 macro_rules! at_precision {
     ($p:expr, $f:ident ( $($arg:expr),* )) => {
@@ -166,10 +232,11 @@ pub fn run(cli: &Cli) -> Result<Report> {
         Command::Project(a) => at_precision!(p, project(a)),
         Command::Window(a) => at_precision!(p, window(a)),
         Command::Clip(a) => at_precision!(p, clip(a)),
+        Command::Shade(a) => at_precision!(p, shade(a)),
         Command::Solve { file } => at_precision!(p, solve(file)),
-        Command::Bench { .. } => Err(Error::new(
+        Command::Check(_) | Command::Generate(_) | Command::Bench { .. } => Err(Error::new(
             "command",
-            "bench prints its own table (run it through main_with_args)",
+            "check, generate and bench print their own output: use main_with_args",
         )),
     }
 }
@@ -188,6 +255,9 @@ fn window<T: crate::num::Scalar>(a: &WindowArgs) -> Result<Report> {
 }
 fn clip<T: crate::num::Scalar>(a: &ClipArgs) -> Result<Report> {
     commands::clip::<T>(a)
+}
+fn shade<T: crate::num::Scalar>(a: &ShadeArgs) -> Result<Report> {
+    commands::shade::<T>(a)
 }
 fn solve<T: crate::num::Scalar>(file: &std::path::Path) -> Result<Report> {
     crate::solve::solve_file::<T>(file)
@@ -246,6 +316,28 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
             print!("{}", crate::bench::table(&inp, &rows));
         }
         return 0;
+    }
+    let own_output = match &cli.command {
+        Command::Check(a) => Some(crate::check_cmd::run(
+            a,
+            cli.common.json,
+            cli.common.digits as usize,
+        )),
+        Command::Generate(a) => Some(crate::generate::run(
+            a,
+            cli.common.json,
+            cli.common.digits as usize,
+        )),
+        _ => None,
+    };
+    if let Some(out) = own_output {
+        return match out {
+            Ok(text) => {
+                print!("{text}");
+                0
+            }
+            Err(e) => report_error(&e, cli.common.json, None),
+        };
     }
     match run(&cli) {
         Ok(report) => {

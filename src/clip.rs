@@ -322,21 +322,26 @@ fn code_step<T: Scalar>(name: &str, b: &ClipBox<T>, p: &V3<T>, code: u8) -> Step
             ("<", &b.min[axis])
         };
         let set = code & (1 << bit) != 0;
+        let word = if set { "true" } else { "false" };
         s = s.val(
-            format!(
-                "bit {} {a} {op} {a}{}",
-                bit + 1,
-                if is_max { "max" } else { "min" }
-            ),
+            format!("bit {} ({side})", bit + 1),
             Val::text(format!(
-                "{} ({} {op} {}: {side})",
+                "{} — {a} {op} {a}{}: {} {op} {} is {word}",
                 u8::from(set),
-                p[axis].to_f64(),
-                lim.to_f64()
+                if is_max { "max" } else { "min" },
+                short(&p[axis]),
+                short(lim)
             )),
         );
     }
     s.res("code", Val::text(code_str(code)))
+}
+
+/// A number for a one-line remark: its exact form, else a short decimal.
+fn short<T: Scalar>(x: &T) -> String {
+    let s = x.shown();
+    s.pretty
+        .unwrap_or_else(|| crate::report::fmt_dec(s.value, 6).replace('-', "−"))
 }
 
 /// Liang–Barsky: with Δ = P1 − P0, for each of the six pairs

@@ -2,7 +2,7 @@
 //! a report. No math here; that is in the stage modules.
 
 use crate::camera::{self, Camera};
-use crate::cli::{CameraArgs, ClipArgs, ProjectArgs, WindowArgs};
+use crate::cli::{CameraArgs, ClipArgs, ProjectArgs, ShadeArgs, WindowArgs};
 use crate::clip::{self, ClipBox};
 use crate::error::{Error, Result};
 use crate::input;
@@ -312,4 +312,31 @@ fn close<T: Scalar>(a: &crate::vec::V3<T>, b: &crate::vec::V3<T>) -> bool {
         let (x, y) = (a[k].to_f64(), b[k].to_f64());
         a[k] == b[k] || (x - y).abs() <= 1e-5 * (1.0 + x.abs().max(y.abs()))
     })
+}
+
+/// `grafika shade`.
+pub fn shade<T: Scalar>(a: &ShadeArgs) -> Result<Report> {
+    use crate::lighting_input::{build, from_flags, run, LightsFileIn};
+    let sh = from_flags(a)?;
+    let file = match &a.lights {
+        Some(path) => LightsFileIn::read(path)?,
+        None => LightsFileIn::default(),
+    };
+    let mut rec = Recorder::new();
+    let setup = build::<T>(&sh, &file, "", "light", &mut rec)?;
+    let result = run(&setup, &mut rec);
+    let s = &setup.surface;
+    let m = &setup.material;
+    let inp = json!({
+        "model": m.model.name(),
+        "normal": input::json3(&s.normal),
+        "view": input::json3(&s.view),
+        "position": input::json3(&s.position),
+        "camera": s.camera.as_ref().map(input::json3),
+        "color": m.color.iter().map(Scalar::to_f64).collect::<Vec<_>>(),
+        "ka": m.ka.to_f64(), "kd": m.kd.to_f64(), "ks": m.ks.to_f64(), "shininess": m.shininess.to_f64(),
+        "specular": m.specular_on, "specular_requires_lit": m.specular_requires_lit,
+        "lights": a.lights.as_ref().map(|p| p.display().to_string()),
+    });
+    Ok(report::<T>("shade", inp, result, rec))
 }

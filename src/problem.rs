@@ -114,14 +114,48 @@ impl<'de> Deserialize<'de> for AngleIn {
     }
 }
 
+/// A segment end: coordinates `[x, y, z]`, or the name of a point in
+/// `[points]` (`from = "A"`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum PointRef {
+    /// Coordinates.
+    At(Box<Vec3In>),
+    /// A point of the problem, by name.
+    Named(String),
+}
+
+impl<'de> Deserialize<'de> for PointRef {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<PointRef, D::Error> {
+        struct V;
+        impl<'de> de::Visitor<'de> for V {
+            type Value = PointRef;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("[x, y, z] or the name of a point in [points]")
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> std::result::Result<PointRef, E> {
+                Ok(PointRef::Named(v.to_string()))
+            }
+            fn visit_seq<A: de::SeqAccess<'de>>(
+                self,
+                seq: A,
+            ) -> std::result::Result<PointRef, A::Error> {
+                let v: Vec3In =
+                    Deserialize::deserialize(de::value::SeqAccessDeserializer::new(seq))?;
+                Ok(PointRef::At(Box::new(v)))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
 /// One `[[clip.segment]]`.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SegmentIn {
     /// P0.
-    pub from: Vec3In,
+    pub from: PointRef,
     /// P1.
-    pub to: Vec3In,
+    pub to: PointRef,
 }
 
 /// `[clip]`.
@@ -147,6 +181,18 @@ pub struct ErratumIn {
     pub why: String,
 }
 
+/// `[check]`: how `grafika check` marks answers to this problem.
+#[derive(Clone, Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CheckIn {
+    /// Relative tolerance (default 0.001).
+    pub tolerance: Option<f64>,
+    /// Minimum significant figures of a rounded decimal answer (default 2).
+    pub sig_figs: Option<u32>,
+    /// The answer keys expected (default: every answer the problem asks for).
+    pub keys: Option<Vec<String>>,
+}
+
 /// A whole problem file.
 #[derive(Clone, Debug, Deserialize)]
 pub struct ProblemIn {
@@ -168,16 +214,20 @@ pub struct ProblemIn {
     /// A clipping box and segments.
     pub clip: Option<ClipIn>,
     /// The lighting problem (see the shade command).
-    pub shade: Option<toml::Table>,
+    pub shade: Option<crate::lighting_input::ShadeIn>,
     /// Lights for the lighting problem.
     #[serde(default)]
-    pub light: Vec<toml::Table>,
+    pub light: Vec<crate::lighting_input::LightIn>,
+    /// Ga, the global ambient light of the lighting problem.
+    pub global_ambient: Option<Vec3In>,
     /// The answers printed in the source, keyed like the JSON results.
     #[serde(default)]
     pub printed: toml::Table,
     /// Where and why the printed answers are wrong.
     #[serde(default)]
     pub errata: Vec<ErratumIn>,
+    /// Settings for `grafika check` (tolerance, significant figures, the answers expected).
+    pub check: Option<CheckIn>,
     /// Remarks on the source beyond single answers (misprinted rules).
     #[serde(default)]
     pub source_notes: Vec<String>,

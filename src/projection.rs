@@ -102,7 +102,7 @@ pub fn project<T: Scalar>(
     tr: &mut impl Trace,
 ) -> Result<V3<T>> {
     let (x, y, z) = (&p[0], &p[1], &p[2]);
-    let (scale, plane_z, formula) = match proj {
+    let (scale, plane_z, formula, scale_name) = match proj {
         Projection::Ortho => {
             let r = vec::v3(x.clone(), y.clone(), T::zero());
             tr.step(|| {
@@ -126,6 +126,7 @@ pub fn project<T: Scalar>(
                 (d.clone(), z.clone()),
                 d.clone(),
                 "xp = d·x/z,  yp = d·y/z,  zp = d",
+                "d/z",
             )
         }
         Projection::General { zprp, zvp } => {
@@ -143,6 +144,7 @@ pub fn project<T: Scalar>(
                 (zprp.clone() - zvp.clone(), den),
                 zvp.clone(),
                 "xp = x·(zprp − zvp)/(zprp − z),  yp = y·(zprp − zvp)/(zprp − z),  zp = zvp",
+                "(zprp − zvp)/(zprp − z)",
             )
         }
     };
@@ -174,7 +176,7 @@ pub fn project<T: Scalar>(
     tr.step(|| {
         let mut s = Step::new(format!("Perspective projection of {name}"), formula)
             .val(name.to_string(), Val::vec3(p))
-            .val("scale factor", Val::num(&(num.clone() / den.clone())))
+            .val(scale_name, Val::num(&(num.clone() / den.clone())))
             .res(format!("{name}''"), Val::vec3(&r));
         if behind {
             s = s.note("behind the centre of projection: projected, but inverted and not visible");

@@ -9,7 +9,7 @@ use crate::commands::{basis_result, clip_run, window_result};
 use crate::error::{Error, Result};
 use crate::input;
 use crate::num::{Expr, Scalar};
-use crate::problem::{Num, ProblemIn, Vec3In};
+use crate::problem::{Num, PointRef, ProblemIn, Vec3In};
 use crate::projection::{self, Projection};
 use crate::report::{fmt_dec, Report, Style};
 use crate::trace::{Recorder, Step, Trace, Val};
@@ -36,8 +36,35 @@ fn eval3<T: Scalar>(field: &str, v: &Vec3In) -> Result<V3<T>> {
     ))
 }
 
+/// Alterations applied to stage results between stages. Solving uses none;
+/// the mistake catalog (`diagnose`) sets one to re-run the real stages with
+/// one step done the wrong way, instead of copying the pipeline's math.
+pub struct Hooks<T> {
+    /// Applied to the camera basis before it is used.
+    pub basis: fn(&mut camera::Basis<T>),
+    /// Applied to the near-plane window before it is used (given fovy in degrees).
+    pub window: fn(&mut window::Window<T>, &T),
+    /// The lighting stage's rules (the text's by default).
+    pub shade: crate::lighting::Rules<T>,
+}
+
+impl<T: Scalar> Default for Hooks<T> {
+    fn default() -> Self {
+        Hooks {
+            basis: |_| {},
+            window: |_, _| {},
+            shade: crate::lighting::Rules::default(),
+        }
+    }
+}
+
 /// Solves a parsed problem at precision `T`.
 pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
+    solve_with::<T>(p, &Hooks::default())
+}
+
+/// Solves a parsed problem at precision `T`, with stage results altered by `hooks`.
+pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> {
     let mut rec = Recorder::new();
     let mut result: Vec<(String, Val)> = Vec::new();
     let points: Vec<(String, V3<T>)> = p
@@ -66,7 +93,8 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
                 .note("the objects are already given in world coordinates")
         });
         rec.section("Step 2: viewing transformation (world → eye coordinates)");
-        let b = camera::basis(&cam, &mut rec).map_err(camera_field)?;
+        let mut b = camera::basis(&cam, &mut rec).map_err(camera_field)?;
+        (hooks.basis)(&mut b);
         let m = camera::view_matrix(&b, &cam.pe, &mut rec).map_err(camera_field)?;
         for (n, q) in &points {
             eye_pts.push((n.clone(), camera::to_eye(&b, &cam.pe, n, q, &mut rec)?));
@@ -148,8 +176,9 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
                 .map_err(|m| Error::new("perspective.fovy", m))?;
             let aspect: T = eval("perspective.aspect", aspect)?;
             rec.section("Step 4: window and clipping");
-            let w = window::window(&fovy, &aspect, near, "near", &mut rec)
+            let mut w = window::window(&fovy, &aspect, near, "near", &mut rec)
                 .map_err(perspective_field)?;
+            (hooks.window)(&mut w, &fovy);
             let mut r = window_result(&w, "");
             let far: Option<T> = per
                 .far
@@ -225,7 +254,8 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
         let mut all = Vec::new();
         for (i, s) in c.segment.iter().enumerate() {
             let f = format!("clip.segment[{i}]");
-            let (p0, p1): (V3<T>, V3<T>) = (eval3(&f, &s.from)?, eval3(&f, &s.to)?);
+            let p0: V3<T> = point_ref(&format!("{f}.from"), &s.from, &points)?;
+            let p1: V3<T> = point_ref(&format!("{f}.to"), &s.to, &points)?;
             rec.section(if c.segment.len() == 1 {
                 "Line clipping".to_string()
             } else {
@@ -240,17 +270,30 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
         }
     }
 
-    if result.is_empty() && p.shade.is_none() {
-        return Err(Error::new("ask", "nothing to solve: the file has no part that its data allow (camera + points, perspective, clip)"));
+    // Lighting
+    if let (true, Some(sh)) = (p.asks("shade"), &p.shade) {
+        rec.section("Lighting");
+        let file = crate::lighting_input::LightsFileIn {
+            global_ambient: p.global_ambient.clone(),
+            material: None,
+            light: p.light.clone(),
+        };
+        let setup = crate::lighting_input::build::<T>(sh, &file, "shade.", "light", &mut rec)?;
+        let r = crate::lighting_input::run_with(&setup, &hooks.shade, &mut rec);
+        result.push(("shade".into(), Val::Map(r)));
+    } else if !p.light.is_empty() && p.shade.is_none() {
+        return Err(Error::new(
+            "shade",
+            "[[light]] tables need a [shade] table (normal, color, ...)",
+        ));
+    }
+
+    if result.is_empty() {
+        return Err(Error::new("ask", "nothing to solve: the file has no part that its data allow (camera + points, perspective, clip, shade)"));
     }
 
     let (notes, comparison) = compare_printed(p, &result);
-    let mut report = crate::commands::report::<T>(
-        "solve",
-        json!({ "title": p.title, "source": p.source, "ask": p.ask }),
-        result,
-        rec,
-    );
+    let mut report = crate::commands::report::<T>("solve", input_json(p), result, rec);
     report.notes = notes;
     if !p.source_notes.is_empty() {
         let lines: Vec<String> = p.source_notes.iter().map(|n| format!("  - {n}")).collect();
@@ -267,6 +310,89 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
             .insert("comparison".into(), Value::Array(comparison));
     }
     Ok(report)
+}
+
+/// The problem's inputs as JSON numbers (f64 values of the written numbers;
+/// names for named segment ends).
+fn input_json(p: &ProblemIn) -> Value {
+    let n = |x: &Num| x.0.eval::<f64>().map(|v| json!(v)).unwrap_or(Value::Null);
+    let v3 = |v: &Vec3In| json!([n(&v[0]), n(&v[1]), n(&v[2])]);
+    let pref = |r: &PointRef| match r {
+        PointRef::At(v) => v3(v),
+        PointRef::Named(name) => json!(name),
+    };
+    let mut o = json!({ "title": p.title, "source": p.source, "ask": p.ask });
+    if let Some(c) = &p.camera {
+        o["camera"] = json!({ "eye": v3(&c.eye), "look": v3(&c.look), "up": v3(&c.up) });
+    }
+    if let Ok(points) = p.points() {
+        o["points"] = Value::Object(points.iter().map(|(k, v)| (k.clone(), v3(v))).collect());
+    }
+    if let Some(per) = &p.perspective {
+        o["perspective"] = json!({
+            "near": per.near.as_ref().map(n),
+            "far": per.far.as_ref().map(n),
+            "fovy": per.fovy.as_ref().and_then(|a| a.0.degrees::<f64>().ok()),
+            "aspect": per.aspect.as_ref().map(n),
+            "viewport": per.viewport.as_ref().map(|v| json!([n(&v[0]), n(&v[1])])),
+            "d": per.d.as_ref().map(n),
+        });
+    }
+    if let Some(c) = &p.clip {
+        let segs: Vec<Value> = c
+            .segment
+            .iter()
+            .map(|s| json!({ "from": pref(&s.from), "to": pref(&s.to) }))
+            .collect();
+        o["clip"] = json!({ "min": v3(&c.min), "max": v3(&c.max), "segment": segs });
+    }
+    if let Some(sh) = &p.shade {
+        let ov = |v: &Option<Vec3In>| v.as_ref().map(v3);
+        o["shade"] = json!({
+            "model": sh.model.unwrap_or_default().name(),
+            "light": ov(&sh.light), "normal": ov(&sh.normal), "view": ov(&sh.view),
+            "color": ov(&sh.color), "camera": ov(&sh.camera), "position": ov(&sh.position),
+            "ka": sh.ka.as_ref().map(n), "kd": sh.kd.as_ref().map(n),
+            "ks": sh.ks.as_ref().map(n), "shininess": sh.shininess.as_ref().map(n),
+        });
+        if !p.light.is_empty() {
+            o["light"] =
+                json!(p.light.iter().map(|l| json!({
+                "type": format!("{:?}", l.kind).to_lowercase(),
+                "direction": ov(&l.direction), "position": ov(&l.position), "axis": ov(&l.axis),
+            })).collect::<Vec<_>>());
+        }
+    }
+    o
+}
+
+/// A segment end: its coordinates, or the named point's.
+pub fn point_ref<T: Scalar>(
+    field: &str,
+    r: &PointRef,
+    points: &[(String, V3<T>)],
+) -> Result<V3<T>> {
+    match r {
+        PointRef::At(v) => eval3(field, v),
+        PointRef::Named(name) => points
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, p)| p.clone())
+            .ok_or_else(|| {
+                let known: Vec<&str> = points.iter().map(|(n, _)| n.as_str()).collect();
+                Error::new(
+                    field,
+                    if known.is_empty() {
+                        format!("unknown point `{name}`: the problem has no [points]")
+                    } else {
+                        format!(
+                            "unknown point `{name}`; the points are {}",
+                            known.join(", ")
+                        )
+                    },
+                )
+            }),
+    }
 }
 
 fn camera_field(e: Error) -> Error {

@@ -166,13 +166,15 @@ fn clip_cases_cover_every_outcome() {
     let status: Vec<&str> = segs.iter().map(|s| s["status"].as_str().unwrap()).collect();
     assert_eq!(
         status,
-        ["accepted", "rejected", "rejected", "rejected", "clipped", "clipped"]
+        ["accepted", "rejected", "rejected", "rejected", "clipped", "clipped", "clipped"]
     );
     assert_eq!(segs[3]["segment"], serde_json::Value::Null);
     // Case 5 touches only the edge point (3, 4, 1): both ends equal.
     close_vec(&segs[4]["segment"][0], &[3.0, 4.0, 1.0], 1e-15);
     close_vec(&segs[4]["segment"][1], &[3.0, 4.0, 1.0], 1e-15);
     close_vec(&segs[5]["segment"][1], &[1.0, 1.0, 3.0], 1e-15);
+    // Case 7 names its ends: A(−1,2,2) → B(2,2,2) enters the box at x = 0.
+    close_vec(&segs[6]["segment"][0], &[0.0, 2.0, 2.0], 1e-15);
 }
 
 #[test]

@@ -1,0 +1,300 @@
+//! `grafika check`: verdicts, the mistake diagnosis, the text's printed
+//! answers, directories of students, and the JSON for autograders.
+
+mod common;
+use common::*;
+use serde_json::Value;
+use std::path::PathBuf;
+
+/// The marking of one answer in the JSON.
+fn answer<'a>(v: &'a Value, key: &str) -> &'a Value {
+    v["answers"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|a| a["key"] == key)
+        .unwrap_or_else(|| panic!("no answer {key} in {v}"))
+}
+
+fn codes(a: &Value) -> Vec<String> {
+    a["diagnosis"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c.as_str().unwrap().to_string())
+        .collect()
+}
+
+/// Writes an answer file in a fresh temporary directory.
+fn answers_file(name: &str, text: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("grafika-check-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join(format!("{name}.toml"));
+    std::fs::write(&f, text).unwrap();
+    f
+}
+
+#[test]
+fn the_texts_printed_answers_are_marked_and_its_errors_found() {
+    let v = json_ok(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers-from-text",
+    ]);
+    // A' = (0, −1, −6/√2): right, written in another form than −3√2.
+    assert_eq!(answer(&v, "view.points.A")["code"], "correct.exact");
+    // B'' printed (0.0067, −0.0283), but xp = d·x/z = (−0.1)(1/√2)/(−5/√2)
+    // = 1/50 = 0.02; no known mistake gives 0.0067.
+    let b = answer(&v, "project.points.B");
+    assert_eq!(b["verdict"], "wrong");
+    assert!(codes(b).is_empty(), "{b}");
+    // The text's h = 0.1·tan 22.5° = 0.0414 is the half height (top):
+    // as top it is right (0.041 rounds 0.041421 to 2 figures) ...
+    assert_eq!(answer(&v, "window.top")["code"], "correct.rounded");
+    // ... as the height it is wrong (height = 2·top ≈ 0.0828), and the
+    // diagnosis names the half extent given as the height.
+    let h = answer(&v, "window.height");
+    assert_eq!(h["verdict"], "wrong");
+    assert!(
+        codes(h).contains(&"height_is_half_extent".to_string()),
+        "{h}"
+    );
+    let d = v["diagnosis"].as_array().unwrap();
+    assert_eq!(d[0]["code"], "height_is_half_extent");
+    // The file's errata give the reason in the note.
+    assert!(h["why"].as_str().unwrap().contains("half-height"), "{h}");
+}
+
+#[test]
+fn the_texts_clipping_errors_are_found() {
+    let v = json_ok(&["check", "problems/text-clip.toml", "--answers-from-text"]);
+    // P(t) = (4 − 6t, 2 + 4t, 2 − t). x = 3: t = 1/6, y = 2 + 4/6 = 8/3, not 20/6.
+    let a = answer(&v, "clip.intersections.right.point");
+    assert_eq!(a["verdict"], "wrong");
+    assert_eq!(a["expected"]["exact"][1], "8/3");
+    // y = 4: t = 1/2, x = 4 − 3 = 1, not 2.
+    let c = answer(&v, "clip.intersections.top.point");
+    assert_eq!(c["verdict"], "wrong");
+    assert_eq!(c["expected"]["exact"][0], "1");
+    // The outcodes the text gives are right: P0 (4,2,2) is right of x = 3
+    // (bit 2) → 000010; P1 (−2,6,1) is left (bit 1) and above y = 4 (bit 4) → 001001.
+    assert_eq!(answer(&v, "clip.code0")["verdict"], "correct");
+    assert_eq!(answer(&v, "clip.code1")["verdict"], "correct");
+}
+
+#[test]
+fn a_sign_flipped_basis_is_diagnosed_once() {
+    // u = n × Vup for the triangle example: the right u is (√2/2, 0, −√2/2),
+    // n × Vup = −u; v = n × (−u) = −v = (0, −1, 0); every x', y' flips.
+    let file = answers_file(
+        "flip",
+        r#"
+view.u = ["-sqrt(2)/2", "0", "sqrt(2)/2"]
+view.v = ["0", "-1", "0"]
+view.points.A = ["0", "1", "-3*sqrt(2)"]
+view.points.B = ["-0.7071", "1", "-3.536"]
+"#,
+    );
+    let v = json_ok(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        file.to_str().unwrap(),
+    ]);
+    for k in ["view.u", "view.v", "view.points.A", "view.points.B"] {
+        let a = answer(&v, k);
+        assert_eq!(a["verdict"], "wrong", "{a}");
+        assert!(codes(a).contains(&"cross_order".to_string()), "{a}");
+    }
+    // Said once, for all four answers.
+    let d = v["diagnosis"].as_array().unwrap();
+    assert_eq!(d.iter().filter(|x| x["code"] == "cross_order").count(), 1);
+    assert_eq!(d[0]["code"], "cross_order");
+    assert_eq!(d[0]["keys"].as_array().unwrap().len(), 4);
+}
+
+#[test]
+fn verdicts_codes_and_score() {
+    // top = 0.1·tan 22.5° = (√2 − 1)/10 = 0.0414213...
+    let file = answers_file(
+        "verdicts",
+        r#"
+student = "Ani"
+window.top = "0.041"
+window.bottom = "(1-sqrt(2))/10"
+window.height = "0.0414"
+window.right = "0.08"
+window.left = "-0.0828"
+view.u = ["sqrt 2/2", "0", "-0.7071"]
+view.n = ["0.7071", "0", "0.7071"]
+"#,
+    );
+    let v = json_ok(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        file.to_str().unwrap(),
+    ]);
+    assert_eq!(v["who"], "Ani");
+    assert_eq!(answer(&v, "window.top")["code"], "correct.rounded");
+    assert_eq!(answer(&v, "window.bottom")["code"], "correct.exact");
+    assert_eq!(answer(&v, "window.left")["code"], "correct.tolerance");
+    // right = 2·top = 0.0828...; 0.08 is 3.4% off and one significant figure
+    // short of a correct rounding (0.08 would need |0.0828 − 0.08| ≤ 0.005: it
+    // is, so it is rounded correctly, but to 1 figure).
+    assert_eq!(answer(&v, "window.right")["verdict"], "too_coarse");
+    // height = 2·top ≈ 0.0828, and 0.0414 is what half extent gives.
+    assert_eq!(answer(&v, "window.height")["verdict"], "wrong");
+    assert_eq!(answer(&v, "view.u")["verdict"], "unparseable");
+    assert_eq!(answer(&v, "view.v")["verdict"], "missing");
+    assert_eq!(answer(&v, "view.n")["verdict"], "correct");
+    // expected values in decimal and exact form
+    let t = &answer(&v, "window.top")["expected"];
+    close(f(&t["decimal"]), 0.1 * (2f64.sqrt() - 1.0), 1e-15);
+    assert_eq!(t["exact"], "(sqrt(2)-1)/10");
+    // score: correct 1, too coarse ½, others 0
+    let s = &v["score"];
+    let c = &v["counts"];
+    let want = f(&c["correct"]) + 0.5 * f(&c["too_coarse"]);
+    close(f(&s["points"]), want, 0.0);
+    assert_eq!(s["total"], 18);
+}
+
+#[test]
+fn sig_figs_and_tolerance_flags_override() {
+    let file = answers_file(
+        "flags",
+        "window.top = \"0.041\"\nwindow.right = \"0.0829\"\n",
+    );
+    let p = file.to_str().unwrap();
+    // 0.041 has 2 significant figures: too coarse when 3 are required.
+    let v = json_ok(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        p,
+        "--sig-figs",
+        "3",
+    ]);
+    assert_eq!(answer(&v, "window.top")["verdict"], "too_coarse");
+    // right = 0.0828427; 0.0829 is 0.07% off: correct at 0.1%, wrong at 0.01%.
+    assert_eq!(answer(&v, "window.right")["code"], "correct.tolerance");
+    let v = json_ok(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        p,
+        "--tolerance",
+        "1e-4",
+    ]);
+    assert_eq!(answer(&v, "window.right")["verdict"], "wrong");
+}
+
+#[test]
+fn a_directory_gives_one_row_per_student_and_a_csv() {
+    let csv = std::env::temp_dir().join(format!("grafika-check-{}.csv", std::process::id()));
+    let out = grafika()
+        .args([
+            "check",
+            "problems/text-triangle.toml",
+            "--answers",
+            "problems/answers/triangle",
+            "--csv",
+            csv.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    for s in ["Budi", "Siti", "Tono"] {
+        assert!(text.contains(s), "{text}");
+    }
+    let c = std::fs::read_to_string(&csv).unwrap();
+    let lines: Vec<&str> = c.lines().collect();
+    assert_eq!(lines.len(), 4, "{c}");
+    assert!(lines[0].starts_with("student,file,score,total"));
+    // Budi took u = n × Vup (see his file); Siti gave the half extents.
+    assert!(
+        lines[1].starts_with("Budi,") && lines[1].ends_with(",cross_order"),
+        "{c}"
+    );
+    assert!(lines[2].contains("height_is_half_extent"), "{c}");
+}
+
+#[test]
+fn check_needs_exactly_one_source_of_answers() {
+    let e = json_err(&["check", "problems/text-triangle.toml"]);
+    assert_eq!(e["field"], "answers");
+    let e = json_err(&["check", "problems/view-surds.toml", "--answers-from-text"]);
+    assert_eq!(e["field"], "answers-from-text");
+}
+
+#[test]
+fn per_problem_check_settings_apply_and_flags_override_them() {
+    // A problem that asks only for the window top, with a 1% tolerance.
+    let dir = std::env::temp_dir().join(format!("grafika-check-{}-settings", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let prob = dir.join("p.toml");
+    std::fs::write(
+        &prob,
+        "title = \"window\"\nask = [\"window\"]\n[perspective]\nnear = 1\nfovy = 90\naspect = 1\n[check]\ntolerance = 0.01\nkeys = [\"window.top\"]\n",
+    )
+    .unwrap();
+    // fovy 90°: top = 1·tan 45° = 1; 1.005 is 0.5% off.
+    let ans = dir.join("a.toml");
+    std::fs::write(&ans, "window.top = \"1.005\"\n").unwrap();
+    let (p, a) = (prob.to_str().unwrap(), ans.to_str().unwrap());
+    let v = json_ok(&["check", p, "--answers", a]);
+    assert_eq!(v["score"]["total"], 1);
+    assert_eq!(answer(&v, "window.top")["code"], "correct.tolerance");
+    let v = json_ok(&["check", p, "--answers", a, "--tolerance", "0.001"]);
+    assert_eq!(answer(&v, "window.top")["verdict"], "wrong");
+}
+
+#[test]
+fn lighting_mistakes_are_diagnosed() {
+    // The text's Phong point: N = (0,1,1)/√2, L = V = (0,0,1).
+    // cos α = 1/√2; R = 2N(L·N) − L = (0,1,1) − (0,0,1) = (0,1,0); cos β = 0.
+    // With R = 2N(L·N) + L = (0,1,2): cos β = R·V = 2.
+    let file = answers_file(
+        "reflect",
+        "shade.R = [\"0\", \"1\", \"2\"]\nshade.cos_beta = \"2\"\nshade.cos_alpha = \"sqrt(2)/2\"\n",
+    );
+    let v = json_ok(&[
+        "check",
+        "problems/shade-phong.toml",
+        "--answers",
+        file.to_str().unwrap(),
+    ]);
+    assert_eq!(answer(&v, "shade.cos_alpha")["code"], "correct.exact");
+    for k in ["shade.R", "shade.cos_beta"] {
+        assert!(codes(answer(&v, k)).contains(&"reflect_plus_l".to_string()));
+    }
+    // A point where cos β < 0: N = (4,0,3)/5, L = V = (0,0,1): cos α = 3/5,
+    // R = (24/25, 0, −7/25), cos β = −7/25, so the highlight max(cos β,0)⁴ = 0.
+    // Without the max: 0.7·(7/25)⁴ = 0.7·2401/390625 = 0.004302592 per channel.
+    let dir = std::env::temp_dir().join(format!("grafika-check-{}-nomax", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let prob = dir.join("p.toml");
+    std::fs::write(
+        &prob,
+        "title = \"t\"\n[shade]\nlight = [0, 0, 1]\nnormal = [4, 0, 3]\nview = [0, 0, 1]\ncolor = [1, 0.5, 0]\n",
+    )
+    .unwrap();
+    let ans = dir.join("a.toml");
+    std::fs::write(
+        &ans,
+        "shade.specular = [\"0.0043\", \"0.0043\", \"0.0043\"]\nshade.cos_beta = \"-7/25\"\n",
+    )
+    .unwrap();
+    let v = json_ok(&[
+        "check",
+        prob.to_str().unwrap(),
+        "--answers",
+        ans.to_str().unwrap(),
+    ]);
+    assert_eq!(answer(&v, "shade.cos_beta")["verdict"], "correct");
+    let s = answer(&v, "shade.specular");
+    assert_eq!(s["verdict"], "wrong");
+    assert_eq!(codes(s), ["specular_no_max"]);
+}

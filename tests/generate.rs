@@ -1,0 +1,373 @@
+//! `grafika generate`: reproducible exams whose problems solve, whose keys
+//! score full marks, and in which a planted mistake is caught and named.
+
+mod common;
+use common::*;
+use grafika::check::{self, Settings, Verdict};
+use grafika::diagnose::CATALOG;
+use grafika::generate::{self, answer_toml, Difficulty, Topic};
+use grafika::solve::lookup;
+use grafika::trace::Val;
+use std::path::{Path, PathBuf};
+
+const TOPICS: [Topic; 7] = [
+    Topic::Shade,
+    Topic::Basis,
+    Topic::View,
+    Topic::Project,
+    Topic::Window,
+    Topic::Clip,
+    Topic::Pipeline,
+];
+const LEVELS: [Difficulty; 3] = [Difficulty::Easy, Difficulty::Medium, Difficulty::Hard];
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("grafika-gen-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+            } else {
+                let rel = p.strip_prefix(dir).unwrap().display().to_string();
+                out.push((rel, std::fs::read(&p).unwrap()));
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+#[test]
+fn the_same_seed_gives_the_same_files_byte_for_byte() {
+    let (a, b, c) = (tmp("a"), tmp("b"), tmp("c"));
+    for (dir, seed) in [(&a, "42"), (&b, "42"), (&c, "43")] {
+        grafika()
+            .args([
+                "generate",
+                "--topic",
+                "pipeline",
+                "--count",
+                "2",
+                "--variants",
+                "2",
+            ])
+            .args([
+                "--seed",
+                seed,
+                "--format",
+                "md",
+                "--out",
+                dir.to_str().unwrap(),
+            ])
+            .assert()
+            .success();
+    }
+    let (fa, fb, fc) = (files(&a), files(&b), files(&c));
+    // 2 variants × (2 problems + 2 keys + questions + key)
+    assert_eq!(fa.len(), 12);
+    assert_eq!(fa, fb);
+    assert_ne!(fa, fc);
+    // the variants differ from each other
+    let v1 = &fa
+        .iter()
+        .find(|(n, _)| n.ends_with("variant-01/problem-01.toml"))
+        .unwrap()
+        .1;
+    let v2 = &fa
+        .iter()
+        .find(|(n, _)| n.ends_with("variant-02/problem-01.toml"))
+        .unwrap()
+        .1;
+    assert_ne!(v1, v2);
+}
+
+#[test]
+fn every_generated_problem_solves_and_its_key_scores_full_marks() {
+    for topic in TOPICS {
+        for level in LEVELS {
+            let exam = generate::exam(&[topic], level, 3, 9).expect("generates");
+            for g in &exam {
+                let answers: Vec<(String, toml::Value)> = g
+                    .keys
+                    .iter()
+                    .map(|k| (k.clone(), answer_toml(lookup(&g.report.result, k).unwrap())))
+                    .collect();
+                assert!(!answers.is_empty());
+                let m =
+                    check::mark(&g.problem, "key", &answers, Settings::default(), false).unwrap();
+                assert_eq!(
+                    m.score(),
+                    m.total() as f64,
+                    "{topic:?} {level:?}: {}\n{:?}",
+                    g.toml,
+                    m.answers
+                        .iter()
+                        .filter(|a| a.verdict != Verdict::Correct)
+                        .collect::<Vec<_>>()
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_planted_mistake_is_caught_and_named() {
+    let mut planted = std::collections::BTreeSet::new();
+    for topic in [Topic::View, Topic::Pipeline, Topic::Clip, Topic::Shade] {
+        for level in LEVELS {
+            for g in generate::exam(&[topic], level, 3, 5).unwrap() {
+                for m in CATALOG {
+                    let Some(variants) = (m.apply)(&g.problem) else {
+                        continue;
+                    };
+                    // The key with the mistaken value wherever the mistake
+                    // changes an answer (the view matrix too, when it does).
+                    let mut keys = g.keys.clone();
+                    keys.push("view.matrix".into());
+                    let tree = &variants[0];
+                    let mut answers = Vec::new();
+                    let mut changed = 0;
+                    for k in &keys {
+                        let (Some(right), Some(wrong)) =
+                            (lookup(&g.report.result, k), lookup(tree, k))
+                        else {
+                            continue;
+                        };
+                        if differs(right, wrong) {
+                            changed += 1;
+                            answers.push((k.clone(), answer_toml(wrong)));
+                        } else if k != "view.matrix" {
+                            answers.push((k.clone(), answer_toml(right)));
+                        }
+                    }
+                    if changed == 0 {
+                        continue;
+                    }
+                    let mk =
+                        check::mark(&g.problem, "planted", &answers, Settings::default(), false)
+                            .unwrap();
+                    let wrong: Vec<_> = mk
+                        .answers
+                        .iter()
+                        .filter(|a| a.verdict == Verdict::Wrong)
+                        .collect();
+                    assert!(!wrong.is_empty(), "{} not caught in {}", m.code, g.toml);
+                    for a in &wrong {
+                        assert!(
+                            a.diagnosis.contains(&m.code),
+                            "{}: {} diagnosed as {:?} in\n{}",
+                            m.code,
+                            a.key,
+                            a.diagnosis,
+                            g.toml
+                        );
+                    }
+                    planted.insert(m.code);
+                }
+            }
+        }
+    }
+    // Every mistake of the catalog was planted somewhere.
+    for code in [
+        "cross_order",
+        "n_reversed",
+        "n_not_normalized",
+        "u_not_normalized",
+        "fovy_not_halved",
+        "degrees_as_radians",
+        "height_is_half_extent",
+        "height_as_half_extent",
+        "d_sign",
+        "matrix_transposed",
+        "outcode_reversed",
+        "endpoint_kept",
+        "reflect_plus_l",
+        "specular_no_max",
+    ] {
+        assert!(planted.contains(code), "{code} never planted: {planted:?}");
+    }
+}
+
+/// Numbers differ by more than a relative 1e-6.
+fn differs(a: &Val, b: &Val) -> bool {
+    match (a, b) {
+        (Val::Num(x), Val::Num(y)) => (x.value - y.value).abs() > 1e-6 * x.value.abs().max(1.0),
+        (Val::List(x), Val::List(y)) => {
+            x.len() != y.len() || x.iter().zip(y).any(|(p, q)| differs(p, q))
+        }
+        _ => a != b,
+    }
+}
+
+#[test]
+fn clipping_covers_accept_reject_and_partial_at_every_level() {
+    for level in LEVELS {
+        let exam = generate::exam(&[Topic::Clip], level, 3, 1).unwrap();
+        let statuses: Vec<String> = exam
+            .iter()
+            .map(|g| match lookup(&g.report.result, "clip.status") {
+                Some(Val::Text(s)) => s.clone(),
+                other => panic!("{other:?}"),
+            })
+            .collect();
+        assert_eq!(statuses, ["clipped", "accepted", "rejected"], "{level:?}");
+        for g in &exam {
+            // no endpoint on a box plane, so no segment lies in one
+            let c = g.problem.clip.as_ref().unwrap();
+            let min: Vec<f64> = c.min.iter().map(|n| n.0.eval::<f64>().unwrap()).collect();
+            let max: Vec<f64> = c.max.iter().map(|n| n.0.eval::<f64>().unwrap()).collect();
+            for s in &c.segment {
+                for end in [&s.from, &s.to] {
+                    let grafika::problem::PointRef::At(p) = end else {
+                        panic!()
+                    };
+                    for k in 0..3 {
+                        let x = p[k].0.eval::<f64>().unwrap();
+                        assert!(x != min[k] && x != max[k], "{}", g.toml);
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn easy_cameras_have_rational_axes() {
+    // Pythagorean directions: |Pe − Pr| and |Vup × (Pe − Pr)| are integers,
+    // so n, u, v are rational — their exact forms have no square root.
+    for g in generate::exam(&[Topic::Basis], Difficulty::Easy, 6, 3).unwrap() {
+        for k in ["view.u", "view.v", "view.n"] {
+            let Some(Val::List(c)) = lookup(&g.report.result, k) else {
+                panic!()
+            };
+            for x in c {
+                let Val::Num(s) = x else { panic!() };
+                let e = s.exact.as_deref().unwrap_or("?");
+                assert!(!e.contains("sqrt") && e != "?", "{k} = {e} in {}", g.toml);
+            }
+        }
+    }
+}
+
+#[test]
+fn latex_keys_are_ascii_and_compile_with_pdflatex() {
+    let dir = tmp("tex");
+    grafika()
+        .args([
+            "generate", "--topic", "pipeline", "--count", "2", "--seed", "3",
+        ])
+        .args(["--format", "latex", "--out", dir.to_str().unwrap()])
+        .assert()
+        .success();
+    for f in ["questions.tex", "key.tex"] {
+        let t = std::fs::read_to_string(dir.join(f)).unwrap();
+        assert!(t.is_ascii(), "{f} has non-ASCII characters");
+        assert!(!t.contains("[U+"), "{f} has an unmapped symbol");
+    }
+    let key = std::fs::read_to_string(dir.join("key.tex")).unwrap();
+    assert!(key.contains("\\sqrt{"), "exact forms are set with \\sqrt");
+    // Compile when pdflatex is installed (texlive-latex-base).
+    if std::process::Command::new("pdflatex")
+        .arg("--version")
+        .output()
+        .is_ok()
+    {
+        let out = std::process::Command::new("pdflatex")
+            .args(["-interaction=nonstopmode", "-halt-on-error", "key.tex"])
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stdout)
+        );
+        assert!(dir.join("key.pdf").exists());
+    } else {
+        eprintln!("pdflatex not installed: LaTeX not compiled");
+    }
+}
+
+#[test]
+fn json_and_toml_formats() {
+    let dir = tmp("json");
+    let v = json_ok(&[
+        "generate",
+        "--topic",
+        "window",
+        "--count",
+        "2",
+        "--seed",
+        "8",
+        "--format",
+        "json",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert_eq!(v["files"].as_array().unwrap().len(), 5);
+    let exam: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("exam.json")).unwrap()).unwrap();
+    let p = &exam["problems"][0];
+    // The window's height is twice its top, whatever the numbers drawn.
+    let top = f(&p["answers"]["window.top"]["decimal"]);
+    close(
+        f(&p["answers"]["window.height"]["decimal"]),
+        2.0 * top,
+        1e-12,
+    );
+    assert!(p["solution"]["steps"].as_array().unwrap().len() >= 2);
+    // a count of 0 is refused on the command line
+    let e = json_err(&[
+        "generate",
+        "--topic",
+        "view",
+        "--count",
+        "0",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(e["field"].as_str().unwrap().contains("count"), "{e}");
+}
+
+#[test]
+fn several_topics_alternate_through_the_exam() {
+    let exam = generate::exam(&[Topic::View, Topic::Clip], Difficulty::Medium, 4, 2).unwrap();
+    let kinds: Vec<bool> = exam.iter().map(|g| g.problem.clip.is_some()).collect();
+    assert_eq!(kinds, [false, true, false, true]);
+    // the clipping problems still cycle through their statuses
+    let st: Vec<String> = [1, 3]
+        .iter()
+        .map(|&i| match lookup(&exam[i].report.result, "clip.status") {
+            Some(Val::Text(s)) => s.clone(),
+            other => panic!("{other:?}"),
+        })
+        .collect();
+    assert_eq!(st, ["clipped", "accepted"]);
+    let dir = tmp("mixed");
+    grafika()
+        .args([
+            "generate",
+            "--topic",
+            "view,clip,shade",
+            "--count",
+            "3",
+            "--format",
+            "md",
+        ])
+        .args(["--out", dir.to_str().unwrap()])
+        .assert()
+        .success();
+    let q = std::fs::read_to_string(dir.join("questions.md")).unwrap();
+    assert!(
+        q.contains("Problem 2: Line clipping") && q.contains("Problem 3: Lighting"),
+        "{q}"
+    );
+}
