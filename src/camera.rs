@@ -34,14 +34,22 @@ pub struct Basis<T> {
     pub v: V3<T>,
     /// n, the camera's z axis (the camera looks along −n).
     pub n: V3<T>,
-    /// Pe − Pr, parallel to n.
+    /// Pe − Pr times a power of two (one in exact arithmetic) that brings
+    /// its largest component near 1: parallel to n.
     pub d: V3<T>,
-    /// Vup × (Pe − Pr), parallel to u.
+    /// Vup times a power of two, likewise.
+    pub up: V3<T>,
+    /// up × d, parallel to u.
     pub su: V3<T>,
-    /// (Pe − Pr) × (Vup × (Pe − Pr)), parallel to v.
+    /// d × (up × d), parallel to v.
     pub sv: V3<T>,
-    /// |Pe − Pr|, |su|, |sv|.
+    /// |d|, |su|, |sv| (of the scaled vectors above: what eye coordinates
+    /// divide by).
     pub norms: [T; 3],
+    /// |Pe − Pr|, unscaled.
+    pub dist: T,
+    /// |Vup × n| = |Vup × (Pe − Pr)|/|Pe − Pr|, unscaled.
+    pub vxn_norm: T,
 }
 
 /// The camera basis:
@@ -50,7 +58,10 @@ pub struct Basis<T> {
 ///
 /// Computed from the unrounded direction d = Pe − Pr: u ∥ Vup × d and
 /// v ∥ d × (Vup × d), each normalized once, which is the same vector in exact
-/// arithmetic and loses no accuracy to a rounded n in floats.
+/// arithmetic and loses no accuracy to a rounded n in floats. In floats, d
+/// and Vup are first scaled by powers of two (exactly) so that their largest
+/// components are near 1: the cross products can then neither overflow nor
+/// underflow for coordinates from 1e-30 to 1e30, even in f32.
 ///
 /// Errors: Pe = Pr (no view direction), Vup = 0 or parallel to Pe − Pr.
 /// Warns when Vup is within [`NEAR_PARALLEL_RAD`] of the view direction.
@@ -58,6 +69,16 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
     let Camera { pe, pr, vup } = cam;
     // n from the view direction
     let d = vec::sub(pe, pr);
+    if !vec::is_finite(&d) {
+        return Err(Error::new(
+            "look",
+            format!(
+                "Pe − Pr = {} is too large for {} precision",
+                fmt3(&d),
+                precision_name::<T>()
+            ),
+        ));
+    }
     let (n, dn) = vec::normalize(&d).ok_or_else(|| {
         Error::new(
             "look",
@@ -83,7 +104,14 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
     if vec::normalize(vup).is_none() {
         return Err(Error::new("up", "the up vector Vup is the zero vector"));
     }
-    let su = vec::cross(vup, &d);
+    // Exact power-of-two scaling (one for Real): directions are unchanged.
+    let (kd, ku) = (
+        T::pow2_scale(&[&d[0], &d[1], &d[2]]),
+        T::pow2_scale(&[&vup[0], &vup[1], &vup[2]]),
+    );
+    let ds = vec::scale(&d, &kd);
+    let ups = vec::scale(vup, &ku);
+    let su = vec::cross(&ups, &ds);
     let (u, sun) = vec::normalize(&su).ok_or_else(|| {
         Error::new(
             "up",
@@ -95,7 +123,7 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
         )
     })?;
     // sin of the angle between Vup and d = |Vup × d| / (|Vup| |d|)
-    let sin_angle = sun.to_f64() / (vec::norm(vup).to_f64() * dn.to_f64());
+    let sin_angle = sun.to_f64() / (vec::norm(&ups).to_f64() * vec::norm(&ds).to_f64());
     let angle = sin_angle.clamp(-1.0, 1.0).asin();
     if angle < NEAR_PARALLEL_RAD {
         tr.warn(|| {
@@ -104,8 +132,8 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
             )
         });
     }
-    let vxn = vec::cross(vup, &n);
     tr.step(|| {
+        let vxn = vec::cross(vup, &n);
         Step::new("Camera axis u (to the right)", "u = (Vup × n) / |Vup × n|")
             .val("Vup", Val::vec3(vup))
             .val("Vup × n", Val::vec3(&vxn))
@@ -114,7 +142,7 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
     });
 
     // v completes the right-handed frame
-    let sv = vec::cross(&d, &su);
+    let sv = vec::cross(&ds, &su);
     let (v, svn) = vec::normalize(&sv).ok_or_else(|| Error::new("up", "v = n × u vanished"))?;
     tr.step(|| {
         Step::new("Camera axis v (up in the picture)", "v = n × u")
@@ -126,10 +154,13 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
         u,
         v,
         n,
-        d,
+        vxn_norm: sun.clone() / (ku * kd) / dn.clone(),
+        dist: dn,
+        norms: [vec::norm(&ds), sun, svn],
+        d: ds,
+        up: ups,
         su,
         sv,
-        norms: [dn, sun, svn],
     };
     tr.step(|| check_step(&b));
     Ok(b)
@@ -178,7 +209,10 @@ pub fn camera_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>) -> Matrix4<T> {
 
 /// The view matrix V = Mcam⁻¹ (world to eye coordinates): rows u, v, n times
 /// the translation by −Pe, so its last column is (−u·Pe, −v·Pe, −n·Pe, 1).
-pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> Matrix4<T> {
+///
+/// Errors when the translation column is too large for the precision (f32
+/// with coordinates near 1e38).
+pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> Result<Matrix4<T>> {
     let rot = rows(&b.u, &b.v, &b.n);
     let mut trans = Matrix4::<T>::identity();
     for r in 0..3 {
@@ -188,6 +222,15 @@ pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> 
     view[(0, 3)] = -vec::dot(&b.u, pe);
     view[(1, 3)] = -vec::dot(&b.v, pe);
     view[(2, 3)] = -vec::dot(&b.n, pe);
+    if !(0..3).all(|r| view[(r, 3)].is_finite()) {
+        return Err(Error::new(
+            "eye",
+            format!(
+                "the view matrix's translation −(u·Pe, v·Pe, n·Pe) is too large for {} precision",
+                precision_name::<T>()
+            ),
+        ));
+    }
     tr.step(|| {
         Step::new(
             "Camera matrix Mcam (camera to world)",
@@ -204,7 +247,7 @@ pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> 
         .val("T(−Pe)", Val::mat4(&trans))
         .res("V", Val::mat4(&view))
     });
-    view
+    Ok(view)
 }
 
 /// The matrix with rows a, b, c (and 0 0 0 1).
@@ -220,19 +263,31 @@ fn rows<T: Scalar>(a: &V3<T>, b: &V3<T>, c: &V3<T>) -> Matrix4<T> {
 
 /// Eye coordinates of a world point: P' = V·P = (u·(P − Pe), v·(P − Pe), n·(P − Pe)).
 ///
-/// Computed as s·(P − Pe)/|s| with the unnormalized axes s of [`Basis`], so
-/// that no rounded unit vector enters the result.
+/// Errors when they are too large for the precision (f32 near 1e38).
+///
+/// Computed from the unnormalized axes of [`Basis`] so that no rounded unit
+/// vector enters the result, each numerator from the camera's own inputs
+/// (up, d) and w = P − Pe rather than from rounded cross products:
+///
+/// u·w = (up × d)·w / |up × d| = det[up; d; w] / |su|,
+/// v·w = (d × (up × d))·w / |sv| = ((d·d)(up·w) − (d·up)(d·w)) / |sv|,
+/// n·w = d·w / |d|,
+///
+/// with [`Scalar::triple_product`] and [`Scalar::double_cross_dot`], which
+/// keep the digits of a coordinate much smaller than |w| (a point near a
+/// camera plane).
 pub fn to_eye<T: Scalar>(
     b: &Basis<T>,
     pe: &V3<T>,
     name: &str,
     p: &V3<T>,
     tr: &mut impl Trace,
-) -> V3<T> {
+) -> Result<V3<T>> {
     let rel = vec::sub(p, pe);
+    let (up, d, w) = (refs(&b.up), refs(&b.d), refs(&rel));
     let e = vec::v3(
-        vec::dot(&b.su, &rel) / b.norms[1].clone(),
-        vec::dot(&b.sv, &rel) / b.norms[2].clone(),
+        T::triple_product(up, d, w) / b.norms[1].clone(),
+        T::double_cross_dot(d, up, w) / b.norms[2].clone(),
         vec::dot(&b.d, &rel) / b.norms[0].clone(),
     );
     tr.step(|| {
@@ -244,7 +299,30 @@ pub fn to_eye<T: Scalar>(
         .val(format!("{name} − Pe"), Val::vec3(&rel))
         .res(format!("{name}'"), Val::vec3(&e))
     });
-    e
+    if !vec::is_finite(&e) {
+        return Err(Error::new(
+            format!("points.{name}"),
+            format!(
+                "the eye coordinates of {name} are too large for {} precision",
+                precision_name::<T>()
+            ),
+        ));
+    }
+    Ok(e)
+}
+
+/// The precision's name as `--precision` spells it.
+fn precision_name<T: Scalar>() -> &'static str {
+    match T::PRECISION {
+        crate::num::Precision::Exact => "exact",
+        crate::num::Precision::F64 => "f64",
+        crate::num::Precision::F32 => "f32",
+    }
+}
+
+/// The components of a vector by reference.
+fn refs<T>(a: &V3<T>) -> [&T; 3] {
+    [&a[0], &a[1], &a[2]]
 }
 
 /// A vector written for an error message.
@@ -277,7 +355,7 @@ mod tests {
         approx::assert_relative_eq!(b.u, V3::new(0.0, 0.0, -1.0), epsilon = 1e-15);
         approx::assert_relative_eq!(b.v, V3::new(-0.6, 0.8, 0.0), epsilon = 1e-15);
         // Pr − Pe = (−4,−3,0): u· = 0, v· = 12/5 − 12/5 = 0, n· = −16/5 − 9/5 = −5.
-        let e = to_eye(&b, &c.pe, "P", &c.pr, &mut NoTrace);
+        let e = to_eye(&b, &c.pe, "P", &c.pr, &mut NoTrace).unwrap();
         approx::assert_relative_eq!(e, V3::new(0.0, 0.0, -5.0), epsilon = 1e-14);
     }
 
@@ -285,9 +363,9 @@ mod tests {
     fn view_matrix_agrees_with_eye_coordinates() {
         let c = cam([3.0, 1.0, 3.0], [2.0, 1.0, 2.0], [0.0, 1.0, 0.0]);
         let b = basis(&c, &mut NoTrace).unwrap();
-        let v = view_matrix(&b, &c.pe, &mut NoTrace);
+        let v = view_matrix(&b, &c.pe, &mut NoTrace).unwrap();
         let p = V3::new(1.0, 0.0, 0.0);
-        let e = to_eye(&b, &c.pe, "B", &p, &mut NoTrace);
+        let e = to_eye(&b, &c.pe, "B", &p, &mut NoTrace).unwrap();
         let h = v * nalgebra::Vector4::new(1.0, 0.0, 0.0, 1.0);
         approx::assert_relative_eq!(h.xyz(), e, epsilon = 1e-14);
         // B' = (1/√2, −1, −5/√2) by hand.

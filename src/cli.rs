@@ -56,6 +56,17 @@ pub enum Command {
     Clip(ClipArgs),
     /// Lighting at one surface point: the text's models and Direct3D 9 Blinn–Phong.
     Shade(ShadeArgs),
+    /// Run time against error: time per operation and error in ulps
+    /// against the exact path, per stage and precision.
+    Bench {
+        /// A few cases and passes only (seconds, for tests).
+        #[arg(long)]
+        quick: bool,
+        /// Random cases per stage (each stage adds about as many adversarial
+        /// ones); default 60, or 6 with --quick.
+        #[arg(long, value_parser = clap::value_parser!(u16).range(2..=5000))]
+        cases: Option<u16>,
+    },
     /// A whole problem from a TOML file.
     Solve {
         /// The problem file.
@@ -225,9 +236,9 @@ pub fn run(cli: &Cli) -> Result<Report> {
         Command::Clip(a) => at_precision!(p, clip(a)),
         Command::Shade(a) => at_precision!(p, shade(a)),
         Command::Solve { file } => at_precision!(p, solve(file)),
-        Command::Check(_) | Command::Generate(_) => Err(Error::new(
+        Command::Check(_) | Command::Generate(_) | Command::Bench { .. } => Err(Error::new(
             "command",
-            "check and generate print their own output: use main_with_args",
+            "check, generate and bench print their own output: use main_with_args",
         )),
         // The renderer computes at f32 (the calculator's precisions are for explaining).
         Command::Render(a) => crate::render_cmd::run(a),
@@ -289,6 +300,27 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
             );
         }
     };
+    if let Command::Bench { quick, cases } = cli.command {
+        let mut set = if quick {
+            crate::bench::Settings::quick()
+        } else {
+            crate::bench::Settings::full()
+        };
+        if let Some(n) = cases {
+            set.cases = n as usize;
+        }
+        let (inp, rows) = crate::bench::measure(&set);
+        if cli.common.json {
+            println!(
+                "{}",
+                serde_json::to_string_pretty(&crate::bench::to_json(&inp, &rows))
+                    .unwrap_or_default()
+            );
+        } else {
+            print!("{}", crate::bench::table(&inp, &rows));
+        }
+        return 0;
+    }
     let own_output = match &cli.command {
         Command::Check(a) => Some(crate::check_cmd::run(
             a,

@@ -196,19 +196,24 @@ pub fn clip_segment<T: Scalar>(
         };
     }
 
-    // Intersect with every plane one endpoint violates
-    let delta = vec::sub(p1, p0);
+    // Intersect with every plane one endpoint violates (in floats, on the
+    // problem halved when P1 − P0 would overflow: the same t and points).
+    let (hb, hp0, hp1, back) = halved_if_overflowing(b, p0, p1);
+    let delta = vec::sub(&hp1, &hp0);
     let mut kept: Vec<(T, V3<T>)> = Vec::new();
     let mut intersections = Vec::new();
     for (bit, &(axis, is_max, plane, name)) in PLANES.iter().enumerate() {
         if (code0 | code1) & (1 << bit) == 0 {
             continue;
         }
-        let bound = if is_max { &b.max[axis] } else { &b.min[axis] };
+        let bound = if is_max { &hb.max[axis] } else { &hb.min[axis] };
         // delta[axis] ≠ 0: exactly one end is outside this plane.
-        let t = (bound.clone() - p0[axis].clone()) / delta[axis].clone();
-        let mut q = vec::add(p0, &vec::scale(&delta, &t));
-        q[axis] = bound.clone(); // on the plane exactly, whatever the rounding
+        let t = (bound.clone() - hp0[axis].clone()) / delta[axis].clone();
+        let mut q = intersection_point(&hp0, &hp1, &delta, axis, bound);
+        if let Some(two) = &back {
+            q = vec::scale(&q, two);
+            q[axis] = if is_max { &b.max[axis] } else { &b.min[axis] }.clone();
+        }
         let c = outcode(b, &q);
         tr.step(|| {
             Step::new(
@@ -280,6 +285,50 @@ pub fn clip_segment<T: Scalar>(
     result
 }
 
+/// P(t) = P0 + t·Δ on the plane `axis` = `bound`, where t = (bound − P0ₐ)/Δₐ.
+///
+/// Each other coordinate is evaluated as one quotient of the exact
+/// differences, (Pₖ·Δₐ + (bound − Pₐ)·Δₖ)/Δₐ with P the end nearer the plane, with the numerator a sum of
+/// products rounded once ([`Scalar::sum_of_products`]); the same value as
+/// P0ₖ + t·Δₖ in exact arithmetic, but without the rounding of t being
+/// magnified when P(t) lies much nearer the origin than P0. Should the
+/// products overflow the float range, Pₖ + (bound − Pₐ)·(Δₖ/Δₐ) is used. The plane's
+/// own coordinate is the bound itself, whatever the rounding.
+fn intersection_point<T: Scalar>(
+    p0: &V3<T>,
+    p1: &V3<T>,
+    delta: &V3<T>,
+    axis: usize,
+    bound: &T,
+) -> V3<T> {
+    // Measured from the end nearer the plane (the same point exactly, since
+    // P(t) = P1 + (t − 1)·Δ): its difference to the plane is the smaller,
+    // most accurately rounded one.
+    let num0 = bound.clone() - p0[axis].clone();
+    let num1 = bound.clone() - p1[axis].clone();
+    let (base, num) = if num1.abs() < num0.abs() {
+        (p1, num1)
+    } else {
+        (p0, num0)
+    };
+    let mut q = p0.clone();
+    for k in 0..3 {
+        q[k] = if k == axis {
+            bound.clone()
+        } else {
+            let r =
+                T::sum_of_products(&base[k], &delta[axis], &num, &delta[k]) / delta[axis].clone();
+            if r.is_finite() {
+                r
+            } else {
+                // The products overflow (floats only): the ratio first.
+                base[k].clone() + num.clone() * (delta[k].clone() / delta[axis].clone())
+            }
+        };
+    }
+    q
+}
+
 /// The step explaining one endpoint's outcode, bit by bit.
 fn code_step<T: Scalar>(name: &str, b: &ClipBox<T>, p: &V3<T>, code: u8) -> Step {
     let mut s = Step::new(
@@ -327,13 +376,18 @@ pub fn liang_barsky<T: Scalar>(
     p1: &V3<T>,
     tr: &mut impl Trace,
 ) -> Option<(V3<T>, V3<T>)> {
-    let delta = vec::sub(p1, p0);
+    let (hb, hp0, hp1, back) = halved_if_overflowing(b, p0, p1);
+    let delta = vec::sub(&hp1, &hp0);
+    let (b, p0h) = (&hb, &hp0);
     let (mut t0, mut t1) = (T::zero(), T::one());
     let mut inside = true;
     for axis in 0..3 {
         for (p, q) in [
-            (-delta[axis].clone(), p0[axis].clone() - b.min[axis].clone()),
-            (delta[axis].clone(), b.max[axis].clone() - p0[axis].clone()),
+            (
+                -delta[axis].clone(),
+                p0h[axis].clone() - b.min[axis].clone(),
+            ),
+            (delta[axis].clone(), b.max[axis].clone() - p0h[axis].clone()),
         ] {
             if p.is_zero_value() {
                 if q < T::zero() {
@@ -353,9 +407,12 @@ pub fn liang_barsky<T: Scalar>(
     }
     let result = if inside && t0 <= t1 {
         let at = |t: &T| {
-            let mut q = vec::add(p0, &vec::scale(&delta, t));
+            let mut q = vec::add(p0h, &vec::scale(&delta, t));
             snap(b, &mut q);
-            q
+            match &back {
+                Some(two) => vec::scale(&q, two),
+                None => q,
+            }
         };
         Some((
             if t0.is_zero_value() {
@@ -378,6 +435,34 @@ pub fn liang_barsky<T: Scalar>(
         }
     });
     result
+}
+
+/// The box and the ends halved (exactly, barring subnormals) when P1 − P0
+/// overflows the float range, with the factor 2 to scale points back; the
+/// inputs themselves otherwise (always for exact numbers).
+#[allow(clippy::type_complexity)]
+fn halved_if_overflowing<T: Scalar>(
+    b: &ClipBox<T>,
+    p0: &V3<T>,
+    p1: &V3<T>,
+) -> (ClipBox<T>, V3<T>, V3<T>, Option<T>) {
+    let fits = |x: &V3<T>| vec::is_finite(x);
+    let span = |lo: &V3<T>, hi: &V3<T>| fits(&vec::sub(hi, lo));
+    if span(p0, p1) && span(p0, &b.min) && span(p0, &b.max) && span(p1, &b.min) && span(p1, &b.max)
+    {
+        return (b.clone(), p0.clone(), p1.clone(), None);
+    }
+    let half = T::one() / T::from_i64(2);
+    let h = |x: &V3<T>| vec::scale(x, &half);
+    (
+        ClipBox {
+            min: h(&b.min),
+            max: h(&b.max),
+        },
+        h(p0),
+        h(p1),
+        Some(T::from_i64(2)),
+    )
 }
 
 /// Moves coordinates that rounding put a hair outside the box back onto it.

@@ -74,16 +74,16 @@ pub fn view<T: Scalar>(c: &CameraArgs, points: &[String]) -> Result<Report> {
     let pts = input::points3::<T>("point", points)?;
     let mut rec = Recorder::new();
     let b = camera::basis(&cam, &mut rec)?;
-    let m = camera::view_matrix(&b, &cam.pe, &mut rec);
+    let m = camera::view_matrix(&b, &cam.pe, &mut rec)?;
     let eye: Vec<(String, Val)> = pts
         .iter()
         .map(|(n, p)| {
-            (
+            Ok((
                 n.clone(),
-                Val::vec3(&camera::to_eye(&b, &cam.pe, n, p, &mut rec)),
-            )
+                Val::vec3(&camera::to_eye(&b, &cam.pe, n, p, &mut rec)?),
+            ))
         })
-        .collect();
+        .collect::<Result<_>>()?;
     let mut result = basis_result(&b);
     result.push(("matrix".into(), Val::mat4(&m)));
     result.push(("points".into(), Val::Map(eye)));

@@ -73,7 +73,7 @@ pub static CATALOG: &[Mistake] = &[
                 p,
                 Hooks {
                     basis: |b| {
-                        let s = b.norms[0];
+                        let s = b.dist;
                         scale_axes(b, [1.0, s, s]);
                     },
                     ..Hooks::default()
@@ -90,7 +90,7 @@ pub static CATALOG: &[Mistake] = &[
                 Hooks {
                     // Vup × n = (Vup × d)/|d|, of length |Vup × d|/|d|.
                     basis: |b| {
-                        let s = b.norms[1] / b.norms[0];
+                        let s = b.vxn_norm;
                         scale_axes(b, [s, s, 1.0]);
                     },
                     ..Hooks::default()
@@ -331,8 +331,8 @@ fn hooked(p: &ProblemIn, hooks: Hooks<f64>) -> Option<Vec<Tree>> {
 }
 
 /// Multiplies the axes u, v, n by the factors given, keeping the basis
-/// consistent: the eye coordinates are computed as s·(P − Pe)/|s| from the
-/// unnormalized axes s, so each |s| is divided by the factor.
+/// consistent: the eye coordinates are computed from the unnormalized axes s
+/// and divided by |s| (`norms`), so each |s| is divided by the factor.
 fn scale_axes(b: &mut Basis<f64>, f: [f64; 3]) {
     b.u *= f[0];
     b.v *= f[1];

@@ -7,6 +7,8 @@
 //! steps to a [`trace::Trace`], and a [`report::Report`] turns the steps and
 //! results into text or JSON.
 
+pub mod accuracy;
+pub mod bench;
 pub mod camera;
 pub mod check;
 pub mod check_cmd;

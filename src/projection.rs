@@ -57,6 +57,38 @@ impl<T: Scalar> Projection<T> {
     }
 }
 
+/// x·a/b, with x, a and b first scaled by powers of two to magnitudes near
+/// 1 (exactly; all three factors are one for exact numbers) and the result
+/// scaled back one factor at a time, always by the factor that moves it
+/// toward 1, so that no intermediate overflows or underflows unless the
+/// result itself does.
+fn mul_div<T: Scalar>(x: &T, a: &T, b: &T) -> T {
+    if T::PRECISION == crate::num::Precision::Exact {
+        return x.clone() * a.clone() / b.clone();
+    }
+    let (sx, sa, sb) = (
+        T::pow2_scale(&[x]),
+        T::pow2_scale(&[a]),
+        T::pow2_scale(&[b]),
+    );
+    let mut r = (x.clone() * sx.clone()) * (a.clone() * sa.clone()) / (b.clone() * sb.clone());
+    // Undo: multiply by 1/sx, 1/sa and sb (powers of two), each time by the
+    // smallest remaining factor while |r| ≥ 1 and the largest otherwise.
+    let mut factors = [T::one() / sx, T::one() / sa, sb];
+    factors.sort_by(|p, q| p.partial_cmp(q).unwrap_or(std::cmp::Ordering::Equal));
+    let (mut lo, mut hi) = (0, 3);
+    while lo < hi {
+        if r.abs() >= T::one() {
+            r *= factors[lo].clone();
+            lo += 1;
+        } else {
+            hi -= 1;
+            r *= factors[hi].clone();
+        }
+    }
+    r
+}
+
 /// Projects the eye-coordinate point `p` (named `name` in steps and errors).
 ///
 /// Errors when the point lies in the plane through the centre of projection
@@ -91,7 +123,7 @@ pub fn project<T: Scalar>(
                 ));
             }
             (
-                d.clone() / z.clone(),
+                (d.clone(), z.clone()),
                 d.clone(),
                 "xp = d·x/z,  yp = d·y/z,  zp = d",
                 "d/z",
@@ -109,18 +141,32 @@ pub fn project<T: Scalar>(
                 ));
             }
             (
-                (zprp.clone() - zvp.clone()) / den,
+                (zprp.clone() - zvp.clone(), den),
                 zvp.clone(),
                 "xp = x·(zprp − zvp)/(zprp − z),  yp = y·(zprp − zvp)/(zprp − z),  zp = zvp",
                 "(zprp − zvp)/(zprp − z)",
             )
         }
     };
+    // x·(num/den) evaluated as a scaled x·num/den: no premature overflow or
+    // underflow of the scale factor, two roundings.
+    let (num, den) = scale;
     let r = vec::v3(
-        x.clone() * scale.clone(),
-        y.clone() * scale.clone(),
+        mul_div(x, &num, &den),
+        mul_div(y, &num, &den),
         plane_z.clone(),
     );
+    if !vec::is_finite(&r) {
+        return Err(Error::new(
+            format!("points.{name}"),
+            format!(
+                "the image of {name} is too large for {:?} precision (the point is too near the plane of the centre of projection)",
+                T::PRECISION
+            )
+            .to_lowercase()
+            .replace(&name.to_lowercase(), name),
+        ));
+    }
     // Behind: the point and the plane are on opposite sides of the COP.
     let cop = proj.cop_z().unwrap_or_else(T::zero);
     let behind = (z.clone() - cop.clone() < T::zero()) != (plane_z - cop < T::zero());
@@ -130,7 +176,7 @@ pub fn project<T: Scalar>(
     tr.step(|| {
         let mut s = Step::new(format!("Perspective projection of {name}"), formula)
             .val(name.to_string(), Val::vec3(p))
-            .val(scale_name, Val::num(&scale))
+            .val(scale_name, Val::num(&(num.clone() / den.clone())))
             .res(format!("{name}''"), Val::vec3(&r));
         if behind {
             s = s.note("behind the centre of projection: projected, but inverted and not visible");

@@ -95,9 +95,9 @@ pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> 
         rec.section("Step 2: viewing transformation (world → eye coordinates)");
         let mut b = camera::basis(&cam, &mut rec).map_err(camera_field)?;
         (hooks.basis)(&mut b);
-        let m = camera::view_matrix(&b, &cam.pe, &mut rec);
+        let m = camera::view_matrix(&b, &cam.pe, &mut rec).map_err(camera_field)?;
         for (n, q) in &points {
-            eye_pts.push((n.clone(), camera::to_eye(&b, &cam.pe, n, q, &mut rec)));
+            eye_pts.push((n.clone(), camera::to_eye(&b, &cam.pe, n, q, &mut rec)?));
         }
         if p.asks("view") {
             let mut r = basis_result(&b);

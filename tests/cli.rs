@@ -413,3 +413,34 @@ fn exact_forms_of_the_text_examples() {
     ]);
     assert_eq!(f["exact"]["u"], serde_json::json!([null, null, null]));
 }
+
+#[test]
+fn bench_quick_prints_every_stage_and_precision() {
+    let out = common::grafika()
+        .args(["bench", "--quick", "--json"])
+        .output()
+        .expect("runs");
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let rows = v["rows"].as_array().expect("rows");
+    // 5 stages × 3 precisions.
+    assert_eq!(rows.len(), 15);
+    for r in rows {
+        assert!(r["ns_per_op"].as_f64().is_some_and(|t| t > 0.0), "{r}");
+        if r["precision"] != "exact" && r["stage"] != "window" {
+            // The 4-ulp target on the integer inputs.
+            let max = r["ulps"]["target"]["max"].as_f64().expect("finite max");
+            assert!(max <= 4.0, "{r}");
+        }
+    }
+    let text = common::grafika()
+        .args(["bench", "--quick"])
+        .output()
+        .expect("runs");
+    let s = String::from_utf8_lossy(&text.stdout);
+    for w in [
+        "basis", "view", "project", "window", "clip", "exact", "f64", "f32", "time/op",
+    ] {
+        assert!(s.contains(w), "{w} missing from\n{s}");
+    }
+}

@@ -83,6 +83,11 @@ impl Expr {
                         "the exponent in `{self}` must be a whole number from -1024 to 1024"
                     ));
                 }
+                // |base|^e beyond 2^±8192 cannot lead to a value an f64 can
+                // show, and exact powers that large would take long to form.
+                if !base.is_zero_value() && (base.to_f64().abs().log2() * e).abs() > 8192.0 {
+                    return Err(format!("`{self}` is too large or too small a power"));
+                }
                 let p = base.powi(e.abs() as u32);
                 if e < 0.0 {
                     if p.is_zero_value() {
@@ -128,7 +133,12 @@ impl fmt::Display for Paren<'_> {
 /// which character (1-based column).
 pub fn parse_expr(text: &str) -> Result<Expr, String> {
     let chars: Vec<char> = text.chars().collect();
-    let mut p = Parser { s: &chars, i: 0 };
+    let mut p = Parser {
+        s: &chars,
+        i: 0,
+        depth: 0,
+        ops: 0,
+    };
     p.skip_ws();
     if p.at_end() {
         return Err("expected a number, found nothing".into());
@@ -237,9 +247,19 @@ impl fmt::Display for Angle {
     }
 }
 
+/// Parentheses, roots and signs nested deeper than this are refused (the
+/// parser and the evaluator recurse once per level).
+pub const MAX_DEPTH: usize = 100;
+
+/// An expression with more operations than this is refused (evaluation
+/// recurses once per operation of a chain like `1+1+…+1`).
+pub const MAX_OPERATIONS: usize = 500;
+
 struct Parser<'a> {
     s: &'a [char],
     i: usize,
+    depth: usize,
+    ops: usize,
 }
 
 impl Parser<'_> {
@@ -289,13 +309,39 @@ impl Parser<'_> {
         }
     }
 
+    /// Enters one more level of nesting, or refuses too deep a nesting.
+    fn enter(&mut self) -> Result<(), String> {
+        self.depth += 1;
+        if self.depth > MAX_DEPTH {
+            return Err(format!(
+                "the number is nested more than {MAX_DEPTH} levels deep (parentheses, roots or signs) at column {}",
+                self.i + 1
+            ));
+        }
+        Ok(())
+    }
+
+    /// Counts one operation, or refuses too long an expression.
+    fn op(&mut self) -> Result<(), String> {
+        self.ops += 1;
+        if self.ops > MAX_OPERATIONS {
+            return Err(format!(
+                "the number has more than {MAX_OPERATIONS} operations (at column {})",
+                self.i + 1
+            ));
+        }
+        Ok(())
+    }
+
     /// sum := product (('+' | '-') product)*
     fn sum(&mut self) -> Result<Expr, String> {
         let mut e = self.product()?;
         loop {
             if self.eat('+') {
+                self.op()?;
                 e = Expr::Add(Box::new(e), Box::new(self.product()?));
             } else if self.eat('-') || self.eat('−') {
+                self.op()?;
                 e = Expr::Sub(Box::new(e), Box::new(self.product()?));
             } else {
                 return Ok(e);
@@ -308,10 +354,13 @@ impl Parser<'_> {
         let mut e = self.unary()?;
         loop {
             if self.eat('*') || self.eat('×') || self.eat('·') {
+                self.op()?;
                 e = Expr::Mul(Box::new(e), Box::new(self.unary()?));
             } else if self.eat('/') {
+                self.op()?;
                 e = Expr::Div(Box::new(e), Box::new(self.unary()?));
             } else if self.implicit_factor_follows() {
+                self.op()?;
                 e = Expr::Mul(Box::new(e), Box::new(self.power()?));
             } else {
                 return Ok(e);
@@ -335,9 +384,16 @@ impl Parser<'_> {
     /// unary := ('-' | '+') unary | power
     fn unary(&mut self) -> Result<Expr, String> {
         if self.eat('-') || self.eat('−') {
-            Ok(Expr::Neg(Box::new(self.unary()?)))
+            self.op()?;
+            self.enter()?;
+            let e = self.unary();
+            self.depth -= 1;
+            Ok(Expr::Neg(Box::new(e?)))
         } else if self.eat('+') {
-            self.unary()
+            self.enter()?;
+            let e = self.unary();
+            self.depth -= 1;
+            e
         } else {
             self.power()
         }
@@ -347,6 +403,7 @@ impl Parser<'_> {
     fn power(&mut self) -> Result<Expr, String> {
         let base = self.atom()?;
         if self.eat('^') {
+            self.op()?;
             Ok(Expr::Pow(Box::new(base), Box::new(self.unary()?)))
         } else {
             Ok(base)
@@ -355,6 +412,13 @@ impl Parser<'_> {
 
     /// atom := number | 'pi' | 'π' | 'sqrt' '(' sum ')' | '√' atom | '(' sum ')'
     fn atom(&mut self) -> Result<Expr, String> {
+        self.enter()?;
+        let e = self.atom_inner();
+        self.depth -= 1;
+        e
+    }
+
+    fn atom_inner(&mut self) -> Result<Expr, String> {
         self.skip_ws();
         if self.eat('(') {
             let e = self.sum()?;
@@ -370,6 +434,7 @@ impl Parser<'_> {
             if !self.eat('(') {
                 return Err(self.err("`(` after sqrt"));
             }
+            self.op()?;
             let e = self.sum()?;
             if !self.eat(')') {
                 return Err(self.err("`)`"));
@@ -377,6 +442,7 @@ impl Parser<'_> {
             return Ok(Expr::Sqrt(Box::new(e)));
         }
         if self.eat('√') {
+            self.op()?;
             return Ok(Expr::Sqrt(Box::new(self.power()?)));
         }
         self.number()
@@ -440,6 +506,27 @@ mod tests {
         assert_eq!(f("2.5e-1"), 0.25);
         assert_eq!(f(".5"), 0.5);
         assert!((f("pi/2") - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+    }
+
+    #[test]
+    fn deep_nesting_is_an_error_not_a_stack_overflow() {
+        // 10,000 opening parentheses: refused at level MAX_DEPTH + 1.
+        let deep = "(".repeat(10_000) + "1" + &")".repeat(10_000);
+        let e = parse_expr(&deep).unwrap_err();
+        assert!(e.contains("nested more than 100 levels"), "{e}");
+        let signs = "-".repeat(10_000) + "1";
+        assert!(parse_expr(&signs).unwrap_err().contains("nested"));
+        let roots = "√".repeat(10_000) + "4";
+        assert!(parse_expr(&roots).is_err());
+        // A 10,000-term chain: too many operations.
+        let chain = vec!["1"; 10_000].join("+");
+        assert!(parse_expr(&chain)
+            .unwrap_err()
+            .contains("more than 500 operations"));
+        // Within the limits: 100 levels of parentheses and 500 operations.
+        let ok = "(".repeat(99) + "2" + &")".repeat(99);
+        assert_eq!(f(&ok), 2.0);
+        assert_eq!(f(&vec!["1"; 501].join("+")), 501.0);
     }
 
     #[test]

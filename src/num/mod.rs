@@ -134,6 +134,36 @@ pub trait Scalar:
         a[0].clone() * b[0].clone() + a[1].clone() * b[1].clone() + a[2].clone() * b[2].clone()
     }
 
+    /// The triple product a·(b × c) = det[a; b; c], as accurately as the
+    /// type allows: exact in `Real`; in f64 from exactly rounded cross
+    /// products (Kahan) and a compensated dot; in f32 evaluated the same way
+    /// in f64 and rounded once, so that a result much smaller than its terms
+    /// (a point near a camera plane) keeps its digits.
+    fn triple_product(a: [&Self; 3], b: [&Self; 3], c: [&Self; 3]) -> Self {
+        let x = Self::diff_of_products(b[1], c[2], b[2], c[1]);
+        let y = Self::diff_of_products(b[2], c[0], b[0], c[2]);
+        let z = Self::diff_of_products(b[0], c[1], b[1], c[0]);
+        Self::dot3(a, [&x, &y, &z])
+    }
+
+    /// (a × (b × a))·c = (a·a)(b·c) − (a·b)(a·c), with the same care as
+    /// [`Scalar::triple_product`].
+    fn double_cross_dot(a: [&Self; 3], b: [&Self; 3], c: [&Self; 3]) -> Self {
+        let aa = Self::dot3(a, a);
+        let bc = Self::dot3(b, c);
+        let ab = Self::dot3(a, b);
+        let ac = Self::dot3(a, c);
+        Self::diff_of_products(&aa, &bc, &ab, &ac)
+    }
+
+    /// A power of two 2^-e that brings the largest magnitude among `xs` near
+    /// 1 (multiplying by it is exact in floats, barring underflow); one for
+    /// exact numbers, which need no scaling.
+    fn pow2_scale(xs: &[&Self]) -> Self {
+        let _ = xs;
+        Self::one()
+    }
+
     /// |(a, b, c)| = √(a² + b² + c²), without overflow or underflow in
     /// floats (scaled by a power of two near the largest component).
     fn hypot3(a: &Self, b: &Self, c: &Self) -> Self {
