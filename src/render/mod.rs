@@ -209,7 +209,7 @@ pub fn view_setup(scene: &Scene, w: u32, h: u32) -> Result<ViewSetup> {
             far,
         } => {
             let b = crate::camera::basis(camera, &mut NoTrace)?;
-            let v = crate::camera::view_matrix(&b, &camera.pe, &mut NoTrace);
+            let v = crate::camera::view_matrix(&b, &camera.pe, &mut NoTrace)?;
             let aspect = aspect.unwrap_or(wf / hf);
             let win = crate::window::window(fovy, &aspect, near, "near", &mut NoTrace)?;
             let p = crate::projection::perspective_matrix(&win, near, far);
