@@ -41,7 +41,7 @@ fn zero<T: Scalar>() -> T {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
 
     /// u, v, n are orthonormal and right-handed (u × v = n), exactly.
     #[test]
