@@ -357,29 +357,41 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
                 .enumerate()
             {
                 let j = (band * BAND + r) as u32;
-                for (i, (px, &t)) in orow.chunks_exact_mut(3).zip(irow).enumerate() {
-                    let c = if t == NONE {
-                        bg
-                    } else {
-                        count += 1;
-                        let tri = &tris[t as usize];
-                        if looks[tri.obj as usize].shading == Shading::Phong {
-                            evals += 1;
+                // Runs of pixels covered by the same triangle (or none).
+                let mut i = 0;
+                while i < w {
+                    let t = irow[i];
+                    let end = irow[i..].iter().position(|&u| u != t).map_or(w, |k| i + k);
+                    let span = &mut orow[3 * i..3 * end];
+                    if t == NONE {
+                        for px in span.chunks_exact_mut(3) {
+                            px.copy_from_slice(&bg);
                         }
+                    } else {
+                        let n = (end - i) as u64;
+                        count += n;
+                        let tri = &tris[t as usize];
                         let c = &corners[t as usize];
-                        to_u8(pixel_color(
-                            tri,
-                            c,
-                            i as u32,
-                            j,
-                            &looks,
-                            vs.ortho,
-                            &mut NoTrace,
-                        ))
-                    };
-                    px[0] = c[0];
-                    px[1] = c[1];
-                    px[2] = c[2];
+                        let look = &looks[tri.obj as usize];
+                        if look.shading == Shading::Phong {
+                            evals += n;
+                            shade::phong_span(tri, c, look, j, i as u32, span, vs.ortho);
+                        } else {
+                            for (k, px) in span.chunks_exact_mut(3).enumerate() {
+                                let col = pixel_color(
+                                    tri,
+                                    c,
+                                    (i + k) as u32,
+                                    j,
+                                    &looks,
+                                    vs.ortho,
+                                    &mut NoTrace,
+                                );
+                                px.copy_from_slice(&to_u8(col));
+                            }
+                        }
+                    }
+                    i = end;
                 }
             }
             progress.tick();

@@ -6,7 +6,7 @@ use crate::lighting::{self, Light, LightKind, Material, Surface};
 use crate::num::Fast32;
 use crate::raster::Tri;
 use crate::scene::Shading;
-use crate::trace::Trace;
+use crate::trace::{NoTrace, Trace};
 use nalgebra::Vector3;
 
 use super::{Corner, Look};
@@ -35,6 +35,20 @@ pub fn light_at(
         };
         &recoloured
     };
+    lit(m, lights, n, p, ortho, tr)
+}
+
+/// `lighting::shade` of a material that already holds the surface colour,
+/// at the (not necessarily unit) normal `n` and eye-space point `p`.
+#[inline(always)]
+fn lit<T: Trace>(
+    m: &Material<Fast32>,
+    lights: &[Light<Fast32>],
+    n: Vector3<f32>,
+    p: Vector3<f32>,
+    ortho: bool,
+    tr: &mut T,
+) -> [f32; 3] {
     let f = |v: Vector3<f32>| Vector3::new(Fast32(v.x), Fast32(v.y), Fast32(v.z));
     // shade takes a unit N (an interpolated normal is shorter than 1).
     let len = n.norm();
@@ -47,7 +61,37 @@ pub fn light_at(
         position: f(p),
         camera: if ortho { None } else { Some(Vector3::zeros()) },
     };
-    lighting::shade(m, lights, &s, tr).color.map(|c| c.0)
+    if T::ON {
+        lighting::shade(m, lights, &s, tr).color.map(|c| c.0)
+    } else {
+        // The same computation, the color alone (nothing is recorded).
+        lighting::shade_color(m, lights, &s).map(|c| c.0)
+    }
+}
+
+/// Phong shading of a run of pixels `i0, i0 + 1, …` in row `j`, all covered
+/// by triangle `t` (`out` holds their 8-bit RGB): per pixel the same
+/// interpolation and `lighting::shade` call as [`pixel_color`], with the
+/// triangle's data looked up once per run and its material recoloured in
+/// place instead of copied.
+pub fn phong_span(
+    t: &Tri,
+    c: &[Corner; 3],
+    look: &Look,
+    j: u32,
+    i0: u32,
+    out: &mut [u8],
+    ortho: bool,
+) {
+    let mut m = look.material.clone();
+    for (k, px) in out.chunks_exact_mut(3).enumerate() {
+        let mu = t.mu(i0 + k as u32, j);
+        let at = |k: usize| mu[0] * c[0][k] + mu[1] * c[1][k] + mu[2] * c[2][k];
+        let n = Vector3::new(at(3), at(4), at(5));
+        let p = Vector3::new(at(6), at(7), at(8));
+        m.color = [at(9), at(10), at(11)].map(Fast32);
+        px.copy_from_slice(&to_u8(lit(&m, &look.lights, n, p, ortho, &mut NoTrace)));
+    }
 }
 
 /// A material at [`Fast32`].
