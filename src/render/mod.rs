@@ -351,6 +351,9 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
             let raster_t = t.elapsed();
             let t = Instant::now();
             let (mut count, mut evals) = (0u64, 0u64);
+            // Working copies of the materials, recoloured per pixel by Phong.
+            let mut mats: Vec<Material<Fast32>> =
+                looks.iter().map(|l| l.material.clone()).collect();
             for (r, (orow, irow)) in out
                 .chunks_exact_mut(3 * w)
                 .zip(id.chunks_exact(w))
@@ -375,7 +378,16 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
                         let look = &looks[tri.obj as usize];
                         if look.shading == Shading::Phong {
                             evals += n;
-                            shade::phong_span(tri, c, look, j, i as u32, span, vs.ortho);
+                            shade::phong_span(
+                                tri,
+                                c,
+                                look,
+                                &mut mats[tri.obj as usize],
+                                j,
+                                i as u32,
+                                span,
+                                vs.ortho,
+                            );
                         } else {
                             for (k, px) in span.chunks_exact_mut(3).enumerate() {
                                 let col = pixel_color(

@@ -38,6 +38,17 @@ pub fn light_at(
     lit(m, lights, n, p, ortho, tr)
 }
 
+/// The unit normal shade takes, from an interpolated one (shorter than 1).
+#[inline(always)]
+fn unit_normal(n: Vector3<f32>) -> Vector3<f32> {
+    let len = n.norm();
+    if len > 0.0 {
+        n / len
+    } else {
+        n
+    }
+}
+
 /// `lighting::shade` of a material that already holds the surface colour,
 /// at the (not necessarily unit) normal `n` and eye-space point `p`.
 #[inline(always)]
@@ -49,10 +60,20 @@ fn lit<T: Trace>(
     ortho: bool,
     tr: &mut T,
 ) -> [f32; 3] {
+    lit_unit(m, lights, unit_normal(n), p, ortho, tr)
+}
+
+/// [`lit`] with the normal already a unit vector.
+#[inline(always)]
+fn lit_unit<T: Trace>(
+    m: &Material<Fast32>,
+    lights: &[Light<Fast32>],
+    n: Vector3<f32>,
+    p: Vector3<f32>,
+    ortho: bool,
+    tr: &mut T,
+) -> [f32; 3] {
     let f = |v: Vector3<f32>| Vector3::new(Fast32(v.x), Fast32(v.y), Fast32(v.z));
-    // shade takes a unit N (an interpolated normal is shorter than 1).
-    let len = n.norm();
-    let n = if len > 0.0 { n / len } else { n };
     // The tilt view's viewer is along +z; a camera is a local viewer at the
     // eye-space origin, V = norm(0 − P), which shade computes itself.
     let s = Surface {
@@ -74,23 +95,27 @@ fn lit<T: Trace>(
 /// interpolation and `lighting::shade` call as [`pixel_color`], with the
 /// triangle's data looked up once per run and its material recoloured in
 /// place instead of copied.
+///
+/// `m` is a working copy of the object's material (the caller keeps one per
+/// object and band, so no copy is made per run); its colour is overwritten.
+#[allow(clippy::too_many_arguments)]
 pub fn phong_span(
     t: &Tri,
     c: &[Corner; 3],
     look: &Look,
+    m: &mut Material<Fast32>,
     j: u32,
     i0: u32,
     out: &mut [u8],
     ortho: bool,
 ) {
-    let mut m = look.material.clone();
     for (k, px) in out.chunks_exact_mut(3).enumerate() {
         let mu = t.mu(i0 + k as u32, j);
         let at = |k: usize| mu[0] * c[0][k] + mu[1] * c[1][k] + mu[2] * c[2][k];
         let n = Vector3::new(at(3), at(4), at(5));
         let p = Vector3::new(at(6), at(7), at(8));
         m.color = [at(9), at(10), at(11)].map(Fast32);
-        px.copy_from_slice(&to_u8(lit(&m, &look.lights, n, p, ortho, &mut NoTrace)));
+        px.copy_from_slice(&to_u8(lit(m, &look.lights, n, p, ortho, &mut NoTrace)));
     }
 }
 
@@ -175,5 +200,7 @@ pub fn pixel_color(
 /// A colour 0…1 as 8-bit: round(255·c), clamped.
 #[inline]
 pub fn to_u8(c: [f32; 3]) -> [u8; 3] {
-    c.map(|x| (x.clamp(0.0, 1.0) * 255.0 + 0.5) as u8)
+    // 0 ≤ 255·c + ½ ≤ 255.5 after the clamp (NaN gives 0 either way), so
+    // the cheaper i32 conversion truncates to the same byte.
+    c.map(|x| (x.clamp(0.0, 1.0) * 255.0 + 0.5) as i32 as u8)
 }
