@@ -528,7 +528,7 @@ pub fn shade_with_ambient<T: Scalar>(
 /// per-pixel call. The same computation as [`shade`] (one body,
 /// [`shade_core`]), inlined into the caller so that the parts of the report
 /// nobody reads (R, H, the separate terms) are never built.
-#[inline]
+#[inline(always)]
 pub fn shade_color<T: Scalar>(mat: &Material<T>, lights: &[Light<T>], s: &Surface<T>) -> Rgb<T> {
     shade_core(
         mat,
