@@ -32,6 +32,7 @@ mod geometry;
 mod shade;
 
 use geometry::{prepare, triangles};
+use shade::Planes;
 pub use shade::{fast_light, fast_material, light_at, pixel_color, to_u8};
 
 /// Per-corner data of a triangle: lit colour (flat, Gouraud), eye-space
@@ -98,7 +99,7 @@ pub struct Stats {
     pub specular_skipped: u64,
     /// Time: transforms, culling, clipping, setup, per-face/vertex lighting.
     pub geometry: Duration,
-    /// Time: binning triangles into bands.
+    /// Time: binning triangles into bands, and Phong's attribute planes.
     pub binning: Duration,
     /// Thread time (summed over bands): visibility.
     pub raster: Duration,
@@ -331,6 +332,19 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
 
     let t1 = Instant::now();
     let bins = raster::bin(&tris, opt.height);
+
+    // Phong's attribute planes, once per triangle.
+    let planes: Vec<Planes> = tris
+        .par_iter()
+        .zip(corners.par_iter())
+        .map(|(t, c)| {
+            if looks[t.obj as usize].shading == Shading::Phong {
+                Planes::of(t, c)
+            } else {
+                Planes::default()
+            }
+        })
+        .collect();
     stats.binning = t1.elapsed();
 
     let progress = Progress::new(opt.progress, bins.len() as u64);
@@ -380,7 +394,7 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
                             evals += n;
                             shade::phong_span(
                                 tri,
-                                c,
+                                &planes[t as usize],
                                 look,
                                 &mut mats[tri.obj as usize],
                                 j,

@@ -90,18 +90,69 @@ fn lit_unit<T: Trace>(
     }
 }
 
+/// A triangle's Phong attributes as planes over the pixel grid: lane 0 is
+/// 1/w, lanes 1–9 are (normal, eye position, colour)/w, each
+/// `c0 + cx·di + cy·dj` with (di, dj) the pixel's offset from the corner
+/// (x0, y0) of the triangle's box. Quantities divided by w are affine in
+/// screen space, so one division per pixel (by the 1/w lane) gives the
+/// perspective-correct attributes: Σ λk·ak/wk / Σ λk/wk = Σ μk·ak.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Planes {
+    c0: [f32; 12],
+    cx: [f32; 12],
+    cy: [f32; 12],
+}
+
+impl Planes {
+    /// The planes of triangle `t` with corners `c` (from its screen
+    /// barycentric planes λ1, λ2 and its 1/w at the vertices).
+    pub fn of(t: &Tri, c: &[Corner; 3]) -> Planes {
+        let iw = t.inv_w.map(f64::from);
+        let (l1, l2) = (t.l1.map(f64::from), t.l2.map(f64::from));
+        let mut p = Planes::default();
+        for k in 0..10 {
+            // Lane k: ak/wk at the three vertices (a = 1 for lane 0).
+            let a = |v: usize| if k == 0 { 1.0 } else { f64::from(c[v][k + 2]) };
+            let q0 = iw[0] * a(0);
+            let (d1, d2) = (iw[1] * a(1) - q0, iw[2] * a(2) - q0);
+            // q = q0·λ0 + q1·λ1 + q2·λ2 with λ0 = 1 − λ1 − λ2.
+            p.c0[k] = (q0 + l1[0] * d1 + l2[0] * d2) as f32;
+            p.cx[k] = (l1[1] * d1 + l2[1] * d2) as f32;
+            p.cy[k] = (l1[2] * d1 + l2[2] * d2) as f32;
+        }
+        p
+    }
+
+    /// Unit normal, eye position and colour at pixel (i, j) of triangle `t`,
+    /// perspective-correct.
+    #[inline(always)]
+    fn at(&self, t: &Tri, i: u32, j: u32) -> (Vector3<f32>, Vector3<f32>, [f32; 3]) {
+        let (di, dj) = (i as f32 - t.bbox[0] as f32, j as f32 - t.bbox[2] as f32);
+        let mut q = [0.0f32; 12];
+        for (k, q) in q.iter_mut().enumerate() {
+            *q = self.c0[k] + self.cx[k] * di + self.cy[k] * dj;
+        }
+        // 1/w > 0 inside a clipped triangle; 0 would need w = ∞.
+        let r = if q[0] != 0.0 { 1.0 / q[0] } else { 0.0 };
+        let n = Vector3::new(q[1] * r, q[2] * r, q[3] * r);
+        let p = Vector3::new(q[4] * r, q[5] * r, q[6] * r);
+        (n, p, [q[7] * r, q[8] * r, q[9] * r])
+    }
+}
+
 /// Phong shading of a run of pixels `i0, i0 + 1, …` in row `j`, all covered
-/// by triangle `t` (`out` holds their 8-bit RGB): per pixel the same
-/// interpolation and `lighting::shade` call as [`pixel_color`], with the
-/// triangle's data looked up once per run and its material recoloured in
-/// place instead of copied.
+/// by triangle `t` with attribute planes `planes` ([`Planes::of`]; `out`
+/// holds their 8-bit RGB): per pixel the same interpolation and
+/// `lighting::shade` call as [`pixel_color`], with the triangle's data
+/// looked up once per run and its material recoloured in place instead of
+/// copied.
 ///
 /// `m` is a working copy of the object's material (the caller keeps one per
 /// object and band, so no copy is made per run); its colour is overwritten.
 #[allow(clippy::too_many_arguments)]
 pub fn phong_span(
     t: &Tri,
-    c: &[Corner; 3],
+    planes: &Planes,
     look: &Look,
     m: &mut Material<Fast32>,
     j: u32,
@@ -110,11 +161,8 @@ pub fn phong_span(
     ortho: bool,
 ) {
     for (k, px) in out.chunks_exact_mut(3).enumerate() {
-        let mu = t.mu(i0 + k as u32, j);
-        let at = |k: usize| mu[0] * c[0][k] + mu[1] * c[1][k] + mu[2] * c[2][k];
-        let n = Vector3::new(at(3), at(4), at(5));
-        let p = Vector3::new(at(6), at(7), at(8));
-        m.color = [at(9), at(10), at(11)].map(Fast32);
+        let (n, p, s) = planes.at(t, i0 + k as u32, j);
+        m.color = s.map(Fast32);
         px.copy_from_slice(&to_u8(lit(m, &look.lights, n, p, ortho, &mut NoTrace)));
     }
 }
@@ -187,11 +235,7 @@ pub fn pixel_color(
             [0, 1, 2].map(|k| m[0] * c[0][k] + m[1] * c[1][k] + m[2] * c[2][k])
         }
         Shading::Phong => {
-            let m = t.mu(i, j);
-            let at = |k: usize| m[0] * c[0][k] + m[1] * c[1][k] + m[2] * c[2][k];
-            let n = Vector3::new(at(3), at(4), at(5));
-            let p = Vector3::new(at(6), at(7), at(8));
-            let s = [at(9), at(10), at(11)];
+            let (n, p, s) = Planes::of(t, c).at(t, i, j);
             light_at(&look.material, &look.lights, s, n, p, ortho, tr)
         }
     }
