@@ -303,14 +303,17 @@ fn to_screen(c: &[f32; 4], win: &Window<f32>, w: f32, h: f32) -> ScreenVert {
 }
 
 /// The triangles of one object: cull, reject, light (flat: per face,
-/// Gouraud: per corner), clip, set up.
+/// Gouraud: per corner), clip, set up; appended to `tris` and `corners` in
+/// submission order (one copy from the parallel chunks).
 pub(super) fn triangles(
     p: &Prep,
     oi: u32,
     vs: &ViewSetup,
     scene: &Scene,
     opt: &Options,
-) -> (Vec<Tri>, Vec<[Corner; 3]>, Stats) {
+    tris: &mut Vec<Tri>,
+    corners: &mut Vec<[Corner; 3]>,
+) -> Stats {
     let mesh = &p.obj.mesh;
     let t = &p.obj.tris;
     let (w, h) = (opt.width, opt.height);
@@ -446,15 +449,15 @@ pub(super) fn triangles(
             (out, corners, st)
         })
         .collect();
-    let mut tris = Vec::new();
-    let mut corners = Vec::new();
     let mut st = Stats::default();
+    tris.reserve(chunks.iter().map(|c| c.0.len()).sum());
+    corners.reserve(chunks.iter().map(|c| c.1.len()).sum());
     for (t, c, s) in chunks {
         tris.extend(t);
         corners.extend(c);
         st.add(&s);
     }
-    (tris, corners, st)
+    st
 }
 
 /// The eye-space normal of polygon `f` (Newell's sum over its eye-space

@@ -318,9 +318,7 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
             });
             continue;
         };
-        let (t, c, s) = triangles(&p, oi as u32, &vs, scene, opt);
-        tris.extend(t);
-        corners.extend(c);
+        let s = triangles(&p, oi as u32, &vs, scene, opt, &mut tris, &mut corners);
         stats.add(&s);
         looks.push(Look {
             material: p.material,
