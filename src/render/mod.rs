@@ -149,6 +149,18 @@ pub struct Frame {
     pub ortho: bool,
     /// Counters and times.
     pub stats: Stats,
+    /// Buffers kept for the next frame.
+    scratch: Scratch,
+}
+
+/// Working buffers a frame hands on to the next (so a repeated render
+/// touches no fresh memory pages).
+#[derive(Clone, Debug, Default)]
+struct Scratch {
+    /// Phong's attribute planes per triangle.
+    planes: Vec<Planes>,
+    /// The geometry stage's per-chunk outputs.
+    chunks: Vec<geometry::ChunkBuf>,
 }
 
 /// How one object is shaded: its material, the lights that reach it and
@@ -294,14 +306,15 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
     let t0 = Instant::now();
     let vs = view_setup(scene, opt.width, opt.height)?;
     let n = (opt.width * opt.height) as usize;
-    let (mut tris, mut corners, mut depth, mut ids, mut rgb) = match prev {
-        Some(f) if f.rgb.len() == 3 * n => (f.tris, f.corners, f.depth, f.ids, f.rgb),
+    let (mut tris, mut corners, mut depth, mut ids, mut rgb, mut scratch) = match prev {
+        Some(f) if f.rgb.len() == 3 * n => (f.tris, f.corners, f.depth, f.ids, f.rgb, f.scratch),
         _ => (
             Vec::new(),
             Vec::new(),
             vec![0.0f32; n],
             vec![0u32; n],
             vec![0u8; 3 * n],
+            Scratch::default(),
         ),
     };
     tris.clear();
@@ -318,7 +331,16 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
             });
             continue;
         };
-        let s = triangles(&p, oi as u32, &vs, scene, opt, &mut tris, &mut corners);
+        let s = triangles(
+            &p,
+            oi as u32,
+            &vs,
+            scene,
+            opt,
+            &mut tris,
+            &mut corners,
+            &mut scratch.chunks,
+        );
         stats.add(&s);
         looks.push(Look {
             material: p.material,
@@ -332,17 +354,16 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
     let bins = raster::bin(&tris, opt.height);
 
     // Phong's attribute planes, once per triangle.
-    let planes: Vec<Planes> = tris
-        .par_iter()
-        .zip(corners.par_iter())
-        .map(|(t, c)| {
-            if looks[t.obj as usize].shading == Shading::Phong {
-                Planes::of(t, c)
-            } else {
-                Planes::default()
-            }
-        })
-        .collect();
+    let planes = &mut scratch.planes;
+    planes.clear();
+    planes.par_extend(tris.par_iter().zip(corners.par_iter()).map(|(t, c)| {
+        if looks[t.obj as usize].shading == Shading::Phong {
+            Planes::of(t, c)
+        } else {
+            Planes::default()
+        }
+    }));
+    let planes = &scratch.planes;
     stats.binning = t1.elapsed();
 
     let progress = Progress::new(opt.progress, bins.len() as u64);
@@ -442,6 +463,7 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
         looks,
         ortho: vs.ortho,
         stats,
+        scratch,
     })
 }
 
