@@ -2,7 +2,8 @@
 //! spot factor, cos α, R and cos β, the half vector H and the highlight.
 
 use super::{
-    label, listening, max0, pow, Light, LightKind, LightTerm, Material, Model, Rules, Surface,
+    label, listening, max0, pow, Light, LightKind, LightTerm, Material, Model, RuleSet, Surface,
+    TextRules,
 };
 use crate::num::Scalar;
 use crate::trace::{Step, Trace, Val};
@@ -11,6 +12,7 @@ use crate::vec::{add, dot, sub, V3};
 /// One light's geometry and factors at the point; `None` when the point is
 /// beyond the light's range (the light is not evaluated at all) or at the
 /// light's own position. `at` = (index, number of lights), for step titles.
+#[inline]
 pub fn light_term<T: Scalar>(
     mat: &Material<T>,
     light: &Light<T>,
@@ -20,19 +22,36 @@ pub fn light_term<T: Scalar>(
     want_spec: bool,
     tr: &mut impl Trace,
 ) -> Option<LightTerm<T>> {
-    light_term_with(mat, light, at, s, v, want_spec, &Rules::default(), tr)
+    light_term_with(mat, light, at, s, v, want_spec, &TextRules, tr)
 }
 
-/// [`light_term`] under the given [`Rules`] (the text's by default).
+/// [`light_term`] under the given rules ([`super::Rules`] or [`TextRules`]).
 #[allow(clippy::too_many_arguments)]
-pub fn light_term_with<T: Scalar>(
+#[inline]
+pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
     mat: &Material<T>,
     light: &Light<T>,
     at: (usize, usize),
     s: &Surface<T>,
     v: &V3<T>,
     want_spec: bool,
-    rules: &Rules<T>,
+    rules: &R,
+    tr: &mut impl Trace,
+) -> Option<LightTerm<T>> {
+    light_term_core(mat, light, at, s, v, want_spec, rules, tr)
+}
+
+/// The body of [`light_term_with`], always inlined (into `shade`'s core too).
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+pub(super) fn light_term_core<T: Scalar, R: RuleSet<T>>(
+    mat: &Material<T>,
+    light: &Light<T>,
+    at: (usize, usize),
+    s: &Surface<T>,
+    v: &V3<T>,
+    want_spec: bool,
+    rules: &R,
     tr: &mut impl Trace,
 ) -> Option<LightTerm<T>> {
     let n = &s.normal;
@@ -166,7 +185,7 @@ pub fn light_term_with<T: Scalar>(
         return Some(term);
     }
     let two_ln = T::from_i64(2) * term.cos_alpha.clone();
-    let r = (rules.reflect)(n, &term.l, &two_ln);
+    let r = rules.reflect(n, &term.l, &two_ln);
     let cos_beta = dot(&r, v);
     tr.step(|| {
         Step::new(
@@ -215,7 +234,7 @@ pub fn light_term_with<T: Scalar>(
     term.r = Some(r);
     term.cos_beta = Some(cos_beta);
     if active {
-        term.highlight = pow(&(rules.highlight_base)(&cos_spec), &mat.shininess);
+        term.highlight = pow(&rules.highlight_base(&cos_spec), &mat.shininess);
         tr.step(|| {
             let s = Step::new(
                 label(at, "highlight"),

@@ -396,15 +396,18 @@ pub fn unit<T: Scalar>(name: &str, field: &str, v: &V3<T>, tr: &mut impl Trace) 
 /// xⁿ: exact repeated multiplication for a whole n ≥ 0, otherwise through
 /// f64, marked approximate in exact arithmetic (Direct3D's Power and
 /// falloff may be fractional).
+#[inline]
 pub fn pow<T: Scalar>(x: &T, n: &T) -> T {
     let nf = n.to_f64();
-    if nf >= 0.0 && nf.fract() == 0.0 && nf <= f64::from(u32::MAX) {
+    // A whole n in u32's range: the cast round-trips exactly (no libm trunc).
+    if nf >= 0.0 && nf <= f64::from(u32::MAX) && f64::from(nf as u32) == nf {
         x.powi(nf as u32)
     } else {
         T::from_real(&crate::num::Real::Approx(x.to_f64().powf(nf)))
     }
 }
 
+#[inline]
 fn max0<T: Scalar>(x: &T) -> T {
     if *x > T::zero() {
         x.clone()
@@ -444,9 +447,51 @@ pub struct Rules<T> {
 impl<T: Scalar> Default for Rules<T> {
     fn default() -> Self {
         Rules {
-            reflect: |n, l, two_ln| sub(&crate::vec::scale(n, two_ln), l),
+            reflect: text_reflect,
             highlight_base: max0,
         }
+    }
+}
+
+/// The text's R = 2N(L·N) − L, from N, L and 2(L·N).
+#[inline]
+fn text_reflect<T: Scalar>(n: &V3<T>, l: &V3<T>, two_ln: &T) -> V3<T> {
+    sub(&crate::vec::scale(n, two_ln), l)
+}
+
+/// The two replaceable rules as a trait: [`Rules`] (functions chosen at run
+/// time, for `diagnose`) or [`TextRules`] (the text's, known at compile
+/// time, so the renderer's per-pixel call inlines them).
+pub trait RuleSet<T> {
+    /// R from N, L and 2(L·N).
+    fn reflect(&self, n: &V3<T>, l: &V3<T>, two_ln: &T) -> V3<T>;
+    /// The base of the highlight power.
+    fn highlight_base(&self, cos: &T) -> T;
+}
+
+impl<T: Scalar> RuleSet<T> for Rules<T> {
+    #[inline]
+    fn reflect(&self, n: &V3<T>, l: &V3<T>, two_ln: &T) -> V3<T> {
+        (self.reflect)(n, l, two_ln)
+    }
+    #[inline]
+    fn highlight_base(&self, cos: &T) -> T {
+        (self.highlight_base)(cos)
+    }
+}
+
+/// The text's rules, the same functions [`Rules::default`] holds.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct TextRules;
+
+impl<T: Scalar> RuleSet<T> for TextRules {
+    #[inline]
+    fn reflect(&self, n: &V3<T>, l: &V3<T>, two_ln: &T) -> V3<T> {
+        text_reflect(n, l, two_ln)
+    }
+    #[inline]
+    fn highlight_base(&self, cos: &T) -> T {
+        max0(cos)
     }
 }
 
@@ -457,6 +502,7 @@ fn rgb_val<T: Scalar>(c: &Rgb<T>) -> Val {
 /// The lighting of one point by `lights`, with no global ambient.
 ///
 /// See the module documentation for the formulas.
+#[inline]
 pub fn shade<T: Scalar>(
     mat: &Material<T>,
     lights: &[Light<T>],
@@ -467,6 +513,7 @@ pub fn shade<T: Scalar>(
 }
 
 /// [`shade`] with a global ambient light Ga (Direct3D's D3DRS_AMBIENT).
+#[inline]
 pub fn shade_with_ambient<T: Scalar>(
     mat: &Material<T>,
     lights: &[Light<T>],
@@ -474,16 +521,47 @@ pub fn shade_with_ambient<T: Scalar>(
     s: &Surface<T>,
     tr: &mut impl Trace,
 ) -> Shaded<T> {
-    shade_with_rules(mat, lights, global_ambient, s, &Rules::default(), tr)
+    shade_with_rules(mat, lights, global_ambient, s, &TextRules, tr)
 }
 
-/// [`shade_with_ambient`] under the given [`Rules`].
-pub fn shade_with_rules<T: Scalar>(
+/// The color alone of [`shade`], nothing recorded: the renderer's
+/// per-pixel call. The same computation as [`shade`] (one body,
+/// [`shade_core`]), inlined into the caller so that the parts of the report
+/// nobody reads (R, H, the separate terms) are never built.
+#[inline(always)]
+pub fn shade_color<T: Scalar>(mat: &Material<T>, lights: &[Light<T>], s: &Surface<T>) -> Rgb<T> {
+    shade_core(
+        mat,
+        lights,
+        &gray(T::zero()),
+        s,
+        &TextRules,
+        &mut crate::trace::NoTrace,
+    )
+    .color
+}
+
+/// [`shade_with_ambient`] under the given rules ([`Rules`] or [`TextRules`]).
+#[inline]
+pub fn shade_with_rules<T: Scalar, R: RuleSet<T>>(
     mat: &Material<T>,
     lights: &[Light<T>],
     global_ambient: &Rgb<T>,
     s: &Surface<T>,
-    rules: &Rules<T>,
+    rules: &R,
+    tr: &mut impl Trace,
+) -> Shaded<T> {
+    shade_core(mat, lights, global_ambient, s, rules, tr)
+}
+
+/// The body of every `shade*` function (always inlined into them).
+#[inline(always)]
+fn shade_core<T: Scalar, R: RuleSet<T>>(
+    mat: &Material<T>,
+    lights: &[Light<T>],
+    global_ambient: &Rgb<T>,
+    s: &Surface<T>,
+    rules: &R,
     tr: &mut impl Trace,
 ) -> Shaded<T> {
     let (want_a, want_d, want_s) = mat.model.terms();
@@ -497,7 +575,8 @@ pub fn shade_with_rules<T: Scalar>(
     let mut first: Option<LightTerm<T>> = None;
     let mut used = 0;
     for (i, light) in lights.iter().enumerate() {
-        let Some(t) = light_term_with(mat, light, (i, lights.len()), s, &v, want_spec, rules, tr)
+        let Some(t) =
+            light::light_term_core(mat, light, (i, lights.len()), s, &v, want_spec, rules, tr)
         else {
             continue;
         };
@@ -595,6 +674,7 @@ pub fn shade_with_rules<T: Scalar>(
 }
 
 /// V: the given unit view vector, or norm(Cp − Vp) with a local viewer.
+#[inline(always)]
 fn view_vector<T: Scalar>(s: &Surface<T>, tr: &mut impl Trace) -> V3<T> {
     let Some(cp) = &s.camera else {
         return s.view.clone();

@@ -232,6 +232,12 @@ pub(super) fn prepare<'a>(
     })
 }
 
+/// Triangles per parallel chunk of the geometry stage.
+const CHUNK: usize = 2048;
+
+/// One chunk's set-up triangles and corners (kept between frames).
+pub type ChunkBuf = (Vec<Tri>, Vec<[Corner; 3]>);
+
 /// A clip-space vertex with its corner data.
 #[derive(Clone, Copy)]
 struct CV {
@@ -303,24 +309,33 @@ fn to_screen(c: &[f32; 4], win: &Window<f32>, w: f32, h: f32) -> ScreenVert {
 }
 
 /// The triangles of one object: cull, reject, light (flat: per face,
-/// Gouraud: per corner), clip, set up.
+/// Gouraud: per corner), clip, set up; appended to `tris` and `corners` in
+/// submission order (one copy from the parallel chunks).
+#[allow(clippy::too_many_arguments)]
 pub(super) fn triangles(
     p: &Prep,
     oi: u32,
     vs: &ViewSetup,
     scene: &Scene,
     opt: &Options,
-) -> (Vec<Tri>, Vec<[Corner; 3]>, Stats) {
+    tris: &mut Vec<Tri>,
+    corners: &mut Vec<[Corner; 3]>,
+    pool: &mut Vec<ChunkBuf>,
+) -> Stats {
     let mesh = &p.obj.mesh;
     let t = &p.obj.tris;
     let (w, h) = (opt.width, opt.height);
-    let chunks: Vec<(Vec<Tri>, Vec<[Corner; 3]>, Stats)> = t
+    // Per-chunk output buffers from the previous frame (no fresh pages).
+    let n = t.tris.len().div_ceil(CHUNK);
+    let mut bufs: Vec<ChunkBuf> = (0..n).map(|_| pool.pop().unwrap_or_default()).collect();
+    let stats: Vec<Stats> = t
         .tris
-        .par_chunks(2048)
-        .zip(t.face.par_chunks(2048))
-        .map(|(tris, faces)| {
-            let mut out = Vec::with_capacity(tris.len());
-            let mut corners = Vec::with_capacity(tris.len());
+        .par_chunks(CHUNK)
+        .zip(t.face.par_chunks(CHUNK))
+        .zip(bufs.par_iter_mut())
+        .map(|((tris, faces), (out, corners))| {
+            out.clear();
+            corners.clear();
             let mut st = Stats::default();
             let (mut poly, mut tmp) = (Vec::with_capacity(9), Vec::with_capacity(9));
             for (tri, &face) in tris.iter().zip(faces) {
@@ -443,18 +458,19 @@ pub(super) fn triangles(
                     }
                 }
             }
-            (out, corners, st)
+            st
         })
         .collect();
-    let mut tris = Vec::new();
-    let mut corners = Vec::new();
     let mut st = Stats::default();
-    for (t, c, s) in chunks {
-        tris.extend(t);
-        corners.extend(c);
-        st.add(&s);
+    tris.reserve(bufs.iter().map(|c| c.0.len()).sum());
+    corners.reserve(bufs.iter().map(|c| c.1.len()).sum());
+    for ((t, c), s) in bufs.iter().zip(&stats) {
+        tris.extend_from_slice(t);
+        corners.extend_from_slice(c);
+        st.add(s);
     }
-    (tris, corners, st)
+    pool.extend(bufs);
+    st
 }
 
 /// The eye-space normal of polygon `f` (Newell's sum over its eye-space

@@ -32,6 +32,7 @@ mod geometry;
 mod shade;
 
 use geometry::{prepare, triangles};
+use shade::Planes;
 pub use shade::{fast_light, fast_material, light_at, pixel_color, to_u8};
 
 /// Per-corner data of a triangle: lit colour (flat, Gouraud), eye-space
@@ -98,7 +99,7 @@ pub struct Stats {
     pub specular_skipped: u64,
     /// Time: transforms, culling, clipping, setup, per-face/vertex lighting.
     pub geometry: Duration,
-    /// Time: binning triangles into bands.
+    /// Time: binning triangles into bands, and Phong's attribute planes.
     pub binning: Duration,
     /// Thread time (summed over bands): visibility.
     pub raster: Duration,
@@ -148,6 +149,18 @@ pub struct Frame {
     pub ortho: bool,
     /// Counters and times.
     pub stats: Stats,
+    /// Buffers kept for the next frame.
+    scratch: Scratch,
+}
+
+/// Working buffers a frame hands on to the next (so a repeated render
+/// touches no fresh memory pages).
+#[derive(Clone, Debug, Default)]
+struct Scratch {
+    /// Phong's attribute planes per triangle.
+    planes: Vec<Planes>,
+    /// The geometry stage's per-chunk outputs.
+    chunks: Vec<geometry::ChunkBuf>,
 }
 
 /// How one object is shaded: its material, the lights that reach it and
@@ -293,14 +306,15 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
     let t0 = Instant::now();
     let vs = view_setup(scene, opt.width, opt.height)?;
     let n = (opt.width * opt.height) as usize;
-    let (mut tris, mut corners, mut depth, mut ids, mut rgb) = match prev {
-        Some(f) if f.rgb.len() == 3 * n => (f.tris, f.corners, f.depth, f.ids, f.rgb),
+    let (mut tris, mut corners, mut depth, mut ids, mut rgb, mut scratch) = match prev {
+        Some(f) if f.rgb.len() == 3 * n => (f.tris, f.corners, f.depth, f.ids, f.rgb, f.scratch),
         _ => (
             Vec::new(),
             Vec::new(),
             vec![0.0f32; n],
             vec![0u32; n],
             vec![0u8; 3 * n],
+            Scratch::default(),
         ),
     };
     tris.clear();
@@ -317,9 +331,16 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
             });
             continue;
         };
-        let (t, c, s) = triangles(&p, oi as u32, &vs, scene, opt);
-        tris.extend(t);
-        corners.extend(c);
+        let s = triangles(
+            &p,
+            oi as u32,
+            &vs,
+            scene,
+            opt,
+            &mut tris,
+            &mut corners,
+            &mut scratch.chunks,
+        );
         stats.add(&s);
         looks.push(Look {
             material: p.material,
@@ -331,6 +352,18 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
 
     let t1 = Instant::now();
     let bins = raster::bin(&tris, opt.height);
+
+    // Phong's attribute planes, once per triangle.
+    let planes = &mut scratch.planes;
+    planes.clear();
+    planes.par_extend(tris.par_iter().zip(corners.par_iter()).map(|(t, c)| {
+        if looks[t.obj as usize].shading == Shading::Phong {
+            Planes::of(t, c)
+        } else {
+            Planes::default()
+        }
+    }));
+    let planes = &scratch.planes;
     stats.binning = t1.elapsed();
 
     let progress = Progress::new(opt.progress, bins.len() as u64);
@@ -351,35 +384,59 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
             let raster_t = t.elapsed();
             let t = Instant::now();
             let (mut count, mut evals) = (0u64, 0u64);
+            // Working copies of the materials, recoloured per pixel by Phong.
+            let mut mats: Vec<Material<Fast32>> =
+                looks.iter().map(|l| l.material.clone()).collect();
             for (r, (orow, irow)) in out
                 .chunks_exact_mut(3 * w)
                 .zip(id.chunks_exact(w))
                 .enumerate()
             {
                 let j = (band * BAND + r) as u32;
-                for (i, (px, &t)) in orow.chunks_exact_mut(3).zip(irow).enumerate() {
-                    let c = if t == NONE {
-                        bg
-                    } else {
-                        count += 1;
-                        let tri = &tris[t as usize];
-                        if looks[tri.obj as usize].shading == Shading::Phong {
-                            evals += 1;
+                // Runs of pixels covered by the same triangle (or none).
+                let mut i = 0;
+                while i < w {
+                    let t = irow[i];
+                    let end = irow[i..].iter().position(|&u| u != t).map_or(w, |k| i + k);
+                    let span = &mut orow[3 * i..3 * end];
+                    if t == NONE {
+                        for px in span.chunks_exact_mut(3) {
+                            px.copy_from_slice(&bg);
                         }
+                    } else {
+                        let n = (end - i) as u64;
+                        count += n;
+                        let tri = &tris[t as usize];
                         let c = &corners[t as usize];
-                        to_u8(pixel_color(
-                            tri,
-                            c,
-                            i as u32,
-                            j,
-                            &looks,
-                            vs.ortho,
-                            &mut NoTrace,
-                        ))
-                    };
-                    px[0] = c[0];
-                    px[1] = c[1];
-                    px[2] = c[2];
+                        let look = &looks[tri.obj as usize];
+                        if look.shading == Shading::Phong {
+                            evals += n;
+                            shade::phong_span(
+                                tri,
+                                &planes[t as usize],
+                                look,
+                                &mut mats[tri.obj as usize],
+                                j,
+                                i as u32,
+                                span,
+                                vs.ortho,
+                            );
+                        } else {
+                            for (k, px) in span.chunks_exact_mut(3).enumerate() {
+                                let col = pixel_color(
+                                    tri,
+                                    c,
+                                    (i + k) as u32,
+                                    j,
+                                    &looks,
+                                    vs.ortho,
+                                    &mut NoTrace,
+                                );
+                                px.copy_from_slice(&to_u8(col));
+                            }
+                        }
+                    }
+                    i = end;
                 }
             }
             progress.tick();
@@ -406,6 +463,7 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
         looks,
         ortho: vs.ortho,
         stats,
+        scratch,
     })
 }
 

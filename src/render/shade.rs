@@ -6,7 +6,7 @@ use crate::lighting::{self, Light, LightKind, Material, Surface};
 use crate::num::Fast32;
 use crate::raster::Tri;
 use crate::scene::Shading;
-use crate::trace::Trace;
+use crate::trace::{NoTrace, Trace};
 use nalgebra::Vector3;
 
 use super::{Corner, Look};
@@ -35,10 +35,45 @@ pub fn light_at(
         };
         &recoloured
     };
-    let f = |v: Vector3<f32>| Vector3::new(Fast32(v.x), Fast32(v.y), Fast32(v.z));
-    // shade takes a unit N (an interpolated normal is shorter than 1).
+    lit(m, lights, n, p, ortho, tr)
+}
+
+/// The unit normal shade takes, from an interpolated one (shorter than 1).
+#[inline(always)]
+fn unit_normal(n: Vector3<f32>) -> Vector3<f32> {
     let len = n.norm();
-    let n = if len > 0.0 { n / len } else { n };
+    if len > 0.0 {
+        n / len
+    } else {
+        n
+    }
+}
+
+/// `lighting::shade` of a material that already holds the surface colour,
+/// at the (not necessarily unit) normal `n` and eye-space point `p`.
+#[inline(always)]
+fn lit<T: Trace>(
+    m: &Material<Fast32>,
+    lights: &[Light<Fast32>],
+    n: Vector3<f32>,
+    p: Vector3<f32>,
+    ortho: bool,
+    tr: &mut T,
+) -> [f32; 3] {
+    lit_unit(m, lights, unit_normal(n), p, ortho, tr)
+}
+
+/// [`lit`] with the normal already a unit vector.
+#[inline(always)]
+fn lit_unit<T: Trace>(
+    m: &Material<Fast32>,
+    lights: &[Light<Fast32>],
+    n: Vector3<f32>,
+    p: Vector3<f32>,
+    ortho: bool,
+    tr: &mut T,
+) -> [f32; 3] {
+    let f = |v: Vector3<f32>| Vector3::new(Fast32(v.x), Fast32(v.y), Fast32(v.z));
     // The tilt view's viewer is along +z; a camera is a local viewer at the
     // eye-space origin, V = norm(0 − P), which shade computes itself.
     let s = Surface {
@@ -47,7 +82,89 @@ pub fn light_at(
         position: f(p),
         camera: if ortho { None } else { Some(Vector3::zeros()) },
     };
-    lighting::shade(m, lights, &s, tr).color.map(|c| c.0)
+    if T::ON {
+        lighting::shade(m, lights, &s, tr).color.map(|c| c.0)
+    } else {
+        // The same computation, the color alone (nothing is recorded).
+        lighting::shade_color(m, lights, &s).map(|c| c.0)
+    }
+}
+
+/// A triangle's Phong attributes as planes over the pixel grid: lane 0 is
+/// 1/w, lanes 1–9 are (normal, eye position, colour)/w, each
+/// `c0 + cx·di + cy·dj` with (di, dj) the pixel's offset from the corner
+/// (x0, y0) of the triangle's box. Quantities divided by w are affine in
+/// screen space, so one division per pixel (by the 1/w lane) gives the
+/// perspective-correct attributes: Σ λk·ak/wk / Σ λk/wk = Σ μk·ak.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Planes {
+    c0: [f32; 12],
+    cx: [f32; 12],
+    cy: [f32; 12],
+}
+
+impl Planes {
+    /// The planes of triangle `t` with corners `c` (from its screen
+    /// barycentric planes λ1, λ2 and its 1/w at the vertices).
+    pub fn of(t: &Tri, c: &[Corner; 3]) -> Planes {
+        let iw = t.inv_w.map(f64::from);
+        let (l1, l2) = (t.l1.map(f64::from), t.l2.map(f64::from));
+        let mut p = Planes::default();
+        for k in 0..10 {
+            // Lane k: ak/wk at the three vertices (a = 1 for lane 0).
+            let a = |v: usize| if k == 0 { 1.0 } else { f64::from(c[v][k + 2]) };
+            let q0 = iw[0] * a(0);
+            let (d1, d2) = (iw[1] * a(1) - q0, iw[2] * a(2) - q0);
+            // q = q0·λ0 + q1·λ1 + q2·λ2 with λ0 = 1 − λ1 − λ2.
+            p.c0[k] = (q0 + l1[0] * d1 + l2[0] * d2) as f32;
+            p.cx[k] = (l1[1] * d1 + l2[1] * d2) as f32;
+            p.cy[k] = (l1[2] * d1 + l2[2] * d2) as f32;
+        }
+        p
+    }
+
+    /// Unit normal, eye position and colour at pixel (i, j) of triangle `t`,
+    /// perspective-correct.
+    #[inline(always)]
+    fn at(&self, t: &Tri, i: u32, j: u32) -> (Vector3<f32>, Vector3<f32>, [f32; 3]) {
+        let (di, dj) = (i as f32 - t.bbox[0] as f32, j as f32 - t.bbox[2] as f32);
+        let mut q = [0.0f32; 12];
+        for (k, q) in q.iter_mut().enumerate() {
+            *q = self.c0[k] + self.cx[k] * di + self.cy[k] * dj;
+        }
+        // 1/w > 0 inside a clipped triangle; 0 would need w = ∞.
+        let r = if q[0] != 0.0 { 1.0 / q[0] } else { 0.0 };
+        let n = Vector3::new(q[1] * r, q[2] * r, q[3] * r);
+        let p = Vector3::new(q[4] * r, q[5] * r, q[6] * r);
+        (n, p, [q[7] * r, q[8] * r, q[9] * r])
+    }
+}
+
+/// Phong shading of a run of pixels `i0, i0 + 1, …` in row `j`, all covered
+/// by triangle `t` with attribute planes `planes` ([`Planes::of`]; `out`
+/// holds their 8-bit RGB): per pixel the same interpolation and
+/// `lighting::shade` call as [`pixel_color`], with the triangle's data
+/// looked up once per run and its material recoloured in place instead of
+/// copied.
+///
+/// `m` is a working copy of the object's material (the caller keeps one per
+/// object and band, so no copy is made per run); its colour is overwritten.
+#[allow(clippy::too_many_arguments)]
+pub fn phong_span(
+    t: &Tri,
+    planes: &Planes,
+    look: &Look,
+    m: &mut Material<Fast32>,
+    j: u32,
+    i0: u32,
+    out: &mut [u8],
+    ortho: bool,
+) {
+    for (k, px) in out.chunks_exact_mut(3).enumerate() {
+        let (n, p, s) = planes.at(t, i0 + k as u32, j);
+        m.color = s.map(Fast32);
+        px.copy_from_slice(&to_u8(lit(m, &look.lights, n, p, ortho, &mut NoTrace)));
+    }
 }
 
 /// A material at [`Fast32`].
@@ -118,11 +235,7 @@ pub fn pixel_color(
             [0, 1, 2].map(|k| m[0] * c[0][k] + m[1] * c[1][k] + m[2] * c[2][k])
         }
         Shading::Phong => {
-            let m = t.mu(i, j);
-            let at = |k: usize| m[0] * c[0][k] + m[1] * c[1][k] + m[2] * c[2][k];
-            let n = Vector3::new(at(3), at(4), at(5));
-            let p = Vector3::new(at(6), at(7), at(8));
-            let s = [at(9), at(10), at(11)];
+            let (n, p, s) = Planes::of(t, c).at(t, i, j);
             light_at(&look.material, &look.lights, s, n, p, ortho, tr)
         }
     }
@@ -131,5 +244,7 @@ pub fn pixel_color(
 /// A colour 0…1 as 8-bit: round(255·c), clamped.
 #[inline]
 pub fn to_u8(c: [f32; 3]) -> [u8; 3] {
-    c.map(|x| (x.clamp(0.0, 1.0) * 255.0 + 0.5) as u8)
+    // 0 ≤ 255·c + ½ ≤ 255.5 after the clamp (NaN gives 0 either way), so
+    // the cheaper i32 conversion truncates to the same byte.
+    c.map(|x| (x.clamp(0.0, 1.0) * 255.0 + 0.5) as i32 as u8)
 }
