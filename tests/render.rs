@@ -303,3 +303,50 @@ fn what_a_scene_does_not_need_is_skipped_and_counted() {
     // ka + kd·1 = 0.4 + 0.6 = 1 → white.
     assert_eq!(pixel(&f, 20, 20), [255, 255, 255]);
 }
+
+/// Every scene in problems/render/ renders (at a small size, to stay fast),
+/// writes a PNG of that size, and draws something besides the background.
+#[test]
+fn every_scene_in_problems_render_renders() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("problems/render");
+    let out = std::env::temp_dir().join(format!("grafika-scenes-{}", std::process::id()));
+    std::fs::create_dir_all(&out).unwrap();
+    let mut n = 0;
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "toml") {
+            continue;
+        }
+        let png = out.join(path.file_stem().unwrap()).with_extension("png");
+        grafika()
+            .args([
+                "render",
+                path.to_str().unwrap(),
+                "-o",
+                png.to_str().unwrap(),
+                "--width",
+                "160",
+                "--height",
+                "120",
+                "--json",
+            ])
+            .assert()
+            .success();
+        let decoder =
+            png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&png).unwrap()));
+        let mut reader = decoder.read_info().unwrap();
+        let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+        let info = reader.next_frame(&mut buf).unwrap();
+        assert_eq!((info.width, info.height), (160, 120), "{path:?}");
+        let px = info.line_size / info.width as usize;
+        let first = &buf[..px];
+        let drawn = buf[..info.buffer_size()]
+            .chunks(px)
+            .filter(|p| *p != first)
+            .count();
+        assert!(drawn > 100, "{path:?} drew only {drawn} pixels");
+        n += 1;
+    }
+    assert!(n >= 14, "expected the chapter's scenes, the camera scene, the bunny and the bench sphere; found {n}");
+    let _ = std::fs::remove_dir_all(&out);
+}
