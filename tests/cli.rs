@@ -444,3 +444,38 @@ fn bench_quick_prints_every_stage_and_precision() {
         assert!(s.contains(w), "{w} missing from\n{s}");
     }
 }
+
+#[test]
+fn own_problems_by_hand_in_exact_form() {
+    // view-surds: u = (4,0,−1)/√17, v = (−4,51,−16)/(13√17), n = (3,4,12)/13,
+    // A' = (4/√17, −4/(13√17), −166/13) — derived in the file's comments.
+    let v = json_ok(&["solve", "problems/view-surds.toml"]);
+    let e = &v["exact"]["view"];
+    assert_eq!(
+        e["u"],
+        serde_json::json!(["4*sqrt(17)/17", "0", "-sqrt(17)/17"])
+    );
+    assert_eq!(
+        e["v"],
+        serde_json::json!(["-4*sqrt(17)/221", "3*sqrt(17)/13", "-16*sqrt(17)/221"])
+    );
+    assert_eq!(e["n"], serde_json::json!(["3/13", "4/13", "12/13"]));
+    assert_eq!(
+        e["points"]["A"],
+        serde_json::json!(["4*sqrt(17)/17", "-4*sqrt(17)/221", "-166/13"])
+    );
+    // window-60: top = tan 30° = √3/3, right = 4√3/9; P pixel (320 + 120√3, 240 + 60√3).
+    let w = json_ok(&["solve", "problems/window-60.toml"]);
+    assert_eq!(w["exact"]["window"]["top"], "sqrt(3)/3");
+    assert_eq!(w["exact"]["window"]["right"], "4*sqrt(3)/9");
+    assert_eq!(
+        w["exact"]["viewport"]["pixels"]["P"],
+        serde_json::json!(["320+120*sqrt(3)", "240+60*sqrt(3)"])
+    );
+    // view-axis-aligned: P'' = (1/2, 1) lands on the top edge, pixel (75, 100).
+    let a = json_ok(&["solve", "problems/view-axis-aligned.toml"]);
+    assert_eq!(
+        a["exact"]["viewport"]["pixels"]["P"],
+        serde_json::json!(["75", "100"])
+    );
+}
