@@ -25,26 +25,11 @@ pub fn light_term<T: Scalar>(
     light_term_with(mat, light, at, s, v, want_spec, &TextRules, tr)
 }
 
-/// [`light_term`] under the given rules ([`super::Rules`] or [`TextRules`]).
-#[allow(clippy::too_many_arguments)]
-#[inline]
-pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
-    mat: &Material<T>,
-    light: &Light<T>,
-    at: (usize, usize),
-    s: &Surface<T>,
-    v: &V3<T>,
-    want_spec: bool,
-    rules: &R,
-    tr: &mut impl Trace,
-) -> Option<LightTerm<T>> {
-    light_term_core(mat, light, at, s, v, want_spec, rules, tr)
-}
-
-/// The body of [`light_term_with`], always inlined (into `shade`'s core too).
+/// [`light_term`] under the given rules ([`super::Rules`] or [`TextRules`]);
+/// always inlined (into `shade`'s body too).
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-pub(super) fn light_term_core<T: Scalar, R: RuleSet<T>>(
+pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
     mat: &Material<T>,
     light: &Light<T>,
     at: (usize, usize),

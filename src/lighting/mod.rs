@@ -526,11 +526,11 @@ pub fn shade_with_ambient<T: Scalar>(
 
 /// The color alone of [`shade`], nothing recorded: the renderer's
 /// per-pixel call. The same computation as [`shade`] (one body,
-/// [`shade_core`]), inlined into the caller so that the parts of the report
+/// [`shade_with_rules`]), inlined into the caller so that the parts of the report
 /// nobody reads (R, H, the separate terms) are never built.
 #[inline(always)]
 pub fn shade_color<T: Scalar>(mat: &Material<T>, lights: &[Light<T>], s: &Surface<T>) -> Rgb<T> {
-    shade_core(
+    shade_with_rules(
         mat,
         lights,
         &gray(T::zero()),
@@ -541,22 +541,10 @@ pub fn shade_color<T: Scalar>(mat: &Material<T>, lights: &[Light<T>], s: &Surfac
     .color
 }
 
-/// [`shade_with_ambient`] under the given rules ([`Rules`] or [`TextRules`]).
-#[inline]
-pub fn shade_with_rules<T: Scalar, R: RuleSet<T>>(
-    mat: &Material<T>,
-    lights: &[Light<T>],
-    global_ambient: &Rgb<T>,
-    s: &Surface<T>,
-    rules: &R,
-    tr: &mut impl Trace,
-) -> Shaded<T> {
-    shade_core(mat, lights, global_ambient, s, rules, tr)
-}
-
-/// The body of every `shade*` function (always inlined into them).
+/// [`shade_with_ambient`] under the given rules ([`Rules`] or [`TextRules`]):
+/// the body of every `shade*` function, always inlined into its caller.
 #[inline(always)]
-fn shade_core<T: Scalar, R: RuleSet<T>>(
+pub fn shade_with_rules<T: Scalar, R: RuleSet<T>>(
     mat: &Material<T>,
     lights: &[Light<T>],
     global_ambient: &Rgb<T>,
@@ -576,7 +564,7 @@ fn shade_core<T: Scalar, R: RuleSet<T>>(
     let mut used = 0;
     for (i, light) in lights.iter().enumerate() {
         let Some(t) =
-            light::light_term_core(mat, light, (i, lights.len()), s, &v, want_spec, rules, tr)
+            light::light_term_with(mat, light, (i, lights.len()), s, &v, want_spec, rules, tr)
         else {
             continue;
         };
