@@ -60,19 +60,7 @@ fn lit<T: Trace>(
     ortho: bool,
     tr: &mut T,
 ) -> [f32; 3] {
-    lit_unit(m, lights, unit_normal(n), p, ortho, tr)
-}
-
-/// [`lit`] with the normal already a unit vector.
-#[inline(always)]
-fn lit_unit<T: Trace>(
-    m: &Material<Fast32>,
-    lights: &[Light<Fast32>],
-    n: Vector3<f32>,
-    p: Vector3<f32>,
-    ortho: bool,
-    tr: &mut T,
-) -> [f32; 3] {
+    let n = unit_normal(n);
     let f = |v: Vector3<f32>| Vector3::new(Fast32(v.x), Fast32(v.y), Fast32(v.z));
     // The tilt view's viewer is along +z; a camera is a local viewer at the
     // eye-space origin, V = norm(0 − P), which shade computes itself.
