@@ -292,7 +292,13 @@ pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> 
         return Err(Error::new("ask", "nothing to solve: the file has no part that its data allow (camera + points, perspective, clip, shade)"));
     }
 
-    let (notes, comparison) = compare_printed(p, &result);
+    // Exact printed forms are compared to 1e-9 relative, or to what the
+    // precision itself can hold (f32 rounds at about 1e-7).
+    let rel = match T::PRECISION {
+        crate::num::Precision::F32 => 64.0 * f64::from(f32::EPSILON),
+        _ => 1e-9,
+    };
+    let (notes, comparison) = compare_printed(p, &result, rel);
     let mut report = crate::commands::report::<T>("solve", input_json(p), result, rec);
     report.notes = notes;
     if !p.source_notes.is_empty() {
@@ -466,9 +472,10 @@ fn flatten(prefix: &str, t: &toml::Table, out: &mut Vec<(String, toml::Value)>) 
 
 /// Whether a printed value agrees with a computed one: texts equal; numbers
 /// equal to the digits the text wrote (a printed 0.041 agrees with 0.04142),
-/// or to 1e-9 when the printed form is exact (−6/sqrt(2)); lists element by
-/// element (a printed (x, y) is compared with the first two of (x, y, z)).
-pub fn agrees(printed: &toml::Value, computed: &Val) -> Option<bool> {
+/// or to `rel` (relative, at least absolute near zero) when the printed form
+/// is exact (−6/sqrt(2)); lists element by element (a printed (x, y) is
+/// compared with the first two of (x, y, z)).
+pub fn agrees(printed: &toml::Value, computed: &Val, rel: f64) -> Option<bool> {
     match (printed, computed) {
         (toml::Value::Array(ps), Val::List(cs)) => {
             if ps.len() > cs.len() {
@@ -476,7 +483,7 @@ pub fn agrees(printed: &toml::Value, computed: &Val) -> Option<bool> {
             }
             let mut all = true;
             for (p, c) in ps.iter().zip(cs) {
-                all &= agrees(p, c)?;
+                all &= agrees(p, c, rel)?;
             }
             Some(all)
         }
@@ -490,7 +497,7 @@ pub fn agrees(printed: &toml::Value, computed: &Val) -> Option<bool> {
             };
             let e: Expr = crate::num::parse_expr(&text.replace(',', ".")).ok()?;
             let v: f64 = e.eval::<f64>().ok()?;
-            Some((v - c.value).abs() <= written_tolerance(&text).max(1e-9 * c.value.abs().max(1.0)))
+            Some((v - c.value).abs() <= written_tolerance(&text).max(rel * c.value.abs().max(1.0)))
         }
         (toml::Value::String(s), Val::Null) => Some(s == "none" || s == "null"),
         _ => None,
@@ -517,7 +524,7 @@ fn written_tolerance(text: &str) -> f64 {
 }
 
 /// Compares every `[printed]` answer with the computed results.
-fn compare_printed(p: &ProblemIn, result: &[(String, Val)]) -> (Vec<String>, Vec<Value>) {
+fn compare_printed(p: &ProblemIn, result: &[(String, Val)], rel: f64) -> (Vec<String>, Vec<Value>) {
     let mut flat = Vec::new();
     flatten("", &p.printed, &mut flat);
     if flat.is_empty() {
@@ -539,7 +546,7 @@ fn compare_printed(p: &ProblemIn, result: &[(String, Val)]) -> (Vec<String>, Vec
             .map(|e| e.why.clone());
         match lookup(result, key) {
             Some(val) => {
-                let ok = agrees(printed, val);
+                let ok = agrees(printed, val, rel);
                 let computed = style.val_inline(val);
                 let line = match ok {
                     Some(true) => format!("  {key}: printed {shown} — agrees"),

@@ -117,6 +117,36 @@ fn text_triangle_finds_the_texts_wrong_answers() {
 }
 
 #[test]
+fn printed_exact_forms_agree_at_every_precision() {
+    // Regression: at f32 the text's exact A' = (0, −1, −6/√2) was reported as
+    // wrong, because it was compared to 1e-9 while f32 rounds at about 1e-7.
+    // The same answers must agree or differ whatever the precision.
+    let wrong = |p: &str| -> Vec<String> {
+        let v = json_ok(&["solve", "problems/text-triangle.toml", "--precision", p]);
+        v["comparison"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|c| c["agrees"] == false)
+            .map(|c| c["key"].as_str().unwrap().to_string())
+            .collect()
+    };
+    let exact = wrong("exact");
+    assert_eq!(
+        exact,
+        [
+            "project.points.B",
+            "project.points.C",
+            "window.right",
+            "window.height",
+            "window.width"
+        ]
+    );
+    assert_eq!(wrong("f64"), exact);
+    assert_eq!(wrong("f32"), exact);
+}
+
+#[test]
 fn text_clip_example_by_hand() {
     let v = json_ok(&["solve", "problems/text-clip.toml", "--precision", "f64"]);
     let c = &v["result"]["clip"];
