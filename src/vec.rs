@@ -9,13 +9,13 @@ use nalgebra::Vector3;
 pub type V3<T> = Vector3<T>;
 
 /// (x, y, z).
-#[inline]
+#[inline(always)]
 pub fn v3<T: Scalar>(x: T, y: T, z: T) -> V3<T> {
     Vector3::new(x, y, z)
 }
 
 /// a − b.
-#[inline]
+#[inline(always)]
 pub fn sub<T: Scalar>(a: &V3<T>, b: &V3<T>) -> V3<T> {
     v3(
         a[0].clone() - b[0].clone(),
@@ -25,7 +25,7 @@ pub fn sub<T: Scalar>(a: &V3<T>, b: &V3<T>) -> V3<T> {
 }
 
 /// a + b.
-#[inline]
+#[inline(always)]
 pub fn add<T: Scalar>(a: &V3<T>, b: &V3<T>) -> V3<T> {
     v3(
         a[0].clone() + b[0].clone(),
@@ -35,7 +35,7 @@ pub fn add<T: Scalar>(a: &V3<T>, b: &V3<T>) -> V3<T> {
 }
 
 /// s·a.
-#[inline]
+#[inline(always)]
 pub fn scale<T: Scalar>(a: &V3<T>, s: &T) -> V3<T> {
     v3(
         a[0].clone() * s.clone(),
@@ -45,7 +45,7 @@ pub fn scale<T: Scalar>(a: &V3<T>, s: &T) -> V3<T> {
 }
 
 /// a / s (s ≠ 0; the caller checks).
-#[inline]
+#[inline(always)]
 pub fn div<T: Scalar>(a: &V3<T>, s: &T) -> V3<T> {
     v3(
         a[0].clone() / s.clone(),
@@ -55,14 +55,14 @@ pub fn div<T: Scalar>(a: &V3<T>, s: &T) -> V3<T> {
 }
 
 /// a · b = a₀b₀ + a₁b₁ + a₂b₂ (compensated in floats).
-#[inline]
+#[inline(always)]
 pub fn dot<T: Scalar>(a: &V3<T>, b: &V3<T>) -> T {
     T::dot3([&a[0], &a[1], &a[2]], [&b[0], &b[1], &b[2]])
 }
 
 /// a × b = (a₁b₂ − a₂b₁, a₂b₀ − a₀b₂, a₀b₁ − a₁b₀), each component a
 /// difference of products with one rounding.
-#[inline]
+#[inline(always)]
 pub fn cross<T: Scalar>(a: &V3<T>, b: &V3<T>) -> V3<T> {
     v3(
         T::diff_of_products(&a[1], &b[2], &a[2], &b[1]),
@@ -72,13 +72,13 @@ pub fn cross<T: Scalar>(a: &V3<T>, b: &V3<T>) -> V3<T> {
 }
 
 /// |a| = √(a·a), without overflow or underflow in floats.
-#[inline]
+#[inline(always)]
 pub fn norm<T: Scalar>(a: &V3<T>) -> T {
     T::hypot3(&a[0], &a[1], &a[2])
 }
 
 /// a / |a|, or `None` when a is the zero vector.
-#[inline]
+#[inline(always)]
 pub fn normalize<T: Scalar>(a: &V3<T>) -> Option<(V3<T>, T)> {
     let m = norm(a);
     if m.is_zero_value() {

@@ -40,6 +40,8 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
     tr: &mut impl Trace,
 ) -> Option<LightTerm<T>> {
     let n = &s.normal;
+    // Lanes of a lane type that the light does not reach: 0 there, else 1.
+    let mut keep: Option<T> = None;
     // Direction to the light, distance and range
     let (l, distance) = match &light.kind {
         LightKind::Directional { dir } => (dir.clone(), None),
@@ -64,6 +66,16 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
             let d = d2.sqrt();
             if d.is_zero_value() {
                 return None;
+            }
+            // A lane type reaches here when *some* lane is in range and away
+            // from the light: the others get nothing from it, as a scalar
+            // that returned above (no work for a one-lane scalar).
+            if T::LANES > 1 {
+                let reach = d.if_gt(&T::zero(), T::one, T::zero);
+                keep = Some(match &light.range {
+                    Some(r) => d2.if_gt(&(r.clone() * r.clone()), T::zero, || reach),
+                    None => reach,
+                });
             }
             let l = crate::vec::div(&to, &d);
             tr.step(|| {
@@ -91,6 +103,10 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
             let den =
                 a[0].clone() + a[1].clone() * d.clone() + a[2].clone() * d.clone() * d.clone();
             let att = T::one() / den.clone();
+            let att = match &keep {
+                Some(k) => att * k.clone(),
+                None => att,
+            };
             tr.step(|| {
                 Step::new(label(at, "attenuation"), "Att = 1/(a0 + a1·d + a2·d²)")
                     .val("(a0, a1, a2)", Val::List(a.iter().map(Val::num).collect()))
@@ -152,7 +168,8 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
     });
 
     // Specular: R and cos β (Phong), or H and N·H (Blinn)
-    let lit = cos_alpha > T::zero();
+    // cos α > 0 (in some lane, for a lane type).
+    let lit = cos_alpha.any_gt(&T::zero());
     let active = want_spec && (lit || !mat.specular_requires_lit);
     let mut term = LightTerm {
         l,
@@ -219,7 +236,14 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
     term.r = Some(r);
     term.cos_beta = Some(cos_beta);
     if active {
-        term.highlight = pow(&rules.highlight_base(&cos_spec), &mat.shininess);
+        let highlight = || pow(&rules.highlight_base(&cos_spec), &mat.shininess);
+        term.highlight = if mat.specular_requires_lit {
+            // Only where cos α > 0 (every lane but those of a lane type
+            // that are unlit).
+            term.cos_alpha.if_gt(&T::zero(), highlight, T::zero)
+        } else {
+            highlight()
+        };
         tr.step(|| {
             let s = Step::new(
                 label(at, "highlight"),
@@ -266,15 +290,21 @@ pub fn spot_factor<T: Scalar>(
     let rho = -dot(l, axis);
     let cos_t = (theta.clone() / two.clone()).cos_deg();
     let cos_p = (phi.clone() / two).cos_deg();
-    let (f, where_) = if rho >= cos_t {
-        (T::one(), "inside the inner cone (ρ ≥ cos(θ/2)): full light")
-    } else if rho <= cos_p {
-        (T::zero(), "outside the outer cone (ρ ≤ cos(φ/2)): no light")
-    } else {
+    // 1 where ρ ≥ cos(θ/2), else 0 where ρ ≤ cos(φ/2), else the penumbra
+    // (per lane for a lane type).
+    let penumbra = || {
         let x = (rho.clone() - cos_p.clone()) / (cos_t.clone() - cos_p.clone());
-        (pow(&x, falloff), "in the penumbra: between the cones")
+        pow(&x, falloff)
     };
+    let f = cos_t.if_gt(&rho, || rho.if_gt(&cos_p, penumbra, T::zero), T::one);
     tr.step(|| {
+        let where_ = if rho >= cos_t {
+            "inside the inner cone (ρ ≥ cos(θ/2)): full light"
+        } else if rho <= cos_p {
+            "outside the outer cone (ρ ≤ cos(φ/2)): no light"
+        } else {
+            "in the penumbra: between the cones"
+        };
         Step::new(
             label(at, "spot factor"),
             "ρ = (−L)·axis;  Spot = 1 if ρ ≥ cos(θ/2), 0 if ρ ≤ cos(φ/2), else ((ρ − cos(φ/2))/(cos(θ/2) − cos(φ/2)))^falloff",

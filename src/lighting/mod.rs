@@ -396,24 +396,18 @@ pub fn unit<T: Scalar>(name: &str, field: &str, v: &V3<T>, tr: &mut impl Trace) 
 /// xⁿ: exact repeated multiplication for a whole n ≥ 0, otherwise through
 /// f64, marked approximate in exact arithmetic (Direct3D's Power and
 /// falloff may be fractional).
-#[inline]
+#[inline(always)]
 pub fn pow<T: Scalar>(x: &T, n: &T) -> T {
-    let nf = n.to_f64();
-    // A whole n in u32's range: the cast round-trips exactly (no libm trunc).
-    if nf >= 0.0 && nf <= f64::from(u32::MAX) && f64::from(nf as u32) == nf {
-        x.powi(nf as u32)
-    } else {
-        T::from_real(&crate::num::Real::Approx(x.to_f64().powf(nf)))
+    match n.as_whole() {
+        Some(k) => x.powi(k),
+        None => x.powf(n),
     }
 }
 
-#[inline]
+/// max(x, 0) (per lane for a lane type).
+#[inline(always)]
 fn max0<T: Scalar>(x: &T) -> T {
-    if *x > T::zero() {
-        x.clone()
-    } else {
-        T::zero()
-    }
+    x.max_of(&T::zero())
 }
 
 fn listening<Tr: Trace>(_: &Tr) -> bool {
@@ -454,7 +448,7 @@ impl<T: Scalar> Default for Rules<T> {
 }
 
 /// The text's R = 2N(L·N) − L, from N, L and 2(L·N).
-#[inline]
+#[inline(always)]
 fn text_reflect<T: Scalar>(n: &V3<T>, l: &V3<T>, two_ln: &T) -> V3<T> {
     sub(&crate::vec::scale(n, two_ln), l)
 }
@@ -485,14 +479,20 @@ impl<T: Scalar> RuleSet<T> for Rules<T> {
 pub struct TextRules;
 
 impl<T: Scalar> RuleSet<T> for TextRules {
-    #[inline]
+    #[inline(always)]
     fn reflect(&self, n: &V3<T>, l: &V3<T>, two_ln: &T) -> V3<T> {
         text_reflect(n, l, two_ln)
     }
-    #[inline]
+    #[inline(always)]
     fn highlight_base(&self, cos: &T) -> T {
         max0(cos)
     }
+}
+
+/// [f(0), f(1), f(2)], always inlined (the per-pixel path).
+#[inline(always)]
+fn per_channel<T>(mut f: impl FnMut(usize) -> T) -> Rgb<T> {
+    [f(0), f(1), f(2)]
 }
 
 fn rgb_val<T: Scalar>(c: &Rgb<T>) -> Val {
@@ -584,29 +584,28 @@ pub fn shade_with_rules<T: Scalar, R: RuleSet<T>>(
 
     // The three terms, the sum and the clamp
     let ca = mat.ambient_color.as_ref().unwrap_or(&mat.color);
-    let term = |on: bool, k: &T, sum: &Rgb<T>, col: &Rgb<T>| -> Rgb<T> {
-        std::array::from_fn(|c| {
+    /// k·sum⊙col, or zero when the model has no such term.
+    #[inline(always)]
+    fn term<T: Scalar>(on: bool, k: &T, sum: &Rgb<T>, col: &Rgb<T>) -> Rgb<T> {
+        per_channel(|c| {
             if on {
                 k.clone() * sum[c].clone() * col[c].clone()
             } else {
                 T::zero()
             }
         })
-    };
+    }
     let ambient = term(want_a, &mat.ka, &sum_a, ca);
     let diffuse = term(want_d, &mat.kd, &sum_d, &mat.color);
     let specular = term(want_spec, &mat.ks, &sum_s, &mat.specular);
     let emissive = mat.emissive.clone();
-    let unclamped: Rgb<T> = std::array::from_fn(|c| {
+    let unclamped: Rgb<T> = per_channel(|c| {
         ambient[c].clone() + diffuse[c].clone() + specular[c].clone() + emissive[c].clone()
     });
-    let color: Rgb<T> = std::array::from_fn(|c| {
+    let color: Rgb<T> = per_channel(|c| {
         let x = &unclamped[c];
-        if *x > T::one() {
-            T::one()
-        } else {
-            max0(x)
-        }
+        // min(x, 1), then max(·, 0): 1 above, 0 below (and for NaN).
+        max0(&x.min_of(&T::one()))
     });
     record_totals(
         mat,

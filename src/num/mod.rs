@@ -9,10 +9,12 @@
 pub mod expr;
 pub mod fast;
 mod float;
+pub mod lanes;
 pub mod real;
 
 pub use expr::{parse_expr, parse_vec3, Angle, AngleUnit, Expr};
 pub use fast::Fast32;
+pub use lanes::F32x8;
 pub use real::Real;
 
 use std::fmt::Debug;
@@ -72,6 +74,9 @@ pub trait Scalar:
 {
     /// The name of the precision, as `--precision` spells it.
     const PRECISION: Precision;
+    /// How many values one number holds: 1, or 8 for the renderer's batch
+    /// type [`F32x8`], whose lanes may fall on both sides of a comparison.
+    const LANES: usize = 1;
 
     /// The value of an exact number at this precision (nearest float).
     fn from_real(x: &Real) -> Self;
@@ -109,6 +114,44 @@ pub trait Scalar:
             e >>= 1;
         }
         acc
+    }
+    /// xⁿ for any n (an approximation through f64, marked `≈` in `Real`).
+    fn powf(&self, n: &Self) -> Self {
+        Self::from_real(&Real::Approx(self.to_f64().powf(n.to_f64())))
+    }
+    /// n, when this number is a whole number 0 ≤ n ≤ u32::MAX.
+    fn as_whole(&self) -> Option<u32> {
+        let x = self.to_f64();
+        // The cast round-trips exactly for a whole x in range (no libm trunc).
+        (x >= 0.0 && x <= f64::from(u32::MAX) && f64::from(x as u32) == x).then_some(x as u32)
+    }
+    /// `a()` where self > o, `b()` elsewhere. A scalar runs one branch; a
+    /// lane type ([`F32x8`]) decides per lane and runs a branch only if some
+    /// lane takes it.
+    #[inline(always)]
+    fn if_gt(&self, o: &Self, a: impl FnOnce() -> Self, b: impl FnOnce() -> Self) -> Self {
+        if self > o {
+            a()
+        } else {
+            b()
+        }
+    }
+    /// self > o (in some lane, for a lane type; a scalar has one).
+    #[inline(always)]
+    fn any_gt(&self, o: &Self) -> bool {
+        self > o
+    }
+    /// max(self, o) as `if self > o { self } else { o }` (per lane for a
+    /// lane type, where it is one instruction).
+    #[inline(always)]
+    fn max_of(&self, o: &Self) -> Self {
+        self.if_gt(o, || self.clone(), || o.clone())
+    }
+    /// min(self, o) as `if self > o { o } else { self }` (per lane for a
+    /// lane type, where it is one instruction).
+    #[inline(always)]
+    fn min_of(&self, o: &Self) -> Self {
+        self.if_gt(o, || o.clone(), || self.clone())
     }
     /// π (an approximation in every precision, marked `≈` in `Real`).
     fn pi() -> Self;

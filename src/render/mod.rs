@@ -18,8 +18,8 @@
 
 use crate::error::{Error, Result};
 use crate::lighting::{Light, Material};
-use crate::num::Fast32;
-use crate::raster::{self, Tri, BAND, NONE};
+use crate::num::{F32x8, Fast32};
+use crate::raster::{self, Tri, BAND};
 use crate::scene::{Normals, Scene, Shading, View};
 use crate::trace::NoTrace;
 use crate::window::Window;
@@ -366,9 +366,26 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
     let planes = &scratch.planes;
     stats.binning = t1.elapsed();
 
+    // Each object's material and lights at eight lanes, for Phong's batches.
+    let wide: Vec<(Material<F32x8>, Vec<Light<F32x8>>)> = looks
+        .iter()
+        .map(|l| {
+            let lights = l.lights.iter().map(shade::light_as).collect();
+            (shade::material_as(&l.material), lights)
+        })
+        .collect();
+    let band_in = shade::BandInput {
+        tris: &tris,
+        corners: &corners,
+        planes,
+        looks: &looks,
+        wide: &wide,
+        ortho: vs.ortho,
+        bg: to_u8(scene.background),
+        width: opt.width as usize,
+    };
     let progress = Progress::new(opt.progress, bins.len() as u64);
     let t2 = Instant::now();
-    let bg = to_u8(scene.background);
     let w = opt.width as usize;
     // One pass over bands in parallel: the band's visibility (nearest
     // triangle per pixel), then its shading while the band is in cache.
@@ -383,62 +400,7 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
             raster::visibility_band(&tris, bin, (band * BAND) as u32, w, dz, id);
             let raster_t = t.elapsed();
             let t = Instant::now();
-            let (mut count, mut evals) = (0u64, 0u64);
-            // Working copies of the materials, recoloured per pixel by Phong.
-            let mut mats: Vec<Material<Fast32>> =
-                looks.iter().map(|l| l.material.clone()).collect();
-            for (r, (orow, irow)) in out
-                .chunks_exact_mut(3 * w)
-                .zip(id.chunks_exact(w))
-                .enumerate()
-            {
-                let j = (band * BAND + r) as u32;
-                // Runs of pixels covered by the same triangle (or none).
-                let mut i = 0;
-                while i < w {
-                    let t = irow[i];
-                    let end = irow[i..].iter().position(|&u| u != t).map_or(w, |k| i + k);
-                    let span = &mut orow[3 * i..3 * end];
-                    if t == NONE {
-                        for px in span.chunks_exact_mut(3) {
-                            px.copy_from_slice(&bg);
-                        }
-                    } else {
-                        let n = (end - i) as u64;
-                        count += n;
-                        let tri = &tris[t as usize];
-                        let c = &corners[t as usize];
-                        let look = &looks[tri.obj as usize];
-                        if look.shading == Shading::Phong {
-                            evals += n;
-                            shade::phong_span(
-                                tri,
-                                &planes[t as usize],
-                                look,
-                                &mut mats[tri.obj as usize],
-                                j,
-                                i as u32,
-                                span,
-                                vs.ortho,
-                            );
-                        } else {
-                            for (k, px) in span.chunks_exact_mut(3).enumerate() {
-                                let col = pixel_color(
-                                    tri,
-                                    c,
-                                    (i + k) as u32,
-                                    j,
-                                    &looks,
-                                    vs.ortho,
-                                    &mut NoTrace,
-                                );
-                                px.copy_from_slice(&to_u8(col));
-                            }
-                        }
-                    }
-                    i = end;
-                }
-            }
+            let (count, evals) = shade::shade_band(&band_in, (band * BAND) as u32, out, id);
             progress.tick();
             (count, evals, raster_t, t.elapsed())
         })

@@ -3,8 +3,9 @@
 //! colour of a covered pixel.
 
 use crate::lighting::{self, Light, LightKind, Material, Surface};
-use crate::num::Fast32;
-use crate::raster::Tri;
+use crate::num::lanes::Mask;
+use crate::num::{F32x8, Fast32, Scalar};
+use crate::raster::{Tri, NONE};
 use crate::scene::Shading;
 use crate::trace::{NoTrace, Trace};
 use nalgebra::Vector3;
@@ -35,61 +36,66 @@ pub fn light_at(
         };
         &recoloured
     };
-    lit(m, lights, n, p, ortho, tr)
-}
-
-/// The unit normal shade takes, from an interpolated one (shorter than 1).
-#[inline(always)]
-fn unit_normal(n: Vector3<f32>) -> Vector3<f32> {
-    let len = n.norm();
-    if len > 0.0 {
-        n / len
-    } else {
-        n
-    }
+    lit(m, lights, n.map(Fast32), p.map(Fast32), ortho, tr).map(|c| c.0)
 }
 
 /// `lighting::shade` of a material that already holds the surface colour,
-/// at the (not necessarily unit) normal `n` and eye-space point `p`.
+/// at the normal `n` made a unit vector, n·(1/|n|) (an interpolated normal is
+/// shorter than 1), and the eye-space point `p`: one pixel at [`Fast32`],
+/// or eight at once at [`F32x8`] (lane k then is bit for bit the `Fast32`
+/// result for lane k's inputs).
 #[inline(always)]
-fn lit<T: Trace>(
-    m: &Material<Fast32>,
-    lights: &[Light<Fast32>],
-    n: Vector3<f32>,
-    p: Vector3<f32>,
+fn lit<T: Scalar, Tr: Trace>(
+    m: &Material<T>,
+    lights: &[Light<T>],
+    n: Vector3<T>,
+    p: Vector3<T>,
     ortho: bool,
-    tr: &mut T,
-) -> [f32; 3] {
-    let n = unit_normal(n);
-    let f = |v: Vector3<f32>| Vector3::new(Fast32(v.x), Fast32(v.y), Fast32(v.z));
+    tr: &mut Tr,
+) -> [T; 3] {
+    let len = T::hypot3(&n[0], &n[1], &n[2]);
+    let inv = len.if_gt(&T::zero(), || T::one() / len.clone(), T::one);
+    let n = crate::vec::scale(&n, &inv);
+    let (o, i) = (T::zero(), T::one());
     // The tilt view's viewer is along +z; a camera is a local viewer at the
     // eye-space origin, V = norm(0 − P), which shade computes itself.
     let s = Surface {
-        normal: f(n),
-        view: f(Vector3::new(0.0, 0.0, 1.0)),
-        position: f(p),
-        camera: if ortho { None } else { Some(Vector3::zeros()) },
+        normal: n,
+        view: Vector3::new(o.clone(), o.clone(), i),
+        position: p,
+        camera: if ortho {
+            None
+        } else {
+            Some(Vector3::new(o.clone(), o.clone(), o))
+        },
     };
-    if T::ON {
-        lighting::shade(m, lights, &s, tr).color.map(|c| c.0)
+    if Tr::ON {
+        lighting::shade(m, lights, &s, tr).color
     } else {
         // The same computation, the color alone (nothing is recorded).
-        lighting::shade_color(m, lights, &s).map(|c| c.0)
+        lighting::shade_color(m, lights, &s)
     }
 }
 
 /// A triangle's Phong attributes as planes over the pixel grid: lane 0 is
 /// 1/w, lanes 1–9 are (normal, eye position, colour)/w, each
 /// `c0 + cx·di + cy·dj` with (di, dj) the pixel's offset from the corner
-/// (x0, y0) of the triangle's box. Quantities divided by w are affine in
-/// screen space, so one division per pixel (by the 1/w lane) gives the
-/// perspective-correct attributes: Σ λk·ak/wk / Σ λk/wk = Σ μk·ak.
+/// `origin` = (x0, y0) of the triangle's box. Quantities divided by w are
+/// affine in screen space, so one division per pixel (by the 1/w lane)
+/// gives the perspective-correct attributes: Σ λk·ak/wk / Σ λk/wk = Σ μk·ak.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Planes {
     c0: [f32; 12],
     cx: [f32; 12],
     cy: [f32; 12],
+    origin: [f32; 2],
+    /// The surface colour when the three corners have the same one (then
+    /// it is not interpolated: the colour of every pixel is exactly it).
+    solid: Option<[f32; 3]>,
 }
+
+/// Attribute lanes of a plane: 1/w, N/w, P/w, C/w.
+const ATTRS: usize = 10;
 
 impl Planes {
     /// The planes of triangle `t` with corners `c` (from its screen
@@ -97,8 +103,11 @@ impl Planes {
     pub fn of(t: &Tri, c: &[Corner; 3]) -> Planes {
         let iw = t.inv_w.map(f64::from);
         let (l1, l2) = (t.l1.map(f64::from), t.l2.map(f64::from));
-        let mut p = Planes::default();
-        for k in 0..10 {
+        let mut p = Planes {
+            origin: [t.bbox[0] as f32, t.bbox[2] as f32],
+            ..Planes::default()
+        };
+        for k in 0..ATTRS {
             // Lane k: ak/wk at the three vertices (a = 1 for lane 0).
             let a = |v: usize| if k == 0 { 1.0 } else { f64::from(c[v][k + 2]) };
             let q0 = iw[0] * a(0);
@@ -108,73 +117,335 @@ impl Planes {
             p.cx[k] = (l1[1] * d1 + l2[1] * d2) as f32;
             p.cy[k] = (l1[2] * d1 + l2[2] * d2) as f32;
         }
+        let rgb = |v: usize| [c[v][9], c[v][10], c[v][11]];
+        if rgb(0) == rgb(1) && rgb(1) == rgb(2) {
+            p.solid = Some(rgb(0));
+        }
         p
     }
 
-    /// Unit normal, eye position and colour at pixel (i, j) of triangle `t`,
-    /// perspective-correct.
+    /// The planes along row j: r = c0 + cy·dj, so that a pixel's value is
+    /// r + cx·di.
     #[inline(always)]
-    fn at(&self, t: &Tri, i: u32, j: u32) -> (Vector3<f32>, Vector3<f32>, [f32; 3]) {
-        let (di, dj) = (i as f32 - t.bbox[0] as f32, j as f32 - t.bbox[2] as f32);
-        let mut q = [0.0f32; 12];
-        for (k, q) in q.iter_mut().enumerate() {
-            *q = self.c0[k] + self.cx[k] * di + self.cy[k] * dj;
+    fn row(&self, j: u32) -> Row {
+        let dj = j as f32 - self.origin[1];
+        let mut r = [0.0; 12];
+        for (k, r) in r.iter_mut().enumerate() {
+            *r = self.c0[k] + self.cy[k] * dj;
         }
-        // 1/w > 0 inside a clipped triangle; 0 would need w = ∞.
-        let r = if q[0] != 0.0 { 1.0 / q[0] } else { 0.0 };
-        let n = Vector3::new(q[1] * r, q[2] * r, q[3] * r);
-        let p = Vector3::new(q[4] * r, q[5] * r, q[6] * r);
-        (n, p, [q[7] * r, q[8] * r, q[9] * r])
+        Row {
+            r,
+            cx: self.cx,
+            x0: self.origin[0],
+            solid: self.solid,
+        }
+    }
+
+    /// Normal, eye position and colour at pixel (i, j), perspective-correct
+    /// (one pixel of what a [`Batch`] does for eight).
+    #[inline(always)]
+    fn at(&self, i: u32, j: u32) -> Attrs<Fast32> {
+        let row = self.row(j);
+        let di = i as f32 - row.x0;
+        let q: [Fast32; ATTRS] = std::array::from_fn(|k| Fast32(row.r[k] + row.cx[k] * di));
+        let (n, p, r) = attributes(&q);
+        let c = match row.solid {
+            Some(c) => c.map(Fast32),
+            None => colour(&q, &r),
+        };
+        (n, p, c)
     }
 }
 
-/// Phong shading of a run of pixels `i0, i0 + 1, …` in row `j`, all covered
-/// by triangle `t` with attribute planes `planes` ([`Planes::of`]; `out`
-/// holds their 8-bit RGB): per pixel the same interpolation and
-/// `lighting::shade` call as [`pixel_color`], with the triangle's data
-/// looked up once per run and its material recoloured in place instead of
-/// copied.
+/// A triangle's planes along one row (from [`Planes::row`]).
+struct Row {
+    r: [f32; 12],
+    cx: [f32; 12],
+    x0: f32,
+    solid: Option<[f32; 3]>,
+}
+
+/// Interpolated normal (not unit), eye position and surface colour.
+type Attrs<T> = (Vector3<T>, Vector3<T>, [T; 3]);
+
+/// The normal and position from their planes' values q = (1/w, N/w, P/w,
+/// …) at a pixel, each times r = 1/(1/w), and r. 1/w > 0 inside a clipped
+/// triangle (0 would need w = ∞ and gives r = 0).
+#[inline(always)]
+fn attributes<T: Scalar>(q: &[T; ATTRS]) -> (Vector3<T>, Vector3<T>, T) {
+    let r = q[0].if_gt(&T::zero(), || T::one() / q[0].clone(), T::zero);
+    let a = |k: usize| q[k].clone() * r.clone();
+    (
+        Vector3::new(a(1), a(2), a(3)),
+        Vector3::new(a(4), a(5), a(6)),
+        r,
+    )
+}
+
+/// The interpolated surface colour: (C/w)·r.
+#[inline(always)]
+fn colour<T: Scalar>(q: &[T; ATTRS], r: &T) -> [T; 3] {
+    let c = |k: usize| q[k].clone() * r.clone();
+    [c(7), c(8), c(9)]
+}
+
+/// What the shading of a band reads: the frame's triangles, their data and
+/// each object's look, with its material and lights at eight lanes.
+pub struct BandInput<'a> {
+    /// The set-up triangles.
+    pub tris: &'a [Tri],
+    /// Their corners.
+    pub corners: &'a [[Corner; 3]],
+    /// Their Phong attribute planes.
+    pub planes: &'a [Planes],
+    /// Per object: how it is shaded.
+    pub looks: &'a [Look],
+    /// Per object: material and lights at [`F32x8`].
+    pub wide: &'a [(Material<F32x8>, Vec<Light<F32x8>>)],
+    /// The viewer is along +z (tilt view), not at the eye-space origin.
+    pub ortho: bool,
+    /// The background's 8-bit colour.
+    pub bg: [u8; 3],
+    /// Image width.
+    pub width: usize,
+}
+
+/// Shades the rows of one band from its visibility buffer `id` (first row
+/// `r0`), writing 8-bit RGB into `out`: background where no triangle is
+/// visible; flat and Gouraud colours from the corners; Phong pixels lit
+/// eight at a time. Returns (pixels shaded, lighting evaluations).
 ///
-/// `m` is a working copy of the object's material (the caller keeps one per
-/// object and band, so no copy is made per run); its colour is overwritten.
-#[allow(clippy::too_many_arguments)]
-pub fn phong_span(
-    t: &Tri,
-    planes: &Planes,
-    look: &Look,
-    m: &mut Material<Fast32>,
-    j: u32,
-    i0: u32,
-    out: &mut [u8],
-    ortho: bool,
-) {
-    for (k, px) in out.chunks_exact_mut(3).enumerate() {
-        let (n, p, s) = planes.at(t, i0 + k as u32, j);
-        m.color = s.map(Fast32);
-        px.copy_from_slice(&to_u8(lit(m, &look.lights, n, p, ortho, &mut NoTrace)));
+/// On a CPU with AVX2 the same code is compiled for it (eight lanes in one
+/// register) and chosen at run time; the results are the same bits.
+pub fn shade_band(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU has AVX2 (checked just above), the one feature
+        // `shade_band_avx2` is compiled for.
+        return unsafe { shade_band_avx2(inp, r0, out, id) };
+    }
+    shade_band_with(inp, r0, out, id)
+}
+
+/// [`shade_band_with`] compiled for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn shade_band_avx2(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
+    shade_band_with(inp, r0, out, id)
+}
+
+/// The body of [`shade_band`].
+#[inline(always)]
+fn shade_band_with(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
+    let w = inp.width;
+    let (mut count, mut evals) = (0u64, 0u64);
+    // Working copies of the materials, recoloured per batch by Phong.
+    let mut mats: Vec<Material<F32x8>> = inp.wide.iter().map(|w| w.0.clone()).collect();
+    for (r, (orow, irow)) in out
+        .chunks_exact_mut(3 * w)
+        .zip(id.chunks_exact(w))
+        .enumerate()
+    {
+        let j = r0 + r as u32;
+        let mut batch = Batch::default();
+        // Runs of pixels covered by the same triangle (or none).
+        let mut i = 0;
+        while i < w {
+            let t = irow[i];
+            let end = irow[i..].iter().position(|&u| u != t).map_or(w, |k| i + k);
+            if t == NONE {
+                for px in orow[3 * i..3 * end].chunks_exact_mut(3) {
+                    px.copy_from_slice(&inp.bg);
+                }
+                i = end;
+                continue;
+            }
+            count += (end - i) as u64;
+            let tri = &inp.tris[t as usize];
+            let obj = tri.obj as usize;
+            if inp.looks[obj].shading == Shading::Phong {
+                evals += (end - i) as u64;
+                if obj != batch.obj {
+                    batch.flush(
+                        &mut mats[batch.obj],
+                        &inp.wide[batch.obj].1,
+                        inp.ortho,
+                        orow,
+                    );
+                    batch.obj = obj;
+                }
+                let row = inp.planes[t as usize].row(j);
+                let mut k = i;
+                while k < end {
+                    k += batch.fill(&row, k as u32, end - k);
+                    if batch.len == 8 {
+                        batch.flush(&mut mats[obj], &inp.wide[obj].1, inp.ortho, orow);
+                    }
+                }
+            } else {
+                let c = &inp.corners[t as usize];
+                for (k, px) in orow[3 * i..3 * end].chunks_exact_mut(3).enumerate() {
+                    let col = pixel_color(
+                        tri,
+                        c,
+                        (i + k) as u32,
+                        j,
+                        inp.looks,
+                        inp.ortho,
+                        &mut NoTrace,
+                    );
+                    px.copy_from_slice(&to_u8(col));
+                }
+            }
+            i = end;
+        }
+        batch.flush(
+            &mut mats[batch.obj],
+            &inp.wide[batch.obj].1,
+            inp.ortho,
+            orow,
+        );
+    }
+    (count, evals)
+}
+
+/// Up to eight Phong pixels of one object in one row: their attribute
+/// planes' values q (row k for pixel k), surface colours and columns.
+#[derive(Clone, Copy, Debug, Default)]
+struct Batch {
+    q: [[f32; 12]; 8],
+    /// Surface colours of the pixels from triangles with one colour.
+    rgb: [[f32; 3]; 8],
+    /// Bit k set when pixel k's colour is interpolated (q's C/w planes).
+    interp: u32,
+    col: [u32; 8],
+    len: usize,
+    obj: usize,
+}
+
+impl Batch {
+    /// Puts pixels i0, i0 + 1, … of a run of `n` pixels covered by one
+    /// triangle, whose planes along the row are `row`, into the free lanes:
+    /// q = r + cx·di as [`Planes::at`] computes it. Returns how many pixels
+    /// it took.
+    ///
+    /// Pixel by pixel, all planes of a pixel at once: runs are short (three
+    /// pixels on average in the reference scene), too short for work across
+    /// the eight lanes to pay; [`Batch::lanes`] turns the rows into lanes.
+    #[inline(always)]
+    fn fill(&mut self, row: &Row, i0: u32, n: usize) -> usize {
+        let (base, m) = (self.len, n.min(8 - self.len));
+        for k in 0..m {
+            let i = i0 + k as u32;
+            let di = i as f32 - row.x0;
+            let q = &mut self.q[base + k];
+            for ((q, r), cx) in q.iter_mut().zip(&row.r).zip(&row.cx) {
+                *q = r + cx * di;
+            }
+            self.rgb[base + k] = row.solid.unwrap_or_default();
+            self.col[base + k] = i;
+        }
+        let bits = ((1u32 << m) - 1) << base;
+        if row.solid.is_some() {
+            self.interp &= !bits;
+        } else {
+            self.interp |= bits;
+        }
+        self.len += m;
+        m
+    }
+
+    /// Plane `a` of the eight pixels as lanes.
+    #[inline(always)]
+    fn lanes(&self, a: usize) -> F32x8 {
+        let q = &self.q;
+        F32x8::from_array([
+            q[0][a], q[1][a], q[2][a], q[3][a], q[4][a], q[5][a], q[6][a], q[7][a],
+        ])
+    }
+
+    /// Channel `c` of the one-colour pixels as lanes.
+    #[inline(always)]
+    fn rgb_lanes(&self, c: usize) -> F32x8 {
+        let q = &self.rgb;
+        F32x8::from_array([
+            q[0][c], q[1][c], q[2][c], q[3][c], q[4][c], q[5][c], q[6][c], q[7][c],
+        ])
+    }
+
+    /// Lights the pixels in the batch with one `lighting::shade` call at
+    /// [`F32x8`] (material `m`, recoloured here, and `lights`), writes their
+    /// 8-bit RGB into the row `out` and empties the batch. Lanes past `len`
+    /// hold earlier pixels' values: computed, not written.
+    #[inline(always)]
+    fn flush(
+        &mut self,
+        m: &mut Material<F32x8>,
+        lights: &[Light<F32x8>],
+        ortho: bool,
+        out: &mut [u8],
+    ) {
+        if self.len == 0 {
+            return;
+        }
+        let q = [
+            self.lanes(0),
+            self.lanes(1),
+            self.lanes(2),
+            self.lanes(3),
+            self.lanes(4),
+            self.lanes(5),
+            self.lanes(6),
+            self.lanes(7),
+            self.lanes(8),
+            self.lanes(9),
+        ];
+        let rgb = [self.rgb_lanes(0), self.rgb_lanes(1), self.rgb_lanes(2)];
+        let (n, p, r) = attributes(&q);
+        m.color = if self.interp == 0 {
+            rgb
+        } else {
+            let c = colour(&q, &r);
+            let take = Mask::from_bits(self.interp);
+            let pick = |ch: usize| c[ch].select(take, rgb[ch]);
+            [pick(0), pick(1), pick(2)]
+        };
+        let [r, g, b] = lit(m, lights, n, p, ortho, &mut NoTrace);
+        let (r, g, b) = (
+            byte(&r).to_bytes(),
+            byte(&g).to_bytes(),
+            byte(&b).to_bytes(),
+        );
+        for k in 0..self.len {
+            let i = 3 * self.col[k] as usize;
+            out[i..i + 3].copy_from_slice(&[r[k], g[k], b[k]]);
+        }
+        self.len = 0;
     }
 }
 
-/// A material at [`Fast32`].
-pub fn fast_material(m: &Material<f32>) -> Material<Fast32> {
+/// A material at another precision (through f64, exact from f32).
+pub fn material_as<S: Scalar, T: Scalar>(m: &Material<S>) -> Material<T> {
+    let t = |x: &S| T::from_f64(x.to_f64());
     Material {
         model: m.model,
-        ka: Fast32(m.ka),
-        kd: Fast32(m.kd),
-        ks: Fast32(m.ks),
-        shininess: Fast32(m.shininess),
-        color: m.color.map(Fast32),
-        specular: m.specular.map(Fast32),
-        emissive: m.emissive.map(Fast32),
+        ka: t(&m.ka),
+        kd: t(&m.kd),
+        ks: t(&m.ks),
+        shininess: t(&m.shininess),
+        color: m.color.each_ref().map(t),
+        specular: m.specular.each_ref().map(t),
+        emissive: m.emissive.each_ref().map(t),
         specular_on: m.specular_on,
         specular_requires_lit: m.specular_requires_lit,
-        ambient_color: m.ambient_color.map(|c| c.map(Fast32)),
+        ambient_color: m.ambient_color.as_ref().map(|c| c.each_ref().map(t)),
     }
 }
 
-/// A light at [`Fast32`].
-pub fn fast_light(l: &Light<f32>) -> Light<Fast32> {
-    let v = |a: &Vector3<f32>| a.map(Fast32);
+/// A light at another precision (through f64, exact from f32).
+pub fn light_as<S: Scalar, T: Scalar>(l: &Light<S>) -> Light<T> {
+    let t = |x: &S| T::from_f64(x.to_f64());
+    let v = |a: &Vector3<S>| Vector3::new(t(&a[0]), t(&a[1]), t(&a[2]));
     Light {
         kind: match &l.kind {
             LightKind::Directional { dir } => LightKind::Directional { dir: v(dir) },
@@ -188,17 +459,27 @@ pub fn fast_light(l: &Light<f32>) -> Light<Fast32> {
             } => LightKind::Spot {
                 pos: v(pos),
                 dir: v(dir),
-                theta: Fast32(*theta),
-                phi: Fast32(*phi),
-                falloff: Fast32(*falloff),
+                theta: t(theta),
+                phi: t(phi),
+                falloff: t(falloff),
             },
         },
-        ambient: l.ambient.map(Fast32),
-        diffuse: l.diffuse.map(Fast32),
-        specular: l.specular.map(Fast32),
-        attenuation: l.attenuation.map(Fast32),
-        range: l.range.map(Fast32),
+        ambient: l.ambient.each_ref().map(t),
+        diffuse: l.diffuse.each_ref().map(t),
+        specular: l.specular.each_ref().map(t),
+        attenuation: l.attenuation.each_ref().map(t),
+        range: l.range.as_ref().map(t),
     }
+}
+
+/// A material at [`Fast32`].
+pub fn fast_material(m: &Material<f32>) -> Material<Fast32> {
+    material_as(m)
+}
+
+/// A light at [`Fast32`].
+pub fn fast_light(l: &Light<f32>) -> Light<Fast32> {
+    light_as(l)
 }
 
 /// The colour of pixel (i, j) covered by triangle `t`: flat and Gouraud
@@ -223,8 +504,12 @@ pub fn pixel_color(
             [0, 1, 2].map(|k| m[0] * c[0][k] + m[1] * c[1][k] + m[2] * c[2][k])
         }
         Shading::Phong => {
-            let (n, p, s) = Planes::of(t, c).at(t, i, j);
-            light_at(&look.material, &look.lights, s, n, p, ortho, tr)
+            let (n, p, s) = Planes::of(t, c).at(i, j);
+            let m = Material {
+                color: s,
+                ..look.material.clone()
+            };
+            lit(&m, &look.lights, n, p, ortho, tr).map(|c| c.0)
         }
     }
 }
@@ -232,7 +517,13 @@ pub fn pixel_color(
 /// A colour 0…1 as 8-bit: round(255·c), clamped.
 #[inline]
 pub fn to_u8(c: [f32; 3]) -> [u8; 3] {
-    // 0 ≤ 255·c + ½ ≤ 255.5 after the clamp (NaN gives 0 either way), so
-    // the cheaper i32 conversion truncates to the same byte.
-    c.map(|x| (x.clamp(0.0, 1.0) * 255.0 + 0.5) as i32 as u8)
+    c.map(|x| byte(&Fast32(x)).0 as u8)
+}
+
+/// round(255·clamp(x, 0, 1)) as a number whose integer part is the byte:
+/// 0 ≤ 255·x + ½ ≤ 255.5 after the clamp (max(x, 0) is 0 for NaN), so
+/// truncation (`as u8`) gives the rounded value.
+#[inline(always)]
+fn byte<T: Scalar>(x: &T) -> T {
+    x.max_of(&T::zero()).min_of(&T::one()) * T::from_i64(255) + T::from_f64(0.5)
 }
