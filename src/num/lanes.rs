@@ -514,10 +514,12 @@ impl Scalar for F32x8 {
     fn sum_of_products(a: &Self, b: &Self, c: &Self, d: &Self) -> Self {
         *a * *b + *c * *d
     }
-    /// xⁿ lane by lane (f32 `powf`).
+    /// xⁿ lane by lane, through f64 as `Fast32` does (the default method).
     fn powf(&self, n: &Self) -> Self {
         let (x, n) = (self.to_array(), n.to_array());
-        F32x8::from_array(std::array::from_fn(|k| x[k].powf(n[k])))
+        F32x8::from_array(std::array::from_fn(|k| {
+            f64::from(x[k]).powf(f64::from(n[k])) as f32
+        }))
     }
     /// n when every lane holds the same whole number n (the test of the
     /// default method, on that one value).
@@ -559,11 +561,13 @@ impl Scalar for F32x8 {
     fn tan_deg(&self) -> Self {
         self.map(|a| <f32 as Scalar>::tan_deg(&a))
     }
+    /// As `Fast32::sin_deg`, lane by lane.
     fn sin_deg(&self) -> Self {
-        self.map(|a| <f32 as Scalar>::sin_deg(&a))
+        self.map(|a| a.to_radians().sin())
     }
+    /// As `Fast32::cos_deg`, lane by lane.
     fn cos_deg(&self) -> Self {
-        self.map(|a| <f32 as Scalar>::cos_deg(&a))
+        self.map(|a| a.to_radians().cos())
     }
     /// Finite in every lane.
     #[inline(always)]
