@@ -241,6 +241,8 @@ fn shade_band_with(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64
     let (mut count, mut evals) = (0u64, 0u64);
     // Working copies of the materials, recoloured per batch by Phong.
     let mut mats: Vec<Material<F32x8>> = inp.wide.iter().map(|w| w.0.clone()).collect();
+    // A row of background, copied over the runs no triangle covers.
+    let bg_row: Vec<u8> = inp.bg.iter().copied().cycle().take(3 * w).collect();
     for (r, (orow, irow)) in out
         .chunks_exact_mut(3 * w)
         .zip(id.chunks_exact(w))
@@ -254,9 +256,7 @@ fn shade_band_with(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64
             let t = irow[i];
             let end = irow[i..].iter().position(|&u| u != t).map_or(w, |k| i + k);
             if t == NONE {
-                for px in orow[3 * i..3 * end].chunks_exact_mut(3) {
-                    px.copy_from_slice(&inp.bg);
-                }
+                orow[3 * i..3 * end].copy_from_slice(&bg_row[3 * i..3 * end]);
                 i = end;
                 continue;
             }
@@ -416,9 +416,20 @@ impl Batch {
             byte(&g).to_bytes(),
             byte(&b).to_bytes(),
         );
-        for k in 0..self.len {
-            let i = 3 * self.col[k] as usize;
-            out[i..i + 3].copy_from_slice(&[r[k], g[k], b[k]]);
+        let n = self.len;
+        let first = self.col[0] as usize;
+        if self.col[n - 1] as usize == first + n - 1 {
+            // Side by side (the usual case): one copy into the row.
+            let mut px = [0u8; 24];
+            for k in 0..n {
+                px[3 * k..3 * k + 3].copy_from_slice(&[r[k], g[k], b[k]]);
+            }
+            out[3 * first..3 * (first + n)].copy_from_slice(&px[..3 * n]);
+        } else {
+            for k in 0..n {
+                let i = 3 * self.col[k] as usize;
+                out[i..i + 3].copy_from_slice(&[r[k], g[k], b[k]]);
+            }
         }
         self.len = 0;
     }
