@@ -377,21 +377,21 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
             });
         }
         Shading::Phong => {
+            // The values the renderer lights the pixel with: the same sums,
+            // evaluated as planes of a/w over the screen divided by 1/w.
+            let [n, p, col] = render::phong_attributes(t, c, x, y);
             rec.step(|| {
                 Step::new(
                     "Phong shading: interpolate normal, position and colour",
-                    "N = Σ μₖNₖ,  P = Σ μₖPₖ,  C = Σ μₖCₖ",
+                    "N = Σ μₖNₖ,  P = Σ μₖPₖ,  C = Σ μₖCₖ  (as Σ λₖaₖ/wₖ ÷ Σ λₖ/wₖ)",
                 )
                 .val(
                     "N₀, N₁, N₂",
                     Val::List(c.iter().map(|k| Val::vec3(&v3(k, 3))).collect()),
                 )
-                .res("N", Val::vec3(&Vector3::new(at(3), at(4), at(5))))
-                .res(
-                    "P (eye space)",
-                    Val::vec3(&Vector3::new(at(6), at(7), at(8))),
-                )
-                .res("C", Val::vec3(&Vector3::new(at(9), at(10), at(11))))
+                .res("N", Val::vec3(&Vector3::new(n[0], n[1], n[2])))
+                .res("P (eye space)", Val::vec3(&Vector3::new(p[0], p[1], p[2])))
+                .res("C", Val::vec3(&Vector3::new(col[0], col[1], col[2])))
             });
             rec.section("Lighting of the pixel (lighting::shade)");
             render::pixel_color(t, c, x, y, &f.looks, f.ortho, rec);

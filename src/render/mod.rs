@@ -33,7 +33,7 @@ mod shade;
 
 use geometry::{prepare, triangles};
 use shade::Planes;
-pub use shade::{fast_light, fast_material, light_at, pixel_color, to_u8};
+pub use shade::{fast_light, fast_material, light_at, phong_attributes, pixel_color, to_u8};
 
 /// Per-corner data of a triangle: lit colour (flat, Gouraud), eye-space
 /// normal, eye-space position, surface colour.

@@ -157,6 +157,14 @@ impl Planes {
     }
 }
 
+/// The interpolated normal (not unit), eye position and surface colour at
+/// pixel (i, j) of triangle `t` with corners `c`, exactly as Phong shading
+/// computes them (from the attribute planes): Σ μₖaₖ for each attribute a.
+pub fn phong_attributes(t: &Tri, c: &[Corner; 3], i: u32, j: u32) -> [[f32; 3]; 3] {
+    let (n, p, s) = Planes::of(t, c).at(i, j);
+    [[n.x.0, n.y.0, n.z.0], [p.x.0, p.y.0, p.z.0], s.map(|x| x.0)]
+}
+
 /// A triangle's planes along one row (from [`Planes::row`]).
 struct Row {
     r: [f32; 12],
