@@ -291,18 +291,17 @@ fn shade_band_with(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64
                     }
                 }
             } else {
+                // What `pixel_color` gives, with the shading mode decided
+                // once per run: flat is one colour for the whole run.
                 let c = &inp.corners[t as usize];
-                for (k, px) in orow[3 * i..3 * end].chunks_exact_mut(3).enumerate() {
-                    let col = pixel_color(
-                        tri,
-                        c,
-                        (i + k) as u32,
-                        j,
-                        inp.looks,
-                        inp.ortho,
-                        &mut NoTrace,
-                    );
-                    px.copy_from_slice(&to_u8(col));
+                let span = orow[3 * i..3 * end].chunks_exact_mut(3);
+                if inp.looks[obj].shading == Shading::Flat {
+                    let col = to_u8([c[0][0], c[0][1], c[0][2]]);
+                    span.for_each(|px| px.copy_from_slice(&col));
+                } else {
+                    for (k, px) in span.enumerate() {
+                        px.copy_from_slice(&to_u8(gouraud(tri, c, (i + k) as u32, j)));
+                    }
                 }
             }
             i = end;
@@ -518,10 +517,7 @@ pub fn pixel_color(
     let look = &looks[t.obj as usize];
     match look.shading {
         Shading::Flat => [c[0][0], c[0][1], c[0][2]],
-        Shading::Gouraud => {
-            let m = t.mu(i, j);
-            [0, 1, 2].map(|k| m[0] * c[0][k] + m[1] * c[1][k] + m[2] * c[2][k])
-        }
+        Shading::Gouraud => gouraud(t, c, i, j),
         Shading::Phong => {
             let (n, p, s) = Planes::of(t, c).at(i, j);
             let m = Material {
@@ -531,6 +527,15 @@ pub fn pixel_color(
             lit(&m, &look.lights, n, p, ortho, tr).map(|c| c.0)
         }
     }
+}
+
+/// Gouraud's colour at pixel (i, j): the corners' lit colours weighted by
+/// the perspective-correct μ, C = μ₀C₀ + μ₁C₁ + μ₂C₂.
+#[inline(always)]
+fn gouraud(t: &Tri, c: &[Corner; 3], i: u32, j: u32) -> [f32; 3] {
+    let m = t.mu(i, j);
+    let ch = |k: usize| m[0] * c[0][k] + m[1] * c[1][k] + m[2] * c[2][k];
+    [ch(0), ch(1), ch(2)]
 }
 
 /// A colour 0…1 as 8-bit: round(255·c), clamped.
