@@ -21,7 +21,7 @@ pub const NONE: u32 = u32::MAX;
 
 /// A screen-space vertex: pixel coordinates (origin top left, y down),
 /// depth z/w (−1 near … 1 far) and 1/w.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ScreenVert {
     /// Column, pixels.
     pub x: f32,
@@ -35,7 +35,7 @@ pub struct ScreenVert {
 
 /// A set-up triangle: integer edge functions, a pixel bounding box, and the
 /// planes of depth and of the screen barycentrics.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Tri {
     /// Edge function k (weight of vertex k): E = a·X + b·Y + c, X and Y in
     /// 1/256 pixel; c includes the fill-rule bias.
@@ -64,19 +64,40 @@ pub struct Tri {
 
 /// v in 1/256 pixel, rounded half away from zero (casts, no libm call).
 #[inline]
-fn snap(v: f32) -> i64 {
+pub fn snap(v: f32) -> i64 {
     let t = v as f64 * ONE as f64;
     (t + if t >= 0.0 { 0.5 } else { -0.5 }) as i64
 }
 
-/// Sets up a triangle for an image of `w` × `h` pixels. Returns `None` when
-/// it covers no pixel centre (degenerate, or between centres, or off
-/// screen). `swap` reports whether vertices 1 and 2 were exchanged to make
-/// the winding positive (the caller swaps their attributes too).
-pub fn setup(v: [ScreenVert; 3], w: u32, h: u32) -> Option<(Tri, bool)> {
-    let mut v = v;
-    let mut x = v.map(|p| snap(p.x));
-    let mut y = v.map(|p| snap(p.y));
+/// A triangle's vertices snapped to 1/256 pixel, wound positively, with the
+/// pixel box of the centres it may cover (the cheap first half of [`setup`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Snapped {
+    /// Snapped columns (vertices 1 and 2 exchanged when `swap`).
+    x: [i64; 3],
+    /// Snapped rows.
+    y: [i64; 3],
+    /// Twice the area, > 0: E_01 at vertex 2.
+    area: i64,
+    /// Whether vertices 1 and 2 were exchanged to make the winding positive.
+    swap: bool,
+    /// Covered pixels lie in columns x0..=x1 and rows y0..=y1.
+    pub bbox: [u32; 4],
+}
+
+/// Snaps a triangle for an image of `w` × `h` pixels and finds its pixel
+/// box: `None` exactly when [`setup`] returns `None` (zero area, or a box
+/// with no pixel centre in it or on the image).
+#[inline]
+pub fn snap_box(v: &[ScreenVert; 3], w: u32, h: u32) -> Option<Snapped> {
+    snap_box_of(v.map(|p| [snap(p.x), snap(p.y)]), w, h)
+}
+
+/// [`snap_box`] of vertices already snapped by [`snap`] (x, y each).
+#[inline]
+pub fn snap_box_of(s: [[i64; 2]; 3], w: u32, h: u32) -> Option<Snapped> {
+    let mut x = s.map(|p| p[0]);
+    let mut y = s.map(|p| p[1]);
     // Twice the signed area: E_01 at vertex 2.
     let mut area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
     if area == 0 {
@@ -84,20 +105,53 @@ pub fn setup(v: [ScreenVert; 3], w: u32, h: u32) -> Option<(Tri, bool)> {
     }
     let swap = area < 0;
     if swap {
-        v.swap(1, 2);
         x.swap(1, 2);
         y.swap(1, 2);
         area = -area;
     }
     // Pixel box: centres X = 256·i + 128 within [min, max].
-    let (minx, maxx) = (*x.iter().min()?, *x.iter().max()?);
-    let (miny, maxy) = (*y.iter().min()?, *y.iter().max()?);
+    let (minx, maxx) = (x[0].min(x[1]).min(x[2]), x[0].max(x[1]).max(x[2]));
+    let (miny, maxy) = (y[0].min(y[1]).min(y[2]), y[0].max(y[1]).max(y[2]));
     let lo = |m: i64| (m - HALF + ONE - 1).div_euclid(ONE).max(0);
     let hi = |m: i64, n: u32| (m - HALF).div_euclid(ONE).min(n as i64 - 1);
     let (x0, x1, y0, y1) = (lo(minx), hi(maxx, w), lo(miny), hi(maxy, h));
     if x0 > x1 || y0 > y1 {
         return None;
     }
+    Some(Snapped {
+        x,
+        y,
+        area,
+        swap,
+        bbox: [x0 as u32, x1 as u32, y0 as u32, y1 as u32],
+    })
+}
+
+impl Snapped {
+    /// Whether vertices 1 and 2 were exchanged to make the winding positive.
+    pub fn swap(&self) -> bool {
+        self.swap
+    }
+}
+
+/// Sets up a triangle for an image of `w` × `h` pixels. Returns `None` when
+/// it covers no pixel centre (degenerate, or between centres, or off
+/// screen). `swap` reports whether vertices 1 and 2 were exchanged to make
+/// the winding positive (the caller swaps their attributes too).
+pub fn setup(v: [ScreenVert; 3], w: u32, h: u32) -> Option<(Tri, bool)> {
+    let s = snap_box(&v, w, h)?;
+    Some((setup_snapped(v, &s), s.swap))
+}
+
+/// The second half of [`setup`]: edge functions and planes of a triangle
+/// that [`snap_box`] accepted (`v` as given to it, not yet swapped).
+pub fn setup_snapped(v: [ScreenVert; 3], s: &Snapped) -> Tri {
+    let mut v = v;
+    if s.swap {
+        v.swap(1, 2);
+    }
+    let (x, y, area) = (s.x, s.y, s.area);
+    let [x0, _, y0, _] = s.bbox.map(i64::from);
     // Edge k runs from vertex k+1 to vertex k+2; E_k(P) = dx·(Py − ay) − dy·(Px − ax).
     let mut a = [0i64; 3];
     let mut b = [0i64; 3];
@@ -135,11 +189,11 @@ pub fn setup(v: [ScreenVert; 3], w: u32, h: u32) -> Option<(Tri, bool)> {
             (p0[2] * q[0] + p1[2] * q[1] + p2[2] * q[2]) as f32,
         ]
     };
-    let tri = Tri {
+    Tri {
         a,
         b,
         c,
-        bbox: [x0 as u32, x1 as u32, y0 as u32, y1 as u32],
+        bbox: s.bbox,
         z: plane(z),
         l1: p1.map(|t| t as f32),
         l2: p2.map(|t| t as f32),
@@ -147,8 +201,7 @@ pub fn setup(v: [ScreenVert; 3], w: u32, h: u32) -> Option<(Tri, bool)> {
         obj: 0,
         face: 0,
         verts: v,
-    };
-    Some((tri, swap))
+    }
 }
 
 /// Whether edge k had the fill-rule bias subtracted (recomputed so the

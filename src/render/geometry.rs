@@ -5,29 +5,55 @@
 
 use crate::lighting::{self, Light, LightKind, Material};
 use crate::num::Fast32;
-use crate::raster::{self, ScreenVert, Tri};
+use crate::raster::{self, ScreenVert, Tri, BAND};
 use crate::scene::{Colors, Normals, Object, Scene, Shading};
 use crate::trace::NoTrace;
 use crate::window::Window;
 use nalgebra::{Matrix3, Matrix4, Vector3, Vector4};
 use rayon::prelude::*;
+use std::time::Instant;
 
-use super::shade::{fast_light, fast_material, light_at};
+use super::shade::{fast_light, fast_material, light_at, Planes};
 use super::{Corner, Options, Stats, ViewSetup};
 
-/// Everything the triangle loop needs about one object, in eye and clip space.
+/// Per-vertex arrays of an object (kept between frames, so a repeated
+/// render touches no fresh pages): eye-space position, outcode, screen
+/// position and eye-space normal, apart so that the culling pass reads only
+/// the first two.
+#[derive(Clone, Debug, Default)]
+pub struct VertBufs {
+    eye: Vec<[f32; 3]>,
+    /// Outcodes in clip space (all 0 when the object's box is inside).
+    codes: Vec<u8>,
+    /// Screen positions ([`to_screen`]) of the vertices whose code is 0
+    /// (the default for the others, which only clipped triangles use).
+    screen: Vec<ScreenVert>,
+    /// Unit eye-space vertex normals (none for flat shading).
+    vnormals: Vec<[f32; 3]>,
+}
+
+/// Everything the triangle loop needs about one object.
 pub(super) struct Prep<'a> {
     obj: &'a Object,
-    eye: Vec<[f32; 3]>,
-    clip: Vec<[f32; 4]>,
-    codes: Vec<u8>,
-    inside: bool,
-    vnormals: Vec<[f32; 3]>,
+    /// Model → clip (clip-space positions are made again where a triangle
+    /// is clipped, rather than kept for every vertex).
+    c32: Matrix4<f32>,
+    v: &'a VertBufs,
     lit: Option<Vec<[f32; 3]>>,
     closed: bool,
     pub(super) material: Material<Fast32>,
     pub(super) lights: Vec<Light<Fast32>>,
     pub(super) shading: Shading,
+}
+
+/// Vertices per parallel block of the per-vertex work.
+const VBLOCK: usize = 4096;
+
+/// Makes `v` n long, filling only the entries it did not have (the caller
+/// then writes every entry).
+fn size<T: Clone + Default>(v: &mut Vec<T>, n: usize) {
+    v.truncate(n);
+    v.resize(n, T::default());
 }
 
 fn mul4(m: &Matrix4<f32>, p: [f32; 3]) -> [f32; 4] {
@@ -54,6 +80,7 @@ pub(super) fn prepare<'a>(
     scene_lights: &[Light<f32>],
     opt: &Options,
     stats: &mut Stats,
+    bufs: &'a mut VertBufs,
 ) -> Option<Prep<'a>> {
     let mesh = &obj.mesh;
     let shading = if opt.force_shading {
@@ -64,6 +91,7 @@ pub(super) fn prepare<'a>(
     let eye_from_model = vs.eye_from_world * obj.model;
     let clip_from_model = vs.clip_from_eye * eye_from_model;
     // Bounding box of the model, its corners' outcodes: whole-object tests.
+    // (Serial: f32::min/max may pick either zero of ±0, so the order stays fixed.)
     let mut lo = [f32::INFINITY; 3];
     let mut hi = [f32::NEG_INFINITY; 3];
     for p in &mesh.positions {
@@ -99,63 +127,11 @@ pub(super) fn prepare<'a>(
     }
     let e32: Matrix4<f32> = eye_from_model.cast();
     let c32: Matrix4<f32> = clip_from_model.cast();
-    let eye: Vec<[f32; 3]> = mesh
-        .positions
-        .iter()
-        .map(|&p| {
-            let v = mul4(&e32, p);
-            [v[0], v[1], v[2]]
-        })
-        .collect();
-    let clip: Vec<[f32; 4]> = mesh.positions.iter().map(|&p| mul4(&c32, p)).collect();
-    let codes: Vec<u8> = if inside {
-        Vec::new()
-    } else {
-        clip.iter()
-            .map(|c| crate::clip::outcode_clip_space(&Vector4::new(c[0], c[1], c[2], c[3])))
-            .collect()
-    };
-    // Normals go to eye space by the inverse transpose of the linear part.
-    let lin: Matrix3<f64> = eye_from_model.fixed_view::<3, 3>(0, 0).into();
-    let nmat: Matrix3<f32> = lin
-        .try_inverse()
-        .map(|m| m.transpose())
-        .unwrap_or(lin)
-        .cast();
-    let vnormals: Vec<[f32; 3]> = if shading == Shading::Flat {
-        Vec::new()
-    } else {
-        match opt.normals {
-            Normals::Average => obj
-                .vnormals
-                .iter()
-                .map(|&n| {
-                    let v = (nmat * v3(n)).normalize();
-                    [v.x, v.y, v.z]
-                })
-                .collect(),
-            Normals::Position => {
-                // The text's draw3Dcg: the normal is the vertex position in
-                // the (tilted) world, made a unit vector.
-                let world: Matrix4<f32> = obj.model.cast();
-                let rot: Matrix3<f32> = vs
-                    .eye_from_world
-                    .fixed_view::<3, 3>(0, 0)
-                    .into_owned()
-                    .cast();
-                mesh.positions
-                    .iter()
-                    .map(|&p| {
-                        let w = mul4(&world, p);
-                        let v = rot * Vector3::new(w[0], w[1], w[2]);
-                        let v = if v.norm() > 0.0 { v.normalize() } else { v };
-                        [v.x, v.y, v.z]
-                    })
-                    .collect()
-            }
-        }
-    };
-    // Lights out of range of the whole object are never evaluated for it.
+    let (w, h) = (opt.width as f32, opt.height as f32);
+    let n = mesh.positions.len();
+    let pos = || mesh.positions.par_chunks(VBLOCK);
+    // Lights out of range of the whole object are never evaluated for it:
+    // its reach is the box's centre and the largest distance from it.
     let centre = mul4(
         &e32,
         [
@@ -165,10 +141,90 @@ pub(super) fn prepare<'a>(
         ],
     );
     let centre = Vector3::new(centre[0], centre[1], centre[2]);
-    let radius = eye
-        .iter()
-        .map(|p| (v3(*p) - centre).norm())
-        .fold(0.0f32, f32::max);
+    // Per vertex, in parallel blocks: the eye position, and the largest
+    // squared distance from the centre (its √ is the largest distance:
+    // √ is monotonic and correctly rounded).
+    size(&mut bufs.eye, n);
+    let far2 = pos()
+        .zip(bufs.eye.par_chunks_mut(VBLOCK))
+        .map(|(ps, es)| {
+            let mut far2 = 0.0f32;
+            for (&p, e) in ps.iter().zip(es) {
+                let v = mul4(&e32, p);
+                *e = [v[0], v[1], v[2]];
+                far2 = far2.max((v3(*e) - centre).norm_squared());
+            }
+            far2
+        })
+        .reduce(|| 0.0f32, f32::max);
+    let radius = far2.sqrt();
+    // The outcode and, inside the view volume, the screen position.
+    size(&mut bufs.codes, n);
+    size(&mut bufs.screen, n);
+    pos()
+        .zip(bufs.codes.par_chunks_mut(VBLOCK))
+        .zip(bufs.screen.par_chunks_mut(VBLOCK))
+        .for_each(|((ps, cs), ss)| {
+            for ((&p, c), s) in ps.iter().zip(cs).zip(ss) {
+                let clip = mul4(&c32, p);
+                *c = if inside {
+                    0
+                } else {
+                    crate::clip::outcode_clip_space(&Vector4::from(clip))
+                };
+                *s = if *c == 0 {
+                    to_screen(&clip, &vs.win, w, h)
+                } else {
+                    ScreenVert::default()
+                };
+            }
+        });
+    // Normals go to eye space by the inverse transpose of the linear part.
+    let lin: Matrix3<f64> = eye_from_model.fixed_view::<3, 3>(0, 0).into();
+    let nmat: Matrix3<f32> = lin
+        .try_inverse()
+        .map(|m| m.transpose())
+        .unwrap_or(lin)
+        .cast();
+    let vn = &mut bufs.vnormals;
+    if shading == Shading::Flat {
+        vn.clear();
+    } else {
+        match opt.normals {
+            Normals::Average => {
+                size(vn, obj.vnormals.len());
+                obj.vnormals
+                    .par_chunks(VBLOCK)
+                    .zip(vn.par_chunks_mut(VBLOCK))
+                    .for_each(|(ns, out)| {
+                        for (&n, o) in ns.iter().zip(out) {
+                            let v = (nmat * v3(n)).normalize();
+                            *o = [v.x, v.y, v.z];
+                        }
+                    });
+            }
+            Normals::Position => {
+                // The text's draw3Dcg: the normal is the vertex position in
+                // the (tilted) world, made a unit vector.
+                let world: Matrix4<f32> = obj.model.cast();
+                let rot: Matrix3<f32> = vs
+                    .eye_from_world
+                    .fixed_view::<3, 3>(0, 0)
+                    .into_owned()
+                    .cast();
+                size(vn, n);
+                pos().zip(vn.par_chunks_mut(VBLOCK)).for_each(|(ps, out)| {
+                    for (&p, o) in ps.iter().zip(out) {
+                        let w = mul4(&world, p);
+                        let v = rot * Vector3::new(w[0], w[1], w[2]);
+                        let v = if v.norm() > 0.0 { v.normalize() } else { v };
+                        *o = [v.x, v.y, v.z];
+                    }
+                });
+            }
+        }
+    }
+    let bufs: &'a VertBufs = bufs;
     let mut lights = Vec::new();
     for l in scene_lights {
         let far = match (&l.kind, l.range) {
@@ -198,15 +254,15 @@ pub(super) fn prepare<'a>(
     let closed = obj.closed;
     // Gouraud on a closed mesh without per-face colours: light each vertex once.
     let lit = if shading == Shading::Gouraud && closed && !matches!(obj.colors, Colors::Faces(_)) {
-        let l: Vec<[f32; 3]> = (0..eye.len())
+        let l: Vec<[f32; 3]> = (0..n)
             .into_par_iter()
             .map(|v| {
                 light_at(
                     &material,
                     &lights,
                     surface(obj, 0, v as u32),
-                    v3(vnormals[v]),
-                    v3(eye[v]),
+                    v3(bufs.vnormals[v]),
+                    v3(bufs.eye[v]),
                     vs.ortho,
                     &mut NoTrace,
                 )
@@ -219,11 +275,8 @@ pub(super) fn prepare<'a>(
     };
     Some(Prep {
         obj,
-        eye,
-        clip,
-        codes,
-        inside,
-        vnormals,
+        c32,
+        v: bufs,
         lit,
         closed,
         material,
@@ -235,14 +288,48 @@ pub(super) fn prepare<'a>(
 /// Triangles per parallel chunk of the geometry stage.
 const CHUNK: usize = 2048;
 
-/// One chunk's set-up triangles and corners (kept between frames).
-pub type ChunkBuf = (Vec<Tri>, Vec<[Corner; 3]>);
+/// A triangle that passed the outcode and facing tests (first pass).
+#[derive(Clone, Copy, Debug)]
+struct Kept {
+    /// Its index in the object's triangle list.
+    tri: u32,
+    /// How many set-up triangles it gives: 0 (no pixel centre) or 1, or for
+    /// a clipped one, its fan's triangles that cover a centre.
+    out: u32,
+    /// The clip planes it crosses (0: set up in the second pass; otherwise
+    /// clipped and set up in the first, into [`ChunkBuf::clipped`]).
+    or: u8,
+    /// A back face of an open mesh (its normals are flipped).
+    back: bool,
+}
+
+/// One chunk's work between the two passes of the triangle stage (kept
+/// between frames, so a repeated render allocates nothing).
+#[derive(Clone, Debug, Default)]
+pub struct ChunkBuf {
+    /// The triangles that passed the outcode and facing tests, in order.
+    kept: Vec<Kept>,
+    /// The set-up clipped triangles and their corners, in order.
+    clipped: Vec<(Tri, [Corner; 3])>,
+    /// Set-up triangles in the chunk: Σ `out` of `kept`.
+    count: usize,
+    /// Per band: the frame's numbers of the chunk's triangles in it.
+    bins: Vec<Vec<u32>>,
+    /// The chunk's counters.
+    stats: Stats,
+}
 
 /// A clip-space vertex with its corner data.
 #[derive(Clone, Copy)]
 struct CV {
     c: [f32; 4],
     a: Corner,
+}
+
+/// A screen vertex snapped to 1/256 pixel ([`raster::snap`]).
+#[inline]
+fn snap(v: &ScreenVert) -> [i64; 2] {
+    [raster::snap(v.x), raster::snap(v.y)]
 }
 
 /// Signed distance to clip plane `bit` (≥ 0 inside): w + x for x ≥ −w, w − x for x ≤ w, …
@@ -308,9 +395,282 @@ fn to_screen(c: &[f32; 4], win: &Window<f32>, w: f32, h: f32) -> ScreenVert {
     }
 }
 
-/// The triangles of one object: cull, reject, light (flat: per face,
-/// Gouraud: per corner), clip, set up; appended to `tris` and `corners` in
-/// submission order (one copy from the parallel chunks).
+/// The outcode and facing tests of triangle `idx` of an object: `None`
+/// when it is rejected (all three vertices outside one plane) or culled (a
+/// back face of a closed mesh), counted in `st`; else the planes it crosses
+/// and whether it is a back face (of an open mesh).
+#[inline]
+fn test(
+    p: &Prep,
+    idx: [usize; 3],
+    vs: &ViewSetup,
+    cull: bool,
+    st: &mut Stats,
+) -> Option<(u8, bool)> {
+    let c = idx.map(|i| p.v.codes[i]);
+    if c[0] & c[1] & c[2] != 0 {
+        st.rejected += 1;
+        return None;
+    }
+    // Facing: the text's test N·(toward viewer) with N = (v1 − v0) × (v2 − v0).
+    let (e0, e1, e2) = (
+        v3(p.v.eye[idx[0]]),
+        v3(p.v.eye[idx[1]]),
+        v3(p.v.eye[idx[2]]),
+    );
+    let n = (e1 - e0).cross(&(e2 - e0));
+    let front = if vs.ortho {
+        n.z > 0.0
+    } else {
+        n.dot(&e0) < 0.0
+    };
+    if !front && p.closed && cull {
+        st.culled += 1;
+        return None;
+    }
+    Some((c[0] | c[1] | c[2], !front && !p.closed))
+}
+
+/// The corners of a kept triangle: per vertex the eye-space normal (flipped
+/// on a back face), eye position and surface colour, and the lit colour —
+/// flat: once per face, at the centroid with the polygon's normal; Gouraud:
+/// per vertex (from the object's lit vertices when it has them); Phong:
+/// none (lit per pixel). Lighting evaluations are counted in `st`.
+fn corners(
+    p: &Prep,
+    idx: [usize; 3],
+    face: u32,
+    back: bool,
+    ortho: bool,
+    st: &mut Stats,
+) -> [Corner; 3] {
+    // An open mesh shows its back: light the side that is seen.
+    let flip = if back { -1.0 } else { 1.0 };
+    let mut cs = [[0.0f32; 12]; 3];
+    for k in 0..3 {
+        let v = idx[k];
+        let s = surface(p.obj, face, v as u32);
+        let nrm = if p.v.vnormals.is_empty() {
+            [0.0; 3]
+        } else {
+            p.v.vnormals[v].map(|x| x * flip)
+        };
+        cs[k][3..6].copy_from_slice(&nrm);
+        cs[k][6..9].copy_from_slice(&p.v.eye[v]);
+        cs[k][9..12].copy_from_slice(&s);
+    }
+    match p.shading {
+        Shading::Flat => {
+            let fnrm = v3(p.obj.mesh.face_normal(face as usize));
+            // The polygon's normal in eye space: the triangle's own
+            // for a triangle, Newell's average for a polygon.
+            let fe = face_normal_eye(p, face as usize).unwrap_or(fnrm) * flip;
+            let e = idx.map(|i| v3(p.v.eye[i]));
+            let centre = (e[0] + e[1] + e[2]) / 3.0;
+            let c = light_at(
+                &p.material,
+                &p.lights,
+                cs[0][9..12].try_into().unwrap_or([1.0; 3]),
+                fe,
+                centre,
+                ortho,
+                &mut NoTrace,
+            );
+            st.lighting_evals += 1;
+            for corner in &mut cs {
+                corner[0..3].copy_from_slice(&c);
+                corner[3..6].copy_from_slice(&[fe.x, fe.y, fe.z]);
+                corner[6..9].copy_from_slice(&[centre.x, centre.y, centre.z]);
+            }
+        }
+        Shading::Gouraud => {
+            for k in 0..3 {
+                let c = match &p.lit {
+                    Some(l) => l[idx[k]],
+                    None => {
+                        st.lighting_evals += 1;
+                        let c = &cs[k];
+                        light_at(
+                            &p.material,
+                            &p.lights,
+                            [c[9], c[10], c[11]],
+                            Vector3::new(c[3], c[4], c[5]),
+                            Vector3::new(c[6], c[7], c[8]),
+                            ortho,
+                            &mut NoTrace,
+                        )
+                    }
+                };
+                cs[k][0..3].copy_from_slice(&c);
+            }
+        }
+        Shading::Phong => {}
+    }
+    cs
+}
+
+/// The first pass over one chunk of an object's triangles (those from
+/// number `first` in its list): outcode and facing tests; for a triangle
+/// inside the view volume, whether it covers a pixel centre
+/// ([`raster::snap_box_of`]); a triangle that crosses a plane is lit,
+/// clipped and set up here (few do).
+#[allow(clippy::too_many_arguments)]
+fn first_pass(
+    p: &Prep,
+    oi: u32,
+    first: usize,
+    tris: &[[u32; 3]],
+    faces: &[u32],
+    vs: &ViewSetup,
+    cull: bool,
+    opt: &Options,
+    buf: &mut ChunkBuf,
+) {
+    let (w, h) = (opt.width, opt.height);
+    buf.kept.clear();
+    buf.clipped.clear();
+    buf.count = 0;
+    let mut st = Stats::default();
+    let (mut poly, mut tmp) = (Vec::new(), Vec::new());
+    for (n, (tri, &face)) in tris.iter().zip(faces).enumerate() {
+        st.tris_in += 1;
+        let idx = tri.map(|i| i as usize);
+        let Some((or, back)) = test(p, idx, vs, cull, &mut st) else {
+            continue;
+        };
+        let out = if or == 0 {
+            match raster::snap_box_of(idx.map(|i| snap(&p.v.screen[i])), w, h) {
+                Some(_) => {
+                    st.drawn += 1;
+                    1
+                }
+                None => {
+                    st.no_pixels += 1;
+                    0
+                }
+            }
+        } else {
+            st.clipped += 1;
+            let cs = corners(p, idx, face, back, vs.ortho, &mut st);
+            let before = buf.clipped.len();
+            poly.clear();
+            poly.extend((0..3).map(|k| CV {
+                c: mul4(&p.c32, p.obj.mesh.positions[idx[k]]),
+                a: cs[k],
+            }));
+            clip_poly(&mut poly, or, &mut tmp);
+            for k in 1..poly.len().saturating_sub(1) {
+                let sv = [poly[0], poly[k], poly[k + 1]]
+                    .map(|v| to_screen(&v.c, &vs.win, w as f32, h as f32));
+                match raster::setup(sv, w, h) {
+                    Some((mut t, swap)) => {
+                        t.obj = oi;
+                        t.face = face;
+                        let (a, b, c) = (poly[0].a, poly[k].a, poly[k + 1].a);
+                        buf.clipped
+                            .push((t, if swap { [a, c, b] } else { [a, b, c] }));
+                        st.drawn += 1;
+                    }
+                    None => st.no_pixels += 1,
+                }
+            }
+            (buf.clipped.len() - before) as u32
+        };
+        buf.count += out as usize;
+        buf.kept.push(Kept {
+            tri: (first + n) as u32,
+            out,
+            or,
+            back,
+        });
+    }
+    buf.stats = st;
+}
+
+/// Where the second pass writes one chunk's set-up triangles: the frame's
+/// slices for them, and the number of the first.
+struct Dest<'t> {
+    tris: &'t mut [Tri],
+    corners: &'t mut [[Corner; 3]],
+    planes: &'t mut [Planes],
+    first: u32,
+}
+
+/// The second pass over one chunk: lights and sets up the triangles the
+/// first pass kept inside the view volume, copies the clipped ones, computes
+/// Phong's attribute planes (`Planes::of`, for a Phong object; the default
+/// otherwise), and bins them by band (rows y0..=y1 are in bands
+/// y0/BAND..=y1/BAND), all straight into the frame's arrays.
+fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut ChunkBuf, d: Dest) {
+    let (w, h) = (opt.width, opt.height);
+    let bands = (h as usize).div_ceil(BAND);
+    buf.bins.resize_with(bands, Vec::new);
+    buf.bins.iter_mut().for_each(Vec::clear);
+    let t = &p.obj.tris;
+    let phong = p.shading == Shading::Phong;
+    let mut clipped = buf.clipped.iter();
+    let mut k = 0;
+    let mut put = |tri: Tri, cs: [Corner; 3], bins: &mut Vec<Vec<u32>>| {
+        d.planes[k] = if phong {
+            Planes::of(&tri, &cs)
+        } else {
+            Planes::default()
+        };
+        let (b0, b1) = (tri.bbox[2] as usize / BAND, tri.bbox[3] as usize / BAND);
+        for bin in &mut bins[b0..=b1] {
+            bin.push(d.first + k as u32);
+        }
+        d.tris[k] = tri;
+        d.corners[k] = cs;
+        k += 1;
+    };
+    let mut st = Stats::default();
+    for kept in &buf.kept {
+        if kept.or != 0 {
+            for (tri, cs) in clipped.by_ref().take(kept.out as usize) {
+                put(tri.clone(), *cs, &mut buf.bins);
+            }
+            continue;
+        }
+        let i = kept.tri as usize;
+        let (idx, face) = (t.tris[i].map(|i| i as usize), t.face[i]);
+        // Lit even when it covers no centre, as it was before the raster
+        // test moved ahead of lighting (same evaluations counted).
+        let cs = corners(p, idx, face, kept.back, vs.ortho, &mut st);
+        if kept.out == 0 {
+            continue;
+        }
+        let Some(s) = raster::snap_box_of(idx.map(|i| snap(&p.v.screen[i])), w, h) else {
+            continue;
+        };
+        let mut tri = raster::setup_snapped(idx.map(|i| p.v.screen[i]), &s);
+        tri.obj = oi;
+        tri.face = face;
+        let cs = if s.swap() { [cs[0], cs[2], cs[1]] } else { cs };
+        put(tri, cs, &mut buf.bins);
+    }
+    buf.stats.lighting_evals += st.lighting_evals;
+}
+
+/// Splits `s` into consecutive slices of the given lengths (the rest is
+/// dropped).
+fn split_by<T>(mut s: &mut [T], lens: impl Iterator<Item = usize>) -> Vec<&mut [T]> {
+    let mut out = Vec::new();
+    for n in lens {
+        let (a, b) = std::mem::take(&mut s).split_at_mut(n);
+        out.push(a);
+        s = b;
+    }
+    out
+}
+
+/// The triangles of one object: reject, cull, light (flat: per face,
+/// Gouraud: per corner), clip, set up, Phong's planes, binned by band; in
+/// submission order. Two parallel passes over chunks: the first finds how
+/// many set-up triangles each chunk gives, so the second writes them
+/// straight into `tris`, `corners` and `planes` from index `first` (grown
+/// as needed; nothing is copied between them). Returns the number written
+/// and the counters (with `binning`: the time of merging the bins).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn triangles(
     p: &Prep,
@@ -318,169 +678,90 @@ pub(super) fn triangles(
     vs: &ViewSetup,
     scene: &Scene,
     opt: &Options,
-    tris: &mut Vec<Tri>,
-    corners: &mut Vec<[Corner; 3]>,
+    first: usize,
+    out: &mut Output,
     pool: &mut Vec<ChunkBuf>,
-) -> Stats {
-    let mesh = &p.obj.mesh;
+) -> (usize, Stats) {
     let t = &p.obj.tris;
-    let (w, h) = (opt.width, opt.height);
-    // Per-chunk output buffers from the previous frame (no fresh pages).
+    // Per-chunk buffers from the previous frame (no fresh pages).
     let n = t.tris.len().div_ceil(CHUNK);
     let mut bufs: Vec<ChunkBuf> = (0..n).map(|_| pool.pop().unwrap_or_default()).collect();
-    let stats: Vec<Stats> = t
-        .tris
+    t.tris
         .par_chunks(CHUNK)
         .zip(t.face.par_chunks(CHUNK))
         .zip(bufs.par_iter_mut())
-        .map(|((tris, faces), (out, corners))| {
-            out.clear();
-            corners.clear();
-            let mut st = Stats::default();
-            let (mut poly, mut tmp) = (Vec::with_capacity(9), Vec::with_capacity(9));
-            for (tri, &face) in tris.iter().zip(faces) {
-                st.tris_in += 1;
-                let [i0, i1, i2] = tri.map(|i| i as usize);
-                let (mut and, mut or) = (0u8, 0u8);
-                if !p.inside {
-                    and = p.codes[i0] & p.codes[i1] & p.codes[i2];
-                    or = p.codes[i0] | p.codes[i1] | p.codes[i2];
-                }
-                if and != 0 {
-                    st.rejected += 1;
-                    continue;
-                }
-                // Facing: the text's test N·(toward viewer) with N = (v1 − v0) × (v2 − v0).
-                let (e0, e1, e2) = (v3(p.eye[i0]), v3(p.eye[i1]), v3(p.eye[i2]));
-                let n = (e1 - e0).cross(&(e2 - e0));
-                let front = if vs.ortho {
-                    n.z > 0.0
-                } else {
-                    n.dot(&e0) < 0.0
-                };
-                if !front && p.closed && scene.cull {
-                    st.culled += 1;
-                    continue;
-                }
-                // An open mesh shows its back: light the side that is seen.
-                let flip = if !front && !p.closed { -1.0 } else { 1.0 };
-                let idx = [i0, i1, i2];
-                let mut cs = [[0.0f32; 12]; 3];
-                for k in 0..3 {
-                    let v = idx[k];
-                    let s = surface(p.obj, face, v as u32);
-                    let nrm = if p.vnormals.is_empty() {
-                        [0.0; 3]
-                    } else {
-                        p.vnormals[v].map(|x| x * flip)
-                    };
-                    cs[k][3..6].copy_from_slice(&nrm);
-                    cs[k][6..9].copy_from_slice(&p.eye[v]);
-                    cs[k][9..12].copy_from_slice(&s);
-                }
-                match p.shading {
-                    Shading::Flat => {
-                        let fnrm = v3(mesh.face_normal(face as usize));
-                        // The polygon's normal in eye space: the triangle's own
-                        // for a triangle, Newell's average for a polygon.
-                        let fe = face_normal_eye(p, face as usize).unwrap_or(fnrm) * flip;
-                        let centre = (e0 + e1 + e2) / 3.0;
-                        let c = light_at(
-                            &p.material,
-                            &p.lights,
-                            cs[0][9..12].try_into().unwrap_or([1.0; 3]),
-                            fe,
-                            centre,
-                            vs.ortho,
-                            &mut NoTrace,
-                        );
-                        st.lighting_evals += 1;
-                        for corner in &mut cs {
-                            corner[0..3].copy_from_slice(&c);
-                            corner[3..6].copy_from_slice(&[fe.x, fe.y, fe.z]);
-                            corner[6..9].copy_from_slice(&[centre.x, centre.y, centre.z]);
-                        }
-                    }
-                    Shading::Gouraud => {
-                        for k in 0..3 {
-                            let c = match &p.lit {
-                                Some(l) => l[idx[k]],
-                                None => {
-                                    st.lighting_evals += 1;
-                                    let c = &cs[k];
-                                    light_at(
-                                        &p.material,
-                                        &p.lights,
-                                        [c[9], c[10], c[11]],
-                                        Vector3::new(c[3], c[4], c[5]),
-                                        Vector3::new(c[6], c[7], c[8]),
-                                        vs.ortho,
-                                        &mut NoTrace,
-                                    )
-                                }
-                            };
-                            cs[k][0..3].copy_from_slice(&c);
-                        }
-                    }
-                    Shading::Phong => {}
-                }
-                let cv = |k: usize| CV {
-                    c: p.clip[idx[k]],
-                    a: cs[k],
-                };
-                let mut emit = |a: &CV, b: &CV, c: &CV, st: &mut Stats| {
-                    let sv = [a, b, c].map(|v| to_screen(&v.c, &vs.win, w as f32, h as f32));
-                    match raster::setup(sv, w, h) {
-                        Some((mut t, swap)) => {
-                            t.obj = oi;
-                            t.face = face;
-                            out.push(t);
-                            corners.push(if swap {
-                                [a.a, c.a, b.a]
-                            } else {
-                                [a.a, b.a, c.a]
-                            });
-                            st.drawn += 1;
-                        }
-                        None => st.no_pixels += 1,
-                    }
-                };
-                if or == 0 {
-                    emit(&cv(0), &cv(1), &cv(2), &mut st);
-                } else {
-                    st.clipped += 1;
-                    poly.clear();
-                    poly.extend([cv(0), cv(1), cv(2)]);
-                    clip_poly(&mut poly, or, &mut tmp);
-                    for k in 1..poly.len().saturating_sub(1) {
-                        let (a, b, c) = (poly[0], poly[k], poly[k + 1]);
-                        emit(&a, &b, &c, &mut st);
-                    }
-                }
-            }
-            st
+        .enumerate()
+        .for_each(|(c, ((tris, faces), buf))| {
+            first_pass(p, oi, c * CHUNK, tris, faces, vs, scene.cull, opt, buf);
+        });
+    let total: usize = bufs.iter().map(|b| b.count).sum();
+    let end = first + total;
+    if out.tris.len() < end {
+        out.tris.resize(end, Tri::default());
+        out.corners.resize(end, [[0.0; 12]; 3]);
+        out.planes.resize(end, Planes::default());
+    }
+    let lens = || bufs.iter().map(|b| b.count);
+    let starts: Vec<u32> = lens()
+        .scan(first as u32, |s, n| {
+            let a = *s;
+            *s += n as u32;
+            Some(a)
         })
         .collect();
-    let mut st = Stats::default();
-    tris.reserve(bufs.iter().map(|c| c.0.len()).sum());
-    corners.reserve(bufs.iter().map(|c| c.1.len()).sum());
-    for ((t, c), s) in bufs.iter().zip(&stats) {
-        tris.extend_from_slice(t);
-        corners.extend_from_slice(c);
-        st.add(s);
+    let dests: Vec<Dest> = split_by(&mut out.tris[first..end], lens())
+        .into_iter()
+        .zip(split_by(&mut out.corners[first..end], lens()))
+        .zip(split_by(&mut out.planes[first..end], lens()))
+        .zip(starts)
+        .map(|(((tris, corners), planes), first)| Dest {
+            tris,
+            corners,
+            planes,
+            first,
+        })
+        .collect();
+    bufs.par_iter_mut()
+        .zip(dests)
+        .for_each(|(buf, d)| second_pass(p, oi, vs, opt, buf, d));
+    // Each band's triangles: the chunks' in order.
+    let t0 = Instant::now();
+    let bands = (opt.height as usize).div_ceil(BAND);
+    out.bins.resize_with(bands, Vec::new);
+    out.bins.par_iter_mut().enumerate().for_each(|(b, bin)| {
+        for buf in &bufs {
+            bin.extend_from_slice(&buf.bins[b]);
+        }
+    });
+    let mut st = Stats {
+        binning: t0.elapsed(),
+        ..Stats::default()
+    };
+    for b in &bufs {
+        st.add(&b.stats);
     }
     pool.extend(bufs);
-    st
+    (total, st)
+}
+
+/// The frame's arrays the triangle stage fills: set-up triangles, their
+/// corners and Phong planes (indexed alike), and per band the triangles
+/// in it, in submission order.
+pub(super) struct Output<'f> {
+    pub(super) tris: &'f mut Vec<Tri>,
+    pub(super) corners: &'f mut Vec<[Corner; 3]>,
+    pub(super) planes: &'f mut Vec<Planes>,
+    pub(super) bins: &'f mut Vec<Vec<u32>>,
 }
 
 /// The eye-space normal of polygon `f` (Newell's sum over its eye-space
 /// vertices), `None` if degenerate.
 fn face_normal_eye(p: &Prep, f: usize) -> Option<Vector3<f32>> {
     let face = &p.obj.mesh.faces[f];
-    let p0 = v3(p.eye[face[0] as usize]);
+    let p0 = v3(p.v.eye[face[0] as usize]);
     let mut n = Vector3::zeros();
     for w in face[1..].windows(2) {
-        n += (v3(p.eye[w[0] as usize]) - p0).cross(&(v3(p.eye[w[1] as usize]) - p0));
+        n += (v3(p.v.eye[w[0] as usize]) - p0).cross(&(v3(p.v.eye[w[1] as usize]) - p0));
     }
     let l = n.norm();
     (l > 0.0).then(|| n / l)

@@ -97,9 +97,11 @@ pub struct Stats {
     pub lights_skipped: u64,
     /// Objects drawn without specular work (ks = 0 or specular off).
     pub specular_skipped: u64,
-    /// Time: transforms, culling, clipping, setup, per-face/vertex lighting.
+    /// Time: transforms, culling, clipping, setup, per-face/vertex lighting,
+    /// Phong's attribute planes.
     pub geometry: Duration,
-    /// Time: binning triangles into bands, and Phong's attribute planes.
+    /// Time: gathering the triangles of each band (made per chunk in the
+    /// geometry stage) in submission order.
     pub binning: Duration,
     /// Thread time (summed over bands): visibility.
     pub raster: Duration,
@@ -159,8 +161,10 @@ pub struct Frame {
 struct Scratch {
     /// Phong's attribute planes per triangle.
     planes: Vec<Planes>,
-    /// The geometry stage's per-chunk outputs.
+    /// The geometry stage's per-chunk working data.
     chunks: Vec<geometry::ChunkBuf>,
+    /// The geometry stage's per-vertex arrays.
+    verts: geometry::VertBufs,
 }
 
 /// How one object is shaded: its material, the lights that reach it and
@@ -317,13 +321,22 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
             Scratch::default(),
         ),
     };
-    tris.clear();
-    corners.clear();
     let mut stats = Stats::default();
+    // The triangle arrays keep their length from the previous frame (only
+    // new entries are filled before being written) and are cut at the end.
+    let mut planes = std::mem::take(&mut scratch.planes);
+    let mut bins: Vec<Vec<u32>> = Vec::new();
+    let mut out = geometry::Output {
+        tris: &mut tris,
+        corners: &mut corners,
+        planes: &mut planes,
+        bins: &mut bins,
+    };
+    let mut count = 0;
     // Per object: the material and the lights that reach it.
     let mut looks = Vec::new();
     for (oi, obj) in scene.objects.iter().enumerate() {
-        let Some(p) = prepare(obj, &vs, &scene.lights, opt, &mut stats) else {
+        let Some(p) = prepare(obj, &vs, &scene.lights, opt, &mut stats, &mut scratch.verts) else {
             looks.push(Look {
                 material: fast_material(&obj.material),
                 lights: Vec::new(),
@@ -331,40 +344,32 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
             });
             continue;
         };
-        let s = triangles(
+        let (n, s) = triangles(
             &p,
             oi as u32,
             &vs,
             scene,
             opt,
-            &mut tris,
-            &mut corners,
+            count,
+            &mut out,
             &mut scratch.chunks,
         );
+        count += n;
         stats.add(&s);
+        stats.binning += s.binning;
         looks.push(Look {
             material: p.material,
             lights: p.lights,
             shading: p.shading,
         });
     }
-    stats.geometry = t0.elapsed();
-
-    let t1 = Instant::now();
-    let bins = raster::bin(&tris, opt.height);
-
-    // Phong's attribute planes, once per triangle.
-    let planes = &mut scratch.planes;
-    planes.clear();
-    planes.par_extend(tris.par_iter().zip(corners.par_iter()).map(|(t, c)| {
-        if looks[t.obj as usize].shading == Shading::Phong {
-            Planes::of(t, c)
-        } else {
-            Planes::default()
-        }
-    }));
+    tris.truncate(count);
+    corners.truncate(count);
+    planes.truncate(count);
+    bins.resize_with((opt.height as usize).div_ceil(BAND), Vec::new);
+    scratch.planes = planes;
     let planes = &scratch.planes;
-    stats.binning = t1.elapsed();
+    stats.geometry = t0.elapsed().saturating_sub(stats.binning);
 
     // Each object's material and lights at eight lanes, for Phong's batches.
     let wide: Vec<(Material<F32x8>, Vec<Light<F32x8>>)> = looks
