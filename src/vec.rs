@@ -44,14 +44,11 @@ pub fn scale<T: Scalar>(a: &V3<T>, s: &T) -> V3<T> {
     )
 }
 
-/// a / s (s ≠ 0; the caller checks).
+/// a / s (s ≠ 0; the caller checks), by [`Scalar::div3`].
 #[inline(always)]
 pub fn div<T: Scalar>(a: &V3<T>, s: &T) -> V3<T> {
-    v3(
-        a[0].clone() / s.clone(),
-        a[1].clone() / s.clone(),
-        a[2].clone() / s.clone(),
-    )
+    let [x, y, z] = T::div3([&a[0], &a[1], &a[2]], s);
+    v3(x, y, z)
 }
 
 /// a · b = a₀b₀ + a₁b₁ + a₂b₂ (compensated in floats).

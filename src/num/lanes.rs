@@ -288,11 +288,6 @@ pub struct F32x8(imp::V);
 pub struct Mask(imp::M);
 
 impl Mask {
-    /// Lanes lo..hi true (0 ≤ lo ≤ hi ≤ 8).
-    #[inline(always)]
-    pub fn range(lo: usize, hi: usize) -> Mask {
-        Mask(imp::mask_from(std::array::from_fn(|k| k >= lo && k < hi)))
-    }
     /// Lane k true when bit k of `bits` is set.
     #[inline(always)]
     pub fn from_bits(bits: u32) -> Mask {
@@ -513,6 +508,12 @@ impl Scalar for F32x8 {
     #[inline(always)]
     fn sum_of_products(a: &Self, b: &Self, c: &Self, d: &Self) -> Self {
         *a * *b + *c * *d
+    }
+    /// a·(1/s), as `Fast32::div3`.
+    #[inline(always)]
+    fn div3(a: [&Self; 3], s: &Self) -> [Self; 3] {
+        let r = F32x8::splat(1.0) / *s;
+        [*a[0] * r, *a[1] * r, *a[2] * r]
     }
     /// xⁿ lane by lane, through f64 as `Fast32` does (the default method).
     fn powf(&self, n: &Self) -> Self {

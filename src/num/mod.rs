@@ -162,6 +162,17 @@ pub trait Scalar:
     /// cos of an angle in degrees (exact in `Real` for multiples of 15° and 22.5°).
     fn cos_deg(&self) -> Self;
 
+    /// (a₀/s, a₁/s, a₂/s): three correctly rounded divisions. The
+    /// renderer's plain types ([`Fast32`], [`F32x8`]) multiply by 1/s
+    /// instead (one division, each quotient within an ulp or so).
+    #[inline(always)]
+    fn div3(a: [&Self; 3], s: &Self) -> [Self; 3] {
+        [
+            a[0].clone() / s.clone(),
+            a[1].clone() / s.clone(),
+            a[2].clone() / s.clone(),
+        ]
+    }
     /// `a*b - c*d` with one rounding where it matters (Kahan's algorithm with
     /// FMA for floats), so that cross products and 2×2 determinants do not
     /// lose all their digits to cancellation.
