@@ -261,20 +261,6 @@ impl Tri {
     }
 }
 
-/// Triangle indices per band, in submission order (so the depth test breaks
-/// ties the same way at any thread count).
-pub fn bin(tris: &[Tri], h: u32) -> Vec<Vec<u32>> {
-    let bands = (h as usize).div_ceil(BAND);
-    let mut bins = vec![Vec::new(); bands];
-    for (t, tri) in tris.iter().enumerate() {
-        let (b0, b1) = (tri.bbox[2] as usize / BAND, tri.bbox[3] as usize / BAND);
-        for bin in &mut bins[b0..=b1] {
-            bin.push(t as u32);
-        }
-    }
-    bins
-}
-
 /// The visibility pass of one band (rows from `r0`): clears it, then draws
 /// its triangles in order; for every pixel the nearest triangle wins
 /// (strictly nearer, so the first drawn keeps a tie).
