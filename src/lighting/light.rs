@@ -129,48 +129,8 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
         _ => T::one(),
     };
     let listening = listening(tr);
-    if !listening && (attenuation.clone() * spot.clone()).is_zero_value() {
-        let cos_alpha = dot(&l, n);
-        return Some(LightTerm {
-            l,
-            distance,
-            attenuation,
-            spot,
-            cos_alpha,
-            r: None,
-            cos_beta: None,
-            h: None,
-            cos_nh: None,
-            highlight: T::zero(),
-        });
-    }
-
     // cos α = L·N
     let cos_alpha = dot(&l, n);
-    tr.step(|| {
-        let s = Step::new(
-            label(at, "angle of incidence: cos α = L·N"),
-            "cos α = Lx·Nx + Ly·Ny + Lz·Nz,  then max(cos α, 0)",
-        )
-        .val("L", Val::vec3(&l))
-        .val("N", Val::vec3(n))
-        .res("cos α", Val::num(&cos_alpha))
-        .res("max(cos α, 0)", Val::num(&max0(&cos_alpha)));
-        if cos_alpha < T::zero() {
-            s.note(if mat.specular_requires_lit {
-                "cos α < 0: the light is behind the surface — no diffuse, and (--specular-requires-lit) no specular"
-            } else {
-                "cos α < 0: the light is behind the surface — no diffuse; the text's code still computes R and adds the specular term (use --specular-requires-lit for the usual rule)"
-            })
-        } else {
-            s
-        }
-    });
-
-    // Specular: R and cos β (Phong), or H and N·H (Blinn)
-    // cos α > 0 (in some lane, for a lane type).
-    let lit = cos_alpha.any_gt(&T::zero());
-    let active = want_spec && (lit || !mat.specular_requires_lit);
     let mut term = LightTerm {
         l,
         distance,
@@ -183,6 +143,34 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
         cos_nh: None,
         highlight: T::zero(),
     };
+    if !listening && (term.attenuation.clone() * term.spot.clone()).is_zero_value() {
+        return Some(term);
+    }
+    tr.step(|| {
+        let cos_alpha = &term.cos_alpha;
+        let s = Step::new(
+            label(at, "angle of incidence: cos α = L·N"),
+            "cos α = Lx·Nx + Ly·Ny + Lz·Nz,  then max(cos α, 0)",
+        )
+        .val("L", Val::vec3(&term.l))
+        .val("N", Val::vec3(n))
+        .res("cos α", Val::num(cos_alpha))
+        .res("max(cos α, 0)", Val::num(&max0(cos_alpha)));
+        if *cos_alpha < T::zero() {
+            s.note(if mat.specular_requires_lit {
+                "cos α < 0: the light is behind the surface — no diffuse, and (--specular-requires-lit) no specular"
+            } else {
+                "cos α < 0: the light is behind the surface — no diffuse; the text's code still computes R and adds the specular term (use --specular-requires-lit for the usual rule)"
+            })
+        } else {
+            s
+        }
+    });
+
+    // Specular: R and cos β (Phong), or H and N·H (Blinn)
+    // cos α > 0 (in some lane, for a lane type).
+    let lit = term.cos_alpha.any_gt(&T::zero());
+    let active = want_spec && (lit || !mat.specular_requires_lit);
     if !(active || listening) {
         return Some(term);
     }

@@ -13,7 +13,7 @@ use nalgebra::{Matrix3, Matrix4, Vector3, Vector4};
 use rayon::prelude::*;
 use std::time::Instant;
 
-use super::shade::{fast_light, fast_material, light_at, Planes};
+use super::shade::{light_as, light_at, material_as, Planes};
 use super::{Corner, Options, Stats, ViewSetup};
 
 /// Per-vertex arrays of an object (kept between frames, so a repeated
@@ -236,10 +236,10 @@ pub(super) fn prepare<'a>(
         if far {
             stats.lights_skipped += 1;
         } else {
-            lights.push(fast_light(l));
+            lights.push(light_as(l));
         }
     }
-    let mut material = fast_material(&obj.material);
+    let mut material: Material<Fast32> = material_as(&obj.material);
     if let Colors::One(c) = obj.colors {
         material.color = c.map(Fast32);
     }

@@ -33,7 +33,7 @@ mod shade;
 
 use geometry::{prepare, triangles};
 use shade::Planes;
-pub use shade::{fast_light, fast_material, light_at, phong_attributes, pixel_color, to_u8};
+pub use shade::{light_at, phong_attributes, pixel_color, to_u8};
 
 /// Per-corner data of a triangle: lit colour (flat, Gouraud), eye-space
 /// normal, eye-space position, surface colour.
@@ -338,7 +338,7 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
     for (oi, obj) in scene.objects.iter().enumerate() {
         let Some(p) = prepare(obj, &vs, &scene.lights, opt, &mut stats, &mut scratch.verts) else {
             looks.push(Look {
-                material: fast_material(&obj.material),
+                material: shade::material_as(&obj.material),
                 lights: Vec::new(),
                 shading: opt.shading,
             });

@@ -397,6 +397,7 @@ impl Batch {
         if self.len == 0 {
             return;
         }
+        // Written out: `array::from_fn` here was left as an outlined call.
         let q = [
             self.lanes(0),
             self.lanes(1),
@@ -490,16 +491,6 @@ pub fn light_as<S: Scalar, T: Scalar>(l: &Light<S>) -> Light<T> {
         attenuation: l.attenuation.each_ref().map(t),
         range: l.range.as_ref().map(t),
     }
-}
-
-/// A material at [`Fast32`].
-pub fn fast_material(m: &Material<f32>) -> Material<Fast32> {
-    material_as(m)
-}
-
-/// A light at [`Fast32`].
-pub fn fast_light(l: &Light<f32>) -> Light<Fast32> {
-    light_as(l)
 }
 
 /// The colour of pixel (i, j) covered by triangle `t`: flat and Gouraud
