@@ -224,13 +224,24 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
     term.r = Some(r);
     term.cos_beta = Some(cos_beta);
     if active {
-        let highlight = || pow(&rules.highlight_base(&cos_spec), &mat.shininess);
-        term.highlight = if mat.specular_requires_lit {
-            // Only where cos α > 0 (every lane but those of a lane type
-            // that are unlit).
-            term.cos_alpha.if_gt(&T::zero(), highlight, T::zero)
+        // Only where cos α > 0 with --specular-requires-lit (every lane but
+        // those of a lane type that are unlit); else everywhere (gate 1).
+        // A lane type computes xⁿ for all lanes and keeps the gated ones:
+        // no closure, so the renderer's batch code stays one inlined body
+        // (an outlined closure would be compiled without the AVX2 of its
+        // caller). A scalar computes it only when the gate is open.
+        let gate = if mat.specular_requires_lit {
+            term.cos_alpha.clone()
         } else {
-            highlight()
+            T::one()
+        };
+        term.highlight = if T::LANES > 1 {
+            let hv = pow(&rules.highlight_base(&cos_spec), &mat.shininess);
+            gate.if_gt(&T::zero(), || hv, T::zero)
+        } else if gate > T::zero() {
+            pow(&rules.highlight_base(&cos_spec), &mat.shininess)
+        } else {
+            T::zero()
         };
         tr.step(|| {
             let s = Step::new(

@@ -17,12 +17,15 @@
 //! where lanes may differ it uses [`Scalar::if_gt`], which this type
 //! evaluates per lane, running each branch only when some lane takes it.
 //!
+//! **One definition, two backends.** The type is written once, as the
+//! macro `lane_type!` over a module of lane operations. `F32x8` is it over
+//! SSE (or the array); the renderer's band pass defines a second instance
+//! over AVX (`render::shade::avx::Avx8`, one 256-bit register) for the copy
+//! of the pass it compiles for AVX2. The [`Wide`] trait is what that pass
+//! asks of either.
+//!
 //! **Reading a number out** (`to_f64`, `to_real`, `shown`) gives lane 0: a
 //! batch is never reported, only turned into pixels.
-
-use super::{Precision, Real, Scalar, Shown};
-use std::cmp::Ordering;
-use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 /// The lane operations on x86-64: two SSE registers (SSE and SSE2 are part
 /// of the x86-64 baseline, so the intrinsics are safe to call).
@@ -279,307 +282,405 @@ mod imp {
     }
 }
 
-/// Eight f32 lanes with plain, lane-wise arithmetic.
-#[derive(Clone, Copy, Debug)]
-pub struct F32x8(imp::V);
-
-/// A mask over the eight lanes (the result of a lane-wise comparison).
-#[derive(Clone, Copy, Debug)]
-pub struct Mask(imp::M);
-
-impl Mask {
-    /// Lane k true when bit k of `bits` is set.
-    #[inline(always)]
-    pub fn from_bits(bits: u32) -> Mask {
-        Mask(imp::mask_from(std::array::from_fn(|k| bits >> k & 1 == 1)))
-    }
-    /// Bit k set when lane k is true.
-    #[inline(always)]
-    pub fn bits(self) -> u32 {
-        imp::bits(self.0)
-    }
-    /// Whether some lane is true.
-    #[inline(always)]
-    pub fn any(self) -> bool {
-        self.bits() != 0
-    }
-    /// Whether every lane is true.
-    #[inline(always)]
-    pub fn all(self) -> bool {
-        self.bits() == 0xff
-    }
-}
-
-impl Default for F32x8 {
-    fn default() -> F32x8 {
-        F32x8::splat(0.0)
-    }
-}
-
-impl F32x8 {
+/// What the renderer's Phong batches need of an eight-lane type besides
+/// [`Scalar`]: lanes in and bytes out.
+pub trait Wide: super::Scalar + Copy {
     /// Every lane `x`.
-    #[inline(always)]
-    pub fn splat(x: f32) -> F32x8 {
-        F32x8(imp::splat(x))
-    }
-    /// The lanes from an array (lane k = a[k]).
-    #[inline(always)]
-    pub fn from_array(a: [f32; 8]) -> F32x8 {
-        F32x8(imp::from_array(a))
-    }
+    fn splat(x: f32) -> Self;
+    /// Lane k = `a[k]`.
+    fn from_array(a: [f32; 8]) -> Self;
     /// The lanes as an array.
-    #[inline(always)]
-    pub fn to_array(self) -> [f32; 8] {
-        imp::to_array(self.0)
-    }
-    /// Each lane truncated to a byte (`x as u8`: toward zero, saturating;
-    /// NaN gives 0).
-    #[inline(always)]
-    pub fn to_bytes(self) -> [u8; 8] {
-        imp::to_bytes(self.0)
-    }
-    /// `f` applied to each lane (lane by lane, for the rare operations
-    /// without a vector instruction).
-    #[inline(always)]
-    pub fn map(self, f: impl Fn(f32) -> f32) -> F32x8 {
-        F32x8::from_array(self.to_array().map(f))
-    }
-    /// Lane k of `self` where lane k of `take` is true, else lane k of
+    fn to_array(self) -> [f32; 8];
+    /// Each lane truncated to a byte (`x as u8`).
+    fn to_bytes(self) -> [u8; 8];
+    /// Lane k of `self` where bit k of `bits` is set, else lane k of
     /// `other`.
-    #[inline(always)]
-    pub fn select(self, take: Mask, other: F32x8) -> F32x8 {
-        F32x8(imp::select(take.0, self.0, other.0))
-    }
-    /// True in the lanes where `self` > `o`.
-    #[inline(always)]
-    pub fn gt_mask(self, o: F32x8) -> Mask {
-        Mask(imp::gt(self.0, o.0))
-    }
+    fn select_bits(self, bits: u32, other: Self) -> Self;
 }
 
-macro_rules! binop {
-    ($tr:ident, $f:ident, $tra:ident, $fa:ident, $imp:ident) => {
-        impl $tr for F32x8 {
-            type Output = F32x8;
+/// Defines an eight-lane f32 type `$name` (with its mask type `$mask`)
+/// over a module `$imp` of lane operations: `V`, `M`, `from_array`,
+/// `to_array`, `splat`, `add`, `sub`, `mul`, `div`, `sqrt`, `neg`, `abs`,
+/// `max`, `min`, `gt`, `lt`, `eq`, `select`, `to_bytes`, `bits`,
+/// `mask_from`, each lane by lane with the plain f32 operation. [`F32x8`]
+/// is this over SSE (or an array); the renderer defines a second one over
+/// AVX2 for the code it compiles for AVX2.
+macro_rules! lane_type {
+    ($(#[$meta:meta])* $vis:vis $name:ident, $mask:ident, $imp:ident) => {
+        #[allow(unused_imports)]
+        use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+        #[allow(unused_imports)]
+        use std::cmp::Ordering;
+        #[allow(unused_imports)]
+        use $crate::num::{Precision, Real, Scalar, Shown};
+
+        $(#[$meta])*
+        #[derive(Clone, Copy, Debug)]
+        $vis struct $name($imp::V);
+
+        /// A mask over the eight lanes (the result of a lane-wise comparison).
+        #[derive(Clone, Copy, Debug)]
+        $vis struct $mask($imp::M);
+
+        impl $mask {
+            /// Lane k true when bit k of `bits` is set.
             #[inline(always)]
-            fn $f(self, o: F32x8) -> F32x8 {
-                F32x8(imp::$imp(self.0, o.0))
+            pub fn from_bits(bits: u32) -> $mask {
+                $mask($imp::mask_from(std::array::from_fn(|k| bits >> k & 1 == 1)))
+            }
+            /// Bit k set when lane k is true.
+            #[inline(always)]
+            pub fn bits(self) -> u32 {
+                $imp::bits(self.0)
+            }
+            /// Whether some lane is true.
+            #[inline(always)]
+            pub fn any(self) -> bool {
+                self.bits() != 0
+            }
+            /// Whether every lane is true.
+            #[inline(always)]
+            pub fn all(self) -> bool {
+                self.bits() == 0xff
             }
         }
-        impl $tra for F32x8 {
-            #[inline(always)]
-            fn $fa(&mut self, o: F32x8) {
-                self.0 = imp::$imp(self.0, o.0);
+
+        impl Default for $name {
+            fn default() -> $name {
+                $name::splat(0.0)
             }
         }
+
+        impl $name {
+            /// Every lane `x`.
+            #[inline(always)]
+            pub fn splat(x: f32) -> $name {
+                $name($imp::splat(x))
+            }
+            /// The lanes from an array (lane k = a[k]).
+            #[inline(always)]
+            pub fn from_array(a: [f32; 8]) -> $name {
+                $name($imp::from_array(a))
+            }
+            /// The lanes as an array.
+            #[inline(always)]
+            pub fn to_array(self) -> [f32; 8] {
+                $imp::to_array(self.0)
+            }
+            /// Each lane truncated to a byte (`x as u8`: toward zero, saturating;
+            /// NaN gives 0).
+            #[inline(always)]
+            pub fn to_bytes(self) -> [u8; 8] {
+                $imp::to_bytes(self.0)
+            }
+            /// `f` applied to each lane (lane by lane, for the rare operations
+            /// without a vector instruction).
+            #[inline(always)]
+            pub fn map(self, f: impl Fn(f32) -> f32) -> $name {
+                $name::from_array(self.to_array().map(f))
+            }
+            /// Lane k of `self` where lane k of `take` is true, else lane k of
+            /// `other`.
+            #[inline(always)]
+            pub fn select(self, take: $mask, other: $name) -> $name {
+                $name($imp::select(take.0, self.0, other.0))
+            }
+            /// True in the lanes where `self` > `o`.
+            #[inline(always)]
+            pub fn gt_mask(self, o: $name) -> $mask {
+                $mask($imp::gt(self.0, o.0))
+            }
+        }
+
+        impl Add for $name {
+            type Output = $name;
+            #[inline(always)]
+            fn add(self, o: $name) -> $name {
+                $name($imp::add(self.0, o.0))
+            }
+        }
+        impl AddAssign for $name {
+            #[inline(always)]
+            fn add_assign(&mut self, o: $name) {
+                self.0 = $imp::add(self.0, o.0);
+            }
+        }
+        impl Sub for $name {
+            type Output = $name;
+            #[inline(always)]
+            fn sub(self, o: $name) -> $name {
+                $name($imp::sub(self.0, o.0))
+            }
+        }
+        impl SubAssign for $name {
+            #[inline(always)]
+            fn sub_assign(&mut self, o: $name) {
+                self.0 = $imp::sub(self.0, o.0);
+            }
+        }
+        impl Mul for $name {
+            type Output = $name;
+            #[inline(always)]
+            fn mul(self, o: $name) -> $name {
+                $name($imp::mul(self.0, o.0))
+            }
+        }
+        impl MulAssign for $name {
+            #[inline(always)]
+            fn mul_assign(&mut self, o: $name) {
+                self.0 = $imp::mul(self.0, o.0);
+            }
+        }
+        impl Div for $name {
+            type Output = $name;
+            #[inline(always)]
+            fn div(self, o: $name) -> $name {
+                $name($imp::div(self.0, o.0))
+            }
+        }
+        impl DivAssign for $name {
+            #[inline(always)]
+            fn div_assign(&mut self, o: $name) {
+                self.0 = $imp::div(self.0, o.0);
+            }
+        }
+
+        impl Neg for $name {
+            type Output = $name;
+            #[inline(always)]
+            fn neg(self) -> $name {
+                $name($imp::neg(self.0))
+            }
+        }
+
+        /// Equal in every lane.
+        impl PartialEq for $name {
+            #[inline(always)]
+            fn eq(&self, o: &$name) -> bool {
+                $mask($imp::eq(self.0, o.0)).all()
+            }
+        }
+
+        /// The order every lane agrees on, `None` when they disagree (or a lane is
+        /// NaN): so `a > b` is "a > b in every lane", and `!(a <= b)` is "a > b in
+        /// some lane".
+        impl PartialOrd for $name {
+            #[inline(always)]
+            fn partial_cmp(&self, o: &$name) -> Option<Ordering> {
+                if self == o {
+                    Some(Ordering::Equal)
+                } else if self < o {
+                    Some(Ordering::Less)
+                } else if self > o {
+                    Some(Ordering::Greater)
+                } else {
+                    None
+                }
+            }
+            #[inline(always)]
+            fn lt(&self, o: &$name) -> bool {
+                $mask($imp::lt(self.0, o.0)).all()
+            }
+            #[inline(always)]
+            fn gt(&self, o: &$name) -> bool {
+                $mask($imp::gt(self.0, o.0)).all()
+            }
+            // ≤ and ≥ keep the defaults (Less/Greater or Equal in every lane as a
+            // whole), consistent with partial_cmp: lanes mixing < and = give false.
+        }
+
+        impl ::num_traits::Zero for $name {
+            #[inline(always)]
+            fn zero() -> $name {
+                $name::splat(0.0)
+            }
+            #[inline(always)]
+            fn is_zero(&self) -> bool {
+                *self == $name::splat(0.0)
+            }
+        }
+
+        impl $crate::num::lanes::Wide for $name {
+            #[inline(always)]
+            fn splat(x: f32) -> $name {
+                $name::splat(x)
+            }
+            #[inline(always)]
+            fn from_array(a: [f32; 8]) -> $name {
+                $name::from_array(a)
+            }
+            #[inline(always)]
+            fn to_array(self) -> [f32; 8] {
+                $name::to_array(self)
+            }
+            #[inline(always)]
+            fn to_bytes(self) -> [u8; 8] {
+                $name::to_bytes(self)
+            }
+            #[inline(always)]
+            fn select_bits(self, bits: u32, other: $name) -> $name {
+                self.select($mask::from_bits(bits), other)
+            }
+        }
+
+        impl ::num_traits::One for $name {
+            #[inline(always)]
+            fn one() -> $name {
+                $name::splat(1.0)
+            }
+        }
+
+        impl $crate::num::Scalar for $name {
+            const PRECISION: Precision = Precision::F32;
+            const LANES: usize = 8;
+            fn from_real(x: &Real) -> Self {
+                $name::splat(x.to_f64() as f32)
+            }
+            #[inline(always)]
+            fn from_f64(x: f64) -> Self {
+                $name::splat(x as f32)
+            }
+            #[inline(always)]
+            fn from_i64(x: i64) -> Self {
+                $name::splat(x as f32)
+            }
+            /// Lane 0 (see the module documentation).
+            fn to_f64(&self) -> f64 {
+                f64::from(self.to_array()[0])
+            }
+            /// Lane 0 (see the module documentation).
+            fn to_real(&self) -> Real {
+                Real::from_f64(self.to_f64())
+            }
+            #[inline(always)]
+            fn sqrt(&self) -> Self {
+                $name($imp::sqrt(self.0))
+            }
+            #[inline(always)]
+            fn abs(&self) -> Self {
+                $name($imp::abs(self.0))
+            }
+            /// xⁿ lane by lane, with the same products as `Fast32::powi`.
+            #[inline(always)]
+            fn powi(&self, n: u32) -> Self {
+                if n == 0 {
+                    return $name::splat(1.0);
+                }
+                let (mut base, mut e) = (*self, n);
+                while e & 1 == 0 {
+                    base = base * base;
+                    e >>= 1;
+                }
+                let mut acc = base;
+                e >>= 1;
+                while e > 0 {
+                    base = base * base;
+                    if e & 1 == 1 {
+                        acc *= base;
+                    }
+                    e >>= 1;
+                }
+                acc
+            }
+            #[inline(always)]
+            fn dot3(a: [&Self; 3], b: [&Self; 3]) -> Self {
+                *a[0] * *b[0] + *a[1] * *b[1] + *a[2] * *b[2]
+            }
+            #[inline(always)]
+            fn hypot3(a: &Self, b: &Self, c: &Self) -> Self {
+                Self::dot3([a, b, c], [a, b, c]).sqrt()
+            }
+            #[inline(always)]
+            fn diff_of_products(a: &Self, b: &Self, c: &Self, d: &Self) -> Self {
+                *a * *b - *c * *d
+            }
+            #[inline(always)]
+            fn sum_of_products(a: &Self, b: &Self, c: &Self, d: &Self) -> Self {
+                *a * *b + *c * *d
+            }
+            /// a·(1/s), as `Fast32::div3`.
+            #[inline(always)]
+            fn div3(a: [&Self; 3], s: &Self) -> [Self; 3] {
+                let r = $name::splat(1.0) / *s;
+                [*a[0] * r, *a[1] * r, *a[2] * r]
+            }
+            /// xⁿ lane by lane, through f64 as `Fast32` does (the default method).
+            fn powf(&self, n: &Self) -> Self {
+                let (x, n) = (self.to_array(), n.to_array());
+                $name::from_array(std::array::from_fn(|k| {
+                    f64::from(x[k]).powf(f64::from(n[k])) as f32
+                }))
+            }
+            /// n when every lane holds the same whole number n (the test of the
+            /// default method, on that one value).
+            #[inline(always)]
+            fn as_whole(&self) -> Option<u32> {
+                let x = self.to_array()[0];
+                let x64 = f64::from(x);
+                (*self == $name::splat(x)
+                    && x64 >= 0.0
+                    && x64 <= f64::from(u32::MAX)
+                    && f64::from(x64 as u32) == x64)
+                    .then_some(x64 as u32)
+            }
+            #[inline(always)]
+            fn if_gt(&self, o: &Self, a: impl FnOnce() -> Self, b: impl FnOnce() -> Self) -> Self {
+                let gt = self.gt_mask(*o);
+                let bits = gt.bits();
+                // Each branch once, and only if some lane takes it.
+                let zero = $name::splat(0.0);
+                let a = if bits != 0 { a() } else { zero };
+                let b = if bits != 0xff { b() } else { zero };
+                a.select(gt, b)
+            }
+            #[inline(always)]
+            fn any_gt(&self, o: &Self) -> bool {
+                self.gt_mask(*o).any()
+            }
+            #[inline(always)]
+            fn max_of(&self, o: &Self) -> Self {
+                $name($imp::max(self.0, o.0))
+            }
+            #[inline(always)]
+            fn min_of(&self, o: &Self) -> Self {
+                $name($imp::min(self.0, o.0))
+            }
+            fn pi() -> Self {
+                $name::splat(std::f32::consts::PI)
+            }
+            fn tan_deg(&self) -> Self {
+                self.map(|a| <f32 as Scalar>::tan_deg(&a))
+            }
+            /// As `Fast32::sin_deg`, lane by lane.
+            fn sin_deg(&self) -> Self {
+                self.map(|a| a.to_radians().sin())
+            }
+            /// As `Fast32::cos_deg`, lane by lane.
+            fn cos_deg(&self) -> Self {
+                self.map(|a| a.to_radians().cos())
+            }
+            /// Finite in every lane.
+            #[inline(always)]
+            fn is_finite(&self) -> bool {
+                self.to_array().iter().all(|a| a.is_finite())
+            }
+            /// Lane 0 (see the module documentation).
+            fn shown(&self) -> Shown {
+                self.to_array()[0].shown()
+            }
+        }
+
     };
 }
-binop!(Add, add, AddAssign, add_assign, add);
-binop!(Sub, sub, SubAssign, sub_assign, sub);
-binop!(Mul, mul, MulAssign, mul_assign, mul);
-binop!(Div, div, DivAssign, div_assign, div);
+#[cfg_attr(not(target_arch = "x86_64"), allow(unused_imports))]
+pub(crate) use lane_type;
 
-impl Neg for F32x8 {
-    type Output = F32x8;
-    #[inline(always)]
-    fn neg(self) -> F32x8 {
-        F32x8(imp::neg(self.0))
-    }
-}
-
-/// Equal in every lane.
-impl PartialEq for F32x8 {
-    #[inline(always)]
-    fn eq(&self, o: &F32x8) -> bool {
-        Mask(imp::eq(self.0, o.0)).all()
-    }
-}
-
-/// The order every lane agrees on, `None` when they disagree (or a lane is
-/// NaN): so `a > b` is "a > b in every lane", and `!(a <= b)` is "a > b in
-/// some lane".
-impl PartialOrd for F32x8 {
-    #[inline(always)]
-    fn partial_cmp(&self, o: &F32x8) -> Option<Ordering> {
-        if self == o {
-            Some(Ordering::Equal)
-        } else if self < o {
-            Some(Ordering::Less)
-        } else if self > o {
-            Some(Ordering::Greater)
-        } else {
-            None
-        }
-    }
-    #[inline(always)]
-    fn lt(&self, o: &F32x8) -> bool {
-        Mask(imp::lt(self.0, o.0)).all()
-    }
-    #[inline(always)]
-    fn gt(&self, o: &F32x8) -> bool {
-        Mask(imp::gt(self.0, o.0)).all()
-    }
-    // ≤ and ≥ keep the defaults (Less/Greater or Equal in every lane as a
-    // whole), consistent with partial_cmp: lanes mixing < and = give false.
-}
-
-impl num_traits::Zero for F32x8 {
-    #[inline(always)]
-    fn zero() -> F32x8 {
-        F32x8::splat(0.0)
-    }
-    #[inline(always)]
-    fn is_zero(&self) -> bool {
-        *self == F32x8::splat(0.0)
-    }
-}
-
-impl num_traits::One for F32x8 {
-    #[inline(always)]
-    fn one() -> F32x8 {
-        F32x8::splat(1.0)
-    }
-}
-
-impl Scalar for F32x8 {
-    const PRECISION: Precision = Precision::F32;
-    const LANES: usize = 8;
-    fn from_real(x: &Real) -> Self {
-        F32x8::splat(x.to_f64() as f32)
-    }
-    #[inline(always)]
-    fn from_f64(x: f64) -> Self {
-        F32x8::splat(x as f32)
-    }
-    #[inline(always)]
-    fn from_i64(x: i64) -> Self {
-        F32x8::splat(x as f32)
-    }
-    /// Lane 0 (see the module documentation).
-    fn to_f64(&self) -> f64 {
-        f64::from(self.to_array()[0])
-    }
-    /// Lane 0 (see the module documentation).
-    fn to_real(&self) -> Real {
-        Real::from_f64(self.to_f64())
-    }
-    #[inline(always)]
-    fn sqrt(&self) -> Self {
-        F32x8(imp::sqrt(self.0))
-    }
-    #[inline(always)]
-    fn abs(&self) -> Self {
-        F32x8(imp::abs(self.0))
-    }
-    /// xⁿ lane by lane, with the same products as `Fast32::powi`.
-    #[inline(always)]
-    fn powi(&self, n: u32) -> Self {
-        if n == 0 {
-            return F32x8::splat(1.0);
-        }
-        let (mut base, mut e) = (*self, n);
-        while e & 1 == 0 {
-            base = base * base;
-            e >>= 1;
-        }
-        let mut acc = base;
-        e >>= 1;
-        while e > 0 {
-            base = base * base;
-            if e & 1 == 1 {
-                acc *= base;
-            }
-            e >>= 1;
-        }
-        acc
-    }
-    #[inline(always)]
-    fn dot3(a: [&Self; 3], b: [&Self; 3]) -> Self {
-        *a[0] * *b[0] + *a[1] * *b[1] + *a[2] * *b[2]
-    }
-    #[inline(always)]
-    fn hypot3(a: &Self, b: &Self, c: &Self) -> Self {
-        Self::dot3([a, b, c], [a, b, c]).sqrt()
-    }
-    #[inline(always)]
-    fn diff_of_products(a: &Self, b: &Self, c: &Self, d: &Self) -> Self {
-        *a * *b - *c * *d
-    }
-    #[inline(always)]
-    fn sum_of_products(a: &Self, b: &Self, c: &Self, d: &Self) -> Self {
-        *a * *b + *c * *d
-    }
-    /// a·(1/s), as `Fast32::div3`.
-    #[inline(always)]
-    fn div3(a: [&Self; 3], s: &Self) -> [Self; 3] {
-        let r = F32x8::splat(1.0) / *s;
-        [*a[0] * r, *a[1] * r, *a[2] * r]
-    }
-    /// xⁿ lane by lane, through f64 as `Fast32` does (the default method).
-    fn powf(&self, n: &Self) -> Self {
-        let (x, n) = (self.to_array(), n.to_array());
-        F32x8::from_array(std::array::from_fn(|k| {
-            f64::from(x[k]).powf(f64::from(n[k])) as f32
-        }))
-    }
-    /// n when every lane holds the same whole number n (the test of the
-    /// default method, on that one value).
-    #[inline(always)]
-    fn as_whole(&self) -> Option<u32> {
-        let x = self.to_array()[0];
-        let x64 = f64::from(x);
-        (*self == F32x8::splat(x)
-            && x64 >= 0.0
-            && x64 <= f64::from(u32::MAX)
-            && f64::from(x64 as u32) == x64)
-            .then_some(x64 as u32)
-    }
-    #[inline(always)]
-    fn if_gt(&self, o: &Self, a: impl FnOnce() -> Self, b: impl FnOnce() -> Self) -> Self {
-        let gt = self.gt_mask(*o);
-        let bits = gt.bits();
-        // Each branch once, and only if some lane takes it.
-        let zero = F32x8::splat(0.0);
-        let a = if bits != 0 { a() } else { zero };
-        let b = if bits != 0xff { b() } else { zero };
-        a.select(gt, b)
-    }
-    #[inline(always)]
-    fn any_gt(&self, o: &Self) -> bool {
-        self.gt_mask(*o).any()
-    }
-    #[inline(always)]
-    fn max_of(&self, o: &Self) -> Self {
-        F32x8(imp::max(self.0, o.0))
-    }
-    #[inline(always)]
-    fn min_of(&self, o: &Self) -> Self {
-        F32x8(imp::min(self.0, o.0))
-    }
-    fn pi() -> Self {
-        F32x8::splat(std::f32::consts::PI)
-    }
-    fn tan_deg(&self) -> Self {
-        self.map(|a| <f32 as Scalar>::tan_deg(&a))
-    }
-    /// As `Fast32::sin_deg`, lane by lane.
-    fn sin_deg(&self) -> Self {
-        self.map(|a| a.to_radians().sin())
-    }
-    /// As `Fast32::cos_deg`, lane by lane.
-    fn cos_deg(&self) -> Self {
-        self.map(|a| a.to_radians().cos())
-    }
-    /// Finite in every lane.
-    #[inline(always)]
-    fn is_finite(&self) -> bool {
-        self.to_array().iter().all(|a| a.is_finite())
-    }
-    /// Lane 0 (see the module documentation).
-    fn shown(&self) -> Shown {
-        self.to_array()[0].shown()
-    }
-}
+lane_type!(
+    /// Eight f32 lanes with plain, lane-wise arithmetic.
+    pub F32x8,
+    Mask,
+    imp
+);
 
 #[cfg(test)]
 mod tests {

@@ -18,7 +18,7 @@
 
 use crate::error::{Error, Result};
 use crate::lighting::{Light, Material};
-use crate::num::{F32x8, Fast32};
+use crate::num::Fast32;
 use crate::raster::{self, Tri, BAND};
 use crate::scene::{Normals, Scene, Shading, View};
 use crate::trace::NoTrace;
@@ -371,20 +371,11 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
     let planes = &scratch.planes;
     stats.geometry = t0.elapsed().saturating_sub(stats.binning);
 
-    // Each object's material and lights at eight lanes, for Phong's batches.
-    let wide: Vec<(Material<F32x8>, Vec<Light<F32x8>>)> = looks
-        .iter()
-        .map(|l| {
-            let lights = l.lights.iter().map(shade::light_as).collect();
-            (shade::material_as(&l.material), lights)
-        })
-        .collect();
     let band_in = shade::BandInput {
         tris: &tris,
         corners: &corners,
         planes,
         looks: &looks,
-        wide: &wide,
         ortho: vs.ortho,
         bg: to_u8(scene.background),
         width: opt.width as usize,

@@ -4,7 +4,7 @@
 //! is explained, with the same bits either way.
 
 use crate::lighting::{self, Light, LightKind, Material, Surface};
-use crate::num::lanes::Mask;
+use crate::num::lanes::Wide;
 use crate::num::{F32x8, Fast32, Scalar};
 use crate::raster::{Tri, NONE};
 use crate::scene::Shading;
@@ -12,6 +12,9 @@ use crate::trace::{NoTrace, Trace};
 use nalgebra::Vector3;
 
 use super::{Corner, Look};
+
+#[cfg(target_arch = "x86_64")]
+mod avx;
 
 /// One lighting evaluation through the calculator's `lighting::shade`, at
 /// [`Fast32`] (plain f32 arithmetic).
@@ -199,7 +202,7 @@ fn colour<T: Scalar>(q: &[T; ATTRS], r: &T) -> [T; 3] {
 }
 
 /// What the shading of a band reads: the frame's triangles, their data and
-/// each object's look, with its material and lights at eight lanes.
+/// each object's look.
 pub struct BandInput<'a> {
     /// The set-up triangles.
     pub tris: &'a [Tri],
@@ -209,8 +212,6 @@ pub struct BandInput<'a> {
     pub planes: &'a [Planes],
     /// Per object: how it is shaded.
     pub looks: &'a [Look],
-    /// Per object: material and lights at [`F32x8`].
-    pub wide: &'a [(Material<F32x8>, Vec<Light<F32x8>>)],
     /// The viewer is along +z (tilt view), not at the eye-space origin.
     pub ortho: bool,
     /// The background's 8-bit colour.
@@ -224,9 +225,10 @@ pub struct BandInput<'a> {
 /// visible; flat and Gouraud colours from the corners; Phong pixels lit
 /// eight at a time. Returns (pixels shaded, lighting evaluations).
 ///
-/// On a CPU with AVX2 the same code, compiled a second time with AVX2
-/// enabled (three-operand instructions: about a fifth fewer of them), is
-/// chosen at run time; the results are the same bits.
+/// On a CPU with AVX2 the same code is compiled a second time for AVX2 with
+/// the lane type [`avx::Avx8`] (one 256-bit register per eight lanes
+/// instead of two SSE halves), and chosen at run time; the results are the
+/// same bits.
 pub fn shade_band(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") {
@@ -234,23 +236,30 @@ pub fn shade_band(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64,
         // `shade_band_avx2` is compiled for.
         return unsafe { shade_band_avx2(inp, r0, out, id) };
     }
-    shade_band_with(inp, r0, out, id)
+    shade_band_with::<F32x8>(inp, r0, out, id)
 }
 
-/// [`shade_band_with`] compiled for AVX2.
+/// [`shade_band_with`] at [`avx::Avx8`], compiled for AVX2: the one place
+/// `Avx8` is used (see that module on why this is sound).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 fn shade_band_avx2(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
-    shade_band_with(inp, r0, out, id)
+    shade_band_with::<avx::Avx8>(inp, r0, out, id)
 }
 
-/// The body of [`shade_band`].
+/// The body of [`shade_band`], with Phong's batches at the lane type `W`.
 #[inline(always)]
-fn shade_band_with(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
+fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
     let w = inp.width;
     let (mut count, mut evals) = (0u64, 0u64);
-    // Working copies of the materials, recoloured per batch by Phong.
-    let mut mats: Vec<Material<F32x8>> = inp.wide.iter().map(|w| w.0.clone()).collect();
+    // Each object's material (recoloured per batch by Phong) and lights at
+    // W (through f64: exact from f32).
+    let mut mats: Vec<Material<W>> = inp.looks.iter().map(|l| material_as(&l.material)).collect();
+    let lights: Vec<Vec<Light<W>>> = inp
+        .looks
+        .iter()
+        .map(|l| l.lights.iter().map(light_as).collect())
+        .collect();
     // A row of background, copied over the runs no triangle covers.
     let bg_row: Vec<u8> = inp.bg.iter().copied().cycle().take(3 * w).collect();
     for (r, (orow, irow)) in out
@@ -276,12 +285,7 @@ fn shade_band_with(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64
             if inp.looks[obj].shading == Shading::Phong {
                 evals += (end - i) as u64;
                 if obj != batch.obj {
-                    batch.flush(
-                        &mut mats[batch.obj],
-                        &inp.wide[batch.obj].1,
-                        inp.ortho,
-                        orow,
-                    );
+                    batch.flush(&mut mats[batch.obj], &lights[batch.obj], inp.ortho, orow);
                     batch.obj = obj;
                 }
                 let row = inp.planes[t as usize].row(j);
@@ -289,7 +293,7 @@ fn shade_band_with(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64
                 while k < end {
                     k += batch.fill(&row, k as u32, end - k);
                     if batch.len == 8 {
-                        batch.flush(&mut mats[obj], &inp.wide[obj].1, inp.ortho, orow);
+                        batch.flush(&mut mats[obj], &lights[obj], inp.ortho, orow);
                     }
                 }
             } else {
@@ -308,12 +312,7 @@ fn shade_band_with(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64
             }
             i = end;
         }
-        batch.flush(
-            &mut mats[batch.obj],
-            &inp.wide[batch.obj].1,
-            inp.ortho,
-            orow,
-        );
+        batch.flush(&mut mats[batch.obj], &lights[batch.obj], inp.ortho, orow);
     }
     (count, evals)
 }
@@ -366,31 +365,31 @@ impl Batch {
 
     /// Plane `a` of the eight pixels as lanes.
     #[inline(always)]
-    fn lanes(&self, a: usize) -> F32x8 {
+    fn lanes<W: Wide>(&self, a: usize) -> W {
         let q = &self.q;
-        F32x8::from_array([
+        W::from_array([
             q[0][a], q[1][a], q[2][a], q[3][a], q[4][a], q[5][a], q[6][a], q[7][a],
         ])
     }
 
     /// Channel `c` of the one-colour pixels as lanes.
     #[inline(always)]
-    fn rgb_lanes(&self, c: usize) -> F32x8 {
+    fn rgb_lanes<W: Wide>(&self, c: usize) -> W {
         let q = &self.rgb;
-        F32x8::from_array([
+        W::from_array([
             q[0][c], q[1][c], q[2][c], q[3][c], q[4][c], q[5][c], q[6][c], q[7][c],
         ])
     }
 
     /// Lights the pixels in the batch with one `lighting::shade` call at
-    /// [`F32x8`] (material `m`, recoloured here, and `lights`), writes their
+    /// the lane type `W` (material `m`, recoloured here, and `lights`), writes their
     /// 8-bit RGB into the row `out` and empties the batch. Lanes past `len`
     /// hold earlier pixels' values: computed, not written.
     #[inline(always)]
-    fn flush(
+    fn flush<W: Wide>(
         &mut self,
-        m: &mut Material<F32x8>,
-        lights: &[Light<F32x8>],
+        m: &mut Material<W>,
+        lights: &[Light<W>],
         ortho: bool,
         out: &mut [u8],
     ) {
@@ -398,7 +397,7 @@ impl Batch {
             return;
         }
         // Written out: `array::from_fn` here was left as an outlined call.
-        let q = [
+        let q: [W; ATTRS] = [
             self.lanes(0),
             self.lanes(1),
             self.lanes(2),
@@ -410,14 +409,13 @@ impl Batch {
             self.lanes(8),
             self.lanes(9),
         ];
-        let rgb = [self.rgb_lanes(0), self.rgb_lanes(1), self.rgb_lanes(2)];
+        let rgb: [W; 3] = [self.rgb_lanes(0), self.rgb_lanes(1), self.rgb_lanes(2)];
         let (n, p, r) = attributes(&q);
         m.color = if self.interp == 0 {
             rgb
         } else {
             let c = colour(&q, &r);
-            let take = Mask::from_bits(self.interp);
-            let pick = |ch: usize| c[ch].select(take, rgb[ch]);
+            let pick = |ch: usize| c[ch].select_bits(self.interp, rgb[ch]);
             [pick(0), pick(1), pick(2)]
         };
         let [r, g, b] = lit(m, lights, n, p, ortho, &mut NoTrace);
@@ -543,4 +541,177 @@ pub fn to_u8(c: [f32; 3]) -> [u8; 3] {
 #[inline(always)]
 fn byte<T: Scalar>(x: &T) -> T {
     x.max_of(&T::zero()).min_of(&T::one()) * T::from_i64(255) + T::from_f64(0.5)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lighting::Model;
+    use crate::rng::SplitMix64;
+    use crate::scene::Scene;
+
+    /// A camera scene whose Phong batches take every branch: interpolated
+    /// and one-colour triangles, a point light's range ending inside the
+    /// picture, a spot cone, a directional light, specular only where lit.
+    const MIXED: &str = "shading = \"phong\"\n\
+        [image]\nwidth = 96\nheight = 72\nbackground = [0.1, 0.1, 0.1]\n\
+        [camera]\neye = [0, 0, 0]\nlook = [0, 0, -1]\nup = [0, 1, 0]\n\
+        [perspective]\nfovy = 50\nnear = 0.1\nfar = 50\n\
+        [material]\nka = 0.2\nkd = 0.7\nks = 0.5\nshininess = 12\nspecular_requires_lit = true\n\
+        [[light]]\ntype = \"point\"\nposition = [1.5, 1, -2]\nrange = 2.2\n\
+        [[light]]\ntype = \"spot\"\nposition = [-1, 0, 0]\ndirection = [0, 0, -1]\n\
+        theta = 10\nphi = 30\nfalloff = 1.5\ncolor = [0.6, 0.6, 1]\n\
+        [[light]]\ntype = \"directional\"\ndirection = [0.3, 0.5, 1]\ncolor = [0.3, 0.3, 0.3]\n\
+        [[object]]\ntype = \"sphere\"\nn = 24\nr = 1\n\
+        vertex_colors = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0]]\n\
+        transform = [{ translate = [-0.6, 0, -3.5] }]\n\
+        [[object]]\ntype = \"box\"\nsize = [1.2, 1.2, 1.2]\ncolor = [0.9, 0.8, 0.3]\n\
+        transform = [{ rotate_y = 0.6 }, { rotate_x = 0.4 }, { translate = [1, -0.3, -3] }]\n";
+
+    /// The band pass at the baseline lane type (two SSE halves, or an
+    /// array) writes the same bytes as the one `render` chose (AVX2 on a
+    /// CPU that has it): on an AVX2 machine this is the only run of the
+    /// baseline band pass, and elsewhere it compares a path with itself.
+    #[test]
+    fn the_band_pass_gives_the_same_bytes_at_either_lane_type() {
+        let s = Scene::parse(MIXED, "mixed.toml", std::path::Path::new(".")).unwrap();
+        let f = crate::render::render(&s, &crate::render::Options::of(&s)).unwrap();
+        let inp = BandInput {
+            tris: &f.tris,
+            corners: &f.corners,
+            planes: &f.scratch.planes,
+            looks: &f.looks,
+            ortho: f.ortho,
+            bg: to_u8(s.background),
+            width: f.width as usize,
+        };
+        let w = f.width as usize;
+        let rows = crate::raster::BAND;
+        let mut phong = 0;
+        for (b, (want, id)) in f
+            .rgb
+            .chunks(3 * w * rows)
+            .zip(f.ids.chunks(w * rows))
+            .enumerate()
+        {
+            let mut got = vec![0u8; want.len()];
+            let (_, evals) = shade_band_with::<F32x8>(&inp, (b * rows) as u32, &mut got, id);
+            phong += evals;
+            assert_eq!(got, want, "band {b}");
+        }
+        assert!(phong > 1500, "{phong}");
+    }
+
+    /// The lighting at [`avx::Avx8`] equals the lighting at [`F32x8`] lane
+    /// for lane, to the bit (and F32x8 equals Fast32: tests/lanes.rs), over
+    /// random materials, lights and surfaces of every model.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn avx_lanes_light_exactly_as_sse_lanes() {
+        if !std::arch::is_x86_feature_detected!("avx2") {
+            return;
+        }
+        let mut rng = SplitMix64::new(0x5eed);
+        let mut u = move |lo: f32, hi: f32| {
+            lo + (hi - lo) * (rng.next_u64() >> 40) as f32 / (1u64 << 24) as f32
+        };
+        for case in 0..400 {
+            let model = [Model::Phong, Model::Blinn, Model::Lambert, Model::Specular][case % 4];
+            let mut m = Material::<Fast32>::text_default([Fast32(0.0); 3]);
+            m.model = model;
+            (m.ka, m.kd, m.ks) = (
+                Fast32(u(0.0, 1.0)),
+                Fast32(u(0.0, 1.0)),
+                Fast32(u(0.0, 1.0)),
+            );
+            m.shininess = Fast32(if case % 3 == 0 {
+                u(0.5, 20.0)
+            } else {
+                (case % 40) as f32
+            });
+            m.specular_requires_lit = case % 2 == 0;
+            let mut lights = Vec::new();
+            for k in 0..1 + case % 3 {
+                let mut l = Light::<Fast32>::text_default();
+                let mut v = || [u(-4.0, 4.0), u(-4.0, 4.0), u(-4.0, 4.0)];
+                let (p, d) = (v(), v());
+                let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt().max(1e-3);
+                let (p, d) = (p.map(Fast32).into(), d.map(|x| Fast32(x / len)).into());
+                l.kind = match (case + k) % 3 {
+                    0 => LightKind::Directional { dir: d },
+                    1 => LightKind::Point { pos: p },
+                    _ => LightKind::Spot {
+                        pos: p,
+                        dir: d,
+                        theta: Fast32(u(5.0, 60.0)),
+                        phi: Fast32(u(60.0, 100.0)),
+                        falloff: Fast32(u(0.2, 3.0)),
+                    },
+                };
+                l.attenuation = [Fast32(1.0), Fast32(0.1), Fast32(0.02)];
+                l.range = (case % 5 == 0).then(|| Fast32(u(0.5, 6.0)));
+                lights.push(l);
+            }
+            let lane = |u: &mut dyn FnMut(f32, f32) -> f32, lo, hi| {
+                std::array::from_fn::<f32, 8, _>(|_| u(lo, hi))
+            };
+            let n = [0; 3].map(|_| lane(&mut u, -1.0, 1.0));
+            let p = [0; 3]
+                .map(|_| lane(&mut u, -4.0, 4.0))
+                .map(|a| a.map(|x| x - 5.0));
+            let c = [0; 3].map(|_| lane(&mut u, 0.0, 1.0));
+            let ortho = case % 7 == 0;
+            let sse = lit_lanes::<F32x8>(&m, &lights, n, p, c, ortho);
+            // SAFETY: the CPU has AVX2 (checked at the top).
+            let avx = unsafe { lit_avx(&m, &lights, n, p, c, ortho) };
+            for ch in 0..3 {
+                for k in 0..8 {
+                    assert_eq!(
+                        sse[ch][k].to_bits(),
+                        avx[ch][k].to_bits(),
+                        "case {case} channel {ch} lane {k}"
+                    );
+                }
+            }
+        }
+    }
+
+    /// `lit` at lane type W for eight pixels given as arrays.
+    #[inline(always)]
+    fn lit_lanes<W: Wide>(
+        m: &Material<Fast32>,
+        lights: &[Light<Fast32>],
+        n: [[f32; 8]; 3],
+        p: [[f32; 8]; 3],
+        c: [[f32; 8]; 3],
+        ortho: bool,
+    ) -> [[f32; 8]; 3] {
+        let mut mw: Material<W> = material_as(m);
+        mw.color = c.map(W::from_array);
+        let lw: Vec<Light<W>> = lights.iter().map(light_as).collect();
+        let v = |a: [[f32; 8]; 3]| {
+            Vector3::new(
+                W::from_array(a[0]),
+                W::from_array(a[1]),
+                W::from_array(a[2]),
+            )
+        };
+        let out = lit(&mw, &lw, v(n), v(p), ortho, &mut NoTrace);
+        out.map(W::to_array)
+    }
+
+    /// [`lit_lanes`] at [`avx::Avx8`], compiled for AVX2 (used only after
+    /// the CPU was found to have it).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    fn lit_avx(
+        m: &Material<Fast32>,
+        lights: &[Light<Fast32>],
+        n: [[f32; 8]; 3],
+        p: [[f32; 8]; 3],
+        c: [[f32; 8]; 3],
+        ortho: bool,
+    ) -> [[f32; 8]; 3] {
+        lit_lanes::<avx::Avx8>(m, lights, n, p, c, ortho)
+    }
 }

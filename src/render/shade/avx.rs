@@ -1,0 +1,158 @@
+//! [`Avx8`]: eight f32 lanes in one 256-bit AVX register, the lane type of
+//! the band pass compiled for AVX2 (`shade_band_avx2`).
+//!
+//! It is [`crate::num::F32x8`] over AVX instead of SSE: the same lane
+//! operations (IEEE add, multiply, divide and square root, correctly
+//! rounded in every lane; the same min/max/compare/select rules), so a
+//! batch lit at `Avx8` gives the same bits as at `F32x8` and at `Fast32`
+//! lane by lane (tested in `shade::tests`). One register per value instead
+//! of two halves the instructions and lets the lighting's working set
+//! (normal, position, view and light vectors) stay in registers.
+//!
+//! **Why this is sound.** Every operation of `Avx8` executes AVX
+//! instructions, which a CPU without AVX cannot run. The type is visible
+//! only to its parent module, `render::shade`, and that module uses it in
+//! one place: `shade_band_avx2`, a function compiled for AVX2 and called
+//! only after `is_x86_feature_detected!("avx2")` said yes. So every `Avx8`
+//! value is made, and every operation on one runs, on a CPU with AVX2.
+//! Keep it that way: never make this type more visible, and never use it
+//! outside `shade_band_avx2`.
+
+crate::num::lanes::lane_type!(
+    /// Eight f32 lanes in an AVX register (see the module documentation:
+    /// only for code reached through `shade_band_avx2`).
+    pub Avx8,
+    AvxMask,
+    imp
+);
+
+/// The lane operations over AVX.
+mod imp {
+    use std::arch::x86_64::*;
+
+    /// Calls AVX intrinsics.
+    macro_rules! avx {
+        ($e:expr) => {
+            // SAFETY: only code reached through `shade_band_avx2` operates
+            // on `Avx8` (see the module documentation), and that code runs
+            // only on a CPU with AVX2, so AVX is there; the intrinsics take
+            // and return plain values.
+            unsafe { $e }
+        };
+    }
+
+    /// Eight f32.
+    #[derive(Clone, Copy, Debug)]
+    pub struct V(__m256);
+    /// Eight lane masks (all ones or zero), as f32 bit patterns.
+    #[derive(Clone, Copy, Debug)]
+    pub struct M(__m256);
+
+    #[inline(always)]
+    pub fn from_array(a: [f32; 8]) -> V {
+        // The load reads eight f32 from an array of eight (unaligned loads
+        // need no alignment).
+        avx!(V(_mm256_loadu_ps(a.as_ptr())))
+    }
+    #[inline(always)]
+    pub fn to_array(v: V) -> [f32; 8] {
+        let mut a = [0.0f32; 8];
+        // The store writes eight f32 into an array of eight.
+        avx!(_mm256_storeu_ps(a.as_mut_ptr(), v.0));
+        a
+    }
+    #[inline(always)]
+    pub fn splat(x: f32) -> V {
+        avx!(V(_mm256_set1_ps(x)))
+    }
+    #[inline(always)]
+    pub fn add(a: V, b: V) -> V {
+        avx!(V(_mm256_add_ps(a.0, b.0)))
+    }
+    #[inline(always)]
+    pub fn sub(a: V, b: V) -> V {
+        avx!(V(_mm256_sub_ps(a.0, b.0)))
+    }
+    #[inline(always)]
+    pub fn mul(a: V, b: V) -> V {
+        avx!(V(_mm256_mul_ps(a.0, b.0)))
+    }
+    #[inline(always)]
+    pub fn div(a: V, b: V) -> V {
+        avx!(V(_mm256_div_ps(a.0, b.0)))
+    }
+    #[inline(always)]
+    pub fn sqrt(a: V) -> V {
+        avx!(V(_mm256_sqrt_ps(a.0)))
+    }
+    /// −a (the sign bit flipped, as f32 negation does).
+    #[inline(always)]
+    pub fn neg(a: V) -> V {
+        avx!(V(_mm256_xor_ps(a.0, _mm256_set1_ps(-0.0))))
+    }
+    /// |a| (the sign bit cleared).
+    #[inline(always)]
+    pub fn abs(a: V) -> V {
+        avx!(V(_mm256_andnot_ps(_mm256_set1_ps(-0.0), a.0)))
+    }
+    /// a > b ? a : b per lane (VMAXPS is exactly this, as MAXPS).
+    #[inline(always)]
+    pub fn max(a: V, b: V) -> V {
+        avx!(V(_mm256_max_ps(a.0, b.0)))
+    }
+    /// a > b ? b : a per lane, that is b < a ? b : a (VMINPS of b, a).
+    #[inline(always)]
+    pub fn min(a: V, b: V) -> V {
+        avx!(V(_mm256_min_ps(b.0, a.0)))
+    }
+    /// a > b, ordered (false for NaN), as SSE's CMPGTPS.
+    #[inline(always)]
+    pub fn gt(a: V, b: V) -> M {
+        avx!(M(_mm256_cmp_ps::<_CMP_GT_OS>(a.0, b.0)))
+    }
+    /// a < b, ordered.
+    #[inline(always)]
+    pub fn lt(a: V, b: V) -> M {
+        avx!(M(_mm256_cmp_ps::<_CMP_LT_OS>(a.0, b.0)))
+    }
+    /// a == b, ordered.
+    #[inline(always)]
+    pub fn eq(a: V, b: V) -> M {
+        avx!(M(_mm256_cmp_ps::<_CMP_EQ_OQ>(a.0, b.0)))
+    }
+    /// a where m, else b (m is all ones or zero per lane).
+    #[inline(always)]
+    pub fn select(m: M, a: V, b: V) -> V {
+        avx!(V(_mm256_blendv_ps(b.0, a.0, m.0)))
+    }
+    /// `x as u8` per lane for 0 ≤ x < 256 (what the renderer converts):
+    /// truncation to i32, then the low byte; NaN and values outside that
+    /// range go through the scalar cast.
+    #[inline(always)]
+    pub fn to_bytes(v: V) -> [u8; 8] {
+        let ok = avx!(_mm256_movemask_ps(_mm256_and_ps(
+            _mm256_cmp_ps::<_CMP_GE_OS>(v.0, _mm256_setzero_ps()),
+            _mm256_cmp_ps::<_CMP_LT_OS>(v.0, _mm256_set1_ps(256.0)),
+        )));
+        if ok != 0xff {
+            return to_array(v).map(|x| x as u8);
+        }
+        let mut i = [0i32; 8];
+        // The store writes eight i32 into an array of eight.
+        avx!(_mm256_storeu_si256(
+            i.as_mut_ptr().cast(),
+            _mm256_cvttps_epi32(v.0)
+        ));
+        i.map(|x| x as u8)
+    }
+    /// Bit k set when lane k is true.
+    #[inline(always)]
+    pub fn bits(m: M) -> u32 {
+        avx!(_mm256_movemask_ps(m.0)) as u32
+    }
+    #[inline(always)]
+    pub fn mask_from(b: [bool; 8]) -> M {
+        let t = |x: bool| f32::from_bits((x as u32).wrapping_neg());
+        M(from_array(b.map(t)).0)
+    }
+}
