@@ -93,9 +93,10 @@ pub struct Planes {
     cx: [f32; 12],
     cy: [f32; 12],
     origin: [f32; 2],
-    /// The surface colour when the three corners have the same one (then
-    /// it is not interpolated: the colour of every pixel is exactly it).
-    solid: Option<[f32; 3]>,
+    /// The three corners have the same surface colour. Then it is not
+    /// interpolated: lanes 7–9 hold that colour itself (c0 = C, cx = cy =
+    /// 0, so every pixel's value is exactly C), not C/w.
+    solid: bool,
 }
 
 /// Attribute lanes of a plane: 1/w, N/w, P/w, C/w.
@@ -123,7 +124,10 @@ impl Planes {
         }
         let rgb = |v: usize| [c[v][9], c[v][10], c[v][11]];
         if rgb(0) == rgb(1) && rgb(1) == rgb(2) {
-            p.solid = Some(rgb(0));
+            p.solid = true;
+            for (k, c) in (7..ATTRS).zip(rgb(0)) {
+                (p.c0[k], p.cx[k], p.cy[k]) = (c, 0.0, 0.0);
+            }
         }
         p
     }
@@ -153,9 +157,10 @@ impl Planes {
         let di = i as f32 - row.x0;
         let q: [Fast32; ATTRS] = std::array::from_fn(|k| Fast32(row.r[k] + row.cx[k] * di));
         let (n, p, r) = attributes(&q);
-        let c = match row.solid {
-            Some(c) => c.map(Fast32),
-            None => colour(&q, &r),
+        let c = if row.solid {
+            [q[7], q[8], q[9]]
+        } else {
+            colour(&q, &r)
         };
         (n, p, c)
     }
@@ -174,7 +179,7 @@ struct Row {
     r: [f32; 12],
     cx: [f32; 12],
     x0: f32,
-    solid: Option<[f32; 3]>,
+    solid: bool,
 }
 
 /// Interpolated normal (not unit), eye position and surface colour.
@@ -318,12 +323,11 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
 }
 
 /// Up to eight Phong pixels of one object in one row: their attribute
-/// planes' values q (row k for pixel k), surface colours and columns.
+/// planes' values q (row k for pixel k; lanes 7–9 are C/w, or the colour
+/// itself for a triangle with one colour) and columns.
 #[derive(Clone, Copy, Debug, Default)]
 struct Batch {
     q: [[f32; 12]; 8],
-    /// Surface colours of the pixels from triangles with one colour.
-    rgb: [[f32; 3]; 8],
     /// Bit k set when pixel k's colour is interpolated (q's C/w planes).
     interp: u32,
     col: [u32; 8],
@@ -350,11 +354,10 @@ impl Batch {
             for ((q, r), cx) in q.iter_mut().zip(&row.r).zip(&row.cx) {
                 *q = r + cx * di;
             }
-            self.rgb[base + k] = row.solid.unwrap_or_default();
             self.col[base + k] = i;
         }
         let bits = ((1u32 << m) - 1) << base;
-        if row.solid.is_some() {
+        if row.solid {
             self.interp &= !bits;
         } else {
             self.interp |= bits;
@@ -369,15 +372,6 @@ impl Batch {
         let q = &self.q;
         W::from_array([
             q[0][a], q[1][a], q[2][a], q[3][a], q[4][a], q[5][a], q[6][a], q[7][a],
-        ])
-    }
-
-    /// Channel `c` of the one-colour pixels as lanes.
-    #[inline(always)]
-    fn rgb_lanes<W: Wide>(&self, c: usize) -> W {
-        let q = &self.rgb;
-        W::from_array([
-            q[0][c], q[1][c], q[2][c], q[3][c], q[4][c], q[5][c], q[6][c], q[7][c],
         ])
     }
 
@@ -409,8 +403,9 @@ impl Batch {
             self.lanes(8),
             self.lanes(9),
         ];
-        let rgb: [W; 3] = [self.rgb_lanes(0), self.rgb_lanes(1), self.rgb_lanes(2)];
         let (n, p, r) = attributes(&q);
+        // The colour lanes: C/w·r where interpolated, C itself elsewhere.
+        let rgb = [q[7], q[8], q[9]];
         m.color = if self.interp == 0 {
             rgb
         } else {
