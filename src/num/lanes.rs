@@ -182,6 +182,18 @@ mod imp {
         let v = from_array(b.map(t));
         M(v.0, v.1)
     }
+    /// Column a of eight rows of twelve as lanes, for a = 0…11 (the lanes
+    /// of a batch from its pixels' rows).
+    #[inline(always)]
+    pub fn transpose(q: &[[f32; 12]; 8]) -> [V; 12] {
+        let mut out = [splat(0.0); 12];
+        for (a, o) in out.iter_mut().enumerate() {
+            *o = from_array([
+                q[0][a], q[1][a], q[2][a], q[3][a], q[4][a], q[5][a], q[6][a], q[7][a],
+            ]);
+        }
+        out
+    }
 }
 
 /// The lane operations elsewhere: an array, lane by lane.
@@ -280,6 +292,18 @@ mod imp {
     pub fn mask_from(b: [bool; 8]) -> M {
         M(b)
     }
+    /// Column a of eight rows of twelve as lanes, for a = 0…11 (the lanes
+    /// of a batch from its pixels' rows).
+    #[inline(always)]
+    pub fn transpose(q: &[[f32; 12]; 8]) -> [V; 12] {
+        let mut out = [splat(0.0); 12];
+        for (a, o) in out.iter_mut().enumerate() {
+            *o = from_array([
+                q[0][a], q[1][a], q[2][a], q[3][a], q[4][a], q[5][a], q[6][a], q[7][a],
+            ]);
+        }
+        out
+    }
 }
 
 /// What the renderer's Phong batches need of an eight-lane type besides
@@ -293,6 +317,9 @@ pub trait Wide: super::Scalar + Copy {
     fn to_array(self) -> [f32; 8];
     /// Each lane truncated to a byte (`x as u8`).
     fn to_bytes(self) -> [u8; 8];
+    /// Column a of eight rows as lanes, a = 0…11: lane k of result a is
+    /// `q[k][a]`.
+    fn from_rows(q: &[[f32; 12]; 8]) -> [Self; 12];
     /// Lane k of `self` where bit k of `bits` is set, else lane k of
     /// `other`.
     fn select_bits(self, bits: u32, other: Self) -> Self;
@@ -302,7 +329,7 @@ pub trait Wide: super::Scalar + Copy {
 /// over a module `$imp` of lane operations: `V`, `M`, `from_array`,
 /// `to_array`, `splat`, `add`, `sub`, `mul`, `div`, `sqrt`, `neg`, `abs`,
 /// `max`, `min`, `gt`, `lt`, `eq`, `select`, `to_bytes`, `bits`,
-/// `mask_from`, each lane by lane with the plain f32 operation. [`F32x8`]
+/// `mask_from`, `transpose`, each lane by lane with the plain f32 operation. [`F32x8`]
 /// is this over SSE (or an array); the renderer defines a second one over
 /// AVX2 for the code it compiles for AVX2.
 macro_rules! lane_type {
@@ -516,6 +543,10 @@ macro_rules! lane_type {
             #[inline(always)]
             fn to_bytes(self) -> [u8; 8] {
                 $name::to_bytes(self)
+            }
+            #[inline(always)]
+            fn from_rows(q: &[[f32; 12]; 8]) -> [$name; 12] {
+                $imp::transpose(q).map($name)
             }
             #[inline(always)]
             fn select_bits(self, bits: u32, other: $name) -> $name {

@@ -366,15 +366,6 @@ impl Batch {
         m
     }
 
-    /// Plane `a` of the eight pixels as lanes.
-    #[inline(always)]
-    fn lanes<W: Wide>(&self, a: usize) -> W {
-        let q = &self.q;
-        W::from_array([
-            q[0][a], q[1][a], q[2][a], q[3][a], q[4][a], q[5][a], q[6][a], q[7][a],
-        ])
-    }
-
     /// Lights the pixels in the batch with one `lighting::shade` call at
     /// the lane type `W` (material `m`, recoloured here, and `lights`), writes their
     /// 8-bit RGB into the row `out` and empties the batch. Lanes past `len`
@@ -390,19 +381,8 @@ impl Batch {
         if self.len == 0 {
             return;
         }
-        // Written out: `array::from_fn` here was left as an outlined call.
-        let q: [W; ATTRS] = [
-            self.lanes(0),
-            self.lanes(1),
-            self.lanes(2),
-            self.lanes(3),
-            self.lanes(4),
-            self.lanes(5),
-            self.lanes(6),
-            self.lanes(7),
-            self.lanes(8),
-            self.lanes(9),
-        ];
+        let q12 = W::from_rows(&self.q);
+        let q: [W; ATTRS] = std::array::from_fn(|a| q12[a]);
         let (n, p, r) = attributes(&q);
         // The colour lanes: C/w·r where interpolated, C itself elsewhere.
         let rgb = [q[7], q[8], q[9]];
@@ -669,6 +649,33 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// A batch's rows turn into the same lanes at Avx8 (by shuffles) as at
+    /// F32x8 (lane by lane): lane k of column a is row k's entry a.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn avx_rows_become_the_same_lanes() {
+        if !std::arch::is_x86_feature_detected!("avx2") {
+            return;
+        }
+        let q: [[f32; 12]; 8] =
+            std::array::from_fn(|k| std::array::from_fn(|a| (100 * k + a) as f32));
+        // SAFETY: the CPU has AVX2 (checked at the top).
+        let avx = unsafe { rows_avx(&q) };
+        let sse = F32x8::from_rows(&q).map(F32x8::to_array);
+        for a in 0..12 {
+            let want: [f32; 8] = std::array::from_fn(|k| (100 * k + a) as f32);
+            assert_eq!(sse[a], want, "column {a}");
+            assert_eq!(avx[a], want, "column {a}");
+        }
+    }
+
+    /// `Avx8::from_rows`, compiled for AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    fn rows_avx(q: &[[f32; 12]; 8]) -> [[f32; 8]; 12] {
+        avx::Avx8::from_rows(q).map(avx::Avx8::to_array)
     }
 
     /// `lit` at lane type W for eight pixels given as arrays.
