@@ -17,14 +17,12 @@ use super::shade::{light_as, light_at, material_as, Planes};
 use super::{Corner, Options, Stats, ViewSetup};
 
 /// Per-vertex arrays of an object (kept between frames, so a repeated
-/// render touches no fresh pages): eye-space position, outcode, screen
-/// position and eye-space normal, apart so that the culling pass reads only
-/// the first two.
+/// render touches no fresh pages): eye-space position with the outcode,
+/// screen position and eye-space normal, apart so that the culling pass
+/// reads only the first (one 16-byte load per vertex).
 #[derive(Clone, Debug, Default)]
 pub struct VertBufs {
-    eye: Vec<[f32; 3]>,
-    /// Outcodes in clip space (all 0 when the object's box is inside).
-    codes: Vec<u8>,
+    ec: Vec<EyeCode>,
     /// Screen positions ([`to_screen`]) of the vertices whose code is 0
     /// (the default for the others, which only clipped triangles use).
     screen: Vec<ScreenVert>,
@@ -32,6 +30,23 @@ pub struct VertBufs {
     snapped: Vec<[i64; 2]>,
     /// Unit eye-space vertex normals (none for flat shading).
     vnormals: Vec<[f32; 3]>,
+}
+
+/// A vertex's eye-space position and its outcode in clip space (0 for all
+/// when the object's box is inside), side by side for the culling pass.
+#[derive(Clone, Copy, Debug, Default)]
+#[repr(C, align(16))]
+struct EyeCode {
+    e: [f32; 3],
+    code: u32,
+}
+
+impl VertBufs {
+    /// The eye-space position of vertex `i`.
+    #[inline]
+    fn eye(&self, i: usize) -> Vector3<f32> {
+        v3(self.ec[i].e)
+    }
 }
 
 /// Everything the triangle loop needs about one object.
@@ -111,8 +126,7 @@ struct VertXf<'a> {
 /// (its √ is the largest distance: √ is monotonic and correctly rounded).
 fn vertices(pos: &[[f32; 3]], x: &VertXf, bufs: &mut VertBufs) -> f32 {
     let n = pos.len();
-    size(&mut bufs.eye, n);
-    size(&mut bufs.codes, n);
+    size(&mut bufs.ec, n);
     size(&mut bufs.screen, n);
     size(&mut bufs.snapped, n);
     let vn = &mut bufs.vnormals;
@@ -125,14 +139,13 @@ fn vertices(pos: &[[f32; 3]], x: &VertXf, bufs: &mut VertBufs) -> f32 {
         vn.chunks_mut(VBLOCK).collect()
     };
     pos.par_chunks(VBLOCK)
-        .zip(bufs.eye.par_chunks_mut(VBLOCK))
-        .zip(bufs.codes.par_chunks_mut(VBLOCK))
+        .zip(bufs.ec.par_chunks_mut(VBLOCK))
         .zip(bufs.screen.par_chunks_mut(VBLOCK))
         .zip(bufs.snapped.par_chunks_mut(VBLOCK))
         .zip(vn)
         .enumerate()
-        .map(|(b, (((((ps, es), cs), ss), sn), vn))| {
-            let out = VertOut { es, cs, ss, sn, vn };
+        .map(|(b, ((((ps, ec), ss), sn), vn))| {
+            let out = VertOut { ec, ss, sn, vn };
             vertex_block(b * VBLOCK, ps, x, out)
         })
         .reduce(|| 0.0f32, f32::max)
@@ -140,8 +153,7 @@ fn vertices(pos: &[[f32; 3]], x: &VertXf, bufs: &mut VertBufs) -> f32 {
 
 /// One block's slices of the per-vertex arrays.
 struct VertOut<'a> {
-    es: &'a mut [[f32; 3]],
-    cs: &'a mut [u8],
+    ec: &'a mut [EyeCode],
     ss: &'a mut [ScreenVert],
     sn: &'a mut [[i64; 2]],
     /// Empty for no normals.
@@ -155,15 +167,18 @@ fn vertex_block(first: usize, ps: &[[f32; 3]], x: &VertXf, o: VertOut) -> f32 {
     let mut far2 = 0.0f32;
     for (k, &p) in ps.iter().enumerate() {
         let v = mul4(&x.e32, p);
-        o.es[k] = [v[0], v[1], v[2]];
-        far2 = far2.max((v3(o.es[k]) - x.centre).norm_squared());
+        let e = [v[0], v[1], v[2]];
+        far2 = far2.max((v3(e) - x.centre).norm_squared());
         let clip = mul4(&x.c32, p);
         let code = if x.inside {
             0
         } else {
             crate::clip::outcode_clip_space(&Vector4::from(clip))
         };
-        o.cs[k] = code;
+        o.ec[k] = EyeCode {
+            e,
+            code: code as u32,
+        };
         (o.ss[k], o.sn[k]) = if code == 0 {
             let s = to_screen(&clip, x.win, w, h);
             (s, snap(&s))
@@ -322,7 +337,7 @@ pub(super) fn prepare<'a>(
                     &lights,
                     surface(obj, 0, v as u32),
                     v3(bufs.vnormals[v]),
-                    v3(bufs.eye[v]),
+                    bufs.eye(v),
                     vs.ortho,
                     &mut NoTrace,
                 )
@@ -467,17 +482,13 @@ fn test(
     cull: bool,
     st: &mut Stats,
 ) -> Option<(u8, bool)> {
-    let c = idx.map(|i| p.v.codes[i]);
-    if c[0] & c[1] & c[2] != 0 {
+    let [a, b, c] = idx.map(|i| p.v.ec[i]);
+    if a.code & b.code & c.code != 0 {
         st.rejected += 1;
         return None;
     }
     // Facing: the text's test N·(toward viewer) with N = (v1 − v0) × (v2 − v0).
-    let (e0, e1, e2) = (
-        v3(p.v.eye[idx[0]]),
-        v3(p.v.eye[idx[1]]),
-        v3(p.v.eye[idx[2]]),
-    );
+    let (e0, e1, e2) = (v3(a.e), v3(b.e), v3(c.e));
     let n = (e1 - e0).cross(&(e2 - e0));
     let front = if vs.ortho {
         n.z > 0.0
@@ -488,7 +499,7 @@ fn test(
         st.culled += 1;
         return None;
     }
-    Some((c[0] | c[1] | c[2], !front && !p.closed))
+    Some(((a.code | b.code | c.code) as u8, !front && !p.closed))
 }
 
 /// The corners of a kept triangle: per vertex the eye-space normal (flipped
@@ -532,7 +543,7 @@ fn corners_into(
         let fe = face_normal_eye(p, face as usize)
             .unwrap_or_else(|| v3(p.obj.mesh.face_normal(face as usize)))
             * flip;
-        let e = idx.map(|i| v3(p.v.eye[i]));
+        let e = idx.map(|i| p.v.eye(i));
         let centre = (e[0] + e[1] + e[2]) / 3.0;
         let s = surface(p.obj, face, idx[0] as u32);
         let c = light_at(&p.material, &p.lights, s, fe, centre, ortho, &mut NoTrace);
@@ -549,7 +560,7 @@ fn corners_into(
                     Some(n) => n.map(|x| x * flip),
                     None => [0.0; 3],
                 };
-                let e = p.v.eye[v];
+                let e = p.v.ec[v].e;
                 let c = match (p.shading, &p.lit) {
                     (Shading::Gouraud, Some(l)) => l[v],
                     (Shading::Gouraud, None) => {
@@ -607,10 +618,12 @@ fn first_pass(
     buf.kept.clear();
     buf.clipped.clear();
     buf.count = 0;
-    let mut st = Stats::default();
+    let mut st = Stats {
+        tris_in: tris.len() as u64,
+        ..Stats::default()
+    };
     let (mut poly, mut tmp) = (Vec::new(), Vec::new());
     for (n, (tri, &face)) in tris.iter().zip(faces).enumerate() {
-        st.tris_in += 1;
         let idx = tri.map(|i| i as usize);
         let Some((or, back)) = test(p, idx, vs, cull, &mut st) else {
             continue;
@@ -627,31 +640,17 @@ fn first_pass(
                 }
             }
         } else {
-            st.clipped += 1;
-            let cs = corners(p, idx, face, back, vs.ortho, &mut st);
-            let before = buf.clipped.len();
-            poly.clear();
-            poly.extend((0..3).map(|k| CV {
-                c: mul4(&p.c32, p.obj.mesh.positions[idx[k]]),
-                a: cs[k],
-            }));
-            clip_poly(&mut poly, or, &mut tmp);
-            for k in 1..poly.len().saturating_sub(1) {
-                let sv = [poly[0], poly[k], poly[k + 1]]
-                    .map(|v| to_screen(&v.c, &vs.win, w as f32, h as f32));
-                match raster::setup(sv, w, h) {
-                    Some((mut t, swap)) => {
-                        t.obj = oi;
-                        t.face = face;
-                        let (a, b, c) = (poly[0].a, poly[k].a, poly[k + 1].a);
-                        buf.clipped
-                            .push((t, if swap { [a, c, b] } else { [a, b, c] }));
-                        st.drawn += 1;
-                    }
-                    None => st.no_pixels += 1,
-                }
-            }
-            (buf.clipped.len() - before) as u32
+            let tri = (idx, face, oi);
+            clip_tri(
+                p,
+                tri,
+                (or, back),
+                vs,
+                opt,
+                buf,
+                &mut st,
+                (&mut poly, &mut tmp),
+            )
         };
         buf.count += out as usize;
         buf.kept.push(Kept {
@@ -662,6 +661,50 @@ fn first_pass(
         });
     }
     buf.stats = st;
+}
+
+/// A triangle that crosses the clip planes `or` (vertices `idx` of polygon
+/// `face` of object `oi`): lit, clipped, its fan set up into `buf.clipped`.
+/// Returns how many of the fan's triangles cover a pixel centre. (Not
+/// inlined: rare, and kept out of the culling loop's registers.)
+#[allow(clippy::too_many_arguments)]
+#[inline(never)]
+fn clip_tri(
+    p: &Prep,
+    (idx, face, oi): ([usize; 3], u32, u32),
+    (or, back): (u8, bool),
+    vs: &ViewSetup,
+    opt: &Options,
+    buf: &mut ChunkBuf,
+    st: &mut Stats,
+    (poly, tmp): (&mut Vec<CV>, &mut Vec<CV>),
+) -> u32 {
+    let (w, h) = (opt.width, opt.height);
+    st.clipped += 1;
+    let cs = corners(p, idx, face, back, vs.ortho, st);
+    let before = buf.clipped.len();
+    poly.clear();
+    poly.extend((0..3).map(|k| CV {
+        c: mul4(&p.c32, p.obj.mesh.positions[idx[k]]),
+        a: cs[k],
+    }));
+    clip_poly(poly, or, tmp);
+    for k in 1..poly.len().saturating_sub(1) {
+        let sv =
+            [poly[0], poly[k], poly[k + 1]].map(|v| to_screen(&v.c, &vs.win, w as f32, h as f32));
+        match raster::setup(sv, w, h) {
+            Some((mut t, swap)) => {
+                t.obj = oi;
+                t.face = face;
+                let (a, b, c) = (poly[0].a, poly[k].a, poly[k + 1].a);
+                buf.clipped
+                    .push((t, if swap { [a, c, b] } else { [a, b, c] }));
+                st.drawn += 1;
+            }
+            None => st.no_pixels += 1,
+        }
+    }
+    (buf.clipped.len() - before) as u32
 }
 
 /// Where the second pass writes one chunk's set-up triangles: the frame's
@@ -851,10 +894,10 @@ pub(super) struct Output<'f> {
 /// vertices), `None` if degenerate.
 fn face_normal_eye(p: &Prep, f: usize) -> Option<Vector3<f32>> {
     let face = &p.obj.mesh.faces[f];
-    let p0 = v3(p.v.eye[face[0] as usize]);
+    let p0 = p.v.eye(face[0] as usize);
     let mut n = Vector3::zeros();
     for w in face[1..].windows(2) {
-        n += (v3(p.v.eye[w[0] as usize]) - p0).cross(&(v3(p.v.eye[w[1] as usize]) - p0));
+        n += (p.v.eye(w[0] as usize) - p0).cross(&(p.v.eye(w[1] as usize) - p0));
     }
     let l = n.norm();
     (l > 0.0).then(|| n / l)
