@@ -240,7 +240,8 @@ pub(super) fn prepare<'a>(
         and &= code;
         or |= code;
     }
-    let ntris: u64 = mesh.faces.iter().map(|f| f.len() as u64 - 2).sum();
+    // Σ (polygon size − 2): the fan triangles made when the scene was read.
+    let ntris = obj.tris.tris.len() as u64;
     if and != 0 {
         stats.objects_rejected += 1;
         stats.rejected += ntris;
@@ -523,7 +524,7 @@ fn corners(
 /// [`corners`] written straight into `out`: vertex k's corner goes to
 /// `out[slot[k]]` (the set-up triangle's vertex order).
 #[allow(clippy::too_many_arguments)]
-#[inline]
+#[inline(always)]
 fn corners_into(
     p: &Prep,
     idx: [usize; 3],
@@ -731,19 +732,6 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
     let phong = p.shading == Shading::Phong;
     let mut clipped = buf.clipped.iter();
     let mut k = 0;
-    // Triangle k is in place: its planes and bins.
-    let finish = |k: usize, d: &mut Dest, bins: &mut Vec<Vec<u32>>| {
-        let tri = &d.tris[k];
-        d.planes[k] = if phong {
-            Planes::of(tri, &d.corners[k])
-        } else {
-            Planes::default()
-        };
-        let (b0, b1) = (tri.bbox[2] as usize / BAND, tri.bbox[3] as usize / BAND);
-        for bin in &mut bins[b0..=b1] {
-            bin.push(d.first + k as u32);
-        }
-    };
     let mut d = d;
     let mut st = Stats::default();
     for kept in &buf.kept {
@@ -751,7 +739,7 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
             for (tri, cs) in clipped.by_ref().take(kept.out as usize) {
                 d.tris[k].clone_from(tri);
                 d.corners[k] = *cs;
-                finish(k, &mut d, &mut buf.bins);
+                finish(k, phong, &mut d, &mut buf.bins);
                 k += 1;
             }
             continue;
@@ -782,10 +770,27 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
         *tri = raster::setup_snapped(idx.map(|i| p.v.screen[i]), &s);
         tri.obj = oi;
         tri.face = face;
-        finish(k, &mut d, &mut buf.bins);
+        finish(k, phong, &mut d, &mut buf.bins);
         k += 1;
     }
     buf.stats.lighting_evals += st.lighting_evals;
+}
+
+/// Set-up triangle `k` of a chunk is in place: its Phong planes (the
+/// default for another shading) and its bins (rows y0..=y1 are in bands
+/// y0/BAND..=y1/BAND).
+#[inline(always)]
+fn finish(k: usize, phong: bool, d: &mut Dest, bins: &mut [Vec<u32>]) {
+    let tri = &d.tris[k];
+    d.planes[k] = if phong {
+        Planes::of(tri, &d.corners[k])
+    } else {
+        Planes::default()
+    };
+    let (b0, b1) = (tri.bbox[2] as usize / BAND, tri.bbox[3] as usize / BAND);
+    for bin in &mut bins[b0..=b1] {
+        bin.push(d.first + k as u32);
+    }
 }
 
 /// Splits `s` into consecutive slices of the given lengths (the rest is
