@@ -604,6 +604,23 @@ mod tests {
     }
 
     #[test]
+    fn bounds_of_a_sphere_are_its_poles_and_rim() {
+        // A sphere of radius 2 at the origin reaches ±2 on each axis (its
+        // poles and equator), and every vertex lies within the box.
+        let s = sphere(32, 16, 2.0);
+        let [lo, hi] = s.bounds();
+        for k in 0..3 {
+            assert!(
+                (lo[k] + 2.0).abs() < 1e-5 && (hi[k] - 2.0).abs() < 1e-5,
+                "{lo:?} {hi:?}"
+            );
+        }
+        for p in &s.positions {
+            assert!((0..3).all(|k| lo[k] <= p[k] && p[k] <= hi[k]), "{p:?}");
+        }
+    }
+
+    #[test]
     fn vertex_normals_of_a_sphere_point_outward() {
         // On a sphere at the origin the average of the faces around a vertex
         // is close to the radial direction P/|P|.
