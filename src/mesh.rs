@@ -296,6 +296,22 @@ impl Mesh {
         n
     }
 
+    /// The axis-aligned bounding box of the positions, [lo, hi]:
+    /// lo = min over vertices of each coordinate, hi = max (±∞ for no
+    /// vertices). Serial, in vertex order: f32::min/max may pick either of
+    /// ±0, so the order is fixed.
+    pub fn bounds(&self) -> [[f32; 3]; 2] {
+        let mut lo = [f32::INFINITY; 3];
+        let mut hi = [f32::NEG_INFINITY; 3];
+        for p in &self.positions {
+            for k in 0..3 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        [lo, hi]
+    }
+
     /// Vertex normals: the normalised average of the unit normals of the
     /// faces around each vertex (or the model's own normals when it has them).
     pub fn vertex_normals(&self) -> Vec<[f32; 3]> {
@@ -585,6 +601,23 @@ mod tests {
         let mut b = cuboid(1.0, 1.0, 1.0);
         b.faces.pop();
         assert!(!b.is_closed());
+    }
+
+    #[test]
+    fn bounds_of_a_sphere_are_its_poles_and_rim() {
+        // A sphere of radius 2 at the origin reaches ±2 on each axis (its
+        // poles and equator), and every vertex lies within the box.
+        let s = sphere(32, 16, 2.0);
+        let [lo, hi] = s.bounds();
+        for k in 0..3 {
+            assert!(
+                (lo[k] + 2.0).abs() < 1e-5 && (hi[k] - 2.0).abs() < 1e-5,
+                "{lo:?} {hi:?}"
+            );
+        }
+        for p in &s.positions {
+            assert!((0..3).all(|k| lo[k] <= p[k] && p[k] <= hi[k]), "{p:?}");
+        }
     }
 
     #[test]

@@ -332,6 +332,8 @@ pub struct Object {
     pub closed: bool,
     /// Vertex normals in model coordinates.
     pub vnormals: Vec<[f32; 3]>,
+    /// The mesh's bounding box in model coordinates ([`Mesh::bounds`]).
+    pub bounds: [[f32; 3]; 2],
 }
 
 /// A validated scene.
@@ -816,6 +818,7 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
         tris: mesh.triangles(),
         closed: mesh.is_closed(),
         vnormals: mesh.vertex_normals(),
+        bounds: mesh.bounds(),
         mesh,
     })
 }

@@ -17,19 +17,36 @@ use super::shade::{light_as, light_at, material_as, Planes};
 use super::{Corner, Options, Stats, ViewSetup};
 
 /// Per-vertex arrays of an object (kept between frames, so a repeated
-/// render touches no fresh pages): eye-space position, outcode, screen
-/// position and eye-space normal, apart so that the culling pass reads only
-/// the first two.
+/// render touches no fresh pages): eye-space position with the outcode,
+/// screen position and eye-space normal, apart so that the culling pass
+/// reads only the first (one 16-byte load per vertex).
 #[derive(Clone, Debug, Default)]
 pub struct VertBufs {
-    eye: Vec<[f32; 3]>,
-    /// Outcodes in clip space (all 0 when the object's box is inside).
-    codes: Vec<u8>,
+    ec: Vec<EyeCode>,
     /// Screen positions ([`to_screen`]) of the vertices whose code is 0
     /// (the default for the others, which only clipped triangles use).
     screen: Vec<ScreenVert>,
+    /// The screen positions snapped to 1/256 pixel ([`snap`]), x and y.
+    snapped: Vec<[i64; 2]>,
     /// Unit eye-space vertex normals (none for flat shading).
     vnormals: Vec<[f32; 3]>,
+}
+
+/// A vertex's eye-space position and its outcode in clip space (0 for all
+/// when the object's box is inside), side by side for the culling pass.
+#[derive(Clone, Copy, Debug, Default)]
+#[repr(C, align(16))]
+struct EyeCode {
+    e: [f32; 3],
+    code: u32,
+}
+
+impl VertBufs {
+    /// The eye-space position of vertex `i`.
+    #[inline]
+    fn eye(&self, i: usize) -> Vector3<f32> {
+        v3(self.ec[i].e)
+    }
 }
 
 /// Everything the triangle loop needs about one object.
@@ -74,6 +91,122 @@ fn surface(obj: &Object, face: u32, vertex: u32) -> [f32; 3] {
     }
 }
 
+/// Where the vertex normals come from.
+enum NormalSrc<'a> {
+    /// None (flat shading).
+    None,
+    /// The object's unit model-space normals, one per vertex, to eye space
+    /// by the inverse transpose n' = normalize(M⁻ᵀ·n).
+    Model(&'a [[f32; 3]], Matrix3<f32>),
+    /// The text's draw3Dcg: n = normalize(R·(model·p)), the vertex in the
+    /// world rotated by the view's linear part R.
+    Position(Matrix4<f32>, Matrix3<f32>),
+}
+
+/// The per-vertex transforms of an object.
+struct VertXf<'a> {
+    /// Model → eye.
+    e32: Matrix4<f32>,
+    /// Model → clip.
+    c32: Matrix4<f32>,
+    /// The eye-space centre of the bounding box.
+    centre: Vector3<f32>,
+    /// The whole object is inside the view volume (all codes 0).
+    inside: bool,
+    win: &'a Window<f32>,
+    /// Image width and height.
+    size: (f32, f32),
+    normals: NormalSrc<'a>,
+}
+
+/// All per-vertex work of an object in one pass over parallel blocks: per
+/// vertex p, eye position e = E·p; outcode of c = C·p (0 when the object
+/// is inside); screen position ([`to_screen`]) and its snapped coordinates
+/// when the code is 0; the eye-space normal. Returns max |e − centre|²
+/// (its √ is the largest distance: √ is monotonic and correctly rounded).
+fn vertices(pos: &[[f32; 3]], x: &VertXf, bufs: &mut VertBufs) -> f32 {
+    let n = pos.len();
+    size(&mut bufs.ec, n);
+    size(&mut bufs.screen, n);
+    size(&mut bufs.snapped, n);
+    let vn = &mut bufs.vnormals;
+    let blocks = n.div_ceil(VBLOCK);
+    let vn: Vec<&mut [[f32; 3]]> = if matches!(x.normals, NormalSrc::None) {
+        vn.clear();
+        (0..blocks).map(|_| &mut [][..]).collect()
+    } else {
+        size(vn, n);
+        vn.chunks_mut(VBLOCK).collect()
+    };
+    pos.par_chunks(VBLOCK)
+        .zip(bufs.ec.par_chunks_mut(VBLOCK))
+        .zip(bufs.screen.par_chunks_mut(VBLOCK))
+        .zip(bufs.snapped.par_chunks_mut(VBLOCK))
+        .zip(vn)
+        .enumerate()
+        .map(|(b, ((((ps, ec), ss), sn), vn))| {
+            let out = VertOut { ec, ss, sn, vn };
+            vertex_block(b * VBLOCK, ps, x, out)
+        })
+        .reduce(|| 0.0f32, f32::max)
+}
+
+/// One block's slices of the per-vertex arrays.
+struct VertOut<'a> {
+    ec: &'a mut [EyeCode],
+    ss: &'a mut [ScreenVert],
+    sn: &'a mut [[i64; 2]],
+    /// Empty for no normals.
+    vn: &'a mut [[f32; 3]],
+}
+
+/// [`vertices`] for the block of vertices `ps`, numbers from `first`.
+#[inline(never)]
+fn vertex_block(first: usize, ps: &[[f32; 3]], x: &VertXf, o: VertOut) -> f32 {
+    let (w, h) = x.size;
+    let mut far2 = 0.0f32;
+    for (k, &p) in ps.iter().enumerate() {
+        let v = mul4(&x.e32, p);
+        let e = [v[0], v[1], v[2]];
+        far2 = far2.max((v3(e) - x.centre).norm_squared());
+        let clip = mul4(&x.c32, p);
+        let code = if x.inside {
+            0
+        } else {
+            crate::clip::outcode_clip_space(&Vector4::from(clip))
+        };
+        o.ec[k] = EyeCode {
+            e,
+            code: code as u32,
+        };
+        (o.ss[k], o.sn[k]) = if code == 0 {
+            let s = to_screen(&clip, x.win, w, h);
+            (s, snap(&s))
+        } else {
+            (ScreenVert::default(), [0; 2])
+        };
+    }
+    match &x.normals {
+        NormalSrc::None => {}
+        NormalSrc::Model(ns, nmat) => {
+            let ns = ns.get(first..).unwrap_or_default();
+            for (&n, o) in ns.iter().zip(o.vn) {
+                let v = (nmat * v3(n)).normalize();
+                *o = [v.x, v.y, v.z];
+            }
+        }
+        NormalSrc::Position(world, rot) => {
+            for (&p, o) in ps.iter().zip(o.vn) {
+                let w = mul4(world, p);
+                let v = rot * Vector3::new(w[0], w[1], w[2]);
+                let v = if v.norm() > 0.0 { v.normalize() } else { v };
+                *o = [v.x, v.y, v.z];
+            }
+        }
+    }
+    far2
+}
+
 pub(super) fn prepare<'a>(
     obj: &'a Object,
     vs: &ViewSetup,
@@ -90,16 +223,9 @@ pub(super) fn prepare<'a>(
     };
     let eye_from_model = vs.eye_from_world * obj.model;
     let clip_from_model = vs.clip_from_eye * eye_from_model;
-    // Bounding box of the model, its corners' outcodes: whole-object tests.
-    // (Serial: f32::min/max may pick either zero of ±0, so the order stays fixed.)
-    let mut lo = [f32::INFINITY; 3];
-    let mut hi = [f32::NEG_INFINITY; 3];
-    for p in &mesh.positions {
-        for k in 0..3 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
+    // The model's bounding box (made once, when the scene was read), its
+    // corners' outcodes: whole-object tests.
+    let [lo, hi] = obj.bounds;
     let mut and = 0x3f;
     let mut or = 0;
     let c64: Matrix4<f64> = clip_from_model;
@@ -114,7 +240,8 @@ pub(super) fn prepare<'a>(
         and &= code;
         or |= code;
     }
-    let ntris: u64 = mesh.faces.iter().map(|f| f.len() as u64 - 2).sum();
+    // Σ (polygon size − 2): the fan triangles made when the scene was read.
+    let ntris = obj.tris.tris.len() as u64;
     if and != 0 {
         stats.objects_rejected += 1;
         stats.rejected += ntris;
@@ -127,9 +254,7 @@ pub(super) fn prepare<'a>(
     }
     let e32: Matrix4<f32> = eye_from_model.cast();
     let c32: Matrix4<f32> = clip_from_model.cast();
-    let (w, h) = (opt.width as f32, opt.height as f32);
     let n = mesh.positions.len();
-    let pos = || mesh.positions.par_chunks(VBLOCK);
     // Lights out of range of the whole object are never evaluated for it:
     // its reach is the box's centre and the largest distance from it.
     let centre = mul4(
@@ -141,44 +266,6 @@ pub(super) fn prepare<'a>(
         ],
     );
     let centre = Vector3::new(centre[0], centre[1], centre[2]);
-    // Per vertex, in parallel blocks: the eye position, and the largest
-    // squared distance from the centre (its √ is the largest distance:
-    // √ is monotonic and correctly rounded).
-    size(&mut bufs.eye, n);
-    let far2 = pos()
-        .zip(bufs.eye.par_chunks_mut(VBLOCK))
-        .map(|(ps, es)| {
-            let mut far2 = 0.0f32;
-            for (&p, e) in ps.iter().zip(es) {
-                let v = mul4(&e32, p);
-                *e = [v[0], v[1], v[2]];
-                far2 = far2.max((v3(*e) - centre).norm_squared());
-            }
-            far2
-        })
-        .reduce(|| 0.0f32, f32::max);
-    let radius = far2.sqrt();
-    // The outcode and, inside the view volume, the screen position.
-    size(&mut bufs.codes, n);
-    size(&mut bufs.screen, n);
-    pos()
-        .zip(bufs.codes.par_chunks_mut(VBLOCK))
-        .zip(bufs.screen.par_chunks_mut(VBLOCK))
-        .for_each(|((ps, cs), ss)| {
-            for ((&p, c), s) in ps.iter().zip(cs).zip(ss) {
-                let clip = mul4(&c32, p);
-                *c = if inside {
-                    0
-                } else {
-                    crate::clip::outcode_clip_space(&Vector4::from(clip))
-                };
-                *s = if *c == 0 {
-                    to_screen(&clip, &vs.win, w, h)
-                } else {
-                    ScreenVert::default()
-                };
-            }
-        });
     // Normals go to eye space by the inverse transpose of the linear part.
     let lin: Matrix3<f64> = eye_from_model.fixed_view::<3, 3>(0, 0).into();
     let nmat: Matrix3<f32> = lin
@@ -186,44 +273,33 @@ pub(super) fn prepare<'a>(
         .map(|m| m.transpose())
         .unwrap_or(lin)
         .cast();
-    let vn = &mut bufs.vnormals;
-    if shading == Shading::Flat {
-        vn.clear();
-    } else {
-        match opt.normals {
-            Normals::Average => {
-                size(vn, obj.vnormals.len());
-                obj.vnormals
-                    .par_chunks(VBLOCK)
-                    .zip(vn.par_chunks_mut(VBLOCK))
-                    .for_each(|(ns, out)| {
-                        for (&n, o) in ns.iter().zip(out) {
-                            let v = (nmat * v3(n)).normalize();
-                            *o = [v.x, v.y, v.z];
-                        }
-                    });
-            }
-            Normals::Position => {
-                // The text's draw3Dcg: the normal is the vertex position in
-                // the (tilted) world, made a unit vector.
-                let world: Matrix4<f32> = obj.model.cast();
-                let rot: Matrix3<f32> = vs
-                    .eye_from_world
-                    .fixed_view::<3, 3>(0, 0)
-                    .into_owned()
-                    .cast();
-                size(vn, n);
-                pos().zip(vn.par_chunks_mut(VBLOCK)).for_each(|(ps, out)| {
-                    for (&p, o) in ps.iter().zip(out) {
-                        let w = mul4(&world, p);
-                        let v = rot * Vector3::new(w[0], w[1], w[2]);
-                        let v = if v.norm() > 0.0 { v.normalize() } else { v };
-                        *o = [v.x, v.y, v.z];
-                    }
-                });
-            }
-        }
-    }
+    let normals = match (shading, opt.normals) {
+        (Shading::Flat, _) => NormalSrc::None,
+        (_, Normals::Average) => NormalSrc::Model(&obj.vnormals, nmat),
+        // The text's draw3Dcg: the normal is the vertex position in the
+        // (tilted) world, made a unit vector.
+        (_, Normals::Position) => NormalSrc::Position(
+            obj.model.cast(),
+            vs.eye_from_world
+                .fixed_view::<3, 3>(0, 0)
+                .into_owned()
+                .cast(),
+        ),
+    };
+    let far2 = vertices(
+        &mesh.positions,
+        &VertXf {
+            e32,
+            c32,
+            centre,
+            inside,
+            win: &vs.win,
+            size: (opt.width as f32, opt.height as f32),
+            normals,
+        },
+        bufs,
+    );
+    let radius = far2.sqrt();
     let bufs: &'a VertBufs = bufs;
     let mut lights = Vec::new();
     for l in scene_lights {
@@ -262,7 +338,7 @@ pub(super) fn prepare<'a>(
                     &lights,
                     surface(obj, 0, v as u32),
                     v3(bufs.vnormals[v]),
-                    v3(bufs.eye[v]),
+                    bufs.eye(v),
                     vs.ortho,
                     &mut NoTrace,
                 )
@@ -407,17 +483,13 @@ fn test(
     cull: bool,
     st: &mut Stats,
 ) -> Option<(u8, bool)> {
-    let c = idx.map(|i| p.v.codes[i]);
-    if c[0] & c[1] & c[2] != 0 {
+    let [a, b, c] = idx.map(|i| p.v.ec[i]);
+    if a.code & b.code & c.code != 0 {
         st.rejected += 1;
         return None;
     }
     // Facing: the text's test N·(toward viewer) with N = (v1 − v0) × (v2 − v0).
-    let (e0, e1, e2) = (
-        v3(p.v.eye[idx[0]]),
-        v3(p.v.eye[idx[1]]),
-        v3(p.v.eye[idx[2]]),
-    );
+    let (e0, e1, e2) = (v3(a.e), v3(b.e), v3(c.e));
     let n = (e1 - e0).cross(&(e2 - e0));
     let front = if vs.ortho {
         n.z > 0.0
@@ -428,7 +500,7 @@ fn test(
         st.culled += 1;
         return None;
     }
-    Some((c[0] | c[1] | c[2], !front && !p.closed))
+    Some(((a.code | b.code | c.code) as u8, !front && !p.closed))
 }
 
 /// The corners of a kept triangle: per vertex the eye-space normal (flipped
@@ -444,69 +516,85 @@ fn corners(
     ortho: bool,
     st: &mut Stats,
 ) -> [Corner; 3] {
+    let mut cs = [[0.0f32; 12]; 3];
+    corners_into(p, idx, face, back, ortho, st, &mut cs, [0, 1, 2]);
+    cs
+}
+
+/// [`corners`] written straight into `out`: vertex k's corner goes to
+/// `out[slot[k]]` (the set-up triangle's vertex order).
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn corners_into(
+    p: &Prep,
+    idx: [usize; 3],
+    face: u32,
+    back: bool,
+    ortho: bool,
+    st: &mut Stats,
+    out: &mut [Corner; 3],
+    slot: [usize; 3],
+) {
     // An open mesh shows its back: light the side that is seen.
     let flip = if back { -1.0 } else { 1.0 };
-    let mut cs = [[0.0f32; 12]; 3];
+    // Flat: one colour, normal and position for the whole face.
+    let flat = (p.shading == Shading::Flat).then(|| {
+        // The polygon's normal in eye space: the triangle's own for a
+        // triangle, Newell's average for a polygon.
+        let fe = face_normal_eye(p, face as usize)
+            .unwrap_or_else(|| v3(p.obj.mesh.face_normal(face as usize)))
+            * flip;
+        let e = idx.map(|i| p.v.eye(i));
+        let centre = (e[0] + e[1] + e[2]) / 3.0;
+        let s = surface(p.obj, face, idx[0] as u32);
+        let c = light_at(&p.material, &p.lights, s, fe, centre, ortho, &mut NoTrace);
+        st.lighting_evals += 1;
+        (c, [fe.x, fe.y, fe.z], [centre.x, centre.y, centre.z])
+    });
     for k in 0..3 {
         let v = idx[k];
         let s = surface(p.obj, face, v as u32);
-        let nrm = if p.v.vnormals.is_empty() {
-            [0.0; 3]
-        } else {
-            p.v.vnormals[v].map(|x| x * flip)
-        };
-        cs[k][3..6].copy_from_slice(&nrm);
-        cs[k][6..9].copy_from_slice(&p.v.eye[v]);
-        cs[k][9..12].copy_from_slice(&s);
-    }
-    match p.shading {
-        Shading::Flat => {
-            let fnrm = v3(p.obj.mesh.face_normal(face as usize));
-            // The polygon's normal in eye space: the triangle's own
-            // for a triangle, Newell's average for a polygon.
-            let fe = face_normal_eye(p, face as usize).unwrap_or(fnrm) * flip;
-            let e = idx.map(|i| v3(p.v.eye[i]));
-            let centre = (e[0] + e[1] + e[2]) / 3.0;
-            let c = light_at(
-                &p.material,
-                &p.lights,
-                cs[0][9..12].try_into().unwrap_or([1.0; 3]),
-                fe,
-                centre,
-                ortho,
-                &mut NoTrace,
-            );
-            st.lighting_evals += 1;
-            for corner in &mut cs {
-                corner[0..3].copy_from_slice(&c);
-                corner[3..6].copy_from_slice(&[fe.x, fe.y, fe.z]);
-                corner[6..9].copy_from_slice(&[centre.x, centre.y, centre.z]);
-            }
-        }
-        Shading::Gouraud => {
-            for k in 0..3 {
-                let c = match &p.lit {
-                    Some(l) => l[idx[k]],
-                    None => {
+        let (c, nrm, e) = match flat {
+            Some(f) => f,
+            None => {
+                let nrm = match p.v.vnormals.get(v) {
+                    Some(n) => n.map(|x| x * flip),
+                    None => [0.0; 3],
+                };
+                let e = p.v.ec[v].e;
+                let c = match (p.shading, &p.lit) {
+                    (Shading::Gouraud, Some(l)) => l[v],
+                    (Shading::Gouraud, None) => {
                         st.lighting_evals += 1;
-                        let c = &cs[k];
                         light_at(
                             &p.material,
                             &p.lights,
-                            [c[9], c[10], c[11]],
-                            Vector3::new(c[3], c[4], c[5]),
-                            Vector3::new(c[6], c[7], c[8]),
+                            s,
+                            v3(nrm),
+                            v3(e),
                             ortho,
                             &mut NoTrace,
                         )
                     }
+                    _ => [0.0; 3],
                 };
-                cs[k][0..3].copy_from_slice(&c);
+                (c, nrm, e)
             }
-        }
-        Shading::Phong => {}
+        };
+        out[slot[k]] = [
+            c[0], c[1], c[2], nrm[0], nrm[1], nrm[2], e[0], e[1], e[2], s[0], s[1], s[2],
+        ];
     }
-    cs
+}
+
+/// The lighting evaluations [`corners`] makes for one triangle: flat 1,
+/// Gouraud 3 (0 from the object's lit vertices), Phong 0.
+fn corner_evals(p: &Prep) -> u64 {
+    match (p.shading, &p.lit) {
+        (Shading::Flat, _) => 1,
+        (Shading::Gouraud, None) => 3,
+        _ => 0,
+    }
 }
 
 /// The first pass over one chunk of an object's triangles (those from
@@ -515,6 +603,7 @@ fn corners(
 /// ([`raster::snap_box_of`]); a triangle that crosses a plane is lit,
 /// clipped and set up here (few do).
 #[allow(clippy::too_many_arguments)]
+#[inline(never)]
 fn first_pass(
     p: &Prep,
     oi: u32,
@@ -530,16 +619,18 @@ fn first_pass(
     buf.kept.clear();
     buf.clipped.clear();
     buf.count = 0;
-    let mut st = Stats::default();
+    let mut st = Stats {
+        tris_in: tris.len() as u64,
+        ..Stats::default()
+    };
     let (mut poly, mut tmp) = (Vec::new(), Vec::new());
     for (n, (tri, &face)) in tris.iter().zip(faces).enumerate() {
-        st.tris_in += 1;
         let idx = tri.map(|i| i as usize);
         let Some((or, back)) = test(p, idx, vs, cull, &mut st) else {
             continue;
         };
         let out = if or == 0 {
-            match raster::snap_box_of(idx.map(|i| snap(&p.v.screen[i])), w, h) {
+            match raster::snap_box_of(idx.map(|i| p.v.snapped[i]), w, h) {
                 Some(_) => {
                     st.drawn += 1;
                     1
@@ -550,31 +641,17 @@ fn first_pass(
                 }
             }
         } else {
-            st.clipped += 1;
-            let cs = corners(p, idx, face, back, vs.ortho, &mut st);
-            let before = buf.clipped.len();
-            poly.clear();
-            poly.extend((0..3).map(|k| CV {
-                c: mul4(&p.c32, p.obj.mesh.positions[idx[k]]),
-                a: cs[k],
-            }));
-            clip_poly(&mut poly, or, &mut tmp);
-            for k in 1..poly.len().saturating_sub(1) {
-                let sv = [poly[0], poly[k], poly[k + 1]]
-                    .map(|v| to_screen(&v.c, &vs.win, w as f32, h as f32));
-                match raster::setup(sv, w, h) {
-                    Some((mut t, swap)) => {
-                        t.obj = oi;
-                        t.face = face;
-                        let (a, b, c) = (poly[0].a, poly[k].a, poly[k + 1].a);
-                        buf.clipped
-                            .push((t, if swap { [a, c, b] } else { [a, b, c] }));
-                        st.drawn += 1;
-                    }
-                    None => st.no_pixels += 1,
-                }
-            }
-            (buf.clipped.len() - before) as u32
+            let tri = (idx, face, oi);
+            clip_tri(
+                p,
+                tri,
+                (or, back),
+                vs,
+                opt,
+                buf,
+                &mut st,
+                (&mut poly, &mut tmp),
+            )
         };
         buf.count += out as usize;
         buf.kept.push(Kept {
@@ -585,6 +662,50 @@ fn first_pass(
         });
     }
     buf.stats = st;
+}
+
+/// A triangle that crosses the clip planes `or` (vertices `idx` of polygon
+/// `face` of object `oi`): lit, clipped, its fan set up into `buf.clipped`.
+/// Returns how many of the fan's triangles cover a pixel centre. (Not
+/// inlined: rare, and kept out of the culling loop's registers.)
+#[allow(clippy::too_many_arguments)]
+#[inline(never)]
+fn clip_tri(
+    p: &Prep,
+    (idx, face, oi): ([usize; 3], u32, u32),
+    (or, back): (u8, bool),
+    vs: &ViewSetup,
+    opt: &Options,
+    buf: &mut ChunkBuf,
+    st: &mut Stats,
+    (poly, tmp): (&mut Vec<CV>, &mut Vec<CV>),
+) -> u32 {
+    let (w, h) = (opt.width, opt.height);
+    st.clipped += 1;
+    let cs = corners(p, idx, face, back, vs.ortho, st);
+    let before = buf.clipped.len();
+    poly.clear();
+    poly.extend((0..3).map(|k| CV {
+        c: mul4(&p.c32, p.obj.mesh.positions[idx[k]]),
+        a: cs[k],
+    }));
+    clip_poly(poly, or, tmp);
+    for k in 1..poly.len().saturating_sub(1) {
+        let sv =
+            [poly[0], poly[k], poly[k + 1]].map(|v| to_screen(&v.c, &vs.win, w as f32, h as f32));
+        match raster::setup(sv, w, h) {
+            Some((mut t, swap)) => {
+                t.obj = oi;
+                t.face = face;
+                let (a, b, c) = (poly[0].a, poly[k].a, poly[k + 1].a);
+                buf.clipped
+                    .push((t, if swap { [a, c, b] } else { [a, b, c] }));
+                st.drawn += 1;
+            }
+            None => st.no_pixels += 1,
+        }
+    }
+    (buf.clipped.len() - before) as u32
 }
 
 /// Where the second pass writes one chunk's set-up triangles: the frame's
@@ -601,6 +722,7 @@ struct Dest<'t> {
 /// Phong's attribute planes (`Planes::of`, for a Phong object; the default
 /// otherwise), and bins them by band (rows y0..=y1 are in bands
 /// y0/BAND..=y1/BAND), all straight into the frame's arrays.
+#[inline(never)]
 fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut ChunkBuf, d: Dest) {
     let (w, h) = (opt.width, opt.height);
     let bands = (h as usize).div_ceil(BAND);
@@ -610,46 +732,65 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
     let phong = p.shading == Shading::Phong;
     let mut clipped = buf.clipped.iter();
     let mut k = 0;
-    let mut put = |tri: Tri, cs: [Corner; 3], bins: &mut Vec<Vec<u32>>| {
-        d.planes[k] = if phong {
-            Planes::of(&tri, &cs)
-        } else {
-            Planes::default()
-        };
-        let (b0, b1) = (tri.bbox[2] as usize / BAND, tri.bbox[3] as usize / BAND);
-        for bin in &mut bins[b0..=b1] {
-            bin.push(d.first + k as u32);
-        }
-        d.tris[k] = tri;
-        d.corners[k] = cs;
-        k += 1;
-    };
+    let mut d = d;
     let mut st = Stats::default();
     for kept in &buf.kept {
         if kept.or != 0 {
             for (tri, cs) in clipped.by_ref().take(kept.out as usize) {
-                put(tri.clone(), *cs, &mut buf.bins);
+                d.tris[k].clone_from(tri);
+                d.corners[k] = *cs;
+                finish(k, phong, &mut d, &mut buf.bins);
+                k += 1;
             }
+            continue;
+        }
+        // One that covers no centre is not lit, but counted as if it were
+        // (as it was before the raster test moved ahead of lighting).
+        if kept.out == 0 {
+            st.lighting_evals += corner_evals(p);
             continue;
         }
         let i = kept.tri as usize;
         let (idx, face) = (t.tris[i].map(|i| i as usize), t.face[i]);
-        // Lit even when it covers no centre, as it was before the raster
-        // test moved ahead of lighting (same evaluations counted).
-        let cs = corners(p, idx, face, kept.back, vs.ortho, &mut st);
-        if kept.out == 0 {
-            continue;
-        }
-        let Some(s) = raster::snap_box_of(idx.map(|i| snap(&p.v.screen[i])), w, h) else {
+        let Some(s) = raster::snap_box_of(idx.map(|i| p.v.snapped[i]), w, h) else {
             continue;
         };
-        let mut tri = raster::setup_snapped(idx.map(|i| p.v.screen[i]), &s);
+        let slot = if s.swap() { [0, 2, 1] } else { [0, 1, 2] };
+        corners_into(
+            p,
+            idx,
+            face,
+            kept.back,
+            vs.ortho,
+            &mut st,
+            &mut d.corners[k],
+            slot,
+        );
+        let tri = &mut d.tris[k];
+        *tri = raster::setup_snapped(idx.map(|i| p.v.screen[i]), &s);
         tri.obj = oi;
         tri.face = face;
-        let cs = if s.swap() { [cs[0], cs[2], cs[1]] } else { cs };
-        put(tri, cs, &mut buf.bins);
+        finish(k, phong, &mut d, &mut buf.bins);
+        k += 1;
     }
     buf.stats.lighting_evals += st.lighting_evals;
+}
+
+/// Set-up triangle `k` of a chunk is in place: its Phong planes (the
+/// default for another shading) and its bins (rows y0..=y1 are in bands
+/// y0/BAND..=y1/BAND).
+#[inline(always)]
+fn finish(k: usize, phong: bool, d: &mut Dest, bins: &mut [Vec<u32>]) {
+    let tri = &d.tris[k];
+    d.planes[k] = if phong {
+        Planes::of(tri, &d.corners[k])
+    } else {
+        Planes::default()
+    };
+    let (b0, b1) = (tri.bbox[2] as usize / BAND, tri.bbox[3] as usize / BAND);
+    for bin in &mut bins[b0..=b1] {
+        bin.push(d.first + k as u32);
+    }
 }
 
 /// Splits `s` into consecutive slices of the given lengths (the rest is
@@ -758,10 +899,10 @@ pub(super) struct Output<'f> {
 /// vertices), `None` if degenerate.
 fn face_normal_eye(p: &Prep, f: usize) -> Option<Vector3<f32>> {
     let face = &p.obj.mesh.faces[f];
-    let p0 = v3(p.v.eye[face[0] as usize]);
+    let p0 = p.v.eye(face[0] as usize);
     let mut n = Vector3::zeros();
     for w in face[1..].windows(2) {
-        n += (v3(p.v.eye[w[0] as usize]) - p0).cross(&(v3(p.v.eye[w[1] as usize]) - p0));
+        n += (p.v.eye(w[0] as usize) - p0).cross(&(p.v.eye(w[1] as usize) - p0));
     }
     let l = n.norm();
     (l > 0.0).then(|| n / l)
