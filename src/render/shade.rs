@@ -112,13 +112,19 @@ impl Planes {
             origin: [t.bbox[0] as f32, t.bbox[2] as f32],
             ..Planes::default()
         };
+        // Lane k of vertex v: ak/wk (a = 1 for lane 0), all lanes at once.
+        let at = |v: usize| -> [f64; ATTRS] {
+            let mut a = [iw[v]; ATTRS];
+            for (k, a) in a.iter_mut().enumerate().skip(1) {
+                *a *= f64::from(c[v][k + 2]);
+            }
+            a
+        };
+        let (q0, q1, q2) = (at(0), at(1), at(2));
         for k in 0..ATTRS {
-            // Lane k: ak/wk at the three vertices (a = 1 for lane 0).
-            let a = |v: usize| if k == 0 { 1.0 } else { f64::from(c[v][k + 2]) };
-            let q0 = iw[0] * a(0);
-            let (d1, d2) = (iw[1] * a(1) - q0, iw[2] * a(2) - q0);
+            let (d1, d2) = (q1[k] - q0[k], q2[k] - q0[k]);
             // q = q0·λ0 + q1·λ1 + q2·λ2 with λ0 = 1 − λ1 − λ2.
-            p.c0[k] = (q0 + l1[0] * d1 + l2[0] * d2) as f32;
+            p.c0[k] = (q0[k] + l1[0] * d1 + l2[0] * d2) as f32;
             p.cx[k] = (l1[1] * d1 + l2[1] * d2) as f32;
             p.cy[k] = (l1[2] * d1 + l2[2] * d2) as f32;
         }
