@@ -577,23 +577,9 @@ mod tests {
     use crate::rng::SplitMix64;
     use crate::scene::Scene;
 
-    /// A camera scene whose Phong batches take every branch: interpolated
-    /// and one-colour triangles, a point light's range ending inside the
-    /// picture, a spot cone, a directional light, specular only where lit.
-    const MIXED: &str = "shading = \"phong\"\n\
-        [image]\nwidth = 96\nheight = 72\nbackground = [0.1, 0.1, 0.1]\n\
-        [camera]\neye = [0, 0, 0]\nlook = [0, 0, -1]\nup = [0, 1, 0]\n\
-        [perspective]\nfovy = 50\nnear = 0.1\nfar = 50\n\
-        [material]\nka = 0.2\nkd = 0.7\nks = 0.5\nshininess = 12\nspecular_requires_lit = true\n\
-        [[light]]\ntype = \"point\"\nposition = [1.5, 1, -2]\nrange = 2.2\n\
-        [[light]]\ntype = \"spot\"\nposition = [-1, 0, 0]\ndirection = [0, 0, -1]\n\
-        theta = 10\nphi = 30\nfalloff = 1.5\ncolor = [0.6, 0.6, 1]\n\
-        [[light]]\ntype = \"directional\"\ndirection = [0.3, 0.5, 1]\ncolor = [0.3, 0.3, 0.3]\n\
-        [[object]]\ntype = \"sphere\"\nn = 24\nr = 1\n\
-        vertex_colors = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0]]\n\
-        transform = [{ translate = [-0.6, 0, -3.5] }]\n\
-        [[object]]\ntype = \"box\"\nsize = [1.2, 1.2, 1.2]\ncolor = [0.9, 0.8, 0.3]\n\
-        transform = [{ rotate_y = 0.6 }, { rotate_x = 0.4 }, { translate = [1, -0.3, -3] }]\n";
+    /// The camera scene whose Phong batches take every branch (shared with
+    /// tests/render.rs).
+    const MIXED: &str = include_str!("../../tests/common/mixed.toml");
 
     /// The band pass at the baseline lane type (two SSE halves, or an
     /// array) writes the same bytes as the one `render` chose (AVX2 on a
