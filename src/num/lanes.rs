@@ -309,8 +309,6 @@ mod imp {
 /// What the renderer's Phong batches need of an eight-lane type besides
 /// [`Scalar`]: lanes in and bytes out.
 pub trait Wide: super::Scalar + Copy {
-    /// Every lane `x`.
-    fn splat(x: f32) -> Self;
     /// Lane k = `a[k]`.
     fn from_array(a: [f32; 8]) -> Self;
     /// The lanes as an array.
@@ -384,7 +382,7 @@ macro_rules! lane_type {
             pub fn splat(x: f32) -> $name {
                 $name($imp::splat(x))
             }
-            /// The lanes from an array (lane k = a[k]).
+            /// The lanes from an array (lane k = `a[k]`).
             #[inline(always)]
             pub fn from_array(a: [f32; 8]) -> $name {
                 $name($imp::from_array(a))
@@ -528,10 +526,6 @@ macro_rules! lane_type {
         }
 
         impl $crate::num::lanes::Wide for $name {
-            #[inline(always)]
-            fn splat(x: f32) -> $name {
-                $name::splat(x)
-            }
             #[inline(always)]
             fn from_array(a: [f32; 8]) -> $name {
                 $name::from_array(a)

@@ -375,7 +375,7 @@ impl Batch {
     ///
     /// Pixel by pixel, all planes of a pixel at once: runs are short (three
     /// pixels on average in the reference scene), too short for work across
-    /// the eight lanes to pay; [`Batch::lanes`] turns the rows into lanes.
+    /// the eight lanes to pay; [`Wide::from_rows`] turns the rows into lanes.
     #[inline(always)]
     fn fill(&mut self, row: &Row, i0: u32, n: usize) -> usize {
         let (base, m) = (self.len, n.min(8 - self.len));
