@@ -171,6 +171,12 @@ mod imp {
         }
         i.map(|x| x as u8)
     }
+    /// The bytes of three channels interleaved, r0 g0 b0 r1 …: each lane
+    /// as [`to_bytes`] converts it.
+    #[inline(always)]
+    pub fn rgb_bytes(r: V, g: V, b: V) -> [u8; 24] {
+        super::interleave(to_bytes(r), to_bytes(g), to_bytes(b))
+    }
     /// Bit k set when lane k is true.
     #[inline(always)]
     pub fn bits(m: M) -> u32 {
@@ -285,6 +291,10 @@ mod imp {
         v.0.map(|x| x as u8)
     }
     #[inline(always)]
+    pub fn rgb_bytes(r: V, g: V, b: V) -> [u8; 24] {
+        super::interleave(to_bytes(r), to_bytes(g), to_bytes(b))
+    }
+    #[inline(always)]
     pub fn bits(m: M) -> u32 {
         (0..8).fold(0, |acc, k| acc | (m.0[k] as u32) << k)
     }
@@ -306,6 +316,12 @@ mod imp {
     }
 }
 
+/// Three channels' bytes interleaved pixel by pixel: r0 g0 b0 r1 g1 b1 ….
+#[inline(always)]
+pub fn interleave(r: [u8; 8], g: [u8; 8], b: [u8; 8]) -> [u8; 24] {
+    std::array::from_fn(|i| [r, g, b][i % 3][i / 3])
+}
+
 /// What the renderer's Phong batches need of an eight-lane type besides
 /// [`Scalar`]: lanes in and bytes out.
 pub trait Wide: super::Scalar + Copy {
@@ -313,8 +329,9 @@ pub trait Wide: super::Scalar + Copy {
     fn from_array(a: [f32; 8]) -> Self;
     /// The lanes as an array.
     fn to_array(self) -> [f32; 8];
-    /// Each lane truncated to a byte (`x as u8`).
-    fn to_bytes(self) -> [u8; 8];
+    /// Eight pixels' 8-bit RGB, r0 g0 b0 r1 g1 b1 …: lane k of each channel
+    /// truncated to a byte (`x as u8`: toward zero, saturating; NaN gives 0).
+    fn rgb_bytes(r: Self, g: Self, b: Self) -> [u8; 24];
     /// Column a of eight rows as lanes, a = 0…11: lane k of result a is
     /// `q[k][a]`.
     fn from_rows(q: &[[f32; 12]; 8]) -> [Self; 12];
@@ -326,7 +343,7 @@ pub trait Wide: super::Scalar + Copy {
 /// Defines an eight-lane f32 type `$name` (with its mask type `$mask`)
 /// over a module `$imp` of lane operations: `V`, `M`, `from_array`,
 /// `to_array`, `splat`, `add`, `sub`, `mul`, `div`, `sqrt`, `neg`, `abs`,
-/// `max`, `min`, `gt`, `lt`, `eq`, `select`, `to_bytes`, `bits`,
+/// `max`, `min`, `gt`, `lt`, `eq`, `select`, `to_bytes`, `rgb_bytes`, `bits`,
 /// `mask_from`, `transpose`, each lane by lane with the plain f32 operation. [`F32x8`]
 /// is this over SSE (or an array); the renderer defines a second one over
 /// AVX2 for the code it compiles for AVX2.
@@ -391,12 +408,6 @@ macro_rules! lane_type {
             #[inline(always)]
             pub fn to_array(self) -> [f32; 8] {
                 $imp::to_array(self.0)
-            }
-            /// Each lane truncated to a byte (`x as u8`: toward zero, saturating;
-            /// NaN gives 0).
-            #[inline(always)]
-            pub fn to_bytes(self) -> [u8; 8] {
-                $imp::to_bytes(self.0)
             }
             /// `f` applied to each lane (lane by lane, for the rare operations
             /// without a vector instruction).
@@ -535,8 +546,8 @@ macro_rules! lane_type {
                 $name::to_array(self)
             }
             #[inline(always)]
-            fn to_bytes(self) -> [u8; 8] {
-                $name::to_bytes(self)
+            fn rgb_bytes(r: $name, g: $name, b: $name) -> [u8; 24] {
+                $imp::rgb_bytes(r.0, g.0, b.0)
             }
             #[inline(always)]
             fn from_rows(q: &[[f32; 12]; 8]) -> [$name; 12] {

@@ -446,24 +446,16 @@ impl Batch {
             [pick(0), pick(1), pick(2)]
         };
         let [r, g, b] = lit(m, lights, n, p, ortho, &mut NoTrace);
-        let (r, g, b) = (
-            byte(&r).to_bytes(),
-            byte(&g).to_bytes(),
-            byte(&b).to_bytes(),
-        );
+        let px = W::rgb_bytes(byte(&r), byte(&g), byte(&b));
         let n = self.len;
         let first = self.col[0] as usize;
         if self.col[n - 1] as usize == first + n - 1 {
             // Side by side (the usual case): one copy into the row.
-            let mut px = [0u8; 24];
-            for k in 0..n {
-                px[3 * k..3 * k + 3].copy_from_slice(&[r[k], g[k], b[k]]);
-            }
             out[3 * first..3 * (first + n)].copy_from_slice(&px[..3 * n]);
         } else {
-            for k in 0..n {
-                let i = 3 * self.col[k] as usize;
-                out[i..i + 3].copy_from_slice(&[r[k], g[k], b[k]]);
+            for (k, &i) in self.col[..n].iter().enumerate() {
+                let i = 3 * i as usize;
+                out[i..i + 3].copy_from_slice(&px[3 * k..3 * k + 3]);
             }
         }
         self.len = 0;
@@ -715,6 +707,42 @@ mod tests {
     #[target_feature(enable = "avx2")]
     fn rows_avx(q: &[[f32; 12]; 8]) -> [[f32; 8]; 12] {
         avx::Avx8::from_rows(q).map(avx::Avx8::to_array)
+    }
+
+    /// Eight pixels' bytes come out in pixel order r0 g0 b0 r1 …, each the
+    /// `x as u8` of its lane, at both lane types: in range (the packed
+    /// path) and with lanes out of range or NaN (the lane-by-lane path).
+    #[test]
+    fn pixel_bytes_are_each_lane_cast_in_pixel_order() {
+        let mut rng = SplitMix64::new(11);
+        let mut u = move |lo: f32, hi: f32| {
+            lo + (hi - lo) * (rng.next_u64() >> 40) as f32 / (1u64 << 24) as f32
+        };
+        for case in 0..300 {
+            let mut ch: [[f32; 8]; 3] =
+                std::array::from_fn(|_| std::array::from_fn(|_| u(0.0, 255.999)));
+            if case % 3 == 1 {
+                // One lane of one channel out of range: −1, 256, 300, NaN, −0.5.
+                let bad = [-1.0, 256.0, 300.0, f32::NAN, -0.5][case % 5];
+                ch[case % 3][case % 8] = bad;
+            }
+            let want: [u8; 24] = std::array::from_fn(|i| ch[i % 3][i / 3] as u8);
+            let [r, g, b] = ch.map(F32x8::from_array);
+            assert_eq!(F32x8::rgb_bytes(r, g, b), want, "case {case}");
+            #[cfg(target_arch = "x86_64")]
+            if std::arch::is_x86_feature_detected!("avx2") {
+                // SAFETY: the CPU has AVX2 (checked just above).
+                assert_eq!(unsafe { bytes_avx(&ch) }, want, "case {case}");
+            }
+        }
+    }
+
+    /// `Avx8::rgb_bytes`, compiled for AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    fn bytes_avx(ch: &[[f32; 8]; 3]) -> [u8; 24] {
+        let [r, g, b] = ch.map(avx::Avx8::from_array);
+        avx::Avx8::rgb_bytes(r, g, b)
     }
 
     /// Eight pixels filled straight from their triangles' planes hold, to

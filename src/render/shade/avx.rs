@@ -145,6 +145,52 @@ mod imp {
         ));
         i.map(|x| x as u8)
     }
+    /// Three channels' bytes interleaved, r0 g0 b0 r1 …, each lane as
+    /// [`to_bytes`] converts it. When every lane is in 0 ≤ x < 256:
+    /// truncation to i32 (exact there), packed to bytes with saturation
+    /// (which changes nothing in that range), and shuffled into pixel order;
+    /// otherwise channel by channel through `to_bytes`.
+    #[inline(always)]
+    pub fn rgb_bytes(r: V, g: V, b: V) -> [u8; 24] {
+        let inside = |v: __m256| {
+            avx!(_mm256_and_ps(
+                _mm256_cmp_ps::<_CMP_GE_OS>(v, _mm256_setzero_ps()),
+                _mm256_cmp_ps::<_CMP_LT_OS>(v, _mm256_set1_ps(256.0)),
+            ))
+        };
+        let ok = avx!(_mm256_movemask_ps(_mm256_and_ps(
+            inside(r.0),
+            _mm256_and_ps(inside(g.0), inside(b.0))
+        )));
+        if ok != 0xff {
+            return crate::num::lanes::interleave(to_bytes(r), to_bytes(g), to_bytes(b));
+        }
+        let mut out = [0u8; 32];
+        avx!({
+            let (ri, gi, bi) = (
+                _mm256_cvttps_epi32(r.0),
+                _mm256_cvttps_epi32(g.0),
+                _mm256_cvttps_epi32(b.0),
+            );
+            // Per 128-bit half h (pixels 4h … 4h + 3): r, g, b, b as bytes.
+            let rg = _mm256_packs_epi32(ri, gi);
+            let bb = _mm256_packs_epi32(bi, bi);
+            let bytes = _mm256_packus_epi16(rg, bb);
+            // Within each half: r0 g0 b0 r1 g1 b1 r2 g2 b2 r3 g3 b3, then 4 spare.
+            let order = _mm256_setr_epi8(
+                0, 4, 8, 1, 5, 9, 2, 6, 10, 3, 7, 11, -1, -1, -1, -1, //
+                0, 4, 8, 1, 5, 9, 2, 6, 10, 3, 7, 11, -1, -1, -1, -1,
+            );
+            let px = _mm256_shuffle_epi8(bytes, order);
+            // The two halves' twelve bytes side by side.
+            let px = _mm256_permutevar8x32_epi32(px, _mm256_setr_epi32(0, 1, 2, 4, 5, 6, 3, 7));
+            // The store writes 32 bytes into an array of 32.
+            _mm256_storeu_si256(out.as_mut_ptr().cast(), px);
+        });
+        let mut rgb = [0u8; 24];
+        rgb.copy_from_slice(&out[..24]);
+        rgb
+    }
     /// Bit k set when lane k is true.
     #[inline(always)]
     pub fn bits(m: M) -> u32 {
