@@ -188,17 +188,21 @@ mod imp {
         let v = from_array(b.map(t));
         M(v.0, v.1)
     }
-    /// Column a of eight rows of twelve as lanes, for a = 0…11 (the lanes
+    /// Column a of eight rows of twelve as lanes, for a = 0…7 (the lanes
     /// of a batch from its pixels' rows).
     #[inline(always)]
-    pub fn transpose(q: &[[f32; 12]; 8]) -> [V; 12] {
-        let mut out = [splat(0.0); 12];
-        for (a, o) in out.iter_mut().enumerate() {
-            *o = from_array([
-                q[0][a], q[1][a], q[2][a], q[3][a], q[4][a], q[5][a], q[6][a], q[7][a],
-            ]);
-        }
-        out
+    pub fn transpose8(q: &[[f32; 12]; 8]) -> [V; 8] {
+        std::array::from_fn(|a| column(q, a))
+    }
+    /// Columns 8…11 of eight rows of twelve as lanes.
+    #[inline(always)]
+    pub fn transpose_tail(q: &[[f32; 12]; 8]) -> [V; 4] {
+        std::array::from_fn(|a| column(q, 8 + a))
+    }
+    /// Column a of eight rows as lanes.
+    #[inline(always)]
+    fn column(q: &[[f32; 12]; 8], a: usize) -> V {
+        from_array(std::array::from_fn(|k| q[k][a]))
     }
 }
 
@@ -302,17 +306,21 @@ mod imp {
     pub fn mask_from(b: [bool; 8]) -> M {
         M(b)
     }
-    /// Column a of eight rows of twelve as lanes, for a = 0…11 (the lanes
+    /// Column a of eight rows of twelve as lanes, for a = 0…7 (the lanes
     /// of a batch from its pixels' rows).
     #[inline(always)]
-    pub fn transpose(q: &[[f32; 12]; 8]) -> [V; 12] {
-        let mut out = [splat(0.0); 12];
-        for (a, o) in out.iter_mut().enumerate() {
-            *o = from_array([
-                q[0][a], q[1][a], q[2][a], q[3][a], q[4][a], q[5][a], q[6][a], q[7][a],
-            ]);
-        }
-        out
+    pub fn transpose8(q: &[[f32; 12]; 8]) -> [V; 8] {
+        std::array::from_fn(|a| column(q, a))
+    }
+    /// Columns 8…11 of eight rows of twelve as lanes.
+    #[inline(always)]
+    pub fn transpose_tail(q: &[[f32; 12]; 8]) -> [V; 4] {
+        std::array::from_fn(|a| column(q, 8 + a))
+    }
+    /// Column a of eight rows as lanes.
+    #[inline(always)]
+    fn column(q: &[[f32; 12]; 8], a: usize) -> V {
+        from_array(std::array::from_fn(|k| q[k][a]))
     }
 }
 
@@ -335,6 +343,9 @@ pub trait Wide: super::Scalar + Copy {
     /// Column a of eight rows as lanes, a = 0…11: lane k of result a is
     /// `q[k][a]`.
     fn from_rows(q: &[[f32; 12]; 8]) -> [Self; 12];
+    /// Columns 0…7 of eight rows as lanes (the first eight of
+    /// [`Wide::from_rows`]).
+    fn from_rows8(q: &[[f32; 12]; 8]) -> [Self; 8];
     /// Lane k of `self` where bit k of `bits` is set, else lane k of
     /// `other`.
     fn select_bits(self, bits: u32, other: Self) -> Self;
@@ -344,7 +355,7 @@ pub trait Wide: super::Scalar + Copy {
 /// over a module `$imp` of lane operations: `V`, `M`, `from_array`,
 /// `to_array`, `splat`, `add`, `sub`, `mul`, `div`, `sqrt`, `neg`, `abs`,
 /// `max`, `min`, `gt`, `lt`, `eq`, `select`, `to_bytes`, `rgb_bytes`, `bits`,
-/// `mask_from`, `transpose`, each lane by lane with the plain f32 operation. [`F32x8`]
+/// `mask_from`, `transpose8`, `transpose_tail`, each lane by lane with the plain f32 operation. [`F32x8`]
 /// is this over SSE (or an array); the renderer defines a second one over
 /// AVX2 for the code it compiles for AVX2.
 macro_rules! lane_type {
@@ -551,7 +562,13 @@ macro_rules! lane_type {
             }
             #[inline(always)]
             fn from_rows(q: &[[f32; 12]; 8]) -> [$name; 12] {
-                $imp::transpose(q).map($name)
+                let [a, b, c, d, e, f, g, h] = $imp::transpose8(q);
+                let [i, j, k, l] = $imp::transpose_tail(q);
+                [a, b, c, d, e, f, g, h, i, j, k, l].map($name)
+            }
+            #[inline(always)]
+            fn from_rows8(q: &[[f32; 12]; 8]) -> [$name; 8] {
+                $imp::transpose8(q).map($name)
             }
             #[inline(always)]
             fn select_bits(self, bits: u32, other: $name) -> $name {

@@ -177,6 +177,9 @@ pub struct Look {
     pub lights: Vec<Light<Fast32>>,
     /// Flat, Gouraud or Phong.
     pub shading: Shading,
+    /// The object has one colour, which `material.color` holds: every
+    /// pixel's surface colour is that one (Phong need not interpolate it).
+    pub one_colour: bool,
 }
 
 /// The view transforms of a scene at an image size.
@@ -341,6 +344,7 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
                 material: shade::material_as(&obj.material),
                 lights: Vec::new(),
                 shading: opt.shading,
+                one_colour: false,
             });
             continue;
         };
@@ -361,6 +365,7 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
             material: p.material,
             lights: p.lights,
             shading: p.shading,
+            one_colour: matches!(obj.colors, crate::scene::Colors::One(_)),
         });
     }
     tris.truncate(count);

@@ -195,7 +195,7 @@ type Attrs<T> = (Vector3<T>, Vector3<T>, [T; 3]);
 /// …) at a pixel, each times r = 1/(1/w), and r. 1/w > 0 inside a clipped
 /// triangle (0 would need w = ∞ and gives r = 0).
 #[inline(always)]
-fn attributes<T: Scalar>(q: &[T; ATTRS]) -> (Vector3<T>, Vector3<T>, T) {
+fn attributes<T: Scalar>(q: &[T]) -> (Vector3<T>, Vector3<T>, T) {
     let r = q[0].if_gt(&T::zero(), || T::one() / q[0].clone(), T::zero);
     let a = |k: usize| q[k].clone() * r.clone();
     (
@@ -207,7 +207,7 @@ fn attributes<T: Scalar>(q: &[T; ATTRS]) -> (Vector3<T>, Vector3<T>, T) {
 
 /// The interpolated surface colour: (C/w)·r.
 #[inline(always)]
-fn colour<T: Scalar>(q: &[T; ATTRS], r: &T) -> [T; 3] {
+fn colour<T: Scalar>(q: &[T], r: &T) -> [T; 3] {
     let c = |k: usize| q[k].clone() * r.clone();
     [c(7), c(8), c(9)]
 }
@@ -269,11 +269,14 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
     let (mut count, mut evals) = (0u64, 0u64);
     // Each object's material (recoloured per batch by Phong) and lights at
     // W (through f64: exact from f32).
-    let mut mats: Vec<Material<W>> = inp.looks.iter().map(|l| material_as(&l.material)).collect();
-    let lights: Vec<Vec<Light<W>>> = inp
+    let mut objs: Vec<LitObj<W>> = inp
         .looks
         .iter()
-        .map(|l| l.lights.iter().map(light_as).collect())
+        .map(|l| LitObj {
+            mat: material_as(&l.material),
+            lights: l.lights.iter().map(light_as).collect(),
+            one_colour: l.one_colour,
+        })
         .collect();
     // A row of background, copied over the runs no triangle covers.
     let bg_row: Vec<u8> = inp.bg.iter().copied().cycle().take(3 * w).collect();
@@ -299,11 +302,11 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
                 if same && o != NONE {
                     let o = o as usize;
                     if batch.len > 0 {
-                        batch.flush(&mut mats[batch.obj], &lights[batch.obj], inp.ortho, orow);
+                        batch.flush(&mut objs[batch.obj], inp.ortho, orow);
                     }
-                    batch.fill8(inp.planes, ids, i, j);
+                    batch.fill8(inp.planes, ids, i, j, !objs[o].one_colour);
                     batch.obj = o;
-                    batch.flush(&mut mats[o], &lights[o], inp.ortho, orow);
+                    batch.flush(&mut objs[o], inp.ortho, orow);
                     (count, evals) = (count + 8, evals + 8);
                     i += 8;
                     continue;
@@ -322,7 +325,7 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
             if inp.looks[obj].shading == Shading::Phong {
                 evals += (end - i) as u64;
                 if obj != batch.obj {
-                    batch.flush(&mut mats[batch.obj], &lights[batch.obj], inp.ortho, orow);
+                    batch.flush(&mut objs[batch.obj], inp.ortho, orow);
                     batch.obj = obj;
                 }
                 let row = inp.planes[t as usize].row(j);
@@ -330,7 +333,7 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
                 while k < end {
                     k += batch.fill(&row, k as u32, end - k);
                     if batch.len == 8 {
-                        batch.flush(&mut mats[obj], &lights[obj], inp.ortho, orow);
+                        batch.flush(&mut objs[obj], inp.ortho, orow);
                     }
                 }
             } else {
@@ -349,9 +352,19 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
             }
             i = end;
         }
-        batch.flush(&mut mats[batch.obj], &lights[batch.obj], inp.ortho, orow);
+        batch.flush(&mut objs[batch.obj], inp.ortho, orow);
     }
     (count, evals)
+}
+
+/// An object's material (its colour replaced per batch by Phong, unless
+/// the object has one colour) and the lights that reach it, at the lane
+/// type `W`.
+struct LitObj<W: Scalar> {
+    mat: Material<W>,
+    lights: Vec<Light<W>>,
+    /// See [`Look::one_colour`].
+    one_colour: bool,
 }
 
 /// Up to eight Phong pixels of one object in one row: their attribute
@@ -400,18 +413,29 @@ impl Batch {
 
     /// Fills the (empty) batch with the eight pixels i, i + 1, … of row j,
     /// covered by the triangles `ids`, whose planes are in `planes`: q =
-    /// (c0 + cy·dj) + cx·di as [`Planes::at`] computes it.
+    /// (c0 + cy·dj) + cx·di as [`Planes::at`] computes it, for the colour
+    /// planes (lanes 7–11) too when `colours` (lane 7 is filled anyway).
     #[inline(always)]
-    fn fill8(&mut self, planes: &[Planes], ids: &[u32], i: usize, j: u32) {
+    fn fill8(&mut self, planes: &[Planes], ids: &[u32], i: usize, j: u32, colours: bool) {
         let mut interp = 0;
+        // Columns and rows are at most 8192 (`scene::check_size`): exact
+        // as f32, converted from u32 as in `Planes::at`.
+        let (i, j) = (i as u32, j as f32);
         for (k, &t) in ids.iter().enumerate().take(8) {
             let p = &planes[t as usize];
-            let dj = j as f32 - p.origin[1];
-            let di = (i + k) as f32 - p.origin[0];
-            for (a, q) in self.q[k].iter_mut().enumerate() {
-                *q = (p.c0[a] + p.cy[a] * dj) + p.cx[a] * di;
+            let dj = j - p.origin[1];
+            let di = (i + k as u32) as f32 - p.origin[0];
+            let plane = |a: usize| (p.c0[a] + p.cy[a] * dj) + p.cx[a] * di;
+            let (head, tail) = self.q[k].split_at_mut(8);
+            for (a, q) in head.iter_mut().enumerate() {
+                *q = plane(a);
             }
-            self.col[k] = (i + k) as u32;
+            if colours {
+                for (a, q) in tail.iter_mut().enumerate() {
+                    *q = plane(8 + a);
+                }
+            }
+            self.col[k] = i + k as u32;
             interp |= u32::from(!p.solid) << k;
         }
         self.interp = interp;
@@ -419,33 +443,36 @@ impl Batch {
     }
 
     /// Lights the pixels in the batch with one `lighting::shade` call at
-    /// the lane type `W` (material `m`, recoloured here, and `lights`), writes their
-    /// 8-bit RGB into the row `out` and empties the batch. Lanes past `len`
-    /// hold earlier pixels' values: computed, not written.
+    /// the lane type `W` (the object's material, recoloured here unless it
+    /// has one colour, and its lights), writes their 8-bit RGB into the row
+    /// `out` and empties the batch. Lanes past `len` hold earlier pixels'
+    /// values: computed, not written.
     #[inline(always)]
-    fn flush<W: Wide>(
-        &mut self,
-        m: &mut Material<W>,
-        lights: &[Light<W>],
-        ortho: bool,
-        out: &mut [u8],
-    ) {
+    fn flush<W: Wide>(&mut self, o: &mut LitObj<W>, ortho: bool, out: &mut [u8]) {
         if self.len == 0 {
             return;
         }
-        let q12 = W::from_rows(&self.q);
-        let q: [W; ATTRS] = std::array::from_fn(|a| q12[a]);
-        let (n, p, r) = attributes(&q);
-        // The colour lanes: C/w·r where interpolated, C itself elsewhere.
-        let rgb = [q[7], q[8], q[9]];
-        m.color = if self.interp == 0 {
-            rgb
+        let (n, p) = if o.one_colour {
+            // Every pixel's colour is the object's, which the material
+            // holds (the colour lanes would all be exactly it: c0 = C,
+            // cx = cy = 0).
+            let (n, p, _) = attributes(&W::from_rows8(&self.q));
+            (n, p)
         } else {
-            let c = colour(&q, &r);
-            let pick = |ch: usize| c[ch].select_bits(self.interp, rgb[ch]);
-            [pick(0), pick(1), pick(2)]
+            let q = W::from_rows(&self.q);
+            let (n, p, r) = attributes(&q);
+            // The colour lanes: C/w·r where interpolated, C itself elsewhere.
+            let rgb = [q[7], q[8], q[9]];
+            o.mat.color = if self.interp == 0 {
+                rgb
+            } else {
+                let c = colour(&q, &r);
+                let pick = |ch: usize| c[ch].select_bits(self.interp, rgb[ch]);
+                [pick(0), pick(1), pick(2)]
+            };
+            (n, p)
         };
-        let [r, g, b] = lit(m, lights, n, p, ortho, &mut NoTrace);
+        let [r, g, b] = lit(&o.mat, &o.lights, n, p, ortho, &mut NoTrace);
         let px = W::rgb_bytes(byte(&r), byte(&g), byte(&b));
         let n = self.len;
         let first = self.col[0] as usize;

@@ -201,16 +201,14 @@ mod imp {
         let t = |x: bool| f32::from_bits((x as u32).wrapping_neg());
         M(from_array(b.map(t)).0)
     }
-    /// Column a of eight rows of twelve as lanes (lane k of result a is
-    /// `q[k][a]`), by shuffles: columns 0–7 as an 8 × 8 transpose (pairs
-    /// of rows interleaved, then quadruples, then the 128-bit halves
-    /// swapped), columns 8–11 as two 4 × 4 transposes side by side (rows
-    /// k and k + 4 in the two halves of one register).
+    /// Columns 0–7 of eight rows of twelve as lanes (lane k of result a
+    /// is `q[k][a]`), by an 8 × 8 transpose of shuffles: pairs of rows
+    /// interleaved, then quadruples, then the 128-bit halves swapped.
     #[inline(always)]
-    pub fn transpose(q: &[[f32; 12]; 8]) -> [V; 12] {
+    pub fn transpose8(q: &[[f32; 12]; 8]) -> [V; 8] {
         avx!({
-            // The loads read eight f32 from a row of twelve, and four from
-            // its last four (unaligned loads need no alignment).
+            // The loads read eight f32 from a row of twelve (unaligned loads
+            // need no alignment).
             let r = |k: usize| _mm256_loadu_ps(q[k].as_ptr());
             let (r0, r1, r2, r3) = (r(0), r(1), r(2), r(3));
             let (r4, r5, r6, r7) = (r(4), r(5), r(6), r(7));
@@ -230,7 +228,25 @@ mod imp {
             let u7 = _mm256_shuffle_ps::<0xee>(t5, t7);
             let lo = |a, b| _mm256_permute2f128_ps::<0x20>(a, b);
             let hi = |a, b| _mm256_permute2f128_ps::<0x31>(a, b);
-            // Columns 8–11: row k in the low half, row k + 4 in the high.
+            [
+                V(lo(u0, u4)),
+                V(lo(u1, u5)),
+                V(lo(u2, u6)),
+                V(lo(u3, u7)),
+                V(hi(u0, u4)),
+                V(hi(u1, u5)),
+                V(hi(u2, u6)),
+                V(hi(u3, u7)),
+            ]
+        })
+    }
+    /// Columns 8–11 of eight rows of twelve as lanes, by two 4 × 4
+    /// transposes side by side (rows k and k + 4 in the two halves of one
+    /// register).
+    #[inline(always)]
+    pub fn transpose_tail(q: &[[f32; 12]; 8]) -> [V; 4] {
+        avx!({
+            // The loads read four f32 from the last four of a row of twelve.
             let s = |k: usize| {
                 _mm256_set_m128(
                     _mm_loadu_ps(q[k + 4][8..].as_ptr()),
@@ -241,14 +257,6 @@ mod imp {
             let (v0, v1) = (_mm256_unpacklo_ps(s0, s1), _mm256_unpackhi_ps(s0, s1));
             let (v2, v3) = (_mm256_unpacklo_ps(s2, s3), _mm256_unpackhi_ps(s2, s3));
             [
-                V(lo(u0, u4)),
-                V(lo(u1, u5)),
-                V(lo(u2, u6)),
-                V(lo(u3, u7)),
-                V(hi(u0, u4)),
-                V(hi(u1, u5)),
-                V(hi(u2, u6)),
-                V(hi(u3, u7)),
                 V(_mm256_shuffle_ps::<0x44>(v0, v2)),
                 V(_mm256_shuffle_ps::<0xee>(v0, v2)),
                 V(_mm256_shuffle_ps::<0x44>(v1, v3)),
