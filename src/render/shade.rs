@@ -794,7 +794,20 @@ mod tests {
             let ids: Vec<u32> = (0..8).map(|k| (case + k / 3) % 5).collect();
             let (i, j) = (3 * case as usize, 400 + case);
             let mut b = Batch::default();
-            b.fill8(&planes, &ids, i, j);
+            // Without the colour planes, lanes 0–7 are filled and the rest
+            // left as they were (NaN here); with them, all.
+            b.q = [[f32::NAN; 12]; 8];
+            b.fill8(&planes, &ids, i, j, false);
+            for (k, &t) in ids.iter().enumerate() {
+                let p = &planes[t as usize];
+                let want: [f32; 8] = std::array::from_fn(|a| {
+                    (p.c0[a] + p.cy[a] * (j as f32 - p.origin[1]))
+                        + p.cx[a] * ((i + k) as f32 - p.origin[0])
+                });
+                assert_eq!(b.q[k][..8], want, "case {case} pixel {k}");
+                assert!(b.q[k][8..].iter().all(|x| x.is_nan()));
+            }
+            b.fill8(&planes, &ids, i, j, true);
             for (k, &t) in ids.iter().enumerate() {
                 let p = &planes[t as usize];
                 let (n, pos, c) = p.at((i + k) as u32, j);
