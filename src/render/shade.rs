@@ -793,10 +793,12 @@ mod tests {
         for case in 0..50u32 {
             let ids: Vec<u32> = (0..8).map(|k| (case + k / 3) % 5).collect();
             let (i, j) = (3 * case as usize, 400 + case);
-            let mut b = Batch::default();
             // Without the colour planes, lanes 0–7 are filled and the rest
             // left as they were (NaN here); with them, all.
-            b.q = [[f32::NAN; 12]; 8];
+            let mut b = Batch {
+                q: [[f32::NAN; 12]; 8],
+                ..Batch::default()
+            };
             b.fill8(&planes, &ids, i, j, false);
             for (k, &t) in ids.iter().enumerate() {
                 let p = &planes[t as usize];
