@@ -294,7 +294,10 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
             // shaded surface, the usual case): lit straight from their
             // triangles' planes, without following the runs, whose short
             // and irregular lengths cost a mispredicted branch each.
-            if let Some(ids) = irow.get(i..i + 8) {
+            if let Some(ids) = irow
+                .get(i..i + 8)
+                .and_then(|s| <&[u32; 8]>::try_from(s).ok())
+            {
                 let last = inp.phong_obj.len() - 1;
                 let of = |t: u32| inp.phong_obj[(t as usize).min(last)];
                 let o = of(ids[0]);
@@ -416,12 +419,11 @@ impl Batch {
     /// (c0 + cy·dj) + cx·di as [`Planes::at`] computes it, for the colour
     /// planes (lanes 7–11) too when `colours` (lane 7 is filled anyway).
     #[inline(always)]
-    fn fill8(&mut self, planes: &[Planes], ids: &[u32], i: usize, j: u32, colours: bool) {
-        let mut interp = 0;
+    fn fill8(&mut self, planes: &[Planes], ids: &[u32; 8], i: usize, j: u32, colours: bool) {
         // Columns and rows are at most 8192 (`scene::check_size`): exact
         // as f32, converted from u32 as in `Planes::at`.
         let (i, j) = (i as u32, j as f32);
-        for (k, &t) in ids.iter().enumerate().take(8) {
+        for (k, &t) in ids.iter().enumerate() {
             let p = &planes[t as usize];
             let dj = j - p.origin[1];
             let di = (i + k as u32) as f32 - p.origin[0];
@@ -435,10 +437,15 @@ impl Batch {
                     *q = plane(8 + a);
                 }
             }
-            self.col[k] = i + k as u32;
-            interp |= u32::from(!p.solid) << k;
         }
-        self.interp = interp;
+        self.col = std::array::from_fn(|k| i + k as u32);
+        // Which colours are interpolated matters only with the colour planes.
+        self.interp = if colours {
+            let interp = |k: usize| u32::from(!planes[ids[k] as usize].solid) << k;
+            (0..8).fold(0, |m, k| m | interp(k))
+        } else {
+            0
+        };
         self.len = 8;
     }
 
@@ -791,7 +798,7 @@ mod tests {
             })
             .collect();
         for case in 0..50u32 {
-            let ids: Vec<u32> = (0..8).map(|k| (case + k / 3) % 5).collect();
+            let ids: [u32; 8] = std::array::from_fn(|k| (case + k as u32 / 3) % 5);
             let (i, j) = (3 * case as usize, 400 + case);
             // Without the colour planes, lanes 0–7 are filled and the rest
             // left as they were (NaN here); with them, all.
@@ -832,6 +839,11 @@ mod tests {
                 assert_eq!(c.map(|x| x.0), want);
                 assert_eq!(b.col[k] as usize, i + k);
                 assert_eq!(b.interp >> k & 1 == 1, !p.solid);
+            }
+            b.fill8(&planes, &ids, i, j, false);
+            for k in 0..8 {
+                assert_eq!(b.col[k] as usize, i + k);
+                assert_eq!(b.interp, 0, "colours not interpolated without their planes");
             }
         }
     }
