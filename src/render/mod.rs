@@ -19,7 +19,7 @@
 use crate::error::{Error, Result};
 use crate::lighting::{Light, Material};
 use crate::num::Fast32;
-use crate::raster::{self, Tri, BAND, NONE};
+use crate::raster::{self, Tri, BAND};
 use crate::scene::{Normals, Scene, Shading, View};
 use crate::trace::NoTrace;
 use crate::window::Window;
@@ -376,13 +376,13 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
     let planes = &scratch.planes;
     stats.geometry = t0.elapsed().saturating_sub(stats.binning);
 
-    let phong_obj = phong_objects(&tris, &looks);
+    let phong = shade::PhongIndex::of(&tris, &looks);
     let band_in = shade::BandInput {
         tris: &tris,
         corners: &corners,
         planes,
         looks: &looks,
-        phong_obj: &phong_obj,
+        phong: &phong,
         ortho: vs.ortho,
         bg: to_u8(scene.background),
         width: opt.width as usize,
@@ -430,14 +430,6 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
         stats,
         scratch,
     })
-}
-
-/// Per triangle its object when that object is shaded by Phong, else
-/// [`NONE`]; and [`NONE`] once more at the end (see `shade::BandInput`).
-fn phong_objects(tris: &[Tri], looks: &[Look]) -> Vec<u32> {
-    let phong = |t: &Tri| looks[t.obj as usize].shading == Shading::Phong;
-    let of = |t: &Tri| if phong(t) { t.obj } else { NONE };
-    tris.iter().map(of).chain([NONE]).collect()
 }
 
 /// Writes the frame as an 8-bit RGB PNG.

@@ -223,16 +223,76 @@ pub struct BandInput<'a> {
     pub planes: &'a [Planes],
     /// Per object: how it is shaded.
     pub looks: &'a [Look],
-    /// Per triangle, and one more entry last: the triangle's object when
-    /// that object is shaded by Phong, else [`NONE`] (and [`NONE`] in the
-    /// last entry, which [`NONE`] ids are clamped to).
-    pub phong_obj: &'a [u32],
+    /// Which triangles belong to which Phong-shaded object.
+    pub phong: &'a PhongIndex,
     /// The viewer is along +z (tilt view), not at the eye-space origin.
     pub ortho: bool,
     /// The background's 8-bit colour.
     pub bg: [u8; 3],
     /// Image width.
     pub width: usize,
+}
+
+/// Which triangles belong to which Phong-shaded object. The set-up
+/// triangles are numbered object by object (the geometry stage writes them
+/// in submission order), so an object's triangles are one range of numbers.
+#[derive(Clone, Debug, Default)]
+pub struct PhongIndex {
+    /// Per triangle, and one more entry last: the triangle's object when
+    /// that object is shaded by Phong, else [`NONE`] (and [`NONE`] in the
+    /// last entry, which [`NONE`] ids are clamped to).
+    obj: Vec<u32>,
+    /// Per object: its triangles' numbers lo..hi when it is shaded by
+    /// Phong (else an empty range).
+    range: Vec<[u32; 2]>,
+}
+
+impl PhongIndex {
+    /// The index of the frame's triangles `tris` (numbered object by
+    /// object) and the objects' looks.
+    pub fn of(tris: &[Tri], looks: &[Look]) -> PhongIndex {
+        let phong = |o: u32| looks[o as usize].shading == Shading::Phong;
+        let obj = tris
+            .iter()
+            .map(|t| if phong(t.obj) { t.obj } else { NONE })
+            .chain([NONE])
+            .collect();
+        let mut range = vec![[0u32; 2]; looks.len()];
+        for (k, t) in tris.iter().enumerate() {
+            let r = &mut range[t.obj as usize];
+            if r[1] == 0 {
+                r[0] = k as u32;
+            }
+            debug_assert!(
+                r[1] == 0 || r[1] == k as u32,
+                "triangles numbered object by object"
+            );
+            r[1] = k as u32 + 1;
+        }
+        for (o, r) in range.iter_mut().enumerate() {
+            if !phong(o as u32) {
+                *r = [0, 0];
+            }
+        }
+        PhongIndex { obj, range }
+    }
+
+    /// The Phong-shaded object that all eight triangles `ids` belong to,
+    /// if there is one ([`NONE`] ids belong to none).
+    #[inline(always)]
+    fn one_object(&self, ids: &[u32; 8]) -> Option<usize> {
+        let last = self.obj.len() - 1;
+        let o = self.obj[(ids[0] as usize).min(last)];
+        if o == NONE {
+            return None;
+        }
+        let [lo, hi] = self.range[o as usize];
+        // t in lo..hi, for all eight at once (NONE − lo ≥ hi − lo).
+        let inside = ids
+            .iter()
+            .fold(true, |all, &t| all & (t.wrapping_sub(lo) < hi - lo));
+        inside.then_some(o as usize)
+    }
 }
 
 /// Shades the rows of one band from its visibility buffer `id` (first row
@@ -294,26 +354,19 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
             // shaded surface, the usual case): lit straight from their
             // triangles' planes, without following the runs, whose short
             // and irregular lengths cost a mispredicted branch each.
-            if let Some(ids) = irow
+            let ids = irow
                 .get(i..i + 8)
-                .and_then(|s| <&[u32; 8]>::try_from(s).ok())
-            {
-                let last = inp.phong_obj.len() - 1;
-                let of = |t: u32| inp.phong_obj[(t as usize).min(last)];
-                let o = of(ids[0]);
-                let same = ids.iter().fold(true, |s, &t| s & (of(t) == o));
-                if same && o != NONE {
-                    let o = o as usize;
-                    if batch.len > 0 {
-                        batch.flush(&mut objs[batch.obj], inp.ortho, orow);
-                    }
-                    batch.fill8(inp.planes, ids, i, j, !objs[o].one_colour);
-                    batch.obj = o;
-                    batch.flush(&mut objs[o], inp.ortho, orow);
-                    (count, evals) = (count + 8, evals + 8);
-                    i += 8;
-                    continue;
+                .and_then(|s| <&[u32; 8]>::try_from(s).ok());
+            if let Some((ids, o)) = ids.and_then(|ids| Some((ids, inp.phong.one_object(ids)?))) {
+                if batch.len > 0 {
+                    batch.flush(&mut objs[batch.obj], inp.ortho, orow);
                 }
+                batch.fill8(inp.planes, ids, i, j, !objs[o].one_colour);
+                batch.obj = o;
+                batch.flush(&mut objs[o], inp.ortho, orow);
+                (count, evals) = (count + 8, evals + 8);
+                i += 8;
+                continue;
             }
             let t = irow[i];
             let end = irow[i..].iter().position(|&u| u != t).map_or(w, |k| i + k);
@@ -607,6 +660,35 @@ mod tests {
     /// tests/render.rs).
     const MIXED: &str = include_str!("../../tests/common/mixed.toml");
 
+    /// Eight ids are one Phong object's exactly when each is in its range
+    /// of numbers: the mixed scene's index agrees with each triangle's own
+    /// object, and runs across objects, background or non-Phong triangles
+    /// are refused.
+    #[test]
+    fn eight_ids_are_one_objects_when_all_are_in_its_range() {
+        let s = Scene::parse(MIXED, "mixed.toml", std::path::Path::new(".")).unwrap();
+        let f = crate::render::render(&s, &crate::render::Options::of(&s)).unwrap();
+        let ix = PhongIndex::of(&f.tris, &f.looks);
+        let n = f.tris.len() as u32;
+        let obj = |t: u32| f.tris[t as usize].obj as usize;
+        // Windows of eight consecutive numbers, and of numbers far apart.
+        for t0 in 0..n.saturating_sub(8) {
+            for step in [1, 2, 7] {
+                let ids: [u32; 8] = std::array::from_fn(|k| (t0 + step * k as u32).min(n - 1));
+                let want = (ids.iter().all(|&t| obj(t) == obj(ids[0])))
+                    .then(|| obj(ids[0]))
+                    .filter(|&o| f.looks[o].shading == Shading::Phong);
+                assert_eq!(ix.one_object(&ids), want, "ids {ids:?}");
+            }
+        }
+        let mut ids = [0u32; 8];
+        ids[5] = NONE;
+        assert_eq!(ix.one_object(&ids), None, "background among them");
+        assert_eq!(ix.one_object(&[NONE; 8]), None);
+        // A scene of two objects: both are used.
+        assert!(ix.range.iter().filter(|r| r[1] > r[0]).count() >= 2);
+    }
+
     /// The band pass at the baseline lane type (two SSE halves, or an
     /// array) writes the same bytes as the one `render` chose (AVX2 on a
     /// CPU that has it): on an AVX2 machine this is the only run of the
@@ -620,7 +702,7 @@ mod tests {
             corners: &f.corners,
             planes: &f.scratch.planes,
             looks: &f.looks,
-            phong_obj: &super::super::phong_objects(&f.tris, &f.looks),
+            phong: &PhongIndex::of(&f.tris, &f.looks),
             ortho: f.ortho,
             bg: to_u8(s.background),
             width: f.width as usize,
