@@ -533,7 +533,10 @@ impl Batch {
             (n, p)
         };
         let [r, g, b] = lit(&o.mat, &o.lights, n, p, ortho, &mut NoTrace);
-        let px = W::rgb_bytes(byte(&r), byte(&g), byte(&b));
+        // `lit` clamps each channel to [0, 1] (never NaN), so byte()'s own
+        // clamp would change nothing: x·255 + 0.5 is what it gives.
+        let byte = |x: W| x * W::from_i64(255) + W::from_f64(0.5);
+        let px = W::rgb_bytes(byte(r), byte(g), byte(b));
         let n = self.len;
         let first = self.col[0] as usize;
         if self.col[n - 1] as usize == first + n - 1 {
