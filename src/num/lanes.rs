@@ -619,13 +619,13 @@ macro_rules! lane_type {
                 if n == 0 {
                     return $name::splat(1.0);
                 }
-                let (mut base, mut e) = (*self, n);
-                while e & 1 == 0 {
+                // The squarings for n's trailing zero bits, as a counted loop.
+                let mut base = *self;
+                for _ in 0..n.trailing_zeros() {
                     base = base * base;
-                    e >>= 1;
                 }
                 let mut acc = base;
-                e >>= 1;
+                let mut e = n >> n.trailing_zeros() >> 1;
                 while e > 0 {
                     base = base * base;
                     if e & 1 == 1 {
@@ -669,12 +669,10 @@ macro_rules! lane_type {
             #[inline(always)]
             fn as_whole(&self) -> Option<u32> {
                 let x = self.to_array()[0];
-                let x64 = f64::from(x);
-                (*self == $name::splat(x)
-                    && x64 >= 0.0
-                    && x64 <= f64::from(u32::MAX)
-                    && f64::from(x64 as u32) == x64)
-                    .then_some(x64 as u32)
+                // x as u32 saturates (and gives 0 for NaN): it is x exactly
+                // when x is a whole number from 0 to u32::MAX.
+                let k = x as u32;
+                (*self == $name::splat(x) && k as f64 == f64::from(x)).then_some(k)
             }
             #[inline(always)]
             fn if_gt(&self, o: &Self, a: impl FnOnce() -> Self, b: impl FnOnce() -> Self) -> Self {
@@ -809,5 +807,22 @@ mod tests {
         assert_eq!(F32x8::splat(2.5).as_whole(), None);
         assert_eq!(F32x8::splat(-1.0).as_whole(), None);
         assert_eq!(lanes(|k| k as f32).as_whole(), None);
+        // The ends of u32 and what lies past them.
+        assert_eq!(F32x8::splat(4294967040.0).as_whole(), Some(4294967040));
+        assert_eq!(F32x8::splat(4294967296.0).as_whole(), None);
+        assert_eq!(F32x8::splat(f32::INFINITY).as_whole(), None);
+        assert_eq!(F32x8::splat(f32::NAN).as_whole(), None);
+    }
+
+    /// xⁿ lane by lane takes the same products as `Fast32::powi`: the same
+    /// bits, for exponents with and without trailing zero bits.
+    #[test]
+    fn whole_powers_are_the_scalar_products_lane_by_lane() {
+        use crate::num::Fast32;
+        let x = lanes(|k| 0.3 + 0.09 * k as f32);
+        for n in [0, 1, 2, 3, 4, 5, 7, 12, 32, 33, 100, 128, 1000] {
+            let want: [f32; 8] = std::array::from_fn(|k| Fast32(x.to_array()[k]).powi(n).0);
+            assert_eq!(x.powi(n).to_array(), want, "n = {n}");
+        }
     }
 }
