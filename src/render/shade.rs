@@ -339,7 +339,7 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
         })
         .collect();
     // A row of background, copied over the runs no triangle covers.
-    let bg_row: Vec<u8> = inp.bg.iter().copied().cycle().take(3 * w).collect();
+    let bg_row: Vec<u8> = inp.bg.repeat(w);
     for (r, (orow, irow)) in out
         .chunks_exact_mut(3 * w)
         .zip(id.chunks_exact(w))
@@ -541,7 +541,12 @@ impl Batch {
         let first = self.col[0] as usize;
         if self.col[n - 1] as usize == first + n - 1 {
             // Side by side (the usual case): one copy into the row.
-            out[3 * first..3 * (first + n)].copy_from_slice(&px[..3 * n]);
+            if n == 8 {
+                // A full batch: a copy of known size, done in registers.
+                out[3 * first..3 * first + 24].copy_from_slice(&px);
+            } else {
+                out[3 * first..3 * (first + n)].copy_from_slice(&px[..3 * n]);
+            }
         } else {
             for (k, &i) in self.col[..n].iter().enumerate() {
                 let i = 3 * i as usize;
