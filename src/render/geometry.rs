@@ -161,8 +161,31 @@ struct VertOut<'a> {
 }
 
 /// [`vertices`] for the block of vertices `ps`, numbers from `first`.
-#[inline(never)]
+///
+/// On a CPU with AVX2 the same code, compiled a second time with AVX2
+/// enabled, is chosen at run time; the results are the same bits (no
+/// operation is fused or reordered).
 fn vertex_block(first: usize, ps: &[[f32; 3]], x: &VertXf, o: VertOut) -> f32 {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU has AVX2 (checked just above), the one feature
+        // `vertex_block_avx2` is compiled for.
+        return unsafe { vertex_block_avx2(first, ps, x, o) };
+    }
+    vertex_block_with(first, ps, x, o)
+}
+
+/// [`vertex_block_with`] compiled for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline(never)]
+fn vertex_block_avx2(first: usize, ps: &[[f32; 3]], x: &VertXf, o: VertOut) -> f32 {
+    vertex_block_with(first, ps, x, o)
+}
+
+/// The body of [`vertex_block`].
+#[inline(always)]
+fn vertex_block_with(first: usize, ps: &[[f32; 3]], x: &VertXf, o: VertOut) -> f32 {
     let (w, h) = x.size;
     let mut far2 = 0.0f32;
     for (k, &p) in ps.iter().enumerate() {
@@ -602,9 +625,53 @@ fn corner_evals(p: &Prep) -> u64 {
 /// inside the view volume, whether it covers a pixel centre
 /// ([`raster::snap_box_of`]); a triangle that crosses a plane is lit,
 /// clipped and set up here (few do).
+///
+/// On a CPU with AVX2 the same code, compiled a second time with AVX2
+/// enabled, is chosen at run time; the results are the same bits.
+#[allow(clippy::too_many_arguments)]
+fn first_pass(
+    p: &Prep,
+    oi: u32,
+    first: usize,
+    tris: &[[u32; 3]],
+    faces: &[u32],
+    vs: &ViewSetup,
+    cull: bool,
+    opt: &Options,
+    buf: &mut ChunkBuf,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU has AVX2 (checked just above), the one feature
+        // `first_pass_avx2` is compiled for.
+        return unsafe { first_pass_avx2(p, oi, first, tris, faces, vs, cull, opt, buf) };
+    }
+    first_pass_with(p, oi, first, tris, faces, vs, cull, opt, buf)
+}
+
+/// [`first_pass_with`] compiled for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
 #[allow(clippy::too_many_arguments)]
 #[inline(never)]
-fn first_pass(
+fn first_pass_avx2(
+    p: &Prep,
+    oi: u32,
+    first: usize,
+    tris: &[[u32; 3]],
+    faces: &[u32],
+    vs: &ViewSetup,
+    cull: bool,
+    opt: &Options,
+    buf: &mut ChunkBuf,
+) {
+    first_pass_with(p, oi, first, tris, faces, vs, cull, opt, buf)
+}
+
+/// The body of [`first_pass`].
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn first_pass_with(
     p: &Prep,
     oi: u32,
     first: usize,
@@ -722,8 +789,31 @@ struct Dest<'t> {
 /// Phong's attribute planes (`Planes::of`, for a Phong object; the default
 /// otherwise), and bins them by band (rows y0..=y1 are in bands
 /// y0/BAND..=y1/BAND), all straight into the frame's arrays.
-#[inline(never)]
+///
+/// On a CPU with AVX2 the same code, compiled a second time with AVX2
+/// enabled (wider registers for the f64 planes), is chosen at run time;
+/// the results are the same bits (no operation is fused or reordered).
 fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut ChunkBuf, d: Dest) {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU has AVX2 (checked just above), the one feature
+        // `second_pass_avx2` is compiled for.
+        return unsafe { second_pass_avx2(p, oi, vs, opt, buf, d) };
+    }
+    second_pass_with(p, oi, vs, opt, buf, d)
+}
+
+/// [`second_pass_with`] compiled for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline(never)]
+fn second_pass_avx2(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut ChunkBuf, d: Dest) {
+    second_pass_with(p, oi, vs, opt, buf, d)
+}
+
+/// The body of [`second_pass`].
+#[inline(always)]
+fn second_pass_with(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut ChunkBuf, d: Dest) {
     let (w, h) = (opt.width, opt.height);
     let bands = (h as usize).div_ceil(BAND);
     buf.bins.resize_with(bands, Vec::new);
@@ -767,7 +857,7 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
             slot,
         );
         let tri = &mut d.tris[k];
-        *tri = raster::setup_snapped(idx.map(|i| p.v.screen[i]), &s);
+        raster::setup_into(&idx.map(|i| p.v.screen[i]), &s, tri);
         tri.obj = oi;
         tri.face = face;
         finish(k, phong, &mut d, &mut buf.bins);
@@ -782,11 +872,11 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
 #[inline(always)]
 fn finish(k: usize, phong: bool, d: &mut Dest, bins: &mut [Vec<u32>]) {
     let tri = &d.tris[k];
-    d.planes[k] = if phong {
-        Planes::of(tri, &d.corners[k])
+    if phong {
+        d.planes[k].set(tri, &d.corners[k]);
     } else {
-        Planes::default()
-    };
+        d.planes[k] = Planes::default();
+    }
     let (b0, b1) = (tri.bbox[2] as usize / BAND, tri.bbox[3] as usize / BAND);
     for bin in &mut bins[b0..=b1] {
         bin.push(d.first + k as u32);
