@@ -729,6 +729,22 @@ fn corners_into(
 ) {
     // An open mesh shows its back: light the side that is seen.
     let flip = if back { -1.0 } else { 1.0 };
+    // Phong (the common case, taken first): no lit colour, lit per pixel.
+    if p.shading == Shading::Phong {
+        for k in 0..3 {
+            let v = idx[k];
+            let s = surface(p.obj, face, v as u32);
+            let nrm = match p.v.vnormals.get(v) {
+                Some(n) => n.map(|x| x * flip),
+                None => [0.0; 3],
+            };
+            let e = p.v.ec[v].e;
+            out[slot[k]] = [
+                0.0, 0.0, 0.0, nrm[0], nrm[1], nrm[2], e[0], e[1], e[2], s[0], s[1], s[2],
+            ];
+        }
+        return;
+    }
     // Flat: one colour, normal and position for the whole face.
     let flat = (p.shading == Shading::Flat).then(|| {
         // The polygon's normal in eye space: the triangle's own for a
@@ -1273,6 +1289,53 @@ mod tests {
                 assert!(codes > 0 && codes < n, "round {round}: {codes} of {n}");
             }
         }
+    }
+
+    #[test]
+    fn phong_corners_are_the_normal_position_and_colour() {
+        // Phong's corners (the first branch of `corners_into`) against
+        // their definition: no lit colour, the eye-space vertex normal
+        // (flipped on a back face), the eye position, the surface colour.
+        let text = include_str!("../../tests/common/mixed.toml");
+        let s = Scene::parse(text, "mixed.toml", std::path::Path::new(".")).unwrap();
+        let opt = Options::of(&s);
+        let vs = super::super::view_setup(&s, opt.width, opt.height).unwrap();
+        let mut checked = 0;
+        for obj in &s.objects {
+            let (mut stats, mut bufs) = (Stats::default(), VertBufs::default());
+            let Some(p) = prepare(obj, &vs, &s.lights, &opt, &mut stats, &mut bufs) else {
+                continue;
+            };
+            assert_eq!(p.shading, Shading::Phong);
+            for (t, &face) in obj.tris.tris.iter().zip(&obj.tris.face) {
+                let idx = t.map(|i| i as usize);
+                for back in [false, true] {
+                    let got = corners(&p, idx, face, back, vs.ortho, &mut stats);
+                    let flip = if back { -1.0 } else { 1.0 };
+                    for (k, &v) in idx.iter().enumerate() {
+                        let (n, e) = (p.v.vnormals[v], p.v.ec[v].e);
+                        let c = surface(obj, face, v as u32);
+                        let want = [
+                            0.0,
+                            0.0,
+                            0.0,
+                            n[0] * flip,
+                            n[1] * flip,
+                            n[2] * flip,
+                            e[0],
+                            e[1],
+                            e[2],
+                            c[0],
+                            c[1],
+                            c[2],
+                        ];
+                        assert_eq!(got[k].map(f32::to_bits), want.map(f32::to_bits));
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert!(checked > 100, "{checked}");
     }
 
     /// Renders the scene file `name` (under problems/render) with the
