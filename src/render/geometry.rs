@@ -1006,16 +1006,25 @@ fn second_pass_with(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut 
     let t = &p.obj.tris;
     let phong = p.shading == Shading::Phong;
     let mut clipped = buf.clipped.iter();
-    let mut k = 0;
-    let mut d = d;
+    // The output slots in order (no index to check per triangle), and the
+    // frame's number of the next.
+    let mut slots = d
+        .tris
+        .iter_mut()
+        .zip(d.corners.iter_mut())
+        .zip(d.planes.iter_mut());
+    let mut n = d.first;
     let mut st = Stats::default();
     for kept in &buf.kept {
         if kept.or != 0 {
             for (tri, cs) in clipped.by_ref().take(kept.out as usize) {
-                d.tris[k].clone_from(tri);
-                d.corners[k] = *cs;
-                finish(k, phong, &mut d, &mut buf.bins);
-                k += 1;
+                let Some(((t, c), pl)) = slots.next() else {
+                    break;
+                };
+                t.clone_from(tri);
+                *c = *cs;
+                finish(n, phong, (t, c, pl), &mut buf.bins);
+                n += 1;
             }
             continue;
         }
@@ -1030,41 +1039,38 @@ fn second_pass_with(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut 
         let Some(s) = raster::snap_box_of(idx.map(|i| p.v.snapped[i]), w, h) else {
             continue;
         };
+        let Some(((tri, c), pl)) = slots.next() else {
+            break;
+        };
         let slot = if s.swap() { [0, 2, 1] } else { [0, 1, 2] };
-        corners_into(
-            p,
-            idx,
-            face,
-            kept.back,
-            vs.ortho,
-            &mut st,
-            &mut d.corners[k],
-            slot,
-        );
-        let tri = &mut d.tris[k];
+        corners_into(p, idx, face, kept.back, vs.ortho, &mut st, c, slot);
         raster::setup_into(&idx.map(|i| p.v.screen[i]), &s, tri);
         tri.obj = oi;
         tri.face = face;
-        finish(k, phong, &mut d, &mut buf.bins);
-        k += 1;
+        finish(n, phong, (tri, c, pl), &mut buf.bins);
+        n += 1;
     }
     buf.stats.lighting_evals += st.lighting_evals;
 }
 
-/// Set-up triangle `k` of a chunk is in place: its Phong planes (the
-/// default for another shading) and its bins (rows y0..=y1 are in bands
-/// y0/BAND..=y1/BAND).
+/// Set-up triangle number `n` of the frame is in place with its corners:
+/// its Phong planes (the default for another shading) and its bins (rows
+/// y0..=y1 are in bands y0/BAND..=y1/BAND).
 #[inline(always)]
-fn finish(k: usize, phong: bool, d: &mut Dest, bins: &mut [Vec<u32>]) {
-    let tri = &d.tris[k];
+fn finish(
+    n: u32,
+    phong: bool,
+    (tri, c, pl): (&Tri, &[Corner; 3], &mut Planes),
+    bins: &mut [Vec<u32>],
+) {
     if phong {
-        d.planes[k].set(tri, &d.corners[k]);
+        pl.set(tri, c);
     } else {
-        d.planes[k] = Planes::default();
+        *pl = Planes::default();
     }
     let (b0, b1) = (tri.bbox[2] as usize / BAND, tri.bbox[3] as usize / BAND);
     for bin in &mut bins[b0..=b1] {
-        bin.push(d.first + k as u32);
+        bin.push(n);
     }
 }
 
