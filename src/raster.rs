@@ -146,7 +146,21 @@ pub fn setup(v: [ScreenVert; 3], w: u32, h: u32) -> Option<(Tri, bool)> {
 /// The second half of [`setup`]: edge functions and planes of a triangle
 /// that [`snap_box`] accepted (`v` as given to it, not yet swapped).
 pub fn setup_snapped(v: [ScreenVert; 3], s: &Snapped) -> Tri {
-    let mut v = v;
+    let mut t = Tri::default();
+    setup_into(&v, s, &mut t);
+    t
+}
+
+/// [`setup_snapped`] written straight into `t` (every field but `obj` and
+/// `face`), so that the geometry stage sets up a triangle in its place in
+/// the frame's array without a copy. Edge k runs from vertex k+1 to vertex
+/// k+2: a_k = −dy, b_k = dx, c_k = dy·x_i − dx·y_i (less 1 off the
+/// top-left edges); the barycentric plane of vertex k over pixel indices
+/// from (x0, y0) is (E_k(x0, y0), 256·a_k, 256·b_k)/area in f64 (E_k
+/// without the fill-rule bias), and the depth plane Σ_k plane_k·z_k.
+#[inline(always)]
+pub fn setup_into(v: &[ScreenVert; 3], s: &Snapped, t: &mut Tri) {
+    let mut v = *v;
     if s.swap {
         v.swap(1, 2);
     }
@@ -156,6 +170,7 @@ pub fn setup_snapped(v: [ScreenVert; 3], s: &Snapped) -> Tri {
     let mut a = [0i64; 3];
     let mut b = [0i64; 3];
     let mut c = [0i64; 3];
+    let mut biased = [false; 3];
     for k in 0..3 {
         let (i, j) = ((k + 1) % 3, (k + 2) % 3);
         let (dx, dy) = (x[j] - x[i], y[j] - y[i]);
@@ -165,6 +180,7 @@ pub fn setup_snapped(v: [ScreenVert; 3], s: &Snapped) -> Tri {
         // Top-left rule (y down, interior where E ≥ 0): a top edge is
         // horizontal running right, a left edge runs up. Others need E > 0.
         let top_left = (dy == 0 && dx > 0) || dy < 0;
+        biased[k] = !top_left;
         if !top_left {
             c[k] -= 1;
         }
@@ -172,44 +188,24 @@ pub fn setup_snapped(v: [ScreenVert; 3], s: &Snapped) -> Tri {
     // Depth and barycentric planes over pixel indices, relative to (x0, y0).
     let (ox, oy) = (x0 * ONE + HALF, y0 * ONE + HALF);
     let areaf = area as f64;
-    let bary = |k: usize| {
-        let e0 = (a[k] * ox + b[k] * oy + c[k] + if bias(k, &x, &y) { 1 } else { 0 }) as f64;
+    let p: [[f64; 3]; 3] = std::array::from_fn(|k| {
+        let e0 = (a[k] * ox + b[k] * oy + c[k] + i64::from(biased[k])) as f64;
         [
             e0 / areaf,
             (a[k] * ONE) as f64 / areaf,
             (b[k] * ONE) as f64 / areaf,
         ]
-    };
-    let (p0, p1, p2) = (bary(0), bary(1), bary(2));
+    });
     let z = v.map(|p| p.z as f64);
-    let plane = |q: [f64; 3]| {
-        [
-            (p0[0] * q[0] + p1[0] * q[1] + p2[0] * q[2]) as f32,
-            (p0[1] * q[0] + p1[1] * q[1] + p2[1] * q[2]) as f32,
-            (p0[2] * q[0] + p1[2] * q[1] + p2[2] * q[2]) as f32,
-        ]
-    };
-    Tri {
-        a,
-        b,
-        c,
-        bbox: s.bbox,
-        z: plane(z),
-        l1: p1.map(|t| t as f32),
-        l2: p2.map(|t| t as f32),
-        inv_w: v.map(|p| p.inv_w),
-        obj: 0,
-        face: 0,
-        verts: v,
-    }
-}
-
-/// Whether edge k had the fill-rule bias subtracted (recomputed so the
-/// barycentric planes use the unbiased edge function).
-fn bias(k: usize, x: &[i64; 3], y: &[i64; 3]) -> bool {
-    let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-    let (dx, dy) = (x[j] - x[i], y[j] - y[i]);
-    !((dy == 0 && dx > 0) || dy < 0)
+    t.a = a;
+    t.b = b;
+    t.c = c;
+    t.bbox = s.bbox;
+    t.z = std::array::from_fn(|i| (p[0][i] * z[0] + p[1][i] * z[1] + p[2][i] * z[2]) as f32);
+    t.l1 = p[1].map(|t| t as f32);
+    t.l2 = p[2].map(|t| t as f32);
+    t.inv_w = v.map(|p| p.inv_w);
+    t.verts = v;
 }
 
 impl Tri {

@@ -63,6 +63,19 @@ pub(super) struct Prep<'a> {
     pub(super) shading: Shading,
 }
 
+/// Whether the geometry loops take their AVX2 compilation: the CPU has
+/// AVX2 (and, in tests, the portable one was not asked for, to compare the
+/// two).
+#[cfg(target_arch = "x86_64")]
+#[inline]
+fn avx2() -> bool {
+    #[cfg(test)]
+    if tests::PORTABLE.load(std::sync::atomic::Ordering::Relaxed) {
+        return false;
+    }
+    std::arch::is_x86_feature_detected!("avx2")
+}
+
 /// Vertices per parallel block of the per-vertex work.
 const VBLOCK: usize = 4096;
 
@@ -161,38 +174,58 @@ struct VertOut<'a> {
 }
 
 /// [`vertices`] for the block of vertices `ps`, numbers from `first`.
-#[inline(never)]
+///
+/// On a CPU with AVX2 the same code, compiled a second time with AVX2
+/// enabled, is chosen at run time; the results are the same bits (no
+/// operation is fused or reordered).
 fn vertex_block(first: usize, ps: &[[f32; 3]], x: &VertXf, o: VertOut) -> f32 {
-    let (w, h) = x.size;
+    #[cfg(target_arch = "x86_64")]
+    if avx2() {
+        // SAFETY: the CPU has AVX2 (checked just above), the one feature
+        // `vertex_block_avx2` is compiled for.
+        return unsafe { vertex_block_avx2(first, ps, x, o) };
+    }
+    vertex_block_with(first, ps, x, o)
+}
+
+/// [`vertex_block_with`] compiled for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline(never)]
+fn vertex_block_avx2(first: usize, ps: &[[f32; 3]], x: &VertXf, o: VertOut) -> f32 {
+    vertex_block_with(first, ps, x, o)
+}
+
+/// The body of [`vertex_block`]: groups of [`VL`] vertices side by side
+/// ([`vertex_lanes`], [`normal_lanes`]), the rest one at a time
+/// ([`vertex_one`], [`normal_one`]), with the same operations per vertex.
+#[inline(always)]
+fn vertex_block_with(first: usize, ps: &[[f32; 3]], x: &VertXf, mut o: VertOut) -> f32 {
     let mut far2 = 0.0f32;
-    for (k, &p) in ps.iter().enumerate() {
-        let v = mul4(&x.e32, p);
-        let e = [v[0], v[1], v[2]];
-        far2 = far2.max((v3(e) - x.centre).norm_squared());
-        let clip = mul4(&x.c32, p);
-        let code = if x.inside {
-            0
-        } else {
-            crate::clip::outcode_clip_space(&Vector4::from(clip))
-        };
-        o.ec[k] = EyeCode {
-            e,
-            code: code as u32,
-        };
-        (o.ss[k], o.sn[k]) = if code == 0 {
-            let s = to_screen(&clip, x.win, w, h);
-            (s, snap(&s))
-        } else {
-            (ScreenVert::default(), [0; 2])
-        };
+    let split = ps.len() - ps.len() % VL;
+    for (g, p) in ps[..split].chunks_exact(VL).enumerate() {
+        let p: &[[f32; 3]; VL] = p.try_into().expect("a group of VL vertices");
+        far2 = far2.max(vertex_lanes(g * VL, p, x, &mut o));
+    }
+    for (k, &p) in ps.iter().enumerate().skip(split) {
+        far2 = far2.max(vertex_one(k, p, x, &mut o));
     }
     match &x.normals {
         NormalSrc::None => {}
         NormalSrc::Model(ns, nmat) => {
             let ns = ns.get(first..).unwrap_or_default();
-            for (&n, o) in ns.iter().zip(o.vn) {
-                let v = (nmat * v3(n)).normalize();
-                *o = [v.x, v.y, v.z];
+            let n = ns.len().min(o.vn.len());
+            let split = n - n % VL;
+            for (ns, vn) in ns[..split]
+                .chunks_exact(VL)
+                .zip(o.vn[..split].chunks_exact_mut(VL))
+            {
+                let ns: &[[f32; 3]; VL] = ns.try_into().expect("a group of VL normals");
+                let vn: &mut [[f32; 3]; VL] = vn.try_into().expect("a group of VL normals");
+                *vn = normal_lanes(nmat, ns);
+            }
+            for (&n, o) in ns[split..n].iter().zip(&mut o.vn[split..n]) {
+                *o = normal_one(nmat, n);
             }
         }
         NormalSrc::Position(world, rot) => {
@@ -205,6 +238,165 @@ fn vertex_block(first: usize, ps: &[[f32; 3]], x: &VertXf, o: VertOut) -> f32 {
         }
     }
     far2
+}
+
+/// Vertices side by side in the per-vertex loop (eight f32: one AVX
+/// register).
+const VL: usize = 8;
+
+/// The work of [`vertices`] for vertex `k` of a block at `p`, written into
+/// `o`; returns |e − centre|².
+#[inline(always)]
+fn vertex_one(k: usize, p: [f32; 3], x: &VertXf, o: &mut VertOut) -> f32 {
+    let (w, h) = x.size;
+    let v = mul4(&x.e32, p);
+    let e = [v[0], v[1], v[2]];
+    let far2 = (v3(e) - x.centre).norm_squared();
+    let clip = mul4(&x.c32, p);
+    let code = if x.inside {
+        0
+    } else {
+        crate::clip::outcode_clip_space(&Vector4::from(clip))
+    };
+    o.ec[k] = EyeCode {
+        e,
+        code: code as u32,
+    };
+    (o.ss[k], o.sn[k]) = if code == 0 {
+        let s = to_screen(&clip, x.win, w, h);
+        (s, snap(&s))
+    } else {
+        (ScreenVert::default(), [0; 2])
+    };
+    far2
+}
+
+/// m·(p, 1) for [`VL`] points side by side, in the order of nalgebra's
+/// product ([`mul4`]): row r is ((m_r0·x + m_r1·y) + m_r2·z) + m_r3.
+#[inline(always)]
+fn mul4_lanes(m: &Matrix4<f32>, p: &[[f32; VL]; 3]) -> [[f32; VL]; 4] {
+    let mut out = [[0.0f32; VL]; 4];
+    for (r, out) in out.iter_mut().enumerate() {
+        let (a, b, c, d) = (m[(r, 0)], m[(r, 1)], m[(r, 2)], m[(r, 3)]);
+        for l in 0..VL {
+            out[l] = ((a * p[0][l] + b * p[1][l]) + c * p[2][l]) + d;
+        }
+    }
+    out
+}
+
+/// [`VL`] triples side by side: component c of triple l at [c][l].
+#[inline(always)]
+fn transpose3(t: &[[f32; 3]; VL]) -> [[f32; VL]; 3] {
+    let mut out = [[0.0f32; VL]; 3];
+    for l in 0..VL {
+        for c in 0..3 {
+            out[c][l] = t[l][c];
+        }
+    }
+    out
+}
+
+/// [`vertex_one`] for vertices k..k + [`VL`] side by side: the same
+/// operations on each (the products in [`mul4_lanes`]'s order, |e − c|²
+/// as ((dx² + dy²) + dz²), the outcode's comparisons, [`to_screen`] and
+/// [`snap`]), so every vertex gets the same bits. Returns the largest
+/// |e − centre|².
+#[inline(always)]
+fn vertex_lanes(k: usize, ps: &[[f32; 3]; VL], x: &VertXf, o: &mut VertOut) -> f32 {
+    let (w, h) = x.size;
+    let p = transpose3(ps);
+    let e = mul4_lanes(&x.e32, &p);
+    let c = mul4_lanes(&x.c32, &p);
+    let mut far2 = [0.0f32; VL];
+    for (l, f) in far2.iter_mut().enumerate() {
+        let d = [
+            e[0][l] - x.centre.x,
+            e[1][l] - x.centre.y,
+            e[2][l] - x.centre.z,
+        ];
+        *f = (d[0] * d[0] + d[1] * d[1]) + d[2] * d[2];
+    }
+    let mut code = [0u32; VL];
+    if !x.inside {
+        for (l, code) in code.iter_mut().enumerate() {
+            let (cw, nw) = (c[3][l], -c[3][l]);
+            for (axis, c) in c[..3].iter().enumerate() {
+                let v = c[l];
+                *code |= (u32::from(v < nw) << (2 * axis)) | (u32::from(v > cw) << (2 * axis + 1));
+            }
+        }
+    }
+    // [`to_screen`] and [`snap`], written out lane by lane.
+    let win = x.win;
+    let mut s = [[0.0f32; VL]; 4];
+    for l in 0..VL {
+        let inv_w = 1.0 / c[3][l];
+        let (nx, ny, nz) = (c[0][l] * inv_w, c[1][l] * inv_w, c[2][l] * inv_w);
+        let xp = win.left + (nx + 1.0) * 0.5 * win.width;
+        let yp = win.bottom + (ny + 1.0) * 0.5 * win.height;
+        let px = (xp - win.left) / win.width * w;
+        let py = (yp - win.bottom) / win.height * h;
+        (s[0][l], s[1][l], s[2][l], s[3][l]) = (px, h - py, nz, inv_w);
+    }
+    let mut sn = [[0i64; VL]; 2];
+    for (sn, s) in sn.iter_mut().zip(&s) {
+        for l in 0..VL {
+            let t = s[l] as f64 * (1i64 << raster::SUB) as f64;
+            sn[l] = (t + if t >= 0.0 { 0.5 } else { -0.5 }) as i64;
+        }
+    }
+    let (ec, ss, snp) = (
+        &mut o.ec[k..k + VL],
+        &mut o.ss[k..k + VL],
+        &mut o.sn[k..k + VL],
+    );
+    for l in 0..VL {
+        ec[l] = EyeCode {
+            e: [e[0][l], e[1][l], e[2][l]],
+            code: code[l],
+        };
+        (ss[l], snp[l]) = if code[l] == 0 {
+            let v = ScreenVert {
+                x: s[0][l],
+                y: s[1][l],
+                z: s[2][l],
+                inv_w: s[3][l],
+            };
+            (v, [sn[0][l], sn[1][l]])
+        } else {
+            (ScreenVert::default(), [0; 2])
+        };
+    }
+    far2.into_iter().fold(0.0, f32::max)
+}
+
+/// A unit eye-space normal: normalize(M⁻ᵀ·n), by nalgebra.
+#[inline(always)]
+fn normal_one(nmat: &Matrix3<f32>, n: [f32; 3]) -> [f32; 3] {
+    let v = (nmat * v3(n)).normalize();
+    [v.x, v.y, v.z]
+}
+
+/// [`normal_one`] for [`VL`] normals side by side, with nalgebra's
+/// operations in its order: v_r = (m_r0·x + m_r1·y) + m_r2·z, then
+/// v/√((v_x² + v_y²) + v_z²).
+#[inline(always)]
+fn normal_lanes(m: &Matrix3<f32>, ns: &[[f32; 3]; VL]) -> [[f32; 3]; VL] {
+    let n = transpose3(ns);
+    let mut v = [[0.0f32; VL]; 3];
+    for (r, v) in v.iter_mut().enumerate() {
+        let (a, b, c) = (m[(r, 0)], m[(r, 1)], m[(r, 2)]);
+        for l in 0..VL {
+            v[l] = (a * n[0][l] + b * n[1][l]) + c * n[2][l];
+        }
+    }
+    let mut out = [[0.0f32; 3]; VL];
+    for (l, out) in out.iter_mut().enumerate() {
+        let len = ((v[0][l] * v[0][l] + v[1][l] * v[1][l]) + v[2][l] * v[2][l]).sqrt();
+        *out = [v[0][l] / len, v[1][l] / len, v[2][l] / len];
+    }
+    out
 }
 
 pub(super) fn prepare<'a>(
@@ -537,6 +729,22 @@ fn corners_into(
 ) {
     // An open mesh shows its back: light the side that is seen.
     let flip = if back { -1.0 } else { 1.0 };
+    // Phong (the common case, taken first): no lit colour, lit per pixel.
+    if p.shading == Shading::Phong {
+        for k in 0..3 {
+            let v = idx[k];
+            let s = surface(p.obj, face, v as u32);
+            let nrm = match p.v.vnormals.get(v) {
+                Some(n) => n.map(|x| x * flip),
+                None => [0.0; 3],
+            };
+            let e = p.v.ec[v].e;
+            out[slot[k]] = [
+                0.0, 0.0, 0.0, nrm[0], nrm[1], nrm[2], e[0], e[1], e[2], s[0], s[1], s[2],
+            ];
+        }
+        return;
+    }
     // Flat: one colour, normal and position for the whole face.
     let flat = (p.shading == Shading::Flat).then(|| {
         // The polygon's normal in eye space: the triangle's own for a
@@ -602,9 +810,53 @@ fn corner_evals(p: &Prep) -> u64 {
 /// inside the view volume, whether it covers a pixel centre
 /// ([`raster::snap_box_of`]); a triangle that crosses a plane is lit,
 /// clipped and set up here (few do).
+///
+/// On a CPU with AVX2 the same code, compiled a second time with AVX2
+/// enabled, is chosen at run time; the results are the same bits.
+#[allow(clippy::too_many_arguments)]
+fn first_pass(
+    p: &Prep,
+    oi: u32,
+    first: usize,
+    tris: &[[u32; 3]],
+    faces: &[u32],
+    vs: &ViewSetup,
+    cull: bool,
+    opt: &Options,
+    buf: &mut ChunkBuf,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if avx2() {
+        // SAFETY: the CPU has AVX2 (checked just above), the one feature
+        // `first_pass_avx2` is compiled for.
+        return unsafe { first_pass_avx2(p, oi, first, tris, faces, vs, cull, opt, buf) };
+    }
+    first_pass_with(p, oi, first, tris, faces, vs, cull, opt, buf)
+}
+
+/// [`first_pass_with`] compiled for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
 #[allow(clippy::too_many_arguments)]
 #[inline(never)]
-fn first_pass(
+fn first_pass_avx2(
+    p: &Prep,
+    oi: u32,
+    first: usize,
+    tris: &[[u32; 3]],
+    faces: &[u32],
+    vs: &ViewSetup,
+    cull: bool,
+    opt: &Options,
+    buf: &mut ChunkBuf,
+) {
+    first_pass_with(p, oi, first, tris, faces, vs, cull, opt, buf)
+}
+
+/// The body of [`first_pass`].
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn first_pass_with(
     p: &Prep,
     oi: u32,
     first: usize,
@@ -722,8 +974,31 @@ struct Dest<'t> {
 /// Phong's attribute planes (`Planes::of`, for a Phong object; the default
 /// otherwise), and bins them by band (rows y0..=y1 are in bands
 /// y0/BAND..=y1/BAND), all straight into the frame's arrays.
-#[inline(never)]
+///
+/// On a CPU with AVX2 the same code, compiled a second time with AVX2
+/// enabled (wider registers for the f64 planes), is chosen at run time;
+/// the results are the same bits (no operation is fused or reordered).
 fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut ChunkBuf, d: Dest) {
+    #[cfg(target_arch = "x86_64")]
+    if avx2() {
+        // SAFETY: the CPU has AVX2 (checked just above), the one feature
+        // `second_pass_avx2` is compiled for.
+        return unsafe { second_pass_avx2(p, oi, vs, opt, buf, d) };
+    }
+    second_pass_with(p, oi, vs, opt, buf, d)
+}
+
+/// [`second_pass_with`] compiled for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline(never)]
+fn second_pass_avx2(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut ChunkBuf, d: Dest) {
+    second_pass_with(p, oi, vs, opt, buf, d)
+}
+
+/// The body of [`second_pass`].
+#[inline(always)]
+fn second_pass_with(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut ChunkBuf, d: Dest) {
     let (w, h) = (opt.width, opt.height);
     let bands = (h as usize).div_ceil(BAND);
     buf.bins.resize_with(bands, Vec::new);
@@ -731,16 +1006,25 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
     let t = &p.obj.tris;
     let phong = p.shading == Shading::Phong;
     let mut clipped = buf.clipped.iter();
-    let mut k = 0;
-    let mut d = d;
+    // The output slots in order (no index to check per triangle), and the
+    // frame's number of the next.
+    let mut slots = d
+        .tris
+        .iter_mut()
+        .zip(d.corners.iter_mut())
+        .zip(d.planes.iter_mut());
+    let mut n = d.first;
     let mut st = Stats::default();
     for kept in &buf.kept {
         if kept.or != 0 {
             for (tri, cs) in clipped.by_ref().take(kept.out as usize) {
-                d.tris[k].clone_from(tri);
-                d.corners[k] = *cs;
-                finish(k, phong, &mut d, &mut buf.bins);
-                k += 1;
+                let Some(((t, c), pl)) = slots.next() else {
+                    break;
+                };
+                t.clone_from(tri);
+                *c = *cs;
+                finish(n, phong, (t, c, pl), &mut buf.bins);
+                n += 1;
             }
             continue;
         }
@@ -755,41 +1039,38 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
         let Some(s) = raster::snap_box_of(idx.map(|i| p.v.snapped[i]), w, h) else {
             continue;
         };
+        let Some(((tri, c), pl)) = slots.next() else {
+            break;
+        };
         let slot = if s.swap() { [0, 2, 1] } else { [0, 1, 2] };
-        corners_into(
-            p,
-            idx,
-            face,
-            kept.back,
-            vs.ortho,
-            &mut st,
-            &mut d.corners[k],
-            slot,
-        );
-        let tri = &mut d.tris[k];
-        *tri = raster::setup_snapped(idx.map(|i| p.v.screen[i]), &s);
+        corners_into(p, idx, face, kept.back, vs.ortho, &mut st, c, slot);
+        raster::setup_into(&idx.map(|i| p.v.screen[i]), &s, tri);
         tri.obj = oi;
         tri.face = face;
-        finish(k, phong, &mut d, &mut buf.bins);
-        k += 1;
+        finish(n, phong, (tri, c, pl), &mut buf.bins);
+        n += 1;
     }
     buf.stats.lighting_evals += st.lighting_evals;
 }
 
-/// Set-up triangle `k` of a chunk is in place: its Phong planes (the
-/// default for another shading) and its bins (rows y0..=y1 are in bands
-/// y0/BAND..=y1/BAND).
+/// Set-up triangle number `n` of the frame is in place with its corners:
+/// its Phong planes (the default for another shading) and its bins (rows
+/// y0..=y1 are in bands y0/BAND..=y1/BAND).
 #[inline(always)]
-fn finish(k: usize, phong: bool, d: &mut Dest, bins: &mut [Vec<u32>]) {
-    let tri = &d.tris[k];
-    d.planes[k] = if phong {
-        Planes::of(tri, &d.corners[k])
+fn finish(
+    n: u32,
+    phong: bool,
+    (tri, c, pl): (&Tri, &[Corner; 3], &mut Planes),
+    bins: &mut [Vec<u32>],
+) {
+    if phong {
+        pl.set(tri, c);
     } else {
-        Planes::default()
-    };
+        *pl = Planes::default();
+    }
     let (b0, b1) = (tri.bbox[2] as usize / BAND, tri.bbox[3] as usize / BAND);
     for bin in &mut bins[b0..=b1] {
-        bin.push(d.first + k as u32);
+        bin.push(n);
     }
 }
 
@@ -906,4 +1187,206 @@ fn face_normal_eye(p: &Prep, f: usize) -> Option<Vector3<f32>> {
     }
     let l = n.norm();
     (l > 0.0).then(|| n / l)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rng::SplitMix64;
+    use std::sync::atomic::{AtomicBool, Ordering};
+
+    /// Set: the geometry loops take their portable compilation even on a
+    /// CPU with AVX2 (either gives the same bits, so other tests running
+    /// meanwhile are not affected).
+    pub(super) static PORTABLE: AtomicBool = AtomicBool::new(false);
+
+    fn uniform(rng: &mut SplitMix64, lo: f32, hi: f32) -> f32 {
+        lo + (hi - lo) * (rng.below(1 << 24) as f32 / (1 << 24) as f32)
+    }
+
+    /// A perspective view of points around z = −3, some of them off the
+    /// view volume and behind the eye.
+    fn view(rng: &mut SplitMix64) -> (Matrix4<f64>, Matrix4<f64>, Window<f32>) {
+        let ax = Vector3::new(
+            uniform(rng, -1.0, 1.0) as f64,
+            uniform(rng, -1.0, 1.0) as f64,
+            1.0,
+        )
+        .normalize();
+        let rot = Matrix4::from_axis_angle(
+            &nalgebra::Unit::new_normalize(ax),
+            uniform(rng, 0.0, 6.0) as f64,
+        );
+        let eye = Matrix4::new_translation(&Vector3::new(0.1, -0.2, -3.0)) * rot;
+        let win = crate::window::window(&45.0, &1.25, &0.1, "near", &mut NoTrace).unwrap();
+        let clip = crate::projection::perspective_matrix(&win, &0.1, &100.0);
+        (eye, clip, super::super::win32(&win))
+    }
+
+    #[test]
+    fn vertices_side_by_side_match_one_at_a_time() {
+        // Every output of the eight-wide loop against the one-vertex code
+        // (nalgebra's products, `to_screen`, `snap`), bit for bit.
+        let mut rng = SplitMix64::new(5);
+        for round in 0..40 {
+            let (eye, clip, win) = view(&mut rng);
+            let n = 8 * 12 + round % 8;
+            let spread = if round % 2 == 0 { 1.5 } else { 6.0 };
+            let ps: Vec<[f32; 3]> = (0..n)
+                .map(|_| [(); 3].map(|_| uniform(&mut rng, -spread, spread)))
+                .collect();
+            let ns: Vec<[f32; 3]> = ps
+                .iter()
+                .map(|p| {
+                    let v = v3(*p).normalize();
+                    [v.x, v.y, v.z]
+                })
+                .collect();
+            let nmat: Matrix3<f32> = eye.fixed_view::<3, 3>(0, 0).into_owned().cast();
+            let x = VertXf {
+                e32: eye.cast(),
+                c32: (clip * eye).cast(),
+                centre: Vector3::new(0.3, -0.1, -2.9),
+                inside: round % 4 == 1,
+                win: &win,
+                size: (640.0, 480.0),
+                normals: NormalSrc::Model(&ns, nmat),
+            };
+            let mut got = (
+                vec![EyeCode::default(); n],
+                vec![ScreenVert::default(); n],
+                vec![[0i64; 2]; n],
+                vec![[0.0f32; 3]; n],
+            );
+            let out = VertOut {
+                ec: &mut got.0,
+                ss: &mut got.1,
+                sn: &mut got.2,
+                vn: &mut got.3,
+            };
+            let far = vertex_block_with(0, &ps, &x, out);
+            let mut want = got.clone();
+            let mut o = VertOut {
+                ec: &mut want.0,
+                ss: &mut want.1,
+                sn: &mut want.2,
+                vn: &mut want.3,
+            };
+            let mut far_want = 0.0f32;
+            for (k, &p) in ps.iter().enumerate() {
+                far_want = far_want.max(vertex_one(k, p, &x, &mut o));
+                o.vn[k] = normal_one(&nmat, ns[k]);
+            }
+            assert_eq!(far.to_bits(), far_want.to_bits(), "round {round}");
+            let bits = |v: &[f32]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            let mut codes = 0;
+            for k in 0..n {
+                let (g, w) = (got.0[k], want.0[k]);
+                assert_eq!((bits(&g.e), g.code), (bits(&w.e), w.code), "{round}/{k}");
+                let (g, w) = (got.1[k], want.1[k]);
+                let sv = |s: ScreenVert| bits(&[s.x, s.y, s.z, s.inv_w]);
+                assert_eq!(sv(g), sv(w), "round {round}, vertex {k}");
+                assert_eq!(got.2[k], want.2[k], "round {round}, vertex {k}");
+                assert_eq!(bits(&got.3[k]), bits(&want.3[k]), "{round}/{k}");
+                codes += usize::from(want.0[k].code != 0);
+            }
+            // Both kinds of vertex were met (inside and off the volume).
+            if !x.inside && spread > 2.0 {
+                assert!(codes > 0 && codes < n, "round {round}: {codes} of {n}");
+            }
+        }
+    }
+
+    #[test]
+    fn phong_corners_are_the_normal_position_and_colour() {
+        // Phong's corners (the first branch of `corners_into`) against
+        // their definition: no lit colour, the eye-space vertex normal
+        // (flipped on a back face), the eye position, the surface colour.
+        let text = include_str!("../../tests/common/mixed.toml");
+        let s = Scene::parse(text, "mixed.toml", std::path::Path::new(".")).unwrap();
+        let opt = Options::of(&s);
+        let vs = super::super::view_setup(&s, opt.width, opt.height).unwrap();
+        let mut checked = 0;
+        for obj in &s.objects {
+            let (mut stats, mut bufs) = (Stats::default(), VertBufs::default());
+            let Some(p) = prepare(obj, &vs, &s.lights, &opt, &mut stats, &mut bufs) else {
+                continue;
+            };
+            assert_eq!(p.shading, Shading::Phong);
+            for (t, &face) in obj.tris.tris.iter().zip(&obj.tris.face) {
+                let idx = t.map(|i| i as usize);
+                for back in [false, true] {
+                    let got = corners(&p, idx, face, back, vs.ortho, &mut stats);
+                    let flip = if back { -1.0 } else { 1.0 };
+                    for (k, &v) in idx.iter().enumerate() {
+                        let (n, e) = (p.v.vnormals[v], p.v.ec[v].e);
+                        let c = surface(obj, face, v as u32);
+                        let want = [
+                            0.0,
+                            0.0,
+                            0.0,
+                            n[0] * flip,
+                            n[1] * flip,
+                            n[2] * flip,
+                            e[0],
+                            e[1],
+                            e[2],
+                            c[0],
+                            c[1],
+                            c[2],
+                        ];
+                        assert_eq!(got[k].map(f32::to_bits), want.map(f32::to_bits));
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert!(checked > 100, "{checked}");
+    }
+
+    /// Renders the scene file `name` (under problems/render) with the
+    /// geometry loops at their AVX2 or portable compilation.
+    fn render_with(name: &str, portable: bool) -> crate::render::Frame {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("problems/render");
+        let s = Scene::read(&dir.join(name)).unwrap();
+        PORTABLE.store(portable, Ordering::Relaxed);
+        let f = crate::render::render(&s, &crate::render::Options::of(&s));
+        PORTABLE.store(false, Ordering::Relaxed);
+        f.unwrap()
+    }
+
+    #[test]
+    fn the_geometry_stage_gives_the_same_bits_at_either_compilation() {
+        // On an AVX2 machine the portable loops run nowhere else; elsewhere
+        // this compares a path with itself. Flat, Gouraud and Phong scenes,
+        // clipped triangles among them.
+        for name in [
+            "cone-flat.toml",
+            "landscape-gouraud.toml",
+            "spheres-flat-gouraud.toml",
+            "sphere-3colors-20.toml",
+            "camera-triangle-scene.toml",
+        ] {
+            let (a, b) = (render_with(name, false), render_with(name, true));
+            assert!(a.stats.drawn > 0, "{name}");
+            assert_eq!(a.tris, b.tris, "{name}");
+            assert_eq!(
+                a.corners
+                    .concat()
+                    .concat()
+                    .iter()
+                    .map(|x| x.to_bits())
+                    .collect::<Vec<_>>(),
+                b.corners
+                    .concat()
+                    .concat()
+                    .iter()
+                    .map(|x| x.to_bits())
+                    .collect::<Vec<_>>(),
+                "{name}"
+            );
+            assert_eq!(a.scratch.planes, b.scratch.planes, "{name}");
+            assert_eq!((&a.rgb, &a.ids), (&b.rgb, &b.ids), "{name}");
+        }
+    }
 }

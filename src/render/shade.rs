@@ -106,12 +106,20 @@ impl Planes {
     /// The planes of triangle `t` with corners `c` (from its screen
     /// barycentric planes λ1, λ2 and its 1/w at the vertices).
     pub fn of(t: &Tri, c: &[Corner; 3]) -> Planes {
+        let mut p = Planes::default();
+        p.set(t, c);
+        p
+    }
+
+    /// Makes `self` [`Planes::of`] `t` and `c`, in place (the geometry
+    /// stage writes the frame's array without a copy): lane k of vertex v
+    /// is q_v = a_k/w_v in f64 (a = 1 for lane 0), and with d1 = q1 − q0,
+    /// d2 = q2 − q0: c0 = q0 + λ1₀·d1 + λ2₀·d2, cx = λ1ₓ·d1 + λ2ₓ·d2,
+    /// cy = λ1ᵧ·d1 + λ2ᵧ·d2, each rounded to f32.
+    #[inline(always)]
+    pub fn set(&mut self, t: &Tri, c: &[Corner; 3]) {
         let iw = t.inv_w.map(f64::from);
         let (l1, l2) = (t.l1.map(f64::from), t.l2.map(f64::from));
-        let mut p = Planes {
-            origin: [t.bbox[0] as f32, t.bbox[2] as f32],
-            ..Planes::default()
-        };
         // Lane k of vertex v: ak/wk (a = 1 for lane 0), all lanes at once.
         let at = |v: usize| -> [f64; ATTRS] {
             let mut a = [iw[v]; ATTRS];
@@ -124,18 +132,21 @@ impl Planes {
         for k in 0..ATTRS {
             let (d1, d2) = (q1[k] - q0[k], q2[k] - q0[k]);
             // q = q0·λ0 + q1·λ1 + q2·λ2 with λ0 = 1 − λ1 − λ2.
-            p.c0[k] = (q0[k] + l1[0] * d1 + l2[0] * d2) as f32;
-            p.cx[k] = (l1[1] * d1 + l2[1] * d2) as f32;
-            p.cy[k] = (l1[2] * d1 + l2[2] * d2) as f32;
+            self.c0[k] = (q0[k] + l1[0] * d1 + l2[0] * d2) as f32;
+            self.cx[k] = (l1[1] * d1 + l2[1] * d2) as f32;
+            self.cy[k] = (l1[2] * d1 + l2[2] * d2) as f32;
         }
+        for k in ATTRS..12 {
+            (self.c0[k], self.cx[k], self.cy[k]) = (0.0, 0.0, 0.0);
+        }
+        self.origin = [t.bbox[0] as f32, t.bbox[2] as f32];
         let rgb = |v: usize| [c[v][9], c[v][10], c[v][11]];
-        if rgb(0) == rgb(1) && rgb(1) == rgb(2) {
-            p.solid = true;
+        self.solid = rgb(0) == rgb(1) && rgb(1) == rgb(2);
+        if self.solid {
             for (k, c) in (7..ATTRS).zip(rgb(0)) {
-                (p.c0[k], p.cx[k], p.cy[k]) = (c, 0.0, 0.0);
+                (self.c0[k], self.cx[k], self.cy[k]) = (c, 0.0, 0.0);
             }
         }
-        p
     }
 
     /// The planes along row j: r = c0 + cy·dj, so that a pixel's value is
