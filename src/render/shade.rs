@@ -548,17 +548,13 @@ impl Batch {
         // clamp would change nothing: x·255 + 0.5 is what it gives.
         let byte = |x: W| x * W::from_i64(255) + W::from_f64(0.5);
         let px = W::rgb_bytes(byte(r), byte(g), byte(b));
-        let n = self.len;
-        let first = self.col[0] as usize;
-        if self.col[n - 1] as usize == first + n - 1 {
-            // Side by side (the usual case): one copy into the row.
-            if n == 8 {
-                // A full batch: a copy of known size, done in registers.
-                out[3 * first..3 * first + 24].copy_from_slice(&px);
-            } else {
-                out[3 * first..3 * (first + n)].copy_from_slice(&px[..3 * n]);
-            }
+        let (n, first) = (self.len, self.col[0] as usize);
+        if n == 8 && self.col[7] as usize == first + 7 {
+            // Eight side by side (the usual case): one copy of 24 bytes.
+            out[3 * first..3 * first + 24].copy_from_slice(&px);
         } else {
+            // Pixel by pixel (a copy of a length known only at run time
+            // would be a call).
             for (k, &i) in self.col[..n].iter().enumerate() {
                 let i = 3 * i as usize;
                 out[i..i + 3].copy_from_slice(&px[3 * k..3 * k + 3]);
