@@ -98,7 +98,7 @@ pub struct Stats {
     /// Objects drawn without specular work (ks = 0 or specular off).
     pub specular_skipped: u64,
     /// Time: transforms, culling, clipping, setup, per-face/vertex lighting,
-    /// Phong's attribute planes.
+    /// Phong's attribute planes and the index of its objects' triangles.
     pub geometry: Duration,
     /// Time: gathering the triangles of each band (made per chunk in the
     /// geometry stage) in submission order.
@@ -338,6 +338,8 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
     let mut count = 0;
     // Per object: the material and the lights that reach it.
     let mut looks = Vec::new();
+    // Per object: the numbers of its set-up triangles, lo..hi.
+    let mut ranges = Vec::new();
     for (oi, obj) in scene.objects.iter().enumerate() {
         let Some(p) = prepare(obj, &vs, &scene.lights, opt, &mut stats, &mut scratch.verts) else {
             looks.push(Look {
@@ -346,6 +348,7 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
                 shading: opt.shading,
                 one_colour: false,
             });
+            ranges.push([count as u32; 2]);
             continue;
         };
         let (n, s) = triangles(
@@ -358,6 +361,7 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
             &mut out,
             &mut scratch.chunks,
         );
+        ranges.push([count as u32, (count + n) as u32]);
         count += n;
         stats.add(&s);
         stats.binning += s.binning;
@@ -374,9 +378,9 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
     bins.resize_with((opt.height as usize).div_ceil(BAND), Vec::new);
     scratch.planes = planes;
     let planes = &scratch.planes;
+    let phong = shade::PhongIndex::new(count, &ranges, &looks);
     stats.geometry = t0.elapsed().saturating_sub(stats.binning);
 
-    let phong = shade::PhongIndex::of(&tris, &looks);
     let band_in = shade::BandInput {
         tris: &tris,
         corners: &corners,

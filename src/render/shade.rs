@@ -259,31 +259,24 @@ pub struct PhongIndex {
 }
 
 impl PhongIndex {
-    /// The index of the frame's triangles `tris` (numbered object by
-    /// object) and the objects' looks.
-    pub fn of(tris: &[Tri], looks: &[Look]) -> PhongIndex {
-        let phong = |o: u32| looks[o as usize].shading == Shading::Phong;
-        let obj = tris
+    /// The index of a frame's `n` triangles, numbered object by object:
+    /// object o's are `ranges[o]` = [lo, hi) (hi = lo when it has none),
+    /// shaded as `looks[o]` says.
+    pub fn new(n: usize, ranges: &[[u32; 2]], looks: &[Look]) -> PhongIndex {
+        let range: Vec<[u32; 2]> = ranges
             .iter()
-            .map(|t| if phong(t.obj) { t.obj } else { NONE })
-            .chain([NONE])
+            .zip(looks)
+            .map(|(&r, l)| {
+                if l.shading == Shading::Phong {
+                    r
+                } else {
+                    [0, 0]
+                }
+            })
             .collect();
-        let mut range = vec![[0u32; 2]; looks.len()];
-        for (k, t) in tris.iter().enumerate() {
-            let r = &mut range[t.obj as usize];
-            if r[1] == 0 {
-                r[0] = k as u32;
-            }
-            debug_assert!(
-                r[1] == 0 || r[1] == k as u32,
-                "triangles numbered object by object"
-            );
-            r[1] = k as u32 + 1;
-        }
-        for (o, r) in range.iter_mut().enumerate() {
-            if !phong(o as u32) {
-                *r = [0, 0];
-            }
+        let mut obj = vec![NONE; n + 1];
+        for (o, &[lo, hi]) in range.iter().enumerate() {
+            obj[lo as usize..hi as usize].fill(o as u32);
         }
         PhongIndex { obj, range }
     }
@@ -675,6 +668,21 @@ mod tests {
     /// tests/render.rs).
     const MIXED: &str = include_str!("../../tests/common/mixed.toml");
 
+    /// The Phong index of a rendered frame, its ranges found from the
+    /// triangles' own objects (checking that they come object by object).
+    fn index_of(f: &crate::render::Frame) -> PhongIndex {
+        let mut ranges = vec![[0u32; 2]; f.looks.len()];
+        for (k, t) in f.tris.iter().enumerate() {
+            let r = &mut ranges[t.obj as usize];
+            if r[1] == 0 {
+                r[0] = k as u32;
+            }
+            assert!(r[1] == 0 || r[1] == k as u32, "triangles object by object");
+            r[1] = k as u32 + 1;
+        }
+        PhongIndex::new(f.tris.len(), &ranges, &f.looks)
+    }
+
     /// Eight ids are one Phong object's exactly when each is in its range
     /// of numbers: the mixed scene's index agrees with each triangle's own
     /// object, and runs across objects, background or non-Phong triangles
@@ -683,7 +691,7 @@ mod tests {
     fn eight_ids_are_one_objects_when_all_are_in_its_range() {
         let s = Scene::parse(MIXED, "mixed.toml", std::path::Path::new(".")).unwrap();
         let f = crate::render::render(&s, &crate::render::Options::of(&s)).unwrap();
-        let ix = PhongIndex::of(&f.tris, &f.looks);
+        let ix = index_of(&f);
         let n = f.tris.len() as u32;
         let obj = |t: u32| f.tris[t as usize].obj as usize;
         // Windows of eight consecutive numbers, and of numbers far apart.
@@ -717,7 +725,7 @@ mod tests {
             corners: &f.corners,
             planes: &f.scratch.planes,
             looks: &f.looks,
-            phong: &PhongIndex::of(&f.tris, &f.looks),
+            phong: &index_of(&f),
             ortho: f.ortho,
             bg: to_u8(s.background),
             width: f.width as usize,
