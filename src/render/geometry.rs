@@ -667,7 +667,7 @@ fn to_screen(c: &[f32; 4], win: &Window<f32>, w: f32, h: f32) -> ScreenVert {
 /// when it is rejected (all three vertices outside one plane) or culled (a
 /// back face of a closed mesh), counted in `st`; else the planes it crosses
 /// and whether it is a back face (of an open mesh).
-#[inline]
+#[inline(always)]
 fn test(
     p: &Prep,
     idx: [usize; 3],
