@@ -26,6 +26,7 @@ use crate::window::Window;
 use nalgebra::{Matrix4, Vector3};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 mod geometry;
@@ -139,8 +140,6 @@ pub struct Frame {
     pub rgb: Vec<u8>,
     /// The visible triangle per pixel ([`NONE`] for background).
     pub ids: Vec<u32>,
-    /// Depth z/w per pixel.
-    pub depth: Vec<f32>,
     /// The set-up triangles.
     pub tris: Vec<Tri>,
     /// Their corners.
@@ -165,6 +164,36 @@ struct Scratch {
     chunks: Vec<geometry::ChunkBuf>,
     /// The geometry stage's per-vertex arrays.
     verts: geometry::VertBufs,
+    /// Per worker thread, the z-buffer of the band it is drawing.
+    depth: DepthBufs,
+}
+
+/// One band's z-buffer per worker thread of the pool (entry k for thread
+/// k), reused band after band so it stays in the thread's cache; no
+/// frame-sized depth buffer is written. A clone starts empty.
+#[derive(Debug, Default)]
+struct DepthBufs(Vec<Mutex<Vec<f32>>>);
+
+impl Clone for DepthBufs {
+    fn clone(&self) -> DepthBufs {
+        DepthBufs::default()
+    }
+}
+
+impl DepthBufs {
+    /// Runs `f` on a z-buffer of `n` entries (contents unspecified): the
+    /// current worker thread's own, or a fresh one when the thread has no
+    /// entry (not a worker, or of a larger pool) or its entry is in use.
+    fn with<R>(&self, n: usize, f: impl FnOnce(&mut [f32]) -> R) -> R {
+        let own = rayon::current_thread_index().and_then(|k| self.0.get(k));
+        match own.and_then(|m| m.try_lock().ok()) {
+            Some(mut dz) => {
+                dz.resize(n, 0.0);
+                f(&mut dz[..n])
+            }
+            None => f(&mut vec![0.0; n]),
+        }
+    }
 }
 
 /// How one object is shaded: its material, the lights that reach it and
@@ -313,12 +342,11 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
     let t0 = Instant::now();
     let vs = view_setup(scene, opt.width, opt.height)?;
     let n = (opt.width * opt.height) as usize;
-    let (mut tris, mut corners, mut depth, mut ids, mut rgb, mut scratch) = match prev {
-        Some(f) if f.rgb.len() == 3 * n => (f.tris, f.corners, f.depth, f.ids, f.rgb, f.scratch),
+    let (mut tris, mut corners, mut ids, mut rgb, mut scratch) = match prev {
+        Some(f) if f.rgb.len() == 3 * n => (f.tris, f.corners, f.ids, f.rgb, f.scratch),
         _ => (
             Vec::new(),
             Vec::new(),
-            vec![0.0f32; n],
             vec![0u32; n],
             vec![0u8; 3 * n],
             Scratch::default(),
@@ -394,17 +422,21 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
     let progress = Progress::new(opt.progress, bins.len() as u64);
     let t2 = Instant::now();
     let w = opt.width as usize;
+    let depth = &mut scratch.depth.0;
+    depth.resize_with(rayon::current_num_threads(), Mutex::default);
+    let depth = &scratch.depth;
     // One pass over bands in parallel: the band's visibility (nearest
     // triangle per pixel), then its shading while the band is in cache.
     let (shaded, evals, raster_t, shade_t) = rgb
         .par_chunks_mut(3 * w * BAND)
-        .zip(depth.par_chunks_mut(w * BAND))
         .zip(ids.par_chunks_mut(w * BAND))
         .zip(bins.par_iter())
         .enumerate()
-        .map(|(band, (((out, dz), id), bin))| {
+        .map(|(band, ((out, id), bin))| {
             let t = Instant::now();
-            raster::visibility_band(&tris, bin, (band * BAND) as u32, w, dz, id);
+            depth.with(id.len(), |dz| {
+                raster::visibility_band(&tris, bin, (band * BAND) as u32, w, dz, id)
+            });
             let raster_t = t.elapsed();
             let t = Instant::now();
             let (count, evals) = shade::shade_band(&band_in, (band * BAND) as u32, out, id);
@@ -426,7 +458,6 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
         height: opt.height,
         rgb,
         ids,
-        depth,
         tris,
         corners,
         looks,
@@ -434,6 +465,21 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
         stats,
         scratch,
     })
+}
+
+impl Frame {
+    /// The depth z/w per pixel that the z-buffer held at the end of the
+    /// frame (rows from the top): the visible triangle's [`Tri::depth`],
+    /// ∞ for background. Rebuilt from `ids` on request: the renderer keeps
+    /// a z-buffer only for the band being drawn.
+    pub fn depth(&self) -> Vec<f32> {
+        let w = self.width as usize;
+        let at = |(k, &id): (usize, &u32)| match self.tris.get(id as usize) {
+            Some(t) => t.depth((k % w) as u32, (k / w) as u32),
+            None => f32::INFINITY,
+        };
+        self.ids.iter().enumerate().map(at).collect()
+    }
 }
 
 /// Writes the frame as an 8-bit RGB PNG.
