@@ -495,3 +495,36 @@ pub fn write_png(frame: &Frame, path: &std::path::Path) -> Result<()> {
         .map_err(|e| err(e.to_string()))?;
     wr.finish().map_err(|e| err(e.to_string()))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_band_gets_its_threads_z_buffer_or_a_fresh_one() {
+        // A worker thread draws into its own entry (kept for the next
+        // band); a thread without one, or whose entry is in use, gets a
+        // fresh buffer. Either way `n` entries.
+        let bufs = DepthBufs(vec![Mutex::default()]);
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .unwrap();
+        pool.install(|| bufs.with(7, |dz| dz.fill(1.0)));
+        assert_eq!(*bufs.0[0].lock().unwrap(), vec![1.0; 7]);
+        // Not a worker of a pool: a fresh buffer, the entry untouched.
+        let fresh = |dz: &mut [f32]| {
+            dz.fill(3.0);
+            dz.len()
+        };
+        assert_eq!(bufs.with(9, fresh), 9);
+        // The entry in use: a fresh one.
+        let held = bufs.0[0].lock().unwrap();
+        assert_eq!(pool.install(|| bufs.with(9, fresh)), 9);
+        assert_eq!(*held, vec![1.0; 7]);
+        drop(held);
+        // Reused, and grown to the size asked for.
+        pool.install(|| bufs.with(9, |dz| dz.fill(2.0)));
+        assert_eq!(*bufs.0[0].lock().unwrap(), vec![2.0; 9]);
+    }
+}
