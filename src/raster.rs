@@ -332,16 +332,26 @@ fn raster_one(t: &Tri, id: u32, r0: u32, r1: u32, w: usize, dz: &mut [f32], ids:
     }
     let blocks = ((x1 - x0 + 1) as usize).div_ceil(LANES);
     let reach = x0 as usize + blocks * LANES;
-    match Narrow::of(t, ya, yb, reach - 1) {
-        Some(n) if reach <= w => n.raster(t, id, (ya, yb), r0, w, dz, ids),
-        _ => raster_wide(t, id, ya..=yb, r0, w, dz, ids),
+    let narrow = match Narrow::small(t, ya, blocks) {
+        _ if reach > w => None,
+        Some(n) => Some(n),
+        None => Narrow::of_large(t, ya, yb, reach - 1),
+    };
+    match narrow {
+        Some(n) => n.raster(t, id, (ya, yb), r0, w, dz, ids),
+        None => raster_wide(t, id, ya..=yb, r0, w, dz, ids),
     }
 }
+
+/// Edges shorter than this in x and in y (1/256 pixel: 64 pixels) make a
+/// triangle [`Narrow::small`].
+const SMALL: u64 = 1 << 14;
 
 /// The edge functions of a triangle whose every value over the pixels it
 /// is drawn on (its rows, columns x0 up to whole blocks) fits in an i32,
 /// kept in wrapping 32-bit arithmetic: a wrapped sum or product is exact
 /// modulo 2³², so it is the true value whenever that fits.
+#[derive(Debug, PartialEq)]
 struct Narrow {
     /// E_k at the centre of pixel (x0, ya).
     e0: [i32; 3],
@@ -379,6 +389,53 @@ impl Narrow {
             row: t.b.map(|b| (b * ONE) as i32),
             col: t.a.map(|a| (a * ONE) as i32),
             blocks: (di as usize + 1) / LANES,
+        })
+    }
+
+    /// [`Narrow::of`] kept out of line: the rare triangle that is not
+    /// [`Narrow::small`].
+    #[cold]
+    #[inline(never)]
+    fn of_large(t: &Tri, ya: u32, yb: u32, xe: usize) -> Option<Narrow> {
+        Narrow::of(t, ya, yb, xe)
+    }
+
+    /// [`Narrow::of`] without its range test, for a triangle drawn from
+    /// row ya in `blocks` blocks whose edges span less than 2¹⁴ (64 pixels)
+    /// in x and in y: every |a_k|, |b_k| < 2¹⁴; `None` for any other.
+    ///
+    /// Why every E_k fits in an i32: the triangle's vertices span X < 2¹⁴
+    /// in x and Y < 2¹⁴ in y, and the box's first and last pixel centres
+    /// lie within that span (the box holds only centres between the
+    /// vertices' extremes), so a drawn centre P (columns up to 7 past the
+    /// box, rows inside it) is within X + 7·256 in x and Y in y of any
+    /// vertex V. With V on edge k, E_k(P) = a_k·(Px − Vx) + b_k·(Py − Vy)
+    /// (− 1 for the fill rule), |a_k| ≤ Y and |b_k| ≤ X, so |E_k| ≤
+    /// Y·(X + 1792) + X·Y + 1 < 2²⁸ + 2²⁵ + 2²⁸ + 1 < 2³¹. Then E_k(x0, ya)
+    /// computed in wrapping i32 (exact modulo 2³²) is the true value.
+    #[inline(always)]
+    fn small(t: &Tri, ya: u32, blocks: usize) -> Option<Narrow> {
+        let span = (0..3).fold(0, |m, k| m | t.a[k].unsigned_abs() | t.b[k].unsigned_abs());
+        if span >= SMALL {
+            return None;
+        }
+        // Pixel centres in 1/256 pixel: below 2²² (the image is at most
+        // 8192 pixels a side).
+        let (px, py) = (
+            (t.bbox[0] as i32) * ONE as i32 + HALF as i32,
+            (ya as i32) * ONE as i32 + HALF as i32,
+        );
+        let e0 = std::array::from_fn(|k| {
+            let (a, b, c) = (t.a[k] as i32, t.b[k] as i32, t.c[k] as i32);
+            a.wrapping_mul(px)
+                .wrapping_add(b.wrapping_mul(py))
+                .wrapping_add(c)
+        });
+        Some(Narrow {
+            e0,
+            row: t.b.map(|b| (b * ONE) as i32),
+            col: t.a.map(|a| (a * ONE) as i32),
+            blocks,
         })
     }
 
@@ -431,20 +488,25 @@ impl Narrow {
         // E_k at the columns of the row's first block, starting at row ya.
         let mut er = [[0i32; LANES]; 3];
         for (er, (e0, s)) in er.iter_mut().zip(self.e0.into_iter().zip(self.col)) {
-            for (e, c) in er.iter_mut().zip(COLUMN) {
+            // (`black_box`: multiplied by an opaque vector, the lanes take
+            // one vector multiply; by the known constants, LLVM emits a
+            // longer mix of shifts, multiplies and permutes.)
+            for (e, c) in er.iter_mut().zip(std::hint::black_box(COLUMN)) {
                 *e = e0.wrapping_add(s.wrapping_mul(c));
             }
         }
         let block = self.col.map(|s| s.wrapping_mul(LANES as i32));
-        // Rows ya..=yb from column x0: one row is w pixels on.
+        // Rows ya..=yb from column x0: one row is w pixels on, row r of
+        // the span starts at r·w and needs n pixels.
         let start = (ya - r0) as usize * w + x0 as usize;
         let end = (yb - r0) as usize * w + x0 as usize + n;
         let (dspan, ispan) = (&mut dz[start..end], &mut ids[start..end]);
         // j − y0 counted in f32: exact (image sizes are far below 2²⁴).
         let mut dj = (ya - y0) as f32;
-        for (drow, irow) in dspan.chunks_mut(w).zip(ispan.chunks_mut(w)) {
+        for r in 0..(yb - ya + 1) as usize {
             let zr = z0 + zy * dj;
-            let (drow, irow) = (&mut drow[..n], &mut irow[..n]);
+            let o = r * w;
+            let (drow, irow) = (&mut dspan[o..o + n], &mut ispan[o..o + n]);
             let mut e = er;
             for (b, (d, ib)) in drow
                 .chunks_exact_mut(LANES)
@@ -682,14 +744,15 @@ mod tests {
         let (w, h) = (301u32, 70u32);
         let tris = random_tris(7, 600, w, h);
         // Triangles drawn by the general path, and by the blocked one with
-        // 1, 2 and more blocks per row.
-        let mut kinds = [0usize; 4];
+        // 1, 2 and more blocks per row; of the blocked, how many small.
+        let mut kinds = [0usize; 5];
         for (n, t) in tris.iter().enumerate() {
             let blocks = (t.bbox[1] - t.bbox[0]) as usize / LANES + 1;
             let reach = t.bbox[0] as usize + blocks * LANES;
             let narrow =
                 reach <= w as usize && Narrow::of(t, t.bbox[2], t.bbox[3], reach - 1).is_some();
             kinds[if narrow { blocks.min(3) } else { 0 }] += 1;
+            kinds[4] += usize::from(narrow && Narrow::small(t, t.bbox[2], blocks).is_some());
             for pass in PASSES {
                 for r0 in (0..h).step_by(BAND) {
                     let rows = (BAND as u32).min(h - r0);
@@ -720,6 +783,28 @@ mod tests {
             }
         }
         assert!(kinds.iter().all(|&k| k > 20), "{kinds:?}");
+        assert!(kinds[1] + kinds[2] + kinds[3] - kinds[4] > 20, "{kinds:?}");
+    }
+
+    #[test]
+    fn a_small_triangle_gets_the_checked_edge_functions() {
+        // `Narrow::small` skips the range test of `Narrow::of` on the
+        // strength of the triangle's size: wherever it accepts a triangle,
+        // from any of its rows, `of` must accept it too and give the same
+        // edge values and steps.
+        let (w, h) = (301u32, 70u32);
+        let mut small = 0;
+        for t in random_tris(5, 3000, w, h) {
+            let blocks = (t.bbox[1] - t.bbox[0]) as usize / LANES + 1;
+            let reach = t.bbox[0] as usize + blocks * LANES;
+            for ya in t.bbox[2]..=t.bbox[3] {
+                if let Some(n) = Narrow::small(&t, ya, blocks) {
+                    assert_eq!(Some(n), Narrow::of(&t, ya, t.bbox[3], reach - 1), "{t:?}");
+                    small += 1;
+                }
+            }
+        }
+        assert!(small > 1000, "{small}");
     }
 
     #[test]
