@@ -861,9 +861,10 @@ mod tests {
             let mut ch: [[f32; 8]; 3] =
                 std::array::from_fn(|_| std::array::from_fn(|_| u(0.0, 255.999)));
             if case % 3 == 1 {
-                // One lane of one channel out of range: −1, 256, 300, NaN, −0.5.
+                // One lane of one channel out of range: −1, 256, 300, NaN, −0.5,
+                // in each channel in turn.
                 let bad = [-1.0, 256.0, 300.0, f32::NAN, -0.5][case % 5];
-                ch[case % 3][case % 8] = bad;
+                ch[case / 3 % 3][case % 8] = bad;
             }
             let want: [u8; 24] = std::array::from_fn(|i| ch[i % 3][i / 3] as u8);
             let [r, g, b] = ch.map(F32x8::from_array);
