@@ -17,12 +17,14 @@
 //! where lanes may differ it uses [`Scalar::if_gt`], which this type
 //! evaluates per lane, running each branch only when some lane takes it.
 //!
-//! **One definition, two backends.** The type is written once, as the
-//! macro `lane_type!` over a module of lane operations. `F32x8` is it over
-//! SSE (or the array); the renderer's band pass defines a second instance
-//! over AVX (`render::shade::avx::Avx8`, one 256-bit register) for the copy
-//! of the pass it compiles for AVX2. The [`Wide`] trait is what that pass
-//! asks of either.
+//! **One definition, several backends.** The type is written once, as the
+//! macro `lane_type!` over a module of lane operations and a lane count.
+//! `F32x8` is it over SSE (or the array); the renderer's band pass defines
+//! two more instances for the copies of the pass it compiles for newer
+//! CPUs: over AVX (`render::shade::avx::Avx8`, eight lanes in one 256-bit
+//! register) for AVX2, and over AVX-512 (`render::shade::avx512::Avx16`,
+//! sixteen lanes in one 512-bit register). The [`Wide`] trait is what that
+//! pass asks of any of them.
 //!
 //! **Reading a number out** (`to_f64`, `to_real`, `shown`) gives lane 0: a
 //! batch is never reported, only turned into pixels.
@@ -330,36 +332,43 @@ pub fn interleave(r: [u8; 8], g: [u8; 8], b: [u8; 8]) -> [u8; 24] {
     std::array::from_fn(|i| [r, g, b][i % 3][i / 3])
 }
 
-/// What the renderer's Phong batches need of an eight-lane type besides
-/// [`Scalar`]: lanes in and bytes out.
+/// What the renderer's Phong batches need of a lane type besides
+/// [`Scalar`](super::Scalar): lanes in and bytes out. `LANES` (8 or 16)
+/// pixels per batch; the associated arrays have that many entries.
 pub trait Wide: super::Scalar + Copy {
+    /// One f32 per lane: `[f32; LANES]`.
+    type Array: Copy + Default + AsRef<[f32]> + AsMut<[f32]>;
+    /// One row of twelve attribute values per lane: `[[f32; 12]; LANES]`.
+    type Rows: Copy + Default + AsRef<[[f32; 12]]> + AsMut<[[f32; 12]]>;
+    /// Three bytes per lane: `[u8; 3 · LANES]`.
+    type Bytes: Copy + AsRef<[u8]>;
     /// Lane k = `a[k]`.
-    fn from_array(a: [f32; 8]) -> Self;
+    fn from_array(a: Self::Array) -> Self;
     /// The lanes as an array.
-    fn to_array(self) -> [f32; 8];
-    /// Eight pixels' 8-bit RGB, r0 g0 b0 r1 g1 b1 …: lane k of each channel
+    fn to_array(self) -> Self::Array;
+    /// The pixels' 8-bit RGB, r0 g0 b0 r1 g1 b1 …: lane k of each channel
     /// truncated to a byte (`x as u8`: toward zero, saturating; NaN gives 0).
-    fn rgb_bytes(r: Self, g: Self, b: Self) -> [u8; 24];
-    /// Column a of eight rows as lanes, a = 0…11: lane k of result a is
+    fn rgb_bytes(r: Self, g: Self, b: Self) -> Self::Bytes;
+    /// Column a of the rows as lanes, a = 0…11: lane k of result a is
     /// `q[k][a]`.
-    fn from_rows(q: &[[f32; 12]; 8]) -> [Self; 12];
-    /// Columns 0…7 of eight rows as lanes (the first eight of
+    fn from_rows(q: &Self::Rows) -> [Self; 12];
+    /// Columns 0…7 of the rows as lanes (the first eight of
     /// [`Wide::from_rows`]).
-    fn from_rows8(q: &[[f32; 12]; 8]) -> [Self; 8];
+    fn from_rows8(q: &Self::Rows) -> [Self; 8];
     /// Lane k of `self` where bit k of `bits` is set, else lane k of
     /// `other`.
     fn select_bits(self, bits: u32, other: Self) -> Self;
 }
 
-/// Defines an eight-lane f32 type `$name` (with its mask type `$mask`)
-/// over a module `$imp` of lane operations: `V`, `M`, `from_array`,
+/// Defines an f32 type `$name` of `$lanes` lanes (with its mask type
+/// `$mask`) over a module `$imp` of lane operations: `V`, `M`, `from_array`,
 /// `to_array`, `splat`, `add`, `sub`, `mul`, `div`, `sqrt`, `neg`, `abs`,
 /// `max`, `min`, `gt`, `lt`, `eq`, `select`, `to_bytes`, `rgb_bytes`, `bits`,
 /// `mask_from`, `transpose8`, `transpose_tail`, each lane by lane with the plain f32 operation. [`F32x8`]
 /// is this over SSE (or an array); the renderer defines a second one over
 /// AVX2 for the code it compiles for AVX2.
 macro_rules! lane_type {
-    ($(#[$meta:meta])* $vis:vis $name:ident, $mask:ident, $imp:ident) => {
+    ($(#[$meta:meta])* $vis:vis $name:ident, $mask:ident, $imp:ident, $lanes:literal) => {
         #[allow(unused_imports)]
         use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
         #[allow(unused_imports)]
@@ -371,7 +380,7 @@ macro_rules! lane_type {
         #[derive(Clone, Copy, Debug)]
         $vis struct $name($imp::V);
 
-        /// A mask over the eight lanes (the result of a lane-wise comparison).
+        /// A mask over the lanes (the result of a lane-wise comparison).
         #[derive(Clone, Copy, Debug)]
         $vis struct $mask($imp::M);
 
@@ -394,7 +403,7 @@ macro_rules! lane_type {
             /// Whether every lane is true.
             #[inline(always)]
             pub fn all(self) -> bool {
-                self.bits() == 0xff
+                self.bits() == u32::MAX >> (32 - $lanes)
             }
         }
 
@@ -412,12 +421,12 @@ macro_rules! lane_type {
             }
             /// The lanes from an array (lane k = `a[k]`).
             #[inline(always)]
-            pub fn from_array(a: [f32; 8]) -> $name {
+            pub fn from_array(a: [f32; $lanes]) -> $name {
                 $name($imp::from_array(a))
             }
             /// The lanes as an array.
             #[inline(always)]
-            pub fn to_array(self) -> [f32; 8] {
+            pub fn to_array(self) -> [f32; $lanes] {
                 $imp::to_array(self.0)
             }
             /// `f` applied to each lane (lane by lane, for the rare operations
@@ -548,26 +557,29 @@ macro_rules! lane_type {
         }
 
         impl $crate::num::lanes::Wide for $name {
+            type Array = [f32; $lanes];
+            type Rows = [[f32; 12]; $lanes];
+            type Bytes = [u8; 3 * $lanes];
             #[inline(always)]
-            fn from_array(a: [f32; 8]) -> $name {
+            fn from_array(a: [f32; $lanes]) -> $name {
                 $name::from_array(a)
             }
             #[inline(always)]
-            fn to_array(self) -> [f32; 8] {
+            fn to_array(self) -> [f32; $lanes] {
                 $name::to_array(self)
             }
             #[inline(always)]
-            fn rgb_bytes(r: $name, g: $name, b: $name) -> [u8; 24] {
+            fn rgb_bytes(r: $name, g: $name, b: $name) -> [u8; 3 * $lanes] {
                 $imp::rgb_bytes(r.0, g.0, b.0)
             }
             #[inline(always)]
-            fn from_rows(q: &[[f32; 12]; 8]) -> [$name; 12] {
+            fn from_rows(q: &[[f32; 12]; $lanes]) -> [$name; 12] {
                 let [a, b, c, d, e, f, g, h] = $imp::transpose8(q);
                 let [i, j, k, l] = $imp::transpose_tail(q);
                 [a, b, c, d, e, f, g, h, i, j, k, l].map($name)
             }
             #[inline(always)]
-            fn from_rows8(q: &[[f32; 12]; 8]) -> [$name; 8] {
+            fn from_rows8(q: &[[f32; 12]; $lanes]) -> [$name; 8] {
                 $imp::transpose8(q).map($name)
             }
             #[inline(always)]
@@ -585,7 +597,7 @@ macro_rules! lane_type {
 
         impl $crate::num::Scalar for $name {
             const PRECISION: Precision = Precision::F32;
-            const LANES: usize = 8;
+            const LANES: usize = $lanes;
             fn from_real(x: &Real) -> Self {
                 $name::splat(x.to_f64() as f32)
             }
@@ -681,7 +693,7 @@ macro_rules! lane_type {
                 // Each branch once, and only if some lane takes it.
                 let zero = $name::splat(0.0);
                 let a = if bits != 0 { a() } else { zero };
-                let b = if bits != 0xff { b() } else { zero };
+                let b = if bits != u32::MAX >> (32 - $lanes) { b() } else { zero };
                 a.select(gt, b)
             }
             #[inline(always)]
@@ -730,7 +742,8 @@ lane_type!(
     /// Eight f32 lanes with plain, lane-wise arithmetic.
     pub F32x8,
     Mask,
-    imp
+    imp,
+    8
 );
 
 #[cfg(test)]

@@ -604,7 +604,7 @@ fn snap(v: &ScreenVert) -> [i64; 2] {
 #[inline]
 fn plane_dist(c: &[f32; 4], bit: usize) -> f32 {
     let v = c[bit / 2];
-    if bit % 2 == 0 {
+    if bit.is_multiple_of(2) {
         c[3] + v
     } else {
         c[3] - v

@@ -15,6 +15,8 @@ use super::{Corner, Look};
 
 #[cfg(target_arch = "x86_64")]
 mod avx;
+#[cfg(target_arch = "x86_64")]
+mod avx512;
 
 /// One lighting evaluation through the calculator's `lighting::shade`, at
 /// [`Fast32`] (plain f32 arithmetic).
@@ -310,6 +312,12 @@ impl PhongIndex {
 /// same bits.
 pub fn shade_band(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
     #[cfg(target_arch = "x86_64")]
+    if has_avx512() {
+        // SAFETY: the CPU has AVX-512F and AVX2 (checked just above), the
+        // features `shade_band_avx512` is compiled for.
+        return unsafe { shade_band_avx512(inp, r0, out, id) };
+    }
+    #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") {
         // SAFETY: the CPU has AVX2 (checked just above), the one feature
         // `shade_band_avx2` is compiled for.
@@ -324,6 +332,21 @@ pub fn shade_band(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64,
 #[target_feature(enable = "avx2")]
 fn shade_band_avx2(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
     shade_band_with::<avx::Avx8>(inp, r0, out, id)
+}
+
+/// Whether the CPU has AVX-512F and AVX2, what `shade_band_avx512` needs.
+#[cfg(target_arch = "x86_64")]
+fn has_avx512() -> bool {
+    std::arch::is_x86_feature_detected!("avx512f") && std::arch::is_x86_feature_detected!("avx2")
+}
+
+/// [`shade_band_with`] at [`avx512::Avx16`] (batches of sixteen pixels),
+/// compiled for AVX-512F and AVX2: the one place `Avx16` is used (see that
+/// module on why this is sound).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx2")]
+fn shade_band_avx512(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
+    shade_band_with::<avx512::Avx16>(inp, r0, out, id)
 }
 
 /// The body of [`shade_band`], with Phong's batches at the lane type `W`.
@@ -350,7 +373,7 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
         .enumerate()
     {
         let j = r0 + r as u32;
-        let mut batch = Batch::default();
+        let mut batch = Batch::<W>::default();
         // Runs of pixels covered by the same triangle (or none).
         let mut i = 0;
         while i < w {
@@ -362,12 +385,15 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
                 .get(i..i + 8)
                 .and_then(|s| <&[u32; 8]>::try_from(s).ok());
             if let Some((ids, o)) = ids.and_then(|ids| Some((ids, inp.phong.one_object(ids)?))) {
-                if batch.len > 0 {
+                // A batch of sixteen takes two such groups of one object.
+                if batch.len % 8 != 0 || batch.len > 0 && batch.obj != o {
                     batch.flush(&mut objs[batch.obj], inp.ortho, orow);
                 }
                 batch.fill8(inp.planes, ids, i, j, !objs[o].one_colour);
                 batch.obj = o;
-                batch.flush(&mut objs[o], inp.ortho, orow);
+                if batch.len == W::LANES {
+                    batch.flush(&mut objs[o], inp.ortho, orow);
+                }
                 (count, evals) = (count + 8, evals + 8);
                 i += 8;
                 continue;
@@ -392,7 +418,7 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
                 let mut k = i;
                 while k < end {
                     k += batch.fill(&row, k as u32, end - k);
-                    if batch.len == 8 {
+                    if batch.len == W::LANES {
                         batch.flush(&mut objs[obj], inp.ortho, orow);
                     }
                 }
@@ -427,20 +453,34 @@ struct LitObj<W: Scalar> {
     one_colour: bool,
 }
 
-/// Up to eight Phong pixels of one object in one row: their attribute
-/// planes' values q (row k for pixel k; lanes 7–9 are C/w, or the colour
-/// itself for a triangle with one colour) and columns.
-#[derive(Clone, Copy, Debug, Default)]
-struct Batch {
-    q: [[f32; 12]; 8],
+/// Up to `W::LANES` (8 or 16) Phong pixels of one object in one row: their
+/// attribute planes' values q (row k for pixel k; lanes 7–9 are C/w, or
+/// the colour itself for a triangle with one colour) and columns.
+struct Batch<W: Wide> {
+    q: W::Rows,
     /// Bit k set when pixel k's colour is interpolated (q's C/w planes).
     interp: u32,
-    col: [u32; 8],
+    col: [u32; MAX_LANES],
     len: usize,
     obj: usize,
 }
 
-impl Batch {
+/// The most lanes a [`Wide`] type has.
+const MAX_LANES: usize = 16;
+
+impl<W: Wide> Default for Batch<W> {
+    fn default() -> Self {
+        Batch {
+            q: W::Rows::default(),
+            interp: 0,
+            col: [0; MAX_LANES],
+            len: 0,
+            obj: 0,
+        }
+    }
+}
+
+impl<W: Wide> Batch<W> {
     /// Puts pixels i0, i0 + 1, … of a run of `n` pixels covered by one
     /// triangle, whose planes along the row are `row`, into the free lanes:
     /// q = r + cx·di as [`Planes::at`] computes it. Returns how many pixels
@@ -451,11 +491,11 @@ impl Batch {
     /// the eight lanes to pay; [`Wide::from_rows`] turns the rows into lanes.
     #[inline(always)]
     fn fill(&mut self, row: &Row, i0: u32, n: usize) -> usize {
-        let (base, m) = (self.len, n.min(8 - self.len));
+        let (base, m) = (self.len, n.min(W::LANES - self.len));
         for k in 0..m {
             let i = i0 + k as u32;
             let di = i as f32 - row.x0;
-            let q = &mut self.q[base + k];
+            let q = &mut self.q.as_mut()[base + k];
             for ((q, r), cx) in q.iter_mut().zip(&row.r).zip(&row.cx) {
                 *q = r + cx * di;
             }
@@ -471,12 +511,15 @@ impl Batch {
         m
     }
 
-    /// Fills the (empty) batch with the eight pixels i, i + 1, … of row j,
-    /// covered by the triangles `ids`, whose planes are in `planes`: q =
-    /// (c0 + cy·dj) + cx·di as [`Planes::at`] computes it, for the colour
-    /// planes (lanes 7–11) too when `colours` (lane 7 is filled anyway).
+    /// Puts the eight pixels i, i + 1, … of row j, covered by the
+    /// triangles `ids`, whose planes are in `planes`, into the next eight
+    /// lanes (the batch holds a multiple of eight): q = (c0 + cy·dj) +
+    /// cx·di as [`Planes::at`] computes it, for the colour planes (lanes
+    /// 7–11) too when `colours` (lane 7 is filled anyway).
     #[inline(always)]
     fn fill8(&mut self, planes: &[Planes], ids: &[u32; 8], i: usize, j: u32, colours: bool) {
+        let base = self.len;
+        let rows = &mut self.q.as_mut()[base..base + 8];
         // Columns and rows are at most 8192 (`scene::check_size`): exact
         // as f32, converted from u32 as in `Planes::at`.
         let (i, j) = (i as u32, j as f32);
@@ -485,7 +528,7 @@ impl Batch {
             let dj = j - p.origin[1];
             let di = (i + k as u32) as f32 - p.origin[0];
             let plane = |a: usize| (p.c0[a] + p.cy[a] * dj) + p.cx[a] * di;
-            let (head, tail) = self.q[k].split_at_mut(8);
+            let (head, tail) = rows[k].split_at_mut(8);
             for (a, q) in head.iter_mut().enumerate() {
                 *q = plane(a);
             }
@@ -495,15 +538,18 @@ impl Batch {
                 }
             }
         }
-        self.col = std::array::from_fn(|k| i + k as u32);
+        for (k, c) in self.col[base..base + 8].iter_mut().enumerate() {
+            *c = i + k as u32;
+        }
         // Which colours are interpolated matters only with the colour planes.
-        self.interp = if colours {
+        let interp = if colours {
             let interp = |k: usize| u32::from(!planes[ids[k] as usize].solid) << k;
             (0..8).fold(0, |m, k| m | interp(k))
         } else {
             0
         };
-        self.len = 8;
+        self.interp = (self.interp & !(0xff << base)) | (interp << base);
+        self.len = base + 8;
     }
 
     /// Lights the pixels in the batch with one `lighting::shade` call at
@@ -512,7 +558,7 @@ impl Batch {
     /// `out` and empties the batch. Lanes past `len` hold earlier pixels'
     /// values: computed, not written.
     #[inline(always)]
-    fn flush<W: Wide>(&mut self, o: &mut LitObj<W>, ortho: bool, out: &mut [u8]) {
+    fn flush(&mut self, o: &mut LitObj<W>, ortho: bool, out: &mut [u8]) {
         if self.len == 0 {
             return;
         }
@@ -541,10 +587,11 @@ impl Batch {
         // clamp would change nothing: x·255 + 0.5 is what it gives.
         let byte = |x: W| x * W::from_i64(255) + W::from_f64(0.5);
         let px = W::rgb_bytes(byte(r), byte(g), byte(b));
-        let (n, first) = (self.len, self.col[0] as usize);
-        if n == 8 && self.col[7] as usize == first + 7 {
-            // Eight side by side (the usual case): one copy of 24 bytes.
-            out[3 * first..3 * first + 24].copy_from_slice(&px);
+        let px = px.as_ref();
+        let (n, first, full) = (self.len, self.col[0] as usize, W::LANES);
+        if n == full && self.col[full - 1] as usize == first + full - 1 {
+            // A full batch side by side (the usual case): one copy.
+            out[3 * first..3 * (first + full)].copy_from_slice(px);
         } else {
             // Pixel by pixel (a copy of a length known only at run time
             // would be a call).
@@ -713,9 +760,11 @@ mod tests {
     }
 
     /// The band pass at the baseline lane type (two SSE halves, or an
-    /// array) writes the same bytes as the one `render` chose (AVX2 on a
-    /// CPU that has it): on an AVX2 machine this is the only run of the
-    /// baseline band pass, and elsewhere it compares a path with itself.
+    /// array), and at AVX2's on a CPU that has it, writes the same bytes as
+    /// the one `render` chose (AVX-512's sixteen lanes on a CPU that has
+    /// them, else AVX2's eight): on such machines these are the only runs
+    /// of the other band passes, and elsewhere a path is compared with
+    /// itself.
     #[test]
     fn the_band_pass_gives_the_same_bytes_at_either_lane_type() {
         let s = Scene::parse(MIXED, "mixed.toml", std::path::Path::new(".")).unwrap();
@@ -743,13 +792,22 @@ mod tests {
             let (_, evals) = shade_band_with::<F32x8>(&inp, (b * rows) as u32, &mut got, id);
             phong += evals;
             assert_eq!(got, want, "band {b}");
+            #[cfg(target_arch = "x86_64")]
+            if std::arch::is_x86_feature_detected!("avx2") {
+                got.fill(0);
+                // SAFETY: the CPU has AVX2 (checked just above).
+                unsafe { shade_band_avx2(&inp, (b * rows) as u32, &mut got, id) };
+                assert_eq!(got, want, "band {b} at AVX2");
+            }
         }
         assert!(phong > 1500, "{phong}");
     }
 
-    /// The lighting at [`avx::Avx8`] equals the lighting at [`F32x8`] lane
-    /// for lane, to the bit (and F32x8 equals Fast32: tests/lanes.rs), over
-    /// random materials, lights and surfaces of every model.
+    /// The lighting at [`avx::Avx8`], and (on a CPU with AVX-512) at
+    /// [`avx512::Avx16`], equals the lighting at
+    /// [`F32x8`] lane for lane, to the bit (and F32x8 equals Fast32:
+    /// tests/lanes.rs), over random materials, lights and surfaces of every
+    /// model: 32 pixels, eight at a time at F32x8 and Avx8.
     #[cfg(target_arch = "x86_64")]
     #[test]
     fn avx_lanes_light_exactly_as_sse_lanes() {
@@ -798,7 +856,7 @@ mod tests {
                 lights.push(l);
             }
             let lane = |u: &mut dyn FnMut(f32, f32) -> f32, lo, hi| {
-                std::array::from_fn::<f32, 8, _>(|_| u(lo, hi))
+                std::array::from_fn::<f32, 32, _>(|_| u(lo, hi))
             };
             let n = [0; 3].map(|_| lane(&mut u, -1.0, 1.0));
             let p = [0; 3]
@@ -806,16 +864,46 @@ mod tests {
                 .map(|a| a.map(|x| x - 5.0));
             let c = [0; 3].map(|_| lane(&mut u, 0.0, 1.0));
             let ortho = case % 7 == 0;
-            let sse = lit_lanes::<F32x8>(&m, &lights, n, p, c, ortho);
-            // SAFETY: the CPU has AVX2 (checked at the top).
-            let avx = unsafe { lit_avx(&m, &lights, n, p, c, ortho) };
-            for ch in 0..3 {
-                for k in 0..8 {
-                    assert_eq!(
-                        sse[ch][k].to_bits(),
-                        avx[ch][k].to_bits(),
-                        "case {case} channel {ch} lane {k}"
-                    );
+            // Pixels k0 … k0 + LANES − 1 at the lane type W.
+            let at = |k0: usize| [&n, &p, &c].map(|v| v.each_ref().map(|ch| &ch[k0..]));
+            let mut want = [[0.0f32; 32]; 3];
+            for k0 in (0..32).step_by(8) {
+                let [n, p, c] = at(k0);
+                let sse = lit_lanes::<F32x8>(&m, &lights, n, p, c, ortho);
+                // SAFETY: the CPU has AVX2 (checked at the top).
+                let avx = unsafe { lit_avx(&m, &lights, n, p, c, ortho) };
+                for ch in 0..3 {
+                    want[ch][k0..k0 + 8].copy_from_slice(&sse[ch]);
+                    for k in 0..8 {
+                        assert_eq!(
+                            sse[ch][k].to_bits(),
+                            avx[ch][k].to_bits(),
+                            "case {case} channel {ch} lane {}",
+                            k0 + k
+                        );
+                    }
+                }
+            }
+            if !has_avx512() {
+                continue;
+            }
+            let mut wide = Vec::new();
+            for k0 in [0, 16] {
+                let [n, p, c] = at(k0);
+                // SAFETY: the CPU has AVX-512F and AVX2 (checked above).
+                wide.push((k0, unsafe { lit_avx512(&m, &lights, n, p, c, ortho) }));
+            }
+            for (k0, got) in wide {
+                for ch in 0..3 {
+                    for (k, x) in got[ch].iter().enumerate() {
+                        assert_eq!(
+                            x.to_bits(),
+                            want[ch][k0 + k].to_bits(),
+                            "case {case} channel {ch} lane {} of {}",
+                            k0 + k,
+                            got[ch].len()
+                        );
+                    }
                 }
             }
         }
@@ -839,6 +927,31 @@ mod tests {
             assert_eq!(sse[a], want, "column {a}");
             assert_eq!(avx[a], want, "column {a}");
         }
+        if has_avx512() {
+            let q: [[f32; 12]; 16] =
+                std::array::from_fn(|k| std::array::from_fn(|a| (100 * k + a) as f32));
+            // SAFETY: the CPU has AVX-512F and AVX2 (checked just above).
+            let (all, first8) = unsafe { rows_avx512(&q) };
+            for a in 0..12 {
+                let want: [f32; 16] = std::array::from_fn(|k| (100 * k + a) as f32);
+                assert_eq!(all[a], want, "column {a} of sixteen rows");
+                if a < 8 {
+                    assert_eq!(first8[a], want, "column {a} of sixteen rows");
+                }
+            }
+        }
+    }
+
+    /// `Avx16::from_rows` and `Avx16::from_rows8`, compiled for AVX-512F
+    /// and AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx512f,avx2")]
+    fn rows_avx512(q: &[[f32; 12]; 16]) -> ([[f32; 16]; 12], [[f32; 16]; 8]) {
+        use avx512::Avx16;
+        (
+            Avx16::from_rows(q).map(Avx16::to_array),
+            Avx16::from_rows8(q).map(Avx16::to_array),
+        )
     }
 
     /// `Avx8::from_rows`, compiled for AVX2.
@@ -874,7 +987,108 @@ mod tests {
                 // SAFETY: the CPU has AVX2 (checked just above).
                 assert_eq!(unsafe { bytes_avx(&ch) }, want, "case {case}");
             }
+            #[cfg(target_arch = "x86_64")]
+            if has_avx512() {
+                // Sixteen lanes: these eight, then eight more in range.
+                let ch16: [[f32; 16]; 3] = std::array::from_fn(|c| {
+                    std::array::from_fn(|k| if k < 8 { ch[c][k] } else { u(0.0, 255.999) })
+                });
+                let want: [u8; 48] = std::array::from_fn(|i| ch16[i % 3][i / 3] as u8);
+                // SAFETY: the CPU has AVX-512F and AVX2 (checked just above).
+                assert_eq!(unsafe { bytes_avx512(&ch16) }, want, "case {case}");
+                // And the out-of-range lane among the second eight.
+                let swap = ch16.map(|c| std::array::from_fn(|k| c[(k + 8) % 16]));
+                let want: [u8; 48] = std::array::from_fn(|i| swap[i % 3][i / 3] as u8);
+                // SAFETY: as above.
+                assert_eq!(unsafe { bytes_avx512(&swap) }, want, "case {case}");
+            }
         }
+    }
+
+    /// Each lane operation of [`avx512::Avx16`] gives, lane by lane, the bits
+    /// of the same operation at [`Fast32`] (plain f32), on the values where
+    /// rules differ: ±0, ±∞, NaN, subnormals, the largest f32.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn avx512_lane_operations_are_the_scalar_ones() {
+        if !has_avx512() {
+            return;
+        }
+        let special = [
+            0.0,
+            -0.0,
+            1.0,
+            -1.5,
+            3.25,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+            1e-40,
+            -1e-40,
+            f32::MAX,
+            -7.0,
+        ];
+        let n = special.len();
+        for shift in 0..n {
+            let a: [f32; 16] = std::array::from_fn(|k| special[k % n]);
+            let b: [f32; 16] = std::array::from_fn(|k| special[(k + shift) % n]);
+            // SAFETY: the CPU has AVX-512F and AVX2 (checked at the top).
+            let got = unsafe { ops_avx512(a, b) };
+            for k in 0..16 {
+                let (x, y) = (Fast32(a[k]), Fast32(b[k]));
+                let want = [
+                    (x + y).0,
+                    (x - y).0,
+                    (x * y).0,
+                    (x / y).0,
+                    x.sqrt().0,
+                    (-x).0,
+                    x.abs().0,
+                    x.max_of(&y).0,
+                    x.min_of(&y).0,
+                    x.if_gt(&y, || x, || y * y).0,
+                ];
+                for (op, (g, w)) in got.iter().zip(want).enumerate() {
+                    assert_eq!(
+                        g[k].to_bits(),
+                        w.to_bits(),
+                        "op {op} lane {k}: {} and {}",
+                        a[k],
+                        b[k]
+                    );
+                }
+            }
+        }
+    }
+
+    /// The operations of [`avx512_lane_operations_are_the_scalar_ones`] at
+    /// `Avx16`, compiled for AVX-512F and AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx512f,avx2")]
+    fn ops_avx512(a: [f32; 16], b: [f32; 16]) -> [[f32; 16]; 10] {
+        use avx512::Avx16;
+        let (x, y) = (Avx16::from_array(a), Avx16::from_array(b));
+        [
+            x + y,
+            x - y,
+            x * y,
+            x / y,
+            x.sqrt(),
+            -x,
+            x.abs(),
+            x.max_of(&y),
+            x.min_of(&y),
+            x.if_gt(&y, || x, || y * y),
+        ]
+        .map(Avx16::to_array)
+    }
+
+    /// `Avx16::rgb_bytes`, compiled for AVX-512F and AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx512f,avx2")]
+    fn bytes_avx512(ch: &[[f32; 16]; 3]) -> [u8; 48] {
+        let [r, g, b] = ch.map(avx512::Avx16::from_array);
+        avx512::Avx16::rgb_bytes(r, g, b)
     }
 
     /// `Avx8::rgb_bytes`, compiled for AVX2.
@@ -908,7 +1122,7 @@ mod tests {
             let (i, j) = (3 * case as usize, 400 + case);
             // Without the colour planes, lanes 0–7 are filled and the rest
             // left as they were (NaN here); with them, all.
-            let mut b = Batch {
+            let mut b = Batch::<F32x8> {
                 q: [[f32::NAN; 12]; 8],
                 ..Batch::default()
             };
@@ -922,6 +1136,7 @@ mod tests {
                 assert_eq!(b.q[k][..8], want, "case {case} pixel {k}");
                 assert!(b.q[k][8..].iter().all(|x| x.is_nan()));
             }
+            b.len = 0;
             b.fill8(&planes, &ids, i, j, true);
             for (k, &t) in ids.iter().enumerate() {
                 let p = &planes[t as usize];
@@ -946,6 +1161,7 @@ mod tests {
                 assert_eq!(b.col[k] as usize, i + k);
                 assert_eq!(b.interp >> k & 1 == 1, !p.solid);
             }
+            b.len = 0;
             b.fill8(&planes, &ids, i, j, false);
             for k in 0..8 {
                 assert_eq!(b.col[k] as usize, i + k);
@@ -959,23 +1175,24 @@ mod tests {
     fn lit_lanes<W: Wide>(
         m: &Material<Fast32>,
         lights: &[Light<Fast32>],
-        n: [[f32; 8]; 3],
-        p: [[f32; 8]; 3],
-        c: [[f32; 8]; 3],
+        n: [&[f32]; 3],
+        p: [&[f32]; 3],
+        c: [&[f32]; 3],
         ortho: bool,
-    ) -> [[f32; 8]; 3] {
+    ) -> [W::Array; 3] {
         let mut mw: Material<W> = material_as(m);
-        mw.color = c.map(W::from_array);
+        mw.color = c.map(wide);
         let lw: Vec<Light<W>> = lights.iter().map(light_as).collect();
-        let v = |a: [[f32; 8]; 3]| {
-            Vector3::new(
-                W::from_array(a[0]),
-                W::from_array(a[1]),
-                W::from_array(a[2]),
-            )
-        };
+        let v = |a: [&[f32]; 3]| Vector3::new(wide(a[0]), wide(a[1]), wide(a[2]));
         let out = lit(&mw, &lw, v(n), v(p), ortho, &mut NoTrace);
         out.map(W::to_array)
+    }
+
+    /// The lanes of `W` from the first `W::LANES` values of `x`.
+    fn wide<W: Wide>(x: &[f32]) -> W {
+        let mut a = W::Array::default();
+        a.as_mut().copy_from_slice(&x[..W::LANES]);
+        W::from_array(a)
     }
 
     /// [`lit_lanes`] at [`avx::Avx8`], compiled for AVX2 (used only after
@@ -985,11 +1202,27 @@ mod tests {
     fn lit_avx(
         m: &Material<Fast32>,
         lights: &[Light<Fast32>],
-        n: [[f32; 8]; 3],
-        p: [[f32; 8]; 3],
-        c: [[f32; 8]; 3],
+        n: [&[f32]; 3],
+        p: [&[f32]; 3],
+        c: [&[f32]; 3],
         ortho: bool,
     ) -> [[f32; 8]; 3] {
         lit_lanes::<avx::Avx8>(m, lights, n, p, c, ortho)
+    }
+
+    /// [`lit_lanes`] at [`avx512::Avx16`], compiled for AVX-512F and AVX2
+    /// (used only after the CPU was found to have them).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx512f,avx2")]
+    fn lit_avx512(
+        m: &Material<Fast32>,
+        lights: &[Light<Fast32>],
+        n: [&[f32]; 3],
+        p: [&[f32]; 3],
+        c: [&[f32]; 3],
+        ortho: bool,
+    ) -> Vec<Vec<f32>> {
+        let out = lit_lanes::<avx512::Avx16>(m, lights, n, p, c, ortho);
+        out.iter().map(|ch| ch.to_vec()).collect()
     }
 }

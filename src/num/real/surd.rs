@@ -424,9 +424,9 @@ fn split_square_u128(mut m: u128, mut d: u64, mut step: u64) -> Option<(BigUint,
         if d > TRIAL_DIVISION_CAP {
             return None;
         }
-        if m % dd == 0 {
+        if m.is_multiple_of(dd) {
             let mut e = 0u32;
-            while m % dd == 0 {
+            while m.is_multiple_of(dd) {
                 m /= dd;
                 e += 1;
             }

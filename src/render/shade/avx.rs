@@ -17,14 +17,64 @@
 //! value is made, and every operation on one runs, on a CPU with AVX2.
 //! Keep it that way: never make this type more visible, and never use it
 //! outside `shade_band_avx2`.
+//!
+//! The one item the module shares is [`transpose8x8`], an `unsafe fn` of
+//! plain registers whose caller promises AVX: the AVX-512 band pass
+//! (`super::avx512`) transposes its two halves with it.
 
 crate::num::lanes::lane_type!(
     /// Eight f32 lanes in an AVX register (see the module documentation:
     /// only for code reached through `shade_band_avx2`).
     pub Avx8,
     AvxMask,
-    imp
+    imp,
+    8
 );
+
+/// The 8 × 8 transpose of eight registers of eight f32 (lane k of result
+/// a is lane a of `r[k]`), by shuffles: pairs of rows interleaved, then
+/// quadruples, then the 128-bit halves swapped.
+///
+/// # Safety
+///
+/// The CPU must have AVX.
+#[inline(always)]
+pub(super) unsafe fn transpose8x8(
+    r: [std::arch::x86_64::__m256; 8],
+) -> [std::arch::x86_64::__m256; 8] {
+    use std::arch::x86_64::*;
+    let [r0, r1, r2, r3, r4, r5, r6, r7] = r;
+    // SAFETY: the caller guarantees AVX; the intrinsics take and return
+    // plain values.
+    unsafe {
+        // t: (a0 b0 a1 b1 | a4 b4 a5 b5) and (a2 b2 a3 b3 | a6 b6 a7 b7).
+        let (t0, t1) = (_mm256_unpacklo_ps(r0, r1), _mm256_unpackhi_ps(r0, r1));
+        let (t2, t3) = (_mm256_unpacklo_ps(r2, r3), _mm256_unpackhi_ps(r2, r3));
+        let (t4, t5) = (_mm256_unpacklo_ps(r4, r5), _mm256_unpackhi_ps(r4, r5));
+        let (t6, t7) = (_mm256_unpacklo_ps(r6, r7), _mm256_unpackhi_ps(r6, r7));
+        // u: column c of rows 0–3 (or 4–7) | column c + 4.
+        let u0 = _mm256_shuffle_ps::<0x44>(t0, t2);
+        let u1 = _mm256_shuffle_ps::<0xee>(t0, t2);
+        let u2 = _mm256_shuffle_ps::<0x44>(t1, t3);
+        let u3 = _mm256_shuffle_ps::<0xee>(t1, t3);
+        let u4 = _mm256_shuffle_ps::<0x44>(t4, t6);
+        let u5 = _mm256_shuffle_ps::<0xee>(t4, t6);
+        let u6 = _mm256_shuffle_ps::<0x44>(t5, t7);
+        let u7 = _mm256_shuffle_ps::<0xee>(t5, t7);
+        let lo = |a, b| _mm256_permute2f128_ps::<0x20>(a, b);
+        let hi = |a, b| _mm256_permute2f128_ps::<0x31>(a, b);
+        [
+            lo(u0, u4),
+            lo(u1, u5),
+            lo(u2, u6),
+            lo(u3, u7),
+            hi(u0, u4),
+            hi(u1, u5),
+            hi(u2, u6),
+            hi(u3, u7),
+        ]
+    }
+}
 
 /// The lane operations over AVX.
 mod imp {
@@ -202,43 +252,14 @@ mod imp {
         M(from_array(b.map(t)).0)
     }
     /// Columns 0–7 of eight rows of twelve as lanes (lane k of result a
-    /// is `q[k][a]`), by an 8 × 8 transpose of shuffles: pairs of rows
-    /// interleaved, then quadruples, then the 128-bit halves swapped.
+    /// is `q[k][a]`), by [`super::transpose8x8`].
     #[inline(always)]
     pub fn transpose8(q: &[[f32; 12]; 8]) -> [V; 8] {
-        avx!({
-            // The loads read eight f32 from a row of twelve (unaligned loads
-            // need no alignment).
-            let r = |k: usize| _mm256_loadu_ps(q[k].as_ptr());
-            let (r0, r1, r2, r3) = (r(0), r(1), r(2), r(3));
-            let (r4, r5, r6, r7) = (r(4), r(5), r(6), r(7));
-            // t: (a0 b0 a1 b1 | a4 b4 a5 b5) and (a2 b2 a3 b3 | a6 b6 a7 b7).
-            let (t0, t1) = (_mm256_unpacklo_ps(r0, r1), _mm256_unpackhi_ps(r0, r1));
-            let (t2, t3) = (_mm256_unpacklo_ps(r2, r3), _mm256_unpackhi_ps(r2, r3));
-            let (t4, t5) = (_mm256_unpacklo_ps(r4, r5), _mm256_unpackhi_ps(r4, r5));
-            let (t6, t7) = (_mm256_unpacklo_ps(r6, r7), _mm256_unpackhi_ps(r6, r7));
-            // u: column c of rows 0–3 (or 4–7) | column c + 4.
-            let u0 = _mm256_shuffle_ps::<0x44>(t0, t2);
-            let u1 = _mm256_shuffle_ps::<0xee>(t0, t2);
-            let u2 = _mm256_shuffle_ps::<0x44>(t1, t3);
-            let u3 = _mm256_shuffle_ps::<0xee>(t1, t3);
-            let u4 = _mm256_shuffle_ps::<0x44>(t4, t6);
-            let u5 = _mm256_shuffle_ps::<0xee>(t4, t6);
-            let u6 = _mm256_shuffle_ps::<0x44>(t5, t7);
-            let u7 = _mm256_shuffle_ps::<0xee>(t5, t7);
-            let lo = |a, b| _mm256_permute2f128_ps::<0x20>(a, b);
-            let hi = |a, b| _mm256_permute2f128_ps::<0x31>(a, b);
-            [
-                V(lo(u0, u4)),
-                V(lo(u1, u5)),
-                V(lo(u2, u6)),
-                V(lo(u3, u7)),
-                V(hi(u0, u4)),
-                V(hi(u1, u5)),
-                V(hi(u2, u6)),
-                V(hi(u3, u7)),
-            ]
-        })
+        // The loads read eight f32 from a row of twelve (unaligned loads
+        // need no alignment).
+        let rows = q.map(|row| avx!(_mm256_loadu_ps(row.as_ptr())));
+        // SAFETY: as for `avx!`: this runs only on a CPU with AVX2.
+        unsafe { super::transpose8x8(rows) }.map(V)
     }
     /// Columns 8–11 of eight rows of twelve as lanes, by two 4 × 4
     /// transposes side by side (rows k and k + 4 in the two halves of one
