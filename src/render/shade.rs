@@ -399,7 +399,7 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
                 continue;
             }
             let t = irow[i];
-            let end = irow[i..].iter().position(|&u| u != t).map_or(w, |k| i + k);
+            let end = i + run_length(&irow[i..], t);
             if t == NONE {
                 orow[3 * i..3 * end].copy_from_slice(&bg_row[3 * i..3 * end]);
                 i = end;
@@ -441,6 +441,24 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
         batch.flush(&mut objs[batch.obj], inp.ortho, orow);
     }
     (count, evals)
+}
+
+/// How many of the ids at the start of `ids` equal `t`: sixteen at a time
+/// (one vector compare each, background runs are long), then one by one.
+#[inline(always)]
+fn run_length(ids: &[u32], t: u32) -> usize {
+    let mut n = 0;
+    for c in ids.chunks_exact(16) {
+        if c.iter().fold(true, |same, &u| same & (u == t)) {
+            n += 16;
+        } else {
+            break;
+        }
+    }
+    n + ids[n..]
+        .iter()
+        .position(|&u| u != t)
+        .unwrap_or(ids.len() - n)
 }
 
 /// An object's material (its colour replaced per batch by Phong, unless
@@ -757,6 +775,29 @@ mod tests {
         assert_eq!(ix.one_object(&[NONE; 8]), None);
         // A scene of two objects: both are used.
         assert!(ix.range.iter().filter(|r| r[1] > r[0]).count() >= 2);
+    }
+
+    /// `run_length` counts what a scan one by one counts: runs shorter and
+    /// longer than sixteen, ending inside or at the end of the slice.
+    #[test]
+    fn run_length_is_the_count_of_equal_leading_ids() {
+        let mut rng = SplitMix64::new(3);
+        for case in 0..2000 {
+            let len = (rng.next_u64() % 70) as usize;
+            let t = (rng.next_u64() % 3) as u32;
+            let run = (rng.next_u64() % (len as u64 + 1)) as usize;
+            let ids: Vec<u32> = (0..len)
+                .map(|k| {
+                    if k < run {
+                        t
+                    } else {
+                        (rng.next_u64() % 4) as u32
+                    }
+                })
+                .collect();
+            let want = ids.iter().position(|&u| u != t).unwrap_or(len);
+            assert_eq!(run_length(&ids, t), want, "case {case}: {ids:?}");
+        }
     }
 
     /// The band pass at the baseline lane type (two SSE halves, or an
