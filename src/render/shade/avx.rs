@@ -175,46 +175,15 @@ mod imp {
     pub fn select(m: M, a: V, b: V) -> V {
         avx!(V(_mm256_blendv_ps(b.0, a.0, m.0)))
     }
-    /// `x as u8` per lane for 0 ≤ x < 256 (what the renderer converts):
-    /// truncation to i32, then the low byte; NaN and values outside that
-    /// range go through the scalar cast.
-    #[inline(always)]
-    pub fn to_bytes(v: V) -> [u8; 8] {
-        let ok = avx!(_mm256_movemask_ps(_mm256_and_ps(
-            _mm256_cmp_ps::<_CMP_GE_OS>(v.0, _mm256_setzero_ps()),
-            _mm256_cmp_ps::<_CMP_LT_OS>(v.0, _mm256_set1_ps(256.0)),
-        )));
-        if ok != 0xff {
-            return to_array(v).map(|x| x as u8);
-        }
-        let mut i = [0i32; 8];
-        // The store writes eight i32 into an array of eight.
-        avx!(_mm256_storeu_si256(
-            i.as_mut_ptr().cast(),
-            _mm256_cvttps_epi32(v.0)
-        ));
-        i.map(|x| x as u8)
-    }
-    /// Three channels' bytes interleaved, r0 g0 b0 r1 …, each lane as
-    /// [`to_bytes`] converts it. When every lane is in 0 ≤ x < 256:
-    /// truncation to i32 (exact there), packed to bytes with saturation
-    /// (which changes nothing in that range), and shuffled into pixel order;
-    /// otherwise channel by channel through `to_bytes`.
+    /// Three channels' bytes interleaved, r0 g0 b0 r1 …, each lane `x as
+    /// u8`: clamped to [0, 255] first (max(x, 0) is 0 for NaN, as the cast
+    /// gives), so that truncation to i32 is the cast, packed to bytes (with
+    /// saturation, which then changes nothing) and shuffled into pixel
+    /// order.
     #[inline(always)]
     pub fn rgb_bytes(r: V, g: V, b: V) -> [u8; 24] {
-        let inside = |v: __m256| {
-            avx!(_mm256_and_ps(
-                _mm256_cmp_ps::<_CMP_GE_OS>(v, _mm256_setzero_ps()),
-                _mm256_cmp_ps::<_CMP_LT_OS>(v, _mm256_set1_ps(256.0)),
-            ))
-        };
-        let ok = avx!(_mm256_movemask_ps(_mm256_and_ps(
-            inside(r.0),
-            _mm256_and_ps(inside(g.0), inside(b.0))
-        )));
-        if ok != 0xff {
-            return crate::num::lanes::interleave(to_bytes(r), to_bytes(g), to_bytes(b));
-        }
+        let clamp = |v: V| avx!(_mm256_min_ps(max(v, splat(0.0)).0, _mm256_set1_ps(255.0)));
+        let (r, g, b) = (V(clamp(r)), V(clamp(g)), V(clamp(b)));
         let mut out = [0u8; 32];
         avx!({
             let (ri, gi, bi) = (

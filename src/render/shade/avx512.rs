@@ -133,14 +133,6 @@ mod imp {
         // The blend takes its second operand where the mask bit is set.
         avx512!(V(_mm512_mask_blend_ps(m.0, b.0, a.0)))
     }
-    /// The lanes with 0 ≤ x < 256 (false for NaN).
-    #[inline(always)]
-    fn in_byte_range(v: V) -> __mmask16 {
-        avx512!(
-            _mm512_cmp_ps_mask::<_CMP_GE_OS>(v.0, _mm512_setzero_ps())
-                & _mm512_cmp_ps_mask::<_CMP_LT_OS>(v.0, _mm512_set1_ps(256.0))
-        )
-    }
     /// Byte k of output chunk `chunk` (of three 16-byte chunks of r g b
     /// interleaved) when it belongs to channel `ch`: the pixel's index in
     /// that channel's bytes; else −128 (a shuffle writes zero there).
@@ -171,18 +163,19 @@ mod imp {
         t
     };
     /// Three channels' bytes interleaved, r0 g0 b0 r1 …, each lane `x as
-    /// u8`. When every lane is in 0 ≤ x < 256: truncation to i32 (exact
-    /// there), the low byte of each (VPMOVDB), and the three channels'
-    /// sixteen bytes shuffled into pixel order; otherwise lane by lane.
+    /// u8`: clamped to [0, 255] first (max(x, 0) is 0 for NaN, as the cast
+    /// gives), so that truncation to i32 is the cast, then the low byte of
+    /// each (VPMOVDB), and the three channels' sixteen bytes shuffled into
+    /// pixel order.
     #[inline(always)]
     pub fn rgb_bytes(r: V, g: V, b: V) -> [u8; 48] {
-        if in_byte_range(r) & in_byte_range(g) & in_byte_range(b) != 0xffff {
-            let (r, g, b) = (to_array(r), to_array(g), to_array(b));
-            return std::array::from_fn(|i| [r, g, b][i % 3][i / 3] as u8);
-        }
         let mut out = [0u8; 48];
         avx512!({
-            let bytes = |v: V| _mm512_cvtepi32_epi8(_mm512_cvttps_epi32(v.0));
+            let bytes = |v: V| {
+                let v = max(v, splat(0.0));
+                let v = _mm512_min_ps(v.0, _mm512_set1_ps(255.0));
+                _mm512_cvtepi32_epi8(_mm512_cvttps_epi32(v))
+            };
             let ch = [bytes(r), bytes(g), bytes(b)];
             for (m, chunk) in out.chunks_exact_mut(16).enumerate() {
                 // The loads read sixteen i8 from a table of sixteen.
