@@ -363,10 +363,11 @@ pub trait Wide: super::Scalar + Copy {
 /// Defines an f32 type `$name` of `$lanes` lanes (with its mask type
 /// `$mask`) over a module `$imp` of lane operations: `V`, `M`, `from_array`,
 /// `to_array`, `splat`, `add`, `sub`, `mul`, `div`, `sqrt`, `neg`, `abs`,
-/// `max`, `min`, `gt`, `lt`, `eq`, `select`, `to_bytes`, `rgb_bytes`, `bits`,
-/// `mask_from`, `transpose8`, `transpose_tail`, each lane by lane with the plain f32 operation. [`F32x8`]
-/// is this over SSE (or an array); the renderer defines a second one over
-/// AVX2 for the code it compiles for AVX2.
+/// `max`, `min`, `gt`, `lt`, `eq`, `select`, `rgb_bytes`, `bits`,
+/// `mask_from`, `transpose8`, `transpose_tail`, each lane by lane with the
+/// plain f32 operation, for arrays of `$lanes` lanes. [`F32x8`] is this over
+/// SSE (or an array); the renderer defines two more, over AVX and AVX-512,
+/// for the code it compiles for those features.
 macro_rules! lane_type {
     ($(#[$meta:meta])* $vis:vis $name:ident, $mask:ident, $imp:ident, $lanes:literal) => {
         #[allow(unused_imports)]

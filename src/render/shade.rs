@@ -304,12 +304,14 @@ impl PhongIndex {
 /// Shades the rows of one band from its visibility buffer `id` (first row
 /// `r0`), writing 8-bit RGB into `out`: background where no triangle is
 /// visible; flat and Gouraud colours from the corners; Phong pixels lit
-/// eight at a time. Returns (pixels shaded, lighting evaluations).
+/// eight (or sixteen) at a time. Returns (pixels shaded, lighting
+/// evaluations).
 ///
 /// On a CPU with AVX2 the same code is compiled a second time for AVX2 with
 /// the lane type [`avx::Avx8`] (one 256-bit register per eight lanes
-/// instead of two SSE halves), and chosen at run time; the results are the
-/// same bits.
+/// instead of two SSE halves), and on one with AVX-512F a third time with
+/// [`avx512::Avx16`] (sixteen lanes in one 512-bit register); the copy is
+/// chosen at run time, and the results are the same bits.
 pub fn shade_band(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
     // Sixteen lanes pay for Phong's per-pixel lighting; flat and Gouraud
     // pixels (scalar code) run slower in the AVX-512 copy (Gouraud shading
@@ -390,7 +392,7 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
                 .and_then(|s| <&[u32; 8]>::try_from(s).ok());
             if let Some((ids, o)) = ids.and_then(|ids| Some((ids, inp.phong.one_object(ids)?))) {
                 // A batch of sixteen takes two such groups of one object.
-                if batch.len % 8 != 0 || batch.len > 0 && batch.obj != o {
+                if batch.len % 8 != 0 || (batch.len > 0 && batch.obj != o) {
                     batch.flush(&mut objs[batch.obj], inp.ortho, orow);
                 }
                 batch.fill8(inp.planes, ids, i, j, !objs[o].one_colour);
