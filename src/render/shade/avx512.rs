@@ -5,9 +5,10 @@
 //! add, multiply, divide and square root, correctly rounded in every lane;
 //! the same min/max/compare/select rules), so a batch lit at `Avx16` gives
 //! the same bits as at `Avx8`, `F32x8` and `Fast32`, lane by lane (tested in
-//! `shade::tests`). Sixteen pixels per lighting call halve the
-//! instructions per pixel, and AVX-512's 32 registers keep more of the
-//! lighting's working set out of memory.
+//! `shade::tests`). Sixteen pixels per lighting call halve the lighting's
+//! instructions per pixel; division and square root cost the same per lane
+//! as in 256-bit registers, though, so the shading of the reference sphere
+//! gains about 8 % of its time, not half.
 //!
 //! **Why this is sound.** Every operation of `Avx16` executes AVX-512F
 //! instructions (and the byte shuffles SSSE3 ones), which a CPU without
@@ -225,9 +226,8 @@ mod imp {
             ))))
         })
     }
-    /// Columns 8–11 of sixteen rows of twelve as lanes, one gather of the
-    /// sixteen rows' entry per column (the colour planes, read only for
-    /// objects whose colour varies).
+    /// Columns 8–11 of sixteen rows of twelve as lanes, entry by entry (the
+    /// colour planes, read only for objects whose colour varies).
     #[inline(always)]
     pub fn transpose_tail(q: &[[f32; 12]; 16]) -> [V; 4] {
         std::array::from_fn(|a| from_array(std::array::from_fn(|k| q[k][8 + a])))
