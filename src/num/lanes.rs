@@ -190,21 +190,16 @@ mod imp {
         let v = from_array(b.map(t));
         M(v.0, v.1)
     }
-    /// Column a of eight rows of twelve as lanes, for a = 0…7 (the lanes
-    /// of a batch from its pixels' rows).
+    /// Columns 0…7 of eight rows of twelve as lanes (the lanes of a batch
+    /// from its pixels' rows), entry by entry.
     #[inline(always)]
     pub fn transpose8(q: &[[f32; 12]; 8]) -> [V; 8] {
-        std::array::from_fn(|a| column(q, a))
+        super::columns(q, 0, from_array)
     }
-    /// Columns 8…11 of eight rows of twelve as lanes.
+    /// Columns 8…11 of eight rows of twelve as lanes, entry by entry.
     #[inline(always)]
     pub fn transpose_tail(q: &[[f32; 12]; 8]) -> [V; 4] {
-        std::array::from_fn(|a| column(q, 8 + a))
-    }
-    /// Column a of eight rows as lanes.
-    #[inline(always)]
-    fn column(q: &[[f32; 12]; 8], a: usize) -> V {
-        from_array(std::array::from_fn(|k| q[k][a]))
+        super::columns(q, 8, from_array)
     }
 }
 
@@ -308,22 +303,25 @@ mod imp {
     pub fn mask_from(b: [bool; 8]) -> M {
         M(b)
     }
-    /// Column a of eight rows of twelve as lanes, for a = 0…7 (the lanes
-    /// of a batch from its pixels' rows).
+    /// Columns 0…7 of eight rows of twelve as lanes (the lanes of a batch
+    /// from its pixels' rows), entry by entry.
     #[inline(always)]
     pub fn transpose8(q: &[[f32; 12]; 8]) -> [V; 8] {
-        std::array::from_fn(|a| column(q, a))
+        super::columns(q, 0, from_array)
     }
-    /// Columns 8…11 of eight rows of twelve as lanes.
+    /// Columns 8…11 of eight rows of twelve as lanes, entry by entry.
     #[inline(always)]
     pub fn transpose_tail(q: &[[f32; 12]; 8]) -> [V; 4] {
-        std::array::from_fn(|a| column(q, 8 + a))
+        super::columns(q, 8, from_array)
     }
-    /// Column a of eight rows as lanes.
-    #[inline(always)]
-    fn column(q: &[[f32; 12]; 8], a: usize) -> V {
-        from_array(std::array::from_fn(|k| q[k][a]))
-    }
+}
+
+/// Columns a0 … a0 + N − 1 of eight rows of twelve, each made into lanes
+/// by `lanes` (lane k of result c is `q[k][a0 + c]`): the transposes of the
+/// lane types without a shuffle of their own.
+#[inline(always)]
+fn columns<V, const N: usize>(q: &[[f32; 12]; 8], a0: usize, lanes: fn([f32; 8]) -> V) -> [V; N] {
+    std::array::from_fn(|c| lanes(std::array::from_fn(|k| q[k][a0 + c])))
 }
 
 /// Three channels' bytes interleaved pixel by pixel: r0 g0 b0 r1 g1 b1 ….
