@@ -6,11 +6,11 @@
 //! `F32x8`.
 
 use divan::{black_box, Bencher};
-use grafika::lighting::LightKind;
-use grafika::lighting::{shade, Light, Material, Model, Surface};
+use grafika::num::vec::{normalize, v3};
 use grafika::num::{F32x8, Fast32, Scalar};
-use grafika::trace::NoTrace;
-use grafika::vec::{normalize, v3};
+use grafika::stages::lighting::LightKind;
+use grafika::stages::lighting::{shade, Light, Material, Model, Surface};
+use grafika::stages::trace::NoTrace;
 
 fn main() {
     divan::main();

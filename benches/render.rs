@@ -2,8 +2,8 @@
 //! mode at 1024×1024, the same at 1920×1080, and the text's landscape.
 //! Run with `cargo bench --bench render`.
 
+use grafika::input::scene::{Scene, Shading};
 use grafika::render::{self, Options};
-use grafika::scene::{Scene, Shading};
 use std::path::Path;
 
 fn main() {

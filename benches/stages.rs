@@ -1,9 +1,9 @@
 //! Divan benchmarks of the pipeline stages at f32, f64 and exact, with the
 //! steps not recorded (`NoTrace`), over the fixed input set of
-//! `grafika::accuracy` (a pass over every case of the stage per iteration;
+//! `grafika::bench::accuracy` (a pass over every case of the stage per iteration;
 //! divide by the case count for a time per operation).
 
-use grafika::accuracy::{inputs, Inputs, Prepared, Stage};
+use grafika::bench::accuracy::{inputs, Inputs, Prepared, Stage};
 use grafika::num::{Real, Scalar};
 use std::sync::OnceLock;
 

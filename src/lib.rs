@@ -1,38 +1,32 @@
 //! grafika: a step-by-step tutor and calculator for the 3D viewing pipeline
 //! and shading of the course text.
 //!
+//! The folders are layers, and a module imports only from the layers below
+//! its own (no import runs upward or in a circle):
+//!
+//! | layer | what it holds |
+//! |---|---|
+//! | [`cli`] | the command line: clap arguments, validation into values, dispatch, printing, exit codes |
+//! | [`report`] | the one place where words for people are made: text, JSON, Markdown, LaTeX, in every language |
+//! | [`tutor`] | solve a problem file, mark answers (check), the mistake catalog, generate exams |
+//! | [`bench`] | run time against error of the float stages |
+//! | [`render`] | the renderer: geometry, rasterization, shading, drawn with the stages |
+//! | [`input`] | problem, scene, lights and mesh files, and flag values, read and validated |
+//! | [`stages`] | the math the text teaches: camera, projection, window, clip, lighting; each writes its steps to a [`stages::trace::Trace`] |
+//! | [`num`] | numbers: the `Scalar` trait, the exact type, floats, lanes, vectors, expressions, formatting |
+//! | [`error`] | the error value every layer returns |
+//!
 //! Data flows one way: command-line flags or a problem file are validated
-//! into plain values, the stage functions (camera → projection → window →
-//! clip) compute with them at the chosen precision while writing their
-//! steps to a [`trace::Trace`], and a [`report::Report`] turns the steps and
-//! results into text or JSON.
+//! into plain values, the stage functions compute with them at the chosen
+//! precision while writing their steps to a trace, and a report turns the
+//! steps and results into text or JSON.
 
-pub mod accuracy;
 pub mod bench;
-pub mod camera;
-pub mod check;
-pub mod check_cmd;
 pub mod cli;
-pub mod clip;
-pub mod commands;
-pub mod diagnose;
 pub mod error;
-pub mod generate;
 pub mod input;
-pub mod lighting;
-pub mod lighting_input;
-pub mod mesh;
 pub mod num;
-pub mod problem;
-pub mod projection;
-pub mod raster;
 pub mod render;
-pub mod render_cmd;
 pub mod report;
-pub mod report_doc;
-pub mod rng;
-pub mod scene;
-pub mod solve;
-pub mod trace;
-pub mod vec;
-pub mod window;
+pub mod stages;
+pub mod tutor;

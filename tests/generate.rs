@@ -3,11 +3,11 @@
 
 mod common;
 use common::*;
-use grafika::check::{self, Settings, Verdict};
-use grafika::diagnose::CATALOG;
-use grafika::generate::{self, answer_toml, Difficulty, Topic};
-use grafika::solve::lookup;
-use grafika::trace::Val;
+use grafika::stages::trace::Val;
+use grafika::tutor::check::{self, Settings, Verdict};
+use grafika::tutor::diagnose::CATALOG;
+use grafika::tutor::generate::{self, answer_toml, Difficulty, Topic};
+use grafika::tutor::solve::lookup;
 use std::path::{Path, PathBuf};
 
 const TOPICS: [Topic; 7] = [
@@ -226,7 +226,7 @@ fn clipping_covers_accept_reject_and_partial_at_every_level() {
             let max: Vec<f64> = c.max.iter().map(|n| n.0.eval::<f64>().unwrap()).collect();
             for s in &c.segment {
                 for end in [&s.from, &s.to] {
-                    let grafika::problem::PointRef::At(p) = end else {
+                    let grafika::input::problem::PointRef::At(p) = end else {
                         panic!()
                     };
                     for k in 0..3 {

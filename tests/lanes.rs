@@ -4,8 +4,8 @@
 //! surface — including lanes on different sides of a range, a spot cone,
 //! the lit/unlit line and the clamp, which the lane type decides per lane.
 
-use grafika::lighting::{self, Light, LightKind, Material, Model, Surface};
 use grafika::num::{F32x8, Fast32, Scalar};
+use grafika::stages::lighting::{self, Light, LightKind, Material, Model, Surface};
 use nalgebra::Vector3;
 use proptest::prelude::*;
 

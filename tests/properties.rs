@@ -2,12 +2,12 @@
 //! equalities at exact precision on small integer inputs, and within a
 //! small tolerance in f64 on larger ones.
 
-use grafika::camera::{self, Camera};
-use grafika::clip::{self, ClipBox};
+use grafika::num::vec::{self, V3};
 use grafika::num::{Real, Scalar};
-use grafika::projection::{self, Projection};
-use grafika::trace::NoTrace;
-use grafika::vec::{self, V3};
+use grafika::stages::camera::{self, Camera};
+use grafika::stages::clip::{self, ClipBox};
+use grafika::stages::projection::{self, Projection};
+use grafika::stages::trace::NoTrace;
 use nalgebra::Vector4;
 use num_traits::{One, Zero};
 use proptest::prelude::*;

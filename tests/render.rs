@@ -3,10 +3,10 @@
 //! clipping, open meshes, bad scene files and determinism across threads.
 
 use assert_cmd::Command;
-use grafika::lighting::{self, Light, Material, Surface};
+use grafika::input::scene::Scene;
 use grafika::render::{self, Frame, Options};
-use grafika::scene::Scene;
-use grafika::trace::NoTrace;
+use grafika::stages::lighting::{self, Light, Material, Surface};
+use grafika::stages::trace::NoTrace;
 use nalgebra::Vector3;
 use std::path::Path;
 
@@ -144,7 +144,7 @@ fn a_frame_rendered_into_the_last_frames_buffers_is_the_same() {
     assert!(a.iter().zip(&b).all(|(x, y)| x.to_bits() == y.to_bits()));
     // The depth is the z-buffer's: finite where a triangle is, ∞ elsewhere.
     for (z, &id) in a.iter().zip(&last.ids) {
-        assert_eq!(z.is_finite(), id != grafika::raster::NONE);
+        assert_eq!(z.is_finite(), id != grafika::render::raster::NONE);
     }
 }
 
@@ -394,7 +394,7 @@ fn phong_pixels_lit_eight_at_a_time_match_the_one_pixel_path() {
     for y in 0..f.height {
         for x in 0..f.width {
             let t = f.ids[(y * f.width + x) as usize];
-            if t == grafika::raster::NONE {
+            if t == grafika::render::raster::NONE {
                 continue;
             }
             let (tri, c) = (&f.tris[t as usize], &f.corners[t as usize]);

@@ -3,15 +3,15 @@
 //! decisions against exact arithmetic), and fuzzing of the number parser and
 //! the problem-file reader (no panics, no stack overflows).
 
-use grafika::accuracy::{self, ulp, ulp_error, Prepared, Stage};
-use grafika::camera::{self, Camera};
-use grafika::clip::{self, ClipBox};
+use grafika::bench::accuracy::{self, ulp, ulp_error, Prepared, Stage};
+use grafika::input::problem::ProblemIn;
+use grafika::num::vec::{self, V3};
 use grafika::num::{parse_expr, parse_vec3, Angle, Precision, Real, Scalar};
-use grafika::problem::ProblemIn;
-use grafika::projection::{self, Projection};
-use grafika::trace::NoTrace;
-use grafika::vec::{self, V3};
-use grafika::window;
+use grafika::stages::camera::{self, Camera};
+use grafika::stages::clip::{self, ClipBox};
+use grafika::stages::projection::{self, Projection};
+use grafika::stages::trace::NoTrace;
+use grafika::stages::window;
 use proptest::prelude::*;
 
 const M20: i64 = 1 << 20;
@@ -393,7 +393,7 @@ fn near_parallel_inner() {
             pr: v([0.0; 3]),
             vup: v(up),
         };
-        let mut rec = grafika::trace::Recorder::new();
+        let mut rec = grafika::stages::trace::Recorder::new();
         let b = camera::basis(&cam, &mut rec).unwrap();
         (b.u, rec.warnings.clone())
     }
@@ -538,9 +538,9 @@ fn problem_texts() -> Vec<String> {
 
 fn solve_all(text: &str) {
     if let Ok(p) = ProblemIn::parse(text, "fuzz.toml") {
-        let _ = grafika::solve::solve::<f32>(&p);
-        let _ = grafika::solve::solve::<f64>(&p);
-        let _ = grafika::solve::solve::<Real>(&p);
+        let _ = grafika::tutor::solve::solve::<f32>(&p);
+        let _ = grafika::tutor::solve::solve::<f64>(&p);
+        let _ = grafika::tutor::solve::solve::<Real>(&p);
     }
 }
 

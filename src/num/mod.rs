@@ -9,8 +9,11 @@
 pub mod expr;
 pub mod fast;
 mod float;
+pub mod format;
 pub mod lanes;
 pub mod real;
+pub mod rng;
+pub mod vec;
 
 pub use expr::{parse_expr, parse_vec3, Angle, AngleUnit, Expr};
 pub use fast::Fast32;
@@ -21,7 +24,7 @@ use std::fmt::Debug;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 /// The precision a calculation runs at (`--precision`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum, serde::Serialize, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, Default)]
 #[serde(rename_all = "lowercase")]
 pub enum Precision {
     /// Exact sums of surds where the mathematics is exact, marked `≈` otherwise.

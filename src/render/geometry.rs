@@ -3,12 +3,12 @@
 //! rejection, back-face culling, flat/Gouraud lighting, clipping in
 //! homogeneous space and the viewport, then raster set-up.
 
-use crate::lighting::{self, Light, LightKind, Material};
+use crate::input::scene::{Colors, Normals, Object, Scene, Shading};
 use crate::num::Fast32;
-use crate::raster::{self, ScreenVert, Tri, BAND};
-use crate::scene::{Colors, Normals, Object, Scene, Shading};
-use crate::trace::NoTrace;
-use crate::window::Window;
+use crate::render::raster::{self, ScreenVert, Tri, BAND};
+use crate::stages::lighting::{self, Light, LightKind, Material};
+use crate::stages::trace::NoTrace;
+use crate::stages::window::Window;
 use nalgebra::{Matrix3, Matrix4, Vector3, Vector4};
 use rayon::prelude::*;
 use std::time::Instant;
@@ -256,7 +256,7 @@ fn vertex_one(k: usize, p: [f32; 3], x: &VertXf, o: &mut VertOut) -> f32 {
     let code = if x.inside {
         0
     } else {
-        crate::clip::outcode_clip_space(&Vector4::from(clip))
+        crate::stages::clip::outcode_clip_space(&Vector4::from(clip))
     };
     o.ec[k] = EyeCode {
         e,
@@ -428,7 +428,7 @@ pub(super) fn prepare<'a>(
             if k & 4 == 0 { lo[2] } else { hi[2] },
         ];
         let c = c64 * Vector4::new(q[0] as f64, q[1] as f64, q[2] as f64, 1.0);
-        let code = crate::clip::outcode_clip_space(&c);
+        let code = crate::stages::clip::outcode_clip_space(&c);
         and &= code;
         or |= code;
     }
@@ -654,7 +654,7 @@ fn to_screen(c: &[f32; 4], win: &Window<f32>, w: f32, h: f32) -> ScreenVert {
     let (nx, ny, nz) = (c[0] * inv_w, c[1] * inv_w, c[2] * inv_w);
     let xp = win.left + (nx + 1.0) * 0.5 * win.width;
     let yp = win.bottom + (ny + 1.0) * 0.5 * win.height;
-    let (px, py) = crate::window::viewport_xy(win, (&w, &h), (&xp, &yp));
+    let (px, py) = crate::stages::window::viewport_xy(win, (&w, &h), (&xp, &yp));
     ScreenVert {
         x: px,
         y: h - py,
@@ -1192,7 +1192,7 @@ fn face_normal_eye(p: &Prep, f: usize) -> Option<Vector3<f32>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::rng::SplitMix64;
+    use crate::num::rng::SplitMix64;
     use std::sync::atomic::{AtomicBool, Ordering};
 
     /// Set: the geometry loops take their portable compilation even on a
@@ -1218,8 +1218,8 @@ mod tests {
             uniform(rng, 0.0, 6.0) as f64,
         );
         let eye = Matrix4::new_translation(&Vector3::new(0.1, -0.2, -3.0)) * rot;
-        let win = crate::window::window(&45.0, &1.25, &0.1, "near", &mut NoTrace).unwrap();
-        let clip = crate::projection::perspective_matrix(&win, &0.1, &100.0);
+        let win = crate::stages::window::window(&45.0, &1.25, &0.1, "near", &mut NoTrace).unwrap();
+        let clip = crate::stages::projection::perspective_matrix(&win, &0.1, &100.0);
         (eye, clip, super::super::win32(&win))
     }
 

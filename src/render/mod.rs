@@ -17,19 +17,20 @@
 //! submission order).
 
 use crate::error::{Error, Result};
-use crate::lighting::{Light, Material};
+use crate::input::scene::{Normals, Scene, Shading, View};
 use crate::num::Fast32;
-use crate::raster::{self, Tri, BAND};
-use crate::scene::{Normals, Scene, Shading, View};
-use crate::trace::NoTrace;
-use crate::window::Window;
+use crate::stages::lighting::{Light, Material};
+use crate::stages::trace::NoTrace;
+use crate::stages::window::Window;
 use nalgebra::{Matrix4, Vector3};
+use raster::{Tri, BAND};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 mod geometry;
+pub mod raster;
 mod shade;
 
 use geometry::{prepare, triangles};
@@ -242,7 +243,7 @@ pub fn view_setup(scene: &Scene, w: u32, h: u32) -> Result<ViewSetup> {
                 width: wf,
             };
             // Depth range ±10⁶ units: nothing the text draws comes near it.
-            let clip = crate::projection::ortho_matrix(&win, &-1e6, &1e6);
+            let clip = crate::stages::projection::ortho_matrix(&win, &-1e6, &1e6);
             Ok(ViewSetup {
                 eye_from_world: rot,
                 clip_from_eye: clip,
@@ -257,11 +258,11 @@ pub fn view_setup(scene: &Scene, w: u32, h: u32) -> Result<ViewSetup> {
             near,
             far,
         } => {
-            let b = crate::camera::basis(camera, &mut NoTrace)?;
-            let v = crate::camera::view_matrix(&b, &camera.pe, &mut NoTrace)?;
+            let b = crate::stages::camera::basis(camera, &mut NoTrace)?;
+            let v = crate::stages::camera::view_matrix(&b, &camera.pe, &mut NoTrace)?;
             let aspect = aspect.unwrap_or(wf / hf);
-            let win = crate::window::window(fovy, &aspect, near, "near", &mut NoTrace)?;
-            let p = crate::projection::perspective_matrix(&win, near, far);
+            let win = crate::stages::window::window(fovy, &aspect, near, "near", &mut NoTrace)?;
+            let p = crate::stages::projection::perspective_matrix(&win, near, far);
             Ok(ViewSetup {
                 eye_from_world: v,
                 clip_from_eye: p,
@@ -338,7 +339,7 @@ pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
 /// Renders a scene into the buffers of a previous frame when it has the
 /// same size (as a real-time loop would: no fresh allocation per frame).
 pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Result<Frame> {
-    crate::scene::check_size(opt.width, opt.height)?;
+    crate::input::scene::check_size(opt.width, opt.height)?;
     let t0 = Instant::now();
     let vs = view_setup(scene, opt.width, opt.height)?;
     let n = (opt.width * opt.height) as usize;
@@ -397,7 +398,7 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
             material: p.material,
             lights: p.lights,
             shading: p.shading,
-            one_colour: matches!(obj.colors, crate::scene::Colors::One(_)),
+            one_colour: matches!(obj.colors, crate::input::scene::Colors::One(_)),
         });
     }
     tris.truncate(count);

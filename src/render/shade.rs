@@ -3,12 +3,12 @@
 //! per call at [`F32x8`] in the band pass, one at [`Fast32`] when a pixel
 //! is explained, with the same bits either way.
 
-use crate::lighting::{self, Light, LightKind, Material, Surface};
+use crate::input::scene::Shading;
 use crate::num::lanes::Wide;
 use crate::num::{F32x8, Fast32, Scalar};
-use crate::raster::{Tri, NONE};
-use crate::scene::Shading;
-use crate::trace::{NoTrace, Trace};
+use crate::render::raster::{Tri, NONE};
+use crate::stages::lighting::{self, Light, LightKind, Material, Surface};
+use crate::stages::trace::{NoTrace, Trace};
 use nalgebra::Vector3;
 
 use super::{Corner, Look};
@@ -61,7 +61,7 @@ fn lit<T: Scalar, Tr: Trace>(
 ) -> [T; 3] {
     let len = T::hypot3(&n[0], &n[1], &n[2]);
     let inv = len.if_gt(&T::zero(), || T::one() / len.clone(), T::one);
-    let n = crate::vec::scale(&n, &inv);
+    let n = crate::num::vec::scale(&n, &inv);
     let (o, i) = (T::zero(), T::one());
     // The tilt view's viewer is along +z; a camera is a local viewer at the
     // eye-space origin, V = norm(0 − P), which shade computes itself.
@@ -748,9 +748,9 @@ fn byte<T: Scalar>(x: &T) -> T {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lighting::Model;
-    use crate::rng::SplitMix64;
-    use crate::scene::Scene;
+    use crate::input::scene::Scene;
+    use crate::num::rng::SplitMix64;
+    use crate::stages::lighting::Model;
 
     /// The camera scene whose Phong batches take every branch (shared with
     /// tests/render.rs).
@@ -844,7 +844,7 @@ mod tests {
             width: f.width as usize,
         };
         let w = f.width as usize;
-        let rows = crate::raster::BAND;
+        let rows = crate::render::raster::BAND;
         let mut phong = 0;
         for (b, (want, id)) in f
             .rgb

@@ -83,3 +83,9 @@ pub(crate) fn format_surd(s: &Surd, unicode: bool) -> String {
         format!("{sign}{body}/{den}")
     }
 }
+
+impl std::fmt::Debug for Surd {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Surd({})", format_surd(self, false))
+    }
+}

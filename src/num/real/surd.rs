@@ -13,7 +13,6 @@
 use std::cmp::Ordering;
 use std::collections::btree_map::Entry;
 use std::collections::BTreeMap;
-use std::fmt;
 use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 use num_bigint::{BigInt, BigUint};
@@ -447,12 +446,6 @@ fn split_square_u128(mut m: u128, mut d: u64, mut step: u64) -> Option<(BigUint,
         }
     }
     Some((s, f))
-}
-
-impl fmt::Debug for Surd {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "Surd({})", super::format::format_surd(self, false))
-    }
 }
 
 impl PartialOrd for Surd {

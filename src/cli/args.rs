@@ -1,0 +1,376 @@
+//! The command-line arguments (SPEC §4): every flag of every command, as
+//! clap reads them. The only file besides the dispatch that knows clap; the
+//! choices of the layers below (precision, model, shading, ...) get their
+//! command-line names here.
+
+use crate::input::scene::{Normals, Shading};
+use crate::num::Precision;
+use crate::report::lang::Lang;
+use crate::stages::lighting::Model;
+use crate::tutor::generate::{Difficulty, Topic};
+use clap::builder::PossibleValue;
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use std::path::PathBuf;
+
+/// grafika — worked solutions for the 3D viewing pipeline and shading.
+#[derive(Parser, Debug)]
+#[command(name = "grafika", version, about, long_about = None, propagate_version = true)]
+pub struct Cli {
+    /// Output and precision options.
+    #[command(flatten)]
+    pub common: Common,
+    /// What to compute.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// Options every calculator command takes.
+#[derive(Args, Debug, Clone)]
+pub struct Common {
+    /// Arithmetic: exact (sums of surds, with decimals), f64 or f32.
+    #[arg(long, value_enum, default_value_t = Precision::Exact, global = true)]
+    pub precision: Precision,
+    /// Significant digits of the decimals shown.
+    #[arg(long, default_value_t = 4, global = true, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
+    /// Print one JSON object (SPEC §3) instead of the worked solution.
+    #[arg(long, global = true)]
+    pub json: bool,
+    /// The language of the words: id (Bahasa Indonesia) or en (default: GRAFIKA_LANG, then the locale).
+    #[arg(long, value_enum, global = true)]
+    pub lang: Option<Lang>,
+}
+
+/// The subcommands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Camera basis u, v, n from eye, look-at point and up vector.
+    Basis(CameraArgs),
+    /// View matrix and eye coordinates of world points.
+    View {
+        #[command(flatten)]
+        camera: CameraArgs,
+        /// A world point NAME=X,Y,Z (repeatable).
+        #[arg(long = "point", value_name = "NAME=X,Y,Z", allow_hyphen_values = true)]
+        points: Vec<String>,
+    },
+    /// Perspective or orthographic projection of eye-coordinate points.
+    Project(ProjectArgs),
+    /// Viewing window from fovy/aspect/near, and the viewport mapping.
+    Window(WindowArgs),
+    /// 3D line clipping with 6-bit outcodes (cross-checked by Liang–Barsky).
+    Clip(ClipArgs),
+    /// Lighting at one surface point: the text's models and Direct3D 9 Blinn–Phong.
+    Shade(ShadeArgs),
+    /// Run time against error: time per operation and error in ulps
+    /// against the exact path, per stage and precision.
+    Bench {
+        /// A few cases and passes only (seconds, for tests).
+        #[arg(long)]
+        quick: bool,
+        /// Random cases per stage (each stage adds about as many adversarial
+        /// ones); default 60, or 6 with --quick.
+        #[arg(long, value_parser = clap::value_parser!(u16).range(2..=5000))]
+        cases: Option<u16>,
+    },
+    /// A whole problem from a TOML file.
+    Solve {
+        /// The problem file.
+        file: PathBuf,
+    },
+    /// Mark a student's answers to a problem, and diagnose the mistakes.
+    Check(CheckArgs),
+    /// Generate problems, question sheets and answer keys.
+    Generate(GenerateArgs),
+    /// Render a scene file (TOML) to a PNG: flat, Gouraud or Phong shading.
+    Render(RenderArgs),
+}
+
+/// The camera flags.
+#[derive(Args, Debug)]
+pub struct CameraArgs {
+    /// Eye position Pe, X,Y,Z.
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub eye: String,
+    /// Look-at (reference) point Pr, X,Y,Z.
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub look: String,
+    /// Up vector Vup, X,Y,Z.
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub up: String,
+}
+
+/// The projection flags.
+#[derive(Args, Debug)]
+pub struct ProjectArgs {
+    /// Centre of projection at the origin, view plane z = D.
+    #[arg(long, allow_hyphen_values = true, value_name = "D")]
+    pub d: Option<String>,
+    /// Centre of projection at z = ZPRP on the z axis (general form, with --plane).
+    #[arg(long, allow_hyphen_values = true, value_name = "ZPRP")]
+    pub cop: Option<String>,
+    /// View plane z = ZVP (general form, with --cop).
+    #[arg(long, allow_hyphen_values = true, value_name = "ZVP")]
+    pub plane: Option<String>,
+    /// Orthographic projection (xp = x, yp = y, zp = 0).
+    #[arg(long)]
+    pub ortho: bool,
+    /// An eye-coordinate point NAME=X,Y,Z (repeatable).
+    #[arg(long = "point", value_name = "NAME=X,Y,Z", allow_hyphen_values = true)]
+    pub points: Vec<String>,
+}
+
+/// The window flags.
+#[derive(Args, Debug)]
+pub struct WindowArgs {
+    /// Vertical field of view (degrees; append `rad` for radians).
+    #[arg(long, allow_hyphen_values = true)]
+    pub fovy: String,
+    /// Aspect ratio width/height.
+    #[arg(long, allow_hyphen_values = true)]
+    pub aspect: String,
+    /// Distance to the near plane.
+    #[arg(long, allow_hyphen_values = true)]
+    pub near: String,
+    /// Distance to the far plane (adds the far-plane window).
+    #[arg(long, allow_hyphen_values = true)]
+    pub far: Option<String>,
+    /// Viewport size in pixels, WxH.
+    #[arg(long, value_name = "WxH")]
+    pub viewport: Option<String>,
+    /// A projected point NAME=X,Y on the near plane (repeatable; needs --viewport).
+    #[arg(long = "point", value_name = "NAME=X,Y", allow_hyphen_values = true)]
+    pub points: Vec<String>,
+}
+
+/// The clipping flags.
+#[derive(Args, Debug)]
+pub struct ClipArgs {
+    /// Box corner (xmin, ymin, zmin).
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub min: String,
+    /// Box corner (xmax, ymax, zmax).
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub max: String,
+    /// Segment start P0.
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub from: String,
+    /// Segment end P1.
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub to: String,
+}
+
+/// On or off (`--specular off`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, ValueEnum)]
+pub enum OnOff {
+    /// On.
+    #[default]
+    On,
+    /// Off.
+    Off,
+}
+
+/// The lighting flags (SPEC §4 and the Direct3D extras).
+#[derive(Args, Debug, Default)]
+pub struct ShadeArgs {
+    /// L, toward the light (one white directional light), X,Y,Z.
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub light: Option<String>,
+    /// N, the surface normal.
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub normal: Option<String>,
+    /// V, toward the viewer (default 0,0,1, the text's viewVector).
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub view: Option<String>,
+    /// Cs, the surface color, R,G,B in [0, 1].
+    #[arg(long, allow_hyphen_values = true, value_name = "R,G,B")]
+    pub color: Option<String>,
+    /// Ambient coefficient (default 0.4).
+    #[arg(long, allow_hyphen_values = true)]
+    pub ka: Option<String>,
+    /// Diffuse coefficient (default 0.6).
+    #[arg(long, allow_hyphen_values = true)]
+    pub kd: Option<String>,
+    /// Specular coefficient (default 0.7).
+    #[arg(long, allow_hyphen_values = true)]
+    pub ks: Option<String>,
+    /// Specular exponent n (default 4).
+    #[arg(long, allow_hyphen_values = true)]
+    pub shininess: Option<String>,
+    /// Lighting model (default phong).
+    #[arg(long, value_enum)]
+    pub model: Option<Model>,
+    /// Camera position Cp: local viewer, V = norm(Cp − Vp).
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub camera: Option<String>,
+    /// Surface point Vp in eye space (default the origin).
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
+    pub position: Option<String>,
+    /// Specular term on or off (Direct3D's D3DRS_SPECULARENABLE).
+    #[arg(long, value_enum, default_value_t = OnOff::On)]
+    pub specular: OnOff,
+    /// No specular when the light is behind the surface (cos α ≤ 0); the text's code adds it.
+    #[arg(long)]
+    pub specular_requires_lit: bool,
+    /// Global ambient light Ga, R,G,B.
+    #[arg(long, allow_hyphen_values = true, value_name = "R,G,B")]
+    pub global_ambient: Option<String>,
+    /// Lights (and a Direct3D material) from a TOML file.
+    #[arg(long, value_name = "FILE.toml")]
+    pub lights: Option<PathBuf>,
+}
+
+/// The `check` flags.
+#[derive(Args, Debug)]
+pub struct CheckArgs {
+    /// The problem file.
+    pub file: PathBuf,
+    /// The student's answers (TOML keyed like the JSON results), or a
+    /// directory of answer files, one per student.
+    #[arg(long, value_name = "FILE|DIR")]
+    pub answers: Option<PathBuf>,
+    /// Check the answers printed in the source (the file's `[printed]` table).
+    #[arg(long)]
+    pub answers_from_text: bool,
+    /// Relative tolerance (default 0.001, i.e. 0.1%).
+    #[arg(long, value_name = "R")]
+    pub tolerance: Option<f64>,
+    /// Minimum significant figures of a rounded decimal answer (default 2).
+    #[arg(long, value_name = "N")]
+    pub sig_figs: Option<u32>,
+    /// With a directory of answers: write a CSV summary to this file (`-` for stdout).
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+}
+
+/// The `render` flags.
+#[derive(Args, Debug, Clone)]
+pub struct RenderArgs {
+    /// The scene file (TOML, SPEC §6).
+    pub scene: PathBuf,
+    /// The PNG to write.
+    #[arg(short = 'o', long = "output", value_name = "IMAGE.png")]
+    pub output: PathBuf,
+    /// Image width in pixels (default: the scene's).
+    #[arg(long)]
+    pub width: Option<u32>,
+    /// Image height in pixels (default: the scene's).
+    #[arg(long)]
+    pub height: Option<u32>,
+    /// Shading (default: the scene's).
+    #[arg(long, value_enum)]
+    pub shading: Option<Shading>,
+    /// Vertex normals: `average` of the adjacent faces, or `position` as the
+    /// text's draw3Dcg does (right only for a sphere at the origin).
+    #[arg(long, value_enum)]
+    pub normals: Option<Normals>,
+    /// Print what was drawn and skipped, and the time of each stage.
+    #[arg(long)]
+    pub stats: bool,
+    /// Explain one pixel: column X from the left, row Y from the top.
+    #[arg(long, value_name = "X,Y")]
+    pub explain_pixel: Option<String>,
+    /// Render N times and report the median frame time.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=10000))]
+    pub repeat: u32,
+    /// Worker threads (default: one per core).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
+    pub threads: Option<u32>,
+}
+
+/// The format of the question sheet and the key.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    /// Only the problem files and the answer-key files (TOML).
+    Toml,
+    /// questions.md and key.md.
+    Md,
+    /// questions.tex and key.tex (plain pdflatex).
+    Latex,
+    /// exam.json (statements, answers, worked steps).
+    Json,
+}
+
+/// The `generate` flags.
+#[derive(Args, Debug, Clone)]
+pub struct GenerateArgs {
+    /// The topic; several, comma-separated, alternate through the exam.
+    #[arg(long, value_enum, value_delimiter = ',', required = true)]
+    pub topic: Vec<Topic>,
+    /// Problems per exam.
+    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=500))]
+    pub count: u32,
+    /// The seed: the same seed gives the same files, byte for byte.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// How nice the numbers are.
+    #[arg(long, value_enum, default_value_t = Difficulty::Medium)]
+    pub difficulty: Difficulty,
+    /// The format of the question sheet and key.
+    #[arg(long, value_enum, default_value_t = Format::Md)]
+    pub format: Format,
+    /// The output directory (created if needed).
+    #[arg(long)]
+    pub out: PathBuf,
+    /// Versions of the exam (one per student), each with its own key.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=500))]
+    pub variants: u32,
+}
+
+/// Gives a type of a lower layer its command-line choices: each variant's
+/// name as typed and its help.
+macro_rules! choices {
+    ($ty:ident { $($variant:ident => $name:literal : $help:literal),* $(,)? }) => {
+        impl ValueEnum for $ty {
+            fn value_variants<'a>() -> &'a [Self] {
+                &[$($ty::$variant),*]
+            }
+            fn to_possible_value(&self) -> Option<PossibleValue> {
+                Some(match self {
+                    $($ty::$variant => PossibleValue::new($name).help($help)),*
+                })
+            }
+        }
+    };
+}
+
+choices!(Precision {
+    Exact => "exact": "Exact sums of surds where the mathematics is exact, marked ≈ otherwise",
+    F64 => "f64": "IEEE double precision with stable formulas",
+    F32 => "f32": "IEEE single precision with stable formulas",
+});
+choices!(Lang {
+    Id => "id": "Bahasa Indonesia",
+    En => "en": "English",
+});
+choices!(Model {
+    Ambient => "ambient": "Ambient only: ka·Cs",
+    Diffuse => "diffuse": "Diffuse scattering only: kd·max(cos α, 0)·Cs",
+    Specular => "specular": "Specular reflection only: ks·max(cos β, 0)ⁿ·white",
+    Lambert => "lambert": "Lambert's law: diffuse + ambient",
+    Phong => "phong": "The Phong model: diffuse + specular + ambient (the text's default)",
+    Blinn => "blinn": "Blinn–Phong (Direct3D 9): the specular term uses N·H",
+});
+choices!(Shading {
+    Flat => "flat": "One lighting evaluation per face, with the face normal",
+    Gouraud => "gouraud": "Lighting per vertex, colours interpolated",
+    Phong => "phong": "Normals interpolated, lighting per pixel",
+});
+choices!(Normals {
+    Average => "average": "The normalised average of the adjacent face normals",
+    Position => "position": "The transformed vertex position, normalised, as the text's draw3Dcg",
+});
+choices!(Topic {
+    Basis => "basis": "The camera basis u, v, n",
+    View => "view": "The basis and eye coordinates of points",
+    Project => "project": "Projection onto the near plane",
+    Window => "window": "The viewing window from fovy, aspect and near",
+    Clip => "clip": "Line clipping with outcodes",
+    Shade => "shade": "Lighting at one point",
+    Pipeline => "pipeline": "The whole chain: view, projection, window, viewport",
+});
+choices!(Difficulty {
+    Easy => "easy": "Integer norms, rational answers",
+    Medium => "medium": "One surd in the answers",
+    Hard => "hard": "General",
+});

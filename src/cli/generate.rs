@@ -1,0 +1,83 @@
+//! `grafika generate`: draws the exams (tutor), has them written as sheets
+//! and keys (report), and writes the files.
+
+use crate::cli::args::{Format, GenerateArgs};
+use crate::error::{Error, Result};
+use crate::report::doc::Doc;
+use crate::report::sheets::{exam_json, exam_title, key_title, sheets, written_summary};
+use crate::report::Style;
+use crate::tutor::generate::{exam, key_toml, variant_seed, Generated};
+use serde_json::json;
+use std::path::{Path, PathBuf};
+
+/// Runs `grafika generate`; returns what to print.
+pub fn run(a: &GenerateArgs, json: bool, style: &Style) -> Result<String> {
+    let files = write_exams(a, style)?;
+    Ok(if json {
+        let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
+        let j = json!({ "command": "generate", "seed": a.seed, "files": names });
+        serde_json::to_string_pretty(&j).unwrap_or_default() + "\n"
+    } else {
+        written_summary(&files, a.variants, a.count, &a.topic, a.seed, &a.out)
+    })
+}
+
+/// Generates and writes every variant; returns the files written.
+pub fn write_exams(a: &GenerateArgs, style: &Style) -> Result<Vec<PathBuf>> {
+    let mut files = Vec::new();
+    for v in 0..a.variants {
+        let dir = if a.variants == 1 {
+            a.out.clone()
+        } else {
+            a.out.join(format!("variant-{:02}", v + 1))
+        };
+        std::fs::create_dir_all(&dir)
+            .map_err(|e| Error::new("out", format!("cannot create {}: {e}", dir.display())))?;
+        let exam = exam(&a.topic, a.difficulty, a.count, variant_seed(a.seed, v))?;
+        files.extend(write_exam(&dir, a, v + 1, &exam, style)?);
+    }
+    Ok(files)
+}
+
+/// Writes one exam's files: the problem and key files, then the sheets in
+/// the chosen format.
+fn write_exam(
+    dir: &Path,
+    a: &GenerateArgs,
+    variant: u32,
+    exam: &[Generated],
+    style: &Style,
+) -> Result<Vec<PathBuf>> {
+    let mut files = Vec::new();
+    let mut put = |name: String, text: String| -> Result<()> {
+        let path = dir.join(name);
+        std::fs::write(&path, text)
+            .map_err(|e| Error::new("out", format!("cannot write {}: {e}", path.display())))?;
+        files.push(path);
+        Ok(())
+    };
+    for (i, g) in exam.iter().enumerate() {
+        put(format!("problem-{:02}.toml", i + 1), g.toml.clone())?;
+        put(format!("problem-{:02}.key.toml", i + 1), key_toml(g))?;
+    }
+    let numbered = (a.variants > 1).then_some(variant);
+    let title = exam_title(&a.topic, a.difficulty, a.seed, numbered);
+    let doc = match a.format {
+        Format::Toml => return Ok(files),
+        Format::Json => {
+            let j = exam_json(&title, a.seed, variant, exam);
+            put(
+                "exam.json".into(),
+                serde_json::to_string_pretty(&j).unwrap_or_default() + "\n",
+            )?;
+            return Ok(files);
+        }
+        Format::Md => Doc::Markdown,
+        Format::Latex => Doc::Latex,
+    };
+    let ext = if doc == Doc::Markdown { "md" } else { "tex" };
+    let (q, k) = sheets(doc, exam, style);
+    put(format!("questions.{ext}"), doc.document(&title, &q))?;
+    put(format!("key.{ext}"), doc.document(&key_title(&title), &k))?;
+    Ok(files)
+}

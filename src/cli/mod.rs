@@ -1,0 +1,176 @@
+//! The command line (SPEC §4): clap definitions, dispatch by precision, and
+//! the single place where a report or an error is printed.
+
+pub mod args;
+pub mod calc;
+pub mod check;
+pub mod generate;
+pub mod render;
+
+use crate::error::{Error, Result};
+use crate::num::Precision;
+use crate::report::lang::Lang;
+use crate::report::Style;
+use crate::stages::trace::Report;
+use args::{CameraArgs, Cli, ClipArgs, Command, ProjectArgs, ShadeArgs, WindowArgs};
+use clap::Parser;
+use std::ffi::OsString;
+
+/// Runs a generic command at the precision asked for.
+macro_rules! at_precision {
+    ($p:expr, $f:ident ( $($arg:expr),* )) => {
+        match $p {
+            Precision::Exact => $f::<crate::num::Real>($($arg),*),
+            Precision::F64 => $f::<f64>($($arg),*),
+            Precision::F32 => $f::<f32>($($arg),*),
+        }
+    };
+}
+
+/// Runs one parsed command line.
+pub fn run(cli: &Cli) -> Result<Report> {
+    let p = cli.common.precision;
+    match &cli.command {
+        Command::Basis(c) => at_precision!(p, basis(c)),
+        Command::View { camera, points } => at_precision!(p, view(camera, points)),
+        Command::Project(a) => at_precision!(p, project(a)),
+        Command::Window(a) => at_precision!(p, window(a)),
+        Command::Clip(a) => at_precision!(p, clip(a)),
+        Command::Shade(a) => at_precision!(p, shade(a)),
+        Command::Solve { file } => at_precision!(p, solve(file)),
+        Command::Check(_) | Command::Generate(_) | Command::Bench { .. } => Err(Error::new(
+            "command",
+            "check, generate and bench print their own output: use main_with_args",
+        )),
+        // The renderer computes at f32 (the calculator's precisions are for explaining).
+        Command::Render(a) => crate::cli::render::run(a),
+    }
+}
+
+fn basis<T: crate::num::Scalar>(c: &CameraArgs) -> Result<Report> {
+    calc::basis::<T>(c)
+}
+fn view<T: crate::num::Scalar>(c: &CameraArgs, pts: &[String]) -> Result<Report> {
+    calc::view::<T>(c, pts)
+}
+fn project<T: crate::num::Scalar>(a: &ProjectArgs) -> Result<Report> {
+    calc::project::<T>(a)
+}
+fn window<T: crate::num::Scalar>(a: &WindowArgs) -> Result<Report> {
+    calc::window::<T>(a)
+}
+fn clip<T: crate::num::Scalar>(a: &ClipArgs) -> Result<Report> {
+    calc::clip::<T>(a)
+}
+fn shade<T: crate::num::Scalar>(a: &ShadeArgs) -> Result<Report> {
+    calc::shade::<T>(a)
+}
+fn solve<T: crate::num::Scalar>(file: &std::path::Path) -> Result<Report> {
+    crate::tutor::solve::solve_file::<T>(file)
+}
+
+/// Parses the arguments, runs, prints; returns the exit status (0, or 2 for
+/// any error).
+pub fn main_with_args(args: Vec<OsString>) -> i32 {
+    let wants_json = args.iter().any(|a| a == "--json");
+    let cli = match Cli::try_parse_from(&args) {
+        Ok(c) => c,
+        Err(e) => return clap_error(e, wants_json),
+    };
+    let style = style_of(&cli);
+    let json = cli.common.json;
+    let printed = match &cli.command {
+        Command::Bench { quick, cases } => Ok(bench(*quick, *cases, json)),
+        Command::Check(a) => check::run(a, json, &style),
+        Command::Generate(a) => generate::run(a, json, &style),
+        _ => run(&cli).map(|report| report_text(&report, json, &style)),
+    };
+    match printed {
+        Ok(text) => {
+            print!("{text}");
+            0
+        }
+        Err(e) => report_error(&e, json, None),
+    }
+}
+
+/// How numbers and words are written: `--digits`, exact or not, `--lang`
+/// (else the environment).
+fn style_of(cli: &Cli) -> Style {
+    let lang = cli
+        .common
+        .lang
+        .unwrap_or_else(|| Lang::from_env(|k| std::env::var(k).ok()));
+    let exact = cli.common.precision == Precision::Exact;
+    Style::new(cli.common.digits as usize, exact, lang)
+}
+
+/// A report as JSON or as the worked solution; its warnings go to stderr.
+fn report_text(report: &Report, json: bool, style: &Style) -> String {
+    for w in &report.warnings {
+        eprintln!("warning: {w}");
+    }
+    if json {
+        serde_json::to_string_pretty(&report.to_json()).unwrap_or_default() + "\n"
+    } else {
+        report.to_text(style)
+    }
+}
+
+/// `grafika bench`: the measurement as a table or JSON.
+fn bench(quick: bool, cases: Option<u16>, json: bool) -> String {
+    let mut set = if quick {
+        crate::bench::Settings::quick()
+    } else {
+        crate::bench::Settings::full()
+    };
+    if let Some(n) = cases {
+        set.cases = n as usize;
+    }
+    let (inp, rows) = crate::bench::measure(&set);
+    if json {
+        let j = crate::report::bench::to_json(&inp, &rows);
+        serde_json::to_string_pretty(&j).unwrap_or_default() + "\n"
+    } else {
+        crate::report::bench::table(&inp, &rows)
+    }
+}
+
+/// A command line clap refused: help and version are printed as asked
+/// (exit 0); anything else is an error naming the argument (exit 2).
+fn clap_error(e: clap::Error, wants_json: bool) -> i32 {
+    use clap::error::{ContextKind, ErrorKind};
+    match e.kind() {
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
+            let _ = e.print();
+            0
+        }
+        ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            let _ = e.print();
+            2
+        }
+        kind => {
+            let field = e
+                .get(ContextKind::InvalidArg)
+                .map(|v| v.to_string())
+                .unwrap_or_else(|| "arguments".to_string());
+            let err = Error::new(field, kind.to_string());
+            report_error(&err, wants_json, Some(e.render().to_string()))
+        }
+    }
+}
+
+/// Prints an error (stderr; and JSON on stdout with `--json`), returns 2.
+fn report_error(e: &Error, json: bool, long: Option<String>) -> i32 {
+    match long {
+        Some(text) => eprint!("{text}"),
+        None => eprintln!("error: {e}"),
+    }
+    if json {
+        println!(
+            "{}",
+            serde_json::json!({ "error": { "field": e.field, "message": e.message } })
+        );
+    }
+    2
+}

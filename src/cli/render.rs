@@ -1,0 +1,386 @@
+//! `grafika render`: scene file and flags → frame(s) → PNG, with `--stats`,
+//! `--repeat` timing and `--explain-pixel` (the worked steps for one pixel,
+//! lighting included, from the same `lighting::shade` the calculator uses).
+
+use crate::cli::args::RenderArgs;
+use crate::error::{Error, Result};
+use crate::input::scene::{Scene, Shading};
+use crate::render::{self, Frame, Options, Stats};
+use crate::stages::trace::Report;
+use crate::stages::trace::{Recorder, Step, Trace, Val};
+use nalgebra::Vector3;
+use serde_json::json;
+use std::time::{Duration, Instant};
+
+/// Runs `render`.
+pub fn run(a: &RenderArgs) -> Result<Report> {
+    let scene = Scene::read(&a.scene)?;
+    let mut opt = Options::of(&scene);
+    opt.shading = a.shading.unwrap_or(opt.shading);
+    opt.force_shading = a.shading.is_some();
+    opt.normals = a.normals.unwrap_or(opt.normals);
+    opt.width = a.width.unwrap_or(opt.width);
+    opt.height = a.height.unwrap_or(opt.height);
+    opt.progress = a.repeat == 1;
+    let pixel = a.explain_pixel.as_deref().map(parse_pixel).transpose()?;
+    if let Some((x, y)) = pixel {
+        if x >= opt.width || y >= opt.height {
+            return Err(Error::new(
+                "--explain-pixel",
+                format!(
+                    "({x}, {y}) is outside the {}x{} image",
+                    opt.width, opt.height
+                ),
+            ));
+        }
+    }
+    let go = || -> Result<(Frame, Vec<Stats>)> {
+        let mut times = Vec::new();
+        let mut last = None;
+        for _ in 0..a.repeat {
+            let f = render::render_reusing(&scene, &opt, last.take())?;
+            times.push(f.stats.clone());
+            last = Some(f);
+        }
+        let f = last.ok_or_else(|| Error::new("--repeat", "nothing rendered"))?;
+        Ok((f, times))
+    };
+    let (frame, runs) = match a.threads {
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n as usize)
+            .build()
+            .map_err(|e| Error::new("--threads", e.to_string()))?
+            .install(go)?,
+        None => go()?,
+    };
+    let t = Instant::now();
+    render::write_png(&frame, &a.output)?;
+    let encode = t.elapsed();
+
+    let median = |f: &dyn Fn(&Stats) -> Duration| {
+        let mut v: Vec<Duration> = runs.iter().map(f).collect();
+        v.sort();
+        v[v.len() / 2]
+    };
+    let frame_t = median(&|s| s.frame());
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    let st = &frame.stats;
+    let mpix = (opt.width as f64 * opt.height as f64) / frame_t.as_secs_f64() / 1e6;
+    let mut rec = Recorder::new();
+    if let Some((x, y)) = pixel {
+        explain(&frame, &scene, x, y, &mut rec);
+    }
+    let shading = format!("{:?}", opt.shading).to_lowercase();
+    let mut result = vec![
+        (
+            "image".to_string(),
+            Val::text(a.output.display().to_string()),
+        ),
+        (
+            "size".to_string(),
+            Val::text(format!("{}x{}", opt.width, opt.height)),
+        ),
+        ("shading".to_string(), Val::text(shading.clone())),
+        (
+            "triangles drawn".to_string(),
+            Val::Num(crate::num::Scalar::shown(&(st.drawn as f64))),
+        ),
+        (
+            "pixels shaded".to_string(),
+            Val::Num(crate::num::Scalar::shown(&(st.pixels_shaded as f64))),
+        ),
+    ];
+    let label = if a.repeat > 1 {
+        format!("frame time (median of {})", a.repeat)
+    } else {
+        "frame time".to_string()
+    };
+    result.push((
+        label,
+        Val::text(format!(
+            "{:.2} ms ({mpix:.1} Mpixels/s); PNG encoding {:.2} ms",
+            ms(frame_t),
+            ms(encode)
+        )),
+    ));
+    let mut notes = Vec::new();
+    if a.stats {
+        notes.push(stats_text(st, &runs, opt.shading, &median, encode));
+    }
+    let mut extra = serde_json::Map::new();
+    extra.insert(
+        "stats".into(),
+        json!({
+            "triangles_in": st.tris_in, "culled": st.culled, "rejected": st.rejected,
+            "objects_rejected": st.objects_rejected, "objects_inside": st.objects_inside,
+            "clipped": st.clipped, "drawn": st.drawn, "no_pixels": st.no_pixels,
+            "pixels_shaded": st.pixels_shaded, "lighting_evaluations": st.lighting_evals,
+            "lights_skipped": st.lights_skipped, "specular_skipped": st.specular_skipped,
+            "frame_ms": ms(frame_t), "geometry_ms": ms(median(&|s| s.geometry)),
+            "binning_ms": ms(median(&|s| s.binning)), "raster_ms": ms(median(&|s| s.raster)),
+            "shading_ms": ms(median(&|s| s.shading)), "bands_ms": ms(median(&|s| s.pass)), "png_ms": ms(encode),
+            "repeat": a.repeat, "mpixels_per_s": mpix,
+        }),
+    );
+    Ok(Report {
+        command: "render".into(),
+        input: json!({
+            "scene": a.scene.display().to_string(), "output": a.output.display().to_string(),
+            "width": opt.width, "height": opt.height, "shading": shading,
+            "normals": format!("{:?}", opt.normals).to_lowercase(),
+            "explain_pixel": pixel.map(|(x, y)| [x, y]),
+        }),
+        result,
+        steps: rec.steps,
+        warnings: rec.warnings,
+        notes,
+        precision: crate::num::Precision::F32,
+        extra,
+        comparison: None,
+        source_notes: vec![],
+    })
+}
+
+/// The median over the runs of one stage's time.
+type Median<'a> = dyn Fn(&dyn Fn(&Stats) -> Duration) -> Duration + 'a;
+
+fn stats_text(
+    st: &Stats,
+    runs: &[Stats],
+    shading: Shading,
+    median: &Median<'_>,
+    encode: Duration,
+) -> String {
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    let mut s = String::from("Stats\n");
+    let mut line = |k: &str, v: String| s.push_str(&format!("  {k:<34} {v}\n"));
+    line("triangles in", st.tris_in.to_string());
+    line("  back faces culled (closed meshes)", st.culled.to_string());
+    line("  rejected by outcodes", st.rejected.to_string());
+    line("  clipped (crossing a plane)", st.clipped.to_string());
+    line("  set up and rasterized", st.drawn.to_string());
+    line("  covering no pixel centre", st.no_pixels.to_string());
+    line(
+        "objects rejected whole (bounding box)",
+        st.objects_rejected.to_string(),
+    );
+    line(
+        "objects inside whole (no clip tests)",
+        st.objects_inside.to_string(),
+    );
+    line("pixels shaded", st.pixels_shaded.to_string());
+    line("lighting evaluations", st.lighting_evals.to_string());
+    line(
+        "per-pixel lighting",
+        if shading == Shading::Phong {
+            "yes (Phong)".into()
+        } else {
+            format!("none ({shading:?} shading)").to_lowercase()
+        },
+    );
+    line(
+        "lights skipped (out of range)",
+        st.lights_skipped.to_string(),
+    );
+    line(
+        "objects without specular work",
+        st.specular_skipped.to_string(),
+    );
+    let n = runs.len();
+    let what = if n > 1 {
+        format!(" (median of {n})")
+    } else {
+        String::new()
+    };
+    line(
+        &format!("time: geometry{what}"),
+        format!("{:.2} ms", ms(median(&|s| s.geometry))),
+    );
+    line(
+        "time: binning",
+        format!("{:.2} ms", ms(median(&|s| s.binning))),
+    );
+    line(
+        "time: bands (raster + shading)",
+        format!("{:.2} ms", ms(median(&|s| s.pass))),
+    );
+    line(
+        "  thread time: raster",
+        format!("{:.2} ms", ms(median(&|s| s.raster))),
+    );
+    line(
+        "  thread time: shading",
+        format!("{:.2} ms", ms(median(&|s| s.shading))),
+    );
+    line(
+        "time: frame",
+        format!("{:.2} ms", ms(median(&|s| s.frame()))),
+    );
+    line("time: PNG encoding", format!("{:.2} ms", ms(encode)));
+    s
+}
+
+fn parse_pixel(s: &str) -> Result<(u32, u32)> {
+    let bad = || {
+        Error::new(
+            "--explain-pixel",
+            format!("expected X,Y (whole pixel numbers), got `{s}`"),
+        )
+    };
+    let (x, y) = s.split_once(',').ok_or_else(bad)?;
+    Ok((
+        x.trim().parse().map_err(|_| bad())?,
+        y.trim().parse().map_err(|_| bad())?,
+    ))
+}
+
+fn v3(c: &[f32], at: usize) -> Vector3<f32> {
+    Vector3::new(c[at], c[at + 1], c[at + 2])
+}
+
+/// The worked steps for pixel (x, y).
+pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
+    rec.section(format!("Pixel ({x}, {y})"));
+    let k = (y * f.width + x) as usize;
+    let id = f.ids[k];
+    if id == crate::render::raster::NONE {
+        rec.step(|| {
+            Step::new(
+                "Which triangle covers the pixel",
+                "pixel centre (x + ½, y + ½) inside a triangle, nearest wins",
+            )
+            .res("triangle", Val::text("none"))
+            .note("no triangle covers the pixel centre: it keeps the background colour")
+        });
+        return;
+    }
+    let t = &f.tris[id as usize];
+    let c = &f.corners[id as usize];
+    let obj = &scene.objects[t.obj as usize];
+    rec.step(|| {
+        let mut s = Step::new("Which triangle covers the pixel", "edge functions E₀, E₁, E₂ ≥ 0 at the centre (top-left rule on edges); nearest depth wins")
+            .val("object", Val::text(obj.name.clone()))
+            .val("polygon face", Val::text(t.face.to_string()));
+        for (n, v) in t.verts.iter().enumerate() {
+            s = s.val(format!("screen vertex {n} (x, y)"), Val::vec2(&v.x, &v.y));
+        }
+        s.res("triangle", Val::text(format!("#{id}")))
+    });
+    let l = t.lambda(x, y);
+    let m = t.mu(x, y);
+    let z = t.depth(x, y);
+    rec.step(|| {
+        Step::new(
+            "Depth at the pixel (z-buffer)",
+            "z = λ₀z₀ + λ₁z₁ + λ₂z₂ (z/w is linear on the screen); smaller is nearer",
+        )
+        .val(
+            "z at the vertices",
+            Val::vec3(&Vector3::new(t.verts[0].z, t.verts[1].z, t.verts[2].z)),
+        )
+        .res("z", Val::num(&z))
+        .note("the nearest of all triangles covering this pixel")
+    });
+    rec.step(|| {
+        Step::new(
+            "Barycentric coordinates",
+            "λₖ = Eₖ(centre)/area on the screen;  perspective-correct μₖ = (λₖ/wₖ) / Σ λₘ/wₘ",
+        )
+        .val("λ", Val::vec3(&Vector3::new(l[0], l[1], l[2])))
+        .val(
+            "1/w",
+            Val::vec3(&Vector3::new(t.inv_w[0], t.inv_w[1], t.inv_w[2])),
+        )
+        .res("μ", Val::vec3(&Vector3::new(m[0], m[1], m[2])))
+    });
+    let at = |i: usize| m[0] * c[0][i] + m[1] * c[1][i] + m[2] * c[2][i];
+    let look = &f.looks[t.obj as usize];
+    let (mat, lights) = (&look.material, &look.lights);
+    match look.shading {
+        Shading::Flat => {
+            rec.step(|| {
+                Step::new(
+                    "Flat shading: one colour per face",
+                    "colour = shade(face normal N, face centre)",
+                )
+                .val("N (eye space)", Val::vec3(&v3(&c[0], 3)))
+                .val("face centre", Val::vec3(&v3(&c[0], 6)))
+                .val("surface colour", Val::vec3(&v3(&c[0], 9)))
+            });
+            rec.section("Lighting of the face (lighting::shade)");
+            render::light_at(
+                mat,
+                lights,
+                [c[0][9], c[0][10], c[0][11]],
+                v3(&c[0], 3),
+                v3(&c[0], 6),
+                f.ortho,
+                rec,
+            );
+        }
+        Shading::Gouraud => {
+            for (n, corner) in c.iter().enumerate() {
+                rec.section(format!("Lighting of vertex {n} (lighting::shade)"));
+                render::light_at(
+                    mat,
+                    lights,
+                    [corner[9], corner[10], corner[11]],
+                    v3(corner, 3),
+                    v3(corner, 6),
+                    f.ortho,
+                    rec,
+                );
+            }
+            rec.section(format!("Pixel ({x}, {y})"));
+            rec.step(|| {
+                Step::new(
+                    "Gouraud: interpolate the vertex colours",
+                    "C = μ₀C₀ + μ₁C₁ + μ₂C₂",
+                )
+                .val("C₀", Val::vec3(&v3(&c[0], 0)))
+                .val("C₁", Val::vec3(&v3(&c[1], 0)))
+                .val("C₂", Val::vec3(&v3(&c[2], 0)))
+                .res("C", Val::vec3(&Vector3::new(at(0), at(1), at(2))))
+            });
+        }
+        Shading::Phong => {
+            // The values the renderer lights the pixel with: the same sums,
+            // evaluated as planes of a/w over the screen divided by 1/w.
+            let [n, p, col] = render::phong_attributes(t, c, x, y);
+            rec.step(|| {
+                Step::new(
+                    "Phong shading: interpolate normal, position and colour",
+                    "N = Σ μₖNₖ,  P = Σ μₖPₖ,  C = Σ μₖCₖ  (as Σ λₖaₖ/wₖ ÷ Σ λₖ/wₖ)",
+                )
+                .val(
+                    "N₀, N₁, N₂",
+                    Val::List(c.iter().map(|k| Val::vec3(&v3(k, 3))).collect()),
+                )
+                .res("N", Val::vec3(&Vector3::new(n[0], n[1], n[2])))
+                .res("P (eye space)", Val::vec3(&Vector3::new(p[0], p[1], p[2])))
+                .res("C", Val::vec3(&Vector3::new(col[0], col[1], col[2])))
+            });
+            rec.section("Lighting of the pixel (lighting::shade)");
+            render::pixel_color(t, c, x, y, &f.looks, f.ortho, rec);
+        }
+    }
+    rec.section(format!("Pixel ({x}, {y})"));
+    let px = &f.rgb[3 * k..3 * k + 3];
+    let col = render::pixel_color(
+        t,
+        c,
+        x,
+        y,
+        &f.looks,
+        f.ortho,
+        &mut crate::stages::trace::NoTrace,
+    );
+    rec.step(|| {
+        Step::new("Pixel colour", "8-bit value = round(255 · clamp(C, 0, 1))")
+            .val("C", Val::vec3(&Vector3::new(col[0], col[1], col[2])))
+            .res(
+                "RGB",
+                Val::text(format!("({}, {}, {})", px[0], px[1], px[2])),
+            )
+    });
+}

@@ -1,0 +1,258 @@
+//! Problem files (SPEC §5): the TOML schema, read with line and column in
+//! every syntax error, into plain expressions that any precision evaluates.
+
+use crate::error::{Error, Result};
+use crate::input::fields::{toml_error, AngleIn, Num, Vec3In};
+use serde::de::{self, Deserializer};
+use serde::Deserialize;
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// `[camera]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CameraIn {
+    /// Pe.
+    pub eye: Vec3In,
+    /// Pr.
+    pub look: Vec3In,
+    /// Vup.
+    pub up: Vec3In,
+}
+
+/// `[perspective]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PerspectiveIn {
+    /// Near-plane distance.
+    pub near: Option<Num>,
+    /// Far-plane distance.
+    pub far: Option<Num>,
+    /// Vertical field of view (degrees; a string ending in `rad` for radians).
+    pub fovy: Option<AngleIn>,
+    /// width / height.
+    pub aspect: Option<Num>,
+    /// [W, H] pixels.
+    pub viewport: Option<[Num; 2]>,
+    /// The projection plane z = d (default −near).
+    pub d: Option<Num>,
+}
+
+/// A segment end: coordinates `[x, y, z]`, or the name of a point in
+/// `[points]` (`from = "A"`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum PointRef {
+    /// Coordinates.
+    At(Box<Vec3In>),
+    /// A point of the problem, by name.
+    Named(String),
+}
+
+impl<'de> Deserialize<'de> for PointRef {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<PointRef, D::Error> {
+        struct V;
+        impl<'de> de::Visitor<'de> for V {
+            type Value = PointRef;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("[x, y, z] or the name of a point in [points]")
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> std::result::Result<PointRef, E> {
+                Ok(PointRef::Named(v.to_string()))
+            }
+            fn visit_seq<A: de::SeqAccess<'de>>(
+                self,
+                seq: A,
+            ) -> std::result::Result<PointRef, A::Error> {
+                let v: Vec3In =
+                    Deserialize::deserialize(de::value::SeqAccessDeserializer::new(seq))?;
+                Ok(PointRef::At(Box::new(v)))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+/// One `[[clip.segment]]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SegmentIn {
+    /// P0.
+    pub from: PointRef,
+    /// P1.
+    pub to: PointRef,
+}
+
+/// `[clip]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ClipIn {
+    /// (xmin, ymin, zmin).
+    pub min: Vec3In,
+    /// (xmax, ymax, zmax).
+    pub max: Vec3In,
+    /// The segments to clip.
+    #[serde(default)]
+    pub segment: Vec<SegmentIn>,
+}
+
+/// One `[[errata]]` entry: where the source's printed answer is wrong, and why.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ErratumIn {
+    /// The result key (`project.points.B`).
+    pub key: String,
+    /// The reason.
+    pub why: String,
+}
+
+/// `[check]`: how `grafika check` marks answers to this problem.
+#[derive(Clone, Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CheckIn {
+    /// Relative tolerance (default 0.001).
+    pub tolerance: Option<f64>,
+    /// Minimum significant figures of a rounded decimal answer (default 2).
+    pub sig_figs: Option<u32>,
+    /// The answer keys expected (default: every answer the problem asks for).
+    pub keys: Option<Vec<String>>,
+}
+
+/// A whole problem file.
+#[derive(Clone, Debug, Deserialize)]
+pub struct ProblemIn {
+    /// The problem's title.
+    pub title: String,
+    /// Where it comes from.
+    pub source: Option<String>,
+    /// The statement, as a student reads it.
+    pub statement: Option<String>,
+    /// The parts asked for; default: all the data allow.
+    pub ask: Option<Vec<String>>,
+    /// The camera.
+    pub camera: Option<CameraIn>,
+    /// The perspective set-up.
+    pub perspective: Option<PerspectiveIn>,
+    /// World points, in file order.
+    #[serde(default)]
+    pub points: toml::Table,
+    /// A clipping box and segments.
+    pub clip: Option<ClipIn>,
+    /// The lighting problem (see the shade command).
+    pub shade: Option<crate::input::lights::ShadeIn>,
+    /// Lights for the lighting problem.
+    #[serde(default)]
+    pub light: Vec<crate::input::lights::LightIn>,
+    /// Ga, the global ambient light of the lighting problem.
+    pub global_ambient: Option<Vec3In>,
+    /// The answers printed in the source, keyed like the JSON results.
+    #[serde(default)]
+    pub printed: toml::Table,
+    /// Where and why the printed answers are wrong.
+    #[serde(default)]
+    pub errata: Vec<ErratumIn>,
+    /// Settings for `grafika check` (tolerance, significant figures, the answers expected).
+    pub check: Option<CheckIn>,
+    /// Remarks on the source beyond single answers (misprinted rules).
+    #[serde(default)]
+    pub source_notes: Vec<String>,
+    /// Any other key: kept for tools, ignored by solve.
+    #[serde(flatten)]
+    pub other: BTreeMap<String, toml::Value>,
+}
+
+/// The parts a problem can ask for, in the order solve runs them.
+pub const PARTS: [&str; 6] = ["view", "project", "window", "viewport", "clip", "shade"];
+
+impl ProblemIn {
+    /// Parses a problem from TOML text; syntax and type errors carry the line
+    /// and column (`file:line:col`).
+    pub fn parse(text: &str, origin: &str) -> Result<ProblemIn> {
+        let p: ProblemIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
+        if let Some(ask) = &p.ask {
+            for a in ask {
+                if !PARTS.contains(&a.as_str()) {
+                    return Err(Error::new(
+                        "ask",
+                        format!("unknown part `{a}`; the parts are {}", PARTS.join(", ")),
+                    ));
+                }
+            }
+        }
+        Ok(p)
+    }
+
+    /// Reads and parses a problem file.
+    pub fn read(path: &Path) -> Result<ProblemIn> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| Error::new("file", format!("cannot read {}: {e}", path.display())))?;
+        ProblemIn::parse(&text, &path.display().to_string())
+    }
+
+    /// The points in file order, each parsed.
+    pub fn points(&self) -> Result<Vec<(String, Vec3In)>> {
+        self.points
+            .iter()
+            .map(|(name, v)| {
+                let arr: Vec3In = v.clone().try_into().map_err(|e: toml::de::Error| {
+                    Error::new(
+                        format!("points.{name}"),
+                        format!("expected [x, y, z]: {}", e.message()),
+                    )
+                })?;
+                Ok((name.clone(), arr))
+            })
+            .collect()
+    }
+
+    /// Whether the part is asked for (explicitly, or by default when the data allow it).
+    pub fn asks(&self, part: &str) -> bool {
+        match &self.ask {
+            Some(a) => a.iter().any(|x| x == part),
+            None => true,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Expr;
+
+    #[test]
+    fn numbers_keep_their_written_value() {
+        let p = ProblemIn::parse(
+            "title='t'\n[perspective]\nnear = 0.1\naspect = \"sqrt(2)/2\"\nfar = -3\n",
+            "t",
+        )
+        .unwrap();
+        let per = p.perspective.unwrap();
+        assert_eq!(per.near.unwrap().0, Expr::Lit("0.1".into()));
+        assert_eq!(
+            per.far.unwrap().0,
+            Expr::Neg(Box::new(Expr::Lit("3".into())))
+        );
+        assert!(matches!(per.aspect.unwrap().0, Expr::Div(..)));
+    }
+
+    #[test]
+    fn errors_have_line_and_column() {
+        let e = ProblemIn::parse(
+            "title='t'\n[camera]\neye = [1, 2]\nlook=[0,0,0]\nup=[0,1,0]\n",
+            "p.toml",
+        )
+        .unwrap_err();
+        assert!(e.message.starts_with("p.toml:3:"), "{e}");
+        let e = ProblemIn::parse(
+            "title='t'\n[camera]\neye = [1, 2, \"1+\"]\nlook=[0,0,0]\nup=[0,1,0]\n",
+            "p.toml",
+        )
+        .unwrap_err();
+        assert!(e.message.contains("p.toml:3:"), "{e}");
+        let e = ProblemIn::parse(
+            "title='t'\n[camera]\neye=[0,0,1]\nlok=[0,0,0]\nup=[0,1,0]\n",
+            "p.toml",
+        )
+        .unwrap_err();
+        assert!(e.message.contains("p.toml:4:"), "{e}");
+    }
+}

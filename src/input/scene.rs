@@ -1,0 +1,871 @@
+//! Scene files for `render` (SPEC §6): the TOML schema (unknown keys are
+//! errors), values checked while they are read so that every error carries
+//! the file, line and column, and the validated [`Scene`] the renderer draws.
+
+use crate::error::{Error, Result};
+use crate::input::fields::{line_col, toml_error, Num};
+use crate::input::mesh::{self, Height, Mesh};
+use crate::input::problem::{CameraIn, PerspectiveIn};
+use crate::num::vec::V3;
+use crate::stages::lighting::{Light, LightKind, Material, Model};
+use nalgebra::{Matrix4, Vector3};
+use serde::de::{self, Deserializer};
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+use toml::Spanned;
+
+/// The most triangles one object may have (memory: about 350 bytes each).
+pub const MAX_TRIANGLES: usize = 4_000_000;
+
+/// A finite number, evaluated from a TOML number or an expression string
+/// while the file is read (so a bad value is reported at its position).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct F(pub f64);
+
+impl<'de> Deserialize<'de> for F {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<F, D::Error> {
+        let n = Num::deserialize(d)?;
+        n.0.eval::<f64>().map(F).map_err(de::Error::custom)
+    }
+}
+
+/// A positive finite number (a radius, a height, a spacing).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pos(pub f64);
+
+impl<'de> Deserialize<'de> for Pos {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Pos, D::Error> {
+        let F(v) = F::deserialize(d)?;
+        if v > 0.0 {
+            Ok(Pos(v))
+        } else {
+            Err(de::Error::custom(format!("must be positive, got {v}")))
+        }
+    }
+}
+
+/// A count of subdivisions: a whole number from 3 to 4096.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Count(pub u32);
+
+impl<'de> Deserialize<'de> for Count {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Count, D::Error> {
+        let v = i64::deserialize(d)?;
+        if (3..=4096).contains(&v) {
+            Ok(Count(v as u32))
+        } else {
+            Err(de::Error::custom(format!(
+                "must be a whole number from 3 to 4096, got {v}"
+            )))
+        }
+    }
+}
+
+/// A grid size: a whole number from 2 to 4096.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GridCount(pub u32);
+
+impl<'de> Deserialize<'de> for GridCount {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<GridCount, D::Error> {
+        let v = i64::deserialize(d)?;
+        if (2..=4096).contains(&v) {
+            Ok(GridCount(v as u32))
+        } else {
+            Err(de::Error::custom(format!(
+                "must be a whole number from 2 to 4096, got {v}"
+            )))
+        }
+    }
+}
+
+/// A colour component list [r, g, b], each from 0 to 1.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Rgb(pub [f32; 3]);
+
+impl<'de> Deserialize<'de> for Rgb {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Rgb, D::Error> {
+        let c = <[F; 3]>::deserialize(d)?;
+        if c.iter().any(|x| !(0.0..=1.0).contains(&x.0)) {
+            return Err(de::Error::custom(format!(
+                "colour components must be from 0 to 1, got [{}, {}, {}]",
+                c[0].0, c[1].0, c[2].0
+            )));
+        }
+        Ok(Rgb(c.map(|x| x.0 as f32)))
+    }
+}
+
+/// Shading mode.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum Shading {
+    /// One lighting evaluation per face, with the face normal.
+    #[default]
+    Flat,
+    /// Lighting per vertex, colours interpolated.
+    Gouraud,
+    /// Normals interpolated, lighting per pixel.
+    Phong,
+}
+
+/// Where vertex normals come from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum Normals {
+    /// The normalised average of the adjacent face normals.
+    #[default]
+    Average,
+    /// The text's `draw3Dcg`: the transformed vertex position, normalised
+    /// (right only for a sphere centred at the origin).
+    Position,
+}
+
+/// `[image]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ImageIn {
+    width: Option<u32>,
+    height: Option<u32>,
+    background: Option<Rgb>,
+}
+
+/// `[tilt]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TiltIn {
+    #[serde(default)]
+    x: Option<F>,
+    #[serde(default)]
+    y: Option<F>,
+}
+
+/// `[material]` (all optional; the text's defaults otherwise).
+#[derive(Clone, Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialIn {
+    model: Option<ModelIn>,
+    ka: Option<F>,
+    kd: Option<F>,
+    ks: Option<F>,
+    shininess: Option<F>,
+    specular: Option<Rgb>,
+    emissive: Option<Rgb>,
+    specular_requires_lit: Option<bool>,
+}
+
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum ModelIn {
+    Ambient,
+    Diffuse,
+    Specular,
+    Lambert,
+    Phong,
+    Blinn,
+}
+
+/// `[[light]]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LightIn {
+    #[serde(rename = "type")]
+    kind: LightType,
+    direction: Option<[F; 3]>,
+    position: Option<[F; 3]>,
+    color: Option<Rgb>,
+    ambient: Option<Rgb>,
+    diffuse: Option<Rgb>,
+    specular: Option<Rgb>,
+    attenuation: Option<[F; 3]>,
+    range: Option<Pos>,
+    theta: Option<F>,
+    phi: Option<F>,
+    falloff: Option<F>,
+}
+
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(rename_all = "lowercase")]
+enum LightType {
+    Directional,
+    Point,
+    Spot,
+}
+
+/// One step of an object's transform list.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum TransformIn {
+    /// Translation by (x, y, z).
+    Translate([F; 3]),
+    /// Rotation about x (radians).
+    RotateX(F),
+    /// Rotation about y (radians).
+    RotateY(F),
+    /// Rotation about z (radians).
+    RotateZ(F),
+    /// Uniform or per-axis scale.
+    Scale(ScaleIn),
+}
+
+/// A scale: one factor or [sx, sy, sz].
+#[derive(Clone, Debug, Deserialize)]
+#[serde(untagged)]
+pub enum ScaleIn {
+    /// Same on every axis.
+    One(F),
+    /// Per axis.
+    Axes([F; 3]),
+}
+
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(rename_all = "lowercase")]
+enum ObjectType {
+    Cone,
+    Sphere,
+    Cylinder,
+    Box,
+    Plane,
+    Obj,
+}
+
+/// `[[object]]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ObjectIn {
+    #[serde(rename = "type")]
+    kind: ObjectType,
+    n: Option<Count>,
+    stacks: Option<Count>,
+    r: Option<Pos>,
+    h: Option<Pos>,
+    size: Option<[Pos; 3]>,
+    nx: Option<GridCount>,
+    nz: Option<GridCount>,
+    dx: Option<Pos>,
+    dz: Option<Pos>,
+    height: Option<Spanned<String>>,
+    path: Option<Spanned<String>>,
+    #[serde(default)]
+    transform: Vec<TransformIn>,
+    color: Option<Rgb>,
+    face_colors: Option<Vec<Rgb>>,
+    vertex_colors: Option<Vec<Rgb>>,
+    material: Option<MaterialIn>,
+    shading: Option<Shading>,
+}
+
+/// A scene file as written.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneIn {
+    title: Option<String>,
+    source: Option<String>,
+    statement: Option<String>,
+    shading: Option<Shading>,
+    normals: Option<Normals>,
+    cull: Option<bool>,
+    image: Option<ImageIn>,
+    tilt: Option<TiltIn>,
+    camera: Option<CameraIn>,
+    perspective: Option<PerspectiveIn>,
+    material: Option<MaterialIn>,
+    #[serde(default)]
+    light: Vec<LightIn>,
+    #[serde(default)]
+    object: Vec<Spanned<ObjectIn>>,
+}
+
+/// How the scene is seen.
+#[derive(Clone, Debug, PartialEq)]
+pub enum View {
+    /// The text's userdraw view: objects rotated by Rx(x)·Ry(y) (radians),
+    /// orthographic, 1 unit = 1 pixel, origin at the image centre.
+    Tilt {
+        /// Rotation about x.
+        x: f64,
+        /// Rotation about y.
+        y: f64,
+    },
+    /// A synthetic camera with a perspective projection.
+    Camera {
+        /// Pe, Pr, Vup.
+        camera: crate::stages::camera::Camera<f64>,
+        /// Vertical field of view, degrees.
+        fovy: f64,
+        /// Width/height of the window (default: the image's).
+        aspect: Option<f64>,
+        /// Near-plane distance.
+        near: f64,
+        /// Far-plane distance.
+        far: f64,
+    },
+}
+
+/// Where an object's colours come from.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Colors {
+    /// One colour.
+    One([f32; 3]),
+    /// Polygon i gets colour i mod len (the text's i%2, i%3, i%5).
+    Faces(Vec<[f32; 3]>),
+    /// Vertex i gets colour i mod len.
+    Vertices(Vec<[f32; 3]>),
+}
+
+/// A validated object.
+#[derive(Clone, Debug)]
+pub struct Object {
+    /// `object[i] (type)`, for stats and errors.
+    pub name: String,
+    /// The mesh in model coordinates.
+    pub mesh: Mesh,
+    /// Model matrix (the transform list, first entry applied first).
+    pub model: Matrix4<f64>,
+    /// Colours.
+    pub colors: Colors,
+    /// Material (the scene's, overridden per object).
+    pub material: Material<f32>,
+    /// Shading of this object, if it differs from the scene's.
+    pub shading: Option<Shading>,
+    /// The mesh's triangles (computed once, when the scene is read).
+    pub tris: mesh::Triangles,
+    /// Whether the mesh is closed (back faces may be culled).
+    pub closed: bool,
+    /// Vertex normals in model coordinates.
+    pub vnormals: Vec<[f32; 3]>,
+    /// The mesh's bounding box in model coordinates ([`Mesh::bounds`]).
+    pub bounds: [[f32; 3]; 2],
+}
+
+/// A validated scene.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    /// Title, if given.
+    pub title: Option<String>,
+    /// Shading mode.
+    pub shading: Shading,
+    /// Vertex-normal source.
+    pub normals: Normals,
+    /// Whether back faces of closed meshes are culled.
+    pub cull: bool,
+    /// Image size.
+    pub width: u32,
+    /// Image size.
+    pub height: u32,
+    /// Background colour.
+    pub background: [f32; 3],
+    /// The view.
+    pub view: View,
+    /// Lights, in eye space.
+    pub lights: Vec<Light<f32>>,
+    /// Objects.
+    pub objects: Vec<Object>,
+}
+
+impl Scene {
+    /// Reads and validates a scene file; paths inside are relative to it.
+    pub fn read(path: &Path) -> Result<Scene> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| Error::new("scene", format!("cannot read {}: {e}", path.display())))?;
+        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        Scene::parse(&text, &path.display().to_string(), &dir)
+    }
+
+    /// Parses and validates scene text; `origin` names it in messages and
+    /// `dir` is where relative OBJ paths start.
+    pub fn parse(text: &str, origin: &str, dir: &Path) -> Result<Scene> {
+        let s: SceneIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
+        let at = |span: std::ops::Range<usize>| {
+            let (l, c) = line_col(text, span.start);
+            format!("{origin}:{l}:{c}")
+        };
+        let find = |key: &str| {
+            let off = text
+                .find(&format!("[{key}]"))
+                .or_else(|| text.find(key))
+                .unwrap_or(0);
+            at(off..off)
+        };
+        let _ = (&s.source, &s.statement);
+        let img = s.image.clone();
+        let persp = s.perspective.clone();
+        let viewport = match persp.as_ref().and_then(|p| p.viewport.clone()) {
+            Some([w, h]) => Some((
+                eval_u32(&w, "perspective.viewport")?,
+                eval_u32(&h, "perspective.viewport")?,
+            )),
+            None => None,
+        };
+        let width = img
+            .as_ref()
+            .and_then(|i| i.width)
+            .or(viewport.map(|v| v.0))
+            .unwrap_or(640);
+        let height = img
+            .as_ref()
+            .and_then(|i| i.height)
+            .or(viewport.map(|v| v.1))
+            .unwrap_or(480);
+        check_size(width, height)
+            .map_err(|e| Error::new(e.field, format!("{}: {}", find("image"), e.message)))?;
+        let background = img
+            .and_then(|i| i.background)
+            .map(|c| c.0)
+            .unwrap_or([0.0; 3]);
+
+        let view = match (&s.tilt, &s.camera) {
+            (Some(_), Some(_)) => {
+                return Err(Error::new(
+                    "tilt",
+                    format!("{}: give either [tilt] or [camera], not both", find("tilt")),
+                ))
+            }
+            (None, None) => View::Tilt { x: 0.0, y: 0.0 },
+            (Some(t), None) => View::Tilt {
+                x: t.x.map_or(0.0, |v| v.0),
+                y: t.y.map_or(0.0, |v| v.0),
+            },
+            (None, Some(c)) => {
+                let p = persp.ok_or_else(|| {
+                    Error::new(
+                        "perspective",
+                        format!(
+                            "{}: a [camera] needs a [perspective] with fovy, near and far",
+                            find("camera")
+                        ),
+                    )
+                })?;
+                camera_view(c, &p).map_err(|e| {
+                    Error::new(e.field, format!("{}: {}", find("perspective"), e.message))
+                })?
+            }
+        };
+
+        let base = match &s.material {
+            Some(m) => material(m, Material::text_default([1.0, 1.0, 1.0]))?,
+            None => Material::text_default([1.0, 1.0, 1.0]),
+        };
+        let mut lights = Vec::new();
+        for (i, l) in s.light.iter().enumerate() {
+            lights.push(light(l).map_err(|e| {
+                Error::new(
+                    format!("light[{i}].{}", e.field),
+                    format!("{}: {}", find("[[light]]"), e.message),
+                )
+            })?);
+        }
+        if s.light.is_empty() {
+            lights.push(Light::text_default());
+        }
+        let mut objects = Vec::new();
+        for (i, o) in s.object.iter().enumerate() {
+            let obj = object(i, o.get_ref(), &base, dir)
+                .map_err(|e| Error::new(e.field, format!("{}: {}", at(o.span()), e.message)))?;
+            objects.push(obj);
+        }
+        Ok(Scene {
+            title: s.title,
+            shading: s.shading.unwrap_or_default(),
+            normals: s.normals.unwrap_or_default(),
+            cull: s.cull.unwrap_or(true),
+            width,
+            height,
+            background,
+            view,
+            lights,
+            objects,
+        })
+    }
+}
+
+/// Checks an image size: 1 to 8192 pixels each way.
+pub fn check_size(w: u32, h: u32) -> Result<()> {
+    if !(1..=8192).contains(&w) || !(1..=8192).contains(&h) {
+        return Err(Error::new(
+            "image",
+            format!("width and height must be from 1 to 8192 pixels, got {w}x{h}"),
+        ));
+    }
+    Ok(())
+}
+
+fn eval_u32(n: &Num, field: &str) -> Result<u32> {
+    let v = n.0.eval::<f64>().map_err(|m| Error::new(field, m))?;
+    if v.fract() != 0.0 || !(1.0..=16384.0).contains(&v) {
+        return Err(Error::new(
+            field,
+            format!("must be a whole number of pixels, got {v}"),
+        ));
+    }
+    Ok(v as u32)
+}
+
+fn f3(v: &[F; 3]) -> V3<f64> {
+    Vector3::new(v[0].0, v[1].0, v[2].0)
+}
+
+fn camera_view(c: &CameraIn, p: &PerspectiveIn) -> Result<View> {
+    let ev = |e: &Num, f: &str| e.0.eval::<f64>().map_err(|m| Error::new(f, m));
+    let v3 = |a: &[Num; 3], f: &str| -> Result<V3<f64>> {
+        Ok(Vector3::new(ev(&a[0], f)?, ev(&a[1], f)?, ev(&a[2], f)?))
+    };
+    let camera = crate::stages::camera::Camera {
+        pe: v3(&c.eye, "camera.eye")?,
+        pr: v3(&c.look, "camera.look")?,
+        vup: v3(&c.up, "camera.up")?,
+    };
+    let fovy = match &p.fovy {
+        Some(a) => {
+            a.0.degrees::<f64>()
+                .map_err(|m| Error::new("perspective.fovy", m))?
+        }
+        None => return Err(Error::new("perspective.fovy", "is needed to render")),
+    };
+    let near = ev(
+        p.near
+            .as_ref()
+            .ok_or_else(|| Error::new("perspective.near", "is needed to render"))?,
+        "perspective.near",
+    )?;
+    let far = ev(
+        p.far
+            .as_ref()
+            .ok_or_else(|| Error::new("perspective.far", "is needed to render"))?,
+        "perspective.far",
+    )?;
+    let aspect = p
+        .aspect
+        .as_ref()
+        .map(|a| ev(a, "perspective.aspect"))
+        .transpose()?;
+    crate::stages::window::validate(&fovy, &aspect.unwrap_or(1.0), &near)
+        .map_err(|e| e.in_field(format!("perspective.{}", "fovy/aspect/near")))?;
+    if far <= near {
+        return Err(Error::new(
+            "perspective.far",
+            format!("must be greater than near = {near}, got {far}"),
+        ));
+    }
+    // Fails early on a degenerate camera (Pe = Pr, Vup ∥ view direction).
+    crate::stages::camera::basis(&camera, &mut crate::stages::trace::NoTrace)
+        .map_err(|e| e.in_field(format!("camera.{}", "look/up")))?;
+    Ok(View::Camera {
+        camera,
+        fovy,
+        aspect,
+        near,
+        far,
+    })
+}
+
+fn material(m: &MaterialIn, base: Material<f32>) -> Result<Material<f32>> {
+    let mut out = base;
+    if let Some(model) = m.model {
+        out.model = match model {
+            ModelIn::Ambient => Model::Ambient,
+            ModelIn::Diffuse => Model::Diffuse,
+            ModelIn::Specular => Model::Specular,
+            ModelIn::Lambert => Model::Lambert,
+            ModelIn::Phong => Model::Phong,
+            ModelIn::Blinn => Model::Blinn,
+        };
+    }
+    for (name, v, slot) in [
+        ("ka", m.ka, &mut out.ka),
+        ("kd", m.kd, &mut out.kd),
+        ("ks", m.ks, &mut out.ks),
+        ("shininess", m.shininess, &mut out.shininess),
+    ] {
+        if let Some(F(x)) = v {
+            if x < 0.0 {
+                return Err(Error::new(
+                    format!("material.{name}"),
+                    format!("must not be negative, got {x}"),
+                ));
+            }
+            *slot = x as f32;
+        }
+    }
+    if let Some(c) = m.specular {
+        out.specular = c.0;
+    }
+    if let Some(c) = m.emissive {
+        out.emissive = c.0;
+    }
+    if let Some(b) = m.specular_requires_lit {
+        out.specular_requires_lit = b;
+    }
+    out.validate("material")?;
+    Ok(out)
+}
+
+fn light(l: &LightIn) -> Result<Light<f32>> {
+    let mut out = Light::<f32>::text_default();
+    let v = |a: &[F; 3]| Vector3::new(a[0].0 as f32, a[1].0 as f32, a[2].0 as f32);
+    let need = |o: &Option<[F; 3]>, f: &str| {
+        o.as_ref()
+            .map(v)
+            .ok_or_else(|| Error::new(f, "is needed for this type of light"))
+    };
+    out.kind = match l.kind {
+        LightType::Directional => LightKind::Directional {
+            dir: l
+                .direction
+                .as_ref()
+                .map(v)
+                .unwrap_or(Vector3::new(0.0, 0.0, 1.0)),
+        },
+        LightType::Point => LightKind::Point {
+            pos: need(&l.position, "position")?,
+        },
+        LightType::Spot => LightKind::Spot {
+            pos: need(&l.position, "position")?,
+            dir: need(&l.direction, "direction")?,
+            theta: l.theta.map_or(30.0, |x| x.0 as f32),
+            phi: l.phi.map_or(45.0, |x| x.0 as f32),
+            falloff: l.falloff.map_or(1.0, |x| x.0 as f32),
+        },
+    };
+    // shade takes unit directions.
+    match &mut out.kind {
+        LightKind::Directional { dir } | LightKind::Spot { dir, .. } => {
+            let n = dir.norm();
+            if n == 0.0 {
+                return Err(Error::new("direction", "must not be the zero vector"));
+            }
+            *dir /= n;
+        }
+        LightKind::Point { .. } => {}
+    }
+    if let Some(c) = l.color {
+        out.diffuse = c.0;
+        out.specular = c.0;
+    }
+    if let Some(c) = l.ambient {
+        out.ambient = c.0;
+    }
+    if let Some(c) = l.diffuse {
+        out.diffuse = c.0;
+    }
+    if let Some(c) = l.specular {
+        out.specular = c.0;
+    }
+    if let Some(a) = &l.attenuation {
+        out.attenuation = a.map(|x| x.0 as f32);
+    }
+    out.range = l.range.map(|r| r.0 as f32);
+    out.validate("light")
+        .map_err(|e| Error::new(e.field.trim_start_matches("light.").to_string(), e.message))?;
+    Ok(out)
+}
+
+/// The matrix of one transform step.
+pub fn transform_matrix(t: &TransformIn) -> Matrix4<f64> {
+    match t {
+        TransformIn::Translate(v) => Matrix4::new_translation(&f3(v)),
+        TransformIn::RotateX(a) => Matrix4::from_axis_angle(&Vector3::x_axis(), a.0),
+        TransformIn::RotateY(a) => Matrix4::from_axis_angle(&Vector3::y_axis(), a.0),
+        TransformIn::RotateZ(a) => Matrix4::from_axis_angle(&Vector3::z_axis(), a.0),
+        TransformIn::Scale(ScaleIn::One(s)) => Matrix4::new_scaling(s.0),
+        TransformIn::Scale(ScaleIn::Axes(v)) => Matrix4::new_nonuniform_scaling(&f3(v)),
+    }
+}
+
+fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Object> {
+    let kind = o.kind;
+    let tname = format!("{kind:?}").to_lowercase();
+    let field = format!("object[{i}]");
+    let f = |k: &str| format!("{field}.{k}");
+    // Fields that belong to each type.
+    let allowed: &[&str] = match kind {
+        ObjectType::Cone | ObjectType::Cylinder => &["n", "r", "h"],
+        ObjectType::Sphere => &["n", "stacks", "r"],
+        ObjectType::Box => &["size"],
+        ObjectType::Plane => &["nx", "nz", "dx", "dz", "height"],
+        ObjectType::Obj => &["path"],
+    };
+    let present = [
+        ("n", o.n.is_some()),
+        ("stacks", o.stacks.is_some()),
+        ("r", o.r.is_some()),
+        ("h", o.h.is_some()),
+        ("size", o.size.is_some()),
+        ("nx", o.nx.is_some()),
+        ("nz", o.nz.is_some()),
+        ("dx", o.dx.is_some()),
+        ("dz", o.dz.is_some()),
+        ("height", o.height.is_some()),
+        ("path", o.path.is_some()),
+    ];
+    for (k, here) in present {
+        if here && !allowed.contains(&k) {
+            return Err(Error::new(
+                f(k),
+                format!(
+                    "a {tname} has no `{k}` (its fields: {})",
+                    allowed.join(", ")
+                ),
+            ));
+        }
+    }
+    let need = |v: Option<f64>, k: &str| {
+        v.ok_or_else(|| Error::new(f(k), format!("a {tname} needs `{k}`")))
+    };
+    let mesh = match kind {
+        ObjectType::Cone => mesh::cone(
+            need(o.n.map(|c| c.0 as f64), "n")? as u32,
+            need(o.r.map(|c| c.0), "r")?,
+            need(o.h.map(|c| c.0), "h")?,
+        ),
+        ObjectType::Cylinder => mesh::cylinder(
+            need(o.n.map(|c| c.0 as f64), "n")? as u32,
+            need(o.r.map(|c| c.0), "r")?,
+            need(o.h.map(|c| c.0), "h")?,
+        ),
+        ObjectType::Sphere => {
+            let n = need(o.n.map(|c| c.0 as f64), "n")? as u32;
+            mesh::sphere(n, o.stacks.map_or(n, |c| c.0), need(o.r.map(|c| c.0), "r")?)
+        }
+        ObjectType::Box => {
+            let s = o
+                .size
+                .ok_or_else(|| Error::new(f("size"), "a box needs `size = [w, h, d]`"))?;
+            mesh::cuboid(s[0].0, s[1].0, s[2].0)
+        }
+        ObjectType::Plane => {
+            let nx =
+                o.nx.ok_or_else(|| Error::new(f("nx"), "a plane needs `nx`"))?
+                    .0;
+            let nz =
+                o.nz.ok_or_else(|| Error::new(f("nz"), "a plane needs `nz`"))?
+                    .0;
+            let dx = need(o.dx.map(|c| c.0), "dx")?;
+            let dz = need(o.dz.map(|c| c.0), "dz")?;
+            let h = match &o.height {
+                Some(s) => Some(
+                    Height::parse(s.get_ref())
+                        .map_err(|m| Error::new(f("height"), format!("`{}`: {m}", s.get_ref())))?,
+                ),
+                None => None,
+            };
+            let m = mesh::plane(nx, nz, dx, dz, |x, z| {
+                h.as_ref().map_or(0.0, |h| h.eval(x, z))
+            });
+            if m.positions.iter().flatten().any(|v| !v.is_finite()) {
+                return Err(Error::new(
+                    f("height"),
+                    "the formula gives a value that is not a finite number",
+                ));
+            }
+            m
+        }
+        ObjectType::Obj => {
+            let p = o
+                .path
+                .as_ref()
+                .ok_or_else(|| Error::new(f("path"), "an obj object needs `path`"))?;
+            let full: PathBuf = dir.join(p.get_ref());
+            mesh::load_obj(&full, &f("path"))?
+        }
+    };
+    mesh.validate(&field)?;
+    let ntris: usize = mesh.faces.iter().map(|f| f.len() - 2).sum();
+    if ntris > MAX_TRIANGLES {
+        return Err(Error::new(
+            field,
+            format!("has {ntris} triangles; the renderer takes at most {MAX_TRIANGLES} per object"),
+        ));
+    }
+    let mut model = Matrix4::identity();
+    for t in &o.transform {
+        model = transform_matrix(t) * model;
+    }
+    let given = [
+        o.color.is_some(),
+        o.face_colors.is_some(),
+        o.vertex_colors.is_some(),
+    ];
+    if given.iter().filter(|&&b| b).count() > 1 {
+        return Err(Error::new(
+            f("color"),
+            "give only one of color, face_colors, vertex_colors",
+        ));
+    }
+    let colors = if let Some(c) = o.color {
+        Colors::One(c.0)
+    } else if let Some(v) = &o.face_colors {
+        if v.is_empty() {
+            return Err(Error::new(f("face_colors"), "needs at least one colour"));
+        }
+        Colors::Faces(v.iter().map(|c| c.0).collect())
+    } else if let Some(v) = &o.vertex_colors {
+        if v.is_empty() {
+            return Err(Error::new(f("vertex_colors"), "needs at least one colour"));
+        }
+        Colors::Vertices(v.iter().map(|c| c.0).collect())
+    } else {
+        Colors::One([1.0, 1.0, 1.0])
+    };
+    let material = match &o.material {
+        Some(m) => material(m, base.clone()).map_err(|e| e.in_field(f("material")))?,
+        None => base.clone(),
+    };
+    Ok(Object {
+        name: format!("{field} ({tname})"),
+        model,
+        colors,
+        material,
+        shading: o.shading,
+        tris: mesh.triangles(),
+        closed: mesh.is_closed(),
+        vnormals: mesh.vertex_normals(),
+        bounds: mesh.bounds(),
+        mesh,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(s: &str) -> Result<Scene> {
+        Scene::parse(s, "s.toml", Path::new("."))
+    }
+
+    #[test]
+    fn text_defaults() {
+        let s = parse("[[object]]\ntype = \"sphere\"\nn = 8\nr = 10\n").unwrap();
+        assert_eq!(s.shading, Shading::Flat);
+        assert_eq!((s.width, s.height), (640, 480));
+        assert_eq!(s.lights.len(), 1);
+        let m = &s.objects[0].material;
+        assert_eq!((m.ka, m.kd, m.ks, m.shininess), (0.4, 0.6, 0.7, 4.0));
+    }
+
+    #[test]
+    fn errors_carry_line_and_column() {
+        let e = parse("[[object]]\ntype = \"pyramid\"\n").unwrap_err();
+        assert!(e.message.starts_with("s.toml:2:"), "{e}");
+        let e = parse("[[object]]\ntype = \"sphere\"\nn = -3\nr = 1\n").unwrap_err();
+        assert!(e.message.starts_with("s.toml:3:"), "{e}");
+        let e = parse("[[object]]\ntype = \"sphere\"\nn = 5\nr = nan\n").unwrap_err();
+        assert!(e.message.starts_with("s.toml:4:"), "{e}");
+        let e = parse("[[object]]\ntype = \"sphere\"\nn = 5\nr = \"1/0\"\n").unwrap_err();
+        assert!(e.message.starts_with("s.toml:4:"), "{e}");
+        let e = parse("\n[[object]]\ntype = \"obj\"\npath = \"nope.obj\"\n").unwrap_err();
+        assert!(
+            e.message.starts_with("s.toml:2:") && e.message.contains("nope.obj"),
+            "{e}"
+        );
+        let e = parse("[[object]]\ntype = \"box\"\nsize = [1, 1, 1]\nr = 2\n").unwrap_err();
+        assert_eq!(e.field, "object[0].r");
+    }
+
+    #[test]
+    fn transforms_apply_in_the_order_listed() {
+        // translate (1,0,0) then rotate_z 90°: (0,0,0) → (1,0,0) → (0,1,0).
+        let s = parse("[[object]]\ntype = \"box\"\nsize = [1,1,1]\ntransform = [{ translate = [1, 0, 0] }, { rotate_z = \"pi/2\" }]\n").unwrap();
+        let p = s.objects[0].model * nalgebra::Vector4::new(0.0, 0.0, 0.0, 1.0);
+        assert!((p.x).abs() < 1e-12 && (p.y - 1.0).abs() < 1e-12, "{p:?}");
+    }
+}

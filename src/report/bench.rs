@@ -1,0 +1,124 @@
+//! `grafika bench` for people and scripts: the table of run time against
+//! error, and the same measurement as JSON.
+
+use crate::bench::accuracy::{self, Inputs};
+use crate::bench::Row;
+use crate::num::Precision;
+use comfy_table::{presets, Cell, CellAlignment, Table};
+use serde_json::{json, Value};
+
+/// The precision as `--precision` spells it.
+fn prec_name(p: Precision) -> &'static str {
+    match p {
+        Precision::Exact => "exact",
+        Precision::F64 => "f64",
+        Precision::F32 => "f32",
+    }
+}
+
+/// A time for people: `12.3 ns`, `4.56 µs`, `7.89 ms`.
+pub fn fmt_time(ns: f64) -> String {
+    if ns < 1e3 {
+        format!("{ns:.1} ns")
+    } else if ns < 1e6 {
+        format!("{:.2} µs", ns / 1e3)
+    } else {
+        format!("{:.2} ms", ns / 1e6)
+    }
+}
+
+/// An error in ulps for people.
+pub fn fmt_ulps(x: f64) -> String {
+    if x.is_infinite() {
+        "inf".into()
+    } else if x >= 1e6 {
+        format!("{x:.2e}")
+    } else if x >= 10.0 {
+        format!("{x:.0}")
+    } else {
+        format!("{x:.2}")
+    }
+}
+
+/// The table.
+pub fn table(inp: &Inputs, rows: &[Row]) -> String {
+    let mut t = Table::new();
+    t.load_preset(presets::UTF8_FULL_CONDENSED);
+    t.set_header(vec![
+        "stage",
+        "precision",
+        "cases",
+        "time/op (median)",
+        "max ulps (int ≤ 2^20)",
+        "median ulps (int ≤ 2^20)",
+        "max ulps (1e-30…1e30)",
+        "target ≤ 4 ulps",
+    ]);
+    for r in rows {
+        let right = |s: String| Cell::new(s).set_alignment(CellAlignment::Right);
+        let (tmax, tmed) = r.target_max_median();
+        let (wmax, _) = accuracy::max_median(&r.errors.wide);
+        let exact = r.precision == Precision::Exact;
+        let dash = || right("—".into());
+        let verdict = if exact {
+            "exact".to_string()
+        } else if !r.stage.has_target() {
+            "(no target)".to_string()
+        } else if tmax <= 4.0 && r.errors.target_disagreements == 0 {
+            "met".to_string()
+        } else {
+            "NOT met".to_string()
+        };
+        t.add_row(vec![
+            Cell::new(r.stage.name()),
+            Cell::new(prec_name(r.precision)),
+            right(inp.len(r.stage).to_string()),
+            right(fmt_time(r.ns_per_op)),
+            if exact { dash() } else { right(fmt_ulps(tmax)) },
+            if exact { dash() } else { right(fmt_ulps(tmed)) },
+            if exact { dash() } else { right(fmt_ulps(wmax)) },
+            Cell::new(verdict),
+        ]);
+    }
+    let mut out = t.to_string();
+    out.push('\n');
+    out.push_str(
+        "ulps: of the exact value (of 1 for the unit vectors u, v, n), at the row's precision;\n\
+         the exact path's results are the reference (correctly rounded to f64 first).\n",
+    );
+    let dis: usize = rows.iter().map(|r| r.errors.disagreements).sum();
+    let unref: usize = rows.iter().map(|r| r.errors.unreferenced).sum();
+    out.push_str(&format!(
+        "cases where a float run failed but the exact one did not, or the reverse (an overflow at f32 is an error): {dis}\n\
+         components without an exact reference (a square root `Real` cannot factor; not counted): {unref}\n"
+    ));
+    out
+}
+
+/// The measurement as JSON.
+pub fn to_json(inp: &Inputs, rows: &[Row]) -> Value {
+    let rows: Vec<Value> = rows
+        .iter()
+        .map(|r| {
+            let (tmax, tmed) = r.target_max_median();
+            let (amax, amed) = r.all_max_median();
+            let (wmax, wmed) = accuracy::max_median(&r.errors.wide);
+            let num = |x: f64| if x.is_finite() { json!(x) } else { json!("inf") };
+            json!({
+                "stage": r.stage.name(),
+                "precision": prec_name(r.precision),
+                "cases": inp.len(r.stage),
+                "ns_per_op": r.ns_per_op,
+                "passes": r.passes,
+                "ulps": {
+                    "target": {"max": num(tmax), "median": num(tmed), "count": r.errors.target.len()},
+                    "wide": {"max": num(wmax), "median": num(wmed), "count": r.errors.wide.len()},
+                    "all": {"max": num(amax), "median": num(amed)},
+                },
+                "disagreements": r.errors.disagreements,
+                "unreferenced": r.errors.unreferenced,
+            })
+        })
+        .collect();
+    json!({ "command": "bench", "seed": accuracy::SEED, "rows": rows })
+}

@@ -1,0 +1,367 @@
+//! Worked solutions as documents: the same steps the text report prints
+//! (`report.rs`), rendered as Markdown or as LaTeX that a plain `pdflatex`
+//! compiles (ASCII only: every symbol the steps use is mapped to a LaTeX
+//! command). Used for exam answer keys.
+
+use crate::report::{Report, Style};
+use crate::stages::trace::{Step, Val};
+
+/// The output format of a document.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Doc {
+    /// GitHub-flavoured Markdown.
+    Markdown,
+    /// LaTeX (article class, no packages beyond the base distribution).
+    Latex,
+}
+
+impl Doc {
+    /// Text as it goes into the document (escaped, symbols mapped).
+    pub fn text(self, s: &str) -> String {
+        match self {
+            Doc::Markdown => s.replace('|', "\\|").replace('*', "\\*"),
+            Doc::Latex => latex_text(s),
+        }
+    }
+
+    /// A heading of the given level (1 = a problem, 2 = a section).
+    pub fn heading(self, level: usize, s: &str) -> String {
+        match self {
+            Doc::Markdown => format!("{} {}\n\n", "#".repeat(level + 1), self.text(s)),
+            Doc::Latex => {
+                let cmd = ["section*", "subsection*", "subsubsection*", "paragraph"][level.min(3)];
+                format!("\\{cmd}{{{}}}\n\n", latex_text(s))
+            }
+        }
+    }
+
+    /// A formula line.
+    fn formula(self, s: &str) -> String {
+        match self {
+            Doc::Markdown => format!("`{s}`"),
+            Doc::Latex => latex_text(s),
+        }
+    }
+
+    /// `name = value` (a matrix is set as a matrix).
+    pub fn named(self, st: &Style, name: &str, v: &Val, arrow: bool) -> String {
+        let lead = if arrow { "⇒ " } else { "" };
+        match (self, v) {
+            (Doc::Markdown, Val::List(rows)) if v.is_matrix() => {
+                // A table with an empty header row (Markdown tables need one).
+                let width = match rows.first() {
+                    Some(Val::List(c)) => c.len(),
+                    _ => 0,
+                };
+                let mut s = format!("{lead}{} =\n\n", self.text(name));
+                s.push_str(&format!(
+                    "|{}\n|{}\n",
+                    "   |".repeat(width),
+                    "---|".repeat(width)
+                ));
+                for r in rows {
+                    if let Val::List(cells) = r {
+                        let cs: Vec<String> = cells.iter().map(|c| cell(st, c)).collect();
+                        s.push_str(&format!("| {} |\n", cs.join(" | ")));
+                    }
+                }
+                s
+            }
+            (Doc::Latex, Val::List(rows)) if v.is_matrix() => {
+                let n = match rows.first() {
+                    Some(Val::List(c)) => c.len(),
+                    _ => 0,
+                };
+                let body: Vec<String> = rows
+                    .iter()
+                    .map(|r| match r {
+                        Val::List(cells) => cells
+                            .iter()
+                            .map(|c| latex_math(&cell(st, c)))
+                            .collect::<Vec<_>>()
+                            .join(" & "),
+                        _ => String::new(),
+                    })
+                    .collect();
+                format!(
+                    "{}{} = $\\left(\\begin{{array}}{{{}}}{}\\end{{array}}\\right)$",
+                    latex_text(lead),
+                    latex_text(name),
+                    "r".repeat(n),
+                    body.join(" \\\\ ")
+                )
+            }
+            _ => {
+                // "top ≈ 0.182", not "top = ≈ 0.182"
+                let val = st.val_inline(v);
+                let (sign, val) = match val.strip_prefix("≈ ") {
+                    Some(rest) => ("≈", rest.to_string()),
+                    None => ("=", val),
+                };
+                format!(
+                    "{}{} {} {}",
+                    self.text(lead),
+                    self.text(name),
+                    self.text(sign),
+                    self.text(&val)
+                )
+            }
+        }
+    }
+
+    /// The worked steps of a report, grouped by section.
+    pub fn steps(self, r: &Report, st: &Style) -> String {
+        let mut out = String::new();
+        let mut section: Option<&str> = None;
+        for (i, s) in r.steps.iter().enumerate() {
+            if s.section.as_deref() != section {
+                section = s.section.as_deref();
+                if let Some(sec) = section {
+                    out.push_str(&self.heading(3, sec));
+                }
+            }
+            out.push_str(&self.step(i + 1, s, st));
+        }
+        out
+    }
+
+    fn step(self, k: usize, s: &Step, st: &Style) -> String {
+        let mut lines: Vec<String> = Vec::new();
+        if !s.formula.is_empty() {
+            lines.push(self.formula(&s.formula));
+        }
+        lines.extend(s.values.iter().map(|(n, v)| self.named(st, n, v, false)));
+        lines.extend(s.result.iter().map(|(n, v)| self.named(st, n, v, true)));
+        if let Some(n) = &s.note {
+            lines.push(match self {
+                Doc::Markdown => format!("*({})*", self.text(n)),
+                Doc::Latex => format!("\\emph{{({})}}", latex_text(n)),
+            });
+        }
+        match self {
+            Doc::Markdown => {
+                let mut out = format!("**Step {k}. {}**\n\n", self.text(&s.title));
+                for l in lines {
+                    if l.contains('\n') {
+                        out.push_str(&format!("\n{l}\n"));
+                    } else {
+                        out.push_str(&format!("- {l}\n"));
+                    }
+                }
+                out.push('\n');
+                out
+            }
+            Doc::Latex => {
+                let mut out = format!(
+                    "\\paragraph{{Step {k}. {}}}\n\\begin{{itemize}}\n",
+                    latex_text(&s.title)
+                );
+                for l in lines {
+                    out.push_str(&format!("\\item {l}\n"));
+                }
+                if s.formula.is_empty()
+                    && s.values.is_empty()
+                    && s.result.is_empty()
+                    && s.note.is_none()
+                {
+                    out.push_str("\\item ---\n");
+                }
+                out.push_str("\\end{itemize}\n\n");
+                out
+            }
+        }
+    }
+
+    /// A list of `name = value` lines.
+    pub fn answers(self, st: &Style, items: &[(String, Val)]) -> String {
+        match self {
+            Doc::Markdown => {
+                items
+                    .iter()
+                    .map(|(k, v)| format!("- {}\n", self.named(st, k, v, false)))
+                    .collect::<String>()
+                    + "\n"
+            }
+            Doc::Latex => {
+                let mut out = String::from("\\begin{itemize}\n");
+                for (k, v) in items {
+                    out.push_str(&format!("\\item {}\n", self.named(st, k, v, false)));
+                }
+                out + "\\end{itemize}\n\n"
+            }
+        }
+    }
+
+    /// A whole document around a body.
+    pub fn document(self, title: &str, body: &str) -> String {
+        match self {
+            Doc::Markdown => format!("# {}\n\n{body}", self.text(title)),
+            Doc::Latex => format!(
+                "\\documentclass[11pt]{{article}}\n\\usepackage[margin=2cm]{{geometry}}\n\\setlength{{\\parindent}}{{0pt}}\n\\title{{{}}}\n\\date{{}}\n\\begin{{document}}\n\\maketitle\n\n{body}\\end{{document}}\n",
+                latex_text(title)
+            ),
+        }
+    }
+}
+
+/// A matrix cell: the exact form when there is one, else the decimal.
+fn cell(st: &Style, c: &Val) -> String {
+    match c {
+        Val::Num(s) => s
+            .pretty
+            .clone()
+            .unwrap_or_else(|| crate::report::fmt_dec(s.value, st.digits)),
+        other => st.val_inline(other),
+    }
+}
+
+/// One piece of LaTeX output: plain text, or math (set between `$`).
+enum Piece {
+    Text(String),
+    Math(String),
+}
+
+/// Text for LaTeX text mode: special characters escaped, symbols as math.
+pub fn latex_text(s: &str) -> String {
+    let mut out = String::new();
+    let mut in_math = false;
+    for p in pieces(s) {
+        match p {
+            Piece::Text(t) => {
+                if in_math {
+                    out.push('$');
+                    in_math = false;
+                }
+                out.push_str(&t);
+            }
+            Piece::Math(m) => {
+                if !in_math {
+                    out.push('$');
+                    in_math = true;
+                }
+                out.push_str(&m);
+            }
+        }
+    }
+    if in_math {
+        out.push('$');
+    }
+    out
+}
+
+/// Text for LaTeX math mode (matrix cells).
+pub fn latex_math(s: &str) -> String {
+    pieces(s)
+        .into_iter()
+        .map(|p| match p {
+            Piece::Text(t) | Piece::Math(t) => t,
+        })
+        .collect()
+}
+
+fn pieces(s: &str) -> Vec<Piece> {
+    let chars: Vec<char> = s.chars().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        i += 1;
+        let math = |m: &str| Piece::Math(m.to_string());
+        let text = |t: &str| Piece::Text(t.to_string());
+        out.push(match c {
+            '√' => {
+                // √ applies to a number, a name, or a parenthesized group.
+                let start = i;
+                if chars.get(i) == Some(&'(') {
+                    let mut depth = 0;
+                    while i < chars.len() {
+                        if chars[i] == '(' {
+                            depth += 1;
+                        } else if chars[i] == ')' {
+                            depth -= 1;
+                            if depth == 0 {
+                                i += 1;
+                                break;
+                            }
+                        }
+                        i += 1;
+                    }
+                    let inner: String = chars[start + 1..i.saturating_sub(1)].iter().collect();
+                    Piece::Math(format!("\\sqrt{{{}}}", latex_math(&inner)))
+                } else {
+                    while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '.') {
+                        i += 1;
+                    }
+                    let inner: String = chars[start..i].iter().collect();
+                    Piece::Math(format!("\\sqrt{{{inner}}}"))
+                }
+            }
+            '−' => math("-"),
+            '·' => math("\\cdot "),
+            '×' => math("\\times "),
+            '≈' => math("\\approx "),
+            '≤' => math("\\le "),
+            '≥' => math("\\ge "),
+            '≠' => math("\\ne "),
+            '⇒' => math("\\Rightarrow "),
+            '→' => math("\\to "),
+            '←' => math("\\leftarrow "),
+            '∥' => math("\\parallel "),
+            '⊥' => math("\\perp "),
+            '°' => math("^\\circ "),
+            '⁻' if chars.get(i) == Some(&'¹') => {
+                i += 1;
+                math("^{-1}")
+            }
+            'ᵀ' => math("^{T}"),
+            '²' => math("^2"),
+            '³' => math("^3"),
+            '⁰' => math("^0"),
+            '₀' => math("_0"),
+            '₁' => math("_1"),
+            '₂' => math("_2"),
+            'θ' => math("\\theta "),
+            'α' => math("\\alpha "),
+            'β' => math("\\beta "),
+            'π' => math("\\pi "),
+            '<' => math("<"),
+            '>' => math(">"),
+            '|' => math("|"),
+            '…' => text("\\ldots{}"),
+            '—' => text("---"),
+            '–' => text("--"),
+            '’' | '′' => text("'"),
+            '“' | '”' => text("\""),
+            '\\' => text("\\textbackslash{}"),
+            '{' => text("\\{"),
+            '}' => text("\\}"),
+            '$' => text("\\$"),
+            '&' => text("\\&"),
+            '#' => text("\\#"),
+            '%' => text("\\%"),
+            '_' => text("\\_"),
+            '^' => text("\\^{}"),
+            '~' => text("\\~{}"),
+            c if c.is_ascii() => Piece::Text(c.to_string()),
+            other => Piece::Text(format!("[U+{:04X}]", other as u32)),
+        });
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn latex_maps_symbols_to_ascii_commands() {
+        assert_eq!(
+            latex_text("−√2/60 ≈ −0.02357"),
+            "$-\\sqrt{2}$/60 $\\approx $ $-$0.02357"
+        );
+        assert_eq!(latex_text("√(a+b)"), "$\\sqrt{a+b}$");
+        assert_eq!(latex_text("x_1 50%"), "x\\_1 50\\%");
+        assert_eq!(latex_math("−√2/2"), "-\\sqrt{2}/2");
+        assert!(latex_text("V = Mcam⁻¹, Rᵀ, 22.5°, u·v, a × b, ⇒").is_ascii());
+    }
+}

@@ -1,0 +1,391 @@
+//! Reports: the one place where steps and results become text (with tables
+//! for matrices) or JSON (SPEC §3). Stages only produce data.
+
+pub mod bench;
+pub mod check;
+pub mod doc;
+pub mod lang;
+pub mod sheets;
+
+use crate::num::Shown;
+use crate::stages::trace::{Compared, Comparison, Report, Step, Val};
+use comfy_table::{presets, Table};
+use lang::Lang;
+use serde_json::{json, Map, Value};
+
+/// How numbers are written in text output.
+#[derive(Clone, Copy, Debug)]
+pub struct Style {
+    /// Significant digits of decimals.
+    pub digits: usize,
+    /// Whether the run was exact (approximate values are then marked ≈).
+    pub exact_mode: bool,
+    /// The language of the words (and the decimal mark).
+    pub lang: Lang,
+}
+
+impl Style {
+    /// `digits` significant digits, approximate values marked ≈ when `exact_mode`, in `lang`.
+    pub fn new(digits: usize, exact_mode: bool, lang: Lang) -> Style {
+        Style {
+            digits,
+            exact_mode,
+            lang,
+        }
+    }
+}
+
+pub use crate::num::format::fmt_dec;
+
+impl Style {
+    /// One number: `−√2/60 ≈ −0.02357`, `1/50 = 0.02`, `5`, `≈ 0.4142`, `0.4142`.
+    pub fn num(&self, s: &Shown) -> String {
+        crate::num::format::shown(s, self.digits, self.exact_mode)
+    }
+
+    /// A vector or list: `(√2/2, 0, √2/2) ≈ (0.7071, 0, 0.7071)`.
+    pub fn list(&self, items: &[Val]) -> String {
+        let nums: Option<Vec<&Shown>> = items
+            .iter()
+            .map(|v| if let Val::Num(s) = v { Some(s) } else { None })
+            .collect();
+        match nums {
+            Some(ns) => {
+                let has_form = ns.iter().any(|s| {
+                    s.pretty
+                        .as_deref()
+                        .is_some_and(|p| !crate::num::format::is_plain_decimal(p))
+                });
+                let decs: Vec<String> = ns
+                    .iter()
+                    .map(|s| fmt_dec(s.value, self.digits).replace('-', "−"))
+                    .collect();
+                let approx = ns
+                    .iter()
+                    .any(|s| fmt_dec(s.value, self.digits).parse::<f64>().ok() != Some(s.value));
+                if has_form {
+                    let forms: Vec<String> = ns
+                        .iter()
+                        .zip(&decs)
+                        .map(|(s, d)| {
+                            s.pretty
+                                .clone()
+                                .map(|p| p.replace('-', "−"))
+                                .unwrap_or_else(|| format!("≈{d}"))
+                        })
+                        .collect();
+                    format!(
+                        "({}) {} ({})",
+                        forms.join(", "),
+                        if approx { "≈" } else { "=" },
+                        decs.join(", ")
+                    )
+                } else if self.exact_mode && approx && ns.iter().any(|s| s.pretty.is_none()) {
+                    format!("≈ ({})", decs.join(", "))
+                } else {
+                    format!("({})", decs.join(", "))
+                }
+            }
+            None => format!(
+                "({})",
+                items
+                    .iter()
+                    .map(|v| self.val_inline(v))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        }
+    }
+
+    /// Any value on one line.
+    pub fn val_inline(&self, v: &Val) -> String {
+        match v {
+            Val::Num(s) => self.num(s),
+            Val::List(items) => self.list(items),
+            Val::Map(kv) => kv
+                .iter()
+                .map(|(k, v)| format!("{k} = {}", self.val_inline(v)))
+                .collect::<Vec<_>>()
+                .join(";  "),
+            Val::Text(t) => t.clone(),
+            Val::Bool(b) => if *b { "yes" } else { "no" }.into(),
+            Val::Null => "none".into(),
+        }
+    }
+
+    /// A matrix as a table; exact forms in the cells when there are any.
+    pub fn matrix(&self, rows: &[Val]) -> String {
+        let mut t = Table::new();
+        t.load_preset(presets::UTF8_FULL_CONDENSED);
+        for r in rows {
+            if let Val::List(cells) = r {
+                t.add_row(cells.iter().map(|c| match c {
+                    Val::Num(s) => match &s.pretty {
+                        Some(p) => p.replace('-', "−"),
+                        None => fmt_dec(s.value, self.digits).replace('-', "−"),
+                    },
+                    other => self.val_inline(other),
+                }));
+            }
+        }
+        t.to_string()
+    }
+
+    /// `name = value`, with a matrix on its own lines.
+    pub fn named(&self, indent: &str, name: &str, v: &Val) -> String {
+        if v.is_matrix() {
+            let table = self.matrix(match v {
+                Val::List(rows) => rows,
+                _ => &[],
+            });
+            let pad = " ".repeat(indent.chars().count());
+            let body: Vec<String> = table.lines().map(|l| format!("{pad}  {l}")).collect();
+            format!("{indent}{name} =\n{}", body.join("\n"))
+        } else {
+            format!("{indent}{name} = {}", self.val_inline(v))
+        }
+    }
+}
+
+impl Report {
+    /// The worked solution and answer as text.
+    pub fn to_text(&self, style: &Style) -> String {
+        let mut out = String::new();
+        let mut section: Option<&str> = None;
+        for (i, s) in self.steps.iter().enumerate() {
+            if s.section.as_deref() != section {
+                section = s.section.as_deref();
+                if let Some(sec) = section {
+                    out.push_str(&format!("\n== {sec} ==\n"));
+                }
+            }
+            out.push_str(&format!("\nStep {}. {}\n", i + 1, s.title));
+            if !s.formula.is_empty() {
+                out.push_str(&format!("    {}\n", s.formula));
+            }
+            for (k, v) in &s.values {
+                out.push_str(&style.named("    ", k, v));
+                out.push('\n');
+            }
+            for (k, v) in &s.result {
+                out.push_str(&style.named("  ⇒ ", k, v));
+                out.push('\n');
+            }
+            if let Some(n) = &s.note {
+                out.push_str(&format!("    ({n})\n"));
+            }
+        }
+        out.push_str("\nAnswer\n");
+        for (k, v) in &self.result {
+            push_answer(&mut out, style, "  ", k, v);
+        }
+        for n in self.all_notes() {
+            out.push_str(&format!("\n{n}\n"));
+        }
+        for w in &self.warnings {
+            out.push_str(&format!("\nwarning: {w}\n"));
+        }
+        out
+    }
+
+    /// The SPEC §3 JSON object.
+    pub fn to_json(&self) -> Value {
+        let result = Value::Object(
+            self.result
+                .iter()
+                .map(|(k, v)| (k.clone(), value_json(v)))
+                .collect(),
+        );
+        let exact = Value::Object(
+            self.result
+                .iter()
+                .map(|(k, v)| (k.clone(), exact_json(v)))
+                .collect(),
+        );
+        let steps: Vec<Value> = self.steps.iter().map(step_json).collect();
+        let mut obj = json!({
+            "command": self.command,
+            "precision": self.precision,
+            "input": self.input,
+            "result": result,
+            "exact": exact,
+            "steps": steps,
+            "warnings": self.warnings,
+        });
+        let notes = self.all_notes();
+        if !notes.is_empty() {
+            obj["notes"] = json!(notes);
+        }
+        for (k, v) in &self.extra {
+            obj[k] = v.clone();
+        }
+        if !self.source_notes.is_empty() {
+            obj["source_notes"] = json!(self.source_notes);
+        }
+        if let Some(c) = &self.comparison {
+            obj["comparison"] = c.rows.iter().map(compared_json).collect();
+        }
+        obj
+    }
+
+    /// The notes after the answer: the report's own, the comparison with
+    /// the printed answers, the notes on the source.
+    fn all_notes(&self) -> Vec<String> {
+        let mut notes = self.notes.clone();
+        notes.extend(self.comparison.as_ref().map(comparison_text));
+        if !self.source_notes.is_empty() {
+            let lines: Vec<String> = self
+                .source_notes
+                .iter()
+                .map(|n| format!("  - {n}"))
+                .collect();
+            notes.push(format!("Notes on the source:\n{}", lines.join("\n")));
+        }
+        notes
+    }
+}
+
+/// The comparison with the printed answers, one line per answer.
+fn comparison_text(c: &Comparison) -> String {
+    let style = Style::new(4, true, Lang::En);
+    let src = c.source.as_deref().unwrap_or("the source");
+    let mut lines = vec![format!("Compared with the answers printed in {src}:")];
+    for r in &c.rows {
+        let (key, shown) = (&r.key, &r.printed);
+        let why = r.why.as_ref().map(|w| format!(": {w}")).unwrap_or_default();
+        lines.push(match (&r.computed, r.agrees) {
+            (None, _) => {
+                format!("  {key}: printed {shown} — not computed in this run (not asked for)")
+            }
+            (Some(_), Some(true)) => format!("  {key}: printed {shown} — agrees"),
+            (Some(v), Some(false)) => format!(
+                "  {key}: printed {shown}, correct {} — the text is WRONG here{why}",
+                style.val_inline(v)
+            ),
+            (Some(v), None) => format!(
+                "  {key}: printed {shown}, computed {} — cannot be compared",
+                style.val_inline(v)
+            ),
+        });
+    }
+    lines.join("\n")
+}
+
+/// One compared answer as JSON.
+fn compared_json(r: &Compared) -> Value {
+    json!({
+        "key": r.key,
+        "printed": r.printed,
+        "computed": r.computed.as_ref().map(value_json),
+        "agrees": r.agrees,
+        "why": r.why,
+    })
+}
+
+/// Writes one answer, opening maps (e.g. points) into one line per entry.
+fn push_answer(out: &mut String, style: &Style, indent: &str, k: &str, v: &Val) {
+    match v {
+        Val::Map(kv) => {
+            out.push_str(&format!("{indent}{k}:\n"));
+            for (k2, v2) in kv {
+                push_answer(out, style, &format!("{indent}  "), k2, v2);
+            }
+        }
+        _ => {
+            out.push_str(&style.named(indent, k, v));
+            out.push('\n');
+        }
+    }
+}
+
+/// A value with plain numbers.
+pub fn value_json(v: &Val) -> Value {
+    match v {
+        Val::Num(s) => serde_json::Number::from_f64(s.value)
+            .map(Value::Number)
+            .unwrap_or(Value::Null),
+        Val::List(items) => Value::Array(items.iter().map(value_json).collect()),
+        Val::Map(kv) => Value::Object(
+            kv.iter()
+                .map(|(k, v)| (k.clone(), value_json(v)))
+                .collect::<Map<_, _>>(),
+        ),
+        Val::Text(t) => Value::String(t.clone()),
+        Val::Bool(b) => Value::Bool(*b),
+        Val::Null => Value::Null,
+    }
+}
+
+/// The same shape with each number as its exact expression string (or null).
+pub fn exact_json(v: &Val) -> Value {
+    match v {
+        Val::Num(s) => s.exact.clone().map(Value::String).unwrap_or(Value::Null),
+        Val::List(items) => Value::Array(items.iter().map(exact_json).collect()),
+        Val::Map(kv) => Value::Object(
+            kv.iter()
+                .map(|(k, v)| (k.clone(), exact_json(v)))
+                .collect::<Map<_, _>>(),
+        ),
+        Val::Text(t) => Value::String(t.clone()),
+        Val::Bool(b) => Value::Bool(*b),
+        Val::Null => Value::Null,
+    }
+}
+
+fn step_json(s: &Step) -> Value {
+    let obj = |kv: &[(String, Val)], f: fn(&Val) -> Value| {
+        Value::Object(kv.iter().map(|(k, v)| (k.clone(), f(v))).collect())
+    };
+    let mut o = json!({
+        "title": s.title,
+        "formula": s.formula,
+        "values": obj(&s.values, value_json),
+        "result": obj(&s.result, value_json),
+        "exact": { "values": obj(&s.values, exact_json), "result": obj(&s.result, exact_json) },
+    });
+    if let Some(sec) = &s.section {
+        o["section"] = json!(sec);
+    }
+    if let Some(n) = &s.note {
+        o["note"] = json!(n);
+    }
+    o
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decimals() {
+        assert_eq!(fmt_dec(-0.023570226, 4), "-0.02357");
+        assert_eq!(fmt_dec(0.02, 4), "0.02");
+        assert_eq!(fmt_dec(100.0, 4), "100");
+        assert_eq!(fmt_dec(21.548, 4), "21.55");
+        assert_eq!(fmt_dec(-1e-12, 3), "-1e-12");
+        assert_eq!(fmt_dec(-0.00001, 3), "-0.00001");
+    }
+
+    #[test]
+    fn exact_numbers_show_their_form() {
+        let st = Style::new(4, true, lang::Lang::En);
+        let s = Shown {
+            value: -0.023570226039551584,
+            exact: Some("-sqrt(2)/60".into()),
+            pretty: Some("−√2/60".into()),
+        };
+        assert_eq!(st.num(&s), "−√2/60 ≈ −0.02357");
+        let fifty = Shown {
+            value: 0.02,
+            exact: Some("1/50".into()),
+            pretty: Some("1/50".into()),
+        };
+        assert_eq!(st.num(&fifty), "1/50 = 0.02");
+        let approx = Shown {
+            value: 0.41421356,
+            exact: None,
+            pretty: None,
+        };
+        assert_eq!(st.num(&approx), "≈ 0.4142");
+    }
+}

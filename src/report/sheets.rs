@@ -1,0 +1,113 @@
+//! Exams for people: the title, the question sheet and the answer key (with
+//! the worked solutions) of a generated exam, as Markdown or LaTeX bodies,
+//! and the whole exam as JSON.
+
+use crate::report::doc::Doc;
+use crate::report::{exact_json, value_json, Style};
+use crate::stages::trace::Val;
+use crate::tutor::generate::{topics_name, Difficulty, Generated, Topic};
+use crate::tutor::solve::lookup;
+use serde_json::{json, Value};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// An exam's title: topics, difficulty, seed and variant.
+pub fn exam_title(topics: &[Topic], diff: Difficulty, seed: u64, variant: Option<u32>) -> String {
+    format!(
+        "grafika exam: {} ({}), seed {}{}",
+        topics_name(topics),
+        format!("{diff:?}").to_lowercase(),
+        seed,
+        variant
+            .map(|v| format!(", variant {v}"))
+            .unwrap_or_default()
+    )
+}
+
+/// The key's title for an exam title.
+pub fn key_title(title: &str) -> String {
+    format!("{title} — answer key")
+}
+
+/// The answers asked for in a problem, with their values.
+fn answers(g: &Generated) -> Vec<(String, Val)> {
+    g.keys
+        .iter()
+        .filter_map(|key| lookup(&g.report.result, key).map(|v| (key.clone(), v.clone())))
+        .collect()
+}
+
+/// The question sheet and the key bodies.
+pub fn sheets(doc: Doc, exam: &[Generated], st: &Style) -> (String, String) {
+    let mut q = String::new();
+    let mut k = String::new();
+    for (i, g) in exam.iter().enumerate() {
+        let title = &format!("Problem {}: {}", i + 1, g.problem.title);
+        let statement = g.problem.statement.clone().unwrap_or_default();
+        for sheet in [&mut q, &mut k] {
+            sheet.push_str(&doc.heading(1, title));
+            sheet.push_str(&doc.text(&statement));
+            sheet.push_str("\n\n");
+        }
+        k.push_str(&doc.heading(2, "Answers"));
+        k.push_str(&doc.answers(st, &answers(g)));
+        k.push_str(&doc.heading(2, "Worked solution"));
+        k.push_str(&doc.steps(&g.report, st));
+    }
+    (q, k)
+}
+
+/// The whole exam as JSON: statements, answers (decimal and exact) and the
+/// worked solutions.
+pub fn exam_json(title: &str, seed: u64, variant: u32, exam: &[Generated]) -> Value {
+    let problems: Vec<Value> = exam
+        .iter()
+        .enumerate()
+        .map(|(i, g)| {
+            let answers: serde_json::Map<String, Value> = answers(g)
+                .iter()
+                .map(|(k, v)| {
+                    let both = json!({ "decimal": value_json(v), "exact": exact_json(v) });
+                    (k.clone(), both)
+                })
+                .collect();
+            json!({
+                "file": format!("problem-{:02}.toml", i + 1),
+                "title": g.problem.title,
+                "statement": g.problem.statement,
+                "keys": g.keys,
+                "answers": answers,
+                "solution": g.report.to_json(),
+            })
+        })
+        .collect();
+    json!({ "title": title, "seed": seed, "variant": variant, "problems": problems })
+}
+
+/// What `generate` prints: how many files of what went where, and the first
+/// twelve of them.
+pub fn written_summary(
+    files: &[PathBuf],
+    variants: u32,
+    count: u32,
+    topics: &[Topic],
+    seed: u64,
+    out: &Path,
+) -> String {
+    let plural = |n: u32| if n == 1 { "" } else { "s" };
+    let mut s = format!(
+        "wrote {} files ({variants} variant{} of {count} {} problem{}, seed {seed}) to {}\n",
+        files.len(),
+        plural(variants),
+        topics_name(topics),
+        plural(count),
+        out.display()
+    );
+    for f in files.iter().take(12) {
+        let _ = writeln!(s, "  {}", f.display());
+    }
+    if files.len() > 12 {
+        let _ = writeln!(s, "  … and {} more", files.len() - 12);
+    }
+    s
+}

@@ -1,0 +1,388 @@
+//! The synthetic camera: the basis u, v, n from Pe, Pr, Vup, the camera
+//! matrix Mcam (camera to world) and the view matrix V = Mcam⁻¹ (world to
+//! eye coordinates), and eye coordinates of points.
+
+use crate::error::{Error, Result};
+use crate::num::vec::{self, V3};
+use crate::num::Scalar;
+use crate::stages::trace::{Step, Trace, Val};
+use nalgebra::Matrix4;
+
+/// An up vector closer than this to the view direction (radians) gets a warning.
+pub const NEAR_PARALLEL_RAD: f64 = 1e-6;
+
+/// A camera: eye Pe, look-at (reference) point Pr and up vector Vup, in world
+/// coordinates.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Camera<T> {
+    /// Pe, the eye.
+    pub pe: V3<T>,
+    /// Pr, the point looked at.
+    pub pr: V3<T>,
+    /// Vup, the up direction.
+    pub vup: V3<T>,
+}
+
+/// The camera's orthonormal basis, with the unnormalized vectors it came
+/// from (kept so that eye coordinates can be computed from unrounded
+/// directions).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Basis<T> {
+    /// u, the camera's x axis (right).
+    pub u: V3<T>,
+    /// v, the camera's y axis (up).
+    pub v: V3<T>,
+    /// n, the camera's z axis (the camera looks along −n).
+    pub n: V3<T>,
+    /// Pe − Pr times a power of two (one in exact arithmetic) that brings
+    /// its largest component near 1: parallel to n.
+    pub d: V3<T>,
+    /// Vup times a power of two, likewise.
+    pub up: V3<T>,
+    /// up × d, parallel to u.
+    pub su: V3<T>,
+    /// d × (up × d), parallel to v.
+    pub sv: V3<T>,
+    /// |d|, |su|, |sv| (of the scaled vectors above: what eye coordinates
+    /// divide by).
+    pub norms: [T; 3],
+    /// |Pe − Pr|, unscaled.
+    pub dist: T,
+    /// |Vup × n| = |Vup × (Pe − Pr)|/|Pe − Pr|, unscaled.
+    pub vxn_norm: T,
+}
+
+/// The camera basis:
+///
+/// n = (Pe − Pr)/|Pe − Pr|,  u = (Vup × n)/|Vup × n|,  v = n × u.
+///
+/// Computed from the unrounded direction d = Pe − Pr: u ∥ Vup × d and
+/// v ∥ d × (Vup × d), each normalized once, which is the same vector in exact
+/// arithmetic and loses no accuracy to a rounded n in floats. In floats, d
+/// and Vup are first scaled by powers of two (exactly) so that their largest
+/// components are near 1: the cross products can then neither overflow nor
+/// underflow for coordinates from 1e-30 to 1e30, even in f32.
+///
+/// Errors: Pe = Pr (no view direction), Vup = 0 or parallel to Pe − Pr.
+/// Warns when Vup is within [`NEAR_PARALLEL_RAD`] of the view direction.
+pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>> {
+    let Camera { pe, pr, vup } = cam;
+    // n from the view direction
+    let d = vec::sub(pe, pr);
+    if !vec::is_finite(&d) {
+        return Err(Error::new(
+            "look",
+            format!(
+                "Pe − Pr = {} is too large for {} precision",
+                fmt3(&d),
+                precision_name::<T>()
+            ),
+        ));
+    }
+    let (n, dn) = vec::normalize(&d).ok_or_else(|| {
+        Error::new(
+            "look",
+            format!(
+                "the eye Pe and the look-at point Pr are the same point {}",
+                fmt3(pe)
+            ),
+        )
+    })?;
+    tr.step(|| {
+        Step::new(
+            "Camera axis n (points from the look-at point back to the eye)",
+            "n = (Pe − Pr) / |Pe − Pr|",
+        )
+        .val("Pe", Val::vec3(pe))
+        .val("Pr", Val::vec3(pr))
+        .val("Pe − Pr", Val::vec3(&d))
+        .val("|Pe − Pr|", Val::num(&dn))
+        .res("n", Val::vec3(&n))
+    });
+
+    // u from Vup × d
+    if vec::normalize(vup).is_none() {
+        return Err(Error::new("up", "the up vector Vup is the zero vector"));
+    }
+    // Exact power-of-two scaling (one for Real): directions are unchanged.
+    let (kd, ku) = (
+        T::pow2_scale(&[&d[0], &d[1], &d[2]]),
+        T::pow2_scale(&[&vup[0], &vup[1], &vup[2]]),
+    );
+    let ds = vec::scale(&d, &kd);
+    let ups = vec::scale(vup, &ku);
+    let su = vec::cross(&ups, &ds);
+    let (u, sun) = vec::normalize(&su).ok_or_else(|| {
+        Error::new(
+            "up",
+            format!(
+                "the up vector Vup = {} is parallel to the view direction Pe − Pr = {}, so Vup × n = 0 and u is undefined",
+                fmt3(vup),
+                fmt3(&d)
+            ),
+        )
+    })?;
+    // sin of the angle between Vup and d = |Vup × d| / (|Vup| |d|)
+    let sin_angle = sun.to_f64() / (vec::norm(&ups).to_f64() * vec::norm(&ds).to_f64());
+    let angle = sin_angle.clamp(-1.0, 1.0).asin();
+    if angle < NEAR_PARALLEL_RAD {
+        tr.warn(|| {
+            format!(
+                "the up vector is nearly parallel to the view direction (angle {angle:.3e} rad): u and v are very sensitive to the inputs"
+            )
+        });
+    }
+    tr.step(|| {
+        let vxn = vec::cross(vup, &n);
+        Step::new("Camera axis u (to the right)", "u = (Vup × n) / |Vup × n|")
+            .val("Vup", Val::vec3(vup))
+            .val("Vup × n", Val::vec3(&vxn))
+            .val("|Vup × n|", Val::num(&vec::norm(&vxn)))
+            .res("u", Val::vec3(&u))
+    });
+
+    // v completes the right-handed frame
+    let sv = vec::cross(&ds, &su);
+    let (v, svn) = vec::normalize(&sv).ok_or_else(|| Error::new("up", "v = n × u vanished"))?;
+    tr.step(|| {
+        Step::new("Camera axis v (up in the picture)", "v = n × u")
+            .val("n", Val::vec3(&n))
+            .val("u", Val::vec3(&u))
+            .res("v", Val::vec3(&v))
+    });
+    let b = Basis {
+        u,
+        v,
+        n,
+        vxn_norm: sun.clone() / (ku * kd) / dn.clone(),
+        dist: dn,
+        norms: [vec::norm(&ds), sun, svn],
+        d: ds,
+        up: ups,
+        su,
+        sv,
+    };
+    tr.step(|| check_step(&b));
+    Ok(b)
+}
+
+/// The orthonormality check shown after the basis: u·v, v·n, n·u, |u|, |v|,
+/// |n| and (u × v)·n (+1 for a right-handed frame).
+fn check_step<T: Scalar>(b: &Basis<T>) -> Step {
+    let Basis { u, v, n, .. } = b;
+    let handed = vec::dot(&vec::cross(u, v), n);
+    let ok = |x: &T, want: f64| (x.to_f64() - want).abs() < 1e-6;
+    let dots = [vec::dot(u, v), vec::dot(v, n), vec::dot(n, u)];
+    let lens = [vec::dot(u, u), vec::dot(v, v), vec::dot(n, n)];
+    let good =
+        dots.iter().all(|x| ok(x, 0.0)) && lens.iter().all(|x| ok(x, 1.0)) && ok(&handed, 1.0);
+    Step::new(
+        "Check: u, v, n are orthonormal and right-handed",
+        "u·v = v·n = n·u = 0,  |u| = |v| = |n| = 1,  (u × v)·n = 1",
+    )
+    .val("u·v", Val::num(&dots[0]))
+    .val("v·n", Val::num(&dots[1]))
+    .val("n·u", Val::num(&dots[2]))
+    .val("u·u", Val::num(&lens[0]))
+    .val("v·v", Val::num(&lens[1]))
+    .val("n·n", Val::num(&lens[2]))
+    .res("(u × v)·n", Val::num(&handed))
+    .note(if good {
+        "orthonormal and right-handed"
+    } else {
+        "NOT orthonormal: check the inputs"
+    })
+}
+
+/// Mcam = T(Pe)·[u v n]: the camera-to-world matrix (its columns are u, v, n
+/// and Pe).
+pub fn camera_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>) -> Matrix4<T> {
+    let mut m = Matrix4::<T>::identity();
+    for r in 0..3 {
+        m[(r, 0)] = b.u[r].clone();
+        m[(r, 1)] = b.v[r].clone();
+        m[(r, 2)] = b.n[r].clone();
+        m[(r, 3)] = pe[r].clone();
+    }
+    m
+}
+
+/// The view matrix V = Mcam⁻¹ (world to eye coordinates): rows u, v, n times
+/// the translation by −Pe, so its last column is (−u·Pe, −v·Pe, −n·Pe, 1).
+///
+/// Errors when the translation column is too large for the precision (f32
+/// with coordinates near 1e38).
+pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> Result<Matrix4<T>> {
+    let rot = rows(&b.u, &b.v, &b.n);
+    let mut trans = Matrix4::<T>::identity();
+    for r in 0..3 {
+        trans[(r, 3)] = -pe[r].clone();
+    }
+    let mut view = rot.clone();
+    view[(0, 3)] = -vec::dot(&b.u, pe);
+    view[(1, 3)] = -vec::dot(&b.v, pe);
+    view[(2, 3)] = -vec::dot(&b.n, pe);
+    if !(0..3).all(|r| view[(r, 3)].is_finite()) {
+        return Err(Error::new(
+            "eye",
+            format!(
+                "the view matrix's translation −(u·Pe, v·Pe, n·Pe) is too large for {} precision",
+                precision_name::<T>()
+            ),
+        ));
+    }
+    tr.step(|| {
+        Step::new(
+            "Camera matrix Mcam (camera to world)",
+            "Mcam = T(Pe) · [u v n]   (columns u, v, n, Pe)",
+        )
+        .res("Mcam", Val::mat4(&camera_matrix(b, pe)))
+    });
+    tr.step(|| {
+        Step::new(
+            "View matrix V = Mcam⁻¹ (world to eye): rotation (rows u, v, n) times translation by −Pe",
+            "V = R · T(−Pe),  R = [uᵀ; vᵀ; nᵀ],  last column (−u·Pe, −v·Pe, −n·Pe)",
+        )
+        .val("R", Val::mat4(&rot))
+        .val("T(−Pe)", Val::mat4(&trans))
+        .res("V", Val::mat4(&view))
+    });
+    Ok(view)
+}
+
+/// The matrix with rows a, b, c (and 0 0 0 1).
+fn rows<T: Scalar>(a: &V3<T>, b: &V3<T>, c: &V3<T>) -> Matrix4<T> {
+    let mut m = Matrix4::<T>::identity();
+    for (r, row) in [a, b, c].into_iter().enumerate() {
+        for k in 0..3 {
+            m[(r, k)] = row[k].clone();
+        }
+    }
+    m
+}
+
+/// Eye coordinates of a world point: P' = V·P = (u·(P − Pe), v·(P − Pe), n·(P − Pe)).
+///
+/// Errors when they are too large for the precision (f32 near 1e38).
+///
+/// Computed from the unnormalized axes of [`Basis`] so that no rounded unit
+/// vector enters the result, each numerator from the camera's own inputs
+/// (up, d) and w = P − Pe rather than from rounded cross products:
+///
+/// u·w = (up × d)·w / |up × d| = det[up; d; w] / |su|,
+/// v·w = (d × (up × d))·w / |sv| = ((d·d)(up·w) − (d·up)(d·w)) / |sv|,
+/// n·w = d·w / |d|,
+///
+/// with [`Scalar::triple_product`] and [`Scalar::double_cross_dot`], which
+/// keep the digits of a coordinate much smaller than |w| (a point near a
+/// camera plane).
+pub fn to_eye<T: Scalar>(
+    b: &Basis<T>,
+    pe: &V3<T>,
+    name: &str,
+    p: &V3<T>,
+    tr: &mut impl Trace,
+) -> Result<V3<T>> {
+    let rel = vec::sub(p, pe);
+    let (up, d, w) = (refs(&b.up), refs(&b.d), refs(&rel));
+    let e = vec::v3(
+        T::triple_product(up, d, w) / b.norms[1].clone(),
+        T::double_cross_dot(d, up, w) / b.norms[2].clone(),
+        vec::dot(&b.d, &rel) / b.norms[0].clone(),
+    );
+    tr.step(|| {
+        Step::new(
+            format!("Eye coordinates of {name}"),
+            format!("{name}' = V·{name} = (u·({name} − Pe), v·({name} − Pe), n·({name} − Pe))"),
+        )
+        .val(name.to_string(), Val::vec3(p))
+        .val(format!("{name} − Pe"), Val::vec3(&rel))
+        .res(format!("{name}'"), Val::vec3(&e))
+    });
+    if !vec::is_finite(&e) {
+        return Err(Error::new(
+            format!("points.{name}"),
+            format!(
+                "the eye coordinates of {name} are too large for {} precision",
+                precision_name::<T>()
+            ),
+        ));
+    }
+    Ok(e)
+}
+
+/// The precision's name as `--precision` spells it.
+fn precision_name<T: Scalar>() -> &'static str {
+    match T::PRECISION {
+        crate::num::Precision::Exact => "exact",
+        crate::num::Precision::F64 => "f64",
+        crate::num::Precision::F32 => "f32",
+    }
+}
+
+/// The components of a vector by reference.
+fn refs<T>(a: &V3<T>) -> [&T; 3] {
+    [&a[0], &a[1], &a[2]]
+}
+
+/// A vector written for an error message.
+pub fn fmt3<T: Scalar>(a: &V3<T>) -> String {
+    let s: Vec<String> = a.iter().map(|x| format!("{}", x.to_f64())).collect();
+    format!("({})", s.join(", "))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::stages::trace::NoTrace;
+
+    fn cam(pe: [f64; 3], pr: [f64; 3], up: [f64; 3]) -> Camera<f64> {
+        Camera {
+            pe: pe.into(),
+            pr: pr.into(),
+            vup: up.into(),
+        }
+    }
+
+    #[test]
+    fn text_example_6_1_by_hand() {
+        // Pe = (4,4,4), Pr = (0,1,4): Pe − Pr = (4,3,0), |.| = 5, n = (4/5, 3/5, 0);
+        // Vup × n = (0,1,0) × (4/5,3/5,0) = (0, 0, −4/5), u = (0,0,−1);
+        // v = n × u = (3/5·(−1) − 0, 0 − 4/5·(−1), 0) = (−3/5, 4/5, 0).
+        let c = cam([4.0, 4.0, 4.0], [0.0, 1.0, 4.0], [0.0, 1.0, 0.0]);
+        let b = basis(&c, &mut NoTrace).unwrap();
+        approx::assert_relative_eq!(b.n, V3::new(0.8, 0.6, 0.0), epsilon = 1e-15);
+        approx::assert_relative_eq!(b.u, V3::new(0.0, 0.0, -1.0), epsilon = 1e-15);
+        approx::assert_relative_eq!(b.v, V3::new(-0.6, 0.8, 0.0), epsilon = 1e-15);
+        // Pr − Pe = (−4,−3,0): u· = 0, v· = 12/5 − 12/5 = 0, n· = −16/5 − 9/5 = −5.
+        let e = to_eye(&b, &c.pe, "P", &c.pr, &mut NoTrace).unwrap();
+        approx::assert_relative_eq!(e, V3::new(0.0, 0.0, -5.0), epsilon = 1e-14);
+    }
+
+    #[test]
+    fn view_matrix_agrees_with_eye_coordinates() {
+        let c = cam([3.0, 1.0, 3.0], [2.0, 1.0, 2.0], [0.0, 1.0, 0.0]);
+        let b = basis(&c, &mut NoTrace).unwrap();
+        let v = view_matrix(&b, &c.pe, &mut NoTrace).unwrap();
+        let p = V3::new(1.0, 0.0, 0.0);
+        let e = to_eye(&b, &c.pe, "B", &p, &mut NoTrace).unwrap();
+        let h = v * nalgebra::Vector4::new(1.0, 0.0, 0.0, 1.0);
+        approx::assert_relative_eq!(h.xyz(), e, epsilon = 1e-14);
+        // B' = (1/√2, −1, −5/√2) by hand.
+        let r = std::f64::consts::FRAC_1_SQRT_2;
+        approx::assert_relative_eq!(e, V3::new(r, -1.0, -5.0 * r), epsilon = 1e-14);
+        // V is the inverse of Mcam.
+        let m = camera_matrix(&b, &c.pe);
+        approx::assert_relative_eq!(v * m, Matrix4::identity(), epsilon = 1e-14);
+    }
+
+    #[test]
+    fn degenerate_cameras_are_errors() {
+        let same = cam([1.0, 2.0, 3.0], [1.0, 2.0, 3.0], [0.0, 1.0, 0.0]);
+        assert_eq!(basis(&same, &mut NoTrace).unwrap_err().field, "look");
+        let parallel = cam([0.0, 5.0, 0.0], [0.0, 0.0, 0.0], [0.0, 2.0, 0.0]);
+        assert_eq!(basis(&parallel, &mut NoTrace).unwrap_err().field, "up");
+        let zero = cam([0.0, 0.0, 5.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]);
+        assert_eq!(basis(&zero, &mut NoTrace).unwrap_err().field, "up");
+    }
+}

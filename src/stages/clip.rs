@@ -1,0 +1,587 @@
+//! 3D clipping against an axis-aligned box: 6-bit outcodes (the text's region
+//! codes), the text's outcode line clipping (intersect with each violated
+//! plane, keep intersections whose own code is 000000), and Liang–Barsky as
+//! an independent cross-check.
+
+use crate::error::{Error, Result};
+use crate::num::vec::{self, V3};
+use crate::num::Scalar;
+use crate::stages::trace::{Step, Trace, Val};
+
+/// The box xmin ≤ x ≤ xmax, ymin ≤ y ≤ ymax, zmin ≤ z ≤ zmax (boundary inside).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ClipBox<T> {
+    /// (xmin, ymin, zmin).
+    pub min: V3<T>,
+    /// (xmax, ymax, zmax).
+    pub max: V3<T>,
+}
+
+impl<T: Scalar> ClipBox<T> {
+    /// Checks min ≤ max on every axis.
+    pub fn validate(&self) -> Result<()> {
+        for (k, axis) in ["x", "y", "z"].iter().enumerate() {
+            if self.min[k] > self.max[k] {
+                return Err(Error::new(
+                    "min",
+                    format!(
+                        "{axis}min = {} is greater than {axis}max = {}",
+                        self.min[k].to_f64(),
+                        self.max[k].to_f64()
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The outcome of clipping a segment.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Status {
+    /// Both ends inside: kept whole.
+    Accepted,
+    /// Nothing of it inside.
+    Rejected,
+    /// Cut to the part inside.
+    Clipped,
+}
+
+impl Status {
+    /// The SPEC's word for it.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Status::Accepted => "accepted",
+            Status::Rejected => "rejected",
+            Status::Clipped => "clipped",
+        }
+    }
+}
+
+/// The result of clipping P0P1.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Clipped<T> {
+    /// Outcode of P0.
+    pub code0: u8,
+    /// Outcode of P1.
+    pub code1: u8,
+    /// Accepted, rejected or clipped.
+    pub status: Status,
+    /// The part inside, in the direction P0 → P1.
+    pub segment: Option<(V3<T>, V3<T>)>,
+    /// Every intersection tried, in bit order.
+    pub intersections: Vec<Intersection<T>>,
+}
+
+/// One intersection of the line with a plane an endpoint violates.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Intersection<T> {
+    /// The plane's bit (0 = bit 1, x < xmin, ... 5 = bit 6, z > zmax).
+    pub bit: usize,
+    /// The line parameter t.
+    pub t: T,
+    /// The point P(t).
+    pub point: V3<T>,
+    /// Its outcode (000000: kept).
+    pub code: u8,
+}
+
+/// The short names of the six planes in bit order, as result keys.
+pub const PLANE_KEYS: [&str; 6] = ["left", "right", "bottom", "top", "front", "back"];
+
+/// The six planes in bit order: (axis, is_max, equation, the text's name).
+pub const PLANES: [(usize, bool, &str, &str); 6] = [
+    (0, false, "x = xmin", "kiri (left)"),
+    (0, true, "x = xmax", "kanan (right)"),
+    (1, false, "y = ymin", "bawah (bottom)"),
+    (1, true, "y = ymax", "atas (top)"),
+    (2, false, "z = zmin", "depan (front)"),
+    (2, true, "z = zmax", "belakang (back)"),
+];
+
+/// The 6-bit outcode: bit 1 (rightmost) x < xmin, bit 2 x > xmax, bit 3
+/// y < ymin, bit 4 y > ymax, bit 5 z < zmin, bit 6 z > zmax.
+pub fn outcode<T: Scalar>(b: &ClipBox<T>, p: &V3<T>) -> u8 {
+    let mut c = 0u8;
+    for (bit, &(axis, is_max, _, _)) in PLANES.iter().enumerate() {
+        let out = if is_max {
+            p[axis] > b.max[axis]
+        } else {
+            p[axis] < b.min[axis]
+        };
+        if out {
+            c |= 1 << bit;
+        }
+    }
+    c
+}
+
+/// The 6-bit outcode of a point in homogeneous clip space (x, y, z, w),
+/// against the view volume −w ≤ x, y, z ≤ w, in the same bit order as
+/// [`outcode`] (the box [−w, w]³): bit 1 x < −w, bit 2 x > w, bit 3 y < −w,
+/// bit 4 y > w, bit 5 z < −w (in front of the near plane), bit 6 z > w
+/// (beyond the far plane). Comparing with w instead of dividing by it means
+/// no division happens, so points at or behind the eye (w ≤ 0) get codes too.
+#[inline]
+pub fn outcode_clip_space<T: Scalar>(p: &nalgebra::Vector4<T>) -> u8 {
+    let w = &p[3];
+    let nw = -w.clone();
+    let mut c = 0u8;
+    for axis in 0..3 {
+        if p[axis] < nw {
+            c |= 1 << (2 * axis);
+        }
+        if p[axis] > *w {
+            c |= 1 << (2 * axis + 1);
+        }
+    }
+    c
+}
+
+/// An outcode written bit 6 first, as the text writes it (`001001`).
+pub fn code_str(c: u8) -> String {
+    format!("{c:06b}")
+}
+
+/// Clips the segment P0P1 to the box the text's way:
+///
+/// P(t) = P0 + t·(P1 − P0), 0 ≤ t ≤ 1. Both codes 000000: accept;
+/// code0 AND code1 ≠ 0: reject; otherwise intersect with each plane an
+/// endpoint violates (t = (plane − P0)/(P1 − P0) on that axis) and keep the
+/// intersections whose own code is 000000; the kept points and the inside
+/// endpoints bound the clipped segment.
+pub fn clip_segment<T: Scalar>(
+    b: &ClipBox<T>,
+    p0: &V3<T>,
+    p1: &V3<T>,
+    tr: &mut impl Trace,
+) -> Clipped<T> {
+    // Compute outcodes for both endpoints
+    let (code0, code1) = (outcode(b, p0), outcode(b, p1));
+    tr.step(|| code_step("P0", b, p0, code0));
+    tr.step(|| code_step("P1", b, p1, code1));
+    let and = code0 & code1;
+    tr.step(|| {
+        Step::new(
+            "Trivial tests",
+            "both codes 000000 → accept;  code0 AND code1 ≠ 000000 → reject;  otherwise clip",
+        )
+        .val("code0", Val::text(code_str(code0)))
+        .val("code1", Val::text(code_str(code1)))
+        .res("code0 AND code1", Val::text(code_str(and)))
+        .note(if code0 | code1 == 0 {
+            "both ends inside: accepted whole"
+        } else if and != 0 {
+            "both ends outside the same plane: rejected"
+        } else {
+            "neither test decides: intersect with the planes the ends violate"
+        })
+    });
+    if code0 | code1 == 0 {
+        return Clipped {
+            code0,
+            code1,
+            status: Status::Accepted,
+            segment: Some((p0.clone(), p1.clone())),
+            intersections: vec![],
+        };
+    }
+    if and != 0 {
+        return Clipped {
+            code0,
+            code1,
+            status: Status::Rejected,
+            segment: None,
+            intersections: vec![],
+        };
+    }
+
+    // Intersect with every plane one endpoint violates (in floats, on the
+    // problem halved when P1 − P0 would overflow: the same t and points).
+    let (hb, hp0, hp1, back) = halved_if_overflowing(b, p0, p1);
+    let delta = vec::sub(&hp1, &hp0);
+    let mut kept: Vec<(T, V3<T>)> = Vec::new();
+    let mut intersections = Vec::new();
+    for (bit, &(axis, is_max, plane, name)) in PLANES.iter().enumerate() {
+        if (code0 | code1) & (1 << bit) == 0 {
+            continue;
+        }
+        let bound = if is_max { &hb.max[axis] } else { &hb.min[axis] };
+        // delta[axis] ≠ 0: exactly one end is outside this plane.
+        let t = (bound.clone() - hp0[axis].clone()) / delta[axis].clone();
+        let mut q = intersection_point(&hp0, &hp1, &delta, axis, bound);
+        if let Some(two) = &back {
+            q = vec::scale(&q, two);
+            q[axis] = if is_max { &b.max[axis] } else { &b.min[axis] }.clone();
+        }
+        let c = outcode(b, &q);
+        tr.step(|| {
+            Step::new(
+                format!("Intersection with the {name} plane {plane}"),
+                format!(
+                    "t = ({plane_side} − {a}0)/({a}1 − {a}0),  P(t) = P0 + t·(P1 − P0)",
+                    plane_side = &plane[4..],
+                    a = ["x", "y", "z"][axis]
+                ),
+            )
+            .val("t", Val::num(&t))
+            .res("P(t)", Val::vec3(&q))
+            .res("code", Val::text(code_str(c)))
+            .note(if c == 0 {
+                "code 000000: kept"
+            } else {
+                "code not 000000: outside the box, discarded"
+            })
+        });
+        if c == 0 {
+            kept.push((t.clone(), q.clone()));
+        }
+        intersections.push(Intersection {
+            bit,
+            t,
+            point: q,
+            code: c,
+        });
+    }
+    if code0 == 0 {
+        kept.push((T::zero(), p0.clone()));
+    }
+    if code1 == 0 {
+        kept.push((T::one(), p1.clone()));
+    }
+    let first = kept
+        .iter()
+        .min_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal));
+    let last = kept
+        .iter()
+        .max_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal));
+    let result = match (first, last) {
+        (Some(a), Some(z)) => Clipped {
+            code0,
+            code1,
+            status: Status::Clipped,
+            segment: Some((a.1.clone(), z.1.clone())),
+            intersections,
+        },
+        _ => Clipped {
+            code0,
+            code1,
+            status: Status::Rejected,
+            segment: None,
+            intersections,
+        },
+    };
+    tr.step(|| {
+        let s = Step::new("Clipped segment", "from the kept point with the smallest t to the one with the largest t (inside ends count as t = 0 and t = 1)");
+        match &result.segment {
+            Some((a, z)) => s.res("from", Val::vec3(a)).res("to", Val::vec3(z)).note(if a == z {
+                "the segment touches the box in a single point"
+            } else {
+                "the part of P0P1 inside the box"
+            }),
+            None => s.res("segment", Val::Null).note("no intersection is inside the box: the segment misses it (rejected)"),
+        }
+    });
+    result
+}
+
+/// P(t) = P0 + t·Δ on the plane `axis` = `bound`, where t = (bound − P0ₐ)/Δₐ.
+///
+/// Each other coordinate is evaluated as one quotient of the exact
+/// differences, (Pₖ·Δₐ + (bound − Pₐ)·Δₖ)/Δₐ with P the end nearer the plane, with the numerator a sum of
+/// products rounded once ([`Scalar::sum_of_products`]); the same value as
+/// P0ₖ + t·Δₖ in exact arithmetic, but without the rounding of t being
+/// magnified when P(t) lies much nearer the origin than P0. Should the
+/// products overflow the float range, Pₖ + (bound − Pₐ)·(Δₖ/Δₐ) is used. The plane's
+/// own coordinate is the bound itself, whatever the rounding.
+fn intersection_point<T: Scalar>(
+    p0: &V3<T>,
+    p1: &V3<T>,
+    delta: &V3<T>,
+    axis: usize,
+    bound: &T,
+) -> V3<T> {
+    // Measured from the end nearer the plane (the same point exactly, since
+    // P(t) = P1 + (t − 1)·Δ): its difference to the plane is the smaller,
+    // most accurately rounded one.
+    let num0 = bound.clone() - p0[axis].clone();
+    let num1 = bound.clone() - p1[axis].clone();
+    let (base, num) = if num1.abs() < num0.abs() {
+        (p1, num1)
+    } else {
+        (p0, num0)
+    };
+    let mut q = p0.clone();
+    for k in 0..3 {
+        q[k] = if k == axis {
+            bound.clone()
+        } else {
+            let r =
+                T::sum_of_products(&base[k], &delta[axis], &num, &delta[k]) / delta[axis].clone();
+            if r.is_finite() {
+                r
+            } else {
+                // The products overflow (floats only): the ratio first.
+                base[k].clone() + num.clone() * (delta[k].clone() / delta[axis].clone())
+            }
+        };
+    }
+    q
+}
+
+/// The step explaining one endpoint's outcode, bit by bit.
+fn code_step<T: Scalar>(name: &str, b: &ClipBox<T>, p: &V3<T>, code: u8) -> Step {
+    let mut s = Step::new(
+        format!("Outcode of {name}"),
+        "bit 1 x<xmin (kiri) · bit 2 x>xmax (kanan) · bit 3 y<ymin (bawah) · bit 4 y>ymax (atas) · bit 5 z<zmin (depan) · bit 6 z>zmax (belakang)",
+    )
+    .val(name.to_string(), Val::vec3(p));
+    for (bit, &(axis, is_max, _, side)) in PLANES.iter().enumerate() {
+        let a = ["x", "y", "z"][axis];
+        let (op, lim) = if is_max {
+            (">", &b.max[axis])
+        } else {
+            ("<", &b.min[axis])
+        };
+        let set = code & (1 << bit) != 0;
+        let word = if set { "true" } else { "false" };
+        s = s.val(
+            format!("bit {} ({side})", bit + 1),
+            Val::text(format!(
+                "{} — {a} {op} {a}{}: {} {op} {} is {word}",
+                u8::from(set),
+                if is_max { "max" } else { "min" },
+                short(&p[axis]),
+                short(lim)
+            )),
+        );
+    }
+    s.res("code", Val::text(code_str(code)))
+}
+
+/// A number for a one-line remark: its exact form, else a short decimal.
+fn short<T: Scalar>(x: &T) -> String {
+    let s = x.shown();
+    s.pretty
+        .unwrap_or_else(|| crate::num::format::fmt_dec(s.value, 6).replace('-', "−"))
+}
+
+/// Liang–Barsky: with Δ = P1 − P0, for each of the six pairs
+/// p_k = −Δx, Δx, −Δy, Δy, −Δz, Δz and q_k = x0 − xmin, xmax − x0, ...:
+/// p_k = 0 and q_k < 0 → outside; p_k < 0 → t0 = max(t0, q_k/p_k);
+/// p_k > 0 → t1 = min(t1, q_k/p_k); the segment is P(t0)..P(t1) if t0 ≤ t1.
+pub fn liang_barsky<T: Scalar>(
+    b: &ClipBox<T>,
+    p0: &V3<T>,
+    p1: &V3<T>,
+    tr: &mut impl Trace,
+) -> Option<(V3<T>, V3<T>)> {
+    let (hb, hp0, hp1, back) = halved_if_overflowing(b, p0, p1);
+    let delta = vec::sub(&hp1, &hp0);
+    let (b, p0h) = (&hb, &hp0);
+    let (mut t0, mut t1) = (T::zero(), T::one());
+    let mut inside = true;
+    for axis in 0..3 {
+        for (p, q) in [
+            (
+                -delta[axis].clone(),
+                p0h[axis].clone() - b.min[axis].clone(),
+            ),
+            (delta[axis].clone(), b.max[axis].clone() - p0h[axis].clone()),
+        ] {
+            if p.is_zero_value() {
+                if q < T::zero() {
+                    inside = false;
+                }
+            } else {
+                let r = q / p.clone();
+                if p < T::zero() {
+                    if r > t0 {
+                        t0 = r;
+                    }
+                } else if r < t1 {
+                    t1 = r;
+                }
+            }
+        }
+    }
+    let result = if inside && t0 <= t1 {
+        let at = |t: &T| {
+            let mut q = vec::add(p0h, &vec::scale(&delta, t));
+            snap(b, &mut q);
+            match &back {
+                Some(two) => vec::scale(&q, two),
+                None => q,
+            }
+        };
+        Some((
+            if t0.is_zero_value() {
+                p0.clone()
+            } else {
+                at(&t0)
+            },
+            if t1 == T::one() { p1.clone() } else { at(&t1) },
+        ))
+    } else {
+        None
+    };
+    tr.step(|| {
+        let s = Step::new("Cross-check by Liang–Barsky", "t0 = max over entering planes of q/p,  t1 = min over leaving planes of q/p,  visible if t0 ≤ t1")
+            .val("t0", Val::num(&t0))
+            .val("t1", Val::num(&t1));
+        match &result {
+            Some((a, z)) => s.res("from", Val::vec3(a)).res("to", Val::vec3(z)),
+            None => s.res("segment", Val::Null),
+        }
+    });
+    result
+}
+
+/// The box and the ends halved (exactly, barring subnormals) when P1 − P0
+/// overflows the float range, with the factor 2 to scale points back; the
+/// inputs themselves otherwise (always for exact numbers).
+#[allow(clippy::type_complexity)]
+fn halved_if_overflowing<T: Scalar>(
+    b: &ClipBox<T>,
+    p0: &V3<T>,
+    p1: &V3<T>,
+) -> (ClipBox<T>, V3<T>, V3<T>, Option<T>) {
+    let fits = |x: &V3<T>| vec::is_finite(x);
+    let span = |lo: &V3<T>, hi: &V3<T>| fits(&vec::sub(hi, lo));
+    if span(p0, p1) && span(p0, &b.min) && span(p0, &b.max) && span(p1, &b.min) && span(p1, &b.max)
+    {
+        return (b.clone(), p0.clone(), p1.clone(), None);
+    }
+    let half = T::one() / T::from_i64(2);
+    let h = |x: &V3<T>| vec::scale(x, &half);
+    (
+        ClipBox {
+            min: h(&b.min),
+            max: h(&b.max),
+        },
+        h(p0),
+        h(p1),
+        Some(T::from_i64(2)),
+    )
+}
+
+/// Moves coordinates that rounding put a hair outside the box back onto it.
+fn snap<T: Scalar>(b: &ClipBox<T>, q: &mut V3<T>) {
+    for k in 0..3 {
+        if q[k] < b.min[k] {
+            q[k] = b.min[k].clone();
+        } else if q[k] > b.max[k] {
+            q[k] = b.max[k].clone();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::stages::trace::NoTrace;
+
+    #[test]
+    fn clip_space_outcode_is_the_box_outcode_of_minus_w_to_w() {
+        // With w = 2 the volume is the box [−2, 2]³: the same bits as outcode().
+        let b = ClipBox {
+            min: V3::new(-2.0, -2.0, -2.0),
+            max: V3::new(2.0, 2.0, 2.0),
+        };
+        for p in [
+            [3.0, 0.0, 0.0],
+            [-3.0, 2.5, 0.0],
+            [0.0, -9.0, -2.5],
+            [1.0, 1.0, 7.0],
+            [2.0, -2.0, 2.0],
+        ] {
+            let h = nalgebra::Vector4::new(p[0], p[1], p[2], 2.0);
+            assert_eq!(
+                outcode_clip_space(&h),
+                outcode(&b, &V3::new(p[0], p[1], p[2]))
+            );
+        }
+        // A point behind the eye (w < 0) is outside on some plane.
+        assert_ne!(
+            outcode_clip_space(&nalgebra::Vector4::new(0.0, 0.0, 1.0, -1.0)),
+            0
+        );
+    }
+
+    fn bx() -> ClipBox<f64> {
+        ClipBox {
+            min: V3::new(0.0, 0.0, 0.0),
+            max: V3::new(3.0, 4.0, 3.0),
+        }
+    }
+
+    #[test]
+    fn text_example_outcodes_and_clip() {
+        // P0 (4,2,2): x > 3 → bit 2 → 000010. P1 (−2,6,1): x < 0 (bit 1), y > 4 (bit 4) → 001001.
+        let (p0, p1) = (V3::new(4.0, 2.0, 2.0), V3::new(-2.0, 6.0, 1.0));
+        let r = clip_segment(&bx(), &p0, &p1, &mut NoTrace);
+        assert_eq!(code_str(r.code0), "000010");
+        assert_eq!(code_str(r.code1), "001001");
+        assert_eq!(r.status, Status::Clipped);
+        // x = 3: t = (3−4)/(−6) = 1/6 → (3, 2 + 4/6, 2 − 1/6) = (3, 8/3, 11/6).
+        // y = 4: t = (4−2)/4 = 1/2 → (4 − 3, 4, 2 − 1/2) = (1, 4, 3/2).
+        let (a, c) = r.segment.unwrap();
+        approx::assert_relative_eq!(a, V3::new(3.0, 8.0 / 3.0, 11.0 / 6.0), epsilon = 1e-15);
+        approx::assert_relative_eq!(c, V3::new(1.0, 4.0, 1.5), epsilon = 1e-15);
+        let lb = liang_barsky(&bx(), &p0, &p1, &mut NoTrace).unwrap();
+        approx::assert_relative_eq!(lb.0, a, epsilon = 1e-15);
+        approx::assert_relative_eq!(lb.1, c, epsilon = 1e-15);
+    }
+
+    #[test]
+    fn text_and_rule() {
+        // The text's P3 (010101) and P4 (100110): AND = 000100.
+        assert_eq!(code_str(0b010101 & 0b100110), "000100");
+    }
+
+    #[test]
+    fn trivial_cases_and_misses() {
+        let inside = clip_segment(
+            &bx(),
+            &V3::new(1.0, 1.0, 1.0),
+            &V3::new(2.0, 2.0, 2.0),
+            &mut NoTrace,
+        );
+        assert_eq!(inside.status, Status::Accepted);
+        let same_side = clip_segment(
+            &bx(),
+            &V3::new(-1.0, 1.0, 1.0),
+            &V3::new(-2.0, 2.0, 2.0),
+            &mut NoTrace,
+        );
+        assert_eq!(same_side.status, Status::Rejected);
+        // Passes the corner (3,4) region diagonally outside: x + y = 8 never meets x ≤ 3, y ≤ 4.
+        let miss = clip_segment(
+            &bx(),
+            &V3::new(2.0, 6.0, 1.0),
+            &V3::new(6.0, 2.0, 1.0),
+            &mut NoTrace,
+        );
+        assert_eq!(miss.status, Status::Rejected);
+        // Touches the corner (3,4,1) exactly: x + y = 7.
+        let touch = clip_segment(
+            &bx(),
+            &V3::new(2.0, 5.0, 1.0),
+            &V3::new(5.0, 2.0, 1.0),
+            &mut NoTrace,
+        );
+        assert_eq!(touch.status, Status::Clipped);
+        let (a, b) = touch.segment.unwrap();
+        assert_eq!(a, b);
+        assert_eq!(a, V3::new(3.0, 4.0, 1.0));
+    }
+
+    #[test]
+    fn inverted_box_is_an_error() {
+        let b = ClipBox {
+            min: V3::new(0.0, 5.0, 0.0),
+            max: V3::new(1.0, 4.0, 1.0),
+        };
+        assert!(b.validate().unwrap_err().message.contains("ymin"));
+    }
+}

@@ -1,0 +1,754 @@
+//! Lighting at one surface point: the text's five optical-view models
+//! (diffuse, specular, ambient, Lambert, Phong) and Direct3D 9's
+//! Blinn–Phong with directional, point and spot lights.
+//!
+//! All vectors are in grafika's right-handed eye space (+z toward the
+//! viewer) and unit length where they are directions: `L` points to the
+//! light, `V` to the viewer, `N` is the surface normal.
+//!
+//! ```text
+//! R = 2N(L·N) − L,   cos α = L·N,   cos β = R·V  (Blinn: N·H)
+//! ambient  = ka · Ca ⊙ (Ga + Σᵢ Attᵢ·Spotᵢ·Laᵢ)
+//! diffuse  = kd · Cs ⊙ Σᵢ Attᵢ·Spotᵢ·Ldᵢ · max(cos αᵢ, 0)
+//! specular = ks · Csp ⊙ Σᵢ Attᵢ·Spotᵢ·Lsᵢ · max(cos βᵢ, 0)ⁿ
+//! color    = clamp₀₁(ambient + diffuse + specular + emissive)
+//! ```
+//!
+//! **How the text and Direct3D agree.** The text's model is Direct3D's
+//! equation with one white directional light (La = Ld = Ls = white,
+//! Att = Spot = 1), no global ambient (Ga = 0), and the material colors
+//! Direct3D would use being `ka·Cs`, `kd·Cs` and `ks·white` — the text's
+//! "Iₐ = Iₛ kₐ" takes the ambient intensity from the light source, so the
+//! light carries the ambient. With those values every sum above has one
+//! term equal to 1 and the formulas reduce to SPEC §1 exactly. A Direct3D
+//! material (colors given) uses ka = kd = ks = 1: its colors already carry
+//! the coefficients.
+//!
+//! [`shade`] is the renderer's per-pixel function: no allocation, nothing
+//! built for explanation unless the recorder listens, the specular term
+//! skipped when it cannot contribute, and lights out of range never
+//! evaluated. Inputs are checked once beforehand ([`Material::validate`],
+//! [`Light::validate`], [`unit`]).
+
+use crate::error::{Error, Result};
+use crate::num::vec::{normalize, sub, v3, V3};
+use crate::num::Scalar;
+use crate::stages::trace::{Step, Trace, Val};
+
+mod light;
+pub use light::{light_term, light_term_with, spot_factor};
+
+/// The lighting model (`--model`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Model {
+    /// Ambient only: ka·Cs.
+    Ambient,
+    /// Diffuse scattering only: kd·max(cos α, 0)·Cs.
+    Diffuse,
+    /// Specular reflection only: ks·max(cos β, 0)ⁿ·white.
+    Specular,
+    /// Lambert's law: diffuse + ambient.
+    Lambert,
+    /// The Phong model: diffuse + specular + ambient (the text's default).
+    #[default]
+    Phong,
+    /// Blinn–Phong (Direct3D 9): the specular term uses N·H.
+    Blinn,
+}
+
+impl Model {
+    /// Which terms the model adds: (ambient, diffuse, specular).
+    pub fn terms(self) -> (bool, bool, bool) {
+        match self {
+            Model::Ambient => (true, false, false),
+            Model::Diffuse => (false, true, false),
+            Model::Specular => (false, false, true),
+            Model::Lambert => (true, true, false),
+            Model::Phong | Model::Blinn => (true, true, true),
+        }
+    }
+    /// The name as `--model` spells it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Model::Ambient => "ambient",
+            Model::Diffuse => "diffuse",
+            Model::Specular => "specular",
+            Model::Lambert => "lambert",
+            Model::Phong => "phong",
+            Model::Blinn => "blinn",
+        }
+    }
+}
+
+/// An RGB color, each channel in [0, 1].
+pub type Rgb<T> = [T; 3];
+
+/// (c, c, c).
+pub fn gray<T: Scalar>(c: T) -> Rgb<T> {
+    [c.clone(), c.clone(), c]
+}
+
+/// The material at the point.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Material<T> {
+    /// The lighting model.
+    pub model: Model,
+    /// Ambient coefficient ka.
+    pub ka: T,
+    /// Diffuse coefficient kd.
+    pub kd: T,
+    /// Specular coefficient ks.
+    pub ks: T,
+    /// Specular exponent n (Direct3D's Power); integers use exact powers.
+    pub shininess: T,
+    /// Cs, the surface color (the diffuse color, and the ambient one unless
+    /// `ambient_color` is set).
+    pub color: Rgb<T>,
+    /// The specular color (the text's Cwhite).
+    pub specular: Rgb<T>,
+    /// The emissive color, added unlit (Direct3D's Ce; black in the text).
+    pub emissive: Rgb<T>,
+    /// Whether the specular term is on (Direct3D's D3DRS_SPECULARENABLE).
+    pub specular_on: bool,
+    /// Whether the specular term needs cos α > 0 (the usual rule); the
+    /// text's code adds it even when the light is behind the surface.
+    pub specular_requires_lit: bool,
+    /// A separate ambient color Ca (Direct3D material); `None` = Cs.
+    pub ambient_color: Option<Rgb<T>>,
+}
+
+impl<T: Scalar> Material<T> {
+    /// The text's material: Phong, ka = 0.4, kd = 0.6, ks = 0.7, n = 4,
+    /// white specular, no emission.
+    pub fn text_default(color: Rgb<T>) -> Self {
+        let tenth = |k: i64| T::from_i64(k) / T::from_i64(10);
+        Material {
+            model: Model::Phong,
+            ka: tenth(4),
+            kd: tenth(6),
+            ks: tenth(7),
+            shininess: T::from_i64(4),
+            color,
+            specular: gray(T::one()),
+            emissive: gray(T::zero()),
+            specular_on: true,
+            specular_requires_lit: false,
+            ambient_color: None,
+        }
+    }
+
+    /// Checks coefficients (≥ 0), shininess (≥ 0) and colors (in [0, 1]);
+    /// field names are prefixed with `prefix` (`""`, `"shade."`).
+    pub fn validate(&self, prefix: &str) -> Result<()> {
+        for (k, v) in [
+            ("ka", &self.ka),
+            ("kd", &self.kd),
+            ("ks", &self.ks),
+            ("shininess", &self.shininess),
+        ] {
+            if !v.is_finite() || *v < T::zero() {
+                return Err(Error::new(
+                    format!("{prefix}{k}"),
+                    format!("must be a number ≥ 0, got {}", v.to_f64()),
+                ));
+            }
+        }
+        check_color(&format!("{prefix}color"), &self.color)?;
+        check_color(&format!("{prefix}material.specular"), &self.specular)?;
+        check_color(&format!("{prefix}material.emissive"), &self.emissive)?;
+        if let Some(a) = &self.ambient_color {
+            check_color(&format!("{prefix}material.ambient"), a)?;
+        }
+        Ok(())
+    }
+}
+
+/// Errors unless every channel is in [0, 1].
+pub fn check_color<T: Scalar>(field: &str, c: &Rgb<T>) -> Result<()> {
+    for (ch, v) in ["red", "green", "blue"].iter().zip(c) {
+        if !v.is_finite() || *v < T::zero() || *v > T::one() {
+            return Err(Error::new(
+                field,
+                format!("color channels must lie in [0, 1]; {ch} is {}", v.to_f64()),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// What kind of light, and where.
+#[derive(Clone, Debug, PartialEq)]
+pub enum LightKind<T> {
+    /// Infinitely far: `dir` is the unit vector TO the light (the text's L).
+    Directional {
+        /// Unit vector toward the light.
+        dir: V3<T>,
+    },
+    /// At a point (eye space), shining in every direction.
+    Point {
+        /// Position of the light.
+        pos: V3<T>,
+    },
+    /// At a point, shining along `dir` (unit, from the light outward —
+    /// Direct3D's Direction) in a cone: full inner angle `theta`, full outer
+    /// angle `phi` (degrees; halved in the formula), `falloff` between.
+    Spot {
+        /// Position of the light.
+        pos: V3<T>,
+        /// Unit axis of the cone, pointing away from the light.
+        dir: V3<T>,
+        /// Full angle of the inner cone (degrees).
+        theta: T,
+        /// Full angle of the outer cone (degrees).
+        phi: T,
+        /// Exponent of the penumbra falloff.
+        falloff: T,
+    },
+}
+
+/// A light and its colors.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Light<T> {
+    /// Kind and geometry.
+    pub kind: LightKind<T>,
+    /// La.
+    pub ambient: Rgb<T>,
+    /// Ld.
+    pub diffuse: Rgb<T>,
+    /// Ls.
+    pub specular: Rgb<T>,
+    /// a0, a1, a2 of Att = 1/(a0 + a1·d + a2·d²) (point and spot lights).
+    pub attenuation: [T; 3],
+    /// Beyond this distance the light does nothing (point and spot lights).
+    pub range: Option<T>,
+}
+
+impl<T: Scalar> Light<T> {
+    /// The text's light: white, directional, along (0, 0, 1).
+    pub fn text_default() -> Self {
+        Light::directional(v3(T::zero(), T::zero(), T::one()))
+    }
+
+    /// A white directional light toward unit `dir`.
+    pub fn directional(dir: V3<T>) -> Self {
+        Light {
+            kind: LightKind::Directional { dir },
+            ambient: gray(T::one()),
+            diffuse: gray(T::one()),
+            specular: gray(T::one()),
+            attenuation: [T::one(), T::zero(), T::zero()],
+            range: None,
+        }
+    }
+
+    /// Checks colors, attenuation (≥ 0, not all zero), range (> 0) and the
+    /// spot cone (0 ≤ θ ≤ φ ≤ 180°, falloff ≥ 0); `field` names the light.
+    pub fn validate(&self, field: &str) -> Result<()> {
+        check_color(&format!("{field}.ambient"), &self.ambient)?;
+        check_color(&format!("{field}.diffuse"), &self.diffuse)?;
+        check_color(&format!("{field}.specular"), &self.specular)?;
+        let a = &self.attenuation;
+        if a.iter().any(|x| !x.is_finite() || *x < T::zero()) || a.iter().all(|x| x.is_zero_value())
+        {
+            return Err(Error::new(
+                format!("{field}.attenuation"),
+                format!(
+                    "a0, a1, a2 must be ≥ 0 and not all 0, got ({}, {}, {})",
+                    a[0].to_f64(),
+                    a[1].to_f64(),
+                    a[2].to_f64()
+                ),
+            ));
+        }
+        if let Some(r) = &self.range {
+            if *r <= T::zero() {
+                return Err(Error::new(
+                    format!("{field}.range"),
+                    format!("must be > 0, got {}", r.to_f64()),
+                ));
+            }
+        }
+        if let LightKind::Spot {
+            theta,
+            phi,
+            falloff,
+            ..
+        } = &self.kind
+        {
+            let full = T::from_i64(180);
+            if *theta < T::zero() || *theta > *phi || *phi > full {
+                return Err(Error::new(
+                    format!("{field}.theta"),
+                    format!(
+                        "the cone angles need 0 ≤ theta ≤ phi ≤ 180°, got theta = {}, phi = {}",
+                        theta.to_f64(),
+                        phi.to_f64()
+                    ),
+                ));
+            }
+            if *falloff < T::zero() {
+                return Err(Error::new(
+                    format!("{field}.falloff"),
+                    format!("must be ≥ 0, got {}", falloff.to_f64()),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The surface point.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Surface<T> {
+    /// Unit normal N.
+    pub normal: V3<T>,
+    /// Unit vector to the viewer V (used when `camera` is `None`).
+    pub view: V3<T>,
+    /// Position in eye space (for point and spot lights, and the local viewer).
+    pub position: V3<T>,
+    /// Camera position: `Some` = local viewer, V = norm(Cp − Vp).
+    pub camera: Option<V3<T>>,
+}
+
+/// What one light does at the point.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LightTerm<T> {
+    /// Unit vector to the light, L.
+    pub l: V3<T>,
+    /// Distance to the light (point and spot lights).
+    pub distance: Option<T>,
+    /// Attenuation factor.
+    pub attenuation: T,
+    /// Spot factor.
+    pub spot: T,
+    /// cos α = L·N.
+    pub cos_alpha: T,
+    /// R = 2N(L·N) − L (when the specular term is evaluated or explained).
+    pub r: Option<V3<T>>,
+    /// cos β = R·V.
+    pub cos_beta: Option<T>,
+    /// Half vector H (Blinn).
+    pub h: Option<V3<T>>,
+    /// N·H (Blinn).
+    pub cos_nh: Option<T>,
+    /// max(cos, 0)ⁿ of the model's specular cosine (0 when skipped).
+    pub highlight: T,
+}
+
+/// The lighting result.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Shaded<T> {
+    /// The final color, each channel clamped to [0, 1].
+    pub color: Rgb<T>,
+    /// ambient + diffuse + specular + emissive before clamping.
+    pub unclamped: Rgb<T>,
+    /// The ambient term.
+    pub ambient: Rgb<T>,
+    /// The diffuse term.
+    pub diffuse: Rgb<T>,
+    /// The specular term.
+    pub specular: Rgb<T>,
+    /// The emissive term.
+    pub emissive: Rgb<T>,
+    /// The viewer direction used.
+    pub view: V3<T>,
+    /// R of the first light evaluated.
+    pub r: Option<V3<T>>,
+    /// H of the first light evaluated (Blinn).
+    pub h: Option<V3<T>>,
+    /// cos α of the first light evaluated.
+    pub cos_alpha: Option<T>,
+    /// cos β = R·V of the first light evaluated.
+    pub cos_beta: Option<T>,
+    /// N·H of the first light evaluated (Blinn).
+    pub cos_nh: Option<T>,
+    /// How many lights were in range.
+    pub lights_used: usize,
+}
+
+/// The unit vector of `v`, recorded as a step; the zero vector is an error
+/// naming `field`.
+pub fn unit<T: Scalar>(name: &str, field: &str, v: &V3<T>, tr: &mut impl Trace) -> Result<V3<T>> {
+    let (u, len) = normalize(v).ok_or_else(|| {
+        Error::new(
+            field,
+            format!("{name} is the zero vector (0, 0, 0): it has no direction, so it cannot be made a unit vector"),
+        )
+    })?;
+    tr.step(|| {
+        let s = Step::new(
+            format!("Unit vector {name}"),
+            format!("{name} = v/|v|,  |v| = √(v₀² + v₁² + v₂²)"),
+        )
+        .val("v", Val::vec3(v))
+        .val("|v|", Val::num(&len))
+        .res(name, Val::vec3(&u));
+        if len == T::one() {
+            s.note("already a unit vector")
+        } else {
+            s
+        }
+    });
+    Ok(u)
+}
+
+/// xⁿ: exact repeated multiplication for a whole n ≥ 0, otherwise through
+/// f64, marked approximate in exact arithmetic (Direct3D's Power and
+/// falloff may be fractional).
+#[inline(always)]
+pub fn pow<T: Scalar>(x: &T, n: &T) -> T {
+    match n.as_whole() {
+        Some(k) => x.powi(k),
+        None => x.powf(n),
+    }
+}
+
+/// max(x, 0) (per lane for a lane type).
+#[inline(always)]
+fn max0<T: Scalar>(x: &T) -> T {
+    x.max_of(&T::zero())
+}
+
+fn listening<Tr: Trace>(_: &Tr) -> bool {
+    Tr::ON
+}
+
+/// A step title, prefixed "Light i: " when there are several lights.
+fn label(at: (usize, usize), what: &str) -> String {
+    if at.1 > 1 {
+        format!("Light {}: {what}", at.0 + 1)
+    } else {
+        let mut c = what.chars();
+        c.next()
+            .map(|f| f.to_uppercase().chain(c).collect())
+            .unwrap_or_default()
+    }
+}
+
+/// Two rules of the lighting stage, as replaceable functions: the text's
+/// (the default) or, for the mistake catalog (`diagnose`), one done the way
+/// a student might get it wrong — so that a mistaken answer is reproduced by
+/// re-running this stage, not by a second copy of its math.
+#[derive(Clone, Copy)]
+pub struct Rules<T> {
+    /// R from N, L and 2(L·N): the text's R = 2N(L·N) − L.
+    pub reflect: fn(&V3<T>, &V3<T>, &T) -> V3<T>,
+    /// The base of the highlight power: the text's max(cos β, 0) (N·H for Blinn).
+    pub highlight_base: fn(&T) -> T,
+}
+
+impl<T: Scalar> Default for Rules<T> {
+    fn default() -> Self {
+        Rules {
+            reflect: text_reflect,
+            highlight_base: max0,
+        }
+    }
+}
+
+/// The text's R = 2N(L·N) − L, from N, L and 2(L·N).
+#[inline(always)]
+fn text_reflect<T: Scalar>(n: &V3<T>, l: &V3<T>, two_ln: &T) -> V3<T> {
+    sub(&crate::num::vec::scale(n, two_ln), l)
+}
+
+/// The two replaceable rules as a trait: [`Rules`] (functions chosen at run
+/// time, for `diagnose`) or [`TextRules`] (the text's, known at compile
+/// time, so the renderer's per-pixel call inlines them).
+pub trait RuleSet<T> {
+    /// R from N, L and 2(L·N).
+    fn reflect(&self, n: &V3<T>, l: &V3<T>, two_ln: &T) -> V3<T>;
+    /// The base of the highlight power.
+    fn highlight_base(&self, cos: &T) -> T;
+}
+
+impl<T: Scalar> RuleSet<T> for Rules<T> {
+    #[inline]
+    fn reflect(&self, n: &V3<T>, l: &V3<T>, two_ln: &T) -> V3<T> {
+        (self.reflect)(n, l, two_ln)
+    }
+    #[inline]
+    fn highlight_base(&self, cos: &T) -> T {
+        (self.highlight_base)(cos)
+    }
+}
+
+/// The text's rules, the same functions [`Rules::default`] holds.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct TextRules;
+
+impl<T: Scalar> RuleSet<T> for TextRules {
+    #[inline(always)]
+    fn reflect(&self, n: &V3<T>, l: &V3<T>, two_ln: &T) -> V3<T> {
+        text_reflect(n, l, two_ln)
+    }
+    #[inline(always)]
+    fn highlight_base(&self, cos: &T) -> T {
+        max0(cos)
+    }
+}
+
+/// [f(0), f(1), f(2)], always inlined (the per-pixel path).
+#[inline(always)]
+fn per_channel<T>(mut f: impl FnMut(usize) -> T) -> Rgb<T> {
+    [f(0), f(1), f(2)]
+}
+
+fn rgb_val<T: Scalar>(c: &Rgb<T>) -> Val {
+    Val::List(c.iter().map(Val::num).collect())
+}
+
+/// The lighting of one point by `lights`, with no global ambient.
+///
+/// See the module documentation for the formulas.
+#[inline]
+pub fn shade<T: Scalar>(
+    mat: &Material<T>,
+    lights: &[Light<T>],
+    s: &Surface<T>,
+    tr: &mut impl Trace,
+) -> Shaded<T> {
+    shade_with_ambient(mat, lights, &gray(T::zero()), s, tr)
+}
+
+/// [`shade`] with a global ambient light Ga (Direct3D's D3DRS_AMBIENT).
+#[inline]
+pub fn shade_with_ambient<T: Scalar>(
+    mat: &Material<T>,
+    lights: &[Light<T>],
+    global_ambient: &Rgb<T>,
+    s: &Surface<T>,
+    tr: &mut impl Trace,
+) -> Shaded<T> {
+    shade_with_rules(mat, lights, global_ambient, s, &TextRules, tr)
+}
+
+/// The color alone of [`shade`], nothing recorded: the renderer's
+/// per-pixel call. The same computation as [`shade`] (one body,
+/// [`shade_with_rules`]), inlined into the caller so that the parts of the report
+/// nobody reads (R, H, the separate terms) are never built.
+#[inline(always)]
+pub fn shade_color<T: Scalar>(mat: &Material<T>, lights: &[Light<T>], s: &Surface<T>) -> Rgb<T> {
+    shade_with_rules(
+        mat,
+        lights,
+        &gray(T::zero()),
+        s,
+        &TextRules,
+        &mut crate::stages::trace::NoTrace,
+    )
+    .color
+}
+
+/// [`shade_with_ambient`] under the given rules ([`Rules`] or [`TextRules`]):
+/// the body of every `shade*` function, always inlined into its caller.
+#[inline(always)]
+pub fn shade_with_rules<T: Scalar, R: RuleSet<T>>(
+    mat: &Material<T>,
+    lights: &[Light<T>],
+    global_ambient: &Rgb<T>,
+    s: &Surface<T>,
+    rules: &R,
+    tr: &mut impl Trace,
+) -> Shaded<T> {
+    let (want_a, want_d, want_s) = mat.model.terms();
+    let want_spec = want_s && mat.specular_on && !mat.ks.is_zero_value();
+    let v = view_vector(s, tr);
+
+    // Sum each light's contribution per channel
+    let mut sum_a = global_ambient.clone();
+    let mut sum_d = gray(T::zero());
+    let mut sum_s = gray(T::zero());
+    let mut first: Option<LightTerm<T>> = None;
+    let mut used = 0;
+    for (i, light) in lights.iter().enumerate() {
+        let Some(t) =
+            light::light_term_with(mat, light, (i, lights.len()), s, &v, want_spec, rules, tr)
+        else {
+            continue;
+        };
+        used += 1;
+        let f = t.attenuation.clone() * t.spot.clone();
+        let fd = f.clone() * max0(&t.cos_alpha);
+        let fs = f.clone() * t.highlight.clone();
+        for c in 0..3 {
+            sum_a[c] += light.ambient[c].clone() * f.clone();
+            sum_d[c] += light.diffuse[c].clone() * fd.clone();
+            sum_s[c] += light.specular[c].clone() * fs.clone();
+        }
+        if first.is_none() {
+            first = Some(t);
+        }
+    }
+
+    // The three terms, the sum and the clamp
+    let ca = mat.ambient_color.as_ref().unwrap_or(&mat.color);
+    /// k·sum⊙col, or zero when the model has no such term.
+    #[inline(always)]
+    fn term<T: Scalar>(on: bool, k: &T, sum: &Rgb<T>, col: &Rgb<T>) -> Rgb<T> {
+        per_channel(|c| {
+            if on {
+                k.clone() * sum[c].clone() * col[c].clone()
+            } else {
+                T::zero()
+            }
+        })
+    }
+    let ambient = term(want_a, &mat.ka, &sum_a, ca);
+    let diffuse = term(want_d, &mat.kd, &sum_d, &mat.color);
+    let specular = term(want_spec, &mat.ks, &sum_s, &mat.specular);
+    let emissive = mat.emissive.clone();
+    let unclamped: Rgb<T> = per_channel(|c| {
+        ambient[c].clone() + diffuse[c].clone() + specular[c].clone() + emissive[c].clone()
+    });
+    let color: Rgb<T> = per_channel(|c| {
+        let x = &unclamped[c];
+        // min(x, 1), then max(·, 0): 1 above, 0 below (and for NaN).
+        max0(&x.min_of(&T::one()))
+    });
+    record_totals(
+        mat,
+        (want_a, want_d, want_spec),
+        [&sum_a, &sum_d, &sum_s],
+        [&ambient, &diffuse, &specular],
+        global_ambient,
+        lights,
+        tr,
+    );
+    tr.step(|| {
+        Step::new(
+            "Sum of the terms",
+            "C = ambient + diffuse + specular + emissive",
+        )
+        .val("ambient", rgb_val(&ambient))
+        .val("diffuse", rgb_val(&diffuse))
+        .val("specular", rgb_val(&specular))
+        .val("emissive", rgb_val(&emissive))
+        .res("unclamped", rgb_val(&unclamped))
+    });
+    tr.step(|| {
+        let clipped = unclamped.iter().any(|x| *x > T::one() || *x < T::zero());
+        Step::new("Clamp each channel to [0, 1]", "color = min(max(C, 0), 1)")
+            .val("C", rgb_val(&unclamped))
+            .res("color", rgb_val(&color))
+            .note(if clipped {
+                "a channel went past 1 (or below 0) and is clamped: the highlight saturates"
+            } else {
+                "every channel is already in [0, 1]"
+            })
+    });
+
+    let (r, h, cos_alpha, cos_beta, cos_nh) = match first {
+        Some(t) => (t.r, t.h, Some(t.cos_alpha), t.cos_beta, t.cos_nh),
+        None => (None, None, None, None, None),
+    };
+    Shaded {
+        color,
+        unclamped,
+        ambient,
+        diffuse,
+        specular,
+        emissive,
+        view: v,
+        r,
+        h,
+        cos_alpha,
+        cos_beta,
+        cos_nh,
+        lights_used: used,
+    }
+}
+
+/// V: the given unit view vector, or norm(Cp − Vp) with a local viewer.
+#[inline(always)]
+fn view_vector<T: Scalar>(s: &Surface<T>, tr: &mut impl Trace) -> V3<T> {
+    let Some(cp) = &s.camera else {
+        return s.view.clone();
+    };
+    let d = sub(cp, &s.position);
+    let v = normalize(&d)
+        .map(|(u, _)| u)
+        .unwrap_or_else(|| s.view.clone());
+    tr.step(|| {
+        Step::new("Viewer direction (local viewer)", "V = norm(Cp − Vp)")
+            .val("Cp", Val::vec3(cp))
+            .val("Vp", Val::vec3(&s.position))
+            .val("Cp − Vp", Val::vec3(&d))
+            .res("V", Val::vec3(&v))
+    });
+    v
+}
+
+/// Whether the lights are the text's: one white directional light, Ga = 0.
+fn is_text_setting<T: Scalar>(lights: &[Light<T>], ga: &Rgb<T>) -> bool {
+    let white = |c: &Rgb<T>| c.iter().all(|x| *x == T::one());
+    matches!(lights, [l] if matches!(l.kind, LightKind::Directional { .. })
+        && white(&l.ambient) && white(&l.diffuse) && white(&l.specular))
+        && ga.iter().all(|x| x.is_zero_value())
+}
+
+/// Records how the per-light sums become the three terms.
+fn record_totals<T: Scalar>(
+    mat: &Material<T>,
+    on: (bool, bool, bool),
+    [sum_a, sum_d, sum_s]: [&Rgb<T>; 3],
+    [ra, rd, rs]: [&Rgb<T>; 3],
+    ga: &Rgb<T>,
+    lights: &[Light<T>],
+    tr: &mut impl Trace,
+) {
+    let ca = mat.ambient_color.as_ref().unwrap_or(&mat.color);
+    let one_note = |on: bool, what: &str| {
+        if !on {
+            format!("the {} model has no {what} term", mat.model.name())
+        } else if is_text_setting(lights, ga) {
+            "the text's single white light and no global ambient: the sum is 1·(the text's factor)"
+                .to_string()
+        } else {
+            "summed over the lights in range".to_string()
+        }
+    };
+    tr.step(|| {
+        Step::new(
+            "Ambient term, per channel",
+            "ambient = ka · (Ga + Σ Att·Spot·La) · Ca",
+        )
+        .val("ka", Val::num(&mat.ka))
+        .val("Ga + Σ Att·Spot·La", rgb_val(sum_a))
+        .val("Ca", rgb_val(ca))
+        .res("ambient", rgb_val(ra))
+        .note(one_note(on.0, "ambient"))
+    });
+    tr.step(|| {
+        Step::new(
+            "Diffuse term, per channel",
+            "diffuse = kd · Σ Att·Spot·Ld·max(cos α, 0) · Cs",
+        )
+        .val("kd", Val::num(&mat.kd))
+        .val("Σ Att·Spot·Ld·max(cos α, 0)", rgb_val(sum_d))
+        .val("Cs", rgb_val(&mat.color))
+        .res("diffuse", rgb_val(rd))
+        .note(one_note(on.1, "diffuse"))
+    });
+    tr.step(|| {
+        Step::new(
+            "Specular term, per channel",
+            "specular = ks · Σ Att·Spot·Ls·highlight · Cspecular",
+        )
+        .val("ks", Val::num(&mat.ks))
+        .val("Σ Att·Spot·Ls·highlight", rgb_val(sum_s))
+        .val("Cspecular", rgb_val(&mat.specular))
+        .res("specular", rgb_val(rs))
+        .note(if on.2 {
+            one_note(true, "specular")
+        } else if !mat.model.terms().2 {
+            one_note(false, "specular")
+        } else {
+            "the specular term is skipped (ks = 0 or --specular off)".to_string()
+        })
+    });
+}
+
+#[cfg(test)]
+mod tests;

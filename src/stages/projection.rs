@@ -1,0 +1,304 @@
+//! Projection of eye-coordinate points onto a view plane: perspective with
+//! the centre of projection (COP) at the origin and the plane z = d, the
+//! general perspective set-up (COP at z = zprp, plane z = zvp), and
+//! orthographic projection.
+
+use crate::error::{Error, Result};
+use crate::num::vec::{self, V3};
+use crate::num::Scalar;
+use crate::stages::trace::{Step, Trace, Val};
+
+/// A projection set-up.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Projection<T> {
+    /// COP at the origin, view plane z = d: xp = d·x/z, yp = d·y/z, zp = d.
+    Plane {
+        /// d, the plane's z (the text's worked example uses d = −near).
+        d: T,
+    },
+    /// COP at (0, 0, zprp), view plane z = zvp:
+    /// xp = x·(zprp − zvp)/(zprp − z), yp likewise, zp = zvp.
+    General {
+        /// zprp, the z of the centre of projection.
+        zprp: T,
+        /// zvp, the z of the view plane.
+        zvp: T,
+    },
+    /// Orthographic: xp = x, yp = y, zp = 0.
+    Ortho,
+}
+
+impl<T: Scalar> Projection<T> {
+    /// Checks that the plane does not pass through the centre of projection.
+    pub fn validate(&self) -> Result<()> {
+        match self {
+            Projection::Plane { d } if d.is_zero_value() => Err(Error::new(
+                "d",
+                "the view plane z = 0 passes through the centre of projection at the origin",
+            )),
+            Projection::General { zprp, zvp } if zprp == zvp => Err(Error::new(
+                "plane",
+                format!(
+                    "the view plane z = {} passes through the centre of projection",
+                    zvp.to_f64()
+                ),
+            )),
+            _ => Ok(()),
+        }
+    }
+
+    /// The z of the centre of projection (None for orthographic).
+    fn cop_z(&self) -> Option<T> {
+        match self {
+            Projection::Plane { .. } => Some(T::zero()),
+            Projection::General { zprp, .. } => Some(zprp.clone()),
+            Projection::Ortho => None,
+        }
+    }
+}
+
+/// x·a/b, with x, a and b first scaled by powers of two to magnitudes near
+/// 1 (exactly; all three factors are one for exact numbers) and the result
+/// scaled back one factor at a time, always by the factor that moves it
+/// toward 1, so that no intermediate overflows or underflows unless the
+/// result itself does.
+fn mul_div<T: Scalar>(x: &T, a: &T, b: &T) -> T {
+    if T::PRECISION == crate::num::Precision::Exact {
+        return x.clone() * a.clone() / b.clone();
+    }
+    let (sx, sa, sb) = (
+        T::pow2_scale(&[x]),
+        T::pow2_scale(&[a]),
+        T::pow2_scale(&[b]),
+    );
+    let mut r = (x.clone() * sx.clone()) * (a.clone() * sa.clone()) / (b.clone() * sb.clone());
+    // Undo: multiply by 1/sx, 1/sa and sb (powers of two), each time by the
+    // smallest remaining factor while |r| ≥ 1 and the largest otherwise.
+    let mut factors = [T::one() / sx, T::one() / sa, sb];
+    factors.sort_by(|p, q| p.partial_cmp(q).unwrap_or(std::cmp::Ordering::Equal));
+    let (mut lo, mut hi) = (0, 3);
+    while lo < hi {
+        if r.abs() >= T::one() {
+            r *= factors[lo].clone();
+            lo += 1;
+        } else {
+            hi -= 1;
+            r *= factors[hi].clone();
+        }
+    }
+    r
+}
+
+/// Projects the eye-coordinate point `p` (named `name` in steps and errors).
+///
+/// Errors when the point lies in the plane through the centre of projection
+/// parallel to the view plane (its projector never meets the view plane).
+/// A point behind the centre of projection is projected (the formula still
+/// applies, its image is inverted) with a warning.
+pub fn project<T: Scalar>(
+    proj: &Projection<T>,
+    name: &str,
+    p: &V3<T>,
+    tr: &mut impl Trace,
+) -> Result<V3<T>> {
+    let (x, y, z) = (&p[0], &p[1], &p[2]);
+    let (scale, plane_z, formula, scale_name) = match proj {
+        Projection::Ortho => {
+            let r = vec::v3(x.clone(), y.clone(), T::zero());
+            tr.step(|| {
+                Step::new(
+                    format!("Orthographic projection of {name}"),
+                    "xp = x,  yp = y,  zp = 0",
+                )
+                .val(name.to_string(), Val::vec3(p))
+                .res(format!("{name}''"), Val::vec3(&r))
+            });
+            return Ok(r);
+        }
+        Projection::Plane { d } => {
+            if z.is_zero_value() {
+                return Err(Error::new(
+                    format!("points.{name}"),
+                    format!("{name} has z = 0: it lies in the plane of the centre of projection and has no image"),
+                ));
+            }
+            (
+                (d.clone(), z.clone()),
+                d.clone(),
+                "xp = d·x/z,  yp = d·y/z,  zp = d",
+                "d/z",
+            )
+        }
+        Projection::General { zprp, zvp } => {
+            let den = zprp.clone() - z.clone();
+            if den.is_zero_value() {
+                return Err(Error::new(
+                    format!("points.{name}"),
+                    format!(
+                        "{name} has z = zprp = {}: it lies in the plane of the centre of projection and has no image",
+                        zprp.to_f64()
+                    ),
+                ));
+            }
+            (
+                (zprp.clone() - zvp.clone(), den),
+                zvp.clone(),
+                "xp = x·(zprp − zvp)/(zprp − z),  yp = y·(zprp − zvp)/(zprp − z),  zp = zvp",
+                "(zprp − zvp)/(zprp − z)",
+            )
+        }
+    };
+    // x·(num/den) evaluated as a scaled x·num/den: no premature overflow or
+    // underflow of the scale factor, two roundings.
+    let (num, den) = scale;
+    let r = vec::v3(
+        mul_div(x, &num, &den),
+        mul_div(y, &num, &den),
+        plane_z.clone(),
+    );
+    if !vec::is_finite(&r) {
+        return Err(Error::new(
+            format!("points.{name}"),
+            format!(
+                "the image of {name} is too large for {:?} precision (the point is too near the plane of the centre of projection)",
+                T::PRECISION
+            )
+            .to_lowercase()
+            .replace(&name.to_lowercase(), name),
+        ));
+    }
+    // Behind: the point and the plane are on opposite sides of the COP.
+    let cop = proj.cop_z().unwrap_or_else(T::zero);
+    let behind = (z.clone() - cop.clone() < T::zero()) != (plane_z - cop < T::zero());
+    if behind {
+        tr.warn(|| format!("{name} is behind the centre of projection: its image is inverted and it cannot be seen"));
+    }
+    tr.step(|| {
+        let mut s = Step::new(format!("Perspective projection of {name}"), formula)
+            .val(name.to_string(), Val::vec3(p))
+            .val(scale_name, Val::num(&(num.clone() / den.clone())))
+            .res(format!("{name}''"), Val::vec3(&r));
+        if behind {
+            s = s.note("behind the centre of projection: projected, but inverted and not visible");
+        }
+        s
+    });
+    Ok(r)
+}
+
+/// The perspective projection as a 4×4 matrix (eye → homogeneous clip
+/// space), built from the viewing window on the near plane
+/// ([`crate::stages::window::window`]: top = near·tan(fovy/2), right = aspect·top):
+///
+/// ```text
+/// | near/right  0         0                     0                  |
+/// | 0           near/top  0                     0                  |
+/// | 0           0         −(far+near)/(far−near) −2·far·near/(far−near) |
+/// | 0           0         −1                    0                  |
+/// ```
+///
+/// so w = −z and x/w = (−near·x/z)/right: the text's projection onto the
+/// near plane (d = −near, xp = d·x/z) divided by the window's half width,
+/// −1 … 1 across the window. z/w runs from −1 on the near plane to +1 on the
+/// far plane (nearer is smaller).
+pub fn perspective_matrix<T: Scalar>(
+    win: &crate::stages::window::Window<T>,
+    near: &T,
+    far: &T,
+) -> nalgebra::Matrix4<T> {
+    let mut m = nalgebra::Matrix4::<T>::zeros();
+    let depth = far.clone() - near.clone();
+    m[(0, 0)] = near.clone() / win.right.clone();
+    m[(1, 1)] = near.clone() / win.top.clone();
+    m[(2, 2)] = -(far.clone() + near.clone()) / depth.clone();
+    m[(2, 3)] = -(T::from_i64(2) * far.clone() * near.clone()) / depth;
+    m[(3, 2)] = -T::one();
+    m
+}
+
+/// The orthographic projection (xp = x, yp = y) as a 4×4 matrix onto the
+/// same clip space: the window [left, right] × [bottom, top] maps to −1 … 1
+/// and eye z from −near to −far maps to −1 … 1 (w = 1).
+pub fn ortho_matrix<T: Scalar>(
+    win: &crate::stages::window::Window<T>,
+    near: &T,
+    far: &T,
+) -> nalgebra::Matrix4<T> {
+    let two = T::from_i64(2);
+    let mut m = nalgebra::Matrix4::<T>::identity();
+    m[(0, 0)] = two.clone() / win.width.clone();
+    m[(0, 3)] = -(win.right.clone() + win.left.clone()) / win.width.clone();
+    m[(1, 1)] = two.clone() / win.height.clone();
+    m[(1, 3)] = -(win.top.clone() + win.bottom.clone()) / win.height.clone();
+    let depth = far.clone() - near.clone();
+    m[(2, 2)] = -two / depth.clone();
+    m[(2, 3)] = -(far.clone() + near.clone()) / depth;
+    m
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::stages::trace::NoTrace;
+
+    #[test]
+    fn plane_projection_by_similar_triangles() {
+        // d = −0.1, P = (1, 2, −4): xp = −0.1·1/−4 = 0.025, yp = 0.05.
+        let p = project(
+            &Projection::Plane { d: -0.1 },
+            "P",
+            &V3::new(1.0, 2.0, -4.0),
+            &mut NoTrace,
+        )
+        .unwrap();
+        approx::assert_relative_eq!(p, V3::new(0.025, 0.05, -0.1), epsilon = 1e-16);
+    }
+
+    #[test]
+    fn cop_on_positive_z_axis() {
+        // COP at z = d = 10, plane z = 0: xp = x·d/(d − z) = 4·10/(10 − (−10)) = 2.
+        let g = Projection::General {
+            zprp: 10.0,
+            zvp: 0.0,
+        };
+        let p = project(&g, "P", &V3::new(4.0, -6.0, -10.0), &mut NoTrace).unwrap();
+        approx::assert_relative_eq!(p, V3::new(2.0, -3.0, 0.0), epsilon = 1e-15);
+    }
+
+    #[test]
+    fn perspective_matrix_is_the_near_plane_projection_over_the_window() {
+        // fovy 90°, aspect 2, near 0.5: top = 0.5, right = 1.
+        let w = crate::stages::window::window(&90.0, &2.0, &0.5, "near", &mut NoTrace).unwrap();
+        let m = perspective_matrix(&w, &0.5, &10.0);
+        let p = V3::new(1.0, 2.0, -4.0);
+        let c = m * nalgebra::Vector4::new(p.x, p.y, p.z, 1.0);
+        // The text's projection onto z = −near, then divided by right and top.
+        let q = project(&Projection::Plane { d: -0.5 }, "P", &p, &mut NoTrace).unwrap();
+        approx::assert_relative_eq!(c.x / c.w, q.x / w.right, epsilon = 1e-15);
+        approx::assert_relative_eq!(c.y / c.w, q.y / w.top, epsilon = 1e-15);
+        // The near plane goes to z/w = −1 and the far plane to +1.
+        let n = m * nalgebra::Vector4::new(0.0, 0.0, -0.5, 1.0);
+        let f = m * nalgebra::Vector4::new(0.0, 0.0, -10.0, 1.0);
+        approx::assert_relative_eq!(n.z / n.w, -1.0, epsilon = 1e-15);
+        approx::assert_relative_eq!(f.z / f.w, 1.0, epsilon = 1e-15);
+    }
+
+    #[test]
+    fn point_in_cop_plane_is_an_error() {
+        let e = project(
+            &Projection::Plane { d: -1.0 },
+            "Q",
+            &V3::new(1.0, 1.0, 0.0),
+            &mut NoTrace,
+        )
+        .unwrap_err();
+        assert_eq!(e.field, "points.Q");
+        assert!(Projection::Plane { d: 0.0 }.validate().is_err());
+        assert!(Projection::General {
+            zprp: 2.0,
+            zvp: 2.0
+        }
+        .validate()
+        .is_err());
+    }
+}

@@ -1,0 +1,233 @@
+//! Worked-solution steps as data, and the recorder the stages write them to.
+//!
+//! A stage takes `&mut impl Trace` and describes each step inside a closure;
+//! [`NoTrace`] never calls the closure, so the renderer's calls compile to
+//! the bare arithmetic. [`Recorder`] keeps the steps for a report.
+
+use crate::num::vec::V3;
+use crate::num::{Precision, Scalar, Shown};
+use nalgebra::Matrix4;
+use serde_json::{Map, Value};
+
+/// A value inside a step or a result.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Val {
+    /// A number.
+    Num(Shown),
+    /// A list of values (a vector is a list of numbers, a matrix a list of rows).
+    List(Vec<Val>),
+    /// Named values, in order.
+    Map(Vec<(String, Val)>),
+    /// Text (an outcode, a status, a verdict).
+    Text(String),
+    /// Yes or no.
+    Bool(bool),
+    /// Nothing (a rejected segment).
+    Null,
+}
+
+impl Val {
+    /// A number.
+    pub fn num<T: Scalar>(x: &T) -> Val {
+        Val::Num(x.shown())
+    }
+    /// A 3-vector.
+    pub fn vec3<T: Scalar>(a: &V3<T>) -> Val {
+        Val::List(a.iter().map(Val::num).collect())
+    }
+    /// A 2-vector.
+    pub fn vec2<T: Scalar>(x: &T, y: &T) -> Val {
+        Val::List(vec![Val::num(x), Val::num(y)])
+    }
+    /// A 4×4 matrix as a list of rows.
+    pub fn mat4<T: Scalar>(m: &Matrix4<T>) -> Val {
+        Val::List(
+            (0..4)
+                .map(|r| Val::List((0..4).map(|c| Val::num(&m[(r, c)])).collect()))
+                .collect(),
+        )
+    }
+    /// Text.
+    pub fn text(s: impl Into<String>) -> Val {
+        Val::Text(s.into())
+    }
+    /// Whether this is a matrix (a list of lists of numbers).
+    pub fn is_matrix(&self) -> bool {
+        matches!(self, Val::List(rows) if !rows.is_empty() && rows.iter().all(|r| matches!(r, Val::List(_))))
+    }
+}
+
+/// One step of a worked solution.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Step {
+    /// The part of the problem this step belongs to (`solve` groups by it).
+    pub section: Option<String>,
+    /// What is computed.
+    pub title: String,
+    /// The formula, in the text's notation.
+    pub formula: String,
+    /// The values substituted.
+    pub values: Vec<(String, Val)>,
+    /// What came out.
+    pub result: Vec<(String, Val)>,
+    /// A remark: a check, a warning, a note on the text.
+    pub note: Option<String>,
+}
+
+impl Step {
+    /// A step with a title and formula.
+    pub fn new(title: impl Into<String>, formula: impl Into<String>) -> Step {
+        Step {
+            title: title.into(),
+            formula: formula.into(),
+            ..Step::default()
+        }
+    }
+    /// Adds a substituted value.
+    pub fn val(mut self, name: impl Into<String>, v: Val) -> Step {
+        self.values.push((name.into(), v));
+        self
+    }
+    /// Adds a result.
+    pub fn res(mut self, name: impl Into<String>, v: Val) -> Step {
+        self.result.push((name.into(), v));
+        self
+    }
+    /// Adds a note.
+    pub fn note(mut self, n: impl Into<String>) -> Step {
+        self.note = Some(n.into());
+        self
+    }
+}
+
+/// Where stages write their steps and warnings.
+pub trait Trace {
+    /// Whether anyone is listening (lets a stage skip work done only to explain).
+    const ON: bool;
+    /// Records the step the closure builds (not called when `ON` is false).
+    fn step(&mut self, f: impl FnOnce() -> Step);
+    /// Records a warning (also printed on stderr by the calculator).
+    fn warn(&mut self, f: impl FnOnce() -> String);
+}
+
+/// The recorder that records nothing: the renderer's, free at run time.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct NoTrace;
+
+impl Trace for NoTrace {
+    const ON: bool = false;
+    #[inline(always)]
+    fn step(&mut self, _f: impl FnOnce() -> Step) {}
+    #[inline(always)]
+    fn warn(&mut self, _f: impl FnOnce() -> String) {}
+}
+
+/// The recorder that keeps every step, under the current section.
+#[derive(Clone, Debug, Default)]
+pub struct Recorder {
+    /// The steps, in order.
+    pub steps: Vec<Step>,
+    /// The warnings, in order.
+    pub warnings: Vec<String>,
+    section: Option<String>,
+}
+
+impl Recorder {
+    /// A new, empty recorder.
+    pub fn new() -> Recorder {
+        Recorder::default()
+    }
+    /// Starts a section: the steps that follow belong to it.
+    pub fn section(&mut self, name: impl Into<String>) {
+        self.section = Some(name.into());
+    }
+}
+
+impl Trace for Recorder {
+    const ON: bool = true;
+    fn step(&mut self, f: impl FnOnce() -> Step) {
+        let mut s = f();
+        s.section = self.section.clone();
+        self.steps.push(s);
+    }
+    fn warn(&mut self, f: impl FnOnce() -> String) {
+        let w = f();
+        if !self.warnings.contains(&w) {
+            self.warnings.push(w);
+        }
+    }
+}
+
+/// Everything a command produced.
+#[derive(Clone, Debug)]
+pub struct Report {
+    /// The subcommand.
+    pub command: String,
+    /// The parsed inputs, as JSON.
+    pub input: Value,
+    /// The named results.
+    pub result: Vec<(String, Val)>,
+    /// The worked steps.
+    pub steps: Vec<Step>,
+    /// Warnings (also on stderr).
+    pub warnings: Vec<String>,
+    /// Extra lines printed after the answer in text mode (e.g. comparison
+    /// with the text's printed answers), and given as `"notes"` in JSON.
+    pub notes: Vec<String>,
+    /// The precision used.
+    pub precision: Precision,
+    /// Further top-level JSON keys.
+    pub extra: Map<String, Value>,
+    /// The answers printed in the source, compared with the results (`solve`).
+    pub comparison: Option<Comparison>,
+    /// Notes on the source (`solve`: the problem file's `source_notes`).
+    pub source_notes: Vec<String>,
+}
+
+/// The answers a source printed, compared with the computed ones.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Comparison {
+    /// The source, as the problem file names it.
+    pub source: Option<String>,
+    /// One row per printed answer, in the file's order.
+    pub rows: Vec<Compared>,
+}
+
+/// One printed answer against the computed value.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Compared {
+    /// The result key (`project.points.B`).
+    pub key: String,
+    /// The printed value, as the source wrote it.
+    pub printed: String,
+    /// The computed value (`None`: not computed in this run).
+    pub computed: Option<Val>,
+    /// Whether they agree (`None`: not comparable, or not computed).
+    pub agrees: Option<bool>,
+    /// Why the source is wrong, where the problem file says.
+    pub why: Option<String>,
+}
+
+impl Report {
+    /// The report of a finished recorder: its steps and warnings, the named
+    /// results, at the precision `T` ran.
+    pub fn from_recorder<T: Scalar>(
+        command: &str,
+        input: Value,
+        result: Vec<(String, Val)>,
+        rec: Recorder,
+    ) -> Report {
+        Report {
+            command: command.into(),
+            input,
+            result,
+            steps: rec.steps,
+            warnings: rec.warnings,
+            notes: vec![],
+            precision: T::PRECISION,
+            extra: Map::new(),
+            comparison: None,
+            source_notes: vec![],
+        }
+    }
+}

@@ -1,0 +1,215 @@
+//! The viewing window on the near plane from fovy, aspect and near (and the
+//! far-plane window), and the viewport mapping from the window to pixels.
+
+use crate::error::{Error, Result};
+use crate::num::Scalar;
+use crate::stages::trace::{Step, Trace, Val};
+
+/// A window on a plane z = −dist: its edges and size.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Window<T> {
+    /// top = dist·tan(fovy/2).
+    pub top: T,
+    /// bottom = −top.
+    pub bottom: T,
+    /// left = −right.
+    pub left: T,
+    /// right = aspect·top.
+    pub right: T,
+    /// height = 2·top.
+    pub height: T,
+    /// width = 2·right.
+    pub width: T,
+}
+
+/// Checks fovy (degrees) ∈ (0°, 180°), aspect > 0 and near > 0.
+pub fn validate<T: Scalar>(fovy_deg: &T, aspect: &T, near: &T) -> Result<()> {
+    if !(*fovy_deg > T::zero() && *fovy_deg < T::from_i64(180)) {
+        return Err(Error::new(
+            "fovy",
+            format!(
+                "must be between 0° and 180° (exclusive), got {}°",
+                fovy_deg.to_f64()
+            ),
+        ));
+    }
+    if *aspect <= T::zero() {
+        return Err(Error::new(
+            "aspect",
+            format!("must be positive (width/height), got {}", aspect.to_f64()),
+        ));
+    }
+    if *near <= T::zero() {
+        return Err(Error::new(
+            "near",
+            format!(
+                "must be positive (a distance in front of the eye), got {}",
+                near.to_f64()
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// The window on the plane at distance `dist` (near or far):
+///
+/// top = dist·tan(fovy/2), bottom = −top, right = aspect·top, left = −right,
+/// height = 2·top, width = 2·right.
+///
+/// `label` names the plane in the steps ("near", "far").
+pub fn window<T: Scalar>(
+    fovy_deg: &T,
+    aspect: &T,
+    dist: &T,
+    label: &str,
+    tr: &mut impl Trace,
+) -> Result<Window<T>> {
+    validate(fovy_deg, aspect, dist).map_err(|e| {
+        if e.field == "near" {
+            e.in_field(label)
+        } else {
+            e
+        }
+    })?;
+    let half = fovy_deg.clone() / T::from_i64(2);
+    let t = half.tan_deg();
+    let top = dist.clone() * t.clone();
+    let right = aspect.clone() * top.clone();
+    let two = T::from_i64(2);
+    let w = Window {
+        bottom: -top.clone(),
+        left: -right.clone(),
+        height: two.clone() * top.clone(),
+        width: two * right.clone(),
+        top,
+        right,
+    };
+    tr.step(|| {
+        Step::new(
+            format!("Window half-height on the {label} plane (the text calls it h)"),
+            format!("top = {label}·tan(fovy/2)"),
+        )
+        .val(label.to_string(), Val::num(dist))
+        .val("fovy/2 (degrees)", Val::num(&half))
+        .val("tan(fovy/2)", Val::num(&t))
+        .res("top", Val::num(&w.top))
+        .note("the text's h is this half extent; the full window height is 2·top")
+    });
+    tr.step(|| {
+        Step::new(
+            format!("Window edges and size on the {label} plane"),
+            "right = aspect·top,  bottom = −top,  left = −right,  height = 2·top,  width = 2·right",
+        )
+        .val("aspect", Val::num(aspect))
+        .res("right", Val::num(&w.right))
+        .res("bottom", Val::num(&w.bottom))
+        .res("left", Val::num(&w.left))
+        .res("height", Val::num(&w.height))
+        .res("width", Val::num(&w.width))
+    });
+    Ok(w)
+}
+
+/// Checks a viewport size: both positive.
+pub fn validate_viewport<T: Scalar>(w: &T, h: &T) -> Result<()> {
+    if *w <= T::zero() || *h <= T::zero() {
+        return Err(Error::new(
+            "viewport",
+            format!(
+                "width and height must be positive, got {}x{}",
+                w.to_f64(),
+                h.to_f64()
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// The viewport mapping of a window point (xp, yp) to pixels, origin at the
+/// bottom left:
+///
+/// px = (xp − left)/(right − left)·W,  py = (yp − bottom)/(top − bottom)·H.
+pub fn to_viewport<T: Scalar>(
+    w: &Window<T>,
+    size: (&T, &T),
+    name: &str,
+    p: (&T, &T),
+    tr: &mut impl Trace,
+) -> (T, T) {
+    let (px, py) = viewport_xy(w, size, p);
+    tr.step(|| {
+        Step::new(
+            format!("Viewport coordinates of {name}"),
+            "px = (xp − left)/(right − left)·W,  py = (yp − bottom)/(top − bottom)·H",
+        )
+        .val(format!("({name}x, {name}y)"), Val::vec2(p.0, p.1))
+        .val("W × H", Val::vec2(size.0, size.1))
+        .res(format!("{name} pixel"), Val::vec2(&px, &py))
+    });
+    (px, py)
+}
+
+/// The viewport formula alone (what [`to_viewport`] explains and the
+/// renderer calls per vertex), origin at the bottom left:
+///
+/// px = (xp − left)/(right − left)·W,  py = (yp − bottom)/(top − bottom)·H.
+#[inline]
+pub fn viewport_xy<T: Scalar>(w: &Window<T>, size: (&T, &T), p: (&T, &T)) -> (T, T) {
+    let px = (p.0.clone() - w.left.clone()) / w.width.clone() * size.0.clone();
+    let py = (p.1.clone() - w.bottom.clone()) / w.height.clone() * size.1.clone();
+    (px, py)
+}
+
+/// Whether a window point lies inside the window (edges included).
+pub fn inside<T: Scalar>(w: &Window<T>, x: &T, y: &T) -> bool {
+    *x >= w.left && *x <= w.right && *y >= w.bottom && *y <= w.top
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::stages::trace::NoTrace;
+
+    #[test]
+    fn window_of_a_90_degree_view() {
+        // fovy 90°: tan 45° = 1, so top = near = 2, right = aspect·2 = 3.
+        let w = window(&90.0, &1.5, &2.0, "near", &mut NoTrace).unwrap();
+        approx::assert_relative_eq!(w.top, 2.0, epsilon = 1e-15);
+        approx::assert_relative_eq!(w.right, 3.0, epsilon = 1e-15);
+        approx::assert_relative_eq!(w.width, 6.0, epsilon = 1e-15);
+        approx::assert_relative_eq!(w.height, 4.0, epsilon = 1e-15);
+        // The window's centre maps to the viewport's centre, its top-right corner to (W, H).
+        let c = to_viewport(&w, (&200.0, &100.0), "C", (&0.0, &0.0), &mut NoTrace);
+        assert_eq!(c, (100.0, 50.0));
+        let tr_ = to_viewport(&w, (&200.0, &100.0), "T", (&3.0, &2.0), &mut NoTrace);
+        assert_eq!(tr_, (200.0, 100.0));
+    }
+
+    #[test]
+    fn bad_windows_are_errors() {
+        assert_eq!(
+            window(&180.0, &1.0, &1.0, "near", &mut NoTrace)
+                .unwrap_err()
+                .field,
+            "fovy"
+        );
+        assert_eq!(
+            window(&0.0, &1.0, &1.0, "near", &mut NoTrace)
+                .unwrap_err()
+                .field,
+            "fovy"
+        );
+        assert_eq!(
+            window(&45.0, &0.0, &1.0, "near", &mut NoTrace)
+                .unwrap_err()
+                .field,
+            "aspect"
+        );
+        assert_eq!(
+            window(&45.0, &1.0, &-1.0, "near", &mut NoTrace)
+                .unwrap_err()
+                .field,
+            "near"
+        );
+    }
+}

@@ -1,0 +1,392 @@
+//! Judging one answer: exact equality, the tolerance, the rounding to the
+//! digits written, significant figures; lists element by element.
+
+use super::{Settings, Verdict, ZERO_TOLERANCE};
+use crate::num::{parse_expr, Real, Shown};
+use crate::stages::trace::Val;
+
+/// A judged value (a number, or a list judged element by element).
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct Judged {
+    pub verdict: Verdict,
+    /// The stable code: `correct.exact`, `correct.tolerance`,
+    /// `correct.rounded`, `too_coarse`, `wrong`, `unparseable`, `missing`.
+    pub code: &'static str,
+    pub note: String,
+}
+
+impl Judged {
+    pub(super) fn new(verdict: Verdict, code: &'static str, note: impl Into<String>) -> Judged {
+        Judged {
+            verdict,
+            code,
+            note: note.into(),
+        }
+    }
+}
+
+/// Judges a given answer against an expected value.
+/// `carry`: also accept a decimal within one unit of its last written digit
+/// (used when matching mistaken values: students carry rounded intermediate
+/// values forward, as the text does with 2 × 0.041 = 0.082).
+pub(super) fn judge(
+    given: &toml::Value,
+    expected: &Val,
+    s: &Settings,
+    key: &str,
+    carry: bool,
+) -> Judged {
+    match expected {
+        Val::Num(e) => match scalar_text(given) {
+            Some(t) => judge_number(&t, e, s, carry),
+            None => Judged::new(Verdict::Unparseable, "unparseable", "expected one number"),
+        },
+        Val::List(items) => {
+            let parts: Vec<toml::Value> = match given {
+                toml::Value::Array(a) => a.clone(),
+                toml::Value::String(t) => {
+                    let inner = t
+                        .trim()
+                        .trim_start_matches(['(', '['])
+                        .trim_end_matches([')', ']']);
+                    crate::num::expr::split_top_level(inner)
+                        .into_iter()
+                        .map(|x| toml::Value::String(x.trim().to_string()))
+                        .collect()
+                }
+                _ => {
+                    return Judged::new(
+                        Verdict::Unparseable,
+                        "unparseable",
+                        format!("expected a list of {} values", items.len()),
+                    )
+                }
+            };
+            // A projected point may be given as (xp, yp): zp = d is the plane.
+            let prefix_ok = key.starts_with("project.") && parts.len() == items.len() - 1;
+            if parts.len() != items.len() && !prefix_ok {
+                return Judged::new(
+                    Verdict::Wrong,
+                    "wrong",
+                    format!("expected {} values, got {}", items.len(), parts.len()),
+                );
+            }
+            let nested = items.iter().any(|x| matches!(x, Val::List(_)));
+            let label = |i: usize| {
+                if nested {
+                    format!("point {}", i + 1)
+                } else if items.len() <= 3 {
+                    ["x", "y", "z"][i].to_string()
+                } else {
+                    format!("component {}", i + 1)
+                }
+            };
+            combine(
+                parts
+                    .iter()
+                    .zip(items)
+                    .map(|(g, e)| judge(g, e, s, key, carry))
+                    .collect(),
+                label,
+            )
+        }
+        Val::Text(t) => {
+            let g = scalar_text(given).unwrap_or_default();
+            let g = g.trim();
+            let same = if t.len() == 6 && t.chars().all(|c| c == '0' || c == '1') {
+                // an outcode; a short binary number is padded on the left
+                g.len() <= 6 && g.chars().all(|c| c == '0' || c == '1') && format!("{g:0>6}") == *t
+            } else {
+                g.eq_ignore_ascii_case(t)
+            };
+            if same {
+                Judged::new(Verdict::Correct, "correct.exact", "")
+            } else {
+                Judged::new(Verdict::Wrong, "wrong", format!("expected {t}"))
+            }
+        }
+        Val::Null => {
+            let empty = match given {
+                toml::Value::Array(a) => a.is_empty(),
+                toml::Value::String(s) => {
+                    matches!(
+                        s.trim().to_lowercase().as_str(),
+                        "" | "none" | "null" | "rejected"
+                    )
+                }
+                _ => false,
+            };
+            if empty {
+                Judged::new(Verdict::Correct, "correct.exact", "")
+            } else {
+                Judged::new(Verdict::Wrong, "wrong", "expected none (nothing is left)")
+            }
+        }
+        Val::Bool(b) => {
+            let g = scalar_text(given).unwrap_or_default().to_lowercase();
+            let gb = matches!(g.as_str(), "true" | "yes" | "1");
+            if gb == *b {
+                Judged::new(Verdict::Correct, "correct.exact", "")
+            } else {
+                Judged::new(Verdict::Wrong, "wrong", format!("expected {b}"))
+            }
+        }
+        Val::Map(_) => Judged::new(
+            Verdict::Unparseable,
+            "unparseable",
+            "this key holds several answers: give them one by one",
+        ),
+    }
+}
+
+/// The text of a scalar TOML value.
+fn scalar_text(v: &toml::Value) -> Option<String> {
+    match v {
+        toml::Value::String(s) => Some(s.clone()),
+        toml::Value::Integer(i) => Some(i.to_string()),
+        toml::Value::Float(f) => Some(format!("{f}")),
+        toml::Value::Boolean(b) => Some(b.to_string()),
+        _ => None,
+    }
+}
+
+/// The verdict on a list: its worst element; the weakest kind of correct.
+fn combine(parts: Vec<Judged>, label: impl Fn(usize) -> String) -> Judged {
+    let worst = parts
+        .iter()
+        .map(|j| j.verdict)
+        .max()
+        .unwrap_or(Verdict::Correct);
+    let rank = |c: &str| match c {
+        "correct.exact" => 0,
+        "correct.tolerance" => 1,
+        _ => 2,
+    };
+    let code = if worst == Verdict::Correct {
+        parts
+            .iter()
+            .map(|j| j.code)
+            .max_by_key(|c| rank(c))
+            .unwrap_or("correct.exact")
+    } else {
+        parts
+            .iter()
+            .find(|j| j.verdict == worst)
+            .map(|j| j.code)
+            .unwrap_or("wrong")
+    };
+    // The notes of the components that decided the verdict.
+    let notes: Vec<String> = parts
+        .iter()
+        .enumerate()
+        .filter(|(_, j)| {
+            !j.note.is_empty()
+                && if worst == Verdict::Correct {
+                    j.code == code
+                } else {
+                    j.verdict == worst
+                }
+        })
+        .map(|(i, j)| format!("{}: {}", label(i), j.note))
+        .collect();
+    // One note when every component says the same.
+    let note = if !notes.is_empty()
+        && parts.iter().all(|j| j.note == parts[0].note)
+        && !parts[0].note.is_empty()
+    {
+        parts[0].note.clone()
+    } else {
+        notes.join("; ")
+    };
+    Judged::new(worst, code, note)
+}
+
+/// A plain decimal as written: (significant figures, exponent of the last
+/// written digit), e.g. "0.041" → (2, −3), "-1.50e2" → (3, 0). None for
+/// integers (taken as exact) and for expressions.
+pub fn decimal_places(text: &str) -> Option<(u32, i32)> {
+    let t = text.trim().trim_start_matches(['-', '−', '+']);
+    let (mant, exp) = match t.find(['e', 'E']) {
+        Some(i) => (&t[..i], t[i + 1..].parse::<i32>().ok()?),
+        None => (t, 0),
+    };
+    let (int, frac) = mant.split_once('.')?;
+    if !(int.chars().chain(frac.chars()).all(|c| c.is_ascii_digit())) || int.len() + frac.len() == 0
+    {
+        return None;
+    }
+    let digits: String = format!("{int}{frac}");
+    let sig = digits.trim_start_matches('0').len() as u32;
+    Some((sig.max(1), exp - frac.len() as i32))
+}
+
+/// Judges one number written by the student against an expected number.
+fn judge_number(text: &str, e: &Shown, s: &Settings, carry: bool) -> Judged {
+    let t = text.trim();
+    if t.is_empty() {
+        return Judged::new(Verdict::Missing, "missing", "empty answer");
+    }
+    // A decimal comma (0,041) is a decimal point.
+    let t = t.replace(',', ".");
+    let expr = match parse_expr(&t) {
+        Ok(x) => x,
+        Err(m) => return Judged::new(Verdict::Unparseable, "unparseable", m),
+    };
+    let g = match expr.eval::<f64>() {
+        Ok(v) => v,
+        Err(m) => return Judged::new(Verdict::Unparseable, "unparseable", m),
+    };
+    let ev = e.value;
+    let places = decimal_places(&t);
+    let expected_txt = || format!("expected {}", crate::num::format::shown(e, 6, true));
+
+    // 1. Exact equality, when both sides are exact.
+    if let Some(ex) = &e.exact {
+        if let (Ok(er), Ok(gr)) = (
+            parse_expr(ex).and_then(|x| x.eval::<Real>()),
+            expr.eval::<Real>(),
+        ) {
+            if er.is_exact() && gr.is_exact() {
+                if er == gr {
+                    return Judged::new(Verdict::Correct, "correct.exact", "exact");
+                }
+                if places.is_none() {
+                    // an exact form that is not equal: only tolerance can save it
+                    return within_tolerance(g, ev, s, places)
+                        .unwrap_or_else(|| Judged::new(Verdict::Wrong, "wrong", expected_txt()));
+                }
+            }
+        }
+    }
+    // Equal to 1e-12 (relative): exact, when exact arithmetic cannot decide
+    // (a terminating decimal such as 0.6 = 3/5 is exact, however few digits).
+    if (g - ev).abs() <= ZERO_TOLERANCE * ev.abs().max(1.0) {
+        return Judged::new(Verdict::Correct, "correct.exact", "exact");
+    }
+    if let Some(j) = within_tolerance(g, ev, s, places) {
+        return j;
+    }
+    // 3. Correctly rounded to the places written.
+    if let Some((sig, last)) = places {
+        let unit = if carry { 1.0 } else { 0.5 };
+        let half = unit * 10f64.powi(last) * (1.0 + 1e-9);
+        if (g - ev).abs() <= half {
+            return if sig < s.sig_figs {
+                Judged::new(
+                    Verdict::TooCoarse,
+                    "too_coarse",
+                    format!(
+                        "rounded to {sig} significant figure{}, at least {} required",
+                        if sig == 1 { "" } else { "s" },
+                        s.sig_figs
+                    ),
+                )
+            } else {
+                Judged::new(
+                    Verdict::Correct,
+                    "correct.rounded",
+                    format!("rounded to {sig} significant figures"),
+                )
+            };
+        }
+    }
+    Judged::new(Verdict::Wrong, "wrong", expected_txt())
+}
+
+/// The tolerance test: relative `s.tolerance` (absolute 1e-12 near zero).
+fn within_tolerance(g: f64, ev: f64, s: &Settings, places: Option<(u32, i32)>) -> Option<Judged> {
+    let tol = (s.tolerance * ev.abs()).max(ZERO_TOLERANCE);
+    if (g - ev).abs() > tol {
+        return None;
+    }
+    Some(match places {
+        Some((sig, _)) if sig < s.sig_figs => Judged::new(
+            Verdict::TooCoarse,
+            "too_coarse",
+            format!(
+                "{sig} significant figure(s), at least {} required",
+                s.sig_figs
+            ),
+        ),
+        _ => Judged::new(
+            Verdict::Correct,
+            "correct.tolerance",
+            format!("within {}%", fmt_pct(s.tolerance)),
+        ),
+    })
+}
+
+fn fmt_pct(t: f64) -> String {
+    crate::num::format::fmt_dec(t * 100.0, 3)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tutor::check::Settings;
+
+    fn num(v: f64) -> Shown {
+        Shown {
+            value: v,
+            exact: None,
+            pretty: None,
+        }
+    }
+    fn j(text: &str, v: f64) -> Judged {
+        judge_number(text, &num(v), &Settings::default(), false)
+    }
+
+    #[test]
+    fn places_written() {
+        assert_eq!(decimal_places("0.041"), Some((2, -3)));
+        assert_eq!(decimal_places("-0.0283"), Some((3, -4)));
+        assert_eq!(decimal_places("1.50e2"), Some((3, 0)));
+        assert_eq!(decimal_places("12"), None);
+        assert_eq!(decimal_places("-6/sqrt(2)"), None);
+    }
+
+    #[test]
+    fn verdicts_on_numbers() {
+        // tan 22.5° = √2 − 1, so 0.1·tan 22.5° = 0.0414213562...
+        let top = 0.1 * (2f64.sqrt() - 1.0);
+        assert_eq!(j("0.041", top).code, "correct.rounded"); // |0.041 − top| = 0.00042 ≤ 0.0005
+        assert_eq!(j("0.0414", top).code, "correct.tolerance"); // 0.05% off
+        assert_eq!(j("0.04", top).verdict, Verdict::TooCoarse); // 1 significant figure
+        assert_eq!(j("0.042", top).verdict, Verdict::Wrong); // 1.4% off, not the rounding
+        assert_eq!(j("0,041", top).code, "correct.rounded"); // decimal comma
+                                                             // −6/√2 = −3√2, written either way
+        let a = -6.0 / 2f64.sqrt();
+        assert_eq!(j("-3*sqrt(2)", a).code, "correct.exact");
+        assert_eq!(j("-3√2", a).code, "correct.exact");
+        assert_eq!(j("-4.24", a).code, "correct.tolerance"); // 0.06% off
+        assert_eq!(j("-4.2", a).code, "correct.rounded");
+        assert_eq!(j("1/(", a).verdict, Verdict::Unparseable);
+        assert_eq!(j("", a).verdict, Verdict::Missing);
+        // near zero: absolute 1e-12
+        assert_eq!(j("0", 1e-15).verdict, Verdict::Correct);
+        assert_eq!(j("0.001", 0.0).verdict, Verdict::Wrong);
+    }
+
+    #[test]
+    fn lists_and_codes() {
+        let s = Settings::default();
+        let e = Val::List(vec![Val::Num(num(0.02)), Val::Num(num(-0.0282842712))]);
+        let g: toml::Value = toml::Value::Array(vec!["0.0067".into(), "-0.0283".into()]);
+        let r = judge(&g, &e, &s, "project.points.B", false);
+        assert_eq!(r.verdict, Verdict::Wrong);
+        let ok: toml::Value = "(1/50, -sqrt(2)/50)".into();
+        assert_eq!(
+            judge(&ok, &e, &s, "project.points.B", false).verdict,
+            Verdict::Correct
+        );
+        let code = Val::text("000010");
+        assert_eq!(
+            judge(&"10".into(), &code, &s, "clip.code0", false).verdict,
+            Verdict::Correct
+        );
+        assert_eq!(
+            judge(&"010000".into(), &code, &s, "clip.code0", false).verdict,
+            Verdict::Wrong
+        );
+    }
+}

@@ -1,0 +1,415 @@
+//! `grafika check`: marks a student's answers against grafika's exact
+//! solution of a problem, and diagnoses wrong answers with the mistake
+//! catalog ([`crate::tutor::diagnose`]).
+//!
+//! An answer is correct when it equals the exact value (any equivalent
+//! form), when it is within the relative tolerance (0.1% by default;
+//! absolute 1e-12 near zero), or when it is the exact value correctly
+//! rounded to the decimal places the student wrote. A rounded decimal with
+//! fewer significant figures than required is "too coarse".
+//!
+//! Verdicts and their stable codes (for autograders):
+//!
+//! | verdict | code | meaning | marks |
+//! |---|---|---|---|
+//! | correct | `correct.exact` | equal to the exact value (any equivalent form) | 1 |
+//! | correct | `correct.tolerance` | within the relative tolerance | 1 |
+//! | correct | `correct.rounded` | the exact value rounded to the digits written | 1 |
+//! | too_coarse | `too_coarse` | right, but fewer significant figures than required | ½ |
+//! | wrong | `wrong` | none of the above (diagnosed where a known mistake reproduces it) | 0 |
+//! | missing | `missing` | no answer | 0 |
+//! | unparseable | `unparseable` | not a number, list or code grafika can read | 0 |
+//!
+//! A list (a point, a segment) takes its worst component's verdict.
+
+mod judge;
+
+pub use judge::decimal_places;
+use judge::{judge, Judged};
+
+use crate::error::{Error, Result};
+use crate::input::problem::ProblemIn;
+use crate::num::Real;
+use crate::stages::trace::Val;
+use crate::tutor::diagnose::{self, Mistake};
+use crate::tutor::solve::{self, lookup};
+
+/// A result tree: named values, as `solve` returns them.
+pub type Tree = Vec<(String, Val)>;
+
+/// Default relative tolerance (the usual default of online homework systems).
+pub const DEFAULT_TOLERANCE: f64 = 1e-3;
+/// Absolute tolerance used when the expected value is (near) zero.
+pub const ZERO_TOLERANCE: f64 = 1e-12;
+/// Default minimum significant figures of a rounded decimal answer.
+pub const DEFAULT_SIG_FIGS: u32 = 2;
+
+/// How answers are marked.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    /// Relative tolerance.
+    pub tolerance: f64,
+    /// Minimum significant figures of a decimal answer.
+    pub sig_figs: u32,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            tolerance: DEFAULT_TOLERANCE,
+            sig_figs: DEFAULT_SIG_FIGS,
+        }
+    }
+}
+
+/// The verdict on one answer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Verdict {
+    /// Right.
+    Correct,
+    /// Right, but rounded to fewer significant figures than required.
+    TooCoarse,
+    /// Could not be read as a number (or a list of them).
+    Unparseable,
+    /// Not the expected value.
+    Wrong,
+    /// Not answered.
+    Missing,
+}
+
+impl Verdict {
+    /// The verdict's word in output and JSON.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Verdict::Correct => "correct",
+            Verdict::TooCoarse => "too_coarse",
+            Verdict::Unparseable => "unparseable",
+            Verdict::Wrong => "wrong",
+            Verdict::Missing => "missing",
+        }
+    }
+    /// Marks for the verdict: 1 correct, ½ too coarse, 0 otherwise.
+    pub fn points(self) -> f64 {
+        match self {
+            Verdict::Correct => 1.0,
+            Verdict::TooCoarse => 0.5,
+            _ => 0.0,
+        }
+    }
+}
+
+/// The marking of one answer.
+#[derive(Clone, Debug)]
+pub struct Marked {
+    /// The answer key (`view.points.A`).
+    pub key: String,
+    /// The verdict.
+    pub verdict: Verdict,
+    /// The stable code (see the module docs and README).
+    pub code: &'static str,
+    /// The answer as written, on one line (None when missing).
+    pub given: Option<String>,
+    /// The answer as given in the file.
+    pub given_value: Option<toml::Value>,
+    /// The expected value (None when grafika has no such answer).
+    pub expected: Option<Val>,
+    /// A short note: how it was judged, or what was expected.
+    pub note: String,
+    /// Codes of the mistakes that reproduce this (wrong) answer.
+    pub diagnosis: Vec<&'static str>,
+    /// Why the source's printed answer is wrong (its `[[errata]]`), when
+    /// checking the source's own answers.
+    pub why: Option<String>,
+}
+
+/// One mistake that explains some wrong answers.
+#[derive(Clone, Debug)]
+pub struct Diagnosis {
+    /// The mistake.
+    pub mistake: &'static Mistake,
+    /// The answers it reproduces.
+    pub keys: Vec<String>,
+    /// Other mistakes that reproduce only some of these answers, with the
+    /// same values (the answers given cannot tell them apart).
+    pub also: Vec<&'static Mistake>,
+}
+
+/// The marking of a whole answer file.
+#[derive(Clone, Debug)]
+pub struct Marking {
+    /// The problem's title.
+    pub title: String,
+    /// Whose answers (a file name, or "the text").
+    pub who: String,
+    /// Every answer, in key order: the expected ones, then extra ones given.
+    pub answers: Vec<Marked>,
+    /// The mistakes found, each once, with the answers they explain.
+    pub diagnoses: Vec<Diagnosis>,
+    /// Keys given that grafika does not compute (typos, unasked parts).
+    pub unknown: Vec<String>,
+    /// The settings used.
+    pub settings: Settings,
+}
+
+impl Marking {
+    /// Points earned.
+    pub fn score(&self) -> f64 {
+        self.answers.iter().map(|a| a.verdict.points()).sum()
+    }
+    /// Points possible.
+    pub fn total(&self) -> usize {
+        self.answers.len()
+    }
+    /// How many answers got the verdict.
+    pub fn count(&self, v: Verdict) -> usize {
+        self.answers.iter().filter(|a| a.verdict == v).count()
+    }
+}
+
+/// The answer keys a problem expects by default: every answer of the parts
+/// it solves, except the view matrix, the far-plane window and the clipping
+/// intersections tried (checked when
+/// given, not required).
+pub fn default_keys(result: &Tree) -> Vec<String> {
+    let mut keys = Vec::new();
+    for (part, v) in result {
+        match (part.as_str(), v) {
+            ("clip", Val::List(items)) => {
+                for (i, it) in items.iter().enumerate() {
+                    if let Val::Map(kv) = it {
+                        keys.extend(kv.iter().map(|(k, _)| format!("clip.{i}.{k}")));
+                    }
+                }
+            }
+            (_, Val::Map(kv)) => {
+                for (k, x) in kv {
+                    if k == "matrix" || k == "intersections" || k.starts_with("far_") {
+                        continue;
+                    }
+                    match x {
+                        Val::Map(inner) if k == "points" || k == "pixels" => {
+                            keys.extend(inner.iter().map(|(n, _)| format!("{part}.{k}.{n}")))
+                        }
+                        _ => keys.push(format!("{part}.{k}")),
+                    }
+                }
+            }
+            _ => keys.push(part.clone()),
+        }
+    }
+    keys
+}
+
+/// Answers keyed by dotted result keys, in the order given.
+pub type Answers = Vec<(String, toml::Value)>;
+
+/// Answers from a TOML table, flattened to dotted keys (`view.points.A`).
+/// A top-level `student` string names the student and is not an answer.
+pub fn answers_from_table(t: &toml::Table) -> (Option<String>, Answers) {
+    let mut out = Vec::new();
+    let mut student = None;
+    for (k, v) in t {
+        match (k.as_str(), v) {
+            ("student", toml::Value::String(s)) => student = Some(s.clone()),
+            _ => flatten(k, v, &mut out),
+        }
+    }
+    (student, out)
+}
+
+fn flatten(key: &str, v: &toml::Value, out: &mut Vec<(String, toml::Value)>) {
+    match v {
+        toml::Value::Table(t) => {
+            for (k, x) in t {
+                flatten(&format!("{key}.{k}"), x, out);
+            }
+        }
+        other => out.push((key.to_string(), other.clone())),
+    }
+}
+
+/// Reads an answer file.
+pub fn read_answers(path: &std::path::Path) -> Result<(Option<String>, Answers)> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| Error::new("answers", format!("cannot read {}: {e}", path.display())))?;
+    let t: toml::Table = toml::from_str(&text)
+        .map_err(|e| crate::input::fields::toml_error(&path.display().to_string(), &text, &e))?;
+    Ok(answers_from_table(&t))
+}
+
+/// The settings for a problem: the command line over the problem's `[check]`
+/// over the defaults.
+pub fn settings_for(p: &ProblemIn, tolerance: Option<f64>, sig_figs: Option<u32>) -> Settings {
+    let c = p.check.clone().unwrap_or_default();
+    Settings {
+        tolerance: tolerance.or(c.tolerance).unwrap_or(DEFAULT_TOLERANCE).abs(),
+        sig_figs: sig_figs.or(c.sig_figs).unwrap_or(DEFAULT_SIG_FIGS),
+    }
+}
+
+/// Solves the problem exactly and marks the answers. With `from_text` the
+/// answers are the source's printed ones: only those keys are marked, and a
+/// wrong one gets the reason from the file's `[[errata]]`; otherwise the keys
+/// expected are the problem's `[check] keys` (default: [`default_keys`]) plus
+/// any other key given.
+pub fn mark(
+    p: &ProblemIn,
+    who: &str,
+    answers: &[(String, toml::Value)],
+    settings: Settings,
+    from_text: bool,
+) -> Result<Marking> {
+    let report = solve::solve::<Real>(p)?;
+    let result = report.result;
+    let keys: Vec<String> = if from_text {
+        answers.iter().map(|(k, _)| k.clone()).collect()
+    } else {
+        let mut k = p
+            .check
+            .as_ref()
+            .and_then(|c| c.keys.clone())
+            .unwrap_or_else(|| default_keys(&result));
+        for (given, _) in answers {
+            if !k.contains(given) {
+                k.push(given.clone());
+            }
+        }
+        k
+    };
+    let mut marked = Vec::new();
+    let mut unknown = Vec::new();
+    for key in &keys {
+        let given = answers.iter().find(|(k, _)| k == key).map(|(_, v)| v);
+        let Some(expected) = lookup(&result, key) else {
+            if given.is_some() {
+                unknown.push(key.clone());
+            }
+            continue;
+        };
+        let j = match given {
+            None => Judged::new(Verdict::Missing, "missing", "no answer given"),
+            Some(g) => judge(g, expected, &settings, key, false),
+        };
+        let note = j.note;
+        let why = match (from_text, p.errata.iter().find(|e| &e.key == key)) {
+            (true, Some(e)) if j.verdict == Verdict::Wrong => Some(e.why.clone()),
+            _ => None,
+        };
+        marked.push(Marked {
+            key: key.clone(),
+            verdict: j.verdict,
+            code: j.code,
+            given: given.map(written),
+            given_value: given.cloned(),
+            expected: Some(expected.clone()),
+            note,
+            diagnosis: vec![],
+            why,
+        });
+    }
+    let diagnoses = diagnose_all(p, answers, &mut marked, &settings);
+    Ok(Marking {
+        title: p.title.clone(),
+        who: who.to_string(),
+        answers: marked,
+        diagnoses,
+        unknown,
+        settings,
+    })
+}
+
+/// Runs every mistake of the catalog once and names, for each wrong
+/// answer, the mistakes that reproduce it; a mistake is listed once with
+/// all the answers it explains.
+fn diagnose_all(
+    p: &ProblemIn,
+    answers: &[(String, toml::Value)],
+    marked: &mut [Marked],
+    settings: &Settings,
+) -> Vec<Diagnosis> {
+    let wrong: Vec<usize> = (0..marked.len())
+        .filter(|&i| marked[i].verdict == Verdict::Wrong)
+        .collect();
+    if wrong.is_empty() {
+        return vec![];
+    }
+    let mut out: Vec<Diagnosis> = Vec::new();
+    for m in diagnose::CATALOG {
+        let Some(variants) = (m.apply)(p) else {
+            continue;
+        };
+        let mut explained: Vec<String> = Vec::new();
+        for &i in &wrong {
+            let key = &marked[i].key;
+            let Some((_, given)) = answers.iter().find(|(k, _)| k == key) else {
+                continue;
+            };
+            let Some(right) = &marked[i].expected else {
+                continue;
+            };
+            // The mistake must change this answer, and the answer must then
+            // be what the mistake gives.
+            let hit = variants.iter().any(|tree| {
+                lookup(tree, key).is_some_and(|mv| {
+                    differs(mv, right)
+                        && matches!(
+                            judge(given, mv, settings, key, true).verdict,
+                            Verdict::Correct | Verdict::TooCoarse
+                        )
+                })
+            });
+            if hit {
+                marked[i].diagnosis.push(m.code);
+                explained.push(key.clone());
+            }
+        }
+        if !explained.is_empty() {
+            out.push(Diagnosis {
+                mistake: m,
+                keys: explained,
+                also: vec![],
+            });
+        }
+    }
+    // The mistakes that explain the most answers first; one whose answers
+    // are all explained by an earlier one is named with it, not again.
+    out.sort_by_key(|d| std::cmp::Reverse(d.keys.len()));
+    let mut folded: Vec<Diagnosis> = Vec::new();
+    for d in out {
+        match folded
+            .iter_mut()
+            .find(|f| d.keys.iter().all(|k| f.keys.contains(k)))
+        {
+            Some(f) => f.also.push(d.mistake),
+            None => folded.push(d),
+        }
+    }
+    folded
+}
+
+/// Whether two values differ (numbers by more than a relative 1e-9).
+fn differs(a: &Val, b: &Val) -> bool {
+    match (a, b) {
+        (Val::Num(x), Val::Num(y)) => {
+            (x.value - y.value).abs() > 1e-9 * x.value.abs().max(y.value.abs()).max(1e-300)
+        }
+        (Val::List(xs), Val::List(ys)) => {
+            xs.len() != ys.len() || xs.iter().zip(ys).any(|(x, y)| differs(x, y))
+        }
+        (Val::Map(xs), Val::Map(ys)) => {
+            xs.len() != ys.len() || xs.iter().zip(ys).any(|((_, x), (_, y))| differs(x, y))
+        }
+        _ => a != b,
+    }
+}
+
+/// A TOML answer as the student wrote it.
+pub fn written(v: &toml::Value) -> String {
+    match v {
+        toml::Value::String(s) => s.clone(),
+        toml::Value::Array(a) => {
+            format!("({})", a.iter().map(written).collect::<Vec<_>>().join(", "))
+        }
+        other => other.to_string(),
+    }
+}

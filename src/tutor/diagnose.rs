@@ -1,0 +1,441 @@
+//! The catalog of known mistakes, in one place. Each entry recomputes a
+//! problem the wrong way — by running the real stages on altered inputs
+//! (`altered`), or with one stage result altered between stages
+//! ([`solve::Hooks`]), or with one documented change to the result tree —
+//! so that `grafika check` can say which mistake reproduces a wrong answer.
+//! No pipeline math is repeated here.
+//!
+//! Adding a mistake is one entry in [`CATALOG`].
+
+use crate::input::fields::{Num, Vec3In};
+use crate::input::problem::ProblemIn;
+use crate::num::vec;
+use crate::num::{Angle, AngleUnit, Expr};
+use crate::stages::camera::Basis;
+use crate::stages::lighting::Rules;
+use crate::stages::trace::Val;
+use crate::stages::window::Window;
+use crate::tutor::solve::{self, Hooks};
+
+/// A result tree, as `solve` returns it.
+pub type Tree = Vec<(String, Val)>;
+
+/// One known mistake.
+pub struct Mistake {
+    /// A stable code (autograders count it).
+    pub code: &'static str,
+    /// What the student did, in one line.
+    pub description: &'static str,
+    /// The problem's results computed with this mistake (several variants
+    /// when the mistake can be made in more than one place), or None when
+    /// the mistake does not apply to the problem.
+    pub apply: fn(&ProblemIn) -> Option<Vec<Tree>>,
+}
+
+impl std::fmt::Debug for Mistake {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Mistake({})", self.code)
+    }
+}
+
+/// Every known mistake.
+pub static CATALOG: &[Mistake] = &[
+    Mistake {
+        code: "cross_order",
+        description: "u = n × Vup instead of Vup × n (u, and with it v = n × u, flip sign)",
+        apply: |p| altered(p, |q| map_camera(q, |c| c.up = neg3(&c.up))),
+    },
+    Mistake {
+        code: "n_reversed",
+        description: "n computed from Pr − Pe instead of Pe − Pr (the camera looks the wrong way)",
+        // Pe − (2Pe − Pr) = Pr − Pe: the look-at point reflected through the eye.
+        apply: |p| {
+            altered(p, |q| {
+                map_camera(q, |c| {
+                    let look = std::array::from_fn(|k| {
+                        Num(Expr::Sub(
+                            Box::new(Expr::Mul(
+                                Box::new(Expr::Lit("2".into())),
+                                Box::new(c.eye[k].0.clone()),
+                            )),
+                            Box::new(c.look[k].0.clone()),
+                        ))
+                    });
+                    c.look = look;
+                })
+            })
+        },
+    },
+    Mistake {
+        code: "n_not_normalized",
+        description: "n = Pe − Pr not divided by |Pe − Pr| (v = n × u then has the same length)",
+        apply: |p| {
+            hooked(
+                p,
+                Hooks {
+                    basis: |b| {
+                        let s = b.dist;
+                        scale_axes(b, [1.0, s, s]);
+                    },
+                    ..Hooks::default()
+                },
+            )
+        },
+    },
+    Mistake {
+        code: "u_not_normalized",
+        description: "u = Vup × n not divided by |Vup × n| (v = n × u then has the same length)",
+        apply: |p| {
+            hooked(
+                p,
+                Hooks {
+                    // Vup × n = (Vup × d)/|d|, of length |Vup × d|/|d|.
+                    basis: |b| {
+                        let s = b.vxn_norm;
+                        scale_axes(b, [s, s, 1.0]);
+                    },
+                    ..Hooks::default()
+                },
+            )
+        },
+    },
+    Mistake {
+        code: "fovy_not_halved",
+        description: "tan(fovy) used instead of tan(fovy/2) for the window",
+        apply: |p| {
+            altered(p, |q| {
+                map_fovy(q, |a| {
+                    a.value = Expr::Mul(Box::new(Expr::Lit("2".into())), Box::new(a.value.clone()))
+                })
+            })
+        },
+    },
+    Mistake {
+        code: "degrees_as_radians",
+        description: "the angle in degrees given to tan as if it were radians",
+        // As an input this would be an angle of thousands of degrees, which
+        // the window rejects; so the window is scaled by the ratio of the tangents.
+        apply: |p| {
+            let deg = p
+                .perspective
+                .as_ref()
+                .and_then(|x| x.fovy.as_ref())
+                .is_some_and(|f| f.0.unit == AngleUnit::Deg);
+            if !deg {
+                return None;
+            }
+            hooked(
+                p,
+                Hooks {
+                    window: |w, fovy| {
+                        let half = fovy / 2.0;
+                        scale_window(w, half.tan() / half.to_radians().tan());
+                    },
+                    ..Hooks::default()
+                },
+            )
+        },
+    },
+    Mistake {
+        code: "height_is_half_extent",
+        description: "the half extent near·tan(fovy/2) (the text's h) given as the window height (and aspect·h as the width)",
+        apply: |p| {
+            hooked(
+                p,
+                Hooks {
+                    window: |w, _| {
+                        w.height = w.top;
+                        w.width = w.right;
+                    },
+                    ..Hooks::default()
+                },
+            )
+        },
+    },
+    Mistake {
+        code: "height_as_half_extent",
+        description: "near·tan(fovy/2) taken as the full height, so the window edges are at half the right distance",
+        apply: |p| {
+            hooked(
+                p,
+                Hooks {
+                    window: |w, _| {
+                        w.height = w.top;
+                        w.width = w.right;
+                        w.top /= 2.0;
+                        w.right /= 2.0;
+                        w.bottom = -w.top;
+                        w.left = -w.right;
+                    },
+                    ..Hooks::default()
+                },
+            )
+        },
+    },
+    Mistake {
+        code: "d_sign",
+        description: "the wrong sign of d (the projection plane z = +near instead of z = −near)",
+        apply: |p| {
+            let per = p.perspective.as_ref()?;
+            let d = match (&per.d, &per.near) {
+                (Some(d), _) => Expr::Neg(Box::new(d.0.clone())),
+                (None, Some(n)) => n.0.clone(),
+                _ => return None,
+            };
+            altered(p, |q| {
+                if let Some(x) = q.perspective.as_mut() {
+                    x.d = Some(Num(d.clone()));
+                }
+            })
+        },
+    },
+    Mistake {
+        code: "matrix_transposed",
+        description: "the view matrix written transposed (the row-vector convention P·M)",
+        apply: |p| {
+            let mut t = solved(p)?;
+            let m = find_mut(&mut t, &["view", "matrix"])?;
+            if let Val::List(rows) = m {
+                let cells: Vec<Vec<Val>> = rows
+                    .iter()
+                    .map(|r| match r {
+                        Val::List(c) => c.clone(),
+                        _ => vec![],
+                    })
+                    .collect();
+                let n = cells.len();
+                *rows = (0..n)
+                    .map(|c| Val::List((0..n).map(|r| cells[r][c].clone()).collect()))
+                    .collect();
+            }
+            Some(vec![t])
+        },
+    },
+    Mistake {
+        code: "outcode_reversed",
+        description: "outcode bits written in the wrong order (bit 1 leftmost instead of rightmost)",
+        apply: |p| {
+            let mut t = solved(p)?;
+            for_each_clip(&mut t, |kv| {
+                for (k, v) in kv.iter_mut() {
+                    if let (true, Val::Text(s)) = (k.starts_with("code"), &mut *v) {
+                        *s = s.chars().rev().collect();
+                    }
+                }
+            });
+            Some(vec![t])
+        },
+    },
+    Mistake {
+        code: "endpoint_kept",
+        description: "an endpoint outside the box kept instead of the intersection that replaces it",
+        apply: |p| {
+            let base = solved(p)?;
+            let c = p.clip.as_ref()?;
+            let points: Vec<(String, crate::num::vec::V3<f64>)> = p
+                .points()
+                .ok()?
+                .iter()
+                .map(|(n, v)| {
+                    let e: Option<Vec<f64>> = v.iter().map(|x| x.0.eval::<f64>().ok()).collect();
+                    e.map(|e| (n.clone(), crate::num::vec::v3(e[0], e[1], e[2])))
+                })
+                .collect::<Option<_>>()?;
+            let end = |r| solve::point_ref("clip", r, &points).ok().map(|q| Val::vec3(&q));
+            let ends: Vec<(Val, Val)> = c
+                .segment
+                .iter()
+                .map(|s| Some((end(&s.from)?, end(&s.to)?)))
+                .collect::<Option<_>>()?;
+            // Variant 0 keeps P0, variant 1 keeps P1, in every clipped segment.
+            let variants = (0..2)
+                .map(|which| {
+                    let mut t = base.clone();
+                    let mut i = 0;
+                    for_each_clip(&mut t, |kv| {
+                        let clipped = kv
+                            .iter()
+                            .any(|(k, v)| k == "status" && *v == Val::text("clipped"));
+                        if let (true, Some((p0, p1))) = (clipped, ends.get(i)) {
+                            for (k, v) in kv.iter_mut() {
+                                if let (true, Val::List(pts)) = (k == "segment", &mut *v) {
+                                    if pts.len() == 2 {
+                                        pts[which] = if which == 0 { p0.clone() } else { p1.clone() };
+                                    }
+                                }
+                            }
+                        }
+                        i += 1;
+                    });
+                    t
+                })
+                .collect();
+            Some(variants)
+        },
+    },
+    Mistake {
+        code: "reflect_plus_l",
+        description: "R computed as 2N(L·N) + L instead of 2N(L·N) − L",
+        apply: |p| {
+            p.shade.as_ref()?;
+            hooked(
+                p,
+                Hooks {
+                    shade: Rules {
+                        reflect: |n, l, two_ln| vec::add(&vec::scale(n, two_ln), l),
+                        ..Rules::default()
+                    },
+                    ..Hooks::default()
+                },
+            )
+        },
+    },
+    Mistake {
+        code: "specular_no_max",
+        description: "the specular term without max(·, 0): a negative cos β raised to the power n",
+        apply: |p| {
+            p.shade.as_ref()?;
+            hooked(
+                p,
+                Hooks {
+                    shade: Rules {
+                        highlight_base: |c| *c,
+                        ..Rules::default()
+                    },
+                    ..Hooks::default()
+                },
+            )
+        },
+    },
+];
+
+/// Looks up a mistake by code.
+pub fn find(code: &str) -> Option<&'static Mistake> {
+    CATALOG.iter().find(|m| m.code == code)
+}
+
+/// The problem's results (f64; a mistaken value needs no exact form).
+fn solved(p: &ProblemIn) -> Option<Tree> {
+    solve::solve::<f64>(p).ok().map(|r| r.result)
+}
+
+/// The results of the problem with its input altered by `f`.
+fn altered(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<Tree>> {
+    let mut q = p.clone();
+    f(&mut q);
+    Some(vec![solved(&q)?])
+}
+
+/// The results with a stage result altered between stages.
+fn hooked(p: &ProblemIn, hooks: Hooks<f64>) -> Option<Vec<Tree>> {
+    Some(vec![solve::solve_with::<f64>(p, &hooks).ok()?.result])
+}
+
+/// Multiplies the axes u, v, n by the factors given, keeping the basis
+/// consistent: the eye coordinates are computed from the unnormalized axes s
+/// and divided by |s| (`norms`), so each |s| is divided by the factor.
+fn scale_axes(b: &mut Basis<f64>, f: [f64; 3]) {
+    b.u *= f[0];
+    b.v *= f[1];
+    b.n *= f[2];
+    b.norms[1] /= f[0];
+    b.norms[2] /= f[1];
+    b.norms[0] /= f[2];
+}
+
+/// Multiplies every edge and size of the window by k.
+fn scale_window(w: &mut Window<f64>, k: f64) {
+    for x in [
+        &mut w.top,
+        &mut w.bottom,
+        &mut w.left,
+        &mut w.right,
+        &mut w.height,
+        &mut w.width,
+    ] {
+        *x *= k;
+    }
+}
+
+fn neg3(v: &Vec3In) -> Vec3In {
+    std::array::from_fn(|k| Num(Expr::Neg(Box::new(v[k].0.clone()))))
+}
+
+fn map_camera(q: &mut ProblemIn, f: impl FnOnce(&mut crate::input::problem::CameraIn)) {
+    if let Some(c) = q.camera.as_mut() {
+        f(c);
+    }
+}
+
+fn map_fovy(q: &mut ProblemIn, f: impl FnOnce(&mut Angle)) {
+    if let Some(a) = q.perspective.as_mut().and_then(|x| x.fovy.as_mut()) {
+        f(&mut a.0);
+    }
+}
+
+/// The value at a path of map keys.
+fn find_mut<'a>(t: &'a mut Tree, path: &[&str]) -> Option<&'a mut Val> {
+    let mut cur = &mut t.iter_mut().find(|(k, _)| k == path[0])?.1;
+    for part in &path[1..] {
+        cur = match cur {
+            Val::Map(kv) => &mut kv.iter_mut().find(|(k, _)| k == part)?.1,
+            _ => return None,
+        };
+    }
+    Some(cur)
+}
+
+/// Calls `f` on each clip result (one, or each of a list).
+fn for_each_clip(t: &mut Tree, mut f: impl FnMut(&mut Vec<(String, Val)>)) {
+    if let Some((_, v)) = t.iter_mut().find(|(k, _)| k == "clip") {
+        match v {
+            Val::Map(kv) => f(kv),
+            Val::List(items) => {
+                for it in items {
+                    if let Val::Map(kv) = it {
+                        f(kv);
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn codes_are_unique_and_found() {
+        for (i, m) in CATALOG.iter().enumerate() {
+            assert!(!m.code.is_empty() && !m.description.is_empty());
+            assert!(CATALOG[..i].iter().all(|o| o.code != m.code), "{}", m.code);
+            assert_eq!(find(m.code).map(|x| x.code), Some(m.code));
+        }
+    }
+
+    #[test]
+    fn fovy_not_halved_doubles_the_angle() {
+        // fovy = 60°, near = 1: the right top is tan 30° = 0.57735; with
+        // tan(fovy) it is tan 60° = 1.73205.
+        let p = ProblemIn::parse(
+            "title = 't'\nask = ['window']\n[perspective]\nnear = 1\nfovy = 60\naspect = 1\n",
+            "t",
+        )
+        .unwrap();
+        let m = find("fovy_not_halved").unwrap();
+        let t = &(m.apply)(&p).unwrap()[0];
+        let Some(Val::Num(top)) = solve::lookup(t, "window.top") else {
+            panic!()
+        };
+        assert!((top.value - 3f64.sqrt()).abs() < 1e-12);
+        // degrees as radians: tan(30 rad) = −6.405331196646276
+        let m = find("degrees_as_radians").unwrap();
+        let t = &(m.apply)(&p).unwrap()[0];
+        let Some(Val::Num(top)) = solve::lookup(t, "window.top") else {
+            panic!()
+        };
+        assert!((top.value - 30f64.tan()).abs() < 1e-9, "{}", top.value);
+    }
+}

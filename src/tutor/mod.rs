@@ -1,0 +1,10 @@
+//! The tutor: a whole problem solved through the text's steps ([`solve`]),
+//! the result keys shared with the calculator ([`keys`]), answers marked
+//! ([`check`]) against the catalog of known mistakes ([`diagnose`]), and
+//! exams drawn from a seed ([`generate`]).
+
+pub mod check;
+pub mod diagnose;
+pub mod generate;
+pub mod keys;
+pub mod solve;

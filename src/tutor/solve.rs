@@ -1,0 +1,555 @@
+//! `grafika solve`: a whole problem file through the text's steps —
+//! modeling, viewing transformation, projection onto the near plane, window
+//! and clipping, viewport — and a comparison with the answers the source
+//! printed.
+
+use crate::error::{Error, Result};
+use crate::input;
+use crate::input::fields::{Num, Vec3In};
+use crate::input::problem::{PointRef, ProblemIn};
+use crate::num::format::fmt_dec;
+use crate::num::vec::V3;
+use crate::num::{Expr, Scalar};
+use crate::stages::camera::{self, Camera};
+use crate::stages::clip::ClipBox;
+use crate::stages::projection::{self, Projection};
+use crate::stages::trace::{Compared, Comparison, Recorder, Report, Step, Trace, Val};
+use crate::stages::window;
+use crate::tutor::keys::{basis_result, clip_run, window_result};
+use serde_json::{json, Value};
+use std::path::Path;
+
+/// Reads and solves a problem file at precision `T`.
+pub fn solve_file<T: Scalar>(path: &Path) -> Result<Report> {
+    let p = ProblemIn::read(path)?;
+    solve::<T>(&p)
+}
+
+fn eval<T: Scalar>(field: &str, n: &Num) -> Result<T> {
+    input::eval(field, &n.0)
+}
+
+fn eval3<T: Scalar>(field: &str, v: &Vec3In) -> Result<V3<T>> {
+    Ok(V3::new(
+        eval(field, &v[0])?,
+        eval(field, &v[1])?,
+        eval(field, &v[2])?,
+    ))
+}
+
+/// Alterations applied to stage results between stages. Solving uses none;
+/// the mistake catalog (`diagnose`) sets one to re-run the real stages with
+/// one step done the wrong way, instead of copying the pipeline's math.
+pub struct Hooks<T> {
+    /// Applied to the camera basis before it is used.
+    pub basis: fn(&mut camera::Basis<T>),
+    /// Applied to the near-plane window before it is used (given fovy in degrees).
+    pub window: fn(&mut window::Window<T>, &T),
+    /// The lighting stage's rules (the text's by default).
+    pub shade: crate::stages::lighting::Rules<T>,
+}
+
+impl<T: Scalar> Default for Hooks<T> {
+    fn default() -> Self {
+        Hooks {
+            basis: |_| {},
+            window: |_, _| {},
+            shade: crate::stages::lighting::Rules::default(),
+        }
+    }
+}
+
+/// Solves a parsed problem at precision `T`.
+pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
+    solve_with::<T>(p, &Hooks::default())
+}
+
+/// Solves a parsed problem at precision `T`, with stage results altered by `hooks`.
+pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> {
+    let mut rec = Recorder::new();
+    let mut result: Vec<(String, Val)> = Vec::new();
+    let points: Vec<(String, V3<T>)> = p
+        .points()?
+        .iter()
+        .map(|(n, v)| Ok((n.clone(), eval3(&format!("points.{n}"), v)?)))
+        .collect::<Result<_>>()?;
+
+    // Which parts run: those asked for, and what they need.
+    let per = p.perspective.as_ref();
+    let want_project = p.asks("project") || p.asks("viewport");
+    let want_view = p.asks("view") || want_project;
+    let want_window = p.asks("window") || p.asks("viewport");
+
+    // Steps 1 and 2: modeling and viewing transformation
+    let mut eye_pts: Vec<(String, V3<T>)> = Vec::new();
+    if let (true, Some(c)) = (want_view, &p.camera) {
+        let cam = Camera {
+            pe: eval3("camera.eye", &c.eye)?,
+            pr: eval3("camera.look", &c.look)?,
+            vup: eval3("camera.up", &c.up)?,
+        };
+        rec.section("Step 1: modeling transformation");
+        rec.step(|| {
+            Step::new("Nothing to do", "")
+                .note("the objects are already given in world coordinates")
+        });
+        rec.section("Step 2: viewing transformation (world → eye coordinates)");
+        let mut b = camera::basis(&cam, &mut rec).map_err(camera_field)?;
+        (hooks.basis)(&mut b);
+        let m = camera::view_matrix(&b, &cam.pe, &mut rec).map_err(camera_field)?;
+        for (n, q) in &points {
+            eye_pts.push((n.clone(), camera::to_eye(&b, &cam.pe, n, q, &mut rec)?));
+        }
+        if p.asks("view") {
+            let mut r = basis_result(&b);
+            r.push(("matrix".into(), Val::mat4(&m)));
+            r.push((
+                "points".into(),
+                Val::Map(
+                    eye_pts
+                        .iter()
+                        .map(|(n, e)| (n.clone(), Val::vec3(e)))
+                        .collect(),
+                ),
+            ));
+            result.push(("view".into(), Val::Map(r)));
+        }
+    } else if want_view && !points.is_empty() && p.ask.is_some() {
+        return Err(Error::new(
+            "camera",
+            "the problem asks for the view but has no [camera] table",
+        ));
+    }
+
+    // Step 3: projection onto the near plane (d = −near unless given)
+    let near: Option<T> = per
+        .and_then(|x| x.near.as_ref())
+        .map(|n| eval("perspective.near", n))
+        .transpose()?;
+    let mut projected: Vec<(String, V3<T>)> = Vec::new();
+    if want_project && !eye_pts.is_empty() {
+        let d: T = match (per.and_then(|x| x.d.as_ref()), &near) {
+            (Some(d), _) => eval("perspective.d", d)?,
+            (None, Some(n)) => -n.clone(),
+            (None, None) => {
+                return Err(Error::new(
+                    "perspective.near",
+                    "projection needs perspective.near (or perspective.d)",
+                ))
+            }
+        };
+        rec.section("Step 3: projection onto the near plane");
+        rec.step(|| {
+            Step::new(
+                "Projection plane",
+                "z = d,  d = −near (the camera looks along −z in eye coordinates)",
+            )
+            .res("d", Val::num(&d))
+        });
+        let proj = Projection::Plane { d };
+        proj.validate().map_err(|e| e.in_field("perspective.d"))?;
+        for (n, e) in &eye_pts {
+            projected.push((n.clone(), projection::project(&proj, n, e, &mut rec)?));
+        }
+        if p.asks("project") {
+            result.push((
+                "project".into(),
+                Val::Map(vec![(
+                    "points".into(),
+                    Val::Map(
+                        projected
+                            .iter()
+                            .map(|(n, q)| (n.clone(), Val::vec3(q)))
+                            .collect(),
+                    ),
+                )]),
+            ));
+        }
+    }
+
+    // Step 4: the window on the near plane, and which points it contains
+    let mut win = None;
+    if let (true, Some(per)) = (want_window, per) {
+        if let (Some(fovy), Some(aspect), Some(near)) = (&per.fovy, &per.aspect, &near) {
+            let fovy: T = fovy
+                .0
+                .degrees()
+                .map_err(|m| Error::new("perspective.fovy", m))?;
+            let aspect: T = eval("perspective.aspect", aspect)?;
+            rec.section("Step 4: window and clipping");
+            let mut w = window::window(&fovy, &aspect, near, "near", &mut rec)
+                .map_err(perspective_field)?;
+            (hooks.window)(&mut w, &fovy);
+            let mut r = window_result(&w, "");
+            let far: Option<T> = per
+                .far
+                .as_ref()
+                .map(|f| eval("perspective.far", f))
+                .transpose()?;
+            if let Some(f) = &far {
+                if *f <= *near {
+                    return Err(Error::new(
+                        "perspective.far",
+                        format!("must be greater than near = {}", near.to_f64()),
+                    ));
+                }
+                let fw = window::window(&fovy, &aspect, f, "far", &mut rec)
+                    .map_err(perspective_field)?;
+                r.extend(
+                    window_result(&fw, "far_")
+                        .into_iter()
+                        .filter(|(k, _)| !k.ends_with("height") && !k.ends_with("width")),
+                );
+            }
+            for ((n, q), (_, e)) in projected.iter().zip(&eye_pts) {
+                point_inside_step(&mut rec, n, q, e, &w, near, far.as_ref());
+            }
+            if p.asks("window") {
+                result.push(("window".into(), Val::Map(r)));
+            }
+            win = Some(w);
+        } else if p
+            .ask
+            .as_ref()
+            .is_some_and(|a| a.iter().any(|x| x == "window" || x == "viewport"))
+        {
+            return Err(Error::new(
+                "perspective",
+                "the window needs perspective.fovy, perspective.aspect and perspective.near",
+            ));
+        }
+    }
+
+    // The viewport mapping
+    if let (true, Some(w), Some(vp)) = (
+        p.asks("viewport"),
+        &win,
+        per.and_then(|x| x.viewport.as_ref()),
+    ) {
+        let (vw, vh): (T, T) = (
+            eval("perspective.viewport", &vp[0])?,
+            eval("perspective.viewport", &vp[1])?,
+        );
+        window::validate_viewport(&vw, &vh).map_err(|e| e.in_field("perspective.viewport"))?;
+        rec.section("Viewport mapping (window → pixels)");
+        let px: Vec<(String, Val)> = projected
+            .iter()
+            .map(|(n, q)| {
+                let (a, b) = window::to_viewport(w, (&vw, &vh), n, (&q[0], &q[1]), &mut rec);
+                (n.clone(), Val::vec2(&a, &b))
+            })
+            .collect();
+        result.push((
+            "viewport".into(),
+            Val::Map(vec![("pixels".into(), Val::Map(px))]),
+        ));
+    }
+
+    // Clipping of segments against a box
+    if let (true, Some(c)) = (p.asks("clip"), &p.clip) {
+        let b = ClipBox {
+            min: eval3("clip.min", &c.min)?,
+            max: eval3("clip.max", &c.max)?,
+        };
+        b.validate().map_err(|e| e.in_field("clip.min"))?;
+        let mut all = Vec::new();
+        for (i, s) in c.segment.iter().enumerate() {
+            let f = format!("clip.segment[{i}]");
+            let p0: V3<T> = point_ref(&format!("{f}.from"), &s.from, &points)?;
+            let p1: V3<T> = point_ref(&format!("{f}.to"), &s.to, &points)?;
+            rec.section(if c.segment.len() == 1 {
+                "Line clipping".to_string()
+            } else {
+                format!("Line clipping, segment {}", i + 1)
+            });
+            all.push(Val::Map(clip_run(&b, &p0, &p1, &mut rec)));
+        }
+        match all.len() {
+            0 => {}
+            1 => result.push(("clip".into(), all.remove(0))),
+            _ => result.push(("clip".into(), Val::List(all))),
+        }
+    }
+
+    // Lighting
+    if let (true, Some(sh)) = (p.asks("shade"), &p.shade) {
+        rec.section("Lighting");
+        let file = crate::input::lights::LightsFileIn {
+            global_ambient: p.global_ambient.clone(),
+            material: None,
+            light: p.light.clone(),
+        };
+        let setup = crate::input::lights::build::<T>(sh, &file, "shade.", "light", &mut rec)?;
+        let r = crate::input::lights::run_with(&setup, &hooks.shade, &mut rec);
+        result.push(("shade".into(), Val::Map(r)));
+    } else if !p.light.is_empty() && p.shade.is_none() {
+        return Err(Error::new(
+            "shade",
+            "[[light]] tables need a [shade] table (normal, color, ...)",
+        ));
+    }
+
+    if result.is_empty() {
+        return Err(Error::new("ask", "nothing to solve: the file has no part that its data allow (camera + points, perspective, clip, shade)"));
+    }
+
+    // Exact printed forms are compared to 1e-9 relative, or to what the
+    // precision itself can hold (f32 rounds at about 1e-7).
+    let rel = match T::PRECISION {
+        crate::num::Precision::F32 => 64.0 * f64::from(f32::EPSILON),
+        _ => 1e-9,
+    };
+    let comparison = compare_printed(p, &result, rel);
+    let mut report = Report::from_recorder::<T>("solve", input_json(p), result, rec);
+    report.comparison = comparison;
+    report.source_notes = p.source_notes.clone();
+    Ok(report)
+}
+
+/// The problem's inputs as JSON numbers (f64 values of the written numbers;
+/// names for named segment ends).
+fn input_json(p: &ProblemIn) -> Value {
+    let n = |x: &Num| x.0.eval::<f64>().map(|v| json!(v)).unwrap_or(Value::Null);
+    let v3 = |v: &Vec3In| json!([n(&v[0]), n(&v[1]), n(&v[2])]);
+    let pref = |r: &PointRef| match r {
+        PointRef::At(v) => v3(v),
+        PointRef::Named(name) => json!(name),
+    };
+    let mut o = json!({ "title": p.title, "source": p.source, "ask": p.ask });
+    if let Some(c) = &p.camera {
+        o["camera"] = json!({ "eye": v3(&c.eye), "look": v3(&c.look), "up": v3(&c.up) });
+    }
+    if let Ok(points) = p.points() {
+        o["points"] = Value::Object(points.iter().map(|(k, v)| (k.clone(), v3(v))).collect());
+    }
+    if let Some(per) = &p.perspective {
+        o["perspective"] = json!({
+            "near": per.near.as_ref().map(n),
+            "far": per.far.as_ref().map(n),
+            "fovy": per.fovy.as_ref().and_then(|a| a.0.degrees::<f64>().ok()),
+            "aspect": per.aspect.as_ref().map(n),
+            "viewport": per.viewport.as_ref().map(|v| json!([n(&v[0]), n(&v[1])])),
+            "d": per.d.as_ref().map(n),
+        });
+    }
+    if let Some(c) = &p.clip {
+        let segs: Vec<Value> = c
+            .segment
+            .iter()
+            .map(|s| json!({ "from": pref(&s.from), "to": pref(&s.to) }))
+            .collect();
+        o["clip"] = json!({ "min": v3(&c.min), "max": v3(&c.max), "segment": segs });
+    }
+    if let Some(sh) = &p.shade {
+        let ov = |v: &Option<Vec3In>| v.as_ref().map(v3);
+        o["shade"] = json!({
+            "model": sh.model.unwrap_or_default().name(),
+            "light": ov(&sh.light), "normal": ov(&sh.normal), "view": ov(&sh.view),
+            "color": ov(&sh.color), "camera": ov(&sh.camera), "position": ov(&sh.position),
+            "ka": sh.ka.as_ref().map(n), "kd": sh.kd.as_ref().map(n),
+            "ks": sh.ks.as_ref().map(n), "shininess": sh.shininess.as_ref().map(n),
+        });
+        if !p.light.is_empty() {
+            o["light"] =
+                json!(p.light.iter().map(|l| json!({
+                "type": format!("{:?}", l.kind).to_lowercase(),
+                "direction": ov(&l.direction), "position": ov(&l.position), "axis": ov(&l.axis),
+            })).collect::<Vec<_>>());
+        }
+    }
+    o
+}
+
+/// A segment end: its coordinates, or the named point's.
+pub fn point_ref<T: Scalar>(
+    field: &str,
+    r: &PointRef,
+    points: &[(String, V3<T>)],
+) -> Result<V3<T>> {
+    match r {
+        PointRef::At(v) => eval3(field, v),
+        PointRef::Named(name) => points
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, p)| p.clone())
+            .ok_or_else(|| {
+                let known: Vec<&str> = points.iter().map(|(n, _)| n.as_str()).collect();
+                Error::new(
+                    field,
+                    if known.is_empty() {
+                        format!("unknown point `{name}`: the problem has no [points]")
+                    } else {
+                        format!(
+                            "unknown point `{name}`; the points are {}",
+                            known.join(", ")
+                        )
+                    },
+                )
+            }),
+    }
+}
+
+fn camera_field(e: Error) -> Error {
+    let f = format!("camera.{}", e.field);
+    e.in_field(f)
+}
+
+fn perspective_field(e: Error) -> Error {
+    let f = format!("perspective.{}", e.field);
+    e.in_field(f)
+}
+
+/// The text's point-clipping test after projection: inside the window and
+/// between the near and far planes (−far ≤ z' ≤ −near).
+fn point_inside_step<T: Scalar>(
+    rec: &mut Recorder,
+    name: &str,
+    q: &V3<T>,
+    e: &V3<T>,
+    w: &window::Window<T>,
+    near: &T,
+    far: Option<&T>,
+) {
+    let in_window = window::inside(w, &q[0], &q[1]);
+    let in_depth = e[2] <= -near.clone() && far.is_none_or(|f| e[2] >= -f.clone());
+    rec.step(|| {
+        Step::new(
+            format!("Is {name}'' inside the view volume?"),
+            "left ≤ xp ≤ right,  bottom ≤ yp ≤ top,  and −far ≤ z' ≤ −near",
+        )
+        .val(format!("{name}''"), Val::vec2(&q[0], &q[1]))
+        .val(format!("z' of {name}'"), Val::num(&e[2]))
+        .res("inside", Val::Bool(in_window && in_depth))
+        .note(match (in_window, in_depth) {
+            (true, true) => "inside: not clipped",
+            (false, _) => "outside the window: clipped",
+            (true, false) => "outside the near/far planes: clipped",
+        })
+    });
+}
+
+/// Looks up `a.b.c` (a list index may be a number) in the results.
+pub fn lookup<'a>(result: &'a [(String, Val)], key: &str) -> Option<&'a Val> {
+    let mut parts = key.split('.');
+    let first = parts.next()?;
+    let mut cur = &result.iter().find(|(k, _)| k == first)?.1;
+    for part in parts {
+        cur = match cur {
+            Val::Map(kv) => &kv.iter().find(|(k, _)| k == part)?.1,
+            Val::List(items) => items.get(part.parse::<usize>().ok()?)?,
+            _ => return None,
+        };
+    }
+    Some(cur)
+}
+
+/// Flattens a nested TOML table into dotted keys.
+fn flatten(prefix: &str, t: &toml::Table, out: &mut Vec<(String, toml::Value)>) {
+    for (k, v) in t {
+        let key = if prefix.is_empty() {
+            k.clone()
+        } else {
+            format!("{prefix}.{k}")
+        };
+        match v {
+            toml::Value::Table(inner) => flatten(&key, inner, out),
+            other => out.push((key, other.clone())),
+        }
+    }
+}
+
+/// Whether a printed value agrees with a computed one: texts equal; numbers
+/// equal to the digits the text wrote (a printed 0.041 agrees with 0.04142),
+/// or to `rel` (relative, at least absolute near zero) when the printed form
+/// is exact (−6/sqrt(2)); lists element by element (a printed (x, y) is
+/// compared with the first two of (x, y, z)).
+pub fn agrees(printed: &toml::Value, computed: &Val, rel: f64) -> Option<bool> {
+    match (printed, computed) {
+        (toml::Value::Array(ps), Val::List(cs)) => {
+            if ps.len() > cs.len() {
+                return Some(false);
+            }
+            let mut all = true;
+            for (p, c) in ps.iter().zip(cs) {
+                all &= agrees(p, c, rel)?;
+            }
+            Some(all)
+        }
+        (toml::Value::String(s), Val::Text(t)) => Some(s == t),
+        (p, Val::Num(c)) => {
+            let text = match p {
+                toml::Value::String(s) => s.clone(),
+                toml::Value::Integer(i) => i.to_string(),
+                toml::Value::Float(f) => format!("{f}"),
+                _ => return None,
+            };
+            let e: Expr = crate::num::parse_expr(&text.replace(',', ".")).ok()?;
+            let v: f64 = e.eval::<f64>().ok()?;
+            Some((v - c.value).abs() <= written_tolerance(&text).max(rel * c.value.abs().max(1.0)))
+        }
+        (toml::Value::String(s), Val::Null) => Some(s == "none" || s == "null"),
+        _ => None,
+    }
+}
+
+/// Half a unit in the last decimal place written (0 for exact forms).
+fn written_tolerance(text: &str) -> f64 {
+    let mut best: f64 = 0.0;
+    let chars: Vec<char> = text.chars().collect();
+    let mut i = 0;
+    while i < chars.len() {
+        if chars[i] == '.' || chars[i] == ',' {
+            let mut k = 0;
+            while i + 1 + k < chars.len() && chars[i + 1 + k].is_ascii_digit() {
+                k += 1;
+            }
+            best = best.max(0.5 * 10f64.powi(-(k as i32)));
+            i += k;
+        }
+        i += 1;
+    }
+    best * 1.000001
+}
+
+/// Compares every `[printed]` answer with the computed results.
+fn compare_printed(p: &ProblemIn, result: &[(String, Val)], rel: f64) -> Option<Comparison> {
+    let mut flat = Vec::new();
+    flatten("", &p.printed, &mut flat);
+    if flat.is_empty() {
+        return None;
+    }
+    let rows = flat
+        .iter()
+        .map(|(key, printed)| {
+            let computed = lookup(result, key).cloned();
+            Compared {
+                key: key.clone(),
+                printed: printed_text(printed),
+                agrees: computed.as_ref().and_then(|v| agrees(printed, v, rel)),
+                computed,
+                why: p
+                    .errata
+                    .iter()
+                    .find(|e| &e.key == key)
+                    .map(|e| e.why.clone()),
+            }
+        })
+        .collect();
+    Some(Comparison {
+        source: p.source.clone(),
+        rows,
+    })
+}
+
+/// A printed value as the text wrote it.
+fn printed_text(v: &toml::Value) -> String {
+    match v {
+        toml::Value::String(s) => s.clone(),
+        toml::Value::Array(a) => format!(
+            "({})",
+            a.iter().map(printed_text).collect::<Vec<_>>().join(", ")
+        ),
+        toml::Value::Float(f) => fmt_dec(*f, 17),
+        other => other.to_string(),
+    }
+}
