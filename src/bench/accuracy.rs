@@ -368,21 +368,53 @@ fn shuffle(rng: &mut InputRng, a: &mut [i64; 3], b: &mut [i64; 3]) {
 
 /// The fixed input set: `n` random cases per stage plus about `n`
 /// adversarial ones (half near-parallel/grazing integers, half wide-range).
+/// The cases are drawn in a fixed order from one generator.
 pub fn inputs(n: usize) -> Inputs {
     let mut rng = InputRng::new(SEED);
     let mut out = Inputs::default();
-    let r = |rng: &mut InputRng| [rng.int_bits(20), rng.int_bits(20), rng.int_bits(20)];
+    random_cameras(&mut rng, n, &mut out.cameras);
+    near_parallel_cameras(&mut rng, n, &mut out.cameras);
+    wide_cameras(&mut rng, n, &mut out.cameras);
+    random_projects(&mut rng, n, &mut out.projects);
+    grazing_projects(&mut rng, n, &mut out.projects);
+    wide_projects(&mut rng, n, &mut out.projects);
+    windows(&mut rng, n, &mut out.windows);
+    random_clips(&mut rng, n, &mut out.clips);
+    grazing_clips(&mut rng, n, &mut out.clips);
+    wide_clips(&mut rng, n, &mut out.clips);
+    out
+}
 
-    // Cameras.
+/// Three random integers of up to 20 bits.
+fn r20(rng: &mut InputRng) -> [i64; 3] {
+    [rng.int_bits(20), rng.int_bits(20), rng.int_bits(20)]
+}
+
+/// A random box: the corners of two random points.
+fn bx(rng: &mut InputRng) -> ([i64; 3], [i64; 3]) {
+    let a = r20(rng);
+    let b = r20(rng);
+    (
+        [a[0].min(b[0]), a[1].min(b[1]), a[2].min(b[2])],
+        [a[0].max(b[0]), a[1].max(b[1]), a[2].max(b[2])],
+    )
+}
+
+/// Cameras: `n` random ones.
+fn random_cameras(rng: &mut InputRng, n: usize, out: &mut Vec<CameraCase>) {
     for _ in 0..n {
-        out.cameras.push(CameraCase {
+        out.push(CameraCase {
             kind: Kind::Random,
-            pe: f3(r(&mut rng)),
-            pr: f3(r(&mut rng)),
-            up: f3(r(&mut rng)),
-            p: f3(r(&mut rng)),
+            pe: f3(r20(rng)),
+            pr: f3(r20(rng)),
+            up: f3(r20(rng)),
+            p: f3(r20(rng)),
         });
     }
+}
+
+/// Cameras: `n / 2` with the up vector nearly parallel to the view direction.
+fn near_parallel_cameras(rng: &mut InputRng, n: usize, out: &mut Vec<CameraCase>) {
     for i in 0..n / 2 {
         // Up vector (a, b, 0) and view direction (x, y, 0) with a·y − b·x = 1
         // (adding (a, b) to (x, y) keeps that, and makes |d| ≥ |up|):
@@ -402,7 +434,7 @@ pub fn inputs(n: usize) -> Inputs {
         } else {
             ([a, b, 0], [a + rng.int(3), b + rng.int(3), rng.int(3)])
         };
-        shuffle(&mut rng, &mut up, &mut d);
+        shuffle(rng, &mut up, &mut d);
         let pr = if farey {
             [-d[0] / 2, -d[1] / 2, -d[2] / 2]
         } else {
@@ -413,12 +445,12 @@ pub fn inputs(n: usize) -> Inputs {
         let p = match i % 3 {
             0 => [pr[0] - d[0] / 2, pr[1] - d[1] / 2, pr[2] - d[2] / 2],
             1 => [pr[0] + rng.int(2), pr[1] + rng.int(2), pr[2] + rng.int(2)],
-            _ => r(&mut rng),
+            _ => r20(rng),
         };
         if d == [0, 0, 0] {
             continue;
         }
-        out.cameras.push(CameraCase {
+        out.push(CameraCase {
             kind: Kind::NearParallel,
             pe: f3(pe),
             pr: f3(pr),
@@ -426,6 +458,10 @@ pub fn inputs(n: usize) -> Inputs {
             p: f3(p),
         });
     }
+}
+
+/// Cameras: `n / 2` with magnitudes from 1e-30 to 1e30.
+fn wide_cameras(rng: &mut InputRng, n: usize, out: &mut Vec<CameraCase>) {
     for i in 0..n / 2 {
         // Every other case mixes magnitudes from 1e-30 to 1e30 freely; the
         // others give each of Vup and the points (Pe, Pr, P share one) a
@@ -437,10 +473,10 @@ pub fn inputs(n: usize) -> Inputs {
         let case = if i % 2 == 0 {
             CameraCase {
                 kind: Kind::Wide,
-                pe: w(&mut rng),
-                pr: w(&mut rng),
-                up: w(&mut rng),
-                p: w(&mut rng),
+                pe: w(rng),
+                pr: w(rng),
+                up: w(rng),
+                p: w(rng),
             }
         } else {
             let ep = pow2(rng.range(-100, 90) as i32);
@@ -454,10 +490,12 @@ pub fn inputs(n: usize) -> Inputs {
                 p: s(ep),
             }
         };
-        out.cameras.push(case);
+        out.push(case);
     }
+}
 
-    // Projections.
+/// Projections: `n` random ones.
+fn random_projects(rng: &mut InputRng, n: usize, out: &mut Vec<ProjectCase>) {
     for _ in 0..n {
         let z = loop {
             let z = rng.int_bits(20);
@@ -478,13 +516,17 @@ pub fn inputs(n: usize) -> Inputs {
             None
         };
         let z = if general && z == a { z + 1 } else { z };
-        out.projects.push(ProjectCase {
+        out.push(ProjectCase {
             kind: Kind::Random,
             zvp,
             a: if general || a != 0 { a as f64 } else { 1.0 },
             p: [rng.int_bits(20) as f64, rng.int_bits(20) as f64, z as f64],
         });
     }
+}
+
+/// Projections: `n / 2` points one unit from the plane of the centre of projection.
+fn grazing_projects(rng: &mut InputRng, n: usize, out: &mut Vec<ProjectCase>) {
     for i in 0..n / 2 {
         // Points one unit from the plane of the centre of projection.
         let zprp = rng.int(M20 - 1);
@@ -495,26 +537,33 @@ pub fn inputs(n: usize) -> Inputs {
                 -rng.int_bits(20).abs() - 1
             };
         let z = zprp + if i % 2 == 0 { 1 } else { -1 };
-        out.projects.push(ProjectCase {
+        out.push(ProjectCase {
             kind: Kind::Grazing,
             zvp: Some(zvp as f64),
             a: zprp as f64,
             p: [rng.int(M20) as f64, rng.int(M20) as f64, z as f64],
         });
     }
+}
+
+/// Projections: `n / 2` with magnitudes from 1e-30 to 1e30.
+fn wide_projects(rng: &mut InputRng, n: usize, out: &mut Vec<ProjectCase>) {
     for _ in 0..n / 2 {
         let mut z = rng.wide();
         if z == 0.0 {
             z = 1.0;
         }
-        out.projects.push(ProjectCase {
+        out.push(ProjectCase {
             kind: Kind::Wide,
             zvp: None,
             a: rng.wide(),
             p: [rng.wide(), rng.wide(), z],
         });
     }
+}
 
+/// Windows: `2n` (random, grazing, wide).
+fn windows(rng: &mut InputRng, n: usize, out: &mut Vec<WindowCase>) {
     // Windows: standard angles keep the exact path exact.
     // fovy/2 a multiple of 15° or 22.5°.
     let angles = [30.0, 45.0, 60.0, 90.0, 120.0, 135.0, 150.0];
@@ -537,7 +586,7 @@ pub fn inputs(n: usize) -> Inputs {
             (rng.int(lim) as f64, rng.int(lim) as f64)
         };
         let pt = ((pt.0 as f32) as f64, (pt.1 as f32) as f64);
-        out.windows.push(WindowCase {
+        out.push(WindowCase {
             kind: if wide {
                 Kind::Wide
             } else if i >= n {
@@ -552,32 +601,30 @@ pub fn inputs(n: usize) -> Inputs {
             size: (rng.range(1, 4096) as f64, rng.range(1, 4096) as f64),
         });
     }
+}
 
-    // Clipping.
-    let bx = |rng: &mut InputRng| {
-        let a = r(rng);
-        let b = r(rng);
-        (
-            [a[0].min(b[0]), a[1].min(b[1]), a[2].min(b[2])],
-            [a[0].max(b[0]), a[1].max(b[1]), a[2].max(b[2])],
-        )
-    };
+/// Clipping: `n` random segments and boxes.
+fn random_clips(rng: &mut InputRng, n: usize, out: &mut Vec<ClipCase>) {
     for _ in 0..n {
-        let (min, max) = bx(&mut rng);
-        out.clips.push(ClipCase {
+        let (min, max) = bx(rng);
+        out.push(ClipCase {
             kind: Kind::Random,
             min: f3(min),
             max: f3(max),
-            p0: f3(r(&mut rng)),
-            p1: f3(r(&mut rng)),
+            p0: f3(r20(rng)),
+            p1: f3(r20(rng)),
         });
     }
+}
+
+/// Clipping: `n / 2` segments touching, lying in, or passing by a box plane.
+fn grazing_clips(rng: &mut InputRng, n: usize, out: &mut Vec<ClipCase>) {
     for i in 0..n / 2 {
         // Segments with an end on a box plane, lying in a plane, or passing
         // one unit from an edge.
-        let (min, max) = bx(&mut rng);
-        let mut p0 = r(&mut rng);
-        let mut p1 = r(&mut rng);
+        let (min, max) = bx(rng);
+        let mut p0 = r20(rng);
+        let mut p1 = r20(rng);
         let axis = rng.below(3) as usize;
         let plane = if rng.below(2) == 0 {
             min[axis]
@@ -595,7 +642,7 @@ pub fn inputs(n: usize) -> Inputs {
                 p1[axis] = plane - 1;
             }
         }
-        out.clips.push(ClipCase {
+        out.push(ClipCase {
             kind: Kind::Grazing,
             min: f3(min),
             max: f3(max),
@@ -603,20 +650,23 @@ pub fn inputs(n: usize) -> Inputs {
             p1: f3(p1),
         });
     }
+}
+
+/// Clipping: `n / 2` with magnitudes from 1e-30 to 1e30.
+fn wide_clips(rng: &mut InputRng, n: usize, out: &mut Vec<ClipCase>) {
     for _ in 0..n / 2 {
         let w = |rng: &mut InputRng| [rng.wide(), rng.wide(), rng.wide()];
-        let (a, b) = (w(&mut rng), w(&mut rng));
+        let (a, b) = (w(rng), w(rng));
         let min = [a[0].min(b[0]), a[1].min(b[1]), a[2].min(b[2])];
         let max = [a[0].max(b[0]), a[1].max(b[1]), a[2].max(b[2])];
-        out.clips.push(ClipCase {
+        out.push(ClipCase {
             kind: Kind::Wide,
             min,
             max,
-            p0: w(&mut rng),
-            p1: w(&mut rng),
+            p0: w(rng),
+            p1: w(rng),
         });
     }
-    out
 }
 
 fn v<T: Scalar>(a: &P3) -> V3<T> {
