@@ -672,12 +672,44 @@ pub fn transform_matrix(t: &TransformIn) -> Matrix4<f64> {
 }
 
 fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Object> {
-    let kind = o.kind;
-    let tname = format!("{kind:?}").to_lowercase();
+    let tname = format!("{:?}", o.kind).to_lowercase();
     let field = format!("object[{i}]");
     let f = |k: &str| format!("{field}.{k}");
-    // Fields that belong to each type.
-    let allowed: &[&str] = match kind {
+    check_fields(o, &tname, &f)?;
+    let mesh = object_mesh(o, &tname, &f, dir)?;
+    mesh.validate(&field)?;
+    let ntris: usize = mesh.faces.iter().map(|f| f.len() - 2).sum();
+    if ntris > MAX_TRIANGLES {
+        return Err(Error::new(
+            field,
+            format!("has {ntris} triangles; the renderer takes at most {MAX_TRIANGLES} per object"),
+        ));
+    }
+    let mut model = Matrix4::identity();
+    for t in &o.transform {
+        model = transform_matrix(t) * model;
+    }
+    let material = match &o.material {
+        Some(m) => material(m, base.clone()).map_err(|e| e.in_field(f("material")))?,
+        None => base.clone(),
+    };
+    Ok(Object {
+        name: format!("{field} ({tname})"),
+        model,
+        colors: object_colors(o, &f)?,
+        material,
+        shading: o.shading,
+        tris: mesh.triangles(),
+        closed: mesh.is_closed(),
+        vnormals: mesh.vertex_normals(),
+        bounds: mesh.bounds(),
+        mesh,
+    })
+}
+
+/// Refuses a field that the object's type does not have.
+fn check_fields(o: &ObjectIn, tname: &str, f: &dyn Fn(&str) -> String) -> Result<()> {
+    let allowed: &[&str] = match o.kind {
         ObjectType::Cone | ObjectType::Cylinder => &["n", "r", "h"],
         ObjectType::Sphere => &["n", "stacks", "r"],
         ObjectType::Box => &["size"],
@@ -697,34 +729,35 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
         ("height", o.height.is_some()),
         ("path", o.path.is_some()),
     ];
-    for (k, here) in present {
-        if here && !allowed.contains(&k) {
-            return Err(Error::new(
-                f(k),
-                format!(
-                    "a {tname} has no `{k}` (its fields: {})",
-                    allowed.join(", ")
-                ),
-            ));
-        }
+    match present
+        .iter()
+        .find(|(k, here)| *here && !allowed.contains(k))
+    {
+        Some((k, _)) => Err(Error::new(
+            f(k),
+            format!(
+                "a {tname} has no `{k}` (its fields: {})",
+                allowed.join(", ")
+            ),
+        )),
+        None => Ok(()),
     }
+}
+
+/// The object's mesh, built from its type's fields.
+fn object_mesh(o: &ObjectIn, tname: &str, f: &dyn Fn(&str) -> String, dir: &Path) -> Result<Mesh> {
     let need = |v: Option<f64>, k: &str| {
         v.ok_or_else(|| Error::new(f(k), format!("a {tname} needs `{k}`")))
     };
-    let mesh = match kind {
-        ObjectType::Cone => mesh::cone(
-            need(o.n.map(|c| c.0 as f64), "n")? as u32,
-            need(o.r.map(|c| c.0), "r")?,
-            need(o.h.map(|c| c.0), "h")?,
-        ),
-        ObjectType::Cylinder => mesh::cylinder(
-            need(o.n.map(|c| c.0 as f64), "n")? as u32,
-            need(o.r.map(|c| c.0), "r")?,
-            need(o.h.map(|c| c.0), "h")?,
-        ),
+    let n = || need(o.n.map(|c| c.0 as f64), "n").map(|n| n as u32);
+    let r = || need(o.r.map(|c| c.0), "r");
+    let h = || need(o.h.map(|c| c.0), "h");
+    Ok(match o.kind {
+        ObjectType::Cone => mesh::cone(n()?, r()?, h()?),
+        ObjectType::Cylinder => mesh::cylinder(n()?, r()?, h()?),
         ObjectType::Sphere => {
-            let n = need(o.n.map(|c| c.0 as f64), "n")? as u32;
-            mesh::sphere(n, o.stacks.map_or(n, |c| c.0), need(o.r.map(|c| c.0), "r")?)
+            let n = n()?;
+            mesh::sphere(n, o.stacks.map_or(n, |c| c.0), r()?)
         }
         ObjectType::Box => {
             let s = o
@@ -732,33 +765,7 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
                 .ok_or_else(|| Error::new(f("size"), "a box needs `size = [w, h, d]`"))?;
             mesh::cuboid(s[0].0, s[1].0, s[2].0)
         }
-        ObjectType::Plane => {
-            let nx =
-                o.nx.ok_or_else(|| Error::new(f("nx"), "a plane needs `nx`"))?
-                    .0;
-            let nz =
-                o.nz.ok_or_else(|| Error::new(f("nz"), "a plane needs `nz`"))?
-                    .0;
-            let dx = need(o.dx.map(|c| c.0), "dx")?;
-            let dz = need(o.dz.map(|c| c.0), "dz")?;
-            let h = match &o.height {
-                Some(s) => Some(
-                    Height::parse(s.get_ref())
-                        .map_err(|m| Error::new(f("height"), format!("`{}`: {m}", s.get_ref())))?,
-                ),
-                None => None,
-            };
-            let m = mesh::plane(nx, nz, dx, dz, |x, z| {
-                h.as_ref().map_or(0.0, |h| h.eval(x, z))
-            });
-            if m.positions.iter().flatten().any(|v| !v.is_finite()) {
-                return Err(Error::new(
-                    f("height"),
-                    "the formula gives a value that is not a finite number",
-                ));
-            }
-            m
-        }
+        ObjectType::Plane => plane_mesh(o, f)?,
         ObjectType::Obj => {
             let p = o
                 .path
@@ -767,19 +774,44 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
             let full: PathBuf = dir.join(p.get_ref());
             mesh::load_obj(&full, &f("path"))?
         }
+    })
+}
+
+/// A plane's grid, lifted by its height formula (which must stay finite).
+fn plane_mesh(o: &ObjectIn, f: &dyn Fn(&str) -> String) -> Result<Mesh> {
+    let nx =
+        o.nx.ok_or_else(|| Error::new(f("nx"), "a plane needs `nx`"))?
+            .0;
+    let nz =
+        o.nz.ok_or_else(|| Error::new(f("nz"), "a plane needs `nz`"))?
+            .0;
+    let need = |v: Option<Pos>, k: &str| {
+        v.map(|c| c.0)
+            .ok_or_else(|| Error::new(f(k), format!("a plane needs `{k}`")))
     };
-    mesh.validate(&field)?;
-    let ntris: usize = mesh.faces.iter().map(|f| f.len() - 2).sum();
-    if ntris > MAX_TRIANGLES {
+    let (dx, dz) = (need(o.dx, "dx")?, need(o.dz, "dz")?);
+    let h = match &o.height {
+        Some(s) => Some(
+            Height::parse(s.get_ref())
+                .map_err(|m| Error::new(f("height"), format!("`{}`: {m}", s.get_ref())))?,
+        ),
+        None => None,
+    };
+    let m = mesh::plane(nx, nz, dx, dz, |x, z| {
+        h.as_ref().map_or(0.0, |h| h.eval(x, z))
+    });
+    if m.positions.iter().flatten().any(|v| !v.is_finite()) {
         return Err(Error::new(
-            field,
-            format!("has {ntris} triangles; the renderer takes at most {MAX_TRIANGLES} per object"),
+            f("height"),
+            "the formula gives a value that is not a finite number",
         ));
     }
-    let mut model = Matrix4::identity();
-    for t in &o.transform {
-        model = transform_matrix(t) * model;
-    }
+    Ok(m)
+}
+
+/// The object's colours: one of `color`, `face_colors`, `vertex_colors`
+/// (white when none is given).
+fn object_colors(o: &ObjectIn, f: &dyn Fn(&str) -> String) -> Result<Colors> {
     let given = [
         o.color.is_some(),
         o.face_colors.is_some(),
@@ -791,36 +823,21 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
             "give only one of color, face_colors, vertex_colors",
         ));
     }
-    let colors = if let Some(c) = o.color {
+    let list = |v: &Vec<Rgb>, k: &str| {
+        if v.is_empty() {
+            Err(Error::new(f(k), "needs at least one colour"))
+        } else {
+            Ok(v.iter().map(|c| c.0).collect())
+        }
+    };
+    Ok(if let Some(c) = o.color {
         Colors::One(c.0)
     } else if let Some(v) = &o.face_colors {
-        if v.is_empty() {
-            return Err(Error::new(f("face_colors"), "needs at least one colour"));
-        }
-        Colors::Faces(v.iter().map(|c| c.0).collect())
+        Colors::Faces(list(v, "face_colors")?)
     } else if let Some(v) = &o.vertex_colors {
-        if v.is_empty() {
-            return Err(Error::new(f("vertex_colors"), "needs at least one colour"));
-        }
-        Colors::Vertices(v.iter().map(|c| c.0).collect())
+        Colors::Vertices(list(v, "vertex_colors")?)
     } else {
         Colors::One([1.0, 1.0, 1.0])
-    };
-    let material = match &o.material {
-        Some(m) => material(m, base.clone()).map_err(|e| e.in_field(f("material")))?,
-        None => base.clone(),
-    };
-    Ok(Object {
-        name: format!("{field} ({tname})"),
-        model,
-        colors,
-        material,
-        shading: o.shading,
-        tris: mesh.triangles(),
-        closed: mesh.is_closed(),
-        vnormals: mesh.vertex_normals(),
-        bounds: mesh.bounds(),
-        mesh,
     })
 }
 
