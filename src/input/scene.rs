@@ -259,7 +259,11 @@ pub struct ObjectIn {
 #[serde(deny_unknown_fields)]
 pub struct SceneIn {
     title: Option<String>,
+    /// Where the scene comes from: for people reading the file; not drawn.
+    #[allow(dead_code)]
     source: Option<String>,
+    /// What the scene shows: for people reading the file; not drawn.
+    #[allow(dead_code)]
     statement: Option<String>,
     shading: Option<Shading>,
     normals: Option<Normals>,
@@ -379,6 +383,7 @@ impl Scene {
             let (l, c) = line_col(text, span.start);
             format!("{origin}:{l}:{c}")
         };
+        // The place of a table, for errors found after reading.
         let find = |key: &str| {
             let off = text
                 .find(&format!("[{key}]"))
@@ -386,73 +391,23 @@ impl Scene {
                 .unwrap_or(0);
             at(off..off)
         };
-        let _ = (&s.source, &s.statement);
-        let img = s.image.clone();
-        let persp = s.perspective.clone();
-        let viewport = match persp.as_ref().and_then(|p| p.viewport.clone()) {
-            Some([w, h]) => Some((
-                eval_u32(&w, "perspective.viewport")?,
-                eval_u32(&h, "perspective.viewport")?,
-            )),
-            None => None,
+        let placed = |key: &str| {
+            let here = find(key);
+            move |e: Error| Error::new(e.field, format!("{here}: {}", e.message))
         };
-        let width = img
-            .as_ref()
-            .and_then(|i| i.width)
-            .or(viewport.map(|v| v.0))
-            .unwrap_or(640);
-        let height = img
-            .as_ref()
-            .and_then(|i| i.height)
-            .or(viewport.map(|v| v.1))
-            .unwrap_or(480);
-        check_size(width, height)
-            .map_err(|e| Error::new(e.field, format!("{}: {}", find("image"), e.message)))?;
-        let background = img
-            .and_then(|i| i.background)
-            .map(|c| c.0)
-            .unwrap_or([0.0; 3]);
-
-        let view = match (&s.tilt, &s.camera) {
-            (Some(_), Some(_)) => {
-                return Err(Error::new(
-                    "tilt",
-                    format!("{}: give either [tilt] or [camera], not both", find("tilt")),
-                ))
-            }
-            (None, None) => View::Tilt { x: 0.0, y: 0.0 },
-            (Some(t), None) => View::Tilt {
-                x: t.x.map_or(0.0, |v| v.0),
-                y: t.y.map_or(0.0, |v| v.0),
-            },
-            (None, Some(c)) => {
-                let p = persp.ok_or_else(|| {
-                    Error::new(
-                        "perspective",
-                        format!(
-                            "{}: a [camera] needs a [perspective] with fovy, near and far",
-                            find("camera")
-                        ),
-                    )
-                })?;
-                camera_view(c, &p).map_err(|e| {
-                    Error::new(e.field, format!("{}: {}", find("perspective"), e.message))
-                })?
-            }
-        };
-
+        let (width, height, background) = image(&s).map_err(placed("image"))?;
+        let view = view(&s, &find)?;
         let base = match &s.material {
             Some(m) => material(m, Material::text_default([1.0, 1.0, 1.0]))?,
             None => Material::text_default([1.0, 1.0, 1.0]),
         };
         let mut lights = Vec::new();
         for (i, l) in s.light.iter().enumerate() {
-            lights.push(light(l).map_err(|e| {
-                Error::new(
-                    format!("light[{i}].{}", e.field),
-                    format!("{}: {}", find("[[light]]"), e.message),
-                )
-            })?);
+            let e = |e: Error| {
+                let field = format!("light[{i}].{}", e.field);
+                e.in_field(field)
+            };
+            lights.push(light(l).map_err(placed("[[light]]")).map_err(e)?);
         }
         if s.light.is_empty() {
             lights.push(Light::text_default());
@@ -475,6 +430,59 @@ impl Scene {
             lights,
             objects,
         })
+    }
+}
+
+/// The image's width, height (from `[image]`, else the viewport, else
+/// 640×480) and background colour.
+fn image(s: &SceneIn) -> Result<(u32, u32, [f32; 3])> {
+    let viewport = match s.perspective.as_ref().and_then(|p| p.viewport.clone()) {
+        Some([w, h]) => Some((
+            eval_u32(&w, "perspective.viewport")?,
+            eval_u32(&h, "perspective.viewport")?,
+        )),
+        None => None,
+    };
+    let img = s.image.as_ref();
+    let width = img
+        .and_then(|i| i.width)
+        .or(viewport.map(|v| v.0))
+        .unwrap_or(640);
+    let height = img
+        .and_then(|i| i.height)
+        .or(viewport.map(|v| v.1))
+        .unwrap_or(480);
+    check_size(width, height)?;
+    let background = img.and_then(|i| i.background).map_or([0.0; 3], |c| c.0);
+    Ok((width, height, background))
+}
+
+/// How the scene is seen: `[tilt]` (the text's rotations) or a `[camera]`
+/// with its `[perspective]`; `find` gives a table's place for errors.
+fn view(s: &SceneIn, find: &dyn Fn(&str) -> String) -> Result<View> {
+    match (&s.tilt, &s.camera) {
+        (Some(_), Some(_)) => Err(Error::new(
+            "tilt",
+            format!("{}: give either [tilt] or [camera], not both", find("tilt")),
+        )),
+        (None, None) => Ok(View::Tilt { x: 0.0, y: 0.0 }),
+        (Some(t), None) => Ok(View::Tilt {
+            x: t.x.map_or(0.0, |v| v.0),
+            y: t.y.map_or(0.0, |v| v.0),
+        }),
+        (None, Some(c)) => {
+            let p = s.perspective.as_ref().ok_or_else(|| {
+                Error::new(
+                    "perspective",
+                    format!(
+                        "{}: a [camera] needs a [perspective] with fovy, near and far",
+                        find("camera")
+                    ),
+                )
+            })?;
+            camera_view(c, p)
+                .map_err(|e| Error::new(e.field, format!("{}: {}", find("perspective"), e.message)))
+        }
     }
 }
 
