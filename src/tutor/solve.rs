@@ -73,222 +73,19 @@ pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> 
         .iter()
         .map(|(n, v)| Ok((n.clone(), eval3(&format!("points.{n}"), v)?)))
         .collect::<Result<_>>()?;
-
-    // Which parts run: those asked for, and what they need.
-    let per = p.perspective.as_ref();
-    let want_project = p.asks("project") || p.asks("viewport");
-    let want_view = p.asks("view") || want_project;
-    let want_window = p.asks("window") || p.asks("viewport");
-
-    // Steps 1 and 2: modeling and viewing transformation
-    let mut eye_pts: Vec<(String, V3<T>)> = Vec::new();
-    if let (true, Some(c)) = (want_view, &p.camera) {
-        let cam = Camera {
-            pe: eval3("camera.eye", &c.eye)?,
-            pr: eval3("camera.look", &c.look)?,
-            vup: eval3("camera.up", &c.up)?,
-        };
-        rec.section("Step 1: modeling transformation");
-        rec.step(|| {
-            Step::new("Nothing to do", "")
-                .note("the objects are already given in world coordinates")
-        });
-        rec.section("Step 2: viewing transformation (world → eye coordinates)");
-        let mut b = camera::basis(&cam, &mut rec).map_err(camera_field)?;
-        (hooks.basis)(&mut b);
-        let m = camera::view_matrix(&b, &cam.pe, &mut rec).map_err(camera_field)?;
-        for (n, q) in &points {
-            eye_pts.push((n.clone(), camera::to_eye(&b, &cam.pe, n, q, &mut rec)?));
-        }
-        if p.asks("view") {
-            let mut r = basis_result(&b);
-            r.push(("matrix".into(), Val::mat4(&m)));
-            r.push((
-                "points".into(),
-                Val::Map(
-                    eye_pts
-                        .iter()
-                        .map(|(n, e)| (n.clone(), Val::vec3(e)))
-                        .collect(),
-                ),
-            ));
-            result.push(("view".into(), Val::Map(r)));
-        }
-    } else if want_view && !points.is_empty() && p.ask.is_some() {
-        return Err(Error::new(
-            "camera",
-            "the problem asks for the view but has no [camera] table",
-        ));
-    }
-
-    // Step 3: projection onto the near plane (d = −near unless given)
-    let near: Option<T> = per
+    let eye_pts = view_part(p, hooks, &points, &mut rec, &mut result)?;
+    let near: Option<T> = p
+        .perspective
+        .as_ref()
         .and_then(|x| x.near.as_ref())
         .map(|n| eval("perspective.near", n))
         .transpose()?;
-    let mut projected: Vec<(String, V3<T>)> = Vec::new();
-    if want_project && !eye_pts.is_empty() {
-        let d: T = match (per.and_then(|x| x.d.as_ref()), &near) {
-            (Some(d), _) => eval("perspective.d", d)?,
-            (None, Some(n)) => -n.clone(),
-            (None, None) => {
-                return Err(Error::new(
-                    "perspective.near",
-                    "projection needs perspective.near (or perspective.d)",
-                ))
-            }
-        };
-        rec.section("Step 3: projection onto the near plane");
-        rec.step(|| {
-            Step::new(
-                "Projection plane",
-                "z = d,  d = −near (the camera looks along −z in eye coordinates)",
-            )
-            .res("d", Val::num(&d))
-        });
-        let proj = Projection::Plane { d };
-        proj.validate().map_err(|e| e.in_field("perspective.d"))?;
-        for (n, e) in &eye_pts {
-            projected.push((n.clone(), projection::project(&proj, n, e, &mut rec)?));
-        }
-        if p.asks("project") {
-            result.push((
-                "project".into(),
-                Val::Map(vec![(
-                    "points".into(),
-                    Val::Map(
-                        projected
-                            .iter()
-                            .map(|(n, q)| (n.clone(), Val::vec3(q)))
-                            .collect(),
-                    ),
-                )]),
-            ));
-        }
-    }
-
-    // Step 4: the window on the near plane, and which points it contains
-    let mut win = None;
-    if let (true, Some(per)) = (want_window, per) {
-        if let (Some(fovy), Some(aspect), Some(near)) = (&per.fovy, &per.aspect, &near) {
-            let fovy: T = fovy
-                .0
-                .degrees()
-                .map_err(|m| Error::new("perspective.fovy", m))?;
-            let aspect: T = eval("perspective.aspect", aspect)?;
-            rec.section("Step 4: window and clipping");
-            let mut w = window::window(&fovy, &aspect, near, "near", &mut rec)
-                .map_err(perspective_field)?;
-            (hooks.window)(&mut w, &fovy);
-            let mut r = window_result(&w, "");
-            let far: Option<T> = per
-                .far
-                .as_ref()
-                .map(|f| eval("perspective.far", f))
-                .transpose()?;
-            if let Some(f) = &far {
-                if *f <= *near {
-                    return Err(Error::new(
-                        "perspective.far",
-                        format!("must be greater than near = {}", near.to_f64()),
-                    ));
-                }
-                let fw = window::window(&fovy, &aspect, f, "far", &mut rec)
-                    .map_err(perspective_field)?;
-                r.extend(
-                    window_result(&fw, "far_")
-                        .into_iter()
-                        .filter(|(k, _)| !k.ends_with("height") && !k.ends_with("width")),
-                );
-            }
-            for ((n, q), (_, e)) in projected.iter().zip(&eye_pts) {
-                point_inside_step(&mut rec, n, q, e, &w, near, far.as_ref());
-            }
-            if p.asks("window") {
-                result.push(("window".into(), Val::Map(r)));
-            }
-            win = Some(w);
-        } else if p
-            .ask
-            .as_ref()
-            .is_some_and(|a| a.iter().any(|x| x == "window" || x == "viewport"))
-        {
-            return Err(Error::new(
-                "perspective",
-                "the window needs perspective.fovy, perspective.aspect and perspective.near",
-            ));
-        }
-    }
-
-    // The viewport mapping
-    if let (true, Some(w), Some(vp)) = (
-        p.asks("viewport"),
-        &win,
-        per.and_then(|x| x.viewport.as_ref()),
-    ) {
-        let (vw, vh): (T, T) = (
-            eval("perspective.viewport", &vp[0])?,
-            eval("perspective.viewport", &vp[1])?,
-        );
-        window::validate_viewport(&vw, &vh).map_err(|e| e.in_field("perspective.viewport"))?;
-        rec.section("Viewport mapping (window → pixels)");
-        let px: Vec<(String, Val)> = projected
-            .iter()
-            .map(|(n, q)| {
-                let (a, b) = window::to_viewport(w, (&vw, &vh), n, (&q[0], &q[1]), &mut rec);
-                (n.clone(), Val::vec2(&a, &b))
-            })
-            .collect();
-        result.push((
-            "viewport".into(),
-            Val::Map(vec![("pixels".into(), Val::Map(px))]),
-        ));
-    }
-
-    // Clipping of segments against a box
-    if let (true, Some(c)) = (p.asks("clip"), &p.clip) {
-        let b = ClipBox {
-            min: eval3("clip.min", &c.min)?,
-            max: eval3("clip.max", &c.max)?,
-        };
-        b.validate().map_err(|e| e.in_field("clip.min"))?;
-        let mut all = Vec::new();
-        for (i, s) in c.segment.iter().enumerate() {
-            let f = format!("clip.segment[{i}]");
-            let p0: V3<T> = point_ref(&format!("{f}.from"), &s.from, &points)?;
-            let p1: V3<T> = point_ref(&format!("{f}.to"), &s.to, &points)?;
-            rec.section(if c.segment.len() == 1 {
-                "Line clipping".to_string()
-            } else {
-                format!("Line clipping, segment {}", i + 1)
-            });
-            all.push(Val::Map(clip_run(&b, &p0, &p1, &mut rec)));
-        }
-        match all.len() {
-            0 => {}
-            1 => result.push(("clip".into(), all.remove(0))),
-            _ => result.push(("clip".into(), Val::List(all))),
-        }
-    }
-
-    // Lighting
-    if let (true, Some(sh)) = (p.asks("shade"), &p.shade) {
-        rec.section("Lighting");
-        let file = crate::input::lights::LightsFileIn {
-            global_ambient: p.global_ambient.clone(),
-            material: None,
-            light: p.light.clone(),
-        };
-        let setup = crate::input::lights::build::<T>(sh, &file, "shade.", "light", &mut rec)?;
-        let r = crate::input::lights::run_with(&setup, &hooks.shade, &mut rec);
-        result.push(("shade".into(), Val::Map(r)));
-    } else if !p.light.is_empty() && p.shade.is_none() {
-        return Err(Error::new(
-            "shade",
-            "[[light]] tables need a [shade] table (normal, color, ...)",
-        ));
-    }
-
+    let projected = project_part(p, &eye_pts, near.as_ref(), &mut rec, &mut result)?;
+    let eyes = (&eye_pts[..], &projected[..]);
+    let win = window_part(p, hooks, eyes, near.as_ref(), &mut rec, &mut result)?;
+    viewport_part(p, win.as_ref(), &projected, &mut rec, &mut result)?;
+    clip_part(p, &points, &mut rec, &mut result)?;
+    shade_part(p, hooks, &mut rec, &mut result)?;
     if result.is_empty() {
         return Err(Error::new("ask", "nothing to solve: the file has no part that its data allow (camera + points, perspective, clip, shade)"));
     }
@@ -304,6 +101,258 @@ pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> 
     report.comparison = comparison;
     report.source_notes = p.source_notes.clone();
     Ok(report)
+}
+
+/// A named point.
+type Named<T> = (String, V3<T>);
+
+/// Named points as a result map.
+fn points_val<T: Scalar>(pts: &[(String, V3<T>)]) -> Val {
+    Val::Map(pts.iter().map(|(n, e)| (n.clone(), Val::vec3(e))).collect())
+}
+
+/// Steps 1 and 2, modeling and viewing transformation: the basis, the view
+/// matrix and the eye coordinates of the points (empty when not needed).
+fn view_part<T: Scalar>(
+    p: &ProblemIn,
+    hooks: &Hooks<T>,
+    points: &[(String, V3<T>)],
+    rec: &mut Recorder,
+    result: &mut Vec<(String, Val)>,
+) -> Result<Vec<(String, V3<T>)>> {
+    let want_view = p.asks("view") || p.asks("project") || p.asks("viewport");
+    let c = match (want_view, &p.camera) {
+        (true, Some(c)) => c,
+        (true, None) if !points.is_empty() && p.ask.is_some() => {
+            return Err(Error::new(
+                "camera",
+                "the problem asks for the view but has no [camera] table",
+            ))
+        }
+        _ => return Ok(vec![]),
+    };
+    let cam = Camera {
+        pe: eval3("camera.eye", &c.eye)?,
+        pr: eval3("camera.look", &c.look)?,
+        vup: eval3("camera.up", &c.up)?,
+    };
+    rec.section("Step 1: modeling transformation");
+    rec.step(|| {
+        Step::new("Nothing to do", "").note("the objects are already given in world coordinates")
+    });
+    rec.section("Step 2: viewing transformation (world → eye coordinates)");
+    let mut b = camera::basis(&cam, rec).map_err(camera_field)?;
+    (hooks.basis)(&mut b);
+    let m = camera::view_matrix(&b, &cam.pe, rec).map_err(camera_field)?;
+    let mut eye_pts = Vec::new();
+    for (n, q) in points {
+        eye_pts.push((n.clone(), camera::to_eye(&b, &cam.pe, n, q, rec)?));
+    }
+    if p.asks("view") {
+        let mut r = basis_result(&b);
+        r.push(("matrix".into(), Val::mat4(&m)));
+        r.push(("points".into(), points_val(&eye_pts)));
+        result.push(("view".into(), Val::Map(r)));
+    }
+    Ok(eye_pts)
+}
+
+/// Step 3, projection onto the near plane (d = −near unless given): the
+/// projected points (empty when not needed).
+fn project_part<T: Scalar>(
+    p: &ProblemIn,
+    eye_pts: &[(String, V3<T>)],
+    near: Option<&T>,
+    rec: &mut Recorder,
+    result: &mut Vec<(String, Val)>,
+) -> Result<Vec<(String, V3<T>)>> {
+    if !(p.asks("project") || p.asks("viewport")) || eye_pts.is_empty() {
+        return Ok(vec![]);
+    }
+    let d: T = match (p.perspective.as_ref().and_then(|x| x.d.as_ref()), near) {
+        (Some(d), _) => eval("perspective.d", d)?,
+        (None, Some(n)) => -n.clone(),
+        (None, None) => {
+            return Err(Error::new(
+                "perspective.near",
+                "projection needs perspective.near (or perspective.d)",
+            ))
+        }
+    };
+    rec.section("Step 3: projection onto the near plane");
+    rec.step(|| {
+        Step::new(
+            "Projection plane",
+            "z = d,  d = −near (the camera looks along −z in eye coordinates)",
+        )
+        .res("d", Val::num(&d))
+    });
+    let proj = Projection::Plane { d };
+    proj.validate().map_err(|e| e.in_field("perspective.d"))?;
+    let mut projected = Vec::new();
+    for (n, e) in eye_pts {
+        projected.push((n.clone(), projection::project(&proj, n, e, rec)?));
+    }
+    if p.asks("project") {
+        let r = vec![("points".into(), points_val(&projected))];
+        result.push(("project".into(), Val::Map(r)));
+    }
+    Ok(projected)
+}
+
+/// Step 4, the window on the near plane (and the far one), and which
+/// projected points it contains; `eyes` = (eye points, projected points).
+fn window_part<T: Scalar>(
+    p: &ProblemIn,
+    hooks: &Hooks<T>,
+    eyes: (&[Named<T>], &[Named<T>]),
+    near: Option<&T>,
+    rec: &mut Recorder,
+    result: &mut Vec<(String, Val)>,
+) -> Result<Option<window::Window<T>>> {
+    let per = match &p.perspective {
+        Some(per) if p.asks("window") || p.asks("viewport") => per,
+        _ => return Ok(None),
+    };
+    let (Some(fovy), Some(aspect), Some(near)) = (&per.fovy, &per.aspect, near) else {
+        return match &p.ask {
+            Some(a) if a.iter().any(|x| x == "window" || x == "viewport") => Err(Error::new(
+                "perspective",
+                "the window needs perspective.fovy, perspective.aspect and perspective.near",
+            )),
+            _ => Ok(None),
+        };
+    };
+    let fovy: T = fovy
+        .0
+        .degrees()
+        .map_err(|m| Error::new("perspective.fovy", m))?;
+    let aspect: T = eval("perspective.aspect", aspect)?;
+    rec.section("Step 4: window and clipping");
+    let mut w = window::window(&fovy, &aspect, near, "near", rec).map_err(perspective_field)?;
+    (hooks.window)(&mut w, &fovy);
+    let mut r = window_result(&w, "");
+    let far: Option<T> = per
+        .far
+        .as_ref()
+        .map(|f| eval("perspective.far", f))
+        .transpose()?;
+    if let Some(f) = &far {
+        if *f <= *near {
+            return Err(Error::new(
+                "perspective.far",
+                format!("must be greater than near = {}", near.to_f64()),
+            ));
+        }
+        let fw = window::window(&fovy, &aspect, f, "far", rec).map_err(perspective_field)?;
+        r.extend(
+            window_result(&fw, "far_")
+                .into_iter()
+                .filter(|(k, _)| !k.ends_with("height") && !k.ends_with("width")),
+        );
+    }
+    for ((n, q), (_, e)) in eyes.1.iter().zip(eyes.0) {
+        point_inside_step(rec, n, q, e, &w, near, far.as_ref());
+    }
+    if p.asks("window") {
+        result.push(("window".into(), Val::Map(r)));
+    }
+    Ok(Some(w))
+}
+
+/// The viewport mapping of the projected points (window → pixels).
+fn viewport_part<T: Scalar>(
+    p: &ProblemIn,
+    win: Option<&window::Window<T>>,
+    projected: &[(String, V3<T>)],
+    rec: &mut Recorder,
+    result: &mut Vec<(String, Val)>,
+) -> Result<()> {
+    let vp = p.perspective.as_ref().and_then(|x| x.viewport.as_ref());
+    let (true, Some(w), Some(vp)) = (p.asks("viewport"), win, vp) else {
+        return Ok(());
+    };
+    let (vw, vh): (T, T) = (
+        eval("perspective.viewport", &vp[0])?,
+        eval("perspective.viewport", &vp[1])?,
+    );
+    window::validate_viewport(&vw, &vh).map_err(|e| e.in_field("perspective.viewport"))?;
+    rec.section("Viewport mapping (window → pixels)");
+    let px: Vec<(String, Val)> = projected
+        .iter()
+        .map(|(n, q)| {
+            let (a, b) = window::to_viewport(w, (&vw, &vh), n, (&q[0], &q[1]), rec);
+            (n.clone(), Val::vec2(&a, &b))
+        })
+        .collect();
+    result.push((
+        "viewport".into(),
+        Val::Map(vec![("pixels".into(), Val::Map(px))]),
+    ));
+    Ok(())
+}
+
+/// Clipping of the segments against the box.
+fn clip_part<T: Scalar>(
+    p: &ProblemIn,
+    points: &[(String, V3<T>)],
+    rec: &mut Recorder,
+    result: &mut Vec<(String, Val)>,
+) -> Result<()> {
+    let (true, Some(c)) = (p.asks("clip"), &p.clip) else {
+        return Ok(());
+    };
+    let b = ClipBox {
+        min: eval3("clip.min", &c.min)?,
+        max: eval3("clip.max", &c.max)?,
+    };
+    b.validate().map_err(|e| e.in_field("clip.min"))?;
+    let mut all = Vec::new();
+    for (i, s) in c.segment.iter().enumerate() {
+        let f = format!("clip.segment[{i}]");
+        let p0: V3<T> = point_ref(&format!("{f}.from"), &s.from, points)?;
+        let p1: V3<T> = point_ref(&format!("{f}.to"), &s.to, points)?;
+        rec.section(if c.segment.len() == 1 {
+            "Line clipping".to_string()
+        } else {
+            format!("Line clipping, segment {}", i + 1)
+        });
+        all.push(Val::Map(clip_run(&b, &p0, &p1, rec)));
+    }
+    match all.len() {
+        0 => {}
+        1 => result.push(("clip".into(), all.remove(0))),
+        _ => result.push(("clip".into(), Val::List(all))),
+    }
+    Ok(())
+}
+
+/// Lighting at the `[shade]` point.
+fn shade_part<T: Scalar>(
+    p: &ProblemIn,
+    hooks: &Hooks<T>,
+    rec: &mut Recorder,
+    result: &mut Vec<(String, Val)>,
+) -> Result<()> {
+    match (p.asks("shade"), &p.shade) {
+        (true, Some(sh)) => {
+            rec.section("Lighting");
+            let file = crate::input::lights::LightsFileIn {
+                global_ambient: p.global_ambient.clone(),
+                material: None,
+                light: p.light.clone(),
+            };
+            let setup = crate::input::lights::build::<T>(sh, &file, "shade.", "light", rec)?;
+            let r = crate::input::lights::run_with(&setup, &hooks.shade, rec);
+            result.push(("shade".into(), Val::Map(r)));
+            Ok(())
+        }
+        _ if !p.light.is_empty() && p.shade.is_none() => Err(Error::new(
+            "shade",
+            "[[light]] tables need a [shade] table (normal, color, ...)",
+        )),
+        _ => Ok(()),
+    }
 }
 
 /// The problem's inputs as JSON numbers (f64 values of the written numbers;
