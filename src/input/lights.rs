@@ -204,6 +204,32 @@ pub fn build<T: Scalar>(
     tr: &mut impl Trace,
 ) -> Result<Setup<T>> {
     let f = |k: &str| format!("{prefix}{k}");
+    let material = material(sh, file, prefix)?;
+    let surface = surface(sh, &f, tr)?;
+    let lights = lights(sh, file, &f, lights_prefix, &surface.position, tr)?;
+    if file.global_ambient.is_some() && sh.global_ambient.is_some() {
+        return Err(Error::new(
+            f("global_ambient"),
+            "give the global ambient once, not both in the lights file and here",
+        ));
+    }
+    let ga = match file.global_ambient.as_ref().or(sh.global_ambient.as_ref()) {
+        Some(g) => rgb(&f("global_ambient"), g)?,
+        None => gray(T::zero()),
+    };
+    Ok(Setup {
+        material,
+        lights,
+        global_ambient: ga,
+        surface,
+        text_light: sh.light.is_some(),
+    })
+}
+
+/// The material: the surface colour Cs, the text's constants or a
+/// Direct3D material (ka = kd = ks = 1), then the coefficients given.
+fn material<T: Scalar>(sh: &ShadeIn, file: &LightsFileIn, prefix: &str) -> Result<Material<T>> {
+    let f = |k: &str| format!("{prefix}{k}");
     let d3d = file.material.as_ref().or(sh.material.as_ref());
     if file.material.is_some() && sh.material.is_some() {
         return Err(Error::new(
@@ -211,8 +237,6 @@ pub fn build<T: Scalar>(
             "give the material once, not both in the lights file and here",
         ));
     }
-
-    // The material
     let color = match (&sh.color, d3d.and_then(|m| m.diffuse.as_ref())) {
         (Some(c), None) => rgb(&f("color"), c)?,
         (None, Some(c)) => rgb(&f("material.diffuse"), c)?,
@@ -232,25 +256,7 @@ pub fn build<T: Scalar>(
     let mut mat = Material::text_default(color);
     mat.model = sh.model.unwrap_or_default();
     if let Some(m) = d3d {
-        mat.ka = T::one();
-        mat.kd = T::one();
-        mat.ks = T::one();
-        mat.ambient_color = m
-            .ambient
-            .as_ref()
-            .map(|c| rgb(&f("material.ambient"), c))
-            .transpose()?;
-        mat.specular = opt_rgb(&f("material.specular"), &m.specular, gray(T::one()))?;
-        mat.emissive = opt_rgb(&f("material.emissive"), &m.emissive, gray(T::zero()))?;
-        if let Some(p) = &m.power {
-            if sh.shininess.is_some() {
-                return Err(Error::new(
-                    f("shininess"),
-                    "give the exponent once: shininess or material.power",
-                ));
-            }
-            mat.shininess = ev(&f("material.power"), p)?;
-        }
+        direct3d_material(&mut mat, m, sh.shininess.is_some(), &f)?;
     }
     for (k, slot) in [
         ("ka", &sh.ka),
@@ -271,8 +277,45 @@ pub fn build<T: Scalar>(
     mat.specular_on = sh.specular.unwrap_or(true);
     mat.specular_requires_lit = sh.specular_requires_lit.unwrap_or(false);
     mat.validate(prefix)?;
+    Ok(mat)
+}
 
-    // The point: N, V or the local viewer, the position
+/// A Direct3D material's colours and power (ka = kd = ks = 1).
+fn direct3d_material<T: Scalar>(
+    mat: &mut Material<T>,
+    m: &MaterialIn,
+    shininess_given: bool,
+    f: &dyn Fn(&str) -> String,
+) -> Result<()> {
+    mat.ka = T::one();
+    mat.kd = T::one();
+    mat.ks = T::one();
+    mat.ambient_color = m
+        .ambient
+        .as_ref()
+        .map(|c| rgb(&f("material.ambient"), c))
+        .transpose()?;
+    mat.specular = opt_rgb(&f("material.specular"), &m.specular, gray(T::one()))?;
+    mat.emissive = opt_rgb(&f("material.emissive"), &m.emissive, gray(T::zero()))?;
+    if let Some(p) = &m.power {
+        if shininess_given {
+            return Err(Error::new(
+                f("shininess"),
+                "give the exponent once: shininess or material.power",
+            ));
+        }
+        mat.shininess = ev(&f("material.power"), p)?;
+    }
+    Ok(())
+}
+
+/// The surface point: unit N, the viewer (V, the local viewer's camera, or
+/// the text's (0, 0, 1)) and the position.
+fn surface<T: Scalar>(
+    sh: &ShadeIn,
+    f: &dyn Fn(&str) -> String,
+    tr: &mut impl Trace,
+) -> Result<Surface<T>> {
     let normal_in = sh
         .normal
         .as_ref()
@@ -315,55 +358,43 @@ pub fn build<T: Scalar>(
             v
         }
     };
+    Ok(Surface {
+        normal,
+        view,
+        position,
+        camera,
+    })
+}
 
-    // The lights
-    let text_light = sh.light.is_some();
-    let lights = match (&sh.light, file.light.is_empty()) {
+/// The lights: the text's one directional L, or the `[[light]]` tables.
+fn lights<T: Scalar>(
+    sh: &ShadeIn,
+    file: &LightsFileIn,
+    f: &dyn Fn(&str) -> String,
+    lights_prefix: &str,
+    position: &V3<T>,
+    tr: &mut impl Trace,
+) -> Result<Vec<Light<T>>> {
+    match (&sh.light, file.light.is_empty()) {
         (Some(l), true) => {
             let l = lighting::unit("L", &f("light"), &ev3(&f("light"), l)?, tr)?;
-            vec![Light::directional(l)]
+            Ok(vec![Light::directional(l)])
         }
         (None, false) => file
             .light
             .iter()
             .enumerate()
-            .map(|(i, l)| light::<T>(l, &format!("{lights_prefix}[{i}]"), &position, tr))
-            .collect::<Result<_>>()?,
-        (Some(_), false) => {
-            return Err(Error::new(
-                f("light"),
-                "give one light vector L or [[light]] tables, not both",
-            ))
-        }
-        (None, true) => {
-            return Err(Error::new(
-                f("light"),
-                "no light: give L (toward the light) or a lights file",
-            ))
-        }
-    };
-    if file.global_ambient.is_some() && sh.global_ambient.is_some() {
-        return Err(Error::new(
-            f("global_ambient"),
-            "give the global ambient once, not both in the lights file and here",
-        ));
+            .map(|(i, l)| light::<T>(l, &format!("{lights_prefix}[{i}]"), position, tr))
+            .collect(),
+        (Some(_), false) => Err(Error::new(
+            f("light"),
+            "give one light vector L or [[light]] tables, not both",
+        )),
+        (None, true) => Err(Error::new(
+            f("light"),
+            "no light: give L (toward the light) or a lights file",
+        )),
     }
-    let ga = match file.global_ambient.as_ref().or(sh.global_ambient.as_ref()) {
-        Some(g) => rgb(&f("global_ambient"), g)?,
-        None => gray(T::zero()),
-    };
-    Ok(Setup {
-        material: mat,
-        lights,
-        global_ambient: ga,
-        surface: Surface {
-            normal,
-            view,
-            position,
-            camera,
-        },
-        text_light,
-    })
 }
 
 /// One `[[light]]` into a validated [`Light`].
