@@ -532,20 +532,7 @@ pub fn run_with<T: Scalar>(
     rec: &mut Recorder,
 ) -> Vec<(String, Val)> {
     let m = &s.material;
-    rec.step(|| {
-        Step::new("Material and model", format!("model = {}", m.model.name()))
-            .val("ka", Val::num(&m.ka))
-            .val("kd", Val::num(&m.kd))
-            .val("ks", Val::num(&m.ks))
-            .val("n", Val::num(&m.shininess))
-            .val("Cs", rgb_val(&m.color))
-            .val("Cspecular", rgb_val(&m.specular))
-            .note(if m.ka == T::one() && m.kd == T::one() && m.ks == T::one() {
-                "Direct3D material: its colors carry the coefficients, so ka = kd = ks = 1"
-            } else {
-                "the text's constants unless given: ka = 0.4, kd = 0.6, ks = 0.7, n = 4, white specular"
-            })
-    });
+    rec.step(|| material_step(m));
     let sh = lighting::shade_with_rules(m, &s.lights, &s.global_ambient, &s.surface, rules, rec);
     let mut out: Vec<(String, Val)> = vec![
         ("color".into(), rgb_val(&sh.color)),
@@ -567,77 +554,73 @@ pub fn run_with<T: Scalar>(
         out.push(("cos_alpha".into(), opt_num(&sh.cos_alpha)));
         out.push(("cos_beta".into(), opt_num(&sh.cos_beta)));
     } else {
-        // Per light, recomputed without steps (they are recorded above)
-        let terms: Vec<Option<LightTerm<T>>> = s
-            .lights
-            .iter()
-            .enumerate()
-            .map(|(i, l)| {
-                lighting::light_term_with(
-                    m,
-                    l,
-                    (i, s.lights.len()),
-                    &s.surface,
-                    &sh.view,
-                    true,
-                    rules,
-                    &mut NoTrace,
-                )
-            })
-            .collect();
-        let list = |f: &dyn Fn(&LightTerm<T>) -> Val| {
-            Val::List(
-                terms
-                    .iter()
-                    .map(|t| t.as_ref().map(f).unwrap_or(Val::Null))
-                    .collect(),
-            )
-        };
-        out.push(("R".into(), list(&|t| opt_vec(&t.r))));
-        if blinn {
-            out.push(("H".into(), list(&|t| opt_vec(&t.h))));
-            out.push(("N_dot_H".into(), list(&|t| opt_num(&t.cos_nh))));
-        }
-        out.push(("cos_alpha".into(), list(&|t| Val::num(&t.cos_alpha))));
-        out.push(("cos_beta".into(), list(&|t| opt_num(&t.cos_beta))));
+        out.extend(vectors_per_light(s, &sh.view, rules));
     }
     if !s.text_light {
-        let per: Vec<Val> = s
-            .lights
-            .iter()
-            .enumerate()
-            .map(|(i, l)| {
-                let t = lighting::light_term(
-                    m,
-                    l,
-                    (i, s.lights.len()),
-                    &s.surface,
-                    &sh.view,
-                    false,
-                    &mut NoTrace,
-                );
-                Val::Map(vec![
-                    ("in_range".into(), Val::Bool(t.is_some())),
-                    (
-                        "distance".into(),
-                        t.as_ref()
-                            .map(|t| opt_num(&t.distance))
-                            .unwrap_or(Val::Null),
-                    ),
-                    (
-                        "attenuation".into(),
-                        t.as_ref()
-                            .map(|t| Val::num(&t.attenuation))
-                            .unwrap_or(Val::Null),
-                    ),
-                    (
-                        "spot".into(),
-                        t.as_ref().map(|t| Val::num(&t.spot)).unwrap_or(Val::Null),
-                    ),
-                ])
-            })
-            .collect();
-        out.push(("lights".into(), Val::List(per)));
+        let per = (0..s.lights.len()).map(|i| light_factors(s, i, &sh.view));
+        out.push(("lights".into(), Val::List(per.collect())));
     }
     out
+}
+
+/// The step that shows the material and the model.
+fn material_step<T: Scalar>(m: &Material<T>) -> Step {
+    Step::new("Material and model", format!("model = {}", m.model.name()))
+        .val("ka", Val::num(&m.ka))
+        .val("kd", Val::num(&m.kd))
+        .val("ks", Val::num(&m.ks))
+        .val("n", Val::num(&m.shininess))
+        .val("Cs", rgb_val(&m.color))
+        .val("Cspecular", rgb_val(&m.specular))
+        .note(if m.ka == T::one() && m.kd == T::one() && m.ks == T::one() {
+            "Direct3D material: its colors carry the coefficients, so ka = kd = ks = 1"
+        } else {
+            "the text's constants unless given: ka = 0.4, kd = 0.6, ks = 0.7, n = 4, white specular"
+        })
+}
+
+/// With several lights: R (H, N·H), cos α and cos β as lists, one entry per
+/// light (recomputed without steps: they are recorded already).
+fn vectors_per_light<T: Scalar>(
+    s: &Setup<T>,
+    view: &V3<T>,
+    rules: &lighting::Rules<T>,
+) -> Vec<(String, Val)> {
+    let m = &s.material;
+    let n = s.lights.len();
+    let terms: Vec<Option<LightTerm<T>>> = (s.lights.iter().enumerate())
+        .map(|(i, l)| {
+            let at = (i, n);
+            lighting::light_term_with(m, l, at, &s.surface, view, true, rules, &mut NoTrace)
+        })
+        .collect();
+    let list = |f: &dyn Fn(&LightTerm<T>) -> Val| {
+        Val::List(
+            terms
+                .iter()
+                .map(|t| t.as_ref().map(f).unwrap_or(Val::Null))
+                .collect(),
+        )
+    };
+    let mut out = vec![("R".to_string(), list(&|t| opt_vec(&t.r)))];
+    if m.model == Model::Blinn {
+        out.push(("H".into(), list(&|t| opt_vec(&t.h))));
+        out.push(("N_dot_H".into(), list(&|t| opt_num(&t.cos_nh))));
+    }
+    out.push(("cos_alpha".into(), list(&|t| Val::num(&t.cos_alpha))));
+    out.push(("cos_beta".into(), list(&|t| opt_num(&t.cos_beta))));
+    out
+}
+
+/// Light i's range, distance, attenuation and spot factor.
+fn light_factors<T: Scalar>(s: &Setup<T>, i: usize, view: &V3<T>) -> Val {
+    let (m, l, n) = (&s.material, &s.lights[i], s.lights.len());
+    let t = lighting::light_term(m, l, (i, n), &s.surface, view, false, &mut NoTrace);
+    let or_null = |f: &dyn Fn(&LightTerm<T>) -> Val| t.as_ref().map(f).unwrap_or(Val::Null);
+    Val::Map(vec![
+        ("in_range".into(), Val::Bool(t.is_some())),
+        ("distance".into(), or_null(&|t| opt_num(&t.distance))),
+        ("attenuation".into(), or_null(&|t| Val::num(&t.attenuation))),
+        ("spot".into(), or_null(&|t| Val::num(&t.spot))),
+    ])
 }
