@@ -405,44 +405,17 @@ pub fn light<T: Scalar>(
     tr: &mut impl Trace,
 ) -> Result<Light<T>> {
     let k = |s: &str| format!("{field}.{s}");
-    let need = |v: &Option<Vec3In>, key: &str| -> Result<V3<T>> {
-        ev3(
-            &k(key),
-            v.as_ref().ok_or_else(|| {
-                Error::new(
-                    k(key),
-                    format!("a {:?} light needs `{key}`", l.kind).to_lowercase(),
-                )
-            })?,
-        )
-    };
-    let forbid = |present: bool, key: &str| -> Result<()> {
-        if present {
-            Err(Error::new(
-                k(key),
-                format!(
-                    "`{key}` does not apply to a {} light",
-                    format!("{:?}", l.kind).to_lowercase()
-                ),
-            ))
-        } else {
-            Ok(())
-        }
-    };
     let kind = match l.kind {
         LightType::Directional => {
-            forbid(l.position.is_some(), "position")?;
-            forbid(l.axis.is_some(), "axis")?;
-            forbid(l.range.is_some(), "range")?;
-            forbid(l.attenuation.is_some(), "attenuation")?;
-            let d = need(&l.direction, "direction")?;
+            forbid(l, &k, &["position", "axis", "range", "attenuation"])?;
+            let d = need(l, &k, &l.direction, "direction")?;
             LightKind::Directional {
                 dir: lighting::unit("L", &k("direction"), &d, tr)?,
             }
         }
         LightType::Point | LightType::Spot => {
-            forbid(l.direction.is_some(), "direction")?;
-            let pos = need(&l.position, "position")?;
+            forbid(l, &k, &["direction"])?;
+            let pos = need(l, &k, &l.position, "position")?;
             if pos == *point {
                 return Err(Error::new(
                     k("position"),
@@ -450,39 +423,10 @@ pub fn light<T: Scalar>(
                 ));
             }
             if l.kind == LightType::Point {
-                for (p, key) in [
-                    (l.axis.is_some(), "axis"),
-                    (l.theta.is_some(), "theta"),
-                    (l.phi.is_some(), "phi"),
-                    (l.falloff.is_some(), "falloff"),
-                ] {
-                    forbid(p, key)?;
-                }
+                forbid(l, &k, &["axis", "theta", "phi", "falloff"])?;
                 LightKind::Point { pos }
             } else {
-                let axis = need(&l.axis, "axis")?;
-                let axis = lighting::unit("axis", &k("axis"), &axis, tr)?;
-                let angle = |a: &Option<AngleIn>, key: &str| -> Result<T> {
-                    let a = a.as_ref().ok_or_else(|| {
-                        Error::new(
-                            k(key),
-                            format!("a spot light needs `{key}` (full cone angle, degrees)"),
-                        )
-                    })?;
-                    a.0.degrees::<T>().map_err(|m| Error::new(k(key), m))
-                };
-                LightKind::Spot {
-                    pos,
-                    dir: axis,
-                    theta: angle(&l.theta, "theta")?,
-                    phi: angle(&l.phi, "phi")?,
-                    falloff: l
-                        .falloff
-                        .as_ref()
-                        .map(|n| ev(&k("falloff"), n))
-                        .transpose()?
-                        .unwrap_or_else(T::one),
-                }
+                spot(l, &k, pos, tr)?
             }
         }
     };
@@ -503,6 +447,80 @@ pub fn light<T: Scalar>(
     };
     out.validate(field)?;
     Ok(out)
+}
+
+/// A spot light at `pos`: its unit axis, cone angles theta and phi (full
+/// angles, degrees) and falloff (1 unless given).
+fn spot<T: Scalar>(
+    l: &LightIn,
+    k: &dyn Fn(&str) -> String,
+    pos: V3<T>,
+    tr: &mut impl Trace,
+) -> Result<LightKind<T>> {
+    let axis = need(l, k, &l.axis, "axis")?;
+    let axis = lighting::unit("axis", &k("axis"), &axis, tr)?;
+    let angle = |a: &Option<AngleIn>, key: &str| -> Result<T> {
+        let a = a.as_ref().ok_or_else(|| {
+            Error::new(
+                k(key),
+                format!("a spot light needs `{key}` (full cone angle, degrees)"),
+            )
+        })?;
+        a.0.degrees::<T>().map_err(|m| Error::new(k(key), m))
+    };
+    Ok(LightKind::Spot {
+        pos,
+        dir: axis,
+        theta: angle(&l.theta, "theta")?,
+        phi: angle(&l.phi, "phi")?,
+        falloff: l
+            .falloff
+            .as_ref()
+            .map(|n| ev(&k("falloff"), n))
+            .transpose()?
+            .unwrap_or_else(T::one),
+    })
+}
+
+/// A vector the light's type needs (`key` names it).
+fn need<T: Scalar>(
+    l: &LightIn,
+    k: &dyn Fn(&str) -> String,
+    v: &Option<Vec3In>,
+    key: &str,
+) -> Result<V3<T>> {
+    let v = v.as_ref().ok_or_else(|| {
+        Error::new(
+            k(key),
+            format!("a {:?} light needs `{key}`", l.kind).to_lowercase(),
+        )
+    })?;
+    ev3(&k(key), v)
+}
+
+/// Refuses the first of `keys` that is given but does not apply to the
+/// light's type.
+fn forbid(l: &LightIn, k: &dyn Fn(&str) -> String, keys: &[&str]) -> Result<()> {
+    let given = |key: &str| match key {
+        "position" => l.position.is_some(),
+        "direction" => l.direction.is_some(),
+        "axis" => l.axis.is_some(),
+        "range" => l.range.is_some(),
+        "attenuation" => l.attenuation.is_some(),
+        "theta" => l.theta.is_some(),
+        "phi" => l.phi.is_some(),
+        _ => l.falloff.is_some(),
+    };
+    match keys.iter().find(|key| given(key)) {
+        Some(key) => Err(Error::new(
+            k(key),
+            format!(
+                "`{key}` does not apply to a {} light",
+                format!("{:?}", l.kind).to_lowercase()
+            ),
+        )),
+        None => Ok(()),
+    }
 }
 
 fn rgb_val<T: Scalar>(c: &Rgb<T>) -> Val {
