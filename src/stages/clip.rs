@@ -160,50 +160,89 @@ pub fn clip_segment<T: Scalar>(
     let (code0, code1) = (outcode(b, p0), outcode(b, p1));
     tr.step(|| code_step("P0", b, p0, code0));
     tr.step(|| code_step("P1", b, p1, code1));
-    let and = code0 & code1;
-    tr.step(|| {
-        Step::new(
-            "Trivial tests",
-            "both codes 000000 → accept;  code0 AND code1 ≠ 000000 → reject;  otherwise clip",
-        )
-        .val("code0", Val::text(code_str(code0)))
-        .val("code1", Val::text(code_str(code1)))
-        .res("code0 AND code1", Val::text(code_str(and)))
-        .note(if code0 | code1 == 0 {
-            "both ends inside: accepted whole"
-        } else if and != 0 {
-            "both ends outside the same plane: rejected"
-        } else {
-            "neither test decides: intersect with the planes the ends violate"
-        })
-    });
+    tr.step(|| trivial_step(code0, code1));
+    let decided = |status, segment| Clipped {
+        code0,
+        code1,
+        status,
+        segment,
+        intersections: vec![],
+    };
     if code0 | code1 == 0 {
-        return Clipped {
-            code0,
-            code1,
-            status: Status::Accepted,
-            segment: Some((p0.clone(), p1.clone())),
-            intersections: vec![],
-        };
+        return decided(Status::Accepted, Some((p0.clone(), p1.clone())));
     }
-    if and != 0 {
-        return Clipped {
-            code0,
-            code1,
-            status: Status::Rejected,
-            segment: None,
-            intersections: vec![],
-        };
+    if code0 & code1 != 0 {
+        return decided(Status::Rejected, None);
     }
 
-    // Intersect with every plane one endpoint violates (in floats, on the
-    // problem halved when P1 − P0 would overflow: the same t and points).
+    // Intersect with every plane one endpoint violates
+    let intersections = intersect_planes(b, p0, p1, code0 | code1, tr);
+    let mut kept: Vec<(T, V3<T>)> = (intersections.iter())
+        .filter(|i| i.code == 0)
+        .map(|i| (i.t.clone(), i.point.clone()))
+        .collect();
+    if code0 == 0 {
+        kept.push((T::zero(), p0.clone()));
+    }
+    if code1 == 0 {
+        kept.push((T::one(), p1.clone()));
+    }
+    let by_t = |a: &&(T, V3<T>), b: &&(T, V3<T>)| {
+        a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal)
+    };
+    let segment = match (kept.iter().min_by(by_t), kept.iter().max_by(by_t)) {
+        (Some(a), Some(z)) => Some((a.1.clone(), z.1.clone())),
+        _ => None,
+    };
+    let result = Clipped {
+        code0,
+        code1,
+        status: if segment.is_some() {
+            Status::Clipped
+        } else {
+            Status::Rejected
+        },
+        segment,
+        intersections,
+    };
+    tr.step(|| segment_step(&result.segment));
+    result
+}
+
+/// The step of the trivial accept and reject tests.
+fn trivial_step(code0: u8, code1: u8) -> Step {
+    let and = code0 & code1;
+    Step::new(
+        "Trivial tests",
+        "both codes 000000 → accept;  code0 AND code1 ≠ 000000 → reject;  otherwise clip",
+    )
+    .val("code0", Val::text(code_str(code0)))
+    .val("code1", Val::text(code_str(code1)))
+    .res("code0 AND code1", Val::text(code_str(and)))
+    .note(if code0 | code1 == 0 {
+        "both ends inside: accepted whole"
+    } else if and != 0 {
+        "both ends outside the same plane: rejected"
+    } else {
+        "neither test decides: intersect with the planes the ends violate"
+    })
+}
+
+/// The intersections of P0P1 with every plane whose bit is set in `codes`
+/// (in floats, on the problem halved when P1 − P0 would overflow: the same
+/// t and points), each with its t, point and outcode.
+fn intersect_planes<T: Scalar>(
+    b: &ClipBox<T>,
+    p0: &V3<T>,
+    p1: &V3<T>,
+    codes: u8,
+    tr: &mut impl Trace,
+) -> Vec<Intersection<T>> {
     let (hb, hp0, hp1, back) = halved_if_overflowing(b, p0, p1);
     let delta = vec::sub(&hp1, &hp0);
-    let mut kept: Vec<(T, V3<T>)> = Vec::new();
     let mut intersections = Vec::new();
-    for (bit, &(axis, is_max, plane, name)) in PLANES.iter().enumerate() {
-        if (code0 | code1) & (1 << bit) == 0 {
+    for (bit, &(axis, is_max, _, _)) in PLANES.iter().enumerate() {
+        if codes & (1 << bit) == 0 {
             continue;
         }
         let bound = if is_max { &hb.max[axis] } else { &hb.min[axis] };
@@ -214,75 +253,56 @@ pub fn clip_segment<T: Scalar>(
             q = vec::scale(&q, two);
             q[axis] = if is_max { &b.max[axis] } else { &b.min[axis] }.clone();
         }
-        let c = outcode(b, &q);
-        tr.step(|| {
-            Step::new(
-                format!("Intersection with the {name} plane {plane}"),
-                format!(
-                    "t = ({plane_side} − {a}0)/({a}1 − {a}0),  P(t) = P0 + t·(P1 − P0)",
-                    plane_side = &plane[4..],
-                    a = ["x", "y", "z"][axis]
-                ),
-            )
-            .val("t", Val::num(&t))
-            .res("P(t)", Val::vec3(&q))
-            .res("code", Val::text(code_str(c)))
-            .note(if c == 0 {
-                "code 000000: kept"
-            } else {
-                "code not 000000: outside the box, discarded"
-            })
-        });
-        if c == 0 {
-            kept.push((t.clone(), q.clone()));
-        }
-        intersections.push(Intersection {
+        let code = outcode(b, &q);
+        let i = Intersection {
             bit,
             t,
             point: q,
-            code: c,
-        });
+            code,
+        };
+        tr.step(|| intersection_step(&i));
+        intersections.push(i);
     }
-    if code0 == 0 {
-        kept.push((T::zero(), p0.clone()));
-    }
-    if code1 == 0 {
-        kept.push((T::one(), p1.clone()));
-    }
-    let first = kept
-        .iter()
-        .min_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal));
-    let last = kept
-        .iter()
-        .max_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal));
-    let result = match (first, last) {
-        (Some(a), Some(z)) => Clipped {
-            code0,
-            code1,
-            status: Status::Clipped,
-            segment: Some((a.1.clone(), z.1.clone())),
-            intersections,
-        },
-        _ => Clipped {
-            code0,
-            code1,
-            status: Status::Rejected,
-            segment: None,
-            intersections,
-        },
-    };
-    tr.step(|| {
-        let s = Step::new("Clipped segment", "from the kept point with the smallest t to the one with the largest t (inside ends count as t = 0 and t = 1)");
-        match &result.segment {
-            Some((a, z)) => s.res("from", Val::vec3(a)).res("to", Val::vec3(z)).note(if a == z {
+    intersections
+}
+
+/// The step of one intersection: t, P(t), its code, kept or not.
+fn intersection_step<T: Scalar>(i: &Intersection<T>) -> Step {
+    let (axis, _, plane, name) = PLANES[i.bit];
+    Step::new(
+        format!("Intersection with the {name} plane {plane}"),
+        format!(
+            "t = ({plane_side} − {a}0)/({a}1 − {a}0),  P(t) = P0 + t·(P1 − P0)",
+            plane_side = &plane[4..],
+            a = ["x", "y", "z"][axis]
+        ),
+    )
+    .val("t", Val::num(&i.t))
+    .res("P(t)", Val::vec3(&i.point))
+    .res("code", Val::text(code_str(i.code)))
+    .note(if i.code == 0 {
+        "code 000000: kept"
+    } else {
+        "code not 000000: outside the box, discarded"
+    })
+}
+
+/// The step of the clipped segment (or of its rejection).
+fn segment_step<T: Scalar>(segment: &Option<(V3<T>, V3<T>)>) -> Step {
+    let s = Step::new("Clipped segment", "from the kept point with the smallest t to the one with the largest t (inside ends count as t = 0 and t = 1)");
+    match segment {
+        Some((a, z)) => s
+            .res("from", Val::vec3(a))
+            .res("to", Val::vec3(z))
+            .note(if a == z {
                 "the segment touches the box in a single point"
             } else {
                 "the part of P0P1 inside the box"
             }),
-            None => s.res("segment", Val::Null).note("no intersection is inside the box: the segment misses it (rejected)"),
-        }
-    });
-    result
+        None => s
+            .res("segment", Val::Null)
+            .note("no intersection is inside the box: the segment misses it (rejected)"),
+    }
 }
 
 /// P(t) = P0 + t·Δ on the plane `axis` = `bound`, where t = (bound − P0ₐ)/Δₐ.
