@@ -555,49 +555,14 @@ pub fn shade_with_rules<T: Scalar, R: RuleSet<T>>(
     let (want_a, want_d, want_s) = mat.model.terms();
     let want_spec = want_s && mat.specular_on && !mat.ks.is_zero_value();
     let v = view_vector(s, tr);
-
-    // Sum each light's contribution per channel
-    let mut sum_a = global_ambient.clone();
-    let mut sum_d = gray(T::zero());
-    let mut sum_s = gray(T::zero());
-    let mut first: Option<LightTerm<T>> = None;
-    let mut used = 0;
-    for (i, light) in lights.iter().enumerate() {
-        let Some(t) =
-            light::light_term_with(mat, light, (i, lights.len()), s, &v, want_spec, rules, tr)
-        else {
-            continue;
-        };
-        used += 1;
-        let f = t.attenuation.clone() * t.spot.clone();
-        let fd = f.clone() * max0(&t.cos_alpha);
-        let fs = f.clone() * t.highlight.clone();
-        for c in 0..3 {
-            sum_a[c] += light.ambient[c].clone() * f.clone();
-            sum_d[c] += light.diffuse[c].clone() * fd.clone();
-            sum_s[c] += light.specular[c].clone() * fs.clone();
-        }
-        if first.is_none() {
-            first = Some(t);
-        }
-    }
+    let (sums, first, used) = sum_lights(mat, lights, global_ambient, s, &v, want_spec, rules, tr);
+    let [sum_a, sum_d, sum_s] = &sums;
 
     // The three terms, the sum and the clamp
     let ca = mat.ambient_color.as_ref().unwrap_or(&mat.color);
-    /// k·sum⊙col, or zero when the model has no such term.
-    #[inline(always)]
-    fn term<T: Scalar>(on: bool, k: &T, sum: &Rgb<T>, col: &Rgb<T>) -> Rgb<T> {
-        per_channel(|c| {
-            if on {
-                k.clone() * sum[c].clone() * col[c].clone()
-            } else {
-                T::zero()
-            }
-        })
-    }
-    let ambient = term(want_a, &mat.ka, &sum_a, ca);
-    let diffuse = term(want_d, &mat.kd, &sum_d, &mat.color);
-    let specular = term(want_spec, &mat.ks, &sum_s, &mat.specular);
+    let ambient = term(want_a, &mat.ka, sum_a, ca);
+    let diffuse = term(want_d, &mat.kd, sum_d, &mat.color);
+    let specular = term(want_spec, &mat.ks, sum_s, &mat.specular);
     let emissive = mat.emissive.clone();
     let unclamped: Rgb<T> = per_channel(|c| {
         ambient[c].clone() + diffuse[c].clone() + specular[c].clone() + emissive[c].clone()
@@ -610,34 +575,15 @@ pub fn shade_with_rules<T: Scalar, R: RuleSet<T>>(
     record_totals(
         mat,
         (want_a, want_d, want_spec),
-        [&sum_a, &sum_d, &sum_s],
+        [sum_a, sum_d, sum_s],
         [&ambient, &diffuse, &specular],
         global_ambient,
         lights,
         tr,
     );
-    tr.step(|| {
-        Step::new(
-            "Sum of the terms",
-            "C = ambient + diffuse + specular + emissive",
-        )
-        .val("ambient", rgb_val(&ambient))
-        .val("diffuse", rgb_val(&diffuse))
-        .val("specular", rgb_val(&specular))
-        .val("emissive", rgb_val(&emissive))
-        .res("unclamped", rgb_val(&unclamped))
-    });
-    tr.step(|| {
-        let clipped = unclamped.iter().any(|x| *x > T::one() || *x < T::zero());
-        Step::new("Clamp each channel to [0, 1]", "color = min(max(C, 0), 1)")
-            .val("C", rgb_val(&unclamped))
-            .res("color", rgb_val(&color))
-            .note(if clipped {
-                "a channel went past 1 (or below 0) and is clamped: the highlight saturates"
-            } else {
-                "every channel is already in [0, 1]"
-            })
-    });
+    let terms = [&ambient, &diffuse, &specular, &emissive];
+    tr.step(|| sum_step(terms, &unclamped));
+    tr.step(|| clamp_step(&unclamped, &color));
 
     let (r, h, cos_alpha, cos_beta, cos_nh) = match first {
         Some(t) => (t.r, t.h, Some(t.cos_alpha), t.cos_beta, t.cos_nh),
@@ -658,6 +604,86 @@ pub fn shade_with_rules<T: Scalar, R: RuleSet<T>>(
         cos_nh,
         lights_used: used,
     }
+}
+
+/// Each light's contribution summed per channel: ambient Σ Lambientᵢ·fᵢ
+/// (from Ga), diffuse Σ Ldiffuseᵢ·fᵢ·max(cos αᵢ, 0), specular
+/// Σ Lspecularᵢ·fᵢ·highlightᵢ, with fᵢ = attenuation·spot; also the first
+/// light's term (for R, H, cos α, cos β) and how many lights reached the point.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn sum_lights<T: Scalar, R: RuleSet<T>>(
+    mat: &Material<T>,
+    lights: &[Light<T>],
+    global_ambient: &Rgb<T>,
+    s: &Surface<T>,
+    v: &V3<T>,
+    want_spec: bool,
+    rules: &R,
+    tr: &mut impl Trace,
+) -> ([Rgb<T>; 3], Option<LightTerm<T>>, usize) {
+    let (mut sum_a, mut sum_d, mut sum_s) =
+        (global_ambient.clone(), gray(T::zero()), gray(T::zero()));
+    let mut first: Option<LightTerm<T>> = None;
+    let mut used = 0;
+    for (i, light) in lights.iter().enumerate() {
+        let Some(t) =
+            light::light_term_with(mat, light, (i, lights.len()), s, v, want_spec, rules, tr)
+        else {
+            continue;
+        };
+        used += 1;
+        let f = t.attenuation.clone() * t.spot.clone();
+        let fd = f.clone() * max0(&t.cos_alpha);
+        let fs = f.clone() * t.highlight.clone();
+        for c in 0..3 {
+            sum_a[c] += light.ambient[c].clone() * f.clone();
+            sum_d[c] += light.diffuse[c].clone() * fd.clone();
+            sum_s[c] += light.specular[c].clone() * fs.clone();
+        }
+        if first.is_none() {
+            first = Some(t);
+        }
+    }
+    ([sum_a, sum_d, sum_s], first, used)
+}
+
+/// k·sum⊙col, or zero when the model has no such term.
+#[inline(always)]
+fn term<T: Scalar>(on: bool, k: &T, sum: &Rgb<T>, col: &Rgb<T>) -> Rgb<T> {
+    per_channel(|c| {
+        if on {
+            k.clone() * sum[c].clone() * col[c].clone()
+        } else {
+            T::zero()
+        }
+    })
+}
+
+/// The step of the sum C = ambient + diffuse + specular + emissive.
+fn sum_step<T: Scalar>(terms: [&Rgb<T>; 4], unclamped: &Rgb<T>) -> Step {
+    Step::new(
+        "Sum of the terms",
+        "C = ambient + diffuse + specular + emissive",
+    )
+    .val("ambient", rgb_val(terms[0]))
+    .val("diffuse", rgb_val(terms[1]))
+    .val("specular", rgb_val(terms[2]))
+    .val("emissive", rgb_val(terms[3]))
+    .res("unclamped", rgb_val(unclamped))
+}
+
+/// The step of the clamp to [0, 1].
+fn clamp_step<T: Scalar>(unclamped: &Rgb<T>, color: &Rgb<T>) -> Step {
+    let clipped = unclamped.iter().any(|x| *x > T::one() || *x < T::zero());
+    Step::new("Clamp each channel to [0, 1]", "color = min(max(C, 0), 1)")
+        .val("C", rgb_val(unclamped))
+        .res("color", rgb_val(color))
+        .note(if clipped {
+            "a channel went past 1 (or below 0) and is clamped: the highlight saturates"
+        } else {
+            "every channel is already in [0, 1]"
+        })
 }
 
 /// V: the given unit view vector, or norm(Cp − Vp) with a local viewer.
