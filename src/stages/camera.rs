@@ -69,36 +69,8 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
     let Camera { pe, pr, vup } = cam;
     // n from the view direction
     let d = vec::sub(pe, pr);
-    if !vec::is_finite(&d) {
-        return Err(Error::new(
-            "look",
-            format!(
-                "Pe − Pr = {} is too large for {} precision",
-                fmt3(&d),
-                precision_name::<T>()
-            ),
-        ));
-    }
-    let (n, dn) = vec::normalize(&d).ok_or_else(|| {
-        Error::new(
-            "look",
-            format!(
-                "the eye Pe and the look-at point Pr are the same point {}",
-                fmt3(pe)
-            ),
-        )
-    })?;
-    tr.step(|| {
-        Step::new(
-            "Camera axis n (points from the look-at point back to the eye)",
-            "n = (Pe − Pr) / |Pe − Pr|",
-        )
-        .val("Pe", Val::vec3(pe))
-        .val("Pr", Val::vec3(pr))
-        .val("Pe − Pr", Val::vec3(&d))
-        .val("|Pe − Pr|", Val::num(&dn))
-        .res("n", Val::vec3(&n))
-    });
+    let (n, dn) = view_direction(pe, &d)?;
+    tr.step(|| n_step(cam, &d, &dn, &n));
 
     // u from Vup × d
     if vec::normalize(vup).is_none() {
@@ -122,24 +94,8 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
             ),
         )
     })?;
-    // sin of the angle between Vup and d = |Vup × d| / (|Vup| |d|)
-    let sin_angle = sun.to_f64() / (vec::norm(&ups).to_f64() * vec::norm(&ds).to_f64());
-    let angle = sin_angle.clamp(-1.0, 1.0).asin();
-    if angle < NEAR_PARALLEL_RAD {
-        tr.warn(|| {
-            format!(
-                "the up vector is nearly parallel to the view direction (angle {angle:.3e} rad): u and v are very sensitive to the inputs"
-            )
-        });
-    }
-    tr.step(|| {
-        let vxn = vec::cross(vup, &n);
-        Step::new("Camera axis u (to the right)", "u = (Vup × n) / |Vup × n|")
-            .val("Vup", Val::vec3(vup))
-            .val("Vup × n", Val::vec3(&vxn))
-            .val("|Vup × n|", Val::num(&vec::norm(&vxn)))
-            .res("u", Val::vec3(&u))
-    });
+    warn_near_parallel(&sun, &ups, &ds, tr);
+    tr.step(|| u_step(vup, &n, &u));
 
     // v completes the right-handed frame
     let sv = vec::cross(&ds, &su);
@@ -164,6 +120,67 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
     };
     tr.step(|| check_step(&b));
     Ok(b)
+}
+
+/// n = (Pe − Pr)/|Pe − Pr| and |Pe − Pr|, for d = Pe − Pr: an error when
+/// d overflows the precision or is zero (Pe = Pr).
+fn view_direction<T: Scalar>(pe: &V3<T>, d: &V3<T>) -> Result<(V3<T>, T)> {
+    if !vec::is_finite(d) {
+        return Err(Error::new(
+            "look",
+            format!(
+                "Pe − Pr = {} is too large for {} precision",
+                fmt3(d),
+                precision_name::<T>()
+            ),
+        ));
+    }
+    vec::normalize(d).ok_or_else(|| {
+        Error::new(
+            "look",
+            format!(
+                "the eye Pe and the look-at point Pr are the same point {}",
+                fmt3(pe)
+            ),
+        )
+    })
+}
+
+/// The step of the axis n.
+fn n_step<T: Scalar>(cam: &Camera<T>, d: &V3<T>, dn: &T, n: &V3<T>) -> Step {
+    Step::new(
+        "Camera axis n (points from the look-at point back to the eye)",
+        "n = (Pe − Pr) / |Pe − Pr|",
+    )
+    .val("Pe", Val::vec3(&cam.pe))
+    .val("Pr", Val::vec3(&cam.pr))
+    .val("Pe − Pr", Val::vec3(d))
+    .val("|Pe − Pr|", Val::num(dn))
+    .res("n", Val::vec3(n))
+}
+
+/// Warns when Vup is nearly parallel to d: sin of the angle between them =
+/// |Vup × d| / (|Vup| |d|) (on the scaled vectors `ups`, `ds`).
+fn warn_near_parallel<T: Scalar>(sun: &T, ups: &V3<T>, ds: &V3<T>, tr: &mut impl Trace) {
+    let sin_angle = sun.to_f64() / (vec::norm(ups).to_f64() * vec::norm(ds).to_f64());
+    let angle = sin_angle.clamp(-1.0, 1.0).asin();
+    if angle < NEAR_PARALLEL_RAD {
+        tr.warn(|| {
+            format!(
+                "the up vector is nearly parallel to the view direction (angle {angle:.3e} rad): u and v are very sensitive to the inputs"
+            )
+        });
+    }
+}
+
+/// The step of the axis u.
+fn u_step<T: Scalar>(vup: &V3<T>, n: &V3<T>, u: &V3<T>) -> Step {
+    let vxn = vec::cross(vup, n);
+    Step::new("Camera axis u (to the right)", "u = (Vup × n) / |Vup × n|")
+        .val("Vup", Val::vec3(vup))
+        .val("Vup × n", Val::vec3(&vxn))
+        .val("|Vup × n|", Val::num(&vec::norm(&vxn)))
+        .res("u", Val::vec3(u))
 }
 
 /// The orthonormality check shown after the basis: u·v, v·n, n·u, |u|, |v|,
