@@ -102,51 +102,17 @@ pub fn project<T: Scalar>(
     tr: &mut impl Trace,
 ) -> Result<V3<T>> {
     let (x, y, z) = (&p[0], &p[1], &p[2]);
-    let (scale, plane_z, formula, scale_name) = match proj {
-        Projection::Ortho => {
-            let r = vec::v3(x.clone(), y.clone(), T::zero());
-            tr.step(|| {
-                Step::new(
-                    format!("Orthographic projection of {name}"),
-                    "xp = x,  yp = y,  zp = 0",
-                )
-                .val(name.to_string(), Val::vec3(p))
-                .res(format!("{name}''"), Val::vec3(&r))
-            });
-            return Ok(r);
-        }
-        Projection::Plane { d } => {
-            if z.is_zero_value() {
-                return Err(Error::new(
-                    format!("points.{name}"),
-                    format!("{name} has z = 0: it lies in the plane of the centre of projection and has no image"),
-                ));
-            }
-            (
-                (d.clone(), z.clone()),
-                d.clone(),
-                "xp = d·x/z,  yp = d·y/z,  zp = d",
-                "d/z",
+    let Some((scale, plane_z, formula, scale_name)) = perspective_form(proj, name, z)? else {
+        let r = vec::v3(x.clone(), y.clone(), T::zero());
+        tr.step(|| {
+            Step::new(
+                format!("Orthographic projection of {name}"),
+                "xp = x,  yp = y,  zp = 0",
             )
-        }
-        Projection::General { zprp, zvp } => {
-            let den = zprp.clone() - z.clone();
-            if den.is_zero_value() {
-                return Err(Error::new(
-                    format!("points.{name}"),
-                    format!(
-                        "{name} has z = zprp = {}: it lies in the plane of the centre of projection and has no image",
-                        zprp.to_f64()
-                    ),
-                ));
-            }
-            (
-                (zprp.clone() - zvp.clone(), den),
-                zvp.clone(),
-                "xp = x·(zprp − zvp)/(zprp − z),  yp = y·(zprp − zvp)/(zprp − z),  zp = zvp",
-                "(zprp − zvp)/(zprp − z)",
-            )
-        }
+            .val(name.to_string(), Val::vec3(p))
+            .res(format!("{name}''"), Val::vec3(&r))
+        });
+        return Ok(r);
     };
     // x·(num/den) evaluated as a scaled x·num/den: no premature overflow or
     // underflow of the scale factor, two roundings.
@@ -184,6 +150,52 @@ pub fn project<T: Scalar>(
         s
     });
     Ok(r)
+}
+
+/// (numerator, denominator) of the scale, the plane's z, formula, scale's name.
+type Form<T> = ((T, T), T, &'static str, &'static str);
+
+/// A perspective set-up's scale factor as (numerator, denominator), the
+/// plane's z, the formula and the factor's name: d/z onto z = d, or
+/// (zprp − zvp)/(zprp − z) in the general set-up; `None` for the
+/// orthographic projection. A point in the plane of the centre of
+/// projection (zero denominator) is an error.
+fn perspective_form<T: Scalar>(proj: &Projection<T>, name: &str, z: &T) -> Result<Option<Form<T>>> {
+    Ok(Some(match proj {
+        Projection::Ortho => return Ok(None),
+        Projection::Plane { d } => {
+            if z.is_zero_value() {
+                return Err(Error::new(
+                    format!("points.{name}"),
+                    format!("{name} has z = 0: it lies in the plane of the centre of projection and has no image"),
+                ));
+            }
+            (
+                (d.clone(), z.clone()),
+                d.clone(),
+                "xp = d·x/z,  yp = d·y/z,  zp = d",
+                "d/z",
+            )
+        }
+        Projection::General { zprp, zvp } => {
+            let den = zprp.clone() - z.clone();
+            if den.is_zero_value() {
+                return Err(Error::new(
+                    format!("points.{name}"),
+                    format!(
+                        "{name} has z = zprp = {}: it lies in the plane of the centre of projection and has no image",
+                        zprp.to_f64()
+                    ),
+                ));
+            }
+            (
+                (zprp.clone() - zvp.clone(), den),
+                zvp.clone(),
+                "xp = x·(zprp − zvp)/(zprp − z),  yp = y·(zprp − zvp)/(zprp − z),  zp = zvp",
+                "(zprp − zvp)/(zprp − z)",
+            )
+        }
+    }))
 }
 
 /// The perspective projection as a 4×4 matrix (eye → homogeneous clip
