@@ -266,87 +266,98 @@ fn pieces(s: &str) -> Vec<Piece> {
     while i < chars.len() {
         let c = chars[i];
         i += 1;
-        let math = |m: &str| Piece::Math(m.to_string());
-        let text = |t: &str| Piece::Text(t.to_string());
         out.push(match c {
-            '√' => {
-                // √ applies to a number, a name, or a parenthesized group.
-                let start = i;
-                if chars.get(i) == Some(&'(') {
-                    let mut depth = 0;
-                    while i < chars.len() {
-                        if chars[i] == '(' {
-                            depth += 1;
-                        } else if chars[i] == ')' {
-                            depth -= 1;
-                            if depth == 0 {
-                                i += 1;
-                                break;
-                            }
-                        }
-                        i += 1;
-                    }
-                    let inner: String = chars[start + 1..i.saturating_sub(1)].iter().collect();
-                    Piece::Math(format!("\\sqrt{{{}}}", latex_math(&inner)))
-                } else {
-                    while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '.') {
-                        i += 1;
-                    }
-                    let inner: String = chars[start..i].iter().collect();
-                    Piece::Math(format!("\\sqrt{{{inner}}}"))
-                }
-            }
-            '−' => math("-"),
-            '·' => math("\\cdot "),
-            '×' => math("\\times "),
-            '≈' => math("\\approx "),
-            '≤' => math("\\le "),
-            '≥' => math("\\ge "),
-            '≠' => math("\\ne "),
-            '⇒' => math("\\Rightarrow "),
-            '→' => math("\\to "),
-            '←' => math("\\leftarrow "),
-            '∥' => math("\\parallel "),
-            '⊥' => math("\\perp "),
-            '°' => math("^\\circ "),
+            '√' => sqrt_piece(&chars, &mut i),
             '⁻' if chars.get(i) == Some(&'¹') => {
                 i += 1;
-                math("^{-1}")
+                Piece::Math("^{-1}".into())
             }
-            'ᵀ' => math("^{T}"),
-            '²' => math("^2"),
-            '³' => math("^3"),
-            '⁰' => math("^0"),
-            '₀' => math("_0"),
-            '₁' => math("_1"),
-            '₂' => math("_2"),
-            'θ' => math("\\theta "),
-            'α' => math("\\alpha "),
-            'β' => math("\\beta "),
-            'π' => math("\\pi "),
-            '<' => math("<"),
-            '>' => math(">"),
-            '|' => math("|"),
-            '…' => text("\\ldots{}"),
-            '—' => text("---"),
-            '–' => text("--"),
-            '’' | '′' => text("'"),
-            '“' | '”' => text("\""),
-            '\\' => text("\\textbackslash{}"),
-            '{' => text("\\{"),
-            '}' => text("\\}"),
-            '$' => text("\\$"),
-            '&' => text("\\&"),
-            '#' => text("\\#"),
-            '%' => text("\\%"),
-            '_' => text("\\_"),
-            '^' => text("\\^{}"),
-            '~' => text("\\~{}"),
-            c if c.is_ascii() => Piece::Text(c.to_string()),
-            other => Piece::Text(format!("[U+{:04X}]", other as u32)),
+            c => symbol(c),
         });
     }
     out
+}
+
+/// √ applied to what follows at `i`: a parenthesized group, or a number
+/// or a name; `i` moves past it.
+fn sqrt_piece(chars: &[char], i: &mut usize) -> Piece {
+    let start = *i;
+    if chars.get(*i) == Some(&'(') {
+        let mut depth = 0;
+        while *i < chars.len() {
+            if chars[*i] == '(' {
+                depth += 1;
+            } else if chars[*i] == ')' {
+                depth -= 1;
+                if depth == 0 {
+                    *i += 1;
+                    break;
+                }
+            }
+            *i += 1;
+        }
+        let inner: String = chars[start + 1..i.saturating_sub(1)].iter().collect();
+        Piece::Math(format!("\\sqrt{{{}}}", latex_math(&inner)))
+    } else {
+        while *i < chars.len() && (chars[*i].is_ascii_alphanumeric() || chars[*i] == '.') {
+            *i += 1;
+        }
+        let inner: String = chars[start..*i].iter().collect();
+        Piece::Math(format!("\\sqrt{{{inner}}}"))
+    }
+}
+
+/// One character as LaTeX: a symbol in math mode, an escaped special
+/// character, itself (ASCII), or its code point.
+fn symbol(c: char) -> Piece {
+    let math = |m: &str| Piece::Math(m.to_string());
+    let text = |t: &str| Piece::Text(t.to_string());
+    match c {
+        '−' => math("-"),
+        '·' => math("\\cdot "),
+        '×' => math("\\times "),
+        '≈' => math("\\approx "),
+        '≤' => math("\\le "),
+        '≥' => math("\\ge "),
+        '≠' => math("\\ne "),
+        '⇒' => math("\\Rightarrow "),
+        '→' => math("\\to "),
+        '←' => math("\\leftarrow "),
+        '∥' => math("\\parallel "),
+        '⊥' => math("\\perp "),
+        '°' => math("^\\circ "),
+        'ᵀ' => math("^{T}"),
+        '²' => math("^2"),
+        '³' => math("^3"),
+        '⁰' => math("^0"),
+        '₀' => math("_0"),
+        '₁' => math("_1"),
+        '₂' => math("_2"),
+        'θ' => math("\\theta "),
+        'α' => math("\\alpha "),
+        'β' => math("\\beta "),
+        'π' => math("\\pi "),
+        '<' => math("<"),
+        '>' => math(">"),
+        '|' => math("|"),
+        '…' => text("\\ldots{}"),
+        '—' => text("---"),
+        '–' => text("--"),
+        '’' | '′' => text("'"),
+        '“' | '”' => text("\""),
+        '\\' => text("\\textbackslash{}"),
+        '{' => text("\\{"),
+        '}' => text("\\}"),
+        '$' => text("\\$"),
+        '&' => text("\\&"),
+        '#' => text("\\#"),
+        '%' => text("\\%"),
+        '_' => text("\\_"),
+        '^' => text("\\^{}"),
+        '~' => text("\\~{}"),
+        c if c.is_ascii() => Piece::Text(c.to_string()),
+        other => Piece::Text(format!("[U+{:04X}]", other as u32)),
+    }
 }
 
 #[cfg(test)]
