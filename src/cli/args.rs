@@ -84,6 +84,9 @@ pub enum Command {
     Generate(GenerateArgs),
     /// Render a scene file (TOML) to a PNG: flat, Gouraud or Phong shading.
     Render(RenderArgs),
+    /// Practise a problem one value at a time: verdict, diagnosis, hints,
+    /// follow-through (answers and commands from standard input).
+    Practice(PracticeArgs),
 }
 
 /// The camera flags.
@@ -241,6 +244,35 @@ pub struct CheckArgs {
     /// With a directory of answers: write a CSV summary to this file (`-` for stdout).
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
+    /// Credit a wrong answer that is right given the student's own earlier
+    /// answers (pixels from their window and projected points, ...) as
+    /// correct.follow_through.
+    #[arg(long)]
+    pub follow_through: bool,
+}
+
+/// The `practice` flags.
+#[derive(Args, Debug)]
+pub struct PracticeArgs {
+    /// The problem file (or draw one with --topic).
+    #[arg(required_unless_present = "topic", conflicts_with = "topic")]
+    pub file: Option<PathBuf>,
+    /// Draw a problem on this topic (the problem `generate` writes first
+    /// for the same topic, difficulty and seed).
+    #[arg(long, value_enum)]
+    pub topic: Option<Topic>,
+    /// How nice the numbers of a drawn problem are.
+    #[arg(long, value_enum, default_value_t = Difficulty::Medium)]
+    pub difficulty: Difficulty,
+    /// The seed of a drawn problem (default: from the clock; it is printed).
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Relative tolerance (default 0.001, i.e. 0.1%).
+    #[arg(long, value_name = "R")]
+    pub tolerance: Option<f64>,
+    /// Minimum significant figures of a rounded decimal answer (default 2).
+    #[arg(long, value_name = "N")]
+    pub sig_figs: Option<u32>,
 }
 
 /// The `render` flags.

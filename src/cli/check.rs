@@ -13,16 +13,12 @@ use std::path::{Path, PathBuf};
 
 /// Runs `grafika check`; returns what to print on stdout.
 pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<String> {
-    if let Some(t) = a.tolerance {
-        if !(t.is_finite() && t >= 0.0) {
-            return Err(Error::new(
-                "tolerance",
-                format!("must be a finite number ≥ 0, got {t}"),
-            ));
-        }
-    }
+    valid_tolerance(a.tolerance)?;
     let p = ProblemIn::read(&a.file)?;
-    let settings = check::settings_for(&p, a.tolerance, a.sig_figs);
+    let settings = check::Settings {
+        follow_through: a.follow_through,
+        ..check::settings_for(&p, a.tolerance, a.sig_figs)
+    };
     let style = &Style {
         exact_mode: true,
         ..*style
@@ -85,6 +81,17 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<String> {
     }
 }
 
+/// `--tolerance` must be a finite number ≥ 0.
+pub(crate) fn valid_tolerance(t: Option<f64>) -> Result<()> {
+    match t {
+        Some(t) if !(t.is_finite() && t >= 0.0) => Err(Error::new(
+            "tolerance",
+            format!("must be a finite number ≥ 0, got {t}"),
+        )),
+        _ => Ok(()),
+    }
+}
+
 fn output(m: &Marking, json: bool, style: &Style) -> String {
     if json {
         serde_json::to_string_pretty(&to_json(m)).unwrap_or_default() + "\n"
@@ -137,6 +144,7 @@ fn summary_table(title: &str, marks: &[(PathBuf, Marking)]) -> String {
         "wrong",
         "missing",
         "unparseable",
+        "follow-through",
         "mistakes",
     ]);
     for (_, m) in marks {
@@ -148,13 +156,15 @@ fn summary_table(title: &str, marks: &[(PathBuf, Marking)]) -> String {
             m.count(Verdict::Wrong).to_string(),
             m.count(Verdict::Missing).to_string(),
             m.count(Verdict::Unparseable).to_string(),
+            m.follow_through().to_string(),
             mistakes(m),
         ]);
     }
     format!("{title}\n{t}\n")
 }
 
-/// `student,file,score,total,correct,too_coarse,wrong,missing,unparseable,mistakes`.
+/// `student,file,score,total,correct,too_coarse,wrong,missing,unparseable,follow_through,mistakes`
+/// (follow_through: how many of the correct were credited by follow-through).
 fn summary_csv(marks: &[(PathBuf, Marking)]) -> String {
     let q = |s: &str| {
         if s.contains([',', '"', '\n']) {
@@ -164,11 +174,11 @@ fn summary_csv(marks: &[(PathBuf, Marking)]) -> String {
         }
     };
     let mut out = String::from(
-        "student,file,score,total,correct,too_coarse,wrong,missing,unparseable,mistakes\n",
+        "student,file,score,total,correct,too_coarse,wrong,missing,unparseable,follow_through,mistakes\n",
     );
     for (f, m) in marks {
         out.push_str(&format!(
-            "{},{},{},{},{},{},{},{},{},{}\n",
+            "{},{},{},{},{},{},{},{},{},{},{}\n",
             q(&m.who),
             q(&f.display().to_string()),
             m.score(),
@@ -178,6 +188,7 @@ fn summary_csv(marks: &[(PathBuf, Marking)]) -> String {
             m.count(Verdict::Wrong),
             m.count(Verdict::Missing),
             m.count(Verdict::Unparseable),
+            m.follow_through(),
             q(&mistakes(m)),
         ));
     }

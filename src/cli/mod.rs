@@ -5,6 +5,7 @@ pub mod args;
 pub mod calc;
 pub mod check;
 pub mod generate;
+pub mod practice;
 pub mod render;
 
 use crate::error::{Error, Result};
@@ -38,10 +39,12 @@ pub fn run(cli: &Cli) -> Result<Report> {
         Command::Clip(a) => at_precision!(p, clip(a)),
         Command::Shade(a) => at_precision!(p, shade(a)),
         Command::Solve { file } => at_precision!(p, solve(file)),
-        Command::Check(_) | Command::Generate(_) | Command::Bench { .. } => Err(Error::new(
-            "command",
-            "check, generate and bench print their own output: use main_with_args",
-        )),
+        Command::Check(_) | Command::Generate(_) | Command::Bench { .. } | Command::Practice(_) => {
+            Err(Error::new(
+                "command",
+                "check, generate, bench and practice print their own output: use main_with_args",
+            ))
+        }
         // The renderer computes at f32 (the calculator's precisions are for explaining).
         Command::Render(a) => crate::cli::render::run(a),
     }
@@ -83,6 +86,7 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
         Command::Bench { quick, cases } => Ok(bench(*quick, *cases, json)),
         Command::Check(a) => check::run(a, json, &style),
         Command::Generate(a) => generate::run(a, json, &style),
+        Command::Practice(a) => practice::run(a, json, &style).map(|()| String::new()),
         _ => run(&cli).map(|report| report_text(&report, json, &style)),
     };
     match printed {

@@ -1,6 +1,7 @@
 //! A marking as text (a table, the diagnosis, the score) or as JSON for
 //! autograders.
 
+use crate::report::lang::Lang;
 use crate::report::{exact_json, value_json, Style};
 use crate::tutor::check::{Marking, Verdict};
 use serde_json::{json, Value};
@@ -27,13 +28,15 @@ pub fn to_json(m: &Marking) -> Value {
         "command": "check",
         "title": m.title,
         "who": m.who,
-        "settings": { "tolerance": m.settings.tolerance, "sig_figs": m.settings.sig_figs },
+        "settings": { "tolerance": m.settings.tolerance, "sig_figs": m.settings.sig_figs,
+                      "follow_through": m.settings.follow_through },
         "score": { "points": m.score(), "total": m.total(),
                    "fraction": if m.total() == 0 { 1.0 } else { m.score() / m.total() as f64 } },
         "counts": {
             "correct": m.count(Verdict::Correct), "too_coarse": m.count(Verdict::TooCoarse),
             "wrong": m.count(Verdict::Wrong), "missing": m.count(Verdict::Missing),
             "unparseable": m.count(Verdict::Unparseable),
+            "follow_through": m.follow_through(),
         },
         "answers": answers,
         "diagnosis": m.diagnoses.iter().map(|d| json!({
@@ -119,5 +122,12 @@ pub fn to_text(m: &Marking, style: &Style) -> String {
         m.count(Verdict::Missing),
         m.count(Verdict::Unparseable)
     ));
+    if m.follow_through() > 0 {
+        let n = m.follow_through();
+        out.push_str(&match style.lang {
+            Lang::En => format!("({n} of the correct answers by follow-through: right given the student's own earlier answers)\n"),
+            Lang::Id => format!("({n} jawaban benar karena follow-through: benar menurut jawaban siswa sendiri sebelumnya)\n"),
+        });
+    }
     out
 }

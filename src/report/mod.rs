@@ -5,6 +5,7 @@ pub mod bench;
 pub mod check;
 pub mod doc;
 pub mod lang;
+pub mod practice;
 pub mod sheets;
 
 use crate::num::Shown;
@@ -131,6 +132,27 @@ impl Style {
         t.to_string()
     }
 
+    /// A step below its title: the formula, the values substituted, the
+    /// results (`⇒`) and the note, one per line.
+    pub fn step_body(&self, s: &Step) -> String {
+        let mut out = String::new();
+        if !s.formula.is_empty() {
+            out.push_str(&format!("    {}\n", s.formula));
+        }
+        for (k, v) in &s.values {
+            out.push_str(&self.named("    ", k, v));
+            out.push('\n');
+        }
+        for (k, v) in &s.result {
+            out.push_str(&self.named("  ⇒ ", k, v));
+            out.push('\n');
+        }
+        if let Some(n) = &s.note {
+            out.push_str(&format!("    ({n})\n"));
+        }
+        out
+    }
+
     /// `name = value`, with a matrix on its own lines.
     pub fn named(&self, indent: &str, name: &str, v: &Val) -> String {
         if v.is_matrix() {
@@ -160,20 +182,7 @@ impl Report {
                 }
             }
             out.push_str(&format!("\nStep {}. {}\n", i + 1, s.title));
-            if !s.formula.is_empty() {
-                out.push_str(&format!("    {}\n", s.formula));
-            }
-            for (k, v) in &s.values {
-                out.push_str(&style.named("    ", k, v));
-                out.push('\n');
-            }
-            for (k, v) in &s.result {
-                out.push_str(&style.named("  ⇒ ", k, v));
-                out.push('\n');
-            }
-            if let Some(n) = &s.note {
-                out.push_str(&format!("    ({n})\n"));
-            }
+            out.push_str(&style.step_body(s));
         }
         out.push_str("\nAnswer\n");
         for (k, v) in &self.result {
@@ -332,7 +341,8 @@ pub fn exact_json(v: &Val) -> Value {
     }
 }
 
-fn step_json(s: &Step) -> Value {
+/// A step as JSON (SPEC §3).
+pub fn step_json(s: &Step) -> Value {
     let obj = |kv: &[(String, Val)], f: fn(&Val) -> Value| {
         Value::Object(kv.iter().map(|(k, v)| (k.clone(), f(v))).collect())
     };

@@ -5,6 +5,8 @@
 
 pub mod check;
 pub mod diagnose;
+pub mod follow;
 pub mod generate;
 pub mod keys;
+pub mod practice;
 pub mod solve;

@@ -7,7 +7,7 @@ use crate::stages::trace::Val;
 
 /// A judged value (a number, or a list judged element by element).
 #[derive(Clone, Debug, PartialEq)]
-pub(super) struct Judged {
+pub(crate) struct Judged {
     pub verdict: Verdict,
     /// The stable code: `correct.exact`, `correct.tolerance`,
     /// `correct.rounded`, `too_coarse`, `wrong`, `unparseable`, `missing`.
@@ -16,7 +16,7 @@ pub(super) struct Judged {
 }
 
 impl Judged {
-    pub(super) fn new(verdict: Verdict, code: &'static str, note: impl Into<String>) -> Judged {
+    pub(crate) fn new(verdict: Verdict, code: &'static str, note: impl Into<String>) -> Judged {
         Judged {
             verdict,
             code,
@@ -29,7 +29,7 @@ impl Judged {
 /// `carry`: also accept a decimal within one unit of its last written digit
 /// (used when matching mistaken values: students carry rounded intermediate
 /// values forward, as the text does with 2 × 0.041 = 0.082).
-pub(super) fn judge(
+pub(crate) fn judge(
     given: &toml::Value,
     expected: &Val,
     s: &Settings,
@@ -42,25 +42,12 @@ pub(super) fn judge(
             None => Judged::new(Verdict::Unparseable, "unparseable", "expected one number"),
         },
         Val::List(items) => {
-            let parts: Vec<toml::Value> = match given {
-                toml::Value::Array(a) => a.clone(),
-                toml::Value::String(t) => {
-                    let inner = t
-                        .trim()
-                        .trim_start_matches(['(', '['])
-                        .trim_end_matches([')', ']']);
-                    crate::num::expr::split_top_level(inner)
-                        .into_iter()
-                        .map(|x| toml::Value::String(x.trim().to_string()))
-                        .collect()
-                }
-                _ => {
-                    return Judged::new(
-                        Verdict::Unparseable,
-                        "unparseable",
-                        format!("expected a list of {} values", items.len()),
-                    )
-                }
+            let Some(parts) = list_parts(given) else {
+                return Judged::new(
+                    Verdict::Unparseable,
+                    "unparseable",
+                    format!("expected a list of {} values", items.len()),
+                );
             };
             // A projected point may be given as (xp, yp): zp = d is the plane.
             let prefix_ok = key.starts_with("project.") && parts.len() == items.len() - 1;
@@ -136,6 +123,62 @@ pub(super) fn judge(
             "unparseable",
             "this key holds several answers: give them one by one",
         ),
+    }
+}
+
+/// The parts of a list answer: a TOML array, or `(a, b, c)` written as text.
+fn list_parts(given: &toml::Value) -> Option<Vec<toml::Value>> {
+    match given {
+        toml::Value::Array(a) => Some(a.clone()),
+        toml::Value::String(t) => {
+            let inner = t
+                .trim()
+                .trim_start_matches(['(', '['])
+                .trim_end_matches([')', ']']);
+            Some(
+                crate::num::expr::split_top_level(inner)
+                    .into_iter()
+                    .map(|x| toml::Value::String(x.trim().to_string()))
+                    .collect(),
+            )
+        }
+        _ => None,
+    }
+}
+
+/// The value of an answer, read the way `judge` reads it against a value
+/// shaped like `like` (numbers as f64, a decimal comma as a point); None
+/// when it cannot be read. Follow-through computes with it.
+pub(crate) fn value_of(given: &toml::Value, like: &Val) -> Option<Val> {
+    match like {
+        Val::Num(_) => {
+            let t = scalar_text(given)?.trim().replace(',', ".");
+            let x = parse_expr(&t).ok()?.eval::<f64>().ok()?;
+            Some(Val::num(&x))
+        }
+        Val::List(items) => {
+            let parts = list_parts(given)?;
+            (parts.len() == items.len())
+                .then(|| {
+                    parts
+                        .iter()
+                        .zip(items)
+                        .map(|(g, e)| value_of(g, e))
+                        .collect()
+                })
+                .flatten()
+                .map(Val::List)
+        }
+        Val::Text(t) => {
+            let g = scalar_text(given)?.trim().to_string();
+            let outcode = t.len() == 6 && g.len() <= 6 && g.chars().all(|c| c == '0' || c == '1');
+            Some(Val::Text(if outcode {
+                format!("{g:0>6}")
+            } else {
+                g.to_lowercase()
+            }))
+        }
+        Val::Null | Val::Bool(_) | Val::Map(_) => None,
     }
 }
 

@@ -15,6 +15,7 @@
 //! | correct | `correct.exact` | equal to the exact value (any equivalent form) | 1 |
 //! | correct | `correct.tolerance` | within the relative tolerance | 1 |
 //! | correct | `correct.rounded` | the exact value rounded to the digits written | 1 |
+//! | correct | `correct.follow_through` | wrong, but right given the student's own earlier answers (`--follow-through`) | 1 |
 //! | too_coarse | `too_coarse` | right, but fewer significant figures than required | ½ |
 //! | wrong | `wrong` | none of the above (diagnosed where a known mistake reproduces it) | 0 |
 //! | missing | `missing` | no answer | 0 |
@@ -25,13 +26,14 @@
 mod judge;
 
 pub use judge::decimal_places;
-use judge::{judge, Judged};
+pub(crate) use judge::{judge, value_of, Judged};
 
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
 use crate::num::Real;
 use crate::stages::trace::Val;
 use crate::tutor::diagnose::{self, Mistake};
+use crate::tutor::follow;
 use crate::tutor::solve::{self, lookup};
 
 /// A result tree: named values, as `solve` returns them.
@@ -51,6 +53,9 @@ pub struct Settings {
     pub tolerance: f64,
     /// Minimum significant figures of a decimal answer.
     pub sig_figs: u32,
+    /// Credit a wrong answer that is right given the student's own earlier
+    /// answers (`correct.follow_through`).
+    pub follow_through: bool,
 }
 
 impl Default for Settings {
@@ -58,6 +63,7 @@ impl Default for Settings {
         Settings {
             tolerance: DEFAULT_TOLERANCE,
             sig_figs: DEFAULT_SIG_FIGS,
+            follow_through: false,
         }
     }
 }
@@ -164,6 +170,14 @@ impl Marking {
     pub fn count(&self, v: Verdict) -> usize {
         self.answers.iter().filter(|a| a.verdict == v).count()
     }
+    /// How many answers were credited by follow-through (counted among the
+    /// correct ones too).
+    pub fn follow_through(&self) -> usize {
+        self.answers
+            .iter()
+            .filter(|a| a.code == FOLLOW_THROUGH)
+            .count()
+    }
 }
 
 /// The answer keys a problem expects by default: every answer of the parts
@@ -244,6 +258,7 @@ pub fn settings_for(p: &ProblemIn, tolerance: Option<f64>, sig_figs: Option<u32>
     Settings {
         tolerance: tolerance.or(c.tolerance).unwrap_or(DEFAULT_TOLERANCE).abs(),
         sig_figs: sig_figs.or(c.sig_figs).unwrap_or(DEFAULT_SIG_FIGS),
+        follow_through: false,
     }
 }
 
@@ -307,6 +322,9 @@ pub fn mark(
             why,
         });
     }
+    if settings.follow_through {
+        credit_follow_through(p, &result, answers, &mut marked, &settings);
+    }
     let diagnoses = diagnose_all(p, answers, &mut marked, &settings);
     Ok(Marking {
         title: p.title.clone(),
@@ -315,6 +333,78 @@ pub fn mark(
         diagnoses,
         unknown,
         settings,
+    })
+}
+
+/// Credits, as `correct.follow_through`, each wrong answer that is right
+/// when computed from the student's own earlier answers (see
+/// [`crate::tutor::follow`]): pixels from the student's window and projected
+/// points, eye coordinates from the student's u, v, n, and so on.
+fn credit_follow_through(
+    p: &ProblemIn,
+    result: &Tree,
+    answers: &[(String, toml::Value)],
+    marked: &mut [Marked],
+    settings: &Settings,
+) {
+    let inputs = follow::inputs(p);
+    let own = |key: &str| -> Option<Val> {
+        let right = lookup(result, key)?;
+        answers
+            .iter()
+            .find(|(k, _)| k == key)
+            .and_then(|(_, g)| value_of(g, right))
+            .or_else(|| Some(right.clone()))
+    };
+    for m in marked.iter_mut().filter(|m| m.verdict == Verdict::Wrong) {
+        let (Some(given), Some(right)) = (&m.given_value, &m.expected) else {
+            continue;
+        };
+        let ft = follow::recompute(&inputs, &m.key, &own, result);
+        if ft.is_some_and(|ft| follows_through(given, &ft, right, settings, &m.key)) {
+            m.verdict = Verdict::Correct;
+            m.code = FOLLOW_THROUGH;
+            m.note = FOLLOW_THROUGH_NOTE.into();
+        }
+    }
+}
+
+/// The code of an answer credited by follow-through.
+pub const FOLLOW_THROUGH: &str = "correct.follow_through";
+/// The note of an answer credited by follow-through.
+pub const FOLLOW_THROUGH_NOTE: &str = "right given the earlier answers (follow-through)";
+
+/// Whether `given`, wrong against grafika's `right`, is right against the
+/// value `ft` computed from the student's own earlier answers (rounded
+/// earlier values carried forward are accepted).
+pub fn follows_through(
+    given: &toml::Value,
+    ft: &Val,
+    right: &Val,
+    settings: &Settings,
+    key: &str,
+) -> bool {
+    differs(ft, right) && judge(given, ft, settings, key, true).verdict == Verdict::Correct
+}
+
+/// Whether a mistake, whose results are `variants`, reproduces the answer
+/// `given` to `key`: the mistake changes the value (grafika's is `right`)
+/// and the answer is then what the mistake gives.
+pub fn reproduces(
+    variants: &[Tree],
+    key: &str,
+    given: &toml::Value,
+    right: &Val,
+    settings: &Settings,
+) -> bool {
+    variants.iter().any(|tree| {
+        lookup(tree, key).is_some_and(|mv| {
+            differs(mv, right)
+                && matches!(
+                    judge(given, mv, settings, key, true).verdict,
+                    Verdict::Correct | Verdict::TooCoarse
+                )
+        })
     })
 }
 
@@ -347,18 +437,7 @@ fn diagnose_all(
             let Some(right) = &marked[i].expected else {
                 continue;
             };
-            // The mistake must change this answer, and the answer must then
-            // be what the mistake gives.
-            let hit = variants.iter().any(|tree| {
-                lookup(tree, key).is_some_and(|mv| {
-                    differs(mv, right)
-                        && matches!(
-                            judge(given, mv, settings, key, true).verdict,
-                            Verdict::Correct | Verdict::TooCoarse
-                        )
-                })
-            });
-            if hit {
+            if reproduces(&variants, key, given, right, settings) {
                 marked[i].diagnosis.push(m.code);
                 explained.push(key.clone());
             }

@@ -1,0 +1,94 @@
+//! The `grafika practice` command line: the problem (a file, or drawn like
+//! `generate`'s first problem), then the session on standard input and
+//! output. On a terminal a prompt is shown and verdicts are coloured (not
+//! with `NO_COLOR`); from a pipe each line is an answer or a command, echoed
+//! after `> `; with `--json` each event is one line of JSON.
+
+use crate::cli::args::PracticeArgs;
+use crate::cli::check::valid_tolerance;
+use crate::error::{Error, Result};
+use crate::input::problem::ProblemIn;
+use crate::report::practice::{event_json, event_text, intro, Look, PROMPT};
+use crate::report::Style;
+use crate::tutor::check;
+use crate::tutor::generate;
+use crate::tutor::practice::{self, Event};
+use std::io::{BufRead, IsTerminal, Write};
+
+/// Runs `grafika practice`, printing as it goes.
+pub fn run(a: &PracticeArgs, json: bool, style: &Style) -> Result<()> {
+    valid_tolerance(a.tolerance)?;
+    let (p, drawn, seed) = match (&a.file, a.topic) {
+        (Some(f), _) if f.as_os_str() == "-" => {
+            return Err(Error::new(
+                "file",
+                "standard input holds the answers: give the problem as a file",
+            ))
+        }
+        (Some(f), _) => (ProblemIn::read(f)?, None, None),
+        (None, Some(t)) => {
+            let seed = a.seed.unwrap_or_else(clock_seed);
+            let mut exam = generate::exam(&[t], a.difficulty, 1, seed)?;
+            let g = exam
+                .pop()
+                .ok_or_else(|| Error::new("topic", "no problem drawn"))?;
+            (g.problem, Some((t, a.difficulty)), Some(seed))
+        }
+        (None, None) => return Err(Error::new("file", "give a problem file or --topic")),
+    };
+    let settings = check::settings_for(&p, a.tolerance, a.sig_figs);
+    let plan = practice::plan(&p, settings, drawn)?;
+    let terminal = std::io::stdin().is_terminal();
+    let look = Look {
+        style: Style {
+            exact_mode: true,
+            ..*style
+        },
+        color: !json
+            && std::io::stdout().is_terminal()
+            && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty()),
+    };
+    let out = std::io::stdout();
+    let say = |text: &str| {
+        let mut o = out.lock();
+        let _ = o.write_all(text.as_bytes());
+        let _ = o.flush();
+    };
+    if !json {
+        say(&intro(&plan, &look, seed));
+    }
+    let stdin = std::io::stdin();
+    let mut lines = stdin.lock();
+    let next_line = || {
+        if terminal && !json {
+            say(PROMPT);
+        }
+        let mut buf = Vec::new();
+        match lines.read_until(b'\n', &mut buf) {
+            Ok(0) | Err(_) => None,
+            Ok(_) => {
+                let line = String::from_utf8_lossy(&buf).trim_end().to_string();
+                if !terminal && !json {
+                    say(&format!("{PROMPT}{line}\n"));
+                }
+                Some(line)
+            }
+        }
+    };
+    let emit = |e: &Event| {
+        if json {
+            say(&format!("{}\n", event_json(e)));
+        } else {
+            say(&event_text(e, &look));
+        }
+    };
+    practice::run(&plan, next_line, emit);
+    Ok(())
+}
+
+/// A seed from the clock, short enough to type again.
+fn clock_seed() -> u64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(1, |d| d.as_nanos() as u64 % 1_000_000)
+}

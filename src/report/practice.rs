@@ -1,0 +1,467 @@
+//! `grafika practice` for people (English or Bahasa Indonesia, lines within
+//! 80 columns, colour only when asked for) and for scripts (one JSON object
+//! per event, JSON Lines, with the keys of `check`).
+
+use crate::report::lang::{tr, Lang};
+use crate::report::{exact_json, step_json, value_json, Style};
+use crate::stages::trace::{Step, Val};
+use crate::tutor::practice::{Again, Event, Outcome, Plan, Summary};
+use serde_json::{json, Value};
+
+/// Lines are wrapped to this many columns.
+pub const WIDTH: usize = 78;
+
+/// How the words look: numbers and language, and whether to colour them
+/// (only on a terminal, never with `NO_COLOR`).
+#[derive(Clone, Copy, Debug)]
+pub struct Look {
+    /// Numbers and language.
+    pub style: Style,
+    /// ANSI colours on or off.
+    pub color: bool,
+}
+
+#[derive(Clone, Copy)]
+enum Tone {
+    Good,
+    Partial,
+    Bad,
+    Quiet,
+}
+
+impl Look {
+    fn paint(&self, tone: Tone, text: &str) -> String {
+        if !self.color {
+            return text.to_string();
+        }
+        let code = match tone {
+            Tone::Good => "32",
+            Tone::Partial => "33",
+            Tone::Bad => "31",
+            Tone::Quiet => "2",
+        };
+        format!("\x1b[{code}m{text}\x1b[0m")
+    }
+    fn tr<'a>(&self, en: &'a str, id: &'a str) -> &'a str {
+        tr(self.style.lang, en, id)
+    }
+}
+
+/// Words wrapped to [`WIDTH`] columns, each line after the first indented.
+pub fn wrap(text: &str, indent: &str) -> String {
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    for word in text.split_whitespace() {
+        let len = line.chars().count();
+        if len > 0 && len + 1 + word.chars().count() > WIDTH {
+            lines.push(std::mem::take(&mut line));
+            line.push_str(indent);
+        } else if len > 0 && line != indent {
+            line.push(' ');
+        }
+        line.push_str(word);
+    }
+    lines.push(line);
+    lines.join("\n")
+}
+
+/// The heading of a session: the title, the statement, how to answer.
+pub fn intro(plan: &Plan, look: &Look, seed: Option<u64>) -> String {
+    let n = plan.items.len();
+    let mut out = match (look.style.lang, seed) {
+        (Lang::En, Some(s)) => format!("Practice: {} ({n} values, seed {s})\n", plan.title),
+        (Lang::En, None) => format!("Practice: {} ({n} values)\n", plan.title),
+        (Lang::Id, Some(s)) => format!("Latihan: {} ({n} nilai, seed {s})\n", plan.title),
+        (Lang::Id, None) => format!("Latihan: {} ({n} nilai)\n", plan.title),
+    };
+    if let Some(st) = &plan.statement {
+        out.push_str(&wrap(st, ""));
+        out.push('\n');
+    }
+    let how = look.tr(
+        "Answer each value when asked. Numbers: 0.8, 4/5, sqrt(2)/2; points: \
+         (x, y, z). With decimal commas, separate the parts by ; (0,8; 0,6; 0). \
+         Commands: hint, show, skip, back, quit.",
+        "Jawab setiap nilai yang ditanyakan. Angka: 0,8, 4/5, sqrt(2)/2; titik: \
+         (x, y, z). Dengan koma desimal, pisahkan komponen dengan ; (0,8; 0,6; 0). \
+         Perintah: hint (petunjuk), show (lihat), skip (lewati), back (kembali), \
+         quit (keluar).",
+    );
+    out.push_str(&look.paint(Tone::Quiet, &wrap(how, "")));
+    out.push('\n');
+    out
+}
+
+/// The prompt printed before a line is read from a terminal.
+pub const PROMPT: &str = "> ";
+
+/// One event as text (ends with a newline).
+pub fn event_text(ev: &Event, look: &Look) -> String {
+    match ev {
+        Event::Ask {
+            index,
+            total,
+            key,
+            expected,
+            again,
+        } => {
+            let mut out = again
+                .as_ref()
+                .map(|a| again_text(a, look))
+                .unwrap_or_default();
+            if again.is_none() || *again == Some(Again::NothingBefore) {
+                out.push('\n');
+            }
+            let head = format!("[{}/{}] {}", index + 1, total, label(key, look.style.lang));
+            let shape = shape(key, expected, look.style.lang);
+            out.push_str(&wrap(&format!("{head}  {shape}"), "    "));
+            out.push('\n');
+            out
+        }
+        Event::Verdict(o) => verdict_text(o, look),
+        Event::Hint { level, step, .. } => hint_text(*level, step.as_ref(), look),
+        Event::Show {
+            key,
+            expected,
+            step,
+        } => {
+            let mut out = String::new();
+            if let Some(s) = step {
+                out.push_str(&format!("  {}\n", s.title));
+                out.push_str(&look.style.step_body(s));
+            }
+            let answer = look.tr("Answer", "Jawaban");
+            out.push_str(&look.style.named(&format!("  {answer}: "), key, expected));
+            out.push('\n');
+            out
+        }
+        Event::Skip { .. } => format!("  {}\n", look.tr("Skipped.", "Dilewati.")),
+        Event::Summary(s) => summary_text(s, look),
+    }
+}
+
+fn again_text(a: &Again, look: &Look) -> String {
+    let t = match a {
+        Again::Empty => look.tr(
+            "Type an answer, or a command: hint, show, skip, back, quit.",
+            "Ketik jawaban, atau perintah: hint, show, skip, back, quit.",
+        ),
+        Again::Unreadable => return String::new(),
+        Again::NothingBefore => look.tr(
+            "This is the first value: there is nothing to go back to.",
+            "Ini nilai pertama: tidak ada langkah sebelumnya.",
+        ),
+        Again::NoMoreHints => look.tr(
+            "No more hints: type show to see the step worked out.",
+            "Petunjuk sudah habis: ketik show untuk melihat langkahnya.",
+        ),
+    };
+    format!("  {}\n", wrap(t, "  "))
+}
+
+fn verdict_text(o: &Outcome, look: &Look) -> String {
+    let lang = look.style.lang;
+    let (tone, head) = match o.code {
+        "correct.exact" => (Tone::Good, tr(lang, "✓ correct", "✓ benar").to_string()),
+        "correct.tolerance" => (
+            Tone::Good,
+            tr(
+                lang,
+                "✓ correct (within the tolerance)",
+                "✓ benar (dalam toleransi)",
+            )
+            .to_string(),
+        ),
+        "correct.rounded" => (
+            Tone::Good,
+            tr(lang, "✓ correct (rounded)", "✓ benar (dibulatkan)").to_string(),
+        ),
+        "correct.follow_through" => (
+            Tone::Partial,
+            tr(
+                lang,
+                "✓ correct given your earlier answers (follow-through)",
+                "✓ benar menurut jawabanmu sebelumnya (follow-through)",
+            )
+            .to_string(),
+        ),
+        "too_coarse" => (
+            Tone::Partial,
+            match lang {
+                Lang::En => {
+                    "½ right, but rounded too coarsely: write more significant figures".to_string()
+                }
+                Lang::Id => {
+                    "½ benar, tetapi pembulatannya terlalu kasar: tulis lebih banyak angka penting"
+                        .to_string()
+                }
+            },
+        ),
+        "wrong" => (Tone::Bad, tr(lang, "✗ wrong", "✗ salah").to_string()),
+        _ => {
+            let shape = shape(&o.key, &o.expected, lang);
+            let how = if shape.is_empty() {
+                tr(lang, "a number", "sebuah angka").to_string()
+            } else {
+                shape
+            };
+            (
+                Tone::Bad,
+                match lang {
+                    Lang::En => format!("✗ cannot read this answer: write {how}, or a command"),
+                    Lang::Id => {
+                        format!("✗ jawaban ini tidak terbaca: tulis {how}, atau sebuah perintah")
+                    }
+                },
+            )
+        }
+    };
+    let mut out = format!("  {}\n", look.paint(tone, &wrap(&head, "    ")));
+    for m in &o.mistakes {
+        let line = format!(
+            "{}: {} [{}]",
+            tr(lang, "Likely mistake", "Kemungkinan kesalahan"),
+            m.description,
+            m.code
+        );
+        out.push_str(&format!("    {}\n", wrap(&line, "      ")));
+    }
+    if o.code == "wrong" && o.mistakes.is_empty() {
+        let tip = tr(
+            lang,
+            "Type back to try this value again (hint and show help there).",
+            "Ketik back untuk mencoba nilai ini lagi (hint dan show membantu di sana).",
+        );
+        out.push_str(&format!(
+            "    {}\n",
+            look.paint(Tone::Quiet, &wrap(tip, "    "))
+        ));
+    }
+    out
+}
+
+fn hint_text(level: u8, step: Option<&Step>, look: &Look) -> String {
+    let Some(s) = step else {
+        return format!(
+            "  {}\n",
+            look.tr(
+                "No hint for this value.",
+                "Tidak ada petunjuk untuk nilai ini."
+            )
+        );
+    };
+    let mut out = match (look.style.lang, level) {
+        (Lang::En, 1) => format!("  Hint 1: {}\n", s.title),
+        (Lang::Id, 1) => format!("  Petunjuk 1: {}\n", s.title),
+        (Lang::En, _) => "  Hint 2: the values substituted\n".to_string(),
+        (Lang::Id, _) => "  Petunjuk 2: nilai-nilai yang disubstitusikan\n".to_string(),
+    };
+    if !s.formula.is_empty() {
+        out.push_str(&format!("    {}\n", s.formula));
+    }
+    if level >= 2 {
+        for (k, v) in &s.values {
+            out.push_str(&look.style.named("    ", k, v));
+            out.push('\n');
+        }
+    }
+    out
+}
+
+fn summary_text(s: &Summary, look: &Look) -> String {
+    let lang = look.style.lang;
+    let pts = crate::report::fmt_dec(s.points, 4);
+    let pts = if lang == Lang::Id {
+        pts.replace('.', ",")
+    } else {
+        pts
+    };
+    let mut out = match lang {
+        Lang::En => format!(
+            "\nSummary: {pts}/{} points\n  correct {} ({} by follow-through), too coarse {}, wrong {},\n  skipped {}, revealed {}, not reached {}; hints used {}\n",
+            s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
+        ),
+        Lang::Id => format!(
+            "\nRingkasan: {pts}/{} poin\n  benar {} ({} karena follow-through), terlalu kasar {}, salah {},\n  dilewati {}, dilihat {}, belum dijawab {}; petunjuk dipakai {}\n",
+            s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
+        ),
+    };
+    if !s.mistakes.is_empty() {
+        out.push_str(&format!(
+            "  {}\n",
+            tr(lang, "Mistakes made:", "Kesalahan yang dibuat:")
+        ));
+        for (m, keys) in &s.mistakes {
+            let line = format!("• {} [{}]: {}", m.description, m.code, keys.join(", "));
+            out.push_str(&format!("    {}\n", wrap(&line, "      ")));
+        }
+    }
+    let (topic, diff) = (name(&s.next.0), name(&s.next.1));
+    out.push_str(&format!(
+        "  {}: grafika practice --topic {topic} --difficulty {diff}\n",
+        tr(lang, "Practise next", "Latihan berikutnya")
+    ));
+    out
+}
+
+fn name(x: &impl std::fmt::Debug) -> String {
+    format!("{x:?}").to_lowercase()
+}
+
+/// What a key asks for, in a few words.
+pub fn label(key: &str, lang: Lang) -> String {
+    let parts: Vec<&str> = key.split('.').collect();
+    let plane = |p: &str| {
+        match (lang, p) {
+            (Lang::Id, "left") => "kiri",
+            (Lang::Id, "right") => "kanan",
+            (Lang::Id, "bottom") => "bawah",
+            (Lang::Id, "top") => "atas",
+            (Lang::Id, "front") => "depan",
+            (Lang::Id, "back") => "belakang",
+            (_, p) => p,
+        }
+        .to_string()
+    };
+    let t = |en: &str, id: &str| tr(lang, en, id).to_string();
+    let words = match parts[..] {
+        ["view", a @ ("n" | "u" | "v")] => format!("{} {a}", t("camera axis", "sumbu kamera")),
+        ["view", "matrix"] => t("the view matrix V", "matriks view V"),
+        ["view", "points", p] => format!("{} {p}'", t("eye coordinates", "koordinat mata")),
+        ["project", "points", p] => format!("{} {p}''", t("projected point", "titik proyeksi")),
+        ["window", k] => format!("{} {k}", t("window", "window")),
+        ["viewport", "pixels", p] => {
+            format!("{} {p}", t("pixel coordinates of", "koordinat piksel"))
+        }
+        ["shade", "L"] => t("unit vector L", "vektor satuan L"),
+        ["shade", "N"] => t("unit vector N", "vektor satuan N"),
+        ["shade", "R"] => t("reflection vector R", "vektor pantul R"),
+        ["shade", "cos_alpha"] => "cos α = L·N".to_string(),
+        ["shade", "cos_beta"] => "cos β = R·V".to_string(),
+        ["shade", "color"] => t("the colour, clamped to [0, 1]", "warna, dibatasi ke [0, 1]"),
+        ["shade", k] => format!("{} {k}", t("term", "suku")),
+        _ => return clip_label(&parts, lang, plane),
+    };
+    format!("{words} ({key})")
+}
+
+fn clip_label(parts: &[&str], lang: Lang, plane: impl Fn(&str) -> String) -> String {
+    let key = parts.join(".");
+    let rest = match parts.get(1).map(|p| p.parse::<usize>()) {
+        Some(Ok(_)) => &parts[2..],
+        _ => &parts[1.min(parts.len())..],
+    };
+    let t = |en: &str, id: &str| tr(lang, en, id).to_string();
+    let words = match rest {
+        ["code0"] => t("outcode of P0", "kode wilayah P0"),
+        ["code1"] => t("outcode of P1", "kode wilayah P1"),
+        ["intersections", p, "t"] => format!("t {} {}", t("at the plane", "pada bidang"), plane(p)),
+        ["intersections", p, "point"] => {
+            format!(
+                "{} {}",
+                t("intersection with the plane", "titik potong dengan bidang"),
+                plane(p)
+            )
+        }
+        ["segment"] => t("the clipped segment", "segmen hasil kliping"),
+        ["status"] => t("the status", "status"),
+        _ => return key,
+    };
+    format!("{words} ({key})")
+}
+
+/// How to write the answer: its shape.
+fn shape(key: &str, expected: &Val, lang: Lang) -> String {
+    let t = |en: &str, id: &str| tr(lang, en, id).to_string();
+    if key.ends_with(".segment") {
+        return t(
+            "(x0, y0, z0); (x1, y1, z1), or none",
+            "(x0, y0, z0); (x1, y1, z1), atau none",
+        );
+    }
+    if key.ends_with(".status") {
+        return "accepted | rejected | clipped".to_string();
+    }
+    match expected {
+        Val::Text(_) => t("6 bits, bit 1 rightmost", "6 bit, bit 1 paling kanan"),
+        v if v.is_matrix() => t("4 rows, separated by ;", "4 baris, dipisah dengan ;"),
+        Val::List(items)
+            if key.starts_with("shade.") && items.len() == 3 && !key.ends_with(['L', 'N', 'R']) =>
+        {
+            "(r, g, b)".to_string()
+        }
+        Val::List(items) => ["(x)", "(x, y)", "(x, y, z)"]
+            .get(items.len().saturating_sub(1))
+            .map_or_else(|| format!("({} values)", items.len()), |s| s.to_string()),
+        _ => String::new(),
+    }
+}
+
+/// A value as `{"decimal": ..., "exact": ...}` (as `check` gives `expected`).
+fn value(v: &Val) -> Value {
+    json!({ "decimal": value_json(v), "exact": exact_json(v) })
+}
+
+/// One event as a JSON object (one line of JSON Lines).
+pub fn event_json(ev: &Event) -> Value {
+    match ev {
+        Event::Ask {
+            index,
+            total,
+            key,
+            again,
+            ..
+        } => json!({
+            "event": "ask", "key": key, "index": index + 1, "total": total,
+            "again": again.as_ref().map(|a| match a {
+                Again::Empty => "empty",
+                Again::Unreadable => "unreadable",
+                Again::NothingBefore => "nothing_before",
+                Again::NoMoreHints => "no_more_hints",
+            }),
+        }),
+        Event::Verdict(o) => json!({
+            "event": "verdict", "key": o.key, "given": o.given,
+            "verdict": o.verdict.as_str(), "code": o.code,
+            "expected": value(&o.expected), "note": o.note,
+            "mistakes": o.mistakes.iter().map(|m| m.code).collect::<Vec<_>>(),
+            "follow_through": o.follow_through.as_ref().map(value_json),
+        }),
+        Event::Hint { key, level, step } => json!({
+            "event": "hint", "key": key, "level": level,
+            "title": step.as_ref().map(|s| s.title.clone()),
+            "formula": step.as_ref().map(|s| s.formula.clone()),
+            "values": step.as_ref().filter(|_| *level >= 2).map(|s| {
+                Value::Object(s.values.iter().map(|(k, v)| (k.clone(), value_json(v))).collect())
+            }),
+        }),
+        Event::Show {
+            key,
+            expected,
+            step,
+        } => json!({
+            "event": "show", "key": key, "expected": value(expected),
+            "step": step.as_ref().map(step_json),
+        }),
+        Event::Skip { key } => json!({ "event": "skip", "key": key }),
+        Event::Summary(s) => summary_json(s),
+    }
+}
+
+fn summary_json(s: &Summary) -> Value {
+    json!({
+        "event": "summary",
+        "score": { "points": s.points, "total": s.total,
+                   "fraction": if s.total == 0 { 1.0 } else { s.points / s.total as f64 } },
+        "counts": {
+            "correct": s.correct, "follow_through": s.follow_through,
+            "too_coarse": s.too_coarse, "wrong": s.wrong, "skipped": s.skipped,
+            "revealed": s.revealed, "unanswered": s.unanswered,
+        },
+        "hints": s.hints,
+        "mistakes": s.mistakes.iter().map(|(m, keys)| json!({
+            "code": m.code, "mistake": m.description, "keys": keys,
+        })).collect::<Vec<_>>(),
+        "next": { "topic": name(&s.next.0), "difficulty": name(&s.next.1) },
+    })
+}
