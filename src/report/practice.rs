@@ -49,20 +49,45 @@ impl Look {
 
 /// Words wrapped to [`WIDTH`] columns, each line after the first indented.
 pub fn wrap(text: &str, indent: &str) -> String {
+    wrap_after("", text, indent)
+}
+
+/// `lead` and then the words, wrapped to [`WIDTH`] columns, each line after
+/// the first indented.
+fn wrap_after(lead: &str, text: &str, indent: &str) -> String {
     let mut lines: Vec<String> = Vec::new();
-    let mut line = String::new();
+    let mut line = lead.to_string();
+    let mut fresh = true;
     for word in text.split_whitespace() {
-        let len = line.chars().count();
-        if len > 0 && len + 1 + word.chars().count() > WIDTH {
+        if !fresh && line.chars().count() + 1 + word.chars().count() > WIDTH {
             lines.push(std::mem::take(&mut line));
             line.push_str(indent);
-        } else if len > 0 && line != indent {
+        } else if !fresh {
             line.push(' ');
         }
         line.push_str(word);
+        fresh = false;
     }
     lines.push(line);
     lines.join("\n")
+}
+
+/// Each line wrapped to [`WIDTH`] columns, continued with its own indent
+/// and two spaces more (a matrix table is left whole).
+fn wrap_lines(text: &str) -> String {
+    let mut out = String::new();
+    for line in text.lines() {
+        if line.chars().count() <= WIDTH || line.trim_start().starts_with(['│', '┌', '├', '└'])
+        {
+            out.push_str(line);
+        } else {
+            let lead: String = line.chars().take_while(|c| *c == ' ').collect();
+            let more = format!("{lead}  ");
+            out.push_str(&wrap_after(&lead, line.trim_start(), &more));
+        }
+        out.push('\n');
+    }
+    out
 }
 
 /// The heading of a session: the title, the statement, how to answer.
@@ -114,12 +139,17 @@ pub fn event_text(ev: &Event, look: &Look) -> String {
             }
             let head = format!("[{}/{}] {}", index + 1, total, label(key, look.style.lang));
             let shape = shape(key, expected, look.style.lang);
-            out.push_str(&wrap(&format!("{head}  {shape}"), "    "));
+            let line = format!("{head}  {shape}");
+            if line.chars().count() <= WIDTH {
+                out.push_str(&line);
+            } else {
+                out.push_str(&format!("{}\n    {shape}", wrap(&head, "    ")));
+            }
             out.push('\n');
             out
         }
         Event::Verdict(o) => verdict_text(o, look),
-        Event::Hint { level, step, .. } => hint_text(*level, step.as_ref(), look),
+        Event::Hint { level, step, .. } => wrap_lines(&hint_text(*level, step.as_ref(), look)),
         Event::Show {
             key,
             expected,
@@ -133,7 +163,7 @@ pub fn event_text(ev: &Event, look: &Look) -> String {
             let answer = look.tr("Answer", "Jawaban");
             out.push_str(&look.style.named(&format!("  {answer}: "), key, expected));
             out.push('\n');
-            out
+            wrap_lines(&out)
         }
         Event::Skip { .. } => format!("  {}\n", look.tr("Skipped.", "Dilewati.")),
         Event::Summary(s) => summary_text(s, look),
@@ -156,7 +186,7 @@ fn again_text(a: &Again, look: &Look) -> String {
             "Petunjuk sudah habis: ketik show untuk melihat langkahnya.",
         ),
     };
-    format!("  {}\n", wrap(t, "  "))
+    format!("{}\n", wrap_after("  ", t, "  "))
 }
 
 fn verdict_text(o: &Outcome, look: &Look) -> String {
@@ -216,7 +246,8 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
             )
         }
     };
-    let mut out = format!("  {}\n", look.paint(tone, &wrap(&head, "    ")));
+    let mut out = look.paint(tone, &wrap_after("  ", &head, "    "));
+    out.push('\n');
     for m in &o.mistakes {
         let line = format!(
             "{}: {} [{}]",
@@ -224,7 +255,7 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
             m.description,
             m.code
         );
-        out.push_str(&format!("    {}\n", wrap(&line, "      ")));
+        out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
     }
     if o.code == "wrong" && o.mistakes.is_empty() {
         let tip = tr(
@@ -232,10 +263,8 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
             "Type back to try this value again (hint and show help there).",
             "Ketik back untuk mencoba nilai ini lagi (hint dan show membantu di sana).",
         );
-        out.push_str(&format!(
-            "    {}\n",
-            look.paint(Tone::Quiet, &wrap(tip, "    "))
-        ));
+        out.push_str(&look.paint(Tone::Quiet, &wrap_after("    ", tip, "    ")));
+        out.push('\n');
     }
     out
 }
@@ -293,7 +322,7 @@ fn summary_text(s: &Summary, look: &Look) -> String {
         ));
         for (m, keys) in &s.mistakes {
             let line = format!("• {} [{}]: {}", m.description, m.code, keys.join(", "));
-            out.push_str(&format!("    {}\n", wrap(&line, "      ")));
+            out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
         }
     }
     let (topic, diff) = (name(&s.next.0), name(&s.next.1));

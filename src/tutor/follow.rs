@@ -237,14 +237,15 @@ fn projected(inp: &Inputs, name: &str, own: &Own) -> Option<Val> {
     Some(Val::vec3(&vec::v3(d * e[0] / e[2], d * e[1] / e[2], d)))
 }
 
-/// bottom = −top,  right = aspect·top,  left = −right,
-/// height = top − bottom,  width = right − left.
+/// bottom = −top,  left = −aspect·top,  right = aspect·top,
+/// height = top − bottom,  width = right − left (in the order asked: top,
+/// bottom, left, right, height, width).
 fn window_edge(inp: &Inputs, k: &str, own: &Own) -> Option<Val> {
     let g = |k: &str| get1(own, &format!("window.{k}"));
     let x = match k {
         "bottom" => -g("top")?,
         "right" => inp.aspect? * g("top")?,
-        "left" => -g("right")?,
+        "left" => -(inp.aspect? * g("top")?),
         "height" => g("top")? - g("bottom")?,
         "width" => g("right")? - g("left")?,
         _ => return None,

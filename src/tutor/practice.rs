@@ -16,7 +16,9 @@ use crate::error::Result;
 use crate::input::problem::ProblemIn;
 use crate::num::Real;
 use crate::stages::trace::{Step, Val};
-use crate::tutor::check::{self, judge, value_of, Judged, Settings, Verdict, FOLLOW_THROUGH};
+use crate::tutor::check::{
+    self, judge, value_of, written, Judged, Settings, Verdict, FOLLOW_THROUGH,
+};
 use crate::tutor::diagnose::{self, Mistake};
 use crate::tutor::follow::{self, Inputs};
 use crate::tutor::generate::{Difficulty, Topic};
@@ -688,6 +690,15 @@ fn unreadable(given: &toml::Value, expected: &Val, key: &str) -> bool {
         }
         Val::List(_) if key.ends_with(".segment") && none => false,
         Val::Num(_) | Val::List(_) => value_of(given, expected).is_none(),
+        Val::Text(_) if key.ends_with(".status") => !matches!(
+            written(given).trim().to_lowercase().as_str(),
+            "accepted" | "rejected" | "clipped"
+        ),
+        Val::Text(_) => {
+            let t = written(given);
+            let t = t.trim();
+            t.is_empty() || t.len() > 6 || !t.chars().all(|c| c == '0' || c == '1')
+        }
         _ => false,
     }
 }
