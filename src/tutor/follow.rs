@@ -5,8 +5,8 @@
 //! `correct.follow_through`.
 //!
 //! Each rule is the text's formula for one key, fed with the earlier values
-//! through `own` (the student's value of a key when given and readable,
-//! grafika's otherwise). The problem's inputs (Pe, Vup, the points, d, the
+//! through `own` (the student's value of a key when it was wrong, grafika's
+//! otherwise: a right but rounded answer carries no rounding forward). The problem's inputs (Pe, Vup, the points, d, the
 //! viewport, the segment ends, the lighting constants) are never the
 //! student's. Values are f64: a follow-through value has no exact form.
 
@@ -18,8 +18,8 @@ use crate::stages::trace::{NoTrace, Val};
 use crate::stages::window::{viewport_xy, Window};
 use crate::tutor::solve::lookup;
 
-/// The student's value of an earlier key, or grafika's when the student gave
-/// none that can be read.
+/// The student's value of an earlier key when it was wrong, or grafika's
+/// (for a right answer, one not given, or one that cannot be read).
 pub type Own<'a> = dyn Fn(&str) -> Option<Val> + 'a;
 
 /// The problem's inputs, as f64 (a part is empty when the problem lacks it).

@@ -520,18 +520,19 @@ impl<'a> Session<'a> {
         }
     }
 
-    /// The student's value of an earlier key when they gave a readable one,
-    /// else grafika's.
+    /// The student's value of an earlier key when it was wrong (credited by
+    /// follow-through or not), else grafika's: a right answer, maybe
+    /// rounded, carries grafika's value forward.
     fn own(&self, key: &str) -> Option<Val> {
         let right = lookup(&self.plan.result, key)?;
         let given = self
             .outcomes
             .iter()
             .flatten()
-            .find(|o| o.key == key)
+            .find(|o| o.key == key && (o.verdict == Verdict::Wrong || o.code == FOLLOW_THROUGH))
             .and_then(|o| o.given.as_deref());
         given
-            .and_then(|g| value_of(&answer_value(g, right), right))
+            .and_then(|g| value_of(&answer_value(g, right), right, key))
             .or_else(|| Some(right.clone()))
     }
 
@@ -684,12 +685,8 @@ fn easier(d: Difficulty) -> Difficulty {
 fn unreadable(given: &toml::Value, expected: &Val, key: &str) -> bool {
     let none = matches!(given, toml::Value::String(t) if matches!(t.trim().to_lowercase().as_str(), "none" | "null" | "rejected"));
     match expected {
-        Val::List(items) if key.starts_with("project.") && items.len() == 3 => {
-            let short = Val::List(items[..2].to_vec());
-            value_of(given, expected).is_none() && value_of(given, &short).is_none()
-        }
         Val::List(_) if key.ends_with(".segment") && none => false,
-        Val::Num(_) | Val::List(_) => value_of(given, expected).is_none(),
+        Val::Num(_) | Val::List(_) => value_of(given, expected, key).is_none(),
         Val::Text(_) if key.ends_with(".status") => !matches!(
             written(given).trim().to_lowercase().as_str(),
             "accepted" | "rejected" | "clipped"

@@ -146,10 +146,26 @@ fn list_parts(given: &toml::Value) -> Option<Vec<toml::Value>> {
     }
 }
 
-/// The value of an answer, read the way `judge` reads it against a value
-/// shaped like `like` (numbers as f64, a decimal comma as a point); None
-/// when it cannot be read. Follow-through computes with it.
-pub(crate) fn value_of(given: &toml::Value, like: &Val) -> Option<Val> {
+/// The value of an answer to `key`, read the way `judge` reads it against a
+/// value shaped like `like` (numbers as f64, a decimal comma as a point; a
+/// projected point given as (xp, yp) takes zp = d from `like`); None when it
+/// cannot be read. Follow-through computes with it.
+pub(crate) fn value_of(given: &toml::Value, like: &Val, key: &str) -> Option<Val> {
+    if let (true, Val::List(items), Some(parts)) =
+        (key.starts_with("project."), like, list_parts(given))
+    {
+        if items.len() == 3 && parts.len() == 2 {
+            let mut xy = read_value(given, &Val::List(items[..2].to_vec()))?;
+            if let Val::List(v) = &mut xy {
+                v.push(items[2].clone());
+            }
+            return Some(xy);
+        }
+    }
+    read_value(given, like)
+}
+
+fn read_value(given: &toml::Value, like: &Val) -> Option<Val> {
     match like {
         Val::Num(_) => {
             let t = scalar_text(given)?.trim().replace(',', ".");
@@ -163,7 +179,7 @@ pub(crate) fn value_of(given: &toml::Value, like: &Val) -> Option<Val> {
                     parts
                         .iter()
                         .zip(items)
-                        .map(|(g, e)| value_of(g, e))
+                        .map(|(g, e)| read_value(g, e))
                         .collect()
                 })
                 .flatten()

@@ -348,12 +348,18 @@ fn credit_follow_through(
     settings: &Settings,
 ) {
     let inputs = follow::inputs(p);
+    // only wrong answers carry forward: a right one (maybe rounded) is grafika's value
+    let wrong: Vec<String> = marked
+        .iter()
+        .filter(|m| m.verdict == Verdict::Wrong)
+        .map(|m| m.key.clone())
+        .collect();
     let own = |key: &str| -> Option<Val> {
         let right = lookup(result, key)?;
         answers
             .iter()
-            .find(|(k, _)| k == key)
-            .and_then(|(_, g)| value_of(g, right))
+            .find(|(k, _)| k == key && wrong.contains(k))
+            .and_then(|(_, g)| value_of(g, right, key))
             .or_else(|| Some(right.clone()))
     };
     for m in marked.iter_mut().filter(|m| m.verdict == Verdict::Wrong) {
@@ -375,8 +381,9 @@ pub const FOLLOW_THROUGH: &str = "correct.follow_through";
 pub const FOLLOW_THROUGH_NOTE: &str = "right given the earlier answers (follow-through)";
 
 /// Whether `given`, wrong against grafika's `right`, is right against the
-/// value `ft` computed from the student's own earlier answers (rounded
-/// earlier values carried forward are accepted).
+/// value `ft` computed from the student's own earlier answers. The earlier
+/// answers are rounded, so a rounded value carried forward is accepted, and
+/// too few significant figures are not held against it.
 pub fn follows_through(
     given: &toml::Value,
     ft: &Val,
@@ -384,7 +391,11 @@ pub fn follows_through(
     settings: &Settings,
     key: &str,
 ) -> bool {
-    differs(ft, right) && judge(given, ft, settings, key, true).verdict == Verdict::Correct
+    differs(ft, right)
+        && matches!(
+            judge(given, ft, settings, key, true).verdict,
+            Verdict::Correct | Verdict::TooCoarse
+        )
 }
 
 /// Whether a mistake, whose results are `variants`, reproduces the answer
