@@ -688,6 +688,25 @@ fn check_follow_through_marks_answer_files_the_same_way() {
     assert!(csv[1].contains(",0,6,"), "6 by follow-through: {}", csv[1]);
 }
 
+#[test]
+fn budis_one_slip_costs_one_answer_with_follow_through() {
+    // Budi took u = n × Vup (problems/answers/triangle/budi.toml): u is
+    // wrong; v = n × u, the eye coordinates, the projections and the pixels
+    // computed from it are right given his u (10 answers); n and the window
+    // do not depend on u (7 right).
+    let m = json_ok(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        "problems/answers/triangle/budi.toml",
+        "--follow-through",
+    ]);
+    assert_eq!(m["counts"]["wrong"], 1);
+    assert_eq!(m["counts"]["correct"], 17);
+    assert_eq!(m["counts"]["follow_through"], 10);
+    assert_eq!(m["diagnosis"][0]["code"], "cross_order");
+}
+
 /// The interactive terminal, through tmux: the prompt, a verdict in colour,
 /// and no colour with NO_COLOR. Skipped (with a message) without tmux.
 #[test]

@@ -189,9 +189,9 @@ fn again_text(a: &Again, look: &Look) -> String {
     format!("{}\n", wrap_after("  ", t, "  "))
 }
 
-fn verdict_text(o: &Outcome, look: &Look) -> String {
-    let lang = look.style.lang;
-    let (tone, head) = match o.code {
+/// The verdict's first line, and its colour.
+fn verdict_head(o: &Outcome, lang: Lang) -> (Tone, String) {
+    match o.code {
         "correct.exact" => (Tone::Good, tr(lang, "✓ correct", "✓ benar").to_string()),
         "correct.tolerance" => (
             Tone::Good,
@@ -245,7 +245,12 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
                 },
             )
         }
-    };
+    }
+}
+
+fn verdict_text(o: &Outcome, look: &Look) -> String {
+    let lang = look.style.lang;
+    let (tone, head) = verdict_head(o, lang);
     let mut out = look.paint(tone, &wrap_after("  ", &head, "    "));
     out.push('\n');
     for m in &o.mistakes {

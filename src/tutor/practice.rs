@@ -740,3 +740,39 @@ pub fn run(
     }
     s.summary()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn commands_in_both_languages_and_answers() {
+        assert_eq!(read_input(" HINT "), Input::Hint);
+        assert_eq!(read_input("petunjuk"), Input::Hint);
+        assert_eq!(read_input("lihat"), Input::Show);
+        assert_eq!(read_input("lewati"), Input::Skip);
+        assert_eq!(read_input("kembali"), Input::Back);
+        assert_eq!(read_input("keluar"), Input::Quit);
+        assert_eq!(read_input("   "), Input::Empty);
+        assert_eq!(read_input(" 4/5 "), Input::Answer("4/5".into()));
+    }
+
+    #[test]
+    fn semicolons_separate_parts_written_with_decimal_commas() {
+        let point = Val::List(vec![Val::num(&0.8), Val::num(&0.6), Val::num(&0.0)]);
+        let v = answer_value("(0,8; 0,6; 0)", &point);
+        assert_eq!(
+            v,
+            toml::Value::Array(vec!["0,8".into(), "0,6".into(), "0".into()])
+        );
+        assert_eq!(answer_value("0.8, 0.6, 0", &point), "0.8, 0.6, 0".into());
+    }
+
+    #[test]
+    fn the_topic_of_a_key() {
+        assert_eq!(topic_of("view.n"), Topic::Basis);
+        assert_eq!(topic_of("view.points.A"), Topic::View);
+        assert_eq!(topic_of("viewport.pixels.A"), Topic::Pipeline);
+        assert_eq!(topic_of("clip.0.status"), Topic::Clip);
+    }
+}
