@@ -69,9 +69,11 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
         .find(|(k, _)| k == "shade")
         .map(|(_, v)| v)
     {
-        // the unit vectors are steps of the solution, not results of `solve`
+        // the unit vectors are steps of the solution, not results of
+        // `solve`; asked when there is one of each (one light)
         for name in ["N", "L"] {
-            if let Some(v) = step_result(&report.steps, name) {
+            let mut found = report.steps.iter().filter_map(|s| step_result(s, name));
+            if let (Some(v), None) = (found.next(), found.next()) {
                 kv.insert(0, (name.to_string(), v));
             }
         }
@@ -178,16 +180,13 @@ fn clip_keys(prefix: &str, kv: &[(String, Val)]) -> Vec<String> {
     keys
 }
 
-/// The first step with a result of this name, and that result.
-fn step_result(steps: &[Step], name: &str) -> Option<Val> {
-    steps.iter().find_map(|s| {
-        s.result
-            .iter()
-            .find(|(n, _)| n == name)
-            .map(|(_, v)| v.clone())
-    })
+/// The step's result of this name.
+fn step_result(step: &Step, name: &str) -> Option<Val> {
+    step.result
+        .iter()
+        .find(|(n, _)| n == name)
+        .map(|(_, v)| v.clone())
 }
-
 /// The worked step that computes a key.
 fn step_for(key: &str, steps: &[Step]) -> Option<Step> {
     let parts: Vec<&str> = key.split('.').collect();
