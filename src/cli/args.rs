@@ -321,6 +321,10 @@ pub enum Format {
     Latex,
     /// exam.json (statements, answers, worked steps).
     Json,
+    /// quiz.xml: Moodle XML, one Cloze question per problem and variant.
+    Moodle,
+    /// quiz.gift: GIFT, one question per value asked.
+    Gift,
 }
 
 /// The `generate` flags.
@@ -347,6 +351,9 @@ pub struct GenerateArgs {
     /// Versions of the exam (one per student), each with its own key.
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=500))]
     pub variants: u32,
+    /// Relative tolerance of the numbers in Moodle and GIFT (default 0.001, i.e. 0.1%).
+    #[arg(long, value_name = "R")]
+    pub tolerance: Option<f64>,
 }
 
 /// Gives a type of a lower layer its command-line choices: each variant's

@@ -4,8 +4,11 @@
 use crate::cli::args::{Format, GenerateArgs};
 use crate::error::{Error, Result};
 use crate::report::doc::Doc;
+use crate::report::gift::gift;
+use crate::report::moodle::{moodle_xml, Exams};
 use crate::report::sheets::{exam_json, exam_title, key_title, sheets, written_summary};
 use crate::report::Style;
+use crate::tutor::check::DEFAULT_TOLERANCE;
 use crate::tutor::generate::{exam, key_toml, variant_seed, Generated};
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -24,6 +27,9 @@ pub fn run(a: &GenerateArgs, json: bool, style: &Style) -> Result<String> {
 
 /// Generates and writes every variant; returns the files written.
 pub fn write_exams(a: &GenerateArgs, style: &Style) -> Result<Vec<PathBuf>> {
+    if matches!(a.format, Format::Moodle | Format::Gift) {
+        return write_quiz(a, style).map(|f| vec![f]);
+    }
     let mut files = Vec::new();
     for v in 0..a.variants {
         let dir = if a.variants == 1 {
@@ -74,10 +80,49 @@ fn write_exam(
         }
         Format::Md => Doc::Markdown,
         Format::Latex => Doc::Latex,
+        Format::Moodle | Format::Gift => return Ok(files),
     };
     let ext = if doc == Doc::Markdown { "md" } else { "tex" };
     let (q, k) = sheets(doc, exam, style);
     put(format!("questions.{ext}"), doc.document(&title, &q))?;
     put(format!("key.{ext}"), doc.document(&key_title(&title), &k))?;
     Ok(files)
+}
+
+/// The relative tolerance of a quiz: `--tolerance`, else 0.1 %; it must be
+/// a number in (0, 1), so that no nonzero key gets a zero tolerance.
+fn quiz_tolerance(a: &GenerateArgs) -> Result<f64> {
+    let r = a.tolerance.unwrap_or(DEFAULT_TOLERANCE);
+    if r.is_finite() && r > 0.0 && r < 1.0 {
+        Ok(r)
+    } else {
+        Err(Error::new(
+            "tolerance",
+            format!("must be a number above 0 and below 1 (0.001 is 0.1%), got {r}"),
+        ))
+    }
+}
+
+/// Writes every variant into one Moodle XML or GIFT file in the output
+/// directory: quiz.xml or quiz.gift.
+fn write_quiz(a: &GenerateArgs, style: &Style) -> Result<PathBuf> {
+    let rel = quiz_tolerance(a)?;
+    let exams = (0..a.variants)
+        .map(|v| exam(&a.topic, a.difficulty, a.count, variant_seed(a.seed, v)))
+        .collect::<Result<Vec<_>>>()?;
+    let e = Exams {
+        exams: &exams,
+        topics: &a.topic,
+        rel,
+    };
+    let (name, text) = match a.format {
+        Format::Gift => ("quiz.gift", gift(&e, style)),
+        _ => ("quiz.xml", moodle_xml(&e, style)),
+    };
+    std::fs::create_dir_all(&a.out)
+        .map_err(|e| Error::new("out", format!("cannot create {}: {e}", a.out.display())))?;
+    let path = a.out.join(name);
+    std::fs::write(&path, text)
+        .map_err(|e| Error::new("out", format!("cannot write {}: {e}", path.display())))?;
+    Ok(path)
 }

@@ -4,7 +4,10 @@
 pub mod bench;
 pub mod check;
 pub mod doc;
+pub mod gift;
 pub mod lang;
+pub mod mistakes;
+pub mod moodle;
 pub mod practice;
 pub mod sheets;
 

@@ -96,8 +96,9 @@ pub fn written_summary(
 ) -> String {
     let plural = |n: u32| if n == 1 { "" } else { "s" };
     let mut s = format!(
-        "wrote {} files ({variants} variant{} of {count} {} problem{}, seed {seed}) to {}\n",
+        "wrote {} file{} ({variants} variant{} of {count} {} problem{}, seed {seed}) to {}\n",
         files.len(),
+        plural(files.len() as u32),
         plural(variants),
         topics_name(topics),
         plural(count),

@@ -15,6 +15,7 @@
 //! (clipped), accepted and rejected segments at every level.
 
 mod draw;
+pub mod quiz;
 
 pub use draw::problem;
 

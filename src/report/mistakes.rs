@@ -1,0 +1,69 @@
+//! The mistake catalog's descriptions for people, in the chosen language.
+//! The catalog (`tutor::diagnose::CATALOG`) keeps the English line; the
+//! Indonesian one is here, by code.
+
+use crate::report::lang::Lang;
+use crate::tutor::diagnose::Mistake;
+
+/// What the student did, in `lang`.
+pub fn mistake_text(m: &Mistake, lang: Lang) -> &'static str {
+    match lang {
+        Lang::En => m.description,
+        Lang::Id => indonesian(m.code).unwrap_or(m.description),
+    }
+}
+
+/// The Indonesian description of a catalog code.
+pub fn indonesian(code: &str) -> Option<&'static str> {
+    Some(match code {
+        "cross_order" => {
+            "u = n × Vup, bukan Vup × n (u, dan bersamanya v = n × u, berganti tanda)"
+        }
+        "n_reversed" => {
+            "n dihitung dari Pr − Pe, bukan Pe − Pr (kamera menghadap ke arah yang salah)"
+        }
+        "n_not_normalized" => {
+            "n = Pe − Pr tidak dibagi dengan |Pe − Pr| (v = n × u pun ikut memiliki panjang itu)"
+        }
+        "u_not_normalized" => {
+            "u = Vup × n tidak dibagi dengan |Vup × n| (v = n × u pun ikut memiliki panjang itu)"
+        }
+        "fovy_not_halved" => "tan(fovy) dipakai untuk jendela, bukan tan(fovy/2)",
+        "degrees_as_radians" => "sudut dalam derajat dimasukkan ke tan seolah-olah dalam radian",
+        "height_is_half_extent" => {
+            "setengah ukuran near·tan(fovy/2) (h pada teks) diberikan sebagai tinggi jendela (dan aspect·h sebagai lebarnya)"
+        }
+        "height_as_half_extent" => {
+            "near·tan(fovy/2) dianggap tinggi penuh, sehingga tepi-tepi jendela berada pada setengah jarak yang benar"
+        }
+        "d_sign" => "tanda d salah (bidang proyeksi z = +near, bukan z = −near)",
+        "matrix_transposed" => "matriks pandang ditulis tertranspos (konvensi vektor baris P·M)",
+        "outcode_reversed" => {
+            "bit-bit outcode ditulis dengan urutan terbalik (bit 1 paling kiri, bukan paling kanan)"
+        }
+        "endpoint_kept" => {
+            "titik ujung di luar kotak dipertahankan, bukan titik potong yang menggantikannya"
+        }
+        "reflect_plus_l" => "R dihitung sebagai 2N(L·N) + L, bukan 2N(L·N) − L",
+        "specular_no_max" => {
+            "suku spekular tanpa max(·, 0): cos β yang negatif dipangkatkan n"
+        }
+        _ => return None,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tutor::diagnose::CATALOG;
+
+    #[test]
+    fn every_mistake_has_both_languages() {
+        for m in CATALOG {
+            let id = indonesian(m.code);
+            assert!(id.is_some(), "no Indonesian text for {}", m.code);
+            assert_ne!(id, Some(m.description), "{}", m.code);
+            assert_eq!(mistake_text(m, Lang::En), m.description);
+        }
+    }
+}

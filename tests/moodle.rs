@@ -1,0 +1,637 @@
+//! `generate --format moodle|gift`: the files parse back (a real XML parser;
+//! readings of the Cloze syntax and of GIFT that follow Moodle's import),
+//! every answer and tolerance agrees with the key, every 0 % answer is the
+//! value a catalog mistake gives and names it, and the categories come
+//! before their questions.
+
+mod common;
+use common::*;
+use grafika::input::problem::ProblemIn;
+use grafika::num::expr::parse_expr;
+use grafika::num::Real;
+use grafika::report::lang::Lang;
+use grafika::report::moodle::{moodle_xml, Exams};
+use grafika::report::Style;
+use grafika::tutor::check::default_keys;
+use grafika::tutor::diagnose::CATALOG;
+use grafika::tutor::generate::{Generated, Topic};
+use grafika::tutor::solve::{self, lookup};
+use std::path::{Path, PathBuf};
+
+const R: f64 = 1e-3;
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("grafika-moodle-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+/// One alternative of a blank: its fraction, answer and feedback.
+#[derive(Debug, Clone, PartialEq)]
+struct Alt {
+    fraction: f64,
+    answer: String,
+    feedback: String,
+}
+
+/// One blank `{1:TYPE:alt~alt…}`.
+#[derive(Debug, Clone, PartialEq)]
+struct Blank {
+    kind: String,
+    alts: Vec<Alt>,
+}
+
+/// Moodle's html_entity_decode, for the entities the writer uses.
+fn decode(s: &str) -> String {
+    let mut out = String::new();
+    let mut rest = s;
+    while let Some(k) = rest.find('&') {
+        out.push_str(&rest[..k]);
+        rest = &rest[k..];
+        let end = rest.find(';').expect("an entity ends with ;");
+        let ent = &rest[1..end];
+        out.push(match ent {
+            "amp" => '&',
+            "lt" => '<',
+            "gt" => '>',
+            _ => {
+                let n: u32 = ent
+                    .strip_prefix('#')
+                    .expect("numeric entity")
+                    .parse()
+                    .unwrap();
+                char::from_u32(n).unwrap()
+            }
+        });
+        rest = &rest[end + 1..];
+    }
+    out + rest
+}
+
+/// The blanks of a Cloze text, read as Moodle does: an alternative's answer
+/// ends at the first `#` not after `&`, alternatives part at `~`, a blank
+/// ends at `}`; the feedback is entity-decoded once (what Moodle stores as
+/// HTML) and once more here (what a student reads).
+fn cloze_blanks(text: &str) -> Vec<Blank> {
+    let mut out = Vec::new();
+    let mut rest = text;
+    while let Some(k) = rest.find("{1:") {
+        let body = &rest[k + 3..];
+        let end = body.find('}').expect("a blank ends");
+        let (kind, alts) = body[..end].split_once(':').expect("a type");
+        let alts = alts
+            .split('~')
+            .map(|a| {
+                let (fraction, a) = match a.strip_prefix('=') {
+                    Some(a) => (1.0, a),
+                    None => {
+                        let a = a.strip_prefix('%').expect("a fraction");
+                        let (f, a) = a.split_once('%').unwrap();
+                        (f.parse::<f64>().unwrap() / 100.0, a)
+                    }
+                };
+                let cut = (0..a.len())
+                    .find(|&i| a[i..].starts_with('#') && !a[..i].ends_with('&'))
+                    .unwrap_or(a.len());
+                Alt {
+                    fraction,
+                    answer: decode(&a[..cut]),
+                    feedback: decode(&decode(a.get(cut + 1..).unwrap_or(""))),
+                }
+            })
+            .collect();
+        out.push(Blank {
+            kind: kind.to_string(),
+            alts,
+        });
+        rest = &body[end + 1..];
+    }
+    out
+}
+
+/// `x:t` as numbers.
+fn num_tol(answer: &str) -> (f64, f64) {
+    let (x, t) = answer.split_once(':').expect("value:tolerance");
+    (x.parse().unwrap(), t.parse().unwrap())
+}
+
+/// The (category, name, question text, general feedback) of each question
+/// of a Moodle XML file, in order; a category has no texts.
+fn xml_questions(xml: &str) -> Vec<(String, String, String, String)> {
+    let doc = roxmltree::Document::parse(xml).expect("well-formed XML");
+    let quiz = doc.root_element();
+    assert_eq!(quiz.tag_name().name(), "quiz");
+    let text_of = |q: roxmltree::Node, tag: &str| -> String {
+        q.children()
+            .find(|c| c.has_tag_name(tag))
+            .and_then(|c| c.children().find(|t| t.has_tag_name("text")))
+            .and_then(|t| t.text())
+            .unwrap_or("")
+            .to_string()
+    };
+    quiz.children()
+        .filter(|c| c.has_tag_name("question"))
+        .map(|q| {
+            let kind = q.attribute("type").unwrap_or("").to_string();
+            let label = if kind == "category" {
+                text_of(q, "category")
+            } else {
+                assert_eq!(kind, "cloze");
+                text_of(q, "name")
+            };
+            (
+                kind,
+                label,
+                text_of(q, "questiontext"),
+                text_of(q, "generalfeedback"),
+            )
+        })
+        .collect()
+}
+
+fn generated(toml: &str) -> Generated {
+    let problem = ProblemIn::parse(toml, "test").expect("parses");
+    let report = solve::solve::<Real>(&problem).expect("solves");
+    let keys = default_keys(&report.result);
+    Generated {
+        toml: toml.to_string(),
+        problem,
+        report,
+        keys,
+    }
+}
+
+/// The questions of a one-problem Moodle XML file for a problem file's text.
+fn one_problem_xml(toml: &str, lang: Lang) -> Vec<(String, String, String, String)> {
+    let exams = vec![vec![generated(toml)]];
+    let e = Exams {
+        exams: &exams,
+        topics: &[Topic::View],
+        rel: R,
+    };
+    xml_questions(&moodle_xml(&e, &Style::new(4, true, lang)))
+}
+
+const CAMERA: &str = "title = 'Camera'\nstatement = 'The camera example.'\nask = ['view']\n\n[camera]\neye = [4, 4, 4]\nlook = [0, 1, 4]\nup = [0, 1, 0]\n\n[points]\nPref = [0, 1, 4]\n";
+
+/// Pe − Pr = (4, 3, 0), |.| = 5: n = (0.8, 0.6, 0); Vup × n = (0, 0, −0.8),
+/// u = (0, 0, −1); v = n × u = (−0.6, 0.8, 0); Pref' = (0, 0, −5).
+/// Mistakes by hand: u = n × Vup flips u and v; n from Pr − Pe flips n and
+/// u (v = n × u stays); n not normalized is (4, 3, 0) and v = n × u then
+/// (−3, 4, 0); u not normalized is Vup × n = (0, 0, −0.8) and v (−0.48, 0.64, 0).
+#[test]
+fn the_camera_example_has_the_keys_tolerances_and_mistakes_derived_by_hand() {
+    let qs = one_problem_xml(CAMERA, Lang::En);
+    assert_eq!(qs[0].0, "category");
+    assert_eq!(qs[0].1, "$course$/grafika/view/01");
+    let blanks = cloze_blanks(&qs[1].2);
+    // view.u, view.v, view.n, view.points.Pref: 12 numbers
+    assert_eq!(blanks.len(), 12);
+    let expect: [(f64, f64); 12] = [
+        (0.0, 0.001),
+        (0.0, 0.001),
+        (-1.0, 0.001),
+        (-0.6, 0.0006),
+        (0.8, 0.0008),
+        (0.0, 0.0008),
+        (0.8, 0.0008),
+        (0.6, 0.0006),
+        (0.0, 0.0008),
+        (0.0, 0.005),
+        (0.0, 0.005),
+        (-5.0, 0.005),
+    ];
+    for (b, (x, t)) in blanks.iter().zip(expect) {
+        assert_eq!(b.kind, "NUMERICAL");
+        assert_eq!(b.alts[0].fraction, 1.0);
+        assert_eq!(num_tol(&b.alts[0].answer), (x, t), "{b:?}");
+    }
+    let wrong = |i: usize, x: f64, code: &str| {
+        let m = CATALOG.iter().find(|m| m.code == code).unwrap();
+        let alt = blanks[i]
+            .alts
+            .iter()
+            .find(|a| (num_tol(&a.answer).0 - x).abs() < 1e-12)
+            .unwrap_or_else(|| panic!("no 0 % answer {x} in blank {i}: {:?}", blanks[i]));
+        assert_eq!(alt.fraction, 0.0);
+        assert!(
+            (num_tol(&alt.answer).1 - R * x.abs()).abs() < 1e-15,
+            "{alt:?}"
+        );
+        assert!(
+            alt.feedback.starts_with("Known mistake: "),
+            "{}",
+            alt.feedback
+        );
+        assert!(
+            alt.feedback.contains(m.description),
+            "{code}: {}",
+            alt.feedback
+        );
+    };
+    wrong(2, 1.0, "cross_order");
+    wrong(2, 1.0, "n_reversed");
+    wrong(2, -0.8, "u_not_normalized");
+    wrong(3, 0.6, "cross_order");
+    wrong(3, -3.0, "n_not_normalized");
+    wrong(3, -0.48, "u_not_normalized");
+    wrong(4, -0.8, "cross_order");
+    wrong(4, 4.0, "n_not_normalized");
+    wrong(4, 0.64, "u_not_normalized");
+    wrong(6, -0.8, "n_reversed");
+    wrong(6, 4.0, "n_not_normalized");
+    wrong(7, -0.6, "n_reversed");
+    wrong(7, 3.0, "n_not_normalized");
+    // zeros that every mistake keeps zero have no wrong answers
+    for i in [0, 1, 5, 8] {
+        assert_eq!(blanks[i].alts.len(), 1, "{:?}", blanks[i]);
+    }
+    // the general feedback holds the answers and the worked solution
+    assert!(qs[1].3.contains("view.u = (0, 0, −1)"), "{}", qs[1].3);
+    assert!(qs[1].3.contains("Worked solution"));
+}
+
+#[test]
+fn indonesian_feedback_names_the_mistake_in_indonesian() {
+    let qs = one_problem_xml(CAMERA, Lang::Id);
+    let blanks = cloze_blanks(&qs[1].2);
+    let fb = &blanks[2].alts[1].feedback;
+    assert!(fb.starts_with("Kesalahan yang dikenal: "), "{fb}");
+    assert!(fb.contains("bukan Vup × n"), "{fb}");
+    assert!(qs[1].2.contains("angka penting"));
+    assert!(qs[1].3.contains("Penyelesaian"));
+}
+
+#[test]
+fn markup_and_syntax_in_a_statement_are_escaped() {
+    let nasty = "A & B <i>x</i> ]]> {1:NUMERICAL:=5} ~ = # : \\\\ end";
+    let toml = CAMERA
+        .replace("title = 'Camera'", "title = \"T & <b> ]]> { }\"")
+        .replace("'The camera example.'", &format!("\"{nasty}\""));
+    let qs = one_problem_xml(&toml, Lang::En);
+    assert!(qs[1].1.ends_with("T & <b> ]]> { }"), "{}", qs[1].1);
+    let text = &qs[1].2;
+    assert!(
+        text.contains(
+            "A &amp; B &lt;i&gt;x&lt;/i&gt; ]]&gt; &#123;1:NUMERICAL:=5&#125; ~ = # : \\ end"
+        ),
+        "{text}"
+    );
+    // the statement's braces make no blank: still the 12 of the answers
+    assert_eq!(cloze_blanks(text).len(), 12);
+}
+
+/// Generates into a fresh directory; returns it.
+fn generate(name: &str, format: &str, extra: &[&str]) -> PathBuf {
+    let out = tmp(name);
+    let mut args = vec![
+        "generate",
+        "--topic",
+        "basis,view,project,window,clip,shade,pipeline",
+        "--count",
+        "7",
+        "--variants",
+        "2",
+        "--seed",
+        "11",
+        "--format",
+        format,
+        "--out",
+    ];
+    let o = out.display().to_string();
+    args.push(&o);
+    args.extend(extra);
+    let run = grafika().args(&args).output().unwrap();
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    out
+}
+
+/// A key file's answers, in order: (key, leaves as written).
+fn key_leaves(path: &Path) -> Vec<(String, Vec<String>)> {
+    fn flat(prefix: &str, v: &toml::Value, out: &mut Vec<(String, Vec<String>)>) {
+        fn leaves(v: &toml::Value, out: &mut Vec<String>) {
+            match v {
+                toml::Value::Array(a) => a.iter().for_each(|x| leaves(x, out)),
+                toml::Value::String(s) => out.push(s.clone()),
+                other => out.push(other.to_string()),
+            }
+        }
+        match v {
+            toml::Value::Table(t) => {
+                for (k, x) in t {
+                    let key = if prefix.is_empty() {
+                        k.clone()
+                    } else {
+                        format!("{prefix}.{k}")
+                    };
+                    flat(&key, x, out);
+                }
+            }
+            other => {
+                let mut l = Vec::new();
+                leaves(other, &mut l);
+                out.push((prefix.to_string(), l));
+            }
+        }
+    }
+    let text = std::fs::read_to_string(path).unwrap();
+    let t: toml::Value = toml::from_str(&text).unwrap();
+    let mut out = Vec::new();
+    flat("", &t, &mut out);
+    out
+}
+
+/// The leaves of a value a mistake gives, as numbers or texts.
+fn tree_leaf(v: &grafika::stages::trace::Val, out: &mut Vec<String>) {
+    use grafika::stages::trace::Val;
+    match v {
+        Val::Num(s) => out.push(format!("{:e}", s.value)),
+        Val::List(items) => items.iter().for_each(|x| tree_leaf(x, out)),
+        Val::Map(kv) => kv.iter().for_each(|(_, x)| tree_leaf(x, out)),
+        Val::Text(t) => out.push(t.clone()),
+        Val::Bool(b) => out.push(b.to_string()),
+        Val::Null => out.push("none".into()),
+    }
+}
+
+/// Checks one Cloze question against its key file and problem file.
+fn check_question(text: &str, key: &Path, problem: &Path) {
+    let p = ProblemIn::read(problem).unwrap();
+    let blanks = cloze_blanks(text);
+    let keys = key_leaves(key);
+    let total: usize = keys.iter().map(|(_, l)| l.len()).sum();
+    assert_eq!(blanks.len(), total, "{}", key.display());
+    let mut blanks = blanks.iter();
+    for (k, leaves) in &keys {
+        let all: Vec<f64> = leaves
+            .iter()
+            .filter_map(|s| parse_expr(s).ok()?.eval::<f64>().ok())
+            .collect();
+        let scale = all.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        for (idx, leaf) in leaves.iter().enumerate() {
+            let b = blanks.next().unwrap();
+            let right = &b.alts[0];
+            assert_eq!(right.fraction, 1.0);
+            if b.kind == "SHORTANSWER" {
+                assert_eq!(&right.answer, leaf, "{k}");
+            } else {
+                let want = parse_expr(leaf).unwrap().eval::<f64>().unwrap();
+                let (x, t) = num_tol(&right.answer);
+                assert!(
+                    (x - want).abs() <= 1e-11 * want.abs().max(1.0),
+                    "{k}: {x} vs {leaf}"
+                );
+                let floor = if want != 0.0 {
+                    R * want.abs()
+                } else if scale > 0.0 {
+                    R * scale
+                } else {
+                    R
+                };
+                assert!(
+                    t >= floor * (1.0 - 1e-12) && t <= floor * 1.1,
+                    "{k}: tolerance {t} for {want}"
+                );
+            }
+            for w in &b.alts[1..] {
+                check_wrong(&p, k, idx, b, w);
+            }
+        }
+    }
+}
+
+/// A 0 % answer: apart from the key's, and given by each mistake it names.
+fn check_wrong(p: &ProblemIn, key: &str, idx: usize, b: &Blank, w: &Alt) {
+    assert_eq!(w.fraction, 0.0);
+    let names = w
+        .feedback
+        .strip_prefix("Known mistake: ")
+        .expect("names a mistake");
+    for name in names.split("; or: ") {
+        let m = CATALOG
+            .iter()
+            .find(|m| m.description == name)
+            .unwrap_or_else(|| panic!("not in the catalog: {name}"));
+        let trees = (m.apply)(p).expect("the mistake applies");
+        let given = trees.iter().any(|t| {
+            let mut l = Vec::new();
+            if let Some(v) = lookup(t, key) {
+                tree_leaf(v, &mut l);
+            }
+            match (b.kind.as_str(), l.get(idx)) {
+                ("NUMERICAL", Some(s)) => {
+                    let (x, t) = num_tol(&w.answer);
+                    (s.parse::<f64>().unwrap() - x).abs() <= t
+                }
+                (_, Some(s)) => *s == w.answer,
+                _ => false,
+            }
+        });
+        assert!(
+            given,
+            "{} does not give {} at {key}[{idx}]",
+            m.code, w.answer
+        );
+    }
+    if b.kind == "NUMERICAL" {
+        let ((x, t), (y, u)) = (num_tol(&b.alts[0].answer), num_tol(&w.answer));
+        assert!(
+            (x - y).abs() > t + u,
+            "{key}: wrong {y} overlaps the key {x}"
+        );
+    }
+}
+
+#[test]
+fn moodle_xml_agrees_with_the_keys_and_the_catalog() {
+    let quiz = generate("xml", "moodle", &[]);
+    let keys = generate("keys", "toml", &[]);
+    let xml = std::fs::read_to_string(quiz.join("quiz.xml")).unwrap();
+    let qs = xml_questions(&xml);
+    let topics = [
+        "basis", "view", "project", "window", "clip", "shade", "pipeline",
+    ];
+    assert_eq!(qs.len(), 7 * 3, "a category and two variants per problem");
+    for (i, chunk) in qs.chunks(3).enumerate() {
+        assert_eq!(chunk[0].0, "category", "the category comes first");
+        assert_eq!(
+            chunk[0].1,
+            format!("$course$/grafika/{}/{:02}", topics[i], i + 1)
+        );
+        for (v, q) in chunk[1..].iter().enumerate() {
+            assert!(q
+                .1
+                .starts_with(&format!("Problem {:02}, variant {:02}: ", i + 1, v + 1)));
+            let dir = keys.join(format!("variant-{:02}", v + 1));
+            check_question(
+                &q.2,
+                &dir.join(format!("problem-{:02}.key.toml", i + 1)),
+                &dir.join(format!("problem-{:02}.toml", i + 1)),
+            );
+        }
+    }
+    // some mistakes are there to be named
+    assert!(xml.contains("~%0%"));
+}
+
+/// A GIFT question as Moodle's import reads it: escaped characters set
+/// aside, the name between `::`, the answers between the first `{` and `}`
+/// (the general feedback after `####` dropped), each answer split at `=`,
+/// its weight `%n%`, its feedback after `#`.
+#[derive(Debug)]
+enum Gift {
+    Category(String),
+    Question {
+        name: String,
+        text: String,
+        numerical: bool,
+        alts: Vec<Alt>,
+    },
+}
+
+fn protect(s: &str) -> String {
+    const SPECIALS: [char; 6] = [':', '#', '=', '{', '}', '~'];
+    let mut out = String::new();
+    let mut it = s.chars();
+    while let Some(c) = it.next() {
+        if c == '\\' {
+            match it.next() {
+                Some('\\') => out.push('\u{E05C}'),
+                Some('n') => out.push('\n'),
+                Some(d) if SPECIALS.contains(&d) => {
+                    out.push(char::from_u32(0xE000 + d as u32).unwrap())
+                }
+                other => panic!("unknown escape \\{other:?}"),
+            }
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+fn restore(s: &str) -> String {
+    s.chars()
+        .map(|c| match c as u32 {
+            0xE000..=0xE0FF => char::from_u32(c as u32 - 0xE000).unwrap(),
+            _ => c,
+        })
+        .collect()
+}
+
+fn gift_alts(answers: &str) -> (bool, Vec<Alt>) {
+    let (numerical, answers) = match answers.strip_prefix('#') {
+        Some(a) => (true, a),
+        None => (false, answers),
+    };
+    let alts = answers
+        .split('=')
+        .map(str::trim)
+        .filter(|a| !a.is_empty())
+        .map(|a| {
+            let (fraction, a) = match a.strip_prefix("%0%") {
+                Some(a) => (0.0, a),
+                None => (1.0, a),
+            };
+            let (answer, feedback) = a.split_once('#').unwrap_or((a, ""));
+            Alt {
+                fraction,
+                answer: restore(answer.trim()),
+                feedback: decode(&restore(feedback.trim())),
+            }
+        })
+        .collect();
+    (numerical, alts)
+}
+
+fn gift_questions(text: &str) -> Vec<Gift> {
+    let mut out = Vec::new();
+    for block in text.split("\n\n").filter(|b| !b.trim().is_empty()) {
+        assert!(!block.contains('\n'), "one line per question: {block}");
+        let t = protect(block);
+        if let Some(cat) = t.strip_prefix("$CATEGORY: ") {
+            out.push(Gift::Category(restore(cat)));
+            continue;
+        }
+        let t = t.strip_prefix("::").expect("a name");
+        let (name, rest) = t.split_once("::").expect("the name ends");
+        let open = rest.find('{').expect("answers");
+        let close = rest.find('}').expect("answers end");
+        assert_eq!(close, rest.len() - 1, "the answers end the question");
+        let answers = rest[open + 1..close].split("####").next().unwrap().trim();
+        let (numerical, alts) = gift_alts(answers);
+        out.push(Gift::Question {
+            name: restore(name),
+            text: restore(&rest[..open]),
+            numerical,
+            alts,
+        });
+    }
+    out
+}
+
+#[test]
+fn gift_has_the_moodle_blanks_one_question_each() {
+    let xml_dir = generate("gx", "moodle", &["--tolerance", "0.005"]);
+    let gift_dir = generate("gg", "gift", &["--tolerance", "0.005"]);
+    let xml = std::fs::read_to_string(xml_dir.join("quiz.xml")).unwrap();
+    let gift = std::fs::read_to_string(gift_dir.join("quiz.gift")).unwrap();
+    let cloze: Vec<Blank> = xml_questions(&xml)
+        .iter()
+        .filter(|q| q.0 == "cloze")
+        .flat_map(|q| cloze_blanks(&q.2))
+        .collect();
+    let mut blanks = cloze.iter();
+    let mut category = String::new();
+    let mut named = 0;
+    for q in gift_questions(&gift) {
+        match q {
+            Gift::Category(c) => category = c,
+            Gift::Question {
+                name,
+                text,
+                numerical,
+                alts,
+            } => {
+                // "Problem 03, variant 02: … — key" is in category …/03/02
+                let (p, v) = (&name[8..10], &name[20..22]);
+                assert!(
+                    category.ends_with(&format!("/{p}/{v}")),
+                    "{category} before {name}"
+                );
+                assert!(text.starts_with("[html]<p>"), "{text}");
+                let b = blanks.next().expect("as many questions as blanks");
+                assert_eq!(numerical, b.kind == "NUMERICAL", "{name}");
+                assert_eq!(&alts, &b.alts, "{name}");
+                named += alts.len() - 1;
+            }
+        }
+    }
+    assert!(blanks.next().is_none(), "as many questions as blanks");
+    assert!(named > 0, "some mistakes are named");
+    // the tolerance asked for, 0.5 %, on every nonzero number
+    for b in cloze.iter().filter(|b| b.kind == "NUMERICAL") {
+        let (x, t) = num_tol(&b.alts[0].answer);
+        assert!(x == 0.0 || (t >= 0.005 * x.abs() * (1.0 - 1e-9) && t <= 0.0055 * x.abs()));
+    }
+}
+
+#[test]
+fn a_tolerance_outside_zero_to_one_is_an_error_naming_it() {
+    for bad in ["0", "-0.1", "1", "nan"] {
+        let out = grafika()
+            .args(["generate", "--topic", "view", "--format", "moodle", "--out"])
+            .arg(tmp("bad"))
+            .arg(format!("--tolerance={bad}"))
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{bad}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains("tolerance"), "{err}");
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+    }
+}
