@@ -86,7 +86,7 @@ pub fn points2<T: Scalar>(field: &str, items: &[String]) -> Result<Vec<(String, 
     let mut out: Vec<(String, (T, T))> = Vec::new();
     for it in items {
         let (name, rest) = named(field, it)?;
-        let parts = crate::num::expr::split_top_level(rest);
+        let parts = crate::num::expr::split_top_level(crate::num::expr::strip_outer(rest));
         if parts.len() != 2 {
             return Err(Error::new(
                 field,

@@ -133,6 +133,12 @@ impl fmt::Display for Paren<'_> {
 /// which character (1-based column).
 pub fn parse_expr(text: &str) -> Result<Expr, String> {
     let chars: Vec<char> = text.chars().collect();
+    if chars.len() > MAX_CHARS {
+        return Err(format!(
+            "the number is {} characters long, more than the {MAX_CHARS} allowed",
+            chars.len()
+        ));
+    }
     let mut p = Parser {
         s: &chars,
         i: 0,
@@ -151,9 +157,37 @@ pub fn parse_expr(text: &str) -> Result<Expr, String> {
     Ok(e)
 }
 
-/// Parses `x,y,z` into three expressions.
+/// `text` without one pair of parentheses or brackets around all of it
+/// (`(3,1,3)` → `3,1,3`, as answer files write points); `(1+2)*3` and
+/// `(1),(2),(3)` are left as they are.
+pub fn strip_outer(text: &str) -> &str {
+    let t = text.trim();
+    let (open, close) = match t.chars().next() {
+        Some('(') => ('(', ')'),
+        Some('[') => ('[', ']'),
+        _ => return t,
+    };
+    let mut depth = 0i32;
+    for (i, c) in t.char_indices() {
+        if c == open {
+            depth += 1;
+        } else if c == close {
+            depth -= 1;
+            if depth == 0 {
+                return if i + c.len_utf8() == t.len() {
+                    &t[1..i]
+                } else {
+                    t
+                };
+            }
+        }
+    }
+    t
+}
+
+/// Parses `x,y,z` (or `(x,y,z)`, `[x,y,z]`) into three expressions.
 pub fn parse_vec3(text: &str) -> Result<[Expr; 3], String> {
-    let parts = split_top_level(text);
+    let parts = split_top_level(strip_outer(text));
     if parts.len() != 3 {
         return Err(format!(
             "expected three numbers x,y,z separated by commas, found {} in `{text}`",
@@ -250,6 +284,10 @@ impl fmt::Display for Angle {
 /// Parentheses, roots and signs nested deeper than this are refused (the
 /// parser and the evaluator recurse once per level).
 pub const MAX_DEPTH: usize = 100;
+
+/// A number written with more characters than this is refused before it is
+/// parsed (a 100,000-digit decimal would take seconds of exact arithmetic).
+pub const MAX_CHARS: usize = 4000;
 
 /// An expression with more operations than this is refused (evaluation
 /// recurses once per operation of a chain like `1+1+…+1`).
@@ -509,17 +547,38 @@ mod tests {
     }
 
     #[test]
+    fn a_number_longer_than_max_chars_is_refused_before_parsing() {
+        let long = "1".repeat(100_000);
+        let e = parse_expr(&long).unwrap_err();
+        assert!(e.contains("100000 characters long"), "{e}");
+        assert!(parse_expr(&"(".repeat(10_000))
+            .unwrap_err()
+            .contains("characters long"));
+        assert!(parse_expr(&"1".repeat(MAX_CHARS)).is_ok());
+    }
+
+    #[test]
+    fn a_parenthesized_vector_is_read_like_a_bare_one() {
+        assert_eq!(strip_outer("(3,1,3)"), "3,1,3");
+        assert_eq!(strip_outer(" [3, 1, 3] "), "3, 1, 3");
+        assert_eq!(strip_outer("(1+2)*3"), "(1+2)*3");
+        assert_eq!(strip_outer("(1),(2),(3)"), "(1),(2),(3)");
+        assert_eq!(parse_vec3("(3,1,3)").unwrap(), parse_vec3("3,1,3").unwrap());
+    }
+
+    #[test]
     fn deep_nesting_is_an_error_not_a_stack_overflow() {
-        // 10,000 opening parentheses: refused at level MAX_DEPTH + 1.
-        let deep = "(".repeat(10_000) + "1" + &")".repeat(10_000);
+        // 1,500 opening parentheses: refused at level MAX_DEPTH + 1 (10,000
+        // are refused before parsing, as longer than MAX_CHARS).
+        let deep = "(".repeat(1_500) + "1" + &")".repeat(1_500);
         let e = parse_expr(&deep).unwrap_err();
         assert!(e.contains("nested more than 100 levels"), "{e}");
-        let signs = "-".repeat(10_000) + "1";
+        let signs = "-".repeat(3_000) + "1";
         assert!(parse_expr(&signs).unwrap_err().contains("nested"));
         let roots = "√".repeat(10_000) + "4";
         assert!(parse_expr(&roots).is_err());
-        // A 10,000-term chain: too many operations.
-        let chain = vec!["1"; 10_000].join("+");
+        // A 1,500-term chain: too many operations.
+        let chain = vec!["1"; 1_500].join("+");
         assert!(parse_expr(&chain)
             .unwrap_err()
             .contains("more than 500 operations"));
