@@ -409,7 +409,12 @@ impl Height {
     /// Parses a formula; the error names the column.
     pub fn parse(s: &str) -> std::result::Result<Height, String> {
         let c: Vec<char> = s.chars().filter(|c| !c.is_whitespace()).collect();
-        let mut p = HParser { c: &c, i: 0 };
+        let mut p = HParser {
+            c: &c,
+            i: 0,
+            depth: 0,
+            ops: 0,
+        };
         let e = p.sum()?;
         if p.i < c.len() {
             return Err(format!("unexpected `{}` at character {}", c[p.i], p.i + 1));
@@ -451,15 +456,47 @@ impl Height {
 struct HParser<'a> {
     c: &'a [char],
     i: usize,
+    /// How deep the parser is in parentheses, signs and powers.
+    depth: usize,
+    /// How many operators it has read.
+    ops: usize,
 }
 
 impl HParser<'_> {
     fn peek(&self) -> Option<char> {
         self.c.get(self.i).copied()
     }
+    /// Counts one more operator, or refuses a formula with more than
+    /// [`MAX_OPERATIONS`](crate::num::expr::MAX_OPERATIONS) of them (a tree
+    /// that long would overflow the stack when it is evaluated or dropped).
+    fn count(&mut self) -> std::result::Result<(), String> {
+        self.ops += 1;
+        if self.ops > crate::num::expr::MAX_OPERATIONS {
+            return Err(format!(
+                "the formula has more than {} operations (at character {})",
+                crate::num::expr::MAX_OPERATIONS,
+                self.i + 1
+            ));
+        }
+        Ok(())
+    }
+    fn unary(&mut self) -> std::result::Result<Height, String> {
+        self.depth += 1;
+        if self.depth > crate::num::expr::MAX_DEPTH {
+            return Err(format!(
+                "the formula is nested more than {} levels deep (parentheses, signs or powers) at character {}",
+                crate::num::expr::MAX_DEPTH,
+                self.i + 1
+            ));
+        }
+        let e = self.unary_inner();
+        self.depth -= 1;
+        e
+    }
     fn sum(&mut self) -> std::result::Result<Height, String> {
         let mut a = self.product()?;
         while let Some(op @ ('+' | '-' | '−')) = self.peek() {
+            self.count()?;
             self.i += 1;
             let b = self.product()?;
             let op = if op == '+' { '+' } else { '-' };
@@ -470,6 +507,7 @@ impl HParser<'_> {
     fn product(&mut self) -> std::result::Result<Height, String> {
         let mut a = self.unary()?;
         while let Some(op @ ('*' | '/' | '·')) = self.peek() {
+            self.count()?;
             self.i += 1;
             let b = self.unary()?;
             let op = if op == '/' { '/' } else { '*' };
@@ -477,13 +515,15 @@ impl HParser<'_> {
         }
         Ok(a)
     }
-    fn unary(&mut self) -> std::result::Result<Height, String> {
+    fn unary_inner(&mut self) -> std::result::Result<Height, String> {
         if let Some('-' | '−') = self.peek() {
+            self.count()?;
             self.i += 1;
             return Ok(Height::Neg(Box::new(self.unary()?)));
         }
         let base = self.atom()?;
         if self.peek() == Some('^') {
+            self.count()?;
             self.i += 1;
             let e = self.unary()?;
             return Ok(Height::Bin('^', Box::new(base), Box::new(e)));
@@ -547,6 +587,21 @@ impl HParser<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_height_formula_nested_10000_deep_is_an_error_not_a_stack_overflow() {
+        let deep = format!("{}x{}", "(".repeat(10_000), ")".repeat(10_000));
+        let e = Height::parse(&deep).unwrap_err();
+        assert!(e.contains("nested more than 100 levels"), "{e}");
+        let signs = format!("{}x", "-".repeat(10_000));
+        assert!(Height::parse(&signs).unwrap_err().contains("nested"));
+        let chain = vec!["x"; 10_000].join("+");
+        assert!(Height::parse(&chain).unwrap_err().contains("operations"));
+        // Within the limits, as for flags: 100 levels and 500 operations.
+        let ok = format!("{}x{}", "(".repeat(99), ")".repeat(99));
+        assert_eq!(Height::parse(&ok).unwrap().eval(2.0, 0.0), 2.0);
+        assert!(Height::parse(&vec!["x"; 500].join("+")).is_ok());
+    }
 
     /// Σ over faces of N·(centroid): positive when every normal points out
     /// of a mesh around the origin.
