@@ -87,13 +87,37 @@ impl<'de> Deserialize<'de> for AngleIn {
 pub fn toml_error(origin: &str, text: &str, e: &toml::de::Error) -> Error {
     let (line, col) = e.span().map(|s| line_col(text, s.start)).unwrap_or((0, 0));
     let msg = e.message().trim().to_string();
-    let field = msg
-        .split('`')
-        .nth(1)
-        .filter(|_| msg.contains("field") || msg.contains("key"))
-        .unwrap_or("file")
-        .to_string();
+    let field = field_of_toml_error(&msg, text, line);
     Error::new(field, format!("{origin}:{line}:{col}: {msg}"))
+}
+
+/// The field a TOML error is about: the name in the message of an unknown,
+/// missing or repeated field; else the key written on the error's line (a
+/// syntax error: `near = 0.1.2` is about `near`); else `file`, never a stray
+/// token such as `#` or `=`.
+fn field_of_toml_error(msg: &str, text: &str, line: usize) -> String {
+    let named = [
+        "unknown field",
+        "missing field",
+        "duplicate key",
+        "duplicate field",
+    ];
+    if named.iter().any(|n| msg.starts_with(n)) {
+        if let Some(f) = msg.split('`').nth(1) {
+            return f.to_string();
+        }
+    }
+    let is_key = |k: &str| {
+        !k.is_empty()
+            && k.chars()
+                .all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '-' | '.' | '"'))
+    };
+    text.lines()
+        .nth(line.wrapping_sub(1))
+        .and_then(|l| l.split_once('='))
+        .map(|(k, _)| k.trim().trim_matches('"').to_string())
+        .filter(|k| is_key(k))
+        .unwrap_or_else(|| "file".to_string())
 }
 
 /// 1-based line and column of a byte offset.

@@ -418,6 +418,12 @@ impl Scene {
                 .map_err(|e| Error::new(e.field, format!("{}: {}", at(o.span()), e.message)))?;
             objects.push(obj);
         }
+        if objects.is_empty() {
+            return Err(Error::new(
+                "object",
+                format!("{origin}: the scene has no objects: add at least one [[object]] table (cone, sphere, cylinder, box, plane or obj)"),
+            ));
+        }
         Ok(Scene {
             title: s.title,
             shading: s.shading.unwrap_or_default(),
@@ -855,6 +861,27 @@ mod tests {
 
     fn parse(s: &str) -> Result<Scene> {
         Scene::parse(s, "s.toml", Path::new("."))
+    }
+
+    #[test]
+    fn render_scene_with_no_objects_is_an_error() {
+        for text in [
+            "",
+            "# only a comment\n",
+            "[image]\nwidth = 10\nheight = 10\n",
+        ] {
+            let e = parse(text).unwrap_err();
+            assert_eq!(e.field, "object", "{text:?}");
+            assert!(e.message.contains("no objects"), "{}", e.message);
+        }
+    }
+
+    #[test]
+    fn a_toml_syntax_error_names_the_key_not_a_stray_token() {
+        let e = parse("[image]\nwidth = 10 # ten\nheight = 1 0\n").unwrap_err();
+        assert_eq!(e.field, "height", "{e}");
+        let e = parse("[image]\n# a comment\n=\n").unwrap_err();
+        assert_eq!(e.field, "file", "{e}");
     }
 
     #[test]
