@@ -279,6 +279,18 @@ pub fn decimal_places(text: &str) -> Option<(u32, i32)> {
     Some((sig.max(1), exp - frac.len() as i32))
 }
 
+/// A whole number as written, read as a rounding to the units: (significant
+/// figures, 0), e.g. "124" → (3, 0), "-4" → (1, 0). None for 0 (no figure
+/// of it is significant) and for anything that is not a plain integer.
+fn whole_number_places(text: &str) -> Option<(u32, i32)> {
+    let t = text.trim().trim_start_matches(['-', '−', '+']);
+    if t.is_empty() || !t.chars().all(|c| c.is_ascii_digit()) {
+        return None;
+    }
+    let sig = t.trim_start_matches('0').len() as u32;
+    (sig > 0).then_some((sig, 0))
+}
+
 /// Judges one number written by the student against an expected number.
 fn judge_number(text: &str, e: &Shown, s: &Settings, carry: bool) -> Judged {
     let t = text.trim();
@@ -296,16 +308,18 @@ fn judge_number(text: &str, e: &Shown, s: &Settings, carry: bool) -> Judged {
         Err(m) => return Judged::new(Verdict::Unparseable, "unparseable", m),
     };
     let ev = e.value;
-    let places = decimal_places(&t);
+    let places = decimal_places(&t).or_else(|| whole_number_places(&t));
     let expected_txt = || format!("expected {}", crate::num::format::shown(e, 6, true));
 
     // 1. Exact equality, when both sides are exact.
+    let mut decided = false;
     if let Some(ex) = &e.exact {
         if let (Ok(er), Ok(gr)) = (
             parse_expr(ex).and_then(|x| x.eval::<Real>()),
             expr.eval::<Real>(),
         ) {
             if er.is_exact() && gr.is_exact() {
+                decided = true;
                 if er == gr {
                     return Judged::new(Verdict::Correct, "correct.exact", "exact");
                 }
@@ -319,7 +333,7 @@ fn judge_number(text: &str, e: &Shown, s: &Settings, carry: bool) -> Judged {
     }
     // Equal to 1e-12 (relative): exact, when exact arithmetic cannot decide
     // (a terminating decimal such as 0.6 = 3/5 is exact, however few digits).
-    if (g - ev).abs() <= ZERO_TOLERANCE * ev.abs().max(1.0) {
+    if !decided && (g - ev).abs() <= ZERO_TOLERANCE * ev.abs().max(1.0) {
         return Judged::new(Verdict::Correct, "correct.exact", "exact");
     }
     if let Some(j) = within_tolerance(g, ev, s, places) {
@@ -402,6 +416,33 @@ mod tests {
         assert_eq!(decimal_places("1.50e2"), Some((3, 0)));
         assert_eq!(decimal_places("12"), None);
         assert_eq!(decimal_places("-6/sqrt(2)"), None);
+    }
+
+    #[test]
+    fn a_whole_number_is_read_as_a_rounding_to_the_units() {
+        // 124.14 to the units is 124 (3 figures): correct; −3√2 = −4.243 to
+        // the units is −4, one figure: too coarse, as 0.04 is for a decimal.
+        assert_eq!(j("124", 124.14).code, "correct.rounded");
+        assert_eq!(j("-4", -3.0 * 2f64.sqrt()).code, "too_coarse");
+        assert_eq!(j("125", 124.14).verdict, Verdict::Wrong); // 0.86 off, more than half a unit
+        assert_eq!(j("0", 0.3).verdict, Verdict::Wrong); // 0 has no significant figure
+    }
+
+    #[test]
+    fn a_truncated_long_decimal_is_not_exact() {
+        // 50 digits of √2 − 1, truncated: close, but not the exact value.
+        let t = "0.41421356237309504880168872420969807856967187537694";
+        let judged = judge_number(t, &exact_sqrt2_minus_1(), &Settings::default(), false);
+        assert_ne!(judged.code, "correct.exact");
+        assert_eq!(judged.verdict, Verdict::Correct);
+    }
+
+    fn exact_sqrt2_minus_1() -> Shown {
+        Shown {
+            value: 2f64.sqrt() - 1.0,
+            exact: Some("sqrt(2)-1".into()),
+            pretty: None,
+        }
     }
 
     #[test]
