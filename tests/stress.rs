@@ -582,3 +582,74 @@ fn every_problem_file_solves_without_panic() {
         solve_all(&t);
     }
 }
+
+/// The view matrix's last column (−u·Pe, −v·Pe, −n·Pe) of a camera at `pe`
+/// looking at `pr` with up `up`, at precision `T`.
+fn translation_column<T: Scalar>(pe: [f64; 3], pr: [f64; 3], up: [f64; 3]) -> Vec<T> {
+    let c = Camera {
+        pe: v::<T>(pe),
+        pr: v::<T>(pr),
+        vup: v::<T>(up),
+    };
+    let b = camera::basis(&c, &mut NoTrace).unwrap();
+    let m = camera::view_matrix(&b, &c.pe, &mut NoTrace).unwrap();
+    (0..3).map(|r| m[(r, 3)].clone()).collect()
+}
+
+/// Issue 18's camera: eye (524286, 524286, 524287), look-at
+/// (−524288, −524288, −524288), up (1048573, 1048573, 1048574), and two more
+/// eyes near 2^20. Pe lies nearly along the view direction, so u·Pe and v·Pe
+/// are small differences of products near 2^40 (7e5 ulps off at f64 when
+/// rounded products were summed). The last column must be within 4 ulps at
+/// f64 and f32 of the exact values, here derived from first principles: with
+/// su = Vup × d and sv = d × su (integers), −u·Pe = −(su·Pe)/|su|,
+/// −v·Pe = −(sv·Pe)/|sv|, −n·Pe = −(d·Pe)/|d|, evaluated to 50 digits (the
+/// exact `Real` path cannot always reduce the surds |sv| of these sizes).
+#[test]
+fn view_matrix_last_column_is_within_4_ulps_for_a_far_eye() {
+    type Cam = ([f64; 3], [f64; 3], [f64; 3], [&'static str; 3]);
+    let cameras: [Cam; 3] = [
+        (
+            [524286.0, 524286.0, 524287.0],
+            [-524288.0; 3],
+            [1048573.0, 1048573.0, 1048574.0],
+            [
+                "0",
+                "-0.40824893935803537046925539410836897866864109116130",
+                "-908090.56704760089298518569136598443457901123892463",
+            ],
+        ),
+        (
+            [1048575.0, 1048573.0, 1048574.0],
+            [-1048575.0, -1048574.0, -1048574.0],
+            [0.0, 1.0, 0.0],
+            [
+                "0",
+                "0.40824842024270058133095987297538067814838549961600",
+                "-1816183.4434962326605631109935001963543449685904146",
+            ],
+        ),
+        (
+            [1048000.0, 3.0, -1047999.0],
+            [-1048001.0, -2.0, 1048000.0],
+            [5.0, 1048575.0, 7.0],
+            [
+                "-0.0000037087511837417298621701848739907659899516138180189",
+                "-0.50000119273373928611828952170483660181647773500237",
+                "-1482095.1062633430066592168964723811788462852559784",
+            ],
+        ),
+    ];
+    for (pe, pr, up, want) in cameras {
+        let c64 = translation_column::<f64>(pe, pr, up);
+        let c32 = translation_column::<f32>(pe, pr, up);
+        for r in 0..3 {
+            // The 50-digit value read as f64 is within 0.5 ulp of it.
+            let w: f64 = want[r].parse().unwrap();
+            let e64 = (c64[r] - w).abs() / ulp(w, Precision::F64);
+            let e32 = (c32[r] as f64 - w).abs() / ulp(w, Precision::F32);
+            assert!(e64 <= 4.0, "{pe:?} row {r}: {e64} ulps at f64");
+            assert!(e32 <= 4.0, "{pe:?} row {r}: {e32} ulps at f32");
+        }
+    }
+}

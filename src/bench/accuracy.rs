@@ -382,7 +382,34 @@ pub fn inputs(n: usize) -> Inputs {
     random_clips(&mut rng, n, &mut out.clips);
     grazing_clips(&mut rng, n, &mut out.clips);
     wide_clips(&mut rng, n, &mut out.clips);
+    // From a generator of their own, so that the cases above stay the same.
+    far_eye_cameras(&mut InputRng::new(SEED ^ 18), n, &mut out.cameras);
     out
+}
+
+/// Cameras: `n / 2` with the eye near 2^19…2^20 looking back through the
+/// origin, so that u·Pe and v·Pe (the view matrix's last column) are small
+/// differences of products near 2^39 (issue 18). Integers within 2^20: the
+/// target domain.
+fn far_eye_cameras(rng: &mut InputRng, n: usize, out: &mut Vec<CameraCase>) {
+    for i in 0..n / 2 {
+        let pe = [0; 3]
+            .map(|_: i32| rng.range(M20 / 2, M20 - 1) * if rng.below(2) == 0 { 1 } else { -1 });
+        let pr = pe.map(|x| -x + rng.int(2));
+        // Up: nearly along the view direction (as in the issue), or random.
+        let up = if i % 2 == 0 {
+            pe.map(|x| (2 * x).clamp(-(M20 - 1), M20 - 1) + rng.int(3))
+        } else {
+            r20(rng)
+        };
+        out.push(CameraCase {
+            kind: Kind::Random,
+            pe: f3(pe),
+            pr: f3(pr),
+            up: f3(up),
+            p: f3(r20(rng)),
+        });
+    }
 }
 
 /// Three random integers of up to 20 bits.
@@ -766,7 +793,10 @@ impl<T: Scalar> Prepared<T> {
                 let b = self.bases[i].as_ref()?;
                 let (c, p) = &self.cameras[i];
                 let e = camera::to_eye(b, &c.pe, "P", p, &mut NoTrace).ok()?;
-                Some(e.iter().map(|x| (x.clone(), false)).collect())
+                // The view matrix's last column (−u·Pe, −v·Pe, −n·Pe) too.
+                let m = camera::view_matrix(b, &c.pe, &mut NoTrace).ok()?;
+                let col = (0..3).map(|r| m[(r, 3)].clone());
+                Some(e.iter().cloned().chain(col).map(|x| (x, false)).collect())
             }
             Stage::Project => {
                 let (proj, p) = &self.projects[i];

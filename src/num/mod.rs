@@ -6,6 +6,7 @@
 //! `f32`, `f64` and [`Real`] (exact sums of surds, falling back to a marked
 //! approximation where no exact form exists).
 
+pub mod exact_dot;
 pub mod expr;
 pub mod fast;
 mod float;

@@ -236,9 +236,10 @@ pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> 
         trans[(r, 3)] = -pe[r].clone();
     }
     let mut view = rot.clone();
-    view[(0, 3)] = -vec::dot(&b.u, pe);
-    view[(1, 3)] = -vec::dot(&b.v, pe);
-    view[(2, 3)] = -vec::dot(&b.n, pe);
+    let col = translation(b, pe);
+    for (r, x) in col.into_iter().enumerate() {
+        view[(r, 3)] = -x;
+    }
     if !(0..3).all(|r| view[(r, 3)].is_finite()) {
         return Err(Error::new(
             "eye",
@@ -265,6 +266,18 @@ pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> 
         .res("V", Val::mat4(&view))
     });
     Ok(view)
+}
+
+/// (u·Pe, v·Pe, n·Pe): exactly with [`Real`](crate::num::Real); in floats
+/// from the unnormalized axes and error-free products
+/// ([`frame_dots`](crate::num::exact_dot::frame_dots)), so each is within
+/// 2 ulps even when it is a small difference of products of size |Pe|.
+fn translation<T: Scalar>(b: &Basis<T>, pe: &V3<T>) -> [T; 3] {
+    if T::PRECISION == crate::num::Precision::Exact {
+        return [vec::dot(&b.u, pe), vec::dot(&b.v, pe), vec::dot(&b.n, pe)];
+    }
+    let f = |a: &V3<T>| [a[0].to_f64(), a[1].to_f64(), a[2].to_f64()];
+    crate::num::exact_dot::frame_dots(f(&b.up), f(&b.d), f(pe)).map(T::from_f64)
 }
 
 /// The matrix with rows a, b, c (and 0 0 0 1).
