@@ -87,15 +87,15 @@ impl<'de> Deserialize<'de> for AngleIn {
 pub fn toml_error(origin: &str, text: &str, e: &toml::de::Error) -> Error {
     let (line, col) = e.span().map(|s| line_col(text, s.start)).unwrap_or((0, 0));
     let msg = e.message().trim().to_string();
-    let field = field_of_toml_error(&msg, text, line);
+    let field = field_of_toml_error(&msg, text, line, col);
     Error::new(field, format!("{origin}:{line}:{col}: {msg}"))
 }
 
 /// The field a TOML error is about: the name in the message of an unknown,
-/// missing or repeated field; else the key written on the error's line (a
-/// syntax error: `near = 0.1.2` is about `near`); else `file`, never a stray
-/// token such as `#` or `=`.
-fn field_of_toml_error(msg: &str, text: &str, line: usize) -> String {
+/// missing or repeated field; else, for an error inside the value of a
+/// `key = value` line, that key (`near = 0.1.2` is about `near`); else
+/// `file`, never a stray token such as `#` or `=`.
+fn field_of_toml_error(msg: &str, text: &str, line: usize, col: usize) -> String {
     let named = [
         "unknown field",
         "missing field",
@@ -115,6 +115,7 @@ fn field_of_toml_error(msg: &str, text: &str, line: usize) -> String {
     text.lines()
         .nth(line.wrapping_sub(1))
         .and_then(|l| l.split_once('='))
+        .filter(|(k, _)| col > k.chars().count() + 1)
         .map(|(k, _)| k.trim().trim_matches('"').to_string())
         .filter(|k| is_key(k))
         .unwrap_or_else(|| "file".to_string())

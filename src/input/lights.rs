@@ -1,7 +1,7 @@
 //! Lighting inputs: the `[shade]` table and `[[light]]` tables of problem
 //! files, lights files (`--lights FILE.toml`), and the `shade` flags, all
 //! turned into one validated set-up for [`crate::stages::lighting`], and the
-//! set-up's results keyed as SPEC §3 says.
+//! set-up's results keyed as docs/spec.md §3 says.
 //!
 //! A lights file:
 //!
@@ -142,8 +142,7 @@ pub struct LightsFileIn {
 impl LightsFileIn {
     /// Reads a lights file; TOML errors carry file:line:col.
     pub fn read(path: &Path) -> Result<LightsFileIn> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| Error::new("lights", format!("cannot read {}: {e}", path.display())))?;
+        let text = crate::input::read_text("lights", path)?;
         let f: LightsFileIn = toml::from_str(&text)
             .map_err(|e| toml_error(&path.display().to_string(), &text, &e))?;
         if f.light.is_empty() {
@@ -535,7 +534,7 @@ fn opt_num<T: Scalar>(v: &Option<T>) -> Val {
     v.as_ref().map(Val::num).unwrap_or(Val::Null)
 }
 
-/// Runs the set-up (steps into `rec`) and returns the SPEC §3 shade keys:
+/// Runs the set-up (steps into `rec`) and returns the docs/spec.md §3 shade keys:
 /// `color`, `unclamped`, `ambient`, `diffuse`, `specular`, `R`, `H` (Blinn),
 /// `cos_alpha`, `cos_beta` — per light (lists) when there are several, with
 /// `lights` (attenuation, spot, in range) for lights from a file.

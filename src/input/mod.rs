@@ -11,3 +11,19 @@ pub mod scene;
 pub mod values;
 
 pub use values::*;
+
+use crate::error::{Error, Result};
+use std::path::Path;
+
+/// The text of a file the user named, `-` being standard input; an error
+/// names `field`.
+pub fn read_text(field: &str, path: &Path) -> Result<String> {
+    if path.as_os_str() == "-" {
+        let mut text = String::new();
+        std::io::Read::read_to_string(&mut std::io::stdin(), &mut text)
+            .map_err(|e| Error::new(field, format!("cannot read standard input: {e}")))?;
+        return Ok(text);
+    }
+    std::fs::read_to_string(path)
+        .map_err(|e| Error::new(field, format!("cannot read {}: {e}", path.display())))
+}

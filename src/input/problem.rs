@@ -1,4 +1,4 @@
-//! Problem files (SPEC §5): the TOML schema, read with line and column in
+//! Problem files (docs/spec.md §5): the TOML schema, read with line and column in
 //! every syntax error, into plain expressions that any precision evaluates.
 
 use crate::error::{Error, Result};
@@ -183,8 +183,7 @@ impl ProblemIn {
 
     /// Reads and parses a problem file.
     pub fn read(path: &Path) -> Result<ProblemIn> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| Error::new("file", format!("cannot read {}: {e}", path.display())))?;
+        let text = crate::input::read_text("file", path)?;
         ProblemIn::parse(&text, &path.display().to_string())
     }
 

@@ -1,4 +1,4 @@
-//! Scene files for `render` (SPEC §6): the TOML schema (unknown keys are
+//! Scene files for `render` (docs/spec.md §6): the TOML schema (unknown keys are
 //! errors), values checked while they are read so that every error carries
 //! the file, line and column, and the validated [`Scene`] the renderer draws.
 
@@ -369,8 +369,7 @@ pub struct Scene {
 impl Scene {
     /// Reads and validates a scene file; paths inside are relative to it.
     pub fn read(path: &Path) -> Result<Scene> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| Error::new("scene", format!("cannot read {}: {e}", path.display())))?;
+        let text = crate::input::read_text("scene", path)?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         Scene::parse(&text, &path.display().to_string(), &dir)
     }

@@ -1,4 +1,4 @@
-//! The input-number parser (SPEC §2): integers, exact decimals (`0.1` is
+//! The input-number parser (docs/spec.md §2): integers, exact decimals (`0.1` is
 //! 1/10, `2.5e-7`), `pi`, `sqrt(...)`, `+ - * / ^` and parentheses, parsed
 //! once into an [`Expr`] and evaluated at any precision. A student's own
 //! notation is accepted too: `√2`, `π`, the minus sign `−`, and a number
@@ -31,6 +31,25 @@ pub enum Expr {
 }
 
 impl Expr {
+    /// This expression divided by π, when π is a factor of it written out:
+    /// `pi/4` → `1/4`, `3*pi/2` → `3/2`, `pi/6 + pi/12` → `1/6 + 1/12`.
+    pub fn over_pi(&self) -> Option<Expr> {
+        let b = Box::new;
+        match self {
+            Expr::Pi => Some(Expr::Lit("1".into())),
+            Expr::Neg(a) => Some(Expr::Neg(b(a.over_pi()?))),
+            Expr::Add(x, y) => Some(Expr::Add(b(x.over_pi()?), b(y.over_pi()?))),
+            Expr::Sub(x, y) => Some(Expr::Sub(b(x.over_pi()?), b(y.over_pi()?))),
+            Expr::Mul(x, y) => match (x.over_pi(), y.over_pi()) {
+                (Some(q), None) => Some(Expr::Mul(b(q), y.clone())),
+                (None, Some(q)) => Some(Expr::Mul(x.clone(), b(q))),
+                _ => None,
+            },
+            Expr::Div(x, y) => Some(Expr::Div(b(x.over_pi()?), y.clone())),
+            _ => None,
+        }
+    }
+
     /// The value of the expression at precision `T`; an error message when a
     /// divisor is zero, a square root's argument negative, an exponent not a
     /// whole number, or the value not finite at that precision.
@@ -261,9 +280,16 @@ impl Angle {
         })
     }
 
-    /// The angle in degrees at precision `T` (radians are converted with
-    /// 180/π, which makes the value approximate).
+    /// The angle in degrees at precision `T`. Radians written as a multiple
+    /// of π (`pi/4 rad`) become q·180° exactly, so exact forms survive, as
+    /// for `45`; other radians are converted with 180/π, which makes the
+    /// value approximate.
     pub fn degrees<T: Scalar>(&self) -> Result<T, String> {
+        if self.unit == AngleUnit::Rad {
+            if let Some(q) = self.value.over_pi() {
+                return Ok(q.eval::<T>()? * T::from_i64(180));
+            }
+        }
         let v = self.value.eval::<T>()?;
         Ok(match self.unit {
             AngleUnit::Deg => v,
@@ -555,6 +581,16 @@ mod tests {
             .unwrap_err()
             .contains("characters long"));
         assert!(parse_expr(&"1".repeat(MAX_CHARS)).is_ok());
+    }
+
+    #[test]
+    fn fovy_in_radians_as_a_multiple_of_pi_stays_exact() {
+        let deg = |t: &str| Angle::parse(t).unwrap().degrees::<Real>().unwrap();
+        assert_eq!(deg("pi/4 rad"), Real::from_i64(45));
+        assert!(deg("pi/4 rad").is_exact());
+        assert_eq!(deg("3*pi/2 rad"), Real::from_i64(270));
+        assert_eq!(deg("pi/6 + pi/12 rad"), Real::from_i64(45));
+        assert!(!deg("0.785 rad").is_exact());
     }
 
     #[test]

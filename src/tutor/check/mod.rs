@@ -28,7 +28,7 @@ mod judge;
 pub use judge::decimal_places;
 pub(crate) use judge::{judge, value_of, Judged};
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::input::problem::ProblemIn;
 use crate::num::Real;
 use crate::stages::trace::Val;
@@ -244,8 +244,7 @@ fn flatten(key: &str, v: &toml::Value, out: &mut Vec<(String, toml::Value)>) {
 
 /// Reads an answer file.
 pub fn read_answers(path: &std::path::Path) -> Result<(Option<String>, Answers)> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| Error::new("answers", format!("cannot read {}: {e}", path.display())))?;
+    let text = crate::input::read_text("answers", path)?;
     let t: toml::Table = toml::from_str(&text)
         .map_err(|e| crate::input::fields::toml_error(&path.display().to_string(), &text, &e))?;
     Ok(answers_from_table(&t))
