@@ -215,7 +215,7 @@ fn a_directory_gives_one_row_per_student_and_a_csv() {
     assert!(lines[0].starts_with("student,file,score,total"));
     // Budi took u = n × Vup (see his file); Siti gave the half extents.
     assert!(
-        lines[1].starts_with("Budi,") && lines[1].ends_with(",cross_order"),
+        lines[1].starts_with("Budi,") && lines[1].ends_with(",cross_order,"),
         "{c}"
     );
     assert!(lines[2].contains("height_is_half_extent"), "{c}");
@@ -297,4 +297,135 @@ fn lighting_mistakes_are_diagnosed() {
     let s = answer(&v, "shade.specular");
     assert_eq!(s["verdict"], "wrong");
     assert_eq!(codes(s), ["specular_no_max"]);
+}
+
+/// A class directory: the three students of problems/answers/triangle, one
+/// malformed file, an empty one, a subdirectory and a text file.
+fn class_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("grafika-class-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(dir.join("late")).unwrap();
+    for s in ["budi", "siti", "tono"] {
+        let from = root().join(format!("problems/answers/triangle/{s}.toml"));
+        std::fs::copy(from, dir.join(format!("{s}.toml"))).unwrap();
+    }
+    std::fs::write(dir.join("broken.toml"), "window.top = \"0.04\n").unwrap();
+    std::fs::write(dir.join("empty.toml"), "").unwrap();
+    std::fs::write(dir.join("late/dewi.toml"), "window.top = \"0.0414\"\n").unwrap();
+    std::fs::write(dir.join("notes.txt"), "not answers").unwrap();
+    dir
+}
+
+#[test]
+fn check_answers_dir_with_a_broken_file_marks_everyone_else() {
+    let dir = class_dir("broken");
+    let csv = dir.join("class.csv");
+    let out = grafika()
+        .args(["check", "problems/text-triangle.toml", "--answers"])
+        .arg(&dir)
+        .arg("--csv")
+        .arg(&csv)
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "a broken file makes the status 2"
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    for s in ["Budi", "Siti", "Tono", "broken", "empty"] {
+        assert!(text.contains(s), "{s} missing from\n{text}");
+    }
+    assert!(text.contains("error:"), "{text}");
+    assert!(text.contains("subdirectory"), "{text}");
+    assert!(text.contains("notes.txt"), "{text}");
+    assert!(text.contains("holds no answers"), "{text}");
+    // The CSV has a row for each of the five files, the broken one with its error.
+    let c = std::fs::read_to_string(&csv).unwrap();
+    assert!(
+        c.lines().next().unwrap().ends_with(",mistakes,error"),
+        "{c}"
+    );
+    assert_eq!(c.lines().count(), 6, "{c}");
+    let broken = c.lines().find(|l| l.starts_with("broken,")).unwrap();
+    assert!(broken.contains(",,,,,,,,,"), "{broken}");
+    // And the JSON names it too.
+    let out = grafika()
+        .args([
+            "check",
+            "problems/text-triangle.toml",
+            "--json",
+            "--answers",
+        ])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let students = v["students"].as_array().unwrap();
+    assert_eq!(students.len(), 5);
+    assert!(students.iter().any(|s| s["error"]["message"].is_string()));
+    // late/, notes.txt and the class.csv written above.
+    assert_eq!(v["skipped"].as_array().unwrap().len(), 3);
+}
+
+#[test]
+fn check_csv_to_stdout_prints_only_the_csv_and_refuses_json() {
+    let out = grafika()
+        .args([
+            "check",
+            "problems/text-triangle.toml",
+            "--answers",
+            "problems/answers/triangle/",
+            "--csv",
+            "-",
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.starts_with("student,file,score"), "{text}");
+    assert_eq!(text.lines().count(), 4, "{text}");
+    let e = json_err(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        "problems/answers/triangle/",
+        "--csv",
+        "-",
+    ]);
+    assert_eq!(e["field"], "csv");
+}
+
+#[test]
+fn check_csv_with_one_answer_file_writes_its_row() {
+    let out = grafika()
+        .args([
+            "check",
+            "problems/text-triangle.toml",
+            "--answers",
+            "problems/answers/triangle/siti.toml",
+            "--csv",
+            "-",
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 2, "{text}");
+    assert!(lines[1].starts_with("Siti,"), "{text}");
+}
+
+#[test]
+fn check_a_100000_digit_number_is_unparseable_not_slow() {
+    let digits = format!("window.top = \"0.{}\"\n", "4".repeat(100_000));
+    let f = answers_file("long", &digits);
+    let v = json_ok(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        f.to_str().unwrap(),
+    ]);
+    assert_eq!(answer(&v, "window.top")["verdict"], "unparseable");
 }

@@ -3,17 +3,27 @@
 //! source (`--answers-from-text`).
 
 use crate::cli::args::CheckArgs;
+use crate::cli::cut_message;
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
 use crate::report::check::{to_json, to_text};
+use crate::report::lang::{tr, Lang};
 use crate::report::Style;
 use crate::tutor::check::{self, Marking, Verdict};
 use serde_json::json;
 use std::path::{Path, PathBuf};
 
-/// Runs `grafika check`; returns what to print on stdout.
-pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<String> {
+/// Runs `grafika check`; returns what to print on stdout and the exit
+/// status (2 when a file of a class could not be marked).
+pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<(String, i32)> {
     valid_tolerance(a.tolerance)?;
+    let stdin = Path::new("-");
+    if a.file == stdin && a.answers.as_deref() == Some(stdin) {
+        return Err(Error::new(
+            "answers",
+            "the problem and the answers cannot both come from standard input (-)",
+        ));
+    }
     let p = ProblemIn::read(&a.file)?;
     let settings = check::Settings {
         follow_through: a.follow_through,
@@ -38,47 +48,155 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<String> {
             let (_, answers) = check::answers_from_table(&p.printed);
             let who = p.source.clone().unwrap_or_else(|| "the text".into());
             let m = check::mark(&p, &who, &answers, settings, true)?;
-            Ok(output(&m, json, style))
+            Ok((output(&m, json, style), 0))
         }
-        (Some(path), false) if path.is_dir() => {
-            let files = answer_files(path)?;
-            let mut marks = Vec::new();
-            for f in &files {
-                let (student, answers) = check::read_answers(f)?;
-                let who = student.unwrap_or_else(|| stem(f));
-                marks.push((f.clone(), check::mark(&p, &who, &answers, settings, false)?));
-            }
-            let csv = summary_csv(&marks);
-            if let Some(c) = &a.csv {
-                if c.as_os_str() != "-" {
-                    std::fs::write(c, &csv).map_err(|e| {
-                        Error::new("csv", format!("cannot write {}: {e}", c.display()))
-                    })?;
-                }
-            }
-            let mut out = if json {
-                serde_json::to_string_pretty(&json!({
-                    "command": "check",
-                    "title": p.title,
-                    "students": marks.iter().map(|(_, m)| to_json(m)).collect::<Vec<_>>(),
-                }))
-                .unwrap_or_default()
-                    + "\n"
-            } else {
-                summary_table(&p.title, &marks)
-            };
-            if a.csv.as_deref() == Some(Path::new("-")) {
-                out.push_str(&csv);
-            }
-            Ok(out)
-        }
+        (Some(path), false) if path.is_dir() => class(&p, path, settings, a, json, style),
         (Some(path), false) => {
             let (student, answers) = check::read_answers(path)?;
             let who = student.unwrap_or_else(|| path.display().to_string());
             let m = check::mark(&p, &who, &answers, settings, false)?;
-            Ok(output(&m, json, style))
+            if let Some(c) = &a.csv {
+                let row = Row {
+                    file: path.clone(),
+                    who: m.who.clone(),
+                    outcome: Ok(m.clone()),
+                    note: None,
+                };
+                write_csv(c, &summary_csv(std::slice::from_ref(&row)))?;
+                if c.as_os_str() == "-" {
+                    return Ok((summary_csv(&[row]), 0));
+                }
+            }
+            Ok((output(&m, json, style), 0))
         }
     }
+}
+
+/// One answer file of a class: its marking, or why it could not be marked,
+/// and a note on what was done with it.
+struct Row {
+    file: PathBuf,
+    who: String,
+    outcome: Result<Marking>,
+    note: Option<String>,
+}
+
+/// Marks every answer file of a directory: a file that cannot be read or
+/// marked is a row with its error (the others are marked all the same), and
+/// the exit status is then 2.
+fn class(
+    p: &ProblemIn,
+    dir: &Path,
+    settings: check::Settings,
+    a: &CheckArgs,
+    json: bool,
+    style: &Style,
+) -> Result<(String, i32)> {
+    let to_stdout = a.csv.as_deref() == Some(Path::new("-"));
+    if to_stdout && json {
+        return Err(Error::new(
+            "csv",
+            "--csv - and --json would both write to standard output: give --csv a file name",
+        ));
+    }
+    let (files, skipped) = answer_files(dir, style.lang)?;
+    let rows: Vec<Row> = files
+        .iter()
+        .map(|f| row(p, f, settings, style.lang))
+        .collect();
+    let status = if rows.iter().any(|r| r.outcome.is_err()) {
+        2
+    } else {
+        0
+    };
+    let csv = summary_csv(&rows);
+    if let Some(c) = &a.csv {
+        if to_stdout {
+            return Ok((csv, status));
+        }
+        write_csv(c, &csv)?;
+    }
+    let out = if json {
+        serde_json::to_string_pretty(&json!({
+            "command": "check",
+            "title": p.title,
+            "students": rows.iter().map(row_json).collect::<Vec<_>>(),
+            "skipped": skipped.iter().map(|(f, why)| json!({ "file": f.display().to_string(), "reason": why })).collect::<Vec<_>>(),
+        }))
+        .unwrap_or_default()
+            + "\n"
+    } else {
+        let mut t = summary_table(&p.title, &rows);
+        for r in &rows {
+            if let Some(n) = &r.note {
+                t.push_str(&format!("{}: {n}\n", r.file.display()));
+            }
+        }
+        for (f, why) in &skipped {
+            t.push_str(&format!("{}: {why}\n", f.display()));
+        }
+        t
+    };
+    Ok((out, status))
+}
+
+/// Reads and marks one student's file.
+fn row(p: &ProblemIn, f: &Path, settings: check::Settings, lang: Lang) -> Row {
+    let read = check::read_answers(f);
+    let who = match &read {
+        Ok((Some(s), _)) => s.clone(),
+        _ => stem(f),
+    };
+    let note = match &read {
+        Ok((_, answers)) if answers.is_empty() => Some(
+            tr(
+                lang,
+                "holds no answers: marked with every answer missing",
+                "tidak berisi jawaban: dinilai dengan semua jawaban kosong",
+            )
+            .to_string(),
+        ),
+        Err(_) => Some(
+            tr(
+                lang,
+                "not marked: the file is not a valid answer file (see the error in its row)",
+                "tidak dinilai: berkas ini bukan berkas jawaban yang sah (lihat galat di barisnya)",
+            )
+            .to_string(),
+        ),
+        _ => None,
+    };
+    let outcome = read.and_then(|(_, answers)| check::mark(p, &who, &answers, settings, false));
+    Row {
+        file: f.to_path_buf(),
+        who,
+        outcome,
+        note,
+    }
+}
+
+fn row_json(r: &Row) -> serde_json::Value {
+    match &r.outcome {
+        Ok(m) => {
+            let mut j = to_json(m);
+            j["file"] = json!(r.file.display().to_string());
+            j
+        }
+        Err(e) => json!({
+            "student": r.who,
+            "file": r.file.display().to_string(),
+            "error": { "field": e.field, "message": e.message },
+        }),
+    }
+}
+
+/// Writes the CSV to a file (`-`: nothing here, the caller prints it).
+fn write_csv(c: &Path, csv: &str) -> Result<()> {
+    if c.as_os_str() == "-" {
+        return Ok(());
+    }
+    std::fs::write(c, csv)
+        .map_err(|e| Error::new("csv", format!("cannot write {}: {e}", c.display())))
 }
 
 /// `--tolerance` must be a finite number ≥ 0.
@@ -106,22 +224,44 @@ fn stem(f: &Path) -> String {
         .unwrap_or_default()
 }
 
-/// The `*.toml` files of a directory, sorted by name.
-fn answer_files(dir: &Path) -> Result<Vec<PathBuf>> {
+/// The `*.toml` files of a directory, sorted by name, and every other
+/// entry with the reason it is not read (a subdirectory, another kind of file).
+type Skipped = Vec<(PathBuf, String)>;
+
+fn answer_files(dir: &Path, lang: Lang) -> Result<(Vec<PathBuf>, Skipped)> {
     let rd = std::fs::read_dir(dir)
         .map_err(|e| Error::new("answers", format!("cannot read {}: {e}", dir.display())))?;
-    let mut files: Vec<PathBuf> = rd
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+    let mut all: Vec<PathBuf> = rd.filter_map(|e| e.ok().map(|e| e.path())).collect();
+    all.sort();
+    let (files, others): (Vec<PathBuf>, Vec<PathBuf>) = all
+        .into_iter()
+        .partition(|p| p.is_file() && p.extension().is_some_and(|x| x == "toml"));
+    let skipped = others
+        .into_iter()
+        .map(|p| {
+            let why = if p.is_dir() {
+                tr(
+                    lang,
+                    "skipped: a subdirectory (its files are not read)",
+                    "dilewati: subdirektori (berkas di dalamnya tidak dibaca)",
+                )
+            } else {
+                tr(
+                    lang,
+                    "skipped: not a .toml file",
+                    "dilewati: bukan berkas .toml",
+                )
+            };
+            (p, why.to_string())
+        })
         .collect();
-    files.sort();
     if files.is_empty() {
         return Err(Error::new(
             "answers",
             format!("{} holds no .toml answer files", dir.display()),
         ));
     }
-    Ok(files)
+    Ok((files, skipped))
 }
 
 fn mistakes(m: &Marking) -> String {
@@ -133,7 +273,7 @@ fn mistakes(m: &Marking) -> String {
 }
 
 /// One row per student.
-fn summary_table(title: &str, marks: &[(PathBuf, Marking)]) -> String {
+fn summary_table(title: &str, rows: &[Row]) -> String {
     use comfy_table::{presets, Table};
     let mut t = Table::new();
     t.load_preset(presets::UTF8_FULL_CONDENSED).set_header(vec![
@@ -147,7 +287,17 @@ fn summary_table(title: &str, marks: &[(PathBuf, Marking)]) -> String {
         "follow-through",
         "mistakes",
     ]);
-    for (_, m) in marks {
+    for r in rows {
+        let m = match &r.outcome {
+            Ok(m) => m,
+            Err(e) => {
+                let mut cells = vec![r.who.clone(), "—".to_string()];
+                cells.extend(std::iter::repeat_n(String::new(), 6));
+                cells.push(format!("error: {}", cut_message(&e.to_string())));
+                t.add_row(cells);
+                continue;
+            }
+        };
         t.add_row(vec![
             m.who.clone(),
             format!("{}/{}", crate::report::fmt_dec(m.score(), 4), m.total()),
@@ -163,9 +313,10 @@ fn summary_table(title: &str, marks: &[(PathBuf, Marking)]) -> String {
     format!("{title}\n{t}\n")
 }
 
-/// `student,file,score,total,correct,too_coarse,wrong,missing,unparseable,follow_through,mistakes`
-/// (follow_through: how many of the correct were credited by follow-through).
-fn summary_csv(marks: &[(PathBuf, Marking)]) -> String {
+/// `student,file,score,total,correct,too_coarse,wrong,missing,unparseable,follow_through,mistakes,error`
+/// (follow_through: how many of the correct were credited by follow-through;
+/// a file that could not be marked: empty counts and its error).
+fn summary_csv(rows: &[Row]) -> String {
     let q = |s: &str| {
         if s.contains([',', '"', '\n']) {
             format!("\"{}\"", s.replace('"', "\"\""))
@@ -174,23 +325,25 @@ fn summary_csv(marks: &[(PathBuf, Marking)]) -> String {
         }
     };
     let mut out = String::from(
-        "student,file,score,total,correct,too_coarse,wrong,missing,unparseable,follow_through,mistakes\n",
+        "student,file,score,total,correct,too_coarse,wrong,missing,unparseable,follow_through,mistakes,error\n",
     );
-    for (f, m) in marks {
-        out.push_str(&format!(
-            "{},{},{},{},{},{},{},{},{},{},{}\n",
-            q(&m.who),
-            q(&f.display().to_string()),
-            m.score(),
-            m.total(),
-            m.count(Verdict::Correct),
-            m.count(Verdict::TooCoarse),
-            m.count(Verdict::Wrong),
-            m.count(Verdict::Missing),
-            m.count(Verdict::Unparseable),
-            m.follow_through(),
-            q(&mistakes(m)),
-        ));
+    for r in rows {
+        let (who, file) = (q(&r.who), q(&r.file.display().to_string()));
+        match &r.outcome {
+            Ok(m) => out.push_str(&format!(
+                "{who},{file},{},{},{},{},{},{},{},{},{},\n",
+                m.score(),
+                m.total(),
+                m.count(Verdict::Correct),
+                m.count(Verdict::TooCoarse),
+                m.count(Verdict::Wrong),
+                m.count(Verdict::Missing),
+                m.count(Verdict::Unparseable),
+                m.follow_through(),
+                q(&mistakes(m)),
+            )),
+            Err(e) => out.push_str(&format!("{who},{file},,,,,,,,,,{}\n", q(&e.to_string()))),
+        }
     }
     out
 }
