@@ -371,3 +371,62 @@ fn several_topics_alternate_through_the_exam() {
         "{q}"
     );
 }
+
+#[test]
+fn generate_refuses_huge_outputs_without_force() {
+    let dir = tmp("huge");
+    let e = json_err(&[
+        "generate",
+        "--topic",
+        "view",
+        "--count",
+        "500",
+        "--variants",
+        "500",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert_eq!(e["field"], "count");
+    assert!(e["message"].as_str().unwrap().contains("--force"), "{e}");
+    assert!(!dir.exists(), "nothing is written");
+}
+
+#[test]
+fn generate_never_overwrites_files_without_force() {
+    let dir = tmp("again");
+    let args = [
+        "generate",
+        "--topic",
+        "view",
+        "--count",
+        "1",
+        "--out",
+        dir.to_str().unwrap(),
+    ];
+    grafika().args(args).assert().success();
+    let e = json_err(&args);
+    assert_eq!(e["field"], "out");
+    assert!(
+        e["message"].as_str().unwrap().contains("already exists"),
+        "{e}"
+    );
+    grafika().args(args).arg("--force").assert().success();
+}
+
+#[test]
+fn generate_out_naming_a_file_says_so() {
+    let e = json_err(&[
+        "generate",
+        "--topic",
+        "view",
+        "--count",
+        "1",
+        "--out",
+        "/dev/null",
+    ]);
+    assert_eq!(e["field"], "out");
+    assert!(
+        e["message"].as_str().unwrap().contains("not a directory"),
+        "{e}"
+    );
+}

@@ -1,4 +1,4 @@
-//! The command-line arguments (SPEC §4): every flag of every command, as
+//! The command-line arguments (docs/spec.md §4): every flag of every command, as
 //! clap reads them. The only file besides the dispatch that knows clap; the
 //! choices of the layers below (precision, model, shading, ...) get their
 //! command-line names here.
@@ -33,7 +33,7 @@ pub struct Common {
     /// Significant digits of the decimals shown.
     #[arg(long, default_value_t = 4, global = true, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
-    /// Print one JSON object (SPEC §3) instead of the worked solution.
+    /// Print one JSON object (docs/spec.md §3) instead of the worked solution.
     #[arg(long, global = true)]
     pub json: bool,
     /// The language of the words: id (Bahasa Indonesia) or en (default: GRAFIKA_LANG, then the locale).
@@ -45,8 +45,14 @@ pub struct Common {
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Camera basis u, v, n from eye, look-at point and up vector.
+    #[command(
+        after_help = "Examples / Contoh:\n  grafika basis --eye 3,1,3 --look 2,1,2 --up 0,1,0\n  grafika basis --eye \"(3,1,3)\" --look 2,1,2 --up 0,1,0 --precision f64"
+    )]
     Basis(CameraArgs),
     /// View matrix and eye coordinates of world points.
+    #[command(
+        after_help = "Examples / Contoh:\n  grafika view --eye 4,4,4 --look 0,1,4 --up 0,1,0 --point Pref=0,1,4"
+    )]
     View {
         #[command(flatten)]
         camera: CameraArgs,
@@ -55,15 +61,28 @@ pub enum Command {
         points: Vec<String>,
     },
     /// Perspective or orthographic projection of eye-coordinate points.
+    #[command(
+        after_help = "Examples / Contoh:\n  grafika project --d -0.1 --point \"A=0,-1,-6/sqrt(2)\"\n  grafika project --cop 5 --plane 0 --point A=1,2,-3\n  grafika project --ortho --point A=1,2,-3"
+    )]
     Project(ProjectArgs),
     /// Viewing window from fovy/aspect/near, and the viewport mapping.
+    #[command(
+        after_help = "Examples / Contoh:\n  grafika window --fovy 45 --aspect 2 --near 0.1 --viewport 200x100 --point \"A=0,-sqrt(2)/60\"\n  grafika window --fovy \"pi/4 rad\" --aspect 2 --near 0.1 --far 10"
+    )]
     Window(WindowArgs),
     /// 3D line clipping with 6-bit outcodes (cross-checked by Liang–Barsky).
+    #[command(
+        after_help = "Examples / Contoh:\n  grafika clip --min 0,0,0 --max 3,4,3 --from 4,2,2 --to -2,6,1"
+    )]
     Clip(ClipArgs),
     /// Lighting at one surface point: the text's models and Direct3D 9 Blinn–Phong.
+    #[command(
+        after_help = "Examples / Contoh:\n  grafika shade --light 0,0,1 --normal 0,1,1 --view 0,0,1 --color 1,1,0\n  grafika shade --light 0,0,1 --normal 0,1,1 --view 0,0,1 --color 1,1,0 --model blinn"
+    )]
     Shade(ShadeArgs),
     /// Run time against error: time per operation and error in ulps
     /// against the exact path, per stage and precision.
+    #[command(after_help = "Examples / Contoh:\n  grafika bench --quick\n  grafika bench --json")]
     Bench {
         /// A few cases and passes only (seconds, for tests).
         #[arg(long)]
@@ -74,15 +93,27 @@ pub enum Command {
         cases: Option<u16>,
     },
     /// A whole problem from a TOML file.
+    #[command(
+        after_help = "Examples / Contoh:\n  grafika solve problems/text-triangle.toml\n  grafika solve - --precision f64 < problems/text-camera.toml"
+    )]
     Solve {
         /// The problem file.
         file: PathBuf,
     },
     /// Mark a student's answers to a problem, and diagnose the mistakes.
+    #[command(
+        after_help = "Examples / Contoh:\n  grafika check problems/text-triangle.toml --answers problems/answers/triangle/siti.toml\n  grafika check problems/text-triangle.toml --answers problems/answers/triangle/ --csv marks.csv\n  grafika check problems/text-triangle.toml --answers-from-text"
+    )]
     Check(CheckArgs),
     /// Generate problems, question sheets and answer keys.
+    #[command(
+        after_help = "Examples / Contoh:\n  grafika generate --topic view,window,clip --count 5 --variants 30 --seed 2026 --out exam\n  grafika generate --topic shade --difficulty easy --format latex --out sheet"
+    )]
     Generate(GenerateArgs),
     /// Render a scene file (TOML) to a PNG: flat, Gouraud or Phong shading.
+    #[command(
+        after_help = "Examples / Contoh:\n  grafika render problems/render/cone-flat.toml -o cone.png --stats\n  grafika render problems/render/cone-flat.toml -o cone.png --explain-pixel 330,150"
+    )]
     Render(RenderArgs),
     /// Practise a problem one value at a time: verdict, diagnosis, hints,
     /// follow-through (answers and commands from standard input).
@@ -173,7 +204,7 @@ pub enum OnOff {
     Off,
 }
 
-/// The lighting flags (SPEC §4 and the Direct3D extras).
+/// The lighting flags (docs/spec.md §4 and the Direct3D extras).
 #[derive(Args, Debug, Default)]
 pub struct ShadeArgs {
     /// L, toward the light (one white directional light), X,Y,Z.
@@ -278,7 +309,7 @@ pub struct PracticeArgs {
 /// The `render` flags.
 #[derive(Args, Debug, Clone)]
 pub struct RenderArgs {
-    /// The scene file (TOML, SPEC §6).
+    /// The scene file (TOML, docs/spec.md §6).
     pub scene: PathBuf,
     /// The PNG to write.
     #[arg(short = 'o', long = "output", value_name = "IMAGE.png")]
@@ -354,6 +385,9 @@ pub struct GenerateArgs {
     /// Relative tolerance of the numbers in Moodle and GIFT (default 0.001, i.e. 0.1%).
     #[arg(long, value_name = "R")]
     pub tolerance: Option<f64>,
+    /// Overwrite files that already exist, and write more than 2,000 problems.
+    #[arg(long)]
+    pub force: bool,
 }
 
 /// Gives a type of a lower layer its command-line choices: each variant's

@@ -25,8 +25,56 @@ pub fn run(a: &GenerateArgs, json: bool, style: &Style) -> Result<String> {
     })
 }
 
+/// More problems than this (count × variants) are written only with `--force`.
+pub const MAX_PROBLEMS: u64 = 2_000;
+
+/// About how many bytes one problem takes on disk (its problem file, key
+/// and worked solution), for the size given when refusing.
+const BYTES_PER_PROBLEM: u64 = 16_000;
+
+/// Refuses, unless `--force`: more than [`MAX_PROBLEMS`] problems, and an
+/// output that would overwrite existing files. `--out` naming a file that is
+/// not a directory is always an error.
+fn check_out(a: &GenerateArgs) -> Result<()> {
+    if a.out.exists() && !a.out.is_dir() {
+        return Err(Error::new(
+            "out",
+            format!("{} exists and is not a directory", a.out.display()),
+        ));
+    }
+    let n = a.count as u64 * a.variants as u64;
+    if n > MAX_PROBLEMS && !a.force {
+        return Err(Error::new(
+            "count",
+            format!(
+                "{n} problems ({} × {}, about {} MB) is more than the {MAX_PROBLEMS} written without --force",
+                a.count,
+                a.variants,
+                n * BYTES_PER_PROBLEM / 1_000_000
+            ),
+        ));
+    }
+    let first = a.out.join(match a.format {
+        Format::Moodle => "quiz.xml",
+        Format::Gift => "quiz.gift",
+        _ if a.variants == 1 => "problem-01.toml",
+        _ => "variant-01",
+    });
+    if first.exists() && !a.force {
+        return Err(Error::new(
+            "out",
+            format!(
+                "{} already exists: give --force to overwrite it, or another --out",
+                first.display()
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// Generates and writes every variant; returns the files written.
 pub fn write_exams(a: &GenerateArgs, style: &Style) -> Result<Vec<PathBuf>> {
+    check_out(a)?;
     if matches!(a.format, Format::Moodle | Format::Gift) {
         return write_quiz(a, style).map(|f| vec![f]);
     }
