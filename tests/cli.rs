@@ -509,3 +509,203 @@ fn own_problems_by_hand_in_exact_form() {
         serde_json::json!(["75", "100"])
     );
 }
+
+#[test]
+fn no_file_of_the_project_reaches_outside_the_repository() {
+    // The tracked text files (sources, problems, scenes, docs) never name
+    // a folder beside the repository.
+    let mut stack = vec![root()];
+    let mut n = 0;
+    while let Some(dir) = stack.pop() {
+        for e in std::fs::read_dir(&dir).unwrap() {
+            let p = e.unwrap().path();
+            let name = p.file_name().unwrap().to_string_lossy().to_string();
+            if name.starts_with('.') || name == "target" {
+                continue;
+            }
+            if p.is_dir() {
+                stack.push(p);
+                continue;
+            }
+            let Ok(text) = std::fs::read_to_string(&p) else {
+                continue;
+            };
+            n += 1;
+            let bad = ["../shared", "../../..", "/work/"];
+            for b in bad {
+                // (this test names them in `bad` itself)
+                if p.ends_with("tests/cli.rs") {
+                    continue;
+                }
+                assert!(!text.contains(b), "{p:?} contains {b}");
+            }
+        }
+    }
+    assert!(n > 50, "read only {n} files");
+}
+
+#[test]
+fn render_scene_with_no_objects_is_an_error() {
+    let out = std::env::temp_dir().join(format!("grafika-empty-{}.png", std::process::id()));
+    let e = json_err(&["render", "/dev/null", "-o", out.to_str().unwrap()]);
+    assert_eq!(e["field"], "object");
+}
+
+#[test]
+fn overflowing_results_are_refused_never_printed_as_nan_or_inf() {
+    let cases: &[&[&str]] = &[
+        &[
+            "window",
+            "--fovy",
+            "45",
+            "--aspect",
+            "2",
+            "--near",
+            "0.1",
+            "--viewport",
+            "200x100",
+            "--point",
+            "A=1e308,1e308",
+            "--precision",
+            "f64",
+        ],
+        &[
+            "shade",
+            "--normal",
+            "1e-320,0,0",
+            "--light",
+            "0,0,1",
+            "--view",
+            "0,0,1",
+            "--color",
+            "1,1,0",
+            "--precision",
+            "f64",
+        ],
+        &[
+            "project",
+            "--d",
+            "-0.1",
+            "--point",
+            "A=1,1,1e-320",
+            "--precision",
+            "f64",
+        ],
+        &[
+            "basis",
+            "--eye",
+            "1e308,0,0",
+            "--look=-1e308,0,0",
+            "--up",
+            "0,1,0",
+            "--precision",
+            "f64",
+        ],
+    ];
+    for args in cases {
+        let out = grafika().args(*args).arg("--json").output().unwrap();
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        if out.status.success() {
+            for bad in ["NaN", "inf", "null"] {
+                assert!(!stdout.contains(bad), "{args:?} printed {bad}: {stdout}");
+            }
+        } else {
+            assert_eq!(out.status.code(), Some(2), "{args:?}");
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        }
+    }
+}
+
+#[test]
+fn eye_in_parentheses_is_read_like_answer_files() {
+    let a = json_ok(&[
+        "basis", "--eye", "(3,1,3)", "--look", "[2,1,2]", "--up", "0,1,0",
+    ]);
+    let b = json_ok(&[
+        "basis", "--eye", "3,1,3", "--look", "2,1,2", "--up", "0,1,0",
+    ]);
+    assert_eq!(a["result"], b["result"]);
+}
+
+#[test]
+fn clap_errors_are_one_line() {
+    for args in [
+        &["basis", "--eye"][..],
+        &["basis", "--nonsense", "1"],
+        &["frobnicate"],
+    ] {
+        let out = grafika().args(args).output().unwrap();
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.starts_with("error: "), "{err}");
+    }
+}
+
+#[test]
+fn a_long_echoed_input_is_cut_in_the_error() {
+    let long = "x".repeat(100_000);
+    let out = grafika()
+        .args(["basis", "--eye", &long, "--look", "0,0,0", "--up", "0,1,0"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.len() < 1000, "{} bytes", err.len());
+    assert!(err.contains("characters cut"), "{err}");
+}
+
+#[test]
+fn render_refuses_precision_it_would_ignore() {
+    let out = std::env::temp_dir().join(format!("grafika-prec-{}.png", std::process::id()));
+    let e = json_err(&[
+        "render",
+        "problems/render/cone-flat.toml",
+        "-o",
+        out.to_str().unwrap(),
+        "--precision",
+        "f64",
+    ]);
+    assert_eq!(e["field"], "precision");
+}
+
+#[test]
+fn render_summary_names_every_objects_shading() {
+    let dir = std::env::temp_dir().join(format!("grafika-mixed-shading-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("two.toml");
+    std::fs::write(
+        &scene,
+        "[image]\nwidth = 64\nheight = 64\n\n[[object]]\ntype = \"sphere\"\nn = 8\nr = 10\n\n\
+         [[object]]\ntype = \"sphere\"\nn = 8\nr = 10\nshading = \"gouraud\"\n\
+         transform = [ { translate = [20, 0, 0] } ]\n",
+    )
+    .unwrap();
+    let png = dir.join("two.png");
+    let v = json_ok(&[
+        "render",
+        scene.to_str().unwrap(),
+        "-o",
+        png.to_str().unwrap(),
+    ]);
+    assert_eq!(v["result"]["shading"], "flat, gouraud", "{}", v["result"]);
+}
+
+#[test]
+fn solve_reads_the_problem_from_standard_input() {
+    let text = std::fs::read_to_string(root().join("problems/text-camera.toml")).unwrap();
+    let out = grafika()
+        .args(["solve", "-", "--json"])
+        .write_stdin(text)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let from_stdin: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let from_file = json_ok(&["solve", "problems/text-camera.toml"]);
+    assert_eq!(from_stdin["result"], from_file["result"]);
+}

@@ -1,4 +1,4 @@
-//! The command line (SPEC §4): clap definitions, dispatch by precision, and
+//! The command line (docs/spec.md §4): clap definitions, dispatch by precision, and
 //! the single place where a report or an error is printed.
 
 pub mod args;
@@ -28,8 +28,23 @@ macro_rules! at_precision {
     };
 }
 
-/// Runs one parsed command line.
+/// Runs one parsed command line; a result that is not a finite number is
+/// refused (an error naming it), never printed.
 pub fn run(cli: &Cli) -> Result<Report> {
+    let report = run_unchecked(cli)?;
+    match report.non_finite_result() {
+        Some(key) => Err(Error::new(
+            key,
+            format!(
+                "the result is not a finite number at {} precision: an input overflows or underflows the floats (scale the inputs, or use --precision exact)",
+                format!("{:?}", cli.common.precision).to_lowercase()
+            ),
+        )),
+        None => Ok(report),
+    }
+}
+
+fn run_unchecked(cli: &Cli) -> Result<Report> {
     let p = cli.common.precision;
     match &cli.command {
         Command::Basis(c) => at_precision!(p, basis(c)),
@@ -45,7 +60,12 @@ pub fn run(cli: &Cli) -> Result<Report> {
                 "check, generate, bench and practice print their own output: use main_with_args",
             ))
         }
-        // The renderer computes at f32 (the calculator's precisions are for explaining).
+        // The renderer computes at f32 (the calculator's precisions are for
+        // explaining): another --precision is refused, not ignored.
+        Command::Render(_) if p != Precision::Exact => Err(Error::new(
+            "precision",
+            "render always computes at f32 (--precision is for the calculator's worked steps): leave it out",
+        )),
         Command::Render(a) => crate::cli::render::run(a),
     }
 }
@@ -83,18 +103,18 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
     let style = style_of(&cli);
     let json = cli.common.json;
     let printed = match &cli.command {
-        Command::Bench { quick, cases } => Ok(bench(*quick, *cases, json)),
+        Command::Bench { quick, cases } => Ok((bench(*quick, *cases, json), 0)),
         Command::Check(a) => check::run(a, json, &style),
-        Command::Generate(a) => generate::run(a, json, &style),
-        Command::Practice(a) => practice::run(a, json, &style).map(|()| String::new()),
-        _ => run(&cli).map(|report| report_text(&report, json, &style)),
+        Command::Generate(a) => generate::run(a, json, &style).map(|t| (t, 0)),
+        Command::Practice(a) => practice::run(a, json, &style).map(|()| (String::new(), 0)),
+        _ => run(&cli).map(|report| (report_text(&report, json, &style), 0)),
     };
     match printed {
-        Ok(text) => {
+        Ok((text, status)) => {
             print!("{text}");
-            0
+            status
         }
-        Err(e) => report_error(&e, json, None),
+        Err(e) => report_error(&e, json),
     }
 }
 
@@ -158,22 +178,60 @@ fn clap_error(e: clap::Error, wants_json: bool) -> i32 {
                 .get(ContextKind::InvalidArg)
                 .map(|v| v.to_string())
                 .unwrap_or_else(|| "arguments".to_string());
-            let err = Error::new(field, kind.to_string());
-            report_error(&err, wants_json, Some(e.render().to_string()))
+            let err = Error::new(
+                field,
+                clap_message(&e.render().to_string(), &kind.to_string()),
+            );
+            report_error(&err, wants_json)
         }
     }
 }
 
-/// Prints an error (stderr; and JSON on stdout with `--json`), returns 2.
-fn report_error(e: &Error, json: bool, long: Option<String>) -> i32 {
-    match long {
-        Some(text) => eprint!("{text}"),
-        None => eprintln!("error: {e}"),
+/// clap's several-line error as one line: its first line without the
+/// `error: ` prefix, then `(see --help)`.
+fn clap_message(rendered: &str, kind: &str) -> String {
+    let first = rendered
+        .lines()
+        .map(str::trim)
+        .find(|l| !l.is_empty())
+        .map(|l| l.trim_start_matches("error:").trim().to_string())
+        .unwrap_or_else(|| kind.to_string());
+    let tip = rendered
+        .lines()
+        .map(str::trim)
+        .find_map(|l| l.strip_prefix("tip:"))
+        .map(|t| format!("; {}", t.trim()))
+        .unwrap_or_default();
+    format!("{first}{tip} (see --help)")
+}
+
+/// At most this many characters of a message are printed: an error about
+/// a 100 KB input quotes its start and end, not all of it.
+pub const MAX_MESSAGE: usize = 300;
+
+/// `message` cut to [`MAX_MESSAGE`] characters, its middle replaced by the
+/// number of characters left out.
+pub fn cut_message(message: &str) -> String {
+    let n = message.chars().count();
+    if n <= MAX_MESSAGE {
+        return message.to_string();
     }
+    let keep = MAX_MESSAGE / 2;
+    let head: String = message.chars().take(keep).collect();
+    let tail: String = message.chars().skip(n - keep).collect();
+    format!("{head} … ({} characters cut) … {tail}", n - 2 * keep)
+}
+
+/// Prints an error on one line (stderr; and JSON on stdout with `--json`),
+/// a long echoed input cut; returns 2.
+fn report_error(e: &Error, json: bool) -> i32 {
+    let field = cut_message(&e.field);
+    let message = cut_message(&e.message).replace('\n', " ");
+    eprintln!("error: {field}: {message}");
     if json {
         println!(
             "{}",
-            serde_json::json!({ "error": { "field": e.field, "message": e.message } })
+            serde_json::json!({ "error": { "field": field, "message": message } })
         );
     }
     2

@@ -70,7 +70,7 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
     if let Some((x, y)) = pixel {
         explain(&frame, &scene, x, y, &mut rec);
     }
-    let shading = format!("{:?}", opt.shading).to_lowercase();
+    let shading = shading_summary(&scene, &opt);
     let mut result = vec![
         (
             "image".to_string(),
@@ -139,6 +139,23 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
         comparison: None,
         source_notes: vec![],
     })
+}
+
+/// The shadings drawn: the one forced by `--shading`, else each object's
+/// own (or the scene's) once, in object order (`flat, gouraud`).
+fn shading_summary(scene: &Scene, opt: &Options) -> String {
+    let name = |s: Shading| format!("{s:?}").to_lowercase();
+    if opt.force_shading || scene.objects.is_empty() {
+        return name(opt.shading);
+    }
+    let mut seen: Vec<String> = Vec::new();
+    for o in &scene.objects {
+        let n = name(o.shading.unwrap_or(opt.shading));
+        if !seen.contains(&n) {
+            seen.push(n);
+        }
+    }
+    seen.join(", ")
 }
 
 /// The median over the runs of one stage's time.

@@ -1,5 +1,5 @@
 //! Reports: the one place where steps and results become text (with tables
-//! for matrices) or JSON (SPEC §3). Stages only produce data.
+//! for matrices) or JSON (docs/spec.md §3). Stages only produce data.
 
 pub mod bench;
 pub mod check;
@@ -200,7 +200,7 @@ impl Report {
         out
     }
 
-    /// The SPEC §3 JSON object.
+    /// The docs/spec.md §3 JSON object.
     pub fn to_json(&self) -> Value {
         let result = Value::Object(
             self.result

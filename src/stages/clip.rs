@@ -48,7 +48,7 @@ pub enum Status {
 }
 
 impl Status {
-    /// The SPEC's word for it.
+    /// docs/spec.md's word for it.
     pub fn as_str(self) -> &'static str {
         match self {
             Status::Accepted => "accepted",

@@ -208,7 +208,27 @@ pub struct Compared {
     pub why: Option<String>,
 }
 
+/// The key (`window.pixels.A`) of the first number under `v` that is NaN
+/// or infinite, if any.
+fn first_non_finite(key: &str, v: &Val) -> Option<String> {
+    match v {
+        Val::Num(n) if !n.value.is_finite() => Some(key.to_string()),
+        Val::List(items) => items.iter().find_map(|x| first_non_finite(key, x)),
+        Val::Map(m) => m
+            .iter()
+            .find_map(|(k, x)| first_non_finite(&format!("{key}.{k}"), x)),
+        _ => None,
+    }
+}
+
 impl Report {
+    /// The key of the first result that is not a finite number (NaN or ±∞,
+    /// from an overflow or underflow of the floats): such a result is never
+    /// printed as an answer.
+    pub fn non_finite_result(&self) -> Option<String> {
+        self.result.iter().find_map(|(k, v)| first_non_finite(k, v))
+    }
+
     /// The report of a finished recorder: its steps and warnings, the named
     /// results, at the precision `T` ran.
     pub fn from_recorder<T: Scalar>(

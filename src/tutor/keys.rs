@@ -34,7 +34,7 @@ pub fn window_result<T: Scalar>(w: &window::Window<T>, prefix: &str) -> Vec<(Str
 }
 
 /// Clips one segment by outcodes and by Liang–Barsky, records whether they
-/// agree, and returns the SPEC's clip result keys.
+/// agree, and returns docs/spec.md's clip result keys.
 pub fn clip_run<T: Scalar>(
     b: &ClipBox<T>,
     p0: &V3<T>,

@@ -20,7 +20,7 @@
 //! Direct3D would use being `ka·Cs`, `kd·Cs` and `ks·white` — the text's
 //! "Iₐ = Iₛ kₐ" takes the ambient intensity from the light source, so the
 //! light carries the ambient. With those values every sum above has one
-//! term equal to 1 and the formulas reduce to SPEC §1 exactly. A Direct3D
+//! term equal to 1 and the formulas reduce to docs/spec.md §1 exactly. A Direct3D
 //! material (colors given) uses ka = kd = ks = 1: its colors already carry
 //! the coefficients.
 //!

@@ -212,7 +212,7 @@ fn validation_names_the_field() {
 }
 
 /// The text's light: white, directional, toward (0,0,1); one light of the
-/// text's model gives exactly the SPEC formulas at f32 as well.
+/// text's model gives exactly the formulas of docs/spec.md §1 at f32 as well.
 #[test]
 fn text_defaults_at_f32() {
     let s = Surface {

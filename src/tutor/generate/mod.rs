@@ -1,5 +1,5 @@
 //! `grafika generate`: exams with answer keys. Each problem is a problem file
-//! (SPEC §5) drawn from a seeded [`SplitMix64`] with nice numbers for its
+//! (docs/spec.md §5) drawn from a seeded [`SplitMix64`] with nice numbers for its
 //! difficulty, checked to be non-degenerate and solvable, and solved exactly
 //! for its key; the question sheet and the key (with the full worked
 //! solution) are rendered as Markdown, LaTeX or JSON.
