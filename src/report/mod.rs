@@ -344,7 +344,7 @@ pub fn exact_json(v: &Val) -> Value {
     }
 }
 
-/// A step as JSON (SPEC §3).
+/// A step as JSON (docs/spec.md §3).
 pub fn step_json(s: &Step) -> Value {
     let obj = |kv: &[(String, Val)], f: fn(&Val) -> Value| {
         Value::Object(kv.iter().map(|(k, v)| (k.clone(), f(v))).collect())
