@@ -52,6 +52,21 @@ pub(crate) fn judge(
             // A projected point may be given as (xp, yp): zp = d is the plane.
             let prefix_ok = key.starts_with("project.") && parts.len() == items.len() - 1;
             if parts.len() != items.len() && !prefix_ok {
+                if let Some(junk) = parts
+                    .iter()
+                    .filter_map(scalar_text)
+                    .find(|t| parse_expr(&t.trim().replace(',', ".")).is_err())
+                {
+                    return Judged::new(
+                        Verdict::Unparseable,
+                        "unparseable",
+                        format!(
+                            "`{}` is not a number (expected {} values)",
+                            junk.trim(),
+                            items.len()
+                        ),
+                    );
+                }
                 return Judged::new(
                     Verdict::Wrong,
                     "wrong",
@@ -216,6 +231,14 @@ fn combine(parts: Vec<Judged>, label: impl Fn(usize) -> String) -> Judged {
         .map(|j| j.verdict)
         .max()
         .unwrap_or(Verdict::Correct);
+    // A component that cannot be read decides over a wrong one, so that
+    // the note names the junk (`sqrt(-1)`, `1/0`) rather than only the rest.
+    let unreadable = parts.iter().any(|j| j.verdict == Verdict::Unparseable);
+    let worst = if worst == Verdict::Wrong && unreadable {
+        Verdict::Unparseable
+    } else {
+        worst
+    };
     let rank = |c: &str| match c {
         "correct.exact" => 0,
         "correct.tolerance" => 1,
@@ -416,6 +439,34 @@ mod tests {
         assert_eq!(decimal_places("1.50e2"), Some((3, 0)));
         assert_eq!(decimal_places("12"), None);
         assert_eq!(decimal_places("-6/sqrt(2)"), None);
+    }
+
+    #[test]
+    fn junk_inside_a_vector_is_unparseable_and_named() {
+        let e = Val::List(vec![Val::num(&0.0), Val::num(&0.0), Val::num(&1.0)]);
+        let s = Settings::default();
+        let arr = |xs: &[&str]| {
+            toml::Value::Array(
+                xs.iter()
+                    .map(|x| toml::Value::String(x.to_string()))
+                    .collect(),
+            )
+        };
+        let j = judge(&arr(&["sqrt(-1)", "0", "1/0"]), &e, &s, "view.n", false);
+        assert_eq!(j.verdict, Verdict::Unparseable, "{}", j.note);
+        assert!(j.note.contains("x:") && j.note.contains("z:"), "{}", j.note);
+        let j = judge(
+            &toml::Value::String("banana".into()),
+            &e,
+            &s,
+            "view.n",
+            false,
+        );
+        assert_eq!(j.code, "unparseable", "{}", j.note);
+        assert!(j.note.contains("banana"), "{}", j.note);
+        // A readable wrong answer of the wrong length stays wrong.
+        let j = judge(&arr(&["0", "1"]), &e, &s, "view.n", false);
+        assert_eq!(j.code, "wrong");
     }
 
     #[test]
