@@ -83,12 +83,19 @@ fn time_stage<T: Scalar>(prep: &Prepared<T>, n: usize, s: Stage, budget: Duratio
 
 /// Runs the whole measurement.
 pub fn measure(set: &Settings) -> (Inputs, Vec<Row>) {
+    measure_with(set, &mut |_, _| {})
+}
+
+/// [`measure`], calling `step(k, n)` as the k-th of the n stages starts (a
+/// progress bar on a terminal).
+pub fn measure_with(set: &Settings, step: &mut dyn FnMut(usize, usize)) -> (Inputs, Vec<Row>) {
     let inp = accuracy::inputs(set.cases);
     let exact = Prepared::<Real>::new(&inp);
     let p64 = Prepared::<f64>::new(&inp);
     let p32 = Prepared::<f32>::new(&inp);
     let mut rows = Vec::new();
-    for s in Stage::ALL {
+    for (k, s) in Stage::ALL.into_iter().enumerate() {
+        step(k, Stage::ALL.len());
         let n = inp.len(s);
         let reference = accuracy::exact_results(&exact, &inp, s);
         let (t, k) = time_stage(&exact, n, s, set.exact_budget);

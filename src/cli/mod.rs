@@ -8,9 +8,10 @@ pub mod generate;
 pub mod practice;
 pub mod render;
 
+use crate::bench::accuracy::Stage;
 use crate::error::{Error, Result};
 use crate::num::Precision;
-use crate::report::lang::Lang;
+use crate::report::lang::{tr, Lang};
 use crate::report::Style;
 use crate::stages::trace::Report;
 use args::{CameraArgs, Cli, ClipArgs, Command, ProjectArgs, ShadeArgs, WindowArgs};
@@ -103,7 +104,7 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
     let style = style_of(&cli);
     let json = cli.common.json;
     let printed = match &cli.command {
-        Command::Bench { quick, cases } => Ok((bench(*quick, *cases, json), 0)),
+        Command::Bench { quick, cases } => Ok((bench(*quick, *cases, json, style.lang), 0)),
         Command::Check(a) => check::run(a, json, &style),
         Command::Generate(a) => generate::run(a, json, &style).map(|t| (t, 0)),
         Command::Practice(a) => practice::run(a, json, &style).map(|()| (String::new(), 0)),
@@ -142,7 +143,7 @@ fn report_text(report: &Report, json: bool, style: &Style) -> String {
 }
 
 /// `grafika bench`: the measurement as a table or JSON.
-fn bench(quick: bool, cases: Option<u16>, json: bool) -> String {
+fn bench(quick: bool, cases: Option<u16>, json: bool, lang: Lang) -> String {
     let mut set = if quick {
         crate::bench::Settings::quick()
     } else {
@@ -151,13 +152,36 @@ fn bench(quick: bool, cases: Option<u16>, json: bool) -> String {
     if let Some(n) = cases {
         set.cases = n as usize;
     }
-    let (inp, rows) = crate::bench::measure(&set);
+    let bar = terminal_bar(Stage::ALL.len() as u64, tr(lang, "measuring", "mengukur"));
+    let (inp, rows) = crate::bench::measure_with(&set, &mut |k, _| {
+        if let Some(b) = &bar {
+            b.set_position(k as u64);
+        }
+    });
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
     if json {
         let j = crate::report::bench::to_json(&inp, &rows);
         serde_json::to_string_pretty(&j).unwrap_or_default() + "\n"
     } else {
         crate::report::bench::table(&inp, &rows)
     }
+}
+
+/// A progress bar of `len` steps on standard error when it is a terminal
+/// (none in a pipe, so scripts and tests see nothing).
+pub fn terminal_bar(len: u64, msg: &str) -> Option<indicatif::ProgressBar> {
+    use std::io::IsTerminal;
+    if !std::io::stderr().is_terminal() {
+        return None;
+    }
+    let b = indicatif::ProgressBar::new(len);
+    if let Ok(s) = indicatif::ProgressStyle::with_template("{msg} {bar:40} {pos}/{len}") {
+        b.set_style(s);
+    }
+    b.set_message(msg.to_string());
+    Some(b)
 }
 
 /// A command line clap refused: help and version are printed as asked

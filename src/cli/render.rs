@@ -34,6 +34,11 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
             ));
         }
     }
+    // --repeat shows its progress on a terminal (a big scene × 10,000 runs
+    // for minutes); one frame has the renderer's own bar.
+    let bar = (a.repeat > 1)
+        .then(|| crate::cli::terminal_bar(a.repeat as u64, "frames / bingkai"))
+        .flatten();
     let go = || -> Result<(Frame, Vec<Stats>)> {
         let mut times = Vec::new();
         let mut last = None;
@@ -41,6 +46,12 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
             let f = render::render_reusing(&scene, &opt, last.take())?;
             times.push(f.stats.clone());
             last = Some(f);
+            if let Some(b) = &bar {
+                b.inc(1);
+            }
+        }
+        if let Some(b) = &bar {
+            b.finish_and_clear();
         }
         let f = last.ok_or_else(|| Error::new("--repeat", "nothing rendered"))?;
         Ok((f, times))
