@@ -36,7 +36,7 @@ pub fn validate<T: Scalar>(fovy_deg: &T, aspect: &T, near: &T) -> Result<()> {
     if *aspect <= T::zero() {
         return Err(Error::new(
             "aspect",
-            format!("must be positive (width/height), got {}", aspect.to_f64()),
+            format!("must be positive (width/height), got {}", got(aspect)),
         ));
     }
     if *near <= T::zero() {
@@ -44,11 +44,26 @@ pub fn validate<T: Scalar>(fovy_deg: &T, aspect: &T, near: &T) -> Result<()> {
             "near",
             format!(
                 "must be positive (a distance in front of the eye), got {}",
-                near.to_f64()
+                got(near)
             ),
         ));
     }
     Ok(())
+}
+
+/// A refused value as the message shows it: a float zero says that a tiny
+/// positive number written (1e-400) is 0 at that precision too.
+fn got<T: Scalar>(x: &T) -> String {
+    let v = x.to_f64();
+    match T::PRECISION {
+        crate::num::Precision::F64 if v == 0.0 => {
+            "0 (at f64 precision: a positive number below about 5e-324 is 0 too)".to_string()
+        }
+        crate::num::Precision::F32 if v == 0.0 => {
+            "0 (at f32 precision: a positive number below about 1e-45 is 0 too)".to_string()
+        }
+        _ => format!("{v}"),
+    }
 }
 
 /// The window on the plane at distance `dist` (near or far):
@@ -168,6 +183,21 @@ pub fn inside<T: Scalar>(w: &Window<T>, x: &T, y: &T) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_tiny_positive_number_is_not_reported_as_plain_0() {
+        let e = validate(&45.0f64, &2.0, &0.0).unwrap_err();
+        assert_eq!(e.field, "near");
+        assert!(
+            e.message.contains("below about 5e-324 is 0 too"),
+            "{}",
+            e.message
+        );
+        let e = validate(&45.0f32, &0.0, &0.1).unwrap_err();
+        assert!(e.message.contains("at f32 precision"), "{}", e.message);
+        let e = validate(&45.0f64, &-2.0, &0.1).unwrap_err();
+        assert!(e.message.ends_with("got -2"), "{}", e.message);
+    }
     use crate::stages::trace::NoTrace;
 
     #[test]
