@@ -551,8 +551,10 @@ fn camera_view(c: &CameraIn, p: &PerspectiveIn) -> Result<View> {
         .as_ref()
         .map(|a| ev(a, "perspective.aspect"))
         .transpose()?;
-    crate::stages::window::validate(&fovy, &aspect.unwrap_or(1.0), &near)
-        .map_err(|e| e.in_field(format!("perspective.{}", "fovy/aspect/near")))?;
+    crate::stages::window::validate(&fovy, &aspect.unwrap_or(1.0), &near).map_err(|e| {
+        let f = format!("perspective.{}", e.field);
+        e.in_field(f)
+    })?;
     if far <= near {
         return Err(Error::new(
             "perspective.far",
@@ -860,6 +862,15 @@ mod tests {
 
     fn parse(s: &str) -> Result<Scene> {
         Scene::parse(s, "s.toml", Path::new("."))
+    }
+
+    #[test]
+    fn a_bad_aspect_names_perspective_aspect_alone() {
+        let text = "[camera]\neye = [0, 0, 5]\nlook = [0, 0, 0]\nup = [0, 1, 0]\n\
+                    [perspective]\nnear = 1\nfar = 10\nfovy = 45\naspect = -2\n\
+                    [[object]]\ntype = \"sphere\"\nn = 8\nr = 1\n";
+        let e = parse(text).unwrap_err();
+        assert_eq!(e.field, "perspective.aspect", "{e}");
     }
 
     #[test]
