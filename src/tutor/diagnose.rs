@@ -10,7 +10,7 @@
 use crate::input::fields::{Num, Vec3In};
 use crate::input::problem::ProblemIn;
 use crate::num::vec;
-use crate::num::{Angle, AngleUnit, Expr};
+use crate::num::{AngleUnit, Expr};
 use crate::stages::camera::Basis;
 use crate::stages::lighting::Rules;
 use crate::stages::trace::Val;
@@ -102,12 +102,20 @@ pub static CATALOG: &[Mistake] = &[
     Mistake {
         code: "fovy_not_halved",
         description: "tan(fovy) used instead of tan(fovy/2) for the window",
+        // The window scaled by tan(fovy)/tan(fovy/2), not fovy doubled as an
+        // input: over 90° the doubled angle is refused, yet the mistake gives
+        // a window (top = near·tan(fovy) < 0) a student can write.
         apply: |p| {
-            altered(p, |q| {
-                map_fovy(q, |a| {
-                    a.value = Expr::Mul(Box::new(Expr::Lit("2".into())), Box::new(a.value.clone()))
-                })
-            })
+            hooked(
+                p,
+                Hooks {
+                    window: |w, fovy| {
+                        let half = (fovy / 2.0).to_radians();
+                        scale_window(w, fovy.to_radians().tan() / half.tan());
+                    },
+                    ..Hooks::default()
+                },
+            )
         },
     },
     Mistake {
@@ -367,12 +375,6 @@ fn map_camera(q: &mut ProblemIn, f: impl FnOnce(&mut crate::input::problem::Came
     }
 }
 
-fn map_fovy(q: &mut ProblemIn, f: impl FnOnce(&mut Angle)) {
-    if let Some(a) = q.perspective.as_mut().and_then(|x| x.fovy.as_mut()) {
-        f(&mut a.0);
-    }
-}
-
 /// The value at a path of map keys.
 fn find_mut<'a>(t: &'a mut Tree, path: &[&str]) -> Option<&'a mut Val> {
     let mut cur = &mut t.iter_mut().find(|(k, _)| k == path[0])?.1;
@@ -416,7 +418,7 @@ mod tests {
     }
 
     #[test]
-    fn fovy_not_halved_doubles_the_angle() {
+    fn fovy_not_halved_is_diagnosed_over_90_degrees_too() {
         // fovy = 60°, near = 1: the right top is tan 30° = 0.57735; with
         // tan(fovy) it is tan 60° = 1.73205.
         let p = ProblemIn::parse(
@@ -430,6 +432,17 @@ mod tests {
             panic!()
         };
         assert!((top.value - 3f64.sqrt()).abs() < 1e-12);
+        // Over 90°: fovy = 120°, tan 120° = −√3, so top = −√3 (near = 1).
+        let p120 = ProblemIn::parse(
+            "title = 't'\nask = ['window']\n[perspective]\nnear = 1\nfovy = 120\naspect = 1\n",
+            "t",
+        )
+        .unwrap();
+        let t = &(m.apply)(&p120).expect("fovy_not_halved applies over 90°")[0];
+        let Some(Val::Num(top)) = solve::lookup(t, "window.top") else {
+            panic!()
+        };
+        assert!((top.value + 3f64.sqrt()).abs() < 1e-12, "{}", top.value);
         // degrees as radians: tan(30 rad) = −6.405331196646276
         let m = find("degrees_as_radians").unwrap();
         let t = &(m.apply)(&p).unwrap()[0];
