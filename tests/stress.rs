@@ -395,7 +395,13 @@ fn near_parallel_inner() {
         };
         let mut rec = grafika::stages::trace::Recorder::new();
         let b = camera::basis(&cam, &mut rec).unwrap();
-        (b.u, rec.warnings.clone())
+        let words = rec.warnings.iter();
+        (
+            b.u,
+            words
+                .map(|m| grafika::report::words::words(m, grafika::report::lang::Lang::En))
+                .collect(),
+        )
     }
     let (u64_, w) = run::<f64>(up, d);
     assert_eq!(u64_, V3::new(0.0, 0.0, -1.0));

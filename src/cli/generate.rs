@@ -119,7 +119,7 @@ fn write_exam(
     let doc = match a.format {
         Format::Toml => return Ok(files),
         Format::Json => {
-            let j = exam_json(&title, a.seed, variant, exam);
+            let j = exam_json(&title, a.seed, variant, exam, style.lang);
             put(
                 "exam.json".into(),
                 serde_json::to_string_pretty(&j).unwrap_or_default() + "\n",

@@ -133,10 +133,10 @@ fn style_of(cli: &Cli) -> Style {
 /// A report as JSON or as the worked solution; its warnings go to stderr.
 fn report_text(report: &Report, json: bool, style: &Style) -> String {
     for w in &report.warnings {
-        eprintln!("warning: {w}");
+        eprintln!("{}: {}", style.tr("warning", "peringatan"), style.w(w));
     }
     if json {
-        serde_json::to_string_pretty(&report.to_json()).unwrap_or_default() + "\n"
+        serde_json::to_string_pretty(&report.to_json(style.lang)).unwrap_or_default() + "\n"
     } else {
         report.to_text(style)
     }

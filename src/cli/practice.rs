@@ -77,7 +77,7 @@ pub fn run(a: &PracticeArgs, json: bool, style: &Style) -> Result<()> {
     };
     let emit = |e: &Event| {
         if json {
-            say(&format!("{}\n", event_json(e)));
+            say(&format!("{}\n", event_json(e, look.style.lang)));
         } else {
             say(&event_text(e, &look));
         }

@@ -5,6 +5,7 @@
 use crate::cli::args::RenderArgs;
 use crate::error::{Error, Result};
 use crate::input::scene::{Scene, Shading};
+use crate::msg::Msg;
 use crate::render::{self, Frame, Options, Stats};
 use crate::stages::trace::Report;
 use crate::stages::trace::{Recorder, Step, Trace, Val};
@@ -268,17 +269,14 @@ fn v3(c: &[f32], at: usize) -> Vector3<f32> {
 
 /// The worked steps for pixel (x, y).
 pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
-    rec.section(format!("Pixel ({x}, {y})"));
+    rec.section(Msg::SecPixel(x, y));
     let k = (y * f.width + x) as usize;
     let id = f.ids[k];
     if id == crate::render::raster::NONE {
         rec.step(|| {
-            Step::new(
-                "Which triangle covers the pixel",
-                "pixel centre (x + ½, y + ½) inside a triangle, nearest wins",
-            )
-            .res("triangle", Val::text("none"))
-            .note("no triangle covers the pixel centre: it keeps the background colour")
+            Step::new(Msg::WhichTriangle, Msg::FPixelCentre)
+                .res("triangle", Val::text("none"))
+                .note(Msg::NoTriangle)
         });
         return;
     }
@@ -286,7 +284,7 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
     let c = &f.corners[id as usize];
     let obj = &scene.objects[t.obj as usize];
     rec.step(|| {
-        let mut s = Step::new("Which triangle covers the pixel", "edge functions E₀, E₁, E₂ ≥ 0 at the centre (top-left rule on edges); nearest depth wins")
+        let mut s = Step::new(Msg::WhichTriangle, Msg::FEdges)
             .val("object", Val::text(obj.name.clone()))
             .val("polygon face", Val::text(t.face.to_string()));
         for (n, v) in t.verts.iter().enumerate() {
@@ -298,28 +296,22 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
     let m = t.mu(x, y);
     let z = t.depth(x, y);
     rec.step(|| {
-        Step::new(
-            "Depth at the pixel (z-buffer)",
-            "z = λ₀z₀ + λ₁z₁ + λ₂z₂ (z/w is linear on the screen); smaller is nearer",
-        )
-        .val(
-            "z at the vertices",
-            Val::vec3(&Vector3::new(t.verts[0].z, t.verts[1].z, t.verts[2].z)),
-        )
-        .res("z", Val::num(&z))
-        .note("the nearest of all triangles covering this pixel")
+        Step::new(Msg::Depth, Msg::FDepth)
+            .val(
+                "z at the vertices",
+                Val::vec3(&Vector3::new(t.verts[0].z, t.verts[1].z, t.verts[2].z)),
+            )
+            .res("z", Val::num(&z))
+            .note(Msg::Nearest)
     });
     rec.step(|| {
-        Step::new(
-            "Barycentric coordinates",
-            "λₖ = Eₖ(centre)/area on the screen;  perspective-correct μₖ = (λₖ/wₖ) / Σ λₘ/wₘ",
-        )
-        .val("λ", Val::vec3(&Vector3::new(l[0], l[1], l[2])))
-        .val(
-            "1/w",
-            Val::vec3(&Vector3::new(t.inv_w[0], t.inv_w[1], t.inv_w[2])),
-        )
-        .res("μ", Val::vec3(&Vector3::new(m[0], m[1], m[2])))
+        Step::new(Msg::Barycentric, Msg::FBarycentric)
+            .val("λ", Val::vec3(&Vector3::new(l[0], l[1], l[2])))
+            .val(
+                "1/w",
+                Val::vec3(&Vector3::new(t.inv_w[0], t.inv_w[1], t.inv_w[2])),
+            )
+            .res("μ", Val::vec3(&Vector3::new(m[0], m[1], m[2])))
     });
     let at = |i: usize| m[0] * c[0][i] + m[1] * c[1][i] + m[2] * c[2][i];
     let look = &f.looks[t.obj as usize];
@@ -327,15 +319,12 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
     match look.shading {
         Shading::Flat => {
             rec.step(|| {
-                Step::new(
-                    "Flat shading: one colour per face",
-                    "colour = shade(face normal N, face centre)",
-                )
-                .val("N (eye space)", Val::vec3(&v3(&c[0], 3)))
-                .val("face centre", Val::vec3(&v3(&c[0], 6)))
-                .val("surface colour", Val::vec3(&v3(&c[0], 9)))
+                Step::new(Msg::FlatShading, Msg::FFlat)
+                    .val("N (eye space)", Val::vec3(&v3(&c[0], 3)))
+                    .val("face centre", Val::vec3(&v3(&c[0], 6)))
+                    .val("surface colour", Val::vec3(&v3(&c[0], 9)))
             });
-            rec.section("Lighting of the face (lighting::shade)");
+            rec.section(Msg::SecLightFace);
             render::light_at(
                 mat,
                 lights,
@@ -348,7 +337,7 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
         }
         Shading::Gouraud => {
             for (n, corner) in c.iter().enumerate() {
-                rec.section(format!("Lighting of vertex {n} (lighting::shade)"));
+                rec.section(Msg::SecLightVertex(n));
                 render::light_at(
                     mat,
                     lights,
@@ -359,16 +348,13 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
                     rec,
                 );
             }
-            rec.section(format!("Pixel ({x}, {y})"));
+            rec.section(Msg::SecPixel(x, y));
             rec.step(|| {
-                Step::new(
-                    "Gouraud: interpolate the vertex colours",
-                    "C = μ₀C₀ + μ₁C₁ + μ₂C₂",
-                )
-                .val("C₀", Val::vec3(&v3(&c[0], 0)))
-                .val("C₁", Val::vec3(&v3(&c[1], 0)))
-                .val("C₂", Val::vec3(&v3(&c[2], 0)))
-                .res("C", Val::vec3(&Vector3::new(at(0), at(1), at(2))))
+                Step::new(Msg::Gouraud, "C = μ₀C₀ + μ₁C₁ + μ₂C₂")
+                    .val("C₀", Val::vec3(&v3(&c[0], 0)))
+                    .val("C₁", Val::vec3(&v3(&c[1], 0)))
+                    .val("C₂", Val::vec3(&v3(&c[2], 0)))
+                    .res("C", Val::vec3(&Vector3::new(at(0), at(1), at(2))))
             });
         }
         Shading::Phong => {
@@ -377,7 +363,7 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
             let [n, p, col] = render::phong_attributes(t, c, x, y);
             rec.step(|| {
                 Step::new(
-                    "Phong shading: interpolate normal, position and colour",
+                    Msg::PhongShading,
                     "N = Σ μₖNₖ,  P = Σ μₖPₖ,  C = Σ μₖCₖ  (as Σ λₖaₖ/wₖ ÷ Σ λₖ/wₖ)",
                 )
                 .val(
@@ -388,11 +374,11 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
                 .res("P (eye space)", Val::vec3(&Vector3::new(p[0], p[1], p[2])))
                 .res("C", Val::vec3(&Vector3::new(col[0], col[1], col[2])))
             });
-            rec.section("Lighting of the pixel (lighting::shade)");
+            rec.section(Msg::SecLightPixel);
             render::pixel_color(t, c, x, y, &f.looks, f.ortho, rec);
         }
     }
-    rec.section(format!("Pixel ({x}, {y})"));
+    rec.section(Msg::SecPixel(x, y));
     let px = &f.rgb[3 * k..3 * k + 3];
     let col = render::pixel_color(
         t,
@@ -404,7 +390,7 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
         &mut crate::stages::trace::NoTrace,
     );
     rec.step(|| {
-        Step::new("Pixel colour", "8-bit value = round(255 · clamp(C, 0, 1))")
+        Step::new(Msg::PixelColour, Msg::FByte)
             .val("C", Val::vec3(&Vector3::new(col[0], col[1], col[2])))
             .res(
                 "RGB",

@@ -21,6 +21,7 @@
 use crate::error::{Error, Result};
 use crate::input;
 use crate::input::fields::{toml_error, AngleIn, Num, Vec3In};
+use crate::msg::Msg;
 use crate::num::vec::{normalize, sub, v3, V3};
 use crate::num::Scalar;
 use crate::stages::lighting::{
@@ -350,9 +351,9 @@ fn surface<T: Scalar>(
         (None, None) => {
             let v = v3(T::zero(), T::zero(), T::one());
             tr.step(|| {
-                Step::new("Unit vector V", "V = (0, 0, 1)")
+                Step::new(Msg::UnitVector("V".into()), "V = (0, 0, 1)")
                     .res("V", Val::vec3(&v))
-                    .note("not given: the text's viewVector (0, 0, 1), a viewer far along +z")
+                    .note(Msg::DefaultView)
             });
             v
         }
@@ -582,18 +583,20 @@ pub fn run_with<T: Scalar>(
 
 /// The step that shows the material and the model.
 fn material_step<T: Scalar>(m: &Material<T>) -> Step {
-    Step::new("Material and model", format!("model = {}", m.model.name()))
+    Step::new(Msg::Material, format!("model = {}", m.model.name()))
         .val("ka", Val::num(&m.ka))
         .val("kd", Val::num(&m.kd))
         .val("ks", Val::num(&m.ks))
         .val("n", Val::num(&m.shininess))
         .val("Cs", rgb_val(&m.color))
         .val("Cspecular", rgb_val(&m.specular))
-        .note(if m.ka == T::one() && m.kd == T::one() && m.ks == T::one() {
-            "Direct3D material: its colors carry the coefficients, so ka = kd = ks = 1"
-        } else {
-            "the text's constants unless given: ka = 0.4, kd = 0.6, ks = 0.7, n = 4, white specular"
-        })
+        .note(
+            if m.ka == T::one() && m.kd == T::one() && m.ks == T::one() {
+                Msg::MaterialD3d
+            } else {
+                Msg::MaterialText
+            },
+        )
 }
 
 /// With several lights: R (H, N·H), cos α and cos β as lists, one entry per

@@ -112,12 +112,12 @@ impl Doc {
     /// The worked steps of a report, grouped by section.
     pub fn steps(self, r: &Report, st: &Style) -> String {
         let mut out = String::new();
-        let mut section: Option<&str> = None;
+        let mut section: Option<&crate::msg::Msg> = None;
         for (i, s) in r.steps.iter().enumerate() {
-            if s.section.as_deref() != section {
-                section = s.section.as_deref();
+            if s.section.as_ref() != section {
+                section = s.section.as_ref();
                 if let Some(sec) = section {
-                    out.push_str(&self.heading(3, sec));
+                    out.push_str(&self.heading(3, &st.w(sec)));
                 }
             }
             out.push_str(&self.step(i + 1, s, st));
@@ -128,11 +128,12 @@ impl Doc {
     fn step(self, k: usize, s: &Step, st: &Style) -> String {
         let mut lines: Vec<String> = Vec::new();
         if !s.formula.is_empty() {
-            lines.push(self.formula(&s.formula));
+            lines.push(self.formula(&st.w(&s.formula)));
         }
         lines.extend(s.values.iter().map(|(n, v)| self.named(st, n, v, false)));
         lines.extend(s.result.iter().map(|(n, v)| self.named(st, n, v, true)));
         if let Some(n) = &s.note {
+            let n = &st.w(n);
             lines.push(match self {
                 Doc::Markdown => format!("*({})*", self.text(n)),
                 Doc::Latex => format!("\\emph{{({})}}", latex_text(n)),
@@ -140,7 +141,8 @@ impl Doc {
         }
         match self {
             Doc::Markdown => {
-                let mut out = format!("**Step {k}. {}**\n\n", self.text(&s.title));
+                let step = st.tr("Step", "Langkah");
+                let mut out = format!("**{step} {k}. {}**\n\n", self.text(&st.w(&s.title)));
                 for l in lines {
                     if l.contains('\n') {
                         out.push_str(&format!("\n{l}\n"));
@@ -153,8 +155,9 @@ impl Doc {
             }
             Doc::Latex => {
                 let mut out = format!(
-                    "\\paragraph{{Step {k}. {}}}\n\\begin{{itemize}}\n",
-                    latex_text(&s.title)
+                    "\\paragraph{{{} {k}. {}}}\n\\begin{{itemize}}\n",
+                    st.tr("Step", "Langkah"),
+                    latex_text(&st.w(&s.title))
                 );
                 for l in lines {
                     out.push_str(&format!("\\item {l}\n"));

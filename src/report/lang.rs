@@ -69,6 +69,15 @@ pub fn tr<'a>(lang: Lang, en: &'a str, id: &'a str) -> &'a str {
     }
 }
 
+/// A number written in `lang`: Indonesian uses the decimal comma
+/// (`0.0236` → `0,0236`); nothing else changes.
+pub fn decimal(s: &str, lang: Lang) -> String {
+    match lang {
+        Lang::En => s.to_string(),
+        Lang::Id => s.replace('.', ","),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

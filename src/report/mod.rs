@@ -10,11 +10,13 @@ pub mod mistakes;
 pub mod moodle;
 pub mod practice;
 pub mod sheets;
+pub mod words;
 
+use crate::msg::Msg;
 use crate::num::Shown;
 use crate::stages::trace::{Compared, Comparison, Report, Step, Val};
 use comfy_table::{presets, Table};
-use lang::Lang;
+use lang::{tr, Lang};
 use serde_json::{json, Map, Value};
 
 /// How numbers are written in text output.
@@ -42,13 +44,41 @@ impl Style {
 pub use crate::num::format::fmt_dec;
 
 impl Style {
+    /// The words of a message key in this style's language.
+    pub fn w(&self, m: &Msg) -> String {
+        words::words(m, self.lang)
+    }
+    /// English or Indonesian, by this style's language.
+    pub fn tr<'a>(&self, en: &'a str, id: &'a str) -> &'a str {
+        tr(self.lang, en, id)
+    }
+    /// Decimal numbers in this style's language: `0.5` → `0,5` and list
+    /// separators `, ` → `; ` in Indonesian (so `(0,8; 0,6; 0)` reads
+    /// unambiguously); English text is unchanged.
+    pub fn dec(&self, s: String) -> String {
+        match self.lang {
+            Lang::En => s,
+            Lang::Id => s.replace(", ", "; ").replace('.', ","),
+        }
+    }
+}
+
+impl Style {
     /// One number: `−√2/60 ≈ −0.02357`, `1/50 = 0.02`, `5`, `≈ 0.4142`, `0.4142`.
     pub fn num(&self, s: &Shown) -> String {
-        crate::num::format::shown(s, self.digits, self.exact_mode)
+        self.dec(crate::num::format::shown(s, self.digits, self.exact_mode))
     }
 
     /// A vector or list: `(√2/2, 0, √2/2) ≈ (0.7071, 0, 0.7071)`.
     pub fn list(&self, items: &[Val]) -> String {
+        match items.iter().all(|v| matches!(v, Val::Num(_))) {
+            true => self.dec(self.list_en(items)),
+            false => self.list_en(items),
+        }
+    }
+
+    /// A list written the English way (numbers inside are converted by `dec`).
+    fn list_en(&self, items: &[Val]) -> String {
         let nums: Option<Vec<&Shown>> = items
             .iter()
             .map(|v| if let Val::Num(s) = v { Some(s) } else { None })
@@ -112,8 +142,13 @@ impl Style {
                 .collect::<Vec<_>>()
                 .join(";  "),
             Val::Text(t) => t.clone(),
-            Val::Bool(b) => if *b { "yes" } else { "no" }.into(),
-            Val::Null => "none".into(),
+            Val::Bool(b) => if *b {
+                self.tr("yes", "ya")
+            } else {
+                self.tr("no", "tidak")
+            }
+            .into(),
+            Val::Null => self.tr("none", "tidak ada").into(),
         }
     }
 
@@ -124,10 +159,10 @@ impl Style {
         for r in rows {
             if let Val::List(cells) = r {
                 t.add_row(cells.iter().map(|c| match c {
-                    Val::Num(s) => match &s.pretty {
+                    Val::Num(s) => self.dec(match &s.pretty {
                         Some(p) => p.replace('-', "−"),
                         None => fmt_dec(s.value, self.digits).replace('-', "−"),
-                    },
+                    }),
                     other => self.val_inline(other),
                 }));
             }
@@ -140,7 +175,7 @@ impl Style {
     pub fn step_body(&self, s: &Step) -> String {
         let mut out = String::new();
         if !s.formula.is_empty() {
-            out.push_str(&format!("    {}\n", s.formula));
+            out.push_str(&format!("    {}\n", self.w(&s.formula)));
         }
         for (k, v) in &s.values {
             out.push_str(&self.named("    ", k, v));
@@ -151,7 +186,7 @@ impl Style {
             out.push('\n');
         }
         if let Some(n) = &s.note {
-            out.push_str(&format!("    ({n})\n"));
+            out.push_str(&format!("    ({})\n", self.w(n)));
         }
         out
     }
@@ -176,32 +211,36 @@ impl Report {
     /// The worked solution and answer as text.
     pub fn to_text(&self, style: &Style) -> String {
         let mut out = String::new();
-        let mut section: Option<&str> = None;
+        let mut section: Option<&Msg> = None;
+        let step_word = style.tr("Step", "Langkah");
         for (i, s) in self.steps.iter().enumerate() {
-            if s.section.as_deref() != section {
-                section = s.section.as_deref();
+            if s.section.as_ref() != section {
+                section = s.section.as_ref();
                 if let Some(sec) = section {
-                    out.push_str(&format!("\n== {sec} ==\n"));
+                    out.push_str(&format!("\n== {} ==\n", style.w(sec)));
                 }
             }
-            out.push_str(&format!("\nStep {}. {}\n", i + 1, s.title));
+            out.push_str(&format!("\n{step_word} {}. {}\n", i + 1, style.w(&s.title)));
             out.push_str(&style.step_body(s));
         }
-        out.push_str("\nAnswer\n");
+        out.push_str(&format!("\n{}\n", style.tr("Answer", "Jawaban")));
         for (k, v) in &self.result {
             push_answer(&mut out, style, "  ", k, v);
         }
-        for n in self.all_notes() {
+        for n in self.all_notes(style) {
             out.push_str(&format!("\n{n}\n"));
         }
         for w in &self.warnings {
-            out.push_str(&format!("\nwarning: {w}\n"));
+            let label = style.tr("warning", "peringatan");
+            out.push_str(&format!("\n{label}: {}\n", style.w(w)));
         }
         out
     }
 
-    /// The docs/spec.md §3 JSON object.
-    pub fn to_json(&self) -> Value {
+    /// The docs/spec.md §3 JSON object; only its human-readable strings (titles,
+    /// notes, warnings) depend on `lang`.
+    pub fn to_json(&self, lang: Lang) -> Value {
+        let style = Style::new(4, true, lang);
         let result = Value::Object(
             self.result
                 .iter()
@@ -214,7 +253,8 @@ impl Report {
                 .map(|(k, v)| (k.clone(), exact_json(v)))
                 .collect(),
         );
-        let steps: Vec<Value> = self.steps.iter().map(step_json).collect();
+        let steps: Vec<Value> = self.steps.iter().map(|s| step_json(s, lang)).collect();
+        let warnings: Vec<String> = self.warnings.iter().map(|w| style.w(w)).collect();
         let mut obj = json!({
             "command": self.command,
             "precision": self.precision,
@@ -222,9 +262,9 @@ impl Report {
             "result": result,
             "exact": exact,
             "steps": steps,
-            "warnings": self.warnings,
+            "warnings": warnings,
         });
-        let notes = self.all_notes();
+        let notes = self.all_notes(&style);
         if !notes.is_empty() {
             obj["notes"] = json!(notes);
         }
@@ -242,41 +282,62 @@ impl Report {
 
     /// The notes after the answer: the report's own, the comparison with
     /// the printed answers, the notes on the source.
-    fn all_notes(&self) -> Vec<String> {
+    fn all_notes(&self, style: &Style) -> Vec<String> {
         let mut notes = self.notes.clone();
-        notes.extend(self.comparison.as_ref().map(comparison_text));
+        notes.extend(
+            self.comparison
+                .as_ref()
+                .map(|c| comparison_text(c, style.lang)),
+        );
         if !self.source_notes.is_empty() {
             let lines: Vec<String> = self
                 .source_notes
                 .iter()
                 .map(|n| format!("  - {n}"))
                 .collect();
-            notes.push(format!("Notes on the source:\n{}", lines.join("\n")));
+            let head = style.tr("Notes on the source", "Catatan tentang sumber");
+            notes.push(format!("{head}:\n{}", lines.join("\n")));
         }
         notes
     }
 }
 
 /// The comparison with the printed answers, one line per answer.
-fn comparison_text(c: &Comparison) -> String {
-    let style = Style::new(4, true, Lang::En);
-    let src = c.source.as_deref().unwrap_or("the source");
-    let mut lines = vec![format!("Compared with the answers printed in {src}:")];
+fn comparison_text(c: &Comparison, lang: Lang) -> String {
+    let style = Style::new(4, true, lang);
+    let t = |en, id| tr(lang, en, id);
+    let src = c.source.as_deref().unwrap_or(t("the source", "sumber"));
+    let head = t(
+        "Compared with the answers printed in",
+        "Dibandingkan dengan jawaban yang tercetak di",
+    );
+    let mut lines = vec![format!("{head} {src}:")];
+    let printed = t("printed", "tercetak");
     for r in &c.rows {
         let (key, shown) = (&r.key, &r.printed);
         let why = r.why.as_ref().map(|w| format!(": {w}")).unwrap_or_default();
         lines.push(match (&r.computed, r.agrees) {
-            (None, _) => {
-                format!("  {key}: printed {shown} — not computed in this run (not asked for)")
+            (None, _) => format!(
+                "  {key}: {printed} {shown} — {}",
+                t(
+                    "not computed in this run (not asked for)",
+                    "tidak dihitung pada jalannya program ini (tidak diminta)"
+                )
+            ),
+            (Some(_), Some(true)) => {
+                format!("  {key}: {printed} {shown} — {}", t("agrees", "sesuai"))
             }
-            (Some(_), Some(true)) => format!("  {key}: printed {shown} — agrees"),
             (Some(v), Some(false)) => format!(
-                "  {key}: printed {shown}, correct {} — the text is WRONG here{why}",
-                style.val_inline(v)
+                "  {key}: {printed} {shown}, {} {} — {}{why}",
+                t("correct", "yang benar"),
+                style.val_inline(v),
+                t("the text is WRONG here", "teks SALAH di sini")
             ),
             (Some(v), None) => format!(
-                "  {key}: printed {shown}, computed {} — cannot be compared",
-                style.val_inline(v)
+                "  {key}: {printed} {shown}, {} {} — {}",
+                t("computed", "hasil hitung"),
+                style.val_inline(v),
+                t("cannot be compared", "tidak dapat dibandingkan")
             ),
         });
     }
@@ -344,23 +405,24 @@ pub fn exact_json(v: &Val) -> Value {
     }
 }
 
-/// A step as JSON (docs/spec.md §3).
-pub fn step_json(s: &Step) -> Value {
+/// A step as JSON (docs/spec.md §3); its title, formula, section and note in `lang`.
+pub fn step_json(s: &Step, lang: Lang) -> Value {
+    let w = |m: &Msg| words::words(m, lang);
     let obj = |kv: &[(String, Val)], f: fn(&Val) -> Value| {
         Value::Object(kv.iter().map(|(k, v)| (k.clone(), f(v))).collect())
     };
     let mut o = json!({
-        "title": s.title,
-        "formula": s.formula,
+        "title": w(&s.title),
+        "formula": w(&s.formula),
         "values": obj(&s.values, value_json),
         "result": obj(&s.result, value_json),
         "exact": { "values": obj(&s.values, exact_json), "result": obj(&s.result, exact_json) },
     });
     if let Some(sec) = &s.section {
-        o["section"] = json!(sec);
+        o["section"] = json!(w(sec));
     }
     if let Some(n) = &s.note {
-        o["note"] = json!(n);
+        o["note"] = json!(w(n));
     }
     o
 }

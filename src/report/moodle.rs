@@ -261,29 +261,29 @@ pub fn solution_html(r: &Report, asked: &[Asked], st: &Style) -> String {
         "</ul><h3>{}</h3>",
         tr(st.lang, "Worked solution", "Penyelesaian")
     );
-    let mut section: Option<&str> = None;
+    let mut section: Option<&crate::msg::Msg> = None;
     for (k, step) in r.steps.iter().enumerate() {
-        if step.section.as_deref() != section {
-            section = step.section.as_deref();
+        if step.section.as_ref() != section {
+            section = step.section.as_ref();
             if let Some(sec) = section {
-                let _ = write!(s, "<h4>{}</h4>", esc(sec));
+                let _ = write!(s, "<h4>{}</h4>", esc(&st.w(sec)));
             }
         }
         let mut lines: Vec<String> = Vec::new();
         if !step.formula.is_empty() {
-            lines.push(step.formula.clone());
+            lines.push(st.w(&step.formula));
         }
         lines.extend(step.values.iter().map(|(n, v)| st.named("", n, v)));
         lines.extend(step.result.iter().map(|(n, v)| st.named("⇒ ", n, v)));
         if let Some(n) = &step.note {
-            lines.push(format!("({n})"));
+            lines.push(format!("({})", st.w(n)));
         }
         let _ = write!(
             s,
             "<p><b>{} {}. {}</b></p><pre>{}</pre>",
             tr(st.lang, "Step", "Langkah"),
             k + 1,
-            esc(&step.title),
+            esc(&st.w(&step.title)),
             esc(&lines.join("\n"))
         );
     }

@@ -157,7 +157,7 @@ pub fn event_text(ev: &Event, look: &Look) -> String {
         } => {
             let mut out = String::new();
             if let Some(s) = step {
-                out.push_str(&format!("  {}\n", s.title));
+                out.push_str(&format!("  {}\n", look.style.w(&s.title)));
                 out.push_str(&look.style.step_body(s));
             }
             let answer = look.tr("Answer", "Jawaban");
@@ -285,13 +285,13 @@ fn hint_text(level: u8, step: Option<&Step>, look: &Look) -> String {
         );
     };
     let mut out = match (look.style.lang, level) {
-        (Lang::En, 1) => format!("  Hint 1: {}\n", s.title),
-        (Lang::Id, 1) => format!("  Petunjuk 1: {}\n", s.title),
+        (Lang::En, 1) => format!("  Hint 1: {}\n", look.style.w(&s.title)),
+        (Lang::Id, 1) => format!("  Petunjuk 1: {}\n", look.style.w(&s.title)),
         (Lang::En, _) => "  Hint 2: the values substituted\n".to_string(),
         (Lang::Id, _) => "  Petunjuk 2: nilai-nilai yang disubstitusikan\n".to_string(),
     };
     if !s.formula.is_empty() {
-        out.push_str(&format!("    {}\n", s.formula));
+        out.push_str(&format!("    {}\n", look.style.w(&s.formula)));
     }
     if level >= 2 {
         for (k, v) in &s.values {
@@ -437,7 +437,8 @@ fn value(v: &Val) -> Value {
 }
 
 /// One event as a JSON object (one line of JSON Lines).
-pub fn event_json(ev: &Event) -> Value {
+pub fn event_json(ev: &Event, lang: Lang) -> Value {
+    let w = |m: &crate::msg::Msg| crate::report::words::words(m, lang);
     match ev {
         Event::Ask {
             index,
@@ -463,8 +464,8 @@ pub fn event_json(ev: &Event) -> Value {
         }),
         Event::Hint { key, level, step } => json!({
             "event": "hint", "key": key, "level": level,
-            "title": step.as_ref().map(|s| s.title.clone()),
-            "formula": step.as_ref().map(|s| s.formula.clone()),
+            "title": step.as_ref().map(|s| w(&s.title)),
+            "formula": step.as_ref().map(|s| w(&s.formula)),
             "values": step.as_ref().filter(|_| *level >= 2).map(|s| {
                 Value::Object(s.values.iter().map(|(k, v)| (k.clone(), value_json(v))).collect())
             }),
@@ -475,7 +476,7 @@ pub fn event_json(ev: &Event) -> Value {
             step,
         } => json!({
             "event": "show", "key": key, "expected": value(expected),
-            "step": step.as_ref().map(step_json),
+            "step": step.as_ref().map(|s| step_json(s, lang)),
         }),
         Event::Skip { key } => json!({ "event": "skip", "key": key }),
         Event::Summary(s) => summary_json(s),

@@ -3,6 +3,7 @@
 //! and the whole exam as JSON.
 
 use crate::report::doc::Doc;
+use crate::report::lang::Lang;
 use crate::report::{exact_json, value_json, Style};
 use crate::stages::trace::Val;
 use crate::tutor::generate::{topics_name, Difficulty, Generated, Topic};
@@ -59,7 +60,7 @@ pub fn sheets(doc: Doc, exam: &[Generated], st: &Style) -> (String, String) {
 
 /// The whole exam as JSON: statements, answers (decimal and exact) and the
 /// worked solutions.
-pub fn exam_json(title: &str, seed: u64, variant: u32, exam: &[Generated]) -> Value {
+pub fn exam_json(title: &str, seed: u64, variant: u32, exam: &[Generated], lang: Lang) -> Value {
     let problems: Vec<Value> = exam
         .iter()
         .enumerate()
@@ -77,7 +78,7 @@ pub fn exam_json(title: &str, seed: u64, variant: u32, exam: &[Generated]) -> Va
                 "statement": g.problem.statement,
                 "keys": g.keys,
                 "answers": answers,
-                "solution": g.report.to_json(),
+                "solution": g.report.to_json(lang),
             })
         })
         .collect();

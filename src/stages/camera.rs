@@ -3,6 +3,7 @@
 //! eye coordinates), and eye coordinates of points.
 
 use crate::error::{Error, Result};
+use crate::msg::Msg;
 use crate::num::vec::{self, V3};
 use crate::num::Scalar;
 use crate::stages::trace::{Step, Trace, Val};
@@ -101,7 +102,7 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
     let sv = vec::cross(&ds, &su);
     let (v, svn) = vec::normalize(&sv).ok_or_else(|| Error::new("up", "v = n × u vanished"))?;
     tr.step(|| {
-        Step::new("Camera axis v (up in the picture)", "v = n × u")
+        Step::new(Msg::CamAxisV, "v = n × u")
             .val("n", Val::vec3(&n))
             .val("u", Val::vec3(&u))
             .res("v", Val::vec3(&v))
@@ -148,15 +149,12 @@ fn view_direction<T: Scalar>(pe: &V3<T>, d: &V3<T>) -> Result<(V3<T>, T)> {
 
 /// The step of the axis n.
 fn n_step<T: Scalar>(cam: &Camera<T>, d: &V3<T>, dn: &T, n: &V3<T>) -> Step {
-    Step::new(
-        "Camera axis n (points from the look-at point back to the eye)",
-        "n = (Pe − Pr) / |Pe − Pr|",
-    )
-    .val("Pe", Val::vec3(&cam.pe))
-    .val("Pr", Val::vec3(&cam.pr))
-    .val("Pe − Pr", Val::vec3(d))
-    .val("|Pe − Pr|", Val::num(dn))
-    .res("n", Val::vec3(n))
+    Step::new(Msg::CamAxisN, "n = (Pe − Pr) / |Pe − Pr|")
+        .val("Pe", Val::vec3(&cam.pe))
+        .val("Pr", Val::vec3(&cam.pr))
+        .val("Pe − Pr", Val::vec3(d))
+        .val("|Pe − Pr|", Val::num(dn))
+        .res("n", Val::vec3(n))
 }
 
 /// Warns when Vup is nearly parallel to d: sin of the angle between them =
@@ -165,18 +163,14 @@ fn warn_near_parallel<T: Scalar>(sun: &T, ups: &V3<T>, ds: &V3<T>, tr: &mut impl
     let sin_angle = sun.to_f64() / (vec::norm(ups).to_f64() * vec::norm(ds).to_f64());
     let angle = sin_angle.clamp(-1.0, 1.0).asin();
     if angle < NEAR_PARALLEL_RAD {
-        tr.warn(|| {
-            format!(
-                "the up vector is nearly parallel to the view direction (angle {angle:.3e} rad): u and v are very sensitive to the inputs"
-            )
-        });
+        tr.warn(|| Msg::UpParallel(angle));
     }
 }
 
 /// The step of the axis u.
 fn u_step<T: Scalar>(vup: &V3<T>, n: &V3<T>, u: &V3<T>) -> Step {
     let vxn = vec::cross(vup, n);
-    Step::new("Camera axis u (to the right)", "u = (Vup × n) / |Vup × n|")
+    Step::new(Msg::CamAxisU, "u = (Vup × n) / |Vup × n|")
         .val("Vup", Val::vec3(vup))
         .val("Vup × n", Val::vec3(&vxn))
         .val("|Vup × n|", Val::num(&vec::norm(&vxn)))
@@ -194,7 +188,7 @@ fn check_step<T: Scalar>(b: &Basis<T>) -> Step {
     let good =
         dots.iter().all(|x| ok(x, 0.0)) && lens.iter().all(|x| ok(x, 1.0)) && ok(&handed, 1.0);
     Step::new(
-        "Check: u, v, n are orthonormal and right-handed",
+        Msg::CamCheck,
         "u·v = v·n = n·u = 0,  |u| = |v| = |n| = 1,  (u × v)·n = 1",
     )
     .val("u·v", Val::num(&dots[0]))
@@ -205,9 +199,9 @@ fn check_step<T: Scalar>(b: &Basis<T>) -> Step {
     .val("n·n", Val::num(&lens[2]))
     .res("(u × v)·n", Val::num(&handed))
     .note(if good {
-        "orthonormal and right-handed"
+        Msg::Orthonormal(true)
     } else {
-        "NOT orthonormal: check the inputs"
+        Msg::Orthonormal(false)
     })
 }
 
@@ -250,20 +244,13 @@ pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> 
         ));
     }
     tr.step(|| {
-        Step::new(
-            "Camera matrix Mcam (camera to world)",
-            "Mcam = T(Pe) · [u v n]   (columns u, v, n, Pe)",
-        )
-        .res("Mcam", Val::mat4(&camera_matrix(b, pe)))
+        Step::new(Msg::CamMatrix, Msg::FCamMatrix).res("Mcam", Val::mat4(&camera_matrix(b, pe)))
     });
     tr.step(|| {
-        Step::new(
-            "View matrix V = Mcam⁻¹ (world to eye): rotation (rows u, v, n) times translation by −Pe",
-            "V = R · T(−Pe),  R = [uᵀ; vᵀ; nᵀ],  last column (−u·Pe, −v·Pe, −n·Pe)",
-        )
-        .val("R", Val::mat4(&rot))
-        .val("T(−Pe)", Val::mat4(&trans))
-        .res("V", Val::mat4(&view))
+        Step::new(Msg::ViewMatrix, Msg::FViewMatrix)
+            .val("R", Val::mat4(&rot))
+            .val("T(−Pe)", Val::mat4(&trans))
+            .res("V", Val::mat4(&view))
     });
     Ok(view)
 }
@@ -322,7 +309,7 @@ pub fn to_eye<T: Scalar>(
     );
     tr.step(|| {
         Step::new(
-            format!("Eye coordinates of {name}"),
+            Msg::EyeCoords(name.to_string()),
             format!("{name}' = V·{name} = (u·({name} − Pe), v·({name} − Pe), n·({name} − Pe))"),
         )
         .val(name.to_string(), Val::vec3(p))

@@ -4,6 +4,7 @@
 //! an independent cross-check.
 
 use crate::error::{Error, Result};
+use crate::msg::{Msg, Trivial};
 use crate::num::vec::{self, V3};
 use crate::num::Scalar;
 use crate::stages::trace::{Step, Trace, Val};
@@ -212,20 +213,17 @@ pub fn clip_segment<T: Scalar>(
 /// The step of the trivial accept and reject tests.
 fn trivial_step(code0: u8, code1: u8) -> Step {
     let and = code0 & code1;
-    Step::new(
-        "Trivial tests",
-        "both codes 000000 → accept;  code0 AND code1 ≠ 000000 → reject;  otherwise clip",
-    )
-    .val("code0", Val::text(code_str(code0)))
-    .val("code1", Val::text(code_str(code1)))
-    .res("code0 AND code1", Val::text(code_str(and)))
-    .note(if code0 | code1 == 0 {
-        "both ends inside: accepted whole"
-    } else if and != 0 {
-        "both ends outside the same plane: rejected"
-    } else {
-        "neither test decides: intersect with the planes the ends violate"
-    })
+    Step::new(Msg::TrivialTests, Msg::FTrivial)
+        .val("code0", Val::text(code_str(code0)))
+        .val("code1", Val::text(code_str(code1)))
+        .res("code0 AND code1", Val::text(code_str(and)))
+        .note(if code0 | code1 == 0 {
+            Msg::TrivialNote(Trivial::Accept)
+        } else if and != 0 {
+            Msg::TrivialNote(Trivial::Reject)
+        } else {
+            Msg::TrivialNote(Trivial::Clip)
+        })
 }
 
 /// The intersections of P0P1 with every plane whose bit is set in `codes`
@@ -268,9 +266,9 @@ fn intersect_planes<T: Scalar>(
 
 /// The step of one intersection: t, P(t), its code, kept or not.
 fn intersection_step<T: Scalar>(i: &Intersection<T>) -> Step {
-    let (axis, _, plane, name) = PLANES[i.bit];
+    let (axis, _, plane, _) = PLANES[i.bit];
     Step::new(
-        format!("Intersection with the {name} plane {plane}"),
+        Msg::Intersection(i.bit, plane.to_string()),
         format!(
             "t = ({plane_side} − {a}0)/({a}1 − {a}0),  P(t) = P0 + t·(P1 − P0)",
             plane_side = &plane[4..],
@@ -281,27 +279,25 @@ fn intersection_step<T: Scalar>(i: &Intersection<T>) -> Step {
     .res("P(t)", Val::vec3(&i.point))
     .res("code", Val::text(code_str(i.code)))
     .note(if i.code == 0 {
-        "code 000000: kept"
+        Msg::Kept(true)
     } else {
-        "code not 000000: outside the box, discarded"
+        Msg::Kept(false)
     })
 }
 
 /// The step of the clipped segment (or of its rejection).
 fn segment_step<T: Scalar>(segment: &Option<(V3<T>, V3<T>)>) -> Step {
-    let s = Step::new("Clipped segment", "from the kept point with the smallest t to the one with the largest t (inside ends count as t = 0 and t = 1)");
+    let s = Step::new(Msg::ClippedSegment, Msg::FSegment);
     match segment {
         Some((a, z)) => s
             .res("from", Val::vec3(a))
             .res("to", Val::vec3(z))
             .note(if a == z {
-                "the segment touches the box in a single point"
+                Msg::TouchesPoint
             } else {
-                "the part of P0P1 inside the box"
+                Msg::InsidePart
             }),
-        None => s
-            .res("segment", Val::Null)
-            .note("no intersection is inside the box: the segment misses it (rejected)"),
+        None => s.res("segment", Val::Null).note(Msg::Misses),
     }
 }
 
@@ -351,11 +347,8 @@ fn intersection_point<T: Scalar>(
 
 /// The step explaining one endpoint's outcode, bit by bit.
 fn code_step<T: Scalar>(name: &str, b: &ClipBox<T>, p: &V3<T>, code: u8) -> Step {
-    let mut s = Step::new(
-        format!("Outcode of {name}"),
-        "bit 1 x<xmin (kiri) · bit 2 x>xmax (kanan) · bit 3 y<ymin (bawah) · bit 4 y>ymax (atas) · bit 5 z<zmin (depan) · bit 6 z>zmax (belakang)",
-    )
-    .val(name.to_string(), Val::vec3(p));
+    let mut s = Step::new(Msg::OutcodeOf(name.to_string()), Msg::FOutcode)
+        .val(name.to_string(), Val::vec3(p));
     for (bit, &(axis, is_max, _, side)) in PLANES.iter().enumerate() {
         let a = ["x", "y", "z"][axis];
         let (op, lim) = if is_max {
@@ -446,7 +439,7 @@ pub fn liang_barsky<T: Scalar>(
         None
     };
     tr.step(|| {
-        let s = Step::new("Cross-check by Liang–Barsky", "t0 = max over entering planes of q/p,  t1 = min over leaving planes of q/p,  visible if t0 ≤ t1")
+        let s = Step::new(Msg::LiangBarsky, "t0 = max over entering planes of q/p,  t1 = min over leaving planes of q/p,  visible if t0 ≤ t1")
             .val("t0", Val::num(&t0))
             .val("t1", Val::num(&t1));
         match &result {

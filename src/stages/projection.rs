@@ -4,6 +4,7 @@
 //! orthographic projection.
 
 use crate::error::{Error, Result};
+use crate::msg::Msg;
 use crate::num::vec::{self, V3};
 use crate::num::Scalar;
 use crate::stages::trace::{Step, Trace, Val};
@@ -105,12 +106,9 @@ pub fn project<T: Scalar>(
     let Some((scale, plane_z, formula, scale_name)) = perspective_form(proj, name, z)? else {
         let r = vec::v3(x.clone(), y.clone(), T::zero());
         tr.step(|| {
-            Step::new(
-                format!("Orthographic projection of {name}"),
-                "xp = x,  yp = y,  zp = 0",
-            )
-            .val(name.to_string(), Val::vec3(p))
-            .res(format!("{name}''"), Val::vec3(&r))
+            Step::new(Msg::OrthoProj(name.to_string()), "xp = x,  yp = y,  zp = 0")
+                .val(name.to_string(), Val::vec3(p))
+                .res(format!("{name}''"), Val::vec3(&r))
         });
         return Ok(r);
     };
@@ -137,15 +135,15 @@ pub fn project<T: Scalar>(
     let cop = proj.cop_z().unwrap_or_else(T::zero);
     let behind = (z.clone() - cop.clone() < T::zero()) != (plane_z - cop < T::zero());
     if behind {
-        tr.warn(|| format!("{name} is behind the centre of projection: its image is inverted and it cannot be seen"));
+        tr.warn(|| Msg::BehindWarn(name.to_string()));
     }
     tr.step(|| {
-        let mut s = Step::new(format!("Perspective projection of {name}"), formula)
+        let mut s = Step::new(Msg::PerspProj(name.to_string()), formula)
             .val(name.to_string(), Val::vec3(p))
             .val(scale_name, Val::num(&(num.clone() / den.clone())))
             .res(format!("{name}''"), Val::vec3(&r));
         if behind {
-            s = s.note("behind the centre of projection: projected, but inverted and not visible");
+            s = s.note(Msg::BehindCentre);
         }
         s
     });

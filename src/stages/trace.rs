@@ -4,6 +4,7 @@
 //! [`NoTrace`] never calls the closure, so the renderer's calls compile to
 //! the bare arithmetic. [`Recorder`] keeps the steps for a report.
 
+pub use crate::msg::Msg;
 use crate::num::vec::V3;
 use crate::num::{Precision, Scalar, Shown};
 use nalgebra::Matrix4;
@@ -61,24 +62,25 @@ impl Val {
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct Step {
     /// The part of the problem this step belongs to (`solve` groups by it).
-    pub section: Option<String>,
+    pub section: Option<Msg>,
     /// What is computed.
-    pub title: String,
+    pub title: Msg,
     /// The formula, in the text's notation.
-    pub formula: String,
+    pub formula: Msg,
     /// The values substituted.
     pub values: Vec<(String, Val)>,
     /// What came out.
     pub result: Vec<(String, Val)>,
     /// A remark: a check, a warning, a note on the text.
-    pub note: Option<String>,
+    pub note: Option<Msg>,
 }
 
 impl Step {
-    /// A step with a title and formula.
-    pub fn new(title: impl Into<String>, formula: impl Into<String>) -> Step {
+    /// A step with a title (a message key) and formula (notation as a
+    /// string, or a key when the caption has words).
+    pub fn new(title: Msg, formula: impl Into<Msg>) -> Step {
         Step {
-            title: title.into(),
+            title,
             formula: formula.into(),
             ..Step::default()
         }
@@ -94,8 +96,8 @@ impl Step {
         self
     }
     /// Adds a note.
-    pub fn note(mut self, n: impl Into<String>) -> Step {
-        self.note = Some(n.into());
+    pub fn note(mut self, n: Msg) -> Step {
+        self.note = Some(n);
         self
     }
 }
@@ -107,7 +109,7 @@ pub trait Trace {
     /// Records the step the closure builds (not called when `ON` is false).
     fn step(&mut self, f: impl FnOnce() -> Step);
     /// Records a warning (also printed on stderr by the calculator).
-    fn warn(&mut self, f: impl FnOnce() -> String);
+    fn warn(&mut self, f: impl FnOnce() -> Msg);
 }
 
 /// The recorder that records nothing: the renderer's, free at run time.
@@ -119,7 +121,7 @@ impl Trace for NoTrace {
     #[inline(always)]
     fn step(&mut self, _f: impl FnOnce() -> Step) {}
     #[inline(always)]
-    fn warn(&mut self, _f: impl FnOnce() -> String) {}
+    fn warn(&mut self, _f: impl FnOnce() -> Msg) {}
 }
 
 /// The recorder that keeps every step, under the current section.
@@ -128,8 +130,8 @@ pub struct Recorder {
     /// The steps, in order.
     pub steps: Vec<Step>,
     /// The warnings, in order.
-    pub warnings: Vec<String>,
-    section: Option<String>,
+    pub warnings: Vec<Msg>,
+    section: Option<Msg>,
 }
 
 impl Recorder {
@@ -138,8 +140,8 @@ impl Recorder {
         Recorder::default()
     }
     /// Starts a section: the steps that follow belong to it.
-    pub fn section(&mut self, name: impl Into<String>) {
-        self.section = Some(name.into());
+    pub fn section(&mut self, name: Msg) {
+        self.section = Some(name);
     }
 }
 
@@ -150,7 +152,7 @@ impl Trace for Recorder {
         s.section = self.section.clone();
         self.steps.push(s);
     }
-    fn warn(&mut self, f: impl FnOnce() -> String) {
+    fn warn(&mut self, f: impl FnOnce() -> Msg) {
         let w = f();
         if !self.warnings.contains(&w) {
             self.warnings.push(w);
@@ -170,7 +172,7 @@ pub struct Report {
     /// The worked steps.
     pub steps: Vec<Step>,
     /// Warnings (also on stderr).
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Msg>,
     /// Extra lines printed after the answer in text mode (e.g. comparison
     /// with the text's printed answers), and given as `"notes"` in JSON.
     pub notes: Vec<String>,

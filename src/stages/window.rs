@@ -2,6 +2,7 @@
 //! far-plane window), and the viewport mapping from the window to pixels.
 
 use crate::error::{Error, Result};
+use crate::msg::Msg;
 use crate::num::Scalar;
 use crate::stages::trace::{Step, Trace, Val};
 
@@ -101,18 +102,18 @@ pub fn window<T: Scalar>(
     };
     tr.step(|| {
         Step::new(
-            format!("Window half-height on the {label} plane (the text calls it h)"),
+            Msg::WindowTop(label.to_string()),
             format!("top = {label}·tan(fovy/2)"),
         )
         .val(label.to_string(), Val::num(dist))
         .val("fovy/2 (degrees)", Val::num(&half))
         .val("tan(fovy/2)", Val::num(&t))
         .res("top", Val::num(&w.top))
-        .note("the text's h is this half extent; the full window height is 2·top")
+        .note(Msg::TextH)
     });
     tr.step(|| {
         Step::new(
-            format!("Window edges and size on the {label} plane"),
+            Msg::WindowEdges(label.to_string()),
             "right = aspect·top,  bottom = −top,  left = −right,  height = 2·top,  width = 2·right",
         )
         .val("aspect", Val::num(aspect))
@@ -154,7 +155,7 @@ pub fn to_viewport<T: Scalar>(
     let (px, py) = viewport_xy(w, size, p);
     tr.step(|| {
         Step::new(
-            format!("Viewport coordinates of {name}"),
+            Msg::ViewportOf(name.to_string()),
             "px = (xp − left)/(right − left)·W,  py = (yp − bottom)/(top − bottom)·H",
         )
         .val(format!("({name}x, {name}y)"), Val::vec2(p.0, p.1))

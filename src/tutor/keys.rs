@@ -2,6 +2,7 @@
 //! of the JSON contract: `u`, `v`, `n`, `top`, `code0`, `segment`, ...),
 //! shared by the calculator commands and `solve`.
 
+use crate::msg::Msg;
 use crate::num::vec::V3;
 use crate::num::Scalar;
 use crate::stages::camera;
@@ -49,16 +50,13 @@ pub fn clip_run<T: Scalar>(
         _ => false,
     };
     rec.step(|| {
-        Step::new(
-            "Do the two methods agree?",
-            "outcode clipping vs Liang–Barsky",
-        )
-        .res("agree", Val::Bool(agree))
-        .note(if agree {
-            "both methods give the same segment"
-        } else {
-            "the methods disagree: please report this input"
-        })
+        Step::new(Msg::MethodsAgree, Msg::FMethods)
+            .res("agree", Val::Bool(agree))
+            .note(if agree {
+                Msg::Agree(true)
+            } else {
+                Msg::Agree(false)
+            })
     });
     vec![
         ("code0".into(), Val::text(clip::code_str(r.code0))),

@@ -241,11 +241,10 @@ fn clip_step(rest: &[&str], steps: &[Step]) -> Option<Step> {
             // the intersections are recorded in the order of the result's map
             let planes = ["left", "right", "bottom", "top", "front", "back"];
             let tried = run.iter().filter(|s| has(s, "P(t)"));
-            let words: Vec<String> = planes.iter().map(|p| format!("({p})")).collect();
             let wanted = planes.iter().position(|p| *p == rest[1])?;
             tried
                 .clone()
-                .find(|s| s.title.contains(&words[wanted]))
+                .find(|s| matches!(s.title, crate::msg::Msg::Intersection(i, _) if i == wanted))
                 .or_else(|| tried.clone().next())
         }
         ["segment"] => run.iter().find(|s| has(s, "from") && has(s, "to")),

@@ -7,6 +7,7 @@ use crate::error::{Error, Result};
 use crate::input;
 use crate::input::fields::{Num, Vec3In};
 use crate::input::problem::{PointRef, ProblemIn};
+use crate::msg::Msg;
 use crate::num::format::fmt_dec;
 use crate::num::vec::V3;
 use crate::num::{Expr, Scalar};
@@ -136,11 +137,9 @@ fn view_part<T: Scalar>(
         pr: eval3("camera.look", &c.look)?,
         vup: eval3("camera.up", &c.up)?,
     };
-    rec.section("Step 1: modeling transformation");
-    rec.step(|| {
-        Step::new("Nothing to do", "").note("the objects are already given in world coordinates")
-    });
-    rec.section("Step 2: viewing transformation (world → eye coordinates)");
+    rec.section(Msg::SecModeling);
+    rec.step(|| Step::new(Msg::NothingToDo, "").note(Msg::AlreadyWorld));
+    rec.section(Msg::SecViewing);
     let mut b = camera::basis(&cam, rec).map_err(camera_field)?;
     (hooks.basis)(&mut b);
     let m = camera::view_matrix(&b, &cam.pe, rec).map_err(camera_field)?;
@@ -179,14 +178,8 @@ fn project_part<T: Scalar>(
             ))
         }
     };
-    rec.section("Step 3: projection onto the near plane");
-    rec.step(|| {
-        Step::new(
-            "Projection plane",
-            "z = d,  d = −near (the camera looks along −z in eye coordinates)",
-        )
-        .res("d", Val::num(&d))
-    });
+    rec.section(Msg::SecProjection);
+    rec.step(|| Step::new(Msg::ProjPlane, Msg::FProjPlane).res("d", Val::num(&d)));
     let proj = Projection::Plane { d };
     proj.validate().map_err(|e| e.in_field("perspective.d"))?;
     let mut projected = Vec::new();
@@ -228,7 +221,7 @@ fn window_part<T: Scalar>(
         .degrees()
         .map_err(|m| Error::new("perspective.fovy", m))?;
     let aspect: T = eval("perspective.aspect", aspect)?;
-    rec.section("Step 4: window and clipping");
+    rec.section(Msg::SecWindowClip);
     let mut w = window::window(&fovy, &aspect, near, "near", rec).map_err(perspective_field)?;
     (hooks.window)(&mut w, &fovy);
     let mut r = window_result(&w, "");
@@ -277,7 +270,7 @@ fn viewport_part<T: Scalar>(
         eval("perspective.viewport", &vp[1])?,
     );
     window::validate_viewport(&vw, &vh).map_err(|e| e.in_field("perspective.viewport"))?;
-    rec.section("Viewport mapping (window → pixels)");
+    rec.section(Msg::SecViewport);
     let px: Vec<(String, Val)> = projected
         .iter()
         .map(|(n, q)| {
@@ -312,11 +305,7 @@ fn clip_part<T: Scalar>(
         let f = format!("clip.segment[{i}]");
         let p0: V3<T> = point_ref(&format!("{f}.from"), &s.from, points)?;
         let p1: V3<T> = point_ref(&format!("{f}.to"), &s.to, points)?;
-        rec.section(if c.segment.len() == 1 {
-            "Line clipping".to_string()
-        } else {
-            format!("Line clipping, segment {}", i + 1)
-        });
+        rec.section(Msg::SecLineClip((c.segment.len() > 1).then_some(i + 1)));
         all.push(Val::Map(clip_run(&b, &p0, &p1, rec)));
     }
     match all.len() {
@@ -336,7 +325,7 @@ fn shade_part<T: Scalar>(
 ) -> Result<()> {
     match (p.asks("shade"), &p.shade) {
         (true, Some(sh)) => {
-            rec.section("Lighting");
+            rec.section(Msg::SecLighting);
             let file = crate::input::lights::LightsFileIn {
                 global_ambient: p.global_ambient.clone(),
                 material: None,
@@ -463,16 +452,16 @@ fn point_inside_step<T: Scalar>(
     let in_depth = e[2] <= -near.clone() && far.is_none_or(|f| e[2] >= -f.clone());
     rec.step(|| {
         Step::new(
-            format!("Is {name}'' inside the view volume?"),
+            Msg::InsideVolume(name.to_string()),
             "left ≤ xp ≤ right,  bottom ≤ yp ≤ top,  and −far ≤ z' ≤ −near",
         )
         .val(format!("{name}''"), Val::vec2(&q[0], &q[1]))
         .val(format!("z' of {name}'"), Val::num(&e[2]))
         .res("inside", Val::Bool(in_window && in_depth))
         .note(match (in_window, in_depth) {
-            (true, true) => "inside: not clipped",
-            (false, _) => "outside the window: clipped",
-            (true, false) => "outside the near/far planes: clipped",
+            (true, true) => Msg::Inside(true, true),
+            (false, w) => Msg::Inside(false, w),
+            (true, false) => Msg::Inside(true, false),
         })
     });
 }

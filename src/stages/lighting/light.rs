@@ -5,6 +5,7 @@ use super::{
     label, listening, max0, pow, Light, LightKind, LightTerm, Material, Model, RuleSet, Surface,
     TextRules,
 };
+use crate::msg::{LightPart, Msg, SpotZone};
 use crate::num::vec::{add, dot, sub, V3};
 use crate::num::Scalar;
 use crate::stages::trace::{Step, Trace, Val};
@@ -51,14 +52,11 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
             if let Some(r) = &light.range {
                 if d2 > r.clone() * r.clone() {
                     tr.step(|| {
-                        Step::new(
-                            label(at, "out of range"),
-                            "d² = |Pl − P|² > range²  ⇒  the light is not evaluated",
-                        )
-                        .val("d²", Val::num(&d2))
-                        .val("range²", Val::num(&(r.clone() * r.clone())))
-                        .res("contributes", Val::Bool(false))
-                        .note("beyond its range a light adds nothing, not even ambient")
+                        Step::new(label(at, LightPart::OutOfRange), Msg::FOutOfRange)
+                            .val("d²", Val::num(&d2))
+                            .val("range²", Val::num(&(r.clone() * r.clone())))
+                            .res("contributes", Val::Bool(false))
+                            .note(Msg::BeyondRange)
                     });
                     return None;
                 }
@@ -80,7 +78,7 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
             let l = crate::num::vec::div(&to, &d);
             tr.step(|| {
                 Step::new(
-                    label(at, "direction to the light"),
+                    label(at, LightPart::Direction),
                     "d = |Pl − P|,  L = (Pl − P)/d",
                 )
                 .val("Pl", Val::vec3(pos))
@@ -88,8 +86,8 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
                 .val("d", Val::num(&d))
                 .res("L", Val::vec3(&l))
                 .note(match &light.range {
-                    Some(_) => "within range",
-                    None => "no range limit",
+                    Some(_) => Msg::WithinRange,
+                    None => Msg::NoRange,
                 })
             });
             (l, Some(d))
@@ -108,11 +106,14 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
                 None => att,
             };
             tr.step(|| {
-                Step::new(label(at, "attenuation"), "Att = 1/(a0 + a1·d + a2·d²)")
-                    .val("(a0, a1, a2)", Val::List(a.iter().map(Val::num).collect()))
-                    .val("d", Val::num(d))
-                    .val("a0 + a1·d + a2·d²", Val::num(&den))
-                    .res("Att", Val::num(&att))
+                Step::new(
+                    label(at, LightPart::Attenuation),
+                    "Att = 1/(a0 + a1·d + a2·d²)",
+                )
+                .val("(a0, a1, a2)", Val::List(a.iter().map(Val::num).collect()))
+                .val("d", Val::num(d))
+                .val("a0 + a1·d + a2·d²", Val::num(&den))
+                .res("Att", Val::num(&att))
             });
             att
         }
@@ -148,19 +149,16 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
     }
     tr.step(|| {
         let cos_alpha = &term.cos_alpha;
-        let s = Step::new(
-            label(at, "angle of incidence: cos α = L·N"),
-            "cos α = Lx·Nx + Ly·Ny + Lz·Nz,  then max(cos α, 0)",
-        )
-        .val("L", Val::vec3(&term.l))
-        .val("N", Val::vec3(n))
-        .res("cos α", Val::num(cos_alpha))
-        .res("max(cos α, 0)", Val::num(&max0(cos_alpha)));
+        let s = Step::new(label(at, LightPart::Incidence), Msg::FIncidence)
+            .val("L", Val::vec3(&term.l))
+            .val("N", Val::vec3(n))
+            .res("cos α", Val::num(cos_alpha))
+            .res("max(cos α, 0)", Val::num(&max0(cos_alpha)));
         if *cos_alpha < T::zero() {
             s.note(if mat.specular_requires_lit {
-                "cos α < 0: the light is behind the surface — no diffuse, and (--specular-requires-lit) no specular"
+                Msg::Behind(true)
             } else {
-                "cos α < 0: the light is behind the surface — no diffuse; the text's code still computes R and adds the specular term (use --specular-requires-lit for the usual rule)"
+                Msg::Behind(false)
             })
         } else {
             s
@@ -179,7 +177,7 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
     let cos_beta = dot(&r, v);
     tr.step(|| {
         Step::new(
-            label(at, "reflection R and cos β"),
+            label(at, LightPart::Reflection),
             "R = 2N(L·N) − L,  cos β = R·V",
         )
         .val("2(L·N)", Val::num(&two_ln))
@@ -199,7 +197,7 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
         let nh = dot(n, &h);
         tr.step(|| {
             Step::new(
-                label(at, "half vector H and N·H (Blinn)"),
+                label(at, LightPart::HalfVector),
                 if s.camera.is_some() {
                     "H = norm(norm(Cp − Vp) + Ldir) = norm(V + L),  cos = N·H"
                 } else {
@@ -210,9 +208,9 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
             .res("H", Val::vec3(&h))
             .res("N·H", Val::num(&nh))
             .note(if s.camera.is_some() {
-                "local viewer (D3DRS_LOCALVIEWER = TRUE): V points from the vertex to the camera"
+                Msg::LocalViewer
             } else {
-                "no local viewer: the Direct3D page writes (0,0,1) for the viewer. That is right in grafika's right-handed eye space, where the viewer lies along +z; Direct3D's own camera space is left-handed and puts the viewer along −z, so read the page's (0,0,1) as \"toward the viewer\". grafika uses your V (default (0,0,1))"
+                Msg::NoLocalViewer
             })
         });
         term.h = Some(h);
@@ -245,7 +243,7 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
         };
         tr.step(|| {
             let s = Step::new(
-                label(at, "highlight"),
+                label(at, LightPart::Highlight),
                 if mat.model == Model::Blinn {
                     "max(N·H, 0)ⁿ"
                 } else {
@@ -255,19 +253,19 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
             .val("n", Val::num(&mat.shininess))
             .res("highlight", Val::num(&term.highlight));
             if mat.shininess.is_zero_value() {
-                s.note("n = 0: x⁰ = 1 for every direction (0⁰ taken as 1) — the highlight covers the whole surface")
+                s.note(Msg::ShininessZero)
             } else {
                 s
             }
         });
     } else {
         tr.step(|| {
-            Step::new(label(at, "highlight"), "not added")
+            Step::new(label(at, LightPart::Highlight), Msg::FNotAdded)
                 .res("highlight", Val::num(&T::zero()))
                 .note(if !want_spec {
-                    "the specular term is off for this model / setting (ks = 0, --specular off, or a model without it)"
+                    Msg::SpecularOff
                 } else {
-                    "cos α ≤ 0 and --specular-requires-lit: no highlight from a light behind the surface"
+                    Msg::NoHighlightBehind
                 })
         });
     }
@@ -298,14 +296,14 @@ pub fn spot_factor<T: Scalar>(
     let f = cos_t.if_gt(&rho, || rho.if_gt(&cos_p, penumbra, T::zero), T::one);
     tr.step(|| {
         let where_ = if rho >= cos_t {
-            "inside the inner cone (ρ ≥ cos(θ/2)): full light"
+            Msg::SpotIn(SpotZone::Inner)
         } else if rho <= cos_p {
-            "outside the outer cone (ρ ≤ cos(φ/2)): no light"
+            Msg::SpotIn(SpotZone::Outer)
         } else {
-            "in the penumbra: between the cones"
+            Msg::SpotIn(SpotZone::Penumbra)
         };
         Step::new(
-            label(at, "spot factor"),
+            label(at, LightPart::Spot),
             "ρ = (−L)·axis;  Spot = 1 if ρ ≥ cos(θ/2), 0 if ρ ≤ cos(φ/2), else ((ρ − cos(φ/2))/(cos(θ/2) − cos(φ/2)))^falloff",
         )
         .val("ρ", Val::num(&rho))

@@ -31,6 +31,7 @@
 //! [`Light::validate`], [`unit`]).
 
 use crate::error::{Error, Result};
+use crate::msg::{LightPart, Msg, Term};
 use crate::num::vec::{normalize, sub, v3, V3};
 use crate::num::Scalar;
 use crate::stages::trace::{Step, Trace, Val};
@@ -378,14 +379,14 @@ pub fn unit<T: Scalar>(name: &str, field: &str, v: &V3<T>, tr: &mut impl Trace) 
     })?;
     tr.step(|| {
         let s = Step::new(
-            format!("Unit vector {name}"),
+            Msg::UnitVector(name.to_string()),
             format!("{name} = v/|v|,  |v| = √(v₀² + v₁² + v₂²)"),
         )
         .val("v", Val::vec3(v))
         .val("|v|", Val::num(&len))
         .res(name, Val::vec3(&u));
         if len == T::one() {
-            s.note("already a unit vector")
+            s.note(Msg::AlreadyUnit)
         } else {
             s
         }
@@ -415,15 +416,8 @@ fn listening<Tr: Trace>(_: &Tr) -> bool {
 }
 
 /// A step title, prefixed "Light i: " when there are several lights.
-fn label(at: (usize, usize), what: &str) -> String {
-    if at.1 > 1 {
-        format!("Light {}: {what}", at.0 + 1)
-    } else {
-        let mut c = what.chars();
-        c.next()
-            .map(|f| f.to_uppercase().chain(c).collect())
-            .unwrap_or_default()
-    }
+fn label(at: (usize, usize), what: LightPart) -> Msg {
+    Msg::Light(at, what)
 }
 
 /// Two rules of the lighting stage, as replaceable functions: the text's
@@ -663,7 +657,7 @@ fn term<T: Scalar>(on: bool, k: &T, sum: &Rgb<T>, col: &Rgb<T>) -> Rgb<T> {
 /// The step of the sum C = ambient + diffuse + specular + emissive.
 fn sum_step<T: Scalar>(terms: [&Rgb<T>; 4], unclamped: &Rgb<T>) -> Step {
     Step::new(
-        "Sum of the terms",
+        Msg::SumOfTerms,
         "C = ambient + diffuse + specular + emissive",
     )
     .val("ambient", rgb_val(terms[0]))
@@ -676,13 +670,13 @@ fn sum_step<T: Scalar>(terms: [&Rgb<T>; 4], unclamped: &Rgb<T>) -> Step {
 /// The step of the clamp to [0, 1].
 fn clamp_step<T: Scalar>(unclamped: &Rgb<T>, color: &Rgb<T>) -> Step {
     let clipped = unclamped.iter().any(|x| *x > T::one() || *x < T::zero());
-    Step::new("Clamp each channel to [0, 1]", "color = min(max(C, 0), 1)")
+    Step::new(Msg::Clamp, "color = min(max(C, 0), 1)")
         .val("C", rgb_val(unclamped))
         .res("color", rgb_val(color))
         .note(if clipped {
-            "a channel went past 1 (or below 0) and is clamped: the highlight saturates"
+            Msg::Saturates
         } else {
-            "every channel is already in [0, 1]"
+            Msg::InRange
         })
 }
 
@@ -697,7 +691,7 @@ fn view_vector<T: Scalar>(s: &Surface<T>, tr: &mut impl Trace) -> V3<T> {
         .map(|(u, _)| u)
         .unwrap_or_else(|| s.view.clone());
     tr.step(|| {
-        Step::new("Viewer direction (local viewer)", "V = norm(Cp − Vp)")
+        Step::new(Msg::ViewerLocal, "V = norm(Cp − Vp)")
             .val("Cp", Val::vec3(cp))
             .val("Vp", Val::vec3(&s.position))
             .val("Cp − Vp", Val::vec3(&d))
@@ -725,41 +719,40 @@ fn record_totals<T: Scalar>(
     tr: &mut impl Trace,
 ) {
     let ca = mat.ambient_color.as_ref().unwrap_or(&mat.color);
-    let one_note = |on: bool, what: &str| {
+    let one_note = |on: bool, what: Term| {
         if !on {
-            format!("the {} model has no {what} term", mat.model.name())
+            Msg::NoTermInModel(mat.model.name().to_string(), what)
         } else if is_text_setting(lights, ga) {
-            "the text's single white light and no global ambient: the sum is 1·(the text's factor)"
-                .to_string()
+            Msg::TextSetting
         } else {
-            "summed over the lights in range".to_string()
+            Msg::SummedInRange
         }
     };
     tr.step(|| {
         Step::new(
-            "Ambient term, per channel",
+            Msg::TermStep(Term::Ambient),
             "ambient = ka · (Ga + Σ Att·Spot·La) · Ca",
         )
         .val("ka", Val::num(&mat.ka))
         .val("Ga + Σ Att·Spot·La", rgb_val(sum_a))
         .val("Ca", rgb_val(ca))
         .res("ambient", rgb_val(ra))
-        .note(one_note(on.0, "ambient"))
+        .note(one_note(on.0, Term::Ambient))
     });
     tr.step(|| {
         Step::new(
-            "Diffuse term, per channel",
+            Msg::TermStep(Term::Diffuse),
             "diffuse = kd · Σ Att·Spot·Ld·max(cos α, 0) · Cs",
         )
         .val("kd", Val::num(&mat.kd))
         .val("Σ Att·Spot·Ld·max(cos α, 0)", rgb_val(sum_d))
         .val("Cs", rgb_val(&mat.color))
         .res("diffuse", rgb_val(rd))
-        .note(one_note(on.1, "diffuse"))
+        .note(one_note(on.1, Term::Diffuse))
     });
     tr.step(|| {
         Step::new(
-            "Specular term, per channel",
+            Msg::TermStep(Term::Specular),
             "specular = ks · Σ Att·Spot·Ls·highlight · Cspecular",
         )
         .val("ks", Val::num(&mat.ks))
@@ -767,11 +760,11 @@ fn record_totals<T: Scalar>(
         .val("Cspecular", rgb_val(&mat.specular))
         .res("specular", rgb_val(rs))
         .note(if on.2 {
-            one_note(true, "specular")
+            one_note(true, Term::Specular)
         } else if !mat.model.terms().2 {
-            one_note(false, "specular")
+            one_note(false, Term::Specular)
         } else {
-            "the specular term is skipped (ks = 0 or --specular off)".to_string()
+            Msg::SpecularSkipped
         })
     });
 }

@@ -1,0 +1,302 @@
+//! Message keys: what the stages, the tutor and the commands want to say to
+//! a person, as data with its parameters. They never hold words of any
+//! language; `report::words` turns each key into English or Bahasa Indonesia
+//! with one exhaustive match, so a key without both translations does not
+//! compile. Only [`Msg::Math`] carries text, and that text is notation
+//! (`n = (Pe − Pr) / |Pe − Pr|`), the same in every language.
+//!
+//! This file sits at the base beside `error.rs`, so every layer can name a
+//! message; only `report/` knows the words.
+
+/// A term of the lighting sum.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Term {
+    /// The ambient term.
+    Ambient,
+    /// The diffuse term.
+    Diffuse,
+    /// The specular term.
+    Specular,
+}
+
+/// A part of one light's contribution (a step title, numbered per light when
+/// there is more than one).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LightPart {
+    /// d > range: the light is not evaluated.
+    OutOfRange,
+    /// L and d.
+    Direction,
+    /// Att.
+    Attenuation,
+    /// cos α = L·N.
+    Incidence,
+    /// R and cos β.
+    Reflection,
+    /// H and N·H.
+    HalfVector,
+    /// The highlight factor.
+    Highlight,
+    /// The spot factor.
+    Spot,
+}
+
+/// Where a point lies against a spot light's cones.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SpotZone {
+    /// ρ ≥ cos(θ/2).
+    Inner,
+    /// ρ ≤ cos(φ/2).
+    Outer,
+    /// Between the cones.
+    Penumbra,
+}
+
+/// What the trivial tests of outcode clipping decided.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Trivial {
+    /// Both codes 000000.
+    Accept,
+    /// The codes share a bit.
+    Reject,
+    /// Neither: intersect.
+    Clip,
+}
+
+/// One message for a person.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Msg {
+    /// Mathematical notation, the same in every language (empty: none).
+    Math(String),
+
+    // ---- section headings ----
+    /// solve, part 1.
+    SecModeling,
+    /// solve, part 2.
+    SecViewing,
+    /// solve, part 3.
+    SecProjection,
+    /// solve, part 4.
+    SecWindowClip,
+    /// solve: the viewport.
+    SecViewport,
+    /// Line clipping (segment number when there are several).
+    SecLineClip(Option<usize>),
+    /// solve: the lighting.
+    SecLighting,
+    /// render --explain-pixel: the pixel.
+    SecPixel(u32, u32),
+    /// render --explain-pixel: lighting of the face.
+    SecLightFace,
+    /// render --explain-pixel: lighting of vertex n.
+    SecLightVertex(usize),
+    /// render --explain-pixel: lighting of the pixel.
+    SecLightPixel,
+
+    // ---- step titles ----
+    /// Camera axis n.
+    CamAxisN,
+    /// Camera axis u.
+    CamAxisU,
+    /// Camera axis v.
+    CamAxisV,
+    /// Orthonormality check.
+    CamCheck,
+    /// Mcam.
+    CamMatrix,
+    /// V = Mcam⁻¹.
+    ViewMatrix,
+    /// Eye coordinates of a point.
+    EyeCoords(String),
+    /// Orthographic projection of a point.
+    OrthoProj(String),
+    /// Perspective projection of a point.
+    PerspProj(String),
+    /// Window half-height on the plane at the named distance.
+    WindowTop(String),
+    /// Window edges and size on the named plane.
+    WindowEdges(String),
+    /// Viewport coordinates of a point.
+    ViewportOf(String),
+    /// Outcode of a point.
+    OutcodeOf(String),
+    /// The trivial tests.
+    TrivialTests,
+    /// Intersection with a plane: its index in `clip::PLANES`, its equation.
+    Intersection(usize, String),
+    /// The clipped segment.
+    ClippedSegment,
+    /// Liang–Barsky cross-check.
+    LiangBarsky,
+    /// Do both clipping methods agree?
+    MethodsAgree,
+    /// Nothing to do (modeling).
+    NothingToDo,
+    /// The projection plane.
+    ProjPlane,
+    /// Is the projected point inside the view volume?
+    InsideVolume(String),
+    /// Unit vector of a named vector.
+    UnitVector(String),
+    /// Viewer direction (local viewer).
+    ViewerLocal,
+    /// Material and model.
+    Material,
+    /// One light's part: (light index, number of lights), which part.
+    Light((usize, usize), LightPart),
+    /// A term of the sum, per channel.
+    TermStep(Term),
+    /// The sum of the terms.
+    SumOfTerms,
+    /// Clamping to [0, 1].
+    Clamp,
+    /// Which triangle covers the pixel.
+    WhichTriangle,
+    /// Depth at the pixel.
+    Depth,
+    /// Barycentric coordinates.
+    Barycentric,
+    /// Flat shading.
+    FlatShading,
+    /// Gouraud shading.
+    Gouraud,
+    /// Phong shading.
+    PhongShading,
+    /// The pixel's 8-bit colour.
+    PixelColour,
+
+    // ---- formula captions with words ----
+    /// The out-of-range test.
+    FOutOfRange,
+    /// cos α and its clamp.
+    FIncidence,
+    /// The highlight is not added.
+    FNotAdded,
+    /// Mcam's columns.
+    FCamMatrix,
+    /// V = R·T(−Pe).
+    FViewMatrix,
+    /// The trivial tests' rules.
+    FTrivial,
+    /// The outcode's bits.
+    FOutcode,
+    /// How the segment is taken from the kept points.
+    FSegment,
+    /// Outcodes vs Liang–Barsky.
+    FMethods,
+    /// The projection plane z = d.
+    FProjPlane,
+    /// Pixel centre inside a triangle.
+    FPixelCentre,
+    /// Edge functions.
+    FEdges,
+    /// The z-buffer depth.
+    FDepth,
+    /// Barycentric weights.
+    FBarycentric,
+    /// Flat colour.
+    FFlat,
+    /// 8-bit value.
+    FByte,
+
+    // ---- notes ----
+    /// Already a unit vector.
+    AlreadyUnit,
+    /// Clamping changed a channel.
+    Saturates,
+    /// Every channel in [0, 1].
+    InRange,
+    /// The model (named) has no such term.
+    NoTermInModel(String, Term),
+    /// The text's single white light.
+    TextSetting,
+    /// Summed over the lights in range.
+    SummedInRange,
+    /// The specular term is skipped.
+    SpecularSkipped,
+    /// Beyond its range a light adds nothing.
+    BeyondRange,
+    /// Within range.
+    WithinRange,
+    /// No range limit.
+    NoRange,
+    /// cos α < 0 (whether --specular-requires-lit).
+    Behind(bool),
+    /// Local viewer.
+    LocalViewer,
+    /// No local viewer (Direct3D's (0,0,1)).
+    NoLocalViewer,
+    /// n = 0.
+    ShininessZero,
+    /// Specular off.
+    SpecularOff,
+    /// No highlight from a light behind.
+    NoHighlightBehind,
+    /// The spot zone.
+    SpotIn(SpotZone),
+    /// Behind the centre of projection (note).
+    BehindCentre,
+    /// The text's h.
+    TextH,
+    /// Whether u, v, n are orthonormal.
+    Orthonormal(bool),
+    /// The trivial tests' decision.
+    TrivialNote(Trivial),
+    /// Whether the intersection is kept.
+    Kept(bool),
+    /// The segment touches in a point.
+    TouchesPoint,
+    /// The part inside the box.
+    InsidePart,
+    /// The segment misses the box.
+    Misses,
+    /// The text's default view vector.
+    DefaultView,
+    /// Direct3D material.
+    MaterialD3d,
+    /// The text's constants.
+    MaterialText,
+    /// No triangle covers the pixel.
+    NoTriangle,
+    /// The nearest triangle.
+    Nearest,
+    /// Whether both methods agree.
+    Agree(bool),
+    /// Already in world coordinates.
+    AlreadyWorld,
+    /// Inside the view volume: (in the window, in depth).
+    Inside(bool, bool),
+
+    // ---- warnings ----
+    /// Up nearly parallel to the view direction (angle in radians).
+    UpParallel(f64),
+    /// A point behind the centre of projection.
+    BehindWarn(String),
+}
+
+impl Default for Msg {
+    fn default() -> Msg {
+        Msg::Math(String::new())
+    }
+}
+
+impl Msg {
+    /// Whether this is empty notation (nothing to print).
+    pub fn is_empty(&self) -> bool {
+        matches!(self, Msg::Math(s) if s.is_empty())
+    }
+}
+
+/// Notation is the same in every language.
+impl From<&str> for Msg {
+    fn from(s: &str) -> Msg {
+        Msg::Math(s.to_string())
+    }
+}
+
+/// Notation is the same in every language.
+impl From<String> for Msg {
+    fn from(s: String) -> Msg {
+        Msg::Math(s)
+    }
+}

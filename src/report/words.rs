@@ -1,0 +1,629 @@
+//! The words of every message key (`crate::msg::Msg`), in English and in
+//! Bahasa Indonesia, with the course text's own terms (docs/glossary.md).
+//! One exhaustive match: a key without both languages does not compile.
+
+use super::lang::Lang;
+use crate::msg::{LightPart, Msg, SpotZone, Term, Trivial};
+
+/// The words of `m` in `lang`.
+pub fn words(m: &Msg, lang: Lang) -> String {
+    let id = lang == Lang::Id;
+    match m {
+        Msg::Math(s) => s.clone(),
+        Msg::SecModeling
+        | Msg::SecViewing
+        | Msg::SecProjection
+        | Msg::SecWindowClip
+        | Msg::SecViewport
+        | Msg::SecLineClip(_)
+        | Msg::SecLighting
+        | Msg::SecPixel(..)
+        | Msg::SecLightFace
+        | Msg::SecLightVertex(_)
+        | Msg::SecLightPixel => section(m, id),
+        Msg::UpParallel(a) => {
+            let a = super::lang::decimal(&format!("{a:.3e}"), lang);
+            if id {
+                format!("vektor up (Vup) hampir sejajar dengan arah pandang (sudut {a} rad): u dan v sangat peka terhadap masukan")
+            } else {
+                format!("the up vector is nearly parallel to the view direction (angle {a} rad): u and v are very sensitive to the inputs")
+            }
+        }
+        Msg::BehindWarn(n) => {
+            if id {
+                format!("{n} berada di belakang pusat proyeksi: bayangannya terbalik dan tidak terlihat")
+            } else {
+                format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen")
+            }
+        }
+        _ => title(m, id)
+            .or_else(|| caption(m, id))
+            .or_else(|| note(m, id))
+            .unwrap_or_else(|| "?".to_string()),
+    }
+}
+
+fn pick(id: bool, en: &str, ind: &str) -> String {
+    if id { ind } else { en }.to_string()
+}
+
+fn section(m: &Msg, id: bool) -> String {
+    let p = |en: &str, ind: &str| pick(id, en, ind);
+    match m {
+        Msg::SecModeling => p(
+            "Step 1: modeling transformation",
+            "Langkah 1: transformasi pemodelan",
+        ),
+        Msg::SecViewing => p(
+            "Step 2: viewing transformation (world → eye coordinates)",
+            "Langkah 2: transformasi pandang (sistem koordinat dunia → kamera)",
+        ),
+        Msg::SecProjection => p(
+            "Step 3: projection onto the near plane",
+            "Langkah 3: proyeksi ke bidang dekat",
+        ),
+        Msg::SecWindowClip => p(
+            "Step 4: window and clipping",
+            "Langkah 4: bidang pandang dan clipping",
+        ),
+        Msg::SecViewport => p(
+            "Viewport mapping (window → pixels)",
+            "Pemetaan viewport (bidang pandang → piksel)",
+        ),
+        Msg::SecLineClip(None) => p("Line clipping", "Clipping garis"),
+        Msg::SecLineClip(Some(i)) => {
+            if id {
+                format!("Clipping garis, ruas {i}")
+            } else {
+                format!("Line clipping, segment {i}")
+            }
+        }
+        Msg::SecLighting => p("Lighting", "Pencahayaan"),
+        Msg::SecPixel(x, y) => {
+            if id {
+                format!("Piksel ({x}; {y})")
+            } else {
+                format!("Pixel ({x}, {y})")
+            }
+        }
+        Msg::SecLightFace => p(
+            "Lighting of the face (lighting::shade)",
+            "Pencahayaan bidang (lighting::shade)",
+        ),
+        Msg::SecLightVertex(n) => {
+            if id {
+                format!("Pencahayaan verteks {n} (lighting::shade)")
+            } else {
+                format!("Lighting of vertex {n} (lighting::shade)")
+            }
+        }
+        _ => p(
+            "Lighting of the pixel (lighting::shade)",
+            "Pencahayaan piksel (lighting::shade)",
+        ),
+    }
+}
+
+fn term(t: Term, id: bool) -> &'static str {
+    match (t, id) {
+        (Term::Ambient, _) => "ambient",
+        (Term::Diffuse, false) => "diffuse",
+        (Term::Diffuse, true) => "diffuse",
+        (Term::Specular, _) => "specular",
+    }
+}
+
+fn light_part(p: LightPart, id: bool) -> &'static str {
+    match (p, id) {
+        (LightPart::OutOfRange, false) => "out of range",
+        (LightPart::OutOfRange, true) => "di luar jangkauan",
+        (LightPart::Direction, false) => "direction to the light",
+        (LightPart::Direction, true) => "arah ke sumber cahaya",
+        (LightPart::Attenuation, false) => "attenuation",
+        (LightPart::Attenuation, true) => "atenuasi",
+        (LightPart::Incidence, false) => "angle of incidence: cos α = L·N",
+        (LightPart::Incidence, true) => "sudut datang: cos α = L·N",
+        (LightPart::Reflection, false) => "reflection R and cos β",
+        (LightPart::Reflection, true) => "vektor pantul R dan cos β",
+        (LightPart::HalfVector, false) => "half vector H and N·H (Blinn)",
+        (LightPart::HalfVector, true) => "vektor tengah H dan N·H (Blinn)",
+        (LightPart::Highlight, false) => "highlight",
+        (LightPart::Highlight, true) => "highlight (kilau)",
+        (LightPart::Spot, false) => "spot factor",
+        (LightPart::Spot, true) => "faktor spot",
+    }
+}
+
+/// Step titles.
+fn title(m: &Msg, id: bool) -> Option<String> {
+    let p = |en: &str, ind: &str| Some(pick(id, en, ind));
+    let f = |en: String, ind: String| Some(if id { ind } else { en });
+    match m {
+        Msg::CamAxisN => p(
+            "Camera axis n (points from the look-at point back to the eye)",
+            "Sumbu kamera n (dari Pref kembali ke Peye)",
+        ),
+        Msg::CamAxisU => p("Camera axis u (to the right)", "Sumbu kamera u (ke kanan)"),
+        Msg::CamAxisV => p("Camera axis v (up in the picture)", "Sumbu kamera v (ke atas pada gambar)"),
+        Msg::CamCheck => p(
+            "Check: u, v, n are orthonormal and right-handed",
+            "Pemeriksaan: u, v, n ortonormal dan tangan kanan",
+        ),
+        Msg::CamMatrix => p("Camera matrix Mcam (camera to world)", "Matriks kamera Mcam (kamera ke dunia)"),
+        Msg::ViewMatrix => p(
+            "View matrix V = Mcam⁻¹ (world to eye): rotation (rows u, v, n) times translation by −Pe",
+            "Matriks pandang V = Mcam⁻¹ (dunia ke kamera): rotasi (baris u, v, n) kali translasi sejauh −Pe",
+        ),
+        Msg::EyeCoords(n) => f(format!("Eye coordinates of {n}"), format!("Koordinat kamera titik {n}")),
+        Msg::OrthoProj(n) => f(format!("Orthographic projection of {n}"), format!("Proyeksi ortografik titik {n}")),
+        Msg::PerspProj(n) => f(format!("Perspective projection of {n}"), format!("Proyeksi perspektif titik {n}")),
+        Msg::WindowTop(l) => f(
+            format!("Window half-height on the {l} plane (the text calls it h)"),
+            format!("Setengah tinggi bidang pandang pada bidang {l} (h dalam teks)"),
+        ),
+        Msg::WindowEdges(l) => f(
+            format!("Window edges and size on the {l} plane"),
+            format!("Tepi dan ukuran bidang pandang pada bidang {l}"),
+        ),
+        Msg::ViewportOf(n) => f(format!("Viewport coordinates of {n}"), format!("Koordinat viewport titik {n}")),
+        Msg::OutcodeOf(n) => f(format!("Outcode of {n}"), format!("Region code titik {n}")),
+        Msg::TrivialTests => p("Trivial tests", "Uji trivial"),
+        Msg::Intersection(i, plane) => {
+            let (en, ind) = PLANE_NAMES[*i % 6];
+            f(
+                format!("Intersection with the {ind} ({en}) plane {plane}"),
+                format!("Titik potong dengan bidang {ind} {plane}"),
+            )
+        }
+        Msg::ClippedSegment => p("Clipped segment", "Ruas garis hasil clipping"),
+        Msg::LiangBarsky => p("Cross-check by Liang–Barsky", "Pemeriksaan silang dengan Liang–Barsky"),
+        Msg::MethodsAgree => p("Do the two methods agree?", "Apakah kedua metode sama hasilnya?"),
+        Msg::NothingToDo => p("Nothing to do", "Tidak ada yang dikerjakan"),
+        Msg::ProjPlane => p("Projection plane", "Bidang proyeksi"),
+        Msg::InsideVolume(n) => f(
+            format!("Is {n}'' inside the view volume?"),
+            format!("Apakah {n}'' di dalam view volume?"),
+        ),
+        Msg::UnitVector(n) => f(format!("Unit vector {n}"), format!("Vektor satuan {n}")),
+        Msg::ViewerLocal => p("Viewer direction (local viewer)", "Arah pengamat (pengamat lokal)"),
+        Msg::Material => p("Material and model", "Material dan model"),
+        Msg::Light((i, n), part) => {
+            let w = light_part(*part, id);
+            Some(if *n > 1 {
+                format!("{} {}: {w}", if id { "Cahaya" } else { "Light" }, i + 1)
+            } else {
+                let mut c = w.chars();
+                c.next().map(|a| a.to_uppercase().chain(c).collect()).unwrap_or_default()
+            })
+        }
+        Msg::TermStep(t) => {
+            let w = term(*t, id);
+            let cap: String = w[..1].to_uppercase() + &w[1..];
+            f(format!("{cap} term, per channel"), format!("Komponen {w}, per kanal warna"))
+        }
+        Msg::SumOfTerms => p("Sum of the terms", "Jumlah komponen"),
+        Msg::Clamp => p("Clamp each channel to [0, 1]", "Batasi tiap kanal ke [0, 1]"),
+        Msg::WhichTriangle => p("Which triangle covers the pixel", "Segitiga mana yang menutupi piksel"),
+        Msg::Depth => p("Depth at the pixel (z-buffer)", "Kedalaman pada piksel (z-buffer)"),
+        Msg::Barycentric => p("Barycentric coordinates", "Koordinat barisentrik"),
+        Msg::FlatShading => p("Flat shading: one colour per face", "Flat shading: satu warna per bidang"),
+        Msg::Gouraud => p("Gouraud: interpolate the vertex colours", "Gouraud: interpolasi warna verteks"),
+        Msg::PhongShading => p(
+            "Phong shading: interpolate normal, position and colour",
+            "Phong shading: interpolasi normal, posisi dan warna",
+        ),
+        Msg::PixelColour => p("Pixel colour", "Warna piksel"),
+        _ => None,
+    }
+}
+
+/// The planes in `clip::PLANES` order: the English name and the text's.
+pub const PLANE_NAMES: [(&str, &str); 6] = [
+    ("left", "kiri"),
+    ("right", "kanan"),
+    ("bottom", "bawah"),
+    ("top", "atas"),
+    ("front", "depan"),
+    ("back", "belakang"),
+];
+
+/// Formula captions that contain words.
+fn caption(m: &Msg, id: bool) -> Option<String> {
+    let p = |en: &str, ind: &str| Some(pick(id, en, ind));
+    match m {
+        Msg::FOutOfRange => p(
+            "d² = |Pl − P|² > range²  ⇒  the light is not evaluated",
+            "d² = |Pl − P|² > range²  ⇒  cahaya tidak dihitung",
+        ),
+        Msg::FIncidence => p(
+            "cos α = Lx·Nx + Ly·Ny + Lz·Nz,  then max(cos α, 0)",
+            "cos α = Lx·Nx + Ly·Ny + Lz·Nz,  lalu max(cos α, 0)",
+        ),
+        Msg::FNotAdded => p("not added", "tidak ditambahkan"),
+        Msg::FCamMatrix => p(
+            "Mcam = T(Pe) · [u v n]   (columns u, v, n, Pe)",
+            "Mcam = T(Pe) · [u v n]   (kolom u, v, n, Pe)",
+        ),
+        Msg::FViewMatrix => p(
+            "V = R · T(−Pe),  R = [uᵀ; vᵀ; nᵀ],  last column (−u·Pe, −v·Pe, −n·Pe)",
+            "V = R · T(−Pe),  R = [uᵀ; vᵀ; nᵀ],  kolom terakhir (−u·Pe; −v·Pe; −n·Pe)",
+        ),
+        Msg::FTrivial => p(
+            "both codes 000000 → accept;  code0 AND code1 ≠ 000000 → reject;  otherwise clip",
+            "kedua code 000000 → terima;  code0 AND code1 ≠ 000000 → tolak;  selain itu potong",
+        ),
+        Msg::FOutcode => p(
+            "bit 1 x<xmin (kiri) · bit 2 x>xmax (kanan) · bit 3 y<ymin (bawah) · bit 4 y>ymax (atas) · bit 5 z<zmin (depan) · bit 6 z>zmax (belakang)",
+            "bit 1 x<xmin (kiri) · bit 2 x>xmax (kanan) · bit 3 y<ymin (bawah) · bit 4 y>ymax (atas) · bit 5 z<zmin (depan) · bit 6 z>zmax (belakang)",
+        ),
+        Msg::FSegment => p(
+            "from the kept point with the smallest t to the one with the largest t (inside ends count as t = 0 and t = 1)",
+            "dari titik yang dipertahankan dengan t terkecil ke titik dengan t terbesar (ujung di dalam dihitung t = 0 dan t = 1)",
+        ),
+        Msg::FMethods => p("outcode clipping vs Liang–Barsky", "clipping region code vs Liang–Barsky"),
+        Msg::FProjPlane => p(
+            "z = d,  d = −near (the camera looks along −z in eye coordinates)",
+            "z = d,  d = −near (kamera memandang ke arah −z dalam koordinat kamera)",
+        ),
+        Msg::FPixelCentre => p(
+            "pixel centre (x + ½, y + ½) inside a triangle, nearest wins",
+            "pusat piksel (x + ½; y + ½) di dalam segitiga, yang terdekat menang",
+        ),
+        Msg::FEdges => p(
+            "edge functions E₀, E₁, E₂ ≥ 0 at the centre (top-left rule on edges); nearest depth wins",
+            "fungsi tepi E₀, E₁, E₂ ≥ 0 di pusat piksel (aturan kiri-atas pada tepi); kedalaman terdekat menang",
+        ),
+        Msg::FDepth => p(
+            "z = λ₀z₀ + λ₁z₁ + λ₂z₂ (z/w is linear on the screen); smaller is nearer",
+            "z = λ₀z₀ + λ₁z₁ + λ₂z₂ (z/w linear di layar); makin kecil makin dekat",
+        ),
+        Msg::FBarycentric => p(
+            "λₖ = Eₖ(centre)/area on the screen;  perspective-correct μₖ = (λₖ/wₖ) / Σ λₘ/wₘ",
+            "λₖ = Eₖ(pusat)/luas di layar;  koreksi perspektif μₖ = (λₖ/wₖ) / Σ λₘ/wₘ",
+        ),
+        Msg::FFlat => p(
+            "colour = shade(face normal N, face centre)",
+            "warna = shade(normal bidang N, pusat bidang)",
+        ),
+        Msg::FByte => p(
+            "8-bit value = round(255 · clamp(C, 0, 1))",
+            "nilai 8-bit = round(255 · clamp(C; 0; 1))",
+        ),
+        _ => None,
+    }
+}
+
+/// Notes on a step.
+fn note(m: &Msg, id: bool) -> Option<String> {
+    let p = |en: &str, ind: &str| Some(pick(id, en, ind));
+    match m {
+        Msg::AlreadyUnit => p("already a unit vector", "sudah merupakan vektor satuan"),
+        Msg::Saturates => p(
+            "a channel went past 1 (or below 0) and is clamped: the highlight saturates",
+            "sebuah kanal melewati 1 (atau di bawah 0) dan dibatasi: highlight menjadi jenuh",
+        ),
+        Msg::InRange => p("every channel is already in [0, 1]", "setiap kanal sudah berada di [0, 1]"),
+        Msg::NoTermInModel(model, t) => Some(if id {
+            format!("model {model} tidak memiliki komponen {}", term(*t, id))
+        } else {
+            format!("the {model} model has no {} term", term(*t, id))
+        }),
+        Msg::TextSetting => p(
+            "the text's single white light and no global ambient: the sum is 1·(the text's factor)",
+            "satu sumber cahaya putih seperti di teks dan tanpa ambient global: jumlahnya 1·(faktor dalam teks)",
+        ),
+        Msg::SummedInRange => p(
+            "summed over the lights in range",
+            "dijumlahkan atas semua sumber cahaya dalam jangkauan",
+        ),
+        Msg::SpecularSkipped => p(
+            "the specular term is skipped (ks = 0 or --specular off)",
+            "komponen specular dilewati (ksp = 0 atau --specular off)",
+        ),
+        Msg::BeyondRange => p(
+            "beyond its range a light adds nothing, not even ambient",
+            "di luar jangkauannya sumber cahaya tidak menyumbang apa pun, ambient pun tidak",
+        ),
+        Msg::WithinRange => p("within range", "dalam jangkauan"),
+        Msg::NoRange => p("no range limit", "tanpa batas jangkauan"),
+        Msg::Behind(true) => p(
+            "cos α < 0: the light is behind the surface — no diffuse, and (--specular-requires-lit) no specular",
+            "cos α < 0: sumber cahaya di belakang permukaan — tanpa diffuse, dan (--specular-requires-lit) tanpa specular",
+        ),
+        Msg::Behind(false) => p(
+            "cos α < 0: the light is behind the surface — no diffuse; the text's code still computes R and adds the specular term (use --specular-requires-lit for the usual rule)",
+            "cos α < 0: sumber cahaya di belakang permukaan — tanpa diffuse; kode dalam teks tetap menghitung R dan menambahkan komponen specular (gunakan --specular-requires-lit untuk aturan yang lazim)",
+        ),
+        Msg::LocalViewer => p(
+            "local viewer (D3DRS_LOCALVIEWER = TRUE): V points from the vertex to the camera",
+            "pengamat lokal (D3DRS_LOCALVIEWER = TRUE): V menunjuk dari verteks ke kamera",
+        ),
+        Msg::NoLocalViewer => p(
+            "no local viewer: the Direct3D page writes (0,0,1) for the viewer. That is right in grafika's right-handed eye space, where the viewer lies along +z; Direct3D's own camera space is left-handed and puts the viewer along −z, so read the page's (0,0,1) as \"toward the viewer\". grafika uses your V (default (0,0,1))",
+            "tanpa pengamat lokal: halaman Direct3D menulis (0,0,1) untuk pengamat. Itu benar di ruang kamera grafika yang tangan kanan, tempat pengamat berada di arah +z; ruang kamera Direct3D sendiri tangan kiri dan menempatkan pengamat di arah −z, jadi bacalah (0,0,1) di halaman itu sebagai \"menuju pengamat\". grafika memakai V Anda (bawaan (0; 0; 1))",
+        ),
+        Msg::ShininessZero => p(
+            "n = 0: x⁰ = 1 for every direction (0⁰ taken as 1) — the highlight covers the whole surface",
+            "n = 0: x⁰ = 1 untuk setiap arah (0⁰ dianggap 1) — highlight menutupi seluruh permukaan",
+        ),
+        Msg::SpecularOff => p(
+            "the specular term is off for this model / setting (ks = 0, --specular off, or a model without it)",
+            "komponen specular tidak aktif untuk model / pengaturan ini (ksp = 0, --specular off, atau model tanpa specular)",
+        ),
+        Msg::NoHighlightBehind => p(
+            "cos α ≤ 0 and --specular-requires-lit: no highlight from a light behind the surface",
+            "cos α ≤ 0 dan --specular-requires-lit: tidak ada highlight dari sumber cahaya di belakang permukaan",
+        ),
+        Msg::SpotIn(SpotZone::Inner) => p(
+            "inside the inner cone (ρ ≥ cos(θ/2)): full light",
+            "di dalam kerucut dalam (ρ ≥ cos(θ/2)): cahaya penuh",
+        ),
+        Msg::SpotIn(SpotZone::Outer) => p(
+            "outside the outer cone (ρ ≤ cos(φ/2)): no light",
+            "di luar kerucut luar (ρ ≤ cos(φ/2)): tanpa cahaya",
+        ),
+        Msg::SpotIn(SpotZone::Penumbra) => p(
+            "in the penumbra: between the cones",
+            "di penumbra: di antara kedua kerucut",
+        ),
+        Msg::BehindCentre => p(
+            "behind the centre of projection: projected, but inverted and not visible",
+            "di belakang pusat proyeksi: tetap diproyeksikan, tetapi terbalik dan tidak terlihat",
+        ),
+        Msg::TextH => p(
+            "the text's h is this half extent; the full window height is 2·top",
+            "h dalam teks adalah setengah tinggi ini; tinggi bidang pandang penuh adalah 2·top",
+        ),
+        Msg::Orthonormal(true) => p("orthonormal and right-handed", "ortonormal dan tangan kanan"),
+        Msg::Orthonormal(false) => p(
+            "NOT orthonormal: check the inputs",
+            "TIDAK ortonormal: periksa masukan",
+        ),
+        Msg::TrivialNote(Trivial::Accept) => p(
+            "both ends inside: accepted whole",
+            "kedua ujung di dalam: diterima seluruhnya",
+        ),
+        Msg::TrivialNote(Trivial::Reject) => p(
+            "both ends outside the same plane: rejected",
+            "kedua ujung di luar bidang yang sama: ditolak",
+        ),
+        Msg::TrivialNote(Trivial::Clip) => p(
+            "neither test decides: intersect with the planes the ends violate",
+            "tidak ada uji yang memutuskan: cari titik potong dengan bidang yang dilanggar ujung-ujungnya",
+        ),
+        Msg::Kept(true) => p("code 000000: kept", "code 000000: dipertahankan"),
+        Msg::Kept(false) => p(
+            "code not 000000: outside the box, discarded",
+            "code bukan 000000: di luar view volume, dibuang",
+        ),
+        Msg::TouchesPoint => p(
+            "the segment touches the box in a single point",
+            "ruas garis menyentuh view volume di satu titik",
+        ),
+        Msg::InsidePart => p("the part of P0P1 inside the box", "bagian P0P1 di dalam view volume"),
+        Msg::Misses => p(
+            "no intersection is inside the box: the segment misses it (rejected)",
+            "tidak ada titik potong di dalam view volume: ruas garis tidak mengenainya (ditolak)",
+        ),
+        Msg::DefaultView => p(
+            "not given: the text's viewVector (0, 0, 1), a viewer far along +z",
+            "tidak diberikan: viewVector dari teks (0; 0; 1), pengamat jauh di arah +z",
+        ),
+        Msg::MaterialD3d => p(
+            "Direct3D material: its colors carry the coefficients, so ka = kd = ks = 1",
+            "material Direct3D: warnanya sudah memuat koefisien, jadi ka = kd = ksp = 1",
+        ),
+        Msg::MaterialText => p(
+            "the text's constants unless given: ka = 0.4, kd = 0.6, ks = 0.7, n = 4, white specular",
+            "konstanta dari teks bila tidak diberikan: ka = 0,4, kd = 0,6, ksp = 0,7, n = 4, specular putih (Cwhite)",
+        ),
+        Msg::NoTriangle => p(
+            "no triangle covers the pixel centre: it keeps the background colour",
+            "tidak ada segitiga yang menutupi pusat piksel: warnanya tetap warna latar",
+        ),
+        Msg::Nearest => p(
+            "the nearest of all triangles covering this pixel",
+            "yang terdekat dari semua segitiga yang menutupi piksel ini",
+        ),
+        Msg::Agree(true) => p("both methods give the same segment", "kedua metode menghasilkan ruas yang sama"),
+        Msg::Agree(false) => p(
+            "the methods disagree: please report this input",
+            "kedua metode berbeda hasilnya: mohon laporkan masukan ini",
+        ),
+        Msg::AlreadyWorld => p(
+            "the objects are already given in world coordinates",
+            "objek sudah diberikan dalam sistem koordinat dunia",
+        ),
+        Msg::Inside(true, true) => p("inside: not clipped", "di dalam: tidak di-clip"),
+        Msg::Inside(false, _) => p("outside the window: clipped", "di luar bidang pandang: di-clip"),
+        Msg::Inside(true, false) => p(
+            "outside the near/far planes: clipped",
+            "di luar bidang dekat/jauh: di-clip",
+        ),
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::msg::{LightPart, SpotZone, Term, Trivial};
+
+    /// Every key, once, with sample parameters.
+    pub fn every_message() -> Vec<Msg> {
+        let s = || "A".to_string();
+        let mut v = vec![
+            Msg::SecModeling,
+            Msg::SecViewing,
+            Msg::SecProjection,
+            Msg::SecWindowClip,
+            Msg::SecViewport,
+            Msg::SecLineClip(None),
+            Msg::SecLineClip(Some(2)),
+            Msg::SecLighting,
+            Msg::SecPixel(1, 2),
+            Msg::SecLightFace,
+            Msg::SecLightVertex(1),
+            Msg::SecLightPixel,
+            Msg::CamAxisN,
+            Msg::CamAxisU,
+            Msg::CamAxisV,
+            Msg::CamCheck,
+            Msg::CamMatrix,
+            Msg::ViewMatrix,
+            Msg::EyeCoords(s()),
+            Msg::OrthoProj(s()),
+            Msg::PerspProj(s()),
+            Msg::WindowTop(s()),
+            Msg::WindowEdges(s()),
+            Msg::ViewportOf(s()),
+            Msg::OutcodeOf(s()),
+            Msg::TrivialTests,
+            Msg::ClippedSegment,
+            Msg::LiangBarsky,
+            Msg::MethodsAgree,
+            Msg::NothingToDo,
+            Msg::ProjPlane,
+            Msg::InsideVolume(s()),
+            Msg::UnitVector(s()),
+            Msg::ViewerLocal,
+            Msg::Material,
+            Msg::SumOfTerms,
+            Msg::Clamp,
+            Msg::WhichTriangle,
+            Msg::Depth,
+            Msg::Barycentric,
+            Msg::FlatShading,
+            Msg::Gouraud,
+            Msg::PhongShading,
+            Msg::PixelColour,
+            Msg::FOutOfRange,
+            Msg::FIncidence,
+            Msg::FNotAdded,
+            Msg::FCamMatrix,
+            Msg::FViewMatrix,
+            Msg::FTrivial,
+            Msg::FOutcode,
+            Msg::FSegment,
+            Msg::FMethods,
+            Msg::FProjPlane,
+            Msg::FPixelCentre,
+            Msg::FEdges,
+            Msg::FDepth,
+            Msg::FBarycentric,
+            Msg::FFlat,
+            Msg::FByte,
+            Msg::AlreadyUnit,
+            Msg::Saturates,
+            Msg::InRange,
+            Msg::TextSetting,
+            Msg::SummedInRange,
+            Msg::SpecularSkipped,
+            Msg::BeyondRange,
+            Msg::WithinRange,
+            Msg::NoRange,
+            Msg::Behind(true),
+            Msg::Behind(false),
+            Msg::LocalViewer,
+            Msg::NoLocalViewer,
+            Msg::ShininessZero,
+            Msg::SpecularOff,
+            Msg::NoHighlightBehind,
+            Msg::BehindCentre,
+            Msg::TextH,
+            Msg::Orthonormal(true),
+            Msg::Orthonormal(false),
+            Msg::Kept(true),
+            Msg::Kept(false),
+            Msg::TouchesPoint,
+            Msg::InsidePart,
+            Msg::Misses,
+            Msg::DefaultView,
+            Msg::MaterialD3d,
+            Msg::MaterialText,
+            Msg::NoTriangle,
+            Msg::Nearest,
+            Msg::Agree(true),
+            Msg::Agree(false),
+            Msg::AlreadyWorld,
+            Msg::Inside(true, true),
+            Msg::Inside(false, true),
+            Msg::Inside(true, false),
+            Msg::UpParallel(1e-9),
+            Msg::BehindWarn(s()),
+        ];
+        for i in 0..6 {
+            v.push(Msg::Intersection(i, "x = xmin".into()));
+        }
+        for t in [Term::Ambient, Term::Diffuse, Term::Specular] {
+            v.push(Msg::TermStep(t));
+            v.push(Msg::NoTermInModel("lambert".into(), t));
+        }
+        for p in [
+            LightPart::OutOfRange,
+            LightPart::Direction,
+            LightPart::Attenuation,
+            LightPart::Incidence,
+            LightPart::Reflection,
+            LightPart::HalfVector,
+            LightPart::Highlight,
+            LightPart::Spot,
+        ] {
+            v.push(Msg::Light((0, 1), p));
+            v.push(Msg::Light((1, 2), p));
+        }
+        for z in [SpotZone::Inner, SpotZone::Outer, SpotZone::Penumbra] {
+            v.push(Msg::SpotIn(z));
+        }
+        for t in [Trivial::Accept, Trivial::Reject, Trivial::Clip] {
+            v.push(Msg::TrivialNote(t));
+        }
+        v
+    }
+
+    /// Fails to compile when a key is added without being listed above.
+    #[allow(dead_code)]
+    fn listed(m: &Msg) {
+        use Msg::*;
+        match m {
+            Math(_) | SecModeling | SecViewing | SecProjection | SecWindowClip | SecViewport
+            | SecLineClip(_) | SecLighting | SecPixel(..) | SecLightFace | SecLightVertex(_)
+            | SecLightPixel | CamAxisN | CamAxisU | CamAxisV | CamCheck | CamMatrix
+            | ViewMatrix | EyeCoords(_) | OrthoProj(_) | PerspProj(_) | WindowTop(_)
+            | WindowEdges(_) | ViewportOf(_) | OutcodeOf(_) | TrivialTests | Intersection(..)
+            | ClippedSegment | LiangBarsky | MethodsAgree | NothingToDo | ProjPlane
+            | InsideVolume(_) | UnitVector(_) | ViewerLocal | Material | Light(..)
+            | TermStep(_) | SumOfTerms | Clamp | WhichTriangle | Depth | Barycentric
+            | FlatShading | Gouraud | PhongShading | PixelColour | FOutOfRange | FIncidence
+            | FNotAdded | FCamMatrix | FViewMatrix | FTrivial | FOutcode | FSegment | FMethods
+            | FProjPlane | FPixelCentre | FEdges | FDepth | FBarycentric | FFlat | FByte
+            | AlreadyUnit | Saturates | InRange | NoTermInModel(..) | TextSetting
+            | SummedInRange | SpecularSkipped | BeyondRange | WithinRange | NoRange | Behind(_)
+            | LocalViewer | NoLocalViewer | ShininessZero | SpecularOff | NoHighlightBehind
+            | SpotIn(_) | BehindCentre | TextH | Orthonormal(_) | TrivialNote(_) | Kept(_)
+            | TouchesPoint | InsidePart | Misses | DefaultView | MaterialD3d | MaterialText
+            | NoTriangle | Nearest | Agree(_) | AlreadyWorld | Inside(..) | UpParallel(_)
+            | BehindWarn(_) => {}
+        }
+    }
+
+    #[test]
+    fn every_message_has_words_in_both_languages() {
+        for m in every_message() {
+            let (en, id) = (words(&m, Lang::En), words(&m, Lang::Id));
+            assert!(!en.is_empty() && en != "?", "{m:?} has no English");
+            assert!(!id.is_empty() && id != "?", "{m:?} has no Indonesian");
+        }
+    }
+
+    #[test]
+    fn most_messages_differ_between_languages() {
+        let all = every_message();
+        let same = all
+            .iter()
+            .filter(|m| words(m, Lang::En) == words(m, Lang::Id))
+            .count();
+        // Only notation-like captions (the outcode bits) may coincide.
+        assert!(same <= 2, "{same} messages are not translated");
+    }
+}
