@@ -267,6 +267,46 @@ pub enum Msg {
     /// Inside the view volume: (in the window, in depth).
     Inside(bool, bool),
 
+    // ---- check: how one answer was judged ----
+    /// Expected one number.
+    ExpectOne,
+    /// Expected a list of n values.
+    ExpectList(usize),
+    /// Expected n values, got m.
+    CountMismatch(usize, usize),
+    /// Expected this value (as notation: a number or a list).
+    Expected(String),
+    /// Expected none.
+    ExpectedNone,
+    /// Expected yes/no.
+    ExpectedBool(bool),
+    /// The key holds several answers.
+    SeveralAnswers,
+    /// Empty answer.
+    EmptyAnswer,
+    /// No answer given.
+    NoAnswer,
+    /// The answer cannot be read (the reader's reason).
+    Unreadable(String),
+    /// A component that is not a number (the text; the values expected).
+    NotANumber(String, usize),
+    /// Exactly equal.
+    Exact,
+    /// Rounded to n significant figures.
+    Rounded(u32),
+    /// Rounded to n significant figures, at least m required.
+    RoundedCoarse(u32, u32),
+    /// n significant figures, at least m required.
+    SigCoarse(u32, u32),
+    /// Within this percentage.
+    WithinPct(String),
+    /// The shape of the answer is not the one asked (practice).
+    NotShapeAsked,
+    /// Right given the student's earlier answers (follow-through).
+    FollowThrough,
+    /// Notes of components: (label, note), joined.
+    Parts(Vec<(String, Msg)>),
+
     // ---- warnings ----
     /// Up nearly parallel to the view direction (angle in radians).
     UpParallel(f64),

@@ -120,7 +120,7 @@ fn class(
         serde_json::to_string_pretty(&json!({
             "command": "check",
             "title": p.title,
-            "students": rows.iter().map(row_json).collect::<Vec<_>>(),
+            "students": rows.iter().map(|r| row_json(r, style.lang)).collect::<Vec<_>>(),
             "skipped": skipped.iter().map(|(f, why)| json!({ "file": f.display().to_string(), "reason": why })).collect::<Vec<_>>(),
         }))
         .unwrap_or_default()
@@ -175,10 +175,10 @@ fn row(p: &ProblemIn, f: &Path, settings: check::Settings, lang: Lang) -> Row {
     }
 }
 
-fn row_json(r: &Row) -> serde_json::Value {
+fn row_json(r: &Row, lang: Lang) -> serde_json::Value {
     match &r.outcome {
         Ok(m) => {
-            let mut j = to_json(m);
+            let mut j = to_json(m, lang);
             j["file"] = json!(r.file.display().to_string());
             j
         }
@@ -212,7 +212,7 @@ pub(crate) fn valid_tolerance(t: Option<f64>) -> Result<()> {
 
 fn output(m: &Marking, json: bool, style: &Style) -> String {
     if json {
-        serde_json::to_string_pretty(&to_json(m)).unwrap_or_default() + "\n"
+        serde_json::to_string_pretty(&to_json(m, style.lang)).unwrap_or_default() + "\n"
     } else {
         to_text(m, style)
     }

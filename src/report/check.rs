@@ -2,12 +2,13 @@
 //! autograders.
 
 use crate::report::lang::Lang;
+use crate::report::words::words;
 use crate::report::{exact_json, value_json, Style};
 use crate::tutor::check::{Marking, Verdict};
 use serde_json::{json, Value};
 
 /// The marking as JSON for autograders.
-pub fn to_json(m: &Marking) -> Value {
+pub fn to_json(m: &Marking, lang: Lang) -> Value {
     let answers: Vec<Value> = m
         .answers
         .iter()
@@ -18,7 +19,7 @@ pub fn to_json(m: &Marking) -> Value {
                 "code": a.code,
                 "given": a.given_value.as_ref().and_then(|g| serde_json::to_value(g).ok()),
                 "expected": a.expected.as_ref().map(|e| json!({ "decimal": value_json(e), "exact": exact_json(e) })),
-                "note": a.note,
+                "note": words(&a.note, lang),
                 "diagnosis": a.diagnosis,
                 "why": a.why,
             })
@@ -40,56 +41,94 @@ pub fn to_json(m: &Marking) -> Value {
         },
         "answers": answers,
         "diagnosis": m.diagnoses.iter().map(|d| json!({
-            "code": d.mistake.code, "mistake": d.mistake.description, "keys": d.keys,
+            "code": d.mistake.code, "mistake": crate::report::mistakes::mistake_text(d.mistake, lang), "keys": d.keys,
             "also": d.also.iter().map(|a| a.code).collect::<Vec<_>>(),
         })).collect::<Vec<_>>(),
         "unknown_keys": m.unknown,
     })
 }
 
+/// A verdict's words.
+fn verdict_words(v: Verdict, lang: Lang) -> String {
+    match (v, lang) {
+        (_, Lang::En) => v.as_str().replace('_', " "),
+        (Verdict::Correct, Lang::Id) => "benar".into(),
+        (Verdict::TooCoarse, Lang::Id) => "terlalu kasar".into(),
+        (Verdict::Wrong, Lang::Id) => "salah".into(),
+        (Verdict::Missing, Lang::Id) => "tidak dijawab".into(),
+        (Verdict::Unparseable, Lang::Id) => "tidak terbaca".into(),
+    }
+}
+
 /// The marking as text: a table of answers, the mistakes found, the score.
 pub fn to_text(m: &Marking, style: &Style) -> String {
     use comfy_table::{presets, ContentArrangement, Table};
+    let t_ = |en, id| style.tr(en, id);
     let mut t = Table::new();
     t.load_preset(presets::UTF8_FULL_CONDENSED)
         .set_content_arrangement(ContentArrangement::Dynamic)
         .set_width(120)
-        .set_header(vec!["answer", "verdict", "given", "expected", "note"]);
+        .set_header(vec![
+            t_("answer", "jawaban"),
+            t_("verdict", "penilaian"),
+            t_("given", "diberikan"),
+            t_("expected", "seharusnya"),
+            t_("note", "catatan"),
+        ]);
     for a in &m.answers {
         t.add_row(vec![
             a.key.clone(),
-            a.verdict.as_str().replace('_', " "),
+            verdict_words(a.verdict, style.lang),
             a.given.clone().unwrap_or_else(|| "—".into()),
             a.expected
                 .as_ref()
                 .map(|e| style.val_inline(e))
                 .unwrap_or_default(),
-            a.note.clone(),
+            style.w(&a.note),
         ]);
     }
-    let mut out = format!("{} — answers of {}\n{t}\n", m.title, m.who);
+    let of = t_("answers of", "jawaban dari");
+    let mut out = format!("{} — {of} {}\n{t}\n", m.title, m.who);
     let whys: Vec<String> = m
         .answers
         .iter()
         .filter_map(|a| a.why.as_ref().map(|w| format!("  • {}: {w}\n", a.key)))
         .collect();
     if !whys.is_empty() {
-        out.push_str("\nWhy the printed answers are wrong (the problem file's errata):\n");
+        out.push_str(t_(
+            "\nWhy the printed answers are wrong (the problem file's errata):\n",
+            "\nMengapa jawaban yang tercetak salah (errata dalam berkas soal):\n",
+        ));
         out.push_str(&whys.concat());
     }
+    out.push_str(&diagnoses_text(m, style));
+    out.push_str(&score_text(m, style));
+    out
+}
+
+/// The mistakes found, the wrong answers no mistake explains, the unknown keys.
+fn diagnoses_text(m: &Marking, style: &Style) -> String {
+    let t_ = |en, id| style.tr(en, id);
+    let mut out = String::new();
     if !m.diagnoses.is_empty() {
-        out.push_str("\nDiagnosis:\n");
+        out.push_str(t_("\nDiagnosis:\n", "\nDiagnosis:\n"));
         for d in &m.diagnoses {
             out.push_str(&format!(
-                "  • {} [{}]\n    reproduces: {}\n",
-                d.mistake.description,
+                "  • {} [{}]\n    {}: {}\n",
+                crate::report::mistakes::mistake_text(d.mistake, style.lang),
                 d.mistake.code,
+                t_("reproduces", "menghasilkan ulang"),
                 d.keys.join(", ")
             ));
             for a in &d.also {
                 out.push_str(&format!(
-                    "    (some of these also follow from: {} [{}])\n",
-                    a.description, a.code
+                    "    ({}: {} [{}])\n",
+                    t_(
+                        "some of these also follow from",
+                        "sebagian juga dapat berasal dari"
+                    ),
+                    crate::report::mistakes::mistake_text(a, style.lang),
+                    a.code
                 ));
             }
         }
@@ -102,32 +141,56 @@ pub fn to_text(m: &Marking, style: &Style) -> String {
         .collect();
     if !undiagnosed.is_empty() {
         out.push_str(&format!(
-            "\nNo known mistake reproduces: {} (an arithmetic slip?)\n",
-            undiagnosed.join(", ")
+            "\n{}: {} {}\n",
+            t_(
+                "No known mistake reproduces",
+                "Tidak ada kesalahan yang dikenal yang menghasilkan"
+            ),
+            undiagnosed.join(", "),
+            t_("(an arithmetic slip?)", "(salah hitung?)")
         ));
     }
     if !m.unknown.is_empty() {
         out.push_str(&format!(
-            "\nNot answers to this problem (ignored): {}\n",
+            "\n{}: {}\n",
+            t_(
+                "Not answers to this problem (ignored)",
+                "Bukan jawaban untuk soal ini (diabaikan)"
+            ),
             m.unknown.join(", ")
         ));
     }
-    out.push_str(&format!(
-        "\nScore: {}/{} ({} correct, {} too coarse, {} wrong, {} missing, {} unparseable)\n",
-        crate::report::fmt_dec(m.score(), 4),
-        m.total(),
-        m.count(Verdict::Correct),
-        m.count(Verdict::TooCoarse),
-        m.count(Verdict::Wrong),
-        m.count(Verdict::Missing),
-        m.count(Verdict::Unparseable)
-    ));
-    if m.follow_through() > 0 {
-        let n = m.follow_through();
-        out.push_str(&match style.lang {
-            Lang::En => format!("({n} of the correct answers by follow-through: right given the student's own earlier answers)\n"),
-            Lang::Id => format!("({n} jawaban benar karena follow-through: benar menurut jawaban siswa sendiri sebelumnya)\n"),
-        });
-    }
     out
+}
+
+/// The score line.
+fn score_text(m: &Marking, style: &Style) -> String {
+    let c = |v| m.count(v);
+    let score = style.dec(crate::report::fmt_dec(m.score(), 4));
+    let score = match style.lang {
+        Lang::En => format!(
+            "\nScore: {score}/{} ({} correct, {} too coarse, {} wrong, {} missing, {} unparseable)\n",
+            m.total(),
+            c(Verdict::Correct),
+            c(Verdict::TooCoarse),
+            c(Verdict::Wrong),
+            c(Verdict::Missing),
+            c(Verdict::Unparseable)
+        ),
+        Lang::Id => format!(
+            "\nNilai: {score}/{} ({} benar, {} terlalu kasar, {} salah, {} tidak dijawab, {} tidak terbaca)\n",
+            m.total(),
+            c(Verdict::Correct),
+            c(Verdict::TooCoarse),
+            c(Verdict::Wrong),
+            c(Verdict::Missing),
+            c(Verdict::Unparseable)
+        ),
+    };
+    let n = m.follow_through();
+    match (n, style.lang) {
+        (0, _) => score,
+        (_, Lang::En) => score + &format!("({n} of the correct answers by follow-through: right given the student's own earlier answers)\n"),
+        (_, Lang::Id) => score + &format!("({n} jawaban benar karena follow-through: benar menurut jawaban mahasiswa sendiri sebelumnya)\n"),
+    }
 }

@@ -458,7 +458,7 @@ pub fn event_json(ev: &Event, lang: Lang) -> Value {
         Event::Verdict(o) => json!({
             "event": "verdict", "key": o.key, "given": o.given,
             "verdict": o.verdict.as_str(), "code": o.code,
-            "expected": value(&o.expected), "note": o.note,
+            "expected": value(&o.expected), "note": w(&o.note),
             "mistakes": o.mistakes.iter().map(|m| m.code).collect::<Vec<_>>(),
             "follow_through": o.follow_through.as_ref().map(value_json),
         }),

@@ -36,6 +36,25 @@ pub fn words(m: &Msg, lang: Lang) -> String {
                 format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen")
             }
         }
+        Msg::Parts(parts) => parts
+            .iter()
+            .map(|(l, n)| format!("{l}: {}", words(n, lang)))
+            .collect::<Vec<_>>()
+            .join("; "),
+        Msg::Expected(v) => format!(
+            "{} {}",
+            pick(id, "expected", "seharusnya"),
+            super::lang::decimal(v, lang)
+        ),
+        Msg::Unreadable(why) => format!(
+            "{}: {why}",
+            pick(id, "cannot be read", "tidak dapat dibaca")
+        ),
+        Msg::WithinPct(p) => format!(
+            "{} {}%",
+            pick(id, "within", "dalam batas"),
+            super::lang::decimal(p, lang)
+        ),
         _ => title(m, id)
             .or_else(|| caption(m, id))
             .or_else(|| note(m, id))
@@ -440,6 +459,66 @@ fn note(m: &Msg, id: bool) -> Option<String> {
             "outside the near/far planes: clipped",
             "di luar bidang dekat/jauh: di-clip",
         ),
+        _ => check_note(m, id),
+    }
+}
+
+/// How one answer was judged (`check`).
+fn check_note(m: &Msg, id: bool) -> Option<String> {
+    let p = |en: &str, ind: &str| Some(pick(id, en, ind));
+    let f = |en: String, ind: String| Some(if id { ind } else { en });
+    match m {
+        Msg::ExpectOne => p("expected one number", "seharusnya satu bilangan"),
+        Msg::ExpectList(n) => f(
+            format!("expected a list of {n} values"),
+            format!("seharusnya daftar berisi {n} nilai"),
+        ),
+        Msg::CountMismatch(n, k) => f(
+            format!("expected {n} values, got {k}"),
+            format!("seharusnya {n} nilai, diberikan {k}"),
+        ),
+        Msg::ExpectedNone => p(
+            "expected none (nothing is left)",
+            "seharusnya tidak ada (tidak ada yang tersisa)",
+        ),
+        Msg::ExpectedBool(b) => f(
+            format!("expected {b}"),
+            format!("seharusnya {}", if *b { "ya" } else { "tidak" }),
+        ),
+        Msg::SeveralAnswers => p(
+            "this key holds several answers: give them one by one",
+            "kunci ini memuat beberapa jawaban: berikan satu per satu",
+        ),
+        Msg::EmptyAnswer => p("empty answer", "jawaban kosong"),
+        Msg::NoAnswer => p("no answer given", "tidak ada jawaban"),
+        Msg::NotShapeAsked => p(
+            "not of the shape asked",
+            "bentuknya tidak seperti yang diminta",
+        ),
+        Msg::FollowThrough => p(
+            "right given the earlier answers (follow-through)",
+            "benar menurut jawaban sebelumnya (follow-through)",
+        ),
+        Msg::Exact => p("exact", "tepat"),
+        Msg::NotANumber(t, n) => f(
+            format!("`{t}` is not a number (expected {n} values)"),
+            format!("`{t}` bukan bilangan (seharusnya {n} nilai)"),
+        ),
+        Msg::Rounded(s) => f(
+            format!("rounded to {s} significant figures"),
+            format!("dibulatkan ke {s} angka penting"),
+        ),
+        Msg::RoundedCoarse(s, need) => f(
+            format!(
+                "rounded to {s} significant figure{}, at least {need} required",
+                if *s == 1 { "" } else { "s" }
+            ),
+            format!("dibulatkan ke {s} angka penting, paling sedikit {need} diperlukan"),
+        ),
+        Msg::SigCoarse(s, need) => f(
+            format!("{s} significant figure(s), at least {need} required"),
+            format!("{s} angka penting, paling sedikit {need} diperlukan"),
+        ),
         _ => None,
     }
 }
@@ -551,6 +630,25 @@ mod tests {
             Msg::Inside(true, false),
             Msg::UpParallel(1e-9),
             Msg::BehindWarn(s()),
+            Msg::ExpectOne,
+            Msg::ExpectList(3),
+            Msg::CountMismatch(3, 2),
+            Msg::Expected("0.5".into()),
+            Msg::ExpectedNone,
+            Msg::ExpectedBool(true),
+            Msg::SeveralAnswers,
+            Msg::EmptyAnswer,
+            Msg::NoAnswer,
+            Msg::Unreadable("x".into()),
+            Msg::Exact,
+            Msg::NotANumber(s(), 3),
+            Msg::Rounded(4),
+            Msg::RoundedCoarse(1, 3),
+            Msg::SigCoarse(2, 3),
+            Msg::WithinPct("0.5".into()),
+            Msg::Parts(vec![("x".into(), Msg::Exact)]),
+            Msg::NotShapeAsked,
+            Msg::FollowThrough,
         ];
         for i in 0..6 {
             v.push(Msg::Intersection(i, "x = xmin".into()));
@@ -603,7 +701,10 @@ mod tests {
             | SpotIn(_) | BehindCentre | TextH | Orthonormal(_) | TrivialNote(_) | Kept(_)
             | TouchesPoint | InsidePart | Misses | DefaultView | MaterialD3d | MaterialText
             | NoTriangle | Nearest | Agree(_) | AlreadyWorld | Inside(..) | UpParallel(_)
-            | BehindWarn(_) => {}
+            | BehindWarn(_) | ExpectOne | ExpectList(_) | CountMismatch(..) | Expected(_)
+            | ExpectedNone | ExpectedBool(_) | SeveralAnswers | EmptyAnswer | NoAnswer
+            | Unreadable(_) | NotANumber(..) | Exact | Rounded(_) | RoundedCoarse(..)
+            | SigCoarse(..) | WithinPct(_) | Parts(_) | NotShapeAsked | FollowThrough => {}
         }
     }
 

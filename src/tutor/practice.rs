@@ -312,7 +312,7 @@ pub struct Outcome {
     /// `check`'s code, `correct.follow_through`, or `skipped` / `revealed`.
     pub code: &'static str,
     /// How it was judged (check's note).
-    pub note: String,
+    pub note: crate::msg::Msg,
     /// grafika's value.
     pub expected: Val,
     /// The value computed from the student's own earlier answers, when
@@ -491,7 +491,7 @@ impl<'a> Session<'a> {
                     given: None,
                     verdict: Verdict::Missing,
                     code: if show { "revealed" } else { "skipped" },
-                    note: String::new(),
+                    note: crate::msg::Msg::default(),
                     expected: item.expected.clone(),
                     follow_through: None,
                     mistakes: vec![],
@@ -543,7 +543,7 @@ impl<'a> Session<'a> {
             true => Judged::new(
                 Verdict::Unparseable,
                 "unparseable",
-                "not of the shape asked",
+                crate::msg::Msg::NotShapeAsked,
             ),
             false => judge(&given, &item.expected, s, &item.key, false),
         };
@@ -566,7 +566,7 @@ impl<'a> Session<'a> {
             Some(ft) if check::follows_through(&given, &ft, &item.expected, s, &item.key) => {
                 out.verdict = Verdict::Correct;
                 out.code = FOLLOW_THROUGH;
-                out.note = check::FOLLOW_THROUGH_NOTE.into();
+                out.note = crate::msg::Msg::FollowThrough;
                 out.follow_through = Some(ft);
             }
             _ => {

@@ -2,6 +2,7 @@
 //! digits written, significant figures; lists element by element.
 
 use super::{Settings, Verdict, ZERO_TOLERANCE};
+use crate::msg::Msg;
 use crate::num::{parse_expr, Real, Shown};
 use crate::stages::trace::Val;
 
@@ -12,15 +13,15 @@ pub(crate) struct Judged {
     /// The stable code: `correct.exact`, `correct.tolerance`,
     /// `correct.rounded`, `too_coarse`, `wrong`, `unparseable`, `missing`.
     pub code: &'static str,
-    pub note: String,
+    pub note: Msg,
 }
 
 impl Judged {
-    pub(crate) fn new(verdict: Verdict, code: &'static str, note: impl Into<String>) -> Judged {
+    pub(crate) fn new(verdict: Verdict, code: &'static str, note: Msg) -> Judged {
         Judged {
             verdict,
             code,
-            note: note.into(),
+            note,
         }
     }
 }
@@ -39,14 +40,14 @@ pub(crate) fn judge(
     match expected {
         Val::Num(e) => match scalar_text(given) {
             Some(t) => judge_number(&t, e, s, carry),
-            None => Judged::new(Verdict::Unparseable, "unparseable", "expected one number"),
+            None => Judged::new(Verdict::Unparseable, "unparseable", Msg::ExpectOne),
         },
         Val::List(items) => {
             let Some(parts) = list_parts(given) else {
                 return Judged::new(
                     Verdict::Unparseable,
                     "unparseable",
-                    format!("expected a list of {} values", items.len()),
+                    Msg::ExpectList(items.len()),
                 );
             };
             // A projected point may be given as (xp, yp): zp = d is the plane.
@@ -60,17 +61,13 @@ pub(crate) fn judge(
                     return Judged::new(
                         Verdict::Unparseable,
                         "unparseable",
-                        format!(
-                            "`{}` is not a number (expected {} values)",
-                            junk.trim(),
-                            items.len()
-                        ),
+                        Msg::NotANumber(junk.trim().to_string(), items.len()),
                     );
                 }
                 return Judged::new(
                     Verdict::Wrong,
                     "wrong",
-                    format!("expected {} values, got {}", items.len(), parts.len()),
+                    Msg::CountMismatch(items.len(), parts.len()),
                 );
             }
             let nested = items.iter().any(|x| matches!(x, Val::List(_)));
@@ -102,9 +99,9 @@ pub(crate) fn judge(
                 g.eq_ignore_ascii_case(t)
             };
             if same {
-                Judged::new(Verdict::Correct, "correct.exact", "")
+                Judged::new(Verdict::Correct, "correct.exact", Msg::default())
             } else {
-                Judged::new(Verdict::Wrong, "wrong", format!("expected {t}"))
+                Judged::new(Verdict::Wrong, "wrong", Msg::Expected(t.to_string()))
             }
         }
         Val::Null => {
@@ -119,25 +116,21 @@ pub(crate) fn judge(
                 _ => false,
             };
             if empty {
-                Judged::new(Verdict::Correct, "correct.exact", "")
+                Judged::new(Verdict::Correct, "correct.exact", Msg::default())
             } else {
-                Judged::new(Verdict::Wrong, "wrong", "expected none (nothing is left)")
+                Judged::new(Verdict::Wrong, "wrong", Msg::ExpectedNone)
             }
         }
         Val::Bool(b) => {
             let g = scalar_text(given).unwrap_or_default().to_lowercase();
             let gb = matches!(g.as_str(), "true" | "yes" | "1");
             if gb == *b {
-                Judged::new(Verdict::Correct, "correct.exact", "")
+                Judged::new(Verdict::Correct, "correct.exact", Msg::default())
             } else {
-                Judged::new(Verdict::Wrong, "wrong", format!("expected {b}"))
+                Judged::new(Verdict::Wrong, "wrong", Msg::ExpectedBool(*b))
             }
         }
-        Val::Map(_) => Judged::new(
-            Verdict::Unparseable,
-            "unparseable",
-            "this key holds several answers: give them one by one",
-        ),
+        Val::Map(_) => Judged::new(Verdict::Unparseable, "unparseable", Msg::SeveralAnswers),
     }
 }
 
@@ -258,7 +251,7 @@ fn combine(parts: Vec<Judged>, label: impl Fn(usize) -> String) -> Judged {
             .unwrap_or("wrong")
     };
     // The notes of the components that decided the verdict.
-    let notes: Vec<String> = parts
+    let notes: Vec<(String, Msg)> = parts
         .iter()
         .enumerate()
         .filter(|(_, j)| {
@@ -269,7 +262,7 @@ fn combine(parts: Vec<Judged>, label: impl Fn(usize) -> String) -> Judged {
                     j.verdict == worst
                 }
         })
-        .map(|(i, j)| format!("{}: {}", label(i), j.note))
+        .map(|(i, j)| (label(i).to_string(), j.note.clone()))
         .collect();
     // One note when every component says the same.
     let note = if !notes.is_empty()
@@ -278,7 +271,7 @@ fn combine(parts: Vec<Judged>, label: impl Fn(usize) -> String) -> Judged {
     {
         parts[0].note.clone()
     } else {
-        notes.join("; ")
+        Msg::Parts(notes)
     };
     Judged::new(worst, code, note)
 }
@@ -318,21 +311,21 @@ fn whole_number_places(text: &str) -> Option<(u32, i32)> {
 fn judge_number(text: &str, e: &Shown, s: &Settings, carry: bool) -> Judged {
     let t = text.trim();
     if t.is_empty() {
-        return Judged::new(Verdict::Missing, "missing", "empty answer");
+        return Judged::new(Verdict::Missing, "missing", Msg::EmptyAnswer);
     }
     // A decimal comma (0,041) is a decimal point.
     let t = t.replace(',', ".");
     let expr = match parse_expr(&t) {
         Ok(x) => x,
-        Err(m) => return Judged::new(Verdict::Unparseable, "unparseable", m),
+        Err(m) => return Judged::new(Verdict::Unparseable, "unparseable", Msg::Unreadable(m)),
     };
     let g = match expr.eval::<f64>() {
         Ok(v) => v,
-        Err(m) => return Judged::new(Verdict::Unparseable, "unparseable", m),
+        Err(m) => return Judged::new(Verdict::Unparseable, "unparseable", Msg::Unreadable(m)),
     };
     let ev = e.value;
     let places = decimal_places(&t).or_else(|| whole_number_places(&t));
-    let expected_txt = || format!("expected {}", crate::num::format::shown(e, 6, true));
+    let expected_txt = || Msg::Expected(crate::num::format::shown(e, 6, true));
 
     // 1. Exact equality, when both sides are exact.
     let mut decided = false;
@@ -344,7 +337,7 @@ fn judge_number(text: &str, e: &Shown, s: &Settings, carry: bool) -> Judged {
             if er.is_exact() && gr.is_exact() {
                 decided = true;
                 if er == gr {
-                    return Judged::new(Verdict::Correct, "correct.exact", "exact");
+                    return Judged::new(Verdict::Correct, "correct.exact", Msg::Exact);
                 }
                 if places.is_none() {
                     // an exact form that is not equal: only tolerance can save it
@@ -357,7 +350,7 @@ fn judge_number(text: &str, e: &Shown, s: &Settings, carry: bool) -> Judged {
     // Equal to 1e-12 (relative): exact, when exact arithmetic cannot decide
     // (a terminating decimal such as 0.6 = 3/5 is exact, however few digits).
     if !decided && (g - ev).abs() <= ZERO_TOLERANCE * ev.abs().max(1.0) {
-        return Judged::new(Verdict::Correct, "correct.exact", "exact");
+        return Judged::new(Verdict::Correct, "correct.exact", Msg::Exact);
     }
     if let Some(j) = within_tolerance(g, ev, s, places) {
         return j;
@@ -371,18 +364,10 @@ fn judge_number(text: &str, e: &Shown, s: &Settings, carry: bool) -> Judged {
                 Judged::new(
                     Verdict::TooCoarse,
                     "too_coarse",
-                    format!(
-                        "rounded to {sig} significant figure{}, at least {} required",
-                        if sig == 1 { "" } else { "s" },
-                        s.sig_figs
-                    ),
+                    Msg::RoundedCoarse(sig, s.sig_figs),
                 )
             } else {
-                Judged::new(
-                    Verdict::Correct,
-                    "correct.rounded",
-                    format!("rounded to {sig} significant figures"),
-                )
+                Judged::new(Verdict::Correct, "correct.rounded", Msg::Rounded(sig))
             };
         }
     }
@@ -399,15 +384,12 @@ fn within_tolerance(g: f64, ev: f64, s: &Settings, places: Option<(u32, i32)>) -
         Some((sig, _)) if sig < s.sig_figs => Judged::new(
             Verdict::TooCoarse,
             "too_coarse",
-            format!(
-                "{sig} significant figure(s), at least {} required",
-                s.sig_figs
-            ),
+            Msg::SigCoarse(sig, s.sig_figs),
         ),
         _ => Judged::new(
             Verdict::Correct,
             "correct.tolerance",
-            format!("within {}%", fmt_pct(s.tolerance)),
+            Msg::WithinPct(fmt_pct(s.tolerance)),
         ),
     })
 }
@@ -453,8 +435,13 @@ mod tests {
             )
         };
         let j = judge(&arr(&["sqrt(-1)", "0", "1/0"]), &e, &s, "view.n", false);
-        assert_eq!(j.verdict, Verdict::Unparseable, "{}", j.note);
-        assert!(j.note.contains("x:") && j.note.contains("z:"), "{}", j.note);
+        let en = |m: &Msg| crate::report::words::words(m, crate::report::lang::Lang::En);
+        assert_eq!(j.verdict, Verdict::Unparseable, "{}", en(&j.note));
+        assert!(
+            en(&j.note).contains("x:") && en(&j.note).contains("z:"),
+            "{}",
+            en(&j.note)
+        );
         let j = judge(
             &toml::Value::String("banana".into()),
             &e,
@@ -462,8 +449,8 @@ mod tests {
             "view.n",
             false,
         );
-        assert_eq!(j.code, "unparseable", "{}", j.note);
-        assert!(j.note.contains("banana"), "{}", j.note);
+        assert_eq!(j.code, "unparseable", "{}", en(&j.note));
+        assert!(en(&j.note).contains("banana"), "{}", en(&j.note));
         // A readable wrong answer of the wrong length stays wrong.
         let j = judge(&arr(&["0", "1"]), &e, &s, "view.n", false);
         assert_eq!(j.code, "wrong");

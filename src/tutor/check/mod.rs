@@ -120,7 +120,7 @@ pub struct Marked {
     /// The expected value (None when grafika has no such answer).
     pub expected: Option<Val>,
     /// A short note: how it was judged, or what was expected.
-    pub note: String,
+    pub note: crate::msg::Msg,
     /// Codes of the mistakes that reproduce this (wrong) answer.
     pub diagnosis: Vec<&'static str>,
     /// Why the source's printed answer is wrong (its `[[errata]]`), when
@@ -301,7 +301,7 @@ pub fn mark(
             continue;
         };
         let j = match given {
-            None => Judged::new(Verdict::Missing, "missing", "no answer given"),
+            None => Judged::new(Verdict::Missing, "missing", crate::msg::Msg::NoAnswer),
             Some(g) => judge(g, expected, &settings, key, false),
         };
         let note = j.note;
@@ -369,15 +369,13 @@ fn credit_follow_through(
         if ft.is_some_and(|ft| follows_through(given, &ft, right, settings, &m.key)) {
             m.verdict = Verdict::Correct;
             m.code = FOLLOW_THROUGH;
-            m.note = FOLLOW_THROUGH_NOTE.into();
+            m.note = crate::msg::Msg::FollowThrough;
         }
     }
 }
 
 /// The code of an answer credited by follow-through.
 pub const FOLLOW_THROUGH: &str = "correct.follow_through";
-/// The note of an answer credited by follow-through.
-pub const FOLLOW_THROUGH_NOTE: &str = "right given the earlier answers (follow-through)";
 
 /// Whether `given`, wrong against grafika's `right`, is right against the
 /// value `ft` computed from the student's own earlier answers. The earlier
