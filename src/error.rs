@@ -2,6 +2,7 @@
 //! turns them into a message on stderr, a JSON object with `--json`, and exit
 //! status 2.
 
+use crate::msg::Msg;
 use std::fmt;
 
 /// A user-facing error: which input was wrong and why.
@@ -9,8 +10,9 @@ use std::fmt;
 pub struct Error {
     /// The input at fault, as the user named it (`--up`, `camera.eye`, `points.A`).
     pub field: String,
-    /// Why, with the offending values.
-    pub message: String,
+    /// Why, with the offending values: a message key (`report::words`
+    /// gives its words), or English text not yet made a key.
+    pub message: Msg,
 }
 
 impl Error {
@@ -18,7 +20,23 @@ impl Error {
     pub fn new(field: impl Into<String>, message: impl Into<String>) -> Error {
         Error {
             field: field.into(),
-            message: message.into(),
+            message: Msg::Untranslated(message.into()),
+        }
+    }
+
+    /// An error about `field`, said by a message key.
+    pub fn said(field: impl Into<String>, message: Msg) -> Error {
+        Error {
+            field: field.into(),
+            message,
+        }
+    }
+
+    /// The same error with a location (`file:line:col`) before its message.
+    pub fn at(self, place: impl Into<String>) -> Error {
+        Error {
+            message: Msg::At(place.into(), Box::new(self.message)),
+            ..self
         }
     }
 
@@ -33,7 +51,7 @@ impl Error {
 
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.field, self.message)
+        write!(f, "{}: {}", self.field, self.message.plain())
     }
 }
 

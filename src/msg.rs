@@ -307,6 +307,34 @@ pub enum Msg {
     /// Notes of components: (label, note), joined.
     Parts(Vec<(String, Msg)>),
 
+    // ---- errors ----
+    /// English text not yet made a key (shown as is in every language).
+    Untranslated(String),
+    /// A location (`file:line:col`) before a message.
+    At(String, Box<Msg>),
+    /// Pe and Pr are the same point (shown).
+    ErrSamePoint(String),
+    /// Vup is the zero vector.
+    ErrUpZero,
+    /// Vup (shown) parallel to Pe − Pr (shown).
+    ErrUpParallel(String, String),
+    /// fovy out of (0°, 180°) (the value given).
+    ErrFovy(String),
+    /// aspect not positive (the value given).
+    ErrAspect(String),
+    /// near not positive (the value given).
+    ErrNear(String),
+    /// A point (name) on the plane of the centre of projection (zprp when general).
+    ErrCopPlane(String, Option<String>),
+    /// An unknown point (name); the known ones, if any.
+    ErrUnknownPoint(String, Option<String>),
+    /// axis min > max: axis, min, max.
+    ErrBoxInverted(String, String, String),
+    /// A file that cannot be read: path, the system's reason.
+    ErrCannotRead(String, String),
+    /// A zero vector that should be made a unit vector (name).
+    ErrZeroUnit(String),
+
     // ---- warnings ----
     /// Up nearly parallel to the view direction (angle in radians).
     UpParallel(f64),
@@ -324,6 +352,17 @@ impl Msg {
     /// Whether this is empty notation (nothing to print).
     pub fn is_empty(&self) -> bool {
         matches!(self, Msg::Math(s) if s.is_empty())
+    }
+
+    /// The text of notation or untranslated text (with its location), else
+    /// the key's name and parameters: for `Display` of errors in tests and
+    /// logs; people read `report::words`.
+    pub fn plain(&self) -> String {
+        match self {
+            Msg::Math(s) | Msg::Untranslated(s) => s.clone(),
+            Msg::At(place, m) => format!("{place}: {}", m.plain()),
+            other => format!("{other:?}"),
+        }
     }
 }
 

@@ -6,6 +6,7 @@ use crate::cli::args::CheckArgs;
 use crate::cli::cut_message;
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
+use crate::msg::Msg;
 use crate::report::check::{to_json, to_text};
 use crate::report::lang::{tr, Lang};
 use crate::report::Style;
@@ -185,7 +186,7 @@ fn row_json(r: &Row, lang: Lang) -> serde_json::Value {
         Err(e) => json!({
             "student": r.who,
             "file": r.file.display().to_string(),
-            "error": { "field": e.field, "message": e.message },
+            "error": { "field": e.field, "message": crate::report::words::words(&e.message, lang) },
         }),
     }
 }
@@ -229,8 +230,12 @@ fn stem(f: &Path) -> String {
 type Skipped = Vec<(PathBuf, String)>;
 
 fn answer_files(dir: &Path, lang: Lang) -> Result<(Vec<PathBuf>, Skipped)> {
-    let rd = std::fs::read_dir(dir)
-        .map_err(|e| Error::new("answers", format!("cannot read {}: {e}", dir.display())))?;
+    let rd = std::fs::read_dir(dir).map_err(|e| {
+        Error::said(
+            "answers",
+            Msg::ErrCannotRead(dir.display().to_string(), e.to_string()),
+        )
+    })?;
     let mut all: Vec<PathBuf> = rd.filter_map(|e| e.ok().map(|e| e.path())).collect();
     all.sort();
     let (files, others): (Vec<PathBuf>, Vec<PathBuf>) = all

@@ -115,7 +115,7 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
             print!("{text}");
             status
         }
-        Err(e) => report_error(&e, json),
+        Err(e) => report_error(&e, json, style.lang),
     }
 }
 
@@ -206,7 +206,7 @@ fn clap_error(e: clap::Error, wants_json: bool) -> i32 {
                 field,
                 clap_message(&e.render().to_string(), &kind.to_string()),
             );
-            report_error(&err, wants_json)
+            report_error(&err, wants_json, Lang::from_env(|k| std::env::var(k).ok()))
         }
     }
 }
@@ -248,10 +248,13 @@ pub fn cut_message(message: &str) -> String {
 
 /// Prints an error on one line (stderr; and JSON on stdout with `--json`),
 /// a long echoed input cut; returns 2.
-fn report_error(e: &Error, json: bool) -> i32 {
+/// The message in `lang`; the field as the flag or key is spelled.
+fn report_error(e: &Error, json: bool, lang: Lang) -> i32 {
     let field = cut_message(&e.field);
-    let message = cut_message(&e.message).replace('\n', " ");
-    eprintln!("error: {field}: {message}");
+    let words = crate::report::words::words(&e.message, lang);
+    let message = cut_message(&words).replace('\n', " ");
+    let label = crate::report::lang::tr(lang, "error", "kesalahan");
+    eprintln!("{label}: {field}: {message}");
     if json {
         println!(
             "{}",

@@ -24,6 +24,10 @@ pub fn read_text(field: &str, path: &Path) -> Result<String> {
             .map_err(|e| Error::new(field, format!("cannot read standard input: {e}")))?;
         return Ok(text);
     }
-    std::fs::read_to_string(path)
-        .map_err(|e| Error::new(field, format!("cannot read {}: {e}", path.display())))
+    std::fs::read_to_string(path).map_err(|e| {
+        Error::said(
+            field,
+            crate::msg::Msg::ErrCannotRead(path.display().to_string(), e.to_string()),
+        )
+    })
 }

@@ -240,18 +240,18 @@ mod tests {
             "p.toml",
         )
         .unwrap_err();
-        assert!(e.message.starts_with("p.toml:3:"), "{e}");
+        assert!(e.message.plain().starts_with("p.toml:3:"), "{e}");
         let e = ProblemIn::parse(
             "title='t'\n[camera]\neye = [1, 2, \"1+\"]\nlook=[0,0,0]\nup=[0,1,0]\n",
             "p.toml",
         )
         .unwrap_err();
-        assert!(e.message.contains("p.toml:3:"), "{e}");
+        assert!(e.message.plain().contains("p.toml:3:"), "{e}");
         let e = ProblemIn::parse(
             "title='t'\n[camera]\neye=[0,0,1]\nlok=[0,0,0]\nup=[0,1,0]\n",
             "p.toml",
         )
         .unwrap_err();
-        assert!(e.message.contains("p.toml:4:"), "{e}");
+        assert!(e.message.plain().contains("p.toml:4:"), "{e}");
     }
 }

@@ -392,7 +392,7 @@ impl Scene {
         };
         let placed = |key: &str| {
             let here = find(key);
-            move |e: Error| Error::new(e.field, format!("{here}: {}", e.message))
+            move |e: Error| e.at(here.clone())
         };
         let (width, height, background) = image(&s).map_err(placed("image"))?;
         let view = view(&s, &find)?;
@@ -413,8 +413,7 @@ impl Scene {
         }
         let mut objects = Vec::new();
         for (i, o) in s.object.iter().enumerate() {
-            let obj = object(i, o.get_ref(), &base, dir)
-                .map_err(|e| Error::new(e.field, format!("{}: {}", at(o.span()), e.message)))?;
+            let obj = object(i, o.get_ref(), &base, dir).map_err(|e| e.at(at(o.span())))?;
             objects.push(obj);
         }
         if objects.is_empty() {
@@ -485,8 +484,7 @@ fn view(s: &SceneIn, find: &dyn Fn(&str) -> String) -> Result<View> {
                     ),
                 )
             })?;
-            camera_view(c, p)
-                .map_err(|e| Error::new(e.field, format!("{}: {}", find("perspective"), e.message)))
+            camera_view(c, p).map_err(|e| e.at(find("perspective")))
         }
     }
 }
@@ -670,7 +668,7 @@ fn light(l: &LightIn) -> Result<Light<f32>> {
     }
     out.range = l.range.map(|r| r.0 as f32);
     out.validate("light")
-        .map_err(|e| Error::new(e.field.trim_start_matches("light.").to_string(), e.message))?;
+        .map_err(|e| Error::said(e.field.trim_start_matches("light.").to_string(), e.message))?;
     Ok(out)
 }
 
@@ -882,7 +880,7 @@ mod tests {
         ] {
             let e = parse(text).unwrap_err();
             assert_eq!(e.field, "object", "{text:?}");
-            assert!(e.message.contains("no objects"), "{}", e.message);
+            assert!(e.message.plain().contains("no objects"), "{e}");
         }
     }
 
@@ -907,16 +905,16 @@ mod tests {
     #[test]
     fn errors_carry_line_and_column() {
         let e = parse("[[object]]\ntype = \"pyramid\"\n").unwrap_err();
-        assert!(e.message.starts_with("s.toml:2:"), "{e}");
+        assert!(e.message.plain().starts_with("s.toml:2:"), "{e}");
         let e = parse("[[object]]\ntype = \"sphere\"\nn = -3\nr = 1\n").unwrap_err();
-        assert!(e.message.starts_with("s.toml:3:"), "{e}");
+        assert!(e.message.plain().starts_with("s.toml:3:"), "{e}");
         let e = parse("[[object]]\ntype = \"sphere\"\nn = 5\nr = nan\n").unwrap_err();
-        assert!(e.message.starts_with("s.toml:4:"), "{e}");
+        assert!(e.message.plain().starts_with("s.toml:4:"), "{e}");
         let e = parse("[[object]]\ntype = \"sphere\"\nn = 5\nr = \"1/0\"\n").unwrap_err();
-        assert!(e.message.starts_with("s.toml:4:"), "{e}");
+        assert!(e.message.plain().starts_with("s.toml:4:"), "{e}");
         let e = parse("\n[[object]]\ntype = \"obj\"\npath = \"nope.obj\"\n").unwrap_err();
         assert!(
-            e.message.starts_with("s.toml:2:") && e.message.contains("nope.obj"),
+            e.message.plain().starts_with("s.toml:2:") && e.message.plain().contains("nope.obj"),
             "{e}"
         );
         let e = parse("[[object]]\ntype = \"box\"\nsize = [1, 1, 1]\nr = 2\n").unwrap_err();

@@ -36,6 +36,19 @@ pub fn words(m: &Msg, lang: Lang) -> String {
                 format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen")
             }
         }
+        Msg::Untranslated(s) => s.clone(),
+        Msg::At(place, m) => format!("{place}: {}", words(m, lang)),
+        Msg::ErrSamePoint(_)
+        | Msg::ErrUpZero
+        | Msg::ErrUpParallel(..)
+        | Msg::ErrFovy(_)
+        | Msg::ErrAspect(_)
+        | Msg::ErrNear(_)
+        | Msg::ErrCopPlane(..)
+        | Msg::ErrUnknownPoint(..)
+        | Msg::ErrBoxInverted(..)
+        | Msg::ErrCannotRead(..)
+        | Msg::ErrZeroUnit(_) => error(m, lang),
         Msg::Parts(parts) => parts
             .iter()
             .map(|(l, n)| format!("{l}: {}", words(n, lang)))
@@ -463,6 +476,74 @@ fn note(m: &Msg, id: bool) -> Option<String> {
     }
 }
 
+/// Numbers in a message parameter written in `lang` (`(1.5, 2, 3)` →
+/// `(1,5; 2; 3)` in Indonesian).
+fn nums(s: &str, lang: Lang) -> String {
+    match lang {
+        Lang::En => s.to_string(),
+        Lang::Id => s.replace(", ", "; ").replace('.', ","),
+    }
+}
+
+/// Error messages (the field is printed before them, as spelled).
+fn error(m: &Msg, lang: Lang) -> String {
+    let id = lang == Lang::Id;
+    let n = |s: &str| nums(s, lang);
+    let f = |en: String, ind: String| if id { ind } else { en };
+    match m {
+        Msg::ErrSamePoint(p) => f(
+            format!("the eye Pe and the look-at point Pr are the same point {p}"),
+            format!("titik mata Peye dan titik acuan Pref adalah titik yang sama {}", n(p)),
+        ),
+        Msg::ErrUpZero => pick(id, "the up vector Vup is the zero vector", "vektor Vup adalah vektor nol"),
+        Msg::ErrUpParallel(up, d) => f(
+            format!("the up vector Vup = {up} is parallel to the view direction Pe − Pr = {d}, so Vup × n = 0 and u is undefined"),
+            format!("vektor Vup = {} sejajar dengan arah pandang Peye − Pref = {}, sehingga Vup × n = 0 dan u tidak terdefinisi", n(up), n(d)),
+        ),
+        Msg::ErrFovy(v) => f(
+            format!("must be between 0° and 180° (exclusive), got {v}°"),
+            format!("harus di antara 0° dan 180° (tidak termasuk keduanya), diberikan {}°", n(v)),
+        ),
+        Msg::ErrAspect(v) => f(
+            format!("must be positive (width/height), got {v}"),
+            format!("harus positif (lebar/tinggi), diberikan {}", n(v)),
+        ),
+        Msg::ErrNear(v) => f(
+            format!("must be positive (a distance in front of the eye), got {v}"),
+            format!("harus positif (jarak di depan mata), diberikan {}", n(v)),
+        ),
+        Msg::ErrCopPlane(p, None) => f(
+            format!("{p} has z = 0: it lies in the plane of the centre of projection and has no image"),
+            format!("{p} memiliki z = 0: titik itu terletak pada bidang pusat proyeksi dan tidak memiliki bayangan"),
+        ),
+        Msg::ErrCopPlane(p, Some(z)) => f(
+            format!("{p} has z = zprp = {z}: it lies in the plane of the centre of projection and has no image"),
+            format!("{p} memiliki z = zprp = {}: titik itu terletak pada bidang pusat proyeksi dan tidak memiliki bayangan", n(z)),
+        ),
+        Msg::ErrUnknownPoint(p, None) => f(
+            format!("unknown point `{p}`: the problem has no [points]"),
+            format!("titik `{p}` tidak dikenal: soal ini tidak memiliki [points]"),
+        ),
+        Msg::ErrUnknownPoint(p, Some(known)) => f(
+            format!("unknown point `{p}`; the points are {known}"),
+            format!("titik `{p}` tidak dikenal; titik-titiknya adalah {known}"),
+        ),
+        Msg::ErrBoxInverted(a, lo, hi) => f(
+            format!("{a}min = {lo} is greater than {a}max = {hi}"),
+            format!("{a}min = {} lebih besar daripada {a}max = {}", n(lo), n(hi)),
+        ),
+        Msg::ErrCannotRead(path, why) => f(
+            format!("cannot read {path}: {why}"),
+            format!("tidak dapat membaca {path}: {why}"),
+        ),
+        Msg::ErrZeroUnit(v) => f(
+            format!("{v} is the zero vector (0, 0, 0): it has no direction, so it cannot be made a unit vector"),
+            format!("{v} adalah vektor nol (0; 0; 0): tidak memiliki arah, sehingga tidak dapat dijadikan vektor satuan"),
+        ),
+        _ => words(m, lang),
+    }
+}
+
 /// How one answer was judged (`check`).
 fn check_note(m: &Msg, id: bool) -> Option<String> {
     let p = |en: &str, ind: &str| Some(pick(id, en, ind));
@@ -649,6 +730,19 @@ mod tests {
             Msg::Parts(vec![("x".into(), Msg::Exact)]),
             Msg::NotShapeAsked,
             Msg::FollowThrough,
+            Msg::ErrSamePoint("(1, 2, 3)".into()),
+            Msg::ErrUpZero,
+            Msg::ErrUpParallel("(0, 1, 0)".into(), "(0, 5, 0)".into()),
+            Msg::ErrFovy("180".into()),
+            Msg::ErrAspect("0".into()),
+            Msg::ErrNear("-1".into()),
+            Msg::ErrCopPlane(s(), None),
+            Msg::ErrCopPlane(s(), Some("2".into())),
+            Msg::ErrUnknownPoint(s(), None),
+            Msg::ErrUnknownPoint(s(), Some("A, B".into())),
+            Msg::ErrBoxInverted("y".into(), "5".into(), "4".into()),
+            Msg::ErrCannotRead("p.toml".into(), "os error 2".into()),
+            Msg::ErrZeroUnit(s()),
         ];
         for i in 0..6 {
             v.push(Msg::Intersection(i, "x = xmin".into()));
@@ -704,7 +798,10 @@ mod tests {
             | BehindWarn(_) | ExpectOne | ExpectList(_) | CountMismatch(..) | Expected(_)
             | ExpectedNone | ExpectedBool(_) | SeveralAnswers | EmptyAnswer | NoAnswer
             | Unreadable(_) | NotANumber(..) | Exact | Rounded(_) | RoundedCoarse(..)
-            | SigCoarse(..) | WithinPct(_) | Parts(_) | NotShapeAsked | FollowThrough => {}
+            | SigCoarse(..) | WithinPct(_) | Parts(_) | NotShapeAsked | FollowThrough
+            | Untranslated(_) | At(..) | ErrSamePoint(_) | ErrUpZero | ErrUpParallel(..)
+            | ErrFovy(_) | ErrAspect(_) | ErrNear(_) | ErrCopPlane(..) | ErrUnknownPoint(..)
+            | ErrBoxInverted(..) | ErrCannotRead(..) | ErrZeroUnit(_) => {}
         }
     }
 

@@ -75,7 +75,7 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
 
     // u from Vup × d
     if vec::normalize(vup).is_none() {
-        return Err(Error::new("up", "the up vector Vup is the zero vector"));
+        return Err(Error::said("up", Msg::ErrUpZero));
     }
     // Exact power-of-two scaling (one for Real): directions are unchanged.
     let (kd, ku) = (
@@ -85,16 +85,8 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
     let ds = vec::scale(&d, &kd);
     let ups = vec::scale(vup, &ku);
     let su = vec::cross(&ups, &ds);
-    let (u, sun) = vec::normalize(&su).ok_or_else(|| {
-        Error::new(
-            "up",
-            format!(
-                "the up vector Vup = {} is parallel to the view direction Pe − Pr = {}, so Vup × n = 0 and u is undefined",
-                fmt3(vup),
-                fmt3(&d)
-            ),
-        )
-    })?;
+    let (u, sun) = vec::normalize(&su)
+        .ok_or_else(|| Error::said("up", Msg::ErrUpParallel(fmt3(vup), fmt3(&d))))?;
     warn_near_parallel(&sun, &ups, &ds, tr);
     tr.step(|| u_step(vup, &n, &u));
 
@@ -136,15 +128,7 @@ fn view_direction<T: Scalar>(pe: &V3<T>, d: &V3<T>) -> Result<(V3<T>, T)> {
             ),
         ));
     }
-    vec::normalize(d).ok_or_else(|| {
-        Error::new(
-            "look",
-            format!(
-                "the eye Pe and the look-at point Pr are the same point {}",
-                fmt3(pe)
-            ),
-        )
-    })
+    vec::normalize(d).ok_or_else(|| Error::said("look", Msg::ErrSamePoint(fmt3(pe))))
 }
 
 /// The step of the axis n.

@@ -23,12 +23,12 @@ impl<T: Scalar> ClipBox<T> {
     pub fn validate(&self) -> Result<()> {
         for (k, axis) in ["x", "y", "z"].iter().enumerate() {
             if self.min[k] > self.max[k] {
-                return Err(Error::new(
+                return Err(Error::said(
                     "min",
-                    format!(
-                        "{axis}min = {} is greater than {axis}max = {}",
-                        self.min[k].to_f64(),
-                        self.max[k].to_f64()
+                    Msg::ErrBoxInverted(
+                        axis.to_string(),
+                        self.min[k].to_f64().to_string(),
+                        self.max[k].to_f64().to_string(),
                     ),
                 ));
             }
@@ -595,6 +595,8 @@ mod tests {
             min: V3::new(0.0, 5.0, 0.0),
             max: V3::new(1.0, 4.0, 1.0),
         };
-        assert!(b.validate().unwrap_err().message.contains("ymin"));
+        assert!(
+            matches!(b.validate().unwrap_err().message, Msg::ErrBoxInverted(a, _, _) if a == "y")
+        );
     }
 }

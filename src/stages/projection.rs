@@ -163,9 +163,9 @@ fn perspective_form<T: Scalar>(proj: &Projection<T>, name: &str, z: &T) -> Resul
         Projection::Ortho => return Ok(None),
         Projection::Plane { d } => {
             if z.is_zero_value() {
-                return Err(Error::new(
+                return Err(Error::said(
                     format!("points.{name}"),
-                    format!("{name} has z = 0: it lies in the plane of the centre of projection and has no image"),
+                    Msg::ErrCopPlane(name.to_string(), None),
                 ));
             }
             (
@@ -178,12 +178,9 @@ fn perspective_form<T: Scalar>(proj: &Projection<T>, name: &str, z: &T) -> Resul
         Projection::General { zprp, zvp } => {
             let den = zprp.clone() - z.clone();
             if den.is_zero_value() {
-                return Err(Error::new(
+                return Err(Error::said(
                     format!("points.{name}"),
-                    format!(
-                        "{name} has z = zprp = {}: it lies in the plane of the centre of projection and has no image",
-                        zprp.to_f64()
-                    ),
+                    Msg::ErrCopPlane(name.to_string(), Some(zprp.to_f64().to_string())),
                 ));
             }
             (

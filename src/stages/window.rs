@@ -26,28 +26,16 @@ pub struct Window<T> {
 /// Checks fovy (degrees) ∈ (0°, 180°), aspect > 0 and near > 0.
 pub fn validate<T: Scalar>(fovy_deg: &T, aspect: &T, near: &T) -> Result<()> {
     if !(*fovy_deg > T::zero() && *fovy_deg < T::from_i64(180)) {
-        return Err(Error::new(
+        return Err(Error::said(
             "fovy",
-            format!(
-                "must be between 0° and 180° (exclusive), got {}°",
-                fovy_deg.to_f64()
-            ),
+            Msg::ErrFovy(fovy_deg.to_f64().to_string()),
         ));
     }
     if *aspect <= T::zero() {
-        return Err(Error::new(
-            "aspect",
-            format!("must be positive (width/height), got {}", got(aspect)),
-        ));
+        return Err(Error::said("aspect", Msg::ErrAspect(got(aspect))));
     }
     if *near <= T::zero() {
-        return Err(Error::new(
-            "near",
-            format!(
-                "must be positive (a distance in front of the eye), got {}",
-                got(near)
-            ),
-        ));
+        return Err(Error::said("near", Msg::ErrNear(got(near))));
     }
     Ok(())
 }
@@ -187,17 +175,14 @@ mod tests {
 
     #[test]
     fn a_tiny_positive_number_is_not_reported_as_plain_0() {
+        let en = |e: &Error| crate::report::words::words(&e.message, crate::report::lang::Lang::En);
         let e = validate(&45.0f64, &2.0, &0.0).unwrap_err();
         assert_eq!(e.field, "near");
-        assert!(
-            e.message.contains("below about 5e-324 is 0 too"),
-            "{}",
-            e.message
-        );
+        assert!(en(&e).contains("below about 5e-324 is 0 too"), "{}", en(&e));
         let e = validate(&45.0f32, &0.0, &0.1).unwrap_err();
-        assert!(e.message.contains("at f32 precision"), "{}", e.message);
+        assert!(en(&e).contains("at f32 precision"), "{}", en(&e));
         let e = validate(&45.0f64, &-2.0, &0.1).unwrap_err();
-        assert!(e.message.ends_with("got -2"), "{}", e.message);
+        assert!(en(&e).ends_with("got -2"), "{}", en(&e));
     }
     use crate::stages::trace::NoTrace;
 

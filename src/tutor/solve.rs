@@ -412,16 +412,12 @@ pub fn point_ref<T: Scalar>(
             .map(|(_, p)| p.clone())
             .ok_or_else(|| {
                 let known: Vec<&str> = points.iter().map(|(n, _)| n.as_str()).collect();
-                Error::new(
+                Error::said(
                     field,
-                    if known.is_empty() {
-                        format!("unknown point `{name}`: the problem has no [points]")
-                    } else {
-                        format!(
-                            "unknown point `{name}`; the points are {}",
-                            known.join(", ")
-                        )
-                    },
+                    Msg::ErrUnknownPoint(
+                        name.to_string(),
+                        (!known.is_empty()).then(|| known.join(", ")),
+                    ),
                 )
             }),
     }

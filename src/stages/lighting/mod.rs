@@ -371,12 +371,8 @@ pub struct Shaded<T> {
 /// The unit vector of `v`, recorded as a step; the zero vector is an error
 /// naming `field`.
 pub fn unit<T: Scalar>(name: &str, field: &str, v: &V3<T>, tr: &mut impl Trace) -> Result<V3<T>> {
-    let (u, len) = normalize(v).ok_or_else(|| {
-        Error::new(
-            field,
-            format!("{name} is the zero vector (0, 0, 0): it has no direction, so it cannot be made a unit vector"),
-        )
-    })?;
+    let (u, len) =
+        normalize(v).ok_or_else(|| Error::said(field, Msg::ErrZeroUnit(name.to_string())))?;
     tr.step(|| {
         let s = Step::new(
             Msg::UnitVector(name.to_string()),

@@ -143,8 +143,14 @@ fn list_parts(given: &toml::Value) -> Option<Vec<toml::Value>> {
                 .trim()
                 .trim_start_matches(['(', '['])
                 .trim_end_matches([')', ']']);
-            Some(
+            // `(0,8; 0,6; 0)`: with semicolons the commas are decimal marks.
+            let items: Vec<&str> = if inner.contains(';') {
+                inner.split(';').collect()
+            } else {
                 crate::num::expr::split_top_level(inner)
+            };
+            Some(
+                items
                     .into_iter()
                     .map(|x| toml::Value::String(x.trim().to_string()))
                     .collect(),
