@@ -198,6 +198,10 @@ pub enum Msg {
     FFlat,
     /// 8-bit value.
     FByte,
+    /// Liang–Barsky's t0 and t1.
+    FLiangBarsky,
+    /// Inside the window and between the near and far planes.
+    FInside,
 
     // ---- notes ----
     /// Already a unit vector.

@@ -84,19 +84,19 @@ fn section(m: &Msg, id: bool) -> String {
     match m {
         Msg::SecModeling => p(
             "Step 1: modeling transformation",
-            "Langkah 1: transformasi pemodelan",
+            "Tahap 1: transformasi pemodelan",
         ),
         Msg::SecViewing => p(
             "Step 2: viewing transformation (world → eye coordinates)",
-            "Langkah 2: transformasi pandang (sistem koordinat dunia → kamera)",
+            "Tahap 2: transformasi pandang (sistem koordinat dunia → kamera)",
         ),
         Msg::SecProjection => p(
             "Step 3: projection onto the near plane",
-            "Langkah 3: proyeksi ke bidang dekat",
+            "Tahap 3: proyeksi ke bidang dekat",
         ),
         Msg::SecWindowClip => p(
             "Step 4: window and clipping",
-            "Langkah 4: bidang pandang dan clipping",
+            "Tahap 4: bidang pandang dan clipping",
         ),
         Msg::SecViewport => p(
             "Viewport mapping (window → pixels)",
@@ -316,6 +316,14 @@ fn caption(m: &Msg, id: bool) -> Option<String> {
         Msg::FFlat => p(
             "colour = shade(face normal N, face centre)",
             "warna = shade(normal bidang N, pusat bidang)",
+        ),
+        Msg::FLiangBarsky => p(
+            "t0 = max over entering planes of q/p,  t1 = min over leaving planes of q/p,  visible if t0 ≤ t1",
+            "t0 = maks q/p atas bidang masuk,  t1 = min q/p atas bidang keluar,  terlihat bila t0 ≤ t1",
+        ),
+        Msg::FInside => p(
+            "left ≤ xp ≤ right,  bottom ≤ yp ≤ top,  and −far ≤ z' ≤ −near",
+            "left ≤ xp ≤ right,  bottom ≤ yp ≤ top,  dan −far ≤ z' ≤ −near",
         ),
         Msg::FByte => p(
             "8-bit value = round(255 · clamp(C, 0, 1))",
@@ -672,6 +680,8 @@ mod tests {
             Msg::FDepth,
             Msg::FBarycentric,
             Msg::FFlat,
+            Msg::FLiangBarsky,
+            Msg::FInside,
             Msg::FByte,
             Msg::AlreadyUnit,
             Msg::Saturates,
@@ -788,20 +798,21 @@ mod tests {
             | TermStep(_) | SumOfTerms | Clamp | WhichTriangle | Depth | Barycentric
             | FlatShading | Gouraud | PhongShading | PixelColour | FOutOfRange | FIncidence
             | FNotAdded | FCamMatrix | FViewMatrix | FTrivial | FOutcode | FSegment | FMethods
-            | FProjPlane | FPixelCentre | FEdges | FDepth | FBarycentric | FFlat | FByte
-            | AlreadyUnit | Saturates | InRange | NoTermInModel(..) | TextSetting
-            | SummedInRange | SpecularSkipped | BeyondRange | WithinRange | NoRange | Behind(_)
-            | LocalViewer | NoLocalViewer | ShininessZero | SpecularOff | NoHighlightBehind
-            | SpotIn(_) | BehindCentre | TextH | Orthonormal(_) | TrivialNote(_) | Kept(_)
-            | TouchesPoint | InsidePart | Misses | DefaultView | MaterialD3d | MaterialText
-            | NoTriangle | Nearest | Agree(_) | AlreadyWorld | Inside(..) | UpParallel(_)
-            | BehindWarn(_) | ExpectOne | ExpectList(_) | CountMismatch(..) | Expected(_)
-            | ExpectedNone | ExpectedBool(_) | SeveralAnswers | EmptyAnswer | NoAnswer
-            | Unreadable(_) | NotANumber(..) | Exact | Rounded(_) | RoundedCoarse(..)
-            | SigCoarse(..) | WithinPct(_) | Parts(_) | NotShapeAsked | FollowThrough
-            | Untranslated(_) | At(..) | ErrSamePoint(_) | ErrUpZero | ErrUpParallel(..)
-            | ErrFovy(_) | ErrAspect(_) | ErrNear(_) | ErrCopPlane(..) | ErrUnknownPoint(..)
-            | ErrBoxInverted(..) | ErrCannotRead(..) | ErrZeroUnit(_) => {}
+            | FProjPlane | FLiangBarsky | FInside | FPixelCentre | FEdges | FDepth
+            | FBarycentric | FFlat | FByte | AlreadyUnit | Saturates | InRange
+            | NoTermInModel(..) | TextSetting | SummedInRange | SpecularSkipped | BeyondRange
+            | WithinRange | NoRange | Behind(_) | LocalViewer | NoLocalViewer | ShininessZero
+            | SpecularOff | NoHighlightBehind | SpotIn(_) | BehindCentre | TextH
+            | Orthonormal(_) | TrivialNote(_) | Kept(_) | TouchesPoint | InsidePart | Misses
+            | DefaultView | MaterialD3d | MaterialText | NoTriangle | Nearest | Agree(_)
+            | AlreadyWorld | Inside(..) | UpParallel(_) | BehindWarn(_) | ExpectOne
+            | ExpectList(_) | CountMismatch(..) | Expected(_) | ExpectedNone | ExpectedBool(_)
+            | SeveralAnswers | EmptyAnswer | NoAnswer | Unreadable(_) | NotANumber(..) | Exact
+            | Rounded(_) | RoundedCoarse(..) | SigCoarse(..) | WithinPct(_) | Parts(_)
+            | NotShapeAsked | FollowThrough | Untranslated(_) | At(..) | ErrSamePoint(_)
+            | ErrUpZero | ErrUpParallel(..) | ErrFovy(_) | ErrAspect(_) | ErrNear(_)
+            | ErrCopPlane(..) | ErrUnknownPoint(..) | ErrBoxInverted(..) | ErrCannotRead(..)
+            | ErrZeroUnit(_) => {}
         }
     }
 

@@ -439,7 +439,7 @@ pub fn liang_barsky<T: Scalar>(
         None
     };
     tr.step(|| {
-        let s = Step::new(Msg::LiangBarsky, "t0 = max over entering planes of q/p,  t1 = min over leaving planes of q/p,  visible if t0 ≤ t1")
+        let s = Step::new(Msg::LiangBarsky, Msg::FLiangBarsky)
             .val("t0", Val::num(&t0))
             .val("t1", Val::num(&t1));
         match &result {

@@ -447,18 +447,15 @@ fn point_inside_step<T: Scalar>(
     let in_window = window::inside(w, &q[0], &q[1]);
     let in_depth = e[2] <= -near.clone() && far.is_none_or(|f| e[2] >= -f.clone());
     rec.step(|| {
-        Step::new(
-            Msg::InsideVolume(name.to_string()),
-            "left ≤ xp ≤ right,  bottom ≤ yp ≤ top,  and −far ≤ z' ≤ −near",
-        )
-        .val(format!("{name}''"), Val::vec2(&q[0], &q[1]))
-        .val(format!("z' of {name}'"), Val::num(&e[2]))
-        .res("inside", Val::Bool(in_window && in_depth))
-        .note(match (in_window, in_depth) {
-            (true, true) => Msg::Inside(true, true),
-            (false, w) => Msg::Inside(false, w),
-            (true, false) => Msg::Inside(true, false),
-        })
+        Step::new(Msg::InsideVolume(name.to_string()), Msg::FInside)
+            .val(format!("{name}''"), Val::vec2(&q[0], &q[1]))
+            .val(format!("z' of {name}'"), Val::num(&e[2]))
+            .res("inside", Val::Bool(in_window && in_depth))
+            .note(match (in_window, in_depth) {
+                (true, true) => Msg::Inside(true, true),
+                (false, w) => Msg::Inside(false, w),
+                (true, false) => Msg::Inside(true, false),
+            })
     });
 }
 
