@@ -119,7 +119,7 @@ fn an_error_in_indonesian_names_the_field_as_spelled() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(
         err.trim(),
-        "kesalahan: look: titik mata Peye dan titik acuan Pref adalah titik yang sama (4; 4; 4)"
+        "kesalahan: look: posisi mata Peye dan titik referensi Pref adalah titik yang sama (4; 4; 4)"
     );
     let j = common::json_err(&["--lang", "id", "solve", "problems/errors/fovy-180.toml"]);
     assert_eq!(j["field"], "perspective.fovy");

@@ -501,7 +501,7 @@ fn error(m: &Msg, lang: Lang) -> String {
     match m {
         Msg::ErrSamePoint(p) => f(
             format!("the eye Pe and the look-at point Pr are the same point {p}"),
-            format!("titik mata Peye dan titik acuan Pref adalah titik yang sama {}", n(p)),
+            format!("posisi mata Peye dan titik referensi Pref adalah titik yang sama {}", n(p)),
         ),
         Msg::ErrUpZero => pick(id, "the up vector Vup is the zero vector", "vektor Vup adalah vektor nol"),
         Msg::ErrUpParallel(up, d) => f(
