@@ -21,7 +21,14 @@ pub fn run(a: &GenerateArgs, json: bool, style: &Style) -> Result<String> {
         let j = json!({ "command": "generate", "seed": a.seed, "files": names });
         serde_json::to_string_pretty(&j).unwrap_or_default() + "\n"
     } else {
-        written_summary(&files, a.variants, a.count, &a.topic, a.seed, &a.out)
+        written_summary(
+            &files,
+            a.variants,
+            a.count,
+            &a.topic,
+            a.seed,
+            (&a.out, style.lang),
+        )
     })
 }
 
@@ -115,7 +122,7 @@ fn write_exam(
         put(format!("problem-{:02}.key.toml", i + 1), key_toml(g))?;
     }
     let numbered = (a.variants > 1).then_some(variant);
-    let title = exam_title(&a.topic, a.difficulty, a.seed, numbered);
+    let title = exam_title(&a.topic, a.difficulty, a.seed, numbered, style.lang);
     let doc = match a.format {
         Format::Toml => return Ok(files),
         Format::Json => {
@@ -133,7 +140,10 @@ fn write_exam(
     let ext = if doc == Doc::Markdown { "md" } else { "tex" };
     let (q, k) = sheets(doc, exam, style);
     put(format!("questions.{ext}"), doc.document(&title, &q))?;
-    put(format!("key.{ext}"), doc.document(&key_title(&title), &k))?;
+    put(
+        format!("key.{ext}"),
+        doc.document(&key_title(&title, style.lang), &k),
+    )?;
     Ok(files)
 }
 

@@ -13,21 +13,32 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 /// An exam's title: topics, difficulty, seed and variant.
-pub fn exam_title(topics: &[Topic], diff: Difficulty, seed: u64, variant: Option<u32>) -> String {
+pub fn exam_title(
+    topics: &[Topic],
+    diff: Difficulty,
+    seed: u64,
+    variant: Option<u32>,
+    lang: Lang,
+) -> String {
+    let t = |en, id| crate::report::lang::tr(lang, en, id);
     format!(
-        "grafika exam: {} ({}), seed {}{}",
+        "{}: {} ({}), seed {}{}",
+        t("grafika exam", "ujian grafika"),
         topics_name(topics),
         format!("{diff:?}").to_lowercase(),
         seed,
         variant
-            .map(|v| format!(", variant {v}"))
+            .map(|v| format!(", {} {v}", t("variant", "varian")))
             .unwrap_or_default()
     )
 }
 
 /// The key's title for an exam title.
-pub fn key_title(title: &str) -> String {
-    format!("{title} — answer key")
+pub fn key_title(title: &str, lang: Lang) -> String {
+    format!(
+        "{title} — {}",
+        crate::report::lang::tr(lang, "answer key", "kunci jawaban")
+    )
 }
 
 /// The answers asked for in a problem, with their values.
@@ -43,16 +54,17 @@ pub fn sheets(doc: Doc, exam: &[Generated], st: &Style) -> (String, String) {
     let mut q = String::new();
     let mut k = String::new();
     for (i, g) in exam.iter().enumerate() {
-        let title = &format!("Problem {}: {}", i + 1, g.problem.title);
+        let problem = st.tr("Problem", "Soal");
+        let title = &format!("{problem} {}: {}", i + 1, g.problem.title);
         let statement = g.problem.statement.clone().unwrap_or_default();
         for sheet in [&mut q, &mut k] {
             sheet.push_str(&doc.heading(1, title));
             sheet.push_str(&doc.text(&statement));
             sheet.push_str("\n\n");
         }
-        k.push_str(&doc.heading(2, "Answers"));
+        k.push_str(&doc.heading(2, st.tr("Answers", "Jawaban")));
         k.push_str(&doc.answers(st, &answers(g)));
-        k.push_str(&doc.heading(2, "Worked solution"));
+        k.push_str(&doc.heading(2, st.tr("Worked solution", "Penyelesaian")));
         k.push_str(&doc.steps(&g.report, st));
     }
     (q, k)
@@ -93,23 +105,34 @@ pub fn written_summary(
     count: u32,
     topics: &[Topic],
     seed: u64,
-    out: &Path,
+    out: (&Path, Lang),
 ) -> String {
+    let (out, lang) = out;
     let plural = |n: u32| if n == 1 { "" } else { "s" };
-    let mut s = format!(
-        "wrote {} file{} ({variants} variant{} of {count} {} problem{}, seed {seed}) to {}\n",
-        files.len(),
-        plural(files.len() as u32),
-        plural(variants),
-        topics_name(topics),
-        plural(count),
-        out.display()
-    );
+    let mut s = match lang {
+        Lang::En => format!(
+            "wrote {} file{} ({variants} variant{} of {count} {} problem{}, seed {seed}) to {}\n",
+            files.len(),
+            plural(files.len() as u32),
+            plural(variants),
+            topics_name(topics),
+            plural(count),
+            out.display()
+        ),
+        Lang::Id => format!(
+            "{} berkas ditulis ({variants} varian dari {count} soal {}, seed {seed}) ke {}\n",
+            files.len(),
+            topics_name(topics),
+            out.display()
+        ),
+    };
     for f in files.iter().take(12) {
         let _ = writeln!(s, "  {}", f.display());
     }
     if files.len() > 12 {
-        let _ = writeln!(s, "  … and {} more", files.len() - 12);
+        let more = crate::report::lang::tr(lang, "and", "dan");
+        let more2 = crate::report::lang::tr(lang, "more", "lagi");
+        let _ = writeln!(s, "  … {more} {} {more2}", files.len() - 12);
     }
     s
 }
