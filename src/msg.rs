@@ -338,6 +338,26 @@ pub enum Msg {
     ErrCannotRead(String, String),
     /// A zero vector that should be made a unit vector (name).
     ErrZeroUnit(String),
+    /// Text that is not NAME=X,Y,Z.
+    ErrNamedPoint(String),
+    /// Not a point name.
+    ErrPointName(String),
+    /// A point given twice.
+    ErrPointTwice(String),
+    /// Text that is not NAME=X,Y.
+    ErrNamedPair(String),
+    /// Text that is not WIDTHxHEIGHT.
+    ErrSize(String),
+    /// --cop without --plane.
+    ErrCopNeedsPlane,
+    /// --plane without --cop.
+    ErrPlaneNeedsCop,
+    /// No projection chosen.
+    ErrChooseProjection,
+    /// --point without --viewport.
+    ErrPointNeedsViewport,
+    /// far ≤ near: near, far.
+    ErrFar(String, String),
 
     // ---- warnings ----
     /// Up nearly parallel to the view direction (angle in radians).

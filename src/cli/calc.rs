@@ -6,6 +6,7 @@ use crate::error::{Error, Result};
 use crate::input;
 use crate::input::fields::{Num, Vec3In};
 use crate::input::lights::ShadeIn;
+use crate::msg::Msg;
 use crate::num::Expr;
 use crate::num::Scalar;
 use crate::stages::camera::{self, Camera};
@@ -86,24 +87,9 @@ pub fn project<T: Scalar>(a: &ProjectArgs) -> Result<Report> {
             zvp: input::num("plane", p)?,
         },
         (None, None, None, true) => Projection::Ortho,
-        (None, Some(_), None, false) => {
-            return Err(Error::new(
-                "plane",
-                "--cop needs --plane (the view plane z = ZVP)",
-            ))
-        }
-        (None, None, Some(_), false) => {
-            return Err(Error::new(
-                "cop",
-                "--plane needs --cop (the centre of projection z = ZPRP)",
-            ))
-        }
-        _ => {
-            return Err(Error::new(
-                "d",
-                "choose one projection: --d D, or --cop ZPRP --plane ZVP, or --ortho",
-            ))
-        }
+        (None, Some(_), None, false) => return Err(Error::said("plane", Msg::ErrCopNeedsPlane)),
+        (None, None, Some(_), false) => return Err(Error::said("cop", Msg::ErrPlaneNeedsCop)),
+        _ => return Err(Error::said("d", Msg::ErrChooseProjection)),
     };
     proj.validate()?;
     let pts = input::points3::<T>("point", &a.points)?;
@@ -142,20 +128,13 @@ pub fn window<T: Scalar>(a: &WindowArgs) -> Result<Report> {
         .transpose()?;
     let pts = input::points2::<T>("point", &a.points)?;
     if !pts.is_empty() && vp.is_none() {
-        return Err(Error::new(
-            "viewport",
-            "--point needs --viewport WxH to map points to pixels",
-        ));
+        return Err(Error::said("viewport", Msg::ErrPointNeedsViewport));
     }
     if let Some(f) = &far {
         if *f <= near {
-            return Err(Error::new(
+            return Err(Error::said(
                 "far",
-                format!(
-                    "must be greater than near = {}, got {}",
-                    near.to_f64(),
-                    f.to_f64()
-                ),
+                Msg::ErrFar(near.to_f64().to_string(), f.to_f64().to_string()),
             ));
         }
     }

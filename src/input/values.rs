@@ -2,6 +2,7 @@
 //! every failure names the field.
 
 use crate::error::{Error, Result};
+use crate::msg::Msg;
 use crate::num::vec::V3;
 use crate::num::{parse_expr, parse_vec3, Angle, Expr, Scalar};
 use serde_json::{json, Value};
@@ -48,22 +49,16 @@ pub fn angle_deg<T: Scalar>(field: &str, text: &str) -> Result<T> {
 
 /// `NAME=rest`, with a name of letters, digits, `_` or `'`.
 pub fn named<'a>(field: &str, text: &'a str) -> Result<(&'a str, &'a str)> {
-    let (name, rest) = text.split_once('=').ok_or_else(|| {
-        Error::new(
-            field,
-            format!("`{text}`: expected NAME=X,Y,Z, e.g. A=0,0,0"),
-        )
-    })?;
+    let (name, rest) = text
+        .split_once('=')
+        .ok_or_else(|| Error::said(field, Msg::ErrNamedPoint(text.to_string())))?;
     let name = name.trim();
     if name.is_empty()
         || !name
             .chars()
             .all(|c| c.is_alphanumeric() || c == '_' || c == '\'')
     {
-        return Err(Error::new(
-            field,
-            format!("`{name}` is not a point name (letters, digits, _ and ')"),
-        ));
+        return Err(Error::said(field, Msg::ErrPointName(name.to_string())));
     }
     Ok((name, rest))
 }
@@ -74,7 +69,7 @@ pub fn points3<T: Scalar>(field: &str, items: &[String]) -> Result<Vec<(String, 
     for it in items {
         let (name, rest) = named(field, it)?;
         if out.iter().any(|(n, _)| n == name) {
-            return Err(Error::new(field, format!("point {name} is given twice")));
+            return Err(Error::said(field, Msg::ErrPointTwice(name.to_string())));
         }
         out.push((name.to_string(), vec3(&format!("{field} {name}"), rest)?));
     }
@@ -88,10 +83,7 @@ pub fn points2<T: Scalar>(field: &str, items: &[String]) -> Result<Vec<(String, 
         let (name, rest) = named(field, it)?;
         let parts = crate::num::expr::split_top_level(crate::num::expr::strip_outer(rest));
         if parts.len() != 2 {
-            return Err(Error::new(
-                field,
-                format!("`{it}`: expected NAME=X,Y (two numbers)"),
-            ));
+            return Err(Error::said(field, Msg::ErrNamedPair(it.to_string())));
         }
         let f = format!("{field} {name}");
         out.push((name.to_string(), (num(&f, parts[0])?, num(&f, parts[1])?)));
@@ -101,12 +93,9 @@ pub fn points2<T: Scalar>(field: &str, items: &[String]) -> Result<Vec<(String, 
 
 /// `WxH` (a viewport size in pixels).
 pub fn size<T: Scalar>(field: &str, text: &str) -> Result<(T, T)> {
-    let (w, h) = text.split_once(['x', 'X', '×']).ok_or_else(|| {
-        Error::new(
-            field,
-            format!("`{text}`: expected WIDTHxHEIGHT, e.g. 200x100"),
-        )
-    })?;
+    let (w, h) = text
+        .split_once(['x', 'X', '×'])
+        .ok_or_else(|| Error::said(field, Msg::ErrSize(text.to_string())))?;
     Ok((num(field, w)?, num(field, h)?))
 }
 

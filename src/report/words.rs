@@ -49,6 +49,16 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         | Msg::ErrBoxInverted(..)
         | Msg::ErrCannotRead(..)
         | Msg::ErrZeroUnit(_) => error(m, lang),
+        Msg::ErrNamedPoint(_)
+        | Msg::ErrPointName(_)
+        | Msg::ErrPointTwice(_)
+        | Msg::ErrNamedPair(_)
+        | Msg::ErrSize(_)
+        | Msg::ErrCopNeedsPlane
+        | Msg::ErrPlaneNeedsCop
+        | Msg::ErrChooseProjection
+        | Msg::ErrPointNeedsViewport
+        | Msg::ErrFar(..) => flag_error(m, id),
         Msg::Parts(parts) => parts
             .iter()
             .map(|(l, n)| format!("{l}: {}", words(n, lang)))
@@ -552,6 +562,62 @@ fn error(m: &Msg, lang: Lang) -> String {
     }
 }
 
+/// Errors in the calculator's flags.
+fn flag_error(m: &Msg, id: bool) -> String {
+    let f = |en: String, ind: String| if id { ind } else { en };
+    match m {
+        Msg::ErrNamedPoint(t) => f(
+            format!("`{t}`: expected NAME=X,Y,Z, e.g. A=0,0,0"),
+            format!("`{t}`: seharusnya NAMA=X,Y,Z, misalnya A=0,0,0"),
+        ),
+        Msg::ErrPointName(t) => f(
+            format!("`{t}` is not a point name (letters, digits, _ and ')"),
+            format!("`{t}` bukan nama titik (huruf, angka, _ dan ')"),
+        ),
+        Msg::ErrPointTwice(t) => f(
+            format!("point {t} is given twice"),
+            format!("titik {t} diberikan dua kali"),
+        ),
+        Msg::ErrNamedPair(t) => f(
+            format!("`{t}`: expected NAME=X,Y (two numbers)"),
+            format!("`{t}`: seharusnya NAMA=X,Y (dua bilangan)"),
+        ),
+        Msg::ErrSize(t) => f(
+            format!("`{t}`: expected WIDTHxHEIGHT, e.g. 200x100"),
+            format!("`{t}`: seharusnya LEBARxTINGGI, misalnya 200x100"),
+        ),
+        Msg::ErrCopNeedsPlane => pick(
+            id,
+            "--cop needs --plane (the view plane z = ZVP)",
+            "--cop memerlukan --plane (bidang pandang z = ZVP)",
+        ),
+        Msg::ErrPlaneNeedsCop => pick(
+            id,
+            "--plane needs --cop (the centre of projection z = ZPRP)",
+            "--plane memerlukan --cop (pusat proyeksi z = ZPRP)",
+        ),
+        Msg::ErrChooseProjection => pick(
+            id,
+            "choose one projection: --d D, or --cop ZPRP --plane ZVP, or --ortho",
+            "pilih satu proyeksi: --d D, atau --cop ZPRP --plane ZVP, atau --ortho",
+        ),
+        Msg::ErrPointNeedsViewport => pick(
+            id,
+            "--point needs --viewport WxH to map points to pixels",
+            "--point memerlukan --viewport WxH untuk memetakan titik ke piksel",
+        ),
+        Msg::ErrFar(near, far) => f(
+            format!("must be greater than near = {near}, got {far}"),
+            format!(
+                "harus lebih besar daripada near = {}, diberikan {}",
+                near.replace('.', ","),
+                far.replace('.', ",")
+            ),
+        ),
+        _ => String::new(),
+    }
+}
+
 /// How one answer was judged (`check`).
 fn check_note(m: &Msg, id: bool) -> Option<String> {
     let p = |en: &str, ind: &str| Some(pick(id, en, ind));
@@ -753,6 +819,16 @@ mod tests {
             Msg::ErrBoxInverted("y".into(), "5".into(), "4".into()),
             Msg::ErrCannotRead("p.toml".into(), "os error 2".into()),
             Msg::ErrZeroUnit(s()),
+            Msg::ErrNamedPoint(s()),
+            Msg::ErrPointName(s()),
+            Msg::ErrPointTwice(s()),
+            Msg::ErrNamedPair(s()),
+            Msg::ErrSize(s()),
+            Msg::ErrCopNeedsPlane,
+            Msg::ErrPlaneNeedsCop,
+            Msg::ErrChooseProjection,
+            Msg::ErrPointNeedsViewport,
+            Msg::ErrFar("1".into(), "0.5".into()),
         ];
         for i in 0..6 {
             v.push(Msg::Intersection(i, "x = xmin".into()));
@@ -788,31 +864,148 @@ mod tests {
     fn listed(m: &Msg) {
         use Msg::*;
         match m {
-            Math(_) | SecModeling | SecViewing | SecProjection | SecWindowClip | SecViewport
-            | SecLineClip(_) | SecLighting | SecPixel(..) | SecLightFace | SecLightVertex(_)
-            | SecLightPixel | CamAxisN | CamAxisU | CamAxisV | CamCheck | CamMatrix
-            | ViewMatrix | EyeCoords(_) | OrthoProj(_) | PerspProj(_) | WindowTop(_)
-            | WindowEdges(_) | ViewportOf(_) | OutcodeOf(_) | TrivialTests | Intersection(..)
-            | ClippedSegment | LiangBarsky | MethodsAgree | NothingToDo | ProjPlane
-            | InsideVolume(_) | UnitVector(_) | ViewerLocal | Material | Light(..)
-            | TermStep(_) | SumOfTerms | Clamp | WhichTriangle | Depth | Barycentric
-            | FlatShading | Gouraud | PhongShading | PixelColour | FOutOfRange | FIncidence
-            | FNotAdded | FCamMatrix | FViewMatrix | FTrivial | FOutcode | FSegment | FMethods
-            | FProjPlane | FLiangBarsky | FInside | FPixelCentre | FEdges | FDepth
-            | FBarycentric | FFlat | FByte | AlreadyUnit | Saturates | InRange
-            | NoTermInModel(..) | TextSetting | SummedInRange | SpecularSkipped | BeyondRange
-            | WithinRange | NoRange | Behind(_) | LocalViewer | NoLocalViewer | ShininessZero
-            | SpecularOff | NoHighlightBehind | SpotIn(_) | BehindCentre | TextH
-            | Orthonormal(_) | TrivialNote(_) | Kept(_) | TouchesPoint | InsidePart | Misses
-            | DefaultView | MaterialD3d | MaterialText | NoTriangle | Nearest | Agree(_)
-            | AlreadyWorld | Inside(..) | UpParallel(_) | BehindWarn(_) | ExpectOne
-            | ExpectList(_) | CountMismatch(..) | Expected(_) | ExpectedNone | ExpectedBool(_)
-            | SeveralAnswers | EmptyAnswer | NoAnswer | Unreadable(_) | NotANumber(..) | Exact
-            | Rounded(_) | RoundedCoarse(..) | SigCoarse(..) | WithinPct(_) | Parts(_)
-            | NotShapeAsked | FollowThrough | Untranslated(_) | At(..) | ErrSamePoint(_)
-            | ErrUpZero | ErrUpParallel(..) | ErrFovy(_) | ErrAspect(_) | ErrNear(_)
-            | ErrCopPlane(..) | ErrUnknownPoint(..) | ErrBoxInverted(..) | ErrCannotRead(..)
-            | ErrZeroUnit(_) => {}
+            Math(_)
+            | SecModeling
+            | SecViewing
+            | SecProjection
+            | SecWindowClip
+            | SecViewport
+            | SecLineClip(_)
+            | SecLighting
+            | SecPixel(..)
+            | SecLightFace
+            | SecLightVertex(_)
+            | SecLightPixel
+            | CamAxisN
+            | CamAxisU
+            | CamAxisV
+            | CamCheck
+            | CamMatrix
+            | ViewMatrix
+            | EyeCoords(_)
+            | OrthoProj(_)
+            | PerspProj(_)
+            | WindowTop(_)
+            | WindowEdges(_)
+            | ViewportOf(_)
+            | OutcodeOf(_)
+            | TrivialTests
+            | Intersection(..)
+            | ClippedSegment
+            | LiangBarsky
+            | MethodsAgree
+            | NothingToDo
+            | ProjPlane
+            | InsideVolume(_)
+            | UnitVector(_)
+            | ViewerLocal
+            | Material
+            | Light(..)
+            | TermStep(_)
+            | SumOfTerms
+            | Clamp
+            | WhichTriangle
+            | Depth
+            | Barycentric
+            | FlatShading
+            | Gouraud
+            | PhongShading
+            | PixelColour
+            | FOutOfRange
+            | FIncidence
+            | FNotAdded
+            | FCamMatrix
+            | FViewMatrix
+            | FTrivial
+            | FOutcode
+            | FSegment
+            | FMethods
+            | FProjPlane
+            | FLiangBarsky
+            | FInside
+            | FPixelCentre
+            | FEdges
+            | FDepth
+            | FBarycentric
+            | FFlat
+            | FByte
+            | AlreadyUnit
+            | Saturates
+            | InRange
+            | NoTermInModel(..)
+            | TextSetting
+            | SummedInRange
+            | SpecularSkipped
+            | BeyondRange
+            | WithinRange
+            | NoRange
+            | Behind(_)
+            | LocalViewer
+            | NoLocalViewer
+            | ShininessZero
+            | SpecularOff
+            | NoHighlightBehind
+            | SpotIn(_)
+            | BehindCentre
+            | TextH
+            | Orthonormal(_)
+            | TrivialNote(_)
+            | Kept(_)
+            | TouchesPoint
+            | InsidePart
+            | Misses
+            | DefaultView
+            | MaterialD3d
+            | MaterialText
+            | NoTriangle
+            | Nearest
+            | Agree(_)
+            | AlreadyWorld
+            | Inside(..)
+            | UpParallel(_)
+            | BehindWarn(_)
+            | ExpectOne
+            | ExpectList(_)
+            | CountMismatch(..)
+            | Expected(_)
+            | ExpectedNone
+            | ExpectedBool(_)
+            | SeveralAnswers
+            | EmptyAnswer
+            | NoAnswer
+            | Unreadable(_)
+            | NotANumber(..)
+            | Exact
+            | Rounded(_)
+            | RoundedCoarse(..)
+            | SigCoarse(..)
+            | WithinPct(_)
+            | Parts(_)
+            | NotShapeAsked
+            | FollowThrough
+            | Untranslated(_)
+            | At(..)
+            | ErrSamePoint(_)
+            | ErrUpZero
+            | ErrUpParallel(..)
+            | ErrFovy(_)
+            | ErrAspect(_)
+            | ErrNear(_)
+            | ErrCopPlane(..)
+            | ErrUnknownPoint(..)
+            | ErrBoxInverted(..)
+            | ErrCannotRead(..)
+            | ErrZeroUnit(_)
+            | ErrNamedPoint(_)
+            | ErrPointName(_)
+            | ErrPointTwice(_)
+            | ErrNamedPair(_)
+            | ErrSize(_)
+            | ErrCopNeedsPlane
+            | ErrPlaneNeedsCop
+            | ErrChooseProjection
+            | ErrPointNeedsViewport
+            | ErrFar(..) => {}
         }
     }
 
