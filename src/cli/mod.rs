@@ -165,7 +165,7 @@ fn bench(quick: bool, cases: Option<u16>, json: bool, lang: Lang) -> String {
         let j = crate::report::bench::to_json(&inp, &rows);
         serde_json::to_string_pretty(&j).unwrap_or_default() + "\n"
     } else {
-        crate::report::bench::table(&inp, &rows)
+        crate::report::bench::table(&inp, &rows, lang)
     }
 }
 

@@ -41,18 +41,19 @@ pub fn fmt_ulps(x: f64) -> String {
 }
 
 /// The table.
-pub fn table(inp: &Inputs, rows: &[Row]) -> String {
+pub fn table(inp: &Inputs, rows: &[Row], lang: crate::report::lang::Lang) -> String {
+    let tr = |en, id| crate::report::lang::tr(lang, en, id);
     let mut t = Table::new();
     t.load_preset(presets::UTF8_FULL_CONDENSED);
     t.set_header(vec![
-        "stage",
-        "precision",
-        "cases",
-        "time/op (median)",
-        "max ulps (int ≤ 2^20)",
-        "median ulps (int ≤ 2^20)",
-        "max ulps (1e-30…1e30)",
-        "target ≤ 4 ulps",
+        tr("stage", "tahap"),
+        tr("precision", "presisi"),
+        tr("cases", "kasus"),
+        tr("time/op (median)", "waktu/operasi (median)"),
+        tr("max ulps (int ≤ 2^20)", "ulps maks (bulat ≤ 2^20)"),
+        tr("median ulps (int ≤ 2^20)", "ulps median (bulat ≤ 2^20)"),
+        tr("max ulps (1e-30…1e30)", "ulps maks (1e-30…1e30)"),
+        tr("target ≤ 4 ulps", "target ≤ 4 ulps"),
     ]);
     for r in rows {
         let right = |s: String| Cell::new(s).set_alignment(CellAlignment::Right);
@@ -61,13 +62,13 @@ pub fn table(inp: &Inputs, rows: &[Row]) -> String {
         let exact = r.precision == Precision::Exact;
         let dash = || right("—".into());
         let verdict = if exact {
-            "exact".to_string()
+            tr("exact", "eksak")
         } else if !r.stage.has_target() {
-            "(no target)".to_string()
+            tr("(no target)", "(tanpa target)")
         } else if tmax <= 4.0 && r.errors.target_disagreements == 0 {
-            "met".to_string()
+            tr("met", "tercapai")
         } else {
-            "NOT met".to_string()
+            tr("NOT met", "TIDAK tercapai")
         };
         t.add_row(vec![
             Cell::new(r.stage.name()),
@@ -82,16 +83,25 @@ pub fn table(inp: &Inputs, rows: &[Row]) -> String {
     }
     let mut out = t.to_string();
     out.push('\n');
-    out.push_str(
+    out.push_str(tr(
         "ulps: of the exact value (of 1 for the unit vectors u, v, n), at the row's precision;\n\
          the exact path's results are the reference (correctly rounded to f64 first).\n",
-    );
+        "ulps: dari nilai eksak (dari 1 untuk vektor satuan u, v, n), pada presisi barisnya;\n\
+         hasil jalur eksak adalah acuannya (dibulatkan benar ke f64 lebih dulu).\n",
+    ));
     let dis: usize = rows.iter().map(|r| r.errors.disagreements).sum();
     let unref: usize = rows.iter().map(|r| r.errors.unreferenced).sum();
-    out.push_str(&format!(
-        "cases where a float run failed but the exact one did not, or the reverse (an overflow at f32 is an error): {dis}\n\
-         components without an exact reference (a square root `Real` cannot factor; not counted): {unref}\n"
-    ));
+    let (a, b) = (
+        tr(
+            "cases where a float run failed but the exact one did not, or the reverse (an overflow at f32 is an error)",
+            "kasus ketika jalur float gagal tetapi jalur eksak tidak, atau sebaliknya (overflow pada f32 adalah kesalahan)",
+        ),
+        tr(
+            "components without an exact reference (a square root `Real` cannot factor; not counted)",
+            "komponen tanpa acuan eksak (akar kuadrat yang tidak dapat difaktorkan `Real`; tidak dihitung)",
+        ),
+    );
+    out.push_str(&format!("{a}: {dis}\n{b}: {unref}\n"));
     out
 }
 
