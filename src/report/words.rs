@@ -368,7 +368,7 @@ fn note(m: &Msg, id: bool) -> Option<String> {
         ),
         Msg::SpecularSkipped => p(
             "the specular term is skipped (ks = 0 or --specular off)",
-            "komponen specular dilewati (ksp = 0 atau --specular off)",
+            "komponen specular dilewati (ks = 0 atau --specular off)",
         ),
         Msg::BeyondRange => p(
             "beyond its range a light adds nothing, not even ambient",
@@ -398,7 +398,7 @@ fn note(m: &Msg, id: bool) -> Option<String> {
         ),
         Msg::SpecularOff => p(
             "the specular term is off for this model / setting (ks = 0, --specular off, or a model without it)",
-            "komponen specular tidak aktif untuk model / pengaturan ini (ksp = 0, --specular off, atau model tanpa specular)",
+            "komponen specular tidak aktif untuk model / pengaturan ini (ks = 0, --specular off, atau model tanpa specular)",
         ),
         Msg::NoHighlightBehind => p(
             "cos α ≤ 0 and --specular-requires-lit: no highlight from a light behind the surface",
@@ -461,11 +461,11 @@ fn note(m: &Msg, id: bool) -> Option<String> {
         ),
         Msg::MaterialD3d => p(
             "Direct3D material: its colors carry the coefficients, so ka = kd = ks = 1",
-            "material Direct3D: warnanya sudah memuat koefisien, jadi ka = kd = ksp = 1",
+            "material Direct3D: warnanya sudah memuat koefisien, jadi ka = kd = ks = 1",
         ),
         Msg::MaterialText => p(
             "the text's constants unless given: ka = 0.4, kd = 0.6, ks = 0.7, n = 4, white specular",
-            "konstanta dari teks bila tidak diberikan: ka = 0,4, kd = 0,6, ksp = 0,7, n = 4, specular putih (Cwhite)",
+            "konstanta dari teks bila tidak diberikan: ka = 0,4, kd = 0,6, ks = 0,7 (ksp dalam teks), n = 4, specular putih (Cwhite)",
         ),
         Msg::NoTriangle => p(
             "no triangle covers the pixel centre: it keeps the background colour",
