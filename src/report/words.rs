@@ -416,6 +416,14 @@ fn note(m: &Msg, id: bool) -> Option<String> {
             "in the penumbra: between the cones",
             "di penumbra: di antara kedua kerucut",
         ),
+        _ => note_geometry(m, id),
+    }
+}
+
+/// Notes on the camera, projection, window, clipping and rendering steps.
+fn note_geometry(m: &Msg, id: bool) -> Option<String> {
+    let p = |en: &str, ind: &str| Some(pick(id, en, ind));
+    match m {
         Msg::BehindCentre => p(
             "behind the centre of projection: projected, but inverted and not visible",
             "di belakang pusat proyeksi: tetap diproyeksikan, tetapi terbalik dan tidak terlihat",
