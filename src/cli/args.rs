@@ -192,6 +192,9 @@ pub struct ClipArgs {
     /// Segment end P1.
     #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
     pub to: String,
+    /// Also draw the figure (box, segment, intersections) into this new SVG file.
+    #[arg(long, value_name = "FILE.svg")]
+    pub figure: Option<std::path::PathBuf>,
 }
 
 /// On or off (`--specular off`).

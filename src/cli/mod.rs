@@ -108,7 +108,10 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
         Command::Check(a) => check::run(a, json, &style),
         Command::Generate(a) => generate::run(a, json, &style).map(|t| (t, 0)),
         Command::Practice(a) => practice::run(a, json, &style).map(|()| (String::new(), 0)),
-        _ => run(&cli).map(|report| (report_text(&report, json, &style), 0)),
+        _ => run(&cli).and_then(|report| {
+            write_figure(&cli.command, &report, &style)?;
+            Ok((report_text(&report, json, &style), 0))
+        }),
     };
     match printed {
         Ok((text, status)) => {
@@ -117,6 +120,39 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
         }
         Err(e) => report_error(&e, json, style.lang),
     }
+}
+
+/// `--figure FILE.svg`: the report's figure as a new SVG file (an existing
+/// file is never overwritten).
+fn write_figure(cmd: &Command, report: &Report, style: &Style) -> Result<()> {
+    use crate::report::figure::{builders::figure_of, svg::to_svg};
+    use std::io::Write;
+    let path = match cmd {
+        Command::Clip(a) => a.figure.as_ref(),
+        _ => None,
+    };
+    let (Some(path), Some(fig)) = (path, figure_of(report, style)) else {
+        return Ok(());
+    };
+    let fail = |e: std::io::Error| {
+        let msg = if e.kind() == std::io::ErrorKind::AlreadyExists {
+            crate::report::lang::tr(
+                style.lang,
+                "exists; remove it or choose another name",
+                "sudah ada; hapus atau pilih nama lain",
+            )
+            .to_string()
+        } else {
+            e.to_string()
+        };
+        Error::new("figure", format!("{}: {msg}", path.display()))
+    };
+    let mut f = std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(path)
+        .map_err(fail)?;
+    f.write_all(to_svg(&fig).as_bytes()).map_err(fail)
 }
 
 /// How numbers and words are written: `--digits`, exact or not, `--lang`
