@@ -65,15 +65,11 @@ fn clip_solid_part_ends_at_the_clipped_points() {
         })
         .collect();
     assert!(
-        labels
-            .iter()
-            .any(|l| *l == "left: t = 1/3 ≈ 0.333333, outcode 000000"),
+        labels.contains(&"left: t = 1/3 ≈ 0.333333, outcode 000000"),
         "{labels:?}"
     );
     assert!(
-        labels
-            .iter()
-            .any(|l| *l == "right: t = 2/3 ≈ 0.666667, outcode 000000"),
+        labels.contains(&"right: t = 2/3 ≈ 0.666667, outcode 000000"),
         "{labels:?}"
     );
 }

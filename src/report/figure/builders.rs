@@ -161,7 +161,7 @@ fn tried_marks(plane: &str, v: &Val, style: &Style) -> Vec<Item> {
         Item::Label {
             at,
             text: format!(
-                "{plane}: t = {}, {}",
+                "{plane}: t = {}, outcode {}",
                 style.val_inline(t),
                 style.val_inline(code)
             ),
