@@ -42,95 +42,109 @@ pub(crate) fn judge(
             Some(t) => judge_number(&t, e, s, carry),
             None => Judged::new(Verdict::Unparseable, "unparseable", Msg::ExpectOne),
         },
-        Val::List(items) => {
-            let Some(parts) = list_parts(given) else {
-                return Judged::new(
-                    Verdict::Unparseable,
-                    "unparseable",
-                    Msg::ExpectList(items.len()),
-                );
-            };
-            // A projected point may be given as (xp, yp): zp = d is the plane.
-            let prefix_ok = key.starts_with("project.") && parts.len() == items.len() - 1;
-            if parts.len() != items.len() && !prefix_ok {
-                if let Some(junk) = parts
-                    .iter()
-                    .filter_map(scalar_text)
-                    .find(|t| parse_expr(&t.trim().replace(',', ".")).is_err())
-                {
-                    return Judged::new(
-                        Verdict::Unparseable,
-                        "unparseable",
-                        Msg::NotANumber(junk.trim().to_string(), items.len()),
-                    );
-                }
-                return Judged::new(
-                    Verdict::Wrong,
-                    "wrong",
-                    Msg::CountMismatch(items.len(), parts.len()),
-                );
-            }
-            let nested = items.iter().any(|x| matches!(x, Val::List(_)));
-            let label = |i: usize| {
-                if nested {
-                    format!("point {}", i + 1)
-                } else if items.len() <= 3 {
-                    ["x", "y", "z"][i].to_string()
-                } else {
-                    format!("component {}", i + 1)
-                }
-            };
-            combine(
-                parts
-                    .iter()
-                    .zip(items)
-                    .map(|(g, e)| judge(g, e, s, key, carry))
-                    .collect(),
-                label,
+        Val::List(items) => judge_list(given, items, s, key, carry),
+        Val::Text(t) => judge_text(given, t),
+        Val::Null => judge_none(given),
+        Val::Bool(b) => judge_bool(given, *b),
+        Val::Map(_) => Judged::new(Verdict::Unparseable, "unparseable", Msg::SeveralAnswers),
+    }
+}
+
+/// A list answer (a point, a segment): each component judged, the worst
+/// verdict kept; a projected point may leave out zp.
+fn judge_list(given: &toml::Value, items: &[Val], s: &Settings, key: &str, carry: bool) -> Judged {
+    let Some(parts) = list_parts(given) else {
+        return Judged::new(
+            Verdict::Unparseable,
+            "unparseable",
+            Msg::ExpectList(items.len()),
+        );
+    };
+    // A projected point may be given as (xp, yp): zp = d is the plane.
+    let prefix_ok = key.starts_with("project.") && parts.len() == items.len() - 1;
+    if parts.len() != items.len() && !prefix_ok {
+        if let Some(junk) = parts
+            .iter()
+            .filter_map(scalar_text)
+            .find(|t| parse_expr(&t.trim().replace(',', ".")).is_err())
+        {
+            return Judged::new(
+                Verdict::Unparseable,
+                "unparseable",
+                Msg::NotANumber(junk.trim().to_string(), items.len()),
+            );
+        }
+        return Judged::new(
+            Verdict::Wrong,
+            "wrong",
+            Msg::CountMismatch(items.len(), parts.len()),
+        );
+    }
+    let nested = items.iter().any(|x| matches!(x, Val::List(_)));
+    let label = |i: usize| {
+        if nested {
+            format!("point {}", i + 1)
+        } else if items.len() <= 3 {
+            ["x", "y", "z"][i].to_string()
+        } else {
+            format!("component {}", i + 1)
+        }
+    };
+    combine(
+        parts
+            .iter()
+            .zip(items)
+            .map(|(g, e)| judge(g, e, s, key, carry))
+            .collect(),
+        label,
+    )
+}
+
+/// A text answer: an outcode (a short binary number is padded on the left)
+/// or a word such as a status, in any case.
+fn judge_text(given: &toml::Value, t: &str) -> Judged {
+    let g = scalar_text(given).unwrap_or_default();
+    let g = g.trim();
+    let same = if t.len() == 6 && t.chars().all(|c| c == '0' || c == '1') {
+        // an outcode; a short binary number is padded on the left
+        g.len() <= 6 && g.chars().all(|c| c == '0' || c == '1') && format!("{g:0>6}") == *t
+    } else {
+        g.eq_ignore_ascii_case(t)
+    };
+    if same {
+        Judged::new(Verdict::Correct, "correct.exact", Msg::default())
+    } else {
+        Judged::new(Verdict::Wrong, "wrong", Msg::Expected(t.to_string()))
+    }
+}
+
+/// The answer to "none" (a rejected segment): empty, `none`, `null` or `rejected`.
+fn judge_none(given: &toml::Value) -> Judged {
+    let empty = match given {
+        toml::Value::Array(a) => a.is_empty(),
+        toml::Value::String(s) => {
+            matches!(
+                s.trim().to_lowercase().as_str(),
+                "" | "none" | "null" | "rejected"
             )
         }
-        Val::Text(t) => {
-            let g = scalar_text(given).unwrap_or_default();
-            let g = g.trim();
-            let same = if t.len() == 6 && t.chars().all(|c| c == '0' || c == '1') {
-                // an outcode; a short binary number is padded on the left
-                g.len() <= 6 && g.chars().all(|c| c == '0' || c == '1') && format!("{g:0>6}") == *t
-            } else {
-                g.eq_ignore_ascii_case(t)
-            };
-            if same {
-                Judged::new(Verdict::Correct, "correct.exact", Msg::default())
-            } else {
-                Judged::new(Verdict::Wrong, "wrong", Msg::Expected(t.to_string()))
-            }
-        }
-        Val::Null => {
-            let empty = match given {
-                toml::Value::Array(a) => a.is_empty(),
-                toml::Value::String(s) => {
-                    matches!(
-                        s.trim().to_lowercase().as_str(),
-                        "" | "none" | "null" | "rejected"
-                    )
-                }
-                _ => false,
-            };
-            if empty {
-                Judged::new(Verdict::Correct, "correct.exact", Msg::default())
-            } else {
-                Judged::new(Verdict::Wrong, "wrong", Msg::ExpectedNone)
-            }
-        }
-        Val::Bool(b) => {
-            let g = scalar_text(given).unwrap_or_default().to_lowercase();
-            let gb = matches!(g.as_str(), "true" | "yes" | "1");
-            if gb == *b {
-                Judged::new(Verdict::Correct, "correct.exact", Msg::default())
-            } else {
-                Judged::new(Verdict::Wrong, "wrong", Msg::ExpectedBool(*b))
-            }
-        }
-        Val::Map(_) => Judged::new(Verdict::Unparseable, "unparseable", Msg::SeveralAnswers),
+        _ => false,
+    };
+    if empty {
+        Judged::new(Verdict::Correct, "correct.exact", Msg::default())
+    } else {
+        Judged::new(Verdict::Wrong, "wrong", Msg::ExpectedNone)
+    }
+}
+
+/// A yes/no answer.
+fn judge_bool(given: &toml::Value, b: bool) -> Judged {
+    let g = scalar_text(given).unwrap_or_default().to_lowercase();
+    let gb = matches!(g.as_str(), "true" | "yes" | "1");
+    if gb == b {
+        Judged::new(Verdict::Correct, "correct.exact", Msg::default())
+    } else {
+        Judged::new(Verdict::Wrong, "wrong", Msg::ExpectedBool(b))
     }
 }
 
