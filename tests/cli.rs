@@ -709,3 +709,55 @@ fn solve_reads_the_problem_from_standard_input() {
     let from_file = json_ok(&["solve", "problems/text-camera.toml"]);
     assert_eq!(from_stdin["result"], from_file["result"]);
 }
+
+/// Issue 18: shell completions cover every subcommand and flag.
+#[test]
+fn completions_for_bash_name_every_subcommand_and_flag() {
+    let out = grafika().args(["completions", "bash"]).output().unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    for word in [
+        "basis",
+        "view",
+        "project",
+        "window",
+        "clip",
+        "shade",
+        "solve",
+        "check",
+        "practice",
+        "generate",
+        "render",
+        "bench",
+        "--precision",
+        "--lang",
+        "--explain-pixel",
+        "--follow-through",
+    ] {
+        assert!(text.contains(word), "bash completion lacks {word}");
+    }
+    for shell in ["zsh", "fish", "elvish", "powershell"] {
+        grafika().args(["completions", shell]).assert().success();
+    }
+}
+
+/// Issue 18: a man page in roff, naming the program and its commands.
+#[test]
+fn man_page_is_roff_with_the_commands() {
+    let out = grafika().arg("man").output().unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains(".TH grafika 1"), "no title header");
+    for cmd in ["solve", "check", "practice", "generate", "render"] {
+        assert!(text.contains(cmd), "man page lacks {cmd}");
+    }
+}
+
+/// Issue 18: an unknown shell is a one-line error, exit 2.
+#[test]
+fn completions_for_an_unknown_shell_is_an_error() {
+    let out = grafika().args(["completions", "cmd.exe"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+}

@@ -92,6 +92,17 @@ pub enum Command {
         #[arg(long, value_parser = clap::value_parser!(u16).range(2..=5000))]
         cases: Option<u16>,
     },
+    /// Shell completions for bash, zsh, fish, elvish or PowerShell, on standard output.
+    #[command(
+        after_help = "Examples / Contoh:\n  grafika completions bash > ~/.local/share/bash-completion/completions/grafika\n  grafika completions zsh > ~/.zfunc/_grafika"
+    )]
+    Completions {
+        /// The shell.
+        shell: clap_complete::Shell,
+    },
+    /// The manual page (roff) on standard output.
+    #[command(after_help = "Examples / Contoh:\n  grafika man > grafika.1 && man ./grafika.1")]
+    Man,
     /// A whole problem from a TOML file.
     #[command(
         after_help = "Examples / Contoh:\n  grafika solve problems/text-triangle.toml\n  grafika solve - --precision f64 < problems/text-camera.toml"

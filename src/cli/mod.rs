@@ -55,12 +55,15 @@ fn run_unchecked(cli: &Cli) -> Result<Report> {
         Command::Clip(a) => at_precision!(p, clip(a)),
         Command::Shade(a) => at_precision!(p, shade(a)),
         Command::Solve { file } => at_precision!(p, solve(file)),
-        Command::Check(_) | Command::Generate(_) | Command::Bench { .. } | Command::Practice(_) => {
-            Err(Error::new(
-                "command",
-                "check, generate, bench and practice print their own output: use main_with_args",
-            ))
-        }
+        Command::Check(_)
+        | Command::Generate(_)
+        | Command::Bench { .. }
+        | Command::Practice(_)
+        | Command::Completions { .. }
+        | Command::Man => Err(Error::new(
+            "command",
+            "check, generate, bench, practice, completions and man print their own output: use main_with_args",
+        )),
         // The renderer computes at f32 (the calculator's precisions are for
         // explaining): another --precision is refused, not ignored.
         Command::Render(_) if p != Precision::Exact => Err(Error::new(
@@ -105,6 +108,8 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
     let json = cli.common.json;
     let printed = match &cli.command {
         Command::Bench { quick, cases } => Ok((bench(*quick, *cases, json, style.lang), 0)),
+        Command::Completions { shell } => Ok((completions(*shell), 0)),
+        Command::Man => man().map(|t| (t, 0)),
         Command::Check(a) => check::run(a, json, &style),
         Command::Generate(a) => generate::run(a, json, &style).map(|t| (t, 0)),
         Command::Practice(a) => practice::run(a, json, &style).map(|()| (String::new(), 0)),
@@ -120,6 +125,24 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
         }
         Err(e) => report_error(&e, json, style.lang),
     }
+}
+
+/// The shell's completion script for every command and flag.
+fn completions(shell: clap_complete::Shell) -> String {
+    use clap::CommandFactory;
+    let mut out = Vec::new();
+    clap_complete::generate(shell, &mut Cli::command(), "grafika", &mut out);
+    String::from_utf8_lossy(&out).into_owned()
+}
+
+/// The manual page (roff): the commands, every flag and its help.
+fn man() -> Result<String> {
+    use clap::CommandFactory;
+    let mut out = Vec::new();
+    clap_mangen::Man::new(Cli::command())
+        .render(&mut out)
+        .map_err(|e| Error::new("man", e.to_string()))?;
+    Ok(String::from_utf8_lossy(&out).into_owned())
 }
 
 /// `--figure FILE.svg`: the report's figure as a new SVG file (an existing
