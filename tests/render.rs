@@ -432,3 +432,35 @@ fn a_spot_light_lights_its_cone_and_leaves_the_rest_ambient() {
     assert_eq!(pixel(&f, 0, 0), [0, 0, 0]);
     assert_eq!(pixel(&f, 80, 60), [0, 0, 0]);
 }
+
+/// Issue 18: `render -o -` writes the PNG, and only the PNG, on standard
+/// output (the summary goes to stderr); the bytes equal those of a file.
+#[test]
+fn render_to_stdout_writes_only_the_png() {
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("problems/render/cone-flat.toml");
+    let out = grafika()
+        .args(["render", scene.to_str().unwrap(), "-o", "-"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    assert_eq!(
+        &out.stdout[..8],
+        b"\x89PNG\r\n\x1a\n",
+        "not a PNG signature"
+    );
+    assert!(String::from_utf8_lossy(&out.stderr).contains("image = -"));
+    let dir = std::env::temp_dir().join(format!("grafika-stdout-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("cone.png");
+    grafika()
+        .args([
+            "render",
+            scene.to_str().unwrap(),
+            "-o",
+            file.to_str().unwrap(),
+        ])
+        .assert()
+        .success();
+    assert_eq!(std::fs::read(&file).unwrap(), out.stdout);
+    let _ = std::fs::remove_dir_all(&dir);
+}

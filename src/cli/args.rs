@@ -325,7 +325,7 @@ pub struct PracticeArgs {
 pub struct RenderArgs {
     /// The scene file (TOML, docs/spec.md §6).
     pub scene: PathBuf,
-    /// The PNG to write.
+    /// The PNG to write (`-` for standard output; the summary then goes to stderr).
     #[arg(short = 'o', long = "output", value_name = "IMAGE.png")]
     pub output: PathBuf,
     /// Image width in pixels (default: the scene's).

@@ -118,7 +118,13 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
             Ok((report_text(&report, json, &style), 0))
         }),
     };
+    // `render -o -` writes the PNG on standard output: the summary goes to stderr.
+    let png_on_stdout = matches!(&cli.command, Command::Render(a) if a.output.as_os_str() == "-");
     match printed {
+        Ok((text, status)) if png_on_stdout => {
+            eprint!("{text}");
+            status
+        }
         Ok((text, status)) => {
             print!("{text}");
             status

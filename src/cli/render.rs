@@ -66,7 +66,17 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
         None => go()?,
     };
     let t = Instant::now();
-    render::write_png(&frame, &a.output)?;
+    if a.output.as_os_str() == "-" {
+        let out = std::io::stdout().lock();
+        render::encode_png(&frame, out).map_err(|e| {
+            Error::new(
+                "output",
+                format!("cannot write the PNG to standard output: {e}"),
+            )
+        })?;
+    } else {
+        render::write_png(&frame, &a.output)?;
+    }
     let encode = t.elapsed();
 
     let median = |f: &dyn Fn(&Stats) -> Duration| {

@@ -487,14 +487,18 @@ impl Frame {
 pub fn write_png(frame: &Frame, path: &std::path::Path) -> Result<()> {
     let err = |e: String| Error::new("output", format!("cannot write {}: {e}", path.display()));
     let file = std::fs::File::create(path).map_err(|e| err(e.to_string()))?;
-    let mut enc = png::Encoder::new(std::io::BufWriter::new(file), frame.width, frame.height);
+    encode_png(frame, std::io::BufWriter::new(file)).map_err(err)
+}
+
+/// The frame as an 8-bit RGB PNG, written to `out` (a file, standard output).
+pub fn encode_png(frame: &Frame, out: impl std::io::Write) -> std::result::Result<(), String> {
+    let mut enc = png::Encoder::new(out, frame.width, frame.height);
     enc.set_color(png::ColorType::Rgb);
     enc.set_depth(png::BitDepth::Eight);
     enc.set_compression(png::Compression::Fast);
-    let mut wr = enc.write_header().map_err(|e| err(e.to_string()))?;
-    wr.write_image_data(&frame.rgb)
-        .map_err(|e| err(e.to_string()))?;
-    wr.finish().map_err(|e| err(e.to_string()))
+    let mut wr = enc.write_header().map_err(|e| e.to_string())?;
+    wr.write_image_data(&frame.rgb).map_err(|e| e.to_string())?;
+    wr.finish().map_err(|e| e.to_string())
 }
 
 #[cfg(test)]
