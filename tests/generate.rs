@@ -430,3 +430,21 @@ fn generate_out_naming_a_file_says_so() {
         "{e}"
     );
 }
+
+/// Issue 18: the question sheet does not print the seed (a student could
+/// regenerate the key from it); the key does.
+#[test]
+fn the_question_sheet_does_not_print_the_seed() {
+    let dir = tmp("noseed");
+    grafika()
+        .args([
+            "generate", "--topic", "view", "--count", "1", "--seed", "987654",
+        ])
+        .args(["--format", "md", "--out", dir.to_str().unwrap()])
+        .assert()
+        .success();
+    let q = std::fs::read_to_string(dir.join("questions.md")).unwrap();
+    let k = std::fs::read_to_string(dir.join("key.md")).unwrap();
+    assert!(!q.contains("987654"), "the question sheet shows the seed");
+    assert!(k.contains("987654"), "the key lost its seed");
+}

@@ -122,11 +122,12 @@ fn write_exam(
         put(format!("problem-{:02}.key.toml", i + 1), key_toml(g))?;
     }
     let numbered = (a.variants > 1).then_some(variant);
-    let title = exam_title(&a.topic, a.difficulty, a.seed, numbered, style.lang);
+    // The question sheet does not show the seed (anyone could regenerate the key).
+    let title = |seed| exam_title(&a.topic, a.difficulty, seed, numbered, style.lang);
     let doc = match a.format {
         Format::Toml => return Ok(files),
         Format::Json => {
-            let j = exam_json(&title, a.seed, variant, exam, style.lang);
+            let j = exam_json(&title(Some(a.seed)), a.seed, variant, exam, style.lang);
             put(
                 "exam.json".into(),
                 serde_json::to_string_pretty(&j).unwrap_or_default() + "\n",
@@ -139,11 +140,9 @@ fn write_exam(
     };
     let ext = if doc == Doc::Markdown { "md" } else { "tex" };
     let (q, k) = sheets(doc, exam, style);
-    put(format!("questions.{ext}"), doc.document(&title, &q))?;
-    put(
-        format!("key.{ext}"),
-        doc.document(&key_title(&title, style.lang), &k),
-    )?;
+    put(format!("questions.{ext}"), doc.document(&title(None), &q))?;
+    let key = key_title(&title(Some(a.seed)), style.lang);
+    put(format!("key.{ext}"), doc.document(&key, &k))?;
     Ok(files)
 }
 

@@ -12,21 +12,22 @@ use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-/// An exam's title: topics, difficulty, seed and variant.
+/// An exam's title: topics, difficulty, the seed (keys only: a question
+/// sheet that showed it would let anyone regenerate the key) and variant.
 pub fn exam_title(
     topics: &[Topic],
     diff: Difficulty,
-    seed: u64,
+    seed: Option<u64>,
     variant: Option<u32>,
     lang: Lang,
 ) -> String {
     let t = |en, id| crate::report::lang::tr(lang, en, id);
     format!(
-        "{}: {} ({}), seed {}{}",
+        "{}: {} ({}){}{}",
         t("grafika exam", "ujian grafika"),
         topics_name(topics),
         format!("{diff:?}").to_lowercase(),
-        seed,
+        seed.map(|s| format!(", seed {s}")).unwrap_or_default(),
         variant
             .map(|v| format!(", {} {v}", t("variant", "varian")))
             .unwrap_or_default()
