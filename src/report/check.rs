@@ -167,26 +167,32 @@ fn diagnoses_text(m: &Marking, style: &Style) -> String {
 fn score_text(m: &Marking, style: &Style) -> String {
     let c = |v| m.count(v);
     let score = style.dec(crate::report::fmt_dec(m.score(), 4));
-    let score = match style.lang {
-        Lang::En => format!(
-            "\nScore: {score}/{} ({} correct, {} too coarse, {} wrong, {} missing, {} unparseable)\n",
-            m.total(),
-            c(Verdict::Correct),
-            c(Verdict::TooCoarse),
-            c(Verdict::Wrong),
-            c(Verdict::Missing),
-            c(Verdict::Unparseable)
-        ),
-        Lang::Id => format!(
-            "\nNilai: {score}/{} ({} benar, {} terlalu kasar, {} salah, {} tidak dijawab, {} tidak terbaca)\n",
-            m.total(),
-            c(Verdict::Correct),
-            c(Verdict::TooCoarse),
-            c(Verdict::Wrong),
-            c(Verdict::Missing),
-            c(Verdict::Unparseable)
-        ),
+    let verdicts = [
+        Verdict::Correct,
+        Verdict::TooCoarse,
+        Verdict::Wrong,
+        Verdict::Missing,
+        Verdict::Unparseable,
+    ];
+    let words = match style.lang {
+        Lang::En => ["correct", "too coarse", "wrong", "missing", "unparseable"],
+        Lang::Id => [
+            "benar",
+            "terlalu kasar",
+            "salah",
+            "tidak dijawab",
+            "tidak terbaca",
+        ],
     };
+    let counts: Vec<String> = (verdicts.iter().zip(words))
+        .map(|(v, w)| format!("{} {w}", c(*v)))
+        .collect();
+    let score = format!(
+        "\n{}: {score}/{} ({})\n",
+        style.tr("Score", "Nilai"),
+        m.total(),
+        counts.join(", ")
+    );
     let n = m.follow_through();
     match (n, style.lang) {
         (0, _) => score,
