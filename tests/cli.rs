@@ -761,3 +761,32 @@ fn completions_for_an_unknown_shell_is_an_error() {
     let err = String::from_utf8(out.stderr).unwrap();
     assert_eq!(err.trim().lines().count(), 1, "{err}");
 }
+
+/// Issue 18: every subcommand's `--help` ends with examples.
+#[test]
+fn every_subcommand_help_has_examples() {
+    for cmd in [
+        "basis",
+        "view",
+        "project",
+        "window",
+        "clip",
+        "shade",
+        "solve",
+        "check",
+        "practice",
+        "generate",
+        "render",
+        "bench",
+        "completions",
+        "man",
+    ] {
+        let out = grafika().args([cmd, "--help"]).output().unwrap();
+        assert!(out.status.success(), "{cmd} --help failed");
+        let text = String::from_utf8(out.stdout).unwrap();
+        assert!(
+            text.contains("Examples / Contoh:"),
+            "{cmd} --help has no examples"
+        );
+    }
+}

@@ -128,6 +128,9 @@ pub enum Command {
     Render(RenderArgs),
     /// Practise a problem one value at a time: verdict, diagnosis, hints,
     /// follow-through (answers and commands from standard input).
+    #[command(
+        after_help = "Examples / Contoh:\n  grafika practice problems/text-camera.toml\n  grafika practice --topic clip --difficulty easy --seed 3\n  grafika --lang id practice --topic window --difficulty medium"
+    )]
     Practice(PracticeArgs),
 }
 
