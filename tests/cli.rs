@@ -531,13 +531,10 @@ fn no_file_of_the_project_reaches_outside_the_repository() {
                 continue;
             };
             n += 1;
-            let bad = ["../shared", "../../.."];
-            for b in bad {
-                // (this test names them in `bad` itself)
-                if p.ends_with("tests/cli.rs") {
-                    continue;
-                }
-                assert!(!text.contains(b), "{p:?} contains {b}");
+            // Spelled in pieces so that this file does not hold them itself.
+            let bad = [["..", "shared"].join("/"), ["..", "..", ".."].join("/")];
+            for b in &bad {
+                assert!(!text.contains(b.as_str()), "{p:?} contains {b}");
             }
         }
     }
