@@ -207,29 +207,12 @@ fn camera_problem(topic: Topic, diff: Difficulty, rng: &mut SplitMix64) -> Strin
     let (d, up) = direction(diff, rng);
     let look = [rng.range(-2, 2), rng.range(-2, 2), rng.range(-2, 2)];
     let eye = [look[0] + d[0], look[1] + d[1], look[2] + d[2]];
-    let npts = match topic {
-        Topic::Basis => 0,
-        Topic::Pipeline => 3,
-        _ => 2 + rng.below(2) as usize,
-    };
-    let spread = if diff == Difficulty::Hard { 3 } else { 2 };
-    let pts: Vec<(String, [i64; 3])> = ["A", "B", "C"][..npts]
-        .iter()
-        .map(|n| {
-            let p = [
-                look[0] + rng.range(-spread, spread),
-                look[1] + rng.range(-spread, spread),
-                look[2] + rng.range(-spread, spread),
-            ];
-            (n.to_string(), p)
-        })
-        .collect();
+    let pts = camera_points(topic, diff, look, rng);
     let near: &&str = match diff {
         Difficulty::Easy => rng.pick(&["1", "2"]),
         Difficulty::Medium => rng.pick(&["0.5", "1", "2"]),
         Difficulty::Hard => rng.pick(&["0.1", "0.25", "0.5"]),
     };
-    let mut t = String::new();
     let pts_text = pts
         .iter()
         .map(|(n, p)| format!("{n}{}", tuple(*p)))
@@ -241,7 +224,7 @@ fn camera_problem(topic: Topic, diff: Difficulty, rng: &mut SplitMix64) -> Strin
         tuple(look),
         tuple(up)
     );
-    let (title, ask, statement) = match topic {
+    let (title, ask, mut statement) = match topic {
         Topic::Basis => (
             "camera basis",
             r#"["view"]"#,
@@ -263,29 +246,15 @@ fn camera_problem(topic: Topic, diff: Difficulty, rng: &mut SplitMix64) -> Strin
             String::new(),
         ),
     };
-    let _ = writeln!(t, "title = {}", tstr(&capitalized(title)));
-    let mut statement = statement;
     let mut per = String::new();
     if topic == Topic::Project {
         let _ = writeln!(per, "[perspective]\nnear = {near}\n");
     }
     if topic == Topic::Pipeline {
-        let fovy = *rng.pick(match diff {
-            Difficulty::Easy => &[90][..],
-            Difficulty::Medium => &[45, 60, 90][..],
-            Difficulty::Hard => &[40, 50, 70][..],
-        });
-        let aspect = *rng.pick(&["1", "2", "1.5"]);
-        let vp = *rng.pick(&["[200, 100]", "[400, 200]", "[300, 200]"]);
-        statement = format!(
-            "{cam_text} The perspective set-up is near = {near}, fovy = {fovy}°, aspect = {aspect}, viewport {} pixels. For the points {pts_text}: (1) find n, u, v and the eye coordinates; (2) project them onto the near plane z = −near; (3) find the viewing window (top, bottom, left, right, height, width); (4) find the pixel coordinates of the projected points.",
-            vp.trim_matches(['[', ']']).replace(", ", "x")
-        );
-        let _ = writeln!(
-            per,
-            "[perspective]\nnear = {near}\nfovy = {fovy}\naspect = {aspect}\nviewport = {vp}\n"
-        );
+        (statement, per) = pipeline_setup(diff, near, &cam_text, &pts_text, rng);
     }
+    let mut t = String::new();
+    let _ = writeln!(t, "title = {}", tstr(&capitalized(title)));
     let _ = writeln!(t, "statement = {}", tstr(&statement));
     let _ = writeln!(t, "ask = {ask}\n");
     let _ = writeln!(
@@ -307,6 +276,59 @@ fn camera_problem(topic: Topic, diff: Difficulty, rng: &mut SplitMix64) -> Strin
         t.push_str("[check]\nkeys = [\"view.n\", \"view.u\", \"view.v\"]\n");
     }
     t
+}
+
+/// The named points of a camera problem, near the look-at point: none for
+/// the basis, three for the pipeline, else two or three.
+fn camera_points(
+    topic: Topic,
+    diff: Difficulty,
+    look: [i64; 3],
+    rng: &mut SplitMix64,
+) -> Vec<(String, [i64; 3])> {
+    let npts = match topic {
+        Topic::Basis => 0,
+        Topic::Pipeline => 3,
+        _ => 2 + rng.below(2) as usize,
+    };
+    let spread = if diff == Difficulty::Hard { 3 } else { 2 };
+    ["A", "B", "C"][..npts]
+        .iter()
+        .map(|n| {
+            let p = [
+                look[0] + rng.range(-spread, spread),
+                look[1] + rng.range(-spread, spread),
+                look[2] + rng.range(-spread, spread),
+            ];
+            (n.to_string(), p)
+        })
+        .collect()
+}
+
+/// A pipeline problem's perspective set-up (fovy, aspect, viewport drawn
+/// for the difficulty): its statement and its `[perspective]` table.
+fn pipeline_setup(
+    diff: Difficulty,
+    near: &str,
+    cam_text: &str,
+    pts_text: &str,
+    rng: &mut SplitMix64,
+) -> (String, String) {
+    let fovy = *rng.pick(match diff {
+        Difficulty::Easy => &[90][..],
+        Difficulty::Medium => &[45, 60, 90][..],
+        Difficulty::Hard => &[40, 50, 70][..],
+    });
+    let aspect = *rng.pick(&["1", "2", "1.5"]);
+    let vp = *rng.pick(&["[200, 100]", "[400, 200]", "[300, 200]"]);
+    let statement = format!(
+        "{cam_text} The perspective set-up is near = {near}, fovy = {fovy}°, aspect = {aspect}, viewport {} pixels. For the points {pts_text}: (1) find n, u, v and the eye coordinates; (2) project them onto the near plane z = −near; (3) find the viewing window (top, bottom, left, right, height, width); (4) find the pixel coordinates of the projected points.",
+        vp.trim_matches(['[', ']']).replace(", ", "x")
+    );
+    let per = format!(
+        "[perspective]\nnear = {near}\nfovy = {fovy}\naspect = {aspect}\nviewport = {vp}\n\n"
+    );
+    (statement, per)
 }
 
 fn window_problem(diff: Difficulty, rng: &mut SplitMix64) -> String {
