@@ -452,29 +452,19 @@ fn clip_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String 
     )
 }
 
-/// A lighting problem at one point: white directional light L, viewer V,
-/// normal N, surface color Cs. Easy: L = V = (0, 0, 1) (the text's) and a
-/// normal with a rational length (3-4-5), so every answer is rational;
-/// medium: normals like (0, 1, 1) with one surd, the models phong, lambert
-/// and blinn; hard: any small vectors and coefficients. Always lit (N·L > 0).
-fn shade_problem(diff: Difficulty, rng: &mut SplitMix64) -> String {
-    let colors: [[&str; 3]; 5] = [
-        ["1", "1", "0"],
-        ["1", "0", "0"],
-        ["0", "0.5", "1"],
-        ["1", "0.5", "0"],
-        ["0.5", "0.5", "0.5"],
-    ];
-    let color = *rng.pick(&colors);
-    // (N, L, V, model, [ka, kd, ks, n] unless the text's)
-    type Draw = (
-        [i64; 3],
-        [i64; 3],
-        [i64; 3],
-        &'static str,
-        Option<[&'static str; 4]>,
-    );
-    let (n, l, v, model, k): Draw = match diff {
+/// A lighting problem's vectors, model and constants for the difficulty:
+/// (N, L, V, model, [ka, kd, ks, n] unless the text's).
+type Draw = (
+    [i64; 3],
+    [i64; 3],
+    [i64; 3],
+    &'static str,
+    Option<[&'static str; 4]>,
+);
+
+/// Draws N, L, V, the model and (hard) the constants.
+fn shade_draw(diff: Difficulty, rng: &mut SplitMix64) -> Draw {
+    match diff {
         Difficulty::Easy => (
             *rng.pick(&[
                 [0, 3, 4],
@@ -519,7 +509,49 @@ fn shade_problem(diff: Difficulty, rng: &mut SplitMix64) -> String {
                 Some(k),
             )
         }
-    };
+    }
+}
+
+/// What a lighting problem asks for, and the answers checked, follow the
+/// model: (the constants as stated, what is asked, the check keys).
+fn shade_asked(
+    model: &str,
+    (ka, kd, ks, sh): (&str, &str, &str, &str),
+) -> (String, &'static str, &'static str) {
+    match model {
+    "lambert" => (
+        format!("ka = {ka}, kd = {kd}"),
+        "cos α = L·N, the ambient and diffuse terms",
+        r#"["shade.cos_alpha", "shade.ambient", "shade.diffuse", "shade.color"]"#,
+    ),
+    "blinn" => (
+        format!("ka = {ka}, kd = {kd}, ks = {ks}, n = {sh}"),
+        "cos α = L·N, the half vector H = norm(L + V) and N·H, the ambient, diffuse and specular terms",
+        r#"["shade.cos_alpha", "shade.H", "shade.N_dot_H", "shade.ambient", "shade.diffuse", "shade.specular", "shade.color"]"#,
+    ),
+    _ => (
+        format!("ka = {ka}, kd = {kd}, ks = {ks}, n = {sh}"),
+        "cos α = L·N, R = 2N(L·N) − L, cos β = R·V, the ambient, diffuse and specular terms",
+        r#"["shade.cos_alpha", "shade.R", "shade.cos_beta", "shade.ambient", "shade.diffuse", "shade.specular", "shade.color"]"#,
+    ),
+}
+}
+
+/// A lighting problem at one point: white directional light L, viewer V,
+/// normal N, surface color Cs. Easy: L = V = (0, 0, 1) (the text's) and a
+/// normal with a rational length (3-4-5), so every answer is rational;
+/// medium: normals like (0, 1, 1) with one surd, the models phong, lambert
+/// and blinn; hard: any small vectors and coefficients. Always lit (N·L > 0).
+fn shade_problem(diff: Difficulty, rng: &mut SplitMix64) -> String {
+    let colors: [[&str; 3]; 5] = [
+        ["1", "1", "0"],
+        ["1", "0", "0"],
+        ["0", "0.5", "1"],
+        ["1", "0.5", "0"],
+        ["0.5", "0.5", "0.5"],
+    ];
+    let color = *rng.pick(&colors);
+    let (n, l, v, model, k) = shade_draw(diff, rng);
     let coeffs = k.map_or(String::new(), |k| {
         format!(
             "ka = {}\nkd = {}\nks = {}\nshininess = {}\n",
@@ -527,24 +559,7 @@ fn shade_problem(diff: Difficulty, rng: &mut SplitMix64) -> String {
         )
     });
     let (ka, kd, ks, sh) = k.map_or(("0.4", "0.6", "0.7", "4"), |k| (k[0], k[1], k[2], k[3]));
-    // What is asked, and the answers checked, follow the model.
-    let (consts, asked, keys) = match model {
-        "lambert" => (
-            format!("ka = {ka}, kd = {kd}"),
-            "cos α = L·N, the ambient and diffuse terms",
-            r#"["shade.cos_alpha", "shade.ambient", "shade.diffuse", "shade.color"]"#,
-        ),
-        "blinn" => (
-            format!("ka = {ka}, kd = {kd}, ks = {ks}, n = {sh}"),
-            "cos α = L·N, the half vector H = norm(L + V) and N·H, the ambient, diffuse and specular terms",
-            r#"["shade.cos_alpha", "shade.H", "shade.N_dot_H", "shade.ambient", "shade.diffuse", "shade.specular", "shade.color"]"#,
-        ),
-        _ => (
-            format!("ka = {ka}, kd = {kd}, ks = {ks}, n = {sh}"),
-            "cos α = L·N, R = 2N(L·N) − L, cos β = R·V, the ambient, diffuse and specular terms",
-            r#"["shade.cos_alpha", "shade.R", "shade.cos_beta", "shade.ambient", "shade.diffuse", "shade.specular", "shade.color"]"#,
-        ),
-    };
+    let (consts, asked, keys) = shade_asked(model, (ka, kd, ks, sh));
     let statement = format!(
         "A surface point with normal N = {} and color Cs = ({}) is lit by one white directional light from L = {} and seen from V = {}. With the {model} model ({consts}), find {asked} and the color (each channel clamped to [0, 1]).",
         tuple(n),
