@@ -357,8 +357,10 @@ fn window_problem(diff: Difficulty, rng: &mut SplitMix64) -> String {
     )
 }
 
-fn clip_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String {
-    let (min, max, pad) = match diff {
+/// The clipping box (corners) for the difficulty, and how far outside it
+/// segment ends may lie.
+fn clip_box(diff: Difficulty, rng: &mut SplitMix64) -> ([i64; 3], [i64; 3], i64) {
+    match diff {
         Difficulty::Easy => (
             [0, 0, 0],
             [rng.range(2, 4), rng.range(2, 4), rng.range(2, 4)],
@@ -388,7 +390,17 @@ fn clip_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String 
                 4,
             )
         }
-    };
+    }
+}
+
+/// Segment ends off the box planes for the wanted status: 0 clipped (one
+/// end inside and the other anywhere, or both anywhere), 1 accepted, 2
+/// rejected.
+fn clip_ends(
+    status: usize,
+    (min, max, pad): ([i64; 3], [i64; 3], i64),
+    rng: &mut SplitMix64,
+) -> ([i64; 3], [i64; 3]) {
     // A coordinate off the box planes: inside (strictly) or outside.
     let inside = |r: &mut SplitMix64, k: usize| r.range(min[k] + 1, max[k] - 1);
     let any = |r: &mut SplitMix64, k: usize| loop {
@@ -397,7 +409,7 @@ fn clip_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String 
             return x;
         }
     };
-    let (p0, p1): ([i64; 3], [i64; 3]) = match index % 3 {
+    match status {
         // clipped: one end inside and the other anywhere, or both anywhere
         0 => {
             let a: [i64; 3] = if rng.coin() {
@@ -434,7 +446,12 @@ fn clip_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String 
             }
             (a, b)
         }
-    };
+    }
+}
+
+fn clip_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String {
+    let (min, max, pad) = clip_box(diff, rng);
+    let (p0, p1) = clip_ends(index % 3, (min, max, pad), rng);
     if p0 == p1 {
         return String::new(); // rejected by accept()
     }
