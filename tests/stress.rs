@@ -659,3 +659,22 @@ fn view_matrix_last_column_is_within_4_ulps_for_a_far_eye() {
         }
     }
 }
+
+#[test]
+fn exact_unit_vector_of_a_huge_light_is_not_zero() {
+    // L = (1e308, 1e308, 1): |L|² = 2·10^616 + 1 is beyond the doubles, but
+    // |L| ≈ √2·10^308 is not, so L/|L| ≈ (1/√2, 1/√2, 7.07e-309), never
+    // the (0, 0, 0) that dividing by an infinite |L| gave.
+    let e = |s: &str| parse_expr(s).unwrap().eval::<Real>().unwrap();
+    let l: V3<Real> = nalgebra::Vector3::new(e("1e308"), e("1e308"), e("1"));
+    let u = grafika::stages::lighting::unit("L", "light", &l, &mut NoTrace).unwrap();
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    for (got, want) in [(u[0].to_f64(), h), (u[1].to_f64(), h)] {
+        assert!((got - want).abs() < 1e-15, "{got}");
+    }
+    assert!(
+        u[2].to_f64() > 0.0 && u[2].to_f64() < 1e-307,
+        "{}",
+        u[2].to_f64()
+    );
+}

@@ -120,7 +120,7 @@ impl Real {
             Real::Exact(s) => match s.sqrt() {
                 Some(r) => Real::Exact(r),
                 None if s.signum() < 0 => Real::Approx(f64::NAN),
-                None => Real::Approx(s.to_f64().sqrt()),
+                None => Real::Approx(scaled_sqrt(s)),
             },
             Real::Approx(x) => Real::Approx(x.sqrt()),
         }
@@ -392,3 +392,29 @@ impl Scalar for Real {
 
 #[cfg(test)]
 mod tests;
+
+/// √s of a positive surd as the nearest double, also when s itself is
+/// outside the range of doubles (|v|² of v = (1e308, 1e308, 1) is 2e616):
+/// √s = 2^m · √(s / 4^m), with m chosen so that s / 4^m is a normal double.
+fn scaled_sqrt(s: &Surd) -> f64 {
+    let x = s.to_f64();
+    if x.is_normal() || (x == 0.0 && s.signum() == 0) {
+        return x.sqrt();
+    }
+    let step: i32 = if x.is_infinite() { 256 } else { -256 };
+    let mut m: i32 = 0;
+    while m.abs() < 1 << 16 {
+        m += step;
+        // s / 4^m, exactly
+        let four_m = BigRational::from_integer(BigInt::from(4)).pow(-m);
+        let y = s.scale(&four_m).to_f64();
+        if y.is_normal() {
+            return y.sqrt() * 2f64.powi(m);
+        }
+    }
+    if step > 0 {
+        f64::INFINITY
+    } else {
+        0.0
+    }
+}

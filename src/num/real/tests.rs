@@ -429,3 +429,25 @@ proptest! {
         prop_assert_eq!(dec(&s).to_f64(), s.parse::<f64>().unwrap());
     }
 }
+
+#[test]
+fn the_square_root_of_a_surd_beyond_the_doubles_is_scaled_not_infinite() {
+    let ten = |k: u32| BigInt::from(10).pow(k);
+    // 2·10^616 + 1 (|v|² of v = (1e308, 1e308, 1)) is no double, but its
+    // root √2·10^308 ≈ 1.414e308 is one (below 1.797e308).
+    let big = Real::from_rational(BigRational::from_integer(ten(616) * 2 + 1));
+    let want = std::f64::consts::SQRT_2 * 1e308;
+    let r = big.sqrt();
+    assert!(
+        (r.to_f64() - want).abs() <= 4.0 * f64::EPSILON * want,
+        "{r}"
+    );
+    // 3·10^-600 + 10^-900 underflows as a double; its root √3·10^-300 does not.
+    let small = BigRational::new(BigInt::from(3), ten(600)) + BigRational::new(1.into(), ten(900));
+    let want = 3f64.sqrt() * 1e-300;
+    let t = Real::from_rational(small).sqrt();
+    assert!(
+        (t.to_f64() - want).abs() <= 4.0 * f64::EPSILON * want,
+        "{t}"
+    );
+}
