@@ -429,3 +429,29 @@ fn check_a_100000_digit_number_is_unparseable_not_slow() {
     ]);
     assert_eq!(answer(&v, "window.top")["verdict"], "unparseable");
 }
+
+#[test]
+fn a_one_figure_answer_is_not_explained_by_a_mistake() {
+    // window-60: near = 1, fovy = 60°, so top = tan 30° ≈ 0.5774; with the
+    // degrees given to tan as radians, top = tan(30 rad) ≈ −6.4053.
+    let mark = |top: &str| {
+        let f = answers_file(
+            &format!("one-figure{}", top.len()),
+            &format!("window.top = \"{top}\"\n"),
+        );
+        let v = json_ok(&[
+            "check",
+            "problems/window-60.toml",
+            "--answers",
+            f.to_str().unwrap(),
+        ]);
+        answer(&v, "window.top").clone()
+    };
+    let four = mark("-6.405");
+    assert_eq!(four["verdict"], "wrong", "{four}");
+    assert_eq!(codes(&four), ["degrees_as_radians"], "{four}");
+    // "-6" has one figure: as close to a dozen other wrong values.
+    let one = mark("-6");
+    assert_eq!(one["verdict"], "wrong", "{one}");
+    assert!(codes(&one).is_empty(), "{one}");
+}

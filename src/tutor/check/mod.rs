@@ -397,7 +397,9 @@ pub fn follows_through(
 
 /// Whether a mistake, whose results are `variants`, reproduces the answer
 /// `given` to `key`: the mistake changes the value (grafika's is `right`)
-/// and the answer is then what the mistake gives.
+/// and the answer is then what the mistake gives, to as many figures as
+/// the marking asks (an answer too coarse to be marked correct is too
+/// coarse to tell one mistake from another: `0.1` would match many).
 pub fn reproduces(
     variants: &[Tree],
     key: &str,
@@ -407,11 +409,7 @@ pub fn reproduces(
 ) -> bool {
     variants.iter().any(|tree| {
         lookup(tree, key).is_some_and(|mv| {
-            differs(mv, right)
-                && matches!(
-                    judge(given, mv, settings, key, true).verdict,
-                    Verdict::Correct | Verdict::TooCoarse
-                )
+            differs(mv, right) && judge(given, mv, settings, key, true).verdict == Verdict::Correct
         })
     })
 }
