@@ -8,6 +8,9 @@
 //! This file sits at the base beside `error.rs`, so every layer can name a
 //! message; only `report/` knows the words.
 
+mod drawn;
+pub use drawn::{CameraText, DrawnTitle, ShadeAsked, Statement};
+
 /// A term of the lighting sum.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Term {
@@ -358,6 +361,14 @@ pub enum Msg {
     ErrPointNeedsViewport,
     /// far ≤ near: near, far.
     ErrFar(String, String),
+
+    // ---- generated problems ----
+    /// The title of a generated problem.
+    DrawnTitle(DrawnTitle),
+    /// The statement of a generated problem.
+    Statement(Box<Statement>),
+    /// `generate`: only n different problems of a topic at a difficulty.
+    ErrFewDistinct(String, String, usize),
 
     // ---- warnings ----
     /// Up nearly parallel to the view direction (angle in radians).

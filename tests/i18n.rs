@@ -209,3 +209,67 @@ fn an_exam_key_in_indonesian() {
     assert!(all.contains("Sumbu kamera n"), "{all}");
     assert!(!all.contains("**Step "), "{all}");
 }
+
+/// The files an exam of `lang` writes: (name, text), sorted by name.
+fn exam_files(lang: &str, topics: &str) -> Vec<(String, String)> {
+    let dir = std::env::temp_dir().join(format!(
+        "grafika-i18n-statements-{lang}-{}",
+        std::process::id()
+    ));
+    let _ = std::fs::remove_dir_all(&dir);
+    grafika()
+        .args([
+            "--lang", lang, "generate", "--topic", topics, "--count", "6",
+        ])
+        .args(["--seed", "3", "--out", dir.to_str().unwrap_or_default()])
+        .assert()
+        .success();
+    let mut files: Vec<(String, String)> = std::fs::read_dir(&dir)
+        .expect("the exam directory")
+        .map(|e| {
+            let p = e.expect("entry").path();
+            let name = p
+                .file_name()
+                .unwrap_or_default()
+                .to_string_lossy()
+                .into_owned();
+            (name, std::fs::read_to_string(&p).expect("reads"))
+        })
+        .collect();
+    files.sort();
+    files
+}
+
+#[test]
+fn generated_statements_in_indonesian_with_the_same_problems() {
+    let topics = "view,clip,shade,pipeline,window,project";
+    let (en, id) = (exam_files("en", topics), exam_files("id", topics));
+    assert_eq!(en.len(), id.len());
+    for ((name, e), (_, i)) in en.iter().zip(&id) {
+        if name.ends_with(".key.toml") {
+            // the answers are the same; only the comment's title differs
+            let body = |t: &str| t.lines().skip(1).collect::<Vec<_>>().join("\n");
+            assert_eq!(body(e), body(i), "{name}");
+            assert!(i.starts_with("# Kunci jawaban: "), "{i}");
+        } else if name.ends_with(".toml") {
+            // the data are the same; the title and statement are Indonesian
+            let data = |t: &str| t.lines().skip(2).collect::<Vec<_>>().join("\n");
+            assert_eq!(data(e), data(i), "{name}");
+            assert!(!i.contains("Find ") && !i.contains("A camera"), "{i}");
+        }
+    }
+    let all: String = id.iter().map(|(_, t)| t.as_str()).collect();
+    for phrase in [
+        "posisi mata Peye",
+        "titik referensi Pref",
+        "Tentukan sumbu kamera n, u, v dan koordinat kamera",
+        "region code P0 dan P1",
+        "kiri, kanan, bawah, atas, depan, belakang",
+        "vektor normal N",
+        "Tentukan bidang pandang",
+    ] {
+        assert!(all.contains(phrase), "no `{phrase}` in\n{all}");
+    }
+    // decimal commas and semicolons between components
+    assert!(all.contains("ka = 0,4; kd = 0,6"), "{all}");
+}

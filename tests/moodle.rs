@@ -7,6 +7,7 @@
 mod common;
 use common::*;
 use grafika::input::problem::ProblemIn;
+use grafika::msg::Msg;
 use grafika::num::expr::parse_expr;
 use grafika::num::Real;
 use grafika::report::lang::Lang;
@@ -153,8 +154,11 @@ fn generated(toml: &str) -> Generated {
     let problem = ProblemIn::parse(toml, "test").expect("parses");
     let report = solve::solve::<Real>(&problem).expect("solves");
     let keys = default_keys(&report.result);
+    // The problem's own words stand for the drawn title and statement.
     Generated {
-        toml: toml.to_string(),
+        title: Msg::Math(problem.title.clone()),
+        statement: Msg::Math(problem.statement.clone().unwrap_or_default()),
+        body: toml.to_string(),
         problem,
         report,
         keys,

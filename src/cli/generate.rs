@@ -6,10 +6,12 @@ use crate::error::{Error, Result};
 use crate::report::doc::Doc;
 use crate::report::gift::gift;
 use crate::report::moodle::{moodle_xml, Exams};
-use crate::report::sheets::{exam_json, exam_title, key_title, sheets, written_summary};
+use crate::report::sheets::{
+    exam_json, exam_title, key_file, key_title, problem_file, sheets, written_summary,
+};
 use crate::report::Style;
 use crate::tutor::check::DEFAULT_TOLERANCE;
-use crate::tutor::generate::{exam, key_toml, variant_seed, Generated};
+use crate::tutor::generate::{exam, variant_seed, Generated};
 use serde_json::json;
 use std::path::{Path, PathBuf};
 
@@ -86,6 +88,7 @@ pub fn write_exams(a: &GenerateArgs, style: &Style) -> Result<Vec<PathBuf>> {
         return write_quiz(a, style).map(|f| vec![f]);
     }
     let mut files = Vec::new();
+    let bar = progress(a, style);
     for v in 0..a.variants {
         let dir = if a.variants == 1 {
             a.out.clone()
@@ -96,8 +99,21 @@ pub fn write_exams(a: &GenerateArgs, style: &Style) -> Result<Vec<PathBuf>> {
             .map_err(|e| Error::new("out", format!("cannot create {}: {e}", dir.display())))?;
         let exam = exam(&a.topic, a.difficulty, a.count, variant_seed(a.seed, v))?;
         files.extend(write_exam(&dir, a, v + 1, &exam, style)?);
+        bar.iter().for_each(|b| b.inc(1));
     }
+    bar.iter().for_each(|b| b.finish_and_clear());
     Ok(files)
+}
+
+/// A progress bar over the variants, on a terminal, when there are more
+/// than 100 problems in all (smaller exams are written in well under a
+/// second).
+fn progress(a: &GenerateArgs, style: &Style) -> Option<indicatif::ProgressBar> {
+    let n = a.count as u64 * a.variants as u64;
+    let msg = crate::report::lang::tr(style.lang, "variants", "varian");
+    (n > 100)
+        .then(|| super::terminal_bar(a.variants as u64, msg))
+        .flatten()
 }
 
 /// Writes one exam's files: the problem and key files, then the sheets in
@@ -118,8 +134,14 @@ fn write_exam(
         Ok(())
     };
     for (i, g) in exam.iter().enumerate() {
-        put(format!("problem-{:02}.toml", i + 1), g.toml.clone())?;
-        put(format!("problem-{:02}.key.toml", i + 1), key_toml(g))?;
+        put(
+            format!("problem-{:02}.toml", i + 1),
+            problem_file(g, style.lang),
+        )?;
+        put(
+            format!("problem-{:02}.key.toml", i + 1),
+            key_file(g, style.lang),
+        )?;
     }
     let numbered = (a.variants > 1).then_some(variant);
     // The question sheet does not show the seed (anyone could regenerate the key).
@@ -164,9 +186,14 @@ fn quiz_tolerance(a: &GenerateArgs) -> Result<f64> {
 /// directory: quiz.xml or quiz.gift.
 fn write_quiz(a: &GenerateArgs, style: &Style) -> Result<PathBuf> {
     let rel = quiz_tolerance(a)?;
+    let bar = progress(a, style);
     let exams = (0..a.variants)
-        .map(|v| exam(&a.topic, a.difficulty, a.count, variant_seed(a.seed, v)))
+        .map(|v| {
+            bar.iter().for_each(|b| b.inc(1));
+            exam(&a.topic, a.difficulty, a.count, variant_seed(a.seed, v))
+        })
         .collect::<Result<Vec<_>>>()?;
+    bar.iter().for_each(|b| b.finish_and_clear());
     let e = Exams {
         exams: &exams,
         topics: &a.topic,

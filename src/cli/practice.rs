@@ -32,7 +32,10 @@ pub fn run(a: &PracticeArgs, json: bool, style: &Style) -> Result<()> {
             let g = exam
                 .pop()
                 .ok_or_else(|| Error::new("topic", "no problem drawn"))?;
-            (g.problem, Some((t, a.difficulty)), Some(seed))
+            let mut p = g.problem;
+            p.title = style.w(&g.title);
+            p.statement = Some(style.w(&g.statement));
+            (p, Some((t, a.difficulty)), Some(seed))
         }
         (None, None) => return Err(Error::new("file", "give a problem file or --topic")),
     };

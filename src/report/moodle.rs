@@ -20,6 +20,7 @@
 
 use crate::report::lang::{tr, Lang};
 use crate::report::mistakes::mistake_text;
+use crate::report::words::words;
 use crate::report::Style;
 use crate::stages::trace::{Report, Val};
 use crate::tutor::generate::quiz::{blanks, Asked, Blank, Typed, Wrong};
@@ -94,13 +95,13 @@ pub fn question_name(g: &Generated, i: usize, v: usize, lang: Lang) -> String {
         i + 1,
         tr(lang, "variant", "varian"),
         v + 1,
-        g.problem.title
+        words(&g.title, lang)
     )
 }
 
 /// The statement and how to type the answers, as HTML.
 pub fn intro_html(g: &Generated, rel: f64, lang: Lang) -> String {
-    let statement = g.problem.statement.clone().unwrap_or_default();
+    let statement = words(&g.statement, lang);
     format!(
         "<p>{}</p><p><i>{}</i></p>",
         esc_text(statement.trim()),

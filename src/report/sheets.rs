@@ -4,9 +4,10 @@
 
 use crate::report::doc::Doc;
 use crate::report::lang::Lang;
+use crate::report::words::words;
 use crate::report::{exact_json, value_json, Style};
 use crate::stages::trace::Val;
-use crate::tutor::generate::{topics_name, Difficulty, Generated, Topic};
+use crate::tutor::generate::{key_lines, topics_name, Difficulty, Generated, Topic};
 use crate::tutor::solve::lookup;
 use serde_json::{json, Value};
 use std::fmt::Write as _;
@@ -42,6 +43,29 @@ pub fn key_title(title: &str, lang: Lang) -> String {
     )
 }
 
+/// A generated problem's file: its title and statement in `lang`, then
+/// what is asked and the data (docs/spec.md §5).
+pub fn problem_file(g: &Generated, lang: Lang) -> String {
+    let quoted = |m| toml::Value::String(words(m, lang)).to_string();
+    format!(
+        "title = {}\nstatement = {}\n{}",
+        quoted(&g.title),
+        quoted(&g.statement),
+        g.body
+    )
+}
+
+/// A generated problem's answer-key file: a comment with its title, then
+/// `key = value` lines that `grafika check` reads.
+pub fn key_file(g: &Generated, lang: Lang) -> String {
+    format!(
+        "# {}: {}\n{}",
+        crate::report::lang::tr(lang, "Answer key", "Kunci jawaban"),
+        words(&g.title, lang),
+        key_lines(g)
+    )
+}
+
 /// The answers asked for in a problem, with their values.
 fn answers(g: &Generated) -> Vec<(String, Val)> {
     g.keys
@@ -56,8 +80,8 @@ pub fn sheets(doc: Doc, exam: &[Generated], st: &Style) -> (String, String) {
     let mut k = String::new();
     for (i, g) in exam.iter().enumerate() {
         let problem = st.tr("Problem", "Soal");
-        let title = &format!("{problem} {}: {}", i + 1, g.problem.title);
-        let statement = g.problem.statement.clone().unwrap_or_default();
+        let title = &format!("{problem} {}: {}", i + 1, st.w(&g.title));
+        let statement = st.w(&g.statement);
         for sheet in [&mut q, &mut k] {
             sheet.push_str(&doc.heading(1, title));
             sheet.push_str(&doc.text(&statement));
@@ -87,8 +111,8 @@ pub fn exam_json(title: &str, seed: u64, variant: u32, exam: &[Generated], lang:
                 .collect();
             json!({
                 "file": format!("problem-{:02}.toml", i + 1),
-                "title": g.problem.title,
-                "statement": g.problem.statement,
+                "title": words(&g.title, lang),
+                "statement": words(&g.statement, lang),
                 "keys": g.keys,
                 "answers": answers,
                 "solution": g.report.to_json(lang),

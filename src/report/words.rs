@@ -5,6 +5,8 @@
 use super::lang::Lang;
 use crate::msg::{LightPart, Msg, SpotZone, Term, Trivial};
 
+mod drawn;
+
 /// The words of `m` in `lang`.
 pub fn words(m: &Msg, lang: Lang) -> String {
     let id = lang == Lang::Id;
@@ -37,6 +39,15 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             }
         }
         Msg::Untranslated(s) => s.clone(),
+        Msg::DrawnTitle(t) => drawn::title(*t, lang),
+        Msg::Statement(s) => drawn::statement(s, lang),
+        Msg::ErrFewDistinct(topic, level, n) => {
+            if id {
+                format!("tidak dapat menarik soal {topic} tingkat {level} yang berbeda dari {n} soal sebelumnya: soal yang berbeda di tingkat ini tidak banyak; minta lebih sedikit soal (--count) atau tingkat lain (--difficulty)")
+            } else {
+                format!("could not draw a {topic} problem at {level} level unlike the {n} before it: there are few different ones at this level; ask for fewer problems (--count) or another --difficulty")
+            }
+        }
         Msg::At(place, m) => format!("{place}: {}", words(m, lang)),
         Msg::ErrSamePoint(_)
         | Msg::ErrUpZero
@@ -864,6 +875,67 @@ mod tests {
         for t in [Trivial::Accept, Trivial::Reject, Trivial::Clip] {
             v.push(Msg::TrivialNote(t));
         }
+        v.push(Msg::ErrFewDistinct("window".into(), "easy".into(), 20));
+        v.extend(drawn_messages());
+        v
+    }
+
+    /// Every title and statement of a generated problem.
+    fn drawn_messages() -> Vec<Msg> {
+        use crate::msg::{CameraText, DrawnTitle as T, ShadeAsked, Statement as S};
+        let c = || CameraText {
+            eye: "(3, 4, 0)".into(),
+            look: "(0, 0, 0)".into(),
+            up: "(0, 1, 0)".into(),
+        };
+        let p = || "A(1, 0.5, 2)".to_string();
+        let x = |s: &str| s.to_string();
+        let mut v: Vec<Msg> = [
+            T::Basis,
+            T::EyeCoordinates,
+            T::Projection,
+            T::Pipeline,
+            T::Window,
+            T::Clipping,
+            T::Lighting,
+        ]
+        .into_iter()
+        .map(Msg::DrawnTitle)
+        .collect();
+        let shade = |asked| S::Shade {
+            normal: x("(0, 3, 4)"),
+            color: x("(1, 0.5, 0)"),
+            light: x("(0, 0, 1)"),
+            view: x("(0, 0, 1)"),
+            model: x("phong"),
+            constants: x("ka = 0.4, kd = 0.6"),
+            asked,
+        };
+        for st in [
+            S::Basis(c()),
+            S::View(c(), p()),
+            S::Project(c(), p(), x("0.5")),
+            S::Pipeline {
+                camera: c(),
+                points: p(),
+                near: x("0.5"),
+                fovy: x("45"),
+                aspect: x("1.5"),
+                viewport: x("200x100"),
+            },
+            S::Window(x("90"), x("1.5"), x("2")),
+            S::Clip(
+                x("(0, 0, 0)"),
+                x("(2, 2, 2)"),
+                x("(1, 1, 1)"),
+                x("(3, 1, 1)"),
+            ),
+            shade(ShadeAsked::Lambert),
+            shade(ShadeAsked::Blinn),
+            shade(ShadeAsked::Phong),
+        ] {
+            v.push(Msg::Statement(Box::new(st)));
+        }
         v
     }
 
@@ -1013,7 +1085,10 @@ mod tests {
             | ErrPlaneNeedsCop
             | ErrChooseProjection
             | ErrPointNeedsViewport
-            | ErrFar(..) => {}
+            | ErrFar(..)
+            | DrawnTitle(_)
+            | Statement(_)
+            | ErrFewDistinct(..) => {}
         }
     }
 

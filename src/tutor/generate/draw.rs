@@ -4,32 +4,62 @@
 use super::{Difficulty, Generated, Topic};
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
+use crate::msg::{CameraText, DrawnTitle, Msg, ShadeAsked, Statement};
 use crate::num::rng::SplitMix64;
 use crate::num::Real;
 use crate::stages::trace::Val;
 use crate::tutor::check::default_keys;
 use crate::tutor::solve::{self, lookup};
+use std::collections::{BTreeSet, HashSet};
 use std::fmt::Write as _;
 
-/// One problem: drawn until it is non-degenerate and solves.
+/// A drawn problem before it is screened: its title and statement as
+/// message keys, and the rest of its problem file.
+struct Draft {
+    title: DrawnTitle,
+    statement: Statement,
+    /// The problem file after its `title` and `statement` lines.
+    body: String,
+}
+
+/// One problem: drawn until it is non-degenerate, solves, and is not one
+/// of the problems `seen` earlier in the exam (their bodies). `status` is
+/// the clipping status wanted (0 clipped, 1 accepted, 2 rejected).
 pub fn problem(
     topic: Topic,
     diff: Difficulty,
-    index: usize,
+    status: usize,
+    seen: &HashSet<String>,
     rng: &mut SplitMix64,
 ) -> Result<Generated> {
+    let mut repeats = 0;
     for _ in 0..500 {
-        let toml = match topic {
+        let d = match topic {
             Topic::Basis | Topic::View | Topic::Project | Topic::Pipeline => {
                 camera_problem(topic, diff, rng)
             }
             Topic::Window => window_problem(diff, rng),
-            Topic::Clip => clip_problem(diff, index, rng),
+            Topic::Clip => clip_problem(diff, status, rng),
             Topic::Shade => shade_problem(diff, rng),
         };
-        if let Some(g) = accept(&toml, topic, diff, index) {
+        let Some(d) = d else { continue };
+        if seen.contains(&d.body) {
+            repeats += 1;
+            continue;
+        }
+        if let Some(g) = accept(d, topic, diff, status) {
             return Ok(g);
         }
+    }
+    if repeats > 0 {
+        return Err(Error::said(
+            "count",
+            Msg::ErrFewDistinct(
+                super::topics_name(&[topic]),
+                format!("{diff:?}").to_lowercase(),
+                seen.len(),
+            ),
+        ));
     }
     Err(Error::new(
         "seed",
@@ -38,10 +68,11 @@ pub fn problem(
 }
 
 /// Parses, solves and screens a drawn problem.
-fn accept(toml: &str, topic: Topic, diff: Difficulty, index: usize) -> Option<Generated> {
-    let problem = ProblemIn::parse(toml, "generated").ok()?;
+fn accept(d: Draft, topic: Topic, diff: Difficulty, status: usize) -> Option<Generated> {
+    // The title is written in the user's language later (report::sheets).
+    let problem = ProblemIn::parse(&format!("title = \"\"\n{}", d.body), "generated").ok()?;
     let f64_result = solve::solve::<f64>(&problem).ok()?.result;
-    if !screen(&problem, &f64_result, topic, diff, index) {
+    if !screen(&problem, &f64_result, topic, status) {
         return None;
     }
     let report = solve::solve::<Real>(&problem).ok()?;
@@ -53,22 +84,68 @@ fn accept(toml: &str, topic: Topic, diff: Difficulty, index: usize) -> Option<Ge
         .as_ref()
         .and_then(|c| c.keys.clone())
         .unwrap_or_else(|| default_keys(&report.result));
+    if !nice_enough(&report.result, &keys, diff) {
+        return None;
+    }
     Some(Generated {
-        toml: toml.to_string(),
+        title: Msg::DrawnTitle(d.title),
+        statement: Msg::Statement(Box::new(d.statement)),
+        body: d.body,
         problem,
         report,
         keys,
     })
 }
 
+/// The exact forms the difficulty promises: easy answers are rational (no
+/// square root), medium ones have at most one square root (one radicand
+/// across the problem's answers), and at every level an answer has an exact
+/// form unless it rests on the tangent of an angle that has none in square
+/// roots (the hard window's fovy/2 of 20°, 25°, 35° or 40°: not of the form 3°·m/2^k).
+fn nice_enough(result: &[(String, Val)], keys: &[String], diff: Difficulty) -> bool {
+    let mut radicands = BTreeSet::new();
+    for k in keys {
+        let Some(v) = lookup(result, k) else {
+            continue;
+        };
+        let mut ok = true;
+        for_each_num(v, &mut |n| match &n.exact {
+            Some(e) => radicands.extend(radicands_of(e)),
+            None => ok &= k.starts_with("window.") || k.starts_with("viewport."),
+        });
+        if !ok {
+            return false;
+        }
+    }
+    match diff {
+        Difficulty::Easy => radicands.is_empty(),
+        Difficulty::Medium => radicands.len() <= 1,
+        Difficulty::Hard => true,
+    }
+}
+
+/// Calls `f` on every number of a value.
+fn for_each_num(v: &Val, f: &mut impl FnMut(&crate::num::Shown)) {
+    match v {
+        Val::Num(n) => f(n),
+        Val::List(items) => items.iter().for_each(|x| for_each_num(x, f)),
+        Val::Map(kv) => kv.iter().for_each(|(_, x)| for_each_num(x, f)),
+        _ => {}
+    }
+}
+
+/// The radicands of an ASCII exact form: `(300+50*sqrt(2))/3` → {"2"}.
+pub fn radicands_of(exact: &str) -> BTreeSet<String> {
+    exact
+        .split("sqrt(")
+        .skip(1)
+        .filter_map(|rest| rest.split(')').next())
+        .map(str::to_string)
+        .collect()
+}
+
 /// Non-degeneracy and the clipping status wanted.
-fn screen(
-    p: &ProblemIn,
-    r: &[(String, Val)],
-    topic: Topic,
-    diff: Difficulty,
-    index: usize,
-) -> bool {
+fn screen(p: &ProblemIn, r: &[(String, Val)], topic: Topic, status: usize) -> bool {
     let num = |v: &Val| match v {
         Val::Num(s) => Some(s.value),
         _ => None,
@@ -120,7 +197,7 @@ fn screen(
         }
     }
     if topic == Topic::Clip {
-        let want = ["clipped", "accepted", "rejected"][index % 3];
+        let want = ["clipped", "accepted", "rejected"][status % 3];
         let ok = matches!(lookup(r, "clip.status"), Some(Val::Text(s)) if s == want);
         if !ok {
             return false;
@@ -133,17 +210,8 @@ fn screen(
                 }
             }
         }
-        let _ = diff;
     }
     true
-}
-
-/// The first letter in upper case.
-fn capitalized(s: &str) -> String {
-    let mut c = s.chars();
-    c.next()
-        .map(|f| f.to_uppercase().chain(c).collect())
-        .unwrap_or_default()
 }
 
 /// `[a, b, c]` for a TOML file.
@@ -203,60 +271,56 @@ fn direction(diff: Difficulty, rng: &mut SplitMix64) -> ([i64; 3], [i64; 3]) {
     }
 }
 
-fn camera_problem(topic: Topic, diff: Difficulty, rng: &mut SplitMix64) -> String {
+fn camera_problem(topic: Topic, diff: Difficulty, rng: &mut SplitMix64) -> Option<Draft> {
     let (d, up) = direction(diff, rng);
     let look = [rng.range(-2, 2), rng.range(-2, 2), rng.range(-2, 2)];
     let eye = [look[0] + d[0], look[1] + d[1], look[2] + d[2]];
     let pts = camera_points(topic, diff, look, rng);
-    let near: &&str = match diff {
-        Difficulty::Easy => rng.pick(&["1", "2"]),
-        Difficulty::Medium => rng.pick(&["0.5", "1", "2"]),
-        Difficulty::Hard => rng.pick(&["0.1", "0.25", "0.5"]),
+    let nears: &[&str] = match diff {
+        Difficulty::Easy => &["1", "2"],
+        Difficulty::Medium => &["0.5", "1", "2"],
+        Difficulty::Hard => &["0.1", "0.25", "0.5"],
     };
-    let pts_text = pts
+    let near = *rng.pick(nears);
+    let points = pts
         .iter()
         .map(|(n, p)| format!("{n}{}", tuple(*p)))
         .collect::<Vec<_>>()
         .join(", ");
-    let cam_text = format!(
-        "A camera at Pe = {} looks at Pr = {} with up vector Vup = {}.",
-        tuple(eye),
-        tuple(look),
-        tuple(up)
-    );
-    let (title, ask, mut statement) = match topic {
+    let camera = CameraText {
+        eye: tuple(eye),
+        look: tuple(look),
+        up: tuple(up),
+    };
+    let (title, ask, statement, per) = match topic {
         Topic::Basis => (
-            "camera basis",
-            r#"["view"]"#,
-            format!("{cam_text} Find the camera axes n, u and v."),
-        ),
-        Topic::View => (
-            "eye coordinates",
-            r#"["view"]"#,
-            format!("{cam_text} Find the camera axes n, u, v and the eye coordinates of the points {pts_text}."),
-        ),
-        Topic::Project => (
-            "projection onto the near plane",
-            r#"["project"]"#,
-            format!("{cam_text} With near = {near}, project the points {pts_text} onto the near plane z = d = −near (centre of projection at the eye); give (xp, yp, zp)."),
-        ),
-        _ => (
-            "the viewing pipeline",
-            r#"["view", "project", "window", "viewport"]"#,
+            DrawnTitle::Basis,
+            "view",
+            Statement::Basis(camera),
             String::new(),
         ),
+        Topic::View => (
+            DrawnTitle::EyeCoordinates,
+            "view",
+            Statement::View(camera, points),
+            String::new(),
+        ),
+        Topic::Project => (
+            DrawnTitle::Projection,
+            "project",
+            Statement::Project(camera, points, near.to_string()),
+            format!("[perspective]\nnear = {near}\n\n"),
+        ),
+        _ => {
+            let (statement, per) = pipeline_setup(diff, near, camera, points, rng);
+            (DrawnTitle::Pipeline, "pipeline", statement, per)
+        }
     };
-    let mut per = String::new();
-    if topic == Topic::Project {
-        let _ = writeln!(per, "[perspective]\nnear = {near}\n");
-    }
-    if topic == Topic::Pipeline {
-        (statement, per) = pipeline_setup(diff, near, &cam_text, &pts_text, rng);
-    }
-    let mut t = String::new();
-    let _ = writeln!(t, "title = {}", tstr(&capitalized(title)));
-    let _ = writeln!(t, "statement = {}", tstr(&statement));
-    let _ = writeln!(t, "ask = {ask}\n");
+    let ask = match ask {
+        "pipeline" => r#"["view", "project", "window", "viewport"]"#.to_string(),
+        one => format!("[\"{one}\"]"),
+    };
+    let mut t = format!("ask = {ask}\n\n");
     let _ = writeln!(
         t,
         "[camera]\neye = {}\nlook = {}\nup = {}\n",
@@ -275,11 +339,15 @@ fn camera_problem(topic: Topic, diff: Difficulty, rng: &mut SplitMix64) -> Strin
     if topic == Topic::Basis {
         t.push_str("[check]\nkeys = [\"view.n\", \"view.u\", \"view.v\"]\n");
     }
-    t
+    Some(Draft {
+        title,
+        statement,
+        body: t,
+    })
 }
 
-/// The named points of a camera problem, near the look-at point: none for
-/// the basis, three for the pipeline, else two or three.
+/// The named points of a camera problem, near the look-at point and all
+/// different: none for the basis, three for the pipeline, else two or three.
 fn camera_points(
     topic: Topic,
     diff: Difficulty,
@@ -292,17 +360,21 @@ fn camera_points(
         _ => 2 + rng.below(2) as usize,
     };
     let spread = if diff == Difficulty::Hard { 3 } else { 2 };
-    ["A", "B", "C"][..npts]
-        .iter()
-        .map(|n| {
+    let mut pts: Vec<(String, [i64; 3])> = Vec::new();
+    for n in &["A", "B", "C"][..npts] {
+        let p = loop {
             let p = [
                 look[0] + rng.range(-spread, spread),
                 look[1] + rng.range(-spread, spread),
                 look[2] + rng.range(-spread, spread),
             ];
-            (n.to_string(), p)
-        })
-        .collect()
+            if pts.iter().all(|(_, q)| *q != p) {
+                break p;
+            }
+        };
+        pts.push((n.to_string(), p));
+    }
+    pts
 }
 
 /// A pipeline problem's perspective set-up (fovy, aspect, viewport drawn
@@ -310,10 +382,10 @@ fn camera_points(
 fn pipeline_setup(
     diff: Difficulty,
     near: &str,
-    cam_text: &str,
-    pts_text: &str,
+    camera: CameraText,
+    points: String,
     rng: &mut SplitMix64,
-) -> (String, String) {
+) -> (Statement, String) {
     let fovy = *rng.pick(match diff {
         Difficulty::Easy => &[90][..],
         Difficulty::Medium => &[45, 60, 90][..],
@@ -321,26 +393,37 @@ fn pipeline_setup(
     });
     let aspect = *rng.pick(&["1", "2", "1.5"]);
     let vp = *rng.pick(&["[200, 100]", "[400, 200]", "[300, 200]"]);
-    let statement = format!(
-        "{cam_text} The perspective set-up is near = {near}, fovy = {fovy}°, aspect = {aspect}, viewport {} pixels. For the points {pts_text}: (1) find n, u, v and the eye coordinates; (2) project them onto the near plane z = −near; (3) find the viewing window (top, bottom, left, right, height, width); (4) find the pixel coordinates of the projected points.",
-        vp.trim_matches(['[', ']']).replace(", ", "x")
-    );
+    let statement = Statement::Pipeline {
+        camera,
+        points,
+        near: near.to_string(),
+        fovy: fovy.to_string(),
+        aspect: aspect.to_string(),
+        viewport: vp.trim_matches(['[', ']']).replace(", ", "x"),
+    };
     let per = format!(
         "[perspective]\nnear = {near}\nfovy = {fovy}\naspect = {aspect}\nviewport = {vp}\n\n"
     );
     (statement, per)
 }
 
-fn window_problem(diff: Difficulty, rng: &mut SplitMix64) -> String {
+/// The window from fovy, aspect and near. Easy: fovy = 90° (top = near),
+/// 20 different problems; medium: a fovy whose tangent has one surd; hard:
+/// a fovy whose half has no tangent in square roots (20°, 25°, 35°, 40°).
+fn window_problem(diff: Difficulty, rng: &mut SplitMix64) -> Option<Draft> {
     let (fovy, aspect, near): (i64, &str, &str) = match diff {
-        Difficulty::Easy => (90, *rng.pick(&["1", "2"]), *rng.pick(&["1", "2", "3"])),
+        Difficulty::Easy => (
+            90,
+            *rng.pick(&["1", "2", "1.5", "0.5"]),
+            *rng.pick(&["1", "2", "3", "4", "5"]),
+        ),
         Difficulty::Medium => (
             *rng.pick(&[30, 45, 60, 120]),
             *rng.pick(&["1.5", "2", "4/3"]),
             *rng.pick(&["0.5", "1", "0.1"]),
         ),
         Difficulty::Hard => (
-            *rng.pick(&[40, 50, 70, 75]),
+            *rng.pick(&[40, 50, 70, 80]),
             *rng.pick(&["16/9", "1.6", "1.25"]),
             *rng.pick(&["0.1", "0.25", "0.3"]),
         ),
@@ -350,11 +433,13 @@ fn window_problem(diff: Difficulty, rng: &mut SplitMix64) -> String {
     } else {
         aspect.to_string()
     };
-    format!(
-        "title = {}\nstatement = {}\nask = [\"window\"]\n\n[perspective]\nnear = {near}\nfovy = {fovy}\naspect = {aspect_toml}\n",
-        tstr("The viewing window"),
-        tstr(&format!("A perspective camera has fovy = {fovy}°, aspect ratio {aspect} and near = {near}. Find the viewing window on the near plane: top, bottom, left, right, height and width.")),
-    )
+    Some(Draft {
+        title: DrawnTitle::Window,
+        statement: Statement::Window(fovy.to_string(), aspect.to_string(), near.to_string()),
+        body: format!(
+            "ask = [\"window\"]\n\n[perspective]\nnear = {near}\nfovy = {fovy}\naspect = {aspect_toml}\n"
+        ),
+    })
 }
 
 /// The clipping box (corners) for the difficulty, and how far outside it
@@ -449,24 +534,23 @@ fn clip_ends(
     }
 }
 
-fn clip_problem(diff: Difficulty, index: usize, rng: &mut SplitMix64) -> String {
+fn clip_problem(diff: Difficulty, status: usize, rng: &mut SplitMix64) -> Option<Draft> {
     let (min, max, pad) = clip_box(diff, rng);
-    let (p0, p1) = clip_ends(index % 3, (min, max, pad), rng);
+    let (p0, p1) = clip_ends(status, (min, max, pad), rng);
     if p0 == p1 {
-        return String::new(); // rejected by accept()
+        return None;
     }
-    format!(
-        "title = {}\nstatement = {}\nask = [\"clip\"]\n\n[clip]\nmin = {}\nmax = {}\n\n[[clip.segment]]\nfrom = {}\nto = {}\n",
-        tstr("Line clipping"),
-        tstr(&format!(
-            "The view volume is the box {}min ≤ x ≤ {}max... with corners {} and {}. For the segment P0{} P1{}: (a) give the region codes of P0 and P1 (6 bits, bit 1 rightmost: left, right, bottom, top, front, back); (b) is the segment accepted, rejected or clipped, and what is left of it?",
-            "", "", tuple(min), tuple(max), tuple(p0), tuple(p1)
-        ).replace(" box min ≤ x ≤ max... with corners", " box with corners")),
-        ints(min),
-        ints(max),
-        ints(p0),
-        ints(p1)
-    )
+    Some(Draft {
+        title: DrawnTitle::Clipping,
+        statement: Statement::Clip(tuple(min), tuple(max), tuple(p0), tuple(p1)),
+        body: format!(
+            "ask = [\"clip\"]\n\n[clip]\nmin = {}\nmax = {}\n\n[[clip.segment]]\nfrom = {}\nto = {}\n",
+            ints(min),
+            ints(max),
+            ints(p0),
+            ints(p1)
+        ),
+    })
 }
 
 /// A lighting problem's vectors, model and constants for the difficulty:
@@ -534,24 +618,24 @@ fn shade_draw(diff: Difficulty, rng: &mut SplitMix64) -> Draw {
 fn shade_asked(
     model: &str,
     (ka, kd, ks, sh): (&str, &str, &str, &str),
-) -> (String, &'static str, &'static str) {
+) -> (String, ShadeAsked, &'static str) {
     match model {
-    "lambert" => (
-        format!("ka = {ka}, kd = {kd}"),
-        "cos α = L·N, the ambient and diffuse terms",
-        r#"["shade.cos_alpha", "shade.ambient", "shade.diffuse", "shade.color"]"#,
-    ),
-    "blinn" => (
-        format!("ka = {ka}, kd = {kd}, ks = {ks}, n = {sh}"),
-        "cos α = L·N, the half vector H = norm(L + V) and N·H, the ambient, diffuse and specular terms",
-        r#"["shade.cos_alpha", "shade.H", "shade.N_dot_H", "shade.ambient", "shade.diffuse", "shade.specular", "shade.color"]"#,
-    ),
-    _ => (
-        format!("ka = {ka}, kd = {kd}, ks = {ks}, n = {sh}"),
-        "cos α = L·N, R = 2N(L·N) − L, cos β = R·V, the ambient, diffuse and specular terms",
-        r#"["shade.cos_alpha", "shade.R", "shade.cos_beta", "shade.ambient", "shade.diffuse", "shade.specular", "shade.color"]"#,
-    ),
-}
+        "lambert" => (
+            format!("ka = {ka}, kd = {kd}"),
+            ShadeAsked::Lambert,
+            r#"["shade.cos_alpha", "shade.ambient", "shade.diffuse", "shade.color"]"#,
+        ),
+        "blinn" => (
+            format!("ka = {ka}, kd = {kd}, ks = {ks}, n = {sh}"),
+            ShadeAsked::Blinn,
+            r#"["shade.cos_alpha", "shade.H", "shade.N_dot_H", "shade.ambient", "shade.diffuse", "shade.specular", "shade.color"]"#,
+        ),
+        _ => (
+            format!("ka = {ka}, kd = {kd}, ks = {ks}, n = {sh}"),
+            ShadeAsked::Phong,
+            r#"["shade.cos_alpha", "shade.R", "shade.cos_beta", "shade.ambient", "shade.diffuse", "shade.specular", "shade.color"]"#,
+        ),
+    }
 }
 
 /// A lighting problem at one point: white directional light L, viewer V,
@@ -559,7 +643,7 @@ fn shade_asked(
 /// normal with a rational length (3-4-5), so every answer is rational;
 /// medium: normals like (0, 1, 1) with one surd, the models phong, lambert
 /// and blinn; hard: any small vectors and coefficients. Always lit (N·L > 0).
-fn shade_problem(diff: Difficulty, rng: &mut SplitMix64) -> String {
+fn shade_problem(diff: Difficulty, rng: &mut SplitMix64) -> Option<Draft> {
     let colors: [[&str; 3]; 5] = [
         ["1", "1", "0"],
         ["1", "0", "0"],
@@ -576,21 +660,26 @@ fn shade_problem(diff: Difficulty, rng: &mut SplitMix64) -> String {
         )
     });
     let (ka, kd, ks, sh) = k.map_or(("0.4", "0.6", "0.7", "4"), |k| (k[0], k[1], k[2], k[3]));
-    let (consts, asked, keys) = shade_asked(model, (ka, kd, ks, sh));
-    let statement = format!(
-        "A surface point with normal N = {} and color Cs = ({}) is lit by one white directional light from L = {} and seen from V = {}. With the {model} model ({consts}), find {asked} and the color (each channel clamped to [0, 1]).",
-        tuple(n),
-        color.join(", "),
-        tuple(l),
-        tuple(v)
-    );
-    format!(
-        "title = {}\nstatement = {}\nask = [\"shade\"]\n\n[shade]\nmodel = \"{model}\"\nlight = {}\nnormal = {}\nview = {}\ncolor = {}\n{coeffs}\n[check]\nkeys = {keys}\n",
-        tstr("Lighting at a point"),
-        tstr(&statement),
+    let (constants, asked, keys) = shade_asked(model, (ka, kd, ks, sh));
+    let statement = Statement::Shade {
+        normal: tuple(n),
+        color: format!("({})", color.join(", ")),
+        light: tuple(l),
+        view: tuple(v),
+        model: model.to_string(),
+        constants,
+        asked,
+    };
+    let body = format!(
+        "ask = [\"shade\"]\n\n[shade]\nmodel = \"{model}\"\nlight = {}\nnormal = {}\nview = {}\ncolor = {}\n{coeffs}\n[check]\nkeys = {keys}\n",
         ints(l),
         ints(n),
         ints(v),
         arr(&color.iter().map(|c| c.to_string()).collect::<Vec<_>>()),
-    )
+    );
+    Some(Draft {
+        title: DrawnTitle::Lighting,
+        statement,
+        body,
+    })
 }

@@ -2,17 +2,19 @@
 //! (docs/spec.md §5) drawn from a seeded [`SplitMix64`] with nice numbers for its
 //! difficulty, checked to be non-degenerate and solvable, and solved exactly
 //! for its key; the question sheet and the key (with the full worked
-//! solution) are rendered as Markdown, LaTeX or JSON.
+//! solution) are rendered as Markdown, LaTeX or JSON. Titles and statements
+//! are message keys, written in the user's language by `report`.
 //!
-//! Nice numbers: at easy level |Pe − Pr| is an integer (Pythagorean triples,
-//! also for |Vup × (Pe − Pr)|, so u, v, n are rational), fovy = 90°, clipping
-//! boxes at the origin; at medium level the answers have a single surd (one
-//! of the two norms is an integer), fovy ∈ {30°, 45°, 60°, 120°}; at hard
-//! level anything goes. Never degenerate: the up vector is not parallel to
-//! the view direction, points lie beyond the near plane (so not on the
-//! projection plane), clipping endpoints are off the box planes and no
-//! segment lies in a box plane. Clipping problems cycle through partial
-//! (clipped), accepted and rejected segments at every level.
+//! Nice numbers, screened on the exact key: at easy level every answer is
+//! rational (Pythagorean directions, fovy = 90°, boxes at the origin); at
+//! medium level the answers have at most one square root between them; at
+//! hard level anything goes, but every answer has its exact form except a
+//! window resting on tan(fovy/2) for an angle with no form in square roots.
+//! Never degenerate: the up vector is not parallel to the view direction,
+//! points are different and lie beyond the near plane, clipping endpoints
+//! are off the box planes. No problem repeats within an exam. The clipping
+//! problems of an exam take the statuses clipped, accepted and rejected in
+//! an order drawn from the seed.
 
 mod draw;
 pub mod quiz;
@@ -21,12 +23,14 @@ pub use draw::problem;
 
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
+use crate::msg::Msg;
 use crate::num::format::fmt_dec;
 use crate::num::rng::SplitMix64;
 use crate::stages::trace::Report;
 use crate::stages::trace::Val;
 use crate::tutor::solve::lookup;
 
+use std::collections::HashSet;
 use std::fmt::Write as _;
 
 /// What the problems are about.
@@ -61,9 +65,15 @@ pub enum Difficulty {
 
 /// One generated problem.
 pub struct Generated {
-    /// The problem file's text.
-    pub toml: String,
-    /// The parsed problem.
+    /// The title, said in the user's language when written.
+    pub title: Msg,
+    /// The statement, said in the user's language when written.
+    pub statement: Msg,
+    /// The problem file after its `title` and `statement` lines: what is
+    /// asked and the data (the same in every language).
+    pub body: String,
+    /// The parsed problem; its title and statement are filled in the
+    /// user's language by `report::sheets::localize`.
     pub problem: ProblemIn,
     /// The exact solution.
     pub report: Report,
@@ -80,18 +90,49 @@ pub fn variant_seed(seed: u64, v: u32) -> u64 {
     }
 }
 
-/// The problems of one exam: problem i is on topic i mod (number of topics).
+/// The problems of one exam: problem i is on topic i mod (number of
+/// topics), drawn from its own fork of the seed, and unlike every earlier
+/// problem of the exam. The k-th clipping problem wants status
+/// `order[k mod 3]`, `order` a permutation of (clipped, accepted, rejected)
+/// drawn from the seed: three clipping problems show all three, and two
+/// may show any two.
 pub fn exam(topics: &[Topic], diff: Difficulty, count: u32, seed: u64) -> Result<Vec<Generated>> {
     if topics.is_empty() {
         return Err(Error::new("topic", "give at least one topic"));
     }
-    (0..count as usize)
-        .map(|i| {
-            let mut rng = SplitMix64::fork(seed, i as u64);
-            // k: the problem's index among those of its topic
-            problem(topics[i % topics.len()], diff, i / topics.len(), &mut rng)
-        })
-        .collect()
+    let order = clip_order(seed);
+    let mut seen = HashSet::new();
+    let mut out = Vec::with_capacity(count.min(10_000) as usize);
+    for i in 0..count as usize {
+        let mut rng = SplitMix64::fork(seed, i as u64);
+        // k: the problem's index among those of its topic
+        let k = i / topics.len();
+        let g = problem(
+            topics[i % topics.len()],
+            diff,
+            order[k % 3],
+            &seen,
+            &mut rng,
+        )?;
+        seen.insert(g.body.clone());
+        out.push(g);
+    }
+    Ok(out)
+}
+
+/// The order of the clipping statuses in an exam (0 clipped, 1 accepted,
+/// 2 rejected): one of the six permutations, drawn from the seed.
+pub fn clip_order(seed: u64) -> [usize; 3] {
+    const ORDERS: [[usize; 3]; 6] = [
+        [0, 1, 2],
+        [0, 2, 1],
+        [1, 0, 2],
+        [1, 2, 0],
+        [2, 0, 1],
+        [2, 1, 0],
+    ];
+    let mut rng = SplitMix64::fork(seed, 0x434c_4950); // "CLIP"
+    *rng.pick(&ORDERS)
 }
 
 /// `view,clip` for the titles.
@@ -102,10 +143,10 @@ pub fn topics_name(t: &[Topic]) -> String {
         .join(",")
 }
 
-/// The answer-key file: `key = value` lines in `grafika check` format, each
-/// value exact where it has an exact form.
-pub fn key_toml(g: &Generated) -> String {
-    let mut s = format!("# Answer key: {}\n", g.problem.title);
+/// The answers of the answer-key file: `key = value` lines in `grafika
+/// check` format, each value exact where it has an exact form.
+pub fn key_lines(g: &Generated) -> String {
+    let mut s = String::new();
     for k in &g.keys {
         if let Some(v) = lookup(&g.report.result, k) {
             let _ = writeln!(s, "{k} = {}", answer_toml(v));
