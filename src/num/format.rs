@@ -55,6 +55,9 @@ pub fn shown(s: &Shown, digits: usize, exact_mode: bool) -> String {
     let dec = fmt_dec(s.value, digits);
     match &s.pretty {
         Some(p) if is_plain_decimal(p) => p.replace('-', "−"),
+        // Beyond the doubles (1/10^400 is 0 as a double, 10^400 is ∞): the
+        // exact form alone, never a decimal that says `= 0`.
+        Some(p) if (s.value == 0.0 && p != "0") || !s.value.is_finite() => p.replace('-', "−"),
         Some(p) => {
             let sep = if dec.parse::<f64>().ok() == Some(s.value) {
                 "="
@@ -67,5 +70,27 @@ pub fn shown(s: &Shown, digits: usize, exact_mode: bool) -> String {
             format!("≈ {}", dec.replace('-', "−"))
         }
         None => dec.replace('-', "−"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_exact_value_beyond_the_doubles_is_not_written_as_zero() {
+        // 1/10^400 is positive; its nearest double is 0.
+        let tiny = Shown {
+            value: 0.0,
+            exact: Some("1/1e400".into()),
+            pretty: Some("√3/30000".into()),
+        };
+        assert_eq!(shown(&tiny, 4, true), "√3/30000");
+        let zero = Shown {
+            value: 0.0,
+            exact: Some("0".into()),
+            pretty: Some("0".into()),
+        };
+        assert_eq!(shown(&zero, 4, true), "0");
     }
 }

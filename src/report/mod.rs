@@ -98,6 +98,10 @@ impl Style {
                 let approx = ns
                     .iter()
                     .any(|s| fmt_dec(s.value, self.digits).parse::<f64>().ok() != Some(s.value));
+                let beyond = ns.iter().any(|s| {
+                    (s.value == 0.0 && s.pretty.as_deref().is_some_and(|p| p != "0"))
+                        || !s.value.is_finite()
+                });
                 if has_form {
                     let forms: Vec<String> = ns
                         .iter()
@@ -109,6 +113,10 @@ impl Style {
                                 .unwrap_or_else(|| format!("≈{d}"))
                         })
                         .collect();
+                    if beyond {
+                        // beyond the doubles: the exact forms alone
+                        return format!("({})", forms.join(", "));
+                    }
                     format!(
                         "({}) {} ({})",
                         forms.join(", "),
@@ -463,5 +471,21 @@ mod tests {
             pretty: None,
         };
         assert_eq!(st.num(&approx), "≈ 0.4142");
+    }
+
+    #[test]
+    fn a_vector_beyond_the_doubles_shows_its_exact_forms_only() {
+        // v = (1/10^400, 0): the nearest doubles are (0, 0), which would
+        // read "(…) = (0, 0)".
+        let st = Style::new(4, true, lang::Lang::En);
+        let n = |value: f64, p: &str| {
+            Val::Num(Shown {
+                value,
+                exact: Some(p.into()),
+                pretty: Some(p.into()),
+            })
+        };
+        let v = [n(0.0, "1/1000"), n(0.0, "0")];
+        assert_eq!(st.list(&v), "(1/1000, 0)");
     }
 }
