@@ -369,6 +369,8 @@ pub enum Msg {
     Statement(Box<Statement>),
     /// `generate`: only n different problems of a topic at a difficulty.
     ErrFewDistinct(String, String, usize),
+    /// `--html` given to a command that writes no worked solution.
+    ErrHtmlCommand,
 
     // ---- warnings ----
     /// Up nearly parallel to the view direction (angle in radians).

@@ -253,7 +253,7 @@ fn easy_cameras_have_rational_axes() {
 }
 
 #[test]
-fn latex_keys_are_ascii_and_compile_with_pdflatex() {
+fn latex_keys_are_ascii() {
     let dir = tmp("tex");
     grafika()
         .args([
@@ -269,26 +269,7 @@ fn latex_keys_are_ascii_and_compile_with_pdflatex() {
     }
     let key = std::fs::read_to_string(dir.join("key.tex")).unwrap();
     assert!(key.contains("\\sqrt{"), "exact forms are set with \\sqrt");
-    // Compile when pdflatex is installed (texlive-latex-base).
-    if std::process::Command::new("pdflatex")
-        .arg("--version")
-        .output()
-        .is_ok()
-    {
-        let out = std::process::Command::new("pdflatex")
-            .args(["-interaction=nonstopmode", "-halt-on-error", "key.tex"])
-            .current_dir(&dir)
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stdout)
-        );
-        assert!(dir.join("key.pdf").exists());
-    } else {
-        eprintln!("pdflatex not installed: LaTeX not compiled");
-    }
+    // tests/tools.rs compiles a key with pdflatex (or says it was skipped).
 }
 
 #[test]

@@ -39,6 +39,9 @@ pub struct Common {
     /// The language of the words: id (Bahasa Indonesia) or en (default: GRAFIKA_LANG, then the locale).
     #[arg(long, value_enum, global = true)]
     pub lang: Option<Lang>,
+    /// Also write the worked solution as one self-contained HTML page (formulas in MathML, figures inline) to this new file (calculator commands and solve).
+    #[arg(long, value_name = "FILE.html", global = true)]
+    pub html: Option<std::path::PathBuf>,
 }
 
 /// The subcommands.
@@ -367,6 +370,8 @@ pub enum Format {
     Md,
     /// questions.tex and key.tex (plain pdflatex).
     Latex,
+    /// questions.html and key.html: self-contained pages, formulas in MathML.
+    Html,
     /// exam.json (statements, answers, worked steps).
     Json,
     /// quiz.xml: Moodle XML, one Cloze question per problem and variant.

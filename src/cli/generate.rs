@@ -158,13 +158,21 @@ fn write_exam(
         }
         Format::Md => Doc::Markdown,
         Format::Latex => Doc::Latex,
+        Format::Html => Doc::Html,
         Format::Moodle | Format::Gift => return Ok(files),
     };
-    let ext = if doc == Doc::Markdown { "md" } else { "tex" };
+    let ext = match doc {
+        Doc::Markdown => "md",
+        Doc::Latex => "tex",
+        Doc::Html => "html",
+    };
     let (q, k) = sheets(doc, exam, style);
-    put(format!("questions.{ext}"), doc.document(&title(None), &q))?;
+    put(
+        format!("questions.{ext}"),
+        doc.document(&title(None), &q, style.lang),
+    )?;
     let key = key_title(&title(Some(a.seed)), style.lang);
-    put(format!("key.{ext}"), doc.document(&key, &k))?;
+    put(format!("key.{ext}"), doc.document(&key, &k, style.lang))?;
     Ok(files)
 }
 

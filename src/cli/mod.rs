@@ -10,6 +10,7 @@ pub mod render;
 
 use crate::bench::accuracy::Stage;
 use crate::error::{Error, Result};
+use crate::msg::Msg;
 use crate::num::Precision;
 use crate::report::lang::{tr, Lang};
 use crate::report::Style;
@@ -106,6 +107,10 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
     };
     let style = style_of(&cli);
     let json = cli.common.json;
+    if cli.common.html.is_some() && !writes_a_report(&cli.command) {
+        let e = Error::said("html", Msg::ErrHtmlCommand);
+        return report_error(&e, json, style.lang);
+    }
     let printed = match &cli.command {
         Command::Bench { quick, cases } => Ok((bench(*quick, *cases, json, style.lang), 0)),
         Command::Completions { shell } => Ok((completions(*shell), 0)),
@@ -115,6 +120,7 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
         Command::Practice(a) => practice::run(a, json, &style).map(|()| (String::new(), 0)),
         _ => run(&cli).and_then(|report| {
             write_figure(&cli.command, &report, &style)?;
+            write_html(&cli, &report, &style)?;
             Ok((report_text(&report, json, &style), 0))
         }),
     };
@@ -182,6 +188,73 @@ fn write_figure(cmd: &Command, report: &Report, style: &Style) -> Result<()> {
         .open(path)
         .map_err(fail)?;
     f.write_all(to_svg(&fig).as_bytes()).map_err(fail)
+}
+
+/// Whether a command's result is a worked solution (a report) that
+/// `--html` can write: the calculator commands, `solve` and `render`.
+fn writes_a_report(c: &Command) -> bool {
+    !matches!(
+        c,
+        Command::Bench { .. }
+            | Command::Completions { .. }
+            | Command::Man
+            | Command::Check(_)
+            | Command::Generate(_)
+            | Command::Practice(_)
+    )
+}
+
+/// `--html FILE.html`: the worked solution as a new self-contained page
+/// (an existing file is never overwritten).
+fn write_html(cli: &Cli, report: &Report, style: &Style) -> Result<()> {
+    use crate::report::figure::{builders::figure_of, svg::to_svg};
+    let Some(path) = &cli.common.html else {
+        return Ok(());
+    };
+    let figures: Vec<(String, String)> = figure_of(report, style)
+        .map(|f| (to_svg(&f), f.title.clone()))
+        .into_iter()
+        .collect();
+    let title = page_title(report, style);
+    let page = crate::report::html::report_page(report, style, &title, &figures);
+    create_new(path, page.as_bytes(), "html", style)
+}
+
+/// The page's title: the problem's title for `solve`, else the command.
+fn page_title(report: &Report, style: &Style) -> String {
+    match report.input.get("title").and_then(|t| t.as_str()) {
+        Some(t) => format!("grafika {}: {t}", report.command),
+        None => format!(
+            "grafika {} — {}",
+            report.command,
+            style.tr("worked solution", "penyelesaian")
+        ),
+    }
+}
+
+/// Writes a new file; an existing one is an error on `field` (never
+/// overwritten).
+fn create_new(path: &std::path::Path, bytes: &[u8], field: &str, style: &Style) -> Result<()> {
+    use std::io::Write;
+    let fail = |e: std::io::Error| {
+        let msg = if e.kind() == std::io::ErrorKind::AlreadyExists {
+            style
+                .tr(
+                    "exists; remove it or choose another name",
+                    "sudah ada; hapus atau pilih nama lain",
+                )
+                .to_string()
+        } else {
+            e.to_string()
+        };
+        Error::new(field, format!("{}: {msg}", path.display()))
+    };
+    let mut f = std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(path)
+        .map_err(fail)?;
+    f.write_all(bytes).map_err(fail)
 }
 
 /// How numbers and words are written: `--digits`, exact or not, `--lang`

@@ -3,6 +3,8 @@
 //! compiles (ASCII only: every symbol the steps use is mapped to a LaTeX
 //! command). Used for exam answer keys.
 
+use crate::report::html;
+use crate::report::lang::Lang;
 use crate::report::{Report, Style};
 use crate::stages::trace::{Step, Val};
 
@@ -13,6 +15,8 @@ pub enum Doc {
     Markdown,
     /// LaTeX (article class, no packages beyond the base distribution).
     Latex,
+    /// One self-contained HTML page, formulas in MathML (`report::html`).
+    Html,
 }
 
 impl Doc {
@@ -21,6 +25,7 @@ impl Doc {
         match self {
             Doc::Markdown => s.replace('|', "\\|").replace('*', "\\*"),
             Doc::Latex => latex_text(s),
+            Doc::Html => crate::report::figure::xml_escape(s),
         }
     }
 
@@ -32,6 +37,7 @@ impl Doc {
                 let cmd = ["section*", "subsection*", "subsubsection*", "paragraph"][level.min(3)];
                 format!("\\{cmd}{{{}}}\n\n", latex_text(s))
             }
+            Doc::Html => html::heading(level, s),
         }
     }
 
@@ -40,6 +46,7 @@ impl Doc {
         match self {
             Doc::Markdown => format!("`{s}`"),
             Doc::Latex => latex_text(s),
+            Doc::Html => crate::report::mathml::block(s),
         }
     }
 
@@ -47,6 +54,7 @@ impl Doc {
     pub fn named(self, st: &Style, name: &str, v: &Val, arrow: bool) -> String {
         let lead = if arrow { "⇒ " } else { "" };
         match (self, v) {
+            (Doc::Html, _) => html::named(st, name, v, arrow),
             (Doc::Markdown, Val::List(rows)) if v.is_matrix() => {
                 // A table with an empty header row (Markdown tables need one).
                 let width = match rows.first() {
@@ -126,6 +134,9 @@ impl Doc {
     }
 
     fn step(self, k: usize, s: &Step, st: &Style) -> String {
+        if self == Doc::Html {
+            return html::step(k, s, st);
+        }
         let mut lines: Vec<String> = Vec::new();
         if !s.formula.is_empty() {
             lines.push(self.formula(&st.w(&s.formula)));
@@ -136,7 +147,7 @@ impl Doc {
             let n = &st.w(n);
             lines.push(match self {
                 Doc::Markdown => format!("*({})*", self.text(n)),
-                Doc::Latex => format!("\\emph{{({})}}", latex_text(n)),
+                _ => format!("\\emph{{({})}}", latex_text(n)),
             });
         }
         match self {
@@ -153,7 +164,7 @@ impl Doc {
                 out.push('\n');
                 out
             }
-            Doc::Latex => {
+            _ => {
                 let mut out = format!(
                     "\\paragraph{{{} {k}. {}}}\n\\begin{{itemize}}\n",
                     st.tr("Step", "Langkah"),
@@ -178,6 +189,7 @@ impl Doc {
     /// A list of `name = value` lines.
     pub fn answers(self, st: &Style, items: &[(String, Val)]) -> String {
         match self {
+            Doc::Html => html::answers(st, items),
             Doc::Markdown => {
                 items
                     .iter()
@@ -196,8 +208,9 @@ impl Doc {
     }
 
     /// A whole document around a body.
-    pub fn document(self, title: &str, body: &str) -> String {
+    pub fn document(self, title: &str, body: &str, lang: Lang) -> String {
         match self {
+            Doc::Html => html::page(title, body, lang.code()),
             Doc::Markdown => format!("# {}\n\n{body}", self.text(title)),
             Doc::Latex => format!(
                 "\\documentclass[11pt]{{article}}\n\\usepackage[margin=2cm]{{geometry}}\n\\setlength{{\\parindent}}{{0pt}}\n\\title{{{}}}\n\\date{{}}\n\\begin{{document}}\n\\maketitle\n\n{body}\\end{{document}}\n",

@@ -48,6 +48,11 @@ pub fn words(m: &Msg, lang: Lang) -> String {
                 format!("could not draw a {topic} problem at {level} level unlike the {n} before it: there are few different ones at this level; ask for fewer problems (--count) or another --difficulty")
             }
         }
+        Msg::ErrHtmlCommand => pick(
+            id,
+            "writes the worked solution of basis, view, project, window, clip, shade, solve and render; for exams use generate --format html",
+            "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html",
+        ),
         Msg::At(place, m) => format!("{place}: {}", words(m, lang)),
         Msg::ErrSamePoint(_)
         | Msg::ErrUpZero
@@ -876,6 +881,7 @@ mod tests {
             v.push(Msg::TrivialNote(t));
         }
         v.push(Msg::ErrFewDistinct("window".into(), "easy".into(), 20));
+        v.push(Msg::ErrHtmlCommand);
         v.extend(drawn_messages());
         v
     }
@@ -1088,7 +1094,8 @@ mod tests {
             | ErrFar(..)
             | DrawnTitle(_)
             | Statement(_)
-            | ErrFewDistinct(..) => {}
+            | ErrFewDistinct(..)
+            | ErrHtmlCommand => {}
         }
     }
 

@@ -1,0 +1,187 @@
+//! Worked solutions as one self-contained HTML page: the same steps as the
+//! text and the documents (`doc`), the formulas and values in MathML
+//! (`mathml`), exact forms beside decimals, the figures inline as SVG. No
+//! script, font or style sheet is fetched; the page prints on A4.
+
+use super::figure::xml_escape;
+use super::mathml;
+use super::{Report, Style};
+use crate::msg::Msg;
+use crate::stages::trace::{Step, Val};
+
+/// The page's style: readable on a screen, one column, and A4 in print
+/// (steps are not split across pages).
+const CSS: &str = "\
+body{font-family:system-ui,sans-serif;line-height:1.5;max-width:48rem;margin:2rem auto;padding:0 1rem;color:#111}\
+h1{font-size:1.6rem}h2{font-size:1.3rem;border-bottom:1px solid #999}h3{font-size:1.15rem}\
+h4{font-size:1.05rem;margin:1rem 0 .2rem}h5{font-size:1rem;margin:.2rem 0}\
+section.step{border-left:3px solid #0072B2;padding:.2rem .8rem;margin:.8rem 0;break-inside:avoid}\
+section.step ul{list-style:none;padding-left:.5rem;margin:.2rem 0}\
+.note{font-style:italic;color:#333}.warning{border:1px solid #D55E00;padding:.4rem}\
+math[display=block]{margin:.3rem 0}\
+table.answers{border-collapse:collapse;margin:.5rem 0}\
+table.answers th,table.answers td{border:1px solid #999;padding:.2rem .6rem;text-align:left}\
+figure{margin:1rem 0;break-inside:avoid}figure svg{max-width:100%;height:auto}\
+@page{size:A4;margin:18mm}\
+@media print{body{margin:0;max-width:none}a{color:inherit}}";
+
+/// A whole page around a body.
+pub fn page(title: &str, body: &str, lang: &str) -> String {
+    format!(
+        "<!DOCTYPE html>\n<html lang=\"{lang}\">\n<head>\n<meta charset=\"utf-8\"/>\n\
+         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"/>\n\
+         <title>{t}</title>\n<style>{CSS}</style>\n</head>\n<body>\n<h1>{t}</h1>\n{body}</body>\n</html>\n",
+        t = xml_escape(title)
+    )
+}
+
+/// A heading of the given level (1 = a problem, 2 = a section, 3 = a part).
+pub fn heading(level: usize, s: &str) -> String {
+    let h = (level + 1).min(6);
+    format!("<h{h}>{}</h{h}>\n", xml_escape(s))
+}
+
+/// One step: its title, the formula (MathML when it is notation, text when
+/// the caption has words), the values, the results (⇒) and the note.
+pub fn step(k: usize, s: &Step, st: &Style) -> String {
+    let mut out = format!(
+        "<section class=\"step\">\n<h5>{} {k}. {}</h5>\n",
+        st.tr("Step", "Langkah"),
+        xml_escape(&st.w(&s.title))
+    );
+    match &s.formula {
+        Msg::Math(f) if f.is_empty() => {}
+        Msg::Math(f) => out.push_str(&mathml::block(f)),
+        words => out.push_str(&format!("<p>{}</p>", xml_escape(&st.w(words)))),
+    }
+    out.push_str("\n<ul>\n");
+    for (n, v) in &s.values {
+        out.push_str(&format!("<li>{}</li>\n", named(st, n, v, false)));
+    }
+    for (n, v) in &s.result {
+        out.push_str(&format!("<li>{}</li>\n", named(st, n, v, true)));
+    }
+    out.push_str("</ul>\n");
+    if let Some(n) = &s.note {
+        out.push_str(&format!(
+            "<p class=\"note\">({})</p>\n",
+            xml_escape(&st.w(n))
+        ));
+    }
+    out + "</section>\n"
+}
+
+/// `name = value` in MathML: a matrix as a table, numbers and vectors as
+/// notation, words (a status, yes/no) as text.
+pub fn named(st: &Style, name: &str, v: &Val, arrow: bool) -> String {
+    let lead = if arrow { "⇒ " } else { "" };
+    match v {
+        Val::List(rows) if v.is_matrix() => format!(
+            "<math display=\"block\"><mrow>{}<mo>=</mo><mrow><mo>(</mo><mtable>{}</mtable><mo>)</mo></mrow></mrow></math>",
+            mathml::row(&format!("{lead}{name}")),
+            rows.iter().map(|r| matrix_row(st, r)).collect::<String>()
+        ),
+        Val::Num(_) | Val::List(_) => {
+            // "top ≈ 0.182", not "top = ≈ 0.182"
+            let val = st.val_inline(v);
+            let line = match val.strip_prefix("≈ ") {
+                Some(rest) => format!("{lead}{name} ≈ {rest}"),
+                None => format!("{lead}{name} = {val}"),
+            };
+            mathml::inline(&line)
+        }
+        _ => format!(
+            "{} {}",
+            mathml::inline(&format!("{lead}{name} =")),
+            xml_escape(&st.val_inline(v))
+        ),
+    }
+}
+
+/// One row of a matrix: exact forms where there are any.
+fn matrix_row(st: &Style, r: &Val) -> String {
+    let Val::List(cells) = r else {
+        return String::new();
+    };
+    let tds: String = cells
+        .iter()
+        .map(|c| {
+            let text = match c {
+                Val::Num(s) => st.dec(
+                    s.pretty
+                        .clone()
+                        .unwrap_or_else(|| super::fmt_dec(s.value, st.digits)),
+                ),
+                other => st.val_inline(other),
+            };
+            format!("<mtd>{}</mtd>", mathml::row(&text))
+        })
+        .collect();
+    format!("<mtr>{tds}</mtr>")
+}
+
+/// The answers as a table of `name | value` rows (maps of points flattened
+/// to `view.points.A`).
+pub fn answers(st: &Style, items: &[(String, Val)]) -> String {
+    let mut rows = Vec::new();
+    flatten("", items, &mut rows);
+    let body: String = rows
+        .iter()
+        .map(|(k, v)| {
+            let cell = match v {
+                Val::Num(_) | Val::List(_) if !v.is_matrix() => mathml::inline(&st.val_inline(v)),
+                _ if v.is_matrix() => named(st, "", v, false),
+                other => xml_escape(&st.val_inline(other)),
+            };
+            format!("<tr><th>{}</th><td>{cell}</td></tr>\n", xml_escape(k))
+        })
+        .collect();
+    format!("<table class=\"answers\">\n{body}</table>\n")
+}
+
+/// `(key, value)` pairs with maps opened: `points` → `points.A`, …
+fn flatten(prefix: &str, items: &[(String, Val)], out: &mut Vec<(String, Val)>) {
+    for (k, v) in items {
+        let key = if prefix.is_empty() {
+            k.clone()
+        } else {
+            format!("{prefix}.{k}")
+        };
+        match v {
+            Val::Map(kv) => flatten(&key, kv, out),
+            other => out.push((key, other.clone())),
+        }
+    }
+}
+
+/// A figure inline, with its title as the caption.
+pub fn figure(svg: &str, caption: &str) -> String {
+    format!(
+        "<figure>\n{svg}<figcaption>{}</figcaption>\n</figure>\n",
+        xml_escape(caption)
+    )
+}
+
+/// The page of one calculator command or `solve`: the steps grouped by
+/// part, the answer, notes and warnings, and the figures (SVG, each with
+/// its caption).
+pub fn report_page(r: &Report, st: &Style, title: &str, figures: &[(String, String)]) -> String {
+    let mut body = String::new();
+    for w in &r.warnings {
+        body.push_str(&format!(
+            "<p class=\"warning\">{}: {}</p>\n",
+            st.tr("warning", "peringatan"),
+            xml_escape(&st.w(w))
+        ));
+    }
+    for (svg, caption) in figures {
+        body.push_str(&figure(svg, caption));
+    }
+    body.push_str(&super::doc::Doc::Html.steps(r, st));
+    body.push_str(&heading(1, st.tr("Answer", "Jawaban")));
+    body.push_str(&answers(st, &r.result));
+    for n in r.all_notes(st) {
+        body.push_str(&format!("<p class=\"note\">{}</p>\n", xml_escape(&n)));
+    }
+    page(title, &body, st.lang.code())
+}

@@ -1,0 +1,243 @@
+//! The steps' notation as MathML, which current browsers render natively:
+//! `n = (Pe − Pr) / |Pe − Pr|`, `−√2/60 ≈ −0.02357`, `top = near·tan(fovy/2)`.
+//!
+//! A small reader of the notation the steps print: names become `<mi>`,
+//! numbers `<mn>` (with the Indonesian decimal comma, and `7.07e−309` as
+//! 7.07 × 10⁻³⁰⁹), symbols `<mo>`; `√x` and `√(…)` become `<msqrt>`,
+//! superscripts (`²`, `ⁿ`, `ᵀ`, `⁻¹`) `<msup>` and subscripts (`₀`)
+//! `<msub>` of what precedes them.
+
+use super::figure::xml_escape;
+
+/// Inline MathML for a line of notation.
+pub fn inline(s: &str) -> String {
+    format!("<math>{}</math>", row(s))
+}
+
+/// Display (block) MathML for a formula.
+pub fn block(s: &str) -> String {
+    format!("<math display=\"block\">{}</math>", row(s))
+}
+
+/// The notation as one `<mrow>`.
+pub fn row(s: &str) -> String {
+    let chars: Vec<char> = s.chars().collect();
+    let mut items: Vec<String> = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        if c.is_whitespace() {
+            i += 1;
+        } else if superscript(c).is_some() {
+            let (text, next) = run(&chars, i, superscript);
+            i = next;
+            attach(&mut items, "msup", &script(&text));
+        } else if subscript(c).is_some() {
+            let (text, next) = run(&chars, i, subscript);
+            i = next;
+            attach(&mut items, "msub", &script(&text));
+        } else if c == '√' {
+            let (inner, next) = radicand(&chars, i + 1);
+            i = next;
+            items.push(format!("<msqrt>{inner}</msqrt>"));
+        } else if c.is_ascii_digit() {
+            let (num, next) = number(&chars, i);
+            i = next;
+            items.push(num);
+        } else if c.is_alphabetic() {
+            let start = i;
+            while i < chars.len() && (chars[i].is_alphabetic() || chars[i] == '_') {
+                i += 1;
+            }
+            let name: String = chars[start..i].iter().collect();
+            items.push(format!("<mi>{}</mi>", xml_escape(&name)));
+        } else {
+            i += 1;
+            items.push(operator(c));
+        }
+    }
+    format!("<mrow>{}</mrow>", items.concat())
+}
+
+/// A symbol as `<mo>`; brackets and the slash of an inline fraction are
+/// set without the space MathML would give an operator.
+fn operator(c: char) -> String {
+    match c {
+        '(' | ')' | '[' | ']' | '/' | '|' => {
+            format!("<mo lspace=\"0\" rspace=\"0\">{c}</mo>")
+        }
+        _ => format!("<mo>{}</mo>", xml_escape(&c.to_string())),
+    }
+}
+
+/// The characters from `i` on that `class` maps, mapped; and where they end.
+fn run(chars: &[char], mut i: usize, class: fn(char) -> Option<char>) -> (String, usize) {
+    let mut out = String::new();
+    while let Some(c) = chars.get(i).and_then(|&c| class(c)) {
+        out.push(c);
+        i += 1;
+    }
+    (out, i)
+}
+
+/// A script's content: a number, a name or a sign and a number.
+fn script(t: &str) -> String {
+    match t {
+        "°" => "<mo>°</mo>".into(),
+        _ if t.chars().all(|c| c.is_ascii_digit()) => format!("<mn>{t}</mn>"),
+        _ => format!("<mrow>{}</mrow>", row_inner(t)),
+    }
+}
+
+/// A row's items without the surrounding `<mrow>`.
+fn row_inner(t: &str) -> String {
+    let r = row(t);
+    r["<mrow>".len()..r.len() - "</mrow>".len()].to_string()
+}
+
+/// Wraps the last item as the base of a script (`<msup>base x</msup>`).
+fn attach(items: &mut Vec<String>, tag: &str, script: &str) {
+    let base = items.pop().unwrap_or_else(|| "<mrow></mrow>".into());
+    items.push(format!("<{tag}>{base}{script}</{tag}>"));
+}
+
+/// What `√` applies to from `i`: a parenthesized group or a number or a
+/// name; its MathML and where it ends.
+fn radicand(chars: &[char], i: usize) -> (String, usize) {
+    if chars.get(i) == Some(&'(') {
+        let mut depth = 0;
+        let mut j = i;
+        while j < chars.len() {
+            match chars[j] {
+                '(' => depth += 1,
+                ')' => {
+                    depth -= 1;
+                    if depth == 0 {
+                        break;
+                    }
+                }
+                _ => {}
+            }
+            j += 1;
+        }
+        let inner: String = chars[i + 1..j.min(chars.len())].iter().collect();
+        (row_inner(&inner), (j + 1).min(chars.len()))
+    } else if chars.get(i).is_some_and(|c| c.is_ascii_digit()) {
+        number(chars, i)
+    } else {
+        let mut j = i;
+        while j < chars.len() && chars[j].is_alphabetic() {
+            j += 1;
+        }
+        let name: String = chars[i..j].iter().collect();
+        (format!("<mi>{}</mi>", xml_escape(&name)), j)
+    }
+}
+
+/// A number from `i`: digits with a decimal point (or an Indonesian decimal
+/// comma between digits) and an exponent `e−309` set as × 10⁻³⁰⁹.
+fn number(chars: &[char], mut i: usize) -> (String, usize) {
+    let start = i;
+    let digit = |k: usize| chars.get(k).is_some_and(|c| c.is_ascii_digit());
+    while digit(i) || (matches!(chars.get(i), Some('.') | Some(',')) && digit(i + 1)) {
+        i += 1;
+    }
+    let mantissa: String = chars[start..i].iter().collect();
+    let sign = matches!(chars.get(i + 1), Some('-') | Some('−') | Some('+'));
+    if chars.get(i) == Some(&'e') && (digit(i + 1) || (sign && digit(i + 2))) {
+        let mut j = i + 1 + usize::from(sign);
+        while digit(j) {
+            j += 1;
+        }
+        let exp: String = chars[i + 1..j].iter().collect::<String>().replace('-', "−");
+        let ten = format!("<msup><mn>10</mn><mn>{exp}</mn></msup>");
+        return (format!("<mn>{mantissa}</mn><mo>×</mo>{ten}"), j);
+    }
+    (format!("<mn>{mantissa}</mn>"), i)
+}
+
+/// A superscript character as the character it raises.
+fn superscript(c: char) -> Option<char> {
+    Some(match c {
+        '⁰' => '0',
+        '¹' => '1',
+        '²' => '2',
+        '³' => '3',
+        '⁴' => '4',
+        '⁵' => '5',
+        '⁶' => '6',
+        '⁷' => '7',
+        '⁸' => '8',
+        '⁹' => '9',
+        '⁻' => '−',
+        'ⁿ' => 'n',
+        'ᵀ' => 'T',
+        '°' => '°',
+        _ => return None,
+    })
+}
+
+/// A subscript character as the character it lowers.
+fn subscript(c: char) -> Option<char> {
+    Some(match c {
+        '₀' => '0',
+        '₁' => '1',
+        '₂' => '2',
+        '₃' => '3',
+        '₄' => '4',
+        '₅' => '5',
+        '₆' => '6',
+        '₇' => '7',
+        '₈' => '8',
+        '₉' => '9',
+        _ => return None,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_surd_with_its_decimal() {
+        assert_eq!(
+            row("−√2/60 ≈ −0.02357"),
+            "<mrow><mo>−</mo><msqrt><mn>2</mn></msqrt><mo lspace=\"0\" rspace=\"0\">/</mo><mn>60</mn>\
+             <mo>≈</mo><mo>−</mo><mn>0.02357</mn></mrow>"
+        );
+    }
+
+    #[test]
+    fn scripts_attach_to_what_precedes_them() {
+        assert_eq!(
+            row("v₀² + Mcam⁻¹"),
+            "<mrow><msup><msub><mi>v</mi><mn>0</mn></msub><mn>2</mn></msup><mo>+</mo>\
+             <msup><mi>Mcam</mi><mrow><mo>−</mo><mn>1</mn></mrow></msup></mrow>"
+        );
+    }
+
+    #[test]
+    fn a_group_under_the_root_and_numbers_in_both_languages() {
+        assert_eq!(
+            row("√(a² + 1)"),
+            "<mrow><msqrt><msup><mi>a</mi><mn>2</mn></msup><mo>+</mo><mn>1</mn></msqrt></mrow>"
+        );
+        // the Indonesian decimal comma stays in the number; "; " separates
+        assert_eq!(
+            row("(0,5; 2)"),
+            "<mrow><mo lspace=\"0\" rspace=\"0\">(</mo><mn>0,5</mn><mo>;</mo><mn>2</mn><mo lspace=\"0\" rspace=\"0\">)</mo></mrow>"
+        );
+        assert_eq!(
+            row("7.071e−309"),
+            "<mrow><mn>7.071</mn><mo>×</mo><msup><mn>10</mn><mn>−309</mn></msup></mrow>"
+        );
+    }
+
+    #[test]
+    fn markup_characters_are_escaped() {
+        assert_eq!(
+            row("a < b"),
+            "<mrow><mi>a</mi><mo>&lt;</mo><mi>b</mi></mrow>"
+        );
+    }
+}

@@ -1,0 +1,153 @@
+//! `--html FILE`: one self-contained page per worked solution, formulas in
+//! MathML, figures inline; `generate --format html`. The page is checked as
+//! XML (well-formed), for what it must not fetch, and for facts of the
+//! text's examples derived by hand.
+
+mod common;
+use common::*;
+use std::path::PathBuf;
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("grafika-html-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    let f = d.join(name);
+    let _ = std::fs::remove_file(&f);
+    f
+}
+
+/// Runs grafika with `--html FILE` and returns the page.
+fn page(name: &str, args: &[&str]) -> String {
+    let f = tmp(name);
+    grafika()
+        .args(args)
+        .args(["--html", f.to_str().unwrap()])
+        .assert()
+        .success();
+    std::fs::read_to_string(&f).unwrap()
+}
+
+/// The page parses as XML (every tag closed, every character escaped).
+fn well_formed(html: &str) {
+    let doc = roxmltree::Document::parse_with_options(
+        html,
+        roxmltree::ParsingOptions {
+            allow_dtd: true,
+            ..Default::default()
+        },
+    );
+    assert!(doc.is_ok(), "{:?}", doc.err());
+}
+
+/// Nothing is fetched: no script, no link, no external image or font.
+fn self_contained(html: &str) {
+    for bad in ["<script", "<link", " src=", " href=", "@import", "url("] {
+        assert!(!html.contains(bad), "the page has {bad}");
+    }
+}
+
+#[test]
+fn the_triangle_example_as_a_page() {
+    let html = page("triangle.html", &["solve", "problems/text-triangle.toml"]);
+    well_formed(&html);
+    self_contained(&html);
+    assert!(html.starts_with("<!DOCTYPE html>\n<html lang=\"en\">"));
+    // Pe − Pr = (1, 0, 1), so n = (√2/2, 0, √2/2): in MathML.
+    assert!(
+        html.contains(concat!(
+            r#"<mi>n</mi><mo>=</mo><mo lspace="0" rspace="0">(</mo><msqrt><mn>2</mn></msqrt>"#,
+            r#"<mo lspace="0" rspace="0">/</mo><mn>2</mn><mo>,</mo><mn>0</mn>"#
+        )),
+        "n = (√2/2, 0, √2/2) is not set in MathML"
+    );
+    // every part and step of the text report is on the page
+    let text = grafika()
+        .args(["solve", "problems/text-triangle.toml"])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(text.stdout).unwrap();
+    let steps = text.lines().filter(|l| l.starts_with("Step ")).count();
+    assert!(steps > 10);
+    assert_eq!(html.matches("<section class=\"step\">").count(), steps);
+    assert!(html.contains("@page{size:A4"), "prints on A4");
+    assert!(html.contains("<table class=\"answers\">"));
+}
+
+#[test]
+fn the_clip_page_has_its_figure_inline() {
+    let html = page(
+        "clip.html",
+        &[
+            "clip", "--min", "0,0,0", "--max", "3,4,3", "--from", "4,2,2", "--to", "-2,6,1",
+        ],
+    );
+    well_formed(&html);
+    self_contained(&html);
+    assert!(html.contains("<figure>\n<svg "), "no inline figure");
+    assert!(html.contains("<figcaption>"));
+}
+
+#[test]
+fn a_page_in_indonesian() {
+    let html = page(
+        "id.html",
+        &[
+            "--lang", "id", "window", "--fovy", "45", "--aspect", "1.5", "--near", "0.1",
+        ],
+    );
+    well_formed(&html);
+    assert!(html.contains("<html lang=\"id\">"));
+    assert!(html.contains("Langkah 1."), "step titles in Indonesian");
+    // top = 0.1·tan 22.5° = (√2 − 1)/10 ≈ 0,04142: the decimal comma in an <mn>
+    assert!(html.contains("<mn>0,04142</mn>"), "no decimal comma");
+}
+
+#[test]
+fn an_existing_page_is_never_overwritten() {
+    let f = tmp("keep.html");
+    std::fs::write(&f, "mine").unwrap();
+    grafika()
+        .args([
+            "basis", "--eye", "3,1,3", "--look", "2,1,2", "--up", "0,1,0",
+        ])
+        .args(["--html", f.to_str().unwrap()])
+        .assert()
+        .code(2);
+    assert_eq!(std::fs::read_to_string(&f).unwrap(), "mine");
+}
+
+#[test]
+fn html_is_refused_where_there_is_no_worked_solution() {
+    let e = json_err(&["bench", "--quick", "--html", "x.html"]);
+    assert_eq!(e["field"], "html", "{e}");
+}
+
+#[test]
+fn generate_writes_html_sheets_and_keys() {
+    let dir = std::env::temp_dir().join(format!("grafika-html-exam-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    grafika()
+        .args([
+            "generate",
+            "--topic",
+            "view,clip",
+            "--count",
+            "2",
+            "--seed",
+            "4",
+        ])
+        .args(["--format", "html", "--out", dir.to_str().unwrap()])
+        .assert()
+        .success();
+    for f in ["questions.html", "key.html"] {
+        let html = std::fs::read_to_string(dir.join(f)).unwrap();
+        well_formed(&html);
+        self_contained(&html);
+    }
+    let key = std::fs::read_to_string(dir.join("key.html")).unwrap();
+    assert!(key.contains("<section class=\"step\">") && key.contains("<math"));
+    let q = std::fs::read_to_string(dir.join("questions.html")).unwrap();
+    assert!(
+        !q.contains("<section class=\"step\">"),
+        "the questions show no solution"
+    );
+}
