@@ -28,7 +28,7 @@ pub fn to_tikz(f: &Figure) -> String {
                 o,
                 "\\node[above right,font=\\small] at {} {{{}}};",
                 pt(at),
-                tex_escape(text)
+                crate::report::doc::latex_text(text)
             ),
         };
     }
@@ -69,27 +69,4 @@ fn opts(p: Pen) -> String {
         ""
     };
     format!("{},line width={}pt{pattern}", name(p), p.width() * 0.5)
-}
-
-/// Text safe inside a TikZ node (LaTeX specials escaped, Unicode math
-/// signs as math).
-fn tex_escape(s: &str) -> String {
-    let mut o = String::new();
-    for c in s.chars() {
-        match c {
-            '\\' => o.push_str("\\textbackslash{}"),
-            '{' | '}' | '_' | '#' | '%' | '&' | '$' => {
-                o.push('\\');
-                o.push(c);
-            }
-            '^' => o.push_str("\\^{}"),
-            '~' => o.push_str("\\~{}"),
-            '−' => o.push_str("$-$"),
-            '√' => o.push_str("$\\surd$"),
-            '≈' => o.push_str("$\\approx$"),
-            _ if c.is_ascii() => o.push(c),
-            _ => o.push('?'),
-        }
-    }
-    o
 }
