@@ -346,15 +346,7 @@ fn farey_neighbour(a: i64, b: i64) -> (i64, i64) {
 /// Permutes and sign-flips the axes of both vectors the same way (a
 /// rotation or reflection: angles are kept).
 fn shuffle(rng: &mut InputRng, a: &mut [i64; 3], b: &mut [i64; 3]) {
-    let perms = [
-        [0, 1, 2],
-        [0, 2, 1],
-        [1, 0, 2],
-        [1, 2, 0],
-        [2, 0, 1],
-        [2, 1, 0],
-    ];
-    let p = perms[rng.below(6) as usize];
+    let p = crate::num::rng::PERMUTATIONS_OF_3[rng.below(6) as usize];
     let (a0, b0) = (*a, *b);
     for k in 0..3 {
         a[k] = a0[p[k]];

@@ -60,6 +60,16 @@ impl SplitMix64 {
     }
 }
 
+/// The six orderings of three things (the permutations of 0, 1, 2).
+pub const PERMUTATIONS_OF_3: [[usize; 3]; 6] = [
+    [0, 1, 2],
+    [0, 2, 1],
+    [1, 0, 2],
+    [1, 2, 0],
+    [2, 0, 1],
+    [2, 1, 0],
+];
+
 #[cfg(test)]
 mod tests {
     use super::*;

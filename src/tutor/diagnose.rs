@@ -151,10 +151,7 @@ pub static CATALOG: &[Mistake] = &[
             hooked(
                 p,
                 Hooks {
-                    window: |w, _| {
-                        w.height = w.top;
-                        w.width = w.right;
-                    },
+                    window: |w, _| half_extent_as_size(w),
                     ..Hooks::default()
                 },
             )
@@ -168,8 +165,7 @@ pub static CATALOG: &[Mistake] = &[
                 p,
                 Hooks {
                     window: |w, _| {
-                        w.height = w.top;
-                        w.width = w.right;
+                        half_extent_as_size(w);
                         w.top /= 2.0;
                         w.right /= 2.0;
                         w.bottom = -w.top;
@@ -352,6 +348,13 @@ fn scale_axes(b: &mut Basis<f64>, f: [f64; 3]) {
 }
 
 /// Multiplies every edge and size of the window by k.
+/// The half extents near·tan(fovy/2) and aspect·near·tan(fovy/2) (the
+/// text's h and w/2) written as the window's height and width.
+fn half_extent_as_size(w: &mut Window<f64>) {
+    w.height = w.top;
+    w.width = w.right;
+}
+
 fn scale_window(w: &mut Window<f64>, k: f64) {
     for x in [
         &mut w.top,

@@ -123,16 +123,8 @@ pub fn exam(topics: &[Topic], diff: Difficulty, count: u32, seed: u64) -> Result
 /// The order of the clipping statuses in an exam (0 clipped, 1 accepted,
 /// 2 rejected): one of the six permutations, drawn from the seed.
 pub fn clip_order(seed: u64) -> [usize; 3] {
-    const ORDERS: [[usize; 3]; 6] = [
-        [0, 1, 2],
-        [0, 2, 1],
-        [1, 0, 2],
-        [1, 2, 0],
-        [2, 0, 1],
-        [2, 1, 0],
-    ];
     let mut rng = SplitMix64::fork(seed, 0x434c_4950); // "CLIP"
-    *rng.pick(&ORDERS)
+    *rng.pick(&crate::num::rng::PERMUTATIONS_OF_3)
 }
 
 /// `view,clip` for the titles.
