@@ -24,6 +24,11 @@ impl Error {
         }
     }
 
+    /// An error about `field`: why it was refused (`msg::ErrMsg`).
+    pub fn why(field: impl Into<String>, why: impl Into<crate::msg::ErrMsg>) -> Error {
+        Error::said(field, Msg::Err(why.into()))
+    }
+
     /// An error about `field`, said by a message key.
     pub fn said(field: impl Into<String>, message: Msg) -> Error {
         Error {

@@ -9,7 +9,9 @@
 //! message; only `report/` knows the words.
 
 mod drawn;
+mod errors;
 pub use drawn::{CameraText, DrawnTitle, ShadeAsked, Statement};
+pub use errors::{Bound, ClapErr, ErrMsg, IoWhy, NumErr, Thing, TomlErr, Twice, Want};
 
 /// A term of the lighting sum.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -294,7 +296,7 @@ pub enum Msg {
     /// No answer given.
     NoAnswer,
     /// The answer cannot be read (the reader's reason).
-    Unreadable(String),
+    Unreadable(NumErr),
     /// A component that is not a number (the text; the values expected).
     NotANumber(String, usize),
     /// Exactly equal.
@@ -319,6 +321,8 @@ pub enum Msg {
     Untranslated(String),
     /// A location (`file:line:col`) before a message.
     At(String, Box<Msg>),
+    /// Why an input was refused (`msg::errors`).
+    Err(ErrMsg),
     /// Pe and Pr are the same point (shown).
     ErrSamePoint(String),
     /// Vup is the zero vector.
@@ -338,7 +342,7 @@ pub enum Msg {
     /// axis min > max: axis, min, max.
     ErrBoxInverted(String, String, String),
     /// A file that cannot be read: path, the system's reason.
-    ErrCannotRead(String, String),
+    ErrCannotRead(String, IoWhy),
     /// A zero vector that should be made a unit vector (name).
     ErrZeroUnit(String),
     /// Text that is not NAME=X,Y,Z.

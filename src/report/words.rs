@@ -6,6 +6,7 @@ use super::lang::Lang;
 use crate::msg::{LightPart, Msg, SpotZone, Term, Trivial};
 
 mod drawn;
+pub mod errors;
 
 /// The words of `m` in `lang`.
 pub fn words(m: &Msg, lang: Lang) -> String {
@@ -54,6 +55,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html",
         ),
         Msg::At(place, m) => format!("{place}: {}", words(m, lang)),
+        Msg::Err(e) => errors::error(e, lang),
         Msg::ErrSamePoint(_)
         | Msg::ErrUpZero
         | Msg::ErrUpParallel(..)
@@ -86,8 +88,9 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             super::lang::decimal(v, lang)
         ),
         Msg::Unreadable(why) => format!(
-            "{}: {why}",
-            pick(id, "cannot be read", "tidak dapat dibaca")
+            "{}: {}",
+            pick(id, "cannot be read", "tidak dapat dibaca"),
+            errors::number(why, lang)
         ),
         Msg::WithinPct(p) => format!(
             "{} {}%",
@@ -575,8 +578,8 @@ fn error(m: &Msg, lang: Lang) -> String {
             format!("{a}min = {} lebih besar daripada {a}max = {}", n(lo), n(hi)),
         ),
         Msg::ErrCannotRead(path, why) => f(
-            format!("cannot read {path}: {why}"),
-            format!("tidak dapat membaca {path}: {why}"),
+            format!("cannot read {path}: {}", errors::io_why(why, lang)),
+            format!("tidak dapat membaca {path}: {}", errors::io_why(why, lang)),
         ),
         Msg::ErrZeroUnit(v) => f(
             format!("{v} is the zero vector (0, 0, 0): it has no direction, so it cannot be made a unit vector"),
@@ -820,7 +823,7 @@ mod tests {
             Msg::SeveralAnswers,
             Msg::EmptyAnswer,
             Msg::NoAnswer,
-            Msg::Unreadable("x".into()),
+            Msg::Unreadable(crate::msg::NumErr::Empty),
             Msg::Exact,
             Msg::NotANumber(s(), 3),
             Msg::Rounded(4),
@@ -841,7 +844,7 @@ mod tests {
             Msg::ErrUnknownPoint(s(), None),
             Msg::ErrUnknownPoint(s(), Some("A, B".into())),
             Msg::ErrBoxInverted("y".into(), "5".into(), "4".into()),
-            Msg::ErrCannotRead("p.toml".into(), "os error 2".into()),
+            Msg::ErrCannotRead("p.toml".into(), crate::msg::IoWhy::NotFound),
             Msg::ErrZeroUnit(s()),
             Msg::ErrNamedPoint(s()),
             Msg::ErrPointName(s()),
@@ -1071,6 +1074,7 @@ mod tests {
             | FollowThrough
             | Untranslated(_)
             | At(..)
+            | Err(_)
             | ErrSamePoint(_)
             | ErrUpZero
             | ErrUpParallel(..)
