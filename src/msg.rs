@@ -317,8 +317,6 @@ pub enum Msg {
     Parts(Vec<(String, Msg)>),
 
     // ---- errors ----
-    /// English text not yet made a key (shown as is in every language).
-    Untranslated(String),
     /// A location (`file:line:col`) before a message.
     At(String, Box<Msg>),
     /// Why an input was refused (`msg::errors`).
@@ -395,12 +393,12 @@ impl Msg {
         matches!(self, Msg::Math(s) if s.is_empty())
     }
 
-    /// The text of notation or untranslated text (with its location), else
+    /// The text of notation (with its location), else
     /// the key's name and parameters: for `Display` of errors in tests and
     /// logs; people read `report::words`.
     pub fn plain(&self) -> String {
         match self {
-            Msg::Math(s) | Msg::Untranslated(s) => s.clone(),
+            Msg::Math(s) => s.clone(),
             Msg::At(place, m) => format!("{place}: {}", m.plain()),
             other => format!("{other:?}"),
         }

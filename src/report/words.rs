@@ -39,7 +39,6 @@ pub fn words(m: &Msg, lang: Lang) -> String {
                 format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen")
             }
         }
-        Msg::Untranslated(s) => s.clone(),
         Msg::DrawnTitle(t) => drawn::title(*t, lang),
         Msg::Statement(s) => drawn::statement(s, lang),
         Msg::ErrFewDistinct(topic, level, n) => {
@@ -1072,7 +1071,6 @@ mod tests {
             | Parts(_)
             | NotShapeAsked
             | FollowThrough
-            | Untranslated(_)
             | At(..)
             | Err(_)
             | ErrSamePoint(_)
