@@ -885,6 +885,9 @@ mod tests {
         v.push(Msg::ErrFewDistinct("window".into(), "easy".into(), 20));
         v.push(Msg::ErrHtmlCommand);
         v.extend(drawn_messages());
+        v.push(Msg::Unreadable(crate::msg::NumErr::DivZero("1/0".into())));
+        v.push(Msg::At("p.toml:3:7".into(), Box::new(Msg::ErrUpZero)));
+        v.extend(errors::tests::every_error().into_iter().map(Msg::Err));
         v
     }
 

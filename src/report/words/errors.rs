@@ -758,33 +758,141 @@ fn serde_words(s: &str) -> String {
     .fold(s.to_string(), |t, (en, id)| t.replace(en, id))
 }
 
-/// The TOML reader's syntax messages, in Indonesian where known.
+/// The TOML reader's descriptions of syntax errors, in Indonesian.
+const SYNTAX: [(&str, &str); 46] = [
+    ("invalid float", "bilangan desimal tidak sah"),
+    ("invalid integer number", "bilangan bulat tidak sah"),
+    ("invalid string", "string tidak sah"),
+    ("invalid boolean", "boolean tidak sah"),
+    ("invalid date-time", "tanggal-waktu tidak sah"),
+    ("invalid key", "kunci tidak sah"),
+    ("invalid table", "tabel tidak sah"),
+    ("invalid value", "nilai tidak sah"),
+    (
+        "invalid inline table element",
+        "elemen tabel inline tidak sah",
+    ),
+    ("invalid key-value pair", "pasangan kunci-nilai tidak sah"),
+    ("invalid basic string", "string tidak sah"),
+    (
+        "invalid multi-line basic string",
+        "string multi-baris tidak sah",
+    ),
+    ("invalid comment character", "karakter komentar tidak sah"),
+    ("invalid unquoted key", "kunci tanpa tanda kutip tidak sah"),
+    ("key with no value", "kunci tanpa nilai"),
+    ("missing value for key", "nilai untuk kunci tidak ada"),
+    ("missing value", "nilai tidak ada"),
+    (
+        "missing assignment between key-value pairs",
+        "tanda `=` tidak ada di antara kunci dan nilai",
+    ),
+    (
+        "missing comma between array elements",
+        "koma tidak ada di antara elemen array",
+    ),
+    (
+        "missing comma between key-value pairs",
+        "koma tidak ada di antara pasangan kunci-nilai",
+    ),
+    ("missing opening quote", "tanda kutip pembuka tidak ada"),
+    ("missing table open", "pembuka tabel `[` tidak ada"),
+    ("missing array opening", "pembuka array `[` tidak ada"),
+    (
+        "missing inline table opening",
+        "pembuka tabel inline `{` tidak ada",
+    ),
+    (
+        "missing key for inline table element",
+        "kunci elemen tabel inline tidak ada",
+    ),
+    ("missing escaped value", "nilai escape tidak ada"),
+    ("extra `=`", "`=` berlebih"),
+    ("extra comma in array", "koma berlebih dalam array"),
+    (
+        "extra comma in inline table",
+        "koma berlebih dalam tabel inline",
+    ),
+    (
+        "extra assignment between key-value pairs",
+        "`=` berlebih di antara pasangan kunci-nilai",
+    ),
+    (
+        "string values must be quoted",
+        "nilai string harus diberi tanda kutip",
+    ),
+    ("unclosed array", "array tidak ditutup"),
+    ("unclosed array table", "tabel array tidak ditutup"),
+    ("unclosed inline table", "tabel inline tidak ditutup"),
+    ("unclosed table", "tabel tidak ditutup"),
+    ("unexpected content", "isi yang tidak diharapkan"),
+    (
+        "unexpected content between comment and newline",
+        "isi yang tidak diharapkan sebelum akhir baris",
+    ),
+    (
+        "unexpected key or value",
+        "kunci atau nilai yang tidak diharapkan",
+    ),
+    (
+        "unexpected leading zero",
+        "nol di depan yang tidak diharapkan",
+    ),
+    ("unexpected sign", "tanda yang tidak diharapkan"),
+    (
+        "unexpected `=` in array",
+        "`=` yang tidak diharapkan dalam array",
+    ),
+    (
+        "`_` may only go between digits",
+        "`_` hanya boleh di antara angka",
+    ),
+    (
+        "unquoted keys cannot be empty",
+        "kunci tanpa tanda kutip tidak boleh kosong",
+    ),
+    ("redundant numeric sign", "tanda bilangan berlebih"),
+    ("duplicate key", "kunci ganda"),
+    (
+        "cannot recurse further; max recursion depth met",
+        "bersarang terlalu dalam",
+    ),
+];
+
+/// What the TOML reader expected, in Indonesian (literals stay as written).
+const EXPECTED: [(&str, &str); 11] = [
+    ("digits", "angka"),
+    ("letters", "huruf"),
+    ("numbers", "bilangan"),
+    ("value", "nilai"),
+    ("key", "kunci"),
+    ("characters", "karakter"),
+    ("printable characters", "karakter yang dapat dicetak"),
+    ("basic string", "string"),
+    ("literal string", "string literal"),
+    ("multi-line basic string", "string multi-baris"),
+    ("unicode hexadecimal value", "nilai heksadesimal unicode"),
+];
+
+/// The TOML reader's syntax message (`description, expected a, b`) in
+/// Indonesian: known descriptions and expectations translated, anything
+/// else (a literal such as `` `=` ``) as written.
 fn syntax_words(s: &str) -> String {
-    [
-        ("invalid number", "bilangan tidak sah"),
-        ("invalid string", "string tidak sah"),
-        ("invalid table header", "kepala tabel tidak sah"),
-        ("invalid key", "kunci tidak sah"),
-        ("invalid array", "array tidak sah"),
-        ("invalid inline table", "tabel inline tidak sah"),
-        ("expected newline", "seharusnya baris baru"),
-        ("expected `.`, `=`", "seharusnya `.`, `=`"),
-        ("unclosed array", "array tidak ditutup"),
-        ("unclosed table", "tabel tidak ditutup"),
-        ("invalid unquoted key", "kunci tanpa tanda kutip tidak sah"),
-        (
-            "string values must be quoted",
-            "nilai string harus diberi tanda kutip",
-        ),
-        ("expected", "seharusnya"),
-        ("found", "ditemukan"),
-        ("duplicate key", "kunci ganda"),
-        ("in table", "dalam tabel"),
-        ("in document root", "di akar dokumen"),
-        ("unexpected", "tidak diharapkan"),
-    ]
-    .iter()
-    .fold(s.to_string(), |t, (en, id)| t.replace(en, id))
+    let (desc, expected) = match s.split_once(", expected ") {
+        Some((d, e)) => (d, Some(e)),
+        None => (s, None),
+    };
+    let find = |table: &[(&str, &'static str)], w: &str| {
+        let hit = table.iter().find(|(en, _)| *en == w.trim());
+        hit.map_or_else(|| w.trim().to_string(), |(_, id)| id.to_string())
+    };
+    let mut out = find(&SYNTAX, desc);
+    // "expected nothing": nothing more may follow on the line.
+    if let Some(e) = expected.filter(|e| *e != "nothing") {
+        let items: Vec<String> = e.split(", ").map(|w| find(&EXPECTED, w)).collect();
+        out.push_str(&format!(", seharusnya {}", items.join(", ")));
+    }
+    out
 }
 
 /// A command line clap refused: clap's own line in English; built from the
@@ -838,5 +946,406 @@ fn value_reason(why: &str) -> String {
     match why.split_once(" is not in ") {
         Some((v, range)) => format!("{v} tidak berada dalam rentang {range}"),
         None => why.to_string(),
+    }
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+
+    /// Every error key, with sample parameters (each variant of every
+    /// part at least once; `listed` below fails to compile when one is
+    /// added without being listed here).
+    pub fn every_error() -> Vec<ErrMsg> {
+        let s = |x: &str| x.to_string();
+        let mut v: Vec<ErrMsg> = every_number().into_iter().map(ErrMsg::Num).collect();
+        v.extend(every_toml().into_iter().map(ErrMsg::Toml));
+        v.extend(
+            every_clap()
+                .into_iter()
+                .map(|c| ErrMsg::Clap(c, s("clap's line"))),
+        );
+        v.extend(
+            every_bound()
+                .into_iter()
+                .map(|b| ErrMsg::MustBe(b, s("-0.5"))),
+        );
+        v.extend(every_twice().into_iter().map(ErrMsg::Twice));
+        for w in every_io() {
+            v.push(ErrMsg::CannotRead(s("a.toml"), w.clone()));
+            v.push(ErrMsg::CannotReadStdin(w.clone()));
+            v.push(ErrMsg::CannotWrite(s("a.png"), w.clone()));
+            v.push(ErrMsg::CannotCreate(s("out"), w.clone()));
+            v.push(ErrMsg::CannotWriteStdout(w.clone()));
+            v.push(ErrMsg::ObjUnreadable(s("m.obj"), w));
+        }
+        v.extend([
+            ErrMsg::Channel(s("red"), s("1.5")),
+            ErrMsg::Channel(s("green"), s("1.5")),
+            ErrMsg::Channel(s("blue"), s("-0.5")),
+            ErrMsg::Attenuation(s("0"), s("0"), s("0")),
+            ErrMsg::Cones(s("60"), s("30.5")),
+            ErrMsg::PlaneThroughOrigin,
+            ErrMsg::PlaneThroughCop(s("2.5")),
+            ErrMsg::ImageTooLarge(s("A"), s("f32")),
+            ErrMsg::Viewport(s("0"), s("1.5")),
+            ErrMsg::VVanished,
+            ErrMsg::EyeLookTooLarge(s("(1e308, 0, 0)"), s("f64")),
+            ErrMsg::TranslationTooLarge(s("f32")),
+            ErrMsg::EyeCoordsTooLarge(s("A"), s("f32")),
+            ErrMsg::ResultNotFinite(s("f32")),
+            ErrMsg::Exists(s("a.svg")),
+            ErrMsg::ExistsForce(s("out/problem-01.toml")),
+            ErrMsg::NotDirectory(s("out")),
+            ErrMsg::NoLightTable(s("l.toml")),
+            ErrMsg::ColorMissing,
+            ErrMsg::NormalMissing,
+            ErrMsg::CameraAtPoint,
+            ErrMsg::NoLight,
+            ErrMsg::LightAtPoint,
+            ErrMsg::SpotNeeds(s("theta")),
+            ErrMsg::Needs(Thing::Light(s("point")), s("position")),
+            ErrMsg::Needs(Thing::Object(s("sphere")), s("r")),
+            ErrMsg::Needs(Thing::Object(s("obj")), s("path")),
+            ErrMsg::NotApplicable(s("axis"), s("point")),
+            ErrMsg::NoSuchKey(s("box"), s("r"), s("size")),
+            ErrMsg::NeededForLight,
+            ErrMsg::NeededToRender,
+            ErrMsg::ZeroDirection,
+            ErrMsg::ObjInvalid(s("m.obj"), s("FaceParseError"), s("Failed to parse a face")),
+            ErrMsg::ObjInvalid(s("m.obj"), s("Unknown"), s("something")),
+            ErrMsg::ObjNoFaces(s("m.obj")),
+            ErrMsg::ObjNotFinite(s("m.obj")),
+            ErrMsg::FaceVertex,
+            ErrMsg::FormulaNotFinite,
+            ErrMsg::TooManyTriangles(5_000_000, 4_000_000),
+            ErrMsg::NeedsColour,
+            ErrMsg::NoObjects,
+            ErrMsg::CameraNeedsPerspective,
+            ErrMsg::ImageSize(s("0"), s("10")),
+            ErrMsg::UnknownPart(s("views"), s("basis, view")),
+            ErrMsg::ExpectedXyz(TomlErr::InvalidLength(s("2"), s("3 elements"))),
+            ErrMsg::NothingToSolve,
+            ErrMsg::NoCameraTable,
+            ErrMsg::ProjectionNeedsNear,
+            ErrMsg::WindowNeeds,
+            ErrMsg::LightsNeedShade,
+            ErrMsg::NoTopic,
+            ErrMsg::NoDrawing,
+            ErrMsg::NoProblemDrawn,
+            ErrMsg::StdinHoldsAnswers,
+            ErrMsg::GiveProblem,
+            ErrMsg::TooManyProblems(3000, 1000, 3, 48, 2000),
+            ErrMsg::BothStdin,
+            ErrMsg::NoPrinted(s("p.toml")),
+            ErrMsg::CsvAndJson,
+            ErrMsg::NoAnswerFiles(s("class")),
+            ErrMsg::PixelOutside(10, 20, 8, 8),
+            ErrMsg::PixelText(s("a,b")),
+            ErrMsg::NothingRendered,
+            ErrMsg::Threads(s("why")),
+            ErrMsg::RenderPrecision,
+            ErrMsg::OwnOutput,
+            ErrMsg::Man(s("why")),
+        ]);
+        v
+    }
+
+    fn every_number() -> Vec<NumErr> {
+        let s = |x: &str| x.to_string();
+        let mut v = vec![
+            NumErr::Quoted(s("1+*2"), Box::new(NumErr::Empty)),
+            NumErr::TooLong(5000, 4000),
+            NumErr::Empty,
+            NumErr::TooDeep(100, 101),
+            NumErr::TooManyOps(500, 1001),
+            NumErr::Count(2, s("1,2")),
+            NumErr::Component(2, s("x"), Box::new(NumErr::NotANumber(s("x")))),
+            NumErr::NotFinite(s("1e999"), s("f64")),
+            NumErr::NotANumber(s("1.2.3")),
+            NumErr::NotFiniteLiteral(s("NaN")),
+            NumErr::NegativeRoot(s("-1")),
+            NumErr::DivZero(s("1/0")),
+            NumErr::Exponent(s("2^0.5")),
+            NumErr::PowerRange(s("10^1000")),
+            NumErr::Unexpected('#', 3),
+            NumErr::OpenAfter(s("sin")),
+            NumErr::UnknownName(s("tan")),
+            NumErr::EndsEarly,
+            NumErr::FormulaDeep(100, 101),
+            NumErr::FormulaOps(500, 1001),
+        ];
+        for w in [
+            Want::OperatorOrEnd,
+            Want::Close,
+            Want::OpenAfterSqrt,
+            Want::Number,
+        ] {
+            v.push(NumErr::Expected(w, 3, Some('*')));
+            v.push(NumErr::Expected(w, 3, None));
+        }
+        v
+    }
+
+    fn every_toml() -> Vec<TomlErr> {
+        let s = |x: &str| x.to_string();
+        vec![
+            TomlErr::UnknownField(s("eyes"), Some(s("`eye`, `look`, `up`"))),
+            TomlErr::UnknownField(s("eyes"), None),
+            TomlErr::MissingField(s("eye")),
+            TomlErr::Duplicate(s("eye")),
+            TomlErr::UnknownVariant(s("pyramid"), s("`cone`, `sphere`")),
+            TomlErr::InvalidType(s("string \"a\""), s("a sequence")),
+            TomlErr::InvalidLength(s("2"), s("an array of length 3")),
+            TomlErr::Num(NumErr::DivZero(s("1/0"))),
+            TomlErr::MustBe(Bound::Positive, s("-1.5")),
+            TomlErr::WholeRange(3, 4096, s("2")),
+            TomlErr::Colour(s("[1.5, 0, 0]")),
+            TomlErr::Syntax(s("invalid number")),
+        ]
+    }
+
+    fn every_clap() -> Vec<ClapErr> {
+        let s = |x: &str| x.to_string();
+        vec![
+            ClapErr::InvalidValue(s("foo"), s("exact, f64, f32")),
+            ClapErr::InvalidValue(s("foo"), String::new()),
+            ClapErr::BadValue(s("abc"), s("invalid digit found in string")),
+            ClapErr::BadValue(s("99"), s("99 is not in 1..=17")),
+            ClapErr::Unknown(s("--eyes"), Some(s("--eye"))),
+            ClapErr::Unknown(s("--eyes"), None),
+            ClapErr::UnknownCommand(s("bassis"), Some(s("basis"))),
+            ClapErr::UnknownCommand(s("bassis"), None),
+            ClapErr::Conflict(s("--ortho"), s("--d")),
+            ClapErr::Missing(s("--eye")),
+            ClapErr::NoValue,
+            ClapErr::ValueCount(s("--point")),
+            ClapErr::Other,
+        ]
+    }
+
+    fn every_bound() -> Vec<Bound> {
+        vec![
+            Bound::NumberAtLeastZero,
+            Bound::AtLeastZero,
+            Bound::AboveZero,
+            Bound::Positive,
+            Bound::NotNegative,
+            Bound::FiniteAtLeastZero,
+            Bound::Fraction,
+            Bound::WholePixels,
+            Bound::AboveNear("0.5".into()),
+        ]
+    }
+
+    fn every_twice() -> Vec<Twice> {
+        use Twice::*;
+        vec![
+            GlobalAmbient,
+            Material,
+            Color,
+            Shininess,
+            View,
+            Light,
+            TiltCamera,
+            Colors,
+            Answers,
+        ]
+    }
+
+    fn every_io() -> Vec<IoWhy> {
+        use IoWhy::*;
+        vec![
+            NotFound,
+            Denied,
+            Exists,
+            IsDirectory,
+            NotText,
+            Other("disk full".into()),
+        ]
+    }
+
+    /// Fails to compile when a key is added to any error enum without
+    /// being listed above (no wildcard arm).
+    #[allow(dead_code)]
+    fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want, i: &IoWhy) {
+        use ErrMsg as E;
+        match e {
+            E::Num(_)
+            | E::MustBe(..)
+            | E::Twice(_)
+            | E::Channel(..)
+            | E::Attenuation(..)
+            | E::Cones(..)
+            | E::PlaneThroughOrigin
+            | E::PlaneThroughCop(_)
+            | E::ImageTooLarge(..)
+            | E::Viewport(..)
+            | E::VVanished
+            | E::EyeLookTooLarge(..)
+            | E::TranslationTooLarge(_)
+            | E::EyeCoordsTooLarge(..)
+            | E::ResultNotFinite(_)
+            | E::CannotRead(..)
+            | E::CannotReadStdin(_)
+            | E::CannotWrite(..)
+            | E::CannotCreate(..)
+            | E::CannotWriteStdout(_)
+            | E::Exists(_)
+            | E::ExistsForce(_)
+            | E::NotDirectory(_)
+            | E::NoLightTable(_)
+            | E::ColorMissing
+            | E::NormalMissing
+            | E::CameraAtPoint
+            | E::NoLight
+            | E::LightAtPoint
+            | E::SpotNeeds(_)
+            | E::Needs(..)
+            | E::NotApplicable(..)
+            | E::NoSuchKey(..)
+            | E::NeededForLight
+            | E::NeededToRender
+            | E::ZeroDirection
+            | E::ObjUnreadable(..)
+            | E::ObjInvalid(..)
+            | E::ObjNoFaces(_)
+            | E::ObjNotFinite(_)
+            | E::FaceVertex
+            | E::FormulaNotFinite
+            | E::TooManyTriangles(..)
+            | E::NeedsColour
+            | E::NoObjects
+            | E::CameraNeedsPerspective
+            | E::ImageSize(..)
+            | E::UnknownPart(..)
+            | E::ExpectedXyz(_)
+            | E::Toml(_)
+            | E::NothingToSolve
+            | E::NoCameraTable
+            | E::ProjectionNeedsNear
+            | E::WindowNeeds
+            | E::LightsNeedShade
+            | E::NoTopic
+            | E::NoDrawing
+            | E::NoProblemDrawn
+            | E::StdinHoldsAnswers
+            | E::GiveProblem
+            | E::TooManyProblems(..)
+            | E::BothStdin
+            | E::NoPrinted(_)
+            | E::CsvAndJson
+            | E::NoAnswerFiles(_)
+            | E::PixelOutside(..)
+            | E::PixelText(_)
+            | E::NothingRendered
+            | E::Threads(_)
+            | E::RenderPrecision
+            | E::OwnOutput
+            | E::Man(_)
+            | E::Clap(..) => {}
+        }
+        match n {
+            NumErr::Quoted(..)
+            | NumErr::TooLong(..)
+            | NumErr::Empty
+            | NumErr::Expected(..)
+            | NumErr::TooDeep(..)
+            | NumErr::TooManyOps(..)
+            | NumErr::Count(..)
+            | NumErr::Component(..)
+            | NumErr::NotFinite(..)
+            | NumErr::NotANumber(_)
+            | NumErr::NotFiniteLiteral(_)
+            | NumErr::NegativeRoot(_)
+            | NumErr::DivZero(_)
+            | NumErr::Exponent(_)
+            | NumErr::PowerRange(_)
+            | NumErr::Unexpected(..)
+            | NumErr::OpenAfter(_)
+            | NumErr::UnknownName(_)
+            | NumErr::EndsEarly
+            | NumErr::FormulaDeep(..)
+            | NumErr::FormulaOps(..) => {}
+        }
+        match t {
+            TomlErr::UnknownField(..)
+            | TomlErr::MissingField(_)
+            | TomlErr::Duplicate(_)
+            | TomlErr::UnknownVariant(..)
+            | TomlErr::InvalidType(..)
+            | TomlErr::InvalidLength(..)
+            | TomlErr::Num(_)
+            | TomlErr::MustBe(..)
+            | TomlErr::WholeRange(..)
+            | TomlErr::Colour(_)
+            | TomlErr::Syntax(_) => {}
+        }
+        match c {
+            ClapErr::InvalidValue(..)
+            | ClapErr::BadValue(..)
+            | ClapErr::Unknown(..)
+            | ClapErr::UnknownCommand(..)
+            | ClapErr::Conflict(..)
+            | ClapErr::Missing(_)
+            | ClapErr::NoValue
+            | ClapErr::ValueCount(_)
+            | ClapErr::Other => {}
+        }
+        match b {
+            Bound::NumberAtLeastZero
+            | Bound::AtLeastZero
+            | Bound::AboveZero
+            | Bound::Positive
+            | Bound::NotNegative
+            | Bound::FiniteAtLeastZero
+            | Bound::Fraction
+            | Bound::WholePixels
+            | Bound::AboveNear(_) => {}
+        }
+        match w {
+            Want::OperatorOrEnd | Want::Close | Want::OpenAfterSqrt | Want::Number => {}
+        }
+        match i {
+            IoWhy::NotFound
+            | IoWhy::Denied
+            | IoWhy::Exists
+            | IoWhy::IsDirectory
+            | IoWhy::NotText
+            | IoWhy::Other(_) => {}
+        }
+    }
+
+    #[test]
+    fn every_error_has_words_in_both_languages_and_they_differ() {
+        let all = every_error();
+        assert!(all.len() > 150, "{}", all.len());
+        for e in &all {
+            let (en, id) = (error(e, Lang::En), error(e, Lang::Id));
+            assert!(!en.trim().is_empty(), "{e:?} has no English");
+            assert!(!id.trim().is_empty(), "{e:?} has no Indonesian");
+            assert_ne!(en, id, "{e:?} is not translated");
+        }
+    }
+
+    #[test]
+    fn indonesian_errors_write_numbers_with_the_decimal_comma() {
+        // -0,5 for the value given; 0,5 for near; the path keeps its dot.
+        let e = ErrMsg::MustBe(Bound::AboveNear("0.5".into()), "-0.5".into());
+        assert_eq!(
+            error(&e, Lang::Id),
+            "harus lebih besar daripada near = 0,5, diberikan -0,5"
+        );
+        assert_eq!(
+            error(&e, Lang::En),
+            "must be greater than near = 0.5, got -0.5"
+        );
+        let e = ErrMsg::Attenuation("0.5".into(), "-1".into(), "0".into());
+        assert!(error(&e, Lang::Id).ends_with("diberikan (0,5; -1; 0)"));
+        let e = ErrMsg::CannotRead("p.toml".into(), IoWhy::NotFound);
+        assert_eq!(
+            error(&e, Lang::Id),
+            "tidak dapat membaca p.toml: berkas atau direktori tidak ada"
+        );
     }
 }
