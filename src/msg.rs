@@ -73,6 +73,9 @@ pub enum Trivial {
 pub enum Msg {
     /// Mathematical notation, the same in every language (empty: none).
     Math(String),
+    /// Words a lecturer wrote in a problem file (an erratum's `why`), in
+    /// English and, when the file gives `why_id`, in Indonesian.
+    Written(String, Option<String>),
 
     // ---- section headings ----
     /// solve, part 1.

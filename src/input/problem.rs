@@ -102,8 +102,18 @@ pub struct ClipIn {
 pub struct ErratumIn {
     /// The result key (`project.points.B`).
     pub key: String,
-    /// The reason.
+    /// The reason, in English.
     pub why: String,
+    /// The reason in Bahasa Indonesia (shown with `--lang id`).
+    #[serde(default)]
+    pub why_id: Option<String>,
+}
+
+impl ErratumIn {
+    /// The reason in both languages the file gives.
+    pub fn reason(&self) -> crate::msg::Msg {
+        crate::msg::Msg::Written(self.why.clone(), self.why_id.clone())
+    }
 }
 
 /// `[check]`: how `grafika check` marks answers to this problem.

@@ -21,7 +21,7 @@ pub fn to_json(m: &Marking, lang: Lang) -> Value {
                 "expected": a.expected.as_ref().map(|e| json!({ "decimal": value_json(e), "exact": exact_json(e) })),
                 "note": words(&a.note, lang),
                 "diagnosis": a.diagnosis,
-                "why": a.why,
+                "why": a.why.as_ref().map(|w| words(w, lang)),
             })
         })
         .collect();
@@ -122,7 +122,7 @@ pub fn to_text(m: &Marking, style: &Style) -> String {
     let whys: Vec<String> = m
         .answers
         .iter()
-        .filter_map(|a| a.why.as_ref().map(|w| format!("  • {}: {w}\n", a.key)))
+        .filter_map(|a| (a.why.as_ref()).map(|w| format!("  • {}: {}\n", a.key, style.w(w))))
         .collect();
     if !whys.is_empty() {
         out.push_str(t_(

@@ -13,6 +13,10 @@ pub fn words(m: &Msg, lang: Lang) -> String {
     let id = lang == Lang::Id;
     match m {
         Msg::Math(s) => s.clone(),
+        Msg::Written(en, ind) => match (lang, ind) {
+            (Lang::Id, Some(ind)) => ind.clone(),
+            _ => en.clone(),
+        },
         Msg::SecModeling
         | Msg::SecViewing
         | Msg::SecProjection
@@ -886,6 +890,7 @@ mod tests {
         v.push(Msg::ErrHtmlCommand);
         v.extend(drawn_messages());
         v.push(Msg::Unreadable(crate::msg::NumErr::DivZero("1/0".into())));
+        v.push(Msg::Written("as for B".into(), Some("seperti B".into())));
         v.push(Msg::At("p.toml:3:7".into(), Box::new(Msg::ErrUpZero)));
         v.extend(errors::tests::every_error().into_iter().map(Msg::Err));
         v
@@ -956,6 +961,7 @@ mod tests {
         use Msg::*;
         match m {
             Math(_)
+            | Written(..)
             | SecModeling
             | SecViewing
             | SecProjection

@@ -551,11 +551,7 @@ fn compare_printed(p: &ProblemIn, result: &[(String, Val)], rel: f64) -> Option<
                 printed: printed_text(printed),
                 agrees: computed.as_ref().and_then(|v| agrees(printed, v, rel)),
                 computed,
-                why: p
-                    .errata
-                    .iter()
-                    .find(|e| &e.key == key)
-                    .map(|e| e.why.clone()),
+                why: p.errata.iter().find(|e| &e.key == key).map(|e| e.reason()),
             }
         })
         .collect();
