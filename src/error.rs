@@ -11,17 +11,16 @@ pub struct Error {
     /// The input at fault, as the user named it (`--up`, `camera.eye`, `points.A`).
     pub field: String,
     /// Why, with the offending values: a message key (`report::words`
-    /// gives its words), or English text not yet made a key.
+    /// gives its words in every language). There is no way to give
+    /// English text instead: an error without both languages does not
+    /// compile.
     pub message: Msg,
 }
 
 impl Error {
-    /// An error about `field`.
-    pub fn new(field: impl Into<String>, message: impl Into<String>) -> Error {
-        Error {
-            field: field.into(),
-            message: Msg::Untranslated(message.into()),
-        }
+    /// An error about `field`: why it was refused (`msg::ErrMsg`).
+    pub fn why(field: impl Into<String>, why: impl Into<crate::msg::ErrMsg>) -> Error {
+        Error::said(field, Msg::Err(why.into()))
     }
 
     /// An error about `field`, said by a message key.

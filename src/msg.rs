@@ -9,7 +9,9 @@
 //! message; only `report/` knows the words.
 
 mod drawn;
+mod errors;
 pub use drawn::{CameraText, DrawnTitle, ShadeAsked, Statement};
+pub use errors::{Bound, ClapErr, ErrMsg, IoWhy, NumErr, Thing, TomlErr, Twice, Want};
 
 /// A term of the lighting sum.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -71,6 +73,9 @@ pub enum Trivial {
 pub enum Msg {
     /// Mathematical notation, the same in every language (empty: none).
     Math(String),
+    /// Words a lecturer wrote in a problem file (an erratum's `why`), in
+    /// English and, when the file gives `why_id`, in Indonesian.
+    Written(String, Option<String>),
 
     // ---- section headings ----
     /// solve, part 1.
@@ -294,7 +299,7 @@ pub enum Msg {
     /// No answer given.
     NoAnswer,
     /// The answer cannot be read (the reader's reason).
-    Unreadable(String),
+    Unreadable(NumErr),
     /// A component that is not a number (the text; the values expected).
     NotANumber(String, usize),
     /// Exactly equal.
@@ -315,10 +320,10 @@ pub enum Msg {
     Parts(Vec<(String, Msg)>),
 
     // ---- errors ----
-    /// English text not yet made a key (shown as is in every language).
-    Untranslated(String),
     /// A location (`file:line:col`) before a message.
     At(String, Box<Msg>),
+    /// Why an input was refused (`msg::errors`).
+    Err(ErrMsg),
     /// Pe and Pr are the same point (shown).
     ErrSamePoint(String),
     /// Vup is the zero vector.
@@ -338,7 +343,7 @@ pub enum Msg {
     /// axis min > max: axis, min, max.
     ErrBoxInverted(String, String, String),
     /// A file that cannot be read: path, the system's reason.
-    ErrCannotRead(String, String),
+    ErrCannotRead(String, IoWhy),
     /// A zero vector that should be made a unit vector (name).
     ErrZeroUnit(String),
     /// Text that is not NAME=X,Y,Z.
@@ -391,12 +396,12 @@ impl Msg {
         matches!(self, Msg::Math(s) if s.is_empty())
     }
 
-    /// The text of notation or untranslated text (with its location), else
+    /// The text of notation (with its location), else
     /// the key's name and parameters: for `Display` of errors in tests and
     /// logs; people read `report::words`.
     pub fn plain(&self) -> String {
         match self {
-            Msg::Math(s) | Msg::Untranslated(s) => s.clone(),
+            Msg::Math(s) => s.clone(),
             Msg::At(place, m) => format!("{place}: {}", m.plain()),
             other => format!("{other:?}"),
         }

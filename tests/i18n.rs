@@ -59,8 +59,8 @@ fn indonesian_text_uses_the_decimal_comma_and_the_texts_terms() {
 
 /// Drops the human-readable strings of a report's JSON.
 fn without_words(v: &Value) -> Value {
-    const WORDS: [&str; 7] = [
-        "title", "formula", "note", "section", "warnings", "notes", "mistake",
+    const WORDS: [&str; 8] = [
+        "title", "formula", "note", "section", "warnings", "notes", "mistake", "why",
     ];
     match v {
         Value::Object(m) => Value::Object(
@@ -272,4 +272,28 @@ fn generated_statements_in_indonesian_with_the_same_problems() {
     }
     // decimal commas and semicolons between components
     assert!(all.contains("ka = 0,4; kd = 0,6"), "{all}");
+}
+
+#[test]
+fn every_erratum_of_the_shipped_problems_has_its_indonesian_why() {
+    let mut errata = 0;
+    for entry in std::fs::read_dir(root().join("problems")).expect("problems/") {
+        let path = entry.expect("an entry").path();
+        if path.extension().is_none_or(|e| e != "toml") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).expect("reads");
+        let value: toml::Table = toml::from_str(&text).expect("TOML");
+        let list = value.get("errata").and_then(|e| e.as_array());
+        for e in list.into_iter().flatten() {
+            errata += 1;
+            assert!(
+                e.get("why_id").and_then(|w| w.as_str()).is_some(),
+                "{}: an erratum without why_id: {e}",
+                path.display()
+            );
+        }
+    }
+    // text-triangle.toml has 5 errata and text-clip.toml 3.
+    assert_eq!(errata, 8);
 }

@@ -6,7 +6,7 @@ use crate::cli::args::CheckArgs;
 use crate::cli::cut_message;
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
-use crate::msg::Msg;
+use crate::msg::{Bound, ErrMsg, IoWhy, Msg, Twice};
 use crate::report::check::{to_json, to_text};
 use crate::report::lang::{tr, Lang};
 use crate::report::Style;
@@ -20,10 +20,7 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<(String, i32)> {
     valid_tolerance(a.tolerance)?;
     let stdin = Path::new("-");
     if a.file == stdin && a.answers.as_deref() == Some(stdin) {
-        return Err(Error::new(
-            "answers",
-            "the problem and the answers cannot both come from standard input (-)",
-        ));
+        return Err(Error::why("answers", ErrMsg::BothStdin));
     }
     let p = ProblemIn::read(&a.file)?;
     let settings = check::Settings {
@@ -35,19 +32,17 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<(String, i32)> {
         ..*style
     };
     match (&a.answers, a.answers_from_text) {
-        (Some(_), true) | (None, false) => Err(Error::new(
-            "answers",
-            "give either --answers FILE|DIR or --answers-from-text",
-        )),
+        (Some(_), true) | (None, false) => Err(Error::why("answers", Twice::Answers)),
         (None, true) => {
             if p.printed.is_empty() {
-                return Err(Error::new(
+                return Err(Error::why(
                     "answers-from-text",
-                    format!("{} has no [printed] table", a.file.display()),
+                    ErrMsg::NoPrinted(a.file.display().to_string()),
                 ));
             }
             let (_, answers) = check::answers_from_table(&p.printed);
-            let who = p.source.clone().unwrap_or_else(|| "the text".into());
+            let who =
+                (p.source.clone()).unwrap_or_else(|| tr(style.lang, "the text", "teks").into());
             let m = check::mark(&p, &who, &answers, settings, true)?;
             Ok((output(&m, json, style), 0))
         }
@@ -63,9 +58,10 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<(String, i32)> {
                     outcome: Ok(m.clone()),
                     note: None,
                 };
-                write_csv(c, &summary_csv(std::slice::from_ref(&row)))?;
+                let csv = summary_csv(std::slice::from_ref(&row), style.lang);
+                write_csv(c, &csv)?;
                 if c.as_os_str() == "-" {
-                    return Ok((summary_csv(&[row]), 0));
+                    return Ok((csv, 0));
                 }
             }
             Ok((output(&m, json, style), 0))
@@ -95,10 +91,7 @@ fn class(
 ) -> Result<(String, i32)> {
     let to_stdout = a.csv.as_deref() == Some(Path::new("-"));
     if to_stdout && json {
-        return Err(Error::new(
-            "csv",
-            "--csv - and --json would both write to standard output: give --csv a file name",
-        ));
+        return Err(Error::why("csv", ErrMsg::CsvAndJson));
     }
     let (files, skipped) = answer_files(dir, style.lang)?;
     let rows: Vec<Row> = files
@@ -110,7 +103,7 @@ fn class(
     } else {
         0
     };
-    let csv = summary_csv(&rows);
+    let csv = summary_csv(&rows, style.lang);
     if let Some(c) = &a.csv {
         if to_stdout {
             return Ok((csv, status));
@@ -127,7 +120,7 @@ fn class(
         .unwrap_or_default()
             + "\n"
     } else {
-        let mut t = summary_table(&p.title, &rows);
+        let mut t = summary_table(&p.title, &rows, style.lang);
         for r in &rows {
             if let Some(n) = &r.note {
                 t.push_str(&format!("{}: {n}\n", r.file.display()));
@@ -196,16 +189,20 @@ fn write_csv(c: &Path, csv: &str) -> Result<()> {
     if c.as_os_str() == "-" {
         return Ok(());
     }
-    std::fs::write(c, csv)
-        .map_err(|e| Error::new("csv", format!("cannot write {}: {e}", c.display())))
+    std::fs::write(c, csv).map_err(|e| {
+        Error::why(
+            "csv",
+            ErrMsg::CannotWrite(c.display().to_string(), IoWhy::of(&e)),
+        )
+    })
 }
 
 /// `--tolerance` must be a finite number ≥ 0.
 pub(crate) fn valid_tolerance(t: Option<f64>) -> Result<()> {
     match t {
-        Some(t) if !(t.is_finite() && t >= 0.0) => Err(Error::new(
+        Some(t) if !(t.is_finite() && t >= 0.0) => Err(Error::why(
             "tolerance",
-            format!("must be a finite number ≥ 0, got {t}"),
+            ErrMsg::MustBe(Bound::FiniteAtLeastZero, t.to_string()),
         )),
         _ => Ok(()),
     }
@@ -233,7 +230,7 @@ fn answer_files(dir: &Path, lang: Lang) -> Result<(Vec<PathBuf>, Skipped)> {
     let rd = std::fs::read_dir(dir).map_err(|e| {
         Error::said(
             "answers",
-            Msg::ErrCannotRead(dir.display().to_string(), e.to_string()),
+            Msg::ErrCannotRead(dir.display().to_string(), IoWhy::of(&e)),
         )
     })?;
     let mut all: Vec<PathBuf> = rd.filter_map(|e| e.ok().map(|e| e.path())).collect();
@@ -261,9 +258,9 @@ fn answer_files(dir: &Path, lang: Lang) -> Result<(Vec<PathBuf>, Skipped)> {
         })
         .collect();
     if files.is_empty() {
-        return Err(Error::new(
+        return Err(Error::why(
             "answers",
-            format!("{} holds no .toml answer files", dir.display()),
+            ErrMsg::NoAnswerFiles(dir.display().to_string()),
         ));
     }
     Ok((files, skipped))
@@ -277,28 +274,29 @@ fn mistakes(m: &Marking) -> String {
         .join(" ")
 }
 
+/// An error as a person reads it: `field: words`, cut when long.
+fn said(e: &Error, lang: Lang) -> String {
+    let words = crate::report::words::words(&e.message, lang);
+    cut_message(&format!("{}: {words}", e.field))
+}
+
 /// One row per student.
-fn summary_table(title: &str, rows: &[Row]) -> String {
+fn summary_table(title: &str, rows: &[Row], lang: Lang) -> String {
     use comfy_table::{presets, Table};
     let mut t = Table::new();
-    t.load_preset(presets::UTF8_FULL_CONDENSED).set_header(vec![
-        "student",
-        "score",
-        "correct",
-        "too coarse",
-        "wrong",
-        "missing",
-        "unparseable",
-        "follow-through",
-        "mistakes",
-    ]);
+    t.load_preset(presets::UTF8_FULL_CONDENSED)
+        .set_header(crate::report::check::class_header(lang));
     for r in rows {
         let m = match &r.outcome {
             Ok(m) => m,
             Err(e) => {
                 let mut cells = vec![r.who.clone(), "—".to_string()];
                 cells.extend(std::iter::repeat_n(String::new(), 6));
-                cells.push(format!("error: {}", cut_message(&e.to_string())));
+                cells.push(format!(
+                    "{}: {}",
+                    tr(lang, "error", "kesalahan"),
+                    said(e, lang)
+                ));
                 t.add_row(cells);
                 continue;
             }
@@ -321,7 +319,7 @@ fn summary_table(title: &str, rows: &[Row]) -> String {
 /// `student,file,score,total,correct,too_coarse,wrong,missing,unparseable,follow_through,mistakes,error`
 /// (follow_through: how many of the correct were credited by follow-through;
 /// a file that could not be marked: empty counts and its error).
-fn summary_csv(rows: &[Row]) -> String {
+fn summary_csv(rows: &[Row], lang: Lang) -> String {
     let q = |s: &str| {
         if s.contains([',', '"', '\n']) {
             format!("\"{}\"", s.replace('"', "\"\""))
@@ -347,7 +345,7 @@ fn summary_csv(rows: &[Row]) -> String {
                 m.follow_through(),
                 q(&mistakes(m)),
             )),
-            Err(e) => out.push_str(&format!("{who},{file},,,,,,,,,,{}\n", q(&e.to_string()))),
+            Err(e) => out.push_str(&format!("{who},{file},,,,,,,,,,{}\n", q(&said(e, lang)))),
         }
     }
     out

@@ -3,6 +3,7 @@
 
 use crate::cli::args::{Format, GenerateArgs};
 use crate::error::{Error, Result};
+use crate::msg::{Bound, ErrMsg, IoWhy};
 use crate::report::doc::Doc;
 use crate::report::gift::gift;
 use crate::report::moodle::{moodle_xml, Exams};
@@ -46,20 +47,21 @@ const BYTES_PER_PROBLEM: u64 = 16_000;
 /// not a directory is always an error.
 fn check_out(a: &GenerateArgs) -> Result<()> {
     if a.out.exists() && !a.out.is_dir() {
-        return Err(Error::new(
+        return Err(Error::why(
             "out",
-            format!("{} exists and is not a directory", a.out.display()),
+            ErrMsg::NotDirectory(a.out.display().to_string()),
         ));
     }
     let n = a.count as u64 * a.variants as u64;
     if n > MAX_PROBLEMS && !a.force {
-        return Err(Error::new(
+        return Err(Error::why(
             "count",
-            format!(
-                "{n} problems ({} × {}, about {} MB) is more than the {MAX_PROBLEMS} written without --force",
-                a.count,
-                a.variants,
-                n * BYTES_PER_PROBLEM / 1_000_000
+            ErrMsg::TooManyProblems(
+                n,
+                a.count as u64,
+                a.variants as u64,
+                n * BYTES_PER_PROBLEM / 1_000_000,
+                MAX_PROBLEMS,
             ),
         ));
     }
@@ -70,12 +72,9 @@ fn check_out(a: &GenerateArgs) -> Result<()> {
         _ => "variant-01",
     });
     if first.exists() && !a.force {
-        return Err(Error::new(
+        return Err(Error::why(
             "out",
-            format!(
-                "{} already exists: give --force to overwrite it, or another --out",
-                first.display()
-            ),
+            ErrMsg::ExistsForce(first.display().to_string()),
         ));
     }
     Ok(())
@@ -95,8 +94,7 @@ pub fn write_exams(a: &GenerateArgs, style: &Style) -> Result<Vec<PathBuf>> {
         } else {
             a.out.join(format!("variant-{:02}", v + 1))
         };
-        std::fs::create_dir_all(&dir)
-            .map_err(|e| Error::new("out", format!("cannot create {}: {e}", dir.display())))?;
+        std::fs::create_dir_all(&dir).map_err(|e| out_error(ErrMsg::CannotCreate, &dir, &e))?;
         let exam = exam(&a.topic, a.difficulty, a.count, variant_seed(a.seed, v))?;
         files.extend(write_exam(&dir, a, v + 1, &exam, style)?);
         bar.iter().for_each(|b| b.inc(1));
@@ -128,8 +126,7 @@ fn write_exam(
     let mut files = Vec::new();
     let mut put = |name: String, text: String| -> Result<()> {
         let path = dir.join(name);
-        std::fs::write(&path, text)
-            .map_err(|e| Error::new("out", format!("cannot write {}: {e}", path.display())))?;
+        std::fs::write(&path, text).map_err(|e| out_error(ErrMsg::CannotWrite, &path, &e))?;
         files.push(path);
         Ok(())
     };
@@ -183,9 +180,9 @@ fn quiz_tolerance(a: &GenerateArgs) -> Result<f64> {
     if r.is_finite() && r > 0.0 && r < 1.0 {
         Ok(r)
     } else {
-        Err(Error::new(
+        Err(Error::why(
             "tolerance",
-            format!("must be a number above 0 and below 1 (0.001 is 0.1%), got {r}"),
+            ErrMsg::MustBe(Bound::Fraction, r.to_string()),
         ))
     }
 }
@@ -211,10 +208,14 @@ fn write_quiz(a: &GenerateArgs, style: &Style) -> Result<PathBuf> {
         Format::Gift => ("quiz.gift", gift(&e, style)),
         _ => ("quiz.xml", moodle_xml(&e, style)),
     };
-    std::fs::create_dir_all(&a.out)
-        .map_err(|e| Error::new("out", format!("cannot create {}: {e}", a.out.display())))?;
+    std::fs::create_dir_all(&a.out).map_err(|e| out_error(ErrMsg::CannotCreate, &a.out, &e))?;
     let path = a.out.join(name);
-    std::fs::write(&path, text)
-        .map_err(|e| Error::new("out", format!("cannot write {}: {e}", path.display())))?;
+    std::fs::write(&path, text).map_err(|e| out_error(ErrMsg::CannotWrite, &path, &e))?;
     Ok(path)
+}
+
+/// An error on `--out`: a directory that cannot be created or a file that
+/// cannot be written (`what`), with the system's reason.
+fn out_error(what: fn(String, IoWhy) -> ErrMsg, path: &Path, e: &std::io::Error) -> Error {
+    Error::why("out", what(path.display().to_string(), IoWhy::of(e)))
 }

@@ -6,11 +6,12 @@ pub mod calc;
 pub mod check;
 pub mod generate;
 pub mod practice;
+mod refused;
 pub mod render;
 
 use crate::bench::accuracy::Stage;
 use crate::error::{Error, Result};
-use crate::msg::Msg;
+use crate::msg::{ErrMsg, IoWhy, Msg};
 use crate::num::Precision;
 use crate::report::lang::{tr, Lang};
 use crate::report::Style;
@@ -35,12 +36,9 @@ macro_rules! at_precision {
 pub fn run(cli: &Cli) -> Result<Report> {
     let report = run_unchecked(cli)?;
     match report.non_finite_result() {
-        Some(key) => Err(Error::new(
+        Some(key) => Err(Error::why(
             key,
-            format!(
-                "the result is not a finite number at {} precision: an input overflows or underflows the floats (scale the inputs, or use --precision exact)",
-                format!("{:?}", cli.common.precision).to_lowercase()
-            ),
+            ErrMsg::ResultNotFinite(format!("{:?}", cli.common.precision).to_lowercase()),
         )),
         None => Ok(report),
     }
@@ -61,16 +59,12 @@ fn run_unchecked(cli: &Cli) -> Result<Report> {
         | Command::Bench { .. }
         | Command::Practice(_)
         | Command::Completions { .. }
-        | Command::Man => Err(Error::new(
-            "command",
-            "check, generate, bench, practice, completions and man print their own output: use main_with_args",
-        )),
+        | Command::Man => Err(Error::why("command", ErrMsg::OwnOutput)),
         // The renderer computes at f32 (the calculator's precisions are for
         // explaining): another --precision is refused, not ignored.
-        Command::Render(_) if p != Precision::Exact => Err(Error::new(
-            "precision",
-            "render always computes at f32 (--precision is for the calculator's worked steps): leave it out",
-        )),
+        Command::Render(_) if p != Precision::Exact => {
+            Err(Error::why("precision", ErrMsg::RenderPrecision))
+        }
         Command::Render(a) => crate::cli::render::run(a),
     }
 }
@@ -103,7 +97,7 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
     let wants_json = args.iter().any(|a| a == "--json");
     let cli = match Cli::try_parse_from(&args) {
         Ok(c) => c,
-        Err(e) => return clap_error(e, wants_json),
+        Err(e) => return clap_error(e, wants_json, refused::lang_of_args(&args)),
     };
     let style = style_of(&cli);
     let json = cli.common.json;
@@ -153,7 +147,7 @@ fn man() -> Result<String> {
     let mut out = Vec::new();
     clap_mangen::Man::new(Cli::command())
         .render(&mut out)
-        .map_err(|e| Error::new("man", e.to_string()))?;
+        .map_err(|e| Error::why("man", ErrMsg::Man(e.to_string())))?;
     Ok(String::from_utf8_lossy(&out).into_owned())
 }
 
@@ -161,7 +155,6 @@ fn man() -> Result<String> {
 /// file is never overwritten).
 fn write_figure(cmd: &Command, report: &Report, style: &Style) -> Result<()> {
     use crate::report::figure::{builders::figure_of, svg::to_svg};
-    use std::io::Write;
     let path = match cmd {
         Command::Clip(a) => a.figure.as_ref(),
         _ => None,
@@ -169,25 +162,7 @@ fn write_figure(cmd: &Command, report: &Report, style: &Style) -> Result<()> {
     let (Some(path), Some(fig)) = (path, figure_of(report, style)) else {
         return Ok(());
     };
-    let fail = |e: std::io::Error| {
-        let msg = if e.kind() == std::io::ErrorKind::AlreadyExists {
-            crate::report::lang::tr(
-                style.lang,
-                "exists; remove it or choose another name",
-                "sudah ada; hapus atau pilih nama lain",
-            )
-            .to_string()
-        } else {
-            e.to_string()
-        };
-        Error::new("figure", format!("{}: {msg}", path.display()))
-    };
-    let mut f = std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(path)
-        .map_err(fail)?;
-    f.write_all(to_svg(&fig).as_bytes()).map_err(fail)
+    create_new(path, to_svg(&fig).as_bytes(), "figure")
 }
 
 /// Whether a command's result is a worked solution (a report) that
@@ -217,7 +192,7 @@ fn write_html(cli: &Cli, report: &Report, style: &Style) -> Result<()> {
         .collect();
     let title = page_title(report, style);
     let page = crate::report::html::report_page(report, style, &title, &figures);
-    create_new(path, page.as_bytes(), "html", style)
+    create_new(path, page.as_bytes(), "html")
 }
 
 /// The page's title: the problem's title for `solve`, else the command.
@@ -234,21 +209,9 @@ fn page_title(report: &Report, style: &Style) -> String {
 
 /// Writes a new file; an existing one is an error on `field` (never
 /// overwritten).
-fn create_new(path: &std::path::Path, bytes: &[u8], field: &str, style: &Style) -> Result<()> {
+fn create_new(path: &std::path::Path, bytes: &[u8], field: &str) -> Result<()> {
     use std::io::Write;
-    let fail = |e: std::io::Error| {
-        let msg = if e.kind() == std::io::ErrorKind::AlreadyExists {
-            style
-                .tr(
-                    "exists; remove it or choose another name",
-                    "sudah ada; hapus atau pilih nama lain",
-                )
-                .to_string()
-        } else {
-            e.to_string()
-        };
-        Error::new(field, format!("{}: {msg}", path.display()))
-    };
+    let fail = |e: std::io::Error| write_error(field, path, &e);
     let mut f = std::fs::OpenOptions::new()
         .write(true)
         .create_new(true)
@@ -322,9 +285,20 @@ pub fn terminal_bar(len: u64, msg: &str) -> Option<indicatif::ProgressBar> {
     Some(b)
 }
 
+/// A new file that could not be written: one that exists is never
+/// overwritten (remove it or choose another name).
+fn write_error(field: &str, path: &std::path::Path, e: &std::io::Error) -> Error {
+    let shown = path.display().to_string();
+    match e.kind() {
+        std::io::ErrorKind::AlreadyExists => Error::why(field, ErrMsg::Exists(shown)),
+        _ => Error::why(field, ErrMsg::CannotWrite(shown, IoWhy::of(e))),
+    }
+}
+
 /// A command line clap refused: help and version are printed as asked
-/// (exit 0); anything else is an error naming the argument (exit 2).
-fn clap_error(e: clap::Error, wants_json: bool) -> i32 {
+/// (exit 0); anything else is an error naming the argument (exit 2), in
+/// the language of `--lang` if it was given, else the environment's.
+fn clap_error(e: clap::Error, wants_json: bool, lang: Option<Lang>) -> i32 {
     use clap::error::{ContextKind, ErrorKind};
     match e.kind() {
         ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
@@ -336,15 +310,14 @@ fn clap_error(e: clap::Error, wants_json: bool) -> i32 {
             2
         }
         kind => {
+            let lang = lang.unwrap_or_else(|| Lang::from_env(|k| std::env::var(k).ok()));
             let field = e
                 .get(ContextKind::InvalidArg)
                 .map(|v| v.to_string())
-                .unwrap_or_else(|| "arguments".to_string());
-            let err = Error::new(
-                field,
-                clap_message(&e.render().to_string(), &kind.to_string()),
-            );
-            report_error(&err, wants_json, Lang::from_env(|k| std::env::var(k).ok()))
+                .unwrap_or_else(|| tr(lang, "arguments", "argumen").into());
+            let english = clap_message(&e.render().to_string(), &kind.to_string());
+            let err = Error::why(field, refused::clap_refused(&e, english));
+            report_error(&err, wants_json, lang)
         }
     }
 }

@@ -8,6 +8,7 @@ use crate::cli::args::PracticeArgs;
 use crate::cli::check::valid_tolerance;
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
+use crate::msg::ErrMsg;
 use crate::report::practice::{event_json, event_text, intro, Look, PROMPT};
 use crate::report::Style;
 use crate::tutor::check;
@@ -20,10 +21,7 @@ pub fn run(a: &PracticeArgs, json: bool, style: &Style) -> Result<()> {
     valid_tolerance(a.tolerance)?;
     let (p, drawn, seed) = match (&a.file, a.topic) {
         (Some(f), _) if f.as_os_str() == "-" => {
-            return Err(Error::new(
-                "file",
-                "standard input holds the answers: give the problem as a file",
-            ))
+            return Err(Error::why("file", ErrMsg::StdinHoldsAnswers))
         }
         (Some(f), _) => (ProblemIn::read(f)?, None, None),
         (None, Some(t)) => {
@@ -31,13 +29,13 @@ pub fn run(a: &PracticeArgs, json: bool, style: &Style) -> Result<()> {
             let mut exam = generate::exam(&[t], a.difficulty, 1, seed)?;
             let g = exam
                 .pop()
-                .ok_or_else(|| Error::new("topic", "no problem drawn"))?;
+                .ok_or_else(|| Error::why("topic", ErrMsg::NoProblemDrawn))?;
             let mut p = g.problem;
             p.title = style.w(&g.title);
             p.statement = Some(style.w(&g.statement));
             (p, Some((t, a.difficulty)), Some(seed))
         }
-        (None, None) => return Err(Error::new("file", "give a problem file or --topic")),
+        (None, None) => return Err(Error::why("file", ErrMsg::GiveProblem)),
     };
     let settings = check::settings_for(&p, a.tolerance, a.sig_figs);
     let plan = practice::plan(&p, settings, drawn)?;

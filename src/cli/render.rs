@@ -26,12 +26,9 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
     let pixel = a.explain_pixel.as_deref().map(parse_pixel).transpose()?;
     if let Some((x, y)) = pixel {
         if x >= opt.width || y >= opt.height {
-            return Err(Error::new(
+            return Err(Error::why(
                 "--explain-pixel",
-                format!(
-                    "({x}, {y}) is outside the {}x{} image",
-                    opt.width, opt.height
-                ),
+                crate::msg::ErrMsg::PixelOutside(x, y, opt.width, opt.height),
             ));
         }
     }
@@ -54,14 +51,14 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
         if let Some(b) = &bar {
             b.finish_and_clear();
         }
-        let f = last.ok_or_else(|| Error::new("--repeat", "nothing rendered"))?;
+        let f = last.ok_or_else(|| Error::why("--repeat", crate::msg::ErrMsg::NothingRendered))?;
         Ok((f, times))
     };
     let (frame, runs) = match a.threads {
         Some(n) => rayon::ThreadPoolBuilder::new()
             .num_threads(n as usize)
             .build()
-            .map_err(|e| Error::new("--threads", e.to_string()))?
+            .map_err(|e| Error::why("--threads", crate::msg::ErrMsg::Threads(e.to_string())))?
             .install(go)?,
         None => go()?,
     };
@@ -69,9 +66,9 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
     if a.output.as_os_str() == "-" {
         let out = std::io::stdout().lock();
         render::encode_png(&frame, out).map_err(|e| {
-            Error::new(
+            Error::why(
                 "output",
-                format!("cannot write the PNG to standard output: {e}"),
+                crate::msg::ErrMsg::CannotWriteStdout(crate::msg::IoWhy::Other(e)),
             )
         })?;
     } else {
@@ -261,9 +258,9 @@ fn stats_text(
 
 fn parse_pixel(s: &str) -> Result<(u32, u32)> {
     let bad = || {
-        Error::new(
+        Error::why(
             "--explain-pixel",
-            format!("expected X,Y (whole pixel numbers), got `{s}`"),
+            crate::msg::ErrMsg::PixelText(s.to_string()),
         )
     };
     let (x, y) = s.split_once(',').ok_or_else(bad)?;

@@ -3,9 +3,11 @@
 //! TOML errors turned into `file:line:column: message` naming the field.
 
 use crate::error::Error;
+use crate::msg::TomlErr;
 use crate::num::{parse_expr, Expr};
 use serde::de::{self, Deserializer};
 use serde::Deserialize;
+use std::cell::RefCell;
 
 /// A number in a file: a TOML integer or float (taken at its written decimal
 /// value) or a string holding an expression.
@@ -28,7 +30,8 @@ impl<'de> Deserialize<'de> for Num {
             }
             fn visit_f64<E: de::Error>(self, v: f64) -> std::result::Result<Num, E> {
                 if !v.is_finite() {
-                    return Err(E::custom(format!("{v} is not a finite number")));
+                    let e = crate::msg::NumErr::NotFiniteLiteral(v.to_string());
+                    return Err(value_error(TomlErr::Num(e)));
                 }
                 // Rust prints the shortest decimal that reads back to v: the
                 // value as written in the file.
@@ -38,7 +41,7 @@ impl<'de> Deserialize<'de> for Num {
             fn visit_str<E: de::Error>(self, v: &str) -> std::result::Result<Num, E> {
                 parse_expr(v)
                     .map(Num)
-                    .map_err(|m| E::custom(format!("`{v}`: {m}")))
+                    .map_err(|m| value_error(TomlErr::Num(m.quoted(v))))
             }
         }
         d.deserialize_any(V)
@@ -74,7 +77,7 @@ impl<'de> Deserialize<'de> for AngleIn {
         match Raw::deserialize(d)? {
             Raw::S(s) => crate::num::Angle::parse(&s)
                 .map(AngleIn)
-                .map_err(|m| de::Error::custom(format!("`{s}`: {m}"))),
+                .map_err(|m| value_error(TomlErr::Num(m.quoted(&s)))),
             Raw::N(n) => Ok(AngleIn(crate::num::Angle {
                 value: n.0,
                 unit: crate::num::AngleUnit::Deg,
@@ -83,12 +86,65 @@ impl<'de> Deserialize<'de> for AngleIn {
     }
 }
 
-/// A TOML error as `origin:line:col: message`, field = the key at fault if known.
+thread_local! {
+    /// The last error a value of a file raised, with the text serde
+    /// carries for it: serde's errors are text, so the key travels beside it.
+    static VALUE_ERROR: RefCell<Option<(String, TomlErr)>> = const { RefCell::new(None) };
+}
+
+/// A serde error for a value that cannot be taken (a number that cannot
+/// be read, a value out of its bounds); [`toml_error`] finds its key again.
+pub fn value_error<E: de::Error>(e: TomlErr) -> E {
+    let text = format!("{e:?}");
+    VALUE_ERROR.with(|c| *c.borrow_mut() = Some((text.clone(), e)));
+    E::custom(text)
+}
+
+/// A TOML error at `origin:line:col`, field = the key at fault if known.
 pub fn toml_error(origin: &str, text: &str, e: &toml::de::Error) -> Error {
     let (line, col) = e.span().map(|s| line_col(text, s.start)).unwrap_or((0, 0));
     let msg = e.message().trim().to_string();
     let field = field_of_toml_error(&msg, text, line, col);
-    Error::new(field, format!("{origin}:{line}:{col}: {msg}"))
+    Error::why(field, toml_reason(&msg)).at(format!("{origin}:{line}:{col}"))
+}
+
+/// What a TOML reader's message says, as a key: the kinds serde names, the
+/// number errors of [`Num`] and [`AngleIn`], else the reader's own words.
+pub fn toml_reason(msg: &str) -> TomlErr {
+    let value = VALUE_ERROR.with(|c| c.borrow_mut().take());
+    if let Some((_, e)) = value.filter(|(t, _)| msg.contains(t.as_str())) {
+        return e;
+    }
+    let ticked = |m: &str| m.split('`').nth(1).unwrap_or_default().to_string();
+    let after = |m: &str, w: &str| m.split_once(w).map(|(_, r)| r.trim().to_string());
+    if let Some(rest) = msg.strip_prefix("unknown field") {
+        return TomlErr::UnknownField(ticked(rest), after(rest, "expected one of"));
+    }
+    if let Some(rest) = msg.strip_prefix("missing field") {
+        return TomlErr::MissingField(ticked(rest));
+    }
+    if msg.starts_with("duplicate key") || msg.starts_with("duplicate field") {
+        return TomlErr::Duplicate(ticked(msg));
+    }
+    if let Some(rest) = msg.strip_prefix("unknown variant") {
+        let allowed = after(rest, "expected one of").or_else(|| after(rest, "expected"));
+        return TomlErr::UnknownVariant(ticked(rest), allowed.unwrap_or_default());
+    }
+    for (head, kind) in [
+        (
+            "invalid type:",
+            TomlErr::InvalidType as fn(String, String) -> TomlErr,
+        ),
+        ("invalid length", TomlErr::InvalidLength),
+    ] {
+        if let Some((found, expected)) = msg
+            .strip_prefix(head)
+            .and_then(|r| r.rsplit_once(", expected "))
+        {
+            return kind(found.trim().to_string(), expected.trim().to_string());
+        }
+    }
+    TomlErr::Syntax(msg.to_string())
 }
 
 /// The field a TOML error is about: the name in the message of an unknown,

@@ -21,7 +21,7 @@
 use crate::error::{Error, Result};
 use crate::input;
 use crate::input::fields::{toml_error, AngleIn, Num, Vec3In};
-use crate::msg::Msg;
+use crate::msg::{ErrMsg, Msg, Thing, Twice};
 use crate::num::vec::{normalize, sub, v3, V3};
 use crate::num::Scalar;
 use crate::stages::lighting::{
@@ -147,9 +147,9 @@ impl LightsFileIn {
         let f: LightsFileIn = toml::from_str(&text)
             .map_err(|e| toml_error(&path.display().to_string(), &text, &e))?;
         if f.light.is_empty() {
-            return Err(Error::new(
+            return Err(Error::why(
                 "lights",
-                format!("{} has no [[light]] table", path.display()),
+                ErrMsg::NoLightTable(path.display().to_string()),
             ));
         }
         Ok(f)
@@ -208,10 +208,7 @@ pub fn build<T: Scalar>(
     let surface = surface(sh, &f, tr)?;
     let lights = lights(sh, file, &f, lights_prefix, &surface.position, tr)?;
     if file.global_ambient.is_some() && sh.global_ambient.is_some() {
-        return Err(Error::new(
-            f("global_ambient"),
-            "give the global ambient once, not both in the lights file and here",
-        ));
+        return Err(Error::why(f("global_ambient"), Twice::GlobalAmbient));
     }
     let ga = match file.global_ambient.as_ref().or(sh.global_ambient.as_ref()) {
         Some(g) => rgb(&f("global_ambient"), g)?,
@@ -232,26 +229,13 @@ fn material<T: Scalar>(sh: &ShadeIn, file: &LightsFileIn, prefix: &str) -> Resul
     let f = |k: &str| format!("{prefix}{k}");
     let d3d = file.material.as_ref().or(sh.material.as_ref());
     if file.material.is_some() && sh.material.is_some() {
-        return Err(Error::new(
-            f("material"),
-            "give the material once, not both in the lights file and here",
-        ));
+        return Err(Error::why(f("material"), Twice::Material));
     }
     let color = match (&sh.color, d3d.and_then(|m| m.diffuse.as_ref())) {
         (Some(c), None) => rgb(&f("color"), c)?,
         (None, Some(c)) => rgb(&f("material.diffuse"), c)?,
-        (Some(_), Some(_)) => {
-            return Err(Error::new(
-                f("color"),
-                "give the surface color once: color or material.diffuse",
-            ))
-        }
-        (None, None) => {
-            return Err(Error::new(
-                f("color"),
-                "the surface color Cs is missing (R,G,B in [0, 1])",
-            ))
-        }
+        (Some(_), Some(_)) => return Err(Error::why(f("color"), Twice::Color)),
+        (None, None) => return Err(Error::why(f("color"), ErrMsg::ColorMissing)),
     };
     let mut mat = Material::text_default(color);
     mat.model = sh.model.unwrap_or_default();
@@ -299,10 +283,7 @@ fn direct3d_material<T: Scalar>(
     mat.emissive = opt_rgb(&f("material.emissive"), &m.emissive, gray(T::zero()))?;
     if let Some(p) = &m.power {
         if shininess_given {
-            return Err(Error::new(
-                f("shininess"),
-                "give the exponent once: shininess or material.power",
-            ));
+            return Err(Error::why(f("shininess"), Twice::Shininess));
         }
         mat.shininess = ev(&f("material.power"), p)?;
     }
@@ -319,7 +300,7 @@ fn surface<T: Scalar>(
     let normal_in = sh
         .normal
         .as_ref()
-        .ok_or_else(|| Error::new(f("normal"), "the surface normal N is missing"))?;
+        .ok_or_else(|| Error::why(f("normal"), ErrMsg::NormalMissing))?;
     let normal = lighting::unit("N", &f("normal"), &ev3(&f("normal"), normal_in)?, tr)?;
     let position = match &sh.position {
         Some(p) => ev3(&f("position"), p)?,
@@ -331,21 +312,11 @@ fn surface<T: Scalar>(
         .map(|c| ev3::<T>(&f("camera"), c))
         .transpose()?;
     let view = match (&sh.view, &camera) {
-        (Some(_), Some(_)) => {
-            return Err(Error::new(
-                f("view"),
-                "give V or the camera position (local viewer), not both",
-            ))
-        }
+        (Some(_), Some(_)) => return Err(Error::why(f("view"), Twice::View)),
         (Some(v), None) => lighting::unit("V", &f("view"), &ev3(&f("view"), v)?, tr)?,
         (None, Some(c)) => {
             normalize(&sub(c, &position))
-                .ok_or_else(|| {
-                    Error::new(
-                        f("camera"),
-                        "the camera is at the surface point: no direction to the viewer",
-                    )
-                })?
+                .ok_or_else(|| Error::why(f("camera"), ErrMsg::CameraAtPoint))?
                 .0
         }
         (None, None) => {
@@ -386,14 +357,8 @@ fn lights<T: Scalar>(
             .enumerate()
             .map(|(i, l)| light::<T>(l, &format!("{lights_prefix}[{i}]"), position, tr))
             .collect(),
-        (Some(_), false) => Err(Error::new(
-            f("light"),
-            "give one light vector L or [[light]] tables, not both",
-        )),
-        (None, true) => Err(Error::new(
-            f("light"),
-            "no light: give L (toward the light) or a lights file",
-        )),
+        (Some(_), false) => Err(Error::why(f("light"), Twice::Light)),
+        (None, true) => Err(Error::why(f("light"), ErrMsg::NoLight)),
     }
 }
 
@@ -417,10 +382,7 @@ pub fn light<T: Scalar>(
             forbid(l, &k, &["direction"])?;
             let pos = need(l, &k, &l.position, "position")?;
             if pos == *point {
-                return Err(Error::new(
-                    k("position"),
-                    "the light is at the surface point itself: no direction to it",
-                ));
+                return Err(Error::why(k("position"), ErrMsg::LightAtPoint));
             }
             if l.kind == LightType::Point {
                 forbid(l, &k, &["axis", "theta", "phi", "falloff"])?;
@@ -460,13 +422,10 @@ fn spot<T: Scalar>(
     let axis = need(l, k, &l.axis, "axis")?;
     let axis = lighting::unit("axis", &k("axis"), &axis, tr)?;
     let angle = |a: &Option<AngleIn>, key: &str| -> Result<T> {
-        let a = a.as_ref().ok_or_else(|| {
-            Error::new(
-                k(key),
-                format!("a spot light needs `{key}` (full cone angle, degrees)"),
-            )
-        })?;
-        a.0.degrees::<T>().map_err(|m| Error::new(k(key), m))
+        let a = a
+            .as_ref()
+            .ok_or_else(|| Error::why(k(key), ErrMsg::SpotNeeds(key.to_string())))?;
+        a.0.degrees::<T>().map_err(|m| Error::why(k(key), m))
     };
     Ok(LightKind::Spot {
         pos,
@@ -490,10 +449,8 @@ fn need<T: Scalar>(
     key: &str,
 ) -> Result<V3<T>> {
     let v = v.as_ref().ok_or_else(|| {
-        Error::new(
-            k(key),
-            format!("a {:?} light needs `{key}`", l.kind).to_lowercase(),
-        )
+        let kind = format!("{:?}", l.kind).to_lowercase();
+        Error::why(k(key), ErrMsg::Needs(Thing::Light(kind), key.to_string()))
     })?;
     ev3(&k(key), v)
 }
@@ -512,12 +469,9 @@ fn forbid(l: &LightIn, k: &dyn Fn(&str) -> String, keys: &[&str]) -> Result<()> 
         _ => l.falloff.is_some(),
     };
     match keys.iter().find(|key| given(key)) {
-        Some(key) => Err(Error::new(
+        Some(key) => Err(Error::why(
             k(key),
-            format!(
-                "`{key}` does not apply to a {} light",
-                format!("{:?}", l.kind).to_lowercase()
-            ),
+            ErrMsg::NotApplicable(key.to_string(), format!("{:?}", l.kind).to_lowercase()),
         )),
         None => Ok(()),
     }

@@ -8,6 +8,7 @@
 //! index (the text's `i%2`, `i%3`, `i%5`); triangles remember their polygon.
 
 use crate::error::{Error, Result};
+use crate::msg::{ErrMsg, IoWhy, NumErr};
 use std::collections::HashMap;
 use std::f64::consts::PI;
 use std::path::Path;
@@ -188,19 +189,16 @@ pub fn load_obj(path: &Path, field: &str) -> Result<Mesh> {
         ignore_points: true,
         ignore_lines: true,
     };
-    let text = std::fs::read(path).map_err(|e| {
-        Error::new(
-            field,
-            format!("cannot read the OBJ file {}: {e}", path.display()),
-        )
-    })?;
+    let shown = path.display().to_string();
+    let text = std::fs::read(path)
+        .map_err(|e| Error::why(field, ErrMsg::ObjUnreadable(shown.clone(), IoWhy::of(&e))))?;
     let (models, _) = tobj::load_obj_buf(&mut std::io::Cursor::new(text), &opts, |_| {
         Err(tobj::LoadError::OpenFileFailed)
     })
     .map_err(|e| {
-        Error::new(
+        Error::why(
             field,
-            format!("{} is not a valid OBJ file: {e}", path.display()),
+            ErrMsg::ObjInvalid(shown.clone(), format!("{e:?}"), e.to_string()),
         )
     })?;
     let mut m = Mesh::default();
@@ -236,19 +234,10 @@ pub fn load_obj(path: &Path, field: &str) -> Result<Mesh> {
         }
     }
     if m.faces.is_empty() {
-        return Err(Error::new(
-            field,
-            format!("{} has no faces", path.display()),
-        ));
+        return Err(Error::why(field, ErrMsg::ObjNoFaces(shown)));
     }
     if m.positions.iter().flatten().any(|x| !x.is_finite()) {
-        return Err(Error::new(
-            field,
-            format!(
-                "{} has a vertex that is not a finite number",
-                path.display()
-            ),
-        ));
+        return Err(Error::why(field, ErrMsg::ObjNotFinite(shown)));
     }
     if all_normals && !normals.is_empty() {
         m.normals = Some(normals);
@@ -377,10 +366,7 @@ impl Mesh {
     pub fn validate(&self, field: &str) -> Result<()> {
         let n = self.positions.len() as u32;
         if self.faces.iter().flatten().any(|&i| i >= n) {
-            return Err(Error::new(
-                field,
-                "a face refers to a vertex that does not exist",
-            ));
+            return Err(Error::why(field, ErrMsg::FaceVertex));
         }
         Ok(())
     }
@@ -407,7 +393,7 @@ pub enum Height {
 
 impl Height {
     /// Parses a formula; the error names the column.
-    pub fn parse(s: &str) -> std::result::Result<Height, String> {
+    pub fn parse(s: &str) -> std::result::Result<Height, NumErr> {
         let c: Vec<char> = s.chars().filter(|c| !c.is_whitespace()).collect();
         let mut p = HParser {
             c: &c,
@@ -417,7 +403,7 @@ impl Height {
         };
         let e = p.sum()?;
         if p.i < c.len() {
-            return Err(format!("unexpected `{}` at character {}", c[p.i], p.i + 1));
+            return Err(NumErr::Unexpected(c[p.i], p.i + 1));
         }
         Ok(e)
     }
@@ -469,31 +455,26 @@ impl HParser<'_> {
     /// Counts one more operator, or refuses a formula with more than
     /// [`MAX_OPERATIONS`](crate::num::expr::MAX_OPERATIONS) of them (a tree
     /// that long would overflow the stack when it is evaluated or dropped).
-    fn count(&mut self) -> std::result::Result<(), String> {
+    fn count(&mut self) -> std::result::Result<(), NumErr> {
         self.ops += 1;
         if self.ops > crate::num::expr::MAX_OPERATIONS {
-            return Err(format!(
-                "the formula has more than {} operations (at character {})",
+            return Err(NumErr::FormulaOps(
                 crate::num::expr::MAX_OPERATIONS,
-                self.i + 1
+                self.i + 1,
             ));
         }
         Ok(())
     }
-    fn unary(&mut self) -> std::result::Result<Height, String> {
+    fn unary(&mut self) -> std::result::Result<Height, NumErr> {
         self.depth += 1;
         if self.depth > crate::num::expr::MAX_DEPTH {
-            return Err(format!(
-                "the formula is nested more than {} levels deep (parentheses, signs or powers) at character {}",
-                crate::num::expr::MAX_DEPTH,
-                self.i + 1
-            ));
+            return Err(NumErr::FormulaDeep(crate::num::expr::MAX_DEPTH, self.i + 1));
         }
         let e = self.unary_inner();
         self.depth -= 1;
         e
     }
-    fn sum(&mut self) -> std::result::Result<Height, String> {
+    fn sum(&mut self) -> std::result::Result<Height, NumErr> {
         let mut a = self.product()?;
         while let Some(op @ ('+' | '-' | '−')) = self.peek() {
             self.count()?;
@@ -504,7 +485,7 @@ impl HParser<'_> {
         }
         Ok(a)
     }
-    fn product(&mut self) -> std::result::Result<Height, String> {
+    fn product(&mut self) -> std::result::Result<Height, NumErr> {
         let mut a = self.unary()?;
         while let Some(op @ ('*' | '/' | '·')) = self.peek() {
             self.count()?;
@@ -515,7 +496,7 @@ impl HParser<'_> {
         }
         Ok(a)
     }
-    fn unary_inner(&mut self) -> std::result::Result<Height, String> {
+    fn unary_inner(&mut self) -> std::result::Result<Height, NumErr> {
         if let Some('-' | '−') = self.peek() {
             self.count()?;
             self.i += 1;
@@ -530,14 +511,18 @@ impl HParser<'_> {
         }
         Ok(base)
     }
-    fn atom(&mut self) -> std::result::Result<Height, String> {
+    fn atom(&mut self) -> std::result::Result<Height, NumErr> {
         let start = self.i;
         match self.peek() {
             Some('(') => {
                 self.i += 1;
                 let e = self.sum()?;
                 if self.peek() != Some(')') {
-                    return Err(format!("expected `)` at character {}", self.i + 1));
+                    return Err(NumErr::Expected(
+                        crate::msg::Want::Close,
+                        self.i + 1,
+                        self.peek(),
+                    ));
                 }
                 self.i += 1;
                 Ok(e)
@@ -555,7 +540,7 @@ impl HParser<'_> {
                 let s: String = self.c[start..self.i].iter().collect();
                 s.parse()
                     .map(Height::Num)
-                    .map_err(|_| format!("`{s}` is not a number"))
+                    .map_err(|_| NumErr::NotANumber(s))
             }
             Some(c) if c.is_ascii_alphabetic() => {
                 while self.peek().is_some_and(|c| c.is_ascii_alphanumeric()) {
@@ -568,18 +553,16 @@ impl HParser<'_> {
                     "pi" => Ok(Height::Num(PI)),
                     "exp" | "sqrt" | "sin" | "cos" | "abs" => {
                         if self.peek() != Some('(') {
-                            return Err(format!("expected `(` after {name}"));
+                            return Err(NumErr::OpenAfter(name));
                         }
                         let a = self.atom()?;
                         Ok(Height::Call(name, Box::new(a)))
                     }
-                    _ => Err(format!(
-                        "unknown name `{name}` (the formula may use x, z, pi, exp, sqrt, sin, cos, abs)"
-                    )),
+                    _ => Err(NumErr::UnknownName(name)),
                 }
             }
-            Some(c) => Err(format!("unexpected `{c}` at character {}", self.i + 1)),
-            None => Err("the formula ends too early".into()),
+            Some(c) => Err(NumErr::Unexpected(c, self.i + 1)),
+            None => Err(NumErr::EndsEarly),
         }
     }
 }
@@ -592,11 +575,14 @@ mod tests {
     fn a_height_formula_nested_10000_deep_is_an_error_not_a_stack_overflow() {
         let deep = format!("{}x{}", "(".repeat(10_000), ")".repeat(10_000));
         let e = Height::parse(&deep).unwrap_err();
-        assert!(e.contains("nested more than 100 levels"), "{e}");
+        assert!(matches!(e, NumErr::FormulaDeep(100, _)), "{e:?}");
         let signs = format!("{}x", "-".repeat(10_000));
-        assert!(Height::parse(&signs).unwrap_err().contains("nested"));
+        assert!(matches!(
+            Height::parse(&signs),
+            Err(NumErr::FormulaDeep(..))
+        ));
         let chain = vec!["x"; 10_000].join("+");
-        assert!(Height::parse(&chain).unwrap_err().contains("operations"));
+        assert!(matches!(Height::parse(&chain), Err(NumErr::FormulaOps(..))));
         // Within the limits, as for flags: 100 levels and 500 operations.
         let ok = format!("{}x{}", "(".repeat(99), ")".repeat(99));
         assert_eq!(Height::parse(&ok).unwrap().eval(2.0, 0.0), 2.0);

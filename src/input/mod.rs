@@ -13,6 +13,7 @@ pub mod values;
 pub use values::*;
 
 use crate::error::{Error, Result};
+use crate::msg::{ErrMsg, IoWhy};
 use std::path::Path;
 
 /// The text of a file the user named, `-` being standard input; an error
@@ -21,13 +22,13 @@ pub fn read_text(field: &str, path: &Path) -> Result<String> {
     if path.as_os_str() == "-" {
         let mut text = String::new();
         std::io::Read::read_to_string(&mut std::io::stdin(), &mut text)
-            .map_err(|e| Error::new(field, format!("cannot read standard input: {e}")))?;
+            .map_err(|e| Error::why(field, ErrMsg::CannotReadStdin(IoWhy::of(&e))))?;
         return Ok(text);
     }
     std::fs::read_to_string(path).map_err(|e| {
         Error::said(
             field,
-            crate::msg::Msg::ErrCannotRead(path.display().to_string(), e.to_string()),
+            crate::msg::Msg::ErrCannotRead(path.display().to_string(), IoWhy::of(&e)),
         )
     })
 }

@@ -2,7 +2,8 @@
 //! every syntax error, into plain expressions that any precision evaluates.
 
 use crate::error::{Error, Result};
-use crate::input::fields::{toml_error, AngleIn, Num, Vec3In};
+use crate::input::fields::{toml_error, toml_reason, AngleIn, Num, Vec3In};
+use crate::msg::ErrMsg;
 use serde::de::{self, Deserializer};
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -101,8 +102,18 @@ pub struct ClipIn {
 pub struct ErratumIn {
     /// The result key (`project.points.B`).
     pub key: String,
-    /// The reason.
+    /// The reason, in English.
     pub why: String,
+    /// The reason in Bahasa Indonesia (shown with `--lang id`).
+    #[serde(default)]
+    pub why_id: Option<String>,
+}
+
+impl ErratumIn {
+    /// The reason in both languages the file gives.
+    pub fn reason(&self) -> crate::msg::Msg {
+        crate::msg::Msg::Written(self.why.clone(), self.why_id.clone())
+    }
 }
 
 /// `[check]`: how `grafika check` marks answers to this problem.
@@ -171,9 +182,9 @@ impl ProblemIn {
         if let Some(ask) = &p.ask {
             for a in ask {
                 if !PARTS.contains(&a.as_str()) {
-                    return Err(Error::new(
+                    return Err(Error::why(
                         "ask",
-                        format!("unknown part `{a}`; the parts are {}", PARTS.join(", ")),
+                        ErrMsg::UnknownPart(a.clone(), PARTS.join(", ")),
                     ));
                 }
             }
@@ -193,9 +204,9 @@ impl ProblemIn {
             .iter()
             .map(|(name, v)| {
                 let arr: Vec3In = v.clone().try_into().map_err(|e: toml::de::Error| {
-                    Error::new(
+                    Error::why(
                         format!("points.{name}"),
-                        format!("expected [x, y, z]: {}", e.message()),
+                        ErrMsg::ExpectedXyz(toml_reason(e.message())),
                     )
                 })?;
                 Ok((name.clone(), arr))

@@ -3,13 +3,14 @@
 //! the file, line and column, and the validated [`Scene`] the renderer draws.
 
 use crate::error::{Error, Result};
-use crate::input::fields::{line_col, toml_error, Num};
+use crate::input::fields::{line_col, toml_error, value_error, Num};
 use crate::input::mesh::{self, Height, Mesh};
 use crate::input::problem::{CameraIn, PerspectiveIn};
+use crate::msg::{Bound, ErrMsg, Thing, TomlErr, Twice};
 use crate::num::vec::V3;
 use crate::stages::lighting::{Light, LightKind, Material, Model};
 use nalgebra::{Matrix4, Vector3};
-use serde::de::{self, Deserializer};
+use serde::de::Deserializer;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
@@ -25,7 +26,9 @@ pub struct F(pub f64);
 impl<'de> Deserialize<'de> for F {
     fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<F, D::Error> {
         let n = Num::deserialize(d)?;
-        n.0.eval::<f64>().map(F).map_err(de::Error::custom)
+        n.0.eval::<f64>()
+            .map(F)
+            .map_err(|e| value_error(TomlErr::Num(e)))
     }
 }
 
@@ -39,7 +42,7 @@ impl<'de> Deserialize<'de> for Pos {
         if v > 0.0 {
             Ok(Pos(v))
         } else {
-            Err(de::Error::custom(format!("must be positive, got {v}")))
+            Err(value_error(TomlErr::MustBe(Bound::Positive, v.to_string())))
         }
     }
 }
@@ -54,9 +57,7 @@ impl<'de> Deserialize<'de> for Count {
         if (3..=4096).contains(&v) {
             Ok(Count(v as u32))
         } else {
-            Err(de::Error::custom(format!(
-                "must be a whole number from 3 to 4096, got {v}"
-            )))
+            Err(value_error(TomlErr::WholeRange(3, 4096, v.to_string())))
         }
     }
 }
@@ -71,9 +72,7 @@ impl<'de> Deserialize<'de> for GridCount {
         if (2..=4096).contains(&v) {
             Ok(GridCount(v as u32))
         } else {
-            Err(de::Error::custom(format!(
-                "must be a whole number from 2 to 4096, got {v}"
-            )))
+            Err(value_error(TomlErr::WholeRange(2, 4096, v.to_string())))
         }
     }
 }
@@ -86,10 +85,8 @@ impl<'de> Deserialize<'de> for Rgb {
     fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Rgb, D::Error> {
         let c = <[F; 3]>::deserialize(d)?;
         if c.iter().any(|x| !(0.0..=1.0).contains(&x.0)) {
-            return Err(de::Error::custom(format!(
-                "colour components must be from 0 to 1, got [{}, {}, {}]",
-                c[0].0, c[1].0, c[2].0
-            )));
+            let given = format!("[{}, {}, {}]", c[0].0, c[1].0, c[2].0);
+            return Err(value_error(TomlErr::Colour(given)));
         }
         Ok(Rgb(c.map(|x| x.0 as f32)))
     }
@@ -417,10 +414,7 @@ impl Scene {
             objects.push(obj);
         }
         if objects.is_empty() {
-            return Err(Error::new(
-                "object",
-                format!("{origin}: the scene has no objects: add at least one [[object]] table (cone, sphere, cylinder, box, plane or obj)"),
-            ));
+            return Err(Error::why("object", ErrMsg::NoObjects).at(origin));
         }
         Ok(Scene {
             title: s.title,
@@ -465,10 +459,7 @@ fn image(s: &SceneIn) -> Result<(u32, u32, [f32; 3])> {
 /// with its `[perspective]`; `find` gives a table's place for errors.
 fn view(s: &SceneIn, find: &dyn Fn(&str) -> String) -> Result<View> {
     match (&s.tilt, &s.camera) {
-        (Some(_), Some(_)) => Err(Error::new(
-            "tilt",
-            format!("{}: give either [tilt] or [camera], not both", find("tilt")),
-        )),
+        (Some(_), Some(_)) => Err(Error::why("tilt", Twice::TiltCamera).at(find("tilt"))),
         (None, None) => Ok(View::Tilt { x: 0.0, y: 0.0 }),
         (Some(t), None) => Ok(View::Tilt {
             x: t.x.map_or(0.0, |v| v.0),
@@ -476,13 +467,7 @@ fn view(s: &SceneIn, find: &dyn Fn(&str) -> String) -> Result<View> {
         }),
         (None, Some(c)) => {
             let p = s.perspective.as_ref().ok_or_else(|| {
-                Error::new(
-                    "perspective",
-                    format!(
-                        "{}: a [camera] needs a [perspective] with fovy, near and far",
-                        find("camera")
-                    ),
-                )
+                Error::why("perspective", ErrMsg::CameraNeedsPerspective).at(find("camera"))
             })?;
             camera_view(c, p).map_err(|e| e.at(find("perspective")))
         }
@@ -492,20 +477,20 @@ fn view(s: &SceneIn, find: &dyn Fn(&str) -> String) -> Result<View> {
 /// Checks an image size: 1 to 8192 pixels each way.
 pub fn check_size(w: u32, h: u32) -> Result<()> {
     if !(1..=8192).contains(&w) || !(1..=8192).contains(&h) {
-        return Err(Error::new(
+        return Err(Error::why(
             "image",
-            format!("width and height must be from 1 to 8192 pixels, got {w}x{h}"),
+            ErrMsg::ImageSize(w.to_string(), h.to_string()),
         ));
     }
     Ok(())
 }
 
 fn eval_u32(n: &Num, field: &str) -> Result<u32> {
-    let v = n.0.eval::<f64>().map_err(|m| Error::new(field, m))?;
+    let v = n.0.eval::<f64>().map_err(|m| Error::why(field, m))?;
     if v.fract() != 0.0 || !(1.0..=16384.0).contains(&v) {
-        return Err(Error::new(
+        return Err(Error::why(
             field,
-            format!("must be a whole number of pixels, got {v}"),
+            ErrMsg::MustBe(Bound::WholePixels, v.to_string()),
         ));
     }
     Ok(v as u32)
@@ -516,7 +501,7 @@ fn f3(v: &[F; 3]) -> V3<f64> {
 }
 
 fn camera_view(c: &CameraIn, p: &PerspectiveIn) -> Result<View> {
-    let ev = |e: &Num, f: &str| e.0.eval::<f64>().map_err(|m| Error::new(f, m));
+    let ev = |e: &Num, f: &str| e.0.eval::<f64>().map_err(|m| Error::why(f, m));
     let v3 = |a: &[Num; 3], f: &str| -> Result<V3<f64>> {
         Ok(Vector3::new(ev(&a[0], f)?, ev(&a[1], f)?, ev(&a[2], f)?))
     };
@@ -528,20 +513,20 @@ fn camera_view(c: &CameraIn, p: &PerspectiveIn) -> Result<View> {
     let fovy = match &p.fovy {
         Some(a) => {
             a.0.degrees::<f64>()
-                .map_err(|m| Error::new("perspective.fovy", m))?
+                .map_err(|m| Error::why("perspective.fovy", m))?
         }
-        None => return Err(Error::new("perspective.fovy", "is needed to render")),
+        None => return Err(Error::why("perspective.fovy", ErrMsg::NeededToRender)),
     };
     let near = ev(
         p.near
             .as_ref()
-            .ok_or_else(|| Error::new("perspective.near", "is needed to render"))?,
+            .ok_or_else(|| Error::why("perspective.near", ErrMsg::NeededToRender))?,
         "perspective.near",
     )?;
     let far = ev(
         p.far
             .as_ref()
-            .ok_or_else(|| Error::new("perspective.far", "is needed to render"))?,
+            .ok_or_else(|| Error::why("perspective.far", ErrMsg::NeededToRender))?,
         "perspective.far",
     )?;
     let aspect = p
@@ -554,9 +539,9 @@ fn camera_view(c: &CameraIn, p: &PerspectiveIn) -> Result<View> {
         e.in_field(f)
     })?;
     if far <= near {
-        return Err(Error::new(
+        return Err(Error::why(
             "perspective.far",
-            format!("must be greater than near = {near}, got {far}"),
+            ErrMsg::MustBe(Bound::AboveNear(near.to_string()), far.to_string()),
         ));
     }
     // Fails early on a degenerate camera (Pe = Pr, Vup ∥ view direction).
@@ -591,9 +576,9 @@ fn material(m: &MaterialIn, base: Material<f32>) -> Result<Material<f32>> {
     ] {
         if let Some(F(x)) = v {
             if x < 0.0 {
-                return Err(Error::new(
+                return Err(Error::why(
                     format!("material.{name}"),
-                    format!("must not be negative, got {x}"),
+                    ErrMsg::MustBe(Bound::NotNegative, x.to_string()),
                 ));
             }
             *slot = x as f32;
@@ -618,7 +603,7 @@ fn light(l: &LightIn) -> Result<Light<f32>> {
     let need = |o: &Option<[F; 3]>, f: &str| {
         o.as_ref()
             .map(v)
-            .ok_or_else(|| Error::new(f, "is needed for this type of light"))
+            .ok_or_else(|| Error::why(f, ErrMsg::NeededForLight))
     };
     out.kind = match l.kind {
         LightType::Directional => LightKind::Directional {
@@ -644,7 +629,7 @@ fn light(l: &LightIn) -> Result<Light<f32>> {
         LightKind::Directional { dir } | LightKind::Spot { dir, .. } => {
             let n = dir.norm();
             if n == 0.0 {
-                return Err(Error::new("direction", "must not be the zero vector"));
+                return Err(Error::why("direction", ErrMsg::ZeroDirection));
             }
             *dir /= n;
         }
@@ -693,9 +678,9 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
     mesh.validate(&field)?;
     let ntris: usize = mesh.faces.iter().map(|f| f.len() - 2).sum();
     if ntris > MAX_TRIANGLES {
-        return Err(Error::new(
+        return Err(Error::why(
             field,
-            format!("has {ntris} triangles; the renderer takes at most {MAX_TRIANGLES} per object"),
+            ErrMsg::TooManyTriangles(ntris, MAX_TRIANGLES),
         ));
     }
     let mut model = Matrix4::identity();
@@ -746,12 +731,9 @@ fn check_fields(o: &ObjectIn, tname: &str, f: &dyn Fn(&str) -> String) -> Result
         .iter()
         .find(|(k, here)| *here && !allowed.contains(k))
     {
-        Some((k, _)) => Err(Error::new(
+        Some((k, _)) => Err(Error::why(
             f(k),
-            format!(
-                "a {tname} has no `{k}` (its fields: {})",
-                allowed.join(", ")
-            ),
+            ErrMsg::NoSuchKey(tname.to_string(), k.to_string(), allowed.join(", ")),
         )),
         None => Ok(()),
     }
@@ -759,9 +741,7 @@ fn check_fields(o: &ObjectIn, tname: &str, f: &dyn Fn(&str) -> String) -> Result
 
 /// The object's mesh, built from its type's fields.
 fn object_mesh(o: &ObjectIn, tname: &str, f: &dyn Fn(&str) -> String, dir: &Path) -> Result<Mesh> {
-    let need = |v: Option<f64>, k: &str| {
-        v.ok_or_else(|| Error::new(f(k), format!("a {tname} needs `{k}`")))
-    };
+    let need = |v: Option<f64>, k: &str| v.ok_or_else(|| Error::why(f(k), needs(tname, k)));
     let n = || need(o.n.map(|c| c.0 as f64), "n").map(|n| n as u32);
     let r = || need(o.r.map(|c| c.0), "r");
     let h = || need(o.h.map(|c| c.0), "h");
@@ -775,7 +755,7 @@ fn object_mesh(o: &ObjectIn, tname: &str, f: &dyn Fn(&str) -> String, dir: &Path
         ObjectType::Box => {
             let s = o
                 .size
-                .ok_or_else(|| Error::new(f("size"), "a box needs `size = [w, h, d]`"))?;
+                .ok_or_else(|| Error::why(f("size"), needs("box", "size = [w, h, d]")))?;
             mesh::cuboid(s[0].0, s[1].0, s[2].0)
         }
         ObjectType::Plane => plane_mesh(o, f)?,
@@ -783,30 +763,35 @@ fn object_mesh(o: &ObjectIn, tname: &str, f: &dyn Fn(&str) -> String, dir: &Path
             let p = o
                 .path
                 .as_ref()
-                .ok_or_else(|| Error::new(f("path"), "an obj object needs `path`"))?;
+                .ok_or_else(|| Error::why(f("path"), needs("obj", "path")))?;
             let full: PathBuf = dir.join(p.get_ref());
             mesh::load_obj(&full, &f("path"))?
         }
     })
 }
 
+/// "an object of type `tname` needs `key`".
+fn needs(tname: &str, key: &str) -> ErrMsg {
+    ErrMsg::Needs(Thing::Object(tname.to_string()), key.to_string())
+}
+
 /// A plane's grid, lifted by its height formula (which must stay finite).
 fn plane_mesh(o: &ObjectIn, f: &dyn Fn(&str) -> String) -> Result<Mesh> {
     let nx =
-        o.nx.ok_or_else(|| Error::new(f("nx"), "a plane needs `nx`"))?
+        o.nx.ok_or_else(|| Error::why(f("nx"), needs("plane", "nx")))?
             .0;
     let nz =
-        o.nz.ok_or_else(|| Error::new(f("nz"), "a plane needs `nz`"))?
+        o.nz.ok_or_else(|| Error::why(f("nz"), needs("plane", "nz")))?
             .0;
     let need = |v: Option<Pos>, k: &str| {
         v.map(|c| c.0)
-            .ok_or_else(|| Error::new(f(k), format!("a plane needs `{k}`")))
+            .ok_or_else(|| Error::why(f(k), needs("plane", k)))
     };
     let (dx, dz) = (need(o.dx, "dx")?, need(o.dz, "dz")?);
     let h = match &o.height {
         Some(s) => Some(
             Height::parse(s.get_ref())
-                .map_err(|m| Error::new(f("height"), format!("`{}`: {m}", s.get_ref())))?,
+                .map_err(|m| Error::why(f("height"), m.quoted(s.get_ref())))?,
         ),
         None => None,
     };
@@ -814,10 +799,7 @@ fn plane_mesh(o: &ObjectIn, f: &dyn Fn(&str) -> String) -> Result<Mesh> {
         h.as_ref().map_or(0.0, |h| h.eval(x, z))
     });
     if m.positions.iter().flatten().any(|v| !v.is_finite()) {
-        return Err(Error::new(
-            f("height"),
-            "the formula gives a value that is not a finite number",
-        ));
+        return Err(Error::why(f("height"), ErrMsg::FormulaNotFinite));
     }
     Ok(m)
 }
@@ -831,14 +813,11 @@ fn object_colors(o: &ObjectIn, f: &dyn Fn(&str) -> String) -> Result<Colors> {
         o.vertex_colors.is_some(),
     ];
     if given.iter().filter(|&&b| b).count() > 1 {
-        return Err(Error::new(
-            f("color"),
-            "give only one of color, face_colors, vertex_colors",
-        ));
+        return Err(Error::why(f("color"), Twice::Colors));
     }
     let list = |v: &Vec<Rgb>, k: &str| {
         if v.is_empty() {
-            Err(Error::new(f(k), "needs at least one colour"))
+            Err(Error::why(f(k), ErrMsg::NeedsColour))
         } else {
             Ok(v.iter().map(|c| c.0).collect())
         }
@@ -857,6 +836,7 @@ fn object_colors(o: &ObjectIn, f: &dyn Fn(&str) -> String) -> Result<Colors> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::msg::Msg;
 
     fn parse(s: &str) -> Result<Scene> {
         Scene::parse(s, "s.toml", Path::new("."))
@@ -880,7 +860,8 @@ mod tests {
         ] {
             let e = parse(text).unwrap_err();
             assert_eq!(e.field, "object", "{text:?}");
-            assert!(e.message.plain().contains("no objects"), "{e}");
+            let no_objects = Msg::At("s.toml".into(), Box::new(Msg::Err(ErrMsg::NoObjects)));
+            assert_eq!(e.message, no_objects, "{e}");
         }
     }
 

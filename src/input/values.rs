@@ -9,12 +9,12 @@ use serde_json::{json, Value};
 
 /// A number expression from the field `field`.
 pub fn expr(field: &str, text: &str) -> Result<Expr> {
-    parse_expr(text).map_err(|m| Error::new(field, format!("`{text}`: {m}")))
+    parse_expr(text).map_err(|m| Error::why(field, m.quoted(text)))
 }
 
 /// Evaluates an expression at precision `T`, naming the field on failure.
 pub fn eval<T: Scalar>(field: &str, e: &Expr) -> Result<T> {
-    e.eval::<T>().map_err(|m| Error::new(field, m))
+    e.eval::<T>().map_err(|m| Error::why(field, m))
 }
 
 /// A number from text.
@@ -24,7 +24,7 @@ pub fn num<T: Scalar>(field: &str, text: &str) -> Result<T> {
 
 /// Three expressions from `x,y,z` text.
 pub fn vec3_expr(field: &str, text: &str) -> Result<[Expr; 3]> {
-    parse_vec3(text).map_err(|m| Error::new(field, format!("`{text}`: {m}")))
+    parse_vec3(text).map_err(|m| Error::why(field, m.quoted(text)))
 }
 
 /// Evaluates three expressions.
@@ -43,8 +43,8 @@ pub fn vec3<T: Scalar>(field: &str, text: &str) -> Result<V3<T>> {
 
 /// An angle (degrees unless `rad` follows) in degrees at precision `T`.
 pub fn angle_deg<T: Scalar>(field: &str, text: &str) -> Result<T> {
-    let a = Angle::parse(text).map_err(|m| Error::new(field, format!("`{text}`: {m}")))?;
-    a.degrees::<T>().map_err(|m| Error::new(field, m))
+    let a = Angle::parse(text).map_err(|m| Error::why(field, m.quoted(text)))?;
+    a.degrees::<T>().map_err(|m| Error::why(field, m))
 }
 
 /// `NAME=rest`, with a name of letters, digits, `_` or `'`.

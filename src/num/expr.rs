@@ -5,6 +5,7 @@
 //! written directly before `sqrt`, `pi` or `(` (`5sqrt(2)` = 5·√2).
 
 use super::{Real, Scalar};
+use crate::msg::{NumErr, Want};
 use std::fmt;
 
 /// A parsed number expression.
@@ -53,33 +54,28 @@ impl Expr {
     /// The value of the expression at precision `T`; an error message when a
     /// divisor is zero, a square root's argument negative, an exponent not a
     /// whole number, or the value not finite at that precision.
-    pub fn eval<T: Scalar>(&self) -> Result<T, String> {
+    pub fn eval<T: Scalar>(&self) -> Result<T, NumErr> {
         let v = self.eval_inner::<T>()?;
         // Exact values must also fit an f64, or nothing could show them.
         if v.is_finite() && v.to_f64().is_finite() {
             Ok(v)
         } else {
-            Err(format!(
-                "`{self}` is not a finite number at {:?} precision",
-                T::PRECISION
-            )
-            .to_lowercase())
+            let precision = format!("{:?}", T::PRECISION).to_lowercase();
+            Err(NumErr::NotFinite(self.to_string(), precision))
         }
     }
 
-    fn eval_inner<T: Scalar>(&self) -> Result<T, String> {
+    fn eval_inner<T: Scalar>(&self) -> Result<T, NumErr> {
         Ok(match self {
             Expr::Lit(s) => {
-                let r = Real::from_decimal(s).ok_or_else(|| format!("`{s}` is not a number"))?;
+                let r = Real::from_decimal(s).ok_or_else(|| NumErr::NotANumber(s.clone()))?;
                 T::from_real(&r)
             }
             Expr::Pi => T::pi(),
             Expr::Sqrt(x) => {
                 let v = x.eval_inner::<T>()?;
                 if v < T::zero() {
-                    return Err(format!(
-                        "sqrt({x}) takes the square root of a negative number"
-                    ));
+                    return Err(NumErr::NegativeRoot(x.to_string()));
                 }
                 v.sqrt()
             }
@@ -90,7 +86,7 @@ impl Expr {
             Expr::Div(a, b) => {
                 let d = b.eval_inner::<T>()?;
                 if d.is_zero_value() {
-                    return Err(format!("`{self}` divides by zero"));
+                    return Err(NumErr::DivZero(self.to_string()));
                 }
                 a.eval_inner::<T>()? / d
             }
@@ -98,19 +94,17 @@ impl Expr {
                 let base = a.eval_inner::<T>()?;
                 let e = b.eval_inner::<f64>()?;
                 if e.fract() != 0.0 || e.abs() > 1024.0 {
-                    return Err(format!(
-                        "the exponent in `{self}` must be a whole number from -1024 to 1024"
-                    ));
+                    return Err(NumErr::Exponent(self.to_string()));
                 }
                 // |base|^e beyond 2^±8192 cannot lead to a value an f64 can
                 // show, and exact powers that large would take long to form.
                 if !base.is_zero_value() && (base.to_f64().abs().log2() * e).abs() > 8192.0 {
-                    return Err(format!("`{self}` is too large or too small a power"));
+                    return Err(NumErr::PowerRange(self.to_string()));
                 }
                 let p = base.powi(e.abs() as u32);
                 if e < 0.0 {
                     if p.is_zero_value() {
-                        return Err(format!("`{self}` divides by zero"));
+                        return Err(NumErr::DivZero(self.to_string()));
                     }
                     T::one() / p
                 } else {
@@ -150,13 +144,10 @@ impl fmt::Display for Paren<'_> {
 
 /// Parses one number expression; the error says what was expected and at
 /// which character (1-based column).
-pub fn parse_expr(text: &str) -> Result<Expr, String> {
+pub fn parse_expr(text: &str) -> Result<Expr, NumErr> {
     let chars: Vec<char> = text.chars().collect();
     if chars.len() > MAX_CHARS {
-        return Err(format!(
-            "the number is {} characters long, more than the {MAX_CHARS} allowed",
-            chars.len()
-        ));
+        return Err(NumErr::TooLong(chars.len(), MAX_CHARS));
     }
     let mut p = Parser {
         s: &chars,
@@ -166,12 +157,12 @@ pub fn parse_expr(text: &str) -> Result<Expr, String> {
     };
     p.skip_ws();
     if p.at_end() {
-        return Err("expected a number, found nothing".into());
+        return Err(NumErr::Empty);
     }
     let e = p.sum()?;
     p.skip_ws();
     if !p.at_end() {
-        return Err(p.err("an operator or the end of the number"));
+        return Err(p.err(Want::OperatorOrEnd));
     }
     Ok(e)
 }
@@ -205,23 +196,20 @@ pub fn strip_outer(text: &str) -> &str {
 }
 
 /// Parses `x,y,z` (or `(x,y,z)`, `[x,y,z]`) into three expressions.
-pub fn parse_vec3(text: &str) -> Result<[Expr; 3], String> {
+pub fn parse_vec3(text: &str) -> Result<[Expr; 3], NumErr> {
     let parts = split_top_level(strip_outer(text));
     if parts.len() != 3 {
-        return Err(format!(
-            "expected three numbers x,y,z separated by commas, found {} in `{text}`",
-            parts.len()
-        ));
+        return Err(NumErr::Count(parts.len(), text.to_string()));
     }
     let mut out = Vec::with_capacity(3);
     for (k, part) in parts.iter().enumerate() {
         let e = parse_expr(part)
-            .map_err(|m| format!("{} component `{}`: {m}", ["x", "y", "z"][k], part.trim()))?;
+            .map_err(|m| NumErr::Component(k, part.trim().to_string(), Box::new(m)))?;
         out.push(e);
     }
     let [x, y, z]: [Expr; 3] = out
         .try_into()
-        .map_err(|_| "expected three numbers".to_string())?;
+        .map_err(|v: Vec<Expr>| NumErr::Count(v.len(), text.to_string()))?;
     Ok([x, y, z])
 }
 
@@ -265,7 +253,7 @@ pub struct Angle {
 
 impl Angle {
     /// Parses `45`, `45deg`, `45°`, `pi/4 rad`, `0.785rad`.
-    pub fn parse(text: &str) -> Result<Angle, String> {
+    pub fn parse(text: &str) -> Result<Angle, NumErr> {
         let t = text.trim();
         let (body, unit) = if let Some(b) = t.strip_suffix("rad") {
             (b, AngleUnit::Rad)
@@ -284,7 +272,7 @@ impl Angle {
     /// of π (`pi/4 rad`) become q·180° exactly, so exact forms survive, as
     /// for `45`; other radians are converted with 180/π, which makes the
     /// value approximate.
-    pub fn degrees<T: Scalar>(&self) -> Result<T, String> {
+    pub fn degrees<T: Scalar>(&self) -> Result<T, NumErr> {
         if self.unit == AngleUnit::Rad {
             if let Some(q) = self.value.over_pi() {
                 return Ok(q.eval::<T>()? * T::from_i64(180));
@@ -338,14 +326,8 @@ impl Parser<'_> {
             self.i += 1;
         }
     }
-    fn err(&self, expected: &str) -> String {
-        match self.peek() {
-            Some(c) => format!("expected {expected} at column {}, found `{c}`", self.i + 1),
-            None => format!(
-                "expected {expected} at column {}, found the end",
-                self.i + 1
-            ),
-        }
+    fn err(&self, expected: Want) -> NumErr {
+        NumErr::Expected(expected, self.i + 1, self.peek())
     }
     fn eat(&mut self, c: char) -> bool {
         self.skip_ws();
@@ -374,31 +356,25 @@ impl Parser<'_> {
     }
 
     /// Enters one more level of nesting, or refuses too deep a nesting.
-    fn enter(&mut self) -> Result<(), String> {
+    fn enter(&mut self) -> Result<(), NumErr> {
         self.depth += 1;
         if self.depth > MAX_DEPTH {
-            return Err(format!(
-                "the number is nested more than {MAX_DEPTH} levels deep (parentheses, roots or signs) at column {}",
-                self.i + 1
-            ));
+            return Err(NumErr::TooDeep(MAX_DEPTH, self.i + 1));
         }
         Ok(())
     }
 
     /// Counts one operation, or refuses too long an expression.
-    fn op(&mut self) -> Result<(), String> {
+    fn op(&mut self) -> Result<(), NumErr> {
         self.ops += 1;
         if self.ops > MAX_OPERATIONS {
-            return Err(format!(
-                "the number has more than {MAX_OPERATIONS} operations (at column {})",
-                self.i + 1
-            ));
+            return Err(NumErr::TooManyOps(MAX_OPERATIONS, self.i + 1));
         }
         Ok(())
     }
 
     /// sum := product (('+' | '-') product)*
-    fn sum(&mut self) -> Result<Expr, String> {
+    fn sum(&mut self) -> Result<Expr, NumErr> {
         let mut e = self.product()?;
         loop {
             if self.eat('+') {
@@ -414,7 +390,7 @@ impl Parser<'_> {
     }
 
     /// product := unary (('*' | '/' | implicit) unary)*
-    fn product(&mut self) -> Result<Expr, String> {
+    fn product(&mut self) -> Result<Expr, NumErr> {
         let mut e = self.unary()?;
         loop {
             if self.eat('*') || self.eat('×') || self.eat('·') {
@@ -446,7 +422,7 @@ impl Parser<'_> {
     }
 
     /// unary := ('-' | '+') unary | power
-    fn unary(&mut self) -> Result<Expr, String> {
+    fn unary(&mut self) -> Result<Expr, NumErr> {
         if self.eat('-') || self.eat('−') {
             self.op()?;
             self.enter()?;
@@ -464,7 +440,7 @@ impl Parser<'_> {
     }
 
     /// power := atom ('^' unary)?
-    fn power(&mut self) -> Result<Expr, String> {
+    fn power(&mut self) -> Result<Expr, NumErr> {
         let base = self.atom()?;
         if self.eat('^') {
             self.op()?;
@@ -475,19 +451,19 @@ impl Parser<'_> {
     }
 
     /// atom := number | 'pi' | 'π' | 'sqrt' '(' sum ')' | '√' atom | '(' sum ')'
-    fn atom(&mut self) -> Result<Expr, String> {
+    fn atom(&mut self) -> Result<Expr, NumErr> {
         self.enter()?;
         let e = self.atom_inner();
         self.depth -= 1;
         e
     }
 
-    fn atom_inner(&mut self) -> Result<Expr, String> {
+    fn atom_inner(&mut self) -> Result<Expr, NumErr> {
         self.skip_ws();
         if self.eat('(') {
             let e = self.sum()?;
             if !self.eat(')') {
-                return Err(self.err("`)`"));
+                return Err(self.err(Want::Close));
             }
             return Ok(e);
         }
@@ -496,12 +472,12 @@ impl Parser<'_> {
         }
         if self.eat_word("sqrt") {
             if !self.eat('(') {
-                return Err(self.err("`(` after sqrt"));
+                return Err(self.err(Want::OpenAfterSqrt));
             }
             self.op()?;
             let e = self.sum()?;
             if !self.eat(')') {
-                return Err(self.err("`)`"));
+                return Err(self.err(Want::Close));
             }
             return Ok(Expr::Sqrt(Box::new(e)));
         }
@@ -513,7 +489,7 @@ impl Parser<'_> {
     }
 
     /// number := digits ('.' digits)? (('e' | 'E') ('+' | '-')? digits)?
-    fn number(&mut self) -> Result<Expr, String> {
+    fn number(&mut self) -> Result<Expr, NumErr> {
         self.skip_ws();
         let start = self.i;
         let digits = |p: &mut Self| {
@@ -530,7 +506,7 @@ impl Parser<'_> {
         }
         if n == 0 {
             self.i = start;
-            return Err(self.err("a number"));
+            return Err(self.err(Want::Number));
         }
         if matches!(self.peek(), Some('e' | 'E')) {
             let save = self.i;
@@ -576,10 +552,11 @@ mod tests {
     fn a_number_longer_than_max_chars_is_refused_before_parsing() {
         let long = "1".repeat(100_000);
         let e = parse_expr(&long).unwrap_err();
-        assert!(e.contains("100000 characters long"), "{e}");
-        assert!(parse_expr(&"(".repeat(10_000))
-            .unwrap_err()
-            .contains("characters long"));
+        assert_eq!(e, NumErr::TooLong(100_000, MAX_CHARS));
+        assert!(matches!(
+            parse_expr(&"(".repeat(10_000)),
+            Err(NumErr::TooLong(10_000, _))
+        ));
         assert!(parse_expr(&"1".repeat(MAX_CHARS)).is_ok());
     }
 
@@ -608,16 +585,18 @@ mod tests {
         // are refused before parsing, as longer than MAX_CHARS).
         let deep = "(".repeat(1_500) + "1" + &")".repeat(1_500);
         let e = parse_expr(&deep).unwrap_err();
-        assert!(e.contains("nested more than 100 levels"), "{e}");
+        // The 101st parenthesis is column 101.
+        assert_eq!(e, NumErr::TooDeep(100, 101));
         let signs = "-".repeat(3_000) + "1";
-        assert!(parse_expr(&signs).unwrap_err().contains("nested"));
+        assert!(matches!(parse_expr(&signs), Err(NumErr::TooDeep(100, _))));
         let roots = "√".repeat(10_000) + "4";
         assert!(parse_expr(&roots).is_err());
         // A 1,500-term chain: too many operations.
         let chain = vec!["1"; 1_500].join("+");
-        assert!(parse_expr(&chain)
-            .unwrap_err()
-            .contains("more than 500 operations"));
+        assert!(matches!(
+            parse_expr(&chain),
+            Err(NumErr::TooManyOps(500, _))
+        ));
         // Within the limits: 100 levels of parentheses and 500 operations.
         let ok = "(".repeat(99) + "2" + &")".repeat(99);
         assert_eq!(f(&ok), 2.0);
@@ -627,12 +606,15 @@ mod tests {
     #[test]
     fn errors_name_the_column() {
         let e = parse_expr("1+*2").unwrap_err();
-        assert!(e.contains("column 3"), "{e}");
-        assert!(parse_expr("sqrt(2").unwrap_err().contains("`)`"));
+        assert_eq!(e, NumErr::Expected(Want::Number, 3, Some('*')));
+        assert_eq!(
+            parse_expr("sqrt(2").unwrap_err(),
+            NumErr::Expected(Want::Close, 7, None)
+        );
         assert!(parse_expr("").is_err());
         assert!(parse_expr("1 2").is_err());
         let div = parse_expr("1/(2-2)").map(|e| e.eval::<f64>());
-        assert!(matches!(div, Ok(Err(m)) if m.contains("divides by zero")));
+        assert!(matches!(div, Ok(Err(NumErr::DivZero(_)))));
         assert!(parse_expr("sqrt(-1)").unwrap().eval::<f64>().is_err());
         assert!(parse_expr("2^0.5").unwrap().eval::<f64>().is_err());
         assert!(parse_expr("1e999").unwrap().eval::<f64>().is_err());

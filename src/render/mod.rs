@@ -485,9 +485,10 @@ impl Frame {
 
 /// Writes the frame as an 8-bit RGB PNG.
 pub fn write_png(frame: &Frame, path: &std::path::Path) -> Result<()> {
-    let err = |e: String| Error::new("output", format!("cannot write {}: {e}", path.display()));
-    let file = std::fs::File::create(path).map_err(|e| err(e.to_string()))?;
-    encode_png(frame, std::io::BufWriter::new(file)).map_err(err)
+    use crate::msg::{ErrMsg, IoWhy};
+    let err = |e| Error::why("output", ErrMsg::CannotWrite(path.display().to_string(), e));
+    let file = std::fs::File::create(path).map_err(|e| err(IoWhy::of(&e)))?;
+    encode_png(frame, std::io::BufWriter::new(file)).map_err(|e| err(IoWhy::Other(e)))
 }
 
 /// The frame as an 8-bit RGB PNG, written to `out` (a file, standard output).

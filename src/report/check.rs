@@ -21,7 +21,7 @@ pub fn to_json(m: &Marking, lang: Lang) -> Value {
                 "expected": a.expected.as_ref().map(|e| json!({ "decimal": value_json(e), "exact": exact_json(e) })),
                 "note": words(&a.note, lang),
                 "diagnosis": a.diagnosis,
-                "why": a.why,
+                "why": a.why.as_ref().map(|w| words(w, lang)),
             })
         })
         .collect();
@@ -60,6 +60,36 @@ fn verdict_words(v: Verdict, lang: Lang) -> String {
     }
 }
 
+/// The headings of a class's table (`check --answers DIR`), one per column.
+pub fn class_header(lang: Lang) -> Vec<&'static str> {
+    let en = [
+        "student",
+        "score",
+        "correct",
+        "too coarse",
+        "wrong",
+        "missing",
+        "unparseable",
+        "follow-through",
+        "mistakes",
+    ];
+    let id = [
+        "mahasiswa",
+        "nilai",
+        "benar",
+        "terlalu kasar",
+        "salah",
+        "tidak dijawab",
+        "tidak terbaca",
+        "follow-through",
+        "kesalahan konsep",
+    ];
+    match lang {
+        Lang::En => en.to_vec(),
+        Lang::Id => id.to_vec(),
+    }
+}
+
 /// The marking as text: a table of answers, the mistakes found, the score.
 pub fn to_text(m: &Marking, style: &Style) -> String {
     use comfy_table::{presets, ContentArrangement, Table};
@@ -92,7 +122,7 @@ pub fn to_text(m: &Marking, style: &Style) -> String {
     let whys: Vec<String> = m
         .answers
         .iter()
-        .filter_map(|a| a.why.as_ref().map(|w| format!("  • {}: {w}\n", a.key)))
+        .filter_map(|a| (a.why.as_ref()).map(|w| format!("  • {}: {}\n", a.key, style.w(w))))
         .collect();
     if !whys.is_empty() {
         out.push_str(t_(

@@ -286,7 +286,7 @@ impl Report {
             obj["source_notes"] = json!(self.source_notes);
         }
         if let Some(c) = &self.comparison {
-            obj["comparison"] = c.rows.iter().map(compared_json).collect();
+            obj["comparison"] = c.rows.iter().map(|r| compared_json(r, lang)).collect();
         }
         obj
     }
@@ -326,7 +326,9 @@ fn comparison_text(c: &Comparison, lang: Lang) -> String {
     let printed = t("printed", "tercetak");
     for r in &c.rows {
         let (key, shown) = (&r.key, &r.printed);
-        let why = r.why.as_ref().map(|w| format!(": {w}")).unwrap_or_default();
+        let why = (r.why.as_ref())
+            .map(|w| format!(": {}", style.w(w)))
+            .unwrap_or_default();
         lines.push(match (&r.computed, r.agrees) {
             (None, _) => format!(
                 "  {key}: {printed} {shown} — {}",
@@ -356,13 +358,13 @@ fn comparison_text(c: &Comparison, lang: Lang) -> String {
 }
 
 /// One compared answer as JSON.
-fn compared_json(r: &Compared) -> Value {
+fn compared_json(r: &Compared, lang: Lang) -> Value {
     json!({
         "key": r.key,
         "printed": r.printed,
         "computed": r.computed.as_ref().map(value_json),
         "agrees": r.agrees,
-        "why": r.why,
+        "why": r.why.as_ref().map(|w| crate::report::words::words(w, lang)),
     })
 }
 

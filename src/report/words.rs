@@ -6,12 +6,17 @@ use super::lang::Lang;
 use crate::msg::{LightPart, Msg, SpotZone, Term, Trivial};
 
 mod drawn;
+pub mod errors;
 
 /// The words of `m` in `lang`.
 pub fn words(m: &Msg, lang: Lang) -> String {
     let id = lang == Lang::Id;
     match m {
         Msg::Math(s) => s.clone(),
+        Msg::Written(en, ind) => match (lang, ind) {
+            (Lang::Id, Some(ind)) => ind.clone(),
+            _ => en.clone(),
+        },
         Msg::SecModeling
         | Msg::SecViewing
         | Msg::SecProjection
@@ -38,7 +43,6 @@ pub fn words(m: &Msg, lang: Lang) -> String {
                 format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen")
             }
         }
-        Msg::Untranslated(s) => s.clone(),
         Msg::DrawnTitle(t) => drawn::title(*t, lang),
         Msg::Statement(s) => drawn::statement(s, lang),
         Msg::ErrFewDistinct(topic, level, n) => {
@@ -54,6 +58,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html",
         ),
         Msg::At(place, m) => format!("{place}: {}", words(m, lang)),
+        Msg::Err(e) => errors::error(e, lang),
         Msg::ErrSamePoint(_)
         | Msg::ErrUpZero
         | Msg::ErrUpParallel(..)
@@ -86,8 +91,9 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             super::lang::decimal(v, lang)
         ),
         Msg::Unreadable(why) => format!(
-            "{}: {why}",
-            pick(id, "cannot be read", "tidak dapat dibaca")
+            "{}: {}",
+            pick(id, "cannot be read", "tidak dapat dibaca"),
+            errors::number(why, lang)
         ),
         Msg::WithinPct(p) => format!(
             "{} {}%",
@@ -575,8 +581,8 @@ fn error(m: &Msg, lang: Lang) -> String {
             format!("{a}min = {} lebih besar daripada {a}max = {}", n(lo), n(hi)),
         ),
         Msg::ErrCannotRead(path, why) => f(
-            format!("cannot read {path}: {why}"),
-            format!("tidak dapat membaca {path}: {why}"),
+            format!("cannot read {path}: {}", errors::io_why(why, lang)),
+            format!("tidak dapat membaca {path}: {}", errors::io_why(why, lang)),
         ),
         Msg::ErrZeroUnit(v) => f(
             format!("{v} is the zero vector (0, 0, 0): it has no direction, so it cannot be made a unit vector"),
@@ -820,7 +826,7 @@ mod tests {
             Msg::SeveralAnswers,
             Msg::EmptyAnswer,
             Msg::NoAnswer,
-            Msg::Unreadable("x".into()),
+            Msg::Unreadable(crate::msg::NumErr::Empty),
             Msg::Exact,
             Msg::NotANumber(s(), 3),
             Msg::Rounded(4),
@@ -841,7 +847,7 @@ mod tests {
             Msg::ErrUnknownPoint(s(), None),
             Msg::ErrUnknownPoint(s(), Some("A, B".into())),
             Msg::ErrBoxInverted("y".into(), "5".into(), "4".into()),
-            Msg::ErrCannotRead("p.toml".into(), "os error 2".into()),
+            Msg::ErrCannotRead("p.toml".into(), crate::msg::IoWhy::NotFound),
             Msg::ErrZeroUnit(s()),
             Msg::ErrNamedPoint(s()),
             Msg::ErrPointName(s()),
@@ -883,6 +889,10 @@ mod tests {
         v.push(Msg::ErrFewDistinct("window".into(), "easy".into(), 20));
         v.push(Msg::ErrHtmlCommand);
         v.extend(drawn_messages());
+        v.push(Msg::Unreadable(crate::msg::NumErr::DivZero("1/0".into())));
+        v.push(Msg::Written("as for B".into(), Some("seperti B".into())));
+        v.push(Msg::At("p.toml:3:7".into(), Box::new(Msg::ErrUpZero)));
+        v.extend(errors::tests::every_error().into_iter().map(Msg::Err));
         v
     }
 
@@ -951,6 +961,7 @@ mod tests {
         use Msg::*;
         match m {
             Math(_)
+            | Written(..)
             | SecModeling
             | SecViewing
             | SecProjection
@@ -1069,8 +1080,8 @@ mod tests {
             | Parts(_)
             | NotShapeAsked
             | FollowThrough
-            | Untranslated(_)
             | At(..)
+            | Err(_)
             | ErrSamePoint(_)
             | ErrUpZero
             | ErrUpParallel(..)

@@ -92,7 +92,8 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
 
     // v completes the right-handed frame
     let sv = vec::cross(&ds, &su);
-    let (v, svn) = vec::normalize(&sv).ok_or_else(|| Error::new("up", "v = n × u vanished"))?;
+    let (v, svn) =
+        vec::normalize(&sv).ok_or_else(|| Error::why("up", crate::msg::ErrMsg::VVanished))?;
     tr.step(|| {
         Step::new(Msg::CamAxisV, "v = n × u")
             .val("n", Val::vec3(&n))
@@ -119,13 +120,9 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
 /// d overflows the precision or is zero (Pe = Pr).
 fn view_direction<T: Scalar>(pe: &V3<T>, d: &V3<T>) -> Result<(V3<T>, T)> {
     if !vec::is_finite(d) {
-        return Err(Error::new(
+        return Err(Error::why(
             "look",
-            format!(
-                "Pe − Pr = {} is too large for {} precision",
-                fmt3(d),
-                precision_name::<T>()
-            ),
+            crate::msg::ErrMsg::EyeLookTooLarge(fmt3(d), precision_name::<T>().into()),
         ));
     }
     vec::normalize(d).ok_or_else(|| Error::said("look", Msg::ErrSamePoint(fmt3(pe))))
@@ -219,12 +216,9 @@ pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> 
         view[(r, 3)] = -x;
     }
     if !(0..3).all(|r| view[(r, 3)].is_finite()) {
-        return Err(Error::new(
+        return Err(Error::why(
             "eye",
-            format!(
-                "the view matrix's translation −(u·Pe, v·Pe, n·Pe) is too large for {} precision",
-                precision_name::<T>()
-            ),
+            crate::msg::ErrMsg::TranslationTooLarge(precision_name::<T>().into()),
         ));
     }
     tr.step(|| {
@@ -301,12 +295,9 @@ pub fn to_eye<T: Scalar>(
         .res(format!("{name}'"), Val::vec3(&e))
     });
     if !vec::is_finite(&e) {
-        return Err(Error::new(
+        return Err(Error::why(
             format!("points.{name}"),
-            format!(
-                "the eye coordinates of {name} are too large for {} precision",
-                precision_name::<T>()
-            ),
+            crate::msg::ErrMsg::EyeCoordsTooLarge(name.to_string(), precision_name::<T>().into()),
         ));
     }
     Ok(e)

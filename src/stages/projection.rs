@@ -33,16 +33,12 @@ impl<T: Scalar> Projection<T> {
     /// Checks that the plane does not pass through the centre of projection.
     pub fn validate(&self) -> Result<()> {
         match self {
-            Projection::Plane { d } if d.is_zero_value() => Err(Error::new(
-                "d",
-                "the view plane z = 0 passes through the centre of projection at the origin",
-            )),
-            Projection::General { zprp, zvp } if zprp == zvp => Err(Error::new(
+            Projection::Plane { d } if d.is_zero_value() => {
+                Err(Error::why("d", crate::msg::ErrMsg::PlaneThroughOrigin))
+            }
+            Projection::General { zprp, zvp } if zprp == zvp => Err(Error::why(
                 "plane",
-                format!(
-                    "the view plane z = {} passes through the centre of projection",
-                    zvp.to_f64()
-                ),
+                crate::msg::ErrMsg::PlaneThroughCop(zvp.to_f64().to_string()),
             )),
             _ => Ok(()),
         }
@@ -121,14 +117,12 @@ pub fn project<T: Scalar>(
         plane_z.clone(),
     );
     if !vec::is_finite(&r) {
-        return Err(Error::new(
+        return Err(Error::why(
             format!("points.{name}"),
-            format!(
-                "the image of {name} is too large for {:?} precision (the point is too near the plane of the centre of projection)",
-                T::PRECISION
-            )
-            .to_lowercase()
-            .replace(&name.to_lowercase(), name),
+            crate::msg::ErrMsg::ImageTooLarge(
+                name.to_string(),
+                format!("{:?}", T::PRECISION).to_lowercase(),
+            ),
         ));
     }
     // Behind: the point and the plane are on opposite sides of the COP.

@@ -207,7 +207,7 @@ pub struct Compared {
     /// Whether they agree (`None`: not comparable, or not computed).
     pub agrees: Option<bool>,
     /// Why the source is wrong, where the problem file says.
-    pub why: Option<String>,
+    pub why: Option<crate::msg::Msg>,
 }
 
 /// The key (`window.pixels.A`) of the first number under `v` that is NaN

@@ -117,13 +117,9 @@ pub fn window<T: Scalar>(
 /// Checks a viewport size: both positive.
 pub fn validate_viewport<T: Scalar>(w: &T, h: &T) -> Result<()> {
     if *w <= T::zero() || *h <= T::zero() {
-        return Err(Error::new(
+        return Err(Error::why(
             "viewport",
-            format!(
-                "width and height must be positive, got {}x{}",
-                w.to_f64(),
-                h.to_f64()
-            ),
+            crate::msg::ErrMsg::Viewport(w.to_f64().to_string(), h.to_f64().to_string()),
         ));
     }
     Ok(())

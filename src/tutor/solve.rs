@@ -7,7 +7,7 @@ use crate::error::{Error, Result};
 use crate::input;
 use crate::input::fields::{Num, Vec3In};
 use crate::input::problem::{PointRef, ProblemIn};
-use crate::msg::Msg;
+use crate::msg::{Bound, ErrMsg, Msg};
 use crate::num::format::fmt_dec;
 use crate::num::vec::V3;
 use crate::num::{Expr, Scalar};
@@ -88,7 +88,7 @@ pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> 
     clip_part(p, &points, &mut rec, &mut result)?;
     shade_part(p, hooks, &mut rec, &mut result)?;
     if result.is_empty() {
-        return Err(Error::new("ask", "nothing to solve: the file has no part that its data allow (camera + points, perspective, clip, shade)"));
+        return Err(Error::why("ask", ErrMsg::NothingToSolve));
     }
 
     // Exact printed forms are compared to 1e-9 relative, or to what the
@@ -125,10 +125,7 @@ fn view_part<T: Scalar>(
     let c = match (want_view, &p.camera) {
         (true, Some(c)) => c,
         (true, None) if !points.is_empty() && p.ask.is_some() => {
-            return Err(Error::new(
-                "camera",
-                "the problem asks for the view but has no [camera] table",
-            ))
+            return Err(Error::why("camera", ErrMsg::NoCameraTable))
         }
         _ => return Ok(vec![]),
     };
@@ -171,12 +168,7 @@ fn project_part<T: Scalar>(
     let d: T = match (p.perspective.as_ref().and_then(|x| x.d.as_ref()), near) {
         (Some(d), _) => eval("perspective.d", d)?,
         (None, Some(n)) => -n.clone(),
-        (None, None) => {
-            return Err(Error::new(
-                "perspective.near",
-                "projection needs perspective.near (or perspective.d)",
-            ))
-        }
+        (None, None) => return Err(Error::why("perspective.near", ErrMsg::ProjectionNeedsNear)),
     };
     rec.section(Msg::SecProjection);
     rec.step(|| Step::new(Msg::ProjPlane, Msg::FProjPlane).res("d", Val::num(&d)));
@@ -209,17 +201,16 @@ fn window_part<T: Scalar>(
     };
     let (Some(fovy), Some(aspect), Some(near)) = (&per.fovy, &per.aspect, near) else {
         return match &p.ask {
-            Some(a) if a.iter().any(|x| x == "window" || x == "viewport") => Err(Error::new(
-                "perspective",
-                "the window needs perspective.fovy, perspective.aspect and perspective.near",
-            )),
+            Some(a) if a.iter().any(|x| x == "window" || x == "viewport") => {
+                Err(Error::why("perspective", ErrMsg::WindowNeeds))
+            }
             _ => Ok(None),
         };
     };
     let fovy: T = fovy
         .0
         .degrees()
-        .map_err(|m| Error::new("perspective.fovy", m))?;
+        .map_err(|m| Error::why("perspective.fovy", m))?;
     let aspect: T = eval("perspective.aspect", aspect)?;
     rec.section(Msg::SecWindowClip);
     let mut w = window::window(&fovy, &aspect, near, "near", rec).map_err(perspective_field)?;
@@ -232,9 +223,12 @@ fn window_part<T: Scalar>(
         .transpose()?;
     if let Some(f) = &far {
         if *f <= *near {
-            return Err(Error::new(
+            return Err(Error::why(
                 "perspective.far",
-                format!("must be greater than near = {}", near.to_f64()),
+                ErrMsg::MustBe(
+                    Bound::AboveNear(near.to_f64().to_string()),
+                    f.to_f64().to_string(),
+                ),
             ));
         }
         let fw = window::window(&fovy, &aspect, f, "far", rec).map_err(perspective_field)?;
@@ -336,10 +330,9 @@ fn shade_part<T: Scalar>(
             result.push(("shade".into(), Val::Map(r)));
             Ok(())
         }
-        _ if !p.light.is_empty() && p.shade.is_none() => Err(Error::new(
-            "shade",
-            "[[light]] tables need a [shade] table (normal, color, ...)",
-        )),
+        _ if !p.light.is_empty() && p.shade.is_none() => {
+            Err(Error::why("shade", ErrMsg::LightsNeedShade))
+        }
         _ => Ok(()),
     }
 }
@@ -558,11 +551,7 @@ fn compare_printed(p: &ProblemIn, result: &[(String, Val)], rel: f64) -> Option<
                 printed: printed_text(printed),
                 agrees: computed.as_ref().and_then(|v| agrees(printed, v, rel)),
                 computed,
-                why: p
-                    .errata
-                    .iter()
-                    .find(|e| &e.key == key)
-                    .map(|e| e.why.clone()),
+                why: p.errata.iter().find(|e| &e.key == key).map(|e| e.reason()),
             }
         })
         .collect();

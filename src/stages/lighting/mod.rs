@@ -149,9 +149,12 @@ impl<T: Scalar> Material<T> {
             ("shininess", &self.shininess),
         ] {
             if !v.is_finite() || *v < T::zero() {
-                return Err(Error::new(
+                return Err(Error::why(
                     format!("{prefix}{k}"),
-                    format!("must be a number ≥ 0, got {}", v.to_f64()),
+                    crate::msg::ErrMsg::MustBe(
+                        crate::msg::Bound::NumberAtLeastZero,
+                        v.to_f64().to_string(),
+                    ),
                 ));
             }
         }
@@ -169,9 +172,9 @@ impl<T: Scalar> Material<T> {
 pub fn check_color<T: Scalar>(field: &str, c: &Rgb<T>) -> Result<()> {
     for (ch, v) in ["red", "green", "blue"].iter().zip(c) {
         if !v.is_finite() || *v < T::zero() || *v > T::one() {
-            return Err(Error::new(
+            return Err(Error::why(
                 field,
-                format!("color channels must lie in [0, 1]; {ch} is {}", v.to_f64()),
+                crate::msg::ErrMsg::Channel(ch.to_string(), v.to_f64().to_string()),
             ));
         }
     }
@@ -252,21 +255,23 @@ impl<T: Scalar> Light<T> {
         let a = &self.attenuation;
         if a.iter().any(|x| !x.is_finite() || *x < T::zero()) || a.iter().all(|x| x.is_zero_value())
         {
-            return Err(Error::new(
+            return Err(Error::why(
                 format!("{field}.attenuation"),
-                format!(
-                    "a0, a1, a2 must be ≥ 0 and not all 0, got ({}, {}, {})",
-                    a[0].to_f64(),
-                    a[1].to_f64(),
-                    a[2].to_f64()
+                crate::msg::ErrMsg::Attenuation(
+                    a[0].to_f64().to_string(),
+                    a[1].to_f64().to_string(),
+                    a[2].to_f64().to_string(),
                 ),
             ));
         }
         if let Some(r) = &self.range {
             if *r <= T::zero() {
-                return Err(Error::new(
+                return Err(Error::why(
                     format!("{field}.range"),
-                    format!("must be > 0, got {}", r.to_f64()),
+                    crate::msg::ErrMsg::MustBe(
+                        crate::msg::Bound::AboveZero,
+                        r.to_f64().to_string(),
+                    ),
                 ));
             }
         }
@@ -279,19 +284,18 @@ impl<T: Scalar> Light<T> {
         {
             let full = T::from_i64(180);
             if *theta < T::zero() || *theta > *phi || *phi > full {
-                return Err(Error::new(
+                return Err(Error::why(
                     format!("{field}.theta"),
-                    format!(
-                        "the cone angles need 0 ≤ theta ≤ phi ≤ 180°, got theta = {}, phi = {}",
-                        theta.to_f64(),
-                        phi.to_f64()
-                    ),
+                    crate::msg::ErrMsg::Cones(theta.to_f64().to_string(), phi.to_f64().to_string()),
                 ));
             }
             if *falloff < T::zero() {
-                return Err(Error::new(
+                return Err(Error::why(
                     format!("{field}.falloff"),
-                    format!("must be ≥ 0, got {}", falloff.to_f64()),
+                    crate::msg::ErrMsg::MustBe(
+                        crate::msg::Bound::AtLeastZero,
+                        falloff.to_f64().to_string(),
+                    ),
                 ));
             }
         }

@@ -125,7 +125,7 @@ pub struct Marked {
     pub diagnosis: Vec<&'static str>,
     /// Why the source's printed answer is wrong (its `[[errata]]`), when
     /// checking the source's own answers.
-    pub why: Option<String>,
+    pub why: Option<crate::msg::Msg>,
 }
 
 /// One mistake that explains some wrong answers.
@@ -306,7 +306,7 @@ pub fn mark(
         };
         let note = j.note;
         let why = match (from_text, p.errata.iter().find(|e| &e.key == key)) {
-            (true, Some(e)) if j.verdict == Verdict::Wrong => Some(e.why.clone()),
+            (true, Some(e)) if j.verdict == Verdict::Wrong => Some(e.reason()),
             _ => None,
         };
         marked.push(Marked {

@@ -61,10 +61,7 @@ pub fn problem(
             ),
         ));
     }
-    Err(Error::new(
-        "seed",
-        "could not draw a non-degenerate problem in 500 tries",
-    ))
+    Err(Error::why("seed", crate::msg::ErrMsg::NoDrawing))
 }
 
 /// Parses, solves and screens a drawn problem.

@@ -98,7 +98,7 @@ pub fn variant_seed(seed: u64, v: u32) -> u64 {
 /// may show any two.
 pub fn exam(topics: &[Topic], diff: Difficulty, count: u32, seed: u64) -> Result<Vec<Generated>> {
     if topics.is_empty() {
-        return Err(Error::new("topic", "give at least one topic"));
+        return Err(Error::why("topic", crate::msg::ErrMsg::NoTopic));
     }
     let order = clip_order(seed);
     let mut seen = HashSet::new();

@@ -1,0 +1,383 @@
+//! Why an input was refused, as data: every error a person can meet is one
+//! of these keys with its parameters (numbers as notation, `.` for the
+//! decimal point), and `report::words::errors` says it in English and in
+//! Bahasa Indonesia. The field at fault is not here: `Error` holds it, as
+//! the flag or key is spelled.
+
+/// Why a number expression (a flag, a file value, an answer) or a plane's
+/// height formula could not be read or evaluated.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum NumErr {
+    /// The text as typed, then why (`` `1+*2`: … ``).
+    Quoted(String, Box<NumErr>),
+    /// Longer than allowed: characters, the most allowed.
+    TooLong(usize, usize),
+    /// Nothing where a number should be.
+    Empty,
+    /// Expected this at a 1-based column; the character found (none: the end).
+    Expected(Want, usize, Option<char>),
+    /// Nested deeper than allowed: the most levels, the column.
+    TooDeep(usize, usize),
+    /// More operations than allowed: the most, the column.
+    TooManyOps(usize, usize),
+    /// Not three components: how many, the text.
+    Count(usize, String),
+    /// Component 0, 1 or 2 (x, y, z), its text, why.
+    Component(usize, String, Box<NumErr>),
+    /// Not finite at a precision: the expression, the precision (`f32`).
+    NotFinite(String, String),
+    /// A literal that is not a number.
+    NotANumber(String),
+    /// A TOML float that is not finite (`nan`, `inf`).
+    NotFiniteLiteral(String),
+    /// sqrt of a negative number: the argument.
+    NegativeRoot(String),
+    /// Division by zero: the expression.
+    DivZero(String),
+    /// An exponent that is not whole or beyond ±1024: the expression.
+    Exponent(String),
+    /// A power beyond 2^±8192: the expression.
+    PowerRange(String),
+    /// Height formula: an unexpected character at a 1-based position.
+    Unexpected(char, usize),
+    /// Height formula: `(` missing after a function name.
+    OpenAfter(String),
+    /// Height formula: an unknown name.
+    UnknownName(String),
+    /// Height formula: it ends too early.
+    EndsEarly,
+    /// Height formula: nested deeper than allowed (most, position).
+    FormulaDeep(usize, usize),
+    /// Height formula: more operations than allowed (most, position).
+    FormulaOps(usize, usize),
+}
+
+/// What the number reader expected.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Want {
+    /// An operator or the end of the number.
+    OperatorOrEnd,
+    /// `)`.
+    Close,
+    /// `(` after sqrt.
+    OpenAfterSqrt,
+    /// A number.
+    Number,
+}
+
+/// Why a file could not be read or written (the system's reason, by kind).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum IoWhy {
+    /// No such file or directory.
+    NotFound,
+    /// Permission denied.
+    Denied,
+    /// The file already exists.
+    Exists,
+    /// A directory where a file was expected.
+    IsDirectory,
+    /// Not UTF-8 text.
+    NotText,
+    /// Another reason, as the system says it.
+    Other(String),
+}
+
+impl IoWhy {
+    /// The reason of an I/O error.
+    pub fn of(e: &std::io::Error) -> IoWhy {
+        use std::io::ErrorKind as K;
+        match e.kind() {
+            K::NotFound => IoWhy::NotFound,
+            K::PermissionDenied => IoWhy::Denied,
+            K::AlreadyExists => IoWhy::Exists,
+            K::IsADirectory => IoWhy::IsDirectory,
+            K::InvalidData => IoWhy::NotText,
+            _ => IoWhy::Other(e.to_string()),
+        }
+    }
+}
+
+/// A bound a value must keep, for "must be …, got X".
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Bound {
+    /// A number ≥ 0 (material constants).
+    NumberAtLeastZero,
+    /// ≥ 0.
+    AtLeastZero,
+    /// > 0.
+    AboveZero,
+    /// Positive.
+    Positive,
+    /// Not negative.
+    NotNegative,
+    /// A finite number ≥ 0.
+    FiniteAtLeastZero,
+    /// Above 0 and below 1 (a relative tolerance).
+    Fraction,
+    /// A whole number of pixels.
+    WholePixels,
+    /// Greater than near (its value).
+    AboveNear(String),
+}
+
+/// Something given twice where once is wanted.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Twice {
+    /// The global ambient, in the lights file and in [shade].
+    GlobalAmbient,
+    /// The material, in the lights file and in [shade].
+    Material,
+    /// color and material.diffuse.
+    Color,
+    /// shininess and material.power.
+    Shininess,
+    /// V and the camera position.
+    View,
+    /// L and [[light]] tables.
+    Light,
+    /// [tilt] and [camera].
+    TiltCamera,
+    /// color, face_colors, vertex_colors.
+    Colors,
+    /// --answers and --answers-from-text (or neither).
+    Answers,
+}
+
+/// What needs a key: a light of a kind, or an object of a type (as spelled
+/// in the file: `spot`, `sphere`, `obj`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Thing {
+    /// A light of this kind.
+    Light(String),
+    /// An object of this type.
+    Object(String),
+}
+
+/// What clap refused on the command line.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ClapErr {
+    /// A value not among the possible ones: the value, the possible ones.
+    InvalidValue(String, String),
+    /// A value that could not be read: the value, clap's reason.
+    BadValue(String, String),
+    /// An argument that does not exist; a suggestion, if any.
+    Unknown(String, Option<String>),
+    /// A required argument missing: which.
+    Missing(String),
+    /// A subcommand that does not exist; a suggestion, if any.
+    UnknownCommand(String, Option<String>),
+    /// Two arguments that cannot be used together.
+    Conflict(String, String),
+    /// An argument without its value.
+    NoValue,
+    /// An argument with more or fewer values than it takes.
+    ValueCount(String),
+    /// Anything else (clap's line says it).
+    Other,
+}
+
+/// Why an input was refused.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ErrMsg {
+    /// A number that cannot be read or evaluated.
+    Num(NumErr),
+    /// "must be …, got X".
+    MustBe(Bound, String),
+    /// Given twice.
+    Twice(Twice),
+    /// A colour channel outside [0, 1]: channel, value.
+    Channel(String, String),
+    /// Attenuation a0, a1, a2 negative or all 0.
+    Attenuation(String, String, String),
+    /// Spot cones not 0 ≤ theta ≤ phi ≤ 180°: theta, phi.
+    Cones(String, String),
+    /// The view plane z = 0 through the centre of projection at the origin.
+    PlaneThroughOrigin,
+    /// The view plane z = zvp through the centre of projection.
+    PlaneThroughCop(String),
+    /// A point's image too large for a precision: point, precision.
+    ImageTooLarge(String, String),
+    /// The viewport not positive: width, height.
+    Viewport(String, String),
+    /// v = n × u vanished.
+    VVanished,
+    /// Pe − Pr too large for a precision: Pe − Pr, precision.
+    EyeLookTooLarge(String, String),
+    /// The view matrix's translation too large for a precision.
+    TranslationTooLarge(String),
+    /// A point's eye coordinates too large: point, precision.
+    EyeCoordsTooLarge(String, String),
+    /// A result not finite at a precision.
+    ResultNotFinite(String),
+    /// A file that cannot be read: path, why.
+    CannotRead(String, IoWhy),
+    /// Standard input cannot be read: why.
+    CannotReadStdin(IoWhy),
+    /// A file that cannot be written: path, why.
+    CannotWrite(String, IoWhy),
+    /// A directory that cannot be created: path, why.
+    CannotCreate(String, IoWhy),
+    /// The PNG cannot be written to standard output: why.
+    CannotWriteStdout(IoWhy),
+    /// A file that exists and is never overwritten: path.
+    Exists(String),
+    /// A file that exists; --force overwrites: path.
+    ExistsForce(String),
+    /// Not a directory: path.
+    NotDirectory(String),
+    /// A lights file without [[light]]: path.
+    NoLightTable(String),
+    /// Cs missing.
+    ColorMissing,
+    /// N missing.
+    NormalMissing,
+    /// The camera at the surface point.
+    CameraAtPoint,
+    /// No light at all.
+    NoLight,
+    /// A light at the surface point.
+    LightAtPoint,
+    /// A spot light needs a cone angle key.
+    SpotNeeds(String),
+    /// A light or object needs a key.
+    Needs(Thing, String),
+    /// A key that does not apply to a light of a kind: key, kind.
+    NotApplicable(String, String),
+    /// An object type without such a key: type, key, its keys.
+    NoSuchKey(String, String, String),
+    /// Needed for this type of light.
+    NeededForLight,
+    /// Needed to render.
+    NeededToRender,
+    /// A zero direction.
+    ZeroDirection,
+    /// An OBJ file that cannot be read: path, why.
+    ObjUnreadable(String, IoWhy),
+    /// An OBJ file that is not valid: path, the reader's error by name
+    /// (`FaceParseError`) and as it says it.
+    ObjInvalid(String, String, String),
+    /// An OBJ file without faces.
+    ObjNoFaces(String),
+    /// An OBJ file with a vertex not finite.
+    ObjNotFinite(String),
+    /// A face refers to a missing vertex.
+    FaceVertex,
+    /// A height formula that gives a value not finite.
+    FormulaNotFinite,
+    /// More triangles than the renderer takes: how many, the most.
+    TooManyTriangles(usize, usize),
+    /// A colour list that is empty.
+    NeedsColour,
+    /// A scene without objects.
+    NoObjects,
+    /// A [camera] without [perspective].
+    CameraNeedsPerspective,
+    /// An image size out of 1..=8192: width, height.
+    ImageSize(String, String),
+    /// An unknown part of `ask`: the part, the parts.
+    UnknownPart(String, String),
+    /// A point that is not [x, y, z]: the reader's reason.
+    ExpectedXyz(TomlErr),
+    /// A TOML error.
+    Toml(TomlErr),
+    /// Nothing to solve.
+    NothingToSolve,
+    /// The view asked without [camera].
+    NoCameraTable,
+    /// Projection without near.
+    ProjectionNeedsNear,
+    /// The window without fovy, aspect, near.
+    WindowNeeds,
+    /// [[light]] without [shade].
+    LightsNeedShade,
+    /// No topic.
+    NoTopic,
+    /// No non-degenerate problem in 500 tries.
+    NoDrawing,
+    /// No problem drawn (practice).
+    NoProblemDrawn,
+    /// Standard input holds the answers (practice).
+    StdinHoldsAnswers,
+    /// Neither a problem file nor --topic.
+    GiveProblem,
+    /// More problems than written without --force: problems, count,
+    /// variants, megabytes, the most.
+    TooManyProblems(u64, u64, u64, u64, u64),
+    /// Problem and answers both from standard input.
+    BothStdin,
+    /// No [printed] table: the file.
+    NoPrinted(String),
+    /// --csv - with --json.
+    CsvAndJson,
+    /// A directory without answer files.
+    NoAnswerFiles(String),
+    /// A pixel outside the image: x, y, width, height.
+    PixelOutside(u32, u32, u32, u32),
+    /// Not X,Y.
+    PixelText(String),
+    /// Nothing rendered.
+    NothingRendered,
+    /// The thread pool could not start: why.
+    Threads(String),
+    /// Render refuses --precision.
+    RenderPrecision,
+    /// A command that prints its own output run through `run`.
+    OwnOutput,
+    /// The manual page could not be written: why.
+    Man(String),
+    /// The command line, as clap refused it: what, and clap's own line
+    /// (the English words).
+    Clap(ClapErr, String),
+}
+
+/// A TOML file's error, by kind (the field and place are beside it).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum TomlErr {
+    /// A key the table does not take: the key, the keys it takes.
+    UnknownField(String, Option<String>),
+    /// A key that is missing.
+    MissingField(String),
+    /// A key given twice.
+    Duplicate(String),
+    /// A value not among the allowed ones: the value, the allowed ones.
+    UnknownVariant(String, String),
+    /// A value of the wrong type: what was found, what was expected.
+    InvalidType(String, String),
+    /// An array of the wrong length: the length, the one expected.
+    InvalidLength(String, String),
+    /// A number that cannot be read.
+    Num(NumErr),
+    /// A value out of its bound: the bound, the value given.
+    MustBe(Bound, String),
+    /// A whole number out of a range: lowest, highest, the value given.
+    WholeRange(i64, i64, String),
+    /// A colour component out of [0, 1]: the colour given.
+    Colour(String),
+    /// A syntax error, as the TOML reader says it.
+    Syntax(String),
+}
+
+impl From<NumErr> for ErrMsg {
+    fn from(e: NumErr) -> ErrMsg {
+        ErrMsg::Num(e)
+    }
+}
+
+impl From<TomlErr> for ErrMsg {
+    fn from(e: TomlErr) -> ErrMsg {
+        ErrMsg::Toml(e)
+    }
+}
+
+impl From<Twice> for ErrMsg {
+    fn from(e: Twice) -> ErrMsg {
+        ErrMsg::Twice(e)
+    }
+}
+
+impl NumErr {
+    /// This reason after the text it is about (`` `1+*2`: … ``).
+    pub fn quoted(self, text: &str) -> NumErr {
+        NumErr::Quoted(text.to_string(), Box::new(self))
+    }
+}
