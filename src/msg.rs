@@ -9,7 +9,9 @@
 //! message; only `report/` knows the words.
 
 mod drawn;
+mod pixel;
 pub use drawn::{CameraText, DrawnTitle, ShadeAsked, Statement};
+pub use pixel::PixelMsg;
 
 /// A term of the lighting sum.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -365,6 +367,8 @@ pub enum Msg {
     // ---- generated problems ----
     /// The title of a generated problem.
     DrawnTitle(DrawnTitle),
+    /// A geometry step of `render --explain-pixel`.
+    Pixel(PixelMsg),
     /// The statement of a generated problem.
     Statement(Box<Statement>),
     /// `generate`: only n different problems of a topic at a difficulty.

@@ -8,8 +8,12 @@
 //! or left edge: two triangles sharing an edge never both cover a pixel on
 //! it and never both miss it, because the edge functions are exact integers.
 
-/// Sub-pixel bits of the fixed-point screen coordinates.
-pub const SUB: i64 = 8;
+use crate::stages::window::snap;
+use multiversion::multiversion;
+
+/// Sub-pixel bits of the fixed-point screen coordinates (the stage's
+/// [`crate::stages::window::SUBPIXEL_BITS`]).
+pub const SUB: i64 = crate::stages::window::SUBPIXEL_BITS;
 const ONE: i64 = 1 << SUB;
 const HALF: i64 = ONE / 2;
 
@@ -60,13 +64,6 @@ pub struct Tri {
     pub face: u32,
     /// The screen vertices (for explaining a pixel).
     pub verts: [ScreenVert; 3],
-}
-
-/// v in 1/256 pixel, rounded half away from zero (casts, no libm call).
-#[inline]
-pub fn snap(v: f32) -> i64 {
-    let t = v as f64 * ONE as f64;
-    (t + if t >= 0.0 { 0.5 } else { -0.5 }) as i64
 }
 
 /// A triangle's vertices snapped to 1/256 pixel, wound positively, with the
@@ -265,43 +262,10 @@ impl Tri {
 /// its triangles in order; for every pixel the nearest triangle wins
 /// (strictly nearer, so the first drawn keeps a tie).
 ///
-/// On a CPU with AVX2 the same code, compiled a second time with AVX2
-/// enabled (a block of eight columns in one register), is chosen at run
-/// time; the results are the same bits.
+/// Compiled for AVX2 and FMA too (a block of eight columns in one
+/// register), chosen at run time; the results are the same bits.
+#[multiversion(targets("x86_64+avx2+fma"))]
 pub fn visibility_band(
-    tris: &[Tri],
-    bin: &[u32],
-    r0: u32,
-    w: usize,
-    dz: &mut [f32],
-    id: &mut [u32],
-) {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has AVX2 (checked just above), the one feature
-        // `visibility_band_avx2` is compiled for.
-        return unsafe { visibility_band_avx2(tris, bin, r0, w, dz, id) };
-    }
-    visibility_band_with(tris, bin, r0, w, dz, id)
-}
-
-/// [`visibility_band_with`] compiled for AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn visibility_band_avx2(
-    tris: &[Tri],
-    bin: &[u32],
-    r0: u32,
-    w: usize,
-    dz: &mut [f32],
-    id: &mut [u32],
-) {
-    visibility_band_with(tris, bin, r0, w, dz, id)
-}
-
-/// The body of [`visibility_band`].
-#[inline(always)]
-fn visibility_band_with(
     tris: &[Tri],
     bin: &[u32],
     r0: u32,
@@ -730,10 +694,9 @@ mod tests {
         tris
     }
 
-    /// The band pass as the renderer calls it (AVX2 when the CPU has it)
-    /// and its portable body, so a test checks both compilations.
+    /// The band pass as the renderer calls it.
     type Pass = fn(&[Tri], &[u32], u32, usize, &mut [f32], &mut [u32]);
-    const PASSES: [Pass; 2] = [visibility_band, visibility_band_with];
+    const PASSES: [Pass; 1] = [visibility_band];
 
     #[test]
     fn band_raster_covers_exactly_the_pixels_covers_accepts() {

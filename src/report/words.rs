@@ -6,6 +6,7 @@ use super::lang::Lang;
 use crate::msg::{LightPart, Msg, SpotZone, Term, Trivial};
 
 mod drawn;
+mod pixel;
 
 /// The words of `m` in `lang`.
 pub fn words(m: &Msg, lang: Lang) -> String {
@@ -40,6 +41,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         }
         Msg::Untranslated(s) => s.clone(),
         Msg::DrawnTitle(t) => drawn::title(*t, lang),
+        Msg::Pixel(p) => pixel::words(p, lang),
         Msg::Statement(s) => drawn::statement(s, lang),
         Msg::ErrFewDistinct(topic, level, n) => {
             if id {
@@ -883,6 +885,7 @@ mod tests {
         v.push(Msg::ErrFewDistinct("window".into(), "easy".into(), 20));
         v.push(Msg::ErrHtmlCommand);
         v.extend(drawn_messages());
+        v.extend(pixel::every().into_iter().map(Msg::Pixel));
         v
     }
 
@@ -1093,6 +1096,7 @@ mod tests {
             | ErrPointNeedsViewport
             | ErrFar(..)
             | DrawnTitle(_)
+            | Pixel(_)
             | Statement(_)
             | ErrFewDistinct(..)
             | ErrHtmlCommand => {}
