@@ -11,6 +11,8 @@ pub enum PixelMsg {
     SecClip,
     /// Section: vertex k of the set-up triangle, clip space to pixels.
     SecScreen(usize),
+    /// The matrices of an object: M, V·M and P·V·M.
+    Matrices(String),
     /// World coordinates of a point: Pw = M·P.
     World(String),
     /// Eye coordinates by the matrix V·M.
@@ -31,6 +33,8 @@ pub enum PixelMsg {
     Row(String),
     /// Snapping to 1/256 pixel.
     Snap(String),
+    /// The set-up triangle from the snapped vertices.
+    SetUp,
     /// Formula with words: the clip-space outcode.
     FOutcode,
     /// Note: the renderer multiplies the model point by V·M at once.

@@ -53,10 +53,10 @@ impl VertBufs {
 
 /// Everything the triangle loop needs about one object.
 pub(super) struct Prep<'a> {
-    obj: &'a Object,
-    /// Model → clip (clip-space positions are made again where a triangle
-    /// is clipped, rather than kept for every vertex).
-    c32: Matrix4<f32>,
+    pub(super) obj: &'a Object,
+    /// The per-vertex transforms (clip-space positions are made again
+    /// where a triangle is clipped, rather than kept for every vertex).
+    pub(super) x: VertXf<'a>,
     v: &'a VertBufs,
     lit: Option<Vec<[f32; 3]>>,
     closed: bool,
@@ -80,7 +80,7 @@ fn mul4(m: &Matrix4<f32>, p: [f32; 3]) -> [f32; 4] {
     [v.x, v.y, v.z, v.w]
 }
 
-fn v3(a: [f32; 3]) -> Vector3<f32> {
+pub(super) fn v3(a: [f32; 3]) -> Vector3<f32> {
     Vector3::new(a[0], a[1], a[2])
 }
 
@@ -108,16 +108,16 @@ enum NormalSrc<'a> {
 /// The per-vertex transforms of an object.
 pub(super) struct VertXf<'a> {
     /// Model → eye.
-    e32: Matrix4<f32>,
+    pub(super) e32: Matrix4<f32>,
     /// Model → clip.
-    c32: Matrix4<f32>,
+    pub(super) c32: Matrix4<f32>,
     /// The eye-space centre of the bounding box.
     centre: Vector3<f32>,
     /// The whole object is inside the view volume (all codes 0).
     inside: bool,
     win: &'a Window<f32>,
     /// Image width and height.
-    size: (f32, f32),
+    pub(super) size: (f32, f32),
     normals: NormalSrc<'a>,
 }
 
@@ -250,7 +250,7 @@ pub(super) fn to_screen(
 }
 pub(super) fn prepare<'a>(
     obj: &'a Object,
-    vs: &ViewSetup,
+    vs: &'a ViewSetup,
     scene_lights: &[Light<f32>],
     opt: &Options,
     stats: &mut Stats,
@@ -327,19 +327,16 @@ pub(super) fn prepare<'a>(
                 .cast(),
         ),
     };
-    let far2 = vertices(
-        &mesh.positions,
-        &VertXf {
-            e32,
-            c32,
-            centre,
-            inside,
-            win: &vs.win,
-            size: (opt.width as f32, opt.height as f32),
-            normals,
-        },
-        bufs,
-    );
+    let x = VertXf {
+        e32,
+        c32,
+        centre,
+        inside,
+        win: &vs.win,
+        size: (opt.width as f32, opt.height as f32),
+        normals,
+    };
+    let far2 = vertices(&mesh.positions, &x, bufs);
     let radius = far2.sqrt();
     let bufs: &'a VertBufs = bufs;
     let mut lights = Vec::new();
@@ -392,7 +389,7 @@ pub(super) fn prepare<'a>(
     };
     Some(Prep {
         obj,
-        c32,
+        x,
         v: bufs,
         lit,
         closed,
@@ -438,10 +435,10 @@ pub struct ChunkBuf {
 
 /// A clip-space vertex (x, y, z, w) followed by its corner data, as
 /// [`clip::clip_polygon`] interpolates it.
-type ClipVert = [f32; 16];
+pub(super) type ClipVert = [f32; 16];
 
 /// The clip coordinates of a [`ClipVert`].
-fn clip_xyzw(v: &ClipVert) -> Vector4<f32> {
+pub(super) fn clip_xyzw(v: &ClipVert) -> Vector4<f32> {
     Vector4::new(v[0], v[1], v[2], v[3])
 }
 
@@ -450,7 +447,7 @@ fn clip_xyzw(v: &ClipVert) -> Vector4<f32> {
 /// back face of a closed mesh), counted in `st`; else the planes it crosses
 /// and whether it is a back face (of an open mesh).
 #[inline(always)]
-fn test(
+pub(super) fn test(
     p: &Prep,
     idx: [usize; 3],
     vs: &ViewSetup,
@@ -482,7 +479,7 @@ fn test(
 /// flat: once per face, at the centroid with the polygon's normal; Gouraud:
 /// per vertex (from the object's lit vertices when it has them); Phong:
 /// none (lit per pixel). Lighting evaluations are counted in `st`.
-fn corners(
+pub(super) fn corners(
     p: &Prep,
     idx: [usize; 3],
     face: u32,
@@ -634,7 +631,7 @@ fn first_pass(
                 }
             }
         } else {
-            let tri = (idx, face, oi);
+            let tri = (idx, face, oi, (first + n) as u32);
             clip_tri(
                 p,
                 tri,
@@ -657,6 +654,27 @@ fn first_pass(
     buf.stats = st;
 }
 
+/// The polygon of triangle `idx` (with corners `cs`) clipped against the
+/// planes `or` it crosses: its vertices' clip coordinates
+/// ([`projection::to_clip`]) followed by their corners, through
+/// [`clip::clip_polygon`], left in `poly`.
+pub(super) fn clipped_polygon(
+    p: &Prep,
+    idx: [usize; 3],
+    cs: &[Corner; 3],
+    or: u8,
+    (poly, tmp): (&mut Vec<ClipVert>, &mut Vec<ClipVert>),
+    tr: &mut impl Trace,
+) {
+    poly.clear();
+    poly.extend((0..3).map(|k| {
+        let q = v3(p.obj.mesh.positions[idx[k]]);
+        let c = projection::to_clip(&p.x.c32, "", &q, &mut NoTrace);
+        std::array::from_fn(|i| if i < 4 { c[i] } else { cs[k][i - 4] })
+    }));
+    clip::clip_polygon(poly, or, tmp, tr);
+}
+
 /// A triangle that crosses the clip planes `or` (vertices `idx` of polygon
 /// `face` of object `oi`): lit, clipped, its fan set up into `buf.clipped`.
 /// Returns how many of the fan's triangles cover a pixel centre. (Not
@@ -665,7 +683,7 @@ fn first_pass(
 #[inline(never)]
 fn clip_tri(
     p: &Prep,
-    (idx, face, oi): ([usize; 3], u32, u32),
+    (idx, face, oi, src): ([usize; 3], u32, u32, u32),
     (or, back): (u8, bool),
     vs: &ViewSetup,
     opt: &Options,
@@ -677,32 +695,18 @@ fn clip_tri(
     st.clipped += 1;
     let cs = corners(p, idx, face, back, vs.ortho, st);
     let before = buf.clipped.len();
-    poly.clear();
-    poly.extend((0..3).map(|k| {
-        let q = v3(p.obj.mesh.positions[idx[k]]);
-        let c = projection::to_clip(&p.c32, "", &q, &mut NoTrace);
-        std::array::from_fn(|i| if i < 4 { c[i] } else { cs[k][i - 4] })
-    }));
-    clip::clip_polygon(poly, or, tmp, &mut NoTrace);
+    clipped_polygon(p, idx, &cs, or, (poly, tmp), &mut NoTrace);
+    let size = (w as f32, h as f32);
     for k in 1..poly.len().saturating_sub(1) {
         let tri = [poly[0], poly[k], poly[k + 1]];
-        let sv = tri.map(|v| {
-            to_screen(
-                &clip_xyzw(&v),
-                &vs.win,
-                (w as f32, h as f32),
-                "",
-                &mut NoTrace,
-            )
-        });
-        match raster::snap_box_of(sv.map(|s| s.1), w, h) {
-            Some(s) => {
-                let mut t = raster::setup_snapped(sv.map(|s| s.0), &s);
+        let sv = tri.map(|v| to_screen(&clip_xyzw(&v), &vs.win, size, "", &mut NoTrace));
+        match raster::setup_of(sv, w, h) {
+            Some((mut t, swap)) => {
                 t.obj = oi;
-                t.face = face;
+                t.src = src;
                 let [a, b, c] = tri.map(|v| -> Corner { std::array::from_fn(|i| v[i + 4]) });
                 buf.clipped
-                    .push((t, if s.swap() { [a, c, b] } else { [a, b, c] }));
+                    .push((t, if swap { [a, c, b] } else { [a, b, c] }));
                 st.drawn += 1;
             }
             None => st.no_pixels += 1,
@@ -778,7 +782,7 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
         corners_into(p, idx, face, kept.back, vs.ortho, &mut st, c, slot);
         raster::setup_into(&idx.map(|i| p.v.screen[i]), &s, tri);
         tri.obj = oi;
-        tri.face = face;
+        tri.src = kept.tri;
         finish(n, phong, (tri, c, pl), &mut buf.bins);
         n += 1;
     }

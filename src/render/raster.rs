@@ -58,10 +58,12 @@ pub struct Tri {
     pub l2: [f32; 3],
     /// 1/w at the vertices.
     pub inv_w: [f32; 3],
-    /// Which object and polygon face it came from.
+    /// Which object it came from.
     pub obj: u32,
-    /// See `obj`.
-    pub face: u32,
+    /// Which of the object's triangles (its number in the object's
+    /// triangle list; several set-up triangles share it when it was
+    /// clipped).
+    pub src: u32,
     /// The screen vertices (for explaining a pixel).
     pub verts: [ScreenVert; 3],
 }
@@ -140,6 +142,13 @@ pub fn setup(v: [ScreenVert; 3], w: u32, h: u32) -> Option<(Tri, bool)> {
     Some((setup_snapped(v, &s), s.swap))
 }
 
+/// [`setup`] of vertices each given with its position snapped by
+/// [`snap`] (x, y).
+pub fn setup_of(v: [(ScreenVert, [i64; 2]); 3], w: u32, h: u32) -> Option<(Tri, bool)> {
+    let s = snap_box_of(v.map(|p| p.1), w, h)?;
+    Some((setup_snapped(v.map(|p| p.0), &s), s.swap))
+}
+
 /// The second half of [`setup`]: edge functions and planes of a triangle
 /// that [`snap_box`] accepted (`v` as given to it, not yet swapped).
 pub fn setup_snapped(v: [ScreenVert; 3], s: &Snapped) -> Tri {
@@ -149,7 +158,7 @@ pub fn setup_snapped(v: [ScreenVert; 3], s: &Snapped) -> Tri {
 }
 
 /// [`setup_snapped`] written straight into `t` (every field but `obj` and
-/// `face`), so that the geometry stage sets up a triangle in its place in
+/// `src`), so that the geometry stage sets up a triangle in its place in
 /// the frame's array without a copy. Edge k runs from vertex k+1 to vertex
 /// k+2: a_k = −dy, b_k = dx, c_k = dy·x_i − dx·y_i (less 1 off the
 /// top-left edges); the barycentric plane of vertex k over pixel indices

@@ -329,7 +329,6 @@ pub fn to_world<T: Scalar>(m: &Matrix4<T>, name: &str, p: &V3<T>, tr: &mut impl 
             Msg::Pixel(PixelMsg::World(name.to_string())),
             format!("{name}w = M·{name}"),
         )
-        .val("M", Val::mat4(m))
         .val(name.to_string(), Val::vec3(p))
         .res(format!("{name}w"), Val::vec3(&w))
     });
@@ -351,7 +350,6 @@ pub fn eye_by_matrix<T: Scalar>(
             Msg::Pixel(PixelMsg::Eye(name.to_string())),
             format!("{name}' = V·{name}w = (V·M)·{name}"),
         )
-        .val("V·M", Val::mat4(vm))
         .val(name.to_string(), Val::vec3(p))
         .res(format!("{name}'"), Val::vec3(&e))
         .note(Msg::Pixel(PixelMsg::Composed))

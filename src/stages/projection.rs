@@ -252,7 +252,6 @@ pub fn to_clip<T: Scalar>(
             Msg::Pixel(PixelMsg::Clip(name.to_string())),
             format!("c = (x, y, z, w) = P·V·M·{name}"),
         )
-        .val("P·V·M", Val::mat4(pvm))
         .val(name.to_string(), Val::vec3(p))
         .res("c", vec4(&c))
     });

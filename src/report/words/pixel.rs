@@ -37,6 +37,10 @@ fn pair(m: &PixelMsg) -> (String, String) {
             format!("Vertex {k} of the set-up triangle: clip coordinates → pixel"),
             format!("Titik sudut {k} segitiga yang digambar: koordinat clip → piksel"),
         ),
+        PixelMsg::Matrices(n) => f(
+            format!("The matrices of {n}: modeling M, V·M and P·V·M"),
+            format!("Matriks {n}: pemodelan M, V·M dan P·V·M"),
+        ),
         PixelMsg::World(n) => f(
             format!("World coordinates of {n}"),
             format!("Koordinat dunia titik {n}"),
@@ -77,6 +81,10 @@ fn pair(m: &PixelMsg) -> (String, String) {
             format!("Snapping {n} to 1/256 pixel"),
             format!("Pembulatan {n} ke 1/256 piksel"),
         ),
+        PixelMsg::SetUp => s(
+            "The triangle set up for the rasterizer",
+            "Segitiga yang disiapkan untuk rasterizer",
+        ),
         PixelMsg::FOutcode => s(
             "bit 1: x < −w, bit 2: x > w, bit 3: y < −w, bit 4: y > w, bit 5: z < −w, bit 6: z > w",
             "bit 1: x < −w, bit 2: x > w, bit 3: y < −w, bit 4: y > w, bit 5: z < −w, bit 6: z > w",
@@ -108,6 +116,7 @@ pub fn every() -> Vec<PixelMsg> {
         PixelMsg::SecVertex(0),
         PixelMsg::SecClip,
         PixelMsg::SecScreen(1),
+        PixelMsg::Matrices(n()),
         PixelMsg::World(n()),
         PixelMsg::Eye(n()),
         PixelMsg::ProjMatrix,
@@ -117,6 +126,7 @@ pub fn every() -> Vec<PixelMsg> {
         PixelMsg::WindowPoint(n()),
         PixelMsg::Row(n()),
         PixelMsg::Snap(n()),
+        PixelMsg::SetUp,
         PixelMsg::FOutcode,
         PixelMsg::Composed,
         PixelMsg::Outside,
