@@ -10,8 +10,10 @@
 
 mod drawn;
 mod errors;
+mod pixel;
 pub use drawn::{CameraText, DrawnTitle, ShadeAsked, Statement};
 pub use errors::{Bound, ClapErr, ErrMsg, IoWhy, NumErr, Thing, TomlErr, Twice, Want};
+pub use pixel::PixelMsg;
 
 /// A term of the lighting sum.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -370,6 +372,8 @@ pub enum Msg {
     // ---- generated problems ----
     /// The title of a generated problem.
     DrawnTitle(DrawnTitle),
+    /// A geometry step of `render --explain-pixel`.
+    Pixel(PixelMsg),
     /// The statement of a generated problem.
     Statement(Box<Statement>),
     /// `generate`: only n different problems of a topic at a difficulty.

@@ -464,3 +464,189 @@ fn render_to_stdout_writes_only_the_png() {
     assert_eq!(std::fs::read(&file).unwrap(), out.stdout);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The JSON steps of `render SCENE --explain-pixel X,Y --json` (extra
+/// arguments after), the PNG written to a temporary file.
+fn explain_steps(scene: &str, px: &str, extra: &[&str]) -> Vec<serde_json::Value> {
+    let dir = std::env::temp_dir().join(format!("grafika-explain-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let out = grafika()
+        .arg("render")
+        .arg(root.join(scene))
+        .arg("-o")
+        .arg(dir.join(format!("{}.png", px.replace(',', "-"))))
+        .args(["--explain-pixel", px, "--json"])
+        .args(extra)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    v["steps"].as_array().unwrap().clone()
+}
+
+/// The first step whose title starts with `title`.
+fn step<'a>(steps: &'a [serde_json::Value], title: &str) -> &'a serde_json::Value {
+    steps
+        .iter()
+        .find(|s| s["title"].as_str().unwrap().starts_with(title))
+        .unwrap_or_else(|| panic!("no step `{title}`"))
+}
+
+/// A list of numbers in a step as f64.
+fn nums(v: &serde_json::Value) -> Vec<f64> {
+    v.as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect()
+}
+
+fn near(got: &[f64], want: &[f64], tol: f64) {
+    assert_eq!(got.len(), want.len(), "{got:?} vs {want:?}");
+    for (g, w) in got.iter().zip(want) {
+        assert!((g - w).abs() <= tol, "{got:?} vs {want:?}");
+    }
+}
+
+/// "(X, Y)" as two integers.
+fn pair(v: &serde_json::Value) -> [i64; 2] {
+    let s = v.as_str().unwrap().trim_matches(|c| c == '(' || c == ')');
+    let (a, b) = s.split_once(", ").unwrap();
+    [a.parse().unwrap(), b.parse().unwrap()]
+}
+
+#[test]
+fn explain_pixel_runs_a_vertex_through_the_stages_as_derived_by_hand() {
+    // camera-triangle-scene: eye Pe = (3, 1, 3), look-at (2, 1, 2), up
+    // (0, 1, 0), near 0.1, far 10, fovy 45°, aspect 2, 400 × 200 pixels.
+    // Pixel (200, 195) is on the floor (translated by (−3.25, 0, −3.25));
+    // its triangle's first vertex is the object point (4, 0, 4), so by hand:
+    //   world  Pw = (0.75, 0, 0.75);
+    //   n = (Pe − Pr)/|Pe − Pr| = (1, 0, 1)/√2, u = Vup × n/|…| =
+    //   (1, 0, −1)/√2, v = n × u = (0, 1, 0); Pw − Pe = (−2.25, −1, −2.25):
+    //   eye    P' = (u·, v·, n·) = (0, −1, −4.5/√2 = −2.25√2 ≈ −3.181981);
+    //   top = 0.1·tan 22.5° = 0.1(√2 − 1), right = 2·top: near/right =
+    //   (√2 + 1)/2, near/top = √2 + 1, and z_c = −(10.1/9.9)·z − 2/9.9,
+    //   w = −z:
+    //   clip   c = (0, −(√2 + 1), (22.725√2 − 2)/9.9, 2.25√2)
+    //            ≈ (0, −2.414214, 3.044239, 3.181981);
+    //   division yn = −(√2 + 1)/(2.25√2) ≈ −0.758714, xn = 0;
+    //   viewport px = (xn + 1)/2·400 = 200, py = (yn + 1)/2·200 ≈ 24.1286,
+    //   row = 200 − py ≈ 175.8714; snapped X = 256·200 = 51200,
+    //   Y = round(256·175.8714) = round(45023.07) = 45023.
+    let steps = explain_steps("problems/render/camera-triangle-scene.toml", "200,195", &[]);
+    let r2 = std::f64::consts::SQRT_2;
+    let world = step(&steps, "World coordinates of V0");
+    near(&nums(&world["values"]["V0"]), &[4.0, 0.0, 4.0], 0.0);
+    near(&nums(&world["result"]["V0w"]), &[0.75, 0.0, 0.75], 1e-6);
+    let eye = step(&steps, "Eye coordinates of V0");
+    near(&nums(&eye["result"]["V0'"]), &[0.0, -1.0, -2.25 * r2], 1e-5);
+    let clip = step(&steps, "Clip coordinates of V0");
+    let want = [0.0, -(r2 + 1.0), (22.725 * r2 - 2.0) / 9.9, 2.25 * r2];
+    near(&nums(&clip["result"]["c"]), &want, 1e-5);
+    let code = step(&steps, "Outcode of V0");
+    assert_eq!(code["result"]["code"], "000000");
+    let div = step(&steps, "Perspective division of V0");
+    let yn = -(r2 + 1.0) / (2.25 * r2);
+    near(&nums(&div["result"]["(xn, yn, zn)"])[..2], &[0.0, yn], 1e-6);
+    let row = step(&steps, "Pixel row of V0");
+    near(
+        &nums(&row["result"]["(x, row)"]),
+        &[200.0, 200.0 - (yn + 1.0) * 100.0],
+        1e-4,
+    );
+    let snap = step(&steps, "Snapping V0");
+    assert_eq!(pair(&snap["result"]["(X, Y)"]), [51200, 45023]);
+    // The pixel position explained is the one the rasterizer used: the
+    // triangle made again equals the frame's, and the pixel's centre
+    // (256·200 + 128, 256·195 + 128) is inside its snapped vertices.
+    let set_up = step(&steps, "The triangle set up");
+    assert_eq!(set_up["result"]["same as the rasterizer's"], true);
+    let v: Vec<[i64; 2]> = (0..3)
+        .map(|k| pair(&set_up["values"][format!("vertex {k} (X, Y)")]))
+        .collect();
+    assert_eq!(v[0], [51200, 45023]);
+    let (cx, cy) = (200 * 256 + 128, 195 * 256 + 128);
+    let edge = |a: [i64; 2], b: [i64; 2]| (b[0] - a[0]) * (cy - a[1]) - (b[1] - a[1]) * (cx - a[0]);
+    let e = [edge(v[0], v[1]), edge(v[1], v[2]), edge(v[2], v[0])];
+    assert!(
+        e.iter().all(|&x| x >= 0) || e.iter().all(|&x| x <= 0),
+        "{e:?}"
+    );
+    // In the order the course teaches, before the pixel's own steps.
+    let at = |t: &str| {
+        steps
+            .iter()
+            .position(|s| s["title"].as_str().unwrap().starts_with(t))
+    };
+    let order = [
+        "World coordinates of V0",
+        "Eye coordinates of V0",
+        "Clip coordinates of V0",
+        "Outcode of V0",
+        "Perspective division of V0",
+        "Window point of V0",
+        "Viewport coordinates of V0",
+        "Pixel row of V0",
+        "Snapping V0",
+        "The triangle set up",
+        "Depth at the pixel",
+        "Barycentric",
+    ];
+    let pos: Vec<usize> = order.iter().map(|t| at(t).unwrap()).collect();
+    assert!(pos.windows(2).all(|w| w[0] < w[1]), "{pos:?}");
+    assert!(at("Projection matrix").unwrap() < pos[0]);
+}
+
+#[test]
+fn explain_pixel_shows_the_clipping_of_a_triangle_that_crosses_a_plane() {
+    // Pixel (10, 195): a floor triangle that reaches past the left edge of
+    // the view: its polygon is clipped (Sutherland–Hodgman in clip space),
+    // and the explained fan triangle is the rasterizer's.
+    let steps = explain_steps("problems/render/camera-triangle-scene.toml", "10,195", &[]);
+    let clip: Vec<&serde_json::Value> = steps
+        .iter()
+        .filter(|s| s["title"].as_str().unwrap().starts_with("Clipping against"))
+        .collect();
+    assert!(!clip.is_empty());
+    let left = step(&steps, "Clipping against the left plane (bit 1)");
+    for t in nums(&left["result"]["t"]) {
+        assert!((0.0..=1.0).contains(&t), "{t}");
+    }
+    // Every vertex of the clipped polygon lies on or inside x = −w.
+    for v in left["result"]["clipped polygon"].as_array().unwrap() {
+        let c = nums(v);
+        assert!(c[0] + c[3] >= -1e-5 * c[3].abs(), "{c:?}");
+    }
+    let some_vertex_is_out =
+        (0..3).any(|k| step(&steps, &format!("Outcode of V{k}"))["result"]["code"] != "000000");
+    assert!(some_vertex_is_out);
+    let set_up = step(&steps, "The triangle set up");
+    assert_eq!(set_up["result"]["same as the rasterizer's"], true);
+    assert!(steps
+        .iter()
+        .any(|s| s["title"] == "Snapping Q0 to 1/256 pixel"));
+}
+
+#[test]
+fn explain_pixel_speaks_indonesian_with_the_same_numbers() {
+    let en = explain_steps("problems/render/cone-flat.toml", "330,150", &[]);
+    let id = explain_steps(
+        "problems/render/cone-flat.toml",
+        "330,150",
+        &["--lang", "id"],
+    );
+    assert_eq!(en.len(), id.len());
+    assert!(id.iter().any(|s| s["title"] == "Koordinat clip titik V0"));
+    assert!(id
+        .iter()
+        .any(|s| s["title"] == "Pembagian perspektif titik V1"));
+    for (a, b) in en.iter().zip(&id) {
+        assert_eq!(a["result"], b["result"]);
+    }
+}

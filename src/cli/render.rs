@@ -6,9 +6,9 @@ use crate::cli::args::RenderArgs;
 use crate::error::{Error, Result};
 use crate::input::scene::{Scene, Shading};
 use crate::msg::Msg;
-use crate::render::{self, Frame, Options, Stats};
+use crate::render::{self, Corner, Frame, Options, Stats};
 use crate::stages::trace::Report;
-use crate::stages::trace::{Recorder, Step, Trace, Val};
+use crate::stages::trace::{NoTrace, Recorder, Step, Trace, Val};
 use nalgebra::Vector3;
 use serde_json::json;
 use std::time::{Duration, Instant};
@@ -16,13 +16,7 @@ use std::time::{Duration, Instant};
 /// Runs `render`.
 pub fn run(a: &RenderArgs) -> Result<Report> {
     let scene = Scene::read(&a.scene)?;
-    let mut opt = Options::of(&scene);
-    opt.shading = a.shading.unwrap_or(opt.shading);
-    opt.force_shading = a.shading.is_some();
-    opt.normals = a.normals.unwrap_or(opt.normals);
-    opt.width = a.width.unwrap_or(opt.width);
-    opt.height = a.height.unwrap_or(opt.height);
-    opt.progress = a.repeat == 1;
+    let opt = options(a, &scene);
     let pixel = a.explain_pixel.as_deref().map(parse_pixel).transpose()?;
     if let Some((x, y)) = pixel {
         if x >= opt.width || y >= opt.height {
@@ -32,36 +26,7 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
             ));
         }
     }
-    // --repeat shows its progress on a terminal (a big scene × 10,000 runs
-    // for minutes); one frame has the renderer's own bar.
-    let bar = (a.repeat > 1)
-        .then(|| crate::cli::terminal_bar(a.repeat as u64, "frames / bingkai"))
-        .flatten();
-    let go = || -> Result<(Frame, Vec<Stats>)> {
-        let mut times = Vec::new();
-        let mut last = None;
-        for _ in 0..a.repeat {
-            let f = render::render_reusing(&scene, &opt, last.take())?;
-            times.push(f.stats.clone());
-            last = Some(f);
-            if let Some(b) = &bar {
-                b.inc(1);
-            }
-        }
-        if let Some(b) = &bar {
-            b.finish_and_clear();
-        }
-        let f = last.ok_or_else(|| Error::why("--repeat", crate::msg::ErrMsg::NothingRendered))?;
-        Ok((f, times))
-    };
-    let (frame, runs) = match a.threads {
-        Some(n) => rayon::ThreadPoolBuilder::new()
-            .num_threads(n as usize)
-            .build()
-            .map_err(|e| Error::why("--threads", crate::msg::ErrMsg::Threads(e.to_string())))?
-            .install(go)?,
-        None => go()?,
-    };
+    let (frame, runs) = frames(a, &scene, &opt)?;
     let t = Instant::now();
     if a.output.as_os_str() == "-" {
         let out = std::io::stdout().lock();
@@ -75,73 +40,88 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
         render::write_png(&frame, &a.output)?;
     }
     let encode = t.elapsed();
+    let mut rec = Recorder::new();
+    if let Some((x, y)) = pixel {
+        explain(&frame, &scene, &opt, (x, y), &mut rec)?;
+    }
+    Ok(report(a, &scene, &opt, (&frame, &runs), encode, pixel, rec))
+}
 
+/// The scene's settings with the flags' changes.
+fn options(a: &RenderArgs, scene: &Scene) -> Options {
+    let mut opt = Options::of(scene);
+    opt.shading = a.shading.unwrap_or(opt.shading);
+    opt.force_shading = a.shading.is_some();
+    opt.normals = a.normals.unwrap_or(opt.normals);
+    opt.width = a.width.unwrap_or(opt.width);
+    opt.height = a.height.unwrap_or(opt.height);
+    opt.progress = a.repeat == 1;
+    opt
+}
+
+/// Renders `--repeat` frames (on `--threads` threads), each into the last
+/// one's buffers: the last frame and every frame's counters and times.
+fn frames(a: &RenderArgs, scene: &Scene, opt: &Options) -> Result<(Frame, Vec<Stats>)> {
+    // --repeat shows its progress on a terminal (a big scene × 10,000 runs
+    // for minutes); one frame has the renderer's own bar.
+    let bar = (a.repeat > 1)
+        .then(|| crate::cli::terminal_bar(a.repeat as u64, "frames / bingkai"))
+        .flatten();
+    let go = || -> Result<(Frame, Vec<Stats>)> {
+        let mut times = Vec::new();
+        let mut last = None;
+        for _ in 0..a.repeat {
+            let f = render::render_reusing(scene, opt, last.take())?;
+            times.push(f.stats.clone());
+            last = Some(f);
+            if let Some(b) = &bar {
+                b.inc(1);
+            }
+        }
+        if let Some(b) = &bar {
+            b.finish_and_clear();
+        }
+        let f = last.ok_or_else(|| Error::why("--repeat", crate::msg::ErrMsg::NothingRendered))?;
+        Ok((f, times))
+    };
+    match a.threads {
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n as usize)
+            .build()
+            .map_err(|e| Error::why("--threads", crate::msg::ErrMsg::Threads(e.to_string())))?
+            .install(go),
+        None => go(),
+    }
+}
+
+/// The report of a render: the summary, `--stats`, the JSON's counters
+/// and times, the explained pixel's steps.
+fn report(
+    a: &RenderArgs,
+    scene: &Scene,
+    opt: &Options,
+    (frame, runs): (&Frame, &[Stats]),
+    encode: Duration,
+    pixel: Option<(u32, u32)>,
+    rec: Recorder,
+) -> Report {
     let median = |f: &dyn Fn(&Stats) -> Duration| {
         let mut v: Vec<Duration> = runs.iter().map(f).collect();
         v.sort();
         v[v.len() / 2]
     };
     let frame_t = median(&|s| s.frame());
-    let ms = |d: Duration| d.as_secs_f64() * 1e3;
     let st = &frame.stats;
     let mpix = (opt.width as f64 * opt.height as f64) / frame_t.as_secs_f64() / 1e6;
-    let mut rec = Recorder::new();
-    if let Some((x, y)) = pixel {
-        explain(&frame, &scene, x, y, &mut rec);
-    }
-    let shading = shading_summary(&scene, &opt);
-    let mut result = vec![
-        (
-            "image".to_string(),
-            Val::text(a.output.display().to_string()),
-        ),
-        (
-            "size".to_string(),
-            Val::text(format!("{}x{}", opt.width, opt.height)),
-        ),
-        ("shading".to_string(), Val::text(shading.clone())),
-        (
-            "triangles drawn".to_string(),
-            Val::Num(crate::num::Scalar::shown(&(st.drawn as f64))),
-        ),
-        (
-            "pixels shaded".to_string(),
-            Val::Num(crate::num::Scalar::shown(&(st.pixels_shaded as f64))),
-        ),
-    ];
-    let label = if a.repeat > 1 {
-        format!("frame time (median of {})", a.repeat)
-    } else {
-        "frame time".to_string()
-    };
-    result.push((
-        label,
-        Val::text(format!(
-            "{:.2} ms ({mpix:.1} Mpixels/s); PNG encoding {:.2} ms",
-            ms(frame_t),
-            ms(encode)
-        )),
-    ));
+    let shading = shading_summary(scene, opt);
+    let result = summary(a, opt, st, &shading, (frame_t, encode, mpix));
     let mut notes = Vec::new();
     if a.stats {
-        notes.push(stats_text(st, &runs, opt.shading, &median, encode));
+        notes.push(stats_text(st, runs, opt.shading, &median, encode));
     }
     let mut extra = serde_json::Map::new();
-    extra.insert(
-        "stats".into(),
-        json!({
-            "triangles_in": st.tris_in, "culled": st.culled, "rejected": st.rejected,
-            "objects_rejected": st.objects_rejected, "objects_inside": st.objects_inside,
-            "clipped": st.clipped, "drawn": st.drawn, "no_pixels": st.no_pixels,
-            "pixels_shaded": st.pixels_shaded, "lighting_evaluations": st.lighting_evals,
-            "lights_skipped": st.lights_skipped, "specular_skipped": st.specular_skipped,
-            "frame_ms": ms(frame_t), "geometry_ms": ms(median(&|s| s.geometry)),
-            "binning_ms": ms(median(&|s| s.binning)), "raster_ms": ms(median(&|s| s.raster)),
-            "shading_ms": ms(median(&|s| s.shading)), "bands_ms": ms(median(&|s| s.pass)), "png_ms": ms(encode),
-            "repeat": a.repeat, "mpixels_per_s": mpix,
-        }),
-    );
-    Ok(Report {
+    extra.insert("stats".into(), stats_json(a, st, &median, encode, mpix));
+    Report {
         command: "render".into(),
         input: json!({
             "scene": a.scene.display().to_string(), "output": a.output.display().to_string(),
@@ -157,6 +137,65 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
         extra,
         comparison: None,
         source_notes: vec![],
+    }
+}
+
+/// The summary lines: image, size, shading, counts and the frame time
+/// (frame, PNG encoding, Mpixels/s).
+fn summary(
+    a: &RenderArgs,
+    opt: &Options,
+    st: &Stats,
+    shading: &str,
+    (frame_t, encode, mpix): (Duration, Duration, f64),
+) -> Vec<(String, Val)> {
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    let count = |n: u64| Val::Num(crate::num::Scalar::shown(&(n as f64)));
+    let label = if a.repeat > 1 {
+        format!("frame time (median of {})", a.repeat)
+    } else {
+        "frame time".to_string()
+    };
+    let time = format!(
+        "{:.2} ms ({mpix:.1} Mpixels/s); PNG encoding {:.2} ms",
+        ms(frame_t),
+        ms(encode)
+    );
+    vec![
+        (
+            "image".to_string(),
+            Val::text(a.output.display().to_string()),
+        ),
+        (
+            "size".to_string(),
+            Val::text(format!("{}x{}", opt.width, opt.height)),
+        ),
+        ("shading".to_string(), Val::text(shading)),
+        ("triangles drawn".to_string(), count(st.drawn)),
+        ("pixels shaded".to_string(), count(st.pixels_shaded)),
+        (label, Val::text(time)),
+    ]
+}
+
+/// The JSON's `stats`: the counters and the median times.
+fn stats_json(
+    a: &RenderArgs,
+    st: &Stats,
+    median: &Median<'_>,
+    encode: Duration,
+    mpix: f64,
+) -> serde_json::Value {
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    json!({
+        "triangles_in": st.tris_in, "culled": st.culled, "rejected": st.rejected,
+        "objects_rejected": st.objects_rejected, "objects_inside": st.objects_inside,
+        "clipped": st.clipped, "drawn": st.drawn, "no_pixels": st.no_pixels,
+        "pixels_shaded": st.pixels_shaded, "lighting_evaluations": st.lighting_evals,
+        "lights_skipped": st.lights_skipped, "specular_skipped": st.specular_skipped,
+        "frame_ms": ms(median(&|s| s.frame())), "geometry_ms": ms(median(&|s| s.geometry)),
+        "binning_ms": ms(median(&|s| s.binning)), "raster_ms": ms(median(&|s| s.raster)),
+        "shading_ms": ms(median(&|s| s.shading)), "bands_ms": ms(median(&|s| s.pass)), "png_ms": ms(encode),
+        "repeat": a.repeat, "mpixels_per_s": mpix,
     })
 }
 
@@ -274,8 +313,17 @@ fn v3(c: &[f32], at: usize) -> Vector3<f32> {
     Vector3::new(c[at], c[at + 1], c[at + 2])
 }
 
-/// The worked steps for pixel (x, y).
-pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
+/// The worked steps for pixel (x, y): which triangle covers it, the
+/// geometry that triangle went through ([`render::explain_geometry`]: the
+/// stages' own steps), its depth, barycentric weights, interpolation and
+/// lighting, and the pixel's colour.
+pub fn explain(
+    f: &Frame,
+    scene: &Scene,
+    opt: &Options,
+    (x, y): (u32, u32),
+    rec: &mut Recorder,
+) -> Result<()> {
     rec.section(Msg::SecPixel(x, y));
     let k = (y * f.width + x) as usize;
     let id = f.ids[k];
@@ -285,44 +333,64 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
                 .res("triangle", Val::text("none"))
                 .note(Msg::NoTriangle)
         });
-        return;
+        return Ok(());
     }
     let t = &f.tris[id as usize];
-    let c = &f.corners[id as usize];
     let obj = &scene.objects[t.obj as usize];
     rec.step(|| {
-        let mut s = Step::new(Msg::WhichTriangle, Msg::FEdges)
+        Step::new(Msg::WhichTriangle, Msg::FEdges)
             .val("object", Val::text(obj.name.clone()))
-            .val("polygon face", Val::text(t.face.to_string()));
-        for (n, v) in t.verts.iter().enumerate() {
-            s = s.val(format!("screen vertex {n} (x, y)"), Val::vec2(&v.x, &v.y));
-        }
-        s.res("triangle", Val::text(format!("#{id}")))
+            .val(
+                "polygon face",
+                Val::text(obj.tris.face[t.src as usize].to_string()),
+            )
+            .val("object's triangle", Val::text(t.src.to_string()))
+            .res("triangle", Val::text(format!("#{id}")))
     });
-    let l = t.lambda(x, y);
-    let m = t.mu(x, y);
-    let z = t.depth(x, y);
+    let g = render::explain_geometry(scene, opt, f, id, rec)?;
+    rec.section(Msg::SecPixel(x, y));
+    let (l, m, z) = (t.lambda(x, y), t.mu(x, y), t.depth(x, y));
+    let zs = g.verts.map(|v| v.z);
     rec.step(|| {
         Step::new(Msg::Depth, Msg::FDepth)
-            .val(
-                "z at the vertices",
-                Val::vec3(&Vector3::new(t.verts[0].z, t.verts[1].z, t.verts[2].z)),
-            )
+            .val("z at the vertices", Val::vec3(&Vector3::from(zs)))
             .res("z", Val::num(&z))
             .note(Msg::Nearest)
     });
     rec.step(|| {
         Step::new(Msg::Barycentric, Msg::FBarycentric)
-            .val("λ", Val::vec3(&Vector3::new(l[0], l[1], l[2])))
-            .val(
-                "1/w",
-                Val::vec3(&Vector3::new(t.inv_w[0], t.inv_w[1], t.inv_w[2])),
-            )
-            .res("μ", Val::vec3(&Vector3::new(m[0], m[1], m[2])))
+            .val("λ", Val::vec3(&Vector3::from(l)))
+            .val("1/w", Val::vec3(&Vector3::from(t.inv_w)))
+            .res("μ", Val::vec3(&Vector3::from(m)))
     });
+    shading(f, id, (x, y), m, rec);
+    rec.section(Msg::SecPixel(x, y));
+    let c = &f.corners[id as usize];
+    let px = &f.rgb[3 * k..3 * k + 3];
+    let col = render::pixel_color(t, c, x, y, &f.looks, f.ortho, &mut NoTrace);
+    rec.step(|| {
+        Step::new(Msg::PixelColour, Msg::FByte)
+            .val("C", Val::vec3(&Vector3::from(col)))
+            .res(
+                "RGB",
+                Val::text(format!("({}, {}, {})", px[0], px[1], px[2])),
+            )
+    });
+    Ok(())
+}
+
+/// The shading steps of pixel (x, y) of triangle `id` with perspective
+/// weights `m`: flat, the face's lighting; Gouraud, each vertex's and the
+/// interpolation; Phong, the interpolated N, P, C and the pixel's lighting.
+fn shading(f: &Frame, id: u32, (x, y): (u32, u32), m: [f32; 3], rec: &mut Recorder) {
+    let (t, c) = (&f.tris[id as usize], &f.corners[id as usize]);
     let at = |i: usize| m[0] * c[0][i] + m[1] * c[1][i] + m[2] * c[2][i];
     let look = &f.looks[t.obj as usize];
     let (mat, lights) = (&look.material, &look.lights);
+    let light = |corner: &Corner, rec: &mut Recorder| {
+        let s = [corner[9], corner[10], corner[11]];
+        render::light_at(mat, lights, s, v3(corner, 3), v3(corner, 6), f.ortho, rec);
+    };
     match look.shading {
         Shading::Flat => {
             rec.step(|| {
@@ -332,28 +400,12 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
                     .val("surface colour", Val::vec3(&v3(&c[0], 9)))
             });
             rec.section(Msg::SecLightFace);
-            render::light_at(
-                mat,
-                lights,
-                [c[0][9], c[0][10], c[0][11]],
-                v3(&c[0], 3),
-                v3(&c[0], 6),
-                f.ortho,
-                rec,
-            );
+            light(&c[0], rec);
         }
         Shading::Gouraud => {
             for (n, corner) in c.iter().enumerate() {
                 rec.section(Msg::SecLightVertex(n));
-                render::light_at(
-                    mat,
-                    lights,
-                    [corner[9], corner[10], corner[11]],
-                    v3(corner, 3),
-                    v3(corner, 6),
-                    f.ortho,
-                    rec,
-                );
+                light(corner, rec);
             }
             rec.section(Msg::SecPixel(x, y));
             rec.step(|| {
@@ -377,31 +429,12 @@ pub fn explain(f: &Frame, scene: &Scene, x: u32, y: u32, rec: &mut Recorder) {
                     "N₀, N₁, N₂",
                     Val::List(c.iter().map(|k| Val::vec3(&v3(k, 3))).collect()),
                 )
-                .res("N", Val::vec3(&Vector3::new(n[0], n[1], n[2])))
-                .res("P (eye space)", Val::vec3(&Vector3::new(p[0], p[1], p[2])))
-                .res("C", Val::vec3(&Vector3::new(col[0], col[1], col[2])))
+                .res("N", Val::vec3(&Vector3::from(n)))
+                .res("P (eye space)", Val::vec3(&Vector3::from(p)))
+                .res("C", Val::vec3(&Vector3::from(col)))
             });
             rec.section(Msg::SecLightPixel);
             render::pixel_color(t, c, x, y, &f.looks, f.ortho, rec);
         }
     }
-    rec.section(Msg::SecPixel(x, y));
-    let px = &f.rgb[3 * k..3 * k + 3];
-    let col = render::pixel_color(
-        t,
-        c,
-        x,
-        y,
-        &f.looks,
-        f.ortho,
-        &mut crate::stages::trace::NoTrace,
-    );
-    rec.step(|| {
-        Step::new(Msg::PixelColour, Msg::FByte)
-            .val("C", Val::vec3(&Vector3::new(col[0], col[1], col[2])))
-            .res(
-                "RGB",
-                Val::text(format!("({}, {}, {})", px[0], px[1], px[2])),
-            )
-    });
 }

@@ -7,8 +7,10 @@ use crate::input::scene::{Colors, Normals, Object, Scene, Shading};
 use crate::num::Fast32;
 use crate::render::raster::{self, ScreenVert, Tri, BAND};
 use crate::stages::lighting::{self, Light, LightKind, Material};
-use crate::stages::trace::NoTrace;
-use crate::stages::window::Window;
+use crate::stages::trace::{NoTrace, Trace};
+use crate::stages::window::{self, Window};
+use crate::stages::{camera, clip, projection};
+use multiversion::multiversion;
 use nalgebra::{Matrix3, Matrix4, Vector3, Vector4};
 use rayon::prelude::*;
 use std::time::Instant;
@@ -51,29 +53,16 @@ impl VertBufs {
 
 /// Everything the triangle loop needs about one object.
 pub(super) struct Prep<'a> {
-    obj: &'a Object,
-    /// Model → clip (clip-space positions are made again where a triangle
-    /// is clipped, rather than kept for every vertex).
-    c32: Matrix4<f32>,
+    pub(super) obj: &'a Object,
+    /// The per-vertex transforms (clip-space positions are made again
+    /// where a triangle is clipped, rather than kept for every vertex).
+    pub(super) x: VertXf<'a>,
     v: &'a VertBufs,
     lit: Option<Vec<[f32; 3]>>,
     closed: bool,
     pub(super) material: Material<Fast32>,
     pub(super) lights: Vec<Light<Fast32>>,
     pub(super) shading: Shading,
-}
-
-/// Whether the geometry loops take their AVX2 compilation: the CPU has
-/// AVX2 (and, in tests, the portable one was not asked for, to compare the
-/// two).
-#[cfg(target_arch = "x86_64")]
-#[inline]
-fn avx2() -> bool {
-    #[cfg(test)]
-    if tests::PORTABLE.load(std::sync::atomic::Ordering::Relaxed) {
-        return false;
-    }
-    std::arch::is_x86_feature_detected!("avx2")
 }
 
 /// Vertices per parallel block of the per-vertex work.
@@ -91,7 +80,7 @@ fn mul4(m: &Matrix4<f32>, p: [f32; 3]) -> [f32; 4] {
     [v.x, v.y, v.z, v.w]
 }
 
-fn v3(a: [f32; 3]) -> Vector3<f32> {
+pub(super) fn v3(a: [f32; 3]) -> Vector3<f32> {
     Vector3::new(a[0], a[1], a[2])
 }
 
@@ -117,18 +106,18 @@ enum NormalSrc<'a> {
 }
 
 /// The per-vertex transforms of an object.
-struct VertXf<'a> {
+pub(super) struct VertXf<'a> {
     /// Model → eye.
-    e32: Matrix4<f32>,
+    pub(super) e32: Matrix4<f32>,
     /// Model → clip.
-    c32: Matrix4<f32>,
+    pub(super) c32: Matrix4<f32>,
     /// The eye-space centre of the bounding box.
     centre: Vector3<f32>,
     /// The whole object is inside the view volume (all codes 0).
     inside: bool,
     win: &'a Window<f32>,
     /// Image width and height.
-    size: (f32, f32),
+    pub(super) size: (f32, f32),
     normals: NormalSrc<'a>,
 }
 
@@ -173,59 +162,33 @@ struct VertOut<'a> {
     vn: &'a mut [[f32; 3]],
 }
 
-/// [`vertices`] for the block of vertices `ps`, numbers from `first`.
-///
-/// On a CPU with AVX2 the same code, compiled a second time with AVX2
-/// enabled, is chosen at run time; the results are the same bits (no
-/// operation is fused or reordered).
+/// [`vertices`] for the block of vertices `ps`, numbers from `first`: per
+/// vertex [`vertex_clip`], and [`to_screen`] when its code is 0; the
+/// normals. Compiled for AVX2 and FMA too, chosen at run time (the same
+/// bits: no operation is fused or reordered).
+#[multiversion(targets("x86_64+avx2+fma"))]
 fn vertex_block(first: usize, ps: &[[f32; 3]], x: &VertXf, o: VertOut) -> f32 {
-    #[cfg(target_arch = "x86_64")]
-    if avx2() {
-        // SAFETY: the CPU has AVX2 (checked just above), the one feature
-        // `vertex_block_avx2` is compiled for.
-        return unsafe { vertex_block_avx2(first, ps, x, o) };
-    }
-    vertex_block_with(first, ps, x, o)
-}
-
-/// [`vertex_block_with`] compiled for AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-#[inline(never)]
-fn vertex_block_avx2(first: usize, ps: &[[f32; 3]], x: &VertXf, o: VertOut) -> f32 {
-    vertex_block_with(first, ps, x, o)
-}
-
-/// The body of [`vertex_block`]: groups of [`VL`] vertices side by side
-/// ([`vertex_lanes`], [`normal_lanes`]), the rest one at a time
-/// ([`vertex_one`], [`normal_one`]), with the same operations per vertex.
-#[inline(always)]
-fn vertex_block_with(first: usize, ps: &[[f32; 3]], x: &VertXf, mut o: VertOut) -> f32 {
     let mut far2 = 0.0f32;
-    let split = ps.len() - ps.len() % VL;
-    for (g, p) in ps[..split].chunks_exact(VL).enumerate() {
-        let p: &[[f32; 3]; VL] = p.try_into().expect("a group of VL vertices");
-        far2 = far2.max(vertex_lanes(g * VL, p, x, &mut o));
-    }
-    for (k, &p) in ps.iter().enumerate().skip(split) {
-        far2 = far2.max(vertex_one(k, p, x, &mut o));
+    for (k, &p) in ps.iter().enumerate() {
+        let (e, c, code) = vertex_clip(x, p, "", &mut NoTrace);
+        far2 = far2.max((e - x.centre).norm_squared());
+        o.ec[k] = EyeCode {
+            e: [e.x, e.y, e.z],
+            code: code as u32,
+        };
+        (o.ss[k], o.sn[k]) = if code == 0 {
+            to_screen(&c, x.win, x.size, "", &mut NoTrace)
+        } else {
+            (ScreenVert::default(), [0; 2])
+        };
     }
     match &x.normals {
         NormalSrc::None => {}
         NormalSrc::Model(ns, nmat) => {
             let ns = ns.get(first..).unwrap_or_default();
-            let n = ns.len().min(o.vn.len());
-            let split = n - n % VL;
-            for (ns, vn) in ns[..split]
-                .chunks_exact(VL)
-                .zip(o.vn[..split].chunks_exact_mut(VL))
-            {
-                let ns: &[[f32; 3]; VL] = ns.try_into().expect("a group of VL normals");
-                let vn: &mut [[f32; 3]; VL] = vn.try_into().expect("a group of VL normals");
-                *vn = normal_lanes(nmat, ns);
-            }
-            for (&n, o) in ns[split..n].iter().zip(&mut o.vn[split..n]) {
-                *o = normal_one(nmat, n);
+            for (&n, o) in ns.iter().zip(o.vn) {
+                let v = (nmat * v3(n)).normalize();
+                *o = [v.x, v.y, v.z];
             }
         }
         NormalSrc::Position(world, rot) => {
@@ -240,168 +203,54 @@ fn vertex_block_with(first: usize, ps: &[[f32; 3]], x: &VertXf, mut o: VertOut) 
     far2
 }
 
-/// Vertices side by side in the per-vertex loop (eight f32: one AVX
-/// register).
-const VL: usize = 8;
-
-/// The work of [`vertices`] for vertex `k` of a block at `p`, written into
-/// `o`; returns |e − centre|².
+/// Object point `p` through the stages up to its outcode: eye coordinates
+/// e = (V·M)·p ([`camera::eye_by_matrix`]), clip coordinates
+/// c = (P·V·M)·p ([`projection::to_clip`]) and the clip-space outcode
+/// ([`clip::outcode_clip`]; 0 untested when the object's box is inside).
 #[inline(always)]
-fn vertex_one(k: usize, p: [f32; 3], x: &VertXf, o: &mut VertOut) -> f32 {
-    let (w, h) = x.size;
-    let v = mul4(&x.e32, p);
-    let e = [v[0], v[1], v[2]];
-    let far2 = (v3(e) - x.centre).norm_squared();
-    let clip = mul4(&x.c32, p);
+pub(super) fn vertex_clip(
+    x: &VertXf,
+    p: [f32; 3],
+    name: &str,
+    tr: &mut impl Trace,
+) -> (Vector3<f32>, Vector4<f32>, u8) {
+    let p = v3(p);
+    let e = camera::eye_by_matrix(&x.e32, name, &p, tr);
+    let c = projection::to_clip(&x.c32, name, &p, tr);
     let code = if x.inside {
         0
     } else {
-        crate::stages::clip::outcode_clip_space(&Vector4::from(clip))
+        clip::outcode_clip(&c, name, tr)
     };
-    o.ec[k] = EyeCode {
-        e,
-        code: code as u32,
+    (e, c, code)
+}
+
+/// Clip coordinates to the screen: the perspective division
+/// ([`projection::divide`]), the window point, viewport and row from the
+/// top ([`window::to_pixel`]), and the position snapped to 1/256 pixel
+/// ([`window::snap_pixel`]).
+#[inline(always)]
+pub(super) fn to_screen(
+    c: &Vector4<f32>,
+    win: &Window<f32>,
+    (w, h): (f32, f32),
+    name: &str,
+    tr: &mut impl Trace,
+) -> (ScreenVert, [i64; 2]) {
+    let (n, inv_w) = projection::divide(c, name, tr);
+    let (x, y) = window::to_pixel(win, (&w, &h), name, (&n.x, &n.y), tr);
+    let s = window::snap_pixel((x, y), name, tr);
+    let v = ScreenVert {
+        x,
+        y,
+        z: n.z,
+        inv_w,
     };
-    (o.ss[k], o.sn[k]) = if code == 0 {
-        let s = to_screen(&clip, x.win, w, h);
-        (s, snap(&s))
-    } else {
-        (ScreenVert::default(), [0; 2])
-    };
-    far2
+    (v, s)
 }
-
-/// m·(p, 1) for [`VL`] points side by side, in the order of nalgebra's
-/// product ([`mul4`]): row r is ((m_r0·x + m_r1·y) + m_r2·z) + m_r3.
-#[inline(always)]
-fn mul4_lanes(m: &Matrix4<f32>, p: &[[f32; VL]; 3]) -> [[f32; VL]; 4] {
-    let mut out = [[0.0f32; VL]; 4];
-    for (r, out) in out.iter_mut().enumerate() {
-        let (a, b, c, d) = (m[(r, 0)], m[(r, 1)], m[(r, 2)], m[(r, 3)]);
-        for l in 0..VL {
-            out[l] = ((a * p[0][l] + b * p[1][l]) + c * p[2][l]) + d;
-        }
-    }
-    out
-}
-
-/// [`VL`] triples side by side: component c of triple l at [c][l].
-#[inline(always)]
-fn transpose3(t: &[[f32; 3]; VL]) -> [[f32; VL]; 3] {
-    let mut out = [[0.0f32; VL]; 3];
-    for l in 0..VL {
-        for c in 0..3 {
-            out[c][l] = t[l][c];
-        }
-    }
-    out
-}
-
-/// [`vertex_one`] for vertices k..k + [`VL`] side by side: the same
-/// operations on each (the products in [`mul4_lanes`]'s order, |e − c|²
-/// as ((dx² + dy²) + dz²), the outcode's comparisons, [`to_screen`] and
-/// [`snap`]), so every vertex gets the same bits. Returns the largest
-/// |e − centre|².
-#[inline(always)]
-fn vertex_lanes(k: usize, ps: &[[f32; 3]; VL], x: &VertXf, o: &mut VertOut) -> f32 {
-    let (w, h) = x.size;
-    let p = transpose3(ps);
-    let e = mul4_lanes(&x.e32, &p);
-    let c = mul4_lanes(&x.c32, &p);
-    let mut far2 = [0.0f32; VL];
-    for (l, f) in far2.iter_mut().enumerate() {
-        let d = [
-            e[0][l] - x.centre.x,
-            e[1][l] - x.centre.y,
-            e[2][l] - x.centre.z,
-        ];
-        *f = (d[0] * d[0] + d[1] * d[1]) + d[2] * d[2];
-    }
-    let mut code = [0u32; VL];
-    if !x.inside {
-        for (l, code) in code.iter_mut().enumerate() {
-            let (cw, nw) = (c[3][l], -c[3][l]);
-            for (axis, c) in c[..3].iter().enumerate() {
-                let v = c[l];
-                *code |= (u32::from(v < nw) << (2 * axis)) | (u32::from(v > cw) << (2 * axis + 1));
-            }
-        }
-    }
-    // [`to_screen`] and [`snap`], written out lane by lane.
-    let win = x.win;
-    let mut s = [[0.0f32; VL]; 4];
-    for l in 0..VL {
-        let inv_w = 1.0 / c[3][l];
-        let (nx, ny, nz) = (c[0][l] * inv_w, c[1][l] * inv_w, c[2][l] * inv_w);
-        let xp = win.left + (nx + 1.0) * 0.5 * win.width;
-        let yp = win.bottom + (ny + 1.0) * 0.5 * win.height;
-        let px = (xp - win.left) / win.width * w;
-        let py = (yp - win.bottom) / win.height * h;
-        (s[0][l], s[1][l], s[2][l], s[3][l]) = (px, h - py, nz, inv_w);
-    }
-    let mut sn = [[0i64; VL]; 2];
-    for (sn, s) in sn.iter_mut().zip(&s) {
-        for l in 0..VL {
-            let t = s[l] as f64 * (1i64 << raster::SUB) as f64;
-            sn[l] = (t + if t >= 0.0 { 0.5 } else { -0.5 }) as i64;
-        }
-    }
-    let (ec, ss, snp) = (
-        &mut o.ec[k..k + VL],
-        &mut o.ss[k..k + VL],
-        &mut o.sn[k..k + VL],
-    );
-    for l in 0..VL {
-        ec[l] = EyeCode {
-            e: [e[0][l], e[1][l], e[2][l]],
-            code: code[l],
-        };
-        (ss[l], snp[l]) = if code[l] == 0 {
-            let v = ScreenVert {
-                x: s[0][l],
-                y: s[1][l],
-                z: s[2][l],
-                inv_w: s[3][l],
-            };
-            (v, [sn[0][l], sn[1][l]])
-        } else {
-            (ScreenVert::default(), [0; 2])
-        };
-    }
-    far2.into_iter().fold(0.0, f32::max)
-}
-
-/// A unit eye-space normal: normalize(M⁻ᵀ·n), by nalgebra.
-#[inline(always)]
-fn normal_one(nmat: &Matrix3<f32>, n: [f32; 3]) -> [f32; 3] {
-    let v = (nmat * v3(n)).normalize();
-    [v.x, v.y, v.z]
-}
-
-/// [`normal_one`] for [`VL`] normals side by side, with nalgebra's
-/// operations in its order: v_r = (m_r0·x + m_r1·y) + m_r2·z, then
-/// v/√((v_x² + v_y²) + v_z²).
-#[inline(always)]
-fn normal_lanes(m: &Matrix3<f32>, ns: &[[f32; 3]; VL]) -> [[f32; 3]; VL] {
-    let n = transpose3(ns);
-    let mut v = [[0.0f32; VL]; 3];
-    for (r, v) in v.iter_mut().enumerate() {
-        let (a, b, c) = (m[(r, 0)], m[(r, 1)], m[(r, 2)]);
-        for l in 0..VL {
-            v[l] = (a * n[0][l] + b * n[1][l]) + c * n[2][l];
-        }
-    }
-    let mut out = [[0.0f32; 3]; VL];
-    for (l, out) in out.iter_mut().enumerate() {
-        let len = ((v[0][l] * v[0][l] + v[1][l] * v[1][l]) + v[2][l] * v[2][l]).sqrt();
-        *out = [v[0][l] / len, v[1][l] / len, v[2][l] / len];
-    }
-    out
-}
-
 pub(super) fn prepare<'a>(
     obj: &'a Object,
-    vs: &ViewSetup,
+    vs: &'a ViewSetup,
     scene_lights: &[Light<f32>],
     opt: &Options,
     stats: &mut Stats,
@@ -478,19 +327,16 @@ pub(super) fn prepare<'a>(
                 .cast(),
         ),
     };
-    let far2 = vertices(
-        &mesh.positions,
-        &VertXf {
-            e32,
-            c32,
-            centre,
-            inside,
-            win: &vs.win,
-            size: (opt.width as f32, opt.height as f32),
-            normals,
-        },
-        bufs,
-    );
+    let x = VertXf {
+        e32,
+        c32,
+        centre,
+        inside,
+        win: &vs.win,
+        size: (opt.width as f32, opt.height as f32),
+        normals,
+    };
+    let far2 = vertices(&mesh.positions, &x, bufs);
     let radius = far2.sqrt();
     let bufs: &'a VertBufs = bufs;
     let mut lights = Vec::new();
@@ -543,7 +389,7 @@ pub(super) fn prepare<'a>(
     };
     Some(Prep {
         obj,
-        c32,
+        x,
         v: bufs,
         lit,
         closed,
@@ -587,80 +433,13 @@ pub struct ChunkBuf {
     stats: Stats,
 }
 
-/// A clip-space vertex with its corner data.
-#[derive(Clone, Copy)]
-struct CV {
-    c: [f32; 4],
-    a: Corner,
-}
+/// A clip-space vertex (x, y, z, w) followed by its corner data, as
+/// [`clip::clip_polygon`] interpolates it.
+pub(super) type ClipVert = [f32; 16];
 
-/// A screen vertex snapped to 1/256 pixel ([`raster::snap`]).
-#[inline]
-fn snap(v: &ScreenVert) -> [i64; 2] {
-    [raster::snap(v.x), raster::snap(v.y)]
-}
-
-/// Signed distance to clip plane `bit` (≥ 0 inside): w + x for x ≥ −w, w − x for x ≤ w, …
-#[inline]
-fn plane_dist(c: &[f32; 4], bit: usize) -> f32 {
-    let v = c[bit / 2];
-    if bit.is_multiple_of(2) {
-        c[3] + v
-    } else {
-        c[3] - v
-    }
-}
-
-/// Clips a polygon against the planes whose bits are in `mask`
-/// (Sutherland–Hodgman in homogeneous space: the intersection with a plane is
-/// at t = d0/(d0 − d1) along the edge, and attributes are interpolated with
-/// the same t, which is right because they are linear in clip space).
-fn clip_poly(poly: &mut Vec<CV>, mask: u8, tmp: &mut Vec<CV>) {
-    for bit in 0..6 {
-        if mask & (1 << bit) == 0 {
-            continue;
-        }
-        tmp.clear();
-        for k in 0..poly.len() {
-            let (p, q) = (poly[k], poly[(k + 1) % poly.len()]);
-            let (dp, dq) = (plane_dist(&p.c, bit), plane_dist(&q.c, bit));
-            if dp >= 0.0 {
-                tmp.push(p);
-            }
-            if (dp >= 0.0) != (dq >= 0.0) {
-                let t = dp / (dp - dq);
-                let mut r = p;
-                for i in 0..4 {
-                    r.c[i] = p.c[i] + t * (q.c[i] - p.c[i]);
-                }
-                for i in 0..12 {
-                    r.a[i] = p.a[i] + t * (q.a[i] - p.a[i]);
-                }
-                tmp.push(r);
-            }
-        }
-        std::mem::swap(poly, tmp);
-        if poly.len() < 3 {
-            return;
-        }
-    }
-}
-
-/// Clip space → screen (pixels, rows from the top): perspective divide, the
-/// window point, and the viewport formula of `window::viewport_xy`.
-#[inline]
-fn to_screen(c: &[f32; 4], win: &Window<f32>, w: f32, h: f32) -> ScreenVert {
-    let inv_w = 1.0 / c[3];
-    let (nx, ny, nz) = (c[0] * inv_w, c[1] * inv_w, c[2] * inv_w);
-    let xp = win.left + (nx + 1.0) * 0.5 * win.width;
-    let yp = win.bottom + (ny + 1.0) * 0.5 * win.height;
-    let (px, py) = crate::stages::window::viewport_xy(win, (&w, &h), (&xp, &yp));
-    ScreenVert {
-        x: px,
-        y: h - py,
-        z: nz,
-        inv_w,
-    }
+/// The clip coordinates of a [`ClipVert`].
+pub(super) fn clip_xyzw(v: &ClipVert) -> Vector4<f32> {
+    Vector4::new(v[0], v[1], v[2], v[3])
 }
 
 /// The outcode and facing tests of triangle `idx` of an object: `None`
@@ -668,7 +447,7 @@ fn to_screen(c: &[f32; 4], win: &Window<f32>, w: f32, h: f32) -> ScreenVert {
 /// back face of a closed mesh), counted in `st`; else the planes it crosses
 /// and whether it is a back face (of an open mesh).
 #[inline(always)]
-fn test(
+pub(super) fn test(
     p: &Prep,
     idx: [usize; 3],
     vs: &ViewSetup,
@@ -700,7 +479,7 @@ fn test(
 /// flat: once per face, at the centroid with the polygon's normal; Gouraud:
 /// per vertex (from the object's lit vertices when it has them); Phong:
 /// none (lit per pixel). Lighting evaluations are counted in `st`.
-fn corners(
+pub(super) fn corners(
     p: &Prep,
     idx: [usize; 3],
     face: u32,
@@ -814,49 +593,8 @@ fn corner_evals(p: &Prep) -> u64 {
 /// On a CPU with AVX2 the same code, compiled a second time with AVX2
 /// enabled, is chosen at run time; the results are the same bits.
 #[allow(clippy::too_many_arguments)]
+#[multiversion(targets("x86_64+avx2+fma"))]
 fn first_pass(
-    p: &Prep,
-    oi: u32,
-    first: usize,
-    tris: &[[u32; 3]],
-    faces: &[u32],
-    vs: &ViewSetup,
-    cull: bool,
-    opt: &Options,
-    buf: &mut ChunkBuf,
-) {
-    #[cfg(target_arch = "x86_64")]
-    if avx2() {
-        // SAFETY: the CPU has AVX2 (checked just above), the one feature
-        // `first_pass_avx2` is compiled for.
-        return unsafe { first_pass_avx2(p, oi, first, tris, faces, vs, cull, opt, buf) };
-    }
-    first_pass_with(p, oi, first, tris, faces, vs, cull, opt, buf)
-}
-
-/// [`first_pass_with`] compiled for AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-#[allow(clippy::too_many_arguments)]
-#[inline(never)]
-fn first_pass_avx2(
-    p: &Prep,
-    oi: u32,
-    first: usize,
-    tris: &[[u32; 3]],
-    faces: &[u32],
-    vs: &ViewSetup,
-    cull: bool,
-    opt: &Options,
-    buf: &mut ChunkBuf,
-) {
-    first_pass_with(p, oi, first, tris, faces, vs, cull, opt, buf)
-}
-
-/// The body of [`first_pass`].
-#[allow(clippy::too_many_arguments)]
-#[inline(always)]
-fn first_pass_with(
     p: &Prep,
     oi: u32,
     first: usize,
@@ -893,7 +631,7 @@ fn first_pass_with(
                 }
             }
         } else {
-            let tri = (idx, face, oi);
+            let tri = (idx, face, oi, (first + n) as u32);
             clip_tri(
                 p,
                 tri,
@@ -916,6 +654,27 @@ fn first_pass_with(
     buf.stats = st;
 }
 
+/// The polygon of triangle `idx` (with corners `cs`) clipped against the
+/// planes `or` it crosses: its vertices' clip coordinates
+/// ([`projection::to_clip`]) followed by their corners, through
+/// [`clip::clip_polygon`], left in `poly`.
+pub(super) fn clipped_polygon(
+    p: &Prep,
+    idx: [usize; 3],
+    cs: &[Corner; 3],
+    or: u8,
+    (poly, tmp): (&mut Vec<ClipVert>, &mut Vec<ClipVert>),
+    tr: &mut impl Trace,
+) {
+    poly.clear();
+    poly.extend((0..3).map(|k| {
+        let q = v3(p.obj.mesh.positions[idx[k]]);
+        let c = projection::to_clip(&p.x.c32, "", &q, &mut NoTrace);
+        std::array::from_fn(|i| if i < 4 { c[i] } else { cs[k][i - 4] })
+    }));
+    clip::clip_polygon(poly, or, tmp, tr);
+}
+
 /// A triangle that crosses the clip planes `or` (vertices `idx` of polygon
 /// `face` of object `oi`): lit, clipped, its fan set up into `buf.clipped`.
 /// Returns how many of the fan's triangles cover a pixel centre. (Not
@@ -924,32 +683,28 @@ fn first_pass_with(
 #[inline(never)]
 fn clip_tri(
     p: &Prep,
-    (idx, face, oi): ([usize; 3], u32, u32),
+    (idx, face, oi, src): ([usize; 3], u32, u32, u32),
     (or, back): (u8, bool),
     vs: &ViewSetup,
     opt: &Options,
     buf: &mut ChunkBuf,
     st: &mut Stats,
-    (poly, tmp): (&mut Vec<CV>, &mut Vec<CV>),
+    (poly, tmp): (&mut Vec<ClipVert>, &mut Vec<ClipVert>),
 ) -> u32 {
     let (w, h) = (opt.width, opt.height);
     st.clipped += 1;
     let cs = corners(p, idx, face, back, vs.ortho, st);
     let before = buf.clipped.len();
-    poly.clear();
-    poly.extend((0..3).map(|k| CV {
-        c: mul4(&p.c32, p.obj.mesh.positions[idx[k]]),
-        a: cs[k],
-    }));
-    clip_poly(poly, or, tmp);
+    clipped_polygon(p, idx, &cs, or, (poly, tmp), &mut NoTrace);
+    let size = (w as f32, h as f32);
     for k in 1..poly.len().saturating_sub(1) {
-        let sv =
-            [poly[0], poly[k], poly[k + 1]].map(|v| to_screen(&v.c, &vs.win, w as f32, h as f32));
-        match raster::setup(sv, w, h) {
+        let tri = [poly[0], poly[k], poly[k + 1]];
+        let sv = tri.map(|v| to_screen(&clip_xyzw(&v), &vs.win, size, "", &mut NoTrace));
+        match raster::setup_of(sv, w, h) {
             Some((mut t, swap)) => {
                 t.obj = oi;
-                t.face = face;
-                let (a, b, c) = (poly[0].a, poly[k].a, poly[k + 1].a);
+                t.src = src;
+                let [a, b, c] = tri.map(|v| -> Corner { std::array::from_fn(|i| v[i + 4]) });
                 buf.clipped
                     .push((t, if swap { [a, c, b] } else { [a, b, c] }));
                 st.drawn += 1;
@@ -978,27 +733,8 @@ struct Dest<'t> {
 /// On a CPU with AVX2 the same code, compiled a second time with AVX2
 /// enabled (wider registers for the f64 planes), is chosen at run time;
 /// the results are the same bits (no operation is fused or reordered).
+#[multiversion(targets("x86_64+avx2+fma"))]
 fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut ChunkBuf, d: Dest) {
-    #[cfg(target_arch = "x86_64")]
-    if avx2() {
-        // SAFETY: the CPU has AVX2 (checked just above), the one feature
-        // `second_pass_avx2` is compiled for.
-        return unsafe { second_pass_avx2(p, oi, vs, opt, buf, d) };
-    }
-    second_pass_with(p, oi, vs, opt, buf, d)
-}
-
-/// [`second_pass_with`] compiled for AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-#[inline(never)]
-fn second_pass_avx2(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut ChunkBuf, d: Dest) {
-    second_pass_with(p, oi, vs, opt, buf, d)
-}
-
-/// The body of [`second_pass`].
-#[inline(always)]
-fn second_pass_with(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut ChunkBuf, d: Dest) {
     let (w, h) = (opt.width, opt.height);
     let bands = (h as usize).div_ceil(BAND);
     buf.bins.resize_with(bands, Vec::new);
@@ -1046,7 +782,7 @@ fn second_pass_with(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut 
         corners_into(p, idx, face, kept.back, vs.ortho, &mut st, c, slot);
         raster::setup_into(&idx.map(|i| p.v.screen[i]), &s, tri);
         tri.obj = oi;
-        tri.face = face;
+        tri.src = kept.tri;
         finish(n, phong, (tri, c, pl), &mut buf.bins);
         n += 1;
     }
@@ -1192,110 +928,6 @@ fn face_normal_eye(p: &Prep, f: usize) -> Option<Vector3<f32>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::num::rng::SplitMix64;
-    use std::sync::atomic::{AtomicBool, Ordering};
-
-    /// Set: the geometry loops take their portable compilation even on a
-    /// CPU with AVX2 (either gives the same bits, so other tests running
-    /// meanwhile are not affected).
-    pub(super) static PORTABLE: AtomicBool = AtomicBool::new(false);
-
-    fn uniform(rng: &mut SplitMix64, lo: f32, hi: f32) -> f32 {
-        lo + (hi - lo) * (rng.below(1 << 24) as f32 / (1 << 24) as f32)
-    }
-
-    /// A perspective view of points around z = −3, some of them off the
-    /// view volume and behind the eye.
-    fn view(rng: &mut SplitMix64) -> (Matrix4<f64>, Matrix4<f64>, Window<f32>) {
-        let ax = Vector3::new(
-            uniform(rng, -1.0, 1.0) as f64,
-            uniform(rng, -1.0, 1.0) as f64,
-            1.0,
-        )
-        .normalize();
-        let rot = Matrix4::from_axis_angle(
-            &nalgebra::Unit::new_normalize(ax),
-            uniform(rng, 0.0, 6.0) as f64,
-        );
-        let eye = Matrix4::new_translation(&Vector3::new(0.1, -0.2, -3.0)) * rot;
-        let win = crate::stages::window::window(&45.0, &1.25, &0.1, "near", &mut NoTrace).unwrap();
-        let clip = crate::stages::projection::perspective_matrix(&win, &0.1, &100.0);
-        (eye, clip, super::super::win32(&win))
-    }
-
-    #[test]
-    fn vertices_side_by_side_match_one_at_a_time() {
-        // Every output of the eight-wide loop against the one-vertex code
-        // (nalgebra's products, `to_screen`, `snap`), bit for bit.
-        let mut rng = SplitMix64::new(5);
-        for round in 0..40 {
-            let (eye, clip, win) = view(&mut rng);
-            let n = 8 * 12 + round % 8;
-            let spread = if round % 2 == 0 { 1.5 } else { 6.0 };
-            let ps: Vec<[f32; 3]> = (0..n)
-                .map(|_| [(); 3].map(|_| uniform(&mut rng, -spread, spread)))
-                .collect();
-            let ns: Vec<[f32; 3]> = ps
-                .iter()
-                .map(|p| {
-                    let v = v3(*p).normalize();
-                    [v.x, v.y, v.z]
-                })
-                .collect();
-            let nmat: Matrix3<f32> = eye.fixed_view::<3, 3>(0, 0).into_owned().cast();
-            let x = VertXf {
-                e32: eye.cast(),
-                c32: (clip * eye).cast(),
-                centre: Vector3::new(0.3, -0.1, -2.9),
-                inside: round % 4 == 1,
-                win: &win,
-                size: (640.0, 480.0),
-                normals: NormalSrc::Model(&ns, nmat),
-            };
-            let mut got = (
-                vec![EyeCode::default(); n],
-                vec![ScreenVert::default(); n],
-                vec![[0i64; 2]; n],
-                vec![[0.0f32; 3]; n],
-            );
-            let out = VertOut {
-                ec: &mut got.0,
-                ss: &mut got.1,
-                sn: &mut got.2,
-                vn: &mut got.3,
-            };
-            let far = vertex_block_with(0, &ps, &x, out);
-            let mut want = got.clone();
-            let mut o = VertOut {
-                ec: &mut want.0,
-                ss: &mut want.1,
-                sn: &mut want.2,
-                vn: &mut want.3,
-            };
-            let mut far_want = 0.0f32;
-            for (k, &p) in ps.iter().enumerate() {
-                far_want = far_want.max(vertex_one(k, p, &x, &mut o));
-                o.vn[k] = normal_one(&nmat, ns[k]);
-            }
-            assert_eq!(far.to_bits(), far_want.to_bits(), "round {round}");
-            let bits = |v: &[f32]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
-            let mut codes = 0;
-            for k in 0..n {
-                let (g, w) = (got.0[k], want.0[k]);
-                assert_eq!((bits(&g.e), g.code), (bits(&w.e), w.code), "{round}/{k}");
-                let (g, w) = (got.1[k], want.1[k]);
-                let sv = |s: ScreenVert| bits(&[s.x, s.y, s.z, s.inv_w]);
-                assert_eq!(sv(g), sv(w), "round {round}, vertex {k}");
-                assert_eq!(got.2[k], want.2[k], "round {round}, vertex {k}");
-                assert_eq!(bits(&got.3[k]), bits(&want.3[k]), "{round}/{k}");
-                codes += usize::from(want.0[k].code != 0);
-            }
-            // Both kinds of vertex were met (inside and off the volume).
-            if !x.inside && spread > 2.0 {
-                assert!(codes > 0 && codes < n, "round {round}: {codes} of {n}");
-            }
-        }
-    }
 
     #[test]
     fn phong_corners_are_the_normal_position_and_colour() {
@@ -1342,51 +974,5 @@ mod tests {
             }
         }
         assert!(checked > 100, "{checked}");
-    }
-
-    /// Renders the scene file `name` (under problems/render) with the
-    /// geometry loops at their AVX2 or portable compilation.
-    fn render_with(name: &str, portable: bool) -> crate::render::Frame {
-        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("problems/render");
-        let s = Scene::read(&dir.join(name)).unwrap();
-        PORTABLE.store(portable, Ordering::Relaxed);
-        let f = crate::render::render(&s, &crate::render::Options::of(&s));
-        PORTABLE.store(false, Ordering::Relaxed);
-        f.unwrap()
-    }
-
-    #[test]
-    fn the_geometry_stage_gives_the_same_bits_at_either_compilation() {
-        // On an AVX2 machine the portable loops run nowhere else; elsewhere
-        // this compares a path with itself. Flat, Gouraud and Phong scenes,
-        // clipped triangles among them.
-        for name in [
-            "cone-flat.toml",
-            "landscape-gouraud.toml",
-            "spheres-flat-gouraud.toml",
-            "sphere-3colors-20.toml",
-            "camera-triangle-scene.toml",
-        ] {
-            let (a, b) = (render_with(name, false), render_with(name, true));
-            assert!(a.stats.drawn > 0, "{name}");
-            assert_eq!(a.tris, b.tris, "{name}");
-            assert_eq!(
-                a.corners
-                    .concat()
-                    .concat()
-                    .iter()
-                    .map(|x| x.to_bits())
-                    .collect::<Vec<_>>(),
-                b.corners
-                    .concat()
-                    .concat()
-                    .iter()
-                    .map(|x| x.to_bits())
-                    .collect::<Vec<_>>(),
-                "{name}"
-            );
-            assert_eq!(a.scratch.planes, b.scratch.planes, "{name}");
-            assert_eq!((&a.rgb, &a.ids), (&b.rgb, &b.ids), "{name}");
-        }
     }
 }

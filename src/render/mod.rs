@@ -20,7 +20,7 @@ use crate::error::{Error, Result};
 use crate::input::scene::{Normals, Scene, Shading, View};
 use crate::num::Fast32;
 use crate::stages::lighting::{Light, Material};
-use crate::stages::trace::NoTrace;
+use crate::stages::trace::{NoTrace, Trace};
 use crate::stages::window::Window;
 use nalgebra::{Matrix4, Vector3};
 use raster::{Tri, BAND};
@@ -29,10 +29,12 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
+mod explain;
 mod geometry;
 pub mod raster;
 mod shade;
 
+pub use explain::{explain_geometry, PixelGeometry};
 use geometry::{prepare, triangles};
 use shade::Planes;
 pub use shade::{light_at, phong_attributes, pixel_color, to_u8};
@@ -229,6 +231,19 @@ pub struct ViewSetup {
 /// its window, or the tilt rotation and an orthographic window of W × H
 /// units centred on the origin (1 unit = 1 pixel).
 pub fn view_setup(scene: &Scene, w: u32, h: u32) -> Result<ViewSetup> {
+    view_setup_traced(scene, w, h, &mut NoTrace)
+}
+
+/// [`view_setup`] with its steps: the view matrix
+/// (`camera::view_matrix`), the window (`window::window`) and the
+/// projection matrix (`projection::projection_step`).
+pub fn view_setup_traced(scene: &Scene, w: u32, h: u32, tr: &mut impl Trace) -> Result<ViewSetup> {
+    let vs = view_of(scene, w, h, tr)?;
+    crate::stages::projection::projection_step(&vs.clip_from_eye, vs.ortho, tr);
+    Ok(vs)
+}
+
+fn view_of(scene: &Scene, w: u32, h: u32, tr: &mut impl Trace) -> Result<ViewSetup> {
     let (wf, hf) = (w as f64, h as f64);
     match &scene.view {
         View::Tilt { x, y } => {
@@ -259,9 +274,9 @@ pub fn view_setup(scene: &Scene, w: u32, h: u32) -> Result<ViewSetup> {
             far,
         } => {
             let b = crate::stages::camera::basis(camera, &mut NoTrace)?;
-            let v = crate::stages::camera::view_matrix(&b, &camera.pe, &mut NoTrace)?;
+            let v = crate::stages::camera::view_matrix(&b, &camera.pe, tr)?;
             let aspect = aspect.unwrap_or(wf / hf);
-            let win = crate::stages::window::window(fovy, &aspect, near, "near", &mut NoTrace)?;
+            let win = crate::stages::window::window(fovy, &aspect, near, "near", tr)?;
             let p = crate::stages::projection::perspective_matrix(&win, near, far);
             Ok(ViewSetup {
                 eye_from_world: v,

@@ -8,8 +8,12 @@
 //! or left edge: two triangles sharing an edge never both cover a pixel on
 //! it and never both miss it, because the edge functions are exact integers.
 
-/// Sub-pixel bits of the fixed-point screen coordinates.
-pub const SUB: i64 = 8;
+use crate::stages::window::snap;
+use multiversion::multiversion;
+
+/// Sub-pixel bits of the fixed-point screen coordinates (the stage's
+/// [`crate::stages::window::SUBPIXEL_BITS`]).
+pub const SUB: i64 = crate::stages::window::SUBPIXEL_BITS;
 const ONE: i64 = 1 << SUB;
 const HALF: i64 = ONE / 2;
 
@@ -54,19 +58,14 @@ pub struct Tri {
     pub l2: [f32; 3],
     /// 1/w at the vertices.
     pub inv_w: [f32; 3],
-    /// Which object and polygon face it came from.
+    /// Which object it came from.
     pub obj: u32,
-    /// See `obj`.
-    pub face: u32,
+    /// Which of the object's triangles (its number in the object's
+    /// triangle list; several set-up triangles share it when it was
+    /// clipped).
+    pub src: u32,
     /// The screen vertices (for explaining a pixel).
     pub verts: [ScreenVert; 3],
-}
-
-/// v in 1/256 pixel, rounded half away from zero (casts, no libm call).
-#[inline]
-pub fn snap(v: f32) -> i64 {
-    let t = v as f64 * ONE as f64;
-    (t + if t >= 0.0 { 0.5 } else { -0.5 }) as i64
 }
 
 /// A triangle's vertices snapped to 1/256 pixel, wound positively, with the
@@ -143,6 +142,13 @@ pub fn setup(v: [ScreenVert; 3], w: u32, h: u32) -> Option<(Tri, bool)> {
     Some((setup_snapped(v, &s), s.swap))
 }
 
+/// [`setup`] of vertices each given with its position snapped by
+/// [`snap`] (x, y).
+pub fn setup_of(v: [(ScreenVert, [i64; 2]); 3], w: u32, h: u32) -> Option<(Tri, bool)> {
+    let s = snap_box_of(v.map(|p| p.1), w, h)?;
+    Some((setup_snapped(v.map(|p| p.0), &s), s.swap))
+}
+
 /// The second half of [`setup`]: edge functions and planes of a triangle
 /// that [`snap_box`] accepted (`v` as given to it, not yet swapped).
 pub fn setup_snapped(v: [ScreenVert; 3], s: &Snapped) -> Tri {
@@ -152,7 +158,7 @@ pub fn setup_snapped(v: [ScreenVert; 3], s: &Snapped) -> Tri {
 }
 
 /// [`setup_snapped`] written straight into `t` (every field but `obj` and
-/// `face`), so that the geometry stage sets up a triangle in its place in
+/// `src`), so that the geometry stage sets up a triangle in its place in
 /// the frame's array without a copy. Edge k runs from vertex k+1 to vertex
 /// k+2: a_k = −dy, b_k = dx, c_k = dy·x_i − dx·y_i (less 1 off the
 /// top-left edges); the barycentric plane of vertex k over pixel indices
@@ -265,43 +271,10 @@ impl Tri {
 /// its triangles in order; for every pixel the nearest triangle wins
 /// (strictly nearer, so the first drawn keeps a tie).
 ///
-/// On a CPU with AVX2 the same code, compiled a second time with AVX2
-/// enabled (a block of eight columns in one register), is chosen at run
-/// time; the results are the same bits.
+/// Compiled for AVX2 and FMA too (a block of eight columns in one
+/// register), chosen at run time; the results are the same bits.
+#[multiversion(targets("x86_64+avx2+fma"))]
 pub fn visibility_band(
-    tris: &[Tri],
-    bin: &[u32],
-    r0: u32,
-    w: usize,
-    dz: &mut [f32],
-    id: &mut [u32],
-) {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has AVX2 (checked just above), the one feature
-        // `visibility_band_avx2` is compiled for.
-        return unsafe { visibility_band_avx2(tris, bin, r0, w, dz, id) };
-    }
-    visibility_band_with(tris, bin, r0, w, dz, id)
-}
-
-/// [`visibility_band_with`] compiled for AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn visibility_band_avx2(
-    tris: &[Tri],
-    bin: &[u32],
-    r0: u32,
-    w: usize,
-    dz: &mut [f32],
-    id: &mut [u32],
-) {
-    visibility_band_with(tris, bin, r0, w, dz, id)
-}
-
-/// The body of [`visibility_band`].
-#[inline(always)]
-fn visibility_band_with(
     tris: &[Tri],
     bin: &[u32],
     r0: u32,
@@ -730,10 +703,9 @@ mod tests {
         tris
     }
 
-    /// The band pass as the renderer calls it (AVX2 when the CPU has it)
-    /// and its portable body, so a test checks both compilations.
+    /// The band pass as the renderer calls it.
     type Pass = fn(&[Tri], &[u32], u32, usize, &mut [f32], &mut [u32]);
-    const PASSES: [Pass; 2] = [visibility_band, visibility_band_with];
+    const PASSES: [Pass; 1] = [visibility_band];
 
     #[test]
     fn band_raster_covers_exactly_the_pixels_covers_accepts() {

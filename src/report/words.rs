@@ -7,6 +7,7 @@ use crate::msg::{LightPart, Msg, SpotZone, Term, Trivial};
 
 mod drawn;
 pub mod errors;
+mod pixel;
 
 /// The words of `m` in `lang`.
 pub fn words(m: &Msg, lang: Lang) -> String {
@@ -44,6 +45,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             }
         }
         Msg::DrawnTitle(t) => drawn::title(*t, lang),
+        Msg::Pixel(p) => pixel::words(p, lang),
         Msg::Statement(s) => drawn::statement(s, lang),
         Msg::ErrFewDistinct(topic, level, n) => {
             if id {
@@ -893,6 +895,7 @@ mod tests {
         v.push(Msg::Written("as for B".into(), Some("seperti B".into())));
         v.push(Msg::At("p.toml:3:7".into(), Box::new(Msg::ErrUpZero)));
         v.extend(errors::tests::every_error().into_iter().map(Msg::Err));
+        v.extend(pixel::every().into_iter().map(Msg::Pixel));
         v
     }
 
@@ -1104,6 +1107,7 @@ mod tests {
             | ErrPointNeedsViewport
             | ErrFar(..)
             | DrawnTitle(_)
+            | Pixel(_)
             | Statement(_)
             | ErrFewDistinct(..)
             | ErrHtmlCommand => {}

@@ -3,11 +3,11 @@
 //! eye coordinates), and eye coordinates of points.
 
 use crate::error::{Error, Result};
-use crate::msg::Msg;
+use crate::msg::{Msg, PixelMsg};
 use crate::num::vec::{self, V3};
 use crate::num::Scalar;
 use crate::stages::trace::{Step, Trace, Val};
-use nalgebra::Matrix4;
+use nalgebra::{Matrix4, Vector4};
 
 /// An up vector closer than this to the view direction (radians) gets a warning.
 pub const NEAR_PARALLEL_RAD: f64 = 1e-6;
@@ -301,6 +301,51 @@ pub fn to_eye<T: Scalar>(
         ));
     }
     Ok(e)
+}
+
+/// (x, y, z, w) = M·(P, 1): a 4×4 matrix applied to a point in
+/// homogeneous coordinates, row r summed as ((m_r0·x + m_r1·y) + m_r2·z)
+/// + m_r3 (nalgebra's product; the renderer's every vertex goes through it).
+#[inline(always)]
+pub fn apply<T: Scalar>(m: &Matrix4<T>, p: &V3<T>) -> Vector4<T> {
+    m * Vector4::new(p[0].clone(), p[1].clone(), p[2].clone(), T::one())
+}
+
+/// World coordinates of an object point: Pw = M·P, M the object's
+/// modeling matrix.
+pub fn to_world<T: Scalar>(m: &Matrix4<T>, name: &str, p: &V3<T>, tr: &mut impl Trace) -> V3<T> {
+    let w = apply(m, p).xyz();
+    tr.step(|| {
+        Step::new(
+            Msg::Pixel(PixelMsg::World(name.to_string())),
+            format!("{name}w = M·{name}"),
+        )
+        .val(name.to_string(), Val::vec3(p))
+        .res(format!("{name}w"), Val::vec3(&w))
+    });
+    w
+}
+
+/// Eye coordinates of an object point by the view matrix:
+/// P' = V·Pw = (V·M)·P, with `vm` the product V·M (one matrix per object,
+/// as the renderer applies it).
+pub fn eye_by_matrix<T: Scalar>(
+    vm: &Matrix4<T>,
+    name: &str,
+    p: &V3<T>,
+    tr: &mut impl Trace,
+) -> V3<T> {
+    let e = apply(vm, p).xyz();
+    tr.step(|| {
+        Step::new(
+            Msg::Pixel(PixelMsg::Eye(name.to_string())),
+            format!("{name}' = V·{name}w = (V·M)·{name}"),
+        )
+        .val(name.to_string(), Val::vec3(p))
+        .res(format!("{name}'"), Val::vec3(&e))
+        .note(Msg::Pixel(PixelMsg::Composed))
+    });
+    e
 }
 
 /// The precision's name as `--precision` spells it.

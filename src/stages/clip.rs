@@ -4,7 +4,7 @@
 //! an independent cross-check.
 
 use crate::error::{Error, Result};
-use crate::msg::{Msg, Trivial};
+use crate::msg::{Msg, PixelMsg, Trivial};
 use crate::num::vec::{self, V3};
 use crate::num::Scalar;
 use crate::stages::trace::{Step, Trace, Val};
@@ -137,6 +137,120 @@ pub fn outcode_clip_space<T: Scalar>(p: &nalgebra::Vector4<T>) -> u8 {
         }
     }
     c
+}
+
+/// [`outcode_clip_space`] as a step: each bit's comparison with ±w.
+pub fn outcode_clip<T: Scalar>(c: &nalgebra::Vector4<T>, name: &str, tr: &mut impl Trace) -> u8 {
+    let code = outcode_clip_space(c);
+    tr.step(|| {
+        let mut s = Step::new(
+            Msg::Pixel(PixelMsg::Outcode(name.to_string())),
+            Msg::Pixel(PixelMsg::FOutcode),
+        )
+        .val("c", crate::stages::projection::vec4(c));
+        for (bit, &(axis, is_max, _, side)) in PLANES.iter().enumerate() {
+            let a = ["x", "y", "z"][axis];
+            let (op, lim) = if is_max { (">", "w") } else { ("<", "−w") };
+            let set = code & (1 << bit) != 0;
+            s = s.val(
+                format!("bit {} ({side})", bit + 1),
+                Val::text(format!(
+                    "{} — {a} {op} {lim}: {} {op} {} is {set}",
+                    u8::from(set),
+                    short(&c[axis]),
+                    short(&if is_max { c[3].clone() } else { -c[3].clone() }),
+                )),
+            );
+        }
+        s.res("code", Val::text(code_str(code)))
+    });
+    code
+}
+
+/// The signed distance of clip-space point c = (x, y, z, w) to the plane of
+/// outcode bit `bit` (in [`outcode_clip_space`]'s order), ≥ 0 on the inside:
+/// w + x for x ≥ −w (bit 1), w − x for x ≤ w (bit 2), w + y, w − y, w + z,
+/// w − z.
+#[inline]
+pub fn plane_distance<T: Scalar>(c: &[T], bit: usize) -> T {
+    let v = c[bit / 2].clone();
+    if bit.is_multiple_of(2) {
+        c[3].clone() + v
+    } else {
+        c[3].clone() - v
+    }
+}
+
+/// Clips a convex polygon in homogeneous clip space against the planes
+/// whose outcode bits are set in `mask`, plane by plane in bit order
+/// (Sutherland–Hodgman). A vertex is (x, y, z, w) followed by attributes;
+/// for each edge P→Q with distances dP, dQ to the plane
+/// ([`plane_distance`]): P is kept when dP ≥ 0, and where the edge crosses
+/// the plane (dP ≥ 0 ≠ dQ ≥ 0) the point
+///
+/// t = dP/(dP − dQ),  R = P + t·(Q − P)
+///
+/// is added, every component (clip coordinates and attributes alike)
+/// interpolated with the same t: they are linear in clip space, so no
+/// division by w ≤ 0 ever happens. Stops when fewer than 3 vertices are
+/// left (nothing inside). `tmp` is working space.
+pub fn clip_polygon<T: Scalar + Copy, const N: usize, Tr: Trace>(
+    poly: &mut Vec<[T; N]>,
+    mask: u8,
+    tmp: &mut Vec<[T; N]>,
+    tr: &mut Tr,
+) {
+    for bit in 0..6 {
+        if mask & (1 << bit) == 0 {
+            continue;
+        }
+        tmp.clear();
+        let mut ts = Vec::new();
+        for k in 0..poly.len() {
+            let (p, q) = (&poly[k], &poly[(k + 1) % poly.len()]);
+            let (dp, dq) = (plane_distance(p, bit), plane_distance(q, bit));
+            if dp >= T::zero() {
+                tmp.push(*p);
+            }
+            if (dp >= T::zero()) != (dq >= T::zero()) {
+                let t = dp / (dp - dq);
+                tmp.push(std::array::from_fn(|i| p[i] + t * (q[i] - p[i])));
+                if Tr::ON {
+                    ts.push(Val::num(&t));
+                }
+            }
+        }
+        tr.step(|| clip_plane_step(bit, poly, tmp, ts));
+        std::mem::swap(poly, tmp);
+        if poly.len() < 3 {
+            return;
+        }
+    }
+}
+
+/// The step of one plane of [`clip_polygon`]: the polygon before and after
+/// (clip coordinates) and the t of each intersection.
+fn clip_plane_step<T: Scalar, const N: usize>(
+    bit: usize,
+    before: &[[T; N]],
+    after: &[[T; N]],
+    ts: Vec<Val>,
+) -> Step {
+    let pts = |v: &[[T; N]]| {
+        Val::List(
+            v.iter()
+                .map(|p| Val::List(p[..4].iter().map(Val::num).collect()))
+                .collect(),
+        )
+    };
+    let d = ["w + x", "w − x", "w + y", "w − y", "w + z", "w − z"][bit];
+    Step::new(
+        Msg::Pixel(PixelMsg::ClipPlane(bit)),
+        format!("d = {d} (≥ 0 inside),  t = d₀/(d₀ − d₁),  R = P₀ + t·(P₁ − P₀)"),
+    )
+    .val("polygon (x, y, z, w)", pts(before))
+    .res("t", Val::List(ts))
+    .res("clipped polygon", pts(after))
 }
 
 /// An outcode written bit 6 first, as the text writes it (`001001`).

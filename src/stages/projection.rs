@@ -4,7 +4,7 @@
 //! orthographic projection.
 
 use crate::error::{Error, Result};
-use crate::msg::Msg;
+use crate::msg::{Msg, PixelMsg};
 use crate::num::vec::{self, V3};
 use crate::num::Scalar;
 use crate::stages::trace::{Step, Trace, Val};
@@ -215,6 +215,68 @@ pub fn perspective_matrix<T: Scalar>(
     m[(2, 3)] = -(T::from_i64(2) * far.clone() * near.clone()) / depth;
     m[(3, 2)] = -T::one();
     m
+}
+
+/// The projection matrix P (eye → clip space) as a step: the
+/// [`perspective_matrix`] of the window, or the tilt view's
+/// [`ortho_matrix`], given as `p`.
+pub fn projection_step<T: Scalar>(p: &nalgebra::Matrix4<T>, ortho: bool, tr: &mut impl Trace) {
+    tr.step(|| {
+        let f = if ortho {
+            "P = [2/width 0 0 −(right+left)/width; 0 2/height 0 −(top+bottom)/height; 0 0 −2/(far−near) −(far+near)/(far−near); 0 0 0 1]"
+        } else {
+            "P = [near/right 0 0 0; 0 near/top 0 0; 0 0 −(far+near)/(far−near) −2·far·near/(far−near); 0 0 −1 0]"
+        };
+        Step::new(Msg::Pixel(PixelMsg::ProjMatrix), f).res("P", Val::mat4(p))
+    });
+}
+
+/// Clip coordinates of an object point: c = (x, y, z, w) = P·V·M·(P, 1),
+/// with `pvm` the product P·V·M (one matrix per object). For the
+/// perspective matrix w = −z_eye.
+pub fn to_clip<T: Scalar>(
+    pvm: &nalgebra::Matrix4<T>,
+    name: &str,
+    p: &V3<T>,
+    tr: &mut impl Trace,
+) -> nalgebra::Vector4<T> {
+    let c = crate::stages::camera::apply(pvm, p);
+    tr.step(|| {
+        Step::new(
+            Msg::Pixel(PixelMsg::Clip(name.to_string())),
+            format!("c = (x, y, z, w) = P·V·M·{name}"),
+        )
+        .val(name.to_string(), Val::vec3(p))
+        .res("c", vec4(&c))
+    });
+    c
+}
+
+/// A 4-vector as a value.
+pub fn vec4<T: Scalar>(c: &nalgebra::Vector4<T>) -> Val {
+    Val::List(c.iter().map(Val::num).collect())
+}
+
+/// The perspective division of clip coordinates c = (x, y, z, w): with
+/// q = 1/w, the normalized coordinates (x·q, y·q, z·q), each −1 … 1 inside
+/// the view volume (z·q is the depth, nearer is smaller). Returns them and q.
+pub fn divide<T: Scalar>(c: &nalgebra::Vector4<T>, name: &str, tr: &mut impl Trace) -> (V3<T>, T) {
+    let q = T::one() / c[3].clone();
+    let n = vec::v3(
+        c[0].clone() * q.clone(),
+        c[1].clone() * q.clone(),
+        c[2].clone() * q.clone(),
+    );
+    tr.step(|| {
+        Step::new(
+            Msg::Pixel(PixelMsg::Divide(name.to_string())),
+            "1/w,  (xn, yn, zn) = (x·(1/w), y·(1/w), z·(1/w))",
+        )
+        .val("c", vec4(c))
+        .res("1/w", Val::num(&q))
+        .res("(xn, yn, zn)", Val::vec3(&n))
+    });
+    (n, q)
 }
 
 /// The orthographic projection (xp = x, yp = y) as a 4×4 matrix onto the

@@ -2,7 +2,7 @@
 //! far-plane window), and the viewport mapping from the window to pixels.
 
 use crate::error::{Error, Result};
-use crate::msg::Msg;
+use crate::msg::{Msg, PixelMsg};
 use crate::num::Scalar;
 use crate::stages::trace::{Step, Trace, Val};
 
@@ -158,6 +158,83 @@ pub fn viewport_xy<T: Scalar>(w: &Window<T>, size: (&T, &T), p: (&T, &T)) -> (T,
     let px = (p.0.clone() - w.left.clone()) / w.width.clone() * size.0.clone();
     let py = (p.1.clone() - w.bottom.clone()) / w.height.clone() * size.1.clone();
     (px, py)
+}
+
+/// The window point of normalized coordinates (xn, yn), −1 … 1 across
+/// the window:
+///
+/// xp = left + (xn + 1)·½·width,  yp = bottom + (yn + 1)·½·height.
+#[inline]
+pub fn window_point<T: Scalar>(w: &Window<T>, n: (&T, &T)) -> (T, T) {
+    let half = T::from_f64(0.5);
+    let xp = w.left.clone() + (n.0.clone() + T::one()) * half.clone() * w.width.clone();
+    let yp = w.bottom.clone() + (n.1.clone() + T::one()) * half * w.height.clone();
+    (xp, yp)
+}
+
+/// Normalized coordinates (xn, yn) to a pixel position (x, row) of a
+/// W × H image with rows counted from the top (as an image file stores
+/// them): the [`window_point`], the viewport mapping ([`to_viewport`]),
+/// then row = H − py.
+pub fn to_pixel<T: Scalar>(
+    w: &Window<T>,
+    size: (&T, &T),
+    name: &str,
+    n: (&T, &T),
+    tr: &mut impl Trace,
+) -> (T, T) {
+    let (xp, yp) = window_point(w, n);
+    tr.step(|| {
+        Step::new(
+            Msg::Pixel(PixelMsg::WindowPoint(name.to_string())),
+            "xp = left + (xn + 1)·½·width,  yp = bottom + (yn + 1)·½·height",
+        )
+        .val("(xn, yn)", Val::vec2(n.0, n.1))
+        .val("(left, bottom)", Val::vec2(&w.left, &w.bottom))
+        .val("width × height", Val::vec2(&w.width, &w.height))
+        .res("(xp, yp)", Val::vec2(&xp, &yp))
+    });
+    let (px, py) = to_viewport(w, size, name, (&xp, &yp), tr);
+    let row = size.1.clone() - py.clone();
+    tr.step(|| {
+        Step::new(Msg::Pixel(PixelMsg::Row(name.to_string())), "row = H − py")
+            .val("H", Val::num(size.1))
+            .val("py", Val::num(&py))
+            .res("(x, row)", Val::vec2(&px, &row))
+    });
+    (px, row)
+}
+
+/// Sub-pixel bits of the rasterizer's fixed-point screen coordinates: a
+/// position is snapped to 1/2⁸ = 1/256 pixel.
+pub const SUBPIXEL_BITS: i64 = 8;
+
+/// x snapped to 1/256 pixel: X = round(256·x), halves away from zero (in
+/// f64, exact for every f32 x; casts, no libm call).
+#[inline]
+pub fn snap(x: f32) -> i64 {
+    let t = x as f64 * (1i64 << SUBPIXEL_BITS) as f64;
+    (t + if t >= 0.0 { 0.5 } else { -0.5 }) as i64
+}
+
+/// A pixel position (x, row) snapped to 1/256 pixel ([`snap`]), each
+/// coordinate an integer count of 1/256 pixel.
+#[inline]
+pub fn snap_pixel(p: (f32, f32), name: &str, tr: &mut impl Trace) -> [i64; 2] {
+    let s = [snap(p.0), snap(p.1)];
+    tr.step(|| {
+        Step::new(
+            Msg::Pixel(PixelMsg::Snap(name.to_string())),
+            "X = round(256·x),  Y = round(256·row)  (halves away from 0)",
+        )
+        .val("(x, row)", Val::vec2(&p.0, &p.1))
+        .res("(X, Y)", Val::text(format!("({}, {})", s[0], s[1])))
+        .res(
+            "(X/256, Y/256)",
+            Val::vec2(&(s[0] as f64 / 256.0), &(s[1] as f64 / 256.0)),
+        )
+    });
+    s
 }
 
 /// Whether a window point lies inside the window (edges included).

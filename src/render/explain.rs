@@ -1,0 +1,138 @@
+//! The geometry `render --explain-pixel` shows: the pixel's triangle made
+//! again through the very functions the renderer ran (the stages', with
+//! their steps recorded this time), from the object's vertices to the
+//! set-up triangle, and checked against the one the rasterizer used.
+
+use super::geometry::{self, ClipVert, VertBufs};
+use super::raster::{self, ScreenVert};
+use super::{Frame, Options, Stats};
+use crate::error::Result;
+use crate::input::scene::Scene;
+use crate::msg::{Msg, PixelMsg};
+use crate::stages::camera;
+use crate::stages::trace::{NoTrace, Recorder, Step, Trace, Val};
+use nalgebra::{Matrix4, Vector4};
+
+/// Records the geometry of set-up triangle `id` of `frame` (rendered from
+/// `scene` with `opt`): the view (view matrix, window, projection
+/// matrix); per vertex of the object's triangle it came from, world, eye
+/// and clip coordinates and the outcode; the clipping when the triangle
+/// crossed a plane; per vertex of the set-up triangle, the perspective
+/// division, window point, viewport, row and snapping; then the set-up
+/// triangle, with whether it is the rasterizer's.
+pub fn explain_geometry(
+    scene: &Scene,
+    opt: &Options,
+    frame: &Frame,
+    id: u32,
+    rec: &mut Recorder,
+) -> Result<PixelGeometry> {
+    let t = &frame.tris[id as usize];
+    let obj = &scene.objects[t.obj as usize];
+    rec.section(Msg::SecViewing);
+    let vs = super::view_setup_traced(scene, opt.width, opt.height, rec)?;
+    let (mut st, mut bufs) = (Stats::default(), VertBufs::default());
+    let Some(p) = geometry::prepare(obj, &vs, &scene.lights, opt, &mut st, &mut bufs) else {
+        return Ok(PixelGeometry::default());
+    };
+    let src = t.src as usize;
+    let idx = obj.tris.tris[src].map(|i| i as usize);
+    let model: Matrix4<f32> = obj.model.cast();
+    rec.step(|| {
+        Step::new(
+            Msg::Pixel(PixelMsg::Matrices(obj.name.clone())),
+            "M (modeling),  V·M,  P·V·M = P·(V·M)  (at f32, as the renderer applies them)",
+        )
+        .res("M", Val::mat4(&model))
+        .res("V·M", Val::mat4(&p.x.e32))
+        .res("P·V·M", Val::mat4(&p.x.c32))
+    });
+    let mut clip = [Vector4::zeros(); 3];
+    for (k, c) in clip.iter_mut().enumerate() {
+        rec.section(Msg::Pixel(PixelMsg::SecVertex(k)));
+        let (name, pos) = (format!("V{k}"), obj.mesh.positions[idx[k]]);
+        camera::to_world(&model, &name, &geometry::v3(pos), rec);
+        let (_, c_k, code) = geometry::vertex_clip(&p.x, pos, &name, rec);
+        *c = c_k;
+        if let (Some(s), true) = (rec.steps.last_mut(), code != 0) {
+            s.note = Some(Msg::Pixel(PixelMsg::Outside));
+        }
+    }
+    let Some((or, back)) = geometry::test(&p, idx, &vs, scene.cull, &mut st) else {
+        return Ok(PixelGeometry::default());
+    };
+    // The set-up triangles it gave, as clip coordinates: itself, or the
+    // fan of its clipped polygon.
+    let fan: Vec<[Vector4<f32>; 3]> = if or == 0 {
+        vec![clip]
+    } else {
+        rec.section(Msg::Pixel(PixelMsg::SecClip));
+        let cs = geometry::corners(&p, idx, obj.tris.face[src], back, vs.ortho, &mut st);
+        let (mut poly, mut tmp): (Vec<ClipVert>, _) = (Vec::new(), Vec::new());
+        geometry::clipped_polygon(&p, idx, &cs, or, (&mut poly, &mut tmp), rec);
+        let c = |v: &ClipVert| geometry::clip_xyzw(v);
+        (1..poly.len().saturating_sub(1))
+            .map(|k| [c(&poly[0]), c(&poly[k]), c(&poly[k + 1])])
+            .collect()
+    };
+    let size = (opt.width, opt.height);
+    let same = |f: &[Vector4<f32>; 3]| {
+        let sv = f.map(|c| geometry::to_screen(&c, &vs.win, p.x.size, "", &mut NoTrace));
+        let made = raster::setup_of(sv, size.0, size.1);
+        made.is_some_and(|(mut m, _)| {
+            (m.obj, m.src) = (t.obj, t.src);
+            m == *t
+        })
+    };
+    let found = fan.iter().position(same);
+    let Some(f) = found.or((!fan.is_empty()).then_some(0)) else {
+        return Ok(PixelGeometry::default());
+    };
+    let mut sv = [(ScreenVert::default(), [0i64; 2]); 3];
+    for (k, v) in sv.iter_mut().enumerate() {
+        rec.section(Msg::Pixel(PixelMsg::SecScreen(k)));
+        let name = if or == 0 {
+            format!("V{k}")
+        } else {
+            format!("Q{k}")
+        };
+        *v = geometry::to_screen(&fan[f][k], &vs.win, p.x.size, &name, rec);
+    }
+    set_up_step(&sv, found.is_some(), rec);
+    let mut verts = sv.map(|v| v.0);
+    if raster::setup_of(sv, size.0, size.1).is_some_and(|(_, swap)| swap) {
+        verts.swap(1, 2);
+    }
+    Ok(PixelGeometry {
+        same: found.is_some(),
+        verts,
+    })
+}
+
+/// What the geometry of a pixel's triangle came to.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PixelGeometry {
+    /// The triangle made again is the one the rasterizer used.
+    pub same: bool,
+    /// Its screen vertices, in the set-up triangle's order.
+    pub verts: [ScreenVert; 3],
+}
+
+/// The step of the set-up triangle: its snapped vertices, and whether it
+/// is the one the rasterizer used.
+fn set_up_step(sv: &[(ScreenVert, [i64; 2]); 3], same: bool, rec: &mut Recorder) {
+    rec.step(|| {
+        let mut s = Step::new(
+            Msg::Pixel(PixelMsg::SetUp),
+            "E_k(X, Y) = a_k·X + b_k·Y + c_k over the snapped vertices (X, Y in 1/256 pixel)",
+        );
+        for (k, (_, q)) in sv.iter().enumerate() {
+            s = s.val(
+                format!("vertex {k} (X, Y)"),
+                Val::text(format!("({}, {})", q[0], q[1])),
+            );
+        }
+        s.res("same as the rasterizer's", Val::Bool(same))
+            .note(Msg::Pixel(PixelMsg::SameAsRaster(same)))
+    });
+}
