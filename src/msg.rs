@@ -9,7 +9,9 @@
 //! message; only `report/` knows the words.
 
 mod drawn;
+mod figure;
 pub use drawn::{CameraText, DrawnTitle, ShadeAsked, Statement};
+pub use figure::{FigWord, FigureMsg, Panel};
 
 /// A term of the lighting sum.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -371,6 +373,8 @@ pub enum Msg {
     ErrFewDistinct(String, String, usize),
     /// `--html` given to a command that writes no worked solution.
     ErrHtmlCommand,
+    /// A figure's words, or an error of a `--figure`/`--html` file.
+    Figure(FigureMsg),
 
     // ---- warnings ----
     /// Up nearly parallel to the view direction (angle in radians).

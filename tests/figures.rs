@@ -1,24 +1,46 @@
 //! Figures: facts of each figure checked from its description against
-//! values worked by hand, and the SVG written by `--figure` parses.
+//! values worked by hand (derivations in the comments), the SVG written by
+//! `--figure` parses with its title and description first, and the TikZ
+//! picture carries the same marks.
 
 use assert_cmd::Command;
 use clap::Parser;
 use grafika::cli::args::Cli;
 use grafika::report::figure::{
-    builders::figure_of, cabinet, svg::to_svg, tikz::to_tikz, Item, Pen,
+    builders::drawings, cabinet, svg::to_svg, tikz::to_tikz, Drawing, Figure, Item, Pen,
 };
 use grafika::report::lang::Lang;
 use grafika::report::Style;
 
-fn clip_figure(args: &[&str]) -> grafika::report::figure::Figure {
-    let mut all = vec!["grafika", "clip"];
+/// The drawings of a command line (`grafika` is prepended), in English
+/// with exact forms, as the command line writes them.
+fn drawn_in(lang: Lang, args: &[&str]) -> Vec<Drawing> {
+    let mut all = vec!["grafika"];
     all.extend_from_slice(args);
     let cli = Cli::try_parse_from(all).expect("arguments parse");
-    let report = grafika::cli::run(&cli).expect("clip runs");
-    figure_of(&report, &Style::new(6, false, Lang::En)).expect("clip draws a figure")
+    let report = grafika::cli::run(&cli).expect("the command runs");
+    drawings(&report, &Style::new(4, true, lang))
 }
 
-fn segments(f: &grafika::report::figure::Figure, pen: Pen) -> Vec<([f64; 2], [f64; 2])> {
+fn drawn(args: &[&str]) -> Vec<Drawing> {
+    drawn_in(Lang::En, args)
+}
+
+/// The one panel of a one-panel drawing.
+fn only(args: &[&str]) -> Figure {
+    let d = drawn(args);
+    assert_eq!(d.len(), 1);
+    assert_eq!(d[0].panels.len(), 1);
+    d[0].panels[0].clone()
+}
+
+fn clip_figure(args: &[&str]) -> Figure {
+    let mut all = vec!["clip"];
+    all.extend_from_slice(args);
+    only(&all)
+}
+
+fn segments(f: &Figure, pen: Pen) -> Vec<([f64; 2], [f64; 2])> {
     f.items
         .iter()
         .filter_map(|it| match it {
@@ -28,9 +50,56 @@ fn segments(f: &grafika::report::figure::Figure, pen: Pen) -> Vec<([f64; 2], [f6
         .collect()
 }
 
+fn arrows(f: &Figure, pen: Pen) -> Vec<([f64; 2], [f64; 2])> {
+    f.items
+        .iter()
+        .filter_map(|it| match it {
+            Item::Arrow { a, b, pen: p } if *p == pen => Some((*a, *b)),
+            _ => None,
+        })
+        .collect()
+}
+
+fn dots(f: &Figure, pen: Pen) -> Vec<[f64; 2]> {
+    f.items
+        .iter()
+        .filter_map(|it| match it {
+            Item::Dot { at, pen: p } if *p == pen => Some(*at),
+            _ => None,
+        })
+        .collect()
+}
+
+fn labels(f: &Figure) -> Vec<String> {
+    f.items
+        .iter()
+        .filter_map(|it| match it {
+            Item::Label { text, .. } => Some(text.clone()),
+            _ => None,
+        })
+        .collect()
+}
+
+fn has_label(f: &Figure, want: &str) {
+    let l = labels(f);
+    assert!(l.iter().any(|t| t == want), "no label {want:?} in {l:?}");
+}
+
 fn near(a: [f64; 2], b: [f64; 2]) -> bool {
     (a[0] - b[0]).abs() < 1e-9 && (a[1] - b[1]).abs() < 1e-9
 }
+
+/// Whether c lies on the segment a–b (collinear, between the ends).
+fn on_segment(c: [f64; 2], a: [f64; 2], b: [f64; 2]) -> bool {
+    let (ux, uy) = (b[0] - a[0], b[1] - a[1]);
+    let (wx, wy) = (c[0] - a[0], c[1] - a[1]);
+    let len2 = ux * ux + uy * uy;
+    let cross = ux * wy - uy * wx;
+    let t = (ux * wx + uy * wy) / len2;
+    cross.abs() <= 1e-9 * len2.max(1.0) && (-1e-9..=1.0 + 1e-9).contains(&t)
+}
+
+// ---- clip ----
 
 /// Unit box, P0 = (−1, ½, ½), P1 = (2, ½, ½): by hand the segment enters at
 /// x = 0 (t = 1/3) and leaves at x = 1 (t = 2/3), so the kept part is
@@ -56,22 +125,8 @@ fn clip_solid_part_ends_at_the_clipped_points() {
     assert!(near(cut[0].0, cabinet([-1.0, 0.5, 0.5])) && near(cut[0].1, cabinet([0.0, 0.5, 0.5])));
     assert!(near(cut[1].0, cabinet([1.0, 0.5, 0.5])) && near(cut[1].1, cabinet([2.0, 0.5, 0.5])));
     assert_eq!(segments(&f, Pen::Frame).len(), 12, "a box has 12 edges");
-    let labels: Vec<&str> = f
-        .items
-        .iter()
-        .filter_map(|it| match it {
-            Item::Label { text, .. } => Some(text.as_str()),
-            _ => None,
-        })
-        .collect();
-    assert!(
-        labels.contains(&"left: t = 1/3 ≈ 0.333333, outcode 000000"),
-        "{labels:?}"
-    );
-    assert!(
-        labels.contains(&"right: t = 2/3 ≈ 0.666667, outcode 000000"),
-        "{labels:?}"
-    );
+    has_label(&f, "left: t = 1/3 ≈ 0.3333, outcode 000000");
+    has_label(&f, "right: t = 2/3 ≈ 0.6667, outcode 000000");
 }
 
 /// A segment wholly outside is all cut off: no solid part.
@@ -95,13 +150,116 @@ fn cabinet_projection_is_as_stated() {
     assert!((len - 1.0).abs() < 1e-12 && (p[0] - p[1]).abs() < 1e-12 && p[0] < 0.0);
 }
 
-#[test]
-fn figure_flag_writes_svg_that_parses_and_never_overwrites() {
+/// Runs grafika with `--figure FILE` and returns the SVG's text; a second
+/// run must refuse to overwrite it (exit 2, a one-line error on figure).
+fn svg_of(name: &str, args: &[&str]) -> String {
     let dir = std::env::temp_dir().join(format!("grafika-fig-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join("clip.svg");
+    let file = dir.join(name);
     let _ = std::fs::remove_file(&file);
-    let args = [
+    let run = || {
+        let mut c = Command::cargo_bin("grafika").unwrap();
+        c.args(args).arg("--figure").arg(&file);
+        c
+    };
+    run().assert().success();
+    let text = std::fs::read_to_string(&file).unwrap();
+    let again = run().assert().code(2);
+    let err = String::from_utf8_lossy(&again.get_output().stderr).to_string();
+    assert!(
+        err.starts_with("error: figure: ") && err.contains("exists"),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), text, "overwritten");
+    std::fs::remove_file(&file).unwrap();
+    text
+}
+
+/// The SVG parses, is 600 px wide, has `<title>` and `<desc>` first, and
+/// each panel group has its own title and desc first; returns its texts.
+fn check_svg(text: &str) -> Vec<String> {
+    let doc = roxmltree::Document::parse(text).expect("SVG parses as XML");
+    let root = doc.root_element();
+    assert_eq!(root.attribute("width"), Some("600"));
+    let first = |n: roxmltree::Node| -> Vec<String> {
+        n.children()
+            .filter(|c| c.is_element())
+            .take(2)
+            .map(|c| c.tag_name().name().to_string())
+            .collect()
+    };
+    assert_eq!(first(root), ["title", "desc"]);
+    for g in root.children().filter(|n| n.has_tag_name("g")) {
+        assert_eq!(first(g), ["title", "desc"]);
+        assert!(g
+            .children()
+            .any(|c| c.has_tag_name("title") && c.text().is_some_and(|t| !t.is_empty())));
+    }
+    root.descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| n.text().map(str::to_string))
+        .collect()
+}
+
+#[test]
+fn clip_figure_flag_writes_svg_that_parses_and_never_overwrites() {
+    let svg = svg_of(
+        "clip.svg",
+        &[
+            "clip",
+            "--min",
+            "0,0,0",
+            "--max",
+            "1,1,1",
+            "--from",
+            "-1,0.5,0.5",
+            "--to",
+            "2,0.5,0.5",
+        ],
+    );
+    let texts = check_svg(&svg);
+    assert!(texts.iter().any(|t| t.starts_with("P0")), "{texts:?}");
+}
+
+/// The same description written as TikZ has the same marks: one `\draw`
+/// per line, arrow and polygon, one `\fill` per dot, one `\node` per label.
+fn same_marks_in_tikz(d: &Drawing) {
+    let t = to_tikz(d);
+    let count = |f: &dyn Fn(&Item) -> bool| -> usize {
+        d.panels
+            .iter()
+            .flat_map(|p| &p.items)
+            .filter(|i| f(i))
+            .count()
+    };
+    let lines = count(&|i| {
+        matches!(
+            i,
+            Item::Segment { .. } | Item::Arrow { .. } | Item::Polygon { .. } | Item::Path { .. }
+        )
+    });
+    let arrows = count(&|i| matches!(i, Item::Arrow { .. }));
+    let dots = count(&|i| matches!(i, Item::Dot { .. }));
+    let labels = count(&|i| matches!(i, Item::Label { .. }));
+    let headings = if d.panels.len() > 1 {
+        d.panels.len()
+    } else {
+        0
+    };
+    assert_eq!(t.matches("\\draw[").count(), lines);
+    assert_eq!(t.matches("\\draw[->").count(), arrows);
+    assert_eq!(t.matches("\\fill[").count(), dots);
+    assert_eq!(t.matches("\\node[").count(), labels + headings);
+    assert_eq!(t.matches("\\begin{tikzpicture}").count(), d.panels.len());
+    let svg = to_svg(d);
+    assert_eq!(svg.matches("<text").count(), labels + headings);
+    assert_eq!(svg.matches("marker-end").count(), arrows);
+}
+
+#[test]
+fn tikz_has_the_same_marks() {
+    let d = drawn(&[
         "clip",
         "--min",
         "0,0,0",
@@ -111,52 +269,105 @@ fn figure_flag_writes_svg_that_parses_and_never_overwrites() {
         "-1,0.5,0.5",
         "--to",
         "2,0.5,0.5",
-        "--figure",
-    ];
-    Command::cargo_bin("grafika")
-        .unwrap()
-        .args(args)
-        .arg(&file)
-        .assert()
-        .success();
-    let text = std::fs::read_to_string(&file).unwrap();
-    let doc = roxmltree::Document::parse(&text).expect("SVG parses as XML");
-    let root = doc.root_element();
-    assert_eq!(root.attribute("width"), Some("600"));
-    let names: Vec<&str> = root
-        .children()
-        .filter(|n| n.is_element())
-        .map(|n| n.tag_name().name())
-        .collect();
-    assert_eq!(&names[..2], &["title", "desc"]);
-    assert!(root
-        .descendants()
-        .any(|n| n.has_tag_name("text") && n.text().is_some_and(|t| t.starts_with("P0"))));
-    let again = Command::cargo_bin("grafika")
-        .unwrap()
-        .args(args)
-        .arg(&file)
-        .assert()
-        .code(2);
-    let err = String::from_utf8_lossy(&again.get_output().stderr).to_string();
-    assert!(err.contains("figure"), "{err}");
-    std::fs::remove_dir_all(&dir).unwrap();
+    ]);
+    same_marks_in_tikz(&d[0]);
+    let t = to_tikz(&d[0]);
+    assert!(t.contains("dashed") && to_svg(&d[0]).contains("stroke-dasharray"));
 }
 
-/// The same description written as TikZ has the same marks.
+// ---- basis and view ----
+
+/// The text's camera example (problems/text-camera.toml): Pe = (4, 4, 4),
+/// Pr = (0, 1, 4), Vup = (0, 1, 0). By hand:
+/// n = (Pe − Pr)/|Pe − Pr| = (4, 3, 0)/5 = (4/5, 3/5, 0);
+/// u = Vup × n / |…| = (1·0 − 0·3/5, 0·4/5 − 0·0, 0·3/5 − 1·4/5)/(4/5)
+///   = (0, 0, −1);
+/// v = n × u = (3/5·(−1) − 0, 0 − 4/5·(−1), 0) = (−3/5, 4/5, 0);
+/// Pref' = (u·d, v·d, n·d) with d = Pref − Pe = (−4, −3, 0):
+///   (0, 12/5 − 12/5, −16/5 − 9/5) = (0, 0, −5).
+/// The scene lies within 8 of the origin, so the arrows are 1 long: each
+/// runs from cabinet(Pe) to cabinet(Pe + vector).
 #[test]
-fn tikz_has_the_same_marks() {
-    let f = clip_figure(&[
-        "--min",
-        "0,0,0",
-        "--max",
-        "1,1,1",
-        "--from",
-        "-1,0.5,0.5",
-        "--to",
-        "2,0.5,0.5",
-    ]);
-    let t = to_tikz(&f);
-    assert_eq!(t.matches("\\draw[").count(), 12 + 3);
-    assert!(t.contains("dashed") && to_svg(&f).contains("stroke-dasharray"));
+fn camera_arrows_point_along_u_v_n_under_the_cabinet_projection() {
+    let d = drawn(&["solve", "problems/text-camera.toml"]);
+    assert_eq!(d.len(), 1);
+    assert_eq!(d[0].part, "view");
+    let f = &d[0].panels[0];
+    let pe = [4.0, 4.0, 4.0];
+    let tip = |v: [f64; 3]| cabinet([pe[0] + v[0], pe[1] + v[1], pe[2] + v[2]]);
+    let want = [
+        (cabinet(pe), tip([0.0, 0.0, -1.0])),
+        (cabinet(pe), tip([-0.6, 0.8, 0.0])),
+        (cabinet(pe), tip([0.8, 0.6, 0.0])),
+    ];
+    let got = arrows(f, Pen::Vector);
+    assert_eq!(got.len(), 3);
+    for ((a, b), (wa, wb)) in got.iter().zip(want) {
+        assert!(
+            near(*a, wa) && near(*b, wb),
+            "{a:?}–{b:?} is not {wa:?}–{wb:?}"
+        );
+    }
+    // Vup at Pref, along (0, 1, 0).
+    assert_eq!(
+        arrows(f, Pen::Given),
+        vec![(cabinet([0.0, 1.0, 4.0]), cabinet([0.0, 2.0, 4.0]))]
+    );
+    // The line of sight from Peye to Pref, and the two blue dots.
+    assert_eq!(
+        segments(f, Pen::Tried),
+        vec![(cabinet(pe), cabinet([0.0, 1.0, 4.0]))]
+    );
+    assert_eq!(
+        dots(f, Pen::Kept),
+        vec![cabinet(pe), cabinet([0.0, 1.0, 4.0])]
+    );
+    // World axes x, y, z from the origin.
+    assert_eq!(arrows(f, Pen::Frame).len(), 3);
+    for want in [
+        "u = (0, 0, −1)",
+        "v = (−3/5, 4/5, 0)",
+        "n = (4/5, 3/5, 0)",
+        "Peye (4, 4, 4)",
+        "Pref (0, 1, 4)",
+        "Vup = (0, 1, 0)",
+        "Pref (0, 1, 4): Pref' = (0, 0, −5)",
+    ] {
+        has_label(f, want);
+    }
+}
+
+/// `basis` draws the same camera without points; `view --figure` writes
+/// an SVG that parses, whose texts carry the same values.
+#[test]
+fn basis_and_view_figures() {
+    let cam = ["--eye", "4,4,4", "--look", "0,1,4", "--up", "0,1,0"];
+    let b = only(&[&["basis"], &cam[..]].concat());
+    assert_eq!(arrows(&b, Pen::Vector).len(), 3);
+    assert!(dots(&b, Pen::Frame).is_empty(), "basis has no named points");
+    let svg = svg_of(
+        "view.svg",
+        &[&["view"], &cam[..], &["--point", "Pref=0,1,4"]].concat(),
+    );
+    let texts = check_svg(&svg);
+    for want in ["n = (4/5, 3/5, 0)", "Pref (0, 1, 4): Pref' = (0, 0, −5)"] {
+        assert!(texts.iter().any(|t| t == want), "{want:?} not in {texts:?}");
+    }
+    same_marks_in_tikz(&drawn(&[&["view"], &cam[..], &["--point", "Pref=0,1,4"]].concat())[0]);
+}
+
+/// In Indonesian the labels use the decimal comma and `;`, and the title
+/// is Indonesian.
+#[test]
+fn camera_figure_in_indonesian() {
+    let d = drawn_in(
+        Lang::Id,
+        &[
+            "basis", "--eye", "3,1,3", "--look", "2,1,2", "--up", "0,1,0",
+        ],
+    );
+    let f = &d[0].panels[0];
+    assert_eq!(f.title, "Kamera dalam sistem koordinat dunia");
+    // n = (1, 0, 1)/√2 = (√2/2; 0; √2/2) ≈ (0,7071; 0; 0,7071)
+    has_label(f, "n = (√2/2; 0; √2/2)");
 }

@@ -149,6 +149,9 @@ pub struct CameraArgs {
     /// Up vector Vup, X,Y,Z.
     #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
     pub up: String,
+    /// Also draw the figure (world axes, Peye, Pref, Vup, u, v, n at the eye and the points, cabinet oblique projection) into this new SVG file (never overwritten).
+    #[arg(long, value_name = "FILE.svg")]
+    pub figure: Option<std::path::PathBuf>,
 }
 
 /// The projection flags.
@@ -209,7 +212,7 @@ pub struct ClipArgs {
     /// Segment end P1.
     #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
     pub to: String,
-    /// Also draw the figure (box, segment, intersections) into this new SVG file.
+    /// Also draw the figure (box, segment, intersections with t and outcode; kept part solid, cut-off parts dashed) into this new SVG file (never overwritten).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }

@@ -10,7 +10,7 @@ pub mod render;
 
 use crate::bench::accuracy::Stage;
 use crate::error::{Error, Result};
-use crate::msg::Msg;
+use crate::msg::{FigureMsg, Msg};
 use crate::num::Precision;
 use crate::report::lang::{tr, Lang};
 use crate::report::Style;
@@ -157,37 +157,29 @@ fn man() -> Result<String> {
     Ok(String::from_utf8_lossy(&out).into_owned())
 }
 
-/// `--figure FILE.svg`: the report's figure as a new SVG file (an existing
-/// file is never overwritten).
+/// `--figure FILE.svg`: the report's drawing as a new SVG file (an
+/// existing file is never overwritten).
 fn write_figure(cmd: &Command, report: &Report, style: &Style) -> Result<()> {
-    use crate::report::figure::{builders::figure_of, svg::to_svg};
-    use std::io::Write;
+    use crate::report::figure::{builders::drawings, svg::to_svg};
     let path = match cmd {
+        Command::Basis(c) | Command::View { camera: c, .. } => c.figure.as_ref(),
         Command::Clip(a) => a.figure.as_ref(),
         _ => None,
     };
-    let (Some(path), Some(fig)) = (path, figure_of(report, style)) else {
+    let Some(path) = path else {
         return Ok(());
     };
-    let fail = |e: std::io::Error| {
-        let msg = if e.kind() == std::io::ErrorKind::AlreadyExists {
-            crate::report::lang::tr(
-                style.lang,
-                "exists; remove it or choose another name",
-                "sudah ada; hapus atau pilih nama lain",
-            )
-            .to_string()
-        } else {
-            e.to_string()
-        };
-        Error::new("figure", format!("{}: {msg}", path.display()))
-    };
-    let mut f = std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(path)
-        .map_err(fail)?;
-    f.write_all(to_svg(&fig).as_bytes()).map_err(fail)
+    let all = drawings(report, style);
+    let files: Vec<(std::path::PathBuf, String)> =
+        all.iter().map(|d| (path.clone(), to_svg(d))).collect();
+    if let Some((p, _)) = files.iter().find(|(p, _)| p.exists()) {
+        let m = Msg::Figure(FigureMsg::Exists(p.display().to_string()));
+        return Err(Error::said("figure", m));
+    }
+    for (p, svg) in &files {
+        create_new(p, svg.as_bytes(), "figure")?;
+    }
+    Ok(())
 }
 
 /// Whether a command's result is a worked solution (a report) that
@@ -207,17 +199,17 @@ fn writes_a_report(c: &Command) -> bool {
 /// `--html FILE.html`: the worked solution as a new self-contained page
 /// (an existing file is never overwritten).
 fn write_html(cli: &Cli, report: &Report, style: &Style) -> Result<()> {
-    use crate::report::figure::{builders::figure_of, svg::to_svg};
+    use crate::report::figure::{builders::drawings, svg::to_svg};
     let Some(path) = &cli.common.html else {
         return Ok(());
     };
-    let figures: Vec<(String, String)> = figure_of(report, style)
-        .map(|f| (to_svg(&f), f.title.clone()))
-        .into_iter()
+    let figures: Vec<(String, String)> = drawings(report, style)
+        .iter()
+        .map(|d| (to_svg(d), d.title()))
         .collect();
     let title = page_title(report, style);
     let page = crate::report::html::report_page(report, style, &title, &figures);
-    create_new(path, page.as_bytes(), "html", style)
+    create_new(path, page.as_bytes(), "html")
 }
 
 /// The page's title: the problem's title for `solve`, else the command.
@@ -234,20 +226,15 @@ fn page_title(report: &Report, style: &Style) -> String {
 
 /// Writes a new file; an existing one is an error on `field` (never
 /// overwritten).
-fn create_new(path: &std::path::Path, bytes: &[u8], field: &str, style: &Style) -> Result<()> {
+fn create_new(path: &std::path::Path, bytes: &[u8], field: &str) -> Result<()> {
     use std::io::Write;
     let fail = |e: std::io::Error| {
-        let msg = if e.kind() == std::io::ErrorKind::AlreadyExists {
-            style
-                .tr(
-                    "exists; remove it or choose another name",
-                    "sudah ada; hapus atau pilih nama lain",
-                )
-                .to_string()
-        } else {
-            e.to_string()
+        let p = path.display().to_string();
+        let m = match e.kind() {
+            std::io::ErrorKind::AlreadyExists => FigureMsg::Exists(p),
+            _ => FigureMsg::Unwritable(p, e.to_string()),
         };
-        Error::new(field, format!("{}: {msg}", path.display()))
+        Error::said(field, Msg::Figure(m))
     };
     let mut f = std::fs::OpenOptions::new()
         .write(true)

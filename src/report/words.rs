@@ -6,6 +6,7 @@ use super::lang::Lang;
 use crate::msg::{LightPart, Msg, SpotZone, Term, Trivial};
 
 mod drawn;
+mod figure;
 
 /// The words of `m` in `lang`.
 pub fn words(m: &Msg, lang: Lang) -> String {
@@ -53,6 +54,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             "writes the worked solution of basis, view, project, window, clip, shade, solve and render; for exams use generate --format html",
             "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html",
         ),
+        Msg::Figure(f) => figure::figure(f, lang),
         Msg::At(place, m) => format!("{place}: {}", words(m, lang)),
         Msg::ErrSamePoint(_)
         | Msg::ErrUpZero
@@ -882,8 +884,35 @@ mod tests {
         }
         v.push(Msg::ErrFewDistinct("window".into(), "easy".into(), 20));
         v.push(Msg::ErrHtmlCommand);
+        v.extend(figure_messages());
         v.extend(drawn_messages());
         v
+    }
+
+    /// Every figure message.
+    fn figure_messages() -> Vec<Msg> {
+        use crate::msg::{FigWord as W, FigureMsg as F, Panel as P};
+        let panels = [
+            P::Camera,
+            P::Projection,
+            P::ProjectionSide,
+            P::ViewPlane,
+            P::Frustum,
+            P::WindowSide,
+            P::NearWindow,
+            P::Viewport,
+            P::Clip,
+            P::Shade,
+        ];
+        let words = [W::Cop, W::Eye, W::NotToScale, W::Surface];
+        let mut v: Vec<F> = panels
+            .iter()
+            .flat_map(|p| [F::Title(*p), F::Desc(*p)])
+            .collect();
+        v.extend(words.map(F::Word));
+        v.push(F::Exists("a.svg".into()));
+        v.push(F::Unwritable("a.svg".into(), "denied".into()));
+        v.into_iter().map(Msg::Figure).collect()
     }
 
     /// Every title and statement of a generated problem.
@@ -1095,7 +1124,8 @@ mod tests {
             | DrawnTitle(_)
             | Statement(_)
             | ErrFewDistinct(..)
-            | ErrHtmlCommand => {}
+            | ErrHtmlCommand
+            | Figure(_) => {}
         }
     }
 
