@@ -371,3 +371,78 @@ fn camera_figure_in_indonesian() {
     // n = (1, 0, 1)/√2 = (√2/2; 0; √2/2) ≈ (0,7071; 0; 0,7071)
     has_label(f, "n = (√2/2; 0; √2/2)");
 }
+
+// ---- project ----
+
+/// The text's triangle, point A' = (0, −1, −3√2) projected onto z = d =
+/// −0.1 with the centre at the origin. By hand: xp = d·x/z = 0,
+/// yp = d·y/z = (−0.1)(−1)/(−3√2) = −1/(30√2) = −√2/60 ≈ −0.02357, so the
+/// image is (0, −√2/60, −0.1). It lies on the projector from the centre
+/// (0, 0, 0) to A (the image is nearer the centre: t = d/z ≈ 0.0236).
+#[test]
+fn project_projector_passes_through_the_point_and_its_image() {
+    let a = [0.0, -1.0, -3.0 * 2f64.sqrt()];
+    let img = [0.0, -(2f64.sqrt()) / 60.0, -0.1];
+    let d = drawn(&["project", "--d", "-0.1", "--point", "A=0,-1,-6/sqrt(2)"]);
+    assert_eq!(d[0].panels.len(), 3, "3D, side view, view plane");
+    let (f3, side, plane) = (&d[0].panels[0], &d[0].panels[1], &d[0].panels[2]);
+    let proj = segments(f3, Pen::Tried);
+    assert_eq!(proj.len(), 1);
+    assert!(near(proj[0].0, cabinet([0.0; 3])) && near(proj[0].1, cabinet(a)));
+    assert!(on_segment(cabinet(img), proj[0].0, proj[0].1));
+    assert!(dots(f3, Pen::Kept).iter().any(|p| near(*p, cabinet(img))));
+    has_label(f3, "A = (0, −1, −3√2)");
+    has_label(f3, "z = d = −0.1");
+    // Side view (−z, y): the projector from (0, 0) to (3√2, −1) passes
+    // through the image (0.1, −√2/60): similar triangles, yp/d = y/z.
+    let s = segments(side, Pen::Tried);
+    assert_eq!(s.len(), 1);
+    assert!(near(s[0].0, [0.0, 0.0]) && near(s[0].1, [3.0 * 2f64.sqrt(), -1.0]));
+    assert!(on_segment([0.1, -(2f64.sqrt()) / 60.0], s[0].0, s[0].1));
+    // The legs: y of the point (black) and yp of the image (blue).
+    let (leg, small) = (segments(side, Pen::Frame), segments(side, Pen::Kept));
+    let z = 3.0 * 2f64.sqrt();
+    assert!(leg.len() == 1 && near(leg[0].0, [z, 0.0]) && near(leg[0].1, [z, -1.0]));
+    let yp = -(2f64.sqrt()) / 60.0;
+    assert!(small.len() == 1 && near(small[0].0, [0.1, 0.0]) && near(small[0].1, [0.1, yp]));
+    has_label(side, "A: y = −1, z = −3√2 ≈ −4.243");
+    has_label(side, "A'': yp = −√2/60 ≈ −0.02357");
+    has_label(side, "yp/d = y/z  ⇒  yp = d·y/z");
+    // The view plane: the image at (0, −√2/60).
+    let images = dots(plane, Pen::Kept);
+    assert!(images.len() == 1 && near(images[0], [0.0, yp]));
+    has_label(plane, "A'' = (0, −√2/60)");
+    same_marks_in_tikz(&d[0]);
+}
+
+/// The general form: centre (0, 0, 5), plane z = 0, A = (1, 2, −3). By
+/// hand: xp = x·(zprp − zvp)/(zprp − z) = 1·5/8 = 5/8, yp = 2·5/8 = 5/4.
+/// The image (5/8, 5/4, 0) lies between the centre and A.
+#[test]
+fn project_general_form_projector() {
+    let d = drawn(&[
+        "project", "--cop", "5", "--plane", "0", "--point", "A=1,2,-3",
+    ]);
+    let f3 = &d[0].panels[0];
+    let proj = segments(f3, Pen::Tried);
+    assert!(
+        near(proj[0].0, cabinet([0.0, 0.0, 5.0])) && near(proj[0].1, cabinet([1.0, 2.0, -3.0]))
+    );
+    assert!(on_segment(
+        cabinet([0.625, 1.25, 0.0]),
+        proj[0].0,
+        proj[0].1
+    ));
+    has_label(&d[0].panels[2], "A'' = (5/8, 5/4) = (0.625, 1.25)");
+    let svg = svg_of(
+        "project.svg",
+        &[
+            "project", "--cop", "5", "--plane", "0", "--point", "A=1,2,-3",
+        ],
+    );
+    let texts = check_svg(&svg);
+    assert!(
+        texts.iter().any(|t| t == "yp/(zprp − zvp) = y/(zprp − z)"),
+        "{texts:?}"
+    );
+}

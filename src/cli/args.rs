@@ -169,6 +169,9 @@ pub struct ProjectArgs {
     /// Orthographic projection (xp = x, yp = y, zp = 0).
     #[arg(long)]
     pub ortho: bool,
+    /// Also draw the figure (centre of projection, view plane and projectors in 3D; the side view y-z with the similar triangles; the images on the view plane) into this new SVG file (never overwritten).
+    #[arg(long, value_name = "FILE.svg")]
+    pub figure: Option<std::path::PathBuf>,
     /// An eye-coordinate point NAME=X,Y,Z (repeatable).
     #[arg(long = "point", value_name = "NAME=X,Y,Z", allow_hyphen_values = true)]
     pub points: Vec<String>,

@@ -163,6 +163,7 @@ fn write_figure(cmd: &Command, report: &Report, style: &Style) -> Result<()> {
     use crate::report::figure::{builders::drawings, svg::to_svg};
     let path = match cmd {
         Command::Basis(c) | Command::View { camera: c, .. } => c.figure.as_ref(),
+        Command::Project(a) => a.figure.as_ref(),
         Command::Clip(a) => a.figure.as_ref(),
         _ => None,
     };

@@ -16,6 +16,7 @@
 pub mod builders;
 mod camera;
 pub mod layout;
+mod project;
 pub mod svg;
 pub mod tikz;
 
