@@ -446,3 +446,79 @@ fn project_general_form_projector() {
         "{texts:?}"
     );
 }
+
+// ---- window ----
+
+/// fovy = 90°, aspect 2, near 1, far 3, viewport 200×100, A = (0.5, 0.5).
+/// By hand: top = near·tan(45°) = 1, right = aspect·top = 2, so the near
+/// window's corners are (±2, ±1, −1); far_top = 3·tan 45° = 3, far_right =
+/// 6, corners (±6, ±3, −3) (far/near = 3: drawn to scale). A's pixel:
+/// px = (0.5 − (−2))/4·200 = 125, py = (0.5 − (−1))/2·100 = 75.
+#[test]
+fn window_frustum_side_view_and_viewport() {
+    let d = drawn(&[
+        "window",
+        "--fovy",
+        "90",
+        "--aspect",
+        "2",
+        "--near",
+        "1",
+        "--far",
+        "3",
+        "--viewport",
+        "200x100",
+        "--point",
+        "A=0.5,0.5",
+    ]);
+    let p = &d[0].panels;
+    assert_eq!(p.len(), 4, "frustum, side view, near window, viewport");
+    let polygon = |f: &Figure, pen: Pen| -> Vec<Vec<[f64; 2]>> {
+        f.items
+            .iter()
+            .filter_map(|i| match i {
+                Item::Polygon { pts, pen: q } if *q == pen => Some(pts.clone()),
+                _ => None,
+            })
+            .collect()
+    };
+    let corners = |r: f64, t: f64, z: f64| -> Vec<[f64; 2]> {
+        vec![
+            cabinet([-r, -t, z]),
+            cabinet([r, -t, z]),
+            cabinet([r, t, z]),
+            cabinet([-r, t, z]),
+        ]
+    };
+    assert_eq!(polygon(&p[0], Pen::Kept), vec![corners(2.0, 1.0, -1.0)]);
+    assert_eq!(polygon(&p[0], Pen::Given), vec![corners(6.0, 3.0, -3.0)]);
+    // The edges run from the eye to the far corners.
+    let edges = segments(&p[0], Pen::Frame);
+    assert_eq!(edges.len(), 4);
+    for (e, c) in edges.iter().zip(corners(6.0, 3.0, -3.0)) {
+        assert!(near(e.0, [0.0, 0.0]) && near(e.1, c));
+    }
+    has_label(&p[0], "top = 1");
+    has_label(&p[0], "right = 2");
+    has_label(&p[0], "far = 3, far_top = 3");
+    // Side view: the near window from (1, −1) to (1, 1); the fovy arc ends
+    // on the lines y = ±x (half of 90° each side).
+    assert_eq!(segments(&p[1], Pen::Kept), vec![([1.0, -1.0], [1.0, 1.0])]);
+    let arc = p[1]
+        .items
+        .iter()
+        .find_map(|i| match i {
+            Item::Path { pts, .. } => Some(pts.clone()),
+            _ => None,
+        })
+        .expect("the fovy arc");
+    let (a, b) = (arc[0], arc[arc.len() - 1]);
+    assert!((a[1] + a[0]).abs() < 1e-12 && (b[1] - b[0]).abs() < 1e-12 && a[0] > 0.0);
+    has_label(&p[1], "fovy = 90°");
+    has_label(&p[1], "top = near·tan(fovy/2) = 1");
+    // The window on the near plane, and the viewport.
+    assert_eq!(dots(&p[2], Pen::Frame), vec![[0.5, 0.5]]);
+    assert_eq!(dots(&p[3], Pen::Kept), vec![[125.0, 75.0]]);
+    has_label(&p[3], "A = (125, 75)");
+    same_marks_in_tikz(&d[0]);
+}

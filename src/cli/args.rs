@@ -198,6 +198,9 @@ pub struct WindowArgs {
     /// A projected point NAME=X,Y on the near plane (repeatable; needs --viewport).
     #[arg(long = "point", value_name = "NAME=X,Y", allow_hyphen_values = true)]
     pub points: Vec<String>,
+    /// Also draw the figure (the view volume with the near and far windows; the side view with fovy and top; the points on the window; the viewport with their pixels) into this new SVG file (never overwritten).
+    #[arg(long, value_name = "FILE.svg")]
+    pub figure: Option<std::path::PathBuf>,
 }
 
 /// The clipping flags.

@@ -164,6 +164,7 @@ fn write_figure(cmd: &Command, report: &Report, style: &Style) -> Result<()> {
     let path = match cmd {
         Command::Basis(c) | Command::View { camera: c, .. } => c.figure.as_ref(),
         Command::Project(a) => a.figure.as_ref(),
+        Command::Window(a) => a.figure.as_ref(),
         Command::Clip(a) => a.figure.as_ref(),
         _ => None,
     };

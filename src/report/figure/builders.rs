@@ -40,6 +40,7 @@ pub fn drawings(r: &Report, st: &Style) -> Vec<Drawing> {
     match r.command.as_str() {
         "basis" | "view" => one("view", super::camera::figure(&p, st)),
         "project" => one("project", super::project::figures(&p, st)),
+        "window" => one("window", super::window::figures(&p, st)),
         "clip" => one("clip", clip_figure(&p, st).map(|f| vec![f])),
         _ => vec![],
     }

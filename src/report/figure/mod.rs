@@ -19,6 +19,7 @@ pub mod layout;
 mod project;
 pub mod svg;
 pub mod tikz;
+mod window;
 
 /// k of the cabinet projection: half length at 45°, 1/(2√2).
 pub const CABINET_K: f64 = 0.353_553_390_593_273_8;
