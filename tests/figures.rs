@@ -522,3 +522,87 @@ fn window_frustum_side_view_and_viewport() {
     has_label(&p[3], "A = (125, 75)");
     same_marks_in_tikz(&d[0]);
 }
+
+// ---- shade ----
+
+/// L = (0, 0, 1), N = (0, 1, 1)/√2, V = (0, 0, 1). By hand:
+/// cos α = L·N = √2/2 (α = 45°); R = 2(L·N)N − L = √2·(0, √2/2, √2/2) −
+/// (0, 0, 1) = (0, 1, 0); cos β = R·V = 0 (β = 90°). Every vector is
+/// drawn 1.5 long from the surface point; Blinn adds H = norm(L + V) =
+/// (0, 0, 1).
+#[test]
+fn shade_vectors_and_angles() {
+    let base = [
+        "shade", "--light", "0,0,1", "--normal", "0,1,1", "--view", "0,0,1", "--color", "1,1,0",
+    ];
+    let f = only(&base);
+    let o = [0.0, 0.0];
+    let n = arrows(&f, Pen::Frame);
+    let h = 2f64.sqrt() / 2.0 * 1.5;
+    assert_eq!(n, vec![(o, cabinet([0.0, h, h]))]);
+    assert_eq!(arrows(&f, Pen::Given), vec![(o, cabinet([0.0, 0.0, 1.5]))]);
+    assert_eq!(arrows(&f, Pen::Vector), vec![(o, cabinet([0.0, 0.0, 1.5]))]);
+    assert_eq!(arrows(&f, Pen::Other), vec![(o, cabinet([0.0, 1.5, 0.0]))]);
+    assert!(arrows(&f, Pen::Tried).is_empty(), "no H for Phong");
+    for want in [
+        "N = (0, √2/2, √2/2)",
+        "L = (0, 0, 1)",
+        "V = (0, 0, 1)",
+        "R = (0, 1, 0)",
+        "α: cos α = √2/2 ≈ 0.7071 (α = 45°)",
+        "β: cos β = 0 (β = 90°)",
+    ] {
+        has_label(&f, want);
+    }
+    // The α arc runs from along L to along N (radius 0.45·1.5).
+    let arcs: Vec<Vec<[f64; 2]>> = f
+        .items
+        .iter()
+        .filter_map(|i| match i {
+            Item::Path { pts, .. } => Some(pts.clone()),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(arcs.len(), 2);
+    let r = 0.45 * 1.5;
+    assert!(near(arcs[0][0], cabinet([0.0, 0.0, r])));
+    let s = r * 2f64.sqrt() / 2.0;
+    assert!(near(*arcs[0].last().unwrap(), cabinet([0.0, s, s])));
+    let blinn = only(&[&base[..], &["--model", "blinn"]].concat());
+    assert_eq!(
+        arrows(&blinn, Pen::Tried),
+        vec![(o, cabinet([0.0, 0.0, 1.5]))]
+    );
+    has_label(&blinn, "H = (0, 0, 1)");
+    let svg = svg_of("shade.svg", &[&base[..], &["--model", "blinn"]].concat());
+    let texts = check_svg(&svg);
+    assert!(texts.iter().any(|t| t == "H = (0, 0, 1)"), "{texts:?}");
+    same_marks_in_tikz(&drawn(&base)[0]);
+}
+
+/// The text's triangle window: top = 0.1·tan 22.5° = (√2 − 1)/10, right =
+/// 2·top = (√2 − 1)/5; far = 10 is 100 times near, so the far window is
+/// not drawn to scale (the label says so) and the edges run on dashed.
+#[test]
+fn window_labels_of_the_triangle_example() {
+    let d = drawn(&["solve", "problems/text-triangle.toml"]);
+    let parts: Vec<&str> = d.iter().map(|x| x.part.as_str()).collect();
+    assert_eq!(parts, ["view", "project", "window"]);
+    let f = &d[2].panels[0];
+    has_label(f, "top = (√2−1)/10 ≈ 0.04142");
+    has_label(f, "right = (√2−1)/5 ≈ 0.08284");
+    has_label(
+        f,
+        "far = 10, far_top = 10√2−10 ≈ 4.142 (far window not to scale)",
+    );
+    assert_eq!(segments(f, Pen::Cut).len(), 4);
+    // The viewport part's pixels: B'' = (1/50, −√2/50) on a window of
+    // width 2(√2−1)/5 gives px = (1/50 + (√2−1)/5)/(2(√2−1)/5)·200
+    // = 100 + 10/(√2−1) = 110 + 10√2.
+    let vp = d[2].panels.last().unwrap();
+    assert!(
+        labels(vp).iter().any(|l| l.starts_with("B = (110+10√2, ")),
+        "{:?}",
+        labels(vp)
+    );
+}

@@ -281,6 +281,9 @@ pub struct ShadeArgs {
     /// Lights (and a Direct3D material) from a TOML file.
     #[arg(long, value_name = "FILE.toml")]
     pub lights: Option<PathBuf>,
+    /// Also draw the figure (the surface, N, L, V, R and H for Blinn, with the angles alpha and beta) into this new SVG file (never overwritten).
+    #[arg(long, value_name = "FILE.svg")]
+    pub figure: Option<std::path::PathBuf>,
 }
 
 /// The `check` flags.

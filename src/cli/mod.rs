@@ -166,6 +166,7 @@ fn write_figure(cmd: &Command, report: &Report, style: &Style) -> Result<()> {
         Command::Project(a) => a.figure.as_ref(),
         Command::Window(a) => a.figure.as_ref(),
         Command::Clip(a) => a.figure.as_ref(),
+        Command::Shade(a) => a.figure.as_ref(),
         _ => None,
     };
     let Some(path) = path else {

@@ -42,6 +42,7 @@ pub fn drawings(r: &Report, st: &Style) -> Vec<Drawing> {
         "project" => one("project", super::project::figures(&p, st)),
         "window" => one("window", super::window::figures(&p, st)),
         "clip" => one("clip", clip_figure(&p, st).map(|f| vec![f])),
+        "shade" => one("shade", super::shade::figure(&p, st).map(|f| vec![f])),
         _ => vec![],
     }
 }

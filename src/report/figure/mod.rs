@@ -17,6 +17,7 @@ pub mod builders;
 mod camera;
 pub mod layout;
 mod project;
+mod shade;
 pub mod svg;
 pub mod tikz;
 mod window;
