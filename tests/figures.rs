@@ -606,3 +606,49 @@ fn window_labels_of_the_triangle_example() {
         labels(vp)
     );
 }
+
+// ---- solve ----
+
+/// `solve --figure T.svg` writes one file per part, T-1-view.svg, …, and
+/// none at all when one of them exists.
+#[test]
+fn solve_writes_one_figure_per_part_and_never_overwrites() {
+    let dir = std::env::temp_dir().join(format!("grafika-solvefig-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let t = dir.join("t.svg");
+    let run = || {
+        let mut c = Command::cargo_bin("grafika").unwrap();
+        c.args(["solve", "problems/text-triangle.toml", "--figure"])
+            .arg(&t);
+        c
+    };
+    run().assert().success();
+    let mut names: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["t-1-view.svg", "t-2-project.svg", "t-3-window.svg"]);
+    for n in &names {
+        check_svg(&std::fs::read_to_string(dir.join(n)).unwrap());
+    }
+    std::fs::remove_file(dir.join("t-1-view.svg")).unwrap();
+    let err = run().assert().code(2);
+    let err = String::from_utf8_lossy(&err.get_output().stderr).to_string();
+    assert!(err.contains("t-2-project.svg exists"), "{err}");
+    assert!(
+        !dir.join("t-1-view.svg").exists(),
+        "nothing is written when one exists"
+    );
+    // The clip example: one part.
+    let c = dir.join("c.svg");
+    Command::cargo_bin("grafika")
+        .unwrap()
+        .args(["solve", "problems/text-clip.toml", "--figure"])
+        .arg(&c)
+        .assert()
+        .success();
+    assert!(dir.join("c-1-clip.svg").exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}

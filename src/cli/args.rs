@@ -108,11 +108,18 @@ pub enum Command {
     Man,
     /// A whole problem from a TOML file.
     #[command(
-        after_help = "Examples / Contoh:\n  grafika solve problems/text-triangle.toml\n  grafika solve - --precision f64 < problems/text-camera.toml"
+        after_help = "Examples / Contoh:\n  grafika solve problems/text-triangle.toml\n  grafika solve problems/text-triangle.toml --figure triangle.svg\n  grafika solve - --precision f64 < problems/text-camera.toml"
     )]
     Solve {
         /// The problem file.
         file: PathBuf,
+        /// Also draw one figure per part of the problem, each into a new SVG
+        /// file named after FILE.svg and the part: FILE-1-view.svg,
+        /// FILE-2-project.svg, FILE-3-window.svg, FILE-4-clip.svg,
+        /// FILE-5-shade.svg (numbered in the order of the parts drawn; none
+        /// is written if any exists).
+        #[arg(long, value_name = "FILE.svg")]
+        figure: Option<PathBuf>,
     },
     /// Mark a student's answers to a problem, and diagnose the mistakes.
     #[command(

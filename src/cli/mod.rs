@@ -55,7 +55,7 @@ fn run_unchecked(cli: &Cli) -> Result<Report> {
         Command::Window(a) => at_precision!(p, window(a)),
         Command::Clip(a) => at_precision!(p, clip(a)),
         Command::Shade(a) => at_precision!(p, shade(a)),
-        Command::Solve { file } => at_precision!(p, solve(file)),
+        Command::Solve { file, .. } => at_precision!(p, solve(file)),
         Command::Check(_)
         | Command::Generate(_)
         | Command::Bench { .. }
@@ -157,8 +157,10 @@ fn man() -> Result<String> {
     Ok(String::from_utf8_lossy(&out).into_owned())
 }
 
-/// `--figure FILE.svg`: the report's drawing as a new SVG file (an
-/// existing file is never overwritten).
+/// `--figure FILE.svg`: the report's drawing as a new SVG file; for
+/// `solve`, one file per part, FILE-1-view.svg, FILE-2-project.svg, …
+/// (docs/spec.md §4). An existing file is never overwritten: when any of
+/// them exists, none is written.
 fn write_figure(cmd: &Command, report: &Report, style: &Style) -> Result<()> {
     use crate::report::figure::{builders::drawings, svg::to_svg};
     let path = match cmd {
@@ -167,14 +169,21 @@ fn write_figure(cmd: &Command, report: &Report, style: &Style) -> Result<()> {
         Command::Window(a) => a.figure.as_ref(),
         Command::Clip(a) => a.figure.as_ref(),
         Command::Shade(a) => a.figure.as_ref(),
+        Command::Solve { figure, .. } => figure.as_ref(),
         _ => None,
     };
     let Some(path) = path else {
         return Ok(());
     };
     let all = drawings(report, style);
-    let files: Vec<(std::path::PathBuf, String)> =
-        all.iter().map(|d| (path.clone(), to_svg(d))).collect();
+    let files: Vec<(std::path::PathBuf, String)> = match cmd {
+        Command::Solve { .. } => all
+            .iter()
+            .enumerate()
+            .map(|(k, d)| (part_file(path, k + 1, &d.part), to_svg(d)))
+            .collect(),
+        _ => all.iter().map(|d| (path.clone(), to_svg(d))).collect(),
+    };
     if let Some((p, _)) = files.iter().find(|(p, _)| p.exists()) {
         let m = Msg::Figure(FigureMsg::Exists(p.display().to_string()));
         return Err(Error::said("figure", m));
@@ -183,6 +192,16 @@ fn write_figure(cmd: &Command, report: &Report, style: &Style) -> Result<()> {
         create_new(p, svg.as_bytes(), "figure")?;
     }
     Ok(())
+}
+
+/// `solve`'s file for part k: FILE.svg → FILE-k-PART.svg.
+pub fn part_file(path: &std::path::Path, k: usize, part: &str) -> std::path::PathBuf {
+    let stem = path.file_stem().unwrap_or_default().to_string_lossy();
+    let ext = path
+        .extension()
+        .map(|e| e.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "svg".into());
+    path.with_file_name(format!("{stem}-{k}-{part}.{ext}"))
 }
 
 /// Whether a command's result is a worked solution (a report) that
