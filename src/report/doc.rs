@@ -13,7 +13,8 @@ use crate::stages::trace::{Step, Val};
 pub enum Doc {
     /// GitHub-flavoured Markdown.
     Markdown,
-    /// LaTeX (article class, no packages beyond the base distribution).
+    /// LaTeX (article class; geometry and, for the figures, TikZ: Debian's
+    /// texlive-latex-base and texlive-pictures).
     Latex,
     /// One self-contained HTML page, formulas in MathML (`report::html`).
     Html,

@@ -47,6 +47,15 @@ pub struct Placed {
     pub text: String,
 }
 
+impl Placed {
+    /// The box the label's text takes, px: left, right, top, bottom (the
+    /// width estimated from the characters).
+    pub fn bounds(&self) -> (f64, f64, f64, f64) {
+        let (l, r) = span(self.x, text_width(&self.text), self.anchor);
+        (l, r, self.y - 12.0, self.y + 4.0)
+    }
+}
+
 /// A panel laid out: page units to px, its height, its labels.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Laid {
@@ -128,8 +137,10 @@ fn width_at(s: f64, e: &Extents) -> (f64, f64) {
     }
     // A label needs at least half its width on each side of its point
     // (it moves to the side where it fits when placed).
+    // A label wider than half the page counts as half the page (it may
+    // stand beside the drawing).
     for (p, _, _, _, w) in &e.1 {
-        let (l, r) = span(p[0] * s, *w, Anchor::Middle);
+        let (l, r) = span(p[0] * s, w.min(WIDTH / 2.0), Anchor::Middle);
         lo = lo.min(l);
         hi = hi.max(r);
     }

@@ -3,7 +3,7 @@
 //! projection), the side view with fovy and top, the window on the near
 //! plane with the projected points, and the viewport with their pixels.
 
-use super::builders::{input_num, num_val, nums_of, panel, result, say, Part};
+use super::builders::{input_num, num_val, nums_of, panel, result, say, vec_val, Part};
 use super::{cabinet, label, label_at, labelled, short, Figure, Item, Pen, Place};
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
@@ -105,7 +105,7 @@ fn frustum(p: &Part, st: &Style, near: f64, w: Win) -> Figure {
         }
     }
     if let Some((f, fw)) = far {
-        let mut text = format!(
+        let text = format!(
             "far = {}, far_top = {}",
             st.val_inline(&num_val(f)),
             shown(p, st, "far_top")
@@ -119,11 +119,13 @@ fn frustum(p: &Part, st: &Style, near: f64, w: Win) -> Figure {
                 cabinet([fw[1], fw[3], -f])
             }
             None => {
-                text = format!("{text} ({})", say(st, FigureMsg::Word(FigWord::NotToScale)));
-                cabinet([2.0 * w[1], 2.0 * w[3], -2.0 * near])
+                let note = format!("({})", say(st, FigureMsg::Word(FigWord::NotToScale)));
+                let at = cabinet([2.0 * w[1], 2.0 * w[3], -2.0 * near]);
+                items.push(label_at(at, note, Place::AboveLeft));
+                at
             }
         };
-        items.push(label_at(corner, text, Place::AboveRight));
+        items.push(label_at(corner, text, Place::AboveLeft));
     }
     items.push(Item::Dot {
         at: [0.0, 0.0],
@@ -262,12 +264,9 @@ fn viewport(p: &Part, st: &Style) -> Option<Figure> {
         pts: vec![[0.0, 0.0], [vw, 0.0], [vw, vh], [0.0, vh]],
         pen: Pen::Frame,
     }];
-    items.push(label_at([0.0, 0.0], "(0, 0)", Place::BelowLeft));
-    let size = format!(
-        "({}, {})",
-        st.val_inline(&num_val(vw)),
-        st.val_inline(&num_val(vh))
-    );
+    let origin = st.val_inline(&vec_val(&[0.0, 0.0]));
+    items.push(label_at([0.0, 0.0], origin, Place::BelowLeft));
+    let size = st.val_inline(&vec_val(&[vw, vh]));
     items.push(label_at([vw, vh], size, Place::AboveRight));
     for (name, v) in px {
         let n = nums_of(v)?;
