@@ -683,3 +683,48 @@ fn solve_writes_one_figure_per_part_and_never_overwrites() {
     assert!(dir.join("c-1-clip.svg").exists());
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The figures README shows are what README's commands write today
+/// (docs/images/, byte for byte).
+#[test]
+fn readme_figures_are_what_the_commands_write() {
+    let dir = std::env::temp_dir().join(format!("grafika-readme-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let run = |args: &[&str], file: &str| {
+        Command::cargo_bin("grafika")
+            .unwrap()
+            .env_remove("GRAFIKA_LANG")
+            .env_remove("LC_ALL")
+            .env_remove("LC_MESSAGES")
+            .env("LANG", "C")
+            .args(args)
+            .arg("--figure")
+            .arg(dir.join(file))
+            .assert()
+            .success();
+    };
+    run(
+        &[
+            "clip", "--min", "0,0,0", "--max", "3,4,3", "--from", "4,2,2", "--to", "-2,6,1",
+        ],
+        "clip.svg",
+    );
+    run(&["solve", "problems/text-camera.toml"], "camera.svg");
+    run(&["solve", "problems/text-triangle.toml"], "triangle.svg");
+    for f in [
+        "clip.svg",
+        "camera-1-view.svg",
+        "triangle-1-view.svg",
+        "triangle-2-project.svg",
+        "triangle-3-window.svg",
+    ] {
+        let now = std::fs::read_to_string(dir.join(f)).unwrap();
+        let shown = std::fs::read_to_string(format!("docs/images/{f}")).unwrap();
+        assert!(
+            now == shown,
+            "docs/images/{f} is stale: rerun README's command"
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
