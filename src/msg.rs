@@ -10,9 +10,11 @@
 
 mod drawn;
 mod errors;
+mod figure;
 mod pixel;
 pub use drawn::{CameraText, DrawnTitle, ShadeAsked, Statement};
 pub use errors::{Bound, ClapErr, ErrMsg, IoWhy, NumErr, Thing, TomlErr, Twice, Want};
+pub use figure::{FigWord, FigureMsg, Panel};
 pub use pixel::PixelMsg;
 
 /// A term of the lighting sum.
@@ -380,6 +382,8 @@ pub enum Msg {
     ErrFewDistinct(String, String, usize),
     /// `--html` given to a command that writes no worked solution.
     ErrHtmlCommand,
+    /// A figure's words, or an error of a `--figure`/`--html` file.
+    Figure(FigureMsg),
 
     // ---- warnings ----
     /// Up nearly parallel to the view direction (angle in radians).

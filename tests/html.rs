@@ -38,10 +38,105 @@ fn well_formed(html: &str) {
     assert!(doc.is_ok(), "{:?}", doc.err());
 }
 
-/// Nothing is fetched: no script, no link, no external image or font.
+/// Nothing is fetched: no script, no link, no external image or font
+/// (`url(#…)` names a marker inside the page itself).
 fn self_contained(html: &str) {
-    for bad in ["<script", "<link", " src=", " href=", "@import", "url("] {
+    for bad in ["<script", "<link", " src=", " href=", "@import"] {
         assert!(!html.contains(bad), "the page has {bad}");
+    }
+    for (i, _) in html.match_indices("url(") {
+        assert!(
+            html[i + 4..].starts_with('#'),
+            "the page fetches {}",
+            &html[i..i + 20]
+        );
+    }
+}
+
+/// Every `id` in the page is unique (several inline SVGs each define their
+/// arrow heads).
+fn unique_ids(html: &str) {
+    let mut ids: Vec<&str> = html
+        .match_indices(" id=\"")
+        .map(|(i, _)| {
+            let rest = &html[i + 5..];
+            &rest[..rest.find('"').unwrap_or(0)]
+        })
+        .collect();
+    let n = ids.len();
+    ids.sort();
+    ids.dedup();
+    assert_eq!(ids.len(), n, "an id is repeated");
+}
+
+/// `--html` on every calculator command and on `solve` writes a page with
+/// the figure inline (solve: one per part; the triangle has view, project
+/// and window).
+#[test]
+fn every_command_has_its_figures_inline() {
+    let cam = ["--eye", "3,1,3", "--look", "2,1,2", "--up", "0,1,0"];
+    let cases: Vec<(&str, Vec<&str>, usize)> = vec![
+        ("basis.html", [&["basis"], &cam[..]].concat(), 1),
+        (
+            "view.html",
+            [&["view"], &cam[..], &["--point", "A=0,0,0"]].concat(),
+            1,
+        ),
+        (
+            "project.html",
+            vec!["project", "--d", "-0.1", "--point", "A=0,-1,-6/sqrt(2)"],
+            1,
+        ),
+        (
+            "window.html",
+            vec![
+                "window",
+                "--fovy",
+                "45",
+                "--aspect",
+                "2",
+                "--near",
+                "0.1",
+                "--viewport",
+                "200x100",
+                "--point",
+                "A=0,-sqrt(2)/60",
+            ],
+            1,
+        ),
+        (
+            "clip.html",
+            vec![
+                "clip", "--min", "0,0,0", "--max", "3,4,3", "--from", "4,2,2", "--to", "-2,6,1",
+            ],
+            1,
+        ),
+        (
+            "shade.html",
+            vec![
+                "shade", "--light", "0,0,1", "--normal", "0,1,1", "--color", "1,1,0", "--model",
+                "blinn",
+            ],
+            1,
+        ),
+        (
+            "solve.html",
+            vec!["solve", "problems/text-triangle.toml"],
+            3,
+        ),
+        (
+            "solve-clip.html",
+            vec!["solve", "problems/text-clip.toml"],
+            1,
+        ),
+    ];
+    for (name, args, figures) in cases {
+        let html = page(name, &args);
+        well_formed(&html);
+        self_contained(&html);
+        unique_ids(&html);
+        assert_eq!(html.matches("<figure>\n<svg ").count(), figures, "{name}");
+        assert!(html.contains("<figcaption>"), "{name}");
     }
 }
 
@@ -145,6 +240,9 @@ fn generate_writes_html_sheets_and_keys() {
     }
     let key = std::fs::read_to_string(dir.join("key.html")).unwrap();
     assert!(key.contains("<section class=\"step\">") && key.contains("<math"));
+    // The exam's two problems (a view and a clip) each have a figure.
+    assert_eq!(key.matches("<figure>\n<svg ").count(), 2);
+    unique_ids(&key);
     let q = std::fs::read_to_string(dir.join("questions.html")).unwrap();
     assert!(
         !q.contains("<section class=\"step\">"),

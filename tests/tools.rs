@@ -18,7 +18,10 @@ fn main() {
             "chromium renders the triangle page",
             chromium as fn(&Path) -> Outcome,
         ),
-        ("pdflatex compiles an exam key", pdflatex),
+        (
+            "pdflatex compiles an exam key with its TikZ figures",
+            pdflatex,
+        ),
     ] {
         match check(&dir) {
             Outcome::Passed => println!("test {name} ... ok"),
@@ -117,12 +120,13 @@ fn pdflatex(dir: &Path) -> Outcome {
         return Outcome::Skipped("no pdflatex (run .ci/install-test-tools)".into());
     }
     let out = dir.join("exam");
+    // One problem of each topic, so the key has every kind of figure.
     let args = [
         "generate",
         "--topic",
-        "pipeline,clip",
+        "basis,view,project,window,clip,shade,pipeline",
         "--count",
-        "2",
+        "7",
         "--seed",
         "3",
         "--format",
@@ -131,6 +135,14 @@ fn pdflatex(dir: &Path) -> Outcome {
     ];
     if let Err(e) = grafika(&[&args[..], &[&s(&out)]].concat()) {
         return Outcome::Failed(e);
+    }
+    let key = std::fs::read_to_string(out.join("key.tex")).unwrap_or_default();
+    // Every problem of these topics has a figure of one panel or more.
+    let pictures = key.matches("\\begin{tikzpicture}").count();
+    if pictures < 7 {
+        return Outcome::Failed(format!(
+            "the key has {pictures} TikZ pictures, not one per problem at least"
+        ));
     }
     let run = Command::new("pdflatex")
         .args(["-interaction=nonstopmode", "-halt-on-error", "key.tex"])

@@ -108,11 +108,18 @@ pub enum Command {
     Man,
     /// A whole problem from a TOML file.
     #[command(
-        after_help = "Examples / Contoh:\n  grafika solve problems/text-triangle.toml\n  grafika solve - --precision f64 < problems/text-camera.toml"
+        after_help = "Examples / Contoh:\n  grafika solve problems/text-triangle.toml\n  grafika solve problems/text-triangle.toml --figure triangle.svg\n  grafika solve - --precision f64 < problems/text-camera.toml"
     )]
     Solve {
         /// The problem file.
         file: PathBuf,
+        /// Also draw one figure per part of the problem, each into a new SVG
+        /// file named after FILE.svg and the part: FILE-1-view.svg,
+        /// FILE-2-project.svg, FILE-3-window.svg, FILE-4-clip.svg,
+        /// FILE-5-shade.svg (numbered in the order of the parts drawn; none
+        /// is written if any exists).
+        #[arg(long, value_name = "FILE.svg")]
+        figure: Option<PathBuf>,
     },
     /// Mark a student's answers to a problem, and diagnose the mistakes.
     #[command(
@@ -149,6 +156,9 @@ pub struct CameraArgs {
     /// Up vector Vup, X,Y,Z.
     #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
     pub up: String,
+    /// Also draw the figure (world axes, Peye, Pref, Vup, u, v, n at the eye and the points, cabinet oblique projection) into this new SVG file (never overwritten).
+    #[arg(long, value_name = "FILE.svg")]
+    pub figure: Option<std::path::PathBuf>,
 }
 
 /// The projection flags.
@@ -166,6 +176,9 @@ pub struct ProjectArgs {
     /// Orthographic projection (xp = x, yp = y, zp = 0).
     #[arg(long)]
     pub ortho: bool,
+    /// Also draw the figure (centre of projection, view plane and projectors in 3D; the side view y-z with the similar triangles; the images on the view plane) into this new SVG file (never overwritten).
+    #[arg(long, value_name = "FILE.svg")]
+    pub figure: Option<std::path::PathBuf>,
     /// An eye-coordinate point NAME=X,Y,Z (repeatable).
     #[arg(long = "point", value_name = "NAME=X,Y,Z", allow_hyphen_values = true)]
     pub points: Vec<String>,
@@ -192,6 +205,9 @@ pub struct WindowArgs {
     /// A projected point NAME=X,Y on the near plane (repeatable; needs --viewport).
     #[arg(long = "point", value_name = "NAME=X,Y", allow_hyphen_values = true)]
     pub points: Vec<String>,
+    /// Also draw the figure (the view volume with the near and far windows; the side view with fovy and top; the points on the window; the viewport with their pixels) into this new SVG file (never overwritten).
+    #[arg(long, value_name = "FILE.svg")]
+    pub figure: Option<std::path::PathBuf>,
 }
 
 /// The clipping flags.
@@ -209,7 +225,7 @@ pub struct ClipArgs {
     /// Segment end P1.
     #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
     pub to: String,
-    /// Also draw the figure (box, segment, intersections) into this new SVG file.
+    /// Also draw the figure (box, segment, intersections with t and outcode; kept part solid, cut-off parts dashed) into this new SVG file (never overwritten).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
@@ -272,6 +288,9 @@ pub struct ShadeArgs {
     /// Lights (and a Direct3D material) from a TOML file.
     #[arg(long, value_name = "FILE.toml")]
     pub lights: Option<PathBuf>,
+    /// Also draw the figure (the surface, N, L, V, R and H for Blinn, with the angles alpha and beta) into this new SVG file (never overwritten).
+    #[arg(long, value_name = "FILE.svg")]
+    pub figure: Option<std::path::PathBuf>,
 }
 
 /// The `check` flags.

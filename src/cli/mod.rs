@@ -11,7 +11,7 @@ pub mod render;
 
 use crate::bench::accuracy::Stage;
 use crate::error::{Error, Result};
-use crate::msg::{ErrMsg, IoWhy, Msg};
+use crate::msg::{ErrMsg, FigureMsg, IoWhy, Msg};
 use crate::num::Precision;
 use crate::report::lang::{tr, Lang};
 use crate::report::Style;
@@ -53,7 +53,7 @@ fn run_unchecked(cli: &Cli) -> Result<Report> {
         Command::Window(a) => at_precision!(p, window(a)),
         Command::Clip(a) => at_precision!(p, clip(a)),
         Command::Shade(a) => at_precision!(p, shade(a)),
-        Command::Solve { file } => at_precision!(p, solve(file)),
+        Command::Solve { file, .. } => at_precision!(p, solve(file)),
         Command::Check(_)
         | Command::Generate(_)
         | Command::Bench { .. }
@@ -151,18 +151,51 @@ fn man() -> Result<String> {
     Ok(String::from_utf8_lossy(&out).into_owned())
 }
 
-/// `--figure FILE.svg`: the report's figure as a new SVG file (an existing
-/// file is never overwritten).
+/// `--figure FILE.svg`: the report's drawing as a new SVG file; for
+/// `solve`, one file per part, FILE-1-view.svg, FILE-2-project.svg, …
+/// (docs/spec.md §4). An existing file is never overwritten: when any of
+/// them exists, none is written.
 fn write_figure(cmd: &Command, report: &Report, style: &Style) -> Result<()> {
-    use crate::report::figure::{builders::figure_of, svg::to_svg};
+    use crate::report::figure::{builders::drawings, svg::to_svg};
     let path = match cmd {
+        Command::Basis(c) | Command::View { camera: c, .. } => c.figure.as_ref(),
+        Command::Project(a) => a.figure.as_ref(),
+        Command::Window(a) => a.figure.as_ref(),
         Command::Clip(a) => a.figure.as_ref(),
+        Command::Shade(a) => a.figure.as_ref(),
+        Command::Solve { figure, .. } => figure.as_ref(),
         _ => None,
     };
-    let (Some(path), Some(fig)) = (path, figure_of(report, style)) else {
+    let Some(path) = path else {
         return Ok(());
     };
-    create_new(path, to_svg(&fig).as_bytes(), "figure")
+    let all = drawings(report, style);
+    let files: Vec<(std::path::PathBuf, String)> = match cmd {
+        Command::Solve { .. } => all
+            .iter()
+            .enumerate()
+            .map(|(k, d)| (part_file(path, k + 1, &d.part), to_svg(d)))
+            .collect(),
+        _ => all.iter().map(|d| (path.clone(), to_svg(d))).collect(),
+    };
+    if let Some((p, _)) = files.iter().find(|(p, _)| p.exists()) {
+        let m = Msg::Figure(FigureMsg::Exists(p.display().to_string()));
+        return Err(Error::said("figure", m));
+    }
+    for (p, svg) in &files {
+        create_new(p, svg.as_bytes(), "figure")?;
+    }
+    Ok(())
+}
+
+/// `solve`'s file for part k: FILE.svg → FILE-k-PART.svg.
+pub fn part_file(path: &std::path::Path, k: usize, part: &str) -> std::path::PathBuf {
+    let stem = path.file_stem().unwrap_or_default().to_string_lossy();
+    let ext = path
+        .extension()
+        .map(|e| e.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "svg".into());
+    path.with_file_name(format!("{stem}-{k}-{part}.{ext}"))
 }
 
 /// Whether a command's result is a worked solution (a report) that
@@ -182,13 +215,13 @@ fn writes_a_report(c: &Command) -> bool {
 /// `--html FILE.html`: the worked solution as a new self-contained page
 /// (an existing file is never overwritten).
 fn write_html(cli: &Cli, report: &Report, style: &Style) -> Result<()> {
-    use crate::report::figure::{builders::figure_of, svg::to_svg};
+    use crate::report::figure::{builders::drawings, svg::to_svg};
     let Some(path) = &cli.common.html else {
         return Ok(());
     };
-    let figures: Vec<(String, String)> = figure_of(report, style)
-        .map(|f| (to_svg(&f), f.title.clone()))
-        .into_iter()
+    let figures: Vec<(String, String)> = drawings(report, style)
+        .iter()
+        .map(|d| (to_svg(d), d.title()))
         .collect();
     let title = page_title(report, style);
     let page = crate::report::html::report_page(report, style, &title, &figures);

@@ -13,7 +13,8 @@ use crate::stages::trace::{Step, Val};
 pub enum Doc {
     /// GitHub-flavoured Markdown.
     Markdown,
-    /// LaTeX (article class, no packages beyond the base distribution).
+    /// LaTeX (article class; geometry and, for the figures, TikZ: Debian's
+    /// texlive-latex-base and texlive-pictures).
     Latex,
     /// One self-contained HTML page, formulas in MathML (`report::html`).
     Html,
@@ -207,13 +208,39 @@ impl Doc {
         }
     }
 
+    /// The figures of a report: TikZ pictures in LaTeX, inline SVG in HTML
+    /// (each with its title as the caption); Markdown has none (a key in
+    /// Markdown is text only).
+    pub fn figures(self, r: &Report, st: &Style) -> String {
+        use crate::report::figure::{builders::drawings, svg::to_svg, tikz::to_tikz};
+        let all = drawings(r, st);
+        match self {
+            Doc::Markdown => String::new(),
+            Doc::Html => all
+                .iter()
+                .map(|d| html::figure(&to_svg(d), &d.title()))
+                .collect(),
+            Doc::Latex => all
+                .iter()
+                .map(|d| {
+                    format!(
+                        "\\begin{{center}}\n{}{{\\small {}}}\n\\end{{center}}\n\n",
+                        to_tikz(d),
+                        latex_text(&d.title())
+                    )
+                })
+                .collect(),
+        }
+    }
+
     /// A whole document around a body.
     pub fn document(self, title: &str, body: &str, lang: Lang) -> String {
         match self {
             Doc::Html => html::page(title, body, lang.code()),
             Doc::Markdown => format!("# {}\n\n{body}", self.text(title)),
             Doc::Latex => format!(
-                "\\documentclass[11pt]{{article}}\n\\usepackage[margin=2cm]{{geometry}}\n\\setlength{{\\parindent}}{{0pt}}\n\\title{{{}}}\n\\date{{}}\n\\begin{{document}}\n\\maketitle\n\n{body}\\end{{document}}\n",
+                "\\documentclass[11pt]{{article}}\n\\usepackage[margin=2cm]{{geometry}}\n\\usepackage{{tikz}}\n{}\\setlength{{\\parindent}}{{0pt}}\n\\title{{{}}}\n\\date{{}}\n\\begin{{document}}\n\\maketitle\n\n{body}\\end{{document}}\n",
+                crate::report::figure::tikz::preamble(),
                 latex_text(title)
             ),
         }

@@ -89,6 +89,11 @@ pub fn sheets(doc: Doc, exam: &[Generated], st: &Style) -> (String, String) {
         }
         k.push_str(&doc.heading(2, st.tr("Answers", "Jawaban")));
         k.push_str(&doc.answers(st, &answers(g)));
+        let figures = doc.figures(&g.report, st);
+        if !figures.is_empty() {
+            k.push_str(&doc.heading(2, st.tr("Figures", "Gambar")));
+            k.push_str(&figures);
+        }
         k.push_str(&doc.heading(2, st.tr("Worked solution", "Penyelesaian")));
         k.push_str(&doc.steps(&g.report, st));
     }

@@ -7,6 +7,7 @@ use crate::msg::{LightPart, Msg, SpotZone, Term, Trivial};
 
 mod drawn;
 pub mod errors;
+mod figure;
 mod pixel;
 
 /// The words of `m` in `lang`.
@@ -59,6 +60,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             "writes the worked solution of basis, view, project, window, clip, shade, solve and render; for exams use generate --format html",
             "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html",
         ),
+        Msg::Figure(f) => figure::figure(f, lang),
         Msg::At(place, m) => format!("{place}: {}", words(m, lang)),
         Msg::Err(e) => errors::error(e, lang),
         Msg::ErrSamePoint(_)
@@ -890,6 +892,7 @@ mod tests {
         }
         v.push(Msg::ErrFewDistinct("window".into(), "easy".into(), 20));
         v.push(Msg::ErrHtmlCommand);
+        v.extend(figure_messages());
         v.extend(drawn_messages());
         v.push(Msg::Unreadable(crate::msg::NumErr::DivZero("1/0".into())));
         v.push(Msg::Written("as for B".into(), Some("seperti B".into())));
@@ -897,6 +900,32 @@ mod tests {
         v.extend(errors::tests::every_error().into_iter().map(Msg::Err));
         v.extend(pixel::every().into_iter().map(Msg::Pixel));
         v
+    }
+
+    /// Every figure message.
+    fn figure_messages() -> Vec<Msg> {
+        use crate::msg::{FigWord as W, FigureMsg as F, Panel as P};
+        let panels = [
+            P::Camera,
+            P::Projection,
+            P::ProjectionSide,
+            P::ViewPlane,
+            P::Frustum,
+            P::WindowSide,
+            P::NearWindow,
+            P::Viewport,
+            P::Clip,
+            P::Shade,
+        ];
+        let words = [W::Cop, W::Eye, W::NotToScale, W::Surface];
+        let mut v: Vec<F> = panels
+            .iter()
+            .flat_map(|p| [F::Title(*p), F::Desc(*p)])
+            .collect();
+        v.extend(words.map(F::Word));
+        v.push(F::Exists("a.svg".into()));
+        v.push(F::Unwritable("a.svg".into(), "denied".into()));
+        v.into_iter().map(Msg::Figure).collect()
     }
 
     /// Every title and statement of a generated problem.
@@ -1110,7 +1139,8 @@ mod tests {
             | Pixel(_)
             | Statement(_)
             | ErrFewDistinct(..)
-            | ErrHtmlCommand => {}
+            | ErrHtmlCommand
+            | Figure(_) => {}
         }
     }
 

@@ -1,44 +1,216 @@
-//! Figure descriptions built from a report: its input and the named results
-//! the worked steps show (so every label's value is a result's value).
+//! Drawings built from a report: its input and the named results the
+//! worked steps show (so every label's value is a result's value). A
+//! calculator command gives one drawing; `solve` one per part of the
+//! problem (view, project, window, clip, shade).
 
-use super::{cabinet, Figure, Item, Pen};
-use crate::report::lang::tr;
+use super::{cabinet, label, label_at, short, Drawing, Figure, Item, Pen, Place};
+use crate::msg::{FigureMsg, Msg, Panel};
 use crate::report::Style;
-use crate::stages::trace::{Report, Val};
-use serde_json::Value;
+use crate::stages::trace::{Report, Step, Val};
+use serde_json::{json, Value};
 
-/// The figure of a report, when its command draws one (`clip` so far).
-pub fn figure_of(r: &Report, style: &Style) -> Option<Figure> {
+/// What one part's drawing is made from: the inputs (in the calculator's
+/// JSON layout), the named results and the steps.
+pub(super) struct Part<'a> {
+    /// The inputs.
+    pub inp: &'a Value,
+    /// The named results.
+    pub res: &'a [(String, Val)],
+    /// The worked steps (vectors that are not results: N, L, V).
+    pub steps: &'a [Step],
+}
+
+/// The drawings of a report: one for a calculator command, one per part
+/// for `solve`, none for a command without figures.
+pub fn drawings(r: &Report, st: &Style) -> Vec<Drawing> {
+    let p = Part {
+        inp: &r.input,
+        res: &r.result,
+        steps: &r.steps,
+    };
+    let one = |part: &str, panels: Option<Vec<Figure>>| {
+        panels
+            .map(|panels| Drawing {
+                part: part.into(),
+                panels,
+            })
+            .into_iter()
+            .collect()
+    };
     match r.command.as_str() {
-        "clip" => clip_figure(r, style),
-        _ => None,
+        "basis" | "view" => one("view", super::camera::figure(&p, st)),
+        "project" => one("project", super::project::figures(&p, st)),
+        "window" => one("window", super::window::figures(&p, st)),
+        "clip" => one("clip", clip_figure(&p, st).map(|f| vec![f])),
+        "shade" => one("shade", super::shade::figure(&p, st).map(|f| vec![f])),
+        "solve" => solve_drawings(r, st),
+        _ => vec![],
     }
+}
+
+/// The drawings of `solve`, in the order of its parts.
+fn solve_drawings(r: &Report, st: &Style) -> Vec<Drawing> {
+    let mut out = Vec::new();
+    let mut add = |part: String, panels: Option<Vec<Figure>>| {
+        if let Some(panels) = panels {
+            out.push(Drawing { part, panels });
+        }
+    };
+    let inp = &r.input;
+    let steps = &r.steps[..];
+    if let Some(Val::Map(view)) = result(&r.result, "view") {
+        let mut i = inp.get("camera").cloned().unwrap_or(Value::Null);
+        i["points"] = inp.get("points").cloned().unwrap_or(Value::Null);
+        let p = Part {
+            inp: &i,
+            res: view,
+            steps,
+        };
+        add("view".into(), super::camera::figure(&p, st));
+    }
+    if let Some(Val::Map(proj)) = result(&r.result, "project") {
+        let i = json!({ "projection": { "d": plane_d(r) } });
+        let eyes = eye_points(r);
+        let mut res = proj.clone();
+        res.push(("eye".into(), Val::Map(eyes)));
+        let p = Part {
+            inp: &i,
+            res: &res,
+            steps,
+        };
+        add("project".into(), super::project::figures(&p, st));
+    }
+    if let Some(Val::Map(win)) = result(&r.result, "window") {
+        add("window".into(), solve_window(r, win, st));
+    }
+    match result(&r.result, "clip") {
+        Some(Val::Map(c)) => add("clip".into(), solve_clip(inp, 0, c, st)),
+        Some(Val::List(cs)) => {
+            for (k, c) in cs.iter().enumerate() {
+                if let Val::Map(c) = c {
+                    add(format!("clip-{}", k + 1), solve_clip(inp, k, c, st));
+                }
+            }
+        }
+        _ => {}
+    }
+    if let Some(Val::Map(sh)) = result(&r.result, "shade") {
+        let p = Part {
+            inp,
+            res: sh,
+            steps,
+        };
+        add(
+            "shade".into(),
+            super::shade::figure(&p, st).map(|f| vec![f]),
+        );
+    }
+    out
+}
+
+/// The window part of `solve`: the perspective inputs, the window results,
+/// the pixels of the viewport part and the projected points.
+fn solve_window(r: &Report, win: &[(String, Val)], st: &Style) -> Option<Vec<Figure>> {
+    let per = r.input.get("perspective")?;
+    let mut res = win.to_vec();
+    if let Some(Val::Map(vp)) = result(&r.result, "viewport") {
+        res.extend(vp.iter().cloned());
+    }
+    let mut i = per.clone();
+    if let Some(Val::Map(proj)) = result(&r.result, "project") {
+        if let Some(pts) = result(proj, "points") {
+            res.push(("window_points".into(), pts.clone()));
+        }
+    }
+    if result(&r.result, "viewport").is_none() {
+        i["viewport"] = Value::Null;
+    }
+    let p = Part {
+        inp: &i,
+        res: &res,
+        steps: &r.steps,
+    };
+    super::window::figures(&p, st)
+}
+
+/// Segment k of `solve`'s clip part, its ends resolved from named points.
+fn solve_clip(inp: &Value, k: usize, c: &[(String, Val)], st: &Style) -> Option<Vec<Figure>> {
+    let clip = inp.get("clip")?;
+    let seg = clip.get("segment")?.get(k)?;
+    let end = |key: &str| match seg.get(key)? {
+        Value::String(name) => inp.get("points")?.get(name).cloned(),
+        v => Some(v.clone()),
+    };
+    let i = json!({ "min": clip.get("min")?, "max": clip.get("max")?, "from": end("from")?, "to": end("to")? });
+    let p = Part {
+        inp: &i,
+        res: c,
+        steps: &[],
+    };
+    clip_figure(&p, st).map(|f| vec![f])
+}
+
+/// d of `solve`'s projection: the step that states it.
+fn plane_d(r: &Report) -> Value {
+    r.steps
+        .iter()
+        .flat_map(|s| &s.result)
+        .find(|(k, _)| k == "d")
+        .and_then(|(_, v)| match v {
+            Val::Num(s) => Some(json!(s.value)),
+            _ => None,
+        })
+        .unwrap_or(Value::Null)
+}
+
+/// The eye coordinates of `solve`'s points: the results of the steps
+/// `A' = …` (also when the view is not asked for).
+fn eye_points(r: &Report) -> Vec<(String, Val)> {
+    let mut out: Vec<(String, Val)> = Vec::new();
+    for (k, v) in r.steps.iter().flat_map(|s| &s.result) {
+        if let Some(name) = k.strip_suffix('\'') {
+            if !name.ends_with('\'') && vec_of(v).is_some() && !out.iter().any(|(n, _)| n == name) {
+                out.push((name.to_string(), v.clone()));
+            }
+        }
+    }
+    out
 }
 
 /// A result by key.
-fn result<'a>(r: &'a Report, key: &str) -> Option<&'a Val> {
-    r.result.iter().find(|(k, _)| k == key).map(|(_, v)| v)
+pub(super) fn result<'a>(res: &'a [(String, Val)], key: &str) -> Option<&'a Val> {
+    res.iter().find(|(k, _)| k == key).map(|(_, v)| v)
 }
 
-/// Numbers of a vector value.
-fn vec_of(v: &Val) -> Option<[f64; 3]> {
+/// The numbers of a value that is a list of numbers.
+pub(super) fn nums_of(v: &Val) -> Option<Vec<f64>> {
     match v {
-        Val::List(xs) if xs.len() == 3 => {
-            let mut o = [0.0; 3];
-            for (k, x) in xs.iter().enumerate() {
-                match x {
-                    Val::Num(s) => o[k] = s.value,
-                    _ => return None,
-                }
-            }
-            Some(o)
-        }
+        Val::List(xs) => xs
+            .iter()
+            .map(|x| match x {
+                Val::Num(s) => Some(s.value),
+                _ => None,
+            })
+            .collect(),
         _ => None,
     }
 }
 
+/// Numbers of a 3-vector value.
+pub(super) fn vec_of(v: &Val) -> Option<[f64; 3]> {
+    match nums_of(v)?[..] {
+        [x, y, z] => Some([x, y, z]),
+        _ => None,
+    }
+}
+
+/// A number of the inputs.
+pub(super) fn input_num(v: &Value, key: &str) -> Option<f64> {
+    v.get(key)?.as_f64()
+}
+
 /// Numbers of an input vector.
-fn input3(v: &Value, key: &str) -> Option<[f64; 3]> {
+pub(super) fn input3(v: &Value, key: &str) -> Option<[f64; 3]> {
     let a = v.get(key)?.as_array()?;
     Some([
         a.first()?.as_f64()?,
@@ -47,8 +219,75 @@ fn input3(v: &Value, key: &str) -> Option<[f64; 3]> {
     ])
 }
 
+/// An input number as a value for a label.
+pub(super) fn num_val(x: f64) -> Val {
+    Val::Num(crate::num::Shown {
+        value: x,
+        exact: None,
+        pretty: None,
+    })
+}
+
+/// An input point as a value for a label.
+pub(super) fn vec_val(p: &[f64]) -> Val {
+    Val::List(p.iter().map(|x| num_val(*x)).collect())
+}
+
+/// The words of a figure message.
+pub(super) fn say(st: &Style, m: FigureMsg) -> String {
+    st.w(&Msg::Figure(m))
+}
+
+/// A panel: its title and description in the chosen language, its marks.
+pub(super) fn panel(st: &Style, which: Panel, items: Vec<Item>) -> Figure {
+    Figure {
+        title: say(st, FigureMsg::Title(which)),
+        desc: say(st, FigureMsg::Desc(which)),
+        items,
+    }
+}
+
+/// `a + k·b`.
+pub(super) fn along(a: [f64; 3], b: [f64; 3], k: f64) -> [f64; 3] {
+    [a[0] + k * b[0], a[1] + k * b[1], a[2] + k * b[2]]
+}
+
+/// `b − a`.
+pub(super) fn minus(b: [f64; 3], a: [f64; 3]) -> [f64; 3] {
+    [b[0] - a[0], b[1] - a[1], b[2] - a[2]]
+}
+
+/// The page direction of a 3D direction under the cabinet projection.
+pub(super) fn page_dir(d: [f64; 3]) -> [f64; 2] {
+    cabinet(d)
+}
+
+/// An arrow from `at` along `d` (scaled by k) with a label beyond its tip.
+pub(super) fn arrow3(at: [f64; 3], d: [f64; 3], k: f64, pen: Pen, text: String) -> [Item; 2] {
+    let tip = along(at, d, k);
+    [
+        Item::Arrow {
+            a: cabinet(at),
+            b: cabinet(tip),
+            pen,
+        },
+        label_at(cabinet(tip), text, Place::beyond(page_dir(d))),
+    ]
+}
+
+/// The world (or eye) axes x, y, z from the origin, length `a`.
+pub(super) fn axes3(a: f64, names: [&str; 3]) -> Vec<Item> {
+    let mut out = Vec::new();
+    for (k, name) in names.iter().enumerate() {
+        let mut d = [0.0; 3];
+        d[k] = 1.0;
+        out.extend(arrow3([0.0; 3], d, a, Pen::Frame, name.to_string()));
+    }
+    out
+}
+
 /// The 12 edges of the box [min, max] under the cabinet projection.
-fn box_edges(lo: [f64; 3], hi: [f64; 3], items: &mut Vec<Item>) {
+pub(super) fn box_edges(lo: [f64; 3], hi: [f64; 3], pen: Pen, items: &mut Vec<Item>) {
     let corner = |i: usize| {
         cabinet([
             if i & 1 == 0 { lo[0] } else { hi[0] },
@@ -62,7 +301,7 @@ fn box_edges(lo: [f64; 3], hi: [f64; 3], items: &mut Vec<Item>) {
                 items.push(Item::Segment {
                     a: corner(i),
                     b: corner(i | bit),
-                    pen: Pen::Frame,
+                    pen,
                 });
             }
         }
@@ -72,13 +311,12 @@ fn box_edges(lo: [f64; 3], hi: [f64; 3], items: &mut Vec<Item>) {
 /// The clip figure: the box, the segment P0P1, each intersection tried
 /// (a dot labelled with its plane, t and outcode), the kept part solid and
 /// the cut-off parts dashed. Points are drawn by the cabinet projection.
-pub fn clip_figure(r: &Report, style: &Style) -> Option<Figure> {
-    let lang = style.lang;
-    let (lo, hi) = (input3(&r.input, "min")?, input3(&r.input, "max")?);
-    let (p0, p1) = (input3(&r.input, "from")?, input3(&r.input, "to")?);
+fn clip_figure(p: &Part, st: &Style) -> Option<Figure> {
+    let (lo, hi) = (input3(p.inp, "min")?, input3(p.inp, "max")?);
+    let (p0, p1) = (input3(p.inp, "from")?, input3(p.inp, "to")?);
     let mut items = Vec::new();
-    box_edges(lo, hi, &mut items);
-    match result(r, "segment") {
+    box_edges(lo, hi, Pen::Frame, &mut items);
+    match result(p.res, "segment") {
         Some(Val::List(ends)) if ends.len() == 2 => {
             let (a, b) = (vec_of(&ends[0])?, vec_of(&ends[1])?);
             for (from, to) in [(p0, a), (b, p1)] {
@@ -94,29 +332,24 @@ pub fn clip_figure(r: &Report, style: &Style) -> Option<Figure> {
         }
         _ => items.push(cut(p0, p1)),
     }
-    if let Some(Val::Map(tried)) = result(r, "intersections") {
+    if let Some(Val::Map(tried)) = result(p.res, "intersections") {
         for (plane, v) in tried {
-            items.extend(tried_marks(plane, v, style));
+            items.extend(tried_marks(plane, v, st));
         }
     }
-    items.push(Item::Label {
-        at: cabinet(p0),
-        text: format!("P0 {}", style.val_inline(&vec_val(p0))),
-    });
-    items.push(Item::Label {
-        at: cabinet(p1),
-        text: format!("P1 {}", style.val_inline(&vec_val(p1))),
-    });
-    Some(Figure {
-        title: tr(lang, "Clipping P0P1 against the box", "Klipping P0P1 terhadap kotak").into(),
-        desc: tr(
-            lang,
-            "Cabinet oblique projection (x − z/(2√2), y − z/(2√2)). The kept part is solid blue, the cut-off parts dashed vermillion; each intersection tried is a dot labelled with its plane, t and outcode.",
-            "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)). Bagian yang disimpan biru tegas, bagian yang dibuang putus-putus merah jingga; tiap titik potong yang dicoba diberi label bidang, t dan outcode-nya.",
-        )
-        .into(),
-        items,
-    })
+    let back = Place::beyond(page_dir(minus(p0, p1)));
+    let fwd = Place::beyond(page_dir(minus(p1, p0)));
+    items.push(label_at(
+        cabinet(p0),
+        format!("P0 {}", st.val_inline(&vec_val(&p0))),
+        back,
+    ));
+    items.push(label_at(
+        cabinet(p1),
+        format!("P1 {}", st.val_inline(&vec_val(&p1))),
+        fwd,
+    ));
+    Some(panel(st, Panel::Clip, items))
 }
 
 /// A cut-off piece from a to b.
@@ -128,43 +361,30 @@ fn cut(a: [f64; 3], b: [f64; 3]) -> Item {
     }
 }
 
-/// An input point as a value for a label.
-fn vec_val(p: [f64; 3]) -> Val {
-    Val::List(
-        p.iter()
-            .map(|x| {
-                Val::Num(crate::num::Shown {
-                    value: *x,
-                    exact: None,
-                    pretty: None,
-                })
-            })
-            .collect(),
-    )
-}
-
 /// One intersection tried: a dot and a label "plane: t = …, code".
-fn tried_marks(plane: &str, v: &Val, style: &Style) -> Vec<Item> {
+fn tried_marks(plane: &str, v: &Val, st: &Style) -> Vec<Item> {
     let Val::Map(fields) = v else { return vec![] };
-    let get = |k: &str| fields.iter().find(|(n, _)| n == k).map(|(_, v)| v);
-    let (Some(point), Some(t), Some(code)) = (get("point").and_then(vec_of), get("t"), get("code"))
-    else {
+    let (Some(point), Some(t), Some(code)) = (
+        result(fields, "point").and_then(vec_of),
+        result(fields, "t"),
+        result(fields, "code"),
+    ) else {
         return vec![];
     };
-    let kept = matches!(get("kept"), Some(Val::Bool(true)));
+    let kept = matches!(result(fields, "kept"), Some(Val::Bool(true)));
     let at = cabinet(point);
     vec![
         Item::Dot {
             at,
             pen: if kept { Pen::Kept } else { Pen::Tried },
         },
-        Item::Label {
+        label(
             at,
-            text: format!(
+            format!(
                 "{plane}: t = {}, outcode {}",
-                style.val_inline(t),
-                style.val_inline(code)
+                short(st, t),
+                st.val_inline(code)
             ),
-        },
+        ),
     ]
 }

@@ -1,37 +1,92 @@
-//! A [`Figure`] as a standalone SVG: 600 px wide, `<title>` and `<desc>`
-//! first, labels as `<text>` (selectable).
+//! A [`Drawing`] as a standalone SVG: 600 px wide, `<title>` and `<desc>`
+//! first, its panels one below the other (each a group with its own
+//! `<title>` and `<desc>`, and its title written above it), labels as
+//! `<text>` (selectable). Where things go is [`layout`]'s.
 
-use super::{xml_escape, Figure, Item, Pen};
+use super::layout::{lay_out, Anchor, Laid, FONT, WIDTH};
+use super::{xml_escape, Drawing, Item, Pen};
 use std::fmt::Write;
 
-/// The drawing's width in px.
-pub const WIDTH: f64 = 600.0;
-const MARGIN: f64 = 60.0;
+/// The height of a panel's heading, px.
+pub const HEADING: f64 = 26.0;
 
-/// The SVG text of a figure.
-pub fn to_svg(f: &Figure) -> String {
-    let [x0, y0, x1, y1] = f.bounds();
-    let s = (WIDTH - 2.0 * MARGIN) / (x1 - x0).max(1e-9);
-    let height = ((y1 - y0) * s + 2.0 * MARGIN).clamp(200.0, 900.0);
-    let s = s.min((height - 2.0 * MARGIN) / (y1 - y0).max(1e-9));
-    let map = |p: &[f64; 2]| (MARGIN + (p[0] - x0) * s, height - MARGIN - (p[1] - y0) * s);
+/// The panels' layouts and where each starts (px from the top); the
+/// total height.
+pub fn stack(d: &Drawing) -> (Vec<(f64, Laid)>, f64) {
+    let head = if d.panels.len() > 1 { HEADING } else { 0.0 };
+    let mut y = 0.0;
+    let mut out = Vec::new();
+    for f in &d.panels {
+        let l = lay_out(f);
+        let h = l.height;
+        out.push((y + head, l));
+        y += head + h;
+    }
+    (out, y.max(1.0))
+}
+
+/// The SVG text of a drawing.
+pub fn to_svg(d: &Drawing) -> String {
+    let (laid, height) = stack(d);
+    let id = ids(d);
     let mut o = String::new();
     let _ = writeln!(
         o,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{height:.0}" viewBox="0 0 {WIDTH} {height:.0}" role="img" font-family="sans-serif" font-size="15">"#
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{height:.0}" viewBox="0 0 {WIDTH} {height:.0}" role="img" font-family="sans-serif" font-size="{FONT}">"#
     );
-    let _ = writeln!(o, "<title>{}</title>", xml_escape(&f.title));
-    let _ = writeln!(o, "<desc>{}</desc>", xml_escape(&f.desc));
-    o.push_str(concat!(
-        r#"<defs><marker id="head" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="8" markerHeight="8" orient="auto-start-reverse">"#,
-        r##"<path d="M0,0 L10,5 L0,10 z" fill="#009E73"/></marker></defs>"##,
-        "\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n"
-    ));
-    for it in &f.items {
-        item(&mut o, it, &map);
+    let _ = writeln!(o, "<title>{}</title>", xml_escape(&d.title()));
+    let descs: Vec<&str> = d.panels.iter().map(|f| f.desc.as_str()).collect();
+    let _ = writeln!(o, "<desc>{}</desc>", xml_escape(&descs.join(" ")));
+    o.push_str("<defs>");
+    for p in Pen::ALL {
+        let _ = write!(
+            o,
+            r#"<marker id="{id}-{}" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="7" markerHeight="7" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" fill="{}"/></marker>"#,
+            p.name(),
+            p.colour()
+        );
+    }
+    o.push_str("</defs>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n");
+    for (f, (top, l)) in d.panels.iter().zip(&laid) {
+        let _ = writeln!(o, "<g transform=\"translate(0,{top:.1})\">");
+        let _ = writeln!(o, "<title>{}</title>", xml_escape(&f.title));
+        let _ = writeln!(o, "<desc>{}</desc>", xml_escape(&f.desc));
+        if d.panels.len() > 1 {
+            let _ = writeln!(
+                o,
+                r#"<text x="8" y="-7" font-weight="bold">{}</text>"#,
+                xml_escape(&f.title)
+            );
+        }
+        let mut k = 0;
+        for it in &f.items {
+            if let Item::Label { .. } = it {
+                label(&mut o, &l.labels[k]);
+                k += 1;
+            } else {
+                mark(&mut o, it, l, &id);
+            }
+        }
+        o.push_str("</g>\n");
     }
     o.push_str("</svg>\n");
     o
+}
+
+/// The marker id prefix of a drawing: its part and a hash (FNV-1a) of its
+/// marks, so that ids stay unique when several drawings are inline in one
+/// page, and the same drawing always gets the same ids.
+fn ids(d: &Drawing) -> String {
+    let clean: String = d
+        .part
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '-' })
+        .collect();
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for b in format!("{:?}", d.panels).bytes() {
+        h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+    }
+    format!("gf-{clean}-{:08x}", h as u32)
 }
 
 fn stroke(p: Pen) -> String {
@@ -39,6 +94,8 @@ fn stroke(p: Pen) -> String {
         r#" stroke-dasharray="9 6""#
     } else if p.dotted() {
         r#" stroke-dasharray="2 4""#
+    } else if p.dash_dotted() {
+        r#" stroke-dasharray="10 4 2 4""#
     } else {
         ""
     };
@@ -49,48 +106,66 @@ fn stroke(p: Pen) -> String {
     )
 }
 
-fn item(o: &mut String, it: &Item, map: &dyn Fn(&[f64; 2]) -> (f64, f64)) {
-    match it {
+fn points(pts: &[[f64; 2]], l: &Laid) -> String {
+    let p: Vec<String> = pts
+        .iter()
+        .map(|q| {
+            let (x, y) = l.map(q);
+            format!("{x:.1},{y:.1}")
+        })
+        .collect();
+    p.join(" ")
+}
+
+fn mark(o: &mut String, it: &Item, l: &Laid, id: &str) {
+    let _ = match it {
         Item::Segment { a, b, pen } | Item::Arrow { a, b, pen } => {
-            let ((ax, ay), (bx, by)) = (map(a), map(b));
-            let head = if matches!(it, Item::Arrow { .. }) {
-                r#" marker-end="url(#head)""#
-            } else {
-                ""
+            let ((ax, ay), (bx, by)) = (l.map(a), l.map(b));
+            let head = match it {
+                Item::Arrow { .. } => format!(r#" marker-end="url(#{id}-{})""#, pen.name()),
+                _ => String::new(),
             };
-            let _ = writeln!(
+            writeln!(
                 o,
                 r#"<line x1="{ax:.1}" y1="{ay:.1}" x2="{bx:.1}" y2="{by:.1}" {}{head}/>"#,
                 stroke(*pen)
-            );
+            )
         }
-        Item::Polygon { pts, pen } => {
-            let p: Vec<String> = pts
-                .iter()
-                .map(|q| {
-                    let (x, y) = map(q);
-                    format!("{x:.1},{y:.1}")
-                })
-                .collect();
-            let _ = writeln!(o, r#"<polygon points="{}" {}/>"#, p.join(" "), stroke(*pen));
-        }
+        Item::Polygon { pts, pen } => writeln!(
+            o,
+            r#"<polygon points="{}" {}/>"#,
+            points(pts, l),
+            stroke(*pen)
+        ),
+        Item::Path { pts, pen } => writeln!(
+            o,
+            r#"<polyline points="{}" {}/>"#,
+            points(pts, l),
+            stroke(*pen)
+        ),
         Item::Dot { at, pen } => {
-            let (x, y) = map(at);
-            let _ = writeln!(
+            let (x, y) = l.map(at);
+            writeln!(
                 o,
                 r#"<circle cx="{x:.1}" cy="{y:.1}" r="4.5" fill="{}"/>"#,
                 pen.colour()
-            );
+            )
         }
-        Item::Label { at, text } => {
-            let (x, y) = map(at);
-            let _ = writeln!(
-                o,
-                r##"<text x="{:.1}" y="{:.1}" fill="#000000">{}</text>"##,
-                x + 6.0,
-                y - 6.0,
-                xml_escape(text)
-            );
-        }
-    }
+        Item::Label { .. } => Ok(()),
+    };
+}
+
+fn label(o: &mut String, p: &super::layout::Placed) {
+    let anchor = match p.anchor {
+        Anchor::Start => "",
+        Anchor::Middle => r#" text-anchor="middle""#,
+        Anchor::End => r#" text-anchor="end""#,
+    };
+    let _ = writeln!(
+        o,
+        r##"<text x="{:.1}" y="{:.1}"{anchor} fill="#000000" stroke="#ffffff" stroke-width="3" paint-order="stroke">{}</text>"##,
+        p.x,
+        p.y,
+        xml_escape(&p.text)
+    );
 }

@@ -1,63 +1,95 @@
-//! A [`Figure`] as a TikZ picture (for the LaTeX keys): the same marks,
-//! in page units scaled to about 10 cm wide.
+//! A [`Drawing`] as TikZ pictures (for the LaTeX keys), one per panel so
+//! that a page may break between panels: the same marks and labels at the
+//! same places as the SVG ([`super::svg::stack`]), at 0.025 cm per px
+//! (15 cm wide), y down as in the SVG.
 
-use super::{Figure, Item, Pen};
+use super::layout::{Anchor, Laid};
+use super::svg::stack;
+use super::{Drawing, Item, Pen};
 use std::fmt::Write;
 
-/// The `tikzpicture` of a figure (needs `\usepackage{tikz}` and
-/// `\definecolor`s from [`preamble`]).
-pub fn to_tikz(f: &Figure) -> String {
-    let [x0, _, x1, _] = f.bounds();
-    let s = 10.0 / (x1 - x0).max(1e-9);
-    let mut o = format!("\\begin{{tikzpicture}}[x={s:.4}cm,y={s:.4}cm,>=stealth]\n");
-    let pt = |p: &[f64; 2]| format!("({:.4},{:.4})", p[0], p[1]);
-    for it in &f.items {
-        let _ = match it {
-            Item::Segment { a, b, pen } => {
-                writeln!(o, "\\draw[{}] {} -- {};", opts(*pen), pt(a), pt(b))
-            }
-            Item::Arrow { a, b, pen } => {
-                writeln!(o, "\\draw[->,{}] {} -- {};", opts(*pen), pt(a), pt(b))
-            }
-            Item::Polygon { pts, pen } => {
-                let p: Vec<String> = pts.iter().map(pt).collect();
-                writeln!(o, "\\draw[{}] {} -- cycle;", opts(*pen), p.join(" -- "))
-            }
-            Item::Dot { at, pen } => writeln!(o, "\\fill[{}] {} circle (2pt);", name(*pen), pt(at)),
-            Item::Label { at, text } => writeln!(
+/// The `tikzpicture`s of a drawing, one per panel, separated by a blank
+/// line (needs `\usepackage{tikz}` and the `\definecolor`s from
+/// [`preamble`]).
+pub fn to_tikz(d: &Drawing) -> String {
+    let (laid, _) = stack(d);
+    let mut o = String::new();
+    for (f, (_, l)) in d.panels.iter().zip(&laid) {
+        o.push_str("\\begin{tikzpicture}[x=0.025cm,y=-0.025cm,>=stealth]\n");
+        if d.panels.len() > 1 {
+            let _ = writeln!(
                 o,
-                "\\node[above right,font=\\small] at {} {{{}}};",
-                pt(at),
-                crate::report::doc::latex_text(text)
-            ),
-        };
+                "\\node[anchor=base west,inner sep=0,font=\\small\\bfseries] at (8,-7) {{{}}};",
+                text(&f.title)
+            );
+        }
+        let mut k = 0;
+        for it in &f.items {
+            if let Item::Label { .. } = it {
+                let p = &l.labels[k];
+                k += 1;
+                let anchor = match p.anchor {
+                    Anchor::Start => "base west",
+                    Anchor::Middle => "base",
+                    Anchor::End => "base east",
+                };
+                let _ = writeln!(
+                    o,
+                    "\\node[anchor={anchor},inner sep=0.5pt,fill=white,font=\\small] at ({:.1},{:.1}) {{{}}};",
+                    p.x,
+                    p.y,
+                    text(&p.text)
+                );
+            } else {
+                mark(&mut o, it, l);
+            }
+        }
+        o.push_str("\\end{tikzpicture}\n\n");
     }
-    o.push_str("\\end{tikzpicture}\n");
     o
+}
+
+fn text(s: &str) -> String {
+    crate::report::doc::latex_text(s)
+}
+
+fn mark(o: &mut String, it: &Item, l: &Laid) {
+    let pt = |p: &[f64; 2]| {
+        let (x, y) = l.map(p);
+        format!("({x:.1},{y:.1})")
+    };
+    let _ = match it {
+        Item::Segment { a, b, pen } => {
+            writeln!(o, "\\draw[{}] {} -- {};", opts(*pen), pt(a), pt(b))
+        }
+        Item::Arrow { a, b, pen } => {
+            writeln!(o, "\\draw[->,{}] {} -- {};", opts(*pen), pt(a), pt(b))
+        }
+        Item::Polygon { pts, pen } => {
+            let p: Vec<String> = pts.iter().map(pt).collect();
+            writeln!(o, "\\draw[{}] {} -- cycle;", opts(*pen), p.join(" -- "))
+        }
+        Item::Path { pts, pen } => {
+            let p: Vec<String> = pts.iter().map(pt).collect();
+            writeln!(o, "\\draw[{}] {};", opts(*pen), p.join(" -- "))
+        }
+        Item::Dot { at, pen } => writeln!(o, "\\fill[{}] {} circle (2pt);", pen.name(), pt(at)),
+        Item::Label { .. } => Ok(()),
+    };
 }
 
 /// The colour definitions the pictures use (Okabe–Ito).
 pub fn preamble() -> String {
-    [Pen::Frame, Pen::Kept, Pen::Cut, Pen::Tried, Pen::Vector]
+    Pen::ALL
         .iter()
         .map(|p| {
             format!(
                 "\\definecolor{{{}}}{{HTML}}{{{}}}\n",
-                name(*p),
+                p.name(),
                 &p.colour()[1..]
             )
         })
         .collect()
-}
-
-fn name(p: Pen) -> &'static str {
-    match p {
-        Pen::Frame => "gfFrame",
-        Pen::Kept => "gfKept",
-        Pen::Cut => "gfCut",
-        Pen::Tried => "gfTried",
-        Pen::Vector => "gfVector",
-    }
 }
 
 fn opts(p: Pen) -> String {
@@ -65,8 +97,10 @@ fn opts(p: Pen) -> String {
         ",dashed"
     } else if p.dotted() {
         ",dotted"
+    } else if p.dash_dotted() {
+        ",dash pattern=on 5pt off 2pt on 1pt off 2pt"
     } else {
         ""
     };
-    format!("{},line width={}pt{pattern}", name(p), p.width() * 0.5)
+    format!("{},line width={}pt{pattern}", p.name(), p.width() * 0.5)
 }

@@ -1,0 +1,94 @@
+//! The camera figure of `basis`, `view` and `solve`'s view part: the world
+//! axes, Peye and Pref with the line of sight, Vup (drawn at Pref), the
+//! camera axes u, v, n at Peye and the named points with their eye
+//! coordinates, all under the cabinet projection.
+
+use super::builders::{
+    arrow3, axes3, input3, minus, page_dir, panel, result, vec_of, vec_val, Part,
+};
+use super::{cabinet, label_at, labelled, Figure, Item, Pen, Place};
+use crate::msg::Panel;
+use crate::report::Style;
+use crate::stages::trace::Val;
+
+/// The length u, v, n and Vup are drawn with: 1 for a scene within 8 of
+/// the origin, else an eighth of the scene's size (so they stay visible).
+pub fn arrow_length(extent: f64) -> f64 {
+    if extent <= 8.0 {
+        1.0
+    } else {
+        extent / 8.0
+    }
+}
+
+/// The camera panel.
+pub fn figure(p: &Part, st: &Style) -> Option<Vec<Figure>> {
+    let (pe, pr, up) = (
+        input3(p.inp, "eye")?,
+        input3(p.inp, "look")?,
+        input3(p.inp, "up")?,
+    );
+    let named = world_points(p);
+    let extent = [pe, pr]
+        .iter()
+        .chain(named.iter().map(|(_, q)| q))
+        .flat_map(|q| q.iter().map(|c| c.abs()))
+        .fold(1.0, f64::max);
+    let len = arrow_length(extent);
+    let mut items = axes3(extent * 1.15, ["x", "y", "z"]);
+    items.push(Item::Segment {
+        a: cabinet(pe),
+        b: cabinet(pr),
+        pen: Pen::Tried,
+    });
+    let sight = page_dir(minus(pr, pe));
+    let back = [-sight[0], -sight[1]];
+    for (at, name, dir) in [(pe, "Peye", back), (pr, "Pref", sight)] {
+        items.push(Item::Dot {
+            at: cabinet(at),
+            pen: Pen::Kept,
+        });
+        let text = format!("{name} {}", st.val_inline(&vec_val(&at)));
+        items.push(label_at(cabinet(at), text, Place::beyond(dir)));
+    }
+    let norm = up.iter().map(|c| c * c).sum::<f64>().sqrt().max(1e-300);
+    let text = format!("Vup = {}", st.val_inline(&vec_val(&up)));
+    items.extend(arrow3(pr, up, len / norm, Pen::Given, text));
+    for key in ["u", "v", "n"] {
+        let v = result(p.res, key)?;
+        let text = labelled(st, key, v);
+        items.extend(arrow3(pe, vec_of(v)?, len, Pen::Vector, text));
+    }
+    points(p, st, &named, &mut items);
+    Some(vec![panel(st, Panel::Camera, items)])
+}
+
+/// The world points of the inputs (`points`: name → [x, y, z]).
+fn world_points(p: &Part) -> Vec<(String, [f64; 3])> {
+    let Some(o) = p.inp.get("points").and_then(|o| o.as_object()) else {
+        return vec![];
+    };
+    o.keys()
+        .filter_map(|k| Some((k.clone(), input3(p.inp.get("points")?, k)?)))
+        .collect()
+}
+
+/// Each named point: a dot, its name and world coordinates, and its eye
+/// coordinates `A' = …` from the results.
+fn points(p: &Part, st: &Style, named: &[(String, [f64; 3])], items: &mut Vec<Item>) {
+    let eye = match result(p.res, "points") {
+        Some(Val::Map(m)) => m.clone(),
+        _ => vec![],
+    };
+    for (name, q) in named {
+        items.push(Item::Dot {
+            at: cabinet(*q),
+            pen: Pen::Frame,
+        });
+        let mut text = format!("{name} {}", st.val_inline(&vec_val(q)));
+        if let Some(e) = result(&eye, name) {
+            text = format!("{text}: {}", labelled(st, &format!("{name}'"), e));
+        }
+        items.push(label_at(cabinet(*q), text, Place::BelowRight));
+    }
+}
