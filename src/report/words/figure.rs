@@ -41,8 +41,8 @@ fn title(p: Panel) -> (&'static str, &'static str) {
             "Kamera dalam sistem koordinat dunia",
         ),
         Panel::Projection => (
-            "Perspective projection onto the view plane",
-            "Proyeksi perspektif ke bidang proyeksi",
+            "Projection onto the view plane",
+            "Proyeksi ke bidang proyeksi",
         ),
         Panel::ProjectionSide => (
             "Side view (y–z): similar triangles",
@@ -83,8 +83,8 @@ fn desc(p: Panel) -> (&'static str, &'static str) {
             "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)). Panah hitam: sumbu dunia x, y, z. Titik biru: Peye dan Pref, dihubungkan garis pandang bertitik. Panah biru muda: Vup, digambar di Pref. Panah hijau: sumbu kamera u, v, n di Peye, semua sama panjang. Titik hitam: titik-titik bernama, diberi label koordinat kameranya.",
         ),
         Panel::Projection => (
-            "Cabinet oblique projection (x − z/(2√2), y − z/(2√2)) of eye coordinates. Sky-blue rectangle: the view plane. Dotted orange lines: the projectors from the centre of projection through each point (black dot) to its image (blue dot).",
-            "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)) dari koordinat kamera. Persegi biru muda: bidang proyeksi. Garis jingga bertitik: proyektor dari pusat proyeksi melalui tiap titik (titik hitam) ke bayangannya (titik biru).",
+            "Cabinet oblique projection (x − z/(2√2), y − z/(2√2)) of eye coordinates. Sky-blue rectangle: the view plane. Dotted orange lines: the projectors from the centre of projection (parallel to z when orthographic) through each point (black dot) to its image (blue dot).",
+            "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)) dari koordinat kamera. Persegi biru muda: bidang proyeksi. Garis jingga bertitik: proyektor dari pusat proyeksi (sejajar sumbu z pada proyeksi ortografik) melalui tiap titik (titik hitam) ke bayangannya (titik biru).",
         ),
         Panel::ProjectionSide => (
             "Side view: −z to the right, y up. The sky-blue line is the view plane; each projector (dotted) runs from the centre of projection through the point to its image. The black leg y of the point and the blue leg yp of the image make two similar triangles with the z axis.",
