@@ -115,8 +115,8 @@ fn desc(p: Panel) -> (&'static str, &'static str) {
             "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)). Bagian yang disimpan biru tegas, bagian yang dibuang putus-putus merah jingga; tiap titik potong yang dicoba diberi label bidang, t dan outcode-nya.",
         ),
         Panel::Shade => (
-            "Cabinet oblique projection (x − z/(2√2), y − z/(2√2)) of the unit vectors at the surface point, all drawn with one length: the surface patch (black) perpendicular to N (black arrow), L toward the light (sky blue), R the reflection (purple, dash-dot), V toward the viewer (green), H the half vector for Blinn (orange, dotted). Arcs mark the angle α between L and N and the angle β between R and V.",
-            "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)) dari vektor satuan di titik permukaan, semua sama panjang: potongan permukaan (hitam) tegak lurus N (panah hitam), L ke arah sumber cahaya (biru muda), R vektor pantul (ungu, garis-titik), V ke arah pengamat (hijau), H vektor tengah untuk Blinn (jingga, bertitik). Busur menandai sudut α antara L dan N dan sudut β antara R dan V.",
+            "Cabinet oblique projection (x − z/(2√2), y − z/(2√2)) of the unit vectors at the surface point, all drawn with one length: the surface patch (black) perpendicular to N (black arrow), L toward the light (sky blue; L2, L3, … for further lights), R the reflection (purple, dash-dot), V toward the viewer (green), H the half vector for Blinn (orange, dotted). Arcs mark the angle α between L and N and the angle β between R and V.",
+            "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)) dari vektor satuan di titik permukaan, semua sama panjang: potongan permukaan (hitam) tegak lurus N (panah hitam), L ke arah sumber cahaya (biru muda; L2, L3, … untuk sumber cahaya berikutnya), R vektor pantul (ungu, garis-titik), V ke arah pengamat (hijau), H vektor tengah untuk Blinn (jingga, bertitik). Busur menandai sudut α antara L dan N dan sudut β antara R dan V.",
         ),
     }
 }
