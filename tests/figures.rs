@@ -74,7 +74,7 @@ fn labels(f: &Figure) -> Vec<String> {
     f.items
         .iter()
         .filter_map(|it| match it {
-            Item::Label { text, .. } => Some(text.clone()),
+            Item::Label { text, .. } | Item::Note { text } => Some(text.clone()),
             _ => None,
         })
         .collect()
@@ -241,7 +241,7 @@ fn same_marks_in_tikz(d: &Drawing) {
     });
     let arrows = count(&|i| matches!(i, Item::Arrow { .. }));
     let dots = count(&|i| matches!(i, Item::Dot { .. }));
-    let labels = count(&|i| matches!(i, Item::Label { .. }));
+    let labels = count(&|i| matches!(i, Item::Label { .. } | Item::Note { .. }));
     let headings = if d.panels.len() > 1 {
         d.panels.len()
     } else {
@@ -636,6 +636,34 @@ fn labels_of_the_worked_examples_do_not_overlap() {
             }
         }
     }
+}
+
+/// Two lights (problems/shade-two-lights.toml): a directional light along
+/// (0, 0, 1) and a point light at (0, 3, 4) seen from the surface point at
+/// the origin, so its L = (0, 3, 4)/5 = (0, 3/5, 4/5), drawn as L2.
+#[test]
+fn shade_with_two_lights_draws_each_l() {
+    let d = drawn(&["solve", "problems/shade-two-lights.toml"]);
+    let f = &d[0].panels[0];
+    has_label(f, "L = (0, 0, 1)");
+    has_label(f, "L2 = (0, 3/5, 4/5)");
+    let given = arrows(f, Pen::Given);
+    assert!(given
+        .iter()
+        .any(|(a, b)| near(*a, [0.0, 0.0]) && near(*b, cabinet([0.0, 0.9, 1.2]))));
+}
+
+/// The orthographic projection: A = (1, 2, −3) goes to (1, 2, 0) along a
+/// projector parallel to z (no centre of projection).
+#[test]
+fn project_orthographic_projector_is_parallel_to_z() {
+    let d = drawn(&["project", "--ortho", "--point", "A=1,2,-3"]);
+    let f3 = &d[0].panels[0];
+    assert_eq!(
+        segments(f3, Pen::Tried),
+        vec![(cabinet([1.0, 2.0, -3.0]), cabinet([1.0, 2.0, 0.0]))]
+    );
+    has_label(&d[0].panels[1], "yp = y");
 }
 
 // ---- solve ----

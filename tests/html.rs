@@ -76,7 +76,7 @@ fn unique_ids(html: &str) {
 fn every_command_has_its_figures_inline() {
     let cam = ["--eye", "3,1,3", "--look", "2,1,2", "--up", "0,1,0"];
     let cases: Vec<(&str, Vec<&str>, usize)> = vec![
-        ("basis.html", [&["basis"], &cam[..]].concat(), 1),
+        ("all-basis.html", [&["basis"], &cam[..]].concat(), 1),
         (
             "view.html",
             [&["view"], &cam[..], &["--point", "A=0,0,0"]].concat(),
@@ -137,6 +137,13 @@ fn every_command_has_its_figures_inline() {
         unique_ids(&html);
         assert_eq!(html.matches("<figure>\n<svg ").count(), figures, "{name}");
         assert!(html.contains("<figcaption>"), "{name}");
+        // solve: each part's figure stands under its part's heading (h4);
+        // a calculator command's figure comes before its steps.
+        let (fig, part) = (html.find("<figure>"), html.find("<h4>"));
+        match args[0] {
+            "solve" => assert!(part < fig, "{name}: the figure is not under its part"),
+            _ => assert!(part.is_none(), "{name}"),
+        }
     }
 }
 

@@ -219,9 +219,9 @@ fn write_html(cli: &Cli, report: &Report, style: &Style) -> Result<()> {
     let Some(path) = &cli.common.html else {
         return Ok(());
     };
-    let figures: Vec<(String, String)> = drawings(report, style)
+    let figures: Vec<(String, String, String)> = drawings(report, style)
         .iter()
-        .map(|d| (to_svg(d), d.title()))
+        .map(|d| (d.part.clone(), to_svg(d), d.title()))
         .collect();
     let title = page_title(report, style);
     let page = crate::report::html::report_page(report, style, &title, &figures);

@@ -120,6 +120,17 @@ impl Doc {
 
     /// The worked steps of a report, grouped by section.
     pub fn steps(self, r: &Report, st: &Style) -> String {
+        self.steps_with(r, st, &mut |_| String::new())
+    }
+
+    /// The worked steps, with what `after_heading` gives for a section
+    /// put right under its heading (a part's figure).
+    pub fn steps_with(
+        self,
+        r: &Report,
+        st: &Style,
+        after_heading: &mut dyn FnMut(&crate::msg::Msg) -> String,
+    ) -> String {
         let mut out = String::new();
         let mut section: Option<&crate::msg::Msg> = None;
         for (i, s) in r.steps.iter().enumerate() {
@@ -127,6 +138,7 @@ impl Doc {
                 section = s.section.as_ref();
                 if let Some(sec) = section {
                     out.push_str(&self.heading(3, &st.w(sec)));
+                    out.push_str(&after_heading(sec));
                 }
             }
             out.push_str(&self.step(i + 1, s, st));

@@ -59,7 +59,7 @@ pub fn figure(p: &Part, st: &Style) -> Option<Vec<Figure>> {
         let text = labelled(st, key, v);
         items.extend(arrow3(pe, vec_of(v)?, len, Pen::Vector, text));
     }
-    points(p, st, &named, &mut items);
+    points(p, st, &named, [pe, pr], &mut items);
     Some(vec![panel(st, Panel::Camera, items)])
 }
 
@@ -73,9 +73,16 @@ fn world_points(p: &Part) -> Vec<(String, [f64; 3])> {
         .collect()
 }
 
-/// Each named point: a dot, its name and world coordinates, and its eye
-/// coordinates `A' = …` from the results.
-fn points(p: &Part, st: &Style, named: &[(String, [f64; 3])], items: &mut Vec<Item>) {
+/// Each named point: a dot with its name, and a note under the drawing
+/// with its world coordinates and its eye coordinates `A' = …` from the
+/// results.
+fn points(
+    p: &Part,
+    st: &Style,
+    named: &[(String, [f64; 3])],
+    given: [[f64; 3]; 2],
+    items: &mut Vec<Item>,
+) {
     let eye = match result(p.res, "points") {
         Some(Val::Map(m)) => m.clone(),
         _ => vec![],
@@ -85,10 +92,15 @@ fn points(p: &Part, st: &Style, named: &[(String, [f64; 3])], items: &mut Vec<It
             at: cabinet(*q),
             pen: Pen::Frame,
         });
+        // The name beside the dot (unless the point is Peye or Pref, which
+        // are labelled already), the values in a note under the drawing.
+        if !given.contains(q) {
+            items.push(label_at(cabinet(*q), name.clone(), Place::BelowRight));
+        }
         let mut text = format!("{name} {}", st.val_inline(&vec_val(q)));
         if let Some(e) = result(&eye, name) {
             text = format!("{text}: {}", labelled(st, &format!("{name}'"), e));
         }
-        items.push(label_at(cabinet(*q), text, Place::BelowRight));
+        items.push(Item::Note { text });
     }
 }

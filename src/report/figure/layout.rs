@@ -67,7 +67,7 @@ pub struct Laid {
     pub ty: f64,
     /// The panel's height in px.
     pub height: f64,
-    /// The labels, in the order of the figure's label items.
+    /// The labels and notes, in the order of the figure's items.
     pub labels: Vec<Placed>,
 }
 
@@ -122,6 +122,7 @@ fn extents(f: &Figure) -> Extents {
                 let (dx, dy, a) = offset(*place);
                 labels.push((*at, dx, dy, a, text_width(text)));
             }
+            Item::Note { .. } => {}
         }
     }
     (pts, labels)
@@ -135,10 +136,9 @@ fn width_at(s: f64, e: &Extents) -> (f64, f64) {
         lo = lo.min(p[0] * s - 5.0);
         hi = hi.max(p[0] * s + 5.0);
     }
-    // A label needs at least half its width on each side of its point
-    // (it moves to the side where it fits when placed).
-    // A label wider than half the page counts as half the page (it may
-    // stand beside the drawing).
+    // A label needs about half its width on each side of its point (it
+    // moves to the side where it fits when placed); one wider than half
+    // the page counts as half the page.
     for (p, _, _, _, w) in &e.1 {
         let (l, r) = span(p[0] * s, w.min(WIDTH / 2.0), Anchor::Middle);
         lo = lo.min(l);
@@ -251,15 +251,16 @@ fn obstacles(f: &Figure, s: f64, tx: f64) -> Vec<Line> {
                 out.push(((x - 4.0, y), (x + 4.0, y)));
                 out.push(((x, y - 4.0), (x, y + 4.0)));
             }
-            Item::Label { .. } => {}
+            Item::Label { .. } | Item::Note { .. } => {}
         }
     }
     out
 }
 
 /// Places one label: of its candidate places (its own side, the other
-/// sides, then its side moved by whole lines), the first with the fewest
-/// overlaps (another label counts 10, a line 1).
+/// sides, then each side moved by whole lines), the first of the least
+/// cost: leaving the page counts 100, overlapping another label 10,
+/// crossing a line 2, each line moved away 1.
 fn place_label(
     at: (f64, f64),
     text: &str,
@@ -268,9 +269,9 @@ fn place_label(
     lines: &[Line],
 ) -> (Placed, Bx) {
     let w = text_width(text);
-    let mut candidates: Vec<(Place, f64)> = sides(place).into_iter().map(|p| (p, 0.0)).collect();
-    for k in [1.0, -1.0, 2.0, -2.0, 3.0, -3.0] {
-        candidates.push((place, k * LINE));
+    let mut candidates: Vec<(Place, f64)> = Vec::new();
+    for k in [0.0, 1.0, -1.0, 2.0, -2.0, 3.0, -3.0] {
+        candidates.extend(sides(place).into_iter().map(|p| (p, k * LINE)));
     }
     let mut best: Option<(usize, Placed, Bx)> = None;
     for (p, shift) in candidates {
@@ -284,7 +285,8 @@ fn place_label(
             .count();
         let on_lines = lines.iter().filter(|(a, c)| crosses(*a, *c, b)).count();
         let outside = usize::from(b.0 < 1.0 || b.1 > WIDTH - 1.0);
-        let cost = 100 * outside + 10 * on_labels + on_lines;
+        let away = (shift / LINE).abs() as usize;
+        let cost = 100 * outside + 10 * on_labels + 2 * on_lines + away;
         if best.as_ref().is_none_or(|(c, ..)| cost < *c) {
             let text = text.to_string();
             best = Some((cost, Placed { x, y, anchor, text }, b));
@@ -327,6 +329,22 @@ pub fn lay_out(f: &Figure) -> Laid {
     }
     if top > bottom {
         (top, bottom) = (0.0, 1.0);
+    }
+    // The notes, one line each under the drawing, in the labels' order.
+    for (i, it) in f.items.iter().enumerate() {
+        let Item::Note { text } = it else { continue };
+        bottom += LINE;
+        let before = f.items[..i]
+            .iter()
+            .filter(|x| matches!(x, Item::Label { .. } | Item::Note { .. }))
+            .count();
+        let placed = Placed {
+            x: PAD,
+            y: bottom - 2.0,
+            anchor: Anchor::Start,
+            text: text.clone(),
+        };
+        labels.insert(before.min(labels.len()), placed);
     }
     let ty = PAD - top;
     for l in &mut labels {

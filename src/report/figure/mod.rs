@@ -130,6 +130,9 @@ pub enum Item {
         text: String,
         place: Place,
     },
+    /// A line of text under the panel (a legend: what a short label near
+    /// a mark stands for).
+    Note { text: String },
 }
 
 /// Where a label sits from its point.
@@ -178,18 +181,14 @@ impl Place {
 
 /// A label item at `at` with the default place.
 pub fn label(at: [f64; 2], text: impl Into<String>) -> Item {
-    Item::Label {
-        at,
-        text: text.into(),
-        place: Place::AboveRight,
-    }
+    label_at(at, text, Place::AboveRight)
 }
 
-/// A label item on a chosen side.
+/// A label item on a chosen side; `x = ≈ 0.1` is written `x ≈ 0.1`.
 pub fn label_at(at: [f64; 2], text: impl Into<String>, place: Place) -> Item {
     Item::Label {
         at,
-        text: text.into(),
+        text: text.into().replace("= ≈ ", "≈ "),
         place,
     }
 }
@@ -241,6 +240,7 @@ impl Figure {
                 }
                 Item::Polygon { pts, .. } | Item::Path { pts, .. } => pts.iter().for_each(&mut add),
                 Item::Dot { at, .. } | Item::Label { at, .. } => add(at),
+                Item::Note { .. } => {}
             }
         }
         if b[0] > b[2] {

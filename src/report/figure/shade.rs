@@ -95,7 +95,9 @@ fn angle(a: [f64; 3], b: [f64; 3], name: &str, cos: Option<&Val>, st: &Style) ->
     ]
 }
 
-/// The lighting panel.
+/// The lighting panel. With several lights, the first light's L is
+/// labelled L and the others L2, L3, …; R, H and the angles are drawn for
+/// one light only (the results name them for one light).
 pub fn figure(p: &Part, st: &Style) -> Option<Figure> {
     let nv = step_vector(p, "N")?;
     let n = vec_of(nv)?;
@@ -120,6 +122,19 @@ pub fn figure(p: &Part, st: &Style) -> Option<Figure> {
         let text = labelled(st, name, v?);
         items.extend(arrow3([0.0; 3], unit(d), LENGTH, pen, text));
         drawn.push((name, d));
+    }
+    // With several lights, each light's L after the first (L2, L3, …).
+    let ls: Vec<&Val> = p
+        .steps
+        .iter()
+        .flat_map(|s| &s.result)
+        .filter(|(k, v)| k == "L" && vec_of(v).is_some())
+        .map(|(_, v)| v)
+        .collect();
+    for (i, v) in ls.iter().enumerate().skip(1) {
+        let text = labelled(st, &format!("L{}", i + 1), v);
+        let d = vec_of(v).unwrap_or_default();
+        items.extend(arrow3([0.0; 3], unit(d), LENGTH, Pen::Given, text));
     }
     let get = |k: &str| drawn.iter().find(|(n, _)| *n == k).map(|(_, d)| *d);
     if let (Some(l), Some(n)) = (get("L"), get("N")) {

@@ -60,7 +60,7 @@ pub fn to_svg(d: &Drawing) -> String {
         }
         let mut k = 0;
         for it in &f.items {
-            if let Item::Label { .. } = it {
+            if let Item::Label { .. } | Item::Note { .. } = it {
                 label(&mut o, &l.labels[k]);
                 k += 1;
             } else {
@@ -151,7 +151,7 @@ fn mark(o: &mut String, it: &Item, l: &Laid, id: &str) {
                 pen.colour()
             )
         }
-        Item::Label { .. } => Ok(()),
+        Item::Label { .. } | Item::Note { .. } => Ok(()),
     };
 }
 

@@ -25,7 +25,7 @@ pub fn to_tikz(d: &Drawing) -> String {
         }
         let mut k = 0;
         for it in &f.items {
-            if let Item::Label { .. } = it {
+            if let Item::Label { .. } | Item::Note { .. } = it {
                 let p = &l.labels[k];
                 k += 1;
                 let anchor = match p.anchor {
@@ -74,7 +74,7 @@ fn mark(o: &mut String, it: &Item, l: &Laid) {
             writeln!(o, "\\draw[{}] {};", opts(*pen), p.join(" -- "))
         }
         Item::Dot { at, pen } => writeln!(o, "\\fill[{}] {} circle (2pt);", pen.name(), pt(at)),
-        Item::Label { .. } => Ok(()),
+        Item::Label { .. } | Item::Note { .. } => Ok(()),
     };
 }
 

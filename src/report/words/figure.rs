@@ -41,8 +41,8 @@ fn title(p: Panel) -> (&'static str, &'static str) {
             "Kamera dalam sistem koordinat dunia",
         ),
         Panel::Projection => (
-            "Perspective projection onto the view plane",
-            "Proyeksi perspektif ke bidang proyeksi",
+            "Projection onto the view plane",
+            "Proyeksi ke bidang proyeksi",
         ),
         Panel::ProjectionSide => (
             "Side view (y–z): similar triangles",
@@ -83,8 +83,8 @@ fn desc(p: Panel) -> (&'static str, &'static str) {
             "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)). Panah hitam: sumbu dunia x, y, z. Titik biru: Peye dan Pref, dihubungkan garis pandang bertitik. Panah biru muda: Vup, digambar di Pref. Panah hijau: sumbu kamera u, v, n di Peye, semua sama panjang. Titik hitam: titik-titik bernama, diberi label koordinat kameranya.",
         ),
         Panel::Projection => (
-            "Cabinet oblique projection (x − z/(2√2), y − z/(2√2)) of eye coordinates. Sky-blue rectangle: the view plane. Dotted orange lines: the projectors from the centre of projection through each point (black dot) to its image (blue dot).",
-            "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)) dari koordinat kamera. Persegi biru muda: bidang proyeksi. Garis jingga bertitik: proyektor dari pusat proyeksi melalui tiap titik (titik hitam) ke bayangannya (titik biru).",
+            "Cabinet oblique projection (x − z/(2√2), y − z/(2√2)) of eye coordinates. Sky-blue rectangle: the view plane. Dotted orange lines: the projectors from the centre of projection (parallel to z when orthographic) through each point (black dot) to its image (blue dot).",
+            "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)) dari koordinat kamera. Persegi biru muda: bidang proyeksi. Garis jingga bertitik: proyektor dari pusat proyeksi (sejajar sumbu z pada proyeksi ortografik) melalui tiap titik (titik hitam) ke bayangannya (titik biru).",
         ),
         Panel::ProjectionSide => (
             "Side view: −z to the right, y up. The sky-blue line is the view plane; each projector (dotted) runs from the centre of projection through the point to its image. The black leg y of the point and the blue leg yp of the image make two similar triangles with the z axis.",
@@ -115,8 +115,8 @@ fn desc(p: Panel) -> (&'static str, &'static str) {
             "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)). Bagian yang disimpan biru tegas, bagian yang dibuang putus-putus merah jingga; tiap titik potong yang dicoba diberi label bidang, t dan outcode-nya.",
         ),
         Panel::Shade => (
-            "Cabinet oblique projection (x − z/(2√2), y − z/(2√2)) of the unit vectors at the surface point, all drawn with one length: the surface patch (black) perpendicular to N (black arrow), L toward the light (sky blue), R the reflection (purple, dash-dot), V toward the viewer (green), H the half vector for Blinn (orange, dotted). Arcs mark the angle α between L and N and the angle β between R and V.",
-            "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)) dari vektor satuan di titik permukaan, semua sama panjang: potongan permukaan (hitam) tegak lurus N (panah hitam), L ke arah sumber cahaya (biru muda), R vektor pantul (ungu, garis-titik), V ke arah pengamat (hijau), H vektor tengah untuk Blinn (jingga, bertitik). Busur menandai sudut α antara L dan N dan sudut β antara R dan V.",
+            "Cabinet oblique projection (x − z/(2√2), y − z/(2√2)) of the unit vectors at the surface point, all drawn with one length: the surface patch (black) perpendicular to N (black arrow), L toward the light (sky blue; L2, L3, … for further lights), R the reflection (purple, dash-dot), V toward the viewer (green), H the half vector for Blinn (orange, dotted). Arcs mark the angle α between L and N and the angle β between R and V.",
+            "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)) dari vektor satuan di titik permukaan, semua sama panjang: potongan permukaan (hitam) tegak lurus N (panah hitam), L ke arah sumber cahaya (biru muda; L2, L3, … untuk sumber cahaya berikutnya), R vektor pantul (ungu, garis-titik), V ke arah pengamat (hijau), H vektor tengah untuk Blinn (jingga, bertitik). Busur menandai sudut α antara L dan N dan sudut β antara R dan V.",
         ),
     }
 }
