@@ -334,6 +334,8 @@ pub fn interleave(r: [u8; 8], g: [u8; 8], b: [u8; 8]) -> [u8; 24] {
 /// [`Scalar`](super::Scalar): lanes in and bytes out. `LANES` (8 or 16)
 /// pixels per batch; the associated arrays have that many entries.
 pub trait Wide: super::Scalar + Copy {
+    /// How many lanes.
+    const LANES: usize;
     /// One f32 per lane: `[f32; LANES]`.
     type Array: Copy + Default + AsRef<[f32]> + AsMut<[f32]>;
     /// One row of twelve attribute values per lane: `[[f32; 12]; LANES]`.
@@ -403,6 +405,37 @@ macro_rules! lane_type {
             #[inline(always)]
             pub fn all(self) -> bool {
                 self.bits() == u32::MAX >> (32 - $lanes)
+            }
+        }
+
+        impl From<bool> for $mask {
+            #[inline(always)]
+            fn from(b: bool) -> $mask {
+                $mask::from_bits(if b { u32::MAX } else { 0 })
+            }
+        }
+        impl std::ops::BitAnd for $mask {
+            type Output = $mask;
+            #[inline(always)]
+            fn bitand(self, o: $mask) -> $mask {
+                $mask::from_bits(self.bits() & o.bits())
+            }
+        }
+        impl std::ops::Not for $mask {
+            type Output = $mask;
+            #[inline(always)]
+            fn not(self) -> $mask {
+                $mask::from_bits(!self.bits())
+            }
+        }
+        impl $crate::num::Mask for $mask {
+            #[inline(always)]
+            fn any(self) -> bool {
+                $mask::any(self)
+            }
+            #[inline(always)]
+            fn all(self) -> bool {
+                $mask::all(self)
             }
         }
 
@@ -556,6 +589,7 @@ macro_rules! lane_type {
         }
 
         impl $crate::num::lanes::Wide for $name {
+            const LANES: usize = $lanes;
             type Array = [f32; $lanes];
             type Rows = [[f32; 12]; $lanes];
             type Bytes = [u8; 3 * $lanes];
@@ -596,7 +630,7 @@ macro_rules! lane_type {
 
         impl $crate::num::Scalar for $name {
             const PRECISION: Precision = Precision::F32;
-            const LANES: usize = $lanes;
+            type Mask = $mask;
             fn from_real(x: &Real) -> Self {
                 $name::splat(x.to_f64() as f32)
             }
@@ -686,18 +720,12 @@ macro_rules! lane_type {
                 (*self == $name::splat(x) && k as f64 == f64::from(x)).then_some(k)
             }
             #[inline(always)]
-            fn if_gt(&self, o: &Self, a: impl FnOnce() -> Self, b: impl FnOnce() -> Self) -> Self {
-                let gt = self.gt_mask(*o);
-                let bits = gt.bits();
-                // Each branch once, and only if some lane takes it.
-                let zero = $name::splat(0.0);
-                let a = if bits != 0 { a() } else { zero };
-                let b = if bits != u32::MAX >> (32 - $lanes) { b() } else { zero };
-                a.select(gt, b)
+            fn gt_mask(&self, o: &Self) -> $mask {
+                $name::gt_mask(*self, *o)
             }
             #[inline(always)]
-            fn any_gt(&self, o: &Self) -> bool {
-                self.gt_mask(*o).any()
+            fn select(m: $mask, a: Self, b: Self) -> Self {
+                a.select(m, b)
             }
             #[inline(always)]
             fn max_of(&self, o: &Self) -> Self {
@@ -786,7 +814,7 @@ mod tests {
         // everywhere either.
         let (all_gt, all_le) = (a > zero, a <= zero);
         assert!(!all_gt && !all_le);
-        assert!(a.any_gt(&zero) && !zero.any_gt(&a));
+        assert!(a.gt_mask(zero).any() && !zero.gt_mask(a).any());
         assert_eq!(a.partial_cmp(&zero), None);
         assert!(a + F32x8::splat(1.0) > zero);
         // Lanes mixing = and > are not ≥ as a whole (partial_cmp is None).
