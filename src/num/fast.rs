@@ -67,6 +67,7 @@ impl num_traits::One for Fast32 {
 
 impl Scalar for Fast32 {
     const PRECISION: Precision = Precision::F32;
+    type Mask = bool;
     fn from_real(x: &Real) -> Self {
         Fast32(x.to_f64() as f32)
     }

@@ -9,6 +9,7 @@ macro_rules! float_scalar {
     ($t:ty, $prec:expr) => {
         impl Scalar for $t {
             const PRECISION: Precision = $prec;
+            type Mask = bool;
 
             fn from_real(x: &Real) -> Self {
                 x.to_f64() as $t

@@ -23,6 +23,7 @@ pub use real::Real;
 
 use std::fmt::Debug;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+use std::ops::{BitAnd, Not};
 
 /// The precision a calculation runs at (`--precision`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, Default)]
@@ -48,6 +49,26 @@ pub struct Shown {
     pub exact: Option<String>,
     /// Unicode exact form (`−√2/60`) for people.
     pub pretty: Option<String>,
+}
+
+/// The truth value of a comparison, one per lane: `bool` for a number of
+/// one value, whose `any` and `all` are the value itself.
+pub trait Mask: Copy + Debug + From<bool> + BitAnd<Output = Self> + Not<Output = Self> {
+    /// Whether some lane holds.
+    fn any(self) -> bool;
+    /// Whether every lane holds.
+    fn all(self) -> bool;
+}
+
+impl Mask for bool {
+    #[inline(always)]
+    fn any(self) -> bool {
+        self
+    }
+    #[inline(always)]
+    fn all(self) -> bool {
+        self
+    }
 }
 
 /// The scalar the stages compute with.
@@ -78,9 +99,10 @@ pub trait Scalar:
 {
     /// The name of the precision, as `--precision` spells it.
     const PRECISION: Precision;
-    /// How many values one number holds: 1, or 8 for the renderer's batch
-    /// type [`F32x8`], whose lanes may fall on both sides of a comparison.
-    const LANES: usize = 1;
+    /// The truth value of a comparison of two such numbers: `bool` for a
+    /// number of one value, one truth value per lane for the renderer's
+    /// lane type [`F32x8`] (whose lanes may fall on both sides).
+    type Mask: Mask;
 
     /// The value of an exact number at this precision (nearest float).
     fn from_real(x: &Real) -> Self;
@@ -129,30 +151,41 @@ pub trait Scalar:
         // The cast round-trips exactly for a whole x in range (no libm trunc).
         (x >= 0.0 && x <= f64::from(u32::MAX) && f64::from(x as u32) == x).then_some(x as u32)
     }
-    /// `a()` where self > o, `b()` elsewhere. A scalar runs one branch; a
-    /// lane type ([`F32x8`]) decides per lane and runs a branch only if some
-    /// lane takes it.
+    /// self > o, lane by lane (for one value, the plain comparison; a lane
+    /// type overrides this).
     #[inline(always)]
-    fn if_gt(&self, o: &Self, a: impl FnOnce() -> Self, b: impl FnOnce() -> Self) -> Self {
-        if self > o {
-            a()
+    fn gt_mask(&self, o: &Self) -> Self::Mask {
+        Self::Mask::from(self > o)
+    }
+    /// `a` where `m` holds, `b` elsewhere, lane by lane (for one value,
+    /// `if m { a } else { b }`; a lane type overrides this).
+    #[inline(always)]
+    fn select(m: Self::Mask, a: Self, b: Self) -> Self {
+        if m.all() {
+            a
         } else {
-            b()
+            b
         }
     }
-    /// self > o (in some lane, for a lane type; a scalar has one).
+    /// `a()` where self > o, `b()` elsewhere, lane by lane: each branch
+    /// runs only if some lane takes it (for one value, exactly one runs).
     #[inline(always)]
-    fn any_gt(&self, o: &Self) -> bool {
-        self > o
+    fn if_gt(&self, o: &Self, a: impl FnOnce() -> Self, b: impl FnOnce() -> Self) -> Self {
+        let m = self.gt_mask(o);
+        if m.all() {
+            a()
+        } else if !m.any() {
+            b()
+        } else {
+            Self::select(m, a(), b())
+        }
     }
-    /// max(self, o) as `if self > o { self } else { o }` (per lane for a
-    /// lane type, where it is one instruction).
+    /// max(self, o) as `if self > o { self } else { o }`, lane by lane.
     #[inline(always)]
     fn max_of(&self, o: &Self) -> Self {
         self.if_gt(o, || self.clone(), || o.clone())
     }
-    /// min(self, o) as `if self > o { o } else { self }` (per lane for a
-    /// lane type, where it is one instruction).
+    /// min(self, o) as `if self > o { o } else { self }`, lane by lane.
     #[inline(always)]
     fn min_of(&self, o: &Self) -> Self {
         self.if_gt(o, || o.clone(), || self.clone())

@@ -335,6 +335,7 @@ impl fmt::Debug for Real {
 
 impl Scalar for Real {
     const PRECISION: Precision = Precision::Exact;
+    type Mask = bool;
 
     fn from_real(x: &Real) -> Self {
         x.clone()

@@ -1,5 +1,12 @@
 //! One light at the point: direction and distance, range, attenuation,
 //! spot factor, cos α, R and cos β, the half vector H and the highlight.
+//!
+//! Written once for every scalar, the renderer's lane type included: every
+//! "where" of the text is a lane-wise truth value ([`Scalar::gt_mask`], a
+//! plain `bool` for one value) and every "else" a [`Scalar::select`]. A light
+//! is skipped when it reaches the point in no lane; in a lane it does not
+//! reach, its attenuation is 0. The steps' builders describe one value (only
+//! a listening recorder calls them, and lane types are never recorded).
 
 use super::{
     label, listening, max0, pow, Light, LightKind, LightTerm, Material, Model, RuleSet, Surface,
@@ -7,7 +14,7 @@ use super::{
 };
 use crate::msg::{LightPart, Msg, SpotZone};
 use crate::num::vec::{add, dot, sub, V3};
-use crate::num::Scalar;
+use crate::num::{Mask, Scalar};
 use crate::stages::trace::{Step, Trace, Val};
 
 /// One light's geometry and factors at the point; `None` when the point is
@@ -26,8 +33,9 @@ pub fn light_term<T: Scalar>(
     light_term_with(mat, light, at, s, v, want_spec, &TextRules, tr)
 }
 
-/// [`light_term`] under the given rules ([`super::Rules`] or [`TextRules`]);
-/// always inlined (into `shade`'s body too).
+/// [`light_term`] under the given rules ([`super::Rules`] or [`TextRules`]):
+/// L (and d), Att, Spot, cos α = L·N, then the specular part
+/// ([`specular`]); always inlined (into `shade`'s body too).
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
@@ -40,83 +48,15 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
     rules: &R,
     tr: &mut impl Trace,
 ) -> Option<LightTerm<T>> {
-    let n = &s.normal;
-    // Lanes of a lane type that the light does not reach: 0 there, else 1.
-    let mut keep: Option<T> = None;
-    // Direction to the light, distance and range
-    let (l, distance) = match &light.kind {
-        LightKind::Directional { dir } => (dir.clone(), None),
+    let (l, distance, reached) = match &light.kind {
+        LightKind::Directional { dir } => (dir.clone(), None, T::Mask::from(true)),
         LightKind::Point { pos } | LightKind::Spot { pos, .. } => {
-            let to = sub(pos, &s.position);
-            let d2 = dot(&to, &to);
-            if let Some(r) = &light.range {
-                if d2 > r.clone() * r.clone() {
-                    tr.step(|| {
-                        Step::new(label(at, LightPart::OutOfRange), Msg::FOutOfRange)
-                            .val("d²", Val::num(&d2))
-                            .val("range²", Val::num(&(r.clone() * r.clone())))
-                            .res("contributes", Val::Bool(false))
-                            .note(Msg::BeyondRange)
-                    });
-                    return None;
-                }
-            }
-            let d = d2.sqrt();
-            if d.is_zero_value() {
-                return None;
-            }
-            // A lane type reaches here when *some* lane is in range and away
-            // from the light: the others get nothing from it, as a scalar
-            // that returned above (no work for a one-lane scalar).
-            if T::LANES > 1 {
-                let reach = d.if_gt(&T::zero(), T::one, T::zero);
-                keep = Some(match &light.range {
-                    Some(r) => d2.if_gt(&(r.clone() * r.clone()), T::zero, || reach),
-                    None => reach,
-                });
-            }
-            let l = crate::num::vec::div(&to, &d);
-            tr.step(|| {
-                Step::new(
-                    label(at, LightPart::Direction),
-                    "d = |Pl − P|,  L = (Pl − P)/d",
-                )
-                .val("Pl", Val::vec3(pos))
-                .val("P", Val::vec3(&s.position))
-                .val("d", Val::num(&d))
-                .res("L", Val::vec3(&l))
-                .note(match &light.range {
-                    Some(_) => Msg::WithinRange,
-                    None => Msg::NoRange,
-                })
-            });
-            (l, Some(d))
+            let (l, d, reached) = toward(light, pos, s, at, tr)?;
+            (l, Some(d), reached)
         }
     };
-
-    // Attenuation 1/(a0 + a1·d + a2·d²) and the spot factor
     let attenuation = match &distance {
-        Some(d) => {
-            let a = &light.attenuation;
-            let den =
-                a[0].clone() + a[1].clone() * d.clone() + a[2].clone() * d.clone() * d.clone();
-            let att = T::one() / den.clone();
-            let att = match &keep {
-                Some(k) => att * k.clone(),
-                None => att,
-            };
-            tr.step(|| {
-                Step::new(
-                    label(at, LightPart::Attenuation),
-                    "Att = 1/(a0 + a1·d + a2·d²)",
-                )
-                .val("(a0, a1, a2)", Val::List(a.iter().map(Val::num).collect()))
-                .val("d", Val::num(d))
-                .val("a0 + a1·d + a2·d²", Val::num(&den))
-                .res("Att", Val::num(&att))
-            });
-            att
-        }
+        Some(d) => attenuation(&light.attenuation, d, reached, at, tr),
         None => T::one(),
     };
     let spot = match &light.kind {
@@ -129,9 +69,8 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
         } => spot_factor(&l, dir, theta, phi, falloff, at, tr),
         _ => T::one(),
     };
-    let listening = listening(tr);
     // cos α = L·N
-    let cos_alpha = dot(&l, n);
+    let cos_alpha = dot(&l, &s.normal);
     let mut term = LightTerm {
         l,
         distance,
@@ -144,33 +83,140 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
         cos_nh: None,
         highlight: T::zero(),
     };
-    if !listening && (term.attenuation.clone() * term.spot.clone()).is_zero_value() {
+    // Att·Spot = 0 (in every lane): the light adds nothing here.
+    let silent = (term.attenuation.clone() * term.spot.clone()).is_zero_value();
+    if silent && !listening(tr) {
         return Some(term);
     }
-    tr.step(|| {
-        let cos_alpha = &term.cos_alpha;
-        let s = Step::new(label(at, LightPart::Incidence), Msg::FIncidence)
-            .val("L", Val::vec3(&term.l))
-            .val("N", Val::vec3(n))
-            .res("cos α", Val::num(cos_alpha))
-            .res("max(cos α, 0)", Val::num(&max0(cos_alpha)));
-        if *cos_alpha < T::zero() {
-            s.note(if mat.specular_requires_lit {
-                Msg::Behind(true)
-            } else {
-                Msg::Behind(false)
-            })
-        } else {
-            s
-        }
-    });
+    tr.step(|| incidence_step(mat, &term, &s.normal, at));
+    specular(mat, &mut term, s, v, want_spec, rules, at, tr);
+    Some(term)
+}
 
-    // Specular: R and cos β (Phong), or H and N·H (Blinn)
-    // cos α > 0 (in some lane, for a lane type).
-    let lit = term.cos_alpha.any_gt(&T::zero());
-    let active = want_spec && (lit || !mat.specular_requires_lit);
-    if !(active || listening) {
-        return Some(term);
+/// d = |Pl − P| and L = (Pl − P)/d toward a point or spot light at `pos`,
+/// and where the light reaches the point: d² ≤ range² (everywhere without
+/// a range) and d > 0. `None` when it reaches no lane (after the step
+/// "out of range" when that is the reason).
+#[inline(always)]
+fn toward<T: Scalar>(
+    light: &Light<T>,
+    pos: &V3<T>,
+    s: &Surface<T>,
+    at: (usize, usize),
+    tr: &mut impl Trace,
+) -> Option<(V3<T>, T, T::Mask)> {
+    let to = sub(pos, &s.position);
+    let d2 = dot(&to, &to);
+    let mut in_range = T::Mask::from(true);
+    if let Some(r) = &light.range {
+        let r2 = r.clone() * r.clone();
+        in_range = !d2.gt_mask(&r2);
+        if !in_range.any() {
+            tr.step(|| {
+                Step::new(label(at, LightPart::OutOfRange), Msg::FOutOfRange)
+                    .val("d²", Val::num(&d2))
+                    .val("range²", Val::num(&r2))
+                    .res("contributes", Val::Bool(false))
+                    .note(Msg::BeyondRange)
+            });
+            return None;
+        }
+    }
+    let d = d2.sqrt();
+    let reached = in_range & d.gt_mask(&T::zero());
+    if !reached.any() {
+        return None;
+    }
+    let l = crate::num::vec::div(&to, &d);
+    tr.step(|| {
+        Step::new(
+            label(at, LightPart::Direction),
+            "d = |Pl − P|,  L = (Pl − P)/d",
+        )
+        .val("Pl", Val::vec3(pos))
+        .val("P", Val::vec3(&s.position))
+        .val("d", Val::num(&d))
+        .res("L", Val::vec3(&l))
+        .note(match &light.range {
+            Some(_) => Msg::WithinRange,
+            None => Msg::NoRange,
+        })
+    });
+    Some((l, d, reached))
+}
+
+/// Att = 1/(a0 + a1·d + a2·d²) where the light reaches the point
+/// (`reached`), 0 elsewhere.
+#[inline(always)]
+fn attenuation<T: Scalar>(
+    a: &[T; 3],
+    d: &T,
+    reached: T::Mask,
+    at: (usize, usize),
+    tr: &mut impl Trace,
+) -> T {
+    let den = a[0].clone() + a[1].clone() * d.clone() + a[2].clone() * d.clone() * d.clone();
+    let att = T::select(reached, T::one() / den.clone(), T::zero());
+    tr.step(|| {
+        Step::new(
+            label(at, LightPart::Attenuation),
+            "Att = 1/(a0 + a1·d + a2·d²)",
+        )
+        .val("(a0, a1, a2)", Val::List(a.iter().map(Val::num).collect()))
+        .val("d", Val::num(d))
+        .val("a0 + a1·d + a2·d²", Val::num(&den))
+        .res("Att", Val::num(&att))
+    });
+    att
+}
+
+/// The step of cos α = L·N and max(cos α, 0), noting a light behind the
+/// surface (cos α < 0).
+fn incidence_step<T: Scalar>(
+    mat: &Material<T>,
+    term: &LightTerm<T>,
+    n: &V3<T>,
+    at: (usize, usize),
+) -> Step {
+    let cos_alpha = &term.cos_alpha;
+    let s = Step::new(label(at, LightPart::Incidence), Msg::FIncidence)
+        .val("L", Val::vec3(&term.l))
+        .val("N", Val::vec3(n))
+        .res("cos α", Val::num(cos_alpha))
+        .res("max(cos α, 0)", Val::num(&max0(cos_alpha)));
+    if *cos_alpha < T::zero() {
+        s.note(Msg::Behind(mat.specular_requires_lit))
+    } else {
+        s
+    }
+}
+
+/// The specular part of one light: R = 2N(L·N) − L and cos β = R·V
+/// (Blinn: H = norm(V + L) and N·H), then the highlight max(cos β, 0)ⁿ
+/// (Blinn: max(N·H, 0)ⁿ) where the term is added: everywhere, or only
+/// where cos α > 0 when the material's specular needs a lit surface.
+/// Evaluated when the term is added in some lane, or explained.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn specular<T: Scalar, R: RuleSet<T>>(
+    mat: &Material<T>,
+    term: &mut LightTerm<T>,
+    s: &Surface<T>,
+    v: &V3<T>,
+    want_spec: bool,
+    rules: &R,
+    at: (usize, usize),
+    tr: &mut impl Trace,
+) {
+    let n = &s.normal;
+    let gate = if mat.specular_requires_lit {
+        term.cos_alpha.gt_mask(&T::zero())
+    } else {
+        T::Mask::from(true)
+    };
+    let active = want_spec && gate.any();
+    if !(active || listening(tr)) {
+        return;
     }
     let two_ln = T::from_i64(2) * term.cos_alpha.clone();
     let r = rules.reflect(n, &term.l, &two_ln);
@@ -186,33 +232,7 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
         .res("cos β", Val::num(&cos_beta))
     });
     let cos_spec = if mat.model == Model::Blinn {
-        let sum = add(v, &term.l);
-        // |V + L| ≤ 2 for unit V and L: no overflow, so a plain √(s·s) will do
-        let len = dot(&sum, &sum).sqrt();
-        let h = if len.is_zero_value() {
-            sum
-        } else {
-            crate::num::vec::div(&sum, &len)
-        };
-        let nh = dot(n, &h);
-        tr.step(|| {
-            Step::new(
-                label(at, LightPart::HalfVector),
-                if s.camera.is_some() {
-                    "H = norm(norm(Cp − Vp) + Ldir) = norm(V + L),  cos = N·H"
-                } else {
-                    "H = norm((0,0,1) + Ldir) = norm(V + L),  cos = N·H"
-                },
-            )
-            .val("V + L", Val::vec3(&add(v, &term.l)))
-            .res("H", Val::vec3(&h))
-            .res("N·H", Val::num(&nh))
-            .note(if s.camera.is_some() {
-                Msg::LocalViewer
-            } else {
-                Msg::NoLocalViewer
-            })
-        });
+        let (h, nh) = half_vector(n, &term.l, v, s.camera.is_some(), at, tr);
         term.h = Some(h);
         term.cos_nh = Some(nh.clone());
         nh
@@ -222,42 +242,9 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
     term.r = Some(r);
     term.cos_beta = Some(cos_beta);
     if active {
-        // Only where cos α > 0 with --specular-requires-lit (every lane but
-        // those of a lane type that are unlit); else everywhere (gate 1).
-        // A lane type computes xⁿ for all lanes and keeps the gated ones:
-        // no closure, so the renderer's batch code stays one inlined body
-        // (an outlined closure would be compiled without the AVX2 of its
-        // caller). A scalar computes it only when the gate is open.
-        let gate = if mat.specular_requires_lit {
-            term.cos_alpha.clone()
-        } else {
-            T::one()
-        };
-        term.highlight = if T::LANES > 1 {
-            let hv = pow(&rules.highlight_base(&cos_spec), &mat.shininess);
-            gate.if_gt(&T::zero(), || hv, T::zero)
-        } else if gate > T::zero() {
-            pow(&rules.highlight_base(&cos_spec), &mat.shininess)
-        } else {
-            T::zero()
-        };
-        tr.step(|| {
-            let s = Step::new(
-                label(at, LightPart::Highlight),
-                if mat.model == Model::Blinn {
-                    "max(N·H, 0)ⁿ"
-                } else {
-                    "max(cos β, 0)ⁿ"
-                },
-            )
-            .val("n", Val::num(&mat.shininess))
-            .res("highlight", Val::num(&term.highlight));
-            if mat.shininess.is_zero_value() {
-                s.note(Msg::ShininessZero)
-            } else {
-                s
-            }
-        });
+        let hv = pow(&rules.highlight_base(&cos_spec), &mat.shininess);
+        term.highlight = T::select(gate, hv, T::zero());
+        tr.step(|| highlight_step(mat, &term.highlight, at));
     } else {
         tr.step(|| {
             Step::new(label(at, LightPart::Highlight), Msg::FNotAdded)
@@ -269,11 +256,73 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
                 })
         });
     }
-    Some(term)
 }
 
-/// Direct3D's spot factor: ρ = (−L)·axis; 1 when ρ ≥ cos(θ/2), 0 when
+/// Blinn's half vector H = norm(V + L) (V + L itself where |V + L| = 0)
+/// and N·H.
+#[inline(always)]
+fn half_vector<T: Scalar>(
+    n: &V3<T>,
+    l: &V3<T>,
+    v: &V3<T>,
+    local: bool,
+    at: (usize, usize),
+    tr: &mut impl Trace,
+) -> (V3<T>, T) {
+    let sum = add(v, l);
+    // |V + L| ≤ 2 for unit V and L: no overflow, so a plain √(s·s) will do
+    let len = dot(&sum, &sum).sqrt();
+    let away = len.gt_mask(&T::zero());
+    let h = if away.any() {
+        let q = crate::num::vec::div(&sum, &len);
+        V3::from_fn(|k, _| T::select(away, q[k].clone(), sum[k].clone()))
+    } else {
+        sum.clone()
+    };
+    let nh = dot(n, &h);
+    tr.step(|| {
+        Step::new(
+            label(at, LightPart::HalfVector),
+            if local {
+                "H = norm(norm(Cp − Vp) + Ldir) = norm(V + L),  cos = N·H"
+            } else {
+                "H = norm((0,0,1) + Ldir) = norm(V + L),  cos = N·H"
+            },
+        )
+        .val("V + L", Val::vec3(&sum))
+        .res("H", Val::vec3(&h))
+        .res("N·H", Val::num(&nh))
+        .note(if local {
+            Msg::LocalViewer
+        } else {
+            Msg::NoLocalViewer
+        })
+    });
+    (h, nh)
+}
+
+/// The step of the highlight max(cos β, 0)ⁿ (Blinn: max(N·H, 0)ⁿ).
+fn highlight_step<T: Scalar>(mat: &Material<T>, highlight: &T, at: (usize, usize)) -> Step {
+    let s = Step::new(
+        label(at, LightPart::Highlight),
+        if mat.model == Model::Blinn {
+            "max(N·H, 0)ⁿ"
+        } else {
+            "max(cos β, 0)ⁿ"
+        },
+    )
+    .val("n", Val::num(&mat.shininess))
+    .res("highlight", Val::num(highlight));
+    if mat.shininess.is_zero_value() {
+        s.note(Msg::ShininessZero)
+    } else {
+        s
+    }
+}
+
+/// Direct3D's spot factor: ρ = (−L)·axis; 1 where ρ ≥ cos(θ/2), 0 where
 /// ρ ≤ cos(φ/2), else ((ρ − cos(φ/2)) / (cos(θ/2) − cos(φ/2)))^falloff.
+#[inline(always)]
 pub fn spot_factor<T: Scalar>(
     l: &V3<T>,
     axis: &V3<T>,
@@ -287,20 +336,23 @@ pub fn spot_factor<T: Scalar>(
     let rho = -dot(l, axis);
     let cos_t = (theta.clone() / two.clone()).cos_deg();
     let cos_p = (phi.clone() / two).cos_deg();
-    // 1 where ρ ≥ cos(θ/2), else 0 where ρ ≤ cos(φ/2), else the penumbra
-    // (per lane for a lane type).
-    let penumbra = || {
+    // Outside the inner cone: ρ < cos(θ/2); of those, in the penumbra: ρ > cos(φ/2).
+    let outside = cos_t.gt_mask(&rho);
+    let penumbra = outside & rho.gt_mask(&cos_p);
+    let f = T::select(outside, T::zero(), T::one());
+    let f = if penumbra.any() {
         let x = (rho.clone() - cos_p.clone()) / (cos_t.clone() - cos_p.clone());
-        pow(&x, falloff)
+        T::select(penumbra, pow(&x, falloff), f)
+    } else {
+        f
     };
-    let f = cos_t.if_gt(&rho, || rho.if_gt(&cos_p, penumbra, T::zero), T::one);
     tr.step(|| {
-        let where_ = if rho >= cos_t {
-            Msg::SpotIn(SpotZone::Inner)
-        } else if rho <= cos_p {
-            Msg::SpotIn(SpotZone::Outer)
+        let zone = if !outside.any() {
+            SpotZone::Inner
+        } else if !penumbra.any() {
+            SpotZone::Outer
         } else {
-            Msg::SpotIn(SpotZone::Penumbra)
+            SpotZone::Penumbra
         };
         Step::new(
             label(at, LightPart::Spot),
@@ -311,7 +363,7 @@ pub fn spot_factor<T: Scalar>(
         .val("cos(φ/2)", Val::num(&cos_p))
         .val("falloff", Val::num(falloff))
         .res("Spot", Val::num(&f))
-        .note(where_)
+        .note(Msg::SpotIn(zone))
     });
     f
 }
