@@ -6,6 +6,7 @@ use crate::cli::args::RenderArgs;
 use crate::error::{Error, Result};
 use crate::input::scene::{Scene, Shading};
 use crate::msg::Msg;
+use crate::render::raster::Tri;
 use crate::render::{self, Corner, Frame, Options, Stats};
 use crate::stages::trace::Report;
 use crate::stages::trace::{NoTrace, Recorder, Step, Trace, Val};
@@ -15,8 +16,9 @@ use std::time::{Duration, Instant};
 
 /// Runs `render`.
 pub fn run(a: &RenderArgs) -> Result<Report> {
-    let scene = Scene::read(&a.scene)?;
+    let mut scene = Scene::read(&a.scene)?;
     let opt = options(a, &scene);
+    render::release_unused(&mut scene, &opt);
     let pixel = a.explain_pixel.as_deref().map(parse_pixel).transpose()?;
     if let Some((x, y)) = pixel {
         if x >= opt.width || y >= opt.height {
@@ -366,9 +368,9 @@ pub fn explain(
             .val("1/w", Val::vec3(&Vector3::from(t.inv_w)))
             .res("μ", Val::vec3(&Vector3::from(m)))
     });
-    shading(f, id, (x, y), m, rec);
+    let c = &g.corners;
+    shading(f, (t, c), (x, y), m, rec);
     rec.section(Msg::SecPixel(x, y));
-    let c = &f.corners[id as usize];
     let px = &f.rgb[3 * k..3 * k + 3];
     let col = render::pixel_color(t, c, x, y, &f.looks, f.ortho, &mut NoTrace);
     rec.step(|| {
@@ -382,11 +384,16 @@ pub fn explain(
     Ok(())
 }
 
-/// The shading steps of pixel (x, y) of triangle `id` with perspective
+/// The shading steps of pixel (x, y) of triangle `t` (corners `c`) with perspective
 /// weights `m`: flat, the face's lighting; Gouraud, each vertex's and the
 /// interpolation; Phong, the interpolated N, P, C and the pixel's lighting.
-fn shading(f: &Frame, id: u32, (x, y): (u32, u32), m: [f32; 3], rec: &mut Recorder) {
-    let (t, c) = (&f.tris[id as usize], &f.corners[id as usize]);
+fn shading(
+    f: &Frame,
+    (t, c): (&Tri, &[Corner; 3]),
+    (x, y): (u32, u32),
+    m: [f32; 3],
+    rec: &mut Recorder,
+) {
     let at = |i: usize| m[0] * c[0][i] + m[1] * c[1][i] + m[2] * c[2][i];
     let look = &f.looks[t.obj as usize];
     let (mat, lights) = (&look.material, &look.lights);

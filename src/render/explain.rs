@@ -5,7 +5,7 @@
 
 use super::geometry::{self, ClipVert, VertBufs};
 use super::raster::{self, ScreenVert};
-use super::{Frame, Options, Stats};
+use super::{Corner, Frame, Options, Stats};
 use crate::error::Result;
 use crate::input::scene::Scene;
 use crate::msg::{Msg, PixelMsg};
@@ -61,25 +61,37 @@ pub fn explain_geometry(
     let Some((or, back)) = geometry::test(&p, idx, &vs, scene.cull, &mut st) else {
         return Ok(PixelGeometry::default());
     };
-    // The set-up triangles it gave, as clip coordinates: itself, or the
-    // fan of its clipped polygon.
-    let fan: Vec<[Vector4<f32>; 3]> = if or == 0 {
-        vec![clip]
+    // The set-up triangles it gave, as clip coordinates and corners:
+    // itself, or the fan of its clipped polygon.
+    let cs = geometry::corners(&p, idx, obj.tris.face[src], back, vs.ortho, &mut st);
+    let fan: Vec<[ClipVert; 3]> = if or == 0 {
+        let v = |k: usize| -> ClipVert {
+            std::array::from_fn(|i| if i < 4 { clip[k][i] } else { cs[k][i - 4] })
+        };
+        vec![[v(0), v(1), v(2)]]
     } else {
         rec.section(Msg::Pixel(PixelMsg::SecClip));
-        let cs = geometry::corners(&p, idx, obj.tris.face[src], back, vs.ortho, &mut st);
-        let (mut poly, mut tmp): (Vec<ClipVert>, _) = (Vec::new(), Vec::new());
+        let (mut poly, mut tmp) = (Vec::new(), Vec::new());
         geometry::clipped_polygon(&p, idx, &cs, or, (&mut poly, &mut tmp), rec);
-        let c = |v: &ClipVert| geometry::clip_xyzw(v);
         (1..poly.len().saturating_sub(1))
-            .map(|k| [c(&poly[0]), c(&poly[k]), c(&poly[k + 1])])
+            .map(|k| [poly[0], poly[k], poly[k + 1]])
             .collect()
     };
     let size = (opt.width, opt.height);
-    let same = |f: &[Vector4<f32>; 3]| {
-        let sv = f.map(|c| geometry::to_screen(&c, &vs.win, p.x.size, "", &mut NoTrace));
-        let made = raster::setup_of(sv, size.0, size.1);
-        made.is_some_and(|(mut m, _)| {
+    let screen = |v: &ClipVert, name: &str, rec: &mut Recorder| {
+        geometry::to_screen(&geometry::clip_xyzw(v), &vs.win, p.x.size, name, rec)
+    };
+    let same = |f: &[ClipVert; 3]| {
+        let sv = f.map(|v| {
+            geometry::to_screen(
+                &geometry::clip_xyzw(&v),
+                &vs.win,
+                p.x.size,
+                "",
+                &mut NoTrace,
+            )
+        });
+        raster::setup_of(sv, size.0, size.1).is_some_and(|(mut m, _)| {
             (m.obj, m.src) = (t.obj, t.src);
             m == *t
         })
@@ -96,16 +108,19 @@ pub fn explain_geometry(
         } else {
             format!("Q{k}")
         };
-        *v = geometry::to_screen(&fan[f][k], &vs.win, p.x.size, &name, rec);
+        *v = screen(&fan[f][k], &name, rec);
     }
     set_up_step(&sv, found.is_some(), rec);
     let mut verts = sv.map(|v| v.0);
+    let mut corners = fan[f].map(|v| -> Corner { std::array::from_fn(|i| v[i + 4]) });
     if raster::setup_of(sv, size.0, size.1).is_some_and(|(_, swap)| swap) {
         verts.swap(1, 2);
+        corners.swap(1, 2);
     }
     Ok(PixelGeometry {
         same: found.is_some(),
         verts,
+        corners,
     })
 }
 
@@ -116,6 +131,8 @@ pub struct PixelGeometry {
     pub same: bool,
     /// Its screen vertices, in the set-up triangle's order.
     pub verts: [ScreenVert; 3],
+    /// Its corners, in that order.
+    pub corners: [Corner; 3],
 }
 
 /// The step of the set-up triangle: its snapped vertices, and whether it

@@ -25,11 +25,13 @@ use super::{Corner, Options, Stats, ViewSetup};
 #[derive(Clone, Debug, Default)]
 pub struct VertBufs {
     ec: Vec<EyeCode>,
-    /// Screen positions ([`to_screen`]) of the vertices whose code is 0
-    /// (the default for the others, which only clipped triangles use).
-    screen: Vec<ScreenVert>,
-    /// The screen positions snapped to 1/256 pixel ([`snap`]), x and y.
-    snapped: Vec<[i64; 2]>,
+    /// Depth z/w and 1/w ([`to_screen`]) of the vertices whose code is 0
+    /// (0 for the others, which only clipped triangles use).
+    zw: Vec<[f32; 2]>,
+    /// Their screen positions snapped to 1/256 pixel
+    /// ([`window::snap_pixel`]), x and y: on the image, so within
+    /// 8192·256 = 2²¹.
+    snapped: Vec<[i32; 2]>,
     /// Unit eye-space vertex normals (none for flat shading).
     vnormals: Vec<[f32; 3]>,
 }
@@ -129,7 +131,7 @@ pub(super) struct VertXf<'a> {
 fn vertices(pos: &[[f32; 3]], x: &VertXf, bufs: &mut VertBufs) -> f32 {
     let n = pos.len();
     size(&mut bufs.ec, n);
-    size(&mut bufs.screen, n);
+    size(&mut bufs.zw, n);
     size(&mut bufs.snapped, n);
     let vn = &mut bufs.vnormals;
     let blocks = n.div_ceil(VBLOCK);
@@ -142,7 +144,7 @@ fn vertices(pos: &[[f32; 3]], x: &VertXf, bufs: &mut VertBufs) -> f32 {
     };
     pos.par_chunks(VBLOCK)
         .zip(bufs.ec.par_chunks_mut(VBLOCK))
-        .zip(bufs.screen.par_chunks_mut(VBLOCK))
+        .zip(bufs.zw.par_chunks_mut(VBLOCK))
         .zip(bufs.snapped.par_chunks_mut(VBLOCK))
         .zip(vn)
         .enumerate()
@@ -156,8 +158,8 @@ fn vertices(pos: &[[f32; 3]], x: &VertXf, bufs: &mut VertBufs) -> f32 {
 /// One block's slices of the per-vertex arrays.
 struct VertOut<'a> {
     ec: &'a mut [EyeCode],
-    ss: &'a mut [ScreenVert],
-    sn: &'a mut [[i64; 2]],
+    ss: &'a mut [[f32; 2]],
+    sn: &'a mut [[i32; 2]],
     /// Empty for no normals.
     vn: &'a mut [[f32; 3]],
 }
@@ -177,9 +179,10 @@ fn vertex_block(first: usize, ps: &[[f32; 3]], x: &VertXf, o: VertOut) -> f32 {
             code: code as u32,
         };
         (o.ss[k], o.sn[k]) = if code == 0 {
-            to_screen(&c, x.win, x.size, "", &mut NoTrace)
+            let (v, s) = to_screen(&c, x.win, x.size, "", &mut NoTrace);
+            ([v.z, v.inv_w], s.map(|s| s as i32))
         } else {
-            (ScreenVert::default(), [0; 2])
+            ([0.0; 2], [0; 2])
         };
     }
     match &x.normals {
@@ -257,11 +260,7 @@ pub(super) fn prepare<'a>(
     bufs: &'a mut VertBufs,
 ) -> Option<Prep<'a>> {
     let mesh = &obj.mesh;
-    let shading = if opt.force_shading {
-        opt.shading
-    } else {
-        obj.shading.unwrap_or(opt.shading)
-    };
+    let shading = shading_of(obj, opt);
     let eye_from_model = vs.eye_from_world * obj.model;
     let clip_from_model = vs.clip_from_eye * eye_from_model;
     // The model's bounding box (made once, when the scene was read), its
@@ -397,6 +396,16 @@ pub(super) fn prepare<'a>(
         lights,
         shading,
     })
+}
+
+/// How an object is shaded: `--shading` when forced, else its own or the
+/// scene's.
+pub(super) fn shading_of(obj: &Object, opt: &Options) -> Shading {
+    if opt.force_shading {
+        opt.shading
+    } else {
+        obj.shading.unwrap_or(opt.shading)
+    }
 }
 
 /// Triangles per parallel chunk of the geometry stage.
@@ -620,7 +629,7 @@ fn first_pass(
             continue;
         };
         let out = if or == 0 {
-            match raster::snap_box_of(idx.map(|i| p.v.snapped[i]), w, h) {
+            match raster::snap_box_of(idx.map(|i| p.v.snapped[i].map(i64::from)), w, h) {
                 Some(_) => {
                     st.drawn += 1;
                     1
@@ -719,7 +728,9 @@ fn clip_tri(
 /// slices for them, and the number of the first.
 struct Dest<'t> {
     tris: &'t mut [Tri],
+    /// Empty when no object needs corners to be shaded.
     corners: &'t mut [[Corner; 3]],
+    /// Empty when no object is shaded by Phong.
     planes: &'t mut [Planes],
     first: u32,
 }
@@ -742,25 +753,23 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
     let t = &p.obj.tris;
     let phong = p.shading == Shading::Phong;
     let mut clipped = buf.clipped.iter();
-    // The output slots in order (no index to check per triangle), and the
-    // frame's number of the next.
-    let mut slots = d
-        .tris
-        .iter_mut()
-        .zip(d.corners.iter_mut())
-        .zip(d.planes.iter_mut());
-    let mut n = d.first;
+    // The next output slot (a corner kept only when the frame keeps them),
+    // and the frame's number of the next.
+    let (mut k, mut cbuf) = (0, [[0.0f32; 12]; 3]);
     let mut st = Stats::default();
     for kept in &buf.kept {
         if kept.or != 0 {
             for (tri, cs) in clipped.by_ref().take(kept.out as usize) {
-                let Some(((t, c), pl)) = slots.next() else {
-                    break;
-                };
-                t.clone_from(tri);
+                let c = d.corners.get_mut(k).unwrap_or(&mut cbuf);
+                d.tris[k].clone_from(tri);
                 *c = *cs;
-                finish(n, phong, (t, c, pl), &mut buf.bins);
-                n += 1;
+                finish(
+                    d.first + k as u32,
+                    phong,
+                    (&d.tris[k], c, d.planes.get_mut(k)),
+                    &mut buf.bins,
+                );
+                k += 1;
             }
             continue;
         }
@@ -772,41 +781,57 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
         }
         let i = kept.tri as usize;
         let (idx, face) = (t.tris[i].map(|i| i as usize), t.face[i]);
-        let Some(s) = raster::snap_box_of(idx.map(|i| p.v.snapped[i]), w, h) else {
+        let Some(s) = raster::snap_box_of(idx.map(|i| p.v.snapped[i].map(i64::from)), w, h) else {
             continue;
         };
-        let Some(((tri, c), pl)) = slots.next() else {
-            break;
-        };
+        let (tri, c) = (&mut d.tris[k], d.corners.get_mut(k).unwrap_or(&mut cbuf));
         let slot = if s.swap() { [0, 2, 1] } else { [0, 1, 2] };
         corners_into(p, idx, face, kept.back, vs.ortho, &mut st, c, slot);
-        raster::setup_into(&idx.map(|i| p.v.screen[i]), &s, tri);
+        raster::setup_into(&idx.map(|i| p.v.zw[i]), &s, tri);
         tri.obj = oi;
         tri.src = kept.tri;
-        finish(n, phong, (tri, c, pl), &mut buf.bins);
-        n += 1;
+        finish(
+            d.first + k as u32,
+            phong,
+            (tri, c, d.planes.get_mut(k)),
+            &mut buf.bins,
+        );
+        k += 1;
     }
     buf.stats.lighting_evals += st.lighting_evals;
 }
 
 /// Set-up triangle number `n` of the frame is in place with its corners:
-/// its Phong planes (the default for another shading) and its bins (rows
-/// y0..=y1 are in bands y0/BAND..=y1/BAND).
+/// its Phong planes when the frame keeps planes (the default for another
+/// shading) and its bins (rows y0..=y1 are in bands y0/BAND..=y1/BAND).
 #[inline(always)]
 fn finish(
     n: u32,
     phong: bool,
-    (tri, c, pl): (&Tri, &[Corner; 3], &mut Planes),
+    (tri, c, pl): (&Tri, &[Corner; 3], Option<&mut Planes>),
     bins: &mut [Vec<u32>],
 ) {
-    if phong {
-        pl.set(tri, c);
-    } else {
-        *pl = Planes::default();
+    match pl {
+        Some(pl) if phong => pl.set(tri, c),
+        Some(pl) => *pl = Planes::default(),
+        None => {}
     }
     let (b0, b1) = (tri.bbox[2] as usize / BAND, tri.bbox[3] as usize / BAND);
     for bin in &mut bins[b0..=b1] {
         bin.push(n);
+    }
+}
+
+/// [`split_by`] of `v[range]`, or as many empty slices when `v` is not
+/// kept (shorter than the range).
+fn split_kept<T>(
+    v: &mut [T],
+    range: std::ops::Range<usize>,
+    lens: impl Iterator<Item = usize>,
+) -> Vec<&mut [T]> {
+    match v.get_mut(range) {
+        Some(s) => split_by(s, lens),
+        None => lens.map(|_| &mut [][..]).collect(),
     }
 }
 
@@ -854,9 +879,14 @@ pub(super) fn triangles(
         });
     let total: usize = bufs.iter().map(|b| b.count).sum();
     let end = first + total;
+    let [keep_corners, keep_planes] = out.keep;
     if out.tris.len() < end {
         out.tris.resize(end, Tri::default());
+    }
+    if keep_corners && out.corners.len() < end {
         out.corners.resize(end, [[0.0; 12]; 3]);
+    }
+    if keep_planes && out.planes.len() < end {
         out.planes.resize(end, Planes::default());
     }
     let lens = || bufs.iter().map(|b| b.count);
@@ -869,8 +899,8 @@ pub(super) fn triangles(
         .collect();
     let dests: Vec<Dest> = split_by(&mut out.tris[first..end], lens())
         .into_iter()
-        .zip(split_by(&mut out.corners[first..end], lens()))
-        .zip(split_by(&mut out.planes[first..end], lens()))
+        .zip(split_kept(out.corners, first..end, lens()))
+        .zip(split_kept(out.planes, first..end, lens()))
         .zip(starts)
         .map(|(((tris, corners), planes), first)| Dest {
             tris,
@@ -910,6 +940,10 @@ pub(super) struct Output<'f> {
     pub(super) corners: &'f mut Vec<[Corner; 3]>,
     pub(super) planes: &'f mut Vec<Planes>,
     pub(super) bins: &'f mut Vec<Vec<u32>>,
+    /// Whether corners and planes are kept: corners when some object is
+    /// shaded flat or Gouraud (they hold its colours), planes when some
+    /// object is shaded by Phong (its per-pixel attributes).
+    pub(super) keep: [bool; 2],
 }
 
 /// The eye-space normal of polygon `f` (Newell's sum over its eye-space

@@ -145,7 +145,9 @@ pub struct Frame {
     pub ids: Vec<u32>,
     /// The set-up triangles.
     pub tris: Vec<Tri>,
-    /// Their corners.
+    /// Their corners (empty when every object is shaded by Phong, which
+    /// lights each pixel from its attribute planes instead; the explainer
+    /// makes a triangle's corners again).
     pub corners: Vec<[Corner; 3]>,
     /// Per object: how it is shaded.
     pub looks: Vec<Look>,
@@ -346,6 +348,20 @@ impl Progress {
     }
 }
 
+/// Frees what no step of a render with `opt` reads: the polygon lists
+/// (`mesh.faces`) of the objects not shaded flat. Only flat shading reads
+/// a face's polygon (Newell's normal); the triangles, their face numbers
+/// and the vertex normals were made from the polygons when the scene was
+/// read. (A 1,048,576-triangle sphere has 524,288 such small lists, about
+/// 29 MB with the allocator's overhead.)
+pub fn release_unused(scene: &mut Scene, opt: &Options) {
+    for o in &mut scene.objects {
+        if geometry::shading_of(o, opt) != Shading::Flat {
+            o.mesh.faces = Vec::new();
+        }
+    }
+}
+
 /// Renders a scene.
 pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
     render_reusing(scene, opt, None)
@@ -373,11 +389,23 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
     // new entries are filled before being written) and are cut at the end.
     let mut planes = std::mem::take(&mut scratch.planes);
     let mut bins: Vec<Vec<u32>> = Vec::new();
+    let phong = |o| geometry::shading_of(o, opt) == Shading::Phong;
+    let keep = [
+        !scene.objects.iter().all(phong),
+        scene.objects.iter().any(phong),
+    ];
+    if !keep[0] {
+        corners.clear();
+    }
+    if !keep[1] {
+        planes.clear();
+    }
     let mut out = geometry::Output {
         tris: &mut tris,
         corners: &mut corners,
         planes: &mut planes,
         bins: &mut bins,
+        keep,
     };
     let mut count = 0;
     // Per object: the material and the lights that reach it.
@@ -417,8 +445,8 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
         });
     }
     tris.truncate(count);
-    corners.truncate(count);
-    planes.truncate(count);
+    corners.truncate(if keep[0] { count } else { 0 });
+    planes.truncate(if keep[1] { count } else { 0 });
     bins.resize_with((opt.height as usize).div_ceil(BAND), Vec::new);
     scratch.planes = planes;
     let planes = &scratch.planes;
