@@ -117,7 +117,7 @@ pub(super) struct VertXf<'a> {
     centre: Vector3<f32>,
     /// The whole object is inside the view volume (all codes 0).
     inside: bool,
-    win: &'a Window<f32>,
+    pub(super) win: &'a Window<f32>,
     /// Image width and height.
     pub(super) size: (f32, f32),
     normals: NormalSrc<'a>,
@@ -251,6 +251,12 @@ pub(super) fn to_screen(
     };
     (v, s)
 }
+
+/// Everything the triangle loop needs about one object, or `None` when
+/// its bounding box is wholly outside one plane of the view volume
+/// (counted in `stats`): the whole-object outcode tests, the per-vertex
+/// work ([`vertices`]), the lights within range, the material, and for
+/// Gouraud on a closed mesh the lit vertices.
 pub(super) fn prepare<'a>(
     obj: &'a Object,
     vs: &'a ViewSetup,
@@ -259,27 +265,10 @@ pub(super) fn prepare<'a>(
     stats: &mut Stats,
     bufs: &'a mut VertBufs,
 ) -> Option<Prep<'a>> {
-    let mesh = &obj.mesh;
     let shading = shading_of(obj, opt);
     let eye_from_model = vs.eye_from_world * obj.model;
     let clip_from_model = vs.clip_from_eye * eye_from_model;
-    // The model's bounding box (made once, when the scene was read), its
-    // corners' outcodes: whole-object tests.
-    let [lo, hi] = obj.bounds;
-    let mut and = 0x3f;
-    let mut or = 0;
-    let c64: Matrix4<f64> = clip_from_model;
-    for k in 0..8 {
-        let q = [
-            if k & 1 == 0 { lo[0] } else { hi[0] },
-            if k & 2 == 0 { lo[1] } else { hi[1] },
-            if k & 4 == 0 { lo[2] } else { hi[2] },
-        ];
-        let c = c64 * Vector4::new(q[0] as f64, q[1] as f64, q[2] as f64, 1.0);
-        let code = crate::stages::clip::outcode_clip_space(&c);
-        and &= code;
-        or |= code;
-    }
+    let (and, or) = box_codes(obj, &clip_from_model);
     // Σ (polygon size − 2): the fan triangles made when the scene was read.
     let ntris = obj.tris.tris.len() as u64;
     if and != 0 {
@@ -289,57 +278,116 @@ pub(super) fn prepare<'a>(
         return None;
     }
     let inside = or == 0;
-    if inside {
-        stats.objects_inside += 1;
-    }
+    stats.objects_inside += u64::from(inside);
     let e32: Matrix4<f32> = eye_from_model.cast();
-    let c32: Matrix4<f32> = clip_from_model.cast();
-    let n = mesh.positions.len();
     // Lights out of range of the whole object are never evaluated for it:
     // its reach is the box's centre and the largest distance from it.
-    let centre = mul4(
-        &e32,
-        [
-            (lo[0] + hi[0]) / 2.0,
-            (lo[1] + hi[1]) / 2.0,
-            (lo[2] + hi[2]) / 2.0,
-        ],
-    );
-    let centre = Vector3::new(centre[0], centre[1], centre[2]);
-    // Normals go to eye space by the inverse transpose of the linear part.
+    let [lo, hi] = obj.bounds;
+    let centre = mul4(&e32, std::array::from_fn(|k| (lo[k] + hi[k]) / 2.0));
+    let x = VertXf {
+        e32,
+        c32: clip_from_model.cast(),
+        centre: Vector3::new(centre[0], centre[1], centre[2]),
+        inside,
+        win: &vs.win,
+        size: (opt.width as f32, opt.height as f32),
+        normals: normal_source(obj, vs, opt, shading, &eye_from_model),
+    };
+    let radius = vertices(&obj.mesh.positions, &x, bufs).sqrt();
+    let bufs: &'a VertBufs = bufs;
+    let lights = lights_in_range(scene_lights, &x.centre, radius, stats);
+    let material = material_of(obj, stats);
+    // Gouraud on a closed mesh without per-face colours: light each vertex once.
+    let lit =
+        (shading == Shading::Gouraud && obj.closed && !matches!(obj.colors, Colors::Faces(_)))
+            .then(|| {
+                let l: Vec<[f32; 3]> = (0..obj.mesh.positions.len())
+                    .into_par_iter()
+                    .map(|v| {
+                        let (s, n) = (surface(obj, 0, v as u32), v3(bufs.vnormals[v]));
+                        light_at(
+                            &material,
+                            &lights,
+                            s,
+                            n,
+                            bufs.eye(v),
+                            vs.ortho,
+                            &mut NoTrace,
+                        )
+                    })
+                    .collect();
+                stats.lighting_evals += l.len() as u64;
+                l
+            });
+    Some(Prep {
+        obj,
+        x,
+        v: bufs,
+        lit,
+        closed: obj.closed,
+        material,
+        lights,
+        shading,
+    })
+}
+
+/// The AND and OR of the outcodes ([`clip::outcode_clip_space`]) of the
+/// eight corners of the object's bounding box (made once, when the scene
+/// was read): AND ≠ 0, the object is outside a plane; OR = 0, inside.
+fn box_codes(obj: &Object, clip_from_model: &Matrix4<f64>) -> (u8, u8) {
+    let [lo, hi] = obj.bounds;
+    let (mut and, mut or) = (0x3f, 0);
+    for k in 0..8 {
+        let q: [f64; 3] =
+            std::array::from_fn(|a| f64::from(if k & (1 << a) == 0 { lo[a] } else { hi[a] }));
+        let code = clip::outcode_clip_space(&camera::apply(clip_from_model, &Vector3::from(q)));
+        and &= code;
+        or |= code;
+    }
+    (and, or)
+}
+
+/// Where an object's vertex normals come from: none for flat shading; its
+/// model normals to eye space by the inverse transpose of the linear part
+/// of V·M; or, the text's draw3Dcg, the vertex position in the (tilted)
+/// world made a unit vector.
+fn normal_source<'a>(
+    obj: &'a Object,
+    vs: &ViewSetup,
+    opt: &Options,
+    shading: Shading,
+    eye_from_model: &Matrix4<f64>,
+) -> NormalSrc<'a> {
     let lin: Matrix3<f64> = eye_from_model.fixed_view::<3, 3>(0, 0).into();
     let nmat: Matrix3<f32> = lin
         .try_inverse()
         .map(|m| m.transpose())
         .unwrap_or(lin)
         .cast();
-    let normals = match (shading, opt.normals) {
+    let rot = || {
+        vs.eye_from_world
+            .fixed_view::<3, 3>(0, 0)
+            .into_owned()
+            .cast()
+    };
+    match (shading, opt.normals) {
         (Shading::Flat, _) => NormalSrc::None,
         (_, Normals::Average) => NormalSrc::Model(&obj.vnormals, nmat),
-        // The text's draw3Dcg: the normal is the vertex position in the
-        // (tilted) world, made a unit vector.
-        (_, Normals::Position) => NormalSrc::Position(
-            obj.model.cast(),
-            vs.eye_from_world
-                .fixed_view::<3, 3>(0, 0)
-                .into_owned()
-                .cast(),
-        ),
-    };
-    let x = VertXf {
-        e32,
-        c32,
-        centre,
-        inside,
-        win: &vs.win,
-        size: (opt.width as f32, opt.height as f32),
-        normals,
-    };
-    let far2 = vertices(&mesh.positions, &x, bufs);
-    let radius = far2.sqrt();
-    let bufs: &'a VertBufs = bufs;
-    let mut lights = Vec::new();
-    for l in scene_lights {
+        (_, Normals::Position) => NormalSrc::Position(obj.model.cast(), rot()),
+    }
+}
+
+/// The scene's lights that may reach an object whose vertices lie within
+/// `radius` of `centre` (eye space): a point or spot light with a range is
+/// out when |pos − centre| − radius > range (counted in `stats`).
+fn lights_in_range(
+    lights: &[Light<f32>],
+    centre: &Vector3<f32>,
+    radius: f32,
+    stats: &mut Stats,
+) -> Vec<Light<Fast32>> {
+    let mut out = Vec::new();
+    for l in lights {
         let far = match (&l.kind, l.range) {
             (LightKind::Point { pos } | LightKind::Spot { pos, .. }, Some(r)) => {
                 (pos - centre).norm() - radius > r
@@ -349,9 +397,16 @@ pub(super) fn prepare<'a>(
         if far {
             stats.lights_skipped += 1;
         } else {
-            lights.push(light_as(l));
+            out.push(light_as(l));
         }
     }
+    out
+}
+
+/// An object's material at the renderer's precision: its one colour when
+/// it has one, and no specular work when ks = 0, specular is off or the
+/// model has no specular term (counted in `stats`).
+fn material_of(obj: &Object, stats: &mut Stats) -> Material<Fast32> {
     let mut material: Material<Fast32> = material_as(&obj.material);
     if let Colors::One(c) = obj.colors {
         material.color = c.map(Fast32);
@@ -364,38 +419,7 @@ pub(super) fn prepare<'a>(
         material.specular_on = false;
         stats.specular_skipped += 1;
     }
-    let closed = obj.closed;
-    // Gouraud on a closed mesh without per-face colours: light each vertex once.
-    let lit = if shading == Shading::Gouraud && closed && !matches!(obj.colors, Colors::Faces(_)) {
-        let l: Vec<[f32; 3]> = (0..n)
-            .into_par_iter()
-            .map(|v| {
-                light_at(
-                    &material,
-                    &lights,
-                    surface(obj, 0, v as u32),
-                    v3(bufs.vnormals[v]),
-                    bufs.eye(v),
-                    vs.ortho,
-                    &mut NoTrace,
-                )
-            })
-            .collect();
-        stats.lighting_evals += l.len() as u64;
-        Some(l)
-    } else {
-        None
-    };
-    Some(Prep {
-        obj,
-        x,
-        v: bufs,
-        lit,
-        closed,
-        material,
-        lights,
-        shading,
-    })
+    material
 }
 
 /// How an object is shaded: `--shading` when forced, else its own or the
