@@ -541,22 +541,6 @@ fn corners_into(
 ) {
     // An open mesh shows its back: light the side that is seen.
     let flip = if back { -1.0 } else { 1.0 };
-    // Phong (the common case, taken first): no lit colour, lit per pixel.
-    if p.shading == Shading::Phong {
-        for k in 0..3 {
-            let v = idx[k];
-            let s = surface(p.obj, face, v as u32);
-            let nrm = match p.v.vnormals.get(v) {
-                Some(n) => n.map(|x| x * flip),
-                None => [0.0; 3],
-            };
-            let e = p.v.ec[v].e;
-            out[slot[k]] = [
-                0.0, 0.0, 0.0, nrm[0], nrm[1], nrm[2], e[0], e[1], e[2], s[0], s[1], s[2],
-            ];
-        }
-        return;
-    }
     // Flat: one colour, normal and position for the whole face.
     let flat = (p.shading == Shading::Flat).then(|| {
         // The polygon's normal in eye space: the triangle's own for a
@@ -574,33 +558,24 @@ fn corners_into(
     for k in 0..3 {
         let v = idx[k];
         let s = surface(p.obj, face, v as u32);
-        let (c, nrm, e) = match flat {
-            Some(f) => f,
-            None => {
-                let nrm = match p.v.vnormals.get(v) {
-                    Some(n) => n.map(|x| x * flip),
-                    None => [0.0; 3],
-                };
-                let e = p.v.ec[v].e;
-                let c = match (p.shading, &p.lit) {
-                    (Shading::Gouraud, Some(l)) => l[v],
-                    (Shading::Gouraud, None) => {
-                        st.lighting_evals += 1;
-                        light_at(
-                            &p.material,
-                            &p.lights,
-                            s,
-                            v3(nrm),
-                            v3(e),
-                            ortho,
-                            &mut NoTrace,
-                        )
-                    }
-                    _ => [0.0; 3],
-                };
-                (c, nrm, e)
-            }
-        };
+        let (c, nrm, e) = flat.unwrap_or_else(|| {
+            let nrm =
+                p.v.vnormals
+                    .get(v)
+                    .map_or([0.0; 3], |n| n.map(|x| x * flip));
+            let e = p.v.ec[v].e;
+            let c = match (p.shading, &p.lit) {
+                (Shading::Gouraud, Some(l)) => l[v],
+                (Shading::Gouraud, None) => {
+                    st.lighting_evals += 1;
+                    let (n, e) = (v3(nrm), v3(e));
+                    light_at(&p.material, &p.lights, s, n, e, ortho, &mut NoTrace)
+                }
+                // Phong: no lit colour, lit per pixel.
+                _ => [0.0; 3],
+            };
+            (c, nrm, e)
+        });
         out[slot[k]] = [
             c[0], c[1], c[2], nrm[0], nrm[1], nrm[2], e[0], e[1], e[2], s[0], s[1], s[2],
         ];
