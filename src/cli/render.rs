@@ -12,6 +12,7 @@ use crate::stages::trace::Report;
 use crate::stages::trace::{NoTrace, Recorder, Step, Trace, Val};
 use nalgebra::Vector3;
 use serde_json::json;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 /// Runs `render`.
@@ -60,7 +61,6 @@ fn options(a: &RenderArgs, scene: &Scene) -> Options {
     opt.normals = a.normals.unwrap_or(opt.normals);
     opt.width = a.width.unwrap_or(opt.width);
     opt.height = a.height.unwrap_or(opt.height);
-    opt.progress = a.repeat == 1;
     opt
 }
 
@@ -72,11 +72,13 @@ fn frames(a: &RenderArgs, scene: &Scene, opt: &Options) -> Result<(Frame, Vec<St
     let bar = (a.repeat > 1)
         .then(|| crate::cli::terminal_bar(a.repeat as u64, "frames / bingkai"))
         .flatten();
+    let bands = (opt.height as usize).div_ceil(render::raster::BAND) as u64;
+    let progress = Progress::new(a.repeat == 1, bands);
     let go = || -> Result<(Frame, Vec<Stats>)> {
         let mut times = Vec::new();
         let mut last = None;
         for _ in 0..a.repeat {
-            let f = render::render_reusing(scene, opt, last.take())?;
+            let f = render::render_observed(scene, opt, last.take(), &|| progress.tick())?;
             times.push(f.stats.clone());
             last = Some(f);
             if let Some(b) = &bar {
@@ -86,6 +88,7 @@ fn frames(a: &RenderArgs, scene: &Scene, opt: &Options) -> Result<(Frame, Vec<St
         if let Some(b) = &bar {
             b.finish_and_clear();
         }
+        progress.finish();
         let f = last.ok_or_else(|| Error::new("--repeat", "nothing rendered"))?;
         Ok((f, times))
     };
@@ -96,6 +99,53 @@ fn frames(a: &RenderArgs, scene: &Scene, opt: &Options) -> Result<(Frame, Vec<St
             .map_err(|e| Error::new("--threads", e.to_string()))?
             .install(go),
         None => go(),
+    }
+}
+
+/// A progress bar that appears on a terminal once a render has taken half a
+/// second.
+struct Progress {
+    bar: Option<indicatif::ProgressBar>,
+    start: Instant,
+    shown: AtomicBool,
+}
+
+impl Progress {
+    fn new(on: bool, total: u64) -> Progress {
+        use std::io::IsTerminal;
+        let bar = (on && std::io::stderr().is_terminal()).then(|| {
+            let b = indicatif::ProgressBar::with_draw_target(
+                Some(total),
+                indicatif::ProgressDrawTarget::hidden(),
+            );
+            if let Ok(s) =
+                indicatif::ProgressStyle::with_template("{msg} {bar:40} {pos}/{len} bands")
+            {
+                b.set_style(s);
+            }
+            b.set_message("rendering");
+            b
+        });
+        Progress {
+            bar,
+            start: Instant::now(),
+            shown: AtomicBool::new(false),
+        }
+    }
+    fn tick(&self) {
+        if let Some(b) = &self.bar {
+            b.inc(1);
+            if self.start.elapsed() > Duration::from_millis(500)
+                && !self.shown.swap(true, Ordering::Relaxed)
+            {
+                b.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+            }
+        }
+    }
+    fn finish(&self) {
+        if let Some(b) = &self.bar {
+            b.finish_and_clear();
+        }
     }
 }
 

@@ -25,7 +25,6 @@ use crate::stages::window::Window;
 use nalgebra::{Matrix4, Vector3};
 use raster::{Tri, BAND};
 use rayon::prelude::*;
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
@@ -56,8 +55,6 @@ pub struct Options {
     pub height: u32,
     /// Use `shading` for every object, even those that name their own.
     pub force_shading: bool,
-    /// Show a progress bar on a terminal for renders over half a second.
-    pub progress: bool,
 }
 
 impl Options {
@@ -69,7 +66,6 @@ impl Options {
             width: scene.width,
             height: scene.height,
             force_shading: false,
-            progress: false,
         }
     }
 }
@@ -301,53 +297,6 @@ fn win32(w: &Window<f64>) -> Window<f32> {
     }
 }
 
-/// A progress bar that appears on a terminal once a render has taken half a
-/// second.
-struct Progress {
-    bar: Option<indicatif::ProgressBar>,
-    start: Instant,
-    shown: AtomicBool,
-}
-
-impl Progress {
-    fn new(on: bool, total: u64) -> Progress {
-        use std::io::IsTerminal;
-        let bar = (on && std::io::stderr().is_terminal()).then(|| {
-            let b = indicatif::ProgressBar::with_draw_target(
-                Some(total),
-                indicatif::ProgressDrawTarget::hidden(),
-            );
-            if let Ok(s) =
-                indicatif::ProgressStyle::with_template("{msg} {bar:40} {pos}/{len} bands")
-            {
-                b.set_style(s);
-            }
-            b.set_message("rendering");
-            b
-        });
-        Progress {
-            bar,
-            start: Instant::now(),
-            shown: AtomicBool::new(false),
-        }
-    }
-    fn tick(&self) {
-        if let Some(b) = &self.bar {
-            b.inc(1);
-            if self.start.elapsed() > Duration::from_millis(500)
-                && !self.shown.swap(true, Ordering::Relaxed)
-            {
-                b.set_draw_target(indicatif::ProgressDrawTarget::stderr());
-            }
-        }
-    }
-    fn finish(&self) {
-        if let Some(b) = &self.bar {
-            b.finish_and_clear();
-        }
-    }
-}
-
 /// Frees what no step of a render with `opt` reads: the polygon lists
 /// (`mesh.faces`) of the objects not shaded flat. Only flat shading reads
 /// a face's polygon (Newell's normal); the triangles, their face numbers
@@ -370,6 +319,17 @@ pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
 /// Renders a scene into the buffers of a previous frame when it has the
 /// same size (as a real-time loop would: no fresh allocation per frame).
 pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Result<Frame> {
+    render_observed(scene, opt, prev, &|| {})
+}
+
+/// [`render_reusing`], calling `band_done` as each band of [`BAND`] rows
+/// is finished (from the worker threads): for a progress bar.
+pub fn render_observed(
+    scene: &Scene,
+    opt: &Options,
+    prev: Option<Frame>,
+    band_done: &(dyn Fn() + Sync),
+) -> Result<Frame> {
     crate::input::scene::check_size(opt.width, opt.height)?;
     let t0 = Instant::now();
     let vs = view_setup(scene, opt.width, opt.height)?;
@@ -394,7 +354,7 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
     let (bins, ranges) = geometry_stage(scene, opt, &vs, &mut f);
     let phong = shade::PhongIndex::new(f.tris.len(), &ranges, &f.looks);
     f.stats.geometry = t0.elapsed().saturating_sub(f.stats.binning);
-    band_pass(&mut f, to_u8(scene.background), &bins, &phong, opt.progress);
+    band_pass(&mut f, to_u8(scene.background), &bins, &phong, band_done);
     Ok(f)
 }
 
@@ -474,7 +434,7 @@ fn band_pass(
     bg: [u8; 3],
     bins: &[Vec<u32>],
     phong: &shade::PhongIndex,
-    progress: bool,
+    band_done: &(dyn Fn() + Sync),
 ) {
     let Frame {
         width,
@@ -499,7 +459,6 @@ fn band_pass(
         bg,
         width: w,
     };
-    let progress = Progress::new(progress, bins.len() as u64);
     let t2 = Instant::now();
     let depth = &mut scratch.depth.0;
     depth.resize_with(rayon::current_num_threads(), Mutex::default);
@@ -517,14 +476,13 @@ fn band_pass(
             let raster_t = t.elapsed();
             let t = Instant::now();
             let (count, evals) = shade::shade_band(&band_in, (band * BAND) as u32, out, id);
-            progress.tick();
+            band_done();
             (count, evals, raster_t, t.elapsed())
         })
         .reduce(
             || (0, 0, Duration::ZERO, Duration::ZERO),
             |a, b| (a.0 + b.0, a.1 + b.1, a.2 + b.2, a.3 + b.3),
         );
-    progress.finish();
     stats.pixels_shaded = shaded;
     stats.lighting_evals += evals;
     stats.raster = raster_t;
