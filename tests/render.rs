@@ -389,7 +389,12 @@ fn phong_pixels_lit_eight_at_a_time_match_the_one_pixel_path() {
     // explainer (`pixel_color`) lights one pixel at a time through the
     // same `lighting::shade` body at Fast32. Every lane is computed with
     // the same f32 operations, so every pixel must agree to the bit.
-    let f = draw(MIXED);
+    // A Phong frame keeps no corners: they are made again per triangle
+    // through the renderer's own geometry (`explain_geometry`).
+    let s = scene(MIXED);
+    let opt = Options::of(&s);
+    let f = render::render(&s, &opt).unwrap();
+    let mut made = std::collections::HashMap::new();
     let mut checked = 0;
     for y in 0..f.height {
         for x in 0..f.width {
@@ -397,7 +402,12 @@ fn phong_pixels_lit_eight_at_a_time_match_the_one_pixel_path() {
             if t == grafika::render::raster::NONE {
                 continue;
             }
-            let (tri, c) = (&f.tris[t as usize], &f.corners[t as usize]);
+            let g = made.entry(t).or_insert_with(|| {
+                let mut rec = grafika::stages::trace::Recorder::new();
+                render::explain_geometry(&s, &opt, &f, t, &mut rec).unwrap()
+            });
+            assert!(g.same, "triangle {t}");
+            let (tri, c) = (&f.tris[t as usize], &g.corners);
             let one = render::pixel_color(tri, c, x, y, &f.looks, f.ortho, &mut NoTrace);
             assert_eq!(pixel(&f, x, y), render::to_u8(one), "pixel ({x}, {y})");
             checked += 1;

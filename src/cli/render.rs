@@ -6,17 +6,20 @@ use crate::cli::args::RenderArgs;
 use crate::error::{Error, Result};
 use crate::input::scene::{Scene, Shading};
 use crate::msg::Msg;
+use crate::render::raster::Tri;
 use crate::render::{self, Corner, Frame, Options, Stats};
 use crate::stages::trace::Report;
 use crate::stages::trace::{NoTrace, Recorder, Step, Trace, Val};
 use nalgebra::Vector3;
 use serde_json::json;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 /// Runs `render`.
 pub fn run(a: &RenderArgs) -> Result<Report> {
-    let scene = Scene::read(&a.scene)?;
+    let mut scene = Scene::read(&a.scene)?;
     let opt = options(a, &scene);
+    render::release_unused(&mut scene, &opt);
     let pixel = a.explain_pixel.as_deref().map(parse_pixel).transpose()?;
     if let Some((x, y)) = pixel {
         if x >= opt.width || y >= opt.height {
@@ -55,7 +58,6 @@ fn options(a: &RenderArgs, scene: &Scene) -> Options {
     opt.normals = a.normals.unwrap_or(opt.normals);
     opt.width = a.width.unwrap_or(opt.width);
     opt.height = a.height.unwrap_or(opt.height);
-    opt.progress = a.repeat == 1;
     opt
 }
 
@@ -67,11 +69,13 @@ fn frames(a: &RenderArgs, scene: &Scene, opt: &Options) -> Result<(Frame, Vec<St
     let bar = (a.repeat > 1)
         .then(|| crate::cli::terminal_bar(a.repeat as u64, "frames / bingkai"))
         .flatten();
+    let bands = (opt.height as usize).div_ceil(render::raster::BAND) as u64;
+    let progress = Progress::new(a.repeat == 1, bands);
     let go = || -> Result<(Frame, Vec<Stats>)> {
         let mut times = Vec::new();
         let mut last = None;
         for _ in 0..a.repeat {
-            let f = render::render_reusing(scene, opt, last.take())?;
+            let f = render::render_observed(scene, opt, last.take(), &|| progress.tick())?;
             times.push(f.stats.clone());
             last = Some(f);
             if let Some(b) = &bar {
@@ -81,6 +85,7 @@ fn frames(a: &RenderArgs, scene: &Scene, opt: &Options) -> Result<(Frame, Vec<St
         if let Some(b) = &bar {
             b.finish_and_clear();
         }
+        progress.finish();
         let f = last.ok_or_else(|| Error::why("--repeat", crate::msg::ErrMsg::NothingRendered))?;
         Ok((f, times))
     };
@@ -91,6 +96,53 @@ fn frames(a: &RenderArgs, scene: &Scene, opt: &Options) -> Result<(Frame, Vec<St
             .map_err(|e| Error::why("--threads", crate::msg::ErrMsg::Threads(e.to_string())))?
             .install(go),
         None => go(),
+    }
+}
+
+/// A progress bar that appears on a terminal once a render has taken half a
+/// second.
+struct Progress {
+    bar: Option<indicatif::ProgressBar>,
+    start: Instant,
+    shown: AtomicBool,
+}
+
+impl Progress {
+    fn new(on: bool, total: u64) -> Progress {
+        use std::io::IsTerminal;
+        let bar = (on && std::io::stderr().is_terminal()).then(|| {
+            let b = indicatif::ProgressBar::with_draw_target(
+                Some(total),
+                indicatif::ProgressDrawTarget::hidden(),
+            );
+            if let Ok(s) =
+                indicatif::ProgressStyle::with_template("{msg} {bar:40} {pos}/{len} bands")
+            {
+                b.set_style(s);
+            }
+            b.set_message("rendering");
+            b
+        });
+        Progress {
+            bar,
+            start: Instant::now(),
+            shown: AtomicBool::new(false),
+        }
+    }
+    fn tick(&self) {
+        if let Some(b) = &self.bar {
+            b.inc(1);
+            if self.start.elapsed() > Duration::from_millis(500)
+                && !self.shown.swap(true, Ordering::Relaxed)
+            {
+                b.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+            }
+        }
+    }
+    fn finish(&self) {
+        if let Some(b) = &self.bar {
+            b.finish_and_clear();
+        }
     }
 }
 
@@ -363,9 +415,9 @@ pub fn explain(
             .val("1/w", Val::vec3(&Vector3::from(t.inv_w)))
             .res("μ", Val::vec3(&Vector3::from(m)))
     });
-    shading(f, id, (x, y), m, rec);
+    let c = &g.corners;
+    shading(f, (t, c), (x, y), m, rec);
     rec.section(Msg::SecPixel(x, y));
-    let c = &f.corners[id as usize];
     let px = &f.rgb[3 * k..3 * k + 3];
     let col = render::pixel_color(t, c, x, y, &f.looks, f.ortho, &mut NoTrace);
     rec.step(|| {
@@ -379,11 +431,16 @@ pub fn explain(
     Ok(())
 }
 
-/// The shading steps of pixel (x, y) of triangle `id` with perspective
+/// The shading steps of pixel (x, y) of triangle `t` (corners `c`) with perspective
 /// weights `m`: flat, the face's lighting; Gouraud, each vertex's and the
 /// interpolation; Phong, the interpolated N, P, C and the pixel's lighting.
-fn shading(f: &Frame, id: u32, (x, y): (u32, u32), m: [f32; 3], rec: &mut Recorder) {
-    let (t, c) = (&f.tris[id as usize], &f.corners[id as usize]);
+fn shading(
+    f: &Frame,
+    (t, c): (&Tri, &[Corner; 3]),
+    (x, y): (u32, u32),
+    m: [f32; 3],
+    rec: &mut Recorder,
+) {
     let at = |i: usize| m[0] * c[0][i] + m[1] * c[1][i] + m[2] * c[2][i];
     let look = &f.looks[t.obj as usize];
     let (mat, lights) = (&look.material, &look.lights);

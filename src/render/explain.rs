@@ -5,7 +5,7 @@
 
 use super::geometry::{self, ClipVert, VertBufs};
 use super::raster::{self, ScreenVert};
-use super::{Frame, Options, Stats};
+use super::{Corner, Frame, Options, Stats};
 use crate::error::Result;
 use crate::input::scene::Scene;
 use crate::msg::{Msg, PixelMsg};
@@ -37,6 +37,88 @@ pub fn explain_geometry(
     };
     let src = t.src as usize;
     let idx = obj.tris.tris[src].map(|i| i as usize);
+    let clip = vertex_steps(&p, idx, rec);
+    let Some((or, back)) = geometry::test(&p, idx, &vs, scene.cull, &mut st) else {
+        return Ok(PixelGeometry::default());
+    };
+    // The set-up triangles it gave, as clip coordinates and corners:
+    // itself, or the fan of its clipped polygon.
+    let cs = geometry::corners(&p, idx, obj.tris.face[src], back, vs.ortho, &mut st);
+    let fan: Vec<[ClipVert; 3]> = if or == 0 {
+        let v = |k: usize| -> ClipVert {
+            std::array::from_fn(|i| if i < 4 { clip[k][i] } else { cs[k][i - 4] })
+        };
+        vec![[v(0), v(1), v(2)]]
+    } else {
+        rec.section(Msg::Pixel(PixelMsg::SecClip));
+        let (mut poly, mut tmp) = (Vec::new(), Vec::new());
+        geometry::clipped_polygon(&p, idx, &cs, or, (&mut poly, &mut tmp), rec);
+        (1..poly.len().saturating_sub(1))
+            .map(|k| [poly[0], poly[k], poly[k + 1]])
+            .collect()
+    };
+    let fan = (or != 0, fan.as_slice());
+    Ok(screen_steps(&p, (opt.width, opt.height), fan, t, rec))
+}
+
+/// Of the set-up triangles a triangle gave (`fan`, clipped or not), the
+/// one the rasterizer used: per vertex its perspective division, window
+/// point, viewport, row and snapping (through [`geometry::to_screen`]),
+/// then the set-up triangle, found equal to the frame's `t` or not.
+fn screen_steps(
+    p: &geometry::Prep,
+    (w, h): (u32, u32),
+    (clipped, fan): (bool, &[[ClipVert; 3]]),
+    t: &raster::Tri,
+    rec: &mut Recorder,
+) -> PixelGeometry {
+    let screen = |v: &ClipVert, name: &str, tr: &mut Recorder| {
+        geometry::to_screen(&geometry::clip_xyzw(v), p.x.win, p.x.size, name, tr)
+    };
+    let same = |f: &[ClipVert; 3]| {
+        let to = |v: ClipVert| {
+            geometry::to_screen(
+                &geometry::clip_xyzw(&v),
+                p.x.win,
+                p.x.size,
+                "",
+                &mut NoTrace,
+            )
+        };
+        raster::setup_of(f.map(to), w, h).is_some_and(|(mut m, _)| {
+            (m.obj, m.src) = (t.obj, t.src);
+            m == *t
+        })
+    };
+    let found = fan.iter().position(same);
+    let Some(f) = found.or((!fan.is_empty()).then_some(0)) else {
+        return PixelGeometry::default();
+    };
+    let mut sv = [(ScreenVert::default(), [0i64; 2]); 3];
+    for (k, v) in sv.iter_mut().enumerate() {
+        rec.section(Msg::Pixel(PixelMsg::SecScreen(k)));
+        let name = format!("{}{k}", if clipped { "Q" } else { "V" });
+        *v = screen(&fan[f][k], &name, rec);
+    }
+    set_up_step(&sv, found.is_some(), rec);
+    let mut verts = sv.map(|v| v.0);
+    let mut corners = fan[f].map(|v| -> Corner { std::array::from_fn(|i| v[i + 4]) });
+    if raster::setup_of(sv, w, h).is_some_and(|(_, swap)| swap) {
+        verts.swap(1, 2);
+        corners.swap(1, 2);
+    }
+    PixelGeometry {
+        same: found.is_some(),
+        verts,
+        corners,
+    }
+}
+
+/// The object's matrices, then per vertex k of triangle `idx` (named Vk)
+/// its world, eye and clip coordinates and its outcode, through
+/// [`geometry::vertex_clip`]: returns the clip coordinates.
+fn vertex_steps(p: &geometry::Prep, idx: [usize; 3], rec: &mut Recorder) -> [Vector4<f32>; 3] {
+    let obj = p.obj;
     let model: Matrix4<f32> = obj.model.cast();
     rec.step(|| {
         Step::new(
@@ -58,55 +140,7 @@ pub fn explain_geometry(
             s.note = Some(Msg::Pixel(PixelMsg::Outside));
         }
     }
-    let Some((or, back)) = geometry::test(&p, idx, &vs, scene.cull, &mut st) else {
-        return Ok(PixelGeometry::default());
-    };
-    // The set-up triangles it gave, as clip coordinates: itself, or the
-    // fan of its clipped polygon.
-    let fan: Vec<[Vector4<f32>; 3]> = if or == 0 {
-        vec![clip]
-    } else {
-        rec.section(Msg::Pixel(PixelMsg::SecClip));
-        let cs = geometry::corners(&p, idx, obj.tris.face[src], back, vs.ortho, &mut st);
-        let (mut poly, mut tmp): (Vec<ClipVert>, _) = (Vec::new(), Vec::new());
-        geometry::clipped_polygon(&p, idx, &cs, or, (&mut poly, &mut tmp), rec);
-        let c = |v: &ClipVert| geometry::clip_xyzw(v);
-        (1..poly.len().saturating_sub(1))
-            .map(|k| [c(&poly[0]), c(&poly[k]), c(&poly[k + 1])])
-            .collect()
-    };
-    let size = (opt.width, opt.height);
-    let same = |f: &[Vector4<f32>; 3]| {
-        let sv = f.map(|c| geometry::to_screen(&c, &vs.win, p.x.size, "", &mut NoTrace));
-        let made = raster::setup_of(sv, size.0, size.1);
-        made.is_some_and(|(mut m, _)| {
-            (m.obj, m.src) = (t.obj, t.src);
-            m == *t
-        })
-    };
-    let found = fan.iter().position(same);
-    let Some(f) = found.or((!fan.is_empty()).then_some(0)) else {
-        return Ok(PixelGeometry::default());
-    };
-    let mut sv = [(ScreenVert::default(), [0i64; 2]); 3];
-    for (k, v) in sv.iter_mut().enumerate() {
-        rec.section(Msg::Pixel(PixelMsg::SecScreen(k)));
-        let name = if or == 0 {
-            format!("V{k}")
-        } else {
-            format!("Q{k}")
-        };
-        *v = geometry::to_screen(&fan[f][k], &vs.win, p.x.size, &name, rec);
-    }
-    set_up_step(&sv, found.is_some(), rec);
-    let mut verts = sv.map(|v| v.0);
-    if raster::setup_of(sv, size.0, size.1).is_some_and(|(_, swap)| swap) {
-        verts.swap(1, 2);
-    }
-    Ok(PixelGeometry {
-        same: found.is_some(),
-        verts,
-    })
+    clip
 }
 
 /// What the geometry of a pixel's triangle came to.
@@ -116,6 +150,8 @@ pub struct PixelGeometry {
     pub same: bool,
     /// Its screen vertices, in the set-up triangle's order.
     pub verts: [ScreenVert; 3],
+    /// Its corners, in that order.
+    pub corners: [Corner; 3],
 }
 
 /// The step of the set-up triangle: its snapped vertices, and whether it

@@ -25,11 +25,13 @@ use super::{Corner, Options, Stats, ViewSetup};
 #[derive(Clone, Debug, Default)]
 pub struct VertBufs {
     ec: Vec<EyeCode>,
-    /// Screen positions ([`to_screen`]) of the vertices whose code is 0
-    /// (the default for the others, which only clipped triangles use).
-    screen: Vec<ScreenVert>,
-    /// The screen positions snapped to 1/256 pixel ([`snap`]), x and y.
-    snapped: Vec<[i64; 2]>,
+    /// Depth z/w and 1/w ([`to_screen`]) of the vertices whose code is 0
+    /// (0 for the others, which only clipped triangles use).
+    zw: Vec<[f32; 2]>,
+    /// Their screen positions snapped to 1/256 pixel
+    /// ([`window::snap_pixel`]), x and y: on the image, so within
+    /// 8192·256 = 2²¹.
+    snapped: Vec<[i32; 2]>,
     /// Unit eye-space vertex normals (none for flat shading).
     vnormals: Vec<[f32; 3]>,
 }
@@ -115,7 +117,7 @@ pub(super) struct VertXf<'a> {
     centre: Vector3<f32>,
     /// The whole object is inside the view volume (all codes 0).
     inside: bool,
-    win: &'a Window<f32>,
+    pub(super) win: &'a Window<f32>,
     /// Image width and height.
     pub(super) size: (f32, f32),
     normals: NormalSrc<'a>,
@@ -129,7 +131,7 @@ pub(super) struct VertXf<'a> {
 fn vertices(pos: &[[f32; 3]], x: &VertXf, bufs: &mut VertBufs) -> f32 {
     let n = pos.len();
     size(&mut bufs.ec, n);
-    size(&mut bufs.screen, n);
+    size(&mut bufs.zw, n);
     size(&mut bufs.snapped, n);
     let vn = &mut bufs.vnormals;
     let blocks = n.div_ceil(VBLOCK);
@@ -142,7 +144,7 @@ fn vertices(pos: &[[f32; 3]], x: &VertXf, bufs: &mut VertBufs) -> f32 {
     };
     pos.par_chunks(VBLOCK)
         .zip(bufs.ec.par_chunks_mut(VBLOCK))
-        .zip(bufs.screen.par_chunks_mut(VBLOCK))
+        .zip(bufs.zw.par_chunks_mut(VBLOCK))
         .zip(bufs.snapped.par_chunks_mut(VBLOCK))
         .zip(vn)
         .enumerate()
@@ -156,8 +158,8 @@ fn vertices(pos: &[[f32; 3]], x: &VertXf, bufs: &mut VertBufs) -> f32 {
 /// One block's slices of the per-vertex arrays.
 struct VertOut<'a> {
     ec: &'a mut [EyeCode],
-    ss: &'a mut [ScreenVert],
-    sn: &'a mut [[i64; 2]],
+    ss: &'a mut [[f32; 2]],
+    sn: &'a mut [[i32; 2]],
     /// Empty for no normals.
     vn: &'a mut [[f32; 3]],
 }
@@ -177,9 +179,10 @@ fn vertex_block(first: usize, ps: &[[f32; 3]], x: &VertXf, o: VertOut) -> f32 {
             code: code as u32,
         };
         (o.ss[k], o.sn[k]) = if code == 0 {
-            to_screen(&c, x.win, x.size, "", &mut NoTrace)
+            let (v, s) = to_screen(&c, x.win, x.size, "", &mut NoTrace);
+            ([v.z, v.inv_w], s.map(|s| s as i32))
         } else {
-            (ScreenVert::default(), [0; 2])
+            ([0.0; 2], [0; 2])
         };
     }
     match &x.normals {
@@ -248,6 +251,12 @@ pub(super) fn to_screen(
     };
     (v, s)
 }
+
+/// Everything the triangle loop needs about one object, or `None` when
+/// its bounding box is wholly outside one plane of the view volume
+/// (counted in `stats`): the whole-object outcode tests, the per-vertex
+/// work ([`vertices`]), the lights within range, the material, and for
+/// Gouraud on a closed mesh the lit vertices.
 pub(super) fn prepare<'a>(
     obj: &'a Object,
     vs: &'a ViewSetup,
@@ -256,31 +265,10 @@ pub(super) fn prepare<'a>(
     stats: &mut Stats,
     bufs: &'a mut VertBufs,
 ) -> Option<Prep<'a>> {
-    let mesh = &obj.mesh;
-    let shading = if opt.force_shading {
-        opt.shading
-    } else {
-        obj.shading.unwrap_or(opt.shading)
-    };
+    let shading = shading_of(obj, opt);
     let eye_from_model = vs.eye_from_world * obj.model;
     let clip_from_model = vs.clip_from_eye * eye_from_model;
-    // The model's bounding box (made once, when the scene was read), its
-    // corners' outcodes: whole-object tests.
-    let [lo, hi] = obj.bounds;
-    let mut and = 0x3f;
-    let mut or = 0;
-    let c64: Matrix4<f64> = clip_from_model;
-    for k in 0..8 {
-        let q = [
-            if k & 1 == 0 { lo[0] } else { hi[0] },
-            if k & 2 == 0 { lo[1] } else { hi[1] },
-            if k & 4 == 0 { lo[2] } else { hi[2] },
-        ];
-        let c = c64 * Vector4::new(q[0] as f64, q[1] as f64, q[2] as f64, 1.0);
-        let code = crate::stages::clip::outcode_clip_space(&c);
-        and &= code;
-        or |= code;
-    }
+    let (and, or) = box_codes(obj, &clip_from_model);
     // Σ (polygon size − 2): the fan triangles made when the scene was read.
     let ntris = obj.tris.tris.len() as u64;
     if and != 0 {
@@ -290,57 +278,116 @@ pub(super) fn prepare<'a>(
         return None;
     }
     let inside = or == 0;
-    if inside {
-        stats.objects_inside += 1;
-    }
+    stats.objects_inside += u64::from(inside);
     let e32: Matrix4<f32> = eye_from_model.cast();
-    let c32: Matrix4<f32> = clip_from_model.cast();
-    let n = mesh.positions.len();
     // Lights out of range of the whole object are never evaluated for it:
     // its reach is the box's centre and the largest distance from it.
-    let centre = mul4(
-        &e32,
-        [
-            (lo[0] + hi[0]) / 2.0,
-            (lo[1] + hi[1]) / 2.0,
-            (lo[2] + hi[2]) / 2.0,
-        ],
-    );
-    let centre = Vector3::new(centre[0], centre[1], centre[2]);
-    // Normals go to eye space by the inverse transpose of the linear part.
+    let [lo, hi] = obj.bounds;
+    let centre = mul4(&e32, std::array::from_fn(|k| (lo[k] + hi[k]) / 2.0));
+    let x = VertXf {
+        e32,
+        c32: clip_from_model.cast(),
+        centre: Vector3::new(centre[0], centre[1], centre[2]),
+        inside,
+        win: &vs.win,
+        size: (opt.width as f32, opt.height as f32),
+        normals: normal_source(obj, vs, opt, shading, &eye_from_model),
+    };
+    let radius = vertices(&obj.mesh.positions, &x, bufs).sqrt();
+    let bufs: &'a VertBufs = bufs;
+    let lights = lights_in_range(scene_lights, &x.centre, radius, stats);
+    let material = material_of(obj, stats);
+    // Gouraud on a closed mesh without per-face colours: light each vertex once.
+    let lit =
+        (shading == Shading::Gouraud && obj.closed && !matches!(obj.colors, Colors::Faces(_)))
+            .then(|| {
+                let l: Vec<[f32; 3]> = (0..obj.mesh.positions.len())
+                    .into_par_iter()
+                    .map(|v| {
+                        let (s, n) = (surface(obj, 0, v as u32), v3(bufs.vnormals[v]));
+                        light_at(
+                            &material,
+                            &lights,
+                            s,
+                            n,
+                            bufs.eye(v),
+                            vs.ortho,
+                            &mut NoTrace,
+                        )
+                    })
+                    .collect();
+                stats.lighting_evals += l.len() as u64;
+                l
+            });
+    Some(Prep {
+        obj,
+        x,
+        v: bufs,
+        lit,
+        closed: obj.closed,
+        material,
+        lights,
+        shading,
+    })
+}
+
+/// The AND and OR of the outcodes ([`clip::outcode_clip_space`]) of the
+/// eight corners of the object's bounding box (made once, when the scene
+/// was read): AND ≠ 0, the object is outside a plane; OR = 0, inside.
+fn box_codes(obj: &Object, clip_from_model: &Matrix4<f64>) -> (u8, u8) {
+    let [lo, hi] = obj.bounds;
+    let (mut and, mut or) = (0x3f, 0);
+    for k in 0..8 {
+        let q: [f64; 3] =
+            std::array::from_fn(|a| f64::from(if k & (1 << a) == 0 { lo[a] } else { hi[a] }));
+        let code = clip::outcode_clip_space(&camera::apply(clip_from_model, &Vector3::from(q)));
+        and &= code;
+        or |= code;
+    }
+    (and, or)
+}
+
+/// Where an object's vertex normals come from: none for flat shading; its
+/// model normals to eye space by the inverse transpose of the linear part
+/// of V·M; or, the text's draw3Dcg, the vertex position in the (tilted)
+/// world made a unit vector.
+fn normal_source<'a>(
+    obj: &'a Object,
+    vs: &ViewSetup,
+    opt: &Options,
+    shading: Shading,
+    eye_from_model: &Matrix4<f64>,
+) -> NormalSrc<'a> {
     let lin: Matrix3<f64> = eye_from_model.fixed_view::<3, 3>(0, 0).into();
     let nmat: Matrix3<f32> = lin
         .try_inverse()
         .map(|m| m.transpose())
         .unwrap_or(lin)
         .cast();
-    let normals = match (shading, opt.normals) {
+    let rot = || {
+        vs.eye_from_world
+            .fixed_view::<3, 3>(0, 0)
+            .into_owned()
+            .cast()
+    };
+    match (shading, opt.normals) {
         (Shading::Flat, _) => NormalSrc::None,
         (_, Normals::Average) => NormalSrc::Model(&obj.vnormals, nmat),
-        // The text's draw3Dcg: the normal is the vertex position in the
-        // (tilted) world, made a unit vector.
-        (_, Normals::Position) => NormalSrc::Position(
-            obj.model.cast(),
-            vs.eye_from_world
-                .fixed_view::<3, 3>(0, 0)
-                .into_owned()
-                .cast(),
-        ),
-    };
-    let x = VertXf {
-        e32,
-        c32,
-        centre,
-        inside,
-        win: &vs.win,
-        size: (opt.width as f32, opt.height as f32),
-        normals,
-    };
-    let far2 = vertices(&mesh.positions, &x, bufs);
-    let radius = far2.sqrt();
-    let bufs: &'a VertBufs = bufs;
-    let mut lights = Vec::new();
-    for l in scene_lights {
+        (_, Normals::Position) => NormalSrc::Position(obj.model.cast(), rot()),
+    }
+}
+
+/// The scene's lights that may reach an object whose vertices lie within
+/// `radius` of `centre` (eye space): a point or spot light with a range is
+/// out when |pos − centre| − radius > range (counted in `stats`).
+fn lights_in_range(
+    lights: &[Light<f32>],
+    centre: &Vector3<f32>,
+    radius: f32,
+    stats: &mut Stats,
+) -> Vec<Light<Fast32>> {
+    let mut out = Vec::new();
+    for l in lights {
         let far = match (&l.kind, l.range) {
             (LightKind::Point { pos } | LightKind::Spot { pos, .. }, Some(r)) => {
                 (pos - centre).norm() - radius > r
@@ -350,9 +397,16 @@ pub(super) fn prepare<'a>(
         if far {
             stats.lights_skipped += 1;
         } else {
-            lights.push(light_as(l));
+            out.push(light_as(l));
         }
     }
+    out
+}
+
+/// An object's material at the renderer's precision: its one colour when
+/// it has one, and no specular work when ks = 0, specular is off or the
+/// model has no specular term (counted in `stats`).
+fn material_of(obj: &Object, stats: &mut Stats) -> Material<Fast32> {
     let mut material: Material<Fast32> = material_as(&obj.material);
     if let Colors::One(c) = obj.colors {
         material.color = c.map(Fast32);
@@ -365,38 +419,17 @@ pub(super) fn prepare<'a>(
         material.specular_on = false;
         stats.specular_skipped += 1;
     }
-    let closed = obj.closed;
-    // Gouraud on a closed mesh without per-face colours: light each vertex once.
-    let lit = if shading == Shading::Gouraud && closed && !matches!(obj.colors, Colors::Faces(_)) {
-        let l: Vec<[f32; 3]> = (0..n)
-            .into_par_iter()
-            .map(|v| {
-                light_at(
-                    &material,
-                    &lights,
-                    surface(obj, 0, v as u32),
-                    v3(bufs.vnormals[v]),
-                    bufs.eye(v),
-                    vs.ortho,
-                    &mut NoTrace,
-                )
-            })
-            .collect();
-        stats.lighting_evals += l.len() as u64;
-        Some(l)
+    material
+}
+
+/// How an object is shaded: `--shading` when forced, else its own or the
+/// scene's.
+pub(super) fn shading_of(obj: &Object, opt: &Options) -> Shading {
+    if opt.force_shading {
+        opt.shading
     } else {
-        None
-    };
-    Some(Prep {
-        obj,
-        x,
-        v: bufs,
-        lit,
-        closed,
-        material,
-        lights,
-        shading,
-    })
+        obj.shading.unwrap_or(opt.shading)
+    }
 }
 
 /// Triangles per parallel chunk of the geometry stage.
@@ -508,22 +541,6 @@ fn corners_into(
 ) {
     // An open mesh shows its back: light the side that is seen.
     let flip = if back { -1.0 } else { 1.0 };
-    // Phong (the common case, taken first): no lit colour, lit per pixel.
-    if p.shading == Shading::Phong {
-        for k in 0..3 {
-            let v = idx[k];
-            let s = surface(p.obj, face, v as u32);
-            let nrm = match p.v.vnormals.get(v) {
-                Some(n) => n.map(|x| x * flip),
-                None => [0.0; 3],
-            };
-            let e = p.v.ec[v].e;
-            out[slot[k]] = [
-                0.0, 0.0, 0.0, nrm[0], nrm[1], nrm[2], e[0], e[1], e[2], s[0], s[1], s[2],
-            ];
-        }
-        return;
-    }
     // Flat: one colour, normal and position for the whole face.
     let flat = (p.shading == Shading::Flat).then(|| {
         // The polygon's normal in eye space: the triangle's own for a
@@ -541,33 +558,24 @@ fn corners_into(
     for k in 0..3 {
         let v = idx[k];
         let s = surface(p.obj, face, v as u32);
-        let (c, nrm, e) = match flat {
-            Some(f) => f,
-            None => {
-                let nrm = match p.v.vnormals.get(v) {
-                    Some(n) => n.map(|x| x * flip),
-                    None => [0.0; 3],
-                };
-                let e = p.v.ec[v].e;
-                let c = match (p.shading, &p.lit) {
-                    (Shading::Gouraud, Some(l)) => l[v],
-                    (Shading::Gouraud, None) => {
-                        st.lighting_evals += 1;
-                        light_at(
-                            &p.material,
-                            &p.lights,
-                            s,
-                            v3(nrm),
-                            v3(e),
-                            ortho,
-                            &mut NoTrace,
-                        )
-                    }
-                    _ => [0.0; 3],
-                };
-                (c, nrm, e)
-            }
-        };
+        let (c, nrm, e) = flat.unwrap_or_else(|| {
+            let nrm =
+                p.v.vnormals
+                    .get(v)
+                    .map_or([0.0; 3], |n| n.map(|x| x * flip));
+            let e = p.v.ec[v].e;
+            let c = match (p.shading, &p.lit) {
+                (Shading::Gouraud, Some(l)) => l[v],
+                (Shading::Gouraud, None) => {
+                    st.lighting_evals += 1;
+                    let (n, e) = (v3(nrm), v3(e));
+                    light_at(&p.material, &p.lights, s, n, e, ortho, &mut NoTrace)
+                }
+                // Phong: no lit colour, lit per pixel.
+                _ => [0.0; 3],
+            };
+            (c, nrm, e)
+        });
         out[slot[k]] = [
             c[0], c[1], c[2], nrm[0], nrm[1], nrm[2], e[0], e[1], e[2], s[0], s[1], s[2],
         ];
@@ -620,7 +628,7 @@ fn first_pass(
             continue;
         };
         let out = if or == 0 {
-            match raster::snap_box_of(idx.map(|i| p.v.snapped[i]), w, h) {
+            match raster::snap_box_of(idx.map(|i| p.v.snapped[i].map(i64::from)), w, h) {
                 Some(_) => {
                     st.drawn += 1;
                     1
@@ -719,7 +727,9 @@ fn clip_tri(
 /// slices for them, and the number of the first.
 struct Dest<'t> {
     tris: &'t mut [Tri],
+    /// Empty when no object needs corners to be shaded.
     corners: &'t mut [[Corner; 3]],
+    /// Empty when no object is shaded by Phong.
     planes: &'t mut [Planes],
     first: u32,
 }
@@ -742,25 +752,23 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
     let t = &p.obj.tris;
     let phong = p.shading == Shading::Phong;
     let mut clipped = buf.clipped.iter();
-    // The output slots in order (no index to check per triangle), and the
-    // frame's number of the next.
-    let mut slots = d
-        .tris
-        .iter_mut()
-        .zip(d.corners.iter_mut())
-        .zip(d.planes.iter_mut());
-    let mut n = d.first;
+    // The next output slot (a corner kept only when the frame keeps them),
+    // and the frame's number of the next.
+    let (mut k, mut cbuf) = (0, [[0.0f32; 12]; 3]);
     let mut st = Stats::default();
     for kept in &buf.kept {
         if kept.or != 0 {
             for (tri, cs) in clipped.by_ref().take(kept.out as usize) {
-                let Some(((t, c), pl)) = slots.next() else {
-                    break;
-                };
-                t.clone_from(tri);
+                let c = d.corners.get_mut(k).unwrap_or(&mut cbuf);
+                d.tris[k].clone_from(tri);
                 *c = *cs;
-                finish(n, phong, (t, c, pl), &mut buf.bins);
-                n += 1;
+                finish(
+                    d.first + k as u32,
+                    phong,
+                    (&d.tris[k], c, d.planes.get_mut(k)),
+                    &mut buf.bins,
+                );
+                k += 1;
             }
             continue;
         }
@@ -772,41 +780,57 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
         }
         let i = kept.tri as usize;
         let (idx, face) = (t.tris[i].map(|i| i as usize), t.face[i]);
-        let Some(s) = raster::snap_box_of(idx.map(|i| p.v.snapped[i]), w, h) else {
+        let Some(s) = raster::snap_box_of(idx.map(|i| p.v.snapped[i].map(i64::from)), w, h) else {
             continue;
         };
-        let Some(((tri, c), pl)) = slots.next() else {
-            break;
-        };
+        let (tri, c) = (&mut d.tris[k], d.corners.get_mut(k).unwrap_or(&mut cbuf));
         let slot = if s.swap() { [0, 2, 1] } else { [0, 1, 2] };
         corners_into(p, idx, face, kept.back, vs.ortho, &mut st, c, slot);
-        raster::setup_into(&idx.map(|i| p.v.screen[i]), &s, tri);
+        raster::setup_into(&idx.map(|i| p.v.zw[i]), &s, tri);
         tri.obj = oi;
         tri.src = kept.tri;
-        finish(n, phong, (tri, c, pl), &mut buf.bins);
-        n += 1;
+        finish(
+            d.first + k as u32,
+            phong,
+            (tri, c, d.planes.get_mut(k)),
+            &mut buf.bins,
+        );
+        k += 1;
     }
     buf.stats.lighting_evals += st.lighting_evals;
 }
 
 /// Set-up triangle number `n` of the frame is in place with its corners:
-/// its Phong planes (the default for another shading) and its bins (rows
-/// y0..=y1 are in bands y0/BAND..=y1/BAND).
+/// its Phong planes when the frame keeps planes (the default for another
+/// shading) and its bins (rows y0..=y1 are in bands y0/BAND..=y1/BAND).
 #[inline(always)]
 fn finish(
     n: u32,
     phong: bool,
-    (tri, c, pl): (&Tri, &[Corner; 3], &mut Planes),
+    (tri, c, pl): (&Tri, &[Corner; 3], Option<&mut Planes>),
     bins: &mut [Vec<u32>],
 ) {
-    if phong {
-        pl.set(tri, c);
-    } else {
-        *pl = Planes::default();
+    match pl {
+        Some(pl) if phong => pl.set(tri, c),
+        Some(pl) => *pl = Planes::default(),
+        None => {}
     }
     let (b0, b1) = (tri.bbox[2] as usize / BAND, tri.bbox[3] as usize / BAND);
     for bin in &mut bins[b0..=b1] {
         bin.push(n);
+    }
+}
+
+/// [`split_by`] of `v[range]`, or as many empty slices when `v` is not
+/// kept (shorter than the range).
+fn split_kept<T>(
+    v: &mut [T],
+    range: std::ops::Range<usize>,
+    lens: impl Iterator<Item = usize>,
+) -> Vec<&mut [T]> {
+    match v.get_mut(range) {
+        Some(s) => split_by(s, lens),
+        None => lens.map(|_| &mut [][..]).collect(),
     }
 }
 
@@ -854,9 +878,14 @@ pub(super) fn triangles(
         });
     let total: usize = bufs.iter().map(|b| b.count).sum();
     let end = first + total;
+    let [keep_corners, keep_planes] = out.keep;
     if out.tris.len() < end {
         out.tris.resize(end, Tri::default());
+    }
+    if keep_corners && out.corners.len() < end {
         out.corners.resize(end, [[0.0; 12]; 3]);
+    }
+    if keep_planes && out.planes.len() < end {
         out.planes.resize(end, Planes::default());
     }
     let lens = || bufs.iter().map(|b| b.count);
@@ -869,8 +898,8 @@ pub(super) fn triangles(
         .collect();
     let dests: Vec<Dest> = split_by(&mut out.tris[first..end], lens())
         .into_iter()
-        .zip(split_by(&mut out.corners[first..end], lens()))
-        .zip(split_by(&mut out.planes[first..end], lens()))
+        .zip(split_kept(out.corners, first..end, lens()))
+        .zip(split_kept(out.planes, first..end, lens()))
         .zip(starts)
         .map(|(((tris, corners), planes), first)| Dest {
             tris,
@@ -910,6 +939,10 @@ pub(super) struct Output<'f> {
     pub(super) corners: &'f mut Vec<[Corner; 3]>,
     pub(super) planes: &'f mut Vec<Planes>,
     pub(super) bins: &'f mut Vec<Vec<u32>>,
+    /// Whether corners and planes are kept: corners when some object is
+    /// shaded flat or Gouraud (they hold its colours), planes when some
+    /// object is shaded by Phong (its per-pixel attributes).
+    pub(super) keep: [bool; 2],
 }
 
 /// The eye-space normal of polygon `f` (Newell's sum over its eye-space

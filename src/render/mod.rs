@@ -25,7 +25,6 @@ use crate::stages::window::Window;
 use nalgebra::{Matrix4, Vector3};
 use raster::{Tri, BAND};
 use rayon::prelude::*;
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
@@ -56,8 +55,6 @@ pub struct Options {
     pub height: u32,
     /// Use `shading` for every object, even those that name their own.
     pub force_shading: bool,
-    /// Show a progress bar on a terminal for renders over half a second.
-    pub progress: bool,
 }
 
 impl Options {
@@ -69,7 +66,6 @@ impl Options {
             width: scene.width,
             height: scene.height,
             force_shading: false,
-            progress: false,
         }
     }
 }
@@ -145,7 +141,9 @@ pub struct Frame {
     pub ids: Vec<u32>,
     /// The set-up triangles.
     pub tris: Vec<Tri>,
-    /// Their corners.
+    /// Their corners (empty when every object is shaded by Phong, which
+    /// lights each pixel from its attribute planes instead; the explainer
+    /// makes a triangle's corners again).
     pub corners: Vec<[Corner; 3]>,
     /// Per object: how it is shaded.
     pub looks: Vec<Look>,
@@ -299,49 +297,16 @@ fn win32(w: &Window<f64>) -> Window<f32> {
     }
 }
 
-/// A progress bar that appears on a terminal once a render has taken half a
-/// second.
-struct Progress {
-    bar: Option<indicatif::ProgressBar>,
-    start: Instant,
-    shown: AtomicBool,
-}
-
-impl Progress {
-    fn new(on: bool, total: u64) -> Progress {
-        use std::io::IsTerminal;
-        let bar = (on && std::io::stderr().is_terminal()).then(|| {
-            let b = indicatif::ProgressBar::with_draw_target(
-                Some(total),
-                indicatif::ProgressDrawTarget::hidden(),
-            );
-            if let Ok(s) =
-                indicatif::ProgressStyle::with_template("{msg} {bar:40} {pos}/{len} bands")
-            {
-                b.set_style(s);
-            }
-            b.set_message("rendering");
-            b
-        });
-        Progress {
-            bar,
-            start: Instant::now(),
-            shown: AtomicBool::new(false),
-        }
-    }
-    fn tick(&self) {
-        if let Some(b) = &self.bar {
-            b.inc(1);
-            if self.start.elapsed() > Duration::from_millis(500)
-                && !self.shown.swap(true, Ordering::Relaxed)
-            {
-                b.set_draw_target(indicatif::ProgressDrawTarget::stderr());
-            }
-        }
-    }
-    fn finish(&self) {
-        if let Some(b) = &self.bar {
-            b.finish_and_clear();
+/// Frees what no step of a render with `opt` reads: the polygon lists
+/// (`mesh.faces`) of the objects not shaded flat. Only flat shading reads
+/// a face's polygon (Newell's normal); the triangles, their face numbers
+/// and the vertex normals were made from the polygons when the scene was
+/// read. (A 1,048,576-triangle sphere has 524,288 such small lists, about
+/// 29 MB with the allocator's overhead.)
+pub fn release_unused(scene: &mut Scene, opt: &Options) {
+    for o in &mut scene.objects {
+        if geometry::shading_of(o, opt) != Shading::Flat {
+            o.mesh.faces = Vec::new();
         }
     }
 }
@@ -354,39 +319,84 @@ pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
 /// Renders a scene into the buffers of a previous frame when it has the
 /// same size (as a real-time loop would: no fresh allocation per frame).
 pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Result<Frame> {
+    render_observed(scene, opt, prev, &|| {})
+}
+
+/// [`render_reusing`], calling `band_done` as each band of [`BAND`] rows
+/// is finished (from the worker threads): for a progress bar.
+pub fn render_observed(
+    scene: &Scene,
+    opt: &Options,
+    prev: Option<Frame>,
+    band_done: &(dyn Fn() + Sync),
+) -> Result<Frame> {
     crate::input::scene::check_size(opt.width, opt.height)?;
     let t0 = Instant::now();
     let vs = view_setup(scene, opt.width, opt.height)?;
     let n = (opt.width * opt.height) as usize;
-    let (mut tris, mut corners, mut ids, mut rgb, mut scratch) = match prev {
-        Some(f) if f.rgb.len() == 3 * n => (f.tris, f.corners, f.ids, f.rgb, f.scratch),
-        _ => (
-            Vec::new(),
-            Vec::new(),
-            vec![0u32; n],
-            vec![0u8; 3 * n],
-            Scratch::default(),
-        ),
+    let mut f = match prev {
+        Some(f) if f.rgb.len() == 3 * n => f,
+        _ => Frame {
+            width: opt.width,
+            height: opt.height,
+            rgb: vec![0u8; 3 * n],
+            ids: vec![0u32; n],
+            tris: Vec::new(),
+            corners: Vec::new(),
+            looks: Vec::new(),
+            ortho: vs.ortho,
+            stats: Stats::default(),
+            scratch: Scratch::default(),
+        },
     };
-    let mut stats = Stats::default();
+    (f.width, f.height, f.ortho) = (opt.width, opt.height, vs.ortho);
+    f.stats = Stats::default();
+    let (bins, ranges) = geometry_stage(scene, opt, &vs, &mut f);
+    let phong = shade::PhongIndex::new(f.tris.len(), &ranges, &f.looks);
+    f.stats.geometry = t0.elapsed().saturating_sub(f.stats.binning);
+    band_pass(&mut f, to_u8(scene.background), &bins, &phong, band_done);
+    Ok(f)
+}
+
+/// The geometry stage of every object, in submission order, into the
+/// frame's triangles, corners, Phong planes and looks: returns the bins
+/// (per band, its triangles in order) and per object the numbers lo..hi
+/// of its set-up triangles. Corners are kept when some object is shaded
+/// flat or Gouraud, planes when some object is shaded by Phong.
+fn geometry_stage(
+    scene: &Scene,
+    opt: &Options,
+    vs: &ViewSetup,
+    f: &mut Frame,
+) -> (Vec<Vec<u32>>, Vec<[u32; 2]>) {
+    let phong = |o| geometry::shading_of(o, opt) == Shading::Phong;
+    let keep = [
+        !scene.objects.iter().all(phong),
+        scene.objects.iter().any(phong),
+    ];
     // The triangle arrays keep their length from the previous frame (only
     // new entries are filled before being written) and are cut at the end.
-    let mut planes = std::mem::take(&mut scratch.planes);
+    let mut planes = std::mem::take(&mut f.scratch.planes);
+    if !keep[0] {
+        f.corners.clear();
+    }
+    if !keep[1] {
+        planes.clear();
+    }
     let mut bins: Vec<Vec<u32>> = Vec::new();
     let mut out = geometry::Output {
-        tris: &mut tris,
-        corners: &mut corners,
+        tris: &mut f.tris,
+        corners: &mut f.corners,
         planes: &mut planes,
         bins: &mut bins,
+        keep,
     };
-    let mut count = 0;
-    // Per object: the material and the lights that reach it.
-    let mut looks = Vec::new();
-    // Per object: the numbers of its set-up triangles, lo..hi.
-    let mut ranges = Vec::new();
+    let (mut count, mut ranges) = (0, Vec::new());
+    f.looks.clear();
     for (oi, obj) in scene.objects.iter().enumerate() {
-        let Some(p) = prepare(obj, &vs, &scene.lights, opt, &mut stats, &mut scratch.verts) else {
-            looks.push(Look {
+        let (stats, verts) = (&mut f.stats, &mut f.scratch.verts);
+        let Some(p) = prepare(obj, vs, &scene.lights, opt, stats, verts) else {
+            f.looks.push(Look {
                 material: shade::material_as(&obj.material),
                 lights: Vec::new(),
                 shading: opt.shading,
@@ -395,54 +405,64 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
             ranges.push([count as u32; 2]);
             continue;
         };
-        let (n, s) = triangles(
-            &p,
-            oi as u32,
-            &vs,
-            scene,
-            opt,
-            count,
-            &mut out,
-            &mut scratch.chunks,
-        );
+        let chunks = &mut f.scratch.chunks;
+        let (n, s) = triangles(&p, oi as u32, vs, scene, opt, count, &mut out, chunks);
         ranges.push([count as u32, (count + n) as u32]);
         count += n;
-        stats.add(&s);
-        stats.binning += s.binning;
-        looks.push(Look {
+        f.stats.add(&s);
+        f.stats.binning += s.binning;
+        f.looks.push(Look {
             material: p.material,
             lights: p.lights,
             shading: p.shading,
             one_colour: matches!(obj.colors, crate::input::scene::Colors::One(_)),
         });
     }
-    tris.truncate(count);
-    corners.truncate(count);
-    planes.truncate(count);
+    f.tris.truncate(count);
+    f.corners.truncate(if keep[0] { count } else { 0 });
+    planes.truncate(if keep[1] { count } else { 0 });
+    f.scratch.planes = planes;
     bins.resize_with((opt.height as usize).div_ceil(BAND), Vec::new);
-    scratch.planes = planes;
-    let planes = &scratch.planes;
-    let phong = shade::PhongIndex::new(count, &ranges, &looks);
-    stats.geometry = t0.elapsed().saturating_sub(stats.binning);
+    (bins, ranges)
+}
 
+/// The band pass: over bands in parallel, a band's visibility (nearest
+/// triangle per pixel), then its shading while the band is in cache, with
+/// the counters and times into the frame's stats.
+fn band_pass(
+    f: &mut Frame,
+    bg: [u8; 3],
+    bins: &[Vec<u32>],
+    phong: &shade::PhongIndex,
+    band_done: &(dyn Fn() + Sync),
+) {
+    let Frame {
+        width,
+        rgb,
+        ids,
+        tris,
+        corners,
+        looks,
+        ortho,
+        stats,
+        scratch,
+        ..
+    } = f;
+    let w = *width as usize;
     let band_in = shade::BandInput {
-        tris: &tris,
-        corners: &corners,
-        planes,
-        looks: &looks,
-        phong: &phong,
-        ortho: vs.ortho,
-        bg: to_u8(scene.background),
-        width: opt.width as usize,
+        tris,
+        corners,
+        planes: &scratch.planes,
+        looks,
+        phong,
+        ortho: *ortho,
+        bg,
+        width: w,
     };
-    let progress = Progress::new(opt.progress, bins.len() as u64);
     let t2 = Instant::now();
-    let w = opt.width as usize;
     let depth = &mut scratch.depth.0;
     depth.resize_with(rayon::current_num_threads(), Mutex::default);
     let depth = &scratch.depth;
-    // One pass over bands in parallel: the band's visibility (nearest
-    // triangle per pixel), then its shading while the band is in cache.
     let (shaded, evals, raster_t, shade_t) = rgb
         .par_chunks_mut(3 * w * BAND)
         .zip(ids.par_chunks_mut(w * BAND))
@@ -451,36 +471,23 @@ pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Resu
         .map(|(band, ((out, id), bin))| {
             let t = Instant::now();
             depth.with(id.len(), |dz| {
-                raster::visibility_band(&tris, bin, (band * BAND) as u32, w, dz, id)
+                raster::visibility_band(tris, bin, (band * BAND) as u32, w, dz, id)
             });
             let raster_t = t.elapsed();
             let t = Instant::now();
             let (count, evals) = shade::shade_band(&band_in, (band * BAND) as u32, out, id);
-            progress.tick();
+            band_done();
             (count, evals, raster_t, t.elapsed())
         })
         .reduce(
             || (0, 0, Duration::ZERO, Duration::ZERO),
             |a, b| (a.0 + b.0, a.1 + b.1, a.2 + b.2, a.3 + b.3),
         );
-    progress.finish();
     stats.pixels_shaded = shaded;
     stats.lighting_evals += evals;
     stats.raster = raster_t;
     stats.shading = shade_t;
     stats.pass = t2.elapsed();
-    Ok(Frame {
-        width: opt.width,
-        height: opt.height,
-        rgb,
-        ids,
-        tris,
-        corners,
-        looks,
-        ortho: vs.ortho,
-        stats,
-        scratch,
-    })
 }
 
 impl Frame {

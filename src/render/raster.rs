@@ -42,10 +42,11 @@ pub struct ScreenVert {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Tri {
     /// Edge function k (weight of vertex k): E = a·X + b·Y + c, X and Y in
-    /// 1/256 pixel; c includes the fill-rule bias.
-    pub a: [i64; 3],
+    /// 1/256 pixel; c includes the fill-rule bias. a and b are differences
+    /// of snapped coordinates on the image (at most 8192·256 = 2²¹ apart).
+    pub a: [i32; 3],
     /// See `a`.
-    pub b: [i64; 3],
+    pub b: [i32; 3],
     /// See `a`.
     pub c: [i64; 3],
     /// Covered pixels lie in columns x0..=x1 and rows y0..=y1.
@@ -64,8 +65,6 @@ pub struct Tri {
     /// triangle list; several set-up triangles share it when it was
     /// clipped).
     pub src: u32,
-    /// The screen vertices (for explaining a pixel).
-    pub verts: [ScreenVert; 3],
 }
 
 /// A triangle's vertices snapped to 1/256 pixel, wound positively, with the
@@ -153,19 +152,20 @@ pub fn setup_of(v: [(ScreenVert, [i64; 2]); 3], w: u32, h: u32) -> Option<(Tri, 
 /// that [`snap_box`] accepted (`v` as given to it, not yet swapped).
 pub fn setup_snapped(v: [ScreenVert; 3], s: &Snapped) -> Tri {
     let mut t = Tri::default();
-    setup_into(&v, s, &mut t);
+    setup_into(&v.map(|p| [p.z, p.inv_w]), s, &mut t);
     t
 }
 
 /// [`setup_snapped`] written straight into `t` (every field but `obj` and
 /// `src`), so that the geometry stage sets up a triangle in its place in
-/// the frame's array without a copy. Edge k runs from vertex k+1 to vertex
+/// the frame's array without a copy, from the vertices' depth z/w and 1/w
+/// (`v`, as given to [`snap_box`], not yet swapped). Edge k runs from vertex k+1 to vertex
 /// k+2: a_k = −dy, b_k = dx, c_k = dy·x_i − dx·y_i (less 1 off the
 /// top-left edges); the barycentric plane of vertex k over pixel indices
 /// from (x0, y0) is (E_k(x0, y0), 256·a_k, 256·b_k)/area in f64 (E_k
 /// without the fill-rule bias), and the depth plane Σ_k plane_k·z_k.
 #[inline(always)]
-pub fn setup_into(v: &[ScreenVert; 3], s: &Snapped, t: &mut Tri) {
+pub fn setup_into(v: &[[f32; 2]; 3], s: &Snapped, t: &mut Tri) {
     let mut v = *v;
     if s.swap {
         v.swap(1, 2);
@@ -202,23 +202,22 @@ pub fn setup_into(v: &[ScreenVert; 3], s: &Snapped, t: &mut Tri) {
             (b[k] * ONE) as f64 / areaf,
         ]
     });
-    let z = v.map(|p| p.z as f64);
-    t.a = a;
-    t.b = b;
+    let z = v.map(|p| p[0] as f64);
+    t.a = a.map(|a| a as i32);
+    t.b = b.map(|b| b as i32);
     t.c = c;
     t.bbox = s.bbox;
     t.z = std::array::from_fn(|i| (p[0][i] * z[0] + p[1][i] * z[1] + p[2][i] * z[2]) as f32);
     t.l1 = p[1].map(|t| t as f32);
     t.l2 = p[2].map(|t| t as f32);
-    t.inv_w = v.map(|p| p.inv_w);
-    t.verts = v;
+    t.inv_w = v.map(|p| p[1]);
 }
 
 impl Tri {
     /// Whether the pixel (i, j) is covered (exact, with the fill rule).
     pub fn covers(&self, i: u32, j: u32) -> bool {
         let (px, py) = (i as i64 * ONE + HALF, j as i64 * ONE + HALF);
-        (0..3).all(|k| self.a[k] * px + self.b[k] * py + self.c[k] >= 0)
+        (0..3).all(|k| i64::from(self.a[k]) * px + i64::from(self.b[k]) * py + self.c[k] >= 0)
     }
 
     /// Screen barycentrics (λ0, λ1, λ2) at pixel (i, j).
@@ -349,7 +348,7 @@ impl Narrow {
         // v fits in an i32 exactly when it equals its low 32 bits sign-extended.
         let mut outside = 0;
         for (k, &e) in e0.iter().enumerate() {
-            let (s, r) = (t.a[k] * ONE * di, t.b[k] * ONE * dj);
+            let (s, r) = (i64::from(t.a[k]) * ONE * di, i64::from(t.b[k]) * ONE * dj);
             for v in [e, e + s, e + r, e + s + r] {
                 outside |= v ^ i64::from(v as i32);
             }
@@ -359,8 +358,8 @@ impl Narrow {
         }
         Some(Narrow {
             e0: e0.map(|e| e as i32),
-            row: t.b.map(|b| (b * ONE) as i32),
-            col: t.a.map(|a| (a * ONE) as i32),
+            row: t.b.map(|b| (i64::from(b) * ONE) as i32),
+            col: t.a.map(|a| (i64::from(a) * ONE) as i32),
             blocks: (di as usize + 1) / LANES,
         })
     }
@@ -388,7 +387,9 @@ impl Narrow {
     /// computed in wrapping i32 (exact modulo 2³²) is the true value.
     #[inline(always)]
     fn small(t: &Tri, ya: u32, blocks: usize) -> Option<Narrow> {
-        let span = (0..3).fold(0, |m, k| m | t.a[k].unsigned_abs() | t.b[k].unsigned_abs());
+        let span = (0..3).fold(0, |m, k| {
+            m | u64::from(t.a[k].unsigned_abs() | t.b[k].unsigned_abs())
+        });
         if span >= SMALL {
             return None;
         }
@@ -399,15 +400,15 @@ impl Narrow {
             (ya as i32) * ONE as i32 + HALF as i32,
         );
         let e0 = std::array::from_fn(|k| {
-            let (a, b, c) = (t.a[k] as i32, t.b[k] as i32, t.c[k] as i32);
+            let (a, b, c) = (t.a[k], t.b[k], t.c[k] as i32);
             a.wrapping_mul(px)
                 .wrapping_add(b.wrapping_mul(py))
                 .wrapping_add(c)
         });
         Some(Narrow {
             e0,
-            row: t.b.map(|b| (b * ONE) as i32),
-            col: t.a.map(|a| (a * ONE) as i32),
+            row: t.b.map(|b| (i64::from(b) * ONE) as i32),
+            col: t.a.map(|a| (i64::from(a) * ONE) as i32),
             blocks,
         })
     }
@@ -524,7 +525,7 @@ fn step(e: &mut [[i32; LANES]; 3], s: [i32; 3]) {
 /// E_k at the centre of pixel (i, j): a_k·(256·i + 128) + b_k·(256·j + 128) + c_k.
 #[inline]
 fn edge(t: &Tri, k: usize, i: i64, j: i64) -> i64 {
-    t.a[k] * (i * ONE + HALF) + t.b[k] * (j * ONE + HALF) + t.c[k]
+    i64::from(t.a[k]) * (i * ONE + HALF) + i64::from(t.b[k]) * (j * ONE + HALF) + t.c[k]
 }
 
 /// The general path: every pixel of the box, edge functions in i64.
@@ -539,7 +540,7 @@ fn raster_wide(
     ids: &mut [u32],
 ) {
     let [x0, x1, y0, _] = t.bbox;
-    let step = [t.a[0] * ONE, t.a[1] * ONE, t.a[2] * ONE];
+    let step = t.a.map(|a| i64::from(a) * ONE);
     for j in rows {
         let mut e = [0, 1, 2].map(|k| edge(t, k, x0 as i64, j as i64));
         let zr = t.z[0] + t.z[2] * (j - y0) as f32;
