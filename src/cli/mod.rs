@@ -65,7 +65,7 @@ fn run_unchecked(cli: &Cli) -> Result<Report> {
         Command::Render(_) if p != Precision::Exact => {
             Err(Error::why("precision", ErrMsg::RenderPrecision))
         }
-        Command::Render(a) => crate::cli::render::run(a),
+        Command::Render(a) => crate::cli::render::run(a, style_of(cli).lang),
     }
 }
 

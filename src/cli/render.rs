@@ -14,7 +14,7 @@ use serde_json::json;
 use std::time::{Duration, Instant};
 
 /// Runs `render`.
-pub fn run(a: &RenderArgs) -> Result<Report> {
+pub fn run(a: &RenderArgs, lang: crate::report::lang::Lang) -> Result<Report> {
     let scene = Scene::read(&a.scene)?;
     let mut opt = Options::of(&scene);
     opt.shading = a.shading.unwrap_or(opt.shading);
@@ -35,7 +35,12 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
     // --repeat shows its progress on a terminal (a big scene × 10,000 runs
     // for minutes); one frame has the renderer's own bar.
     let bar = (a.repeat > 1)
-        .then(|| crate::cli::terminal_bar(a.repeat as u64, "frames / bingkai"))
+        .then(|| {
+            crate::cli::terminal_bar(
+                a.repeat as u64,
+                crate::report::lang::tr(lang, "frames", "bingkai"),
+            )
+        })
         .flatten();
     let go = || -> Result<(Frame, Vec<Stats>)> {
         let mut times = Vec::new();
@@ -116,15 +121,15 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
     };
     result.push((
         label,
-        Val::text(format!(
-            "{:.2} ms ({mpix:.1} Mpixels/s); PNG encoding {:.2} ms",
-            ms(frame_t),
-            ms(encode)
+        Val::said(crate::msg::Said::FrameTime(
+            format!("{:.2}", ms(frame_t)),
+            format!("{mpix:.1}"),
+            format!("{:.2}", ms(encode)),
         )),
     ));
     let mut notes = Vec::new();
     if a.stats {
-        notes.push(stats_text(st, &runs, opt.shading, &median, encode));
+        notes.push(stats_text(st, &runs, opt.shading, &median, encode, lang));
     }
     let mut extra = serde_json::Map::new();
     extra.insert(
@@ -186,74 +191,20 @@ fn stats_text(
     shading: Shading,
     median: &Median<'_>,
     encode: Duration,
+    lang: crate::report::lang::Lang,
 ) -> String {
-    let ms = |d: Duration| d.as_secs_f64() * 1e3;
-    let mut s = String::from("Stats\n");
-    let mut line = |k: &str, v: String| s.push_str(&format!("  {k:<34} {v}\n"));
-    line("triangles in", st.tris_in.to_string());
-    line("  back faces culled (closed meshes)", st.culled.to_string());
-    line("  rejected by outcodes", st.rejected.to_string());
-    line("  clipped (crossing a plane)", st.clipped.to_string());
-    line("  set up and rasterized", st.drawn.to_string());
-    line("  covering no pixel centre", st.no_pixels.to_string());
-    line(
-        "objects rejected whole (bounding box)",
-        st.objects_rejected.to_string(),
-    );
-    line(
-        "objects inside whole (no clip tests)",
-        st.objects_inside.to_string(),
-    );
-    line("pixels shaded", st.pixels_shaded.to_string());
-    line("lighting evaluations", st.lighting_evals.to_string());
-    line(
-        "per-pixel lighting",
-        if shading == Shading::Phong {
-            "yes (Phong)".into()
-        } else {
-            format!("none ({shading:?} shading)").to_lowercase()
-        },
-    );
-    line(
-        "lights skipped (out of range)",
-        st.lights_skipped.to_string(),
-    );
-    line(
-        "objects without specular work",
-        st.specular_skipped.to_string(),
-    );
-    let n = runs.len();
-    let what = if n > 1 {
-        format!(" (median of {n})")
-    } else {
-        String::new()
+    let ms = |f: &dyn Fn(&Stats) -> Duration| median(f).as_secs_f64() * 1e3;
+    let times = crate::report::render::Times {
+        runs: runs.len(),
+        geometry: ms(&|s| s.geometry),
+        binning: ms(&|s| s.binning),
+        bands: ms(&|s| s.pass),
+        raster: ms(&|s| s.raster),
+        shading: ms(&|s| s.shading),
+        frame: ms(&|s| s.frame()),
+        png: encode.as_secs_f64() * 1e3,
     };
-    line(
-        &format!("time: geometry{what}"),
-        format!("{:.2} ms", ms(median(&|s| s.geometry))),
-    );
-    line(
-        "time: binning",
-        format!("{:.2} ms", ms(median(&|s| s.binning))),
-    );
-    line(
-        "time: bands (raster + shading)",
-        format!("{:.2} ms", ms(median(&|s| s.pass))),
-    );
-    line(
-        "  thread time: raster",
-        format!("{:.2} ms", ms(median(&|s| s.raster))),
-    );
-    line(
-        "  thread time: shading",
-        format!("{:.2} ms", ms(median(&|s| s.shading))),
-    );
-    line(
-        "time: frame",
-        format!("{:.2} ms", ms(median(&|s| s.frame()))),
-    );
-    line("time: PNG encoding", format!("{:.2} ms", ms(encode)));
-    s
+    crate::report::render::stats_text(st, &times, shading, lang)
 }
 
 fn parse_pixel(s: &str) -> Result<(u32, u32)> {

@@ -7,6 +7,7 @@ use crate::msg::{LightPart, Msg, SpotZone, Term, Trivial};
 
 mod drawn;
 pub mod errors;
+mod said;
 
 /// The words of `m` in `lang`.
 pub fn words(m: &Msg, lang: Lang) -> String {
@@ -59,6 +60,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         ),
         Msg::At(place, m) => format!("{place}: {}", words(m, lang)),
         Msg::Err(e) => errors::error(e, lang),
+        Msg::Said(s) => said::said(s, lang),
         Msg::ErrSamePoint(_)
         | Msg::ErrUpZero
         | Msg::ErrUpParallel(..)
@@ -891,6 +893,16 @@ mod tests {
         v.extend(drawn_messages());
         v.push(Msg::Unreadable(crate::msg::NumErr::DivZero("1/0".into())));
         v.push(Msg::Written("as for B".into(), Some("seperti B".into())));
+        for s in [
+            crate::msg::Said::BitTest(true, "x > xmax".into(), "4.5 > 3".into()),
+            crate::msg::Said::BitTest(false, "x < xmin".into(), "4.5 < 0".into()),
+            crate::msg::Said::FrameTime("12.30".into(), "25.0".into(), "1.20".into()),
+            crate::msg::Said::Status("clipped".into()),
+            crate::msg::Said::Status("accepted".into()),
+            crate::msg::Said::Status("rejected".into()),
+        ] {
+            v.push(Msg::Said(s));
+        }
         v.push(Msg::At("p.toml:3:7".into(), Box::new(Msg::ErrUpZero)));
         v.extend(errors::tests::every_error().into_iter().map(Msg::Err));
         v
@@ -1082,6 +1094,7 @@ mod tests {
             | FollowThrough
             | At(..)
             | Err(_)
+            | Said(_)
             | ErrSamePoint(_)
             | ErrUpZero
             | ErrUpParallel(..)
