@@ -54,63 +54,21 @@ pub fn label(key: &str, lang: Lang) -> String {
 /// stage, one line each.
 pub fn stats_text(st: &Stats, t: &Times, shading: Shading, lang: Lang) -> String {
     let id = lang == Lang::Id;
-    let w = |en: &'static str, ind: &'static str| if id { ind } else { en };
-    let ms = |x: f64| decimal(&format!("{x:.2} ms"), lang);
-    let mut s = format!("{}\n", w("Stats", "Statistik"));
     let width = if id { 42 } else { 34 };
-    let mut line = |k: &str, v: String| s.push_str(&format!("  {k:<width$} {v}\n"));
-    line(w("triangles in", "segitiga masuk"), st.tris_in.to_string());
-    line(
-        w(
-            "  back faces culled (closed meshes)",
-            "  sisi belakang dibuang (mesh tertutup)",
-        ),
-        st.culled.to_string(),
-    );
-    line(
-        w("  rejected by outcodes", "  ditolak oleh region code"),
-        st.rejected.to_string(),
-    );
-    line(
-        w(
-            "  clipped (crossing a plane)",
-            "  di-clip (memotong bidang)",
-        ),
-        st.clipped.to_string(),
-    );
-    line(
-        w("  set up and rasterized", "  disiapkan dan dirasterisasi"),
-        st.drawn.to_string(),
-    );
-    line(
-        w(
-            "  covering no pixel centre",
-            "  tidak menutupi pusat piksel",
-        ),
-        st.no_pixels.to_string(),
-    );
-    line(
-        w(
-            "objects rejected whole (bounding box)",
-            "objek ditolak utuh (kotak pembatas)",
-        ),
-        st.objects_rejected.to_string(),
-    );
-    line(
-        w(
-            "objects inside whole (no clip tests)",
-            "objek di dalam utuh (tanpa uji clip)",
-        ),
-        st.objects_inside.to_string(),
-    );
-    line(
-        w("pixels shaded", "piksel diwarnai"),
-        st.pixels_shaded.to_string(),
-    );
-    line(
-        w("lighting evaluations", "evaluasi pencahayaan"),
-        st.lighting_evals.to_string(),
-    );
+    let mut s = format!("{}\n", if id { "Statistik" } else { "Stats" });
+    for (en, ind, v) in counts(st, shading, id).into_iter().chain(times(t, lang)) {
+        let k = if id { ind } else { en };
+        s.push_str(&format!("  {k:<width$} {v}\n"));
+    }
+    s
+}
+
+/// A line of the table: its English label, its Indonesian label, the value.
+type Row = (String, String, String);
+
+/// The counts of `--stats`.
+fn counts(st: &Stats, shading: Shading, id: bool) -> Vec<Row> {
+    let r = |en: &str, ind: &str, v: u64| (en.to_string(), ind.to_string(), v.to_string());
     let name = format!("{shading:?}").to_lowercase();
     let per_pixel = match (shading == Shading::Phong, id) {
         (true, false) => "yes (Phong)".to_string(),
@@ -118,45 +76,95 @@ pub fn stats_text(st: &Stats, t: &Times, shading: Shading, lang: Lang) -> String
         (false, false) => format!("none ({name} shading)"),
         (false, true) => format!("tidak ada ({name} shading)"),
     };
-    line(w("per-pixel lighting", "pencahayaan per piksel"), per_pixel);
-    line(
-        w(
+    vec![
+        r("triangles in", "segitiga masuk", st.tris_in),
+        r(
+            "  back faces culled (closed meshes)",
+            "  sisi belakang dibuang (mesh tertutup)",
+            st.culled,
+        ),
+        r(
+            "  rejected by outcodes",
+            "  ditolak oleh region code",
+            st.rejected,
+        ),
+        r(
+            "  clipped (crossing a plane)",
+            "  di-clip (memotong bidang)",
+            st.clipped,
+        ),
+        r(
+            "  set up and rasterized",
+            "  disiapkan dan dirasterisasi",
+            st.drawn,
+        ),
+        r(
+            "  covering no pixel centre",
+            "  tidak menutupi pusat piksel",
+            st.no_pixels,
+        ),
+        r(
+            "objects rejected whole (bounding box)",
+            "objek ditolak utuh (kotak pembatas)",
+            st.objects_rejected,
+        ),
+        r(
+            "objects inside whole (no clip tests)",
+            "objek di dalam utuh (tanpa uji clip)",
+            st.objects_inside,
+        ),
+        r("pixels shaded", "piksel diwarnai", st.pixels_shaded),
+        r(
+            "lighting evaluations",
+            "evaluasi pencahayaan",
+            st.lighting_evals,
+        ),
+        (
+            "per-pixel lighting".into(),
+            "pencahayaan per piksel".into(),
+            per_pixel,
+        ),
+        r(
             "lights skipped (out of range)",
             "sumber cahaya dilewati (di luar jangkauan)",
+            st.lights_skipped,
         ),
-        st.lights_skipped.to_string(),
-    );
-    line(
-        w(
+        r(
             "objects without specular work",
             "objek tanpa perhitungan specular",
+            st.specular_skipped,
         ),
-        st.specular_skipped.to_string(),
-    );
-    let median = match (t.runs > 1, id) {
-        (false, _) => String::new(),
-        (true, false) => format!(" (median of {})", t.runs),
-        (true, true) => format!(" (median dari {})", t.runs),
+    ]
+}
+
+/// The median times of `--stats`, in milliseconds.
+fn times(t: &Times, lang: Lang) -> Vec<Row> {
+    let r = |en: &str, ind: &str, ms: f64| {
+        let v = decimal(&format!("{ms:.2} ms"), lang);
+        (en.to_string(), ind.to_string(), v)
     };
-    let geometry = format!("{}{median}", w("time: geometry", "waktu: geometri"));
-    line(&geometry, ms(t.geometry));
-    line(w("time: binning", "waktu: binning"), ms(t.binning));
-    line(
-        w(
+    let (en, ind) = match t.runs {
+        0 | 1 => (String::new(), String::new()),
+        n => (format!(" (median of {n})"), format!(" (median dari {n})")),
+    };
+    let mut geometry = r("time: geometry", "waktu: geometri", t.geometry);
+    geometry.0.push_str(&en);
+    geometry.1.push_str(&ind);
+    vec![
+        geometry,
+        r("time: binning", "waktu: binning", t.binning),
+        r(
             "time: bands (raster + shading)",
             "waktu: pita (raster + shading)",
+            t.bands,
         ),
-        ms(t.bands),
-    );
-    line(
-        w("  thread time: raster", "  waktu thread: raster"),
-        ms(t.raster),
-    );
-    line(
-        w("  thread time: shading", "  waktu thread: shading"),
-        ms(t.shading),
-    );
-    line(w("time: frame", "waktu: bingkai"), ms(t.frame));
-    line(w("time: PNG encoding", "waktu: encoding PNG"), ms(t.png));
-    s
+        r("  thread time: raster", "  waktu thread: raster", t.raster),
+        r(
+            "  thread time: shading",
+            "  waktu thread: shading",
+            t.shading,
+        ),
+        r("time: frame", "waktu: bingkai", t.frame),
+        r("time: PNG encoding", "waktu: encoding PNG", t.png),
+    ]
 }

@@ -435,40 +435,9 @@ fn needs(thing: &Thing, key: &str, lang: Lang) -> String {
 
 /// Lights files and the [shade] set-up.
 fn lights(m: &ErrMsg, lang: Lang) -> String {
-    let n = |s: &str| nums(s, lang);
     let f = |en: String, id: String| pick(lang, en, id);
     match m {
-        ErrMsg::Channel(ch, v) => {
-            let ind = match ch.as_str() {
-                "red" => "merah",
-                "green" => "hijau",
-                _ => "biru",
-            };
-            f(
-                format!("color channels must lie in [0, 1]; {ch} is {v}"),
-                format!(
-                    "kanal warna harus berada di [0, 1]; {ind} bernilai {}",
-                    n(v)
-                ),
-            )
-        }
-        ErrMsg::Attenuation(a0, a1, a2) => f(
-            format!("a0, a1, a2 must be ≥ 0 and not all 0, got ({a0}, {a1}, {a2})"),
-            format!(
-                "a0, a1, a2 harus ≥ 0 dan tidak semuanya 0, diberikan ({}; {}; {})",
-                n(a0),
-                n(a1),
-                n(a2)
-            ),
-        ),
-        ErrMsg::Cones(t, p) => f(
-            format!("the cone angles need 0 ≤ theta ≤ phi ≤ 180°, got theta = {t}, phi = {p}"),
-            format!(
-                "sudut kerucut harus 0 ≤ theta ≤ phi ≤ 180°, diberikan theta = {}, phi = {}",
-                n(t),
-                n(p)
-            ),
-        ),
+        ErrMsg::Channel(..) | ErrMsg::Attenuation(..) | ErrMsg::Cones(..) => light_values(m, lang),
         ErrMsg::NoLightTable(p) => f(
             format!("{p} has no [[light]] table"),
             format!("{p} tidak memiliki tabel [[light]]"),
@@ -515,6 +484,46 @@ fn lights(m: &ErrMsg, lang: Lang) -> String {
             lang,
             "must not be the zero vector",
             "tidak boleh vektor nol",
+        ),
+        _ => String::new(),
+    }
+}
+
+/// A light's or material's values out of their bounds.
+fn light_values(m: &ErrMsg, lang: Lang) -> String {
+    let n = |s: &str| nums(s, lang);
+    let f = |en: String, id: String| pick(lang, en, id);
+    match m {
+        ErrMsg::Channel(ch, v) => {
+            let ind = match ch.as_str() {
+                "red" => "merah",
+                "green" => "hijau",
+                _ => "biru",
+            };
+            f(
+                format!("color channels must lie in [0, 1]; {ch} is {v}"),
+                format!(
+                    "kanal warna harus berada di [0, 1]; {ind} bernilai {}",
+                    n(v)
+                ),
+            )
+        }
+        ErrMsg::Attenuation(a0, a1, a2) => f(
+            format!("a0, a1, a2 must be ≥ 0 and not all 0, got ({a0}, {a1}, {a2})"),
+            format!(
+                "a0, a1, a2 harus ≥ 0 dan tidak semuanya 0, diberikan ({}; {}; {})",
+                n(a0),
+                n(a1),
+                n(a2)
+            ),
+        ),
+        ErrMsg::Cones(t, p) => f(
+            format!("the cone angles need 0 ≤ theta ≤ phi ≤ 180°, got theta = {t}, phi = {p}"),
+            format!(
+                "sudut kerucut harus 0 ≤ theta ≤ phi ≤ 180°, diberikan theta = {}, phi = {}",
+                n(t),
+                n(p)
+            ),
         ),
         _ => String::new(),
     }
