@@ -275,7 +275,7 @@ fn generated_statements_in_indonesian_with_the_same_problems() {
 }
 
 #[test]
-fn every_erratum_of_the_shipped_problems_has_its_indonesian_why() {
+fn every_shipped_problem_has_its_title_statement_and_errata_in_indonesian() {
     let mut errata = 0;
     for entry in std::fs::read_dir(root().join("problems")).expect("problems/") {
         let path = entry.expect("an entry").path();
@@ -284,6 +284,14 @@ fn every_erratum_of_the_shipped_problems_has_its_indonesian_why() {
         }
         let text = std::fs::read_to_string(&path).expect("reads");
         let value: toml::Table = toml::from_str(&text).expect("TOML");
+        for (en, id) in [("title", "title_id"), ("statement", "statement_id")] {
+            assert_eq!(
+                value.contains_key(en),
+                value.contains_key(id),
+                "{}: {en} without {id}",
+                path.display()
+            );
+        }
         let list = value.get("errata").and_then(|e| e.as_array());
         for e in list.into_iter().flatten() {
             errata += 1;
@@ -496,4 +504,32 @@ fn render_summary_and_stats_in_indonesian_with_the_same_json_keys() {
         result.keys().cloned().collect()
     };
     assert_eq!(keys("en", "b.png"), keys("id", "c.png"));
+}
+
+#[test]
+fn a_problems_title_and_statement_follow_the_language() {
+    let t = text(
+        "id",
+        &[
+            "check",
+            "problems/text-triangle.toml",
+            "--answers-from-text",
+        ],
+    );
+    assert!(
+        t.starts_with("Segitiga ABC melalui kamera sintetis — jawaban dari "),
+        "{t}"
+    );
+    let t = text(
+        "en",
+        &[
+            "check",
+            "problems/text-triangle.toml",
+            "--answers-from-text",
+        ],
+    );
+    assert!(
+        t.starts_with("Triangle ABC through a synthetic camera — answers of "),
+        "{t}"
+    );
 }

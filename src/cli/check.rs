@@ -22,7 +22,7 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<(String, i32)> {
     if a.file == stdin && a.answers.as_deref() == Some(stdin) {
         return Err(Error::why("answers", ErrMsg::BothStdin));
     }
-    let p = ProblemIn::read(&a.file)?;
+    let p = ProblemIn::read(&a.file)?.localized(style.lang == Lang::Id);
     let settings = check::Settings {
         follow_through: a.follow_through,
         ..check::settings_for(&p, a.tolerance, a.sig_figs)

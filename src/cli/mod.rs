@@ -53,7 +53,10 @@ fn run_unchecked(cli: &Cli) -> Result<Report> {
         Command::Window(a) => at_precision!(p, window(a)),
         Command::Clip(a) => at_precision!(p, clip(a)),
         Command::Shade(a) => at_precision!(p, shade(a)),
-        Command::Solve { file } => at_precision!(p, solve(file)),
+        Command::Solve { file } => {
+            let id = style_of(cli).lang == Lang::Id;
+            at_precision!(p, solve(file, id))
+        }
         Command::Check(_)
         | Command::Generate(_)
         | Command::Bench { .. }
@@ -87,8 +90,9 @@ fn clip<T: crate::num::Scalar>(a: &ClipArgs) -> Result<Report> {
 fn shade<T: crate::num::Scalar>(a: &ShadeArgs) -> Result<Report> {
     calc::shade::<T>(a)
 }
-fn solve<T: crate::num::Scalar>(file: &std::path::Path) -> Result<Report> {
-    crate::tutor::solve::solve_file::<T>(file)
+fn solve<T: crate::num::Scalar>(file: &std::path::Path, id: bool) -> Result<Report> {
+    let p = crate::input::problem::ProblemIn::read(file)?.localized(id);
+    crate::tutor::solve::solve::<T>(&p)
 }
 
 /// Parses the arguments, runs, prints; returns the exit status (0, or 2 for
