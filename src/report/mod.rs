@@ -190,12 +190,13 @@ impl Style {
         if !s.formula.is_empty() {
             out.push_str(&format!("    {}\n", self.w(&s.formula)));
         }
+        let name = |k: &str| words::labels::label(k, self.lang);
         for (k, v) in &s.values {
-            out.push_str(&self.named("    ", k, v));
+            out.push_str(&self.named("    ", &name(k), v));
             out.push('\n');
         }
         for (k, v) in &s.result {
-            out.push_str(&self.named("  ⇒ ", k, v));
+            out.push_str(&self.named("  ⇒ ", &name(k), v));
             out.push('\n');
         }
         if let Some(n) = &s.note {

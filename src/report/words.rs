@@ -7,6 +7,7 @@ use crate::msg::{LightPart, Msg, SpotZone, Term, Trivial};
 
 mod drawn;
 pub mod errors;
+pub mod labels;
 mod said;
 
 /// The words of `m` in `lang`.
