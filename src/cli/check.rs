@@ -277,7 +277,7 @@ fn mistakes(m: &Marking) -> String {
 /// An error as a person reads it: `field: words`, cut when long.
 fn said(e: &Error, lang: Lang) -> String {
     let words = crate::report::words::words(&e.message, lang);
-    cut_message(&format!("{}: {words}", e.field))
+    cut_message(&format!("{}: {words}", e.field), lang)
 }
 
 /// One row per student.

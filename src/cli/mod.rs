@@ -350,7 +350,7 @@ pub const MAX_MESSAGE: usize = 300;
 
 /// `message` cut to [`MAX_MESSAGE`] characters, its middle replaced by the
 /// number of characters left out.
-pub fn cut_message(message: &str) -> String {
+pub fn cut_message(message: &str, lang: Lang) -> String {
     let n = message.chars().count();
     if n <= MAX_MESSAGE {
         return message.to_string();
@@ -358,16 +358,18 @@ pub fn cut_message(message: &str) -> String {
     let keep = MAX_MESSAGE / 2;
     let head: String = message.chars().take(keep).collect();
     let tail: String = message.chars().skip(n - keep).collect();
-    format!("{head} … ({} characters cut) … {tail}", n - 2 * keep)
+    let cut = n - 2 * keep;
+    let said = tr(lang, "characters cut", "karakter dipotong");
+    format!("{head} … ({cut} {said}) … {tail}")
 }
 
 /// Prints an error on one line (stderr; and JSON on stdout with `--json`),
 /// a long echoed input cut; returns 2.
 /// The message in `lang`; the field as the flag or key is spelled.
 fn report_error(e: &Error, json: bool, lang: Lang) -> i32 {
-    let field = cut_message(&e.field);
+    let field = cut_message(&e.field, lang);
     let words = crate::report::words::words(&e.message, lang);
-    let message = cut_message(&words).replace('\n', " ");
+    let message = cut_message(&words, lang).replace('\n', " ");
     let label = crate::report::lang::tr(lang, "error", "kesalahan");
     eprintln!("{label}: {field}: {message}");
     if json {
