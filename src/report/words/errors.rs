@@ -742,7 +742,7 @@ pub fn toml(e: &TomlErr, lang: Lang) -> String {
 
 /// serde's names of kinds of values, in Indonesian.
 fn serde_words(s: &str) -> String {
-    [
+    let names = [
         (
             "a number or a string with a number expression such as",
             "bilangan atau string berisi ekspresi bilangan seperti",
@@ -762,9 +762,13 @@ fn serde_words(s: &str) -> String {
         ("an integer", "bilangan bulat"),
         ("a boolean", "boolean"),
         ("unit variant", "nilai tanpa data"),
-    ]
-    .iter()
-    .fold(s.to_string(), |t, (en, id)| t.replace(en, id))
+    ];
+    // Longer phrases first, so `an integer` is not read as `an` + `integer`.
+    let mut names = names.to_vec();
+    names.sort_by_key(|(en, _)| std::cmp::Reverse(en.len()));
+    names
+        .iter()
+        .fold(s.to_string(), |t, (en, id)| t.replace(en, id))
 }
 
 /// The TOML reader's descriptions of syntax errors, in Indonesian.
@@ -1351,6 +1355,11 @@ pub(crate) mod tests {
         );
         let e = ErrMsg::Attenuation("0.5".into(), "-1".into(), "0".into());
         assert!(error(&e, Lang::Id).ends_with("diberikan (0,5; -1; 0)"));
+        let e = TomlErr::InvalidType("string \"a\"".into(), "an integer".into());
+        assert_eq!(
+            toml(&e, Lang::Id),
+            "jenis nilai salah: string \"a\", seharusnya bilangan bulat"
+        );
         let e = ErrMsg::CannotRead("p.toml".into(), IoWhy::NotFound);
         assert_eq!(
             error(&e, Lang::Id),
