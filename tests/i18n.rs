@@ -533,3 +533,39 @@ fn a_problems_title_and_statement_follow_the_language() {
         "{t}"
     );
 }
+
+/// The `.rs` files under `dir`, recursively.
+fn sources(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
+    for entry in std::fs::read_dir(dir).expect("a source directory") {
+        let path = entry.expect("an entry").path();
+        if path.is_dir() {
+            sources(&path, out);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            out.push(path);
+        }
+    }
+}
+
+#[test]
+fn no_error_is_said_in_english_text() {
+    // `Error::new` is gone (it does not compile); an error could still be
+    // given words of one language as notation: `Error::said(f, "…".into())`
+    // or `Error::said(f, Msg::Math(…))`. None in src/.
+    let mut files = Vec::new();
+    sources(&root().join("src"), &mut files);
+    assert!(files.len() > 50, "{}", files.len());
+    for f in files {
+        let text = std::fs::read_to_string(&f).expect("reads");
+        for (at, _) in text.match_indices("Error::said(") {
+            let call: String = text[at..].chars().take(160).collect();
+            let call = call.split(";").next().unwrap_or_default();
+            assert!(
+                !call.contains("Msg::Math")
+                    && !call.contains("\".into()")
+                    && !call.contains("Msg::from"),
+                "{}: an error in words of one language: {call}",
+                f.display()
+            );
+        }
+    }
+}
