@@ -12,10 +12,12 @@ mod drawn;
 mod errors;
 mod figure;
 mod pixel;
+mod said;
 pub use drawn::{CameraText, DrawnTitle, ShadeAsked, Statement};
 pub use errors::{Bound, ClapErr, ErrMsg, IoWhy, NumErr, Thing, TomlErr, Twice, Want};
 pub use figure::{FigWord, FigureMsg, Panel};
 pub use pixel::PixelMsg;
+pub use said::Said;
 
 /// A term of the lighting sum.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -328,6 +330,8 @@ pub enum Msg {
     At(String, Box<Msg>),
     /// Why an input was refused (`msg::errors`).
     Err(ErrMsg),
+    /// Words given as a value (`msg::said`).
+    Said(Said),
     /// Pe and Pr are the same point (shown).
     ErrSamePoint(String),
     /// Vup is the zero vector.

@@ -275,7 +275,7 @@ fn generated_statements_in_indonesian_with_the_same_problems() {
 }
 
 #[test]
-fn every_erratum_of_the_shipped_problems_has_its_indonesian_why() {
+fn every_shipped_problem_has_its_title_statement_and_errata_in_indonesian() {
     let mut errata = 0;
     for entry in std::fs::read_dir(root().join("problems")).expect("problems/") {
         let path = entry.expect("an entry").path();
@@ -284,6 +284,14 @@ fn every_erratum_of_the_shipped_problems_has_its_indonesian_why() {
         }
         let text = std::fs::read_to_string(&path).expect("reads");
         let value: toml::Table = toml::from_str(&text).expect("TOML");
+        for (en, id) in [("title", "title_id"), ("statement", "statement_id")] {
+            assert_eq!(
+                value.contains_key(en),
+                value.contains_key(id),
+                "{}: {en} without {id}",
+                path.display()
+            );
+        }
         let list = value.get("errata").and_then(|e| e.as_array());
         for e in list.into_iter().flatten() {
             errata += 1;
@@ -296,4 +304,268 @@ fn every_erratum_of_the_shipped_problems_has_its_indonesian_why() {
     }
     // text-triangle.toml has 5 errata and text-clip.toml 3.
     assert_eq!(errata, 8);
+}
+
+/// Runs grafika with `LANG=id_ID.UTF-8` (and no other language setting)
+/// in `dir`, expects exit status 2 and one line on stderr; returns it.
+fn refused_in_indonesian(dir: &std::path::Path, args: &[&str]) -> String {
+    let out = grafika()
+        .current_dir(dir)
+        .env_remove("GRAFIKA_LANG")
+        .env_remove("LC_ALL")
+        .env_remove("LC_MESSAGES")
+        .env("LANG", "id_ID.UTF-8")
+        .args(args)
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(2), "{args:?}");
+    let err = String::from_utf8(out.stderr).expect("UTF-8");
+    assert_eq!(err.lines().count(), 1, "{args:?}: one line: {err}");
+    err.trim_end().to_string()
+}
+
+/// A fresh directory for one test's files.
+fn scratch(name: &str) -> std::path::PathBuf {
+    let d = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).expect("creates the directory");
+    d
+}
+
+#[test]
+fn a_bad_scene_file_is_refused_in_indonesian() {
+    let d = scratch("i18n-scene");
+    // Line 4 is `r = "1/0"`; its value starts at column 5.
+    std::fs::write(
+        d.join("s.toml"),
+        "[[object]]\ntype = \"sphere\"\nn = 8\nr = \"1/0\"\n",
+    )
+    .expect("writes");
+    let err = refused_in_indonesian(&d, &["render", "s.toml", "-o", "s.png"]);
+    assert_eq!(err, "kesalahan: r: s.toml:4:5: `1/0` membagi dengan nol");
+    // A scene with no object (an [image] alone) names `object`.
+    std::fs::write(d.join("e.toml"), "[image]\nwidth = 10\nheight = 10\n").expect("writes");
+    let err = refused_in_indonesian(&d, &["render", "e.toml", "-o", "e.png"]);
+    assert!(
+        err.starts_with("kesalahan: object: e.toml: adegan tidak memiliki objek"),
+        "{err}"
+    );
+    assert!(!d.join("s.png").exists() && !d.join("e.png").exists());
+}
+
+#[test]
+fn a_bad_mesh_file_is_refused_in_indonesian() {
+    let d = scratch("i18n-mesh");
+    let scene = "[[object]]\ntype = \"obj\"\npath = \"m.obj\"\n";
+    std::fs::write(d.join("s.toml"), scene).expect("writes");
+    // Two vertices and no face.
+    std::fs::write(d.join("m.obj"), "v 0 0 0\nv 1 0 0\n").expect("writes");
+    let err = refused_in_indonesian(&d, &["render", "s.toml", "-o", "s.png"]);
+    assert!(
+        err.starts_with("kesalahan: object[0].path: s.toml:1:1: "),
+        "{err}"
+    );
+    assert!(err.ends_with("m.obj tidak memiliki bidang (face)"), "{err}");
+    // A face whose third index is not a number.
+    std::fs::write(d.join("m.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n").expect("writes");
+    let err = refused_in_indonesian(&d, &["render", "s.toml", "-o", "s.png"]);
+    assert!(
+        err.ends_with("m.obj bukan berkas OBJ yang sah: sebuah bidang (face) tidak dapat dibaca"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_bad_number_in_an_answer_is_said_in_indonesian() {
+    let d = scratch("i18n-answer");
+    let problem = root().join("problems/text-triangle.toml");
+    let problem = problem.to_str().expect("UTF-8 path");
+    // Unreadable as TOML: `1.2.3`. The key `window.top` and ` = ` take 13
+    // columns, so the value starts at 14 and its second `.` is column 17.
+    std::fs::write(d.join("a.toml"), "student = \"Ani\"\nwindow.top = 1.2.3\n").expect("writes");
+    let err = refused_in_indonesian(&d, &["check", problem, "--answers", "a.toml"]);
+    assert_eq!(
+        err,
+        "kesalahan: window.top: a.toml:2:17: sintaks TOML tidak sah: bilangan desimal tidak sah"
+    );
+    // Readable TOML, but not a number: marked `unparseable`, with the
+    // reader's reason in Indonesian (`*` at column 3 of `1+*2`).
+    std::fs::write(
+        d.join("b.toml"),
+        "student = \"Ani\"\nwindow.top = \"1+*2\"\n",
+    )
+    .expect("writes");
+    let b = d.join("b.toml").display().to_string();
+    let j: Value =
+        serde_json::from_str(&text("id", &["check", problem, "--answers", &b, "--json"]))
+            .expect("JSON");
+    let answers = j["answers"].as_array().expect("answers");
+    let top = answers
+        .iter()
+        .find(|a| a["key"] == "window.top")
+        .expect("window.top");
+    assert_eq!(top["code"], "unparseable");
+    assert_eq!(
+        top["note"],
+        "tidak dapat dibaca: seharusnya sebuah bilangan di kolom 3, ditemukan `*`"
+    );
+}
+
+#[test]
+fn a_bad_flag_value_is_refused_in_indonesian() {
+    let d = root();
+    let err = refused_in_indonesian(
+        &d,
+        &["window", "--fovy", "abc", "--aspect", "1", "--near", "1"],
+    );
+    assert_eq!(
+        err,
+        "kesalahan: fovy: `abc`: seharusnya sebuah bilangan di kolom 1, ditemukan `a`"
+    );
+    let err = refused_in_indonesian(
+        &d,
+        &["basis", "--eye", "1,2", "--look", "0,0,0", "--up", "0,1,0"],
+    );
+    assert_eq!(
+        err,
+        "kesalahan: eye: `1,2`: seharusnya tiga bilangan x,y,z dipisahkan koma, ditemukan 2 dalam `1,2`"
+    );
+    // clap's refusals too, and with --lang on the refused line itself.
+    let err = refused_in_indonesian(&d, &["basis", "--precision", "foo"]);
+    assert_eq!(
+        err,
+        "kesalahan: --precision <PRECISION>: nilai 'foo' tidak sah; nilai yang mungkin: exact, f64, f32 (lihat --help)"
+    );
+    let out = grafika()
+        .env_remove("GRAFIKA_LANG")
+        .env("LANG", "C")
+        .args(["--lang", "id", "bassis"])
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(
+        err.trim(),
+        "kesalahan: argumen: subperintah 'bassis' tidak dikenal; mungkin maksudnya 'basis' (lihat --help)"
+    );
+}
+
+#[test]
+fn an_error_in_json_has_the_same_field_in_both_languages() {
+    let e = |lang| {
+        common::json_err(&[
+            "--lang", lang, "window", "--fovy", "45", "--aspect", "1", "--near", "1/0",
+        ])
+    };
+    let (en, id) = (e("en"), e("id"));
+    assert_eq!(en["field"], "near");
+    assert_eq!(en["field"], id["field"]);
+    assert_eq!(en["message"], "`1/0` divides by zero");
+    assert_eq!(id["message"], "`1/0` membagi dengan nol");
+}
+
+#[test]
+fn render_summary_and_stats_in_indonesian_with_the_same_json_keys() {
+    let d = scratch("i18n-render");
+    let scene = root().join("problems/render/cone-flat.toml");
+    let scene = scene.to_str().expect("UTF-8 path");
+    let run = |lang: &str, png: &str, extra: &[&str]| {
+        let png = d.join(png).display().to_string();
+        text(lang, &[&["render", scene, "-o", &png], extra].concat())
+    };
+    let t = run("id", "a.png", &["--stats"]);
+    for words in [
+        "segitiga digambar = ",
+        "piksel diwarnai = ",
+        "waktu per bingkai = ",
+        " Mpiksel/s); encoding PNG ",
+        "Statistik",
+        "sisi belakang dibuang (mesh tertutup)",
+        "waktu: bingkai",
+    ] {
+        assert!(t.contains(words), "{words}: {t}");
+    }
+    // Times are written with the decimal comma: `12,34 ms`.
+    let line = t
+        .lines()
+        .find(|l| l.contains("waktu: bingkai"))
+        .expect("a frame time");
+    assert!(
+        line.trim_end().ends_with(" ms") && line.contains(','),
+        "{line}"
+    );
+    let keys = |lang: &str, png: &str| -> Vec<String> {
+        let j: Value = serde_json::from_str(&run(lang, png, &["--json"])).expect("JSON");
+        let result = j["result"].as_object().expect("a result").clone();
+        assert!(result["frame time"]
+            .as_str()
+            .unwrap_or_default()
+            .contains("Mpixels/s"));
+        result.keys().cloned().collect()
+    };
+    assert_eq!(keys("en", "b.png"), keys("id", "c.png"));
+}
+
+#[test]
+fn a_problems_title_and_statement_follow_the_language() {
+    let t = text(
+        "id",
+        &[
+            "check",
+            "problems/text-triangle.toml",
+            "--answers-from-text",
+        ],
+    );
+    assert!(
+        t.starts_with("Segitiga ABC melalui kamera sintetis — jawaban dari "),
+        "{t}"
+    );
+    let t = text(
+        "en",
+        &[
+            "check",
+            "problems/text-triangle.toml",
+            "--answers-from-text",
+        ],
+    );
+    assert!(
+        t.starts_with("Triangle ABC through a synthetic camera — answers of "),
+        "{t}"
+    );
+}
+
+/// The `.rs` files under `dir`, recursively.
+fn sources(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
+    for entry in std::fs::read_dir(dir).expect("a source directory") {
+        let path = entry.expect("an entry").path();
+        if path.is_dir() {
+            sources(&path, out);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            out.push(path);
+        }
+    }
+}
+
+#[test]
+fn no_error_is_said_in_english_text() {
+    // `Error::new` is gone (it does not compile); an error could still be
+    // given words of one language as notation: `Error::said(f, "…".into())`
+    // or `Error::said(f, Msg::Math(…))`. None in src/.
+    let mut files = Vec::new();
+    sources(&root().join("src"), &mut files);
+    assert!(files.len() > 50, "{}", files.len());
+    for f in files {
+        let text = std::fs::read_to_string(&f).expect("reads");
+        for (at, _) in text.match_indices("Error::said(") {
+            let call: String = text[at..].chars().take(160).collect();
+            let call = call.split(";").next().unwrap_or_default();
+            assert!(
+                !call.contains("Msg::Math")
+                    && !call.contains("\".into()")
+                    && !call.contains("Msg::from"),
+                "{}: an error in words of one language: {call}",
+                f.display()
+            );
+        }
+    }
 }

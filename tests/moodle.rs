@@ -359,6 +359,7 @@ fn tree_leaf(v: &grafika::stages::trace::Val, out: &mut Vec<String>) {
         Val::Text(t) => out.push(t.clone()),
         Val::Bool(b) => out.push(b.to_string()),
         Val::Null => out.push("none".into()),
+        Val::Said(_) => {}
     }
 }
 

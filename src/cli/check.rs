@@ -22,7 +22,7 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<(String, i32)> {
     if a.file == stdin && a.answers.as_deref() == Some(stdin) {
         return Err(Error::why("answers", ErrMsg::BothStdin));
     }
-    let p = ProblemIn::read(&a.file)?;
+    let p = ProblemIn::read(&a.file)?.localized(style.lang == Lang::Id);
     let settings = check::Settings {
         follow_through: a.follow_through,
         ..check::settings_for(&p, a.tolerance, a.sig_figs)
@@ -277,7 +277,7 @@ fn mistakes(m: &Marking) -> String {
 /// An error as a person reads it: `field: words`, cut when long.
 fn said(e: &Error, lang: Lang) -> String {
     let words = crate::report::words::words(&e.message, lang);
-    cut_message(&format!("{}: {words}", e.field))
+    cut_message(&format!("{}: {words}", e.field), lang)
 }
 
 /// One row per student.

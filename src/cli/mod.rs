@@ -53,7 +53,10 @@ fn run_unchecked(cli: &Cli) -> Result<Report> {
         Command::Window(a) => at_precision!(p, window(a)),
         Command::Clip(a) => at_precision!(p, clip(a)),
         Command::Shade(a) => at_precision!(p, shade(a)),
-        Command::Solve { file, .. } => at_precision!(p, solve(file)),
+        Command::Solve { file, .. } => {
+            let id = style_of(cli).lang == Lang::Id;
+            at_precision!(p, solve(file, id))
+        }
         Command::Check(_)
         | Command::Generate(_)
         | Command::Bench { .. }
@@ -65,7 +68,7 @@ fn run_unchecked(cli: &Cli) -> Result<Report> {
         Command::Render(_) if p != Precision::Exact => {
             Err(Error::why("precision", ErrMsg::RenderPrecision))
         }
-        Command::Render(a) => crate::cli::render::run(a),
+        Command::Render(a) => crate::cli::render::run(a, style_of(cli).lang),
     }
 }
 
@@ -87,8 +90,9 @@ fn clip<T: crate::num::Scalar>(a: &ClipArgs) -> Result<Report> {
 fn shade<T: crate::num::Scalar>(a: &ShadeArgs) -> Result<Report> {
     calc::shade::<T>(a)
 }
-fn solve<T: crate::num::Scalar>(file: &std::path::Path) -> Result<Report> {
-    crate::tutor::solve::solve_file::<T>(file)
+fn solve<T: crate::num::Scalar>(file: &std::path::Path, id: bool) -> Result<Report> {
+    let p = crate::input::problem::ProblemIn::read(file)?.localized(id);
+    crate::tutor::solve::solve::<T>(&p)
 }
 
 /// Parses the arguments, runs, prints; returns the exit status (0, or 2 for
@@ -379,7 +383,7 @@ pub const MAX_MESSAGE: usize = 300;
 
 /// `message` cut to [`MAX_MESSAGE`] characters, its middle replaced by the
 /// number of characters left out.
-pub fn cut_message(message: &str) -> String {
+pub fn cut_message(message: &str, lang: Lang) -> String {
     let n = message.chars().count();
     if n <= MAX_MESSAGE {
         return message.to_string();
@@ -387,16 +391,18 @@ pub fn cut_message(message: &str) -> String {
     let keep = MAX_MESSAGE / 2;
     let head: String = message.chars().take(keep).collect();
     let tail: String = message.chars().skip(n - keep).collect();
-    format!("{head} … ({} characters cut) … {tail}", n - 2 * keep)
+    let cut = n - 2 * keep;
+    let said = tr(lang, "characters cut", "karakter dipotong");
+    format!("{head} … ({cut} {said}) … {tail}")
 }
 
 /// Prints an error on one line (stderr; and JSON on stdout with `--json`),
 /// a long echoed input cut; returns 2.
 /// The message in `lang`; the field as the flag or key is spelled.
 fn report_error(e: &Error, json: bool, lang: Lang) -> i32 {
-    let field = cut_message(&e.field);
+    let field = cut_message(&e.field, lang);
     let words = crate::report::words::words(&e.message, lang);
-    let message = cut_message(&words).replace('\n', " ");
+    let message = cut_message(&words, lang).replace('\n', " ");
     let label = crate::report::lang::tr(lang, "error", "kesalahan");
     eprintln!("{label}: {field}: {message}");
     if json {

@@ -8,6 +8,7 @@ use crate::input::scene::{Scene, Shading};
 use crate::msg::Msg;
 use crate::render::raster::Tri;
 use crate::render::{self, Corner, Frame, Options, Stats};
+use crate::report::lang::{tr, Lang};
 use crate::stages::trace::Report;
 use crate::stages::trace::{NoTrace, Recorder, Step, Trace, Val};
 use nalgebra::Vector3;
@@ -16,7 +17,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 /// Runs `render`.
-pub fn run(a: &RenderArgs) -> Result<Report> {
+pub fn run(a: &RenderArgs, lang: Lang) -> Result<Report> {
     let mut scene = Scene::read(&a.scene)?;
     let opt = options(a, &scene);
     render::release_unused(&mut scene, &opt);
@@ -29,7 +30,7 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
             ));
         }
     }
-    let (frame, runs) = frames(a, &scene, &opt)?;
+    let (frame, runs) = frames(a, &scene, &opt, lang)?;
     let t = Instant::now();
     if a.output.as_os_str() == "-" {
         let out = std::io::stdout().lock();
@@ -47,7 +48,14 @@ pub fn run(a: &RenderArgs) -> Result<Report> {
     if let Some((x, y)) = pixel {
         explain(&frame, &scene, &opt, (x, y), &mut rec)?;
     }
-    Ok(report(a, &scene, &opt, (&frame, &runs), encode, pixel, rec))
+    Ok(report(
+        a,
+        (&scene, &opt, lang),
+        (&frame, &runs),
+        encode,
+        pixel,
+        rec,
+    ))
 }
 
 /// The scene's settings with the flags' changes.
@@ -63,11 +71,11 @@ fn options(a: &RenderArgs, scene: &Scene) -> Options {
 
 /// Renders `--repeat` frames (on `--threads` threads), each into the last
 /// one's buffers: the last frame and every frame's counters and times.
-fn frames(a: &RenderArgs, scene: &Scene, opt: &Options) -> Result<(Frame, Vec<Stats>)> {
+fn frames(a: &RenderArgs, scene: &Scene, opt: &Options, lang: Lang) -> Result<(Frame, Vec<Stats>)> {
     // --repeat shows its progress on a terminal (a big scene × 10,000 runs
     // for minutes); one frame has the renderer's own bar.
     let bar = (a.repeat > 1)
-        .then(|| crate::cli::terminal_bar(a.repeat as u64, "frames / bingkai"))
+        .then(|| crate::cli::terminal_bar(a.repeat as u64, tr(lang, "frames", "bingkai")))
         .flatten();
     let bands = (opt.height as usize).div_ceil(render::raster::BAND) as u64;
     let progress = Progress::new(a.repeat == 1, bands);
@@ -150,8 +158,7 @@ impl Progress {
 /// and times, the explained pixel's steps.
 fn report(
     a: &RenderArgs,
-    scene: &Scene,
-    opt: &Options,
+    (scene, opt, lang): (&Scene, &Options, Lang),
     (frame, runs): (&Frame, &[Stats]),
     encode: Duration,
     pixel: Option<(u32, u32)>,
@@ -169,7 +176,7 @@ fn report(
     let result = summary(a, opt, st, &shading, (frame_t, encode, mpix));
     let mut notes = Vec::new();
     if a.stats {
-        notes.push(stats_text(st, runs, opt.shading, &median, encode));
+        notes.push(stats_text(st, runs, opt.shading, &median, encode, lang));
     }
     let mut extra = serde_json::Map::new();
     extra.insert("stats".into(), stats_json(a, st, &median, encode, mpix));
@@ -208,11 +215,11 @@ fn summary(
     } else {
         "frame time".to_string()
     };
-    let time = format!(
-        "{:.2} ms ({mpix:.1} Mpixels/s); PNG encoding {:.2} ms",
-        ms(frame_t),
-        ms(encode)
-    );
+    let time = Val::said(crate::msg::Said::FrameTime(
+        format!("{:.2}", ms(frame_t)),
+        format!("{mpix:.1}"),
+        format!("{:.2}", ms(encode)),
+    ));
     vec![
         (
             "image".to_string(),
@@ -225,7 +232,7 @@ fn summary(
         ("shading".to_string(), Val::text(shading)),
         ("triangles drawn".to_string(), count(st.drawn)),
         ("pixels shaded".to_string(), count(st.pixels_shaded)),
-        (label, Val::text(time)),
+        (label, time),
     ]
 }
 
@@ -277,74 +284,20 @@ fn stats_text(
     shading: Shading,
     median: &Median<'_>,
     encode: Duration,
+    lang: crate::report::lang::Lang,
 ) -> String {
-    let ms = |d: Duration| d.as_secs_f64() * 1e3;
-    let mut s = String::from("Stats\n");
-    let mut line = |k: &str, v: String| s.push_str(&format!("  {k:<34} {v}\n"));
-    line("triangles in", st.tris_in.to_string());
-    line("  back faces culled (closed meshes)", st.culled.to_string());
-    line("  rejected by outcodes", st.rejected.to_string());
-    line("  clipped (crossing a plane)", st.clipped.to_string());
-    line("  set up and rasterized", st.drawn.to_string());
-    line("  covering no pixel centre", st.no_pixels.to_string());
-    line(
-        "objects rejected whole (bounding box)",
-        st.objects_rejected.to_string(),
-    );
-    line(
-        "objects inside whole (no clip tests)",
-        st.objects_inside.to_string(),
-    );
-    line("pixels shaded", st.pixels_shaded.to_string());
-    line("lighting evaluations", st.lighting_evals.to_string());
-    line(
-        "per-pixel lighting",
-        if shading == Shading::Phong {
-            "yes (Phong)".into()
-        } else {
-            format!("none ({shading:?} shading)").to_lowercase()
-        },
-    );
-    line(
-        "lights skipped (out of range)",
-        st.lights_skipped.to_string(),
-    );
-    line(
-        "objects without specular work",
-        st.specular_skipped.to_string(),
-    );
-    let n = runs.len();
-    let what = if n > 1 {
-        format!(" (median of {n})")
-    } else {
-        String::new()
+    let ms = |f: &dyn Fn(&Stats) -> Duration| median(f).as_secs_f64() * 1e3;
+    let times = crate::report::render::Times {
+        runs: runs.len(),
+        geometry: ms(&|s| s.geometry),
+        binning: ms(&|s| s.binning),
+        bands: ms(&|s| s.pass),
+        raster: ms(&|s| s.raster),
+        shading: ms(&|s| s.shading),
+        frame: ms(&|s| s.frame()),
+        png: encode.as_secs_f64() * 1e3,
     };
-    line(
-        &format!("time: geometry{what}"),
-        format!("{:.2} ms", ms(median(&|s| s.geometry))),
-    );
-    line(
-        "time: binning",
-        format!("{:.2} ms", ms(median(&|s| s.binning))),
-    );
-    line(
-        "time: bands (raster + shading)",
-        format!("{:.2} ms", ms(median(&|s| s.pass))),
-    );
-    line(
-        "  thread time: raster",
-        format!("{:.2} ms", ms(median(&|s| s.raster))),
-    );
-    line(
-        "  thread time: shading",
-        format!("{:.2} ms", ms(median(&|s| s.shading))),
-    );
-    line(
-        "time: frame",
-        format!("{:.2} ms", ms(median(&|s| s.frame()))),
-    );
-    line("time: PNG encoding", format!("{:.2} ms", ms(encode)));
-    s
+    crate::report::render::stats_text(st, &times, shading, lang)
 }
 
 fn parse_pixel(s: &str) -> Result<(u32, u32)> {

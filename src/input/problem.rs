@@ -137,6 +137,12 @@ pub struct ProblemIn {
     pub source: Option<String>,
     /// The statement, as a student reads it.
     pub statement: Option<String>,
+    /// The title in Bahasa Indonesia (shown with `--lang id`).
+    #[serde(default)]
+    pub title_id: Option<String>,
+    /// The statement in Bahasa Indonesia (shown with `--lang id`).
+    #[serde(default)]
+    pub statement_id: Option<String>,
     /// The parts asked for; default: all the data allow.
     pub ask: Option<Vec<String>>,
     /// The camera.
@@ -190,6 +196,17 @@ impl ProblemIn {
             }
         }
         Ok(p)
+    }
+
+    /// The problem as a reader of Bahasa Indonesia sees it (when
+    /// `indonesian`): `title_id` and `statement_id` in place of `title` and
+    /// `statement` where the file gives them.
+    pub fn localized(mut self, indonesian: bool) -> ProblemIn {
+        if indonesian {
+            self.title = self.title_id.take().unwrap_or(self.title);
+            self.statement = self.statement_id.take().or(self.statement);
+        }
+        self
     }
 
     /// Reads and parses a problem file.

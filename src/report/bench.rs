@@ -56,7 +56,10 @@ pub fn table(inp: &Inputs, rows: &[Row], lang: crate::report::lang::Lang) -> Str
         tr("target ≤ 4 ulps", "target ≤ 4 ulps"),
     ]);
     for r in rows {
-        let right = |s: String| Cell::new(s).set_alignment(CellAlignment::Right);
+        // Numbers with the language's decimal mark (`56,99 ms` in Indonesian).
+        let right = |s: String| {
+            Cell::new(crate::report::lang::decimal(&s, lang)).set_alignment(CellAlignment::Right)
+        };
         let (tmax, tmed) = r.target_max_median();
         let (wmax, _) = accuracy::max_median(&r.errors.wide);
         let exact = r.precision == Precision::Exact;

@@ -53,6 +53,7 @@ impl Doc {
 
     /// `name = value` (a matrix is set as a matrix).
     pub fn named(self, st: &Style, name: &str, v: &Val, arrow: bool) -> String {
+        let name = &crate::report::words::labels::label(name, st.lang);
         let lead = if arrow { "⇒ " } else { "" };
         match (self, v) {
             (Doc::Html, _) => html::named(st, name, v, arrow),

@@ -74,6 +74,7 @@ pub fn step(k: usize, s: &Step, st: &Style) -> String {
 /// `name = value` in MathML: a matrix as a table, numbers and vectors as
 /// notation, words (a status, yes/no) as text.
 pub fn named(st: &Style, name: &str, v: &Val, arrow: bool) -> String {
+    let name = &crate::report::words::labels::label(name, st.lang);
     let lead = if arrow { "⇒ " } else { "" };
     match v {
         Val::List(rows) if v.is_matrix() => format!(

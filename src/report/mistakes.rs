@@ -28,13 +28,13 @@ pub fn indonesian(code: &str) -> Option<&'static str> {
         "u_not_normalized" => {
             "u = Vup × n tidak dibagi dengan |Vup × n| (v = n × u pun ikut memiliki panjang itu)"
         }
-        "fovy_not_halved" => "tan(fovy) dipakai untuk jendela, bukan tan(fovy/2)",
+        "fovy_not_halved" => "tan(fovy) dipakai untuk bidang pandang, bukan tan(fovy/2)",
         "degrees_as_radians" => "sudut dalam derajat dimasukkan ke tan seolah-olah dalam radian",
         "height_is_half_extent" => {
-            "setengah ukuran near·tan(fovy/2) (h pada teks) diberikan sebagai tinggi jendela (dan aspect·h sebagai lebarnya)"
+            "setengah ukuran near·tan(fovy/2) (h pada teks) diberikan sebagai tinggi bidang pandang (dan aspect·h sebagai lebarnya)"
         }
         "height_as_half_extent" => {
-            "near·tan(fovy/2) dianggap tinggi penuh, sehingga tepi-tepi jendela berada pada setengah jarak yang benar"
+            "near·tan(fovy/2) dianggap tinggi penuh, sehingga tepi-tepi bidang pandang berada pada setengah jarak yang benar"
         }
         "d_sign" => "tanda d salah (bidang proyeksi z = +near, bukan z = −near)",
         "matrix_transposed" => "matriks pandang ditulis tertranspos (konvensi vektor baris P·M)",

@@ -12,6 +12,7 @@ pub mod mathml;
 pub mod mistakes;
 pub mod moodle;
 pub mod practice;
+pub mod render;
 pub mod sheets;
 pub mod words;
 
@@ -153,6 +154,7 @@ impl Style {
                 .collect::<Vec<_>>()
                 .join(";  "),
             Val::Text(t) => t.clone(),
+            Val::Said(m) => self.w(m),
             Val::Bool(b) => if *b {
                 self.tr("yes", "ya")
             } else {
@@ -188,12 +190,13 @@ impl Style {
         if !s.formula.is_empty() {
             out.push_str(&format!("    {}\n", self.w(&s.formula)));
         }
+        let name = |k: &str| words::labels::label(k, self.lang);
         for (k, v) in &s.values {
-            out.push_str(&self.named("    ", k, v));
+            out.push_str(&self.named("    ", &name(k), v));
             out.push('\n');
         }
         for (k, v) in &s.result {
-            out.push_str(&self.named("  ⇒ ", k, v));
+            out.push_str(&self.named("  ⇒ ", &name(k), v));
             out.push('\n');
         }
         if let Some(n) = &s.note {
@@ -236,7 +239,11 @@ impl Report {
         }
         out.push_str(&format!("\n{}\n", style.tr("Answer", "Jawaban")));
         for (k, v) in &self.result {
-            push_answer(&mut out, style, "  ", k, v);
+            let k = match self.command.as_str() {
+                "render" => render::label(k, style.lang),
+                _ => k.clone(),
+            };
+            push_answer(&mut out, style, "  ", &k, v);
         }
         for n in self.all_notes(style) {
             out.push_str(&format!("\n{n}\n"));
@@ -377,6 +384,13 @@ fn push_answer(out: &mut String, style: &Style, indent: &str, k: &str, v: &Val) 
                 push_answer(out, style, &format!("{indent}  "), k2, v2);
             }
         }
+        // A clipping status is a code (check compares it); the text
+        // glosses it in the chosen language.
+        Val::Text(t) if k == "status" => {
+            let said = Val::said(crate::msg::Said::Status(t.clone()));
+            out.push_str(&style.named(indent, k, &said));
+            out.push('\n');
+        }
         _ => {
             out.push_str(&style.named(indent, k, v));
             out.push('\n');
@@ -397,6 +411,7 @@ pub fn value_json(v: &Val) -> Value {
                 .collect::<Map<_, _>>(),
         ),
         Val::Text(t) => Value::String(t.clone()),
+        Val::Said(m) => Value::String(words::words(m, Lang::En)),
         Val::Bool(b) => Value::Bool(*b),
         Val::Null => Value::Null,
     }
@@ -413,6 +428,7 @@ pub fn exact_json(v: &Val) -> Value {
                 .collect::<Map<_, _>>(),
         ),
         Val::Text(t) => Value::String(t.clone()),
+        Val::Said(m) => Value::String(words::words(m, Lang::En)),
         Val::Bool(b) => Value::Bool(*b),
         Val::Null => Value::Null,
     }

@@ -387,8 +387,8 @@ fn clip_label(parts: &[&str], lang: Lang, plane: impl Fn(&str) -> String) -> Str
     };
     let t = |en: &str, id: &str| tr(lang, en, id).to_string();
     let words = match rest {
-        ["code0"] => t("outcode of P0", "kode wilayah P0"),
-        ["code1"] => t("outcode of P1", "kode wilayah P1"),
+        ["code0"] => t("outcode of P0", "region code P0"),
+        ["code1"] => t("outcode of P1", "region code P1"),
         ["intersections", p, "t"] => format!("t {} {}", t("at the plane", "pada bidang"), plane(p)),
         ["intersections", p, "point"] => {
             format!(

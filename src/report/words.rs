@@ -8,7 +8,9 @@ use crate::msg::{LightPart, Msg, SpotZone, Term, Trivial};
 mod drawn;
 pub mod errors;
 mod figure;
+pub mod labels;
 mod pixel;
+mod said;
 
 /// The words of `m` in `lang`.
 pub fn words(m: &Msg, lang: Lang) -> String {
@@ -30,39 +32,16 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         | Msg::SecLightFace
         | Msg::SecLightVertex(_)
         | Msg::SecLightPixel => section(m, id),
-        Msg::UpParallel(a) => {
-            let a = super::lang::decimal(&format!("{a:.3e}"), lang);
-            if id {
-                format!("vektor up (Vup) hampir sejajar dengan arah pandang (sudut {a} rad): u dan v sangat peka terhadap masukan")
-            } else {
-                format!("the up vector is nearly parallel to the view direction (angle {a} rad): u and v are very sensitive to the inputs")
-            }
-        }
-        Msg::BehindWarn(n) => {
-            if id {
-                format!("{n} berada di belakang pusat proyeksi: bayangannya terbalik dan tidak terlihat")
-            } else {
-                format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen")
-            }
+        Msg::UpParallel(_) | Msg::BehindWarn(_) | Msg::ErrFewDistinct(..) | Msg::ErrHtmlCommand => {
+            warning(m, lang)
         }
         Msg::DrawnTitle(t) => drawn::title(*t, lang),
         Msg::Pixel(p) => pixel::words(p, lang),
         Msg::Statement(s) => drawn::statement(s, lang),
-        Msg::ErrFewDistinct(topic, level, n) => {
-            if id {
-                format!("tidak dapat menarik soal {topic} tingkat {level} yang berbeda dari {n} soal sebelumnya: soal yang berbeda di tingkat ini tidak banyak; minta lebih sedikit soal (--count) atau tingkat lain (--difficulty)")
-            } else {
-                format!("could not draw a {topic} problem at {level} level unlike the {n} before it: there are few different ones at this level; ask for fewer problems (--count) or another --difficulty")
-            }
-        }
-        Msg::ErrHtmlCommand => pick(
-            id,
-            "writes the worked solution of basis, view, project, window, clip, shade, solve and render; for exams use generate --format html",
-            "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html",
-        ),
         Msg::Figure(f) => figure::figure(f, lang),
         Msg::At(place, m) => format!("{place}: {}", words(m, lang)),
         Msg::Err(e) => errors::error(e, lang),
+        Msg::Said(s) => said::said(s, lang),
         Msg::ErrSamePoint(_)
         | Msg::ErrUpZero
         | Msg::ErrUpParallel(..)
@@ -84,6 +63,59 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         | Msg::ErrChooseProjection
         | Msg::ErrPointNeedsViewport
         | Msg::ErrFar(..) => flag_error(m, id),
+        Msg::Parts(_) | Msg::Expected(_) | Msg::Unreadable(_) | Msg::WithinPct(_) => {
+            judged(m, lang)
+        }
+        _ => title(m, id)
+            .or_else(|| caption(m, id))
+            .or_else(|| note(m, id))
+            .unwrap_or_else(|| "?".to_string()),
+    }
+}
+
+fn pick(id: bool, en: &str, ind: &str) -> String {
+    if id { ind } else { en }.to_string()
+}
+
+/// Warnings, and the errors of generate and --html.
+fn warning(m: &Msg, lang: Lang) -> String {
+    let id = lang == Lang::Id;
+    match m {
+        Msg::UpParallel(a) => {
+            let a = super::lang::decimal(&format!("{a:.3e}"), lang);
+            if id {
+                format!("vektor up (Vup) hampir sejajar dengan arah pandang (sudut {a} rad): u dan v sangat peka terhadap masukan")
+            } else {
+                format!("the up vector is nearly parallel to the view direction (angle {a} rad): u and v are very sensitive to the inputs")
+            }
+        }
+        Msg::BehindWarn(n) => {
+            if id {
+                format!("{n} berada di belakang pusat proyeksi: bayangannya terbalik dan tidak terlihat")
+            } else {
+                format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen")
+            }
+        }
+        Msg::ErrFewDistinct(topic, level, n) => {
+            if id {
+                format!("tidak dapat menarik soal {topic} tingkat {level} yang berbeda dari {n} soal sebelumnya: soal yang berbeda di tingkat ini tidak banyak; minta lebih sedikit soal (--count) atau tingkat lain (--difficulty)")
+            } else {
+                format!("could not draw a {topic} problem at {level} level unlike the {n} before it: there are few different ones at this level; ask for fewer problems (--count) or another --difficulty")
+            }
+        }
+        // Msg::ErrHtmlCommand
+        _ => pick(
+            id,
+            "writes the worked solution of basis, view, project, window, clip, shade, solve and render; for exams use generate --format html",
+            "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html",
+        ),
+    }
+}
+
+/// How an answer was judged, with values inside (`check`).
+fn judged(m: &Msg, lang: Lang) -> String {
+    let id = lang == Lang::Id;
+    match m {
         Msg::Parts(parts) => parts
             .iter()
             .map(|(l, n)| format!("{l}: {}", words(n, lang)))
@@ -104,15 +136,8 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             pick(id, "within", "dalam batas"),
             super::lang::decimal(p, lang)
         ),
-        _ => title(m, id)
-            .or_else(|| caption(m, id))
-            .or_else(|| note(m, id))
-            .unwrap_or_else(|| "?".to_string()),
+        _ => String::new(),
     }
-}
-
-fn pick(id: bool, en: &str, ind: &str) -> String {
-    if id { ind } else { en }.to_string()
 }
 
 fn section(m: &Msg, id: bool) -> String {
@@ -252,8 +277,20 @@ fn title(m: &Msg, id: bool) -> Option<String> {
             format!("Is {n}'' inside the view volume?"),
             format!("Apakah {n}'' di dalam view volume?"),
         ),
+        _ => title_lighting(m, id),
+    }
+}
+
+/// Step titles of lighting and rendering.
+fn title_lighting(m: &Msg, id: bool) -> Option<String> {
+    let p = |en: &str, ind: &str| Some(pick(id, en, ind));
+    let f = |en: String, ind: String| Some(if id { ind } else { en });
+    match m {
         Msg::UnitVector(n) => f(format!("Unit vector {n}"), format!("Vektor satuan {n}")),
-        Msg::ViewerLocal => p("Viewer direction (local viewer)", "Arah pengamat (pengamat lokal)"),
+        Msg::ViewerLocal => p(
+            "Viewer direction (local viewer)",
+            "Arah pengamat (pengamat lokal)",
+        ),
         Msg::Material => p("Material and model", "Material dan model"),
         Msg::Light((i, n), part) => {
             let w = light_part(*part, id);
@@ -261,21 +298,41 @@ fn title(m: &Msg, id: bool) -> Option<String> {
                 format!("{} {}: {w}", if id { "Cahaya" } else { "Light" }, i + 1)
             } else {
                 let mut c = w.chars();
-                c.next().map(|a| a.to_uppercase().chain(c).collect()).unwrap_or_default()
+                c.next()
+                    .map(|a| a.to_uppercase().chain(c).collect())
+                    .unwrap_or_default()
             })
         }
         Msg::TermStep(t) => {
             let w = term(*t, id);
             let cap: String = w[..1].to_uppercase() + &w[1..];
-            f(format!("{cap} term, per channel"), format!("Komponen {w}, per kanal warna"))
+            f(
+                format!("{cap} term, per channel"),
+                format!("Komponen {w}, per kanal warna"),
+            )
         }
         Msg::SumOfTerms => p("Sum of the terms", "Jumlah komponen"),
-        Msg::Clamp => p("Clamp each channel to [0, 1]", "Batasi tiap kanal ke [0, 1]"),
-        Msg::WhichTriangle => p("Which triangle covers the pixel", "Segitiga mana yang menutupi piksel"),
-        Msg::Depth => p("Depth at the pixel (z-buffer)", "Kedalaman pada piksel (z-buffer)"),
+        Msg::Clamp => p(
+            "Clamp each channel to [0, 1]",
+            "Batasi tiap kanal ke [0, 1]",
+        ),
+        Msg::WhichTriangle => p(
+            "Which triangle covers the pixel",
+            "Segitiga mana yang menutupi piksel",
+        ),
+        Msg::Depth => p(
+            "Depth at the pixel (z-buffer)",
+            "Kedalaman pada piksel (z-buffer)",
+        ),
         Msg::Barycentric => p("Barycentric coordinates", "Koordinat barisentrik"),
-        Msg::FlatShading => p("Flat shading: one colour per face", "Flat shading: satu warna per bidang"),
-        Msg::Gouraud => p("Gouraud: interpolate the vertex colours", "Gouraud: interpolasi warna verteks"),
+        Msg::FlatShading => p(
+            "Flat shading: one colour per face",
+            "Flat shading: satu warna per bidang",
+        ),
+        Msg::Gouraud => p(
+            "Gouraud: interpolate the vertex colours",
+            "Gouraud: interpolasi warna verteks",
+        ),
         Msg::PhongShading => p(
             "Phong shading: interpolate normal, position and colour",
             "Phong shading: interpolasi normal, posisi dan warna",
@@ -896,6 +953,16 @@ mod tests {
         v.extend(drawn_messages());
         v.push(Msg::Unreadable(crate::msg::NumErr::DivZero("1/0".into())));
         v.push(Msg::Written("as for B".into(), Some("seperti B".into())));
+        for s in [
+            crate::msg::Said::BitTest(true, "x > xmax".into(), "4.5 > 3".into()),
+            crate::msg::Said::BitTest(false, "x < xmin".into(), "4.5 < 0".into()),
+            crate::msg::Said::FrameTime("12.30".into(), "25.0".into(), "1.20".into()),
+            crate::msg::Said::Status("clipped".into()),
+            crate::msg::Said::Status("accepted".into()),
+            crate::msg::Said::Status("rejected".into()),
+        ] {
+            v.push(Msg::Said(s));
+        }
         v.push(Msg::At("p.toml:3:7".into(), Box::new(Msg::ErrUpZero)));
         v.extend(errors::tests::every_error().into_iter().map(Msg::Err));
         v.extend(pixel::every().into_iter().map(Msg::Pixel));
@@ -1114,6 +1181,7 @@ mod tests {
             | FollowThrough
             | At(..)
             | Err(_)
+            | Said(_)
             | ErrSamePoint(_)
             | ErrUpZero
             | ErrUpParallel(..)

@@ -471,16 +471,11 @@ fn code_step<T: Scalar>(name: &str, b: &ClipBox<T>, p: &V3<T>, code: u8) -> Step
             ("<", &b.min[axis])
         };
         let set = code & (1 << bit) != 0;
-        let word = if set { "true" } else { "false" };
+        let test = format!("{a} {op} {a}{}", if is_max { "max" } else { "min" });
+        let values = format!("{} {op} {}", short(&p[axis]), short(lim));
         s = s.val(
             format!("bit {} ({side})", bit + 1),
-            Val::text(format!(
-                "{} — {a} {op} {a}{}: {} {op} {} is {word}",
-                u8::from(set),
-                if is_max { "max" } else { "min" },
-                short(&p[axis]),
-                short(lim)
-            )),
+            Val::said(crate::msg::Said::BitTest(set, test, values)),
         );
     }
     s.res("code", Val::text(code_str(code)))

@@ -21,6 +21,10 @@ pub enum Val {
     Map(Vec<(String, Val)>),
     /// Text (an outcode, a status, a verdict).
     Text(String),
+    /// Words for a person as a value (an outcode bit's test, the render
+    /// time): text output says them in the chosen language, JSON in
+    /// English, so the JSON is the same in every language.
+    Said(crate::msg::Msg),
     /// Yes or no.
     Bool(bool),
     /// Nothing (a rejected segment).
@@ -47,6 +51,10 @@ impl Val {
                 .map(|r| Val::List((0..4).map(|c| Val::num(&m[(r, c)])).collect()))
                 .collect(),
         )
+    }
+    /// Words for a person (a message key).
+    pub fn said(m: impl Into<crate::msg::Said>) -> Val {
+        Val::Said(crate::msg::Msg::Said(m.into()))
     }
     /// Text.
     pub fn text(s: impl Into<String>) -> Val {

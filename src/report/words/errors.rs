@@ -435,40 +435,9 @@ fn needs(thing: &Thing, key: &str, lang: Lang) -> String {
 
 /// Lights files and the [shade] set-up.
 fn lights(m: &ErrMsg, lang: Lang) -> String {
-    let n = |s: &str| nums(s, lang);
     let f = |en: String, id: String| pick(lang, en, id);
     match m {
-        ErrMsg::Channel(ch, v) => {
-            let ind = match ch.as_str() {
-                "red" => "merah",
-                "green" => "hijau",
-                _ => "biru",
-            };
-            f(
-                format!("color channels must lie in [0, 1]; {ch} is {v}"),
-                format!(
-                    "kanal warna harus berada di [0, 1]; {ind} bernilai {}",
-                    n(v)
-                ),
-            )
-        }
-        ErrMsg::Attenuation(a0, a1, a2) => f(
-            format!("a0, a1, a2 must be ≥ 0 and not all 0, got ({a0}, {a1}, {a2})"),
-            format!(
-                "a0, a1, a2 harus ≥ 0 dan tidak semuanya 0, diberikan ({}; {}; {})",
-                n(a0),
-                n(a1),
-                n(a2)
-            ),
-        ),
-        ErrMsg::Cones(t, p) => f(
-            format!("the cone angles need 0 ≤ theta ≤ phi ≤ 180°, got theta = {t}, phi = {p}"),
-            format!(
-                "sudut kerucut harus 0 ≤ theta ≤ phi ≤ 180°, diberikan theta = {}, phi = {}",
-                n(t),
-                n(p)
-            ),
-        ),
+        ErrMsg::Channel(..) | ErrMsg::Attenuation(..) | ErrMsg::Cones(..) => light_values(m, lang),
         ErrMsg::NoLightTable(p) => f(
             format!("{p} has no [[light]] table"),
             format!("{p} tidak memiliki tabel [[light]]"),
@@ -515,6 +484,46 @@ fn lights(m: &ErrMsg, lang: Lang) -> String {
             lang,
             "must not be the zero vector",
             "tidak boleh vektor nol",
+        ),
+        _ => String::new(),
+    }
+}
+
+/// A light's or material's values out of their bounds.
+fn light_values(m: &ErrMsg, lang: Lang) -> String {
+    let n = |s: &str| nums(s, lang);
+    let f = |en: String, id: String| pick(lang, en, id);
+    match m {
+        ErrMsg::Channel(ch, v) => {
+            let ind = match ch.as_str() {
+                "red" => "merah",
+                "green" => "hijau",
+                _ => "biru",
+            };
+            f(
+                format!("color channels must lie in [0, 1]; {ch} is {v}"),
+                format!(
+                    "kanal warna harus berada di [0, 1]; {ind} bernilai {}",
+                    n(v)
+                ),
+            )
+        }
+        ErrMsg::Attenuation(a0, a1, a2) => f(
+            format!("a0, a1, a2 must be ≥ 0 and not all 0, got ({a0}, {a1}, {a2})"),
+            format!(
+                "a0, a1, a2 harus ≥ 0 dan tidak semuanya 0, diberikan ({}; {}; {})",
+                n(a0),
+                n(a1),
+                n(a2)
+            ),
+        ),
+        ErrMsg::Cones(t, p) => f(
+            format!("the cone angles need 0 ≤ theta ≤ phi ≤ 180°, got theta = {t}, phi = {p}"),
+            format!(
+                "sudut kerucut harus 0 ≤ theta ≤ phi ≤ 180°, diberikan theta = {}, phi = {}",
+                n(t),
+                n(p)
+            ),
         ),
         _ => String::new(),
     }
@@ -733,7 +742,7 @@ pub fn toml(e: &TomlErr, lang: Lang) -> String {
 
 /// serde's names of kinds of values, in Indonesian.
 fn serde_words(s: &str) -> String {
-    [
+    let names = [
         (
             "a number or a string with a number expression such as",
             "bilangan atau string berisi ekspresi bilangan seperti",
@@ -753,9 +762,13 @@ fn serde_words(s: &str) -> String {
         ("an integer", "bilangan bulat"),
         ("a boolean", "boolean"),
         ("unit variant", "nilai tanpa data"),
-    ]
-    .iter()
-    .fold(s.to_string(), |t, (en, id)| t.replace(en, id))
+    ];
+    // Longer phrases first, so `an integer` is not read as `an` + `integer`.
+    let mut names = names.to_vec();
+    names.sort_by_key(|(en, _)| std::cmp::Reverse(en.len()));
+    names
+        .iter()
+        .fold(s.to_string(), |t, (en, id)| t.replace(en, id))
 }
 
 /// The TOML reader's descriptions of syntax errors, in Indonesian.
@@ -1342,6 +1355,11 @@ pub(crate) mod tests {
         );
         let e = ErrMsg::Attenuation("0.5".into(), "-1".into(), "0".into());
         assert!(error(&e, Lang::Id).ends_with("diberikan (0,5; -1; 0)"));
+        let e = TomlErr::InvalidType("string \"a\"".into(), "an integer".into());
+        assert_eq!(
+            toml(&e, Lang::Id),
+            "jenis nilai salah: string \"a\", seharusnya bilangan bulat"
+        );
         let e = ErrMsg::CannotRead("p.toml".into(), IoWhy::NotFound);
         assert_eq!(
             error(&e, Lang::Id),

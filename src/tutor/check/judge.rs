@@ -46,7 +46,9 @@ pub(crate) fn judge(
         Val::Text(t) => judge_text(given, t),
         Val::Null => judge_none(given),
         Val::Bool(b) => judge_bool(given, *b),
-        Val::Map(_) => Judged::new(Verdict::Unparseable, "unparseable", Msg::SeveralAnswers),
+        Val::Map(_) | Val::Said(_) => {
+            Judged::new(Verdict::Unparseable, "unparseable", Msg::SeveralAnswers)
+        }
     }
 }
 
@@ -222,7 +224,7 @@ fn read_value(given: &toml::Value, like: &Val) -> Option<Val> {
                 g.to_lowercase()
             }))
         }
-        Val::Null | Val::Bool(_) | Val::Map(_) => None,
+        Val::Null | Val::Bool(_) | Val::Map(_) | Val::Said(_) => None,
     }
 }
 

@@ -159,7 +159,7 @@ pub fn answer_toml(v: &Val) -> toml::Value {
         })),
         Val::List(items) => T::Array(items.iter().map(answer_toml).collect()),
         Val::Text(t) => T::String(t.clone()),
-        Val::Null => T::String("none".into()),
+        Val::Null | Val::Said(_) => T::String("none".into()),
         Val::Bool(b) => T::Boolean(*b),
         Val::Map(kv) => T::Table(
             kv.iter()

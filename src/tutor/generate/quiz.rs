@@ -197,6 +197,8 @@ fn collect(v: &Val, out: &mut Vec<Typed>) {
         Val::Text(t) => out.push(Typed::Text(t.clone())),
         Val::Bool(b) => out.push(Typed::Text(b.to_string())),
         Val::Null => out.push(Typed::Text("none".into())),
+        // Words beside the numbers are not asked.
+        Val::Said(_) => {}
     }
 }
 

@@ -1,0 +1,16 @@
+//! Words given as values (`Val::Said`): what a step or a summary states in
+//! words beside its numbers. Numbers are notation (`.` for the decimal
+//! point); `report::words` writes them in each language.
+
+/// Words given as a value.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Said {
+    /// An outcode bit's test: whether it holds, the comparison (`x > xmax`)
+    /// and its values (`4 > 3`).
+    BitTest(bool, String, String),
+    /// One frame's time: milliseconds, millions of pixels per second, and
+    /// the PNG encoding's milliseconds (each already written).
+    FrameTime(String, String, String),
+    /// A clipping status as a word (`clipped`, `accepted`, `rejected`).
+    Status(String),
+}
