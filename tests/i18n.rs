@@ -1,7 +1,9 @@
 //! Bahasa Indonesia and English: the text's three worked examples in both
 //! languages (snapshot files, read by a person), every JSON identical across
-//! languages but for its human-readable strings, and an error, a check report
-//! and an exam key in Indonesian.
+//! languages but for its human-readable strings, an error of each family
+//! (scene, mesh and answer files, numbers, flags, clap) with exit status 2
+//! on one line, a check report, an exam key and render's summary in
+//! Indonesian, and the shipped problems' Indonesian titles and errata.
 
 mod common;
 use common::{grafika, root};
