@@ -352,7 +352,7 @@ fn a_bad_scene_file_is_refused_in_indonesian() {
     std::fs::write(d.join("e.toml"), "[image]\nwidth = 10\nheight = 10\n").expect("writes");
     let err = refused_in_indonesian(&d, &["render", "e.toml", "-o", "e.png"]);
     assert!(
-        err.starts_with("kesalahan: object: e.toml: adegan tidak memiliki objek"),
+        err.starts_with("kesalahan: object: e.toml: scene tidak memiliki objek"),
         "{err}"
     );
     assert!(!d.join("s.png").exists() && !d.join("e.png").exists());

@@ -383,7 +383,7 @@ fn scene(m: &ErrMsg, lang: Lang) -> String {
         ErrMsg::NoObjects => say(
             lang,
             "the scene has no objects: add at least one [[object]] table (cone, sphere, cylinder, box, plane or obj)",
-            "adegan tidak memiliki objek: tambahkan paling sedikit satu tabel [[object]] (cone, sphere, cylinder, box, plane atau obj)",
+            "scene tidak memiliki objek: tambahkan paling sedikit satu tabel [[object]] (cone, sphere, cylinder, box, plane atau obj)",
         ),
         ErrMsg::CameraNeedsPerspective => say(
             lang,
