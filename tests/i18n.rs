@@ -1,7 +1,9 @@
 //! Bahasa Indonesia and English: the text's three worked examples in both
 //! languages (snapshot files, read by a person), every JSON identical across
-//! languages but for its human-readable strings, and an error, a check report
-//! and an exam key in Indonesian.
+//! languages but for its human-readable strings, an error of each family
+//! (scene, mesh and answer files, numbers, flags, clap) with exit status 2
+//! on one line, a check report, an exam key and render's summary in
+//! Indonesian, and the shipped problems' Indonesian titles and errata.
 
 mod common;
 use common::{grafika, root};
@@ -76,8 +78,11 @@ fn without_words(v: &Value) -> Value {
 
 #[test]
 fn json_is_the_same_in_both_languages_but_for_its_words() {
-    let runs: [&[&str]; 5] = [
+    let runs: [&[&str]; 6] = [
         &["solve", "problems/text-camera.toml"],
+        &[
+            "clip", "--min", "0,0,0", "--max", "3,4,3", "--from", "4,2,2", "--to", "-2,6,1",
+        ],
         &["solve", "problems/text-triangle.toml"],
         &["solve", "problems/text-clip.toml"],
         &["solve", "problems/shade-two-lights.toml"],
@@ -94,7 +99,7 @@ fn json_is_the_same_in_both_languages_but_for_its_words() {
         };
         let (en, id) = (j("en"), j("id"));
         assert_eq!(without_words(&en), without_words(&id), "{args:?}");
-        if args[0] == "solve" {
+        if args[0] != "check" {
             assert_ne!(
                 en["steps"][0]["title"], id["steps"][0]["title"],
                 "{args:?}: titles translated"
@@ -347,7 +352,7 @@ fn a_bad_scene_file_is_refused_in_indonesian() {
     std::fs::write(d.join("e.toml"), "[image]\nwidth = 10\nheight = 10\n").expect("writes");
     let err = refused_in_indonesian(&d, &["render", "e.toml", "-o", "e.png"]);
     assert!(
-        err.starts_with("kesalahan: object: e.toml: adegan tidak memiliki objek"),
+        err.starts_with("kesalahan: object: e.toml: scene tidak memiliki objek"),
         "{err}"
     );
     assert!(!d.join("s.png").exists() && !d.join("e.png").exists());

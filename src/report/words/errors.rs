@@ -110,7 +110,7 @@ pub fn number(e: &NumErr, lang: Lang) -> String {
             format!("the number is {len} characters long, more than the {max} allowed"),
             format!("bilangan ini panjangnya {len} karakter, lebih dari {max} yang diizinkan"),
         ),
-        NumErr::Empty => say(lang, "expected a number, found nothing", "seharusnya sebuah bilangan, tidak ada apa-apa"),
+        NumErr::Empty => say(lang, "expected a number, found nothing", "seharusnya sebuah bilangan, tetapi tidak ada isinya"),
         NumErr::Expected(w, col, found) => {
             let (wen, wid) = match w {
                 Want::OperatorOrEnd => ("an operator or the end of the number", "operator atau akhir bilangan"),
@@ -383,7 +383,7 @@ fn scene(m: &ErrMsg, lang: Lang) -> String {
         ErrMsg::NoObjects => say(
             lang,
             "the scene has no objects: add at least one [[object]] table (cone, sphere, cylinder, box, plane or obj)",
-            "adegan tidak memiliki objek: tambahkan paling sedikit satu tabel [[object]] (cone, sphere, cylinder, box, plane atau obj)",
+            "scene tidak memiliki objek: tambahkan paling sedikit satu tabel [[object]] (cone, sphere, cylinder, box, plane atau obj)",
         ),
         ErrMsg::CameraNeedsPerspective => say(
             lang,
@@ -691,7 +691,7 @@ pub fn toml(e: &TomlErr, lang: Lang) -> String {
         ),
         TomlErr::MissingField(k) => f(
             format!("missing field `{k}`"),
-            format!("kunci `{k}` tidak ada"),
+            format!("kunci `{k}` belum diberikan"),
         ),
         TomlErr::Duplicate(k) => f(
             format!("duplicate key `{k}`"),
@@ -762,6 +762,7 @@ fn serde_words(s: &str) -> String {
         ("an integer", "bilangan bulat"),
         ("a boolean", "boolean"),
         ("unit variant", "nilai tanpa data"),
+        ("elements", "elemen"),
     ];
     // Longer phrases first, so `an integer` is not read as `an` + `integer`.
     let mut names = names.to_vec();
@@ -772,8 +773,9 @@ fn serde_words(s: &str) -> String {
 }
 
 /// The TOML reader's descriptions of syntax errors, in Indonesian.
-const SYNTAX: [(&str, &str); 46] = [
+const SYNTAX: [(&str, &str); 47] = [
     ("invalid float", "bilangan desimal tidak sah"),
+    ("invalid number", "bilangan tidak sah"),
     ("invalid integer number", "bilangan bulat tidak sah"),
     ("invalid string", "string tidak sah"),
     ("invalid boolean", "boolean tidak sah"),
