@@ -39,6 +39,8 @@ pub enum PixelMsg {
     FOutcode,
     /// Note: the renderer multiplies the model point by V·M at once.
     Composed,
+    /// Note: the object's box is inside, so the renderer took every code as 0.
+    BoxInside,
     /// Note: a vertex outside a plane gets no pixel of its own.
     Outside,
     /// Note: the set-up triangle is (true) or is not the rasterizer's.

@@ -9,8 +9,8 @@ use super::{Corner, Frame, Options, Stats};
 use crate::error::Result;
 use crate::input::scene::Scene;
 use crate::msg::{Msg, PixelMsg};
-use crate::stages::camera;
 use crate::stages::trace::{NoTrace, Recorder, Step, Trace, Val};
+use crate::stages::{camera, clip};
 use nalgebra::{Matrix4, Vector4};
 
 /// Records the geometry of set-up triangle `id` of `frame` (rendered from
@@ -136,8 +136,15 @@ fn vertex_steps(p: &geometry::Prep, idx: [usize; 3], rec: &mut Recorder) -> [Vec
         camera::to_world(&model, &name, &geometry::v3(pos), rec);
         let (_, c_k, code) = geometry::vertex_clip(&p.x, pos, &name, rec);
         *c = c_k;
-        if let (Some(s), true) = (rec.steps.last_mut(), code != 0) {
-            s.note = Some(Msg::Pixel(PixelMsg::Outside));
+        let note = if p.x.inside {
+            // The renderer skipped the test: shown, with the reason.
+            clip::outcode_clip(c, &name, rec);
+            Some(PixelMsg::BoxInside)
+        } else {
+            (code != 0).then_some(PixelMsg::Outside)
+        };
+        if let (Some(s), Some(n)) = (rec.steps.last_mut(), note) {
+            s.note = Some(Msg::Pixel(n));
         }
     }
     clip

@@ -116,7 +116,7 @@ pub(super) struct VertXf<'a> {
     /// The eye-space centre of the bounding box.
     centre: Vector3<f32>,
     /// The whole object is inside the view volume (all codes 0).
-    inside: bool,
+    pub(super) inside: bool,
     pub(super) win: &'a Window<f32>,
     /// Image width and height.
     pub(super) size: (f32, f32),

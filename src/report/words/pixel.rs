@@ -93,6 +93,10 @@ fn pair(m: &PixelMsg) -> (String, String) {
             "the renderer multiplies the object point by the product V·M once (the same matrix for every vertex of the object)",
             "renderer mengalikan titik objek dengan hasil kali V·M sekali (matriks yang sama untuk setiap titik objek)",
         ),
+        PixelMsg::BoxInside => s(
+            "the object's bounding box is inside the view volume (all eight corners have code 000000), so the renderer takes every vertex's code as 000000 without this test",
+            "kotak pembatas objek berada di dalam view volume (kedelapan sudutnya ber-region code 000000), sehingga renderer menganggap region code setiap titik 000000 tanpa uji ini",
+        ),
         PixelMsg::Outside => s(
             "outside a plane: this vertex gets no pixel of its own; the clipped polygon's vertices do",
             "di luar sebuah bidang: titik ini tidak mendapat piksel sendiri; titik-titik poligon hasil clipping yang mendapatkannya",
@@ -129,6 +133,7 @@ pub fn every() -> Vec<PixelMsg> {
         PixelMsg::SetUp,
         PixelMsg::FOutcode,
         PixelMsg::Composed,
+        PixelMsg::BoxInside,
         PixelMsg::Outside,
         PixelMsg::SameAsRaster(true),
         PixelMsg::SameAsRaster(false),
