@@ -558,7 +558,9 @@ fn corners_into(
     for k in 0..3 {
         let v = idx[k];
         let s = surface(p.obj, face, v as u32);
-        let (c, nrm, e) = flat.unwrap_or_else(|| {
+        let (c, nrm, e) = if let Some(f) = flat {
+            f
+        } else {
             let nrm =
                 p.v.vnormals
                     .get(v)
@@ -575,7 +577,7 @@ fn corners_into(
                 _ => [0.0; 3],
             };
             (c, nrm, e)
-        });
+        };
         out[slot[k]] = [
             c[0], c[1], c[2], nrm[0], nrm[1], nrm[2], e[0], e[1], e[2], s[0], s[1], s[2],
         ];

@@ -83,15 +83,10 @@ pub struct Snapped {
     pub bbox: [u32; 4],
 }
 
-/// Snaps a triangle for an image of `w` × `h` pixels and finds its pixel
-/// box: `None` exactly when [`setup`] returns `None` (zero area, or a box
-/// with no pixel centre in it or on the image).
-#[inline]
-pub fn snap_box(v: &[ScreenVert; 3], w: u32, h: u32) -> Option<Snapped> {
-    snap_box_of(v.map(|p| [snap(p.x), snap(p.y)]), w, h)
-}
-
-/// [`snap_box`] of vertices already snapped by [`snap`] (x, y each).
+/// A triangle's vertices snapped by [`snap`] (x, y each) for an image of
+/// `w` × `h` pixels, wound positively, with its pixel box: `None` exactly
+/// when [`setup`] returns `None` (zero area, or a box with no pixel centre
+/// in it or on the image).
 #[inline]
 pub fn snap_box_of(s: [[i64; 2]; 3], w: u32, h: u32) -> Option<Snapped> {
     let mut x = s.map(|p| p[0]);
@@ -137,29 +132,23 @@ impl Snapped {
 /// screen). `swap` reports whether vertices 1 and 2 were exchanged to make
 /// the winding positive (the caller swaps their attributes too).
 pub fn setup(v: [ScreenVert; 3], w: u32, h: u32) -> Option<(Tri, bool)> {
-    let s = snap_box(&v, w, h)?;
-    Some((setup_snapped(v, &s), s.swap))
+    setup_of(v.map(|p| (p, [snap(p.x), snap(p.y)])), w, h)
 }
 
 /// [`setup`] of vertices each given with its position snapped by
 /// [`snap`] (x, y).
 pub fn setup_of(v: [(ScreenVert, [i64; 2]); 3], w: u32, h: u32) -> Option<(Tri, bool)> {
     let s = snap_box_of(v.map(|p| p.1), w, h)?;
-    Some((setup_snapped(v.map(|p| p.0), &s), s.swap))
-}
-
-/// The second half of [`setup`]: edge functions and planes of a triangle
-/// that [`snap_box`] accepted (`v` as given to it, not yet swapped).
-pub fn setup_snapped(v: [ScreenVert; 3], s: &Snapped) -> Tri {
     let mut t = Tri::default();
-    setup_into(&v.map(|p| [p.z, p.inv_w]), s, &mut t);
-    t
+    setup_into(&v.map(|p| [p.0.z, p.0.inv_w]), &s, &mut t);
+    Some((t, s.swap))
 }
 
-/// [`setup_snapped`] written straight into `t` (every field but `obj` and
-/// `src`), so that the geometry stage sets up a triangle in its place in
-/// the frame's array without a copy, from the vertices' depth z/w and 1/w
-/// (`v`, as given to [`snap_box`], not yet swapped). Edge k runs from vertex k+1 to vertex
+/// The second half of [`setup`], written straight into `t` (every field
+/// but `obj` and `src`), so that the geometry stage sets up a triangle in
+/// its place in the frame's array without a copy: from a triangle that
+/// [`snap_box_of`] accepted and its vertices' depth z/w and 1/w (`v`, in
+/// the order given to it, not yet swapped). Edge k runs from vertex k+1 to vertex
 /// k+2: a_k = −dy, b_k = dx, c_k = dy·x_i − dx·y_i (less 1 off the
 /// top-left edges); the barycentric plane of vertex k over pixel indices
 /// from (x0, y0) is (E_k(x0, y0), 256·a_k, 256·b_k)/area in f64 (E_k
