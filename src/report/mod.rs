@@ -8,6 +8,7 @@ pub mod figure;
 pub mod gift;
 pub mod html;
 pub mod lang;
+pub mod latex;
 pub mod mathml;
 pub mod mistakes;
 pub mod moodle;

@@ -50,7 +50,7 @@ pub fn to_tikz(d: &Drawing) -> String {
 }
 
 fn text(s: &str) -> String {
-    crate::report::doc::latex_text(s)
+    crate::report::latex::latex_text(s)
 }
 
 fn mark(o: &mut String, it: &Item, l: &Laid) {
