@@ -127,6 +127,17 @@ fn clip_solid_part_ends_at_the_clipped_points() {
     assert_eq!(segments(&f, Pen::Frame).len(), 12, "a box has 12 edges");
     has_label(&f, "left: t = 1/3 ≈ 0.3333, outcode 000000");
     has_label(&f, "right: t = 2/3 ≈ 0.6667, outcode 000000");
+    // Beside each dot only its plane's name (short enough to sit off the
+    // box's edges); t and the outcode are in the notes above.
+    let beside: Vec<String> = f
+        .items
+        .iter()
+        .filter_map(|i| match i {
+            Item::Label { text, .. } => Some(text.clone()),
+            _ => None,
+        })
+        .collect();
+    assert!(beside.contains(&"left".to_string()) && beside.contains(&"right".to_string()));
 }
 
 /// A segment wholly outside is all cut off: no solid part.
@@ -294,20 +305,40 @@ fn camera_arrows_point_along_u_v_n_under_the_cabinet_projection() {
     assert_eq!(d[0].part, "view");
     let f = &d[0].panels[0];
     let pe = [4.0, 4.0, 4.0];
-    let tip = |v: [f64; 3]| cabinet([pe[0] + v[0], pe[1] + v[1], pe[2] + v[2]]);
+    // u, v, n are drawn 2 units long (twice Vup's unit length; the note
+    // says so), each in its own pen: u green solid, v purple dash-dot, n
+    // vermillion dashed.
+    let tip = |v: [f64; 3]| cabinet([pe[0] + 2.0 * v[0], pe[1] + 2.0 * v[1], pe[2] + 2.0 * v[2]]);
     let want = [
-        (cabinet(pe), tip([0.0, 0.0, -1.0])),
-        (cabinet(pe), tip([-0.6, 0.8, 0.0])),
-        (cabinet(pe), tip([0.8, 0.6, 0.0])),
+        (Pen::Vector, tip([0.0, 0.0, -1.0])),
+        (Pen::Other, tip([-0.6, 0.8, 0.0])),
+        (Pen::Cut, tip([0.8, 0.6, 0.0])),
     ];
-    let got = arrows(f, Pen::Vector);
-    assert_eq!(got.len(), 3);
-    for ((a, b), (wa, wb)) in got.iter().zip(want) {
+    let mut tips = vec![];
+    for (pen, wb) in want {
+        let got = arrows(f, pen);
+        assert_eq!(got.len(), 1, "{pen:?}");
+        let (a, b) = got[0];
         assert!(
-            near(*a, wa) && near(*b, wb),
-            "{a:?}–{b:?} is not {wa:?}–{wb:?}"
+            near(a, cabinet(pe)) && near(b, wb),
+            "{a:?}–{b:?} is not to {wb:?}"
         );
+        tips.push(b);
     }
+    // No two overlap: by hand the page directions are u → (k, k) with
+    // k = 1/(2√2) (45°), v → (−0.6, 0.8) (127°), n → (0.8, 0.6) (37°): u
+    // and n are 8° apart, so their tips, at 2·√2·k = 1 and 2 from Peye,
+    // lie 1 page unit apart, and no two pens are alike.
+    for i in 0..3 {
+        for j in 0..i {
+            let d = (tips[i][0] - tips[j][0]).hypot(tips[i][1] - tips[j][1]);
+            assert!(d > 0.9, "tips {i} and {j} are {d} apart");
+        }
+    }
+    has_label(
+        f,
+        "u green, v purple dash-dot, n vermillion dashed; length 2",
+    );
     // Vup at Pref, along (0, 1, 0).
     assert_eq!(
         arrows(f, Pen::Given),
@@ -343,7 +374,9 @@ fn camera_arrows_point_along_u_v_n_under_the_cabinet_projection() {
 fn basis_and_view_figures() {
     let cam = ["--eye", "4,4,4", "--look", "0,1,4", "--up", "0,1,0"];
     let b = only(&[&["basis"], &cam[..]].concat());
-    assert_eq!(arrows(&b, Pen::Vector).len(), 3);
+    for pen in [Pen::Vector, Pen::Other, Pen::Cut] {
+        assert_eq!(arrows(&b, pen).len(), 1, "u, v, n: one arrow each");
+    }
     assert!(dots(&b, Pen::Frame).is_empty(), "basis has no named points");
     let svg = svg_of(
         "view.svg",
@@ -390,21 +423,69 @@ fn project_projector_passes_through_the_point_and_its_image() {
     assert_eq!(proj.len(), 1);
     assert!(near(proj[0].0, cabinet([0.0; 3])) && near(proj[0].1, cabinet(a)));
     assert!(on_segment(cabinet(img), proj[0].0, proj[0].1));
-    assert!(dots(f3, Pen::Kept).iter().any(|p| near(*p, cabinet(img))));
+    // The plane (|d| = 0.1) is under an eighth of the scene (4.243): the
+    // image is drawn in the inset, the plane's front view enlarged m
+    // times, m = the largest 1, 2, 5·10^k ≤ 0.8·hi/|yp| with hi = 0.3·ext
+    // = 0.9·√2 (the inset's half size): 0.8·0.9√2/(√2/60) = 43.2 → 20.
+    has_label(
+        f3,
+        "inset: the view plane near the centre of projection, enlarged ×20",
+    );
+    let planes: Vec<Vec<[f64; 2]>> = f3
+        .items
+        .iter()
+        .filter_map(|i| match i {
+            Item::Polygon {
+                pts,
+                pen: Pen::Given,
+            } => Some(pts.clone()),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(planes.len(), 2, "the view plane and its inset");
+    let inset = &planes[1];
+    let hi = 0.3 * 3.0 * 2f64.sqrt();
+    assert!((inset[1][0] - inset[0][0] - 2.0 * hi).abs() < 1e-9);
+    let centre = [
+        (inset[0][0] + inset[2][0]) / 2.0,
+        (inset[0][1] + inset[2][1]) / 2.0,
+    ];
+    let zoomed = [centre[0], centre[1] + 20.0 * -(2f64.sqrt()) / 60.0];
+    assert_eq!(dots(f3, Pen::Kept).len(), 1, "the image only in the inset");
+    assert!(near(dots(f3, Pen::Kept)[0], zoomed));
+    has_label(f3, "A''");
     has_label(f3, "A = (0, −1, −3√2)");
     has_label(f3, "z = d = −0.1");
     // Side view (−z, y): the projector from (0, 0) to (3√2, −1) passes
     // through the image (0.1, −√2/60): similar triangles, yp/d = y/z.
     let s = segments(side, Pen::Tried);
-    assert_eq!(s.len(), 1);
+    assert_eq!(s.len(), 2, "the projector, and its start in the inset");
     assert!(near(s[0].0, [0.0, 0.0]) && near(s[0].1, [3.0 * 2f64.sqrt(), -1.0]));
     assert!(on_segment([0.1, -(2f64.sqrt()) / 60.0], s[0].0, s[0].1));
-    // The legs: y of the point (black) and yp of the image (blue).
+    // The legs: y of the point (black) in the side view, yp of the image
+    // (blue) in the inset under it, enlarged m times uniformly (so the
+    // small triangle keeps its shape): m = the largest 1, 2, 5·10^k ≤
+    // 0.9·(hi − lo)/(1.5·0.1) with lo = 0, hi = 3√2: 25.5 → 20.
     let (leg, small) = (segments(side, Pen::Frame), segments(side, Pen::Kept));
     let z = 3.0 * 2f64.sqrt();
-    assert!(leg.len() == 1 && near(leg[0].0, [z, 0.0]) && near(leg[0].1, [z, -1.0]));
+    assert!(leg
+        .iter()
+        .any(|l| near(l.0, [z, 0.0]) && near(l.1, [z, -1.0])));
     let yp = -(2f64.sqrt()) / 60.0;
-    assert!(small.len() == 1 && near(small[0].0, [0.1, 0.0]) && near(small[0].1, [0.1, yp]));
+    assert_eq!(small.len(), 1);
+    let (foot, img) = small[0];
+    // The leg is vertical, 20·|yp| long, on the inset's plane line, at
+    // 20·0.1 = 2 to the right of the inset's centre of projection.
+    assert!((foot[0] - img[0]).abs() < 1e-9 && (img[1] - foot[1] - 20.0 * yp).abs() < 1e-9);
+    let plane_line = segments(side, Pen::Given);
+    assert!(plane_line.iter().any(|(a, b)| on_segment(img, *a, *b)));
+    let cops = dots(side, Pen::Frame);
+    assert!(cops
+        .iter()
+        .any(|c| (foot[0] - c[0] - 2.0).abs() < 1e-9 && (foot[1] - c[1]).abs() < 1e-9));
+    has_label(side, "z = d = −0.1 (×20)");
+    // The inset's projector runs from its centre through the image.
+    assert!(on_segment(img, s[1].0, s[1].1));
     has_label(side, "A: y = −1, z = −3√2 ≈ −4.243");
     has_label(side, "A'': yp = −√2/60 ≈ −0.02357");
     has_label(side, "yp/d = y/z  ⇒  yp = d·y/z");
@@ -541,13 +622,23 @@ fn shade_vectors_and_angles() {
     let h = 2f64.sqrt() / 2.0 * 1.5;
     assert_eq!(n, vec![(o, cabinet([0.0, h, h]))]);
     assert_eq!(arrows(&f, Pen::Given), vec![(o, cabinet([0.0, 0.0, 1.5]))]);
-    assert_eq!(arrows(&f, Pen::Vector), vec![(o, cabinet([0.0, 0.0, 1.5]))]);
+    // V = L: both drawn, V beside L, moved 0.075 perpendicular on the page
+    // (L's page direction is (−k, −k)/(√2·k) with k = 1/(2√2), so the
+    // perpendicular is (1, −1)/√2).
+    let s = 0.075 / 2f64.sqrt();
+    let v = arrows(&f, Pen::Vector);
+    assert_eq!(v.len(), 1);
+    let l = cabinet([0.0, 0.0, 1.5]);
+    assert!(
+        near(v[0].0, [s, -s]) && near(v[0].1, [l[0] + s, l[1] - s]),
+        "{v:?}"
+    );
+    has_label(&f, "L = V = (0, 0, 1)");
+    has_label(&f, "L, V: coincide; drawn side by side");
     assert_eq!(arrows(&f, Pen::Other), vec![(o, cabinet([0.0, 1.5, 0.0]))]);
     assert!(arrows(&f, Pen::Tried).is_empty(), "no H for Phong");
     for want in [
         "N = (0, √2/2, √2/2)",
-        "L = (0, 0, 1)",
-        "V = (0, 0, 1)",
         "R = (0, 1, 0)",
         "α: cos α = √2/2 ≈ 0.7071 (α = 45°)",
         "β: cos β = 0 (β = 90°)",
@@ -569,14 +660,19 @@ fn shade_vectors_and_angles() {
     let s = r * 2f64.sqrt() / 2.0;
     assert!(near(*arcs[0].last().unwrap(), cabinet([0.0, s, s])));
     let blinn = only(&[&base[..], &["--model", "blinn"]].concat());
-    assert_eq!(
-        arrows(&blinn, Pen::Tried),
-        vec![(o, cabinet([0.0, 0.0, 1.5]))]
+    // H = L = V here too: the third of them, moved twice as far.
+    let h = arrows(&blinn, Pen::Tried);
+    assert!(
+        h.len() == 1 && near(h[0].0, [0.15 / 2f64.sqrt(), -0.15 / 2f64.sqrt()]),
+        "{h:?}"
     );
-    has_label(&blinn, "H = (0, 0, 1)");
+    has_label(&blinn, "L = V = H = (0, 0, 1)");
     let svg = svg_of("shade.svg", &[&base[..], &["--model", "blinn"]].concat());
     let texts = check_svg(&svg);
-    assert!(texts.iter().any(|t| t == "H = (0, 0, 1)"), "{texts:?}");
+    assert!(
+        texts.iter().any(|t| t == "L = V = H = (0, 0, 1)"),
+        "{texts:?}"
+    );
     same_marks_in_tikz(&drawn(&base)[0]);
 }
 
@@ -645,7 +741,9 @@ fn labels_of_the_worked_examples_do_not_overlap() {
 fn shade_with_two_lights_draws_each_l() {
     let d = drawn(&["solve", "problems/shade-two-lights.toml"]);
     let f = &d[0].panels[0];
-    has_label(f, "L = (0, 0, 1)");
+    // N, L and V coincide (all (0, 0, 1)): one label, three arrows.
+    has_label(f, "N = L = V = (0, 0, 1)");
+    has_label(f, "N, L, V: coincide; drawn side by side");
     has_label(f, "L2 = (0, 3/5, 4/5)");
     let given = arrows(f, Pen::Given);
     assert!(given

@@ -38,6 +38,12 @@ pub enum FigWord {
     NotToScale,
     /// The surface.
     Surface,
+    /// The legend of u, v, n (followed by the length they are drawn with).
+    CameraAxes,
+    /// The legend of the zoomed view plane (followed by the factor).
+    Zoomed,
+    /// Two vectors that coincide, drawn side by side.
+    Coincide,
 }
 
 /// A figure's message.

@@ -361,7 +361,9 @@ fn cut(a: [f64; 3], b: [f64; 3]) -> Item {
     }
 }
 
-/// One intersection tried: a dot and a label "plane: t = …, code".
+/// One intersection tried: a dot labelled with its plane (`right`), short
+/// enough to sit off the box's edges, and a note under the drawing
+/// "plane: t = …, outcode …".
 fn tried_marks(plane: &str, v: &Val, st: &Style) -> Vec<Item> {
     let Val::Map(fields) = v else { return vec![] };
     let (Some(point), Some(t), Some(code)) = (
@@ -378,13 +380,13 @@ fn tried_marks(plane: &str, v: &Val, st: &Style) -> Vec<Item> {
             at,
             pen: if kept { Pen::Kept } else { Pen::Tried },
         },
-        label(
-            at,
-            format!(
+        label(at, plane),
+        Item::Note {
+            text: format!(
                 "{plane}: t = {}, outcode {}",
                 short(st, t),
                 st.val_inline(code)
             ),
-        ),
+        },
     ]
 }

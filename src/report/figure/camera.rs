@@ -3,11 +3,12 @@
 //! camera axes u, v, n at Peye and the named points with their eye
 //! coordinates, all under the cabinet projection.
 
+use super::builders::say;
 use super::builders::{
     arrow3, axes3, input3, minus, page_dir, panel, result, vec_of, vec_val, Part,
 };
 use super::{cabinet, label_at, labelled, Figure, Item, Pen, Place};
-use crate::msg::Panel;
+use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
 use crate::stages::trace::Val;
 
@@ -20,6 +21,13 @@ pub fn arrow_length(extent: f64) -> f64 {
         extent / 8.0
     }
 }
+
+/// The pens of u, v, n: bluish green solid, reddish purple dash-dot,
+/// vermillion dashed (Okabe–Ito, one pattern each).
+pub const AXIS_PENS: [(&str, Pen); 3] = [("u", Pen::Vector), ("v", Pen::Other), ("n", Pen::Cut)];
+
+/// u, v, n are drawn this many times [`arrow_length`] (Vup once).
+pub const AXIS_SCALE: f64 = 2.0;
 
 /// The camera panel.
 pub fn figure(p: &Part, st: &Style) -> Option<Vec<Figure>> {
@@ -54,11 +62,19 @@ pub fn figure(p: &Part, st: &Style) -> Option<Vec<Figure>> {
     let norm = up.iter().map(|c| c * c).sum::<f64>().sqrt().max(1e-300);
     let text = format!("Vup = {}", st.val_inline(&vec_val(&up)));
     items.extend(arrow3(pr, up, len / norm, Pen::Given, text));
-    for key in ["u", "v", "n"] {
+    // u, v, n: each its own colour and pattern, twice the length (the
+    // note says so), so that two axes in nearly one page direction (u and
+    // n of the text's example) stay apart.
+    for (key, pen) in AXIS_PENS {
         let v = result(p.res, key)?;
         let text = labelled(st, key, v);
-        items.extend(arrow3(pe, vec_of(v)?, len, Pen::Vector, text));
+        items.extend(arrow3(pe, vec_of(v)?, AXIS_SCALE * len, pen, text));
     }
+    let n = st.val_inline(&super::builders::num_val(AXIS_SCALE * len));
+    let legend = say(st, FigureMsg::Word(FigWord::CameraAxes));
+    items.push(Item::Note {
+        text: format!("{legend} {n}"),
+    });
     points(p, st, &named, [pe, pr], &mut items);
     Some(vec![panel(st, Panel::Camera, items)])
 }

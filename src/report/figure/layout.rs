@@ -260,7 +260,8 @@ fn obstacles(f: &Figure, s: f64, tx: f64) -> Vec<Line> {
 /// Places one label: of its candidate places (its own side, the other
 /// sides, then each side moved by whole lines), the first of the least
 /// cost: leaving the page counts 100, overlapping another label 10,
-/// crossing a line 2, each line moved away 1.
+/// crossing a line 5 (so a label rather moves up to four lines away than
+/// sits across a box edge), each line moved away 1.
 fn place_label(
     at: (f64, f64),
     text: &str,
@@ -286,7 +287,7 @@ fn place_label(
         let on_lines = lines.iter().filter(|(a, c)| crosses(*a, *c, b)).count();
         let outside = usize::from(b.0 < 1.0 || b.1 > WIDTH - 1.0);
         let away = (shift / LINE).abs() as usize;
-        let cost = 100 * outside + 10 * on_labels + 2 * on_lines + away;
+        let cost = 100 * outside + 10 * on_labels + 5 * on_lines + away;
         if best.as_ref().is_none_or(|(c, ..)| cost < *c) {
             let text = text.to_string();
             best = Some((cost, Placed { x, y, anchor, text }, b));

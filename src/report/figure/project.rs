@@ -177,6 +177,80 @@ fn plane_half(pts: &[Projected], ext: f64) -> f64 {
     (1.4 * m).max(ext / 6.0)
 }
 
+/// A round enlargement for an inset: the largest 1, 2 or 5 × 10^k not
+/// above x (at least 1).
+pub fn round_factor(x: f64) -> f64 {
+    if !x.is_finite() || x <= 1.0 {
+        return 1.0;
+    }
+    let p = 10f64.powf(x.log10().floor());
+    [5.0, 2.0, 1.0]
+        .into_iter()
+        .map(|m| m * p)
+        .find(|m| *m <= x)
+        .unwrap_or(p)
+}
+
+/// The signed distance (along −z) from the centre of projection to the
+/// view plane when it is under an eighth of the scene (the images then
+/// crowd the centre and are drawn again, enlarged, in an inset); none for
+/// the orthographic projection or a plane far enough away.
+fn zoomed(k: Kind, pts: &[Projected], ext: f64) -> Option<f64> {
+    let c = k.cop()?;
+    let s = c[2] - k.plane();
+    (!pts.is_empty() && s != 0.0 && 8.0 * s.abs() < ext).then_some(s)
+}
+
+/// The largest |xp|, |yp| of the images (at least `floor`).
+fn image_reach(pts: &[Projected], floor: f64) -> f64 {
+    pts.iter()
+        .map(|q| q.img[0].abs().max(q.img[1].abs()))
+        .fold(floor, f64::max)
+}
+
+/// The inset of the 3D panel: the view plane seen from the front (xp to
+/// the right, yp up), enlarged m times, to the right of the drawing, with
+/// each image on it, joined to the plane by a dotted line.
+fn plane_inset(k: Kind, pts: &[Projected], ext: f64, st: &Style, items: &mut Vec<Item>) {
+    let b = Figure {
+        items: items.clone(),
+        ..Figure::default()
+    }
+    .bounds();
+    let hi = 0.3 * ext;
+    let m = round_factor(0.8 * hi / image_reach(pts, 1e-12));
+    let (cx, cy) = (b[2] + 1.5 * hi, 0.5 * (b[1] + b[3]));
+    let corners = [[-hi, -hi], [hi, -hi], [hi, hi], [-hi, hi]];
+    items.push(Item::Polygon {
+        pts: corners.iter().map(|c| [cx + c[0], cy + c[1]]).collect(),
+        pen: Pen::Given,
+    });
+    items.push(Item::Segment {
+        a: cabinet([plane_half(pts, ext), 0.0, k.plane()]),
+        b: [cx - hi, cy],
+        pen: Pen::Given,
+    });
+    for (a, b) in [([-hi, 0.0], [hi, 0.0]), ([0.0, -hi], [0.0, hi])] {
+        items.push(Item::Segment {
+            a: [cx + a[0], cy + a[1]],
+            b: [cx + b[0], cy + b[1]],
+            pen: Pen::Frame,
+        });
+    }
+    let times = st.val_inline(&num_val(m));
+    let text = format!("{} (×{times})", k.plane_label(st));
+    items.push(label_at([cx, cy + hi], text, Place::Above));
+    for q in pts {
+        let at = [cx + m * q.img[0], cy + m * q.img[1]];
+        items.push(Item::Dot { at, pen: Pen::Kept });
+        items.push(label_at(at, image_names(&q.name), Place::BelowRight));
+    }
+    let word = say(st, FigureMsg::Word(FigWord::Zoomed));
+    items.push(Item::Note {
+        text: format!("{word} ×{times}"),
+    });
+}
+
 /// The 3D panel.
 fn three_d(k: Kind, pts: &[Projected], st: &Style) -> Figure {
     let ext = extent(k, pts, 1.0);
@@ -223,10 +297,15 @@ fn three_d(k: Kind, pts: &[Projected], st: &Style) -> Figure {
             labelled(st, &q.name, &q.eye_val),
             Place::BelowRight,
         ));
-        items.push(Item::Dot {
-            at: cabinet(q.img),
-            pen: Pen::Kept,
-        });
+        if zoomed(k, pts, ext).is_none() {
+            items.push(Item::Dot {
+                at: cabinet(q.img),
+                pen: Pen::Kept,
+            });
+        }
+    }
+    if zoomed(k, pts, ext).is_some() {
+        plane_inset(k, pts, ext, st, &mut items);
     }
     super::builders::panel(st, Panel::Projection, items)
 }
@@ -286,21 +365,48 @@ fn side_view(k: Kind, pts: &[Projected], st: &Style) -> Figure {
             None => shared.push((q, vec![&q.name])),
         }
     }
-    for (q, names) in shared {
-        items.extend(triangle_marks(k, q, &names.join(", "), st));
+    let zoom = zoomed(k, pts, ext);
+    for (q, names) in &shared {
+        let mut marks = triangle_marks(k, q, &names.join(", "), st);
+        if zoom.is_some() {
+            // The image's leg, dot and label go to the inset.
+            marks.truncate(2);
+            marks.extend(point_marks(q, &names.join(", "), st));
+        } else {
+            marks.extend(point_marks(q, &names.join(", "), st));
+        }
+        items.extend(marks);
     }
     items.push(label([lo - m, 1.2 * h], k.relation()));
+    if let Some(s) = zoom {
+        let groups: Vec<(&Projected, String)> =
+            shared.iter().map(|(q, n)| (*q, n.join(", "))).collect();
+        let at = [lo - m, -1.2 * h - 0.25 * h];
+        side_inset(k, &groups, s, (at, 0.9 * (hi - lo)), st, &mut items);
+    }
     panel(st, Panel::ProjectionSide, items)
 }
 
-/// One point's marks in the side view: the projector, the legs y and yp,
-/// the dots and their labels.
+/// Above a point with y ≥ 0, below one under the axis.
+fn up(y: f64) -> Place {
+    if y >= 0.0 {
+        Place::Above
+    } else {
+        Place::Below
+    }
+}
+
+/// Component i of a value as a label writes it.
+fn val_at(st: &Style, v: &Val, i: usize) -> String {
+    comp(v, i).map(|c| short(st, c)).unwrap_or_default()
+}
+
+/// One point's projector and leg y in the side view, then its image's leg
+/// yp, dot and label `A'': yp = …` (beside the image).
 fn triangle_marks(k: Kind, q: &Projected, names: &str, st: &Style) -> Vec<Item> {
     let (a, b) = projector(k, q);
     let (pe, pi) = (side(q.eye), side(q.img));
-    let up = |y: f64| if y >= 0.0 { Place::Above } else { Place::Below };
-    let val = |v: &Val, i: usize| comp(v, i).map(|c| short(st, c)).unwrap_or_default();
-    vec![
+    let mut out = vec![
         Item::Segment {
             a: side(a),
             b: side(b),
@@ -311,34 +417,104 @@ fn triangle_marks(k: Kind, q: &Projected, names: &str, st: &Style) -> Vec<Item> 
             b: pe,
             pen: Pen::Frame,
         },
+    ];
+    out.extend(image_marks([pi, [pi[0], 0.0]], q, names, st));
+    out
+}
+
+/// An image in a side view at `at[0]`: the leg yp from its foot `at[1]`
+/// on the axis, the dot, the label.
+fn image_marks(at: [[f64; 2]; 2], q: &Projected, names: &str, st: &Style) -> [Item; 3] {
+    let pi = at[0];
+    let text = format!("{}: yp = {}", image_names(names), val_at(st, &q.img_val, 1));
+    [
         Item::Segment {
-            a: [pi[0], 0.0],
+            a: at[1],
             b: pi,
             pen: Pen::Kept,
-        },
-        Item::Dot {
-            at: pe,
-            pen: Pen::Frame,
         },
         Item::Dot {
             at: pi,
             pen: Pen::Kept,
         },
-        label_at(
-            pe,
-            format!(
-                "{names}: y = {}, z = {}",
-                val(&q.eye_val, 1),
-                val(&q.eye_val, 2)
-            ),
-            up(pe[1]),
-        ),
-        label_at(
-            pe,
-            format!("{}: yp = {}", image_names(names), val(&q.img_val, 1)),
-            up(pe[1]),
-        ),
+        label_at(pi, text, up(pi[1])),
     ]
+}
+
+/// A point in the side view: its dot and label `A': y = …, z = …`.
+fn point_marks(q: &Projected, names: &str, st: &Style) -> [Item; 2] {
+    let pe = side(q.eye);
+    let (y, z) = (val_at(st, &q.eye_val, 1), val_at(st, &q.eye_val, 2));
+    [
+        Item::Dot {
+            at: pe,
+            pen: Pen::Frame,
+        },
+        label_at(pe, format!("{names}: y = {y}, z = {z}"), up(pe[1])),
+    ]
+}
+
+/// The inset of the side view, under it with its left end at `at.0`: the
+/// part near the centre of projection, from the centre to 1.5 times the
+/// plane's distance `s`, enlarged m times (uniformly, so each small
+/// triangle keeps its shape: yp/d = y/z), about `at.1` wide. In it: the
+/// axis, the plane, the centre, each projector and each image with its
+/// leg yp and label.
+fn side_inset(
+    k: Kind,
+    groups: &[(&Projected, String)],
+    s: f64,
+    at: ([f64; 2], f64),
+    st: &Style,
+    items: &mut Vec<Item>,
+) {
+    let c = side(k.cop().unwrap_or_default());
+    let w = 1.5 * s;
+    let yr = 1.5
+        * groups
+            .iter()
+            .map(|(q, _)| q.img[1].abs())
+            .fold(0.1 * s.abs(), f64::max);
+    let m = round_factor(at.1 / w.abs());
+    // Page point of a side-view point (−z, y) in the inset.
+    let x0 = at.0[0] + (-w * m).max(0.0);
+    let y0 = at.0[1] - yr * m;
+    let f = |p: [f64; 2]| [x0 + (p[0] - c[0]) * m, y0 + p[1] * m];
+    let frame = [[c[0], -yr], [c[0] + w, -yr], [c[0] + w, yr], [c[0], yr]];
+    items.push(Item::Polygon {
+        pts: frame.iter().map(|p| f(*p)).collect(),
+        pen: Pen::Frame,
+    });
+    items.push(Item::Segment {
+        a: f(c),
+        b: f([c[0] + w, 0.0]),
+        pen: Pen::Frame,
+    });
+    let zv = -k.plane();
+    items.push(Item::Segment {
+        a: f([zv, -yr]),
+        b: f([zv, yr]),
+        pen: Pen::Given,
+    });
+    items.push(Item::Dot {
+        at: f(c),
+        pen: Pen::Frame,
+    });
+    let times = st.val_inline(&num_val(m));
+    let text = format!("{} (×{times})", k.plane_label(st));
+    items.push(label_at(f([c[0] + w, 0.0]), text, Place::Right));
+    for (q, names) in groups {
+        let pe = side(q.eye);
+        let t = w / (pe[0] - c[0]);
+        let end = [c[0] + t * (pe[0] - c[0]), c[1] + t * (pe[1] - c[1])];
+        items.push(Item::Segment {
+            a: f(c),
+            b: f(end),
+            pen: Pen::Tried,
+        });
+        let pi = side(q.img);
+        items.extend(image_marks([f(pi), f([pi[0], 0.0])], q, names, st));
+    }
 }
 
 /// The names of the images of named points: `A', B'` → `A'', B''`.

@@ -95,6 +95,64 @@ fn angle(a: [f64; 3], b: [f64; 3], name: &str, cos: Option<&Val>, st: &Style) ->
     ]
 }
 
+/// How far a vector that coincides with one drawn before is moved
+/// sideways on the page (page units; a twentieth of [`LENGTH`]).
+pub const BESIDE: f64 = 0.075;
+
+/// A vector `names[1]` along the unit direction `d` that coincides with
+/// `names[0]` drawn before (and with k − 1 others since): its arrow moved
+/// sideways by k·[`BESIDE`] (perpendicular on the page), the earlier
+/// label rewritten `L = V = (…)`, and a note saying they coincide.
+fn beside(items: &mut Vec<Item>, names: [&str; 2], d: [f64; 3], pen: Pen, st: &Style) {
+    let tip = cabinet([LENGTH * d[0], LENGTH * d[1], LENGTH * d[2]]);
+    let len = tip[0].hypot(tip[1]).max(1e-300);
+    let head = format!("{}, ", names[0]);
+    let k = 1 + items
+        .iter()
+        .filter_map(|it| match it {
+            Item::Note { text } if text.starts_with(&head) => Some(text.matches(", ").count()),
+            _ => None,
+        })
+        .sum::<usize>();
+    let s = k as f64 * BESIDE;
+    let off = [-tip[1] / len * s, tip[0] / len * s];
+    items.push(Item::Arrow {
+        a: off,
+        b: [tip[0] + off[0], tip[1] + off[1]],
+        pen,
+    });
+    let (eq, approx) = (format!("{} = ", names[0]), format!("{} ≈ ", names[0]));
+    let word = say(st, FigureMsg::Word(FigWord::Coincide));
+    let mut noted = false;
+    for it in items.iter_mut() {
+        match it {
+            // `N = L = (…)` → `N = L = V = (…)`: the name goes before the
+            // value (which starts at its bracket, after `= ` or `≈ `).
+            Item::Label { text, .. } if text.starts_with(&eq) || text.starts_with(&approx) => {
+                if let Some(at) = text.find('(') {
+                    let (names_part, value) = text.split_at(at);
+                    for sign in ["= ", "≈ "] {
+                        if let Some(before) = names_part.strip_suffix(sign) {
+                            *text = format!("{before}= {} {sign}{value}", names[1]);
+                            break;
+                        }
+                    }
+                }
+            }
+            Item::Note { text } if text.starts_with(&head) => {
+                *text = text.replacen(':', &format!(", {}:", names[1]), 1);
+                noted = true;
+            }
+            _ => {}
+        }
+    }
+    if !noted {
+        items.push(Item::Note {
+            text: format!("{}, {}: {word}", names[0], names[1]),
+        });
+    }
+}
+
 /// The lighting panel. With several lights, the first light's L is
 /// labelled L and the others L2, L3, …; R, H and the angles are drawn for
 /// one light only (the results name them for one light).
@@ -120,7 +178,11 @@ pub fn figure(p: &Part, st: &Style) -> Option<Figure> {
             continue;
         };
         let text = labelled(st, name, v?);
-        items.extend(arrow3([0.0; 3], unit(d), LENGTH, pen, text));
+        let same = drawn.iter().find(|(_, e)| unit(*e) == unit(d)).map(|x| x.0);
+        match same {
+            Some(first) => beside(&mut items, [first, name], unit(d), pen, st),
+            None => items.extend(arrow3([0.0; 3], unit(d), LENGTH, pen, text)),
+        }
         drawn.push((name, d));
     }
     // With several lights, each light's L after the first (L2, L3, …).

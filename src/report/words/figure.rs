@@ -79,8 +79,8 @@ fn title(p: Panel) -> (&'static str, &'static str) {
 fn desc(p: Panel) -> (&'static str, &'static str) {
     match p {
         Panel::Camera => (
-            "Cabinet oblique projection (x − z/(2√2), y − z/(2√2)). Black arrows: the world axes x, y, z. Blue dots: Peye and Pref, joined by the dotted line of sight. Sky-blue arrow: Vup, drawn at Pref. Green arrows: the camera axes u, v, n at Peye, all drawn with one length. Black dots: the named points, labelled with their eye coordinates.",
-            "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)). Panah hitam: sumbu dunia x, y, z. Titik biru: Peye dan Pref, dihubungkan garis pandang bertitik. Panah biru muda: Vup, digambar di Pref. Panah hijau: sumbu kamera u, v, n di Peye, semua sama panjang. Titik hitam: titik-titik bernama, diberi label koordinat kameranya.",
+            "Cabinet oblique projection (x − z/(2√2), y − z/(2√2)). Black arrows: the world axes x, y, z. Blue dots: Peye and Pref, joined by the dotted line of sight. Sky-blue arrow: Vup, drawn at Pref. The camera axes u, v, n at Peye: green solid, purple dash-dot and vermillion dashed arrows, drawn twice the length of Vup (the note under the drawing states the length). Black dots: the named points, labelled with their eye coordinates.",
+            "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)). Panah hitam: sumbu dunia x, y, z. Titik biru: Peye dan Pref, dihubungkan garis pandang bertitik. Panah biru muda: Vup, digambar di Pref. Sumbu kamera u, v, n di Peye: panah hijau tegas, ungu garis-titik dan merah jingga putus-putus, digambar dua kali panjang Vup (catatan di bawah gambar menyebut panjangnya). Titik hitam: titik-titik bernama, diberi label koordinat kameranya.",
         ),
         Panel::Projection => (
             "Cabinet oblique projection (x − z/(2√2), y − z/(2√2)) of eye coordinates. Sky-blue rectangle: the view plane. Dotted orange lines: the projectors from the centre of projection (parallel to z when orthographic) through each point (black dot) to its image (blue dot).",
@@ -130,5 +130,17 @@ fn word(w: FigWord) -> (&'static str, &'static str) {
             "bidang pandang jauh tidak sesuai skala",
         ),
         FigWord::Surface => ("surface", "permukaan"),
+        FigWord::CameraAxes => (
+            "u green, v purple dash-dot, n vermillion dashed; length",
+            "u hijau, v ungu garis-titik, n merah jingga putus-putus; panjang",
+        ),
+        FigWord::Zoomed => (
+            "inset: the view plane near the centre of projection, enlarged",
+            "sisipan: bidang proyeksi di dekat pusat proyeksi, diperbesar",
+        ),
+        FigWord::Coincide => (
+            "coincide; drawn side by side",
+            "berimpit; digambar berdampingan",
+        ),
     }
 }
