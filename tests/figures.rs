@@ -7,7 +7,7 @@ use assert_cmd::Command;
 use clap::Parser;
 use grafika::cli::args::Cli;
 use grafika::report::figure::{
-    builders::drawings, cabinet, svg::to_svg, tikz::to_tikz, Drawing, Figure, Item, Pen,
+    cabinet, drawings::drawings, svg::to_svg, tikz::to_tikz, Drawing, Figure, Item, Pen,
 };
 use grafika::report::lang::Lang;
 use grafika::report::Style;

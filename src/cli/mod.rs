@@ -160,7 +160,7 @@ fn man() -> Result<String> {
 /// (docs/spec.md §4). An existing file is never overwritten: when any of
 /// them exists, none is written.
 fn write_figure(cmd: &Command, report: &Report, style: &Style) -> Result<()> {
-    use crate::report::figure::{builders::drawings, svg::to_svg};
+    use crate::report::figure::{drawings::drawings, svg::to_svg};
     let path = match cmd {
         Command::Basis(c) | Command::View { camera: c, .. } => c.figure.as_ref(),
         Command::Project(a) => a.figure.as_ref(),
@@ -219,7 +219,7 @@ fn writes_a_report(c: &Command) -> bool {
 /// `--html FILE.html`: the worked solution as a new self-contained page
 /// (an existing file is never overwritten).
 fn write_html(cli: &Cli, report: &Report, style: &Style) -> Result<()> {
-    use crate::report::figure::{builders::drawings, svg::to_svg};
+    use crate::report::figure::{drawings::drawings, svg::to_svg};
     let Some(path) = &cli.common.html else {
         return Ok(());
     };

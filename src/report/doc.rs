@@ -226,7 +226,7 @@ impl Doc {
     /// (each with its title as the caption); Markdown has none (a key in
     /// Markdown is text only).
     pub fn figures(self, r: &Report, st: &Style) -> String {
-        use crate::report::figure::{builders::drawings, svg::to_svg, tikz::to_tikz};
+        use crate::report::figure::{drawings::drawings, svg::to_svg, tikz::to_tikz};
         let all = drawings(r, st);
         match self {
             Doc::Markdown => String::new(),

@@ -1,13 +1,12 @@
-//! Drawings built from a report: its input and the named results the
-//! worked steps show (so every label's value is a result's value). A
-//! calculator command gives one drawing; `solve` one per part of the
-//! problem (view, project, window, clip, shade).
+//! What every figure kind is built from: a report's input and the named
+//! results the worked steps show (so every label's value is a result's
+//! value), read by small helpers shared by the kinds; and the clip figure.
 
-use super::{cabinet, label, label_at, short, Drawing, Figure, Item, Pen, Place};
+use super::{cabinet, label, label_at, short, Figure, Item, Pen, Place};
 use crate::msg::{FigureMsg, Msg, Panel};
 use crate::report::Style;
-use crate::stages::trace::{Report, Step, Val};
-use serde_json::{json, Value};
+use crate::stages::trace::{Step, Val};
+use serde_json::Value;
 
 /// What one part's drawing is made from: the inputs (in the calculator's
 /// JSON layout), the named results and the steps.
@@ -18,163 +17,6 @@ pub(super) struct Part<'a> {
     pub res: &'a [(String, Val)],
     /// The worked steps (vectors that are not results: N, L, V).
     pub steps: &'a [Step],
-}
-
-/// The drawings of a report: one for a calculator command, one per part
-/// for `solve`, none for a command without figures.
-pub fn drawings(r: &Report, st: &Style) -> Vec<Drawing> {
-    let p = Part {
-        inp: &r.input,
-        res: &r.result,
-        steps: &r.steps,
-    };
-    let one = |part: &str, panels: Option<Vec<Figure>>| {
-        panels
-            .map(|panels| Drawing {
-                part: part.into(),
-                panels,
-            })
-            .into_iter()
-            .collect()
-    };
-    match r.command.as_str() {
-        "basis" | "view" => one("view", super::camera::figure(&p, st)),
-        "project" => one("project", super::project::figures(&p, st)),
-        "window" => one("window", super::window::figures(&p, st)),
-        "clip" => one("clip", clip_figure(&p, st).map(|f| vec![f])),
-        "shade" => one("shade", super::shade::figure(&p, st).map(|f| vec![f])),
-        "solve" => solve_drawings(r, st),
-        _ => vec![],
-    }
-}
-
-/// The drawings of `solve`, in the order of its parts.
-fn solve_drawings(r: &Report, st: &Style) -> Vec<Drawing> {
-    let mut out = Vec::new();
-    let mut add = |part: String, panels: Option<Vec<Figure>>| {
-        if let Some(panels) = panels {
-            out.push(Drawing { part, panels });
-        }
-    };
-    let inp = &r.input;
-    let steps = &r.steps[..];
-    if let Some(Val::Map(view)) = result(&r.result, "view") {
-        let mut i = inp.get("camera").cloned().unwrap_or(Value::Null);
-        i["points"] = inp.get("points").cloned().unwrap_or(Value::Null);
-        let p = Part {
-            inp: &i,
-            res: view,
-            steps,
-        };
-        add("view".into(), super::camera::figure(&p, st));
-    }
-    if let Some(Val::Map(proj)) = result(&r.result, "project") {
-        let i = json!({ "projection": { "d": plane_d(r) } });
-        let eyes = eye_points(r);
-        let mut res = proj.clone();
-        res.push(("eye".into(), Val::Map(eyes)));
-        let p = Part {
-            inp: &i,
-            res: &res,
-            steps,
-        };
-        add("project".into(), super::project::figures(&p, st));
-    }
-    if let Some(Val::Map(win)) = result(&r.result, "window") {
-        add("window".into(), solve_window(r, win, st));
-    }
-    match result(&r.result, "clip") {
-        Some(Val::Map(c)) => add("clip".into(), solve_clip(inp, 0, c, st)),
-        Some(Val::List(cs)) => {
-            for (k, c) in cs.iter().enumerate() {
-                if let Val::Map(c) = c {
-                    add(format!("clip-{}", k + 1), solve_clip(inp, k, c, st));
-                }
-            }
-        }
-        _ => {}
-    }
-    if let Some(Val::Map(sh)) = result(&r.result, "shade") {
-        let p = Part {
-            inp,
-            res: sh,
-            steps,
-        };
-        add(
-            "shade".into(),
-            super::shade::figure(&p, st).map(|f| vec![f]),
-        );
-    }
-    out
-}
-
-/// The window part of `solve`: the perspective inputs, the window results,
-/// the pixels of the viewport part and the projected points.
-fn solve_window(r: &Report, win: &[(String, Val)], st: &Style) -> Option<Vec<Figure>> {
-    let per = r.input.get("perspective")?;
-    let mut res = win.to_vec();
-    if let Some(Val::Map(vp)) = result(&r.result, "viewport") {
-        res.extend(vp.iter().cloned());
-    }
-    let mut i = per.clone();
-    if let Some(Val::Map(proj)) = result(&r.result, "project") {
-        if let Some(pts) = result(proj, "points") {
-            res.push(("window_points".into(), pts.clone()));
-        }
-    }
-    if result(&r.result, "viewport").is_none() {
-        i["viewport"] = Value::Null;
-    }
-    let p = Part {
-        inp: &i,
-        res: &res,
-        steps: &r.steps,
-    };
-    super::window::figures(&p, st)
-}
-
-/// Segment k of `solve`'s clip part, its ends resolved from named points.
-fn solve_clip(inp: &Value, k: usize, c: &[(String, Val)], st: &Style) -> Option<Vec<Figure>> {
-    let clip = inp.get("clip")?;
-    let seg = clip.get("segment")?.get(k)?;
-    let end = |key: &str| match seg.get(key)? {
-        Value::String(name) => inp.get("points")?.get(name).cloned(),
-        v => Some(v.clone()),
-    };
-    let i = json!({ "min": clip.get("min")?, "max": clip.get("max")?, "from": end("from")?, "to": end("to")? });
-    let p = Part {
-        inp: &i,
-        res: c,
-        steps: &[],
-    };
-    clip_figure(&p, st).map(|f| vec![f])
-}
-
-/// d of `solve`'s projection: the step that states it.
-fn plane_d(r: &Report) -> Value {
-    r.steps
-        .iter()
-        .flat_map(|s| &s.result)
-        .find(|(k, _)| k == "d")
-        .and_then(|(_, v)| match v {
-            Val::Num(s) => Some(json!(s.value)),
-            _ => None,
-        })
-        .unwrap_or(Value::Null)
-}
-
-/// The eye coordinates of `solve`'s points: the results of the steps
-/// `A' = …` (also when the view is not asked for).
-fn eye_points(r: &Report) -> Vec<(String, Val)> {
-    let mut out: Vec<(String, Val)> = Vec::new();
-    for (k, v) in r.steps.iter().flat_map(|s| &s.result) {
-        if let Some(name) = k.strip_suffix('\'') {
-            if !name.ends_with('\'') && vec_of(v).is_some() && !out.iter().any(|(n, _)| n == name) {
-                out.push((name.to_string(), v.clone()));
-            }
-        }
-    }
-    out
 }
 
 /// A result by key.
@@ -311,7 +153,7 @@ pub(super) fn box_edges(lo: [f64; 3], hi: [f64; 3], pen: Pen, items: &mut Vec<It
 /// The clip figure: the box, the segment P0P1, each intersection tried
 /// (a dot labelled with its plane, t and outcode), the kept part solid and
 /// the cut-off parts dashed. Points are drawn by the cabinet projection.
-fn clip_figure(p: &Part, st: &Style) -> Option<Figure> {
+pub(super) fn clip_figure(p: &Part, st: &Style) -> Option<Figure> {
     let (lo, hi) = (input3(p.inp, "min")?, input3(p.inp, "max")?);
     let (p0, p1) = (input3(p.inp, "from")?, input3(p.inp, "to")?);
     let mut items = Vec::new();

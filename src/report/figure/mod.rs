@@ -15,6 +15,7 @@
 
 pub mod builders;
 mod camera;
+pub mod drawings;
 pub mod layout;
 mod project;
 mod shade;
