@@ -787,3 +787,51 @@ fn every_subcommand_help_has_examples() {
         );
     }
 }
+
+/// Runs grafika in English (whatever the machine's locale), expects exit 2,
+/// returns its one line on stderr.
+fn english_error(args: &[&str]) -> String {
+    let out = grafika()
+        .args(args)
+        .env_remove("GRAFIKA_LANG")
+        .env_remove("LC_ALL")
+        .env_remove("LC_MESSAGES")
+        .env("LANG", "C")
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2), "{args:?}");
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    err
+}
+
+#[test]
+fn missing_required_arguments_are_named_in_english() {
+    // clap lists the missing arguments on the lines after its first: an
+    // earlier version printed "…were not provided: (see --help)".
+    let err = english_error(&["solve"]);
+    assert!(
+        err.contains("were not provided: <FILE> (see --help)"),
+        "{err}"
+    );
+    let err = english_error(&["basis", "--eye", "3,1,3"]);
+    assert!(
+        err.contains("were not provided: --look <X,Y,Z>, --up <X,Y,Z> (see --help)"),
+        "{err}"
+    );
+}
+
+#[test]
+fn an_invalid_choice_lists_the_possible_values_in_english() {
+    // as the Indonesian does: docs/spec.md's precisions and lighting models
+    let err = english_error(&["project", "--precision", "f16"]);
+    assert!(
+        err.contains("invalid value 'f16'") && err.contains("possible values: exact, f64, f32"),
+        "{err}"
+    );
+    let err = english_error(&["shade", "--model", "foo"]);
+    assert!(
+        err.contains("possible values: ambient, diffuse, specular, lambert, phong, blinn"),
+        "{err}"
+    );
+}
