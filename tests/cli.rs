@@ -835,3 +835,21 @@ fn an_invalid_choice_lists_the_possible_values_in_english() {
         "{err}"
     );
 }
+
+#[test]
+fn the_image_of_a_point_on_the_cop_plane_is_too_large_not_mangled() {
+    // d = −1, A = (1, 1, 1e-320): A'' = (d·x/z, d·y/z) = (−1e320, −1e320),
+    // beyond the largest double (≈ 1.8e308). An earlier version replaced
+    // every 'a' after the first word and printed "the imAge of A is too lArge".
+    let err = english_error(&[
+        "project",
+        "--d",
+        "-1",
+        "--point",
+        "A=1,1,1e-320",
+        "--precision",
+        "f64",
+    ]);
+    assert!(err.contains("the image of A is too large"), "{err}");
+    assert!(!err.contains("imAge") && !err.contains("lArge"), "{err}");
+}
