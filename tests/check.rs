@@ -488,3 +488,24 @@ fn a_one_figure_answer_is_not_explained_by_a_mistake() {
     assert_eq!(one["verdict"], "wrong", "{one}");
     assert!(codes(&one).is_empty(), "{one}");
 }
+
+#[test]
+fn the_specs_check_csv_header_has_the_follow_through_column() {
+    // docs/spec.md §5 lists the CSV's columns; they must be the ones printed.
+    let spec = std::fs::read_to_string(root().join("docs/spec.md")).unwrap();
+    let out = grafika()
+        .args([
+            "check",
+            "problems/text-triangle.toml",
+            "--answers",
+            "problems/answers/triangle/siti.toml",
+            "--csv",
+            "-",
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    let header = text.lines().next().unwrap();
+    assert!(header.contains(",follow_through,"), "{header}");
+    assert!(spec.contains(&format!("`{header}`")), "{header}");
+}
