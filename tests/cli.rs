@@ -853,3 +853,45 @@ fn the_image_of_a_point_on_the_cop_plane_is_too_large_not_mangled() {
     assert!(err.contains("the image of A is too large"), "{err}");
     assert!(!err.contains("imAge") && !err.contains("lArge"), "{err}");
 }
+
+#[test]
+fn several_clipped_segments_print_one_numbered_block_each_not_one_line() {
+    // problems/clip-cases.toml, box 0 ≤ x ≤ 3, 0 ≤ y ≤ 4, 0 ≤ z ≤ 3:
+    // segment 1, (1, 1, 1)–(2, 3, 2), is inside (codes 000000, accepted, no
+    // intersections); segment 2, (1, 5, 1)–(2, 6, 2), is above (y > 4: bit 4,
+    // 001000 at both ends, AND ≠ 0, rejected, no segment).
+    let out = grafika()
+        .args(["solve", "problems/clip-cases.toml", "--lang", "en"])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    let answer = &text[text.find("\nAnswer\n").unwrap()..];
+    for l in answer.lines() {
+        assert!(l.chars().count() < 200 || l.contains("printed"), "{l}");
+    }
+    assert!(
+        answer.contains(
+            "  clip[1]:\n    code0 = 000000\n    code1 = 000000\n    status = accepted\n"
+        ),
+        "{answer}"
+    );
+    assert!(answer.contains("    intersections = none\n  clip[2]:\n    code0 = 001000\n    code1 = 001000\n    status = rejected\n    segment = none\n"), "{answer}");
+    assert!(answer.contains("  clip[5]:\n"), "{answer}");
+    assert!(!answer.contains("intersections = ,"), "{answer}");
+    // the HTML page numbers them the same way, one row per value
+    let page = std::env::temp_dir().join(format!("grafika-clip-cases-{}.html", std::process::id()));
+    let _ = std::fs::remove_file(&page);
+    grafika()
+        .args(["solve", "problems/clip-cases.toml", "--html"])
+        .arg(&page)
+        .assert()
+        .success();
+    let html = std::fs::read_to_string(&page).unwrap();
+    let _ = std::fs::remove_file(&page);
+    assert!(html.contains("<th>clip[1].status</th>"), "{html}");
+    assert!(html.contains("<th>clip[5].code1</th>"), "{html}");
+    // and the JSON keeps its list of objects
+    let v = json_ok(&["solve", "problems/clip-cases.toml"]);
+    assert_eq!(v["result"]["clip"][1]["code0"], "001000");
+    assert_eq!(v["result"]["clip"][1]["status"], "rejected");
+}
