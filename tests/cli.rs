@@ -895,3 +895,34 @@ fn several_clipped_segments_print_one_numbered_block_each_not_one_line() {
     assert_eq!(v["result"]["clip"][1]["code0"], "001000");
     assert_eq!(v["result"]["clip"][1]["status"], "rejected");
 }
+
+#[test]
+fn explain_pixel_matrices_are_not_under_the_solve_viewing_heading() {
+    // `render --explain-pixel` records the projection matrix and each
+    // object's M, V·M, P·V·M in a section of their own; it stood under
+    // solve's "Step 2: viewing transformation (world → eye coordinates)"
+    // heading with no Step 1/3 sections around it.
+    let png = std::env::temp_dir().join(format!("grafika-cone-{}.png", std::process::id()));
+    for (lang, heading) in [
+        ("en", "== The view and projection matrices =="),
+        ("id", "== Matriks pandang dan matriks proyeksi =="),
+    ] {
+        let _ = std::fs::remove_file(&png);
+        let out = grafika()
+            .args(["render", "problems/render/cone-flat.toml", "-o"])
+            .arg(&png)
+            .args(["--explain-pixel", "330,150", "--lang", lang])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = String::from_utf8(out.stdout).unwrap();
+        assert!(text.contains(heading), "{text}");
+        assert!(!text.contains("world → eye coordinates) =="), "{text}");
+        assert!(!text.contains("dunia → kamera) =="), "{text}");
+    }
+    let _ = std::fs::remove_file(&png);
+}
