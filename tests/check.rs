@@ -398,6 +398,39 @@ fn check_csv_to_stdout_prints_only_the_csv_and_refuses_json() {
 }
 
 #[test]
+fn check_csv_to_stdout_with_one_answer_file_refuses_json() {
+    // docs/spec.md §5: `--csv -` writes only the CSV, so it cannot be
+    // combined with `--json`; an earlier version printed the CSV and exited 0
+    // when the answers were one file rather than a directory.
+    let e = json_err(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        "problems/answers/triangle/siti.toml",
+        "--csv",
+        "-",
+    ]);
+    assert_eq!(e["field"], "csv");
+    let out = grafika()
+        .args([
+            "check",
+            "problems/text-triangle.toml",
+            "--answers",
+            "problems/answers/triangle/siti.toml",
+            "--csv",
+            "-",
+            "--json",
+        ])
+        .output()
+        .unwrap();
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(!String::from_utf8(out.stdout)
+        .unwrap()
+        .contains("student,file"));
+}
+
+#[test]
 fn check_csv_with_one_answer_file_writes_its_row() {
     let out = grafika()
         .args([
@@ -454,4 +487,25 @@ fn a_one_figure_answer_is_not_explained_by_a_mistake() {
     let one = mark("-6");
     assert_eq!(one["verdict"], "wrong", "{one}");
     assert!(codes(&one).is_empty(), "{one}");
+}
+
+#[test]
+fn the_specs_check_csv_header_has_the_follow_through_column() {
+    // docs/spec.md §5 lists the CSV's columns; they must be the ones printed.
+    let spec = std::fs::read_to_string(root().join("docs/spec.md")).unwrap();
+    let out = grafika()
+        .args([
+            "check",
+            "problems/text-triangle.toml",
+            "--answers",
+            "problems/answers/triangle/siti.toml",
+            "--csv",
+            "-",
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    let header = text.lines().next().unwrap();
+    assert!(header.contains(",follow_through,"), "{header}");
+    assert!(spec.contains(&format!("`{header}`")), "{header}");
 }

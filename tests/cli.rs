@@ -787,3 +787,142 @@ fn every_subcommand_help_has_examples() {
         );
     }
 }
+
+/// Runs grafika in English (whatever the machine's locale), expects exit 2,
+/// returns its one line on stderr.
+fn english_error(args: &[&str]) -> String {
+    let out = grafika()
+        .args(args)
+        .env_remove("GRAFIKA_LANG")
+        .env_remove("LC_ALL")
+        .env_remove("LC_MESSAGES")
+        .env("LANG", "C")
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2), "{args:?}");
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    err
+}
+
+#[test]
+fn missing_required_arguments_are_named_in_english() {
+    // clap lists the missing arguments on the lines after its first: an
+    // earlier version printed "…were not provided: (see --help)".
+    let err = english_error(&["solve"]);
+    assert!(
+        err.contains("were not provided: <FILE> (see --help)"),
+        "{err}"
+    );
+    let err = english_error(&["basis", "--eye", "3,1,3"]);
+    assert!(
+        err.contains("were not provided: --look <X,Y,Z>, --up <X,Y,Z> (see --help)"),
+        "{err}"
+    );
+}
+
+#[test]
+fn an_invalid_choice_lists_the_possible_values_in_english() {
+    // as the Indonesian does: docs/spec.md's precisions and lighting models
+    let err = english_error(&["project", "--precision", "f16"]);
+    assert!(
+        err.contains("invalid value 'f16'") && err.contains("possible values: exact, f64, f32"),
+        "{err}"
+    );
+    let err = english_error(&["shade", "--model", "foo"]);
+    assert!(
+        err.contains("possible values: ambient, diffuse, specular, lambert, phong, blinn"),
+        "{err}"
+    );
+}
+
+#[test]
+fn the_image_of_a_point_on_the_cop_plane_is_too_large_not_mangled() {
+    // d = −1, A = (1, 1, 1e-320): A'' = (d·x/z, d·y/z) = (−1e320, −1e320),
+    // beyond the largest double (≈ 1.8e308). An earlier version replaced
+    // every 'a' after the first word and printed "the imAge of A is too lArge".
+    let err = english_error(&[
+        "project",
+        "--d",
+        "-1",
+        "--point",
+        "A=1,1,1e-320",
+        "--precision",
+        "f64",
+    ]);
+    assert!(err.contains("the image of A is too large"), "{err}");
+    assert!(!err.contains("imAge") && !err.contains("lArge"), "{err}");
+}
+
+#[test]
+fn several_clipped_segments_print_one_numbered_block_each_not_one_line() {
+    // problems/clip-cases.toml, box 0 ≤ x ≤ 3, 0 ≤ y ≤ 4, 0 ≤ z ≤ 3:
+    // segment 1, (1, 1, 1)–(2, 3, 2), is inside (codes 000000, accepted, no
+    // intersections); segment 2, (1, 5, 1)–(2, 6, 2), is above (y > 4: bit 4,
+    // 001000 at both ends, AND ≠ 0, rejected, no segment).
+    let out = grafika()
+        .args(["solve", "problems/clip-cases.toml", "--lang", "en"])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    let answer = &text[text.find("\nAnswer\n").unwrap()..];
+    for l in answer.lines() {
+        assert!(l.chars().count() < 200 || l.contains("printed"), "{l}");
+    }
+    assert!(
+        answer.contains(
+            "  clip[1]:\n    code0 = 000000\n    code1 = 000000\n    status = accepted\n"
+        ),
+        "{answer}"
+    );
+    assert!(answer.contains("    intersections = none\n  clip[2]:\n    code0 = 001000\n    code1 = 001000\n    status = rejected\n    segment = none\n"), "{answer}");
+    assert!(answer.contains("  clip[5]:\n"), "{answer}");
+    assert!(!answer.contains("intersections = ,"), "{answer}");
+    // the HTML page numbers them the same way, one row per value
+    let page = std::env::temp_dir().join(format!("grafika-clip-cases-{}.html", std::process::id()));
+    let _ = std::fs::remove_file(&page);
+    grafika()
+        .args(["solve", "problems/clip-cases.toml", "--html"])
+        .arg(&page)
+        .assert()
+        .success();
+    let html = std::fs::read_to_string(&page).unwrap();
+    let _ = std::fs::remove_file(&page);
+    assert!(html.contains("<th>clip[1].status</th>"), "{html}");
+    assert!(html.contains("<th>clip[5].code1</th>"), "{html}");
+    // and the JSON keeps its list of objects
+    let v = json_ok(&["solve", "problems/clip-cases.toml"]);
+    assert_eq!(v["result"]["clip"][1]["code0"], "001000");
+    assert_eq!(v["result"]["clip"][1]["status"], "rejected");
+}
+
+#[test]
+fn explain_pixel_matrices_are_not_under_the_solve_viewing_heading() {
+    // `render --explain-pixel` records the projection matrix and each
+    // object's M, V·M, P·V·M in a section of their own; it stood under
+    // solve's "Step 2: viewing transformation (world → eye coordinates)"
+    // heading with no Step 1/3 sections around it.
+    let png = std::env::temp_dir().join(format!("grafika-cone-{}.png", std::process::id()));
+    for (lang, heading) in [
+        ("en", "== The view and projection matrices =="),
+        ("id", "== Matriks pandang dan matriks proyeksi =="),
+    ] {
+        let _ = std::fs::remove_file(&png);
+        let out = grafika()
+            .args(["render", "problems/render/cone-flat.toml", "-o"])
+            .arg(&png)
+            .args(["--explain-pixel", "330,150", "--lang", lang])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = String::from_utf8(out.stdout).unwrap();
+        assert!(text.contains(heading), "{text}");
+        assert!(!text.contains("world → eye coordinates) =="), "{text}");
+        assert!(!text.contains("dunia → kamera) =="), "{text}");
+    }
+    let _ = std::fs::remove_file(&png);
+}

@@ -791,3 +791,40 @@ fn interactive_terminal_through_tmux() {
         );
     }
 }
+
+#[test]
+fn practice_says_the_likely_mistake_in_indonesian() {
+    // seed 3, basis, easy: Pe = (6, 1, 14), Pr = (1, 1, 2), so
+    // Pe − Pr = (5, 0, 12), |Pe − Pr| = √(25 + 144) = 13 and n = (5/13, 0, 12/13).
+    // Answering (5, 0, 12) is the catalog's n_not_normalized; under an
+    // Indonesian locale its description is said in Indonesian, both in the
+    // verdict and in the summary (an earlier version said it in English).
+    let out = grafika()
+        .args([
+            "practice",
+            "--topic",
+            "basis",
+            "--difficulty",
+            "easy",
+            "--seed",
+            "3",
+        ])
+        .env_remove("GRAFIKA_LANG")
+        .env_remove("LC_ALL")
+        .env_remove("LC_MESSAGES")
+        .env("LANG", "id_ID.UTF-8")
+        .write_stdin("5, 0, 12\n")
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("Peye = (6; 1; 14)"), "{text}");
+    assert!(text.contains("[n_not_normalized]"), "{text}");
+    assert!(!text.contains("not divided"), "{text}");
+    let unwrapped = text.split_whitespace().collect::<Vec<_>>().join(" ");
+    let said = "n = Pe − Pr tidak dibagi dengan |Pe − Pr|";
+    assert!(
+        unwrapped.contains(&format!("Kemungkinan kesalahan: {said}")),
+        "{text}"
+    );
+    assert!(unwrapped.contains(&format!("• {said}")), "{text}");
+}

@@ -19,6 +19,10 @@ use std::path::{Path, PathBuf};
 pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<(String, i32)> {
     valid_tolerance(a.tolerance)?;
     let stdin = Path::new("-");
+    // `--csv -` prints only the CSV: there is no room for the JSON.
+    if json && a.csv.as_deref() == Some(stdin) {
+        return Err(Error::why("csv", ErrMsg::CsvAndJson));
+    }
     if a.file == stdin && a.answers.as_deref() == Some(stdin) {
         return Err(Error::why("answers", ErrMsg::BothStdin));
     }
@@ -90,9 +94,6 @@ fn class(
     style: &Style,
 ) -> Result<(String, i32)> {
     let to_stdout = a.csv.as_deref() == Some(Path::new("-"));
-    if to_stdout && json {
-        return Err(Error::why("csv", ErrMsg::CsvAndJson));
-    }
     let (files, skipped) = answer_files(dir, style.lang)?;
     let rows: Vec<Row> = files
         .iter()

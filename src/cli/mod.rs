@@ -359,15 +359,28 @@ fn clap_error(e: clap::Error, wants_json: bool, lang: Option<Lang>) -> i32 {
     }
 }
 
-/// clap's several-line error as one line: its first line without the
-/// `error: ` prefix, then `(see --help)`.
+/// clap's several-line error as one line: its first paragraph (the
+/// missing arguments and the possible values are on the lines after the
+/// first) without the `error: ` prefix, then clap's tip, then `(see --help)`.
 fn clap_message(rendered: &str, kind: &str) -> String {
-    let first = rendered
+    let first: Vec<String> = rendered
         .lines()
         .map(str::trim)
-        .find(|l| !l.is_empty())
-        .map(|l| l.trim_start_matches("error:").trim().to_string())
-        .unwrap_or_else(|| kind.to_string());
+        .skip_while(|l| l.is_empty())
+        .take_while(|l| !l.is_empty() && !l.starts_with("Usage:"))
+        .map(|l| match l.strip_prefix("[possible values:") {
+            Some(rest) => format!("; possible values:{}", rest.trim_end_matches(']')),
+            None => l.trim_start_matches("error:").trim().to_string(),
+        })
+        .collect();
+    // the lines after a `…:` line are its items: `<FILE>, --look <X,Y,Z>`
+    let first = match first.split_first() {
+        None => kind.to_string(),
+        Some((head, rest)) if head.ends_with(':') && !rest.is_empty() => {
+            format!("{head} {}", rest.join(", "))
+        }
+        Some(_) => first.concat(),
+    };
     let tip = rendered
         .lines()
         .map(str::trim)

@@ -9,6 +9,8 @@ pub enum PixelMsg {
     SecVertex(usize),
     /// Section: clipping the triangle against the planes it crosses.
     SecClip,
+    /// Section: the view matrix V and the projection matrix P of the scene.
+    SecMatrices,
     /// Section: vertex k of the set-up triangle, clip space to pixels.
     SecScreen(usize),
     /// The matrices of an object: M, V·M and P·V·M.

@@ -29,7 +29,7 @@ pub fn explain_geometry(
 ) -> Result<PixelGeometry> {
     let t = &frame.tris[id as usize];
     let obj = &scene.objects[t.obj as usize];
-    rec.section(Msg::SecViewing);
+    rec.section(Msg::Pixel(PixelMsg::SecMatrices));
     let vs = super::view_setup_traced(scene, opt.width, opt.height, rec)?;
     let (mut st, mut bufs) = (Stats::default(), VertBufs::default());
     let Some(p) = geometry::prepare(obj, &vs, &scene.lights, opt, &mut st, &mut bufs) else {

@@ -203,6 +203,20 @@ impl Doc {
 
     /// A list of `name = value` lines.
     pub fn answers(self, st: &Style, items: &[(String, Val)]) -> String {
+        if self == Doc::Html {
+            return html::answers(st, items);
+        }
+        // a list of maps (the segments of a clip) as one line per value
+        let mut rows = Vec::new();
+        for (k, v) in items {
+            match v {
+                Val::List(maps) if crate::report::is_list_of_maps(maps) => {
+                    html::flatten("", &[(k.clone(), v.clone())], &mut rows)
+                }
+                _ => rows.push((k.clone(), v.clone())),
+            }
+        }
+        let items = &rows[..];
         match self {
             Doc::Html => html::answers(st, items),
             Doc::Markdown => {

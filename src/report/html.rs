@@ -140,8 +140,10 @@ pub fn answers(st: &Style, items: &[(String, Val)]) -> String {
     format!("<table class=\"answers\">\n{body}</table>\n")
 }
 
-/// `(key, value)` pairs with maps opened: `points` → `points.A`, …
-fn flatten(prefix: &str, items: &[(String, Val)], out: &mut Vec<(String, Val)>) {
+/// `(key, value)` pairs with maps opened: `points` → `points.A`, …, and
+/// lists of maps numbered: `clip` → `clip[1].status`, …; an empty map is
+/// left out.
+pub fn flatten(prefix: &str, items: &[(String, Val)], out: &mut Vec<(String, Val)>) {
     for (k, v) in items {
         let key = if prefix.is_empty() {
             k.clone()
@@ -150,6 +152,11 @@ fn flatten(prefix: &str, items: &[(String, Val)], out: &mut Vec<(String, Val)>) 
         };
         match v {
             Val::Map(kv) => flatten(&key, kv, out),
+            Val::List(maps) if crate::report::is_list_of_maps(maps) => {
+                for (i, m) in maps.iter().enumerate() {
+                    flatten("", &[(format!("{key}[{}]", i + 1), m.clone())], out);
+                }
+            }
             other => out.push((key, other.clone())),
         }
     }

@@ -376,9 +376,20 @@ fn compared_json(r: &Compared, lang: Lang) -> Value {
     })
 }
 
-/// Writes one answer, opening maps (e.g. points) into one line per entry.
+/// Writes one answer, opening maps (e.g. points) into one line per entry
+/// and a list of maps (the segments of a clip) into one numbered block per
+/// map, `clip[1]:`, `clip[2]:`, …; an empty map is `none`.
 fn push_answer(out: &mut String, style: &Style, indent: &str, k: &str, v: &Val) {
     match v {
+        Val::Map(kv) if kv.is_empty() => {
+            out.push_str(&style.named(indent, k, &Val::Null));
+            out.push('\n');
+        }
+        Val::List(items) if is_list_of_maps(items) => {
+            for (i, item) in items.iter().enumerate() {
+                push_answer(out, style, indent, &format!("{k}[{}]", i + 1), item);
+            }
+        }
         Val::Map(kv) => {
             out.push_str(&format!("{indent}{k}:\n"));
             for (k2, v2) in kv {
@@ -397,6 +408,12 @@ fn push_answer(out: &mut String, style: &Style, indent: &str, k: &str, v: &Val) 
             out.push('\n');
         }
     }
+}
+
+/// Whether a list holds maps only (and at least one): each is an answer of
+/// its own (one clipped segment), written as a numbered block.
+pub fn is_list_of_maps(items: &[Val]) -> bool {
+    !items.is_empty() && items.iter().all(|v| matches!(v, Val::Map(_)))
 }
 
 /// A value with plain numbers.

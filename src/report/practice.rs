@@ -3,6 +3,7 @@
 //! per event, JSON Lines, with the keys of `check`).
 
 use crate::report::lang::{tr, Lang};
+use crate::report::mistakes::mistake_text;
 use crate::report::{exact_json, step_json, value_json, Style};
 use crate::stages::trace::{Step, Val};
 use crate::tutor::practice::{Again, Event, Outcome, Plan, Summary};
@@ -257,7 +258,7 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
         let line = format!(
             "{}: {} [{}]",
             tr(lang, "Likely mistake", "Kemungkinan kesalahan"),
-            m.description,
+            mistake_text(m, lang),
             m.code
         );
         out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
@@ -326,7 +327,12 @@ fn summary_text(s: &Summary, look: &Look) -> String {
             tr(lang, "Mistakes made:", "Kesalahan yang dibuat:")
         ));
         for (m, keys) in &s.mistakes {
-            let line = format!("• {} [{}]: {}", m.description, m.code, keys.join(", "));
+            let line = format!(
+                "• {} [{}]: {}",
+                mistake_text(m, lang),
+                m.code,
+                keys.join(", ")
+            );
             out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
         }
     }
@@ -479,11 +485,11 @@ pub fn event_json(ev: &Event, lang: Lang) -> Value {
             "step": step.as_ref().map(|s| step_json(s, lang)),
         }),
         Event::Skip { key } => json!({ "event": "skip", "key": key }),
-        Event::Summary(s) => summary_json(s),
+        Event::Summary(s) => summary_json(s, lang),
     }
 }
 
-fn summary_json(s: &Summary) -> Value {
+fn summary_json(s: &Summary, lang: Lang) -> Value {
     json!({
         "event": "summary",
         "score": { "points": s.points, "total": s.total,
@@ -495,7 +501,7 @@ fn summary_json(s: &Summary) -> Value {
         },
         "hints": s.hints,
         "mistakes": s.mistakes.iter().map(|(m, keys)| json!({
-            "code": m.code, "mistake": m.description, "keys": keys,
+            "code": m.code, "mistake": mistake_text(m, lang), "keys": keys,
         })).collect::<Vec<_>>(),
         "next": { "topic": name(&s.next.0), "difficulty": name(&s.next.1) },
     })

@@ -33,6 +33,10 @@ fn pair(m: &PixelMsg) -> (String, String) {
             "Clipping the triangle against the view volume (Sutherland–Hodgman in clip space)",
             "Clipping segitiga terhadap view volume (Sutherland–Hodgman di ruang clip)",
         ),
+        PixelMsg::SecMatrices => s(
+            "The view and projection matrices",
+            "Matriks pandang dan matriks proyeksi",
+        ),
         PixelMsg::SecScreen(k) => f(
             format!("Vertex {k} of the set-up triangle: clip coordinates → pixel"),
             format!("Titik sudut {k} segitiga yang digambar: koordinat clip → piksel"),
@@ -119,6 +123,7 @@ pub fn every() -> Vec<PixelMsg> {
     let mut v = vec![
         PixelMsg::SecVertex(0),
         PixelMsg::SecClip,
+        PixelMsg::SecMatrices,
         PixelMsg::SecScreen(1),
         PixelMsg::Matrices(n()),
         PixelMsg::World(n()),
