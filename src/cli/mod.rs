@@ -228,7 +228,7 @@ fn write_html(cli: &Cli, report: &Report, style: &Style) -> Result<()> {
         .map(|d| (d.part.clone(), to_svg(d), d.title()))
         .collect();
     let title = page_title(report, style);
-    let page = crate::report::html::report_page(report, style, &title, &figures);
+    let page = crate::report::page::report_page(report, style, &title, &figures);
     create_new(path, page.as_bytes(), "html")
 }
 

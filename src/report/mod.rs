@@ -12,6 +12,7 @@ pub mod latex;
 pub mod mathml;
 pub mod mistakes;
 pub mod moodle;
+pub mod page;
 pub mod practice;
 pub mod render;
 pub mod sheets;
