@@ -59,8 +59,8 @@ pub fn frame_dots(up: [f64; 3], d: [f64; 3], p: [f64; 3]) -> [f64; 3] {
 pub fn frame_dots_fast(up: [f64; 3], d: [f64; 3], p: [f64; 3]) -> Option<[f64; 3]> {
     let mut t = Terms::default();
     // Sn = d·d
-    for i in 0..3 {
-        t.prod2(d[i], d[i]);
+    for x in d {
+        t.prod2(x, x);
     }
     let sn = t.sum()?;
     // Su = |up × d|², each component an exact 2×2 determinant expansion
@@ -70,8 +70,8 @@ pub fn frame_dots_fast(up: [f64; 3], d: [f64; 3], p: [f64; 3]) -> Option<[f64; 3
     }
     let s_u = t.sum()?;
     // Nn = d·P
-    for i in 0..3 {
-        t.prod2(d[i], p[i]);
+    for (x, y) in d.into_iter().zip(p) {
+        t.prod2(x, y);
     }
     let nn = t.sum()?;
     // Nu = (up × d)·P
