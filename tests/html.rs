@@ -7,8 +7,12 @@ mod common;
 use common::*;
 use std::path::PathBuf;
 
+/// A new file `name` in a folder of this test run; tests run in parallel,
+/// so each call gets a folder of its own (two tests may write the same name).
 fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("grafika-html-{}", std::process::id()));
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let k = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let d = std::env::temp_dir().join(format!("grafika-html-{}-{k}", std::process::id()));
     std::fs::create_dir_all(&d).unwrap();
     let f = d.join(name);
     let _ = std::fs::remove_file(&f);

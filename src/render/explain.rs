@@ -123,7 +123,7 @@ fn vertex_steps(p: &geometry::Prep, idx: [usize; 3], rec: &mut Recorder) -> [Vec
     rec.step(|| {
         Step::new(
             Msg::Pixel(PixelMsg::Matrices(obj.name.clone())),
-            "M (modeling),  V·M,  P·V·M = P·(V·M)  (at f32, as the renderer applies them)",
+            "M,  V·M,  P·V·M = P·(V·M)  (f32)",
         )
         .res("M", Val::mat4(&model))
         .res("V·M", Val::mat4(&p.x.e32))
@@ -167,7 +167,7 @@ fn set_up_step(sv: &[(ScreenVert, [i64; 2]); 3], same: bool, rec: &mut Recorder)
     rec.step(|| {
         let mut s = Step::new(
             Msg::Pixel(PixelMsg::SetUp),
-            "E_k(X, Y) = a_k·X + b_k·Y + c_k over the snapped vertices (X, Y in 1/256 pixel)",
+            "E_k(X, Y) = a_k·X + b_k·Y + c_k,  X = 256·x,  Y = 256·row",
         );
         for (k, (_, q)) in sv.iter().enumerate() {
             s = s.val(

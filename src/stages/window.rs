@@ -225,7 +225,7 @@ pub fn snap_pixel(p: (f32, f32), name: &str, tr: &mut impl Trace) -> [i64; 2] {
     tr.step(|| {
         Step::new(
             Msg::Pixel(PixelMsg::Snap(name.to_string())),
-            "X = round(256·x),  Y = round(256·row)  (halves away from 0)",
+            "X = round(256·x),  Y = round(256·row),  round(±(k + ½)) = ±(k + 1)",
         )
         .val("(x, row)", Val::vec2(&p.0, &p.1))
         .res("(X, Y)", Val::text(format!("({}, {})", s[0], s[1])))

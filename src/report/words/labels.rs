@@ -7,7 +7,7 @@
 use crate::report::lang::Lang;
 
 /// Names made of words, and their Indonesian.
-const NAMES: [(&str, &str); 14] = [
+const NAMES: [(&str, &str); 16] = [
     ("N (eye space)", "N (ruang kamera)"),
     ("P (eye space)", "P (ruang kamera)"),
     ("agree", "sama"),
@@ -17,7 +17,9 @@ const NAMES: [(&str, &str); 14] = [
     ("inside", "di dalam"),
     ("kept", "dipertahankan"),
     ("object", "objek"),
+    ("object's triangle", "segitiga pada objek"),
     ("polygon face", "bidang poligon"),
+    ("same as the rasterizer's", "sama dengan milik rasterizer"),
     ("surface colour", "warna permukaan"),
     ("triangle", "segitiga"),
     ("unclamped", "sebelum dibatasi"),
@@ -35,6 +37,9 @@ pub fn label(name: &str, lang: Lang) -> String {
     // `z' of A'`, `A pixel`, `screen vertex 0 (x, y)`, `bit 1 (kiri (left))`.
     if let Some((z, p)) = name.split_once(" of ") {
         return format!("{z} dari {p}");
+    }
+    if let Some(k) = name.strip_prefix("vertex ") {
+        return format!("verteks {k}");
     }
     if let Some(p) = name.strip_suffix(" pixel") {
         return format!("piksel {p}");
