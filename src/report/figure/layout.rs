@@ -7,7 +7,7 @@
 //! width. A label that would overlap one placed before it is moved by a
 //! line at a time, down or up, to the nearest free place.
 
-use super::{Figure, Item, Place};
+use super::{Figure, Item, Place, RING};
 
 /// The page width in px.
 pub const WIDTH: f64 = 600.0;
@@ -208,16 +208,6 @@ fn crosses(a: (f64, f64), b: (f64, f64), r: Bx) -> bool {
 /// The order in which a label tries the eight sides: its own, then the
 /// neighbours alternately.
 fn sides(first: Place) -> Vec<Place> {
-    const RING: [Place; 8] = [
-        Place::Right,
-        Place::AboveRight,
-        Place::Above,
-        Place::AboveLeft,
-        Place::Left,
-        Place::BelowLeft,
-        Place::Below,
-        Place::BelowRight,
-    ];
     let k = RING.iter().position(|p| *p == first).unwrap_or(1);
     let mut out = vec![first];
     for step in 1..=4usize {

@@ -158,6 +158,19 @@ pub enum Place {
     Right,
 }
 
+/// The eight sides of a point, counter-clockwise from the right (the
+/// directions 0°, 45°, …, 315° on the page).
+pub const RING: [Place; 8] = [
+    Place::Right,
+    Place::AboveRight,
+    Place::Above,
+    Place::AboveLeft,
+    Place::Left,
+    Place::BelowLeft,
+    Place::Below,
+    Place::BelowRight,
+];
+
 impl Place {
     /// The side a label goes on beyond the tip of an arrow pointing along
     /// `d` (page direction, y up): the eight compass sides.
@@ -167,16 +180,7 @@ impl Place {
         }
         let a = d[1].atan2(d[0]).to_degrees();
         let k = (((a + 360.0 + 22.5) % 360.0) / 45.0) as usize;
-        [
-            Place::Right,
-            Place::AboveRight,
-            Place::Above,
-            Place::AboveLeft,
-            Place::Left,
-            Place::BelowLeft,
-            Place::Below,
-            Place::BelowRight,
-        ][k.min(7)]
+        RING[k.min(7)]
     }
 }
 

@@ -127,15 +127,7 @@ fn frustum(p: &Part, st: &Style, near: f64, w: Win) -> Figure {
         };
         items.push(label_at(corner, text, Place::AboveLeft));
     }
-    items.push(Item::Dot {
-        at: [0.0, 0.0],
-        pen: Pen::Frame,
-    });
-    items.push(label_at(
-        [0.0, 0.0],
-        say(st, FigureMsg::Word(FigWord::Eye)),
-        Place::Left,
-    ));
+    eye_at_origin(st, &mut items);
     let top = format!("top = {}", shown(p, st, "top"));
     items.push(label_at(cabinet([0.0, w[3], -near]), top, Place::Above));
     let right = format!("right = {}", shown(p, st, "right"));
@@ -178,15 +170,7 @@ fn side_view(p: &Part, st: &Style, near: f64, fovy: f64, w: Win) -> Figure {
     });
     let fov = format!("fovy = {}°", st.val_inline(&num_val(fovy)));
     items.push(label_at([r, 0.0], fov, Place::AboveRight));
-    items.push(Item::Dot {
-        at: [0.0, 0.0],
-        pen: Pen::Frame,
-    });
-    items.push(label_at(
-        [0.0, 0.0],
-        say(st, FigureMsg::Word(FigWord::Eye)),
-        Place::Left,
-    ));
+    eye_at_origin(st, &mut items);
     let top = format!("top = near·tan(fovy/2) = {}", shown(p, st, "top"));
     items.push(label_at([near, w[3]], top, Place::AboveRight));
     let n = format!("near = {}", st.val_inline(&num_val(near)));
@@ -275,4 +259,14 @@ fn viewport(p: &Part, st: &Style) -> Option<Figure> {
         items.push(label(at, labelled(st, name, v)));
     }
     Some(panel(st, Panel::Viewport, items))
+}
+
+/// The eye: a dot at the origin of the panel, labelled on its left.
+fn eye_at_origin(st: &Style, items: &mut Vec<Item>) {
+    items.push(Item::Dot {
+        at: [0.0, 0.0],
+        pen: Pen::Frame,
+    });
+    let eye = say(st, FigureMsg::Word(FigWord::Eye));
+    items.push(label_at([0.0, 0.0], eye, Place::Left));
 }
