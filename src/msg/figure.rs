@@ -57,6 +57,4 @@ pub enum FigureMsg {
     Word(FigWord),
     /// The file asked for exists (never overwritten): its path.
     Exists(String),
-    /// The file could not be written: its path, the system's reason.
-    Unwritable(String, String),
 }

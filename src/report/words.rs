@@ -991,7 +991,6 @@ mod tests {
             .collect();
         v.extend(words.map(F::Word));
         v.push(F::Exists("a.svg".into()));
-        v.push(F::Unwritable("a.svg".into(), "denied".into()));
         v.into_iter().map(Msg::Figure).collect()
     }
 

@@ -27,10 +27,6 @@ pub fn figure(m: &FigureMsg, lang: Lang) -> String {
             &format!("{path} exists; remove it or choose another name"),
             &format!("{path} sudah ada; hapus atau pilih nama lain"),
         ),
-        FigureMsg::Unwritable(path, why) => pick(
-            &format!("cannot write {path}: {why}"),
-            &format!("tidak dapat menulis {path}: {why}"),
-        ),
     }
 }
 
