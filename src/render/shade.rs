@@ -4,19 +4,15 @@
 //! is explained, with the same bits either way.
 
 use crate::input::scene::Shading;
-use crate::num::lanes::Wide;
+use crate::num::lanes::Mask8;
 use crate::num::{F32x8, Fast32, Scalar};
 use crate::render::raster::{Tri, NONE};
 use crate::stages::lighting::{self, Light, LightKind, Material, Surface};
 use crate::stages::trace::{NoTrace, Trace};
+use multiversion::multiversion;
 use nalgebra::Vector3;
 
 use super::{Corner, Look};
-
-#[cfg(target_arch = "x86_64")]
-mod avx;
-#[cfg(target_arch = "x86_64")]
-mod avx512;
 
 /// One lighting evaluation through the calculator's `lighting::shade`, at
 /// [`Fast32`] (plain f32 arithmetic).
@@ -304,65 +300,27 @@ impl PhongIndex {
 /// Shades the rows of one band from its visibility buffer `id` (first row
 /// `r0`), writing 8-bit RGB into `out`: background where no triangle is
 /// visible; flat and Gouraud colours from the corners; Phong pixels lit
-/// eight (or sixteen) at a time. Returns (pixels shaded, lighting
+/// eight at a time at [`F32x8`]. Returns (pixels shaded, lighting
 /// evaluations).
 ///
-/// On a CPU with AVX2 the same code is compiled a second time for AVX2 with
-/// the lane type [`avx::Avx8`] (one 256-bit register per eight lanes
-/// instead of two SSE halves), and on one with AVX-512F a third time with
-/// [`avx512::Avx16`] (sixteen lanes in one 512-bit register); the copy is
-/// chosen at run time, and the results are the same bits.
+/// `multiversion` compiles the pass twice, for x86-64 with AVX2 and FMA
+/// (each `F32x8` operation one 256-bit instruction) and for the baseline
+/// (two SSE registers per `F32x8`), and runs the first copy the CPU has
+/// (decided at the first call). The copies give the same bits: the lane
+/// operations are IEEE-exact in any width, and Rust never fuses a multiply
+/// and an add into an FMA on its own.
+#[multiversion(targets("x86_64+avx2+fma"))]
 pub fn shade_band(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
-    // Sixteen lanes pay for Phong's per-pixel lighting; flat and Gouraud
-    // pixels (scalar code) run slower in the AVX-512 copy (Gouraud shading
-    // thread time on the reference sphere 12.7 against 9.6 ms), so a scene
-    // without Phong keeps the AVX2 one.
-    #[cfg(target_arch = "x86_64")]
-    if inp.looks.iter().any(|l| l.shading == Shading::Phong) && has_avx512() {
-        // SAFETY: the CPU has AVX-512F and AVX2 (checked just above), the
-        // features `shade_band_avx512` is compiled for.
-        return unsafe { shade_band_avx512(inp, r0, out, id) };
-    }
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has AVX2 (checked just above), the one feature
-        // `shade_band_avx2` is compiled for.
-        return unsafe { shade_band_avx2(inp, r0, out, id) };
-    }
-    shade_band_with::<F32x8>(inp, r0, out, id)
+    band(inp, r0, out, id)
 }
 
-/// [`shade_band_with`] at [`avx::Avx8`], compiled for AVX2: the one place
-/// `Avx8` is used (see that module on why this is sound).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn shade_band_avx2(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
-    shade_band_with::<avx::Avx8>(inp, r0, out, id)
-}
-
-/// Whether the CPU has AVX-512F and AVX2, what `shade_band_avx512` needs.
-#[cfg(target_arch = "x86_64")]
-fn has_avx512() -> bool {
-    std::arch::is_x86_feature_detected!("avx512f") && std::arch::is_x86_feature_detected!("avx2")
-}
-
-/// [`shade_band_with`] at [`avx512::Avx16`] (batches of sixteen pixels),
-/// compiled for AVX-512F and AVX2: the one place `Avx16` is used (see that
-/// module on why this is sound).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx2")]
-fn shade_band_avx512(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
-    shade_band_with::<avx512::Avx16>(inp, r0, out, id)
-}
-
-/// The body of [`shade_band`], with Phong's batches at the lane type `W`.
+/// The body of [`shade_band`], always inlined into each of its copies: the
+/// objects' materials and lights at [`F32x8`] (through f64: exact from
+/// f32), then row by row.
 #[inline(always)]
-fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
+fn band(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
     let w = inp.width;
-    let (mut count, mut evals) = (0u64, 0u64);
-    // Each object's material (recoloured per batch by Phong) and lights at
-    // W (through f64: exact from f32).
-    let mut objs: Vec<LitObj<W>> = inp
+    let mut objs: Vec<LitObj> = inp
         .looks
         .iter()
         .map(|l| LitObj {
@@ -373,48 +331,62 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
         .collect();
     // A row of background, copied over the runs no triangle covers.
     let bg_row: Vec<u8> = inp.bg.repeat(w);
+    let (mut count, mut evals) = (0, 0);
     for (r, (orow, irow)) in out
         .chunks_exact_mut(3 * w)
         .zip(id.chunks_exact(w))
         .enumerate()
     {
-        let j = r0 + r as u32;
-        let mut batch = Batch::<W>::default();
-        // Runs of pixels covered by the same triangle (or none).
-        let mut i = 0;
-        while i < w {
-            // Eight Phong pixels of one object side by side (inside a
-            // shaded surface, the usual case): lit straight from their
-            // triangles' planes, without following the runs, whose short
-            // and irregular lengths cost a mispredicted branch each.
-            let ids = irow
-                .get(i..i + 8)
-                .and_then(|s| <&[u32; 8]>::try_from(s).ok());
-            if let Some((ids, o)) = ids.and_then(|ids| Some((ids, inp.phong.one_object(ids)?))) {
-                // A batch of sixteen takes two such groups of one object.
-                if batch.len % 8 != 0 || (batch.len > 0 && batch.obj != o) {
-                    batch.flush(&mut objs[batch.obj], inp.ortho, orow);
-                }
-                batch.fill8(inp.planes, ids, i, j, !objs[o].one_colour);
-                batch.obj = o;
-                if batch.len == W::LANES {
-                    batch.flush(&mut objs[o], inp.ortho, orow);
-                }
-                (count, evals) = (count + 8, evals + 8);
-                i += 8;
-                continue;
-            }
-            let t = irow[i];
-            let end = i + run_length(&irow[i..], t);
-            if t == NONE {
-                orow[3 * i..3 * end].copy_from_slice(&bg_row[3 * i..3 * end]);
-                i = end;
-                continue;
-            }
-            count += (end - i) as u64;
-            let tri = &inp.tris[t as usize];
-            let obj = tri.obj as usize;
-            if inp.looks[obj].shading == Shading::Phong {
+        let (c, e) = shade_row(inp, &mut objs, &bg_row, r0 + r as u32, orow, irow);
+        (count, evals) = (count + c, evals + e);
+    }
+    (count, evals)
+}
+
+/// Row j of a band, pixel ids `irow`, into `orow`: runs of pixels covered
+/// by the same triangle (or none), and groups of eight Phong pixels of one
+/// object. Returns (pixels shaded, lighting evaluations).
+#[inline(always)]
+fn shade_row(
+    inp: &BandInput,
+    objs: &mut [LitObj],
+    bg_row: &[u8],
+    j: u32,
+    orow: &mut [u8],
+    irow: &[u32],
+) -> (u64, u64) {
+    let (mut count, mut evals) = (0u64, 0u64);
+    let mut batch = Batch::default();
+    let mut i = 0;
+    while i < inp.width {
+        // Eight Phong pixels of one object side by side (inside a shaded
+        // surface, the usual case): lit straight from their triangles'
+        // planes, without following the runs, whose short and irregular
+        // lengths cost a mispredicted branch each.
+        let ids = irow
+            .get(i..i + 8)
+            .and_then(|s| <&[u32; 8]>::try_from(s).ok());
+        if let Some((ids, o)) = ids.and_then(|ids| Some((ids, inp.phong.one_object(ids)?))) {
+            batch.flush(&mut objs[batch.obj], inp.ortho, orow);
+            batch.fill8(inp.planes, ids, i, j, !objs[o].one_colour);
+            batch.obj = o;
+            batch.flush(&mut objs[o], inp.ortho, orow);
+            (count, evals, i) = (count + 8, evals + 8, i + 8);
+            continue;
+        }
+        let t = irow[i];
+        let end = i + run_length(&irow[i..], t);
+        if t == NONE {
+            orow[3 * i..3 * end].copy_from_slice(&bg_row[3 * i..3 * end]);
+            i = end;
+            continue;
+        }
+        count += (end - i) as u64;
+        let tri = &inp.tris[t as usize];
+        let obj = tri.obj as usize;
+        let corners = &inp.corners[t as usize];
+        match inp.looks[obj].shading {
+            Shading::Phong => {
                 evals += (end - i) as u64;
                 if obj != batch.obj {
                     batch.flush(&mut objs[batch.obj], inp.ortho, orow);
@@ -424,25 +396,17 @@ fn shade_band_with<W: Wide>(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]
                 let mut k = i;
                 while k < end {
                     k += batch.fill(&row, k as u32, end - k);
-                    if batch.len == W::LANES {
+                    if batch.len == LANES {
                         batch.flush(&mut objs[obj], inp.ortho, orow);
                     }
                 }
-            } else {
-                let flat = inp.looks[obj].shading == Shading::Flat;
-                corner_run(
-                    tri,
-                    &inp.corners[t as usize],
-                    flat,
-                    i,
-                    j,
-                    &mut orow[3 * i..3 * end],
-                );
             }
-            i = end;
+            Shading::Flat => corner_run(tri, corners, true, i, j, &mut orow[3 * i..3 * end]),
+            Shading::Gouraud => corner_run(tri, corners, false, i, j, &mut orow[3 * i..3 * end]),
         }
-        batch.flush(&mut objs[batch.obj], inp.ortho, orow);
+        i = end;
     }
+    batch.flush(&mut objs[batch.obj], inp.ortho, orow);
     (count, evals)
 }
 
@@ -485,43 +449,31 @@ fn run_length(ids: &[u32], t: u32) -> usize {
 }
 
 /// An object's material (its colour replaced per batch by Phong, unless
-/// the object has one colour) and the lights that reach it, at the lane
-/// type `W`.
-struct LitObj<W: Scalar> {
-    mat: Material<W>,
-    lights: Vec<Light<W>>,
+/// the object has one colour) and the lights that reach it, at [`F32x8`].
+struct LitObj {
+    mat: Material<F32x8>,
+    lights: Vec<Light<F32x8>>,
     /// See [`Look::one_colour`].
     one_colour: bool,
 }
 
-/// Up to `W::LANES` (8 or 16) Phong pixels of one object in one row: their
-/// attribute planes' values q (row k for pixel k; lanes 7–9 are C/w, or
-/// the colour itself for a triangle with one colour) and columns.
-struct Batch<W: Wide> {
-    q: W::Rows,
+/// Pixels per batch: the lanes of [`F32x8`].
+const LANES: usize = 8;
+
+/// Up to eight Phong pixels of one object in one row: their attribute
+/// planes' values q (row k for pixel k; lanes 7–9 are C/w, or the colour
+/// itself for a triangle with one colour) and columns.
+#[derive(Default)]
+struct Batch {
+    q: [[f32; 12]; LANES],
     /// Bit k set when pixel k's colour is interpolated (q's C/w planes).
     interp: u32,
-    col: [u32; MAX_LANES],
+    col: [u32; LANES],
     len: usize,
     obj: usize,
 }
 
-/// The most lanes a [`Wide`] type has.
-const MAX_LANES: usize = 16;
-
-impl<W: Wide> Default for Batch<W> {
-    fn default() -> Self {
-        Batch {
-            q: W::Rows::default(),
-            interp: 0,
-            col: [0; MAX_LANES],
-            len: 0,
-            obj: 0,
-        }
-    }
-}
-
-impl<W: Wide> Batch<W> {
+impl Batch {
     /// Puts pixels i0, i0 + 1, … of a run of `n` pixels covered by one
     /// triangle, whose planes along the row are `row`, into the free lanes:
     /// q = r + cx·di as [`Planes::at`] computes it. Returns how many pixels
@@ -529,14 +481,14 @@ impl<W: Wide> Batch<W> {
     ///
     /// Pixel by pixel, all planes of a pixel at once: runs are short (three
     /// pixels on average in the reference scene), too short for work across
-    /// the eight lanes to pay; [`Wide::from_rows`] turns the rows into lanes.
+    /// the eight lanes to pay; [`F32x8::from_rows`] turns the rows into lanes.
     #[inline(always)]
     fn fill(&mut self, row: &Row, i0: u32, n: usize) -> usize {
-        let (base, m) = (self.len, n.min(W::LANES - self.len));
+        let (base, m) = (self.len, n.min(LANES - self.len));
         for k in 0..m {
             let i = i0 + k as u32;
             let di = i as f32 - row.x0;
-            let q = &mut self.q.as_mut()[base + k];
+            let q = &mut self.q[base + k];
             for ((q, r), cx) in q.iter_mut().zip(&row.r).zip(&row.cx) {
                 *q = r + cx * di;
             }
@@ -552,15 +504,14 @@ impl<W: Wide> Batch<W> {
         m
     }
 
-    /// Puts the eight pixels i, i + 1, … of row j, covered by the
-    /// triangles `ids`, whose planes are in `planes`, into the next eight
-    /// lanes (the batch holds a multiple of eight): q = (c0 + cy·dj) +
-    /// cx·di as [`Planes::at`] computes it, for the colour planes (lanes
-    /// 7–11) too when `colours` (lane 7 is filled anyway).
+    /// Fills the empty batch with the eight pixels i, i + 1, … of row j,
+    /// covered by the triangles `ids`, whose planes are in `planes`:
+    /// q = (c0 + cy·dj) + cx·di as [`Planes::at`] computes it, for the
+    /// colour planes (lanes 7–11) too when `colours` (lane 7 is filled
+    /// anyway).
     #[inline(always)]
     fn fill8(&mut self, planes: &[Planes], ids: &[u32; 8], i: usize, j: u32, colours: bool) {
-        let base = self.len;
-        let rows = &mut self.q.as_mut()[base..base + 8];
+        let rows = &mut self.q;
         // Columns and rows are at most 8192 (`scene::check_size`): exact
         // as f32, converted from u32 as in `Planes::at`.
         let (i, j) = (i as u32, j as f32);
@@ -579,27 +530,26 @@ impl<W: Wide> Batch<W> {
                 }
             }
         }
-        for (k, c) in self.col[base..base + 8].iter_mut().enumerate() {
+        for (k, c) in self.col.iter_mut().enumerate() {
             *c = i + k as u32;
         }
         // Which colours are interpolated matters only with the colour planes.
-        let interp = if colours {
+        self.interp = if colours {
             let interp = |k: usize| u32::from(!planes[ids[k] as usize].solid) << k;
             (0..8).fold(0, |m, k| m | interp(k))
         } else {
             0
         };
-        self.interp = (self.interp & !(0xff << base)) | (interp << base);
-        self.len = base + 8;
+        self.len = LANES;
     }
 
     /// Lights the pixels in the batch with one `lighting::shade` call at
-    /// the lane type `W` (the object's material, recoloured here unless it
+    /// [`F32x8`] (the object's material, recoloured here unless it
     /// has one colour, and its lights), writes their 8-bit RGB into the row
     /// `out` and empties the batch. Lanes past `len` hold earlier pixels'
     /// values: computed, not written.
     #[inline(always)]
-    fn flush(&mut self, o: &mut LitObj<W>, ortho: bool, out: &mut [u8]) {
+    fn flush(&mut self, o: &mut LitObj, ortho: bool, out: &mut [u8]) {
         if self.len == 0 {
             return;
         }
@@ -607,10 +557,10 @@ impl<W: Wide> Batch<W> {
             // Every pixel's colour is the object's, which the material
             // holds (the colour lanes would all be exactly it: c0 = C,
             // cx = cy = 0).
-            let (n, p, _) = attributes(&W::from_rows8(&self.q));
+            let (n, p, _) = attributes(&F32x8::from_rows::<8>(&self.q));
             (n, p)
         } else {
-            let q = W::from_rows(&self.q);
+            let q: [F32x8; 12] = F32x8::from_rows(&self.q);
             let (n, p, r) = attributes(&q);
             // The colour lanes: C/w·r where interpolated, C itself elsewhere.
             let rgb = [q[7], q[8], q[9]];
@@ -618,21 +568,17 @@ impl<W: Wide> Batch<W> {
                 rgb
             } else {
                 let c = colour(&q, &r);
-                let pick = |ch: usize| c[ch].select_bits(self.interp, rgb[ch]);
+                let m = Mask8::from_bits(self.interp);
+                let pick = |ch: usize| F32x8::select(m, c[ch], rgb[ch]);
                 [pick(0), pick(1), pick(2)]
             };
             (n, p)
         };
-        let [r, g, b] = lit(&o.mat, &o.lights, n, p, ortho, &mut NoTrace);
-        // `lit` clamps each channel to [0, 1] (never NaN), so byte()'s own
-        // clamp would change nothing: x·255 + 0.5 is what it gives.
-        let byte = |x: W| x * W::from_i64(255) + W::from_f64(0.5);
-        let px = W::rgb_bytes(byte(r), byte(g), byte(b));
-        let px = px.as_ref();
-        let (n, first, full) = (self.len, self.col[0] as usize, W::LANES);
+        let px = to_u8_lanes(lit(&o.mat, &o.lights, n, p, ortho, &mut NoTrace));
+        let (n, first, full) = (self.len, self.col[0] as usize, LANES);
         if n == full && self.col[full - 1] as usize == first + full - 1 {
             // A full batch side by side (the usual case): one copy.
-            out[3 * first..3 * (first + full)].copy_from_slice(px);
+            out[3 * first..3 * (first + full)].copy_from_slice(&px);
         } else {
             // Pixel by pixel (a copy of a length known only at run time
             // would be a call).
@@ -731,15 +677,29 @@ fn gouraud(t: &Tri, c: &[Corner; 3], i: u32, j: u32) -> [f32; 3] {
     [ch(0), ch(1), ch(2)]
 }
 
-/// A colour 0…1 as 8-bit: round(255·c), clamped.
+/// A colour 0…1 as 8-bit: [`byte`] of each channel, truncated.
 #[inline]
 pub fn to_u8(c: [f32; 3]) -> [u8; 3] {
     c.map(|x| byte(&Fast32(x)).0 as u8)
 }
 
-/// round(255·clamp(x, 0, 1)) as a number whose integer part is the byte:
-/// 0 ≤ 255·x + ½ ≤ 255.5 after the clamp (max(x, 0) is 0 for NaN), so
-/// truncation (`as u8`) gives the rounded value.
+/// Eight colours 0…1 (channel by channel, a pixel per lane) as 8-bit RGB
+/// in pixel order r0 g0 b0 r1 g1 b1 …: [`byte`] of each lane, truncated,
+/// as [`to_u8`] gives for each pixel.
+#[inline(always)]
+fn to_u8_lanes([r, g, b]: [F32x8; 3]) -> [u8; 24] {
+    let (r, g, b) = (
+        byte(&r).to_bytes(),
+        byte(&g).to_bytes(),
+        byte(&b).to_bytes(),
+    );
+    std::array::from_fn(|i| [r, g, b][i % 3][i / 3])
+}
+
+/// The 8-bit value of a colour channel, round(255·clamp(x, 0, 1)), as a
+/// number whose integer part is the byte: 0 ≤ 255·x + ½ ≤ 255.5 after
+/// the clamp (max(x, 0) is 0 for NaN), so truncation gives the rounded
+/// value. One pixel at [`Fast32`] or eight at [`F32x8`].
 #[inline(always)]
 fn byte<T: Scalar>(x: &T) -> T {
     x.max_of(&T::zero()).min_of(&T::one()) * T::from_i64(255) + T::from_f64(0.5)
@@ -823,14 +783,15 @@ mod tests {
         }
     }
 
-    /// The band pass at the baseline lane type (two SSE halves, or an
-    /// array), and at AVX2's on a CPU that has it, writes the same bytes as
-    /// the one `render` chose (AVX-512's sixteen lanes on a CPU that has
-    /// them, else AVX2's eight): on such machines these are the only runs
-    /// of the other band passes, and elsewhere a path is compared with
-    /// itself.
+    /// The band pass compiled for the baseline (its body, `band`, called
+    /// here without `multiversion`: two SSE registers per `F32x8` on
+    /// x86-64) writes the same bytes as the copy `render` chose for this
+    /// CPU (the AVX2 one where there is AVX2): on such machines this is the
+    /// only run of the baseline copy, and elsewhere a copy is compared with
+    /// itself. (tests/render.rs compares the frame with the one-pixel
+    /// `pixel_color` path.)
     #[test]
-    fn the_band_pass_gives_the_same_bytes_at_either_lane_type() {
+    fn the_band_pass_gives_the_same_bytes_in_either_copy() {
         let s = Scene::parse(MIXED, "mixed.toml", std::path::Path::new(".")).unwrap();
         let f = crate::render::render(&s, &crate::render::Options::of(&s)).unwrap();
         let inp = BandInput {
@@ -853,310 +814,141 @@ mod tests {
             .enumerate()
         {
             let mut got = vec![0u8; want.len()];
-            let (_, evals) = shade_band_with::<F32x8>(&inp, (b * rows) as u32, &mut got, id);
+            let (_, evals) = band(&inp, (b * rows) as u32, &mut got, id);
             phong += evals;
             assert_eq!(got, want, "band {b}");
-            #[cfg(target_arch = "x86_64")]
-            if std::arch::is_x86_feature_detected!("avx2") {
-                got.fill(0);
-                // SAFETY: the CPU has AVX2 (checked just above).
-                unsafe { shade_band_avx2(&inp, (b * rows) as u32, &mut got, id) };
-                assert_eq!(got, want, "band {b} at AVX2");
-            }
         }
         assert!(phong > 1500, "{phong}");
     }
 
-    /// The lighting at [`avx::Avx8`], and (on a CPU with AVX-512) at
-    /// [`avx512::Avx16`], equals the lighting at
-    /// [`F32x8`] lane for lane, to the bit (and F32x8 equals Fast32:
-    /// tests/lanes.rs), over random materials, lights and surfaces of every
-    /// model: 32 pixels, eight at a time at F32x8 and Avx8.
-    #[cfg(target_arch = "x86_64")]
+    /// The lighting of eight pixels at [`F32x8`], in a function compiled by
+    /// `multiversion` as the band pass is (AVX2 and FMA where the CPU has
+    /// them), equals the lighting of each pixel at [`Fast32`], to the bit,
+    /// over random materials, lights and surfaces of every model (tests/
+    /// lanes.rs does the same for the baseline build).
     #[test]
-    fn avx_lanes_light_exactly_as_sse_lanes() {
-        if !std::arch::is_x86_feature_detected!("avx2") {
-            return;
-        }
+    fn lanes_in_the_dispatched_copy_light_exactly_as_one_pixel() {
         let mut rng = SplitMix64::new(0x5eed);
         let mut u = move |lo: f32, hi: f32| {
             lo + (hi - lo) * (rng.next_u64() >> 40) as f32 / (1u64 << 24) as f32
         };
         for case in 0..400 {
-            let model = [Model::Phong, Model::Blinn, Model::Lambert, Model::Specular][case % 4];
-            let mut m = Material::<Fast32>::text_default([Fast32(0.0); 3]);
-            m.model = model;
-            (m.ka, m.kd, m.ks) = (
-                Fast32(u(0.0, 1.0)),
-                Fast32(u(0.0, 1.0)),
-                Fast32(u(0.0, 1.0)),
-            );
-            m.shininess = Fast32(if case % 3 == 0 {
-                u(0.5, 20.0)
-            } else {
-                (case % 40) as f32
-            });
-            m.specular_requires_lit = case % 2 == 0;
-            let mut lights = Vec::new();
-            for k in 0..1 + case % 3 {
-                let mut l = Light::<Fast32>::text_default();
-                let mut v = || [u(-4.0, 4.0), u(-4.0, 4.0), u(-4.0, 4.0)];
-                let (p, d) = (v(), v());
-                let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt().max(1e-3);
-                let (p, d) = (p.map(Fast32).into(), d.map(|x| Fast32(x / len)).into());
-                l.kind = match (case + k) % 3 {
-                    0 => LightKind::Directional { dir: d },
-                    1 => LightKind::Point { pos: p },
-                    _ => LightKind::Spot {
-                        pos: p,
-                        dir: d,
-                        theta: Fast32(u(5.0, 60.0)),
-                        phi: Fast32(u(60.0, 100.0)),
-                        falloff: Fast32(u(0.2, 3.0)),
-                    },
-                };
-                l.attenuation = [Fast32(1.0), Fast32(0.1), Fast32(0.02)];
-                l.range = (case % 5 == 0).then(|| Fast32(u(0.5, 6.0)));
-                lights.push(l);
-            }
+            let (m, lights) = random_setting(case, &mut u);
             let lane = |u: &mut dyn FnMut(f32, f32) -> f32, lo, hi| {
-                std::array::from_fn::<f32, 32, _>(|_| u(lo, hi))
+                std::array::from_fn::<f32, 8, _>(|_| u(lo, hi))
             };
             let n = [0; 3].map(|_| lane(&mut u, -1.0, 1.0));
-            let p = [0; 3]
-                .map(|_| lane(&mut u, -4.0, 4.0))
-                .map(|a| a.map(|x| x - 5.0));
+            let p = [0; 3].map(|_| lane(&mut u, -4.0, 4.0).map(|x| x - 5.0));
             let c = [0; 3].map(|_| lane(&mut u, 0.0, 1.0));
             let ortho = case % 7 == 0;
-            // Pixels k0 … k0 + LANES − 1 at the lane type W.
-            let at = |k0: usize| [&n, &p, &c].map(|v| v.each_ref().map(|ch| &ch[k0..]));
-            let mut want = [[0.0f32; 32]; 3];
-            for k0 in (0..32).step_by(8) {
-                let [n, p, c] = at(k0);
-                let sse = lit_lanes::<F32x8>(&m, &lights, n, p, c, ortho);
-                // SAFETY: the CPU has AVX2 (checked at the top).
-                let avx = unsafe { lit_avx(&m, &lights, n, p, c, ortho) };
+            let got = lit_lanes(&m, &lights, [n, p, c], ortho);
+            for k in 0..8 {
+                let one = |v: &[[f32; 8]; 3]| Vector3::new(v[0][k], v[1][k], v[2][k]);
+                let want = light_at(
+                    &m,
+                    &lights,
+                    one(&c).into(),
+                    one(&n),
+                    one(&p),
+                    ortho,
+                    &mut NoTrace,
+                );
                 for ch in 0..3 {
-                    want[ch][k0..k0 + 8].copy_from_slice(&sse[ch]);
-                    for k in 0..8 {
-                        assert_eq!(
-                            sse[ch][k].to_bits(),
-                            avx[ch][k].to_bits(),
-                            "case {case} channel {ch} lane {}",
-                            k0 + k
-                        );
-                    }
-                }
-            }
-            if !has_avx512() {
-                continue;
-            }
-            for k0 in [0, 16] {
-                let [n, p, c] = at(k0);
-                // SAFETY: the CPU has AVX-512F and AVX2 (checked above).
-                let got = unsafe { lit_avx512(&m, &lights, n, p, c, ortho) };
-                for ch in 0..3 {
-                    for (k, x) in got[ch].iter().enumerate() {
-                        assert_eq!(
-                            x.to_bits(),
-                            want[ch][k0 + k].to_bits(),
-                            "case {case} channel {ch} lane {} at Avx16",
-                            k0 + k
-                        );
-                    }
-                }
-            }
-        }
-    }
-
-    /// A batch's rows turn into the same lanes at Avx8 (by shuffles) as at
-    /// F32x8 (lane by lane): lane k of column a is row k's entry a.
-    #[cfg(target_arch = "x86_64")]
-    #[test]
-    fn avx_rows_become_the_same_lanes() {
-        if !std::arch::is_x86_feature_detected!("avx2") {
-            return;
-        }
-        let q: [[f32; 12]; 8] =
-            std::array::from_fn(|k| std::array::from_fn(|a| (100 * k + a) as f32));
-        // SAFETY: the CPU has AVX2 (checked at the top).
-        let avx = unsafe { rows_avx(&q) };
-        let sse = F32x8::from_rows(&q).map(F32x8::to_array);
-        for a in 0..12 {
-            let want: [f32; 8] = std::array::from_fn(|k| (100 * k + a) as f32);
-            assert_eq!(sse[a], want, "column {a}");
-            assert_eq!(avx[a], want, "column {a}");
-        }
-        if has_avx512() {
-            let q: [[f32; 12]; 16] =
-                std::array::from_fn(|k| std::array::from_fn(|a| (100 * k + a) as f32));
-            // SAFETY: the CPU has AVX-512F and AVX2 (checked just above).
-            let (all, first8) = unsafe { rows_avx512(&q) };
-            for a in 0..12 {
-                let want: [f32; 16] = std::array::from_fn(|k| (100 * k + a) as f32);
-                assert_eq!(all[a], want, "column {a} of sixteen rows");
-                if a < 8 {
-                    assert_eq!(first8[a], want, "column {a} of sixteen rows");
-                }
-            }
-        }
-    }
-
-    /// `Avx16::from_rows` and `Avx16::from_rows8`, compiled for AVX-512F
-    /// and AVX2.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx512f,avx2")]
-    fn rows_avx512(q: &[[f32; 12]; 16]) -> ([[f32; 16]; 12], [[f32; 16]; 8]) {
-        use avx512::Avx16;
-        (
-            Avx16::from_rows(q).map(Avx16::to_array),
-            Avx16::from_rows8(q).map(Avx16::to_array),
-        )
-    }
-
-    /// `Avx8::from_rows`, compiled for AVX2.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    fn rows_avx(q: &[[f32; 12]; 8]) -> [[f32; 8]; 12] {
-        avx::Avx8::from_rows(q).map(avx::Avx8::to_array)
-    }
-
-    /// Eight pixels' bytes come out in pixel order r0 g0 b0 r1 …, each the
-    /// `x as u8` of its lane, at both lane types: in range (the packed
-    /// path) and with lanes out of range or NaN (the lane-by-lane path).
-    #[test]
-    fn pixel_bytes_are_each_lane_cast_in_pixel_order() {
-        let mut rng = SplitMix64::new(11);
-        let mut u = move |lo: f32, hi: f32| {
-            lo + (hi - lo) * (rng.next_u64() >> 40) as f32 / (1u64 << 24) as f32
-        };
-        for case in 0..300 {
-            let mut ch: [[f32; 8]; 3] =
-                std::array::from_fn(|_| std::array::from_fn(|_| u(0.0, 255.999)));
-            if case % 3 == 1 {
-                // One lane of one channel out of range: −1, 256, 300, NaN, −0.5,
-                // in each channel in turn.
-                let bad = [-1.0, 256.0, 300.0, f32::NAN, -0.5][case % 5];
-                ch[case / 3 % 3][case % 8] = bad;
-            }
-            let want: [u8; 24] = std::array::from_fn(|i| ch[i % 3][i / 3] as u8);
-            let [r, g, b] = ch.map(F32x8::from_array);
-            assert_eq!(F32x8::rgb_bytes(r, g, b), want, "case {case}");
-            #[cfg(target_arch = "x86_64")]
-            if std::arch::is_x86_feature_detected!("avx2") {
-                // SAFETY: the CPU has AVX2 (checked just above).
-                assert_eq!(unsafe { bytes_avx(&ch) }, want, "case {case}");
-            }
-            #[cfg(target_arch = "x86_64")]
-            if has_avx512() {
-                // Sixteen lanes: these eight, then eight more in range.
-                let ch16: [[f32; 16]; 3] = std::array::from_fn(|c| {
-                    std::array::from_fn(|k| if k < 8 { ch[c][k] } else { u(0.0, 255.999) })
-                });
-                let want: [u8; 48] = std::array::from_fn(|i| ch16[i % 3][i / 3] as u8);
-                // SAFETY: the CPU has AVX-512F and AVX2 (checked just above).
-                assert_eq!(unsafe { bytes_avx512(&ch16) }, want, "case {case}");
-                // And the out-of-range lane among the second eight.
-                let swap = ch16.map(|c| std::array::from_fn(|k| c[(k + 8) % 16]));
-                let want: [u8; 48] = std::array::from_fn(|i| swap[i % 3][i / 3] as u8);
-                // SAFETY: as above.
-                assert_eq!(unsafe { bytes_avx512(&swap) }, want, "case {case}");
-            }
-        }
-    }
-
-    /// Each lane operation of [`avx512::Avx16`] gives, lane by lane, the bits
-    /// of the same operation at [`Fast32`] (plain f32), on the values where
-    /// rules differ: ±0, ±∞, NaN, subnormals, the largest f32.
-    #[cfg(target_arch = "x86_64")]
-    #[test]
-    fn avx512_lane_operations_are_the_scalar_ones() {
-        if !has_avx512() {
-            return;
-        }
-        let special = [
-            0.0,
-            -0.0,
-            1.0,
-            -1.5,
-            3.25,
-            f32::INFINITY,
-            f32::NEG_INFINITY,
-            f32::NAN,
-            1e-40,
-            -1e-40,
-            f32::MAX,
-            -7.0,
-        ];
-        let n = special.len();
-        for shift in 0..n {
-            let a: [f32; 16] = std::array::from_fn(|k| special[k % n]);
-            let b: [f32; 16] = std::array::from_fn(|k| special[(k + shift) % n]);
-            // SAFETY: the CPU has AVX-512F and AVX2 (checked at the top).
-            let got = unsafe { ops_avx512(a, b) };
-            for k in 0..16 {
-                let (x, y) = (Fast32(a[k]), Fast32(b[k]));
-                let want = [
-                    (x + y).0,
-                    (x - y).0,
-                    (x * y).0,
-                    (x / y).0,
-                    x.sqrt().0,
-                    (-x).0,
-                    x.abs().0,
-                    x.max_of(&y).0,
-                    x.min_of(&y).0,
-                    x.if_gt(&y, || x, || y * y).0,
-                ];
-                for (op, (g, w)) in got.iter().zip(want).enumerate() {
                     assert_eq!(
-                        g[k].to_bits(),
-                        w.to_bits(),
-                        "op {op} lane {k}: {} and {}",
-                        a[k],
-                        b[k]
+                        got[ch][k].to_bits(),
+                        want[ch].to_bits(),
+                        "case {case} channel {ch} lane {k}"
                     );
                 }
             }
         }
     }
 
-    /// The operations of [`avx512_lane_operations_are_the_scalar_ones`] at
-    /// `Avx16`, compiled for AVX-512F and AVX2.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx512f,avx2")]
-    fn ops_avx512(a: [f32; 16], b: [f32; 16]) -> [[f32; 16]; 10] {
-        use avx512::Avx16;
-        let (x, y) = (Avx16::from_array(a), Avx16::from_array(b));
-        [
-            x + y,
-            x - y,
-            x * y,
-            x / y,
-            x.sqrt(),
-            -x,
-            x.abs(),
-            x.max_of(&y),
-            x.min_of(&y),
-            x.if_gt(&y, || x, || y * y),
-        ]
-        .map(Avx16::to_array)
+    /// A material and 1–3 lights of every kind and model, from `u`.
+    fn random_setting(
+        case: usize,
+        u: &mut impl FnMut(f32, f32) -> f32,
+    ) -> (Material<Fast32>, Vec<Light<Fast32>>) {
+        let model = [Model::Phong, Model::Blinn, Model::Lambert, Model::Specular][case % 4];
+        let mut m = Material::<Fast32>::text_default([Fast32(0.0); 3]);
+        m.model = model;
+        (m.ka, m.kd, m.ks) = (
+            Fast32(u(0.0, 1.0)),
+            Fast32(u(0.0, 1.0)),
+            Fast32(u(0.0, 1.0)),
+        );
+        m.shininess = Fast32(if case % 3 == 0 {
+            u(0.5, 20.0)
+        } else {
+            (case % 40) as f32
+        });
+        m.specular_requires_lit = case % 2 == 0;
+        let mut lights = Vec::new();
+        for k in 0..1 + case % 3 {
+            let mut l = Light::<Fast32>::text_default();
+            let mut v = || [u(-4.0, 4.0), u(-4.0, 4.0), u(-4.0, 4.0)];
+            let (p, d) = (v(), v());
+            let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt().max(1e-3);
+            let (p, d) = (p.map(Fast32).into(), d.map(|x| Fast32(x / len)).into());
+            l.kind = match (case + k) % 3 {
+                0 => LightKind::Directional { dir: d },
+                1 => LightKind::Point { pos: p },
+                _ => LightKind::Spot {
+                    pos: p,
+                    dir: d,
+                    theta: Fast32(u(5.0, 60.0)),
+                    phi: Fast32(u(60.0, 100.0)),
+                    falloff: Fast32(u(0.2, 3.0)),
+                },
+            };
+            l.attenuation = [Fast32(1.0), Fast32(0.1), Fast32(0.02)];
+            l.range = (case % 5 == 0).then(|| Fast32(u(0.5, 6.0)));
+            lights.push(l);
+        }
+        (m, lights)
     }
 
-    /// `Avx16::rgb_bytes`, compiled for AVX-512F and AVX2.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx512f,avx2")]
-    fn bytes_avx512(ch: &[[f32; 16]; 3]) -> [u8; 48] {
-        let [r, g, b] = ch.map(avx512::Avx16::from_array);
-        avx512::Avx16::rgb_bytes(r, g, b)
+    /// `lit` at [`F32x8`] for eight pixels given as normals, positions and
+    /// colours (lane k of each), compiled as the band pass is.
+    #[multiversion(targets("x86_64+avx2+fma"))]
+    fn lit_lanes(
+        m: &Material<Fast32>,
+        lights: &[Light<Fast32>],
+        [n, p, c]: [[[f32; 8]; 3]; 3],
+        ortho: bool,
+    ) -> [[f32; 8]; 3] {
+        let mut mw: Material<F32x8> = material_as(m);
+        mw.color = c.map(F32x8::from_array);
+        let lw: Vec<Light<F32x8>> = lights.iter().map(light_as).collect();
+        let v = |a: [[f32; 8]; 3]| a.map(F32x8::from_array).into();
+        lit(&mw, &lw, v(n), v(p), ortho, &mut NoTrace).map(F32x8::to_array)
     }
 
-    /// `Avx8::rgb_bytes`, compiled for AVX2.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    fn bytes_avx(ch: &[[f32; 8]; 3]) -> [u8; 24] {
-        let [r, g, b] = ch.map(avx::Avx8::from_array);
-        avx::Avx8::rgb_bytes(r, g, b)
+    /// Eight pixels' bytes come out in pixel order r0 g0 b0 r1 …, each
+    /// what `to_u8` gives for its pixel, on colours in [0, 1], outside it,
+    /// at the rounding boundaries (k ± ½)/255 and NaN; and the lane cast
+    /// is `x as u8` on any f32.
+    #[test]
+    fn eight_pixels_bytes_are_the_one_pixel_bytes_in_pixel_order() {
+        let mut rng = SplitMix64::new(11);
+        let mut u = move |lo: f32, hi: f32| {
+            lo + (hi - lo) * (rng.next_u64() >> 40) as f32 / (1u64 << 24) as f32
+        };
+        for case in 0..300 {
+            let mut ch: [[f32; 8]; 3] =
+                std::array::from_fn(|_| std::array::from_fn(|_| u(0.0, 1.0)));
+            // One lane of one channel on a boundary or outside [0, 1].
+            let k = (case % 255) as f32;
+            let odd = [(k + 0.5) / 255.0, (k - 0.5) / 255.0, -0.25, 1.5, f32::NAN];
+            ch[case / 3 % 3][case % 8] = odd[case % 5];
+            let want: [u8; 24] =
+                std::array::from_fn(|i| to_u8([ch[0][i / 3], ch[1][i / 3], ch[2][i / 3]])[i % 3]);
+            assert_eq!(to_u8_lanes(ch.map(F32x8::from_array)), want, "case {case}");
+            // The cast alone, on values from far below 0 to far above 255.
+            let x: [f32; 8] = std::array::from_fn(|_| u(-300.0, 600.0));
+            let x = if case % 7 == 0 { [f32::NAN; 8] } else { x };
+            assert_eq!(F32x8::from_array(x).to_bytes(), x.map(|v| v as u8));
+        }
     }
 
     /// Eight pixels filled straight from their triangles' planes hold, to
@@ -1182,7 +974,7 @@ mod tests {
             let (i, j) = (3 * case as usize, 400 + case);
             // Without the colour planes, lanes 0–7 are filled and the rest
             // left as they were (NaN here); with them, all.
-            let mut b = Batch::<F32x8> {
+            let mut b = Batch {
                 q: [[f32::NAN; 12]; 8],
                 ..Batch::default()
             };
@@ -1228,60 +1020,5 @@ mod tests {
                 assert_eq!(b.interp, 0, "colours not interpolated without their planes");
             }
         }
-    }
-
-    /// `lit` at lane type W for eight pixels given as arrays.
-    #[inline(always)]
-    fn lit_lanes<W: Wide>(
-        m: &Material<Fast32>,
-        lights: &[Light<Fast32>],
-        n: [&[f32]; 3],
-        p: [&[f32]; 3],
-        c: [&[f32]; 3],
-        ortho: bool,
-    ) -> [W::Array; 3] {
-        let mut mw: Material<W> = material_as(m);
-        mw.color = c.map(wide);
-        let lw: Vec<Light<W>> = lights.iter().map(light_as).collect();
-        let v = |a: [&[f32]; 3]| Vector3::new(wide(a[0]), wide(a[1]), wide(a[2]));
-        let out = lit(&mw, &lw, v(n), v(p), ortho, &mut NoTrace);
-        out.map(W::to_array)
-    }
-
-    /// The lanes of `W` from the first `W::LANES` values of `x`.
-    fn wide<W: Wide>(x: &[f32]) -> W {
-        let mut a = W::Array::default();
-        a.as_mut().copy_from_slice(&x[..W::LANES]);
-        W::from_array(a)
-    }
-
-    /// [`lit_lanes`] at [`avx::Avx8`], compiled for AVX2 (used only after
-    /// the CPU was found to have it).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    fn lit_avx(
-        m: &Material<Fast32>,
-        lights: &[Light<Fast32>],
-        n: [&[f32]; 3],
-        p: [&[f32]; 3],
-        c: [&[f32]; 3],
-        ortho: bool,
-    ) -> [[f32; 8]; 3] {
-        lit_lanes::<avx::Avx8>(m, lights, n, p, c, ortho)
-    }
-
-    /// [`lit_lanes`] at [`avx512::Avx16`], compiled for AVX-512F and AVX2
-    /// (used only after the CPU was found to have them).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx512f,avx2")]
-    fn lit_avx512(
-        m: &Material<Fast32>,
-        lights: &[Light<Fast32>],
-        n: [&[f32]; 3],
-        p: [&[f32]; 3],
-        c: [&[f32]; 3],
-        ortho: bool,
-    ) -> [[f32; 16]; 3] {
-        lit_lanes::<avx512::Avx16>(m, lights, n, p, c, ortho)
     }
 }

@@ -322,6 +322,7 @@ fn highlight_step<T: Scalar>(mat: &Material<T>, highlight: &T, at: (usize, usize
 
 /// Direct3D's spot factor: ρ = (−L)·axis; 1 where ρ ≥ cos(θ/2), 0 where
 /// ρ ≤ cos(φ/2), else ((ρ − cos(φ/2)) / (cos(θ/2) − cos(φ/2)))^falloff.
+#[inline(always)]
 pub fn spot_factor<T: Scalar>(
     l: &V3<T>,
     axis: &V3<T>,
