@@ -877,12 +877,12 @@ mod tests {
             Fast32(u(0.0, 1.0)),
             Fast32(u(0.0, 1.0)),
         );
-        m.shininess = Fast32(if case % 3 == 0 {
+        m.shininess = Fast32(if case.is_multiple_of(3) {
             u(0.5, 20.0)
         } else {
             (case % 40) as f32
         });
-        m.specular_requires_lit = case % 2 == 0;
+        m.specular_requires_lit = case.is_multiple_of(2);
         let mut lights = Vec::new();
         for k in 0..1 + case % 3 {
             let mut l = Light::<Fast32>::text_default();
@@ -902,7 +902,7 @@ mod tests {
                 },
             };
             l.attenuation = [Fast32(1.0), Fast32(0.1), Fast32(0.02)];
-            l.range = (case % 5 == 0).then(|| Fast32(u(0.5, 6.0)));
+            l.range = (case.is_multiple_of(5)).then(|| Fast32(u(0.5, 6.0)));
             lights.push(l);
         }
         (m, lights)
