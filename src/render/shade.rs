@@ -384,7 +384,6 @@ fn shade_row(
         count += (end - i) as u64;
         let tri = &inp.tris[t as usize];
         let obj = tri.obj as usize;
-        let corners = &inp.corners[t as usize];
         match inp.looks[obj].shading {
             Shading::Phong => {
                 evals += (end - i) as u64;
@@ -401,8 +400,12 @@ fn shade_row(
                     }
                 }
             }
-            Shading::Flat => corner_run(tri, corners, true, i, j, &mut orow[3 * i..3 * end]),
-            Shading::Gouraud => corner_run(tri, corners, false, i, j, &mut orow[3 * i..3 * end]),
+            // Corners exist only in frames with flat or Gouraud objects.
+            flat => {
+                let c = &inp.corners[t as usize];
+                let span = &mut orow[3 * i..3 * end];
+                corner_run(tri, c, flat == Shading::Flat, i, j, span);
+            }
         }
         i = end;
     }
