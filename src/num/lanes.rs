@@ -164,19 +164,20 @@ impl F32x8 {
     }
     /// Each lane truncated to a byte, `x as u8` (toward zero, saturating;
     /// NaN gives 0), in lane operations only: c = min(max(x, 0), 255)
-    /// (max(x, 0) is 0 for NaN); r = (c + 2²³) − 2²³, c rounded to a whole
-    /// number (exact: the f32s from 2²³ to 2²⁴ are the whole numbers);
-    /// t = r − 1 where r > c, else r, that is ⌊c⌋ = trunc(c); and t is the
-    /// low byte of the bits of t + 2²³. (A cast per lane would be eight
+    /// (max(x, 0) is 0 for NaN); r = c + 2²³ is 2²³ + n for n = c rounded
+    /// to a whole number (exact: the f32s from 2²³ to 2²⁴ are the whole
+    /// numbers), so n is the low byte of r's bits; where r − 2²³ > c (c
+    /// was rounded up), trunc(c) = n − 1. (A cast per lane would be eight
     /// scalar conversions.)
     #[inline(always)]
     pub fn to_bytes(self) -> [u8; 8] {
-        let (one, m) = (F32x8::splat(1.0), F32x8::splat(8_388_608.0));
+        let m = F32x8::splat(8_388_608.0);
         let c = self.max_of(&F32x8::splat(0.0)).min_of(&F32x8::splat(255.0));
-        let r = (c + m) - m;
-        let t = F32x8::select(r.gt_lanes(c), r - one, r);
-        let bits = (t + m).to_array();
-        lanes!(k => (bits[k].to_bits() & 0xff) as u8)
+        let r = c + m;
+        // All bits set (−1) in the lanes rounded up.
+        let up = (r - m).gt_lanes(c).words();
+        let bits = r.to_array();
+        lanes!(k => (bits[k].to_bits().wrapping_add(up[k]) & 0xff) as u8)
     }
 }
 
