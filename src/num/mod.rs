@@ -268,7 +268,7 @@ pub trait Scalar:
     fn is_exact(&self) -> bool {
         true
     }
-    /// Whether the value is exactly zero.
+    /// Whether the value is exactly zero (in every lane, for a lane type).
     fn is_zero_value(&self) -> bool {
         *self == Self::zero()
     }
