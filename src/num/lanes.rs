@@ -167,17 +167,18 @@ impl F32x8 {
     /// (max(x, 0) is 0 for NaN); r = c + 2²³ is 2²³ + n for n = c rounded
     /// to a whole number (exact: the f32s from 2²³ to 2²⁴ are the whole
     /// numbers), so n is the low byte of r's bits; where r − 2²³ > c (c
-    /// was rounded up), trunc(c) = n − 1. (A cast per lane would be eight
-    /// scalar conversions.)
+    /// was rounded up), trunc(c) = n − 1. Each byte is held in a 32-bit
+    /// lane, so the caller packs pixels with lane operations too. (A cast
+    /// per lane would be eight scalar conversions.)
     #[inline(always)]
-    pub fn to_bytes(self) -> [u8; 8] {
+    pub fn to_bytes(self) -> [u32; 8] {
         let m = F32x8::splat(8_388_608.0);
         let c = self.max_of(&F32x8::splat(0.0)).min_of(&F32x8::splat(255.0));
         let r = c + m;
         // All bits set (−1) in the lanes rounded up.
         let up = (r - m).gt_lanes(c).words();
         let bits = r.to_array();
-        lanes!(k => (bits[k].to_bits().wrapping_add(up[k]) & 0xff) as u8)
+        lanes!(k => bits[k].to_bits().wrapping_add(up[k]) & 0xff)
     }
 }
 
@@ -310,13 +311,17 @@ impl Scalar for F32x8 {
             (m.words(), bytemuck::cast(a.0), bytemuck::cast(b.0));
         F32x8(bytemuck::cast(lanes!(k => (a[k] & m[k]) | (b[k] & !m[k]))))
     }
+    /// a > b ? a : b per lane (one vector max instruction where there is one).
     #[inline(always)]
     fn max_of(&self, o: &Self) -> Self {
-        Self::select(self.gt_lanes(*o), *self, *o)
+        let (a, b) = (self.to_array(), o.to_array());
+        F32x8::from_array(lanes!(k => if a[k] > b[k] { a[k] } else { b[k] }))
     }
+    /// a > b ? b : a per lane.
     #[inline(always)]
     fn min_of(&self, o: &Self) -> Self {
-        Self::select(self.gt_lanes(*o), *o, *self)
+        let (a, b) = (self.to_array(), o.to_array());
+        F32x8::from_array(lanes!(k => if a[k] > b[k] { b[k] } else { a[k] }))
     }
     /// xⁿ with the same products as `Fast32::powi`: the squarings for n's
     /// trailing zero bits, then repeated squaring.

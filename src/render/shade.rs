@@ -696,8 +696,24 @@ fn to_u8_lanes([r, g, b]: [F32x8; 3]) -> [u8; 24] {
         byte(&g).to_bytes(),
         byte(&b).to_bytes(),
     );
-    std::array::from_fn(|i| [r, g, b][i % 3][i / 3])
+    // Pixel k's bytes r, g, b, 0 as one little-endian word, then the
+    // three colour bytes of each word in turn.
+    let words: [u32; 8] = std::array::from_fn(|k| r[k] | g[k] << 8 | b[k] << 16);
+    let bytes: [u8; 32] = bytemuck::cast(words);
+    RGB_OF_WORDS.map(|i| bytes[i])
 }
+
+/// Where byte i of eight RGB pixels is in their eight words: pixel i / 3,
+/// channel i % 3.
+const RGB_OF_WORDS: [usize; 24] = {
+    let mut a = [0; 24];
+    let mut i = 0;
+    while i < 24 {
+        a[i] = i / 3 * 4 + i % 3;
+        i += 1;
+    }
+    a
+};
 
 /// The 8-bit value of a colour channel, round(255·clamp(x, 0, 1)), as a
 /// number whose integer part is the byte: 0 ≤ 255·x + ½ ≤ 255.5 after
@@ -950,7 +966,10 @@ mod tests {
             // The cast alone, on values from far below 0 to far above 255.
             let x: [f32; 8] = std::array::from_fn(|_| u(-300.0, 600.0));
             let x = if case % 7 == 0 { [f32::NAN; 8] } else { x };
-            assert_eq!(F32x8::from_array(x).to_bytes(), x.map(|v| v as u8));
+            assert_eq!(
+                F32x8::from_array(x).to_bytes(),
+                x.map(|v| u32::from(v as u8))
+            );
         }
     }
 
