@@ -360,20 +360,8 @@ impl Scalar for F32x8 {
         (*self == F32x8::splat(x) && k as f64 == f64::from(x)).then_some(k)
     }
     #[inline(always)]
-    fn dot3(a: [&Self; 3], b: [&Self; 3]) -> Self {
-        *a[0] * *b[0] + *a[1] * *b[1] + *a[2] * *b[2]
-    }
-    #[inline(always)]
     fn hypot3(a: &Self, b: &Self, c: &Self) -> Self {
         Self::dot3([a, b, c], [a, b, c]).sqrt()
-    }
-    #[inline(always)]
-    fn diff_of_products(a: &Self, b: &Self, c: &Self, d: &Self) -> Self {
-        *a * *b - *c * *d
-    }
-    #[inline(always)]
-    fn sum_of_products(a: &Self, b: &Self, c: &Self, d: &Self) -> Self {
-        *a * *b + *c * *d
     }
     /// a·(1/s), as `Fast32::div3`.
     #[inline(always)]

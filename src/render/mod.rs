@@ -260,7 +260,7 @@ fn view_of(scene: &Scene, w: u32, h: u32, tr: &mut impl Trace) -> Result<ViewSet
             Ok(ViewSetup {
                 eye_from_world: rot,
                 clip_from_eye: clip,
-                win: win32(&win),
+                win: win.map(|&x| x as f32),
                 ortho: true,
             })
         }
@@ -279,21 +279,10 @@ fn view_of(scene: &Scene, w: u32, h: u32, tr: &mut impl Trace) -> Result<ViewSet
             Ok(ViewSetup {
                 eye_from_world: v,
                 clip_from_eye: p,
-                win: win32(&win),
+                win: win.map(|&x| x as f32),
                 ortho: false,
             })
         }
-    }
-}
-
-fn win32(w: &Window<f64>) -> Window<f32> {
-    Window {
-        top: w.top as f32,
-        bottom: w.bottom as f32,
-        left: w.left as f32,
-        right: w.right as f32,
-        height: w.height as f32,
-        width: w.width as f32,
     }
 }
 

@@ -7,7 +7,7 @@ use crate::input::scene::Shading;
 use crate::num::lanes::Mask8;
 use crate::num::{F32x8, Fast32, Scalar};
 use crate::render::raster::{Tri, NONE};
-use crate::stages::lighting::{self, Light, LightKind, Material, Surface};
+use crate::stages::lighting::{self, Light, Material, Surface};
 use crate::stages::trace::{NoTrace, Trace};
 use multiversion::multiversion;
 use nalgebra::Vector3;
@@ -594,52 +594,14 @@ impl Batch {
     }
 }
 
-/// A material at another precision (through f64, exact from f32).
+/// A material at another precision ([`Material::cast`]).
 pub fn material_as<S: Scalar, T: Scalar>(m: &Material<S>) -> Material<T> {
-    let t = |x: &S| T::from_f64(x.to_f64());
-    Material {
-        model: m.model,
-        ka: t(&m.ka),
-        kd: t(&m.kd),
-        ks: t(&m.ks),
-        shininess: t(&m.shininess),
-        color: m.color.each_ref().map(t),
-        specular: m.specular.each_ref().map(t),
-        emissive: m.emissive.each_ref().map(t),
-        specular_on: m.specular_on,
-        specular_requires_lit: m.specular_requires_lit,
-        ambient_color: m.ambient_color.as_ref().map(|c| c.each_ref().map(t)),
-    }
+    m.cast()
 }
 
-/// A light at another precision (through f64, exact from f32).
+/// A light at another precision ([`Light::cast`]).
 pub fn light_as<S: Scalar, T: Scalar>(l: &Light<S>) -> Light<T> {
-    let t = |x: &S| T::from_f64(x.to_f64());
-    let v = |a: &Vector3<S>| Vector3::new(t(&a[0]), t(&a[1]), t(&a[2]));
-    Light {
-        kind: match &l.kind {
-            LightKind::Directional { dir } => LightKind::Directional { dir: v(dir) },
-            LightKind::Point { pos } => LightKind::Point { pos: v(pos) },
-            LightKind::Spot {
-                pos,
-                dir,
-                theta,
-                phi,
-                falloff,
-            } => LightKind::Spot {
-                pos: v(pos),
-                dir: v(dir),
-                theta: t(theta),
-                phi: t(phi),
-                falloff: t(falloff),
-            },
-        },
-        ambient: l.ambient.each_ref().map(t),
-        diffuse: l.diffuse.each_ref().map(t),
-        specular: l.specular.each_ref().map(t),
-        attenuation: l.attenuation.each_ref().map(t),
-        range: l.range.as_ref().map(t),
-    }
+    l.cast()
 }
 
 /// The colour of pixel (i, j) covered by triangle `t`: flat and Gouraud
@@ -705,15 +667,9 @@ fn to_u8_lanes([r, g, b]: [F32x8; 3]) -> [u8; 24] {
 
 /// Where byte i of eight RGB pixels is in their eight words: pixel i / 3,
 /// channel i % 3.
-const RGB_OF_WORDS: [usize; 24] = {
-    let mut a = [0; 24];
-    let mut i = 0;
-    while i < 24 {
-        a[i] = i / 3 * 4 + i % 3;
-        i += 1;
-    }
-    a
-};
+const RGB_OF_WORDS: [usize; 24] = [
+    0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, 16, 17, 18, 20, 21, 22, 24, 25, 26, 28, 29, 30,
+];
 
 /// The 8-bit value of a colour channel, round(255·clamp(x, 0, 1)), as a
 /// number whose integer part is the byte: 0 ≤ 255·x + ½ ≤ 255.5 after
@@ -729,7 +685,7 @@ mod tests {
     use super::*;
     use crate::input::scene::Scene;
     use crate::num::rng::SplitMix64;
-    use crate::stages::lighting::Model;
+    use crate::stages::lighting::{LightKind, Model};
 
     /// The camera scene whose Phong batches take every branch (shared with
     /// tests/render.rs).

@@ -23,6 +23,29 @@ pub struct Window<T> {
     pub width: T,
 }
 
+impl<T> Window<T> {
+    /// Each number through `f` (the same window at another precision).
+    pub fn map<U>(&self, f: impl Fn(&T) -> U) -> Window<U> {
+        let [top, bottom, left, right, height, width] = [
+            &self.top,
+            &self.bottom,
+            &self.left,
+            &self.right,
+            &self.height,
+            &self.width,
+        ]
+        .map(f);
+        Window {
+            top,
+            bottom,
+            left,
+            right,
+            height,
+            width,
+        }
+    }
+}
+
 /// Checks fovy (degrees) ∈ (0°, 180°), aspect > 0 and near > 0.
 pub fn validate<T: Scalar>(fovy_deg: &T, aspect: &T, near: &T) -> Result<()> {
     if !(*fovy_deg > T::zero() && *fovy_deg < T::from_i64(180)) {

@@ -21,6 +21,7 @@ fn plane(b: usize) -> (&'static str, &'static str) {
     (EN[b.min(5)], ID[b.min(5)])
 }
 
+/// The words of a section title or of a step of a vertex.
 fn pair(m: &PixelMsg) -> (String, String) {
     let f = |en: String, id: String| (en, id);
     let s = |en: &str, id: &str| (en.to_string(), id.to_string());
@@ -85,6 +86,20 @@ fn pair(m: &PixelMsg) -> (String, String) {
             format!("Snapping {n} to 1/256 pixel"),
             format!("Pembulatan {n} ke 1/256 piksel"),
         ),
+        PixelMsg::SetUp
+        | PixelMsg::FOutcode
+        | PixelMsg::Composed
+        | PixelMsg::BoxInside
+        | PixelMsg::Outside
+        | PixelMsg::SameAsRaster(_) => note(m),
+    }
+}
+
+/// The words of the set-up triangle's step and of the notes under steps
+/// (the messages [`pair`] hands on; the last arm is `SameAsRaster(false)`).
+fn note(m: &PixelMsg) -> (String, String) {
+    let s = |en: &str, id: &str| (en.to_string(), id.to_string());
+    match m {
         PixelMsg::SetUp => s(
             "The triangle set up for the rasterizer",
             "Segitiga yang disiapkan untuk rasterizer",
@@ -109,7 +124,7 @@ fn pair(m: &PixelMsg) -> (String, String) {
             "these are the vertices the rasterizer used for the pixel's triangle",
             "inilah titik-titik sudut yang dipakai rasterizer untuk segitiga piksel ini",
         ),
-        PixelMsg::SameAsRaster(false) => s(
+        _ => s(
             "these vertices differ from the rasterizer's (a bug: please report it)",
             "titik-titik ini berbeda dari milik rasterizer (sebuah bug: mohon laporkan)",
         ),

@@ -120,6 +120,24 @@ pub struct Material<T> {
 }
 
 impl<T: Scalar> Material<T> {
+    /// The material at another precision, each number through f64 (exact
+    /// from f32 and f64).
+    pub fn cast<U: Scalar>(&self) -> Material<U> {
+        let t = |x: &T| U::from_f64(x.to_f64());
+        Material {
+            model: self.model,
+            ka: t(&self.ka),
+            kd: t(&self.kd),
+            ks: t(&self.ks),
+            shininess: t(&self.shininess),
+            color: self.color.each_ref().map(t),
+            specular: self.specular.each_ref().map(t),
+            emissive: self.emissive.each_ref().map(t),
+            specular_on: self.specular_on,
+            specular_requires_lit: self.specular_requires_lit,
+            ambient_color: self.ambient_color.as_ref().map(|c| c.each_ref().map(t)),
+        }
+    }
     /// The text's material: Phong, ka = 0.4, kd = 0.6, ks = 0.7, n = 4,
     /// white specular, no emission.
     pub fn text_default(color: Rgb<T>) -> Self {
@@ -229,6 +247,36 @@ pub struct Light<T> {
 }
 
 impl<T: Scalar> Light<T> {
+    /// The light at another precision, each number through f64 (exact from
+    /// f32 and f64).
+    pub fn cast<U: Scalar>(&self) -> Light<U> {
+        let t = |x: &T| U::from_f64(x.to_f64());
+        let v = |a: &V3<T>| v3(t(&a[0]), t(&a[1]), t(&a[2]));
+        Light {
+            kind: match &self.kind {
+                LightKind::Directional { dir } => LightKind::Directional { dir: v(dir) },
+                LightKind::Point { pos } => LightKind::Point { pos: v(pos) },
+                LightKind::Spot {
+                    pos,
+                    dir,
+                    theta,
+                    phi,
+                    falloff,
+                } => LightKind::Spot {
+                    pos: v(pos),
+                    dir: v(dir),
+                    theta: t(theta),
+                    phi: t(phi),
+                    falloff: t(falloff),
+                },
+            },
+            ambient: self.ambient.each_ref().map(t),
+            diffuse: self.diffuse.each_ref().map(t),
+            specular: self.specular.each_ref().map(t),
+            attenuation: self.attenuation.each_ref().map(t),
+            range: self.range.as_ref().map(t),
+        }
+    }
     /// The text's light: white, directional, along (0, 0, 1).
     pub fn text_default() -> Self {
         Light::directional(v3(T::zero(), T::zero(), T::one()))
