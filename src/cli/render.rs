@@ -5,7 +5,7 @@
 use crate::cli::args::RenderArgs;
 use crate::error::{Error, Result};
 use crate::input::scene::{Scene, Shading};
-use crate::msg::Msg;
+use crate::msg::{ErrMsg, IoWhy, Msg};
 use crate::render::raster::Tri;
 use crate::render::{self, Corner, Frame, Options, Stats};
 use crate::report::lang::{tr, Lang};
@@ -26,7 +26,7 @@ pub fn run(a: &RenderArgs, lang: Lang) -> Result<Report> {
         if x >= opt.width || y >= opt.height {
             return Err(Error::why(
                 "--explain-pixel",
-                crate::msg::ErrMsg::PixelOutside(x, y, opt.width, opt.height),
+                ErrMsg::PixelOutside(x, y, opt.width, opt.height),
             ));
         }
     }
@@ -34,14 +34,10 @@ pub fn run(a: &RenderArgs, lang: Lang) -> Result<Report> {
     let t = Instant::now();
     if a.output.as_os_str() == "-" {
         let out = std::io::stdout().lock();
-        render::encode_png(&frame, out).map_err(|e| {
-            Error::why(
-                "output",
-                crate::msg::ErrMsg::CannotWriteStdout(crate::msg::IoWhy::Other(e)),
-            )
-        })?;
+        encode_png(&frame, out)
+            .map_err(|e| Error::why("output", ErrMsg::CannotWriteStdout(IoWhy::Other(e))))?;
     } else {
-        render::write_png(&frame, &a.output)?;
+        write_png(&frame, &a.output)?;
     }
     let encode = t.elapsed();
     let mut rec = Recorder::new();
@@ -94,7 +90,7 @@ fn frames(a: &RenderArgs, scene: &Scene, opt: &Options, lang: Lang) -> Result<(F
             b.finish_and_clear();
         }
         progress.finish();
-        let f = last.ok_or_else(|| Error::why("--repeat", crate::msg::ErrMsg::NothingRendered))?;
+        let f = last.ok_or_else(|| Error::why("--repeat", ErrMsg::NothingRendered))?;
         Ok((f, times))
     };
     let Some(n) = a.threads else {
@@ -112,7 +108,7 @@ fn frames(a: &RenderArgs, scene: &Scene, opt: &Options, lang: Lang) -> Result<(F
     rayon::ThreadPoolBuilder::new()
         .num_threads(n as usize)
         .build()
-        .map_err(|e| Error::why("--threads", crate::msg::ErrMsg::Threads(e.to_string())))?
+        .map_err(|e| Error::why("--threads", ErrMsg::Threads(e.to_string())))?
         .install(go)
 }
 
@@ -310,12 +306,7 @@ fn stats_text(
 }
 
 fn parse_pixel(s: &str) -> Result<(u32, u32)> {
-    let bad = || {
-        Error::why(
-            "--explain-pixel",
-            crate::msg::ErrMsg::PixelText(s.to_string()),
-        )
-    };
+    let bad = || Error::why("--explain-pixel", ErrMsg::PixelText(s.to_string()));
     let (x, y) = s.split_once(',').ok_or_else(bad)?;
     Ok((
         x.trim().parse().map_err(|_| bad())?,
@@ -456,4 +447,22 @@ fn shading(
             render::pixel_color(t, c, x, y, &f.looks, f.ortho, rec);
         }
     }
+}
+
+/// Writes the frame as an 8-bit RGB PNG.
+fn write_png(frame: &Frame, path: &std::path::Path) -> Result<()> {
+    let err = |e| Error::why("output", ErrMsg::CannotWrite(path.display().to_string(), e));
+    let file = std::fs::File::create(path).map_err(|e| err(IoWhy::of(&e)))?;
+    encode_png(frame, std::io::BufWriter::new(file)).map_err(|e| err(IoWhy::Other(e)))
+}
+
+/// The frame as an 8-bit RGB PNG, written to `out` (a file, standard output).
+fn encode_png(frame: &Frame, out: impl std::io::Write) -> std::result::Result<(), String> {
+    let mut enc = png::Encoder::new(out, frame.width, frame.height);
+    enc.set_color(png::ColorType::Rgb);
+    enc.set_depth(png::BitDepth::Eight);
+    enc.set_compression(png::Compression::Fast);
+    let mut wr = enc.write_header().map_err(|e| e.to_string())?;
+    wr.write_image_data(&frame.rgb).map_err(|e| e.to_string())?;
+    wr.finish().map_err(|e| e.to_string())
 }

@@ -589,7 +589,8 @@ fn vectors_per_light<T: Scalar>(
 /// Light i's range, distance, attenuation and spot factor.
 fn light_factors<T: Scalar>(s: &Setup<T>, i: usize, view: &V3<T>) -> Val {
     let (m, l, n) = (&s.material, &s.lights[i], s.lights.len());
-    let t = lighting::light_term(m, l, (i, n), &s.surface, view, false, &mut NoTrace);
+    let rules = &lighting::TextRules;
+    let t = lighting::light_term_with(m, l, (i, n), &s.surface, view, false, rules, &mut NoTrace);
     let or_null = |f: &dyn Fn(&LightTerm<T>) -> Val| t.as_ref().map(f).unwrap_or(Val::Null);
     Val::Map(vec![
         ("in_range".into(), Val::Bool(t.is_some())),

@@ -1,25 +1,19 @@
-//! [`F32x8`]: eight f32 lanes, the renderer's batch scalar.
+//! [`F32x8`]: eight f32 lanes, the renderer's batch scalar, with which
+//! the Phong band pass calls the calculator's own `lighting::shade_color`.
 //!
-//! The Phong renderer lights eight pixels at once by calling the
-//! calculator's own `lighting::shade_color` with this type. It is a plain
-//! array of eight f32, and every operation is a loop over the lanes doing
-//! the plain f32 operation (as [`super::Fast32`] does for one value), which
-//! the compiler turns into vector instructions of whatever width the
-//! calling code is compiled for: two SSE registers in the baseline x86-64
-//! build, one AVX register in the band pass's AVX2 copy (chosen at run time,
-//! see `render::shade::shade_band`). IEEE add, subtract, multiply, divide and
-//! square root are correctly rounded in any vector width, and Rust never
-//! fuses a multiply and an add on its own, so lane k of a result is bit for
-//! bit what `Fast32` gives for lane k's inputs, whichever copy runs.
+//! Every operation is a loop over the lanes doing the plain f32 operation
+//! of [`super::Fast32`], which the compiler turns into vector instructions
+//! of the width the caller is compiled for (two SSE registers in the
+//! baseline build, one AVX register in the band pass's AVX2 copy chosen at
+//! run time by `multiversion`). IEEE add, subtract, multiply, divide and
+//! square root are correctly rounded at any width, and Rust never fuses a
+//! multiply and an add on its own, so lane k is bit for bit what `Fast32`
+//! gives for lane k's inputs, whichever copy runs.
 //!
-//! **Comparisons.** [`Scalar::gt_mask`] compares lane by lane into a
-//! [`Mask8`], and [`Scalar::select`] picks lane by lane; the lighting code is
-//! written with those. The operators `==`, `<`, `>` (which [`Scalar`] also
-//! requires) mean "in every lane"; `partial_cmp` is `None` when lanes
-//! disagree.
-//!
-//! **Reading a number out** (`to_f64`, `to_real`, `shown`) gives lane 0: a
-//! batch is never reported, only turned into pixels.
+//! [`Scalar::gt_mask`] and [`Scalar::select`] compare and pick lane by lane
+//! (the lighting is written with them); the operators `==`, `<`, `>` that
+//! [`Scalar`] also requires mean "in every lane". Reading a number out
+//! (`to_f64`, `shown`) gives lane 0: a batch is only turned into pixels.
 
 use super::{Mask, Precision, Real, Scalar, Shown};
 use std::cmp::Ordering;

@@ -16,7 +16,7 @@
 //! depend on the number of threads (each band draws its triangles in
 //! submission order).
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::input::scene::{Normals, Scene, Shading, View};
 use crate::num::Fast32;
 use crate::stages::lighting::{Light, Material};
@@ -492,25 +492,6 @@ impl Frame {
         };
         self.ids.iter().enumerate().map(at).collect()
     }
-}
-
-/// Writes the frame as an 8-bit RGB PNG.
-pub fn write_png(frame: &Frame, path: &std::path::Path) -> Result<()> {
-    use crate::msg::{ErrMsg, IoWhy};
-    let err = |e| Error::why("output", ErrMsg::CannotWrite(path.display().to_string(), e));
-    let file = std::fs::File::create(path).map_err(|e| err(IoWhy::of(&e)))?;
-    encode_png(frame, std::io::BufWriter::new(file)).map_err(|e| err(IoWhy::Other(e)))
-}
-
-/// The frame as an 8-bit RGB PNG, written to `out` (a file, standard output).
-pub fn encode_png(frame: &Frame, out: impl std::io::Write) -> std::result::Result<(), String> {
-    let mut enc = png::Encoder::new(out, frame.width, frame.height);
-    enc.set_color(png::ColorType::Rgb);
-    enc.set_depth(png::BitDepth::Eight);
-    enc.set_compression(png::Compression::Fast);
-    let mut wr = enc.write_header().map_err(|e| e.to_string())?;
-    wr.write_image_data(&frame.rgb).map_err(|e| e.to_string())?;
-    wr.finish().map_err(|e| e.to_string())
 }
 
 #[cfg(test)]

@@ -10,7 +10,6 @@
 
 use super::{
     label, listening, max0, pow, Light, LightKind, LightTerm, Material, Model, RuleSet, Surface,
-    TextRules,
 };
 use crate::msg::{LightPart, Msg, SpotZone};
 use crate::num::vec::{add, dot, sub, V3};
@@ -20,20 +19,8 @@ use crate::stages::trace::{Step, Trace, Val};
 /// One light's geometry and factors at the point; `None` when the point is
 /// beyond the light's range (the light is not evaluated at all) or at the
 /// light's own position. `at` = (index, number of lights), for step titles.
-#[inline]
-pub fn light_term<T: Scalar>(
-    mat: &Material<T>,
-    light: &Light<T>,
-    at: (usize, usize),
-    s: &Surface<T>,
-    v: &V3<T>,
-    want_spec: bool,
-    tr: &mut impl Trace,
-) -> Option<LightTerm<T>> {
-    light_term_with(mat, light, at, s, v, want_spec, &TextRules, tr)
-}
-
-/// [`light_term`] under the given rules ([`super::Rules`] or [`TextRules`]):
+///
+/// Under the given rules ([`super::Rules`] or [`super::TextRules`]):
 /// L (and d), Att, Spot, cos α = L·N, then the specular part
 /// ([`specular`]); always inlined (into `shade`'s body too).
 #[allow(clippy::too_many_arguments)]

@@ -37,7 +37,7 @@ use crate::num::Scalar;
 use crate::stages::trace::{Step, Trace, Val};
 
 mod light;
-pub use light::{light_term, light_term_with, spot_factor};
+pub use light::{light_term_with, spot_factor};
 
 /// The lighting model (`--model`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, serde::Deserialize)]
