@@ -72,19 +72,8 @@ fn screen_steps(
     t: &raster::Tri,
     rec: &mut Recorder,
 ) -> PixelGeometry {
-    let screen = |v: &ClipVert, name: &str, tr: &mut Recorder| {
-        geometry::to_screen(&geometry::clip_xyzw(v), p.x.win, p.x.size, name, tr)
-    };
     let same = |f: &[ClipVert; 3]| {
-        let to = |v: ClipVert| {
-            geometry::to_screen(
-                &geometry::clip_xyzw(&v),
-                p.x.win,
-                p.x.size,
-                "",
-                &mut NoTrace,
-            )
-        };
+        let to = |v: ClipVert| screen(p, &v, "", &mut NoTrace);
         raster::setup_of(f.map(to), w, h).is_some_and(|(mut m, _)| {
             (m.obj, m.src) = (t.obj, t.src);
             m == *t
@@ -98,7 +87,7 @@ fn screen_steps(
     for (k, v) in sv.iter_mut().enumerate() {
         rec.section(Msg::Pixel(PixelMsg::SecScreen(k)));
         let name = format!("{}{k}", if clipped { "Q" } else { "V" });
-        *v = screen(&fan[f][k], &name, rec);
+        *v = screen(p, &fan[f][k], &name, rec);
     }
     set_up_step(&sv, found.is_some(), rec);
     let mut verts = sv.map(|v| v.0);
@@ -112,6 +101,17 @@ fn screen_steps(
         verts,
         corners,
     }
+}
+
+/// Clip-space vertex `v` of a set-up triangle to the screen, through
+/// [`geometry::to_screen`].
+fn screen(
+    p: &geometry::Prep,
+    v: &ClipVert,
+    name: &str,
+    tr: &mut impl Trace,
+) -> (ScreenVert, [i64; 2]) {
+    geometry::to_screen(&geometry::clip_xyzw(v), p.x.win, p.x.size, name, tr)
 }
 
 /// The object's matrices, then per vertex k of triangle `idx` (named Vk)

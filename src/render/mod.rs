@@ -386,7 +386,7 @@ fn geometry_stage(
         let (stats, verts) = (&mut f.stats, &mut f.scratch.verts);
         let Some(p) = prepare(obj, vs, &scene.lights, opt, stats, verts) else {
             f.looks.push(Look {
-                material: shade::material_as(&obj.material),
+                material: obj.material.cast(),
                 lights: Vec::new(),
                 shading: opt.shading,
                 one_colour: false,

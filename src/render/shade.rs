@@ -300,23 +300,21 @@ impl PhongIndex {
 /// Shades the rows of one band from its visibility buffer `id` (first row
 /// `r0`), writing 8-bit RGB into `out`: background where no triangle is
 /// visible; flat and Gouraud colours from the corners; Phong pixels lit
-/// eight at a time at [`F32x8`]. Returns (pixels shaded, lighting
-/// evaluations).
+/// eight at a time at [`F32x8`] (with each object's material and lights
+/// made at [`F32x8`] first). Returns (pixels shaded, lighting evaluations).
 ///
-/// `multiversion` compiles the pass twice, for x86-64 with AVX2 and FMA
-/// (each `F32x8` operation one 256-bit instruction) and for the baseline
-/// (two SSE registers per `F32x8`), and runs the first copy the CPU has
-/// (decided at the first call). The copies give the same bits: the lane
-/// operations are IEEE-exact in any width, and Rust never fuses a multiply
-/// and an add into an FMA on its own.
+/// `multiversion` compiles the pass for x86-64 with AVX2 and FMA (one
+/// 256-bit instruction per `F32x8` operation) beside the baseline (two SSE
+/// registers), chosen at the first call. The copies give the same bits: the
+/// lane operations are IEEE-exact at any width, and Rust never fuses a
+/// multiply and an add on its own.
 #[multiversion(targets("x86_64+avx2+fma"))]
 pub fn shade_band(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
     band(inp, r0, out, id)
 }
 
-/// The body of [`shade_band`], always inlined into each of its copies: the
-/// objects' materials and lights at [`F32x8`] (through f64: exact from
-/// f32), then row by row.
+/// The body of [`shade_band`], inlined into each copy (and called as it is
+/// by the test of the baseline copy).
 #[inline(always)]
 fn band(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
     let w = inp.width;
@@ -324,8 +322,8 @@ fn band(inp: &BandInput, r0: u32, out: &mut [u8], id: &[u32]) -> (u64, u64) {
         .looks
         .iter()
         .map(|l| LitObj {
-            mat: material_as(&l.material),
-            lights: l.lights.iter().map(light_as).collect(),
+            mat: l.material.cast(),
+            lights: l.lights.iter().map(Light::cast).collect(),
             one_colour: l.one_colour,
         })
         .collect();
@@ -892,9 +890,9 @@ mod tests {
         [n, p, c]: [[[f32; 8]; 3]; 3],
         ortho: bool,
     ) -> [[f32; 8]; 3] {
-        let mut mw: Material<F32x8> = material_as(m);
+        let mut mw: Material<F32x8> = m.cast();
         mw.color = c.map(F32x8::from_array);
-        let lw: Vec<Light<F32x8>> = lights.iter().map(light_as).collect();
+        let lw: Vec<Light<F32x8>> = lights.iter().map(Light::cast).collect();
         let v = |a: [[f32; 8]; 3]| a.map(F32x8::from_array).into();
         lit(&mw, &lw, v(n), v(p), ortho, &mut NoTrace).map(F32x8::to_array)
     }
