@@ -404,7 +404,7 @@ fn phong_pixels_lit_eight_at_a_time_match_the_one_pixel_path() {
             }
             let g = made.entry(t).or_insert_with(|| {
                 let mut rec = grafika::stages::trace::Recorder::new();
-                render::explain_geometry(&s, &opt, &f, t, &mut rec).unwrap()
+                grafika::tutor::pixel::explain_geometry(&s, &opt, &f, t, &mut rec).unwrap()
             });
             assert!(g.same, "triangle {t}");
             let (tri, c) = (&f.tris[t as usize], &g.corners);

@@ -54,17 +54,17 @@ impl VertBufs {
 }
 
 /// Everything the triangle loop needs about one object.
-pub(super) struct Prep<'a> {
-    pub(super) obj: &'a Object,
+pub(crate) struct Prep<'a> {
+    pub(crate) obj: &'a Object,
     /// The per-vertex transforms (clip-space positions are made again
     /// where a triangle is clipped, rather than kept for every vertex).
-    pub(super) x: VertXf<'a>,
+    pub(crate) x: VertXf<'a>,
     v: &'a VertBufs,
     lit: Option<Vec<[f32; 3]>>,
     closed: bool,
-    pub(super) material: Material<Fast32>,
-    pub(super) lights: Vec<Light<Fast32>>,
-    pub(super) shading: Shading,
+    pub(crate) material: Material<Fast32>,
+    pub(crate) lights: Vec<Light<Fast32>>,
+    pub(crate) shading: Shading,
 }
 
 /// Vertices per parallel block of the per-vertex work.
@@ -82,7 +82,7 @@ fn mul4(m: &Matrix4<f32>, p: [f32; 3]) -> [f32; 4] {
     [v.x, v.y, v.z, v.w]
 }
 
-pub(super) fn v3(a: [f32; 3]) -> Vector3<f32> {
+pub(crate) fn v3(a: [f32; 3]) -> Vector3<f32> {
     Vector3::new(a[0], a[1], a[2])
 }
 
@@ -108,18 +108,18 @@ enum NormalSrc<'a> {
 }
 
 /// The per-vertex transforms of an object.
-pub(super) struct VertXf<'a> {
+pub(crate) struct VertXf<'a> {
     /// Model → eye.
-    pub(super) e32: Matrix4<f32>,
+    pub(crate) e32: Matrix4<f32>,
     /// Model → clip.
-    pub(super) c32: Matrix4<f32>,
+    pub(crate) c32: Matrix4<f32>,
     /// The eye-space centre of the bounding box.
     centre: Vector3<f32>,
     /// The whole object is inside the view volume (all codes 0).
-    pub(super) inside: bool,
-    pub(super) win: &'a Window<f32>,
+    pub(crate) inside: bool,
+    pub(crate) win: &'a Window<f32>,
     /// Image width and height.
-    pub(super) size: (f32, f32),
+    pub(crate) size: (f32, f32),
     normals: NormalSrc<'a>,
 }
 
@@ -211,7 +211,7 @@ fn vertex_block(first: usize, ps: &[[f32; 3]], x: &VertXf, o: VertOut) -> f32 {
 /// c = (P·V·M)·p ([`projection::to_clip`]) and the clip-space outcode
 /// ([`clip::outcode_clip`]; 0 untested when the object's box is inside).
 #[inline(always)]
-pub(super) fn vertex_clip(
+pub(crate) fn vertex_clip(
     x: &VertXf,
     p: [f32; 3],
     name: &str,
@@ -233,7 +233,7 @@ pub(super) fn vertex_clip(
 /// top ([`window::to_pixel`]), and the position snapped to 1/256 pixel
 /// ([`window::snap_pixel`]).
 #[inline(always)]
-pub(super) fn to_screen(
+pub(crate) fn to_screen(
     c: &Vector4<f32>,
     win: &Window<f32>,
     (w, h): (f32, f32),
@@ -257,7 +257,7 @@ pub(super) fn to_screen(
 /// (counted in `stats`): the whole-object outcode tests, the per-vertex
 /// work ([`vertices`]), the lights within range, the material, and for
 /// Gouraud on a closed mesh the lit vertices.
-pub(super) fn prepare<'a>(
+pub(crate) fn prepare<'a>(
     obj: &'a Object,
     vs: &'a ViewSetup,
     scene_lights: &[Light<f32>],
@@ -424,7 +424,7 @@ fn material_of(obj: &Object, stats: &mut Stats) -> Material<Fast32> {
 
 /// How an object is shaded: `--shading` when forced, else its own or the
 /// scene's.
-pub(super) fn shading_of(obj: &Object, opt: &Options) -> Shading {
+pub(crate) fn shading_of(obj: &Object, opt: &Options) -> Shading {
     if opt.force_shading {
         opt.shading
     } else {
@@ -468,10 +468,10 @@ pub struct ChunkBuf {
 
 /// A clip-space vertex (x, y, z, w) followed by its corner data, as
 /// [`clip::clip_polygon`] interpolates it.
-pub(super) type ClipVert = [f32; 16];
+pub(crate) type ClipVert = [f32; 16];
 
 /// The clip coordinates of a [`ClipVert`].
-pub(super) fn clip_xyzw(v: &ClipVert) -> Vector4<f32> {
+pub(crate) fn clip_xyzw(v: &ClipVert) -> Vector4<f32> {
     Vector4::new(v[0], v[1], v[2], v[3])
 }
 
@@ -480,7 +480,7 @@ pub(super) fn clip_xyzw(v: &ClipVert) -> Vector4<f32> {
 /// back face of a closed mesh), counted in `st`; else the planes it crosses
 /// and whether it is a back face (of an open mesh).
 #[inline(always)]
-pub(super) fn test(
+pub(crate) fn test(
     p: &Prep,
     idx: [usize; 3],
     vs: &ViewSetup,
@@ -512,7 +512,7 @@ pub(super) fn test(
 /// flat: once per face, at the centroid with the polygon's normal; Gouraud:
 /// per vertex (from the object's lit vertices when it has them); Phong:
 /// none (lit per pixel). Lighting evaluations are counted in `st`.
-pub(super) fn corners(
+pub(crate) fn corners(
     p: &Prep,
     idx: [usize; 3],
     face: u32,
@@ -668,7 +668,7 @@ fn first_pass(
 /// planes `or` it crosses: its vertices' clip coordinates
 /// ([`projection::to_clip`]) followed by their corners, through
 /// [`clip::clip_polygon`], left in `poly`.
-pub(super) fn clipped_polygon(
+pub(crate) fn clipped_polygon(
     p: &Prep,
     idx: [usize; 3],
     cs: &[Corner; 3],
@@ -856,7 +856,7 @@ fn split_by<T>(mut s: &mut [T], lens: impl Iterator<Item = usize>) -> Vec<&mut [
 /// as needed; nothing is copied between them). Returns the number written
 /// and the counters (with `binning`: the time of merging the bins).
 #[allow(clippy::too_many_arguments)]
-pub(super) fn triangles(
+pub(crate) fn triangles(
     p: &Prep,
     oi: u32,
     vs: &ViewSetup,
@@ -936,15 +936,15 @@ pub(super) fn triangles(
 /// The frame's arrays the triangle stage fills: set-up triangles, their
 /// corners and Phong planes (indexed alike), and per band the triangles
 /// in it, in submission order.
-pub(super) struct Output<'f> {
-    pub(super) tris: &'f mut Vec<Tri>,
-    pub(super) corners: &'f mut Vec<[Corner; 3]>,
-    pub(super) planes: &'f mut Vec<Planes>,
-    pub(super) bins: &'f mut Vec<Vec<u32>>,
+pub(crate) struct Output<'f> {
+    pub(crate) tris: &'f mut Vec<Tri>,
+    pub(crate) corners: &'f mut Vec<[Corner; 3]>,
+    pub(crate) planes: &'f mut Vec<Planes>,
+    pub(crate) bins: &'f mut Vec<Vec<u32>>,
     /// Whether corners and planes are kept: corners when some object is
     /// shaded flat or Gouraud (they hold its colours), planes when some
     /// object is shaded by Phong (its per-pixel attributes).
-    pub(super) keep: [bool; 2],
+    pub(crate) keep: [bool; 2],
 }
 
 /// The eye-space normal of polygon `f` (Newell's sum over its eye-space

@@ -28,12 +28,10 @@ use rayon::prelude::*;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
-mod explain;
-mod geometry;
+pub mod geometry;
 pub mod raster;
 mod shade;
 
-pub use explain::{explain_geometry, PixelGeometry};
 use geometry::{prepare, triangles};
 use shade::Planes;
 pub use shade::{light_at, phong_attributes, pixel_color, to_u8};

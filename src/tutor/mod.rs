@@ -8,5 +8,6 @@ pub mod diagnose;
 pub mod follow;
 pub mod generate;
 pub mod keys;
+pub mod pixel;
 pub mod practice;
 pub mod solve;

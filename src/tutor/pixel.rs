@@ -1,17 +1,154 @@
-//! The geometry `render --explain-pixel` shows: the pixel's triangle made
-//! again through the very functions the renderer ran (the stages', with
-//! their steps recorded this time), from the object's vertices to the
-//! set-up triangle, and checked against the one the rasterizer used.
+//! `render --explain-pixel`: the worked steps for one pixel of a rendered
+//! frame. Which triangle covers it; that triangle made again through the
+//! very functions the renderer ran (the stages', with their steps recorded
+//! this time), from the object's vertices to the set-up triangle, checked
+//! against the one the rasterizer used; then its depth, barycentric weights,
+//! interpolation, lighting and the pixel's colour.
 
-use super::geometry::{self, ClipVert, VertBufs};
-use super::raster::{self, ScreenVert};
-use super::{Corner, Frame, Options, Stats};
 use crate::error::Result;
-use crate::input::scene::Scene;
+use crate::input::scene::{Scene, Shading};
 use crate::msg::{Msg, PixelMsg};
+use crate::render::geometry::{self, ClipVert, VertBufs};
+use crate::render::raster::{self, ScreenVert, Tri};
+use crate::render::{self, Corner, Frame, Options, Stats};
 use crate::stages::trace::{NoTrace, Recorder, Step, Trace, Val};
 use crate::stages::{camera, clip};
-use nalgebra::{Matrix4, Vector4};
+use nalgebra::{Matrix4, Vector3, Vector4};
+
+fn v3(c: &[f32], at: usize) -> Vector3<f32> {
+    Vector3::new(c[at], c[at + 1], c[at + 2])
+}
+
+/// The worked steps for pixel (x, y): which triangle covers it, the
+/// geometry that triangle went through ([`explain_geometry`]: the
+/// stages' own steps), its depth, barycentric weights, interpolation and
+/// lighting, and the pixel's colour.
+pub fn explain(
+    f: &Frame,
+    scene: &Scene,
+    opt: &Options,
+    (x, y): (u32, u32),
+    rec: &mut Recorder,
+) -> Result<()> {
+    rec.section(Msg::SecPixel(x, y));
+    let k = (y * f.width + x) as usize;
+    let id = f.ids[k];
+    if id == crate::render::raster::NONE {
+        rec.step(|| {
+            Step::new(Msg::WhichTriangle, Msg::FPixelCentre)
+                .res("triangle", Val::text("none"))
+                .note(Msg::NoTriangle)
+        });
+        return Ok(());
+    }
+    let t = &f.tris[id as usize];
+    let obj = &scene.objects[t.obj as usize];
+    rec.step(|| {
+        Step::new(Msg::WhichTriangle, Msg::FEdges)
+            .val("object", Val::text(obj.name.clone()))
+            .val(
+                "polygon face",
+                Val::text(obj.tris.face[t.src as usize].to_string()),
+            )
+            .val("object's triangle", Val::text(t.src.to_string()))
+            .res("triangle", Val::text(format!("#{id}")))
+    });
+    let g = explain_geometry(scene, opt, f, id, rec)?;
+    rec.section(Msg::SecPixel(x, y));
+    let (l, m, z) = (t.lambda(x, y), t.mu(x, y), t.depth(x, y));
+    let zs = g.verts.map(|v| v.z);
+    rec.step(|| {
+        Step::new(Msg::Depth, Msg::FDepth)
+            .val("z at the vertices", Val::vec3(&Vector3::from(zs)))
+            .res("z", Val::num(&z))
+            .note(Msg::Nearest)
+    });
+    rec.step(|| {
+        Step::new(Msg::Barycentric, Msg::FBarycentric)
+            .val("λ", Val::vec3(&Vector3::from(l)))
+            .val("1/w", Val::vec3(&Vector3::from(t.inv_w)))
+            .res("μ", Val::vec3(&Vector3::from(m)))
+    });
+    let c = &g.corners;
+    shading(f, (t, c), (x, y), m, rec);
+    rec.section(Msg::SecPixel(x, y));
+    let px = &f.rgb[3 * k..3 * k + 3];
+    let col = render::pixel_color(t, c, x, y, &f.looks, f.ortho, &mut NoTrace);
+    rec.step(|| {
+        Step::new(Msg::PixelColour, Msg::FByte)
+            .val("C", Val::vec3(&Vector3::from(col)))
+            .res(
+                "RGB",
+                Val::text(format!("({}, {}, {})", px[0], px[1], px[2])),
+            )
+    });
+    Ok(())
+}
+
+/// The shading steps of pixel (x, y) of triangle `t` (corners `c`) with perspective
+/// weights `m`: flat, the face's lighting; Gouraud, each vertex's and the
+/// interpolation; Phong, the interpolated N, P, C and the pixel's lighting.
+fn shading(
+    f: &Frame,
+    (t, c): (&Tri, &[Corner; 3]),
+    (x, y): (u32, u32),
+    m: [f32; 3],
+    rec: &mut Recorder,
+) {
+    let at = |i: usize| m[0] * c[0][i] + m[1] * c[1][i] + m[2] * c[2][i];
+    let look = &f.looks[t.obj as usize];
+    let (mat, lights) = (&look.material, &look.lights);
+    let light = |corner: &Corner, rec: &mut Recorder| {
+        let s = [corner[9], corner[10], corner[11]];
+        render::light_at(mat, lights, s, v3(corner, 3), v3(corner, 6), f.ortho, rec);
+    };
+    match look.shading {
+        Shading::Flat => {
+            rec.step(|| {
+                Step::new(Msg::FlatShading, Msg::FFlat)
+                    .val("N (eye space)", Val::vec3(&v3(&c[0], 3)))
+                    .val("face centre", Val::vec3(&v3(&c[0], 6)))
+                    .val("surface colour", Val::vec3(&v3(&c[0], 9)))
+            });
+            rec.section(Msg::SecLightFace);
+            light(&c[0], rec);
+        }
+        Shading::Gouraud => {
+            for (n, corner) in c.iter().enumerate() {
+                rec.section(Msg::SecLightVertex(n));
+                light(corner, rec);
+            }
+            rec.section(Msg::SecPixel(x, y));
+            rec.step(|| {
+                Step::new(Msg::Gouraud, "C = μ₀C₀ + μ₁C₁ + μ₂C₂")
+                    .val("C₀", Val::vec3(&v3(&c[0], 0)))
+                    .val("C₁", Val::vec3(&v3(&c[1], 0)))
+                    .val("C₂", Val::vec3(&v3(&c[2], 0)))
+                    .res("C", Val::vec3(&Vector3::new(at(0), at(1), at(2))))
+            });
+        }
+        Shading::Phong => {
+            // The values the renderer lights the pixel with: the same sums,
+            // evaluated as planes of a/w over the screen divided by 1/w.
+            let [n, p, col] = render::phong_attributes(t, c, x, y);
+            rec.step(|| {
+                Step::new(
+                    Msg::PhongShading,
+                    "N = Σ μₖNₖ,  P = Σ μₖPₖ,  C = Σ μₖCₖ  (as Σ λₖaₖ/wₖ ÷ Σ λₖ/wₖ)",
+                )
+                .val(
+                    "N₀, N₁, N₂",
+                    Val::List(c.iter().map(|k| Val::vec3(&v3(k, 3))).collect()),
+                )
+                .res("N", Val::vec3(&Vector3::from(n)))
+                .res("P (eye space)", Val::vec3(&Vector3::from(p)))
+                .res("C", Val::vec3(&Vector3::from(col)))
+            });
+            rec.section(Msg::SecLightPixel);
+            render::pixel_color(t, c, x, y, &f.looks, f.ortho, rec);
+        }
+    }
+}
 
 /// Records the geometry of set-up triangle `id` of `frame` (rendered from
 /// `scene` with `opt`): the view (view matrix, window, projection
@@ -30,7 +167,7 @@ pub fn explain_geometry(
     let t = &frame.tris[id as usize];
     let obj = &scene.objects[t.obj as usize];
     rec.section(Msg::Pixel(PixelMsg::SecMatrices));
-    let vs = super::view_setup_traced(scene, opt.width, opt.height, rec)?;
+    let vs = render::view_setup_traced(scene, opt.width, opt.height, rec)?;
     let (mut st, mut bufs) = (Stats::default(), VertBufs::default());
     let Some(p) = geometry::prepare(obj, &vs, &scene.lights, opt, &mut st, &mut bufs) else {
         return Ok(PixelGeometry::default());
