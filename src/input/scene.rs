@@ -276,31 +276,7 @@ pub struct SceneIn {
     object: Vec<Spanned<ObjectIn>>,
 }
 
-/// How the scene is seen.
-#[derive(Clone, Debug, PartialEq)]
-pub enum View {
-    /// The text's userdraw view: objects rotated by Rx(x)·Ry(y) (radians),
-    /// orthographic, 1 unit = 1 pixel, origin at the image centre.
-    Tilt {
-        /// Rotation about x.
-        x: f64,
-        /// Rotation about y.
-        y: f64,
-    },
-    /// A synthetic camera with a perspective projection.
-    Camera {
-        /// Pe, Pr, Vup.
-        camera: crate::stages::camera::Camera<f64>,
-        /// Vertical field of view, degrees.
-        fovy: f64,
-        /// Width/height of the window (default: the image's).
-        aspect: Option<f64>,
-        /// Near-plane distance.
-        near: f64,
-        /// Far-plane distance.
-        far: f64,
-    },
-}
+pub use crate::stages::view::View;
 
 /// Where an object's colours come from.
 #[derive(Clone, Debug, PartialEq)]

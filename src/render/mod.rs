@@ -17,12 +17,12 @@
 //! submission order).
 
 use crate::error::Result;
-use crate::input::scene::{Normals, Scene, Shading, View};
+use crate::input::scene::{Normals, Scene, Shading};
 use crate::num::Fast32;
 use crate::stages::lighting::{Light, Material};
-use crate::stages::trace::{NoTrace, Trace};
-use crate::stages::window::Window;
-use nalgebra::{Matrix4, Vector3};
+use crate::stages::trace::NoTrace;
+use crate::stages::view;
+pub use crate::stages::view::ViewSetup;
 use raster::{Tri, BAND};
 use rayon::prelude::*;
 use std::sync::Mutex;
@@ -210,78 +210,9 @@ pub struct Look {
     pub one_colour: bool,
 }
 
-/// The view transforms of a scene at an image size.
-#[derive(Clone, Debug)]
-pub struct ViewSetup {
-    /// World → eye.
-    pub eye_from_world: Matrix4<f64>,
-    /// Eye → clip.
-    pub clip_from_eye: Matrix4<f64>,
-    /// The window on the near plane (or the tilt view's pixel window).
-    pub win: Window<f32>,
-    /// Orthographic (the text's tilt view): the viewer is along +z.
-    pub ortho: bool,
-}
-
-/// The view of a scene: the camera's view matrix and the perspective over
-/// its window, or the tilt rotation and an orthographic window of W × H
-/// units centred on the origin (1 unit = 1 pixel).
+/// The view of a scene at an image size ([`view::setup`]).
 pub fn view_setup(scene: &Scene, w: u32, h: u32) -> Result<ViewSetup> {
-    view_setup_traced(scene, w, h, &mut NoTrace)
-}
-
-/// [`view_setup`] with its steps: the view matrix
-/// (`camera::view_matrix`), the window (`window::window`) and the
-/// projection matrix (`projection::projection_step`).
-pub fn view_setup_traced(scene: &Scene, w: u32, h: u32, tr: &mut impl Trace) -> Result<ViewSetup> {
-    let vs = view_of(scene, w, h, tr)?;
-    crate::stages::projection::projection_step(&vs.clip_from_eye, vs.ortho, tr);
-    Ok(vs)
-}
-
-fn view_of(scene: &Scene, w: u32, h: u32, tr: &mut impl Trace) -> Result<ViewSetup> {
-    let (wf, hf) = (w as f64, h as f64);
-    match &scene.view {
-        View::Tilt { x, y } => {
-            let rot = Matrix4::from_axis_angle(&Vector3::x_axis(), *x)
-                * Matrix4::from_axis_angle(&Vector3::y_axis(), *y);
-            let win = Window {
-                top: hf / 2.0,
-                bottom: -hf / 2.0,
-                left: -wf / 2.0,
-                right: wf / 2.0,
-                height: hf,
-                width: wf,
-            };
-            // Depth range ±10⁶ units: nothing the text draws comes near it.
-            let clip = crate::stages::projection::ortho_matrix(&win, &-1e6, &1e6);
-            Ok(ViewSetup {
-                eye_from_world: rot,
-                clip_from_eye: clip,
-                win: win.map(|&x| x as f32),
-                ortho: true,
-            })
-        }
-        View::Camera {
-            camera,
-            fovy,
-            aspect,
-            near,
-            far,
-        } => {
-            let b = crate::stages::camera::basis(camera, &mut NoTrace)?;
-            let v = crate::stages::camera::view_matrix(&b, &camera.pe, tr)?;
-            let aspect = aspect.unwrap_or(wf / hf);
-            let win = crate::stages::window::window(fovy, &aspect, near, "near", tr)?;
-            let p = crate::stages::projection::perspective_matrix(&win, near, far);
-            Ok(ViewSetup {
-                eye_from_world: v,
-                clip_from_eye: p,
-                win: win.map(|&x| x as f32),
-                ortho: false,
-            })
-        }
-    }
+    view::setup(&scene.view, w, h, &mut NoTrace)
 }
 
 /// Frees what no step of a render with `opt` reads: the polygon lists

@@ -167,7 +167,7 @@ pub fn explain_geometry(
     let t = &frame.tris[id as usize];
     let obj = &scene.objects[t.obj as usize];
     rec.section(Msg::Pixel(PixelMsg::SecMatrices));
-    let vs = render::view_setup_traced(scene, opt.width, opt.height, rec)?;
+    let vs = crate::stages::view::setup(&scene.view, opt.width, opt.height, rec)?;
     let (mut st, mut bufs) = (Stats::default(), VertBufs::default());
     let Some(p) = geometry::prepare(obj, &vs, &scene.lights, opt, &mut st, &mut bufs) else {
         return Ok(PixelGeometry::default());
