@@ -19,9 +19,8 @@ use super::shade::{light_as, light_at, material_as, Planes};
 use super::{Corner, Options, Stats, ViewSetup};
 
 /// Per-vertex arrays of an object (kept between frames, so a repeated
-/// render touches no fresh pages): eye-space position with the outcode,
-/// screen position and eye-space normal, apart so that the culling pass
-/// reads only the first (one 16-byte load per vertex).
+/// render touches no fresh pages), apart so that the culling pass reads
+/// only the first (one 16-byte load per vertex).
 #[derive(Clone, Debug, Default)]
 pub struct VertBufs {
     ec: Vec<EyeCode>,
@@ -32,8 +31,8 @@ pub struct VertBufs {
     /// ([`window::snap_pixel`]), x and y: on the image, so within
     /// 8192·256 = 2²¹.
     snapped: Vec<[i32; 2]>,
-    /// Unit eye-space vertex normals (none for flat shading).
-    vnormals: Vec<[f32; 3]>,
+    /// Unit eye-space vertex normals (0 for flat shading).
+    vn: Vec<[f32; 3]>,
 }
 
 /// A vertex's eye-space position and its outcode in clip space (0 for all
@@ -49,7 +48,7 @@ impl VertBufs {
     /// The eye-space position of vertex `i`.
     #[inline]
     fn eye(&self, i: usize) -> Vector3<f32> {
-        v3(self.ec[i].e)
+        self.ec[i].e.into()
     }
 }
 
@@ -60,8 +59,8 @@ pub(super) struct Prep<'a> {
     /// where a triangle is clipped, rather than kept for every vertex).
     pub(super) x: VertXf<'a>,
     v: &'a VertBufs,
+    /// Gouraud on a closed mesh: the lit colour of each vertex.
     lit: Option<Vec<[f32; 3]>>,
-    closed: bool,
     pub(super) material: Material<Fast32>,
     pub(super) lights: Vec<Light<Fast32>>,
     pub(super) shading: Shading,
@@ -69,22 +68,6 @@ pub(super) struct Prep<'a> {
 
 /// Vertices per parallel block of the per-vertex work.
 const VBLOCK: usize = 4096;
-
-/// Makes `v` n long, filling only the entries it did not have (the caller
-/// then writes every entry).
-fn size<T: Clone + Default>(v: &mut Vec<T>, n: usize) {
-    v.truncate(n);
-    v.resize(n, T::default());
-}
-
-fn mul4(m: &Matrix4<f32>, p: [f32; 3]) -> [f32; 4] {
-    let v = m * Vector4::new(p[0], p[1], p[2], 1.0);
-    [v.x, v.y, v.z, v.w]
-}
-
-pub(super) fn v3(a: [f32; 3]) -> Vector3<f32> {
-    Vector3::new(a[0], a[1], a[2])
-}
 
 /// The surface colour of a corner.
 fn surface(obj: &Object, face: u32, vertex: u32) -> [f32; 3] {
@@ -107,6 +90,24 @@ enum NormalSrc<'a> {
     Position(Matrix4<f32>, Matrix3<f32>),
 }
 
+impl NormalSrc<'_> {
+    /// The eye-space normal of vertex `i`, model point `p` (0 for none).
+    #[inline(always)]
+    fn normal(&self, i: usize, p: [f32; 3]) -> [f32; 3] {
+        match self {
+            NormalSrc::None => [0.0; 3],
+            NormalSrc::Model(ns, nmat) => ns
+                .get(i)
+                .map_or([0.0; 3], |&n| (nmat * Vector3::from(n)).normalize().into()),
+            NormalSrc::Position(world, rot) => {
+                let v = rot * camera::to_world(world, "", &p.into(), &mut NoTrace);
+                let n = if v.norm() > 0.0 { v.normalize() } else { v };
+                n.into()
+            }
+        }
+    }
+}
+
 /// The per-vertex transforms of an object.
 pub(super) struct VertXf<'a> {
     /// Model → eye.
@@ -123,85 +124,56 @@ pub(super) struct VertXf<'a> {
     normals: NormalSrc<'a>,
 }
 
-/// All per-vertex work of an object in one pass over parallel blocks: per
-/// vertex p, eye position e = E·p; outcode of c = C·p (0 when the object
-/// is inside); screen position ([`to_screen`]) and its snapped coordinates
-/// when the code is 0; the eye-space normal. Returns max |e − centre|²
-/// (its √ is the largest distance: √ is monotonic and correctly rounded).
+/// All per-vertex work of an object in one pass over parallel blocks
+/// ([`vertex_block`]). Returns max |e − centre|² (its √ is the largest
+/// distance: √ is monotonic and correctly rounded).
 fn vertices(pos: &[[f32; 3]], x: &VertXf, bufs: &mut VertBufs) -> f32 {
     let n = pos.len();
-    size(&mut bufs.ec, n);
-    size(&mut bufs.zw, n);
-    size(&mut bufs.snapped, n);
-    let vn = &mut bufs.vnormals;
-    let blocks = n.div_ceil(VBLOCK);
-    let vn: Vec<&mut [[f32; 3]]> = if matches!(x.normals, NormalSrc::None) {
-        vn.clear();
-        (0..blocks).map(|_| &mut [][..]).collect()
-    } else {
-        size(vn, n);
-        vn.chunks_mut(VBLOCK).collect()
-    };
+    bufs.ec.resize(n, EyeCode::default());
+    bufs.zw.resize(n, [0.0; 2]);
+    bufs.snapped.resize(n, [0; 2]);
+    bufs.vn.resize(n, [0.0; 3]);
     pos.par_chunks(VBLOCK)
         .zip(bufs.ec.par_chunks_mut(VBLOCK))
         .zip(bufs.zw.par_chunks_mut(VBLOCK))
         .zip(bufs.snapped.par_chunks_mut(VBLOCK))
-        .zip(vn)
+        .zip(bufs.vn.par_chunks_mut(VBLOCK))
         .enumerate()
-        .map(|(b, ((((ps, ec), ss), sn), vn))| {
-            let out = VertOut { ec, ss, sn, vn };
-            vertex_block(b * VBLOCK, ps, x, out)
-        })
+        .map(|(b, ((((ps, ec), zw), sn), vn))| vertex_block(b * VBLOCK, ps, x, ec, zw, sn, vn))
         .reduce(|| 0.0f32, f32::max)
 }
 
-/// One block's slices of the per-vertex arrays.
-struct VertOut<'a> {
-    ec: &'a mut [EyeCode],
-    ss: &'a mut [[f32; 2]],
-    sn: &'a mut [[i32; 2]],
-    /// Empty for no normals.
-    vn: &'a mut [[f32; 3]],
-}
-
-/// [`vertices`] for the block of vertices `ps`, numbers from `first`: per
-/// vertex [`vertex_clip`], and [`to_screen`] when its code is 0; the
-/// normals. Compiled for AVX2 and FMA too, chosen at run time (the same
-/// bits: no operation is fused or reordered).
+/// The block of vertices `ps`, numbers from `first`: per vertex p, eye
+/// position e = E·p and outcode of c = C·p ([`vertex_clip`]); screen
+/// position ([`to_screen`]) and its snapped coordinates when the code is 0;
+/// the eye-space normal. Returns max |e − centre|². Compiled for AVX2 and
+/// FMA too, chosen at run time (the same bits: no operation is fused or
+/// reordered).
 #[multiversion(targets("x86_64+avx2+fma"))]
-fn vertex_block(first: usize, ps: &[[f32; 3]], x: &VertXf, o: VertOut) -> f32 {
+fn vertex_block(
+    first: usize,
+    ps: &[[f32; 3]],
+    x: &VertXf,
+    ec: &mut [EyeCode],
+    zw: &mut [[f32; 2]],
+    sn: &mut [[i32; 2]],
+    vn: &mut [[f32; 3]],
+) -> f32 {
     let mut far2 = 0.0f32;
     for (k, &p) in ps.iter().enumerate() {
         let (e, c, code) = vertex_clip(x, p, "", &mut NoTrace);
         far2 = far2.max((e - x.centre).norm_squared());
-        o.ec[k] = EyeCode {
-            e: [e.x, e.y, e.z],
-            code: code as u32,
+        ec[k] = EyeCode {
+            e: e.into(),
+            code: code.into(),
         };
-        (o.ss[k], o.sn[k]) = if code == 0 {
+        (zw[k], sn[k]) = if code == 0 {
             let (v, s) = to_screen(&c, x.win, x.size, "", &mut NoTrace);
             ([v.z, v.inv_w], s.map(|s| s as i32))
         } else {
             ([0.0; 2], [0; 2])
         };
-    }
-    match &x.normals {
-        NormalSrc::None => {}
-        NormalSrc::Model(ns, nmat) => {
-            let ns = ns.get(first..).unwrap_or_default();
-            for (&n, o) in ns.iter().zip(o.vn) {
-                let v = (nmat * v3(n)).normalize();
-                *o = [v.x, v.y, v.z];
-            }
-        }
-        NormalSrc::Position(world, rot) => {
-            for (&p, o) in ps.iter().zip(o.vn) {
-                let w = mul4(world, p);
-                let v = rot * Vector3::new(w[0], w[1], w[2]);
-                let v = if v.norm() > 0.0 { v.normalize() } else { v };
-                *o = [v.x, v.y, v.z];
-            }
-        }
+        vn[k] = x.normals.normal(first + k, p);
     }
     far2
 }
@@ -217,7 +189,7 @@ pub(super) fn vertex_clip(
     name: &str,
     tr: &mut impl Trace,
 ) -> (Vector3<f32>, Vector4<f32>, u8) {
-    let p = v3(p);
+    let p = Vector3::from(p);
     let e = camera::eye_by_matrix(&x.e32, name, &p, tr);
     let c = projection::to_clip(&x.c32, name, &p, tr);
     let code = if x.inside {
@@ -277,58 +249,46 @@ pub(super) fn prepare<'a>(
         stats.tris_in += ntris;
         return None;
     }
-    let inside = or == 0;
-    stats.objects_inside += u64::from(inside);
+    stats.objects_inside += u64::from(or == 0);
     let e32: Matrix4<f32> = eye_from_model.cast();
     // Lights out of range of the whole object are never evaluated for it:
     // its reach is the box's centre and the largest distance from it.
     let [lo, hi] = obj.bounds;
-    let centre = mul4(&e32, std::array::from_fn(|k| (lo[k] + hi[k]) / 2.0));
+    let mid = Vector3::from_fn(|k, _| (lo[k] + hi[k]) / 2.0);
     let x = VertXf {
         e32,
         c32: clip_from_model.cast(),
-        centre: Vector3::new(centre[0], centre[1], centre[2]),
-        inside,
+        centre: camera::eye_by_matrix(&e32, "", &mid, &mut NoTrace),
+        inside: or == 0,
         win: &vs.win,
         size: (opt.width as f32, opt.height as f32),
         normals: normal_source(obj, vs, opt, shading, &eye_from_model),
     };
     let radius = vertices(&obj.mesh.positions, &x, bufs).sqrt();
-    let bufs: &'a VertBufs = bufs;
     let lights = lights_in_range(scene_lights, &x.centre, radius, stats);
     let material = material_of(obj, stats);
-    // Gouraud on a closed mesh without per-face colours: light each vertex once.
-    let lit =
-        (shading == Shading::Gouraud && obj.closed && !matches!(obj.colors, Colors::Faces(_)))
-            .then(|| {
-                let l: Vec<[f32; 3]> = (0..obj.mesh.positions.len())
-                    .into_par_iter()
-                    .map(|v| {
-                        let (s, n) = (surface(obj, 0, v as u32), v3(bufs.vnormals[v]));
-                        light_at(
-                            &material,
-                            &lights,
-                            s,
-                            n,
-                            bufs.eye(v),
-                            vs.ortho,
-                            &mut NoTrace,
-                        )
-                    })
-                    .collect();
-                stats.lighting_evals += l.len() as u64;
-                l
-            });
-    Some(Prep {
+    let mut p = Prep {
         obj,
         x,
         v: bufs,
-        lit,
-        closed: obj.closed,
+        lit: None,
         material,
         lights,
         shading,
-    })
+    };
+    // Gouraud on a closed mesh without per-face colours: light each vertex once.
+    if shading == Shading::Gouraud && obj.closed && !matches!(obj.colors, Colors::Faces(_)) {
+        let lit: Vec<[f32; 3]> = (0..obj.mesh.positions.len())
+            .into_par_iter()
+            .map(|v| {
+                let (s, n, e) = (surface(obj, 0, v as u32), p.v.vn[v].into(), p.v.eye(v));
+                light_at(&p.material, &p.lights, s, n, e, vs.ortho, &mut NoTrace)
+            })
+            .collect();
+        stats.lighting_evals += lit.len() as u64;
+        p.lit = Some(lit);
+    }
+    Some(p)
 }
 
 /// The AND and OR of the outcodes ([`clip::outcode_clip_space`]) of the
@@ -359,21 +319,14 @@ fn normal_source<'a>(
     eye_from_model: &Matrix4<f64>,
 ) -> NormalSrc<'a> {
     let lin: Matrix3<f64> = eye_from_model.fixed_view::<3, 3>(0, 0).into();
-    let nmat: Matrix3<f32> = lin
-        .try_inverse()
-        .map(|m| m.transpose())
-        .unwrap_or(lin)
-        .cast();
-    let rot = || {
-        vs.eye_from_world
-            .fixed_view::<3, 3>(0, 0)
-            .into_owned()
-            .cast()
-    };
+    let rot: Matrix3<f64> = vs.eye_from_world.fixed_view::<3, 3>(0, 0).into();
     match (shading, opt.normals) {
         (Shading::Flat, _) => NormalSrc::None,
-        (_, Normals::Average) => NormalSrc::Model(&obj.vnormals, nmat),
-        (_, Normals::Position) => NormalSrc::Position(obj.model.cast(), rot()),
+        (_, Normals::Average) => {
+            let nmat = lin.try_inverse().map_or(lin, |m| m.transpose());
+            NormalSrc::Model(&obj.vnormals, nmat.cast())
+        }
+        (_, Normals::Position) => NormalSrc::Position(obj.model.cast(), rot.cast()),
     }
 }
 
@@ -386,20 +339,14 @@ fn lights_in_range(
     radius: f32,
     stats: &mut Stats,
 ) -> Vec<Light<Fast32>> {
-    let mut out = Vec::new();
-    for l in lights {
-        let far = match (&l.kind, l.range) {
-            (LightKind::Point { pos } | LightKind::Spot { pos, .. }, Some(r)) => {
-                (pos - centre).norm() - radius > r
-            }
-            _ => false,
-        };
-        if far {
-            stats.lights_skipped += 1;
-        } else {
-            out.push(light_as(l));
+    let far = |l: &&Light<f32>| match (&l.kind, l.range) {
+        (LightKind::Point { pos } | LightKind::Spot { pos, .. }, Some(r)) => {
+            (pos - centre).norm() - radius > r
         }
-    }
+        _ => false,
+    };
+    let out: Vec<_> = lights.iter().filter(|l| !far(l)).map(light_as).collect();
+    stats.lights_skipped += (lights.len() - out.len()) as u64;
     out
 }
 
@@ -435,31 +382,25 @@ pub(super) fn shading_of(obj: &Object, opt: &Options) -> Shading {
 /// Triangles per parallel chunk of the geometry stage.
 const CHUNK: usize = 2048;
 
-/// A triangle that passed the outcode and facing tests (first pass).
+/// A set-up triangle the first pass found, in order: the object's triangle
+/// `i` (a back face of an open mesh when `back`), set up by the second
+/// pass; or the next of the chunk's clipped ones.
 #[derive(Clone, Copy, Debug)]
-struct Kept {
-    /// Its index in the object's triangle list.
-    tri: u32,
-    /// How many set-up triangles it gives: 0 (no pixel centre) or 1, or for
-    /// a clipped one, its fan's triangles that cover a centre.
-    out: u32,
-    /// The clip planes it crosses (0: set up in the second pass; otherwise
-    /// clipped and set up in the first, into [`ChunkBuf::clipped`]).
-    or: u8,
-    /// A back face of an open mesh (its normals are flipped).
-    back: bool,
+enum Kept {
+    Tri { i: u32, back: bool },
+    Clipped,
 }
 
 /// One chunk's work between the two passes of the triangle stage (kept
 /// between frames, so a repeated render allocates nothing).
 #[derive(Clone, Debug, Default)]
 pub struct ChunkBuf {
-    /// The triangles that passed the outcode and facing tests, in order.
+    /// The set-up triangles the first pass found, in order.
     kept: Vec<Kept>,
     /// The set-up clipped triangles and their corners, in order.
     clipped: Vec<(Tri, [Corner; 3])>,
-    /// Set-up triangles in the chunk: Σ `out` of `kept`.
-    count: usize,
+    /// Working space of [`clipped_polygon`].
+    poly: [Vec<ClipVert>; 2],
     /// Per band: the frame's numbers of the chunk's triangles in it.
     bins: Vec<Vec<u32>>,
     /// The chunk's counters.
@@ -472,7 +413,7 @@ pub(super) type ClipVert = [f32; 16];
 
 /// The clip coordinates of a [`ClipVert`].
 pub(super) fn clip_xyzw(v: &ClipVert) -> Vector4<f32> {
-    Vector4::new(v[0], v[1], v[2], v[3])
+    Vector4::from_column_slice(&v[..4])
 }
 
 /// The outcode and facing tests of triangle `idx` of an object: `None`
@@ -493,18 +434,19 @@ pub(super) fn test(
         return None;
     }
     // Facing: the text's test N·(toward viewer) with N = (v1 − v0) × (v2 − v0).
-    let (e0, e1, e2) = (v3(a.e), v3(b.e), v3(c.e));
+    let [e0, e1, e2] = [a.e, b.e, c.e].map(Vector3::from);
     let n = (e1 - e0).cross(&(e2 - e0));
     let front = if vs.ortho {
         n.z > 0.0
     } else {
         n.dot(&e0) < 0.0
     };
-    if !front && p.closed && cull {
+    let closed = p.obj.closed;
+    if !front && closed && cull {
         st.culled += 1;
         return None;
     }
-    Some(((a.code | b.code | c.code) as u8, !front && !p.closed))
+    Some(((a.code | b.code | c.code) as u8, !front && !closed))
 }
 
 /// The corners of a kept triangle: per vertex the eye-space normal (flipped
@@ -512,6 +454,7 @@ pub(super) fn test(
 /// flat: once per face, at the centroid with the polygon's normal; Gouraud:
 /// per vertex (from the object's lit vertices when it has them); Phong:
 /// none (lit per pixel). Lighting evaluations are counted in `st`.
+#[inline(always)]
 pub(super) fn corners(
     p: &Prep,
     idx: [usize; 3],
@@ -520,68 +463,44 @@ pub(super) fn corners(
     ortho: bool,
     st: &mut Stats,
 ) -> [Corner; 3] {
-    let mut cs = [[0.0f32; 12]; 3];
-    corners_into(p, idx, face, back, ortho, st, &mut cs, [0, 1, 2]);
-    cs
-}
-
-/// [`corners`] written straight into `out`: vertex k's corner goes to
-/// `out[slot[k]]` (the set-up triangle's vertex order).
-#[allow(clippy::too_many_arguments)]
-#[inline(always)]
-fn corners_into(
-    p: &Prep,
-    idx: [usize; 3],
-    face: u32,
-    back: bool,
-    ortho: bool,
-    st: &mut Stats,
-    out: &mut [Corner; 3],
-    slot: [usize; 3],
-) {
     // An open mesh shows its back: light the side that is seen.
     let flip = if back { -1.0 } else { 1.0 };
-    // Flat: one colour, normal and position for the whole face.
+    // Flat: colour, normal and position of the whole face; the polygon's
+    // normal is the triangle's own for a triangle, else Newell's average.
     let flat = (p.shading == Shading::Flat).then(|| {
-        // The polygon's normal in eye space: the triangle's own for a
-        // triangle, Newell's average for a polygon.
-        let fe = face_normal_eye(p, face as usize)
-            .unwrap_or_else(|| v3(p.obj.mesh.face_normal(face as usize)))
-            * flip;
+        let f = face as usize;
+        let n = face_normal_eye(p, f).unwrap_or_else(|| p.obj.mesh.face_normal(f).into()) * flip;
         let e = idx.map(|i| p.v.eye(i));
         let centre = (e[0] + e[1] + e[2]) / 3.0;
         let s = surface(p.obj, face, idx[0] as u32);
-        let c = light_at(&p.material, &p.lights, s, fe, centre, ortho, &mut NoTrace);
         st.lighting_evals += 1;
-        (c, [fe.x, fe.y, fe.z], [centre.x, centre.y, centre.z])
+        let c = light_at(&p.material, &p.lights, s, n, centre, ortho, &mut NoTrace);
+        [c, n.into(), centre.into()]
     });
-    for k in 0..3 {
-        let v = idx[k];
+    let mut out = [[0.0f32; 12]; 3];
+    for (o, &v) in out.iter_mut().zip(&idx) {
         let s = surface(p.obj, face, v as u32);
-        let (c, nrm, e) = if let Some(f) = flat {
+        let [c, n, e] = if let Some(f) = flat {
             f
         } else {
-            let nrm =
-                p.v.vnormals
-                    .get(v)
-                    .map_or([0.0; 3], |n| n.map(|x| x * flip));
-            let e = p.v.ec[v].e;
+            let (n, e) = (p.v.vn[v].map(|x| x * flip), p.v.ec[v].e);
             let c = match (p.shading, &p.lit) {
                 (Shading::Gouraud, Some(l)) => l[v],
                 (Shading::Gouraud, None) => {
                     st.lighting_evals += 1;
-                    let (n, e) = (v3(nrm), v3(e));
+                    let (n, e) = (n.into(), e.into());
                     light_at(&p.material, &p.lights, s, n, e, ortho, &mut NoTrace)
                 }
                 // Phong: no lit colour, lit per pixel.
                 _ => [0.0; 3],
             };
-            (c, nrm, e)
+            [c, n, e]
         };
-        out[slot[k]] = [
-            c[0], c[1], c[2], nrm[0], nrm[1], nrm[2], e[0], e[1], e[2], s[0], s[1], s[2],
+        *o = [
+            c[0], c[1], c[2], n[0], n[1], n[2], e[0], e[1], e[2], s[0], s[1], s[2],
         ];
     }
+    out
 }
 
 /// The lighting evaluations [`corners`] makes for one triangle: flat 1,
@@ -594,72 +513,46 @@ fn corner_evals(p: &Prep) -> u64 {
     }
 }
 
-/// The first pass over one chunk of an object's triangles (those from
-/// number `first` in its list): outcode and facing tests; for a triangle
-/// inside the view volume, whether it covers a pixel centre
-/// ([`raster::snap_box_of`]); a triangle that crosses a plane is lit,
-/// clipped and set up here (few do).
-///
-/// On a CPU with AVX2 the same code, compiled a second time with AVX2
-/// enabled, is chosen at run time; the results are the same bits.
-#[allow(clippy::too_many_arguments)]
+/// The first pass over chunk `c` of an object's triangles: outcode and
+/// facing tests; a triangle inside the view volume is kept when it covers
+/// a pixel centre ([`raster::snap_box_of`]); one that crosses a plane is
+/// lit, clipped and set up here ([`clip_tri`]; few do). Compiled for AVX2
+/// and FMA too, chosen at run time (the same bits).
 #[multiversion(targets("x86_64+avx2+fma"))]
 fn first_pass(
     p: &Prep,
     oi: u32,
-    first: usize,
-    tris: &[[u32; 3]],
-    faces: &[u32],
+    c: usize,
     vs: &ViewSetup,
     cull: bool,
     opt: &Options,
     buf: &mut ChunkBuf,
 ) {
-    let (w, h) = (opt.width, opt.height);
+    let t = &p.obj.tris;
+    let r = c * CHUNK..t.tris.len().min((c + 1) * CHUNK);
     buf.kept.clear();
     buf.clipped.clear();
-    buf.count = 0;
     let mut st = Stats {
-        tris_in: tris.len() as u64,
+        tris_in: r.len() as u64,
         ..Stats::default()
     };
-    let (mut poly, mut tmp) = (Vec::new(), Vec::new());
-    for (n, (tri, &face)) in tris.iter().zip(faces).enumerate() {
-        let idx = tri.map(|i| i as usize);
+    for i in r {
+        let idx = t.tris[i].map(|i| i as usize);
         let Some((or, back)) = test(p, idx, vs, cull, &mut st) else {
             continue;
         };
-        let out = if or == 0 {
-            match raster::snap_box_of(idx.map(|i| p.v.snapped[i].map(i64::from)), w, h) {
-                Some(_) => {
-                    st.drawn += 1;
-                    1
-                }
-                None => {
-                    st.no_pixels += 1;
-                    0
-                }
-            }
+        let snapped = idx.map(|i| p.v.snapped[i].map(i64::from));
+        if or != 0 {
+            clip_tri(p, oi, (i, or, back), vs, opt, buf, &mut st);
+        } else if raster::snap_box_of(snapped, opt.width, opt.height).is_some() {
+            st.drawn += 1;
+            buf.kept.push(Kept::Tri { i: i as u32, back });
         } else {
-            let tri = (idx, face, oi, (first + n) as u32);
-            clip_tri(
-                p,
-                tri,
-                (or, back),
-                vs,
-                opt,
-                buf,
-                &mut st,
-                (&mut poly, &mut tmp),
-            )
-        };
-        buf.count += out as usize;
-        buf.kept.push(Kept {
-            tri: (first + n) as u32,
-            out,
-            or,
-            back,
-        });
+            // Not lit, but counted as if it were (as it was before the
+            // raster test moved ahead of lighting).
+            st.no_pixels += 1;
+            st.lighting_evals += corner_evals(p);
+        }
     }
     buf.stats = st;
 }
@@ -678,126 +571,101 @@ pub(super) fn clipped_polygon(
 ) {
     poly.clear();
     poly.extend((0..3).map(|k| {
-        let q = v3(p.obj.mesh.positions[idx[k]]);
+        let q = p.obj.mesh.positions[idx[k]].into();
         let c = projection::to_clip(&p.x.c32, "", &q, &mut NoTrace);
         std::array::from_fn(|i| if i < 4 { c[i] } else { cs[k][i - 4] })
     }));
     clip::clip_polygon(poly, or, tmp, tr);
 }
 
-/// A triangle that crosses the clip planes `or` (vertices `idx` of polygon
-/// `face` of object `oi`): lit, clipped, its fan set up into `buf.clipped`.
-/// Returns how many of the fan's triangles cover a pixel centre. (Not
-/// inlined: rare, and kept out of the culling loop's registers.)
-#[allow(clippy::too_many_arguments)]
+/// Triangle `i` of object `oi`, crossing the clip planes `or`: lit,
+/// clipped, and each triangle of its fan that covers a pixel centre set up
+/// into `buf.clipped` and kept. (Not inlined: rare, and kept out of the
+/// culling loop's registers.)
 #[inline(never)]
 fn clip_tri(
     p: &Prep,
-    (idx, face, oi, src): ([usize; 3], u32, u32, u32),
-    (or, back): (u8, bool),
+    oi: u32,
+    (i, or, back): (usize, u8, bool),
     vs: &ViewSetup,
     opt: &Options,
     buf: &mut ChunkBuf,
     st: &mut Stats,
-    (poly, tmp): (&mut Vec<ClipVert>, &mut Vec<ClipVert>),
-) -> u32 {
-    let (w, h) = (opt.width, opt.height);
+) {
     st.clipped += 1;
-    let cs = corners(p, idx, face, back, vs.ortho, st);
-    let before = buf.clipped.len();
-    clipped_polygon(p, idx, &cs, or, (poly, tmp), &mut NoTrace);
-    let size = (w as f32, h as f32);
+    let idx = p.obj.tris.tris[i].map(|i| i as usize);
+    let cs = corners(p, idx, p.obj.tris.face[i], back, vs.ortho, st);
+    let [mut poly, mut tmp] = std::mem::take(&mut buf.poly);
+    clipped_polygon(p, idx, &cs, or, (&mut poly, &mut tmp), &mut NoTrace);
     for k in 1..poly.len().saturating_sub(1) {
         let tri = [poly[0], poly[k], poly[k + 1]];
-        let sv = tri.map(|v| to_screen(&clip_xyzw(&v), &vs.win, size, "", &mut NoTrace));
-        match raster::setup_of(sv, w, h) {
-            Some((mut t, swap)) => {
-                t.obj = oi;
-                t.src = src;
-                let [a, b, c] = tri.map(|v| -> Corner { std::array::from_fn(|i| v[i + 4]) });
-                buf.clipped
-                    .push((t, if swap { [a, c, b] } else { [a, b, c] }));
-                st.drawn += 1;
-            }
-            None => st.no_pixels += 1,
+        let sv = tri.map(|v| to_screen(&clip_xyzw(&v), p.x.win, p.x.size, "", &mut NoTrace));
+        let Some((mut t, swap)) = raster::setup_of(sv, opt.width, opt.height) else {
+            st.no_pixels += 1;
+            continue;
+        };
+        (t.obj, t.src) = (oi, i as u32);
+        let mut cs = tri.map(|v| -> Corner { std::array::from_fn(|i| v[i + 4]) });
+        if swap {
+            cs.swap(1, 2);
         }
+        buf.clipped.push((t, cs));
+        buf.kept.push(Kept::Clipped);
+        st.drawn += 1;
     }
-    (buf.clipped.len() - before) as u32
+    buf.poly = [poly, tmp];
 }
 
 /// Where the second pass writes one chunk's set-up triangles: the frame's
-/// slices for them, and the number of the first.
+/// slices for them (corners or planes empty when the frame keeps none),
+/// and the number of the first.
 struct Dest<'t> {
     tris: &'t mut [Tri],
-    /// Empty when no object needs corners to be shaded.
     corners: &'t mut [[Corner; 3]],
-    /// Empty when no object is shaded by Phong.
     planes: &'t mut [Planes],
     first: u32,
 }
 
 /// The second pass over one chunk: lights and sets up the triangles the
-/// first pass kept inside the view volume, copies the clipped ones, computes
-/// Phong's attribute planes (`Planes::of`, for a Phong object; the default
-/// otherwise), and bins them by band (rows y0..=y1 are in bands
-/// y0/BAND..=y1/BAND), all straight into the frame's arrays.
-///
-/// On a CPU with AVX2 the same code, compiled a second time with AVX2
-/// enabled (wider registers for the f64 planes), is chosen at run time;
-/// the results are the same bits (no operation is fused or reordered).
+/// first pass kept inside the view volume, copies the clipped ones, and
+/// [`finish`]es each, all straight into the frame's arrays. Compiled for
+/// AVX2 and FMA too (wider registers for the f64 planes), chosen at run
+/// time; the same bits (no operation is fused or reordered).
 #[multiversion(targets("x86_64+avx2+fma"))]
 fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut ChunkBuf, d: Dest) {
-    let (w, h) = (opt.width, opt.height);
-    let bands = (h as usize).div_ceil(BAND);
-    buf.bins.resize_with(bands, Vec::new);
+    buf.bins
+        .resize_with((opt.height as usize).div_ceil(BAND), Vec::new);
     buf.bins.iter_mut().for_each(Vec::clear);
     let t = &p.obj.tris;
     let phong = p.shading == Shading::Phong;
     let mut clipped = buf.clipped.iter();
-    // The next output slot (a corner kept only when the frame keeps them),
-    // and the frame's number of the next.
-    let (mut k, mut cbuf) = (0, [[0.0f32; 12]; 3]);
+    // Corners go to the frame only when it keeps them.
+    let mut cbuf = [[0.0f32; 12]; 3];
     let mut st = Stats::default();
-    for kept in &buf.kept {
-        if kept.or != 0 {
-            for (tri, cs) in clipped.by_ref().take(kept.out as usize) {
-                let c = d.corners.get_mut(k).unwrap_or(&mut cbuf);
-                d.tris[k].clone_from(tri);
-                *c = *cs;
-                finish(
-                    d.first + k as u32,
-                    phong,
-                    (&d.tris[k], c, d.planes.get_mut(k)),
-                    &mut buf.bins,
-                );
-                k += 1;
-            }
-            continue;
-        }
-        // One that covers no centre is not lit, but counted as if it were
-        // (as it was before the raster test moved ahead of lighting).
-        if kept.out == 0 {
-            st.lighting_evals += corner_evals(p);
-            continue;
-        }
-        let i = kept.tri as usize;
-        let (idx, face) = (t.tris[i].map(|i| i as usize), t.face[i]);
-        let Some(s) = raster::snap_box_of(idx.map(|i| p.v.snapped[i].map(i64::from)), w, h) else {
-            continue;
-        };
+    for (k, kept) in buf.kept.iter().enumerate() {
         let (tri, c) = (&mut d.tris[k], d.corners.get_mut(k).unwrap_or(&mut cbuf));
-        let slot = if s.swap() { [0, 2, 1] } else { [0, 1, 2] };
-        corners_into(p, idx, face, kept.back, vs.ortho, &mut st, c, slot);
-        raster::setup_into(&idx.map(|i| p.v.zw[i]), &s, tri);
-        tri.obj = oi;
-        tri.src = kept.tri;
+        match *kept {
+            Kept::Clipped => {
+                let (t, cs) = clipped.next().expect("one per Kept::Clipped");
+                tri.clone_from(t);
+                *c = *cs;
+            }
+            Kept::Tri { i, back } => {
+                let idx = t.tris[i as usize].map(|i| i as usize);
+                let snapped = idx.map(|i| p.v.snapped[i].map(i64::from));
+                let s = raster::snap_box_of(snapped, opt.width, opt.height).expect("first pass");
+                let cs = corners(p, idx, t.face[i as usize], back, vs.ortho, &mut st);
+                *c = if s.swap() { [cs[0], cs[2], cs[1]] } else { cs };
+                raster::setup_into(&idx.map(|i| p.v.zw[i]), &s, tri);
+                (tri.obj, tri.src) = (oi, i);
+            }
+        }
         finish(
             d.first + k as u32,
             phong,
             (tri, c, d.planes.get_mut(k)),
             &mut buf.bins,
         );
-        k += 1;
     }
     buf.stats.lighting_evals += st.lighting_evals;
 }
@@ -823,29 +691,13 @@ fn finish(
     }
 }
 
-/// [`split_by`] of `v[range]`, or as many empty slices when `v` is not
-/// kept (shorter than the range).
-fn split_kept<T>(
-    v: &mut [T],
-    range: std::ops::Range<usize>,
-    lens: impl Iterator<Item = usize>,
-) -> Vec<&mut [T]> {
-    match v.get_mut(range) {
-        Some(s) => split_by(s, lens),
-        None => lens.map(|_| &mut [][..]).collect(),
-    }
-}
-
-/// Splits `s` into consecutive slices of the given lengths (the rest is
-/// dropped).
-fn split_by<T>(mut s: &mut [T], lens: impl Iterator<Item = usize>) -> Vec<&mut [T]> {
-    let mut out = Vec::new();
-    for n in lens {
-        let (a, b) = std::mem::take(&mut s).split_at_mut(n);
-        out.push(a);
-        s = b;
-    }
-    out
+/// The first `n` entries of `s` (all when it is shorter); `s` keeps the
+/// rest.
+fn take_front<'a, T>(s: &mut &'a mut [T], n: usize) -> &'a mut [T] {
+    let all = std::mem::take(s);
+    let (a, rest) = all.split_at_mut(n.min(all.len()));
+    *s = rest;
+    a
 }
 
 /// The triangles of one object: reject, cull, light (flat: per face,
@@ -866,48 +718,33 @@ pub(super) fn triangles(
     out: &mut Output,
     pool: &mut Vec<ChunkBuf>,
 ) -> (usize, Stats) {
-    let t = &p.obj.tris;
     // Per-chunk buffers from the previous frame (no fresh pages).
-    let n = t.tris.len().div_ceil(CHUNK);
+    let n = p.obj.tris.tris.len().div_ceil(CHUNK);
     let mut bufs: Vec<ChunkBuf> = (0..n).map(|_| pool.pop().unwrap_or_default()).collect();
-    t.tris
-        .par_chunks(CHUNK)
-        .zip(t.face.par_chunks(CHUNK))
-        .zip(bufs.par_iter_mut())
+    bufs.par_iter_mut()
         .enumerate()
-        .for_each(|(c, ((tris, faces), buf))| {
-            first_pass(p, oi, c * CHUNK, tris, faces, vs, scene.cull, opt, buf);
-        });
-    let total: usize = bufs.iter().map(|b| b.count).sum();
-    let end = first + total;
-    let [keep_corners, keep_planes] = out.keep;
-    if out.tris.len() < end {
-        out.tris.resize(end, Tri::default());
+        .for_each(|(c, buf)| first_pass(p, oi, c, vs, scene.cull, opt, buf));
+    let end = first + bufs.iter().map(|b| b.kept.len()).sum::<usize>();
+    out.tris.resize(out.tris.len().max(end), Tri::default());
+    if out.keep[0] {
+        out.corners
+            .resize(out.corners.len().max(end), [[0.0; 12]; 3]);
     }
-    if keep_corners && out.corners.len() < end {
-        out.corners.resize(end, [[0.0; 12]; 3]);
+    if out.keep[1] {
+        out.planes
+            .resize(out.planes.len().max(end), Planes::default());
     }
-    if keep_planes && out.planes.len() < end {
-        out.planes.resize(end, Planes::default());
-    }
-    let lens = || bufs.iter().map(|b| b.count);
-    let starts: Vec<u32> = lens()
-        .scan(first as u32, |s, n| {
-            let a = *s;
-            *s += n as u32;
-            Some(a)
-        })
-        .collect();
-    let dests: Vec<Dest> = split_by(&mut out.tris[first..end], lens())
-        .into_iter()
-        .zip(split_kept(out.corners, first..end, lens()))
-        .zip(split_kept(out.planes, first..end, lens()))
-        .zip(starts)
-        .map(|(((tris, corners), planes), first)| Dest {
-            tris,
-            corners,
-            planes,
-            first,
+    let mut rest = (
+        &mut out.tris[first..end],
+        out.corners.get_mut(first..end).unwrap_or_default(),
+        out.planes.get_mut(first..end).unwrap_or_default(),
+    );
+    let dests: Vec<Dest> = (bufs.iter().map(|b| b.kept.len()))
+        .map(|n| Dest {
+            first: (end - rest.0.len()) as u32,
+            tris: take_front(&mut rest.0, n),
+            corners: take_front(&mut rest.1, n),
+            planes: take_front(&mut rest.2, n),
         })
         .collect();
     bufs.par_iter_mut()
@@ -915,8 +752,8 @@ pub(super) fn triangles(
         .for_each(|(buf, d)| second_pass(p, oi, vs, opt, buf, d));
     // Each band's triangles: the chunks' in order.
     let t0 = Instant::now();
-    let bands = (opt.height as usize).div_ceil(BAND);
-    out.bins.resize_with(bands, Vec::new);
+    out.bins
+        .resize_with((opt.height as usize).div_ceil(BAND), Vec::new);
     out.bins.par_iter_mut().enumerate().for_each(|(b, bin)| {
         for buf in &bufs {
             bin.extend_from_slice(&buf.bins[b]);
@@ -930,7 +767,7 @@ pub(super) fn triangles(
         st.add(&b.stats);
     }
     pool.extend(bufs);
-    (total, st)
+    (end - first, st)
 }
 
 /// The frame's arrays the triangle stage fills: set-up triangles, their
@@ -966,7 +803,7 @@ mod tests {
 
     #[test]
     fn phong_corners_are_the_normal_position_and_colour() {
-        // Phong's corners (the first branch of `corners_into`) against
+        // Phong's corners (the last branch of `corners`'s match) against
         // their definition: no lit colour, the eye-space vertex normal
         // (flipped on a back face), the eye position, the surface colour.
         let text = include_str!("../../tests/common/mixed.toml");
@@ -986,7 +823,7 @@ mod tests {
                     let got = corners(&p, idx, face, back, vs.ortho, &mut stats);
                     let flip = if back { -1.0 } else { 1.0 };
                     for (k, &v) in idx.iter().enumerate() {
-                        let (n, e) = (p.v.vnormals[v], p.v.ec[v].e);
+                        let (n, e) = (p.v.vn[v], p.v.ec[v].e);
                         let c = surface(obj, face, v as u32);
                         let want = [
                             0.0,
