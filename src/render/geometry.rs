@@ -18,20 +18,17 @@ use std::time::Instant;
 use super::shade::{light_as, light_at, material_as, Planes};
 use super::{Corner, Options, Stats, ViewSetup};
 
-/// Per-vertex arrays of an object (kept between frames, so a repeated
-/// render touches no fresh pages), apart so that the culling pass reads
-/// only the first (one 16-byte load per vertex).
+/// Per-vertex arrays of an object (kept between frames: a repeated render
+/// touches no fresh pages), apart so that culling reads only the first.
 #[derive(Clone, Debug, Default)]
 pub struct VertBufs {
     ec: Vec<EyeCode>,
-    /// Depth z/w and 1/w ([`to_screen`]) of the vertices whose code is 0
-    /// (0 for the others, which only clipped triangles use).
+    /// Depth z/w and 1/w ([`to_screen`]) where the code is 0 (else 0).
     zw: Vec<[f32; 2]>,
-    /// Their screen positions snapped to 1/256 pixel
-    /// ([`window::snap_pixel`]), x and y: on the image, so within
-    /// 8192·256 = 2²¹.
+    /// The screen position snapped to 1/256 pixel ([`window::snap_pixel`])
+    /// where the code is 0: on the image, so within 8192·256 = 2²¹.
     snapped: Vec<[i32; 2]>,
-    /// Unit eye-space vertex normals (0 for flat shading).
+    /// Unit eye-space vertex normals (none for flat shading).
     vn: Vec<[f32; 3]>,
 }
 
@@ -78,36 +75,6 @@ fn surface(obj: &Object, face: u32, vertex: u32) -> [f32; 3] {
     }
 }
 
-/// Where the vertex normals come from.
-enum NormalSrc<'a> {
-    /// None (flat shading).
-    None,
-    /// The object's unit model-space normals, one per vertex, to eye space
-    /// by the inverse transpose n' = normalize(M⁻ᵀ·n).
-    Model(&'a [[f32; 3]], Matrix3<f32>),
-    /// The text's draw3Dcg: n = normalize(R·(model·p)), the vertex in the
-    /// world rotated by the view's linear part R.
-    Position(Matrix4<f32>, Matrix3<f32>),
-}
-
-impl NormalSrc<'_> {
-    /// The eye-space normal of vertex `i`, model point `p` (0 for none).
-    #[inline(always)]
-    fn normal(&self, i: usize, p: [f32; 3]) -> [f32; 3] {
-        match self {
-            NormalSrc::None => [0.0; 3],
-            NormalSrc::Model(ns, nmat) => ns
-                .get(i)
-                .map_or([0.0; 3], |&n| (nmat * Vector3::from(n)).normalize().into()),
-            NormalSrc::Position(world, rot) => {
-                let v = rot * camera::to_world(world, "", &p.into(), &mut NoTrace);
-                let n = if v.norm() > 0.0 { v.normalize() } else { v };
-                n.into()
-            }
-        }
-    }
-}
-
 /// The per-vertex transforms of an object.
 pub(super) struct VertXf<'a> {
     /// Model → eye.
@@ -121,10 +88,9 @@ pub(super) struct VertXf<'a> {
     pub(super) win: &'a Window<f32>,
     /// Image width and height.
     pub(super) size: (f32, f32),
-    normals: NormalSrc<'a>,
 }
 
-/// All per-vertex work of an object in one pass over parallel blocks
+/// The positions and codes of an object's vertices, over parallel blocks
 /// ([`vertex_block`]). Returns max |e − centre|² (its √ is the largest
 /// distance: √ is monotonic and correctly rounded).
 fn vertices(pos: &[[f32; 3]], x: &VertXf, bufs: &mut VertBufs) -> f32 {
@@ -132,32 +98,25 @@ fn vertices(pos: &[[f32; 3]], x: &VertXf, bufs: &mut VertBufs) -> f32 {
     bufs.ec.resize(n, EyeCode::default());
     bufs.zw.resize(n, [0.0; 2]);
     bufs.snapped.resize(n, [0; 2]);
-    bufs.vn.resize(n, [0.0; 3]);
     pos.par_chunks(VBLOCK)
         .zip(bufs.ec.par_chunks_mut(VBLOCK))
         .zip(bufs.zw.par_chunks_mut(VBLOCK))
         .zip(bufs.snapped.par_chunks_mut(VBLOCK))
-        .zip(bufs.vn.par_chunks_mut(VBLOCK))
-        .enumerate()
-        .map(|(b, ((((ps, ec), zw), sn), vn))| vertex_block(b * VBLOCK, ps, x, ec, zw, sn, vn))
+        .map(|(((ps, ec), zw), sn)| vertex_block(ps, x, ec, zw, sn))
         .reduce(|| 0.0f32, f32::max)
 }
 
-/// The block of vertices `ps`, numbers from `first`: per vertex p, eye
-/// position e = E·p and outcode of c = C·p ([`vertex_clip`]); screen
-/// position ([`to_screen`]) and its snapped coordinates when the code is 0;
-/// the eye-space normal. Returns max |e − centre|². Compiled for AVX2 and
-/// FMA too, chosen at run time (the same bits: no operation is fused or
-/// reordered).
+/// Per vertex p of a block, e = E·p and the outcode of c = C·p
+/// ([`vertex_clip`]), and where the code is 0 [`to_screen`]. Returns
+/// max |e − centre|². Compiled for AVX2 and FMA too, chosen at run time
+/// (the same bits: no operation is fused or reordered).
 #[multiversion(targets("x86_64+avx2+fma"))]
 fn vertex_block(
-    first: usize,
     ps: &[[f32; 3]],
     x: &VertXf,
     ec: &mut [EyeCode],
     zw: &mut [[f32; 2]],
     sn: &mut [[i32; 2]],
-    vn: &mut [[f32; 3]],
 ) -> f32 {
     let mut far2 = 0.0f32;
     for (k, &p) in ps.iter().enumerate() {
@@ -173,7 +132,6 @@ fn vertex_block(
         } else {
             ([0.0; 2], [0; 2])
         };
-        vn[k] = x.normals.normal(first + k, p);
     }
     far2
 }
@@ -192,12 +150,8 @@ pub(super) fn vertex_clip(
     let p = Vector3::from(p);
     let e = camera::eye_by_matrix(&x.e32, name, &p, tr);
     let c = projection::to_clip(&x.c32, name, &p, tr);
-    let code = if x.inside {
-        0
-    } else {
-        clip::outcode_clip(&c, name, tr)
-    };
-    (e, c, code)
+    let code = (!x.inside).then(|| clip::outcode_clip(&c, name, tr));
+    (e, c, code.unwrap_or(0))
 }
 
 /// Clip coordinates to the screen: the perspective division
@@ -262,9 +216,10 @@ pub(super) fn prepare<'a>(
         inside: or == 0,
         win: &vs.win,
         size: (opt.width as f32, opt.height as f32),
-        normals: normal_source(obj, vs, opt, shading, &eye_from_model),
     };
     let radius = vertices(&obj.mesh.positions, &x, bufs).sqrt();
+    let normals = (shading != Shading::Flat).then_some(opt.normals);
+    vertex_normals(obj, vs, normals, &eye_from_model, &mut bufs.vn);
     let lights = lights_in_range(scene_lights, &x.centre, radius, stats);
     let material = material_of(obj, stats);
     let mut p = Prep {
@@ -307,26 +262,36 @@ fn box_codes(obj: &Object, clip_from_model: &Matrix4<f64>) -> (u8, u8) {
     (and, or)
 }
 
-/// Where an object's vertex normals come from: none for flat shading; its
-/// model normals to eye space by the inverse transpose of the linear part
-/// of V·M; or, the text's draw3Dcg, the vertex position in the (tilted)
-/// world made a unit vector.
-fn normal_source<'a>(
-    obj: &'a Object,
+/// An object's unit eye-space vertex normals into `vn`: none (flat
+/// shading); its model normals by the inverse transpose of the linear part
+/// L of V·M, n' = normalize(L⁻ᵀ·n); or the text's draw3Dcg,
+/// n = normalize(R·(M·p)), the vertex in the world turned by the view's R.
+fn vertex_normals(
+    obj: &Object,
     vs: &ViewSetup,
-    opt: &Options,
-    shading: Shading,
+    normals: Option<Normals>,
     eye_from_model: &Matrix4<f64>,
-) -> NormalSrc<'a> {
+    vn: &mut Vec<[f32; 3]>,
+) {
     let lin: Matrix3<f64> = eye_from_model.fixed_view::<3, 3>(0, 0).into();
     let rot: Matrix3<f64> = vs.eye_from_world.fixed_view::<3, 3>(0, 0).into();
-    match (shading, opt.normals) {
-        (Shading::Flat, _) => NormalSrc::None,
-        (_, Normals::Average) => {
-            let nmat = lin.try_inverse().map_or(lin, |m| m.transpose());
-            NormalSrc::Model(&obj.vnormals, nmat.cast())
+    let (ns, ps) = (obj.vnormals.par_iter(), obj.mesh.positions.par_iter());
+    match normals {
+        None => vn.clear(),
+        Some(Normals::Average) => {
+            let nmat: Matrix3<f32> = lin.try_inverse().map_or(lin, |m| m.transpose()).cast();
+            ns.map(|&n| (nmat * Vector3::from(n)).normalize().into())
+                .collect_into_vec(vn);
         }
-        (_, Normals::Position) => NormalSrc::Position(obj.model.cast(), rot.cast()),
+        Some(Normals::Position) => {
+            let (world, rot): (Matrix4<f32>, Matrix3<f32>) = (obj.model.cast(), rot.cast());
+            ps.map(|&p| {
+                let v = rot * camera::to_world(&world, "", &p.into(), &mut NoTrace);
+                let n = if v.norm() > 0.0 { v.normalize() } else { v };
+                n.into()
+            })
+            .collect_into_vec(vn);
+        }
     }
 }
 
@@ -372,11 +337,9 @@ fn material_of(obj: &Object, stats: &mut Stats) -> Material<Fast32> {
 /// How an object is shaded: `--shading` when forced, else its own or the
 /// scene's.
 pub(super) fn shading_of(obj: &Object, opt: &Options) -> Shading {
-    if opt.force_shading {
-        opt.shading
-    } else {
-        obj.shading.unwrap_or(opt.shading)
-    }
+    obj.shading
+        .filter(|_| !opt.force_shading)
+        .unwrap_or(opt.shading)
 }
 
 /// Triangles per parallel chunk of the geometry stage.
@@ -503,16 +466,6 @@ pub(super) fn corners(
     out
 }
 
-/// The lighting evaluations [`corners`] makes for one triangle: flat 1,
-/// Gouraud 3 (0 from the object's lit vertices), Phong 0.
-fn corner_evals(p: &Prep) -> u64 {
-    match (p.shading, &p.lit) {
-        (Shading::Flat, _) => 1,
-        (Shading::Gouraud, None) => 3,
-        _ => 0,
-    }
-}
-
 /// The first pass over chunk `c` of an object's triangles: outcode and
 /// facing tests; a triangle inside the view volume is kept when it covers
 /// a pixel centre ([`raster::snap_box_of`]); one that crosses a plane is
@@ -548,10 +501,15 @@ fn first_pass(
             st.drawn += 1;
             buf.kept.push(Kept::Tri { i: i as u32, back });
         } else {
-            // Not lit, but counted as if it were (as it was before the
-            // raster test moved ahead of lighting).
+            // Not lit, but counted as [`corners`] would (flat 1, Gouraud 3
+            // or 0 from lit vertices, Phong 0), as before the raster test
+            // moved ahead of lighting.
             st.no_pixels += 1;
-            st.lighting_evals += corner_evals(p);
+            st.lighting_evals += match (p.shading, &p.lit) {
+                (Shading::Flat, _) => 1,
+                (Shading::Gouraud, None) => 3,
+                _ => 0,
+            };
         }
     }
     buf.stats = st;
@@ -626,11 +584,12 @@ struct Dest<'t> {
     first: u32,
 }
 
-/// The second pass over one chunk: lights and sets up the triangles the
-/// first pass kept inside the view volume, copies the clipped ones, and
-/// [`finish`]es each, all straight into the frame's arrays. Compiled for
-/// AVX2 and FMA too (wider registers for the f64 planes), chosen at run
-/// time; the same bits (no operation is fused or reordered).
+/// The second pass over one chunk, straight into the frame's arrays: lights
+/// and sets up the triangles the first pass kept inside the view volume,
+/// copies the clipped ones; Phong's planes when the frame keeps planes (the
+/// default for another shading); bins (rows y0..=y1 are in bands
+/// y0/BAND..=y1/BAND). Compiled for AVX2 and FMA too, chosen at run time
+/// (the same bits: no operation is fused or reordered).
 #[multiversion(targets("x86_64+avx2+fma"))]
 fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut ChunkBuf, d: Dest) {
     buf.bins
@@ -641,7 +600,6 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
     let mut clipped = buf.clipped.iter();
     // Corners go to the frame only when it keeps them.
     let mut cbuf = [[0.0f32; 12]; 3];
-    let mut st = Stats::default();
     for (k, kept) in buf.kept.iter().enumerate() {
         let (tri, c) = (&mut d.tris[k], d.corners.get_mut(k).unwrap_or(&mut cbuf));
         match *kept {
@@ -654,40 +612,21 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
                 let idx = t.tris[i as usize].map(|i| i as usize);
                 let snapped = idx.map(|i| p.v.snapped[i].map(i64::from));
                 let s = raster::snap_box_of(snapped, opt.width, opt.height).expect("first pass");
-                let cs = corners(p, idx, t.face[i as usize], back, vs.ortho, &mut st);
+                let cs = corners(p, idx, t.face[i as usize], back, vs.ortho, &mut buf.stats);
                 *c = if s.swap() { [cs[0], cs[2], cs[1]] } else { cs };
                 raster::setup_into(&idx.map(|i| p.v.zw[i]), &s, tri);
                 (tri.obj, tri.src) = (oi, i);
             }
         }
-        finish(
-            d.first + k as u32,
-            phong,
-            (tri, c, d.planes.get_mut(k)),
-            &mut buf.bins,
-        );
-    }
-    buf.stats.lighting_evals += st.lighting_evals;
-}
-
-/// Set-up triangle number `n` of the frame is in place with its corners:
-/// its Phong planes when the frame keeps planes (the default for another
-/// shading) and its bins (rows y0..=y1 are in bands y0/BAND..=y1/BAND).
-#[inline(always)]
-fn finish(
-    n: u32,
-    phong: bool,
-    (tri, c, pl): (&Tri, &[Corner; 3], Option<&mut Planes>),
-    bins: &mut [Vec<u32>],
-) {
-    match pl {
-        Some(pl) if phong => pl.set(tri, c),
-        Some(pl) => *pl = Planes::default(),
-        None => {}
-    }
-    let (b0, b1) = (tri.bbox[2] as usize / BAND, tri.bbox[3] as usize / BAND);
-    for bin in &mut bins[b0..=b1] {
-        bin.push(n);
+        match d.planes.get_mut(k) {
+            Some(pl) if phong => pl.set(tri, c),
+            Some(pl) => *pl = Planes::default(),
+            None => {}
+        }
+        let (b0, b1) = (tri.bbox[2] as usize / BAND, tri.bbox[3] as usize / BAND);
+        for bin in &mut buf.bins[b0..=b1] {
+            bin.push(d.first + k as u32);
+        }
     }
 }
 
@@ -788,11 +727,8 @@ pub(super) struct Output<'f> {
 /// vertices), `None` if degenerate.
 fn face_normal_eye(p: &Prep, f: usize) -> Option<Vector3<f32>> {
     let face = &p.obj.mesh.faces[f];
-    let p0 = p.v.eye(face[0] as usize);
-    let mut n = Vector3::zeros();
-    for w in face[1..].windows(2) {
-        n += (p.v.eye(w[0] as usize) - p0).cross(&(p.v.eye(w[1] as usize) - p0));
-    }
+    let e = |k: u32| p.v.eye(k as usize) - p.v.eye(face[0] as usize);
+    let n: Vector3<f32> = face[1..].windows(2).map(|w| e(w[0]).cross(&e(w[1]))).sum();
     let l = n.norm();
     (l > 0.0).then(|| n / l)
 }
