@@ -6,7 +6,7 @@
 use crate::input::scene::{Colors, Normals, Object, Scene, Shading};
 use crate::num::Fast32;
 use crate::render::raster::{self, ScreenVert, Tri, BAND};
-use crate::stages::lighting::{self, Light, LightKind, Material};
+use crate::stages::lighting::{Light, LightKind, Material, Model};
 use crate::stages::trace::{NoTrace, Trace};
 use crate::stages::window::{self, Window};
 use crate::stages::{camera, clip, projection};
@@ -23,10 +23,10 @@ use super::{Corner, Options, Stats, ViewSetup};
 #[derive(Clone, Debug, Default)]
 pub struct VertBufs {
     ec: Vec<EyeCode>,
-    /// Depth z/w and 1/w ([`to_screen`]) where the code is 0 (else 0).
+    /// Depth z/w and 1/w ([`to_screen`]), read only where the code is 0.
     zw: Vec<[f32; 2]>,
-    /// The screen position snapped to 1/256 pixel ([`window::snap_pixel`])
-    /// where the code is 0: on the image, so within 8192·256 = 2²¹.
+    /// The screen position snapped to 1/256 pixel ([`window::snap_pixel`]),
+    /// read only where the code is 0: on the image, so within 2²¹.
     snapped: Vec<[i32; 2]>,
     /// Unit eye-space vertex normals (none for flat shading).
     vn: Vec<[f32; 3]>,
@@ -43,7 +43,6 @@ struct EyeCode {
 
 impl VertBufs {
     /// The eye-space position of vertex `i`.
-    #[inline]
     fn eye(&self, i: usize) -> Vector3<f32> {
         self.ec[i].e.into()
     }
@@ -52,8 +51,7 @@ impl VertBufs {
 /// Everything the triangle loop needs about one object.
 pub(super) struct Prep<'a> {
     pub(super) obj: &'a Object,
-    /// The per-vertex transforms (clip-space positions are made again
-    /// where a triangle is clipped, rather than kept for every vertex).
+    /// The per-vertex transforms (clip coordinates are remade where clipped).
     pub(super) x: VertXf<'a>,
     v: &'a VertBufs,
     /// Gouraud on a closed mesh: the lit colour of each vertex.
@@ -107,9 +105,8 @@ fn vertices(pos: &[[f32; 3]], x: &VertXf, bufs: &mut VertBufs) -> f32 {
 }
 
 /// Per vertex p of a block, e = E·p and the outcode of c = C·p
-/// ([`vertex_clip`]), and where the code is 0 [`to_screen`]. Returns
-/// max |e − centre|². Compiled for AVX2 and FMA too, chosen at run time
-/// (the same bits: no operation is fused or reordered).
+/// ([`vertex_clip`]), and [`to_screen`]. Returns max |e − centre|².
+/// Compiled for AVX2 and FMA too, chosen at run time (the same bits).
 #[multiversion(targets("x86_64+avx2+fma"))]
 fn vertex_block(
     ps: &[[f32; 3]],
@@ -126,12 +123,8 @@ fn vertex_block(
             e: e.into(),
             code: code.into(),
         };
-        (zw[k], sn[k]) = if code == 0 {
-            let (v, s) = to_screen(&c, x.win, x.size, "", &mut NoTrace);
-            ([v.z, v.inv_w], s.map(|s| s as i32))
-        } else {
-            ([0.0; 2], [0; 2])
-        };
+        let (v, s) = to_screen(&c, x.win, x.size, "", &mut NoTrace);
+        (zw[k], sn[k]) = ([v.z, v.inv_w], s.map(|s| s as i32));
     }
     far2
 }
@@ -154,10 +147,9 @@ pub(super) fn vertex_clip(
     (e, c, code.unwrap_or(0))
 }
 
-/// Clip coordinates to the screen: the perspective division
-/// ([`projection::divide`]), the window point, viewport and row from the
-/// top ([`window::to_pixel`]), and the position snapped to 1/256 pixel
-/// ([`window::snap_pixel`]).
+/// Clip coordinates to the screen: perspective division ([`projection::divide`]),
+/// window point, viewport and row from the top ([`window::to_pixel`]), and
+/// the position snapped to 1/256 pixel ([`window::snap_pixel`]).
 #[inline(always)]
 pub(super) fn to_screen(
     c: &Vector4<f32>,
@@ -178,15 +170,12 @@ pub(super) fn to_screen(
     (v, s)
 }
 
-/// Everything the triangle loop needs about one object, or `None` when
-/// its bounding box is wholly outside one plane of the view volume
-/// (counted in `stats`): the whole-object outcode tests, the per-vertex
-/// work ([`vertices`]), the lights within range, the material, and for
-/// Gouraud on a closed mesh the lit vertices.
+/// Everything the triangle loop needs about one object ([`Prep`]), or `None`
+/// when its bounding box is wholly outside one plane of the view volume.
 pub(super) fn prepare<'a>(
     obj: &'a Object,
     vs: &'a ViewSetup,
-    scene_lights: &[Light<f32>],
+    lights: &[Light<f32>],
     opt: &Options,
     stats: &mut Stats,
     bufs: &'a mut VertBufs,
@@ -220,15 +209,23 @@ pub(super) fn prepare<'a>(
     let radius = vertices(&obj.mesh.positions, &x, bufs).sqrt();
     let normals = (shading != Shading::Flat).then_some(opt.normals);
     vertex_normals(obj, vs, normals, &eye_from_model, &mut bufs.vn);
-    let lights = lights_in_range(scene_lights, &x.centre, radius, stats);
-    let material = material_of(obj, stats);
+    // A point or spot light with a range is out of reach when
+    // |pos − centre| − radius > range.
+    let far = |l: &&Light<f32>| match (&l.kind, l.range) {
+        (LightKind::Point { pos } | LightKind::Spot { pos, .. }, Some(r)) => {
+            (pos - x.centre).norm() - radius > r
+        }
+        _ => false,
+    };
+    let near: Vec<_> = lights.iter().filter(|l| !far(l)).map(light_as).collect();
+    stats.lights_skipped += (lights.len() - near.len()) as u64;
     let mut p = Prep {
         obj,
         x,
         v: bufs,
         lit: None,
-        material,
-        lights,
+        material: material_of(obj, stats),
+        lights: near,
         shading,
     };
     // Gouraud on a closed mesh without per-face colours: light each vertex once.
@@ -253,9 +250,8 @@ fn box_codes(obj: &Object, clip_from_model: &Matrix4<f64>) -> (u8, u8) {
     let [lo, hi] = obj.bounds;
     let (mut and, mut or) = (0x3f, 0);
     for k in 0..8 {
-        let q: [f64; 3] =
-            std::array::from_fn(|a| f64::from(if k & (1 << a) == 0 { lo[a] } else { hi[a] }));
-        let code = clip::outcode_clip_space(&camera::apply(clip_from_model, &Vector3::from(q)));
+        let q = Vector3::from_fn(|a, _| f64::from(if k & (1 << a) == 0 { lo[a] } else { hi[a] }));
+        let code = clip::outcode_clip_space(&camera::apply(clip_from_model, &q));
         and &= code;
         or |= code;
     }
@@ -287,37 +283,15 @@ fn vertex_normals(
             let (world, rot): (Matrix4<f32>, Matrix3<f32>) = (obj.model.cast(), rot.cast());
             ps.map(|&p| {
                 let v = rot * camera::to_world(&world, "", &p.into(), &mut NoTrace);
-                let n = if v.norm() > 0.0 { v.normalize() } else { v };
-                n.into()
+                (if v.norm() > 0.0 { v.normalize() } else { v }).into()
             })
             .collect_into_vec(vn);
         }
     }
 }
 
-/// The scene's lights that may reach an object whose vertices lie within
-/// `radius` of `centre` (eye space): a point or spot light with a range is
-/// out when |pos − centre| − radius > range (counted in `stats`).
-fn lights_in_range(
-    lights: &[Light<f32>],
-    centre: &Vector3<f32>,
-    radius: f32,
-    stats: &mut Stats,
-) -> Vec<Light<Fast32>> {
-    let far = |l: &&Light<f32>| match (&l.kind, l.range) {
-        (LightKind::Point { pos } | LightKind::Spot { pos, .. }, Some(r)) => {
-            (pos - centre).norm() - radius > r
-        }
-        _ => false,
-    };
-    let out: Vec<_> = lights.iter().filter(|l| !far(l)).map(light_as).collect();
-    stats.lights_skipped += (lights.len() - out.len()) as u64;
-    out
-}
-
-/// An object's material at the renderer's precision: its one colour when
-/// it has one, and no specular work when ks = 0, specular is off or the
-/// model has no specular term (counted in `stats`).
+/// An object's material at the renderer's precision: its one colour if it has
+/// one; no specular work when ks = 0, specular is off or the model has none.
 fn material_of(obj: &Object, stats: &mut Stats) -> Material<Fast32> {
     let mut material: Material<Fast32> = material_as(&obj.material);
     if let Colors::One(c) = obj.colors {
@@ -325,7 +299,7 @@ fn material_of(obj: &Object, stats: &mut Stats) -> Material<Fast32> {
     }
     let has_spec = matches!(
         material.model,
-        lighting::Model::Phong | lighting::Model::Blinn | lighting::Model::Specular
+        Model::Phong | Model::Blinn | Model::Specular
     );
     if material.ks.0 == 0.0 || !material.specular_on || !has_spec {
         material.specular_on = false;
@@ -345,9 +319,8 @@ pub(super) fn shading_of(obj: &Object, opt: &Options) -> Shading {
 /// Triangles per parallel chunk of the geometry stage.
 const CHUNK: usize = 2048;
 
-/// A set-up triangle the first pass found, in order: the object's triangle
-/// `i` (a back face of an open mesh when `back`), set up by the second
-/// pass; or the next of the chunk's clipped ones.
+/// A set-up triangle the first pass found: the object's triangle `i` (a back
+/// face of an open mesh when `back`), or the next of the chunk's clipped ones.
 #[derive(Clone, Copy, Debug)]
 enum Kept {
     Tri { i: u32, back: bool },
@@ -355,7 +328,7 @@ enum Kept {
 }
 
 /// One chunk's work between the two passes of the triangle stage (kept
-/// between frames, so a repeated render allocates nothing).
+/// between frames: a repeated render allocates nothing).
 #[derive(Clone, Debug, Default)]
 pub struct ChunkBuf {
     /// The set-up triangles the first pass found, in order.
@@ -379,10 +352,9 @@ pub(super) fn clip_xyzw(v: &ClipVert) -> Vector4<f32> {
     Vector4::from_column_slice(&v[..4])
 }
 
-/// The outcode and facing tests of triangle `idx` of an object: `None`
-/// when it is rejected (all three vertices outside one plane) or culled (a
-/// back face of a closed mesh), counted in `st`; else the planes it crosses
-/// and whether it is a back face (of an open mesh).
+/// The outcode and facing tests of triangle `idx`: `None` when rejected (all
+/// vertices outside one plane) or culled (a back face of a closed mesh); else
+/// the planes it crosses and whether it is a back face (of an open mesh).
 #[inline(always)]
 pub(super) fn test(
     p: &Prep,
@@ -399,24 +371,18 @@ pub(super) fn test(
     // Facing: the text's test N·(toward viewer) with N = (v1 − v0) × (v2 − v0).
     let [e0, e1, e2] = [a.e, b.e, c.e].map(Vector3::from);
     let n = (e1 - e0).cross(&(e2 - e0));
-    let front = if vs.ortho {
-        n.z > 0.0
-    } else {
-        n.dot(&e0) < 0.0
-    };
-    let closed = p.obj.closed;
-    if !front && closed && cull {
+    let front = if vs.ortho { n.z } else { -n.dot(&e0) } > 0.0;
+    if !front && p.obj.closed && cull {
         st.culled += 1;
         return None;
     }
-    Some(((a.code | b.code | c.code) as u8, !front && !closed))
+    Some(((a.code | b.code | c.code) as u8, !front && !p.obj.closed))
 }
 
 /// The corners of a kept triangle: per vertex the eye-space normal (flipped
-/// on a back face), eye position and surface colour, and the lit colour —
-/// flat: once per face, at the centroid with the polygon's normal; Gouraud:
-/// per vertex (from the object's lit vertices when it has them); Phong:
-/// none (lit per pixel). Lighting evaluations are counted in `st`.
+/// on a back face), eye position, surface colour and lit colour — flat: once
+/// per face, at the centroid; Gouraud: per vertex (from the object's lit
+/// vertices if it has them); Phong: none (lit per pixel).
 #[inline(always)]
 pub(super) fn corners(
     p: &Prep,
@@ -429,10 +395,14 @@ pub(super) fn corners(
     // An open mesh shows its back: light the side that is seen.
     let flip = if back { -1.0 } else { 1.0 };
     // Flat: colour, normal and position of the whole face; the polygon's
-    // normal is the triangle's own for a triangle, else Newell's average.
+    // normal n/|n|, n = Newell's sum over its eye-space vertices (the
+    // triangle's own for a triangle; the model's if n = 0).
     let flat = (p.shading == Shading::Flat).then(|| {
-        let f = face as usize;
-        let n = face_normal_eye(p, f).unwrap_or_else(|| p.obj.mesh.face_normal(f).into()) * flip;
+        let poly = &p.obj.mesh.faces[face as usize];
+        let d = |k: u32| p.v.eye(k as usize) - p.v.eye(poly[0] as usize);
+        let n: Vector3<f32> = poly[1..].windows(2).map(|w| d(w[0]).cross(&d(w[1]))).sum();
+        let n = (n.norm() > 0.0).then(|| n / n.norm());
+        let n = n.unwrap_or_else(|| p.obj.mesh.face_normal(face as usize).into()) * flip;
         let e = idx.map(|i| p.v.eye(i));
         let centre = (e[0] + e[1] + e[2]) / 3.0;
         let s = surface(p.obj, face, idx[0] as u32);
@@ -466,11 +436,10 @@ pub(super) fn corners(
     out
 }
 
-/// The first pass over chunk `c` of an object's triangles: outcode and
-/// facing tests; a triangle inside the view volume is kept when it covers
-/// a pixel centre ([`raster::snap_box_of`]); one that crosses a plane is
-/// lit, clipped and set up here ([`clip_tri`]; few do). Compiled for AVX2
-/// and FMA too, chosen at run time (the same bits).
+/// The first pass over chunk `c` of an object's triangles: [`test`]; one
+/// inside the view volume is kept if it covers a pixel centre
+/// ([`raster::snap_box_of`]), one that crosses a plane goes to [`clip_tri`].
+/// Compiled for AVX2 and FMA too, chosen at run time (the same bits).
 #[multiversion(targets("x86_64+avx2+fma"))]
 fn first_pass(
     p: &Prep,
@@ -501,9 +470,8 @@ fn first_pass(
             st.drawn += 1;
             buf.kept.push(Kept::Tri { i: i as u32, back });
         } else {
-            // Not lit, but counted as [`corners`] would (flat 1, Gouraud 3
-            // or 0 from lit vertices, Phong 0), as before the raster test
-            // moved ahead of lighting.
+            // Not lit, but counted as by [`corners`] (flat 1, Gouraud 3 or 0
+            // from lit vertices, Phong 0), as before raster tests came first.
             st.no_pixels += 1;
             st.lighting_evals += match (p.shading, &p.lit) {
                 (Shading::Flat, _) => 1,
@@ -515,10 +483,9 @@ fn first_pass(
     buf.stats = st;
 }
 
-/// The polygon of triangle `idx` (with corners `cs`) clipped against the
-/// planes `or` it crosses: its vertices' clip coordinates
-/// ([`projection::to_clip`]) followed by their corners, through
-/// [`clip::clip_polygon`], left in `poly`.
+/// Triangle `idx` (corners `cs`) clipped against the planes `or` it crosses:
+/// clip coordinates ([`projection::to_clip`]) followed by the corners,
+/// through [`clip::clip_polygon`], left in `poly`.
 pub(super) fn clipped_polygon(
     p: &Prep,
     idx: [usize; 3],
@@ -536,10 +503,9 @@ pub(super) fn clipped_polygon(
     clip::clip_polygon(poly, or, tmp, tr);
 }
 
-/// Triangle `i` of object `oi`, crossing the clip planes `or`: lit,
-/// clipped, and each triangle of its fan that covers a pixel centre set up
-/// into `buf.clipped` and kept. (Not inlined: rare, and kept out of the
-/// culling loop's registers.)
+/// Triangle `i` of object `oi`, crossing the planes `or`: lit, clipped, each
+/// fan triangle that covers a pixel centre set up into `buf.clipped`. (Not
+/// inlined: rare, and kept out of the culling loop's registers.)
 #[inline(never)]
 fn clip_tri(
     p: &Prep,
@@ -553,8 +519,8 @@ fn clip_tri(
     st.clipped += 1;
     let idx = p.obj.tris.tris[i].map(|i| i as usize);
     let cs = corners(p, idx, p.obj.tris.face[i], back, vs.ortho, st);
-    let [mut poly, mut tmp] = std::mem::take(&mut buf.poly);
-    clipped_polygon(p, idx, &cs, or, (&mut poly, &mut tmp), &mut NoTrace);
+    let [poly, tmp] = &mut buf.poly;
+    clipped_polygon(p, idx, &cs, or, (poly, tmp), &mut NoTrace);
     for k in 1..poly.len().saturating_sub(1) {
         let tri = [poly[0], poly[k], poly[k + 1]];
         let sv = tri.map(|v| to_screen(&clip_xyzw(&v), p.x.win, p.x.size, "", &mut NoTrace));
@@ -563,15 +529,12 @@ fn clip_tri(
             continue;
         };
         (t.obj, t.src) = (oi, i as u32);
-        let mut cs = tri.map(|v| -> Corner { std::array::from_fn(|i| v[i + 4]) });
-        if swap {
-            cs.swap(1, 2);
-        }
-        buf.clipped.push((t, cs));
+        let [a, b, c] = tri.map(|v| -> Corner { std::array::from_fn(|i| v[i + 4]) });
+        buf.clipped
+            .push((t, if swap { [a, c, b] } else { [a, b, c] }));
         buf.kept.push(Kept::Clipped);
         st.drawn += 1;
     }
-    buf.poly = [poly, tmp];
 }
 
 /// Where the second pass writes one chunk's set-up triangles: the frame's
@@ -585,11 +548,9 @@ struct Dest<'t> {
 }
 
 /// The second pass over one chunk, straight into the frame's arrays: lights
-/// and sets up the triangles the first pass kept inside the view volume,
-/// copies the clipped ones; Phong's planes when the frame keeps planes (the
-/// default for another shading); bins (rows y0..=y1 are in bands
-/// y0/BAND..=y1/BAND). Compiled for AVX2 and FMA too, chosen at run time
-/// (the same bits: no operation is fused or reordered).
+/// and sets up the kept triangles, copies the clipped ones, Phong's planes
+/// (default for other shadings), bins (rows y0..=y1 in bands
+/// y0/BAND..=y1/BAND). Compiled for AVX2 and FMA too (the same bits).
 #[multiversion(targets("x86_64+avx2+fma"))]
 fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut ChunkBuf, d: Dest) {
     buf.bins
@@ -630,8 +591,7 @@ fn second_pass(p: &Prep, oi: u32, vs: &ViewSetup, opt: &Options, buf: &mut Chunk
     }
 }
 
-/// The first `n` entries of `s` (all when it is shorter); `s` keeps the
-/// rest.
+/// The first `n` entries of `s` (all when shorter); `s` keeps the rest.
 fn take_front<'a, T>(s: &mut &'a mut [T], n: usize) -> &'a mut [T] {
     let all = std::mem::take(s);
     let (a, rest) = all.split_at_mut(n.min(all.len()));
@@ -639,13 +599,10 @@ fn take_front<'a, T>(s: &mut &'a mut [T], n: usize) -> &'a mut [T] {
     a
 }
 
-/// The triangles of one object: reject, cull, light (flat: per face,
-/// Gouraud: per corner), clip, set up, Phong's planes, binned by band; in
-/// submission order. Two parallel passes over chunks: the first finds how
-/// many set-up triangles each chunk gives, so the second writes them
-/// straight into `tris`, `corners` and `planes` from index `first` (grown
-/// as needed; nothing is copied between them). Returns the number written
-/// and the counters (with `binning`: the time of merging the bins).
+/// The triangles of one object, in submission order, into `out` from index
+/// `first`: two parallel passes over chunks, the first counting each chunk's
+/// set-up triangles so the second writes them in place. Returns the number
+/// written and the counters (with `binning`: the time of merging the bins).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn triangles(
     p: &Prep,
@@ -698,13 +655,11 @@ pub(super) fn triangles(
             bin.extend_from_slice(&buf.bins[b]);
         }
     });
-    let mut st = Stats {
-        binning: t0.elapsed(),
-        ..Stats::default()
-    };
+    let mut st = Stats::default();
     for b in &bufs {
         st.add(&b.stats);
     }
+    st.binning = t0.elapsed();
     pool.extend(bufs);
     (end - first, st)
 }
@@ -717,20 +672,9 @@ pub(super) struct Output<'f> {
     pub(super) corners: &'f mut Vec<[Corner; 3]>,
     pub(super) planes: &'f mut Vec<Planes>,
     pub(super) bins: &'f mut Vec<Vec<u32>>,
-    /// Whether corners and planes are kept: corners when some object is
-    /// shaded flat or Gouraud (they hold its colours), planes when some
-    /// object is shaded by Phong (its per-pixel attributes).
+    /// Whether corners are kept (some object is shaded flat or Gouraud) and
+    /// planes (some object is shaded by Phong).
     pub(super) keep: [bool; 2],
-}
-
-/// The eye-space normal of polygon `f` (Newell's sum over its eye-space
-/// vertices), `None` if degenerate.
-fn face_normal_eye(p: &Prep, f: usize) -> Option<Vector3<f32>> {
-    let face = &p.obj.mesh.faces[f];
-    let e = |k: u32| p.v.eye(k as usize) - p.v.eye(face[0] as usize);
-    let n: Vector3<f32> = face[1..].windows(2).map(|w| e(w[0]).cross(&e(w[1]))).sum();
-    let l = n.norm();
-    (l > 0.0).then(|| n / l)
 }
 
 #[cfg(test)]
