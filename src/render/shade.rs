@@ -592,16 +592,6 @@ impl Batch {
     }
 }
 
-/// A material at another precision ([`Material::cast`]).
-pub fn material_as<S: Scalar, T: Scalar>(m: &Material<S>) -> Material<T> {
-    m.cast()
-}
-
-/// A light at another precision ([`Light::cast`]).
-pub fn light_as<S: Scalar, T: Scalar>(l: &Light<S>) -> Light<T> {
-    l.cast()
-}
-
 /// The colour of pixel (i, j) covered by triangle `t`: flat and Gouraud
 /// interpolate stored colours (no lighting here), Phong interpolates the
 /// normal, position and surface colour and calls `lighting::shade`.

@@ -270,7 +270,7 @@ fn vertex_steps(p: &geometry::Prep, idx: [usize; 3], rec: &mut Recorder) -> [Vec
     for (k, c) in clip.iter_mut().enumerate() {
         rec.section(Msg::Pixel(PixelMsg::SecVertex(k)));
         let (name, pos) = (format!("V{k}"), obj.mesh.positions[idx[k]]);
-        camera::to_world(&model, &name, &geometry::v3(pos), rec);
+        camera::to_world(&model, &name, &pos.into(), rec);
         let (_, c_k, code) = geometry::vertex_clip(&p.x, pos, &name, rec);
         *c = c_k;
         let note = if p.x.inside {
