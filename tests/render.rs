@@ -125,7 +125,7 @@ fn overlapping_objects_resolve_by_depth_whichever_is_drawn_first() {
 
 #[test]
 fn a_frame_rendered_into_the_last_frames_buffers_is_the_same() {
-    // `render_reusing` draws into the previous frame's buffers (and each
+    // `render_observed` draws into the previous frame's buffers (and each
     // worker thread's z-buffer): the same scene drawn again, and after a
     // different scene of the same size, must give the same frame as a
     // fresh render, down to the depth per pixel.
@@ -136,7 +136,7 @@ fn a_frame_rendered_into_the_last_frames_buffers_is_the_same() {
     let mut last = render::render(&other, &opt).unwrap();
     assert_ne!(last.rgb, fresh.rgb);
     for _ in 0..3 {
-        last = render::render_reusing(&s, &opt, Some(last)).unwrap();
+        last = render::render_observed(&s, &opt, Some(last), &|| {}).unwrap();
         assert_eq!(last.rgb, fresh.rgb);
         assert_eq!(last.ids, fresh.ids);
     }

@@ -1,20 +1,17 @@
-//! The renderer: the calculator's stages at scale.
+//! The renderer: the calculator's stages at scale. Per vertex, eye and
+//! clip coordinates (`camera::eye_by_matrix`, `projection::to_clip`, over
+//! the view of `stages::view`) and the outcode (`clip::outcode_clip`);
+//! per triangle, rejection, culling, clipping (`clip::clip_polygon`), the
+//! perspective division, viewport and snapping (`projection::divide`,
+//! `window::to_pixel`, `window::snap_pixel`); then raster (fill rule,
+//! z-buffer) and shading (`lighting::shade` at f32): flat per face,
+//! Gouraud per vertex, Phong per pixel.
 //!
-//! model → view (`camera::basis`, `camera::view_matrix`, or the text's tilt)
-//! → clip space (`projection::perspective_matrix` / `ortho_matrix` over the
-//! window from `window::window`) → homogeneous outcodes
-//! (`clip::outcode_clip_space`: trivial accept/reject of objects and
-//! triangles) → clipping of the triangles that cross a plane (so no divide by
-//! w ≤ 0) → viewport (`window::viewport_xy`) → raster (`raster`: fill rule,
-//! z-buffer) → shading (`lighting::shade`, with `NoTrace`, at f32): flat per
-//! face, Gouraud per vertex, Phong per pixel.
-//!
-//! The frame is rendered band by band (32 rows), the bands in parallel:
-//! first a band's visibility (the nearest triangle per pixel), then its
-//! shading (each visible pixel lit once), so the lighting work does not
-//! depend on how many triangles overlap a pixel, and the output does not
-//! depend on the number of threads (each band draws its triangles in
-//! submission order).
+//! The frame is drawn in bands of 32 rows, in parallel: a band's
+//! visibility (the nearest triangle per pixel), then its shading (each
+//! visible pixel lit once), so the lighting work does not depend on how
+//! many triangles overlap a pixel, nor the output on the number of threads
+//! (each band draws its triangles in submission order).
 
 use crate::error::Result;
 use crate::input::scene::{Normals, Scene, Shading};
@@ -231,17 +228,13 @@ pub fn release_unused(scene: &mut Scene, opt: &Options) {
 
 /// Renders a scene.
 pub fn render(scene: &Scene, opt: &Options) -> Result<Frame> {
-    render_reusing(scene, opt, None)
+    render_observed(scene, opt, None, &|| {})
 }
 
 /// Renders a scene into the buffers of a previous frame when it has the
-/// same size (as a real-time loop would: no fresh allocation per frame).
-pub fn render_reusing(scene: &Scene, opt: &Options, prev: Option<Frame>) -> Result<Frame> {
-    render_observed(scene, opt, prev, &|| {})
-}
-
-/// [`render_reusing`], calling `band_done` as each band of [`BAND`] rows
-/// is finished (from the worker threads): for a progress bar.
+/// same size (as a real-time loop would: no fresh allocation per frame),
+/// calling `band_done` as each band of [`BAND`] rows is finished (from the
+/// worker threads): for a progress bar.
 pub fn render_observed(
     scene: &Scene,
     opt: &Options,
