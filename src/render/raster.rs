@@ -100,17 +100,11 @@ pub fn snap_box_of(s: [[i64; 2]; 3], w: u32, h: u32) -> Option<Snapped> {
         x.swap(1, 2);
         y.swap(1, 2);
     }
-    let lo = |v: [i64; 3]| {
-        (v[0].min(v[1]).min(v[2]) - HALF + ONE - 1)
-            .div_euclid(ONE)
-            .max(0)
-    };
-    let hi = |v: [i64; 3], n: u32| {
-        (v[0].max(v[1]).max(v[2]) - HALF)
-            .div_euclid(ONE)
-            .min(n as i64 - 1)
-    };
-    let bbox = [lo(x), hi(x, w), lo(y), hi(y, h)];
+    let lo = |m: i64| (m - HALF + ONE - 1).div_euclid(ONE).max(0);
+    let hi = |m: i64, n: u32| (m - HALF).div_euclid(ONE).min(n as i64 - 1);
+    let (x0, x1) = (x[0].min(x[1]).min(x[2]), x[0].max(x[1]).max(x[2]));
+    let (y0, y1) = (y[0].min(y[1]).min(y[2]), y[0].max(y[1]).max(y[2]));
+    let bbox = [lo(x0), hi(x1, w), lo(y0), hi(y1, h)];
     (area != 0 && bbox[0] <= bbox[1] && bbox[2] <= bbox[3]).then(|| Snapped {
         x,
         y,
@@ -265,7 +259,7 @@ fn raster_one(t: &Tri, id: u32, r0: u32, r1: u32, w: usize, dz: &mut [f32], ids:
     let n = ((x1 - x0) as usize + 1)
         .next_multiple_of(LANES)
         .min(w - x0 as usize);
-    match (fits_i32(t), n) {
+    match (fits_i32(t, (ya, yb), n), n) {
         (true, LANES) => rows::<i32>(t, id, (ya, yb, r0, w), LANES, dz, ids),
         (true, 16) => rows::<i32>(t, id, (ya, yb, r0, w), 2 * LANES, dz, ids),
         (true, n) => rows::<i32>(t, id, (ya, yb, r0, w), n, dz, ids),
@@ -273,17 +267,27 @@ fn raster_one(t: &Tri, id: u32, r0: u32, r1: u32, w: usize, dz: &mut [f32], ids:
     }
 }
 
-/// Whether every E_k the raster computes for `t` fits in an i32: when
+/// Whether every E_k drawn from row ya to yb, in `n` columns from x0 rounded
+/// up to whole blocks, fits in an i32. First by a bound on the triangle:
 /// Y·(2·X + 2048) < 2³¹, X and Y the largest |b_k| and |a_k| (the vertices'
 /// spans in x and in y, 1/256 pixel). Why: the box's pixel centres lie within
 /// those spans, so a drawn centre P (columns up to 7 past the box) is within
 /// X + 7·256 in x and Y in y of any vertex V. With V on edge k,
 /// E_k(P) = a_k·(Px − Vx) + b_k·(Py − Vy) (− 1 for the fill rule), so
-/// |E_k| ≤ Y·(X + 1792) + X·Y + 1.
+/// |E_k| ≤ Y·(X + 1792) + X·Y + 1. Failing that, exactly: E_k is affine, so
+/// its least (greatest) value is E_k(x0, ya) plus those of 256·a_k·(columns
+/// − 1) and 256·b_k·(yb − ya) that are negative (positive).
 #[inline(always)]
-fn fits_i32(t: &Tri) -> bool {
+fn fits_i32(t: &Tri, (ya, yb): (u32, u32), n: usize) -> bool {
     let most = |v: [i32; 3]| u64::from(v.map(i32::unsigned_abs).into_iter().max().unwrap_or(0));
     most(t.a) * (2 * most(t.b) + 2048) < 1 << 31
+        || (0..3).all(|k| {
+            let (di, dj) = (n.next_multiple_of(LANES) as i64 - 1, i64::from(yb - ya));
+            let e = edge(t, k, t.bbox[0].into(), ya.into());
+            let (s, r) = (i64::from(t.a[k]) * ONE * di, i64::from(t.b[k]) * ONE * dj);
+            let ends = [e + s.min(0) + r.min(0), e + s.max(0) + r.max(0)];
+            ends.iter().all(|&v| v == i64::from(v as i32))
+        })
 }
 
 /// Draws rows ya..=yb of `t` in columns x0..x0 + n, LANES at a time, with
@@ -329,14 +333,14 @@ fn rows<L>(
         let ((dc, dr), (ic, ir)) = (dz[o..o + n].as_chunks_mut(), ids[o..o + n].as_chunks_mut());
         let mut e = er;
         for (q, (d, ib)) in dc.iter_mut().zip(ic).enumerate() {
-            draw(&e, zr, q * LANES, id, (d, ib));
+            draw(&e, zr, (q * LANES) as i32, id, (d, ib));
             step(&mut e, block);
         }
         if !dr.is_empty() {
             let (m, mut d, mut ib) = (dr.len(), [f32::NEG_INFINITY; LANES], [0; LANES]);
             d[..m].copy_from_slice(dr);
             ib[..m].copy_from_slice(ir);
-            draw(&e, zr, n - m, id, (&mut d, &mut ib));
+            draw(&e, zr, (n - m) as i32, id, (&mut d, &mut ib));
             dr.copy_from_slice(&d[..m]);
             ir.copy_from_slice(&ib[..m]);
         }
@@ -353,12 +357,12 @@ fn rows<L>(
 fn draw<L: PrimInt>(
     e: &[[L; LANES]; 3],
     (zr, zx): (f32, f32),
-    q: usize,
+    q: i32,
     id: u32,
     (d, ib): (&mut [f32; LANES], &mut [u32; LANES]),
 ) {
     for c in 0..LANES {
-        let z = zr + zx * (q + c) as f32;
+        let z = zr + zx * (q + c as i32) as f32;
         let inside = (e[0][c] | e[1][c] | e[2][c]) >= L::zero();
         let s = 0u32.wrapping_sub(u32::from(inside & (z < d[c])));
         d[c] = f32::from_bits((z.to_bits() & s) | (d[c].to_bits() & !s));
@@ -540,10 +544,17 @@ mod tests {
         // Triangles drawn in i64 lanes, in i32 lanes with 1, 2 and more
         // blocks per row, and with a last block cut at the image's edge.
         let mut kinds = [0usize; 5];
-        for (w, h, n) in [(301u32, 70u32, 600), (13, 40, 100), (5, 40, 100)] {
-            for (n, t) in random_tris(7, n, w, h).iter().enumerate() {
+        for (w, h, count) in [
+            (301u32, 70u32, 600),
+            (1500, 40, 100),
+            (13, 40, 100),
+            (5, 40, 100),
+        ] {
+            for (n, t) in random_tris(7, count, w, h).iter().enumerate() {
                 let blocks = (t.bbox[1] - t.bbox[0]) as usize / LANES + 1;
-                kinds[if fits_i32(t) { blocks.min(3) } else { 0 }] += 1;
+                let cols = (blocks * LANES).min((w - t.bbox[0]) as usize);
+                let fits = fits_i32(t, (t.bbox[2], t.bbox[3]), cols);
+                kinds[if fits { blocks.min(3) } else { 0 }] += 1;
                 kinds[4] += usize::from(t.bbox[0] as usize + blocks * LANES > w as usize);
                 for pass in PASSES {
                     for r0 in (0..h).step_by(BAND) {
@@ -574,27 +585,30 @@ mod tests {
 
     #[test]
     fn fits_i32_bounds_every_edge_value_drawn() {
-        // Wherever `fits_i32` accepts a triangle, E_k at the corners of the
-        // pixels drawn (rows y0..=y1, columns x0 up to whole blocks; E_k is
-        // affine, so its extremes are there), computed exactly, is an i32.
+        // Wherever `fits_i32` accepts a triangle from one of its rows ya,
+        // E_k at the corners of the pixels drawn (rows ya..=y1, columns x0
+        // up to whole blocks; E_k is affine, so its extremes are there),
+        // computed exactly, is an i32.
         let (w, h) = (301u32, 70u32);
         let (mut fit, mut wide) = (0, 0);
         for t in random_tris(5, 3000, w, h) {
-            if !fits_i32(&t) {
-                wide += 1;
-                continue;
-            }
-            fit += 1;
-            let [x0, x1, y0, y1] = t.bbox.map(i64::from);
-            let xe = x0 + ((x1 - x0) as u64 + 1).next_multiple_of(LANES as u64) as i64 - 1;
-            for (k, i, j) in
-                (0..3).flat_map(|k| [(k, x0, y0), (k, xe, y0), (k, x0, y1), (k, xe, y1)])
-            {
-                let e = edge(&t, k, i, j);
-                assert_eq!(e, i64::from(e as i32), "{t:?}");
+            let [x0, x1, y0, y1] = t.bbox;
+            let n = ((x1 - x0) as usize + 1).next_multiple_of(LANES);
+            for ya in y0..=y1 {
+                if !fits_i32(&t, (ya, y1), n) {
+                    wide += 1;
+                    continue;
+                }
+                fit += 1;
+                for (i, j) in [(0, ya), (n - 1, ya), (0, y1), (n - 1, y1)] {
+                    for k in 0..3 {
+                        let e = edge(&t, k, i64::from(x0) + i as i64, j.into());
+                        assert_eq!(e, i64::from(e as i32), "{t:?}");
+                    }
+                }
             }
         }
-        assert!(fit > 1000 && wide > 100, "{fit} {wide}");
+        assert!(fit > 10000 && wide > 1000, "{fit} {wide}");
     }
 
     #[test]
