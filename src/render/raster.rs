@@ -349,9 +349,9 @@ fn rows<L>(
     }
 }
 
-/// Draws the block of columns q..q + LANES of a row whose depth is
-/// z = z_r + z_x·q there: a column is drawn where every E_k ≥ 0 and z is
-/// strictly nearer. Masks and selects, not branches, so the block
+/// Draws the block of columns x0 + q..x0 + q + LANES of a row, whose depth
+/// at column x0 + p is z = z_r + z_x·p: a column is drawn where every E_k ≥ 0
+/// and z is strictly nearer. Masks and selects, not branches, so the block
 /// vectorizes and overdraw costs no mispredictions.
 #[inline(always)]
 fn draw<L: PrimInt>(
