@@ -76,12 +76,6 @@ impl Mask8 {
     }
 }
 
-impl PartialEq for Mask8 {
-    fn eq(&self, o: &Mask8) -> bool {
-        self.words() == o.words()
-    }
-}
-
 impl From<bool> for Mask8 {
     #[inline(always)]
     fn from(b: bool) -> Mask8 {
@@ -140,12 +134,6 @@ impl F32x8 {
     pub fn map(self, f: impl Fn(f32) -> f32) -> F32x8 {
         F32x8::from_array(self.to_array().map(f))
     }
-    /// True in the lanes where `self` > `o`.
-    #[inline(always)]
-    fn gt_lanes(self, o: F32x8) -> Mask8 {
-        let (a, b) = (self.to_array(), o.to_array());
-        Mask8::from_bools(lanes!(k => a[k] > b[k]))
-    }
     /// Column a of eight rows of twelve values as lanes, a = 0…N − 1: lane k
     /// of result a is `q[k][a]` (the lanes of a batch from its pixels' rows).
     #[inline(always)]
@@ -170,7 +158,7 @@ impl F32x8 {
         let c = self.max_of(&F32x8::splat(0.0)).min_of(&F32x8::splat(255.0));
         let r = c + m;
         // All bits set (−1) in the lanes rounded up.
-        let up = (r - m).gt_lanes(c).words();
+        let up = (r - m).gt_mask(&c).words();
         let bits = r.to_array();
         lanes!(k => bits[k].to_bits().wrapping_add(up[k]) & 0xff)
     }
@@ -232,9 +220,9 @@ impl PartialOrd for F32x8 {
     fn partial_cmp(&self, o: &F32x8) -> Option<Ordering> {
         if self == o {
             Some(Ordering::Equal)
-        } else if o.gt_lanes(*self).all() {
+        } else if o.gt_mask(self).all() {
             Some(Ordering::Less)
-        } else if self.gt_lanes(*o).all() {
+        } else if self.gt_mask(o).all() {
             Some(Ordering::Greater)
         } else {
             None
@@ -296,7 +284,8 @@ impl Scalar for F32x8 {
     }
     #[inline(always)]
     fn gt_mask(&self, o: &Self) -> Mask8 {
-        self.gt_lanes(*o)
+        let (a, b) = (self.to_array(), o.to_array());
+        Mask8::from_bools(lanes!(k => a[k] > b[k]))
     }
     /// The bits of `a` where `m` is set, else of `b`.
     #[inline(always)]
@@ -487,7 +476,7 @@ mod tests {
         // everywhere either; > 0 lane by lane in lanes 1…7.
         let (all_gt, all_le) = (a > zero, a <= zero);
         assert!(!all_gt && !all_le);
-        assert_eq!(a.gt_mask(&zero), Mask8::from_bits(0xfe));
+        assert_eq!(a.gt_mask(&zero).words(), Mask8::from_bits(0xfe).words());
         assert!(a.gt_mask(&zero).any() && !zero.gt_mask(&a).any());
         assert_eq!(a.partial_cmp(&zero), None);
         assert!(a + F32x8::splat(1.0) > zero);
@@ -499,8 +488,8 @@ mod tests {
         assert!(a != zero);
         // Masks combine lane by lane.
         let (m, o) = (Mask8::from_bits(0b1100), Mask8::from_bits(0b1010));
-        assert_eq!(m & o, Mask8::from_bits(0b1000));
-        assert_eq!(!m, Mask8::from_bits(0xf3));
+        assert_eq!((m & o).words(), Mask8::from_bits(0b1000).words());
+        assert_eq!((!m).words(), Mask8::from_bits(0xf3).words());
         assert!(Mask8::from(true).all() && !Mask8::from(false).any());
     }
 

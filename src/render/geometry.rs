@@ -689,7 +689,7 @@ mod tests {
         let text = include_str!("../../tests/common/mixed.toml");
         let s = Scene::parse(text, "mixed.toml", std::path::Path::new(".")).unwrap();
         let opt = Options::of(&s);
-        let vs = super::super::view_setup(&s, opt.width, opt.height).unwrap();
+        let vs = crate::stages::view::setup(&s.view, opt.width, opt.height, &mut NoTrace).unwrap();
         let mut checked = 0;
         for obj in &s.objects {
             let (mut stats, mut bufs) = (Stats::default(), VertBufs::default());

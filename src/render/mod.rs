@@ -124,7 +124,7 @@ impl Stats {
 }
 
 /// A rendered frame.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct Frame {
     /// Width in pixels.
     pub width: u32,
@@ -152,7 +152,7 @@ pub struct Frame {
 
 /// Working buffers a frame hands on to the next (so a repeated render
 /// touches no fresh memory pages).
-#[derive(Clone, Debug, Default)]
+#[derive(Debug, Default)]
 struct Scratch {
     /// Phong's attribute planes per triangle.
     planes: Vec<Planes>,
@@ -166,15 +166,9 @@ struct Scratch {
 
 /// One band's z-buffer per worker thread of the pool (entry k for thread
 /// k), reused band after band so it stays in the thread's cache; no
-/// frame-sized depth buffer is written. A clone starts empty.
+/// frame-sized depth buffer is written.
 #[derive(Debug, Default)]
 struct DepthBufs(Vec<Mutex<Vec<f32>>>);
-
-impl Clone for DepthBufs {
-    fn clone(&self) -> DepthBufs {
-        DepthBufs::default()
-    }
-}
 
 impl DepthBufs {
     /// Runs `f` on a z-buffer of `n` entries (contents unspecified): the
@@ -205,11 +199,6 @@ pub struct Look {
     /// The object has one colour, which `material.color` holds: every
     /// pixel's surface colour is that one (Phong need not interpolate it).
     pub one_colour: bool,
-}
-
-/// The view of a scene at an image size ([`view::setup`]).
-pub fn view_setup(scene: &Scene, w: u32, h: u32) -> Result<ViewSetup> {
-    view::setup(&scene.view, w, h, &mut NoTrace)
 }
 
 /// Frees what no step of a render with `opt` reads: the polygon lists
@@ -243,7 +232,7 @@ pub fn render_observed(
 ) -> Result<Frame> {
     crate::input::scene::check_size(opt.width, opt.height)?;
     let t0 = Instant::now();
-    let vs = view_setup(scene, opt.width, opt.height)?;
+    let vs = view::setup(&scene.view, opt.width, opt.height, &mut NoTrace)?;
     let n = (opt.width * opt.height) as usize;
     let mut f = match prev {
         Some(f) if f.rgb.len() == 3 * n => f,

@@ -26,19 +26,11 @@ pub fn light_at(
     ortho: bool,
     tr: &mut impl Trace,
 ) -> [f32; 3] {
-    // A one-colour object's material already holds its colour: no copy.
-    let color = color.map(Fast32);
-    let recoloured;
-    let m = if mat.color == color {
-        mat
-    } else {
-        recoloured = Material {
-            color,
-            ..mat.clone()
-        };
-        &recoloured
+    let m = Material {
+        color: color.map(Fast32),
+        ..mat.clone()
     };
-    lit(m, lights, n.map(Fast32), p.map(Fast32), ortho, tr).map(|c| c.0)
+    lit(&m, lights, n.map(Fast32), p.map(Fast32), ortho, tr).map(|c| c.0)
 }
 
 /// `lighting::shade` of a material that already holds the surface colour,
@@ -65,11 +57,7 @@ fn lit<T: Scalar, Tr: Trace>(
         normal: n,
         view: Vector3::new(o.clone(), o.clone(), i),
         position: p,
-        camera: if ortho {
-            None
-        } else {
-            Some(Vector3::new(o.clone(), o.clone(), o))
-        },
+        camera: (!ortho).then(|| Vector3::new(o.clone(), o.clone(), o)),
     };
     if Tr::ON {
         lighting::shade(m, lights, &s, tr).color
@@ -261,16 +249,12 @@ impl PhongIndex {
     /// object o's are `ranges[o]` = [lo, hi) (hi = lo when it has none),
     /// shaded as `looks[o]` says.
     pub fn new(n: usize, ranges: &[[u32; 2]], looks: &[Look]) -> PhongIndex {
+        let phong = |(&r, l): (&[u32; 2], &Look)| (l.shading == Shading::Phong).then_some(r);
         let range: Vec<[u32; 2]> = ranges
             .iter()
             .zip(looks)
-            .map(|(&r, l)| {
-                if l.shading == Shading::Phong {
-                    r
-                } else {
-                    [0, 0]
-                }
-            })
+            .map(phong)
+            .map(Option::unwrap_or_default)
             .collect();
         let mut obj = vec![NONE; n + 1];
         for (o, &[lo, hi]) in range.iter().enumerate() {
@@ -412,8 +396,7 @@ fn shade_row(
 }
 
 /// A run of flat or Gouraud pixels (i, j), (i + 1, j), … of triangle `tri`
-/// with corners `c`: what `pixel_color` gives, with the shading mode
-/// decided once per run (flat is one colour for the whole run).
+/// with corners `c`: what `pixel_color` gives, the mode decided per run.
 #[inline(always)]
 fn corner_run(tri: &Tri, c: &[Corner; 3], flat: bool, i: usize, j: u32, out: &mut [u8]) {
     let span = out.chunks_exact_mut(3);
@@ -449,8 +432,8 @@ fn run_length(ids: &[u32], t: u32) -> usize {
         .unwrap_or(ids.len() - n)
 }
 
-/// An object's material (its colour replaced per batch by Phong, unless
-/// the object has one colour) and the lights that reach it, at [`F32x8`].
+/// An object's material (recoloured per batch unless it has one colour)
+/// and its lights, at [`F32x8`].
 struct LitObj {
     mat: Material<F32x8>,
     lights: Vec<Light<F32x8>>,
@@ -475,14 +458,10 @@ struct Batch {
 }
 
 impl Batch {
-    /// Puts pixels i0, i0 + 1, … of a run of `n` pixels covered by one
-    /// triangle, whose planes along the row are `row`, into the free lanes:
-    /// q = r + cx·di as [`Planes::at`] computes it. Returns how many pixels
-    /// it took.
-    ///
-    /// Pixel by pixel, all planes of a pixel at once: runs are short (three
-    /// pixels on average in the reference scene), too short for work across
-    /// the eight lanes to pay; [`F32x8::from_rows`] turns the rows into lanes.
+    /// Puts pixels i0, i0 + 1, … of a run of `n` pixels of one triangle,
+    /// with planes `row` along the row, into the free lanes: q = r + cx·di
+    /// as [`Planes::at`] computes it, pixel by pixel (runs are about three
+    /// pixels long). Returns how many pixels it took.
     #[inline(always)]
     fn fill(&mut self, row: &Row, i0: u32, n: usize) -> usize {
         let (base, m) = (self.len, n.min(LANES - self.len));
@@ -595,7 +574,6 @@ impl Batch {
 /// The colour of pixel (i, j) covered by triangle `t`: flat and Gouraud
 /// interpolate stored colours (no lighting here), Phong interpolates the
 /// normal, position and surface colour and calls `lighting::shade`.
-#[allow(clippy::too_many_arguments)]
 #[inline]
 pub fn pixel_color(
     t: &Tri,
