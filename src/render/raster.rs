@@ -143,19 +143,16 @@ pub fn setup_into(v: &[[f32; 2]; 3], s: &Snapped, t: &mut Tri) {
     }
     let (x, y, area) = (s.x, s.y, s.area as f64);
     let (ox, oy) = (s.bbox[0] as i64 * ONE + HALF, s.bbox[2] as i64 * ONE + HALF);
-    let p: [[f64; 3]; 3] = std::array::from_fn(|k| {
+    // A loop, not `array::from_fn`, which the compiler left as a call.
+    let mut p = [[0.0f64; 3]; 3];
+    for (k, p) in p.iter_mut().enumerate() {
         let (i, j) = ((k + 1) % 3, (k + 2) % 3);
         let (a, b) = (y[i] - y[j], x[j] - x[i]);
         let c = -a * x[i] - b * y[i];
         (t.a[k], t.b[k]) = (a as i32, b as i32);
         t.c[k] = c - i64::from(a < 0 || (a == 0 && b <= 0));
-        [
-            (a * ox + b * oy + c) as f64,
-            (a * ONE) as f64,
-            (b * ONE) as f64,
-        ]
-        .map(|e| e / area)
-    });
+        *p = [a * ox + b * oy + c, a * ONE, b * ONE].map(|e| e as f64 / area);
+    }
     let z = v.map(|p| f64::from(p[0]));
     t.bbox = s.bbox;
     t.z = std::array::from_fn(|i| (p[0][i] * z[0] + p[1][i] * z[1] + p[2][i] * z[2]) as f32);
