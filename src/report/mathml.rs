@@ -45,18 +45,49 @@ pub fn row(s: &str) -> String {
             i = next;
             items.push(num);
         } else if c.is_alphabetic() {
-            let start = i;
-            while i < chars.len() && (chars[i].is_alphabetic() || chars[i] == '_') {
-                i += 1;
-            }
-            let name: String = chars[start..i].iter().collect();
-            items.push(format!("<mi>{}</mi>", xml_escape(&name)));
+            let (item, next) = name_or_words(&chars, i);
+            i = next;
+            items.push(item);
         } else {
             i += 1;
             items.push(operator(c));
         }
     }
     format!("<mrow>{}</mrow>", items.concat())
+}
+
+/// A name from `i` as `<mi>`, or, when a word of two letters or more is
+/// followed by more such words (`polygon face`, `object's triangle`,
+/// `at the centre`), the words as one `<mtext>`: MathML sets the
+/// identifiers of a row side by side, so separate names would lose the
+/// spaces between words. Returns the item and where it ends.
+fn name_or_words(chars: &[char], i: usize) -> (String, usize) {
+    let word_end = |mut k: usize| {
+        while k < chars.len() && (chars[k].is_alphabetic() || chars[k] == '_') {
+            k += 1;
+        }
+        k
+    };
+    let mut end = word_end(i);
+    let mut words = end - i >= 2;
+    let mut phrase = false;
+    while words {
+        // The next word: after spaces, or after an apostrophe (object's).
+        let mut k = end;
+        while k < chars.len() && chars[k] == ' ' {
+            k += 1;
+        }
+        let apostrophe = k == end && matches!(chars.get(k), Some('\'' | '’'));
+        let start = if apostrophe { k + 1 } else { k };
+        let next = word_end(start);
+        words = (k > end || apostrophe) && next > start && (apostrophe || next - start >= 2);
+        if words {
+            (end, phrase) = (next, true);
+        }
+    }
+    let text: String = chars[i..end].iter().collect();
+    let tag = if phrase { "mtext" } else { "mi" };
+    (format!("<{tag}>{}</{tag}>", xml_escape(&text)), end)
 }
 
 /// A symbol as `<mo>`; brackets and the slash of an inline fraction are
@@ -197,6 +228,29 @@ fn subscript(c: char) -> Option<char> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn words_are_one_text_and_names_stay_identifiers() {
+        assert_eq!(
+            row("polygon face ="),
+            "<mrow><mtext>polygon face</mtext><mo>=</mo></mrow>"
+        );
+        assert_eq!(
+            row("object's triangle = 17"),
+            "<mrow><mtext>object's triangle</mtext><mo>=</mo><mn>17</mn></mrow>"
+        );
+        // notation keeps its names: one-letter names, and names apart
+        // from words by operators
+        assert_eq!(
+            row("top = near·tan"),
+            "<mrow><mi>top</mi><mo>=</mo><mi>near</mi><mo>·</mo><mi>tan</mi></mrow>"
+        );
+        assert_eq!(row("a b"), "<mrow><mi>a</mi><mi>b</mi></mrow>");
+        assert_eq!(
+            row("z at the vertices"),
+            "<mrow><mi>z</mi><mtext>at the vertices</mtext></mrow>"
+        );
+    }
 
     #[test]
     fn a_surd_with_its_decimal() {
