@@ -18,7 +18,7 @@ h4{font-size:1.05rem;margin:1rem 0 .2rem}h5{font-size:1rem;margin:.2rem 0}\
 section.step{border-left:3px solid #0072B2;padding:.2rem .8rem;margin:.8rem 0;break-inside:avoid}\
 section.step ul{list-style:none;padding-left:.5rem;margin:.2rem 0}\
 .note{font-style:italic;color:#333}.warning{border:1px solid #D55E00;padding:.4rem}\
-math[display=block]{margin:.3rem 0}\
+math[display=block]{margin:.3rem 0;max-width:100%;overflow-x:auto}\
 table.answers{border-collapse:collapse;margin:.5rem 0}\
 table.answers th,table.answers td{border:1px solid #999;padding:.2rem .6rem;text-align:left}\
 figure{margin:1rem 0;break-inside:avoid}figure svg{max-width:100%;height:auto}\
