@@ -59,6 +59,7 @@ pub fn setup(view: &View, w: u32, h: u32, tr: &mut impl Trace) -> Result<ViewSet
     Ok(vs)
 }
 
+/// [`setup`] before the step of the projection matrix.
 fn view_of(view: &View, w: u32, h: u32, tr: &mut impl Trace) -> Result<ViewSetup> {
     let (wf, hf) = (w as f64, h as f64);
     match view {
