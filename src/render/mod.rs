@@ -25,7 +25,7 @@ use rayon::prelude::*;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
-pub mod geometry;
+pub(crate) mod geometry;
 pub mod raster;
 mod shade;
 
