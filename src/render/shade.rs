@@ -26,11 +26,14 @@ pub fn light_at(
     ortho: bool,
     tr: &mut impl Trace,
 ) -> [f32; 3] {
-    let m = Material {
-        color: color.map(Fast32),
+    // A one-colour object's material already holds its colour: no copy.
+    let color = color.map(Fast32);
+    let recoloured = (mat.color != color).then(|| Material {
+        color,
         ..mat.clone()
-    };
-    lit(&m, lights, n.map(Fast32), p.map(Fast32), ortho, tr).map(|c| c.0)
+    });
+    let m = recoloured.as_ref().unwrap_or(mat);
+    lit(m, lights, n.map(Fast32), p.map(Fast32), ortho, tr).map(|c| c.0)
 }
 
 /// `lighting::shade` of a material that already holds the surface colour,
