@@ -622,11 +622,8 @@ pub fn to_u8(c: [f32; 3]) -> [u8; 3] {
 /// as [`to_u8`] gives for each pixel.
 #[inline(always)]
 fn to_u8_lanes([r, g, b]: [F32x8; 3]) -> [u8; 24] {
-    let (r, g, b) = (
-        byte(&r).to_bytes(),
-        byte(&g).to_bytes(),
-        byte(&b).to_bytes(),
-    );
+    let bytes = |c: F32x8| byte(&c).to_bytes();
+    let (r, g, b) = (bytes(r), bytes(g), bytes(b));
     // Pixel k's bytes r, g, b, 0 as one little-endian word, then the
     // three colour bytes of each word in turn.
     let words: [u32; 8] = std::array::from_fn(|k| r[k] | g[k] << 8 | b[k] << 16);
