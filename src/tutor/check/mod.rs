@@ -24,6 +24,7 @@
 //! A list (a point, a segment) takes its worst component's verdict.
 
 mod judge;
+pub mod tolerance;
 
 pub use judge::decimal_places;
 pub(crate) use judge::{judge, value_of, Judged};

@@ -5,15 +5,13 @@
 //! (`report::moodle`, `report::gift`) only put these into words.
 //!
 //! Tolerance: a quiz system marks a number right when it lies within an
-//! absolute tolerance t of the key's value x. From the relative tolerance r
-//! (`--tolerance`, 0.1 % by default): t = r·|x| for x ≠ 0; for x = 0,
-//! t = r·m with m the largest magnitude in the same answer (the other
-//! components of the vector, point or matrix), or t = r when the whole
-//! answer is zero. So t is never 0.
+//! absolute tolerance t of the key's value x; t is the one rule `check` uses
+//! ([`crate::tutor::check::tolerance`]).
 
 use super::Generated;
 use crate::input::problem::ProblemIn;
 use crate::stages::trace::Val;
+use crate::tutor::check::tolerance;
 use crate::tutor::diagnose::{Mistake, Tree, CATALOG};
 use crate::tutor::solve::lookup;
 
@@ -91,7 +89,7 @@ fn mistaken_trees(p: &ProblemIn) -> Vec<(&'static Mistake, Tree)> {
 /// tolerances: the intervals do not overlap), merged when two mistakes give
 /// the same value.
 fn key_blanks(key: &str, value: &Val, trees: &[(&'static Mistake, Tree)], rel: f64) -> Vec<Blank> {
-    let right = typed_leaves(value, rel);
+    let right = typed_leaves(key, value, rel);
     let mut blanks: Vec<Blank> = right
         .into_iter()
         .map(|(value, tolerance)| Blank {
@@ -102,7 +100,7 @@ fn key_blanks(key: &str, value: &Val, trees: &[(&'static Mistake, Tree)], rel: f
         .collect();
     for (m, t) in trees {
         let Some(v) = lookup(t, key) else { continue };
-        let leaves = typed_leaves(v, rel);
+        let leaves = typed_leaves(key, v, rel);
         if leaves.len() != blanks.len() {
             continue; // another shape (a rejected segment): not comparable
         }
@@ -149,7 +147,7 @@ fn apart(a: &Typed, ta: f64, b: &Typed, tb: f64) -> bool {
 /// The leaves of a value, depth first, each with its absolute tolerance (see
 /// the module docs); a non-finite number is no leaf a student could type, so
 /// a value with one has no leaves.
-pub fn typed_leaves(v: &Val, rel: f64) -> Vec<(Typed, f64)> {
+pub fn typed_leaves(key: &str, v: &Val, rel: f64) -> Vec<(Typed, f64)> {
     let mut leaves = Vec::new();
     collect(v, &mut leaves);
     if leaves
@@ -169,24 +167,12 @@ pub fn typed_leaves(v: &Val, rel: f64) -> Vec<(Typed, f64)> {
         .into_iter()
         .map(|l| {
             let t = match &l {
-                Typed::Num(x) => tolerance(*x, scale, rel),
+                Typed::Num(x) => tolerance::for_key(key, *x, scale, rel),
                 Typed::Text(_) => 0.0,
             };
             (l, t)
         })
         .collect()
-}
-
-/// The absolute tolerance of x in an answer whose largest magnitude is
-/// `scale`: r·|x|, or r·scale for x = 0, or r when the answer is all zero.
-pub fn tolerance(x: f64, scale: f64, rel: f64) -> f64 {
-    if x != 0.0 {
-        rel * x.abs()
-    } else if scale > 0.0 {
-        rel * scale
-    } else {
-        rel
-    }
 }
 
 fn collect(v: &Val, out: &mut Vec<Typed>) {
@@ -205,15 +191,6 @@ fn collect(v: &Val, out: &mut Vec<Typed>) {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn a_zero_takes_the_tolerance_of_its_answer() {
-        // (0, −0.02, −0.1) at 0.1 %: 0 gets 0.1 % of 0.1
-        let near = |a: f64, b: f64| (a - b).abs() < 1e-15;
-        assert!(near(tolerance(0.0, 0.1, 1e-3), 1e-4));
-        assert!(near(tolerance(-0.02, 0.1, 1e-3), 2e-5));
-        assert!(near(tolerance(0.0, 0.0, 1e-3), 1e-3));
-    }
 
     #[test]
     fn values_within_both_tolerances_are_not_apart() {

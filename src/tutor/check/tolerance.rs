@@ -1,0 +1,76 @@
+//! The one tolerance rule, shared by `check`, `practice` and the quiz
+//! exports (Moodle XML, GIFT), so a number is marked the same everywhere.
+//!
+//! A number x of an answer is within tolerance when it lies within the
+//! absolute tolerance t of x, where, from the relative tolerance r
+//! (`--tolerance`, 0.1 % by default):
+//!
+//! - t = r·|x| for x ≠ 0;
+//! - t = r·m for x = 0, with m the largest magnitude in the same answer (the
+//!   other components of the vector, point or matrix), or t = r when the
+//!   whole answer is zero; so t is never 0;
+//! - a pixel position (a key under `viewport.pixels`) takes at least
+//!   t = 0.5 px: a whole pixel within half a pixel names the same pixel.
+
+/// The least tolerance of a pixel position, in pixels.
+pub const PIXEL: f64 = 0.5;
+
+/// The absolute tolerance of x in an answer whose largest magnitude is
+/// `scale`: r·|x|, or r·scale for x = 0, or r when the answer is all zero.
+pub fn absolute(x: f64, scale: f64, rel: f64) -> f64 {
+    if x != 0.0 {
+        rel * x.abs()
+    } else if scale > 0.0 {
+        rel * scale
+    } else {
+        rel
+    }
+}
+
+/// Whether an answer key is a pixel position (`viewport.pixels.A`).
+pub fn is_pixel(key: &str) -> bool {
+    key.starts_with("viewport.pixels")
+}
+
+/// The absolute tolerance of x in the answer `key` whose largest magnitude
+/// is `scale` ([`absolute`], at least [`PIXEL`] for a pixel position).
+pub fn for_key(key: &str, x: f64, scale: f64, rel: f64) -> f64 {
+    let t = absolute(x, scale, rel);
+    if is_pixel(key) {
+        t.max(PIXEL)
+    } else {
+        t
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn near(a: f64, b: f64) -> bool {
+        (a - b).abs() <= 1e-15
+    }
+
+    #[test]
+    fn a_zero_takes_the_tolerance_of_its_answer() {
+        assert!(near(absolute(0.0, 0.1, 1e-3), 1e-4));
+        assert!(near(absolute(-0.02, 0.1, 1e-3), 2e-5));
+        assert!(near(absolute(0.0, 0.0, 1e-3), 1e-3));
+    }
+
+    #[test]
+    fn a_pixel_takes_half_a_pixel() {
+        // 0.1 % of 133.32 is 0.133 px: a whole pixel 133 is 0.32 px away
+        assert!(near(
+            for_key("viewport.pixels.A", 133.32, 133.32, 1e-3),
+            0.5
+        ));
+        assert!((133.0f64 - 133.32).abs() <= for_key("viewport.pixels.A", 133.32, 133.32, 1e-3));
+        // a large pixel coordinate keeps its relative tolerance
+        assert!(near(
+            for_key("viewport.pixels.A", 1000.0, 1000.0, 1e-3),
+            1.0
+        ));
+        assert!(near(for_key("window.top", 0.2, 0.2, 1e-3), 2e-4));
+    }
+}
