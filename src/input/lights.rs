@@ -1,7 +1,8 @@
-//! Lighting inputs: the `[shade]` table and `[[light]]` tables of problem
-//! files, lights files (`--lights FILE.toml`), and the `shade` flags, all
-//! turned into one validated set-up for [`crate::stages::lighting`], and the
-//! set-up's results keyed as docs/spec.md §3 says.
+//! Lighting inputs: the one `[[light]]` table of problem, lights and scene
+//! files ([`LightIn`], built by [`light`]); the `[shade]` table, lights
+//! files (`--lights FILE.toml`) and the `shade` flags, all turned into one
+//! validated set-up for [`crate::stages::lighting`]; and the set-up's
+//! results keyed as docs/spec.md §3 says.
 //!
 //! A lights file:
 //!
@@ -15,12 +16,12 @@
 //! axis = [0, 0, -1]                # the way it shines, theta, phi full cone angles
 //! theta = 30                       # in degrees, falloff)
 //! phi = 60
-//! attenuation = [1, 0, 0]          # a0, a1, a2; range = R; colors ambient,
+//! attenuation = [1, 0, 0]          # a0, a1, a2; range = R; colors color, ambient,
 //! ```                              # diffuse, specular (white by default)
 
 use crate::error::{Error, Result};
 use crate::input;
-use crate::input::fields::{toml_error, AngleIn, Num, Vec3In};
+use crate::input::fields::{line_col, toml_error, AngleIn, Num, Vec3In};
 use crate::msg::{ErrMsg, Msg, Thing, Twice};
 use crate::num::vec::{normalize, sub, v3, V3};
 use crate::num::Scalar;
@@ -30,6 +31,7 @@ use crate::stages::lighting::{
 use crate::stages::trace::{NoTrace, Recorder, Step, Trace, Val};
 use serde::Deserialize;
 use std::path::Path;
+use toml::Spanned;
 
 /// The `[shade]` table (and the `shade` flags): the text's single light and
 /// vectors, the model and coefficients, and the Direct3D extras.
@@ -96,35 +98,136 @@ pub enum LightType {
     Spot,
 }
 
-/// One `[[light]]` table.
+impl LightType {
+    /// The type as written in a file (`spot`).
+    pub fn name(self) -> &'static str {
+        match self {
+            LightType::Directional => "directional",
+            LightType::Point => "point",
+            LightType::Spot => "spot",
+        }
+    }
+
+    /// The keys that do not apply to a light of this type.
+    fn foreign_keys(self) -> &'static [&'static str] {
+        match self {
+            LightType::Directional => &[
+                "position",
+                "axis",
+                "theta",
+                "phi",
+                "falloff",
+                "attenuation",
+                "range",
+            ],
+            LightType::Point => &["direction", "axis", "theta", "phi", "falloff"],
+            LightType::Spot => &[],
+        }
+    }
+}
+
+/// One `[[light]]` table: the same keys, defaults and rules in problem
+/// files, lights files and scene files (docs/spec.md §5). Every number is
+/// an expression; directions are made unit vectors when the light is built.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct LightIn {
     /// directional, point or spot.
     #[serde(rename = "type")]
     pub kind: LightType,
-    /// Directional: the vector toward the light (the text's L).
+    /// Directional: the vector toward the light (the text's L; default
+    /// (0, 0, 1)). Spot: the old name of `axis`, still read.
     pub direction: Option<Vec3In>,
     /// Point and spot: where the light is (eye space).
     pub position: Option<Vec3In>,
     /// Spot: the direction it shines (away from the light).
     pub axis: Option<Vec3In>,
+    /// Ld and Ls together (default white); `diffuse`, `specular` override it.
+    pub color: Option<Vec3In>,
     /// La (default white).
     pub ambient: Option<Vec3In>,
-    /// Ld (default white).
+    /// Ld (default `color`).
     pub diffuse: Option<Vec3In>,
-    /// Ls (default white).
+    /// Ls (default `color`).
     pub specular: Option<Vec3In>,
-    /// [a0, a1, a2] (default [1, 0, 0]).
+    /// Point and spot: [a0, a1, a2] (default [1, 0, 0]).
     pub attenuation: Option<Vec3In>,
-    /// Range (default none).
+    /// Point and spot: the range (default none).
     pub range: Option<Num>,
-    /// Spot: full inner cone angle (degrees).
+    /// Spot: full inner cone angle (default 30°).
     pub theta: Option<AngleIn>,
-    /// Spot: full outer cone angle (degrees).
+    /// Spot: full outer cone angle (default 45°).
     pub phi: Option<AngleIn>,
     /// Spot: falloff exponent (default 1).
     pub falloff: Option<Num>,
+    /// Where the table and its keys are in the file, for the errors found
+    /// when the light is built ([`place`] fills it in).
+    #[serde(skip)]
+    pub at: Places,
+}
+
+impl LightIn {
+    /// Whether each key that only some types take is given.
+    fn given(&self) -> [(&'static str, bool); 8] {
+        [
+            ("position", self.position.is_some()),
+            ("direction", self.direction.is_some()),
+            ("axis", self.axis.is_some()),
+            ("theta", self.theta.is_some()),
+            ("phi", self.phi.is_some()),
+            ("falloff", self.falloff.is_some()),
+            ("attenuation", self.attenuation.is_some()),
+            ("range", self.range.is_some()),
+        ]
+    }
+}
+
+/// Where a `[[light]]` table and each of its keys' values stand in their
+/// file (`file:line:col`); empty for a light from no file.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Places {
+    table: Option<String>,
+    keys: Vec<(String, String)>,
+}
+
+impl Places {
+    /// `e` placed at the value of the key its field ends with
+    /// (`light[1].axis`), else at the table.
+    fn place(&self, e: Error) -> Error {
+        let key = e.field.rsplit('.').next().unwrap_or_default();
+        let at = self.keys.iter().find(|(k, _)| k == key).map(|(_, p)| p);
+        match at.or(self.table.as_ref()) {
+            Some(p) => e.at(p.clone()),
+            None => e,
+        }
+    }
+}
+
+/// Fills in where each of `lights` (the `[[light]]` tables read from
+/// `text`) and its keys are, as `origin:line:col`. The places come from a
+/// second read of the same text that keeps only the positions.
+pub fn place(lights: &mut [LightIn], text: &str, origin: &str) {
+    type Table = std::collections::BTreeMap<String, Spanned<serde::de::IgnoredAny>>;
+    #[derive(Deserialize)]
+    struct Spans {
+        #[serde(default)]
+        light: Vec<Spanned<Table>>,
+    }
+    let Ok(spans) = toml::from_str::<Spans>(text) else {
+        return;
+    };
+    let at = |offset: usize| {
+        let (line, col) = line_col(text, offset);
+        format!("{origin}:{line}:{col}")
+    };
+    for (l, t) in lights.iter_mut().zip(&spans.light) {
+        l.at = Places {
+            table: Some(at(t.span().start)),
+            keys: (t.get_ref().iter())
+                .map(|(k, v)| (k.clone(), at(v.span().start)))
+                .collect(),
+        };
+    }
 }
 
 /// A lights file.
@@ -144,14 +247,19 @@ impl LightsFileIn {
     /// Reads a lights file; TOML errors carry file:line:col.
     pub fn read(path: &Path) -> Result<LightsFileIn> {
         let text = crate::input::read_text("lights", path)?;
-        let f: LightsFileIn = toml::from_str(&text)
-            .map_err(|e| toml_error(&path.display().to_string(), &text, &e))?;
+        LightsFileIn::parse(&text, &path.display().to_string())
+    }
+
+    /// Parses lights-file text; `origin` names it in messages.
+    pub fn parse(text: &str, origin: &str) -> Result<LightsFileIn> {
+        let mut f: LightsFileIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
         if f.light.is_empty() {
             return Err(Error::why(
                 "lights",
-                ErrMsg::NoLightTable(path.display().to_string()),
+                ErrMsg::NoLightTable(origin.to_string()),
             ));
         }
+        place(&mut f.light, text, origin);
         Ok(f)
     }
 }
@@ -351,46 +459,57 @@ fn lights<T: Scalar>(
             let l = lighting::unit("L", &f("light"), &ev3(&f("light"), l)?, tr)?;
             Ok(vec![Light::directional(l)])
         }
-        (None, false) => file
-            .light
-            .iter()
-            .enumerate()
-            .map(|(i, l)| light::<T>(l, &format!("{lights_prefix}[{i}]"), position, tr))
+        (None, false) => (file.light.iter().enumerate())
+            .map(|(i, l)| lit_from(l, &format!("{lights_prefix}[{i}]"), position, tr))
             .collect(),
         (Some(_), false) => Err(Error::why(f("light"), Twice::Light)),
         (None, true) => Err(Error::why(f("light"), ErrMsg::NoLight)),
     }
 }
 
-/// One `[[light]]` into a validated [`Light`].
-pub fn light<T: Scalar>(
+/// One `[[light]]` table lighting the surface point `point`, which it
+/// must not stand on.
+fn lit_from<T: Scalar>(
     l: &LightIn,
     field: &str,
     point: &V3<T>,
     tr: &mut impl Trace,
 ) -> Result<Light<T>> {
+    let out = light(l, field, tr)?;
+    match &out.kind {
+        LightKind::Point { pos } | LightKind::Spot { pos, .. } if pos == point => {
+            let e = Error::why(format!("{field}.position"), ErrMsg::LightAtPoint);
+            Err(l.at.place(e))
+        }
+        _ => Ok(out),
+    }
+}
+
+/// One `[[light]]` table into a validated [`Light`] named `field`
+/// (`light[0]`): its defaults filled in, `direction` (L) or `axis` made a
+/// unit vector (the step goes to `tr`), an error placed in its file.
+pub fn light<T: Scalar>(l: &LightIn, field: &str, tr: &mut impl Trace) -> Result<Light<T>> {
+    build_light(l, field, tr).map_err(|e| l.at.place(e))
+}
+
+/// [`light`], its error not yet placed.
+fn build_light<T: Scalar>(l: &LightIn, field: &str, tr: &mut impl Trace) -> Result<Light<T>> {
     let k = |s: &str| format!("{field}.{s}");
+    forbid(l, &k)?;
     let kind = match l.kind {
         LightType::Directional => {
-            forbid(l, &k, &["position", "axis", "range", "attenuation"])?;
-            let d = need(l, &k, &l.direction, "direction")?;
+            let d = match &l.direction {
+                Some(d) => ev3(&k("direction"), d)?,
+                None => v3(T::zero(), T::zero(), T::one()),
+            };
             LightKind::Directional {
                 dir: lighting::unit("L", &k("direction"), &d, tr)?,
             }
         }
-        LightType::Point | LightType::Spot => {
-            forbid(l, &k, &["direction"])?;
-            let pos = need(l, &k, &l.position, "position")?;
-            if pos == *point {
-                return Err(Error::why(k("position"), ErrMsg::LightAtPoint));
-            }
-            if l.kind == LightType::Point {
-                forbid(l, &k, &["axis", "theta", "phi", "falloff"])?;
-                LightKind::Point { pos }
-            } else {
-                spot(l, &k, pos, tr)?
-            }
-        }
+        LightType::Point => LightKind::Point {
+            pos: need(l, &k, &l.position, "position")?,
+        },
+        LightType::Spot => spot(l, &k, tr)?,
     };
     let att = match &l.attenuation {
         Some(a) => {
@@ -399,11 +518,12 @@ pub fn light<T: Scalar>(
         }
         None => [T::one(), T::zero(), T::zero()],
     };
+    let color = opt_rgb(&k("color"), &l.color, gray(T::one()))?;
     let out = Light {
         kind,
         ambient: opt_rgb(&k("ambient"), &l.ambient, gray(T::one()))?,
-        diffuse: opt_rgb(&k("diffuse"), &l.diffuse, gray(T::one()))?,
-        specular: opt_rgb(&k("specular"), &l.specular, gray(T::one()))?,
+        diffuse: opt_rgb(&k("diffuse"), &l.diffuse, color.clone())?,
+        specular: opt_rgb(&k("specular"), &l.specular, color)?,
         attenuation: att,
         range: l.range.as_ref().map(|n| ev(&k("range"), n)).transpose()?,
     };
@@ -411,27 +531,32 @@ pub fn light<T: Scalar>(
     Ok(out)
 }
 
-/// A spot light at `pos`: its unit axis, cone angles theta and phi (full
-/// angles, degrees) and falloff (1 unless given).
+/// A spot light: its position, unit axis (`direction` is its old name),
+/// cone angles theta and phi (full angles, 30° and 45° unless given) and
+/// falloff (1 unless given).
 fn spot<T: Scalar>(
     l: &LightIn,
     k: &dyn Fn(&str) -> String,
-    pos: V3<T>,
     tr: &mut impl Trace,
 ) -> Result<LightKind<T>> {
-    let axis = need(l, k, &l.axis, "axis")?;
-    let axis = lighting::unit("axis", &k("axis"), &axis, tr)?;
-    let angle = |a: &Option<AngleIn>, key: &str| -> Result<T> {
-        let a = a
-            .as_ref()
-            .ok_or_else(|| Error::why(k(key), ErrMsg::SpotNeeds(key.to_string())))?;
-        a.0.degrees::<T>().map_err(|m| Error::why(k(key), m))
+    let pos = need(l, k, &l.position, "position")?;
+    let (key, axis) = match (&l.axis, &l.direction) {
+        (Some(_), Some(_)) => return Err(Error::why(k("direction"), Twice::Axis)),
+        (None, Some(d)) => ("direction", d),
+        _ => ("axis", need_given(l, k, &l.axis, "axis")?),
+    };
+    let axis = lighting::unit("axis", &k(key), &ev3(&k(key), axis)?, tr)?;
+    let angle = |a: &Option<AngleIn>, key: &str, default: i64| -> Result<T> {
+        match a {
+            Some(a) => a.0.degrees::<T>().map_err(|m| Error::why(k(key), m)),
+            None => Ok(T::from_i64(default)),
+        }
     };
     Ok(LightKind::Spot {
         pos,
         dir: axis,
-        theta: angle(&l.theta, "theta")?,
-        phi: angle(&l.phi, "phi")?,
+        theta: angle(&l.theta, "theta", 30)?,
+        phi: angle(&l.phi, "phi", 45)?,
         falloff: l
             .falloff
             .as_ref()
@@ -441,37 +566,40 @@ fn spot<T: Scalar>(
     })
 }
 
-/// A vector the light's type needs (`key` names it).
+/// A vector the light's type needs (`key` names it), evaluated.
 fn need<T: Scalar>(
     l: &LightIn,
     k: &dyn Fn(&str) -> String,
     v: &Option<Vec3In>,
     key: &str,
 ) -> Result<V3<T>> {
-    let v = v.as_ref().ok_or_else(|| {
-        let kind = format!("{:?}", l.kind).to_lowercase();
-        Error::why(k(key), ErrMsg::Needs(Thing::Light(kind), key.to_string()))
-    })?;
-    ev3(&k(key), v)
+    ev3(&k(key), need_given(l, k, v, key)?)
 }
 
-/// Refuses the first of `keys` that is given but does not apply to the
-/// light's type.
-fn forbid(l: &LightIn, k: &dyn Fn(&str) -> String, keys: &[&str]) -> Result<()> {
-    let given = |key: &str| match key {
-        "position" => l.position.is_some(),
-        "direction" => l.direction.is_some(),
-        "axis" => l.axis.is_some(),
-        "range" => l.range.is_some(),
-        "attenuation" => l.attenuation.is_some(),
-        "theta" => l.theta.is_some(),
-        "phi" => l.phi.is_some(),
-        _ => l.falloff.is_some(),
-    };
-    match keys.iter().find(|key| given(key)) {
-        Some(key) => Err(Error::why(
+/// A vector the light's type needs, as written.
+fn need_given<'a>(
+    l: &LightIn,
+    k: &dyn Fn(&str) -> String,
+    v: &'a Option<Vec3In>,
+    key: &str,
+) -> Result<&'a Vec3In> {
+    v.as_ref().ok_or_else(|| {
+        let kind = Thing::Light(l.kind.name().to_string());
+        Error::why(k(key), ErrMsg::Needs(kind, key.to_string()))
+    })
+}
+
+/// Refuses the first key given that does not apply to the light's type.
+fn forbid(l: &LightIn, k: &dyn Fn(&str) -> String) -> Result<()> {
+    let foreign = l.kind.foreign_keys();
+    match l
+        .given()
+        .iter()
+        .find(|(key, here)| *here && foreign.contains(key))
+    {
+        Some((key, _)) => Err(Error::why(
             k(key),
-            ErrMsg::NotApplicable(key.to_string(), format!("{:?}", l.kind).to_lowercase()),
+            ErrMsg::NotApplicable(key.to_string(), l.kind.name().to_string()),
         )),
         None => Ok(()),
     }
