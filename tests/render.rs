@@ -432,7 +432,7 @@ fn a_spot_light_lights_its_cone_and_leaves_the_rest_ambient() {
          [camera]\neye = [0, 0, 0]\nlook = [0, 0, -1]\nup = [0, 1, 0]\n\
          [perspective]\nfovy = 50\nnear = 0.1\nfar = 50\n\
          [material]\nka = 0.2\nkd = 0.7\nks = 0\n\
-         [[light]]\ntype = \"spot\"\nposition = [0, 0, 0]\ndirection = [0, 0, -1]\n\
+         [[light]]\ntype = \"spot\"\nposition = [0, 0, 0]\naxis = [0, 0, -1]\n\
          theta = 20\nphi = 40\n\
          [[object]]\ntype = \"plane\"\nnx = 4\nnz = 4\ndx = 2\ndz = 2\ncolor = [1, 1, 1]\n\
          transform = [{ rotate_x = 1.5707963267948966 }, { translate = [-4, 4, -2] }]\n",

@@ -4,11 +4,13 @@
 
 use crate::error::{Error, Result};
 use crate::input::fields::{line_col, toml_error, value_error, Num};
+use crate::input::lights::{light, place, LightIn};
 use crate::input::mesh::{self, Height, Mesh};
 use crate::input::problem::{CameraIn, PerspectiveIn};
 use crate::msg::{Bound, ErrMsg, Thing, TomlErr, Twice};
 use crate::num::vec::V3;
-use crate::stages::lighting::{Light, LightKind, Material, Model};
+use crate::stages::lighting::{Light, Material, Model};
+use crate::stages::trace::NoTrace;
 use nalgebra::{Matrix4, Vector3};
 use serde::de::Deserializer;
 use serde::Deserialize;
@@ -161,33 +163,6 @@ enum ModelIn {
     Blinn,
 }
 
-/// `[[light]]`.
-#[derive(Clone, Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct LightIn {
-    #[serde(rename = "type")]
-    kind: LightType,
-    direction: Option<[F; 3]>,
-    position: Option<[F; 3]>,
-    color: Option<Rgb>,
-    ambient: Option<Rgb>,
-    diffuse: Option<Rgb>,
-    specular: Option<Rgb>,
-    attenuation: Option<[F; 3]>,
-    range: Option<Pos>,
-    theta: Option<F>,
-    phi: Option<F>,
-    falloff: Option<F>,
-}
-
-#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
-#[serde(rename_all = "lowercase")]
-enum LightType {
-    Directional,
-    Point,
-    Spot,
-}
-
 /// One step of an object's transform list.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(rename_all = "snake_case", deny_unknown_fields)]
@@ -270,6 +245,7 @@ pub struct SceneIn {
     camera: Option<CameraIn>,
     perspective: Option<PerspectiveIn>,
     material: Option<MaterialIn>,
+    /// The lights, as in problem and lights files.
     #[serde(default)]
     light: Vec<LightIn>,
     #[serde(default)]
@@ -350,7 +326,8 @@ impl Scene {
     /// Parses and validates scene text; `origin` names it in messages and
     /// `dir` is where relative OBJ paths start.
     pub fn parse(text: &str, origin: &str, dir: &Path) -> Result<Scene> {
-        let s: SceneIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
+        let mut s: SceneIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
+        place(&mut s.light, text, origin);
         let at = |span: std::ops::Range<usize>| {
             let (l, c) = line_col(text, span.start);
             format!("{origin}:{l}:{c}")
@@ -375,11 +352,9 @@ impl Scene {
         };
         let mut lights = Vec::new();
         for (i, l) in s.light.iter().enumerate() {
-            let e = |e: Error| {
-                let field = format!("light[{i}].{}", e.field);
-                e.in_field(field)
-            };
-            lights.push(light(l).map_err(placed("[[light]]")).map_err(e)?);
+            // At the renderer's precision: the light `shade --precision f32`
+            // builds from the same table.
+            lights.push(light::<f32>(l, &format!("light[{i}]"), &mut NoTrace)?);
         }
         if s.light.is_empty() {
             lights.push(Light::text_default());
@@ -570,66 +545,6 @@ fn material(m: &MaterialIn, base: Material<f32>) -> Result<Material<f32>> {
         out.specular_requires_lit = b;
     }
     out.validate("material")?;
-    Ok(out)
-}
-
-fn light(l: &LightIn) -> Result<Light<f32>> {
-    let mut out = Light::<f32>::text_default();
-    let v = |a: &[F; 3]| Vector3::new(a[0].0 as f32, a[1].0 as f32, a[2].0 as f32);
-    let need = |o: &Option<[F; 3]>, f: &str| {
-        o.as_ref()
-            .map(v)
-            .ok_or_else(|| Error::why(f, ErrMsg::NeededForLight))
-    };
-    out.kind = match l.kind {
-        LightType::Directional => LightKind::Directional {
-            dir: l
-                .direction
-                .as_ref()
-                .map(v)
-                .unwrap_or(Vector3::new(0.0, 0.0, 1.0)),
-        },
-        LightType::Point => LightKind::Point {
-            pos: need(&l.position, "position")?,
-        },
-        LightType::Spot => LightKind::Spot {
-            pos: need(&l.position, "position")?,
-            dir: need(&l.direction, "direction")?,
-            theta: l.theta.map_or(30.0, |x| x.0 as f32),
-            phi: l.phi.map_or(45.0, |x| x.0 as f32),
-            falloff: l.falloff.map_or(1.0, |x| x.0 as f32),
-        },
-    };
-    // shade takes unit directions.
-    match &mut out.kind {
-        LightKind::Directional { dir } | LightKind::Spot { dir, .. } => {
-            let n = dir.norm();
-            if n == 0.0 {
-                return Err(Error::why("direction", ErrMsg::ZeroDirection));
-            }
-            *dir /= n;
-        }
-        LightKind::Point { .. } => {}
-    }
-    if let Some(c) = l.color {
-        out.diffuse = c.0;
-        out.specular = c.0;
-    }
-    if let Some(c) = l.ambient {
-        out.ambient = c.0;
-    }
-    if let Some(c) = l.diffuse {
-        out.diffuse = c.0;
-    }
-    if let Some(c) = l.specular {
-        out.specular = c.0;
-    }
-    if let Some(a) = &l.attenuation {
-        out.attenuation = a.map(|x| x.0 as f32);
-    }
-    out.range = l.range.map(|r| r.0 as f32);
-    out.validate("light")
-        .map_err(|e| Error::said(e.field.trim_start_matches("light.").to_string(), e.message))?;
     Ok(out)
 }
 

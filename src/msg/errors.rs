@@ -135,6 +135,8 @@ pub enum Twice {
     View,
     /// L and [[light]] tables.
     Light,
+    /// A spot light's axis and its old name, direction.
+    Axis,
     /// [tilt] and [camera].
     TiltCamera,
     /// color, face_colors, vertex_colors.
@@ -237,20 +239,14 @@ pub enum ErrMsg {
     NoLight,
     /// A light at the surface point.
     LightAtPoint,
-    /// A spot light needs a cone angle key.
-    SpotNeeds(String),
     /// A light or object needs a key.
     Needs(Thing, String),
     /// A key that does not apply to a light of a kind: key, kind.
     NotApplicable(String, String),
     /// An object type without such a key: type, key, its keys.
     NoSuchKey(String, String, String),
-    /// Needed for this type of light.
-    NeededForLight,
     /// Needed to render.
     NeededToRender,
-    /// A zero direction.
-    ZeroDirection,
     /// An OBJ file that cannot be read: path, why.
     ObjUnreadable(String, IoWhy),
     /// An OBJ file that is not valid: path, the reader's error by name

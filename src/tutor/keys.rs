@@ -1,13 +1,15 @@
 //! The results of the calculator's stages as named values (the result keys
-//! of the JSON contract: `u`, `v`, `n`, `top`, `code0`, `segment`, ...),
-//! shared by the calculator commands and `solve`.
+//! of the JSON contract: `u`, `v`, `n`, `top`, `code0`, `segment`, `color`,
+//! ...), shared by the calculator commands and `solve`.
 
+use crate::input::lights::Setup;
 use crate::msg::Msg;
 use crate::num::vec::V3;
 use crate::num::Scalar;
 use crate::stages::camera;
 use crate::stages::clip::{self, ClipBox};
-use crate::stages::trace::{Recorder, Step, Trace, Val};
+use crate::stages::lighting::{self, rgb_val, LightTerm, Material, Model};
+use crate::stages::trace::{NoTrace, Recorder, Step, Trace, Val};
 use crate::stages::window;
 
 /// The basis as named results.
@@ -95,4 +97,120 @@ fn close<T: Scalar>(a: &V3<T>, b: &V3<T>) -> bool {
         let (x, y) = (a[k].to_f64(), b[k].to_f64());
         a[k] == b[k] || (x - y).abs() <= 1e-5 * (1.0 + x.abs().max(y.abs()))
     })
+}
+
+fn opt_vec<T: Scalar>(v: &Option<V3<T>>) -> Val {
+    v.as_ref().map(Val::vec3).unwrap_or(Val::Null)
+}
+
+fn opt_num<T: Scalar>(v: &Option<T>) -> Val {
+    v.as_ref().map(Val::num).unwrap_or(Val::Null)
+}
+
+/// Lights the set-up under `rules` (the text's, `Rules::default()`, or the
+/// mistake catalog's), steps into `rec`, and returns docs/spec.md §3's shade
+/// keys: `color`, `unclamped`, `ambient`, `diffuse`, `specular`, `R`, `H`
+/// (Blinn), `cos_alpha`, `cos_beta` — per light (lists) when there are
+/// several, with `lights` (attenuation, spot, in range) for lights from a
+/// file.
+pub fn shade_run<T: Scalar>(
+    s: &Setup<T>,
+    rules: &lighting::Rules<T>,
+    rec: &mut Recorder,
+) -> Vec<(String, Val)> {
+    let m = &s.material;
+    rec.step(|| material_step(m));
+    let sh = lighting::shade_with_rules(m, &s.lights, &s.global_ambient, &s.surface, rules, rec);
+    let mut out: Vec<(String, Val)> = vec![
+        ("color".into(), rgb_val(&sh.color)),
+        ("unclamped".into(), rgb_val(&sh.unclamped)),
+        ("ambient".into(), rgb_val(&sh.ambient)),
+        ("diffuse".into(), rgb_val(&sh.diffuse)),
+        ("specular".into(), rgb_val(&sh.specular)),
+    ];
+    if sh.emissive.iter().any(|x| !x.is_zero_value()) {
+        out.push(("emissive".into(), rgb_val(&sh.emissive)));
+    }
+    let blinn = m.model == Model::Blinn;
+    if s.lights.len() == 1 {
+        out.push(("R".into(), opt_vec(&sh.r)));
+        if blinn {
+            out.push(("H".into(), opt_vec(&sh.h)));
+            out.push(("N_dot_H".into(), opt_num(&sh.cos_nh)));
+        }
+        out.push(("cos_alpha".into(), opt_num(&sh.cos_alpha)));
+        out.push(("cos_beta".into(), opt_num(&sh.cos_beta)));
+    } else {
+        out.extend(vectors_per_light(s, &sh.view, rules));
+    }
+    if !s.text_light {
+        let per = (0..s.lights.len()).map(|i| light_factors(s, i, &sh.view));
+        out.push(("lights".into(), Val::List(per.collect())));
+    }
+    out
+}
+
+/// The step that shows the material and the model.
+fn material_step<T: Scalar>(m: &Material<T>) -> Step {
+    Step::new(Msg::Material, format!("model = {}", m.model.name()))
+        .val("ka", Val::num(&m.ka))
+        .val("kd", Val::num(&m.kd))
+        .val("ks", Val::num(&m.ks))
+        .val("n", Val::num(&m.shininess))
+        .val("Cs", rgb_val(&m.color))
+        .val("Cspecular", rgb_val(&m.specular))
+        .note(
+            if m.ka == T::one() && m.kd == T::one() && m.ks == T::one() {
+                Msg::MaterialD3d
+            } else {
+                Msg::MaterialText
+            },
+        )
+}
+
+/// With several lights: R (H, N·H), cos α and cos β as lists, one entry per
+/// light (recomputed without steps: they are recorded already).
+fn vectors_per_light<T: Scalar>(
+    s: &Setup<T>,
+    view: &V3<T>,
+    rules: &lighting::Rules<T>,
+) -> Vec<(String, Val)> {
+    let m = &s.material;
+    let n = s.lights.len();
+    let terms: Vec<Option<LightTerm<T>>> = (s.lights.iter().enumerate())
+        .map(|(i, l)| {
+            let at = (i, n);
+            lighting::light_term_with(m, l, at, &s.surface, view, true, rules, &mut NoTrace)
+        })
+        .collect();
+    let list = |f: &dyn Fn(&LightTerm<T>) -> Val| {
+        Val::List(
+            terms
+                .iter()
+                .map(|t| t.as_ref().map(f).unwrap_or(Val::Null))
+                .collect(),
+        )
+    };
+    let mut out = vec![("R".to_string(), list(&|t| opt_vec(&t.r)))];
+    if m.model == Model::Blinn {
+        out.push(("H".into(), list(&|t| opt_vec(&t.h))));
+        out.push(("N_dot_H".into(), list(&|t| opt_num(&t.cos_nh))));
+    }
+    out.push(("cos_alpha".into(), list(&|t| Val::num(&t.cos_alpha))));
+    out.push(("cos_beta".into(), list(&|t| opt_num(&t.cos_beta))));
+    out
+}
+
+/// Light i's range, distance, attenuation and spot factor.
+fn light_factors<T: Scalar>(s: &Setup<T>, i: usize, view: &V3<T>) -> Val {
+    let (m, l, n) = (&s.material, &s.lights[i], s.lights.len());
+    let rules = &lighting::TextRules;
+    let t = lighting::light_term_with(m, l, (i, n), &s.surface, view, false, rules, &mut NoTrace);
+    let or_null = |f: &dyn Fn(&LightTerm<T>) -> Val| t.as_ref().map(f).unwrap_or(Val::Null);
+    Val::Map(vec![
+        ("in_range".into(), Val::Bool(t.is_some())),
+        ("distance".into(), or_null(&|t| opt_num(&t.distance))),
+        ("attenuation".into(), or_null(&|t| Val::num(&t.attenuation))),
+        ("spot".into(), or_null(&|t| Val::num(&t.spot))),
+    ])
 }

@@ -16,7 +16,7 @@ use crate::stages::clip::ClipBox;
 use crate::stages::projection::{self, Projection};
 use crate::stages::trace::{Compared, Comparison, Recorder, Report, Step, Trace, Val};
 use crate::stages::window;
-use crate::tutor::keys::{basis_result, clip_run, window_result};
+use crate::tutor::keys::{basis_result, clip_run, shade_run, window_result};
 use serde_json::{json, Value};
 use std::path::Path;
 
@@ -326,7 +326,7 @@ fn shade_part<T: Scalar>(
                 light: p.light.clone(),
             };
             let setup = crate::input::lights::build::<T>(sh, &file, "shade.", "light", rec)?;
-            let r = crate::input::lights::run_with(&setup, &hooks.shade, rec);
+            let r = shade_run(&setup, &hooks.shade, rec);
             result.push(("shade".into(), Val::Map(r)));
             Ok(())
         }

@@ -61,10 +61,7 @@ pub fn error(m: &ErrMsg, lang: Lang) -> String {
         | ErrMsg::CameraAtPoint
         | ErrMsg::NoLight
         | ErrMsg::LightAtPoint
-        | ErrMsg::SpotNeeds(_)
-        | ErrMsg::NotApplicable(..)
-        | ErrMsg::NeededForLight
-        | ErrMsg::ZeroDirection => lights(m, lang),
+        | ErrMsg::NotApplicable(..) => lights(m, lang),
         ErrMsg::PlaneThroughOrigin
         | ErrMsg::PlaneThroughCop(_)
         | ErrMsg::ImageTooLarge(..)
@@ -270,6 +267,10 @@ fn twice(t: Twice, lang: Lang) -> String {
             "give one light vector L or [[light]] tables, not both",
             "berikan satu vektor cahaya L atau tabel [[light]], tidak keduanya",
         ),
+        Twice::Axis => (
+            "give the spot light's axis once: axis (or its old name, direction)",
+            "berikan sumbu sumber cahaya spot sekali saja: axis (atau nama lamanya, direction)",
+        ),
         Twice::TiltCamera => (
             "give either [tilt] or [camera], not both",
             "berikan [tilt] atau [camera], tidak keduanya",
@@ -422,7 +423,7 @@ fn obj_reason(kind: &str, en: &str) -> String {
     id.to_string()
 }
 
-/// "a spot light needs `theta`", "a sphere needs `r`", "an obj object needs `path`".
+/// "a spot light needs `axis`", "a sphere needs `r`", "an obj object needs `path`".
 fn needs(thing: &Thing, key: &str, lang: Lang) -> String {
     match (thing, lang) {
         (Thing::Light(kind), Lang::En) => format!("a {kind} light needs `{key}`"),
@@ -467,23 +468,9 @@ fn lights(m: &ErrMsg, lang: Lang) -> String {
             "the light is at the surface point itself: no direction to it",
             "sumber cahaya berada di titik permukaan itu sendiri: tidak ada arah ke sana",
         ),
-        ErrMsg::SpotNeeds(k) => f(
-            format!("a spot light needs `{k}` (full cone angle, degrees)"),
-            format!("sumber cahaya spot memerlukan `{k}` (sudut kerucut penuh, derajat)"),
-        ),
         ErrMsg::NotApplicable(k, kind) => f(
             format!("`{k}` does not apply to a {kind} light"),
             format!("`{k}` tidak berlaku untuk sumber cahaya {kind}"),
-        ),
-        ErrMsg::NeededForLight => say(
-            lang,
-            "is needed for this type of light",
-            "diperlukan untuk jenis sumber cahaya ini",
-        ),
-        ErrMsg::ZeroDirection => say(
-            lang,
-            "must not be the zero vector",
-            "tidak boleh vektor nol",
         ),
         _ => String::new(),
     }
@@ -1018,15 +1005,12 @@ pub(crate) mod tests {
             ErrMsg::CameraAtPoint,
             ErrMsg::NoLight,
             ErrMsg::LightAtPoint,
-            ErrMsg::SpotNeeds(s("theta")),
             ErrMsg::Needs(Thing::Light(s("point")), s("position")),
             ErrMsg::Needs(Thing::Object(s("sphere")), s("r")),
             ErrMsg::Needs(Thing::Object(s("obj")), s("path")),
             ErrMsg::NotApplicable(s("axis"), s("point")),
             ErrMsg::NoSuchKey(s("box"), s("r"), s("size")),
-            ErrMsg::NeededForLight,
             ErrMsg::NeededToRender,
-            ErrMsg::ZeroDirection,
             ErrMsg::ObjInvalid(s("m.obj"), s("FaceParseError"), s("Failed to parse a face")),
             ErrMsg::ObjInvalid(s("m.obj"), s("Unknown"), s("something")),
             ErrMsg::ObjNoFaces(s("m.obj")),
@@ -1162,6 +1146,7 @@ pub(crate) mod tests {
             Shininess,
             View,
             Light,
+            Axis,
             TiltCamera,
             Colors,
             Answers,
@@ -1215,13 +1200,10 @@ pub(crate) mod tests {
             | E::CameraAtPoint
             | E::NoLight
             | E::LightAtPoint
-            | E::SpotNeeds(_)
             | E::Needs(..)
             | E::NotApplicable(..)
             | E::NoSuchKey(..)
-            | E::NeededForLight
             | E::NeededToRender
-            | E::ZeroDirection
             | E::ObjUnreadable(..)
             | E::ObjInvalid(..)
             | E::ObjNoFaces(_)

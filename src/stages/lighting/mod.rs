@@ -537,7 +537,8 @@ fn per_channel<T>(mut f: impl FnMut(usize) -> T) -> Rgb<T> {
     [f(0), f(1), f(2)]
 }
 
-fn rgb_val<T: Scalar>(c: &Rgb<T>) -> Val {
+/// A colour as a value: its three channels.
+pub fn rgb_val<T: Scalar>(c: &Rgb<T>) -> Val {
     Val::List(c.iter().map(Val::num).collect())
 }
 
