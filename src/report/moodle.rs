@@ -336,7 +336,8 @@ pub fn feedback(w: &Wrong, lang: Lang) -> String {
 pub fn solution_html(question: &Question, figures: &str, st: &Style) -> String {
     let mut s = format!("<h3>{}</h3><ul>", tr(st.lang, "Answers", "Jawaban"));
     for a in &question.asked {
-        let line = esc(&wrap(&st.named("", &a.key, &a.value)));
+        // one line flows in the list; a matrix keeps its lines
+        let line = esc(&st.named("", &a.key, &a.value));
         if line.contains('\n') {
             let _ = write!(s, "<li><pre>{line}</pre></li>");
         } else {
