@@ -30,7 +30,7 @@ use crate::report::mistakes::mistake_text;
 use crate::report::words::words;
 use crate::report::Style;
 use crate::stages::trace::Val;
-use crate::tutor::generate::quiz::{Asked, Blank, Question, Quiz, Typed, Wrong};
+use crate::tutor::generate::quiz::{Blank, Question, Quiz, Typed, Typing, Wrong};
 use crate::tutor::generate::{topics_name, Generated};
 use base64::Engine as _;
 use std::fmt::Write as _;
@@ -154,36 +154,8 @@ pub fn intro_html(question: &Question, q: &Quiz, w: &Written) -> String {
     format!(
         "<p>{}</p><p><i>{}</i></p>",
         esc_text(statement.trim()),
-        esc(&instructions(
-            &Typing::of(&question.asked),
-            q,
-            lang,
-            w.decimal
-        ))
+        esc(&instructions(&question.typing, q, lang, w.decimal))
     )
-}
-
-/// What kinds of blanks a question has, for its instruction line.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Typing {
-    /// Pixel positions.
-    pub pixels: bool,
-    /// Outcodes.
-    pub outcodes: bool,
-    /// A clipping status (and a segment that may be none).
-    pub status: bool,
-}
-
-impl Typing {
-    /// The kinds of the blanks asked.
-    pub fn of(asked: &[Asked]) -> Typing {
-        let any = |f: &dyn Fn(&Asked) -> bool| asked.iter().any(f);
-        Typing {
-            pixels: any(&|a| a.blanks.iter().any(|b| b.pixel)),
-            outcodes: any(&|a| a.key.starts_with("clip.code")),
-            status: any(&|a| a.key == "clip.status"),
-        }
-    }
 }
 
 /// How to type the answers: decimals (never exact forms) with the

@@ -53,6 +53,33 @@ pub struct Question {
     pub problem: Generated,
     /// The answers asked, each with its blanks.
     pub asked: Vec<Asked>,
+    /// What kinds of blanks it has (for the instruction line).
+    pub typing: Typing,
+}
+
+/// What kinds of blanks a question has, for its instruction line: the
+/// rules of typing a pixel, an outcode or a status are stated only where
+/// they are asked.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Typing {
+    /// Pixel positions.
+    pub pixels: bool,
+    /// Outcodes.
+    pub outcodes: bool,
+    /// A clipping status (and a segment that may be none).
+    pub status: bool,
+}
+
+impl Typing {
+    /// The kinds of the blanks asked.
+    pub fn of(asked: &[Asked]) -> Typing {
+        let any = |f: &dyn Fn(&Asked) -> bool| asked.iter().any(f);
+        Typing {
+            pixels: any(&|a| a.blanks.iter().any(|b| b.pixel)),
+            outcodes: any(&|a| a.key.starts_with("clip.code")),
+            status: any(&|a| a.key == "clip.status"),
+        }
+    }
 }
 
 impl Quiz {
@@ -64,9 +91,13 @@ impl Quiz {
             .into_iter()
             .map(|exam| {
                 exam.into_iter()
-                    .map(|g| Question {
-                        asked: blanks(&g, rel, figures + 1),
-                        problem: g,
+                    .map(|g| {
+                        let asked = blanks(&g, rel, figures + 1);
+                        Question {
+                            typing: Typing::of(&asked),
+                            asked,
+                            problem: g,
+                        }
                     })
                     .collect()
             })
