@@ -6,6 +6,7 @@
 use crate::input::scene::{Normals, Shading};
 use crate::num::Precision;
 use crate::report::lang::Lang;
+use crate::report::moodle::Decimal;
 use crate::stages::lighting::Model;
 use crate::tutor::generate::{Difficulty, Topic};
 use clap::builder::PossibleValue;
@@ -426,6 +427,10 @@ pub struct GenerateArgs {
     /// Relative tolerance of the numbers in Moodle and GIFT (default 0.001, i.e. 0.1%).
     #[arg(long, value_name = "R")]
     pub tolerance: Option<f64>,
+    /// The decimal mark students type in Moodle and GIFT quizzes: point for
+    /// a Moodle in English, comma for one with the Indonesian language pack.
+    #[arg(long, value_enum, default_value_t = Decimal::Point)]
+    pub decimal: Decimal,
     /// Overwrite files that already exist, and write more than 2,000 problems.
     #[arg(long)]
     pub force: bool,
@@ -452,6 +457,10 @@ choices!(Precision {
     Exact => "exact": "Exact sums of surds where the mathematics is exact, marked ≈ otherwise",
     F64 => "f64": "IEEE double precision with stable formulas",
     F32 => "f32": "IEEE single precision with stable formulas",
+});
+choices!(Decimal {
+    Point => "point": "0.5: a Moodle in English (a typed comma is a thousands separator there)",
+    Comma => "comma": "0,5: a Moodle with the Indonesian language pack",
 });
 choices!(Lang {
     Id => "id": "Bahasa Indonesia",

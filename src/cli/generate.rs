@@ -6,12 +6,13 @@ use crate::error::{Error, Result};
 use crate::msg::{Bound, ErrMsg, IoWhy};
 use crate::report::doc::Doc;
 use crate::report::gift::gift;
-use crate::report::moodle::{moodle_xml, Exams};
+use crate::report::moodle::{moodle_xml, Written};
 use crate::report::sheets::{
     exam_json, exam_title, key_file, key_title, problem_file, sheets, written_summary,
 };
 use crate::report::Style;
 use crate::tutor::check::DEFAULT_TOLERANCE;
+use crate::tutor::generate::quiz::Quiz;
 use crate::tutor::generate::{exam, variant_seed, Generated};
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -199,14 +200,14 @@ fn write_quiz(a: &GenerateArgs, style: &Style) -> Result<PathBuf> {
         })
         .collect::<Result<Vec<_>>>()?;
     bar.iter().for_each(|b| b.finish_and_clear());
-    let e = Exams {
-        exams: &exams,
-        topics: &a.topic,
-        rel,
+    let quiz = Quiz::new(exams, &a.topic, rel);
+    let w = Written {
+        style,
+        decimal: a.decimal,
     };
     let (name, text) = match a.format {
-        Format::Gift => ("quiz.gift", gift(&e, style)),
-        _ => ("quiz.xml", moodle_xml(&e, style)),
+        Format::Gift => ("quiz.gift", gift(&quiz, &w)),
+        _ => ("quiz.xml", moodle_xml(&quiz, &w)),
     };
     std::fs::create_dir_all(&a.out).map_err(|e| out_error(ErrMsg::CannotCreate, &a.out, &e))?;
     let path = a.out.join(name);

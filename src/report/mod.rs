@@ -218,7 +218,12 @@ impl Style {
             let body: Vec<String> = table.lines().map(|l| format!("{pad}  {l}")).collect();
             format!("{indent}{name} =\n{}", body.join("\n"))
         } else {
-            format!("{indent}{name} = {}", self.val_inline(v))
+            // "top ≈ 0.04663", not "top = ≈ 0.04663" (no exact form)
+            let val = self.val_inline(v);
+            match val.strip_prefix("≈ ") {
+                Some(rest) => format!("{indent}{name} ≈ {rest}"),
+                None => format!("{indent}{name} = {val}"),
+            }
         }
     }
 }
