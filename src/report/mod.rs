@@ -3,6 +3,7 @@
 
 pub mod bench;
 pub mod check;
+pub mod class;
 pub mod csv;
 pub mod doc;
 pub mod figure;
