@@ -245,6 +245,7 @@ fn a_class_of_sixty_gives_the_facility_discrimination_and_correlation_of_its_des
         key(&j, "view.points.A")["facility"].as_f64().unwrap(),
         0.9
     ));
+    assert_eq!(key(&j, "view.points.A")["counts"]["wrong"], 6);
     assert!(key(&j, "view.points.A")["flags"]
         .as_array()
         .unwrap()
@@ -635,4 +636,24 @@ fn one_exam_answer_file_is_marked_problem_by_problem() {
     assert_eq!(out.status.code(), Some(2));
     let e: Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(e["error"]["field"], "variant");
+}
+
+#[test]
+fn the_class_in_problems_answers_is_the_one_its_seed_writes() {
+    // README: `cargo run --example class -- 2026 problems/answers/class`
+    let students = common::class::seeded_class(2026);
+    assert!(students.len() >= 20);
+    let dir = root().join("problems/answers/class");
+    let mut files: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    files.sort();
+    let mut want: Vec<String> = students.iter().map(common::class::file_name).collect();
+    want.sort();
+    assert_eq!(files, want);
+    for s in &students {
+        let on_disk = std::fs::read_to_string(dir.join(common::class::file_name(s))).unwrap();
+        assert_eq!(on_disk, answer_file(s), "{}", s.name);
+    }
 }

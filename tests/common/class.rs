@@ -233,7 +233,7 @@ fn value(s: &Student, key: &str) -> Option<String> {
         // u = n × Vup = (−1, 0, 1)/√2, v = n × u = (0, −1, 0): x', y' flip
         "view.u" if s.cross_order => Some(vec!["-0.7071", "0", "0.7071"]),
         "view.v" if s.cross_order => Some(vec!["0", "-1", "0"]),
-        "view.points.A" if s.cross_order => Some(vec!["0", "1", "-3*sqrt(2)"]),
+        "view.points.A" if s.cross_order => Some(vec!["0", "1", "-3√2"]),
         "view.points.B" if s.cross_order => Some(vec!["-0.7071", "1", "-3.536"]),
         "view.points.C" if s.cross_order => Some(vec!["0.7071", "1", "-3.536"]),
         "project.points.A" if s.cross_order => Some(vec!["0", "0.02357"]),
@@ -277,4 +277,65 @@ pub fn answer_file(s: &Student) -> String {
         }
     }
     out
+}
+
+/// The names of the class of problems/answers/class/.
+pub const NAMES: [&str; 24] = [
+    "Adi", "Ayu", "Bagus", "Bayu", "Citra", "Dewi", "Dimas", "Eka", "Fajar", "Fitri", "Gilang",
+    "Hana", "Indah", "Joko", "Kartika", "Lestari", "Made", "Nur", "Putri", "Rizky", "Sari",
+    "Wahyu", "Wulan", "Yusuf",
+];
+
+/// A class of 24 drawn from a seed (SplitMix64, as `generate` draws): each
+/// student's written form and mistakes at these rates, each drawn on its
+/// own: u = n × Vup 12 %, tan(fovy) 15 %, the half extent as the height
+/// 30 % (with width aspect·h = 0.0828; not with tan(fovy), which changes
+/// the height itself), n not normalised 10 %, n to one figure 10 %, v in
+/// words 4 %, no pixels 8 %, a slip in pixel B 15 %, and the text's
+/// printed width 0.082 copied 15 % (tan(fovy) gives 0.4).
+pub fn seeded_class(seed: u64) -> Vec<Student> {
+    let mut rng = grafika::num::rng::SplitMix64::new(seed);
+    let mut chance = |percent: u64| rng.below(100) < percent;
+    NAMES
+        .iter()
+        .map(|name| {
+            let cross_order = chance(12);
+            let fovy_not_halved = chance(15);
+            let height_is_half_extent = chance(30) && !fovy_not_halved;
+            let n_not_normalized = chance(10);
+            let n_too_coarse = chance(10) && !n_not_normalized;
+            let v_in_words = chance(4);
+            let no_pixels = chance(8);
+            let pixel_slip = chance(15);
+            let printed_width = chance(15);
+            let form = (0..4).filter(|_| chance(50)).count() % 4;
+            let width = if fovy_not_halved {
+                Some("0.4".to_string())
+            } else if height_is_half_extent {
+                Some("0.0828".to_string())
+            } else if printed_width {
+                Some("0.082".to_string())
+            } else {
+                None
+            };
+            Student {
+                name: name.to_string(),
+                form,
+                cross_order,
+                fovy_not_halved,
+                height_is_half_extent,
+                n_not_normalized,
+                n_too_coarse,
+                v_in_words,
+                no_pixels,
+                width,
+                pixel_slip,
+            }
+        })
+        .collect()
+}
+
+/// The file name of a student of [`seeded_class`]: `adi.toml`.
+pub fn file_name(s: &Student) -> String {
+    format!("{}.toml", s.name.to_lowercase())
 }
