@@ -657,3 +657,26 @@ fn the_class_in_problems_answers_is_the_one_its_seed_writes() {
         assert_eq!(on_disk, answer_file(s), "{}", s.name);
     }
 }
+
+#[test]
+fn the_specs_report_csv_header_is_the_one_written() {
+    // docs/spec.md §5 lists the report CSV's columns.
+    let spec = std::fs::read_to_string(root().join("docs/spec.md")).unwrap();
+    let dir = scratch("spec-header");
+    let out = dir.join("class.csv");
+    let run = grafika()
+        .args([
+            "check",
+            "problems/text-triangle.toml",
+            "--answers",
+            "problems/answers/triangle/",
+            "--report",
+        ])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(run.status.success());
+    let text = std::fs::read_to_string(&out).unwrap();
+    let header = text.lines().next().unwrap();
+    assert!(spec.contains(&format!("`{header}`")), "{header}");
+}

@@ -280,8 +280,9 @@ fn list(doc: Doc, items: &[String]) -> String {
 /// (12 columns) fits the width of A4 in print.
 const CSS: &str = "<style>body{max-width:60rem}table.class{border-collapse:collapse;margin:.5rem 0;font-size:.9rem}\
 table.class th,table.class td{border:1px solid #999;padding:.15rem .4rem;text-align:left;vertical-align:top}\
+table.class td{white-space:nowrap}table.class td:last-child{white-space:normal}\
 table.class td.n{text-align:right}.flag{color:#D55E00;font-weight:bold}\
-@media print{body{font-size:10pt}table.class{font-size:8pt;break-inside:auto}table.class tr{break-inside:avoid}}</style>\n";
+@media print{body{font-size:10pt}h2,h3{break-after:avoid}table.class{font-size:8pt;break-inside:auto}table.class tr{break-inside:avoid}}</style>\n";
 
 /// The whole document: summary, keys, problems and variants, mistakes,
 /// unexplained wrong answers, students.
@@ -523,14 +524,20 @@ fn exam_section(doc: Doc, s: &Stats, lang: Lang) -> String {
     out
 }
 
+/// `step 16 of the worked solution: Window edges …` (an exam's:
+/// `problem-02, step 3 …`), so a lecturer can reopen it with `grafika solve`.
 fn step_words(step: &StepRef, st: &Style) -> String {
-    let word = st.tr("step", "langkah");
     let part = if step.part.is_empty() {
         String::new()
     } else {
         format!("{}, ", step.part)
     };
-    format!("{part}{word} {}: {}", step.number, st.w(&step.title))
+    let n = step.number;
+    let title = st.w(&step.title);
+    match st.lang {
+        Lang::En => format!("{part}step {n} of the worked solution: {title}"),
+        Lang::Id => format!("{part}langkah {n} dari penyelesaian: {title}"),
+    }
 }
 
 /// Each mistake with its students, keys and step, the most students first.
