@@ -4,9 +4,10 @@
 
 pub mod histogram;
 pub mod lecturer;
+mod page;
 
 use crate::error::Error;
-use crate::report::check::{class_header, to_json};
+use crate::report::check::to_json;
 use crate::report::lang::{cut_message, tr, Lang};
 use crate::tutor::check::{Marking, Verdict};
 use crate::tutor::class::{Class, Note, Sheet, Skip};
@@ -78,6 +79,36 @@ fn counts(ms: &[(String, Marking)]) -> (f64, usize, [usize; 6]) {
             sum(&|m: &Marking| m.follow_through()),
         ],
     )
+}
+
+/// The headings of a class's table (`check --answers DIR`), one per column.
+pub fn class_header(lang: Lang) -> Vec<&'static str> {
+    let en = [
+        "student",
+        "score",
+        "correct",
+        "too coarse",
+        "wrong",
+        "missing",
+        "unparseable",
+        "follow-through",
+        "mistakes",
+    ];
+    let id = [
+        "mahasiswa",
+        "nilai",
+        "benar",
+        "terlalu kasar",
+        "salah",
+        "tidak dijawab",
+        "tidak terbaca",
+        "follow-through",
+        "kesalahan konsep",
+    ];
+    match lang {
+        Lang::En => en.to_vec(),
+        Lang::Id => id.to_vec(),
+    }
 }
 
 /// One row per student, then the notes on unusual files and the entries

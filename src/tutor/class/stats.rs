@@ -35,11 +35,12 @@ use super::{full_key, Class, Paper, Sheet};
 use crate::msg::Msg;
 use crate::num::Real;
 use crate::stages::trace::{Step, Val};
-use crate::tutor::check::tolerance;
-use crate::tutor::check::{value_of, written, Marked, Settings, Verdict};
-use crate::tutor::diagnose::{Mistake, CATALOG};
-use crate::tutor::practice::{ordered_keys, step_for};
+use crate::tutor::check::{Marked, Settings};
+use crate::tutor::diagnose::Mistake;
+use crate::tutor::practice::ordered_keys;
 use crate::tutor::solve;
+
+mod wrong;
 
 /// Above this facility a key is very easy.
 pub const VERY_EASY: f64 = 0.9;
@@ -232,8 +233,8 @@ pub fn of(class: &Class, paper: &Paper, settings: &Settings) -> Stats {
     Stats {
         students: sheets.len(),
         keys: keys.iter().map(|k| key_stats(k, &sheets)).collect(),
-        mistakes: mistakes(&sheets, &keys, &solved),
-        wrong_answers: wrong_answers(&sheets, &keys, paper, settings),
+        mistakes: wrong::mistakes(&sheets, &keys, &solved),
+        wrong_answers: wrong::wrong_answers(&sheets, &keys, paper, settings),
         histogram: histogram(&sheets),
         problems: problems(paper, &sheets),
         variants: variants(paper, &sheets),
@@ -414,165 +415,6 @@ pub fn correlation(x: &[f64], y: &[f64]) -> Option<f64> {
     (sxx > 1e-12 && syy > 1e-12).then(|| sxy / (sxx * syy).sqrt())
 }
 
-/// Each catalog mistake named in the class with its students and keys, the
-/// most students first (ties in the catalog's order).
-fn mistakes(sheets: &[&Sheet], keys: &[String], solved: &[Vec<Solved>]) -> Vec<MistakeStats> {
-    // each mistake with the variant of its first student and its last sheet
-    let mut out: Vec<(MistakeStats, usize, usize)> = Vec::new();
-    for (i, s) in sheets.iter().enumerate() {
-        let v = s.variant.unwrap_or(1);
-        for (part, m) in s.outcome.iter().flatten() {
-            for d in &m.diagnoses {
-                let at = out
-                    .iter()
-                    .position(|(x, _, _)| x.mistake.code == d.mistake.code);
-                let at = at.unwrap_or_else(|| {
-                    let stats = MistakeStats {
-                        mistake: d.mistake,
-                        students: vec![],
-                        keys: vec![],
-                        also: vec![],
-                        step: None,
-                    };
-                    out.push((stats, v, usize::MAX));
-                    out.len() - 1
-                });
-                let (x, _, last) = &mut out[at];
-                if *last != i {
-                    x.students.push(s.who.clone());
-                    *last = i;
-                }
-                for k in &d.keys {
-                    let k = full_key(part, k);
-                    if !x.keys.contains(&k) {
-                        x.keys.push(k);
-                    }
-                }
-                for a in &d.also {
-                    if !x.also.iter().any(|b| b.code == a.code) {
-                        x.also.push(a);
-                    }
-                }
-            }
-        }
-    }
-    let rank = |k: &String| keys.iter().position(|x| x == k).unwrap_or(usize::MAX);
-    let catalog = |m: &Mistake| CATALOG.iter().position(|c| c.code == m.code);
-    for (x, v, _) in &mut out {
-        x.keys.sort_by_key(|k| rank(k));
-        x.step = x.keys.first().and_then(|k| step_of(k, solved.get(*v - 1)?));
-    }
-    let mut out: Vec<MistakeStats> = out.into_iter().map(|(x, _, _)| x).collect();
-    out.sort_by_key(|x| (std::cmp::Reverse(x.students.len()), catalog(x.mistake)));
-    out
-}
-
-/// The step of the worked solution that computes a full key.
-fn step_of(key: &str, parts: &[Solved]) -> Option<StepRef> {
-    let (part, rest, i) = match key.split_once('.') {
-        Some((p, rest)) if p.starts_with("problem-") => {
-            let i: usize = p.trim_start_matches("problem-").parse().ok()?;
-            (p.to_string(), rest, i.checked_sub(1)?)
-        }
-        _ => (String::new(), key, 0),
-    };
-    let steps = &parts.get(i)?.steps;
-    let step = step_for(rest, steps)?;
-    let number = steps.iter().position(|s| *s == step)? + 1;
-    Some(StepRef {
-        part,
-        number,
-        title: step.title,
-    })
-}
-
-/// The wrong answers no mistake explains, per key (and variant), grouped
-/// when equal within the tolerance, the most common first; the keys with
-/// the most such answers first.
-fn wrong_answers(
-    sheets: &[&Sheet],
-    keys: &[String],
-    paper: &Paper,
-    settings: &Settings,
-) -> Vec<WrongAnswers> {
-    let several = paper.exam && paper.variants.len() > 1;
-    let mut out: Vec<WrongAnswers> = Vec::new();
-    for key in keys {
-        for s in sheets {
-            let Some(a) =
-                answer(s, key).filter(|a| a.verdict == Verdict::Wrong && a.diagnosis.is_empty())
-            else {
-                continue;
-            };
-            let (Some(given), variant) = (&a.given_value, s.variant.filter(|_| several)) else {
-                continue;
-            };
-            let at = out
-                .iter()
-                .position(|w| &w.key == key && w.variant == variant);
-            let i = at.unwrap_or_else(|| {
-                out.push(WrongAnswers {
-                    key: key.clone(),
-                    variant,
-                    expected: a.expected.clone(),
-                    values: vec![],
-                });
-                out.len() - 1
-            });
-            let w = &mut out[i];
-            let same = |v: &WrongValue| same_value(&v.given, given, a, settings.tolerance);
-            match w.values.iter_mut().find(|v| same(v)) {
-                Some(v) => v.students.push(s.who.clone()),
-                None => w.values.push(WrongValue {
-                    value: written(given),
-                    given: given.clone(),
-                    students: vec![s.who.clone()],
-                }),
-            }
-        }
-    }
-    for w in &mut out {
-        w.values
-            .sort_by_key(|v| std::cmp::Reverse(v.students.len()));
-    }
-    let most = |w: &WrongAnswers| w.values.iter().map(|v| v.students.len()).max().unwrap_or(0);
-    out.sort_by_key(|w| std::cmp::Reverse(most(w)));
-    out
-}
-
-/// Whether a wrong answer equals a group's value within the tolerance of
-/// `check` ([`tolerance::for_key`], componentwise), or, for text, as written.
-fn same_value(first: &toml::Value, given: &toml::Value, a: &Marked, rel: f64) -> bool {
-    let like = a.expected.as_ref();
-    let read = |v: &toml::Value| like.and_then(|e| value_of(v, e, &a.key));
-    match (read(first), read(given)) {
-        (Some(x), Some(y)) => close(&x, &y, &a.key, rel),
-        _ => written(first)
-            .trim()
-            .eq_ignore_ascii_case(written(given).trim()),
-    }
-}
-
-fn close(x: &Val, y: &Val, key: &str, rel: f64) -> bool {
-    let (xs, ys) = (numbers(x), numbers(y));
-    if xs.is_empty() || xs.len() != ys.len() {
-        return x == y;
-    }
-    let scale = xs.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    xs.iter()
-        .zip(&ys)
-        .all(|(a, b)| (a - b).abs() <= tolerance::for_key(key, *a, scale, rel))
-}
-
-/// The numbers of a value, flattened.
-fn numbers(v: &Val) -> Vec<f64> {
-    match v {
-        Val::Num(n) => vec![n.value],
-        Val::List(items) => items.iter().flat_map(numbers).collect(),
-        _ => vec![],
-    }
-}
-
 /// The score distribution: [`BINS`] bars of 10 % of each student's marks.
 fn histogram(sheets: &[&Sheet]) -> Vec<Bin> {
     let step = 100 / BINS as u32;
@@ -679,4 +521,36 @@ fn variants(paper: &Paper, sheets: &[&Sheet]) -> Vec<VariantStats> {
             }
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn upper_minus_lower_shares_the_places_of_students_tied_at_the_edge() {
+        // N = 10, g = round(2.7) = 3. Upper: the 9 (x = 1) and two places
+        // shared by the three 8s (x = 1, 0, 0): (1 + ⅔·1)/3 = 5/9. Lower:
+        // the two 2s (x = 0, 1) and the 3 (x = 0): 1/3. D = 5/9 − 1/3 = 2/9.
+        let total = [9.0, 8.0, 8.0, 8.0, 5.0, 5.0, 4.0, 3.0, 2.0, 2.0];
+        let x = [1.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0];
+        let d = upper_minus_lower(&x, &total).unwrap();
+        assert!((d - 2.0 / 9.0).abs() < 1e-12, "{d}");
+        // everyone tied: both groups are the whole class, D = 0
+        let d = upper_minus_lower(&[1.0, 0.0, 1.0, 0.0], &[3.0; 4]).unwrap();
+        assert!(d.abs() < 1e-12, "{d}");
+        assert_eq!(upper_minus_lower(&[1.0], &[1.0]), None);
+    }
+
+    #[test]
+    fn correlation_is_pearsons() {
+        let x = [1.0, 0.0, 1.0, 0.0];
+        assert!((correlation(&x, &x).unwrap() - 1.0).abs() < 1e-12);
+        assert!((correlation(&x, &[0.0, 1.0, 0.0, 1.0]).unwrap() + 1.0).abs() < 1e-12);
+        // x = (1, 0, 0), y = (2, 1, 0): Σ(x−x̄)(y−ȳ) = 1, Σ(x−x̄)² = 2/3,
+        // Σ(y−ȳ)² = 2, so r = 1/√(4/3) = √3/2
+        let r = correlation(&[1.0, 0.0, 0.0], &[2.0, 1.0, 0.0]).unwrap();
+        assert!((r - 3f64.sqrt() / 2.0).abs() < 1e-12, "{r}");
+        assert_eq!(correlation(&x, &[2.0; 4]), None);
+    }
 }
