@@ -117,7 +117,7 @@ pub fn table(class: &Class, lang: Lang) -> String {
     use comfy_table::{presets, Table};
     let mut header = class_header(lang);
     if class.exam {
-        header.insert(1, "variant");
+        header.insert(1, tr(lang, "variant", "varian"));
     }
     let mut t = Table::new();
     t.load_preset(presets::UTF8_FULL_CONDENSED)

@@ -155,12 +155,13 @@ pub fn mark_file(paper: &Paper, f: &Path, settings: Settings) -> Sheet {
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default(),
     };
-    let note = match &read {
-        Ok((_, answers)) if answers.is_empty() => Some(Note::Empty),
-        Err(_) => Some(Note::NotMarked),
-        _ => None,
-    };
+    let empty = matches!(&read, Ok((_, answers)) if answers.is_empty());
     let split = read.and_then(|(_, answers)| split(paper, &answers));
+    let note = match &split {
+        Err(_) => Some(Note::NotMarked),
+        Ok(_) if empty => Some(Note::Empty),
+        Ok(_) => None,
+    };
     let variant = split.as_ref().ok().map(|(v, _)| *v);
     let outcome = split.and_then(|(v, parts)| {
         let problems = &paper.variants[v - 1];
@@ -173,11 +174,6 @@ pub fn mark_file(paper: &Paper, f: &Path, settings: Settings) -> Sheet {
             })
             .collect()
     });
-    let note = if outcome.is_err() {
-        Some(Note::NotMarked)
-    } else {
-        note
-    };
     Sheet {
         file: f.to_path_buf(),
         who,
