@@ -76,7 +76,7 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<(String, i32)> {
                 }
             };
             if let Some(out) = csv_out(a, std::slice::from_ref(&sheet), paper.exam, style.lang)? {
-                return Ok((out, 0));
+                return Ok((out, if sheet.outcome.is_err() { 2 } else { 0 }));
             }
             let marked = sheet.outcome?;
             Ok((output(&marked, json, style), 0))
