@@ -297,7 +297,9 @@ pub struct ShadeArgs {
 /// The `check` flags.
 #[derive(Args, Debug)]
 pub struct CheckArgs {
-    /// The problem file.
+    /// The problem file, or an exam folder written by `grafika generate`
+    /// (answer files then say `variant = N` and hold one `[problem-NN]`
+    /// table per problem).
     pub file: PathBuf,
     /// The student's answers (TOML keyed like the JSON results), or a
     /// directory of answer files, one per student.
@@ -315,6 +317,13 @@ pub struct CheckArgs {
     /// With a directory of answers: write a CSV summary to this file (`-` for stdout).
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
+    /// With a directory of answers: write the lecturer's report of the
+    /// class (per answer key: counts, facility, discrimination; the
+    /// mistakes and who made them; wrong answers no mistake explains; the
+    /// score histogram) to this file, as .html, .md, .json or .csv by its
+    /// extension.
+    #[arg(long, value_name = "FILE")]
+    pub report: Option<PathBuf>,
     /// Credit a wrong answer that is right given the student's own earlier
     /// answers (pixels from their window and projected points, ...) as
     /// correct.follow_through.

@@ -13,7 +13,7 @@ use crate::report::sheets::{
 use crate::report::Style;
 use crate::tutor::check::DEFAULT_TOLERANCE;
 use crate::tutor::generate::quiz::Quiz;
-use crate::tutor::generate::{exam, variant_seed, Generated};
+use crate::tutor::generate::{exam, problem_name, variant_name, variant_seed, Generated};
 use serde_json::json;
 use std::path::{Path, PathBuf};
 
@@ -67,10 +67,10 @@ fn check_out(a: &GenerateArgs) -> Result<()> {
         ));
     }
     let first = a.out.join(match a.format {
-        Format::Moodle => "quiz.xml",
-        Format::Gift => "quiz.gift",
-        _ if a.variants == 1 => "problem-01.toml",
-        _ => "variant-01",
+        Format::Moodle => "quiz.xml".to_string(),
+        Format::Gift => "quiz.gift".to_string(),
+        _ if a.variants == 1 => format!("{}.toml", problem_name(1)),
+        _ => variant_name(1),
     });
     if first.exists() && !a.force {
         return Err(Error::why(
@@ -93,7 +93,7 @@ pub fn write_exams(a: &GenerateArgs, style: &Style) -> Result<Vec<PathBuf>> {
         let dir = if a.variants == 1 {
             a.out.clone()
         } else {
-            a.out.join(format!("variant-{:02}", v + 1))
+            a.out.join(variant_name(v as usize + 1))
         };
         std::fs::create_dir_all(&dir).map_err(|e| out_error(ErrMsg::CannotCreate, &dir, &e))?;
         let exam = exam(&a.topic, a.difficulty, a.count, variant_seed(a.seed, v))?;
@@ -133,11 +133,11 @@ fn write_exam(
     };
     for (i, g) in exam.iter().enumerate() {
         put(
-            format!("problem-{:02}.toml", i + 1),
+            format!("{}.toml", problem_name(i + 1)),
             problem_file(g, style.lang),
         )?;
         put(
-            format!("problem-{:02}.key.toml", i + 1),
+            format!("{}.key.toml", problem_name(i + 1)),
             key_file(g, style.lang),
         )?;
     }

@@ -307,6 +307,18 @@ pub enum ErrMsg {
     CsvAndJson,
     /// A directory without answer files.
     NoAnswerFiles(String),
+    /// An exam folder (or one of its variant folders) without problem-01.toml: the folder.
+    NoExam(String),
+    /// An exam's answer file without `variant = N`: the exam's variants.
+    NoVariant(usize),
+    /// A variant that is not one of the exam's: as given, the exam's variants.
+    NotAVariant(String, usize),
+    /// An answer in an exam's file outside its problems' tables: the key, the problems.
+    NotAProblemOfExam(String, String),
+    /// `--report` with an unknown extension: the path.
+    ReportFormat(String),
+    /// `--report` without a folder of answers.
+    ReportNeedsClass,
     /// A pixel outside the image: x, y, width, height.
     PixelOutside(u32, u32, u32, u32),
     /// Not X,Y.

@@ -78,6 +78,25 @@ pub fn decimal(s: &str, lang: Lang) -> String {
     }
 }
 
+/// At most this many characters of a message are printed: an error about
+/// a 100 KB input quotes its start and end, not all of it.
+pub const MAX_MESSAGE: usize = 300;
+
+/// `message` cut to [`MAX_MESSAGE`] characters, its middle replaced by the
+/// number of characters left out.
+pub fn cut_message(message: &str, lang: Lang) -> String {
+    let n = message.chars().count();
+    if n <= MAX_MESSAGE {
+        return message.to_string();
+    }
+    let keep = MAX_MESSAGE / 2;
+    let head: String = message.chars().take(keep).collect();
+    let tail: String = message.chars().skip(n - keep).collect();
+    let cut = n - 2 * keep;
+    let said = tr(lang, "characters cut", "karakter dipotong");
+    format!("{head} … ({cut} {said}) … {tail}")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -3,6 +3,8 @@
 
 pub mod bench;
 pub mod check;
+pub mod class;
+pub mod csv;
 pub mod doc;
 pub mod figure;
 pub mod gift;

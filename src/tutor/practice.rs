@@ -112,7 +112,7 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
 }
 
 /// The keys of a result tree in the order of the text's solution.
-fn ordered_keys(result: &Tree) -> Vec<String> {
+pub(crate) fn ordered_keys(result: &Tree) -> Vec<String> {
     let mut keys = Vec::new();
     for (part, v) in result {
         match (part.as_str(), v) {
@@ -188,7 +188,7 @@ fn step_result(step: &Step, name: &str) -> Option<Val> {
         .map(|(_, v)| v.clone())
 }
 /// The worked step that computes a key.
-fn step_for(key: &str, steps: &[Step]) -> Option<Step> {
+pub(crate) fn step_for(key: &str, steps: &[Step]) -> Option<Step> {
     let parts: Vec<&str> = key.split('.').collect();
     let name = match parts[..] {
         ["view", "matrix"] => "V".to_string(),

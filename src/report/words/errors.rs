@@ -88,6 +88,12 @@ pub fn error(m: &ErrMsg, lang: Lang) -> String {
         | ErrMsg::NoPrinted(_)
         | ErrMsg::CsvAndJson
         | ErrMsg::NoAnswerFiles(_)
+        | ErrMsg::NoExam(_)
+        | ErrMsg::NoVariant(_)
+        | ErrMsg::NotAVariant(..)
+        | ErrMsg::NotAProblemOfExam(..)
+        | ErrMsg::ReportFormat(_)
+        | ErrMsg::ReportNeedsClass
         | ErrMsg::PixelOutside(..)
         | ErrMsg::PixelText(_)
         | ErrMsg::NothingRendered
@@ -637,6 +643,31 @@ fn commands(m: &ErrMsg, lang: Lang) -> String {
             format!("{d} holds no .toml answer files"),
             format!("{d} tidak berisi berkas jawaban .toml"),
         ),
+        ErrMsg::NoExam(d) => f(
+            format!("{d} holds no problem-01.toml (nor variant-01/): give a problem file or a folder written by grafika generate"),
+            format!("{d} tidak berisi problem-01.toml (maupun variant-01/): berikan berkas soal atau folder yang ditulis grafika generate"),
+        ),
+        ErrMsg::NoVariant(n) => f(
+            format!("the exam has {n} variants: say which one these answers are for with `variant = N` at the top of the file"),
+            format!("ujian ini memiliki {n} varian: tuliskan varian mana yang dijawab dengan `variant = N` di awal berkas"),
+        ),
+        ErrMsg::NotAVariant(v, n) => f(
+            format!("`{v}` is not a variant of the exam (1 to {n})"),
+            format!("`{v}` bukan varian ujian ini (1 sampai {n})"),
+        ),
+        ErrMsg::NotAProblemOfExam(k, names) => f(
+            format!("`{k}` is not in a table of a problem of the exam ([{names}])"),
+            format!("`{k}` tidak berada di tabel soal ujian ini ([{names}])"),
+        ),
+        ErrMsg::ReportFormat(p) => f(
+            format!("{p}: the report's format comes from its extension: .html, .md, .json or .csv"),
+            format!("{p}: format laporan ditentukan oleh ekstensinya: .html, .md, .json atau .csv"),
+        ),
+        ErrMsg::ReportNeedsClass => say(
+            lang,
+            "a class report needs --answers DIR (a folder of answer files)",
+            "laporan kelas memerlukan --answers DIR (folder berkas jawaban)",
+        ),
         ErrMsg::PixelOutside(x, y, w, h) => f(
             format!("({x}, {y}) is outside the {w}x{h} image"),
             format!("({x}; {y}) berada di luar gambar {w}x{h}"),
@@ -1039,6 +1070,12 @@ pub(crate) mod tests {
             ErrMsg::NoPrinted(s("p.toml")),
             ErrMsg::CsvAndJson,
             ErrMsg::NoAnswerFiles(s("class")),
+            ErrMsg::NoExam(s("exam")),
+            ErrMsg::NoVariant(4),
+            ErrMsg::NotAVariant(s("7"), 4),
+            ErrMsg::NotAProblemOfExam(s("view.n"), s("problem-01, problem-02")),
+            ErrMsg::ReportFormat(s("class.txt")),
+            ErrMsg::ReportNeedsClass,
             ErrMsg::PixelOutside(10, 20, 8, 8),
             ErrMsg::PixelText(s("a,b")),
             ErrMsg::NothingRendered,
@@ -1233,6 +1270,12 @@ pub(crate) mod tests {
             | E::NoPrinted(_)
             | E::CsvAndJson
             | E::NoAnswerFiles(_)
+            | E::NoExam(_)
+            | E::NoVariant(_)
+            | E::NotAVariant(..)
+            | E::NotAProblemOfExam(..)
+            | E::ReportFormat(_)
+            | E::ReportNeedsClass
             | E::PixelOutside(..)
             | E::PixelText(_)
             | E::NothingRendered
