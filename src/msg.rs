@@ -394,6 +394,8 @@ pub enum Msg {
     UpParallel(f64),
     /// A point behind the centre of projection.
     BehindWarn(String),
+    /// Exact values that grew past this many terms were left approximate.
+    ExactTooLarge(usize),
 }
 
 impl Default for Msg {

@@ -4,6 +4,7 @@
 
 use crate::cli::args::CheckArgs;
 use crate::cli::cut_message;
+use crate::cli::write::Outputs;
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
 use crate::msg::{Bound, ErrMsg, IoWhy, Msg, Twice};
@@ -16,7 +17,7 @@ use std::path::{Path, PathBuf};
 
 /// Runs `grafika check`; returns what to print on stdout and the exit
 /// status (2 when a file of a class could not be marked).
-pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<(String, i32)> {
+pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Result<(String, i32)> {
     valid_tolerance(a.tolerance)?;
     let stdin = Path::new("-");
     // `--csv -` prints only the CSV: there is no room for the JSON.
@@ -50,7 +51,7 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<(String, i32)> {
             let m = check::mark(&p, &who, &answers, settings, true)?;
             Ok((output(&m, json, style), 0))
         }
-        (Some(path), false) if path.is_dir() => class(&p, path, settings, a, json, style),
+        (Some(path), false) if path.is_dir() => class(&p, path, settings, a, json, style, outputs),
         (Some(path), false) => {
             let (student, answers) = check::read_answers(path)?;
             let who = student.unwrap_or_else(|| path.display().to_string());
@@ -63,7 +64,7 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<(String, i32)> {
                     note: None,
                 };
                 let csv = summary_csv(std::slice::from_ref(&row), style.lang);
-                write_csv(c, &csv)?;
+                write_csv(c, &csv, outputs)?;
                 if c.as_os_str() == "-" {
                     return Ok((csv, 0));
                 }
@@ -92,6 +93,7 @@ fn class(
     a: &CheckArgs,
     json: bool,
     style: &Style,
+    outputs: &Outputs,
 ) -> Result<(String, i32)> {
     let to_stdout = a.csv.as_deref() == Some(Path::new("-"));
     let (files, skipped) = answer_files(dir, style.lang)?;
@@ -104,12 +106,13 @@ fn class(
     } else {
         0
     };
+    not_marked(&rows, style.lang);
     let csv = summary_csv(&rows, style.lang);
     if let Some(c) = &a.csv {
         if to_stdout {
             return Ok((csv, status));
         }
-        write_csv(c, &csv)?;
+        write_csv(c, &csv, outputs)?;
     }
     let out = if json {
         serde_json::to_string_pretty(&json!({
@@ -186,16 +189,34 @@ fn row_json(r: &Row, lang: Lang) -> serde_json::Value {
 }
 
 /// Writes the CSV to a file (`-`: nothing here, the caller prints it).
-fn write_csv(c: &Path, csv: &str) -> Result<()> {
+fn write_csv(c: &Path, csv: &str, outputs: &Outputs) -> Result<()> {
     if c.as_os_str() == "-" {
         return Ok(());
     }
-    std::fs::write(c, csv).map_err(|e| {
-        Error::why(
-            "csv",
-            ErrMsg::CannotWrite(c.display().to_string(), IoWhy::of(&e)),
-        )
-    })
+    outputs.write(c, "csv", csv.as_bytes())
+}
+
+/// Says on standard error which files of a class could not be marked (the
+/// exit status is then 2; their rows give each reason).
+fn not_marked(rows: &[Row], lang: Lang) {
+    let bad: Vec<String> = rows
+        .iter()
+        .filter(|r| r.outcome.is_err())
+        .map(|r| r.file.display().to_string())
+        .collect();
+    if !bad.is_empty() {
+        let e = Error::why("answers", ErrMsg::NotMarked(bad.len(), rows.len(), bad.join(", ")));
+        crate::cli::print::stderr_line(&format!("{}: {}", tr(lang, "error", "kesalahan"), said(&e, lang)));
+    }
+}
+
+/// The files `--answers` names: the file, or a directory's entries (the
+/// command's inputs, which `--csv` must not overwrite).
+pub(crate) fn answer_paths(answers: &PathBuf) -> Vec<PathBuf> {
+    match std::fs::read_dir(answers) {
+        Ok(rd) => rd.filter_map(|e| e.ok().map(|e| e.path())).collect(),
+        Err(_) => vec![answers.clone()],
+    }
 }
 
 /// `--tolerance` must be a finite number ≥ 0.

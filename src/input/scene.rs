@@ -337,6 +337,8 @@ pub struct Scene {
     pub lights: Vec<Light<f32>>,
     /// Objects.
     pub objects: Vec<Object>,
+    /// The files the scene read besides itself (its OBJ meshes).
+    pub files: Vec<PathBuf>,
 }
 
 impl Scene {
@@ -392,6 +394,12 @@ impl Scene {
         if objects.is_empty() {
             return Err(Error::why("object", ErrMsg::NoObjects).at(origin));
         }
+        let files = s
+            .object
+            .iter()
+            .filter_map(|o| o.get_ref().path.as_ref())
+            .map(|p| dir.join(p.get_ref()))
+            .collect();
         Ok(Scene {
             title: s.title,
             shading: s.shading.unwrap_or_default(),
@@ -403,6 +411,7 @@ impl Scene {
             view,
             lights,
             objects,
+            files,
         })
     }
 }

@@ -217,14 +217,26 @@ pub enum ErrMsg {
     CannotWrite(String, IoWhy),
     /// A directory that cannot be created: path, why.
     CannotCreate(String, IoWhy),
-    /// The PNG cannot be written to standard output: why.
+    /// Standard output cannot be written: why.
     CannotWriteStdout(IoWhy),
+    /// Standard output is closed (`>&-`).
+    StdoutClosed,
     /// A file that exists and is never overwritten: path.
     Exists(String),
     /// A file that exists; --force overwrites: path.
     ExistsForce(String),
+    /// An output that names a folder, not a file: path.
+    NamesFolder(String),
+    /// An output that is a symbolic link: path.
+    IsLink(String),
+    /// An output that is one of the command's inputs: path.
+    IsInput(String),
+    /// An entry of generate's output folder it did not write: path, marker.
+    NotOwn(String, String),
     /// Not a directory: path.
     NotDirectory(String),
+    /// Files of a class that could not be marked: how many, of how many, which.
+    NotMarked(usize, usize, String),
     /// A lights file without [[light]]: path.
     NoLightTable(String),
     /// Cs missing.

@@ -4,6 +4,7 @@
 pub mod bench;
 pub mod check;
 pub mod doc;
+pub mod escape;
 pub mod figure;
 pub mod gift;
 pub mod html;

@@ -34,9 +34,15 @@ pub fn error(m: &ErrMsg, lang: Lang) -> String {
         | ErrMsg::CannotWrite(..)
         | ErrMsg::CannotCreate(..)
         | ErrMsg::CannotWriteStdout(_)
+        | ErrMsg::StdoutClosed
         | ErrMsg::Exists(_)
         | ErrMsg::ExistsForce(_)
+        | ErrMsg::NamesFolder(_)
+        | ErrMsg::IsLink(_)
+        | ErrMsg::IsInput(_)
+        | ErrMsg::NotOwn(..)
         | ErrMsg::NotDirectory(_)
+        | ErrMsg::NotMarked(..)
         | ErrMsg::Man(_) => files(m, lang),
         ErrMsg::ObjUnreadable(..)
         | ErrMsg::ObjInvalid(..)
@@ -302,6 +308,16 @@ pub fn io_why(w: &IoWhy, lang: Lang) -> String {
     }
 }
 
+/// `dir/` for a path that is a folder (`dir/` itself when it ends in `/`),
+/// so that the example is a file name inside it.
+fn folder_prefix(p: &str) -> String {
+    if p.ends_with('/') {
+        p.to_string()
+    } else {
+        format!("{p}/")
+    }
+}
+
 /// Files that cannot be read, written or created.
 fn files(m: &ErrMsg, lang: Lang) -> String {
     let f = |en: String, id: String| pick(lang, en, id);
@@ -324,20 +340,44 @@ fn files(m: &ErrMsg, lang: Lang) -> String {
             format!("tidak dapat membuat {p}: {}", w(why)),
         ),
         ErrMsg::CannotWriteStdout(why) => f(
-            format!("cannot write the PNG to standard output: {}", w(why)),
-            format!("tidak dapat menulis PNG ke keluaran standar: {}", w(why)),
+            format!("cannot write to standard output: {}", w(why)),
+            format!("tidak dapat menulis ke keluaran standar: {}", w(why)),
+        ),
+        ErrMsg::StdoutClosed => f(
+            "standard output is closed, so the results would be lost (to discard them, send them to /dev/null)".into(),
+            "keluaran standar tertutup, jadi hasilnya akan hilang (untuk membuangnya, arahkan ke /dev/null)".into(),
         ),
         ErrMsg::Exists(p) => f(
             format!("{p}: exists; remove it or choose another name"),
             format!("{p}: sudah ada; hapus atau pilih nama lain"),
         ),
         ErrMsg::ExistsForce(p) => f(
-            format!("{p} already exists: give --force to overwrite it, or another --out"),
-            format!("{p} sudah ada: berikan --force untuk menimpanya, atau --out yang lain"),
+            format!("{p} already exists: give --force to replace it, or choose another name"),
+            format!("{p} sudah ada: berikan --force untuk menggantinya, atau pilih nama lain"),
+        ),
+        ErrMsg::NamesFolder(p) => f(
+            format!("{p} is a folder, not a file name: name the file to write (such as {}figure.svg)", folder_prefix(p)),
+            format!("{p} adalah folder, bukan nama berkas: sebutkan berkas yang akan ditulis (misalnya {}gambar.svg)", folder_prefix(p)),
+        ),
+        ErrMsg::IsLink(p) => f(
+            format!("{p} is a symbolic link: grafika never writes through a link nor replaces one; name the file itself or another name"),
+            format!("{p} adalah tautan simbolik: grafika tidak pernah menulis melalui tautan atau menggantinya; sebutkan berkasnya sendiri atau nama lain"),
+        ),
+        ErrMsg::IsInput(p) => f(
+            format!("{p} is one of this command's own inputs (the same file, links followed): it is never overwritten, even with --force"),
+            format!("{p} adalah salah satu masukan perintah ini (berkas yang sama, tautan diikuti): tidak pernah ditimpa, juga dengan --force"),
+        ),
+        ErrMsg::NotOwn(p, marker) => f(
+            format!("{p} was not written by grafika generate (it is not listed in {marker}, or holds other files): --force replaces only generate's own earlier output; move it away or choose another --out"),
+            format!("{p} tidak ditulis oleh grafika generate (tidak tercantum di {marker}, atau berisi berkas lain): --force hanya mengganti keluaran generate sendiri sebelumnya; pindahkan atau pilih --out yang lain"),
         ),
         ErrMsg::NotDirectory(p) => f(
             format!("{p} exists and is not a directory"),
             format!("{p} sudah ada dan bukan direktori"),
+        ),
+        ErrMsg::NotMarked(n, of, which) => f(
+            format!("{n} of the {of} answer files could not be marked (see the error in each one's row): {which}"),
+            format!("{n} dari {of} berkas jawaban tidak dapat dinilai (lihat galat di baris masing-masing): {which}"),
         ),
         ErrMsg::Man(why) => f(
             format!("cannot write the manual page: {why}"),
@@ -1011,7 +1051,13 @@ pub(crate) mod tests {
             ErrMsg::ResultNotFinite(s("f32")),
             ErrMsg::Exists(s("a.svg")),
             ErrMsg::ExistsForce(s("out/problem-01.toml")),
+            ErrMsg::StdoutClosed,
+            ErrMsg::NamesFolder(s("figs/")),
+            ErrMsg::IsLink(s("a.png")),
+            ErrMsg::IsInput(s("scene.toml")),
+            ErrMsg::NotOwn(s("exam/key.md"), s(".grafika-generated")),
             ErrMsg::NotDirectory(s("out")),
+            ErrMsg::NotMarked(1, 4, s("class/broken.toml")),
             ErrMsg::NoLightTable(s("l.toml")),
             ErrMsg::ColorMissing,
             ErrMsg::NormalMissing,
@@ -1206,9 +1252,15 @@ pub(crate) mod tests {
             | E::CannotWrite(..)
             | E::CannotCreate(..)
             | E::CannotWriteStdout(_)
+            | E::StdoutClosed
             | E::Exists(_)
             | E::ExistsForce(_)
+            | E::NamesFolder(_)
+            | E::IsLink(_)
+            | E::IsInput(_)
+            | E::NotOwn(..)
             | E::NotDirectory(_)
+            | E::NotMarked(..)
             | E::NoLightTable(_)
             | E::ColorMissing
             | E::NormalMissing
