@@ -52,7 +52,9 @@ fn run_writing(cli: &Cli, outputs: &Outputs) -> Result<Report> {
         let n = crate::num::real::MAX_EXACT_TERMS;
         report.warnings.push(Msg::ExactTooLarge(n));
     }
-    match report.non_finite_result() {
+    // A NaN or ∞ in a step is refused as one in the results is.
+    let step = || report.non_finite_step_value();
+    match report.non_finite_result().or_else(step) {
         Some(key) => Err(Error::why(
             key,
             ErrMsg::ResultNotFinite(format!("{:?}", cli.common.precision).to_lowercase()),

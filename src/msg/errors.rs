@@ -276,8 +276,10 @@ pub enum ErrMsg {
     FaceVertex,
     /// A height formula that gives a value not finite.
     FormulaNotFinite,
-    /// More triangles than the renderer takes: how many, the most.
+    /// More triangles in a scene than the renderer takes: how many, the most.
     TooManyTriangles(usize, usize),
+    /// More lights in a scene than the renderer takes: how many, the most.
+    TooManyLights(usize, usize),
     /// A colour list that is empty.
     NeedsColour,
     /// A scene without objects.

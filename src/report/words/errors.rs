@@ -51,6 +51,7 @@ pub fn error(m: &ErrMsg, lang: Lang) -> String {
         | ErrMsg::FaceVertex
         | ErrMsg::FormulaNotFinite
         | ErrMsg::TooManyTriangles(..)
+        | ErrMsg::TooManyLights(..)
         | ErrMsg::NeedsColour
         | ErrMsg::NoObjects
         | ErrMsg::CameraNeedsPerspective
@@ -416,8 +417,12 @@ fn scene(m: &ErrMsg, lang: Lang) -> String {
             "rumus menghasilkan nilai yang bukan bilangan berhingga",
         ),
         ErrMsg::TooManyTriangles(n, max) => f(
-            format!("has {n} triangles; the renderer takes at most {max} per object"),
-            format!("memiliki {n} segitiga; renderer menerima paling banyak {max} per objek"),
+            format!("the scene's objects have {n} triangles together; the renderer takes at most {max} per scene (refused before any mesh is built)"),
+            format!("objek-objek scene ini bersama-sama memiliki {n} segitiga; renderer menerima paling banyak {max} per scene (ditolak sebelum mesh dibuat)"),
+        ),
+        ErrMsg::TooManyLights(n, max) => f(
+            format!("the scene has {n} lights; the renderer takes at most {max} per scene (as Direct3D 9 does)"),
+            format!("scene ini memiliki {n} cahaya; renderer menerima paling banyak {max} per scene (seperti Direct3D 9)"),
         ),
         ErrMsg::NeedsColour => say(lang, "needs at least one colour", "memerlukan paling sedikit satu warna"),
         ErrMsg::NoObjects => say(
@@ -604,6 +609,10 @@ fn stages(m: &ErrMsg, lang: Lang) -> String {
         ErrMsg::EyeCoordsTooLarge(p, prec) => f(
             format!("the eye coordinates of {p} are too large for {prec} precision"),
             format!("koordinat kamera titik {p} terlalu besar untuk presisi {prec}"),
+        ),
+        ErrMsg::ResultNotFinite(prec) if prec == "exact" => f(
+            "the result is exact but beyond the range of f64 (about 1.8e308), so it has no decimal or JSON number to give (scale the inputs)".into(),
+            "hasilnya eksak tetapi di luar jangkauan f64 (sekitar 1,8e308), jadi tidak ada desimal atau bilangan JSON untuknya (skalakan masukan)".into(),
         ),
         ErrMsg::ResultNotFinite(prec) => f(
             format!("the result is not a finite number at {prec} precision: an input overflows or underflows the floats (scale the inputs, or use --precision exact)"),
@@ -1049,6 +1058,7 @@ pub(crate) mod tests {
             ErrMsg::TranslationTooLarge(s("f32")),
             ErrMsg::EyeCoordsTooLarge(s("A"), s("f32")),
             ErrMsg::ResultNotFinite(s("f32")),
+            ErrMsg::ResultNotFinite(s("exact")),
             ErrMsg::Exists(s("a.svg")),
             ErrMsg::ExistsForce(s("out/problem-01.toml")),
             ErrMsg::StdoutClosed,
@@ -1080,6 +1090,7 @@ pub(crate) mod tests {
             ErrMsg::FaceVertex,
             ErrMsg::FormulaNotFinite,
             ErrMsg::TooManyTriangles(5_000_000, 4_000_000),
+            ErrMsg::TooManyLights(9, 8),
             ErrMsg::NeedsColour,
             ErrMsg::NoObjects,
             ErrMsg::CameraNeedsPerspective,
@@ -1281,6 +1292,7 @@ pub(crate) mod tests {
             | E::FaceVertex
             | E::FormulaNotFinite
             | E::TooManyTriangles(..)
+            | E::TooManyLights(..)
             | E::NeedsColour
             | E::NoObjects
             | E::CameraNeedsPerspective
