@@ -304,6 +304,8 @@ pub enum Msg {
     EmptyAnswer,
     /// No answer given.
     NoAnswer,
+    /// An answer longer than the most read: its length, the most.
+    AnswerTooLong(usize, usize),
     /// The answer cannot be read (the reader's reason).
     Unreadable(NumErr),
     /// A component that is not a number (the text; the values expected).

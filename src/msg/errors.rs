@@ -235,6 +235,8 @@ pub enum ErrMsg {
     NotOwn(String, String),
     /// Not a directory: path.
     NotDirectory(String),
+    /// An answer file larger than the most read: path, size, the most.
+    AnswerFileTooLarge(String, usize, usize),
     /// Files of a class that could not be marked: how many, of how many, which.
     NotMarked(usize, usize, String),
     /// A lights file without [[light]]: path.

@@ -746,6 +746,10 @@ fn check_note(m: &Msg, id: bool) -> Option<String> {
         ),
         Msg::EmptyAnswer => p("empty answer", "jawaban kosong"),
         Msg::NoAnswer => p("no answer given", "tidak ada jawaban"),
+        Msg::AnswerTooLong(n, max) => f(
+            format!("the answer has {n} characters; at most {max} are read"),
+            format!("jawaban ini memuat {n} karakter; paling banyak {max} yang dibaca"),
+        ),
         Msg::NotShapeAsked => p(
             "not of the shape asked",
             "bentuknya tidak seperti yang diminta",
@@ -897,6 +901,7 @@ mod tests {
             Msg::SeveralAnswers,
             Msg::EmptyAnswer,
             Msg::NoAnswer,
+            Msg::AnswerTooLong(5000, 4000),
             Msg::Unreadable(crate::msg::NumErr::Empty),
             Msg::Exact,
             Msg::NotANumber(s(), 3),
@@ -1179,6 +1184,7 @@ mod tests {
             | SeveralAnswers
             | EmptyAnswer
             | NoAnswer
+            | AnswerTooLong(..)
             | Unreadable(_)
             | NotANumber(..)
             | Exact

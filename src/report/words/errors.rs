@@ -43,6 +43,7 @@ pub fn error(m: &ErrMsg, lang: Lang) -> String {
         | ErrMsg::NotOwn(..)
         | ErrMsg::NotDirectory(_)
         | ErrMsg::NotMarked(..)
+        | ErrMsg::AnswerFileTooLarge(..)
         | ErrMsg::Man(_) => files(m, lang),
         ErrMsg::ObjUnreadable(..)
         | ErrMsg::ObjInvalid(..)
@@ -375,6 +376,10 @@ fn files(m: &ErrMsg, lang: Lang) -> String {
         ErrMsg::NotDirectory(p) => f(
             format!("{p} exists and is not a directory"),
             format!("{p} sudah ada dan bukan direktori"),
+        ),
+        ErrMsg::AnswerFileTooLarge(p, n, max) => f(
+            format!("{p} has {n} bytes; an answer file may have at most {max} (it is refused before it is read as TOML)"),
+            format!("{p} berukuran {n} bita; berkas jawaban paling besar {max} bita (ditolak sebelum dibaca sebagai TOML)"),
         ),
         ErrMsg::NotMarked(n, of, which) => f(
             format!("{n} of the {of} answer files could not be marked (see the error in each one's row): {which}"),
@@ -1068,6 +1073,7 @@ pub(crate) mod tests {
             ErrMsg::NotOwn(s("exam/key.md"), s(".grafika-generated")),
             ErrMsg::NotDirectory(s("out")),
             ErrMsg::NotMarked(1, 4, s("class/broken.toml")),
+            ErrMsg::AnswerFileTooLarge(s("a.toml"), 2_000_000, 1 << 20),
             ErrMsg::NoLightTable(s("l.toml")),
             ErrMsg::ColorMissing,
             ErrMsg::NormalMissing,
@@ -1272,6 +1278,7 @@ pub(crate) mod tests {
             | E::NotOwn(..)
             | E::NotDirectory(_)
             | E::NotMarked(..)
+            | E::AnswerFileTooLarge(..)
             | E::NoLightTable(_)
             | E::ColorMissing
             | E::NormalMissing
