@@ -205,8 +205,15 @@ fn not_marked(rows: &[Row], lang: Lang) {
         .map(|r| r.file.display().to_string())
         .collect();
     if !bad.is_empty() {
-        let e = Error::why("answers", ErrMsg::NotMarked(bad.len(), rows.len(), bad.join(", ")));
-        crate::cli::print::stderr_line(&format!("{}: {}", tr(lang, "error", "kesalahan"), said(&e, lang)));
+        let e = Error::why(
+            "answers",
+            ErrMsg::NotMarked(bad.len(), rows.len(), bad.join(", ")),
+        );
+        crate::cli::print::stderr_line(&format!(
+            "{}: {}",
+            tr(lang, "error", "kesalahan"),
+            said(&e, lang)
+        ));
     }
 }
 

@@ -2,8 +2,8 @@
 //! and keys (report), and writes the files.
 
 use crate::cli::args::{Format, GenerateArgs};
-use crate::error::{Error, Result};
 use crate::cli::stage::Stage;
+use crate::error::{Error, Result};
 use crate::msg::{Bound, ErrMsg};
 use crate::report::doc::Doc;
 use crate::report::gift::gift;
@@ -68,17 +68,29 @@ fn entries(a: &GenerateArgs) -> Vec<String> {
         Format::Moodle => vec!["quiz.xml".into()],
         Format::Gift => vec!["quiz.gift".into()],
         _ if a.variants == 1 => exam_files(a.count, a.format),
-        _ => (1..=a.variants).map(|v| format!("variant-{v:02}")).collect(),
+        _ => (1..=a.variants)
+            .map(|v| format!("variant-{v:02}"))
+            .collect(),
     }
 }
 
 /// The files of one exam: problem and key files, then the sheets.
 fn exam_files(count: u32, format: Format) -> Vec<String> {
     let mut names: Vec<String> = (1..=count)
-        .flat_map(|i| [format!("problem-{i:02}.toml"), format!("problem-{i:02}.key.toml")])
+        .flat_map(|i| {
+            [
+                format!("problem-{i:02}.toml"),
+                format!("problem-{i:02}.key.toml"),
+            ]
+        })
         .collect();
     names.extend(sheet_ext(format).map_or_else(
-        || (format == Format::Json).then(|| "exam.json".to_string()).into_iter().collect(),
+        || {
+            (format == Format::Json)
+                .then(|| "exam.json".to_string())
+                .into_iter()
+                .collect()
+        },
         |ext| vec![format!("questions.{ext}"), format!("key.{ext}")],
     ));
     names

@@ -149,7 +149,11 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
             status
         }
         Ok((text, status)) => {
-            let kind = if json { Kind::Json } else { Kind::Text { colour: false } };
+            let kind = if json {
+                Kind::Json
+            } else {
+                Kind::Text { colour: false }
+            };
             match print::stdout(&text, kind) {
                 Ok(()) => status,
                 Err(stopped) => stopped_status(stopped, status, json, style.lang),
@@ -198,16 +202,29 @@ fn before_any_work(cli: &Cli, outputs: &Outputs) -> Result<()> {
     }
     match &cli.command {
         Command::Render(a) if a.output.as_os_str() != "-" => planned.push((&a.output, "output")),
-        Command::Check(a) => planned.extend(a.csv.iter().filter(|c| c.as_os_str() != "-").map(|c| (c.as_path(), "csv"))),
-        Command::Solve { figure: Some(f), .. } if write::names_a_folder(f) => {
-            return Err(Error::why("figure", ErrMsg::NamesFolder(f.display().to_string())))
+        Command::Check(a) => planned.extend(
+            a.csv
+                .iter()
+                .filter(|c| c.as_os_str() != "-")
+                .map(|c| (c.as_path(), "csv")),
+        ),
+        Command::Solve {
+            figure: Some(f), ..
+        } if write::names_a_folder(f) => {
+            return Err(Error::why(
+                "figure",
+                ErrMsg::NamesFolder(f.display().to_string()),
+            ))
         }
         c => planned.extend(figure_path(c).map(|f| (f.as_path(), "figure"))),
     }
     for (i, (p, field)) in planned.iter().enumerate() {
         outputs.check(p, field)?;
         if planned[..i].iter().any(|(q, _)| q == p) {
-            return Err(Error::why(*field, ErrMsg::ExistsForce(p.display().to_string())));
+            return Err(Error::why(
+                *field,
+                ErrMsg::ExistsForce(p.display().to_string()),
+            ));
         }
     }
     Ok(())
@@ -333,7 +350,11 @@ fn style_of(cli: &Cli) -> Style {
 /// A report as JSON or as the worked solution; its warnings go to stderr.
 fn report_text(report: &Report, json: bool, style: &Style) -> String {
     for w in &report.warnings {
-        print::stderr_line(&format!("{}: {}", style.tr("warning", "peringatan"), style.w(w)));
+        print::stderr_line(&format!(
+            "{}: {}",
+            style.tr("warning", "peringatan"),
+            style.w(w)
+        ));
     }
     if json {
         serde_json::to_string_pretty(&report.to_json(style.lang)).unwrap_or_default() + "\n"
@@ -392,6 +413,9 @@ fn clap_error(e: clap::Error, wants_json: bool, lang: Option<Lang>) -> i32 {
     match e.kind() {
         ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
             let lang = lang.unwrap_or_else(|| Lang::from_env(|k| std::env::var(k).ok()));
+            if let Err(e) = print::refuse_closed_stdout() {
+                return report_error(&e, wants_json, lang);
+            }
             match print::stdout(&e.render().to_string(), Kind::Text { colour: false }) {
                 Ok(()) => 0,
                 Err(stopped) => stopped_status(stopped, 0, wants_json, lang),

@@ -6,6 +6,7 @@
 
 use crate::cli::args::PracticeArgs;
 use crate::cli::check::valid_tolerance;
+use crate::cli::print::{self, Kind, Stopped};
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
 use crate::msg::ErrMsg;
@@ -14,7 +15,6 @@ use crate::report::Style;
 use crate::tutor::check;
 use crate::tutor::generate;
 use crate::tutor::practice::{self, Event};
-use crate::cli::print::{self, Kind, Stopped};
 use std::cell::RefCell;
 use std::io::{BufRead, IsTerminal};
 

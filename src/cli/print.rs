@@ -36,7 +36,10 @@ impl From<std::io::Error> for Stopped {
         if e.kind() == std::io::ErrorKind::BrokenPipe {
             Stopped::Pipe
         } else {
-            Stopped::Failed(Error::why("stdout", ErrMsg::CannotWriteStdout(IoWhy::of(&e))))
+            Stopped::Failed(Error::why(
+                "stdout",
+                ErrMsg::CannotWriteStdout(IoWhy::of(&e)),
+            ))
         }
     }
 }
@@ -54,7 +57,9 @@ pub fn stdout(text: &str, kind: Kind) -> std::result::Result<(), Stopped> {
 }
 
 /// Writes bytes (a PNG) to standard output as they are.
-pub fn stdout_bytes(body: &mut dyn FnMut(&mut dyn Write) -> std::io::Result<()>) -> std::result::Result<(), Stopped> {
+pub fn stdout_bytes(
+    body: &mut dyn FnMut(&mut dyn Write) -> std::io::Result<()>,
+) -> std::result::Result<(), Stopped> {
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
     body(&mut out)?;
     out.flush()?;

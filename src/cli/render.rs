@@ -3,10 +3,10 @@
 //! lighting included, from the same `lighting::shade` the calculator uses).
 
 use crate::cli::args::RenderArgs;
-use crate::error::{Error, Result};
-use crate::input::scene::{Scene, Shading};
 use crate::cli::print::Stopped;
 use crate::cli::write::Outputs;
+use crate::error::{Error, Result};
+use crate::input::scene::{Scene, Shading};
 use crate::msg::ErrMsg;
 use crate::render::{self, Frame, Options, Stats};
 use crate::report::lang::{tr, Lang};

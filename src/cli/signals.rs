@@ -142,7 +142,10 @@ mod tests {
         ];
         remove_all(&mut temps);
         assert!(!f.exists() && !d.exists() && !c.exists());
-        assert!(full.join("mine").exists(), "a created folder that is not empty stays");
+        assert!(
+            full.join("mine").exists(),
+            "a created folder that is not empty stays"
+        );
     }
 
     #[test]

@@ -63,9 +63,12 @@ impl Stage {
             return Err(Error::why("out", ErrMsg::NotOwn(shown, MARKER.into())));
         }
         let created = create_out(out)?;
-        let dir = temp_builder(0o777)
-            .tempdir_in(out)
-            .map_err(|e| Error::why("out", ErrMsg::CannotCreate(out.display().to_string(), IoWhy::of(&e))))?;
+        let dir = temp_builder(0o777).tempdir_in(out).map_err(|e| {
+            Error::why(
+                "out",
+                ErrMsg::CannotCreate(out.display().to_string(), IoWhy::of(&e)),
+            )
+        })?;
         let registered = signals::folder(dir.path());
         Ok(Stage {
             out: out.to_path_buf(),
@@ -130,7 +133,11 @@ impl Stage {
         let moves = replaced
             .filter(|e| std::fs::symlink_metadata(self.out.join(e)).is_ok())
             .map(|e| (self.out.join(e), old.join(e)))
-            .chain(self.entries.iter().map(|e| (staged.join(e), self.out.join(e))))
+            .chain(
+                self.entries
+                    .iter()
+                    .map(|e| (staged.join(e), self.out.join(e))),
+            )
             .chain([(staged.join(MARKER), self.out.join(MARKER))]);
         for (from, to) in moves {
             let r = if to.ends_with(MARKER) || std::fs::symlink_metadata(&to).is_err() {
@@ -166,10 +173,16 @@ impl Drop for Stage {
 fn create_out(out: &Path) -> Result<Option<Registered>> {
     match std::fs::symlink_metadata(out) {
         Ok(_) if out.is_dir() => Ok(None),
-        Ok(_) => Err(Error::why("out", ErrMsg::NotDirectory(out.display().to_string()))),
+        Ok(_) => Err(Error::why(
+            "out",
+            ErrMsg::NotDirectory(out.display().to_string()),
+        )),
         Err(_) => {
             std::fs::create_dir_all(out).map_err(|e| {
-                Error::why("out", ErrMsg::CannotCreate(out.display().to_string(), IoWhy::of(&e)))
+                Error::why(
+                    "out",
+                    ErrMsg::CannotCreate(out.display().to_string(), IoWhy::of(&e)),
+                )
             })?;
             Ok(Some(signals::created(out)))
         }
@@ -191,7 +204,8 @@ fn read_marker(out: &Path) -> BTreeSet<String> {
         .filter(|l| !l.is_empty() && !l.starts_with('#'))
         .filter(|l| {
             let parts: Vec<Component> = Path::new(l).components().collect();
-            (1..=2).contains(&parts.len()) && parts.iter().all(|c| matches!(c, Component::Normal(_)))
+            (1..=2).contains(&parts.len())
+                && parts.iter().all(|c| matches!(c, Component::Normal(_)))
         })
         .map(str::to_string)
         .collect()

@@ -122,7 +122,10 @@ impl Outputs {
         for (i, (p, _)) in files.iter().enumerate() {
             self.check(p, field)?;
             if files[..i].iter().any(|(q, _)| q == p) {
-                return Err(Error::why(field, ErrMsg::ExistsForce(p.display().to_string())));
+                return Err(Error::why(
+                    field,
+                    ErrMsg::ExistsForce(p.display().to_string()),
+                ));
             }
         }
         let mut temps = Vec::new();
@@ -244,7 +247,10 @@ pub fn temp_builder(mode: u32) -> tempfile::Builder<'static, 'static> {
 
 /// The error of a file that could not be written.
 pub fn cannot_write(field: &str, path: &Path, e: &std::io::Error) -> Error {
-    Error::why(field, ErrMsg::CannotWrite(path.display().to_string(), IoWhy::of(e)))
+    Error::why(
+        field,
+        ErrMsg::CannotWrite(path.display().to_string(), IoWhy::of(e)),
+    )
 }
 
 /// Test hook: with `GRAFIKA_TEST_FAIL_SYNC=1` every sync of an output fails

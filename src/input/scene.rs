@@ -701,7 +701,10 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
 /// are counted when it is read).
 fn budget(s: &SceneIn) -> Result<()> {
     if s.light.len() > MAX_LIGHTS {
-        return Err(Error::why("light", ErrMsg::TooManyLights(s.light.len(), MAX_LIGHTS)));
+        return Err(Error::why(
+            "light",
+            ErrMsg::TooManyLights(s.light.len(), MAX_LIGHTS),
+        ));
     }
     let total = (s.object.iter()).fold(0u64, |t, o| t.saturating_add(shape_triangles(o.get_ref())));
     if total > MAX_TRIANGLES as u64 {

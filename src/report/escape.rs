@@ -125,7 +125,10 @@ mod tests {
         assert_eq!(visible("A\u{1b}[2J\u{7}B"), "A\\u{1B}[2J\\u{7}B");
         assert_eq!(visible("\u{9b}31m\u{202e}kiri"), "\\u{9B}31m\\u{202E}kiri");
         assert_eq!(visible("a\rb\u{8}c\u{c}"), "a\\u{D}b\\u{8}c\\u{C}");
-        assert_eq!(visible("\u{2067}x\u{2069}\u{ffff}"), "\\u{2067}x\\u{2069}\\u{FFFF}");
+        assert_eq!(
+            visible("\u{2067}x\u{2069}\u{ffff}"),
+            "\\u{2067}x\\u{2069}\\u{FFFF}"
+        );
     }
 
     #[test]
@@ -135,7 +138,10 @@ mod tests {
         assert_eq!(terminal(ours, false), "\\u{1B}[32m✓ correct\\u{1B}[0m");
         // Cursor moves, screen clearing, titles and concealed text do not.
         assert_eq!(terminal("\u{1b}[2J\u{1b}[8m", true), "\\u{1B}[2J\\u{1B}[8m");
-        assert_eq!(terminal("\u{1b}[1A\u{1b}]0;t\u{7}", true), "\\u{1B}[1A\\u{1B}]0;t\\u{7}");
+        assert_eq!(
+            terminal("\u{1b}[1A\u{1b}]0;t\u{7}", true),
+            "\\u{1B}[1A\\u{1B}]0;t\\u{7}"
+        );
         assert_eq!(terminal("\u{1b}[312m", true), "\\u{1B}[312m");
     }
 

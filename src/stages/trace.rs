@@ -231,7 +231,9 @@ fn first_not_finite(key: &str, v: &Val, exact_ok: bool) -> Option<String> {
         Val::Num(n) if !n.value.is_finite() && !(exact_ok && n.pretty.is_some()) => {
             Some(key.to_string())
         }
-        Val::List(items) => items.iter().find_map(|x| first_not_finite(key, x, exact_ok)),
+        Val::List(items) => items
+            .iter()
+            .find_map(|x| first_not_finite(key, x, exact_ok)),
         Val::Map(m) => m
             .iter()
             .find_map(|(k, x)| first_not_finite(&format!("{key}.{k}"), x, exact_ok)),

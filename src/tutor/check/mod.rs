@@ -265,7 +265,11 @@ fn flatten(key: &str, v: &toml::Value, out: &mut Vec<(String, toml::Value)>) {
 pub fn read_answers(path: &std::path::Path) -> Result<(Option<String>, Answers)> {
     let text = crate::input::read_text("answers", path)?;
     if text.len() > MAX_ANSWER_FILE {
-        let e = crate::msg::ErrMsg::AnswerFileTooLarge(path.display().to_string(), text.len(), MAX_ANSWER_FILE);
+        let e = crate::msg::ErrMsg::AnswerFileTooLarge(
+            path.display().to_string(),
+            text.len(),
+            MAX_ANSWER_FILE,
+        );
         return Err(crate::error::Error::why("answers", e));
     }
     let t: toml::Table = toml::from_str(&text)
