@@ -221,8 +221,6 @@ pub enum ErrMsg {
     CannotWriteStdout(IoWhy),
     /// Standard output is closed (`>&-`).
     StdoutClosed,
-    /// A file that exists and is never overwritten: path.
-    Exists(String),
     /// A file that exists; --force overwrites: path.
     ExistsForce(String),
     /// An output that names a folder, not a file: path.

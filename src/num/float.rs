@@ -97,14 +97,11 @@ macro_rules! float_scalar {
                 if m == 0.0 || !m.is_finite() {
                     return m;
                 }
-                // 2^-e with e the exponent of m: scaling by a power of two is
-                // exact. As two factors, since 2^-e itself overflows for a
-                // subnormal m (|Vup × n| of Vup = (1e-320, 0, 0) was NaN).
-                let e = m.log2().floor() as i32;
-                let k1 = (2.0 as $t).powi(-(e / 2));
-                let k2 = (2.0 as $t).powi(-(e - e / 2));
-                let (x, y, z) = (a * k1 * k2, b * k1 * k2, c * k1 * k2);
-                Self::dot3([&x, &y, &z], [&x, &y, &z]).sqrt() / k1 / k2
+                // 2^-e with e the exponent of m: scaling by a power of two is exact.
+                let e = m.log2().floor();
+                let k = (2.0 as $t).powi(-(e as i32));
+                let (x, y, z) = (a * k, b * k, c * k);
+                Self::dot3([&x, &y, &z], [&x, &y, &z]).sqrt() / k
             }
             fn triple_product(a: [&Self; 3], b: [&Self; 3], c: [&Self; 3]) -> Self {
                 let w = |x: [&Self; 3]| [*x[0] as f64, *x[1] as f64, *x[2] as f64];

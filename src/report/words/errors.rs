@@ -35,7 +35,6 @@ pub fn error(m: &ErrMsg, lang: Lang) -> String {
         | ErrMsg::CannotCreate(..)
         | ErrMsg::CannotWriteStdout(_)
         | ErrMsg::StdoutClosed
-        | ErrMsg::Exists(_)
         | ErrMsg::ExistsForce(_)
         | ErrMsg::NamesFolder(_)
         | ErrMsg::IsLink(_)
@@ -348,10 +347,6 @@ fn files(m: &ErrMsg, lang: Lang) -> String {
         ErrMsg::StdoutClosed => f(
             "standard output is closed, so the results would be lost (to discard them, send them to /dev/null)".into(),
             "keluaran standar tertutup, jadi hasilnya akan hilang (untuk membuangnya, arahkan ke /dev/null)".into(),
-        ),
-        ErrMsg::Exists(p) => f(
-            format!("{p}: exists; remove it or choose another name"),
-            format!("{p}: sudah ada; hapus atau pilih nama lain"),
         ),
         ErrMsg::ExistsForce(p) => f(
             format!("{p} already exists: give --force to replace it, or choose another name"),
@@ -1064,7 +1059,6 @@ pub(crate) mod tests {
             ErrMsg::EyeCoordsTooLarge(s("A"), s("f32")),
             ErrMsg::ResultNotFinite(s("f32")),
             ErrMsg::ResultNotFinite(s("exact")),
-            ErrMsg::Exists(s("a.svg")),
             ErrMsg::ExistsForce(s("out/problem-01.toml")),
             ErrMsg::StdoutClosed,
             ErrMsg::NamesFolder(s("figs/")),
@@ -1270,7 +1264,6 @@ pub(crate) mod tests {
             | E::CannotCreate(..)
             | E::CannotWriteStdout(_)
             | E::StdoutClosed
-            | E::Exists(_)
             | E::ExistsForce(_)
             | E::NamesFolder(_)
             | E::IsLink(_)
