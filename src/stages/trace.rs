@@ -228,7 +228,7 @@ fn first_non_finite(key: &str, v: &Val) -> Option<String> {
 /// passes even beyond the doubles.
 fn first_not_finite(key: &str, v: &Val, exact_ok: bool) -> Option<String> {
     match v {
-        Val::Num(n) if !n.value.is_finite() && !(exact_ok && n.pretty.is_some()) => {
+        Val::Num(n) if !(n.value.is_finite() || exact_ok && n.pretty.is_some()) => {
             Some(key.to_string())
         }
         Val::List(items) => items
