@@ -56,11 +56,6 @@ impl Outputs {
         }
     }
 
-    /// Whether `--force` was given.
-    pub fn force(&self) -> bool {
-        self.force
-    }
-
     /// Adds files the command reads (standard input, `-`, and files that
     /// do not exist are skipped).
     pub fn reads<'p>(&self, files: impl IntoIterator<Item = &'p Path>) {
@@ -167,7 +162,7 @@ pub fn names_a_folder(path: &Path) -> bool {
 }
 
 /// The folder a file is written in (`.` for a bare name).
-pub fn folder_of(path: &Path) -> &Path {
+fn folder_of(path: &Path) -> &Path {
     match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),
