@@ -304,6 +304,8 @@ pub enum Msg {
     EmptyAnswer,
     /// No answer given.
     NoAnswer,
+    /// An answer longer than the most read: its length, the most.
+    AnswerTooLong(usize, usize),
     /// The answer cannot be read (the reader's reason).
     Unreadable(NumErr),
     /// A component that is not a number (the text; the values expected).
@@ -394,6 +396,8 @@ pub enum Msg {
     UpParallel(f64),
     /// A point behind the centre of projection.
     BehindWarn(String),
+    /// Exact values that grew past this many terms were left approximate.
+    ExactTooLarge(usize),
 }
 
 impl Default for Msg {

@@ -793,7 +793,7 @@ fn solve_writes_one_figure_per_part_and_never_overwrites() {
     std::fs::remove_file(dir.join("t-1-view.svg")).unwrap();
     let err = run().assert().code(2);
     let err = String::from_utf8_lossy(&err.get_output().stderr).to_string();
-    assert!(err.contains("t-2-project.svg exists"), "{err}");
+    assert!(err.contains("t-2-project.svg already exists"), "{err}");
     assert!(
         !dir.join("t-1-view.svg").exists(),
         "nothing is written when one exists"

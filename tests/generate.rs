@@ -71,8 +71,9 @@ fn the_same_seed_gives_the_same_files_byte_for_byte() {
             .success();
     }
     let (fa, fb, fc) = (files(&a), files(&b), files(&c));
-    // 2 variants × (2 problems + 2 keys + questions + key)
-    assert_eq!(fa.len(), 12);
+    // 2 variants × (2 problems + 2 keys + questions + key), and the list
+    // of generate's own files (.grafika-generated)
+    assert_eq!(fa.len(), 13);
     assert_eq!(fa, fb);
     assert_ne!(fa, fc);
     // the variants differ from each other

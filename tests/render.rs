@@ -300,7 +300,7 @@ fn explain_pixel_shows_the_lighting_steps_and_the_pixel() {
         .arg(&scene)
         .arg("-o")
         .arg(dir.join("e.png"))
-        .args(["--explain-pixel", "0,0"])
+        .args(["--explain-pixel", "0,0", "--force"])
         .output()
         .unwrap();
     assert!(String::from_utf8_lossy(&out.stdout).contains("background"));
@@ -486,7 +486,7 @@ fn explain_steps(scene: &str, px: &str, extra: &[&str]) -> Vec<serde_json::Value
         .arg(root.join(scene))
         .arg("-o")
         .arg(dir.join(format!("{}.png", px.replace(',', "-"))))
-        .args(["--explain-pixel", px, "--json"])
+        .args(["--explain-pixel", px, "--json", "--force"])
         .args(extra)
         .output()
         .unwrap();

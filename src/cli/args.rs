@@ -40,9 +40,12 @@ pub struct Common {
     /// The language of the words: id (Bahasa Indonesia) or en (default: GRAFIKA_LANG, then the locale).
     #[arg(long, value_enum, global = true)]
     pub lang: Option<Lang>,
-    /// Also write the worked solution as one self-contained HTML page (formulas in MathML, figures inline) to this new file (calculator commands and solve).
+    /// Also write the worked solution as one self-contained HTML page (formulas in MathML, figures inline) to this file (calculator commands and solve; an existing one only with --force).
     #[arg(long, value_name = "FILE.html", global = true)]
     pub html: Option<std::path::PathBuf>,
+    /// Replace output files that exist (never one of the command's inputs, never through a link); generate: replace its own earlier output in --out, and write more than 2,000 problems.
+    #[arg(long, global = true)]
+    pub force: bool,
 }
 
 /// The subcommands.
@@ -157,7 +160,7 @@ pub struct CameraArgs {
     /// Up vector Vup, X,Y,Z.
     #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
     pub up: String,
-    /// Also draw the figure (world axes, Peye, Pref, Vup, u, v, n at the eye and the points, cabinet oblique projection) into this new SVG file (never overwritten).
+    /// Also draw the figure (world axes, Peye, Pref, Vup, u, v, n at the eye and the points, cabinet oblique projection) into this SVG file (an existing one only with --force).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
@@ -177,7 +180,7 @@ pub struct ProjectArgs {
     /// Orthographic projection (xp = x, yp = y, zp = 0).
     #[arg(long)]
     pub ortho: bool,
-    /// Also draw the figure (centre of projection, view plane and projectors in 3D; the side view y-z with the similar triangles; the images on the view plane) into this new SVG file (never overwritten).
+    /// Also draw the figure (centre of projection, view plane and projectors in 3D; the side view y-z with the similar triangles; the images on the view plane) into this SVG file (an existing one only with --force).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
     /// An eye-coordinate point NAME=X,Y,Z (repeatable).
@@ -206,7 +209,7 @@ pub struct WindowArgs {
     /// A projected point NAME=X,Y on the near plane (repeatable; needs --viewport).
     #[arg(long = "point", value_name = "NAME=X,Y", allow_hyphen_values = true)]
     pub points: Vec<String>,
-    /// Also draw the figure (the view volume with the near and far windows; the side view with fovy and top; the points on the window; the viewport with their pixels) into this new SVG file (never overwritten).
+    /// Also draw the figure (the view volume with the near and far windows; the side view with fovy and top; the points on the window; the viewport with their pixels) into this SVG file (an existing one only with --force).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
@@ -226,7 +229,7 @@ pub struct ClipArgs {
     /// Segment end P1.
     #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
     pub to: String,
-    /// Also draw the figure (box, segment, intersections with t and outcode; kept part solid, cut-off parts dashed) into this new SVG file (never overwritten).
+    /// Also draw the figure (box, segment, intersections with t and outcode; kept part solid, cut-off parts dashed) into this SVG file (an existing one only with --force).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
@@ -289,7 +292,7 @@ pub struct ShadeArgs {
     /// Lights (and a Direct3D material) from a TOML file.
     #[arg(long, value_name = "FILE.toml")]
     pub lights: Option<PathBuf>,
-    /// Also draw the figure (the surface, N, L, V, R and H for Blinn, with the angles alpha and beta) into this new SVG file (never overwritten).
+    /// Also draw the figure (the surface, N, L, V, R and H for Blinn, with the angles alpha and beta) into this SVG file (an existing one only with --force).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
@@ -440,9 +443,6 @@ pub struct GenerateArgs {
     /// a Moodle in English, comma for one with the Indonesian language pack.
     #[arg(long, value_enum, default_value_t = Decimal::Point)]
     pub decimal: Decimal,
-    /// Overwrite files that already exist, and write more than 2,000 problems.
-    #[arg(long)]
-    pub force: bool,
 }
 
 /// Gives a type of a lower layer its command-line choices: each variant's

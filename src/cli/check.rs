@@ -7,20 +7,21 @@
 //! module parses, dispatches and writes.
 
 use crate::cli::args::CheckArgs;
+use crate::cli::write::Outputs;
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
-use crate::msg::{Bound, ErrMsg, IoWhy, Twice};
+use crate::msg::{Bound, ErrMsg, Twice};
 use crate::report::check::{to_json, to_text};
 use crate::report::class::lecturer::{self, Format};
 use crate::report::lang::{tr, Lang};
 use crate::report::Style;
 use crate::tutor::check::{self, Marking};
 use crate::tutor::class::{self, exam, stats, Paper, Sheet};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// Runs `grafika check`; returns what to print on stdout and the exit
 /// status (2 when a file of a class could not be marked).
-pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<(String, i32)> {
+pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Result<(String, i32)> {
     valid_tolerance(a.tolerance)?;
     let stdin = Path::new("-");
     // `--csv -` prints only the CSV: there is no room for the JSON.
@@ -49,7 +50,7 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<(String, i32)> {
         (Some(_), true) | (None, false) => Err(Error::why("answers", Twice::Answers)),
         (None, true) => from_text(&paper, a, settings, json, style),
         (Some(path), false) if path.is_dir() => {
-            class(&paper, path, format, settings, a, json, style)
+            class(&paper, path, format, settings, a, json, style, outputs)
         }
         (Some(_), false) if a.report.is_some() => {
             Err(Error::why("report", ErrMsg::ReportNeedsClass))
@@ -75,7 +76,8 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style) -> Result<(String, i32)> {
                     note: None,
                 }
             };
-            if let Some(out) = csv_out(a, std::slice::from_ref(&sheet), paper.exam, style.lang)? {
+            let sheets = std::slice::from_ref(&sheet);
+            if let Some(out) = csv_out(a, sheets, paper.exam, style.lang, outputs)? {
                 return Ok((out, if sheet.outcome.is_err() { 2 } else { 0 }));
             }
             let marked = sheet.outcome?;
@@ -94,19 +96,21 @@ fn class(
     a: &CheckArgs,
     json: bool,
     style: &Style,
+    outputs: &Outputs,
 ) -> Result<(String, i32)> {
     let class = class::mark_dir(paper, dir, settings)?;
     if let (Some(file), Some(format)) = (&a.report, format) {
         let stats = stats::of(&class, paper, &settings);
         let text = lecturer::write(format, &class, &stats, &settings, style);
-        write_output("report", file, &text)?;
+        outputs.write(file, "report", text.as_bytes())?;
     }
     let status = if class.sheets.iter().any(|s| s.outcome.is_err()) {
         2
     } else {
         0
     };
-    if let Some(out) = csv_out(a, &class.sheets, class.exam, style.lang)? {
+    not_marked(&class.sheets, style.lang);
+    if let Some(out) = csv_out(a, &class.sheets, class.exam, style.lang, outputs)? {
         return Ok((out, status));
     }
     let out = if json {
@@ -147,7 +151,13 @@ fn report_format(path: &Path) -> Result<Format> {
 
 /// Writes the `--csv` summary to its file; returns it when it goes to
 /// standard output (`--csv -`), which then prints nothing else.
-fn csv_out(a: &CheckArgs, sheets: &[Sheet], exam: bool, lang: Lang) -> Result<Option<String>> {
+fn csv_out(
+    a: &CheckArgs,
+    sheets: &[Sheet],
+    exam: bool,
+    lang: Lang,
+    outputs: &Outputs,
+) -> Result<Option<String>> {
     let Some(c) = &a.csv else {
         return Ok(None);
     };
@@ -155,19 +165,47 @@ fn csv_out(a: &CheckArgs, sheets: &[Sheet], exam: bool, lang: Lang) -> Result<Op
     if c.as_os_str() == "-" {
         return Ok(Some(csv));
     }
-    write_output("csv", c, &csv)?;
+    outputs.write(c, "csv", csv.as_bytes())?;
     Ok(None)
 }
 
-/// Writes a file `check` was asked for (`--csv FILE`, `--report FILE`):
-/// the one place where `check` writes files.
-fn write_output(field: &str, path: &Path, text: &str) -> Result<()> {
-    std::fs::write(path, text).map_err(|e| {
-        Error::why(
-            field,
-            ErrMsg::CannotWrite(path.display().to_string(), IoWhy::of(&e)),
-        )
-    })
+/// Says on standard error which files of a class could not be marked (the
+/// exit status is then 2; their rows give each reason).
+fn not_marked(sheets: &[Sheet], lang: Lang) {
+    let bad: Vec<String> = sheets
+        .iter()
+        .filter(|s| s.outcome.is_err())
+        .map(|s| s.file.display().to_string())
+        .collect();
+    if !bad.is_empty() {
+        let e = Error::why(
+            "answers",
+            ErrMsg::NotMarked(bad.len(), sheets.len(), bad.join(", ")),
+        );
+        crate::cli::print::stderr_line(&format!(
+            "{}: {}",
+            tr(lang, "error", "kesalahan"),
+            crate::report::class::said(&e, lang)
+        ));
+    }
+}
+
+/// The files a path names: the file, or a folder's entries and those of its
+/// subfolders (an exam's `variant-NN/`): the command's inputs, which
+/// `--csv` and `--report` must not overwrite.
+pub(crate) fn input_paths(path: &PathBuf) -> Vec<PathBuf> {
+    match std::fs::read_dir(path) {
+        Ok(rd) => rd
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .flat_map(|p| match p.is_dir() {
+                true => std::fs::read_dir(&p)
+                    .map(|rd| rd.filter_map(|e| e.ok().map(|e| e.path())).collect())
+                    .unwrap_or_default(),
+                false => vec![p],
+            })
+            .collect(),
+        Err(_) => vec![path.clone()],
+    }
 }
 
 /// `--tolerance` must be a finite number ≥ 0.

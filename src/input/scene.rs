@@ -17,8 +17,13 @@ use serde::Deserialize;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
 
-/// The most triangles one object may have (memory: about 350 bytes each).
+/// The most triangles one scene may have, all its objects together
+/// (memory: about 350 bytes each; checked before any mesh is built).
 pub const MAX_TRIANGLES: usize = 4_000_000;
+
+/// The most lights one scene may have: Direct3D 9's usual eight active
+/// lights (the work of a frame grows with lights × pixels lit).
+pub const MAX_LIGHTS: usize = 8;
 
 /// A finite number, evaluated from a TOML number or an expression string
 /// while the file is read (so a bad value is reported at its position).
@@ -313,6 +318,8 @@ pub struct Scene {
     pub lights: Vec<Light<f32>>,
     /// Objects.
     pub objects: Vec<Object>,
+    /// The files the scene read besides itself (its OBJ meshes).
+    pub files: Vec<PathBuf>,
 }
 
 impl Scene {
@@ -350,6 +357,7 @@ impl Scene {
             Some(m) => material(m, Material::text_default([1.0, 1.0, 1.0]))?,
             None => Material::text_default([1.0, 1.0, 1.0]),
         };
+        budget(&s).map_err(|e| e.at(origin))?;
         let mut lights = Vec::new();
         for (i, l) in s.light.iter().enumerate() {
             // At the renderer's precision: the light `shade --precision f32`
@@ -359,14 +367,26 @@ impl Scene {
         if s.light.is_empty() {
             lights.push(Light::text_default());
         }
-        let mut objects = Vec::new();
+        let mut objects: Vec<Object> = Vec::new();
         for (i, o) in s.object.iter().enumerate() {
             let obj = object(i, o.get_ref(), &base, dir).map_err(|e| e.at(at(o.span())))?;
             objects.push(obj);
+            // OBJ files count once read: the whole scene stays in budget.
+            let total: usize = objects.iter().map(|o| o.tris.tris.len()).sum();
+            if total > MAX_TRIANGLES {
+                let e = ErrMsg::TooManyTriangles(total, MAX_TRIANGLES);
+                return Err(Error::why("object", e).at(at(o.span())));
+            }
         }
         if objects.is_empty() {
             return Err(Error::why("object", ErrMsg::NoObjects).at(origin));
         }
+        let files = s
+            .object
+            .iter()
+            .filter_map(|o| o.get_ref().path.as_ref())
+            .map(|p| dir.join(p.get_ref()))
+            .collect();
         Ok(Scene {
             title: s.title,
             shading: s.shading.unwrap_or_default(),
@@ -378,6 +398,7 @@ impl Scene {
             view,
             lights,
             objects,
+            files,
         })
     }
 }
@@ -567,13 +588,6 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
     check_fields(o, &tname, &f)?;
     let mesh = object_mesh(o, &tname, &f, dir)?;
     mesh.validate(&field)?;
-    let ntris: usize = mesh.faces.iter().map(|f| f.len() - 2).sum();
-    if ntris > MAX_TRIANGLES {
-        return Err(Error::why(
-            field,
-            ErrMsg::TooManyTriangles(ntris, MAX_TRIANGLES),
-        ));
-    }
     let mut model = Matrix4::identity();
     for t in &o.transform {
         model = transform_matrix(t) * model;
@@ -594,6 +608,47 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
         bounds: mesh.bounds(),
         mesh,
     })
+}
+
+/// The scene's budgets, checked before any light, mesh or height formula
+/// is evaluated: at most [`MAX_LIGHTS`] lights, and at most
+/// [`MAX_TRIANGLES`] triangles from the shapes' own counts (an OBJ file's
+/// are counted when it is read).
+fn budget(s: &SceneIn) -> Result<()> {
+    if s.light.len() > MAX_LIGHTS {
+        return Err(Error::why(
+            "light",
+            ErrMsg::TooManyLights(s.light.len(), MAX_LIGHTS),
+        ));
+    }
+    let total = (s.object.iter()).fold(0u64, |t, o| t.saturating_add(shape_triangles(o.get_ref())));
+    if total > MAX_TRIANGLES as u64 {
+        return Err(Error::why(
+            "object",
+            ErrMsg::TooManyTriangles(total as usize, MAX_TRIANGLES),
+        ));
+    }
+    Ok(())
+}
+
+/// The triangles a shape's mesh will have, from its counts alone (0 for an
+/// OBJ file, and for counts missing: their errors come later):
+/// cone 2n − 2 (n sides, an n-gon base), cylinder 4n − 4, sphere
+/// 2·slices·(stacks − 1), box 12, plane 2(nx − 1)(nz − 1).
+fn shape_triangles(o: &ObjectIn) -> u64 {
+    let n = o.n.map_or(0, |c| u64::from(c.0));
+    let count = |g: Option<GridCount>| g.map_or(0, |c| u64::from(c.0));
+    let stacks = o.stacks.map_or(n, |c| u64::from(c.0));
+    match o.kind {
+        ObjectType::Cone => (2 * n).saturating_sub(2),
+        ObjectType::Cylinder => (4 * n).saturating_sub(4),
+        ObjectType::Sphere => (2 * n).saturating_mul(stacks.saturating_sub(1)),
+        ObjectType::Box => 12,
+        ObjectType::Plane => {
+            (2 * count(o.nx).saturating_sub(1)).saturating_mul(count(o.nz).saturating_sub(1))
+        }
+        ObjectType::Obj => 0,
+    }
 }
 
 /// Refuses a field that the object's type does not have.

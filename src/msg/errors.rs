@@ -219,14 +219,26 @@ pub enum ErrMsg {
     CannotWrite(String, IoWhy),
     /// A directory that cannot be created: path, why.
     CannotCreate(String, IoWhy),
-    /// The PNG cannot be written to standard output: why.
+    /// Standard output cannot be written: why.
     CannotWriteStdout(IoWhy),
-    /// A file that exists and is never overwritten: path.
-    Exists(String),
+    /// Standard output is closed (`>&-`).
+    StdoutClosed,
     /// A file that exists; --force overwrites: path.
     ExistsForce(String),
+    /// An output that names a folder, not a file: path.
+    NamesFolder(String),
+    /// An output that is a symbolic link: path.
+    IsLink(String),
+    /// An output that is one of the command's inputs: path.
+    IsInput(String),
+    /// An entry of generate's output folder it did not write: path, marker.
+    NotOwn(String, String),
     /// Not a directory: path.
     NotDirectory(String),
+    /// An answer file larger than the most read: path, size, the most.
+    AnswerFileTooLarge(String, usize, usize),
+    /// Files of a class that could not be marked: how many, of how many, which.
+    NotMarked(usize, usize, String),
     /// A lights file without [[light]]: path.
     NoLightTable(String),
     /// Cs missing.
@@ -260,8 +272,10 @@ pub enum ErrMsg {
     FaceVertex,
     /// A height formula that gives a value not finite.
     FormulaNotFinite,
-    /// More triangles than the renderer takes: how many, the most.
+    /// More triangles in a scene than the renderer takes: how many, the most.
     TooManyTriangles(usize, usize),
+    /// More lights in a scene than the renderer takes: how many, the most.
+    TooManyLights(usize, usize),
     /// A colour list that is empty.
     NeedsColour,
     /// A scene without objects.

@@ -6,6 +6,7 @@ pub mod check;
 pub mod class;
 pub mod csv;
 pub mod doc;
+pub mod escape;
 pub mod figure;
 pub mod gift;
 pub mod html;
@@ -93,10 +94,11 @@ impl Style {
             .collect();
         match nums {
             Some(ns) => {
+                // An exact value beyond the doubles is shown by its exact form.
                 let has_form = ns.iter().any(|s| {
-                    s.pretty
-                        .as_deref()
-                        .is_some_and(|p| !crate::num::format::is_plain_decimal(p))
+                    s.pretty.as_deref().is_some_and(|p| {
+                        !crate::num::format::is_plain_decimal(p) || !s.value.is_finite()
+                    })
                 });
                 let decs: Vec<String> = ns
                     .iter()

@@ -380,11 +380,10 @@ pub fn wrap(text: &str) -> String {
     out.join("\n")
 }
 
-/// HTML (and XML) text: `&`, `<`, `>` escaped.
+/// HTML (and XML) text: `&`, `<`, `>` escaped, control characters shown
+/// ([`crate::report::escape::xml_text`]).
 pub fn esc(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
+    crate::report::escape::xml_text(s)
 }
 
 /// Question text: HTML-escaped, and braces as entities, so that no text
@@ -399,7 +398,9 @@ fn xml_text(s: &str) -> String {
 }
 
 /// A CDATA section holding `s`; a `]]>` inside is split across two sections.
+/// Control characters are shown as `\u{XX}` (XML allows none, CDATA or not).
 pub fn cdata(s: &str) -> String {
+    let s = crate::report::escape::visible(s);
     format!("<![CDATA[{}]]>", s.replace("]]>", "]]]]><![CDATA[>"))
 }
 

@@ -32,9 +32,11 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         | Msg::SecLightFace
         | Msg::SecLightVertex(_)
         | Msg::SecLightPixel => section(m, id),
-        Msg::UpParallel(_) | Msg::BehindWarn(_) | Msg::ErrFewDistinct(..) | Msg::ErrHtmlCommand => {
-            warning(m, lang)
-        }
+        Msg::UpParallel(_)
+        | Msg::BehindWarn(_)
+        | Msg::ExactTooLarge(_)
+        | Msg::ErrFewDistinct(..)
+        | Msg::ErrHtmlCommand => warning(m, lang),
         Msg::DrawnTitle(t) => drawn::title(*t, lang),
         Msg::Pixel(p) => pixel::words(p, lang),
         Msg::Statement(s) => drawn::statement(s, lang),
@@ -94,6 +96,13 @@ fn warning(m: &Msg, lang: Lang) -> String {
                 format!("{n} berada di belakang pusat proyeksi: bayangannya terbalik dan tidak terlihat")
             } else {
                 format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen")
+            }
+        }
+        Msg::ExactTooLarge(n) => {
+            if id {
+                format!("nilai eksak yang akan memuat lebih dari {n} suku (banyak akar kuadrat yang berbeda) dihitung dengan f64 dan ditandai ≈, begitu pula yang diturunkan darinya")
+            } else {
+                format!("exact values that would hold more than {n} terms (many different square roots) were computed in f64 and are marked ≈, as is what follows from them")
             }
         }
         Msg::ErrFewDistinct(topic, level, n) => {
@@ -737,6 +746,10 @@ fn check_note(m: &Msg, id: bool) -> Option<String> {
         ),
         Msg::EmptyAnswer => p("empty answer", "jawaban kosong"),
         Msg::NoAnswer => p("no answer given", "tidak ada jawaban"),
+        Msg::AnswerTooLong(n, max) => f(
+            format!("the answer has {n} characters; at most {max} are read"),
+            format!("jawaban ini memuat {n} karakter; paling banyak {max} yang dibaca"),
+        ),
         Msg::NotShapeAsked => p(
             "not of the shape asked",
             "bentuknya tidak seperti yang diminta",
@@ -878,6 +891,7 @@ mod tests {
             Msg::Inside(true, false),
             Msg::UpParallel(1e-9),
             Msg::BehindWarn(s()),
+            Msg::ExactTooLarge(64),
             Msg::ExpectOne,
             Msg::ExpectList(3),
             Msg::CountMismatch(3, 2),
@@ -887,6 +901,7 @@ mod tests {
             Msg::SeveralAnswers,
             Msg::EmptyAnswer,
             Msg::NoAnswer,
+            Msg::AnswerTooLong(5000, 4000),
             Msg::Unreadable(crate::msg::NumErr::Empty),
             Msg::Exact,
             Msg::NotANumber(s(), 3),
@@ -1159,6 +1174,7 @@ mod tests {
             | Inside(..)
             | UpParallel(_)
             | BehindWarn(_)
+            | ExactTooLarge(_)
             | ExpectOne
             | ExpectList(_)
             | CountMismatch(..)
@@ -1168,6 +1184,7 @@ mod tests {
             | SeveralAnswers
             | EmptyAnswer
             | NoAnswer
+            | AnswerTooLong(..)
             | Unreadable(_)
             | NotANumber(..)
             | Exact

@@ -255,12 +255,9 @@ impl Figure {
     }
 }
 
-/// Escapes text for XML (SVG, XHTML).
+/// Escapes text for XML (SVG, XHTML): [`crate::report::escape::xml`].
 pub fn xml_escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
+    crate::report::escape::xml(s)
 }
 
 /// `name = value` as a label, or `name ≈ value` when the value is an

@@ -34,9 +34,15 @@ pub fn error(m: &ErrMsg, lang: Lang) -> String {
         | ErrMsg::CannotWrite(..)
         | ErrMsg::CannotCreate(..)
         | ErrMsg::CannotWriteStdout(_)
-        | ErrMsg::Exists(_)
+        | ErrMsg::StdoutClosed
         | ErrMsg::ExistsForce(_)
+        | ErrMsg::NamesFolder(_)
+        | ErrMsg::IsLink(_)
+        | ErrMsg::IsInput(_)
+        | ErrMsg::NotOwn(..)
         | ErrMsg::NotDirectory(_)
+        | ErrMsg::NotMarked(..)
+        | ErrMsg::AnswerFileTooLarge(..)
         | ErrMsg::Man(_) => files(m, lang),
         ErrMsg::ObjUnreadable(..)
         | ErrMsg::ObjInvalid(..)
@@ -45,6 +51,7 @@ pub fn error(m: &ErrMsg, lang: Lang) -> String {
         | ErrMsg::FaceVertex
         | ErrMsg::FormulaNotFinite
         | ErrMsg::TooManyTriangles(..)
+        | ErrMsg::TooManyLights(..)
         | ErrMsg::NeedsColour
         | ErrMsg::NoObjects
         | ErrMsg::CameraNeedsPerspective
@@ -309,6 +316,16 @@ pub fn io_why(w: &IoWhy, lang: Lang) -> String {
     }
 }
 
+/// `dir/` for a path that is a folder (`dir/` itself when it ends in `/`),
+/// so that the example is a file name inside it.
+fn folder_prefix(p: &str) -> String {
+    if p.ends_with('/') {
+        p.to_string()
+    } else {
+        format!("{p}/")
+    }
+}
+
 /// Files that cannot be read, written or created.
 fn files(m: &ErrMsg, lang: Lang) -> String {
     let f = |en: String, id: String| pick(lang, en, id);
@@ -331,20 +348,44 @@ fn files(m: &ErrMsg, lang: Lang) -> String {
             format!("tidak dapat membuat {p}: {}", w(why)),
         ),
         ErrMsg::CannotWriteStdout(why) => f(
-            format!("cannot write the PNG to standard output: {}", w(why)),
-            format!("tidak dapat menulis PNG ke keluaran standar: {}", w(why)),
+            format!("cannot write to standard output: {}", w(why)),
+            format!("tidak dapat menulis ke keluaran standar: {}", w(why)),
         ),
-        ErrMsg::Exists(p) => f(
-            format!("{p}: exists; remove it or choose another name"),
-            format!("{p}: sudah ada; hapus atau pilih nama lain"),
+        ErrMsg::StdoutClosed => f(
+            "standard output is closed, so the results would be lost (to discard them, send them to /dev/null)".into(),
+            "keluaran standar tertutup, jadi hasilnya akan hilang (untuk membuangnya, arahkan ke /dev/null)".into(),
         ),
         ErrMsg::ExistsForce(p) => f(
-            format!("{p} already exists: give --force to overwrite it, or another --out"),
-            format!("{p} sudah ada: berikan --force untuk menimpanya, atau --out yang lain"),
+            format!("{p} already exists: give --force to replace it, or choose another name"),
+            format!("{p} sudah ada: berikan --force untuk menggantinya, atau pilih nama lain"),
+        ),
+        ErrMsg::NamesFolder(p) => f(
+            format!("{p} is a folder, not a file name: name the file to write (such as {}figure.svg)", folder_prefix(p)),
+            format!("{p} adalah folder, bukan nama berkas: sebutkan berkas yang akan ditulis (misalnya {}gambar.svg)", folder_prefix(p)),
+        ),
+        ErrMsg::IsLink(p) => f(
+            format!("{p} is a symbolic link: grafika never writes through a link nor replaces one; name the file itself or another name"),
+            format!("{p} adalah tautan simbolik: grafika tidak pernah menulis melalui tautan atau menggantinya; sebutkan berkasnya sendiri atau nama lain"),
+        ),
+        ErrMsg::IsInput(p) => f(
+            format!("{p} is one of this command's own inputs (the same file, links followed): it is never overwritten, even with --force"),
+            format!("{p} adalah salah satu masukan perintah ini (berkas yang sama, tautan diikuti): tidak pernah ditimpa, juga dengan --force"),
+        ),
+        ErrMsg::NotOwn(p, marker) => f(
+            format!("{p} was not written by grafika generate (it is not listed in {marker}, or holds other files): --force replaces only generate's own earlier output; move it away or choose another --out"),
+            format!("{p} tidak ditulis oleh grafika generate (tidak tercantum di {marker}, atau berisi berkas lain): --force hanya mengganti keluaran generate sendiri sebelumnya; pindahkan atau pilih --out yang lain"),
         ),
         ErrMsg::NotDirectory(p) => f(
             format!("{p} exists and is not a directory"),
             format!("{p} sudah ada dan bukan direktori"),
+        ),
+        ErrMsg::AnswerFileTooLarge(p, n, max) => f(
+            format!("{p} has {n} bytes; an answer file may have at most {max} (it is refused before it is read as TOML)"),
+            format!("{p} berukuran {n} bita; berkas jawaban paling besar {max} bita (ditolak sebelum dibaca sebagai TOML)"),
+        ),
+        ErrMsg::NotMarked(n, of, which) => f(
+            format!("{n} of the {of} answer files could not be marked (see the error in each one's row): {which}"),
+            format!("{n} dari {of} berkas jawaban tidak dapat dinilai (lihat galat di baris masing-masing): {which}"),
         ),
         ErrMsg::Man(why) => f(
             format!("cannot write the manual page: {why}"),
@@ -383,8 +424,12 @@ fn scene(m: &ErrMsg, lang: Lang) -> String {
             "rumus menghasilkan nilai yang bukan bilangan berhingga",
         ),
         ErrMsg::TooManyTriangles(n, max) => f(
-            format!("has {n} triangles; the renderer takes at most {max} per object"),
-            format!("memiliki {n} segitiga; renderer menerima paling banyak {max} per objek"),
+            format!("the scene's objects have {n} triangles together; the renderer takes at most {max} per scene (refused before any mesh is built)"),
+            format!("objek-objek scene ini bersama-sama memiliki {n} segitiga; renderer menerima paling banyak {max} per scene (ditolak sebelum mesh dibuat)"),
+        ),
+        ErrMsg::TooManyLights(n, max) => f(
+            format!("the scene has {n} lights; the renderer takes at most {max} per scene (as Direct3D 9 does)"),
+            format!("scene ini memiliki {n} cahaya; renderer menerima paling banyak {max} per scene (seperti Direct3D 9)"),
         ),
         ErrMsg::NeedsColour => say(lang, "needs at least one colour", "memerlukan paling sedikit satu warna"),
         ErrMsg::NoObjects => say(
@@ -557,6 +602,10 @@ fn stages(m: &ErrMsg, lang: Lang) -> String {
         ErrMsg::EyeCoordsTooLarge(p, prec) => f(
             format!("the eye coordinates of {p} are too large for {prec} precision"),
             format!("koordinat kamera titik {p} terlalu besar untuk presisi {prec}"),
+        ),
+        ErrMsg::ResultNotFinite(prec) if prec == "exact" => f(
+            "the result is exact but beyond the range of f64 (about 1.8e308), so it has no decimal or JSON number to give (scale the inputs)".into(),
+            "hasilnya eksak tetapi di luar jangkauan f64 (sekitar 1,8e308), jadi tidak ada desimal atau bilangan JSON untuknya (skalakan masukan)".into(),
         ),
         ErrMsg::ResultNotFinite(prec) => f(
             format!("the result is not a finite number at {prec} precision: an input overflows or underflows the floats (scale the inputs, or use --precision exact)"),
@@ -1027,9 +1076,16 @@ pub(crate) mod tests {
             ErrMsg::TranslationTooLarge(s("f32")),
             ErrMsg::EyeCoordsTooLarge(s("A"), s("f32")),
             ErrMsg::ResultNotFinite(s("f32")),
-            ErrMsg::Exists(s("a.svg")),
+            ErrMsg::ResultNotFinite(s("exact")),
             ErrMsg::ExistsForce(s("out/problem-01.toml")),
+            ErrMsg::StdoutClosed,
+            ErrMsg::NamesFolder(s("figs/")),
+            ErrMsg::IsLink(s("a.png")),
+            ErrMsg::IsInput(s("scene.toml")),
+            ErrMsg::NotOwn(s("exam/key.md"), s(".grafika-generated")),
             ErrMsg::NotDirectory(s("out")),
+            ErrMsg::NotMarked(1, 4, s("class/broken.toml")),
+            ErrMsg::AnswerFileTooLarge(s("a.toml"), 2_000_000, 1 << 20),
             ErrMsg::NoLightTable(s("l.toml")),
             ErrMsg::ColorMissing,
             ErrMsg::NormalMissing,
@@ -1049,6 +1105,7 @@ pub(crate) mod tests {
             ErrMsg::FaceVertex,
             ErrMsg::FormulaNotFinite,
             ErrMsg::TooManyTriangles(5_000_000, 4_000_000),
+            ErrMsg::TooManyLights(9, 8),
             ErrMsg::NeedsColour,
             ErrMsg::NoObjects,
             ErrMsg::CameraNeedsPerspective,
@@ -1228,9 +1285,15 @@ pub(crate) mod tests {
             | E::CannotWrite(..)
             | E::CannotCreate(..)
             | E::CannotWriteStdout(_)
-            | E::Exists(_)
+            | E::StdoutClosed
             | E::ExistsForce(_)
+            | E::NamesFolder(_)
+            | E::IsLink(_)
+            | E::IsInput(_)
+            | E::NotOwn(..)
             | E::NotDirectory(_)
+            | E::NotMarked(..)
+            | E::AnswerFileTooLarge(..)
             | E::NoLightTable(_)
             | E::ColorMissing
             | E::NormalMissing
@@ -1248,6 +1311,7 @@ pub(crate) mod tests {
             | E::FaceVertex
             | E::FormulaNotFinite
             | E::TooManyTriangles(..)
+            | E::TooManyLights(..)
             | E::NeedsColour
             | E::NoObjects
             | E::CameraNeedsPerspective

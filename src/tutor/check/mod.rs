@@ -215,6 +215,24 @@ pub fn default_keys(result: &Tree) -> Vec<String> {
     keys
 }
 
+/// The largest answer file read, in bytes (a class's files are a few KB;
+/// checked before the TOML is parsed, so reading stays bounded).
+pub const MAX_ANSWER_FILE: usize = 1 << 20;
+
+/// The longest answer read, in characters (the longest expression the
+/// number syntax takes, docs/spec.md §2): a longer one is `unparseable`
+/// with the reason, and shown cut.
+pub const MAX_ANSWER: usize = 4_000;
+
+/// The length in characters of an answer's text (every part of a list).
+fn answer_len(v: &toml::Value) -> usize {
+    match v {
+        toml::Value::String(s) => s.chars().count(),
+        toml::Value::Array(a) => a.iter().map(answer_len).sum(),
+        other => other.to_string().len(),
+    }
+}
+
 /// Answers keyed by dotted result keys, in the order given.
 pub type Answers = Vec<(String, toml::Value)>;
 
@@ -246,6 +264,14 @@ fn flatten(key: &str, v: &toml::Value, out: &mut Vec<(String, toml::Value)>) {
 /// Reads an answer file.
 pub fn read_answers(path: &std::path::Path) -> Result<(Option<String>, Answers)> {
     let text = crate::input::read_text("answers", path)?;
+    if text.len() > MAX_ANSWER_FILE {
+        let e = crate::msg::ErrMsg::AnswerFileTooLarge(
+            path.display().to_string(),
+            text.len(),
+            MAX_ANSWER_FILE,
+        );
+        return Err(crate::error::Error::why("answers", e));
+    }
     let t: toml::Table = toml::from_str(&text)
         .map_err(|e| crate::input::fields::toml_error(&path.display().to_string(), &text, &e))?;
     Ok(answers_from_table(&t))
@@ -284,17 +310,23 @@ pub fn mark(
             .as_ref()
             .and_then(|c| c.keys.clone())
             .unwrap_or_else(|| default_keys(&result));
+        // A set, so that many keys cost linear time (100,000 took 27 s).
+        let mut seen: std::collections::HashSet<String> = k.iter().cloned().collect();
         for (given, _) in answers {
-            if !k.contains(given) {
+            if seen.insert(given.clone()) {
                 k.push(given.clone());
             }
         }
         k
     };
+    let mut first: std::collections::HashMap<&str, &toml::Value> = Default::default();
+    for (k, v) in answers {
+        first.entry(k.as_str()).or_insert(v);
+    }
     let mut marked = Vec::new();
     let mut unknown = Vec::new();
     for key in &keys {
-        let given = answers.iter().find(|(k, _)| k == key).map(|(_, v)| v);
+        let given = first.get(key.as_str()).copied();
         let Some(expected) = lookup(&result, key) else {
             if given.is_some() {
                 unknown.push(key.clone());
@@ -303,6 +335,11 @@ pub fn mark(
         };
         let j = match given {
             None => Judged::new(Verdict::Missing, "missing", crate::msg::Msg::NoAnswer),
+            Some(g) if answer_len(g) > MAX_ANSWER => Judged::new(
+                Verdict::Unparseable,
+                "unparseable",
+                crate::msg::Msg::AnswerTooLong(answer_len(g), MAX_ANSWER),
+            ),
             Some(g) => judge(g, expected, &settings, key, false),
         };
         let note = j.note;
@@ -314,7 +351,7 @@ pub fn mark(
             key: key.clone(),
             verdict: j.verdict,
             code: j.code,
-            given: given.map(written),
+            given: given.map(|g| shown_cut(&written(g))),
             given_value: given.cloned(),
             expected: Some(expected.clone()),
             note,
@@ -487,6 +524,18 @@ fn differs(a: &Val, b: &Val) -> bool {
         }
         _ => a != b,
     }
+}
+
+/// An answer's text as shown: a long one cut in the middle (at most 200
+/// characters, the middle replaced by `…`).
+fn shown_cut(s: &str) -> String {
+    let n = s.chars().count();
+    if n <= 200 {
+        return s.to_string();
+    }
+    let head: String = s.chars().take(100).collect();
+    let tail: String = s.chars().skip(n - 99).collect();
+    format!("{head}…{tail}")
 }
 
 /// A TOML answer as the student wrote it.
