@@ -31,7 +31,8 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
     if a.file == stdin && a.answers.as_deref() == Some(stdin) {
         return Err(Error::why("answers", ErrMsg::BothStdin));
     }
-    let format = a.report.as_deref().map(report_format).transpose()?;
+    // a report's format is known before any marking
+    a.report.as_deref().map(report_format).transpose()?;
     let indonesian = style.lang == Lang::Id;
     let paper = if a.file.is_dir() {
         exam::read(&a.file, indonesian)?
@@ -50,7 +51,7 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
         (Some(_), true) | (None, false) => Err(Error::why("answers", Twice::Answers)),
         (None, true) => from_text(&paper, a, settings, json, style),
         (Some(path), false) if path.is_dir() => {
-            class(&paper, path, format, settings, a, json, style, outputs)
+            class(&paper, path, settings, a, json, style, outputs)
         }
         (Some(_), false) if a.report.is_some() => {
             Err(Error::why("report", ErrMsg::ReportNeedsClass))
@@ -91,7 +92,6 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
 fn class(
     paper: &Paper,
     dir: &Path,
-    format: Option<Format>,
     settings: check::Settings,
     a: &CheckArgs,
     json: bool,
@@ -99,7 +99,8 @@ fn class(
     outputs: &Outputs,
 ) -> Result<(String, i32)> {
     let class = class::mark_dir(paper, dir, settings)?;
-    if let (Some(file), Some(format)) = (&a.report, format) {
+    if let Some(file) = &a.report {
+        let format = report_format(file)?;
         let stats = stats::of(&class, paper, &settings);
         let text = lecturer::write(format, &class, &stats, &settings, style);
         outputs.write(file, "report", text.as_bytes())?;
