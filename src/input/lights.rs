@@ -497,10 +497,11 @@ pub fn run<T: Scalar>(s: &Setup<T>, rec: &mut Recorder) -> Vec<(String, Val)> {
     run_with(s, &lighting::Rules::default(), rec)
 }
 
-/// [`run`] under the given lighting rules (the mistake catalog's way in).
-pub fn run_with<T: Scalar>(
+/// [`run`] under the given lighting rules (the mistake catalog's way in,
+/// and follow-through's).
+pub fn run_with<T: Scalar, R: lighting::RuleSet<T>>(
     s: &Setup<T>,
-    rules: &lighting::Rules<T>,
+    rules: &R,
     rec: &mut Recorder,
 ) -> Vec<(String, Val)> {
     let m = &s.material;
@@ -555,10 +556,10 @@ fn material_step<T: Scalar>(m: &Material<T>) -> Step {
 
 /// With several lights: R (H, N·H), cos α and cos β as lists, one entry per
 /// light (recomputed without steps: they are recorded already).
-fn vectors_per_light<T: Scalar>(
+fn vectors_per_light<T: Scalar, R: lighting::RuleSet<T>>(
     s: &Setup<T>,
     view: &V3<T>,
-    rules: &lighting::Rules<T>,
+    rules: &R,
 ) -> Vec<(String, Val)> {
     let m = &s.material;
     let n = s.lights.len();
