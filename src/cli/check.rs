@@ -95,10 +95,9 @@ fn class(
 ) -> Result<(String, i32)> {
     let to_stdout = a.csv.as_deref() == Some(Path::new("-"));
     let (files, skipped) = answer_files(dir, style.lang)?;
-    let rows: Vec<Row> = files
-        .iter()
-        .map(|f| row(p, f, settings, style.lang))
-        .collect();
+    // the problem solved, and its mistakes run, once for the whole class
+    let marker = check::Marker::new(p, settings)?;
+    let rows: Vec<Row> = files.iter().map(|f| row(&marker, f, style.lang)).collect();
     let status = if rows.iter().any(|r| r.outcome.is_err()) {
         2
     } else {
@@ -136,7 +135,7 @@ fn class(
 }
 
 /// Reads and marks one student's file.
-fn row(p: &ProblemIn, f: &Path, settings: check::Settings, lang: Lang) -> Row {
+fn row(marker: &check::Marker, f: &Path, lang: Lang) -> Row {
     let read = check::read_answers(f);
     let who = match &read {
         Ok((Some(s), _)) => s.clone(),
@@ -161,7 +160,7 @@ fn row(p: &ProblemIn, f: &Path, settings: check::Settings, lang: Lang) -> Row {
         ),
         _ => None,
     };
-    let outcome = read.and_then(|(_, answers)| check::mark(p, &who, &answers, settings, false));
+    let outcome = read.map(|(_, answers)| marker.mark(&who, &answers, false));
     Row {
         file: f.to_path_buf(),
         who,
