@@ -891,3 +891,32 @@ fn the_new_mistakes_reach_the_quiz_feedback() {
         assert!(xml.contains(words), "no feedback with {words}");
     }
 }
+
+#[test]
+fn mistakes_the_independent_check_found_unnamed() {
+    let mark = |problem: &str, name: &str, text: &str| {
+        let f = answers_file(name, text);
+        json_ok(&["check", problem, "--answers", f.to_str().unwrap()])
+    };
+    // n = Pe − Pr = (1, 0, 1) not normalized: v = n × u = (0, √2, 0); the
+    // view matrix's rows are u, v, n with last column −(u·Pe, v·Pe, n·Pe) =
+    // −(3/√2 − 3/√2, √2, 3 + 3) = (0, −√2, −6): the translation scales too
+    let v = mark(
+        "problems/text-triangle.toml",
+        "matrix-n",
+        "view.matrix = \"√2/2, 0, −√2/2, 0; 0, √2, 0, −√2; 1, 0, 1, −6; 0, 0, 0, 1\"\n",
+    );
+    assert_eq!(codes(answer(&v, "view.matrix")), ["n_not_normalized"]);
+    // Peye not subtracted: A = (0, 0, 0) gives A′ = (0, 0, 0), though its
+    // projection is then undefined
+    let v = mark("problems/text-triangle.toml", "a-origin", "view.points.A = \"0, 0, 0\"\n");
+    assert_eq!(codes(answer(&v, "view.points.A")), ["eye_no_translation"]);
+    // the left intersection (0, 14/3, 4/3) is above y = 4: 001000, and
+    // written in the wrong order 000100
+    let v = mark(
+        "problems/text-clip.toml",
+        "code-reversed",
+        "clip.intersections.left.code = \"000100\"\n",
+    );
+    assert_eq!(codes(answer(&v, "clip.intersections.left.code")), ["outcode_reversed"]);
+}

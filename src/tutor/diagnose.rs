@@ -12,7 +12,7 @@ use crate::input::fields::{Num, Vec3In};
 use crate::input::lights::Setup;
 use crate::input::problem::ProblemIn;
 use crate::num::vec;
-use crate::num::{AngleUnit, Expr};
+use crate::num::{AngleUnit, Expr, Real, Scalar};
 use crate::stages::camera::Basis;
 use crate::stages::lighting::{LightKind, Rules};
 use crate::stages::trace::Val;
@@ -72,12 +72,12 @@ pub static CATALOG: &[Mistake] = &[
         code: "n_not_normalized",
         description: "n = Pe − Pr not divided by |Pe − Pr| (v = n × u then has the same length)",
         apply: |p| {
-            hooked(
+            hooked_exact(
                 p,
                 Hooks {
                     basis: |b| {
-                        let s = b.dist;
-                        scale_axes(b, [1.0, s, s]);
+                        let s = b.dist.clone();
+                        scale_axes(b, [Real::from_i64(1), s.clone(), s]);
                     },
                     ..Hooks::default()
                 },
@@ -88,13 +88,13 @@ pub static CATALOG: &[Mistake] = &[
         code: "u_not_normalized",
         description: "u = Vup × n not divided by |Vup × n| (v = n × u then has the same length)",
         apply: |p| {
-            hooked(
+            hooked_exact(
                 p,
                 Hooks {
                     // Vup × n = (Vup × d)/|d|, of length |Vup × d|/|d|.
                     basis: |b| {
-                        let s = b.vxn_norm;
-                        scale_axes(b, [s, s, 1.0]);
+                        let s = b.vxn_norm.clone();
+                        scale_axes(b, [s.clone(), s, Real::from_i64(1)]);
                     },
                     ..Hooks::default()
                 },
@@ -219,15 +219,19 @@ pub static CATALOG: &[Mistake] = &[
     Mistake {
         code: "outcode_reversed",
         description: "outcode bits written in the wrong order (bit 1 leftmost instead of rightmost)",
+        // every outcode: the ends' and each intersection's
         apply: |p| {
-            let mut t = solved(p)?;
-            for_each_clip(&mut t, |kv| {
+            fn reverse(kv: &mut [(String, Val)]) {
                 for (k, v) in kv.iter_mut() {
-                    if let (true, Val::Text(s)) = (k.starts_with("code"), &mut *v) {
-                        *s = s.chars().rev().collect();
+                    match (k.starts_with("code"), &mut *v) {
+                        (true, Val::Text(s)) => *s = s.chars().rev().collect(),
+                        (_, Val::Map(inner)) => reverse(inner),
+                        _ => {}
                     }
                 }
-            });
+            }
+            let mut t = solved(p)?;
+            for_each_clip(&mut t, |kv| reverse(kv));
             Some(vec![t])
         },
     },
@@ -428,12 +432,32 @@ fn altered_points(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<T
             kept.points.remove(name);
         }
     }
-    Some(vec![solved(&kept)?])
+    let mut t = solved(&kept)?;
+    // the eye coordinates of every point (the view part alone projects none)
+    q.ask = Some(vec!["view".into()]);
+    if let (Some(all), Some(Val::Map(eye))) = (solved(&q), find_key(&mut t, "view.points")) {
+        if let Some(Val::Map(every)) = solve::lookup(&all, "view.points") {
+            for (name, e) in every {
+                if !eye.iter().any(|(k, _)| k == name) {
+                    eye.push((name.clone(), e.clone()));
+                }
+            }
+        }
+    }
+    Some(vec![t])
 }
 
 /// The results with a stage result altered between stages.
 fn hooked(p: &ProblemIn, hooks: Hooks<f64>) -> Option<Vec<Tree>> {
     Some(vec![solve::solve_with::<f64>(p, &hooks).ok()?.result])
+}
+
+/// [`hooked`] in exact arithmetic, for an altered camera basis: there the
+/// view matrix's translation and the eye coordinates are the text's
+/// formulas on the axes as they are (in floats both come from the
+/// unrounded directions, which scaling an axis does not change).
+fn hooked_exact(p: &ProblemIn, hooks: Hooks<Real>) -> Option<Vec<Tree>> {
+    Some(vec![solve::solve_with::<Real>(p, &hooks).ok()?.result])
 }
 
 /// The lighting with the vector `raw` (the light L or the normal N as the
@@ -520,13 +544,13 @@ fn find_key<'a>(t: &'a mut Tree, key: &str) -> Option<&'a mut Val> {
 /// Multiplies the axes u, v, n by the factors given, keeping the basis
 /// consistent: the eye coordinates are computed from the unnormalized axes s
 /// and divided by |s| (`norms`), so each |s| is divided by the factor.
-fn scale_axes(b: &mut Basis<f64>, f: [f64; 3]) {
-    b.u *= f[0];
-    b.v *= f[1];
-    b.n *= f[2];
-    b.norms[1] /= f[0];
-    b.norms[2] /= f[1];
-    b.norms[0] /= f[2];
+fn scale_axes<T: Scalar>(b: &mut Basis<T>, [fu, fv, fn_]: [T; 3]) {
+    b.u = vec::scale(&b.u, &fu);
+    b.v = vec::scale(&b.v, &fv);
+    b.n = vec::scale(&b.n, &fn_);
+    b.norms[1] = b.norms[1].clone() / fu;
+    b.norms[2] = b.norms[2].clone() / fv;
+    b.norms[0] = b.norms[0].clone() / fn_;
 }
 
 /// Multiplies every edge and size of the window by k.
