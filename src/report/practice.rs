@@ -264,18 +264,13 @@ fn verdict_head(o: &Outcome, lang: Lang) -> (Tone, String) {
 fn verdict_text(o: &Outcome, look: &Look) -> String {
     let lang = look.style.lang;
     let mut out = String::new();
-    if let Some(r) = o
-        .read
-        .as_ref()
-        .filter(|r| read_differs(r, o.given.as_deref()))
-    {
-        let line = format!(
-            "{} {}",
-            look.tr("read as", "dibaca sebagai"),
-            read_as(r, &look.style)
-        );
-        out.push_str(&look.paint(Tone::Quiet, &wrap_after("  ", &line, "    ")));
-        out.push('\n');
+    if let Some(r) = &o.read {
+        let read = read_as(r, &look.style);
+        if !same_text(&read, o.given.as_deref().unwrap_or_default()) {
+            let line = format!("{} {read}", look.tr("read as", "dibaca sebagai"));
+            out.push_str(&look.paint(Tone::Quiet, &wrap_after("  ", &line, "    ")));
+            out.push('\n');
+        }
     }
     let (tone, head) = verdict_head(o, lang);
     out.push_str(&look.paint(tone, &wrap_after("  ", &head, "    ")));
@@ -344,11 +339,21 @@ pub fn read_as(r: &Read, style: &Style) -> String {
     style.dec(en(r).replace('-', "−"))
 }
 
-/// Whether the reading says more than the line typed (a number written
-/// plainly reads as itself).
-fn read_differs(r: &Read, given: Option<&str>) -> bool {
-    let plain = matches!(r, Read::Num(n) if n.last_digit.is_some());
-    !plain || given.is_none()
+/// Whether the reading says nothing the line typed does not: the same
+/// characters but for spaces, brackets, the minus sign's form and the
+/// list separator.
+fn same_text(read: &str, typed: &str) -> bool {
+    let bare = |t: &str| -> String {
+        t.chars()
+            .filter(|c| !c.is_whitespace() && !matches!(c, '(' | ')' | '[' | ']'))
+            .map(|c| match c {
+                '-' => '−',
+                ';' => ',',
+                c => c,
+            })
+            .collect()
+    };
+    bare(read) == bare(typed)
 }
 
 fn hint_text(level: u8, step: Option<&Step>, look: &Look) -> String {
