@@ -909,7 +909,11 @@ fn mistakes_the_independent_check_found_unnamed() {
     assert_eq!(codes(answer(&v, "view.matrix")), ["n_not_normalized"]);
     // Peye not subtracted: A = (0, 0, 0) gives A′ = (0, 0, 0), though its
     // projection is then undefined
-    let v = mark("problems/text-triangle.toml", "a-origin", "view.points.A = \"0, 0, 0\"\n");
+    let v = mark(
+        "problems/text-triangle.toml",
+        "a-origin",
+        "view.points.A = \"0, 0, 0\"\n",
+    );
     assert_eq!(codes(answer(&v, "view.points.A")), ["eye_no_translation"]);
     // the left intersection (0, 14/3, 4/3) is above y = 4: 001000, and
     // written in the wrong order 000100
@@ -918,5 +922,8 @@ fn mistakes_the_independent_check_found_unnamed() {
         "code-reversed",
         "clip.intersections.left.code = \"000100\"\n",
     );
-    assert_eq!(codes(answer(&v, "clip.intersections.left.code")), ["outcode_reversed"]);
+    assert_eq!(
+        codes(answer(&v, "clip.intersections.left.code")),
+        ["outcode_reversed"]
+    );
 }

@@ -113,7 +113,7 @@ fn read_at(given: &toml::Value, like: &Val, offset: usize) -> Result<Read, Msg> 
 }
 
 /// Whether a text value is an outcode (six binary digits).
-pub fn is_code(t: &str) -> bool {
+fn is_code(t: &str) -> bool {
     t.len() == 6 && t.chars().all(|c| c == '0' || c == '1')
 }
 

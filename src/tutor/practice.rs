@@ -84,7 +84,7 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
             })
         })
         .collect();
-    let stated = stated_numbers(p);
+    let stated = stated_numbers(&marker.input);
     Ok(Plan {
         title: p.title.clone(),
         statement: p.statement.clone(),
@@ -97,7 +97,7 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
 
 /// The numbers a problem states: every number of its inputs (as
 /// `solve --json` gives them), which a hint may show whatever they equal.
-fn stated_numbers(p: &ProblemIn) -> Vec<f64> {
+fn stated_numbers(input: &serde_json::Value) -> Vec<f64> {
     fn collect(v: &serde_json::Value, out: &mut Vec<f64>) {
         match v {
             serde_json::Value::Number(n) => out.extend(n.as_f64()),
@@ -107,9 +107,7 @@ fn stated_numbers(p: &ProblemIn) -> Vec<f64> {
         }
     }
     let mut out = Vec::new();
-    if let Ok(r) = crate::tutor::solve::solve::<f64>(p) {
-        collect(&r.input, &mut out);
-    }
+    collect(input, &mut out);
     out
 }
 

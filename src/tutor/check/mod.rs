@@ -1,8 +1,9 @@
 //! `grafika check`: marks a student's answers against grafika's exact
 //! solution of a problem, and diagnoses wrong answers with the mistake
-//! catalog ([`crate::tutor::diagnose`]). `practice` and the quiz exports
-//! mark with the same rules: one reader ([`crate::input::answer`]), one
-//! tolerance ([`tolerance`]), one judge ([`Marker`]).
+//! catalog ([`crate::tutor::diagnose`]). `practice` marks with the same
+//! judge ([`Marker`]: one reader, [`crate::input::answer`], and one order of
+//! judgment); the quiz exports give Moodle the same tolerance
+//! ([`tolerance`]) and the same catalog's values.
 //!
 //! An answer is correct when it equals the exact value (any equivalent
 //! form), when it is within the tolerance ([`tolerance::for_key`]: 0.1% by
