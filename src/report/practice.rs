@@ -385,6 +385,13 @@ fn hint_text(level: u8, step: Option<&Step>, look: &Look) -> String {
             out.push_str(&look.style.named("    ", k, v));
             out.push('\n');
         }
+        if s.values.is_empty() {
+            let none = look.tr(
+                "(every value of this step would give the answer away: substitute the problem's own numbers, or type show)",
+                "(setiap nilai langkah ini akan membocorkan jawabannya: substitusikan bilangan dari soal, atau ketik show)",
+            );
+            out.push_str(&format!("{}\n", wrap_after("    ", none, "    ")));
+        }
     }
     out
 }
@@ -498,6 +505,16 @@ fn clip_label(parts: &[&str], lang: Lang, plane: impl Fn(&str) -> String) -> Str
             format!(
                 "{} {}",
                 t("intersection with the plane", "titik potong dengan bidang"),
+                plane(p)
+            )
+        }
+        ["intersections", p, "code"] => {
+            format!(
+                "{} {}",
+                t(
+                    "outcode of the intersection with the plane",
+                    "region code titik potong dengan bidang"
+                ),
                 plane(p)
             )
         }
