@@ -308,8 +308,6 @@ pub enum Msg {
     AnswerTooLong(usize, usize),
     /// The answer cannot be read (the reader's reason).
     Unreadable(NumErr),
-    /// A component that is not a number (the text; the values expected).
-    NotANumber(String, usize),
     /// Exactly equal.
     Exact,
     /// Rounded to n significant figures.
@@ -320,8 +318,12 @@ pub enum Msg {
     SigCoarse(u32, u32),
     /// Within this percentage.
     WithinPct(String),
-    /// The shape of the answer is not the one asked (practice).
-    NotShapeAsked,
+    /// Within half a pixel (a pixel position).
+    WithinPixel,
+    /// Not an outcode (the text as written).
+    NotAnOutcode(String),
+    /// Not a clipping status (the text as written).
+    NotAStatus(String),
     /// Right given the student's earlier answers (follow-through).
     FollowThrough,
     /// Notes of components: (label, note), joined.

@@ -96,8 +96,8 @@ pub fn to_text(m: &Marking, style: &Style) -> String {
         .collect();
     if !whys.is_empty() {
         out.push_str(t_(
-            "\nWhy the printed answers are wrong (the problem file's errata):\n",
-            "\nMengapa jawaban yang tercetak salah (errata dalam berkas soal):\n",
+            "\nWhere the source printed these answers wrong (the problem file's errata):\n",
+            "\nDi mana sumber mencetak jawaban ini dengan salah (errata dalam berkas soal):\n",
         ));
         out.push_str(&whys.concat());
     }
@@ -141,13 +141,12 @@ fn diagnoses_text(m: &Marking, style: &Style) -> String {
         .collect();
     if !undiagnosed.is_empty() {
         out.push_str(&format!(
-            "\n{}: {} {}\n",
+            "\n{} {}\n",
             t_(
-                "No known mistake reproduces",
-                "Tidak ada kesalahan yang dikenal yang menghasilkan"
+                "No known mistake explains",
+                "Tidak ada kesalahan yang dikenal yang menjelaskan"
             ),
             undiagnosed.join(", "),
-            t_("(an arithmetic slip?)", "(salah hitung?)")
         ));
     }
     if !m.unknown.is_empty() {

@@ -48,6 +48,24 @@ pub fn indonesian(code: &str) -> Option<&'static str> {
         "specular_no_max" => {
             "suku spekular tanpa max(·, 0): cos β yang negatif dipangkatkan n"
         }
+        "pixel_y_from_top" => {
+            "py piksel diukur dari tepi atas (H − py), seperti baris berkas gambar dihitung, bukan dari tepi bawah"
+        }
+        "eye_no_translation" => {
+            "koordinat mata diambil sebagai (u·P, v·P, n·P), Peye tidak dikurangkan (matriks view tanpa translasinya, serta proyeksi dan piksel yang mengikutinya)"
+        }
+        "aspect_inverted" => {
+            "tepi kanan bidang pandang diambil sebagai top / aspect, bukan aspect·top (lebarnya 2·top/aspect, dan piksel yang mengikutinya)"
+        }
+        "light_not_normalized" => {
+            "L tidak dibagi dengan |L|: cos α = L·N dengan vektor cahaya apa adanya (serta R = 2N(L·N) − L, cos β dan suku-suku yang mengikutinya)"
+        }
+        "normal_not_normalized" => {
+            "N tidak dibagi dengan |N|: cos α = L·N dengan normal apa adanya (serta R, cos β dan suku-suku yang mengikutinya)"
+        }
+        "copied_misprint" => {
+            "nilai yang dicetak sumber, yang menurut erratanya salah (lihat erratanya)"
+        }
         _ => return None,
     })
 }

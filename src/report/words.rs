@@ -750,19 +750,20 @@ fn check_note(m: &Msg, id: bool) -> Option<String> {
             format!("the answer has {n} characters; at most {max} are read"),
             format!("jawaban ini memuat {n} karakter; paling banyak {max} yang dibaca"),
         ),
-        Msg::NotShapeAsked => p(
-            "not of the shape asked",
-            "bentuknya tidak seperti yang diminta",
+        Msg::WithinPixel => p("within half a pixel", "dalam setengah piksel"),
+        Msg::NotAnOutcode(t) => f(
+            format!("`{t}` is not an outcode: write six binary digits, bit 1 rightmost (001000)"),
+            format!("`{t}` bukan region code: tulis enam digit biner, bit 1 paling kanan (001000)"),
+        ),
+        Msg::NotAStatus(t) => f(
+            format!("`{t}` is not a status: write accepted, rejected or clipped"),
+            format!("`{t}` bukan status: tulis diterima, ditolak atau di-clip (accepted, rejected, clipped)"),
         ),
         Msg::FollowThrough => p(
             "right given the earlier answers (follow-through)",
             "benar menurut jawaban sebelumnya (follow-through)",
         ),
         Msg::Exact => p("exact", "tepat"),
-        Msg::NotANumber(t, n) => f(
-            format!("`{t}` is not a number (expected {n} values)"),
-            format!("`{t}` bukan bilangan (seharusnya {n} nilai)"),
-        ),
         Msg::Rounded(s) => f(
             format!("rounded to {s} significant figures"),
             format!("dibulatkan ke {s} angka penting"),
@@ -904,13 +905,14 @@ mod tests {
             Msg::AnswerTooLong(5000, 4000),
             Msg::Unreadable(crate::msg::NumErr::Empty),
             Msg::Exact,
-            Msg::NotANumber(s(), 3),
             Msg::Rounded(4),
             Msg::RoundedCoarse(1, 3),
             Msg::SigCoarse(2, 3),
             Msg::WithinPct("0.5".into()),
             Msg::Parts(vec![("x".into(), Msg::Exact)]),
-            Msg::NotShapeAsked,
+            Msg::WithinPixel,
+            Msg::NotAnOutcode(s()),
+            Msg::NotAStatus(s()),
             Msg::FollowThrough,
             Msg::ErrSamePoint("(1, 2, 3)".into()),
             Msg::ErrUpZero,
@@ -971,6 +973,7 @@ mod tests {
         for s in [
             crate::msg::Said::BitTest(true, "x > xmax".into(), "4.5 > 3".into()),
             crate::msg::Said::BitTest(false, "x < xmin".into(), "4.5 < 0".into()),
+            crate::msg::Said::BitQuestion("x < xmin".into(), "4.5 < 0".into()),
             crate::msg::Said::FrameTime("12.30".into(), "25.0".into(), "1.20".into()),
             crate::msg::Said::Status("clipped".into()),
             crate::msg::Said::Status("accepted".into()),
@@ -1186,14 +1189,15 @@ mod tests {
             | NoAnswer
             | AnswerTooLong(..)
             | Unreadable(_)
-            | NotANumber(..)
             | Exact
             | Rounded(_)
             | RoundedCoarse(..)
             | SigCoarse(..)
             | WithinPct(_)
             | Parts(_)
-            | NotShapeAsked
+            | WithinPixel
+            | NotAnOutcode(_)
+            | NotAStatus(_)
             | FollowThrough
             | At(..)
             | Err(_)

@@ -44,6 +44,17 @@ pub fn clip_run<T: Scalar>(
     p1: &V3<T>,
     rec: &mut Recorder,
 ) -> Vec<(String, Val)> {
+    clip_result(&clip_checked(b, p0, p1, rec))
+}
+
+/// Clips one segment by outcodes and by Liang–Barsky and records whether
+/// they agree; the outcodes' clipping.
+pub fn clip_checked<T: Scalar>(
+    b: &ClipBox<T>,
+    p0: &V3<T>,
+    p1: &V3<T>,
+    rec: &mut Recorder,
+) -> clip::Clipped<T> {
     let r = clip::clip_segment(b, p0, p1, rec);
     let lb = clip::liang_barsky(b, p0, p1, rec);
     let agree = match (&r.segment, &lb) {
@@ -60,6 +71,11 @@ pub fn clip_run<T: Scalar>(
                 Msg::Agree(false)
             })
     });
+    r
+}
+
+/// docs/spec.md's clip result keys of a clipping.
+pub fn clip_result<T: Scalar>(r: &clip::Clipped<T>) -> Vec<(String, Val)> {
     vec![
         ("code0".into(), Val::text(clip::code_str(r.code0))),
         ("code1".into(), Val::text(clip::code_str(r.code1))),
@@ -113,9 +129,9 @@ fn opt_num<T: Scalar>(v: &Option<T>) -> Val {
 /// (Blinn), `cos_alpha`, `cos_beta` — per light (lists) when there are
 /// several, with `lights` (attenuation, spot, in range) for lights from a
 /// file.
-pub fn shade_run<T: Scalar>(
+pub fn shade_run<T: Scalar, R: lighting::RuleSet<T>>(
     s: &Setup<T>,
-    rules: &lighting::Rules<T>,
+    rules: &R,
     rec: &mut Recorder,
 ) -> Vec<(String, Val)> {
     let m = &s.material;
@@ -170,10 +186,10 @@ fn material_step<T: Scalar>(m: &Material<T>) -> Step {
 
 /// With several lights: R (H, N·H), cos α and cos β as lists, one entry per
 /// light (recomputed without steps: they are recorded already).
-fn vectors_per_light<T: Scalar>(
+fn vectors_per_light<T: Scalar, R: lighting::RuleSet<T>>(
     s: &Setup<T>,
     view: &V3<T>,
-    rules: &lighting::Rules<T>,
+    rules: &R,
 ) -> Vec<(String, Val)> {
     let m = &s.material;
     let n = s.lights.len();
@@ -213,4 +229,92 @@ fn light_factors<T: Scalar>(s: &Setup<T>, i: usize, view: &V3<T>) -> Val {
         ("attenuation".into(), or_null(&|t| Val::num(&t.attenuation))),
         ("spot".into(), or_null(&|t| Val::num(&t.spot))),
     ])
+}
+
+/// The answer keys of a result tree in the order of the text's solution:
+/// n, u, v, the view matrix, the eye coordinates; the projected points;
+/// the window's top, bottom, left, right, height, width (not the far
+/// window's); the pixels; per segment the outcodes, each plane tried (its
+/// t, intersection point and that point's outcode, the text's deciding
+/// step), the clipped segment and the status; the lighting's unit L and
+/// N, cos α, R (H and N·H for Blinn), cos β, the terms, their sum and the
+/// clamped colour.
+pub fn ordered_keys(result: &[(String, Val)]) -> Vec<String> {
+    let mut keys = Vec::new();
+    for (part, v) in result {
+        match (part.as_str(), v) {
+            ("view", Val::Map(kv)) => {
+                keys.extend(in_order(kv, "view", &["n", "u", "v", "matrix"]));
+                keys.extend(named(kv, "view.points", "points"));
+            }
+            ("project", Val::Map(kv)) => keys.extend(named(kv, "project.points", "points")),
+            ("viewport", Val::Map(kv)) => keys.extend(named(kv, "viewport.pixels", "pixels")),
+            ("window", Val::Map(kv)) => keys.extend(
+                kv.iter()
+                    .filter(|(k, _)| !k.starts_with("far_"))
+                    .map(|(k, _)| format!("window.{k}")),
+            ),
+            ("clip", Val::Map(kv)) => keys.extend(clip_keys("clip", kv)),
+            ("clip", Val::List(runs)) => {
+                for (i, r) in runs.iter().enumerate() {
+                    if let Val::Map(kv) = r {
+                        keys.extend(clip_keys(&format!("clip.{i}"), kv));
+                    }
+                }
+            }
+            ("shade", Val::Map(kv)) => keys.extend(in_order(
+                kv,
+                "shade",
+                &[
+                    "L",
+                    "N",
+                    "cos_alpha",
+                    "R",
+                    "H",
+                    "N_dot_H",
+                    "cos_beta",
+                    "ambient",
+                    "diffuse",
+                    "specular",
+                    "unclamped",
+                    "color",
+                ],
+            )),
+            _ => {}
+        }
+    }
+    keys
+}
+
+/// `prefix.K` for each of `order` the map holds, in that order.
+fn in_order(kv: &[(String, Val)], prefix: &str, order: &[&str]) -> Vec<String> {
+    order
+        .iter()
+        .filter(|k| kv.iter().any(|(x, _)| x == *k))
+        .map(|k| format!("{prefix}.{k}"))
+        .collect()
+}
+
+/// `prefix.NAME` for each name of the map held at `inner`.
+fn named(kv: &[(String, Val)], prefix: &str, inner: &str) -> Vec<String> {
+    match kv.iter().find(|(k, _)| k == inner) {
+        Some((_, Val::Map(m))) => m.iter().map(|(n, _)| format!("{prefix}.{n}")).collect(),
+        _ => vec![],
+    }
+}
+
+/// The outcodes, each plane tried (t, intersection, its outcode), the
+/// clipped segment, the status.
+fn clip_keys(prefix: &str, kv: &[(String, Val)]) -> Vec<String> {
+    let mut keys = vec![format!("{prefix}.code0"), format!("{prefix}.code1")];
+    if let Some((_, Val::Map(planes))) = kv.iter().find(|(k, _)| k == "intersections") {
+        for (pl, _) in planes {
+            for k in ["t", "point", "code"] {
+                keys.push(format!("{prefix}.intersections.{pl}.{k}"));
+            }
+        }
+    }
+    keys.push(format!("{prefix}.segment"));
+    keys.push(format!("{prefix}.status"));
+    keys
 }

@@ -68,7 +68,7 @@ fn counts(ms: &[(String, Marking)]) -> (f64, usize, [usize; 6]) {
     let sum = |f: &dyn Fn(&Marking) -> usize| ms.iter().map(|(_, m)| f(m)).sum::<usize>();
     let c = |v: Verdict| sum(&|m: &Marking| m.count(v));
     (
-        ms.iter().map(|(_, m)| m.score()).sum(),
+        ms.iter().fold(0.0, |s, (_, m)| s + m.score()),
         sum(&|m: &Marking| m.total()),
         [
             c(Verdict::Correct),

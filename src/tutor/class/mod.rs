@@ -1,6 +1,6 @@
 //! A class: a folder of answer files, one per student, marked against one
 //! problem or against a whole exam written by `generate` ([`exam`]), by the
-//! same judgement as one answer file ([`crate::tutor::check::mark`]); and
+//! same judgement as one answer file ([`crate::tutor::check::Marker`]); and
 //! the lecturer's statistics of the class ([`stats`]).
 //!
 //! A file that cannot be read or marked is a sheet with its error: the
@@ -13,7 +13,7 @@ pub mod stats;
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
 use crate::msg::{ErrMsg, IoWhy, Msg};
-use crate::tutor::check::{self, Answers, Marking, Settings};
+use crate::tutor::check::{self, Answers, Marker, Marking, Settings};
 use std::path::{Path, PathBuf};
 
 /// What a class answers: one problem, or an exam's variants, each a list of
@@ -82,7 +82,7 @@ impl Sheet {
     /// Points earned over every part.
     pub fn score(&self) -> Option<f64> {
         let m = self.outcome.as_ref().ok()?;
-        Some(m.iter().map(|(_, m)| m.score()).sum())
+        Some(m.iter().fold(0.0, |s, (_, m)| s + m.score()))
     }
     /// Points possible over every part.
     pub fn total(&self) -> Option<usize> {
@@ -129,12 +129,27 @@ impl Class {
     }
 }
 
+/// The markers of a paper's problems, by variant: each problem solved, and
+/// the mistake catalog run on it, once for the whole class.
+type Markers = Vec<Vec<Result<Marker>>>;
+
+fn markers(paper: &Paper, settings: Settings) -> Markers {
+    (paper.variants.iter())
+        .map(|v| {
+            v.iter()
+                .map(|p| Marker::new(&p.problem, settings))
+                .collect()
+        })
+        .collect()
+}
+
 /// Marks every `*.toml` file of `dir` against the paper.
 pub fn mark_dir(paper: &Paper, dir: &Path, settings: Settings) -> Result<Class> {
     let (files, skipped) = answer_files(dir)?;
+    let markers = markers(paper, settings);
     let sheets = files
         .iter()
-        .map(|f| mark_file(paper, f, settings))
+        .map(|f| mark_with(paper, &markers, f))
         .collect();
     Ok(Class {
         title: paper.title.clone(),
@@ -147,6 +162,10 @@ pub fn mark_dir(paper: &Paper, dir: &Path, settings: Settings) -> Result<Class> 
 /// Reads and marks one student's file: for an exam, its variant's problems
 /// each against its `[problem-NN]` table.
 pub fn mark_file(paper: &Paper, f: &Path, settings: Settings) -> Sheet {
+    mark_with(paper, &markers(paper, settings), f)
+}
+
+fn mark_with(paper: &Paper, markers: &Markers, f: &Path) -> Sheet {
     let read = check::read_answers(f);
     let who = match &read {
         Ok((Some(s), _)) => s.clone(),
@@ -164,13 +183,12 @@ pub fn mark_file(paper: &Paper, f: &Path, settings: Settings) -> Sheet {
     };
     let variant = split.as_ref().ok().map(|(v, _)| *v);
     let outcome = split.and_then(|(v, parts)| {
-        let problems = &paper.variants[v - 1];
+        let problems = paper.variants[v - 1].iter().zip(&markers[v - 1]);
         problems
-            .iter()
             .zip(parts)
-            .map(|(part, answers)| {
-                let m = check::mark(&part.problem, &who, &answers, settings, false)?;
-                Ok((part.name.clone(), m))
+            .map(|((part, marker), answers)| {
+                let m = marker.as_ref().map_err(Clone::clone)?;
+                Ok((part.name.clone(), m.mark(&who, &answers, false)))
             })
             .collect()
     });

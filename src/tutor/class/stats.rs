@@ -37,7 +37,7 @@ use crate::num::Real;
 use crate::stages::trace::{Step, Val};
 use crate::tutor::check::{Marked, Settings};
 use crate::tutor::diagnose::Mistake;
-use crate::tutor::practice::ordered_keys;
+use crate::tutor::keys::ordered_keys;
 use crate::tutor::solve;
 
 mod wrong;

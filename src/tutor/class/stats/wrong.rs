@@ -3,9 +3,10 @@
 //! within `check`'s tolerance.
 
 use super::{answer, MistakeStats, Solved, StepRef, WrongAnswers, WrongValue};
+use crate::input::answer::read as read_answer;
 use crate::stages::trace::Val;
 use crate::tutor::check::tolerance;
-use crate::tutor::check::{value_of, written, Marked, Settings, Verdict};
+use crate::tutor::check::{written, Marked, Settings, Verdict};
 use crate::tutor::class::{full_key, Paper, Sheet};
 use crate::tutor::diagnose::{Mistake, CATALOG};
 use crate::tutor::practice::step_for;
@@ -144,7 +145,7 @@ pub(super) fn wrong_answers(
 /// `check` ([`tolerance::for_key`], componentwise), or, for text, as written.
 fn same_value(first: &toml::Value, given: &toml::Value, a: &Marked, rel: f64) -> bool {
     let like = a.expected.as_ref();
-    let read = |v: &toml::Value| like.and_then(|e| value_of(v, e, &a.key));
+    let read = |v: &toml::Value| like.and_then(|e| read_answer(v, e).ok()).map(|r| r.value());
     match (read(first), read(given)) {
         (Some(x), Some(y)) => close(&x, &y, &a.key, rel),
         _ => written(first)
