@@ -21,10 +21,18 @@ pub enum Panel {
     NearWindow,
     /// The viewport with the pixel positions.
     Viewport,
-    /// The clipping box and segment.
+    /// The clipping box and segment, in 3D.
     Clip,
-    /// The surface and the lighting vectors.
+    /// The segment along its parameter t, with the intersections tried.
+    ClipAlong,
+    /// The lighting vectors in the plane of incidence (one light).
     Shade,
+    /// The plane of incidence of light k (of several).
+    ShadeLight(usize),
+    /// The plane of R and V (when V leaves the plane of incidence).
+    ShadeRV,
+    /// The plane of N and H (when H leaves the plane of incidence).
+    ShadeNH,
 }
 
 /// A word or short phrase written inside a figure.
@@ -44,6 +52,12 @@ pub enum FigWord {
     Zoomed,
     /// Two vectors that coincide, drawn side by side.
     Coincide,
+    /// A region code (the text's term; "outcode" in English).
+    Outcode,
+    /// An intersection that bounds the kept part.
+    Kept,
+    /// An intersection outside the box (its part is cut off).
+    CutOff,
 }
 
 /// A figure's message.
@@ -55,6 +69,19 @@ pub enum FigureMsg {
     Desc(Panel),
     /// A word inside a figure.
     Word(FigWord),
+    /// The view a 3D panel is drawn in: the direction toward the viewer
+    /// `(x, y, z)`, its azimuth and its elevation (degrees), as written.
+    View {
+        /// The direction.
+        from: String,
+        /// The azimuth.
+        az: String,
+        /// The elevation.
+        el: String,
+    },
+    /// A vector (its name) that leaves the plane of incidence by an angle
+    /// (degrees, as written), drawn in a further panel.
+    OffPlane(String, String),
     /// The file asked for exists (never overwritten): its path.
     Exists(String),
 }
