@@ -701,9 +701,9 @@ fn the_clip_box_names_its_planes_codes_and_intersections() {
         );
         assert_eq!(box3.label("P0"), Some("P0: 000010"));
         assert_eq!(box3.label("P1"), Some("P1: 001001"));
-        let (code, kept, cut) = match lang {
-            Lang::En => ("outcode", "kept", "cut off"),
-            Lang::Id => ("region code", "dipertahankan", "dibuang"),
+        let (kept, cut) = match lang {
+            Lang::En => ("kept", "cut off"),
+            Lang::Id => ("dipertahankan", "dibuang"),
         };
         let sep = if lang == Lang::En { ", " } else { "; " };
         let pt = |x: [&str; 3]| format!("({})", x.join(sep));
@@ -711,7 +711,7 @@ fn the_clip_box_names_its_planes_codes_and_intersections() {
             (
                 "left",
                 format!(
-                    "t = 2/3: {} → {}, {code} 001000, {cut}",
+                    "t = 2/3: {} → {}, 001000, {cut}",
                     words[0],
                     pt(["0", "14/3", "4/3"])
                 ),
@@ -719,7 +719,7 @@ fn the_clip_box_names_its_planes_codes_and_intersections() {
             (
                 "right",
                 format!(
-                    "t = 1/6: {} → {}, {code} 000000, {kept}",
+                    "t = 1/6: {} → {}, 000000, {kept}",
                     words[1],
                     pt(["3", "8/3", "11/6"])
                 ),
@@ -727,7 +727,7 @@ fn the_clip_box_names_its_planes_codes_and_intersections() {
             (
                 "top",
                 format!(
-                    "t = 1/2: {} → {}, {code} 000000, {kept}",
+                    "t = 1/2: {} → {}, 000000, {kept}",
                     words[3],
                     pt(["1", "4", "3/2"])
                 ),
@@ -939,9 +939,15 @@ fn indonesian_figures_speak_indonesian() {
             });
             for w in words {
                 // Whole words (or phrases), so that Peye is no "eye".
-                let padded = format!(" {} ", w.replace(|c: char| !c.is_alphanumeric() && c != '(' && c != ')', " "));
+                let padded = format!(
+                    " {} ",
+                    w.replace(|c: char| !c.is_alphanumeric() && c != '(' && c != ')', " ")
+                );
                 for e in english {
-                    assert!(!padded.contains(&format!(" {e} ")), "{file}: {e:?} in {w:?}");
+                    assert!(
+                        !padded.contains(&format!(" {e} ")),
+                        "{file}: {e:?} in {w:?}"
+                    );
                 }
             }
         }
@@ -956,7 +962,7 @@ fn indonesian_figures_speak_indonesian() {
         "{titles:?}"
     );
     assert!(
-        titles.contains(&"Viewing window pada bidang near".to_string()),
+        titles.contains(&"Viewing window pada bidang dekat".to_string()),
         "{titles:?}"
     );
 }
@@ -1239,11 +1245,11 @@ fn figure_flag_writes_svg_that_parses_and_never_overwrites() {
     // x = 1 (t = 2/3).
     assert_eq!(
         p[1].label("left"),
-        Some("t = 1/3: x = 0 (left) → (0, 1/2, 1/2), outcode 000000, kept")
+        Some("t = 1/3: x = 0 (left) → (0, 1/2, 1/2), 000000, kept")
     );
     assert_eq!(
         p[1].label("right"),
-        Some("t = 2/3: x = 1 (right) → (1, 1/2, 1/2), outcode 000000, kept")
+        Some("t = 2/3: x = 1 (right) → (1, 1/2, 1/2), 000000, kept")
     );
 }
 

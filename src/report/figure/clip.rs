@@ -359,11 +359,20 @@ fn along(c: &Clip, st: &Style) -> Figure {
         );
         let head = format!("t = {}: {}", exact(st, &t.t_val), plane_words(c, st, t.bit));
         let p = exact(st, &t.point_val);
-        let text = format!("{head} → {p}, {code_word} {}, {verdict}", t.code);
+        let text = format!("{head} → {p}, {}, {verdict}", t.code);
         items.push(label_short(key, text, head, [1.0, 0.0]));
     }
     items.push(Item::Note("P(t) = P0 + t·(P1 − P0)".into()));
     let mut f = panel(st, Panel::ClipAlong, items);
-    f.height = Some(260.0);
+    // Tall enough that the labels of two near t stand apart (24 px), from
+    // 260 px up to 520.
+    let mut ts: Vec<f64> = c.tried.iter().map(|t| t.t).chain([0.0, 1.0]).collect();
+    ts.sort_by(f64::total_cmp);
+    let gap = ts
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .filter(|g| *g > 1e-9)
+        .fold(1.0, f64::min);
+    f.height = Some((24.0 / gap).clamp(260.0, 520.0));
     f
 }

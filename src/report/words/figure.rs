@@ -73,7 +73,7 @@ fn title(p: Panel) -> (&'static str, &'static str) {
         ),
         Panel::NearWindow => (
             "The viewing window on the near plane",
-            "Viewing window pada bidang near",
+            "Viewing window pada bidang dekat",
         ),
         Panel::Viewport => (
             "The viewport (pixels, origin bottom left)",
@@ -116,15 +116,15 @@ fn desc(p: Panel) -> (&'static str, &'static str) {
         ),
         Panel::Frustum => (
             "Eye space, the eye at the origin looking along −z, seen from outside: the eye is the apex of the view volume, outside its windows. Blue rectangle: the near window (left..right × bottom..top at z = −near); sky-blue rectangle: the far window; black lines: the edges of the view volume. The windows are drawn to scale; when far is not given or more than 10 times near, the far window is not drawn: the edges run on, dashed vermillion, to twice near.",
-            "Ruang kamera, mata di titik asal memandang ke arah −z, dilihat dari luar: mata adalah puncak view volume, di luar window-nya. Persegi biru: near window (left..right × bottom..top di z = −near); persegi biru muda: far window; garis hitam: rusuk view volume. Window digambar sesuai skala; bila far tidak diberikan atau lebih dari 10 kali near, far window tidak digambar: rusuknya berlanjut putus-putus merah jingga sampai dua kali near.",
+            "Ruang kamera, mata di titik asal memandang ke arah −z, dilihat dari luar: mata adalah puncak view volume, di luar window-nya. Persegi biru: viewing window pada bidang dekat (left..right × bottom..top di z = −near); persegi biru muda: window pada bidang jauh; garis hitam: rusuk view volume. Window digambar sesuai skala; bila far tidak diberikan atau lebih dari 10 kali near, window pada bidang jauh tidak digambar: rusuknya berlanjut putus-putus merah jingga sampai dua kali near.",
         ),
         Panel::WindowSide => (
             "Side view: −z to the right, y up. The eye at the origin; the purple arc is the angle fovy; the blue line is the near window from bottom to top, at distance near.",
-            "Tampak samping: −z ke kanan, y ke atas. Mata di titik asal; busur ungu adalah sudut fovy; garis biru adalah near window dari bottom sampai top, pada jarak near.",
+            "Tampak samping: −z ke kanan, y ke atas. Mata di titik asal; busur ungu adalah sudut fovy; garis biru adalah viewing window pada bidang dekat, dari bottom sampai top, pada jarak near.",
         ),
         Panel::NearWindow => (
             "The viewing window on the near plane: x to the right, y up; the black dots are the projected points.",
-            "Viewing window pada bidang near: x ke kanan, y ke atas; titik hitam adalah titik-titik hasil proyeksi.",
+            "Viewing window pada bidang dekat: x ke kanan, y ke atas; titik hitam adalah titik-titik hasil proyeksi.",
         ),
         Panel::Viewport => (
             "The viewport W × H in pixels, origin at the bottom left; each blue dot is a point at its pixel position.",
@@ -159,7 +159,7 @@ fn word(w: FigWord) -> (&'static str, &'static str) {
         FigWord::Eye => ("eye", "mata"),
         FigWord::NotToScale => (
             "far window too far to draw to scale",
-            "far window terlalu jauh untuk digambar sesuai skala",
+            "window pada bidang jauh tidak digambar: terlalu jauh untuk skala ini",
         ),
         FigWord::Surface => ("surface", "permukaan"),
         FigWord::CameraAxes => (
