@@ -156,7 +156,7 @@ pub struct CameraArgs {
     /// Up vector Vup, X,Y,Z.
     #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
     pub up: String,
-    /// Also draw the figure (world axes, Peye, Pref, Vup, u, v, n at the eye and the points, cabinet oblique projection) into this new SVG file (never overwritten).
+    /// Also draw the figure (world axes, Peye, Pref, Vup, u, v, n at the eye and the points, in an axonometric view where u, v, n read) into this new SVG file (never overwritten).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
@@ -205,7 +205,7 @@ pub struct WindowArgs {
     /// A projected point NAME=X,Y on the near plane (repeatable; needs --viewport).
     #[arg(long = "point", value_name = "NAME=X,Y", allow_hyphen_values = true)]
     pub points: Vec<String>,
-    /// Also draw the figure (the view volume with the near and far windows; the side view with fovy and top; the points on the window; the viewport with their pixels) into this new SVG file (never overwritten).
+    /// Also draw the figure (the view volume seen from outside with the near and far windows; the side view with fovy and top; the points on the window; the viewport with their pixels) into this new SVG file (never overwritten).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
@@ -225,7 +225,7 @@ pub struct ClipArgs {
     /// Segment end P1.
     #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
     pub to: String,
-    /// Also draw the figure (box, segment, intersections with t and outcode; kept part solid, cut-off parts dashed) into this new SVG file (never overwritten).
+    /// Also draw the figure (the box with its six planes named, the segment, P0 and P1 with their outcodes; the segment along t with each intersection's t, point and outcode; kept part solid, cut-off parts dashed) into this new SVG file (never overwritten).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
@@ -288,7 +288,7 @@ pub struct ShadeArgs {
     /// Lights (and a Direct3D material) from a TOML file.
     #[arg(long, value_name = "FILE.toml")]
     pub lights: Option<PathBuf>,
-    /// Also draw the figure (the surface, N, L, V, R and H for Blinn, with the angles alpha and beta) into this new SVG file (never overwritten).
+    /// Also draw the figure (a flat diagram in the plane of N and L: the surface, N, L, R, V and H for Blinn at their true angles, with alpha and beta) into this new SVG file (never overwritten).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
