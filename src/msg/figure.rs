@@ -58,6 +58,8 @@ pub enum FigWord {
     Kept,
     /// An intersection outside the box (its part is cut off).
     CutOff,
+    /// The angle between N and H (Blinn's), as a label names it.
+    AngleNH,
 }
 
 /// A figure's message.

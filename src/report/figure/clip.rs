@@ -285,10 +285,10 @@ fn three_d(c: &Clip, axo: &Axo, st: &Style) -> Figure {
     let mut items = axes(c, axo);
     items.push(mark("box", Kind::Box, Pen::Frame, edges(c, axo)));
     let size = (0..3).map(|k| c.hi[k] - c.lo[k]).fold(0.0, f64::max);
-    for bit in 0..6 {
+    for (bit, plane) in PLANES.iter().enumerate() {
         let corners = face(c, bit);
         let pts = corners.iter().map(|p| axo.page(*p)).collect();
-        let name = PLANES[bit].2;
+        let name = plane.2;
         items.push(mark(name, Kind::Plane, Pen::Frame, Shape::Face(pts)));
         let near = outside(c, axo, bit, size);
         let mid = axo.page([0, 1, 2].map(|k| (c.lo[k] + c.hi[k]) / 2.0));

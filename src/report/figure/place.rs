@@ -39,7 +39,7 @@ impl Bx {
         self.l < o.r && o.l < self.r && self.t < o.b && o.t < self.b
     }
     /// The distance from the box to a point (0 inside).
-    pub fn to_point(&self, p: Pt) -> f64 {
+    pub fn dist_point(&self, p: Pt) -> f64 {
         let dx = (self.l - p.0).max(p.0 - self.r).max(0.0);
         let dy = (self.t - p.1).max(p.1 - self.b).max(0.0);
         dx.hypot(dy)
@@ -68,7 +68,7 @@ impl Bx {
         t0 <= t1
     }
     /// The distance from the box to the segment a–b.
-    pub fn to_segment(&self, a: Pt, b: Pt) -> f64 {
+    pub fn dist_segment(&self, a: Pt, b: Pt) -> f64 {
         if self.crossed_by(a, b) {
             return 0.0;
         }
@@ -78,7 +78,7 @@ impl Bx {
             (self.r, self.b),
             (self.l, self.b),
         ];
-        let mut d = self.to_point(a).min(self.to_point(b));
+        let mut d = self.dist_point(a).min(self.dist_point(b));
         for c in corners {
             d = d.min(super::axo::to_segment([c.0, c.1], [a.0, a.1], [b.0, b.1]));
         }
@@ -106,10 +106,10 @@ impl Geom {
     /// The distance from a box to the mark.
     pub fn distance(&self, bx: &Bx) -> f64 {
         match self {
-            Geom::Point(p) => bx.to_point(*p),
+            Geom::Point(p) => bx.dist_point(*p),
             Geom::Lines(ls) => ls
                 .iter()
-                .map(|(a, b)| bx.to_segment(*a, *b))
+                .map(|(a, b)| bx.dist_segment(*a, *b))
                 .fold(f64::MAX, f64::min),
             Geom::Region(pts) => {
                 let c = ((bx.l + bx.r) / 2.0, (bx.t + bx.b) / 2.0);
@@ -119,7 +119,7 @@ impl Geom {
                 }
                 let n = pts.len();
                 (0..n)
-                    .map(|i| bx.to_segment(pts[i], pts[(i + 1) % n]))
+                    .map(|i| bx.dist_segment(pts[i], pts[(i + 1) % n]))
                     .fold(f64::MAX, f64::min)
             }
         }
@@ -221,7 +221,7 @@ fn cost(bx: &Bx, obs: &Obstacles) -> f64 {
     let blobs = obs
         .blobs
         .iter()
-        .filter(|(c, r)| bx.to_point(*c) < *r)
+        .filter(|(c, r)| bx.dist_point(*c) < *r)
         .count();
     1000.0 * (on_labels + off_page) as f64 + 60.0 * (lines + blobs) as f64
 }

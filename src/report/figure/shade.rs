@@ -119,6 +119,16 @@ struct Vector<'a> {
     pen: Pen,
 }
 
+impl<'a> Vector<'a> {
+    fn new(name: &str, val: &'a Val, pen: Pen) -> Vector<'a> {
+        Vector {
+            name: name.to_string(),
+            val,
+            pen,
+        }
+    }
+}
+
 /// The arrows of the vectors in a plane, each from the surface point,
 /// [`LENGTH`] long: vectors along one direction are drawn side by side
 /// ([`BESIDE`] apart) under one label `L = V = (…)`, and a note says
@@ -180,7 +190,10 @@ fn angle(
     let shown_deg = st.val_inline(&num_val((deg * 100.0).round() / 100.0));
     let (text, note) = match name {
         "N·H" => (
-            format!("∠(N, H) = {shown_deg}°"),
+            format!(
+                "{} = {shown_deg}°",
+                say(st, FigureMsg::Word(FigWord::AngleNH))
+            ),
             format!("N·H = {}", short(st, cos)),
         ),
         _ => (
@@ -300,40 +313,24 @@ fn incidence(
     let plane = Plane::of(n, l, vd, true);
     let mut items = Vec::new();
     surface(st, &mut items);
-    let t = &light.tag;
-    let named = |name: &str| format!("{name}{t}");
+    let named = |name: &str| format!("{name}{}", light.tag);
     let mut vs = vec![
-        Vector {
-            name: "N".into(),
-            val: nv,
-            pen: Pen::Frame,
-        },
-        Vector {
-            name: named("L"),
-            val: light.l,
-            pen: Pen::Given,
-        },
+        Vector::new("N", nv, Pen::Frame),
+        Vector::new(&named("L"), light.l, Pen::Given),
     ];
-    vs.extend(light.r.map(|val| Vector {
-        name: named("R"),
-        val,
-        pen: Pen::Other,
-    }));
-    let mut more = Vec::new();
+    vs.extend(light.r.map(|val| Vector::new(&named("R"), val, Pen::Other)));
+    // V and H in this plane, or a note and a panel of their own.
+    let mut leave = Vec::new();
     for (name, val, pen) in [("V", v, Pen::Vector), ("H", blinn.map(|b| b.0), Pen::Tried)] {
         let Some((val, d)) = val.and_then(|x| Some((x, vec_of(x)?))) else {
             continue;
         };
         if plane.holds(d) {
-            vs.push(Vector {
-                name: name.into(),
-                val,
-                pen,
-            });
+            vs.push(Vector::new(name, val, pen));
         } else {
             let deg = st.val_inline(&num_val((plane.off(d) * 10.0).round() / 10.0));
             items.push(Item::Note(say(st, FigureMsg::OffPlane(name.into(), deg))));
-            more.push(name);
+            leave.push(name);
         }
     }
     arrows(&plane, &vs, st, &mut items);
@@ -341,67 +338,38 @@ fn incidence(
         items.extend(angle(&plane, (l, n), (&named("α"), 0.3), c, st));
     }
     let r = light.r.and_then(vec_of);
-    if let (Some(r), Some(vd), Some(c), false) = (r, vd, light.cos_b, more.contains(&"V")) {
+    if let (Some(r), Some(vd), Some(c), false) = (r, vd, light.cos_b, leave.contains(&"V")) {
         items.extend(angle(&plane, (r, vd), (&named("β"), 0.45), c, st));
     }
-    if let (Some((hv, nh)), false) = (blinn, more.contains(&"H")) {
-        items.extend(angle(
-            &plane,
-            (n, vec_of(hv).unwrap_or(n)),
-            ("N·H", 0.6),
-            nh,
-            st,
-        ));
+    if let (Some((hv, nh)), false) = (blinn, leave.contains(&"H")) {
+        let h = vec_of(hv).unwrap_or(n);
+        items.extend(angle(&plane, (n, h), ("N·H", 0.6), nh, st));
     }
     let mut out = vec![panel(st, which, items)];
-    if let (true, Some(rv), Some(r), Some(vv), Some(c)) =
-        (more.contains(&"V"), light.r, r, v, light.cos_b)
-    {
-        out.push(pair(
-            st,
-            Panel::ShadeRV,
-            [("R", rv, Pen::Other), ("V", vv, Pen::Vector)],
-            (r, vec_of(vv).unwrap_or(r)),
-            (&named("β"), c),
-        ));
+    if let (true, Some(rv), Some(vv), Some(c)) = (leave.contains(&"V"), light.r, v, light.cos_b) {
+        let vs = [
+            Vector::new(&named("R"), rv, Pen::Other),
+            Vector::new("V", vv, Pen::Vector),
+        ];
+        out.push(pair(st, Panel::ShadeRV, vs, (&named("β"), c)));
     }
-    if let (true, Some((hv, nh))) = (more.contains(&"H"), blinn) {
-        let hd = vec_of(hv).unwrap_or(n);
-        out.push(pair(
-            st,
-            Panel::ShadeNH,
-            [("N", nv, Pen::Frame), ("H", hv, Pen::Tried)],
-            (n, hd),
-            ("N·H", nh),
-        ));
+    if let (true, Some((hv, nh))) = (leave.contains(&"H"), blinn) {
+        let vs = [
+            Vector::new("N", nv, Pen::Frame),
+            Vector::new("H", hv, Pen::Tried),
+        ];
+        out.push(pair(st, Panel::ShadeNH, vs, ("N·H", nh)));
     }
     out
 }
 
 /// A panel of two vectors in their own plane, the first straight up, with
 /// the angle between them.
-fn pair(
-    st: &Style,
-    which: Panel,
-    vs: [(&str, &Val, Pen); 2],
-    (a, b): ([f64; 3], [f64; 3]),
-    (name, cos): (&str, &Val),
-) -> Figure {
+fn pair(st: &Style, which: Panel, vs: [Vector; 2], (name, cos): (&str, &Val)) -> Figure {
+    let [a, b] = [&vs[0], &vs[1]].map(|v| vec_of(v.val).unwrap_or([0.0, 0.0, 1.0]));
     let plane = Plane::of(a, b, None, false);
-    let mut items = vec![mark(
-        "surface point",
-        Kind::Point,
-        Pen::Frame,
-        Shape::Dot([0.0, 0.0]),
-    )];
-    let vs: Vec<Vector> = vs
-        .iter()
-        .map(|(n, val, pen)| Vector {
-            name: n.to_string(),
-            val,
-            pen: *pen,
-        })
-        .collect();
+    let dot = Shape::Dot([0.0, 0.0]);
+    let mut items = vec![mark("surface point", Kind::Point, Pen::Frame, dot)];
     arrows(&plane, &vs, st, &mut items);
     items.extend(angle(&plane, (a, b), (name, 0.45), cos, st));
     panel(st, which, items)

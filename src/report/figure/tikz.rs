@@ -67,8 +67,9 @@ fn mark(o: &mut String, m: &Mark, l: &Laid) {
         format!("({x:.1},{y:.1})")
     };
     let path = |pts: &[[f64; 2]]| pts.iter().map(pt).collect::<Vec<_>>().join(" -- ");
-    // The mark's name as a comment, so the picture reads like the SVG.
-    let _ = writeln!(o, "% {} {}", m.kind.word(), m.name.replace('\n', " "));
+    // The mark's kind and name as a comment (in LaTeX's ASCII), so the
+    // picture reads like the SVG.
+    let _ = writeln!(o, "% {} {}", m.kind.word(), text(&m.name));
     let _ = match &m.shape {
         Shape::Line { a, b, head } => {
             let arrow = if *head { "->," } else { "" };

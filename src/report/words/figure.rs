@@ -177,5 +177,6 @@ fn word(w: FigWord) -> (&'static str, &'static str) {
         FigWord::Outcode => ("outcode", "region code"),
         FigWord::Kept => ("kept", "dipertahankan"),
         FigWord::CutOff => ("cut off", "dibuang"),
+        FigWord::AngleNH => ("angle(N, H)", "sudut(N, H)"),
     }
 }
