@@ -1336,3 +1336,25 @@ fn readme_figures_are_what_the_commands_write() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A segment decided without a kept intersection says why under its
+/// panel along t: clip-cases' second segment, P0(1, 5, 1) and P1(2, 6, 2),
+/// both above the box (y > 4): 001000 AND 001000 = 001000 ≠ 000000; its
+/// first, both ends inside: accepted whole. A light out of range has no
+/// plane of its own; the first panel says so (shade-out-of-range's
+/// second light).
+#[test]
+fn decided_segments_and_dark_lights_are_said() {
+    let d = drawn(&["solve", "problems/clip-cases.toml"]);
+    let notes = |k: usize| read_svg(&to_svg(&d[k]))[1].notes();
+    assert!(notes(0).contains("both codes are 000000: the segment lies inside, accepted whole"));
+    assert!(notes(1).contains("code0 AND code1 = 001000 ≠ 000000: the segment lies outside"));
+    let s = drawn_in(Lang::Id, &["solve", "problems/shade-out-of-range.toml"]);
+    let p = read_svg(&to_svg(&s[0]));
+    assert_eq!(p.len(), 1, "one light in range, one panel");
+    assert!(
+        p[0].notes().contains("sumber cahaya 2 di luar jangkauan"),
+        "{}",
+        p[0].notes()
+    );
+}

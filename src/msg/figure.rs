@@ -60,6 +60,10 @@ pub enum FigWord {
     CutOff,
     /// The angle between N and H (Blinn's), as a label names it.
     AngleNH,
+    /// Both ends' codes are 000000: the segment is kept whole.
+    Accepted,
+    /// No intersection tried is in the box: the segment misses it.
+    Missed,
 }
 
 /// A figure's message.
@@ -84,6 +88,11 @@ pub enum FigureMsg {
     /// A vector (its name) that leaves the plane of incidence by an angle
     /// (degrees, as written), drawn in a further panel.
     OffPlane(String, String),
+    /// Light k (from 1) is out of range: it has no plane drawn.
+    OutOfRange(usize),
+    /// The ends' codes ANDed (not 000000): the segment is rejected without
+    /// intersections.
+    Rejected(String),
     /// The file asked for exists (never overwritten): its path.
     Exists(String),
 }

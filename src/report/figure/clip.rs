@@ -323,6 +323,23 @@ fn three_d(c: &Clip, axo: &Axo, st: &Style) -> Figure {
     panel3(st, Panel::Clip, axo, items)
 }
 
+/// What the figure says of a segment decided without a kept
+/// intersection: accepted whole, rejected by the AND of its codes, or
+/// missing the box.
+fn verdict(c: &Clip) -> Option<FigureMsg> {
+    let code = |s: &str| u8::from_str_radix(s, 2).ok();
+    let (a, b) = (code(&c.codes[0])?, code(&c.codes[1])?);
+    if a | b == 0 {
+        Some(FigureMsg::Word(FigWord::Accepted))
+    } else if a & b != 0 {
+        Some(FigureMsg::Rejected(format!("{:06b}", a & b)))
+    } else if c.kept.is_none() {
+        Some(FigureMsg::Word(FigWord::Missed))
+    } else {
+        None
+    }
+}
+
 /// The panel along the segment: t from 0 (top) to 1 (bottom).
 fn along(c: &Clip, st: &Style) -> Figure {
     let [p0, p1] = c.ends;
@@ -363,6 +380,7 @@ fn along(c: &Clip, st: &Style) -> Figure {
         items.push(label_short(key, text, head, [1.0, 0.0]));
     }
     items.push(Item::Note("P(t) = P0 + t·(P1 − P0)".into()));
+    items.extend(verdict(c).map(|m| Item::Note(say(st, m))));
     let mut f = panel(st, Panel::ClipAlong, items);
     // Tall enough that the labels of two near t stand apart (24 px), from
     // 260 px up to 520.

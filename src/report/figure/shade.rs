@@ -14,7 +14,7 @@
 //! s = −1 puts L on the left.
 
 use super::builders::{cross, dot, num_val, panel, result, say, unit, vec_of, Part};
-use super::{label_toward, labelled, mark, short, Figure, Item, Kind, Pen, Shape};
+use super::{label_short, label_toward, labelled, mark, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
 use crate::stages::trace::Val;
@@ -188,17 +188,20 @@ fn angle(
         _ => sweep.abs().to_degrees(),
     };
     let shown_deg = st.val_inline(&num_val((deg * 100.0).round() / 100.0));
-    let (text, note) = match name {
+    // The label, its short form (when it cannot stand clear) and the note.
+    let (text, brief, note) = match name {
         "N·H" => (
             format!(
                 "{} = {shown_deg}°",
                 say(st, FigureMsg::Word(FigWord::AngleNH))
             ),
-            format!("N·H = {}", short(st, cos)),
+            format!("{shown_deg}°"),
+            labelled(st, "N·H", cos),
         ),
         _ => (
             format!("{name} = {shown_deg}°"),
-            format!("cos {name} = {}", short(st, cos)),
+            name.to_string(),
+            labelled(st, &format!("cos {name}"), cos),
         ),
     };
     if sweep.abs().to_degrees() < 1.0 {
@@ -214,7 +217,7 @@ fn angle(
     let mid = pts[16];
     vec![
         mark(name, Kind::Arc, Pen::Other, Shape::Path(pts)),
-        label_toward(name, text, Some(mid)),
+        label_short(name, text, brief, mid),
         Item::Note(note),
     ]
 }
@@ -294,6 +297,19 @@ pub fn figures(p: &Part, st: &Style) -> Option<Vec<Figure>> {
             Panel::ShadeLight(light.number)
         };
         out.extend(incidence(st, which, (nv, n), v, light, blinn));
+    }
+    // The lights out of range: a note on the first panel.
+    let count = match result(p.res, "lights") {
+        Some(Val::List(x)) => x.len(),
+        _ => 0,
+    };
+    let drawn: Vec<usize> = lights.iter().map(|l| l.number).collect();
+    let dark = (1..=count).filter(|k| !drawn.contains(k));
+    let notes: Vec<Item> = dark
+        .map(|k| Item::Note(say(st, FigureMsg::OutOfRange(k))))
+        .collect();
+    if let Some(first) = out.first_mut() {
+        first.items.extend(notes);
     }
     (!out.is_empty()).then_some(out)
 }

@@ -38,6 +38,14 @@ pub fn figure(m: &FigureMsg, lang: Lang) -> String {
             &format!("{name} is not in this plane (it leaves it by {deg}°): drawn in its own plane below"),
             &format!("{name} tidak terletak pada bidang ini (menyimpang {deg}°): digambar pada bidangnya sendiri di bawah"),
         ),
+        FigureMsg::OutOfRange(k) => pick(
+            &format!("light {k} is out of range: it does not light the point and is not drawn"),
+            &format!("sumber cahaya {k} di luar jangkauan: tidak menyinari titik ini dan tidak digambar"),
+        ),
+        FigureMsg::Rejected(and) => pick(
+            &format!("code0 AND code1 = {and} ≠ 000000: the segment lies outside, rejected with no intersection tried"),
+            &format!("code0 AND code1 = {and} ≠ 000000: ruas garis di luar, ditolak tanpa mencari titik potong"),
+        ),
         FigureMsg::Exists(path) => pick(
             &format!("{path} exists; remove it or choose another name"),
             &format!("{path} sudah ada; hapus atau pilih nama lain"),
@@ -178,5 +186,13 @@ fn word(w: FigWord) -> (&'static str, &'static str) {
         FigWord::Kept => ("kept", "dipertahankan"),
         FigWord::CutOff => ("cut off", "dibuang"),
         FigWord::AngleNH => ("angle(N, H)", "sudut(N, H)"),
+        FigWord::Accepted => (
+            "both codes are 000000: the segment lies inside, accepted whole",
+            "kedua code 000000: ruas garis di dalam, diterima utuh",
+        ),
+        FigWord::Missed => (
+            "no intersection tried is in the box: the segment misses it, rejected",
+            "tidak ada titik potong di dalam balok: ruas garis melewatinya, ditolak",
+        ),
     }
 }
