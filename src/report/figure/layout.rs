@@ -11,7 +11,7 @@
 //! even that cannot, left out (its text in the note).
 
 use super::place::{place, Bx, Geom, Obstacles, Pt};
-use super::{Figure, Item, Kind, Mark, Shape};
+use super::{Figure, Item, Mark, Shape};
 
 /// The page width in px.
 pub const WIDTH: f64 = 600.0;
@@ -173,13 +173,13 @@ fn obstacles(f: &Figure, at: &dyn Fn(&[f64; 2]) -> Pt) -> Obstacles {
             Shape::Dot(p) => o.blobs.push((at(p), 5.5)),
             Shape::Face(_) => {}
         }
-        debug_assert!(m.kind != Kind::Point || matches!(m.shape, Shape::Dot(_)));
     }
     o
 }
 
-/// The horizontal extent in px of the marks and, roughly, their labels
-/// (half a label's width each side of the middle of its mark) at scale s.
+/// The horizontal extent in px of the marks and, roughly, their labels at
+/// scale s: a label takes its width on the side it asks for, else half its
+/// width each side of the middle of its mark.
 fn width_at(f: &Figure, s: f64) -> (f64, f64) {
     let mut lo = f64::MAX;
     let mut hi = f64::MIN;

@@ -291,3 +291,41 @@ pub fn place(
     };
     (placed, c)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Nothing in the way: the label stands on the side asked for, at the
+    /// least gap (6 px from a dot), and costs that distance.
+    #[test]
+    fn a_free_label_stands_on_its_side() {
+        let g = Geom::Point((100.0, 100.0));
+        let (p, c) = place(
+            "A",
+            10.0,
+            &g,
+            (Some([1.0, 0.0]), None),
+            &Obstacles::default(),
+        );
+        assert_eq!((p.x, p.anchor), (106.0, Anchor::Start));
+        assert!((c - 6.0).abs() < 1e-9, "{c}");
+    }
+
+    /// A line just right of the dot: the label goes elsewhere, clear of it
+    /// and within reach.
+    #[test]
+    fn a_label_steps_around_a_line() {
+        let g = Geom::Point((100.0, 100.0));
+        let obs = Obstacles {
+            lines: vec![((110.0, 0.0), (110.0, 200.0))],
+            ..Obstacles::default()
+        };
+        let w = crate::report::figure::layout::text_width("A = (1, 2)");
+        let (p, c) = place("A = (1, 2)", w, &g, (Some([1.0, 0.0]), None), &obs);
+        let (l, r, t, b) = p.bounds();
+        let bx = Bx { l, r, t, b };
+        assert!(!bx.crossed_by((110.0, 0.0), (110.0, 200.0)), "{p:?}");
+        assert!(c < 60.0 && g.distance(&bx) <= REACH, "{c}");
+    }
+}
