@@ -16,9 +16,7 @@ use super::axo::{diameter, Axo};
 use super::builders::{
     dot, input3, minus, num_val, panel, panel3, result, say, vec_of, vec_val, Part,
 };
-use super::{
-    exact, label, label_near, label_short, label_toward, mark, Figure, Item, Kind, Pen, Shape,
-};
+use super::{exact, label_near, label_short, label_toward, mark, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::words::PLANE_NAMES;
 use crate::report::Style;
@@ -175,6 +173,11 @@ fn face(c: &Clip, bit: usize) -> [[f64; 3]; 4] {
     ]
 }
 
+/// The middle of the box.
+fn mid3(c: &Clip) -> [f64; 3] {
+    [0, 1, 2].map(|k| (c.lo[k] + c.hi[k]) / 2.0)
+}
+
 /// Where a plane's label goes first: beyond its face on its outer side
 /// (where the points whose bit it sets lie), just outside the box as drawn.
 fn outside(c: &Clip, axo: &Axo, bit: usize, size: f64) -> [f64; 2] {
@@ -291,7 +294,7 @@ fn three_d(c: &Clip, axo: &Axo, st: &Style) -> Figure {
         let name = plane.2;
         items.push(mark(name, Kind::Plane, Pen::Frame, Shape::Face(pts)));
         let near = outside(c, axo, bit, size);
-        let mid = axo.page([0, 1, 2].map(|k| (c.lo[k] + c.hi[k]) / 2.0));
+        let mid = axo.page(mid3(c));
         let away = [near[0] - mid[0], near[1] - mid[1]];
         items.push(label_near(name, plane_words(c, st, bit), near, away));
     }
@@ -306,7 +309,10 @@ fn three_d(c: &Clip, axo: &Axo, st: &Style) -> Figure {
             crate::report::lang::Lang::Id => PLANE_NAMES[t.bit].1,
             crate::report::lang::Lang::En => PLANE_NAMES[t.bit].0,
         };
-        items.push(label(key, word));
+        // The panel along t says all of it: left out when it cannot stand
+        // clear.
+        let away = axo.page(minus(t.point, mid3(c)));
+        items.push(label_short(key, word, "", away));
     }
     for (k, name) in ["P0", "P1"].iter().enumerate() {
         let p = c.ends[k];

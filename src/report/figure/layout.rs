@@ -260,8 +260,9 @@ fn brief(l: &super::Label) -> Option<&str> {
 /// figure's order, then each again among the others, twice; a label that
 /// still crosses a line or another label and has a short form
 /// ([`brief`]) is written short, its whole text going to a note, and left
-/// out when even that cannot stand clear. Returns the labels and those
-/// notes.
+/// out when even that cannot stand clear (with a note, unless its short
+/// form is empty: the figure says it elsewhere). Returns the labels and
+/// those notes.
 fn place_all(f: &Figure, at: &dyn Fn(&[f64; 2]) -> Pt) -> (Vec<Option<Placed>>, Vec<String>) {
     let mut obs = obstacles(f, at);
     let jobs: Vec<(Geom, &super::Label)> = f
@@ -287,8 +288,8 @@ fn place_all(f: &Figure, at: &dyn Fn(&[f64; 2]) -> Pt) -> (Vec<Option<Placed>>, 
             }
             let text = match (round, brief(l)) {
                 (0 | 1, _) => &l.text,
-                (_, Some(b)) => b,
-                (_, None) => continue,
+                (_, Some(b)) if !b.is_empty() => b,
+                _ => continue,
             };
             let mut others = obs.clone();
             others.boxes.remove(i);
@@ -305,7 +306,8 @@ fn place_all(f: &Figure, at: &dyn Fn(&[f64; 2]) -> Pt) -> (Vec<Option<Placed>>, 
     let mut notes = Vec::new();
     let mut labels = Vec::new();
     for (i, (p, c)) in placed.into_iter().enumerate() {
-        if short[i] || c >= 60.0 {
+        let said_elsewhere = jobs[i].1.short.as_deref() == Some("");
+        if short[i] || (c >= 60.0 && !said_elsewhere) {
             notes.push(jobs[i].1.text.clone());
         }
         labels.push((c < 60.0).then_some(p));

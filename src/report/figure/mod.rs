@@ -221,7 +221,8 @@ pub struct Label {
     pub near: Option<[f64; 2]>,
     /// The short form written when the whole text cannot stand clear
     /// (the whole text then goes to a note); none: the mark's name when
-    /// the text is `NAME = …`, `NAME ≈ …` or `NAME: …`.
+    /// the text is `NAME = …`, `NAME ≈ …` or `NAME: …`; empty: the label
+    /// is left out without a note (another panel says it).
     pub short: Option<String>,
 }
 
