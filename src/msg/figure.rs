@@ -88,6 +88,9 @@ pub enum FigureMsg {
     /// A vector (its name) that leaves the plane of incidence by an angle
     /// (degrees, as written), drawn in a further panel.
     OffPlane(String, String),
+    /// A plane of the clip box by its bit (0 = left … 5 = back), with its
+    /// equation (`x = 3`) when given: `x = 3 kanan`, `x = 3 (right)`.
+    Plane(usize, Option<String>),
     /// Light k (from 1) is out of range: it has no plane drawn.
     OutOfRange(usize),
     /// The ends' codes ANDed (not 000000): the segment is rejected without

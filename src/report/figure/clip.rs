@@ -18,7 +18,6 @@ use super::builders::{
 };
 use super::{exact, label_near, label_short, label_toward, mark, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigWord, FigureMsg, Panel};
-use crate::report::words::PLANE_NAMES;
 use crate::report::Style;
 use crate::stages::clip::{PLANES, PLANE_KEYS};
 use crate::stages::trace::Val;
@@ -217,12 +216,8 @@ fn num(st: &Style, x: f64) -> String {
 fn plane_words(c: &Clip, st: &Style, bit: usize) -> String {
     let (axis, is_max) = (PLANES[bit].0, PLANES[bit].1);
     let v = if is_max { c.hi[axis] } else { c.lo[axis] };
-    let (en, id) = PLANE_NAMES[bit];
     let eq = format!("{} = {}", ["x", "y", "z"][axis], num(st, v));
-    match st.lang {
-        crate::report::lang::Lang::Id => format!("{eq} {id}"),
-        crate::report::lang::Lang::En => format!("{eq} ({en})"),
-    }
+    say(st, FigureMsg::Plane(bit, Some(eq)))
 }
 
 /// The axes x, y, z from the origin (or, for a box far from it, from a
@@ -305,10 +300,7 @@ fn three_d(c: &Clip, axo: &Axo, st: &Style) -> Figure {
             if t.kept { Pen::Kept } else { Pen::Tried },
         );
         items.push(mark(key, Kind::Point, pen, Shape::Dot(axo.page(t.point))));
-        let word = match st.lang {
-            crate::report::lang::Lang::Id => PLANE_NAMES[t.bit].1,
-            crate::report::lang::Lang::En => PLANE_NAMES[t.bit].0,
-        };
+        let word = say(st, FigureMsg::Plane(t.bit, None));
         // The panel along t says all of it: left out when it cannot stand
         // clear.
         let away = axo.page(minus(t.point, mid3(c)));

@@ -38,6 +38,13 @@ pub fn figure(m: &FigureMsg, lang: Lang) -> String {
             &format!("{name} is not in this plane (it leaves it by {deg}°): drawn in its own plane below"),
             &format!("{name} tidak terletak pada bidang ini (menyimpang {deg}°): digambar pada bidangnya sendiri di bawah"),
         ),
+        FigureMsg::Plane(bit, eq) => {
+            let (en, ind) = super::PLANE_NAMES[(*bit).min(5)];
+            match eq {
+                Some(eq) => pick(&format!("{eq} ({en})"), &format!("{eq} {ind}")),
+                None => pick(en, ind),
+            }
+        }
         FigureMsg::OutOfRange(k) => pick(
             &format!("light {k} is out of range: it does not light the point and is not drawn"),
             &format!("sumber cahaya {k} di luar jangkauan: tidak menyinari titik ini dan tidak digambar"),
