@@ -133,15 +133,18 @@ fn frustum(p: &Part, st: &Style, near: f64, w: Win) -> Figure {
         }
     }
     eye_at_origin(st, &mut items);
-    for (edge, k, a, b) in [("top", "top", 2, 3), ("right", "right", 1, 2)] {
-        let r = rect(w, -near);
-        items.push(mark(
-            edge,
-            Kind::Segment,
-            Pen::Kept,
-            seg(page(&r[a]), page(&r[b])),
-        ));
-        items.push(label(edge, format!("{k} = {}", shown(p, st, k))));
+    // top and right beside their edges, on the window's outer side.
+    let r = rect(w, -near);
+    let centre = page(&[(w[0] + w[1]) / 2.0, (w[2] + w[3]) / 2.0, -near]);
+    for (edge, a, b) in [("top", 2, 3), ("right", 1, 2)] {
+        let (pa, pb) = (page(&r[a]), page(&r[b]));
+        items.push(mark(edge, Kind::Segment, Pen::Kept, seg(pa, pb)));
+        let out = [
+            (pa[0] + pb[0]) / 2.0 - centre[0],
+            (pa[1] + pb[1]) / 2.0 - centre[1],
+        ];
+        let text = format!("{edge} = {}", shown(p, st, edge));
+        items.push(label_toward(edge, text, Some(out)));
     }
     panel3(st, Panel::Frustum, &axo, items)
 }
