@@ -117,11 +117,11 @@ pub enum Command {
     Solve {
         /// The problem file.
         file: PathBuf,
-        /// Also draw one figure per part of the problem, each into a new SVG
+        /// Also draw one figure per part of the problem, each into an SVG
         /// file named after FILE.svg and the part: FILE-1-view.svg,
         /// FILE-2-project.svg, FILE-3-window.svg, FILE-4-clip.svg,
         /// FILE-5-shade.svg (numbered in the order of the parts drawn; none
-        /// is written if any exists).
+        /// is written if any exists, unless --force replaces them).
         #[arg(long, value_name = "FILE.svg")]
         figure: Option<PathBuf>,
     },
@@ -160,7 +160,7 @@ pub struct CameraArgs {
     /// Up vector Vup, X,Y,Z.
     #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
     pub up: String,
-    /// Also draw the figure (world axes, Peye, Pref, Vup, u, v, n at the eye and the points, cabinet oblique projection) into this SVG file (an existing one only with --force).
+    /// Also draw the figure (world axes, Peye, Pref, Vup, u, v, n at the eye and the points, in an axonometric view where u, v, n read) into this SVG file (an existing one only with --force).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
@@ -209,7 +209,7 @@ pub struct WindowArgs {
     /// A projected point NAME=X,Y on the near plane (repeatable; needs --viewport).
     #[arg(long = "point", value_name = "NAME=X,Y", allow_hyphen_values = true)]
     pub points: Vec<String>,
-    /// Also draw the figure (the view volume with the near and far windows; the side view with fovy and top; the points on the window; the viewport with their pixels) into this SVG file (an existing one only with --force).
+    /// Also draw the figure (the view volume seen from outside with the near and far windows; the side view with fovy and top; the points on the window; the viewport with their pixels) into this SVG file (an existing one only with --force).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
@@ -229,7 +229,7 @@ pub struct ClipArgs {
     /// Segment end P1.
     #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
     pub to: String,
-    /// Also draw the figure (box, segment, intersections with t and outcode; kept part solid, cut-off parts dashed) into this SVG file (an existing one only with --force).
+    /// Also draw the figure (the box with its six planes named, the segment, P0 and P1 with their outcodes; the segment along t with each intersection's t, point and outcode; kept part solid, cut-off parts dashed) into this SVG file (an existing one only with --force).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
@@ -292,7 +292,7 @@ pub struct ShadeArgs {
     /// Lights (and a Direct3D material) from a TOML file.
     #[arg(long, value_name = "FILE.toml")]
     pub lights: Option<PathBuf>,
-    /// Also draw the figure (the surface, N, L, V, R and H for Blinn, with the angles alpha and beta) into this SVG file (an existing one only with --force).
+    /// Also draw the figure (a flat diagram in the plane of N and L: the surface, N, L, R, V and H for Blinn at their true angles, with alpha and beta) into this SVG file (an existing one only with --force).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }

@@ -1008,7 +1008,6 @@ mod tests {
             .flat_map(|p| [F::Title(*p), F::Desc(*p)])
             .collect();
         v.extend(words.map(F::Word));
-        v.push(F::Exists("a.svg".into()));
         v.into_iter().map(Msg::Figure).collect()
     }
 
