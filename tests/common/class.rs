@@ -247,6 +247,10 @@ pub const N_NOT_NORMALIZED_KEYS: [&str; 9] = [
 /// A value in the four forms of [`Student::form`].
 type Forms = [&'static [&'static str]; 4];
 
+/// What a mistake (or a slip) makes a student write for a key, where it
+/// changes the key.
+type Writes = fn(&str) -> Option<Forms>;
+
 /// u = n × Vup = (−√2/2, 0, √2/2) instead of (√2/2, 0, −√2/2); then
 /// v = n × u = (0, −1, 0), and every x′ = u·(P − Pe) and y′ = v·(P − Pe)
 /// changes sign: A′ = (0, 1, −3√2), B′ = (−√2/2, 1, −5√2/2), C′ = (√2/2, 1,
@@ -492,7 +496,7 @@ fn value(s: &Student, key: &str) -> Option<String> {
         return Some(format!("\"{w}\""));
     }
     // the student's mistakes, a mistake before a slip
-    let made: [(bool, fn(&str) -> Option<Forms>); 6] = [
+    let made: [(bool, Writes); 6] = [
         (s.cross_order, cross_order),
         (s.fovy_not_halved, fovy_not_halved),
         (s.height_is_half_extent, height_is_half_extent),
