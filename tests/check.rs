@@ -927,3 +927,38 @@ fn mistakes_the_independent_check_found_unnamed() {
         ["outcode_reversed"]
     );
 }
+
+#[test]
+fn one_misprint_copied_is_named_though_the_others_are_not() {
+    // Everything right but the width, copied from the text's printed
+    // W = 0.082 (its erratum: the half-width, right = aspect·top ≈ 0.0828;
+    // the width is 2·right ≈ 0.1657). The text's other misprints (h =
+    // 0.041 as the height, 0.0067 in B″ and C″, right = 0.082) were not
+    // copied: the height, B″, C″ and right are right, so the misprint the
+    // student copied must be named on its own.
+    let f = answers_file(
+        "one-misprint",
+        "view.n = \"√2/2, 0, √2/2\"\nview.u = \"√2/2, 0, −√2/2\"\nview.v = \"0, 1, 0\"\n\
+         view.points.A = \"0, −1, −3√2\"\nview.points.B = \"√2/2, −1, −5√2/2\"\n\
+         view.points.C = \"−√2/2, −1, −5√2/2\"\nproject.points.A = \"0, −√2/60\"\n\
+         project.points.B = \"1/50, −√2/50\"\nproject.points.C = \"−1/50, −√2/50\"\n\
+         window.top = \"(√2−1)/10\"\nwindow.bottom = \"(1−√2)/10\"\n\
+         window.left = \"(1−√2)/5\"\nwindow.right = \"(√2−1)/5\"\n\
+         window.height = \"(√2−1)/5\"\nwindow.width = \"0.082\"\n\
+         viewport.pixels.A = \"100, (100−25√2)/3\"\nviewport.pixels.B = \"110+10√2, 30−10√2\"\n\
+         viewport.pixels.C = \"90−10√2, 30−10√2\"\n",
+    );
+    let v = json_ok(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        f.to_str().unwrap(),
+    ]);
+    assert_eq!(v["score"]["points"], 17.0, "{v}");
+    let w = answer(&v, "window.width");
+    assert_eq!(codes(w), ["copied_misprint"], "{w}");
+    assert!(w["why"].as_str().unwrap().contains("half-width"), "{w}");
+    let d = v["diagnosis"].as_array().unwrap();
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert_eq!(d[0]["keys"], serde_json::json!(["window.width"]));
+}

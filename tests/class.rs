@@ -7,7 +7,10 @@
 
 mod common;
 
-use common::class::{answer_file, Student, CROSS_ORDER_KEYS, FOVY_KEYS, KEYS};
+use common::class::{
+    answer_file, Student, CROSS_ORDER_KEYS, FOVY_KEYS, HALF_EXTENT_KEYS, KEYS,
+    N_NOT_NORMALIZED_KEYS,
+};
 use common::{grafika, root};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -21,7 +24,11 @@ fn scratch(name: &str) -> PathBuf {
 }
 
 /// Student i of the class of 60: each mistake at a known rate, in residues
-/// chosen so that no two mistakes touch the same key of one student.
+/// chosen so that no two mistakes touch the same key of one student (but
+/// that four leave the pixels out: 14 and 44 of tan(fovy), 29 and 59 of n
+/// not normalised). Each mistake is carried through the keys that follow
+/// from it ([`CROSS_ORDER_KEYS`], …), except the width, which everyone
+/// gets wrong the same way.
 fn student(i: usize) -> Student {
     Student {
         name: format!("S{i:02}"),
@@ -35,22 +42,27 @@ fn student(i: usize) -> Student {
         no_pixels: i % 15 == 14,                     // 4
         // everyone the same wrong width, written four ways (equal within 0.1 %)
         width: Some(["0.15", "0,15", "3/20", "0.15002"][i % 4].to_string()),
-        pixel_slip: false,
+        pixel_slip: i % 12 == 3, // 5: 3, 15, 27, 39, 51, who make no mistake
     }
 }
 
 /// The mark the design gives student s on a key: 1 right, ½ too coarse, 0.
 fn mark(s: &Student, key: &str) -> f64 {
-    match key {
-        "window.width" => 0.0,
-        k if s.cross_order && CROSS_ORDER_KEYS.contains(&k) => 0.0,
-        k if s.fovy_not_halved && FOVY_KEYS.contains(&k) => 0.0,
-        "window.height" if s.height_is_half_extent => 0.0,
-        "view.n" if s.n_not_normalized => 0.0,
-        "view.n" if s.n_too_coarse => 0.5,
-        "view.v" if s.v_in_words => 0.0,
-        k if s.no_pixels && k.starts_with("viewport.") => 0.0,
-        _ => 1.0,
+    let made = |on: bool, keys: &[&str]| on && keys.contains(&key);
+    if key == "window.width"
+        || (s.no_pixels && key.starts_with("viewport."))
+        || made(s.cross_order, &CROSS_ORDER_KEYS)
+        || made(s.fovy_not_halved, &FOVY_KEYS)
+        || made(s.height_is_half_extent, &HALF_EXTENT_KEYS)
+        || made(s.n_not_normalized, &N_NOT_NORMALIZED_KEYS)
+        || made(s.v_in_words, &["view.v"])
+        || made(s.pixel_slip, &["viewport.pixels.B"])
+    {
+        0.0
+    } else if s.n_too_coarse && key == "view.n" {
+        0.5
+    } else {
+        1.0
     }
 }
 
@@ -219,15 +231,38 @@ fn a_class_of_sixty_gives_the_facility_discrimination_and_correlation_of_its_des
             "{k}"
         );
     }
-    // by hand: view.n is wrong for the 10 with n unnormalised and half right
+}
+
+#[test]
+fn the_keys_counted_by_hand() {
+    let dir = class_of_sixty("by-hand");
+    let (_, _, text) = report(&dir, "report.json", "en");
+    let j: Value = serde_json::from_str(&text).expect("the report is JSON");
+    // view.n is wrong for the 10 with n unnormalised and half right
     // for the 5 too coarse: p = (60 − 10 − 5·½)/60
     assert!(close(
         key(&j, "view.n")["facility"].as_f64().unwrap(),
         47.5 / 60.0
     ));
     assert_eq!(key(&j, "view.n")["counts"]["wrong"], 10);
-    assert_eq!(key(&j, "view.v")["counts"]["unparseable"], 1);
-    assert_eq!(key(&j, "viewport.pixels.A")["counts"]["missing"], 4);
+    // v: wrong for the 6 of u = n × Vup (v = (0, −1, 0)) and the 10 with n
+    // unnormalised (v = (0, √2, 0)), unparseable for S13: p = 43/60
+    let v = key(&j, "view.v");
+    assert_eq!(v["counts"]["wrong"], 16);
+    assert_eq!(v["counts"]["unparseable"], 1);
+    assert!(close(v["facility"].as_f64().unwrap(), 43.0 / 60.0));
+    // pixel A: left out by 4; wrong for the 6 of cross_order and the 10 of
+    // tan(fovy) who wrote pixels (n unnormalised leaves A″ and A): p = 40/60
+    let a = key(&j, "viewport.pixels.A");
+    assert_eq!(a["counts"]["missing"], 4);
+    assert_eq!(a["counts"]["wrong"], 16);
+    assert!(close(a["facility"].as_f64().unwrap(), 40.0 / 60.0));
+    // pixel B: also wrong for the 8 with n unnormalised who wrote pixels and
+    // the 5 slips: 6 + 10 + 8 + 5 = 29 wrong, 4 missing, p = 27/60
+    let b = key(&j, "viewport.pixels.B");
+    assert_eq!(b["counts"]["wrong"], 29);
+    assert_eq!(b["counts"]["missing"], 4);
+    assert!(close(b["facility"].as_f64().unwrap(), 27.0 / 60.0));
     // the height: 12 with fovy not halved and 15 with the half extent
     assert!(close(
         key(&j, "window.height")["facility"].as_f64().unwrap(),
@@ -240,16 +275,19 @@ fn a_class_of_sixty_gives_the_facility_discrimination_and_correlation_of_its_des
     assert!(w["point_biserial"].is_null());
     assert_eq!(w["flags"], serde_json::json!(["very_hard"]));
     assert_eq!(w["counts"]["wrong"], 60);
-    // view.points.A, wrong only for the 6 of cross_order: p = 0.9, not above
+    // A′: wrong for the 6 of cross_order and the 10 with n unnormalised
+    // (A′ = (0, −√2, −6)): p = 44/60
     assert!(close(
         key(&j, "view.points.A")["facility"].as_f64().unwrap(),
-        0.9
+        44.0 / 60.0
     ));
-    assert_eq!(key(&j, "view.points.A")["counts"]["wrong"], 6);
-    assert!(key(&j, "view.points.A")["flags"]
-        .as_array()
-        .unwrap()
-        .is_empty());
+    assert_eq!(key(&j, "view.points.A")["counts"]["wrong"], 16);
+    // A″, wrong only for the 6 of cross_order (an unnormalised n scales y′
+    // and z′ alike, so A″ = (0, −√2/60) stays): p = 0.9, not above, no flag
+    let pa = key(&j, "project.points.A");
+    assert!(close(pa["facility"].as_f64().unwrap(), 0.9));
+    assert_eq!(pa["counts"]["wrong"], 6);
+    assert!(pa["flags"].as_array().unwrap().is_empty());
 }
 
 #[test]
@@ -264,26 +302,35 @@ fn the_mistakes_are_named_with_their_students_keys_and_step_largest_first() {
             .map(|s| s.name)
             .collect()
     };
+    // each mistake explains the keys it changes, but the width, which
+    // everyone writes the same wrong way (0.15); a student who left the
+    // pixels out has fewer, the class the union
+    let explained = |keys: &[&'static str]| -> Vec<&'static str> {
+        keys.iter()
+            .copied()
+            .filter(|k| *k != "window.width")
+            .collect()
+    };
     let want: [(&str, Vec<String>, Vec<&str>); 4] = [
         (
             "height_is_half_extent",
             names(&|s| s.height_is_half_extent),
-            vec!["window.height"],
+            explained(&HALF_EXTENT_KEYS),
         ),
         (
             "fovy_not_halved",
             names(&|s| s.fovy_not_halved),
-            FOVY_KEYS.to_vec(),
+            explained(&FOVY_KEYS),
         ),
         (
             "n_not_normalized",
             names(&|s| s.n_not_normalized),
-            vec!["view.n"],
+            explained(&N_NOT_NORMALIZED_KEYS),
         ),
         (
             "cross_order",
             names(&|s| s.cross_order),
-            CROSS_ORDER_KEYS.to_vec(),
+            explained(&CROSS_ORDER_KEYS),
         ),
     ];
     let got = j["mistakes"].as_array().unwrap();
@@ -310,9 +357,23 @@ fn the_mistakes_are_named_with_their_students_keys_and_step_largest_first() {
         "{}",
         got[3]["step"]
     );
-    // the one wrong value no mistake explains: the width, 60 times
+}
+
+#[test]
+fn the_wrong_answers_no_mistake_explains_are_the_width_and_the_slip() {
+    let dir = class_of_sixty("unexplained");
+    let (_, _, text) = report(&dir, "report.json", "en");
+    let j: Value = serde_json::from_str(&text).unwrap();
+    let slipped: Vec<String> = (0..60)
+        .map(student)
+        .filter(|s| s.pixel_slip)
+        .map(|s| s.name)
+        .collect();
+    // the wrong values no mistake explains, the most common first: the
+    // width, 60 times in four forms, and pixel B's slip (142.14 for
+    // 124.14), 5 times
     let wrong = j["wrong_answers"].as_array().unwrap();
-    assert_eq!(wrong.len(), 1, "{wrong:#?}");
+    assert_eq!(wrong.len(), 2, "{wrong:#?}");
     assert_eq!(wrong[0]["key"], "window.width");
     assert_eq!(
         wrong[0]["values"].as_array().unwrap().len(),
@@ -321,6 +382,48 @@ fn the_mistakes_are_named_with_their_students_keys_and_step_largest_first() {
     );
     assert_eq!(wrong[0]["values"][0]["count"], 60);
     assert_eq!(wrong[0]["values"][0]["value"], "0.15");
+    assert_eq!(wrong[1]["key"], "viewport.pixels.B");
+    let slips = wrong[1]["values"].as_array().unwrap();
+    assert_eq!(slips.len(), 1, "{wrong:#?}");
+    assert_eq!(slips[0]["count"], 5);
+    assert_eq!(slips[0]["students"], serde_json::json!(slipped));
+}
+
+#[test]
+fn each_mistake_of_the_design_changes_its_keys_and_no_other() {
+    // mark() above counts a mistake wrong on its keys: the answer files
+    // must differ from a right student's on exactly those, in every form
+    let lines =
+        |s: &Student| -> Vec<String> { answer_file(s).lines().skip(1).map(String::from).collect() };
+    for form in 0..4 {
+        let one = |f: fn(&mut Student)| {
+            let mut s = Student {
+                form,
+                ..Student::default()
+            };
+            f(&mut s);
+            s
+        };
+        let right = lines(&one(|_| {}));
+        let cases: [(Student, &[&str]); 5] = [
+            (one(|s| s.cross_order = true), &CROSS_ORDER_KEYS),
+            (one(|s| s.fovy_not_halved = true), &FOVY_KEYS),
+            (one(|s| s.height_is_half_extent = true), &HALF_EXTENT_KEYS),
+            (one(|s| s.n_not_normalized = true), &N_NOT_NORMALIZED_KEYS),
+            (one(|s| s.pixel_slip = true), &["viewport.pixels.B"]),
+        ];
+        for (s, keys) in cases {
+            let mine = lines(&s);
+            assert_eq!(mine.len(), right.len());
+            let changed: Vec<&str> = mine
+                .iter()
+                .zip(&right)
+                .filter(|(a, b)| a != b)
+                .map(|(a, _)| a.split(" = ").next().unwrap())
+                .collect();
+            assert_eq!(changed, keys, "form {form}: {s:?}");
+        }
+    }
 }
 
 #[test]

@@ -381,19 +381,22 @@ pub static CATALOG: &[Mistake] = &[
     Mistake {
         code: "copied_misprint",
         description: "the value the source printed, which its errata say is wrong (see the erratum)",
+        // One variant per erratum: a student who copies one printed answer
+        // has not copied the others, so a right answer to another erratum's
+        // key must not rule this one out.
         apply: |p| {
-            let mut t = solved(p)?;
-            let mut any = false;
-            for e in &p.errata {
-                let (Some(printed), Some(v)) = (printed(p, &e.key), find_key(&mut t, &e.key)) else {
-                    continue;
-                };
-                if let Some(x) = printed_value(printed, v) {
-                    *v = x;
-                    any = true;
-                }
-            }
-            any.then(|| vec![t])
+            let base = solved(p)?;
+            let variants: Vec<Tree> = p
+                .errata
+                .iter()
+                .filter_map(|e| {
+                    let mut t = base.clone();
+                    let v = find_key(&mut t, &e.key)?;
+                    *v = printed_value(printed(p, &e.key)?, v)?;
+                    Some(t)
+                })
+                .collect();
+            (!variants.is_empty()).then_some(variants)
         },
     },
 ];
