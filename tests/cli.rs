@@ -926,3 +926,44 @@ fn explain_pixel_matrices_are_not_under_the_solve_viewing_heading() {
     }
     let _ = std::fs::remove_file(&png);
 }
+
+/// A problem file's vectors as people write them (one string, in brackets
+/// or not, `;` between parts, the minus sign `−`) read as the TOML arrays
+/// do: the text's triangle and clipping examples give the same results.
+#[test]
+fn a_problem_files_vectors_may_be_written_as_one_string() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = [
+        (
+            "text-triangle.toml",
+            vec![
+                ("eye = [3, 1, 3]", "eye = \"(3; 1; 3)\""),
+                ("look = [2, 1, 2]", "look = \"2, 1, 2\""),
+                ("up = [0, 1, 0]", "up = \"[0, 1, 0]\""),
+                ("B = [1, 0, 0]", "B = \"(1, 0, 0)\""),
+            ],
+        ),
+        (
+            "text-clip.toml",
+            vec![
+                ("max = [3, 4, 3]", "max = \"(3, 4, 3)\""),
+                ("from = [4, 2, 2]", "from = \"(4, 2, 2)\""),
+                ("to = [-2, 6, 1]", "to = \"(−2; 6; 1)\""),
+            ],
+        ),
+    ];
+    for (name, edits) in cases {
+        let original = root().join("problems").join(name);
+        let mut text = std::fs::read_to_string(&original).unwrap();
+        for (array, string) in edits {
+            assert!(text.contains(array), "{name} has no `{array}`");
+            text = text.replacen(array, string, 1);
+        }
+        let edited = dir.path().join(name);
+        std::fs::write(&edited, text).unwrap();
+        let a = json_ok(&["solve", original.to_str().unwrap()]);
+        let b = json_ok(&["solve", edited.to_str().unwrap()]);
+        assert_eq!(a["result"], b["result"], "{name}");
+        assert_eq!(a["exact"], b["exact"], "{name}");
+    }
+}

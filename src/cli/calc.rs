@@ -218,7 +218,8 @@ fn shade_in(a: &ShadeArgs) -> Result<ShadeIn> {
     let v = |field: &str, s: &Option<String>| -> Result<Option<Vec3In>> {
         s.as_deref()
             .map(|t| {
-                input::vec3_expr(field, t).map(|[x, y, z]: [Expr; 3]| [Num(x), Num(y), Num(z)])
+                input::vec3_expr(field, t)
+                    .map(|[x, y, z]: [Expr; 3]| Vec3In([Num(x), Num(y), Num(z)]))
             })
             .transpose()
     };

@@ -55,9 +55,15 @@ impl<'de> Deserialize<'de> for PointRef {
         impl<'de> de::Visitor<'de> for V {
             type Value = PointRef;
             fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-                f.write_str("[x, y, z] or the name of a point in [points]")
+                f.write_str("[x, y, z], \"(x, y, z)\" or the name of a point in [points]")
             }
+            /// A name, or coordinates written as one string (`"(0, 2, 6)"`):
+            /// a name holds no bracket, comma or semicolon.
             fn visit_str<E: de::Error>(self, v: &str) -> std::result::Result<PointRef, E> {
+                if v.contains(['(', '[', ',', ';']) {
+                    let at: Vec3In = Deserialize::deserialize(de::value::StrDeserializer::new(v))?;
+                    return Ok(PointRef::At(Box::new(at)));
+                }
                 Ok(PointRef::Named(v.to_string()))
             }
             fn visit_seq<A: de::SeqAccess<'de>>(
@@ -185,7 +191,7 @@ impl ProblemIn {
     /// and column (`file:line:col`).
     pub fn parse(text: &str, origin: &str) -> Result<ProblemIn> {
         let mut p: ProblemIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
-        crate::input::lights::place(&mut p.light, text, origin);
+        crate::input::lights::place(&mut p.light, text, origin)?;
         if let Some(ask) = &p.ask {
             for a in ask {
                 if !PARTS.contains(&a.as_str()) {

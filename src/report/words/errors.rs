@@ -428,8 +428,8 @@ fn scene(m: &ErrMsg, lang: Lang) -> String {
             format!("objek-objek scene ini bersama-sama memiliki {n} segitiga; renderer menerima paling banyak {max} per scene (ditolak sebelum mesh dibuat)"),
         ),
         ErrMsg::TooManyLights(n, max) => f(
-            format!("the scene has {n} lights; the renderer takes at most {max} per scene (as Direct3D 9 does)"),
-            format!("scene ini memiliki {n} cahaya; renderer menerima paling banyak {max} per scene (seperti Direct3D 9)"),
+            format!("the file has {n} lights; grafika takes at most {max} per file (as Direct3D 9 does)"),
+            format!("file ini memiliki {n} cahaya; grafika menerima paling banyak {max} per file (seperti Direct3D 9)"),
         ),
         ErrMsg::NeedsColour => say(lang, "needs at least one colour", "memerlukan paling sedikit satu warna"),
         ErrMsg::NoObjects => say(
@@ -813,6 +813,10 @@ fn serde_words(s: &str) -> String {
         (
             "a number or a string with a number expression such as",
             "bilangan atau string berisi ekspresi bilangan seperti",
+        ),
+        (
+            "a vector: an array [x, y, z] or a string",
+            "sebuah vektor: array [x, y, z] atau string",
         ),
         ("an array of length", "array dengan panjang"),
         ("a sequence", "array"),
