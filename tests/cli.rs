@@ -656,6 +656,7 @@ fn a_long_echoed_input_is_cut_in_the_error() {
 #[test]
 fn render_refuses_precision_it_would_ignore() {
     let out = std::env::temp_dir().join(format!("grafika-prec-{}.png", std::process::id()));
+    // render does not take --precision (its --help does not list it) ...
     let e = json_err(&[
         "render",
         "problems/render/cone-flat.toml",
@@ -664,7 +665,18 @@ fn render_refuses_precision_it_would_ignore() {
         "--precision",
         "f64",
     ]);
+    assert_eq!(e["field"], "--precision");
+    // ... nor before its name, where the reason is said.
+    let e = json_err(&[
+        "--precision",
+        "f64",
+        "render",
+        "problems/render/cone-flat.toml",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
     assert_eq!(e["field"], "precision");
+    assert!(!out.exists());
 }
 
 #[test]

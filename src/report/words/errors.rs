@@ -96,6 +96,7 @@ pub fn error(m: &ErrMsg, lang: Lang) -> String {
         | ErrMsg::NothingRendered
         | ErrMsg::Threads(_)
         | ErrMsg::RenderPrecision
+        | ErrMsg::NotTaken(_)
         | ErrMsg::OwnOutput => commands(m, lang),
     }
 }
@@ -668,6 +669,10 @@ fn commands(m: &ErrMsg, lang: Lang) -> String {
             "render always computes at f32 (--precision is for the calculator's worked steps): leave it out",
             "render selalu menghitung dengan f32 (--precision untuk langkah-langkah kalkulator): hilangkan opsi itu",
         ),
+        ErrMsg::NotTaken(c) => f(
+            format!("grafika {c} does not take this option (grafika {c} --help lists those it takes)"),
+            format!("grafika {c} tidak menerima opsi ini (grafika {c} --help mendaftar opsi yang diterimanya)"),
+        ),
         ErrMsg::OwnOutput => say(
             lang,
             "check, generate, bench, practice, completions and man print their own output: use main_with_args",
@@ -1060,6 +1065,7 @@ pub(crate) mod tests {
             ErrMsg::NothingRendered,
             ErrMsg::Threads(s("why")),
             ErrMsg::RenderPrecision,
+            ErrMsg::NotTaken(s("check")),
             ErrMsg::OwnOutput,
             ErrMsg::Man(s("why")),
         ]);
@@ -1256,6 +1262,7 @@ pub(crate) mod tests {
             | E::NothingRendered
             | E::Threads(_)
             | E::RenderPrecision
+            | E::NotTaken(_)
             | E::OwnOutput
             | E::Man(_)
             | E::Clap(..) => {}
