@@ -18,7 +18,7 @@ pub mod render;
 pub mod sheets;
 pub mod words;
 
-use crate::msg::Msg;
+use crate::msg::{Msg, Printed};
 use crate::num::Shown;
 use crate::stages::trace::{Compared, Comparison, Report, Step, Val};
 use comfy_table::{presets, Table};
@@ -224,9 +224,29 @@ impl Style {
 }
 
 impl Report {
-    /// The worked solution and answer as text.
+    /// The problem `solve` worked, as its file gives it in the language it
+    /// was read in: the title, the statement, and what is asked (the
+    /// parts answered).
+    pub fn posed(&self) -> Option<(String, Option<String>, Msg)> {
+        if self.command != "solve" {
+            return None;
+        }
+        let text = |k: &str| self.input.get(k).and_then(|t| t.as_str());
+        let statement = text("statement").map(|s| s.trim().to_string());
+        let parts = self.result.iter().map(|(k, _)| k.clone()).collect();
+        Some((text("title")?.to_string(), statement, Msg::Asked(parts)))
+    }
+
+    /// The worked solution and answer as text, after the problem.
     pub fn to_text(&self, style: &Style) -> String {
         let mut out = String::new();
+        if let Some((title, statement, asked)) = self.posed() {
+            out.push_str(&format!("{title}\n{}\n", "=".repeat(title.chars().count())));
+            if let Some(s) = statement {
+                out.push_str(&format!("{s}\n"));
+            }
+            out.push_str(&format!("\n{}\n", practice::wrap(&style.w(&asked), "")));
+        }
         let mut section: Option<&Msg> = None;
         let step_word = style.tr("Step", "Langkah");
         for (i, s) in self.steps.iter().enumerate() {
@@ -322,6 +342,19 @@ impl Report {
     }
 }
 
+impl Compared {
+    /// How the printed answer compares: agrees, differs (of the kind the
+    /// problem file says), not asked, not comparable.
+    pub fn verdict(&self) -> Printed {
+        match (&self.computed, self.agrees) {
+            (None, _) => Printed::NotAsked,
+            (Some(_), Some(true)) => Printed::Agrees,
+            (Some(_), Some(false)) => Printed::Differs(self.kind),
+            (Some(_), None) => Printed::NotComparable,
+        }
+    }
+}
+
 /// The comparison with the printed answers, one line per answer.
 fn comparison_text(c: &Comparison, lang: Lang) -> String {
     let style = Style::new(4, true, lang);
@@ -335,44 +368,35 @@ fn comparison_text(c: &Comparison, lang: Lang) -> String {
     let printed = t("printed", "tercetak");
     for r in &c.rows {
         let (key, shown) = (&r.key, &r.printed);
+        let verdict = style.w(&Msg::Printed(r.verdict()));
         let why = (r.why.as_ref())
             .map(|w| format!(": {}", style.w(w)))
             .unwrap_or_default();
-        lines.push(match (&r.computed, r.agrees) {
-            (None, _) => format!(
-                "  {key}: {printed} {shown} — {}",
-                t(
-                    "not computed in this run (not asked for)",
-                    "tidak dihitung pada jalannya program ini (tidak diminta)"
-                )
-            ),
-            (Some(_), Some(true)) => {
-                format!("  {key}: {printed} {shown} — {}", t("agrees", "sesuai"))
-            }
-            (Some(v), Some(false)) => format!(
-                "  {key}: {printed} {shown}, {} {} — {}{why}",
+        lines.push(match (&r.computed, r.verdict()) {
+            (Some(v), Printed::Differs(_)) => format!(
+                "  {key}: {printed} {shown}, {} {} — {verdict}{why}",
                 t("correct", "yang benar"),
-                style.val_inline(v),
-                t("the text is WRONG here", "teks SALAH di sini")
+                style.val_inline(v)
             ),
-            (Some(v), None) => format!(
-                "  {key}: {printed} {shown}, {} {} — {}",
+            (Some(v), Printed::NotComparable) => format!(
+                "  {key}: {printed} {shown}, {} {} — {verdict}",
                 t("computed", "hasil hitung"),
-                style.val_inline(v),
-                t("cannot be compared", "tidak dapat dibandingkan")
+                style.val_inline(v)
             ),
+            _ => format!("  {key}: {printed} {shown} — {verdict}"),
         });
     }
     lines.join("\n")
 }
 
-/// One compared answer as JSON.
+/// One compared answer as JSON (`kind`: the erratum's, a code).
 fn compared_json(r: &Compared, lang: Lang) -> Value {
     json!({
         "key": r.key,
         "printed": r.printed,
         "computed": r.computed.as_ref().map(value_json),
         "agrees": r.agrees,
+        "kind": r.kind,
         "why": r.why.as_ref().map(|w| crate::report::words::words(w, lang)),
     })
 }

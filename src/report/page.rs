@@ -33,6 +33,11 @@ pub fn report_page(
     figures: &[(String, String, String)],
 ) -> String {
     let mut body = String::new();
+    if let Some((_, statement, asked)) = r.posed() {
+        for p in statement.iter().chain([&st.w(&asked)]) {
+            body.push_str(&format!("<p class=\"statement\">{}</p>\n", xml_escape(p)));
+        }
+    }
     for w in &r.warnings {
         body.push_str(&format!(
             "<p class=\"warning\">{}: {}</p>\n",

@@ -3,7 +3,7 @@
 //! One exhaustive match: a key without both languages does not compile.
 
 use super::lang::Lang;
-use crate::msg::{LightPart, Msg, SpotZone, Term, Trivial};
+use crate::msg::{Erratum, LightPart, Msg, Printed, SpotZone, Term, Trivial};
 
 mod drawn;
 pub mod errors;
@@ -21,6 +21,13 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             (Lang::Id, Some(ind)) => ind.clone(),
             _ => en.clone(),
         },
+        Msg::Erratum(kind, why) => format!(
+            "{}: {}",
+            printed(Printed::Differs(*kind), id),
+            words(why, lang)
+        ),
+        Msg::Printed(p) => printed(*p, id),
+        Msg::Asked(parts) => asked(parts, id),
         Msg::SecModeling
         | Msg::SecViewing
         | Msg::SecProjection
@@ -75,6 +82,67 @@ pub fn words(m: &Msg, lang: Lang) -> String {
 
 fn pick(id: bool, en: &str, ind: &str) -> String {
     if id { ind } else { en }.to_string()
+}
+
+/// What a problem asks, part by part (the parts of `input::problem::PARTS`).
+fn asked(parts: &[String], id: bool) -> String {
+    let part = |p: &str| {
+        let (en, ind) = match p {
+            "view" => (
+                "the camera basis u, v, n, the view matrix and the eye coordinates of the points",
+                "basis kamera u, v, n, matriks transformasi pandang, dan posisi titik-titik dalam koordinat kamera",
+            ),
+            "project" => (
+                "their projections onto the near plane",
+                "hasil proyeksinya terhadap near clipping plane",
+            ),
+            "window" => (
+                "the viewing window on the near plane (its edges, width and height) and which projected points lie inside the view volume",
+                "viewing window pada near clipping plane (tepi-tepinya, lebar dan tinggi) dan titik hasil proyeksi mana yang berada di dalam view volume",
+            ),
+            "viewport" => (
+                "the pixel of each point in the viewport",
+                "posisi piksel tiap titik pada viewport",
+            ),
+            "clip" => (
+                "the region codes of the ends and the result of clipping the segment",
+                "region code kedua ujung dan hasil clipping ruas garis",
+            ),
+            _ => (
+                "the colour at the point, term by term",
+                "warna hasil pencahayaan pada titik itu, komponen demi komponen",
+            ),
+        };
+        pick(id, en, ind)
+    };
+    let list: Vec<String> = parts.iter().map(|p| part(p)).collect();
+    format!("{}: {}.", pick(id, "Asked", "Ditanyakan"), list.join("; "))
+}
+
+/// How a printed answer compares, worded as what it is: a misprint,
+/// another convention, a rounding (docs/spec.md §5).
+fn printed(p: Printed, id: bool) -> String {
+    let p_ = |en: &str, ind: &str| pick(id, en, ind);
+    match p {
+        Printed::Agrees => p_("agrees", "sesuai"),
+        Printed::Differs(None) => p_("the printed answer is wrong", "jawaban yang tercetak salah"),
+        Printed::Differs(Some(Erratum::Misprint)) => {
+            p_("a misprint in the text", "salah cetak di teks")
+        }
+        Printed::Differs(Some(Erratum::Convention)) => p_(
+            "the text uses another convention",
+            "teks memakai konvensi lain",
+        ),
+        Printed::Differs(Some(Erratum::Rounding)) => p_(
+            "a rounding error in the text",
+            "kesalahan pembulatan di teks",
+        ),
+        Printed::NotAsked => p_(
+            "not computed in this run (not asked for)",
+            "tidak dihitung (tidak ditanyakan dalam soal ini)",
+        ),
+        Printed::NotComparable => p_("cannot be compared", "tidak dapat dibandingkan"),
+    }
 }
 
 /// Warnings, and the errors of generate and --html.
@@ -772,7 +840,7 @@ fn check_note(m: &Msg, id: bool) -> Option<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::msg::{LightPart, SpotZone, Term, Trivial};
+    use crate::msg::{Erratum, LightPart, Printed, SpotZone, Term, Trivial};
 
     /// Every key, once, with sample parameters.
     pub fn every_message() -> Vec<Msg> {
@@ -953,6 +1021,21 @@ mod tests {
         v.extend(drawn_messages());
         v.push(Msg::Unreadable(crate::msg::NumErr::DivZero("1/0".into())));
         v.push(Msg::Written("as for B".into(), Some("seperti B".into())));
+        for k in [
+            None,
+            Some(Erratum::Misprint),
+            Some(Erratum::Convention),
+            Some(Erratum::Rounding),
+        ] {
+            v.push(Msg::Printed(Printed::Differs(k)));
+            let why = Msg::Written("as for B".into(), Some("seperti B".into()));
+            v.push(Msg::Erratum(k, Box::new(why)));
+        }
+        for p in [Printed::Agrees, Printed::NotAsked, Printed::NotComparable] {
+            v.push(Msg::Printed(p));
+        }
+        let parts = ["view", "project", "window", "viewport", "clip", "shade"];
+        v.push(Msg::Asked(parts.map(String::from).to_vec()));
         for s in [
             crate::msg::Said::BitTest(true, "x > xmax".into(), "4.5 > 3".into()),
             crate::msg::Said::BitTest(false, "x < xmin".into(), "4.5 < 0".into()),
@@ -1060,6 +1143,9 @@ mod tests {
         match m {
             Math(_)
             | Written(..)
+            | Erratum(..)
+            | Printed(_)
+            | Asked(_)
             | SecModeling
             | SecViewing
             | SecProjection

@@ -346,7 +346,9 @@ fn input_json(p: &ProblemIn) -> Value {
         PointRef::At(v) => v3(v),
         PointRef::Named(name) => json!(name),
     };
-    let mut o = json!({ "title": p.title, "source": p.source, "ask": p.ask });
+    let mut o = json!({
+        "title": p.title, "statement": p.statement, "source": p.source, "ask": p.ask,
+    });
     if let Some(c) = &p.camera {
         o["camera"] = json!({ "eye": v3(&c.eye), "look": v3(&c.look), "up": v3(&c.up) });
     }
@@ -546,12 +548,14 @@ fn compare_printed(p: &ProblemIn, result: &[(String, Val)], rel: f64) -> Option<
         .iter()
         .map(|(key, printed)| {
             let computed = lookup(result, key).cloned();
+            let erratum = p.errata.iter().find(|e| &e.key == key);
             Compared {
                 key: key.clone(),
                 printed: printed_text(printed),
                 agrees: computed.as_ref().and_then(|v| agrees(printed, v, rel)),
                 computed,
-                why: p.errata.iter().find(|e| &e.key == key).map(|e| e.reason()),
+                kind: erratum.and_then(|e| e.kind),
+                why: erratum.map(|e| e.why()),
             }
         })
         .collect();
