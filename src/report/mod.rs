@@ -207,7 +207,8 @@ impl Style {
         out
     }
 
-    /// `name = value`, with a matrix on its own lines.
+    /// `name = value`, with a matrix on its own lines; `name ≈ value` when
+    /// the value has no exact form (never `name = ≈ value`).
     pub fn named(&self, indent: &str, name: &str, v: &Val) -> String {
         if v.is_matrix() {
             let table = self.matrix(match v {
@@ -218,7 +219,11 @@ impl Style {
             let body: Vec<String> = table.lines().map(|l| format!("{pad}  {l}")).collect();
             format!("{indent}{name} =\n{}", body.join("\n"))
         } else {
-            format!("{indent}{name} = {}", self.val_inline(v))
+            let val = self.val_inline(v);
+            match val.strip_prefix("≈ ") {
+                Some(rest) => format!("{indent}{name} ≈ {rest}"),
+                None => format!("{indent}{name} = {val}"),
+            }
         }
     }
 }
