@@ -219,8 +219,6 @@ pub enum Msg {
     FOutOfRange,
     /// cos α and its clamp.
     FIncidence,
-    /// The highlight is not added.
-    FNotAdded,
     /// Mcam's columns.
     FCamMatrix,
     /// V = R·T(−Pe).

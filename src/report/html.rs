@@ -7,7 +7,7 @@ use super::figure::xml_escape;
 use super::mathml;
 use super::Style;
 use crate::msg::Msg;
-use crate::stages::trace::{Step, Val};
+use crate::stages::trace::{Step, Subst, Val};
 
 /// The page's style: readable on a screen, one column, and A4 in print
 /// (steps are not split across pages).
@@ -56,10 +56,13 @@ pub fn step(k: usize, s: &Step, st: &Style) -> String {
     }
     out.push_str("\n<ul>\n");
     for (n, v) in &s.values {
-        out.push_str(&format!("<li>{}</li>\n", named(st, n, v, false)));
+        out.push_str(&format!(
+            "<li>{}</li>\n",
+            line(st, n, s.sub_of(n), v, false)
+        ));
     }
     for (n, v) in &s.result {
-        out.push_str(&format!("<li>{}</li>\n", named(st, n, v, true)));
+        out.push_str(&format!("<li>{}</li>\n", line(st, n, s.sub_of(n), v, true)));
     }
     out.push_str("</ul>\n");
     if let Some(n) = &s.note {
@@ -69,6 +72,19 @@ pub fn step(k: usize, s: &Step, st: &Style) -> String {
         ));
     }
     out + "</section>\n"
+}
+
+/// `name = substitution = value` in MathML when the step shows how the
+/// value was worked, else as [`named`].
+pub fn line(st: &Style, name: &str, sub: Option<&Subst>, v: &Val, arrow: bool) -> String {
+    match sub {
+        Some(sub) if !v.is_matrix() => {
+            let name = crate::report::words::labels::label(name, st.lang);
+            let lead = if arrow { "⇒ " } else { "" };
+            mathml::inline(&format!("{lead}{}", st.worked(&name, sub, v)))
+        }
+        _ => named(st, name, v, arrow),
+    }
 }
 
 /// `name = value` in MathML: a matrix as a table, numbers and vectors as

@@ -20,7 +20,7 @@ pub mod words;
 
 use crate::msg::{Msg, Printed};
 use crate::num::Shown;
-use crate::stages::trace::{Compared, Comparison, Report, Step, Val};
+use crate::stages::trace::{Compared, Comparison, Report, Step, Subst, Val};
 use comfy_table::{presets, Table};
 use lang::{tr, Lang};
 use serde_json::{json, Map, Value};
@@ -194,17 +194,98 @@ impl Style {
         }
         let name = |k: &str| words::labels::label(k, self.lang);
         for (k, v) in &s.values {
-            out.push_str(&self.named("    ", &name(k), v));
+            out.push_str(&self.line("    ", &name(k), s.sub_of(k), v));
             out.push('\n');
         }
         for (k, v) in &s.result {
-            out.push_str(&self.named("  ⇒ ", &name(k), v));
+            out.push_str(&self.line("  ⇒ ", &name(k), s.sub_of(k), v));
             out.push('\n');
         }
         if let Some(n) = &s.note {
             out.push_str(&format!("    ({})\n", self.w(n)));
         }
         out
+    }
+
+    /// `name = value` as [`named`](Style::named) writes it, or `name =
+    /// substitution = value` when the step shows how it was worked.
+    pub fn line(&self, indent: &str, name: &str, sub: Option<&Subst>, v: &Val) -> String {
+        match sub {
+            Some(sub) if !v.is_matrix() => {
+                format!("{indent}{}", self.worked(name, sub, v))
+            }
+            _ => self.named(indent, name, v),
+        }
+    }
+
+    /// `name = substitution = value` (`t = (0 − 4)/(−2 − 4) = 2/3 ≈
+    /// 0.6667`), `≈` before a value without an exact form; the
+    /// substitution is left out when it reads as the value itself.
+    pub fn worked(&self, name: &str, sub: &Subst, v: &Val) -> String {
+        let (val, sub) = (self.val_inline(v), self.subst(sub));
+        let shown = |s: &str| s.split([' ']).any(|p| p == sub) || s == sub;
+        match val.strip_prefix("≈ ") {
+            _ if shown(&val.replace(" ≈ ", " ").replace(" = ", " ")) => format!("{name} = {val}"),
+            Some(rest) => format!("{name} = {sub} ≈ {rest}"),
+            None => format!("{name} = {sub} = {val}"),
+        }
+    }
+
+    /// A substitution in this style's language: each value as a short
+    /// decimal when that is exact (0.1), else its exact form (√2/2, 2/3),
+    /// else its decimal; in parentheses where the operator before it
+    /// would otherwise bind wrongly (`4 − (−2)`, `2·(√2−1)`).
+    pub fn subst(&self, s: &Subst) -> String {
+        let mut out = String::new();
+        let pieces: Vec<&str> = s.form.split("{}").collect();
+        for (i, piece) in pieces.iter().enumerate() {
+            out.push_str(&match self.lang {
+                Lang::En => piece.to_string(),
+                Lang::Id => piece.replace(", ", "; "),
+            });
+            let Some(a) = s.args.get(i).filter(|_| i + 1 < pieces.len()) else {
+                continue;
+            };
+            let text = self.operand(a);
+            // a whole power after `^` is raised: max(0.8, 0)^4 → max(0.8, 0)⁴
+            let raised: Option<String> = (out.ends_with('^'))
+                .then(|| text.chars().map(superscript).collect())
+                .flatten();
+            match raised {
+                Some(r) => {
+                    out.pop();
+                    out.push_str(&r);
+                }
+                None => {
+                    let (before, after) =
+                        (out.trim_end().chars().last(), pieces[i + 1].chars().next());
+                    out.push_str(&parenthesized(&text, before, after));
+                }
+            }
+        }
+        out
+    }
+
+    /// One value of a substitution (a vector in parentheses).
+    fn operand(&self, v: &Val) -> String {
+        match v {
+            Val::Num(s) => {
+                let dec = fmt_dec(s.value, self.digits);
+                let text = match &s.pretty {
+                    Some(p) if p.contains('√') || dec.parse::<f64>().ok() != Some(s.value) => {
+                        p.clone()
+                    }
+                    _ => dec,
+                };
+                self.dec(text.replace('-', "−"))
+            }
+            Val::List(items) => {
+                let parts: Vec<String> = items.iter().map(|x| self.operand(x)).collect();
+                let sep = self.tr(", ", "; ");
+                format!("({})", parts.join(sep))
+            }
+            other => self.val_inline(other),
+        }
     }
 
     /// `name = value`, with a matrix on its own lines; `name ≈ value` when
@@ -440,6 +521,48 @@ fn push_answer(out: &mut String, style: &Style, indent: &str, k: &str, v: &Val) 
     }
 }
 
+/// A digit raised (`4` → `⁴`); `None` for anything else.
+fn superscript(c: char) -> Option<char> {
+    let i = c.to_digit(10)? as usize;
+    "⁰¹²³⁴⁵⁶⁷⁸⁹".chars().nth(i)
+}
+
+/// `text` as an operand between `before` and `after` (the characters
+/// around it): in parentheses when it is negative after an operator, a sum
+/// (or, after `/` and `^`, any expression) after a product or quotient, or
+/// anything but a plain number before a power (`(−2)²`).
+fn parenthesized(text: &str, before: Option<char>, after: Option<char>) -> String {
+    let negative = text.starts_with('−');
+    let body = text.strip_prefix('−').unwrap_or(text);
+    let mut depth = 0;
+    let (mut sum, mut op) = (false, false);
+    for c in body.chars() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            '+' | '−' if depth == 0 => (sum, op) = (true, true),
+            '/' | '·' if depth == 0 => op = true,
+            _ => {}
+        }
+    }
+    let power = after.is_some_and(|c| "²³ⁿ^".contains(c)) && (negative || op || body.contains('√'));
+    let factor = (negative || op) && after.is_some_and(|c| "·×".contains(c));
+    let wrap = power
+        || factor
+        || match before {
+            None | Some('(' | '[' | ';' | ',' | '=' | '|') => false,
+            Some('+') => negative,
+            Some('−' | '·' | '×') => negative || sum,
+            Some('/' | '^') => negative || op || (body.contains('√') && !body.starts_with('√')),
+            Some(_) => negative,
+        };
+    if wrap {
+        format!("({text})")
+    } else {
+        text.to_string()
+    }
+}
+
 /// Whether a list holds maps only (and at least one): each is an answer of
 /// its own (one clipped segment), written as a numbered block.
 pub fn is_list_of_maps(items: &[Val]) -> bool {
@@ -495,6 +618,12 @@ pub fn step_json(s: &Step, lang: Lang) -> Value {
         "result": obj(&s.result, value_json),
         "exact": { "values": obj(&s.values, exact_json), "result": obj(&s.result, exact_json) },
     });
+    if !s.subs.is_empty() {
+        // notation with the numbers written the English way, like `exact`
+        let en = Style::new(4, true, Lang::En);
+        let subs = s.subs.iter().map(|(k, x)| (k.clone(), json!(en.subst(x))));
+        o["substituted"] = Value::Object(subs.collect());
+    }
     if let Some(sec) = &s.section {
         o["section"] = json!(w(sec));
     }

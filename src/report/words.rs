@@ -432,7 +432,6 @@ fn caption(m: &Msg, id: bool) -> Option<String> {
             "cos α = Lx·Nx + Ly·Ny + Lz·Nz,  then max(cos α, 0)",
             "cos α = Lx·Nx + Ly·Ny + Lz·Nz,  lalu max(cos α, 0)",
         ),
-        Msg::FNotAdded => p("not added", "tidak ditambahkan"),
         Msg::FCamMatrix => p(
             "Mcam = T(Pe) · [u v n]   (columns u, v, n, Pe)",
             "Mcam = T(Pe) · [u v n]   (kolom u, v, n, Pe)",
@@ -892,7 +891,6 @@ mod tests {
             Msg::PixelColour,
             Msg::FOutOfRange,
             Msg::FIncidence,
-            Msg::FNotAdded,
             Msg::FCamMatrix,
             Msg::FViewMatrix,
             Msg::FTrivial,
@@ -1194,7 +1192,6 @@ mod tests {
             | PixelColour
             | FOutOfRange
             | FIncidence
-            | FNotAdded
             | FCamMatrix
             | FViewMatrix
             | FTrivial

@@ -7,7 +7,7 @@ use crate::error::{Error, Result};
 use crate::msg::{Msg, PixelMsg, Trivial};
 use crate::num::vec::{self, V3};
 use crate::num::Scalar;
-use crate::stages::trace::{Step, Trace, Val};
+use crate::stages::trace::{Step, Subst, Trace, Val};
 
 /// The box xmin ≤ x ≤ xmax, ymin ≤ y ≤ ymax, zmin ≤ z ≤ zmax (boundary inside).
 #[derive(Clone, Debug, PartialEq)]
@@ -320,7 +320,9 @@ pub fn clip_segment<T: Scalar>(
         segment,
         intersections,
     };
-    tr.step(|| segment_step(&result.segment));
+    let mut ts: Vec<T> = kept.into_iter().map(|(t, _)| t).collect();
+    ts.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
+    tr.step(|| segment_step(&result.segment, &ts));
     result
 }
 
@@ -372,15 +374,18 @@ fn intersect_planes<T: Scalar>(
             point: q,
             code,
         };
-        tr.step(|| intersection_step(&i));
+        tr.step(|| intersection_step(&i, p0, p1));
         intersections.push(i);
     }
     intersections
 }
 
-/// The step of one intersection: t, P(t), its code, kept or not.
-fn intersection_step<T: Scalar>(i: &Intersection<T>) -> Step {
+/// The step of one intersection of P0P1: t, P(t), its code, kept or not.
+fn intersection_step<T: Scalar>(i: &Intersection<T>, p0: &V3<T>, p1: &V3<T>) -> Step {
     let (axis, _, plane, _) = PLANES[i.bit];
+    // t = (bound − P0ₐ)/(P1ₐ − P0ₐ); the point lies on the plane: its ₐ is the bound
+    let (bound, a0, a1) = (&i.point[axis], &p0[axis], &p1[axis]);
+    let t_values = [bound, a0, a1, a0].map(Val::num).to_vec();
     Step::new(
         Msg::Intersection(i.bit, plane.to_string()),
         format!(
@@ -390,7 +395,15 @@ fn intersection_step<T: Scalar>(i: &Intersection<T>) -> Step {
         ),
     )
     .val("t", Val::num(&i.t))
+    .sub("t", Subst::new("({} − {})/({} − {})", t_values))
     .res("P(t)", Val::vec3(&i.point))
+    .sub(
+        "P(t)",
+        Subst::new(
+            "{} + {}·{}",
+            vec![Val::vec3(p0), Val::num(&i.t), Val::vec3(&vec::sub(p1, p0))],
+        ),
+    )
     .res("code", Val::text(code_str(i.code)))
     .note(if i.code == 0 {
         Msg::Kept(true)
@@ -399,9 +412,14 @@ fn intersection_step<T: Scalar>(i: &Intersection<T>) -> Step {
     })
 }
 
-/// The step of the clipped segment (or of its rejection).
-fn segment_step<T: Scalar>(segment: &Option<(V3<T>, V3<T>)>) -> Step {
-    let s = Step::new(Msg::ClippedSegment, Msg::FSegment);
+/// The step of the clipped segment (or of its rejection), from the t of
+/// the points kept, smallest first.
+fn segment_step<T: Scalar>(segment: &Option<(V3<T>, V3<T>)>, kept: &[T]) -> Step {
+    let ts = match kept {
+        [] => Val::Null,
+        _ => Val::List(kept.iter().map(Val::num).collect()),
+    };
+    let s = Step::new(Msg::ClippedSegment, Msg::FSegment).val("t kept", ts);
     match segment {
         Some((a, z)) => s
             .res("from", Val::vec3(a))

@@ -14,7 +14,7 @@ use crate::num::{Expr, Scalar};
 use crate::stages::camera::{self, Camera};
 use crate::stages::clip::ClipBox;
 use crate::stages::projection::{self, Projection};
-use crate::stages::trace::{Compared, Comparison, Recorder, Report, Step, Trace, Val};
+use crate::stages::trace::{Compared, Comparison, Recorder, Report, Step, Subst, Trace, Val};
 use crate::stages::window;
 use crate::tutor::keys::{basis_result, clip_run, window_result};
 use serde_json::{json, Value};
@@ -165,13 +165,20 @@ fn project_part<T: Scalar>(
     if !(p.asks("project") || p.asks("viewport")) || eye_pts.is_empty() {
         return Ok(vec![]);
     }
-    let d: T = match (p.perspective.as_ref().and_then(|x| x.d.as_ref()), near) {
+    let given = p.perspective.as_ref().and_then(|x| x.d.as_ref());
+    let d: T = match (given, near) {
         (Some(d), _) => eval("perspective.d", d)?,
         (None, Some(n)) => -n.clone(),
         (None, None) => return Err(Error::why("perspective.near", ErrMsg::ProjectionNeedsNear)),
     };
     rec.section(Msg::SecProjection);
-    rec.step(|| Step::new(Msg::ProjPlane, Msg::FProjPlane).res("d", Val::num(&d)));
+    rec.step(|| match (given, near) {
+        (None, Some(n)) => Step::new(Msg::ProjPlane, Msg::FProjPlane)
+            .val("near", Val::num(n))
+            .res("d", Val::num(&d))
+            .sub("d", Subst::new("−{}", vec![Val::num(n)])),
+        _ => Step::new(Msg::ProjPlane, "z = d").val("d", Val::num(&d)),
+    });
     let proj = Projection::Plane { d };
     proj.validate().map_err(|e| e.in_field("perspective.d"))?;
     let mut projected = Vec::new();
