@@ -249,6 +249,10 @@ pub enum Msg {
     FLiangBarsky,
     /// Inside the window and between the near and far planes.
     FInside,
+    /// Direct3D's spot factor by the cones.
+    FSpot,
+    /// The clamp of the colour.
+    FClamp,
 
     // ---- notes ----
     /// Already a unit vector.

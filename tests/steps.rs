@@ -171,8 +171,11 @@ fn every_step_substitutes_its_values_before_its_result() {
                 .chain(result.iter().filter(|(n, _)| worked_result(n)));
             for (name, value) in worked_here {
                 // A value given (a unit vector, a zero term of a model
-                // without it, a spot factor decided by its cone) has
-                // nothing to substitute.
+                // without it, a spot factor decided by its cone, a
+                // vector divided by its norm 1) has nothing to substitute.
+                let norm_one = values
+                    .iter()
+                    .any(|(n, v)| n.starts_with('|') && v.as_f64() == Some(1.0));
                 let given = value.as_f64() == Some(0.0)
                     || value
                         .as_array()
@@ -181,6 +184,7 @@ fn every_step_substitutes_its_values_before_its_result() {
                     || s["note"]
                         .as_str()
                         .is_some_and(|n| n.contains("already a unit vector"))
+                    || (norm_one && ["u", "n", "L", "N", "V", "H"].contains(&name.as_str()))
                     || formula.is_empty();
                 if !given {
                     let sub = subs.and_then(|m| m.get(name));

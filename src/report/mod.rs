@@ -347,11 +347,11 @@ impl Report {
         }
         out.push_str(&format!("\n{}\n", style.tr("Answer", "Jawaban")));
         for (k, v) in &self.result {
-            let k = match self.command.as_str() {
+            let named = match self.command.as_str() {
                 "render" => render::label(k, style.lang),
-                _ => k.clone(),
+                _ => words::labels::answer_key(k, None, style.lang),
             };
-            push_answer(&mut out, style, "  ", &k, v);
+            push_answer(&mut out, style, "  ", (k, &named), v);
         }
         for n in self.all_notes(style) {
             out.push_str(&format!("\n{n}\n"));
@@ -453,7 +453,8 @@ fn comparison_text(c: &Comparison, lang: Lang) -> String {
     let mut lines = vec![format!("{head} {src}:")];
     let printed = t("printed", "tercetak");
     for r in &c.rows {
-        let (key, shown) = (&r.key, &r.printed);
+        let name = words::labels::answer_name(&r.key, lang);
+        let (key, shown) = (format!("{name} ({})", r.key), &r.printed);
         let verdict = style.w(&Msg::Printed(r.verdict()));
         let why = (r.why.as_ref())
             .map(|w| format!(": {}", style.w(w)))
@@ -489,33 +490,37 @@ fn compared_json(r: &Compared, lang: Lang) -> Value {
 
 /// Writes one answer, opening maps (e.g. points) into one line per entry
 /// and a list of maps (the segments of a clip) into one numbered block per
-/// map, `clip[1]:`, `clip[2]:`, …; an empty map is `none`.
-fn push_answer(out: &mut String, style: &Style, indent: &str, k: &str, v: &Val) {
+/// map, `clip[1]:`, `clip[2]:`, …; an empty map is `none`. `k` is the key
+/// and the words it is shown with (`answer_key`).
+fn push_answer(out: &mut String, style: &Style, indent: &str, k: (&str, &str), v: &Val) {
+    let (key, shown) = k;
     match v {
         Val::Map(kv) if kv.is_empty() => {
-            out.push_str(&style.named(indent, k, &Val::Null));
+            out.push_str(&style.named(indent, shown, &Val::Null));
             out.push('\n');
         }
         Val::List(items) if is_list_of_maps(items) => {
             for (i, item) in items.iter().enumerate() {
-                push_answer(out, style, indent, &format!("{k}[{}]", i + 1), item);
+                let numbered = format!("{shown}[{}]", i + 1);
+                push_answer(out, style, indent, (key, &numbered), item);
             }
         }
         Val::Map(kv) => {
-            out.push_str(&format!("{indent}{k}:\n"));
+            out.push_str(&format!("{indent}{shown}:\n"));
             for (k2, v2) in kv {
-                push_answer(out, style, &format!("{indent}  "), k2, v2);
+                let named = words::labels::answer_key(k2, Some(key), style.lang);
+                push_answer(out, style, &format!("{indent}  "), (k2, &named), v2);
             }
         }
         // A clipping status is a code (check compares it); the text
         // glosses it in the chosen language.
-        Val::Text(t) if k == "status" => {
+        Val::Text(t) if key == "status" => {
             let said = Val::said(crate::msg::Said::Status(t.clone()));
-            out.push_str(&style.named(indent, k, &said));
+            out.push_str(&style.named(indent, shown, &said));
             out.push('\n');
         }
         _ => {
-            out.push_str(&style.named(indent, k, v));
+            out.push_str(&style.named(indent, shown, v));
             out.push('\n');
         }
     }

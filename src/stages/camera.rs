@@ -169,7 +169,13 @@ fn u_step<T: Scalar>(vup: &V3<T>, n: &V3<T>, u: &V3<T>) -> Step {
         .val("|Vup × n|", Val::num(&len))
         .sub("|Vup × n|", Subst::norm(&vxn))
         .res("u", Val::vec3(u))
-        .sub("u", Subst::quotient(Val::vec3(&vxn), Val::num(&len)))
+        .sub(
+            "u",
+            match len == T::one() {
+                true => Subst::default(),
+                false => Subst::quotient(Val::vec3(&vxn), Val::num(&len)),
+            },
+        )
 }
 
 /// The orthonormality check shown after the basis: u·v, v·n, n·u, |u|, |v|,

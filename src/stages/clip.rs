@@ -152,13 +152,14 @@ pub fn outcode_clip<T: Scalar>(c: &nalgebra::Vector4<T>, name: &str, tr: &mut im
             let a = ["x", "y", "z"][axis];
             let (op, lim) = if is_max { (">", "w") } else { ("<", "−w") };
             let set = code & (1 << bit) != 0;
+            let bound = if is_max { c[3].clone() } else { -c[3].clone() };
+            let values = format!("{} {op} {}", short(&c[axis]), short(&bound));
             s = s.val(
                 format!("bit {} ({side})", bit + 1),
-                Val::text(format!(
-                    "{} — {a} {op} {lim}: {} {op} {} is {set}",
-                    u8::from(set),
-                    short(&c[axis]),
-                    short(&if is_max { c[3].clone() } else { -c[3].clone() }),
+                Val::said(crate::msg::Said::BitTest(
+                    set,
+                    format!("{a} {op} {lim}"),
+                    values,
                 )),
             );
         }

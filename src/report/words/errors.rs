@@ -604,7 +604,7 @@ fn problem(m: &ErrMsg, lang: Lang) -> String {
         ErrMsg::WindowNeeds => say(
             lang,
             "the window needs perspective.fovy, perspective.aspect and perspective.near",
-            "bidang pandang memerlukan perspective.fovy, perspective.aspect dan perspective.near",
+            "viewing window memerlukan perspective.fovy, perspective.aspect dan perspective.near",
         ),
         ErrMsg::LightsNeedShade => say(
             lang,

@@ -42,7 +42,7 @@ fn title(p: Panel) -> (&'static str, &'static str) {
         ),
         Panel::ProjectionSide => (
             "Side view (y–z): similar triangles",
-            "Tampak samping (y–z): segitiga sebangun",
+            "Tampak samping (y–z): kesamaan segitiga",
         ),
         Panel::ViewPlane => (
             "The images on the view plane (x–y)",
@@ -55,7 +55,7 @@ fn title(p: Panel) -> (&'static str, &'static str) {
         ),
         Panel::NearWindow => (
             "The window on the near plane",
-            "Bidang pandang pada bidang dekat",
+            "Viewing window pada near plane",
         ),
         Panel::Viewport => (
             "The viewport (pixels, origin bottom left)",
@@ -63,7 +63,7 @@ fn title(p: Panel) -> (&'static str, &'static str) {
         ),
         Panel::Clip => (
             "Clipping P0P1 against the box",
-            "Klipping P0P1 terhadap kotak",
+            "Clipping P0P1 terhadap view volume",
         ),
         Panel::Shade => (
             "Lighting vectors at the surface point",
@@ -84,7 +84,7 @@ fn desc(p: Panel) -> (&'static str, &'static str) {
         ),
         Panel::ProjectionSide => (
             "Side view: −z to the right, y up. The sky-blue line is the view plane; each projector (dotted) runs from the centre of projection through the point to its image. The black leg y of the point and the blue leg yp of the image make two similar triangles with the z axis.",
-            "Tampak samping: −z ke kanan, y ke atas. Garis biru muda adalah bidang proyeksi; tiap proyektor (bertitik) berjalan dari pusat proyeksi melalui titik ke bayangannya. Sisi hitam y dari titik dan sisi biru yp dari bayangan membentuk dua segitiga sebangun dengan sumbu z.",
+            "Tampak samping: −z ke kanan, y ke atas. Garis biru muda adalah bidang proyeksi; tiap proyektor (bertitik) berjalan dari pusat proyeksi melalui titik ke bayangannya. Sisi hitam y dari titik dan sisi biru yp dari bayangan membentuk dua segitiga yang sebentuk dengan sumbu z (kesamaan segitiga).",
         ),
         Panel::ViewPlane => (
             "The view plane seen from the front: xp to the right, yp up; each blue dot is a point's image.",
@@ -92,15 +92,15 @@ fn desc(p: Panel) -> (&'static str, &'static str) {
         ),
         Panel::Frustum => (
             "Cabinet oblique projection (x − z/(2√2), y − z/(2√2)) of eye space: the eye at the origin looking along −z. Blue rectangle: the near window (left..right × bottom..top at z = −near); sky-blue rectangle: the far window; black lines: the edges of the view volume. When far is not given or more than 10 times near, the far window is not drawn to scale: the edges run on, dashed vermillion, to twice near.",
-            "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)) dari ruang kamera: mata di titik asal memandang ke arah −z. Persegi biru: bidang pandang dekat (left..right × bottom..top di z = −near); persegi biru muda: bidang pandang jauh; garis hitam: rusuk view volume. Bila far tidak diberikan atau lebih dari 10 kali near, bidang pandang jauh tidak digambar sesuai skala: rusuknya berlanjut putus-putus merah jingga sampai dua kali near.",
+            "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)) dari ruang kamera: mata di titik asal memandang ke arah −z. Persegi biru: viewing window pada near plane (left..right × bottom..top di z = −near); persegi biru muda: viewing window pada far plane; garis hitam: rusuk view volume. Bila far tidak diberikan atau lebih dari 10 kali near, viewing window pada far plane tidak digambar sesuai skala: rusuknya berlanjut putus-putus merah jingga sampai dua kali near.",
         ),
         Panel::WindowSide => (
             "Side view: −z to the right, y up. The eye at the origin; the purple arc is the angle fovy; the blue line is the near window from bottom to top, at distance near.",
-            "Tampak samping: −z ke kanan, y ke atas. Mata di titik asal; busur ungu adalah sudut fovy; garis biru adalah bidang pandang dekat dari bottom sampai top, pada jarak near.",
+            "Tampak samping: −z ke kanan, y ke atas. Mata di titik asal; busur ungu adalah sudut fovy; garis biru adalah viewing window pada near plane dari bottom sampai top, pada jarak near.",
         ),
         Panel::NearWindow => (
             "The window on the near plane: x to the right, y up; the blue dots are the projected points.",
-            "Bidang pandang pada bidang dekat: x ke kanan, y ke atas; titik biru adalah titik-titik hasil proyeksi.",
+            "Viewing window pada near plane: x ke kanan, y ke atas; titik biru adalah titik-titik hasil proyeksi.",
         ),
         Panel::Viewport => (
             "The viewport W × H in pixels, origin at the bottom left; each blue dot is a point at its pixel position.",
@@ -112,7 +112,7 @@ fn desc(p: Panel) -> (&'static str, &'static str) {
         ),
         Panel::Shade => (
             "Cabinet oblique projection (x − z/(2√2), y − z/(2√2)) of the unit vectors at the surface point, all drawn with one length: the surface patch (black) perpendicular to N (black arrow), L toward the light (sky blue; L2, L3, … for further lights), R the reflection (purple, dash-dot), V toward the viewer (green), H the half vector for Blinn (orange, dotted). Arcs mark the angle α between L and N and the angle β between R and V.",
-            "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)) dari vektor satuan di titik permukaan, semua sama panjang: potongan permukaan (hitam) tegak lurus N (panah hitam), L ke arah sumber cahaya (biru muda; L2, L3, … untuk sumber cahaya berikutnya), R vektor pantul (ungu, garis-titik), V ke arah pengamat (hijau), H vektor tengah untuk Blinn (jingga, bertitik). Busur menandai sudut α antara L dan N dan sudut β antara R dan V.",
+            "Proyeksi oblik kabinet (x − z/(2√2), y − z/(2√2)) dari vektor satuan di titik permukaan, semua sama panjang: potongan permukaan (hitam) tegak lurus N (panah hitam), L ke arah sumber cahaya (biru muda; L2, L3, … untuk sumber cahaya berikutnya), R vektor pantulan (ungu, garis-titik), V ke arah pengamat (hijau), H vektor setengah jalan untuk Blinn (jingga, bertitik). Busur menandai sudut α antara L dan N dan sudut β antara R dan V.",
         ),
     }
 }
@@ -123,7 +123,7 @@ fn word(w: FigWord) -> (&'static str, &'static str) {
         FigWord::Eye => ("eye", "mata"),
         FigWord::NotToScale => (
             "far window not to scale",
-            "bidang pandang jauh tidak sesuai skala",
+            "viewing window pada far plane tidak sesuai skala",
         ),
         FigWord::Surface => ("surface", "permukaan"),
         FigWord::CameraAxes => (

@@ -391,21 +391,34 @@ pub fn spot_factor<T: Scalar>(
         } else {
             SpotZone::Penumbra
         };
-        let s = Step::new(
-            label(at, LightPart::Spot),
-            "ρ = (−L)·axis;  Spot = 1 if ρ ≥ cos(θ/2), 0 if ρ ≤ cos(φ/2), else ((ρ − cos(φ/2))/(cos(θ/2) − cos(φ/2)))^falloff",
-        )
-        .val("ρ", Val::num(&rho))
-        .sub("ρ", Subst::dot(l, axis).within("−(", ")"))
-        .val("cos(θ/2)", Val::num(&cos_t))
-        .sub("cos(θ/2)", Subst::new("cos({}°)", vec![Val::num(&(theta.clone() / T::from_i64(2)))]))
-        .val("cos(φ/2)", Val::num(&cos_p))
-        .sub("cos(φ/2)", Subst::new("cos({}°)", vec![Val::num(&(phi.clone() / T::from_i64(2)))]))
-        .val("falloff", Val::num(falloff))
-        .res("Spot", Val::num(&f));
+        let s = Step::new(label(at, LightPart::Spot), Msg::FSpot)
+            .val("ρ", Val::num(&rho))
+            .sub("ρ", Subst::dot(l, axis).within("−(", ")"))
+            .val("cos(θ/2)", Val::num(&cos_t))
+            .sub(
+                "cos(θ/2)",
+                Subst::new(
+                    "cos({}°)",
+                    vec![Val::num(&(theta.clone() / T::from_i64(2)))],
+                ),
+            )
+            .val("cos(φ/2)", Val::num(&cos_p))
+            .sub(
+                "cos(φ/2)",
+                Subst::new("cos({}°)", vec![Val::num(&(phi.clone() / T::from_i64(2)))]),
+            )
+            .val("falloff", Val::num(falloff))
+            .res("Spot", Val::num(&f));
         let s = match zone {
             SpotZone::Penumbra => s.sub(
-                "Spot", Subst::new("(({} − {})/({} − {}))^{}", [&rho, &cos_p, &cos_t, &cos_p, falloff].map(Val::num).to_vec())),
+                "Spot",
+                Subst::new(
+                    "(({} − {})/({} − {}))^{}",
+                    [&rho, &cos_p, &cos_t, &cos_p, falloff]
+                        .map(Val::num)
+                        .to_vec(),
+                ),
+            ),
             _ => s,
         };
         s.note(Msg::SpotIn(zone))

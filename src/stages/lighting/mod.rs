@@ -437,7 +437,7 @@ pub fn unit<T: Scalar>(name: &str, field: &str, v: &V3<T>, tr: &mut impl Trace) 
         .sub(
             name,
             match len == T::one() {
-                true => Subst::new("", vec![]),
+                true => Subst::default(),
                 false => Subst::quotient(Val::vec3(v), Val::num(&len)),
             },
         );
@@ -771,7 +771,7 @@ fn sum_step<T: Scalar>(terms: [&Rgb<T>; 4], unclamped: &Rgb<T>) -> Step {
 /// The step of the clamp to [0, 1].
 fn clamp_step<T: Scalar>(unclamped: &Rgb<T>, color: &Rgb<T>) -> Step {
     let clipped = unclamped.iter().any(|x| *x > T::one() || *x < T::zero());
-    Step::new(Msg::Clamp, "color = min(max(C, 0), 1)")
+    Step::new(Msg::Clamp, Msg::FClamp)
         .val("C", rgb_val(unclamped))
         .res("color", rgb_val(color))
         .note(if clipped {
