@@ -152,6 +152,10 @@ pub fn answer_name(key: &str, lang: Lang) -> String {
         ["view", "points", n] => format!("{n}'"),
         ["project", "points", n] => format!("{n}''"),
         ["viewport", "pixels", n] => label(&format!("{n} pixel"), lang),
+        ["window", k] => match k.strip_prefix("far_") {
+            Some(edge) => format!("{edge} (far plane)"),
+            None => k.to_string(),
+        },
         ["clip", "segment"] => t("clipped segment", "segmen garis hasil clipping"),
         ["clip", "intersections", pl, what] => {
             let what = match what {
@@ -265,6 +269,7 @@ mod tests {
         assert_eq!(en("viewport.pixels.A"), "A pixel");
         assert_eq!(id("viewport.pixels.A"), "piksel A");
         assert_eq!(id("window.top"), "top");
+        assert_eq!(id("window.far_top"), "top (far plane)");
         assert_eq!(id("clip.intersections.left.point"), "P(t) (kiri)");
         assert_eq!(
             id("clip[2].intersections.top.kept"),
