@@ -341,10 +341,10 @@ pub enum Msg {
     EmptyAnswer,
     /// No answer given.
     NoAnswer,
+    /// An answer longer than the most read: its length, the most.
+    AnswerTooLong(usize, usize),
     /// The answer cannot be read (the reader's reason).
     Unreadable(NumErr),
-    /// A component that is not a number (the text; the values expected).
-    NotANumber(String, usize),
     /// Exactly equal.
     Exact,
     /// Rounded to n significant figures.
@@ -355,8 +355,12 @@ pub enum Msg {
     SigCoarse(u32, u32),
     /// Within this percentage.
     WithinPct(String),
-    /// The shape of the answer is not the one asked (practice).
-    NotShapeAsked,
+    /// Within half a pixel (a pixel position).
+    WithinPixel,
+    /// Not an outcode (the text as written).
+    NotAnOutcode(String),
+    /// Not a clipping status (the text as written).
+    NotAStatus(String),
     /// Right given the student's earlier answers (follow-through).
     FollowThrough,
     /// Notes of components: (label, note), joined.
@@ -431,6 +435,8 @@ pub enum Msg {
     UpParallel(f64),
     /// A point behind the centre of projection.
     BehindWarn(String),
+    /// Exact values that grew past this many terms were left approximate.
+    ExactTooLarge(usize),
 }
 
 impl Default for Msg {

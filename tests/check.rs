@@ -509,3 +509,456 @@ fn the_specs_check_csv_header_has_the_follow_through_column() {
     assert!(header.contains(",follow_through,"), "{header}");
     assert!(spec.contains(&format!("`{header}`")), "{header}");
 }
+
+/// The triangle example by hand (problems/text-triangle.toml): Pe − Pr =
+/// (1, 0, 1), |Pe − Pr| = √2, n = (1/√2, 0, 1/√2); Vup × n = (1/√2, 0,
+/// −1/√2) of length 1, so u is that; v = n × u = (0, 1, 0). A − Pe =
+/// (−3, −1, −3): A′ = (0, −1, −6/√2); B − Pe = (−2, −1, −3): B′ = (1/√2,
+/// −1, −5/√2); C − Pe = (−3, −1, −2): C′ = (−1/√2, −1, −5/√2). d = −0.1:
+/// A″ = (0, −√2/60, −1/10), B″ = (1/50, −√2/50, −1/10), C″ = (−1/50,
+/// −√2/50, −1/10). top = 0.1·tan 22.5° = (√2 − 1)/10 ≈ 0.04142, right =
+/// 2·top ≈ 0.08284, height = 2·top, width = 2·right ≈ 0.1657. Pixels
+/// (200 × 100): A = (100, (100 − 25√2)/3 ≈ 21.55), B = (110 + 10√2 ≈
+/// 124.14, 30 − 10√2 ≈ 15.86), C = (90 − 10√2 ≈ 75.86, 15.86); measured
+/// from the top edge their py would be 78.45, 84.14, 84.14.
+const TRIANGLE_READING: &str = r#"
+view.n = "(1/sqrt(2), 0, 1/sqrt(2))"
+view.u = "1/sqrt(2), 0, -1/sqrt(2)"
+view.v = "[0, 1, 0]"
+view.matrix = "1/sqrt(2), 0, −1/√2, 0; 0, 1, 0, -1; (1/2)sqrt(2), 0, √2/2, -3*sqrt(2); 0, 0, 0, 1"
+view.points.A = "0, −1, −6/√2"
+view.points.B = "(√2/2; −1; −5√2/2)"
+view.points.C = "(-0,7071; -1; -3,536)"
+project.points.A = "0, -sqrt(2)/60"
+project.points.B = "(1/50, -sqrt(2)/50, -1/10)"
+project.points.C = "-0,02; -0,02828"
+window.top = "0,04142"
+window.bottom = "(1-√2)/10"
+window.left = "-2(sqrt(2)-1)/10"
+window.right = "0.08284"
+window.height = "(√2−1)/5"
+window.width = "2(√2 − 1)/5"
+viewport.pixels.A = "(100; 21,55)"
+viewport.pixels.B = "110 + 10√2, 30 - 10sqrt(2)"
+viewport.pixels.C = ["90 - 10*sqrt(2)", "15.86"]
+"#;
+
+#[test]
+fn every_written_form_of_the_texts_answers_is_read() {
+    // TOML arrays, (a, b, c), [a, b, c], bare a, b, c; a last part ending
+    // in sqrt(2) or √2; unicode √ and −; implicit products; decimal commas
+    // with ;; the view matrix by rows: all of the triangle example right
+    let f = answers_file("reading", TRIANGLE_READING);
+    let v = json_ok(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        f.to_str().unwrap(),
+    ]);
+    for a in v["answers"].as_array().unwrap() {
+        assert_eq!(a["verdict"], "correct", "{a}");
+    }
+    assert_eq!(v["score"]["points"], 19.0);
+    // the clipping example: outcodes with a space, the status in Indonesian
+    let f = answers_file(
+        "reading-clip",
+        "clip.code0 = \"000 010\"\nclip.code1 = \"1001\"\nclip.status = \"DI-CLIP\"\n\
+         clip.segment = \"(3, 8/3, 11/6); (1, 4, 3/2)\"\n",
+    );
+    let v = json_ok(&[
+        "check",
+        "problems/text-clip.toml",
+        "--answers",
+        f.to_str().unwrap(),
+    ]);
+    for a in v["answers"].as_array().unwrap() {
+        assert_eq!(a["verdict"], "correct", "{a}");
+    }
+    for (status, ok) in [
+        ("ditolak", false),
+        ("Clipped (di-clip)", true),
+        ("diterima", false),
+    ] {
+        let f = answers_file("status", &format!("clip.status = \"{status}\"\n"));
+        let v = json_ok(&[
+            "check",
+            "problems/text-clip.toml",
+            "--answers",
+            f.to_str().unwrap(),
+        ]);
+        assert_eq!(
+            answer(&v, "clip.status")["verdict"] == "correct",
+            ok,
+            "{status}"
+        );
+    }
+}
+
+#[test]
+fn an_unreadable_answer_names_the_part_and_the_column_in_both_languages() {
+    // `1/sqrt(2, 0, 1`: the x part lacks its `)`, at column 10 of the answer
+    let f = answers_file("unreadable", "view.n = \"(1/sqrt(2, 0, 1)\"\n");
+    let args = [
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        f.to_str().unwrap(),
+    ];
+    let v = json_ok(&args);
+    let n = answer(&v, "view.n");
+    assert_eq!(n["verdict"], "unparseable");
+    assert!(n["note"].as_str().unwrap().starts_with("x: "), "{n}");
+    assert!(n["note"].as_str().unwrap().contains("column 10"), "{n}");
+    let mut id = vec!["--lang", "id"];
+    id.extend(args);
+    let v = json_ok(&id);
+    assert!(answer(&v, "view.n")["note"]
+        .as_str()
+        .unwrap()
+        .contains("kolom 10"));
+}
+
+#[test]
+fn a_mistakes_value_is_wrong_and_named_never_rounded() {
+    // n = (1, 0, 1) is Pe − Pr not divided by √2: 1 keeps no figure of
+    // 0.7071, and it is the catalog's value
+    let f = answers_file("unnormalized", "view.n = \"1, 0, 1\"\n");
+    let v = json_ok(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        f.to_str().unwrap(),
+    ]);
+    let n = answer(&v, "view.n");
+    assert_eq!(n["verdict"], "wrong", "{n}");
+    assert_eq!(codes(n), ["n_not_normalized"]);
+    // the text's Phong point: N = (0, 1, 1) not divided by √2 gives
+    // cos α = L·N = (0, 0, 1)·(0, 1, 1) = 1 instead of 1/√2
+    let f = answers_file("cos-alpha", "shade.cos_alpha = \"1\"\n");
+    let v = json_ok(&[
+        "check",
+        "problems/shade-phong.toml",
+        "--answers",
+        f.to_str().unwrap(),
+    ]);
+    let c = answer(&v, "shade.cos_alpha");
+    assert_eq!(c["verdict"], "wrong", "{c}");
+    assert_eq!(codes(c), ["normal_not_normalized"]);
+}
+
+/// The triangle example right up to the window, then `pixels`.
+fn triangle_with_pixels(name: &str, pixels: &str) -> PathBuf {
+    let head: String = TRIANGLE_READING
+        .lines()
+        .filter(|l| !l.starts_with("viewport"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    answers_file(name, &(head + pixels))
+}
+
+#[test]
+fn pixels_from_the_top_name_that_mistake_and_nothing_else() {
+    // the student's n, u and projected points are right: n_reversed,
+    // cross_order and d_sign would have changed them
+    let f = triangle_with_pixels(
+        "from-top",
+        "viewport.pixels.A = \"100, 78.45\"\nviewport.pixels.B = \"124.14, 84.14\"\n\
+         viewport.pixels.C = \"75.86, 84.14\"\n",
+    );
+    let v = json_ok(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        f.to_str().unwrap(),
+    ]);
+    for k in [
+        "viewport.pixels.A",
+        "viewport.pixels.B",
+        "viewport.pixels.C",
+    ] {
+        assert_eq!(codes(answer(&v, k)), ["pixel_y_from_top"], "{k}");
+    }
+    let d = v["diagnosis"].as_array().unwrap();
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert_eq!(d[0]["code"], "pixel_y_from_top");
+    assert!(d[0]["also"].as_array().unwrap().is_empty(), "{d:?}");
+}
+
+#[test]
+fn the_sign_of_d_alone_is_not_blamed_on_the_cross_product() {
+    // d = +0.1: A″ = (0, √2/60, 1/10), B″ = (−1/50, √2/50, 1/10), C″ =
+    // (1/50, √2/50, 1/10); u is right, so u = n × Vup cannot be the mistake
+    let f = answers_file(
+        "d-sign",
+        "view.u = \"1/sqrt(2), 0, -1/sqrt(2)\"\nview.v = \"0, 1, 0\"\n\
+         project.points.A = \"0, sqrt(2)/60, 0.1\"\nproject.points.B = \"-1/50, sqrt(2)/50, 0.1\"\n\
+         project.points.C = \"1/50, sqrt(2)/50, 0.1\"\n",
+    );
+    let v = json_ok(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        f.to_str().unwrap(),
+    ]);
+    let d = v["diagnosis"].as_array().unwrap();
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert_eq!(d[0]["code"], "d_sign");
+    assert_eq!(d[0]["keys"].as_array().unwrap().len(), 3);
+}
+
+#[test]
+fn a_wrong_answer_no_mistake_explains_is_said_plainly() {
+    // top = 0.05 is 21% off 0.0414 and no mistake of the catalog gives it
+    let f = answers_file("plain", "window.top = \"0.05\"\n");
+    let out = grafika()
+        .args(["check", "problems/text-triangle.toml", "--answers"])
+        .arg(&f)
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.contains("No known mistake explains window.top"),
+        "{text}"
+    );
+    assert!(!text.contains("Diagnosis:"), "{text}");
+}
+
+#[test]
+fn the_new_mistakes_on_the_texts_examples() {
+    let mark = |problem: &str, name: &str, text: &str| {
+        let f = answers_file(name, text);
+        json_ok(&["check", problem, "--answers", f.to_str().unwrap()])
+    };
+    // Peye not subtracted: B′ = (u·B, v·B, n·B) = (1/√2, 0, 1/√2),
+    // C′ = (u·C, v·C, n·C) = (−1/√2, 0, 1/√2)
+    let v = mark(
+        "problems/text-triangle.toml",
+        "no-translation",
+        "view.points.B = \"1/sqrt(2), 0, 1/sqrt(2)\"\nview.points.C = \"-0.7071, 0, 0.7071\"\n",
+    );
+    for k in ["view.points.B", "view.points.C"] {
+        assert_eq!(codes(answer(&v, k)), ["eye_no_translation"], "{k}");
+    }
+    // right = top/aspect = (√2 − 1)/20 ≈ 0.02071, width = (√2 − 1)/10
+    let v = mark(
+        "problems/text-triangle.toml",
+        "aspect",
+        "window.right = \"0.0207\"\nwindow.width = \"(sqrt(2)-1)/10\"\n",
+    );
+    for k in ["window.right", "window.width"] {
+        assert!(
+            codes(answer(&v, k)).contains(&"aspect_inverted".to_string()),
+            "{k}"
+        );
+    }
+    // L = (1, 0, 1) not divided by √2, N = V = (0, 0, 1): cos α = 1,
+    // R = 2N·1 − L = (−1, 0, 1), cos β = 1, specular = 0.7·1⁴ = 0.7
+    // (right: cos α = 1/√2, R = (−1/√2, 0, 1/√2), specular 0.7/4 = 0.175)
+    let v = mark(
+        "problems/shade-specular.toml",
+        "light",
+        "shade.cos_alpha = \"1\"\nshade.R = \"-1, 0, 1\"\nshade.cos_beta = \"1\"\n\
+         shade.specular = \"0.7, 0.7, 0.7\"\n",
+    );
+    for k in [
+        "shade.cos_alpha",
+        "shade.R",
+        "shade.cos_beta",
+        "shade.specular",
+    ] {
+        assert_eq!(codes(answer(&v, k)), ["light_not_normalized"], "{k}");
+    }
+    // the text's misprints copied: the erratum is named, with its reason
+    let v = mark(
+        "problems/text-clip.toml",
+        "misprint",
+        "clip.intersections.right.point = \"3, 20/6, 11/6\"\n\
+         clip.intersections.top.point = \"(2, 4, 3/2)\"\n",
+    );
+    let r = answer(&v, "clip.intersections.right.point");
+    assert_eq!(codes(r), ["copied_misprint"]);
+    assert!(r["why"].as_str().unwrap().contains("not 20/6"), "{r}");
+    assert_eq!(
+        codes(answer(&v, "clip.intersections.top.point")),
+        ["copied_misprint"]
+    );
+    // h = 0.041 as the height: the text's misprint, and the half extent
+    let v = mark(
+        "problems/text-triangle.toml",
+        "h",
+        "window.height = \"0.041\"\n",
+    );
+    let h = answer(&v, "window.height");
+    let c = codes(h);
+    assert!(
+        c.contains(&"copied_misprint".into()) && c.contains(&"height_is_half_extent".into()),
+        "{h}"
+    );
+    assert!(h["why"].as_str().unwrap().contains("half-height"), "{h}");
+}
+
+#[test]
+fn a_wrong_basis_is_carried_through_every_later_key_and_a_slip_after_it_is_not() {
+    // u = n × Vup = (−1/√2, 0, 1/√2): v = n × u = (0, −1, 0); every x′, y′
+    // flips: A′ = (0, 1, −6/√2), B′ = (−1/√2, 1, −5/√2), C′ = (1/√2, 1,
+    // −5/√2); so do xp, yp: A″ = (0, √2/60), B″ = (−1/50, √2/50), C″ =
+    // (1/50, √2/50); and the pixels mirror: A = (100, 78.45), B = (75.86,
+    // 84.14), C = (124.14, 84.14). C is given as (124.14, 15.86): wrong,
+    // even given the student's own C″.
+    let f = answers_file(
+        "carried",
+        "view.n = \"√2/2, 0, √2/2\"\nview.u = \"-√2/2, 0, √2/2\"\nview.v = \"0, -1, 0\"\n\
+         view.points.A = \"0, 1, -3√2\"\nview.points.B = \"-1/√2, 1, -5/√2\"\n\
+         view.points.C = \"1/√2, 1, -5/√2\"\nproject.points.A = \"0, √2/60\"\n\
+         project.points.B = \"-0.02, 0.02828\"\nproject.points.C = \"0.02, 0.02828\"\n\
+         window.top = \"0.04142\"\nwindow.bottom = \"-0.04142\"\nwindow.left = \"-0.08284\"\n\
+         window.right = \"0.08284\"\nwindow.height = \"0.08284\"\nwindow.width = \"0.1657\"\n\
+         viewport.pixels.A = \"100, 78.45\"\nviewport.pixels.B = \"75.86, 84.14\"\n\
+         viewport.pixels.C = \"124.14, 15.86\"\n",
+    );
+    let args = [
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        f.to_str().unwrap(),
+    ];
+    let mut ft = args.to_vec();
+    ft.push("--follow-through");
+    let v = json_ok(&ft);
+    for k in [
+        "view.v",
+        "view.points.A",
+        "view.points.B",
+        "view.points.C",
+        "project.points.A",
+        "project.points.B",
+        "project.points.C",
+        "viewport.pixels.A",
+        "viewport.pixels.B",
+    ] {
+        assert_eq!(answer(&v, k)["code"], "correct.follow_through", "{k}");
+    }
+    assert_eq!(answer(&v, "view.u")["verdict"], "wrong");
+    assert_eq!(codes(answer(&v, "view.u")), ["cross_order"]);
+    assert_eq!(answer(&v, "viewport.pixels.C")["verdict"], "wrong");
+    assert_eq!(v["counts"]["follow_through"], 9);
+    // without the flag, cross_order explains them all (but the slip)
+    let v = json_ok(&args);
+    let d = v["diagnosis"].as_array().unwrap();
+    assert_eq!(d[0]["code"], "cross_order");
+    assert_eq!(d[0]["keys"].as_array().unwrap().len(), 10);
+}
+
+#[test]
+fn the_new_mistakes_reach_the_quiz_feedback() {
+    // generated problems have no errata, so copied_misprint never applies
+    // there; each of the others names itself in a generated Moodle quiz
+    let dir = std::env::temp_dir().join(format!("grafika-check-{}-quiz", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = grafika()
+        .args([
+            "generate",
+            "--topic",
+            "pipeline,shade",
+            "--count",
+            "6",
+            "--variants",
+            "3",
+            "--seed",
+            "7",
+            "--difficulty",
+            "hard",
+            "--format",
+            "moodle",
+            "--out",
+        ])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let xml = std::fs::read_to_string(dir.join("quiz.xml")).unwrap();
+    for words in [
+        "measured from the top edge (H − py)",
+        "Peye not subtracted",
+        "top / aspect instead of aspect·top",
+        "L not divided by |L|",
+        "N not divided by |N|",
+    ] {
+        assert!(xml.contains(words), "no feedback with {words}");
+    }
+}
+
+#[test]
+fn mistakes_the_independent_check_found_unnamed() {
+    let mark = |problem: &str, name: &str, text: &str| {
+        let f = answers_file(name, text);
+        json_ok(&["check", problem, "--answers", f.to_str().unwrap()])
+    };
+    // n = Pe − Pr = (1, 0, 1) not normalized: v = n × u = (0, √2, 0); the
+    // view matrix's rows are u, v, n with last column −(u·Pe, v·Pe, n·Pe) =
+    // −(3/√2 − 3/√2, √2, 3 + 3) = (0, −√2, −6): the translation scales too
+    let v = mark(
+        "problems/text-triangle.toml",
+        "matrix-n",
+        "view.matrix = \"√2/2, 0, −√2/2, 0; 0, √2, 0, −√2; 1, 0, 1, −6; 0, 0, 0, 1\"\n",
+    );
+    assert_eq!(codes(answer(&v, "view.matrix")), ["n_not_normalized"]);
+    // Peye not subtracted: A = (0, 0, 0) gives A′ = (0, 0, 0), though its
+    // projection is then undefined
+    let v = mark(
+        "problems/text-triangle.toml",
+        "a-origin",
+        "view.points.A = \"0, 0, 0\"\n",
+    );
+    assert_eq!(codes(answer(&v, "view.points.A")), ["eye_no_translation"]);
+    // the left intersection (0, 14/3, 4/3) is above y = 4: 001000, and
+    // written in the wrong order 000100
+    let v = mark(
+        "problems/text-clip.toml",
+        "code-reversed",
+        "clip.intersections.left.code = \"000100\"\n",
+    );
+    assert_eq!(
+        codes(answer(&v, "clip.intersections.left.code")),
+        ["outcode_reversed"]
+    );
+}
+
+#[test]
+fn one_misprint_copied_is_named_though_the_others_are_not() {
+    // Everything right but the width, copied from the text's printed
+    // W = 0.082 (its erratum: the half-width, right = aspect·top ≈ 0.0828;
+    // the width is 2·right ≈ 0.1657). The text's other misprints (h =
+    // 0.041 as the height, 0.0067 in B″ and C″, right = 0.082) were not
+    // copied: the height, B″, C″ and right are right, so the misprint the
+    // student copied must be named on its own.
+    let f = answers_file(
+        "one-misprint",
+        "view.n = \"√2/2, 0, √2/2\"\nview.u = \"√2/2, 0, −√2/2\"\nview.v = \"0, 1, 0\"\n\
+         view.points.A = \"0, −1, −3√2\"\nview.points.B = \"√2/2, −1, −5√2/2\"\n\
+         view.points.C = \"−√2/2, −1, −5√2/2\"\nproject.points.A = \"0, −√2/60\"\n\
+         project.points.B = \"1/50, −√2/50\"\nproject.points.C = \"−1/50, −√2/50\"\n\
+         window.top = \"(√2−1)/10\"\nwindow.bottom = \"(1−√2)/10\"\n\
+         window.left = \"(1−√2)/5\"\nwindow.right = \"(√2−1)/5\"\n\
+         window.height = \"(√2−1)/5\"\nwindow.width = \"0.082\"\n\
+         viewport.pixels.A = \"100, (100−25√2)/3\"\nviewport.pixels.B = \"110+10√2, 30−10√2\"\n\
+         viewport.pixels.C = \"90−10√2, 30−10√2\"\n",
+    );
+    let v = json_ok(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        f.to_str().unwrap(),
+    ]);
+    assert_eq!(v["score"]["points"], 17.0, "{v}");
+    let w = answer(&v, "window.width");
+    assert_eq!(codes(w), ["copied_misprint"], "{w}");
+    assert!(w["why"].as_str().unwrap().contains("half-width"), "{w}");
+    let d = v["diagnosis"].as_array().unwrap();
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert_eq!(d[0]["keys"], serde_json::json!(["window.width"]));
+}

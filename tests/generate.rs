@@ -71,8 +71,9 @@ fn the_same_seed_gives_the_same_files_byte_for_byte() {
             .success();
     }
     let (fa, fb, fc) = (files(&a), files(&b), files(&c));
-    // 2 variants × (2 problems + 2 keys + questions + key)
-    assert_eq!(fa.len(), 12);
+    // 2 variants × (2 problems + 2 keys + questions + key), and the list
+    // of generate's own files (.grafika-generated)
+    assert_eq!(fa.len(), 13);
     assert_eq!(fa, fb);
     assert_ne!(fa, fc);
     // the variants differ from each other
@@ -196,15 +197,29 @@ fn a_planted_mistake_is_caught_and_named() {
     }
 }
 
-/// Numbers differ by more than a relative 1e-6.
-fn differs(a: &Val, b: &Val) -> bool {
-    match (a, b) {
-        (Val::Num(x), Val::Num(y)) => (x.value - y.value).abs() > 1e-6 * x.value.abs().max(1.0),
-        (Val::List(x), Val::List(y)) => {
-            x.len() != y.len() || x.iter().zip(y).any(|(p, q)| differs(p, q))
-        }
-        _ => a != b,
+/// The numbers of a value.
+fn leaves(v: &Val) -> Vec<f64> {
+    match v {
+        Val::Num(x) => vec![x.value],
+        Val::List(items) => items.iter().flat_map(leaves).collect(),
+        _ => vec![],
     }
+}
+
+/// Whether a mistaken value can be told from the right one at the default
+/// tolerance (0.1 %, a zero by its answer's largest magnitude): what a
+/// marker can see. Other values are planted, and differ, as right ones.
+fn differs(a: &Val, b: &Val) -> bool {
+    let (x, y) = (leaves(a), leaves(b));
+    if x.is_empty() || x.len() != y.len() {
+        return a != b;
+    }
+    let scale = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let t = |x: f64, s: f64| check::tolerance::for_key("", x, s, 1e-3);
+    let (sx, sy) = (scale(&x), scale(&y));
+    x.iter()
+        .zip(&y)
+        .any(|(p, q)| check::tolerance::apart(*p, t(*p, sx), *q, t(*q, sy)))
 }
 
 #[test]
@@ -254,6 +269,22 @@ fn easy_cameras_have_rational_axes() {
 
 #[test]
 fn latex_keys_are_ascii() {
+    // Every topic in both languages: the shading steps carry Σ and (N·H)ⁿ.
+    let all = "basis,view,project,window,clip,shade,pipeline";
+    for lang in ["en", "id"] {
+        let dir = tmp(&format!("tex-{lang}"));
+        grafika()
+            .args(["generate", "--topic", all, "--count", "7", "--seed", "3"])
+            .args(["--lang", lang, "--format", "latex"])
+            .args(["--out", dir.to_str().unwrap()])
+            .assert()
+            .success();
+        for f in ["questions.tex", "key.tex"] {
+            let t = std::fs::read_to_string(dir.join(f)).unwrap();
+            assert!(t.is_ascii(), "{lang} {f} has non-ASCII characters");
+            assert!(!t.contains("[U+"), "{lang} {f} has an unmapped symbol");
+        }
+    }
     let dir = tmp("tex");
     grafika()
         .args([
@@ -262,11 +293,6 @@ fn latex_keys_are_ascii() {
         .args(["--format", "latex", "--out", dir.to_str().unwrap()])
         .assert()
         .success();
-    for f in ["questions.tex", "key.tex"] {
-        let t = std::fs::read_to_string(dir.join(f)).unwrap();
-        assert!(t.is_ascii(), "{f} has non-ASCII characters");
-        assert!(!t.contains("[U+"), "{f} has an unmapped symbol");
-    }
     let key = std::fs::read_to_string(dir.join("key.tex")).unwrap();
     assert!(key.contains("\\sqrt{"), "exact forms are set with \\sqrt");
     // tests/tools.rs compiles a key with pdflatex (or says it was skipped).

@@ -342,19 +342,23 @@ fn a_too_coarse_answer_earns_half() {
 
 /// The text's clipping example: P(t) = (4 − 6t, 2 + 4t, 2 − t) (see
 /// problems/text-clip.toml): codes 000010 and 001001; left t = 2/3 at
-/// (0, 14/3, 4/3); right t = 1/6 at (3, 8/3, 11/6); top t = 1/2 at
-/// (1, 4, 3/2); the segment from (3, 8/3, 11/6) to (1, 4, 3/2); clipped.
-const CLIP_RIGHT: [&str; 10] = [
+/// (0, 14/3, 4/3), above y = 4: code 001000; right t = 1/6 at
+/// (3, 8/3, 11/6), inside: 000000; top t = 1/2 at (1, 4, 3/2), inside:
+/// 000000; the segment from (3, 8/3, 11/6) to (1, 4, 3/2); clipped.
+const CLIP_RIGHT: [&str; 13] = [
     "000010",
     "1001",
     "2/3",
     "0, 14/3, 4/3",
+    "001 000",
     "1/6",
     "3, 8/3, 11/6",
+    "0",
     "0.5",
     "(1, 4, 1.5)",
+    "000000",
     "(3, 8/3, 11/6); (1, 4, 3/2)",
-    "clipped",
+    "di-clip",
 ];
 
 #[test]
@@ -367,36 +371,57 @@ fn clip_all_correct() {
             "clip.code1",
             "clip.intersections.left.t",
             "clip.intersections.left.point",
+            "clip.intersections.left.code",
             "clip.intersections.right.t",
             "clip.intersections.right.point",
+            "clip.intersections.right.code",
             "clip.intersections.top.t",
             "clip.intersections.top.point",
+            "clip.intersections.top.code",
             "clip.segment",
             "clip.status"
         ]
     );
-    all_correct(&ev, 10);
+    all_correct(&ev, 13);
 }
 
 #[test]
-fn clip_follow_through_from_a_wrong_t_and_a_wrong_code() {
+fn clip_follow_through_from_a_wrong_code_and_a_misprinted_point() {
     // code0 001000 (wrong): AND with 001001 is 001000 ≠ 0, so "rejected"
-    // follows; right t = 1/4 (wrong): P = (4 − 1.5, 2 + 1, 2 − 0.25) =
-    // (2.5, 3, 1.75); the segment then runs from there to (1, 4, 1.5).
+    // follows. The right intersection as the text printed it, (3, 20/6,
+    // 11/6): on its plane x = 3 and inside (code 000000), so the segment
+    // from it to (1, 4, 3/2) follows.
     let mut lines = CLIP_RIGHT.to_vec();
     lines[0] = "001000";
-    lines[4] = "1/4";
-    lines[5] = "2.5, 3, 1.75";
-    lines[8] = "(2.5, 3, 1.75); (1, 4, 1.5)";
-    lines[9] = "rejected";
+    lines[6] = "3, 20/6, 11/6";
+    lines[11] = "(3, 20/6, 11/6); (1, 4, 1.5)";
+    lines[12] = "rejected";
     let ev = session(&["problems/text-clip.toml"], &lines);
     let c = codes(&ev);
     assert_eq!(c[0], "wrong");
-    assert_eq!(c[4], "wrong");
-    for k in [5, 8, 9] {
+    assert_eq!(c[6], "wrong");
+    // the text's misprint, named with the erratum's reason
+    let v = of_kind(&ev, "verdict");
+    assert_eq!(v[6]["mistakes"], serde_json::json!(["copied_misprint"]));
+    assert!(v[6]["why"].as_str().unwrap().contains("20/6"), "{}", v[6]);
+    for k in [11, 12] {
         assert_eq!(c[k], "correct.follow_through", "answer {k}: {c:?}");
     }
-    assert_eq!(summary(&ev)["counts"]["follow_through"], 3);
+    assert_eq!(summary(&ev)["counts"]["follow_through"], 2);
+}
+
+#[test]
+fn an_intersection_off_its_plane_is_not_credited() {
+    // left t given as 1/3 (wrong): P(1/3) = (4 − 2, 2 + 4/3, 2 − 1/3) =
+    // (2, 10/3, 5/3), which is not on the left plane x = 0: no
+    // intersection, so no follow-through.
+    let mut lines = CLIP_RIGHT[..2].to_vec();
+    lines.extend(["1/3", "2, 10/3, 5/3", "quit"]);
+    let ev = session(&["problems/text-clip.toml"], &lines);
+    assert_eq!(
+        codes(&ev),
+        ["correct.exact", "correct.exact", "wrong", "wrong"]
+    );
 }
 
 #[test]
@@ -421,6 +446,7 @@ fn shade_all_correct() {
             "0.36, 0.18, 0",
             "0, 0, 0",
             "0.76, 0.38, 0",
+            "0.76, 0.38, 0",
         ],
     );
     assert_eq!(
@@ -434,18 +460,20 @@ fn shade_all_correct() {
             "shade.ambient",
             "shade.diffuse",
             "shade.specular",
+            "shade.unclamped",
             "shade.color"
         ]
     );
-    all_correct(&ev, 9);
+    all_correct(&ev, 10);
 }
 
 #[test]
 fn shade_follow_through_from_an_unnormalized_n() {
     // N given as (4, 0, 3): cos α = L·N = 3; R = 2·3·(4, 0, 3) − (0, 0, 1) =
     // (24, 0, 17); cos β = R·V = 17; diffuse = 0.6·3·Cs = (1.8, 0.9, 0);
-    // specular = 0.7·17⁴ = 0.7·83521 = 58464.7 per channel; the colour
-    // clamps 0.4 + 1.8 + 58464.7 etc. to (1, 1, 1).
+    // specular = 0.7·17⁴ = 0.7·83521 = 58464.7 per channel; their sum
+    // (0.4 + 1.8 + 58464.7, 0.2 + 0.9 + 58464.7, 58464.7) = (58466.9,
+    // 58465.8, 58464.7), which the colour clamps to (1, 1, 1).
     let ev = session_on(
         "shade-ft.toml",
         SHADE,
@@ -458,13 +486,14 @@ fn shade_follow_through_from_an_unnormalized_n() {
             "0.4, 0.2, 0",
             "1.8, 0.9, 0",
             "58464.7, 58464.7, 58464.7",
+            "58466.9; 58465.8; 58464.7",
             "1, 1, 1",
         ],
     );
     let c = codes(&ev);
     assert_eq!(c[1], "wrong");
     assert_eq!(c[5], "correct.exact");
-    for k in [2, 3, 4, 6, 7, 8] {
+    for k in [2, 3, 4, 6, 7, 8, 9] {
         assert_eq!(c[k], "correct.follow_through", "answer {k}: {c:?}");
     }
 }
@@ -827,4 +856,187 @@ fn practice_says_the_likely_mistake_in_indonesian() {
         "{text}"
     );
     assert!(unwrapped.contains(&format!("• {said}")), "{text}");
+}
+
+/// The numbers of a JSON value (a number, or lists of them).
+fn json_numbers(v: &Value, out: &mut Vec<f64>) {
+    match v {
+        Value::Number(n) => out.extend(n.as_f64()),
+        Value::Array(a) => a.iter().for_each(|x| json_numbers(x, out)),
+        Value::Object(o) => o.values().for_each(|x| json_numbers(x, out)),
+        _ => {}
+    }
+}
+
+/// How many significant figures the shortest decimal of x has.
+fn figures(x: f64) -> usize {
+    let s = format!("{:e}", x.abs());
+    s.split('e')
+        .next()
+        .unwrap()
+        .chars()
+        .filter(char::is_ascii_digit)
+        .count()
+}
+
+#[test]
+fn no_hint_gives_the_answer_away_on_any_shipped_problem() {
+    // Every key of every shipped problem: hint, hint, show. A hint may not
+    // hold the value asked (the exact form shown), nor any of its numbers
+    // with three or more significant figures (up to sign) other than 0, ±1
+    // and the numbers the problem states (its inputs, as `solve --json`
+    // gives them). `show` is what reveals it.
+    let mut asked = 0;
+    for entry in std::fs::read_dir(root().join("problems")).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|x| x != "toml") {
+            continue;
+        }
+        let file = path.to_str().unwrap().to_string();
+        let Ok(solved) = std::panic::catch_unwind(|| json_ok(&["solve", &file])) else {
+            continue;
+        };
+        let mut stated = Vec::new();
+        json_numbers(&solved["input"], &mut stated);
+        let lines: Vec<&str> = std::iter::repeat_n(["hint", "hint", "show"], 60)
+            .flatten()
+            .collect();
+        let ev = session(&[&file], &lines);
+        let mut hints: Vec<&Value> = Vec::new();
+        for e in &ev {
+            match e["event"].as_str().unwrap() {
+                "hint" => hints.push(e),
+                "show" => {
+                    asked += 1;
+                    let key = e["key"].as_str().unwrap();
+                    let exact = e["expected"]["exact"].to_string();
+                    let mut nums = Vec::new();
+                    json_numbers(&e["expected"]["decimal"], &mut nums);
+                    let telling: Vec<f64> = nums
+                        .into_iter()
+                        .filter(|x| figures(*x) >= 3)
+                        .filter(|x| {
+                            !stated
+                                .iter()
+                                .any(|s| (s.abs() - x.abs()).abs() <= 1e-9 * x.abs())
+                        })
+                        .collect();
+                    for h in hints.drain(..) {
+                        let mut shown = Vec::new();
+                        json_numbers(&h["values"], &mut shown);
+                        for x in &telling {
+                            assert!(
+                                !shown
+                                    .iter()
+                                    .any(|y| (y.abs() - x.abs()).abs() <= 1e-9 * x.abs()),
+                                "{file} {key}: hint {} shows {x}: {h}",
+                                h["level"]
+                            );
+                        }
+                        assert!(
+                            exact.len() < 4 || exact == "null" || !h.to_string().contains(&exact),
+                            "{file} {key}: hint {} holds {exact}: {h}",
+                            h["level"]
+                        );
+                        if e["expected"]["decimal"].is_string() {
+                            // an outcode or status: the hint holds no such word
+                            let word = e["expected"]["decimal"].as_str().unwrap();
+                            let shown = h["values"].to_string();
+                            assert!(!shown.contains(word), "{file} {key}: {h}");
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    assert!(asked > 150, "only {asked} values asked");
+}
+
+#[test]
+fn the_texts_forms_are_read_at_the_prompt_and_echoed_as_read() {
+    // The triangle example (values by hand in tests/check.rs): n, u, v,
+    // the view matrix by rows, A′ ending in −6/√2, B′ with decimal commas
+    // and ;, C′ as (x; y; z) with a unicode minus
+    let lines = [
+        "1/sqrt(2), 0, 1/sqrt(2)",
+        "(√2/2, 0, −√2/2)",
+        "[0, 1, 0]",
+        "1/√2, 0, -1/√2, 0; 0, 1, 0, -1; (1/2)sqrt(2), 0, √2/2, -3sqrt(2); 0, 0, 0, 1",
+        "0, -1, -6/sqrt(2)",
+        "(0,7071; −1; −3,536)",
+        "(−1/√2; −1; −5/√2)",
+        "quit",
+    ];
+    let ev = session(&["problems/text-triangle.toml"], &lines);
+    let c = codes(&ev);
+    assert_eq!(c.len(), 7, "{c:?}");
+    assert!(c.iter().all(|c| c.starts_with("correct.")), "{c:?}");
+    let v = of_kind(&ev, "verdict");
+    let r = std::f64::consts::FRAC_1_SQRT_2;
+    let read: Vec<f64> = v[0]["read"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    assert!((read[0] - r).abs() < 1e-15 && read[1] == 0.0 && (read[2] - r).abs() < 1e-15);
+    // the text shows how each answer was read, in the student's language
+    for (lang, read_as) in [
+        ("en", "read as (√2/2, 0, √2/2)"),
+        ("id", "dibaca sebagai (√2/2; 0; √2/2)"),
+    ] {
+        let out = grafika()
+            .args(["practice", "problems/text-triangle.toml", "--lang", lang])
+            .write_stdin("1/sqrt(2), 0, 1/sqrt(2)\nquit\n")
+            .output()
+            .unwrap();
+        let text = String::from_utf8(out.stdout).unwrap();
+        assert!(text.contains(read_as), "{lang}: {text}");
+    }
+}
+
+#[test]
+fn an_unreadable_answer_says_where_and_is_asked_again() {
+    // `1/sqrt(2, 0, 1`: the `)` of sqrt is missing at column 9 of the answer
+    for (lang, words) in [("en", "at column 9"), ("id", "di kolom 9")] {
+        let out = grafika()
+            .args(["practice", "problems/text-triangle.toml", "--lang", lang])
+            .env("NO_COLOR", "1")
+            .write_stdin("1/sqrt(2, 0, 1\nquit\n")
+            .output()
+            .unwrap();
+        let text = String::from_utf8(out.stdout).unwrap();
+        let flat = text.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(flat.contains(words), "{lang}: {text}");
+        assert_eq!(text.matches("[1/19]").count(), 2, "asked again: {text}");
+    }
+}
+
+#[test]
+fn a_revealed_value_stays_revealed_and_a_retry_counts_apart() {
+    // n shown, then back, then answered right: still revealed. u answered
+    // wrong, back, right: the first verdict stands; the retry is shown.
+    let ev = session_on(
+        "honest.toml",
+        PIPELINE,
+        &[
+            "show", "back", "0, 0, 1", "-1, 0, 0", "back", "1, 0, 0", "quit",
+        ],
+    );
+    let v = of_kind(&ev, "verdict");
+    assert_eq!(v[0]["retry"], true);
+    assert_eq!(v[1]["code"], "wrong");
+    assert_eq!(v[1]["retry"], false);
+    assert_eq!(v[2]["code"], "correct.exact");
+    assert_eq!(v[2]["retry"], true);
+    let s = summary(&ev);
+    assert_eq!(s["score"]["points"], 0.0);
+    assert_eq!(s["counts"]["revealed"], 1);
+    assert_eq!(s["counts"]["wrong"], 1);
+    assert_eq!(s["counts"]["correct"], 0);
+    assert_eq!(
+        s["retries"],
+        serde_json::json!({"answered": 2, "correct": 2})
+    );
 }

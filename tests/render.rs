@@ -300,7 +300,7 @@ fn explain_pixel_shows_the_lighting_steps_and_the_pixel() {
         .arg(&scene)
         .arg("-o")
         .arg(dir.join("e.png"))
-        .args(["--explain-pixel", "0,0"])
+        .args(["--explain-pixel", "0,0", "--force"])
         .output()
         .unwrap();
     assert!(String::from_utf8_lossy(&out.stdout).contains("background"));
@@ -432,7 +432,7 @@ fn a_spot_light_lights_its_cone_and_leaves_the_rest_ambient() {
          [camera]\neye = [0, 0, 0]\nlook = [0, 0, -1]\nup = [0, 1, 0]\n\
          [perspective]\nfovy = 50\nnear = 0.1\nfar = 50\n\
          [material]\nka = 0.2\nkd = 0.7\nks = 0\n\
-         [[light]]\ntype = \"spot\"\nposition = [0, 0, 0]\ndirection = [0, 0, -1]\n\
+         [[light]]\ntype = \"spot\"\nposition = [0, 0, 0]\naxis = [0, 0, -1]\n\
          theta = 20\nphi = 40\n\
          [[object]]\ntype = \"plane\"\nnx = 4\nnz = 4\ndx = 2\ndz = 2\ncolor = [1, 1, 1]\n\
          transform = [{ rotate_x = 1.5707963267948966 }, { translate = [-4, 4, -2] }]\n",
@@ -486,7 +486,7 @@ fn explain_steps(scene: &str, px: &str, extra: &[&str]) -> Vec<serde_json::Value
         .arg(root.join(scene))
         .arg("-o")
         .arg(dir.join(format!("{}.png", px.replace(',', "-"))))
-        .args(["--explain-pixel", px, "--json"])
+        .args(["--explain-pixel", px, "--json", "--force"])
         .args(extra)
         .output()
         .unwrap();

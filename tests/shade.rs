@@ -158,9 +158,11 @@ fn lights_file() {
         "lambert",
     ]);
     close(rgb(&j["result"]["unclamped"]), [1.2; 3]);
+    // A spot's axis given twice, as `axis` and by its old name `direction`:
+    // the error names the second and where it stands.
     std::fs::write(
         &f,
-        "[[light]]\ntype = \"spot\"\nposition = [0, 0, 2]\ndirection = [0, 0, -1]\n",
+        "[[light]]\ntype = \"spot\"\nposition = [0, 0, 2]\naxis = [0, 0, -1]\ndirection = [0, 0, -1]\n",
     )
     .unwrap();
     let out = grafika()
@@ -177,7 +179,10 @@ fn lights_file() {
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("light[0].direction"), "{err}");
+    assert!(
+        err.contains("light[0].direction") && err.contains("l.toml:5:13"),
+        "{err}"
+    );
     // An unknown key is a TOML error with file:line:col
     std::fs::write(
         &f,

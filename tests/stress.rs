@@ -678,3 +678,180 @@ fn exact_unit_vector_of_a_huge_light_is_not_zero() {
         u[2].to_f64()
     );
 }
+
+// ---- Issue 28: work that grows with the input stops at a stated size ----
+
+mod common;
+
+/// `sqrt(p1)+…+sqrt(pk)` of the k primes from index `from`.
+fn roots(from: usize, k: usize) -> String {
+    const P: [u32; 30] = [
+        2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71, 73, 79, 83, 89,
+        97, 101, 103, 107, 109, 113,
+    ];
+    let terms: Vec<String> = P[from..from + k]
+        .iter()
+        .map(|p| format!("sqrt({p})"))
+        .collect();
+    terms.join("+")
+}
+
+#[test]
+fn exact_arithmetic_with_many_roots_falls_back_to_f64_and_says_so() {
+    // 24 different square roots: the exact clipped segment would have
+    // thousands of terms (before issue 28: 3.5 s for 21 roots, ×3.5 per 3
+    // more); it is computed in f64 past 64 terms, with a warning.
+    let (a, b, c) = (roots(0, 8), roots(8, 8), roots(16, 8));
+    let out = common::grafika()
+        .args(["clip", "--min", "0,0,0", "--max", &format!("{a},{b},{c}")])
+        .args([
+            "--from",
+            &format!("{c},-1,-1"),
+            "--to",
+            &format!("-1,{a},{b}"),
+            "--json",
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let w = v["warnings"].to_string();
+    assert!(w.contains("more than 64 terms"), "{w}");
+    // Few roots stay exact, with no warning.
+    let v = common::json_ok(
+        &["clip", "--min", "0,0,0", "--max", "sqrt(2),sqrt(3),1"]
+            .into_iter()
+            .chain(["--from", "2,0.5,0.5", "--to", "-1,0.5,0.5"])
+            .collect::<Vec<_>>(),
+    );
+    assert_eq!(v["warnings"], serde_json::json!([]));
+    assert_eq!(v["exact"]["segment"][0][0], "sqrt(2)");
+}
+
+#[test]
+fn check_reads_many_keys_in_linear_time_and_refuses_a_huge_file() {
+    let dir = tempfile::tempdir().unwrap();
+    // 60,000 keys in 500 KB (before issue 28: 100,000 keys took 27 s).
+    let many = dir.path().join("many.toml");
+    let text: String = (0..60_000).map(|i| format!("k{i} = \"1\"\n")).collect();
+    std::fs::write(&many, text).unwrap();
+    let out = common::grafika()
+        .args([
+            "check",
+            "problems/text-triangle.toml",
+            "--answers",
+            many.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    // Over 1 MB: refused before the TOML is read, naming the size.
+    let huge = dir.path().join("huge.toml");
+    std::fs::write(&huge, "# x\n".repeat(300_000)).unwrap();
+    let out = common::grafika()
+        .args([
+            "check",
+            "problems/text-triangle.toml",
+            "--answers",
+            huge.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("1200000 bytes") && err.contains("1048576"),
+        "{err}"
+    );
+    // One answer of 100,000 characters: unparseable with the reason, shown cut.
+    let long = dir.path().join("long.toml");
+    std::fs::write(
+        &long,
+        format!("\"window.top\" = \"{}1\"\n", "1+".repeat(50_000)),
+    )
+    .unwrap();
+    let out = common::grafika()
+        .args([
+            "check",
+            "problems/text-triangle.toml",
+            "--answers",
+            long.to_str().unwrap(),
+            "--json",
+        ])
+        .output()
+        .unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let top = v["answers"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|a| a["key"] == "window.top")
+        .unwrap();
+    assert_eq!(top["code"], "unparseable");
+    // The table shows it cut (the table was quadratic in its length: 17 s).
+    let out = common::grafika()
+        .args([
+            "check",
+            "problems/text-triangle.toml",
+            "--answers",
+            long.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(out.stdout.len() < 20_000, "{} bytes", out.stdout.len());
+}
+
+#[test]
+fn a_scene_over_its_budgets_is_refused_before_anything_is_built() {
+    let dir = tempfile::tempdir().unwrap();
+    let run = |name: &str, text: &str| {
+        let path = dir.path().join(name);
+        std::fs::write(&path, text).unwrap();
+        let png = dir.path().join(format!("{name}.png"));
+        common::grafika()
+            .args([
+                "render",
+                path.to_str().unwrap(),
+                "-o",
+                png.to_str().unwrap(),
+            ])
+            .output()
+            .unwrap()
+    };
+    // 25 spheres of 2,000 slices × 1,000 stacks, 2·2000·999 = 3,996,000
+    // triangles each, under the old per-object cap (ten took 24 s and 2.4 GB):
+    // 99,900,000 together.
+    let mut spheres = String::from("[image]\nwidth = 16\nheight = 16\n");
+    for _ in 0..25 {
+        spheres.push_str("[[object]]\ntype = \"sphere\"\nn = 2000\nstacks = 1000\nr = 5\n");
+    }
+    let out = run("spheres.toml", &spheres);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("99900000 triangles") && err.contains("per scene"),
+        "{err}"
+    );
+    // A plane whose grid is over budget: its height formula is never evaluated.
+    let nested = format!("{}x{}", "sqrt(".repeat(90), ")".repeat(90));
+    let plane = format!(
+        "[image]\nwidth = 16\nheight = 16\n[[object]]\ntype = \"plane\"\nnx = 4096\nnz = 4096\ndx = 1\ndz = 1\nheight = \"{nested}\"\n"
+    );
+    let out = run("plane.toml", &plane);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("33538050 triangles"));
+    // Nine lights: Direct3D 9's eight is the budget.
+    let mut lights = String::from(
+        "[image]\nwidth = 16\nheight = 16\n[[object]]\ntype = \"box\"\nsize = [1, 1, 1]\n",
+    );
+    for _ in 0..9 {
+        lights.push_str("[[light]]\ntype = \"directional\"\ndirection = [0, 0, 1]\n");
+    }
+    let out = run("lights.toml", &lights);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("9 lights"));
+}

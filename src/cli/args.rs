@@ -6,6 +6,7 @@
 use crate::input::scene::{Normals, Shading};
 use crate::num::Precision;
 use crate::report::lang::Lang;
+use crate::report::moodle::Decimal;
 use crate::stages::lighting::Model;
 use crate::tutor::generate::{Difficulty, Topic};
 use clap::builder::PossibleValue;
@@ -46,6 +47,8 @@ pub struct Common {
     pub lang: Option<Lang>,
     /// The worked solution as an HTML page, to this new file.
     pub html: Option<std::path::PathBuf>,
+    /// Replace output files that exist (never an input, never through a link).
+    pub force: bool,
     /// An option given before a command that does not take it, and the
     /// command.
     pub misplaced: Option<(Opt, &'static str)>,
@@ -64,11 +67,20 @@ pub enum Opt {
     Lang,
     /// `--html`.
     Html,
+    /// `--force`.
+    Force,
 }
 
 impl Opt {
     /// Every option of [`Common`].
-    pub const ALL: [Opt; 5] = [Opt::Precision, Opt::Digits, Opt::Json, Opt::Lang, Opt::Html];
+    pub const ALL: [Opt; 6] = [
+        Opt::Precision,
+        Opt::Digits,
+        Opt::Json,
+        Opt::Lang,
+        Opt::Html,
+        Opt::Force,
+    ];
 
     /// The flag's name (without `--`).
     pub fn name(self) -> &'static str {
@@ -78,6 +90,7 @@ impl Opt {
             Opt::Json => "json",
             Opt::Lang => "lang",
             Opt::Html => "html",
+            Opt::Force => "force",
         }
     }
 
@@ -102,7 +115,10 @@ impl Opt {
             Opt::Html => arg
                 .value_name("FILE.html")
                 .value_parser(clap::value_parser!(std::path::PathBuf))
-                .help("Also write the worked solution as one self-contained HTML page (formulas in MathML, figures inline) to this new file"),
+                .help("Also write the worked solution as one self-contained HTML page (formulas in MathML, figures inline) to this file (an existing one only with --force)"),
+            Opt::Force => arg.action(ArgAction::SetTrue).help(
+                "Replace output files that exist (never one of the command's inputs, never through a link)",
+            ),
         }
     }
 }
@@ -123,12 +139,12 @@ pub const TAKES: [(&str, &[Opt], &str); 15] = [
     ("solve", WORKED, JSON_REPORT),
     (
         "render",
-        &[Opt::Digits, Opt::Json, Opt::Lang, Opt::Html],
+        &[Opt::Digits, Opt::Json, Opt::Lang, Opt::Html, Opt::Force],
         "Print one JSON object (docs/spec.md §3) instead of the summary",
     ),
     (
         "check",
-        &[Opt::Digits, Opt::Json, Opt::Lang],
+        &[Opt::Digits, Opt::Json, Opt::Lang, Opt::Force],
         "Print the marking as one JSON object instead of the report",
     ),
     (
@@ -138,7 +154,7 @@ pub const TAKES: [(&str, &[Opt], &str); 15] = [
     ),
     (
         "generate",
-        &[Opt::Digits, Opt::Json, Opt::Lang],
+        &[Opt::Digits, Opt::Json, Opt::Lang, Opt::Force],
         "Print the files written as one JSON object",
     ),
     (
@@ -175,7 +191,11 @@ impl CommandFactory for Cli {
                 cmd = cmd.mut_subcommand(name, |c| c.args(opts.iter().map(|o| o.arg(json))));
             }
         }
-        cmd
+        cmd.mut_subcommand("generate", |c| {
+            c.mut_arg("force", |a| {
+                a.help("Replace generate's own earlier output in --out (never a file it did not write), and write more than 2,000 problems")
+            })
+        })
     }
     fn command_for_update() -> clap::Command {
         Cli::command()
@@ -225,6 +245,7 @@ impl Common {
             html: from(Opt::Html)
                 .get_one::<std::path::PathBuf>("html")
                 .cloned(),
+            force: from(Opt::Force).get_flag("force"),
             misplaced: Opt::ALL
                 .into_iter()
                 .find(|o| given(top, *o) && !taken.contains(o))
@@ -302,11 +323,11 @@ pub enum Command {
     Solve {
         /// The problem file.
         file: PathBuf,
-        /// Also draw one figure per part of the problem, each into a new SVG
+        /// Also draw one figure per part of the problem, each into an SVG
         /// file named after FILE.svg and the part: FILE-1-view.svg,
         /// FILE-2-project.svg, FILE-3-window.svg, FILE-4-clip.svg,
         /// FILE-5-shade.svg (numbered in the order of the parts drawn; none
-        /// is written if any exists).
+        /// is written if any exists, unless --force replaces them).
         #[arg(long, value_name = "FILE.svg")]
         figure: Option<PathBuf>,
     },
@@ -345,7 +366,7 @@ pub struct CameraArgs {
     /// Up vector Vup, X,Y,Z.
     #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
     pub up: String,
-    /// Also draw the figure (world axes, Peye, Pref, Vup, u, v, n at the eye and the points, cabinet oblique projection) into this new SVG file (never overwritten).
+    /// Also draw the figure (world axes, Peye, Pref, Vup, u, v, n at the eye and the points, in an axonometric view where u, v, n read) into this SVG file (an existing one only with --force).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
@@ -365,7 +386,7 @@ pub struct ProjectArgs {
     /// Orthographic projection (xp = x, yp = y, zp = 0).
     #[arg(long)]
     pub ortho: bool,
-    /// Also draw the figure (centre of projection, view plane and projectors in 3D; the side view y-z with the similar triangles; the images on the view plane) into this new SVG file (never overwritten).
+    /// Also draw the figure (centre of projection, view plane and projectors in 3D; the side view y-z with the similar triangles; the images on the view plane) into this SVG file (an existing one only with --force).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
     /// An eye-coordinate point NAME=X,Y,Z (repeatable).
@@ -394,7 +415,7 @@ pub struct WindowArgs {
     /// A projected point NAME=X,Y on the near plane (repeatable; needs --viewport).
     #[arg(long = "point", value_name = "NAME=X,Y", allow_hyphen_values = true)]
     pub points: Vec<String>,
-    /// Also draw the figure (the view volume with the near and far windows; the side view with fovy and top; the points on the window; the viewport with their pixels) into this new SVG file (never overwritten).
+    /// Also draw the figure (the view volume seen from outside with the near and far windows; the side view with fovy and top; the points on the window; the viewport with their pixels) into this SVG file (an existing one only with --force).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
@@ -414,7 +435,7 @@ pub struct ClipArgs {
     /// Segment end P1.
     #[arg(long, allow_hyphen_values = true, value_name = "X,Y,Z")]
     pub to: String,
-    /// Also draw the figure (box, segment, intersections with t and outcode; kept part solid, cut-off parts dashed) into this new SVG file (never overwritten).
+    /// Also draw the figure (the box with its six planes named, the segment, P0 and P1 with their outcodes; the segment along t with each intersection's t, point and outcode; kept part solid, cut-off parts dashed) into this SVG file (an existing one only with --force).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
@@ -477,7 +498,7 @@ pub struct ShadeArgs {
     /// Lights (and a Direct3D material) from a TOML file.
     #[arg(long, value_name = "FILE.toml")]
     pub lights: Option<PathBuf>,
-    /// Also draw the figure (the surface, N, L, V, R and H for Blinn, with the angles alpha and beta) into this new SVG file (never overwritten).
+    /// Also draw the figure (a flat diagram in the plane of N and L: the surface, N, L, R, V and H for Blinn at their true angles, with alpha and beta) into this SVG file (an existing one only with --force).
     #[arg(long, value_name = "FILE.svg")]
     pub figure: Option<std::path::PathBuf>,
 }
@@ -485,7 +506,9 @@ pub struct ShadeArgs {
 /// The `check` flags.
 #[derive(Args, Debug)]
 pub struct CheckArgs {
-    /// The problem file.
+    /// The problem file, or an exam folder written by `grafika generate`
+    /// (answer files then say `variant = N` and hold one `[problem-NN]`
+    /// table per problem).
     pub file: PathBuf,
     /// The student's answers (TOML keyed like the JSON results), or a
     /// directory of answer files, one per student.
@@ -503,6 +526,13 @@ pub struct CheckArgs {
     /// With a directory of answers: write a CSV summary to this file (`-` for stdout).
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
+    /// With a directory of answers: write the lecturer's report of the
+    /// class (per answer key: counts, facility, discrimination; the
+    /// mistakes and who made them; wrong answers no mistake explains; the
+    /// score histogram) to this file, as .html, .md, .json or .csv by its
+    /// extension.
+    #[arg(long, value_name = "FILE")]
+    pub report: Option<PathBuf>,
     /// Credit a wrong answer that is right given the student's own earlier
     /// answers (pixels from their window and projected points, ...) as
     /// correct.follow_through.
@@ -615,9 +645,10 @@ pub struct GenerateArgs {
     /// Relative tolerance of the numbers in Moodle and GIFT (default 0.001, i.e. 0.1%).
     #[arg(long, value_name = "R")]
     pub tolerance: Option<f64>,
-    /// Overwrite files that already exist, and write more than 2,000 problems.
-    #[arg(long)]
-    pub force: bool,
+    /// The decimal mark students type in Moodle and GIFT quizzes: point for
+    /// a Moodle in English, comma for one with the Indonesian language pack.
+    #[arg(long, value_enum, default_value_t = Decimal::Point)]
+    pub decimal: Decimal,
 }
 
 /// Gives a type of a lower layer its command-line choices: each variant's
@@ -641,6 +672,10 @@ choices!(Precision {
     Exact => "exact": "Exact sums of surds where the mathematics is exact, marked ≈ otherwise",
     F64 => "f64": "IEEE double precision with stable formulas",
     F32 => "f32": "IEEE single precision with stable formulas",
+});
+choices!(Decimal {
+    Point => "point": "0.5: a Moodle in English (a typed comma is a thousands separator there)",
+    Comma => "comma": "0,5: a Moodle with the Indonesian language pack",
 });
 choices!(Lang {
     Id => "id": "Bahasa Indonesia",

@@ -14,7 +14,7 @@ use crate::stages::clip::ClipBox;
 use crate::stages::projection::{self, Projection};
 use crate::stages::trace::{Recorder, Report, Val};
 use crate::stages::window;
-use crate::tutor::keys::{basis_result, clip_run, window_result};
+use crate::tutor::keys::{basis_result, clip_run, shade_run, window_result};
 use serde_json::{json, Value};
 
 /// The camera from its flags.
@@ -188,7 +188,7 @@ pub fn clip<T: Scalar>(a: &ClipArgs) -> Result<Report> {
 
 /// `grafika shade`.
 pub fn shade<T: Scalar>(a: &ShadeArgs) -> Result<Report> {
-    use crate::input::lights::{build, run, LightsFileIn};
+    use crate::input::lights::{build, LightsFileIn};
     let sh = shade_in(a)?;
     let file = match &a.lights {
         Some(path) => LightsFileIn::read(path)?,
@@ -196,7 +196,7 @@ pub fn shade<T: Scalar>(a: &ShadeArgs) -> Result<Report> {
     };
     let mut rec = Recorder::new();
     let setup = build::<T>(&sh, &file, "", "light", &mut rec)?;
-    let result = run(&setup, &mut rec);
+    let result = shade_run(&setup, &crate::stages::lighting::Rules::default(), &mut rec);
     let s = &setup.surface;
     let m = &setup.material;
     let inp = json!({

@@ -2,23 +2,25 @@
 //! and keys (report), and writes the files.
 
 use crate::cli::args::{Format, GenerateArgs};
+use crate::cli::stage::Stage;
 use crate::error::{Error, Result};
-use crate::msg::{Bound, ErrMsg, IoWhy};
+use crate::msg::{Bound, ErrMsg};
 use crate::report::doc::Doc;
 use crate::report::gift::gift;
-use crate::report::moodle::{moodle_xml, Exams};
+use crate::report::moodle::{moodle_xml, Written};
 use crate::report::sheets::{
     exam_json, exam_title, key_file, key_title, problem_file, sheets, written_summary,
 };
 use crate::report::Style;
 use crate::tutor::check::DEFAULT_TOLERANCE;
-use crate::tutor::generate::{exam, variant_seed, Generated};
+use crate::tutor::generate::quiz::Quiz;
+use crate::tutor::generate::{exam, problem_name, variant_name, variant_seed, Generated};
 use serde_json::json;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
-/// Runs `grafika generate`; returns what to print.
-pub fn run(a: &GenerateArgs, json: bool, style: &Style) -> Result<String> {
-    let files = write_exams(a, style)?;
+/// Runs `grafika generate`; returns what to print. `force`: `--force`.
+pub fn run(a: &GenerateArgs, force: bool, json: bool, style: &Style) -> Result<String> {
+    let files = write_exams(a, force, style)?;
     Ok(if json {
         let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
         let j = json!({ "command": "generate", "seed": a.seed, "files": names });
@@ -42,18 +44,10 @@ pub const MAX_PROBLEMS: u64 = 2_000;
 /// and worked solution), for the size given when refusing.
 const BYTES_PER_PROBLEM: u64 = 16_000;
 
-/// Refuses, unless `--force`: more than [`MAX_PROBLEMS`] problems, and an
-/// output that would overwrite existing files. `--out` naming a file that is
-/// not a directory is always an error.
-fn check_out(a: &GenerateArgs) -> Result<()> {
-    if a.out.exists() && !a.out.is_dir() {
-        return Err(Error::why(
-            "out",
-            ErrMsg::NotDirectory(a.out.display().to_string()),
-        ));
-    }
+/// Refuses, unless `--force`, more than [`MAX_PROBLEMS`] problems.
+fn check_size(a: &GenerateArgs, force: bool) -> Result<()> {
     let n = a.count as u64 * a.variants as u64;
-    if n > MAX_PROBLEMS && !a.force {
+    if n > MAX_PROBLEMS && !force {
         return Err(Error::why(
             "count",
             ErrMsg::TooManyProblems(
@@ -65,41 +59,78 @@ fn check_out(a: &GenerateArgs) -> Result<()> {
             ),
         ));
     }
-    let first = a.out.join(match a.format {
-        Format::Moodle => "quiz.xml",
-        Format::Gift => "quiz.gift",
-        _ if a.variants == 1 => "problem-01.toml",
-        _ => "variant-01",
-    });
-    if first.exists() && !a.force {
-        return Err(Error::why(
-            "out",
-            ErrMsg::ExistsForce(first.display().to_string()),
-        ));
-    }
     Ok(())
 }
 
-/// Generates and writes every variant; returns the files written.
-pub fn write_exams(a: &GenerateArgs, style: &Style) -> Result<Vec<PathBuf>> {
-    check_out(a)?;
-    if matches!(a.format, Format::Moodle | Format::Gift) {
-        return write_quiz(a, style).map(|f| vec![f]);
+/// The names the output has in `--out`: `quiz.xml`, `variant-01` …, or one
+/// exam's files.
+fn entries(a: &GenerateArgs) -> Vec<String> {
+    match a.format {
+        Format::Moodle => vec!["quiz.xml".into()],
+        Format::Gift => vec!["quiz.gift".into()],
+        _ if a.variants == 1 => exam_files(a.count, a.format),
+        _ => (1..=a.variants).map(|v| variant_name(v as usize)).collect(),
     }
+}
+
+/// The files of one exam: problem and key files, then the sheets.
+fn exam_files(count: u32, format: Format) -> Vec<String> {
+    let mut names: Vec<String> = (1..=count)
+        .flat_map(|i| {
+            [
+                format!("{}.toml", problem_name(i as usize)),
+                format!("{}.key.toml", problem_name(i as usize)),
+            ]
+        })
+        .collect();
+    names.extend(sheet_ext(format).map_or_else(
+        || {
+            (format == Format::Json)
+                .then(|| "exam.json".to_string())
+                .into_iter()
+                .collect()
+        },
+        |ext| vec![format!("questions.{ext}"), format!("key.{ext}")],
+    ));
+    names
+}
+
+/// The extension of the question sheet and key, for the formats that have them.
+fn sheet_ext(format: Format) -> Option<&'static str> {
+    match format {
+        Format::Md => Some("md"),
+        Format::Latex => Some("tex"),
+        Format::Html => Some("html"),
+        Format::Toml | Format::Json | Format::Moodle | Format::Gift => None,
+    }
+}
+
+/// Generates and writes every variant, the whole output or nothing (see
+/// [`Stage`]); returns the files written.
+pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<Vec<PathBuf>> {
+    check_size(a, force)?;
+    if matches!(a.format, Format::Moodle | Format::Gift) {
+        let rel = quiz_tolerance(a)?;
+        let mut stage = Stage::begin(&a.out, entries(a), force)?;
+        let file = write_quiz(a, rel, &mut stage, style)?;
+        stage.commit()?;
+        return Ok(vec![file]);
+    }
+    let mut stage = Stage::begin(&a.out, entries(a), force)?;
     let mut files = Vec::new();
     let bar = progress(a, style);
     for v in 0..a.variants {
         let dir = if a.variants == 1 {
-            a.out.clone()
+            String::new()
         } else {
-            a.out.join(format!("variant-{:02}", v + 1))
+            format!("{}/", variant_name(v as usize + 1))
         };
-        std::fs::create_dir_all(&dir).map_err(|e| out_error(ErrMsg::CannotCreate, &dir, &e))?;
         let exam = exam(&a.topic, a.difficulty, a.count, variant_seed(a.seed, v))?;
-        files.extend(write_exam(&dir, a, v + 1, &exam, style)?);
+        files.extend(write_exam(&mut stage, &dir, a, v + 1, &exam, style)?);
         bar.iter().for_each(|b| b.inc(1));
     }
     bar.iter().for_each(|b| b.finish_and_clear());
+    stage.commit()?;
     Ok(files)
 }
 
@@ -114,10 +145,11 @@ fn progress(a: &GenerateArgs, style: &Style) -> Option<indicatif::ProgressBar> {
         .flatten()
 }
 
-/// Writes one exam's files: the problem and key files, then the sheets in
-/// the chosen format.
+/// Writes one exam's files (into `dir`, `` or `variant-NN/`): the problem
+/// and key files, then the sheets in the chosen format.
 fn write_exam(
-    dir: &Path,
+    stage: &mut Stage,
+    dir: &str,
     a: &GenerateArgs,
     variant: u32,
     exam: &[Generated],
@@ -125,43 +157,31 @@ fn write_exam(
 ) -> Result<Vec<PathBuf>> {
     let mut files = Vec::new();
     let mut put = |name: String, text: String| -> Result<()> {
-        let path = dir.join(name);
-        std::fs::write(&path, text).map_err(|e| out_error(ErrMsg::CannotWrite, &path, &e))?;
-        files.push(path);
+        files.push(stage.write(&format!("{dir}{name}"), &text)?);
         Ok(())
     };
     for (i, g) in exam.iter().enumerate() {
         put(
-            format!("problem-{:02}.toml", i + 1),
+            format!("{}.toml", problem_name(i + 1)),
             problem_file(g, style.lang),
         )?;
         put(
-            format!("problem-{:02}.key.toml", i + 1),
+            format!("{}.key.toml", problem_name(i + 1)),
             key_file(g, style.lang),
         )?;
     }
     let numbered = (a.variants > 1).then_some(variant);
     // The question sheet does not show the seed (anyone could regenerate the key).
     let title = |seed| exam_title(&a.topic, a.difficulty, seed, numbered, style.lang);
-    let doc = match a.format {
-        Format::Toml => return Ok(files),
-        Format::Json => {
-            let j = exam_json(&title(Some(a.seed)), a.seed, variant, exam, style.lang);
-            put(
-                "exam.json".into(),
-                serde_json::to_string_pretty(&j).unwrap_or_default() + "\n",
-            )?;
-            return Ok(files);
-        }
-        Format::Md => Doc::Markdown,
-        Format::Latex => Doc::Latex,
-        Format::Html => Doc::Html,
-        Format::Moodle | Format::Gift => return Ok(files),
-    };
-    let ext = match doc {
-        Doc::Markdown => "md",
-        Doc::Latex => "tex",
-        Doc::Html => "html",
+    if a.format == Format::Json {
+        let j = exam_json(&title(Some(a.seed)), a.seed, variant, exam, style.lang);
+        put(
+            "exam.json".into(),
+            serde_json::to_string_pretty(&j).unwrap_or_default() + "\n",
+        )?;
+    }
+    let (Some(ext), Some(doc)) = (sheet_ext(a.format), doc_of(a.format)) else {
+        return Ok(files);
     };
     let (q, k) = sheets(doc, exam, style);
     put(
@@ -171,6 +191,16 @@ fn write_exam(
     let key = key_title(&title(Some(a.seed)), style.lang);
     put(format!("key.{ext}"), doc.document(&key, &k, style.lang))?;
     Ok(files)
+}
+
+/// The document kind of a format's sheets.
+fn doc_of(format: Format) -> Option<Doc> {
+    match format {
+        Format::Md => Some(Doc::Markdown),
+        Format::Latex => Some(Doc::Latex),
+        Format::Html => Some(Doc::Html),
+        Format::Toml | Format::Json | Format::Moodle | Format::Gift => None,
+    }
 }
 
 /// The relative tolerance of a quiz: `--tolerance`, else 0.1 %; it must be
@@ -189,8 +219,7 @@ fn quiz_tolerance(a: &GenerateArgs) -> Result<f64> {
 
 /// Writes every variant into one Moodle XML or GIFT file in the output
 /// directory: quiz.xml or quiz.gift.
-fn write_quiz(a: &GenerateArgs, style: &Style) -> Result<PathBuf> {
-    let rel = quiz_tolerance(a)?;
+fn write_quiz(a: &GenerateArgs, rel: f64, stage: &mut Stage, style: &Style) -> Result<PathBuf> {
     let bar = progress(a, style);
     let exams = (0..a.variants)
         .map(|v| {
@@ -199,23 +228,14 @@ fn write_quiz(a: &GenerateArgs, style: &Style) -> Result<PathBuf> {
         })
         .collect::<Result<Vec<_>>>()?;
     bar.iter().for_each(|b| b.finish_and_clear());
-    let e = Exams {
-        exams: &exams,
-        topics: &a.topic,
-        rel,
+    let quiz = Quiz::new(exams, &a.topic, rel);
+    let w = Written {
+        style,
+        decimal: a.decimal,
     };
     let (name, text) = match a.format {
-        Format::Gift => ("quiz.gift", gift(&e, style)),
-        _ => ("quiz.xml", moodle_xml(&e, style)),
+        Format::Gift => ("quiz.gift", gift(&quiz, &w)),
+        _ => ("quiz.xml", moodle_xml(&quiz, &w)),
     };
-    std::fs::create_dir_all(&a.out).map_err(|e| out_error(ErrMsg::CannotCreate, &a.out, &e))?;
-    let path = a.out.join(name);
-    std::fs::write(&path, text).map_err(|e| out_error(ErrMsg::CannotWrite, &path, &e))?;
-    Ok(path)
-}
-
-/// An error on `--out`: a directory that cannot be created or a file that
-/// cannot be written (`what`), with the system's reason.
-fn out_error(what: fn(String, IoWhy) -> ErrMsg, path: &Path, e: &std::io::Error) -> Error {
-    Error::why("out", what(path.display().to_string(), IoWhy::of(e)))
+    stage.write(name, &text)
 }

@@ -6,19 +6,26 @@ pub mod calc;
 pub mod check;
 pub mod generate;
 pub mod practice;
+pub mod print;
 mod refused;
 pub mod render;
+pub mod signals;
+pub mod stage;
+pub mod write;
 
 use crate::bench::accuracy::Stage;
 use crate::error::{Error, Result};
-use crate::msg::{ErrMsg, FigureMsg, IoWhy, Msg};
+use crate::msg::{ErrMsg, Msg};
 use crate::num::Precision;
 use crate::report::lang::{tr, Lang};
 use crate::report::Style;
 use crate::stages::trace::Report;
 use args::{CameraArgs, Cli, ClipArgs, Command, ProjectArgs, ShadeArgs, WindowArgs};
 use clap::Parser;
+use print::{Kind, Stopped};
 use std::ffi::OsString;
+use std::path::{Path, PathBuf};
+use write::Outputs;
 
 /// Runs a generic command at the precision asked for.
 macro_rules! at_precision {
@@ -34,8 +41,20 @@ macro_rules! at_precision {
 /// Runs one parsed command line; a result that is not a finite number is
 /// refused (an error naming it), never printed.
 pub fn run(cli: &Cli) -> Result<Report> {
-    let report = run_unchecked(cli)?;
-    match report.non_finite_result() {
+    run_writing(cli, &Outputs::new(cli.common.force))
+}
+
+/// [`run`], writing `render`'s PNG through `outputs`.
+fn run_writing(cli: &Cli, outputs: &Outputs) -> Result<Report> {
+    crate::num::real::take_grew_too_large();
+    let mut report = run_unchecked(cli, outputs)?;
+    if crate::num::real::take_grew_too_large() {
+        let n = crate::num::real::MAX_EXACT_TERMS;
+        report.warnings.push(Msg::ExactTooLarge(n));
+    }
+    // A NaN or ∞ in a step is refused as one in the results is.
+    let step = || report.non_finite_step_value();
+    match report.non_finite_result().or_else(step) {
         Some(key) => Err(Error::why(
             key,
             ErrMsg::ResultNotFinite(format!("{:?}", cli.common.precision).to_lowercase()),
@@ -44,7 +63,7 @@ pub fn run(cli: &Cli) -> Result<Report> {
     }
 }
 
-fn run_unchecked(cli: &Cli) -> Result<Report> {
+fn run_unchecked(cli: &Cli, outputs: &Outputs) -> Result<Report> {
     let p = cli.common.precision;
     match &cli.command {
         Command::Basis(c) => at_precision!(p, basis(c)),
@@ -68,7 +87,7 @@ fn run_unchecked(cli: &Cli) -> Result<Report> {
         Command::Render(_) if p != Precision::Exact => {
             Err(Error::why("precision", ErrMsg::RenderPrecision))
         }
-        Command::Render(a) => crate::cli::render::run(a, style_of(cli).lang),
+        Command::Render(a) => crate::cli::render::run(a, style_of(cli).lang, outputs),
     }
 }
 
@@ -108,16 +127,20 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
     if let Some((opt, command)) = cli.common.misplaced {
         return report_error(&misplaced(opt, command), json, style.lang);
     }
+    let outputs = Outputs::new(cli.common.force);
+    if let Err(e) = before_any_work(&cli, &outputs) {
+        return report_error(&e, json, style.lang);
+    }
     let printed = match &cli.command {
         Command::Bench { quick, cases } => Ok((bench(*quick, *cases, json, style.lang), 0)),
         Command::Completions { shell } => Ok((completions(*shell), 0)),
         Command::Man => man().map(|t| (t, 0)),
-        Command::Check(a) => check::run(a, json, &style),
-        Command::Generate(a) => generate::run(a, json, &style).map(|t| (t, 0)),
+        Command::Check(a) => check::run(a, json, &style, &outputs),
+        Command::Generate(a) => generate::run(a, cli.common.force, json, &style).map(|t| (t, 0)),
         Command::Practice(a) => practice::run(a, json, &style).map(|()| (String::new(), 0)),
-        _ => run(&cli).and_then(|report| {
-            write_figure(&cli.command, &report, &style)?;
-            write_html(&cli, &report, &style)?;
+        _ => run_writing(&cli, &outputs).and_then(|report| {
+            write_figure(&cli.command, &report, &style, &outputs)?;
+            write_html(&cli, &report, &style, &outputs)?;
             Ok((report_text(&report, json, &style), 0))
         }),
     };
@@ -125,14 +148,99 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
     let png_on_stdout = matches!(&cli.command, Command::Render(a) if a.output.as_os_str() == "-");
     match printed {
         Ok((text, status)) if png_on_stdout => {
-            eprint!("{text}");
+            text.lines().for_each(print::stderr_line);
             status
         }
         Ok((text, status)) => {
-            print!("{text}");
-            status
+            let kind = if json {
+                Kind::Json
+            } else {
+                Kind::Text { colour: false }
+            };
+            match print::stdout(&text, kind) {
+                Ok(()) => status,
+                Err(stopped) => stopped_status(stopped, status, json, style.lang),
+            }
         }
         Err(e) => report_error(&e, json, style.lang),
+    }
+}
+
+/// The exit status after printing stopped: a broken pipe ends quietly
+/// (with the command's own status, after removing any temporary file);
+/// another write error is an error.
+pub fn stopped_status(stopped: Stopped, status: i32, json: bool, lang: Lang) -> i32 {
+    match stopped {
+        Stopped::Pipe => {
+            signals::clean_up();
+            status
+        }
+        Stopped::Failed(e) => report_error(&e, json, lang),
+    }
+}
+
+/// What is refused before any work is done: a closed standard output, and
+/// every output file already known to be refused (an existing file without
+/// `--force`, one of the inputs, a link, a folder), so that nothing is
+/// computed or written in vain. The command's input files are noted.
+fn before_any_work(cli: &Cli, outputs: &Outputs) -> Result<()> {
+    print::refuse_closed_stdout()?;
+    match &cli.command {
+        Command::Solve { file: f, .. } => outputs.reads([f.as_path()]),
+        Command::Shade(a) => outputs.reads(a.lights.iter().map(PathBuf::as_path)),
+        Command::Render(a) => outputs.reads([a.scene.as_path()]),
+        Command::Check(a) => {
+            let inputs: Vec<PathBuf> = (a.answers.iter().chain([&a.file]))
+                .flat_map(check::input_paths)
+                .collect();
+            outputs.reads([a.file.as_path()]);
+            outputs.reads(inputs.iter().map(PathBuf::as_path));
+        }
+        _ => {}
+    }
+    let mut planned: Vec<(&Path, &str)> = Vec::new();
+    if let Some(h) = &cli.common.html {
+        planned.push((h, "html"));
+    }
+    match &cli.command {
+        Command::Render(a) if a.output.as_os_str() != "-" => planned.push((&a.output, "output")),
+        Command::Check(a) => {
+            let csv = a.csv.iter().filter(|c| c.as_os_str() != "-");
+            planned.extend(csv.map(|c| (c.as_path(), "csv")));
+            planned.extend(a.report.iter().map(|r| (r.as_path(), "report")));
+        }
+        Command::Solve {
+            figure: Some(f), ..
+        } if write::names_a_folder(f) => {
+            return Err(Error::why(
+                "figure",
+                ErrMsg::NamesFolder(f.display().to_string()),
+            ))
+        }
+        c => planned.extend(figure_path(c).map(|f| (f.as_path(), "figure"))),
+    }
+    for (i, (p, field)) in planned.iter().enumerate() {
+        outputs.check(p, field)?;
+        if planned[..i].iter().any(|(q, _)| q == p) {
+            return Err(Error::why(
+                *field,
+                ErrMsg::ExistsForce(p.display().to_string()),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The `--figure` path of a calculator command (not `solve`, whose files
+/// are named after its parts).
+fn figure_path(cmd: &Command) -> Option<&PathBuf> {
+    match cmd {
+        Command::Basis(c) | Command::View { camera: c, .. } => c.figure.as_ref(),
+        Command::Project(a) => a.figure.as_ref(),
+        Command::Window(a) => a.figure.as_ref(),
+        Command::Clip(a) => a.figure.as_ref(),
+        Command::Shade(a) => a.figure.as_ref(),
+        _ => None,
     }
 }
 
@@ -154,20 +262,14 @@ fn man() -> Result<String> {
     Ok(String::from_utf8_lossy(&out).into_owned())
 }
 
-/// `--figure FILE.svg`: the report's drawing as a new SVG file; for
+/// `--figure FILE.svg`: the report's drawing as an SVG file; for
 /// `solve`, one file per part, FILE-1-view.svg, FILE-2-project.svg, …
-/// (docs/spec.md §4). An existing file is never overwritten: when any of
-/// them exists, none is written.
-fn write_figure(cmd: &Command, report: &Report, style: &Style) -> Result<()> {
+/// (docs/spec.md §4), all or none.
+fn write_figure(cmd: &Command, report: &Report, style: &Style, outputs: &Outputs) -> Result<()> {
     use crate::report::figure::{drawings::drawings, svg::to_svg};
     let path = match cmd {
-        Command::Basis(c) | Command::View { camera: c, .. } => c.figure.as_ref(),
-        Command::Project(a) => a.figure.as_ref(),
-        Command::Window(a) => a.figure.as_ref(),
-        Command::Clip(a) => a.figure.as_ref(),
-        Command::Shade(a) => a.figure.as_ref(),
         Command::Solve { figure, .. } => figure.as_ref(),
-        _ => None,
+        c => figure_path(c),
     };
     let Some(path) = path else {
         return Ok(());
@@ -181,14 +283,7 @@ fn write_figure(cmd: &Command, report: &Report, style: &Style) -> Result<()> {
             .collect(),
         _ => all.iter().map(|d| (path.clone(), to_svg(d))).collect(),
     };
-    if let Some((p, _)) = files.iter().find(|(p, _)| p.exists()) {
-        let m = Msg::Figure(FigureMsg::Exists(p.display().to_string()));
-        return Err(Error::said("figure", m));
-    }
-    for (p, svg) in &files {
-        create_new(p, svg.as_bytes(), "figure")?;
-    }
-    Ok(())
+    outputs.write_all(&files, "figure")
 }
 
 /// `solve`'s file for part k: FILE.svg → FILE-k-PART.svg.
@@ -212,9 +307,8 @@ fn misplaced(opt: args::Opt, command: &str) -> Error {
     }
 }
 
-/// `--html FILE.html`: the worked solution as a new self-contained page
-/// (an existing file is never overwritten).
-fn write_html(cli: &Cli, report: &Report, style: &Style) -> Result<()> {
+/// `--html FILE.html`: the worked solution as a self-contained page.
+fn write_html(cli: &Cli, report: &Report, style: &Style, outputs: &Outputs) -> Result<()> {
     use crate::report::figure::{drawings::drawings, svg::to_svg};
     let Some(path) = &cli.common.html else {
         return Ok(());
@@ -225,7 +319,7 @@ fn write_html(cli: &Cli, report: &Report, style: &Style) -> Result<()> {
         .collect();
     let title = page_title(report, style);
     let page = crate::report::page::report_page(report, style, &title, &figures);
-    create_new(path, page.as_bytes(), "html")
+    outputs.write(path, "html", page.as_bytes())
 }
 
 /// The page's title: the problem's title for `solve`, else the command.
@@ -238,19 +332,6 @@ fn page_title(report: &Report, style: &Style) -> String {
             style.tr("worked solution", "penyelesaian")
         ),
     }
-}
-
-/// Writes a new file; an existing one is an error on `field` (never
-/// overwritten).
-fn create_new(path: &std::path::Path, bytes: &[u8], field: &str) -> Result<()> {
-    use std::io::Write;
-    let fail = |e: std::io::Error| write_error(field, path, &e);
-    let mut f = std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(path)
-        .map_err(fail)?;
-    f.write_all(bytes).map_err(fail)
 }
 
 /// How numbers and words are written: `--digits`, exact or not, `--lang`
@@ -267,7 +348,11 @@ fn style_of(cli: &Cli) -> Style {
 /// A report as JSON or as the worked solution; its warnings go to stderr.
 fn report_text(report: &Report, json: bool, style: &Style) -> String {
     for w in &report.warnings {
-        eprintln!("{}: {}", style.tr("warning", "peringatan"), style.w(w));
+        print::stderr_line(&format!(
+            "{}: {}",
+            style.tr("warning", "peringatan"),
+            style.w(w)
+        ));
     }
     if json {
         serde_json::to_string_pretty(&report.to_json(style.lang)).unwrap_or_default() + "\n"
@@ -318,16 +403,6 @@ pub fn terminal_bar(len: u64, msg: &str) -> Option<indicatif::ProgressBar> {
     Some(b)
 }
 
-/// A new file that could not be written: one that exists is never
-/// overwritten (remove it or choose another name).
-fn write_error(field: &str, path: &std::path::Path, e: &std::io::Error) -> Error {
-    let shown = path.display().to_string();
-    match e.kind() {
-        std::io::ErrorKind::AlreadyExists => Error::why(field, ErrMsg::Exists(shown)),
-        _ => Error::why(field, ErrMsg::CannotWrite(shown, IoWhy::of(e))),
-    }
-}
-
 /// A command line clap refused: help and version are printed as asked
 /// (exit 0); anything else is an error naming the argument (exit 2), in
 /// the language of `--lang` if it was given, else the environment's.
@@ -335,11 +410,17 @@ fn clap_error(e: clap::Error, wants_json: bool, lang: Option<Lang>) -> i32 {
     use clap::error::{ContextKind, ErrorKind};
     match e.kind() {
         ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
-            let _ = e.print();
-            0
+            let lang = lang.unwrap_or_else(|| Lang::from_env(|k| std::env::var(k).ok()));
+            if let Err(e) = print::refuse_closed_stdout() {
+                return report_error(&e, wants_json, lang);
+            }
+            match print::stdout(&e.render().to_string(), Kind::Text { colour: false }) {
+                Ok(()) => 0,
+                Err(stopped) => stopped_status(stopped, 0, wants_json, lang),
+            }
         }
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
-            let _ = e.print();
+            print::stderr_line(e.render().to_string().trim_end());
             2
         }
         kind => {
@@ -386,24 +467,7 @@ fn clap_message(rendered: &str, kind: &str) -> String {
     format!("{first}{tip} (see --help)")
 }
 
-/// At most this many characters of a message are printed: an error about
-/// a 100 KB input quotes its start and end, not all of it.
-pub const MAX_MESSAGE: usize = 300;
-
-/// `message` cut to [`MAX_MESSAGE`] characters, its middle replaced by the
-/// number of characters left out.
-pub fn cut_message(message: &str, lang: Lang) -> String {
-    let n = message.chars().count();
-    if n <= MAX_MESSAGE {
-        return message.to_string();
-    }
-    let keep = MAX_MESSAGE / 2;
-    let head: String = message.chars().take(keep).collect();
-    let tail: String = message.chars().skip(n - keep).collect();
-    let cut = n - 2 * keep;
-    let said = tr(lang, "characters cut", "karakter dipotong");
-    format!("{head} … ({cut} {said}) … {tail}")
-}
+pub use crate::report::lang::{cut_message, MAX_MESSAGE};
 
 /// Prints an error on one line (stderr; and JSON on stdout with `--json`),
 /// a long echoed input cut; returns 2.
@@ -413,12 +477,11 @@ fn report_error(e: &Error, json: bool, lang: Lang) -> i32 {
     let words = crate::report::words::words(&e.message, lang);
     let message = cut_message(&words, lang).replace('\n', " ");
     let label = crate::report::lang::tr(lang, "error", "kesalahan");
-    eprintln!("{label}: {field}: {message}");
+    print::stderr_line(&format!("{label}: {field}: {message}"));
     if json {
-        println!(
-            "{}",
-            serde_json::json!({ "error": { "field": field, "message": message } })
-        );
+        let j = serde_json::json!({ "error": { "field": field, "message": message } });
+        // Nothing more can be said if this fails too: the error is on stderr.
+        let _ = print::stdout(&format!("{j}\n"), Kind::Json);
     }
     2
 }

@@ -6,6 +6,7 @@
 
 use crate::cli::args::PracticeArgs;
 use crate::cli::check::valid_tolerance;
+use crate::cli::print::{self, Kind, Stopped};
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
 use crate::msg::ErrMsg;
@@ -14,7 +15,8 @@ use crate::report::Style;
 use crate::tutor::check;
 use crate::tutor::generate;
 use crate::tutor::practice::{self, Event};
-use std::io::{BufRead, IsTerminal, Write};
+use std::cell::RefCell;
+use std::io::{BufRead, IsTerminal};
 
 /// Runs `grafika practice`, printing as it goes.
 pub fn run(a: &PracticeArgs, json: bool, style: &Style) -> Result<()> {
@@ -52,11 +54,20 @@ pub fn run(a: &PracticeArgs, json: bool, style: &Style) -> Result<()> {
             && std::io::stdout().is_terminal()
             && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty()),
     };
-    let out = std::io::stdout();
+    // The first write error ends the session: the input is then read as
+    // ended, and the error is returned (a broken pipe ends quietly).
+    let stopped: RefCell<Option<Stopped>> = RefCell::new(None);
+    let kind = if json {
+        Kind::Json
+    } else {
+        Kind::Text { colour: look.color }
+    };
     let say = |text: &str| {
-        let mut o = out.lock();
-        let _ = o.write_all(text.as_bytes());
-        let _ = o.flush();
+        if stopped.borrow().is_none() {
+            if let Err(e) = print::stdout(text, kind) {
+                *stopped.borrow_mut() = Some(e);
+            }
+        }
     };
     if !json {
         say(&intro(&plan, &look, seed));
@@ -64,11 +75,14 @@ pub fn run(a: &PracticeArgs, json: bool, style: &Style) -> Result<()> {
     let stdin = std::io::stdin();
     let mut lines = stdin.lock();
     let next_line = || {
+        if stopped.borrow().is_some() {
+            return None;
+        }
         if terminal && !json {
             say(PROMPT);
         }
         let mut buf = Vec::new();
-        match lines.read_until(b'\n', &mut buf) {
+        match read_line(&mut lines, &mut buf) {
             Ok(0) | Err(_) => None,
             Ok(_) => {
                 let line = String::from_utf8_lossy(&buf).trim_end().to_string();
@@ -87,7 +101,44 @@ pub fn run(a: &PracticeArgs, json: bool, style: &Style) -> Result<()> {
         }
     };
     practice::run(&plan, next_line, emit);
-    Ok(())
+    match stopped.into_inner() {
+        None | Some(Stopped::Pipe) => Ok(()),
+        Some(Stopped::Failed(e)) => Err(e),
+    }
+}
+
+/// The longest line read as an answer, in bytes: a longer one is cut here
+/// and marked `…` (so it is unreadable as any answer and asked again), and
+/// reading stays linear and bounded (45 MB of commas took 3.6 GB).
+pub const MAX_LINE: usize = 4_096;
+
+/// Reads one line into `buf`, keeping at most [`MAX_LINE`] bytes of it
+/// (the rest, up to its newline, is read and dropped; a cut line ends in
+/// `…`); the bytes read.
+fn read_line(input: &mut impl BufRead, buf: &mut Vec<u8>) -> std::io::Result<usize> {
+    let mut total = 0;
+    loop {
+        let chunk = input.fill_buf()?;
+        if chunk.is_empty() {
+            break;
+        }
+        let (take, done) = match chunk.iter().position(|&b| b == b'\n') {
+            Some(i) => (i + 1, true),
+            None => (chunk.len(), false),
+        };
+        let room = (MAX_LINE + 1).saturating_sub(buf.len());
+        buf.extend_from_slice(&chunk[..take.min(room)]);
+        input.consume(take);
+        total += take;
+        if done {
+            break;
+        }
+    }
+    if buf.len() > MAX_LINE {
+        buf.truncate(MAX_LINE);
+        buf.extend_from_slice("…\n".as_bytes());
+    }
+    Ok(total)
 }
 
 /// A seed from the clock, short enough to type again.

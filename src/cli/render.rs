@@ -3,9 +3,11 @@
 //! lighting included, from the same `lighting::shade` the calculator uses).
 
 use crate::cli::args::RenderArgs;
+use crate::cli::print::Stopped;
+use crate::cli::write::Outputs;
 use crate::error::{Error, Result};
 use crate::input::scene::{Scene, Shading};
-use crate::msg::{ErrMsg, IoWhy};
+use crate::msg::ErrMsg;
 use crate::render::{self, Frame, Options, Stats};
 use crate::report::lang::{tr, Lang};
 use crate::stages::trace::Report;
@@ -14,9 +16,14 @@ use serde_json::json;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
-/// Runs `render`.
-pub fn run(a: &RenderArgs, lang: Lang) -> Result<Report> {
+/// Runs `render`; the PNG is written through `outputs` (the scene's mesh
+/// files are among the inputs it never writes over).
+pub fn run(a: &RenderArgs, lang: Lang, outputs: &Outputs) -> Result<Report> {
     let mut scene = Scene::read(&a.scene)?;
+    outputs.reads(scene.files.iter().map(|p| p.as_path()));
+    if a.output.as_os_str() != "-" {
+        outputs.check(&a.output, "output")?;
+    }
     let opt = options(a, &scene);
     render::release_unused(&mut scene, &opt);
     let pixel = a.explain_pixel.as_deref().map(parse_pixel).transpose()?;
@@ -31,11 +38,14 @@ pub fn run(a: &RenderArgs, lang: Lang) -> Result<Report> {
     let (frame, runs) = frames(a, &scene, &opt, lang)?;
     let t = Instant::now();
     if a.output.as_os_str() == "-" {
-        let out = std::io::stdout().lock();
-        encode_png(&frame, out)
-            .map_err(|e| Error::why("output", ErrMsg::CannotWriteStdout(IoWhy::Other(e))))?;
+        match crate::cli::print::stdout_bytes(&mut |w| encode_png(&frame, w)) {
+            Ok(()) => {}
+            // The reader went away: nothing more to say (docs/spec.md §7).
+            Err(Stopped::Pipe) => std::process::exit(0),
+            Err(Stopped::Failed(e)) => return Err(e),
+        }
     } else {
-        write_png(&frame, &a.output)?;
+        outputs.write_with(&a.output, "output", &mut |w| encode_png(&frame, w))?;
     }
     let encode = t.elapsed();
     let mut rec = Recorder::new();
@@ -312,20 +322,17 @@ fn parse_pixel(s: &str) -> Result<(u32, u32)> {
     ))
 }
 
-/// Writes the frame as an 8-bit RGB PNG.
-fn write_png(frame: &Frame, path: &std::path::Path) -> Result<()> {
-    let err = |e| Error::why("output", ErrMsg::CannotWrite(path.display().to_string(), e));
-    let file = std::fs::File::create(path).map_err(|e| err(IoWhy::of(&e)))?;
-    encode_png(frame, std::io::BufWriter::new(file)).map_err(|e| err(IoWhy::Other(e)))
-}
-
 /// The frame as an 8-bit RGB PNG, written to `out` (a file, standard output).
-fn encode_png(frame: &Frame, out: impl std::io::Write) -> std::result::Result<(), String> {
+fn encode_png(frame: &Frame, out: &mut dyn std::io::Write) -> std::io::Result<()> {
+    let io = |e: png::EncodingError| match e {
+        png::EncodingError::IoError(e) => e,
+        e => std::io::Error::other(e.to_string()),
+    };
     let mut enc = png::Encoder::new(out, frame.width, frame.height);
     enc.set_color(png::ColorType::Rgb);
     enc.set_depth(png::BitDepth::Eight);
     enc.set_compression(png::Compression::Fast);
-    let mut wr = enc.write_header().map_err(|e| e.to_string())?;
-    wr.write_image_data(&frame.rgb).map_err(|e| e.to_string())?;
-    wr.finish().map_err(|e| e.to_string())
+    let mut wr = enc.write_header().map_err(io)?;
+    wr.write_image_data(&frame.rgb).map_err(io)?;
+    wr.finish().map_err(io)
 }

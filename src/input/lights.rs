@@ -1,7 +1,8 @@
-//! Lighting inputs: the `[shade]` table and `[[light]]` tables of problem
-//! files, lights files (`--lights FILE.toml`), and the `shade` flags, all
-//! turned into one validated set-up for [`crate::stages::lighting`], and the
-//! set-up's results keyed as docs/spec.md §3 says.
+//! Lighting inputs: the one `[[light]]` table of problem, lights and scene
+//! files ([`LightIn`], built by [`light`]); the `[shade]` table, lights
+//! files (`--lights FILE.toml`) and the `shade` flags, all turned into one
+//! validated set-up for [`crate::stages::lighting`], which
+//! `tutor::keys::shade_run` lights and keys as docs/spec.md §3 says.
 //!
 //! A lights file:
 //!
@@ -15,21 +16,22 @@
 //! axis = [0, 0, -1]                # the way it shines, theta, phi full cone angles
 //! theta = 30                       # in degrees, falloff)
 //! phi = 60
-//! attenuation = [1, 0, 0]          # a0, a1, a2; range = R; colors ambient,
+//! attenuation = [1, 0, 0]          # a0, a1, a2; range = R; colors color, ambient,
 //! ```                              # diffuse, specular (white by default)
 
 use crate::error::{Error, Result};
 use crate::input;
-use crate::input::fields::{toml_error, AngleIn, Num, Vec3In};
+use crate::input::fields::{line_col, toml_error, AngleIn, Num, Vec3In};
 use crate::msg::{ErrMsg, Msg, Thing, Twice};
 use crate::num::vec::{normalize, sub, v3, V3};
 use crate::num::Scalar;
 use crate::stages::lighting::{
-    self, check_color, gray, Light, LightKind, LightTerm, Material, Model, Rgb, Surface,
+    self, check_color, gray, Light, LightKind, Material, Model, Rgb, Surface,
 };
-use crate::stages::trace::{NoTrace, Recorder, Step, Trace, Val};
+use crate::stages::trace::{Step, Trace, Val};
 use serde::Deserialize;
 use std::path::Path;
+use toml::Spanned;
 
 /// The `[shade]` table (and the `shade` flags): the text's single light and
 /// vectors, the model and coefficients, and the Direct3D extras.
@@ -96,35 +98,136 @@ pub enum LightType {
     Spot,
 }
 
-/// One `[[light]]` table.
+impl LightType {
+    /// The type as written in a file (`spot`).
+    pub fn name(self) -> &'static str {
+        match self {
+            LightType::Directional => "directional",
+            LightType::Point => "point",
+            LightType::Spot => "spot",
+        }
+    }
+
+    /// The keys that do not apply to a light of this type.
+    fn foreign_keys(self) -> &'static [&'static str] {
+        match self {
+            LightType::Directional => &[
+                "position",
+                "axis",
+                "theta",
+                "phi",
+                "falloff",
+                "attenuation",
+                "range",
+            ],
+            LightType::Point => &["direction", "axis", "theta", "phi", "falloff"],
+            LightType::Spot => &[],
+        }
+    }
+}
+
+/// One `[[light]]` table: the same keys, defaults and rules in problem
+/// files, lights files and scene files (docs/spec.md §5). Every number is
+/// an expression; directions are made unit vectors when the light is built.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct LightIn {
     /// directional, point or spot.
     #[serde(rename = "type")]
     pub kind: LightType,
-    /// Directional: the vector toward the light (the text's L).
+    /// Directional: the vector toward the light (the text's L; default
+    /// (0, 0, 1)). Spot: the old name of `axis`, still read.
     pub direction: Option<Vec3In>,
     /// Point and spot: where the light is (eye space).
     pub position: Option<Vec3In>,
     /// Spot: the direction it shines (away from the light).
     pub axis: Option<Vec3In>,
+    /// Ld and Ls together (default white); `diffuse`, `specular` override it.
+    pub color: Option<Vec3In>,
     /// La (default white).
     pub ambient: Option<Vec3In>,
-    /// Ld (default white).
+    /// Ld (default `color`).
     pub diffuse: Option<Vec3In>,
-    /// Ls (default white).
+    /// Ls (default `color`).
     pub specular: Option<Vec3In>,
-    /// [a0, a1, a2] (default [1, 0, 0]).
+    /// Point and spot: [a0, a1, a2] (default [1, 0, 0]).
     pub attenuation: Option<Vec3In>,
-    /// Range (default none).
+    /// Point and spot: the range (default none).
     pub range: Option<Num>,
-    /// Spot: full inner cone angle (degrees).
+    /// Spot: full inner cone angle (default 30°).
     pub theta: Option<AngleIn>,
-    /// Spot: full outer cone angle (degrees).
+    /// Spot: full outer cone angle (default 45°).
     pub phi: Option<AngleIn>,
     /// Spot: falloff exponent (default 1).
     pub falloff: Option<Num>,
+    /// Where the table and its keys are in the file, for the errors found
+    /// when the light is built ([`place`] fills it in).
+    #[serde(skip)]
+    pub at: Places,
+}
+
+impl LightIn {
+    /// Whether each key that only some types take is given.
+    fn given(&self) -> [(&'static str, bool); 8] {
+        [
+            ("position", self.position.is_some()),
+            ("direction", self.direction.is_some()),
+            ("axis", self.axis.is_some()),
+            ("theta", self.theta.is_some()),
+            ("phi", self.phi.is_some()),
+            ("falloff", self.falloff.is_some()),
+            ("attenuation", self.attenuation.is_some()),
+            ("range", self.range.is_some()),
+        ]
+    }
+}
+
+/// Where a `[[light]]` table and each of its keys' values stand in their
+/// file (`file:line:col`); empty for a light from no file.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Places {
+    table: Option<String>,
+    keys: Vec<(String, String)>,
+}
+
+impl Places {
+    /// `e` placed at the value of the key its field ends with
+    /// (`light[1].axis`), else at the table.
+    fn place(&self, e: Error) -> Error {
+        let key = e.field.rsplit('.').next().unwrap_or_default();
+        let at = self.keys.iter().find(|(k, _)| k == key).map(|(_, p)| p);
+        match at.or(self.table.as_ref()) {
+            Some(p) => e.at(p.clone()),
+            None => e,
+        }
+    }
+}
+
+/// Fills in where each of `lights` (the `[[light]]` tables read from
+/// `text`) and its keys are, as `origin:line:col`. The places come from a
+/// second read of the same text that keeps only the positions.
+pub fn place(lights: &mut [LightIn], text: &str, origin: &str) {
+    type Table = std::collections::BTreeMap<String, Spanned<serde::de::IgnoredAny>>;
+    #[derive(Deserialize)]
+    struct Spans {
+        #[serde(default)]
+        light: Vec<Spanned<Table>>,
+    }
+    let Ok(spans) = toml::from_str::<Spans>(text) else {
+        return;
+    };
+    let at = |offset: usize| {
+        let (line, col) = line_col(text, offset);
+        format!("{origin}:{line}:{col}")
+    };
+    for (l, t) in lights.iter_mut().zip(&spans.light) {
+        l.at = Places {
+            table: Some(at(t.span().start)),
+            keys: (t.get_ref().iter())
+                .map(|(k, v)| (k.clone(), at(v.span().start)))
+                .collect(),
+        };
+    }
 }
 
 /// A lights file.
@@ -144,14 +247,19 @@ impl LightsFileIn {
     /// Reads a lights file; TOML errors carry file:line:col.
     pub fn read(path: &Path) -> Result<LightsFileIn> {
         let text = crate::input::read_text("lights", path)?;
-        let f: LightsFileIn = toml::from_str(&text)
-            .map_err(|e| toml_error(&path.display().to_string(), &text, &e))?;
+        LightsFileIn::parse(&text, &path.display().to_string())
+    }
+
+    /// Parses lights-file text; `origin` names it in messages.
+    pub fn parse(text: &str, origin: &str) -> Result<LightsFileIn> {
+        let mut f: LightsFileIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
         if f.light.is_empty() {
             return Err(Error::why(
                 "lights",
-                ErrMsg::NoLightTable(path.display().to_string()),
+                ErrMsg::NoLightTable(origin.to_string()),
             ));
         }
+        place(&mut f.light, text, origin);
         Ok(f)
     }
 }
@@ -351,46 +459,57 @@ fn lights<T: Scalar>(
             let l = lighting::unit("L", &f("light"), &ev3(&f("light"), l)?, tr)?;
             Ok(vec![Light::directional(l)])
         }
-        (None, false) => file
-            .light
-            .iter()
-            .enumerate()
-            .map(|(i, l)| light::<T>(l, &format!("{lights_prefix}[{i}]"), position, tr))
+        (None, false) => (file.light.iter().enumerate())
+            .map(|(i, l)| lit_from(l, &format!("{lights_prefix}[{i}]"), position, tr))
             .collect(),
         (Some(_), false) => Err(Error::why(f("light"), Twice::Light)),
         (None, true) => Err(Error::why(f("light"), ErrMsg::NoLight)),
     }
 }
 
-/// One `[[light]]` into a validated [`Light`].
-pub fn light<T: Scalar>(
+/// One `[[light]]` table lighting the surface point `point`, which it
+/// must not stand on.
+fn lit_from<T: Scalar>(
     l: &LightIn,
     field: &str,
     point: &V3<T>,
     tr: &mut impl Trace,
 ) -> Result<Light<T>> {
+    let out = light(l, field, tr)?;
+    match &out.kind {
+        LightKind::Point { pos } | LightKind::Spot { pos, .. } if pos == point => {
+            let e = Error::why(format!("{field}.position"), ErrMsg::LightAtPoint);
+            Err(l.at.place(e))
+        }
+        _ => Ok(out),
+    }
+}
+
+/// One `[[light]]` table into a validated [`Light`] named `field`
+/// (`light[0]`): its defaults filled in, `direction` (L) or `axis` made a
+/// unit vector (the step goes to `tr`), an error placed in its file.
+pub fn light<T: Scalar>(l: &LightIn, field: &str, tr: &mut impl Trace) -> Result<Light<T>> {
+    build_light(l, field, tr).map_err(|e| l.at.place(e))
+}
+
+/// [`light`], its error not yet placed.
+fn build_light<T: Scalar>(l: &LightIn, field: &str, tr: &mut impl Trace) -> Result<Light<T>> {
     let k = |s: &str| format!("{field}.{s}");
+    forbid(l, &k)?;
     let kind = match l.kind {
         LightType::Directional => {
-            forbid(l, &k, &["position", "axis", "range", "attenuation"])?;
-            let d = need(l, &k, &l.direction, "direction")?;
+            let d = match &l.direction {
+                Some(d) => ev3(&k("direction"), d)?,
+                None => v3(T::zero(), T::zero(), T::one()),
+            };
             LightKind::Directional {
                 dir: lighting::unit("L", &k("direction"), &d, tr)?,
             }
         }
-        LightType::Point | LightType::Spot => {
-            forbid(l, &k, &["direction"])?;
-            let pos = need(l, &k, &l.position, "position")?;
-            if pos == *point {
-                return Err(Error::why(k("position"), ErrMsg::LightAtPoint));
-            }
-            if l.kind == LightType::Point {
-                forbid(l, &k, &["axis", "theta", "phi", "falloff"])?;
-                LightKind::Point { pos }
-            } else {
-                spot(l, &k, pos, tr)?
-            }
-        }
+        LightType::Point => LightKind::Point {
+            pos: need(l, &k, &l.position, "position")?,
+        },
+        LightType::Spot => spot(l, &k, tr)?,
     };
     let att = match &l.attenuation {
         Some(a) => {
@@ -399,11 +518,12 @@ pub fn light<T: Scalar>(
         }
         None => [T::one(), T::zero(), T::zero()],
     };
+    let color = opt_rgb(&k("color"), &l.color, gray(T::one()))?;
     let out = Light {
         kind,
         ambient: opt_rgb(&k("ambient"), &l.ambient, gray(T::one()))?,
-        diffuse: opt_rgb(&k("diffuse"), &l.diffuse, gray(T::one()))?,
-        specular: opt_rgb(&k("specular"), &l.specular, gray(T::one()))?,
+        diffuse: opt_rgb(&k("diffuse"), &l.diffuse, color.clone())?,
+        specular: opt_rgb(&k("specular"), &l.specular, color)?,
         attenuation: att,
         range: l.range.as_ref().map(|n| ev(&k("range"), n)).transpose()?,
     };
@@ -411,27 +531,32 @@ pub fn light<T: Scalar>(
     Ok(out)
 }
 
-/// A spot light at `pos`: its unit axis, cone angles theta and phi (full
-/// angles, degrees) and falloff (1 unless given).
+/// A spot light: its position, unit axis (`direction` is its old name),
+/// cone angles theta and phi (full angles, 30° and 45° unless given) and
+/// falloff (1 unless given).
 fn spot<T: Scalar>(
     l: &LightIn,
     k: &dyn Fn(&str) -> String,
-    pos: V3<T>,
     tr: &mut impl Trace,
 ) -> Result<LightKind<T>> {
-    let axis = need(l, k, &l.axis, "axis")?;
-    let axis = lighting::unit("axis", &k("axis"), &axis, tr)?;
-    let angle = |a: &Option<AngleIn>, key: &str| -> Result<T> {
-        let a = a
-            .as_ref()
-            .ok_or_else(|| Error::why(k(key), ErrMsg::SpotNeeds(key.to_string())))?;
-        a.0.degrees::<T>().map_err(|m| Error::why(k(key), m))
+    let pos = need(l, k, &l.position, "position")?;
+    let (key, axis) = match (&l.axis, &l.direction) {
+        (Some(_), Some(_)) => return Err(Error::why(k("direction"), Twice::Axis)),
+        (None, Some(d)) => ("direction", d),
+        _ => ("axis", need_given(l, k, &l.axis, "axis")?),
+    };
+    let axis = lighting::unit("axis", &k(key), &ev3(&k(key), axis)?, tr)?;
+    let angle = |a: &Option<AngleIn>, key: &str, default: i64| -> Result<T> {
+        match a {
+            Some(a) => a.0.degrees::<T>().map_err(|m| Error::why(k(key), m)),
+            None => Ok(T::from_i64(default)),
+        }
     };
     Ok(LightKind::Spot {
         pos,
         dir: axis,
-        theta: angle(&l.theta, "theta")?,
-        phi: angle(&l.phi, "phi")?,
+        theta: angle(&l.theta, "theta", 30)?,
+        phi: angle(&l.phi, "phi", 45)?,
         falloff: l
             .falloff
             .as_ref()
@@ -441,161 +566,41 @@ fn spot<T: Scalar>(
     })
 }
 
-/// A vector the light's type needs (`key` names it).
+/// A vector the light's type needs (`key` names it), evaluated.
 fn need<T: Scalar>(
     l: &LightIn,
     k: &dyn Fn(&str) -> String,
     v: &Option<Vec3In>,
     key: &str,
 ) -> Result<V3<T>> {
-    let v = v.as_ref().ok_or_else(|| {
-        let kind = format!("{:?}", l.kind).to_lowercase();
-        Error::why(k(key), ErrMsg::Needs(Thing::Light(kind), key.to_string()))
-    })?;
-    ev3(&k(key), v)
+    ev3(&k(key), need_given(l, k, v, key)?)
 }
 
-/// Refuses the first of `keys` that is given but does not apply to the
-/// light's type.
-fn forbid(l: &LightIn, k: &dyn Fn(&str) -> String, keys: &[&str]) -> Result<()> {
-    let given = |key: &str| match key {
-        "position" => l.position.is_some(),
-        "direction" => l.direction.is_some(),
-        "axis" => l.axis.is_some(),
-        "range" => l.range.is_some(),
-        "attenuation" => l.attenuation.is_some(),
-        "theta" => l.theta.is_some(),
-        "phi" => l.phi.is_some(),
-        _ => l.falloff.is_some(),
-    };
-    match keys.iter().find(|key| given(key)) {
-        Some(key) => Err(Error::why(
+/// A vector the light's type needs, as written.
+fn need_given<'a>(
+    l: &LightIn,
+    k: &dyn Fn(&str) -> String,
+    v: &'a Option<Vec3In>,
+    key: &str,
+) -> Result<&'a Vec3In> {
+    v.as_ref().ok_or_else(|| {
+        let kind = Thing::Light(l.kind.name().to_string());
+        Error::why(k(key), ErrMsg::Needs(kind, key.to_string()))
+    })
+}
+
+/// Refuses the first key given that does not apply to the light's type.
+fn forbid(l: &LightIn, k: &dyn Fn(&str) -> String) -> Result<()> {
+    let foreign = l.kind.foreign_keys();
+    match l
+        .given()
+        .iter()
+        .find(|(key, here)| *here && foreign.contains(key))
+    {
+        Some((key, _)) => Err(Error::why(
             k(key),
-            ErrMsg::NotApplicable(key.to_string(), format!("{:?}", l.kind).to_lowercase()),
+            ErrMsg::NotApplicable(key.to_string(), l.kind.name().to_string()),
         )),
         None => Ok(()),
     }
-}
-
-fn rgb_val<T: Scalar>(c: &Rgb<T>) -> Val {
-    Val::List(c.iter().map(Val::num).collect())
-}
-
-fn opt_vec<T: Scalar>(v: &Option<V3<T>>) -> Val {
-    v.as_ref().map(Val::vec3).unwrap_or(Val::Null)
-}
-
-fn opt_num<T: Scalar>(v: &Option<T>) -> Val {
-    v.as_ref().map(Val::num).unwrap_or(Val::Null)
-}
-
-/// Runs the set-up (steps into `rec`) and returns the docs/spec.md §3 shade keys:
-/// `color`, `unclamped`, `ambient`, `diffuse`, `specular`, `R`, `H` (Blinn),
-/// `cos_alpha`, `cos_beta` — per light (lists) when there are several, with
-/// `lights` (attenuation, spot, in range) for lights from a file.
-pub fn run<T: Scalar>(s: &Setup<T>, rec: &mut Recorder) -> Vec<(String, Val)> {
-    run_with(s, &lighting::Rules::default(), rec)
-}
-
-/// [`run`] under the given lighting rules (the mistake catalog's way in).
-pub fn run_with<T: Scalar>(
-    s: &Setup<T>,
-    rules: &lighting::Rules<T>,
-    rec: &mut Recorder,
-) -> Vec<(String, Val)> {
-    let m = &s.material;
-    rec.step(|| material_step(m));
-    let sh = lighting::shade_with_rules(m, &s.lights, &s.global_ambient, &s.surface, rules, rec);
-    let mut out: Vec<(String, Val)> = vec![
-        ("color".into(), rgb_val(&sh.color)),
-        ("unclamped".into(), rgb_val(&sh.unclamped)),
-        ("ambient".into(), rgb_val(&sh.ambient)),
-        ("diffuse".into(), rgb_val(&sh.diffuse)),
-        ("specular".into(), rgb_val(&sh.specular)),
-    ];
-    if sh.emissive.iter().any(|x| !x.is_zero_value()) {
-        out.push(("emissive".into(), rgb_val(&sh.emissive)));
-    }
-    let blinn = m.model == Model::Blinn;
-    if s.lights.len() == 1 {
-        out.push(("R".into(), opt_vec(&sh.r)));
-        if blinn {
-            out.push(("H".into(), opt_vec(&sh.h)));
-            out.push(("N_dot_H".into(), opt_num(&sh.cos_nh)));
-        }
-        out.push(("cos_alpha".into(), opt_num(&sh.cos_alpha)));
-        out.push(("cos_beta".into(), opt_num(&sh.cos_beta)));
-    } else {
-        out.extend(vectors_per_light(s, &sh.view, rules));
-    }
-    if !s.text_light {
-        let per = (0..s.lights.len()).map(|i| light_factors(s, i, &sh.view));
-        out.push(("lights".into(), Val::List(per.collect())));
-    }
-    out
-}
-
-/// The step that shows the material and the model.
-fn material_step<T: Scalar>(m: &Material<T>) -> Step {
-    Step::new(Msg::Material, format!("model = {}", m.model.name()))
-        .val("ka", Val::num(&m.ka))
-        .val("kd", Val::num(&m.kd))
-        .val("ks", Val::num(&m.ks))
-        .val("n", Val::num(&m.shininess))
-        .val("Cs", rgb_val(&m.color))
-        .val("Cspecular", rgb_val(&m.specular))
-        .note(
-            if m.ka == T::one() && m.kd == T::one() && m.ks == T::one() {
-                Msg::MaterialD3d
-            } else {
-                Msg::MaterialText
-            },
-        )
-}
-
-/// With several lights: R (H, N·H), cos α and cos β as lists, one entry per
-/// light (recomputed without steps: they are recorded already).
-fn vectors_per_light<T: Scalar>(
-    s: &Setup<T>,
-    view: &V3<T>,
-    rules: &lighting::Rules<T>,
-) -> Vec<(String, Val)> {
-    let m = &s.material;
-    let n = s.lights.len();
-    let terms: Vec<Option<LightTerm<T>>> = (s.lights.iter().enumerate())
-        .map(|(i, l)| {
-            let at = (i, n);
-            lighting::light_term_with(m, l, at, &s.surface, view, true, rules, &mut NoTrace)
-        })
-        .collect();
-    let list = |f: &dyn Fn(&LightTerm<T>) -> Val| {
-        Val::List(
-            terms
-                .iter()
-                .map(|t| t.as_ref().map(f).unwrap_or(Val::Null))
-                .collect(),
-        )
-    };
-    let mut out = vec![("R".to_string(), list(&|t| opt_vec(&t.r)))];
-    if m.model == Model::Blinn {
-        out.push(("H".into(), list(&|t| opt_vec(&t.h))));
-        out.push(("N_dot_H".into(), list(&|t| opt_num(&t.cos_nh))));
-    }
-    out.push(("cos_alpha".into(), list(&|t| Val::num(&t.cos_alpha))));
-    out.push(("cos_beta".into(), list(&|t| opt_num(&t.cos_beta))));
-    out
-}
-
-/// Light i's range, distance, attenuation and spot factor.
-fn light_factors<T: Scalar>(s: &Setup<T>, i: usize, view: &V3<T>) -> Val {
-    let (m, l, n) = (&s.material, &s.lights[i], s.lights.len());
-    let rules = &lighting::TextRules;
-    let t = lighting::light_term_with(m, l, (i, n), &s.surface, view, false, rules, &mut NoTrace);
-    let or_null = |f: &dyn Fn(&LightTerm<T>) -> Val| t.as_ref().map(f).unwrap_or(Val::Null);
-    Val::Map(vec![
-        ("in_range".into(), Val::Bool(t.is_some())),
-        ("distance".into(), or_null(&|t| opt_num(&t.distance))),
-        ("attenuation".into(), or_null(&|t| Val::num(&t.attenuation))),
-        ("spot".into(), or_null(&|t| Val::num(&t.spot))),
-    ])
 }

@@ -1,8 +1,10 @@
-//! What users type, read and validated: flag values ([`values`]), problem
+//! What users type, read and validated: flag values ([`values`]), answers
+//! ([`answer`]), problem
 //! files ([`problem`]), scene files ([`scene`]), lights files and the
 //! `[shade]` set-up ([`lights`]) and meshes ([`mesh`]). Every error names the
 //! field (and, for files, the line and column).
 
+pub mod answer;
 pub mod fields;
 pub mod lights;
 pub mod mesh;

@@ -199,7 +199,8 @@ impl ProblemIn {
     /// Parses a problem from TOML text; syntax and type errors carry the line
     /// and column (`file:line:col`).
     pub fn parse(text: &str, origin: &str) -> Result<ProblemIn> {
-        let p: ProblemIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
+        let mut p: ProblemIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
+        crate::input::lights::place(&mut p.light, text, origin);
         if let Some(ask) = &p.ask {
             for a in ask {
                 if !PARTS.contains(&a.as_str()) {

@@ -4,19 +4,26 @@
 
 use crate::error::{Error, Result};
 use crate::input::fields::{line_col, toml_error, value_error, Num};
+use crate::input::lights::{light, place, LightIn};
 use crate::input::mesh::{self, Height, Mesh};
 use crate::input::problem::{CameraIn, PerspectiveIn};
 use crate::msg::{Bound, ErrMsg, Thing, TomlErr, Twice};
 use crate::num::vec::V3;
-use crate::stages::lighting::{Light, LightKind, Material, Model};
+use crate::stages::lighting::{Light, Material, Model};
+use crate::stages::trace::NoTrace;
 use nalgebra::{Matrix4, Vector3};
 use serde::de::Deserializer;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
 
-/// The most triangles one object may have (memory: about 350 bytes each).
+/// The most triangles one scene may have, all its objects together
+/// (memory: about 350 bytes each; checked before any mesh is built).
 pub const MAX_TRIANGLES: usize = 4_000_000;
+
+/// The most lights one scene may have: Direct3D 9's usual eight active
+/// lights (the work of a frame grows with lights × pixels lit).
+pub const MAX_LIGHTS: usize = 8;
 
 /// A finite number, evaluated from a TOML number or an expression string
 /// while the file is read (so a bad value is reported at its position).
@@ -161,33 +168,6 @@ enum ModelIn {
     Blinn,
 }
 
-/// `[[light]]`.
-#[derive(Clone, Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct LightIn {
-    #[serde(rename = "type")]
-    kind: LightType,
-    direction: Option<[F; 3]>,
-    position: Option<[F; 3]>,
-    color: Option<Rgb>,
-    ambient: Option<Rgb>,
-    diffuse: Option<Rgb>,
-    specular: Option<Rgb>,
-    attenuation: Option<[F; 3]>,
-    range: Option<Pos>,
-    theta: Option<F>,
-    phi: Option<F>,
-    falloff: Option<F>,
-}
-
-#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
-#[serde(rename_all = "lowercase")]
-enum LightType {
-    Directional,
-    Point,
-    Spot,
-}
-
 /// One step of an object's transform list.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(rename_all = "snake_case", deny_unknown_fields)]
@@ -270,6 +250,7 @@ pub struct SceneIn {
     camera: Option<CameraIn>,
     perspective: Option<PerspectiveIn>,
     material: Option<MaterialIn>,
+    /// The lights, as in problem and lights files.
     #[serde(default)]
     light: Vec<LightIn>,
     #[serde(default)]
@@ -337,6 +318,8 @@ pub struct Scene {
     pub lights: Vec<Light<f32>>,
     /// Objects.
     pub objects: Vec<Object>,
+    /// The files the scene read besides itself (its OBJ meshes).
+    pub files: Vec<PathBuf>,
 }
 
 impl Scene {
@@ -350,7 +333,8 @@ impl Scene {
     /// Parses and validates scene text; `origin` names it in messages and
     /// `dir` is where relative OBJ paths start.
     pub fn parse(text: &str, origin: &str, dir: &Path) -> Result<Scene> {
-        let s: SceneIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
+        let mut s: SceneIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
+        place(&mut s.light, text, origin);
         let at = |span: std::ops::Range<usize>| {
             let (l, c) = line_col(text, span.start);
             format!("{origin}:{l}:{c}")
@@ -373,25 +357,36 @@ impl Scene {
             Some(m) => material(m, Material::text_default([1.0, 1.0, 1.0]))?,
             None => Material::text_default([1.0, 1.0, 1.0]),
         };
+        budget(&s).map_err(|e| e.at(origin))?;
         let mut lights = Vec::new();
         for (i, l) in s.light.iter().enumerate() {
-            let e = |e: Error| {
-                let field = format!("light[{i}].{}", e.field);
-                e.in_field(field)
-            };
-            lights.push(light(l).map_err(placed("[[light]]")).map_err(e)?);
+            // At the renderer's precision: the light `shade --precision f32`
+            // builds from the same table.
+            lights.push(light::<f32>(l, &format!("light[{i}]"), &mut NoTrace)?);
         }
         if s.light.is_empty() {
             lights.push(Light::text_default());
         }
-        let mut objects = Vec::new();
+        let mut objects: Vec<Object> = Vec::new();
         for (i, o) in s.object.iter().enumerate() {
             let obj = object(i, o.get_ref(), &base, dir).map_err(|e| e.at(at(o.span())))?;
             objects.push(obj);
+            // OBJ files count once read: the whole scene stays in budget.
+            let total: usize = objects.iter().map(|o| o.tris.tris.len()).sum();
+            if total > MAX_TRIANGLES {
+                let e = ErrMsg::TooManyTriangles(total, MAX_TRIANGLES);
+                return Err(Error::why("object", e).at(at(o.span())));
+            }
         }
         if objects.is_empty() {
             return Err(Error::why("object", ErrMsg::NoObjects).at(origin));
         }
+        let files = s
+            .object
+            .iter()
+            .filter_map(|o| o.get_ref().path.as_ref())
+            .map(|p| dir.join(p.get_ref()))
+            .collect();
         Ok(Scene {
             title: s.title,
             shading: s.shading.unwrap_or_default(),
@@ -403,6 +398,7 @@ impl Scene {
             view,
             lights,
             objects,
+            files,
         })
     }
 }
@@ -573,66 +569,6 @@ fn material(m: &MaterialIn, base: Material<f32>) -> Result<Material<f32>> {
     Ok(out)
 }
 
-fn light(l: &LightIn) -> Result<Light<f32>> {
-    let mut out = Light::<f32>::text_default();
-    let v = |a: &[F; 3]| Vector3::new(a[0].0 as f32, a[1].0 as f32, a[2].0 as f32);
-    let need = |o: &Option<[F; 3]>, f: &str| {
-        o.as_ref()
-            .map(v)
-            .ok_or_else(|| Error::why(f, ErrMsg::NeededForLight))
-    };
-    out.kind = match l.kind {
-        LightType::Directional => LightKind::Directional {
-            dir: l
-                .direction
-                .as_ref()
-                .map(v)
-                .unwrap_or(Vector3::new(0.0, 0.0, 1.0)),
-        },
-        LightType::Point => LightKind::Point {
-            pos: need(&l.position, "position")?,
-        },
-        LightType::Spot => LightKind::Spot {
-            pos: need(&l.position, "position")?,
-            dir: need(&l.direction, "direction")?,
-            theta: l.theta.map_or(30.0, |x| x.0 as f32),
-            phi: l.phi.map_or(45.0, |x| x.0 as f32),
-            falloff: l.falloff.map_or(1.0, |x| x.0 as f32),
-        },
-    };
-    // shade takes unit directions.
-    match &mut out.kind {
-        LightKind::Directional { dir } | LightKind::Spot { dir, .. } => {
-            let n = dir.norm();
-            if n == 0.0 {
-                return Err(Error::why("direction", ErrMsg::ZeroDirection));
-            }
-            *dir /= n;
-        }
-        LightKind::Point { .. } => {}
-    }
-    if let Some(c) = l.color {
-        out.diffuse = c.0;
-        out.specular = c.0;
-    }
-    if let Some(c) = l.ambient {
-        out.ambient = c.0;
-    }
-    if let Some(c) = l.diffuse {
-        out.diffuse = c.0;
-    }
-    if let Some(c) = l.specular {
-        out.specular = c.0;
-    }
-    if let Some(a) = &l.attenuation {
-        out.attenuation = a.map(|x| x.0 as f32);
-    }
-    out.range = l.range.map(|r| r.0 as f32);
-    out.validate("light")
-        .map_err(|e| Error::said(e.field.trim_start_matches("light.").to_string(), e.message))?;
-    Ok(out)
-}
-
 /// The matrix of one transform step.
 pub fn transform_matrix(t: &TransformIn) -> Matrix4<f64> {
     match t {
@@ -652,13 +588,6 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
     check_fields(o, &tname, &f)?;
     let mesh = object_mesh(o, &tname, &f, dir)?;
     mesh.validate(&field)?;
-    let ntris: usize = mesh.faces.iter().map(|f| f.len() - 2).sum();
-    if ntris > MAX_TRIANGLES {
-        return Err(Error::why(
-            field,
-            ErrMsg::TooManyTriangles(ntris, MAX_TRIANGLES),
-        ));
-    }
     let mut model = Matrix4::identity();
     for t in &o.transform {
         model = transform_matrix(t) * model;
@@ -679,6 +608,47 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
         bounds: mesh.bounds(),
         mesh,
     })
+}
+
+/// The scene's budgets, checked before any light, mesh or height formula
+/// is evaluated: at most [`MAX_LIGHTS`] lights, and at most
+/// [`MAX_TRIANGLES`] triangles from the shapes' own counts (an OBJ file's
+/// are counted when it is read).
+fn budget(s: &SceneIn) -> Result<()> {
+    if s.light.len() > MAX_LIGHTS {
+        return Err(Error::why(
+            "light",
+            ErrMsg::TooManyLights(s.light.len(), MAX_LIGHTS),
+        ));
+    }
+    let total = (s.object.iter()).fold(0u64, |t, o| t.saturating_add(shape_triangles(o.get_ref())));
+    if total > MAX_TRIANGLES as u64 {
+        return Err(Error::why(
+            "object",
+            ErrMsg::TooManyTriangles(total as usize, MAX_TRIANGLES),
+        ));
+    }
+    Ok(())
+}
+
+/// The triangles a shape's mesh will have, from its counts alone (0 for an
+/// OBJ file, and for counts missing: their errors come later):
+/// cone 2n − 2 (n sides, an n-gon base), cylinder 4n − 4, sphere
+/// 2·slices·(stacks − 1), box 12, plane 2(nx − 1)(nz − 1).
+fn shape_triangles(o: &ObjectIn) -> u64 {
+    let n = o.n.map_or(0, |c| u64::from(c.0));
+    let count = |g: Option<GridCount>| g.map_or(0, |c| u64::from(c.0));
+    let stacks = o.stacks.map_or(n, |c| u64::from(c.0));
+    match o.kind {
+        ObjectType::Cone => (2 * n).saturating_sub(2),
+        ObjectType::Cylinder => (4 * n).saturating_sub(4),
+        ObjectType::Sphere => (2 * n).saturating_mul(stacks.saturating_sub(1)),
+        ObjectType::Box => 12,
+        ObjectType::Plane => {
+            (2 * count(o.nx).saturating_sub(1)).saturating_mul(count(o.nz).saturating_sub(1))
+        }
+        ObjectType::Obj => 0,
+    }
 }
 
 /// Refuses a field that the object's type does not have.

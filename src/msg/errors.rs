@@ -135,6 +135,8 @@ pub enum Twice {
     View,
     /// L and [[light]] tables.
     Light,
+    /// A spot light's axis and its old name, direction.
+    Axis,
     /// [tilt] and [camera].
     TiltCamera,
     /// color, face_colors, vertex_colors.
@@ -217,14 +219,26 @@ pub enum ErrMsg {
     CannotWrite(String, IoWhy),
     /// A directory that cannot be created: path, why.
     CannotCreate(String, IoWhy),
-    /// The PNG cannot be written to standard output: why.
+    /// Standard output cannot be written: why.
     CannotWriteStdout(IoWhy),
-    /// A file that exists and is never overwritten: path.
-    Exists(String),
+    /// Standard output is closed (`>&-`).
+    StdoutClosed,
     /// A file that exists; --force overwrites: path.
     ExistsForce(String),
+    /// An output that names a folder, not a file: path.
+    NamesFolder(String),
+    /// An output that is a symbolic link: path.
+    IsLink(String),
+    /// An output that is one of the command's inputs: path.
+    IsInput(String),
+    /// An entry of generate's output folder it did not write: path, marker.
+    NotOwn(String, String),
     /// Not a directory: path.
     NotDirectory(String),
+    /// An answer file larger than the most read: path, size, the most.
+    AnswerFileTooLarge(String, usize, usize),
+    /// Files of a class that could not be marked: how many, of how many, which.
+    NotMarked(usize, usize, String),
     /// A lights file without [[light]]: path.
     NoLightTable(String),
     /// Cs missing.
@@ -237,20 +251,14 @@ pub enum ErrMsg {
     NoLight,
     /// A light at the surface point.
     LightAtPoint,
-    /// A spot light needs a cone angle key.
-    SpotNeeds(String),
     /// A light or object needs a key.
     Needs(Thing, String),
     /// A key that does not apply to a light of a kind: key, kind.
     NotApplicable(String, String),
     /// An object type without such a key: type, key, its keys.
     NoSuchKey(String, String, String),
-    /// Needed for this type of light.
-    NeededForLight,
     /// Needed to render.
     NeededToRender,
-    /// A zero direction.
-    ZeroDirection,
     /// An OBJ file that cannot be read: path, why.
     ObjUnreadable(String, IoWhy),
     /// An OBJ file that is not valid: path, the reader's error by name
@@ -264,8 +272,10 @@ pub enum ErrMsg {
     FaceVertex,
     /// A height formula that gives a value not finite.
     FormulaNotFinite,
-    /// More triangles than the renderer takes: how many, the most.
+    /// More triangles in a scene than the renderer takes: how many, the most.
     TooManyTriangles(usize, usize),
+    /// More lights in a scene than the renderer takes: how many, the most.
+    TooManyLights(usize, usize),
     /// A colour list that is empty.
     NeedsColour,
     /// A scene without objects.
@@ -311,6 +321,18 @@ pub enum ErrMsg {
     CsvAndJson,
     /// A directory without answer files.
     NoAnswerFiles(String),
+    /// An exam folder (or one of its variant folders) without problem-01.toml: the folder.
+    NoExam(String),
+    /// An exam's answer file without `variant = N`: the exam's variants.
+    NoVariant(usize),
+    /// A variant that is not one of the exam's: as given, the exam's variants.
+    NotAVariant(String, usize),
+    /// An answer in an exam's file outside its problems' tables: the key, the problems.
+    NotAProblemOfExam(String, String),
+    /// `--report` with an unknown extension: the path.
+    ReportFormat(String),
+    /// `--report` without a folder of answers.
+    ReportNeedsClass,
     /// A pixel outside the image: x, y, width, height.
     PixelOutside(u32, u32, u32, u32),
     /// Not X,Y.

@@ -21,10 +21,18 @@ pub enum Panel {
     NearWindow,
     /// The viewport with the pixel positions.
     Viewport,
-    /// The clipping box and segment.
+    /// The clipping box and segment, in 3D.
     Clip,
-    /// The surface and the lighting vectors.
+    /// The segment along its parameter t, with the intersections tried.
+    ClipAlong,
+    /// The lighting vectors in the plane of incidence (one light).
     Shade,
+    /// The plane of incidence of light k (of several).
+    ShadeLight(usize),
+    /// The plane of R and V (when V leaves the plane of incidence).
+    ShadeRV,
+    /// The plane of N and H (when H leaves the plane of incidence).
+    ShadeNH,
 }
 
 /// A word or short phrase written inside a figure.
@@ -44,6 +52,18 @@ pub enum FigWord {
     Zoomed,
     /// Two vectors that coincide, drawn side by side.
     Coincide,
+    /// A region code (the text's term; "outcode" in English).
+    Outcode,
+    /// An intersection that bounds the kept part.
+    Kept,
+    /// An intersection outside the box (its part is cut off).
+    CutOff,
+    /// The angle between N and H (Blinn's), as a label names it.
+    AngleNH,
+    /// Both ends' codes are 000000: the segment is kept whole.
+    Accepted,
+    /// No intersection tried is in the box: the segment misses it.
+    Missed,
 }
 
 /// A figure's message.
@@ -55,6 +75,25 @@ pub enum FigureMsg {
     Desc(Panel),
     /// A word inside a figure.
     Word(FigWord),
-    /// The file asked for exists (never overwritten): its path.
-    Exists(String),
+    /// The view a 3D panel is drawn in: the direction toward the viewer
+    /// `(x, y, z)`, its azimuth and its elevation (degrees), as written.
+    View {
+        /// The direction.
+        from: String,
+        /// The azimuth.
+        az: String,
+        /// The elevation.
+        el: String,
+    },
+    /// A vector (its name) that leaves the plane of incidence by an angle
+    /// (degrees, as written), drawn in a further panel.
+    OffPlane(String, String),
+    /// A plane of the clip box by its bit (0 = left … 5 = back), with its
+    /// equation (`x = 3`) when given: `x = 3 kanan`, `x = 3 (right)`.
+    Plane(usize, Option<String>),
+    /// Light k (from 1) is out of range: it has no plane drawn.
+    OutOfRange(usize),
+    /// The ends' codes ANDed (not 000000): the segment is rejected without
+    /// intersections.
+    Rejected(String),
 }

@@ -8,6 +8,9 @@ pub enum Said {
     /// An outcode bit's test: whether it holds, the comparison (`x > xmax`)
     /// and its values (`4 > 3`).
     BitTest(bool, String, String),
+    /// An outcode bit's test asked, not answered (a hint): the comparison
+    /// and its values.
+    BitQuestion(String, String),
     /// One frame's time: milliseconds, millions of pixels per second, and
     /// the PNG encoding's milliseconds (each already written).
     FrameTime(String, String, String),

@@ -195,16 +195,17 @@ pub fn strip_outer(text: &str) -> &str {
     t
 }
 
-/// Parses `x,y,z` (or `(x,y,z)`, `[x,y,z]`) into three expressions.
+/// Parses `x,y,z` (or `(x,y,z)`, `[x,y,z]`, or `x; y; z` with decimal
+/// commas) into three expressions ([`components`]).
 pub fn parse_vec3(text: &str) -> Result<[Expr; 3], NumErr> {
-    let parts = split_top_level(strip_outer(text));
+    let parts = components(text);
     if parts.len() != 3 {
         return Err(NumErr::Count(parts.len(), text.to_string()));
     }
     let mut out = Vec::with_capacity(3);
-    for (k, part) in parts.iter().enumerate() {
-        let e = parse_expr(part)
-            .map_err(|m| NumErr::Component(k, part.trim().to_string(), Box::new(m)))?;
+    for part in &parts {
+        let e = parse_expr(part.text)
+            .map_err(|m| NumErr::Component(out.len(), part.text.trim().to_string(), Box::new(m)))?;
         out.push(e);
     }
     let [x, y, z]: [Expr; 3] = out
@@ -213,23 +214,71 @@ pub fn parse_vec3(text: &str) -> Result<[Expr; 3], NumErr> {
     Ok([x, y, z])
 }
 
-/// Splits on commas that are not inside parentheses.
+/// One part of a list as written, and where it starts in the whole text
+/// (in characters, so that a reader's column can name the whole text's).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Part<'a> {
+    /// The part's text (not trimmed).
+    pub text: &'a str,
+    /// How many characters of the whole text come before it.
+    pub at: usize,
+}
+
+/// The parts of a list as people write it, in one pass: one pair of
+/// parentheses or brackets around all of it is dropped ([`strip_outer`]);
+/// then, when a `;` stands outside every parenthesis, the parts are
+/// separated by `;` (and a comma inside a part is a decimal mark:
+/// `(0,7071; 0; 0,7071)`, or a matrix's rows `1, 0; 0, 1`); otherwise by
+/// the commas outside parentheses (`1/sqrt(2), 0, -1/sqrt(2)`).
+pub fn components(text: &str) -> Vec<Part<'_>> {
+    let inner = strip_outer(text);
+    // where `inner` starts in `text`, in characters
+    let lead = text[..text.len() - text.trim_start().len()].chars().count()
+        + usize::from(inner.len() < text.trim().len());
+    let sep = if split_at(inner, ';').len() > 1 {
+        ';'
+    } else {
+        ','
+    };
+    split_at(inner, sep)
+        .into_iter()
+        .map(|p| Part {
+            text: p.text,
+            at: lead + p.at,
+        })
+        .collect()
+}
+
+/// Splits on commas that are not inside parentheses or brackets.
 pub fn split_top_level(text: &str) -> Vec<&str> {
+    split_at(text, ',').into_iter().map(|p| p.text).collect()
+}
+
+/// Splits on `sep` outside parentheses and brackets, keeping where each part
+/// starts (in characters).
+fn split_at(text: &str, sep: char) -> Vec<Part<'_>> {
     let mut parts = Vec::new();
     let mut depth = 0i32;
-    let mut start = 0;
-    for (i, c) in text.char_indices() {
+    let (mut start, mut start_chars) = (0, 0);
+    for (n, (i, c)) in text.char_indices().enumerate() {
         match c {
-            '(' => depth += 1,
-            ')' => depth -= 1,
-            ',' if depth == 0 => {
-                parts.push(&text[start..i]);
-                start = i + 1;
+            '(' | '[' => depth += 1,
+            ')' | ']' => depth -= 1,
+            c if c == sep && depth == 0 => {
+                parts.push(Part {
+                    text: &text[start..i],
+                    at: start_chars,
+                });
+                start = i + c.len_utf8();
+                start_chars = n + 1;
             }
             _ => {}
         }
     }
-    parts.push(&text[start..]);
+    parts.push(Part {
+        text: &text[start..],
+        at: start_chars,
+    });
     parts
 }
 
@@ -500,7 +549,12 @@ impl Parser<'_> {
             p.i - s
         };
         let mut n = digits(self);
-        if self.peek() == Some('.') {
+        // The decimal mark: a point, or a comma between digits (`0,1`, as
+        // Indonesian writes it); a comma anywhere else is no part of a number.
+        let comma = self.peek() == Some(',')
+            && n > 0
+            && self.s.get(self.i + 1).is_some_and(|c| c.is_ascii_digit());
+        if self.peek() == Some('.') || comma {
             self.i += 1;
             n += digits(self);
         }
@@ -518,7 +572,10 @@ impl Parser<'_> {
                 self.i = save;
             }
         }
-        Ok(Expr::Lit(self.s[start..self.i].iter().collect()))
+        let lit = self.s[start..self.i].iter();
+        Ok(Expr::Lit(
+            lit.map(|&c| if c == ',' { '.' } else { c }).collect(),
+        ))
     }
 }
 

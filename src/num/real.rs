@@ -12,7 +12,7 @@ mod format;
 mod surd;
 mod trig;
 
-pub use surd::Surd;
+pub use surd::{Surd, MAX_EXACT_TERMS};
 
 use std::cmp::Ordering;
 use std::fmt;
@@ -180,23 +180,54 @@ impl From<i64> for Real {
     }
 }
 
+thread_local! {
+    /// Whether an exact result was left approximate for its size since
+    /// [`take_grew_too_large`] last looked (on this thread).
+    static GREW: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Whether, since the last call, an exact value grew past
+/// [`surd::MAX_EXACT_TERMS`] terms and was left approximate (so the
+/// caller can say so); clears the mark.
+pub fn take_grew_too_large() -> bool {
+    GREW.with(|g| g.replace(false))
+}
+
+/// An exact result kept exact while it has at most
+/// [`surd::MAX_EXACT_TERMS`] terms; beyond that its f64 value, marked
+/// approximate (the precision ladder's step down, noted by [`GREW`]).
+fn bounded(s: Surd) -> Real {
+    if s.len() <= surd::MAX_EXACT_TERMS {
+        Real::Exact(s)
+    } else {
+        GREW.with(|g| g.set(true));
+        Real::Approx(s.to_f64())
+    }
+}
+
 fn add_ref(a: &Real, b: &Real) -> Real {
     match (a, b) {
-        (Real::Exact(x), Real::Exact(y)) => Real::Exact(x + y),
+        (Real::Exact(x), Real::Exact(y)) => bounded(x + y),
         _ => Real::Approx(a.to_f64() + b.to_f64()),
     }
 }
 
 fn sub_ref(a: &Real, b: &Real) -> Real {
     match (a, b) {
-        (Real::Exact(x), Real::Exact(y)) => Real::Exact(x - y),
+        (Real::Exact(x), Real::Exact(y)) => bounded(x - y),
         _ => Real::Approx(a.to_f64() - b.to_f64()),
     }
 }
 
 fn mul_ref(a: &Real, b: &Real) -> Real {
     match (a, b) {
-        (Real::Exact(x), Real::Exact(y)) => Real::Exact(x * y),
+        (Real::Exact(x), Real::Exact(y)) if x.len() * y.len() <= surd::MAX_PRODUCTS => {
+            bounded(x * y)
+        }
+        (Real::Exact(_), Real::Exact(_)) => {
+            GREW.with(|g| g.set(true));
+            Real::Approx(a.to_f64() * b.to_f64())
+        }
         _ => Real::Approx(a.to_f64() * b.to_f64()),
     }
 }
@@ -204,9 +235,14 @@ fn mul_ref(a: &Real, b: &Real) -> Real {
 fn div_ref(a: &Real, b: &Real) -> Real {
     match (a, b) {
         (Real::Exact(x), Real::Exact(y)) => match x.checked_div(y) {
-            Some(q) => Real::Exact(q),
+            Some(q) => bounded(q),
             // Exact zero divisor: ±∞ or NaN, as x / +0.0 is in IEEE.
-            None => Real::Approx(a.to_f64() / b.to_f64()),
+            None if y.is_empty() => Real::Approx(a.to_f64() / b.to_f64()),
+            // Too large to rationalize within the bound.
+            None => {
+                GREW.with(|g| g.set(true));
+                Real::Approx(a.to_f64() / b.to_f64())
+            }
         },
         _ => Real::Approx(a.to_f64() / b.to_f64()),
     }

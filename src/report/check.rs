@@ -60,36 +60,6 @@ fn verdict_words(v: Verdict, lang: Lang) -> String {
     }
 }
 
-/// The headings of a class's table (`check --answers DIR`), one per column.
-pub fn class_header(lang: Lang) -> Vec<&'static str> {
-    let en = [
-        "student",
-        "score",
-        "correct",
-        "too coarse",
-        "wrong",
-        "missing",
-        "unparseable",
-        "follow-through",
-        "mistakes",
-    ];
-    let id = [
-        "mahasiswa",
-        "nilai",
-        "benar",
-        "terlalu kasar",
-        "salah",
-        "tidak dijawab",
-        "tidak terbaca",
-        "follow-through",
-        "kesalahan konsep",
-    ];
-    match lang {
-        Lang::En => en.to_vec(),
-        Lang::Id => id.to_vec(),
-    }
-}
-
 /// The marking as text: a table of answers, the mistakes found, the score.
 pub fn to_text(m: &Marking, style: &Style) -> String {
     use comfy_table::{presets, ContentArrangement, Table};
@@ -171,13 +141,12 @@ fn diagnoses_text(m: &Marking, style: &Style) -> String {
         .collect();
     if !undiagnosed.is_empty() {
         out.push_str(&format!(
-            "\n{}: {} {}\n",
+            "\n{} {}\n",
             t_(
-                "No known mistake reproduces",
-                "Tidak ada kesalahan yang dikenal yang menghasilkan"
+                "No known mistake explains",
+                "Tidak ada kesalahan yang dikenal yang menjelaskan"
             ),
             undiagnosed.join(", "),
-            t_("(an arithmetic slip?)", "(salah hitung?)")
         ));
     }
     if !m.unknown.is_empty() {

@@ -8,29 +8,34 @@
 //! together when a quiz draws at random, so a lecturer adds one variant's
 //! category whole (the Moodle XML export keeps each variant in one question).
 //!
+//! The writer only writes: the blanks are the tutor's
+//! ([`crate::tutor::generate::quiz`]), the words those of the Moodle XML
+//! writer. GIFT carries no files, so the general feedback says where the
+//! figures are (in the Moodle XML of the same exam).
+//!
 //! Escaping: text is HTML (`[html]`, with `&`, `<`, `>` escaped), then every
 //! character GIFT reads as syntax, `~ = # { } :` and the backslash, is
 //! preceded by a backslash. Each question is one line (a blank line ends a
 //! question).
 
-use crate::report::lang::Lang;
+use crate::report::escape;
+use crate::report::lang::{tr, Lang};
 use crate::report::moodle::{
-    esc, esc_text, feedback, intro_html, leaf_labels, number, question_name, solution_html,
-    tolerance_text, Exams,
+    category, esc, esc_text, feedback, intro_html, number, question_name, solution_html,
+    tolerance_text, Written,
 };
-use crate::report::Style;
-use crate::tutor::generate::quiz::{blanks, Blank, Typed};
-use crate::tutor::generate::Generated;
+use crate::stages::trace::Val;
+use crate::tutor::generate::quiz::{Blank, Question, Quiz, Typed};
 use std::fmt::Write as _;
 
 /// The whole GIFT file.
-pub fn gift(e: &Exams, st: &Style) -> String {
+pub fn gift(q: &Quiz, w: &Written) -> String {
     let mut s = String::new();
-    for i in 0..e.count() {
-        for (v, exam) in e.exams.iter().enumerate() {
-            if let Some(g) = exam.get(i) {
-                let _ = write!(s, "$CATEGORY: {}/{:02}\n\n", e.category(i), v + 1);
-                s.push_str(&variant_questions(g, i, v, e.rel, st));
+    for i in 0..q.count() {
+        for (v, exam) in q.variants.iter().enumerate() {
+            if let Some(question) = exam.get(i) {
+                let _ = write!(s, "$CATEGORY: {}/{:02}\n\n", category(q, i), v + 1);
+                s.push_str(&variant_questions(question, (i, v), q, w));
             }
         }
     }
@@ -38,26 +43,85 @@ pub fn gift(e: &Exams, st: &Style) -> String {
 }
 
 /// The questions of one variant of one problem: one per blank.
-fn variant_questions(g: &Generated, i: usize, v: usize, rel: f64, st: &Style) -> String {
-    let asked = blanks(g, rel);
-    let general = gift_escape(&solution_html(&g.report, &asked, st));
-    let intro = intro_html(g, rel, st.lang);
-    let name = question_name(g, i, v, st.lang);
+fn variant_questions(question: &Question, (i, v): (usize, usize), q: &Quiz, w: &Written) -> String {
+    let lang = w.style.lang;
+    let general = gift_escape(&solution_html(question, &figures_note(lang), w.style));
+    let intro = intro_html(question, q, w);
+    let name = question_name(&question.problem, i, v, lang);
     let mut s = String::new();
-    for a in &asked {
-        for (label, b) in leaf_labels(&a.key, &a.value).iter().zip(&a.blanks) {
+    for a in &question.asked {
+        for (label, b) in leaf_labels(&a.key, &a.value, lang).iter().zip(&a.blanks) {
             let text = format!("{intro}<p>{} = ?</p>", esc_text(label));
             let _ = write!(
                 s,
                 "::{}::[html]{}{{{} ####{}}}\n\n",
                 gift_escape(&format!("{name} — {label}")),
                 gift_escape(&text),
-                answers(b, st.lang),
+                answers(b, lang),
                 general
             );
         }
     }
     s
+}
+
+/// Where the figures are: GIFT carries no files, the Moodle XML of the same
+/// exam does.
+fn figures_note(lang: Lang) -> String {
+    format!(
+        "<p><i>{}</i></p>",
+        tr(
+            lang,
+            "The figures of this problem are in the Moodle XML of the same exam (grafika generate … --format moodle): GIFT cannot carry files.",
+            "Gambar soal ini ada di Moodle XML dari ujian yang sama (grafika generate … --format moodle): GIFT tidak dapat membawa berkas.",
+        )
+    )
+}
+
+/// The names of a value's leaves, depth first, as the steps name them: the
+/// answer's name (`n` for `view.n`; the whole key where the last name alone
+/// would not say which answer, `view.points.A`), then the component
+/// (`n, component y`; `clip.segment, point 2, component z`).
+pub fn leaf_labels(key: &str, v: &Val, lang: Lang) -> Vec<String> {
+    let name = match key.split('.').collect::<Vec<_>>()[..] {
+        [_, last] => last.to_string(),
+        _ => key.to_string(),
+    };
+    let colour = ["ambient", "diffuse", "specular", "color"]
+        .iter()
+        .any(|c| key == format!("shade.{c}"));
+    let mut out = Vec::new();
+    labels(&name, v, colour, lang, &mut out);
+    out
+}
+
+fn labels(name: &str, v: &Val, colour: bool, lang: Lang, out: &mut Vec<String>) {
+    match v {
+        Val::List(items) if items.iter().all(|x| matches!(x, Val::Num(_))) => {
+            let axes: &[&str] = if colour {
+                &["r", "g", "b"]
+            } else {
+                &["x", "y", "z", "w"]
+            };
+            for (k, _) in items.iter().enumerate() {
+                let axis = axes.get(k).map_or((k + 1).to_string(), |a| a.to_string());
+                out.push(format!(
+                    "{name}, {} {axis}",
+                    tr(lang, "component", "komponen")
+                ));
+            }
+        }
+        Val::List(items) => {
+            for (k, x) in items.iter().enumerate() {
+                let part = format!("{name}, {} {}", tr(lang, "point", "titik"), k + 1);
+                labels(&part, x, colour, lang, out);
+            }
+        }
+        Val::Map(kv) => kv
+            .iter()
+            .for_each(|(k, x)| labels(&format!("{name}, {k}"), x, colour, lang, out)),
+        _ => out.push(name.to_string()),
+    }
 }
 
 /// The answers of one blank, right first.
@@ -77,22 +141,32 @@ fn answers(b: &Blank, lang: Lang) -> String {
     s
 }
 
-/// GIFT text: a backslash before each of `~ = # { } :` and `\`, and line
-/// breaks as `\n`.
+/// GIFT text: a backslash before each of `~ = # { } :` and `\`, line
+/// breaks as `\n`, and the active characters (control characters,
+/// bidirectional overrides) shown as `\u{XX}` as in every other file
+/// grafika writes (report/escape.rs), their backslash and braces escaped.
 pub fn gift_escape(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
         match c {
-            '~' | '=' | '#' | '{' | '}' | ':' | '\\' => {
-                out.push('\\');
-                out.push(c);
-            }
             '\n' => out.push_str("\\n"),
             '\r' => {}
-            _ => out.push(c),
+            c if escape::is_active(c) => {
+                let shown = escape::visible(c.encode_utf8(&mut [0; 4])).into_owned();
+                shown.chars().for_each(|e| push_gift(&mut out, e));
+            }
+            c => push_gift(&mut out, c),
         }
     }
     out
+}
+
+/// `c`, after a backslash when GIFT gives it a meaning.
+fn push_gift(out: &mut String, c: char) {
+    if matches!(c, '~' | '=' | '#' | '{' | '}' | ':' | '\\') {
+        out.push('\\');
+    }
+    out.push(c);
 }
 
 #[cfg(test)]
@@ -106,5 +180,37 @@ mod tests {
             "a\\~b\\=c\\#d\\{e\\}f\\:g\\\\h"
         );
         assert_eq!(gift_escape("one\ntwo"), "one\\ntwo");
+        // ESC would act on a terminal showing the file; U+202E would
+        // reorder the line in Moodle's editor.
+        assert_eq!(
+            gift_escape("a\u{1b}[2J\u{202e}b"),
+            "a\\\\u\\{1B\\}[2J\\\\u\\{202E\\}b"
+        );
+    }
+
+    #[test]
+    fn leaves_are_named_as_the_steps_name_them() {
+        let num = |x: f64| {
+            Val::Num(crate::num::Shown {
+                value: x,
+                exact: None,
+                pretty: None,
+            })
+        };
+        let v3 = Val::List(vec![num(0.0), num(1.0), num(0.0)]);
+        let id = leaf_labels("view.n", &v3, Lang::Id);
+        assert_eq!(id, ["n, komponen x", "n, komponen y", "n, komponen z"]);
+        let c = leaf_labels("shade.color", &v3, Lang::En);
+        assert_eq!(c[2], "color, component b");
+        let p = leaf_labels("view.points.A", &v3, Lang::En);
+        assert_eq!(p[0], "view.points.A, component x");
+        let seg = Val::List(vec![v3.clone(), v3]);
+        let s = leaf_labels("clip.segment", &seg, Lang::Id);
+        assert_eq!(s.len(), 6);
+        assert_eq!(s[5], "segment, titik 2, komponen z");
+        assert_eq!(
+            leaf_labels("clip.status", &Val::Text("clipped".into()), Lang::En),
+            ["status"]
+        );
     }
 }

@@ -2,7 +2,8 @@
 //! Indonesia (the course's own). JSON keys, codes and numbers never depend on
 //! it; only the words, and the decimal mark of numbers in text, do.
 //!
-//! Chosen by `--lang`, else `GRAFIKA_LANG`, else the locale: a value of
+//! Chosen by `--lang`, else `GRAFIKA_LANG` (a code, `id` or `en`, or a
+//! locale name such as `id_ID.UTF-8`), else the locale: a value of
 //! `LC_ALL`, `LC_MESSAGES` or `LANG` (the first one set, in that order)
 //! starting with `id` selects Indonesian, anything else English.
 
@@ -45,10 +46,29 @@ impl Lang {
         }
     }
 
+    /// The language of `GRAFIKA_LANG`: a code (`id`, `en`) or a locale
+    /// name of either language (`id_ID.UTF-8`, `en_GB`, `C`); `None` for
+    /// anything else (an empty value, `fr_FR`).
+    fn from_grafika_lang(v: &str) -> Option<Lang> {
+        let v = v.trim();
+        let l = v.to_ascii_lowercase();
+        match Lang::from_code(v) {
+            Some(lang) => Some(lang),
+            None if l.starts_with("id_") || l.starts_with("id-") || l.starts_with("id.") => {
+                Some(Lang::Id)
+            }
+            None if l.starts_with("en_") || l.starts_with("en-") || l.starts_with("en.") => {
+                Some(Lang::En)
+            }
+            None if l == "c" || l == "posix" || l.starts_with("c.") => Some(Lang::En),
+            None => None,
+        }
+    }
+
     /// The language when no `--lang` is given, from the environment (the
     /// function `var` reads a variable; `std::env::var` in the program).
     pub fn from_env(var: impl Fn(&str) -> Option<String>) -> Lang {
-        if let Some(l) = var("GRAFIKA_LANG").and_then(|v| Lang::from_code(&v)) {
+        if let Some(l) = var("GRAFIKA_LANG").and_then(|v| Lang::from_grafika_lang(&v)) {
             return l;
         }
         ["LC_ALL", "LC_MESSAGES", "LANG"]
@@ -78,6 +98,25 @@ pub fn decimal(s: &str, lang: Lang) -> String {
     }
 }
 
+/// At most this many characters of a message are printed: an error about
+/// a 100 KB input quotes its start and end, not all of it.
+pub const MAX_MESSAGE: usize = 300;
+
+/// `message` cut to [`MAX_MESSAGE`] characters, its middle replaced by the
+/// number of characters left out.
+pub fn cut_message(message: &str, lang: Lang) -> String {
+    let n = message.chars().count();
+    if n <= MAX_MESSAGE {
+        return message.to_string();
+    }
+    let keep = MAX_MESSAGE / 2;
+    let head: String = message.chars().take(keep).collect();
+    let tail: String = message.chars().skip(n - keep).collect();
+    let cut = n - 2 * keep;
+    let said = tr(lang, "characters cut", "karakter dipotong");
+    format!("{head} … ({cut} {said}) … {tail}")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -104,6 +143,21 @@ mod tests {
         assert_eq!(Lang::from_env(env(&e)), Lang::En);
         let e = [("GRAFIKA_LANG", "id"), ("LC_ALL", "C")];
         assert_eq!(Lang::from_env(env(&e)), Lang::Id);
+    }
+
+    #[test]
+    fn grafika_lang_takes_a_locale_name_too() {
+        // Issue 28: GRAFIKA_LANG=id_ID.UTF-8 fell back to English.
+        let e = [("GRAFIKA_LANG", "id_ID.UTF-8"), ("LANG", "C")];
+        assert_eq!(Lang::from_env(env(&e)), Lang::Id);
+        let e = [("GRAFIKA_LANG", "en_US.UTF-8"), ("LANG", "id_ID.UTF-8")];
+        assert_eq!(Lang::from_env(env(&e)), Lang::En);
+        // Not a language grafika speaks: the locale decides.
+        let e = [("GRAFIKA_LANG", "fr_FR.UTF-8"), ("LANG", "id_ID.UTF-8")];
+        assert_eq!(Lang::from_env(env(&e)), Lang::Id);
+        // `idx` is neither a code nor a locale name.
+        let e = [("GRAFIKA_LANG", "idx"), ("LANG", "C")];
+        assert_eq!(Lang::from_env(env(&e)), Lang::En);
     }
 
     #[test]

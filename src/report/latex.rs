@@ -117,6 +117,8 @@ fn symbol(c: char) -> Piece {
         '²' => math("^2"),
         '³' => math("^3"),
         '⁰' => math("^0"),
+        'ⁿ' => math("^{n}"),
+        'Σ' => math("\\Sigma "),
         '₀' => math("_0"),
         '₁' => math("_1"),
         '₂' => math("_2"),
@@ -158,6 +160,8 @@ mod tests {
             "$-\\sqrt{2}$/60 $\\approx $ $-$0.02357"
         );
         assert_eq!(latex_text("√(a+b)"), "$\\sqrt{a+b}$");
+        // The shading steps' sum over the lights and the specular power.
+        assert_eq!(latex_text("Σ (N·H)ⁿ"), "$\\Sigma $ (N$\\cdot $H)$^{n}$");
         assert_eq!(latex_text("x_1 50%"), "x\\_1 50\\%");
         assert_eq!(latex_math("−√2/2"), "-\\sqrt{2}/2");
         assert!(latex_text("V = Mcam⁻¹, Rᵀ, 22.5°, u·v, a × b, ⇒").is_ascii());

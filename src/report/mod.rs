@@ -3,7 +3,10 @@
 
 pub mod bench;
 pub mod check;
+pub mod class;
+pub mod csv;
 pub mod doc;
+pub mod escape;
 pub mod figure;
 pub mod gift;
 pub mod html;
@@ -91,10 +94,11 @@ impl Style {
             .collect();
         match nums {
             Some(ns) => {
+                // An exact value beyond the doubles is shown by its exact form.
                 let has_form = ns.iter().any(|s| {
-                    s.pretty
-                        .as_deref()
-                        .is_some_and(|p| !crate::num::format::is_plain_decimal(p))
+                    s.pretty.as_deref().is_some_and(|p| {
+                        !crate::num::format::is_plain_decimal(p) || !s.value.is_finite()
+                    })
                 });
                 let decs: Vec<String> = ns
                     .iter()
@@ -300,6 +304,7 @@ impl Style {
             let body: Vec<String> = table.lines().map(|l| format!("{pad}  {l}")).collect();
             format!("{indent}{name} =\n{}", body.join("\n"))
         } else {
+            // "top ≈ 0.04663", not "top = ≈ 0.04663" (no exact form)
             let val = self.val_inline(v);
             match val.strip_prefix("≈ ") {
                 Some(rest) => format!("{indent}{name} ≈ {rest}"),

@@ -3,12 +3,18 @@
 //! `$course$/grafika/<topic>/<NN>` (written before its questions), so that a
 //! quiz can draw one variant per student ("Add a random question").
 //!
-//! Each number is a NUMERICAL blank `{1:NUMERICAL:=x:t#…~%0%w:t'#feedback}`
-//! with the key's value x, its absolute tolerance t
-//! ([`crate::tutor::generate::quiz`]), and a 0 % answer at each value w a
-//! catalog mistake gives, whose feedback names the mistake; outcodes and the
-//! clipping status are SHORTANSWER blanks. The worked solution is the
-//! general feedback (HTML).
+//! The writer only writes: the blanks (values, tolerances, mistaken values)
+//! are the tutor's ([`crate::tutor::generate::quiz`]), the figures the
+//! figure module's (`report::figure`). Each number is a NUMERICAL blank
+//! `{1:NUMERICAL:=x:t#…~%0%w:t'#feedback}`, each 0 % answer's feedback
+//! naming the catalog mistakes that give it; outcodes and the clipping
+//! status are SHORTANSWER blanks. The instruction line says how to type:
+//! significant figures, the decimal mark ([`Decimal`]: Moodle reads a
+//! typed number by its interface language's mark), half a pixel for pixel
+//! positions. The general feedback holds the answers, the problem's
+//! figures (SVG files embedded as Moodle exports them, `<file
+//! encoding="base64">` referred to as `@@PLUGINFILE@@/name`) and the worked
+//! solution, its lines wrapped to [`WIDTH`] characters.
 //!
 //! Escaping, in the order Moodle undoes it: text is HTML-escaped (`&`, `<`,
 //! `>`); inside a blank, Moodle decodes HTML entities once before storing the
@@ -18,51 +24,63 @@
 //! text and general feedback go into CDATA sections, a `]]>` inside split
 //! across two sections.
 
-use crate::report::lang::{tr, Lang};
+use crate::report::figure::{drawings::drawings, svg::to_svg};
+use crate::report::lang::{decimal, tr, Lang};
 use crate::report::mistakes::mistake_text;
 use crate::report::words::words;
 use crate::report::Style;
-use crate::stages::trace::{Report, Val};
-use crate::tutor::generate::quiz::{blanks, Asked, Blank, Typed, Wrong};
-use crate::tutor::generate::{topics_name, Generated, Topic};
+use crate::stages::trace::Val;
+use crate::tutor::generate::quiz::{Blank, Question, Quiz, Typed, Typing, Wrong};
+use crate::tutor::generate::{topics_name, Generated};
+use base64::Engine as _;
 use std::fmt::Write as _;
 
-/// The problems of every variant: `exams[v][i]` is problem i of variant v;
-/// problem i is on `topics[i % topics.len()]`.
-pub struct Exams<'a> {
-    /// The variants' problems.
-    pub exams: &'a [Vec<Generated>],
-    /// The topics, in the order the problems cycle through them.
-    pub topics: &'a [Topic],
-    /// The relative tolerance r (> 0).
-    pub rel: f64,
+/// The widest line of the worked solution, in characters: a question in
+/// review fits a 1100-px window with the course's side panels open.
+pub const WIDTH: usize = 72;
+
+/// The decimal mark students type: a Moodle reads a typed number by the
+/// mark of its interface language (English: `0,5` is 5, the comma a
+/// thousands separator; Indonesian: both `0,5` and `0.5` are 0.5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Decimal {
+    /// `0.5`: for a Moodle in English (the common case).
+    #[default]
+    Point,
+    /// `0,5`: for a Moodle with the Indonesian language pack.
+    Comma,
 }
 
-impl Exams<'_> {
-    /// The number of problems of each variant.
-    pub fn count(&self) -> usize {
-        self.exams.first().map_or(0, Vec::len)
-    }
+/// How a quiz is written: the words' style and the decimal mark to type.
+#[derive(Clone, Debug)]
+pub struct Written<'a> {
+    /// Language, digits of the worked solution.
+    pub style: &'a Style,
+    /// The mark the instruction line tells students to type.
+    pub decimal: Decimal,
+}
 
-    /// The category of problem i (from 0): `$course$/grafika/<topic>/<NN>`.
-    pub fn category(&self, i: usize) -> String {
-        let topic = self.topics[i % self.topics.len().max(1)];
-        format!("$course$/grafika/{}/{:02}", topics_name(&[topic]), i + 1)
-    }
+/// The category of problem i (from 0): `$course$/grafika/<topic>/<NN>`.
+pub fn category(q: &Quiz, i: usize) -> String {
+    format!(
+        "$course$/grafika/{}/{:02}",
+        topics_name(&[q.topic(i)]),
+        i + 1
+    )
 }
 
 /// The whole Moodle XML file.
-pub fn moodle_xml(e: &Exams, st: &Style) -> String {
+pub fn moodle_xml(q: &Quiz, w: &Written) -> String {
     let mut s = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<quiz>\n");
-    for i in 0..e.count() {
+    for i in 0..q.count() {
         let _ = write!(
             s,
             "  <question type=\"category\">\n    <category>\n      <text>{}</text>\n    </category>\n    <info format=\"html\">\n      <text></text>\n    </info>\n  </question>\n",
-            xml_text(&e.category(i))
+            xml_text(&category(q, i))
         );
-        for (v, exam) in e.exams.iter().enumerate() {
-            if let Some(g) = exam.get(i) {
-                s.push_str(&cloze_question(g, i, v, e.rel, st));
+        for (v, exam) in q.variants.iter().enumerate() {
+            if let Some(question) = exam.get(i) {
+                s.push_str(&cloze_question(question, (i, v), q, w));
             }
         }
     }
@@ -70,21 +88,51 @@ pub fn moodle_xml(e: &Exams, st: &Style) -> String {
     s
 }
 
-/// One Cloze question.
-fn cloze_question(g: &Generated, i: usize, v: usize, rel: f64, st: &Style) -> String {
-    let asked = blanks(g, rel);
-    let mut text = intro_html(g, rel, st.lang);
-    for a in &asked {
-        let mut next = a.blanks.iter().map(|b| cloze_blank(b, st.lang));
+/// One Cloze question: problem i of variant v.
+fn cloze_question(question: &Question, (i, v): (usize, usize), q: &Quiz, w: &Written) -> String {
+    let lang = w.style.lang;
+    let mut text = intro_html(question, q, w);
+    for a in &question.asked {
+        let mut next = a.blanks.iter().map(|b| cloze_blank(b, lang));
         let shape = shape_html(&a.value, &mut || next.next().unwrap_or_default());
         let _ = write!(text, "<p>{} = {shape}</p>", esc_text(&a.key));
     }
+    let (figures, files) = embedded_figures(&question.problem, w.style);
     format!(
-        "  <question type=\"cloze\">\n    <name>\n      <text>{}</text>\n    </name>\n    <questiontext format=\"html\">\n      <text>{}</text>\n    </questiontext>\n    <generalfeedback format=\"html\">\n      <text>{}</text>\n    </generalfeedback>\n    <penalty>0.3333333</penalty>\n    <hidden>0</hidden>\n  </question>\n",
-        xml_text(&question_name(g, i, v, st.lang)),
+        "  <question type=\"cloze\">\n    <name>\n      <text>{}</text>\n    </name>\n    <questiontext format=\"html\">\n      <text>{}</text>\n    </questiontext>\n    <generalfeedback format=\"html\">\n      <text>{}</text>\n{files}    </generalfeedback>\n    <penalty>0.3333333</penalty>\n    <hidden>0</hidden>\n  </question>\n",
+        xml_text(&question_name(&question.problem, i, v, lang)),
         cdata(&text),
-        cdata(&solution_html(&g.report, &asked, st)),
+        cdata(&solution_html(question, &figures, w.style)),
     )
+}
+
+/// The problem's figures as images of files in the question (`<img
+/// src="@@PLUGINFILE@@/figure-1-view.svg">`, named as `solve --figure`
+/// names its files), and the `<file>` elements that carry those files.
+fn embedded_figures(g: &Generated, st: &Style) -> (String, String) {
+    let mut html = String::new();
+    let mut files = String::new();
+    for (k, d) in drawings(&g.report, st).iter().enumerate() {
+        let name = format!("figure-{}-{}.svg", k + 1, d.part);
+        let title = esc(&d.title());
+        let _ = write!(
+            html,
+            "<p><img src=\"@@PLUGINFILE@@/{name}\" alt=\"{}\" style=\"max-width: 100%; height: auto;\"></p><p><i>{title}</i></p>",
+            title.replace('"', "&quot;")
+        );
+        let b64 = base64::engine::general_purpose::STANDARD.encode(to_svg(d));
+        let _ = writeln!(
+            files,
+            "      <file name=\"{name}\" path=\"/\" encoding=\"base64\">{b64}</file>"
+        );
+    }
+    let heading = tr(st.lang, "Figures", "Gambar");
+    let html = if html.is_empty() {
+        html
+    } else {
+        format!("<h3>{heading}</h3>{html}")
+    };
+    (html, files)
 }
 
 /// The question's name: `Problem 01, variant 03: <title>`.
@@ -100,37 +148,61 @@ pub fn question_name(g: &Generated, i: usize, v: usize, lang: Lang) -> String {
 }
 
 /// The statement and how to type the answers, as HTML.
-pub fn intro_html(g: &Generated, rel: f64, lang: Lang) -> String {
-    let statement = words(&g.statement, lang);
+pub fn intro_html(question: &Question, q: &Quiz, w: &Written) -> String {
+    let lang = w.style.lang;
+    let statement = words(&question.problem.statement, lang);
     format!(
         "<p>{}</p><p><i>{}</i></p>",
         esc_text(statement.trim()),
-        esc(&instructions(rel, lang))
+        esc(&instructions(&question.typing, q, lang, w.decimal))
     )
 }
 
-/// How to type the answers: significant figures for the tolerance, the
-/// outcode and status conventions.
-pub fn instructions(rel: f64, lang: Lang) -> String {
-    let figs = sig_figs(rel);
-    let mut pct = number(rel * 100.0);
-    if lang == Lang::Id {
-        pct = pct.replace('.', ",");
-    }
-    match lang {
+/// How to type the answers: decimals (never exact forms) with the
+/// significant figures of the tolerance and the decimal mark of the site,
+/// half a pixel for pixel positions; outcodes and the clipping status where
+/// the question asks for them.
+pub fn instructions(kinds: &Typing, q: &Quiz, lang: Lang, mark: Decimal) -> String {
+    let figs = q.figures;
+    let pct = decimal(&number(q.rel * 100.0), lang);
+    let pixel = match (kinds.pixels, lang) {
+        (false, _) => "",
+        (true, Lang::En) => "; a pixel position within half a pixel, so a whole pixel is right",
+        (true, Lang::Id) => {
+            "; posisi piksel boleh berselisih setengah piksel, jadi piksel bulat dinilai benar"
+        }
+    };
+    let mark = match (mark, lang) {
+        (Decimal::Point, Lang::En) => "a decimal point (0.5, not 0,5)",
+        (Decimal::Comma, Lang::En) => "a decimal comma (0,5)",
+        (Decimal::Point, Lang::Id) => "titik desimal (0.5, bukan 0,5)",
+        (Decimal::Comma, Lang::Id) => "koma desimal (0,5)",
+    };
+    let mut s = match lang {
         Lang::En => format!(
-            "Type numbers as decimals with at least {figs} significant figures (a number within {pct} % of the key's is right); outcodes as six bits, bit 1 rightmost (e.g. 000010); the clipping status as accepted, rejected or clipped, and the segment that is left as none when there is none."
+            "Type each number as a decimal with at least {figs} significant figures, not as an exact form such as (√2−1)/2, and with {mark} (a number within {pct} % of the key's is right{pixel})."
         ),
         Lang::Id => format!(
-            "Tulis bilangan sebagai desimal dengan sedikitnya {figs} angka penting (bilangan yang berselisih paling banyak {pct} % dari kunci dinilai benar); outcode sebagai enam bit, bit 1 paling kanan (mis. 000010); status kliping sebagai accepted, rejected atau clipped, dan sisa segmen sebagai none bila tidak ada."
+            "Tulis setiap bilangan sebagai desimal dengan sedikitnya {figs} angka penting, bukan sebagai bentuk eksak seperti (√2−1)/2, dengan {mark} (bilangan yang berselisih paling banyak {pct} % dari kunci dinilai benar{pixel})."
         ),
+    };
+    if kinds.outcodes {
+        s.push(' ');
+        s.push_str(tr(
+            lang,
+            "Type outcodes as six bits, bit 1 rightmost (e.g. 000010).",
+            "Tulis outcode sebagai enam bit, bit 1 paling kanan (mis. 000010).",
+        ));
     }
-}
-
-/// The significant figures that keep a rounded decimal within the relative
-/// tolerance r: n figures err by at most 5·10⁻ⁿ relatively, so n = ⌈log₁₀(5/r)⌉.
-pub fn sig_figs(rel: f64) -> u32 {
-    (5.0 / rel).log10().ceil().clamp(1.0, 17.0) as u32
+    if kinds.status {
+        s.push(' ');
+        s.push_str(tr(
+            lang,
+            "Type the clipping status as accepted, rejected or clipped, and the segment that is left as none when there is none.",
+            "Tulis status clipping sebagai accepted, rejected atau clipped, dan sisa segmen sebagai none bila tidak ada.",
+        ));
+    }
+    s
 }
 
 /// A value's shape with its leaves drawn by `leaf`: a number or code, a
@@ -172,22 +244,6 @@ fn is_square_matrix(rows: &[Val]) -> bool {
         && rows.iter().all(|r| {
             matches!(r, Val::List(c) if c.len() == rows.len() && c.iter().all(|x| matches!(x, Val::Num(_))))
         })
-}
-
-/// The labels of a value's leaves, depth first: `view.u[1]`, `clip.segment[2][3]`.
-pub fn leaf_labels(key: &str, v: &Val) -> Vec<String> {
-    match v {
-        Val::List(items) => items
-            .iter()
-            .enumerate()
-            .flat_map(|(k, x)| leaf_labels(&format!("{key}[{}]", k + 1), x))
-            .collect(),
-        Val::Map(kv) => kv
-            .iter()
-            .flat_map(|(k, x)| leaf_labels(&format!("{key}.{k}"), x))
-            .collect(),
-        _ => vec![key.to_string()],
-    }
 }
 
 /// One blank in Cloze syntax.
@@ -246,10 +302,13 @@ pub fn feedback(w: &Wrong, lang: Lang) -> String {
     )
 }
 
-/// The general feedback: the answers, then the worked solution, as HTML.
-pub fn solution_html(r: &Report, asked: &[Asked], st: &Style) -> String {
+/// The general feedback: the answers, the figures (HTML given), then the
+/// worked solution, its sections numbered from 1 within the question and
+/// its lines wrapped to [`WIDTH`] characters.
+pub fn solution_html(question: &Question, figures: &str, st: &Style) -> String {
     let mut s = format!("<h3>{}</h3><ul>", tr(st.lang, "Answers", "Jawaban"));
-    for a in asked {
+    for a in &question.asked {
+        // one line flows in the list; a matrix keeps its lines
         let line = esc(&st.named("", &a.key, &a.value));
         if line.contains('\n') {
             let _ = write!(s, "<li><pre>{line}</pre></li>");
@@ -259,25 +318,22 @@ pub fn solution_html(r: &Report, asked: &[Asked], st: &Style) -> String {
     }
     let _ = write!(
         s,
-        "</ul><h3>{}</h3>",
+        "</ul>{figures}<h3>{}</h3>",
         tr(st.lang, "Worked solution", "Penyelesaian")
     );
     let mut section: Option<&crate::msg::Msg> = None;
-    for (k, step) in r.steps.iter().enumerate() {
+    let mut parts = 0;
+    for (k, step) in question.problem.report.steps.iter().enumerate() {
         if step.section.as_ref() != section {
             section = step.section.as_ref();
             if let Some(sec) = section {
-                let _ = write!(s, "<h4>{}</h4>", esc(&st.w(sec)));
+                parts += 1;
+                let _ = write!(
+                    s,
+                    "<h4>{}</h4>",
+                    esc(&part_heading(parts, &st.w(sec), st.lang))
+                );
             }
-        }
-        let mut lines: Vec<String> = Vec::new();
-        if !step.formula.is_empty() {
-            lines.push(st.w(&step.formula));
-        }
-        lines.extend(step.values.iter().map(|(n, v)| st.named("", n, v)));
-        lines.extend(step.result.iter().map(|(n, v)| st.named("⇒ ", n, v)));
-        if let Some(n) = &step.note {
-            lines.push(format!("({})", st.w(n)));
         }
         let _ = write!(
             s,
@@ -285,17 +341,49 @@ pub fn solution_html(r: &Report, asked: &[Asked], st: &Style) -> String {
             tr(st.lang, "Step", "Langkah"),
             k + 1,
             esc(&st.w(&step.title)),
-            esc(&lines.join("\n"))
+            esc(&wrap(st.step_body(step).trim_end()))
         );
     }
     s
 }
 
-/// HTML (and XML) text: `&`, `<`, `>` escaped.
+/// A section of the worked solution as a part of the question, numbered
+/// from 1: `Part 1: window and clipping` for `Step 4: window and clipping`
+/// (the pipeline's step in the text means nothing in a question that asks
+/// only for the window).
+pub fn part_heading(k: usize, section: &str, lang: Lang) -> String {
+    // "Step 4: …", "Tahap 4: …": a word and a number before the colon
+    let name = section
+        .split_once(": ")
+        .filter(|(head, _)| {
+            let mut w = head.split(' ');
+            let (word, num, rest) = (w.next(), w.next(), w.next());
+            word.is_some() && num.is_some_and(|n| n.parse::<u32>().is_ok()) && rest.is_none()
+        })
+        .map_or(section, |(_, name)| name);
+    format!("{} {k}: {name}", tr(lang, "Part", "Bagian"))
+}
+
+/// Text wrapped to [`WIDTH`] characters, each wrapped line's continuation
+/// indented by two spaces more than the line.
+pub fn wrap(text: &str) -> String {
+    let mut out: Vec<String> = Vec::new();
+    for line in text.lines() {
+        let indent = " ".repeat(line.len() - line.trim_start().len() + 2);
+        let opts = textwrap::Options::new(WIDTH).subsequent_indent(&indent);
+        out.extend(
+            textwrap::wrap(line, opts)
+                .into_iter()
+                .map(|l| l.into_owned()),
+        );
+    }
+    out.join("\n")
+}
+
+/// HTML (and XML) text: `&`, `<`, `>` escaped, control characters shown
+/// ([`crate::report::escape::xml_text`]).
 pub fn esc(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
+    crate::report::escape::xml_text(s)
 }
 
 /// Question text: HTML-escaped, and braces as entities, so that no text
@@ -310,7 +398,9 @@ fn xml_text(s: &str) -> String {
 }
 
 /// A CDATA section holding `s`; a `]]>` inside is split across two sections.
+/// Control characters are shown as `\u{XX}` (XML allows none, CDATA or not).
 pub fn cdata(s: &str) -> String {
+    let s = crate::report::escape::visible(s);
     format!("<![CDATA[{}]]>", s.replace("]]>", "]]]]><![CDATA[>"))
 }
 
@@ -324,14 +414,14 @@ pub fn number(x: f64) -> String {
     plain(x < 0.0, &digits, exp)
 }
 
-/// A tolerance t as a plain decimal rounded up to two significant figures,
-/// so that it is never below t (but for rounding noise of 1e-9 relative) and
-/// never 0 for t > 0.
+/// A tolerance t as a plain decimal rounded up to three significant
+/// figures (at most 1 % over t), so that it is never below t (but for
+/// rounding noise of 1e-9 relative) and never 0 for t > 0.
 pub fn tolerance_text(t: f64) -> String {
     if !(t > 0.0 && t.is_finite()) {
         return "0".into();
     }
-    let (digits, exp) = sci(t, 1);
+    let (digits, exp) = sci(t, 2);
     let shown: f64 = format!("{digits}e{exp}").parse().unwrap_or(0.0);
     // (rounding noise of the value, a relative 1e-9, does not round up)
     if shown >= t * (1.0 - 1e-9) {
@@ -391,21 +481,44 @@ mod tests {
     #[test]
     fn tolerances_round_up_and_are_never_zero() {
         assert_eq!(tolerance_text(0.0008), "0.0008");
-        // 2.357e-5 rounds to 2.4e-5 (up)
-        assert_eq!(tolerance_text(2.3570226e-5), "0.000024");
-        // 1.234e-3 would round down to 1.2e-3: written 1.3e-3
-        assert_eq!(tolerance_text(1.234e-3), "0.0013");
-        assert_eq!(tolerance_text(9.96e-3), "0.01");
+        // 2.3570e-5 rounds to 2.36e-5 (up)
+        assert_eq!(tolerance_text(2.3570226e-5), "0.0000236");
+        // 1.2341e-3 would round down to 1.23e-3: written 1.24e-3
+        assert_eq!(tolerance_text(1.2341e-3), "0.00124");
+        assert_eq!(tolerance_text(9.996e-3), "0.01");
         assert_eq!(tolerance_text(1e-30), format!("0.{}1", "0".repeat(29)));
-        // 0.64 computed as 0.6400000000000001: 0.00064, not 0.00065
+        // 0.64 computed as 0.6400000000000001: 0.00064, not 0.000641
         assert_eq!(tolerance_text(1e-3 * (0.8 * 0.8)), "0.00064");
+        // half a pixel widened by a rounding of 0.003 px
+        assert_eq!(tolerance_text(0.503), "0.503");
     }
 
     #[test]
-    fn four_figures_for_a_tenth_of_a_percent() {
-        assert_eq!(sig_figs(1e-3), 4);
-        assert_eq!(sig_figs(1e-2), 3);
-        assert_eq!(sig_figs(5e-3), 3);
+    fn sections_are_parts_numbered_within_the_question() {
+        let en = part_heading(1, "Step 4: window and clipping", Lang::En);
+        assert_eq!(en, "Part 1: window and clipping");
+        let id = part_heading(2, "Tahap 4: bidang pandang dan clipping", Lang::Id);
+        assert_eq!(id, "Bagian 2: bidang pandang dan clipping");
+        // a section without a step number keeps its whole name
+        let light = part_heading(3, "Lighting: Phong", Lang::En);
+        assert_eq!(light, "Part 3: Lighting: Phong");
+    }
+
+    #[test]
+    fn long_lines_wrap_with_a_hanging_indent() {
+        let legend = "bit 1 x<xmin (left) · bit 2 x>xmax (right) · bit 3 y<ymin (bottom) · bit 4 y>ymax (top) · bit 5 z<zmin (front) · bit 6 z>zmax (back)";
+        let w = wrap(&format!("short\n{legend}"));
+        let lines: Vec<&str> = w.lines().collect();
+        assert_eq!(lines[0], "short");
+        assert!(lines.len() >= 3, "{w}");
+        assert!(lines.iter().all(|l| l.chars().count() <= WIDTH), "{w}");
+        assert!(
+            lines[2].starts_with("  ") && !lines[2].starts_with("   "),
+            "{w}"
+        );
+        // no word is lost or split
+        let words = |s: &str| s.split_whitespace().map(String::from).collect::<Vec<_>>();
+        assert_eq!(words(&w)[1..], words(legend)[..]);
     }
 
     #[test]

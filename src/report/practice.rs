@@ -2,9 +2,11 @@
 //! 80 columns, colour only when asked for) and for scripts (one JSON object
 //! per event, JSON Lines, with the keys of `check`).
 
+use crate::input::answer::Read;
+use crate::num::Real;
 use crate::report::lang::{tr, Lang};
 use crate::report::mistakes::mistake_text;
-use crate::report::{exact_json, step_json, value_json, Style};
+use crate::report::{exact_json, fmt_dec, step_json, value_json, Style};
 use crate::stages::trace::{Step, Val};
 use crate::tutor::practice::{Again, Event, Outcome, Plan, Summary};
 use serde_json::{json, Value};
@@ -236,12 +238,22 @@ fn verdict_head(o: &Outcome, lang: Lang) -> (Tone, String) {
             } else {
                 shape
             };
+            let why = crate::report::words::words(&o.note, lang);
+            let why = if why.is_empty() {
+                String::new()
+            } else {
+                format!(" {why};")
+            };
             (
                 Tone::Bad,
                 match lang {
-                    Lang::En => format!("✗ cannot read this answer: write {how}, or a command"),
+                    Lang::En => {
+                        format!("✗ cannot read this answer:{why} write {how}, or a command")
+                    }
                     Lang::Id => {
-                        format!("✗ jawaban ini tidak terbaca: tulis {how}, atau sebuah perintah")
+                        format!(
+                            "✗ jawaban ini tidak terbaca:{why} tulis {how}, atau sebuah perintah"
+                        )
                     }
                 },
             )
@@ -251,9 +263,26 @@ fn verdict_head(o: &Outcome, lang: Lang) -> (Tone, String) {
 
 fn verdict_text(o: &Outcome, look: &Look) -> String {
     let lang = look.style.lang;
+    let mut out = String::new();
+    if let Some(r) = &o.read {
+        let read = read_as(r, &look.style);
+        if !same_text(&read, o.given.as_deref().unwrap_or_default()) {
+            let line = format!("{} {read}", look.tr("read as", "dibaca sebagai"));
+            out.push_str(&look.paint(Tone::Quiet, &wrap_after("  ", &line, "    ")));
+            out.push('\n');
+        }
+    }
     let (tone, head) = verdict_head(o, lang);
-    let mut out = look.paint(tone, &wrap_after("  ", &head, "    "));
+    out.push_str(&look.paint(tone, &wrap_after("  ", &head, "    ")));
     out.push('\n');
+    if o.retry {
+        let line = look.tr(
+            "(a second try: shown, and counted apart; the first verdict stands for the score)",
+            "(percobaan kedua: ditampilkan dan dihitung terpisah; penilaian pertama yang dipakai untuk nilai)",
+        );
+        out.push_str(&look.paint(Tone::Quiet, &wrap_after("    ", line, "    ")));
+        out.push('\n');
+    }
     for m in &o.mistakes {
         let line = format!(
             "{}: {} [{}]",
@@ -263,16 +292,68 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
         );
         out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
     }
+    if let Some(why) = &o.why {
+        let line = format!(
+            "{}: {}",
+            tr(
+                lang,
+                "The source printed this, and it is wrong",
+                "Sumber mencetak nilai ini, dan nilai itu salah"
+            ),
+            look.style.w(why)
+        );
+        out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
+    }
     if o.code == "wrong" && o.mistakes.is_empty() {
         let tip = tr(
             lang,
-            "Type back to try this value again (hint and show help there).",
-            "Ketik back untuk mencoba nilai ini lagi (hint dan show membantu di sana).",
+            "No known mistake explains this answer. Type back to try this value again (hint and show help there).",
+            "Tidak ada kesalahan yang dikenal yang menjelaskan jawaban ini. Ketik back untuk mencoba nilai ini lagi (hint dan show membantu di sana).",
         );
         out.push_str(&look.paint(Tone::Quiet, &wrap_after("    ", tip, "    ")));
         out.push('\n');
     }
     out
+}
+
+/// How an answer was read, in the student's language: each number in its
+/// exact form (`√2/2` for `1/sqrt(2)`) or as the decimal written, a list
+/// in parentheses, a code or status as grafika spells it.
+pub fn read_as(r: &Read, style: &Style) -> String {
+    fn en(r: &Read) -> String {
+        match r {
+            Read::Num(n) if n.last_digit.is_some() => n.expr.to_string(),
+            Read::Num(n) => n
+                .expr
+                .eval::<Real>()
+                .ok()
+                .and_then(|x| x.exact_pretty())
+                .unwrap_or_else(|| format!("≈ {}", fmt_dec(n.value, 6))),
+            Read::List(items) => {
+                format!("({})", items.iter().map(en).collect::<Vec<_>>().join(", "))
+            }
+            Read::Word(w) => w.clone(),
+            Read::None => "none".to_string(),
+        }
+    }
+    style.dec(en(r).replace('-', "−"))
+}
+
+/// Whether the reading says nothing the line typed does not: the same
+/// characters but for spaces, brackets, the minus sign's form and the
+/// list separator.
+fn same_text(read: &str, typed: &str) -> bool {
+    let bare = |t: &str| -> String {
+        t.chars()
+            .filter(|c| !c.is_whitespace() && !matches!(c, '(' | ')' | '[' | ']'))
+            .map(|c| match c {
+                '-' => '−',
+                ';' => ',',
+                c => c,
+            })
+            .collect()
+    };
+    bare(read) == bare(typed)
 }
 
 fn hint_text(level: u8, step: Option<&Step>, look: &Look) -> String {
@@ -288,8 +369,13 @@ fn hint_text(level: u8, step: Option<&Step>, look: &Look) -> String {
     let mut out = match (look.style.lang, level) {
         (Lang::En, 1) => format!("  Hint 1: {}\n", look.style.w(&s.title)),
         (Lang::Id, 1) => format!("  Petunjuk 1: {}\n", look.style.w(&s.title)),
-        (Lang::En, _) => "  Hint 2: the values substituted\n".to_string(),
-        (Lang::Id, _) => "  Petunjuk 2: nilai-nilai yang disubstitusikan\n".to_string(),
+        (Lang::En, _) => {
+            "  Hint 2: the values to substitute (the last step is yours)\n".to_string()
+        }
+        (Lang::Id, _) => {
+            "  Petunjuk 2: nilai-nilai yang disubstitusikan (langkah terakhir milikmu)\n"
+                .to_string()
+        }
     };
     if !s.formula.is_empty() {
         out.push_str(&format!("    {}\n", look.style.w(&s.formula)));
@@ -298,6 +384,13 @@ fn hint_text(level: u8, step: Option<&Step>, look: &Look) -> String {
         for (k, v) in &s.values {
             out.push_str(&look.style.named("    ", k, v));
             out.push('\n');
+        }
+        if s.values.is_empty() {
+            let none = look.tr(
+                "(every value of this step would give the answer away: substitute the problem's own numbers, or type show)",
+                "(setiap nilai langkah ini akan membocorkan jawabannya: substitusikan bilangan dari soal, atau ketik show)",
+            );
+            out.push_str(&format!("{}\n", wrap_after("    ", none, "    ")));
         }
     }
     out
@@ -321,6 +414,18 @@ fn summary_text(s: &Summary, look: &Look) -> String {
             s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
         ),
     };
+    if s.retries > 0 {
+        out.push_str(&match lang {
+            Lang::En => format!(
+                "  second tries {} ({} right), not in the score\n",
+                s.retries, s.retries_correct
+            ),
+            Lang::Id => format!(
+                "  percobaan kedua {} ({} benar), tidak masuk nilai\n",
+                s.retries, s.retries_correct
+            ),
+        });
+    }
     if !s.mistakes.is_empty() {
         out.push_str(&format!(
             "  {}\n",
@@ -410,10 +515,13 @@ pub fn event_json(ev: &Event, lang: Lang) -> Value {
         }),
         Event::Verdict(o) => json!({
             "event": "verdict", "key": o.key, "given": o.given,
+            "read": o.read.as_ref().map(|r| value_json(&r.value())),
             "verdict": o.verdict.as_str(), "code": o.code,
             "expected": value(&o.expected), "note": w(&o.note),
             "mistakes": o.mistakes.iter().map(|m| m.code).collect::<Vec<_>>(),
+            "why": o.why.as_ref().map(w),
             "follow_through": o.follow_through.as_ref().map(value_json),
+            "retry": o.retry,
         }),
         Event::Hint { key, level, step } => json!({
             "event": "hint", "key": key, "level": level,
@@ -447,6 +555,7 @@ fn summary_json(s: &Summary, lang: Lang) -> Value {
             "revealed": s.revealed, "unanswered": s.unanswered,
         },
         "hints": s.hints,
+        "retries": { "answered": s.retries, "correct": s.retries_correct },
         "mistakes": s.mistakes.iter().map(|(m, keys)| json!({
             "code": m.code, "mistake": mistake_text(m, lang), "keys": keys,
         })).collect::<Vec<_>>(),

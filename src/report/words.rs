@@ -39,9 +39,11 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         | Msg::SecLightFace
         | Msg::SecLightVertex(_)
         | Msg::SecLightPixel => section(m, id),
-        Msg::UpParallel(_) | Msg::BehindWarn(_) | Msg::ErrFewDistinct(..) | Msg::ErrHtmlCommand => {
-            warning(m, lang)
-        }
+        Msg::UpParallel(_)
+        | Msg::BehindWarn(_)
+        | Msg::ExactTooLarge(_)
+        | Msg::ErrFewDistinct(..)
+        | Msg::ErrHtmlCommand => warning(m, lang),
         Msg::DrawnTitle(t) => drawn::title(*t, lang),
         Msg::Pixel(p) => pixel::words(p, lang),
         Msg::Statement(s) => drawn::statement(s, lang),
@@ -162,6 +164,13 @@ fn warning(m: &Msg, lang: Lang) -> String {
                 format!("{n} berada di belakang pusat proyeksi: bayangannya terbalik dan tidak terlihat")
             } else {
                 format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen")
+            }
+        }
+        Msg::ExactTooLarge(n) => {
+            if id {
+                format!("nilai eksak yang akan memuat lebih dari {n} suku (banyak akar kuadrat yang berbeda) dihitung dengan f64 dan ditandai ≈, begitu pula yang diturunkan darinya")
+            } else {
+                format!("exact values that would hold more than {n} terms (many different square roots) were computed in f64 and are marked ≈, as is what follows from them")
             }
         }
         Msg::ErrFewDistinct(topic, level, n) => {
@@ -825,19 +834,24 @@ fn check_note(m: &Msg, id: bool) -> Option<String> {
         ),
         Msg::EmptyAnswer => p("empty answer", "jawaban kosong"),
         Msg::NoAnswer => p("no answer given", "tidak ada jawaban"),
-        Msg::NotShapeAsked => p(
-            "not of the shape asked",
-            "bentuknya tidak seperti yang diminta",
+        Msg::AnswerTooLong(n, max) => f(
+            format!("the answer has {n} characters; at most {max} are read"),
+            format!("jawaban ini memuat {n} karakter; paling banyak {max} yang dibaca"),
+        ),
+        Msg::WithinPixel => p("within half a pixel", "dalam setengah piksel"),
+        Msg::NotAnOutcode(t) => f(
+            format!("`{t}` is not an outcode: write six binary digits, bit 1 rightmost (001000)"),
+            format!("`{t}` bukan region code: tulis enam digit biner, bit 1 paling kanan (001000)"),
+        ),
+        Msg::NotAStatus(t) => f(
+            format!("`{t}` is not a status: write accepted, rejected or clipped"),
+            format!("`{t}` bukan status: tulis diterima, ditolak atau di-clip (accepted, rejected, clipped)"),
         ),
         Msg::FollowThrough => p(
             "right given the earlier answers (follow-through)",
             "benar menurut jawaban sebelumnya (follow-through)",
         ),
         Msg::Exact => p("exact", "tepat"),
-        Msg::NotANumber(t, n) => f(
-            format!("`{t}` is not a number (expected {n} values)"),
-            format!("`{t}` bukan bilangan (seharusnya {n} nilai)"),
-        ),
         Msg::Rounded(s) => f(
             format!("rounded to {s} significant figures"),
             format!("dibulatkan ke {s} angka penting"),
@@ -967,6 +981,7 @@ mod tests {
             Msg::Inside(true, false),
             Msg::UpParallel(1e-9),
             Msg::BehindWarn(s()),
+            Msg::ExactTooLarge(64),
             Msg::ExpectOne,
             Msg::ExpectList(3),
             Msg::CountMismatch(3, 2),
@@ -976,15 +991,17 @@ mod tests {
             Msg::SeveralAnswers,
             Msg::EmptyAnswer,
             Msg::NoAnswer,
+            Msg::AnswerTooLong(5000, 4000),
             Msg::Unreadable(crate::msg::NumErr::Empty),
             Msg::Exact,
-            Msg::NotANumber(s(), 3),
             Msg::Rounded(4),
             Msg::RoundedCoarse(1, 3),
             Msg::SigCoarse(2, 3),
             Msg::WithinPct("0.5".into()),
             Msg::Parts(vec![("x".into(), Msg::Exact)]),
-            Msg::NotShapeAsked,
+            Msg::WithinPixel,
+            Msg::NotAnOutcode(s()),
+            Msg::NotAStatus(s()),
             Msg::FollowThrough,
             Msg::ErrSamePoint("(1, 2, 3)".into()),
             Msg::ErrUpZero,
@@ -1060,6 +1077,7 @@ mod tests {
         for s in [
             crate::msg::Said::BitTest(true, "x > xmax".into(), "4.5 > 3".into()),
             crate::msg::Said::BitTest(false, "x < xmin".into(), "4.5 < 0".into()),
+            crate::msg::Said::BitQuestion("x < xmin".into(), "4.5 < 0".into()),
             crate::msg::Said::FrameTime("12.30".into(), "25.0".into(), "1.20".into()),
             crate::msg::Said::Status("clipped".into()),
             crate::msg::Said::Status("accepted".into()),
@@ -1094,7 +1112,6 @@ mod tests {
             .flat_map(|p| [F::Title(*p), F::Desc(*p)])
             .collect();
         v.extend(words.map(F::Word));
-        v.push(F::Exists("a.svg".into()));
         v.into_iter().map(Msg::Figure).collect()
     }
 
@@ -1267,6 +1284,7 @@ mod tests {
             | Inside(..)
             | UpParallel(_)
             | BehindWarn(_)
+            | ExactTooLarge(_)
             | ExpectOne
             | ExpectList(_)
             | CountMismatch(..)
@@ -1276,15 +1294,17 @@ mod tests {
             | SeveralAnswers
             | EmptyAnswer
             | NoAnswer
+            | AnswerTooLong(..)
             | Unreadable(_)
-            | NotANumber(..)
             | Exact
             | Rounded(_)
             | RoundedCoarse(..)
             | SigCoarse(..)
             | WithinPct(_)
             | Parts(_)
-            | NotShapeAsked
+            | WithinPixel
+            | NotAnOutcode(_)
+            | NotAStatus(_)
             | FollowThrough
             | At(..)
             | Err(_)

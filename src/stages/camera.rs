@@ -90,10 +90,16 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
     warn_near_parallel(&sun, &ups, &ds, tr);
     tr.step(|| u_step(vup, &n, &u));
 
-    // v completes the right-handed frame
+    // v completes the right-handed frame: exactly n × u, in floats from
+    // the unrounded d × (Vup × d)
     let sv = vec::cross(&ds, &su);
     let (v, svn) =
         vec::normalize(&sv).ok_or_else(|| Error::why("up", crate::msg::ErrMsg::VVanished))?;
+    let v = if T::PRECISION == crate::num::Precision::Exact {
+        v_axis(&n, &u)
+    } else {
+        v
+    };
     tr.step(|| {
         Step::new(Msg::CamAxisV, "v = n × u")
             .val("n", Val::vec3(&n))
@@ -118,6 +124,14 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
     };
     tr.step(|| check_step(&b));
     Ok(b)
+}
+
+/// The text's v = n × u: what [`basis`] computes in exact arithmetic (in
+/// floats it takes the same direction from the unrounded d × (Vup × d)).
+/// From a non-unit n or u it is as long as their product, as a student
+/// computes it from their own n and u.
+pub fn v_axis<T: Scalar>(n: &V3<T>, u: &V3<T>) -> V3<T> {
+    vec::cross(n, u)
 }
 
 /// n = (Pe − Pr)/|Pe − Pr| and |Pe − Pr|, for d = Pe − Pr: an error when
@@ -297,7 +311,9 @@ fn rows<T: Scalar>(a: &V3<T>, b: &V3<T>, c: &V3<T>) -> Matrix4<T> {
 ///
 /// with [`Scalar::triple_product`] and [`Scalar::double_cross_dot`], which
 /// keep the digits of a coordinate much smaller than |w| (a point near a
-/// camera plane).
+/// camera plane). In exact arithmetic the formula itself, from the axes
+/// u, v, n as they are (the same value; and a basis whose axes are a
+/// student's own gives the student's eye coordinates).
 pub fn to_eye<T: Scalar>(
     b: &Basis<T>,
     pe: &V3<T>,
@@ -307,11 +323,19 @@ pub fn to_eye<T: Scalar>(
 ) -> Result<V3<T>> {
     let rel = vec::sub(p, pe);
     let (up, d, w) = (refs(&b.up), refs(&b.d), refs(&rel));
-    let e = vec::v3(
-        T::triple_product(up, d, w) / b.norms[1].clone(),
-        T::double_cross_dot(d, up, w) / b.norms[2].clone(),
-        vec::dot(&b.d, &rel) / b.norms[0].clone(),
-    );
+    let e = if T::PRECISION == crate::num::Precision::Exact {
+        vec::v3(
+            vec::dot(&b.u, &rel),
+            vec::dot(&b.v, &rel),
+            vec::dot(&b.n, &rel),
+        )
+    } else {
+        vec::v3(
+            T::triple_product(up, d, w) / b.norms[1].clone(),
+            T::double_cross_dot(d, up, w) / b.norms[2].clone(),
+            vec::dot(&b.d, &rel) / b.norms[0].clone(),
+        )
+    };
     tr.step(|| {
         Step::new(
             Msg::EyeCoords(name.to_string()),

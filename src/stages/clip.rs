@@ -284,32 +284,16 @@ pub fn clip_segment<T: Scalar>(
         segment,
         intersections: vec![],
     };
-    if code0 | code1 == 0 {
-        return decided(Status::Accepted, Some((p0.clone(), p1.clone())));
-    }
-    if code0 & code1 != 0 {
-        return decided(Status::Rejected, None);
+    match trivial(code0, code1) {
+        Some(Status::Accepted) => return decided(Status::Accepted, Some((p0.clone(), p1.clone()))),
+        Some(status) => return decided(status, None),
+        None => {}
     }
 
     // Intersect with every plane one endpoint violates
     let intersections = intersect_planes(b, p0, p1, code0 | code1, tr);
-    let mut kept: Vec<(T, V3<T>)> = (intersections.iter())
-        .filter(|i| i.code == 0)
-        .map(|i| (i.t.clone(), i.point.clone()))
-        .collect();
-    if code0 == 0 {
-        kept.push((T::zero(), p0.clone()));
-    }
-    if code1 == 0 {
-        kept.push((T::one(), p1.clone()));
-    }
-    let by_t = |a: &&(T, V3<T>), b: &&(T, V3<T>)| {
-        a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal)
-    };
-    let segment = match (kept.iter().min_by(by_t), kept.iter().max_by(by_t)) {
-        (Some(a), Some(z)) => Some((a.1.clone(), z.1.clone())),
-        _ => None,
-    };
+    let kept = kept_points(&intersections, (p0, code0), (p1, code1));
+    let segment = ends(&kept);
     let result = Clipped {
         code0,
         code1,
@@ -321,10 +305,61 @@ pub fn clip_segment<T: Scalar>(
         segment,
         intersections,
     };
-    let mut ts: Vec<T> = kept.into_iter().map(|(t, _)| t).collect();
-    ts.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
+    let ts: Vec<T> = kept.into_iter().map(|(t, _)| t).collect();
     tr.step(|| segment_step(&result.segment, &ts));
     result
+}
+
+/// The trivial tests of the two outcodes: both 000000, accepted;
+/// code0 AND code1 ≠ 0, rejected; otherwise None: the segment is clipped.
+pub fn trivial(code0: u8, code1: u8) -> Option<Status> {
+    if code0 | code1 == 0 {
+        Some(Status::Accepted)
+    } else if code0 & code1 != 0 {
+        Some(Status::Rejected)
+    } else {
+        None
+    }
+}
+
+/// The part of P0P1 inside the box: from the least to the greatest t of
+/// the intersections kept (own code 000000) and the ends inside (P0 at
+/// t = 0, P1 at t = 1, each with its code); None when nothing is kept.
+pub fn kept_part<T: Scalar>(
+    intersections: &[Intersection<T>],
+    end0: (&V3<T>, u8),
+    end1: (&V3<T>, u8),
+) -> Option<(V3<T>, V3<T>)> {
+    ends(&kept_points(intersections, end0, end1))
+}
+
+/// The first and the last of the kept points (sorted by t).
+fn ends<T: Scalar>(kept: &[(T, V3<T>)]) -> Option<(V3<T>, V3<T>)> {
+    match (kept.first(), kept.last()) {
+        (Some(a), Some(z)) => Some((a.1.clone(), z.1.clone())),
+        _ => None,
+    }
+}
+
+/// The points that bound the clipped segment, by t: the intersections
+/// whose own code is 000000 and the ends inside (P0 at t = 0, P1 at t = 1).
+fn kept_points<T: Scalar>(
+    intersections: &[Intersection<T>],
+    (p0, code0): (&V3<T>, u8),
+    (p1, code1): (&V3<T>, u8),
+) -> Vec<(T, V3<T>)> {
+    let mut kept: Vec<(T, V3<T>)> = (intersections.iter())
+        .filter(|i| i.code == 0)
+        .map(|i| (i.t.clone(), i.point.clone()))
+        .collect();
+    if code0 == 0 {
+        kept.push((T::zero(), p0.clone()));
+    }
+    if code1 == 0 {
+        kept.push((T::one(), p1.clone()));
+    }
+    kept.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal));
+    kept
 }
 
 /// The step of the trivial accept and reject tests.

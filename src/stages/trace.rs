@@ -288,12 +288,22 @@ pub struct Compared {
 /// The key (`window.pixels.A`) of the first number under `v` that is NaN
 /// or infinite, if any.
 fn first_non_finite(key: &str, v: &Val) -> Option<String> {
+    first_not_finite(key, v, false)
+}
+
+/// [`first_non_finite`]; with `exact_ok`, a value with an exact form
+/// passes even beyond the doubles.
+fn first_not_finite(key: &str, v: &Val, exact_ok: bool) -> Option<String> {
     match v {
-        Val::Num(n) if !n.value.is_finite() => Some(key.to_string()),
-        Val::List(items) => items.iter().find_map(|x| first_non_finite(key, x)),
+        Val::Num(n) if !(n.value.is_finite() || exact_ok && n.pretty.is_some()) => {
+            Some(key.to_string())
+        }
+        Val::List(items) => items
+            .iter()
+            .find_map(|x| first_not_finite(key, x, exact_ok)),
         Val::Map(m) => m
             .iter()
-            .find_map(|(k, x)| first_non_finite(&format!("{key}.{k}"), x)),
+            .find_map(|(k, x)| first_not_finite(&format!("{key}.{k}"), x, exact_ok)),
         _ => None,
     }
 }
@@ -304,6 +314,16 @@ impl Report {
     /// printed as an answer.
     pub fn non_finite_result(&self) -> Option<String> {
         self.result.iter().find_map(|(k, v)| first_non_finite(k, v))
+    }
+
+    /// The name of the first value shown in a step that is not a finite
+    /// number and not exact either (an exact value beyond the doubles is
+    /// shown by its exact form): NaN or ±∞ from the floats.
+    pub fn non_finite_step_value(&self) -> Option<String> {
+        self.steps
+            .iter()
+            .flat_map(|s| s.values.iter().chain(&s.result))
+            .find_map(|(k, v)| first_not_finite(k, v, true))
     }
 
     /// The report of a finished recorder: its steps and warnings, the named

@@ -100,17 +100,7 @@ pub fn window<T: Scalar>(
     })?;
     let half = fovy_deg.clone() / T::from_i64(2);
     let t = half.tan_deg();
-    let top = dist.clone() * t.clone();
-    let right = aspect.clone() * top.clone();
-    let two = T::from_i64(2);
-    let w = Window {
-        bottom: -top.clone(),
-        left: -right.clone(),
-        height: two.clone() * top.clone(),
-        width: two * right.clone(),
-        top,
-        right,
-    };
+    let w = edges(dist.clone() * t.clone(), aspect);
     tr.step(|| {
         Step::new(
             Msg::WindowTop(label.to_string()),
@@ -153,6 +143,22 @@ pub fn window<T: Scalar>(
         .sub("width", Subst::new("2·{}", vec![Val::num(&w.right)]))
     });
     Ok(w)
+}
+
+/// The window's edges and size from its top and the aspect ratio:
+/// bottom = −top, right = aspect·top, left = −right, height = 2·top,
+/// width = 2·right.
+pub fn edges<T: Scalar>(top: T, aspect: &T) -> Window<T> {
+    let right = aspect.clone() * top.clone();
+    let two = T::from_i64(2);
+    Window {
+        bottom: -top.clone(),
+        left: -right.clone(),
+        height: two.clone() * top.clone(),
+        width: two * right.clone(),
+        top,
+        right,
+    }
 }
 
 /// Checks a viewport size: both positive.

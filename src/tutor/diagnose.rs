@@ -7,12 +7,14 @@
 //!
 //! Adding a mistake is one entry in [`CATALOG`].
 
+use crate::input::answer;
 use crate::input::fields::{Num, Vec3In};
+use crate::input::lights::Setup;
 use crate::input::problem::ProblemIn;
 use crate::num::vec;
-use crate::num::{AngleUnit, Expr};
+use crate::num::{AngleUnit, Expr, Real, Scalar};
 use crate::stages::camera::Basis;
-use crate::stages::lighting::Rules;
+use crate::stages::lighting::{LightKind, Rules};
 use crate::stages::trace::Val;
 use crate::stages::window::Window;
 use crate::tutor::solve::{self, Hooks};
@@ -70,12 +72,12 @@ pub static CATALOG: &[Mistake] = &[
         code: "n_not_normalized",
         description: "n = Pe − Pr not divided by |Pe − Pr| (v = n × u then has the same length)",
         apply: |p| {
-            hooked(
+            hooked_exact(
                 p,
                 Hooks {
                     basis: |b| {
-                        let s = b.dist;
-                        scale_axes(b, [1.0, s, s]);
+                        let s = b.dist.clone();
+                        scale_axes(b, [Real::from_i64(1), s.clone(), s]);
                     },
                     ..Hooks::default()
                 },
@@ -86,13 +88,13 @@ pub static CATALOG: &[Mistake] = &[
         code: "u_not_normalized",
         description: "u = Vup × n not divided by |Vup × n| (v = n × u then has the same length)",
         apply: |p| {
-            hooked(
+            hooked_exact(
                 p,
                 Hooks {
                     // Vup × n = (Vup × d)/|d|, of length |Vup × d|/|d|.
                     basis: |b| {
-                        let s = b.vxn_norm;
-                        scale_axes(b, [s, s, 1.0]);
+                        let s = b.vxn_norm.clone();
+                        scale_axes(b, [s.clone(), s, Real::from_i64(1)]);
                     },
                     ..Hooks::default()
                 },
@@ -147,14 +149,15 @@ pub static CATALOG: &[Mistake] = &[
     Mistake {
         code: "height_is_half_extent",
         description: "the half extent near·tan(fovy/2) (the text's h) given as the window height (and aspect·h as the width)",
+        // Written as the height and width, not used as them: the window's
+        // edges and the pixels stay right (the text's own h and W).
         apply: |p| {
-            hooked(
-                p,
-                Hooks {
-                    window: |w, _| half_extent_as_size(w),
-                    ..Hooks::default()
-                },
-            )
+            let mut t = solved(p)?;
+            for (size, half) in [("height", "top"), ("width", "right")] {
+                let h = find_key(&mut t, &format!("window.{half}"))?.clone();
+                *find_key(&mut t, &format!("window.{size}"))? = h;
+            }
+            Some(vec![t])
         },
     },
     Mistake {
@@ -164,12 +167,10 @@ pub static CATALOG: &[Mistake] = &[
             hooked(
                 p,
                 Hooks {
+                    // the window of half the top (right/top is the aspect)
                     window: |w, _| {
-                        half_extent_as_size(w);
-                        w.top /= 2.0;
-                        w.right /= 2.0;
-                        w.bottom = -w.top;
-                        w.left = -w.right;
+                        let aspect = w.right / w.top;
+                        *w = crate::stages::window::edges(w.top / 2.0, &aspect);
                     },
                     ..Hooks::default()
                 },
@@ -218,15 +219,19 @@ pub static CATALOG: &[Mistake] = &[
     Mistake {
         code: "outcode_reversed",
         description: "outcode bits written in the wrong order (bit 1 leftmost instead of rightmost)",
+        // every outcode: the ends' and each intersection's
         apply: |p| {
-            let mut t = solved(p)?;
-            for_each_clip(&mut t, |kv| {
+            fn reverse(kv: &mut [(String, Val)]) {
                 for (k, v) in kv.iter_mut() {
-                    if let (true, Val::Text(s)) = (k.starts_with("code"), &mut *v) {
-                        *s = s.chars().rev().collect();
+                    match (k.starts_with("code"), &mut *v) {
+                        (true, Val::Text(s)) => *s = s.chars().rev().collect(),
+                        (_, Val::Map(inner)) => reverse(inner),
+                        _ => {}
                     }
                 }
-            });
+            }
+            let mut t = solved(p)?;
+            for_each_clip(&mut t, |kv| reverse(kv));
             Some(vec![t])
         },
     },
@@ -311,6 +316,89 @@ pub static CATALOG: &[Mistake] = &[
             )
         },
     },
+    Mistake {
+        code: "pixel_y_from_top",
+        description: "the pixel's py measured from the top edge (H − py), as an image file counts its rows, instead of from the bottom",
+        // One documented change to the results: each pixel's py becomes H − py.
+        apply: |p| {
+            let h = p.perspective.as_ref()?.viewport.as_ref()?[1].0.eval::<f64>().ok()?;
+            let mut t = solved(p)?;
+            let Val::Map(pixels) = find_mut(&mut t, &["viewport", "pixels"])? else {
+                return None;
+            };
+            for (_, px) in pixels.iter_mut() {
+                if let Val::List(xy) = px {
+                    if let Some(Val::Num(y)) = xy.get(1) {
+                        xy[1] = Val::num(&(h - y.value));
+                    }
+                }
+            }
+            Some(vec![t])
+        },
+    },
+    Mistake {
+        code: "eye_no_translation",
+        description: "the eye coordinates taken as (u·P, v·P, n·P), Peye not subtracted (the view matrix without its translation, and the projection and pixels that follow)",
+        // The same camera axes with the eye at the origin: Pe' = 0 and
+        // Pr' = Pr − Pe keep n, u, v, and drop the translation by −Pe.
+        apply: |p| {
+            let c = p.camera.as_ref()?;
+            let look: Vec3In = std::array::from_fn(|k| {
+                Num(Expr::Sub(Box::new(c.look[k].0.clone()), Box::new(c.eye[k].0.clone())))
+            });
+            let zero: Vec3In = std::array::from_fn(|_| Num(Expr::Lit("0".into())));
+            altered_points(p, |q| {
+                map_camera(q, |c| {
+                    c.look = look;
+                    c.eye = zero;
+                })
+            })
+        },
+    },
+    Mistake {
+        code: "aspect_inverted",
+        description: "the window's right edge taken as top / aspect instead of aspect·top (the width 2·top/aspect, and the pixels that follow)",
+        apply: |p| {
+            let aspect = p.perspective.as_ref()?.aspect.as_ref()?.0.clone();
+            altered(p, |q| {
+                if let Some(x) = q.perspective.as_mut() {
+                    let one = Box::new(Expr::Lit("1".into()));
+                    x.aspect = Some(Num(Expr::Div(one, Box::new(aspect))));
+                }
+            })
+        },
+    },
+    Mistake {
+        code: "light_not_normalized",
+        description: "L not divided by |L|: cos α = L·N with the light vector as given (and R = 2N(L·N) − L, cos β and the terms that follow)",
+        apply: |p| unnormalized(p, p.shade.as_ref()?.light.as_ref()?, "L"),
+    },
+    Mistake {
+        code: "normal_not_normalized",
+        description: "N not divided by |N|: cos α = L·N with the normal as given (and R, cos β and the terms that follow)",
+        apply: |p| unnormalized(p, p.shade.as_ref()?.normal.as_ref()?, "N"),
+    },
+    Mistake {
+        code: "copied_misprint",
+        description: "the value the source printed, which its errata say is wrong (see the erratum)",
+        // One variant per erratum: a student who copies one printed answer
+        // has not copied the others, so a right answer to another erratum's
+        // key must not rule this one out.
+        apply: |p| {
+            let base = solved(p)?;
+            let variants: Vec<Tree> = p
+                .errata
+                .iter()
+                .filter_map(|e| {
+                    let mut t = base.clone();
+                    let v = find_key(&mut t, &e.key)?;
+                    *v = printed_value(printed(p, &e.key)?, v)?;
+                    Some(t)
+                })
+                .collect();
+            (!variants.is_empty()).then_some(variants)
+        },
+    },
 ];
 
 /// Looks up a mistake by code.
@@ -330,31 +418,145 @@ fn altered(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<Tree>> {
     Some(vec![solved(&q)?])
 }
 
+/// The results of the problem altered by `f`, for the points that can
+/// go through the altered steps: a point whose image the mistake leaves
+/// undefined (in the plane of the centre of projection) is left out.
+fn altered_points(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<Tree>> {
+    let mut q = p.clone();
+    f(&mut q);
+    if let Some(t) = solved(&q) {
+        return Some(vec![t]);
+    }
+    let mut kept = q.clone();
+    for name in q.points.keys() {
+        let mut one = q.clone();
+        one.points.retain(|k, _| k == name);
+        if solved(&one).is_none() {
+            kept.points.remove(name);
+        }
+    }
+    let mut t = solved(&kept)?;
+    // the eye coordinates of every point (the view part alone projects none)
+    q.ask = Some(vec!["view".into()]);
+    if let (Some(all), Some(Val::Map(eye))) = (solved(&q), find_key(&mut t, "view.points")) {
+        if let Some(Val::Map(every)) = solve::lookup(&all, "view.points") {
+            for (name, e) in every {
+                if !eye.iter().any(|(k, _)| k == name) {
+                    eye.push((name.clone(), e.clone()));
+                }
+            }
+        }
+    }
+    Some(vec![t])
+}
+
 /// The results with a stage result altered between stages.
 fn hooked(p: &ProblemIn, hooks: Hooks<f64>) -> Option<Vec<Tree>> {
     Some(vec![solve::solve_with::<f64>(p, &hooks).ok()?.result])
 }
 
+/// [`hooked`] in exact arithmetic, for an altered camera basis: there the
+/// view matrix's translation and the eye coordinates are the text's
+/// formulas on the axes as they are (in floats both come from the
+/// unrounded directions, which scaling an axis does not change).
+fn hooked_exact(p: &ProblemIn, hooks: Hooks<Real>) -> Option<Vec<Tree>> {
+    Some(vec![solve::solve_with::<Real>(p, &hooks).ok()?.result])
+}
+
+/// The lighting with the vector `raw` (the light L or the normal N as the
+/// problem gives it) used without dividing it by its length: the unit
+/// vector the set-up holds is scaled back by |raw|. The results gain the
+/// vector itself (`shade.L`, `shade.N`), which `practice` asks for.
+fn unnormalized(p: &ProblemIn, raw: &Vec3In, name: &'static str) -> Option<Vec<Tree>> {
+    let v: Vec<f64> = raw
+        .iter()
+        .map(|x| x.0.eval::<f64>().ok())
+        .collect::<Option<_>>()?;
+    let len = v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    if len.is_nan() || len <= 0.0 || (len - 1.0).abs() < 1e-12 || !p.light.is_empty() {
+        return None;
+    }
+    let scale = move |s: &mut Setup<f64>| match name {
+        "N" => s.surface.normal *= len,
+        _ => {
+            if let [l] = &mut s.lights[..] {
+                if let LightKind::Directional { dir } = &mut l.kind {
+                    *dir *= len;
+                }
+            }
+        }
+    };
+    let hooks = Hooks {
+        setup: Some(&scale),
+        ..Hooks::default()
+    };
+    let mut t = solve::solve_with::<f64>(p, &hooks).ok()?.result;
+    if let Some(Val::Map(kv)) = find_mut(&mut t, &["shade"]) {
+        kv.insert(
+            0,
+            (
+                name.to_string(),
+                Val::List(v.iter().map(Val::num).collect()),
+            ),
+        );
+    }
+    Some(vec![t])
+}
+
+/// The value the source printed for a result key (`[printed]`, keyed as
+/// one dotted string or as nested tables).
+fn printed<'a>(p: &'a ProblemIn, key: &str) -> Option<&'a toml::Value> {
+    if let Some(v) = p.printed.get(key) {
+        return Some(v);
+    }
+    let mut parts = key.split('.');
+    let mut cur = p.printed.get(parts.next()?)?;
+    for part in parts {
+        cur = cur.as_table()?.get(part)?;
+    }
+    Some(cur)
+}
+
+/// A printed answer as a value shaped like `like` (a projected point
+/// printed as (xp, yp) takes its zp from `like`).
+fn printed_value(printed: &toml::Value, like: &Val) -> Option<Val> {
+    let mut v = answer::read(printed, like).ok()?.value();
+    if let (Val::List(got), Val::List(want)) = (&mut v, like) {
+        if got.len() + 1 == want.len() {
+            got.push(want.last()?.clone());
+        }
+    }
+    Some(v)
+}
+
+/// The value at a dotted result key (a list index may be a number).
+fn find_key<'a>(t: &'a mut Tree, key: &str) -> Option<&'a mut Val> {
+    let mut parts = key.split('.');
+    let first = parts.next()?;
+    let mut cur = &mut t.iter_mut().find(|(k, _)| k == first)?.1;
+    for part in parts {
+        cur = match cur {
+            Val::Map(kv) => &mut kv.iter_mut().find(|(k, _)| k == part)?.1,
+            Val::List(items) => items.get_mut(part.parse::<usize>().ok()?)?,
+            _ => return None,
+        };
+    }
+    Some(cur)
+}
+
 /// Multiplies the axes u, v, n by the factors given, keeping the basis
 /// consistent: the eye coordinates are computed from the unnormalized axes s
 /// and divided by |s| (`norms`), so each |s| is divided by the factor.
-fn scale_axes(b: &mut Basis<f64>, f: [f64; 3]) {
-    b.u *= f[0];
-    b.v *= f[1];
-    b.n *= f[2];
-    b.norms[1] /= f[0];
-    b.norms[2] /= f[1];
-    b.norms[0] /= f[2];
+fn scale_axes<T: Scalar>(b: &mut Basis<T>, [fu, fv, fn_]: [T; 3]) {
+    b.u = vec::scale(&b.u, &fu);
+    b.v = vec::scale(&b.v, &fv);
+    b.n = vec::scale(&b.n, &fn_);
+    b.norms[1] = b.norms[1].clone() / fu;
+    b.norms[2] = b.norms[2].clone() / fv;
+    b.norms[0] = b.norms[0].clone() / fn_;
 }
 
 /// Multiplies every edge and size of the window by k.
-/// The half extents near·tan(fovy/2) and aspect·near·tan(fovy/2) (the
-/// text's h and w/2) written as the window's height and width.
-fn half_extent_as_size(w: &mut Window<f64>) {
-    w.height = w.top;
-    w.width = w.right;
-}
-
 fn scale_window(w: &mut Window<f64>, k: f64) {
     for x in [
         &mut w.top,
@@ -380,14 +582,7 @@ fn map_camera(q: &mut ProblemIn, f: impl FnOnce(&mut crate::input::problem::Came
 
 /// The value at a path of map keys.
 fn find_mut<'a>(t: &'a mut Tree, path: &[&str]) -> Option<&'a mut Val> {
-    let mut cur = &mut t.iter_mut().find(|(k, _)| k == path[0])?.1;
-    for part in &path[1..] {
-        cur = match cur {
-            Val::Map(kv) => &mut kv.iter_mut().find(|(k, _)| k == part)?.1,
-            _ => return None,
-        };
-    }
-    Some(cur)
+    find_key(t, &path.join("."))
 }
 
 /// Calls `f` on each clip result (one, or each of a list).

@@ -1,11 +1,17 @@
 //! `grafika practice`: a problem worked one value at a time, in the order of
 //! the text's solution (n, u, v, the view matrix, eye coordinates, projected
-//! points, window, pixels; outcodes, each t and intersection, the clipped
-//! segment, the status; unit L and N, cos α, R, cos β, the terms, the
-//! colour). Each answer gets `check`'s verdict at once, a wrong one the
-//! mistakes of the catalog that reproduce it, and a wrong one that is right
-//! given the student's own earlier answers is credited as
-//! `correct.follow_through` ([`follow`]).
+//! points, window, pixels; outcodes, each t, intersection and its outcode,
+//! the clipped segment, the status; unit L and N, cos α, R, cos β, the
+//! terms, their sum, the colour). Each answer is read as `check` reads it
+//! (and echoed as read) and gets `check`'s verdict at once ([`Marker`]); a
+//! wrong one that is right given the student's own earlier answers is
+//! credited as `correct.follow_through` ([`Marker::carried`]); otherwise the
+//! mistakes of the catalog that reproduce it and that the earlier answers
+//! allow are named.
+//!
+//! The score is honest: the first verdict on each value counts, and a value
+//! revealed with `show` stays revealed; an answer given again after `back`
+//! is judged and shown, and counted apart as a retry.
 //!
 //! Plain functions over plain data: [`plan`] solves the problem, a
 //! [`Session`] takes one [`Input`] at a time and returns the [`Event`]s it
@@ -13,19 +19,14 @@
 //! people are made in `report::practice`.
 
 use crate::error::Result;
+use crate::input::answer::Read;
 use crate::input::problem::ProblemIn;
-use crate::num::Real;
+use crate::msg::{Msg, Said};
 use crate::stages::trace::{Step, Val};
-use crate::tutor::check::{
-    self, judge, value_of, written, Judged, Settings, Verdict, FOLLOW_THROUGH,
-};
-use crate::tutor::diagnose::{self, Mistake};
-use crate::tutor::follow::{self, Inputs};
+use crate::tutor::check::{agrees, Marker, Settings, Verdict, FOLLOW_THROUGH};
+use crate::tutor::diagnose::Mistake;
 use crate::tutor::generate::{Difficulty, Topic};
-use crate::tutor::solve::{self, lookup};
-
-/// A result tree: named values, as `solve` returns them.
-pub type Tree = Vec<(String, Val)>;
+use crate::tutor::solve::lookup;
 
 /// One value the student is asked for.
 #[derive(Clone, Debug)]
@@ -46,149 +47,72 @@ pub struct Plan {
     pub statement: Option<String>,
     /// The values asked for, in the order of the text's solution.
     pub items: Vec<Item>,
-    /// How answers are marked.
-    pub settings: Settings,
     /// The topic and difficulty, when the problem was generated.
     pub drawn: Option<(Topic, Difficulty)>,
-    /// grafika's results, with the unit vectors L and N of a lighting problem.
-    result: Tree,
-    inputs: Inputs,
-    /// Each applicable mistake of the catalog with the results it gives.
-    variants: Vec<(&'static Mistake, Vec<Tree>)>,
+    /// The judge, with grafika's results and the catalog's.
+    marker: Marker,
+    /// The numbers the problem states (its inputs), which a hint may show.
+    stated: Vec<f64>,
+}
+
+impl Plan {
+    /// How answers are marked.
+    pub fn settings(&self) -> &Settings {
+        &self.marker.settings
+    }
 }
 
 /// Solves the problem exactly and lays out the values to ask for: the
 /// problem's `[check] keys` when it lists them (and L, N of a lighting
-/// problem), else every answer `check` expects and the view matrix.
+/// problem), else every key of the solution in the text's order.
 pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)>) -> Result<Plan> {
-    let report = solve::solve::<Real>(p)?;
-    let mut result = report.result;
+    let marker = Marker::new(p, settings)?;
     let wanted = p.check.as_ref().and_then(|c| c.keys.clone());
-    if let Some(Val::Map(kv)) = result
-        .iter_mut()
-        .find(|(k, _)| k == "shade")
-        .map(|(_, v)| v)
-    {
-        // the unit vectors are steps of the solution, not results of
-        // `solve`; asked when there is one of each (one light)
-        for name in ["N", "L"] {
-            let mut found = report.steps.iter().filter_map(|s| step_result(s, name));
-            if let (Some(v), None) = (found.next(), found.next()) {
-                kv.insert(0, (name.to_string(), v));
-            }
-        }
-    }
-    let items = ordered_keys(&result)
-        .into_iter()
+    let items = marker
+        .order
+        .iter()
         .filter(|k| {
             wanted
                 .as_ref()
-                .is_none_or(|w| w.contains(k) || k == "shade.L" || k == "shade.N")
+                .is_none_or(|w| w.contains(k) || *k == "shade.L" || *k == "shade.N")
         })
         .filter_map(|key| {
-            let expected = lookup(&result, &key)?.clone();
-            let step = step_for(&key, &report.steps);
             Some(Item {
-                key,
-                expected,
-                step,
+                key: key.clone(),
+                expected: lookup(&marker.result, key)?.clone(),
+                step: step_for(key, &marker.steps),
             })
         })
         .collect();
-    let variants = diagnose::CATALOG
-        .iter()
-        .filter_map(|m| Some((m, (m.apply)(p)?)))
-        .collect();
+    let stated = stated_numbers(&marker.input);
     Ok(Plan {
         title: p.title.clone(),
         statement: p.statement.clone(),
         items,
-        settings,
         drawn,
-        result,
-        inputs: follow::inputs(p),
-        variants,
+        marker,
+        stated,
     })
 }
 
-/// The keys of a result tree in the order of the text's solution.
-fn ordered_keys(result: &Tree) -> Vec<String> {
-    let mut keys = Vec::new();
-    for (part, v) in result {
-        match (part.as_str(), v) {
-            ("view", Val::Map(kv)) => {
-                let order = ["n", "u", "v", "matrix"];
-                keys.extend(
-                    order
-                        .iter()
-                        .filter(|k| kv.iter().any(|(x, _)| x == *k))
-                        .map(|k| format!("view.{k}")),
-                );
-                keys.extend(named(kv, "view.points", "points"));
-            }
-            ("project", Val::Map(kv)) => keys.extend(named(kv, "project.points", "points")),
-            ("viewport", Val::Map(kv)) => keys.extend(named(kv, "viewport.pixels", "pixels")),
-            ("window", Val::Map(kv)) => keys.extend(
-                kv.iter()
-                    .filter(|(k, _)| !k.starts_with("far_"))
-                    .map(|(k, _)| format!("window.{k}")),
-            ),
-            ("clip", Val::Map(kv)) => keys.extend(clip_keys("clip", kv)),
-            ("clip", Val::List(runs)) => {
-                for (i, r) in runs.iter().enumerate() {
-                    if let Val::Map(kv) = r {
-                        keys.extend(clip_keys(&format!("clip.{i}"), kv));
-                    }
-                }
-            }
-            ("shade", Val::Map(kv)) => {
-                let order = ["L", "N", "cos_alpha", "R", "H", "N_dot_H", "cos_beta"];
-                let terms = ["ambient", "diffuse", "specular", "color"];
-                keys.extend(
-                    order
-                        .iter()
-                        .chain(&terms)
-                        .filter(|k| kv.iter().any(|(x, _)| x == *k))
-                        .map(|k| format!("shade.{k}")),
-                );
-            }
+/// The numbers a problem states: every number of its inputs (as
+/// `solve --json` gives them), which a hint may show whatever they equal.
+fn stated_numbers(input: &serde_json::Value) -> Vec<f64> {
+    fn collect(v: &serde_json::Value, out: &mut Vec<f64>) {
+        match v {
+            serde_json::Value::Number(n) => out.extend(n.as_f64()),
+            serde_json::Value::Array(a) => a.iter().for_each(|x| collect(x, out)),
+            serde_json::Value::Object(o) => o.values().for_each(|x| collect(x, out)),
             _ => {}
         }
     }
-    keys
+    let mut out = Vec::new();
+    collect(input, &mut out);
+    out
 }
 
-/// `prefix.NAME` for each name of the map held at `inner`.
-fn named(kv: &[(String, Val)], prefix: &str, inner: &str) -> Vec<String> {
-    match kv.iter().find(|(k, _)| k == inner) {
-        Some((_, Val::Map(m))) => m.iter().map(|(n, _)| format!("{prefix}.{n}")).collect(),
-        _ => vec![],
-    }
-}
-
-/// The outcodes, each t and intersection tried, the clipped segment, the status.
-fn clip_keys(prefix: &str, kv: &[(String, Val)]) -> Vec<String> {
-    let mut keys = vec![format!("{prefix}.code0"), format!("{prefix}.code1")];
-    if let Some((_, Val::Map(planes))) = kv.iter().find(|(k, _)| k == "intersections") {
-        for (pl, _) in planes {
-            keys.push(format!("{prefix}.intersections.{pl}.t"));
-            keys.push(format!("{prefix}.intersections.{pl}.point"));
-        }
-    }
-    keys.push(format!("{prefix}.segment"));
-    keys.push(format!("{prefix}.status"));
-    keys
-}
-
-/// The step's result of this name.
-fn step_result(step: &Step, name: &str) -> Option<Val> {
-    step.result
-        .iter()
-        .find(|(n, _)| n == name)
-        .map(|(_, v)| v.clone())
-}
 /// The worked step that computes a key.
-fn step_for(key: &str, steps: &[Step]) -> Option<Step> {
+pub(crate) fn step_for(key: &str, steps: &[Step]) -> Option<Step> {
     let parts: Vec<&str> = key.split('.').collect();
     let name = match parts[..] {
         ["view", "matrix"] => "V".to_string(),
@@ -300,19 +224,21 @@ pub enum Again {
     NoMoreHints,
 }
 
-/// How one value ended.
+/// How one answer (or `show`, `skip`) ended.
 #[derive(Clone, Debug)]
 pub struct Outcome {
     /// The key.
     pub key: String,
     /// The answer as typed (None when skipped or revealed).
     pub given: Option<String>,
+    /// The answer as read (None when it could not be read, or none given).
+    pub read: Option<Read>,
     /// The verdict (`Missing` when skipped or revealed).
     pub verdict: Verdict,
     /// `check`'s code, `correct.follow_through`, or `skipped` / `revealed`.
     pub code: &'static str,
     /// How it was judged (check's note).
-    pub note: crate::msg::Msg,
+    pub note: Msg,
     /// grafika's value.
     pub expected: Val,
     /// The value computed from the student's own earlier answers, when
@@ -320,6 +246,12 @@ pub struct Outcome {
     pub follow_through: Option<Val>,
     /// The mistakes of the catalog that reproduce a wrong answer.
     pub mistakes: Vec<&'static Mistake>,
+    /// Why the source's printed value is wrong, when the answer is that
+    /// misprint (`copied_misprint`).
+    pub why: Option<Msg>,
+    /// An answer given again after `back`: shown, counted apart (the
+    /// value's first verdict, or its revealing, stands for the score).
+    pub retry: bool,
 }
 
 /// What happened, for the report to put into words or JSON.
@@ -340,13 +272,15 @@ pub enum Event {
     },
     /// An answer judged (also an unreadable one, which is asked again).
     Verdict(Outcome),
-    /// A hint: level 1 the formula, level 2 the values substituted.
+    /// A hint: level 1 the idea and the formula, level 2 the values
+    /// substituted, a step short of the value ([`hint_step`]).
     Hint {
         /// The key.
         key: String,
         /// 1 or 2.
         level: u8,
-        /// The step.
+        /// The hint's step: the step's title and formula, and at level 2
+        /// the values that do not give the answer away.
         step: Option<Step>,
     },
     /// The step worked out and the value (counted as revealed).
@@ -370,7 +304,8 @@ pub enum Event {
 /// The end of a session.
 #[derive(Clone, Debug)]
 pub struct Summary {
-    /// Points earned: 1 per correct answer (follow-through included), ½ per too coarse.
+    /// Points earned by each value's first verdict: 1 per correct answer
+    /// (follow-through included), ½ per too coarse.
     pub points: f64,
     /// Values asked.
     pub total: usize,
@@ -390,6 +325,10 @@ pub struct Summary {
     pub unanswered: usize,
     /// Hints used.
     pub hints: usize,
+    /// Answers given again after `back` (not scored).
+    pub retries: usize,
+    /// Of those, right.
+    pub retries_correct: usize,
     /// Each mistake made, with the keys it explains.
     pub mistakes: Vec<(&'static Mistake, Vec<String>)>,
     /// What to practise next.
@@ -400,7 +339,14 @@ pub struct Summary {
 pub struct Session<'a> {
     plan: &'a Plan,
     pos: usize,
-    outcomes: Vec<Option<Outcome>>,
+    /// What counts for the score: each value's first verdict, or its
+    /// revealing (a skip is replaced by a later answer).
+    scored: Vec<Option<Outcome>>,
+    /// The student's latest answer to each value (what later values
+    /// follow through from).
+    latest: Vec<Option<Outcome>>,
+    /// Answers given again after `back`.
+    retries: Vec<Outcome>,
     hints: Vec<u8>,
     done: bool,
 }
@@ -412,7 +358,9 @@ impl<'a> Session<'a> {
         Session {
             plan,
             pos: 0,
-            outcomes: vec![None; n],
+            scored: vec![None; n],
+            latest: vec![None; n],
+            retries: vec![],
             hints: vec![0; n],
             done: n == 0,
         }
@@ -455,6 +403,14 @@ impl<'a> Session<'a> {
         events
     }
 
+    /// Whether the value at the current position has a verdict that counts
+    /// (an answer or a revealing; a skip does not count).
+    fn scored_here(&self) -> bool {
+        self.scored[self.pos]
+            .as_ref()
+            .is_some_and(|o| o.code != "skipped")
+    }
+
     /// Takes one input; returns the events it causes.
     pub fn handle(&mut self, input: Input) -> Vec<Event> {
         if self.done {
@@ -471,7 +427,6 @@ impl<'a> Session<'a> {
             Input::Back if self.pos == 0 => vec![self.ask(Some(Again::NothingBefore))],
             Input::Back => {
                 self.pos -= 1;
-                self.outcomes[self.pos] = None;
                 vec![self.ask(None)]
             }
             Input::Hint if self.hints[self.pos] >= 2 => vec![self.ask(Some(Again::NoMoreHints))],
@@ -481,21 +436,26 @@ impl<'a> Session<'a> {
                 vec![Event::Hint {
                     key,
                     level,
-                    step: item.step.clone(),
+                    step: hint_step(item, level, &self.plan.stated),
                 }]
             }
             Input::Show | Input::Skip => {
                 let show = input == Input::Show;
-                self.outcomes[self.pos] = Some(Outcome {
-                    key: key.clone(),
-                    given: None,
-                    verdict: Verdict::Missing,
-                    code: if show { "revealed" } else { "skipped" },
-                    note: crate::msg::Msg::default(),
-                    expected: item.expected.clone(),
-                    follow_through: None,
-                    mistakes: vec![],
-                });
+                if !self.scored_here() {
+                    self.scored[self.pos] = Some(Outcome {
+                        key: key.clone(),
+                        given: None,
+                        read: None,
+                        verdict: Verdict::Missing,
+                        code: if show { "revealed" } else { "skipped" },
+                        note: Msg::default(),
+                        expected: item.expected.clone(),
+                        follow_through: None,
+                        mistakes: vec![],
+                        why: None,
+                        retry: false,
+                    });
+                }
                 let ev = if show {
                     Event::Show {
                         key,
@@ -508,83 +468,89 @@ impl<'a> Session<'a> {
                 self.advance(vec![ev])
             }
             Input::Answer(text) => {
-                let outcome = self.judge(item, &text);
+                let mut outcome = self.judge(item, &text);
                 if matches!(outcome.verdict, Verdict::Unparseable | Verdict::Missing) {
                     return vec![Event::Verdict(outcome), self.ask(Some(Again::Unreadable))];
                 }
-                self.outcomes[self.pos] = Some(outcome.clone());
+                if self.scored_here() {
+                    outcome.retry = true;
+                    self.retries.push(outcome.clone());
+                } else {
+                    self.scored[self.pos] = Some(outcome.clone());
+                }
+                self.latest[self.pos] = Some(outcome.clone());
                 self.advance(vec![Event::Verdict(outcome)])
             }
         }
     }
 
-    /// The student's value of an earlier key when it was wrong (credited by
-    /// follow-through or not), else grafika's: a right answer, maybe
-    /// rounded, carries grafika's value forward.
-    fn own(&self, key: &str) -> Option<Val> {
-        let right = lookup(&self.plan.result, key)?;
-        let given = self
-            .outcomes
+    /// The student's latest answer to an earlier key, where it was wrong
+    /// (credited by follow-through or not): what follow-through goes on
+    /// from; a right answer, maybe rounded, carries grafika's value.
+    fn own(&self, key: &str) -> Option<Read> {
+        self.latest
             .iter()
             .flatten()
             .find(|o| o.key == key && (o.verdict == Verdict::Wrong || o.code == FOLLOW_THROUGH))
-            .and_then(|o| o.given.as_deref());
-        given
-            .and_then(|g| value_of(&answer_value(g, right), right, key))
-            .or_else(|| Some(right.clone()))
+            .and_then(|o| o.read.clone())
     }
 
-    /// Judges an answer: check's verdict; if wrong, follow-through from the
-    /// student's earlier answers, else the mistakes that reproduce it.
+    /// Judges an answer as `check` does; a wrong count of parts is asked
+    /// again; a wrong answer is credited by follow-through when it is right
+    /// given the student's own earlier answers, else it names the mistakes
+    /// that reproduce it and that the earlier right answers allow.
     fn judge(&self, item: &Item, text: &str) -> Outcome {
-        let s = &self.plan.settings;
-        let given = answer_value(text, &item.expected);
-        let j = match unreadable(&given, &item.expected, &item.key) {
-            true => Judged::new(
-                Verdict::Unparseable,
-                "unparseable",
-                crate::msg::Msg::NotShapeAsked,
-            ),
-            false => judge(&given, &item.expected, s, &item.key, false),
-        };
+        let m = &self.plan.marker;
+        let j = m.judge(&item.key, &toml::Value::String(text.to_string()));
         let mut out = Outcome {
             key: item.key.clone(),
             given: Some(text.to_string()),
+            read: j.read,
             verdict: j.verdict,
             code: j.code,
             note: j.note,
             expected: item.expected.clone(),
             follow_through: None,
             mistakes: vec![],
+            why: None,
+            retry: false,
         };
-        if out.verdict != Verdict::Wrong {
+        if out.verdict == Verdict::Wrong && matches!(out.note, Msg::CountMismatch(..)) {
+            out.verdict = Verdict::Unparseable;
+            out.code = "unparseable";
             return out;
         }
+        let Some(read) = out.read.clone().filter(|_| out.verdict == Verdict::Wrong) else {
+            return out;
+        };
         let own = |k: &str| self.own(k);
-        let ft = follow::recompute(&self.plan.inputs, &item.key, &own, &self.plan.result);
-        match ft {
-            Some(ft) if check::follows_through(&given, &ft, &item.expected, s, &item.key) => {
+        if let Some(ft) = m.carried(&item.key, &own) {
+            if m.follows(&read, &ft, &item.key) {
                 out.verdict = Verdict::Correct;
                 out.code = FOLLOW_THROUGH;
-                out.note = crate::msg::Msg::FollowThrough;
+                out.note = Msg::FollowThrough;
                 out.follow_through = Some(ft);
+                return out;
             }
-            _ => {
-                out.mistakes = self
-                    .plan
-                    .variants
-                    .iter()
-                    .filter(|(_, v)| check::reproduces(v, &item.key, &given, &item.expected, s))
-                    .map(|(m, _)| *m)
-                    .collect();
-            }
+        }
+        let agreed: Vec<(&str, &Read)> = self
+            .latest
+            .iter()
+            .flatten()
+            .filter(|o| agrees(o.verdict, o.code))
+            .filter_map(|o| Some((o.key.as_str(), o.read.as_ref()?)))
+            .collect();
+        out.mistakes = m.fitting(&item.key, &read, &j.mistakes, &agreed);
+        if out.mistakes.iter().any(|x| x.code == "copied_misprint") {
+            out.why = m.erratum(&item.key);
         }
         out
     }
 
-    /// The summary so far.
+    /// The summary so far: each value's first verdict (or its revealing),
+    /// and the retries apart.
     pub fn summary(&self) -> Summary {
-        let done: Vec<&Outcome> = self.outcomes.iter().flatten().collect();
+        let done: Vec<&Outcome> = self.scored.iter().flatten().collect();
         let count = |f: &dyn Fn(&Outcome) -> bool| done.iter().filter(|o| f(o)).count();
         let mut mistakes: Vec<(&'static Mistake, Vec<String>)> = Vec::new();
         for o in &done {
@@ -595,7 +561,8 @@ impl<'a> Session<'a> {
                 }
             }
         }
-        let points: f64 = done.iter().map(|o| o.verdict.points()).sum();
+        // from +0: an empty f64 sum is −0, which would print as -0
+        let points: f64 = done.iter().fold(0.0, |s, o| s + o.verdict.points());
         Summary {
             points,
             total: self.plan.items.len(),
@@ -607,6 +574,10 @@ impl<'a> Session<'a> {
             revealed: count(&|o| o.code == "revealed"),
             unanswered: self.plan.items.len() - done.len(),
             hints: self.hints.iter().map(|&h| h as usize).sum(),
+            retries: self.retries.len(),
+            retries_correct: (self.retries.iter())
+                .filter(|o| o.verdict == Verdict::Correct)
+                .count(),
             next: self.next(points, &done),
             mistakes,
         }
@@ -650,6 +621,72 @@ impl<'a> Session<'a> {
     }
 }
 
+/// The step of a hint: level 1 the idea (the step's title) and the
+/// formula; level 2 also the values substituted, but a step short of the
+/// answer: a value that would give it away ([`leaks`]) is left out, and an
+/// outcode's bit tests are asked, not answered.
+pub fn hint_step(item: &Item, level: u8, stated: &[f64]) -> Option<Step> {
+    let s = item.step.as_ref()?;
+    let mut h = Step::new(s.title.clone(), s.formula.clone());
+    if level >= 2 {
+        h.values = s
+            .values
+            .iter()
+            .filter(|(_, v)| !leaks(v, &item.expected, stated))
+            .map(|(k, v)| (k.clone(), asked_not_answered(v)))
+            .collect();
+    }
+    Some(h)
+}
+
+/// An outcode bit's test as a question (its truth is the answer).
+fn asked_not_answered(v: &Val) -> Val {
+    match v {
+        Val::Said(Msg::Said(Said::BitTest(_, test, values))) => {
+            Val::said(Said::BitQuestion(test.clone(), values.clone()))
+        }
+        other => other.clone(),
+    }
+}
+
+/// Whether a value shown in a hint gives the asked value away: it is the
+/// asked value itself, or it holds one of the asked value's numbers (up to
+/// sign) that has three or more significant figures and is none of 0, ±1
+/// and the numbers the problem states.
+pub fn leaks(shown: &Val, asked: &Val, stated: &[f64]) -> bool {
+    fn numbers(v: &Val, out: &mut Vec<f64>) {
+        match v {
+            Val::Num(s) => out.push(s.value),
+            Val::List(items) => items.iter().for_each(|x| numbers(x, out)),
+            _ => {}
+        }
+    }
+    let same = |a: f64, b: f64| (a.abs() - b.abs()).abs() <= 1e-9 * a.abs().max(b.abs());
+    if shown == asked
+        || matches!((shown, asked), (Val::List(_), Val::List(_)) if {
+            let (mut a, mut b) = (vec![], vec![]);
+            numbers(shown, &mut a);
+            numbers(asked, &mut b);
+            a.len() == b.len() && a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= 1e-12 * x.abs().max(1.0))
+        })
+    {
+        return true;
+    }
+    let (mut own, mut its) = (vec![], vec![]);
+    numbers(asked, &mut own);
+    numbers(shown, &mut its);
+    own.iter()
+        .filter(|x| figures(**x) >= 3 && !stated.iter().any(|s| same(*s, **x)))
+        .any(|x| its.iter().any(|y| same(*x, *y)))
+}
+
+/// How many significant figures a number's shortest decimal has.
+fn figures(x: f64) -> usize {
+    let s = format!("{:e}", x.abs());
+    let mantissa = s.split('e').next().unwrap_or_default();
+    mantissa.chars().filter(|c| c.is_ascii_digit()).count()
+}
+
 /// The topic a key belongs to.
 pub fn topic_of(key: &str) -> Topic {
     match key.split('.').collect::<Vec<_>>()[..] {
@@ -674,48 +711,6 @@ fn easier(d: Difficulty) -> Difficulty {
     match d {
         Difficulty::Hard => Difficulty::Medium,
         _ => Difficulty::Easy,
-    }
-}
-
-/// Whether an answer to a number, a point or a matrix cannot be read as
-/// one: a part that is not a number, or the wrong count of parts (a
-/// projected point may leave out zp = d; `none` is an answer to a segment).
-fn unreadable(given: &toml::Value, expected: &Val, key: &str) -> bool {
-    let none = matches!(given, toml::Value::String(t) if matches!(t.trim().to_lowercase().as_str(), "none" | "null" | "rejected"));
-    match expected {
-        Val::List(_) if key.ends_with(".segment") && none => false,
-        Val::Num(_) | Val::List(_) => value_of(given, expected, key).is_none(),
-        Val::Text(_) if key.ends_with(".status") => !matches!(
-            written(given).trim().to_lowercase().as_str(),
-            "accepted" | "rejected" | "clipped"
-        ),
-        Val::Text(_) => {
-            let t = written(given);
-            let t = t.trim();
-            t.is_empty() || t.len() > 6 || !t.chars().all(|c| c == '0' || c == '1')
-        }
-        _ => false,
-    }
-}
-
-/// A typed line as an answer: with `;` in it, the parts between semicolons
-/// (the components of a point written with decimal commas, `0,8; 0,6; 0`,
-/// or the rows of a matrix); otherwise the text as `check` reads it.
-pub fn answer_value(text: &str, expected: &Val) -> toml::Value {
-    let t = text.trim();
-    match expected {
-        Val::List(_) if t.contains(';') => {
-            let inner = t
-                .trim_start_matches(['(', '['])
-                .trim_end_matches([')', ']']);
-            toml::Value::Array(
-                inner
-                    .split(';')
-                    .map(|p| toml::Value::String(p.trim().to_string()))
-                    .collect(),
-            )
-        }
-        _ => toml::Value::String(t.to_string()),
     }
 }
 
@@ -755,15 +750,89 @@ mod tests {
         assert_eq!(read_input(" 4/5 "), Input::Answer("4/5".into()));
     }
 
+    /// The text's example 6.1 without its point: n = (4/5, 3/5, 0),
+    /// u = (0, 0, −1), v = (−3/5, 4/5, 0).
+    fn camera_plan() -> Plan {
+        let p = ProblemIn::parse(
+            "title = 't'\nask = ['view']\n[camera]\neye = [4, 4, 4]\nlook = [0, 1, 4]\nup = [0, 1, 0]\n",
+            "t",
+        )
+        .unwrap();
+        plan(&p, Settings::default(), None).unwrap()
+    }
+
+    fn verdict(events: &[Event]) -> &Outcome {
+        events
+            .iter()
+            .find_map(|e| match e {
+                Event::Verdict(o) => Some(o),
+                _ => None,
+            })
+            .unwrap()
+    }
+
     #[test]
-    fn semicolons_separate_parts_written_with_decimal_commas() {
-        let point = Val::List(vec![Val::num(&0.8), Val::num(&0.6), Val::num(&0.0)]);
-        let v = answer_value("(0,8; 0,6; 0)", &point);
+    fn the_first_verdict_counts_and_a_revealed_value_stays_revealed() {
+        let plan = camera_plan();
+        let mut s = Session::new(&plan);
+        s.start();
+        // n = Pe − Pr = (4, 3, 0) not divided by |Pe − Pr| = 5: wrong
         assert_eq!(
-            v,
-            toml::Value::Array(vec!["0,8".into(), "0,6".into(), "0".into()])
+            verdict(&s.handle(Input::Answer("4, 3, 0".into()))).code,
+            "wrong"
         );
-        assert_eq!(answer_value("0.8, 0.6, 0", &point), "0.8, 0.6, 0".into());
+        s.handle(Input::Back);
+        // right the second time: shown, counted apart
+        let again = s.handle(Input::Answer("4/5, 3/5, 0".into()));
+        assert!(verdict(&again).retry && verdict(&again).verdict == Verdict::Correct);
+        // u revealed, then back and answered: still revealed
+        s.handle(Input::Show);
+        s.handle(Input::Back);
+        let after_show = s.handle(Input::Answer("0, 0, -1".into()));
+        assert!(verdict(&after_show).retry);
+        // v skipped, then back and answered: a skip is no verdict
+        s.handle(Input::Skip);
+        s.handle(Input::Back);
+        assert!(!verdict(&s.handle(Input::Answer("-3/5, 4/5, 0".into()))).retry);
+        let sum = s.summary();
+        assert_eq!(
+            (sum.points, sum.wrong, sum.revealed, sum.correct),
+            (1.0, 1, 1, 1)
+        );
+        assert_eq!((sum.retries, sum.retries_correct, sum.skipped), (2, 2, 0));
+    }
+
+    #[test]
+    fn a_hint_leaves_out_what_gives_the_answer_away() {
+        let num = |x: f64| Val::num(&x);
+        let r = std::f64::consts::FRAC_1_SQRT_2;
+        // u = (√2/2, 0, −√2/2); Vup × n = u itself, and n = (√2/2, 0, √2/2)
+        // holds its numbers up to sign
+        let u = Val::List(vec![num(r), num(0.0), num(-r)]);
+        assert!(leaks(&u, &u, &[]));
+        assert!(leaks(&Val::List(vec![num(r), num(0.0), num(r)]), &u, &[]));
+        // Vup = (0, 1, 0) and |Vup × n| = 1 hold no figure of it
+        assert!(!leaks(
+            &Val::List(vec![num(0.0), num(1.0), num(0.0)]),
+            &u,
+            &[]
+        ));
+        assert!(!leaks(&num(1.0), &u, &[]));
+        // d/z = √2/60 is yp = −√2/60 up to sign; 0.02 has one figure
+        let a2 = Val::List(vec![num(0.0), num(-(2f64.sqrt()) / 60.0), num(-0.1)]);
+        assert!(leaks(&num(2f64.sqrt() / 60.0), &a2, &[]));
+        // 0.02 has one figure: shown beside (0.02, 0.5) as part of it, no leak
+        assert!(!leaks(
+            &num(0.02),
+            &Val::List(vec![num(0.02), num(0.5)]),
+            &[]
+        ));
+        // a number the problem states may be shown whatever it equals
+        assert!(!leaks(
+            &num(2.5),
+            &Val::List(vec![num(2.5), num(1.75)]),
+            &[2.5]
+        ));
     }
 
     #[test]

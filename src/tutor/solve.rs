@@ -16,7 +16,8 @@ use crate::stages::clip::ClipBox;
 use crate::stages::projection::{self, Projection};
 use crate::stages::trace::{Compared, Comparison, Recorder, Report, Step, Subst, Trace, Val};
 use crate::stages::window;
-use crate::tutor::keys::{basis_result, clip_run, window_result};
+use crate::tutor::follow;
+use crate::tutor::keys::{basis_result, clip_checked, clip_result, shade_run, window_result};
 use serde_json::{json, Value};
 use std::path::Path;
 
@@ -38,25 +39,44 @@ fn eval3<T: Scalar>(field: &str, v: &Vec3In) -> Result<V3<T>> {
     ))
 }
 
+/// An alteration of the lighting set-up.
+pub type SetupHook<T> = dyn Fn(&mut crate::input::lights::Setup<T>);
+
 /// Alterations applied to stage results between stages. Solving uses none;
 /// the mistake catalog (`diagnose`) sets one to re-run the real stages with
-/// one step done the wrong way, instead of copying the pipeline's math.
-pub struct Hooks<T> {
+/// one step done the wrong way, instead of copying the pipeline's math;
+/// follow-through gives the student's own values for the steps after them
+/// to go on from ([`follow`]).
+pub struct Hooks<'a, T> {
     /// Applied to the camera basis before it is used.
     pub basis: fn(&mut camera::Basis<T>),
     /// Applied to the near-plane window before it is used (given fovy in degrees).
     pub window: fn(&mut window::Window<T>, &T),
     /// The lighting stage's rules (the text's by default).
     pub shade: crate::stages::lighting::Rules<T>,
+    /// Applied to the lighting set-up (its lights, its surface) before it is used.
+    pub setup: Option<&'a SetupHook<T>>,
+    /// Values given in place of the stages' own, by result key
+    /// (follow-through): the steps after them go on from them.
+    pub given: Option<&'a follow::Lookup<'a, T>>,
 }
 
-impl<T: Scalar> Default for Hooks<T> {
+impl<T: Scalar> Default for Hooks<'_, T> {
     fn default() -> Self {
         Hooks {
             basis: |_| {},
             window: |_, _| {},
             shade: crate::stages::lighting::Rules::default(),
+            setup: None,
+            given: None,
         }
+    }
+}
+
+impl<'a, T: Scalar> Hooks<'a, T> {
+    /// The values given, if any.
+    fn givens(&self) -> Option<follow::Givens<'a, T>> {
+        self.given.map(follow::Givens)
     }
 }
 
@@ -81,11 +101,11 @@ pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> 
         .and_then(|x| x.near.as_ref())
         .map(|n| eval("perspective.near", n))
         .transpose()?;
-    let projected = project_part(p, &eye_pts, near.as_ref(), &mut rec, &mut result)?;
+    let projected = project_part(p, hooks, &eye_pts, near.as_ref(), &mut rec, &mut result)?;
     let eyes = (&eye_pts[..], &projected[..]);
     let win = window_part(p, hooks, eyes, near.as_ref(), &mut rec, &mut result)?;
     viewport_part(p, win.as_ref(), &projected, &mut rec, &mut result)?;
-    clip_part(p, &points, &mut rec, &mut result)?;
+    clip_part(p, hooks, &points, &mut rec, &mut result)?;
     shade_part(p, hooks, &mut rec, &mut result)?;
     if result.is_empty() {
         return Err(Error::why("ask", ErrMsg::NothingToSolve));
@@ -139,10 +159,17 @@ fn view_part<T: Scalar>(
     rec.section(Msg::SecViewing);
     let mut b = camera::basis(&cam, rec).map_err(camera_field)?;
     (hooks.basis)(&mut b);
+    if let Some(g) = hooks.givens() {
+        follow::basis(g, &cam, &mut b);
+    }
     let m = camera::view_matrix(&b, &cam.pe, rec).map_err(camera_field)?;
     let mut eye_pts = Vec::new();
     for (n, q) in points {
-        eye_pts.push((n.clone(), camera::to_eye(&b, &cam.pe, n, q, rec)?));
+        let e = camera::to_eye(&b, &cam.pe, n, q, rec)?;
+        let given = hooks
+            .givens()
+            .and_then(|g| g.vec3(&format!("view.points.{n}")));
+        eye_pts.push((n.clone(), given.unwrap_or(e)));
     }
     if p.asks("view") {
         let mut r = basis_result(&b);
@@ -157,6 +184,7 @@ fn view_part<T: Scalar>(
 /// projected points (empty when not needed).
 fn project_part<T: Scalar>(
     p: &ProblemIn,
+    hooks: &Hooks<T>,
     eye_pts: &[(String, V3<T>)],
     near: Option<&T>,
     rec: &mut Recorder,
@@ -183,7 +211,11 @@ fn project_part<T: Scalar>(
     proj.validate().map_err(|e| e.in_field("perspective.d"))?;
     let mut projected = Vec::new();
     for (n, e) in eye_pts {
-        projected.push((n.clone(), projection::project(&proj, n, e, rec)?));
+        let q = projection::project(&proj, n, e, rec)?;
+        let given = hooks
+            .givens()
+            .and_then(|g| g.vec3(&format!("project.points.{n}")));
+        projected.push((n.clone(), given.unwrap_or(q)));
     }
     if p.asks("project") {
         let r = vec![("points".into(), points_val(&projected))];
@@ -222,6 +254,9 @@ fn window_part<T: Scalar>(
     rec.section(Msg::SecWindowClip);
     let mut w = window::window(&fovy, &aspect, near, "near", rec).map_err(perspective_field)?;
     (hooks.window)(&mut w, &fovy);
+    if let Some(g) = hooks.givens() {
+        follow::window(g, &aspect, &mut w);
+    }
     let mut r = window_result(&w, "");
     let far: Option<T> = per
         .far
@@ -289,6 +324,7 @@ fn viewport_part<T: Scalar>(
 /// Clipping of the segments against the box.
 fn clip_part<T: Scalar>(
     p: &ProblemIn,
+    hooks: &Hooks<T>,
     points: &[(String, V3<T>)],
     rec: &mut Recorder,
     result: &mut Vec<(String, Val)>,
@@ -307,7 +343,15 @@ fn clip_part<T: Scalar>(
         let p0: V3<T> = point_ref(&format!("{f}.from"), &s.from, points)?;
         let p1: V3<T> = point_ref(&format!("{f}.to"), &s.to, points)?;
         rec.section(Msg::SecLineClip((c.segment.len() > 1).then_some(i + 1)));
-        all.push(Val::Map(clip_run(&b, &p0, &p1, rec)));
+        let mut r = clip_checked(&b, &p0, &p1, rec);
+        if let Some(g) = hooks.givens() {
+            let prefix = match c.segment.len() {
+                1 => "clip".to_string(),
+                _ => format!("clip.{i}"),
+            };
+            follow::clipping(g, &prefix, &b, (&p0, &p1), &mut r);
+        }
+        all.push(Val::Map(clip_result(&r)));
     }
     match all.len() {
         0 => {}
@@ -332,8 +376,21 @@ fn shade_part<T: Scalar>(
                 material: None,
                 light: p.light.clone(),
             };
-            let setup = crate::input::lights::build::<T>(sh, &file, "shade.", "light", rec)?;
-            let r = crate::input::lights::run_with(&setup, &hooks.shade, rec);
+            let mut setup = crate::input::lights::build::<T>(sh, &file, "shade.", "light", rec)?;
+            if let Some(f) = hooks.setup {
+                f(&mut setup);
+            }
+            let r = match hooks.givens() {
+                Some(given) if setup.lights.len() == 1 => {
+                    follow::setup(given, &mut setup);
+                    let rules = follow::GivenRules {
+                        rules: &hooks.shade,
+                        given,
+                    };
+                    shade_run(&setup, &rules, rec)
+                }
+                _ => shade_run(&setup, &hooks.shade, rec),
+            };
             result.push(("shade".into(), Val::Map(r)));
             Ok(())
         }

@@ -1,6 +1,8 @@
 //! Helpers shared by the integration tests: run the binary, read its JSON.
 #![allow(dead_code)]
 
+pub mod class;
+
 use assert_cmd::Command;
 use serde_json::Value;
 use std::path::PathBuf;

@@ -33,9 +33,16 @@ const BIG_TRIAL_DIVISION_CAP: u64 = 100_000;
 /// element, so this is never reached for radicands of practical size.
 const MAX_FIELD_STEPS: usize = 64;
 
-/// Rationalization and exact sign give up (to an approximation, or to a
-/// finely narrowed interval) on surds with more terms than this.
-const MAX_TERMS: usize = 1 << 12;
+/// The largest exact value kept: a sum of at most this many terms (exact
+/// sign determination, too, narrows an interval instead beyond it). A
+/// result that would have more (the exact forms of values with many
+/// different square roots grow exponentially with them: 2^k terms for a
+/// quotient by a sum of k roots) is left approximate by [`super::Real`].
+pub const MAX_EXACT_TERMS: usize = 64;
+
+/// The most term products one multiplication may form (the product of two
+/// sums of [`MAX_EXACT_TERMS`] terms); a larger product is not formed.
+pub const MAX_PRODUCTS: usize = MAX_EXACT_TERMS * MAX_EXACT_TERMS;
 
 /// An exact number Σ qᵣ·√r in canonical form: every key r ≥ 1 is square-free
 /// (r = 1 is the rational part) and every coefficient qᵣ is nonzero, so two
@@ -194,7 +201,7 @@ impl Surd {
             }
         }
         let g = match self.generator() {
-            Some(g) if depth <= MAX_FIELD_STEPS && self.terms.len() <= MAX_TERMS => g,
+            Some(g) if depth <= MAX_FIELD_STEPS && self.terms.len() <= MAX_EXACT_TERMS => g,
             // Far beyond practical sizes: narrow the enclosure instead (a
             // nonzero value is eventually separated from zero).
             _ => return self.refined_interval_sign(),
@@ -243,7 +250,8 @@ impl Surd {
         let mut steps = 0;
         while let Some(g) = den.generator() {
             steps += 1;
-            if steps > MAX_FIELD_STEPS || den.len() > MAX_TERMS || num.len() > MAX_TERMS {
+            let products = den.len() * (num.len() + den.len());
+            if steps > MAX_FIELD_STEPS || products > MAX_PRODUCTS {
                 return None;
             }
             let conj = den.conjugate(&g);

@@ -451,3 +451,25 @@ fn the_square_root_of_a_surd_beyond_the_doubles_is_scaled_not_infinite() {
         "{t}"
     );
 }
+
+#[test]
+fn an_exact_value_past_64_terms_is_left_approximate_and_marked() {
+    // 1/(√2 + √3 + … + √p8) rationalized has 2^7 = 128 terms: past the
+    // bound, so it is the f64 quotient, and the mark is set once.
+    let primes = [2, 3, 5, 7, 11, 13, 17, 19];
+    let sum = primes
+        .iter()
+        .fold(Real::from_i64(0), |acc, &p| acc + Real::from_i64(p).sqrt());
+    take_grew_too_large();
+    let q = Real::from_i64(1) / &sum;
+    assert!(!q.is_exact());
+    let want: f64 = 1.0 / primes.iter().map(|&p| (p as f64).sqrt()).sum::<f64>();
+    assert!((q.to_f64() - want).abs() <= 4.0 * f64::EPSILON * want);
+    assert!(take_grew_too_large());
+    assert!(!take_grew_too_large(), "the mark is cleared when read");
+    // Three roots stay exact: 1/(√2 + √3 + √5) has 4 terms.
+    let small = Real::from_i64(1)
+        / (Real::from_i64(2).sqrt() + Real::from_i64(3).sqrt() + Real::from_i64(5).sqrt());
+    assert!(small.is_exact());
+    assert!(!take_grew_too_large());
+}

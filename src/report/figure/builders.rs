@@ -1,9 +1,11 @@
 //! What every figure kind is built from: a report's input and the named
 //! results the worked steps show (so every label's value is a result's
-//! value), read by small helpers shared by the kinds; and the clip figure.
+//! value), read by small helpers shared by the kinds.
 
-use super::{cabinet, label, label_at, short, Figure, Item, Pen, Place};
+use super::axo::Axo;
+use super::{label_toward, mark, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigureMsg, Msg, Panel};
+use crate::num::vec::{self, V3};
 use crate::report::Style;
 use crate::stages::trace::{Step, Val};
 use serde_json::Value;
@@ -86,7 +88,22 @@ pub(super) fn panel(st: &Style, which: Panel, items: Vec<Item>) -> Figure {
         title: say(st, FigureMsg::Title(which)),
         desc: say(st, FigureMsg::Desc(which)),
         items,
+        height: None,
     }
+}
+
+/// A 3D panel: as [`panel`], its description ending with the view it is
+/// drawn in (the direction toward the viewer, azimuth and elevation).
+pub(super) fn panel3(st: &Style, which: Panel, axo: &Axo, items: Vec<Item>) -> Figure {
+    let w = axo.toward().map(|c| (c * 100.0).round() / 100.0 + 0.0);
+    let view = FigureMsg::View {
+        from: st.val_inline(&vec_val(&w)),
+        az: st.val_inline(&num_val(axo.az)),
+        el: st.val_inline(&num_val(axo.el)),
+    };
+    let mut f = panel(st, which, items);
+    f.desc = format!("{} {}", say(st, view), f.desc);
+    f
 }
 
 /// `a + k·b`.
@@ -99,136 +116,66 @@ pub(super) fn minus(b: [f64; 3], a: [f64; 3]) -> [f64; 3] {
     [b[0] - a[0], b[1] - a[1], b[2] - a[2]]
 }
 
-/// The page direction of a 3D direction under the cabinet projection.
-pub(super) fn page_dir(d: [f64; 3]) -> [f64; 2] {
-    cabinet(d)
-}
-
-/// An arrow from `at` along `d` (scaled by k) with a label beyond its tip.
-pub(super) fn arrow3(at: [f64; 3], d: [f64; 3], k: f64, pen: Pen, text: String) -> [Item; 2] {
-    let tip = along(at, d, k);
+/// An arrow from `at` along `d` (scaled by k) in the view `axo`, named
+/// `name`, with its label `text` beyond the tip.
+pub(super) fn arrow3(
+    axo: &Axo,
+    (name, kind): (&str, Kind),
+    at: [f64; 3],
+    d: [f64; 3],
+    k: f64,
+    pen: Pen,
+    text: String,
+) -> [Item; 2] {
+    let (a, b) = (axo.page(at), axo.page(along(at, d, k)));
     [
-        Item::Arrow {
-            a: cabinet(at),
-            b: cabinet(tip),
-            pen,
-        },
-        label_at(cabinet(tip), text, Place::beyond(page_dir(d))),
+        mark(name, kind, pen, Shape::Line { a, b, head: true }),
+        label_toward(name, text, Some([b[0] - a[0], b[1] - a[1]])),
     ]
 }
 
-/// The world (or eye) axes x, y, z from the origin, length `a`.
-pub(super) fn axes3(a: f64, names: [&str; 3]) -> Vec<Item> {
+/// The axes x, y, z (named so) from the origin, length `a`, in the view
+/// `axo`; the z axis starts at z = `z0` (≤ 0: eye space, where the camera
+/// looks along −z).
+pub(super) fn axes3(axo: &Axo, a: f64, z0: f64) -> Vec<Item> {
     let mut out = Vec::new();
-    for (k, name) in names.iter().enumerate() {
+    for (k, name) in ["x", "y", "z"].iter().enumerate() {
         let mut d = [0.0; 3];
         d[k] = 1.0;
-        out.extend(arrow3([0.0; 3], d, a, Pen::Frame, name.to_string()));
+        let (at, len) = if k == 2 {
+            ([0.0, 0.0, z0], a - z0)
+        } else {
+            ([0.0; 3], a)
+        };
+        out.extend(arrow3(
+            axo,
+            (name, Kind::Axis),
+            at,
+            d,
+            len,
+            Pen::Frame,
+            name.to_string(),
+        ));
     }
     out
 }
 
-/// The 12 edges of the box [min, max] under the cabinet projection.
-pub(super) fn box_edges(lo: [f64; 3], hi: [f64; 3], pen: Pen, items: &mut Vec<Item>) {
-    let corner = |i: usize| {
-        cabinet([
-            if i & 1 == 0 { lo[0] } else { hi[0] },
-            if i & 2 == 0 { lo[1] } else { hi[1] },
-            if i & 4 == 0 { lo[2] } else { hi[2] },
-        ])
-    };
-    for i in 0..8usize {
-        for bit in [1usize, 2, 4] {
-            if i & bit == 0 {
-                items.push(Item::Segment {
-                    a: corner(i),
-                    b: corner(i | bit),
-                    pen,
-                });
-            }
-        }
-    }
+fn v3(a: [f64; 3]) -> V3<f64> {
+    V3::new(a[0], a[1], a[2])
 }
 
-/// The clip figure: the box, the segment P0P1, each intersection tried
-/// (a dot labelled with its plane, t and outcode), the kept part solid and
-/// the cut-off parts dashed. Points are drawn by the cabinet projection.
-pub(super) fn clip_figure(p: &Part, st: &Style) -> Option<Figure> {
-    let (lo, hi) = (input3(p.inp, "min")?, input3(p.inp, "max")?);
-    let (p0, p1) = (input3(p.inp, "from")?, input3(p.inp, "to")?);
-    let mut items = Vec::new();
-    box_edges(lo, hi, Pen::Frame, &mut items);
-    match result(p.res, "segment") {
-        Some(Val::List(ends)) if ends.len() == 2 => {
-            let (a, b) = (vec_of(&ends[0])?, vec_of(&ends[1])?);
-            for (from, to) in [(p0, a), (b, p1)] {
-                if from != to {
-                    items.push(cut(from, to));
-                }
-            }
-            items.push(Item::Segment {
-                a: cabinet(a),
-                b: cabinet(b),
-                pen: Pen::Kept,
-            });
-        }
-        _ => items.push(cut(p0, p1)),
-    }
-    if let Some(Val::Map(tried)) = result(p.res, "intersections") {
-        for (plane, v) in tried {
-            items.extend(tried_marks(plane, v, st));
-        }
-    }
-    let back = Place::beyond(page_dir(minus(p0, p1)));
-    let fwd = Place::beyond(page_dir(minus(p1, p0)));
-    items.push(label_at(
-        cabinet(p0),
-        format!("P0 {}", st.val_inline(&vec_val(&p0))),
-        back,
-    ));
-    items.push(label_at(
-        cabinet(p1),
-        format!("P1 {}", st.val_inline(&vec_val(&p1))),
-        fwd,
-    ));
-    Some(panel(st, Panel::Clip, items))
+/// The unit vector along a (a zero vector stays zero), by the stages' own
+/// `normalize`.
+pub(super) fn unit(a: [f64; 3]) -> [f64; 3] {
+    vec::normalize(&v3(a)).map_or(a, |(u, _)| vec::to_f64(&u))
 }
 
-/// A cut-off piece from a to b.
-fn cut(a: [f64; 3], b: [f64; 3]) -> Item {
-    Item::Segment {
-        a: cabinet(a),
-        b: cabinet(b),
-        pen: Pen::Cut,
-    }
+/// a·b.
+pub(super) fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    vec::dot(&v3(a), &v3(b))
 }
 
-/// One intersection tried: a dot labelled with its plane (`right`), short
-/// enough to sit off the box's edges, and a note under the drawing
-/// "plane: t = …, outcode …".
-fn tried_marks(plane: &str, v: &Val, st: &Style) -> Vec<Item> {
-    let Val::Map(fields) = v else { return vec![] };
-    let (Some(point), Some(t), Some(code)) = (
-        result(fields, "point").and_then(vec_of),
-        result(fields, "t"),
-        result(fields, "code"),
-    ) else {
-        return vec![];
-    };
-    let kept = matches!(result(fields, "kept"), Some(Val::Bool(true)));
-    let at = cabinet(point);
-    vec![
-        Item::Dot {
-            at,
-            pen: if kept { Pen::Kept } else { Pen::Tried },
-        },
-        label(at, plane),
-        Item::Note {
-            text: format!(
-                "{plane}: t = {}, outcode {}",
-                short(st, t),
-                st.val_inline(code)
-            ),
-        },
-    ]
+/// a × b.
+pub(super) fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    vec::to_f64(&vec::cross(&v3(a), &v3(b)))
 }

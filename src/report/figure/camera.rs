@@ -1,19 +1,21 @@
 //! The camera figure of `basis`, `view` and `solve`'s view part: the world
 //! axes, Peye and Pref with the line of sight, Vup (drawn at Pref), the
 //! camera axes u, v, n at Peye and the named points with their eye
-//! coordinates, all under the cabinet projection.
+//! coordinates, in an axonometric view chosen so that u, v and n (and the
+//! world axes) read: at least 15° apart on the page, none shorter than
+//! 40 % of the longest.
 
-use super::builders::say;
+use super::axo::Axo;
 use super::builders::{
-    arrow3, axes3, input3, minus, page_dir, panel, result, vec_of, vec_val, Part,
+    arrow3, axes3, input3, minus, num_val, panel3, result, say, unit, vec_of, vec_val, Part,
 };
-use super::{cabinet, label_at, labelled, Figure, Item, Pen, Place};
+use super::{label, label_toward, labelled, mark, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
 use crate::stages::trace::Val;
 
-/// The length u, v, n and Vup are drawn with: 1 for a scene within 8 of
-/// the origin, else an eighth of the scene's size (so they stay visible).
+/// The length Vup is drawn with: 1 for a scene within 8 of the origin,
+/// else an eighth of the scene's size (so it stays visible).
 pub fn arrow_length(extent: f64) -> f64 {
     if extent <= 8.0 {
         1.0
@@ -29,6 +31,14 @@ pub const AXIS_PENS: [(&str, Pen); 3] = [("u", Pen::Vector), ("v", Pen::Other), 
 /// u, v, n are drawn this many times [`arrow_length`] (Vup once).
 pub const AXIS_SCALE: f64 = 2.0;
 
+/// The world axes' directions.
+const XYZ: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+
+/// The view of the camera figure: u, v, n and the world axes readable.
+pub fn camera_view(uvn: &[[f64; 3]; 3]) -> Axo {
+    Axo::choose(super::axo::USUAL, |a| a.readable(uvn).min(a.readable(&XYZ)))
+}
+
 /// The camera panel.
 pub fn figure(p: &Part, st: &Style) -> Option<Vec<Figure>> {
     let (pe, pr, up) = (
@@ -36,6 +46,11 @@ pub fn figure(p: &Part, st: &Style) -> Option<Vec<Figure>> {
         input3(p.inp, "look")?,
         input3(p.inp, "up")?,
     );
+    let mut uvn = [[0.0; 3]; 3];
+    for (k, (key, _)) in AXIS_PENS.iter().enumerate() {
+        uvn[k] = vec_of(result(p.res, key)?)?;
+    }
+    let axo = camera_view(&uvn);
     let named = world_points(p);
     let extent = [pe, pr]
         .iter()
@@ -43,40 +58,45 @@ pub fn figure(p: &Part, st: &Style) -> Option<Vec<Figure>> {
         .flat_map(|q| q.iter().map(|c| c.abs()))
         .fold(1.0, f64::max);
     let len = arrow_length(extent);
-    let mut items = axes3(extent * 1.15, ["x", "y", "z"]);
-    items.push(Item::Segment {
-        a: cabinet(pe),
-        b: cabinet(pr),
-        pen: Pen::Tried,
-    });
-    let sight = page_dir(minus(pr, pe));
-    let back = [-sight[0], -sight[1]];
-    for (at, name, dir) in [(pe, "Peye", back), (pr, "Pref", sight)] {
-        items.push(Item::Dot {
-            at: cabinet(at),
-            pen: Pen::Kept,
-        });
+    let mut items = axes3(&axo, extent * 1.15, 0.0);
+    items.push(mark(
+        "line of sight",
+        Kind::Segment,
+        Pen::Tried,
+        Shape::Line {
+            a: axo.page(pe),
+            b: axo.page(pr),
+            head: false,
+        },
+    ));
+    let sight = axo.page(minus(pr, pe));
+    for (at, name, dir) in [(pe, "Peye", [-sight[0], -sight[1]]), (pr, "Pref", sight)] {
+        items.push(mark(name, Kind::Point, Pen::Kept, Shape::Dot(axo.page(at))));
         let text = format!("{name} {}", st.val_inline(&vec_val(&at)));
-        items.push(label_at(cabinet(at), text, Place::beyond(dir)));
+        items.push(label_toward(name, text, Some(dir)));
     }
-    let norm = up.iter().map(|c| c * c).sum::<f64>().sqrt().max(1e-300);
     let text = format!("Vup = {}", st.val_inline(&vec_val(&up)));
-    items.extend(arrow3(pr, up, len / norm, Pen::Given, text));
+    items.extend(arrow3(
+        &axo,
+        ("Vup", Kind::Arrow),
+        pr,
+        unit(up),
+        len,
+        Pen::Given,
+        text,
+    ));
     // u, v, n: each its own colour and pattern, twice the length (the
-    // note says so), so that two axes in nearly one page direction (u and
-    // n of the text's example) stay apart.
-    for (key, pen) in AXIS_PENS {
-        let v = result(p.res, key)?;
-        let text = labelled(st, key, v);
-        items.extend(arrow3(pe, vec_of(v)?, AXIS_SCALE * len, pen, text));
+    // note says so).
+    for (k, (key, pen)) in AXIS_PENS.iter().enumerate() {
+        let text = labelled(st, key, result(p.res, key)?);
+        let at = (*key, Kind::Arrow);
+        items.extend(arrow3(&axo, at, pe, uvn[k], AXIS_SCALE * len, *pen, text));
     }
-    let n = st.val_inline(&super::builders::num_val(AXIS_SCALE * len));
+    let n = st.val_inline(&num_val(AXIS_SCALE * len));
     let legend = say(st, FigureMsg::Word(FigWord::CameraAxes));
-    items.push(Item::Note {
-        text: format!("{legend} {n}"),
-    });
-    points(p, st, &named, [pe, pr], &mut items);
-    Some(vec![panel(st, Panel::Camera, items)])
+    items.push(Item::Note(format!("{legend} {n}")));
+    points(p, st, &axo, &named, &mut items);
+    Some(vec![panel3(st, Panel::Camera, &axo, items)])
 }
 
 /// The world points of the inputs (`points`: name → [x, y, z]).
@@ -89,34 +109,31 @@ fn world_points(p: &Part) -> Vec<(String, [f64; 3])> {
         .collect()
 }
 
-/// Each named point: a dot with its name, and a note under the drawing
-/// with its world coordinates and its eye coordinates `A' = …` from the
-/// results.
-fn points(
-    p: &Part,
-    st: &Style,
-    named: &[(String, [f64; 3])],
-    given: [[f64; 3]; 2],
-    items: &mut Vec<Item>,
-) {
+/// Each named point: a dot with its name (unless a mark of that name is
+/// drawn already: Peye, Pref), and a note under the drawing with its
+/// world coordinates and its eye coordinates `A' = …` from the results.
+fn points(p: &Part, st: &Style, axo: &Axo, named: &[(String, [f64; 3])], items: &mut Vec<Item>) {
     let eye = match result(p.res, "points") {
         Some(Val::Map(m)) => m.clone(),
         _ => vec![],
     };
     for (name, q) in named {
-        items.push(Item::Dot {
-            at: cabinet(*q),
-            pen: Pen::Frame,
-        });
-        // The name beside the dot (unless the point is Peye or Pref, which
-        // are labelled already), the values in a note under the drawing.
-        if !given.contains(q) {
-            items.push(label_at(cabinet(*q), name.clone(), Place::BelowRight));
+        let taken = items
+            .iter()
+            .any(|it| matches!(it, Item::Mark(m) if m.name == *name));
+        if !taken {
+            items.push(mark(
+                name,
+                Kind::Point,
+                Pen::Frame,
+                Shape::Dot(axo.page(*q)),
+            ));
+            items.push(label(name, name.clone()));
         }
         let mut text = format!("{name} {}", st.val_inline(&vec_val(q)));
         if let Some(e) = result(&eye, name) {
             text = format!("{text}: {}", labelled(st, &format!("{name}'"), e));
         }
-        items.push(Item::Note { text });
+        items.push(Item::Note(text));
     }
 }

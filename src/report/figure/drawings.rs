@@ -3,8 +3,8 @@
 //! shade), each built by its figure kind from the report's input and
 //! results.
 
-use super::builders::{clip_figure, result, vec_of, Part};
-use super::{camera, project, shade, window, Drawing, Figure};
+use super::builders::{result, vec_of, Part};
+use super::{camera, clip, project, shade, window, Drawing, Figure};
 use crate::report::Style;
 use crate::stages::trace::{Report, Val};
 use serde_json::{json, Value};
@@ -30,8 +30,8 @@ pub fn drawings(r: &Report, st: &Style) -> Vec<Drawing> {
         "basis" | "view" => one("view", camera::figure(&p, st)),
         "project" => one("project", project::figures(&p, st)),
         "window" => one("window", window::figures(&p, st)),
-        "clip" => one("clip", clip_figure(&p, st).map(|f| vec![f])),
-        "shade" => one("shade", shade::figure(&p, st).map(|f| vec![f])),
+        "clip" => one("clip", clip::figures(&p, st)),
+        "shade" => one("shade", shade::figures(&p, st)),
         "solve" => solve_drawings(r, st),
         _ => vec![],
     }
@@ -89,7 +89,7 @@ fn solve_drawings(r: &Report, st: &Style) -> Vec<Drawing> {
             res: sh,
             steps,
         };
-        add("shade".into(), shade::figure(&p, st).map(|f| vec![f]));
+        add("shade".into(), shade::figures(&p, st));
     }
     out
 }
@@ -133,7 +133,7 @@ fn solve_clip(inp: &Value, k: usize, c: &[(String, Val)], st: &Style) -> Option<
         res: c,
         steps: &[],
     };
-    clip_figure(&p, st).map(|f| vec![f])
+    clip::figures(&p, st)
 }
 
 /// d of `solve`'s projection: the step that states it.

@@ -4,22 +4,29 @@
 //! 15 cm wide).
 //!
 //! The scale is the largest that fits the marks and the labels' text in the
-//! width. A label that would overlap one placed before it is moved by a
-//! line at a time, down or up, to the nearest free place.
+//! width. Each label is then put beside its own mark by [`place`]'s search,
+//! in the order of the figure, and placed again once the others stand
+//! (twice), where that costs less; one that still cannot stand clear is
+//! written short (its mark's name) with its whole text in a note, or, when
+//! even that cannot, left out (its text in the note).
 
-use super::{Figure, Item, Place, RING};
+use super::place::{place, Bx, Geom, Obstacles, Pt};
+use super::{Figure, Item, Mark, Shape};
 
 /// The page width in px.
 pub const WIDTH: f64 = 600.0;
 /// The label font size in px.
 pub const FONT: f64 = 15.0;
+/// How far a label's text reaches above its baseline, px (DejaVu Sans,
+/// the widest of the common sans-serif fonts, at 15 px).
+pub const ASCENT: f64 = 14.0;
+/// How far it reaches below, px (a glyph from a fallback font, such as
+/// `√`, reaches lower).
+pub const DESCENT: f64 = 5.0;
 /// Space kept around a panel, px.
 const PAD: f64 = 14.0;
-/// The average advance of one character of the 15 px sans-serif font
-/// (digits are 8.3 px, most lower-case letters 7–8 px), px.
-const CHAR: f64 = 8.0;
-/// One line of labels, px.
-const LINE: f64 = 18.0;
+/// One line of notes, px.
+const LINE: f64 = 20.0;
 /// The tallest a panel is drawn, px (a tall drawing is scaled down).
 const MAX_HEIGHT: f64 = 420.0;
 
@@ -34,7 +41,8 @@ pub enum Anchor {
     End,
 }
 
-/// A label placed on the page: its baseline's anchor point in px (y down).
+/// A label or note placed on the page: its baseline's anchor point in px
+/// (y down).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Placed {
     /// x in px.
@@ -48,11 +56,16 @@ pub struct Placed {
 }
 
 impl Placed {
-    /// The box the label's text takes, px: left, right, top, bottom (the
-    /// width estimated from the characters).
+    /// The box the text takes, px: left, right, top, bottom (the width
+    /// estimated by [`text_width`]).
     pub fn bounds(&self) -> (f64, f64, f64, f64) {
-        let (l, r) = span(self.x, text_width(&self.text), self.anchor);
-        (l, r, self.y - 12.0, self.y + 4.0)
+        let w = text_width(&self.text);
+        let l = match self.anchor {
+            Anchor::Start => self.x,
+            Anchor::Middle => self.x - w / 2.0,
+            Anchor::End => self.x - w,
+        };
+        (l, l + w, self.y - ASCENT, self.y + DESCENT)
     }
 }
 
@@ -67,8 +80,12 @@ pub struct Laid {
     pub ty: f64,
     /// The panel's height in px.
     pub height: f64,
-    /// The labels and notes, in the order of the figure's items.
-    pub labels: Vec<Placed>,
+    /// The labels, in the order of the figure's labels (none for a label
+    /// left out: its text is in the notes).
+    pub labels: Vec<Option<Placed>>,
+    /// The notes' lines, in order (a note wider than the page is broken
+    /// into lines between words).
+    pub notes: Vec<Placed>,
 }
 
 impl Laid {
@@ -78,69 +95,112 @@ impl Laid {
     }
 }
 
-/// The offset of a label's anchor from its point, px (y down), and how it
-/// is anchored.
-fn offset(place: Place) -> (f64, f64, Anchor) {
-    match place {
-        Place::AboveRight => (6.0, -7.0, Anchor::Start),
-        Place::Above => (0.0, -9.0, Anchor::Middle),
-        Place::AboveLeft => (-6.0, -7.0, Anchor::End),
-        Place::Left => (-9.0, 5.0, Anchor::End),
-        Place::BelowLeft => (-6.0, 19.0, Anchor::End),
-        Place::Below => (0.0, 21.0, Anchor::Middle),
-        Place::BelowRight => (6.0, 19.0, Anchor::Start),
-        Place::Right => (9.0, 5.0, Anchor::Start),
+/// Advance widths of DejaVu Sans (the widest common sans-serif font; the
+/// SVG asks for it first), in thousandths of the font size, for the
+/// printable ASCII characters from the space on.
+const ASCII_WIDTH: [u16; 95] = [
+    318, 401, 460, 838, 636, 950, 780, 275, 390, 390, 500, 838, 318, 361, 318, 337, 636, 636, 636,
+    636, 636, 636, 636, 636, 636, 636, 337, 337, 838, 838, 838, 531, 1000, 684, 686, 698, 770, 632,
+    575, 775, 752, 295, 295, 656, 557, 863, 748, 787, 603, 787, 695, 635, 611, 732, 684, 989, 685,
+    611, 685, 390, 337, 390, 838, 500, 500, 613, 635, 550, 635, 615, 352, 635, 634, 278, 278, 579,
+    278, 974, 634, 612, 635, 635, 411, 521, 392, 634, 592, 818, 592, 592, 525, 636, 337, 636, 838,
+];
+
+/// The width of a text at [`FONT`] px in DejaVu Sans, px (characters
+/// beyond ASCII by their DejaVu widths; an unknown one as wide as `−`).
+pub fn text_width(t: &str) -> f64 {
+    let em: u32 = t
+        .chars()
+        .map(|c| match c {
+            ' '..='~' => u32::from(ASCII_WIDTH[c as usize - 32]),
+            '′' => 227,
+            '″' => 374,
+            '·' => 318,
+            '°' | '∥' => 500,
+            '√' | 'β' => 637,
+            'α' => 659,
+            'θ' => 612,
+            '…' => 1000,
+            _ => 838,
+        })
+        .sum();
+    f64::from(em) * FONT / 1000.0
+}
+
+/// What a label names, in px: an arrow or an axis by its tip, a dot by its
+/// centre, a face by its region, anything else by its lines.
+fn geom(m: &Mark, at: &dyn Fn(&[f64; 2]) -> Pt) -> Geom {
+    let lines = |p: &[[f64; 2]], closed: bool| -> Geom {
+        let mut ls: Vec<(Pt, Pt)> = p.windows(2).map(|w| (at(&w[0]), at(&w[1]))).collect();
+        if let (true, Some(a), Some(b)) = (closed && p.len() > 2, p.last(), p.first()) {
+            ls.push((at(a), at(b)));
+        }
+        Geom::Lines(ls)
+    };
+    match &m.shape {
+        Shape::Line { b, head: true, .. } => Geom::Point(at(b)),
+        Shape::Line { a, b, .. } => lines(&[*a, *b], false),
+        Shape::Dot(p) => Geom::Point(at(p)),
+        Shape::Polygon(p) => lines(p, true),
+        Shape::Path(p) => lines(p, false),
+        Shape::Face(p) => Geom::Region(p.iter().map(at).collect()),
+        Shape::Edges(e) => Geom::Lines(e.iter().map(|(a, b, _)| (at(a), at(b))).collect()),
     }
 }
 
-/// The estimated width of a label's text, px.
-fn text_width(t: &str) -> f64 {
-    t.chars().count() as f64 * CHAR
-}
-
-/// The horizontal extent of a text anchored at x: (left, right).
-fn span(x: f64, w: f64, a: Anchor) -> (f64, f64) {
-    match a {
-        Anchor::Start => (x, x + w),
-        Anchor::Middle => (x - w / 2.0, x + w / 2.0),
-        Anchor::End => (x - w, x),
-    }
-}
-
-/// Each mark's points, and each label's point, offset, anchor and width.
-type Extents = (Vec<[f64; 2]>, Vec<([f64; 2], f64, f64, Anchor, f64)>);
-
-fn extents(f: &Figure) -> Extents {
-    let mut pts = Vec::new();
-    let mut labels = Vec::new();
-    for it in &f.items {
-        match it {
-            Item::Segment { a, b, .. } | Item::Arrow { a, b, .. } => pts.extend([*a, *b]),
-            Item::Polygon { pts: p, .. } | Item::Path { pts: p, .. } => pts.extend(p),
-            Item::Dot { at, .. } => pts.push(*at),
-            Item::Label { at, text, place } => {
-                let (dx, dy, a) = offset(*place);
-                labels.push((*at, dx, dy, a, text_width(text)));
+/// The marks' lines, dots and arrow heads in px.
+fn obstacles(f: &Figure, at: &dyn Fn(&[f64; 2]) -> Pt) -> Obstacles {
+    let mut o = Obstacles::default();
+    for m in f.marks() {
+        let half = m.pen.width() / 2.0;
+        match &m.shape {
+            Shape::Line { a, b, head } => {
+                let (p, q) = (at(a), at(b));
+                o.lines.push((p, q));
+                if *head {
+                    // The head: 7 line widths long, ending at the tip.
+                    let l = (q.0 - p.0).hypot(q.1 - p.1).max(1e-9);
+                    let back = 5.0 * half;
+                    let c = (q.0 - (q.0 - p.0) / l * back, q.1 - (q.1 - p.1) / l * back);
+                    o.blobs.push((c, 8.0 * half));
+                }
             }
-            Item::Note { .. } => {}
+            Shape::Polygon(_) | Shape::Path(_) | Shape::Edges(_) => {
+                if let Geom::Lines(ls) = geom(m, at) {
+                    o.lines.extend(ls);
+                }
+            }
+            Shape::Dot(p) => o.blobs.push((at(p), 5.5)),
+            Shape::Face(_) => {}
         }
     }
-    (pts, labels)
+    o
 }
 
-/// The horizontal extent in px of everything drawn at scale s.
-fn width_at(s: f64, e: &Extents) -> (f64, f64) {
+/// The horizontal extent in px of the marks and, roughly, their labels at
+/// scale s: a label takes its width on the side it asks for, else half its
+/// width each side of the middle of its mark.
+fn width_at(f: &Figure, s: f64) -> (f64, f64) {
     let mut lo = f64::MAX;
     let mut hi = f64::MIN;
-    for p in &e.0 {
+    for p in f.marks().flat_map(Mark::points) {
         lo = lo.min(p[0] * s - 5.0);
         hi = hi.max(p[0] * s + 5.0);
     }
-    // A label needs about half its width on each side of its point (it
-    // moves to the side where it fits when placed); one wider than half
-    // the page counts as half the page.
-    for (p, _, _, _, w) in &e.1 {
-        let (l, r) = span(p[0] * s, w.min(WIDTH / 2.0), Anchor::Middle);
+    for l in f.labels() {
+        let Some(m) = f.mark(&l.of) else { continue };
+        let pts = match (l.near, &m.shape) {
+            (Some(p), _) => vec![p],
+            (None, Shape::Line { b, head: true, .. }) => vec![*b],
+            _ => m.points(),
+        };
+        let x = pts.iter().map(|p| p[0]).sum::<f64>() / pts.len().max(1) as f64 * s;
+        let w = text_width(&l.text).min(WIDTH / 2.0);
+        let (l, r) = match l.toward.map(|t| t[0] / t[0].hypot(t[1]).max(1e-300)) {
+            Some(c) if c > 0.38 => (x, x + w + 8.0),
+            Some(c) if c < -0.38 => (x - w - 8.0, x),
+            _ => (x - w / 2.0, x + w / 2.0),
+        };
         lo = lo.min(l);
         hi = hi.max(r);
     }
@@ -149,20 +209,22 @@ fn width_at(s: f64, e: &Extents) -> (f64, f64) {
 
 /// The largest scale at which the panel fits the page width (and at most
 /// [`MAX_HEIGHT`] tall).
-fn fit_scale(f: &Figure, e: &Extents) -> f64 {
+fn fit_scale(f: &Figure) -> f64 {
     let [x0, y0, x1, y1] = f.bounds();
     let room = WIDTH - 2.0 * PAD;
     let mut hi = room / (x1 - x0).max(1e-9);
-    hi = hi.min(MAX_HEIGHT / (y1 - y0).max(1e-9));
-    let mut lo = 0.0;
-    let (l, r) = width_at(hi, e);
-    if r - l <= room {
+    hi = hi.min(f.height.unwrap_or(MAX_HEIGHT) / (y1 - y0).max(1e-9));
+    let fits = |s: f64| {
+        let (l, r) = width_at(f, s);
+        r - l <= room
+    };
+    if fits(hi) {
         return hi;
     }
+    let mut lo = 0.0;
     for _ in 0..60 {
         let mid = (lo + hi) / 2.0;
-        let (l, r) = width_at(mid, e);
-        if r - l <= room {
+        if fits(mid) {
             lo = mid;
         } else {
             hi = mid;
@@ -171,174 +233,129 @@ fn fit_scale(f: &Figure, e: &Extents) -> f64 {
     lo.max(1e-9)
 }
 
-/// A box in px: left, right, top, bottom.
-type Bx = (f64, f64, f64, f64);
-
-/// A line in px: from, to.
-type Line = ((f64, f64), (f64, f64));
-
-/// Whether the segment a–b crosses the box (or lies in it).
-fn crosses(a: (f64, f64), b: (f64, f64), r: Bx) -> bool {
-    // Liang–Barsky: clip the segment's parameter range to the box.
-    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-    let mut t0: f64 = 0.0;
-    let mut t1: f64 = 1.0;
-    for (p, q) in [
-        (-dx, a.0 - r.0),
-        (dx, r.1 - a.0),
-        (-dy, a.1 - r.2),
-        (dy, r.3 - a.1),
-    ] {
-        if p == 0.0 {
-            if q < 0.0 {
-                return false;
-            }
-        } else {
-            let t = q / p;
-            if p < 0.0 {
-                t0 = t0.max(t);
-            } else {
-                t1 = t1.min(t);
-            }
-        }
-    }
-    t0 <= t1
+/// The box of a placed label.
+fn bx(p: &Placed) -> Bx {
+    let (l, r, t, b) = p.bounds();
+    Bx { l, r, t, b }
 }
 
-/// The order in which a label tries the eight sides: its own, then the
-/// neighbours alternately.
-fn sides(first: Place) -> Vec<Place> {
-    let k = RING.iter().position(|p| *p == first).unwrap_or(1);
-    let mut out = vec![first];
-    for step in 1..=4usize {
-        out.push(RING[(k + step) % 8]);
-        if step < 4 {
-            out.push(RING[(k + 8 - step) % 8]);
-        }
-    }
-    out
+/// The side and the point a label asks for, in px.
+fn wish(l: &super::Label, at: &dyn Fn(&[f64; 2]) -> Pt) -> (Option<[f64; 2]>, Option<Pt>) {
+    (l.toward, l.near.as_ref().map(at))
 }
 
-/// The marks' lines and dots in px (y measured from page y = 0).
-fn obstacles(f: &Figure, s: f64, tx: f64) -> Vec<Line> {
-    let m = |p: &[f64; 2]| (tx + p[0] * s, -p[1] * s);
-    let mut out = Vec::new();
-    for it in &f.items {
-        match it {
-            Item::Segment { a, b, .. } | Item::Arrow { a, b, .. } => out.push((m(a), m(b))),
-            Item::Polygon { pts, .. } | Item::Path { pts, .. } => {
-                for w in pts.windows(2) {
-                    out.push((m(&w[0]), m(&w[1])));
-                }
-                if let (true, Some(a), Some(b)) =
-                    (matches!(it, Item::Polygon { .. }), pts.last(), pts.first())
-                {
-                    out.push((m(a), m(b)));
-                }
-            }
-            Item::Dot { at, .. } => {
-                let (x, y) = m(at);
-                out.push(((x - 4.0, y), (x + 4.0, y)));
-                out.push(((x, y - 4.0), (x, y + 4.0)));
-            }
-            Item::Label { .. } | Item::Note { .. } => {}
-        }
+/// The short form of a label: the one it was given, else, for a label
+/// `NAME = value` (or `NAME ≈ …`, `NAME: …`) of the mark NAME, its name.
+fn brief(l: &super::Label) -> Option<&str> {
+    if let Some(s) = &l.short {
+        return Some(s);
     }
-    out
+    [" = ", " ≈ ", ": "]
+        .iter()
+        .filter_map(|sep| l.text.split_once(sep).map(|(name, _)| name))
+        .find(|name| *name == l.of)
 }
 
-/// Places one label: of its candidate places (its own side, the other
-/// sides, then each side moved by whole lines), the first of the least
-/// cost: leaving the page counts 100, overlapping another label 10,
-/// crossing a line 5 (so a label rather moves up to four lines away than
-/// sits across a box edge), each line moved away 1.
-fn place_label(
-    at: (f64, f64),
-    text: &str,
-    place: Place,
-    boxes: &[Bx],
-    lines: &[Line],
-) -> (Placed, Bx) {
-    let w = text_width(text);
-    let mut candidates: Vec<(Place, f64)> = Vec::new();
-    for k in [0.0, 1.0, -1.0, 2.0, -2.0, 3.0, -3.0] {
-        candidates.extend(sides(place).into_iter().map(|p| (p, k * LINE)));
+/// Places the labels of a panel (px, y from page y = 0): greedily in the
+/// figure's order, then each again among the others, twice; a label that
+/// still crosses a line or another label and has a short form
+/// ([`brief`]) is written short, its whole text going to a note, and left
+/// out when even that cannot stand clear (with a note, unless its short
+/// form is empty: the figure says it elsewhere). Returns the labels and
+/// those notes.
+fn place_all(f: &Figure, at: &dyn Fn(&[f64; 2]) -> Pt) -> (Vec<Option<Placed>>, Vec<String>) {
+    let mut obs = obstacles(f, at);
+    let jobs: Vec<(Geom, &super::Label)> = f
+        .labels()
+        .map(|l| {
+            let g = f
+                .mark(&l.of)
+                .map_or(Geom::Point(at(&[0.0, 0.0])), |m| geom(m, at));
+            (g, l)
+        })
+        .collect();
+    let mut placed: Vec<(Placed, f64)> = Vec::new();
+    for (g, l) in &jobs {
+        let (p, c) = place(&l.text, text_width(&l.text), g, wish(l, at), &obs);
+        obs.boxes.push(bx(&p));
+        placed.push((p, c));
     }
-    let mut best: Option<(usize, Placed, Bx)> = None;
-    for (p, shift) in candidates {
-        let (dx, dy, anchor) = offset(p);
-        let (x, y) = (at.0 + dx, at.1 + dy + shift);
-        let (l, r) = span(x, w, anchor);
-        let b = (l - 1.0, r + 1.0, y - 12.0, y + 4.0);
-        let on_labels = boxes
-            .iter()
-            .filter(|o| !(b.1 < o.0 || b.0 > o.1 || b.3 < o.2 || b.2 > o.3))
-            .count();
-        let on_lines = lines.iter().filter(|(a, c)| crosses(*a, *c, b)).count();
-        let outside = usize::from(b.0 < 1.0 || b.1 > WIDTH - 1.0);
-        let away = (shift / LINE).abs() as usize;
-        let cost = 100 * outside + 10 * on_labels + 5 * on_lines + away;
-        if best.as_ref().is_none_or(|(c, ..)| cost < *c) {
-            let text = text.to_string();
-            best = Some((cost, Placed { x, y, anchor, text }, b));
-            if cost == 0 {
-                break;
+    let mut short = vec![false; jobs.len()];
+    for round in 0..3 {
+        for (i, (g, l)) in jobs.iter().enumerate() {
+            if placed[i].1 < 60.0 {
+                continue;
+            }
+            let text = match (round, brief(l)) {
+                (0 | 1, _) => &l.text,
+                (_, Some(b)) if !b.is_empty() => b,
+                _ => continue,
+            };
+            let mut others = obs.clone();
+            others.boxes.remove(i);
+            let (p, c) = place(text, text_width(text), g, wish(l, at), &others);
+            if c < placed[i].1 - 1e-9 || round == 2 {
+                obs.boxes[i] = bx(&p);
+                placed[i] = (p, c);
+                short[i] = round == 2;
             }
         }
     }
-    let (_, placed, b) = best.expect("at least one candidate");
-    (placed, b)
+    // A label written short, or left out because even short it cannot
+    // stand clear, has its whole text in a note.
+    let mut notes = Vec::new();
+    let mut labels = Vec::new();
+    for (i, (p, c)) in placed.into_iter().enumerate() {
+        let said_elsewhere = jobs[i].1.short.as_deref() == Some("");
+        if short[i] || (c >= 60.0 && !said_elsewhere) {
+            notes.push(jobs[i].1.text.clone());
+        }
+        labels.push((c < 60.0).then_some(p));
+    }
+    (labels, notes)
 }
 
 /// Lays out one panel.
 pub fn lay_out(f: &Figure) -> Laid {
-    let e = extents(f);
-    let s = fit_scale(f, &e);
-    let (lo, _) = width_at(s, &e);
+    let s = fit_scale(f);
+    let (lo, _) = width_at(f, s);
     let tx = PAD - lo;
-    let lines = obstacles(f, s, tx);
-    // Labels at y measured from page y = 0 (ty added below).
-    let mut boxes: Vec<Bx> = Vec::new();
-    let mut labels = Vec::new();
-    for it in &f.items {
-        let Item::Label { at, text, place } = it else {
-            continue;
-        };
-        let (p, b) = place_label((tx + at[0] * s, -at[1] * s), text, *place, &boxes, &lines);
-        boxes.push(b);
-        labels.push(p);
-    }
+    let at = |p: &[f64; 2]| (tx + p[0] * s, -p[1] * s);
+    let (placed, overflow) = place_all(f, &at);
     let mut top = f64::MAX;
     let mut bottom = f64::MIN;
-    for p in &e.0 {
+    for p in f.marks().flat_map(Mark::points) {
         top = top.min(-p[1] * s - 5.0);
         bottom = bottom.max(-p[1] * s + 5.0);
     }
-    for b in &boxes {
-        top = top.min(b.2);
-        bottom = bottom.max(b.3);
+    for p in placed.iter().flatten() {
+        let (_, _, t, b) = p.bounds();
+        top = top.min(t);
+        bottom = bottom.max(b);
     }
     if top > bottom {
         (top, bottom) = (0.0, 1.0);
     }
-    // The notes, one line each under the drawing, in the labels' order.
-    for (i, it) in f.items.iter().enumerate() {
-        let Item::Note { text } = it else { continue };
-        bottom += LINE;
-        let before = f.items[..i]
-            .iter()
-            .filter(|x| matches!(x, Item::Label { .. } | Item::Note { .. }))
-            .count();
-        let placed = Placed {
-            x: PAD,
-            y: bottom - 2.0,
-            anchor: Anchor::Start,
-            text: text.clone(),
-        };
-        labels.insert(before.min(labels.len()), placed);
+    // The notes, one line each (or more) under the drawing.
+    let mut notes = Vec::new();
+    let texts = f.items.iter().filter_map(|it| match it {
+        Item::Note(text) => Some(text),
+        _ => None,
+    });
+    for text in overflow.iter().chain(texts) {
+        for line in wrap(text, WIDTH - 2.0 * PAD) {
+            bottom += LINE;
+            notes.push(Placed {
+                x: PAD,
+                y: bottom - DESCENT,
+                anchor: Anchor::Start,
+                text: line,
+            });
+        }
     }
+    let mut labels = placed;
     let ty = PAD - top;
-    for l in &mut labels {
+    for l in labels.iter_mut().flatten().chain(&mut notes) {
         l.y += ty;
     }
     Laid {
@@ -347,5 +364,35 @@ pub fn lay_out(f: &Figure) -> Laid {
         ty,
         height: (bottom - top + 2.0 * PAD).ceil(),
         labels,
+        notes,
+    }
+}
+
+/// A text broken into lines of at most `room` px between words (a word
+/// wider than that stands alone).
+fn wrap(text: &str, room: f64) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split(' ') {
+        match lines.last_mut() {
+            Some(l) if text_width(&format!("{l} {word}")) <= room => {
+                l.push(' ');
+                l.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Widths of DejaVu Sans at 15 px: a digit 0.636 em = 9.54 px, `x`
+    /// 0.592 em = 8.88 px, `−` 0.838 em.
+    #[test]
+    fn text_widths() {
+        assert!((text_width("0") - 9.54).abs() < 1e-9);
+        assert!((text_width("x −") - (8.88 + 4.77 + 12.57)).abs() < 1e-9);
     }
 }

@@ -1,44 +1,44 @@
-//! One figure description — plain data: points, segments, arrows, polygons,
-//! labels and their styles — and the small writers that turn it into SVG
-//! ([`svg`]) and TikZ ([`tikz`]). The builders ([`builders`]) make the
-//! description from the same results the worked steps show.
+//! One figure description — plain data: named marks (arrows, points,
+//! segments, planes, boxes, arcs, axes, windows), the labels that name
+//! them, and notes — and the small writers that turn it into SVG
+//! ([`svg`]) and TikZ ([`tikz`]). The figure kinds ([`camera`],
+//! [`project`], [`window`], [`clip`], [`shade`]) make the description from
+//! the same results the worked steps show; [`drawings`] picks them for a
+//! report.
 //!
-//! 3D points are put on the page by one stated projection, the cabinet
-//! oblique projection: x_page = x − k·z, y_page = y − k·z with
-//! k = 1/(2√2) (the z axis drawn at 45°, shortened to half). Side views
-//! and planes are drawn in their own two coordinates, as each panel's
-//! description says.
+//! Every mark has the name the steps use (`N`, `u`, `Peye`, `A''`,
+//! `near window`, `xmax`, …) and a kind; a label says which mark it names
+//! (`for`), and [`layout`] puts it beside that mark by a small search over
+//! candidate places ([`place`]). The SVG carries them as `data-name`,
+//! `data-kind` and `data-for` (docs/spec.md §4).
 //!
-//! A command's drawing is one or more panels ([`Drawing`]): for example the
-//! projection in 3D, then its side view. Each panel is a [`Figure`] with
-//! its own page coordinates.
+//! 3D panels are drawn in an axonometric (orthographic) view chosen per
+//! figure ([`axo`]) and stated in the panel's description; side views and
+//! planes in their own two coordinates; the lighting vectors as a flat
+//! diagram in the plane of incidence.
 
+pub mod axo;
 pub mod builders;
 mod camera;
+mod clip;
 pub mod drawings;
 pub mod layout;
+mod place;
 mod project;
 mod shade;
 pub mod svg;
 pub mod tikz;
 mod window;
 
-/// k of the cabinet projection: half length at 45°, 1/(2√2).
-pub const CABINET_K: f64 = 0.353_553_390_593_273_8;
-
-/// A 3D point on the page under the cabinet projection
-/// (x − k·z, y − k·z), k = 1/(2√2).
-pub fn cabinet(p: [f64; 3]) -> [f64; 2] {
-    [p[0] - CABINET_K * p[2], p[1] - CABINET_K * p[2]]
-}
-
 /// How a mark is drawn; each has one colour of the Okabe–Ito palette
 /// (safe for the common colour-vision deficiencies) and a line pattern,
 /// so no meaning rests on colour alone.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Pen {
-    /// Outlines of given things (the box): black, thin.
+    /// Outlines of given things (the box, the axes): black, thin.
     Frame,
+    /// An edge hidden behind the box: black, thin, dashed.
+    Hidden,
     /// The kept part of a segment: blue, thick, solid.
     Kept,
     /// A part cut off: vermillion, dashed.
@@ -57,7 +57,7 @@ impl Pen {
     /// Okabe–Ito colour as #rrggbb.
     pub fn colour(self) -> &'static str {
         match self {
-            Pen::Frame => "#000000",
+            Pen::Frame | Pen::Hidden => "#000000",
             Pen::Kept => "#0072B2",
             Pen::Cut => "#D55E00",
             Pen::Tried => "#E69F00",
@@ -68,8 +68,9 @@ impl Pen {
     }
     /// Every pen, in a fixed order (the writers define one colour and one
     /// arrow head each).
-    pub const ALL: [Pen; 7] = [
+    pub const ALL: [Pen; 8] = [
         Pen::Frame,
+        Pen::Hidden,
         Pen::Kept,
         Pen::Cut,
         Pen::Tried,
@@ -81,6 +82,7 @@ impl Pen {
     pub fn name(self) -> &'static str {
         match self {
             Pen::Frame => "gfFrame",
+            Pen::Hidden => "gfHidden",
             Pen::Kept => "gfKept",
             Pen::Cut => "gfCut",
             Pen::Tried => "gfTried",
@@ -89,113 +91,210 @@ impl Pen {
             Pen::Other => "gfOther",
         }
     }
-    /// Whether the line is dashed (cut-off parts).
-    pub fn dashed(self) -> bool {
-        self == Pen::Cut
+    /// The line pattern: SVG dash lengths and the TikZ option, or none
+    /// for a solid line.
+    pub fn dashes(self) -> Option<(&'static str, &'static str)> {
+        match self {
+            Pen::Cut => Some(("9 6", "dashed")),
+            Pen::Hidden => Some(("5 4", "dash pattern=on 2.5pt off 2pt")),
+            Pen::Tried => Some(("2 4", "dotted")),
+            Pen::Other => Some(("10 4 2 4", "dash pattern=on 5pt off 2pt on 1pt off 2pt")),
+            _ => None,
+        }
     }
-    /// Whether the line is dash-dotted (derived directions).
-    pub fn dash_dotted(self) -> bool {
-        self == Pen::Other
-    }
-    /// Whether the line is dotted (helpers).
-    pub fn dotted(self) -> bool {
-        self == Pen::Tried
-    }
-    /// Line width in page points.
+    /// Line width in px.
     pub fn width(self) -> f64 {
         match self {
             Pen::Kept => 3.0,
-            Pen::Frame => 1.2,
+            Pen::Frame | Pen::Hidden => 1.2,
             _ => 2.0,
         }
     }
 }
 
-/// One mark of a figure, in page coordinates (y up).
+/// What a mark is: its `data-kind` in the SVG.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// A vector: a line from its tail to its tip, with a head.
+    Arrow,
+    /// A point: a dot.
+    Point,
+    /// A segment (a line of sight, a projector, a leg, a cut-off part).
+    Segment,
+    /// A plane: the view plane, or a face of the clipping box (unstroked).
+    Plane,
+    /// The clipping box: its twelve edges, hidden ones dashed.
+    Box,
+    /// An angle's arc.
+    Arc,
+    /// A coordinate axis: a line from the origin with a head.
+    Axis,
+    /// A window (near, far, viewport): a rectangle.
+    Window,
+}
+
+impl Kind {
+    /// The `data-kind` word.
+    pub fn word(self) -> &'static str {
+        match self {
+            Kind::Arrow => "arrow",
+            Kind::Point => "point",
+            Kind::Segment => "segment",
+            Kind::Plane => "plane",
+            Kind::Box => "box",
+            Kind::Arc => "arc",
+            Kind::Axis => "axis",
+            Kind::Window => "window",
+        }
+    }
+}
+
+/// The geometry of a mark, in page coordinates (y up).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Shape {
+    /// A line from a to b; with a head at b when `head`.
+    Line {
+        a: [f64; 2],
+        b: [f64; 2],
+        head: bool,
+    },
+    /// A closed outline.
+    Polygon(Vec<[f64; 2]>),
+    /// A closed region drawn without an outline (a face of the box: its
+    /// edges are the box's).
+    Face(Vec<[f64; 2]>),
+    /// An open polyline (an arc).
+    Path(Vec<[f64; 2]>),
+    /// A dot.
+    Dot([f64; 2]),
+    /// Several lines, each with its own pen (the box's edges).
+    Edges(Vec<([f64; 2], [f64; 2], Pen)>),
+}
+
+/// One drawn object: its name (the steps' name for it), its kind, its pen
+/// and its geometry.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mark {
+    /// The name (`data-name`), unique in its panel.
+    pub name: String,
+    /// The kind (`data-kind`).
+    pub kind: Kind,
+    /// How it is drawn.
+    pub pen: Pen,
+    /// Where.
+    pub shape: Shape,
+}
+
+impl Mark {
+    /// A mark.
+    pub fn new(name: impl Into<String>, kind: Kind, pen: Pen, shape: Shape) -> Mark {
+        Mark {
+            name: name.into(),
+            kind,
+            pen,
+            shape,
+        }
+    }
+    /// Every page point of the mark.
+    pub fn points(&self) -> Vec<[f64; 2]> {
+        match &self.shape {
+            Shape::Line { a, b, .. } => vec![*a, *b],
+            Shape::Polygon(p) | Shape::Face(p) | Shape::Path(p) => p.clone(),
+            Shape::Dot(p) => vec![*p],
+            Shape::Edges(e) => e.iter().flat_map(|(a, b, _)| [*a, *b]).collect(),
+        }
+    }
+}
+
+/// A label: text beside the mark it names.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Label {
+    /// The name of the mark it names (`data-for`).
+    pub of: String,
+    /// The text.
+    pub text: String,
+    /// A page direction to try first (beyond an arrow's tip, away from
+    /// the middle of the drawing), if any.
+    pub toward: Option<[f64; 2]>,
+    /// A page point to put it beside first (outside a face of the box),
+    /// if any; else the middle of the mark.
+    pub near: Option<[f64; 2]>,
+    /// The short form written when the whole text cannot stand clear
+    /// (the whole text then goes to a note); none: the mark's name when
+    /// the text is `NAME = …`, `NAME ≈ …` or `NAME: …`; empty: the label
+    /// is left out without a note (another panel says it).
+    pub short: Option<String>,
+}
+
+/// One item of a figure.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Item {
-    /// A line from a to b.
-    Segment { a: [f64; 2], b: [f64; 2], pen: Pen },
-    /// An arrow from a to b (head at b).
-    Arrow { a: [f64; 2], b: [f64; 2], pen: Pen },
-    /// A closed polygon outline.
-    Polygon { pts: Vec<[f64; 2]>, pen: Pen },
-    /// An open polyline (an angle's arc).
-    Path { pts: Vec<[f64; 2]>, pen: Pen },
-    /// A dot.
-    Dot { at: [f64; 2], pen: Pen },
-    /// A text label beside a point (text stays text), on the side `place`
-    /// (the writers move it further along when it would overlap another).
-    Label {
-        at: [f64; 2],
-        text: String,
-        place: Place,
-    },
+    /// A drawn object.
+    Mark(Mark),
+    /// A label beside a mark.
+    Label(Label),
     /// A line of text under the panel (a legend: what a short label near
     /// a mark stands for).
-    Note { text: String },
+    Note(String),
 }
 
-/// Where a label sits from its point.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum Place {
-    /// Above and to the right (the default).
-    #[default]
-    AboveRight,
-    /// Above, centred.
-    Above,
-    /// Above and to the left.
-    AboveLeft,
-    /// To the left.
-    Left,
-    /// Below and to the left.
-    BelowLeft,
-    /// Below, centred.
-    Below,
-    /// Below and to the right.
-    BelowRight,
-    /// To the right.
-    Right,
+/// A mark item.
+pub fn mark(name: impl Into<String>, kind: Kind, pen: Pen, shape: Shape) -> Item {
+    Item::Mark(Mark::new(name, kind, pen, shape))
 }
 
-/// The eight sides of a point, counter-clockwise from the right (the
-/// directions 0°, 45°, …, 315° on the page).
-pub const RING: [Place; 8] = [
-    Place::Right,
-    Place::AboveRight,
-    Place::Above,
-    Place::AboveLeft,
-    Place::Left,
-    Place::BelowLeft,
-    Place::Below,
-    Place::BelowRight,
-];
-
-impl Place {
-    /// The side a label goes on beyond the tip of an arrow pointing along
-    /// `d` (page direction, y up): the eight compass sides.
-    pub fn beyond(d: [f64; 2]) -> Place {
-        if d[0] == 0.0 && d[1] == 0.0 {
-            return Place::AboveRight;
-        }
-        let a = d[1].atan2(d[0]).to_degrees();
-        let k = (((a + 360.0 + 22.5) % 360.0) / 45.0) as usize;
-        RING[k.min(7)]
-    }
+/// A label for the mark `of`; `x = ≈ 0.1` is written `x ≈ 0.1`.
+pub fn label(of: impl Into<String>, text: impl Into<String>) -> Item {
+    label_toward(of, text, None)
 }
 
-/// A label item at `at` with the default place.
-pub fn label(at: [f64; 2], text: impl Into<String>) -> Item {
-    label_at(at, text, Place::AboveRight)
-}
-
-/// A label item on a chosen side; `x = ≈ 0.1` is written `x ≈ 0.1`.
-pub fn label_at(at: [f64; 2], text: impl Into<String>, place: Place) -> Item {
-    Item::Label {
-        at,
+/// A label for the mark `of` that tries the side `toward` first.
+pub fn label_toward(
+    of: impl Into<String>,
+    text: impl Into<String>,
+    toward: Option<[f64; 2]>,
+) -> Item {
+    Item::Label(Label {
+        of: of.into(),
         text: text.into().replace("= ≈ ", "≈ "),
-        place,
-    }
+        toward,
+        near: None,
+        short: None,
+    })
+}
+
+/// A label for the mark `of` on the side `toward`, written `short` when
+/// the whole text cannot stand clear.
+pub fn label_short(
+    of: impl Into<String>,
+    text: impl Into<String>,
+    short: impl Into<String>,
+    toward: [f64; 2],
+) -> Item {
+    Item::Label(Label {
+        of: of.into(),
+        text: text.into(),
+        toward: Some(toward),
+        near: None,
+        short: Some(short.into()),
+    })
+}
+
+/// A label for the mark `of` put beside the page point `near` first, on
+/// its side `toward`.
+pub fn label_near(
+    of: impl Into<String>,
+    text: impl Into<String>,
+    near: [f64; 2],
+    toward: [f64; 2],
+) -> Item {
+    Item::Label(Label {
+        of: of.into(),
+        text: text.into(),
+        toward: Some(toward),
+        near: Some(near),
+        short: None,
+    })
 }
 
 /// A drawing: the panels of one command or one part of a problem (for
@@ -221,32 +320,45 @@ impl Drawing {
 pub struct Figure {
     /// Short title (`<title>`).
     pub title: String,
-    /// Longer description (`<desc>`), naming the projection.
+    /// Longer description (`<desc>`), naming the view it is drawn in.
     pub desc: String,
-    /// The marks, drawn in order.
+    /// The marks, labels and notes, drawn in order.
     pub items: Vec<Item>,
+    /// The most px the marks may take from top to bottom (none: the
+    /// layout's usual 420).
+    pub height: Option<f64>,
 }
 
 impl Figure {
-    /// The page-coordinate bounding box (min x, min y, max x, max y).
+    /// The marks, in order.
+    pub fn marks(&self) -> impl Iterator<Item = &Mark> {
+        self.items.iter().filter_map(|it| match it {
+            Item::Mark(m) => Some(m),
+            _ => None,
+        })
+    }
+    /// The labels, in order.
+    pub fn labels(&self) -> impl Iterator<Item = &Label> {
+        self.items.iter().filter_map(|it| match it {
+            Item::Label(l) => Some(l),
+            _ => None,
+        })
+    }
+    /// The mark of this name.
+    pub fn mark(&self, name: &str) -> Option<&Mark> {
+        self.marks().find(|m| m.name == name)
+    }
+    /// The page-coordinate bounding box of the marks (min x, min y, max x,
+    /// max y).
     pub fn bounds(&self) -> [f64; 4] {
         let mut b = [f64::MAX, f64::MAX, f64::MIN, f64::MIN];
-        let mut add = |p: &[f64; 2]| {
-            b[0] = b[0].min(p[0]);
-            b[1] = b[1].min(p[1]);
-            b[2] = b[2].max(p[0]);
-            b[3] = b[3].max(p[1]);
-        };
-        for it in &self.items {
-            match it {
-                Item::Segment { a, b, .. } | Item::Arrow { a, b, .. } => {
-                    add(a);
-                    add(b);
-                }
-                Item::Polygon { pts, .. } | Item::Path { pts, .. } => pts.iter().for_each(&mut add),
-                Item::Dot { at, .. } | Item::Label { at, .. } => add(at),
-                Item::Note { .. } => {}
-            }
+        for p in self.marks().flat_map(Mark::points) {
+            b = [
+                b[0].min(p[0]),
+                b[1].min(p[1]),
+                b[2].max(p[0]),
+                b[3].max(p[1]),
+            ];
         }
         if b[0] > b[2] {
             return [0.0, 0.0, 1.0, 1.0];
@@ -255,12 +367,9 @@ impl Figure {
     }
 }
 
-/// Escapes text for XML (SVG, XHTML).
+/// Escapes text for XML (SVG, XHTML): [`crate::report::escape::xml`].
 pub fn xml_escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
+    crate::report::escape::xml(s)
 }
 
 /// `name = value` as a label, or `name ≈ value` when the value is an
@@ -290,6 +399,20 @@ pub fn short(st: &crate::report::Style, v: &crate::stages::trace::Val) -> String
             } else {
                 dec.to_string()
             };
+        }
+    }
+    full
+}
+
+/// A value in its exact form alone when it has one (`2/3`, `(1, 4, 3/2)`),
+/// else as the steps write it (`≈ 0.4142`).
+pub fn exact(st: &crate::report::Style, v: &crate::stages::trace::Val) -> String {
+    let full = st.val_inline(v);
+    for sep in [" ≈ ", " = "] {
+        if let Some((e, _)) = full.split_once(sep) {
+            if !e.is_empty() {
+                return e.to_string();
+            }
         }
     }
     full

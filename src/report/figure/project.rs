@@ -1,17 +1,21 @@
 //! The projection figure of `project` and `solve`'s project part: the
 //! centre of projection, the view plane and each projector from the centre
-//! through the point to its image, in 3D (cabinet projection); the side
-//! view (y–z) with the similar triangles; the images on the view plane.
+//! through the point to its image, in 3D (an axonometric view with the
+//! centre of projection outside the view plane); the side view (y–z) with
+//! the similar triangles; the images on the view plane.
 
-use super::builders::{axes3, input_num, num_val, nums_of, panel, result, say, vec_val, Part};
-use super::{cabinet, label, label_at, labelled, short, Figure, Item, Pen, Place};
+use super::axo::{apex_outside, Axo};
+use super::builders::{
+    axes3, input_num, num_val, nums_of, panel, panel3, result, say, vec_val, Part,
+};
+use super::{label, label_toward, labelled, mark, short, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
 use crate::stages::trace::Val;
 
 /// The projection asked for.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Kind {
+pub enum Proj {
     /// Centre at the origin, plane z = d.
     Plane(f64),
     /// Centre at (0, 0, zprp), plane z = zvp.
@@ -20,52 +24,52 @@ pub enum Kind {
     Ortho,
 }
 
-impl Kind {
+impl Proj {
     /// The centre of projection (none for the orthographic projection).
     pub fn cop(self) -> Option<[f64; 3]> {
         match self {
-            Kind::Plane(_) => Some([0.0; 3]),
-            Kind::General(c, _) => Some([0.0, 0.0, c]),
-            Kind::Ortho => None,
+            Proj::Plane(_) => Some([0.0; 3]),
+            Proj::General(c, _) => Some([0.0, 0.0, c]),
+            Proj::Ortho => None,
         }
     }
     /// The view plane's z.
     pub fn plane(self) -> f64 {
         match self {
-            Kind::Plane(d) => d,
-            Kind::General(_, z) => z,
-            Kind::Ortho => 0.0,
+            Proj::Plane(d) => d,
+            Proj::General(_, z) => z,
+            Proj::Ortho => 0.0,
         }
     }
     /// The similar triangles' relation, in the text's notation.
     fn relation(self) -> &'static str {
         match self {
-            Kind::Plane(_) => "yp/d = y/z  ⇒  yp = d·y/z",
-            Kind::General(..) => "yp/(zprp − zvp) = y/(zprp − z)",
-            Kind::Ortho => "yp = y",
+            Proj::Plane(_) => "yp/d = y/z  ⇒  yp = d·y/z",
+            Proj::General(..) => "yp/(zprp − zvp) = y/(zprp − z)",
+            Proj::Ortho => "yp = y",
         }
     }
     /// The plane's label.
     fn plane_label(self, st: &Style) -> String {
         let n = |x: f64| st.val_inline(&num_val(x));
         match self {
-            Kind::Plane(d) => format!("z = d = {}", n(d)),
-            Kind::General(_, z) => format!("z = zvp = {}", n(z)),
-            Kind::Ortho => "z = 0".into(),
+            Proj::Plane(d) => format!("z = d = {}", n(d)),
+            Proj::General(_, z) => format!("z = zvp = {}", n(z)),
+            Proj::Ortho => "z = 0".into(),
         }
     }
 }
 
 /// The projection of the inputs (`projection`: `d`, `cop` and `plane`, or
 /// `ortho`).
-fn kind(p: &Part) -> Option<Kind> {
+fn kind(p: &Part) -> Option<Proj> {
     let j = p.inp.get("projection")?;
     if let Some(d) = input_num(j, "d") {
-        return Some(Kind::Plane(d));
+        return Some(Proj::Plane(d));
     }
     match (input_num(j, "cop"), input_num(j, "plane")) {
-        (Some(c), Some(z)) => Some(Kind::General(c, z)),
-        _ => j.get("ortho").and(Some(Kind::Ortho)),
+        (Some(c), Some(z)) => Some(Proj::General(c, z)),
+        _ => j.get("ortho").and(Some(Proj::Ortho)),
     }
 }
 
@@ -139,7 +143,7 @@ pub fn figures(p: &Part, st: &Style) -> Option<Vec<Figure>> {
 
 /// The largest |coordinate| of the points, their images, the centre and
 /// the plane (at least `floor`).
-fn extent(k: Kind, pts: &[Projected], floor: f64) -> f64 {
+fn extent(k: Proj, pts: &[Projected], floor: f64) -> f64 {
     let mut e = k.plane().abs().max(floor);
     if let Some(c) = k.cop() {
         e = e.max(c[2].abs());
@@ -154,7 +158,7 @@ fn extent(k: Kind, pts: &[Projected], floor: f64) -> f64 {
 
 /// Where a projector starts and ends: from the centre (or, orthographic,
 /// from the point) to the farther of the point and its image.
-fn projector(k: Kind, q: &Projected) -> ([f64; 3], [f64; 3]) {
+fn projector(k: Proj, q: &Projected) -> ([f64; 3], [f64; 3]) {
     let Some(c) = k.cop() else {
         return (q.eye, q.img);
     };
@@ -168,13 +172,15 @@ fn projector(k: Kind, q: &Projected) -> ([f64; 3], [f64; 3]) {
 }
 
 /// The half size of the view plane drawn: beyond every image, and at
-/// least a sixth of the scene.
-fn plane_half(pts: &[Projected], ext: f64) -> f64 {
-    let m = pts
-        .iter()
-        .map(|q| q.img[0].abs().max(q.img[1].abs()))
-        .fold(0.0, f64::max);
-    (1.4 * m).max(ext / 6.0)
+/// least a sixth of the scene, or, when the plane is near the centre of
+/// projection (the images then drawn in an inset), 0.8 times its distance
+/// (so the centre stays outside it in the view).
+fn plane_half(k: Proj, pts: &[Projected], ext: f64) -> f64 {
+    let m = 1.4 * image_reach(pts, 0.0);
+    match zoomed(k, pts, ext) {
+        Some(s) => m.max(0.8 * s.abs()),
+        None => m.max(ext / 6.0),
+    }
 }
 
 /// A round enlargement for an inset: the largest 1, 2 or 5 × 10^k not
@@ -195,7 +201,7 @@ pub fn round_factor(x: f64) -> f64 {
 /// view plane when it is under an eighth of the scene (the images then
 /// crowd the centre and are drawn again, enlarged, in an inset); none for
 /// the orthographic projection or a plane far enough away.
-fn zoomed(k: Kind, pts: &[Projected], ext: f64) -> Option<f64> {
+fn zoomed(k: Proj, pts: &[Projected], ext: f64) -> Option<f64> {
     let c = k.cop()?;
     let s = c[2] - k.plane();
     (!pts.is_empty() && s != 0.0 && 8.0 * s.abs() < ext).then_some(s)
@@ -208,10 +214,23 @@ fn image_reach(pts: &[Projected], floor: f64) -> f64 {
         .fold(floor, f64::max)
 }
 
+/// A line from a to b (no head).
+fn seg(a: [f64; 2], b: [f64; 2]) -> Shape {
+    Shape::Line { a, b, head: false }
+}
+
+/// The square of half size h about c on the page.
+fn square(c: [f64; 2], h: f64) -> Vec<[f64; 2]> {
+    [[-h, -h], [h, -h], [h, h], [-h, h]]
+        .iter()
+        .map(|d| [c[0] + d[0], c[1] + d[1]])
+        .collect()
+}
+
 /// The inset of the 3D panel: the view plane seen from the front (xp to
 /// the right, yp up), enlarged m times, to the right of the drawing, with
-/// each image on it, joined to the plane by a dotted line.
-fn plane_inset(k: Kind, pts: &[Projected], ext: f64, st: &Style, items: &mut Vec<Item>) {
+/// each image on it, joined to the plane by a line.
+fn plane_inset(k: Proj, pts: &[Projected], ext: f64, axo: &Axo, st: &Style, items: &mut Vec<Item>) {
     let b = Figure {
         items: items.clone(),
         ..Figure::default()
@@ -220,94 +239,113 @@ fn plane_inset(k: Kind, pts: &[Projected], ext: f64, st: &Style, items: &mut Vec
     let hi = 0.3 * ext;
     let m = round_factor(0.8 * hi / image_reach(pts, 1e-12));
     let (cx, cy) = (b[2] + 1.5 * hi, 0.5 * (b[1] + b[3]));
-    let corners = [[-hi, -hi], [hi, -hi], [hi, hi], [-hi, hi]];
-    items.push(Item::Polygon {
-        pts: corners.iter().map(|c| [cx + c[0], cy + c[1]]).collect(),
-        pen: Pen::Given,
-    });
-    items.push(Item::Segment {
-        a: cabinet([plane_half(pts, ext), 0.0, k.plane()]),
-        b: [cx - hi, cy],
-        pen: Pen::Given,
-    });
-    for (a, b) in [([-hi, 0.0], [hi, 0.0]), ([0.0, -hi], [0.0, hi])] {
-        items.push(Item::Segment {
-            a: [cx + a[0], cy + a[1]],
-            b: [cx + b[0], cy + b[1]],
-            pen: Pen::Frame,
-        });
-    }
     let times = st.val_inline(&num_val(m));
+    let name = format!("view plane (×{times})");
+    items.push(mark(
+        &name,
+        Kind::Plane,
+        Pen::Given,
+        Shape::Polygon(square([cx, cy], hi)),
+    ));
+    let h = plane_half(k, pts, ext);
+    let edge = axo.page([h, 0.0, k.plane()]);
+    items.push(mark(
+        "inset link",
+        Kind::Segment,
+        Pen::Given,
+        seg(edge, [cx - hi, cy]),
+    ));
+    for (a, b, axis) in [([-hi, 0.0], [hi, 0.0], "xp"), ([0.0, -hi], [0.0, hi], "yp")] {
+        let (a, b) = ([cx + a[0], cy + a[1]], [cx + b[0], cy + b[1]]);
+        items.push(mark(axis, Kind::Axis, Pen::Frame, seg(a, b)));
+    }
     let text = format!("{} (×{times})", k.plane_label(st));
-    items.push(label_at([cx, cy + hi], text, Place::Above));
+    items.push(label_toward(&name, text, Some([0.0, 1.0])));
     for q in pts {
         let at = [cx + m * q.img[0], cy + m * q.img[1]];
-        items.push(Item::Dot { at, pen: Pen::Kept });
-        items.push(label_at(at, image_names(&q.name), Place::BelowRight));
+        let img = image_names(&q.name);
+        items.push(mark(&img, Kind::Point, Pen::Kept, Shape::Dot(at)));
+        items.push(label(&img, img.clone()));
     }
     let word = say(st, FigureMsg::Word(FigWord::Zoomed));
-    items.push(Item::Note {
-        text: format!("{word} ×{times}"),
-    });
+    items.push(Item::Note(format!("{word} ×{times}")));
+}
+
+/// The centre of projection's label, `COP` as the text abbreviates it,
+/// and a note with its name.
+fn cop_label(st: &Style) -> [Item; 2] {
+    let name = say(st, FigureMsg::Word(FigWord::Cop));
+    [label("COP", "COP"), Item::Note(format!("COP: {name}"))]
+}
+
+/// The view plane's corners in 3D.
+fn plane_corners(k: Proj, h: f64) -> Vec<[f64; 3]> {
+    [[-h, -h], [h, -h], [h, h], [-h, h]]
+        .iter()
+        .map(|c| [c[0], c[1], k.plane()])
+        .collect()
 }
 
 /// The 3D panel.
-fn three_d(k: Kind, pts: &[Projected], st: &Style) -> Figure {
+fn three_d(k: Proj, pts: &[Projected], st: &Style) -> Figure {
     let ext = extent(k, pts, 1.0);
-    let zv = k.plane();
-    let mut items = axes3(ext * 0.3, ["x", "y", "z"]);
-    let zlo = pts.iter().map(|q| q.eye[2]).fold(zv, f64::min).min(0.0);
-    items.push(Item::Segment {
-        a: cabinet([0.0; 3]),
-        b: cabinet([0.0, 0.0, zlo - 0.1 * ext]),
-        pen: Pen::Frame,
-    });
-    let h = plane_half(pts, ext);
-    let corners = [[-h, -h], [h, -h], [h, h], [-h, h]];
-    items.push(Item::Polygon {
-        pts: corners.iter().map(|c| cabinet([c[0], c[1], zv])).collect(),
-        pen: Pen::Given,
-    });
-    items.push(label_at(
-        cabinet([h, h, zv]),
-        k.plane_label(st),
-        Place::Right,
+    let h = plane_half(k, pts, ext);
+    let axo = apex_outside(k.cop(), &[plane_corners(k, h)]);
+    let zlo = pts
+        .iter()
+        .map(|q| q.eye[2])
+        .fold(k.plane(), f64::min)
+        .min(0.0);
+    let mut items = axes3(&axo, ext * 0.3, zlo - 0.1 * ext);
+    let corners = plane_corners(k, h).iter().map(|c| axo.page(*c)).collect();
+    items.push(mark(
+        "view plane",
+        Kind::Plane,
+        Pen::Given,
+        Shape::Polygon(corners),
     ));
+    items.push(label("view plane", k.plane_label(st)));
     if let Some(c) = k.cop() {
-        items.push(Item::Dot {
-            at: cabinet(c),
-            pen: Pen::Frame,
-        });
-        let text = say(st, FigureMsg::Word(FigWord::Cop));
-        items.push(label_at(cabinet(c), text, Place::AboveLeft));
+        items.push(mark(
+            "COP",
+            Kind::Point,
+            Pen::Frame,
+            Shape::Dot(axo.page(c)),
+        ));
+        items.extend(cop_label(st));
     }
+    let zoom = zoomed(k, pts, ext).is_some();
     for q in pts {
         let (a, b) = projector(k, q);
-        items.push(Item::Segment {
-            a: cabinet(a),
-            b: cabinet(b),
-            pen: Pen::Tried,
-        });
-        items.push(Item::Dot {
-            at: cabinet(q.eye),
-            pen: Pen::Frame,
-        });
-        items.push(label_at(
-            cabinet(q.eye),
-            labelled(st, &q.name, &q.eye_val),
-            Place::BelowRight,
+        let name = format!("projector {}", q.name);
+        items.push(mark(
+            name,
+            Kind::Segment,
+            Pen::Tried,
+            seg(axo.page(a), axo.page(b)),
         ));
-        if zoomed(k, pts, ext).is_none() {
-            items.push(Item::Dot {
-                at: cabinet(q.img),
-                pen: Pen::Kept,
-            });
+        items.push(mark(
+            &q.name,
+            Kind::Point,
+            Pen::Frame,
+            Shape::Dot(axo.page(q.eye)),
+        ));
+        items.push(label(&q.name, labelled(st, &q.name, &q.eye_val)));
+        if !zoom {
+            let img = image_names(&q.name);
+            items.push(mark(
+                &img,
+                Kind::Point,
+                Pen::Kept,
+                Shape::Dot(axo.page(q.img)),
+            ));
+            items.push(label(&img, img.clone()));
         }
     }
-    if zoomed(k, pts, ext).is_some() {
-        plane_inset(k, pts, ext, st, &mut items);
+    if zoom {
+        plane_inset(k, pts, ext, &axo, st, &mut items);
     }
-    super::builders::panel(st, Panel::Projection, items)
+    panel3(st, Panel::Projection, &axo, items)
 }
 
 /// A point of the side view: (−z, y).
@@ -325,36 +363,30 @@ fn comp(v: &Val, i: usize) -> Option<&Val> {
 
 /// The side view: the z axis, the plane, the centre, each projector and
 /// the legs y (point) and yp (image) of the similar triangles.
-fn side_view(k: Kind, pts: &[Projected], st: &Style) -> Figure {
+fn side_view(k: Proj, pts: &[Projected], st: &Style) -> Figure {
     let ext = extent(k, pts, 0.0).max(1e-9);
     let zv = k.plane();
     let xs = pts.iter().map(|q| -q.eye[2]).chain([-zv, 0.0]);
     let (lo, hi) = xs.fold((f64::MAX, f64::MIN), |(a, b), x| (a.min(x), b.max(x)));
     let m = 0.08 * (hi - lo).max(ext * 0.1);
-    let mut items = vec![Item::Arrow {
+    let axis = Shape::Line {
         a: [lo - m, 0.0],
         b: [hi + m, 0.0],
-        pen: Pen::Frame,
-    }];
-    items.push(label_at([hi + m, 0.0], "−z", Place::Right));
+        head: true,
+    };
+    let mut items = vec![mark("−z", Kind::Axis, Pen::Frame, axis)];
+    items.push(label_toward("−z", "−z", Some([1.0, 0.0])));
     let h = pts
         .iter()
         .map(|q| q.eye[1].abs().max(q.img[1].abs()))
         .fold(0.0, f64::max)
         .max(ext * 0.05);
-    items.push(Item::Segment {
-        a: [-zv, -1.2 * h],
-        b: [-zv, 1.2 * h],
-        pen: Pen::Given,
-    });
-    items.push(label_at([-zv, -1.2 * h], k.plane_label(st), Place::Below));
+    let plane = seg([-zv, -1.2 * h], [-zv, 1.2 * h]);
+    items.push(mark("view plane", Kind::Plane, Pen::Given, plane));
+    items.push(label("view plane", k.plane_label(st)));
     if let Some(c) = k.cop() {
-        items.push(Item::Dot {
-            at: side(c),
-            pen: Pen::Frame,
-        });
-        let text = say(st, FigureMsg::Word(FigWord::Cop));
-        items.push(label_at(side(c), text, Place::AboveLeft));
+        items.push(mark("COP", Kind::Point, Pen::Frame, Shape::Dot(side(c))));
+        items.extend(cop_label(st));
     }
     // Points with the same (y, z) share one triangle: B', C': y = …
     let mut shared: Vec<(&Projected, Vec<&str>)> = Vec::new();
@@ -365,35 +397,22 @@ fn side_view(k: Kind, pts: &[Projected], st: &Style) -> Figure {
             None => shared.push((q, vec![&q.name])),
         }
     }
+    let groups: Vec<(&Projected, String)> =
+        shared.iter().map(|(q, n)| (*q, n.join(", "))).collect();
     let zoom = zoomed(k, pts, ext);
-    for (q, names) in &shared {
-        let mut marks = triangle_marks(k, q, &names.join(", "), st);
-        if zoom.is_some() {
-            // The image's leg, dot and label go to the inset.
-            marks.truncate(2);
-            marks.extend(point_marks(q, &names.join(", "), st));
-        } else {
-            marks.extend(point_marks(q, &names.join(", "), st));
+    for (q, names) in &groups {
+        items.extend(triangle_marks(k, q, names, st));
+        if zoom.is_none() {
+            let (pi, foot) = (side(q.img), [-q.img[2], 0.0]);
+            items.extend(image_marks([pi, foot], q, names, st));
         }
-        items.extend(marks);
     }
-    items.push(label([lo - m, 1.2 * h], k.relation()));
+    items.push(Item::Note(k.relation().to_string()));
     if let Some(s) = zoom {
-        let groups: Vec<(&Projected, String)> =
-            shared.iter().map(|(q, n)| (*q, n.join(", "))).collect();
         let at = [lo - m, -1.2 * h - 0.25 * h];
         side_inset(k, &groups, s, (at, 0.9 * (hi - lo)), st, &mut items);
     }
     panel(st, Panel::ProjectionSide, items)
-}
-
-/// Above a point with y ≥ 0, below one under the axis.
-fn up(y: f64) -> Place {
-    if y >= 0.0 {
-        Place::Above
-    } else {
-        Place::Below
-    }
 }
 
 /// Component i of a value as a label writes it.
@@ -401,56 +420,45 @@ fn val_at(st: &Style, v: &Val, i: usize) -> String {
     comp(v, i).map(|c| short(st, c)).unwrap_or_default()
 }
 
-/// One point's projector and leg y in the side view, then its image's leg
-/// yp, dot and label `A'': yp = …` (beside the image).
-fn triangle_marks(k: Kind, q: &Projected, names: &str, st: &Style) -> Vec<Item> {
+/// One point (or several with the same y and z, `names`) in the side
+/// view: its projector, its leg y from the axis, its dot and its label
+/// `A': y = …, z = …`.
+fn triangle_marks(k: Proj, q: &Projected, names: &str, st: &Style) -> Vec<Item> {
     let (a, b) = projector(k, q);
-    let (pe, pi) = (side(q.eye), side(q.img));
-    let mut out = vec![
-        Item::Segment {
-            a: side(a),
-            b: side(b),
-            pen: Pen::Tried,
-        },
-        Item::Segment {
-            a: [pe[0], 0.0],
-            b: pe,
-            pen: Pen::Frame,
-        },
-    ];
-    out.extend(image_marks([pi, [pi[0], 0.0]], q, names, st));
-    out
-}
-
-/// An image in a side view at `at[0]`: the leg yp from its foot `at[1]`
-/// on the axis, the dot, the label.
-fn image_marks(at: [[f64; 2]; 2], q: &Projected, names: &str, st: &Style) -> [Item; 3] {
-    let pi = at[0];
-    let text = format!("{}: yp = {}", image_names(names), val_at(st, &q.img_val, 1));
-    [
-        Item::Segment {
-            a: at[1],
-            b: pi,
-            pen: Pen::Kept,
-        },
-        Item::Dot {
-            at: pi,
-            pen: Pen::Kept,
-        },
-        label_at(pi, text, up(pi[1])),
+    let pe = side(q.eye);
+    let (y, z) = (val_at(st, &q.eye_val, 1), val_at(st, &q.eye_val, 2));
+    vec![
+        mark(
+            format!("projector {names}"),
+            Kind::Segment,
+            Pen::Tried,
+            seg(side(a), side(b)),
+        ),
+        mark(
+            format!("y {names}"),
+            Kind::Segment,
+            Pen::Frame,
+            seg([pe[0], 0.0], pe),
+        ),
+        mark(names, Kind::Point, Pen::Frame, Shape::Dot(pe)),
+        label(names, format!("{names}: y = {y}, z = {z}")),
     ]
 }
 
-/// A point in the side view: its dot and label `A': y = …, z = …`.
-fn point_marks(q: &Projected, names: &str, st: &Style) -> [Item; 2] {
-    let pe = side(q.eye);
-    let (y, z) = (val_at(st, &q.eye_val, 1), val_at(st, &q.eye_val, 2));
+/// An image in a side view at `at[0]`: the leg yp from its foot `at[1]`
+/// on the axis, the dot, the label `A'': yp = …`.
+fn image_marks(at: [[f64; 2]; 2], q: &Projected, names: &str, st: &Style) -> [Item; 3] {
+    let img = image_names(names);
+    let text = format!("{img}: yp = {}", val_at(st, &q.img_val, 1));
     [
-        Item::Dot {
-            at: pe,
-            pen: Pen::Frame,
-        },
-        label_at(pe, format!("{names}: y = {y}, z = {z}"), up(pe[1])),
+        mark(
+            format!("yp {img}"),
+            Kind::Segment,
+            Pen::Kept,
+            seg(at[1], at[0]),
+        ),
+        mark(&img, Kind::Point, Pen::Kept, Shape::Dot(at[0])),
+        label(&img, text),
     ]
 }
 
@@ -461,7 +469,7 @@ fn point_marks(q: &Projected, names: &str, st: &Style) -> [Item; 2] {
 /// axis, the plane, the centre, each projector and each image with its
 /// leg yp and label.
 fn side_inset(
-    k: Kind,
+    k: Proj,
     groups: &[(&Projected, String)],
     s: f64,
     at: ([f64; 2], f64),
@@ -480,38 +488,30 @@ fn side_inset(
     let x0 = at.0[0] + (-w * m).max(0.0);
     let y0 = at.0[1] - yr * m;
     let f = |p: [f64; 2]| [x0 + (p[0] - c[0]) * m, y0 + p[1] * m];
-    let frame = [[c[0], -yr], [c[0] + w, -yr], [c[0] + w, yr], [c[0], yr]];
-    items.push(Item::Polygon {
-        pts: frame.iter().map(|p| f(*p)).collect(),
-        pen: Pen::Frame,
-    });
-    items.push(Item::Segment {
-        a: f(c),
-        b: f([c[0] + w, 0.0]),
-        pen: Pen::Frame,
-    });
-    let zv = -k.plane();
-    items.push(Item::Segment {
-        a: f([zv, -yr]),
-        b: f([zv, yr]),
-        pen: Pen::Given,
-    });
-    items.push(Item::Dot {
-        at: f(c),
-        pen: Pen::Frame,
-    });
     let times = st.val_inline(&num_val(m));
-    let text = format!("{} (×{times})", k.plane_label(st));
-    items.push(label_at(f([c[0] + w, 0.0]), text, Place::Right));
+    let frame = [[c[0], -yr], [c[0] + w, -yr], [c[0] + w, yr], [c[0], yr]];
+    let inset = format!("inset (×{times})");
+    let outline = Shape::Polygon(frame.iter().map(|p| f(*p)).collect());
+    items.push(mark(&inset, Kind::Window, Pen::Frame, outline));
+    let axis = seg(f(c), f([c[0] + w, 0.0]));
+    items.push(mark(format!("−z (×{times})"), Kind::Axis, Pen::Frame, axis));
+    let zv = -k.plane();
+    let name = format!("view plane (×{times})");
+    let plane = seg(f([zv, -yr]), f([zv, yr]));
+    items.push(mark(&name, Kind::Plane, Pen::Given, plane));
+    items.push(label(&name, format!("{} (×{times})", k.plane_label(st))));
+    items.push(mark(
+        format!("COP (×{times})"),
+        Kind::Point,
+        Pen::Frame,
+        Shape::Dot(f(c)),
+    ));
     for (q, names) in groups {
         let pe = side(q.eye);
         let t = w / (pe[0] - c[0]);
         let end = [c[0] + t * (pe[0] - c[0]), c[1] + t * (pe[1] - c[1])];
-        items.push(Item::Segment {
-            a: f(c),
-            b: f(end),
-            pen: Pen::Tried,
-        });
+        let proj = format!("projector {names} (×{times})");
+        items.push(mark(proj, Kind::Segment, Pen::Tried, seg(f(c), f(end))));
         let pi = side(q.img);
         items.extend(image_marks([f(pi), f([pi[0], 0.0])], q, names, st));
     }
@@ -539,22 +539,25 @@ fn view_plane(pts: &[Projected], st: &Style) -> Figure {
     let ((x0, x1), (y0, y1)) = (range(0), range(1));
     let mut items = Vec::new();
     for (a, b, name) in [([x0, 0.0], [x1, 0.0], "xp"), ([0.0, y0], [0.0, y1], "yp")] {
-        items.push(Item::Arrow {
-            a,
-            b,
-            pen: Pen::Frame,
-        });
-        items.push(label_at(b, name, Place::beyond([b[0], b[1]])));
+        items.push(mark(
+            name,
+            Kind::Axis,
+            Pen::Frame,
+            Shape::Line { a, b, head: true },
+        ));
+        items.push(label_toward(name, name, Some([b[0] - a[0], b[1] - a[1]])));
     }
     for q in pts {
         let at = [q.img[0], q.img[1]];
-        items.push(Item::Dot { at, pen: Pen::Kept });
         let xy = match &q.img_val {
             Val::List(c) => Val::List(c.iter().take(2).cloned().collect()),
             v => v.clone(),
         };
         let name = image_names(&q.name);
-        items.push(label(at, labelled(st, &name, &xy)));
+        items.push(mark(&name, Kind::Point, Pen::Kept, Shape::Dot(at)));
+        items.push(label(&name, labelled(st, &name, &xy)));
     }
-    panel(st, Panel::ViewPlane, items)
+    let mut f = panel(st, Panel::ViewPlane, items);
+    f.height = Some(300.0);
+    f
 }

@@ -1,10 +1,20 @@
-//! The lighting figure of `shade` and `solve`'s shade part: the surface
-//! patch at the point, the unit vectors N, L, V, R (and H for Blinn) from
-//! the steps and results, and the angles α (L to N) and β (R to V) marked,
-//! all under the cabinet projection.
+//! The lighting figure of `shade` and `solve`'s shade part, drawn as the
+//! text draws it: a flat diagram in the plane of incidence (the plane of
+//! N and L), the surface a line with N straight up, L to the left and R
+//! mirrored to the right of N, V (and H for Blinn) where they lie in that
+//! plane, every vector at its true angle and the arcs of α (L to N) and β
+//! (R to V) at true size. A vector that leaves the plane (V, H) is not
+//! bent into it: a note says by how much it leaves it, and a further panel
+//! draws it in its own plane (R and V for β, N and H for Blinn's N·H).
+//! With several lights each light has its own plane of incidence and
+//! panel (L2, R2, α2, β2, …).
+//!
+//! A vector v is drawn at (s·(v·t), v·N), where t is the unit direction
+//! of L's part along the surface (or of V's, when L lies along N) and
+//! s = −1 puts L on the left.
 
-use super::builders::{arrow3, num_val, panel, result, say, vec_of, Part};
-use super::{cabinet, label_at, labelled, short, Figure, Item, Pen, Place};
+use super::builders::{cross, dot, num_val, panel, result, say, unit, vec_of, Part};
+use super::{label_short, label_toward, labelled, mark, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
 use crate::stages::trace::Val;
@@ -12,202 +22,371 @@ use crate::stages::trace::Val;
 /// The length every unit vector is drawn with (page units).
 pub const LENGTH: f64 = 1.5;
 
-/// The first step result with this name that is a 3-vector (N, L, V).
-fn step_vector<'a>(p: &'a Part, name: &str) -> Option<&'a Val> {
-    p.steps
-        .iter()
-        .flat_map(|s| &s.result)
-        .find(|(k, v)| k == name && vec_of(v).is_some())
-        .map(|(_, v)| v)
-}
-
-fn unit(a: [f64; 3]) -> [f64; 3] {
-    let n = a.iter().map(|c| c * c).sum::<f64>().sqrt().max(1e-300);
-    [a[0] / n, a[1] / n, a[2] / n]
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-/// The square patch of the surface, perpendicular to N, centred at the
-/// point.
-fn patch(n: [f64; 3]) -> Vec<[f64; 2]> {
-    let k = (0..3)
-        .min_by(|i, j| n[*i].abs().total_cmp(&n[*j].abs()))
-        .unwrap_or(0);
-    let mut a = [0.0; 3];
-    a[k] = 1.0;
-    let t1 = unit(cross(n, a));
-    let t2 = cross(n, t1);
-    let s = 0.6 * LENGTH;
-    [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)]
-        .iter()
-        .map(|(x, y)| {
-            cabinet([
-                s * (x * t1[0] + y * t2[0]),
-                s * (x * t1[1] + y * t2[1]),
-                s * (x * t1[2] + y * t2[2]),
-            ])
-        })
-        .collect()
-}
-
-/// The arc from direction a to direction b at radius r, and its label
-/// `name: cos name = … (name = …°)`; nothing when the angle is under 1°.
-fn angle(a: [f64; 3], b: [f64; 3], name: &str, cos: Option<&Val>, st: &Style) -> Vec<Item> {
-    let (a, b) = (unit(a), unit(b));
-    let c = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]).clamp(-1.0, 1.0);
-    let Some(cos) = cos else { return vec![] };
-    if c.acos().to_degrees() < 1.0 || c < -0.999 {
-        return vec![];
-    }
-    let r = 0.45 * LENGTH;
-    let at = |t: f64| {
-        let m = unit([
-            (1.0 - t) * a[0] + t * b[0],
-            (1.0 - t) * a[1] + t * b[1],
-            (1.0 - t) * a[2] + t * b[2],
-        ]);
-        cabinet([r * m[0], r * m[1], r * m[2]])
-    };
-    let pts: Vec<[f64; 2]> = (0..=16).map(|i| at(i as f64 / 16.0)).collect();
-    let deg = match cos {
-        Val::Num(s) => s.value.clamp(-1.0, 1.0).acos().to_degrees(),
-        _ => c.acos().to_degrees(),
-    };
-    let mid = at(0.5);
-    let text = format!(
-        "{name}: cos {name} = {} ({name} = {}°)",
-        short(st, cos),
-        st.val_inline(&num_val((deg * 100.0).round() / 100.0))
-    );
-    vec![
-        Item::Path {
-            pts,
-            pen: Pen::Other,
-        },
-        label_at(mid, text, Place::beyond(mid)),
-    ]
-}
-
 /// How far a vector that coincides with one drawn before is moved
 /// sideways on the page (page units; a twentieth of [`LENGTH`]).
 pub const BESIDE: f64 = 0.075;
 
-/// A vector `names[1]` along the unit direction `d` that coincides with
-/// `names[0]` drawn before (and with k − 1 others since): its arrow moved
-/// sideways by k·[`BESIDE`] (perpendicular on the page), the earlier
-/// label rewritten `L = V = (…)`, and a note saying they coincide.
-fn beside(items: &mut Vec<Item>, names: [&str; 2], d: [f64; 3], pen: Pen, st: &Style) {
-    let tip = cabinet([LENGTH * d[0], LENGTH * d[1], LENGTH * d[2]]);
-    let len = tip[0].hypot(tip[1]).max(1e-300);
-    let head = format!("{}, ", names[0]);
-    let k = 1 + items
+/// A vector lies in a plane when its part out of the plane is under this.
+const IN_PLANE: f64 = 1e-9;
+
+/// The vectors of the steps with this name that are 3-vectors (N, V, and
+/// each light's L), in order.
+fn step_vectors<'a>(p: &'a Part, name: &str) -> Vec<&'a Val> {
+    p.steps
         .iter()
-        .filter_map(|it| match it {
-            Item::Note { text } if text.starts_with(&head) => Some(text.matches(", ").count()),
-            _ => None,
-        })
-        .sum::<usize>();
-    let s = k as f64 * BESIDE;
-    let off = [-tip[1] / len * s, tip[0] / len * s];
-    items.push(Item::Arrow {
-        a: off,
-        b: [tip[0] + off[0], tip[1] + off[1]],
-        pen,
-    });
-    let (eq, approx) = (format!("{} = ", names[0]), format!("{} ≈ ", names[0]));
-    let word = say(st, FigureMsg::Word(FigWord::Coincide));
-    let mut noted = false;
-    for it in items.iter_mut() {
-        match it {
-            // `N = L = (…)` → `N = L = V = (…)`: the name goes before the
-            // value (which starts at its bracket, after `= ` or `≈ `).
-            Item::Label { text, .. } if text.starts_with(&eq) || text.starts_with(&approx) => {
-                if let Some(at) = text.find('(') {
-                    let (names_part, value) = text.split_at(at);
-                    for sign in ["= ", "≈ "] {
-                        if let Some(before) = names_part.strip_suffix(sign) {
-                            *text = format!("{before}= {} {sign}{value}", names[1]);
-                            break;
-                        }
-                    }
-                }
-            }
-            Item::Note { text } if text.starts_with(&head) => {
-                *text = text.replacen(':', &format!(", {}:", names[1]), 1);
-                noted = true;
-            }
-            _ => {}
-        }
-    }
-    if !noted {
-        items.push(Item::Note {
-            text: format!("{}, {}: {word}", names[0], names[1]),
-        });
+        .flat_map(|s| &s.result)
+        .filter(|(k, v)| k == name && vec_of(v).is_some())
+        .map(|(_, v)| v)
+        .collect()
+}
+
+/// Light i's value of a result that is one value for one light (a number
+/// or a 3-vector) and a list (one per light) for several.
+fn per_light(v: Option<&Val>, i: usize) -> Option<&Val> {
+    let v = v?;
+    match v {
+        Val::Num(_) => (i == 0).then_some(v),
+        _ if vec_of(v).is_some() => (i == 0).then_some(v),
+        Val::List(xs) => xs.get(i).filter(|x| !matches!(x, Val::Null)),
+        _ => None,
     }
 }
 
-/// The lighting panel. With several lights, the first light's L is
-/// labelled L and the others L2, L3, …; R, H and the angles are drawn for
-/// one light only (the results name them for one light).
-pub fn figure(p: &Part, st: &Style) -> Option<Figure> {
-    let nv = step_vector(p, "N")?;
+/// The numbers (from 0) of the lights in range, in order: each has an L
+/// step (a light out of range has none).
+fn lit(p: &Part, count: usize) -> Vec<usize> {
+    match result(p.res, "lights") {
+        Some(Val::List(ls)) => (0..ls.len())
+            .filter(|i| match &ls[*i] {
+                Val::Map(m) => matches!(result(m, "in_range"), Some(Val::Bool(true))),
+                _ => false,
+            })
+            .collect(),
+        _ => (0..count).collect(),
+    }
+}
+
+/// A plane through the surface point: its up direction `n` and the
+/// direction `x` drawn to the right (page x of v = v·x, page y = v·n).
+#[derive(Clone, Copy)]
+struct Plane {
+    n: [f64; 3],
+    x: [f64; 3],
+}
+
+impl Plane {
+    /// The plane of `up` and `a` (or `b` when a lies along up), a on the
+    /// left when `a_left`.
+    fn of(up: [f64; 3], a: [f64; 3], b: Option<[f64; 3]>, a_left: bool) -> Plane {
+        let n = unit(up);
+        let along = |v: [f64; 3]| {
+            let t = [0, 1, 2].map(|k| v[k] - dot(v, n) * n[k]);
+            (dot(t, t).sqrt() > 1e-9).then(|| unit(t))
+        };
+        let (t, sign) = match (along(a), b.and_then(along)) {
+            (Some(t), _) => (t, if a_left { -1.0 } else { 1.0 }),
+            (None, Some(t)) => (t, 1.0),
+            (None, None) => {
+                let k = (0..3).min_by(|i, j| n[*i].abs().total_cmp(&n[*j].abs()));
+                let mut e = [0.0; 3];
+                e[k.unwrap_or(0)] = 1.0;
+                (unit(cross(n, e)), 1.0)
+            }
+        };
+        Plane {
+            n,
+            x: t.map(|c| sign * c),
+        }
+    }
+    /// A vector on the page.
+    fn page(&self, v: [f64; 3]) -> [f64; 2] {
+        [dot(v, self.x), dot(v, self.n)]
+    }
+    /// The angle by which a vector leaves the plane, degrees.
+    fn off(&self, v: [f64; 3]) -> f64 {
+        let b = cross(self.n, self.x);
+        dot(unit(v), b).clamp(-1.0, 1.0).asin().abs().to_degrees()
+    }
+    fn holds(&self, v: [f64; 3]) -> bool {
+        dot(unit(v), cross(self.n, self.x)).abs() < IN_PLANE
+    }
+}
+
+/// A vector to draw: its name, its value, its pen.
+struct Vector<'a> {
+    name: String,
+    val: &'a Val,
+    pen: Pen,
+}
+
+impl<'a> Vector<'a> {
+    fn new(name: &str, val: &'a Val, pen: Pen) -> Vector<'a> {
+        Vector {
+            name: name.to_string(),
+            val,
+            pen,
+        }
+    }
+}
+
+/// The arrows of the vectors in a plane, each from the surface point,
+/// [`LENGTH`] long: vectors along one direction are drawn side by side
+/// ([`BESIDE`] apart) under one label `L = V = (…)`, and a note says
+/// they coincide.
+fn arrows(plane: &Plane, vs: &[Vector], st: &Style, items: &mut Vec<Item>) {
+    let mut groups: Vec<(String, [f64; 2], Vec<&Vector>)> = Vec::new();
+    for v in vs {
+        let Some(d) = vec_of(v.val) else { continue };
+        let d = plane.page(unit(d));
+        let key = format!("{:.9},{:.9}", d[0], d[1]);
+        match groups.iter_mut().find(|g| g.0 == key) {
+            Some(g) => g.2.push(v),
+            None => groups.push((key, d, vec![v])),
+        }
+    }
+    for (_, d, members) in groups {
+        let len = d[0].hypot(d[1]).max(1e-300);
+        let side = [-d[1] / len, d[0] / len];
+        for (k, v) in members.iter().enumerate() {
+            let s = k as f64 * BESIDE;
+            let a = [side[0] * s, side[1] * s];
+            let b = [a[0] + LENGTH * d[0], a[1] + LENGTH * d[1]];
+            items.push(mark(
+                &v.name,
+                Kind::Arrow,
+                v.pen,
+                Shape::Line { a, b, head: true },
+            ));
+        }
+        let names: Vec<&str> = members.iter().map(|v| v.name.as_str()).collect();
+        let text = labelled(st, &names.join(" = "), members[0].val);
+        items.push(label_toward(names[0], text, Some(d)));
+        if names.len() > 1 {
+            let word = say(st, FigureMsg::Word(FigWord::Coincide));
+            items.push(Item::Note(format!("{}: {word}", names.join(", "))));
+        }
+    }
+}
+
+/// The arc of the angle `name` from direction a to direction b at radius
+/// `r`·[`LENGTH`], labelled `α = 45°`, and a note with its cosine
+/// (`cos α = √2/2 ≈ 0.7071`; Blinn's `N·H = …` for the angle of N and H);
+/// for an angle under 1° the note alone.
+fn angle(
+    plane: &Plane,
+    (a, b): ([f64; 3], [f64; 3]),
+    (name, r): (&str, f64),
+    cos: &Val,
+    st: &Style,
+) -> Vec<Item> {
+    let (pa, pb) = (plane.page(unit(a)), plane.page(unit(b)));
+    let (ta, tb) = (pa[1].atan2(pa[0]), pb[1].atan2(pb[0]));
+    let turn = 2.0 * std::f64::consts::PI;
+    let sweep = (tb - ta + turn / 2.0).rem_euclid(turn) - turn / 2.0;
+    let deg = match cos {
+        Val::Num(s) => s.value.clamp(-1.0, 1.0).acos().to_degrees(),
+        _ => sweep.abs().to_degrees(),
+    };
+    let shown_deg = st.val_inline(&num_val((deg * 100.0).round() / 100.0));
+    // The label, its short form (when it cannot stand clear) and the note.
+    let (text, brief, note) = match name {
+        "N·H" => (
+            format!(
+                "{} = {shown_deg}°",
+                say(st, FigureMsg::Word(FigWord::AngleNH))
+            ),
+            format!("{shown_deg}°"),
+            labelled(st, "N·H", cos),
+        ),
+        _ => (
+            format!("{name} = {shown_deg}°"),
+            name.to_string(),
+            labelled(st, &format!("cos {name}"), cos),
+        ),
+    };
+    if sweep.abs().to_degrees() < 1.0 {
+        return vec![Item::Note(format!("{text}: {note}"))];
+    }
+    let r = r * LENGTH;
+    let pts: Vec<[f64; 2]> = (0..=32)
+        .map(|i| {
+            let t = ta + sweep * f64::from(i) / 32.0;
+            [r * t.cos(), r * t.sin()]
+        })
+        .collect();
+    let mid = pts[16];
+    vec![
+        mark(name, Kind::Arc, Pen::Other, Shape::Path(pts)),
+        label_short(name, text, brief, mid),
+        Item::Note(note),
+    ]
+}
+
+/// The surface: a line through the point along the plane, hatched below
+/// (the side inside the object), and the point itself.
+fn surface(st: &Style, items: &mut Vec<Item>) {
+    let w = 1.25 * LENGTH;
+    let mut lines = vec![([-w, 0.0], [w, 0.0], Pen::Frame)];
+    for k in 0..14 {
+        let x = -w + 0.2 + 0.26 * f64::from(k);
+        lines.push(([x, 0.0], [x - 0.15, -0.15], Pen::Frame));
+    }
+    items.push(mark(
+        "surface",
+        Kind::Plane,
+        Pen::Frame,
+        Shape::Edges(lines),
+    ));
+    let text = say(st, FigureMsg::Word(FigWord::Surface));
+    items.push(label_toward("surface", text, Some([1.0, -1.0])));
+    items.push(mark(
+        "surface point",
+        Kind::Point,
+        Pen::Frame,
+        Shape::Dot([0.0, 0.0]),
+    ));
+}
+
+/// Everything about one light that the figure draws.
+struct Light<'a> {
+    /// `""` for the only or first light, else `2`, `3`, …
+    tag: String,
+    /// Its number, from 1.
+    number: usize,
+    l: &'a Val,
+    r: Option<&'a Val>,
+    cos_a: Option<&'a Val>,
+    cos_b: Option<&'a Val>,
+}
+
+/// The lighting panels.
+pub fn figures(p: &Part, st: &Style) -> Option<Vec<Figure>> {
+    let nv = *step_vectors(p, "N").first()?;
     let n = vec_of(nv)?;
-    let mut items = vec![Item::Polygon {
-        pts: patch(unit(n)),
-        pen: Pen::Frame,
-    }];
-    let surface = say(st, FigureMsg::Word(FigWord::Surface));
-    items.push(label_at(patch(unit(n))[2], surface, Place::BelowLeft));
-    let mut drawn: Vec<(&str, [f64; 3])> = vec![];
-    let vectors: [(&str, Option<&Val>, Pen); 5] = [
-        ("N", Some(nv), Pen::Frame),
-        ("L", step_vector(p, "L"), Pen::Given),
-        ("V", step_vector(p, "V"), Pen::Vector),
-        ("R", result(p.res, "R"), Pen::Other),
-        ("H", result(p.res, "H"), Pen::Tried),
+    let v = step_vectors(p, "V").first().copied();
+    let ls = step_vectors(p, "L");
+    let single = !matches!(result(p.res, "lights"), Some(Val::List(x)) if x.len() > 1);
+    let lights: Vec<Light> = ls
+        .iter()
+        .zip(lit(p, ls.len()))
+        .map(|(l, i)| Light {
+            tag: if i == 0 {
+                String::new()
+            } else {
+                (i + 1).to_string()
+            },
+            number: i + 1,
+            l,
+            r: per_light(result(p.res, "R"), i),
+            cos_a: per_light(result(p.res, "cos_alpha"), i),
+            cos_b: per_light(result(p.res, "cos_beta"), i),
+        })
+        .collect();
+    let h = result(p.res, "H").filter(|h| vec_of(h).is_some());
+    let mut out = Vec::new();
+    for light in &lights {
+        let first = light.number == 1;
+        let blinn = if first {
+            h.zip(result(p.res, "N_dot_H"))
+        } else {
+            None
+        };
+        let which = if single {
+            Panel::Shade
+        } else {
+            Panel::ShadeLight(light.number)
+        };
+        out.extend(incidence(st, which, (nv, n), v, light, blinn));
+    }
+    // The lights out of range: a note on the first panel.
+    let count = match result(p.res, "lights") {
+        Some(Val::List(x)) => x.len(),
+        _ => 0,
+    };
+    let drawn: Vec<usize> = lights.iter().map(|l| l.number).collect();
+    let dark = (1..=count).filter(|k| !drawn.contains(k));
+    let notes: Vec<Item> = dark
+        .map(|k| Item::Note(say(st, FigureMsg::OutOfRange(k))))
+        .collect();
+    if let Some(first) = out.first_mut() {
+        first.items.extend(notes);
+    }
+    (!out.is_empty()).then_some(out)
+}
+
+/// The panels of one light: its plane of incidence, then (when V or H
+/// leaves it) the plane of R and V, and the plane of N and H.
+fn incidence(
+    st: &Style,
+    which: Panel,
+    (nv, n): (&Val, [f64; 3]),
+    v: Option<&Val>,
+    light: &Light,
+    blinn: Option<(&Val, &Val)>,
+) -> Vec<Figure> {
+    let l = vec_of(light.l).unwrap_or(n);
+    let vd = v.and_then(vec_of);
+    let plane = Plane::of(n, l, vd, true);
+    let mut items = Vec::new();
+    surface(st, &mut items);
+    let named = |name: &str| format!("{name}{}", light.tag);
+    let mut vs = vec![
+        Vector::new("N", nv, Pen::Frame),
+        Vector::new(&named("L"), light.l, Pen::Given),
     ];
-    for (name, v, pen) in vectors {
-        let Some(d) = v.and_then(vec_of) else {
+    vs.extend(light.r.map(|val| Vector::new(&named("R"), val, Pen::Other)));
+    // V and H in this plane, or a note and a panel of their own.
+    let mut leave = Vec::new();
+    for (name, val, pen) in [("V", v, Pen::Vector), ("H", blinn.map(|b| b.0), Pen::Tried)] {
+        let Some((val, d)) = val.and_then(|x| Some((x, vec_of(x)?))) else {
             continue;
         };
-        let text = labelled(st, name, v?);
-        let same = drawn.iter().find(|(_, e)| unit(*e) == unit(d)).map(|x| x.0);
-        match same {
-            Some(first) => beside(&mut items, [first, name], unit(d), pen, st),
-            None => items.extend(arrow3([0.0; 3], unit(d), LENGTH, pen, text)),
+        if plane.holds(d) {
+            vs.push(Vector::new(name, val, pen));
+        } else {
+            let deg = st.val_inline(&num_val((plane.off(d) * 10.0).round() / 10.0));
+            items.push(Item::Note(say(st, FigureMsg::OffPlane(name.into(), deg))));
+            leave.push(name);
         }
-        drawn.push((name, d));
     }
-    // With several lights, each light's L after the first (L2, L3, …).
-    let ls: Vec<&Val> = p
-        .steps
-        .iter()
-        .flat_map(|s| &s.result)
-        .filter(|(k, v)| k == "L" && vec_of(v).is_some())
-        .map(|(_, v)| v)
-        .collect();
-    for (i, v) in ls.iter().enumerate().skip(1) {
-        let text = labelled(st, &format!("L{}", i + 1), v);
-        let d = vec_of(v).unwrap_or_default();
-        items.extend(arrow3([0.0; 3], unit(d), LENGTH, Pen::Given, text));
+    arrows(&plane, &vs, st, &mut items);
+    if let Some(c) = light.cos_a {
+        items.extend(angle(&plane, (l, n), (&named("α"), 0.3), c, st));
     }
-    let get = |k: &str| drawn.iter().find(|(n, _)| *n == k).map(|(_, d)| *d);
-    if let (Some(l), Some(n)) = (get("L"), get("N")) {
-        items.extend(angle(l, n, "α", result(p.res, "cos_alpha"), st));
+    let r = light.r.and_then(vec_of);
+    if let (Some(r), Some(vd), Some(c), false) = (r, vd, light.cos_b, leave.contains(&"V")) {
+        items.extend(angle(&plane, (r, vd), (&named("β"), 0.45), c, st));
     }
-    if let (Some(r), Some(v)) = (get("R"), get("V")) {
-        items.extend(angle(r, v, "β", result(p.res, "cos_beta"), st));
+    if let (Some((hv, nh)), false) = (blinn, leave.contains(&"H")) {
+        let h = vec_of(hv).unwrap_or(n);
+        items.extend(angle(&plane, (n, h), ("N·H", 0.6), nh, st));
     }
-    items.push(Item::Dot {
-        at: [0.0, 0.0],
-        pen: Pen::Frame,
-    });
-    Some(panel(st, Panel::Shade, items))
+    let mut out = vec![panel(st, which, items)];
+    if let (true, Some(rv), Some(vv), Some(c)) = (leave.contains(&"V"), light.r, v, light.cos_b) {
+        let vs = [
+            Vector::new(&named("R"), rv, Pen::Other),
+            Vector::new("V", vv, Pen::Vector),
+        ];
+        out.push(pair(st, Panel::ShadeRV, vs, (&named("β"), c)));
+    }
+    if let (true, Some((hv, nh))) = (leave.contains(&"H"), blinn) {
+        let vs = [
+            Vector::new("N", nv, Pen::Frame),
+            Vector::new("H", hv, Pen::Tried),
+        ];
+        out.push(pair(st, Panel::ShadeNH, vs, ("N·H", nh)));
+    }
+    out
+}
+
+/// A panel of two vectors in their own plane, the first straight up, with
+/// the angle between them.
+fn pair(st: &Style, which: Panel, vs: [Vector; 2], (name, cos): (&str, &Val)) -> Figure {
+    let [a, b] = [&vs[0], &vs[1]].map(|v| vec_of(v.val).unwrap_or([0.0, 0.0, 1.0]));
+    let plane = Plane::of(a, b, None, false);
+    let dot = Shape::Dot([0.0, 0.0]);
+    let mut items = vec![mark("surface point", Kind::Point, Pen::Frame, dot)];
+    arrows(&plane, &vs, st, &mut items);
+    items.extend(angle(&plane, (a, b), (name, 0.45), cos, st));
+    panel(st, which, items)
 }

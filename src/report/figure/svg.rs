@@ -1,10 +1,11 @@
 //! A [`Drawing`] as a standalone SVG: 600 px wide, `<title>` and `<desc>`
 //! first, its panels one below the other (each a group with its own
-//! `<title>` and `<desc>`, and its title written above it), labels as
-//! `<text>` (selectable). Where things go is [`layout`]'s.
+//! `<title>` and `<desc>`, and its title written above it), every mark an
+//! element with `data-name` and `data-kind`, labels as `<text>` (selectable)
+//! with `data-for`. Where things go is [`layout`]'s.
 
 use super::layout::{lay_out, Anchor, Laid, FONT, WIDTH};
-use super::{xml_escape, Drawing, Item, Pen};
+use super::{xml_escape, Drawing, Item, Mark, Pen, Shape};
 use std::fmt::Write;
 
 /// The height of a panel's heading, px.
@@ -32,7 +33,7 @@ pub fn to_svg(d: &Drawing) -> String {
     let mut o = String::new();
     let _ = writeln!(
         o,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{height:.0}" viewBox="0 0 {WIDTH} {height:.0}" role="img" font-family="sans-serif" font-size="{FONT}">"#
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{height:.0}" viewBox="0 0 {WIDTH} {height:.0}" role="img" font-family="DejaVu Sans, Verdana, sans-serif" font-size="{FONT}">"#
     );
     let _ = writeln!(o, "<title>{}</title>", xml_escape(&d.title()));
     let descs: Vec<&str> = d.panels.iter().map(|f| f.desc.as_str()).collect();
@@ -54,18 +55,27 @@ pub fn to_svg(d: &Drawing) -> String {
         if d.panels.len() > 1 {
             let _ = writeln!(
                 o,
-                r#"<text x="8" y="-7" font-weight="bold">{}</text>"#,
+                r#"<text x="8" y="-7" font-weight="bold" data-kind="title">{}</text>"#,
                 xml_escape(&f.title)
             );
         }
         let mut k = 0;
         for it in &f.items {
-            if let Item::Label { .. } | Item::Note { .. } = it {
-                label(&mut o, &l.labels[k]);
-                k += 1;
-            } else {
-                mark(&mut o, it, l, &id);
+            match it {
+                Item::Mark(m) => mark(&mut o, m, l, &id),
+                Item::Label(lb) => {
+                    if let Some(p) = &l.labels[k] {
+                        let attrs =
+                            format!(r#"data-kind="label" data-for="{}""#, xml_escape(&lb.of));
+                        text(&mut o, p, &attrs);
+                    }
+                    k += 1;
+                }
+                Item::Note(_) => {}
             }
+        }
+        for n in &l.notes {
+            text(&mut o, n, r#"data-kind="note""#);
         }
         o.push_str("</g>\n");
     }
@@ -89,16 +99,12 @@ fn ids(d: &Drawing) -> String {
     format!("gf-{clean}-{:08x}", h as u32)
 }
 
+/// The stroke attributes of a pen.
 fn stroke(p: Pen) -> String {
-    let dash = if p.dashed() {
-        r#" stroke-dasharray="9 6""#
-    } else if p.dotted() {
-        r#" stroke-dasharray="2 4""#
-    } else if p.dash_dotted() {
-        r#" stroke-dasharray="10 4 2 4""#
-    } else {
-        ""
-    };
+    let dash = p
+        .dashes()
+        .map(|(svg, _)| format!(r#" stroke-dasharray="{svg}""#))
+        .unwrap_or_default();
     format!(
         r#"stroke="{}" stroke-width="{}" fill="none"{dash}"#,
         p.colour(),
@@ -117,45 +123,62 @@ fn points(pts: &[[f64; 2]], l: &Laid) -> String {
     p.join(" ")
 }
 
-fn mark(o: &mut String, it: &Item, l: &Laid, id: &str) {
-    let _ = match it {
-        Item::Segment { a, b, pen } | Item::Arrow { a, b, pen } => {
-            let ((ax, ay), (bx, by)) = (l.map(a), l.map(b));
-            let head = match it {
-                Item::Arrow { .. } => format!(r#" marker-end="url(#{id}-{})""#, pen.name()),
-                _ => String::new(),
+/// A line from a to b (tail to tip), with the attributes `attrs`.
+fn line(o: &mut String, a: &[f64; 2], b: &[f64; 2], l: &Laid, attrs: &str) {
+    let ((ax, ay), (bx, by)) = (l.map(a), l.map(b));
+    let _ = writeln!(
+        o,
+        r#"<line {attrs}x1="{ax:.1}" y1="{ay:.1}" x2="{bx:.1}" y2="{by:.1}"/>"#
+    );
+}
+
+/// One mark: an element (a `<g>` for the box's edges) with its
+/// `data-name` and `data-kind`.
+fn mark(o: &mut String, m: &Mark, l: &Laid, id: &str) {
+    let named = format!(
+        r#"data-name="{}" data-kind="{}" "#,
+        xml_escape(&m.name),
+        m.kind.word()
+    );
+    let pen = stroke(m.pen);
+    let _ = match &m.shape {
+        Shape::Line { a, b, head } => {
+            let end = match head {
+                true => format!(r#" marker-end="url(#{id}-{})""#, m.pen.name()),
+                false => String::new(),
             };
-            writeln!(
-                o,
-                r#"<line x1="{ax:.1}" y1="{ay:.1}" x2="{bx:.1}" y2="{by:.1}" {}{head}/>"#,
-                stroke(*pen)
-            )
+            line(o, a, b, l, &format!("{named}{pen}{end} "));
+            Ok(())
         }
-        Item::Polygon { pts, pen } => writeln!(
+        Shape::Polygon(pts) => {
+            writeln!(o, r#"<polygon {named}points="{}" {pen}/>"#, points(pts, l))
+        }
+        Shape::Face(pts) => writeln!(
             o,
-            r#"<polygon points="{}" {}/>"#,
-            points(pts, l),
-            stroke(*pen)
+            r#"<polygon {named}points="{}" fill="none" stroke="none"/>"#,
+            points(pts, l)
         ),
-        Item::Path { pts, pen } => writeln!(
-            o,
-            r#"<polyline points="{}" {}/>"#,
-            points(pts, l),
-            stroke(*pen)
-        ),
-        Item::Dot { at, pen } => {
+        Shape::Path(pts) => writeln!(o, r#"<polyline {named}points="{}" {pen}/>"#, points(pts, l)),
+        Shape::Dot(at) => {
             let (x, y) = l.map(at);
             writeln!(
                 o,
-                r#"<circle cx="{x:.1}" cy="{y:.1}" r="4.5" fill="{}"/>"#,
-                pen.colour()
+                r#"<circle {named}cx="{x:.1}" cy="{y:.1}" r="4.5" fill="{}"/>"#,
+                m.pen.colour()
             )
         }
-        Item::Label { .. } | Item::Note { .. } => Ok(()),
+        Shape::Edges(edges) => {
+            let _ = writeln!(o, "<g {}>", named.trim_end());
+            for (a, b, p) in edges {
+                line(o, a, b, l, &format!("{} ", stroke(*p)));
+            }
+            writeln!(o, "</g>")
+        }
     };
 }
 
-fn label(o: &mut String, p: &super::layout::Placed) {
+/// A label or a note, with its attributes.
+fn text(o: &mut String, p: &super::layout::Placed, attrs: &str) {
     let anchor = match p.anchor {
         Anchor::Start => "",
         Anchor::Middle => r#" text-anchor="middle""#,
@@ -163,7 +186,7 @@ fn label(o: &mut String, p: &super::layout::Placed) {
     };
     let _ = writeln!(
         o,
-        r##"<text x="{:.1}" y="{:.1}"{anchor} fill="#000000" stroke="#ffffff" stroke-width="3" paint-order="stroke">{}</text>"##,
+        r##"<text {attrs} x="{:.1}" y="{:.1}"{anchor} fill="#000000" stroke="#ffffff" stroke-width="3" paint-order="stroke">{}</text>"##,
         p.x,
         p.y,
         xml_escape(&p.text)

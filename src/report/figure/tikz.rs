@@ -5,7 +5,7 @@
 
 use super::layout::{Anchor, Laid};
 use super::svg::stack;
-use super::{Drawing, Item, Pen};
+use super::{Drawing, Item, Mark, Pen, Shape};
 use std::fmt::Write;
 
 /// The `tikzpicture`s of a drawing, one per panel, separated by a blank
@@ -23,58 +23,65 @@ pub fn to_tikz(d: &Drawing) -> String {
                 text(&f.title)
             );
         }
-        let mut k = 0;
+        let mut labels = l.labels.iter();
         for it in &f.items {
-            if let Item::Label { .. } | Item::Note { .. } = it {
-                let p = &l.labels[k];
-                k += 1;
-                let anchor = match p.anchor {
-                    Anchor::Start => "base west",
-                    Anchor::Middle => "base",
-                    Anchor::End => "base east",
-                };
-                let _ = writeln!(
-                    o,
-                    "\\node[anchor={anchor},inner sep=0.5pt,fill=white,font=\\small] at ({:.1},{:.1}) {{{}}};",
-                    p.x,
-                    p.y,
-                    text(&p.text)
-                );
-            } else {
-                mark(&mut o, it, l);
+            match it {
+                Item::Mark(m) => mark(&mut o, m, l),
+                Item::Label(_) => labels
+                    .next()
+                    .into_iter()
+                    .flatten()
+                    .for_each(|p| node(&mut o, p)),
+                Item::Note(_) => {}
             }
         }
+        l.notes.iter().for_each(|p| node(&mut o, p));
         o.push_str("\\end{tikzpicture}\n\n");
     }
     o
+}
+
+/// A label or note as a node at its place.
+fn node(o: &mut String, p: &super::layout::Placed) {
+    let anchor = match p.anchor {
+        Anchor::Start => "base west",
+        Anchor::Middle => "base",
+        Anchor::End => "base east",
+    };
+    let _ = writeln!(
+        o,
+        "\\node[anchor={anchor},inner sep=0.5pt,fill=white,font=\\small] at ({:.1},{:.1}) {{{}}};",
+        p.x,
+        p.y,
+        text(&p.text)
+    );
 }
 
 fn text(s: &str) -> String {
     crate::report::latex::latex_text(s)
 }
 
-fn mark(o: &mut String, it: &Item, l: &Laid) {
+fn mark(o: &mut String, m: &Mark, l: &Laid) {
     let pt = |p: &[f64; 2]| {
         let (x, y) = l.map(p);
         format!("({x:.1},{y:.1})")
     };
-    let _ = match it {
-        Item::Segment { a, b, pen } => {
-            writeln!(o, "\\draw[{}] {} -- {};", opts(*pen), pt(a), pt(b))
+    let path = |pts: &[[f64; 2]]| pts.iter().map(pt).collect::<Vec<_>>().join(" -- ");
+    // The mark's kind and name as a comment (in LaTeX's ASCII), so the
+    // picture reads like the SVG.
+    let _ = writeln!(o, "% {} {}", m.kind.word(), text(&m.name));
+    let _ = match &m.shape {
+        Shape::Line { a, b, head } => {
+            let arrow = if *head { "->," } else { "" };
+            writeln!(o, "\\draw[{arrow}{}] {} -- {};", opts(m.pen), pt(a), pt(b))
         }
-        Item::Arrow { a, b, pen } => {
-            writeln!(o, "\\draw[->,{}] {} -- {};", opts(*pen), pt(a), pt(b))
-        }
-        Item::Polygon { pts, pen } => {
-            let p: Vec<String> = pts.iter().map(pt).collect();
-            writeln!(o, "\\draw[{}] {} -- cycle;", opts(*pen), p.join(" -- "))
-        }
-        Item::Path { pts, pen } => {
-            let p: Vec<String> = pts.iter().map(pt).collect();
-            writeln!(o, "\\draw[{}] {};", opts(*pen), p.join(" -- "))
-        }
-        Item::Dot { at, pen } => writeln!(o, "\\fill[{}] {} circle (2pt);", pen.name(), pt(at)),
-        Item::Label { .. } | Item::Note { .. } => Ok(()),
+        Shape::Polygon(pts) => writeln!(o, "\\draw[{}] {} -- cycle;", opts(m.pen), path(pts)),
+        Shape::Path(pts) => writeln!(o, "\\draw[{}] {};", opts(m.pen), path(pts)),
+        Shape::Face(_) => Ok(()),
+        Shape::Dot(at) => writeln!(o, "\\fill[{}] {} circle (2pt);", m.pen.name(), pt(at)),
+        Shape::Edges(edges) => edges
+            .iter()
+            .try_for_each(|(a, b, p)| writeln!(o, "\\draw[{}] {} -- {};", opts(*p), pt(a), pt(b))),
     };
 }
 
@@ -93,14 +100,9 @@ pub fn preamble() -> String {
 }
 
 fn opts(p: Pen) -> String {
-    let pattern = if p.dashed() {
-        ",dashed"
-    } else if p.dotted() {
-        ",dotted"
-    } else if p.dash_dotted() {
-        ",dash pattern=on 5pt off 2pt on 1pt off 2pt"
-    } else {
-        ""
-    };
+    let pattern = p
+        .dashes()
+        .map(|(_, tikz)| format!(",{tikz}"))
+        .unwrap_or_default();
     format!("{},line width={}pt{pattern}", p.name(), p.width() * 0.5)
 }

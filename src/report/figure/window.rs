@@ -1,10 +1,12 @@
 //! The window figure of `window` and `solve`'s window part: the view
-//! volume from the eye with the near (and far) window in 3D (cabinet
-//! projection), the side view with fovy and top, the window on the near
-//! plane with the projected points, and the viewport with their pixels.
+//! volume with the near (and far) window in 3D, seen from outside (an
+//! axonometric view with the eye, its apex, outside the windows), the side
+//! view with fovy and top, the viewing window on the near plane with the
+//! projected points, and the viewport with their pixels.
 
-use super::builders::{input_num, num_val, nums_of, panel, result, say, vec_val, Part};
-use super::{cabinet, label, label_at, labelled, short, Figure, Item, Pen, Place};
+use super::axo::apex_outside;
+use super::builders::{input_num, num_val, nums_of, panel, panel3, result, say, vec_val, Part};
+use super::{label, label_toward, labelled, mark, short, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
 use crate::stages::trace::Val;
@@ -75,33 +77,41 @@ fn rect(w: Win, z: f64) -> Vec<[f64; 3]> {
 /// near window would be a dot): the edges run on, dashed, to twice near.
 pub const FAR_TO_SCALE: f64 = 10.0;
 
+/// A line from a to b (no head).
+fn seg(a: [f64; 2], b: [f64; 2]) -> Shape {
+    Shape::Line { a, b, head: false }
+}
+
 /// The view volume in 3D: the eye, the near window, the far window (when
 /// given, and within [`FAR_TO_SCALE`]) and the edges from the eye to the
-/// farthest window's corners.
+/// farthest window's corners, with top and right marked on the near
+/// window.
 fn frustum(p: &Part, st: &Style, near: f64, w: Win) -> Figure {
     let far = input_num(p.inp, "far").zip(win(p, "far_"));
     let to_scale = far.filter(|(f, _)| *f <= FAR_TO_SCALE * near);
+    let mut windows = vec![rect(w, -near)];
+    windows.extend(to_scale.map(|(f, fw)| rect(fw, -f)));
+    let axo = apex_outside(Some([0.0; 3]), &windows);
+    let page = |c: &[f64; 3]| axo.page(*c);
     let mut items = Vec::new();
     let (end, end_w) = to_scale.unwrap_or((near, w));
-    for c in rect(end_w, -end) {
-        items.push(Item::Segment {
-            a: [0.0, 0.0],
-            b: cabinet(c),
-            pen: Pen::Frame,
-        });
+    for (k, c) in rect(end_w, -end).iter().enumerate() {
+        let name = format!("edge {}", k + 1);
+        items.push(mark(
+            name,
+            Kind::Segment,
+            Pen::Frame,
+            seg([0.0, 0.0], page(c)),
+        ));
     }
-    items.push(Item::Polygon {
-        pts: rect(w, -near).iter().map(|c| cabinet(*c)).collect(),
-        pen: Pen::Kept,
-    });
+    let near_rect = Shape::Polygon(rect(w, -near).iter().map(page).collect());
+    items.push(mark("near window", Kind::Window, Pen::Kept, near_rect));
     if to_scale.is_none() {
         // The edges run on, dashed, to twice near.
-        for c in rect(w, -near) {
-            items.push(Item::Segment {
-                a: cabinet(c),
-                b: cabinet([2.0 * c[0], 2.0 * c[1], 2.0 * c[2]]),
-                pen: Pen::Cut,
-            });
+        for (k, c) in rect(w, -near).iter().enumerate() {
+            let name = format!("edge {} beyond", k + 1);
+            let beyond = seg(page(c), page(&c.map(|x| 2.0 * x)));
+            items.push(mark(name, Kind::Segment, Pen::Cut, beyond));
         }
     }
     if let Some((f, fw)) = far {
@@ -110,52 +120,51 @@ fn frustum(p: &Part, st: &Style, near: f64, w: Win) -> Figure {
             st.val_inline(&num_val(f)),
             shown(p, st, "far_top")
         );
-        let corner = match to_scale {
+        match to_scale {
             Some(_) => {
-                items.push(Item::Polygon {
-                    pts: rect(fw, -f).iter().map(|c| cabinet(*c)).collect(),
-                    pen: Pen::Given,
-                });
-                cabinet([fw[1], fw[3], -f])
+                let far_rect = Shape::Polygon(rect(fw, -f).iter().map(page).collect());
+                items.push(mark("far window", Kind::Window, Pen::Given, far_rect));
+                items.push(label("far window", text));
             }
             None => {
-                let note = format!("({})", say(st, FigureMsg::Word(FigWord::NotToScale)));
-                let at = cabinet([2.0 * w[1], 2.0 * w[3], -2.0 * near]);
-                items.push(label_at(at, note, Place::AboveLeft));
-                at
+                let note = say(st, FigureMsg::Word(FigWord::NotToScale));
+                items.push(Item::Note(format!("{text}: {note}")));
             }
-        };
-        items.push(label_at(corner, text, Place::AboveLeft));
+        }
     }
     eye_at_origin(st, &mut items);
-    let top = format!("top = {}", shown(p, st, "top"));
-    items.push(label_at(cabinet([0.0, w[3], -near]), top, Place::Above));
-    let right = format!("right = {}", shown(p, st, "right"));
-    items.push(label_at(cabinet([w[1], 0.0, -near]), right, Place::Right));
-    panel(st, Panel::Frustum, items)
+    // top and right beside their edges, on the window's outer side.
+    let r = rect(w, -near);
+    let centre = page(&[(w[0] + w[1]) / 2.0, (w[2] + w[3]) / 2.0, -near]);
+    for (edge, a, b) in [("top", 2, 3), ("right", 1, 2)] {
+        let (pa, pb) = (page(&r[a]), page(&r[b]));
+        items.push(mark(edge, Kind::Segment, Pen::Kept, seg(pa, pb)));
+        let out = [
+            (pa[0] + pb[0]) / 2.0 - centre[0],
+            (pa[1] + pb[1]) / 2.0 - centre[1],
+        ];
+        let text = format!("{edge} = {}", shown(p, st, edge));
+        items.push(label_toward(edge, text, Some(out)));
+    }
+    panel3(st, Panel::Frustum, &axo, items)
 }
 
 /// The side view (−z, y): the eye, the lines through bottom and top of the
 /// near window, the angle fovy, top and near.
 fn side_view(p: &Part, st: &Style, near: f64, fovy: f64, w: Win) -> Figure {
-    let mut items = vec![Item::Arrow {
+    let axis = Shape::Line {
         a: [-0.1 * near, 0.0],
         b: [1.5 * near, 0.0],
-        pen: Pen::Frame,
-    }];
-    items.push(label_at([1.5 * near, 0.0], "−z", Place::Right));
-    for y in [w[2], w[3]] {
-        items.push(Item::Segment {
-            a: [0.0, 0.0],
-            b: [1.3 * near, 1.3 * y],
-            pen: Pen::Frame,
-        });
+        head: true,
+    };
+    let mut items = vec![mark("−z", Kind::Axis, Pen::Frame, axis)];
+    items.push(label_toward("−z", "−z", Some([1.0, 0.0])));
+    for (y, name) in [(w[2], "bottom edge"), (w[3], "top edge")] {
+        let line = seg([0.0, 0.0], [1.3 * near, 1.3 * y]);
+        items.push(mark(name, Kind::Segment, Pen::Frame, line));
     }
-    items.push(Item::Segment {
-        a: [near, w[2]],
-        b: [near, w[3]],
-        pen: Pen::Kept,
-    });
+    let window = seg([near, w[2]], [near, w[3]]);
+    items.push(mark("near window", Kind::Window, Pen::Kept, window));
     let half = (fovy / 2.0).to_radians();
     let r = 0.35 * near;
     let arc: Vec<[f64; 2]> = (0..=24)
@@ -164,17 +173,18 @@ fn side_view(p: &Part, st: &Style, near: f64, fovy: f64, w: Win) -> Figure {
             [r * a.cos(), r * a.sin()]
         })
         .collect();
-    items.push(Item::Path {
-        pts: arc,
-        pen: Pen::Other,
-    });
+    items.push(mark("fovy", Kind::Arc, Pen::Other, Shape::Path(arc)));
     let fov = format!("fovy = {}°", st.val_inline(&num_val(fovy)));
-    items.push(label_at([r, 0.0], fov, Place::AboveRight));
+    items.push(label("fovy", fov));
     eye_at_origin(st, &mut items);
-    let top = format!("top = near·tan(fovy/2) = {}", shown(p, st, "top"));
-    items.push(label_at([near, w[3]], top, Place::AboveRight));
+    let top = seg([near, 0.0], [near, w[3]]);
+    items.push(mark("top", Kind::Segment, Pen::Kept, top));
+    let text = format!("top = near·tan(fovy/2) = {}", shown(p, st, "top"));
+    items.push(label("top", text));
+    let dist = seg([0.0, 0.0], [near, 0.0]);
+    items.push(mark("near", Kind::Segment, Pen::Frame, dist));
     let n = format!("near = {}", st.val_inline(&num_val(near)));
-    items.push(label_at([near, 0.0], n, Place::BelowRight));
+    items.push(label_toward("near", n, Some([0.0, -1.0])));
     panel(st, Panel::WindowSide, items)
 }
 
@@ -208,31 +218,31 @@ fn window_points(p: &Part) -> Vec<(String, [f64; 2], Val)> {
 
 /// The near window left..right × bottom..top with the points in it.
 fn near_window(p: &Part, st: &Style, w: Win, pts: &[(String, [f64; 2], Val)]) -> Figure {
-    let mut items = vec![Item::Polygon {
-        pts: vec![[w[0], w[2]], [w[1], w[2]], [w[1], w[3]], [w[0], w[3]]],
-        pen: Pen::Kept,
-    }];
-    for (a, b) in [([w[0], 0.0], [w[1], 0.0]), ([0.0, w[2]], [0.0, w[3]])] {
-        items.push(Item::Segment {
-            a,
-            b,
-            pen: Pen::Tried,
-        });
-    }
-    for (at, key, place) in [
-        ([w[1], 0.0], "right", Place::Right),
-        ([0.0, w[3]], "top", Place::Above),
-        ([w[0], 0.0], "left", Place::Left),
-        ([0.0, w[2]], "bottom", Place::Below),
+    let corners = vec![[w[0], w[2]], [w[1], w[2]], [w[1], w[3]], [w[0], w[3]]];
+    let mut items = vec![mark(
+        "near window",
+        Kind::Window,
+        Pen::Kept,
+        Shape::Polygon(corners),
+    )];
+    for (a, b, name) in [
+        ([w[0], 0.0], [w[1], 0.0], "x"),
+        ([0.0, w[2]], [0.0, w[3]], "y"),
     ] {
-        items.push(label_at(at, format!("{key} = {}", tiny(p, st, key)), place));
+        items.push(mark(name, Kind::Axis, Pen::Tried, seg(a, b)));
+    }
+    for (edge, key, a, b) in [
+        ("right", "right", [w[1], w[2]], [w[1], w[3]]),
+        ("top", "top", [w[0], w[3]], [w[1], w[3]]),
+        ("left", "left", [w[0], w[2]], [w[0], w[3]]),
+        ("bottom", "bottom", [w[0], w[2]], [w[1], w[2]]),
+    ] {
+        items.push(mark(edge, Kind::Segment, Pen::Kept, seg(a, b)));
+        items.push(label(edge, format!("{key} = {}", tiny(p, st, key))));
     }
     for (name, at, v) in pts {
-        items.push(Item::Dot {
-            at: *at,
-            pen: Pen::Frame,
-        });
-        items.push(label(*at, labelled(st, name, v)));
+        items.push(mark(name, Kind::Point, Pen::Frame, Shape::Dot(*at)));
+        items.push(label(name, labelled(st, name, v)));
     }
     panel(st, Panel::NearWindow, items)
 }
@@ -244,29 +254,34 @@ fn viewport(p: &Part, st: &Style) -> Option<Figure> {
     let Some(Val::Map(px)) = result(p.res, "pixels") else {
         return None;
     };
-    let mut items = vec![Item::Polygon {
-        pts: vec![[0.0, 0.0], [vw, 0.0], [vw, vh], [0.0, vh]],
-        pen: Pen::Frame,
-    }];
-    let origin = st.val_inline(&vec_val(&[0.0, 0.0]));
-    items.push(label_at([0.0, 0.0], origin, Place::BelowLeft));
-    let size = st.val_inline(&vec_val(&[vw, vh]));
-    items.push(label_at([vw, vh], size, Place::AboveRight));
+    let corners = vec![[0.0, 0.0], [vw, 0.0], [vw, vh], [0.0, vh]];
+    let mut items = vec![mark(
+        "viewport",
+        Kind::Window,
+        Pen::Frame,
+        Shape::Polygon(corners),
+    )];
+    for (name, at) in [("(0, 0)", [0.0, 0.0]), ("(W, H)", [vw, vh])] {
+        items.push(mark(name, Kind::Point, Pen::Frame, Shape::Dot(at)));
+        let text = st.val_inline(&vec_val(&at));
+        items.push(label_toward(
+            name,
+            text,
+            Some([at[0] - vw / 2.0, at[1] - vh / 2.0]),
+        ));
+    }
     for (name, v) in px {
         let n = nums_of(v)?;
         let at = [*n.first()?, *n.get(1)?];
-        items.push(Item::Dot { at, pen: Pen::Kept });
-        items.push(label(at, labelled(st, name, v)));
+        items.push(mark(name, Kind::Point, Pen::Kept, Shape::Dot(at)));
+        items.push(label(name, labelled(st, name, v)));
     }
     Some(panel(st, Panel::Viewport, items))
 }
 
-/// The eye: a dot at the origin of the panel, labelled on its left.
+/// The eye: a dot at the origin of the panel, labelled.
 fn eye_at_origin(st: &Style, items: &mut Vec<Item>) {
-    items.push(Item::Dot {
-        at: [0.0, 0.0],
-        pen: Pen::Frame,
-    });
+    items.push(mark("eye", Kind::Point, Pen::Frame, Shape::Dot([0.0, 0.0])));
     let eye = say(st, FigureMsg::Word(FigWord::Eye));
-    items.push(label_at([0.0, 0.0], eye, Place::Left));
+    items.push(label_toward("eye", eye, Some([-1.0, 0.0])));
 }

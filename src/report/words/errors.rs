@@ -34,9 +34,15 @@ pub fn error(m: &ErrMsg, lang: Lang) -> String {
         | ErrMsg::CannotWrite(..)
         | ErrMsg::CannotCreate(..)
         | ErrMsg::CannotWriteStdout(_)
-        | ErrMsg::Exists(_)
+        | ErrMsg::StdoutClosed
         | ErrMsg::ExistsForce(_)
+        | ErrMsg::NamesFolder(_)
+        | ErrMsg::IsLink(_)
+        | ErrMsg::IsInput(_)
+        | ErrMsg::NotOwn(..)
         | ErrMsg::NotDirectory(_)
+        | ErrMsg::NotMarked(..)
+        | ErrMsg::AnswerFileTooLarge(..)
         | ErrMsg::Man(_) => files(m, lang),
         ErrMsg::ObjUnreadable(..)
         | ErrMsg::ObjInvalid(..)
@@ -45,6 +51,7 @@ pub fn error(m: &ErrMsg, lang: Lang) -> String {
         | ErrMsg::FaceVertex
         | ErrMsg::FormulaNotFinite
         | ErrMsg::TooManyTriangles(..)
+        | ErrMsg::TooManyLights(..)
         | ErrMsg::NeedsColour
         | ErrMsg::NoObjects
         | ErrMsg::CameraNeedsPerspective
@@ -61,10 +68,7 @@ pub fn error(m: &ErrMsg, lang: Lang) -> String {
         | ErrMsg::CameraAtPoint
         | ErrMsg::NoLight
         | ErrMsg::LightAtPoint
-        | ErrMsg::SpotNeeds(_)
-        | ErrMsg::NotApplicable(..)
-        | ErrMsg::NeededForLight
-        | ErrMsg::ZeroDirection => lights(m, lang),
+        | ErrMsg::NotApplicable(..) => lights(m, lang),
         ErrMsg::PlaneThroughOrigin
         | ErrMsg::PlaneThroughCop(_)
         | ErrMsg::ImageTooLarge(..)
@@ -91,6 +95,12 @@ pub fn error(m: &ErrMsg, lang: Lang) -> String {
         | ErrMsg::NoPrinted(_)
         | ErrMsg::CsvAndJson
         | ErrMsg::NoAnswerFiles(_)
+        | ErrMsg::NoExam(_)
+        | ErrMsg::NoVariant(_)
+        | ErrMsg::NotAVariant(..)
+        | ErrMsg::NotAProblemOfExam(..)
+        | ErrMsg::ReportFormat(_)
+        | ErrMsg::ReportNeedsClass
         | ErrMsg::PixelOutside(..)
         | ErrMsg::PixelText(_)
         | ErrMsg::NothingRendered
@@ -271,6 +281,10 @@ fn twice(t: Twice, lang: Lang) -> String {
             "give one light vector L or [[light]] tables, not both",
             "berikan satu vektor cahaya L atau tabel [[light]], tidak keduanya",
         ),
+        Twice::Axis => (
+            "give the spot light's axis once: axis (or its old name, direction)",
+            "berikan sumbu sumber cahaya spot sekali saja: axis (atau nama lamanya, direction)",
+        ),
         Twice::TiltCamera => (
             "give either [tilt] or [camera], not both",
             "berikan [tilt] atau [camera], tidak keduanya",
@@ -303,6 +317,16 @@ pub fn io_why(w: &IoWhy, lang: Lang) -> String {
     }
 }
 
+/// `dir/` for a path that is a folder (`dir/` itself when it ends in `/`),
+/// so that the example is a file name inside it.
+fn folder_prefix(p: &str) -> String {
+    if p.ends_with('/') {
+        p.to_string()
+    } else {
+        format!("{p}/")
+    }
+}
+
 /// Files that cannot be read, written or created.
 fn files(m: &ErrMsg, lang: Lang) -> String {
     let f = |en: String, id: String| pick(lang, en, id);
@@ -325,20 +349,44 @@ fn files(m: &ErrMsg, lang: Lang) -> String {
             format!("tidak dapat membuat {p}: {}", w(why)),
         ),
         ErrMsg::CannotWriteStdout(why) => f(
-            format!("cannot write the PNG to standard output: {}", w(why)),
-            format!("tidak dapat menulis PNG ke keluaran standar: {}", w(why)),
+            format!("cannot write to standard output: {}", w(why)),
+            format!("tidak dapat menulis ke keluaran standar: {}", w(why)),
         ),
-        ErrMsg::Exists(p) => f(
-            format!("{p}: exists; remove it or choose another name"),
-            format!("{p}: sudah ada; hapus atau pilih nama lain"),
+        ErrMsg::StdoutClosed => f(
+            "standard output is closed, so the results would be lost (to discard them, send them to /dev/null)".into(),
+            "keluaran standar tertutup, jadi hasilnya akan hilang (untuk membuangnya, arahkan ke /dev/null)".into(),
         ),
         ErrMsg::ExistsForce(p) => f(
-            format!("{p} already exists: give --force to overwrite it, or another --out"),
-            format!("{p} sudah ada: berikan --force untuk menimpanya, atau --out yang lain"),
+            format!("{p} already exists: give --force to replace it, or choose another name"),
+            format!("{p} sudah ada: berikan --force untuk menggantinya, atau pilih nama lain"),
+        ),
+        ErrMsg::NamesFolder(p) => f(
+            format!("{p} is a folder, not a file name: name the file to write (such as {}figure.svg)", folder_prefix(p)),
+            format!("{p} adalah folder, bukan nama berkas: sebutkan berkas yang akan ditulis (misalnya {}gambar.svg)", folder_prefix(p)),
+        ),
+        ErrMsg::IsLink(p) => f(
+            format!("{p} is a symbolic link: grafika never writes through a link nor replaces one; name the file itself or another name"),
+            format!("{p} adalah tautan simbolik: grafika tidak pernah menulis melalui tautan atau menggantinya; sebutkan berkasnya sendiri atau nama lain"),
+        ),
+        ErrMsg::IsInput(p) => f(
+            format!("{p} is one of this command's own inputs (the same file, links followed): it is never overwritten, even with --force"),
+            format!("{p} adalah salah satu masukan perintah ini (berkas yang sama, tautan diikuti): tidak pernah ditimpa, juga dengan --force"),
+        ),
+        ErrMsg::NotOwn(p, marker) => f(
+            format!("{p} was not written by grafika generate (it is not listed in {marker}, or holds other files): --force replaces only generate's own earlier output; move it away or choose another --out"),
+            format!("{p} tidak ditulis oleh grafika generate (tidak tercantum di {marker}, atau berisi berkas lain): --force hanya mengganti keluaran generate sendiri sebelumnya; pindahkan atau pilih --out yang lain"),
         ),
         ErrMsg::NotDirectory(p) => f(
             format!("{p} exists and is not a directory"),
             format!("{p} sudah ada dan bukan direktori"),
+        ),
+        ErrMsg::AnswerFileTooLarge(p, n, max) => f(
+            format!("{p} has {n} bytes; an answer file may have at most {max} (it is refused before it is read as TOML)"),
+            format!("{p} berukuran {n} bita; berkas jawaban paling besar {max} bita (ditolak sebelum dibaca sebagai TOML)"),
+        ),
+        ErrMsg::NotMarked(n, of, which) => f(
+            format!("{n} of the {of} answer files could not be marked (see the error in each one's row): {which}"),
+            format!("{n} dari {of} berkas jawaban tidak dapat dinilai (lihat galat di baris masing-masing): {which}"),
         ),
         ErrMsg::Man(why) => f(
             format!("cannot write the manual page: {why}"),
@@ -377,8 +425,12 @@ fn scene(m: &ErrMsg, lang: Lang) -> String {
             "rumus menghasilkan nilai yang bukan bilangan berhingga",
         ),
         ErrMsg::TooManyTriangles(n, max) => f(
-            format!("has {n} triangles; the renderer takes at most {max} per object"),
-            format!("memiliki {n} segitiga; renderer menerima paling banyak {max} per objek"),
+            format!("the scene's objects have {n} triangles together; the renderer takes at most {max} per scene (refused before any mesh is built)"),
+            format!("objek-objek scene ini bersama-sama memiliki {n} segitiga; renderer menerima paling banyak {max} per scene (ditolak sebelum mesh dibuat)"),
+        ),
+        ErrMsg::TooManyLights(n, max) => f(
+            format!("the scene has {n} lights; the renderer takes at most {max} per scene (as Direct3D 9 does)"),
+            format!("scene ini memiliki {n} cahaya; renderer menerima paling banyak {max} per scene (seperti Direct3D 9)"),
         ),
         ErrMsg::NeedsColour => say(lang, "needs at least one colour", "memerlukan paling sedikit satu warna"),
         ErrMsg::NoObjects => say(
@@ -423,7 +475,7 @@ fn obj_reason(kind: &str, en: &str) -> String {
     id.to_string()
 }
 
-/// "a spot light needs `theta`", "a sphere needs `r`", "an obj object needs `path`".
+/// "a spot light needs `axis`", "a sphere needs `r`", "an obj object needs `path`".
 fn needs(thing: &Thing, key: &str, lang: Lang) -> String {
     match (thing, lang) {
         (Thing::Light(kind), Lang::En) => format!("a {kind} light needs `{key}`"),
@@ -468,23 +520,9 @@ fn lights(m: &ErrMsg, lang: Lang) -> String {
             "the light is at the surface point itself: no direction to it",
             "sumber cahaya berada di titik permukaan itu sendiri: tidak ada arah ke sana",
         ),
-        ErrMsg::SpotNeeds(k) => f(
-            format!("a spot light needs `{k}` (full cone angle, degrees)"),
-            format!("sumber cahaya spot memerlukan `{k}` (sudut kerucut penuh, derajat)"),
-        ),
         ErrMsg::NotApplicable(k, kind) => f(
             format!("`{k}` does not apply to a {kind} light"),
             format!("`{k}` tidak berlaku untuk sumber cahaya {kind}"),
-        ),
-        ErrMsg::NeededForLight => say(
-            lang,
-            "is needed for this type of light",
-            "diperlukan untuk jenis sumber cahaya ini",
-        ),
-        ErrMsg::ZeroDirection => say(
-            lang,
-            "must not be the zero vector",
-            "tidak boleh vektor nol",
         ),
         _ => String::new(),
     }
@@ -565,6 +603,10 @@ fn stages(m: &ErrMsg, lang: Lang) -> String {
         ErrMsg::EyeCoordsTooLarge(p, prec) => f(
             format!("the eye coordinates of {p} are too large for {prec} precision"),
             format!("koordinat kamera titik {p} terlalu besar untuk presisi {prec}"),
+        ),
+        ErrMsg::ResultNotFinite(prec) if prec == "exact" => f(
+            "the result is exact but beyond the range of f64 (about 1.8e308), so it has no decimal or JSON number to give (scale the inputs)".into(),
+            "hasilnya eksak tetapi di luar jangkauan f64 (sekitar 1,8e308), jadi tidak ada desimal atau bilangan JSON untuknya (skalakan masukan)".into(),
         ),
         ErrMsg::ResultNotFinite(prec) => f(
             format!("the result is not a finite number at {prec} precision: an input overflows or underflows the floats (scale the inputs, or use --precision exact)"),
@@ -650,6 +692,31 @@ fn commands(m: &ErrMsg, lang: Lang) -> String {
         ErrMsg::NoAnswerFiles(d) => f(
             format!("{d} holds no .toml answer files"),
             format!("{d} tidak berisi berkas jawaban .toml"),
+        ),
+        ErrMsg::NoExam(d) => f(
+            format!("{d} holds no problem-01.toml (nor variant-01/): give a problem file or a folder written by grafika generate"),
+            format!("{d} tidak berisi problem-01.toml (maupun variant-01/): berikan berkas soal atau folder yang ditulis grafika generate"),
+        ),
+        ErrMsg::NoVariant(n) => f(
+            format!("the exam has {n} variants: say which one these answers are for with `variant = N` at the top of the file"),
+            format!("ujian ini memiliki {n} varian: tuliskan varian mana yang dijawab dengan `variant = N` di awal berkas"),
+        ),
+        ErrMsg::NotAVariant(v, n) => f(
+            format!("`{v}` is not a variant of the exam (1 to {n})"),
+            format!("`{v}` bukan varian ujian ini (1 sampai {n})"),
+        ),
+        ErrMsg::NotAProblemOfExam(k, names) => f(
+            format!("`{k}` is not in a table of a problem of the exam ([{names}])"),
+            format!("`{k}` tidak berada di tabel soal ujian ini ([{names}])"),
+        ),
+        ErrMsg::ReportFormat(p) => f(
+            format!("{p}: the report's format comes from its extension: .html, .md, .json or .csv"),
+            format!("{p}: format laporan ditentukan oleh ekstensinya: .html, .md, .json atau .csv"),
+        ),
+        ErrMsg::ReportNeedsClass => say(
+            lang,
+            "a class report needs --answers DIR (a folder of answer files)",
+            "laporan kelas memerlukan --answers DIR (folder berkas jawaban)",
         ),
         ErrMsg::PixelOutside(x, y, w, h) => f(
             format!("({x}, {y}) is outside the {w}x{h} image"),
@@ -1014,24 +1081,28 @@ pub(crate) mod tests {
             ErrMsg::TranslationTooLarge(s("f32")),
             ErrMsg::EyeCoordsTooLarge(s("A"), s("f32")),
             ErrMsg::ResultNotFinite(s("f32")),
-            ErrMsg::Exists(s("a.svg")),
+            ErrMsg::ResultNotFinite(s("exact")),
             ErrMsg::ExistsForce(s("out/problem-01.toml")),
+            ErrMsg::StdoutClosed,
+            ErrMsg::NamesFolder(s("figs/")),
+            ErrMsg::IsLink(s("a.png")),
+            ErrMsg::IsInput(s("scene.toml")),
+            ErrMsg::NotOwn(s("exam/key.md"), s(".grafika-generated")),
             ErrMsg::NotDirectory(s("out")),
+            ErrMsg::NotMarked(1, 4, s("class/broken.toml")),
+            ErrMsg::AnswerFileTooLarge(s("a.toml"), 2_000_000, 1 << 20),
             ErrMsg::NoLightTable(s("l.toml")),
             ErrMsg::ColorMissing,
             ErrMsg::NormalMissing,
             ErrMsg::CameraAtPoint,
             ErrMsg::NoLight,
             ErrMsg::LightAtPoint,
-            ErrMsg::SpotNeeds(s("theta")),
             ErrMsg::Needs(Thing::Light(s("point")), s("position")),
             ErrMsg::Needs(Thing::Object(s("sphere")), s("r")),
             ErrMsg::Needs(Thing::Object(s("obj")), s("path")),
             ErrMsg::NotApplicable(s("axis"), s("point")),
             ErrMsg::NoSuchKey(s("box"), s("r"), s("size")),
-            ErrMsg::NeededForLight,
             ErrMsg::NeededToRender,
-            ErrMsg::ZeroDirection,
             ErrMsg::ObjInvalid(s("m.obj"), s("FaceParseError"), s("Failed to parse a face")),
             ErrMsg::ObjInvalid(s("m.obj"), s("Unknown"), s("something")),
             ErrMsg::ObjNoFaces(s("m.obj")),
@@ -1039,6 +1110,7 @@ pub(crate) mod tests {
             ErrMsg::FaceVertex,
             ErrMsg::FormulaNotFinite,
             ErrMsg::TooManyTriangles(5_000_000, 4_000_000),
+            ErrMsg::TooManyLights(9, 8),
             ErrMsg::NeedsColour,
             ErrMsg::NoObjects,
             ErrMsg::CameraNeedsPerspective,
@@ -1060,6 +1132,12 @@ pub(crate) mod tests {
             ErrMsg::NoPrinted(s("p.toml")),
             ErrMsg::CsvAndJson,
             ErrMsg::NoAnswerFiles(s("class")),
+            ErrMsg::NoExam(s("exam")),
+            ErrMsg::NoVariant(4),
+            ErrMsg::NotAVariant(s("7"), 4),
+            ErrMsg::NotAProblemOfExam(s("view.n"), s("problem-01, problem-02")),
+            ErrMsg::ReportFormat(s("class.txt")),
+            ErrMsg::ReportNeedsClass,
             ErrMsg::PixelOutside(10, 20, 8, 8),
             ErrMsg::PixelText(s("a,b")),
             ErrMsg::NothingRendered,
@@ -1168,6 +1246,7 @@ pub(crate) mod tests {
             Shininess,
             View,
             Light,
+            Axis,
             TiltCamera,
             Colors,
             Answers,
@@ -1212,22 +1291,25 @@ pub(crate) mod tests {
             | E::CannotWrite(..)
             | E::CannotCreate(..)
             | E::CannotWriteStdout(_)
-            | E::Exists(_)
+            | E::StdoutClosed
             | E::ExistsForce(_)
+            | E::NamesFolder(_)
+            | E::IsLink(_)
+            | E::IsInput(_)
+            | E::NotOwn(..)
             | E::NotDirectory(_)
+            | E::NotMarked(..)
+            | E::AnswerFileTooLarge(..)
             | E::NoLightTable(_)
             | E::ColorMissing
             | E::NormalMissing
             | E::CameraAtPoint
             | E::NoLight
             | E::LightAtPoint
-            | E::SpotNeeds(_)
             | E::Needs(..)
             | E::NotApplicable(..)
             | E::NoSuchKey(..)
-            | E::NeededForLight
             | E::NeededToRender
-            | E::ZeroDirection
             | E::ObjUnreadable(..)
             | E::ObjInvalid(..)
             | E::ObjNoFaces(_)
@@ -1235,6 +1317,7 @@ pub(crate) mod tests {
             | E::FaceVertex
             | E::FormulaNotFinite
             | E::TooManyTriangles(..)
+            | E::TooManyLights(..)
             | E::NeedsColour
             | E::NoObjects
             | E::CameraNeedsPerspective
@@ -1257,6 +1340,12 @@ pub(crate) mod tests {
             | E::NoPrinted(_)
             | E::CsvAndJson
             | E::NoAnswerFiles(_)
+            | E::NoExam(_)
+            | E::NoVariant(_)
+            | E::NotAVariant(..)
+            | E::NotAProblemOfExam(..)
+            | E::ReportFormat(_)
+            | E::ReportNeedsClass
             | E::PixelOutside(..)
             | E::PixelText(_)
             | E::NothingRendered

@@ -233,6 +233,14 @@ pub fn answer_words(key: &str, lang: Lang) -> String {
             t("intersection with the plane", "titik potong dengan bidang"),
             plane(pl, lang)
         ),
+        ["clip", "intersections", pl, "code"] => format!(
+            "{} {}",
+            t(
+                "outcode of the intersection with the plane",
+                "region code titik potong dengan bidang"
+            ),
+            plane(pl, lang)
+        ),
         ["clip", "segment"] => t("the clipped segment", "segmen garis hasil clipping"),
         ["clip", "status"] => t("the status", "status"),
         _ => key.to_string(),

@@ -18,6 +18,10 @@ pub fn said(s: &Said, lang: Lang) -> String {
                 (true, false) => format!("0 — {test}: {v} salah"),
             }
         }
+        Said::BitQuestion(test, values) => match id {
+            false => format!("{test}: is {values} true?"),
+            true => format!("{test}: apakah {} benar?", nums(values, lang)),
+        },
         Said::FrameTime(ms, mpix, png) => {
             if id {
                 format!(

@@ -9,7 +9,8 @@
 //! a listening recorder calls them, and lane types are never recorded).
 
 use super::{
-    label, listening, max0, pow, Light, LightKind, LightTerm, Material, Model, RuleSet, Surface,
+    label, listening, max0, pow, Light, LightKind, LightTerm, Material, Model, Part, RuleSet,
+    Surface,
 };
 use crate::msg::{LightPart, Msg, SpotZone};
 use crate::num::vec::{add, dot, sub, V3};
@@ -57,7 +58,7 @@ pub fn light_term_with<T: Scalar, R: RuleSet<T>>(
         _ => T::one(),
     };
     // cos α = L·N
-    let cos_alpha = dot(&l, &s.normal);
+    let cos_alpha = rules.given_num(Part::CosAlpha, dot(&l, &s.normal));
     let mut term = LightTerm {
         l,
         distance,
@@ -223,8 +224,8 @@ fn specular<T: Scalar, R: RuleSet<T>>(
         return;
     }
     let two_ln = T::from_i64(2) * term.cos_alpha.clone();
-    let r = rules.reflect(n, &term.l, &two_ln);
-    let cos_beta = dot(&r, v);
+    let r = rules.given_vec(Part::R, rules.reflect(n, &term.l, &two_ln));
+    let cos_beta = rules.given_num(Part::CosBeta, dot(&r, v));
     tr.step(|| {
         Step::new(
             label(at, LightPart::Reflection),

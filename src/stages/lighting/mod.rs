@@ -503,14 +503,71 @@ fn text_reflect<T: Scalar>(n: &V3<T>, l: &V3<T>, two_ln: &T) -> V3<T> {
     sub(&crate::num::vec::scale(n, two_ln), l)
 }
 
+/// A value the lighting stage computes on its way to the colour, which a
+/// rule set may replace by a given one ([`RuleSet::given_num`] and its
+/// siblings): named by its result key.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Part {
+    /// cos α = L·N.
+    CosAlpha,
+    /// R = 2N(L·N) − L.
+    R,
+    /// cos β = R·V.
+    CosBeta,
+    /// The ambient term.
+    Ambient,
+    /// The diffuse term.
+    Diffuse,
+    /// The specular term.
+    Specular,
+    /// The sum of the terms before the clamp.
+    Unclamped,
+}
+
+impl Part {
+    /// The result key of the value (`cos_alpha`, `R`, ...).
+    pub fn key(self) -> &'static str {
+        match self {
+            Part::CosAlpha => "cos_alpha",
+            Part::R => "R",
+            Part::CosBeta => "cos_beta",
+            Part::Ambient => "ambient",
+            Part::Diffuse => "diffuse",
+            Part::Specular => "specular",
+            Part::Unclamped => "unclamped",
+        }
+    }
+}
+
 /// The two replaceable rules as a trait: [`Rules`] (functions chosen at run
 /// time, for `diagnose`) or [`TextRules`] (the text's, known at compile
 /// time, so the renderer's per-pixel call inlines them).
+///
+/// The `given_*` methods see each value of [`Part`] as the stage computes
+/// it and return the one the stage goes on with: that value itself for
+/// the text's rules (the default, which compiles away); a student's own
+/// earlier answer for follow-through, so that the later values come from
+/// this stage and not from a second copy of its formulas.
 pub trait RuleSet<T> {
     /// R from N, L and 2(L·N).
     fn reflect(&self, n: &V3<T>, l: &V3<T>, two_ln: &T) -> V3<T>;
     /// The base of the highlight power.
     fn highlight_base(&self, cos: &T) -> T;
+    /// A number of the stage (cos α, cos β), or the one given in its place.
+    #[inline(always)]
+    fn given_num(&self, _part: Part, computed: T) -> T {
+        computed
+    }
+    /// A vector of the stage (R), or the one given in its place.
+    #[inline(always)]
+    fn given_vec(&self, _part: Part, computed: V3<T>) -> V3<T> {
+        computed
+    }
+    /// A colour of the stage (a term, the sum), or the one given in its place.
+    #[inline(always)]
+    fn given_rgb(&self, _part: Part, computed: Rgb<T>) -> Rgb<T> {
+        computed
+    }
 }
 
 impl<T: Scalar> RuleSet<T> for Rules<T> {
@@ -545,7 +602,8 @@ fn per_channel<T>(mut f: impl FnMut(usize) -> T) -> Rgb<T> {
     [f(0), f(1), f(2)]
 }
 
-fn rgb_val<T: Scalar>(c: &Rgb<T>) -> Val {
+/// A colour as a value: its three channels.
+pub fn rgb_val<T: Scalar>(c: &Rgb<T>) -> Val {
     Val::List(c.iter().map(Val::num).collect())
 }
 
@@ -610,13 +668,15 @@ pub fn shade_with_rules<T: Scalar, R: RuleSet<T>>(
 
     // The three terms, the sum and the clamp
     let ca = mat.ambient_color.as_ref().unwrap_or(&mat.color);
-    let ambient = term(want_a, &mat.ka, sum_a, ca);
-    let diffuse = term(want_d, &mat.kd, sum_d, &mat.color);
+    let ambient = rules.given_rgb(Part::Ambient, term(want_a, &mat.ka, sum_a, ca));
+    let diffuse = rules.given_rgb(Part::Diffuse, term(want_d, &mat.kd, sum_d, &mat.color));
     let specular = term(want_spec, &mat.ks, sum_s, &mat.specular);
+    let specular = rules.given_rgb(Part::Specular, specular);
     let emissive = mat.emissive.clone();
     let unclamped: Rgb<T> = per_channel(|c| {
         ambient[c].clone() + diffuse[c].clone() + specular[c].clone() + emissive[c].clone()
     });
+    let unclamped = rules.given_rgb(Part::Unclamped, unclamped);
     let color: Rgb<T> = per_channel(|c| {
         let x = &unclamped[c];
         // min(x, 1), then max(·, 0): 1 above, 0 below (and for NaN).

@@ -1,12 +1,31 @@
-//! Judging one answer: exact equality, the tolerance, the rounding to the
-//! digits written, significant figures; lists element by element.
+//! Judging one answer, as read ([`crate::input::answer`]), against one
+//! value: grafika's, a mistake's, or the one the student's own earlier
+//! answers lead to. A number is, in this order:
+//!
+//! 1. exact: equal to the value (any equivalent form, decided exactly);
+//! 2. within the tolerance ([`tolerance::for_key`]): correct, or too coarse
+//!    when written as a decimal with fewer significant figures than asked;
+//! 3. the value rounded to the digits written (a whole number is rounded to
+//!    the units): correct, or too coarse. Figures are counted from the
+//!    value's own leading digit, so a rounding past it keeps none (1 for
+//!    0.7071 is wrong; 1 for 0.96 and 0.1 for 0.096 keep one figure);
+//! 4. wrong.
+//!
+//! An expression that is not exactly the value (`7/5` for √2) can only be
+//! saved by the tolerance. A pixel position within its tolerance (half a
+//! pixel) is never too coarse: it names the pixel. A list takes its worst
+//! component's verdict; a zero component takes the tolerance of its
+//! list's largest magnitude. Before step 2, the caller sets the answer
+//! beside the catalog's mistaken values ([`matches_closely`]): an answer
+//! equal to one is wrong, whatever it rounds.
 
-use super::{Settings, Verdict, ZERO_TOLERANCE};
+use super::{tolerance, Settings, Verdict};
+use crate::input::answer::{Number, Read};
 use crate::msg::Msg;
-use crate::num::{parse_expr, Real, Shown};
+use crate::num::{Real, Shown};
 use crate::stages::trace::Val;
 
-/// A judged value (a number, or a list judged element by element).
+/// A judged answer: its verdict, stable code and note.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Judged {
     pub verdict: Verdict,
@@ -24,236 +43,242 @@ impl Judged {
             note,
         }
     }
-}
-
-/// Judges a given answer against an expected value.
-/// `carry`: also accept a decimal within one unit of its last written digit
-/// (used when matching mistaken values: students carry rounded intermediate
-/// values forward, as the text does with 2 × 0.041 = 0.082).
-pub(crate) fn judge(
-    given: &toml::Value,
-    expected: &Val,
-    s: &Settings,
-    key: &str,
-    carry: bool,
-) -> Judged {
-    match expected {
-        Val::Num(e) => match scalar_text(given) {
-            Some(t) => judge_number(&t, e, s, carry),
-            None => Judged::new(Verdict::Unparseable, "unparseable", Msg::ExpectOne),
-        },
-        Val::List(items) => judge_list(given, items, s, key, carry),
-        Val::Text(t) => judge_text(given, t),
-        Val::Null => judge_none(given),
-        Val::Bool(b) => judge_bool(given, *b),
-        Val::Map(_) | Val::Said(_) => {
-            Judged::new(Verdict::Unparseable, "unparseable", Msg::SeveralAnswers)
-        }
+    fn wrong(note: Msg) -> Judged {
+        Judged::new(Verdict::Wrong, "wrong", note)
+    }
+    /// Whether the answer agrees with the value: correct (not by
+    /// follow-through) or too coarse.
+    pub(crate) fn agrees(&self) -> bool {
+        matches!(self.verdict, Verdict::Correct | Verdict::TooCoarse)
     }
 }
 
-/// A list answer (a point, a segment): each component judged, the worst
-/// verdict kept; a projected point may leave out zp.
-fn judge_list(given: &toml::Value, items: &[Val], s: &Settings, key: &str, carry: bool) -> Judged {
-    let Some(parts) = list_parts(given) else {
-        return Judged::new(
-            Verdict::Unparseable,
-            "unparseable",
-            Msg::ExpectList(items.len()),
-        );
-    };
-    // A projected point may be given as (xp, yp): zp = d is the plane.
-    let prefix_ok = key.starts_with("project.") && parts.len() == items.len() - 1;
-    if parts.len() != items.len() && !prefix_ok {
-        if let Some(junk) = parts
-            .iter()
-            .filter_map(scalar_text)
-            .find(|t| parse_expr(&t.trim().replace(',', ".")).is_err())
-        {
-            return Judged::new(
-                Verdict::Unparseable,
-                "unparseable",
-                Msg::NotANumber(junk.trim().to_string(), items.len()),
-            );
-        }
-        return Judged::new(
-            Verdict::Wrong,
-            "wrong",
-            Msg::CountMismatch(items.len(), parts.len()),
-        );
-    }
-    let nested = items.iter().any(|x| matches!(x, Val::List(_)));
-    let label = |i: usize| {
-        if nested {
-            format!("point {}", i + 1)
-        } else if items.len() <= 3 {
-            ["x", "y", "z"][i].to_string()
-        } else {
-            format!("component {}", i + 1)
-        }
-    };
-    combine(
-        parts
-            .iter()
-            .zip(items)
-            .map(|(g, e)| judge(g, e, s, key, carry))
-            .collect(),
-        label,
-    )
+/// An exact form (the ASCII of a value, or an expression as read) as an
+/// exact number; the caller caches it, since a class writes the same forms.
+pub(crate) type ExactOf<'a> = &'a dyn Fn(&str) -> Option<Real>;
+
+/// What a judgment needs besides the answer and the value.
+#[derive(Clone, Copy)]
+pub(crate) struct Ctx<'a> {
+    pub settings: &'a Settings,
+    /// The answer key (a pixel position takes half a pixel).
+    pub key: &'a str,
+    /// Also accept a decimal within one unit of its last written digit:
+    /// students carry rounded values forward (the text's 2 × 0.041 =
+    /// 0.082), so a mistaken or carried value is matched this loosely.
+    pub carry: bool,
+    pub exact: ExactOf<'a>,
 }
 
-/// A text answer: an outcode (a short binary number is padded on the left)
-/// or a word such as a status, in any case.
-fn judge_text(given: &toml::Value, t: &str) -> Judged {
-    let g = scalar_text(given).unwrap_or_default();
-    let g = g.trim();
-    let same = if t.len() == 6 && t.chars().all(|c| c == '0' || c == '1') {
-        // an outcode; a short binary number is padded on the left
-        g.len() <= 6 && g.chars().all(|c| c == '0' || c == '1') && format!("{g:0>6}") == *t
-    } else {
-        g.eq_ignore_ascii_case(t)
-    };
-    if same {
-        Judged::new(Verdict::Correct, "correct.exact", Msg::default())
-    } else {
-        Judged::new(Verdict::Wrong, "wrong", Msg::Expected(t.to_string()))
-    }
+/// Judges an answer against a value.
+pub(crate) fn judge(read: &Read, expected: &Val, ctx: &Ctx) -> Judged {
+    judge_scaled(read, expected, scale(expected), ctx)
 }
 
-/// The answer to "none" (a rejected segment): empty, `none`, `null` or `rejected`.
-fn judge_none(given: &toml::Value) -> Judged {
-    let empty = match given {
-        toml::Value::Array(a) => a.is_empty(),
-        toml::Value::String(s) => {
-            matches!(
-                s.trim().to_lowercase().as_str(),
-                "" | "none" | "null" | "rejected"
-            )
-        }
-        _ => false,
-    };
-    if empty {
-        Judged::new(Verdict::Correct, "correct.exact", Msg::default())
-    } else {
-        Judged::new(Verdict::Wrong, "wrong", Msg::ExpectedNone)
-    }
-}
-
-/// A yes/no answer.
-fn judge_bool(given: &toml::Value, b: bool) -> Judged {
-    let g = scalar_text(given).unwrap_or_default().to_lowercase();
-    let gb = matches!(g.as_str(), "true" | "yes" | "1");
-    if gb == b {
-        Judged::new(Verdict::Correct, "correct.exact", Msg::default())
-    } else {
-        Judged::new(Verdict::Wrong, "wrong", Msg::ExpectedBool(b))
-    }
-}
-
-/// The parts of a list answer: a TOML array, or `(a, b, c)` written as text.
-fn list_parts(given: &toml::Value) -> Option<Vec<toml::Value>> {
-    match given {
-        toml::Value::Array(a) => Some(a.clone()),
-        toml::Value::String(t) => {
-            let inner = t
-                .trim()
-                .trim_start_matches(['(', '['])
-                .trim_end_matches([')', ']']);
-            // `(0,8; 0,6; 0)`: with semicolons the commas are decimal marks.
-            let items: Vec<&str> = if inner.contains(';') {
-                inner.split(';').collect()
-            } else {
-                crate::num::expr::split_top_level(inner)
-            };
-            Some(
-                items
-                    .into_iter()
-                    .map(|x| toml::Value::String(x.trim().to_string()))
-                    .collect(),
-            )
-        }
-        _ => None,
-    }
-}
-
-/// The value of an answer to `key`, read the way `judge` reads it against a
-/// value shaped like `like` (numbers as f64, a decimal comma as a point; a
-/// projected point given as (xp, yp) takes zp = d from `like`); None when it
-/// cannot be read. Follow-through computes with it.
-pub(crate) fn value_of(given: &toml::Value, like: &Val, key: &str) -> Option<Val> {
-    if let (true, Val::List(items), Some(parts)) =
-        (key.starts_with("project."), like, list_parts(given))
-    {
-        if items.len() == 3 && parts.len() == 2 {
-            let mut xy = read_value(given, &Val::List(items[..2].to_vec()))?;
-            if let Val::List(v) = &mut xy {
-                v.push(items[2].clone());
-            }
-            return Some(xy);
-        }
-    }
-    read_value(given, like)
-}
-
-fn read_value(given: &toml::Value, like: &Val) -> Option<Val> {
-    match like {
-        Val::Num(_) => {
-            let t = scalar_text(given)?.trim().replace(',', ".");
-            let x = parse_expr(&t).ok()?.eval::<f64>().ok()?;
-            Some(Val::num(&x))
-        }
-        Val::List(items) => {
-            let parts = list_parts(given)?;
-            (parts.len() == items.len())
-                .then(|| {
-                    parts
-                        .iter()
-                        .zip(items)
-                        .map(|(g, e)| read_value(g, e))
-                        .collect()
-                })
-                .flatten()
-                .map(Val::List)
-        }
-        Val::Text(t) => {
-            let g = scalar_text(given)?.trim().to_string();
-            let outcode = t.len() == 6 && g.len() <= 6 && g.chars().all(|c| c == '0' || c == '1');
-            Some(Val::Text(if outcode {
-                format!("{g:0>6}")
-            } else {
-                g.to_lowercase()
-            }))
-        }
-        Val::Null | Val::Bool(_) | Val::Map(_) | Val::Said(_) => None,
-    }
-}
-
-/// The text of a scalar TOML value.
-fn scalar_text(v: &toml::Value) -> Option<String> {
+/// The largest magnitude among a value's numbers (the tolerance of a zero).
+fn scale(v: &Val) -> f64 {
     match v {
-        toml::Value::String(s) => Some(s.clone()),
-        toml::Value::Integer(i) => Some(i.to_string()),
-        toml::Value::Float(f) => Some(format!("{f}")),
-        toml::Value::Boolean(b) => Some(b.to_string()),
-        _ => None,
+        Val::Num(s) => s.value.abs(),
+        Val::List(items) => items.iter().map(scale).fold(0.0, f64::max),
+        _ => 0.0,
     }
+}
+
+fn judge_scaled(read: &Read, expected: &Val, sc: f64, ctx: &Ctx) -> Judged {
+    match (read, expected) {
+        (Read::Num(n), Val::Num(e)) => number(n, e, sc, ctx),
+        (Read::List(items), Val::List(es)) if items.len() == es.len() => combine(
+            items
+                .iter()
+                .zip(es)
+                .map(|(g, e)| judge_scaled(g, e, sc, ctx))
+                .collect(),
+            es.len(),
+            es.iter().any(|x| matches!(x, Val::List(_))),
+        ),
+        (Read::List(items), Val::List(es)) => {
+            Judged::wrong(Msg::CountMismatch(es.len(), items.len()))
+        }
+        (Read::Word(w), Val::Text(t)) if w == t => {
+            Judged::new(Verdict::Correct, "correct.exact", Msg::Exact)
+        }
+        (Read::Word(w), Val::Bool(b)) if *w == b.to_string() => {
+            Judged::new(Verdict::Correct, "correct.exact", Msg::Exact)
+        }
+        (Read::None, Val::Null) => Judged::new(Verdict::Correct, "correct.exact", Msg::Exact),
+        (_, Val::Null) => Judged::wrong(Msg::ExpectedNone),
+        (_, Val::Bool(b)) => Judged::wrong(Msg::ExpectedBool(*b)),
+        (_, e) => Judged::wrong(expected_note(e)),
+    }
+}
+
+/// "expected …" with the value in exact and decimal form.
+pub(crate) fn expected_note(e: &Val) -> Msg {
+    Msg::Expected(match e {
+        Val::Num(s) => crate::num::format::shown(s, 6, true),
+        Val::Text(t) => t.clone(),
+        Val::List(items) => format!(
+            "({})",
+            items
+                .iter()
+                .map(|x| match expected_note(x) {
+                    Msg::Expected(t) => t,
+                    _ => String::new(),
+                })
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        _ => String::new(),
+    })
+}
+
+/// Whether two numbers are equal as doubles can tell (relative 1e-9).
+fn same(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-9 * a.abs().max(b.abs())
+}
+
+/// The exponent of a number's leading digit (−2 for 0.0414), read from
+/// its shortest decimal, which a logarithm can miss by one at a power of 10.
+fn leading_digit(x: f64) -> i32 {
+    let s = format!("{:e}", x.abs());
+    s.split_once('e')
+        .and_then(|(_, e)| e.parse().ok())
+        .unwrap_or(0)
+}
+
+/// Judges one number (steps 1 to 4 of the module docs); `sc` is the
+/// largest magnitude of the answer it belongs to.
+fn number(n: &Number, e: &Shown, sc: f64, ctx: &Ctx) -> Judged {
+    let (g, ev) = (n.value, e.value);
+    let s = ctx.settings;
+    // 1. Exactly equal: decided exactly where both are exact forms (only
+    // when the doubles agree: otherwise they cannot be equal), else to 1e-12.
+    if same(g, ev) {
+        let exact = e.exact.as_deref().and_then(ctx.exact);
+        let given = exact
+            .as_ref()
+            .and_then(|_| (ctx.exact)(&n.expr.to_string()));
+        let exactly = match (exact, given) {
+            (Some(x), Some(y)) if x.is_exact() && y.is_exact() => x == y,
+            _ => (g - ev).abs() <= 1e-12 * ev.abs().max(1.0),
+        };
+        if exactly {
+            return Judged::new(Verdict::Correct, "correct.exact", Msg::Exact);
+        }
+    }
+    let pixel = tolerance::is_pixel(ctx.key);
+    let figures = n.last_digit.map(|last| leading_digit(ev) - last + 1);
+    let coarse = |k: i32| !pixel && ev != 0.0 && k < s.sig_figs as i32;
+    // 2. Within the tolerance (an expression that is not the value: only this).
+    let off = (g - ev).abs();
+    if off <= tolerance::for_key(ctx.key, ev, sc, s.tolerance) {
+        let relative = tolerance::absolute(ev, sc, s.tolerance);
+        return match figures {
+            Some(k) if coarse(k) => Judged::new(
+                Verdict::TooCoarse,
+                "too_coarse",
+                Msg::SigCoarse(k.max(1) as u32, s.sig_figs),
+            ),
+            _ if off > relative => {
+                Judged::new(Verdict::Correct, "correct.tolerance", Msg::WithinPixel)
+            }
+            _ => Judged::new(
+                Verdict::Correct,
+                "correct.tolerance",
+                Msg::WithinPct(fmt_pct(s.tolerance)),
+            ),
+        };
+    }
+    let (Some(last), Some(k)) = (n.last_digit, figures) else {
+        return Judged::wrong(expected_note(&Val::Num(e.clone())));
+    };
+    // 3. The value rounded to the digits written.
+    let unit = if ctx.carry { 1.0 } else { 0.5 };
+    let within = |exp: i32| off <= unit * 10f64.powi(exp) * (1.0 + 1e-9);
+    // a rounding past the value's leading digit keeps one figure only
+    // when it is the value's rounding to that digit (0.96 → 1)
+    let k = if k <= 0 && within(leading_digit(ev)) {
+        1
+    } else {
+        k
+    };
+    if within(last) && k >= 1 {
+        return if coarse(k) {
+            Judged::new(
+                Verdict::TooCoarse,
+                "too_coarse",
+                Msg::RoundedCoarse(k as u32, s.sig_figs),
+            )
+        } else {
+            Judged::new(Verdict::Correct, "correct.rounded", Msg::Rounded(k as u32))
+        };
+    }
+    Judged::wrong(expected_note(&Val::Num(e.clone())))
+}
+
+fn fmt_pct(t: f64) -> String {
+    crate::num::format::fmt_dec(t * 100.0, 3)
+}
+
+/// Whether an answer is a mistaken value itself: every number equal to it
+/// (as doubles can tell), or, written as a decimal, within its tolerance;
+/// every word the same.
+pub(crate) fn matches_closely(read: &Read, v: &Val, key: &str, rel: f64) -> bool {
+    let sc = scale(v);
+    fn go(read: &Read, v: &Val, key: &str, rel: f64, sc: f64) -> bool {
+        match (read, v) {
+            (Read::Num(n), Val::Num(m)) => {
+                same(n.value, m.value)
+                    || (n.is_decimal()
+                        && (n.value - m.value).abs() <= tolerance::for_key(key, m.value, sc, rel))
+            }
+            (Read::List(a), Val::List(b)) => {
+                a.len() == b.len() && a.iter().zip(b).all(|(x, y)| go(x, y, key, rel, sc))
+            }
+            (Read::Word(w), Val::Text(t)) => w == t,
+            (Read::None, Val::Null) => true,
+            _ => false,
+        }
+    }
+    go(read, v, key, rel, sc)
+}
+
+/// Whether two values can be told apart at the tolerance: a number whose
+/// tolerance intervals do not meet, a different word, another shape.
+pub(crate) fn apart(a: &Val, b: &Val, key: &str, rel: f64) -> bool {
+    let (sa, sb) = (scale(a), scale(b));
+    fn go(a: &Val, b: &Val, key: &str, rel: f64, s: (f64, f64)) -> bool {
+        match (a, b) {
+            (Val::Num(x), Val::Num(y)) => tolerance::apart(
+                x.value,
+                tolerance::for_key(key, x.value, s.0, rel),
+                y.value,
+                tolerance::for_key(key, y.value, s.1, rel),
+            ),
+            (Val::List(xs), Val::List(ys)) => {
+                xs.len() != ys.len() || xs.iter().zip(ys).any(|(x, y)| go(x, y, key, rel, s))
+            }
+            _ => a != b,
+        }
+    }
+    go(a, b, key, rel, (sa, sb))
 }
 
 /// The verdict on a list: its worst element; the weakest kind of correct.
-fn combine(parts: Vec<Judged>, label: impl Fn(usize) -> String) -> Judged {
+/// Notes are labelled x, y, z (a point of three) or by position.
+fn combine(parts: Vec<Judged>, n: usize, nested: bool) -> Judged {
+    let label = |i: usize| {
+        if !nested && n <= 3 {
+            ["x", "y", "z"][i].to_string()
+        } else {
+            format!("{}", i + 1)
+        }
+    };
     let worst = parts
         .iter()
         .map(|j| j.verdict)
         .max()
         .unwrap_or(Verdict::Correct);
-    // A component that cannot be read decides over a wrong one, so that
-    // the note names the junk (`sqrt(-1)`, `1/0`) rather than only the rest.
-    let unreadable = parts.iter().any(|j| j.verdict == Verdict::Unparseable);
-    let worst = if worst == Verdict::Wrong && unreadable {
-        Verdict::Unparseable
-    } else {
-        worst
-    };
     let rank = |c: &str| match c {
         "correct.exact" => 0,
         "correct.tolerance" => 1,
@@ -284,7 +309,7 @@ fn combine(parts: Vec<Judged>, label: impl Fn(usize) -> String) -> Judged {
                     j.verdict == worst
                 }
         })
-        .map(|(i, j)| (label(i).to_string(), j.note.clone()))
+        .map(|(i, j)| (label(i), j.note.clone()))
         .collect();
     // One note when every component says the same.
     let note = if !notes.is_empty()
@@ -298,211 +323,34 @@ fn combine(parts: Vec<Judged>, label: impl Fn(usize) -> String) -> Judged {
     Judged::new(worst, code, note)
 }
 
-/// A plain decimal as written: (significant figures, exponent of the last
-/// written digit), e.g. "0.041" → (2, −3), "-1.50e2" → (3, 0). None for
-/// integers (taken as exact) and for expressions.
-pub fn decimal_places(text: &str) -> Option<(u32, i32)> {
-    let t = text.trim().trim_start_matches(['-', '−', '+']);
-    let (mant, exp) = match t.find(['e', 'E']) {
-        Some(i) => (&t[..i], t[i + 1..].parse::<i32>().ok()?),
-        None => (t, 0),
-    };
-    let (int, frac) = mant.split_once('.')?;
-    if !(int.chars().chain(frac.chars()).all(|c| c.is_ascii_digit())) || int.len() + frac.len() == 0
-    {
-        return None;
-    }
-    let digits: String = format!("{int}{frac}");
-    let sig = digits.trim_start_matches('0').len() as u32;
-    Some((sig.max(1), exp - frac.len() as i32))
-}
-
-/// A whole number as written, read as a rounding to the units: (significant
-/// figures, 0), e.g. "124" → (3, 0), "-4" → (1, 0). None for 0 (no figure
-/// of it is significant) and for anything that is not a plain integer.
-fn whole_number_places(text: &str) -> Option<(u32, i32)> {
-    let t = text.trim().trim_start_matches(['-', '−', '+']);
-    if t.is_empty() || !t.chars().all(|c| c.is_ascii_digit()) {
-        return None;
-    }
-    let sig = t.trim_start_matches('0').len() as u32;
-    (sig > 0).then_some((sig, 0))
-}
-
-/// Judges one number written by the student against an expected number.
-fn judge_number(text: &str, e: &Shown, s: &Settings, carry: bool) -> Judged {
-    let t = text.trim();
-    if t.is_empty() {
-        return Judged::new(Verdict::Missing, "missing", Msg::EmptyAnswer);
-    }
-    // A decimal comma (0,041) is a decimal point.
-    let t = t.replace(',', ".");
-    let expr = match parse_expr(&t) {
-        Ok(x) => x,
-        Err(m) => return Judged::new(Verdict::Unparseable, "unparseable", Msg::Unreadable(m)),
-    };
-    let g = match expr.eval::<f64>() {
-        Ok(v) => v,
-        Err(m) => return Judged::new(Verdict::Unparseable, "unparseable", Msg::Unreadable(m)),
-    };
-    let ev = e.value;
-    let places = decimal_places(&t).or_else(|| whole_number_places(&t));
-    let expected_txt = || Msg::Expected(crate::num::format::shown(e, 6, true));
-
-    // 1. Exact equality, when both sides are exact.
-    let mut decided = false;
-    if let Some(ex) = &e.exact {
-        if let (Ok(er), Ok(gr)) = (
-            parse_expr(ex).and_then(|x| x.eval::<Real>()),
-            expr.eval::<Real>(),
-        ) {
-            if er.is_exact() && gr.is_exact() {
-                decided = true;
-                if er == gr {
-                    return Judged::new(Verdict::Correct, "correct.exact", Msg::Exact);
-                }
-                if places.is_none() {
-                    // an exact form that is not equal: only tolerance can save it
-                    return within_tolerance(g, ev, s, places)
-                        .unwrap_or_else(|| Judged::new(Verdict::Wrong, "wrong", expected_txt()));
-                }
-            }
-        }
-    }
-    // Equal to 1e-12 (relative): exact, when exact arithmetic cannot decide
-    // (a terminating decimal such as 0.6 = 3/5 is exact, however few digits).
-    if !decided && (g - ev).abs() <= ZERO_TOLERANCE * ev.abs().max(1.0) {
-        return Judged::new(Verdict::Correct, "correct.exact", Msg::Exact);
-    }
-    if let Some(j) = within_tolerance(g, ev, s, places) {
-        return j;
-    }
-    // 3. Correctly rounded to the places written.
-    if let Some((sig, last)) = places {
-        let unit = if carry { 1.0 } else { 0.5 };
-        let half = unit * 10f64.powi(last) * (1.0 + 1e-9);
-        if (g - ev).abs() <= half {
-            return if sig < s.sig_figs {
-                Judged::new(
-                    Verdict::TooCoarse,
-                    "too_coarse",
-                    Msg::RoundedCoarse(sig, s.sig_figs),
-                )
-            } else {
-                Judged::new(Verdict::Correct, "correct.rounded", Msg::Rounded(sig))
-            };
-        }
-    }
-    Judged::new(Verdict::Wrong, "wrong", expected_txt())
-}
-
-/// The tolerance test: relative `s.tolerance` (absolute 1e-12 near zero).
-fn within_tolerance(g: f64, ev: f64, s: &Settings, places: Option<(u32, i32)>) -> Option<Judged> {
-    let tol = (s.tolerance * ev.abs()).max(ZERO_TOLERANCE);
-    if (g - ev).abs() > tol {
-        return None;
-    }
-    Some(match places {
-        Some((sig, _)) if sig < s.sig_figs => Judged::new(
-            Verdict::TooCoarse,
-            "too_coarse",
-            Msg::SigCoarse(sig, s.sig_figs),
-        ),
-        _ => Judged::new(
-            Verdict::Correct,
-            "correct.tolerance",
-            Msg::WithinPct(fmt_pct(s.tolerance)),
-        ),
-    })
-}
-
-fn fmt_pct(t: f64) -> String {
-    crate::num::format::fmt_dec(t * 100.0, 3)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::tutor::check::Settings;
+    use crate::input::answer;
 
-    fn num(v: f64) -> Shown {
-        Shown {
+    fn exact(t: &str) -> Option<Real> {
+        crate::num::parse_expr(t).ok()?.eval::<Real>().ok()
+    }
+    fn shown(v: f64, exact: Option<&str>) -> Val {
+        Val::Num(Shown {
             value: v,
-            exact: None,
+            exact: exact.map(str::to_string),
             pretty: None,
-        }
+        })
+    }
+    fn j_at(text: &str, e: &Val, key: &str) -> Judged {
+        let s = Settings::default();
+        let ctx = Ctx {
+            settings: &s,
+            key,
+            carry: false,
+            exact: &exact,
+        };
+        let read = answer::read(&toml::Value::String(text.into()), e).unwrap();
+        judge(&read, e, &ctx)
     }
     fn j(text: &str, v: f64) -> Judged {
-        judge_number(text, &num(v), &Settings::default(), false)
-    }
-
-    #[test]
-    fn places_written() {
-        assert_eq!(decimal_places("0.041"), Some((2, -3)));
-        assert_eq!(decimal_places("-0.0283"), Some((3, -4)));
-        assert_eq!(decimal_places("1.50e2"), Some((3, 0)));
-        assert_eq!(decimal_places("12"), None);
-        assert_eq!(decimal_places("-6/sqrt(2)"), None);
-    }
-
-    #[test]
-    fn junk_inside_a_vector_is_unparseable_and_named() {
-        let e = Val::List(vec![Val::num(&0.0), Val::num(&0.0), Val::num(&1.0)]);
-        let s = Settings::default();
-        let arr = |xs: &[&str]| {
-            toml::Value::Array(
-                xs.iter()
-                    .map(|x| toml::Value::String(x.to_string()))
-                    .collect(),
-            )
-        };
-        let j = judge(&arr(&["sqrt(-1)", "0", "1/0"]), &e, &s, "view.n", false);
-        let en = |m: &Msg| crate::report::words::words(m, crate::report::lang::Lang::En);
-        assert_eq!(j.verdict, Verdict::Unparseable, "{}", en(&j.note));
-        assert!(
-            en(&j.note).contains("x:") && en(&j.note).contains("z:"),
-            "{}",
-            en(&j.note)
-        );
-        let j = judge(
-            &toml::Value::String("banana".into()),
-            &e,
-            &s,
-            "view.n",
-            false,
-        );
-        assert_eq!(j.code, "unparseable", "{}", en(&j.note));
-        assert!(en(&j.note).contains("banana"), "{}", en(&j.note));
-        // A readable wrong answer of the wrong length stays wrong.
-        let j = judge(&arr(&["0", "1"]), &e, &s, "view.n", false);
-        assert_eq!(j.code, "wrong");
-    }
-
-    #[test]
-    fn a_whole_number_is_read_as_a_rounding_to_the_units() {
-        // 124.14 to the units is 124 (3 figures): correct; −3√2 = −4.243 to
-        // the units is −4, one figure: too coarse, as 0.04 is for a decimal.
-        assert_eq!(j("124", 124.14).code, "correct.rounded");
-        assert_eq!(j("-4", -3.0 * 2f64.sqrt()).code, "too_coarse");
-        assert_eq!(j("125", 124.14).verdict, Verdict::Wrong); // 0.86 off, more than half a unit
-        assert_eq!(j("0", 0.3).verdict, Verdict::Wrong); // 0 has no significant figure
-    }
-
-    #[test]
-    fn a_truncated_long_decimal_is_not_exact() {
-        // 50 digits of √2 − 1, truncated: close, but not the exact value.
-        let t = "0.41421356237309504880168872420969807856967187537694";
-        let judged = judge_number(t, &exact_sqrt2_minus_1(), &Settings::default(), false);
-        assert_ne!(judged.code, "correct.exact");
-        assert_eq!(judged.verdict, Verdict::Correct);
-    }
-
-    fn exact_sqrt2_minus_1() -> Shown {
-        Shown {
-            value: 2f64.sqrt() - 1.0,
-            exact: Some("sqrt(2)-1".into()),
-            pretty: None,
-        }
+        j_at(text, &shown(v, None), "window.top")
     }
 
     #[test]
@@ -515,38 +363,106 @@ mod tests {
         assert_eq!(j("0.042", top).verdict, Verdict::Wrong); // 1.4% off, not the rounding
         assert_eq!(j("0,041", top).code, "correct.rounded"); // decimal comma
                                                              // −6/√2 = −3√2, written either way
-        let a = -6.0 / 2f64.sqrt();
-        assert_eq!(j("-3*sqrt(2)", a).code, "correct.exact");
-        assert_eq!(j("-3√2", a).code, "correct.exact");
-        assert_eq!(j("-4.24", a).code, "correct.tolerance"); // 0.06% off
-        assert_eq!(j("-4.2", a).code, "correct.rounded");
-        assert_eq!(j("1/(", a).verdict, Verdict::Unparseable);
-        assert_eq!(j("", a).verdict, Verdict::Missing);
-        // near zero: absolute 1e-12
-        assert_eq!(j("0", 1e-15).verdict, Verdict::Correct);
-        assert_eq!(j("0.001", 0.0).verdict, Verdict::Wrong);
+        let a = shown(-3.0 * 2f64.sqrt(), Some("-3*sqrt(2)"));
+        assert_eq!(j_at("-6/sqrt(2)", &a, "k").code, "correct.exact");
+        assert_eq!(j_at("-3√2", &a, "k").code, "correct.exact");
+        assert_eq!(j_at("-4.24", &a, "k").code, "correct.tolerance"); // 0.06% off
+        assert_eq!(j_at("-4.2", &a, "k").code, "correct.rounded");
+        // 7/5 is 1% from √2: an expression is not a rounding
+        let r2 = shown(2f64.sqrt(), Some("sqrt(2)"));
+        assert_eq!(j_at("7/5", &r2, "k").verdict, Verdict::Wrong);
+        // 50 digits of √2 − 1, truncated: close, but not the exact value
+        let t = "0.41421356237309504880168872420969807856967187537694";
+        let v = shown(2f64.sqrt() - 1.0, Some("sqrt(2)-1"));
+        assert_eq!(j_at(t, &v, "k").code, "correct.tolerance");
     }
 
     #[test]
-    fn lists_and_codes() {
-        let s = Settings::default();
-        let e = Val::List(vec![Val::Num(num(0.02)), Val::Num(num(-0.0282842712))]);
-        let g: toml::Value = toml::Value::Array(vec!["0.0067".into(), "-0.0283".into()]);
-        let r = judge(&g, &e, &s, "project.points.B", false);
-        assert_eq!(r.verdict, Verdict::Wrong);
-        let ok: toml::Value = "(1/50, -sqrt(2)/50)".into();
+    fn figures_are_counted_from_the_values_leading_digit() {
+        // 0.7071 to the units is 1, which keeps no figure of it: wrong
+        assert_eq!(j("1", 0.5f64.sqrt()).verdict, Verdict::Wrong);
+        // 0.96 to one figure is 1; 0.096 to one figure is 0.1: too coarse
+        assert_eq!(j("1", 0.96).verdict, Verdict::TooCoarse);
+        assert_eq!(j("0.1", 0.096).verdict, Verdict::TooCoarse);
+        // 124.14 to the units is 124 (3 figures); −3√2 = −4.243 to the
+        // units is −4 (1 figure)
+        assert_eq!(j("124", 124.14).code, "correct.rounded");
+        assert_eq!(j("-4", -3.0 * 2f64.sqrt()).code, "too_coarse");
+        assert_eq!(j("125", 124.14).verdict, Verdict::Wrong);
+        assert_eq!(j("0", 0.3).verdict, Verdict::Wrong);
+        // 0.10 for 0.0957 rounds at the second decimal: one figure of it
+        assert_eq!(j("0.10", 0.0957).verdict, Verdict::TooCoarse);
+    }
+
+    #[test]
+    fn a_pixel_within_half_a_pixel_names_the_pixel() {
+        let px = Val::List(vec![shown(8.2, None), shown(78.45, None)]);
+        let got = j_at("8, 78", &px, "viewport.pixels.A");
+        assert_eq!(got.code, "correct.tolerance", "{got:?}");
         assert_eq!(
-            judge(&ok, &e, &s, "project.points.B", false).verdict,
-            Verdict::Correct
-        );
-        let code = Val::text("000010");
-        assert_eq!(
-            judge(&"10".into(), &code, &s, "clip.code0", false).verdict,
-            Verdict::Correct
-        );
-        assert_eq!(
-            judge(&"010000".into(), &code, &s, "clip.code0", false).verdict,
+            j_at("9, 78", &px, "viewport.pixels.A").verdict,
             Verdict::Wrong
         );
+    }
+
+    proptest::proptest! {
+        /// A value rounded to 2 to 6 significant figures (the default asks
+        /// for 2) is correct; rounded to one it is at best too coarse,
+        /// unless that one figure is the value itself or within the
+        /// tolerance of it; moved by two units of its last digit beyond the
+        /// tolerance, it is wrong.
+        #[test]
+        fn a_rounding_is_judged_by_its_figures(
+            m in 1.0f64..10.0,
+            e in -6i32..6,
+            neg in proptest::bool::ANY,
+            k in 1usize..7,
+        ) {
+            let x = if neg { -m } else { m } * 10f64.powi(e);
+            let text = format!("{:.*e}", k - 1, x);
+            let got = j(&text, x);
+            // a rounding that carries into a new leading digit (9.97 to
+            // 1.0e1) keeps one figure fewer of the value's own
+            let written: i32 = text.split_once('e').unwrap().1.parse().unwrap();
+            let figures = k as i32 - i32::from(written > leading_digit(x));
+            if figures >= 2 {
+                proptest::prop_assert_eq!(got.verdict, Verdict::Correct, "{} for {}", text, x);
+            } else if got.verdict == Verdict::Correct {
+                proptest::prop_assert!(got.code != "correct.rounded", "{} for {}: {:?}", text, x, got);
+            } else {
+                proptest::prop_assert_eq!(got.verdict, Verdict::TooCoarse, "{} for {}", text, x);
+            }
+            // a unit of the last digit written (9.97 to one figure is 1e1)
+            let digits = text.split_once('e').unwrap().0.chars().filter(char::is_ascii_digit).count();
+            let last = written - digits as i32 + 1;
+            let off = text.parse::<f64>().unwrap() + 2.0 * 10f64.powi(last);
+            if (off - x).abs() > 1e-3 * x.abs() {
+                // written to the same last digit
+                let moved = if last < 0 {
+                    format!("{:.*}", (-last) as usize, off)
+                } else {
+                    format!("{}e{last}", (off / 10f64.powi(last)).round())
+                };
+                proptest::prop_assert_eq!(j(&moved, x).verdict, Verdict::Wrong, "{} for {}", moved, x);
+            }
+        }
+    }
+
+    #[test]
+    fn a_mistaken_value_is_matched_exactly_or_within_the_tolerance_of_a_decimal() {
+        let m = Val::List(vec![shown(1.0, None), shown(0.0, None), shown(1.0, None)]);
+        let read = |t: &str| answer::read(&toml::Value::String(t.into()), &m).unwrap();
+        assert!(matches_closely(&read("1, 0, 1"), &m, "view.n", 1e-3));
+        assert!(matches_closely(
+            &read("1.0004, 0, 0.9996"),
+            &m,
+            "view.n",
+            1e-3
+        ));
+        assert!(!matches_closely(&read("1.01, 0, 1"), &m, "view.n", 1e-3));
+        let r = std::f64::consts::FRAC_1_SQRT_2;
+        let right = Val::List(vec![shown(r, None), shown(0.0, None), shown(r, None)]);
+        assert!(apart(&m, &right, "view.n", 1e-3));
+        assert!(!apart(&right, &right, "view.n", 1e-3));
     }
 }

@@ -1,19 +1,24 @@
 //! `grafika check`: marks a student's answers against grafika's exact
 //! solution of a problem, and diagnoses wrong answers with the mistake
-//! catalog ([`crate::tutor::diagnose`]).
+//! catalog ([`crate::tutor::diagnose`]). `practice` marks with the same
+//! judge ([`Marker`]: one reader, [`crate::input::answer`], and one order of
+//! judgment); the quiz exports give Moodle the same tolerance
+//! ([`tolerance`]) and the same catalog's values.
 //!
 //! An answer is correct when it equals the exact value (any equivalent
-//! form), when it is within the relative tolerance (0.1% by default;
-//! absolute 1e-12 near zero), or when it is the exact value correctly
-//! rounded to the decimal places the student wrote. A rounded decimal with
-//! fewer significant figures than required is "too coarse".
+//! form), when it is within the tolerance ([`tolerance::for_key`]: 0.1% by
+//! default, a zero by its answer's largest magnitude, a pixel within half a
+//! pixel), or when it is the exact value correctly rounded to the digits
+//! written. A rounded decimal with fewer significant figures than required
+//! is "too coarse"; figures are counted from the value's leading digit. An
+//! answer that is a catalog mistake's value is wrong and names the mistake.
 //!
 //! Verdicts and their stable codes (for autograders):
 //!
 //! | verdict | code | meaning | marks |
 //! |---|---|---|---|
 //! | correct | `correct.exact` | equal to the exact value (any equivalent form) | 1 |
-//! | correct | `correct.tolerance` | within the relative tolerance | 1 |
+//! | correct | `correct.tolerance` | within the tolerance | 1 |
 //! | correct | `correct.rounded` | the exact value rounded to the digits written | 1 |
 //! | correct | `correct.follow_through` | wrong, but right given the student's own earlier answers (`--follow-through`) | 1 |
 //! | too_coarse | `too_coarse` | right, but fewer significant figures than required | ½ |
@@ -24,26 +29,23 @@
 //! A list (a point, a segment) takes its worst component's verdict.
 
 mod judge;
+mod marker;
+mod sheet;
 pub mod tolerance;
 
-pub use judge::decimal_places;
-pub(crate) use judge::{judge, value_of, Judged};
+pub use marker::{agrees, Judgement, Marker};
 
 use crate::error::Result;
+use crate::input::answer::Read;
 use crate::input::problem::ProblemIn;
-use crate::num::Real;
 use crate::stages::trace::Val;
-use crate::tutor::diagnose::{self, Mistake};
-use crate::tutor::follow;
-use crate::tutor::solve::{self, lookup};
+use crate::tutor::diagnose::Mistake;
 
 /// A result tree: named values, as `solve` returns them.
 pub type Tree = Vec<(String, Val)>;
 
 /// Default relative tolerance (the usual default of online homework systems).
 pub const DEFAULT_TOLERANCE: f64 = 1e-3;
-/// Absolute tolerance used when the expected value is (near) zero.
-pub const ZERO_TOLERANCE: f64 = 1e-12;
 /// Default minimum significant figures of a rounded decimal answer.
 pub const DEFAULT_SIG_FIGS: u32 = 2;
 
@@ -125,8 +127,11 @@ pub struct Marked {
     /// Codes of the mistakes that reproduce this (wrong) answer.
     pub diagnosis: Vec<&'static str>,
     /// Why the source's printed answer is wrong (its `[[errata]]`), when
-    /// checking the source's own answers.
+    /// checking the source's own answers, or when the answer is the
+    /// source's misprint (`copied_misprint`).
     pub why: Option<crate::msg::Msg>,
+    /// The answer as read (None when missing or unreadable).
+    pub read: Option<Read>,
 }
 
 /// One mistake that explains some wrong answers.
@@ -161,7 +166,7 @@ pub struct Marking {
 impl Marking {
     /// Points earned.
     pub fn score(&self) -> f64 {
-        self.answers.iter().map(|a| a.verdict.points()).sum()
+        self.answers.iter().fold(0.0, |s, a| s + a.verdict.points())
     }
     /// Points possible.
     pub fn total(&self) -> usize {
@@ -215,6 +220,24 @@ pub fn default_keys(result: &Tree) -> Vec<String> {
     keys
 }
 
+/// The largest answer file read, in bytes (a class's files are a few KB;
+/// checked before the TOML is parsed, so reading stays bounded).
+pub const MAX_ANSWER_FILE: usize = 1 << 20;
+
+/// The longest answer read, in characters (the longest expression the
+/// number syntax takes, docs/spec.md §2): a longer one is `unparseable`
+/// with the reason, and shown cut.
+pub const MAX_ANSWER: usize = 4_000;
+
+/// The length in characters of an answer's text (every part of a list).
+pub(crate) fn answer_len(v: &toml::Value) -> usize {
+    match v {
+        toml::Value::String(s) => s.chars().count(),
+        toml::Value::Array(a) => a.iter().map(answer_len).sum(),
+        other => other.to_string().len(),
+    }
+}
+
 /// Answers keyed by dotted result keys, in the order given.
 pub type Answers = Vec<(String, toml::Value)>;
 
@@ -246,6 +269,14 @@ fn flatten(key: &str, v: &toml::Value, out: &mut Vec<(String, toml::Value)>) {
 /// Reads an answer file.
 pub fn read_answers(path: &std::path::Path) -> Result<(Option<String>, Answers)> {
     let text = crate::input::read_text("answers", path)?;
+    if text.len() > MAX_ANSWER_FILE {
+        let e = crate::msg::ErrMsg::AnswerFileTooLarge(
+            path.display().to_string(),
+            text.len(),
+            MAX_ANSWER_FILE,
+        );
+        return Err(crate::error::Error::why("answers", e));
+    }
     let t: toml::Table = toml::from_str(&text)
         .map_err(|e| crate::input::fields::toml_error(&path.display().to_string(), &text, &e))?;
     Ok(answers_from_table(&t))
@@ -262,11 +293,8 @@ pub fn settings_for(p: &ProblemIn, tolerance: Option<f64>, sig_figs: Option<u32>
     }
 }
 
-/// Solves the problem exactly and marks the answers. With `from_text` the
-/// answers are the source's printed ones: only those keys are marked, and a
-/// wrong one gets the reason from the file's `[[errata]]`; otherwise the keys
-/// expected are the problem's `[check] keys` (default: [`default_keys`]) plus
-/// any other key given.
+/// Solves the problem exactly and marks one answer sheet ([`Marker::mark`]);
+/// a class is marked with one [`Marker`].
 pub fn mark(
     p: &ProblemIn,
     who: &str,
@@ -274,219 +302,22 @@ pub fn mark(
     settings: Settings,
     from_text: bool,
 ) -> Result<Marking> {
-    let report = solve::solve::<Real>(p)?;
-    let result = report.result;
-    let keys: Vec<String> = if from_text {
-        answers.iter().map(|(k, _)| k.clone()).collect()
-    } else {
-        let mut k = p
-            .check
-            .as_ref()
-            .and_then(|c| c.keys.clone())
-            .unwrap_or_else(|| default_keys(&result));
-        for (given, _) in answers {
-            if !k.contains(given) {
-                k.push(given.clone());
-            }
-        }
-        k
-    };
-    let mut marked = Vec::new();
-    let mut unknown = Vec::new();
-    for key in &keys {
-        let given = answers.iter().find(|(k, _)| k == key).map(|(_, v)| v);
-        let Some(expected) = lookup(&result, key) else {
-            if given.is_some() {
-                unknown.push(key.clone());
-            }
-            continue;
-        };
-        let j = match given {
-            None => Judged::new(Verdict::Missing, "missing", crate::msg::Msg::NoAnswer),
-            Some(g) => judge(g, expected, &settings, key, false),
-        };
-        let note = j.note;
-        let why = match (from_text, p.errata.iter().find(|e| &e.key == key)) {
-            (true, Some(e)) if j.verdict == Verdict::Wrong => Some(e.reason()),
-            _ => None,
-        };
-        marked.push(Marked {
-            key: key.clone(),
-            verdict: j.verdict,
-            code: j.code,
-            given: given.map(written),
-            given_value: given.cloned(),
-            expected: Some(expected.clone()),
-            note,
-            diagnosis: vec![],
-            why,
-        });
-    }
-    if settings.follow_through {
-        credit_follow_through(p, &result, answers, &mut marked, &settings);
-    }
-    let diagnoses = diagnose_all(p, answers, &mut marked, &settings);
-    Ok(Marking {
-        title: p.title.clone(),
-        who: who.to_string(),
-        answers: marked,
-        diagnoses,
-        unknown,
-        settings,
-    })
-}
-
-/// Credits, as `correct.follow_through`, each wrong answer that is right
-/// when computed from the student's own earlier answers (see
-/// [`crate::tutor::follow`]): pixels from the student's window and projected
-/// points, eye coordinates from the student's u, v, n, and so on.
-fn credit_follow_through(
-    p: &ProblemIn,
-    result: &Tree,
-    answers: &[(String, toml::Value)],
-    marked: &mut [Marked],
-    settings: &Settings,
-) {
-    let inputs = follow::inputs(p);
-    // only wrong answers carry forward: a right one (maybe rounded) is grafika's value
-    let wrong: Vec<String> = marked
-        .iter()
-        .filter(|m| m.verdict == Verdict::Wrong)
-        .map(|m| m.key.clone())
-        .collect();
-    let own = |key: &str| -> Option<Val> {
-        let right = lookup(result, key)?;
-        answers
-            .iter()
-            .find(|(k, _)| k == key && wrong.contains(k))
-            .and_then(|(_, g)| value_of(g, right, key))
-            .or_else(|| Some(right.clone()))
-    };
-    for m in marked.iter_mut().filter(|m| m.verdict == Verdict::Wrong) {
-        let (Some(given), Some(right)) = (&m.given_value, &m.expected) else {
-            continue;
-        };
-        let ft = follow::recompute(&inputs, &m.key, &own, result);
-        if ft.is_some_and(|ft| follows_through(given, &ft, right, settings, &m.key)) {
-            m.verdict = Verdict::Correct;
-            m.code = FOLLOW_THROUGH;
-            m.note = crate::msg::Msg::FollowThrough;
-        }
-    }
+    Ok(Marker::new(p, settings)?.mark(who, answers, from_text))
 }
 
 /// The code of an answer credited by follow-through.
 pub const FOLLOW_THROUGH: &str = "correct.follow_through";
 
-/// Whether `given`, wrong against grafika's `right`, is right against the
-/// value `ft` computed from the student's own earlier answers. The earlier
-/// answers are rounded, so a rounded value carried forward is accepted, and
-/// too few significant figures are not held against it.
-pub fn follows_through(
-    given: &toml::Value,
-    ft: &Val,
-    right: &Val,
-    settings: &Settings,
-    key: &str,
-) -> bool {
-    differs(ft, right)
-        && matches!(
-            judge(given, ft, settings, key, true).verdict,
-            Verdict::Correct | Verdict::TooCoarse
-        )
-}
-
-/// Whether a mistake, whose results are `variants`, reproduces the answer
-/// `given` to `key`: the mistake changes the value (grafika's is `right`)
-/// and the answer is then what the mistake gives, to as many figures as
-/// the marking asks (an answer too coarse to be marked correct is too
-/// coarse to tell one mistake from another: `0.1` would match many).
-pub fn reproduces(
-    variants: &[Tree],
-    key: &str,
-    given: &toml::Value,
-    right: &Val,
-    settings: &Settings,
-) -> bool {
-    variants.iter().any(|tree| {
-        lookup(tree, key).is_some_and(|mv| {
-            differs(mv, right) && judge(given, mv, settings, key, true).verdict == Verdict::Correct
-        })
-    })
-}
-
-/// Runs every mistake of the catalog once and names, for each wrong
-/// answer, the mistakes that reproduce it; a mistake is listed once with
-/// all the answers it explains.
-fn diagnose_all(
-    p: &ProblemIn,
-    answers: &[(String, toml::Value)],
-    marked: &mut [Marked],
-    settings: &Settings,
-) -> Vec<Diagnosis> {
-    let wrong: Vec<usize> = (0..marked.len())
-        .filter(|&i| marked[i].verdict == Verdict::Wrong)
-        .collect();
-    if wrong.is_empty() {
-        return vec![];
+/// An answer's text as shown: a long one cut in the middle (at most 200
+/// characters, the middle replaced by `…`).
+pub(crate) fn shown_cut(s: &str) -> String {
+    let n = s.chars().count();
+    if n <= 200 {
+        return s.to_string();
     }
-    let mut out: Vec<Diagnosis> = Vec::new();
-    for m in diagnose::CATALOG {
-        let Some(variants) = (m.apply)(p) else {
-            continue;
-        };
-        let mut explained: Vec<String> = Vec::new();
-        for &i in &wrong {
-            let key = &marked[i].key;
-            let Some((_, given)) = answers.iter().find(|(k, _)| k == key) else {
-                continue;
-            };
-            let Some(right) = &marked[i].expected else {
-                continue;
-            };
-            if reproduces(&variants, key, given, right, settings) {
-                marked[i].diagnosis.push(m.code);
-                explained.push(key.clone());
-            }
-        }
-        if !explained.is_empty() {
-            out.push(Diagnosis {
-                mistake: m,
-                keys: explained,
-                also: vec![],
-            });
-        }
-    }
-    // The mistakes that explain the most answers first; one whose answers
-    // are all explained by an earlier one is named with it, not again.
-    out.sort_by_key(|d| std::cmp::Reverse(d.keys.len()));
-    let mut folded: Vec<Diagnosis> = Vec::new();
-    for d in out {
-        match folded
-            .iter_mut()
-            .find(|f| d.keys.iter().all(|k| f.keys.contains(k)))
-        {
-            Some(f) => f.also.push(d.mistake),
-            None => folded.push(d),
-        }
-    }
-    folded
-}
-
-/// Whether two values differ (numbers by more than a relative 1e-9).
-fn differs(a: &Val, b: &Val) -> bool {
-    match (a, b) {
-        (Val::Num(x), Val::Num(y)) => {
-            (x.value - y.value).abs() > 1e-9 * x.value.abs().max(y.value.abs()).max(1e-300)
-        }
-        (Val::List(xs), Val::List(ys)) => {
-            xs.len() != ys.len() || xs.iter().zip(ys).any(|(x, y)| differs(x, y))
-        }
-        (Val::Map(xs), Val::Map(ys)) => {
-            xs.len() != ys.len() || xs.iter().zip(ys).any(|((_, x), (_, y))| differs(x, y))
-        }
-        _ => a != b,
-    }
+    let head: String = s.chars().take(100).collect();
+    let tail: String = s.chars().skip(n - 99).collect();
+    format!("{head}…{tail}")
 }
 
 /// A TOML answer as the student wrote it.

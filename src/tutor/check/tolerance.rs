@@ -43,6 +43,12 @@ pub fn for_key(key: &str, x: f64, scale: f64, rel: f64) -> f64 {
     }
 }
 
+/// Whether two numbers, each with its absolute tolerance, can be told
+/// apart: their tolerance intervals [x − t, x + t] do not meet.
+pub fn apart(x: f64, tx: f64, y: f64, ty: f64) -> bool {
+    (x - y).abs() > tx + ty
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

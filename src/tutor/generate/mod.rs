@@ -81,6 +81,18 @@ pub struct Generated {
     pub keys: Vec<String>,
 }
 
+/// The name of problem i (1-based) of an exam, as its files are named
+/// (`problem-01.toml`, `problem-01.key.toml`) and as a class's answer files
+/// name its table (`[problem-01]`).
+pub fn problem_name(i: usize) -> String {
+    format!("problem-{i:02}")
+}
+
+/// The folder of variant v (1-based) of an exam: `variant-01`.
+pub fn variant_name(v: usize) -> String {
+    format!("variant-{v:02}")
+}
+
 /// The seed of variant v (variant 0 of seed S is S itself).
 pub fn variant_seed(seed: u64, v: u32) -> u64 {
     if v == 0 {

@@ -1,19 +1,131 @@
-//! An exam as quiz blanks: every value a student types (each number of a
-//! vector, matrix or segment, each outcode and status), with the key's value,
-//! its absolute tolerance, and the mistaken values the catalog predicts with
-//! the mistakes that give them. The Moodle XML and GIFT writers
-//! (`report::moodle`, `report::gift`) only put these into words.
+//! An exam as a quiz: every value a student types (each number of a
+//! vector, matrix or segment, each outcode and status) is a blank, with the
+//! key's value as the quiz writes it, its absolute tolerance, and the
+//! mistaken values the catalog predicts with the mistakes that give them.
+//! Everything is computed here; the Moodle XML and GIFT writers
+//! (`report::moodle`, `report::gift`) only put it into words.
 //!
 //! Tolerance: a quiz system marks a number right when it lies within an
-//! absolute tolerance t of the key's value x; t is the one rule `check` uses
-//! ([`crate::tutor::check::tolerance`]).
+//! absolute tolerance of the value written; t is the one rule `check` uses
+//! ([`crate::tutor::check::tolerance`]: r·|x|, a zero by its answer's
+//! largest magnitude, a pixel position at least half a pixel).
+//!
+//! What a student is shown as the correct answer is the value written, so
+//! the key is written to the significant figures the question asks for
+//! plus one ([`sig_figs`] + 1: 5 at 0.1 %), a rounding a of the exact x, and
+//! its tolerance widened by |a − x| so that the quiz accepts every number
+//! `check` accepts: [x − t, x + t] ⊆ [a − t', a + t'] with t' = t + |a − x|
+//! (at 0.1 %, |a − x| ≤ 5·10⁻⁵·|x|, a twentieth of t). Mistaken values are
+//! written the same way.
+//!
+//! A mistaken value a student could not reasonably type is left out of its
+//! blank: one that is not finite, or more than [`ABSURD`] times the key's
+//! magnitude (for a zero key, its answer's largest magnitude): `tan 90°`
+//! for a window at fovy = 90° gives 1.6·10¹⁶.
 
-use super::Generated;
+use super::{Generated, Topic};
 use crate::input::problem::ProblemIn;
 use crate::stages::trace::Val;
 use crate::tutor::check::tolerance;
 use crate::tutor::diagnose::{Mistake, Tree, CATALOG};
 use crate::tutor::solve::lookup;
+
+/// A mistaken value more than this many times the key's magnitude is left
+/// out of its blank.
+pub const ABSURD: f64 = 1e6;
+
+/// A quiz: the problems of every variant with their blanks.
+pub struct Quiz {
+    /// `variants[v][i]`: problem i of variant v; problem i is on
+    /// `topics[i % topics.len()]`.
+    pub variants: Vec<Vec<Question>>,
+    /// The topics, in the order the problems cycle through them.
+    pub topics: Vec<Topic>,
+    /// The relative tolerance r (> 0).
+    pub rel: f64,
+    /// The significant figures a student is asked to type ([`sig_figs`]).
+    pub figures: u32,
+}
+
+/// One question: a generated problem and its blanks.
+pub struct Question {
+    /// The problem, its solution and the keys asked.
+    pub problem: Generated,
+    /// The answers asked, each with its blanks.
+    pub asked: Vec<Asked>,
+    /// What kinds of blanks it has (for the instruction line).
+    pub typing: Typing,
+}
+
+/// What kinds of blanks a question has, for its instruction line: the
+/// rules of typing a pixel, an outcode or a status are stated only where
+/// they are asked.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Typing {
+    /// Pixel positions.
+    pub pixels: bool,
+    /// Outcodes.
+    pub outcodes: bool,
+    /// A clipping status (and a segment that may be none).
+    pub status: bool,
+}
+
+impl Typing {
+    /// The kinds of the blanks asked.
+    pub fn of(asked: &[Asked]) -> Typing {
+        let any = |f: &dyn Fn(&Asked) -> bool| asked.iter().any(f);
+        Typing {
+            pixels: any(&|a| a.blanks.iter().any(|b| b.pixel)),
+            outcodes: any(&|a| a.key.starts_with("clip.code")),
+            status: any(&|a| a.key == "clip.status"),
+        }
+    }
+}
+
+impl Quiz {
+    /// The quiz of the variants' exams (`exams[v][i]`) with relative
+    /// tolerance `rel` (> 0).
+    pub fn new(exams: Vec<Vec<Generated>>, topics: &[Topic], rel: f64) -> Quiz {
+        let figures = sig_figs(rel);
+        let variants = exams
+            .into_iter()
+            .map(|exam| {
+                exam.into_iter()
+                    .map(|g| {
+                        let asked = blanks(&g, rel, figures + 1);
+                        Question {
+                            typing: Typing::of(&asked),
+                            asked,
+                            problem: g,
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        Quiz {
+            variants,
+            topics: topics.to_vec(),
+            rel,
+            figures,
+        }
+    }
+
+    /// The number of problems of each variant.
+    pub fn count(&self) -> usize {
+        self.variants.first().map_or(0, Vec::len)
+    }
+
+    /// The topic of problem i (from 0).
+    pub fn topic(&self, i: usize) -> Topic {
+        self.topics[i % self.topics.len().max(1)]
+    }
+}
+
+/// The significant figures that keep a rounded decimal within the relative
+/// tolerance r: n figures err by at most 5·10⁻ⁿ relatively, so n = ⌈log₁₀(5/r)⌉.
+pub fn sig_figs(rel: f64) -> u32 {
+    (5.0 / rel).log10().ceil().clamp(1.0, 15.0) as u32
+}
 
 /// What a student types into one blank.
 #[derive(Clone, Debug, PartialEq)]
@@ -27,7 +139,7 @@ pub enum Typed {
 /// A wrong value and the known mistakes that give it.
 #[derive(Clone, Debug)]
 pub struct Wrong {
-    /// The mistaken value.
+    /// The mistaken value, as written (see the module docs).
     pub value: Typed,
     /// Its absolute tolerance (0 for text).
     pub tolerance: f64,
@@ -38,10 +150,12 @@ pub struct Wrong {
 /// One blank: the key's value, its tolerance, the known wrong values.
 #[derive(Clone, Debug)]
 pub struct Blank {
-    /// The key's value.
+    /// The key's value, as written (see the module docs).
     pub value: Typed,
     /// Its absolute tolerance (0 for text).
     pub tolerance: f64,
+    /// Whether it is a pixel position (half a pixel is within tolerance).
+    pub pixel: bool,
     /// The mistaken values, each apart from the key's and from each other.
     pub wrong: Vec<Wrong>,
 }
@@ -58,14 +172,15 @@ pub struct Asked {
     pub blanks: Vec<Blank>,
 }
 
-/// The blanks of a generated problem with relative tolerance `rel` (> 0).
-pub fn blanks(g: &Generated, rel: f64) -> Vec<Asked> {
+/// The blanks of a generated problem with relative tolerance `rel` (> 0),
+/// numbers written to `figs` significant figures.
+pub fn blanks(g: &Generated, rel: f64, figs: u32) -> Vec<Asked> {
     let trees = mistaken_trees(&g.problem);
     g.keys
         .iter()
         .filter_map(|key| {
             let value = lookup(&g.report.result, key)?.clone();
-            let blanks = key_blanks(key, &value, &trees, rel);
+            let blanks = key_blanks(key, &value, &trees, rel, figs);
             Some(Asked {
                 key: key.clone(),
                 value,
@@ -86,16 +201,27 @@ fn mistaken_trees(p: &ProblemIn) -> Vec<(&'static Mistake, Tree)> {
 
 /// The blanks of one answer: the key's leaves with their tolerances, and at
 /// each leaf the mistaken values that differ from it (beyond both
-/// tolerances: the intervals do not overlap), merged when two mistakes give
-/// the same value.
-fn key_blanks(key: &str, value: &Val, trees: &[(&'static Mistake, Tree)], rel: f64) -> Vec<Blank> {
+/// tolerances: the intervals do not overlap) and are not absurd, merged
+/// when two mistakes give the same value.
+fn key_blanks(
+    key: &str,
+    value: &Val,
+    trees: &[(&'static Mistake, Tree)],
+    rel: f64,
+    figs: u32,
+) -> Vec<Blank> {
     let right = typed_leaves(key, value, rel);
+    let scale = magnitude(&right);
     let mut blanks: Vec<Blank> = right
         .into_iter()
-        .map(|(value, tolerance)| Blank {
-            value,
-            tolerance,
-            wrong: Vec::new(),
+        .map(|(value, tolerance)| {
+            let (value, tolerance) = written(value, tolerance, figs);
+            Blank {
+                value,
+                tolerance,
+                pixel: tolerance::is_pixel(key),
+                wrong: Vec::new(),
+            }
         })
         .collect();
     for (m, t) in trees {
@@ -105,12 +231,68 @@ fn key_blanks(key: &str, value: &Val, trees: &[(&'static Mistake, Tree)], rel: f
             continue; // another shape (a rejected segment): not comparable
         }
         for (b, (w, wt)) in blanks.iter_mut().zip(leaves) {
+            if absurd(&b.value, &w, scale) {
+                continue;
+            }
+            let (w, wt) = written(w, wt, figs);
             if apart(&b.value, b.tolerance, &w, wt) {
                 add_wrong(b, w, wt, m);
             }
         }
     }
     blanks
+}
+
+/// The largest magnitude among an answer's numbers.
+fn magnitude(leaves: &[(Typed, f64)]) -> f64 {
+    leaves
+        .iter()
+        .filter_map(|(l, _)| match l {
+            Typed::Num(x) => Some(x.abs()),
+            Typed::Text(_) => None,
+        })
+        .fold(0.0, f64::max)
+}
+
+/// Whether a mistaken value is no number a student would type: not finite,
+/// or more than [`ABSURD`] times the key's magnitude (a zero key's: its
+/// answer's largest, `scale`; 1 when the whole answer is zero).
+fn absurd(key: &Typed, w: &Typed, scale: f64) -> bool {
+    match (key, w) {
+        (Typed::Num(x), Typed::Num(y)) => {
+            let m = if *x != 0.0 {
+                x.abs()
+            } else if scale > 0.0 {
+                scale
+            } else {
+                1.0
+            };
+            !y.is_finite() || y.abs() > ABSURD * m
+        }
+        _ => false,
+    }
+}
+
+/// A value as the quiz writes it: a number rounded to `figs` significant
+/// figures, its tolerance widened by the rounding (see the module docs).
+fn written(v: Typed, t: f64, figs: u32) -> (Typed, f64) {
+    match v {
+        Typed::Num(x) => {
+            let a = round_sig(x, figs);
+            (Typed::Num(a), t + (a - x).abs())
+        }
+        text => (text, t),
+    }
+}
+
+/// x rounded to n significant figures (through its decimal form, so the
+/// same on every platform).
+pub fn round_sig(x: f64, n: u32) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    let digits = n.saturating_sub(1) as usize;
+    format!("{x:.digits$e}").parse().unwrap_or(x)
 }
 
 /// Adds a mistaken value to a blank, or the mistake to the wrong value it
@@ -134,41 +316,36 @@ fn add_wrong(b: &mut Blank, value: Typed, tolerance: f64, m: &'static Mistake) {
     }
 }
 
-/// Whether two values can be told apart: numbers whose tolerance intervals
-/// [x − t, x + t] do not meet, or different texts.
+/// Whether two values can be told apart: numbers by the one tolerance rule
+/// ([`tolerance::apart`]: their intervals [x − t, x + t] do not meet), or
+/// different texts.
 fn apart(a: &Typed, ta: f64, b: &Typed, tb: f64) -> bool {
     match (a, b) {
-        (Typed::Num(x), Typed::Num(y)) => (x - y).abs() > ta + tb,
+        (Typed::Num(x), Typed::Num(y)) => tolerance::apart(*x, ta, *y, tb),
         (Typed::Text(x), Typed::Text(y)) => x != y,
         _ => true,
     }
 }
 
-/// The leaves of a value, depth first, each with its absolute tolerance (see
-/// the module docs); a non-finite number is no leaf a student could type, so
-/// a value with one has no leaves.
+/// The leaves of a value, depth first, each with its absolute tolerance
+/// (see the module docs); a non-finite number keeps a tolerance of 0 (it is
+/// left out as absurd).
 pub fn typed_leaves(key: &str, v: &Val, rel: f64) -> Vec<(Typed, f64)> {
     let mut leaves = Vec::new();
     collect(v, &mut leaves);
-    if leaves
-        .iter()
-        .any(|l| matches!(l, Typed::Num(x) if !x.is_finite()))
-    {
-        return Vec::new();
-    }
     let scale = leaves
         .iter()
         .filter_map(|l| match l {
-            Typed::Num(x) => Some(x.abs()),
-            Typed::Text(_) => None,
+            Typed::Num(x) if x.is_finite() => Some(x.abs()),
+            _ => None,
         })
         .fold(0.0, f64::max);
     leaves
         .into_iter()
         .map(|l| {
             let t = match &l {
-                Typed::Num(x) => tolerance::for_key(key, *x, scale, rel),
-                Typed::Text(_) => 0.0,
+                Typed::Num(x) if x.is_finite() => tolerance::for_key(key, *x, scale, rel),
+                _ => 0.0,
             };
             (l, t)
         })
@@ -202,5 +379,37 @@ mod tests {
             &Typed::Text("b".into()),
             0.0
         ));
+    }
+
+    #[test]
+    fn four_figures_for_a_tenth_of_a_percent() {
+        assert_eq!(sig_figs(1e-3), 4);
+        assert_eq!(sig_figs(1e-2), 3);
+        assert_eq!(sig_figs(5e-3), 3);
+    }
+
+    #[test]
+    fn a_written_key_covers_the_check_interval() {
+        // (√2 − 1)/2 = 0.20710678…: 5 figures 0.20711, off by 3.2e-6
+        let x = (2f64.sqrt() - 1.0) / 2.0;
+        let (a, t) = written(Typed::Num(x), 1e-3 * x, 5);
+        assert_eq!(a, Typed::Num(0.20711));
+        assert!(0.20711 - t <= x - 1e-3 * x && 0.20711 + t >= x + 1e-3 * x);
+        assert!(t < 1.02e-3 * x);
+        assert_eq!(round_sig(-133.3249, 5), -133.32);
+        assert_eq!(round_sig(0.0, 5), 0.0);
+    }
+
+    #[test]
+    fn absurd_values_are_those_no_student_types() {
+        let k = Typed::Num(0.5);
+        // tan 90° in floating point: 1.633e16
+        assert!(absurd(&k, &Typed::Num(0.5 * 1.633e16), 0.5));
+        assert!(absurd(&k, &Typed::Num(f64::INFINITY), 0.5));
+        assert!(absurd(&k, &Typed::Num(f64::NAN), 0.5));
+        assert!(!absurd(&k, &Typed::Num(-4e5), 0.5));
+        // a zero key goes by its answer's largest magnitude
+        assert!(absurd(&Typed::Num(0.0), &Typed::Num(2e6), 1.0));
+        assert!(!absurd(&Typed::Num(0.0), &Typed::Num(2e5), 1.0));
     }
 }

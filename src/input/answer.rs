@@ -1,0 +1,468 @@
+//! An answer as a student writes it, read once for `check`'s answer files
+//! and `practice`'s prompts alike: a number, a vector, a matrix, a segment,
+//! an outcode or a clipping status, in every form the text and its students
+//! use.
+//!
+//! - A number is an expression of docs/spec.md §2: `-6/sqrt(2)`, `3√2`,
+//!   `(1/2)sqrt(2)`, `−0.7071`, a decimal comma `0,0414`.
+//! - A vector is a TOML array, or text: `(a, b, c)`, `[a, b, c]`, bare
+//!   `a, b, c`; with decimal commas its parts are separated by `;`
+//!   (`(0,7071; 0; 0,7071)`). A part may end in any bracket
+//!   (`1/sqrt(2), 0, -1/sqrt(2)`).
+//! - A matrix or a segment is a list of vectors: a TOML array of rows, or
+//!   text with the rows (ends) separated by `;` (`1, 0; 0, 1`,
+//!   `(3, 8/3, 11/6); (1, 4, 3/2)`) or each in brackets
+//!   (`(3, 8/3, 11/6), (1, 4, 3/2)`); `none` when nothing is left.
+//! - An outcode is up to six binary digits, spaces ignored (`001 000`).
+//! - A status is a word in either language, any case: `clipped`, `di-clip`,
+//!   `accepted`, `diterima`, `rejected`, `ditolak` (or grafika's own
+//!   `clipped (di-clip)`).
+//!
+//! The shape expected (a value like grafika's answer) says how deep the
+//! lists go, so that `;` separates a vector's parts but a matrix's rows.
+//! Reading is one pass over the text, linear in its length. An answer that
+//! cannot be read gets the part at fault, the column in the whole answer
+//! and what was expected there.
+
+use crate::msg::{Msg, NumErr};
+use crate::num::expr::{components, Part};
+use crate::num::{parse_expr, Expr};
+use crate::stages::trace::Val;
+
+/// An answer as read.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Read {
+    /// A number.
+    Num(Number),
+    /// A vector, a matrix (rows), a segment (its ends).
+    List(Vec<Read>),
+    /// An outcode (six binary digits) or a status (`accepted`, `rejected`,
+    /// `clipped`), in grafika's spelling.
+    Word(String),
+    /// Nothing is left (`none`, `[]`): the answer for a rejected segment.
+    None,
+}
+
+impl Read {
+    /// The answer as a value (numbers as doubles), to set beside grafika's.
+    pub fn value(&self) -> Val {
+        match self {
+            Read::Num(n) => Val::num(&n.value),
+            Read::List(items) => Val::List(items.iter().map(Read::value).collect()),
+            Read::Word(w) => Val::text(w.clone()),
+            Read::None => Val::Null,
+        }
+    }
+}
+
+/// One number as read.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Number {
+    /// The expression.
+    pub expr: Expr,
+    /// Its value as a double.
+    pub value: f64,
+    /// For a plain decimal or whole number (`0.041`, `-124`): the exponent
+    /// of its last written digit (−3 for 0.041, 0 for 124); None for an
+    /// expression, which is taken as exact.
+    pub last_digit: Option<i32>,
+}
+
+impl Number {
+    /// Whether it is written as a decimal with a point (or comma): its
+    /// tolerance is its precision.
+    pub fn is_decimal(&self) -> bool {
+        self.last_digit.is_some_and(|d| d < 0)
+    }
+}
+
+/// Reads an answer (a TOML value of an answer file, or a line typed, as a
+/// string) against a value shaped like `like`: a number, a list (of lists),
+/// a code or status word, or none. The error is the note for the student:
+/// which part, at which column, and what was expected there.
+pub fn read(given: &toml::Value, like: &Val) -> Result<Read, Msg> {
+    read_at(given, like, 0)
+}
+
+/// How deep lists of `like` go (0 for a number or a word).
+fn depth(like: &Val) -> usize {
+    match like {
+        Val::List(items) => 1 + items.iter().map(depth).max().unwrap_or(0),
+        _ => 0,
+    }
+}
+
+fn read_at(given: &toml::Value, like: &Val, offset: usize) -> Result<Read, Msg> {
+    match like {
+        Val::Num(_) => number_value(given, offset).map(Read::Num),
+        Val::Text(t) if is_code(t) => code(&scalar_text(given).unwrap_or_default()),
+        Val::Text(_) => status(&scalar_text(given).unwrap_or_default()),
+        Val::Null => match given {
+            toml::Value::Array(a) if a.is_empty() => Ok(Read::None),
+            _ if is_none(given) => Ok(Read::None),
+            // a segment where none is left: read as a segment, to be wrong
+            _ => {
+                let end = Val::List(vec![Val::num(&0.0); 3]);
+                list(given, &Val::List(vec![end.clone(), end]), offset)
+            }
+        },
+        Val::List(items) if is_none(given) && items.iter().all(|x| depth(x) >= 1) => Ok(Read::None),
+        Val::List(_) => list(given, like, offset),
+        Val::Bool(_) | Val::Map(_) | Val::Said(_) => Err(Msg::SeveralAnswers),
+    }
+}
+
+/// Whether a text value is an outcode (six binary digits).
+fn is_code(t: &str) -> bool {
+    t.len() == 6 && t.chars().all(|c| c == '0' || c == '1')
+}
+
+fn is_none(given: &toml::Value) -> bool {
+    matches!(given, toml::Value::String(s)
+        if matches!(s.trim().to_lowercase().as_str(), "none" | "null" | "tidak ada" | "-" | "—"))
+}
+
+/// The text of a scalar TOML value.
+fn scalar_text(v: &toml::Value) -> Option<String> {
+    match v {
+        toml::Value::String(s) => Some(s.clone()),
+        toml::Value::Integer(i) => Some(i.to_string()),
+        toml::Value::Float(f) => Some(format!("{f}")),
+        toml::Value::Boolean(b) => Some(b.to_string()),
+        _ => None,
+    }
+}
+
+/// A number from a TOML value; `offset` is where its text starts in the
+/// whole answer (for the column of an error).
+fn number_value(given: &toml::Value, offset: usize) -> Result<Number, Msg> {
+    match scalar_text(given) {
+        Some(t) => number(&t).map_err(|e| Msg::Unreadable(shift(e, offset))),
+        None => Err(Msg::ExpectOne),
+    }
+}
+
+/// Reads one number: an expression with an optional decimal comma.
+pub fn number(text: &str) -> Result<Number, NumErr> {
+    let expr = parse_expr(text)?;
+    let value = expr.eval::<f64>()?;
+    Ok(Number {
+        last_digit: last_digit(&expr),
+        expr,
+        value,
+    })
+}
+
+/// The exponent of the last written digit of a plain decimal or whole
+/// number (`0.041` → −3, `1.50e2` → 0, `124` → 0), through one sign.
+fn last_digit(e: &Expr) -> Option<i32> {
+    match e {
+        Expr::Neg(x) => last_digit(x),
+        Expr::Lit(s) => {
+            let (mant, exp) = match s.find(['e', 'E']) {
+                Some(i) => (&s[..i], s[i + 1..].parse::<i32>().ok()?),
+                None => (s.as_str(), 0),
+            };
+            let decimals = mant.split_once('.').map_or(0, |(_, f)| f.len() as i32);
+            Some(exp - decimals)
+        }
+        _ => None,
+    }
+}
+
+/// Moves the column of a reader's error by `by` characters (the part's
+/// place in the whole answer).
+fn shift(e: NumErr, by: usize) -> NumErr {
+    match e {
+        NumErr::Expected(w, col, found) => NumErr::Expected(w, col + by, found),
+        NumErr::TooDeep(max, col) => NumErr::TooDeep(max, col + by),
+        NumErr::TooManyOps(max, col) => NumErr::TooManyOps(max, col + by),
+        other => other,
+    }
+}
+
+/// A list against `like` (a list): a TOML array element by element, or
+/// text split into its parts ([`components`]); each part read against the
+/// element of `like` it stands for. A wrong count is left to the judge
+/// (the parts are still read, so that junk in one is named); at most
+/// [`MAX_BAD_PARTS`] unreadable parts are named, so a line of thousands of
+/// commas gets a short note.
+const MAX_BAD_PARTS: usize = 3;
+
+fn list(given: &toml::Value, like: &Val, offset: usize) -> Result<Read, Msg> {
+    let items: &[Val] = match like {
+        Val::List(items) => items,
+        _ => &[],
+    };
+    let element = |i: usize| items.get(i).or(items.last()).unwrap_or(&Val::Null);
+    let parts: Vec<(toml::Value, usize)> = match given {
+        toml::Value::Array(a) => a.iter().map(|v| (v.clone(), offset)).collect(),
+        toml::Value::String(t) => text_parts(t, items)
+            .into_iter()
+            .map(|p| (toml::Value::String(p.text.to_string()), offset + p.at))
+            .collect(),
+        _ => return Err(Msg::ExpectList(items.len())),
+    };
+    let mut read = Vec::with_capacity(parts.len());
+    let mut bad = Vec::new();
+    for (i, (part, at)) in parts.iter().enumerate() {
+        let like_i = element(i);
+        let r = if depth(like_i) == 0
+            && matches!(part, toml::Value::String(s) if s.trim().is_empty())
+        {
+            Err(Msg::Unreadable(NumErr::Empty))
+        } else {
+            read_at(part, like_i, *at)
+        };
+        match r {
+            Ok(x) => read.push(x),
+            Err(m) => bad.push((label(i, items.len(), depth(like) > 1), m)),
+        }
+        if bad.len() == MAX_BAD_PARTS {
+            break;
+        }
+    }
+    if bad.is_empty() {
+        Ok(Read::List(read))
+    } else {
+        Err(Msg::Parts(bad))
+    }
+}
+
+/// The parts of a list written as text ([`components`]). A matrix or a
+/// segment written flat, its numbers in a row without `;` or brackets
+/// around its rows, is cut into rows of the length expected.
+fn text_parts<'a>(t: &'a str, items: &[Val]) -> Vec<Part<'a>> {
+    let parts = components(t);
+    let row = match items.first() {
+        Some(Val::List(r))
+            if items
+                .iter()
+                .all(|x| matches!(x, Val::List(y) if y.len() == r.len())) =>
+        {
+            r.len()
+        }
+        _ => return parts,
+    };
+    if row == 0 || parts.len() != items.len() * row || parts.len() == items.len() {
+        return parts;
+    }
+    parts
+        .chunks(row)
+        .map(|c| {
+            let (first, last) = (c[0], c[c.len() - 1]);
+            let start = first.text.as_ptr() as usize - t.as_ptr() as usize;
+            let end = last.text.as_ptr() as usize - t.as_ptr() as usize + last.text.len();
+            Part {
+                text: &t[start..end],
+                at: first.at,
+            }
+        })
+        .collect()
+}
+
+/// A part's name in a note: x, y, z of a point; its number otherwise
+/// (`2.z` is the z of the second point of a segment or row).
+fn label(i: usize, n: usize, nested: bool) -> String {
+    if !nested && n <= 3 {
+        ["x", "y", "z"][i.min(2)].to_string()
+    } else {
+        format!("{}", i + 1)
+    }
+}
+
+/// An outcode: up to six binary digits, spaces ignored, padded on the left.
+fn code(text: &str) -> Result<Read, Msg> {
+    let digits: String = text.chars().filter(|c| !c.is_whitespace()).collect();
+    let binary = !digits.is_empty() && digits.chars().all(|c| c == '0' || c == '1');
+    if binary && digits.len() <= 6 {
+        Ok(Read::Word(format!("{digits:0>6}")))
+    } else {
+        Err(Msg::NotAnOutcode(text.trim().to_string()))
+    }
+}
+
+/// A clipping status in either language, any case: `clipped (di-clip)`
+/// names one status twice and is read as it.
+fn status(text: &str) -> Result<Read, Msg> {
+    let t = text.trim().to_lowercase();
+    let words: Vec<&str> = t
+        .split(|c: char| c.is_whitespace() || matches!(c, '(' | ')' | ',' | '/' | '.'))
+        .filter(|w| !w.is_empty())
+        .collect();
+    let named: Vec<&str> = words.iter().filter_map(|w| status_word(w)).collect();
+    match named.first() {
+        Some(first) if named.iter().all(|s| s == first) && named.len() == words.len() => {
+            Ok(Read::Word(first.to_string()))
+        }
+        _ => Err(Msg::NotAStatus(text.trim().to_string())),
+    }
+}
+
+/// A status word, English or Indonesian, as grafika spells the status.
+fn status_word(w: &str) -> Option<&'static str> {
+    Some(match w {
+        "accepted" | "accept" | "diterima" | "terima" => "accepted",
+        "rejected" | "reject" | "ditolak" | "tolak" => "rejected",
+        "clipped" | "clip" | "di-clip" | "diclip" | "dikliping" | "dipotong" | "terpotong" => {
+            "clipped"
+        }
+        _ => return None,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn num(x: f64) -> Val {
+        Val::num(&x)
+    }
+    fn vec3() -> Val {
+        Val::List(vec![num(1.0), num(0.0), num(1.0)])
+    }
+    fn values(r: &Read) -> Vec<f64> {
+        match r {
+            Read::Num(n) => vec![n.value],
+            Read::List(items) => items.iter().flat_map(values).collect(),
+            _ => vec![],
+        }
+    }
+    fn text(s: &str) -> toml::Value {
+        toml::Value::String(s.into())
+    }
+    fn en(m: &Msg) -> String {
+        crate::report::words::words(m, crate::report::lang::Lang::En)
+    }
+
+    #[test]
+    fn every_written_form_of_a_vector() {
+        // 1/√2 = 0.70710678…, written as the text and its students write it
+        let r = std::f64::consts::FRAC_1_SQRT_2;
+        for t in [
+            "(1/sqrt(2), 0, 1/sqrt(2))",
+            "1/sqrt(2), 0, 1/sqrt(2)",
+            "[1/sqrt(2), 0, 1/sqrt(2)]",
+            "(√2/2, 0, √2/2)",
+            "((1/2)sqrt(2), 0, (1/2)√2)",
+            "(0,70710678118654752; 0; 0,70710678118654752)",
+        ] {
+            let got = values(&read(&text(t), &vec3()).unwrap());
+            assert_eq!(got.len(), 3, "{t}");
+            assert!((got[0] - r).abs() < 1e-15 && got[1] == 0.0, "{t}: {got:?}");
+            assert!((got[2] - r).abs() < 1e-15, "{t}: {got:?}");
+        }
+        // the text's A′ = (0, −1, −6/√2) = (0, −1, −3√2), with a unicode minus
+        let got = values(&read(&text("0, −1, −6/√2"), &vec3()).unwrap());
+        assert!((got[2] + 3.0 * 2f64.sqrt()).abs() < 1e-14, "{got:?}");
+        // implicit products: 3√2 and 2sqrt(2)
+        let got = values(&read(&text("3√2, 2sqrt(2), -3*sqrt(2)"), &vec3()).unwrap());
+        assert!((got[0] - got[1] - 2f64.sqrt()).abs() < 1e-14 && got[2] < -4.24);
+    }
+
+    proptest::proptest! {
+        /// A vector reads as the same three numbers in every container and
+        /// with either decimal mark: (a, b, c), [a, b, c], bare a, b, c,
+        /// a TOML array, and a; b; c with decimal commas.
+        #[test]
+        fn a_vector_reads_the_same_in_every_form(
+            parts in proptest::collection::vec((-9999i32..9999, 0u32..4), 3),
+            form in 0usize..6,
+        ) {
+            let want: Vec<f64> = parts.iter().map(|(n, d)| *n as f64 / 10f64.powi(*d as i32)).collect();
+            let dec = |(n, d): &(i32, u32), mark: char| {
+                let s = format!("{:.*}", *d as usize, *n as f64 / 10f64.powi(*d as i32));
+                s.replace('.', &mark.to_string())
+            };
+            let point: Vec<String> = parts.iter().map(|p| dec(p, '.')).collect();
+            let comma: Vec<String> = parts.iter().map(|p| dec(p, ',')).collect();
+            let given = match form {
+                0 => text(&format!("({})", point.join(", "))),
+                1 => text(&format!("[{}]", point.join(","))),
+                2 => text(&point.join(" , ")),
+                3 => toml::Value::Array(point.iter().map(|p| text(p)).collect()),
+                4 => text(&format!("({})", comma.join("; "))),
+                _ => text(&comma.join(";")),
+            };
+            let got = values(&read(&given, &vec3()).unwrap());
+            proptest::prop_assert_eq!(got.len(), 3);
+            for (g, w) in got.iter().zip(&want) {
+                proptest::prop_assert!((g - w).abs() <= 1e-12 * w.abs().max(1.0), "{:?} {:?}", got, want);
+            }
+        }
+    }
+
+    #[test]
+    fn a_matrix_by_rows_and_a_segment_by_ends() {
+        let row = |xs: [f64; 4]| Val::List(xs.iter().map(|x| num(*x)).collect());
+        let m = Val::List(vec![
+            row([1.0; 4]),
+            row([2.0; 4]),
+            row([3.0; 4]),
+            row([4.0; 4]),
+        ]);
+        let t = "1, 0, 0, -3*sqrt(2); 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1";
+        let got = values(&read(&text(t), &m).unwrap());
+        assert_eq!(got.len(), 16);
+        assert!((got[3] + 3.0 * 2f64.sqrt()).abs() < 1e-14);
+        let seg = Val::List(vec![vec3(), vec3()]);
+        for t in [
+            "(3, 8/3, 11/6); (1, 4, 3/2)",
+            "(3, 8/3, 11/6), (1, 4, 3/2)",
+            "[(3; 2,5; 1); (1; 4; 1,5)]",
+        ] {
+            let r = read(&text(t), &seg).unwrap();
+            assert!(
+                matches!(&r, Read::List(ends) if ends.len() == 2),
+                "{t}: {r:?}"
+            );
+        }
+        assert_eq!(read(&text("none"), &seg).unwrap(), Read::None);
+        assert_eq!(read(&text("None"), &Val::Null).unwrap(), Read::None);
+    }
+
+    #[test]
+    fn codes_and_statuses_in_either_language() {
+        let code = Val::text("001000");
+        assert_eq!(
+            read(&text("001 000"), &code).unwrap(),
+            Read::Word("001000".into())
+        );
+        assert_eq!(
+            read(&text("1000"), &code).unwrap(),
+            Read::Word("001000".into())
+        );
+        assert!(read(&text("0012"), &code).is_err());
+        let st = Val::text("clipped");
+        for (t, w) in [
+            ("di-clip", "clipped"),
+            ("Clipped (di-clip)", "clipped"),
+            ("DITOLAK", "rejected"),
+            ("diterima", "accepted"),
+            ("rejected", "rejected"),
+        ] {
+            assert_eq!(read(&text(t), &st).unwrap(), Read::Word(w.into()), "{t}");
+        }
+        assert!(read(&text("clipped (ditolak)"), &st).is_err());
+        assert!(read(&text("maybe"), &st).is_err());
+    }
+
+    #[test]
+    fn an_unreadable_part_is_named_with_its_column_in_the_whole_answer() {
+        // `1/sqrt(2, 0, 1`: the x part `1/sqrt(2` lacks its `)`; the part
+        // starts at column 2 of the answer, the `)` is missing at its column
+        // 9, which is column 10 of the whole answer.
+        let e = read(&text("(1/sqrt(2, 0, 1)"), &vec3()).unwrap_err();
+        let words = en(&e);
+        assert!(
+            words.starts_with("x: ") && words.contains("column 10"),
+            "{words}"
+        );
+        let e = read(&text("1, banana, 0"), &vec3()).unwrap_err();
+        assert!(en(&e).starts_with("y: "), "{}", en(&e));
+        // a decimal number with a comma is one number
+        let n = number("0,0414").unwrap();
+        assert_eq!((n.value, n.last_digit), (0.0414, Some(-4)));
+        assert!(number("1, 5").is_err());
+    }
+}

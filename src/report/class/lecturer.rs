@@ -1,0 +1,197 @@
+//! The lecturer's report of a class (`grafika check … --answers DIR
+//! --report FILE`): which keys the class gets wrong and which keys are
+//! suspect, which mistakes explain it and who made them, the wrong answers
+//! no mistake explains, and the score distribution; for an exam, per
+//! problem and per variant. The numbers are the tutor's
+//! ([`crate::tutor::class::stats`]); here they are only written, as one
+//! HTML page (the histogram as SVG), Markdown, JSON or CSV (one row per
+//! key), in either language. JSON and CSV keys never depend on the
+//! language.
+
+use super::page::document;
+use crate::report::doc::Doc;
+use crate::report::lang::Lang;
+use crate::report::mistakes::mistake_text;
+use crate::report::{exact_json, value_json, Style};
+use crate::tutor::check::Settings;
+use crate::tutor::class::stats::{Flag, Gap, KeyStats, Stats, StepRef, CODES};
+use crate::tutor::class::Class;
+use serde_json::{json, Value};
+
+/// The formats of a report, chosen by the file's extension.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// `.html`: one self-contained page.
+    Html,
+    /// `.md`.
+    Markdown,
+    /// `.json`: the numbers for scripts.
+    Json,
+    /// `.csv`: one row per answer key.
+    Csv,
+}
+
+impl Format {
+    /// The format of an extension (`html`, `htm`, `md`, `json`, `csv`).
+    pub fn from_extension(ext: &str) -> Option<Format> {
+        match ext {
+            "html" | "htm" => Some(Format::Html),
+            "md" => Some(Format::Markdown),
+            "json" => Some(Format::Json),
+            "csv" => Some(Format::Csv),
+            _ => None,
+        }
+    }
+}
+
+/// The report in a format.
+pub fn write(f: Format, class: &Class, stats: &Stats, settings: &Settings, st: &Style) -> String {
+    match f {
+        Format::Json => {
+            serde_json::to_string_pretty(&to_json(class, stats, settings, st.lang))
+                .unwrap_or_default()
+                + "\n"
+        }
+        Format::Csv => to_csv(stats),
+        Format::Html => document(Doc::Html, class, stats, settings, st),
+        Format::Markdown => document(Doc::Markdown, class, stats, settings, st),
+    }
+}
+
+/// A number rounded to 4 decimals for JSON (no float noise in a report).
+fn round4(x: f64) -> f64 {
+    (x * 1e4).round() / 1e4
+}
+
+fn flag_code(f: Flag) -> &'static str {
+    match f {
+        Flag::VeryEasy => "very_easy",
+        Flag::VeryHard => "very_hard",
+        Flag::Negative => "negative",
+    }
+}
+
+fn step_json(s: &Option<StepRef>, lang: Lang) -> Value {
+    s.as_ref().map_or(Value::Null, |s| {
+        json!({ "problem": s.part, "number": s.number, "title": crate::report::words::words(&s.title, lang) })
+    })
+}
+
+/// The report as JSON (docs/spec.md §5): `students`, `keys`, `mistakes`,
+/// `wrong_answers`, `histogram`, and `problems`, `variants`, `not_marked`.
+pub fn to_json(class: &Class, s: &Stats, settings: &Settings, lang: Lang) -> Value {
+    let keys: Vec<Value> = s.keys.iter().map(|k| {
+        let counts: serde_json::Map<String, Value> = k.counts.iter().map(|(c, n)| (c.clone(), json!(n))).collect();
+        json!({
+            "key": k.key, "students": k.students, "facility": round4(k.facility),
+            "discrimination": k.discrimination.map(round4), "point_biserial": k.point_biserial.map(round4),
+            "counts": counts, "flags": k.flags.iter().map(|f| flag_code(*f)).collect::<Vec<_>>(),
+        })
+    }).collect();
+    let mistakes: Vec<Value> = s.mistakes.iter().map(|m| json!({
+        "code": m.mistake.code, "description": mistake_text(m.mistake, lang),
+        "students": m.students, "keys": m.keys,
+        "also": m.also.iter().map(|a| a.code).collect::<Vec<_>>(), "step": step_json(&m.step, lang),
+    })).collect();
+    let wrong: Vec<Value> = s.wrong_answers.iter().map(|w| json!({
+        "key": w.key, "variant": w.variant,
+        "expected": w.expected.as_ref().map(|e| json!({ "decimal": value_json(e), "exact": exact_json(e) })),
+        "values": w.values.iter().map(|v| json!({ "value": v.value, "count": v.students.len(), "students": v.students })).collect::<Vec<_>>(),
+    })).collect();
+    let variants: Vec<Value> = s.variants.iter().map(|v| json!({
+        "variant": v.variant, "students": v.students, "facility": v.facility.map(round4),
+        "problems": v.problems.iter().map(|(name, f, gap)| json!({
+            "problem": name, "facility": f.map(round4),
+            "flag": gap.map(|g| match g { Gap::Harder => "harder", Gap::Easier => "easier" }),
+        })).collect::<Vec<_>>(),
+    })).collect();
+    json!({
+        "command": "check",
+        "report": "class",
+        "title": class.title,
+        "settings": { "tolerance": settings.tolerance, "sig_figs": settings.sig_figs, "follow_through": settings.follow_through },
+        "students": s.students,
+        "keys": keys,
+        "mistakes": mistakes,
+        "wrong_answers": wrong,
+        "histogram": s.histogram.iter().map(|b| json!({ "from": b.from, "to": b.to, "count": b.count })).collect::<Vec<_>>(),
+        "problems": s.problems.iter().map(|p| json!({ "problem": p.name, "title": p.title, "students": p.students, "facility": p.facility.map(round4) })).collect::<Vec<_>>(),
+        "variants": variants,
+        "not_marked": class.sheets.iter().filter_map(|sh| sh.outcome.as_ref().err().map(|e| json!({
+            "student": sh.who, "file": sh.file.display().to_string(),
+            "error": { "field": e.field, "message": crate::report::words::words(&e.message, lang) },
+        }))).collect::<Vec<_>>(),
+    })
+}
+
+/// The report as CSV: one row per key, with its counts by code, facility,
+/// D, r, flags, the mistakes that explain it and how many wrong answers no
+/// mistake explains.
+pub fn to_csv(s: &Stats) -> String {
+    let mut codes: Vec<String> = CODES.iter().map(|c| c.to_string()).collect();
+    for (c, _) in s.keys.iter().flat_map(|k| &k.counts) {
+        if !codes.contains(c) {
+            codes.push(c.clone());
+        }
+    }
+    let mut header: Vec<&str> = vec!["key", "students"];
+    header.extend(codes.iter().map(|c| c.as_str()));
+    header.extend([
+        "facility",
+        "discrimination",
+        "point_biserial",
+        "flags",
+        "mistakes",
+        "unexplained_wrong",
+    ]);
+    let opt = |x: Option<f64>| x.map(|x| round4(x).to_string()).unwrap_or_default();
+    let rows: Vec<Vec<String>> = s
+        .keys
+        .iter()
+        .map(|k| {
+            let mut row = vec![k.key.clone(), k.students.to_string()];
+            row.extend(codes.iter().map(|c| count(k, c).to_string()));
+            row.extend([
+                round4(k.facility).to_string(),
+                opt(k.discrimination),
+                opt(k.point_biserial),
+                k.flags
+                    .iter()
+                    .map(|f| flag_code(*f))
+                    .collect::<Vec<_>>()
+                    .join(" "),
+                explaining(s, &k.key).join(" "),
+                unexplained(s, &k.key).to_string(),
+            ]);
+            row
+        })
+        .collect();
+    crate::report::csv::write(&header, &rows)
+}
+
+/// How many answers to a key got a code.
+pub(super) fn count(k: &KeyStats, code: &str) -> usize {
+    k.counts
+        .iter()
+        .find(|(c, _)| c == code)
+        .map_or(0, |(_, n)| *n)
+}
+
+/// The codes of the mistakes that explain a key.
+fn explaining<'a>(s: &'a Stats, key: &str) -> Vec<&'a str> {
+    s.mistakes
+        .iter()
+        .filter(|m| m.keys.iter().any(|k| k == key))
+        .map(|m| m.mistake.code)
+        .collect()
+}
+
+/// How many wrong answers to a key no mistake explains.
+fn unexplained(s: &Stats, key: &str) -> usize {
+    s.wrong_answers
+        .iter()
+        .filter(|w| w.key == key)
+        .flat_map(|w| &w.values)
+        .map(|v| v.students.len())
+        .sum()
+}

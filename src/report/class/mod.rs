@@ -1,0 +1,258 @@
+//! A class marked by `grafika check --answers DIR`: one row per student as
+//! a text table, a CSV summary and JSON ([`rows`] view), and the lecturer's
+//! report of the class ([`lecturer`]: HTML, Markdown, JSON, CSV).
+
+pub mod histogram;
+pub mod lecturer;
+mod page;
+
+use crate::error::Error;
+use crate::report::check::to_json;
+use crate::report::lang::{cut_message, tr, Lang};
+use crate::tutor::check::{Marking, Verdict};
+use crate::tutor::class::{Class, Note, Sheet, Skip};
+use serde_json::{json, Value};
+
+/// What was done with an unusual answer file, in words.
+pub fn note_words(n: Note, lang: Lang) -> &'static str {
+    match n {
+        Note::Empty => tr(
+            lang,
+            "holds no answers: marked with every answer missing",
+            "tidak berisi jawaban: dinilai dengan semua jawaban kosong",
+        ),
+        Note::NotMarked => tr(
+            lang,
+            "not marked: the file is not a valid answer file (see the error in its row)",
+            "tidak dinilai: berkas ini bukan berkas jawaban yang sah (lihat galat di barisnya)",
+        ),
+    }
+}
+
+/// Why an entry of the answers folder was skipped, in words.
+pub fn skip_words(s: Skip, lang: Lang) -> &'static str {
+    match s {
+        Skip::Subdirectory => tr(
+            lang,
+            "skipped: a subdirectory (its files are not read)",
+            "dilewati: subdirektori (berkas di dalamnya tidak dibaca)",
+        ),
+        Skip::NotToml => tr(
+            lang,
+            "skipped: not a .toml file",
+            "dilewati: bukan berkas .toml",
+        ),
+    }
+}
+
+/// An error as a person reads it: `field: words`, cut when long.
+pub fn said(e: &Error, lang: Lang) -> String {
+    let words = crate::report::words::words(&e.message, lang);
+    cut_message(&format!("{}: {words}", e.field), lang)
+}
+
+/// The codes of the mistakes found in a sheet, space-separated.
+fn mistakes(ms: &[(String, Marking)]) -> String {
+    let mut codes: Vec<&str> = Vec::new();
+    for d in ms.iter().flat_map(|(_, m)| &m.diagnoses) {
+        if !codes.contains(&d.mistake.code) {
+            codes.push(d.mistake.code);
+        }
+    }
+    codes.join(" ")
+}
+
+/// A sheet's counts over all its parts: score, total, correct, too coarse,
+/// wrong, missing, unparseable, follow-through.
+fn counts(ms: &[(String, Marking)]) -> (f64, usize, [usize; 6]) {
+    let sum = |f: &dyn Fn(&Marking) -> usize| ms.iter().map(|(_, m)| f(m)).sum::<usize>();
+    let c = |v: Verdict| sum(&|m: &Marking| m.count(v));
+    (
+        ms.iter().fold(0.0, |s, (_, m)| s + m.score()),
+        sum(&|m: &Marking| m.total()),
+        [
+            c(Verdict::Correct),
+            c(Verdict::TooCoarse),
+            c(Verdict::Wrong),
+            c(Verdict::Missing),
+            c(Verdict::Unparseable),
+            sum(&|m: &Marking| m.follow_through()),
+        ],
+    )
+}
+
+/// The headings of a class's table (`check --answers DIR`), one per column.
+pub fn class_header(lang: Lang) -> Vec<&'static str> {
+    let en = [
+        "student",
+        "score",
+        "correct",
+        "too coarse",
+        "wrong",
+        "missing",
+        "unparseable",
+        "follow-through",
+        "mistakes",
+    ];
+    let id = [
+        "mahasiswa",
+        "nilai",
+        "benar",
+        "terlalu kasar",
+        "salah",
+        "tidak dijawab",
+        "tidak terbaca",
+        "follow-through",
+        "kesalahan konsep",
+    ];
+    match lang {
+        Lang::En => en.to_vec(),
+        Lang::Id => id.to_vec(),
+    }
+}
+
+/// One row per student, then the notes on unusual files and the entries
+/// skipped. An exam's table has the variant after the student.
+pub fn table(class: &Class, lang: Lang) -> String {
+    use comfy_table::{presets, Table};
+    let mut header = class_header(lang);
+    if class.exam {
+        header.insert(1, tr(lang, "variant", "varian"));
+    }
+    let mut t = Table::new();
+    t.load_preset(presets::UTF8_FULL_CONDENSED)
+        .set_header(header);
+    for s in &class.sheets {
+        let mut cells = vec![s.who.clone()];
+        if class.exam {
+            cells.push(s.variant.map(|v| v.to_string()).unwrap_or_default());
+        }
+        match &s.outcome {
+            Ok(ms) => {
+                let (score, total, n) = counts(ms);
+                cells.push(format!("{}/{total}", crate::report::fmt_dec(score, 4)));
+                cells.extend(n.iter().map(|x| x.to_string()));
+                cells.push(mistakes(ms));
+            }
+            Err(e) => {
+                cells.push("—".to_string());
+                cells.extend(std::iter::repeat_n(String::new(), 6));
+                cells.push(format!(
+                    "{}: {}",
+                    tr(lang, "error", "kesalahan"),
+                    said(e, lang)
+                ));
+            }
+        }
+        t.add_row(cells);
+    }
+    let mut out = format!("{}\n{t}\n", class.title);
+    for s in &class.sheets {
+        if let Some(n) = s.note {
+            out.push_str(&format!("{}: {}\n", s.file.display(), note_words(n, lang)));
+        }
+    }
+    for (f, why) in &class.skipped {
+        out.push_str(&format!("{}: {}\n", f.display(), skip_words(*why, lang)));
+    }
+    out
+}
+
+/// The CSV columns (docs/spec.md §5); an exam's CSV has `variant` after `file`.
+pub const CSV_HEADER: [&str; 12] = [
+    "student",
+    "file",
+    "score",
+    "total",
+    "correct",
+    "too_coarse",
+    "wrong",
+    "missing",
+    "unparseable",
+    "follow_through",
+    "mistakes",
+    "error",
+];
+
+/// The CSV summary, one row per sheet (a file that could not be marked:
+/// empty counts and its error), safe to open in a spreadsheet
+/// ([`crate::report::csv`]).
+pub fn csv(sheets: &[Sheet], exam: bool, lang: Lang) -> String {
+    let mut header: Vec<&str> = CSV_HEADER.to_vec();
+    if exam {
+        header.insert(2, "variant");
+    }
+    let rows: Vec<Vec<String>> = sheets
+        .iter()
+        .map(|s| {
+            let mut row = vec![s.who.clone(), s.file.display().to_string()];
+            if exam {
+                row.push(s.variant.map(|v| v.to_string()).unwrap_or_default());
+            }
+            match &s.outcome {
+                Ok(ms) => {
+                    let (score, total, n) = counts(ms);
+                    row.extend([score.to_string(), total.to_string()]);
+                    row.extend(n.iter().map(|x| x.to_string()));
+                    row.extend([mistakes(ms), String::new()]);
+                }
+                Err(e) => {
+                    row.extend(std::iter::repeat_n(String::new(), 9));
+                    row.push(said(e, lang));
+                }
+            }
+            row
+        })
+        .collect();
+    crate::report::csv::write(&header, &rows)
+}
+
+/// The class as JSON: each student's marking (an exam's: each problem's,
+/// under `problems`), or the error of a file that could not be marked, and
+/// the entries skipped.
+pub fn json(class: &Class, lang: Lang) -> Value {
+    json!({
+        "command": "check",
+        "title": class.title,
+        "students": class.sheets.iter().map(|s| sheet_json(s, class.exam, lang)).collect::<Vec<_>>(),
+        "skipped": class.skipped.iter().map(|(f, why)| json!({ "file": f.display().to_string(), "reason": skip_words(*why, lang) })).collect::<Vec<_>>(),
+    })
+}
+
+fn sheet_json(s: &Sheet, exam: bool, lang: Lang) -> Value {
+    let file = s.file.display().to_string();
+    match (&s.outcome, exam) {
+        (Ok(ms), false) if ms.len() == 1 => {
+            let mut j = to_json(&ms[0].1, lang);
+            j["file"] = json!(file);
+            j
+        }
+        (Ok(ms), _) => {
+            let (score, total, _) = counts(ms);
+            let problems: Vec<Value> = ms
+                .iter()
+                .map(|(name, m)| {
+                    let mut j = to_json(m, lang);
+                    j["problem"] = json!(name);
+                    j
+                })
+                .collect();
+            json!({
+                "student": s.who, "file": file, "variant": s.variant,
+                "score": { "points": score, "total": total },
+                "problems": problems,
+            })
+        }
+        (Err(e), _) => {
+            let mut j = json!({
+                "student": s.who,
+                "file": file,
+                "error": { "field": e.field, "message": crate::report::words::words(&e.message, lang) },
+            });
+            if exam {
+                j["variant"] = json!(s.variant);
+            }
+            j
+        }
+    }
+}

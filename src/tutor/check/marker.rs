@@ -1,0 +1,366 @@
+//! A problem ready to mark: grafika's exact results and every catalog
+//! mistake's results, computed once for a whole class (and once per
+//! `practice` session); then, per answer, the order of judgment, and per
+//! sheet, a diagnosis consistent with all of it, and follow-through
+//! computed by the stages.
+//!
+//! One answer is judged so (see [`judge`] for a number):
+//!
+//! 1. read ([`answer::read`]); an answer that cannot be read is
+//!    `unparseable`, with the part, the column and what was expected;
+//! 2. exactly grafika's value: correct;
+//! 3. a catalog mistake's value, exactly or (a decimal) within the
+//!    tolerance: wrong, and that mistake named — never "rounded";
+//! 4. within the tolerance, or rounded to the digits written: correct or
+//!    too coarse;
+//! 5. otherwise wrong, with the mistakes whose values it rounds
+//!    ([`Marker::fitting`] keeps those the rest of the sheet allows).
+
+use super::judge::{apart, judge, matches_closely, Ctx, Judged};
+use super::{default_keys, Settings, Tree, Verdict, FOLLOW_THROUGH};
+use crate::error::Result;
+use crate::input::answer::{self, Read};
+use crate::input::problem::ProblemIn;
+use crate::msg::Msg;
+use crate::num::Real;
+use crate::stages::trace::{Step, Val};
+use crate::tutor::diagnose::{Mistake, CATALOG};
+use crate::tutor::follow::Given;
+use crate::tutor::keys::ordered_keys;
+use crate::tutor::solve::{self, lookup, Hooks};
+use std::cell::RefCell;
+use std::collections::HashMap;
+
+/// A problem ready to mark.
+pub struct Marker {
+    problem: ProblemIn,
+    /// grafika's exact results, with the unit vectors L and N of a
+    /// lighting problem with one light (steps of the solution that
+    /// `practice` asks for).
+    pub result: Tree,
+    /// The worked steps of the solution.
+    pub steps: Vec<Step>,
+    /// The problem's inputs, as `solve --json` gives them.
+    pub input: serde_json::Value,
+    /// The keys in the order of the text's solution.
+    pub order: Vec<String>,
+    /// The keys `check` expects: the problem's `[check] keys`, else
+    /// [`default_keys`].
+    pub keys: Vec<String>,
+    /// How answers are marked.
+    pub settings: Settings,
+    /// Each mistake of the catalog that applies, with its results.
+    variants: Vec<(&'static Mistake, Vec<Tree>)>,
+    /// Exact forms already turned into exact numbers.
+    exact: RefCell<HashMap<String, Option<Real>>>,
+}
+
+/// One answer judged.
+#[derive(Clone, Debug)]
+pub struct Judgement {
+    /// The verdict.
+    pub verdict: Verdict,
+    /// Its stable code.
+    pub code: &'static str,
+    /// How it was judged.
+    pub note: Msg,
+    /// The answer as read (None when it could not be).
+    pub read: Option<Read>,
+    /// The mistakes of the catalog whose value it is (of a wrong answer).
+    pub mistakes: Vec<&'static Mistake>,
+}
+
+impl Marker {
+    /// Solves the problem exactly and runs every mistake of the catalog on it.
+    pub fn new(p: &ProblemIn, settings: Settings) -> Result<Marker> {
+        let report = solve::solve::<Real>(p)?;
+        let mut result = report.result;
+        let keys = p
+            .check
+            .as_ref()
+            .and_then(|c| c.keys.clone())
+            .unwrap_or_else(|| default_keys(&result));
+        if let Some((_, Val::Map(kv))) = result.iter_mut().find(|(k, _)| k == "shade") {
+            // the unit vectors are steps of the solution, not results of
+            // `solve`; with one light there is one of each
+            for name in ["N", "L"] {
+                let mut found = report.steps.iter().filter_map(|s| step_result(s, name));
+                if let (Some(v), None) = (found.next(), found.next()) {
+                    kv.insert(0, (name.to_string(), v));
+                }
+            }
+        }
+        let variants = CATALOG
+            .iter()
+            .filter_map(|m| Some((m, (m.apply)(p)?)))
+            .collect();
+        Ok(Marker {
+            problem: p.clone(),
+            order: ordered_keys(&result),
+            result,
+            steps: report.steps,
+            input: report.input,
+            keys,
+            settings,
+            variants,
+            exact: RefCell::new(HashMap::new()),
+        })
+    }
+
+    /// The problem.
+    pub fn problem(&self) -> &ProblemIn {
+        &self.problem
+    }
+
+    /// An exact form as an exact number (cached: a class writes the same
+    /// forms many times).
+    fn exact_of(&self, text: &str) -> Option<Real> {
+        if let Some(x) = self.exact.borrow().get(text) {
+            return x.clone();
+        }
+        let x = crate::num::parse_expr(text)
+            .ok()
+            .and_then(|e| e.eval::<Real>().ok());
+        self.exact.borrow_mut().insert(text.to_string(), x.clone());
+        x
+    }
+
+    /// Judges `read` against `v` for `key`.
+    fn judged(&self, read: &Read, v: &Val, key: &str, carry: bool) -> Judged {
+        let exact = |t: &str| self.exact_of(t);
+        let ctx = Ctx {
+            settings: &self.settings,
+            key,
+            carry,
+            exact: &exact,
+        };
+        judge(read, v, &ctx)
+    }
+
+    /// The values the catalog's mistakes give for `key` where they differ
+    /// from grafika's `right`.
+    fn mistaken<'a>(
+        &'a self,
+        key: &'a str,
+        right: &'a Val,
+    ) -> impl Iterator<Item = (&'static Mistake, &'a Val)> + 'a {
+        self.variants.iter().flat_map(move |(m, trees)| {
+            trees
+                .iter()
+                .filter_map(move |t| lookup(t, key))
+                .filter(move |v| differs(v, right))
+                .map(move |v| (*m, v))
+        })
+    }
+
+    /// Judges one answer to `key` in the order of judgment (module docs).
+    pub fn judge(&self, key: &str, given: &toml::Value) -> Judgement {
+        let Some(right) = lookup(&self.result, key) else {
+            return judgement(Judged::new(Verdict::Wrong, "wrong", Msg::default()), None);
+        };
+        if matches!(given, toml::Value::String(s) if s.trim().is_empty()) {
+            let j = Judged::new(Verdict::Missing, "missing", Msg::EmptyAnswer);
+            return judgement(j, None);
+        }
+        let read = match answer::read(given, right) {
+            Ok(r) => completed(key, r, right),
+            Err(note) => {
+                return judgement(Judged::new(Verdict::Unparseable, "unparseable", note), None)
+            }
+        };
+        let j = self.judged(&read, right, key, false);
+        if j.code == "correct.exact" {
+            return judgement(j, Some(read));
+        }
+        // a mistake's value itself is wrong, however it rounds (where the
+        // tolerance can tell it from grafika's)
+        let rel = self.settings.tolerance;
+        let mut mistakes: Vec<&'static Mistake> = Vec::new();
+        for (m, v) in self.mistaken(key, right) {
+            if apart(v, right, key, rel)
+                && matches_closely(&read, v, key, rel)
+                && !mistakes.iter().any(|x| x.code == m.code)
+            {
+                mistakes.push(m);
+            }
+        }
+        let j = match (mistakes.is_empty(), j.verdict) {
+            (false, _) => Judged::new(Verdict::Wrong, "wrong", super::judge::expected_note(right)),
+            (true, Verdict::Wrong) => j,
+            (true, _) => return judgement(j, Some(read)),
+        };
+        // a wrong answer: every mistake whose value it rounds
+        for (m, v) in self.mistaken(key, right) {
+            if self.judged(&read, v, key, true).verdict == Verdict::Correct
+                && !mistakes.iter().any(|x| x.code == m.code)
+            {
+                mistakes.push(m);
+            }
+        }
+        Judgement {
+            mistakes,
+            ..judgement(j, Some(read))
+        }
+    }
+
+    /// The mistakes among `candidates` of which one variant gives the
+    /// answer `read` to `key` and changes none of the answers `agreed` (the
+    /// student's answers that agree with grafika's values): a mistake that
+    /// would have made a right answer wrong is not the one made.
+    pub fn fitting(
+        &self,
+        key: &str,
+        read: &Read,
+        candidates: &[&'static Mistake],
+        agreed: &[(&str, &Read)],
+    ) -> Vec<&'static Mistake> {
+        let Some(right) = lookup(&self.result, key) else {
+            return vec![];
+        };
+        let rel = self.settings.tolerance;
+        let gives = |t: &Tree| {
+            lookup(t, key).is_some_and(|v| {
+                differs(v, right)
+                    && (matches_closely(read, v, key, rel)
+                        || self.judged(read, v, key, true).verdict == Verdict::Correct)
+            })
+        };
+        let keeps = |t: &Tree, (k, r): &(&str, &Read)| match (lookup(t, k), lookup(&self.result, k))
+        {
+            (Some(v), Some(rk)) if apart(v, rk, k, rel) => self.judged(r, v, k, true).agrees(),
+            _ => true,
+        };
+        self.variants
+            .iter()
+            .filter(|(m, _)| candidates.iter().any(|c| c.code == m.code))
+            .filter(|(_, trees)| {
+                trees
+                    .iter()
+                    .any(|t| gives(t) && agreed.iter().all(|a| keeps(t, a)))
+            })
+            .map(|(m, _)| *m)
+            .collect()
+    }
+
+    /// The value of `key` that the student's own earlier answers lead to,
+    /// computed by the stages with each earlier key in `own` (the student's
+    /// answer where it was wrong) given in place of grafika's; None when no
+    /// earlier answer changes it.
+    pub fn carried(&self, key: &str, own: &dyn Fn(&str) -> Option<Read>) -> Option<Val> {
+        let pos = self.order.iter().position(|k| k == key)?;
+        let earlier = &self.order[..pos];
+        let givens: HashMap<&str, Given<Real>> = earlier
+            .iter()
+            .filter_map(|k| Some((k.as_str(), given(&own(k)?)?)))
+            .collect();
+        if givens.is_empty() {
+            return None;
+        }
+        let look = |k: &str| givens.get(k).cloned();
+        let hooks = Hooks {
+            given: Some(&look),
+            ..Hooks::default()
+        };
+        let result = solve::solve_with::<Real>(&self.problem, &hooks)
+            .ok()?
+            .result;
+        let v = lookup(&result, key)?;
+        let right = lookup(&self.result, key)?;
+        differs(v, right).then(|| v.clone())
+    }
+
+    /// Whether an answer is right against the value `ft` carried through
+    /// from the student's own answers (rounded values carried forward are
+    /// accepted, and too few figures are not held against it).
+    pub fn follows(&self, read: &Read, ft: &Val, key: &str) -> bool {
+        self.judged(read, ft, key, true).agrees()
+    }
+
+    /// The erratum of `key`, if the problem has one.
+    pub fn erratum(&self, key: &str) -> Option<Msg> {
+        self.problem
+            .errata
+            .iter()
+            .find(|e| e.key == key)
+            .map(|e| e.reason())
+    }
+}
+
+fn judgement(j: Judged, read: Option<Read>) -> Judgement {
+    Judgement {
+        verdict: j.verdict,
+        code: j.code,
+        note: j.note,
+        read,
+        mistakes: vec![],
+    }
+}
+
+/// A projected point written as (xp, yp) takes zp = d from grafika's value.
+fn completed(key: &str, read: Read, right: &Val) -> Read {
+    match (read, right) {
+        (Read::List(mut xy), Val::List(want))
+            if key.starts_with("project.") && xy.len() + 1 == want.len() =>
+        {
+            if let Some(Val::Num(zp)) = want.last() {
+                if let Ok(n) = answer::number(zp.exact.as_deref().unwrap_or(&zp.value.to_string()))
+                {
+                    xy.push(Read::Num(n));
+                }
+            }
+            Read::List(xy)
+        }
+        (read, _) => read,
+    }
+}
+
+/// An answer as a value given to the stages: its numbers, exactly.
+fn given(read: &Read) -> Option<Given<Real>> {
+    fn nums(r: &Read, out: &mut Vec<Real>) -> Option<()> {
+        match r {
+            Read::Num(n) => out.push(n.expr.eval::<Real>().ok()?),
+            Read::List(items) => items.iter().try_for_each(|x| nums(x, out))?,
+            Read::Word(_) | Read::None => return None,
+        }
+        Some(())
+    }
+    match read {
+        Read::Word(w) => Some(Given::Word(w.clone())),
+        Read::None => None,
+        _ => {
+            let mut out = Vec::new();
+            nums(read, &mut out)?;
+            Some(Given::Nums(out))
+        }
+    }
+}
+
+/// The step's result of this name.
+fn step_result(step: &Step, name: &str) -> Option<Val> {
+    step.result
+        .iter()
+        .find(|(n, _)| n == name)
+        .map(|(_, v)| v.clone())
+}
+
+/// Whether two values differ (numbers by more than a relative 1e-9).
+pub(crate) fn differs(a: &Val, b: &Val) -> bool {
+    match (a, b) {
+        (Val::Num(x), Val::Num(y)) => {
+            (x.value - y.value).abs() > 1e-9 * x.value.abs().max(y.value.abs()).max(1e-300)
+        }
+        (Val::List(xs), Val::List(ys)) => {
+            xs.len() != ys.len() || xs.iter().zip(ys).any(|(x, y)| differs(x, y))
+        }
+        (Val::Map(xs), Val::Map(ys)) => {
+            xs.len() != ys.len() || xs.iter().zip(ys).any(|((_, x), (_, y))| differs(x, y))
+        }
+        _ => a != b,
+    }
+}
+
+/// Whether a judged answer agrees with grafika's value itself (correct,
+/// not by follow-through, or too coarse).
+pub fn agrees(verdict: Verdict, code: &str) -> bool {
+    matches!(verdict, Verdict::Correct | Verdict::TooCoarse) && code != FOLLOW_THROUGH
+}

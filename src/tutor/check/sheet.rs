@@ -1,0 +1,193 @@
+//! A whole answer sheet marked: every answer judged ([`Marker::judge`]),
+//! follow-through where asked, and a diagnosis consistent with the whole
+//! sheet: a mistake is named only where it reproduces at least one wrong
+//! answer and changes no answer the student got right; several are ranked
+//! by how many answers they explain.
+
+use super::marker::{agrees, Marker};
+use super::{Diagnosis, Marked, Marking, Verdict, FOLLOW_THROUGH};
+use crate::input::answer::Read;
+use crate::msg::Msg;
+use crate::tutor::solve::lookup;
+
+impl Marker {
+    /// Marks an answer sheet. With `from_text` the answers are the
+    /// source's printed ones: only those keys are marked, and a wrong one
+    /// gets the reason from the file's `[[errata]]`; otherwise the keys
+    /// expected are [`Marker::keys`] plus any other key given.
+    pub fn mark(&self, who: &str, answers: &[(String, toml::Value)], from_text: bool) -> Marking {
+        let keys: Vec<String> = if from_text {
+            answers.iter().map(|(k, _)| k.clone()).collect()
+        } else {
+            let mut k = self.keys.clone();
+            // A set, so that many keys cost linear time (100,000 took 27 s).
+            let mut seen: std::collections::HashSet<String> = k.iter().cloned().collect();
+            for (given, _) in answers {
+                if seen.insert(given.clone()) {
+                    k.push(given.clone());
+                }
+            }
+            k
+        };
+        let mut first: std::collections::HashMap<&str, &toml::Value> = Default::default();
+        for (k, v) in answers {
+            first.entry(k.as_str()).or_insert(v);
+        }
+        let mut marked = Vec::new();
+        let mut unknown = Vec::new();
+        for key in &keys {
+            let given = first.get(key.as_str()).copied();
+            let Some(expected) = lookup(&self.result, key) else {
+                if given.is_some() {
+                    unknown.push(key.clone());
+                }
+                continue;
+            };
+            let j = match given {
+                None => self.missing(),
+                Some(g) if super::answer_len(g) > super::MAX_ANSWER => {
+                    too_long(super::answer_len(g))
+                }
+                Some(g) => self.judge(key, g),
+            };
+            let mut mistakes = j.mistakes;
+            if from_text {
+                // the source's own answers: that it printed them is no diagnosis
+                mistakes.retain(|m| m.code != "copied_misprint");
+            }
+            marked.push(Marked {
+                key: key.clone(),
+                verdict: j.verdict,
+                code: j.code,
+                given: given.map(|g| super::shown_cut(&super::written(g))),
+                given_value: given.cloned(),
+                expected: Some(expected.clone()),
+                note: j.note,
+                diagnosis: mistakes.iter().map(|m| m.code).collect(),
+                why: None,
+                read: j.read,
+            });
+        }
+        if self.settings.follow_through {
+            self.credit_follow_through(&mut marked);
+        }
+        let diagnoses = self.diagnose(&mut marked);
+        for m in &mut marked {
+            let misprint = m.diagnosis.contains(&"copied_misprint");
+            if (from_text && m.verdict == Verdict::Wrong) || misprint {
+                m.why = self.erratum(&m.key);
+            }
+        }
+        Marking {
+            title: self.problem().title.clone(),
+            who: who.to_string(),
+            answers: marked,
+            diagnoses,
+            unknown,
+            settings: self.settings,
+        }
+    }
+
+    fn missing(&self) -> super::marker::Judgement {
+        super::marker::Judgement {
+            verdict: Verdict::Missing,
+            code: "missing",
+            note: Msg::NoAnswer,
+            read: None,
+            mistakes: vec![],
+        }
+    }
+
+    /// Credits, as `correct.follow_through`, each wrong answer that is right
+    /// given the student's own earlier answers ([`Marker::carried`]): only
+    /// wrong answers carry forward (a right one, maybe rounded, carries
+    /// grafika's value).
+    fn credit_follow_through(&self, marked: &mut [Marked]) {
+        let own: Vec<(String, Read)> = marked
+            .iter()
+            .filter(|m| m.verdict == Verdict::Wrong)
+            .filter_map(|m| Some((m.key.clone(), m.read.clone()?)))
+            .collect();
+        let own_of = |k: &str| own.iter().find(|(x, _)| x == k).map(|(_, r)| r.clone());
+        for m in marked.iter_mut().filter(|m| m.verdict == Verdict::Wrong) {
+            let Some(read) = &m.read else { continue };
+            if let Some(ft) = self.carried(&m.key, &own_of) {
+                if self.follows(read, &ft, &m.key) {
+                    m.verdict = Verdict::Correct;
+                    m.code = FOLLOW_THROUGH;
+                    m.note = Msg::FollowThrough;
+                    m.diagnosis.clear();
+                }
+            }
+        }
+    }
+
+    /// Keeps, for each wrong answer, the mistakes that fit the whole sheet
+    /// ([`Marker::fitting`]), and lists each mistake once with the answers
+    /// it explains: the mistakes that explain the most first; one whose
+    /// answers are all explained by an earlier one is named with it.
+    fn diagnose(&self, marked: &mut [Marked]) -> Vec<Diagnosis> {
+        let agreed_reads: Vec<(String, Read)> = marked
+            .iter()
+            .filter(|m| agrees(m.verdict, m.code))
+            .filter_map(|m| Some((m.key.clone(), m.read.clone()?)))
+            .collect();
+        let agreed: Vec<(&str, &Read)> =
+            agreed_reads.iter().map(|(k, r)| (k.as_str(), r)).collect();
+        let mut out: Vec<Diagnosis> = Vec::new();
+        for m in marked.iter_mut() {
+            let (Verdict::Wrong, Some(read)) = (m.verdict, &m.read) else {
+                m.diagnosis.clear();
+                continue;
+            };
+            let candidates: Vec<_> = m
+                .diagnosis
+                .iter()
+                .filter_map(|c| crate::tutor::diagnose::find(c))
+                .collect();
+            let fits = self.fitting(&m.key, read, &candidates, &agreed);
+            m.diagnosis = fits.iter().map(|f| f.code).collect();
+            for f in fits {
+                match out.iter_mut().find(|d| d.mistake.code == f.code) {
+                    Some(d) => d.keys.push(m.key.clone()),
+                    None => out.push(Diagnosis {
+                        mistake: f,
+                        keys: vec![m.key.clone()],
+                        also: vec![],
+                    }),
+                }
+            }
+        }
+        out.sort_by_key(|d| std::cmp::Reverse(d.keys.len()));
+        let mut folded: Vec<Diagnosis> = Vec::new();
+        for d in out {
+            match folded
+                .iter_mut()
+                .find(|f| d.keys.iter().all(|k| f.keys.contains(k)))
+            {
+                Some(f) => f.also.push(d.mistake),
+                None => folded.push(d),
+            }
+        }
+        // each answer names its mistakes in the order they rank
+        for m in marked.iter_mut() {
+            m.diagnosis.sort_by_key(|c| {
+                folded
+                    .iter()
+                    .position(|d| d.mistake.code == *c || d.also.iter().any(|a| a.code == *c))
+            });
+        }
+        folded
+    }
+}
+
+/// An answer longer than [`super::MAX_ANSWER`] characters: not read.
+fn too_long(n: usize) -> super::marker::Judgement {
+    super::marker::Judgement {
+        verdict: Verdict::Unparseable,
+        code: "unparseable",
+        note: Msg::AnswerTooLong(n, super::MAX_ANSWER),
+        read: None,
+        mistakes: vec![],
+    }
+}

@@ -1,0 +1,268 @@
+//! A class: a folder of answer files, one per student, marked against one
+//! problem or against a whole exam written by `generate` ([`exam`]), by the
+//! same judgement as one answer file ([`crate::tutor::check::Marker`]); and
+//! the lecturer's statistics of the class ([`stats`]).
+//!
+//! A file that cannot be read or marked is a sheet with its error: the
+//! others are marked all the same, and the statistics count only the
+//! sheets marked.
+
+pub mod exam;
+pub mod stats;
+
+use crate::error::{Error, Result};
+use crate::input::problem::ProblemIn;
+use crate::msg::{ErrMsg, IoWhy, Msg};
+use crate::tutor::check::{self, Answers, Marker, Marking, Settings};
+use std::path::{Path, PathBuf};
+
+/// What a class answers: one problem, or an exam's variants, each a list of
+/// problems named as `generate` names their files (`problem-01`, …).
+#[derive(Clone, Debug)]
+pub struct Paper {
+    /// The title: the problem's, or the exam folder's name.
+    pub title: String,
+    /// The variants (one for a lone problem), each its problems in order.
+    pub variants: Vec<Vec<Part>>,
+    /// Whether this is an exam (answer files then hold `variant = N` and
+    /// one `[problem-NN]` table per problem).
+    pub exam: bool,
+}
+
+/// One problem of a paper.
+#[derive(Clone, Debug)]
+pub struct Part {
+    /// `problem-01` in an exam; empty for a lone problem.
+    pub name: String,
+    /// The problem.
+    pub problem: ProblemIn,
+}
+
+impl Paper {
+    /// A lone problem.
+    pub fn one(problem: ProblemIn) -> Paper {
+        Paper {
+            title: problem.title.clone(),
+            variants: vec![vec![Part {
+                name: String::new(),
+                problem,
+            }]],
+            exam: false,
+        }
+    }
+}
+
+/// An answer key of a part as the class report names it: `problem-01.view.n`
+/// in an exam, `view.n` for a lone problem.
+pub fn full_key(part: &str, key: &str) -> String {
+    if part.is_empty() {
+        key.to_string()
+    } else {
+        format!("{part}.{key}")
+    }
+}
+
+/// One answer file of a class.
+#[derive(Clone, Debug)]
+pub struct Sheet {
+    /// The file.
+    pub file: PathBuf,
+    /// The student: the file's `student`, else the file's name.
+    pub who: String,
+    /// The variant answered (1-based; 1 for a lone problem), when known.
+    pub variant: Option<usize>,
+    /// The marking of each part (named as [`Part::name`]), or why the file
+    /// could not be marked.
+    pub outcome: Result<Vec<(String, Marking)>>,
+    /// What was done with an unusual file.
+    pub note: Option<Note>,
+}
+
+impl Sheet {
+    /// Points earned over every part.
+    pub fn score(&self) -> Option<f64> {
+        let m = self.outcome.as_ref().ok()?;
+        Some(m.iter().fold(0.0, |s, (_, m)| s + m.score()))
+    }
+    /// Points possible over every part.
+    pub fn total(&self) -> Option<usize> {
+        let m = self.outcome.as_ref().ok()?;
+        Some(m.iter().map(|(_, m)| m.total()).sum())
+    }
+}
+
+/// What was done with an unusual answer file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Note {
+    /// It holds no answers: marked with every answer missing.
+    Empty,
+    /// It could not be read or marked (its error is in its row).
+    NotMarked,
+}
+
+/// Why an entry of the answers folder was not read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Skip {
+    /// A subdirectory (its files are not read).
+    Subdirectory,
+    /// Not a `.toml` file.
+    NotToml,
+}
+
+/// A class marked: every sheet in file-name order, and the entries skipped.
+#[derive(Clone, Debug)]
+pub struct Class {
+    /// The paper's title.
+    pub title: String,
+    /// Whether the paper is an exam.
+    pub exam: bool,
+    /// Every answer file, marked or with its error.
+    pub sheets: Vec<Sheet>,
+    /// Entries of the folder not read, with the reason.
+    pub skipped: Skipped,
+}
+
+impl Class {
+    /// The sheets marked (the statistics count these).
+    pub fn marked(&self) -> impl Iterator<Item = &Sheet> {
+        self.sheets.iter().filter(|s| s.outcome.is_ok())
+    }
+}
+
+/// The markers of a paper's problems, by variant: each problem solved, and
+/// the mistake catalog run on it, once for the whole class.
+type Markers = Vec<Vec<Result<Marker>>>;
+
+fn markers(paper: &Paper, settings: Settings) -> Markers {
+    (paper.variants.iter())
+        .map(|v| {
+            v.iter()
+                .map(|p| Marker::new(&p.problem, settings))
+                .collect()
+        })
+        .collect()
+}
+
+/// Marks every `*.toml` file of `dir` against the paper.
+pub fn mark_dir(paper: &Paper, dir: &Path, settings: Settings) -> Result<Class> {
+    let (files, skipped) = answer_files(dir)?;
+    let markers = markers(paper, settings);
+    let sheets = files
+        .iter()
+        .map(|f| mark_with(paper, &markers, f))
+        .collect();
+    Ok(Class {
+        title: paper.title.clone(),
+        exam: paper.exam,
+        sheets,
+        skipped,
+    })
+}
+
+/// Reads and marks one student's file: for an exam, its variant's problems
+/// each against its `[problem-NN]` table.
+pub fn mark_file(paper: &Paper, f: &Path, settings: Settings) -> Sheet {
+    mark_with(paper, &markers(paper, settings), f)
+}
+
+fn mark_with(paper: &Paper, markers: &Markers, f: &Path) -> Sheet {
+    let read = check::read_answers(f);
+    let who = match &read {
+        Ok((Some(s), _)) => s.clone(),
+        _ => f
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default(),
+    };
+    let empty = matches!(&read, Ok((_, answers)) if answers.is_empty());
+    let split = read.and_then(|(_, answers)| split(paper, &answers));
+    let note = match &split {
+        Err(_) => Some(Note::NotMarked),
+        Ok(_) if empty => Some(Note::Empty),
+        Ok(_) => None,
+    };
+    let variant = split.as_ref().ok().map(|(v, _)| *v);
+    let outcome = split.and_then(|(v, parts)| {
+        let problems = paper.variants[v - 1].iter().zip(&markers[v - 1]);
+        problems
+            .zip(parts)
+            .map(|((part, marker), answers)| {
+                let m = marker.as_ref().map_err(Clone::clone)?;
+                Ok((part.name.clone(), m.mark(&who, &answers, false)))
+            })
+            .collect()
+    });
+    Sheet {
+        file: f.to_path_buf(),
+        who,
+        variant,
+        outcome,
+        note,
+    }
+}
+
+/// The variant a file answers and its answers to each problem of that
+/// variant: a lone problem takes the whole file; an exam's file says
+/// `variant = N` (not needed when there is one variant) and holds each
+/// problem's answers in the table of its name.
+fn split(paper: &Paper, answers: &Answers) -> Result<(usize, Vec<Answers>)> {
+    if !paper.exam {
+        return Ok((1, vec![answers.clone()]));
+    }
+    let v = exam::variant_of(answers, paper.variants.len())?;
+    let problems = &paper.variants[v - 1];
+    let mut parts: Vec<Answers> = vec![Vec::new(); problems.len()];
+    for (k, val) in answers.iter().filter(|(k, _)| k != "variant") {
+        let at = problems.iter().position(|p| {
+            k.strip_prefix(&p.name)
+                .is_some_and(|rest| rest.starts_with('.'))
+        });
+        let Some(i) = at else {
+            let names: Vec<&str> = problems.iter().map(|p| p.name.as_str()).collect();
+            return Err(Error::why(
+                k.as_str(),
+                ErrMsg::NotAProblemOfExam(k.clone(), names.join(", ")),
+            ));
+        };
+        let rest = &k[problems[i].name.len() + 1..];
+        parts[i].push((rest.to_string(), val.clone()));
+    }
+    Ok((v, parts))
+}
+
+/// Entries of a folder not read, with the reason.
+type Skipped = Vec<(PathBuf, Skip)>;
+
+/// The `*.toml` files of a directory, sorted by name, and every other
+/// entry with the reason it is not read.
+fn answer_files(dir: &Path) -> Result<(Vec<PathBuf>, Skipped)> {
+    let rd = std::fs::read_dir(dir).map_err(|e| {
+        Error::said(
+            "answers",
+            Msg::ErrCannotRead(dir.display().to_string(), IoWhy::of(&e)),
+        )
+    })?;
+    let mut all: Vec<PathBuf> = rd.filter_map(|e| e.ok().map(|e| e.path())).collect();
+    all.sort();
+    let (files, others): (Vec<PathBuf>, Vec<PathBuf>) = all
+        .into_iter()
+        .partition(|p| p.is_file() && p.extension().is_some_and(|x| x == "toml"));
+    let skipped = others
+        .into_iter()
+        .map(|p| {
+            let why = if p.is_dir() {
+                Skip::Subdirectory
+            } else {
+                Skip::NotToml
+            };
+            (p, why)
+        })
+        .collect();
+    if files.is_empty() {
+        return Err(Error::why(
+            "answers",
+            ErrMsg::NoAnswerFiles(dir.display().to_string()),
+        ));
+    }
+    Ok((files, skipped))
+}

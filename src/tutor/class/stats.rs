@@ -1,0 +1,556 @@
+//! The lecturer's statistics of a class, from the same markings as the
+//! students' rows: per answer key, per catalog mistake, the wrong answers no
+//! mistake explains, the score distribution, and for an exam per problem
+//! and per variant.
+//!
+//! Definitions (N students marked; a key's mark x is 1 for a correct
+//! answer, ½ too coarse, 0 otherwise; a student's score S is the sum of the
+//! marks over the T keys asked, taken as the share S/T, and the rest of the
+//! score as (S − x)/(T − 1): for a class that answers one problem, all with
+//! the same T, these order and correlate exactly as S and S − x do, and the
+//! variants of an exam, of different lengths, compare):
+//!
+//! - **facility** p = mean of x over the N students: the share of full
+//!   marks (Moodle's facility index). Flagged very easy above 0.9, very
+//!   hard below 0.2.
+//! - **discrimination** D = x̄(upper) − x̄(lower), Kelley's upper-minus-lower
+//!   index: the upper group is the g = round(0.27·N) (at least 1) students
+//!   of highest S, the lower group the g of lowest S; students tied at a
+//!   group's edge share its remaining places equally (each counts with
+//!   weight places/tied), so no order among equal scores is invented.
+//!   D runs from −1 to 1.
+//! - **point-biserial** r = the Pearson correlation of x with the rest of
+//!   the score, S − x (the corrected item-total correlation), over the N
+//!   students; undefined (None) when x or S − x is the same for everyone.
+//! - a key **discriminates negatively** (suspect: the key, or the
+//!   question) when D or r is below 0.
+//!
+//! In an exam every student answers one variant; a key (`problem-01.view.n`)
+//! is counted over the students whose variant asks it, S is the student's
+//! whole exam, and a variant whose facility on a problem lies more than
+//! [`VARIANT_GAP`] below the median of the other variants' facilities on it
+//! is flagged harder than its siblings (above it: easier).
+
+use super::{full_key, Class, Paper, Sheet};
+use crate::msg::Msg;
+use crate::num::Real;
+use crate::stages::trace::{Step, Val};
+use crate::tutor::check::{Marked, Settings};
+use crate::tutor::diagnose::Mistake;
+use crate::tutor::keys::ordered_keys;
+use crate::tutor::solve;
+
+mod wrong;
+
+/// Above this facility a key is very easy.
+pub const VERY_EASY: f64 = 0.9;
+/// Below this facility a key is very hard.
+pub const VERY_HARD: f64 = 0.2;
+/// The share of the class in each of the upper and lower groups.
+pub const GROUP_SHARE: f64 = 0.27;
+/// How far a variant's facility on a problem may lie from its siblings'
+/// mean before it is flagged.
+pub const VARIANT_GAP: f64 = 0.2;
+/// The number of bins of the score histogram (10 % of the marks each).
+pub const BINS: usize = 10;
+
+/// The verdict codes in the order reports list them (docs/spec.md §5); a
+/// code not listed here (a newer one) follows them.
+pub const CODES: [&str; 8] = [
+    "correct.exact",
+    "correct.rounded",
+    "correct.tolerance",
+    "correct.follow_through",
+    "too_coarse",
+    "wrong",
+    "missing",
+    "unparseable",
+];
+
+/// What is suspect about a key.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Flag {
+    /// Facility above [`VERY_EASY`].
+    VeryEasy,
+    /// Facility below [`VERY_HARD`].
+    VeryHard,
+    /// D or r below 0: the better students do worse on it.
+    Negative,
+}
+
+/// One answer key over the class.
+#[derive(Clone, Debug)]
+pub struct KeyStats {
+    /// The key (`view.n`; `problem-01.view.n` in an exam).
+    pub key: String,
+    /// How many students were asked it.
+    pub students: usize,
+    /// How many answers got each verdict code ([`CODES`] first, then any other).
+    pub counts: Vec<(String, usize)>,
+    /// Facility p.
+    pub facility: f64,
+    /// Upper-minus-lower discrimination D (None for fewer than 2 students).
+    pub discrimination: Option<f64>,
+    /// Point-biserial r of the key with the rest of the score.
+    pub point_biserial: Option<f64>,
+    /// Very easy, very hard, negative.
+    pub flags: Vec<Flag>,
+}
+
+/// The step of the worked solution a mistake belongs to.
+#[derive(Clone, Debug)]
+pub struct StepRef {
+    /// The problem (`problem-01`; empty for a lone problem).
+    pub part: String,
+    /// The step's number in `grafika solve`'s output.
+    pub number: usize,
+    /// Its title.
+    pub title: Msg,
+}
+
+/// One catalog mistake made in the class.
+#[derive(Clone, Debug)]
+pub struct MistakeStats {
+    /// The mistake.
+    pub mistake: &'static Mistake,
+    /// The students who made it, in file order.
+    pub students: Vec<String>,
+    /// The keys it explains, in the solution's order.
+    pub keys: Vec<String>,
+    /// Other mistakes that give the same values for some of these answers.
+    pub also: Vec<&'static Mistake>,
+    /// The step where it is made: the step of its first key.
+    pub step: Option<StepRef>,
+}
+
+/// A wrong value no mistake explains, with the students who gave it (values
+/// equal within the tolerance counted as one).
+#[derive(Clone, Debug)]
+pub struct WrongValue {
+    /// The value as the first student wrote it.
+    pub value: String,
+    /// The same, as given in the file.
+    pub given: toml::Value,
+    /// The students who gave it.
+    pub students: Vec<String>,
+}
+
+/// The unexplained wrong answers to one key (of one variant, in an exam).
+#[derive(Clone, Debug)]
+pub struct WrongAnswers {
+    /// The key.
+    pub key: String,
+    /// The variant, in an exam of several.
+    pub variant: Option<usize>,
+    /// The right value.
+    pub expected: Option<Val>,
+    /// The values, the most common first.
+    pub values: Vec<WrongValue>,
+}
+
+/// One bar of the histogram: the students whose score is at least `from`
+/// and below `to` percent of the marks (the last bar includes 100).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Bin {
+    /// From, in percent.
+    pub from: u32,
+    /// To, in percent.
+    pub to: u32,
+    /// Students.
+    pub count: usize,
+}
+
+/// One problem of the paper over the class.
+#[derive(Clone, Debug)]
+pub struct ProblemStats {
+    /// `problem-01` (empty for a lone problem).
+    pub name: String,
+    /// Its title (the first variant's).
+    pub title: String,
+    /// The students marked on it.
+    pub students: usize,
+    /// The mean share of its marks.
+    pub facility: Option<f64>,
+}
+
+/// A variant's facility on a problem set against its siblings'.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Gap {
+    /// More than [`VARIANT_GAP`] below the other variants' median.
+    Harder,
+    /// More than [`VARIANT_GAP`] above it.
+    Easier,
+}
+
+/// One variant of an exam over the students who answered it.
+#[derive(Clone, Debug)]
+pub struct VariantStats {
+    /// The variant (1-based).
+    pub variant: usize,
+    /// Its students.
+    pub students: usize,
+    /// The mean share of the whole exam's marks.
+    pub facility: Option<f64>,
+    /// Per problem: its name, the facility, and the gap to the siblings.
+    pub problems: Vec<(String, Option<f64>, Option<Gap>)>,
+}
+
+/// The whole class.
+#[derive(Clone, Debug)]
+pub struct Stats {
+    /// The students marked (a file that could not be marked is not counted).
+    pub students: usize,
+    /// Per key, in the solution's order.
+    pub keys: Vec<KeyStats>,
+    /// Per mistake, the most students first.
+    pub mistakes: Vec<MistakeStats>,
+    /// Per key, the wrong answers no mistake explains.
+    pub wrong_answers: Vec<WrongAnswers>,
+    /// The score distribution in [`BINS`] bars of 10 %.
+    pub histogram: Vec<Bin>,
+    /// Per problem (one for a lone problem).
+    pub problems: Vec<ProblemStats>,
+    /// Per variant (an exam of several variants only).
+    pub variants: Vec<VariantStats>,
+}
+
+/// One problem of one variant solved once: its keys in the solution's order
+/// and its steps.
+struct Solved {
+    order: Vec<String>,
+    steps: Vec<Step>,
+}
+
+/// The statistics of a marked class.
+pub fn of(class: &Class, paper: &Paper, settings: &Settings) -> Stats {
+    let solved: Vec<Vec<Solved>> = paper
+        .variants
+        .iter()
+        .map(|parts| parts.iter().map(|p| solved(&p.problem)).collect())
+        .collect();
+    let sheets: Vec<&Sheet> = class.marked().collect();
+    let keys = key_order(paper, &solved, &sheets);
+    Stats {
+        students: sheets.len(),
+        keys: keys.iter().map(|k| key_stats(k, &sheets)).collect(),
+        mistakes: wrong::mistakes(&sheets, &keys, &solved),
+        wrong_answers: wrong::wrong_answers(&sheets, &keys, paper, settings),
+        histogram: histogram(&sheets),
+        problems: problems(paper, &sheets),
+        variants: variants(paper, &sheets),
+    }
+}
+
+fn solved(p: &crate::input::problem::ProblemIn) -> Solved {
+    match solve::solve::<Real>(p) {
+        Ok(r) => Solved {
+            order: ordered_keys(&r.result),
+            steps: r.steps,
+        },
+        Err(_) => Solved {
+            order: vec![],
+            steps: vec![],
+        },
+    }
+}
+
+/// Every key marked in the class, problem by problem, in the solution's
+/// order (keys the solution does not list, in the order first marked).
+fn key_order(paper: &Paper, solved: &[Vec<Solved>], sheets: &[&Sheet]) -> Vec<String> {
+    let mut seen: Vec<String> = Vec::new();
+    for (i, part) in paper.variants[0].iter().enumerate() {
+        let mut marked: Vec<String> = Vec::new();
+        for s in sheets {
+            for m in parts_named(s, &part.name) {
+                for a in &m.answers {
+                    if !marked.contains(&a.key) {
+                        marked.push(a.key.clone());
+                    }
+                }
+            }
+        }
+        let order: Vec<&String> = solved
+            .iter()
+            .filter_map(|v| v.get(i))
+            .flat_map(|s| &s.order)
+            .collect();
+        let rank = |k: &String| order.iter().position(|o| *o == k).unwrap_or(usize::MAX);
+        let mut ranked: Vec<(usize, usize, String)> = marked
+            .into_iter()
+            .enumerate()
+            .map(|(first, k)| (rank(&k), first, k))
+            .collect();
+        ranked.sort();
+        for (_, _, k) in ranked {
+            let full = full_key(&part.name, &k);
+            if !seen.contains(&full) {
+                seen.push(full);
+            }
+        }
+    }
+    seen
+}
+
+/// The markings of a sheet's part of this name.
+fn parts_named<'a>(
+    s: &'a Sheet,
+    name: &'a str,
+) -> impl Iterator<Item = &'a crate::tutor::check::Marking> {
+    s.outcome
+        .iter()
+        .flatten()
+        .filter(move |(n, _)| n == name)
+        .map(|(_, m)| m)
+}
+
+/// A sheet's marked answer to a full key.
+fn answer<'a>(s: &'a Sheet, key: &str) -> Option<&'a Marked> {
+    s.outcome.as_ref().ok()?.iter().find_map(|(part, m)| {
+        let rest = if part.is_empty() {
+            key
+        } else {
+            key.strip_prefix(part.as_str())?.strip_prefix('.')?
+        };
+        m.answers.iter().find(|a| a.key == rest)
+    })
+}
+
+/// Counts, facility, D and r of one key.
+fn key_stats(key: &str, sheets: &[&Sheet]) -> KeyStats {
+    let asked: Vec<(&Marked, f64, usize)> = sheets
+        .iter()
+        .filter_map(|s| Some((answer(s, key)?, s.score()?, s.total()?)))
+        .collect();
+    let mut counts: Vec<(String, usize)> = CODES.iter().map(|c| (c.to_string(), 0)).collect();
+    for (a, _, _) in &asked {
+        match counts.iter_mut().find(|(c, _)| c == a.code) {
+            Some((_, n)) => *n += 1,
+            None => counts.push((a.code.to_string(), 1)),
+        }
+    }
+    let x: Vec<f64> = asked.iter().map(|(a, _, _)| a.verdict.points()).collect();
+    // shares of each student's own marks, so variants of different lengths compare
+    let share = |points: f64, of: usize| if of == 0 { 0.0 } else { points / of as f64 };
+    let score: Vec<f64> = asked.iter().map(|(_, s, t)| share(*s, *t)).collect();
+    let rest: Vec<f64> = (asked.iter().zip(&x))
+        .map(|((_, s, t), x)| share(s - x, t.saturating_sub(1)))
+        .collect();
+    let facility = mean(&x).unwrap_or(0.0);
+    let discrimination = upper_minus_lower(&x, &score);
+    let point_biserial = correlation(&x, &rest);
+    let mut flags = Vec::new();
+    if !asked.is_empty() && facility > VERY_EASY {
+        flags.push(Flag::VeryEasy);
+    }
+    if !asked.is_empty() && facility < VERY_HARD {
+        flags.push(Flag::VeryHard);
+    }
+    if discrimination.is_some_and(|d| d < -1e-9) || point_biserial.is_some_and(|r| r < -1e-9) {
+        flags.push(Flag::Negative);
+    }
+    KeyStats {
+        key: key.to_string(),
+        students: asked.len(),
+        counts,
+        facility,
+        discrimination,
+        point_biserial,
+        flags,
+    }
+}
+
+fn mean(x: &[f64]) -> Option<f64> {
+    (!x.is_empty()).then(|| x.iter().sum::<f64>() / x.len() as f64)
+}
+
+/// D = x̄(upper 27 %) − x̄(lower 27 %) by total score, ties at a group's
+/// edge sharing its places (see the module docs).
+pub fn upper_minus_lower(x: &[f64], total: &[f64]) -> Option<f64> {
+    let n = x.len();
+    if n < 2 {
+        return None;
+    }
+    let g = (GROUP_SHARE * n as f64).round().max(1.0);
+    let upper = group_weights(total, g, true);
+    let lower = group_weights(total, g, false);
+    let sum = |w: &[f64]| w.iter().zip(x).map(|(w, x)| w * x).sum::<f64>();
+    Some((sum(&upper) - sum(&lower)) / g)
+}
+
+/// The weight of each student in the group of the g highest (or lowest)
+/// totals: 1 inside, places/tied for the students tied at the edge, 0 out.
+fn group_weights(total: &[f64], g: f64, highest: bool) -> Vec<f64> {
+    let mut order: Vec<usize> = (0..total.len()).collect();
+    order.sort_by(|&a, &b| {
+        let o = total[a].total_cmp(&total[b]);
+        if highest {
+            o.reverse()
+        } else {
+            o
+        }
+    });
+    let mut w = vec![0.0; total.len()];
+    let (mut left, mut i) = (g, 0);
+    while i < order.len() && left > 1e-12 {
+        let tied = order[i..]
+            .iter()
+            .take_while(|&&j| total[j] == total[order[i]])
+            .count();
+        let share = (left / tied as f64).min(1.0);
+        for &j in &order[i..i + tied] {
+            w[j] = share;
+        }
+        left -= share * tied as f64;
+        i += tied;
+    }
+    w
+}
+
+/// Pearson's correlation of x and y (None when either is constant).
+pub fn correlation(x: &[f64], y: &[f64]) -> Option<f64> {
+    let (mx, my) = (mean(x)?, mean(y)?);
+    let sxy: f64 = x.iter().zip(y).map(|(a, b)| (a - mx) * (b - my)).sum();
+    let sxx: f64 = x.iter().map(|a| (a - mx).powi(2)).sum();
+    let syy: f64 = y.iter().map(|b| (b - my).powi(2)).sum();
+    (sxx > 1e-12 && syy > 1e-12).then(|| sxy / (sxx * syy).sqrt())
+}
+
+/// The score distribution: [`BINS`] bars of 10 % of each student's marks.
+fn histogram(sheets: &[&Sheet]) -> Vec<Bin> {
+    let step = 100 / BINS as u32;
+    let mut bins: Vec<Bin> = (0..BINS as u32)
+        .map(|b| Bin {
+            from: b * step,
+            to: (b + 1) * step,
+            count: 0,
+        })
+        .collect();
+    for s in sheets {
+        let (Some(score), Some(total)) = (s.score(), s.total()) else {
+            continue;
+        };
+        // in halves, so the bar is found in whole numbers: ⌊10·S/T⌋
+        let halves = (score * 2.0).round() as usize;
+        let b = (halves * BINS).checked_div(2 * total).unwrap_or(BINS);
+        bins[b.min(BINS - 1)].count += 1;
+    }
+    bins
+}
+
+/// Per problem: the mean share of its marks over the class.
+fn problems(paper: &Paper, sheets: &[&Sheet]) -> Vec<ProblemStats> {
+    paper.variants[0]
+        .iter()
+        .map(|part| {
+            let shares: Vec<f64> = sheets
+                .iter()
+                .flat_map(|s| parts_named(s, &part.name))
+                .map(share)
+                .collect();
+            ProblemStats {
+                name: part.name.clone(),
+                title: part.problem.title.clone(),
+                students: shares.len(),
+                facility: mean(&shares),
+            }
+        })
+        .collect()
+}
+
+/// The median (None for none): one much harder variant does not make its
+/// siblings look easier, as it would move their mean.
+fn median(mut x: Vec<f64>) -> Option<f64> {
+    x.sort_by(f64::total_cmp);
+    let n = x.len();
+    match n {
+        0 => None,
+        _ if n % 2 == 1 => Some(x[n / 2]),
+        _ => Some((x[n / 2 - 1] + x[n / 2]) / 2.0),
+    }
+}
+
+fn share(m: &crate::tutor::check::Marking) -> f64 {
+    if m.total() == 0 {
+        1.0
+    } else {
+        m.score() / m.total() as f64
+    }
+}
+
+/// Per variant of an exam: its students, their facility on each problem,
+/// and the problems where it is much harder or easier than its siblings.
+fn variants(paper: &Paper, sheets: &[&Sheet]) -> Vec<VariantStats> {
+    if !paper.exam || paper.variants.len() < 2 {
+        return vec![];
+    }
+    let names: Vec<&str> = paper.variants[0].iter().map(|p| p.name.as_str()).collect();
+    let of_variant = |v: usize| sheets.iter().filter(move |s| s.variant == Some(v));
+    let facility = |v: usize, name: &str| {
+        let shares: Vec<f64> = of_variant(v)
+            .flat_map(|s| parts_named(s, name))
+            .map(share)
+            .collect();
+        mean(&shares)
+    };
+    (1..=paper.variants.len())
+        .map(|v| {
+            let whole: Vec<f64> = of_variant(v)
+                .filter_map(|s| Some(s.score()? / s.total()?.max(1) as f64))
+                .collect();
+            let problems = names
+                .iter()
+                .map(|name| {
+                    let f = facility(v, name);
+                    let others: Vec<f64> = (1..=paper.variants.len())
+                        .filter(|&o| o != v)
+                        .filter_map(|o| facility(o, name))
+                        .collect();
+                    let gap = match (f, median(others)) {
+                        (Some(f), Some(m)) if f < m - VARIANT_GAP => Some(Gap::Harder),
+                        (Some(f), Some(m)) if f > m + VARIANT_GAP => Some(Gap::Easier),
+                        _ => None,
+                    };
+                    (name.to_string(), f, gap)
+                })
+                .collect();
+            VariantStats {
+                variant: v,
+                students: whole.len(),
+                facility: mean(&whole),
+                problems,
+            }
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn upper_minus_lower_shares_the_places_of_students_tied_at_the_edge() {
+        // N = 10, g = round(2.7) = 3. Upper: the 9 (x = 1) and two places
+        // shared by the three 8s (x = 1, 0, 0): (1 + ⅔·1)/3 = 5/9. Lower:
+        // the two 2s (x = 0, 1) and the 3 (x = 0): 1/3. D = 5/9 − 1/3 = 2/9.
+        let total = [9.0, 8.0, 8.0, 8.0, 5.0, 5.0, 4.0, 3.0, 2.0, 2.0];
+        let x = [1.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0];
+        let d = upper_minus_lower(&x, &total).unwrap();
+        assert!((d - 2.0 / 9.0).abs() < 1e-12, "{d}");
+        // everyone tied: both groups are the whole class, D = 0
+        let d = upper_minus_lower(&[1.0, 0.0, 1.0, 0.0], &[3.0; 4]).unwrap();
+        assert!(d.abs() < 1e-12, "{d}");
+        assert_eq!(upper_minus_lower(&[1.0], &[1.0]), None);
+    }
+
+    #[test]
+    fn correlation_is_pearsons() {
+        let x = [1.0, 0.0, 1.0, 0.0];
+        assert!((correlation(&x, &x).unwrap() - 1.0).abs() < 1e-12);
+        assert!((correlation(&x, &[0.0, 1.0, 0.0, 1.0]).unwrap() + 1.0).abs() < 1e-12);
+        // x = (1, 0, 0), y = (2, 1, 0): Σ(x−x̄)(y−ȳ) = 1, Σ(x−x̄)² = 2/3,
+        // Σ(y−ȳ)² = 2, so r = 1/√(4/3) = √3/2
+        let r = correlation(&[1.0, 0.0, 0.0], &[2.0, 1.0, 0.0]).unwrap();
+        assert!((r - 3f64.sqrt() / 2.0).abs() < 1e-12, "{r}");
+        assert_eq!(correlation(&x, &[2.0; 4]), None);
+    }
+}

@@ -1,0 +1,175 @@
+//! What the class got wrong: each catalog mistake with its students, keys
+//! and step, and the wrong answers no mistake explains, grouped when equal
+//! within `check`'s tolerance.
+
+use super::{answer, MistakeStats, Solved, StepRef, WrongAnswers, WrongValue};
+use crate::input::answer::read as read_answer;
+use crate::stages::trace::Val;
+use crate::tutor::check::tolerance;
+use crate::tutor::check::{written, Marked, Settings, Verdict};
+use crate::tutor::class::{full_key, Paper, Sheet};
+use crate::tutor::diagnose::{Mistake, CATALOG};
+use crate::tutor::practice::step_for;
+
+/// Each catalog mistake named in the class with its students and keys, the
+/// most students first (ties in the catalog's order).
+pub(super) fn mistakes(
+    sheets: &[&Sheet],
+    keys: &[String],
+    solved: &[Vec<Solved>],
+) -> Vec<MistakeStats> {
+    // each mistake with the variant of its first student and its last sheet
+    let mut out: Vec<(MistakeStats, usize, usize)> = Vec::new();
+    for (i, s) in sheets.iter().enumerate() {
+        let v = s.variant.unwrap_or(1);
+        for (part, m) in s.outcome.iter().flatten() {
+            for d in &m.diagnoses {
+                let at = out
+                    .iter()
+                    .position(|(x, _, _)| x.mistake.code == d.mistake.code);
+                let at = at.unwrap_or_else(|| {
+                    let stats = MistakeStats {
+                        mistake: d.mistake,
+                        students: vec![],
+                        keys: vec![],
+                        also: vec![],
+                        step: None,
+                    };
+                    out.push((stats, v, usize::MAX));
+                    out.len() - 1
+                });
+                let (x, _, last) = &mut out[at];
+                if *last != i {
+                    x.students.push(s.who.clone());
+                    *last = i;
+                }
+                for k in &d.keys {
+                    let k = full_key(part, k);
+                    if !x.keys.contains(&k) {
+                        x.keys.push(k);
+                    }
+                }
+                for a in &d.also {
+                    if !x.also.iter().any(|b| b.code == a.code) {
+                        x.also.push(a);
+                    }
+                }
+            }
+        }
+    }
+    let rank = |k: &String| keys.iter().position(|x| x == k).unwrap_or(usize::MAX);
+    let catalog = |m: &Mistake| CATALOG.iter().position(|c| c.code == m.code);
+    for (x, v, _) in &mut out {
+        x.keys.sort_by_key(|k| rank(k));
+        x.step = x.keys.first().and_then(|k| step_of(k, solved.get(*v - 1)?));
+    }
+    let mut out: Vec<MistakeStats> = out.into_iter().map(|(x, _, _)| x).collect();
+    out.sort_by_key(|x| (std::cmp::Reverse(x.students.len()), catalog(x.mistake)));
+    out
+}
+
+/// The step of the worked solution that computes a full key.
+fn step_of(key: &str, parts: &[Solved]) -> Option<StepRef> {
+    let (part, rest, i) = match key.split_once('.') {
+        Some((p, rest)) if p.starts_with("problem-") => {
+            let i: usize = p.trim_start_matches("problem-").parse().ok()?;
+            (p.to_string(), rest, i.checked_sub(1)?)
+        }
+        _ => (String::new(), key, 0),
+    };
+    let steps = &parts.get(i)?.steps;
+    let step = step_for(rest, steps)?;
+    let number = steps.iter().position(|s| *s == step)? + 1;
+    Some(StepRef {
+        part,
+        number,
+        title: step.title,
+    })
+}
+
+/// The wrong answers no mistake explains, per key (and variant), grouped
+/// when equal within the tolerance, the most common first; the keys with
+/// the most such answers first.
+pub(super) fn wrong_answers(
+    sheets: &[&Sheet],
+    keys: &[String],
+    paper: &Paper,
+    settings: &Settings,
+) -> Vec<WrongAnswers> {
+    let several = paper.exam && paper.variants.len() > 1;
+    let mut out: Vec<WrongAnswers> = Vec::new();
+    for key in keys {
+        for s in sheets {
+            let Some(a) =
+                answer(s, key).filter(|a| a.verdict == Verdict::Wrong && a.diagnosis.is_empty())
+            else {
+                continue;
+            };
+            let (Some(given), variant) = (&a.given_value, s.variant.filter(|_| several)) else {
+                continue;
+            };
+            let at = out
+                .iter()
+                .position(|w| &w.key == key && w.variant == variant);
+            let i = at.unwrap_or_else(|| {
+                out.push(WrongAnswers {
+                    key: key.clone(),
+                    variant,
+                    expected: a.expected.clone(),
+                    values: vec![],
+                });
+                out.len() - 1
+            });
+            let w = &mut out[i];
+            let same = |v: &WrongValue| same_value(&v.given, given, a, settings.tolerance);
+            match w.values.iter_mut().find(|v| same(v)) {
+                Some(v) => v.students.push(s.who.clone()),
+                None => w.values.push(WrongValue {
+                    value: written(given),
+                    given: given.clone(),
+                    students: vec![s.who.clone()],
+                }),
+            }
+        }
+    }
+    for w in &mut out {
+        w.values
+            .sort_by_key(|v| std::cmp::Reverse(v.students.len()));
+    }
+    let most = |w: &WrongAnswers| w.values.iter().map(|v| v.students.len()).max().unwrap_or(0);
+    out.sort_by_key(|w| std::cmp::Reverse(most(w)));
+    out
+}
+
+/// Whether a wrong answer equals a group's value within the tolerance of
+/// `check` ([`tolerance::for_key`], componentwise), or, for text, as written.
+fn same_value(first: &toml::Value, given: &toml::Value, a: &Marked, rel: f64) -> bool {
+    let like = a.expected.as_ref();
+    let read = |v: &toml::Value| like.and_then(|e| read_answer(v, e).ok()).map(|r| r.value());
+    match (read(first), read(given)) {
+        (Some(x), Some(y)) => close(&x, &y, &a.key, rel),
+        _ => written(first)
+            .trim()
+            .eq_ignore_ascii_case(written(given).trim()),
+    }
+}
+
+fn close(x: &Val, y: &Val, key: &str, rel: f64) -> bool {
+    let (xs, ys) = (numbers(x), numbers(y));
+    if xs.is_empty() || xs.len() != ys.len() {
+        return x == y;
+    }
+    let scale = xs.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    xs.iter()
+        .zip(&ys)
+        .all(|(a, b)| (a - b).abs() <= tolerance::for_key(key, *a, scale, rel))
+}
+
+/// The numbers of a value, flattened.
+fn numbers(v: &Val) -> Vec<f64> {
+    match v {
+        Val::Num(n) => vec![n.value],
+        Val::List(items) => items.iter().flat_map(numbers).collect(),
+        _ => vec![],
+    }
+}
