@@ -281,7 +281,7 @@ fn generated_statements_in_indonesian_with_the_same_problems() {
         "region code P0 dan P1",
         "kiri, kanan, bawah, atas, depan, belakang",
         "vektor normal N",
-        "Tentukan bidang pandang",
+        "Tentukan viewing window pada near plane",
     ] {
         assert!(all.contains(phrase), "no `{phrase}` in\n{all}");
     }

@@ -121,7 +121,7 @@ fn name_or_words(chars: &[char], i: usize) -> (String, usize) {
                 && chars[end..]
                     .iter()
                     .find(|c| **c != ' ')
-                    .is_some_and(|c| c.is_alphabetic())));
+                    .is_some_and(|c| c.is_alphanumeric())));
     let tag = if phrase || lone_word { "mtext" } else { "mi" };
     (format!("<{tag}>{}</{tag}>", xml_escape(&text)), end)
 }
