@@ -1,6 +1,6 @@
 //! `--help` of every command says only what the command does: each of the
 //! options several commands share (`--precision`, `--digits`, `--json`,
-//! `--lang`, `--html`) is listed by a command's help exactly when the
+//! `--lang`, `--html`, `--force`) is listed by a command's help exactly when the
 //! command takes it, and then it changes what the command prints or
 //! writes; an option it does not list is refused (exit status 2, the
 //! option named).
@@ -116,7 +116,11 @@ struct Run {
 
 /// Runs `command args extra` with `OUT` replaced by a fresh folder.
 fn run(name: &str, command: &str, args: &[&str], stdin: &str, extra: &[&str]) -> Run {
-    let out = scratch(name);
+    run_in(&scratch(name), command, args, stdin, extra)
+}
+
+/// Runs `command args extra` with `OUT` replaced by the folder `out`.
+fn run_in(out: &Path, command: &str, args: &[&str], stdin: &str, extra: &[&str]) -> Run {
     let mut all = vec![command.to_string()];
     for a in args.iter().chain(extra) {
         all.push(a.replace("OUT", out.to_str().unwrap()));
@@ -131,7 +135,7 @@ fn run(name: &str, command: &str, args: &[&str], stdin: &str, extra: &[&str]) ->
         .output()
         .unwrap();
     let mut files = Vec::new();
-    collect(&out, &out, &mut files);
+    collect(out, out, &mut files);
     files.sort();
     Run {
         status: o.status.code(),
@@ -154,14 +158,59 @@ fn collect(base: &Path, dir: &Path, out: &mut Vec<(PathBuf, Vec<u8>)>) {
 }
 
 /// The shared options, each with the value that should change the output
-/// (`OUT/page.html`: a new page).
-const SHARED: [(&str, &[&str]); 5] = [
+/// (`OUT/page.html`: a new page); `--force` changes it only where the
+/// output exists ([`force_matters`]).
+const SHARED: [(&str, &[&str]); 6] = [
     ("precision", &["--precision", "f64"]),
     ("digits", &["--digits", "9"]),
     ("json", &["--json"]),
     ("lang", &["--lang", "id"]),
     ("html", &["--html", "OUT/page.html"]),
+    ("force", &["--force"]),
 ];
+
+/// The arguments that make `command` write an output file `--force` may
+/// replace (check marks a class into a CSV file).
+fn writing<'a>(command: &str, args: &[&'a str]) -> Vec<&'a str> {
+    let answers = [
+        "problems/text-triangle.toml",
+        "--answers",
+        "problems/answers/triangle/",
+    ];
+    match command {
+        "render" | "generate" => args.to_vec(),
+        "check" => [&answers[..], &["--csv", "OUT/marks.csv"]].concat(),
+        _ => [args, &["--html", "OUT/page.html"]].concat(),
+    }
+}
+
+/// A command that lists `--force`: run twice into one folder, the second
+/// run is refused without `--force` (the output exists) and replaces the
+/// output with it.
+fn force_matters(command: &str, args: &[&str], stdin: &str) {
+    let out = scratch(&format!("{command}-force-twice"));
+    let args = writing(command, args);
+    let first = run_in(&out, command, &args, stdin, &["--lang", "en"]);
+    assert_eq!(first.status, Some(0), "{command}: {}", first.stderr);
+    let again = run_in(&out, command, &args, stdin, &["--lang", "en"]);
+    assert_eq!(
+        again.status,
+        Some(2),
+        "{command} wrote over its output without --force"
+    );
+    assert!(
+        again.stderr.contains("--force"),
+        "{command}: {}",
+        again.stderr
+    );
+    let forced = run_in(&out, command, &args, stdin, &["--lang", "en", "--force"]);
+    assert_eq!(
+        forced.status,
+        Some(0),
+        "{command} --force: {}",
+        forced.stderr
+    );
+}
 
 #[test]
 fn every_command_lists_exactly_the_shared_options_it_takes() {
@@ -190,6 +239,10 @@ fn every_command_lists_exactly_the_shared_options_it_takes() {
                     "{command} lists --{option} but refuses it: {}",
                     with.stderr
                 );
+                if option == "force" {
+                    force_matters(command, &args, stdin);
+                    continue;
+                }
                 // --lang of completions and man changes only their errors.
                 let words = matches!(command, "completions" | "man") && option == "lang";
                 assert!(
