@@ -90,7 +90,14 @@ fn starts_item(c: char) -> bool {
 /// spaces between them to stay. Returns the item and where it ends.
 fn name_or_words(chars: &[char], i: usize) -> (String, usize) {
     let word_end = |mut k: usize| {
-        while k < chars.len() && (chars[k].is_alphabetic() || chars[k] == '_') {
+        // a name of two joined by a dash is one word (Liang–Barsky)
+        let joined = |k: usize| {
+            chars[k] == '–'
+                && k > 0
+                && chars[k - 1].is_alphabetic()
+                && chars.get(k + 1).is_some_and(|c| c.is_alphabetic())
+        };
+        while k < chars.len() && (chars[k].is_alphabetic() || chars[k] == '_' || joined(k)) {
             k += 1;
         }
         k
@@ -290,6 +297,10 @@ mod tests {
         assert_eq!(
             row("a b"),
             "<mrow><mi>a</mi><mspace width=\"0.3em\"/><mi>b</mi></mrow>"
+        );
+        assert_eq!(
+            row("Liang–Barsky ="),
+            "<mrow><mi>Liang–Barsky</mi><mo>=</mo></mrow>"
         );
         assert_eq!(
             row("piksel A"),

@@ -113,7 +113,9 @@ fn comparison(c: &Comparison, st: &Style) -> String {
     )
 }
 
-/// One row of the comparison (two when the problem file says why).
+/// One row of the comparison (two when the problem file says why); the
+/// value's name is text, which wraps in the narrow first column (MathML
+/// would not).
 fn compared_row(row: &Compared, st: &Style) -> String {
     let name = crate::report::words::labels::answer_name(&row.key, st.lang);
     let correct = match (&row.computed, row.verdict()) {
@@ -138,7 +140,7 @@ fn compared_row(row: &Compared, st: &Style) -> String {
         "<tr class=\"{class}\"><th rowspan=\"{}\" title=\"{}\">{}</th><td><code>{}</code></td><td>{correct}</td><td>{}</td></tr>\n{}",
         if why.is_some() { 2 } else { 1 },
         xml_escape(&row.key),
-        mathml::inline(&name),
+        xml_escape(&name),
         xml_escape(&row.printed),
         xml_escape(&st.w(&Msg::Printed(row.verdict()))),
         why.unwrap_or_default()
