@@ -444,7 +444,7 @@ fn surface<T: Scalar>(
         (None, None) => {
             let v = v3(T::zero(), T::zero(), T::one());
             tr.step(|| {
-                Step::new(Msg::UnitVector("V".into()), "V = (0, 0, 1)")
+                Step::new(Msg::UnitVector("V".into()), "")
                     .res("V", Val::vec3(&v))
                     .note(Msg::DefaultView)
             });

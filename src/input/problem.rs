@@ -3,7 +3,7 @@
 
 use crate::error::{Error, Result};
 use crate::input::fields::{toml_error, toml_reason, AngleIn, Num, Vec3In};
-use crate::msg::ErrMsg;
+use crate::msg::{ErrMsg, Erratum, Msg};
 use serde::de::{self, Deserializer};
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -102,12 +102,16 @@ pub struct ClipIn {
     pub segment: Vec<SegmentIn>,
 }
 
-/// One `[[errata]]` entry: where the source's printed answer is wrong, and why.
+/// One `[[errata]]` entry: where the source's printed answer differs from
+/// the right one, what kind of difference it is, and why.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ErratumIn {
     /// The result key (`project.points.B`).
     pub key: String,
+    /// A misprint, another convention, or a rounding (none: not said).
+    #[serde(default)]
+    pub kind: Option<Erratum>,
     /// The reason, in English.
     pub why: String,
     /// The reason in Bahasa Indonesia (shown with `--lang id`).
@@ -117,8 +121,13 @@ pub struct ErratumIn {
 
 impl ErratumIn {
     /// The reason in both languages the file gives.
-    pub fn reason(&self) -> crate::msg::Msg {
-        crate::msg::Msg::Written(self.why.clone(), self.why_id.clone())
+    pub fn why(&self) -> Msg {
+        Msg::Written(self.why.clone(), self.why_id.clone())
+    }
+
+    /// The reason after the words for its kind (`a misprint in the text: …`).
+    pub fn reason(&self) -> Msg {
+        Msg::Erratum(self.kind, Box::new(self.why()))
     }
 }
 
@@ -141,6 +150,9 @@ pub struct ProblemIn {
     pub title: String,
     /// Where it comes from.
     pub source: Option<String>,
+    /// Where it comes from, in Bahasa Indonesia (shown with `--lang id`).
+    #[serde(default)]
+    pub source_id: Option<String>,
     /// The statement, as a student reads it.
     pub statement: Option<String>,
     /// The title in Bahasa Indonesia (shown with `--lang id`).
@@ -178,6 +190,9 @@ pub struct ProblemIn {
     /// Remarks on the source beyond single answers (misprinted rules).
     #[serde(default)]
     pub source_notes: Vec<String>,
+    /// The remarks in Bahasa Indonesia (shown with `--lang id`).
+    #[serde(default)]
+    pub source_notes_id: Vec<String>,
     /// Any other key: kept for tools, ignored by solve.
     #[serde(flatten)]
     pub other: BTreeMap<String, toml::Value>,
@@ -206,12 +221,17 @@ impl ProblemIn {
     }
 
     /// The problem as a reader of Bahasa Indonesia sees it (when
-    /// `indonesian`): `title_id` and `statement_id` in place of `title` and
-    /// `statement` where the file gives them.
+    /// `indonesian`): `title_id`, `statement_id`, `source_id` and
+    /// `source_notes_id` in place of `title`, `statement`, `source` and
+    /// `source_notes` where the file gives them.
     pub fn localized(mut self, indonesian: bool) -> ProblemIn {
         if indonesian {
             self.title = self.title_id.take().unwrap_or(self.title);
             self.statement = self.statement_id.take().or(self.statement);
+            self.source = self.source_id.take().or(self.source);
+            if !self.source_notes_id.is_empty() {
+                self.source_notes = std::mem::take(&mut self.source_notes_id);
+            }
         }
         self
     }

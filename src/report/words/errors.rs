@@ -106,6 +106,7 @@ pub fn error(m: &ErrMsg, lang: Lang) -> String {
         | ErrMsg::NothingRendered
         | ErrMsg::Threads(_)
         | ErrMsg::RenderPrecision
+        | ErrMsg::NotTaken(_)
         | ErrMsg::OwnOutput => commands(m, lang),
     }
 }
@@ -645,7 +646,7 @@ fn problem(m: &ErrMsg, lang: Lang) -> String {
         ErrMsg::WindowNeeds => say(
             lang,
             "the window needs perspective.fovy, perspective.aspect and perspective.near",
-            "bidang pandang memerlukan perspective.fovy, perspective.aspect dan perspective.near",
+            "viewing window memerlukan perspective.fovy, perspective.aspect dan perspective.near",
         ),
         ErrMsg::LightsNeedShade => say(
             lang,
@@ -734,6 +735,10 @@ fn commands(m: &ErrMsg, lang: Lang) -> String {
             lang,
             "render always computes at f32 (--precision is for the calculator's worked steps): leave it out",
             "render selalu menghitung dengan f32 (--precision untuk langkah-langkah kalkulator): hilangkan opsi itu",
+        ),
+        ErrMsg::NotTaken(c) => f(
+            format!("grafika {c} does not take this option (grafika {c} --help lists those it takes)"),
+            format!("grafika {c} tidak menerima opsi ini (grafika {c} --help mendaftar opsi yang diterimanya)"),
         ),
         ErrMsg::OwnOutput => say(
             lang,
@@ -1142,6 +1147,7 @@ pub(crate) mod tests {
             ErrMsg::NothingRendered,
             ErrMsg::Threads(s("why")),
             ErrMsg::RenderPrecision,
+            ErrMsg::NotTaken(s("check")),
             ErrMsg::OwnOutput,
             ErrMsg::Man(s("why")),
         ]);
@@ -1349,6 +1355,7 @@ pub(crate) mod tests {
             | E::NothingRendered
             | E::Threads(_)
             | E::RenderPrecision
+            | E::NotTaken(_)
             | E::OwnOutput
             | E::Man(_)
             | E::Clap(..) => {}
