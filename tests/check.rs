@@ -962,3 +962,42 @@ fn one_misprint_copied_is_named_though_the_others_are_not() {
     assert_eq!(d.len(), 1, "{d:?}");
     assert_eq!(d[0]["keys"], serde_json::json!(["window.width"]));
 }
+
+/// `--answers-from-text` takes `--csv` as a student's sheet does (it wrote
+/// nothing and exited 0), refuses `--report` (a class report needs a
+/// class), and does not call an erratum's printed answer unexplained.
+#[test]
+fn the_texts_answers_go_to_a_csv_and_their_errata_explain_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("text.csv");
+    let out = grafika()
+        .args([
+            "check",
+            "problems/text-triangle.toml",
+            "--answers-from-text",
+        ])
+        .args(["--lang", "en", "--csv", csv.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let table = String::from_utf8_lossy(&out.stdout);
+    // B'' and C'' are misprints, window.right a rounding: the errata above
+    // the diagnosis say why; no line calls them unexplained.
+    assert!(table.contains("a misprint in the text"), "{table}");
+    assert!(!table.contains("No known mistake explains"), "{table}");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let rows: Vec<&str> = text.lines().collect();
+    assert_eq!(rows.len(), 2, "{text}");
+    // 5 of the 10 printed answers are right: A', B', C', A'' and top.
+    assert!(rows[1].contains(",5,10,5,0,5,0,0,0,"), "{text}");
+    let report = dir.path().join("class.md");
+    let e = json_err(&[
+        "check",
+        "problems/text-triangle.toml",
+        "--answers-from-text",
+        "--report",
+        report.to_str().unwrap(),
+    ]);
+    assert_eq!(e["field"], "report");
+    assert!(!report.exists());
+}

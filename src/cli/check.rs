@@ -49,7 +49,8 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
     };
     match (&a.answers, a.answers_from_text) {
         (Some(_), true) | (None, false) => Err(Error::why("answers", Twice::Answers)),
-        (None, true) => from_text(&paper, a, settings, json, style),
+        (None, true) if a.report.is_some() => Err(Error::why("report", ErrMsg::ReportNeedsClass)),
+        (None, true) => from_text(&paper, a, settings, json, style, outputs),
         (Some(path), false) if path.is_dir() => {
             class(&paper, path, settings, a, json, style, outputs)
         }
@@ -122,13 +123,15 @@ fn class(
     Ok((out, status))
 }
 
-/// Marks the answers the source printed (its `[printed]` table).
+/// Marks the answers the source printed (its `[printed]` table): the
+/// rows, or the CSV of its one sheet.
 fn from_text(
     paper: &Paper,
     a: &CheckArgs,
     settings: check::Settings,
     json: bool,
     style: &Style,
+    outputs: &Outputs,
 ) -> Result<(String, i32)> {
     let p = &paper.variants[0][0].problem;
     if paper.exam || p.printed.is_empty() {
@@ -140,7 +143,18 @@ fn from_text(
     let (_, answers) = check::answers_from_table(&p.printed);
     let who = (p.source.clone()).unwrap_or_else(|| tr(style.lang, "the text", "teks").into());
     let m = check::mark(p, &who, &answers, settings, true)?;
-    Ok((output(&[(String::new(), m)], json, style), 0))
+    let sheet = Sheet {
+        file: a.file.clone(),
+        who,
+        variant: Some(1),
+        outcome: Ok(vec![(String::new(), m)]),
+        note: None,
+    };
+    if let Some(out) = csv_out(a, std::slice::from_ref(&sheet), false, style.lang, outputs)? {
+        return Ok((out, 0));
+    }
+    let marked = sheet.outcome?;
+    Ok((output(&marked, json, style), 0))
 }
 
 /// The report's format by the file's extension.

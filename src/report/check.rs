@@ -136,7 +136,8 @@ fn diagnoses_text(m: &Marking, style: &Style) -> String {
     let undiagnosed: Vec<&str> = m
         .answers
         .iter()
-        .filter(|a| a.verdict == Verdict::Wrong && a.diagnosis.is_empty())
+        // an erratum of the source (listed above) explains its printed answer
+        .filter(|a| a.verdict == Verdict::Wrong && a.diagnosis.is_empty() && a.why.is_none())
         .map(|a| a.key.as_str())
         .collect();
     if !undiagnosed.is_empty() {
