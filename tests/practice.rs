@@ -1014,6 +1014,33 @@ fn an_unreadable_answer_says_where_and_is_asked_again() {
 }
 
 #[test]
+fn a_missing_last_bracket_is_named_once_at_the_end() {
+    // `(1/sqrt(2), 0, 1/sqrt(2)` (24 characters): only the list's closing
+    // `)` is missing, at column 25; the line says "cannot read" once.
+    for (lang, words, once) in [
+        ("en", "expected `)` at column 25, found the end", "cannot"),
+        (
+            "id",
+            "seharusnya `)` di kolom 25, ditemukan akhir teks",
+            "terbaca",
+        ),
+    ] {
+        let out = grafika()
+            .args(["practice", "problems/text-triangle.toml", "--lang", lang])
+            .env("NO_COLOR", "1")
+            .write_stdin("(1/sqrt(2), 0, 1/sqrt(2)\nquit\n")
+            .output()
+            .unwrap();
+        let text = String::from_utf8(out.stdout).unwrap();
+        let flat = text.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(flat.contains(words), "{lang}: {text}");
+        let line = flat.split("✗").nth(1).unwrap_or_default();
+        let line = line.split("[1/19]").next().unwrap_or_default();
+        assert_eq!(line.matches(once).count(), 1, "{lang}: {line}");
+    }
+}
+
+#[test]
 fn a_revealed_value_stays_revealed_and_a_retry_counts_apart() {
     // n shown, then back, then answered right: still revealed. u answered
     // wrong, back, right: the first verdict stands; the retry is shown.

@@ -24,8 +24,8 @@
 //! cannot be read gets the part at fault, the column in the whole answer
 //! and what was expected there.
 
-use crate::msg::{Msg, NumErr};
-use crate::num::expr::{components, Part};
+use crate::msg::{Msg, NumErr, Want};
+use crate::num::expr::{components, missing_close, Part};
 use crate::num::{parse_expr, Expr};
 use crate::stages::trace::Val;
 
@@ -225,8 +225,25 @@ fn list(given: &toml::Value, like: &Val, offset: usize) -> Result<Read, Msg> {
     if bad.is_empty() {
         Ok(Read::List(read))
     } else {
-        Err(Msg::Parts(bad))
+        Err(unclosed(given, like, offset).unwrap_or(Msg::Parts(bad)))
     }
+}
+
+/// A list written as text whose only fault is its missing last `)`
+/// (`(1/sqrt(2), 0, 1/sqrt(2)`): the reader's words say so (`)` expected
+/// at the end), not what the first part lacks once the `(` swallowed it.
+fn unclosed(given: &toml::Value, like: &Val, offset: usize) -> Option<Msg> {
+    let toml::Value::String(t) = given else {
+        return None;
+    };
+    let at = missing_close(t)?;
+    let closed = toml::Value::String(format!("{t})"));
+    list(&closed, like, offset).ok()?;
+    Some(Msg::Unreadable(NumErr::Expected(
+        Want::Close,
+        offset + at,
+        None,
+    )))
 }
 
 /// The parts of a list written as text ([`components`]). A matrix or a
@@ -457,6 +474,14 @@ mod tests {
         assert!(
             words.starts_with("x: ") && words.contains("column 10"),
             "{words}"
+        );
+        // `(1/sqrt(2), 0, 1/sqrt(2)`: only the list's `)` is missing, after
+        // its 24 characters; `(3, 1, 3` likewise after 8.
+        let e = read(&text("(1/sqrt(2), 0, 1/sqrt(2)"), &vec3()).unwrap_err();
+        assert_eq!(e, Msg::Unreadable(NumErr::Expected(Want::Close, 25, None)));
+        assert_eq!(
+            crate::num::expr::parse_vec3("(3, 1, 3").unwrap_err(),
+            NumErr::Expected(Want::Close, 9, None)
         );
         let e = read(&text("1, banana, 0"), &vec3()).unwrap_err();
         assert!(en(&e).starts_with("y: "), "{}", en(&e));

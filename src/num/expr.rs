@@ -196,8 +196,35 @@ pub fn strip_outer(text: &str) -> &str {
 }
 
 /// Parses `x,y,z` (or `(x,y,z)`, `[x,y,z]`, or `x; y; z` with decimal
-/// commas) into three expressions ([`components`]).
+/// commas) into three expressions ([`components`]). A vector whose only
+/// fault is its missing last `)` (`(3, 1, 3`) is told so: `)` expected at
+/// the end.
 pub fn parse_vec3(text: &str) -> Result<[Expr; 3], NumErr> {
+    vec3_parts(text).map_err(|e| match missing_close(text) {
+        Some(at) if vec3_parts(&format!("{text})")).is_ok() => {
+            NumErr::Expected(Want::Close, at, None)
+        }
+        _ => e,
+    })
+}
+
+/// Where a `)` is missing at the end of `text`: the column after its last
+/// character, when exactly one `(` is left open there and no bracket
+/// closes what it did not open.
+pub fn missing_close(text: &str) -> Option<usize> {
+    let mut open = Vec::new();
+    for c in text.chars() {
+        match c {
+            '(' | '[' => open.push(c),
+            ')' if open.pop() != Some('(') => return None,
+            ']' if open.pop() != Some('[') => return None,
+            _ => {}
+        }
+    }
+    (open == ['(']).then(|| text.trim_end().chars().count() + 1)
+}
+
+fn vec3_parts(text: &str) -> Result<[Expr; 3], NumErr> {
     let parts = components(text);
     if parts.len() != 3 {
         return Err(NumErr::Count(parts.len(), text.to_string()));

@@ -3,6 +3,7 @@
 //! per event, JSON Lines, with the keys of `check`).
 
 use crate::input::answer::Read;
+use crate::msg::Msg;
 use crate::num::Real;
 use crate::report::lang::{tr, Lang};
 use crate::report::mistakes::mistake_text;
@@ -238,7 +239,7 @@ fn verdict_head(o: &Outcome, lang: Lang) -> (Tone, String) {
             } else {
                 shape
             };
-            let why = crate::report::words::words(&o.note, lang);
+            let why = unread_why(&o.note, lang);
             let why = if why.is_empty() {
                 String::new()
             } else {
@@ -258,6 +259,19 @@ fn verdict_head(o: &Outcome, lang: Lang) -> (Tone, String) {
                 },
             )
         }
+    }
+}
+
+/// Why an answer could not be read, without the words "cannot be read"
+/// that its line already starts with (each part's reason after its name).
+fn unread_why(m: &Msg, lang: Lang) -> String {
+    match m {
+        Msg::Unreadable(e) => crate::report::words::errors::number(e, lang),
+        Msg::Parts(parts) => (parts.iter())
+            .map(|(part, why)| format!("{part}: {}", unread_why(why, lang)))
+            .collect::<Vec<_>>()
+            .join("; "),
+        m => crate::report::words::words(m, lang),
     }
 }
 
