@@ -81,7 +81,27 @@ impl Number {
 /// a code or status word, or none. The error is the note for the student:
 /// which part, at which column, and what was expected there.
 pub fn read(given: &toml::Value, like: &Val) -> Result<Read, Msg> {
-    read_at(given, like, 0)
+    match given {
+        toml::Value::String(t) => match named(t) {
+            Some((value, at)) => read_at(&toml::Value::String(value.into()), like, at),
+            None => read_at(given, like, 0),
+        },
+        _ => read_at(given, like, 0),
+    }
+}
+
+/// An answer written after its name, as on paper (`n = (√2/2, 0, √2/2)`,
+/// `A'' = (0, −√2/60)`, `top = 0,0414`): the value after the `=`, and how
+/// many characters come before it. A name starts with a letter and holds
+/// letters, digits, primes, `_`, `.` and spaces, at most 24 characters.
+fn named(t: &str) -> Option<(&str, usize)> {
+    let (name, value) = t.split_once('=')?;
+    let name = name.trim();
+    let is_name = name.chars().next().is_some_and(char::is_alphabetic)
+        && name.chars().count() <= 24
+        && (name.chars()).all(|c| c.is_alphanumeric() || " _.'′″".contains(c));
+    let skipped = t.len() - value.trim_start().len();
+    is_name.then(|| (value.trim_start(), t[..skipped].chars().count()))
 }
 
 /// How deep lists of `like` go (0 for a number or a word).
@@ -483,6 +503,18 @@ mod tests {
             crate::num::expr::parse_vec3("(3, 1, 3").unwrap_err(),
             NumErr::Expected(Want::Close, 9, None)
         );
+        // written after its name, as on paper: the column counts the name
+        let n = read(&text("n = (1/sqrt(2), 0, 1/sqrt(2))"), &vec3()).unwrap();
+        let r = std::f64::consts::FRAC_1_SQRT_2;
+        let got = values(&n);
+        assert!((got[0] - r).abs() < 1e-15 && got[1] == 0.0 && (got[2] - r).abs() < 1e-15);
+        let e = read(&text("A'' = (0, x, 1)"), &vec3()).unwrap_err();
+        assert!(
+            en(&e).contains("y: ") && en(&e).contains("column 11"),
+            "{}",
+            en(&e)
+        );
+        assert!(read(&text("1 = 1"), &vec3()).is_err());
         let e = read(&text("1, banana, 0"), &vec3()).unwrap_err();
         assert!(en(&e).starts_with("y: "), "{}", en(&e));
         // a decimal number with a comma is one number

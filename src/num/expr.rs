@@ -414,6 +414,21 @@ impl Parser<'_> {
             false
         }
     }
+    /// `sqrt` written against a digit (`sqrt2`): eaten, the digit left.
+    fn eat_sqrt_digits(&mut self) -> bool {
+        let at = self.i + 4;
+        let word = self
+            .s
+            .get(self.i..at)
+            .is_some_and(|w| w.iter().copied().eq("sqrt".chars()));
+        if word && self.s.get(at).is_some_and(char::is_ascii_digit) {
+            self.i = at;
+            true
+        } else {
+            false
+        }
+    }
+
     fn eat_word(&mut self, w: &str) -> bool {
         self.skip_ws();
         let n = w.chars().count();
@@ -546,6 +561,10 @@ impl Parser<'_> {
         if self.eat_word("pi") || self.eat('π') {
             return Ok(Expr::Pi);
         }
+        if self.eat_sqrt_digits() {
+            // `sqrt2` as people write √2: the root of the number that follows
+            return Ok(Expr::Sqrt(Box::new(self.number()?)));
+        }
         if self.eat_word("sqrt") {
             if !self.eat('(') {
                 return Err(self.err(Want::OpenAfterSqrt));
@@ -630,6 +649,11 @@ mod tests {
         assert_eq!(f("2.5e-1"), 0.25);
         assert_eq!(f(".5"), 0.5);
         assert!((f("pi/2") - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+        // `sqrt2` as people write √2 (the root of the number only)
+        assert_eq!(parse_expr("sqrt2/2"), parse_expr("√2/2"));
+        assert_eq!(parse_expr("3sqrt2"), parse_expr("3√2"));
+        assert_eq!(f("sqrt16^2"), 16.0);
+        assert!(parse_expr("sqrtx").is_err());
     }
 
     #[test]

@@ -12,7 +12,7 @@ pub fn title(t: DrawnTitle, lang: Lang) -> String {
         DrawnTitle::EyeCoordinates => ("Eye coordinates", "Koordinat kamera"),
         DrawnTitle::Projection => ("Projection onto the near plane", "Proyeksi ke near plane"),
         DrawnTitle::Pipeline => ("The viewing pipeline", "Pipeline viewing"),
-        DrawnTitle::Window => ("The viewing window", "Bidang pandang"),
+        DrawnTitle::Window => ("The viewing window", "Viewing window"),
         DrawnTitle::Clipping => ("Line clipping", "Clipping garis"),
         DrawnTitle::Lighting => ("Lighting at a point", "Pencahayaan di sebuah titik"),
     };
