@@ -12,10 +12,10 @@ use crate::num::Scalar;
 use crate::stages::camera::{self, Camera};
 use crate::stages::clip::ClipBox;
 use crate::stages::projection::{self, Projection};
-use crate::stages::trace::{Recorder, Report, Val};
+use crate::stages::trace::{Recorder, Val};
 use crate::stages::window;
 use crate::tutor::keys::{basis_result, clip_run, shade_run, window_result};
-use serde_json::{json, Value};
+use crate::tutor::solution::{at, p3, Asked, CameraAt, Given, Report, ShadeAt, WindowAt};
 
 /// The camera from its flags.
 pub fn camera_from<T: Scalar>(c: &CameraArgs) -> Result<Camera<T>> {
@@ -26,22 +26,13 @@ pub fn camera_from<T: Scalar>(c: &CameraArgs) -> Result<Camera<T>> {
     })
 }
 
-/// Input JSON of a camera.
-pub fn camera_json<T: Scalar>(c: &Camera<T>) -> Value {
-    json!({ "eye": input::json3(&c.pe), "look": input::json3(&c.pr), "up": input::json3(&c.vup) })
-}
-
 /// `grafika basis`.
 pub fn basis<T: Scalar>(c: &CameraArgs) -> Result<Report> {
     let cam = camera_from::<T>(c)?;
     let mut rec = Recorder::new();
     let b = camera::basis(&cam, &mut rec)?;
-    Ok(Report::from_recorder::<T>(
-        "basis",
-        camera_json(&cam),
-        basis_result(&b),
-        rec,
-    ))
+    let given = Given::Basis(CameraAt::of(&cam));
+    Ok(one_part::<T>(given, basis_result(&b), rec))
 }
 
 /// `grafika view`.
@@ -63,17 +54,14 @@ pub fn view<T: Scalar>(c: &CameraArgs, points: &[String]) -> Result<Report> {
     let mut result = basis_result(&b);
     result.push(("matrix".into(), Val::mat4(&m)));
     result.push(("points".into(), Val::Map(eye)));
-    let mut inp = camera_json(&cam);
-    inp["points"] = points_json(&pts);
-    Ok(Report::from_recorder::<T>("view", inp, result, rec))
+    let world = pts.iter().map(|(n, p)| (n.clone(), p3(p))).collect();
+    let given = Given::View(CameraAt::of(&cam), world);
+    Ok(one_part::<T>(given, result, rec))
 }
 
-fn points_json<T: Scalar>(pts: &[(String, crate::num::vec::V3<T>)]) -> Value {
-    Value::Object(
-        pts.iter()
-            .map(|(n, p)| (n.clone(), input::json3(p)))
-            .collect(),
-    )
+/// The report of a calculator command: one part.
+fn one_part<T: Scalar>(given: Given, result: Vec<(String, Val)>, rec: Recorder) -> Report {
+    Report::from_recorder::<T>(Asked::Command, vec![given], result, rec)
 }
 
 /// `grafika project`.
@@ -99,17 +87,13 @@ pub fn project<T: Scalar>(a: &ProjectArgs) -> Result<Report> {
         let q = projection::project(&proj, n, p, &mut rec)?;
         out.push((n.clone(), Val::vec3(&q)));
     }
-    let kind = match &proj {
-        Projection::Plane { d } => json!({ "d": input::jnum(d) }),
-        Projection::General { zprp, zvp } => {
-            json!({ "cop": input::jnum(zprp), "plane": input::jnum(zvp) })
-        }
-        Projection::Ortho => json!({ "ortho": true }),
+    let given = Given::Project {
+        projection: Given::projection(&proj),
+        points: pts.iter().map(|(n, p)| (n.clone(), Val::vec3(p))).collect(),
+        chained: false,
     };
-    let inp = json!({ "projection": kind, "points": points_json(&pts) });
-    Ok(Report::from_recorder::<T>(
-        "project",
-        inp,
+    Ok(one_part::<T>(
+        given,
         vec![("points".into(), Val::Map(out))],
         rec,
     ))
@@ -160,13 +144,19 @@ pub fn window<T: Scalar>(a: &WindowArgs) -> Result<Report> {
             result.push(("pixels".into(), Val::Map(px)));
         }
     }
-    let inp = json!({
-        "fovy": input::jnum(&fovy), "aspect": input::jnum(&aspect), "near": input::jnum(&near),
-        "far": far.as_ref().map(input::jnum),
-        "viewport": vp.as_ref().map(|(w, h)| json!([input::jnum(w), input::jnum(h)])),
-        "points": Value::Object(pts.iter().map(|(n, (x, y))| (n.clone(), json!([input::jnum(x), input::jnum(y)]))).collect()),
+    let given = Given::Window(WindowAt {
+        fovy: at(&fovy),
+        aspect: at(&aspect),
+        near: at(&near),
+        far: far.as_ref().map(at),
+        viewport: vp.as_ref().map(|(w, h)| (at(w), at(h))),
+        points: pts
+            .iter()
+            .map(|(n, (x, y))| (n.clone(), Val::vec2(x, y)))
+            .collect(),
+        projected: false,
     });
-    Ok(Report::from_recorder::<T>("window", inp, result, rec))
+    Ok(one_part::<T>(given, result, rec))
 }
 
 /// `grafika clip`.
@@ -182,8 +172,8 @@ pub fn clip<T: Scalar>(a: &ClipArgs) -> Result<Report> {
     );
     let mut rec = Recorder::new();
     let result = clip_run(&b, &p0, &p1, &mut rec);
-    let inp = json!({ "min": input::json3(&b.min), "max": input::json3(&b.max), "from": input::json3(&p0), "to": input::json3(&p1) });
-    Ok(Report::from_recorder::<T>("clip", inp, result, rec))
+    let given = Given::clip(&b, (&p0, &p1), None);
+    Ok(one_part::<T>(given, result, rec))
 }
 
 /// `grafika shade`.
@@ -197,20 +187,9 @@ pub fn shade<T: Scalar>(a: &ShadeArgs) -> Result<Report> {
     let mut rec = Recorder::new();
     let setup = build::<T>(&sh, &file, "", "light", &mut rec)?;
     let result = shade_run(&setup, &crate::stages::lighting::Rules::default(), &mut rec);
-    let s = &setup.surface;
-    let m = &setup.material;
-    let inp = json!({
-        "model": m.model.name(),
-        "normal": input::json3(&s.normal),
-        "view": input::json3(&s.view),
-        "position": input::json3(&s.position),
-        "camera": s.camera.as_ref().map(input::json3),
-        "color": m.color.iter().map(Scalar::to_f64).collect::<Vec<_>>(),
-        "ka": m.ka.to_f64(), "kd": m.kd.to_f64(), "ks": m.ks.to_f64(), "shininess": m.shininess.to_f64(),
-        "specular": m.specular_on, "specular_requires_lit": m.specular_requires_lit,
-        "lights": a.lights.as_ref().map(|p| p.display().to_string()),
-    });
-    Ok(Report::from_recorder::<T>("shade", inp, result, rec))
+    let lights = a.lights.as_ref().map(|p| p.display().to_string());
+    let given = Given::Shade(ShadeAt::of(&setup, lights));
+    Ok(one_part::<T>(given, result, rec))
 }
 
 /// The flags' expressions as a `[shade]` table.

@@ -19,7 +19,7 @@ use crate::msg::{ErrMsg, Msg};
 use crate::num::Precision;
 use crate::report::lang::{tr, Lang};
 use crate::report::Style;
-use crate::stages::trace::Report;
+use crate::tutor::solution::Report;
 use args::{CameraArgs, Cli, ClipArgs, Command, ProjectArgs, ShadeArgs, WindowArgs};
 use clap::Parser;
 use print::{Kind, Stopped};
@@ -327,11 +327,11 @@ fn write_html(cli: &Cli, report: &Report, style: &Style, outputs: &Outputs) -> R
 
 /// The page's title: the problem's title for `solve`, else the command.
 fn page_title(report: &Report, style: &Style) -> String {
-    match report.input.get("title").and_then(|t| t.as_str()) {
-        Some(t) => format!("grafika {}: {t}", report.command),
+    match report.title() {
+        Some(t) => format!("grafika {}: {t}", report.command()),
         None => format!(
             "grafika {} — {}",
-            report.command,
+            report.command(),
             style.tr("worked solution", "penyelesaian")
         ),
     }

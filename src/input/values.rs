@@ -5,7 +5,6 @@ use crate::error::{Error, Result};
 use crate::msg::Msg;
 use crate::num::vec::V3;
 use crate::num::{parse_expr, parse_vec3, Angle, Expr, Scalar};
-use serde_json::{json, Value};
 
 /// A number expression from the field `field`.
 pub fn expr(field: &str, text: &str) -> Result<Expr> {
@@ -97,14 +96,4 @@ pub fn size<T: Scalar>(field: &str, text: &str) -> Result<(T, T)> {
         .split_once(['x', 'X', '×'])
         .ok_or_else(|| Error::said(field, Msg::ErrSize(text.to_string())))?;
     Ok((num(field, w)?, num(field, h)?))
-}
-
-/// A number as input JSON, printed as its own precision prints it.
-pub fn jnum<T: Scalar>(x: &T) -> Value {
-    json!(x.shown().value)
-}
-
-/// A vector as input JSON.
-pub fn json3<T: Scalar>(a: &V3<T>) -> Value {
-    json!([jnum(&a[0]), jnum(&a[1]), jnum(&a[2])])
 }

@@ -10,6 +10,7 @@ pub mod escape;
 pub mod figure;
 pub mod gift;
 pub mod html;
+pub mod json;
 pub mod lang;
 pub mod latex;
 pub mod mathml;
@@ -23,7 +24,8 @@ pub mod words;
 
 use crate::msg::Msg;
 use crate::num::Shown;
-use crate::stages::trace::{Compared, Comparison, Report, Step, Val};
+use crate::stages::trace::{Step, Val};
+use crate::tutor::solution::{Asked, Compared, Comparison, Report};
 use comfy_table::{presets, Table};
 use lang::{tr, Lang};
 use serde_json::{json, Map, Value};
@@ -233,6 +235,15 @@ impl Style {
 }
 
 impl Report {
+    /// The named results the answer shows: a render's summary, else the
+    /// results.
+    pub fn answer(&self) -> std::borrow::Cow<'_, [(String, Val)]> {
+        match &self.asked {
+            Asked::Render(run) => std::borrow::Cow::Owned(render::summary(run)),
+            _ => std::borrow::Cow::Borrowed(&self.result),
+        }
+    }
+
     /// The worked solution and answer as text.
     pub fn to_text(&self, style: &Style) -> String {
         let mut out = String::new();
@@ -249,9 +260,9 @@ impl Report {
             out.push_str(&style.step_body(s));
         }
         out.push_str(&format!("\n{}\n", style.tr("Answer", "Jawaban")));
-        for (k, v) in &self.result {
-            let k = match self.command.as_str() {
-                "render" => render::label(k, style.lang),
+        for (k, v) in self.answer().iter() {
+            let k = match &self.asked {
+                Asked::Render(_) => render::label(k, style.lang),
                 _ => k.clone(),
             };
             push_answer(&mut out, style, "  ", &k, v);
@@ -270,14 +281,15 @@ impl Report {
     /// notes, warnings) depend on `lang`.
     pub fn to_json(&self, lang: Lang) -> Value {
         let style = Style::new(4, true, lang);
+        let answer = self.answer();
         let result = Value::Object(
-            self.result
+            answer
                 .iter()
                 .map(|(k, v)| (k.clone(), value_json(v)))
                 .collect(),
         );
         let exact = Value::Object(
-            self.result
+            answer
                 .iter()
                 .map(|(k, v)| (k.clone(), exact_json(v)))
                 .collect(),
@@ -285,9 +297,9 @@ impl Report {
         let steps: Vec<Value> = self.steps.iter().map(|s| step_json(s, lang)).collect();
         let warnings: Vec<String> = self.warnings.iter().map(|w| style.w(w)).collect();
         let mut obj = json!({
-            "command": self.command,
+            "command": self.command(),
             "precision": self.precision,
-            "input": self.input,
+            "input": json::input(self),
             "result": result,
             "exact": exact,
             "steps": steps,
@@ -297,8 +309,8 @@ impl Report {
         if !notes.is_empty() {
             obj["notes"] = json!(notes);
         }
-        for (k, v) in &self.extra {
-            obj[k] = v.clone();
+        if let Asked::Render(run) = &self.asked {
+            obj["stats"] = render::stats_json(run);
         }
         if !self.source_notes.is_empty() {
             obj["source_notes"] = json!(self.source_notes);
@@ -312,7 +324,10 @@ impl Report {
     /// The notes after the answer: the report's own, the comparison with
     /// the printed answers, the notes on the source.
     fn all_notes(&self, style: &Style) -> Vec<String> {
-        let mut notes = self.notes.clone();
+        let mut notes = Vec::new();
+        if let Asked::Render(run) = &self.asked {
+            notes.extend(run.stats_asked.then(|| render::stats_text(run, style.lang)));
+        }
         notes.extend(
             self.comparison
                 .as_ref()

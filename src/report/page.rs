@@ -62,7 +62,7 @@ pub fn report_page(
     };
     body.push_str(&Doc::Html.steps_with(r, st, &mut under));
     body.push_str(&heading(1, st.tr("Answer", "Jawaban")));
-    body.push_str(&answers(st, &r.result));
+    body.push_str(&answers(st, &r.answer()));
     for n in r.all_notes(st) {
         body.push_str(&format!("<p class=\"note\">{}</p>\n", xml_escape(&n)));
     }

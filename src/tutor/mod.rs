@@ -13,4 +13,5 @@ pub mod generate;
 pub mod keys;
 pub mod pixel;
 pub mod practice;
+pub mod solution;
 pub mod solve;

@@ -14,11 +14,13 @@ use crate::num::{Expr, Scalar};
 use crate::stages::camera::{self, Camera};
 use crate::stages::clip::ClipBox;
 use crate::stages::projection::{self, Projection};
-use crate::stages::trace::{Compared, Comparison, Recorder, Report, Step, Trace, Val};
+use crate::stages::trace::{Recorder, Step, Trace, Val};
 use crate::stages::window;
 use crate::tutor::follow;
 use crate::tutor::keys::{basis_result, clip_checked, clip_result, shade_run, window_result};
-use serde_json::{json, Value};
+use crate::tutor::solution::{
+    at, p3, Asked, CameraAt, Compared, Comparison, Given, Report, ShadeAt, WindowAt,
+};
 use std::path::Path;
 
 /// Reads and solves a problem file at precision `T`.
@@ -87,26 +89,27 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
 
 /// Solves a parsed problem at precision `T`, with stage results altered by `hooks`.
 pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> {
-    let mut rec = Recorder::new();
-    let mut result: Vec<(String, Val)> = Vec::new();
+    let mut out = Out::default();
+    let out = &mut out;
     let points: Vec<(String, V3<T>)> = p
         .points()?
         .iter()
         .map(|(n, v)| Ok((n.clone(), eval3(&format!("points.{n}"), v)?)))
         .collect::<Result<_>>()?;
-    let eye_pts = view_part(p, hooks, &points, &mut rec, &mut result)?;
+    let eye_pts = view_part(p, hooks, &points, out)?;
     let near: Option<T> = p
         .perspective
         .as_ref()
         .and_then(|x| x.near.as_ref())
         .map(|n| eval("perspective.near", n))
         .transpose()?;
-    let projected = project_part(p, hooks, &eye_pts, near.as_ref(), &mut rec, &mut result)?;
+    let projected = project_part(p, hooks, &eye_pts, near.as_ref(), out)?;
     let eyes = (&eye_pts[..], &projected[..]);
-    let win = window_part(p, hooks, eyes, near.as_ref(), &mut rec, &mut result)?;
-    viewport_part(p, win.as_ref(), &projected, &mut rec, &mut result)?;
-    clip_part(p, hooks, &points, &mut rec, &mut result)?;
-    shade_part(p, hooks, &mut rec, &mut result)?;
+    let win = window_part(p, hooks, eyes, near.as_ref(), out)?;
+    viewport_part(p, win.as_ref(), &projected, out)?;
+    clip_part(p, hooks, &points, out)?;
+    shade_part(p, hooks, out)?;
+    let Out { rec, result, parts } = std::mem::take(out);
     if result.is_empty() {
         return Err(Error::why("ask", ErrMsg::NothingToSolve));
     }
@@ -118,7 +121,8 @@ pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> 
         _ => 1e-9,
     };
     let comparison = compare_printed(p, &result, rel);
-    let mut report = Report::from_recorder::<T>("solve", input_json(p), result, rec);
+    let asked = Asked::File(Box::new(p.clone()));
+    let mut report = Report::from_recorder::<T>(asked, parts, result, rec);
     report.comparison = comparison;
     report.source_notes = p.source_notes.clone();
     Ok(report)
@@ -126,6 +130,14 @@ pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> 
 
 /// A named point.
 type Named<T> = (String, V3<T>);
+
+/// Where the parts write: the steps, the named results, what each part was given.
+#[derive(Default)]
+struct Out {
+    rec: Recorder,
+    result: Vec<(String, Val)>,
+    parts: Vec<Given>,
+}
 
 /// Named points as a result map.
 fn points_val<T: Scalar>(pts: &[(String, V3<T>)]) -> Val {
@@ -138,9 +150,9 @@ fn view_part<T: Scalar>(
     p: &ProblemIn,
     hooks: &Hooks<T>,
     points: &[(String, V3<T>)],
-    rec: &mut Recorder,
-    result: &mut Vec<(String, Val)>,
+    out: &mut Out,
 ) -> Result<Vec<(String, V3<T>)>> {
+    let Out { rec, result, parts } = out;
     let want_view = p.asks("view") || p.asks("project") || p.asks("viewport");
     let c = match (want_view, &p.camera) {
         (true, Some(c)) => c,
@@ -176,6 +188,8 @@ fn view_part<T: Scalar>(
         r.push(("matrix".into(), Val::mat4(&m)));
         r.push(("points".into(), points_val(&eye_pts)));
         result.push(("view".into(), Val::Map(r)));
+        let world = points.iter().map(|(n, q)| (n.clone(), p3(q))).collect();
+        parts.push(Given::View(CameraAt::of(&cam), world));
     }
     Ok(eye_pts)
 }
@@ -187,9 +201,9 @@ fn project_part<T: Scalar>(
     hooks: &Hooks<T>,
     eye_pts: &[(String, V3<T>)],
     near: Option<&T>,
-    rec: &mut Recorder,
-    result: &mut Vec<(String, Val)>,
+    out: &mut Out,
 ) -> Result<Vec<(String, V3<T>)>> {
+    let Out { rec, result, parts } = out;
     if !(p.asks("project") || p.asks("viewport")) || eye_pts.is_empty() {
         return Ok(vec![]);
     }
@@ -213,6 +227,14 @@ fn project_part<T: Scalar>(
     if p.asks("project") {
         let r = vec![("points".into(), points_val(&projected))];
         result.push(("project".into(), Val::Map(r)));
+        parts.push(Given::Project {
+            projection: Given::projection(&proj),
+            points: eye_pts
+                .iter()
+                .map(|(n, e)| (n.clone(), Val::vec3(e)))
+                .collect(),
+            chained: true,
+        });
     }
     Ok(projected)
 }
@@ -224,9 +246,9 @@ fn window_part<T: Scalar>(
     hooks: &Hooks<T>,
     eyes: (&[Named<T>], &[Named<T>]),
     near: Option<&T>,
-    rec: &mut Recorder,
-    result: &mut Vec<(String, Val)>,
+    out: &mut Out,
 ) -> Result<Option<window::Window<T>>> {
+    let Out { rec, result, parts } = out;
     let per = match &p.perspective {
         Some(per) if p.asks("window") || p.asks("viewport") => per,
         _ => return Ok(None),
@@ -278,6 +300,22 @@ fn window_part<T: Scalar>(
     }
     if p.asks("window") {
         result.push(("window".into(), Val::Map(r)));
+        parts.push(Given::Window(WindowAt {
+            fovy: at(&fovy),
+            aspect: at(&aspect),
+            near: at(near),
+            far: far.as_ref().map(at),
+            viewport: None,
+            points: match p.asks("project") {
+                true => eyes
+                    .1
+                    .iter()
+                    .map(|(n, q)| (n.clone(), Val::vec3(q)))
+                    .collect(),
+                false => vec![],
+            },
+            projected: true,
+        }));
     }
     Ok(Some(w))
 }
@@ -287,9 +325,9 @@ fn viewport_part<T: Scalar>(
     p: &ProblemIn,
     win: Option<&window::Window<T>>,
     projected: &[(String, V3<T>)],
-    rec: &mut Recorder,
-    result: &mut Vec<(String, Val)>,
+    out: &mut Out,
 ) -> Result<()> {
+    let Out { rec, result, parts } = out;
     let vp = p.perspective.as_ref().and_then(|x| x.viewport.as_ref());
     let (true, Some(w), Some(vp)) = (p.asks("viewport"), win, vp) else {
         return Ok(());
@@ -300,6 +338,9 @@ fn viewport_part<T: Scalar>(
     );
     window::validate_viewport(&vw, &vh).map_err(|e| e.in_field("perspective.viewport"))?;
     rec.section(Msg::SecViewport);
+    if let Some(Given::Window(w)) = parts.last_mut() {
+        w.viewport = Some((at(&vw), at(&vh)));
+    }
     let px: Vec<(String, Val)> = projected
         .iter()
         .map(|(n, q)| {
@@ -319,9 +360,9 @@ fn clip_part<T: Scalar>(
     p: &ProblemIn,
     hooks: &Hooks<T>,
     points: &[(String, V3<T>)],
-    rec: &mut Recorder,
-    result: &mut Vec<(String, Val)>,
+    out: &mut Out,
 ) -> Result<()> {
+    let Out { rec, result, parts } = out;
     let (true, Some(c)) = (p.asks("clip"), &p.clip) else {
         return Ok(());
     };
@@ -345,6 +386,8 @@ fn clip_part<T: Scalar>(
             follow::clipping(g, &prefix, &b, (&p0, &p1), &mut r);
         }
         all.push(Val::Map(clip_result(&r)));
+        let segment = (c.segment.len() > 1).then_some(i);
+        parts.push(Given::clip(&b, (&p0, &p1), segment));
     }
     match all.len() {
         0 => {}
@@ -355,12 +398,8 @@ fn clip_part<T: Scalar>(
 }
 
 /// Lighting at the `[shade]` point.
-fn shade_part<T: Scalar>(
-    p: &ProblemIn,
-    hooks: &Hooks<T>,
-    rec: &mut Recorder,
-    result: &mut Vec<(String, Val)>,
-) -> Result<()> {
+fn shade_part<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>, out: &mut Out) -> Result<()> {
+    let Out { rec, result, parts } = out;
     match (p.asks("shade"), &p.shade) {
         (true, Some(sh)) => {
             rec.section(Msg::SecLighting);
@@ -385,6 +424,7 @@ fn shade_part<T: Scalar>(
                 _ => shade_run(&setup, &hooks.shade, rec),
             };
             result.push(("shade".into(), Val::Map(r)));
+            parts.push(Given::Shade(ShadeAt::of(&setup, None)));
             Ok(())
         }
         _ if !p.light.is_empty() && p.shade.is_none() => {
@@ -392,60 +432,6 @@ fn shade_part<T: Scalar>(
         }
         _ => Ok(()),
     }
-}
-
-/// The problem's inputs as JSON numbers (f64 values of the written numbers;
-/// names for named segment ends).
-fn input_json(p: &ProblemIn) -> Value {
-    let n = |x: &Num| x.0.eval::<f64>().map(|v| json!(v)).unwrap_or(Value::Null);
-    let v3 = |v: &Vec3In| json!([n(&v[0]), n(&v[1]), n(&v[2])]);
-    let pref = |r: &PointRef| match r {
-        PointRef::At(v) => v3(v),
-        PointRef::Named(name) => json!(name),
-    };
-    let mut o = json!({ "title": p.title, "source": p.source, "ask": p.ask });
-    if let Some(c) = &p.camera {
-        o["camera"] = json!({ "eye": v3(&c.eye), "look": v3(&c.look), "up": v3(&c.up) });
-    }
-    if let Ok(points) = p.points() {
-        o["points"] = Value::Object(points.iter().map(|(k, v)| (k.clone(), v3(v))).collect());
-    }
-    if let Some(per) = &p.perspective {
-        o["perspective"] = json!({
-            "near": per.near.as_ref().map(n),
-            "far": per.far.as_ref().map(n),
-            "fovy": per.fovy.as_ref().and_then(|a| a.0.degrees::<f64>().ok()),
-            "aspect": per.aspect.as_ref().map(n),
-            "viewport": per.viewport.as_ref().map(|v| json!([n(&v[0]), n(&v[1])])),
-            "d": per.d.as_ref().map(n),
-        });
-    }
-    if let Some(c) = &p.clip {
-        let segs: Vec<Value> = c
-            .segment
-            .iter()
-            .map(|s| json!({ "from": pref(&s.from), "to": pref(&s.to) }))
-            .collect();
-        o["clip"] = json!({ "min": v3(&c.min), "max": v3(&c.max), "segment": segs });
-    }
-    if let Some(sh) = &p.shade {
-        let ov = |v: &Option<Vec3In>| v.as_ref().map(v3);
-        o["shade"] = json!({
-            "model": sh.model.unwrap_or_default().name(),
-            "light": ov(&sh.light), "normal": ov(&sh.normal), "view": ov(&sh.view),
-            "color": ov(&sh.color), "camera": ov(&sh.camera), "position": ov(&sh.position),
-            "ka": sh.ka.as_ref().map(n), "kd": sh.kd.as_ref().map(n),
-            "ks": sh.ks.as_ref().map(n), "shininess": sh.shininess.as_ref().map(n),
-        });
-        if !p.light.is_empty() {
-            o["light"] =
-                json!(p.light.iter().map(|l| json!({
-                "type": format!("{:?}", l.kind).to_lowercase(),
-                "direction": ov(&l.direction), "position": ov(&l.position), "axis": ov(&l.axis),
-            })).collect::<Vec<_>>());
-        }
-    }
-    o
 }
 
 /// A segment end: its coordinates, or the named point's.

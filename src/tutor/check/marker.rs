@@ -40,8 +40,6 @@ pub struct Marker {
     pub result: Tree,
     /// The worked steps of the solution.
     pub steps: Vec<Step>,
-    /// The problem's inputs, as `solve --json` gives them.
-    pub input: serde_json::Value,
     /// The keys in the order of the text's solution.
     pub order: Vec<String>,
     /// The keys `check` expects: the problem's `[check] keys`, else
@@ -99,7 +97,6 @@ impl Marker {
             order: ordered_keys(&result),
             result,
             steps: report.steps,
-            input: report.input,
             keys,
             settings,
             variants,

@@ -26,8 +26,8 @@ use crate::input::problem::ProblemIn;
 use crate::msg::Msg;
 use crate::num::format::fmt_dec;
 use crate::num::rng::SplitMix64;
-use crate::stages::trace::Report;
 use crate::stages::trace::Val;
+use crate::tutor::solution::Report;
 use crate::tutor::solve::lookup;
 
 use std::collections::HashSet;
