@@ -1,7 +1,7 @@
 //! The catalog of known mistakes, in one place. Each entry recomputes a
 //! problem the wrong way — by running the real stages on altered inputs
 //! (`altered`), or with one stage result altered between stages
-//! ([`solve::Hooks`]), or with one documented change to the result tree —
+//! ([`run::Hooks`](crate::tutor::run::Hooks)), or with one documented change to the result tree —
 //! so that `grafika check` can say which mistake reproduces a wrong answer.
 //! No pipeline math is repeated here.
 //!
@@ -17,10 +17,10 @@ use crate::stages::camera::Basis;
 use crate::stages::lighting::{LightKind, Rules};
 use crate::stages::trace::Val;
 use crate::stages::window::Window;
-use crate::tutor::solve::{self, Hooks};
+use crate::tutor::run::Hooks;
+use crate::tutor::solve;
 
-/// A result tree, as `solve` returns it.
-pub type Tree = Vec<(String, Val)>;
+pub use crate::tutor::solution::Tree;
 
 /// One known mistake.
 pub struct Mistake {

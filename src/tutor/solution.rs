@@ -29,6 +29,10 @@ pub fn at<T: Scalar>(x: &T) -> f64 {
     x.shown().value
 }
 
+/// Named results, in order (docs/spec.md §3's keys; a part's results
+/// nest under its key in a problem file's).
+pub type Tree = Vec<(String, Val)>;
+
 /// What was asked.
 #[derive(Clone, Debug)]
 pub enum Asked {

@@ -4,20 +4,22 @@
 //! printed.
 
 use crate::error::{Error, Result};
-use crate::input;
-use crate::input::fields::{Num, Vec3In};
+use crate::input::part::Problem;
 use crate::input::problem::{PointRef, ProblemIn};
-use crate::msg::{Bound, ErrMsg, Msg};
+use crate::input::{eval, eval3};
+use crate::msg::{ErrMsg, Msg};
 use crate::num::format::fmt_dec;
 use crate::num::vec::V3;
 use crate::num::{Expr, Scalar};
-use crate::stages::camera::{self, Camera};
+use crate::stages::camera::Camera;
 use crate::stages::clip::ClipBox;
-use crate::stages::projection::{self, Projection};
+use crate::stages::projection::Projection;
 use crate::stages::trace::{Recorder, Step, Trace, Val};
 use crate::stages::window;
-use crate::tutor::follow;
-use crate::tutor::keys::{basis_result, clip_checked, clip_result, shade_run, window_result};
+use crate::tutor::run::{
+    basis_run, clip_run, eye_run, light_run, pixels, points_val, project_run, view_result,
+    window_run, Hooks, Named,
+};
 use crate::tutor::solution::{
     at, p3, Asked, CameraAt, Compared, Comparison, Given, Report, ShadeAt, WindowAt,
 };
@@ -29,56 +31,12 @@ pub fn solve_file<T: Scalar>(path: &Path) -> Result<Report> {
     solve::<T>(&p)
 }
 
-fn eval<T: Scalar>(field: &str, n: &Num) -> Result<T> {
-    input::eval(field, &n.0)
-}
-
-fn eval3<T: Scalar>(field: &str, v: &Vec3In) -> Result<V3<T>> {
-    Ok(V3::new(
-        eval(field, &v[0])?,
-        eval(field, &v[1])?,
-        eval(field, &v[2])?,
-    ))
-}
-
-/// An alteration of the lighting set-up.
-pub type SetupHook<T> = dyn Fn(&mut crate::input::lights::Setup<T>);
-
-/// Alterations applied to stage results between stages. Solving uses none;
-/// the mistake catalog (`diagnose`) sets one to re-run the real stages with
-/// one step done the wrong way, instead of copying the pipeline's math;
-/// follow-through gives the student's own values for the steps after them
-/// to go on from ([`follow`]).
-pub struct Hooks<'a, T> {
-    /// Applied to the camera basis before it is used.
-    pub basis: fn(&mut camera::Basis<T>),
-    /// Applied to the near-plane window before it is used (given fovy in degrees).
-    pub window: fn(&mut window::Window<T>, &T),
-    /// The lighting stage's rules (the text's by default).
-    pub shade: crate::stages::lighting::Rules<T>,
-    /// Applied to the lighting set-up (its lights, its surface) before it is used.
-    pub setup: Option<&'a SetupHook<T>>,
-    /// Values given in place of the stages' own, by result key
-    /// (follow-through): the steps after them go on from them.
-    pub given: Option<&'a follow::Lookup<'a, T>>,
-}
-
-impl<T: Scalar> Default for Hooks<'_, T> {
-    fn default() -> Self {
-        Hooks {
-            basis: |_| {},
-            window: |_, _| {},
-            shade: crate::stages::lighting::Rules::default(),
-            setup: None,
-            given: None,
-        }
-    }
-}
-
-impl<'a, T: Scalar> Hooks<'a, T> {
-    /// The values given, if any.
-    fn givens(&self) -> Option<follow::Givens<'a, T>> {
-        self.given.map(follow::Givens)
+/// Solves a problem at precision `T`: a calculator command's one part or
+/// a problem file's parts.
+pub fn solve_problem<T: Scalar>(p: &Problem) -> Result<Report> {
+    match p {
+        Problem::Part(part) => crate::tutor::part::solve_part::<T>(part),
+        Problem::File(file) => solve::<T>(file),
     }
 }
 
@@ -128,20 +86,12 @@ pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> 
     Ok(report)
 }
 
-/// A named point.
-type Named<T> = (String, V3<T>);
-
 /// Where the parts write: the steps, the named results, what each part was given.
 #[derive(Default)]
 struct Out {
     rec: Recorder,
     result: Vec<(String, Val)>,
     parts: Vec<Given>,
-}
-
-/// Named points as a result map.
-fn points_val<T: Scalar>(pts: &[(String, V3<T>)]) -> Val {
-    Val::Map(pts.iter().map(|(n, e)| (n.clone(), Val::vec3(e))).collect())
 }
 
 /// Steps 1 and 2, modeling and viewing transformation: the basis, the view
@@ -169,25 +119,10 @@ fn view_part<T: Scalar>(
     rec.section(Msg::SecModeling);
     rec.step(|| Step::new(Msg::NothingToDo, "").note(Msg::AlreadyWorld));
     rec.section(Msg::SecViewing);
-    let mut b = camera::basis(&cam, rec).map_err(camera_field)?;
-    (hooks.basis)(&mut b);
-    if let Some(g) = hooks.givens() {
-        follow::basis(g, &cam, &mut b);
-    }
-    let m = camera::view_matrix(&b, &cam.pe, rec).map_err(camera_field)?;
-    let mut eye_pts = Vec::new();
-    for (n, q) in points {
-        let e = camera::to_eye(&b, &cam.pe, n, q, rec)?;
-        let given = hooks
-            .givens()
-            .and_then(|g| g.vec3(&format!("view.points.{n}")));
-        eye_pts.push((n.clone(), given.unwrap_or(e)));
-    }
+    let b = basis_run(&cam, hooks, rec).map_err(camera_field)?;
+    let (m, eye_pts) = eye_run(&b, &cam, points, (hooks, camera_field), rec)?;
     if p.asks("view") {
-        let mut r = basis_result(&b);
-        r.push(("matrix".into(), Val::mat4(&m)));
-        r.push(("points".into(), points_val(&eye_pts)));
-        result.push(("view".into(), Val::Map(r)));
+        result.push(("view".into(), Val::Map(view_result(&b, &m, &eye_pts))));
         let world = points.iter().map(|(n, q)| (n.clone(), p3(q))).collect();
         parts.push(Given::View(CameraAt::of(&cam), world));
     }
@@ -216,14 +151,7 @@ fn project_part<T: Scalar>(
     rec.step(|| Step::new(Msg::ProjPlane, Msg::FProjPlane).res("d", Val::num(&d)));
     let proj = Projection::Plane { d };
     proj.validate().map_err(|e| e.in_field("perspective.d"))?;
-    let mut projected = Vec::new();
-    for (n, e) in eye_pts {
-        let q = projection::project(&proj, n, e, rec)?;
-        let given = hooks
-            .givens()
-            .and_then(|g| g.vec3(&format!("project.points.{n}")));
-        projected.push((n.clone(), given.unwrap_or(q)));
-    }
+    let projected = project_run(&proj, eye_pts, hooks, rec)?;
     if p.asks("project") {
         let r = vec![("points".into(), points_val(&projected))];
         result.push(("project".into(), Val::Map(r)));
@@ -266,35 +194,14 @@ fn window_part<T: Scalar>(
         .degrees()
         .map_err(|m| Error::why("perspective.fovy", m))?;
     let aspect: T = eval("perspective.aspect", aspect)?;
-    rec.section(Msg::SecWindowClip);
-    let mut w = window::window(&fovy, &aspect, near, "near", rec).map_err(perspective_field)?;
-    (hooks.window)(&mut w, &fovy);
-    if let Some(g) = hooks.givens() {
-        follow::window(g, &aspect, &mut w);
-    }
-    let mut r = window_result(&w, "");
     let far: Option<T> = per
         .far
         .as_ref()
         .map(|f| eval("perspective.far", f))
         .transpose()?;
-    if let Some(f) = &far {
-        if *f <= *near {
-            return Err(Error::why(
-                "perspective.far",
-                ErrMsg::MustBe(
-                    Bound::AboveNear(near.to_f64().to_string()),
-                    f.to_f64().to_string(),
-                ),
-            ));
-        }
-        let fw = window::window(&fovy, &aspect, f, "far", rec).map_err(perspective_field)?;
-        r.extend(
-            window_result(&fw, "far_")
-                .into_iter()
-                .filter(|(k, _)| !k.ends_with("height") && !k.ends_with("width")),
-        );
-    }
+    rec.section(Msg::SecWindowClip);
+    let set_up = (&fovy, &aspect, near, far.as_ref());
+    let (w, r) = window_run(set_up, hooks, rec).map_err(perspective_field)?;
     for ((n, q), (_, e)) in eyes.1.iter().zip(eyes.0) {
         point_inside_step(rec, n, q, e, &w, near, far.as_ref());
     }
@@ -341,13 +248,8 @@ fn viewport_part<T: Scalar>(
     if let Some(Given::Window(w)) = parts.last_mut() {
         w.viewport = Some((at(&vw), at(&vh)));
     }
-    let px: Vec<(String, Val)> = projected
-        .iter()
-        .map(|(n, q)| {
-            let (a, b) = window::to_viewport(w, (&vw, &vh), n, (&q[0], &q[1]), rec);
-            (n.clone(), Val::vec2(&a, &b))
-        })
-        .collect();
+    let on_window = projected.iter().map(|(n, q)| (n, (&q[0], &q[1])));
+    let px = pixels(w, (&vw, &vh), on_window, rec);
     result.push((
         "viewport".into(),
         Val::Map(vec![("pixels".into(), Val::Map(px))]),
@@ -377,17 +279,15 @@ fn clip_part<T: Scalar>(
         let p0: V3<T> = point_ref(&format!("{f}.from"), &s.from, points)?;
         let p1: V3<T> = point_ref(&format!("{f}.to"), &s.to, points)?;
         rec.section(Msg::SecLineClip((c.segment.len() > 1).then_some(i + 1)));
-        let mut r = clip_checked(&b, &p0, &p1, rec);
-        if let Some(g) = hooks.givens() {
-            let prefix = match c.segment.len() {
-                1 => "clip".to_string(),
-                _ => format!("clip.{i}"),
-            };
-            follow::clipping(g, &prefix, &b, (&p0, &p1), &mut r);
-        }
-        all.push(Val::Map(clip_result(&r)));
         let segment = (c.segment.len() > 1).then_some(i);
-        parts.push(Given::clip(&b, (&p0, &p1), segment));
+        let given = Given::clip(&b, (&p0, &p1), segment);
+        all.push(Val::Map(clip_run(
+            &b,
+            (&p0, &p1),
+            (hooks, &given.key()),
+            rec,
+        )));
+        parts.push(given);
     }
     match all.len() {
         0 => {}
@@ -408,21 +308,7 @@ fn shade_part<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>, out: &mut Out) -> Resu
                 material: None,
                 light: p.light.clone(),
             };
-            let mut setup = crate::input::lights::build::<T>(sh, &file, "shade.", "light", rec)?;
-            if let Some(f) = hooks.setup {
-                f(&mut setup);
-            }
-            let r = match hooks.givens() {
-                Some(given) if setup.lights.len() == 1 => {
-                    follow::setup(given, &mut setup);
-                    let rules = follow::GivenRules {
-                        rules: &hooks.shade,
-                        given,
-                    };
-                    shade_run(&setup, &rules, rec)
-                }
-                _ => shade_run(&setup, &hooks.shade, rec),
-            };
+            let (setup, r) = light_run((sh, &file, "shade."), hooks, rec)?;
             result.push(("shade".into(), Val::Map(r)));
             parts.push(Given::Shade(ShadeAt::of(&setup, None)));
             Ok(())

@@ -27,7 +27,8 @@ use crate::stages::trace::{Step, Val};
 use crate::tutor::diagnose::{Mistake, CATALOG};
 use crate::tutor::follow::Given;
 use crate::tutor::keys::ordered_keys;
-use crate::tutor::solve::{self, lookup, Hooks};
+use crate::tutor::run::Hooks;
+use crate::tutor::solve::{self, lookup};
 use std::cell::RefCell;
 use std::collections::HashMap;
 
