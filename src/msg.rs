@@ -74,6 +74,33 @@ pub enum Trivial {
     Clip,
 }
 
+/// What kind of difference an erratum records (a problem file's
+/// `[[errata]] kind`, docs/spec.md §5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Deserialize, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Erratum {
+    /// A wrong number in print (the text's 20/6 for 16/6).
+    Misprint,
+    /// A different but consistent definition (the text's h is the half
+    /// height of the window).
+    Convention,
+    /// A value rounded before it was used again (h = 0.041 doubled).
+    Rounding,
+}
+
+/// How an answer printed in a source compares with the computed one.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Printed {
+    /// It agrees to the digits printed.
+    Agrees,
+    /// It differs: of what kind, where the problem file says.
+    Differs(Option<Erratum>),
+    /// Not computed in this run (not asked for).
+    NotAsked,
+    /// Computed, but not comparable with what was printed.
+    NotComparable,
+}
+
 /// One message for a person.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Msg {
@@ -82,6 +109,14 @@ pub enum Msg {
     /// Words a lecturer wrote in a problem file (an erratum's `why`), in
     /// English and, when the file gives `why_id`, in Indonesian.
     Written(String, Option<String>),
+    /// An erratum's reason (`Written`) after the words for its kind.
+    Erratum(Option<Erratum>, Box<Msg>),
+    /// How a printed answer compares with the computed one.
+    Printed(Printed),
+
+    /// What a problem asks: its parts (`view`, `project`, `window`,
+    /// `viewport`, `clip`, `shade`), in order.
+    Asked(Vec<String>),
 
     // ---- section headings ----
     /// solve, part 1.
@@ -184,8 +219,6 @@ pub enum Msg {
     FOutOfRange,
     /// cos α and its clamp.
     FIncidence,
-    /// The highlight is not added.
-    FNotAdded,
     /// Mcam's columns.
     FCamMatrix,
     /// V = R·T(−Pe).
@@ -216,6 +249,10 @@ pub enum Msg {
     FLiangBarsky,
     /// Inside the window and between the near and far planes.
     FInside,
+    /// Direct3D's spot factor by the cones.
+    FSpot,
+    /// The clamp of the colour.
+    FClamp,
 
     // ---- notes ----
     /// Already a unit vector.

@@ -395,7 +395,10 @@ fn text_output_is_a_worked_solution() {
         "Step 3: projection",
         "Step 4: window",
         "n = (Pe − Pr) / |Pe − Pr|",
-        "the text is WRONG here",
+        // each difference from the printed answers worded as what it is
+        "— a misprint in the text: the text's exact form B''",
+        "— a rounding error in the text: the text doubles",
+        "— the text uses another convention: the question asks for the height h",
     ] {
         assert!(s.contains(needle), "missing {needle:?}");
     }
@@ -656,6 +659,7 @@ fn a_long_echoed_input_is_cut_in_the_error() {
 #[test]
 fn render_refuses_precision_it_would_ignore() {
     let out = std::env::temp_dir().join(format!("grafika-prec-{}.png", std::process::id()));
+    // render does not take --precision (its --help does not list it) ...
     let e = json_err(&[
         "render",
         "problems/render/cone-flat.toml",
@@ -664,7 +668,18 @@ fn render_refuses_precision_it_would_ignore() {
         "--precision",
         "f64",
     ]);
+    assert_eq!(e["field"], "--precision");
+    // ... nor before its name, where the reason is said.
+    let e = json_err(&[
+        "--precision",
+        "f64",
+        "render",
+        "problems/render/cone-flat.toml",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
     assert_eq!(e["field"], "precision");
+    assert!(!out.exists());
 }
 
 #[test]
@@ -878,7 +893,8 @@ fn several_clipped_segments_print_one_numbered_block_each_not_one_line() {
     assert!(answer.contains("    intersections = none\n  clip[2]:\n    code0 = 001000\n    code1 = 001000\n    status = rejected\n    segment = none\n"), "{answer}");
     assert!(answer.contains("  clip[5]:\n"), "{answer}");
     assert!(!answer.contains("intersections = ,"), "{answer}");
-    // the HTML page numbers them the same way, one row per value
+    // the HTML page numbers them the same way, one row per value, named
+    // as the steps name it with the answer key in the row's title
     let page = std::env::temp_dir().join(format!("grafika-clip-cases-{}.html", std::process::id()));
     let _ = std::fs::remove_file(&page);
     grafika()
@@ -888,8 +904,9 @@ fn several_clipped_segments_print_one_numbered_block_each_not_one_line() {
         .success();
     let html = std::fs::read_to_string(&page).unwrap();
     let _ = std::fs::remove_file(&page);
-    assert!(html.contains("<th>clip[1].status</th>"), "{html}");
-    assert!(html.contains("<th>clip[5].code1</th>"), "{html}");
+    assert!(html.contains("<th title=\"clip[1].status\">"), "{html}");
+    assert!(html.contains("<th title=\"clip[5].code1\">"), "{html}");
+    assert!(html.contains("<mtext>segment</mtext>"), "{html}");
     // and the JSON keeps its list of objects
     let v = json_ok(&["solve", "problems/clip-cases.toml"]);
     assert_eq!(v["result"]["clip"][1]["code0"], "001000");
@@ -925,4 +942,45 @@ fn explain_pixel_matrices_are_not_under_the_solve_viewing_heading() {
         assert!(!text.contains("dunia → kamera) =="), "{text}");
     }
     let _ = std::fs::remove_file(&png);
+}
+
+/// A problem file's vectors as people write them (one string, in brackets
+/// or not, `;` between parts, the minus sign `−`) read as the TOML arrays
+/// do: the text's triangle and clipping examples give the same results.
+#[test]
+fn a_problem_files_vectors_may_be_written_as_one_string() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = [
+        (
+            "text-triangle.toml",
+            vec![
+                ("eye = [3, 1, 3]", "eye = \"(3; 1; 3)\""),
+                ("look = [2, 1, 2]", "look = \"2, 1, 2\""),
+                ("up = [0, 1, 0]", "up = \"[0, 1, 0]\""),
+                ("B = [1, 0, 0]", "B = \"(1, 0, 0)\""),
+            ],
+        ),
+        (
+            "text-clip.toml",
+            vec![
+                ("max = [3, 4, 3]", "max = \"(3, 4, 3)\""),
+                ("from = [4, 2, 2]", "from = \"(4, 2, 2)\""),
+                ("to = [-2, 6, 1]", "to = \"(−2; 6; 1)\""),
+            ],
+        ),
+    ];
+    for (name, edits) in cases {
+        let original = root().join("problems").join(name);
+        let mut text = std::fs::read_to_string(&original).unwrap();
+        for (array, string) in edits {
+            assert!(text.contains(array), "{name} has no `{array}`");
+            text = text.replacen(array, string, 1);
+        }
+        let edited = dir.path().join(name);
+        std::fs::write(&edited, text).unwrap();
+        let a = json_ok(&["solve", original.to_str().unwrap()]);
+        let b = json_ok(&["solve", edited.to_str().unwrap()]);
+        assert_eq!(a["result"], b["result"], "{name}");
+        assert_eq!(a["exact"], b["exact"], "{name}");
+    }
 }

@@ -962,7 +962,7 @@ fn indonesian_figures_speak_indonesian() {
         "{titles:?}"
     );
     assert!(
-        titles.contains(&"Viewing window pada bidang dekat".to_string()),
+        titles.contains(&"Viewing window pada near plane".to_string()),
         "{titles:?}"
     );
 }

@@ -269,6 +269,22 @@ fn easy_cameras_have_rational_axes() {
 
 #[test]
 fn latex_keys_are_ascii() {
+    // Every topic in both languages: the shading steps carry Σ and (N·H)ⁿ.
+    let all = "basis,view,project,window,clip,shade,pipeline";
+    for lang in ["en", "id"] {
+        let dir = tmp(&format!("tex-{lang}"));
+        grafika()
+            .args(["generate", "--topic", all, "--count", "7", "--seed", "3"])
+            .args(["--lang", lang, "--format", "latex"])
+            .args(["--out", dir.to_str().unwrap()])
+            .assert()
+            .success();
+        for f in ["questions.tex", "key.tex"] {
+            let t = std::fs::read_to_string(dir.join(f)).unwrap();
+            assert!(t.is_ascii(), "{lang} {f} has non-ASCII characters");
+            assert!(!t.contains("[U+"), "{lang} {f} has an unmapped symbol");
+        }
+    }
     let dir = tmp("tex");
     grafika()
         .args([
@@ -277,11 +293,6 @@ fn latex_keys_are_ascii() {
         .args(["--format", "latex", "--out", dir.to_str().unwrap()])
         .assert()
         .success();
-    for f in ["questions.tex", "key.tex"] {
-        let t = std::fs::read_to_string(dir.join(f)).unwrap();
-        assert!(t.is_ascii(), "{f} has non-ASCII characters");
-        assert!(!t.contains("[U+"), "{f} has an unmapped symbol");
-    }
     let key = std::fs::read_to_string(dir.join("key.tex")).unwrap();
     assert!(key.contains("\\sqrt{"), "exact forms are set with \\sqrt");
     // tests/tools.rs compiles a key with pdflatex (or says it was skipped).

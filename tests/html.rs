@@ -160,8 +160,9 @@ fn the_triangle_example_as_a_page() {
     // Pe − Pr = (1, 0, 1), so n = (√2/2, 0, √2/2): in MathML.
     assert!(
         html.contains(concat!(
-            r#"<mi>n</mi><mo>=</mo><mo lspace="0" rspace="0">(</mo><msqrt><mn>2</mn></msqrt>"#,
-            r#"<mo lspace="0" rspace="0">/</mo><mn>2</mn><mo>,</mo><mn>0</mn>"#
+            r#"<mi>n</mi><mo>=</mo><mo stretchy="false" lspace="0" rspace="0">(</mo>"#,
+            r#"<msqrt><mn>2</mn></msqrt><mo lspace="0" rspace="0">/</mo><mn>2</mn>"#,
+            r#"<mo separator="true" lspace="0" rspace="0.35em">,</mo><mn>0</mn>"#
         )),
         "n = (√2/2, 0, √2/2) is not set in MathML"
     );
@@ -223,7 +224,11 @@ fn an_existing_page_is_never_overwritten() {
 
 #[test]
 fn html_is_refused_where_there_is_no_worked_solution() {
+    // bench does not take --html after its name (its --help does not
+    // list it), nor before it.
     let e = json_err(&["bench", "--quick", "--html", "x.html"]);
+    assert_eq!(e["field"], "--html", "{e}");
+    let e = json_err(&["--html", "x.html", "bench", "--quick"]);
     assert_eq!(e["field"], "html", "{e}");
 }
 
@@ -259,4 +264,62 @@ fn generate_writes_html_sheets_and_keys() {
         !q.contains("<section class=\"step\">"),
         "the questions show no solution"
     );
+}
+
+/// Issue 26 point 7: the worked solution's page of the text's triangle in
+/// Indonesian states the problem first, names the answers as the steps
+/// name them, compares with the printed answers in a table, and keeps the
+/// spaces of the text in its MathML.
+#[test]
+fn the_page_reads_like_the_text() {
+    let html = page(
+        "reads.html",
+        &["--lang", "id", "solve", "problems/text-triangle.toml"],
+    );
+    well_formed(&html);
+    // the statement stands before the first step
+    let statement = html.find("<p class=\"statement\">").expect("no statement");
+    assert!(statement < html.find("<section class=\"step\">").unwrap());
+    // the answer table: the steps' names, the answer keys only in a title
+    let answers = &html[html.find("<table class=\"answers\">").unwrap()..];
+    let answers = &answers[..answers.find("</table>").unwrap()];
+    assert!(
+        answers.contains("title=\"view.points.A\"><math><mrow><mi>A</mi><mo>'</mo></mrow>"),
+        "A' has no row"
+    );
+    assert!(
+        answers.contains("<mtext>piksel</mtext>"),
+        "pixel A is not 'piksel A'"
+    );
+    assert!(
+        answers.contains("<mtext>far plane</mtext>"),
+        "far_top is not named as the steps name it"
+    );
+    for key in ["view.points", "viewport.pixels", "far_top"] {
+        let shown = answers.replace(&format!("title=\"{key}"), "");
+        assert!(
+            !shown.contains(&format!(">{key}")),
+            "{key} shown as a label"
+        );
+    }
+    // no stray '=' before the answer's matrix
+    assert!(
+        !answers.contains("<mo>=</mo>"),
+        "a stray = in the answer table"
+    );
+    // the comparison as a table, each verdict a word of the text's kinds
+    let cmp = &html[html
+        .find("<table class=\"answers comparison\">")
+        .expect("no table")..];
+    assert!(cmp.contains("<th>tercetak</th>") && cmp.contains("<th>yang benar</th>"));
+    assert!(cmp.contains("salah cetak"), "B'' is a misprint");
+    assert!(cmp.contains("konvensi"), "the height is another convention");
+    assert!(cmp.contains("pembulatan"), "right is a rounding");
+    assert!(
+        !html.contains("<p class=\"note\">Dibandingkan"),
+        "the comparison as a paragraph"
+    );
+    // words keep their spaces in MathML; `;` is followed by a space
+    assert!(html.contains("<mtext>dari</mtext>") || html.contains("<mspace"));
+    assert!(html.contains("<mo separator=\"true\" lspace=\"0\" rspace=\"0.35em\">;</mo>"));
 }

@@ -61,8 +61,18 @@ fn indonesian_text_uses_the_decimal_comma_and_the_texts_terms() {
 
 /// Drops the human-readable strings of a report's JSON.
 fn without_words(v: &Value) -> Value {
-    const WORDS: [&str; 8] = [
-        "title", "formula", "note", "section", "warnings", "notes", "mistake", "why",
+    const WORDS: [&str; 11] = [
+        "title",
+        "statement",
+        "source",
+        "source_notes",
+        "formula",
+        "note",
+        "section",
+        "warnings",
+        "notes",
+        "mistake",
+        "why",
     ];
     match v {
         Value::Object(m) => Value::Object(
@@ -271,7 +281,7 @@ fn generated_statements_in_indonesian_with_the_same_problems() {
         "region code P0 dan P1",
         "kiri, kanan, bawah, atas, depan, belakang",
         "vektor normal N",
-        "Tentukan bidang pandang",
+        "Tentukan viewing window pada near plane",
     ] {
         assert!(all.contains(phrase), "no `{phrase}` in\n{all}");
     }
@@ -280,8 +290,8 @@ fn generated_statements_in_indonesian_with_the_same_problems() {
 }
 
 #[test]
-fn every_shipped_problem_has_its_title_statement_and_errata_in_indonesian() {
-    let mut errata = 0;
+fn every_shipped_problem_has_its_texts_in_both_languages_and_its_errata_kinds() {
+    let mut kinds = std::collections::BTreeMap::new();
     for entry in std::fs::read_dir(root().join("problems")).expect("problems/") {
         let path = entry.expect("an entry").path();
         if path.extension().is_none_or(|e| e != "toml") {
@@ -289,26 +299,46 @@ fn every_shipped_problem_has_its_title_statement_and_errata_in_indonesian() {
         }
         let text = std::fs::read_to_string(&path).expect("reads");
         let value: toml::Table = toml::from_str(&text).expect("TOML");
-        for (en, id) in [("title", "title_id"), ("statement", "statement_id")] {
+        let pairs = [
+            ("title", "title_id"),
+            ("statement", "statement_id"),
+            ("source", "source_id"),
+            ("source_notes", "source_notes_id"),
+        ];
+        for (en, id) in pairs {
             assert_eq!(
-                value.contains_key(en),
-                value.contains_key(id),
-                "{}: {en} without {id}",
+                value.get(en).map(count),
+                value.get(id).map(count),
+                "{}: {en} and {id} differ",
                 path.display()
             );
         }
+        // Every shipped problem is posed: a title and a statement.
+        assert!(value.contains_key("statement"), "{}", path.display());
         let list = value.get("errata").and_then(|e| e.as_array());
         for e in list.into_iter().flatten() {
-            errata += 1;
             assert!(
                 e.get("why_id").and_then(|w| w.as_str()).is_some(),
                 "{}: an erratum without why_id: {e}",
                 path.display()
             );
+            let kind = e.get("kind").and_then(|k| k.as_str());
+            *kinds.entry(kind.unwrap_or("none").to_string()).or_insert(0) += 1;
         }
     }
-    // text-triangle.toml has 5 errata and text-clip.toml 3.
-    assert_eq!(errata, 8);
+    // text-triangle.toml: the decimals of B'' and C'' are misprints, the
+    // height and width use the text's half extent h (a convention), the
+    // right edge doubles a rounded h (rounding); text-clip.toml: three
+    // misprints (20/6, the x of 2, and the segment through them).
+    let want = [("convention", 2), ("misprint", 5), ("rounding", 1)];
+    let want: std::collections::BTreeMap<String, i32> =
+        want.into_iter().map(|(k, n)| (k.to_string(), n)).collect();
+    assert_eq!(kinds, want);
+}
+
+/// How many texts a value holds (a list of notes counts its items).
+fn count(v: &toml::Value) -> usize {
+    v.as_array().map_or(1, |a| a.len())
 }
 
 /// Runs grafika with `LANG=id_ID.UTF-8` (and no other language setting)
@@ -573,4 +603,249 @@ fn no_error_is_said_in_english_text() {
             );
         }
     }
+}
+
+/// Words the Indonesian output keeps in English on purpose: the text's own
+/// English terms (Bab 6 keeps viewing window, view volume, clipping, region
+/// code, near/far plane, viewport, aspect ratio; Bab 9 keeps diffuse
+/// scattering, specular reflection, ambient, Lambert's Law, Phong model,
+/// flat and Gouraud shading, lightVector, viewVector; the Direct3D page
+/// keeps directional, spot, falloff, Power and its constants), the names
+/// of the notation (top, near, code0, cos, norm, …), codes an answer or a
+/// script uses (clipped, accepted, rejected, none, exact, f64) and the
+/// commands typed in practice (hint, show, …), a flag's value (off), a
+/// student's and a triangle's names (Budi, ABC); and words Bahasa
+/// Indonesia shares with English (basis, errata, global, per, trivial,
+/// normal, material, model, status, linear) or that its programmers use
+/// (renderer, rasterizer, thread, binning, encoding PNG, z-buffer, RGB, the
+/// topic `pipeline`), the text's `face`.
+const KEPT: &str = "viewing window view volume clipping clip clipped accepted rejected region code \
+    plane near far viewport aspect ratio fovy top bottom left right height width xmin xmax ymin \
+    ymax zmin zmax yvmax zvmax code0 code1 AND bit Pe Pr Pref Peye Vup Mcam Pl Cp Vp Ldir ambient \
+    diffuse Diffuse scattering Scattering specular Specular reflection Reflection Lambert Lambert's \
+    Law Phong model Model Blinn Gouraud flat shading highlight lightVector viewVector emissive \
+    Direct3D directional spot Spot falloff power Power penumbra theta phi range Att cos tan max \
+    min norm sqrt round clamp Liang Barsky status normal material Material hint show skip back \
+    quit none eye exact follow through seed Cspecular Cwhite D3DRS_LOCALVIEWER TRUE diagnosis \
+    kiri kanan bawah atas depan belakang contoh bab budi abc axis zprp zvp off \
+    basis errata global per trivial face linear renderer rasterizer raster binning thread \
+    encoding png buffer rgb row pipeline";
+
+/// The words of a text, with what is not a sentence's word taken out: the
+/// keys of answers (`view.points.A`), the mistake codes
+/// (`[height_is_half_extent]`), file names and flags, and the words in a
+/// `grafika …` command line.
+fn sentence_words(text: &str) -> Vec<String> {
+    let mut words = Vec::new();
+    // the parts of the keys, also where a table wraps a key (`…right.p` / `oint`)
+    let keys: Vec<&str> = text
+        .split(|c: char| c.is_whitespace() || "│┆()".contains(c))
+        .filter(|t| t.contains('.') && t.chars().any(char::is_alphabetic))
+        .collect();
+    for line in text.lines() {
+        let line = line.split("grafika ").next().unwrap_or_default();
+        // code: lighting::shade, object[0]
+        let line: String = line
+            .split(' ')
+            .filter(|t| !t.contains("::") && !t.contains("[0") && !t.contains("[1"))
+            .collect::<Vec<_>>()
+            .join(" ");
+        for token in line.split(|c: char| c.is_whitespace() || "()[]{}:;,=<>\"`|".contains(c)) {
+            let t = token.trim_matches(|c: char| !c.is_alphanumeric());
+            let code = t.contains('.')
+                || t.contains('_')
+                || t.starts_with('-')
+                || token.starts_with("--")
+                || (t.len() > 2 && keys.iter().any(|k| k.contains(t)));
+            if code || t.chars().any(|c| c.is_ascii_digit()) {
+                continue;
+            }
+            // names of the notation are short (Ax, Cs, ka, xp, Pe, ...)
+            words.extend(
+                t.split(['-', '/', '\'', '’', '·'])
+                    .filter(|w| w.chars().count() > 2 && w.chars().all(char::is_alphabetic))
+                    .map(str::to_lowercase),
+            );
+        }
+    }
+    words
+}
+
+/// `grafika --lang LANG ARGS` with `stdin`: its standard output, and the
+/// text of the file it writes to `page` (an HTML page or a Markdown key),
+/// written afresh (the folder `page` is in is emptied first).
+fn run_in(lang: &str, args: &[&str], stdin: &str, page: Option<&std::path::Path>) -> String {
+    if let Some(dir) = page.and_then(|p| p.parent()) {
+        let _ = std::fs::remove_dir_all(dir);
+        std::fs::create_dir_all(dir).expect("a folder");
+    }
+    let mut all = vec!["--lang", lang];
+    all.extend_from_slice(args);
+    let out = grafika()
+        .env_remove("GRAFIKA_LANG")
+        .args(&all)
+        .write_stdin(stdin)
+        .output()
+        .expect("runs");
+    assert!(
+        out.status.success(),
+        "{all:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let mut text = String::from_utf8(out.stdout).expect("UTF-8");
+    if let Some(p) = page.filter(|p| p.extension().is_some_and(|e| e != "png")) {
+        // the page's text: tags (and the inline figures) left out
+        let html = std::fs::read_to_string(p).expect("the page");
+        let body = html.split_once("<body>").map_or(html.as_str(), |x| x.1);
+        let html = body
+            .split("<svg")
+            .map(|s| s.split_once("</svg>").map_or(s, |x| x.1));
+        for part in html {
+            let mut inside = false;
+            for c in part.chars() {
+                match c {
+                    '<' => inside = true,
+                    '>' => {
+                        inside = false;
+                        text.push(' ');
+                    }
+                    c if !inside => text.push(c),
+                    _ => {}
+                }
+            }
+        }
+    }
+    text
+}
+
+#[test]
+fn no_english_sentence_under_lang_id() {
+    let kept: std::collections::BTreeSet<String> =
+        KEPT.split_whitespace().map(str::to_lowercase).collect();
+    let page = scratch("no-english").join("page.html");
+    let page_arg = page.to_str().unwrap().to_string();
+    let dir = scratch("no-english-out");
+    let (key, png) = (dir.join("key.md"), dir.join("cone.png"));
+    let mut runs: Vec<(Vec<String>, String, bool)> = Vec::new();
+    let own = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+    for entry in std::fs::read_dir(root().join("problems")).expect("problems/") {
+        let path = entry.expect("an entry").path();
+        if path.extension().is_none_or(|e| e != "toml") {
+            continue;
+        }
+        let f = path.to_str().unwrap();
+        runs.push((own(&["solve", f, "--html", &page_arg]), String::new(), true));
+        runs.push((own(&["practice", f]), "show\n".repeat(60), false));
+        let text = std::fs::read_to_string(&path).expect("reads");
+        if text.contains("[printed]") {
+            runs.push((
+                own(&["check", f, "--answers-from-text"]),
+                String::new(),
+                false,
+            ));
+        }
+    }
+    let calc: [&[&str]; 6] = [
+        &[
+            "basis", "--eye", "3,1,3", "--look", "2,1,2", "--up", "0,1,0",
+        ],
+        &[
+            "view",
+            "--eye",
+            "4,4,4",
+            "--look",
+            "0,1,4",
+            "--up",
+            "0,1,0",
+            "--point",
+            "Pref=0,1,4",
+        ],
+        &[
+            "project", "--cop", "5", "--plane", "1", "--point", "A=1,2,-3",
+        ],
+        &[
+            "window",
+            "--fovy",
+            "45",
+            "--aspect",
+            "2",
+            "--near",
+            "0.1",
+            "--far",
+            "10",
+            "--viewport",
+            "200x100",
+            "--point",
+            "A=0,-0.02",
+        ],
+        &[
+            "clip", "--min", "0,0,0", "--max", "3,4,3", "--from", "4,2,2", "--to", "-2,6,1",
+        ],
+        &[
+            "shade", "--light", "0,0,1", "--normal", "0,1,1", "--color", "1,1,0", "--model",
+            "blinn",
+        ],
+    ];
+    for args in calc {
+        runs.push((own(args), String::new(), false));
+    }
+    runs.push((
+        own(&[
+            "check",
+            "problems/text-triangle.toml",
+            "--answers",
+            "problems/answers/triangle/budi.toml",
+        ]),
+        String::new(),
+        false,
+    ));
+    let d = dir.to_str().unwrap();
+    let keyed = own(&[
+        "generate",
+        "--topic",
+        "basis,view,project,window,clip,shade,pipeline",
+        "--count",
+        "7",
+        "--out",
+        d,
+    ]);
+    let png_arg = png.to_str().unwrap();
+    let pixel = own(&[
+        "render",
+        "problems/render/cone-flat.toml",
+        "-o",
+        png_arg,
+        "--stats",
+        "--explain-pixel",
+        "330,150",
+    ]);
+    let mut found = Vec::new();
+    for (args, stdin, with_page) in runs.iter().chain([
+        &(keyed, String::new(), true),
+        &(pixel, String::new(), false),
+    ]) {
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let written = match args[0] {
+            "generate" => Some(key.as_path()),
+            "render" => Some(png.as_path()),
+            _ => with_page.then_some(page.as_path()),
+        };
+        let p = written;
+        let english: std::collections::BTreeSet<String> =
+            sentence_words(&run_in("en", &args, stdin, p))
+                .into_iter()
+                .collect();
+        for w in sentence_words(&run_in("id", &args, stdin, p)) {
+            if english.contains(&w) && !kept.contains(&w) {
+                found.push(format!("{w} ({})", args[..2].join(" ")));
+            }
+        }
+    }
+    found.sort();
+    found.dedup();
+    assert!(
+        found.is_empty(),
+        "English under --lang id:\n{}",
+        found.join("\n")
+    );
 }

@@ -855,3 +855,37 @@ fn a_scene_over_its_budgets_is_refused_before_anything_is_built() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("9 lights"));
 }
+
+/// 100,000 point lights in a problem file or a lights file (issue 28: the
+/// lights had no limit, and placing them for messages was quadratic: 200,000
+/// ran for over ten minutes): refused by count, before any is placed or
+/// evaluated, as a scene's ninth light is.
+#[test]
+fn a_hundred_thousand_lights_are_refused_by_their_count() {
+    let dir = tempfile::tempdir().unwrap();
+    let lights = "[[light]]\ntype = \"point\"\nposition = \"(0, 3, 4)\"\n".repeat(100_000);
+    let problem = dir.path().join("problem.toml");
+    let shade = "title = \"many\"\n[shade]\nnormal = [0, 0, 1]\ncolor = [1, 1, 1]\n";
+    std::fs::write(&problem, format!("{shade}{lights}")).unwrap();
+    let file = dir.path().join("lights.toml");
+    std::fs::write(&file, &lights).unwrap();
+    let runs = [
+        vec!["solve", problem.to_str().unwrap()],
+        vec![
+            "shade",
+            "--normal",
+            "0, 0, 1",
+            "--lights",
+            file.to_str().unwrap(),
+        ],
+    ];
+    for args in runs {
+        let out = common::grafika().args(&args).output().unwrap();
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains("100000 lights") && err.contains("at most 8"),
+            "{err}"
+        );
+    }
+}

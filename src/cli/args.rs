@@ -10,42 +10,248 @@ use crate::report::moodle::Decimal;
 use crate::stages::lighting::Model;
 use crate::tutor::generate::{Difficulty, Topic};
 use clap::builder::PossibleValue;
-use clap::{Args, Parser, Subcommand, ValueEnum};
+use clap::{
+    Arg, ArgAction, ArgMatches, Args, CommandFactory, FromArgMatches, Parser, Subcommand, ValueEnum,
+};
 use std::path::PathBuf;
 
 /// grafika — worked solutions for the 3D viewing pipeline and shading.
 #[derive(Parser, Debug)]
 #[command(name = "grafika", version, about, long_about = None, propagate_version = true)]
-pub struct Cli {
-    /// Output and precision options.
-    #[command(flatten)]
-    pub common: Common,
+struct Parsed {
     /// What to compute.
     #[command(subcommand)]
+    command: Command,
+}
+
+/// A command line: the command, and the options of [`Common`] given after
+/// its name or before it (`grafika --lang id basis …`).
+#[derive(Debug)]
+pub struct Cli {
+    /// The options, as the command takes them (defaults where not given).
+    pub common: Common,
+    /// What to compute.
     pub command: Command,
 }
 
-/// Options every calculator command takes.
-#[derive(Args, Debug, Clone)]
+/// The options several commands take ([`TAKES`] says which).
+#[derive(Debug, Clone)]
 pub struct Common {
-    /// Arithmetic: exact (sums of surds, with decimals), f64 or f32.
-    #[arg(long, value_enum, default_value_t = Precision::Exact, global = true)]
+    /// Arithmetic: exact, f64 or f32.
     pub precision: Precision,
     /// Significant digits of the decimals shown.
-    #[arg(long, default_value_t = 4, global = true, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
-    /// Print one JSON object (docs/spec.md §3) instead of the worked solution.
-    #[arg(long, global = true)]
+    /// JSON instead of text.
     pub json: bool,
-    /// The language of the words: id (Bahasa Indonesia) or en (default: GRAFIKA_LANG, then the locale).
-    #[arg(long, value_enum, global = true)]
+    /// The language of the words (none: the environment's).
     pub lang: Option<Lang>,
-    /// Also write the worked solution as one self-contained HTML page (formulas in MathML, figures inline) to this file (calculator commands and solve; an existing one only with --force).
-    #[arg(long, value_name = "FILE.html", global = true)]
+    /// The worked solution as an HTML page, to this new file.
     pub html: Option<std::path::PathBuf>,
-    /// Replace output files that exist (never one of the command's inputs, never through a link); generate: replace its own earlier output in --out, and write more than 2,000 problems.
-    #[arg(long, global = true)]
+    /// Replace output files that exist (never an input, never through a link).
     pub force: bool,
+    /// An option given before a command that does not take it, and the
+    /// command.
+    pub misplaced: Option<(Opt, &'static str)>,
+}
+
+/// An option of [`Common`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Opt {
+    /// `--precision`.
+    Precision,
+    /// `--digits`.
+    Digits,
+    /// `--json`.
+    Json,
+    /// `--lang`.
+    Lang,
+    /// `--html`.
+    Html,
+    /// `--force`.
+    Force,
+}
+
+impl Opt {
+    /// Every option of [`Common`].
+    pub const ALL: [Opt; 6] = [
+        Opt::Precision,
+        Opt::Digits,
+        Opt::Json,
+        Opt::Lang,
+        Opt::Html,
+        Opt::Force,
+    ];
+
+    /// The flag's name (without `--`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Opt::Precision => "precision",
+            Opt::Digits => "digits",
+            Opt::Json => "json",
+            Opt::Lang => "lang",
+            Opt::Html => "html",
+            Opt::Force => "force",
+        }
+    }
+
+    /// The flag as clap reads it; `json` says what `--json` prints.
+    fn arg(self, json: &'static str) -> Arg {
+        let arg = Arg::new(self.name()).long(self.name());
+        match self {
+            Opt::Precision => arg
+                .value_name("PRECISION")
+                .value_parser(clap::value_parser!(Precision))
+                .default_value("exact")
+                .help("Arithmetic: exact (sums of surds, with decimals), f64 or f32"),
+            Opt::Digits => arg
+                .value_name("N")
+                .value_parser(clap::value_parser!(u8).range(1..=17))
+                .default_value("4")
+                .help("Significant digits of the decimals shown"),
+            Opt::Json => arg.action(ArgAction::SetTrue).help(json),
+            Opt::Lang => arg.value_name("LANG").value_parser(clap::value_parser!(Lang)).help(
+                "The language of the words: id (Bahasa Indonesia) or en (default: GRAFIKA_LANG, then the locale)",
+            ),
+            Opt::Html => arg
+                .value_name("FILE.html")
+                .value_parser(clap::value_parser!(std::path::PathBuf))
+                .help("Also write the worked solution as one self-contained HTML page (formulas in MathML, figures inline) to this file (an existing one only with --force)"),
+            Opt::Force => arg.action(ArgAction::SetTrue).help(
+                "Replace output files that exist (never one of the command's inputs, never through a link)",
+            ),
+        }
+    }
+}
+
+const JSON_REPORT: &str = "Print one JSON object (docs/spec.md §3) instead of the worked solution";
+const WORKED: &[Opt] = &Opt::ALL;
+
+/// The options of [`Common`] each command takes after its name (its
+/// `--help` lists them; it refuses the others), and what its `--json`
+/// prints.
+pub const TAKES: [(&str, &[Opt], &str); 15] = [
+    ("basis", WORKED, JSON_REPORT),
+    ("view", WORKED, JSON_REPORT),
+    ("project", WORKED, JSON_REPORT),
+    ("window", WORKED, JSON_REPORT),
+    ("clip", WORKED, JSON_REPORT),
+    ("shade", WORKED, JSON_REPORT),
+    ("solve", WORKED, JSON_REPORT),
+    (
+        "render",
+        &[Opt::Digits, Opt::Json, Opt::Lang, Opt::Html, Opt::Force],
+        "Print one JSON object (docs/spec.md §3) instead of the summary",
+    ),
+    (
+        "check",
+        &[Opt::Digits, Opt::Json, Opt::Lang, Opt::Force],
+        "Print the marking as one JSON object instead of the report",
+    ),
+    (
+        "practice",
+        &[Opt::Digits, Opt::Json, Opt::Lang],
+        "Print JSON Lines: one JSON object per event (docs/spec.md, practice protocol)",
+    ),
+    (
+        "generate",
+        &[Opt::Digits, Opt::Json, Opt::Lang, Opt::Force],
+        "Print the files written as one JSON object",
+    ),
+    (
+        "bench",
+        &[Opt::Json, Opt::Lang],
+        "Print the measurement as one JSON object instead of the table",
+    ),
+    ("completions", &[Opt::Lang], ""),
+    ("man", &[Opt::Lang], ""),
+    ("help", &[], ""),
+];
+
+/// A command's name and the options it takes after its name.
+pub fn takes(command: &str) -> (&'static str, &'static [Opt]) {
+    TAKES
+        .iter()
+        .find(|(c, ..)| *c == command)
+        .map_or(("", &[]), |(c, o, _)| (*c, *o))
+}
+
+impl CommandFactory for Cli {
+    /// The commands of [`Command`], each with its share of [`Common`];
+    /// the options before a command are all of them.
+    fn command() -> clap::Command {
+        let top = Opt::ALL.map(|o| {
+            o.arg("Print JSON instead of text (see the command's --help)")
+                .help_heading(
+                    "Options before the command (each command's --help lists those it takes)",
+                )
+        });
+        let mut cmd = Parsed::command().args(top);
+        for (name, opts, json) in TAKES {
+            if name != "help" {
+                cmd = cmd.mut_subcommand(name, |c| c.args(opts.iter().map(|o| o.arg(json))));
+            }
+        }
+        cmd.mut_subcommand("generate", |c| {
+            c.mut_arg("force", |a| {
+                a.help("Replace generate's own earlier output in --out (never a file it did not write), and write more than 2,000 problems")
+            })
+        })
+    }
+    fn command_for_update() -> clap::Command {
+        Cli::command()
+    }
+}
+
+impl FromArgMatches for Cli {
+    fn from_arg_matches(m: &ArgMatches) -> Result<Cli, clap::Error> {
+        let parsed = Parsed::from_arg_matches(m)?;
+        let (name, sub) = m.subcommand().unwrap_or(("", m));
+        Ok(Cli {
+            common: Common::from_matches(m, name, sub),
+            command: parsed.command,
+        })
+    }
+    fn update_from_arg_matches(&mut self, m: &ArgMatches) -> Result<(), clap::Error> {
+        *self = Cli::from_arg_matches(m)?;
+        Ok(())
+    }
+}
+
+impl Parser for Cli {}
+
+impl Common {
+    /// The options of command `name`: each as given after its name (`sub`),
+    /// else before it (`top`), else its default.
+    fn from_matches(top: &ArgMatches, name: &str, sub: &ArgMatches) -> Common {
+        let (name, taken) = takes(name);
+        let given = |m: &ArgMatches, o: Opt| {
+            m.value_source(o.name()) == Some(clap::parser::ValueSource::CommandLine)
+        };
+        let from = |o: Opt| match taken.contains(&o) && given(sub, o) {
+            true => sub,
+            false => top,
+        };
+        Common {
+            precision: from(Opt::Precision)
+                .get_one::<Precision>("precision")
+                .copied()
+                .unwrap_or(Precision::Exact),
+            digits: from(Opt::Digits)
+                .get_one::<u8>("digits")
+                .copied()
+                .unwrap_or(4),
+            json: from(Opt::Json).get_flag("json"),
+            lang: from(Opt::Lang).get_one::<Lang>("lang").copied(),
+            html: from(Opt::Html)
+                .get_one::<std::path::PathBuf>("html")
+                .cloned(),
+            force: from(Opt::Force).get_flag("force"),
+            misplaced: Opt::ALL
+                .into_iter()
+                .find(|o| given(top, *o) && !taken.contains(o))
+                .map(|o| (o, name)),
+        }
+    }
 }
 
 /// The subcommands.

@@ -100,6 +100,9 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
     };
     let style = style_of(&cli);
     let json = cli.common.json;
+    if let Some((opt, command)) = cli.common.misplaced {
+        return report_error(&misplaced(opt, command), json, style.lang);
+    }
     let outputs = Outputs::new(cli.common.force);
     if let Err(e) = before_any_work(&cli, &outputs) {
         return report_error(&e, json, style.lang);
@@ -158,9 +161,6 @@ pub fn stopped_status(stopped: Stopped, status: i32, json: bool, lang: Lang) -> 
 /// computed or written in vain. The command's input files are noted.
 fn before_any_work(cli: &Cli, outputs: &Outputs) -> Result<()> {
     print::refuse_closed_stdout()?;
-    if cli.common.html.is_some() && !writes_a_report(&cli.command) {
-        return Err(Error::said("html", Msg::ErrHtmlCommand));
-    }
     match &cli.command {
         Command::Solve { file: f, .. } => outputs.reads([f.as_path()]),
         Command::Shade(a) => outputs.reads(a.lights.iter().map(PathBuf::as_path)),
@@ -272,18 +272,15 @@ pub fn part_file(path: &std::path::Path, k: usize, part: &str) -> std::path::Pat
     path.with_file_name(format!("{stem}-{k}-{part}.{ext}"))
 }
 
-/// Whether a command's result is a worked solution (a report) that
-/// `--html` can write: the calculator commands, `solve` and `render`.
-fn writes_a_report(c: &Command) -> bool {
-    !matches!(
-        c,
-        Command::Bench { .. }
-            | Command::Completions { .. }
-            | Command::Man
-            | Command::Check(_)
-            | Command::Generate(_)
-            | Command::Practice(_)
-    )
+/// An option given before a command that does not take it: `--html`
+/// where there is no worked solution, `--precision` before `render` (which
+/// always computes at f32), any other.
+fn misplaced(opt: args::Opt, command: &str) -> Error {
+    match (opt, command) {
+        (args::Opt::Html, _) => Error::said("html", Msg::ErrHtmlCommand),
+        (args::Opt::Precision, "render") => Error::why("precision", ErrMsg::RenderPrecision),
+        _ => Error::why(opt.name(), ErrMsg::NotTaken(command.into())),
+    }
 }
 
 /// `--html FILE.html`: the worked solution as a self-contained page.

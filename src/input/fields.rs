@@ -59,8 +59,63 @@ impl Expr {
     }
 }
 
-/// A vector [x, y, z].
-pub type Vec3In = [Num; 3];
+/// A vector [x, y, z]: a TOML array of three numbers or expressions, or one
+/// string as people write a vector (`"(1/sqrt(2), 0, -6/sqrt(2))"`,
+/// `"0; 1; 0"`, `"[3, 1, 3]"`), read by the same reader as a flag's
+/// vector ([`crate::num::expr::parse_vec3`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Vec3In(pub [Num; 3]);
+
+impl std::ops::Deref for Vec3In {
+    type Target = [Num; 3];
+    fn deref(&self) -> &[Num; 3] {
+        &self.0
+    }
+}
+
+impl From<[Num; 3]> for Vec3In {
+    fn from(v: [Num; 3]) -> Vec3In {
+        Vec3In(v)
+    }
+}
+
+impl<'de> Deserialize<'de> for Vec3In {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Vec3In, D::Error> {
+        struct V;
+        impl<'de> de::Visitor<'de> for V {
+            type Value = Vec3In;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a vector: an array [x, y, z] or a string \"(x, y, z)\"")
+            }
+            fn visit_str<E: de::Error>(self, s: &str) -> std::result::Result<Vec3In, E> {
+                crate::num::expr::parse_vec3(s)
+                    .map(|[x, y, z]| Vec3In([Num(x), Num(y), Num(z)]))
+                    .map_err(|m| value_error(TomlErr::Num(m.quoted(s))))
+            }
+            fn visit_seq<A: de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> std::result::Result<Vec3In, A::Error> {
+                let mut v = Vec::with_capacity(3);
+                while v.len() < 3 {
+                    match seq.next_element::<Num>()? {
+                        Some(n) => v.push(n),
+                        None => break,
+                    }
+                }
+                let mut n = v.len();
+                while seq.next_element::<de::IgnoredAny>()?.is_some() {
+                    n += 1;
+                }
+                match v.try_into() {
+                    Ok(a) if n == 3 => Ok(Vec3In(a)),
+                    _ => Err(de::Error::invalid_length(n, &"an array of length 3")),
+                }
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
 
 /// An angle: a number (degrees) or a string (`"45"`, `"pi/4 rad"`).
 #[derive(Clone, Debug, PartialEq)]

@@ -203,10 +203,23 @@ impl Places {
     }
 }
 
+/// The most lights one file may have, problem, lights or scene file
+/// alike: Direct3D 9's usual eight active lights (the work grows with
+/// lights × points lit).
+pub const MAX_LIGHTS: usize = 8;
+
 /// Fills in where each of `lights` (the `[[light]]` tables read from
 /// `text`) and its keys are, as `origin:line:col`. The places come from a
-/// second read of the same text that keeps only the positions.
-pub fn place(lights: &mut [LightIn], text: &str, origin: &str) {
+/// second read of the same text that keeps only the positions. More than
+/// [`MAX_LIGHTS`] lights are refused first, before anything is placed or
+/// evaluated.
+pub fn place(lights: &mut [LightIn], text: &str, origin: &str) -> Result<()> {
+    if lights.len() > MAX_LIGHTS {
+        return Err(Error::why(
+            "light",
+            ErrMsg::TooManyLights(lights.len(), MAX_LIGHTS),
+        ));
+    }
     type Table = std::collections::BTreeMap<String, Spanned<serde::de::IgnoredAny>>;
     #[derive(Deserialize)]
     struct Spans {
@@ -214,7 +227,7 @@ pub fn place(lights: &mut [LightIn], text: &str, origin: &str) {
         light: Vec<Spanned<Table>>,
     }
     let Ok(spans) = toml::from_str::<Spans>(text) else {
-        return;
+        return Ok(());
     };
     let at = |offset: usize| {
         let (line, col) = line_col(text, offset);
@@ -228,6 +241,7 @@ pub fn place(lights: &mut [LightIn], text: &str, origin: &str) {
                 .collect(),
         };
     }
+    Ok(())
 }
 
 /// A lights file.
@@ -259,7 +273,7 @@ impl LightsFileIn {
                 ErrMsg::NoLightTable(origin.to_string()),
             ));
         }
-        place(&mut f.light, text, origin);
+        place(&mut f.light, text, origin)?;
         Ok(f)
     }
 }
@@ -422,7 +436,7 @@ fn surface<T: Scalar>(
         (None, None) => {
             let v = v3(T::zero(), T::zero(), T::one());
             tr.step(|| {
-                Step::new(Msg::UnitVector("V".into()), "V = (0, 0, 1)")
+                Step::new(Msg::UnitVector("V".into()), "")
                     .res("V", Val::vec3(&v))
                     .note(Msg::DefaultView)
             });

@@ -3,7 +3,7 @@
 
 use crate::error::{Error, Result};
 use crate::input::fields::{toml_error, toml_reason, AngleIn, Num, Vec3In};
-use crate::msg::ErrMsg;
+use crate::msg::{ErrMsg, Erratum, Msg};
 use serde::de::{self, Deserializer};
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -55,9 +55,15 @@ impl<'de> Deserialize<'de> for PointRef {
         impl<'de> de::Visitor<'de> for V {
             type Value = PointRef;
             fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-                f.write_str("[x, y, z] or the name of a point in [points]")
+                f.write_str("[x, y, z], \"(x, y, z)\" or the name of a point in [points]")
             }
+            /// A name, or coordinates written as one string (`"(0, 2, 6)"`):
+            /// a name holds no bracket, comma or semicolon.
             fn visit_str<E: de::Error>(self, v: &str) -> std::result::Result<PointRef, E> {
+                if v.contains(['(', '[', ',', ';']) {
+                    let at: Vec3In = Deserialize::deserialize(de::value::StrDeserializer::new(v))?;
+                    return Ok(PointRef::At(Box::new(at)));
+                }
                 Ok(PointRef::Named(v.to_string()))
             }
             fn visit_seq<A: de::SeqAccess<'de>>(
@@ -96,12 +102,16 @@ pub struct ClipIn {
     pub segment: Vec<SegmentIn>,
 }
 
-/// One `[[errata]]` entry: where the source's printed answer is wrong, and why.
+/// One `[[errata]]` entry: where the source's printed answer differs from
+/// the right one, what kind of difference it is, and why.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ErratumIn {
     /// The result key (`project.points.B`).
     pub key: String,
+    /// A misprint, another convention, or a rounding (none: not said).
+    #[serde(default)]
+    pub kind: Option<Erratum>,
     /// The reason, in English.
     pub why: String,
     /// The reason in Bahasa Indonesia (shown with `--lang id`).
@@ -111,8 +121,13 @@ pub struct ErratumIn {
 
 impl ErratumIn {
     /// The reason in both languages the file gives.
-    pub fn reason(&self) -> crate::msg::Msg {
-        crate::msg::Msg::Written(self.why.clone(), self.why_id.clone())
+    pub fn why(&self) -> Msg {
+        Msg::Written(self.why.clone(), self.why_id.clone())
+    }
+
+    /// The reason after the words for its kind (`a misprint in the text: …`).
+    pub fn reason(&self) -> Msg {
+        Msg::Erratum(self.kind, Box::new(self.why()))
     }
 }
 
@@ -135,6 +150,9 @@ pub struct ProblemIn {
     pub title: String,
     /// Where it comes from.
     pub source: Option<String>,
+    /// Where it comes from, in Bahasa Indonesia (shown with `--lang id`).
+    #[serde(default)]
+    pub source_id: Option<String>,
     /// The statement, as a student reads it.
     pub statement: Option<String>,
     /// The title in Bahasa Indonesia (shown with `--lang id`).
@@ -172,6 +190,9 @@ pub struct ProblemIn {
     /// Remarks on the source beyond single answers (misprinted rules).
     #[serde(default)]
     pub source_notes: Vec<String>,
+    /// The remarks in Bahasa Indonesia (shown with `--lang id`).
+    #[serde(default)]
+    pub source_notes_id: Vec<String>,
     /// Any other key: kept for tools, ignored by solve.
     #[serde(flatten)]
     pub other: BTreeMap<String, toml::Value>,
@@ -185,7 +206,7 @@ impl ProblemIn {
     /// and column (`file:line:col`).
     pub fn parse(text: &str, origin: &str) -> Result<ProblemIn> {
         let mut p: ProblemIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
-        crate::input::lights::place(&mut p.light, text, origin);
+        crate::input::lights::place(&mut p.light, text, origin)?;
         if let Some(ask) = &p.ask {
             for a in ask {
                 if !PARTS.contains(&a.as_str()) {
@@ -200,12 +221,17 @@ impl ProblemIn {
     }
 
     /// The problem as a reader of Bahasa Indonesia sees it (when
-    /// `indonesian`): `title_id` and `statement_id` in place of `title` and
-    /// `statement` where the file gives them.
+    /// `indonesian`): `title_id`, `statement_id`, `source_id` and
+    /// `source_notes_id` in place of `title`, `statement`, `source` and
+    /// `source_notes` where the file gives them.
     pub fn localized(mut self, indonesian: bool) -> ProblemIn {
         if indonesian {
             self.title = self.title_id.take().unwrap_or(self.title);
             self.statement = self.statement_id.take().or(self.statement);
+            self.source = self.source_id.take().or(self.source);
+            if !self.source_notes_id.is_empty() {
+                self.source_notes = std::mem::take(&mut self.source_notes_id);
+            }
         }
         self
     }
@@ -284,7 +310,7 @@ impl ProblemIn {
                 vecs.extend([&l.direction, &l.position, &l.axis].into_iter().flatten());
             }
         }
-        nums.extend(vecs.into_iter().flatten());
+        nums.extend(vecs.into_iter().flat_map(|v| v.iter()));
         out.extend(nums.iter().filter_map(|n| n.0.eval::<f64>().ok()));
         out
     }

@@ -21,10 +21,6 @@ use toml::Spanned;
 /// (memory: about 350 bytes each; checked before any mesh is built).
 pub const MAX_TRIANGLES: usize = 4_000_000;
 
-/// The most lights one scene may have: Direct3D 9's usual eight active
-/// lights (the work of a frame grows with lights × pixels lit).
-pub const MAX_LIGHTS: usize = 8;
-
 /// A finite number, evaluated from a TOML number or an expression string
 /// while the file is read (so a bad value is reported at its position).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -334,7 +330,7 @@ impl Scene {
     /// `dir` is where relative OBJ paths start.
     pub fn parse(text: &str, origin: &str, dir: &Path) -> Result<Scene> {
         let mut s: SceneIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
-        place(&mut s.light, text, origin);
+        place(&mut s.light, text, origin)?;
         let at = |span: std::ops::Range<usize>| {
             let (l, c) = line_col(text, span.start);
             format!("{origin}:{l}:{c}")
@@ -610,17 +606,11 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
     })
 }
 
-/// The scene's budgets, checked before any light, mesh or height formula
-/// is evaluated: at most [`MAX_LIGHTS`] lights, and at most
-/// [`MAX_TRIANGLES`] triangles from the shapes' own counts (an OBJ file's
-/// are counted when it is read).
+/// The scene's triangle budget, checked before any mesh or height formula
+/// is evaluated: at most [`MAX_TRIANGLES`] triangles from the shapes' own
+/// counts (an OBJ file's are counted when it is read). Its lights were
+/// counted when they were placed (`lights::MAX_LIGHTS`).
 fn budget(s: &SceneIn) -> Result<()> {
-    if s.light.len() > MAX_LIGHTS {
-        return Err(Error::why(
-            "light",
-            ErrMsg::TooManyLights(s.light.len(), MAX_LIGHTS),
-        ));
-    }
     let total = (s.object.iter()).fold(0u64, |t, o| t.saturating_add(shape_triangles(o.get_ref())));
     if total > MAX_TRIANGLES as u64 {
         return Err(Error::why(

@@ -26,7 +26,7 @@ pub fn num(field: &str, text: &str) -> Result<Num> {
 /// A vector flag `X,Y,Z`.
 pub fn vec3(field: &str, text: &str) -> Result<Vec3In> {
     let [x, y, z] = vec3_expr(field, text)?;
-    Ok([Num(x), Num(y), Num(z)])
+    Ok(Vec3In([Num(x), Num(y), Num(z)]))
 }
 
 /// An angle flag (degrees unless `rad` follows).

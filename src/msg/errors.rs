@@ -343,6 +343,8 @@ pub enum ErrMsg {
     Threads(String),
     /// Render refuses --precision.
     RenderPrecision,
+    /// An option given before a command (named) that does not take it.
+    NotTaken(String),
     /// A command that prints its own output run through `run`.
     OwnOutput,
     /// The manual page could not be written: why.

@@ -48,6 +48,19 @@ pub fn is_plain_decimal(p: &str) -> bool {
     !p.is_empty() && p.chars().all(|c| c.is_ascii_digit() || c == '.')
 }
 
+/// The most digits a number in an exact form shown to people may have.
+pub const FORM_DIGITS: usize = 8;
+
+/// Whether an exact form helps a reader: a terminating decimal or an
+/// integer always does; a fraction or surd does while none of its numbers
+/// has more than [`FORM_DIGITS`] digits (`3486784401/20000000000` is read
+/// as 0.1743). The exact form stays in the JSON either way.
+pub fn helps(p: &str) -> bool {
+    is_plain_decimal(p)
+        || p.split(|c: char| !c.is_ascii_digit())
+            .all(|run| run.len() <= FORM_DIGITS)
+}
+
 /// One number for people: `−√2/60 ≈ −0.02357`, `1/50 = 0.02`, `5`,
 /// `≈ 0.4142` (an approximation in an exact run), `0.4142`; decimals with
 /// `digits` significant digits.
@@ -76,6 +89,18 @@ pub fn shown(s: &Shown, digits: usize, exact_mode: bool) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn long_rationals_are_not_forms_that_help() {
+        // 0.7^4·0.5 = 2401/20000 helps; 0.9^10·0.5 = 3486784401/20000000000
+        // (10 and 11 digits) is read as a decimal; integers always help.
+        assert!(helps("2401/20000"));
+        assert!(helps("(4+3√2)/10"));
+        assert!(helps("12345678/3"));
+        assert!(!helps("123456789/2"));
+        assert!(!helps("3486784401/20000000000"));
+        assert!(helps("123456789012"));
+    }
 
     #[test]
     fn an_exact_value_beyond_the_doubles_is_not_written_as_zero() {

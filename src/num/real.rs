@@ -422,7 +422,7 @@ impl Scalar for Real {
         Shown {
             value: Real::to_f64(self),
             exact: self.exact_ascii(),
-            pretty: self.exact_pretty(),
+            pretty: self.exact_pretty().filter(|p| super::format::helps(p)),
         }
     }
 }

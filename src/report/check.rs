@@ -96,8 +96,8 @@ pub fn to_text(m: &Marking, style: &Style) -> String {
         .collect();
     if !whys.is_empty() {
         out.push_str(t_(
-            "\nWhere the source printed these answers wrong (the problem file's errata):\n",
-            "\nDi mana sumber mencetak jawaban ini dengan salah (errata dalam berkas soal):\n",
+            "\nWhy the printed answers differ (the problem file's errata):\n",
+            "\nMengapa jawaban yang tercetak berbeda (errata dalam berkas soal):\n",
         ));
         out.push_str(&whys.concat());
     }

@@ -156,8 +156,16 @@ impl Doc {
         if !s.formula.is_empty() {
             lines.push(self.formula(&st.w(&s.formula)));
         }
-        lines.extend(s.values.iter().map(|(n, v)| self.named(st, n, v, false)));
-        lines.extend(s.result.iter().map(|(n, v)| self.named(st, n, v, true)));
+        let line = |(n, v): &(String, Val), arrow| match s.sub_of(n) {
+            Some(sub) if !v.is_matrix() => {
+                let lead = if arrow { "⇒ " } else { "" };
+                let name = crate::report::words::labels::label(n, st.lang);
+                self.text(&format!("{lead}{}", st.worked(&name, sub, v)))
+            }
+            _ => self.named(st, n, v, arrow),
+        };
+        lines.extend(s.values.iter().map(|nv| line(nv, false)));
+        lines.extend(s.result.iter().map(|nv| line(nv, true)));
         if let Some(n) = &s.note {
             let n = &st.w(n);
             lines.push(match self {

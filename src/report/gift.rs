@@ -18,6 +18,7 @@
 //! preceded by a backslash. Each question is one line (a blank line ends a
 //! question).
 
+use crate::report::escape;
 use crate::report::lang::{tr, Lang};
 use crate::report::moodle::{
     category, esc, esc_text, feedback, intro_html, number, question_name, solution_html,
@@ -140,22 +141,32 @@ fn answers(b: &Blank, lang: Lang) -> String {
     s
 }
 
-/// GIFT text: a backslash before each of `~ = # { } :` and `\`, and line
-/// breaks as `\n`.
+/// GIFT text: a backslash before each of `~ = # { } :` and `\`, line
+/// breaks as `\n`, and the active characters (control characters,
+/// bidirectional overrides) shown as `\u{XX}` as in every other file
+/// grafika writes (report/escape.rs), their backslash and braces escaped.
 pub fn gift_escape(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
         match c {
-            '~' | '=' | '#' | '{' | '}' | ':' | '\\' => {
-                out.push('\\');
-                out.push(c);
-            }
             '\n' => out.push_str("\\n"),
             '\r' => {}
-            _ => out.push(c),
+            c if escape::is_active(c) => {
+                let shown = escape::visible(c.encode_utf8(&mut [0; 4])).into_owned();
+                shown.chars().for_each(|e| push_gift(&mut out, e));
+            }
+            c => push_gift(&mut out, c),
         }
     }
     out
+}
+
+/// `c`, after a backslash when GIFT gives it a meaning.
+fn push_gift(out: &mut String, c: char) {
+    if matches!(c, '~' | '=' | '#' | '{' | '}' | ':' | '\\') {
+        out.push('\\');
+    }
+    out.push(c);
 }
 
 #[cfg(test)]
@@ -169,6 +180,12 @@ mod tests {
             "a\\~b\\=c\\#d\\{e\\}f\\:g\\\\h"
         );
         assert_eq!(gift_escape("one\ntwo"), "one\\ntwo");
+        // ESC would act on a terminal showing the file; U+202E would
+        // reorder the line in Moodle's editor.
+        assert_eq!(
+            gift_escape("a\u{1b}[2J\u{202e}b"),
+            "a\\\\u\\{1B\\}[2J\\\\u\\{202E\\}b"
+        );
     }
 
     #[test]

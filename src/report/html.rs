@@ -7,7 +7,7 @@ use super::figure::xml_escape;
 use super::mathml;
 use super::Style;
 use crate::msg::Msg;
-use crate::stages::trace::{Step, Val};
+use crate::stages::trace::{Step, Subst, Val};
 
 /// The page's style: readable on a screen, one column, and A4 in print
 /// (steps are not split across pages).
@@ -18,9 +18,11 @@ h4{font-size:1.05rem;margin:1rem 0 .2rem}h5{font-size:1rem;margin:.2rem 0}\
 section.step{border-left:3px solid #0072B2;padding:.2rem .8rem;margin:.8rem 0;break-inside:avoid}\
 section.step ul{list-style:none;padding-left:.5rem;margin:.2rem 0}\
 .note{font-style:italic;color:#333}.warning{border:1px solid #D55E00;padding:.4rem}\
-math[display=block]{margin:.3rem 0;max-width:100%;overflow-x:auto}\
+math[display=block]{margin:.3rem 0;padding:.15em 0;max-width:100%;overflow-x:auto;overflow-y:hidden}\
 table.answers{border-collapse:collapse;margin:.5rem 0}\
-table.answers th,table.answers td{border:1px solid #999;padding:.2rem .6rem;text-align:left}\
+table.answers th,table.answers td{border:1px solid #999;padding:.2rem .6rem;text-align:left;vertical-align:top}\
+table.comparison{font-size:.9rem}table.comparison tr.differs{background:#fdf1e6}\
+p.statement{font-size:1.05rem}\
 figure{margin:1rem 0;break-inside:avoid}figure svg{max-width:100%;height:auto}\
 @page{size:A4;margin:18mm}\
 @media print{body{margin:0;max-width:none}a{color:inherit}}";
@@ -56,10 +58,13 @@ pub fn step(k: usize, s: &Step, st: &Style) -> String {
     }
     out.push_str("\n<ul>\n");
     for (n, v) in &s.values {
-        out.push_str(&format!("<li>{}</li>\n", named(st, n, v, false)));
+        out.push_str(&format!(
+            "<li>{}</li>\n",
+            line(st, n, s.sub_of(n), v, false)
+        ));
     }
     for (n, v) in &s.result {
-        out.push_str(&format!("<li>{}</li>\n", named(st, n, v, true)));
+        out.push_str(&format!("<li>{}</li>\n", line(st, n, s.sub_of(n), v, true)));
     }
     out.push_str("</ul>\n");
     if let Some(n) = &s.note {
@@ -71,6 +76,19 @@ pub fn step(k: usize, s: &Step, st: &Style) -> String {
     out + "</section>\n"
 }
 
+/// `name = substitution = value` in MathML when the step shows how the
+/// value was worked, else as [`named`].
+pub fn line(st: &Style, name: &str, sub: Option<&Subst>, v: &Val, arrow: bool) -> String {
+    match sub {
+        Some(sub) if !v.is_matrix() => {
+            let name = crate::report::words::labels::label(name, st.lang);
+            let lead = if arrow { "⇒ " } else { "" };
+            mathml::inline(&format!("{lead}{}", st.worked(&name, sub, v)))
+        }
+        _ => named(st, name, v, arrow),
+    }
+}
+
 /// `name = value` in MathML: a matrix as a table, numbers and vectors as
 /// notation, words (a status, yes/no) as text.
 pub fn named(st: &Style, name: &str, v: &Val, arrow: bool) -> String {
@@ -78,9 +96,9 @@ pub fn named(st: &Style, name: &str, v: &Val, arrow: bool) -> String {
     let lead = if arrow { "⇒ " } else { "" };
     match v {
         Val::List(rows) if v.is_matrix() => format!(
-            "<math display=\"block\"><mrow>{}<mo>=</mo><mrow><mo>(</mo><mtable>{}</mtable><mo>)</mo></mrow></mrow></math>",
+            "<math display=\"block\"><mrow>{}<mo>=</mo>{}</mrow></math>",
             mathml::row(&format!("{lead}{name}")),
-            rows.iter().map(|r| matrix_row(st, r)).collect::<String>()
+            matrix(st, rows)
         ),
         Val::Num(_) | Val::List(_) => {
             // "top ≈ 0.182", not "top = ≈ 0.182"
@@ -97,6 +115,12 @@ pub fn named(st: &Style, name: &str, v: &Val, arrow: bool) -> String {
             xml_escape(&st.val_inline(v))
         ),
     }
+}
+
+/// A matrix in parentheses (the rows of a `Val`).
+fn matrix(st: &Style, rows: &[Val]) -> String {
+    let body: String = rows.iter().map(|r| matrix_row(st, r)).collect();
+    format!("<mrow><mo>(</mo><mtable>{body}</mtable><mo>)</mo></mrow>")
 }
 
 /// One row of a matrix: exact forms where there are any.
@@ -121,8 +145,9 @@ fn matrix_row(st: &Style, r: &Val) -> String {
     format!("<mtr>{tds}</mtr>")
 }
 
-/// The answers as a table of `name | value` rows (maps of points flattened
-/// to `view.points.A`).
+/// The answers as a table of `name | value` rows, each named as the steps
+/// name it (`A'`, `piksel A`, `t (kiri)`; the answer key in its title),
+/// maps of points opened and lists of segments numbered.
 pub fn answers(st: &Style, items: &[(String, Val)]) -> String {
     let mut rows = Vec::new();
     flatten("", items, &mut rows);
@@ -130,11 +155,21 @@ pub fn answers(st: &Style, items: &[(String, Val)]) -> String {
         .iter()
         .map(|(k, v)| {
             let cell = match v {
-                Val::Num(_) | Val::List(_) if !v.is_matrix() => mathml::inline(&st.val_inline(v)),
-                _ if v.is_matrix() => named(st, "", v, false),
+                Val::List(m) if v.is_matrix() => {
+                    format!("<math display=\"block\">{}</math>", matrix(st, m))
+                }
+                Val::Num(_) | Val::List(_) => mathml::inline(&st.val_inline(v)),
+                Val::Text(t) if k.ends_with("status") => {
+                    let said = Val::said(crate::msg::Said::Status(t.clone()));
+                    xml_escape(&st.val_inline(&said))
+                }
                 other => xml_escape(&st.val_inline(other)),
             };
-            format!("<tr><th>{}</th><td>{cell}</td></tr>\n", xml_escape(k))
+            format!(
+                "<tr><th title=\"{}\">{}</th><td>{cell}</td></tr>\n",
+                xml_escape(k),
+                mathml::inline(&crate::report::words::labels::answer_name(k, st.lang))
+            )
         })
         .collect();
     format!("<table class=\"answers\">\n{body}</table>\n")

@@ -81,7 +81,9 @@ fn problem(p: &ProblemIn) -> Value {
         PointRef::At(v) => v3(v),
         PointRef::Named(name) => json!(name),
     };
-    let mut o = json!({ "title": p.title, "source": p.source, "ask": p.ask });
+    let mut o = json!({
+        "title": p.title, "statement": p.statement, "source": p.source, "ask": p.ask,
+    });
     if let Some(c) = &p.camera {
         o["camera"] = json!({ "eye": v3(&c.eye), "look": v3(&c.look), "up": v3(&c.up) });
     }

@@ -59,10 +59,27 @@ fn pieces(s: &str) -> Vec<Piece> {
                 i += 1;
                 Piece::Math("^{-1}".into())
             }
-            c => symbol(c),
+            // a power of several digits is one superscript (`⁴⁰` → `^{40}`)
+            c => match raised_digit(c) {
+                Some(d) => {
+                    let mut digits = String::from(d);
+                    while let Some(d) = chars.get(i).and_then(|c| raised_digit(*c)) {
+                        digits.push(d);
+                        i += 1;
+                    }
+                    Piece::Math(format!("^{{{digits}}}"))
+                }
+                None => symbol(c),
+            },
         });
     }
     out
+}
+
+/// The digit a superscript digit raises (`⁴` → `4`).
+fn raised_digit(c: char) -> Option<char> {
+    let i = "⁰¹²³⁴⁵⁶⁷⁸⁹".chars().position(|d| d == c)?;
+    char::from_digit(i as u32, 10)
 }
 
 /// √ applied to what follows at `i`: a parenthesized group, or a number
@@ -114,9 +131,8 @@ fn symbol(c: char) -> Piece {
         '⊥' => math("\\perp "),
         '°' => math("^\\circ "),
         'ᵀ' => math("^{T}"),
-        '²' => math("^2"),
-        '³' => math("^3"),
-        '⁰' => math("^0"),
+        'ⁿ' => math("^{n}"),
+        'Σ' => math("\\Sigma "),
         '₀' => math("_0"),
         '₁' => math("_1"),
         '₂' => math("_2"),
@@ -158,8 +174,12 @@ mod tests {
             "$-\\sqrt{2}$/60 $\\approx $ $-$0.02357"
         );
         assert_eq!(latex_text("√(a+b)"), "$\\sqrt{a+b}$");
+        // The shading steps' sum over the lights and the specular power.
+        assert_eq!(latex_text("Σ (N·H)ⁿ"), "$\\Sigma $ (N$\\cdot $H)$^{n}$");
         assert_eq!(latex_text("x_1 50%"), "x\\_1 50\\%");
         assert_eq!(latex_math("−√2/2"), "-\\sqrt{2}/2");
         assert!(latex_text("V = Mcam⁻¹, Rᵀ, 22.5°, u·v, a × b, ⇒").is_ascii());
+        // a substituted power: several digits raised are one superscript
+        assert_eq!(latex_math("max(0,5; 0)⁴⁰ + 2³"), "max(0,5; 0)^{40} + 2^{3}");
     }
 }

@@ -27,7 +27,16 @@ pub fn row(s: &str) -> String {
     while i < chars.len() {
         let c = chars[i];
         if c.is_whitespace() {
-            i += 1;
+            // the space between two words or names is kept (`z' dari C'`,
+            // `fovy/2 (derajat)`); beside an operator, MathML spaces it
+            let before = chars[..i].iter().rev().find(|c| !c.is_whitespace());
+            let after = chars[i..].iter().find(|c| !c.is_whitespace());
+            if before.is_some_and(|&b| ends_item(b)) && after.is_some_and(|&a| starts_item(a)) {
+                items.push(SPACE.to_string());
+            }
+            while chars.get(i).is_some_and(|c| c.is_whitespace()) {
+                i += 1;
+            }
         } else if superscript(c).is_some() {
             let (text, next) = run(&chars, i, superscript);
             i = next;
@@ -56,14 +65,39 @@ pub fn row(s: &str) -> String {
     format!("<mrow>{}</mrow>", items.concat())
 }
 
-/// A name from `i` as `<mi>`, or, when a word of two letters or more is
-/// followed by more such words (`polygon face`, `object's triangle`,
-/// `at the centre`), the words as one `<mtext>`: MathML sets the
-/// identifiers of a row side by side, so separate names would lose the
-/// spaces between words. Returns the item and where it ends.
+/// The space kept between two words or names.
+const SPACE: &str = "<mspace width=\"0.3em\"/>";
+
+/// Whether `c` can end an item that a kept space follows: a name, a
+/// number, a prime, a script, a closing bracket.
+fn ends_item(c: char) -> bool {
+    c.is_alphanumeric()
+        || matches!(c, '\'' | '′' | ')' | ']')
+        || superscript(c).is_some()
+        || subscript(c).is_some()
+}
+
+/// Whether `c` can start an item that a kept space precedes.
+fn starts_item(c: char) -> bool {
+    c.is_alphanumeric() || matches!(c, '(' | '[' | '√')
+}
+
+/// A name from `i` as `<mi>`, or as `<mtext>` when it is words: a word of
+/// two lowercase letters or more beside a space and another name (`z'
+/// dari C'`, `piksel A`), or such words one after another (`polygon
+/// face`, `object's triangle`, `at the centre`). MathML sets the
+/// identifiers of a row side by side, so words must be text for the
+/// spaces between them to stay. Returns the item and where it ends.
 fn name_or_words(chars: &[char], i: usize) -> (String, usize) {
     let word_end = |mut k: usize| {
-        while k < chars.len() && (chars[k].is_alphabetic() || chars[k] == '_') {
+        // a name of two joined by a dash is one word (Liang–Barsky)
+        let joined = |k: usize| {
+            chars[k] == '–'
+                && k > 0
+                && chars[k - 1].is_alphabetic()
+                && chars.get(k + 1).is_some_and(|c| c.is_alphabetic())
+        };
+        while k < chars.len() && (chars[k].is_alphabetic() || chars[k] == '_' || joined(k)) {
             k += 1;
         }
         k
@@ -86,17 +120,30 @@ fn name_or_words(chars: &[char], i: usize) -> (String, usize) {
         }
     }
     let text: String = chars[i..end].iter().collect();
-    let tag = if phrase { "mtext" } else { "mi" };
+    let spaced = |k: usize| chars.get(k).is_some_and(|c| *c == ' ');
+    let lone_word = text.chars().count() >= 2
+        && text.chars().all(char::is_lowercase)
+        && ((i > 0 && spaced(i - 1) && i > 1 && ends_item(chars[i - 2]))
+            || (spaced(end)
+                && chars[end..]
+                    .iter()
+                    .find(|c| **c != ' ')
+                    .is_some_and(|c| c.is_alphanumeric())));
+    let tag = if phrase || lone_word { "mtext" } else { "mi" };
     (format!("<{tag}>{}</{tag}>", xml_escape(&text)), end)
 }
 
-/// A symbol as `<mo>`; brackets and the slash of an inline fraction are
-/// set without the space MathML would give an operator.
+/// A symbol as `<mo>`; brackets, bars and the slash of an inline fraction
+/// are set without the space MathML would give an operator, and without
+/// stretching to a root beside them; the separators `;` and `,` are
+/// followed by a space, as the text writes them.
 fn operator(c: char) -> String {
     match c {
-        '(' | ')' | '[' | ']' | '/' | '|' => {
-            format!("<mo lspace=\"0\" rspace=\"0\">{c}</mo>")
+        '(' | ')' | '[' | ']' | '|' => {
+            format!("<mo stretchy=\"false\" lspace=\"0\" rspace=\"0\">{c}</mo>")
         }
+        '/' => "<mo lspace=\"0\" rspace=\"0\">/</mo>".to_string(),
+        ';' | ',' => format!("<mo separator=\"true\" lspace=\"0\" rspace=\"0.35em\">{c}</mo>"),
         _ => format!("<mo>{}</mo>", xml_escape(&c.to_string())),
     }
 }
@@ -245,10 +292,23 @@ mod tests {
             row("top = near·tan"),
             "<mrow><mi>top</mi><mo>=</mo><mi>near</mi><mo>·</mo><mi>tan</mi></mrow>"
         );
-        assert_eq!(row("a b"), "<mrow><mi>a</mi><mi>b</mi></mrow>");
+        // a space between two names is kept, and a lone word beside a
+        // name is text: `z' dari C'`, `piksel A`
+        assert_eq!(
+            row("a b"),
+            "<mrow><mi>a</mi><mspace width=\"0.3em\"/><mi>b</mi></mrow>"
+        );
+        assert_eq!(
+            row("Liang–Barsky ="),
+            "<mrow><mi>Liang–Barsky</mi><mo>=</mo></mrow>"
+        );
+        assert_eq!(
+            row("piksel A"),
+            "<mrow><mtext>piksel</mtext><mspace width=\"0.3em\"/><mi>A</mi></mrow>"
+        );
         assert_eq!(
             row("z at the vertices"),
-            "<mrow><mi>z</mi><mtext>at the vertices</mtext></mrow>"
+            "<mrow><mi>z</mi><mspace width=\"0.3em\"/><mtext>at the vertices</mtext></mrow>"
         );
     }
 
@@ -279,7 +339,9 @@ mod tests {
         // the Indonesian decimal comma stays in the number; "; " separates
         assert_eq!(
             row("(0,5; 2)"),
-            "<mrow><mo lspace=\"0\" rspace=\"0\">(</mo><mn>0,5</mn><mo>;</mo><mn>2</mn><mo lspace=\"0\" rspace=\"0\">)</mo></mrow>"
+            "<mrow><mo stretchy=\"false\" lspace=\"0\" rspace=\"0\">(</mo><mn>0,5</mn>\
+             <mo separator=\"true\" lspace=\"0\" rspace=\"0.35em\">;</mo><mn>2</mn>\
+             <mo stretchy=\"false\" lspace=\"0\" rspace=\"0\">)</mo></mrow>"
         );
         assert_eq!(
             row("7.071e−309"),

@@ -28,13 +28,13 @@ pub fn indonesian(code: &str) -> Option<&'static str> {
         "u_not_normalized" => {
             "u = Vup × n tidak dibagi dengan |Vup × n| (v = n × u pun ikut memiliki panjang itu)"
         }
-        "fovy_not_halved" => "tan(fovy) dipakai untuk bidang pandang, bukan tan(fovy/2)",
+        "fovy_not_halved" => "tan(fovy) dipakai untuk viewing window, bukan tan(fovy/2)",
         "degrees_as_radians" => "sudut dalam derajat dimasukkan ke tan seolah-olah dalam radian",
         "height_is_half_extent" => {
-            "setengah ukuran near·tan(fovy/2) (h pada teks) diberikan sebagai tinggi bidang pandang (dan aspect·h sebagai lebarnya)"
+            "setengah ukuran near·tan(fovy/2) (h pada teks) diberikan sebagai tinggi viewing window (dan aspect·h sebagai lebarnya)"
         }
         "height_as_half_extent" => {
-            "near·tan(fovy/2) dianggap tinggi penuh, sehingga tepi-tepi bidang pandang berada pada setengah jarak yang benar"
+            "near·tan(fovy/2) dianggap tinggi penuh, sehingga tepi-tepi viewing window berada pada setengah jarak yang benar"
         }
         "d_sign" => "tanda d salah (bidang proyeksi z = +near, bukan z = −near)",
         "matrix_transposed" => "matriks pandang ditulis tertranspos (konvensi vektor baris P·M)",
@@ -46,22 +46,22 @@ pub fn indonesian(code: &str) -> Option<&'static str> {
         }
         "reflect_plus_l" => "R dihitung sebagai 2N(L·N) + L, bukan 2N(L·N) − L",
         "specular_no_max" => {
-            "suku spekular tanpa max(·, 0): cos β yang negatif dipangkatkan n"
+            "komponen specular tanpa max(·, 0): cos β yang negatif dipangkatkan n"
         }
         "pixel_y_from_top" => {
             "py piksel diukur dari tepi atas (H − py), seperti baris berkas gambar dihitung, bukan dari tepi bawah"
         }
         "eye_no_translation" => {
-            "koordinat mata diambil sebagai (u·P, v·P, n·P), Peye tidak dikurangkan (matriks view tanpa translasinya, serta proyeksi dan piksel yang mengikutinya)"
+            "koordinat kamera diambil sebagai (u·P, v·P, n·P), Peye tidak dikurangkan (matriks transformasi pandang tanpa translasinya, serta proyeksi dan piksel yang mengikutinya)"
         }
         "aspect_inverted" => {
-            "tepi kanan bidang pandang diambil sebagai top / aspect, bukan aspect·top (lebarnya 2·top/aspect, dan piksel yang mengikutinya)"
+            "tepi kanan viewing window diambil sebagai top / aspect, bukan aspect·top (lebarnya 2·top/aspect, dan piksel yang mengikutinya)"
         }
         "light_not_normalized" => {
-            "L tidak dibagi dengan |L|: cos α = L·N dengan vektor cahaya apa adanya (serta R = 2N(L·N) − L, cos β dan suku-suku yang mengikutinya)"
+            "L tidak dibagi dengan |L|: cos α = L·N dengan vektor cahaya apa adanya (serta R = 2N(L·N) − L, cos β dan komponen-komponen yang mengikutinya)"
         }
         "normal_not_normalized" => {
-            "N tidak dibagi dengan |N|: cos α = L·N dengan normal apa adanya (serta R, cos β dan suku-suku yang mengikutinya)"
+            "N tidak dibagi dengan |N|: cos α = L·N dengan normal apa adanya (serta R, cos β dan komponen-komponen yang mengikutinya)"
         }
         "copied_misprint" => {
             "nilai yang dicetak sumber, yang menurut erratanya salah (lihat erratanya)"

@@ -22,9 +22,9 @@ pub mod render;
 pub mod sheets;
 pub mod words;
 
-use crate::msg::Msg;
+use crate::msg::{Msg, Printed};
 use crate::num::Shown;
-use crate::stages::trace::{Step, Val};
+use crate::stages::trace::{Step, Subst, Val};
 use crate::tutor::solution::{Asked, Compared, Comparison, Report};
 use comfy_table::{presets, Table};
 use lang::{tr, Lang};
@@ -200,11 +200,11 @@ impl Style {
         }
         let name = |k: &str| words::labels::label(k, self.lang);
         for (k, v) in &s.values {
-            out.push_str(&self.named("    ", &name(k), v));
+            out.push_str(&self.line("    ", &name(k), s.sub_of(k), v));
             out.push('\n');
         }
         for (k, v) in &s.result {
-            out.push_str(&self.named("  ⇒ ", &name(k), v));
+            out.push_str(&self.line("  ⇒ ", &name(k), s.sub_of(k), v));
             out.push('\n');
         }
         if let Some(n) = &s.note {
@@ -213,7 +213,89 @@ impl Style {
         out
     }
 
-    /// `name = value`, with a matrix on its own lines.
+    /// `name = value` as [`named`](Style::named) writes it, or `name =
+    /// substitution = value` when the step shows how it was worked.
+    pub fn line(&self, indent: &str, name: &str, sub: Option<&Subst>, v: &Val) -> String {
+        match sub {
+            Some(sub) if !v.is_matrix() => {
+                format!("{indent}{}", self.worked(name, sub, v))
+            }
+            _ => self.named(indent, name, v),
+        }
+    }
+
+    /// `name = substitution = value` (`t = (0 − 4)/(−2 − 4) = 2/3 ≈
+    /// 0.6667`), `≈` before a value without an exact form; the
+    /// substitution is left out when it reads as the value itself.
+    pub fn worked(&self, name: &str, sub: &Subst, v: &Val) -> String {
+        let (val, sub) = (self.val_inline(v), self.subst(sub));
+        let shown = |s: &str| s.split([' ']).any(|p| p == sub) || s == sub;
+        match val.strip_prefix("≈ ") {
+            _ if shown(&val.replace(" ≈ ", " ").replace(" = ", " ")) => format!("{name} = {val}"),
+            Some(rest) => format!("{name} = {sub} ≈ {rest}"),
+            None => format!("{name} = {sub} = {val}"),
+        }
+    }
+
+    /// A substitution in this style's language: each value as a short
+    /// decimal when that is exact (0.1), else its exact form (√2/2, 2/3),
+    /// else its decimal; in parentheses where the operator before it
+    /// would otherwise bind wrongly (`4 − (−2)`, `2·(√2−1)`).
+    pub fn subst(&self, s: &Subst) -> String {
+        let mut out = String::new();
+        let pieces: Vec<&str> = s.form.split("{}").collect();
+        for (i, piece) in pieces.iter().enumerate() {
+            out.push_str(&match self.lang {
+                Lang::En => piece.to_string(),
+                Lang::Id => piece.replace(", ", "; "),
+            });
+            let Some(a) = s.args.get(i).filter(|_| i + 1 < pieces.len()) else {
+                continue;
+            };
+            let text = self.operand(a);
+            // a whole power after `^` is raised: max(0.8, 0)^4 → max(0.8, 0)⁴
+            let raised: Option<String> = (out.ends_with('^'))
+                .then(|| text.chars().map(superscript).collect())
+                .flatten();
+            match raised {
+                Some(r) => {
+                    out.pop();
+                    out.push_str(&r);
+                }
+                None => {
+                    let (before, after) =
+                        (out.trim_end().chars().last(), pieces[i + 1].chars().next());
+                    out.push_str(&parenthesized(&text, before, after));
+                }
+            }
+        }
+        out
+    }
+
+    /// One value of a substitution (a vector in parentheses).
+    fn operand(&self, v: &Val) -> String {
+        match v {
+            Val::Num(s) => {
+                let dec = fmt_dec(s.value, self.digits);
+                let text = match &s.pretty {
+                    Some(p) if p.contains('√') || dec.parse::<f64>().ok() != Some(s.value) => {
+                        p.clone()
+                    }
+                    _ => dec,
+                };
+                self.dec(text.replace('-', "−"))
+            }
+            Val::List(items) => {
+                let parts: Vec<String> = items.iter().map(|x| self.operand(x)).collect();
+                let sep = self.tr(", ", "; ");
+                format!("({})", parts.join(sep))
+            }
+            other => self.val_inline(other),
+        }
+    }
+
+    /// `name = value`, with a matrix on its own lines; `name ≈ value` when
+    /// the value has no exact form (never `name = ≈ value`).
     pub fn named(&self, indent: &str, name: &str, v: &Val) -> String {
         if v.is_matrix() {
             let table = self.matrix(match v {
@@ -244,9 +326,28 @@ impl Report {
         }
     }
 
-    /// The worked solution and answer as text.
+    /// The problem `solve` worked, as its file gives it in the language it
+    /// was read in: the title, the statement, and what is asked (the
+    /// parts answered).
+    pub fn posed(&self) -> Option<(String, Option<String>, Msg)> {
+        let Asked::File(p) = &self.asked else {
+            return None;
+        };
+        let statement = p.statement.as_ref().map(|s| s.trim().to_string());
+        let parts = self.result.iter().map(|(k, _)| k.clone()).collect();
+        Some((p.title.clone(), statement, Msg::Asked(parts)))
+    }
+
+    /// The worked solution and answer as text, after the problem.
     pub fn to_text(&self, style: &Style) -> String {
         let mut out = String::new();
+        if let Some((title, statement, asked)) = self.posed() {
+            out.push_str(&format!("{title}\n{}\n", "=".repeat(title.chars().count())));
+            if let Some(s) = statement {
+                out.push_str(&format!("{s}\n"));
+            }
+            out.push_str(&format!("\n{}\n", practice::wrap(&style.w(&asked), "")));
+        }
         let mut section: Option<&Msg> = None;
         let step_word = style.tr("Step", "Langkah");
         for (i, s) in self.steps.iter().enumerate() {
@@ -261,11 +362,11 @@ impl Report {
         }
         out.push_str(&format!("\n{}\n", style.tr("Answer", "Jawaban")));
         for (k, v) in self.answer().iter() {
-            let k = match &self.asked {
+            let named = match &self.asked {
                 Asked::Render(_) => render::label(k, style.lang),
-                _ => k.clone(),
+                _ => words::labels::answer_key(k, None, style.lang),
             };
-            push_answer(&mut out, style, "  ", &k, v);
+            push_answer(&mut out, style, "  ", (k, &named), v);
         }
         for n in self.all_notes(style) {
             out.push_str(&format!("\n{n}\n"));
@@ -321,13 +422,18 @@ impl Report {
         obj
     }
 
+    /// The report's own notes after the answer: a render's `--stats`.
+    pub fn notes(&self, style: &Style) -> Vec<String> {
+        match &self.asked {
+            Asked::Render(run) if run.stats_asked => vec![render::stats_text(run, style.lang)],
+            _ => vec![],
+        }
+    }
+
     /// The notes after the answer: the report's own, the comparison with
     /// the printed answers, the notes on the source.
     fn all_notes(&self, style: &Style) -> Vec<String> {
-        let mut notes = Vec::new();
-        if let Asked::Render(run) = &self.asked {
-            notes.extend(run.stats_asked.then(|| render::stats_text(run, style.lang)));
-        }
+        let mut notes = self.notes(style);
         notes.extend(
             self.comparison
                 .as_ref()
@@ -346,6 +452,19 @@ impl Report {
     }
 }
 
+impl Compared {
+    /// How the printed answer compares: agrees, differs (of the kind the
+    /// problem file says), not asked, not comparable.
+    pub fn verdict(&self) -> Printed {
+        match (&self.computed, self.agrees) {
+            (None, _) => Printed::NotAsked,
+            (Some(_), Some(true)) => Printed::Agrees,
+            (Some(_), Some(false)) => Printed::Differs(self.kind),
+            (Some(_), None) => Printed::NotComparable,
+        }
+    }
+}
+
 /// The comparison with the printed answers, one line per answer.
 fn comparison_text(c: &Comparison, lang: Lang) -> String {
     let style = Style::new(4, true, lang);
@@ -358,80 +477,118 @@ fn comparison_text(c: &Comparison, lang: Lang) -> String {
     let mut lines = vec![format!("{head} {src}:")];
     let printed = t("printed", "tercetak");
     for r in &c.rows {
-        let (key, shown) = (&r.key, &r.printed);
+        let name = words::labels::answer_name(&r.key, lang);
+        let (key, shown) = (format!("{name} ({})", r.key), &r.printed);
+        let verdict = style.w(&Msg::Printed(r.verdict()));
         let why = (r.why.as_ref())
             .map(|w| format!(": {}", style.w(w)))
             .unwrap_or_default();
-        lines.push(match (&r.computed, r.agrees) {
-            (None, _) => format!(
-                "  {key}: {printed} {shown} — {}",
-                t(
-                    "not computed in this run (not asked for)",
-                    "tidak dihitung pada jalannya program ini (tidak diminta)"
-                )
-            ),
-            (Some(_), Some(true)) => {
-                format!("  {key}: {printed} {shown} — {}", t("agrees", "sesuai"))
-            }
-            (Some(v), Some(false)) => format!(
-                "  {key}: {printed} {shown}, {} {} — {}{why}",
+        lines.push(match (&r.computed, r.verdict()) {
+            (Some(v), Printed::Differs(_)) => format!(
+                "  {key}: {printed} {shown}, {} {} — {verdict}{why}",
                 t("correct", "yang benar"),
-                style.val_inline(v),
-                t("the text is WRONG here", "teks SALAH di sini")
+                style.val_inline(v)
             ),
-            (Some(v), None) => format!(
-                "  {key}: {printed} {shown}, {} {} — {}",
+            (Some(v), Printed::NotComparable) => format!(
+                "  {key}: {printed} {shown}, {} {} — {verdict}",
                 t("computed", "hasil hitung"),
-                style.val_inline(v),
-                t("cannot be compared", "tidak dapat dibandingkan")
+                style.val_inline(v)
             ),
+            _ => format!("  {key}: {printed} {shown} — {verdict}"),
         });
     }
     lines.join("\n")
 }
 
-/// One compared answer as JSON.
+/// One compared answer as JSON (`kind`: the erratum's, a code).
 fn compared_json(r: &Compared, lang: Lang) -> Value {
     json!({
         "key": r.key,
         "printed": r.printed,
         "computed": r.computed.as_ref().map(value_json),
         "agrees": r.agrees,
+        "kind": r.kind,
         "why": r.why.as_ref().map(|w| crate::report::words::words(w, lang)),
     })
 }
 
 /// Writes one answer, opening maps (e.g. points) into one line per entry
 /// and a list of maps (the segments of a clip) into one numbered block per
-/// map, `clip[1]:`, `clip[2]:`, …; an empty map is `none`.
-fn push_answer(out: &mut String, style: &Style, indent: &str, k: &str, v: &Val) {
+/// map, `clip[1]:`, `clip[2]:`, …; an empty map is `none`. `k` is the key
+/// and the words it is shown with (`answer_key`).
+fn push_answer(out: &mut String, style: &Style, indent: &str, k: (&str, &str), v: &Val) {
+    let (key, shown) = k;
     match v {
         Val::Map(kv) if kv.is_empty() => {
-            out.push_str(&style.named(indent, k, &Val::Null));
+            out.push_str(&style.named(indent, shown, &Val::Null));
             out.push('\n');
         }
         Val::List(items) if is_list_of_maps(items) => {
             for (i, item) in items.iter().enumerate() {
-                push_answer(out, style, indent, &format!("{k}[{}]", i + 1), item);
+                let numbered = format!("{shown}[{}]", i + 1);
+                push_answer(out, style, indent, (key, &numbered), item);
             }
         }
         Val::Map(kv) => {
-            out.push_str(&format!("{indent}{k}:\n"));
+            out.push_str(&format!("{indent}{shown}:\n"));
             for (k2, v2) in kv {
-                push_answer(out, style, &format!("{indent}  "), k2, v2);
+                let named = words::labels::answer_key(k2, Some(key), style.lang);
+                push_answer(out, style, &format!("{indent}  "), (k2, &named), v2);
             }
         }
         // A clipping status is a code (check compares it); the text
         // glosses it in the chosen language.
-        Val::Text(t) if k == "status" => {
+        Val::Text(t) if key == "status" => {
             let said = Val::said(crate::msg::Said::Status(t.clone()));
-            out.push_str(&style.named(indent, k, &said));
+            out.push_str(&style.named(indent, shown, &said));
             out.push('\n');
         }
         _ => {
-            out.push_str(&style.named(indent, k, v));
+            out.push_str(&style.named(indent, shown, v));
             out.push('\n');
         }
+    }
+}
+
+/// A digit raised (`4` → `⁴`); `None` for anything else.
+fn superscript(c: char) -> Option<char> {
+    let i = c.to_digit(10)? as usize;
+    "⁰¹²³⁴⁵⁶⁷⁸⁹".chars().nth(i)
+}
+
+/// `text` as an operand between `before` and `after` (the characters
+/// around it): in parentheses when it is negative after an operator, a sum
+/// (or, after `/` and `^`, any expression) after a product or quotient, or
+/// anything but a plain number before a power (`(−2)²`).
+fn parenthesized(text: &str, before: Option<char>, after: Option<char>) -> String {
+    let negative = text.starts_with('−');
+    let body = text.strip_prefix('−').unwrap_or(text);
+    let mut depth = 0;
+    let (mut sum, mut op) = (false, false);
+    for c in body.chars() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            '+' | '−' if depth == 0 => (sum, op) = (true, true),
+            '/' | '·' if depth == 0 => op = true,
+            _ => {}
+        }
+    }
+    let power = after.is_some_and(|c| "²³ⁿ^".contains(c)) && (negative || op || body.contains('√'));
+    let factor = (negative || op) && after.is_some_and(|c| "·×".contains(c));
+    let wrap = power
+        || factor
+        || match before {
+            None | Some('(' | '[' | ';' | ',' | '=' | '|') => false,
+            Some('+') => negative,
+            Some('−' | '·' | '×') => negative || sum,
+            Some('/' | '^') => negative || op || (body.contains('√') && !body.starts_with('√')),
+            Some(_) => negative,
+        };
+    if wrap {
+        format!("({text})")
+    } else {
+        text.to_string()
     }
 }
 
@@ -490,6 +647,12 @@ pub fn step_json(s: &Step, lang: Lang) -> Value {
         "result": obj(&s.result, value_json),
         "exact": { "values": obj(&s.values, exact_json), "result": obj(&s.result, exact_json) },
     });
+    if !s.subs.is_empty() {
+        // notation with the numbers written the English way, like `exact`
+        let en = Style::new(4, true, Lang::En);
+        let subs = s.subs.iter().map(|(k, x)| (k.clone(), json!(en.subst(x))));
+        o["substituted"] = Value::Object(subs.collect());
+    }
     if let Some(sec) = &s.section {
         o["section"] = json!(w(sec));
     }

@@ -199,7 +199,7 @@ pub fn instructions(kinds: &Typing, q: &Quiz, lang: Lang, mark: Decimal) -> Stri
         s.push_str(tr(
             lang,
             "Type the clipping status as accepted, rejected or clipped, and the segment that is left as none when there is none.",
-            "Tulis status kliping sebagai accepted, rejected atau clipped, dan sisa segmen sebagai none bila tidak ada.",
+            "Tulis status clipping sebagai accepted, rejected atau clipped, dan sisa segmen sebagai none bila tidak ada.",
         ));
     }
     s

@@ -6,8 +6,9 @@
 use super::doc::Doc;
 use super::figure::xml_escape;
 use super::html::{answers, figure, heading, page};
-use super::{Report, Style};
-use crate::msg::Msg;
+use super::{mathml, Report, Style};
+use crate::msg::{Msg, Printed};
+use crate::tutor::solution::{Compared, Comparison};
 
 /// The drawing's part (`view`, `clip-2`, …) a section of `solve` shows.
 fn part_of(section: &Msg) -> Option<String> {
@@ -33,6 +34,11 @@ pub fn report_page(
     figures: &[(String, String, String)],
 ) -> String {
     let mut body = String::new();
+    if let Some((_, statement, asked)) = r.posed() {
+        for p in statement.iter().chain([&st.w(&asked)]) {
+            body.push_str(&format!("<p class=\"statement\">{}</p>\n", xml_escape(p)));
+        }
+    }
     for w in &r.warnings {
         body.push_str(&format!(
             "<p class=\"warning\">{}: {}</p>\n",
@@ -63,8 +69,80 @@ pub fn report_page(
     body.push_str(&Doc::Html.steps_with(r, st, &mut under));
     body.push_str(&heading(1, st.tr("Answer", "Jawaban")));
     body.push_str(&answers(st, &r.answer()));
-    for n in r.all_notes(st) {
+    for n in r.notes(st) {
         body.push_str(&format!("<p class=\"note\">{}</p>\n", xml_escape(&n)));
     }
+    if let Some(c) = &r.comparison {
+        body.push_str(&comparison(c, st));
+    }
+    if !r.source_notes.is_empty() {
+        body.push_str(&heading(
+            2,
+            st.tr("Notes on the source", "Catatan tentang sumber"),
+        ));
+        let items: String = (r.source_notes.iter())
+            .map(|n| format!("<li>{}</li>\n", xml_escape(n)))
+            .collect();
+        body.push_str(&format!("<ul>\n{items}</ul>\n"));
+    }
     page(title, &body, st.lang.code())
+}
+
+/// The comparison with the answers a source printed, as a table: each
+/// value named as the steps name it, what was printed, the correct value
+/// and the verdict (agrees, a misprint, another convention, a rounding);
+/// why, where the problem file says, in a row of its own beneath, so the
+/// table keeps to the page's width.
+fn comparison(c: &Comparison, st: &Style) -> String {
+    let src = c.source.as_deref().unwrap_or(st.tr("the source", "sumber"));
+    let head = st.tr(
+        "Compared with the answers printed in",
+        "Dibandingkan dengan jawaban yang tercetak di",
+    );
+    let cols = [
+        st.tr("value", "nilai"),
+        st.tr("printed", "tercetak"),
+        st.tr("correct", "yang benar"),
+        st.tr("verdict", "penilaian"),
+    ];
+    let th: String = cols.iter().map(|c| format!("<th>{c}</th>")).collect();
+    let rows: String = c.rows.iter().map(|row| compared_row(row, st)).collect();
+    format!(
+        "{}<table class=\"answers comparison\">\n<tr>{th}</tr>\n{rows}</table>\n",
+        heading(2, &format!("{head} {src}"))
+    )
+}
+
+/// One row of the comparison (two when the problem file says why); the
+/// value's name is text, which wraps in the narrow first column (MathML
+/// would not).
+fn compared_row(row: &Compared, st: &Style) -> String {
+    let name = crate::report::words::labels::answer_name(&row.key, st.lang);
+    let correct = match (&row.computed, row.verdict()) {
+        (Some(v), Printed::Differs(_) | Printed::NotComparable) => {
+            mathml::inline(&st.val_inline(v))
+        }
+        _ => String::new(),
+    };
+    let class = if row.agrees == Some(true) {
+        "agrees"
+    } else {
+        "differs"
+    };
+    let why = row.why.as_ref().map(|w| {
+        format!(
+            "<tr class=\"{class} why\"><td colspan=\"3\"><em>{}:</em> {}</td></tr>\n",
+            st.tr("why", "alasan"),
+            xml_escape(&st.w(w))
+        )
+    });
+    format!(
+        "<tr class=\"{class}\"><th rowspan=\"{}\" title=\"{}\">{}</th><td><code>{}</code></td><td>{correct}</td><td>{}</td></tr>\n{}",
+        if why.is_some() { 2 } else { 1 },
+        xml_escape(&row.key),
+        xml_escape(&name),
+        xml_escape(&row.printed),
+        xml_escape(&st.w(&Msg::Printed(row.verdict()))),
+        why.unwrap_or_default()
+    )
 }

@@ -453,76 +453,13 @@ fn name(x: &impl std::fmt::Debug) -> String {
     format!("{x:?}").to_lowercase()
 }
 
-/// What a key asks for, in a few words.
+/// What a key asks for, in a few words, and the key.
 pub fn label(key: &str, lang: Lang) -> String {
-    let parts: Vec<&str> = key.split('.').collect();
-    let plane = |p: &str| {
-        match (lang, p) {
-            (Lang::Id, "left") => "kiri",
-            (Lang::Id, "right") => "kanan",
-            (Lang::Id, "bottom") => "bawah",
-            (Lang::Id, "top") => "atas",
-            (Lang::Id, "front") => "depan",
-            (Lang::Id, "back") => "belakang",
-            (_, p) => p,
-        }
-        .to_string()
-    };
-    let t = |en: &str, id: &str| tr(lang, en, id).to_string();
-    let words = match parts[..] {
-        ["view", a @ ("n" | "u" | "v")] => format!("{} {a}", t("camera axis", "sumbu kamera")),
-        ["view", "matrix"] => t("the view matrix V", "matriks view V"),
-        ["view", "points", p] => format!("{} {p}'", t("eye coordinates", "koordinat mata")),
-        ["project", "points", p] => format!("{} {p}''", t("projected point", "titik proyeksi")),
-        ["window", k] => format!("{} {k}", t("window", "window")),
-        ["viewport", "pixels", p] => {
-            format!("{} {p}", t("pixel coordinates of", "koordinat piksel"))
-        }
-        ["shade", "L"] => t("unit vector L", "vektor satuan L"),
-        ["shade", "N"] => t("unit vector N", "vektor satuan N"),
-        ["shade", "R"] => t("reflection vector R", "vektor pantul R"),
-        ["shade", "cos_alpha"] => "cos α = L·N".to_string(),
-        ["shade", "cos_beta"] => "cos β = R·V".to_string(),
-        ["shade", "color"] => t("the colour, clamped to [0, 1]", "warna, dibatasi ke [0, 1]"),
-        ["shade", k] => format!("{} {k}", t("term", "suku")),
-        _ => return clip_label(&parts, lang, plane),
-    };
-    format!("{words} ({key})")
-}
-
-fn clip_label(parts: &[&str], lang: Lang, plane: impl Fn(&str) -> String) -> String {
-    let key = parts.join(".");
-    let rest = match parts.get(1).map(|p| p.parse::<usize>()) {
-        Some(Ok(_)) => &parts[2..],
-        _ => &parts[1.min(parts.len())..],
-    };
-    let t = |en: &str, id: &str| tr(lang, en, id).to_string();
-    let words = match rest {
-        ["code0"] => t("outcode of P0", "region code P0"),
-        ["code1"] => t("outcode of P1", "region code P1"),
-        ["intersections", p, "t"] => format!("t {} {}", t("at the plane", "pada bidang"), plane(p)),
-        ["intersections", p, "point"] => {
-            format!(
-                "{} {}",
-                t("intersection with the plane", "titik potong dengan bidang"),
-                plane(p)
-            )
-        }
-        ["intersections", p, "code"] => {
-            format!(
-                "{} {}",
-                t(
-                    "outcode of the intersection with the plane",
-                    "region code titik potong dengan bidang"
-                ),
-                plane(p)
-            )
-        }
-        ["segment"] => t("the clipped segment", "segmen hasil kliping"),
-        ["status"] => t("the status", "status"),
-        _ => return key,
-    };
-    format!("{words} ({key})")
+    let words = crate::report::words::labels::answer_words(key, lang);
+    match words == key {
+        true => words,
+        false => format!("{words} ({key})"),
+    }
 }
 
 /// How to write the answer: its shape.

@@ -3,7 +3,7 @@
 //! One exhaustive match: a key without both languages does not compile.
 
 use super::lang::Lang;
-use crate::msg::{LightPart, Msg, SpotZone, Term, Trivial};
+use crate::msg::{Erratum, LightPart, Msg, Printed, SpotZone, Term, Trivial};
 
 mod drawn;
 pub mod errors;
@@ -21,6 +21,13 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             (Lang::Id, Some(ind)) => ind.clone(),
             _ => en.clone(),
         },
+        Msg::Erratum(kind, why) => format!(
+            "{}: {}",
+            printed(Printed::Differs(*kind), id),
+            words(why, lang)
+        ),
+        Msg::Printed(p) => printed(*p, id),
+        Msg::Asked(parts) => asked(parts, id),
         Msg::SecModeling
         | Msg::SecViewing
         | Msg::SecProjection
@@ -76,6 +83,67 @@ pub fn words(m: &Msg, lang: Lang) -> String {
 
 fn pick(id: bool, en: &str, ind: &str) -> String {
     if id { ind } else { en }.to_string()
+}
+
+/// What a problem asks, part by part (the parts of `input::problem::PARTS`).
+fn asked(parts: &[String], id: bool) -> String {
+    let part = |p: &str| {
+        let (en, ind) = match p {
+            "view" => (
+                "the camera basis u, v, n, the view matrix and the eye coordinates of the points",
+                "basis kamera u, v, n, matriks transformasi pandang, dan posisi titik-titik dalam koordinat kamera",
+            ),
+            "project" => (
+                "their projections onto the near plane",
+                "hasil proyeksinya terhadap near clipping plane",
+            ),
+            "window" => (
+                "the viewing window on the near plane (its edges, width and height) and which projected points lie inside the view volume",
+                "viewing window pada near clipping plane (tepi-tepinya, lebar dan tinggi) dan titik hasil proyeksi mana yang berada di dalam view volume",
+            ),
+            "viewport" => (
+                "the pixel of each point in the viewport",
+                "posisi piksel tiap titik pada viewport",
+            ),
+            "clip" => (
+                "the region codes of the ends and the result of clipping the segment",
+                "region code kedua ujung dan hasil clipping segmen garis",
+            ),
+            _ => (
+                "the colour at the point, term by term",
+                "warna hasil pencahayaan pada titik itu, komponen demi komponen",
+            ),
+        };
+        pick(id, en, ind)
+    };
+    let list: Vec<String> = parts.iter().map(|p| part(p)).collect();
+    format!("{}: {}.", pick(id, "Asked", "Ditanyakan"), list.join("; "))
+}
+
+/// How a printed answer compares, worded as what it is: a misprint,
+/// another convention, a rounding (docs/spec.md §5).
+fn printed(p: Printed, id: bool) -> String {
+    let p_ = |en: &str, ind: &str| pick(id, en, ind);
+    match p {
+        Printed::Agrees => p_("agrees", "sesuai"),
+        Printed::Differs(None) => p_("the printed answer is wrong", "jawaban yang tercetak salah"),
+        Printed::Differs(Some(Erratum::Misprint)) => {
+            p_("a misprint in the text", "salah cetak di teks")
+        }
+        Printed::Differs(Some(Erratum::Convention)) => p_(
+            "the text uses another convention",
+            "teks memakai konvensi lain",
+        ),
+        Printed::Differs(Some(Erratum::Rounding)) => p_(
+            "a rounding error in the text",
+            "kesalahan pembulatan di teks",
+        ),
+        Printed::NotAsked => p_(
+            "not computed in this run (not asked for)",
+            "tidak dihitung (tidak ditanyakan dalam soal ini)",
+        ),
+        Printed::NotComparable => p_("cannot be compared", "tidak dapat dibandingkan"),
+    }
 }
 
 /// Warnings, and the errors of generate and --html.
@@ -157,24 +225,24 @@ fn section(m: &Msg, id: bool) -> String {
         ),
         Msg::SecViewing => p(
             "Step 2: viewing transformation (world → eye coordinates)",
-            "Tahap 2: transformasi pandang (sistem koordinat dunia → kamera)",
+            "Tahap 2: transformasi sistem pandang (koordinat dunia → koordinat kamera)",
         ),
         Msg::SecProjection => p(
             "Step 3: projection onto the near plane",
-            "Tahap 3: proyeksi ke bidang dekat",
+            "Tahap 3: proyeksi terhadap near clipping plane",
         ),
         Msg::SecWindowClip => p(
             "Step 4: window and clipping",
-            "Tahap 4: bidang pandang dan clipping",
+            "Tahap 4: viewing window dan clipping",
         ),
         Msg::SecViewport => p(
             "Viewport mapping (window → pixels)",
-            "Pemetaan viewport (bidang pandang → piksel)",
+            "Pemetaan viewport (viewing window → piksel)",
         ),
         Msg::SecLineClip(None) => p("Line clipping", "Clipping garis"),
         Msg::SecLineClip(Some(i)) => {
             if id {
-                format!("Clipping garis, ruas {i}")
+                format!("Clipping garis, segmen {i}")
             } else {
                 format!("Line clipping, segment {i}")
             }
@@ -189,7 +257,7 @@ fn section(m: &Msg, id: bool) -> String {
         }
         Msg::SecLightFace => p(
             "Lighting of the face (lighting::shade)",
-            "Pencahayaan bidang (lighting::shade)",
+            "Pencahayaan face (lighting::shade)",
         ),
         Msg::SecLightVertex(n) => {
             if id {
@@ -221,17 +289,17 @@ fn light_part(p: LightPart, id: bool) -> &'static str {
         (LightPart::Direction, false) => "direction to the light",
         (LightPart::Direction, true) => "arah ke sumber cahaya",
         (LightPart::Attenuation, false) => "attenuation",
-        (LightPart::Attenuation, true) => "atenuasi",
+        (LightPart::Attenuation, true) => "redaman (Att)",
         (LightPart::Incidence, false) => "angle of incidence: cos α = L·N",
         (LightPart::Incidence, true) => "sudut datang: cos α = L·N",
         (LightPart::Reflection, false) => "reflection R and cos β",
-        (LightPart::Reflection, true) => "vektor pantul R dan cos β",
+        (LightPart::Reflection, true) => "vektor pantulan R dan cos β",
         (LightPart::HalfVector, false) => "half vector H and N·H (Blinn)",
-        (LightPart::HalfVector, true) => "vektor tengah H dan N·H (Blinn)",
+        (LightPart::HalfVector, true) => "vektor setengah jalan H dan N·H (Blinn)",
         (LightPart::Highlight, false) => "highlight",
-        (LightPart::Highlight, true) => "highlight (kilau)",
+        (LightPart::Highlight, true) => "sorotan specular (highlight)",
         (LightPart::Spot, false) => "spot factor",
-        (LightPart::Spot, true) => "faktor spot",
+        (LightPart::Spot, true) => "faktor sorotan (Spot)",
     }
 }
 
@@ -248,27 +316,30 @@ fn title(m: &Msg, id: bool) -> Option<String> {
         Msg::CamAxisV => p("Camera axis v (up in the picture)", "Sumbu kamera v (ke atas pada gambar)"),
         Msg::CamCheck => p(
             "Check: u, v, n are orthonormal and right-handed",
-            "Pemeriksaan: u, v, n ortonormal dan tangan kanan",
+            "Pemeriksaan: u, v, n ortonormal dan membentuk sistem tangan kanan",
         ),
-        Msg::CamMatrix => p("Camera matrix Mcam (camera to world)", "Matriks kamera Mcam (kamera ke dunia)"),
+        Msg::CamMatrix => p(
+            "Camera matrix Mcam (camera to world)",
+            "Matriks transformasi kamera Mcam (koordinat kamera ke koordinat dunia)",
+        ),
         Msg::ViewMatrix => p(
             "View matrix V = Mcam⁻¹ (world to eye): rotation (rows u, v, n) times translation by −Pe",
-            "Matriks pandang V = Mcam⁻¹ (dunia ke kamera): rotasi (baris u, v, n) kali translasi sejauh −Pe",
+            "Matriks transformasi pandang V = Mcam⁻¹, invers Mcam (koordinat dunia ke koordinat kamera): rotasi (baris u, v, n) kali translasi sejauh −Pe",
         ),
         Msg::EyeCoords(n) => f(format!("Eye coordinates of {n}"), format!("Koordinat kamera titik {n}")),
-        Msg::OrthoProj(n) => f(format!("Orthographic projection of {n}"), format!("Proyeksi ortografik titik {n}")),
+        Msg::OrthoProj(n) => f(format!("Orthographic projection of {n}"), format!("Proyeksi orthographic titik {n}")),
         Msg::PerspProj(n) => f(format!("Perspective projection of {n}"), format!("Proyeksi perspektif titik {n}")),
         Msg::WindowTop(l) => f(
             format!("Window half-height on the {l} plane (the text calls it h)"),
-            format!("Setengah tinggi bidang pandang pada bidang {l} (h dalam teks)"),
+            format!("Setengah tinggi viewing window pada {l} plane (h dalam teks)"),
         ),
         Msg::WindowEdges(l) => f(
             format!("Window edges and size on the {l} plane"),
-            format!("Tepi dan ukuran bidang pandang pada bidang {l}"),
+            format!("Tepi dan ukuran viewing window pada {l} plane"),
         ),
         Msg::ViewportOf(n) => f(format!("Viewport coordinates of {n}"), format!("Koordinat viewport titik {n}")),
         Msg::OutcodeOf(n) => f(format!("Outcode of {n}"), format!("Region code titik {n}")),
-        Msg::TrivialTests => p("Trivial tests", "Uji trivial"),
+        Msg::TrivialTests => p("Trivial tests", "Uji trivial dengan operasi logika AND"),
         Msg::Intersection(i, plane) => {
             let (en, ind) = PLANE_NAMES[*i % 6];
             f(
@@ -276,10 +347,10 @@ fn title(m: &Msg, id: bool) -> Option<String> {
                 format!("Titik potong dengan bidang {ind} {plane}"),
             )
         }
-        Msg::ClippedSegment => p("Clipped segment", "Ruas garis hasil clipping"),
+        Msg::ClippedSegment => p("Clipped segment", "Segmen garis hasil clipping"),
         Msg::LiangBarsky => p("Cross-check by Liang–Barsky", "Pemeriksaan silang dengan Liang–Barsky"),
         Msg::MethodsAgree => p("Do the two methods agree?", "Apakah kedua metode sama hasilnya?"),
-        Msg::NothingToDo => p("Nothing to do", "Tidak ada yang dikerjakan"),
+        Msg::NothingToDo => p("Nothing to do", "Tidak ada yang perlu dikerjakan"),
         Msg::ProjPlane => p("Projection plane", "Bidang proyeksi"),
         Msg::InsideVolume(n) => f(
             format!("Is {n}'' inside the view volume?"),
@@ -303,7 +374,11 @@ fn title_lighting(m: &Msg, id: bool) -> Option<String> {
         Msg::Light((i, n), part) => {
             let w = light_part(*part, id);
             Some(if *n > 1 {
-                format!("{} {}: {w}", if id { "Cahaya" } else { "Light" }, i + 1)
+                format!(
+                    "{} {}: {w}",
+                    if id { "Sumber cahaya" } else { "Light" },
+                    i + 1
+                )
             } else {
                 let mut c = w.chars();
                 c.next()
@@ -335,7 +410,7 @@ fn title_lighting(m: &Msg, id: bool) -> Option<String> {
         Msg::Barycentric => p("Barycentric coordinates", "Koordinat barisentrik"),
         Msg::FlatShading => p(
             "Flat shading: one colour per face",
-            "Flat shading: satu warna per bidang",
+            "Flat shading: satu warna per face",
         ),
         Msg::Gouraud => p(
             "Gouraud: interpolate the vertex colours",
@@ -372,7 +447,6 @@ fn caption(m: &Msg, id: bool) -> Option<String> {
             "cos α = Lx·Nx + Ly·Ny + Lz·Nz,  then max(cos α, 0)",
             "cos α = Lx·Nx + Ly·Ny + Lz·Nz,  lalu max(cos α, 0)",
         ),
-        Msg::FNotAdded => p("not added", "tidak ditambahkan"),
         Msg::FCamMatrix => p(
             "Mcam = T(Pe) · [u v n]   (columns u, v, n, Pe)",
             "Mcam = T(Pe) · [u v n]   (kolom u, v, n, Pe)",
@@ -383,7 +457,7 @@ fn caption(m: &Msg, id: bool) -> Option<String> {
         ),
         Msg::FTrivial => p(
             "both codes 000000 → accept;  code0 AND code1 ≠ 000000 → reject;  otherwise clip",
-            "kedua code 000000 → terima;  code0 AND code1 ≠ 000000 → tolak;  selain itu potong",
+            "kedua region code 000000 → diterima;  code0 AND code1 ≠ 000000 → ditolak;  selain itu → clipping",
         ),
         Msg::FOutcode => p(
             "bit 1 x<xmin (kiri) · bit 2 x>xmax (kanan) · bit 3 y<ymin (bawah) · bit 4 y>ymax (atas) · bit 5 z<zmin (depan) · bit 6 z>zmax (belakang)",
@@ -393,7 +467,10 @@ fn caption(m: &Msg, id: bool) -> Option<String> {
             "from the kept point with the smallest t to the one with the largest t (inside ends count as t = 0 and t = 1)",
             "dari titik yang dipertahankan dengan t terkecil ke titik dengan t terbesar (ujung di dalam dihitung t = 0 dan t = 1)",
         ),
-        Msg::FMethods => p("outcode clipping vs Liang–Barsky", "clipping region code vs Liang–Barsky"),
+        Msg::FMethods => p(
+            "outcode clipping against Liang–Barsky",
+            "clipping dengan region code dibandingkan dengan Liang–Barsky",
+        ),
         Msg::FProjPlane => p(
             "z = d,  d = −near (the camera looks along −z in eye coordinates)",
             "z = d,  d = −near (kamera memandang ke arah −z dalam koordinat kamera)",
@@ -415,16 +492,24 @@ fn caption(m: &Msg, id: bool) -> Option<String> {
             "λₖ = Eₖ(pusat)/luas di layar;  koreksi perspektif μₖ = (λₖ/wₖ) / Σ λₘ/wₘ",
         ),
         Msg::FFlat => p(
-            "colour = shade(face normal N, face centre)",
-            "warna = shade(normal bidang N, pusat bidang)",
+            "colour = lighting::shade(face normal N, face centre)",
+            "warna = lighting::shade(normal face N; pusat face)",
         ),
         Msg::FLiangBarsky => p(
             "t0 = max over entering planes of q/p,  t1 = min over leaving planes of q/p,  visible if t0 ≤ t1",
-            "t0 = maks q/p atas bidang masuk,  t1 = min q/p atas bidang keluar,  terlihat bila t0 ≤ t1",
+            "t0 = nilai q/p terbesar di antara bidang yang dimasuki,  t1 = nilai q/p terkecil di antara bidang yang ditinggalkan,  terlihat bila t0 ≤ t1",
         ),
         Msg::FInside => p(
             "left ≤ xp ≤ right,  bottom ≤ yp ≤ top,  and −far ≤ z' ≤ −near",
             "left ≤ xp ≤ right,  bottom ≤ yp ≤ top,  dan −far ≤ z' ≤ −near",
+        ),
+        Msg::FSpot => p(
+            "ρ = (−L)·axis;  Spot = 1 if ρ ≥ cos(θ/2), 0 if ρ ≤ cos(φ/2), else ((ρ − cos(φ/2))/(cos(θ/2) − cos(φ/2)))^falloff",
+            "ρ = (−L)·axis;  Spot = 1 bila ρ ≥ cos(θ/2), 0 bila ρ ≤ cos(φ/2), selain itu ((ρ − cos(φ/2))/(cos(θ/2) − cos(φ/2)))^falloff",
+        ),
+        Msg::FClamp => p(
+            "color = min(max(C, 0), 1)",
+            "warna = min(max(C; 0); 1)",
         ),
         Msg::FByte => p(
             "8-bit value = round(255 · clamp(C, 0, 1))",
@@ -441,7 +526,7 @@ fn note(m: &Msg, id: bool) -> Option<String> {
         Msg::AlreadyUnit => p("already a unit vector", "sudah merupakan vektor satuan"),
         Msg::Saturates => p(
             "a channel went past 1 (or below 0) and is clamped: the highlight saturates",
-            "sebuah kanal melewati 1 (atau di bawah 0) dan dibatasi: highlight menjadi jenuh",
+            "sebuah kanal melewati 1 (atau di bawah 0) dan dibatasi: sorotan (highlight) menjadi jenuh",
         ),
         Msg::InRange => p("every channel is already in [0, 1]", "setiap kanal sudah berada di [0, 1]"),
         Msg::NoTermInModel(model, t) => Some(if id {
@@ -485,7 +570,7 @@ fn note(m: &Msg, id: bool) -> Option<String> {
         ),
         Msg::ShininessZero => p(
             "n = 0: x⁰ = 1 for every direction (0⁰ taken as 1) — the highlight covers the whole surface",
-            "n = 0: x⁰ = 1 untuk setiap arah (0⁰ dianggap 1) — highlight menutupi seluruh permukaan",
+            "n = 0: x⁰ = 1 untuk setiap arah (0⁰ dianggap 1) — sorotan (highlight) menutupi seluruh permukaan",
         ),
         Msg::SpecularOff => p(
             "the specular term is off for this model / setting (ks = 0, --specular off, or a model without it)",
@@ -493,7 +578,7 @@ fn note(m: &Msg, id: bool) -> Option<String> {
         ),
         Msg::NoHighlightBehind => p(
             "cos α ≤ 0 and --specular-requires-lit: no highlight from a light behind the surface",
-            "cos α ≤ 0 dan --specular-requires-lit: tidak ada highlight dari sumber cahaya di belakang permukaan",
+            "cos α ≤ 0 dan --specular-requires-lit: tidak ada sorotan (highlight) dari sumber cahaya di belakang permukaan",
         ),
         Msg::SpotIn(SpotZone::Inner) => p(
             "inside the inner cone (ρ ≥ cos(θ/2)): full light",
@@ -521,9 +606,12 @@ fn note_geometry(m: &Msg, id: bool) -> Option<String> {
         ),
         Msg::TextH => p(
             "the text's h is this half extent; the full window height is 2·top",
-            "h dalam teks adalah setengah tinggi ini; tinggi bidang pandang penuh adalah 2·top",
+            "h dalam teks adalah setengah tinggi ini; tinggi penuh viewing window adalah 2·top",
         ),
-        Msg::Orthonormal(true) => p("orthonormal and right-handed", "ortonormal dan tangan kanan"),
+        Msg::Orthonormal(true) => p(
+            "orthonormal and right-handed",
+            "ortonormal dan membentuk sistem tangan kanan",
+        ),
         Msg::Orthonormal(false) => p(
             "NOT orthonormal: check the inputs",
             "TIDAK ortonormal: periksa masukan",
@@ -540,19 +628,19 @@ fn note_geometry(m: &Msg, id: bool) -> Option<String> {
             "neither test decides: intersect with the planes the ends violate",
             "tidak ada uji yang memutuskan: cari titik potong dengan bidang yang dilanggar ujung-ujungnya",
         ),
-        Msg::Kept(true) => p("code 000000: kept", "code 000000: dipertahankan"),
+        Msg::Kept(true) => p("code 000000: kept", "region code 000000: dipertahankan"),
         Msg::Kept(false) => p(
             "code not 000000: outside the box, discarded",
-            "code bukan 000000: di luar view volume, dibuang",
+            "region code bukan 000000: di luar view volume, dibuang",
         ),
         Msg::TouchesPoint => p(
             "the segment touches the box in a single point",
-            "ruas garis menyentuh view volume di satu titik",
+            "segmen garis menyentuh view volume di satu titik",
         ),
         Msg::InsidePart => p("the part of P0P1 inside the box", "bagian P0P1 di dalam view volume"),
         Msg::Misses => p(
             "no intersection is inside the box: the segment misses it (rejected)",
-            "tidak ada titik potong di dalam view volume: ruas garis tidak mengenainya (ditolak)",
+            "tidak ada titik potong di dalam view volume: segmen garis tidak mengenainya (ditolak)",
         ),
         Msg::DefaultView => p(
             "not given: the text's viewVector (0, 0, 1), a viewer far along +z",
@@ -574,7 +662,7 @@ fn note_geometry(m: &Msg, id: bool) -> Option<String> {
             "the nearest of all triangles covering this pixel",
             "yang terdekat dari semua segitiga yang menutupi piksel ini",
         ),
-        Msg::Agree(true) => p("both methods give the same segment", "kedua metode menghasilkan ruas yang sama"),
+        Msg::Agree(true) => p("both methods give the same segment", "kedua metode menghasilkan segmen garis yang sama"),
         Msg::Agree(false) => p(
             "the methods disagree: please report this input",
             "kedua metode berbeda hasilnya: mohon laporkan masukan ini",
@@ -584,10 +672,10 @@ fn note_geometry(m: &Msg, id: bool) -> Option<String> {
             "objek sudah diberikan dalam sistem koordinat dunia",
         ),
         Msg::Inside(true, true) => p("inside: not clipped", "di dalam: tidak di-clip"),
-        Msg::Inside(false, _) => p("outside the window: clipped", "di luar bidang pandang: di-clip"),
+        Msg::Inside(false, _) => p("outside the window: clipped", "di luar viewing window: di-clip"),
         Msg::Inside(true, false) => p(
             "outside the near/far planes: clipped",
-            "di luar bidang dekat/jauh: di-clip",
+            "di luar near/far plane: di-clip",
         ),
         _ => check_note(m, id),
     }
@@ -777,7 +865,7 @@ fn check_note(m: &Msg, id: bool) -> Option<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::msg::{LightPart, SpotZone, Term, Trivial};
+    use crate::msg::{Erratum, LightPart, Printed, SpotZone, Term, Trivial};
 
     /// Every key, once, with sample parameters.
     pub fn every_message() -> Vec<Msg> {
@@ -829,7 +917,6 @@ mod tests {
             Msg::PixelColour,
             Msg::FOutOfRange,
             Msg::FIncidence,
-            Msg::FNotAdded,
             Msg::FCamMatrix,
             Msg::FViewMatrix,
             Msg::FTrivial,
@@ -844,6 +931,8 @@ mod tests {
             Msg::FFlat,
             Msg::FLiangBarsky,
             Msg::FInside,
+            Msg::FSpot,
+            Msg::FClamp,
             Msg::FByte,
             Msg::AlreadyUnit,
             Msg::Saturates,
@@ -960,6 +1049,21 @@ mod tests {
         v.extend(drawn_messages());
         v.push(Msg::Unreadable(crate::msg::NumErr::DivZero("1/0".into())));
         v.push(Msg::Written("as for B".into(), Some("seperti B".into())));
+        for k in [
+            None,
+            Some(Erratum::Misprint),
+            Some(Erratum::Convention),
+            Some(Erratum::Rounding),
+        ] {
+            v.push(Msg::Printed(Printed::Differs(k)));
+            let why = Msg::Written("as for B".into(), Some("seperti B".into()));
+            v.push(Msg::Erratum(k, Box::new(why)));
+        }
+        for p in [Printed::Agrees, Printed::NotAsked, Printed::NotComparable] {
+            v.push(Msg::Printed(p));
+        }
+        let parts = ["view", "project", "window", "viewport", "clip", "shade"];
+        v.push(Msg::Asked(parts.map(String::from).to_vec()));
         for s in [
             crate::msg::Said::BitTest(true, "x > xmax".into(), "4.5 > 3".into()),
             crate::msg::Said::BitTest(false, "x < xmin".into(), "4.5 < 0".into()),
@@ -1067,6 +1171,9 @@ mod tests {
         match m {
             Math(_)
             | Written(..)
+            | Erratum(..)
+            | Printed(_)
+            | Asked(_)
             | SecModeling
             | SecViewing
             | SecProjection
@@ -1115,7 +1222,6 @@ mod tests {
             | PixelColour
             | FOutOfRange
             | FIncidence
-            | FNotAdded
             | FCamMatrix
             | FViewMatrix
             | FTrivial
@@ -1125,6 +1231,8 @@ mod tests {
             | FProjPlane
             | FLiangBarsky
             | FInside
+            | FSpot
+            | FClamp
             | FPixelCentre
             | FEdges
             | FDepth

@@ -6,7 +6,7 @@ use crate::error::{Error, Result};
 use crate::msg::{Msg, PixelMsg};
 use crate::num::vec::{self, V3};
 use crate::num::Scalar;
-use crate::stages::trace::{Step, Trace, Val};
+use crate::stages::trace::{Step, Subst, Trace, Val};
 use nalgebra::{Matrix4, Vector4};
 
 /// An up vector closer than this to the view direction (radians) gets a warning.
@@ -105,6 +105,10 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
             .val("n", Val::vec3(&n))
             .val("u", Val::vec3(&u))
             .res("v", Val::vec3(&v))
+            .sub(
+                "v",
+                Subst::new("{} × {}", vec![Val::vec3(&n), Val::vec3(&u)]),
+            )
     });
     let b = Basis {
         u,
@@ -148,8 +152,11 @@ fn n_step<T: Scalar>(cam: &Camera<T>, d: &V3<T>, dn: &T, n: &V3<T>) -> Step {
         .val("Pe", Val::vec3(&cam.pe))
         .val("Pr", Val::vec3(&cam.pr))
         .val("Pe − Pr", Val::vec3(d))
+        .sub("Pe − Pr", Subst::difference(&cam.pe, &cam.pr))
         .val("|Pe − Pr|", Val::num(dn))
+        .sub("|Pe − Pr|", Subst::norm(d))
         .res("n", Val::vec3(n))
+        .sub("n", Subst::quotient(Val::vec3(d), Val::num(dn)))
 }
 
 /// Warns when Vup is nearly parallel to d: sin of the angle between them =
@@ -165,11 +172,24 @@ fn warn_near_parallel<T: Scalar>(sun: &T, ups: &V3<T>, ds: &V3<T>, tr: &mut impl
 /// The step of the axis u.
 fn u_step<T: Scalar>(vup: &V3<T>, n: &V3<T>, u: &V3<T>) -> Step {
     let vxn = vec::cross(vup, n);
+    let len = vec::norm(&vxn);
     Step::new(Msg::CamAxisU, "u = (Vup × n) / |Vup × n|")
         .val("Vup", Val::vec3(vup))
         .val("Vup × n", Val::vec3(&vxn))
-        .val("|Vup × n|", Val::num(&vec::norm(&vxn)))
+        .sub(
+            "Vup × n",
+            Subst::new("{} × {}", vec![Val::vec3(vup), Val::vec3(n)]),
+        )
+        .val("|Vup × n|", Val::num(&len))
+        .sub("|Vup × n|", Subst::norm(&vxn))
         .res("u", Val::vec3(u))
+        .sub(
+            "u",
+            match len == T::one() {
+                true => Subst::default(),
+                false => Subst::quotient(Val::vec3(&vxn), Val::num(&len)),
+            },
+        )
 }
 
 /// The orthonormality check shown after the basis: u·v, v·n, n·u, |u|, |v|,
@@ -236,7 +256,12 @@ pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> 
         ));
     }
     tr.step(|| {
-        Step::new(Msg::CamMatrix, Msg::FCamMatrix).res("Mcam", Val::mat4(&camera_matrix(b, pe)))
+        Step::new(Msg::CamMatrix, Msg::FCamMatrix)
+            .val("u", Val::vec3(&b.u))
+            .val("v", Val::vec3(&b.v))
+            .val("n", Val::vec3(&b.n))
+            .val("Pe", Val::vec3(pe))
+            .res("Mcam", Val::mat4(&camera_matrix(b, pe)))
     });
     tr.step(|| {
         Step::new(Msg::ViewMatrix, Msg::FViewMatrix)
@@ -318,6 +343,13 @@ pub fn to_eye<T: Scalar>(
         )
         .val(name.to_string(), Val::vec3(p))
         .val(format!("{name} − Pe"), Val::vec3(&rel))
+        .sub(format!("{name} − Pe"), Subst::difference(p, pe))
+        .val(format!("u·({name} − Pe)"), Val::num(&e[0]))
+        .sub(format!("u·({name} − Pe)"), Subst::dot(&b.u, &rel))
+        .val(format!("v·({name} − Pe)"), Val::num(&e[1]))
+        .sub(format!("v·({name} − Pe)"), Subst::dot(&b.v, &rel))
+        .val(format!("n·({name} − Pe)"), Val::num(&e[2]))
+        .sub(format!("n·({name} − Pe)"), Subst::dot(&b.n, &rel))
         .res(format!("{name}'"), Val::vec3(&e))
     });
     if !vec::is_finite(&e) {

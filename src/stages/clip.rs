@@ -7,7 +7,7 @@ use crate::error::{Error, Result};
 use crate::msg::{Msg, PixelMsg, Trivial};
 use crate::num::vec::{self, V3};
 use crate::num::Scalar;
-use crate::stages::trace::{Step, Trace, Val};
+use crate::stages::trace::{Step, Subst, Trace, Val};
 
 /// The box xmin ≤ x ≤ xmax, ymin ≤ y ≤ ymax, zmin ≤ z ≤ zmax (boundary inside).
 #[derive(Clone, Debug, PartialEq)]
@@ -152,13 +152,14 @@ pub fn outcode_clip<T: Scalar>(c: &nalgebra::Vector4<T>, name: &str, tr: &mut im
             let a = ["x", "y", "z"][axis];
             let (op, lim) = if is_max { (">", "w") } else { ("<", "−w") };
             let set = code & (1 << bit) != 0;
+            let bound = if is_max { c[3].clone() } else { -c[3].clone() };
+            let values = format!("{} {op} {}", short(&c[axis]), short(&bound));
             s = s.val(
                 format!("bit {} ({side})", bit + 1),
-                Val::text(format!(
-                    "{} — {a} {op} {lim}: {} {op} {} is {set}",
-                    u8::from(set),
-                    short(&c[axis]),
-                    short(&if is_max { c[3].clone() } else { -c[3].clone() }),
+                Val::said(crate::msg::Said::BitTest(
+                    set,
+                    format!("{a} {op} {lim}"),
+                    values,
                 )),
             );
         }
@@ -291,7 +292,8 @@ pub fn clip_segment<T: Scalar>(
 
     // Intersect with every plane one endpoint violates
     let intersections = intersect_planes(b, p0, p1, code0 | code1, tr);
-    let segment = kept_part(&intersections, (p0, code0), (p1, code1));
+    let kept = kept_points(&intersections, (p0, code0), (p1, code1));
+    let segment = ends(&kept);
     let result = Clipped {
         code0,
         code1,
@@ -303,7 +305,8 @@ pub fn clip_segment<T: Scalar>(
         segment,
         intersections,
     };
-    tr.step(|| segment_step(&result.segment));
+    let ts: Vec<T> = kept.into_iter().map(|(t, _)| t).collect();
+    tr.step(|| segment_step(&result.segment, &ts));
     result
 }
 
@@ -324,9 +327,27 @@ pub fn trivial(code0: u8, code1: u8) -> Option<Status> {
 /// t = 0, P1 at t = 1, each with its code); None when nothing is kept.
 pub fn kept_part<T: Scalar>(
     intersections: &[Intersection<T>],
+    end0: (&V3<T>, u8),
+    end1: (&V3<T>, u8),
+) -> Option<(V3<T>, V3<T>)> {
+    ends(&kept_points(intersections, end0, end1))
+}
+
+/// The first and the last of the kept points (sorted by t).
+fn ends<T: Scalar>(kept: &[(T, V3<T>)]) -> Option<(V3<T>, V3<T>)> {
+    match (kept.first(), kept.last()) {
+        (Some(a), Some(z)) => Some((a.1.clone(), z.1.clone())),
+        _ => None,
+    }
+}
+
+/// The points that bound the clipped segment, by t: the intersections
+/// whose own code is 000000 and the ends inside (P0 at t = 0, P1 at t = 1).
+fn kept_points<T: Scalar>(
+    intersections: &[Intersection<T>],
     (p0, code0): (&V3<T>, u8),
     (p1, code1): (&V3<T>, u8),
-) -> Option<(V3<T>, V3<T>)> {
+) -> Vec<(T, V3<T>)> {
     let mut kept: Vec<(T, V3<T>)> = (intersections.iter())
         .filter(|i| i.code == 0)
         .map(|i| (i.t.clone(), i.point.clone()))
@@ -337,13 +358,8 @@ pub fn kept_part<T: Scalar>(
     if code1 == 0 {
         kept.push((T::one(), p1.clone()));
     }
-    let by_t = |a: &&(T, V3<T>), b: &&(T, V3<T>)| {
-        a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal)
-    };
-    match (kept.iter().min_by(by_t), kept.iter().max_by(by_t)) {
-        (Some(a), Some(z)) => Some((a.1.clone(), z.1.clone())),
-        _ => None,
-    }
+    kept.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal));
+    kept
 }
 
 /// The step of the trivial accept and reject tests.
@@ -394,15 +410,18 @@ fn intersect_planes<T: Scalar>(
             point: q,
             code,
         };
-        tr.step(|| intersection_step(&i));
+        tr.step(|| intersection_step(&i, p0, p1));
         intersections.push(i);
     }
     intersections
 }
 
-/// The step of one intersection: t, P(t), its code, kept or not.
-fn intersection_step<T: Scalar>(i: &Intersection<T>) -> Step {
+/// The step of one intersection of P0P1: t, P(t), its code, kept or not.
+fn intersection_step<T: Scalar>(i: &Intersection<T>, p0: &V3<T>, p1: &V3<T>) -> Step {
     let (axis, _, plane, _) = PLANES[i.bit];
+    // t = (bound − P0ₐ)/(P1ₐ − P0ₐ); the point lies on the plane: its ₐ is the bound
+    let (bound, a0, a1) = (&i.point[axis], &p0[axis], &p1[axis]);
+    let t_values = [bound, a0, a1, a0].map(Val::num).to_vec();
     Step::new(
         Msg::Intersection(i.bit, plane.to_string()),
         format!(
@@ -412,7 +431,15 @@ fn intersection_step<T: Scalar>(i: &Intersection<T>) -> Step {
         ),
     )
     .val("t", Val::num(&i.t))
+    .sub("t", Subst::new("({} − {})/({} − {})", t_values))
     .res("P(t)", Val::vec3(&i.point))
+    .sub(
+        "P(t)",
+        Subst::new(
+            "{} + {}·{}",
+            vec![Val::vec3(p0), Val::num(&i.t), Val::vec3(&vec::sub(p1, p0))],
+        ),
+    )
     .res("code", Val::text(code_str(i.code)))
     .note(if i.code == 0 {
         Msg::Kept(true)
@@ -421,9 +448,14 @@ fn intersection_step<T: Scalar>(i: &Intersection<T>) -> Step {
     })
 }
 
-/// The step of the clipped segment (or of its rejection).
-fn segment_step<T: Scalar>(segment: &Option<(V3<T>, V3<T>)>) -> Step {
-    let s = Step::new(Msg::ClippedSegment, Msg::FSegment);
+/// The step of the clipped segment (or of its rejection), from the t of
+/// the points kept, smallest first.
+fn segment_step<T: Scalar>(segment: &Option<(V3<T>, V3<T>)>, kept: &[T]) -> Step {
+    let ts = match kept {
+        [] => Val::Null,
+        _ => Val::List(kept.iter().map(Val::num).collect()),
+    };
+    let s = Step::new(Msg::ClippedSegment, Msg::FSegment).val("t kept", ts);
     match segment {
         Some((a, z)) => s
             .res("from", Val::vec3(a))

@@ -7,7 +7,7 @@ use crate::error::{Error, Result};
 use crate::msg::{Msg, PixelMsg};
 use crate::num::vec::{self, V3};
 use crate::num::Scalar;
-use crate::stages::trace::{Step, Trace, Val};
+use crate::stages::trace::{Step, Subst, Trace, Val};
 
 /// A projection set-up.
 #[derive(Clone, Debug, PartialEq)]
@@ -132,10 +132,21 @@ pub fn project<T: Scalar>(
         tr.warn(|| Msg::BehindWarn(name.to_string()));
     }
     tr.step(|| {
+        let k = num.clone() / den.clone();
+        let scale_sub = match proj {
+            Projection::General { zprp, zvp } => (
+                "({} − {})/({} − {})",
+                vec![Val::num(zprp), Val::num(zvp), Val::num(zprp), Val::num(z)],
+            ),
+            _ => ("{}/{}", vec![Val::num(&num), Val::num(&den)]),
+        };
+        let image = [x, &k, y, &k, &r[2]].map(Val::num).to_vec();
         let mut s = Step::new(Msg::PerspProj(name.to_string()), formula)
             .val(name.to_string(), Val::vec3(p))
-            .val(scale_name, Val::num(&(num.clone() / den.clone())))
-            .res(format!("{name}''"), Val::vec3(&r));
+            .val(scale_name, Val::num(&k))
+            .sub(scale_name, Subst::new(scale_sub.0, scale_sub.1))
+            .res(format!("{name}''"), Val::vec3(&r))
+            .sub(format!("{name}''"), Subst::new("({}·{}, {}·{}, {})", image));
         if behind {
             s = s.note(Msg::BehindCentre);
         }

@@ -65,6 +65,56 @@ impl Val {
     }
 }
 
+/// A formula with the step's numbers put in, as a worked solution writes
+/// it before the value: t = (xmin − x0)/(x1 − x0) becomes `(0 − 4)/(−2 −
+/// 4)`. `form` is notation with `{}` where each value of `args` goes; the
+/// report writes the values in the reader's language (exact forms where
+/// they help, a negative value in parentheses after an operator).
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Subst {
+    /// Notation with a `{}` for each value.
+    pub form: String,
+    /// The values, in order.
+    pub args: Vec<Val>,
+}
+
+impl Subst {
+    /// `form` with `args` put in its `{}`s.
+    pub fn new(form: impl Into<String>, args: Vec<Val>) -> Subst {
+        Subst {
+            form: form.into(),
+            args,
+        }
+    }
+    /// a − b by components: `(a₀ − b₀, a₁ − b₁, a₂ − b₂)`.
+    pub fn difference<T: Scalar>(a: &V3<T>, b: &V3<T>) -> Subst {
+        Subst::new("({} − {}, {} − {}, {} − {})", pairs(a, b))
+    }
+    /// a·b by components: `a₀·b₀ + a₁·b₁ + a₂·b₂`.
+    pub fn dot<T: Scalar>(a: &V3<T>, b: &V3<T>) -> Subst {
+        Subst::new("{}·{} + {}·{} + {}·{}", pairs(a, b))
+    }
+    /// a/b (a vector or a number over a number).
+    pub fn quotient(a: Val, b: Val) -> Subst {
+        Subst::new("{}/{}", vec![a, b])
+    }
+    /// The same between `before` and `after` (`−(…)`).
+    pub fn within(self, before: &str, after: &str) -> Subst {
+        Subst::new(format!("{before}{}{after}", self.form), self.args)
+    }
+    /// |a| from its components: `√(a₀² + a₁² + a₂²)`.
+    pub fn norm<T: Scalar>(a: &V3<T>) -> Subst {
+        Subst::new("√({}² + {}² + {}²)", a.iter().map(Val::num).collect())
+    }
+}
+
+/// a₀, b₀, a₁, b₁, a₂, b₂.
+fn pairs<T: Scalar>(a: &V3<T>, b: &V3<T>) -> Vec<Val> {
+    (0..3)
+        .flat_map(|k| [Val::num(&a[k]), Val::num(&b[k])])
+        .collect()
+}
+
 /// One step of a worked solution.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct Step {
@@ -80,6 +130,9 @@ pub struct Step {
     pub result: Vec<(String, Val)>,
     /// A remark: a check, a warning, a note on the text.
     pub note: Option<Msg>,
+    /// The substitution shown before a value or result of that name
+    /// (`t = (0 − 4)/(−2 − 4) = 2/3`).
+    pub subs: Vec<(String, Subst)>,
 }
 
 impl Step {
@@ -106,6 +159,18 @@ impl Step {
     pub fn note(mut self, n: Msg) -> Step {
         self.note = Some(n);
         self
+    }
+    /// Shows how the value or result `name` was worked (`t = (0 − 4)/(−2 −
+    /// 4)`); an empty form shows nothing (a term the model does not have).
+    pub fn sub(mut self, name: impl Into<String>, worked: Subst) -> Step {
+        if !worked.form.is_empty() {
+            self.subs.push((name.into(), worked));
+        }
+        self
+    }
+    /// The substitution of the value or result `name`, if the step shows one.
+    pub fn sub_of(&self, name: &str) -> Option<&Subst> {
+        self.subs.iter().find(|(n, _)| n == name).map(|(_, s)| s)
     }
 }
 

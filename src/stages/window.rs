@@ -4,7 +4,7 @@
 use crate::error::{Error, Result};
 use crate::msg::{Msg, PixelMsg};
 use crate::num::Scalar;
-use crate::stages::trace::{Step, Trace, Val};
+use crate::stages::trace::{Step, Subst, Trace, Val};
 
 /// A window on a plane z = −dist: its edges and size.
 #[derive(Clone, Debug, PartialEq)]
@@ -108,8 +108,17 @@ pub fn window<T: Scalar>(
         )
         .val(label.to_string(), Val::num(dist))
         .val("fovy/2 (degrees)", Val::num(&half))
+        .sub(
+            "fovy/2 (degrees)",
+            Subst::new("{}/2", vec![Val::num(fovy_deg)]),
+        )
         .val("tan(fovy/2)", Val::num(&t))
+        .sub("tan(fovy/2)", Subst::new("tan({}°)", vec![Val::num(&half)]))
         .res("top", Val::num(&w.top))
+        .sub(
+            "top",
+            Subst::new("{}·{}", vec![Val::num(dist), Val::num(&t)]),
+        )
         .note(Msg::TextH)
     });
     tr.step(|| {
@@ -118,11 +127,20 @@ pub fn window<T: Scalar>(
             "right = aspect·top,  bottom = −top,  left = −right,  height = 2·top,  width = 2·right",
         )
         .val("aspect", Val::num(aspect))
+        .val("top", Val::num(&w.top))
         .res("right", Val::num(&w.right))
+        .sub(
+            "right",
+            Subst::new("{}·{}", vec![Val::num(aspect), Val::num(&w.top)]),
+        )
         .res("bottom", Val::num(&w.bottom))
+        .sub("bottom", Subst::new("−{}", vec![Val::num(&w.top)]))
         .res("left", Val::num(&w.left))
+        .sub("left", Subst::new("−{}", vec![Val::num(&w.right)]))
         .res("height", Val::num(&w.height))
+        .sub("height", Subst::new("2·{}", vec![Val::num(&w.top)]))
         .res("width", Val::num(&w.width))
+        .sub("width", Subst::new("2·{}", vec![Val::num(&w.right)]))
     });
     Ok(w)
 }
@@ -167,12 +185,30 @@ pub fn to_viewport<T: Scalar>(
 ) -> (T, T) {
     let (px, py) = viewport_xy(w, size, p);
     tr.step(|| {
+        let form = "({} − {})/({} − {})·{}";
+        let n = Val::num;
         Step::new(
             Msg::ViewportOf(name.to_string()),
             "px = (xp − left)/(right − left)·W,  py = (yp − bottom)/(top − bottom)·H",
         )
         .val(format!("({name}x, {name}y)"), Val::vec2(p.0, p.1))
         .val("W × H", Val::vec2(size.0, size.1))
+        .val("px", n(&px))
+        .sub(
+            "px",
+            Subst::new(
+                form,
+                vec![n(p.0), n(&w.left), n(&w.right), n(&w.left), n(size.0)],
+            ),
+        )
+        .val("py", n(&py))
+        .sub(
+            "py",
+            Subst::new(
+                form,
+                vec![n(p.1), n(&w.bottom), n(&w.top), n(&w.bottom), n(size.1)],
+            ),
+        )
         .res(format!("{name} pixel"), Val::vec2(&px, &py))
     });
     (px, py)

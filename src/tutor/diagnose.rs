@@ -63,7 +63,7 @@ pub static CATALOG: &[Mistake] = &[
                             Box::new(c.look[k].0.clone()),
                         ))
                     });
-                    c.look = look;
+                    c.look = Vec3In(look);
                 })
             })
         },
@@ -343,10 +343,10 @@ pub static CATALOG: &[Mistake] = &[
         // Pr' = Pr − Pe keep n, u, v, and drop the translation by −Pe.
         apply: |p| {
             let c = p.camera.as_ref()?;
-            let look: Vec3In = std::array::from_fn(|k| {
+            let look = Vec3In(std::array::from_fn(|k| {
                 Num(Expr::Sub(Box::new(c.look[k].0.clone()), Box::new(c.eye[k].0.clone())))
-            });
-            let zero: Vec3In = std::array::from_fn(|_| Num(Expr::Lit("0".into())));
+            }));
+            let zero = Vec3In(std::array::from_fn(|_| Num(Expr::Lit("0".into()))));
             altered_points(p, |q| {
                 map_camera(q, |c| {
                     c.look = look;
@@ -571,7 +571,9 @@ fn scale_window(w: &mut Window<f64>, k: f64) {
 }
 
 fn neg3(v: &Vec3In) -> Vec3In {
-    std::array::from_fn(|k| Num(Expr::Neg(Box::new(v[k].0.clone()))))
+    Vec3In(std::array::from_fn(|k| {
+        Num(Expr::Neg(Box::new(v[k].0.clone())))
+    }))
 }
 
 fn map_camera(q: &mut ProblemIn, f: impl FnOnce(&mut crate::input::problem::CameraIn)) {

@@ -51,8 +51,14 @@ pub fn clip_checked<T: Scalar>(
         (Some((a, z)), Some((c, d))) => close(a, c) && close(z, d),
         _ => false,
     };
+    let segment = |s: &Option<(V3<T>, V3<T>)>| match s {
+        Some((a, z)) => Val::List(vec![Val::vec3(a), Val::vec3(z)]),
+        None => Val::Null,
+    };
     rec.step(|| {
         Step::new(Msg::MethodsAgree, Msg::FMethods)
+            .val("outcodes", segment(&r.segment))
+            .val("Liang–Barsky", segment(&lb))
             .res("agree", Val::Bool(agree))
             .note(if agree {
                 Msg::Agree(true)

@@ -326,7 +326,9 @@ pub struct Compared {
     pub computed: Option<Val>,
     /// Whether they agree (`None`: not comparable, or not computed).
     pub agrees: Option<bool>,
-    /// Why the source is wrong, where the problem file says.
+    /// What kind of difference it is, where the problem file says.
+    pub kind: Option<crate::msg::Erratum>,
+    /// Why the source differs, where the problem file says.
     pub why: Option<crate::msg::Msg>,
 }
 

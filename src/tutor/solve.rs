@@ -14,7 +14,7 @@ use crate::num::{Expr, Scalar};
 use crate::stages::camera::Camera;
 use crate::stages::clip::ClipBox;
 use crate::stages::projection::Projection;
-use crate::stages::trace::{Recorder, Step, Trace, Val};
+use crate::stages::trace::{Recorder, Step, Subst, Trace, Val};
 use crate::stages::window;
 use crate::tutor::run::{
     basis_run, clip_run, eye_run, light_run, pixels, points_val, project_run, view_result,
@@ -142,13 +142,20 @@ fn project_part<T: Scalar>(
     if !(p.asks("project") || p.asks("viewport")) || eye_pts.is_empty() {
         return Ok(vec![]);
     }
-    let d: T = match (p.perspective.as_ref().and_then(|x| x.d.as_ref()), near) {
+    let given = p.perspective.as_ref().and_then(|x| x.d.as_ref());
+    let d: T = match (given, near) {
         (Some(d), _) => eval("perspective.d", d)?,
         (None, Some(n)) => -n.clone(),
         (None, None) => return Err(Error::why("perspective.near", ErrMsg::ProjectionNeedsNear)),
     };
     rec.section(Msg::SecProjection);
-    rec.step(|| Step::new(Msg::ProjPlane, Msg::FProjPlane).res("d", Val::num(&d)));
+    rec.step(|| match (given, near) {
+        (None, Some(n)) => Step::new(Msg::ProjPlane, Msg::FProjPlane)
+            .val("near", Val::num(n))
+            .res("d", Val::num(&d))
+            .sub("d", Subst::new("−{}", vec![Val::num(n)])),
+        _ => Step::new(Msg::ProjPlane, "z = d").val("d", Val::num(&d)),
+    });
     let proj = Projection::Plane { d };
     proj.validate().map_err(|e| e.in_field("perspective.d"))?;
     let projected = project_run(&proj, eye_pts, hooks, rec)?;
@@ -475,12 +482,14 @@ fn compare_printed(p: &ProblemIn, result: &[(String, Val)], rel: f64) -> Option<
         .iter()
         .map(|(key, printed)| {
             let computed = lookup(result, key).cloned();
+            let erratum = p.errata.iter().find(|e| &e.key == key);
             Compared {
                 key: key.clone(),
                 printed: printed_text(printed),
                 agrees: computed.as_ref().and_then(|v| agrees(printed, v, rel)),
                 computed,
-                why: p.errata.iter().find(|e| &e.key == key).map(|e| e.reason()),
+                kind: erratum.and_then(|e| e.kind),
+                why: erratum.map(|e| e.why()),
             }
         })
         .collect();

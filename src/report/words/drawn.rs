@@ -10,7 +10,7 @@ pub fn title(t: DrawnTitle, lang: Lang) -> String {
     let (en, id) = match t {
         DrawnTitle::Basis => ("Camera basis", "Basis kamera"),
         DrawnTitle::EyeCoordinates => ("Eye coordinates", "Koordinat kamera"),
-        DrawnTitle::Projection => ("Projection onto the near plane", "Proyeksi ke bidang dekat"),
+        DrawnTitle::Projection => ("Projection onto the near plane", "Proyeksi ke near plane"),
         DrawnTitle::Pipeline => ("The viewing pipeline", "Pipeline viewing"),
         DrawnTitle::Window => ("The viewing window", "Bidang pandang"),
         DrawnTitle::Clipping => ("Line clipping", "Clipping garis"),
@@ -45,7 +45,7 @@ pub fn statement(s: &Statement, lang: Lang) -> String {
                 camera(c, lang)
             ),
             true => format!(
-                "{} Dengan near = {}, proyeksikan titik-titik {} ke bidang dekat z = d = −near (pusat proyeksi di mata); berikan (xp; yp; zp).",
+                "{} Dengan near = {}, proyeksikan titik-titik {} ke near plane z = d = −near (pusat proyeksi di mata); berikan (xp; yp; zp).",
                 camera(c, lang),
                 n(near),
                 n(pts)
@@ -57,7 +57,7 @@ pub fn statement(s: &Statement, lang: Lang) -> String {
                 "A perspective camera has fovy = {fovy}°, aspect ratio {aspect} and near = {near}. Find the viewing window on the near plane: top, bottom, left, right, height and width."
             ),
             true => format!(
-                "Sebuah kamera perspektif memiliki fovy = {fovy}°, aspect ratio {} dan near = {}. Tentukan bidang pandang pada bidang dekat: top, bottom, left, right, tinggi dan lebar.",
+                "Sebuah kamera perspektif memiliki fovy = {fovy}°, aspect ratio {} dan near = {}. Tentukan viewing window pada near plane: top, bottom, left, right, tinggi dan lebar.",
                 n(aspect),
                 n(near)
             ),
@@ -67,7 +67,7 @@ pub fn statement(s: &Statement, lang: Lang) -> String {
                 "The view volume is the box with corners {min} and {max}. For the segment P0{p0} P1{p1}: (a) give the region codes of P0 and P1 (6 bits, bit 1 rightmost: left, right, bottom, top, front, back); (b) is the segment accepted, rejected or clipped, and what is left of it?"
             ),
             true => format!(
-                "View volume berupa balok dengan sudut {} dan {}. Untuk ruas garis P0{} P1{}: (a) berikan region code P0 dan P1 (6 bit, bit 1 paling kanan: kiri, kanan, bawah, atas, depan, belakang); (b) apakah ruas garis diterima, ditolak atau di-clip, dan bagian mana yang tersisa?",
+                "View volume berupa balok dengan sudut {} dan {}. Untuk segmen garis P0{} P1{}: (a) berikan region code P0 dan P1 (6 bit, bit 1 paling kanan: kiri, kanan, bawah, atas, depan, belakang); (b) apakah segmen garis diterima, ditolak atau di-clip, dan bagian mana yang tersisa?",
                 n(min),
                 n(max),
                 n(p0),
@@ -114,7 +114,7 @@ fn pipeline(s: &Statement, lang: Lang) -> String {
             camera(c, lang)
         ),
         Lang::Id => format!(
-            "{} Pengaturan perspektifnya near = {}, fovy = {fovy}°, aspect = {}, viewport {viewport} piksel. Untuk titik-titik {}: (1) tentukan n, u, v dan koordinat kamera; (2) proyeksikan ke bidang dekat z = −near; (3) tentukan bidang pandang (top, bottom, left, right, tinggi, lebar); (4) tentukan koordinat piksel titik-titik hasil proyeksi.",
+            "{} Pengaturan perspektifnya near = {}, fovy = {fovy}°, aspect = {}, viewport {viewport} piksel. Untuk titik-titik {}: (1) tentukan n, u, v dan koordinat kamera; (2) proyeksikan ke near plane z = −near; (3) tentukan viewing window (top, bottom, left, right, tinggi, lebar); (4) tentukan koordinat piksel titik-titik hasil proyeksi.",
             camera(c, lang),
             n(near),
             n(aspect),
@@ -159,10 +159,10 @@ fn shade(s: &Statement, lang: Lang) -> String {
 fn shade_asked(a: ShadeAsked, lang: Lang) -> &'static str {
     match (a, lang) {
         (ShadeAsked::Lambert, Lang::En) => "cos α = L·N, the ambient and diffuse terms",
-        (ShadeAsked::Lambert, Lang::Id) => "cos α = L·N, suku ambient dan diffuse",
+        (ShadeAsked::Lambert, Lang::Id) => "cos α = L·N, komponen ambient dan diffuse",
         (ShadeAsked::Blinn, Lang::En) => "cos α = L·N, the half vector H = norm(L + V) and N·H, the ambient, diffuse and specular terms",
-        (ShadeAsked::Blinn, Lang::Id) => "cos α = L·N, vektor tengah H = norm(L + V) dan N·H, suku ambient, diffuse dan specular",
+        (ShadeAsked::Blinn, Lang::Id) => "cos α = L·N, vektor setengah jalan H = norm(L + V) dan N·H, komponen ambient, diffuse dan specular",
         (ShadeAsked::Phong, Lang::En) => "cos α = L·N, R = 2N(L·N) − L, cos β = R·V, the ambient, diffuse and specular terms",
-        (ShadeAsked::Phong, Lang::Id) => "cos α = L·N, vektor pantul R = 2N(L·N) − L, cos β = R·V, suku ambient, diffuse dan specular",
+        (ShadeAsked::Phong, Lang::Id) => "cos α = L·N, vektor pantulan R = 2N(L·N) − L, cos β = R·V, komponen ambient, diffuse dan specular",
     }
 }

@@ -106,6 +106,7 @@ pub fn error(m: &ErrMsg, lang: Lang) -> String {
         | ErrMsg::NothingRendered
         | ErrMsg::Threads(_)
         | ErrMsg::RenderPrecision
+        | ErrMsg::NotTaken(_)
         | ErrMsg::OwnOutput => commands(m, lang),
     }
 }
@@ -428,8 +429,8 @@ fn scene(m: &ErrMsg, lang: Lang) -> String {
             format!("objek-objek scene ini bersama-sama memiliki {n} segitiga; renderer menerima paling banyak {max} per scene (ditolak sebelum mesh dibuat)"),
         ),
         ErrMsg::TooManyLights(n, max) => f(
-            format!("the scene has {n} lights; the renderer takes at most {max} per scene (as Direct3D 9 does)"),
-            format!("scene ini memiliki {n} cahaya; renderer menerima paling banyak {max} per scene (seperti Direct3D 9)"),
+            format!("the file has {n} lights; grafika takes at most {max} per file (as Direct3D 9 does)"),
+            format!("file ini memiliki {n} cahaya; grafika menerima paling banyak {max} per file (seperti Direct3D 9)"),
         ),
         ErrMsg::NeedsColour => say(lang, "needs at least one colour", "memerlukan paling sedikit satu warna"),
         ErrMsg::NoObjects => say(
@@ -645,7 +646,7 @@ fn problem(m: &ErrMsg, lang: Lang) -> String {
         ErrMsg::WindowNeeds => say(
             lang,
             "the window needs perspective.fovy, perspective.aspect and perspective.near",
-            "bidang pandang memerlukan perspective.fovy, perspective.aspect dan perspective.near",
+            "viewing window memerlukan perspective.fovy, perspective.aspect dan perspective.near",
         ),
         ErrMsg::LightsNeedShade => say(
             lang,
@@ -735,6 +736,10 @@ fn commands(m: &ErrMsg, lang: Lang) -> String {
             "render always computes at f32 (--precision is for the calculator's worked steps): leave it out",
             "render selalu menghitung dengan f32 (--precision untuk langkah-langkah kalkulator): hilangkan opsi itu",
         ),
+        ErrMsg::NotTaken(c) => f(
+            format!("grafika {c} does not take this option (grafika {c} --help lists those it takes)"),
+            format!("grafika {c} tidak menerima opsi ini (grafika {c} --help mendaftar opsi yang diterimanya)"),
+        ),
         ErrMsg::OwnOutput => say(
             lang,
             "check, generate, bench, practice, completions and man print their own output: use main_with_args",
@@ -813,6 +818,10 @@ fn serde_words(s: &str) -> String {
         (
             "a number or a string with a number expression such as",
             "bilangan atau string berisi ekspresi bilangan seperti",
+        ),
+        (
+            "a vector: an array [x, y, z] or a string",
+            "sebuah vektor: array [x, y, z] atau string",
         ),
         ("an array of length", "array dengan panjang"),
         ("a sequence", "array"),
@@ -1138,6 +1147,7 @@ pub(crate) mod tests {
             ErrMsg::NothingRendered,
             ErrMsg::Threads(s("why")),
             ErrMsg::RenderPrecision,
+            ErrMsg::NotTaken(s("check")),
             ErrMsg::OwnOutput,
             ErrMsg::Man(s("why")),
         ]);
@@ -1345,6 +1355,7 @@ pub(crate) mod tests {
             | E::NothingRendered
             | E::Threads(_)
             | E::RenderPrecision
+            | E::NotTaken(_)
             | E::OwnOutput
             | E::Man(_)
             | E::Clap(..) => {}

@@ -51,7 +51,7 @@ pub fn figure(m: &FigureMsg, lang: Lang) -> String {
         ),
         FigureMsg::Rejected(and) => pick(
             &format!("code0 AND code1 = {and} ≠ 000000: the segment lies outside, rejected with no intersection tried"),
-            &format!("code0 AND code1 = {and} ≠ 000000: ruas garis di luar, ditolak tanpa mencari titik potong"),
+            &format!("code0 AND code1 = {and} ≠ 000000: segmen garis di luar, ditolak tanpa mencari titik potong"),
         ),
     }
 }
@@ -68,7 +68,7 @@ fn title(p: Panel) -> (&'static str, &'static str) {
         ),
         Panel::ProjectionSide => (
             "Side view (y–z): similar triangles",
-            "Tampak samping (y–z): segitiga sebangun",
+            "Tampak samping (y–z): kesamaan segitiga",
         ),
         Panel::ViewPlane => (
             "The images on the view plane (x–y)",
@@ -84,7 +84,7 @@ fn title(p: Panel) -> (&'static str, &'static str) {
         ),
         Panel::NearWindow => (
             "The viewing window on the near plane",
-            "Viewing window pada bidang dekat",
+            "Viewing window pada near plane",
         ),
         Panel::Viewport => (
             "The viewport (pixels, origin bottom left)",
@@ -92,11 +92,11 @@ fn title(p: Panel) -> (&'static str, &'static str) {
         ),
         Panel::Clip => (
             "Clipping P0P1 against the box",
-            "Clipping ruas garis P0P1 terhadap view volume",
+            "Clipping segmen garis P0P1 terhadap view volume",
         ),
         Panel::ClipAlong => (
             "Along the segment: P(t) = P0 + t·(P1 − P0)",
-            "Sepanjang ruas garis: P(t) = P0 + t·(P1 − P0)",
+            "Sepanjang segmen garis: P(t) = P0 + t·(P1 − P0)",
         ),
         Panel::Shade | Panel::ShadeLight(_) => (
             "Lighting in the plane of incidence (the plane of N and L)",
@@ -119,7 +119,7 @@ fn desc(p: Panel) -> (&'static str, &'static str) {
         ),
         Panel::ProjectionSide => (
             "Side view: −z to the right, y up. The sky-blue line is the view plane; each projector (dotted) runs from the centre of projection through the point to its image. The black leg y of the point and the blue leg yp of the image make two similar triangles with the z axis.",
-            "Tampak samping: −z ke kanan, y ke atas. Garis biru muda adalah bidang pandang; tiap proyektor (bertitik) berjalan dari pusat proyeksi melalui titik ke bayangannya. Sisi hitam y dari titik dan sisi biru yp dari bayangan membentuk dua segitiga sebangun dengan sumbu z.",
+            "Tampak samping: −z ke kanan, y ke atas. Garis biru muda adalah bidang pandang; tiap proyektor (bertitik) berjalan dari pusat proyeksi melalui titik ke bayangannya. Sisi hitam y dari titik dan sisi biru yp dari bayangan membentuk dua segitiga dengan sumbu z yang sebentuk (kesamaan segitiga).",
         ),
         Panel::ViewPlane => (
             "The view plane seen from the front: xp to the right, yp up; each blue dot is a point's image.",
@@ -127,15 +127,15 @@ fn desc(p: Panel) -> (&'static str, &'static str) {
         ),
         Panel::Frustum => (
             "Eye space, the eye at the origin looking along −z, seen from outside: the eye is the apex of the view volume, outside its windows. Blue rectangle: the near window (left..right × bottom..top at z = −near); sky-blue rectangle: the far window; black lines: the edges of the view volume. The windows are drawn to scale; when far is not given or more than 10 times near, the far window is not drawn: the edges run on, dashed vermillion, to twice near.",
-            "Ruang kamera, mata di titik asal memandang ke arah −z, dilihat dari luar: mata adalah puncak view volume, di luar window-nya. Persegi biru: viewing window pada bidang dekat (left..right × bottom..top di z = −near); persegi biru muda: window pada bidang jauh; garis hitam: rusuk view volume. Window digambar sesuai skala; bila far tidak diberikan atau lebih dari 10 kali near, window pada bidang jauh tidak digambar: rusuknya berlanjut putus-putus merah jingga sampai dua kali near.",
+            "Ruang kamera, mata di titik asal memandang ke arah −z, dilihat dari luar: mata adalah puncak view volume, di luar window-nya. Persegi biru: viewing window pada near plane (left..right × bottom..top di z = −near); persegi biru muda: window pada far plane; garis hitam: rusuk view volume. Window digambar sesuai skala; bila far tidak diberikan atau lebih dari 10 kali near, window pada far plane tidak digambar: rusuknya berlanjut putus-putus merah jingga sampai dua kali near.",
         ),
         Panel::WindowSide => (
             "Side view: −z to the right, y up. The eye at the origin; the purple arc is the angle fovy; the blue line is the near window from bottom to top, at distance near.",
-            "Tampak samping: −z ke kanan, y ke atas. Mata di titik asal; busur ungu adalah sudut fovy; garis biru adalah viewing window pada bidang dekat, dari bottom sampai top, pada jarak near.",
+            "Tampak samping: −z ke kanan, y ke atas. Mata di titik asal; busur ungu adalah sudut fovy; garis biru adalah viewing window pada near plane, dari bottom sampai top, pada jarak near.",
         ),
         Panel::NearWindow => (
             "The viewing window on the near plane: x to the right, y up; the black dots are the projected points.",
-            "Viewing window pada bidang dekat: x ke kanan, y ke atas; titik hitam adalah titik-titik hasil proyeksi.",
+            "Viewing window pada near plane: x ke kanan, y ke atas; titik hitam adalah titik-titik hasil proyeksi.",
         ),
         Panel::Viewport => (
             "The viewport W × H in pixels, origin at the bottom left; each blue dot is a point at its pixel position.",
@@ -151,7 +151,7 @@ fn desc(p: Panel) -> (&'static str, &'static str) {
         ),
         Panel::Shade | Panel::ShadeLight(_) => (
             "A flat diagram in the plane of N and L (the plane of incidence), at true angles: the surface is a line (hatched on the object's side) with N straight up, L toward the light on the left, R its mirror image about N, and V toward the viewer and H the half vector (Blinn) where they lie in this plane; every unit vector drawn with one length. Arcs mark α between L and N and β between R and V at their true size. N black, L sky blue, R purple dash-dot, V green, H orange dotted.",
-            "Diagram datar pada bidang N dan L (bidang datang), dengan sudut sebenarnya: permukaan berupa garis (diarsir di sisi benda) dengan N tegak ke atas, L ke arah sumber cahaya di kiri, R pencerminannya terhadap N, serta V ke arah pengamat dan H vektor tengah (Blinn) bila terletak pada bidang ini; semua vektor satuan sama panjang. Busur menandai α antara L dan N dan β antara R dan V dengan ukuran sebenarnya. N hitam, L biru muda, R ungu garis-titik, V hijau, H jingga bertitik.",
+            "Diagram datar pada bidang N dan L (bidang datang), dengan sudut sebenarnya: permukaan berupa garis (diarsir di sisi benda) dengan N tegak ke atas, L ke arah sumber cahaya di kiri, R pencerminannya terhadap N, serta V ke arah pengamat dan H vektor setengah jalan (Blinn) bila terletak pada bidang ini; semua vektor satuan sama panjang. Busur menandai α antara L dan N dan β antara R dan V dengan ukuran sebenarnya. N hitam, L biru muda, R ungu garis-titik, V hijau, H jingga bertitik.",
         ),
         Panel::ShadeRV => (
             "V leaves the plane of incidence, so R and V are drawn in their own plane, R straight up, at their true angle β.",
@@ -170,7 +170,7 @@ fn word(w: FigWord) -> (&'static str, &'static str) {
         FigWord::Eye => ("eye", "mata"),
         FigWord::NotToScale => (
             "far window too far to draw to scale",
-            "window pada bidang jauh tidak digambar: terlalu jauh untuk skala ini",
+            "window pada far plane tidak digambar: terlalu jauh untuk skala ini",
         ),
         FigWord::Surface => ("surface", "permukaan"),
         FigWord::CameraAxes => (
@@ -191,11 +191,11 @@ fn word(w: FigWord) -> (&'static str, &'static str) {
         FigWord::AngleNH => ("angle(N, H)", "sudut(N, H)"),
         FigWord::Accepted => (
             "both codes are 000000: the segment lies inside, accepted whole",
-            "kedua code 000000: ruas garis di dalam, diterima utuh",
+            "kedua code 000000: segmen garis di dalam, diterima utuh",
         ),
         FigWord::Missed => (
             "no intersection tried is in the box: the segment misses it, rejected",
-            "tidak ada titik potong di dalam balok: ruas garis melewatinya, ditolak",
+            "tidak ada titik potong di dalam balok: segmen garis melewatinya, ditolak",
         ),
     }
 }

@@ -76,7 +76,7 @@ fn pair(m: &PixelMsg) -> (String, String) {
         ),
         PixelMsg::WindowPoint(n) => f(
             format!("Window point of {n}"),
-            format!("Titik {n} pada bidang pandang"),
+            format!("Titik {n} pada viewing window"),
         ),
         PixelMsg::Row(n) => f(
             format!("Pixel row of {n}, counted from the top"),

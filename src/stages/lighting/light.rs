@@ -15,7 +15,7 @@ use super::{
 use crate::msg::{LightPart, Msg, SpotZone};
 use crate::num::vec::{add, dot, sub, V3};
 use crate::num::{Mask, Scalar};
-use crate::stages::trace::{Step, Trace, Val};
+use crate::stages::trace::{Step, Subst, Trace, Val};
 
 /// One light's geometry and factors at the point; `None` when the point is
 /// beyond the light's range (the light is not evaluated at all) or at the
@@ -123,8 +123,12 @@ fn toward<T: Scalar>(
         )
         .val("Pl", Val::vec3(pos))
         .val("P", Val::vec3(&s.position))
+        .val("Pl − P", Val::vec3(&to))
+        .sub("Pl − P", Subst::difference(pos, &s.position))
         .val("d", Val::num(&d))
+        .sub("d", Subst::norm(&to))
         .res("L", Val::vec3(&l))
+        .sub("L", Subst::quotient(Val::vec3(&to), Val::num(&d)))
         .note(match &light.range {
             Some(_) => Msg::WithinRange,
             None => Msg::NoRange,
@@ -153,7 +157,15 @@ fn attenuation<T: Scalar>(
         .val("(a0, a1, a2)", Val::List(a.iter().map(Val::num).collect()))
         .val("d", Val::num(d))
         .val("a0 + a1·d + a2·d²", Val::num(&den))
+        .sub(
+            "a0 + a1·d + a2·d²",
+            Subst::new(
+                "{} + {}·{} + {}·{}²",
+                [&a[0], &a[1], d, &a[2], d].map(Val::num).to_vec(),
+            ),
+        )
         .res("Att", Val::num(&att))
+        .sub("Att", Subst::new("1/{}", vec![Val::num(&den)]))
     });
     att
 }
@@ -171,7 +183,12 @@ fn incidence_step<T: Scalar>(
         .val("L", Val::vec3(&term.l))
         .val("N", Val::vec3(n))
         .res("cos α", Val::num(cos_alpha))
-        .res("max(cos α, 0)", Val::num(&max0(cos_alpha)));
+        .sub("cos α", Subst::dot(&term.l, n))
+        .res("max(cos α, 0)", Val::num(&max0(cos_alpha)))
+        .sub(
+            "max(cos α, 0)",
+            Subst::new("max({}, 0)", vec![Val::num(cos_alpha)]),
+        );
     if *cos_alpha < T::zero() {
         s.note(Msg::Behind(mat.specular_requires_lit))
     } else {
@@ -215,9 +232,21 @@ fn specular<T: Scalar, R: RuleSet<T>>(
             "R = 2N(L·N) − L,  cos β = R·V",
         )
         .val("2(L·N)", Val::num(&two_ln))
+        .sub(
+            "2(L·N)",
+            Subst::new("2·{}", vec![Val::num(&term.cos_alpha)]),
+        )
         .val("V", Val::vec3(v))
         .res("R", Val::vec3(&r))
+        .sub(
+            "R",
+            Subst::new(
+                "{}·{} − {}",
+                vec![Val::num(&two_ln), Val::vec3(n), Val::vec3(&term.l)],
+            ),
+        )
         .res("cos β", Val::num(&cos_beta))
+        .sub("cos β", Subst::dot(&r, v))
     });
     let cos_spec = if mat.model == Model::Blinn {
         let (h, nh) = half_vector(n, &term.l, v, s.camera.is_some(), at, tr);
@@ -232,10 +261,10 @@ fn specular<T: Scalar, R: RuleSet<T>>(
     if active {
         let hv = pow(&rules.highlight_base(&cos_spec), &mat.shininess);
         term.highlight = T::select(gate, hv, T::zero());
-        tr.step(|| highlight_step(mat, &term.highlight, at));
+        tr.step(|| highlight_step(mat, &cos_spec, &term.highlight, at));
     } else {
         tr.step(|| {
-            Step::new(label(at, LightPart::Highlight), Msg::FNotAdded)
+            Step::new(label(at, LightPart::Highlight), "")
                 .res("highlight", Val::num(&T::zero()))
                 .note(if !want_spec {
                     Msg::SpecularOff
@@ -278,8 +307,16 @@ fn half_vector<T: Scalar>(
             },
         )
         .val("V + L", Val::vec3(&sum))
+        .sub(
+            "V + L",
+            Subst::new("{} + {}", vec![Val::vec3(v), Val::vec3(l)]),
+        )
+        .val("|V + L|", Val::num(&len))
+        .sub("|V + L|", Subst::norm(&sum))
         .res("H", Val::vec3(&h))
+        .sub("H", Subst::quotient(Val::vec3(&sum), Val::num(&len)))
         .res("N·H", Val::num(&nh))
+        .sub("N·H", Subst::dot(n, &h))
         .note(if local {
             Msg::LocalViewer
         } else {
@@ -289,8 +326,14 @@ fn half_vector<T: Scalar>(
     (h, nh)
 }
 
-/// The step of the highlight max(cos β, 0)ⁿ (Blinn: max(N·H, 0)ⁿ).
-fn highlight_step<T: Scalar>(mat: &Material<T>, highlight: &T, at: (usize, usize)) -> Step {
+/// The step of the highlight max(cos β, 0)ⁿ (Blinn: max(N·H, 0)ⁿ), with
+/// `cos` = cos β (N·H).
+fn highlight_step<T: Scalar>(
+    mat: &Material<T>,
+    cos: &T,
+    highlight: &T,
+    at: (usize, usize),
+) -> Step {
     let s = Step::new(
         label(at, LightPart::Highlight),
         if mat.model == Model::Blinn {
@@ -300,7 +343,14 @@ fn highlight_step<T: Scalar>(mat: &Material<T>, highlight: &T, at: (usize, usize
         },
     )
     .val("n", Val::num(&mat.shininess))
-    .res("highlight", Val::num(highlight));
+    .res("highlight", Val::num(highlight))
+    .sub(
+        "highlight",
+        Subst::new(
+            "max({}, 0)^{}",
+            vec![Val::num(cos), Val::num(&mat.shininess)],
+        ),
+    );
     if mat.shininess.is_zero_value() {
         s.note(Msg::ShininessZero)
     } else {
@@ -342,16 +392,37 @@ pub fn spot_factor<T: Scalar>(
         } else {
             SpotZone::Penumbra
         };
-        Step::new(
-            label(at, LightPart::Spot),
-            "ρ = (−L)·axis;  Spot = 1 if ρ ≥ cos(θ/2), 0 if ρ ≤ cos(φ/2), else ((ρ − cos(φ/2))/(cos(θ/2) − cos(φ/2)))^falloff",
-        )
-        .val("ρ", Val::num(&rho))
-        .val("cos(θ/2)", Val::num(&cos_t))
-        .val("cos(φ/2)", Val::num(&cos_p))
-        .val("falloff", Val::num(falloff))
-        .res("Spot", Val::num(&f))
-        .note(Msg::SpotIn(zone))
+        let s = Step::new(label(at, LightPart::Spot), Msg::FSpot)
+            .val("ρ", Val::num(&rho))
+            .sub("ρ", Subst::dot(l, axis).within("−(", ")"))
+            .val("cos(θ/2)", Val::num(&cos_t))
+            .sub(
+                "cos(θ/2)",
+                Subst::new(
+                    "cos({}°)",
+                    vec![Val::num(&(theta.clone() / T::from_i64(2)))],
+                ),
+            )
+            .val("cos(φ/2)", Val::num(&cos_p))
+            .sub(
+                "cos(φ/2)",
+                Subst::new("cos({}°)", vec![Val::num(&(phi.clone() / T::from_i64(2)))]),
+            )
+            .val("falloff", Val::num(falloff))
+            .res("Spot", Val::num(&f));
+        let s = match zone {
+            SpotZone::Penumbra => s.sub(
+                "Spot",
+                Subst::new(
+                    "(({} − {})/({} − {}))^{}",
+                    [&rho, &cos_p, &cos_t, &cos_p, falloff]
+                        .map(Val::num)
+                        .to_vec(),
+                ),
+            ),
+            _ => s,
+        };
+        s.note(Msg::SpotIn(zone))
     });
     f
 }

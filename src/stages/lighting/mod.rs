@@ -34,7 +34,7 @@ use crate::error::{Error, Result};
 use crate::msg::{LightPart, Msg, Term};
 use crate::num::vec::{normalize, sub, v3, V3};
 use crate::num::Scalar;
-use crate::stages::trace::{Step, Trace, Val};
+use crate::stages::trace::{Step, Subst, Trace, Val};
 
 mod light;
 pub use light::{light_term_with, spot_factor};
@@ -432,7 +432,15 @@ pub fn unit<T: Scalar>(name: &str, field: &str, v: &V3<T>, tr: &mut impl Trace) 
         )
         .val("v", Val::vec3(v))
         .val("|v|", Val::num(&len))
-        .res(name, Val::vec3(&u));
+        .sub("|v|", Subst::norm(v))
+        .res(name, Val::vec3(&u))
+        .sub(
+            name,
+            match len == T::one() {
+                true => Subst::default(),
+                false => Subst::quotient(Val::vec3(v), Val::num(&len)),
+            },
+        );
         if len == T::one() {
             s.note(Msg::AlreadyUnit)
         } else {
@@ -674,15 +682,18 @@ pub fn shade_with_rules<T: Scalar, R: RuleSet<T>>(
         // min(x, 1), then max(·, 0): 1 above, 0 below (and for NaN).
         max0(&x.min_of(&T::one()))
     });
-    record_totals(
-        mat,
-        (want_a, want_d, want_spec),
-        [sum_a, sum_d, sum_s],
-        [&ambient, &diffuse, &specular],
-        global_ambient,
-        lights,
-        tr,
-    );
+    if listening(tr) {
+        let worked = worked_sums(mat, lights, global_ambient, s, &v, want_spec, rules);
+        record_totals(
+            mat,
+            (want_a, want_d, want_spec),
+            ([sum_a, sum_d, sum_s], worked),
+            [&ambient, &diffuse, &specular],
+            global_ambient,
+            lights,
+            tr,
+        );
+    }
     let terms = [&ambient, &diffuse, &specular, &emissive];
     tr.step(|| sum_step(terms, &unclamped));
     tr.step(|| clamp_step(&unclamped, &color));
@@ -750,6 +761,48 @@ fn sum_lights<T: Scalar, R: RuleSet<T>>(
     ([sum_a, sum_d, sum_s], first, used)
 }
 
+/// How [`sum_lights`] summed, light by light, for the steps: `Ga +
+/// Att·Spot·La + …`, `Att·Spot·Ld·max(cos α, 0) + …` and
+/// `Att·Spot·Ls·highlight + …`. Each light's term is recomputed without
+/// steps (they are recorded already); the renderer, which never explains,
+/// never calls it.
+#[allow(clippy::too_many_arguments)]
+#[inline(never)]
+fn worked_sums<T: Scalar, R: RuleSet<T>>(
+    mat: &Material<T>,
+    lights: &[Light<T>],
+    global_ambient: &Rgb<T>,
+    s: &Surface<T>,
+    v: &V3<T>,
+    want_spec: bool,
+    rules: &R,
+) -> [Subst; 3] {
+    let mut forms: [Vec<&str>; 3] = [vec!["{}"], vec![], vec![]];
+    let mut args: [Vec<Val>; 3] = [vec![rgb_val(global_ambient)], vec![], vec![]];
+    let n = lights.len();
+    for (i, light) in lights.iter().enumerate() {
+        let mut quiet = crate::stages::trace::NoTrace;
+        let at = (i, n);
+        let Some(t) = light::light_term_with(mat, light, at, s, v, want_spec, rules, &mut quiet)
+        else {
+            continue;
+        };
+        let af = [&t.attenuation, &t.spot].map(Val::num);
+        let last = [None, Some(max0(&t.cos_alpha)), Some(t.highlight.clone())];
+        let colours = [&light.ambient, &light.diffuse, &light.specular];
+        for (k, col) in colours.into_iter().enumerate() {
+            forms[k].push(if k == 0 {
+                "{}·{}·{}"
+            } else {
+                "{}·{}·{}·{}"
+            });
+            args[k].extend(af.iter().cloned().chain([rgb_val(col)]));
+            args[k].extend(last[k].as_ref().map(Val::num));
+        }
+    }
+    [0, 1, 2].map(|k| Subst::new(forms[k].join(" + "), std::mem::take(&mut args[k])))
+}
+
 /// k·sum⊙col, or zero when the model has no such term.
 #[inline(always)]
 fn term<T: Scalar>(on: bool, k: &T, sum: &Rgb<T>, col: &Rgb<T>) -> Rgb<T> {
@@ -778,7 +831,7 @@ fn sum_step<T: Scalar>(terms: [&Rgb<T>; 4], unclamped: &Rgb<T>) -> Step {
 /// The step of the clamp to [0, 1].
 fn clamp_step<T: Scalar>(unclamped: &Rgb<T>, color: &Rgb<T>) -> Step {
     let clipped = unclamped.iter().any(|x| *x > T::one() || *x < T::zero());
-    Step::new(Msg::Clamp, "color = min(max(C, 0), 1)")
+    Step::new(Msg::Clamp, Msg::FClamp)
         .val("C", rgb_val(unclamped))
         .res("color", rgb_val(color))
         .note(if clipped {
@@ -795,15 +848,17 @@ fn view_vector<T: Scalar>(s: &Surface<T>, tr: &mut impl Trace) -> V3<T> {
         return s.view.clone();
     };
     let d = sub(cp, &s.position);
-    let v = normalize(&d)
-        .map(|(u, _)| u)
-        .unwrap_or_else(|| s.view.clone());
+    let (v, len) = normalize(&d).unwrap_or_else(|| (s.view.clone(), T::one()));
     tr.step(|| {
         Step::new(Msg::ViewerLocal, "V = norm(Cp − Vp)")
             .val("Cp", Val::vec3(cp))
             .val("Vp", Val::vec3(&s.position))
             .val("Cp − Vp", Val::vec3(&d))
+            .sub("Cp − Vp", Subst::difference(cp, &s.position))
+            .val("|Cp − Vp|", Val::num(&len))
+            .sub("|Cp − Vp|", Subst::norm(&d))
             .res("V", Val::vec3(&v))
+            .sub("V", Subst::quotient(Val::vec3(&d), Val::num(&len)))
     });
     v
 }
@@ -816,17 +871,31 @@ fn is_text_setting<T: Scalar>(lights: &[Light<T>], ga: &Rgb<T>) -> bool {
         && ga.iter().all(|x| x.is_zero_value())
 }
 
-/// Records how the per-light sums become the three terms.
+/// A term worked per channel, k·sum·colour (`0.4·(1, 1, 1)·(1, 1, 0)`),
+/// for a term the model has; nothing to work for one it does not (the
+/// term is 0, and the note says why).
+fn product(on: bool) -> &'static str {
+    if on {
+        "{}·{}·{}"
+    } else {
+        ""
+    }
+}
+
+/// Records how the per-light sums (`worked` light by light) become the three
+/// terms (called only when someone listens).
 fn record_totals<T: Scalar>(
     mat: &Material<T>,
     on: (bool, bool, bool),
-    [sum_a, sum_d, sum_s]: [&Rgb<T>; 3],
+    (sums, worked): ([&Rgb<T>; 3], [Subst; 3]),
     [ra, rd, rs]: [&Rgb<T>; 3],
     ga: &Rgb<T>,
     lights: &[Light<T>],
     tr: &mut impl Trace,
 ) {
     let ca = mat.ambient_color.as_ref().unwrap_or(&mat.color);
+    let [sum_a, sum_d, sum_s] = sums;
+    let [wa, wd, ws] = worked;
     let one_note = |on: bool, what: Term| {
         if !on {
             Msg::NoTermInModel(mat.model.name().to_string(), what)
@@ -843,8 +912,16 @@ fn record_totals<T: Scalar>(
         )
         .val("ka", Val::num(&mat.ka))
         .val("Ga + Σ Att·Spot·La", rgb_val(sum_a))
+        .sub("Ga + Σ Att·Spot·La", wa)
         .val("Ca", rgb_val(ca))
         .res("ambient", rgb_val(ra))
+        .sub(
+            "ambient",
+            Subst::new(
+                product(on.0),
+                vec![Val::num(&mat.ka), rgb_val(sum_a), rgb_val(ca)],
+            ),
+        )
         .note(one_note(on.0, Term::Ambient))
     });
     tr.step(|| {
@@ -854,8 +931,16 @@ fn record_totals<T: Scalar>(
         )
         .val("kd", Val::num(&mat.kd))
         .val("Σ Att·Spot·Ld·max(cos α, 0)", rgb_val(sum_d))
+        .sub("Σ Att·Spot·Ld·max(cos α, 0)", wd)
         .val("Cs", rgb_val(&mat.color))
         .res("diffuse", rgb_val(rd))
+        .sub(
+            "diffuse",
+            Subst::new(
+                product(on.1),
+                vec![Val::num(&mat.kd), rgb_val(sum_d), rgb_val(&mat.color)],
+            ),
+        )
         .note(one_note(on.1, Term::Diffuse))
     });
     tr.step(|| {
@@ -865,8 +950,16 @@ fn record_totals<T: Scalar>(
         )
         .val("ks", Val::num(&mat.ks))
         .val("Σ Att·Spot·Ls·highlight", rgb_val(sum_s))
+        .sub("Σ Att·Spot·Ls·highlight", ws)
         .val("Cspecular", rgb_val(&mat.specular))
         .res("specular", rgb_val(rs))
+        .sub(
+            "specular",
+            Subst::new(
+                product(on.2),
+                vec![Val::num(&mat.ks), rgb_val(sum_s), rgb_val(&mat.specular)],
+            ),
+        )
         .note(if on.2 {
             one_note(true, Term::Specular)
         } else if !mat.model.terms().2 {

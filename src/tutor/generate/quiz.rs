@@ -316,11 +316,12 @@ fn add_wrong(b: &mut Blank, value: Typed, tolerance: f64, m: &'static Mistake) {
     }
 }
 
-/// Whether two values can be told apart: numbers whose tolerance intervals
-/// [x − t, x + t] do not meet, or different texts.
+/// Whether two values can be told apart: numbers by the one tolerance rule
+/// ([`tolerance::apart`]: their intervals [x − t, x + t] do not meet), or
+/// different texts.
 fn apart(a: &Typed, ta: f64, b: &Typed, tb: f64) -> bool {
     match (a, b) {
-        (Typed::Num(x), Typed::Num(y)) => (x - y).abs() > ta + tb,
+        (Typed::Num(x), Typed::Num(y)) => tolerance::apart(*x, ta, *y, tb),
         (Typed::Text(x), Typed::Text(y)) => x != y,
         _ => true,
     }
