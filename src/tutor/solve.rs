@@ -1,7 +1,9 @@
-//! `grafika solve`: a whole problem file through the text's steps —
-//! modeling, viewing transformation, projection onto the near plane, window
-//! and clipping, viewport — and a comparison with the answers the source
-//! printed.
+//! The solver: a problem ([`solve_problem`]) is a calculator command's one
+//! part ([`crate::tutor::part`]) or a whole problem file, solved here
+//! through the text's steps — modeling, viewing transformation, projection
+//! onto the near plane, window and clipping, viewport — with a comparison
+//! with the answers the source printed. Both run their parts by the same
+//! functions ([`crate::tutor::run`]).
 
 use crate::error::{Error, Result};
 use crate::input::part::Problem;
@@ -21,15 +23,8 @@ use crate::tutor::run::{
     window_run, Hooks, Named,
 };
 use crate::tutor::solution::{
-    at, p3, Asked, CameraAt, Compared, Comparison, Given, Report, ShadeAt, WindowAt,
+    at, p3, Asked, CameraAt, Compared, Comparison, Given, Report, ShadeAt, Tree, WindowAt,
 };
-use std::path::Path;
-
-/// Reads and solves a problem file at precision `T`.
-pub fn solve_file<T: Scalar>(path: &Path) -> Result<Report> {
-    let p = ProblemIn::read(path)?;
-    solve::<T>(&p)
-}
 
 /// Solves a problem at precision `T`: a calculator command's one part or
 /// a problem file's parts.
@@ -90,7 +85,7 @@ pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> 
 #[derive(Default)]
 struct Out {
     rec: Recorder,
-    result: Vec<(String, Val)>,
+    result: Tree,
     parts: Vec<Given>,
 }
 
