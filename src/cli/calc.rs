@@ -7,7 +7,8 @@ use crate::error::{Error, Result};
 use crate::input;
 use crate::input::fields::{Num, Vec3In};
 use crate::input::lights::{LightsFileIn, ShadeIn};
-use crate::input::part::{self, PartIn, ProjectionIn, WindowIn};
+use crate::input::part::{PartIn, ProjectionIn, WindowIn};
+use crate::input::problem::CameraIn;
 use crate::msg::Msg;
 
 /// The part a calculator command asks, if `cmd` is one.
@@ -24,8 +25,12 @@ pub fn part_of(cmd: &Command) -> Option<Result<PartIn>> {
 }
 
 /// `--eye --look --up`.
-fn camera(c: &CameraArgs) -> Result<crate::input::problem::CameraIn> {
-    part::camera(&c.eye, &c.look, &c.up)
+fn camera(c: &CameraArgs) -> Result<CameraIn> {
+    Ok(CameraIn {
+        eye: input::vec3("eye", &c.eye)?,
+        look: input::vec3("look", &c.look)?,
+        up: input::vec3("up", &c.up)?,
+    })
 }
 
 /// `grafika view`.

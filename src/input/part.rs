@@ -3,7 +3,6 @@
 //! and choices (the projection, the points) and not yet evaluated; the
 //! solver evaluates them at the precision asked and runs the stages.
 
-use crate::error::Result;
 use crate::input::fields::{AngleIn, Num, Vec3In};
 use crate::input::lights::{LightsFileIn, ShadeIn};
 use crate::input::problem::{CameraIn, ProblemIn};
@@ -61,13 +60,4 @@ pub enum PartIn {
     Clip([Vec3In; 4]),
     /// `shade`: the `[shade]` set-up, the lights file and its name.
     Shade(Box<ShadeIn>, LightsFileIn, Option<String>),
-}
-
-/// The camera flags.
-pub fn camera(eye: &str, look: &str, up: &str) -> Result<CameraIn> {
-    Ok(CameraIn {
-        eye: super::vec3("eye", eye)?,
-        look: super::vec3("look", look)?,
-        up: super::vec3("up", up)?,
-    })
 }
