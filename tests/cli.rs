@@ -1019,3 +1019,21 @@ fn far_not_beyond_near_is_one_rule_for_flags_and_files() {
         assert_eq!(err, format!("kesalahan: {field}: {said}\n"));
     }
 }
+
+/// A window point is written as a vector flag is: `A=0.5,0`, or `A=(0,5;
+/// 0)` with the decimal comma. fovy 90°, aspect 1, near 1: the window is
+/// −1..1 both ways, so x = 0.5 is at (0.5 − (−1))/2 = 3/4 of 100 pixels and
+/// y = 0 at half: (75, 50).
+#[test]
+fn a_window_point_takes_the_decimal_comma_as_a_vector_does() {
+    for point in ["A=0.5,0", "A=(0,5; 0)"] {
+        let out = grafika()
+            .args(["window", "--fovy", "90", "--aspect", "1", "--near", "1"])
+            .args(["--viewport", "100x100", "--point", point, "--lang", "en"])
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{point}");
+        let text = String::from_utf8(out.stdout).unwrap();
+        assert!(text.contains("    A = (75, 50)\n"), "{point}: {text}");
+    }
+}

@@ -4,7 +4,7 @@
 use crate::error::{Error, Result};
 use crate::input::fields::{AngleIn, Num, Vec3In};
 use crate::msg::Msg;
-use crate::num::expr::{split_top_level, strip_outer};
+use crate::num::expr::components;
 use crate::num::vec::V3;
 use crate::num::{parse_expr, parse_vec3, Angle, Expr, Scalar};
 
@@ -79,17 +79,18 @@ pub fn points3(field: &str, items: &[String]) -> Result<Vec<(String, Vec3In)>> {
     Ok(out)
 }
 
-/// `NAME=X,Y` points of flag `field`.
+/// `NAME=X,Y` points of flag `field` (also `NAME=(X; Y)` with decimal
+/// commas, as a vector flag is written).
 pub fn points2(field: &str, items: &[String]) -> Result<Vec<(String, [Num; 2])>> {
     let mut out = Vec::new();
     for it in items {
         let (name, rest) = named(field, it)?;
-        let parts = split_top_level(strip_outer(rest));
-        if parts.len() != 2 {
+        let parts = components(rest);
+        let [x, y] = parts[..] else {
             return Err(Error::said(field, Msg::ErrNamedPair(it.to_string())));
-        }
+        };
         let f = point_field(field, name);
-        out.push((name.to_string(), [num(&f, parts[0])?, num(&f, parts[1])?]));
+        out.push((name.to_string(), [num(&f, x.text)?, num(&f, y.text)?]));
     }
     Ok(out)
 }

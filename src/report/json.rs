@@ -137,3 +137,49 @@ fn render_input(run: &RenderRun) -> Value {
         "explain_pixel": run.explain_pixel.map(|(x, y)| [x, y]),
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::part::{PartIn, WindowIn};
+    use crate::input::{angle, num, points2, size};
+    use crate::tutor::part::solve_part;
+
+    /// A calculator command's input is its one part as the stages took it:
+    /// at f32, near typed `0,1` is the f32 nearest 1/10, written by the
+    /// shortest decimal that reads back to it (0.1); no far is null.
+    #[test]
+    fn a_calculator_part_gives_its_inputs_at_the_precision() {
+        let w = WindowIn {
+            fovy: angle("fovy", "45").unwrap(),
+            aspect: num("aspect", "2").unwrap(),
+            near: num("near", "0,1").unwrap(),
+            far: None,
+            viewport: Some(size("viewport", "200x100").unwrap()),
+            points: points2("point", &["A=(0; 0,01)".to_string()]).unwrap(),
+        };
+        let r = solve_part::<f32>(&PartIn::Window(w)).unwrap();
+        assert_eq!(r.command(), "window");
+        let want = json!({
+            "fovy": 45.0, "aspect": 2.0, "near": 0.1, "far": null,
+            "viewport": [200.0, 100.0], "points": { "A": [0.0, 0.01] },
+        });
+        assert_eq!(input(&r), want);
+    }
+
+    /// A problem file's input is its tables as written, at f64, with the
+    /// title and statement: near 1/10 is 0.1 whatever the precision.
+    #[test]
+    fn a_problem_file_gives_its_tables() {
+        let text = "title = 't'\nstatement = 's'\nask = ['window']\n\
+                    [perspective]\nnear = '1/10'\nfovy = 90\naspect = 2\n";
+        let p = ProblemIn::parse(text, "t.toml").unwrap();
+        let r = crate::tutor::solve::solve::<f32>(&p).unwrap();
+        let i = input(&r);
+        assert_eq!(i["title"], "t");
+        assert_eq!(i["statement"], "s");
+        assert_eq!(i["perspective"]["near"], json!(0.1));
+        assert_eq!(i["perspective"]["fovy"], json!(90.0));
+        assert_eq!(i["perspective"]["far"], Value::Null);
+    }
+}

@@ -26,7 +26,7 @@ use crate::stages::trace::{Step, Val};
 use crate::tutor::check::{agrees, Marker, Settings, Verdict, FOLLOW_THROUGH};
 use crate::tutor::diagnose::Mistake;
 use crate::tutor::generate::{Difficulty, Topic};
-use crate::tutor::solve::lookup;
+use crate::tutor::solution::lookup;
 
 /// One value the student is asked for.
 #[derive(Clone, Debug)]

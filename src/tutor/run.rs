@@ -226,3 +226,67 @@ pub fn light_run<T: Scalar>(
     };
     Ok((setup, r))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Real;
+
+    fn num(r: &Tree, key: &str) -> Option<f64> {
+        match crate::tutor::solution::lookup(r, key)? {
+            Val::Num(s) => Some(s.value),
+            _ => None,
+        }
+    }
+
+    /// fovy 90°, aspect 2: top = near·tan 45° = near, right = aspect·top.
+    /// Near 1: top 1, right 2, height 2, width 4; far 3: top 3, right 6;
+    /// the far window gives its edges, not its height and width.
+    #[test]
+    fn the_far_window_gives_its_edges_once() {
+        let (fovy, aspect, near, far) =
+            (Real::from(90), Real::from(2), Real::from(1), Real::from(3));
+        let mut rec = Recorder::new();
+        let hooks = Hooks::default();
+        let (_, r) = window_run((&fovy, &aspect, &near, Some(&far)), &hooks, &mut rec).unwrap();
+        let keys: Vec<&str> = r.iter().map(|(k, _)| k.as_str()).collect();
+        assert_eq!(
+            keys,
+            [
+                "top",
+                "bottom",
+                "left",
+                "right",
+                "height",
+                "width",
+                "far_top",
+                "far_bottom",
+                "far_left",
+                "far_right"
+            ]
+        );
+        assert_eq!(num(&r, "top"), Some(1.0));
+        assert_eq!(num(&r, "width"), Some(4.0));
+        assert_eq!(num(&r, "far_top"), Some(3.0));
+        assert_eq!(num(&r, "far_right"), Some(6.0));
+    }
+
+    /// far must lie beyond near: far = near is refused, naming `far`, with
+    /// the one message for the rule.
+    #[test]
+    fn far_at_near_is_refused_by_the_one_rule() {
+        let (fovy, aspect, one) = (Real::from(90), Real::from(2), Real::from(1));
+        let mut rec = Recorder::new();
+        let e = window_run(
+            (&fovy, &aspect, &one, Some(&one)),
+            &Hooks::default(),
+            &mut rec,
+        )
+        .unwrap_err();
+        assert_eq!(e.field, "far");
+        assert_eq!(
+            e.message,
+            crate::msg::Msg::Err(ErrMsg::MustBe(Bound::AboveNear("1".into()), "1".into()))
+        );
+    }
+}

@@ -33,6 +33,21 @@ pub fn at<T: Scalar>(x: &T) -> f64 {
 /// nest under its key in a problem file's).
 pub type Tree = Vec<(String, Val)>;
 
+/// Looks up `a.b.c` (a list index may be a number) in the results.
+pub fn lookup<'a>(result: &'a [(String, Val)], key: &str) -> Option<&'a Val> {
+    let mut parts = key.split('.');
+    let first = parts.next()?;
+    let mut cur = &result.iter().find(|(k, _)| k == first)?.1;
+    for part in parts {
+        cur = match cur {
+            Val::Map(kv) => &kv.iter().find(|(k, _)| k == part)?.1,
+            Val::List(items) => items.get(part.parse::<usize>().ok()?)?,
+            _ => return None,
+        };
+    }
+    Some(cur)
+}
+
 /// What was asked.
 #[derive(Clone, Debug)]
 pub enum Asked {
@@ -393,7 +408,7 @@ impl Report {
     /// the part's key.
     pub fn part_result(&self, g: &Given) -> &[(String, Val)] {
         match &self.asked {
-            Asked::File(_) => match crate::tutor::solve::lookup(&self.result, &g.key()) {
+            Asked::File(_) => match lookup(&self.result, &g.key()) {
                 Some(Val::Map(kv)) => kv,
                 _ => &[],
             },

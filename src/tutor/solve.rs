@@ -23,7 +23,7 @@ use crate::tutor::run::{
     window_run, Hooks, Named,
 };
 use crate::tutor::solution::{
-    at, p3, Asked, CameraAt, Compared, Comparison, Given, Report, ShadeAt, Tree, WindowAt,
+    at, lookup, p3, Asked, CameraAt, Compared, Comparison, Given, Report, ShadeAt, Tree, WindowAt,
 };
 
 /// Solves a problem at precision `T`: a calculator command's one part or
@@ -381,21 +381,6 @@ fn point_inside_step<T: Scalar>(
                 (true, false) => Msg::Inside(true, false),
             })
     });
-}
-
-/// Looks up `a.b.c` (a list index may be a number) in the results.
-pub fn lookup<'a>(result: &'a [(String, Val)], key: &str) -> Option<&'a Val> {
-    let mut parts = key.split('.');
-    let first = parts.next()?;
-    let mut cur = &result.iter().find(|(k, _)| k == first)?.1;
-    for part in parts {
-        cur = match cur {
-            Val::Map(kv) => &kv.iter().find(|(k, _)| k == part)?.1,
-            Val::List(items) => items.get(part.parse::<usize>().ok()?)?,
-            _ => return None,
-        };
-    }
-    Some(cur)
 }
 
 /// Flattens a nested TOML table into dotted keys.

@@ -6,8 +6,8 @@ use super::builders::Part;
 use super::{camera, clip, project, shade, window, Drawing, Figure};
 use crate::report::Style;
 use crate::stages::trace::Val;
+use crate::tutor::solution::lookup;
 use crate::tutor::solution::{Given, Report};
-use crate::tutor::solve::lookup;
 
 /// The drawings of a report, in the order of its parts.
 pub fn drawings(r: &Report, st: &Style) -> Vec<Drawing> {

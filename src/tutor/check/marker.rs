@@ -28,7 +28,8 @@ use crate::tutor::diagnose::{Mistake, CATALOG};
 use crate::tutor::follow::Given;
 use crate::tutor::keys::ordered_keys;
 use crate::tutor::run::Hooks;
-use crate::tutor::solve::{self, lookup};
+use crate::tutor::solution::lookup;
+use crate::tutor::solve;
 use std::cell::RefCell;
 use std::collections::HashMap;
 

@@ -27,8 +27,8 @@ use crate::msg::Msg;
 use crate::num::format::fmt_dec;
 use crate::num::rng::SplitMix64;
 use crate::stages::trace::Val;
+use crate::tutor::solution::lookup;
 use crate::tutor::solution::Report;
-use crate::tutor::solve::lookup;
 
 use std::collections::HashSet;
 use std::fmt::Write as _;
