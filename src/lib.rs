@@ -6,21 +6,25 @@
 //!
 //! | layer | what it holds |
 //! |---|---|
-//! | [`cli`] | the command line: clap arguments, validation into values, dispatch, printing, exit codes |
-//! | [`report`] | the one place where words for people are made: text, JSON, Markdown, LaTeX, in every language |
-//! | [`tutor`] | solve a problem file, mark answers (check), the mistake catalog, generate exams |
+//! | [`cli`] | the command line: clap arguments, flags read into the typed problem, dispatch, printing, exit codes |
+//! | [`report`] | the one place where words for people are made: a report written as text, JSON, Markdown, LaTeX, HTML and figures, in every language |
+//! | [`tutor`] | the one solver (a problem's parts run through the stages, [`tutor::run`]), the report as data ([`tutor::solution`]), mark answers (check), the mistake catalog, generate exams |
 //! | [`bench`] | run time against error of the float stages |
 //! | [`render`] | the renderer: geometry, rasterization, shading, drawn with the stages |
-//! | [`input`] | problem, scene, lights and mesh files, and flag values, read and validated |
+//! | [`input`] | the typed problem ([`input::part::Problem`]: a problem file, or a calculator command's one part), scene, lights and mesh files, and flag values, read and validated |
 //! | [`stages`] | the math the text teaches: camera, projection, window, clip, lighting; each writes its steps to a [`stages::trace::Trace`] |
 //! | [`num`] | numbers: the `Scalar` trait, the exact type, floats, lanes, vectors, expressions, formatting |
 //! | [`msg`] | message keys: what is said to a person, as data (`report::words` gives the words) |
 //! | [`error`] | the error value every layer returns |
 //!
-//! Data flows one way: command-line flags or a problem file are validated
-//! into plain values, the stage functions compute with them at the chosen
-//! precision while writing their steps to a trace, and a report turns the
-//! steps and results into text or JSON.
+//! Data flows one way: command-line flags or a problem file become one
+//! typed problem; the solver ([`tutor::solve::solve_problem`]) evaluates it
+//! at the chosen precision and runs each part through the stage functions
+//! (the same [`tutor::run`] functions for flags and files), which write
+//! their steps to a trace; it returns a typed report
+//! ([`tutor::solution::Report`]: what was asked, what each part was given,
+//! the named results, the steps), and [`report`] writes that as text, JSON,
+//! HTML or figures.
 
 pub mod bench;
 pub mod cli;

@@ -413,8 +413,6 @@ pub enum Msg {
     ErrChooseProjection,
     /// --point without --viewport.
     ErrPointNeedsViewport,
-    /// far ≤ near: near, far.
-    ErrFar(String, String),
 
     // ---- generated problems ----
     /// The title of a generated problem.

@@ -984,3 +984,56 @@ fn a_problem_files_vectors_may_be_written_as_one_string() {
         assert_eq!(a["exact"], b["exact"], "{name}");
     }
 }
+
+/// far ≤ near is one rule with one message, whether the problem comes from
+/// the flags or from a file; each error names the field as it was spelled
+/// (`far`, `perspective.far`), in both languages (0.5 written 0,5 in
+/// Indonesian).
+#[test]
+fn far_not_beyond_near_is_one_rule_for_flags_and_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("far.toml");
+    let problem = "title = \"far\"\nask = [\"window\"]\n\
+                   [perspective]\nnear = 1\nfar = 0.5\nfovy = 45\naspect = 2\n";
+    std::fs::write(&file, problem).unwrap();
+    let flags = [
+        "window", "--fovy", "45", "--aspect", "2", "--near", "1", "--far", "0,5",
+    ];
+    let solve = ["solve", file.to_str().unwrap()];
+    let said = "must be greater than near = 1, got 0.5";
+    assert_eq!(english_error(&flags), format!("error: far: {said}\n"));
+    assert_eq!(
+        english_error(&solve),
+        format!("error: perspective.far: {said}\n")
+    );
+    let said = "harus lebih besar daripada near = 1, diberikan 0,5";
+    for (args, field) in [(&flags[..], "far"), (&solve[..], "perspective.far")] {
+        let out = grafika()
+            .arg("--lang")
+            .arg("id")
+            .args(args)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2));
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(err, format!("kesalahan: {field}: {said}\n"));
+    }
+}
+
+/// A window point is written as a vector flag is: `A=0.5,0`, or `A=(0,5;
+/// 0)` with the decimal comma. fovy 90°, aspect 1, near 1: the window is
+/// −1..1 both ways, so x = 0.5 is at (0.5 − (−1))/2 = 3/4 of 100 pixels and
+/// y = 0 at half: (75, 50).
+#[test]
+fn a_window_point_takes_the_decimal_comma_as_a_vector_does() {
+    for point in ["A=0.5,0", "A=(0,5; 0)"] {
+        let out = grafika()
+            .args(["window", "--fovy", "90", "--aspect", "1", "--near", "1"])
+            .args(["--viewport", "100x100", "--point", point, "--lang", "en"])
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{point}");
+        let text = String::from_utf8(out.stdout).unwrap();
+        assert!(text.contains("    A = (75, 50)\n"), "{point}: {text}");
+    }
+}

@@ -1358,3 +1358,31 @@ fn decided_segments_and_dark_lights_are_said() {
         p[0].notes()
     );
 }
+
+/// A problem file that gives d (not near) is projected onto z = d, and the
+/// projection figure is drawn from what the part was given: with the eye
+/// at the origin looking down −z, F' = F = (0.5, 0.5, −4) and F'' =
+/// d·(x/z, y/z) = −2·(0.5/−4, 0.5/−4) = (0.25, 0.25) on the plane z = −2.
+/// (The figure once looked d up among the steps' results and was lost
+/// when the step came to show d as a value.)
+#[test]
+fn a_problem_that_gives_d_draws_its_projection_on_z_equals_d() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("d.toml");
+    let problem = "title = \"d\"\nask = [\"project\"]\n\
+                   [camera]\neye = [0, 0, 0]\nlook = [0, 0, -1]\nup = [0, 1, 0]\n\
+                   [perspective]\nd = -2\n[points]\nF = [0.5, 0.5, -4]\n";
+    std::fs::write(&file, problem).unwrap();
+    let args = ["solve", file.to_str().unwrap()];
+    let parts: Vec<String> = drawn(&args).iter().map(|d| d.part.clone()).collect();
+    assert_eq!(parts, ["project"]);
+    let panels = svg_panels(Lang::En, &args);
+    assert!(panels.iter().any(|p| p.has("view plane")));
+    let images: Vec<&str> = panels.iter().filter_map(|p| p.label("F''")).collect();
+    assert!(
+        images.contains(&"F'' = (1/4, 1/4) = (0.25, 0.25)"),
+        "{images:?}"
+    );
+    let svg = to_svg(&drawn(&args)[0]);
+    assert!(svg.contains("z = d = −2"), "the plane is named by d");
+}

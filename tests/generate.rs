@@ -7,7 +7,7 @@ use grafika::stages::trace::Val;
 use grafika::tutor::check::{self, Settings, Verdict};
 use grafika::tutor::diagnose::CATALOG;
 use grafika::tutor::generate::{self, answer_toml, Difficulty, Topic};
-use grafika::tutor::solve::lookup;
+use grafika::tutor::solution::lookup;
 use std::path::{Path, PathBuf};
 
 const TOPICS: [Topic; 7] = [

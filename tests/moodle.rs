@@ -20,7 +20,8 @@ use grafika::tutor::check::default_keys;
 use grafika::tutor::diagnose::CATALOG;
 use grafika::tutor::generate::quiz::Quiz;
 use grafika::tutor::generate::{Generated, Topic};
-use grafika::tutor::solve::{self, lookup};
+use grafika::tutor::solution::lookup;
+use grafika::tutor::solve;
 use std::path::{Path, PathBuf};
 
 const R: f64 = 1e-3;

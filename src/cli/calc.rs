@@ -1,232 +1,104 @@
-//! The calculator commands: flags → validated values → stage functions →
-//! a report. No math here; that is in the stage modules.
+//! The calculator commands' flags read into a typed problem: one part
+//! whose inputs are the flags' expressions, names and choices. The solver
+//! evaluates and runs it (`tutor::part`); no math here.
 
-use crate::cli::args::{CameraArgs, ClipArgs, OnOff, ProjectArgs, ShadeArgs, WindowArgs};
+use crate::cli::args::{CameraArgs, ClipArgs, Command, OnOff, ProjectArgs, ShadeArgs, WindowArgs};
 use crate::error::{Error, Result};
 use crate::input;
 use crate::input::fields::{Num, Vec3In};
-use crate::input::lights::ShadeIn;
+use crate::input::lights::{LightsFileIn, ShadeIn};
+use crate::input::part::{PartIn, ProjectionIn, WindowIn};
+use crate::input::problem::CameraIn;
 use crate::msg::Msg;
-use crate::num::Expr;
-use crate::num::Scalar;
-use crate::stages::camera::{self, Camera};
-use crate::stages::clip::ClipBox;
-use crate::stages::projection::{self, Projection};
-use crate::stages::trace::{Recorder, Report, Val};
-use crate::stages::window;
-use crate::tutor::keys::{basis_result, clip_run, shade_run, window_result};
-use serde_json::{json, Value};
 
-/// The camera from its flags.
-pub fn camera_from<T: Scalar>(c: &CameraArgs) -> Result<Camera<T>> {
-    Ok(Camera {
-        pe: input::vec3("eye", &c.eye)?,
-        pr: input::vec3("look", &c.look)?,
-        vup: input::vec3("up", &c.up)?,
+/// The part a calculator command asks, if `cmd` is one.
+pub fn part_of(cmd: &Command) -> Option<Result<PartIn>> {
+    Some(match cmd {
+        Command::Basis(c) => camera(c).map(PartIn::Basis),
+        Command::View { camera: c, points } => view(c, points),
+        Command::Project(a) => project(a),
+        Command::Window(a) => window(a),
+        Command::Clip(a) => clip(a),
+        Command::Shade(a) => shade(a),
+        _ => return None,
     })
 }
 
-/// Input JSON of a camera.
-pub fn camera_json<T: Scalar>(c: &Camera<T>) -> Value {
-    json!({ "eye": input::json3(&c.pe), "look": input::json3(&c.pr), "up": input::json3(&c.vup) })
-}
-
-/// `grafika basis`.
-pub fn basis<T: Scalar>(c: &CameraArgs) -> Result<Report> {
-    let cam = camera_from::<T>(c)?;
-    let mut rec = Recorder::new();
-    let b = camera::basis(&cam, &mut rec)?;
-    Ok(Report::from_recorder::<T>(
-        "basis",
-        camera_json(&cam),
-        basis_result(&b),
-        rec,
-    ))
+/// `--eye --look --up`.
+fn camera(c: &CameraArgs) -> Result<CameraIn> {
+    Ok(CameraIn {
+        eye: input::vec3("eye", &c.eye)?,
+        look: input::vec3("look", &c.look)?,
+        up: input::vec3("up", &c.up)?,
+    })
 }
 
 /// `grafika view`.
-pub fn view<T: Scalar>(c: &CameraArgs, points: &[String]) -> Result<Report> {
-    let cam = camera_from::<T>(c)?;
-    let pts = input::points3::<T>("point", points)?;
-    let mut rec = Recorder::new();
-    let b = camera::basis(&cam, &mut rec)?;
-    let m = camera::view_matrix(&b, &cam.pe, &mut rec)?;
-    let eye: Vec<(String, Val)> = pts
-        .iter()
-        .map(|(n, p)| {
-            Ok((
-                n.clone(),
-                Val::vec3(&camera::to_eye(&b, &cam.pe, n, p, &mut rec)?),
-            ))
-        })
-        .collect::<Result<_>>()?;
-    let mut result = basis_result(&b);
-    result.push(("matrix".into(), Val::mat4(&m)));
-    result.push(("points".into(), Val::Map(eye)));
-    let mut inp = camera_json(&cam);
-    inp["points"] = points_json(&pts);
-    Ok(Report::from_recorder::<T>("view", inp, result, rec))
+fn view(c: &CameraArgs, points: &[String]) -> Result<PartIn> {
+    Ok(PartIn::View(camera(c)?, input::points3("point", points)?))
 }
 
-fn points_json<T: Scalar>(pts: &[(String, crate::num::vec::V3<T>)]) -> Value {
-    Value::Object(
-        pts.iter()
-            .map(|(n, p)| (n.clone(), input::json3(p)))
-            .collect(),
-    )
-}
-
-/// `grafika project`.
-pub fn project<T: Scalar>(a: &ProjectArgs) -> Result<Report> {
+/// `grafika project`: `--d`, `--cop` with `--plane`, or `--ortho`.
+fn project(a: &ProjectArgs) -> Result<PartIn> {
     let proj = match (&a.d, &a.cop, &a.plane, a.ortho) {
-        (Some(d), None, None, false) => Projection::Plane {
-            d: input::num::<T>("d", d)?,
-        },
-        (None, Some(c), Some(p), false) => Projection::General {
-            zprp: input::num("cop", c)?,
-            zvp: input::num("plane", p)?,
-        },
-        (None, None, None, true) => Projection::Ortho,
+        (Some(d), None, None, false) => ProjectionIn::Plane(input::num("d", d)?),
+        (None, Some(c), Some(p), false) => {
+            ProjectionIn::General(input::num("cop", c)?, input::num("plane", p)?)
+        }
+        (None, None, None, true) => ProjectionIn::Ortho,
         (None, Some(_), None, false) => return Err(Error::said("plane", Msg::ErrCopNeedsPlane)),
         (None, None, Some(_), false) => return Err(Error::said("cop", Msg::ErrPlaneNeedsCop)),
         _ => return Err(Error::said("d", Msg::ErrChooseProjection)),
     };
-    proj.validate()?;
-    let pts = input::points3::<T>("point", &a.points)?;
-    let mut rec = Recorder::new();
-    let mut out = Vec::new();
-    for (n, p) in &pts {
-        let q = projection::project(&proj, n, p, &mut rec)?;
-        out.push((n.clone(), Val::vec3(&q)));
-    }
-    let kind = match &proj {
-        Projection::Plane { d } => json!({ "d": input::jnum(d) }),
-        Projection::General { zprp, zvp } => {
-            json!({ "cop": input::jnum(zprp), "plane": input::jnum(zvp) })
-        }
-        Projection::Ortho => json!({ "ortho": true }),
-    };
-    let inp = json!({ "projection": kind, "points": points_json(&pts) });
-    Ok(Report::from_recorder::<T>(
-        "project",
-        inp,
-        vec![("points".into(), Val::Map(out))],
-        rec,
-    ))
+    Ok(PartIn::Project(proj, input::points3("point", &a.points)?))
 }
 
 /// `grafika window`.
-pub fn window<T: Scalar>(a: &WindowArgs) -> Result<Report> {
-    let fovy: T = input::angle_deg("fovy", &a.fovy)?;
-    let aspect: T = input::num("aspect", &a.aspect)?;
-    let near: T = input::num("near", &a.near)?;
-    let far: Option<T> = a.far.as_deref().map(|f| input::num("far", f)).transpose()?;
-    let vp: Option<(T, T)> = a
-        .viewport
-        .as_deref()
-        .map(|v| input::size("viewport", v))
-        .transpose()?;
-    let pts = input::points2::<T>("point", &a.points)?;
-    if !pts.is_empty() && vp.is_none() {
+fn window(a: &WindowArgs) -> Result<PartIn> {
+    let w = WindowIn {
+        fovy: input::angle("fovy", &a.fovy)?,
+        aspect: input::num("aspect", &a.aspect)?,
+        near: input::num("near", &a.near)?,
+        far: a.far.as_deref().map(|f| input::num("far", f)).transpose()?,
+        viewport: (a.viewport.as_deref())
+            .map(|v| input::size("viewport", v))
+            .transpose()?,
+        points: input::points2("point", &a.points)?,
+    };
+    if !w.points.is_empty() && w.viewport.is_none() {
         return Err(Error::said("viewport", Msg::ErrPointNeedsViewport));
     }
-    if let Some(f) = &far {
-        if *f <= near {
-            return Err(Error::said(
-                "far",
-                Msg::ErrFar(near.to_f64().to_string(), f.to_f64().to_string()),
-            ));
-        }
-    }
-    let mut rec = Recorder::new();
-    let w = window::window(&fovy, &aspect, &near, "near", &mut rec)?;
-    let mut result = window_result(&w, "");
-    if let Some(f) = &far {
-        let fw = window::window(&fovy, &aspect, f, "far", &mut rec)?;
-        result.extend(
-            window_result(&fw, "far_")
-                .into_iter()
-                .filter(|(k, _)| !k.ends_with("height") && !k.ends_with("width")),
-        );
-    }
-    if let Some((vw, vh)) = &vp {
-        window::validate_viewport(vw, vh)?;
-        let mut px = Vec::new();
-        for (n, (x, y)) in &pts {
-            let (a, b) = window::to_viewport(&w, (vw, vh), n, (x, y), &mut rec);
-            px.push((n.clone(), Val::vec2(&a, &b)));
-        }
-        if !px.is_empty() {
-            result.push(("pixels".into(), Val::Map(px)));
-        }
-    }
-    let inp = json!({
-        "fovy": input::jnum(&fovy), "aspect": input::jnum(&aspect), "near": input::jnum(&near),
-        "far": far.as_ref().map(input::jnum),
-        "viewport": vp.as_ref().map(|(w, h)| json!([input::jnum(w), input::jnum(h)])),
-        "points": Value::Object(pts.iter().map(|(n, (x, y))| (n.clone(), json!([input::jnum(x), input::jnum(y)]))).collect()),
-    });
-    Ok(Report::from_recorder::<T>("window", inp, result, rec))
+    Ok(PartIn::Window(w))
 }
 
 /// `grafika clip`.
-pub fn clip<T: Scalar>(a: &ClipArgs) -> Result<Report> {
-    let b = ClipBox {
-        min: input::vec3::<T>("min", &a.min)?,
-        max: input::vec3("max", &a.max)?,
-    };
-    b.validate()?;
-    let (p0, p1) = (
-        input::vec3::<T>("from", &a.from)?,
-        input::vec3::<T>("to", &a.to)?,
-    );
-    let mut rec = Recorder::new();
-    let result = clip_run(&b, &p0, &p1, &mut rec);
-    let inp = json!({ "min": input::json3(&b.min), "max": input::json3(&b.max), "from": input::json3(&p0), "to": input::json3(&p1) });
-    Ok(Report::from_recorder::<T>("clip", inp, result, rec))
+fn clip(a: &ClipArgs) -> Result<PartIn> {
+    Ok(PartIn::Clip([
+        input::vec3("min", &a.min)?,
+        input::vec3("max", &a.max)?,
+        input::vec3("from", &a.from)?,
+        input::vec3("to", &a.to)?,
+    ]))
 }
 
-/// `grafika shade`.
-pub fn shade<T: Scalar>(a: &ShadeArgs) -> Result<Report> {
-    use crate::input::lights::{build, LightsFileIn};
+/// `grafika shade`: the flags as a `[shade]` table, and the lights file.
+fn shade(a: &ShadeArgs) -> Result<PartIn> {
     let sh = shade_in(a)?;
     let file = match &a.lights {
         Some(path) => LightsFileIn::read(path)?,
         None => LightsFileIn::default(),
     };
-    let mut rec = Recorder::new();
-    let setup = build::<T>(&sh, &file, "", "light", &mut rec)?;
-    let result = shade_run(&setup, &crate::stages::lighting::Rules::default(), &mut rec);
-    let s = &setup.surface;
-    let m = &setup.material;
-    let inp = json!({
-        "model": m.model.name(),
-        "normal": input::json3(&s.normal),
-        "view": input::json3(&s.view),
-        "position": input::json3(&s.position),
-        "camera": s.camera.as_ref().map(input::json3),
-        "color": m.color.iter().map(Scalar::to_f64).collect::<Vec<_>>(),
-        "ka": m.ka.to_f64(), "kd": m.kd.to_f64(), "ks": m.ks.to_f64(), "shininess": m.shininess.to_f64(),
-        "specular": m.specular_on, "specular_requires_lit": m.specular_requires_lit,
-        "lights": a.lights.as_ref().map(|p| p.display().to_string()),
-    });
-    Ok(Report::from_recorder::<T>("shade", inp, result, rec))
+    let name = a.lights.as_ref().map(|p| p.display().to_string());
+    Ok(PartIn::Shade(Box::new(sh), file, name))
 }
 
 /// The flags' expressions as a `[shade]` table.
 fn shade_in(a: &ShadeArgs) -> Result<ShadeIn> {
     let v = |field: &str, s: &Option<String>| -> Result<Option<Vec3In>> {
-        s.as_deref()
-            .map(|t| {
-                input::vec3_expr(field, t)
-                    .map(|[x, y, z]: [Expr; 3]| Vec3In([Num(x), Num(y), Num(z)]))
-            })
-            .transpose()
+        s.as_deref().map(|t| input::vec3(field, t)).transpose()
     };
     let n = |field: &str, s: &Option<String>| -> Result<Option<Num>> {
-        s.as_deref()
-            .map(|t| input::expr(field, t).map(Num))
-            .transpose()
+        s.as_deref().map(|t| input::num(field, t)).transpose()
     };
     Ok(ShadeIn {
         model: a.model,

@@ -15,12 +15,14 @@ pub mod write;
 
 use crate::bench::accuracy::Stage;
 use crate::error::{Error, Result};
+use crate::input::part::Problem;
+use crate::input::problem::ProblemIn;
 use crate::msg::{ErrMsg, Msg};
 use crate::num::Precision;
 use crate::report::lang::{tr, Lang};
 use crate::report::Style;
-use crate::stages::trace::Report;
-use args::{CameraArgs, Cli, ClipArgs, Command, ProjectArgs, ShadeArgs, WindowArgs};
+use crate::tutor::solution::Report;
+use args::{Cli, Command};
 use clap::Parser;
 use print::{Kind, Stopped};
 use std::ffi::OsString;
@@ -65,53 +67,27 @@ fn run_writing(cli: &Cli, outputs: &Outputs) -> Result<Report> {
 
 fn run_unchecked(cli: &Cli, outputs: &Outputs) -> Result<Report> {
     let p = cli.common.precision;
-    match &cli.command {
-        Command::Basis(c) => at_precision!(p, basis(c)),
-        Command::View { camera, points } => at_precision!(p, view(camera, points)),
-        Command::Project(a) => at_precision!(p, project(a)),
-        Command::Window(a) => at_precision!(p, window(a)),
-        Command::Clip(a) => at_precision!(p, clip(a)),
-        Command::Shade(a) => at_precision!(p, shade(a)),
+    let problem = match &cli.command {
         Command::Solve { file, .. } => {
             let id = style_of(cli).lang == Lang::Id;
-            at_precision!(p, solve(file, id))
+            Problem::File(Box::new(ProblemIn::read(file)?.localized(id)))
         }
-        Command::Check(_)
-        | Command::Generate(_)
-        | Command::Bench { .. }
-        | Command::Practice(_)
-        | Command::Completions { .. }
-        | Command::Man => Err(Error::why("command", ErrMsg::OwnOutput)),
         // The renderer computes at f32 (the calculator's precisions are for
         // explaining): another --precision is refused, not ignored.
         Command::Render(_) if p != Precision::Exact => {
-            Err(Error::why("precision", ErrMsg::RenderPrecision))
+            return Err(Error::why("precision", ErrMsg::RenderPrecision))
         }
-        Command::Render(a) => crate::cli::render::run(a, style_of(cli).lang, outputs),
-    }
+        Command::Render(a) => return crate::cli::render::run(a, style_of(cli).lang, outputs),
+        c => match calc::part_of(c) {
+            Some(part) => Problem::Part(Box::new(part?)),
+            None => return Err(Error::why("command", ErrMsg::OwnOutput)),
+        },
+    };
+    at_precision!(p, solve(&problem))
 }
 
-fn basis<T: crate::num::Scalar>(c: &CameraArgs) -> Result<Report> {
-    calc::basis::<T>(c)
-}
-fn view<T: crate::num::Scalar>(c: &CameraArgs, pts: &[String]) -> Result<Report> {
-    calc::view::<T>(c, pts)
-}
-fn project<T: crate::num::Scalar>(a: &ProjectArgs) -> Result<Report> {
-    calc::project::<T>(a)
-}
-fn window<T: crate::num::Scalar>(a: &WindowArgs) -> Result<Report> {
-    calc::window::<T>(a)
-}
-fn clip<T: crate::num::Scalar>(a: &ClipArgs) -> Result<Report> {
-    calc::clip::<T>(a)
-}
-fn shade<T: crate::num::Scalar>(a: &ShadeArgs) -> Result<Report> {
-    calc::shade::<T>(a)
-}
-fn solve<T: crate::num::Scalar>(file: &std::path::Path, id: bool) -> Result<Report> {
-    let p = crate::input::problem::ProblemIn::read(file)?.localized(id);
-    crate::tutor::solve::solve::<T>(&p)
+fn solve<T: crate::num::Scalar>(p: &Problem) -> Result<Report> {
+    crate::tutor::solve::solve_problem::<T>(p)
 }
 
 /// Parses the arguments, runs, prints; returns the exit status (0, or 2 for
@@ -324,11 +300,11 @@ fn write_html(cli: &Cli, report: &Report, style: &Style, outputs: &Outputs) -> R
 
 /// The page's title: the problem's title for `solve`, else the command.
 fn page_title(report: &Report, style: &Style) -> String {
-    match report.input.get("title").and_then(|t| t.as_str()) {
-        Some(t) => format!("grafika {}: {t}", report.command),
+    match report.title() {
+        Some(t) => format!("grafika {}: {t}", report.command()),
         None => format!(
             "grafika {} — {}",
-            report.command,
+            report.command(),
             style.tr("worked solution", "penyelesaian")
         ),
     }

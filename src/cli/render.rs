@@ -10,9 +10,8 @@ use crate::input::scene::{Scene, Shading};
 use crate::msg::ErrMsg;
 use crate::render::{self, Frame, Options, Stats};
 use crate::report::lang::{tr, Lang};
-use crate::stages::trace::Report;
-use crate::stages::trace::{Recorder, Val};
-use serde_json::json;
+use crate::stages::trace::Recorder;
+use crate::tutor::solution::{Asked, RenderRun, Report, Times};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
@@ -54,7 +53,7 @@ pub fn run(a: &RenderArgs, lang: Lang, outputs: &Outputs) -> Result<Report> {
     }
     Ok(report(
         a,
-        (&scene, &opt, lang),
+        (&scene, &opt),
         (&frame, &runs),
         encode,
         pixel,
@@ -167,11 +166,11 @@ impl Progress {
     }
 }
 
-/// The report of a render: the summary, `--stats`, the JSON's counters
-/// and times, the explained pixel's steps.
+/// The report of a render: the scene and settings, the last frame's
+/// counters, the median times, the explained pixel's steps.
 fn report(
     a: &RenderArgs,
-    (scene, opt, lang): (&Scene, &Options, Lang),
+    (scene, opt): (&Scene, &Options),
     (frame, runs): (&Frame, &[Stats]),
     encode: Duration,
     pixel: Option<(u32, u32)>,
@@ -182,93 +181,34 @@ fn report(
         v.sort();
         v[v.len() / 2]
     };
-    let frame_t = median(&|s| s.frame());
-    let st = &frame.stats;
-    let mpix = (opt.width as f64 * opt.height as f64) / frame_t.as_secs_f64() / 1e6;
-    let shading = shading_summary(scene, opt);
-    let result = summary(a, opt, st, &shading, (frame_t, encode, mpix));
-    let mut notes = Vec::new();
-    if a.stats {
-        notes.push(stats_text(st, runs, opt.shading, &median, encode, lang));
-    }
-    let mut extra = serde_json::Map::new();
-    extra.insert("stats".into(), stats_json(a, st, &median, encode, mpix));
-    Report {
-        command: "render".into(),
-        input: json!({
-            "scene": a.scene.display().to_string(), "output": a.output.display().to_string(),
-            "width": opt.width, "height": opt.height, "shading": shading,
-            "normals": format!("{:?}", opt.normals).to_lowercase(),
-            "explain_pixel": pixel.map(|(x, y)| [x, y]),
-        }),
-        result,
-        steps: rec.steps,
-        warnings: rec.warnings,
-        notes,
-        precision: crate::num::Precision::F32,
-        extra,
-        comparison: None,
-        source_notes: vec![],
-    }
-}
-
-/// The summary lines: image, size, shading, counts and the frame time
-/// (frame, PNG encoding, Mpixels/s).
-fn summary(
-    a: &RenderArgs,
-    opt: &Options,
-    st: &Stats,
-    shading: &str,
-    (frame_t, encode, mpix): (Duration, Duration, f64),
-) -> Vec<(String, Val)> {
-    let ms = |d: Duration| d.as_secs_f64() * 1e3;
-    let count = |n: u64| Val::Num(crate::num::Scalar::shown(&(n as f64)));
-    let label = if a.repeat > 1 {
-        format!("frame time (median of {})", a.repeat)
-    } else {
-        "frame time".to_string()
+    let ms = |f: &dyn Fn(&Stats) -> Duration| median(f).as_secs_f64() * 1e3;
+    let times = Times {
+        runs: runs.len(),
+        geometry: ms(&|s| s.geometry),
+        binning: ms(&|s| s.binning),
+        bands: ms(&|s| s.pass),
+        raster: ms(&|s| s.raster),
+        shading: ms(&|s| s.shading),
+        frame: ms(&|s| s.frame()),
+        png: encode.as_secs_f64() * 1e3,
     };
-    let time = Val::said(crate::msg::Said::FrameTime(
-        format!("{:.2}", ms(frame_t)),
-        format!("{mpix:.1}"),
-        format!("{:.2}", ms(encode)),
-    ));
-    vec![
-        (
-            "image".to_string(),
-            Val::text(a.output.display().to_string()),
-        ),
-        (
-            "size".to_string(),
-            Val::text(format!("{}x{}", opt.width, opt.height)),
-        ),
-        ("shading".to_string(), Val::text(shading)),
-        ("triangles drawn".to_string(), count(st.drawn)),
-        ("pixels shaded".to_string(), count(st.pixels_shaded)),
-        (label, time),
-    ]
-}
-
-/// The JSON's `stats`: the counters and the median times.
-fn stats_json(
-    a: &RenderArgs,
-    st: &Stats,
-    median: &Median<'_>,
-    encode: Duration,
-    mpix: f64,
-) -> serde_json::Value {
-    let ms = |d: Duration| d.as_secs_f64() * 1e3;
-    json!({
-        "triangles_in": st.tris_in, "culled": st.culled, "rejected": st.rejected,
-        "objects_rejected": st.objects_rejected, "objects_inside": st.objects_inside,
-        "clipped": st.clipped, "drawn": st.drawn, "no_pixels": st.no_pixels,
-        "pixels_shaded": st.pixels_shaded, "lighting_evaluations": st.lighting_evals,
-        "lights_skipped": st.lights_skipped, "specular_skipped": st.specular_skipped,
-        "frame_ms": ms(median(&|s| s.frame())), "geometry_ms": ms(median(&|s| s.geometry)),
-        "binning_ms": ms(median(&|s| s.binning)), "raster_ms": ms(median(&|s| s.raster)),
-        "shading_ms": ms(median(&|s| s.shading)), "bands_ms": ms(median(&|s| s.pass)), "png_ms": ms(encode),
-        "repeat": a.repeat, "mpixels_per_s": mpix,
-    })
+    let frame_s = median(&|s| s.frame()).as_secs_f64();
+    let mpixels_per_s = (opt.width as f64 * opt.height as f64) / frame_s / 1e6;
+    let run = RenderRun {
+        scene: a.scene.display().to_string(),
+        output: a.output.display().to_string(),
+        size: (opt.width, opt.height),
+        shading: shading_summary(scene, opt),
+        options_shading: opt.shading,
+        normals: format!("{:?}", opt.normals).to_lowercase(),
+        explain_pixel: pixel,
+        stats_asked: a.stats,
+        stats: frame.stats.clone(),
+        times,
+        mpixels_per_s,
+    };
+    let asked = Asked::Render(Box::new(run));
+    Report::from_recorder::<f32>(asked, vec![], vec![], rec)
 }
 
 /// The shadings drawn: the one forced by `--shading`, else each object's
@@ -286,31 +226,6 @@ fn shading_summary(scene: &Scene, opt: &Options) -> String {
         }
     }
     seen.join(", ")
-}
-
-/// The median over the runs of one stage's time.
-type Median<'a> = dyn Fn(&dyn Fn(&Stats) -> Duration) -> Duration + 'a;
-
-fn stats_text(
-    st: &Stats,
-    runs: &[Stats],
-    shading: Shading,
-    median: &Median<'_>,
-    encode: Duration,
-    lang: crate::report::lang::Lang,
-) -> String {
-    let ms = |f: &dyn Fn(&Stats) -> Duration| median(f).as_secs_f64() * 1e3;
-    let times = crate::report::render::Times {
-        runs: runs.len(),
-        geometry: ms(&|s| s.geometry),
-        binning: ms(&|s| s.binning),
-        bands: ms(&|s| s.pass),
-        raster: ms(&|s| s.raster),
-        shading: ms(&|s| s.shading),
-        frame: ms(&|s| s.frame()),
-        png: encode.as_secs_f64() * 1e3,
-    };
-    crate::report::render::stats_text(st, &times, shading, lang)
 }
 
 fn parse_pixel(s: &str) -> Result<(u32, u32)> {

@@ -20,8 +20,8 @@
 //! ```                              # diffuse, specular (white by default)
 
 use crate::error::{Error, Result};
-use crate::input;
 use crate::input::fields::{line_col, toml_error, AngleIn, Num, Vec3In};
+use crate::input::{eval as ev, eval3 as ev3};
 use crate::msg::{ErrMsg, Msg, Thing, Twice};
 use crate::num::vec::{normalize, sub, v3, V3};
 use crate::num::Scalar;
@@ -291,14 +291,6 @@ pub struct Setup<T> {
     pub surface: Surface<T>,
     /// Whether the light came from `light = L` (the text's single light).
     pub text_light: bool,
-}
-
-fn ev<T: Scalar>(field: &str, n: &Num) -> Result<T> {
-    input::eval(field, &n.0)
-}
-
-fn ev3<T: Scalar>(field: &str, v: &Vec3In) -> Result<V3<T>> {
-    Ok(v3(ev(field, &v[0])?, ev(field, &v[1])?, ev(field, &v[2])?))
 }
 
 fn rgb<T: Scalar>(field: &str, v: &Vec3In) -> Result<Rgb<T>> {

@@ -8,6 +8,7 @@ pub mod answer;
 pub mod fields;
 pub mod lights;
 pub mod mesh;
+pub mod part;
 pub mod problem;
 pub mod scene;
 pub mod values;

@@ -258,6 +258,63 @@ impl ProblemIn {
             .collect()
     }
 
+    /// Every number the problem states, at f64 (those `solve --json`'s
+    /// `input` lists: the camera, the points, the perspective set-up with
+    /// fovy in degrees, the box and the segments' coordinates, the `[shade]`
+    /// vectors and coefficients, the lights' directions, positions and
+    /// axes); a number that does not evaluate is left out.
+    pub fn stated_numbers(&self) -> Vec<f64> {
+        let mut nums: Vec<&Num> = Vec::new();
+        let mut vecs: Vec<&Vec3In> = Vec::new();
+        if let Some(c) = &self.camera {
+            vecs.extend([&c.eye, &c.look, &c.up]);
+        }
+        let points = self.points().unwrap_or_default();
+        vecs.extend(points.iter().map(|(_, v)| v));
+        let mut out: Vec<f64> = Vec::new();
+        if let Some(per) = &self.perspective {
+            nums.extend(
+                [&per.near, &per.far, &per.aspect, &per.d]
+                    .into_iter()
+                    .flatten(),
+            );
+            out.extend(per.fovy.as_ref().and_then(|a| a.0.degrees::<f64>().ok()));
+            nums.extend(per.viewport.iter().flatten());
+        }
+        if let Some(c) = &self.clip {
+            vecs.extend([&c.min, &c.max]);
+            for s in &c.segment {
+                for end in [&s.from, &s.to] {
+                    if let PointRef::At(v) = end {
+                        vecs.push(v);
+                    }
+                }
+            }
+        }
+        if let Some(sh) = &self.shade {
+            let v = [
+                &sh.light,
+                &sh.normal,
+                &sh.view,
+                &sh.color,
+                &sh.camera,
+                &sh.position,
+            ];
+            vecs.extend(v.into_iter().flatten());
+            nums.extend(
+                [&sh.ka, &sh.kd, &sh.ks, &sh.shininess]
+                    .into_iter()
+                    .flatten(),
+            );
+            for l in &self.light {
+                vecs.extend([&l.direction, &l.position, &l.axis].into_iter().flatten());
+            }
+        }
+        nums.extend(vecs.into_iter().flat_map(|v| v.iter()));
+        out.extend(nums.iter().filter_map(|n| n.0.eval::<f64>().ok()));
+        out
+    }
+
     /// Whether the part is asked for (explicitly, or by default when the data allow it).
     pub fn asks(&self, part: &str) -> bool {
         match &self.ask {

@@ -1,25 +1,16 @@
-//! Raw text inputs (flags, file values) to validated numbers and vectors:
-//! every failure names the field.
+//! Raw text inputs (flags) to typed values (expressions, names, angles),
+//! and those evaluated at a precision: every failure names the field.
 
 use crate::error::{Error, Result};
+use crate::input::fields::{AngleIn, Num, Vec3In};
 use crate::msg::Msg;
+use crate::num::expr::components;
 use crate::num::vec::V3;
 use crate::num::{parse_expr, parse_vec3, Angle, Expr, Scalar};
-use serde_json::{json, Value};
 
 /// A number expression from the field `field`.
 pub fn expr(field: &str, text: &str) -> Result<Expr> {
     parse_expr(text).map_err(|m| Error::why(field, m.quoted(text)))
-}
-
-/// Evaluates an expression at precision `T`, naming the field on failure.
-pub fn eval<T: Scalar>(field: &str, e: &Expr) -> Result<T> {
-    e.eval::<T>().map_err(|m| Error::why(field, m))
-}
-
-/// A number from text.
-pub fn num<T: Scalar>(field: &str, text: &str) -> Result<T> {
-    eval(field, &expr(field, text)?)
 }
 
 /// Three expressions from `x,y,z` text.
@@ -27,24 +18,36 @@ pub fn vec3_expr(field: &str, text: &str) -> Result<[Expr; 3]> {
     parse_vec3(text).map_err(|m| Error::why(field, m.quoted(text)))
 }
 
-/// Evaluates three expressions.
-pub fn eval3<T: Scalar>(field: &str, e: &[Expr; 3]) -> Result<V3<T>> {
+/// A number flag.
+pub fn num(field: &str, text: &str) -> Result<Num> {
+    expr(field, text).map(Num)
+}
+
+/// A vector flag `X,Y,Z`.
+pub fn vec3(field: &str, text: &str) -> Result<Vec3In> {
+    let [x, y, z] = vec3_expr(field, text)?;
+    Ok(Vec3In([Num(x), Num(y), Num(z)]))
+}
+
+/// An angle flag (degrees unless `rad` follows).
+pub fn angle(field: &str, text: &str) -> Result<AngleIn> {
+    Angle::parse(text)
+        .map(AngleIn)
+        .map_err(|m| Error::why(field, m.quoted(text)))
+}
+
+/// Evaluates a number at precision `T`, naming the field on failure.
+pub fn eval<T: Scalar>(field: &str, n: &Num) -> Result<T> {
+    n.0.eval::<T>().map_err(|m| Error::why(field, m))
+}
+
+/// Evaluates a vector.
+pub fn eval3<T: Scalar>(field: &str, v: &Vec3In) -> Result<V3<T>> {
     Ok(V3::new(
-        eval(field, &e[0])?,
-        eval(field, &e[1])?,
-        eval(field, &e[2])?,
+        eval(field, &v[0])?,
+        eval(field, &v[1])?,
+        eval(field, &v[2])?,
     ))
-}
-
-/// A vector from `x,y,z` text.
-pub fn vec3<T: Scalar>(field: &str, text: &str) -> Result<V3<T>> {
-    eval3(field, &vec3_expr(field, text)?)
-}
-
-/// An angle (degrees unless `rad` follows) in degrees at precision `T`.
-pub fn angle_deg<T: Scalar>(field: &str, text: &str) -> Result<T> {
-    let a = Angle::parse(text).map_err(|m| Error::why(field, m.quoted(text)))?;
-    a.degrees::<T>().map_err(|m| Error::why(field, m))
 }
 
 /// `NAME=rest`, with a name of letters, digits, `_` or `'`.
@@ -63,48 +66,44 @@ pub fn named<'a>(field: &str, text: &'a str) -> Result<(&'a str, &'a str)> {
     Ok((name, rest))
 }
 
-/// `NAME=X,Y,Z` points, in the order given, names unique.
-pub fn points3<T: Scalar>(field: &str, items: &[String]) -> Result<Vec<(String, V3<T>)>> {
-    let mut out: Vec<(String, V3<T>)> = Vec::new();
+/// `NAME=X,Y,Z` points of flag `field`, in the order given, names unique.
+pub fn points3(field: &str, items: &[String]) -> Result<Vec<(String, Vec3In)>> {
+    let mut out: Vec<(String, Vec3In)> = Vec::new();
     for it in items {
         let (name, rest) = named(field, it)?;
         if out.iter().any(|(n, _)| n == name) {
             return Err(Error::said(field, Msg::ErrPointTwice(name.to_string())));
         }
-        out.push((name.to_string(), vec3(&format!("{field} {name}"), rest)?));
+        out.push((name.to_string(), vec3(&point_field(field, name), rest)?));
     }
     Ok(out)
 }
 
-/// `NAME=X,Y` points.
-pub fn points2<T: Scalar>(field: &str, items: &[String]) -> Result<Vec<(String, (T, T))>> {
-    let mut out: Vec<(String, (T, T))> = Vec::new();
+/// `NAME=X,Y` points of flag `field` (also `NAME=(X; Y)` with decimal
+/// commas, as a vector flag is written).
+pub fn points2(field: &str, items: &[String]) -> Result<Vec<(String, [Num; 2])>> {
+    let mut out = Vec::new();
     for it in items {
         let (name, rest) = named(field, it)?;
-        let parts = crate::num::expr::split_top_level(crate::num::expr::strip_outer(rest));
-        if parts.len() != 2 {
+        let parts = components(rest);
+        let [x, y] = parts[..] else {
             return Err(Error::said(field, Msg::ErrNamedPair(it.to_string())));
-        }
-        let f = format!("{field} {name}");
-        out.push((name.to_string(), (num(&f, parts[0])?, num(&f, parts[1])?)));
+        };
+        let f = point_field(field, name);
+        out.push((name.to_string(), [num(&f, x.text)?, num(&f, y.text)?]));
     }
     Ok(out)
+}
+
+/// The field of point `name` given by flag `field` (`point A`).
+pub fn point_field(field: &str, name: &str) -> String {
+    format!("{field} {name}")
 }
 
 /// `WxH` (a viewport size in pixels).
-pub fn size<T: Scalar>(field: &str, text: &str) -> Result<(T, T)> {
+pub fn size(field: &str, text: &str) -> Result<[Num; 2]> {
     let (w, h) = text
         .split_once(['x', 'X', '×'])
         .ok_or_else(|| Error::said(field, Msg::ErrSize(text.to_string())))?;
-    Ok((num(field, w)?, num(field, h)?))
-}
-
-/// A number as input JSON, printed as its own precision prints it.
-pub fn jnum<T: Scalar>(x: &T) -> Value {
-    json!(x.shown().value)
-}
-
-/// A vector as input JSON.
-pub fn json3<T: Scalar>(a: &V3<T>) -> Value {
-    json!([jnum(&a[0]), jnum(&a[1]), jnum(&a[2])])
+    Ok([num(field, w)?, num(field, h)?])
 }

@@ -276,11 +276,6 @@ pub fn components(text: &str) -> Vec<Part<'_>> {
         .collect()
 }
 
-/// Splits on commas that are not inside parentheses or brackets.
-pub fn split_top_level(text: &str) -> Vec<&str> {
-    split_at(text, ',').into_iter().map(|p| p.text).collect()
-}
-
 /// Splits on `sep` outside parentheses and brackets, keeping where each part
 /// starts (in characters).
 fn split_at(text: &str, sep: char) -> Vec<Part<'_>> {

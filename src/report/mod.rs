@@ -10,6 +10,7 @@ pub mod escape;
 pub mod figure;
 pub mod gift;
 pub mod html;
+pub mod json;
 pub mod lang;
 pub mod latex;
 pub mod mathml;
@@ -23,7 +24,8 @@ pub mod words;
 
 use crate::msg::{Msg, Printed};
 use crate::num::Shown;
-use crate::stages::trace::{Compared, Comparison, Report, Step, Subst, Val};
+use crate::stages::trace::{Step, Subst, Val};
+use crate::tutor::solution::{Asked, Compared, Comparison, Report};
 use comfy_table::{presets, Table};
 use lang::{tr, Lang};
 use serde_json::{json, Map, Value};
@@ -315,17 +317,25 @@ impl Style {
 }
 
 impl Report {
+    /// The named results the answer shows: a render's summary, else the
+    /// results.
+    pub fn answer(&self) -> std::borrow::Cow<'_, [(String, Val)]> {
+        match &self.asked {
+            Asked::Render(run) => std::borrow::Cow::Owned(render::summary(run)),
+            _ => std::borrow::Cow::Borrowed(&self.result),
+        }
+    }
+
     /// The problem `solve` worked, as its file gives it in the language it
     /// was read in: the title, the statement, and what is asked (the
     /// parts answered).
     pub fn posed(&self) -> Option<(String, Option<String>, Msg)> {
-        if self.command != "solve" {
+        let Asked::File(p) = &self.asked else {
             return None;
-        }
-        let text = |k: &str| self.input.get(k).and_then(|t| t.as_str());
-        let statement = text("statement").map(|s| s.trim().to_string());
+        };
+        let statement = p.statement.as_ref().map(|s| s.trim().to_string());
         let parts = self.result.iter().map(|(k, _)| k.clone()).collect();
-        Some((text("title")?.to_string(), statement, Msg::Asked(parts)))
+        Some((p.title.clone(), statement, Msg::Asked(parts)))
     }
 
     /// The worked solution and answer as text, after the problem.
@@ -351,9 +361,9 @@ impl Report {
             out.push_str(&style.step_body(s));
         }
         out.push_str(&format!("\n{}\n", style.tr("Answer", "Jawaban")));
-        for (k, v) in &self.result {
-            let named = match self.command.as_str() {
-                "render" => render::label(k, style.lang),
+        for (k, v) in self.answer().iter() {
+            let named = match &self.asked {
+                Asked::Render(_) => render::label(k, style.lang),
                 _ => words::labels::answer_key(k, None, style.lang),
             };
             push_answer(&mut out, style, "  ", (k, &named), v);
@@ -372,14 +382,15 @@ impl Report {
     /// notes, warnings) depend on `lang`.
     pub fn to_json(&self, lang: Lang) -> Value {
         let style = Style::new(4, true, lang);
+        let answer = self.answer();
         let result = Value::Object(
-            self.result
+            answer
                 .iter()
                 .map(|(k, v)| (k.clone(), value_json(v)))
                 .collect(),
         );
         let exact = Value::Object(
-            self.result
+            answer
                 .iter()
                 .map(|(k, v)| (k.clone(), exact_json(v)))
                 .collect(),
@@ -387,9 +398,9 @@ impl Report {
         let steps: Vec<Value> = self.steps.iter().map(|s| step_json(s, lang)).collect();
         let warnings: Vec<String> = self.warnings.iter().map(|w| style.w(w)).collect();
         let mut obj = json!({
-            "command": self.command,
+            "command": self.command(),
             "precision": self.precision,
-            "input": self.input,
+            "input": json::input(self),
             "result": result,
             "exact": exact,
             "steps": steps,
@@ -399,8 +410,8 @@ impl Report {
         if !notes.is_empty() {
             obj["notes"] = json!(notes);
         }
-        for (k, v) in &self.extra {
-            obj[k] = v.clone();
+        if let Asked::Render(run) = &self.asked {
+            obj["stats"] = render::stats_json(run);
         }
         if !self.source_notes.is_empty() {
             obj["source_notes"] = json!(self.source_notes);
@@ -411,10 +422,18 @@ impl Report {
         obj
     }
 
+    /// The report's own notes after the answer: a render's `--stats`.
+    pub fn notes(&self, style: &Style) -> Vec<String> {
+        match &self.asked {
+            Asked::Render(run) if run.stats_asked => vec![render::stats_text(run, style.lang)],
+            _ => vec![],
+        }
+    }
+
     /// The notes after the answer: the report's own, the comparison with
     /// the printed answers, the notes on the source.
     fn all_notes(&self, style: &Style) -> Vec<String> {
-        let mut notes = self.notes.clone();
+        let mut notes = self.notes(style);
         notes.extend(
             self.comparison
                 .as_ref()

@@ -8,7 +8,7 @@ use super::figure::xml_escape;
 use super::html::{answers, figure, heading, page};
 use super::{mathml, Report, Style};
 use crate::msg::{Msg, Printed};
-use crate::stages::trace::{Compared, Comparison};
+use crate::tutor::solution::{Compared, Comparison};
 
 /// The drawing's part (`view`, `clip-2`, …) a section of `solve` shows.
 fn part_of(section: &Msg) -> Option<String> {
@@ -68,9 +68,9 @@ pub fn report_page(
     };
     body.push_str(&Doc::Html.steps_with(r, st, &mut under));
     body.push_str(&heading(1, st.tr("Answer", "Jawaban")));
-    body.push_str(&answers(st, &r.result));
-    for n in &r.notes {
-        body.push_str(&format!("<p class=\"note\">{}</p>\n", xml_escape(n)));
+    body.push_str(&answers(st, &r.answer()));
+    for n in r.notes(st) {
+        body.push_str(&format!("<p class=\"note\">{}</p>\n", xml_escape(&n)));
     }
     if let Some(c) = &r.comparison {
         body.push_str(&comparison(c, st));

@@ -1,30 +1,56 @@
-//! The words of `render`: the summary's labels and the `--stats` table, in
-//! English and in Bahasa Indonesia. The summary's JSON keys stay English
-//! (they are the same in every language); only the text shows these labels.
+//! The report of `render`: the summary (its JSON keys stay English, the
+//! same in every language; only the text shows the labels in Bahasa
+//! Indonesia), the `--stats` table and the JSON's `stats`.
 
 use super::lang::{decimal, Lang};
 use crate::input::scene::Shading;
 use crate::render::Stats;
+use crate::stages::trace::Val;
+use crate::tutor::solution::{RenderRun, Times};
+use serde_json::{json, Value};
 
-/// The median times of a frame's stages, in milliseconds, over `runs` runs.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Times {
-    /// How many frames were rendered (`--repeat`).
-    pub runs: usize,
-    /// Transforms, culling, clipping, set-up.
-    pub geometry: f64,
-    /// Gathering the triangles of each band.
-    pub binning: f64,
-    /// The band pass (raster and shading, in parallel).
-    pub bands: f64,
-    /// Thread time: raster.
-    pub raster: f64,
-    /// Thread time: shading.
-    pub shading: f64,
-    /// The whole frame.
-    pub frame: f64,
-    /// PNG encoding.
-    pub png: f64,
+/// The summary: image, size, shading, counts and the frame time (frame,
+/// PNG encoding, Mpixels/s), keyed as the JSON's `result`.
+pub fn summary(run: &RenderRun) -> Vec<(String, Val)> {
+    let count = |n: u64| Val::Num(crate::num::Scalar::shown(&(n as f64)));
+    let t = &run.times;
+    let label = if t.runs > 1 {
+        format!("frame time (median of {})", t.runs)
+    } else {
+        "frame time".to_string()
+    };
+    let time = Val::said(crate::msg::Said::FrameTime(
+        format!("{:.2}", t.frame),
+        format!("{:.1}", run.mpixels_per_s),
+        format!("{:.2}", t.png),
+    ));
+    vec![
+        ("image".to_string(), Val::text(run.output.clone())),
+        (
+            "size".to_string(),
+            Val::text(format!("{}x{}", run.size.0, run.size.1)),
+        ),
+        ("shading".to_string(), Val::text(run.shading.clone())),
+        ("triangles drawn".to_string(), count(run.stats.drawn)),
+        ("pixels shaded".to_string(), count(run.stats.pixels_shaded)),
+        (label, time),
+    ]
+}
+
+/// The JSON's `stats`: the counters and the median times.
+pub fn stats_json(run: &RenderRun) -> Value {
+    let (st, t) = (&run.stats, &run.times);
+    json!({
+        "triangles_in": st.tris_in, "culled": st.culled, "rejected": st.rejected,
+        "objects_rejected": st.objects_rejected, "objects_inside": st.objects_inside,
+        "clipped": st.clipped, "drawn": st.drawn, "no_pixels": st.no_pixels,
+        "pixels_shaded": st.pixels_shaded, "lighting_evaluations": st.lighting_evals,
+        "lights_skipped": st.lights_skipped, "specular_skipped": st.specular_skipped,
+        "frame_ms": t.frame, "geometry_ms": t.geometry,
+        "binning_ms": t.binning, "raster_ms": t.raster,
+        "shading_ms": t.shading, "bands_ms": t.bands, "png_ms": t.png,
+        "repeat": t.runs, "mpixels_per_s": run.mpixels_per_s,
+    })
 }
 
 /// The text label of a render summary key (its JSON key) in `lang`.
@@ -52,7 +78,8 @@ pub fn label(key: &str, lang: Lang) -> String {
 
 /// `--stats`: counts of the pipeline's work and the median time of each
 /// stage, one line each.
-pub fn stats_text(st: &Stats, t: &Times, shading: Shading, lang: Lang) -> String {
+pub fn stats_text(run: &RenderRun, lang: Lang) -> String {
+    let (st, t, shading) = (&run.stats, &run.times, run.options_shading);
     let id = lang == Lang::Id;
     let width = if id { 42 } else { 34 };
     let mut s = format!("{}\n", if id { "Statistik" } else { "Stats" });

@@ -8,7 +8,7 @@ use crate::report::words::words;
 use crate::report::{exact_json, value_json, Style};
 use crate::stages::trace::Val;
 use crate::tutor::generate::{key_lines, topics_name, Difficulty, Generated, Topic};
-use crate::tutor::solve::lookup;
+use crate::tutor::solution::lookup;
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};

@@ -70,8 +70,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         | Msg::ErrCopNeedsPlane
         | Msg::ErrPlaneNeedsCop
         | Msg::ErrChooseProjection
-        | Msg::ErrPointNeedsViewport
-        | Msg::ErrFar(..) => flag_error(m, id),
+        | Msg::ErrPointNeedsViewport => flag_error(m, id),
         Msg::Parts(_) | Msg::Expected(_) | Msg::Unreadable(_) | Msg::WithinPct(_) => {
             judged(m, lang)
         }
@@ -794,14 +793,6 @@ fn flag_error(m: &Msg, id: bool) -> String {
             "--point needs --viewport WxH to map points to pixels",
             "--point memerlukan --viewport WxH untuk memetakan titik ke piksel",
         ),
-        Msg::ErrFar(near, far) => f(
-            format!("must be greater than near = {near}, got {far}"),
-            format!(
-                "harus lebih besar daripada near = {}, diberikan {}",
-                near.replace('.', ","),
-                far.replace('.', ",")
-            ),
-        ),
         _ => String::new(),
     }
 }
@@ -1025,7 +1016,6 @@ mod tests {
             Msg::ErrPlaneNeedsCop,
             Msg::ErrChooseProjection,
             Msg::ErrPointNeedsViewport,
-            Msg::ErrFar("1".into(), "0.5".into()),
         ];
         for i in 0..6 {
             v.push(Msg::Intersection(i, "x = xmin".into()));
@@ -1329,7 +1319,6 @@ mod tests {
             | ErrPlaneNeedsCop
             | ErrChooseProjection
             | ErrPointNeedsViewport
-            | ErrFar(..)
             | DrawnTitle(_)
             | Pixel(_)
             | Statement(_)

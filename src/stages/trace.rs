@@ -6,9 +6,8 @@
 
 pub use crate::msg::Msg;
 use crate::num::vec::V3;
-use crate::num::{Precision, Scalar, Shown};
+use crate::num::{Scalar, Shown};
 use nalgebra::Matrix4;
-use serde_json::{Map, Value};
 
 /// A value inside a step or a result.
 #[derive(Clone, Debug, PartialEq)]
@@ -229,122 +228,6 @@ impl Trace for Recorder {
         let w = f();
         if !self.warnings.contains(&w) {
             self.warnings.push(w);
-        }
-    }
-}
-
-/// Everything a command produced.
-#[derive(Clone, Debug)]
-pub struct Report {
-    /// The subcommand.
-    pub command: String,
-    /// The parsed inputs, as JSON.
-    pub input: Value,
-    /// The named results.
-    pub result: Vec<(String, Val)>,
-    /// The worked steps.
-    pub steps: Vec<Step>,
-    /// Warnings (also on stderr).
-    pub warnings: Vec<Msg>,
-    /// Extra lines printed after the answer in text mode (e.g. comparison
-    /// with the text's printed answers), and given as `"notes"` in JSON.
-    pub notes: Vec<String>,
-    /// The precision used.
-    pub precision: Precision,
-    /// Further top-level JSON keys.
-    pub extra: Map<String, Value>,
-    /// The answers printed in the source, compared with the results (`solve`).
-    pub comparison: Option<Comparison>,
-    /// Notes on the source (`solve`: the problem file's `source_notes`).
-    pub source_notes: Vec<String>,
-}
-
-/// The answers a source printed, compared with the computed ones.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Comparison {
-    /// The source, as the problem file names it.
-    pub source: Option<String>,
-    /// One row per printed answer, in the file's order.
-    pub rows: Vec<Compared>,
-}
-
-/// One printed answer against the computed value.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Compared {
-    /// The result key (`project.points.B`).
-    pub key: String,
-    /// The printed value, as the source wrote it.
-    pub printed: String,
-    /// The computed value (`None`: not computed in this run).
-    pub computed: Option<Val>,
-    /// Whether they agree (`None`: not comparable, or not computed).
-    pub agrees: Option<bool>,
-    /// What kind of difference it is, where the problem file says.
-    pub kind: Option<crate::msg::Erratum>,
-    /// Why the source differs, where the problem file says.
-    pub why: Option<crate::msg::Msg>,
-}
-
-/// The key (`window.pixels.A`) of the first number under `v` that is NaN
-/// or infinite, if any.
-fn first_non_finite(key: &str, v: &Val) -> Option<String> {
-    first_not_finite(key, v, false)
-}
-
-/// [`first_non_finite`]; with `exact_ok`, a value with an exact form
-/// passes even beyond the doubles.
-fn first_not_finite(key: &str, v: &Val, exact_ok: bool) -> Option<String> {
-    match v {
-        Val::Num(n) if !(n.value.is_finite() || exact_ok && n.pretty.is_some()) => {
-            Some(key.to_string())
-        }
-        Val::List(items) => items
-            .iter()
-            .find_map(|x| first_not_finite(key, x, exact_ok)),
-        Val::Map(m) => m
-            .iter()
-            .find_map(|(k, x)| first_not_finite(&format!("{key}.{k}"), x, exact_ok)),
-        _ => None,
-    }
-}
-
-impl Report {
-    /// The key of the first result that is not a finite number (NaN or ±∞,
-    /// from an overflow or underflow of the floats): such a result is never
-    /// printed as an answer.
-    pub fn non_finite_result(&self) -> Option<String> {
-        self.result.iter().find_map(|(k, v)| first_non_finite(k, v))
-    }
-
-    /// The name of the first value shown in a step that is not a finite
-    /// number and not exact either (an exact value beyond the doubles is
-    /// shown by its exact form): NaN or ±∞ from the floats.
-    pub fn non_finite_step_value(&self) -> Option<String> {
-        self.steps
-            .iter()
-            .flat_map(|s| s.values.iter().chain(&s.result))
-            .find_map(|(k, v)| first_not_finite(k, v, true))
-    }
-
-    /// The report of a finished recorder: its steps and warnings, the named
-    /// results, at the precision `T` ran.
-    pub fn from_recorder<T: Scalar>(
-        command: &str,
-        input: Value,
-        result: Vec<(String, Val)>,
-        rec: Recorder,
-    ) -> Report {
-        Report {
-            command: command.into(),
-            input,
-            result,
-            steps: rec.steps,
-            warnings: rec.warnings,
-            notes: vec![],
-            precision: T::PRECISION,
-            extra: Map::new(),
-            comparison: None,
-            source_notes: vec![],
         }
     }
 }

@@ -1,7 +1,7 @@
 //! The catalog of known mistakes, in one place. Each entry recomputes a
 //! problem the wrong way — by running the real stages on altered inputs
 //! (`altered`), or with one stage result altered between stages
-//! ([`solve::Hooks`]), or with one documented change to the result tree —
+//! ([`run::Hooks`](crate::tutor::run::Hooks)), or with one documented change to the result tree —
 //! so that `grafika check` can say which mistake reproduces a wrong answer.
 //! No pipeline math is repeated here.
 //!
@@ -17,10 +17,11 @@ use crate::stages::camera::Basis;
 use crate::stages::lighting::{LightKind, Rules};
 use crate::stages::trace::Val;
 use crate::stages::window::Window;
-use crate::tutor::solve::{self, Hooks};
+use crate::tutor::run::Hooks;
+use crate::tutor::solution::lookup;
+use crate::tutor::solve;
 
-/// A result tree, as `solve` returns it.
-pub type Tree = Vec<(String, Val)>;
+pub use crate::tutor::solution::Tree;
 
 /// One known mistake.
 pub struct Mistake {
@@ -439,7 +440,7 @@ fn altered_points(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<T
     // the eye coordinates of every point (the view part alone projects none)
     q.ask = Some(vec!["view".into()]);
     if let (Some(all), Some(Val::Map(eye))) = (solved(&q), find_key(&mut t, "view.points")) {
-        if let Some(Val::Map(every)) = solve::lookup(&all, "view.points") {
+        if let Some(Val::Map(every)) = lookup(&all, "view.points") {
             for (name, e) in every {
                 if !eye.iter().any(|(k, _)| k == name) {
                     eye.push((name.clone(), e.clone()));
@@ -628,7 +629,7 @@ mod tests {
         .unwrap();
         let m = find("fovy_not_halved").unwrap();
         let t = &(m.apply)(&p).unwrap()[0];
-        let Some(Val::Num(top)) = solve::lookup(t, "window.top") else {
+        let Some(Val::Num(top)) = lookup(t, "window.top") else {
             panic!()
         };
         assert!((top.value - 3f64.sqrt()).abs() < 1e-12);
@@ -639,14 +640,14 @@ mod tests {
         )
         .unwrap();
         let t = &(m.apply)(&p120).expect("fovy_not_halved applies over 90°")[0];
-        let Some(Val::Num(top)) = solve::lookup(t, "window.top") else {
+        let Some(Val::Num(top)) = lookup(t, "window.top") else {
             panic!()
         };
         assert!((top.value + 3f64.sqrt()).abs() < 1e-12, "{}", top.value);
         // degrees as radians: tan(30 rad) = −6.405331196646276
         let m = find("degrees_as_radians").unwrap();
         let t = &(m.apply)(&p).unwrap()[0];
-        let Some(Val::Num(top)) = solve::lookup(t, "window.top") else {
+        let Some(Val::Num(top)) = lookup(t, "window.top") else {
             panic!()
         };
         assert!((top.value - 30f64.tan()).abs() < 1e-9, "{}", top.value);

@@ -36,17 +36,6 @@ pub fn window_result<T: Scalar>(w: &window::Window<T>, prefix: &str) -> Vec<(Str
     .collect()
 }
 
-/// Clips one segment by outcodes and by Liang–Barsky, records whether they
-/// agree, and returns docs/spec.md's clip result keys.
-pub fn clip_run<T: Scalar>(
-    b: &ClipBox<T>,
-    p0: &V3<T>,
-    p1: &V3<T>,
-    rec: &mut Recorder,
-) -> Vec<(String, Val)> {
-    clip_result(&clip_checked(b, p0, p1, rec))
-}
-
 /// Clips one segment by outcodes and by Liang–Barsky and records whether
 /// they agree; the outcodes' clipping.
 pub fn clip_checked<T: Scalar>(

@@ -26,7 +26,7 @@ use crate::stages::trace::{Step, Val};
 use crate::tutor::check::{agrees, Marker, Settings, Verdict, FOLLOW_THROUGH};
 use crate::tutor::diagnose::Mistake;
 use crate::tutor::generate::{Difficulty, Topic};
-use crate::tutor::solve::lookup;
+use crate::tutor::solution::lookup;
 
 /// One value the student is asked for.
 #[derive(Clone, Debug)]
@@ -84,7 +84,7 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
             })
         })
         .collect();
-    let stated = stated_numbers(&marker.input);
+    let stated = p.stated_numbers();
     Ok(Plan {
         title: p.title.clone(),
         statement: p.statement.clone(),
@@ -93,22 +93,6 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
         marker,
         stated,
     })
-}
-
-/// The numbers a problem states: every number of its inputs (as
-/// `solve --json` gives them), which a hint may show whatever they equal.
-fn stated_numbers(input: &serde_json::Value) -> Vec<f64> {
-    fn collect(v: &serde_json::Value, out: &mut Vec<f64>) {
-        match v {
-            serde_json::Value::Number(n) => out.extend(n.as_f64()),
-            serde_json::Value::Array(a) => a.iter().for_each(|x| collect(x, out)),
-            serde_json::Value::Object(o) => o.values().for_each(|x| collect(x, out)),
-            _ => {}
-        }
-    }
-    let mut out = Vec::new();
-    collect(input, &mut out);
-    out
 }
 
 /// The worked step that computes a key.

@@ -1,82 +1,37 @@
-//! `grafika solve`: a whole problem file through the text's steps —
-//! modeling, viewing transformation, projection onto the near plane, window
-//! and clipping, viewport — and a comparison with the answers the source
-//! printed.
+//! The solver: a problem ([`solve_problem`]) is a calculator command's one
+//! part ([`crate::tutor::part`]) or a whole problem file, solved here
+//! through the text's steps — modeling, viewing transformation, projection
+//! onto the near plane, window and clipping, viewport — with a comparison
+//! with the answers the source printed. Both run their parts by the same
+//! functions ([`crate::tutor::run`]).
 
 use crate::error::{Error, Result};
-use crate::input;
-use crate::input::fields::{Num, Vec3In};
+use crate::input::part::Problem;
 use crate::input::problem::{PointRef, ProblemIn};
-use crate::msg::{Bound, ErrMsg, Msg};
+use crate::input::{eval, eval3};
+use crate::msg::{ErrMsg, Msg};
 use crate::num::format::fmt_dec;
 use crate::num::vec::V3;
 use crate::num::{Expr, Scalar};
-use crate::stages::camera::{self, Camera};
+use crate::stages::camera::Camera;
 use crate::stages::clip::ClipBox;
-use crate::stages::projection::{self, Projection};
-use crate::stages::trace::{Compared, Comparison, Recorder, Report, Step, Subst, Trace, Val};
+use crate::stages::projection::Projection;
+use crate::stages::trace::{Recorder, Step, Subst, Trace, Val};
 use crate::stages::window;
-use crate::tutor::follow;
-use crate::tutor::keys::{basis_result, clip_checked, clip_result, shade_run, window_result};
-use serde_json::{json, Value};
-use std::path::Path;
+use crate::tutor::run::{
+    basis_run, clip_run, eye_run, light_run, pixels, points_val, project_run, view_result,
+    window_run, Hooks, Named,
+};
+use crate::tutor::solution::{
+    at, lookup, p3, Asked, CameraAt, Compared, Comparison, Given, Report, ShadeAt, Tree, WindowAt,
+};
 
-/// Reads and solves a problem file at precision `T`.
-pub fn solve_file<T: Scalar>(path: &Path) -> Result<Report> {
-    let p = ProblemIn::read(path)?;
-    solve::<T>(&p)
-}
-
-fn eval<T: Scalar>(field: &str, n: &Num) -> Result<T> {
-    input::eval(field, &n.0)
-}
-
-fn eval3<T: Scalar>(field: &str, v: &Vec3In) -> Result<V3<T>> {
-    Ok(V3::new(
-        eval(field, &v[0])?,
-        eval(field, &v[1])?,
-        eval(field, &v[2])?,
-    ))
-}
-
-/// An alteration of the lighting set-up.
-pub type SetupHook<T> = dyn Fn(&mut crate::input::lights::Setup<T>);
-
-/// Alterations applied to stage results between stages. Solving uses none;
-/// the mistake catalog (`diagnose`) sets one to re-run the real stages with
-/// one step done the wrong way, instead of copying the pipeline's math;
-/// follow-through gives the student's own values for the steps after them
-/// to go on from ([`follow`]).
-pub struct Hooks<'a, T> {
-    /// Applied to the camera basis before it is used.
-    pub basis: fn(&mut camera::Basis<T>),
-    /// Applied to the near-plane window before it is used (given fovy in degrees).
-    pub window: fn(&mut window::Window<T>, &T),
-    /// The lighting stage's rules (the text's by default).
-    pub shade: crate::stages::lighting::Rules<T>,
-    /// Applied to the lighting set-up (its lights, its surface) before it is used.
-    pub setup: Option<&'a SetupHook<T>>,
-    /// Values given in place of the stages' own, by result key
-    /// (follow-through): the steps after them go on from them.
-    pub given: Option<&'a follow::Lookup<'a, T>>,
-}
-
-impl<T: Scalar> Default for Hooks<'_, T> {
-    fn default() -> Self {
-        Hooks {
-            basis: |_| {},
-            window: |_, _| {},
-            shade: crate::stages::lighting::Rules::default(),
-            setup: None,
-            given: None,
-        }
-    }
-}
-
-impl<'a, T: Scalar> Hooks<'a, T> {
-    /// The values given, if any.
-    fn givens(&self) -> Option<follow::Givens<'a, T>> {
-        self.given.map(follow::Givens)
+/// Solves a problem at precision `T`: a calculator command's one part or
+/// a problem file's parts.
+pub fn solve_problem<T: Scalar>(p: &Problem) -> Result<Report> {
+    match p {
+        Problem::Part(part) => crate::tutor::part::solve_part::<T>(part),
+        Problem::File(file) => solve::<T>(file),
     }
 }
 
@@ -87,26 +42,27 @@ pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
 
 /// Solves a parsed problem at precision `T`, with stage results altered by `hooks`.
 pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> {
-    let mut rec = Recorder::new();
-    let mut result: Vec<(String, Val)> = Vec::new();
+    let mut out = Out::default();
+    let out = &mut out;
     let points: Vec<(String, V3<T>)> = p
         .points()?
         .iter()
         .map(|(n, v)| Ok((n.clone(), eval3(&format!("points.{n}"), v)?)))
         .collect::<Result<_>>()?;
-    let eye_pts = view_part(p, hooks, &points, &mut rec, &mut result)?;
+    let eye_pts = view_part(p, hooks, &points, out)?;
     let near: Option<T> = p
         .perspective
         .as_ref()
         .and_then(|x| x.near.as_ref())
         .map(|n| eval("perspective.near", n))
         .transpose()?;
-    let projected = project_part(p, hooks, &eye_pts, near.as_ref(), &mut rec, &mut result)?;
+    let projected = project_part(p, hooks, &eye_pts, near.as_ref(), out)?;
     let eyes = (&eye_pts[..], &projected[..]);
-    let win = window_part(p, hooks, eyes, near.as_ref(), &mut rec, &mut result)?;
-    viewport_part(p, win.as_ref(), &projected, &mut rec, &mut result)?;
-    clip_part(p, hooks, &points, &mut rec, &mut result)?;
-    shade_part(p, hooks, &mut rec, &mut result)?;
+    let win = window_part(p, hooks, eyes, near.as_ref(), out)?;
+    viewport_part(p, win.as_ref(), &projected, out)?;
+    clip_part(p, hooks, &points, out)?;
+    shade_part(p, hooks, out)?;
+    let Out { rec, result, parts } = std::mem::take(out);
     if result.is_empty() {
         return Err(Error::why("ask", ErrMsg::NothingToSolve));
     }
@@ -118,18 +74,19 @@ pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> 
         _ => 1e-9,
     };
     let comparison = compare_printed(p, &result, rel);
-    let mut report = Report::from_recorder::<T>("solve", input_json(p), result, rec);
+    let asked = Asked::File(Box::new(p.clone()));
+    let mut report = Report::from_recorder::<T>(asked, parts, result, rec);
     report.comparison = comparison;
     report.source_notes = p.source_notes.clone();
     Ok(report)
 }
 
-/// A named point.
-type Named<T> = (String, V3<T>);
-
-/// Named points as a result map.
-fn points_val<T: Scalar>(pts: &[(String, V3<T>)]) -> Val {
-    Val::Map(pts.iter().map(|(n, e)| (n.clone(), Val::vec3(e))).collect())
+/// Where the parts write: the steps, the named results, what each part was given.
+#[derive(Default)]
+struct Out {
+    rec: Recorder,
+    result: Tree,
+    parts: Vec<Given>,
 }
 
 /// Steps 1 and 2, modeling and viewing transformation: the basis, the view
@@ -138,9 +95,9 @@ fn view_part<T: Scalar>(
     p: &ProblemIn,
     hooks: &Hooks<T>,
     points: &[(String, V3<T>)],
-    rec: &mut Recorder,
-    result: &mut Vec<(String, Val)>,
+    out: &mut Out,
 ) -> Result<Vec<(String, V3<T>)>> {
+    let Out { rec, result, parts } = out;
     let want_view = p.asks("view") || p.asks("project") || p.asks("viewport");
     let c = match (want_view, &p.camera) {
         (true, Some(c)) => c,
@@ -157,25 +114,12 @@ fn view_part<T: Scalar>(
     rec.section(Msg::SecModeling);
     rec.step(|| Step::new(Msg::NothingToDo, "").note(Msg::AlreadyWorld));
     rec.section(Msg::SecViewing);
-    let mut b = camera::basis(&cam, rec).map_err(camera_field)?;
-    (hooks.basis)(&mut b);
-    if let Some(g) = hooks.givens() {
-        follow::basis(g, &cam, &mut b);
-    }
-    let m = camera::view_matrix(&b, &cam.pe, rec).map_err(camera_field)?;
-    let mut eye_pts = Vec::new();
-    for (n, q) in points {
-        let e = camera::to_eye(&b, &cam.pe, n, q, rec)?;
-        let given = hooks
-            .givens()
-            .and_then(|g| g.vec3(&format!("view.points.{n}")));
-        eye_pts.push((n.clone(), given.unwrap_or(e)));
-    }
+    let b = basis_run(&cam, hooks, rec).map_err(camera_field)?;
+    let (m, eye_pts) = eye_run(&b, &cam, points, (hooks, camera_field), rec)?;
     if p.asks("view") {
-        let mut r = basis_result(&b);
-        r.push(("matrix".into(), Val::mat4(&m)));
-        r.push(("points".into(), points_val(&eye_pts)));
-        result.push(("view".into(), Val::Map(r)));
+        result.push(("view".into(), Val::Map(view_result(&b, &m, &eye_pts))));
+        let world = points.iter().map(|(n, q)| (n.clone(), p3(q))).collect();
+        parts.push(Given::View(CameraAt::of(&cam), world));
     }
     Ok(eye_pts)
 }
@@ -187,9 +131,9 @@ fn project_part<T: Scalar>(
     hooks: &Hooks<T>,
     eye_pts: &[(String, V3<T>)],
     near: Option<&T>,
-    rec: &mut Recorder,
-    result: &mut Vec<(String, Val)>,
+    out: &mut Out,
 ) -> Result<Vec<(String, V3<T>)>> {
+    let Out { rec, result, parts } = out;
     if !(p.asks("project") || p.asks("viewport")) || eye_pts.is_empty() {
         return Ok(vec![]);
     }
@@ -209,17 +153,18 @@ fn project_part<T: Scalar>(
     });
     let proj = Projection::Plane { d };
     proj.validate().map_err(|e| e.in_field("perspective.d"))?;
-    let mut projected = Vec::new();
-    for (n, e) in eye_pts {
-        let q = projection::project(&proj, n, e, rec)?;
-        let given = hooks
-            .givens()
-            .and_then(|g| g.vec3(&format!("project.points.{n}")));
-        projected.push((n.clone(), given.unwrap_or(q)));
-    }
+    let projected = project_run(&proj, eye_pts, hooks, rec)?;
     if p.asks("project") {
         let r = vec![("points".into(), points_val(&projected))];
         result.push(("project".into(), Val::Map(r)));
+        parts.push(Given::Project {
+            projection: Given::projection(&proj),
+            points: eye_pts
+                .iter()
+                .map(|(n, e)| (n.clone(), Val::vec3(e)))
+                .collect(),
+            chained: true,
+        });
     }
     Ok(projected)
 }
@@ -231,9 +176,9 @@ fn window_part<T: Scalar>(
     hooks: &Hooks<T>,
     eyes: (&[Named<T>], &[Named<T>]),
     near: Option<&T>,
-    rec: &mut Recorder,
-    result: &mut Vec<(String, Val)>,
+    out: &mut Out,
 ) -> Result<Option<window::Window<T>>> {
+    let Out { rec, result, parts } = out;
     let per = match &p.perspective {
         Some(per) if p.asks("window") || p.asks("viewport") => per,
         _ => return Ok(None),
@@ -251,40 +196,35 @@ fn window_part<T: Scalar>(
         .degrees()
         .map_err(|m| Error::why("perspective.fovy", m))?;
     let aspect: T = eval("perspective.aspect", aspect)?;
-    rec.section(Msg::SecWindowClip);
-    let mut w = window::window(&fovy, &aspect, near, "near", rec).map_err(perspective_field)?;
-    (hooks.window)(&mut w, &fovy);
-    if let Some(g) = hooks.givens() {
-        follow::window(g, &aspect, &mut w);
-    }
-    let mut r = window_result(&w, "");
     let far: Option<T> = per
         .far
         .as_ref()
         .map(|f| eval("perspective.far", f))
         .transpose()?;
-    if let Some(f) = &far {
-        if *f <= *near {
-            return Err(Error::why(
-                "perspective.far",
-                ErrMsg::MustBe(
-                    Bound::AboveNear(near.to_f64().to_string()),
-                    f.to_f64().to_string(),
-                ),
-            ));
-        }
-        let fw = window::window(&fovy, &aspect, f, "far", rec).map_err(perspective_field)?;
-        r.extend(
-            window_result(&fw, "far_")
-                .into_iter()
-                .filter(|(k, _)| !k.ends_with("height") && !k.ends_with("width")),
-        );
-    }
+    rec.section(Msg::SecWindowClip);
+    let set_up = (&fovy, &aspect, near, far.as_ref());
+    let (w, r) = window_run(set_up, hooks, rec).map_err(perspective_field)?;
     for ((n, q), (_, e)) in eyes.1.iter().zip(eyes.0) {
         point_inside_step(rec, n, q, e, &w, near, far.as_ref());
     }
     if p.asks("window") {
         result.push(("window".into(), Val::Map(r)));
+        parts.push(Given::Window(WindowAt {
+            fovy: at(&fovy),
+            aspect: at(&aspect),
+            near: at(near),
+            far: far.as_ref().map(at),
+            viewport: None,
+            points: match p.asks("project") {
+                true => eyes
+                    .1
+                    .iter()
+                    .map(|(n, q)| (n.clone(), Val::vec3(q)))
+                    .collect(),
+                false => vec![],
+            },
+            projected: true,
+        }));
     }
     Ok(Some(w))
 }
@@ -294,9 +234,9 @@ fn viewport_part<T: Scalar>(
     p: &ProblemIn,
     win: Option<&window::Window<T>>,
     projected: &[(String, V3<T>)],
-    rec: &mut Recorder,
-    result: &mut Vec<(String, Val)>,
+    out: &mut Out,
 ) -> Result<()> {
+    let Out { rec, result, parts } = out;
     let vp = p.perspective.as_ref().and_then(|x| x.viewport.as_ref());
     let (true, Some(w), Some(vp)) = (p.asks("viewport"), win, vp) else {
         return Ok(());
@@ -307,13 +247,11 @@ fn viewport_part<T: Scalar>(
     );
     window::validate_viewport(&vw, &vh).map_err(|e| e.in_field("perspective.viewport"))?;
     rec.section(Msg::SecViewport);
-    let px: Vec<(String, Val)> = projected
-        .iter()
-        .map(|(n, q)| {
-            let (a, b) = window::to_viewport(w, (&vw, &vh), n, (&q[0], &q[1]), rec);
-            (n.clone(), Val::vec2(&a, &b))
-        })
-        .collect();
+    if let Some(Given::Window(w)) = parts.last_mut() {
+        w.viewport = Some((at(&vw), at(&vh)));
+    }
+    let on_window = projected.iter().map(|(n, q)| (n, (&q[0], &q[1])));
+    let px = pixels(w, (&vw, &vh), on_window, rec);
     result.push((
         "viewport".into(),
         Val::Map(vec![("pixels".into(), Val::Map(px))]),
@@ -326,9 +264,9 @@ fn clip_part<T: Scalar>(
     p: &ProblemIn,
     hooks: &Hooks<T>,
     points: &[(String, V3<T>)],
-    rec: &mut Recorder,
-    result: &mut Vec<(String, Val)>,
+    out: &mut Out,
 ) -> Result<()> {
+    let Out { rec, result, parts } = out;
     let (true, Some(c)) = (p.asks("clip"), &p.clip) else {
         return Ok(());
     };
@@ -343,15 +281,15 @@ fn clip_part<T: Scalar>(
         let p0: V3<T> = point_ref(&format!("{f}.from"), &s.from, points)?;
         let p1: V3<T> = point_ref(&format!("{f}.to"), &s.to, points)?;
         rec.section(Msg::SecLineClip((c.segment.len() > 1).then_some(i + 1)));
-        let mut r = clip_checked(&b, &p0, &p1, rec);
-        if let Some(g) = hooks.givens() {
-            let prefix = match c.segment.len() {
-                1 => "clip".to_string(),
-                _ => format!("clip.{i}"),
-            };
-            follow::clipping(g, &prefix, &b, (&p0, &p1), &mut r);
-        }
-        all.push(Val::Map(clip_result(&r)));
+        let segment = (c.segment.len() > 1).then_some(i);
+        let given = Given::clip(&b, (&p0, &p1), segment);
+        all.push(Val::Map(clip_run(
+            &b,
+            (&p0, &p1),
+            (hooks, &given.key()),
+            rec,
+        )));
+        parts.push(given);
     }
     match all.len() {
         0 => {}
@@ -362,12 +300,8 @@ fn clip_part<T: Scalar>(
 }
 
 /// Lighting at the `[shade]` point.
-fn shade_part<T: Scalar>(
-    p: &ProblemIn,
-    hooks: &Hooks<T>,
-    rec: &mut Recorder,
-    result: &mut Vec<(String, Val)>,
-) -> Result<()> {
+fn shade_part<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>, out: &mut Out) -> Result<()> {
+    let Out { rec, result, parts } = out;
     match (p.asks("shade"), &p.shade) {
         (true, Some(sh)) => {
             rec.section(Msg::SecLighting);
@@ -376,22 +310,9 @@ fn shade_part<T: Scalar>(
                 material: None,
                 light: p.light.clone(),
             };
-            let mut setup = crate::input::lights::build::<T>(sh, &file, "shade.", "light", rec)?;
-            if let Some(f) = hooks.setup {
-                f(&mut setup);
-            }
-            let r = match hooks.givens() {
-                Some(given) if setup.lights.len() == 1 => {
-                    follow::setup(given, &mut setup);
-                    let rules = follow::GivenRules {
-                        rules: &hooks.shade,
-                        given,
-                    };
-                    shade_run(&setup, &rules, rec)
-                }
-                _ => shade_run(&setup, &hooks.shade, rec),
-            };
+            let (setup, r) = light_run((sh, &file, "shade."), hooks, rec)?;
             result.push(("shade".into(), Val::Map(r)));
+            parts.push(Given::Shade(ShadeAt::of(&setup, None)));
             Ok(())
         }
         _ if !p.light.is_empty() && p.shade.is_none() => {
@@ -399,62 +320,6 @@ fn shade_part<T: Scalar>(
         }
         _ => Ok(()),
     }
-}
-
-/// The problem's inputs as JSON numbers (f64 values of the written numbers;
-/// names for named segment ends).
-fn input_json(p: &ProblemIn) -> Value {
-    let n = |x: &Num| x.0.eval::<f64>().map(|v| json!(v)).unwrap_or(Value::Null);
-    let v3 = |v: &Vec3In| json!([n(&v[0]), n(&v[1]), n(&v[2])]);
-    let pref = |r: &PointRef| match r {
-        PointRef::At(v) => v3(v),
-        PointRef::Named(name) => json!(name),
-    };
-    let mut o = json!({
-        "title": p.title, "statement": p.statement, "source": p.source, "ask": p.ask,
-    });
-    if let Some(c) = &p.camera {
-        o["camera"] = json!({ "eye": v3(&c.eye), "look": v3(&c.look), "up": v3(&c.up) });
-    }
-    if let Ok(points) = p.points() {
-        o["points"] = Value::Object(points.iter().map(|(k, v)| (k.clone(), v3(v))).collect());
-    }
-    if let Some(per) = &p.perspective {
-        o["perspective"] = json!({
-            "near": per.near.as_ref().map(n),
-            "far": per.far.as_ref().map(n),
-            "fovy": per.fovy.as_ref().and_then(|a| a.0.degrees::<f64>().ok()),
-            "aspect": per.aspect.as_ref().map(n),
-            "viewport": per.viewport.as_ref().map(|v| json!([n(&v[0]), n(&v[1])])),
-            "d": per.d.as_ref().map(n),
-        });
-    }
-    if let Some(c) = &p.clip {
-        let segs: Vec<Value> = c
-            .segment
-            .iter()
-            .map(|s| json!({ "from": pref(&s.from), "to": pref(&s.to) }))
-            .collect();
-        o["clip"] = json!({ "min": v3(&c.min), "max": v3(&c.max), "segment": segs });
-    }
-    if let Some(sh) = &p.shade {
-        let ov = |v: &Option<Vec3In>| v.as_ref().map(v3);
-        o["shade"] = json!({
-            "model": sh.model.unwrap_or_default().name(),
-            "light": ov(&sh.light), "normal": ov(&sh.normal), "view": ov(&sh.view),
-            "color": ov(&sh.color), "camera": ov(&sh.camera), "position": ov(&sh.position),
-            "ka": sh.ka.as_ref().map(n), "kd": sh.kd.as_ref().map(n),
-            "ks": sh.ks.as_ref().map(n), "shininess": sh.shininess.as_ref().map(n),
-        });
-        if !p.light.is_empty() {
-            o["light"] =
-                json!(p.light.iter().map(|l| json!({
-                "type": format!("{:?}", l.kind).to_lowercase(),
-                "direction": ov(&l.direction), "position": ov(&l.position), "axis": ov(&l.axis),
-            })).collect::<Vec<_>>());
-        }
-    }
-    o
 }
 
 /// A segment end: its coordinates, or the named point's.
@@ -516,21 +381,6 @@ fn point_inside_step<T: Scalar>(
                 (true, false) => Msg::Inside(true, false),
             })
     });
-}
-
-/// Looks up `a.b.c` (a list index may be a number) in the results.
-pub fn lookup<'a>(result: &'a [(String, Val)], key: &str) -> Option<&'a Val> {
-    let mut parts = key.split('.');
-    let first = parts.next()?;
-    let mut cur = &result.iter().find(|(k, _)| k == first)?.1;
-    for part in parts {
-        cur = match cur {
-            Val::Map(kv) => &kv.iter().find(|(k, _)| k == part)?.1,
-            Val::List(items) => items.get(part.parse::<usize>().ok()?)?,
-            _ => return None,
-        };
-    }
-    Some(cur)
 }
 
 /// Flattens a nested TOML table into dotted keys.

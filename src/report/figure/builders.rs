@@ -1,6 +1,7 @@
-//! What every figure kind is built from: a report's input and the named
-//! results the worked steps show (so every label's value is a result's
-//! value), read by small helpers shared by the kinds.
+//! What every figure kind is built from besides its part's inputs: the
+//! named results the worked steps show (so every label's value is a
+//! result's value) and the steps, read by small helpers shared by the
+//! kinds.
 
 use super::axo::Axo;
 use super::{label_toward, mark, Figure, Item, Kind, Pen, Shape};
@@ -8,13 +9,10 @@ use crate::msg::{FigureMsg, Msg, Panel};
 use crate::num::vec::{self, V3};
 use crate::report::Style;
 use crate::stages::trace::{Step, Val};
-use serde_json::Value;
 
-/// What one part's drawing is made from: the inputs (in the calculator's
-/// JSON layout), the named results and the steps.
+/// What one part's drawing is made from besides its inputs: the named
+/// results and the steps.
 pub(super) struct Part<'a> {
-    /// The inputs.
-    pub inp: &'a Value,
     /// The named results.
     pub res: &'a [(String, Val)],
     /// The worked steps (vectors that are not results: N, L, V).
@@ -46,21 +44,6 @@ pub(super) fn vec_of(v: &Val) -> Option<[f64; 3]> {
         [x, y, z] => Some([x, y, z]),
         _ => None,
     }
-}
-
-/// A number of the inputs.
-pub(super) fn input_num(v: &Value, key: &str) -> Option<f64> {
-    v.get(key)?.as_f64()
-}
-
-/// Numbers of an input vector.
-pub(super) fn input3(v: &Value, key: &str) -> Option<[f64; 3]> {
-    let a = v.get(key)?.as_array()?;
-    Some([
-        a.first()?.as_f64()?,
-        a.get(1)?.as_f64()?,
-        a.get(2)?.as_f64()?,
-    ])
 }
 
 /// An input number as a value for a label.

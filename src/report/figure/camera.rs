@@ -7,12 +7,13 @@
 
 use super::axo::Axo;
 use super::builders::{
-    arrow3, axes3, input3, minus, num_val, panel3, result, say, unit, vec_of, vec_val, Part,
+    arrow3, axes3, minus, num_val, panel3, result, say, unit, vec_of, vec_val, Part,
 };
 use super::{label, label_toward, labelled, mark, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
 use crate::stages::trace::Val;
+use crate::tutor::solution::{CameraAt, P3};
 
 /// The length Vup is drawn with: 1 for a scene within 8 of the origin,
 /// else an eighth of the scene's size (so it stays visible).
@@ -39,19 +40,14 @@ pub fn camera_view(uvn: &[[f64; 3]; 3]) -> Axo {
     Axo::choose(super::axo::USUAL, |a| a.readable(uvn).min(a.readable(&XYZ)))
 }
 
-/// The camera panel.
-pub fn figure(p: &Part, st: &Style) -> Option<Vec<Figure>> {
-    let (pe, pr, up) = (
-        input3(p.inp, "eye")?,
-        input3(p.inp, "look")?,
-        input3(p.inp, "up")?,
-    );
+/// The camera panel of camera `c` and the world points `named`.
+pub fn figure(p: &Part, st: &Style, c: &CameraAt, named: &[(String, P3)]) -> Option<Vec<Figure>> {
+    let (pe, pr, up) = (c.eye, c.look, c.up);
     let mut uvn = [[0.0; 3]; 3];
     for (k, (key, _)) in AXIS_PENS.iter().enumerate() {
         uvn[k] = vec_of(result(p.res, key)?)?;
     }
     let axo = camera_view(&uvn);
-    let named = world_points(p);
     let extent = [pe, pr]
         .iter()
         .chain(named.iter().map(|(_, q)| q))
@@ -95,18 +91,8 @@ pub fn figure(p: &Part, st: &Style) -> Option<Vec<Figure>> {
     let n = st.val_inline(&num_val(AXIS_SCALE * len));
     let legend = say(st, FigureMsg::Word(FigWord::CameraAxes));
     items.push(Item::Note(format!("{legend} {n}")));
-    points(p, st, &axo, &named, &mut items);
+    points(p, st, &axo, named, &mut items);
     Some(vec![panel3(st, Panel::Camera, &axo, items)])
-}
-
-/// The world points of the inputs (`points`: name → [x, y, z]).
-fn world_points(p: &Part) -> Vec<(String, [f64; 3])> {
-    let Some(o) = p.inp.get("points").and_then(|o| o.as_object()) else {
-        return vec![];
-    };
-    o.keys()
-        .filter_map(|k| Some((k.clone(), input3(p.inp.get("points")?, k)?)))
-        .collect()
 }
 
 /// Each named point: a dot with its name (unless a mark of that name is

@@ -13,14 +13,13 @@
 //! find it.
 
 use super::axo::{diameter, Axo};
-use super::builders::{
-    dot, input3, minus, num_val, panel, panel3, result, say, vec_of, vec_val, Part,
-};
+use super::builders::{dot, minus, num_val, panel, panel3, result, say, vec_of, vec_val, Part};
 use super::{exact, label_near, label_short, label_toward, mark, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
 use crate::stages::clip::{PLANES, PLANE_KEYS};
 use crate::stages::trace::Val;
+use crate::tutor::solution::ClipAt;
 
 /// One intersection tried, as the results give it.
 struct Tried {
@@ -51,7 +50,7 @@ struct Clip {
     kept: Option<[[f64; 3]; 2]>,
 }
 
-fn read(p: &Part, st: &Style) -> Option<Clip> {
+fn read(p: &Part, st: &Style, g: &ClipAt) -> Option<Clip> {
     let code = |k: &str| {
         result(p.res, k)
             .map(|v| st.val_inline(v))
@@ -86,18 +85,18 @@ fn read(p: &Part, st: &Style) -> Option<Clip> {
         _ => None,
     };
     Some(Clip {
-        lo: input3(p.inp, "min")?,
-        hi: input3(p.inp, "max")?,
-        ends: [input3(p.inp, "from")?, input3(p.inp, "to")?],
+        lo: g.min,
+        hi: g.max,
+        ends: g.ends,
         codes: [code("code0"), code("code1")],
         tried,
         kept,
     })
 }
 
-/// The clip panels: in 3D, and along the segment.
-pub(super) fn figures(p: &Part, st: &Style) -> Option<Vec<Figure>> {
-    let c = read(p, st)?;
+/// The clip panels of the clipping `g`: in 3D, and along the segment.
+pub(super) fn figures(p: &Part, st: &Style, g: &ClipAt) -> Option<Vec<Figure>> {
+    let c = read(p, st, g)?;
     let axo = view(&c);
     Some(vec![three_d(&c, &axo, st), along(&c, st)])
 }

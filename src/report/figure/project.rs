@@ -5,12 +5,11 @@
 //! the similar triangles; the images on the view plane.
 
 use super::axo::{apex_outside, Axo};
-use super::builders::{
-    axes3, input_num, num_val, nums_of, panel, panel3, result, say, vec_val, Part,
-};
+use super::builders::{axes3, num_val, nums_of, panel, panel3, result, say, Part};
 use super::{label, label_toward, labelled, mark, short, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
+use crate::stages::projection::Projection;
 use crate::stages::trace::Val;
 
 /// The projection asked for.
@@ -60,16 +59,13 @@ impl Proj {
     }
 }
 
-/// The projection of the inputs (`projection`: `d`, `cop` and `plane`, or
-/// `ortho`).
-fn kind(p: &Part) -> Option<Proj> {
-    let j = p.inp.get("projection")?;
-    if let Some(d) = input_num(j, "d") {
-        return Some(Proj::Plane(d));
-    }
-    match (input_num(j, "cop"), input_num(j, "plane")) {
-        (Some(c), Some(z)) => Some(Proj::General(c, z)),
-        _ => j.get("ortho").and(Some(Proj::Ortho)),
+impl From<&Projection<f64>> for Proj {
+    fn from(p: &Projection<f64>) -> Proj {
+        match p {
+            Projection::Plane { d } => Proj::Plane(*d),
+            Projection::General { zprp, zvp } => Proj::General(*zprp, *zvp),
+            Projection::Ortho => Proj::Ortho,
+        }
     }
 }
 
@@ -83,39 +79,19 @@ struct Projected {
     img_val: Val,
 }
 
-/// The points: eye coordinates from `solve`'s steps (`eye`) or the
-/// inputs, images from the results.
-fn projected(p: &Part) -> Vec<Projected> {
+/// The points: eye coordinates as given (the view part's results when
+/// `chained`), images from the results.
+fn projected(p: &Part, eyes: &[(String, Val)], chained: bool) -> Vec<Projected> {
     let Some(Val::Map(images)) = result(p.res, "points") else {
         return vec![];
-    };
-    let from_solve = matches!(result(p.res, "eye"), Some(Val::Map(_)));
-    let eye_of = |name: &str| -> Option<Val> {
-        match result(p.res, "eye") {
-            Some(Val::Map(m)) => result(m, name).cloned(),
-            _ => {
-                // The step that projects the point shows it (exact forms).
-                let image = format!("{name}''");
-                let step = p
-                    .steps
-                    .iter()
-                    .find(|s| s.result.iter().any(|(k, _)| *k == image));
-                if let Some(v) = step.and_then(|s| result(&s.values, name)) {
-                    return Some(v.clone());
-                }
-                let a = p.inp.get("points")?.get(name)?.as_array()?;
-                let xs: Option<Vec<f64>> = a.iter().map(|x| x.as_f64()).collect();
-                Some(vec_val(&xs?))
-            }
-        }
     };
     images
         .iter()
         .filter_map(|(name, img_val)| {
-            let eye_val = eye_of(name)?;
+            let eye_val = result(eyes, name)?.clone();
             let (e, i) = (nums_of(&eye_val)?, nums_of(img_val)?);
             Some(Projected {
-                name: if from_solve {
+                name: if chained {
                     format!("{name}'")
                 } else {
                     name.clone()
@@ -129,10 +105,16 @@ fn projected(p: &Part) -> Vec<Projected> {
         .collect()
 }
 
-/// The projection panels: 3D, side view, view plane.
-pub fn figures(p: &Part, st: &Style) -> Option<Vec<Figure>> {
-    let k = kind(p)?;
-    let pts = projected(p);
+/// The projection panels: 3D, side view, view plane, of the `eyes`
+/// (eye-coordinate points) projected by `proj`.
+pub fn figures(
+    p: &Part,
+    st: &Style,
+    proj: &Projection<f64>,
+    (eyes, chained): (&[(String, Val)], bool),
+) -> Option<Vec<Figure>> {
+    let k = Proj::from(proj);
+    let pts = projected(p, eyes, chained);
     let (d3, side) = (three_d(k, &pts, st), side_view(k, &pts, st));
     let mut out = vec![d3, side];
     if !pts.is_empty() {

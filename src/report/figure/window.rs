@@ -5,11 +5,12 @@
 //! projected points, and the viewport with their pixels.
 
 use super::axo::apex_outside;
-use super::builders::{input_num, num_val, nums_of, panel, panel3, result, say, vec_val, Part};
+use super::builders::{num_val, nums_of, panel, panel3, result, say, vec_val, Part};
 use super::{label, label_toward, labelled, mark, short, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
 use crate::stages::trace::Val;
+use crate::tutor::solution::WindowAt;
 
 /// The window's numbers: (left, right, bottom, top) at z = −near.
 type Win = [f64; 4];
@@ -47,17 +48,16 @@ fn tiny(p: &Part, st: &Style, key: &str) -> String {
     }
 }
 
-/// The window panels.
-pub fn figures(p: &Part, st: &Style) -> Option<Vec<Figure>> {
-    let near = input_num(p.inp, "near")?;
-    let fovy = input_num(p.inp, "fovy")?;
+/// The window panels of the window part `g`.
+pub fn figures(p: &Part, st: &Style, g: &WindowAt) -> Option<Vec<Figure>> {
+    let near = g.near;
     let w = win(p, "")?;
-    let mut out = vec![frustum(p, st, near, w), side_view(p, st, near, fovy, w)];
-    let pts = window_points(p);
+    let mut out = vec![frustum(p, st, g, w), side_view(p, st, near, g.fovy, w)];
+    let pts = window_points(g);
     if !pts.is_empty() {
         out.push(near_window(p, st, w, &pts));
     }
-    if let Some(f) = viewport(p, st) {
+    if let Some(f) = viewport(p, st, g) {
         out.push(f);
     }
     Some(out)
@@ -86,8 +86,9 @@ fn seg(a: [f64; 2], b: [f64; 2]) -> Shape {
 /// given, and within [`FAR_TO_SCALE`]) and the edges from the eye to the
 /// farthest window's corners, with top and right marked on the near
 /// window.
-fn frustum(p: &Part, st: &Style, near: f64, w: Win) -> Figure {
-    let far = input_num(p.inp, "far").zip(win(p, "far_"));
+fn frustum(p: &Part, st: &Style, g: &WindowAt, w: Win) -> Figure {
+    let near = g.near;
+    let far = g.far.zip(win(p, "far_"));
     let to_scale = far.filter(|(f, _)| *f <= FAR_TO_SCALE * near);
     let mut windows = vec![rect(w, -near)];
     windows.extend(to_scale.map(|(f, fw)| rect(fw, -f)));
@@ -188,9 +189,9 @@ fn side_view(p: &Part, st: &Style, near: f64, fovy: f64, w: Win) -> Figure {
     panel(st, Panel::WindowSide, items)
 }
 
-/// The points on the near plane: the command's `points` (x, y), or
-/// `solve`'s projected points (`window_points`), with their values.
-fn window_points(p: &Part) -> Vec<(String, [f64; 2], Val)> {
+/// The points on the near plane: the command's points (x, y), labelled
+/// by their decimals, or the projected points (A''), with their values.
+fn window_points(g: &WindowAt) -> Vec<(String, [f64; 2], Val)> {
     let from = |name: &str, v: &Val| -> Option<(String, [f64; 2], Val)> {
         let n = nums_of(v)?;
         let xy = Val::List(match v {
@@ -199,19 +200,10 @@ fn window_points(p: &Part) -> Vec<(String, [f64; 2], Val)> {
         });
         Some((name.to_string(), [*n.first()?, *n.get(1)?], xy))
     };
-    if let Some(Val::Map(m)) = result(p.res, "window_points") {
-        return m
-            .iter()
-            .filter_map(|(k, v)| from(&format!("{k}''"), v))
-            .collect();
-    }
-    let Some(o) = p.inp.get("points").and_then(|o| o.as_object()) else {
-        return vec![];
-    };
-    o.iter()
-        .filter_map(|(k, v)| {
-            let xs: Option<Vec<f64>> = v.as_array()?.iter().map(|x| x.as_f64()).collect();
-            from(k, &super::builders::vec_val(&xs?))
+    (g.points.iter())
+        .filter_map(|(k, v)| match g.projected {
+            true => from(&format!("{k}''"), v),
+            false => from(k, &vec_val(&nums_of(v)?)),
         })
         .collect()
 }
@@ -248,9 +240,8 @@ fn near_window(p: &Part, st: &Style, w: Win, pts: &[(String, [f64; 2], Val)]) ->
 }
 
 /// The viewport W × H with each point at its pixel position.
-fn viewport(p: &Part, st: &Style) -> Option<Figure> {
-    let vp = p.inp.get("viewport")?.as_array()?;
-    let (vw, vh) = (vp.first()?.as_f64()?, vp.get(1)?.as_f64()?);
+fn viewport(p: &Part, st: &Style, g: &WindowAt) -> Option<Figure> {
+    let (vw, vh) = g.viewport?;
     let Some(Val::Map(px)) = result(p.res, "pixels") else {
         return None;
     };

@@ -27,7 +27,9 @@ use crate::stages::trace::{Step, Val};
 use crate::tutor::diagnose::{Mistake, CATALOG};
 use crate::tutor::follow::Given;
 use crate::tutor::keys::ordered_keys;
-use crate::tutor::solve::{self, lookup, Hooks};
+use crate::tutor::run::Hooks;
+use crate::tutor::solution::lookup;
+use crate::tutor::solve;
 use std::cell::RefCell;
 use std::collections::HashMap;
 
@@ -40,8 +42,6 @@ pub struct Marker {
     pub result: Tree,
     /// The worked steps of the solution.
     pub steps: Vec<Step>,
-    /// The problem's inputs, as `solve --json` gives them.
-    pub input: serde_json::Value,
     /// The keys in the order of the text's solution.
     pub order: Vec<String>,
     /// The keys `check` expects: the problem's `[check] keys`, else
@@ -99,7 +99,6 @@ impl Marker {
             order: ordered_keys(&result),
             result,
             steps: report.steps,
-            input: report.input,
             keys,
             settings,
             variants,

@@ -41,8 +41,7 @@ use crate::input::problem::ProblemIn;
 use crate::stages::trace::Val;
 use crate::tutor::diagnose::Mistake;
 
-/// A result tree: named values, as `solve` returns them.
-pub type Tree = Vec<(String, Val)>;
+pub use crate::tutor::solution::Tree;
 
 /// Default relative tolerance (the usual default of online homework systems).
 pub const DEFAULT_TOLERANCE: f64 = 1e-3;

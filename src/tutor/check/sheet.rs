@@ -8,7 +8,7 @@ use super::marker::{agrees, Marker};
 use super::{Diagnosis, Marked, Marking, Verdict, FOLLOW_THROUGH};
 use crate::input::answer::Read;
 use crate::msg::Msg;
-use crate::tutor::solve::lookup;
+use crate::tutor::solution::lookup;
 
 impl Marker {
     /// Marks an answer sheet. With `from_text` the answers are the

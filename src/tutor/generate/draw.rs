@@ -9,7 +9,8 @@ use crate::num::rng::SplitMix64;
 use crate::num::Real;
 use crate::stages::trace::Val;
 use crate::tutor::check::default_keys;
-use crate::tutor::solve::{self, lookup};
+use crate::tutor::solution::lookup;
+use crate::tutor::solve;
 use std::collections::{BTreeSet, HashSet};
 use std::fmt::Write as _;
 

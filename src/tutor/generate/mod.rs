@@ -26,9 +26,9 @@ use crate::input::problem::ProblemIn;
 use crate::msg::Msg;
 use crate::num::format::fmt_dec;
 use crate::num::rng::SplitMix64;
-use crate::stages::trace::Report;
 use crate::stages::trace::Val;
-use crate::tutor::solve::lookup;
+use crate::tutor::solution::lookup;
+use crate::tutor::solution::Report;
 
 use std::collections::HashSet;
 use std::fmt::Write as _;

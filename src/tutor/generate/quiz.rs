@@ -28,7 +28,7 @@ use crate::input::problem::ProblemIn;
 use crate::stages::trace::Val;
 use crate::tutor::check::tolerance;
 use crate::tutor::diagnose::{Mistake, Tree, CATALOG};
-use crate::tutor::solve::lookup;
+use crate::tutor::solution::lookup;
 
 /// A mistaken value more than this many times the key's magnitude is left
 /// out of its blank.
