@@ -89,12 +89,59 @@ pub fn tr<'a>(lang: Lang, en: &'a str, id: &'a str) -> &'a str {
     }
 }
 
-/// A number written in `lang`: Indonesian uses the decimal comma
-/// (`0.0236` → `0,0236`); nothing else changes.
-pub fn decimal(s: &str, lang: Lang) -> String {
-    match lang {
-        Lang::En => s.to_string(),
-        Lang::Id => s.replace('.', ","),
+/// How numbers are written for people: the decimal mark and the separator
+/// between the components of a vector. The one place either is chosen:
+/// English (and a Moodle quiz with `--decimal point`) writes `(0.5, 2, 3)`;
+/// Indonesian (and `--decimal comma`) writes `(0,5; 2; 3)`, so a comma never
+/// reads both as a decimal mark and as a separator.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct NumStyle {
+    /// The decimal mark: `.` or `,`.
+    pub mark: char,
+    /// Between a vector's components: `, ` or `; `.
+    pub sep: &'static str,
+}
+
+impl NumStyle {
+    /// `0.5`, `(0.5, 2, 3)`.
+    pub const POINT: NumStyle = NumStyle {
+        mark: '.',
+        sep: ", ",
+    };
+    /// `0,5`, `(0,5; 2; 3)`.
+    pub const COMMA: NumStyle = NumStyle {
+        mark: ',',
+        sep: "; ",
+    };
+
+    /// The numbers of `lang`: the point in English, the comma in Indonesian.
+    pub fn of(lang: Lang) -> NumStyle {
+        match lang {
+            Lang::En => NumStyle::POINT,
+            Lang::Id => NumStyle::COMMA,
+        }
+    }
+
+    /// One number (or a formula of numbers: `−√2/60 ≈ −0.02357`, `1.5e-3`,
+    /// `12.35 ms`) that was formatted with the point, written with this mark.
+    pub fn number(self, pointed: &str) -> String {
+        pointed
+            .chars()
+            .map(|c| if c == '.' { self.mark } else { c })
+            .collect()
+    }
+
+    /// Values formatted the English way, with the point and `, ` between
+    /// components (`(1.5, 2, 3)`, `ka = 0.2, kd = 0.5`), written in this
+    /// style: the separators first, then the marks.
+    pub fn values(self, english: &str) -> String {
+        self.number(&self.separated(english))
+    }
+
+    /// A list or formula written with `, ` between its parts (`max(a, 0)`)
+    /// with this style's separator instead; its numbers are not touched.
+    pub fn separated(self, english: &str) -> String {
+        english.replace(NumStyle::POINT.sep, self.sep)
     }
 }
 
@@ -120,6 +167,20 @@ pub fn cut_message(message: &str, lang: Lang) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn numbers_take_the_mark_and_separator_of_their_style() {
+        let v = "(1.5, -2, 0.25)";
+        assert_eq!(NumStyle::of(Lang::En).values(v), "(1.5, -2, 0.25)");
+        assert_eq!(NumStyle::of(Lang::Id).values(v), "(1,5; -2; 0,25)");
+        assert_eq!(
+            NumStyle::COMMA.number("−√2/60 ≈ −0.02357"),
+            "−√2/60 ≈ −0,02357"
+        );
+        assert_eq!(NumStyle::POINT.number("0.1"), "0.1");
+        // a formula's separators change, its numbers do not
+        assert_eq!(NumStyle::COMMA.separated("max(0.8, 0)"), "max(0.8; 0)");
+    }
 
     fn env<'a>(pairs: &'a [(&'a str, &'a str)]) -> impl Fn(&str) -> Option<String> + 'a {
         move |k| {

@@ -2,7 +2,7 @@
 //! English and in Bahasa Indonesia. The summary's JSON keys stay English
 //! (they are the same in every language); only the text shows these labels.
 
-use super::lang::{decimal, Lang};
+use super::lang::{Lang, NumStyle};
 use crate::input::scene::Shading;
 use crate::render::Stats;
 
@@ -140,7 +140,7 @@ fn counts(st: &Stats, shading: Shading, id: bool) -> Vec<Row> {
 /// The median times of `--stats`, in milliseconds.
 fn times(t: &Times, lang: Lang) -> Vec<Row> {
     let r = |en: &str, ind: &str, ms: f64| {
-        let v = decimal(&format!("{ms:.2} ms"), lang);
+        let v = NumStyle::of(lang).number(&format!("{ms:.2} ms"));
         (en.to_string(), ind.to_string(), v)
     };
     let (en, ind) = match t.runs {

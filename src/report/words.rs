@@ -2,10 +2,11 @@
 //! Bahasa Indonesia, with the course text's own terms (docs/glossary.md).
 //! One exhaustive match: a key without both languages does not compile.
 
-use super::lang::Lang;
+use super::lang::{Lang, NumStyle};
 use crate::msg::{Erratum, LightPart, Msg, Printed, SpotZone, Term, Trivial};
 
 mod drawn;
+pub use drawn::statement;
 pub mod errors;
 mod figure;
 pub mod labels;
@@ -46,7 +47,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         | Msg::ErrHtmlCommand => warning(m, lang),
         Msg::DrawnTitle(t) => drawn::title(*t, lang),
         Msg::Pixel(p) => pixel::words(p, lang),
-        Msg::Statement(s) => drawn::statement(s, lang),
+        Msg::Statement(s) => drawn::statement(s, lang, NumStyle::of(lang)),
         Msg::Figure(f) => figure::figure(f, lang),
         Msg::At(place, m) => format!("{place}: {}", words(m, lang)),
         Msg::Err(e) => errors::error(e, lang),
@@ -152,7 +153,7 @@ fn warning(m: &Msg, lang: Lang) -> String {
     let id = lang == Lang::Id;
     match m {
         Msg::UpParallel(a) => {
-            let a = super::lang::decimal(&format!("{a:.3e}"), lang);
+            let a = NumStyle::of(lang).number(&format!("{a:.3e}"));
             if id {
                 format!("vektor up (Vup) hampir sejajar dengan arah pandang (sudut {a} rad): u dan v sangat peka terhadap masukan")
             } else {
@@ -201,7 +202,7 @@ fn judged(m: &Msg, lang: Lang) -> String {
         Msg::Expected(v) => format!(
             "{} {}",
             pick(id, "expected", "seharusnya"),
-            super::lang::decimal(v, lang)
+            NumStyle::of(lang).number(v)
         ),
         Msg::Unreadable(why) => format!(
             "{}: {}",
@@ -211,7 +212,7 @@ fn judged(m: &Msg, lang: Lang) -> String {
         Msg::WithinPct(p) => format!(
             "{} {}%",
             pick(id, "within", "dalam batas"),
-            super::lang::decimal(p, lang)
+            NumStyle::of(lang).number(p)
         ),
         _ => String::new(),
     }
@@ -683,12 +684,9 @@ fn note_geometry(m: &Msg, id: bool) -> Option<String> {
 }
 
 /// Numbers in a message parameter written in `lang` (`(1.5, 2, 3)` →
-/// `(1,5; 2; 3)` in Indonesian).
+/// `(1,5; 2; 3)` in Indonesian; [`NumStyle::values`]).
 fn nums(s: &str, lang: Lang) -> String {
-    match lang {
-        Lang::En => s.to_string(),
-        Lang::Id => s.replace(", ", "; ").replace('.', ","),
-    }
+    NumStyle::of(lang).values(s)
 }
 
 /// Error messages (the field is printed before them, as spelled).
@@ -798,8 +796,8 @@ fn flag_error(m: &Msg, id: bool) -> String {
             format!("must be greater than near = {near}, got {far}"),
             format!(
                 "harus lebih besar daripada near = {}, diberikan {}",
-                near.replace('.', ","),
-                far.replace('.', ",")
+                NumStyle::COMMA.number(near),
+                NumStyle::COMMA.number(far)
             ),
         ),
         _ => String::new(),
