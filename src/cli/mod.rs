@@ -73,8 +73,7 @@ fn run_unchecked(cli: &Cli, outputs: &Outputs) -> Result<Report> {
         Command::Clip(a) => at_precision!(p, clip(a)),
         Command::Shade(a) => at_precision!(p, shade(a)),
         Command::Solve { file, .. } => {
-            let id = style_of(cli).lang == Lang::Id;
-            at_precision!(p, solve(file, id))
+            at_precision!(p, solve(file, style_of(cli).lang))
         }
         Command::Check(_)
         | Command::Generate(_)
@@ -109,8 +108,8 @@ fn clip<T: crate::num::Scalar>(a: &ClipArgs) -> Result<Report> {
 fn shade<T: crate::num::Scalar>(a: &ShadeArgs) -> Result<Report> {
     calc::shade::<T>(a)
 }
-fn solve<T: crate::num::Scalar>(file: &std::path::Path, id: bool) -> Result<Report> {
-    let p = crate::input::problem::ProblemIn::read(file)?.localized(id);
+fn solve<T: crate::num::Scalar>(file: &std::path::Path, lang: Lang) -> Result<Report> {
+    let p = crate::input::problem::ProblemIn::read(file)?.localized(lang);
     crate::tutor::solve::solve::<T>(&p)
 }
 

@@ -19,7 +19,7 @@ mod said;
 /// purpose.
 pub fn words(m: &Msg, lang: Lang) -> String {
     let id = lang == Lang::Id;
-    let p = |en: &str, ind: &str| pick(id, en, ind);
+    let p = |en: &str, ind: &str| pick(lang, en, ind);
     let f = |en: String, ind: String| if id { ind } else { en };
     let n = |s: &str| nums(s, lang);
     match m {
@@ -30,11 +30,11 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         },
         Msg::Erratum(kind, why) => format!(
             "{}: {}",
-            printed(Printed::Differs(*kind), id),
+            printed(Printed::Differs(*kind), lang),
             words(why, lang)
         ),
-        Msg::Printed(p) => printed(*p, id),
-        Msg::Asked(parts) => asked(parts, id),
+        Msg::Printed(p) => printed(*p, lang),
+        Msg::Asked(parts) => asked(parts, lang),
         Msg::DrawnTitle(t) => drawn::title(*t, lang),
         Msg::Pixel(p) => pixel::words(p, lang),
         Msg::Statement(s) => drawn::statement(s, lang, NumStyle::of(lang)),
@@ -148,7 +148,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         ),
         Msg::Material => p("Material and model", "Material dan model"),
         Msg::Light((i, n), part) => {
-            let w = light_part(*part, id);
+            let w = light_part(*part, lang);
             if *n > 1 {
                 format!(
                     "{} {}: {w}",
@@ -163,7 +163,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             }
         }
         Msg::TermStep(t) => {
-            let w = term(*t, id);
+            let w = term(*t, lang);
             let cap: String = w[..1].to_uppercase() + &w[1..];
             f(
                 format!("{cap} term, per channel"),
@@ -280,9 +280,9 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         ),
         Msg::InRange => p("every channel is already in [0, 1]", "setiap kanal sudah berada di [0, 1]"),
         Msg::NoTermInModel(model, t) => if id {
-            format!("model {model} tidak memiliki komponen {}", term(*t, id))
+            format!("model {model} tidak memiliki komponen {}", term(*t, lang))
         } else {
-            format!("the {model} model has no {} term", term(*t, id))
+            format!("the {model} model has no {} term", term(*t, lang))
         },
         Msg::TextSetting => p(
             "the text's single white light and no global ambient: the sum is 1·(the text's factor)",
@@ -423,7 +423,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             format!("the eye Pe and the look-at point Pr are the same point {p}"),
             format!("posisi mata Peye dan titik referensi Pref adalah titik yang sama {}", n(p)),
         ),
-        Msg::ErrUpZero => pick(id, "the up vector Vup is the zero vector", "vektor Vup adalah vektor nol"),
+        Msg::ErrUpZero => pick(lang, "the up vector Vup is the zero vector", "vektor Vup adalah vektor nol"),
         Msg::ErrUpParallel(up, d) => f(
             format!("the up vector Vup = {up} is parallel to the view direction Pe − Pr = {d}, so Vup × n = 0 and u is undefined"),
             format!("vektor Vup = {} sejajar dengan arah pandang Peye − Pref = {}, sehingga Vup × n = 0 dan u tidak terdefinisi", n(up), n(d)),
@@ -489,22 +489,22 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             format!("`{t}`: seharusnya LEBARxTINGGI, misalnya 200x100"),
         ),
         Msg::ErrCopNeedsPlane => pick(
-            id,
+            lang,
             "--cop needs --plane (the view plane z = ZVP)",
             "--cop memerlukan --plane (bidang pandang z = ZVP)",
         ),
         Msg::ErrPlaneNeedsCop => pick(
-            id,
+            lang,
             "--plane needs --cop (the centre of projection z = ZPRP)",
             "--plane memerlukan --cop (pusat proyeksi z = ZPRP)",
         ),
         Msg::ErrChooseProjection => pick(
-            id,
+            lang,
             "choose one projection: --d D, or --cop ZPRP --plane ZVP, or --ortho",
             "pilih satu proyeksi: --d D, atau --cop ZPRP --plane ZVP, atau --ortho",
         ),
         Msg::ErrPointNeedsViewport => pick(
-            id,
+            lang,
             "--point needs --viewport WxH to map points to pixels",
             "--point memerlukan --viewport WxH untuk memetakan titik ke piksel",
         ),
@@ -603,7 +603,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         }
         // Msg::ErrHtmlCommand
         Msg::ErrHtmlCommand => pick(
-            id,
+            lang,
             "writes the worked solution of basis, view, project, window, clip, shade, solve and render; for exams use generate --format html",
             "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html",
         ),
@@ -614,28 +614,29 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             .join("; "),
         Msg::Expected(v) => format!(
             "{} {}",
-            pick(id, "expected", "seharusnya"),
+            pick(lang, "expected", "seharusnya"),
             NumStyle::of(lang).number(v)
         ),
         Msg::Unreadable(why) => format!(
             "{}: {}",
-            pick(id, "cannot be read", "tidak dapat dibaca"),
+            pick(lang, "cannot be read", "tidak dapat dibaca"),
             errors::number(why, lang)
         ),
         Msg::WithinPct(p) => format!(
             "{} {}%",
-            pick(id, "within", "dalam batas"),
+            pick(lang, "within", "dalam batas"),
             NumStyle::of(lang).number(p)
         ),
     }
 }
 
-fn pick(id: bool, en: &str, ind: &str) -> String {
-    if id { ind } else { en }.to_string()
+/// The words of `lang`, both written.
+fn pick(lang: Lang, en: &str, ind: &str) -> String {
+    super::lang::tr(lang, en, ind).to_string()
 }
 
 /// What a problem asks, part by part (the parts of `input::problem::PARTS`).
-fn asked(parts: &[String], id: bool) -> String {
+fn asked(parts: &[String], lang: Lang) -> String {
     let part = |p: &str| {
         let (en, ind) = match p {
             "view" => (
@@ -663,16 +664,20 @@ fn asked(parts: &[String], id: bool) -> String {
                 "warna hasil pencahayaan pada titik itu, komponen demi komponen",
             ),
         };
-        pick(id, en, ind)
+        pick(lang, en, ind)
     };
     let list: Vec<String> = parts.iter().map(|p| part(p)).collect();
-    format!("{}: {}.", pick(id, "Asked", "Ditanyakan"), list.join("; "))
+    format!(
+        "{}: {}.",
+        pick(lang, "Asked", "Ditanyakan"),
+        list.join("; ")
+    )
 }
 
 /// How a printed answer compares, worded as what it is: a misprint,
 /// another convention, a rounding (docs/spec.md §5).
-fn printed(p: Printed, id: bool) -> String {
-    let p_ = |en: &str, ind: &str| pick(id, en, ind);
+fn printed(p: Printed, lang: Lang) -> String {
+    let p_ = |en: &str, ind: &str| pick(lang, en, ind);
     match p {
         Printed::Agrees => p_("agrees", "sesuai"),
         Printed::Differs(None) => p_("the printed answer is wrong", "jawaban yang tercetak salah"),
@@ -695,33 +700,33 @@ fn printed(p: Printed, id: bool) -> String {
     }
 }
 
-fn term(t: Term, id: bool) -> &'static str {
-    match (t, id) {
+fn term(t: Term, lang: Lang) -> &'static str {
+    match (t, lang) {
         (Term::Ambient, _) => "ambient",
-        (Term::Diffuse, false) => "diffuse",
-        (Term::Diffuse, true) => "diffuse",
+        (Term::Diffuse, Lang::En) => "diffuse",
+        (Term::Diffuse, Lang::Id) => "diffuse",
         (Term::Specular, _) => "specular",
     }
 }
 
-fn light_part(p: LightPart, id: bool) -> &'static str {
-    match (p, id) {
-        (LightPart::OutOfRange, false) => "out of range",
-        (LightPart::OutOfRange, true) => "di luar jangkauan",
-        (LightPart::Direction, false) => "direction to the light",
-        (LightPart::Direction, true) => "arah ke sumber cahaya",
-        (LightPart::Attenuation, false) => "attenuation",
-        (LightPart::Attenuation, true) => "redaman (Att)",
-        (LightPart::Incidence, false) => "angle of incidence: cos α = L·N",
-        (LightPart::Incidence, true) => "sudut datang: cos α = L·N",
-        (LightPart::Reflection, false) => "reflection R and cos β",
-        (LightPart::Reflection, true) => "vektor pantulan R dan cos β",
-        (LightPart::HalfVector, false) => "half vector H and N·H (Blinn)",
-        (LightPart::HalfVector, true) => "vektor setengah jalan H dan N·H (Blinn)",
-        (LightPart::Highlight, false) => "highlight",
-        (LightPart::Highlight, true) => "sorotan specular (highlight)",
-        (LightPart::Spot, false) => "spot factor",
-        (LightPart::Spot, true) => "faktor sorotan (Spot)",
+fn light_part(p: LightPart, lang: Lang) -> &'static str {
+    match (p, lang) {
+        (LightPart::OutOfRange, Lang::En) => "out of range",
+        (LightPart::OutOfRange, Lang::Id) => "di luar jangkauan",
+        (LightPart::Direction, Lang::En) => "direction to the light",
+        (LightPart::Direction, Lang::Id) => "arah ke sumber cahaya",
+        (LightPart::Attenuation, Lang::En) => "attenuation",
+        (LightPart::Attenuation, Lang::Id) => "redaman (Att)",
+        (LightPart::Incidence, Lang::En) => "angle of incidence: cos α = L·N",
+        (LightPart::Incidence, Lang::Id) => "sudut datang: cos α = L·N",
+        (LightPart::Reflection, Lang::En) => "reflection R and cos β",
+        (LightPart::Reflection, Lang::Id) => "vektor pantulan R dan cos β",
+        (LightPart::HalfVector, Lang::En) => "half vector H and N·H (Blinn)",
+        (LightPart::HalfVector, Lang::Id) => "vektor setengah jalan H dan N·H (Blinn)",
+        (LightPart::Highlight, Lang::En) => "highlight",
+        (LightPart::Highlight, Lang::Id) => "sorotan specular (highlight)",
+        (LightPart::Spot, Lang::En) => "spot factor",
+        (LightPart::Spot, Lang::Id) => "faktor sorotan (Spot)",
     }
 }
 
