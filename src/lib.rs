@@ -14,7 +14,7 @@
 //! | [`input`] | the typed problem ([`input::part::Problem`]: a problem file, or a calculator command's one part), scene, lights and mesh files, and flag values, read and validated |
 //! | [`stages`] | the math the text teaches: camera, projection, window, clip, lighting; each writes its steps to a [`stages::trace::Trace`] |
 //! | [`num`] | numbers: the `Scalar` trait, the exact type, floats, lanes, vectors, expressions, formatting |
-//! | [`msg`] | message keys: what is said to a person, as data (`report::words` gives the words) |
+//! | [`msg`] | message keys: what is said to a person, as data (`report::words` gives the words); the language, [`msg::Lang`], passed as itself to every layer |
 //! | [`error`] | the error value every layer returns |
 //!
 //! Data flows one way: command-line flags or a problem file become one

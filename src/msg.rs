@@ -11,11 +11,13 @@
 mod drawn;
 mod errors;
 mod figure;
+pub mod lang;
 mod pixel;
 mod said;
 pub use drawn::{CameraText, DrawnTitle, ShadeAsked, Statement};
 pub use errors::{Bound, ClapErr, ErrMsg, IoWhy, NumErr, Thing, TomlErr, Twice, Want};
 pub use figure::{FigWord, FigureMsg, Panel};
+pub use lang::Lang;
 pub use pixel::PixelMsg;
 pub use said::Said;
 

@@ -927,3 +927,45 @@ fn a_fixed_seed_gives_the_same_bytes() {
     let read = |d: &Path| std::fs::read(d.join("quiz.xml")).unwrap();
     assert!(read(&a) == read(&b));
 }
+
+/// The statement (first paragraph) of each question of a quiz.
+fn statements(xml: &str) -> Vec<String> {
+    xml_questions(xml)
+        .into_iter()
+        .filter(|q| q.0 == "cloze")
+        .map(|q| {
+            let t = q.2;
+            let end = t.find("</p>").unwrap_or(t.len());
+            t[..end].trim_start_matches("<p>").to_string()
+        })
+        .collect()
+}
+
+/// Whether `s` holds a digit, `mark`, digit (a decimal written with `mark`).
+fn has_decimal(s: &str, mark: char) -> bool {
+    let c: Vec<char> = s.chars().collect();
+    c.windows(3)
+        .any(|w| w[0].is_ascii_digit() && w[1] == mark && w[2].is_ascii_digit())
+}
+
+#[test]
+fn an_indonesian_quiz_writes_its_numbers_with_the_mark_it_tells_students_to_type() {
+    for (flag, mark, other, pct) in [("point", '.', ',', "0.1 %"), ("comma", ',', '.', "0,1 %")] {
+        let dir = generate(
+            &format!("id-{flag}"),
+            "moodle",
+            &["--lang", "id", "--decimal", flag],
+        );
+        let xml = std::fs::read_to_string(dir.join("quiz.xml")).unwrap();
+        let all = statements(&xml);
+        assert_eq!(all.len(), 14, "7 problems, 2 variants");
+        // every problem of seed 11 has a decimal (a near plane, a
+        // coefficient) or at least vectors, all written the same way
+        assert!(all.iter().any(|s| has_decimal(s, mark)), "{all:?}");
+        for s in &all {
+            assert!(!has_decimal(s, other), "--decimal {flag}: {s}");
+        }
+        let texts: Vec<String> = xml_questions(&xml).into_iter().map(|q| q.2).collect();
+        assert!(texts.iter().any(|t| t.contains(pct)), "--decimal {flag}");
+    }
+}

@@ -33,11 +33,10 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
     }
     // a report's format is known before any marking
     a.report.as_deref().map(report_format).transpose()?;
-    let indonesian = style.lang == Lang::Id;
     let paper = if a.file.is_dir() {
-        exam::read(&a.file, indonesian)?
+        exam::read(&a.file, style.lang)?
     } else {
-        Paper::one(ProblemIn::read(&a.file)?.localized(indonesian))
+        Paper::one(ProblemIn::read(&a.file)?.localized(style.lang))
     };
     let settings = check::Settings {
         follow_through: a.follow_through,

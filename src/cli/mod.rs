@@ -69,8 +69,7 @@ fn run_unchecked(cli: &Cli, outputs: &Outputs) -> Result<Report> {
     let p = cli.common.precision;
     let problem = match &cli.command {
         Command::Solve { file, .. } => {
-            let id = style_of(cli).lang == Lang::Id;
-            Problem::File(Box::new(ProblemIn::read(file)?.localized(id)))
+            Problem::File(Box::new(ProblemIn::read(file)?.localized(style_of(cli).lang)))
         }
         // The renderer computes at f32 (the calculator's precisions are for
         // explaining): another --precision is refused, not ignored.

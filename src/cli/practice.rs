@@ -25,10 +25,7 @@ pub fn run(a: &PracticeArgs, json: bool, style: &Style) -> Result<()> {
         (Some(f), _) if f.as_os_str() == "-" => {
             return Err(Error::why("file", ErrMsg::StdinHoldsAnswers))
         }
-        (Some(f), _) => {
-            let indonesian = style.lang == crate::report::lang::Lang::Id;
-            (ProblemIn::read(f)?.localized(indonesian), None, None)
-        }
+        (Some(f), _) => (ProblemIn::read(f)?.localized(style.lang), None, None),
         (None, Some(t)) => {
             let seed = a.seed.unwrap_or_else(clock_seed);
             let mut exam = generate::exam(&[t], a.difficulty, 1, seed)?;

@@ -3,7 +3,7 @@
 
 use crate::error::{Error, Result};
 use crate::input::fields::{toml_error, toml_reason, AngleIn, Num, Vec3In};
-use crate::msg::{ErrMsg, Erratum, Msg};
+use crate::msg::{ErrMsg, Erratum, Lang, Msg};
 use serde::de::{self, Deserializer};
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -220,12 +220,12 @@ impl ProblemIn {
         Ok(p)
     }
 
-    /// The problem as a reader of Bahasa Indonesia sees it (when
-    /// `indonesian`): `title_id`, `statement_id`, `source_id` and
-    /// `source_notes_id` in place of `title`, `statement`, `source` and
-    /// `source_notes` where the file gives them.
-    pub fn localized(mut self, indonesian: bool) -> ProblemIn {
-        if indonesian {
+    /// The problem as a reader of `lang` sees it: in Bahasa Indonesia
+    /// `title_id`, `statement_id`, `source_id` and `source_notes_id` in
+    /// place of `title`, `statement`, `source` and `source_notes` where the
+    /// file gives them.
+    pub fn localized(mut self, lang: Lang) -> ProblemIn {
+        if lang == Lang::Id {
             self.title = self.title_id.take().unwrap_or(self.title);
             self.statement = self.statement_id.take().or(self.statement);
             self.source = self.source_id.take().or(self.source);

@@ -27,7 +27,7 @@ use crate::num::Shown;
 use crate::stages::trace::{Step, Subst, Val};
 use crate::tutor::solution::{Asked, Compared, Comparison, Report};
 use comfy_table::{presets, Table};
-use lang::{tr, Lang};
+use lang::{tr, Lang, NumStyle};
 use serde_json::{json, Map, Value};
 
 /// How numbers are written in text output.
@@ -63,14 +63,14 @@ impl Style {
     pub fn tr<'a>(&self, en: &'a str, id: &'a str) -> &'a str {
         tr(self.lang, en, id)
     }
-    /// Decimal numbers in this style's language: `0.5` → `0,5` and list
-    /// separators `, ` → `; ` in Indonesian (so `(0,8; 0,6; 0)` reads
-    /// unambiguously); English text is unchanged.
+    /// How this style's language writes numbers.
+    pub fn nums(&self) -> NumStyle {
+        NumStyle::of(self.lang)
+    }
+    /// Values formatted the English way written in this style's language
+    /// ([`NumStyle::values`]): `(0.8, 0.6, 0)` → `(0,8; 0,6; 0)` in Indonesian.
     pub fn dec(&self, s: String) -> String {
-        match self.lang {
-            Lang::En => s,
-            Lang::Id => s.replace(", ", "; ").replace('.', ","),
-        }
+        self.nums().values(&s)
     }
 }
 
@@ -245,10 +245,7 @@ impl Style {
         let mut out = String::new();
         let pieces: Vec<&str> = s.form.split("{}").collect();
         for (i, piece) in pieces.iter().enumerate() {
-            out.push_str(&match self.lang {
-                Lang::En => piece.to_string(),
-                Lang::Id => piece.replace(", ", "; "),
-            });
+            out.push_str(&self.nums().separated(piece));
             let Some(a) = s.args.get(i).filter(|_| i + 1 < pieces.len()) else {
                 continue;
             };
@@ -287,8 +284,7 @@ impl Style {
             }
             Val::List(items) => {
                 let parts: Vec<String> = items.iter().map(|x| self.operand(x)).collect();
-                let sep = self.tr(", ", "; ");
-                format!("({})", parts.join(sep))
+                format!("({})", parts.join(self.nums().sep))
             }
             other => self.val_inline(other),
         }

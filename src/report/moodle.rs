@@ -24,10 +24,11 @@
 //! text and general feedback go into CDATA sections, a `]]>` inside split
 //! across two sections.
 
+use crate::msg::Msg;
 use crate::report::figure::{drawings::drawings, svg::to_svg};
-use crate::report::lang::{decimal, tr, Lang};
+use crate::report::lang::{tr, Lang, NumStyle};
 use crate::report::mistakes::mistake_text;
-use crate::report::words::words;
+use crate::report::words::{statement, words};
 use crate::report::Style;
 use crate::stages::trace::Val;
 use crate::tutor::generate::quiz::{Blank, Question, Quiz, Typed, Typing, Wrong};
@@ -49,6 +50,17 @@ pub enum Decimal {
     Point,
     /// `0,5`: for a Moodle with the Indonesian language pack.
     Comma,
+}
+
+impl Decimal {
+    /// How the quiz writes its numbers for students: with the mark they
+    /// are told to type.
+    pub fn nums(self) -> NumStyle {
+        match self {
+            Decimal::Point => NumStyle::POINT,
+            Decimal::Comma => NumStyle::COMMA,
+        }
+    }
 }
 
 /// How a quiz is written: the words' style and the decimal mark to type.
@@ -150,7 +162,10 @@ pub fn question_name(g: &Generated, i: usize, v: usize, lang: Lang) -> String {
 /// The statement and how to type the answers, as HTML.
 pub fn intro_html(question: &Question, q: &Quiz, w: &Written) -> String {
     let lang = w.style.lang;
-    let statement = words(&question.problem.statement, lang);
+    let statement = match &question.problem.statement {
+        Msg::Statement(s) => statement(s, lang, w.decimal.nums()),
+        other => words(other, lang),
+    };
     format!(
         "<p>{}</p><p><i>{}</i></p>",
         esc_text(statement.trim()),
@@ -164,7 +179,7 @@ pub fn intro_html(question: &Question, q: &Quiz, w: &Written) -> String {
 /// the question asks for them.
 pub fn instructions(kinds: &Typing, q: &Quiz, lang: Lang, mark: Decimal) -> String {
     let figs = q.figures;
-    let pct = decimal(&number(q.rel * 100.0), lang);
+    let pct = mark.nums().number(&number(q.rel * 100.0));
     let pixel = match (kinds.pixels, lang) {
         (false, _) => "",
         (true, Lang::En) => "; a pixel position within half a pixel, so a whole pixel is right",

@@ -2,7 +2,7 @@
 //! same in every language; only the text shows the labels in Bahasa
 //! Indonesia), the `--stats` table and the JSON's `stats`.
 
-use super::lang::{decimal, Lang};
+use super::lang::{Lang, NumStyle};
 use crate::input::scene::Shading;
 use crate::render::Stats;
 use crate::stages::trace::Val;
@@ -83,7 +83,7 @@ pub fn stats_text(run: &RenderRun, lang: Lang) -> String {
     let id = lang == Lang::Id;
     let width = if id { 42 } else { 34 };
     let mut s = format!("{}\n", if id { "Statistik" } else { "Stats" });
-    for (en, ind, v) in counts(st, shading, id).into_iter().chain(times(t, lang)) {
+    for (en, ind, v) in counts(st, shading, lang).into_iter().chain(times(t, lang)) {
         let k = if id { ind } else { en };
         s.push_str(&format!("  {k:<width$} {v}\n"));
     }
@@ -94,14 +94,14 @@ pub fn stats_text(run: &RenderRun, lang: Lang) -> String {
 type Row = (String, String, String);
 
 /// The counts of `--stats`.
-fn counts(st: &Stats, shading: Shading, id: bool) -> Vec<Row> {
+fn counts(st: &Stats, shading: Shading, lang: Lang) -> Vec<Row> {
     let r = |en: &str, ind: &str, v: u64| (en.to_string(), ind.to_string(), v.to_string());
     let name = format!("{shading:?}").to_lowercase();
-    let per_pixel = match (shading == Shading::Phong, id) {
-        (true, false) => "yes (Phong)".to_string(),
-        (true, true) => "ya (Phong)".to_string(),
-        (false, false) => format!("none ({name} shading)"),
-        (false, true) => format!("tidak ada ({name} shading)"),
+    let per_pixel = match (shading == Shading::Phong, lang) {
+        (true, Lang::En) => "yes (Phong)".to_string(),
+        (true, Lang::Id) => "ya (Phong)".to_string(),
+        (false, Lang::En) => format!("none ({name} shading)"),
+        (false, Lang::Id) => format!("tidak ada ({name} shading)"),
     };
     vec![
         r("triangles in", "segitiga masuk", st.tris_in),
@@ -167,7 +167,7 @@ fn counts(st: &Stats, shading: Shading, id: bool) -> Vec<Row> {
 /// The median times of `--stats`, in milliseconds.
 fn times(t: &Times, lang: Lang) -> Vec<Row> {
     let r = |en: &str, ind: &str, ms: f64| {
-        let v = decimal(&format!("{ms:.2} ms"), lang);
+        let v = NumStyle::of(lang).number(&format!("{ms:.2} ms"));
         (en.to_string(), ind.to_string(), v)
     };
     let (en, ind) = match t.runs {

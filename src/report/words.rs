@@ -2,19 +2,26 @@
 //! Bahasa Indonesia, with the course text's own terms (docs/glossary.md).
 //! One exhaustive match: a key without both languages does not compile.
 
-use super::lang::Lang;
+use super::lang::{Lang, NumStyle};
 use crate::msg::{Erratum, LightPart, Msg, Printed, SpotZone, Term, Trivial};
 
 mod drawn;
+pub use drawn::statement;
 pub mod errors;
 mod figure;
 pub mod labels;
 mod pixel;
 mod said;
 
-/// The words of `m` in `lang`.
+/// The words of `m` in `lang`: one exhaustive match over every key, so a
+/// key without its words does not compile (no wildcard arm, nothing falls
+/// through to "?" or an empty string at run time). A word table: long on
+/// purpose.
 pub fn words(m: &Msg, lang: Lang) -> String {
     let id = lang == Lang::Id;
+    let p = |en: &str, ind: &str| pick(lang, en, ind);
+    let f = |en: String, ind: String| if id { ind } else { en };
+    let n = |s: &str| nums(s, lang);
     match m {
         Msg::Math(s) => s.clone(),
         Msg::Written(en, ind) => match (lang, ind) {
@@ -23,202 +30,18 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         },
         Msg::Erratum(kind, why) => format!(
             "{}: {}",
-            printed(Printed::Differs(*kind), id),
+            printed(Printed::Differs(*kind), lang),
             words(why, lang)
         ),
-        Msg::Printed(p) => printed(*p, id),
-        Msg::Asked(parts) => asked(parts, id),
-        Msg::SecModeling
-        | Msg::SecViewing
-        | Msg::SecProjection
-        | Msg::SecWindowClip
-        | Msg::SecViewport
-        | Msg::SecLineClip(_)
-        | Msg::SecLighting
-        | Msg::SecPixel(..)
-        | Msg::SecLightFace
-        | Msg::SecLightVertex(_)
-        | Msg::SecLightPixel => section(m, id),
-        Msg::UpParallel(_)
-        | Msg::BehindWarn(_)
-        | Msg::ExactTooLarge(_)
-        | Msg::ErrFewDistinct(..)
-        | Msg::ErrHtmlCommand => warning(m, lang),
+        Msg::Printed(p) => printed(*p, lang),
+        Msg::Asked(parts) => asked(parts, lang),
         Msg::DrawnTitle(t) => drawn::title(*t, lang),
         Msg::Pixel(p) => pixel::words(p, lang),
-        Msg::Statement(s) => drawn::statement(s, lang),
+        Msg::Statement(s) => drawn::statement(s, lang, NumStyle::of(lang)),
         Msg::Figure(f) => figure::figure(f, lang),
         Msg::At(place, m) => format!("{place}: {}", words(m, lang)),
         Msg::Err(e) => errors::error(e, lang),
         Msg::Said(s) => said::said(s, lang),
-        Msg::ErrSamePoint(_)
-        | Msg::ErrUpZero
-        | Msg::ErrUpParallel(..)
-        | Msg::ErrFovy(_)
-        | Msg::ErrAspect(_)
-        | Msg::ErrNear(_)
-        | Msg::ErrCopPlane(..)
-        | Msg::ErrUnknownPoint(..)
-        | Msg::ErrBoxInverted(..)
-        | Msg::ErrCannotRead(..)
-        | Msg::ErrZeroUnit(_) => error(m, lang),
-        Msg::ErrNamedPoint(_)
-        | Msg::ErrPointName(_)
-        | Msg::ErrPointTwice(_)
-        | Msg::ErrNamedPair(_)
-        | Msg::ErrSize(_)
-        | Msg::ErrCopNeedsPlane
-        | Msg::ErrPlaneNeedsCop
-        | Msg::ErrChooseProjection
-        | Msg::ErrPointNeedsViewport => flag_error(m, id),
-        Msg::Parts(_) | Msg::Expected(_) | Msg::Unreadable(_) | Msg::WithinPct(_) => {
-            judged(m, lang)
-        }
-        _ => title(m, id)
-            .or_else(|| caption(m, id))
-            .or_else(|| note(m, id))
-            .unwrap_or_else(|| "?".to_string()),
-    }
-}
-
-fn pick(id: bool, en: &str, ind: &str) -> String {
-    if id { ind } else { en }.to_string()
-}
-
-/// What a problem asks, part by part (the parts of `input::problem::PARTS`).
-fn asked(parts: &[String], id: bool) -> String {
-    let part = |p: &str| {
-        let (en, ind) = match p {
-            "view" => (
-                "the camera basis u, v, n, the view matrix and the eye coordinates of the points",
-                "basis kamera u, v, n, matriks transformasi pandang, dan posisi titik-titik dalam koordinat kamera",
-            ),
-            "project" => (
-                "their projections onto the near plane",
-                "hasil proyeksinya terhadap near clipping plane",
-            ),
-            "window" => (
-                "the viewing window on the near plane (its edges, width and height) and which projected points lie inside the view volume",
-                "viewing window pada near clipping plane (tepi-tepinya, lebar dan tinggi) dan titik hasil proyeksi mana yang berada di dalam view volume",
-            ),
-            "viewport" => (
-                "the pixel of each point in the viewport",
-                "posisi piksel tiap titik pada viewport",
-            ),
-            "clip" => (
-                "the region codes of the ends and the result of clipping the segment",
-                "region code kedua ujung dan hasil clipping segmen garis",
-            ),
-            _ => (
-                "the colour at the point, term by term",
-                "warna hasil pencahayaan pada titik itu, komponen demi komponen",
-            ),
-        };
-        pick(id, en, ind)
-    };
-    let list: Vec<String> = parts.iter().map(|p| part(p)).collect();
-    format!("{}: {}.", pick(id, "Asked", "Ditanyakan"), list.join("; "))
-}
-
-/// How a printed answer compares, worded as what it is: a misprint,
-/// another convention, a rounding (docs/spec.md §5).
-fn printed(p: Printed, id: bool) -> String {
-    let p_ = |en: &str, ind: &str| pick(id, en, ind);
-    match p {
-        Printed::Agrees => p_("agrees", "sesuai"),
-        Printed::Differs(None) => p_("the printed answer is wrong", "jawaban yang tercetak salah"),
-        Printed::Differs(Some(Erratum::Misprint)) => {
-            p_("a misprint in the text", "salah cetak di teks")
-        }
-        Printed::Differs(Some(Erratum::Convention)) => p_(
-            "the text uses another convention",
-            "teks memakai konvensi lain",
-        ),
-        Printed::Differs(Some(Erratum::Rounding)) => p_(
-            "a rounding error in the text",
-            "kesalahan pembulatan di teks",
-        ),
-        Printed::NotAsked => p_(
-            "not computed in this run (not asked for)",
-            "tidak dihitung (tidak ditanyakan dalam soal ini)",
-        ),
-        Printed::NotComparable => p_("cannot be compared", "tidak dapat dibandingkan"),
-    }
-}
-
-/// Warnings, and the errors of generate and --html.
-fn warning(m: &Msg, lang: Lang) -> String {
-    let id = lang == Lang::Id;
-    match m {
-        Msg::UpParallel(a) => {
-            let a = super::lang::decimal(&format!("{a:.3e}"), lang);
-            if id {
-                format!("vektor up (Vup) hampir sejajar dengan arah pandang (sudut {a} rad): u dan v sangat peka terhadap masukan")
-            } else {
-                format!("the up vector is nearly parallel to the view direction (angle {a} rad): u and v are very sensitive to the inputs")
-            }
-        }
-        Msg::BehindWarn(n) => {
-            if id {
-                format!("{n} berada di belakang pusat proyeksi: bayangannya terbalik dan tidak terlihat")
-            } else {
-                format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen")
-            }
-        }
-        Msg::ExactTooLarge(n) => {
-            if id {
-                format!("nilai eksak yang akan memuat lebih dari {n} suku (banyak akar kuadrat yang berbeda) dihitung dengan f64 dan ditandai ≈, begitu pula yang diturunkan darinya")
-            } else {
-                format!("exact values that would hold more than {n} terms (many different square roots) were computed in f64 and are marked ≈, as is what follows from them")
-            }
-        }
-        Msg::ErrFewDistinct(topic, level, n) => {
-            if id {
-                format!("tidak dapat menarik soal {topic} tingkat {level} yang berbeda dari {n} soal sebelumnya: soal yang berbeda di tingkat ini tidak banyak; minta lebih sedikit soal (--count) atau tingkat lain (--difficulty)")
-            } else {
-                format!("could not draw a {topic} problem at {level} level unlike the {n} before it: there are few different ones at this level; ask for fewer problems (--count) or another --difficulty")
-            }
-        }
-        // Msg::ErrHtmlCommand
-        _ => pick(
-            id,
-            "writes the worked solution of basis, view, project, window, clip, shade, solve and render; for exams use generate --format html",
-            "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html",
-        ),
-    }
-}
-
-/// How an answer was judged, with values inside (`check`).
-fn judged(m: &Msg, lang: Lang) -> String {
-    let id = lang == Lang::Id;
-    match m {
-        Msg::Parts(parts) => parts
-            .iter()
-            .map(|(l, n)| format!("{l}: {}", words(n, lang)))
-            .collect::<Vec<_>>()
-            .join("; "),
-        Msg::Expected(v) => format!(
-            "{} {}",
-            pick(id, "expected", "seharusnya"),
-            super::lang::decimal(v, lang)
-        ),
-        Msg::Unreadable(why) => format!(
-            "{}: {}",
-            pick(id, "cannot be read", "tidak dapat dibaca"),
-            errors::number(why, lang)
-        ),
-        Msg::WithinPct(p) => format!(
-            "{} {}%",
-            pick(id, "within", "dalam batas"),
-            super::lang::decimal(p, lang)
-        ),
-        _ => String::new(),
-    }
-}
-
-fn section(m: &Msg, id: bool) -> String {
-    let p = |en: &str, ind: &str| pick(id, en, ind);
-    match m {
         Msg::SecModeling => p(
             "Step 1: modeling transformation",
             "Tahap 1: transformasi pemodelan",
@@ -266,48 +89,10 @@ fn section(m: &Msg, id: bool) -> String {
                 format!("Lighting of vertex {n} (lighting::shade)")
             }
         }
-        _ => p(
+        Msg::SecLightPixel => p(
             "Lighting of the pixel (lighting::shade)",
             "Pencahayaan piksel (lighting::shade)",
         ),
-    }
-}
-
-fn term(t: Term, id: bool) -> &'static str {
-    match (t, id) {
-        (Term::Ambient, _) => "ambient",
-        (Term::Diffuse, false) => "diffuse",
-        (Term::Diffuse, true) => "diffuse",
-        (Term::Specular, _) => "specular",
-    }
-}
-
-fn light_part(p: LightPart, id: bool) -> &'static str {
-    match (p, id) {
-        (LightPart::OutOfRange, false) => "out of range",
-        (LightPart::OutOfRange, true) => "di luar jangkauan",
-        (LightPart::Direction, false) => "direction to the light",
-        (LightPart::Direction, true) => "arah ke sumber cahaya",
-        (LightPart::Attenuation, false) => "attenuation",
-        (LightPart::Attenuation, true) => "redaman (Att)",
-        (LightPart::Incidence, false) => "angle of incidence: cos α = L·N",
-        (LightPart::Incidence, true) => "sudut datang: cos α = L·N",
-        (LightPart::Reflection, false) => "reflection R and cos β",
-        (LightPart::Reflection, true) => "vektor pantulan R dan cos β",
-        (LightPart::HalfVector, false) => "half vector H and N·H (Blinn)",
-        (LightPart::HalfVector, true) => "vektor setengah jalan H dan N·H (Blinn)",
-        (LightPart::Highlight, false) => "highlight",
-        (LightPart::Highlight, true) => "sorotan specular (highlight)",
-        (LightPart::Spot, false) => "spot factor",
-        (LightPart::Spot, true) => "faktor sorotan (Spot)",
-    }
-}
-
-/// Step titles.
-fn title(m: &Msg, id: bool) -> Option<String> {
-    let p = |en: &str, ind: &str| Some(pick(id, en, ind));
-    let f = |en: String, ind: String| Some(if id { ind } else { en });
-    match m {
         Msg::CamAxisN => p(
             "Camera axis n (points from the look-at point back to the eye)",
             "Sumbu kamera n (dari Pref kembali ke Peye)",
@@ -356,15 +141,6 @@ fn title(m: &Msg, id: bool) -> Option<String> {
             format!("Is {n}'' inside the view volume?"),
             format!("Apakah {n}'' di dalam view volume?"),
         ),
-        _ => title_lighting(m, id),
-    }
-}
-
-/// Step titles of lighting and rendering.
-fn title_lighting(m: &Msg, id: bool) -> Option<String> {
-    let p = |en: &str, ind: &str| Some(pick(id, en, ind));
-    let f = |en: String, ind: String| Some(if id { ind } else { en });
-    match m {
         Msg::UnitVector(n) => f(format!("Unit vector {n}"), format!("Vektor satuan {n}")),
         Msg::ViewerLocal => p(
             "Viewer direction (local viewer)",
@@ -372,8 +148,8 @@ fn title_lighting(m: &Msg, id: bool) -> Option<String> {
         ),
         Msg::Material => p("Material and model", "Material dan model"),
         Msg::Light((i, n), part) => {
-            let w = light_part(*part, id);
-            Some(if *n > 1 {
+            let w = light_part(*part, lang);
+            if *n > 1 {
                 format!(
                     "{} {}: {w}",
                     if id { "Sumber cahaya" } else { "Light" },
@@ -384,10 +160,10 @@ fn title_lighting(m: &Msg, id: bool) -> Option<String> {
                 c.next()
                     .map(|a| a.to_uppercase().chain(c).collect())
                     .unwrap_or_default()
-            })
+            }
         }
         Msg::TermStep(t) => {
-            let w = term(*t, id);
+            let w = term(*t, lang);
             let cap: String = w[..1].to_uppercase() + &w[1..];
             f(
                 format!("{cap} term, per channel"),
@@ -421,24 +197,6 @@ fn title_lighting(m: &Msg, id: bool) -> Option<String> {
             "Phong shading: interpolasi normal, posisi dan warna",
         ),
         Msg::PixelColour => p("Pixel colour", "Warna piksel"),
-        _ => None,
-    }
-}
-
-/// The planes in `clip::PLANES` order: the English name and the text's.
-pub const PLANE_NAMES: [(&str, &str); 6] = [
-    ("left", "kiri"),
-    ("right", "kanan"),
-    ("bottom", "bawah"),
-    ("top", "atas"),
-    ("front", "depan"),
-    ("back", "belakang"),
-];
-
-/// Formula captions that contain words.
-fn caption(m: &Msg, id: bool) -> Option<String> {
-    let p = |en: &str, ind: &str| Some(pick(id, en, ind));
-    match m {
         Msg::FOutOfRange => p(
             "d² = |Pl − P|² > range²  ⇒  the light is not evaluated",
             "d² = |Pl − P|² > range²  ⇒  cahaya tidak dihitung",
@@ -515,25 +273,17 @@ fn caption(m: &Msg, id: bool) -> Option<String> {
             "8-bit value = round(255 · clamp(C, 0, 1))",
             "nilai 8-bit = round(255 · clamp(C; 0; 1))",
         ),
-        _ => None,
-    }
-}
-
-/// Notes on a step.
-fn note(m: &Msg, id: bool) -> Option<String> {
-    let p = |en: &str, ind: &str| Some(pick(id, en, ind));
-    match m {
         Msg::AlreadyUnit => p("already a unit vector", "sudah merupakan vektor satuan"),
         Msg::Saturates => p(
             "a channel went past 1 (or below 0) and is clamped: the highlight saturates",
             "sebuah kanal melewati 1 (atau di bawah 0) dan dibatasi: sorotan (highlight) menjadi jenuh",
         ),
         Msg::InRange => p("every channel is already in [0, 1]", "setiap kanal sudah berada di [0, 1]"),
-        Msg::NoTermInModel(model, t) => Some(if id {
-            format!("model {model} tidak memiliki komponen {}", term(*t, id))
+        Msg::NoTermInModel(model, t) => if id {
+            format!("model {model} tidak memiliki komponen {}", term(*t, lang))
         } else {
-            format!("the {model} model has no {} term", term(*t, id))
-        }),
+            format!("the {model} model has no {} term", term(*t, lang))
+        },
         Msg::TextSetting => p(
             "the text's single white light and no global ambient: the sum is 1·(the text's factor)",
             "satu sumber cahaya putih seperti di teks dan tanpa ambient global: jumlahnya 1·(faktor dalam teks)",
@@ -592,14 +342,6 @@ fn note(m: &Msg, id: bool) -> Option<String> {
             "in the penumbra: between the cones",
             "di penumbra: di antara kedua kerucut",
         ),
-        _ => note_geometry(m, id),
-    }
-}
-
-/// Notes on the camera, projection, window, clipping and rendering steps.
-fn note_geometry(m: &Msg, id: bool) -> Option<String> {
-    let p = |en: &str, ind: &str| Some(pick(id, en, ind));
-    match m {
         Msg::BehindCentre => p(
             "behind the centre of projection: projected, but inverted and not visible",
             "di belakang pusat proyeksi: tetap diproyeksikan, tetapi terbalik dan tidak terlihat",
@@ -677,30 +419,11 @@ fn note_geometry(m: &Msg, id: bool) -> Option<String> {
             "outside the near/far planes: clipped",
             "di luar near/far plane: di-clip",
         ),
-        _ => check_note(m, id),
-    }
-}
-
-/// Numbers in a message parameter written in `lang` (`(1.5, 2, 3)` →
-/// `(1,5; 2; 3)` in Indonesian).
-fn nums(s: &str, lang: Lang) -> String {
-    match lang {
-        Lang::En => s.to_string(),
-        Lang::Id => s.replace(", ", "; ").replace('.', ","),
-    }
-}
-
-/// Error messages (the field is printed before them, as spelled).
-fn error(m: &Msg, lang: Lang) -> String {
-    let id = lang == Lang::Id;
-    let n = |s: &str| nums(s, lang);
-    let f = |en: String, ind: String| if id { ind } else { en };
-    match m {
         Msg::ErrSamePoint(p) => f(
             format!("the eye Pe and the look-at point Pr are the same point {p}"),
             format!("posisi mata Peye dan titik referensi Pref adalah titik yang sama {}", n(p)),
         ),
-        Msg::ErrUpZero => pick(id, "the up vector Vup is the zero vector", "vektor Vup adalah vektor nol"),
+        Msg::ErrUpZero => pick(lang, "the up vector Vup is the zero vector", "vektor Vup adalah vektor nol"),
         Msg::ErrUpParallel(up, d) => f(
             format!("the up vector Vup = {up} is parallel to the view direction Pe − Pr = {d}, so Vup × n = 0 and u is undefined"),
             format!("vektor Vup = {} sejajar dengan arah pandang Peye − Pref = {}, sehingga Vup × n = 0 dan u tidak terdefinisi", n(up), n(d)),
@@ -745,14 +468,6 @@ fn error(m: &Msg, lang: Lang) -> String {
             format!("{v} is the zero vector (0, 0, 0): it has no direction, so it cannot be made a unit vector"),
             format!("{v} adalah vektor nol (0; 0; 0): tidak memiliki arah, sehingga tidak dapat dijadikan vektor satuan"),
         ),
-        _ => words(m, lang),
-    }
-}
-
-/// Errors in the calculator's flags.
-fn flag_error(m: &Msg, id: bool) -> String {
-    let f = |en: String, ind: String| if id { ind } else { en };
-    match m {
         Msg::ErrNamedPoint(t) => f(
             format!("`{t}`: expected NAME=X,Y,Z, e.g. A=0,0,0"),
             format!("`{t}`: seharusnya NAMA=X,Y,Z, misalnya A=0,0,0"),
@@ -774,34 +489,25 @@ fn flag_error(m: &Msg, id: bool) -> String {
             format!("`{t}`: seharusnya LEBARxTINGGI, misalnya 200x100"),
         ),
         Msg::ErrCopNeedsPlane => pick(
-            id,
+            lang,
             "--cop needs --plane (the view plane z = ZVP)",
             "--cop memerlukan --plane (bidang pandang z = ZVP)",
         ),
         Msg::ErrPlaneNeedsCop => pick(
-            id,
+            lang,
             "--plane needs --cop (the centre of projection z = ZPRP)",
             "--plane memerlukan --cop (pusat proyeksi z = ZPRP)",
         ),
         Msg::ErrChooseProjection => pick(
-            id,
+            lang,
             "choose one projection: --d D, or --cop ZPRP --plane ZVP, or --ortho",
             "pilih satu proyeksi: --d D, atau --cop ZPRP --plane ZVP, atau --ortho",
         ),
         Msg::ErrPointNeedsViewport => pick(
-            id,
+            lang,
             "--point needs --viewport WxH to map points to pixels",
             "--point memerlukan --viewport WxH untuk memetakan titik ke piksel",
         ),
-        _ => String::new(),
-    }
-}
-
-/// How one answer was judged (`check`).
-fn check_note(m: &Msg, id: bool) -> Option<String> {
-    let p = |en: &str, ind: &str| Some(pick(id, en, ind));
-    let f = |en: String, ind: String| Some(if id { ind } else { en });
-    match m {
         Msg::ExpectOne => p("expected one number", "seharusnya satu bilangan"),
         Msg::ExpectList(n) => f(
             format!("expected a list of {n} values"),
@@ -858,8 +564,178 @@ fn check_note(m: &Msg, id: bool) -> Option<String> {
             format!("{s} significant figure(s), at least {need} required"),
             format!("{s} angka penting, paling sedikit {need} diperlukan"),
         ),
-        _ => None,
+        Msg::UpParallel(a) => {
+            let a = NumStyle::of(lang).number(&format!("{a:.3e}"));
+            if id {
+                format!("vektor up (Vup) hampir sejajar dengan arah pandang (sudut {a} rad): u dan v sangat peka terhadap masukan")
+            } else {
+                format!("the up vector is nearly parallel to the view direction (angle {a} rad): u and v are very sensitive to the inputs")
+            }
+        }
+        Msg::BehindWarn(n) => {
+            if id {
+                format!("{n} berada di belakang pusat proyeksi: bayangannya terbalik dan tidak terlihat")
+            } else {
+                format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen")
+            }
+        }
+        Msg::ExactTooLarge(n) => {
+            if id {
+                format!("nilai eksak yang akan memuat lebih dari {n} suku (banyak akar kuadrat yang berbeda) dihitung dengan f64 dan ditandai ≈, begitu pula yang diturunkan darinya")
+            } else {
+                format!("exact values that would hold more than {n} terms (many different square roots) were computed in f64 and are marked ≈, as is what follows from them")
+            }
+        }
+        Msg::ErrFewDistinct(topic, level, n) => {
+            if id {
+                format!("tidak dapat menarik soal {topic} tingkat {level} yang berbeda dari {n} soal sebelumnya: soal yang berbeda di tingkat ini tidak banyak; minta lebih sedikit soal (--count) atau tingkat lain (--difficulty)")
+            } else {
+                format!("could not draw a {topic} problem at {level} level unlike the {n} before it: there are few different ones at this level; ask for fewer problems (--count) or another --difficulty")
+            }
+        }
+        // Msg::ErrHtmlCommand
+        Msg::ErrHtmlCommand => pick(
+            lang,
+            "writes the worked solution of basis, view, project, window, clip, shade, solve and render; for exams use generate --format html",
+            "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html",
+        ),
+        Msg::Parts(parts) => parts
+            .iter()
+            .map(|(l, n)| format!("{l}: {}", words(n, lang)))
+            .collect::<Vec<_>>()
+            .join("; "),
+        Msg::Expected(v) => format!(
+            "{} {}",
+            pick(lang, "expected", "seharusnya"),
+            NumStyle::of(lang).number(v)
+        ),
+        Msg::Unreadable(why) => format!(
+            "{}: {}",
+            pick(lang, "cannot be read", "tidak dapat dibaca"),
+            errors::number(why, lang)
+        ),
+        Msg::WithinPct(p) => format!(
+            "{} {}%",
+            pick(lang, "within", "dalam batas"),
+            NumStyle::of(lang).number(p)
+        ),
     }
+}
+
+/// The words of `lang`, both written.
+fn pick(lang: Lang, en: &str, ind: &str) -> String {
+    super::lang::tr(lang, en, ind).to_string()
+}
+
+/// What a problem asks, part by part (the parts of `input::problem::PARTS`).
+fn asked(parts: &[String], lang: Lang) -> String {
+    let part = |p: &str| {
+        let (en, ind) = match p {
+            "view" => (
+                "the camera basis u, v, n, the view matrix and the eye coordinates of the points",
+                "basis kamera u, v, n, matriks transformasi pandang, dan posisi titik-titik dalam koordinat kamera",
+            ),
+            "project" => (
+                "their projections onto the near plane",
+                "hasil proyeksinya terhadap near clipping plane",
+            ),
+            "window" => (
+                "the viewing window on the near plane (its edges, width and height) and which projected points lie inside the view volume",
+                "viewing window pada near clipping plane (tepi-tepinya, lebar dan tinggi) dan titik hasil proyeksi mana yang berada di dalam view volume",
+            ),
+            "viewport" => (
+                "the pixel of each point in the viewport",
+                "posisi piksel tiap titik pada viewport",
+            ),
+            "clip" => (
+                "the region codes of the ends and the result of clipping the segment",
+                "region code kedua ujung dan hasil clipping segmen garis",
+            ),
+            _ => (
+                "the colour at the point, term by term",
+                "warna hasil pencahayaan pada titik itu, komponen demi komponen",
+            ),
+        };
+        pick(lang, en, ind)
+    };
+    let list: Vec<String> = parts.iter().map(|p| part(p)).collect();
+    format!(
+        "{}: {}.",
+        pick(lang, "Asked", "Ditanyakan"),
+        list.join("; ")
+    )
+}
+
+/// How a printed answer compares, worded as what it is: a misprint,
+/// another convention, a rounding (docs/spec.md §5).
+fn printed(p: Printed, lang: Lang) -> String {
+    let p_ = |en: &str, ind: &str| pick(lang, en, ind);
+    match p {
+        Printed::Agrees => p_("agrees", "sesuai"),
+        Printed::Differs(None) => p_("the printed answer is wrong", "jawaban yang tercetak salah"),
+        Printed::Differs(Some(Erratum::Misprint)) => {
+            p_("a misprint in the text", "salah cetak di teks")
+        }
+        Printed::Differs(Some(Erratum::Convention)) => p_(
+            "the text uses another convention",
+            "teks memakai konvensi lain",
+        ),
+        Printed::Differs(Some(Erratum::Rounding)) => p_(
+            "a rounding error in the text",
+            "kesalahan pembulatan di teks",
+        ),
+        Printed::NotAsked => p_(
+            "not computed in this run (not asked for)",
+            "tidak dihitung (tidak ditanyakan dalam soal ini)",
+        ),
+        Printed::NotComparable => p_("cannot be compared", "tidak dapat dibandingkan"),
+    }
+}
+
+fn term(t: Term, lang: Lang) -> &'static str {
+    match (t, lang) {
+        (Term::Ambient, _) => "ambient",
+        (Term::Diffuse, Lang::En) => "diffuse",
+        (Term::Diffuse, Lang::Id) => "diffuse",
+        (Term::Specular, _) => "specular",
+    }
+}
+
+fn light_part(p: LightPart, lang: Lang) -> &'static str {
+    match (p, lang) {
+        (LightPart::OutOfRange, Lang::En) => "out of range",
+        (LightPart::OutOfRange, Lang::Id) => "di luar jangkauan",
+        (LightPart::Direction, Lang::En) => "direction to the light",
+        (LightPart::Direction, Lang::Id) => "arah ke sumber cahaya",
+        (LightPart::Attenuation, Lang::En) => "attenuation",
+        (LightPart::Attenuation, Lang::Id) => "redaman (Att)",
+        (LightPart::Incidence, Lang::En) => "angle of incidence: cos α = L·N",
+        (LightPart::Incidence, Lang::Id) => "sudut datang: cos α = L·N",
+        (LightPart::Reflection, Lang::En) => "reflection R and cos β",
+        (LightPart::Reflection, Lang::Id) => "vektor pantulan R dan cos β",
+        (LightPart::HalfVector, Lang::En) => "half vector H and N·H (Blinn)",
+        (LightPart::HalfVector, Lang::Id) => "vektor setengah jalan H dan N·H (Blinn)",
+        (LightPart::Highlight, Lang::En) => "highlight",
+        (LightPart::Highlight, Lang::Id) => "sorotan specular (highlight)",
+        (LightPart::Spot, Lang::En) => "spot factor",
+        (LightPart::Spot, Lang::Id) => "faktor sorotan (Spot)",
+    }
+}
+
+/// The planes in `clip::PLANES` order: the English name and the text's.
+pub const PLANE_NAMES: [(&str, &str); 6] = [
+    ("left", "kiri"),
+    ("right", "kanan"),
+    ("bottom", "bawah"),
+    ("top", "atas"),
+    ("front", "depan"),
+    ("back", "belakang"),
+];
+
+/// Numbers in a message parameter written in `lang` (`(1.5, 2, 3)` →
+/// `(1,5; 2; 3)` in Indonesian; [`NumStyle::values`]).
+fn nums(s: &str, lang: Lang) -> String {
+    NumStyle::of(lang).values(s)
 }
 
 #[cfg(test)]

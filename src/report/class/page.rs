@@ -6,7 +6,7 @@
 use super::histogram;
 use super::lecturer::count;
 use crate::report::doc::Doc;
-use crate::report::lang::{decimal, tr, Lang};
+use crate::report::lang::{tr, Lang, NumStyle};
 use crate::report::mistakes::mistake_text;
 use crate::report::Style;
 use crate::tutor::check::Settings;
@@ -19,7 +19,9 @@ fn num(x: Option<f64>, lang: Lang) -> String {
     x.map_or("—".to_string(), |x| {
         // −0.001 is written 0.00, not −0.00
         let x = if x.abs() < 0.005 { 0.0 } else { x };
-        decimal(&format!("{x:.2}"), lang).replacen('-', "−", 1)
+        NumStyle::of(lang)
+            .number(&format!("{x:.2}"))
+            .replacen('-', "−", 1)
     })
 }
 
@@ -132,7 +134,7 @@ pub(super) fn document(
 }
 
 fn summary(doc: Doc, class: &Class, s: &Stats, settings: &Settings, lang: Lang) -> String {
-    let tol = decimal(&crate::report::fmt_dec(settings.tolerance * 100.0, 4), lang);
+    let tol = NumStyle::of(lang).number(&crate::report::fmt_dec(settings.tolerance * 100.0, 4));
     let ft = if settings.follow_through {
         tr(lang, "on", "aktif")
     } else {
@@ -549,7 +551,8 @@ fn students_section(doc: Doc, class: &Class, s: &Stats, lang: Lang) -> String {
             if class.exam {
                 row.push(sh.variant.map(|v| v.to_string()).unwrap_or_default());
             }
-            let score = decimal(&crate::report::fmt_dec(sh.score().unwrap_or(0.0), 4), lang);
+            let score =
+                NumStyle::of(lang).number(&crate::report::fmt_dec(sh.score().unwrap_or(0.0), 4));
             row.push(format!("{score}/{}", sh.total().unwrap_or(0)));
             let codes: Vec<&str> = s
                 .mistakes

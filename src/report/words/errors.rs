@@ -1,7 +1,8 @@
 //! The words of every error key (`crate::msg::ErrMsg`), in English and in
 //! Bahasa Indonesia. Field names, keys, flags and paths are printed as they
-//! are spelled; numbers in Indonesian take the decimal comma. One match per
-//! family, each exhaustive over its keys.
+//! are spelled; numbers in Indonesian take the decimal comma. One exhaustive
+//! match per key enum (`ErrMsg`, `NumErr`, `TomlErr`, …), none with a
+//! wildcard arm: the compiler checks that every key has its words.
 
 use super::nums;
 use crate::msg::{Bound, ClapErr, ErrMsg, IoWhy, NumErr, Thing, TomlErr, Twice, Want};
@@ -21,93 +22,350 @@ fn say(lang: Lang, en: &str, id: &str) -> String {
     if lang == Lang::Id { id } else { en }.to_string()
 }
 
-/// The words of an error key.
+/// The words of an error key: one exhaustive match over every key (no
+/// wildcard arm), so a key without its words does not compile. A word
+/// table: long on purpose.
 pub fn error(m: &ErrMsg, lang: Lang) -> String {
+    let f = |en: String, id: String| pick(lang, en, id);
+    let w = |why: &IoWhy| io_why(why, lang);
+    let n = |s: &str| nums(s, lang);
     match m {
         ErrMsg::Num(e) => number(e, lang),
         ErrMsg::Toml(e) => toml(e, lang),
         ErrMsg::Clap(e, en) => clap(e, en, lang),
         ErrMsg::MustBe(b, got) => must_be(b, got, lang),
         ErrMsg::Twice(t) => twice(*t, lang),
-        ErrMsg::CannotRead(..)
-        | ErrMsg::CannotReadStdin(_)
-        | ErrMsg::CannotWrite(..)
-        | ErrMsg::CannotCreate(..)
-        | ErrMsg::CannotWriteStdout(_)
-        | ErrMsg::StdoutClosed
-        | ErrMsg::ExistsForce(_)
-        | ErrMsg::NamesFolder(_)
-        | ErrMsg::IsLink(_)
-        | ErrMsg::IsInput(_)
-        | ErrMsg::NotOwn(..)
-        | ErrMsg::NotDirectory(_)
-        | ErrMsg::NotMarked(..)
-        | ErrMsg::AnswerFileTooLarge(..)
-        | ErrMsg::Man(_) => files(m, lang),
-        ErrMsg::ObjUnreadable(..)
-        | ErrMsg::ObjInvalid(..)
-        | ErrMsg::ObjNoFaces(_)
-        | ErrMsg::ObjNotFinite(_)
-        | ErrMsg::FaceVertex
-        | ErrMsg::FormulaNotFinite
-        | ErrMsg::TooManyTriangles(..)
-        | ErrMsg::TooManyLights(..)
-        | ErrMsg::NeedsColour
-        | ErrMsg::NoObjects
-        | ErrMsg::CameraNeedsPerspective
-        | ErrMsg::ImageSize(..)
-        | ErrMsg::Needs(..)
-        | ErrMsg::NoSuchKey(..)
-        | ErrMsg::NeededToRender => scene(m, lang),
-        ErrMsg::Channel(..)
-        | ErrMsg::Attenuation(..)
-        | ErrMsg::Cones(..)
-        | ErrMsg::NoLightTable(_)
-        | ErrMsg::ColorMissing
-        | ErrMsg::NormalMissing
-        | ErrMsg::CameraAtPoint
-        | ErrMsg::NoLight
-        | ErrMsg::LightAtPoint
-        | ErrMsg::NotApplicable(..) => lights(m, lang),
-        ErrMsg::PlaneThroughOrigin
-        | ErrMsg::PlaneThroughCop(_)
-        | ErrMsg::ImageTooLarge(..)
-        | ErrMsg::Viewport(..)
-        | ErrMsg::VVanished
-        | ErrMsg::EyeLookTooLarge(..)
-        | ErrMsg::TranslationTooLarge(_)
-        | ErrMsg::EyeCoordsTooLarge(..)
-        | ErrMsg::ResultNotFinite(_) => stages(m, lang),
-        ErrMsg::UnknownPart(..)
-        | ErrMsg::ExpectedXyz(_)
-        | ErrMsg::NothingToSolve
-        | ErrMsg::NoCameraTable
-        | ErrMsg::ProjectionNeedsNear
-        | ErrMsg::WindowNeeds
-        | ErrMsg::LightsNeedShade => problem(m, lang),
-        ErrMsg::NoTopic
-        | ErrMsg::NoDrawing
-        | ErrMsg::NoProblemDrawn
-        | ErrMsg::StdinHoldsAnswers
-        | ErrMsg::GiveProblem
-        | ErrMsg::TooManyProblems(..)
-        | ErrMsg::BothStdin
-        | ErrMsg::NoPrinted(_)
-        | ErrMsg::CsvAndJson
-        | ErrMsg::NoAnswerFiles(_)
-        | ErrMsg::NoExam(_)
-        | ErrMsg::NoVariant(_)
-        | ErrMsg::NotAVariant(..)
-        | ErrMsg::NotAProblemOfExam(..)
-        | ErrMsg::ReportFormat(_)
-        | ErrMsg::ReportNeedsClass
-        | ErrMsg::PixelOutside(..)
-        | ErrMsg::PixelText(_)
-        | ErrMsg::NothingRendered
-        | ErrMsg::Threads(_)
-        | ErrMsg::RenderPrecision
-        | ErrMsg::NotTaken(_)
-        | ErrMsg::OwnOutput => commands(m, lang),
+        ErrMsg::CannotRead(p, why) => f(
+            format!("cannot read {p}: {}", w(why)),
+            format!("tidak dapat membaca {p}: {}", w(why)),
+        ),
+        ErrMsg::CannotReadStdin(why) => f(
+            format!("cannot read standard input: {}", w(why)),
+            format!("tidak dapat membaca masukan standar: {}", w(why)),
+        ),
+        ErrMsg::CannotWrite(p, why) => f(
+            format!("cannot write {p}: {}", w(why)),
+            format!("tidak dapat menulis {p}: {}", w(why)),
+        ),
+        ErrMsg::CannotCreate(p, why) => f(
+            format!("cannot create {p}: {}", w(why)),
+            format!("tidak dapat membuat {p}: {}", w(why)),
+        ),
+        ErrMsg::CannotWriteStdout(why) => f(
+            format!("cannot write to standard output: {}", w(why)),
+            format!("tidak dapat menulis ke keluaran standar: {}", w(why)),
+        ),
+        ErrMsg::StdoutClosed => f(
+            "standard output is closed, so the results would be lost (to discard them, send them to /dev/null)".into(),
+            "keluaran standar tertutup, jadi hasilnya akan hilang (untuk membuangnya, arahkan ke /dev/null)".into(),
+        ),
+        ErrMsg::ExistsForce(p) => f(
+            format!("{p} already exists: give --force to replace it, or choose another name"),
+            format!("{p} sudah ada: berikan --force untuk menggantinya, atau pilih nama lain"),
+        ),
+        ErrMsg::NamesFolder(p) => f(
+            format!("{p} is a folder, not a file name: name the file to write (such as {}figure.svg)", folder_prefix(p)),
+            format!("{p} adalah folder, bukan nama berkas: sebutkan berkas yang akan ditulis (misalnya {}gambar.svg)", folder_prefix(p)),
+        ),
+        ErrMsg::IsLink(p) => f(
+            format!("{p} is a symbolic link: grafika never writes through a link nor replaces one; name the file itself or another name"),
+            format!("{p} adalah tautan simbolik: grafika tidak pernah menulis melalui tautan atau menggantinya; sebutkan berkasnya sendiri atau nama lain"),
+        ),
+        ErrMsg::IsInput(p) => f(
+            format!("{p} is one of this command's own inputs (the same file, links followed): it is never overwritten, even with --force"),
+            format!("{p} adalah salah satu masukan perintah ini (berkas yang sama, tautan diikuti): tidak pernah ditimpa, juga dengan --force"),
+        ),
+        ErrMsg::NotOwn(p, marker) => f(
+            format!("{p} was not written by grafika generate (it is not listed in {marker}, or holds other files): --force replaces only generate's own earlier output; move it away or choose another --out"),
+            format!("{p} tidak ditulis oleh grafika generate (tidak tercantum di {marker}, atau berisi berkas lain): --force hanya mengganti keluaran generate sendiri sebelumnya; pindahkan atau pilih --out yang lain"),
+        ),
+        ErrMsg::NotDirectory(p) => f(
+            format!("{p} exists and is not a directory"),
+            format!("{p} sudah ada dan bukan direktori"),
+        ),
+        ErrMsg::AnswerFileTooLarge(p, n, max) => f(
+            format!("{p} has {n} bytes; an answer file may have at most {max} (it is refused before it is read as TOML)"),
+            format!("{p} berukuran {n} bita; berkas jawaban paling besar {max} bita (ditolak sebelum dibaca sebagai TOML)"),
+        ),
+        ErrMsg::NotMarked(n, of, which) => f(
+            format!("{n} of the {of} answer files could not be marked (see the error in each one's row): {which}"),
+            format!("{n} dari {of} berkas jawaban tidak dapat dinilai (lihat galat di baris masing-masing): {which}"),
+        ),
+        ErrMsg::Man(why) => f(
+            format!("cannot write the manual page: {why}"),
+            format!("tidak dapat menulis halaman manual: {why}"),
+        ),
+        ErrMsg::ObjUnreadable(p, why) => f(
+            format!("cannot read the OBJ file {p}: {}", w(why)),
+            format!("tidak dapat membaca berkas OBJ {p}: {}", w(why)),
+        ),
+        ErrMsg::ObjInvalid(p, kind, en) => f(
+            format!("{p} is not a valid OBJ file: {en}"),
+            format!("{p} bukan berkas OBJ yang sah: {}", obj_reason(kind, en)),
+        ),
+        ErrMsg::ObjNoFaces(p) => f(format!("{p} has no faces"), format!("{p} tidak memiliki bidang (face)")),
+        ErrMsg::ObjNotFinite(p) => f(
+            format!("{p} has a vertex that is not a finite number"),
+            format!("{p} memiliki verteks yang bukan bilangan berhingga"),
+        ),
+        ErrMsg::FaceVertex => say(
+            lang,
+            "a face refers to a vertex that does not exist",
+            "sebuah bidang (face) merujuk ke verteks yang tidak ada",
+        ),
+        ErrMsg::FormulaNotFinite => say(
+            lang,
+            "the formula gives a value that is not a finite number",
+            "rumus menghasilkan nilai yang bukan bilangan berhingga",
+        ),
+        ErrMsg::TooManyTriangles(n, max) => f(
+            format!("the scene's objects have {n} triangles together; the renderer takes at most {max} per scene (refused before any mesh is built)"),
+            format!("objek-objek scene ini bersama-sama memiliki {n} segitiga; renderer menerima paling banyak {max} per scene (ditolak sebelum mesh dibuat)"),
+        ),
+        ErrMsg::TooManyLights(n, max) => f(
+            format!("the file has {n} lights; grafika takes at most {max} per file (as Direct3D 9 does)"),
+            format!("file ini memiliki {n} cahaya; grafika menerima paling banyak {max} per file (seperti Direct3D 9)"),
+        ),
+        ErrMsg::NeedsColour => say(lang, "needs at least one colour", "memerlukan paling sedikit satu warna"),
+        ErrMsg::NoObjects => say(
+            lang,
+            "the scene has no objects: add at least one [[object]] table (cone, sphere, cylinder, box, plane or obj)",
+            "scene tidak memiliki objek: tambahkan paling sedikit satu tabel [[object]] (cone, sphere, cylinder, box, plane atau obj)",
+        ),
+        ErrMsg::CameraNeedsPerspective => say(
+            lang,
+            "a [camera] needs a [perspective] with fovy, near and far",
+            "[camera] memerlukan [perspective] dengan fovy, near dan far",
+        ),
+        ErrMsg::ImageSize(w, h) => f(
+            format!("width and height must be from 1 to 8192 pixels, got {w}x{h}"),
+            format!("lebar dan tinggi harus 1 sampai 8192 piksel, diberikan {w}x{h}"),
+        ),
+        ErrMsg::Needs(thing, key) => needs(thing, key, lang),
+        ErrMsg::NoSuchKey(t, k, all) => f(
+            format!("a {t} has no `{k}` (its fields: {all})"),
+            format!("objek {t} tidak memiliki `{k}` (kuncinya: {all})"),
+        ),
+        ErrMsg::NeededToRender => say(lang, "is needed to render", "diperlukan untuk me-render"),
+        ErrMsg::NoLightTable(p) => f(
+            format!("{p} has no [[light]] table"),
+            format!("{p} tidak memiliki tabel [[light]]"),
+        ),
+        ErrMsg::ColorMissing => say(
+            lang,
+            "the surface color Cs is missing (R,G,B in [0, 1])",
+            "warna permukaan Cs tidak ada (R,G,B di [0, 1])",
+        ),
+        ErrMsg::NormalMissing => say(
+            lang,
+            "the surface normal N is missing",
+            "normal permukaan N tidak ada",
+        ),
+        ErrMsg::CameraAtPoint => say(
+            lang,
+            "the camera is at the surface point: no direction to the viewer",
+            "kamera berada di titik permukaan: tidak ada arah ke pengamat",
+        ),
+        ErrMsg::NoLight => say(
+            lang,
+            "no light: give L (toward the light) or a lights file",
+            "tidak ada cahaya: berikan L (menuju sumber cahaya) atau berkas cahaya",
+        ),
+        ErrMsg::LightAtPoint => say(
+            lang,
+            "the light is at the surface point itself: no direction to it",
+            "sumber cahaya berada di titik permukaan itu sendiri: tidak ada arah ke sana",
+        ),
+        ErrMsg::NotApplicable(k, kind) => f(
+            format!("`{k}` does not apply to a {kind} light"),
+            format!("`{k}` tidak berlaku untuk sumber cahaya {kind}"),
+        ),
+        ErrMsg::Channel(ch, v) => {
+            let ind = match ch.as_str() {
+                "red" => "merah",
+                "green" => "hijau",
+                _ => "biru",
+            };
+            f(
+                format!("color channels must lie in [0, 1]; {ch} is {v}"),
+                format!(
+                    "kanal warna harus berada di [0, 1]; {ind} bernilai {}",
+                    n(v)
+                ),
+            )
+        }
+        ErrMsg::Attenuation(a0, a1, a2) => f(
+            format!("a0, a1, a2 must be ≥ 0 and not all 0, got ({a0}, {a1}, {a2})"),
+            format!(
+                "a0, a1, a2 harus ≥ 0 dan tidak semuanya 0, diberikan ({}; {}; {})",
+                n(a0),
+                n(a1),
+                n(a2)
+            ),
+        ),
+        ErrMsg::Cones(t, p) => f(
+            format!("the cone angles need 0 ≤ theta ≤ phi ≤ 180°, got theta = {t}, phi = {p}"),
+            format!(
+                "sudut kerucut harus 0 ≤ theta ≤ phi ≤ 180°, diberikan theta = {}, phi = {}",
+                n(t),
+                n(p)
+            ),
+        ),
+        ErrMsg::PlaneThroughOrigin => say(
+            lang,
+            "the view plane z = 0 passes through the centre of projection at the origin",
+            "bidang proyeksi z = 0 melalui pusat proyeksi di titik asal",
+        ),
+        ErrMsg::PlaneThroughCop(z) => f(
+            format!("the view plane z = {z} passes through the centre of projection"),
+            format!("bidang proyeksi z = {} melalui pusat proyeksi", n(z)),
+        ),
+        ErrMsg::ImageTooLarge(p, prec) => f(
+            format!("the image of {p} is too large for {prec} precision (the point is too near the plane of the centre of projection)"),
+            format!("bayangan {p} terlalu besar untuk presisi {prec} (titik itu terlalu dekat dengan bidang pusat proyeksi)"),
+        ),
+        ErrMsg::Viewport(w, h) => f(
+            format!("width and height must be positive, got {w}x{h}"),
+            format!("lebar dan tinggi harus positif, diberikan {}x{}", n(w), n(h)),
+        ),
+        ErrMsg::VVanished => say(lang, "v = n × u vanished", "v = n × u menjadi nol"),
+        ErrMsg::EyeLookTooLarge(d, prec) => f(
+            format!("Pe − Pr = {d} is too large for {prec} precision"),
+            format!("Peye − Pref = {} terlalu besar untuk presisi {prec}", n(d)),
+        ),
+        ErrMsg::TranslationTooLarge(prec) => f(
+            format!("the view matrix's translation −(u·Pe, v·Pe, n·Pe) is too large for {prec} precision"),
+            format!("translasi matriks pandang −(u·Pe; v·Pe; n·Pe) terlalu besar untuk presisi {prec}"),
+        ),
+        ErrMsg::EyeCoordsTooLarge(p, prec) => f(
+            format!("the eye coordinates of {p} are too large for {prec} precision"),
+            format!("koordinat kamera titik {p} terlalu besar untuk presisi {prec}"),
+        ),
+        ErrMsg::ResultNotFinite(prec) if prec == "exact" => f(
+            "the result is exact but beyond the range of f64 (about 1.8e308), so it has no decimal or JSON number to give (scale the inputs)".into(),
+            "hasilnya eksak tetapi di luar jangkauan f64 (sekitar 1,8e308), jadi tidak ada desimal atau bilangan JSON untuknya (skalakan masukan)".into(),
+        ),
+        ErrMsg::ResultNotFinite(prec) => f(
+            format!("the result is not a finite number at {prec} precision: an input overflows or underflows the floats (scale the inputs, or use --precision exact)"),
+            format!("hasilnya bukan bilangan berhingga pada presisi {prec}: sebuah masukan melampaui batas bilangan floating point (skalakan masukan, atau gunakan --precision exact)"),
+        ),
+        ErrMsg::UnknownPart(a, all) => f(
+            format!("unknown part `{a}`; the parts are {all}"),
+            format!("bagian `{a}` tidak dikenal; bagian-bagiannya adalah {all}"),
+        ),
+        ErrMsg::ExpectedXyz(e) => f(
+            format!("expected [x, y, z]: {}", toml(e, lang)),
+            format!("seharusnya [x, y, z]: {}", toml(e, lang)),
+        ),
+        ErrMsg::NothingToSolve => say(
+            lang,
+            "nothing to solve: the file has no part that its data allow (camera + points, perspective, clip, shade)",
+            "tidak ada yang dapat diselesaikan: berkas ini tidak memiliki bagian yang datanya lengkap (camera + points, perspective, clip, shade)",
+        ),
+        ErrMsg::NoCameraTable => say(
+            lang,
+            "the problem asks for the view but has no [camera] table",
+            "soal meminta transformasi pandang tetapi tidak memiliki tabel [camera]",
+        ),
+        ErrMsg::ProjectionNeedsNear => say(
+            lang,
+            "projection needs perspective.near (or perspective.d)",
+            "proyeksi memerlukan perspective.near (atau perspective.d)",
+        ),
+        ErrMsg::WindowNeeds => say(
+            lang,
+            "the window needs perspective.fovy, perspective.aspect and perspective.near",
+            "viewing window memerlukan perspective.fovy, perspective.aspect dan perspective.near",
+        ),
+        ErrMsg::LightsNeedShade => say(
+            lang,
+            "[[light]] tables need a [shade] table (normal, color, ...)",
+            "tabel [[light]] memerlukan tabel [shade] (normal, color, ...)",
+        ),
+        ErrMsg::NoTopic => say(lang, "give at least one topic", "berikan paling sedikit satu topik"),
+        ErrMsg::NoDrawing => say(
+            lang,
+            "could not draw a non-degenerate problem in 500 tries",
+            "tidak dapat membuat soal yang tidak degenerate dalam 500 percobaan",
+        ),
+        ErrMsg::NoProblemDrawn => say(lang, "no problem drawn", "tidak ada soal yang dibuat"),
+        ErrMsg::StdinHoldsAnswers => say(
+            lang,
+            "standard input holds the answers: give the problem as a file",
+            "masukan standar berisi jawaban: berikan soal sebagai berkas",
+        ),
+        ErrMsg::GiveProblem => say(lang, "give a problem file or --topic", "berikan berkas soal atau --topic"),
+        ErrMsg::TooManyProblems(n, c, v, mb, max) => f(
+            format!("{n} problems ({c} × {v}, about {mb} MB) is more than the {max} written without --force"),
+            format!("{n} soal ({c} × {v}, sekitar {mb} MB) lebih dari {max} yang ditulis tanpa --force"),
+        ),
+        ErrMsg::BothStdin => say(
+            lang,
+            "the problem and the answers cannot both come from standard input (-)",
+            "soal dan jawaban tidak dapat sama-sama berasal dari masukan standar (-)",
+        ),
+        ErrMsg::NoPrinted(p) => f(format!("{p} has no [printed] table"), format!("{p} tidak memiliki tabel [printed]")),
+        ErrMsg::CsvAndJson => say(
+            lang,
+            "--csv - and --json would both write to standard output: give --csv a file name",
+            "--csv - dan --json sama-sama akan menulis ke keluaran standar: berikan nama berkas untuk --csv",
+        ),
+        ErrMsg::NoAnswerFiles(d) => f(
+            format!("{d} holds no .toml answer files"),
+            format!("{d} tidak berisi berkas jawaban .toml"),
+        ),
+        ErrMsg::NoExam(d) => f(
+            format!("{d} holds no problem-01.toml (nor variant-01/): give a problem file or a folder written by grafika generate"),
+            format!("{d} tidak berisi problem-01.toml (maupun variant-01/): berikan berkas soal atau folder yang ditulis grafika generate"),
+        ),
+        ErrMsg::NoVariant(n) => f(
+            format!("the exam has {n} variants: say which one these answers are for with `variant = N` at the top of the file"),
+            format!("ujian ini memiliki {n} varian: tuliskan varian mana yang dijawab dengan `variant = N` di awal berkas"),
+        ),
+        ErrMsg::NotAVariant(v, n) => f(
+            format!("`{v}` is not a variant of the exam (1 to {n})"),
+            format!("`{v}` bukan varian ujian ini (1 sampai {n})"),
+        ),
+        ErrMsg::NotAProblemOfExam(k, names) => f(
+            format!("`{k}` is not in a table of a problem of the exam ([{names}])"),
+            format!("`{k}` tidak berada di tabel soal ujian ini ([{names}])"),
+        ),
+        ErrMsg::ReportFormat(p) => f(
+            format!("{p}: the report's format comes from its extension: .html, .md, .json or .csv"),
+            format!("{p}: format laporan ditentukan oleh ekstensinya: .html, .md, .json atau .csv"),
+        ),
+        ErrMsg::ReportNeedsClass => say(
+            lang,
+            "a class report needs --answers DIR (a folder of answer files)",
+            "laporan kelas memerlukan --answers DIR (folder berkas jawaban)",
+        ),
+        ErrMsg::PixelOutside(x, y, w, h) => f(
+            format!("({x}, {y}) is outside the {w}x{h} image"),
+            format!("({x}; {y}) berada di luar gambar {w}x{h}"),
+        ),
+        ErrMsg::PixelText(s) => f(
+            format!("expected X,Y (whole pixel numbers), got `{s}`"),
+            format!("seharusnya X,Y (nomor piksel bulat), diberikan `{s}`"),
+        ),
+        ErrMsg::NothingRendered => say(lang, "nothing rendered", "tidak ada yang di-render"),
+        ErrMsg::Threads(why) => f(
+            format!("cannot start the threads: {why}"),
+            format!("tidak dapat memulai thread: {why}"),
+        ),
+        ErrMsg::RenderPrecision => say(
+            lang,
+            "render always computes at f32 (--precision is for the calculator's worked steps): leave it out",
+            "render selalu menghitung dengan f32 (--precision untuk langkah-langkah kalkulator): hilangkan opsi itu",
+        ),
+        ErrMsg::NotTaken(c) => f(
+            format!("grafika {c} does not take this option (grafika {c} --help lists those it takes)"),
+            format!("grafika {c} tidak menerima opsi ini (grafika {c} --help mendaftar opsi yang diterimanya)"),
+        ),
+        ErrMsg::OwnOutput => say(
+            lang,
+            "check, generate, bench, practice, completions and man print their own output: use main_with_args",
+            "check, generate, bench, practice, completions dan man mencetak keluarannya sendiri: gunakan main_with_args",
+        ),
     }
 }
 
@@ -165,14 +423,6 @@ pub fn number(e: &NumErr, lang: Lang) -> String {
         ),
         NumErr::NotANumber(x) => f(format!("`{x}` is not a number"), format!("`{x}` bukan bilangan")),
         NumErr::NotFiniteLiteral(x) => f(format!("{x} is not a finite number"), format!("{} bukan bilangan berhingga", n(x))),
-        _ => number_more(e, lang),
-    }
-}
-
-/// Evaluation and height-formula errors.
-fn number_more(e: &NumErr, lang: Lang) -> String {
-    let f = |en: String, id: String| pick(lang, en, id);
-    match e {
         NumErr::NegativeRoot(x) => f(
             format!("sqrt({x}) takes the square root of a negative number"),
             format!("sqrt({x}) mengambil akar kuadrat dari bilangan negatif"),
@@ -204,17 +454,7 @@ fn number_more(e: &NumErr, lang: Lang) -> String {
             format!("the formula has more than {max} operations (at character {at})"),
             format!("rumus memiliki lebih dari {max} operasi (di karakter ke-{at})"),
         ),
-        NumErr::Quoted(..)
-        | NumErr::TooLong(..)
-        | NumErr::Empty
-        | NumErr::Expected(..)
-        | NumErr::TooDeep(..)
-        | NumErr::TooManyOps(..)
-        | NumErr::Count(..)
-        | NumErr::Component(..)
-        | NumErr::NotFinite(..)
-        | NumErr::NotANumber(_)
-        | NumErr::NotFiniteLiteral(_) => number(e, lang),
+
     }
 }
 
@@ -327,136 +567,6 @@ fn folder_prefix(p: &str) -> String {
     }
 }
 
-/// Files that cannot be read, written or created.
-fn files(m: &ErrMsg, lang: Lang) -> String {
-    let f = |en: String, id: String| pick(lang, en, id);
-    let w = |why: &IoWhy| io_why(why, lang);
-    match m {
-        ErrMsg::CannotRead(p, why) => f(
-            format!("cannot read {p}: {}", w(why)),
-            format!("tidak dapat membaca {p}: {}", w(why)),
-        ),
-        ErrMsg::CannotReadStdin(why) => f(
-            format!("cannot read standard input: {}", w(why)),
-            format!("tidak dapat membaca masukan standar: {}", w(why)),
-        ),
-        ErrMsg::CannotWrite(p, why) => f(
-            format!("cannot write {p}: {}", w(why)),
-            format!("tidak dapat menulis {p}: {}", w(why)),
-        ),
-        ErrMsg::CannotCreate(p, why) => f(
-            format!("cannot create {p}: {}", w(why)),
-            format!("tidak dapat membuat {p}: {}", w(why)),
-        ),
-        ErrMsg::CannotWriteStdout(why) => f(
-            format!("cannot write to standard output: {}", w(why)),
-            format!("tidak dapat menulis ke keluaran standar: {}", w(why)),
-        ),
-        ErrMsg::StdoutClosed => f(
-            "standard output is closed, so the results would be lost (to discard them, send them to /dev/null)".into(),
-            "keluaran standar tertutup, jadi hasilnya akan hilang (untuk membuangnya, arahkan ke /dev/null)".into(),
-        ),
-        ErrMsg::ExistsForce(p) => f(
-            format!("{p} already exists: give --force to replace it, or choose another name"),
-            format!("{p} sudah ada: berikan --force untuk menggantinya, atau pilih nama lain"),
-        ),
-        ErrMsg::NamesFolder(p) => f(
-            format!("{p} is a folder, not a file name: name the file to write (such as {}figure.svg)", folder_prefix(p)),
-            format!("{p} adalah folder, bukan nama berkas: sebutkan berkas yang akan ditulis (misalnya {}gambar.svg)", folder_prefix(p)),
-        ),
-        ErrMsg::IsLink(p) => f(
-            format!("{p} is a symbolic link: grafika never writes through a link nor replaces one; name the file itself or another name"),
-            format!("{p} adalah tautan simbolik: grafika tidak pernah menulis melalui tautan atau menggantinya; sebutkan berkasnya sendiri atau nama lain"),
-        ),
-        ErrMsg::IsInput(p) => f(
-            format!("{p} is one of this command's own inputs (the same file, links followed): it is never overwritten, even with --force"),
-            format!("{p} adalah salah satu masukan perintah ini (berkas yang sama, tautan diikuti): tidak pernah ditimpa, juga dengan --force"),
-        ),
-        ErrMsg::NotOwn(p, marker) => f(
-            format!("{p} was not written by grafika generate (it is not listed in {marker}, or holds other files): --force replaces only generate's own earlier output; move it away or choose another --out"),
-            format!("{p} tidak ditulis oleh grafika generate (tidak tercantum di {marker}, atau berisi berkas lain): --force hanya mengganti keluaran generate sendiri sebelumnya; pindahkan atau pilih --out yang lain"),
-        ),
-        ErrMsg::NotDirectory(p) => f(
-            format!("{p} exists and is not a directory"),
-            format!("{p} sudah ada dan bukan direktori"),
-        ),
-        ErrMsg::AnswerFileTooLarge(p, n, max) => f(
-            format!("{p} has {n} bytes; an answer file may have at most {max} (it is refused before it is read as TOML)"),
-            format!("{p} berukuran {n} bita; berkas jawaban paling besar {max} bita (ditolak sebelum dibaca sebagai TOML)"),
-        ),
-        ErrMsg::NotMarked(n, of, which) => f(
-            format!("{n} of the {of} answer files could not be marked (see the error in each one's row): {which}"),
-            format!("{n} dari {of} berkas jawaban tidak dapat dinilai (lihat galat di baris masing-masing): {which}"),
-        ),
-        ErrMsg::Man(why) => f(
-            format!("cannot write the manual page: {why}"),
-            format!("tidak dapat menulis halaman manual: {why}"),
-        ),
-        _ => String::new(),
-    }
-}
-
-/// Scene and mesh files.
-fn scene(m: &ErrMsg, lang: Lang) -> String {
-    let f = |en: String, id: String| pick(lang, en, id);
-    let w = |why: &IoWhy| io_why(why, lang);
-    match m {
-        ErrMsg::ObjUnreadable(p, why) => f(
-            format!("cannot read the OBJ file {p}: {}", w(why)),
-            format!("tidak dapat membaca berkas OBJ {p}: {}", w(why)),
-        ),
-        ErrMsg::ObjInvalid(p, kind, en) => f(
-            format!("{p} is not a valid OBJ file: {en}"),
-            format!("{p} bukan berkas OBJ yang sah: {}", obj_reason(kind, en)),
-        ),
-        ErrMsg::ObjNoFaces(p) => f(format!("{p} has no faces"), format!("{p} tidak memiliki bidang (face)")),
-        ErrMsg::ObjNotFinite(p) => f(
-            format!("{p} has a vertex that is not a finite number"),
-            format!("{p} memiliki verteks yang bukan bilangan berhingga"),
-        ),
-        ErrMsg::FaceVertex => say(
-            lang,
-            "a face refers to a vertex that does not exist",
-            "sebuah bidang (face) merujuk ke verteks yang tidak ada",
-        ),
-        ErrMsg::FormulaNotFinite => say(
-            lang,
-            "the formula gives a value that is not a finite number",
-            "rumus menghasilkan nilai yang bukan bilangan berhingga",
-        ),
-        ErrMsg::TooManyTriangles(n, max) => f(
-            format!("the scene's objects have {n} triangles together; the renderer takes at most {max} per scene (refused before any mesh is built)"),
-            format!("objek-objek scene ini bersama-sama memiliki {n} segitiga; renderer menerima paling banyak {max} per scene (ditolak sebelum mesh dibuat)"),
-        ),
-        ErrMsg::TooManyLights(n, max) => f(
-            format!("the file has {n} lights; grafika takes at most {max} per file (as Direct3D 9 does)"),
-            format!("file ini memiliki {n} cahaya; grafika menerima paling banyak {max} per file (seperti Direct3D 9)"),
-        ),
-        ErrMsg::NeedsColour => say(lang, "needs at least one colour", "memerlukan paling sedikit satu warna"),
-        ErrMsg::NoObjects => say(
-            lang,
-            "the scene has no objects: add at least one [[object]] table (cone, sphere, cylinder, box, plane or obj)",
-            "scene tidak memiliki objek: tambahkan paling sedikit satu tabel [[object]] (cone, sphere, cylinder, box, plane atau obj)",
-        ),
-        ErrMsg::CameraNeedsPerspective => say(
-            lang,
-            "a [camera] needs a [perspective] with fovy, near and far",
-            "[camera] memerlukan [perspective] dengan fovy, near dan far",
-        ),
-        ErrMsg::ImageSize(w, h) => f(
-            format!("width and height must be from 1 to 8192 pixels, got {w}x{h}"),
-            format!("lebar dan tinggi harus 1 sampai 8192 piksel, diberikan {w}x{h}"),
-        ),
-        ErrMsg::Needs(thing, key) => needs(thing, key, lang),
-        ErrMsg::NoSuchKey(t, k, all) => f(
-            format!("a {t} has no `{k}` (its fields: {all})"),
-            format!("objek {t} tidak memiliki `{k}` (kuncinya: {all})"),
-        ),
-        ErrMsg::NeededToRender => say(lang, "is needed to render", "diperlukan untuk me-render"),
-        _ => String::new(),
-    }
-}
-
 /// The OBJ reader's reason, by its name; else its own (English) words.
 fn obj_reason(kind: &str, en: &str) -> String {
     let id = match kind {
@@ -483,269 +593,6 @@ fn needs(thing: &Thing, key: &str, lang: Lang) -> String {
         (Thing::Object(t), Lang::En) if t == "obj" => format!("an obj object needs `{key}`"),
         (Thing::Object(t), Lang::En) => format!("a {t} needs `{key}`"),
         (Thing::Object(t), Lang::Id) => format!("objek {t} memerlukan `{key}`"),
-    }
-}
-
-/// Lights files and the [shade] set-up.
-fn lights(m: &ErrMsg, lang: Lang) -> String {
-    let f = |en: String, id: String| pick(lang, en, id);
-    match m {
-        ErrMsg::Channel(..) | ErrMsg::Attenuation(..) | ErrMsg::Cones(..) => light_values(m, lang),
-        ErrMsg::NoLightTable(p) => f(
-            format!("{p} has no [[light]] table"),
-            format!("{p} tidak memiliki tabel [[light]]"),
-        ),
-        ErrMsg::ColorMissing => say(
-            lang,
-            "the surface color Cs is missing (R,G,B in [0, 1])",
-            "warna permukaan Cs tidak ada (R,G,B di [0, 1])",
-        ),
-        ErrMsg::NormalMissing => say(
-            lang,
-            "the surface normal N is missing",
-            "normal permukaan N tidak ada",
-        ),
-        ErrMsg::CameraAtPoint => say(
-            lang,
-            "the camera is at the surface point: no direction to the viewer",
-            "kamera berada di titik permukaan: tidak ada arah ke pengamat",
-        ),
-        ErrMsg::NoLight => say(
-            lang,
-            "no light: give L (toward the light) or a lights file",
-            "tidak ada cahaya: berikan L (menuju sumber cahaya) atau berkas cahaya",
-        ),
-        ErrMsg::LightAtPoint => say(
-            lang,
-            "the light is at the surface point itself: no direction to it",
-            "sumber cahaya berada di titik permukaan itu sendiri: tidak ada arah ke sana",
-        ),
-        ErrMsg::NotApplicable(k, kind) => f(
-            format!("`{k}` does not apply to a {kind} light"),
-            format!("`{k}` tidak berlaku untuk sumber cahaya {kind}"),
-        ),
-        _ => String::new(),
-    }
-}
-
-/// A light's or material's values out of their bounds.
-fn light_values(m: &ErrMsg, lang: Lang) -> String {
-    let n = |s: &str| nums(s, lang);
-    let f = |en: String, id: String| pick(lang, en, id);
-    match m {
-        ErrMsg::Channel(ch, v) => {
-            let ind = match ch.as_str() {
-                "red" => "merah",
-                "green" => "hijau",
-                _ => "biru",
-            };
-            f(
-                format!("color channels must lie in [0, 1]; {ch} is {v}"),
-                format!(
-                    "kanal warna harus berada di [0, 1]; {ind} bernilai {}",
-                    n(v)
-                ),
-            )
-        }
-        ErrMsg::Attenuation(a0, a1, a2) => f(
-            format!("a0, a1, a2 must be ≥ 0 and not all 0, got ({a0}, {a1}, {a2})"),
-            format!(
-                "a0, a1, a2 harus ≥ 0 dan tidak semuanya 0, diberikan ({}; {}; {})",
-                n(a0),
-                n(a1),
-                n(a2)
-            ),
-        ),
-        ErrMsg::Cones(t, p) => f(
-            format!("the cone angles need 0 ≤ theta ≤ phi ≤ 180°, got theta = {t}, phi = {p}"),
-            format!(
-                "sudut kerucut harus 0 ≤ theta ≤ phi ≤ 180°, diberikan theta = {}, phi = {}",
-                n(t),
-                n(p)
-            ),
-        ),
-        _ => String::new(),
-    }
-}
-
-/// The stages' own refusals: planes through the centre of projection,
-/// values beyond the precision.
-fn stages(m: &ErrMsg, lang: Lang) -> String {
-    let n = |s: &str| nums(s, lang);
-    let f = |en: String, id: String| pick(lang, en, id);
-    match m {
-        ErrMsg::PlaneThroughOrigin => say(
-            lang,
-            "the view plane z = 0 passes through the centre of projection at the origin",
-            "bidang proyeksi z = 0 melalui pusat proyeksi di titik asal",
-        ),
-        ErrMsg::PlaneThroughCop(z) => f(
-            format!("the view plane z = {z} passes through the centre of projection"),
-            format!("bidang proyeksi z = {} melalui pusat proyeksi", n(z)),
-        ),
-        ErrMsg::ImageTooLarge(p, prec) => f(
-            format!("the image of {p} is too large for {prec} precision (the point is too near the plane of the centre of projection)"),
-            format!("bayangan {p} terlalu besar untuk presisi {prec} (titik itu terlalu dekat dengan bidang pusat proyeksi)"),
-        ),
-        ErrMsg::Viewport(w, h) => f(
-            format!("width and height must be positive, got {w}x{h}"),
-            format!("lebar dan tinggi harus positif, diberikan {}x{}", n(w), n(h)),
-        ),
-        ErrMsg::VVanished => say(lang, "v = n × u vanished", "v = n × u menjadi nol"),
-        ErrMsg::EyeLookTooLarge(d, prec) => f(
-            format!("Pe − Pr = {d} is too large for {prec} precision"),
-            format!("Peye − Pref = {} terlalu besar untuk presisi {prec}", n(d)),
-        ),
-        ErrMsg::TranslationTooLarge(prec) => f(
-            format!("the view matrix's translation −(u·Pe, v·Pe, n·Pe) is too large for {prec} precision"),
-            format!("translasi matriks pandang −(u·Pe; v·Pe; n·Pe) terlalu besar untuk presisi {prec}"),
-        ),
-        ErrMsg::EyeCoordsTooLarge(p, prec) => f(
-            format!("the eye coordinates of {p} are too large for {prec} precision"),
-            format!("koordinat kamera titik {p} terlalu besar untuk presisi {prec}"),
-        ),
-        ErrMsg::ResultNotFinite(prec) if prec == "exact" => f(
-            "the result is exact but beyond the range of f64 (about 1.8e308), so it has no decimal or JSON number to give (scale the inputs)".into(),
-            "hasilnya eksak tetapi di luar jangkauan f64 (sekitar 1,8e308), jadi tidak ada desimal atau bilangan JSON untuknya (skalakan masukan)".into(),
-        ),
-        ErrMsg::ResultNotFinite(prec) => f(
-            format!("the result is not a finite number at {prec} precision: an input overflows or underflows the floats (scale the inputs, or use --precision exact)"),
-            format!("hasilnya bukan bilangan berhingga pada presisi {prec}: sebuah masukan melampaui batas bilangan floating point (skalakan masukan, atau gunakan --precision exact)"),
-        ),
-        _ => String::new(),
-    }
-}
-
-/// Problem files and what `solve` needs of them.
-fn problem(m: &ErrMsg, lang: Lang) -> String {
-    let f = |en: String, id: String| pick(lang, en, id);
-    match m {
-        ErrMsg::UnknownPart(a, all) => f(
-            format!("unknown part `{a}`; the parts are {all}"),
-            format!("bagian `{a}` tidak dikenal; bagian-bagiannya adalah {all}"),
-        ),
-        ErrMsg::ExpectedXyz(e) => f(
-            format!("expected [x, y, z]: {}", toml(e, lang)),
-            format!("seharusnya [x, y, z]: {}", toml(e, lang)),
-        ),
-        ErrMsg::NothingToSolve => say(
-            lang,
-            "nothing to solve: the file has no part that its data allow (camera + points, perspective, clip, shade)",
-            "tidak ada yang dapat diselesaikan: berkas ini tidak memiliki bagian yang datanya lengkap (camera + points, perspective, clip, shade)",
-        ),
-        ErrMsg::NoCameraTable => say(
-            lang,
-            "the problem asks for the view but has no [camera] table",
-            "soal meminta transformasi pandang tetapi tidak memiliki tabel [camera]",
-        ),
-        ErrMsg::ProjectionNeedsNear => say(
-            lang,
-            "projection needs perspective.near (or perspective.d)",
-            "proyeksi memerlukan perspective.near (atau perspective.d)",
-        ),
-        ErrMsg::WindowNeeds => say(
-            lang,
-            "the window needs perspective.fovy, perspective.aspect and perspective.near",
-            "viewing window memerlukan perspective.fovy, perspective.aspect dan perspective.near",
-        ),
-        ErrMsg::LightsNeedShade => say(
-            lang,
-            "[[light]] tables need a [shade] table (normal, color, ...)",
-            "tabel [[light]] memerlukan tabel [shade] (normal, color, ...)",
-        ),
-        _ => String::new(),
-    }
-}
-
-/// The commands' own refusals.
-fn commands(m: &ErrMsg, lang: Lang) -> String {
-    let f = |en: String, id: String| pick(lang, en, id);
-    match m {
-        ErrMsg::NoTopic => say(lang, "give at least one topic", "berikan paling sedikit satu topik"),
-        ErrMsg::NoDrawing => say(
-            lang,
-            "could not draw a non-degenerate problem in 500 tries",
-            "tidak dapat membuat soal yang tidak degenerate dalam 500 percobaan",
-        ),
-        ErrMsg::NoProblemDrawn => say(lang, "no problem drawn", "tidak ada soal yang dibuat"),
-        ErrMsg::StdinHoldsAnswers => say(
-            lang,
-            "standard input holds the answers: give the problem as a file",
-            "masukan standar berisi jawaban: berikan soal sebagai berkas",
-        ),
-        ErrMsg::GiveProblem => say(lang, "give a problem file or --topic", "berikan berkas soal atau --topic"),
-        ErrMsg::TooManyProblems(n, c, v, mb, max) => f(
-            format!("{n} problems ({c} × {v}, about {mb} MB) is more than the {max} written without --force"),
-            format!("{n} soal ({c} × {v}, sekitar {mb} MB) lebih dari {max} yang ditulis tanpa --force"),
-        ),
-        ErrMsg::BothStdin => say(
-            lang,
-            "the problem and the answers cannot both come from standard input (-)",
-            "soal dan jawaban tidak dapat sama-sama berasal dari masukan standar (-)",
-        ),
-        ErrMsg::NoPrinted(p) => f(format!("{p} has no [printed] table"), format!("{p} tidak memiliki tabel [printed]")),
-        ErrMsg::CsvAndJson => say(
-            lang,
-            "--csv - and --json would both write to standard output: give --csv a file name",
-            "--csv - dan --json sama-sama akan menulis ke keluaran standar: berikan nama berkas untuk --csv",
-        ),
-        ErrMsg::NoAnswerFiles(d) => f(
-            format!("{d} holds no .toml answer files"),
-            format!("{d} tidak berisi berkas jawaban .toml"),
-        ),
-        ErrMsg::NoExam(d) => f(
-            format!("{d} holds no problem-01.toml (nor variant-01/): give a problem file or a folder written by grafika generate"),
-            format!("{d} tidak berisi problem-01.toml (maupun variant-01/): berikan berkas soal atau folder yang ditulis grafika generate"),
-        ),
-        ErrMsg::NoVariant(n) => f(
-            format!("the exam has {n} variants: say which one these answers are for with `variant = N` at the top of the file"),
-            format!("ujian ini memiliki {n} varian: tuliskan varian mana yang dijawab dengan `variant = N` di awal berkas"),
-        ),
-        ErrMsg::NotAVariant(v, n) => f(
-            format!("`{v}` is not a variant of the exam (1 to {n})"),
-            format!("`{v}` bukan varian ujian ini (1 sampai {n})"),
-        ),
-        ErrMsg::NotAProblemOfExam(k, names) => f(
-            format!("`{k}` is not in a table of a problem of the exam ([{names}])"),
-            format!("`{k}` tidak berada di tabel soal ujian ini ([{names}])"),
-        ),
-        ErrMsg::ReportFormat(p) => f(
-            format!("{p}: the report's format comes from its extension: .html, .md, .json or .csv"),
-            format!("{p}: format laporan ditentukan oleh ekstensinya: .html, .md, .json atau .csv"),
-        ),
-        ErrMsg::ReportNeedsClass => say(
-            lang,
-            "a class report needs --answers DIR (a folder of answer files)",
-            "laporan kelas memerlukan --answers DIR (folder berkas jawaban)",
-        ),
-        ErrMsg::PixelOutside(x, y, w, h) => f(
-            format!("({x}, {y}) is outside the {w}x{h} image"),
-            format!("({x}; {y}) berada di luar gambar {w}x{h}"),
-        ),
-        ErrMsg::PixelText(s) => f(
-            format!("expected X,Y (whole pixel numbers), got `{s}`"),
-            format!("seharusnya X,Y (nomor piksel bulat), diberikan `{s}`"),
-        ),
-        ErrMsg::NothingRendered => say(lang, "nothing rendered", "tidak ada yang di-render"),
-        ErrMsg::Threads(why) => f(
-            format!("cannot start the threads: {why}"),
-            format!("tidak dapat memulai thread: {why}"),
-        ),
-        ErrMsg::RenderPrecision => say(
-            lang,
-            "render always computes at f32 (--precision is for the calculator's worked steps): leave it out",
-            "render selalu menghitung dengan f32 (--precision untuk langkah-langkah kalkulator): hilangkan opsi itu",
-        ),
-        ErrMsg::NotTaken(c) => f(
-            format!("grafika {c} does not take this option (grafika {c} --help lists those it takes)"),
-            format!("grafika {c} tidak menerima opsi ini (grafika {c} --help mendaftar opsi yang diterimanya)"),
-        ),
-        ErrMsg::OwnOutput => say(
-            lang,
-            "check, generate, bench, practice, completions and man print their own output: use main_with_args",
-            "check, generate, bench, practice, completions dan man mencetak keluarannya sendiri: gunakan main_with_args",
-        ),
-        _ => String::new(),
     }
 }
 

@@ -20,13 +20,14 @@ use super::{Paper, Part};
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
 use crate::msg::ErrMsg;
+use crate::msg::Lang;
 use crate::tutor::check::Answers;
 use crate::tutor::generate::{problem_name, variant_name};
 use std::path::{Path, PathBuf};
 
 /// Reads an exam folder: every variant's problem files, in order, each in
 /// the chosen language.
-pub fn read(dir: &Path, indonesian: bool) -> Result<Paper> {
+pub fn read(dir: &Path, lang: Lang) -> Result<Paper> {
     let folders: Vec<PathBuf> = if dir.join(variant_name(1)).is_dir() {
         (1..)
             .map(|v| dir.join(variant_name(v)))
@@ -47,7 +48,7 @@ pub fn read(dir: &Path, indonesian: bool) -> Result<Paper> {
             .take_while(|(_, f)| f.is_file());
         let mut parts = Vec::new();
         for (name, f) in files {
-            let problem = ProblemIn::read(&f)?.localized(indonesian);
+            let problem = ProblemIn::read(&f)?.localized(lang);
             parts.push(Part { name, problem });
         }
         if parts.is_empty() {
