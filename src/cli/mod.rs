@@ -68,9 +68,9 @@ fn run_writing(cli: &Cli, outputs: &Outputs) -> Result<Report> {
 fn run_unchecked(cli: &Cli, outputs: &Outputs) -> Result<Report> {
     let p = cli.common.precision;
     let problem = match &cli.command {
-        Command::Solve { file, .. } => {
-            Problem::File(Box::new(ProblemIn::read(file)?.localized(style_of(cli).lang)))
-        }
+        Command::Solve { file, .. } => Problem::File(Box::new(
+            ProblemIn::read(file)?.localized(style_of(cli).lang),
+        )),
         // The renderer computes at f32 (the calculator's precisions are for
         // explaining): another --precision is refused, not ignored.
         Command::Render(_) if p != Precision::Exact => {
