@@ -763,6 +763,23 @@ fn man_page_is_roff_with_the_commands() {
     for cmd in ["solve", "check", "practice", "generate", "render"] {
         assert!(text.contains(cmd), "man page lacks {cmd}");
     }
+    // Each command has its section on this page, with the flags it takes
+    // (the page listed the commands as grafika-basis(1), … never written).
+    for (cmd, flag) in [
+        ("BASIS", "eye"),
+        ("CHECK", "answers"),
+        ("RENDER", "explain\\-pixel"),
+    ] {
+        let at = text
+            .find(&format!(".SH \"GRAFIKA {cmd}\""))
+            .unwrap_or_else(|| panic!("{cmd}"));
+        let section = text[at + 4..].split("\n.SH ").next().unwrap();
+        assert!(
+            section.contains(&format!("\\-\\-{flag}")),
+            "{cmd} lacks --{flag}"
+        );
+    }
+    assert!(!text.contains("(1)\n"), "a page of its own is named");
 }
 
 /// Issue 18: an unknown shell is a one-line error, exit 2.

@@ -227,14 +227,50 @@ fn completions(shell: clap_complete::Shell) -> String {
     String::from_utf8_lossy(&out).into_owned()
 }
 
-/// The manual page (roff): the commands, every flag and its help.
+/// The manual page (roff), one page for the whole program: the global
+/// options, then each command with its synopsis, description and every
+/// flag it takes (a section per command, its parts as subsections).
 fn man() -> Result<String> {
     use clap::CommandFactory;
+    let err = |e: std::io::Error| Error::why("man", ErrMsg::Man(e.to_string()));
+    let mut cmd = Cli::command();
+    cmd.build();
     let mut out = Vec::new();
-    clap_mangen::Man::new(Cli::command())
+    clap_mangen::Man::new(cmd.clone())
         .render(&mut out)
-        .map_err(|e| Error::why("man", ErrMsg::Man(e.to_string())))?;
-    Ok(String::from_utf8_lossy(&out).into_owned())
+        .map_err(err)?;
+    let commands = cmd
+        .get_subcommands()
+        .filter(|s| !s.is_hide_set() && s.get_name() != "help");
+    for sub in commands {
+        let name = format!("grafika {}", sub.get_name());
+        let page = clap_mangen::Man::new(sub.clone().bin_name(&name));
+        let mut part = Vec::new();
+        page.render_synopsis_section(&mut part).map_err(err)?;
+        page.render_description_section(&mut part).map_err(err)?;
+        page.render_options_section(&mut part).map_err(err)?;
+        if sub.get_after_help().is_some() || sub.get_after_long_help().is_some() {
+            page.render_extra_section(&mut part).map_err(err)?;
+        }
+        let part = String::from_utf8_lossy(&part);
+        let part = (part.lines())
+            .filter(|l| !l.starts_with(".ie ") && !l.starts_with(".el "))
+            .map(|l| match l {
+                ".SH EXTRA" => ".SS EXAMPLES".to_string(),
+                l => l
+                    .strip_prefix(".SH ")
+                    .map_or(l.to_string(), |h| format!(".SS {h}")),
+            });
+        out.extend_from_slice(format!(".SH \"{}\"\n", name.to_uppercase()).as_bytes());
+        part.for_each(|l| out.extend_from_slice(format!("{l}\n").as_bytes()));
+    }
+    // The list of commands points to their sections of this page, not to
+    // pages of their own (grafika-basis(1) is not written).
+    let page = String::from_utf8_lossy(&out);
+    let names = cmd.get_subcommands().map(|s| s.get_name().to_string());
+    Ok(names.fold(page.into_owned(), |page, n| {
+        page.replace(&format!("grafika\\-{n}(1)"), &format!("grafika {n}"))
+    }))
 }
 
 /// `--figure FILE.svg`: the report's drawing as an SVG file; for
