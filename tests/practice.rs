@@ -1067,3 +1067,24 @@ fn a_revealed_value_stays_revealed_and_a_retry_counts_apart() {
         serde_json::json!({"answered": 2, "correct": 2})
     );
 }
+
+/// The view matrix as the Indonesian prompt shows it, each row in brackets
+/// with decimal commas: V's rows are (u, −u·Pe), (v, −v·Pe), (n, −n·Pe),
+/// (0, 0, 0, 1) with u = (√2/2, 0, −√2/2), v = (0, 1, 0), n = (√2/2, 0, √2/2)
+/// and Pe = (3, 1, 3): −u·Pe = 0, −v·Pe = −1, −n·Pe = −3√2 ≈ −4,2426.
+#[test]
+fn a_matrix_with_decimal_commas_is_read_as_the_prompt_shows() {
+    let out = grafika()
+        .args(["practice", "problems/text-triangle.toml", "--lang", "id"])
+        .env("NO_COLOR", "1")
+        .write_stdin(
+            "skip\nskip\nskip\n(0,7071; 0; -0,7071; 0); (0; 1; 0; -1); \
+             (0,7071; 0; 0,7071; -4,2426); (0; 0; 0; 1)\nquit\n",
+        )
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("4 baris (a; b; c; d); (…); …"), "{text}");
+    let after = text.split("[4/19]").nth(1).unwrap_or_default();
+    assert!(after.contains("✓ benar"), "{text}");
+}

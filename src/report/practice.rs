@@ -233,12 +233,7 @@ fn verdict_head(o: &Outcome, lang: Lang) -> (Tone, String) {
         ),
         "wrong" => (Tone::Bad, tr(lang, "✗ wrong", "✗ salah").to_string()),
         _ => {
-            let shape = shape(&o.key, &o.expected, lang);
-            let how = if shape.is_empty() {
-                tr(lang, "a number", "sebuah angka").to_string()
-            } else {
-                shape
-            };
+            let how = shape(&o.key, &o.expected, lang);
             let why = unread_why(&o.note, lang);
             let why = if why.is_empty() {
                 String::new()
@@ -486,7 +481,12 @@ fn shape(key: &str, expected: &Val, lang: Lang) -> String {
     }
     match expected {
         Val::Text(_) => t("6 bits, bit 1 rightmost", "6 bit, bit 1 paling kanan"),
-        v if v.is_matrix() => t("4 rows, separated by ;", "4 baris, dipisah dengan ;"),
+        // with decimal commas `;` separates the numbers, so each row in
+        // brackets: (0,6; 0; −0,8; 0); (…)
+        v if v.is_matrix() => t(
+            "4 rows (a, b, c, d); (…); …",
+            "4 baris (a; b; c; d); (…); …",
+        ),
         Val::List(items)
             if key.starts_with("shade.") && items.len() == 3 && !key.ends_with(['L', 'N', 'R']) =>
         {
@@ -495,7 +495,7 @@ fn shape(key: &str, expected: &Val, lang: Lang) -> String {
         Val::List(items) => ["(x)", "(x, y)", "(x, y, z)"]
             .get(items.len().saturating_sub(1))
             .map_or_else(|| format!("({} values)", items.len()), |s| s.to_string()),
-        _ => String::new(),
+        _ => t("a number", "sebuah bilangan"),
     }
 }
 
