@@ -218,8 +218,8 @@ pub fn words(m: &Msg, lang: Lang) -> String {
             "kedua region code 000000 → diterima;  code0 AND code1 ≠ 000000 → ditolak;  selain itu → clipping",
         ),
         Msg::FOutcode => p(
-            "bit 1 x<xmin (kiri) · bit 2 x>xmax (kanan) · bit 3 y<ymin (bawah) · bit 4 y>ymax (atas) · bit 5 z<zmin (depan) · bit 6 z>zmax (belakang)",
-            "bit 1 x<xmin (kiri) · bit 2 x>xmax (kanan) · bit 3 y<ymin (bawah) · bit 4 y>ymax (atas) · bit 5 z<zmin (depan) · bit 6 z>zmax (belakang)",
+            "bit 1 x<xmin (kiri) · bit 2 x>xmax (kanan) · bit 3 y<ymin (bawah) · bit 4 y>ymax (atas) · bit 5 z<zmin (depan) · bit 6 z>zmax (belakang); the code is written bit 6 … bit 1 (bit 1 rightmost)",
+            "bit 1 x<xmin (kiri) · bit 2 x>xmax (kanan) · bit 3 y<ymin (bawah) · bit 4 y>ymax (atas) · bit 5 z<zmin (depan) · bit 6 z>zmax (belakang); region code ditulis bit 6 … bit 1 (bit 1 paling kanan)",
         ),
         Msg::FSegment => p(
             "from the kept point with the smallest t to the one with the largest t (inside ends count as t = 0 and t = 1)",
