@@ -304,3 +304,38 @@ fn practice_help_says_it_prints_json_lines() {
     assert!(help.contains("JSON Lines"), "{help}");
     assert!(!help.contains("--html"), "{help}");
 }
+
+/// A shared option after a command that does not take it is refused as
+/// before the command (clap's own line told a student to write
+/// `-- --html`, as if the option were a value).
+#[test]
+fn an_option_after_a_command_that_does_not_take_it_is_refused_by_name() {
+    for (args, field, words) in [
+        (
+            vec![
+                "check",
+                "problems/text-triangle.toml",
+                "--answers-from-text",
+                "--html",
+                "x.html",
+            ],
+            "html",
+            "for exams use generate --format html",
+        ),
+        (
+            vec!["practice", "problems/text-triangle.toml", "--force"],
+            "force",
+            "grafika practice does not take",
+        ),
+    ] {
+        let out = grafika()
+            .args(&args)
+            .args(["--lang", "en"])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.starts_with(&format!("error: {field}: ")), "{err}");
+        assert!(err.contains(words) && !err.contains("-- --"), "{err}");
+    }
+}

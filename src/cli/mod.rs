@@ -95,7 +95,14 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
     let wants_json = args.iter().any(|a| a == "--json");
     let cli = match Cli::try_parse_from(&args) {
         Ok(c) => c,
-        Err(e) => return clap_error(e, wants_json, refused::lang_of_args(&args)),
+        Err(e) => {
+            let lang = refused::lang_of_args(&args);
+            if let Some((opt, command)) = refused::shared_option_after(&e, &args) {
+                let lang = lang.unwrap_or_else(|| Lang::from_env(|k| std::env::var(k).ok()));
+                return report_error(&misplaced(opt, &command), wants_json, lang);
+            }
+            return clap_error(e, wants_json, lang);
+        }
     };
     let style = style_of(&cli);
     let json = cli.common.json;

@@ -2,6 +2,7 @@
 //! English, and the parts clap names (the argument, the value, the possible
 //! values) make the Indonesian.
 
+use crate::cli::args::{Opt, TAKES};
 use crate::msg::{ClapErr, ErrMsg};
 use crate::report::lang::Lang;
 use clap::error::{ContextKind, ContextValue, ErrorKind};
@@ -70,4 +71,23 @@ pub fn lang_of_args(args: &[OsString]) -> Option<Lang> {
         };
         Lang::from_code(v)
     })
+}
+
+/// An option of [`Opt`] written after a command that does not take it
+/// (`grafika check … --html x.html`): the option and the command, so the
+/// refusal says so, as for the option written before the command, instead
+/// of clap's "to pass '--html' as a value, use '-- --html'".
+pub fn shared_option_after(e: &clap::Error, args: &[OsString]) -> Option<(Opt, String)> {
+    if e.kind() != ErrorKind::UnknownArgument {
+        return None;
+    }
+    let Some(ContextValue::String(arg)) = e.get(ContextKind::InvalidArg) else {
+        return None;
+    };
+    let name = arg.strip_prefix("--")?.split('=').next()?;
+    let opt = Opt::ALL.into_iter().find(|o| o.name() == name)?;
+    let command = (args.iter().skip(1))
+        .map(|a| a.to_string_lossy())
+        .find(|a| TAKES.iter().any(|(c, ..)| c == a))?;
+    Some((opt, command.into_owned()))
 }
