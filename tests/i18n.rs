@@ -849,3 +849,36 @@ fn no_english_sentence_under_lang_id() {
         found.join("\n")
     );
 }
+
+/// A wrong vector's "expected" note in Indonesian separates its components
+/// by `;`, as its decimal commas require: diffuse = kd·cos α·Ld·C =
+/// 0.6·(√2/2)·(1, 1, 0) = (3√2/10, 3√2/10, 0) ≈ (0,424264; 0,424264; 0)
+/// (with `, ` it read "0,424264, 3√2/10").
+#[test]
+fn an_expected_vector_in_indonesian_separates_its_components_by_semicolons() {
+    let dir = tempfile::tempdir().unwrap();
+    let answers = dir.path().join("budi.toml");
+    std::fs::write(&answers, "\"shade.diffuse\" = \"(0,6; 0,6; 0)\"\n").unwrap();
+    let out = grafika()
+        .args([
+            "check",
+            "problems/shade-phong.toml",
+            "--lang",
+            "id",
+            "--json",
+        ])
+        .arg("--answers")
+        .arg(&answers)
+        .output()
+        .unwrap();
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let answers = v["answers"].as_array().unwrap();
+    let diffuse = answers
+        .iter()
+        .find(|a| a["key"] == "shade.diffuse")
+        .unwrap();
+    assert_eq!(
+        diffuse["note"],
+        "seharusnya (3√2/10 ≈ 0,424264; 3√2/10 ≈ 0,424264; 0)"
+    );
+}

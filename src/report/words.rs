@@ -607,7 +607,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         Msg::Expected(v) => format!(
             "{} {}",
             pick(lang, "expected", "seharusnya"),
-            NumStyle::of(lang).number(v)
+            NumStyle::of(lang).values(v)
         ),
         Msg::Unreadable(why) => format!(
             "{}: {}",
