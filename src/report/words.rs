@@ -394,7 +394,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         ),
         Msg::MaterialText => p(
             "the text's constants unless given: ka = 0.4, kd = 0.6, ks = 0.7, n = 4, white specular",
-            "konstanta dari teks bila tidak diberikan: ka = 0,4, kd = 0,6, ks = 0,7 (ksp dalam teks), n = 4, specular putih (Cwhite)",
+            "konstanta dari teks bila tidak diberikan: ka = 0,4; kd = 0,6; ks = 0,7 (ksp dalam teks); n = 4; specular putih (Cwhite)",
         ),
         Msg::NoTriangle => p(
             "no triangle covers the pixel centre: it keeps the background colour",
