@@ -659,7 +659,8 @@ fn a_long_echoed_input_is_cut_in_the_error() {
 #[test]
 fn render_refuses_precision_it_would_ignore() {
     let out = std::env::temp_dir().join(format!("grafika-prec-{}.png", std::process::id()));
-    // render does not take --precision (its --help does not list it) ...
+    // render does not take --precision (its --help does not list it), and
+    // says why, after its name ...
     let e = json_err(&[
         "render",
         "problems/render/cone-flat.toml",
@@ -668,8 +669,9 @@ fn render_refuses_precision_it_would_ignore() {
         "--precision",
         "f64",
     ]);
-    assert_eq!(e["field"], "--precision");
-    // ... nor before its name, where the reason is said.
+    assert_eq!(e["field"], "precision");
+    assert!(e["message"].as_str().unwrap().contains("f32"), "{e}");
+    // ... as before its name.
     let e = json_err(&[
         "--precision",
         "f64",
