@@ -390,10 +390,10 @@ fn text_output_is_a_worked_solution() {
         .unwrap();
     let s = String::from_utf8(out.stdout).unwrap();
     for needle in [
-        "Step 1: modeling",
-        "Step 2: viewing",
-        "Step 3: projection",
-        "Step 4: window",
+        "Stage 1: modeling",
+        "Stage 2: viewing",
+        "Stage 3: projection",
+        "Stage 4: window",
         "n = (Pe − Pr) / |Pe − Pr|",
         // each difference from the printed answers worded as what it is
         "— a misprint in the text: the text's exact form B''",
@@ -936,8 +936,8 @@ fn several_clipped_segments_print_one_numbered_block_each_not_one_line() {
 fn explain_pixel_matrices_are_not_under_the_solve_viewing_heading() {
     // `render --explain-pixel` records the projection matrix and each
     // object's M, V·M, P·V·M in a section of their own; it stood under
-    // solve's "Step 2: viewing transformation (world → eye coordinates)"
-    // heading with no Step 1/3 sections around it.
+    // solve's "Stage 2: viewing transformation (world → eye coordinates)"
+    // heading with no Stage 1/3 sections around it.
     let png = std::env::temp_dir().join(format!("grafika-cone-{}.png", std::process::id()));
     for (lang, heading) in [
         ("en", "== The view and projection matrices =="),

@@ -43,19 +43,19 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         Msg::Err(e) => errors::error(e, lang),
         Msg::Said(s) => said::said(s, lang),
         Msg::SecModeling => p(
-            "Step 1: modeling transformation",
+            "Stage 1: modeling transformation",
             "Tahap 1: transformasi pemodelan",
         ),
         Msg::SecViewing => p(
-            "Step 2: viewing transformation (world → eye coordinates)",
+            "Stage 2: viewing transformation (world → eye coordinates)",
             "Tahap 2: transformasi sistem pandang (koordinat dunia → koordinat kamera)",
         ),
         Msg::SecProjection => p(
-            "Step 3: projection onto the near plane",
+            "Stage 3: projection onto the near plane",
             "Tahap 3: proyeksi terhadap near clipping plane",
         ),
         Msg::SecWindowClip => p(
-            "Step 4: window and clipping",
+            "Stage 4: window and clipping",
             "Tahap 4: viewing window dan clipping",
         ),
         Msg::SecViewport => p(
