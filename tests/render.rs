@@ -718,3 +718,37 @@ fn render_stats_line_up_and_name_every_shading_drawn() {
         );
     }
 }
+
+/// The HTML page of a render names the summary in the page's language
+/// (its JSON key in each row's title), under a render's heading.
+#[test]
+fn render_page_names_the_summary_in_indonesian() {
+    let scene = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/problems/render/cone-flat.toml"
+    );
+    let dir = std::env::temp_dir().join(format!("grafika-render-page-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let page = dir.join("cone.html");
+    let _ = std::fs::remove_file(&page);
+    grafika()
+        .args([
+            "render", scene, "-o", "-", "--repeat", "3", "--lang", "id", "--html",
+        ])
+        .arg(&page)
+        .assert()
+        .success();
+    let html = std::fs::read_to_string(&page).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(html.contains("<h2>Hasil render</h2>"), "{html}");
+    for (key, words) in [
+        ("triangles drawn", "segitiga digambar"),
+        ("pixels shaded", "piksel diwarnai"),
+        ("frame time (median of 3)", "waktu per bingkai"),
+    ] {
+        let row = html.find(&format!("<th title=\"{key}\">")).unwrap();
+        let cell = &html[row..row + html[row..].find("</th>").unwrap()];
+        assert!(cell.contains(words), "{key}: {cell}");
+        assert!(!cell.contains(&format!(">{key}<")), "{key}: {cell}");
+    }
+}
