@@ -13,23 +13,12 @@ pub fn heading(lang: Lang) -> &'static str {
     }
 }
 
-/// The words of a summary name in `lang`.
+/// The words of a summary name in `lang`: English shows the JSON key
+/// itself (its words, `Summary::key`).
 pub fn summary(k: Summary, lang: Lang) -> String {
     match lang {
-        Lang::En => summary_en(k),
+        Lang::En => k.key(),
         Lang::Id => summary_id(k),
-    }
-}
-
-fn summary_en(k: Summary) -> String {
-    match k {
-        Summary::Image => "image".into(),
-        Summary::Size => "size".into(),
-        Summary::Shading => "shading".into(),
-        Summary::TrianglesDrawn => "triangles drawn".into(),
-        Summary::PixelsShaded => "pixels shaded".into(),
-        Summary::FrameTime { runs: 0 | 1 } => "frame time".into(),
-        Summary::FrameTime { runs } => format!("frame time (median of {runs})"),
     }
 }
 
