@@ -617,7 +617,7 @@ fn no_error_is_said_in_english_text() {
 /// student's and a triangle's names (Budi, ABC); and words Bahasa
 /// Indonesia shares with English (basis, errata, global, per, trivial,
 /// normal, material, model, status, linear) or that its programmers use
-/// (renderer, rasterizer, thread, binning, encoding PNG, z-buffer, RGB, the
+/// (render, renderer, rasterizer, thread, binning, encoding PNG, z-buffer, RGB, the
 /// topic `pipeline`), the text's `face`.
 const KEPT: &str = "viewing window view volume clipping clip clipped accepted rejected region code \
     plane near far viewport aspect ratio fovy top bottom left right height width xmin xmax ymin \
@@ -628,7 +628,7 @@ const KEPT: &str = "viewing window view volume clipping clip clipped accepted re
     min norm sqrt round clamp Liang Barsky status normal material Material hint show skip back \
     quit none eye exact follow through seed Cspecular Cwhite D3DRS_LOCALVIEWER TRUE diagnosis \
     kiri kanan bawah atas depan belakang contoh bab budi abc axis zprp zvp off \
-    basis errata global per trivial face linear renderer rasterizer raster binning thread \
+    basis errata global per trivial face linear render renderer rasterizer raster binning thread \
     encoding png buffer rgb row pipeline";
 
 /// The words of a text, with what is not a sentence's word taken out: the

@@ -668,3 +668,87 @@ fn explain_pixel_speaks_indonesian_with_the_same_numbers() {
         assert_eq!(a["result"], b["result"]);
     }
 }
+
+/// `--stats` of a scene mixing flat and Gouraud objects, in both
+/// languages: the summary is headed as a render (it answers no question),
+/// every value of the table starts in one column (after the longest
+/// label), and the per-pixel line names both shadings drawn.
+#[test]
+fn render_stats_line_up_and_name_every_shading_drawn() {
+    let scene = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/problems/render/spheres-flat-gouraud.toml"
+    );
+    for (lang, heading, per_pixel) in [
+        ("en", "Render", "none (flat and gouraud shading)"),
+        ("id", "Hasil render", "tidak ada (flat dan gouraud shading)"),
+    ] {
+        let out = grafika()
+            .args(["render", scene, "-o", "-", "--stats", "--lang", lang])
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        let text = String::from_utf8(out.stderr).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        assert!(lines.contains(&heading), "{lang}: {text}");
+        assert!(
+            !text.contains("Answer") && !text.contains("Jawaban"),
+            "{text}"
+        );
+        let at = lines.iter().position(|l| l.starts_with("Stat")).unwrap();
+        let rows: Vec<&str> = lines[at + 1..]
+            .iter()
+            .copied()
+            .filter(|l| !l.is_empty())
+            .collect();
+        assert!(rows.len() > 15, "{text}");
+        // Every value but the per-pixel words starts with a digit, and no
+        // label has one: the column of a value is its first digit's.
+        let column = |l: &str| l.chars().position(|c| c.is_ascii_digit());
+        let first = column(rows[0]).unwrap();
+        for l in rows.iter().filter(|l| !l.contains(per_pixel)) {
+            assert_eq!(column(l), Some(first), "{lang}: {l:?} in\n{text}");
+        }
+        let row = rows.iter().find(|l| l.ends_with(per_pixel));
+        let row = row.unwrap_or_else(|| panic!("{lang}: {text}"));
+        assert_eq!(
+            row.chars().count() - per_pixel.chars().count(),
+            first,
+            "{text}"
+        );
+    }
+}
+
+/// The HTML page of a render names the summary in the page's language
+/// (its JSON key in each row's title), under a render's heading.
+#[test]
+fn render_page_names_the_summary_in_indonesian() {
+    let scene = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/problems/render/cone-flat.toml"
+    );
+    let dir = std::env::temp_dir().join(format!("grafika-render-page-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let page = dir.join("cone.html");
+    let _ = std::fs::remove_file(&page);
+    grafika()
+        .args([
+            "render", scene, "-o", "-", "--repeat", "3", "--lang", "id", "--html",
+        ])
+        .arg(&page)
+        .assert()
+        .success();
+    let html = std::fs::read_to_string(&page).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(html.contains("<h2>Hasil render</h2>"), "{html}");
+    for (key, words) in [
+        ("triangles drawn", "segitiga digambar"),
+        ("pixels shaded", "piksel diwarnai"),
+        ("frame time (median of 3)", "waktu per bingkai"),
+    ] {
+        let row = html.find(&format!("<th title=\"{key}\">")).unwrap();
+        let cell = &html[row..row + html[row..].find("</th>").unwrap()];
+        assert!(cell.contains(words), "{key}: {cell}");
+        assert!(!cell.contains(&format!(">{key}<")), "{key}: {cell}");
+    }
+}

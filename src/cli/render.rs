@@ -198,8 +198,7 @@ fn report(
         scene: a.scene.display().to_string(),
         output: a.output.display().to_string(),
         size: (opt.width, opt.height),
-        shading: shading_summary(scene, opt),
-        options_shading: opt.shading,
+        shadings: shadings_drawn(scene, opt),
         normals: format!("{:?}", opt.normals).to_lowercase(),
         explain_pixel: pixel,
         stats_asked: a.stats,
@@ -212,20 +211,19 @@ fn report(
 }
 
 /// The shadings drawn: the one forced by `--shading`, else each object's
-/// own (or the scene's) once, in object order (`flat, gouraud`).
-fn shading_summary(scene: &Scene, opt: &Options) -> String {
-    let name = |s: Shading| format!("{s:?}").to_lowercase();
+/// own (or the scene's) once, in object order (flat, gouraud).
+fn shadings_drawn(scene: &Scene, opt: &Options) -> Vec<Shading> {
     if opt.force_shading || scene.objects.is_empty() {
-        return name(opt.shading);
+        return vec![opt.shading];
     }
-    let mut seen: Vec<String> = Vec::new();
+    let mut seen: Vec<Shading> = Vec::new();
     for o in &scene.objects {
-        let n = name(o.shading.unwrap_or(opt.shading));
-        if !seen.contains(&n) {
-            seen.push(n);
+        let s = o.shading.unwrap_or(opt.shading);
+        if !seen.contains(&s) {
+            seen.push(s);
         }
     }
-    seen.join(", ")
+    seen
 }
 
 fn parse_pixel(s: &str) -> Result<(u32, u32)> {

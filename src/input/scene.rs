@@ -108,6 +108,17 @@ pub enum Shading {
     Phong,
 }
 
+impl Shading {
+    /// The name in a scene file and on the command line (`flat`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Shading::Flat => "flat",
+            Shading::Gouraud => "gouraud",
+            Shading::Phong => "phong",
+        }
+    }
+}
+
 /// Where vertex normals come from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Default)]
 #[serde(rename_all = "lowercase")]

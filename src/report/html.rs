@@ -151,9 +151,22 @@ fn matrix_row(st: &Style, r: &Val) -> String {
 pub fn answers(st: &Style, items: &[(String, Val)]) -> String {
     let mut rows = Vec::new();
     flatten("", items, &mut rows);
+    let named: Vec<(String, String, Val)> = rows
+        .into_iter()
+        .map(|(k, v)| {
+            let name = crate::report::words::labels::answer_name(&k, st.lang);
+            (k, name, v)
+        })
+        .collect();
+    named_answers(st, &named)
+}
+
+/// The answer's table from rows already named: (key, words, value); the
+/// key is each row's title.
+pub fn named_answers(st: &Style, rows: &[(String, String, Val)]) -> String {
     let body: String = rows
         .iter()
-        .map(|(k, v)| {
+        .map(|(k, name, v)| {
             let cell = match v {
                 Val::List(m) if v.is_matrix() => {
                     format!("<math display=\"block\">{}</math>", matrix(st, m))
@@ -168,7 +181,7 @@ pub fn answers(st: &Style, items: &[(String, Val)]) -> String {
             format!(
                 "<tr><th title=\"{}\">{}</th><td>{cell}</td></tr>\n",
                 xml_escape(k),
-                mathml::inline(&crate::report::words::labels::answer_name(k, st.lang))
+                mathml::inline(name)
             )
         })
         .collect();

@@ -132,7 +132,7 @@ fn problem(p: &ProblemIn) -> Value {
 fn render_input(run: &RenderRun) -> Value {
     json!({
         "scene": run.scene, "output": run.output,
-        "width": run.size.0, "height": run.size.1, "shading": run.shading,
+        "width": run.size.0, "height": run.size.1, "shading": super::render::shading_names(run),
         "normals": run.normals,
         "explain_pixel": run.explain_pixel.map(|(x, y)| [x, y]),
     })

@@ -313,12 +313,47 @@ impl Style {
 }
 
 impl Report {
-    /// The named results the answer shows: a render's summary, else the
-    /// results.
+    /// The named results the answer shows, keyed as the JSON keys them: a
+    /// render's summary, else the results.
     pub fn answer(&self) -> std::borrow::Cow<'_, [(String, Val)]> {
         match &self.asked {
-            Asked::Render(run) => std::borrow::Cow::Owned(render::summary(run)),
+            Asked::Render(run) => std::borrow::Cow::Owned(
+                render::summary(run)
+                    .into_iter()
+                    .map(|(k, v)| (k.key(), v))
+                    .collect(),
+            ),
             _ => std::borrow::Cow::Borrowed(&self.result),
+        }
+    }
+
+    /// The heading of the answer in `lang`: a render's summary is headed
+    /// as a render, it answers nothing.
+    pub fn answer_heading(&self, lang: Lang) -> &'static str {
+        match &self.asked {
+            Asked::Render(_) => words::render::heading(lang),
+            _ => tr(lang, "Answer", "Jawaban"),
+        }
+    }
+
+    /// The answer as the text names it in `lang`: (key, words, value).
+    pub fn answer_named(&self, lang: Lang) -> Vec<(String, String, Val)> {
+        match &self.asked {
+            Asked::Render(run) => render::summary(run)
+                .into_iter()
+                .map(|(k, v)| (k.key(), words::render::summary(k, lang), v))
+                .collect(),
+            _ => self
+                .result
+                .iter()
+                .map(|(k, v)| {
+                    (
+                        k.clone(),
+                        words::labels::answer_key(k, None, lang),
+                        v.clone(),
+                    )
+                })
+                .collect(),
         }
     }
 
@@ -356,13 +391,9 @@ impl Report {
             out.push_str(&format!("\n{step_word} {}. {}\n", i + 1, style.w(&s.title)));
             out.push_str(&style.step_body(s));
         }
-        out.push_str(&format!("\n{}\n", style.tr("Answer", "Jawaban")));
-        for (k, v) in self.answer().iter() {
-            let named = match &self.asked {
-                Asked::Render(_) => render::label(k, style.lang),
-                _ => words::labels::answer_key(k, None, style.lang),
-            };
-            push_answer(&mut out, style, "  ", (k, &named), v);
+        out.push_str(&format!("\n{}\n", self.answer_heading(style.lang)));
+        for (k, named, v) in self.answer_named(style.lang) {
+            push_answer(&mut out, style, "  ", (&k, &named), &v);
         }
         for n in self.all_notes(style) {
             out.push_str(&format!("\n{n}\n"));

@@ -5,10 +5,10 @@
 
 use super::doc::Doc;
 use super::figure::xml_escape;
-use super::html::{answers, figure, heading, page};
+use super::html::{answers, figure, heading, named_answers, page};
 use super::{mathml, Report, Style};
 use crate::msg::{Msg, Printed};
-use crate::tutor::solution::{Compared, Comparison};
+use crate::tutor::solution::{Asked, Compared, Comparison};
 
 /// The drawing's part (`view`, `clip-2`, …) a section of `solve` shows.
 fn part_of(section: &Msg) -> Option<String> {
@@ -67,8 +67,11 @@ pub fn report_page(
             .collect()
     };
     body.push_str(&Doc::Html.steps_with(r, st, &mut under));
-    body.push_str(&heading(1, st.tr("Answer", "Jawaban")));
-    body.push_str(&answers(st, &r.answer()));
+    body.push_str(&heading(1, r.answer_heading(st.lang)));
+    body.push_str(&match &r.asked {
+        Asked::Render(_) => named_answers(st, &r.answer_named(st.lang)),
+        _ => answers(st, &r.answer()),
+    });
     for n in r.notes(st) {
         body.push_str(&format!("<p class=\"note\">{}</p>\n", xml_escape(&n)));
     }

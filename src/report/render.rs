@@ -3,38 +3,104 @@
 //! Indonesia), the `--stats` table and the JSON's `stats`.
 
 use super::lang::{Lang, NumStyle};
+use super::words;
 use crate::input::scene::Shading;
 use crate::render::Stats;
 use crate::stages::trace::Val;
 use crate::tutor::solution::{RenderRun, Times};
 use serde_json::{json, Value};
 
+/// A name of the render summary: its JSON key (docs/spec.md §3, the
+/// same in every language) is [`Summary::key`], its words in the text
+/// `words::render::summary`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Summary {
+    /// The PNG written.
+    Image,
+    /// Width × height in pixels.
+    Size,
+    /// The shadings drawn.
+    Shading,
+    /// Triangles set up and rasterized.
+    TrianglesDrawn,
+    /// Pixels coloured.
+    PixelsShaded,
+    /// The frame time, a median when more than one frame was rendered.
+    FrameTime {
+        /// Frames rendered (`--repeat`).
+        runs: usize,
+    },
+}
+
+impl Summary {
+    /// The key of the JSON's `result` and `exact`: the contract of
+    /// docs/spec.md §3, byte for byte, in every language.
+    pub fn key(self) -> String {
+        match self {
+            Summary::Image => "image".into(),
+            Summary::Size => "size".into(),
+            Summary::Shading => "shading".into(),
+            Summary::TrianglesDrawn => "triangles drawn".into(),
+            Summary::PixelsShaded => "pixels shaded".into(),
+            Summary::FrameTime { runs: 0 | 1 } => "frame time".into(),
+            Summary::FrameTime { runs } => format!("frame time (median of {runs})"),
+        }
+    }
+}
+
 /// The summary: image, size, shading, counts and the frame time (frame,
-/// PNG encoding, Mpixels/s), keyed as the JSON's `result`.
-pub fn summary(run: &RenderRun) -> Vec<(String, Val)> {
+/// PNG encoding, Mpixels/s).
+pub fn summary(run: &RenderRun) -> Vec<(Summary, Val)> {
     let count = |n: u64| Val::Num(crate::num::Scalar::shown(&(n as f64)));
     let t = &run.times;
-    let label = if t.runs > 1 {
-        format!("frame time (median of {})", t.runs)
-    } else {
-        "frame time".to_string()
-    };
     let time = Val::said(crate::msg::Said::FrameTime(
         format!("{:.2}", t.frame),
         format!("{:.1}", run.mpixels_per_s),
         format!("{:.2}", t.png),
     ));
     vec![
-        ("image".to_string(), Val::text(run.output.clone())),
+        (Summary::Image, Val::text(run.output.clone())),
         (
-            "size".to_string(),
+            Summary::Size,
             Val::text(format!("{}x{}", run.size.0, run.size.1)),
         ),
-        ("shading".to_string(), Val::text(run.shading.clone())),
-        ("triangles drawn".to_string(), count(run.stats.drawn)),
-        ("pixels shaded".to_string(), count(run.stats.pixels_shaded)),
-        (label, time),
+        (Summary::Shading, Val::text(shading_names(run))),
+        (Summary::TrianglesDrawn, count(run.stats.drawn)),
+        (Summary::PixelsShaded, count(run.stats.pixels_shaded)),
+        (Summary::FrameTime { runs: t.runs }, time),
     ]
+}
+
+/// The shadings drawn as the scene file names them (`flat, gouraud`).
+pub fn shading_names(run: &RenderRun) -> String {
+    let names: Vec<&str> = run.shadings.iter().map(|s| s.name()).collect();
+    names.join(", ")
+}
+
+/// Where the lighting is evaluated per pixel: everywhere (every object
+/// Phong-shaded), on the Phong objects only, or nowhere (the shadings
+/// drawn, all per face or per vertex).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum PerPixel {
+    /// Every object is Phong-shaded.
+    Everywhere,
+    /// Some objects are Phong-shaded, the others not.
+    PhongObjectsOnly,
+    /// No object is Phong-shaded: the shadings drawn.
+    Nowhere(Vec<Shading>),
+}
+
+impl PerPixel {
+    /// The per-pixel line of a render whose objects were drawn with
+    /// `shadings`.
+    pub fn of(shadings: &[Shading]) -> PerPixel {
+        let phong = shadings.iter().filter(|s| **s == Shading::Phong).count();
+        match phong {
+            0 => PerPixel::Nowhere(shadings.to_vec()),
+            n if n == shadings.len() => PerPixel::Everywhere,
+            _ => PerPixel::PhongObjectsOnly,
+        }
+    }
 }
 
 /// The JSON's `stats`: the counters and the median times.
@@ -53,38 +119,22 @@ pub fn stats_json(run: &RenderRun) -> Value {
     })
 }
 
-/// The text label of a render summary key (its JSON key) in `lang`.
-pub fn label(key: &str, lang: Lang) -> String {
-    if lang == Lang::En {
-        return key.to_string();
-    }
-    if let Some(n) = key
-        .strip_prefix("frame time (median of ")
-        .and_then(|r| r.strip_suffix(')'))
-    {
-        return format!("waktu per bingkai (median dari {n})");
-    }
-    match key {
-        "image" => "gambar",
-        "size" => "ukuran",
-        "shading" => "shading",
-        "triangles drawn" => "segitiga digambar",
-        "pixels shaded" => "piksel diwarnai",
-        "frame time" => "waktu per bingkai",
-        other => other,
-    }
-    .to_string()
-}
-
 /// `--stats`: counts of the pipeline's work and the median time of each
 /// stage, one line each.
 pub fn stats_text(run: &RenderRun, lang: Lang) -> String {
-    let (st, t, shading) = (&run.stats, &run.times, run.options_shading);
+    let (st, t) = (&run.stats, &run.times);
     let id = lang == Lang::Id;
-    let width = if id { 42 } else { 34 };
+    let per_pixel = words::render::per_pixel(&PerPixel::of(&run.shadings), lang);
+    let rows: Vec<(String, String)> = counts(st, per_pixel)
+        .into_iter()
+        .chain(times(t, lang))
+        .map(|(en, ind, v)| (if id { ind } else { en }, v))
+        .collect();
+    // Every value starts in one column: after the longest label.
+    let width = rows.iter().map(|(k, _)| k.chars().count()).max();
+    let width = width.unwrap_or(0);
     let mut s = format!("{}\n", if id { "Statistik" } else { "Stats" });
-    for (en, ind, v) in counts(st, shading, lang).into_iter().chain(times(t, lang)) {
-        let k = if id { ind } else { en };
+    for (k, v) in rows {
         s.push_str(&format!("  {k:<width$} {v}\n"));
     }
     s
@@ -93,16 +143,9 @@ pub fn stats_text(run: &RenderRun, lang: Lang) -> String {
 /// A line of the table: its English label, its Indonesian label, the value.
 type Row = (String, String, String);
 
-/// The counts of `--stats`.
-fn counts(st: &Stats, shading: Shading, lang: Lang) -> Vec<Row> {
+/// The counts of `--stats`, with the per-pixel line's words.
+fn counts(st: &Stats, per_pixel: String) -> Vec<Row> {
     let r = |en: &str, ind: &str, v: u64| (en.to_string(), ind.to_string(), v.to_string());
-    let name = format!("{shading:?}").to_lowercase();
-    let per_pixel = match (shading == Shading::Phong, lang) {
-        (true, Lang::En) => "yes (Phong)".to_string(),
-        (true, Lang::Id) => "ya (Phong)".to_string(),
-        (false, Lang::En) => format!("none ({name} shading)"),
-        (false, Lang::Id) => format!("tidak ada ({name} shading)"),
-    };
     vec![
         r("triangles in", "segitiga masuk", st.tris_in),
         r(

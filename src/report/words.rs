@@ -11,6 +11,7 @@ pub mod errors;
 mod figure;
 pub mod labels;
 mod pixel;
+pub mod render;
 mod said;
 
 /// The words of `m` in `lang`: one exhaustive match over every key, so a

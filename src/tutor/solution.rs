@@ -261,10 +261,8 @@ pub struct RenderRun {
     pub output: String,
     /// The image size.
     pub size: (u32, u32),
-    /// The shadings drawn (`flat, gouraud`).
-    pub shading: String,
-    /// The shading of the options (the stats' per-pixel line).
-    pub options_shading: crate::input::scene::Shading,
+    /// The shadings drawn, each once, in object order (`flat, gouraud`).
+    pub shadings: Vec<crate::input::scene::Shading>,
     /// The vertex normals (`average`, `position`).
     pub normals: String,
     /// The pixel explained, if any.
