@@ -225,11 +225,21 @@ fn an_existing_page_is_never_overwritten() {
 #[test]
 fn html_is_refused_where_there_is_no_worked_solution() {
     // bench does not take --html after its name (its --help does not
-    // list it), nor before it.
-    let e = json_err(&["bench", "--quick", "--html", "x.html"]);
-    assert_eq!(e["field"], "--html", "{e}");
-    let e = json_err(&["--html", "x.html", "bench", "--quick"]);
-    assert_eq!(e["field"], "html", "{e}");
+    // list it), nor before it: the same refusal, with where pages come from.
+    for args in [
+        ["bench", "--quick", "--html", "x.html"],
+        ["--html", "x.html", "bench", "--quick"],
+    ] {
+        let e = json_err(&args);
+        assert_eq!(e["field"], "html", "{e}");
+        assert!(
+            e["message"]
+                .as_str()
+                .unwrap()
+                .contains("generate --format html"),
+            "{e}"
+        );
+    }
 }
 
 #[test]
