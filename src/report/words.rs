@@ -115,9 +115,14 @@ pub fn words(m: &Msg, lang: Lang) -> String {
         Msg::EyeCoords(n) => f(format!("Eye coordinates of {n}"), format!("Koordinat kamera titik {n}")),
         Msg::OrthoProj(n) => f(format!("Orthographic projection of {n}"), format!("Proyeksi orthographic titik {n}")),
         Msg::PerspProj(n) => f(format!("Perspective projection of {n}"), format!("Proyeksi perspektif titik {n}")),
-        Msg::WindowTop(l) => f(
+        // the text's h is the near window's half-height; the far one has no name there
+        Msg::WindowTop(l) if l == "near" => f(
             format!("Window half-height on the {l} plane (the text calls it h)"),
             format!("Setengah tinggi viewing window pada {l} plane (h dalam teks)"),
+        ),
+        Msg::WindowTop(l) => f(
+            format!("Window half-height on the {l} plane"),
+            format!("Setengah tinggi viewing window pada {l} plane"),
         ),
         Msg::WindowEdges(l) => f(
             format!("Window edges and size on the {l} plane"),
