@@ -140,13 +140,14 @@ impl Style {
                     format!("({})", decs.join(", "))
                 }
             }
+            // the items are written in this style already: the separator too
             None => format!(
                 "({})",
                 items
                     .iter()
                     .map(|v| self.val_inline(v))
                     .collect::<Vec<_>>()
-                    .join(", ")
+                    .join(self.nums().sep)
             ),
         }
     }
