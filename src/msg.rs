@@ -13,12 +13,14 @@ mod errors;
 mod figure;
 pub mod lang;
 mod pixel;
+mod render;
 mod said;
 pub use drawn::{CameraText, DrawnTitle, ShadeAsked, Statement};
 pub use errors::{Bound, ClapErr, ErrMsg, IoWhy, NumErr, Thing, TomlErr, Twice, Want};
 pub use figure::{FigWord, FigureMsg, Panel};
 pub use lang::Lang;
 pub use pixel::PixelMsg;
+pub use render::{PerPixel, Summary};
 pub use said::Said;
 
 /// A term of the lighting sum.

@@ -5,48 +5,11 @@
 use super::lang::{Lang, NumStyle};
 use super::words;
 use crate::input::scene::Shading;
+pub use crate::msg::{PerPixel, Summary};
 use crate::render::Stats;
 use crate::stages::trace::Val;
 use crate::tutor::solution::{RenderRun, Times};
 use serde_json::{json, Value};
-
-/// A name of the render summary: its JSON key (docs/spec.md §3, the
-/// same in every language) is [`Summary::key`], its words in the text
-/// `words::render::summary`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Summary {
-    /// The PNG written.
-    Image,
-    /// Width × height in pixels.
-    Size,
-    /// The shadings drawn.
-    Shading,
-    /// Triangles set up and rasterized.
-    TrianglesDrawn,
-    /// Pixels coloured.
-    PixelsShaded,
-    /// The frame time, a median when more than one frame was rendered.
-    FrameTime {
-        /// Frames rendered (`--repeat`).
-        runs: usize,
-    },
-}
-
-impl Summary {
-    /// The key of the JSON's `result` and `exact`: the contract of
-    /// docs/spec.md §3, byte for byte, in every language.
-    pub fn key(self) -> String {
-        match self {
-            Summary::Image => "image".into(),
-            Summary::Size => "size".into(),
-            Summary::Shading => "shading".into(),
-            Summary::TrianglesDrawn => "triangles drawn".into(),
-            Summary::PixelsShaded => "pixels shaded".into(),
-            Summary::FrameTime { runs: 0 | 1 } => "frame time".into(),
-            Summary::FrameTime { runs } => format!("frame time (median of {runs})"),
-        }
-    }
-}
 
 /// The summary: image, size, shading, counts and the frame time (frame,
 /// PNG encoding, Mpixels/s).
@@ -77,29 +40,14 @@ pub fn shading_names(run: &RenderRun) -> String {
     names.join(", ")
 }
 
-/// Where the lighting is evaluated per pixel: everywhere (every object
-/// Phong-shaded), on the Phong objects only, or nowhere (the shadings
-/// drawn, all per face or per vertex).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum PerPixel {
-    /// Every object is Phong-shaded.
-    Everywhere,
-    /// Some objects are Phong-shaded, the others not.
-    PhongObjectsOnly,
-    /// No object is Phong-shaded: the shadings drawn.
-    Nowhere(Vec<Shading>),
-}
-
-impl PerPixel {
-    /// The per-pixel line of a render whose objects were drawn with
-    /// `shadings`.
-    pub fn of(shadings: &[Shading]) -> PerPixel {
-        let phong = shadings.iter().filter(|s| **s == Shading::Phong).count();
-        match phong {
-            0 => PerPixel::Nowhere(shadings.to_vec()),
-            n if n == shadings.len() => PerPixel::Everywhere,
-            _ => PerPixel::PhongObjectsOnly,
-        }
+/// Where the lighting is evaluated per pixel for a render whose objects
+/// were drawn with `shadings`.
+pub fn per_pixel_of(shadings: &[Shading]) -> PerPixel {
+    let phong = shadings.iter().filter(|s| **s == Shading::Phong).count();
+    match phong {
+        0 => PerPixel::Nowhere(shadings.iter().map(|s| s.name()).collect()),
+        n if n == shadings.len() => PerPixel::Everywhere,
+        _ => PerPixel::PhongObjectsOnly,
     }
 }
 
@@ -124,7 +72,7 @@ pub fn stats_json(run: &RenderRun) -> Value {
 pub fn stats_text(run: &RenderRun, lang: Lang) -> String {
     let (st, t) = (&run.stats, &run.times);
     let id = lang == Lang::Id;
-    let per_pixel = words::render::per_pixel(&PerPixel::of(&run.shadings), lang);
+    let per_pixel = words::render::per_pixel(&per_pixel_of(&run.shadings), lang);
     let rows: Vec<(String, String)> = counts(st, per_pixel)
         .into_iter()
         .chain(times(t, lang))
@@ -237,4 +185,21 @@ fn times(t: &Times, lang: Lang) -> Vec<Row> {
         r("time: frame", "waktu: bingkai", t.frame),
         r("time: PNG encoding", "waktu: encoding PNG", t.png),
     ]
+}
+
+#[cfg(test)]
+mod per_pixel_tests {
+    use super::*;
+    use crate::input::scene::Shading::{Flat, Gouraud, Phong};
+
+    #[test]
+    fn per_pixel_lighting_follows_the_shadings_drawn() {
+        let names = |v: Vec<&'static str>| PerPixel::Nowhere(v);
+        assert_eq!(
+            per_pixel_of(&[Flat, Gouraud]),
+            names(vec!["flat", "gouraud"])
+        );
+        assert_eq!(per_pixel_of(&[Phong, Phong]), PerPixel::Everywhere);
+        assert_eq!(per_pixel_of(&[Flat, Phong]), PerPixel::PhongObjectsOnly);
+    }
 }

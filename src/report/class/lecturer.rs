@@ -14,7 +14,7 @@ use crate::report::lang::Lang;
 use crate::report::mistakes::mistake_text;
 use crate::report::{exact_json, value_json, Style};
 use crate::tutor::check::Settings;
-use crate::tutor::class::stats::{Flag, Gap, KeyStats, Stats, StepRef, CODES};
+use crate::tutor::class::stats::{Flag, Gap, Stats, StepRef, CODES};
 use crate::tutor::class::Class;
 use serde_json::{json, Value};
 
@@ -150,7 +150,7 @@ pub fn to_csv(s: &Stats) -> String {
         .iter()
         .map(|k| {
             let mut row = vec![k.key.clone(), k.students.to_string()];
-            row.extend(codes.iter().map(|c| count(k, c).to_string()));
+            row.extend(codes.iter().map(|c| k.count(c).to_string()));
             row.extend([
                 round4(k.facility).to_string(),
                 opt(k.discrimination),
@@ -167,14 +167,6 @@ pub fn to_csv(s: &Stats) -> String {
         })
         .collect();
     crate::report::csv::write(&header, &rows)
-}
-
-/// How many answers to a key got a code.
-pub(super) fn count(k: &KeyStats, code: &str) -> usize {
-    k.counts
-        .iter()
-        .find(|(c, _)| c == code)
-        .map_or(0, |(_, n)| *n)
 }
 
 /// The codes of the mistakes that explain a key.

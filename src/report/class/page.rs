@@ -4,7 +4,6 @@
 //! wrong answers no mistake explains, the students with the histogram.
 
 use super::histogram;
-use super::lecturer::count;
 use crate::report::doc::Doc;
 use crate::report::lang::{tr, Lang, NumStyle};
 use crate::report::mistakes::mistake_text;
@@ -224,7 +223,7 @@ fn keys_section(doc: Doc, s: &Stats, lang: Lang) -> String {
         .keys
         .iter()
         .map(|k| {
-            let c = |code: &str| count(k, code);
+            let c = |code: &str| k.count(code);
             let right = c("correct.exact") + c("correct.rounded") + c("correct.tolerance");
             let flags: Vec<&str> = k.flags.iter().map(|f| flag_words(*f, lang)).collect();
             let flag = if flags.is_empty() {

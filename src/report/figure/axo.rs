@@ -10,8 +10,6 @@
 //! the page axes are right = norm(y × w) = (cos az, 0, −sin az) and
 //! up = w × right, and a point p is drawn at (p·right, p·up).
 
-use super::builders::dot;
-
 /// The usual view of world space: azimuth 35°, elevation 25° (degrees):
 /// x to the right, z toward the reader down to the left.
 pub const USUAL: (f64, f64) = (35.0, 25.0);
@@ -171,6 +169,12 @@ pub fn diameter(poly: &[[f64; 2]]) -> f64 {
         }
     }
     d
+}
+
+/// a·b (by the one dot product of `num::vec`).
+pub(super) fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    let v = |a: [f64; 3]| crate::num::vec::V3::new(a[0], a[1], a[2]);
+    crate::num::vec::dot(&v(a), &v(b))
 }
 
 #[cfg(test)]

@@ -3,6 +3,7 @@
 //! result's value) and the steps, read by small helpers shared by the
 //! kinds.
 
+pub(super) use super::axo::dot;
 use super::axo::Axo;
 use super::{label_toward, mark, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigureMsg, Msg, Panel};
@@ -151,11 +152,6 @@ fn v3(a: [f64; 3]) -> V3<f64> {
 /// `normalize`.
 pub(super) fn unit(a: [f64; 3]) -> [f64; 3] {
     vec::normalize(&v3(a)).map_or(a, |(u, _)| vec::to_f64(&u))
-}
-
-/// a·b.
-pub(super) fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    vec::dot(&v3(a), &v3(b))
 }
 
 /// a × b.

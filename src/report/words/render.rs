@@ -2,8 +2,8 @@
 //! summary's names and the per-pixel line of `--stats`. One exhaustive
 //! match per language: a name without its words does not compile.
 
+use crate::msg::{PerPixel, Summary};
 use crate::report::lang::Lang;
-use crate::report::render::{PerPixel, Summary};
 
 /// The heading of the summary: a render has no answer, it has a picture.
 pub fn heading(lang: Lang) -> &'static str {
@@ -37,10 +37,7 @@ fn summary_id(k: Summary) -> String {
 /// The per-pixel lighting line of `--stats` in `lang`: `yes (Phong)`,
 /// `Phong objects only`, `none (flat and gouraud shading)`.
 pub fn per_pixel(p: &PerPixel, lang: Lang) -> String {
-    let names = |s: &[crate::input::scene::Shading], and: &str| {
-        let n: Vec<&str> = s.iter().map(|s| s.name()).collect();
-        n.join(and)
-    };
+    let names = |s: &[&str], and: &str| s.join(and);
     match lang {
         Lang::En => match p {
             PerPixel::Everywhere => "yes (Phong)".into(),
@@ -58,18 +55,18 @@ pub fn per_pixel(p: &PerPixel, lang: Lang) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::input::scene::Shading::{Flat, Gouraud, Phong};
 
     #[test]
     fn the_per_pixel_line_names_every_shading_drawn() {
-        let en = |s: &[_]| per_pixel(&PerPixel::of(s), Lang::En);
-        let id = |s: &[_]| per_pixel(&PerPixel::of(s), Lang::Id);
-        assert_eq!(en(&[Flat]), "none (flat shading)");
-        assert_eq!(en(&[Flat, Gouraud]), "none (flat and gouraud shading)");
-        assert_eq!(id(&[Gouraud, Flat]), "tidak ada (gouraud dan flat shading)");
-        assert_eq!(en(&[Phong]), "yes (Phong)");
-        assert_eq!(en(&[Flat, Phong]), "Phong objects only");
-        assert_eq!(id(&[Phong, Gouraud]), "hanya objek Phong");
+        let en = |p: PerPixel| per_pixel(&p, Lang::En);
+        let id = |p: PerPixel| per_pixel(&p, Lang::Id);
+        assert_eq!(en(PerPixel::Nowhere(vec!["flat"])), "none (flat shading)");
+        let both = || PerPixel::Nowhere(vec!["gouraud", "flat"]);
+        assert_eq!(en(both()), "none (gouraud and flat shading)");
+        assert_eq!(id(both()), "tidak ada (gouraud dan flat shading)");
+        assert_eq!(en(PerPixel::Everywhere), "yes (Phong)");
+        assert_eq!(en(PerPixel::PhongObjectsOnly), "Phong objects only");
+        assert_eq!(id(PerPixel::PhongObjectsOnly), "hanya objek Phong");
     }
 
     #[test]

@@ -97,6 +97,15 @@ pub struct KeyStats {
     pub flags: Vec<Flag>,
 }
 
+impl KeyStats {
+    /// How many answers got the verdict `code` (0 when none did).
+    pub fn count(&self, code: &str) -> usize {
+        (self.counts.iter())
+            .find(|(c, _)| c == code)
+            .map_or(0, |(_, n)| *n)
+    }
+}
+
 /// The step of the worked solution a mistake belongs to.
 #[derive(Clone, Debug)]
 pub struct StepRef {
