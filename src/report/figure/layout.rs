@@ -10,64 +10,16 @@
 //! written short (its mark's name) with its whole text in a note, or, when
 //! even that cannot, left out (its text in the note).
 
+pub use super::metrics::{text_width, Anchor, Placed, ASCENT, DESCENT, FONT, WIDTH};
 use super::place::{place, Bx, Geom, Obstacles, Pt};
 use super::{Figure, Item, Mark, Shape};
 
-/// The page width in px.
-pub const WIDTH: f64 = 600.0;
-/// The label font size in px.
-pub const FONT: f64 = 15.0;
-/// How far a label's text reaches above its baseline, px (DejaVu Sans,
-/// the widest of the common sans-serif fonts, at 15 px).
-pub const ASCENT: f64 = 14.0;
-/// How far it reaches below, px (a glyph from a fallback font, such as
-/// `√`, reaches lower).
-pub const DESCENT: f64 = 5.0;
 /// Space kept around a panel, px.
 const PAD: f64 = 14.0;
 /// One line of notes, px.
 const LINE: f64 = 20.0;
 /// The tallest a panel is drawn, px (a tall drawing is scaled down).
 const MAX_HEIGHT: f64 = 420.0;
-
-/// How a label's text is anchored at its x.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Anchor {
-    /// The text starts at x.
-    Start,
-    /// The text is centred on x.
-    Middle,
-    /// The text ends at x.
-    End,
-}
-
-/// A label or note placed on the page: its baseline's anchor point in px
-/// (y down).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Placed {
-    /// x in px.
-    pub x: f64,
-    /// The baseline's y in px.
-    pub y: f64,
-    /// How the text is anchored at x.
-    pub anchor: Anchor,
-    /// The text.
-    pub text: String,
-}
-
-impl Placed {
-    /// The box the text takes, px: left, right, top, bottom (the width
-    /// estimated by [`text_width`]).
-    pub fn bounds(&self) -> (f64, f64, f64, f64) {
-        let w = text_width(&self.text);
-        let l = match self.anchor {
-            Anchor::Start => self.x,
-            Anchor::Middle => self.x - w / 2.0,
-            Anchor::End => self.x - w,
-        };
-        (l, l + w, self.y - ASCENT, self.y + DESCENT)
-    }
-}
 
 /// A panel laid out: page units to px, its height, its labels.
 #[derive(Clone, Debug, PartialEq)]
@@ -93,38 +45,6 @@ impl Laid {
     pub fn map(&self, p: &[f64; 2]) -> (f64, f64) {
         (self.tx + p[0] * self.scale, self.ty - p[1] * self.scale)
     }
-}
-
-/// Advance widths of DejaVu Sans (the widest common sans-serif font; the
-/// SVG asks for it first), in thousandths of the font size, for the
-/// printable ASCII characters from the space on.
-const ASCII_WIDTH: [u16; 95] = [
-    318, 401, 460, 838, 636, 950, 780, 275, 390, 390, 500, 838, 318, 361, 318, 337, 636, 636, 636,
-    636, 636, 636, 636, 636, 636, 636, 337, 337, 838, 838, 838, 531, 1000, 684, 686, 698, 770, 632,
-    575, 775, 752, 295, 295, 656, 557, 863, 748, 787, 603, 787, 695, 635, 611, 732, 684, 989, 685,
-    611, 685, 390, 337, 390, 838, 500, 500, 613, 635, 550, 635, 615, 352, 635, 634, 278, 278, 579,
-    278, 974, 634, 612, 635, 635, 411, 521, 392, 634, 592, 818, 592, 592, 525, 636, 337, 636, 838,
-];
-
-/// The width of a text at [`FONT`] px in DejaVu Sans, px (characters
-/// beyond ASCII by their DejaVu widths; an unknown one as wide as `−`).
-pub fn text_width(t: &str) -> f64 {
-    let em: u32 = t
-        .chars()
-        .map(|c| match c {
-            ' '..='~' => u32::from(ASCII_WIDTH[c as usize - 32]),
-            '′' => 227,
-            '″' => 374,
-            '·' => 318,
-            '°' | '∥' => 500,
-            '√' | 'β' => 637,
-            'α' => 659,
-            'θ' => 612,
-            '…' => 1000,
-            _ => 838,
-        })
-        .sum();
-    f64::from(em) * FONT / 1000.0
 }
 
 /// What a label names, in px: an arrow or an axis by its tip, a dot by its

@@ -23,6 +23,7 @@ mod camera;
 mod clip;
 pub mod drawings;
 pub mod layout;
+mod metrics;
 mod place;
 mod project;
 mod shade;

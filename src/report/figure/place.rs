@@ -16,7 +16,7 @@
 //! Only places within [`REACH`] px of the mark are tried, so every label
 //! stands beside its own mark.
 
-use super::layout::{Anchor, Placed, ASCENT, DESCENT, WIDTH};
+use super::metrics::{Anchor, Placed, ASCENT, DESCENT, WIDTH};
 
 /// A point in px (y down).
 pub type Pt = (f64, f64);
