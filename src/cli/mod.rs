@@ -242,10 +242,19 @@ fn man() -> Result<String> {
     let err = |e: std::io::Error| Error::why("man", ErrMsg::Man(e.to_string()));
     let mut cmd = Cli::command();
     cmd.build();
+    // The program's own sections, without clap's list of commands (it names
+    // pages grafika-basis(1), … that are not written: each command has its
+    // section on this page instead).
+    let top = clap_mangen::Man::new(cmd.clone());
     let mut out = Vec::new();
-    clap_mangen::Man::new(cmd.clone())
-        .render(&mut out)
-        .map_err(err)?;
+    top.render_title(&mut out).map_err(err)?;
+    let mut head = Vec::new();
+    top.render_name_section(&mut head).map_err(err)?;
+    top.render_synopsis_section(&mut head).map_err(err)?;
+    top.render_description_section(&mut head).map_err(err)?;
+    top.render_options_section(&mut head).map_err(err)?;
+    top.render_version_section(&mut head).map_err(err)?;
+    out.extend_from_slice(sections(&String::from_utf8_lossy(&head), ".SH ").as_bytes());
     let commands = cmd
         .get_subcommands()
         .filter(|s| !s.is_hide_set() && s.get_name() != "help");
@@ -259,25 +268,24 @@ fn man() -> Result<String> {
         if sub.get_after_help().is_some() || sub.get_after_long_help().is_some() {
             page.render_extra_section(&mut part).map_err(err)?;
         }
-        let part = String::from_utf8_lossy(&part);
-        let part = (part.lines())
-            .filter(|l| !l.starts_with(".ie ") && !l.starts_with(".el "))
-            .map(|l| match l {
-                ".SH EXTRA" => ".SS EXAMPLES".to_string(),
-                l => l
-                    .strip_prefix(".SH ")
-                    .map_or(l.to_string(), |h| format!(".SS {h}")),
-            });
         out.extend_from_slice(format!(".SH \"{}\"\n", name.to_uppercase()).as_bytes());
-        part.for_each(|l| out.extend_from_slice(format!("{l}\n").as_bytes()));
+        out.extend_from_slice(sections(&String::from_utf8_lossy(&part), ".SS ").as_bytes());
     }
-    // The list of commands points to their sections of this page, not to
-    // pages of their own (grafika-basis(1) is not written).
-    let page = String::from_utf8_lossy(&out);
-    let names = cmd.get_subcommands().map(|s| s.get_name().to_string());
-    Ok(names.fold(page.into_owned(), |page, n| {
-        page.replace(&format!("grafika\\-{n}(1)"), &format!("grafika {n}"))
-    }))
+    Ok(String::from_utf8_lossy(&out).into_owned())
+}
+
+/// Rendered sections without roff's preamble (the title wrote it once),
+/// each heading as `level` (`.SS` for a command's sections under its own;
+/// clap's EXTRA as EXAMPLES).
+fn sections(part: &str, level: &str) -> String {
+    (part.lines())
+        .filter(|l| !l.starts_with(".ie ") && !l.starts_with(".el "))
+        .map(|l| match l.strip_prefix(".SH ") {
+            Some("EXTRA") => format!("{level}EXAMPLES\n"),
+            Some(h) => format!("{level}{h}\n"),
+            None => format!("{l}\n"),
+        })
+        .collect()
 }
 
 /// `--figure FILE.svg`: the report's drawing as an SVG file; for
