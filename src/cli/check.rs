@@ -69,20 +69,9 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
                     settings,
                     false,
                 )?;
-                Sheet {
-                    file: path.clone(),
-                    who,
-                    variant: Some(1),
-                    outcome: Ok(vec![(String::new(), m)]),
-                    note: None,
-                }
+                lone_sheet(path, who, m)
             };
-            let sheets = std::slice::from_ref(&sheet);
-            if let Some(out) = csv_out(a, sheets, paper.exam, style.lang, outputs)? {
-                return Ok((out, if sheet.outcome.is_err() { 2 } else { 0 }));
-            }
-            let marked = sheet.outcome?;
-            Ok((output(&marked, json, style), 0))
+            one_sheet(sheet, paper.exam, a, json, style, outputs)
         }
     }
 }
@@ -142,18 +131,35 @@ fn from_text(
     let (_, answers) = check::answers_from_table(&p.printed);
     let who = (p.source.clone()).unwrap_or_else(|| tr(style.lang, "the text", "teks").into());
     let m = check::mark(p, &who, &answers, settings, true)?;
-    let sheet = Sheet {
-        file: a.file.clone(),
+    one_sheet(lone_sheet(&a.file, who, m), false, a, json, style, outputs)
+}
+
+/// The sheet of one student's answers to a lone problem.
+fn lone_sheet(file: &Path, who: String, m: Marking) -> Sheet {
+    Sheet {
+        file: file.to_path_buf(),
         who,
         variant: Some(1),
         outcome: Ok(vec![(String::new(), m)]),
         note: None,
-    };
-    if let Some(out) = csv_out(a, std::slice::from_ref(&sheet), false, style.lang, outputs)? {
-        return Ok((out, 0));
     }
-    let marked = sheet.outcome?;
-    Ok((output(&marked, json, style), 0))
+}
+
+/// One sheet out: its CSV (`--csv`), else its rows; exit status 2 when
+/// the file could not be marked.
+fn one_sheet(
+    sheet: Sheet,
+    exam: bool,
+    a: &CheckArgs,
+    json: bool,
+    style: &Style,
+    outputs: &Outputs,
+) -> Result<(String, i32)> {
+    let status = if sheet.outcome.is_err() { 2 } else { 0 };
+    if let Some(out) = csv_out(a, std::slice::from_ref(&sheet), exam, style.lang, outputs)? {
+        return Ok((out, status));
+    }
+    Ok((output(&sheet.outcome?, json, style), 0))
 }
 
 /// The report's format by the file's extension.
