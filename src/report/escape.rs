@@ -32,7 +32,8 @@ pub fn visible(s: &str) -> Cow<'_, str> {
     Cow::Owned(out)
 }
 
-fn push_visible(out: &mut String, c: char) {
+/// `c` onto `out`, written `\u{XX}` when it is active.
+pub fn push_visible(out: &mut String, c: char) {
     if is_active(c) {
         let _ = write!(out, "\\u{{{:X}}}", c as u32);
     } else {

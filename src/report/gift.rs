@@ -152,7 +152,8 @@ pub fn gift_escape(s: &str) -> String {
             '\n' => out.push_str("\\n"),
             '\r' => {}
             c if escape::is_active(c) => {
-                let shown = escape::visible(c.encode_utf8(&mut [0; 4])).into_owned();
+                let mut shown = String::new();
+                escape::push_visible(&mut shown, c);
                 shown.chars().for_each(|e| push_gift(&mut out, e));
             }
             c => push_gift(&mut out, c),
