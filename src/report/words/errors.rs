@@ -8,6 +8,9 @@ use super::nums;
 use crate::msg::{Bound, ClapErr, ErrMsg, IoWhy, NumErr, Thing, TomlErr, Twice, Want};
 use crate::report::lang::Lang;
 
+/// The words of the error keys ([`ErrMsg`] and its families).
+pub trait ErrorWords {}
+
 /// English or Indonesian, both written.
 fn pick(lang: Lang, en: String, id: String) -> String {
     if lang == Lang::Id {

@@ -1,18 +1,47 @@
 //! The words of every message key (`crate::msg::Msg`), in English and in
 //! Bahasa Indonesia, with the course text's own terms (docs/glossary.md).
 //! One exhaustive match: a key without both languages does not compile.
+//!
+//! Each language is one module ([`en`], [`id`]) holding one type that
+//! implements [`Words`]: one trait per family of keys, each method one
+//! exhaustive match over that family in that language. A third language is
+//! a third module and a `Lang` variant; the compiler names every family it
+//! has not yet written.
 
 use super::lang::{Lang, NumStyle};
 use crate::msg::{Erratum, LightPart, Msg, Printed, SpotZone, Term, Trivial};
 
 mod drawn;
 pub use drawn::statement;
+mod en;
 pub mod errors;
 mod figure;
+mod id;
+pub mod keys;
 pub mod labels;
+pub mod names;
 mod pixel;
 pub mod render;
+pub mod report;
 mod said;
+
+/// Every word of one language: each family's trait, implemented by that
+/// language's module.
+pub trait Words:
+    Sync + MsgWords + errors::ErrorWords + names::NameWords + keys::KeyWords + report::ReportWords
+{
+}
+
+/// The words of the messages themselves ([`Msg`]).
+pub trait MsgWords {}
+
+/// The words of `lang`.
+pub fn of(lang: Lang) -> &'static dyn Words {
+    match lang {
+        Lang::En => &en::En,
+        Lang::Id => &id::Id,
+    }
+}
 
 /// The words of `m` in `lang`: one exhaustive match over every key, so a
 /// key without its words does not compile (no wildcard arm, nothing falls

@@ -1,0 +1,3 @@
+use super::En;
+
+impl super::super::errors::ErrorWords for En {}

@@ -1,0 +1,3 @@
+use super::En;
+
+impl super::super::keys::KeyWords for En {}

@@ -1,0 +1,3 @@
+use super::En;
+
+impl super::super::MsgWords for En {}

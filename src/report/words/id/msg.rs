@@ -1,0 +1,3 @@
+use super::Id;
+
+impl super::super::MsgWords for Id {}
