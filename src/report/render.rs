@@ -72,7 +72,7 @@ pub fn stats_json(run: &RenderRun) -> Value {
 pub fn stats_text(run: &RenderRun, lang: Lang) -> String {
     let (st, t) = (&run.stats, &run.times);
     let id = lang == Lang::Id;
-    let per_pixel = words::render::per_pixel(&per_pixel_of(&run.shadings), lang);
+    let per_pixel = words::of(lang).per_pixel(&per_pixel_of(&run.shadings));
     let rows: Vec<(String, String)> = counts(st, per_pixel)
         .into_iter()
         .chain(times(t, lang))
