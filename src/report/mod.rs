@@ -65,7 +65,7 @@ impl Style {
     }
     /// How this style's language writes numbers.
     pub fn nums(&self) -> NumStyle {
-        NumStyle::of(self.lang)
+        words::of(self.lang).nums()
     }
     /// Values formatted the English way written in this style's language
     /// ([`NumStyle::values`]): `(0.8, 0.6, 0)` → `(0,8; 0,6; 0)` in Indonesian.

@@ -2,7 +2,7 @@
 //! same in every language; only the text shows the labels in Bahasa
 //! Indonesia), the `--stats` table and the JSON's `stats`.
 
-use super::lang::{Lang, NumStyle};
+use super::lang::Lang;
 use super::words;
 use crate::input::scene::Shading;
 pub use crate::msg::{PerPixel, Summary};
@@ -158,7 +158,7 @@ fn counts(st: &Stats, per_pixel: String) -> Vec<Row> {
 /// The median times of `--stats`, in milliseconds.
 fn times(t: &Times, lang: Lang) -> Vec<Row> {
     let r = |en: &str, ind: &str, ms: f64| {
-        let v = NumStyle::of(lang).number(&format!("{ms:.2} ms"));
+        let v = words::of(lang).nums().number(&format!("{ms:.2} ms"));
         (en.to_string(), ind.to_string(), v)
     };
     let (en, ind) = match t.runs {

@@ -75,6 +75,12 @@ pub const PLANE_NAMES: [(&str, &str); 6] = [
     ("back", "belakang"),
 ];
 
+/// `message` cut to `MAX_MESSAGE` characters in `lang`
+/// ([`msg::cut_message`]).
+pub fn cut_message(message: &str, lang: Lang) -> String {
+    msg::cut_message(of(lang), message)
+}
+
 /// Numbers in a message parameter written in `lang` (`(1.5, 2, 3)` →
 /// `(1,5; 2; 3)` in Indonesian; [`super::lang::NumStyle::values`]).
 fn nums(s: &str, lang: Lang) -> String {
@@ -630,6 +636,23 @@ mod tests {
         let up = Msg::UpParallel(1.5e-9);
         assert!(of(Lang::Id).msg(&up).contains("1,500e-9 rad"));
         assert!(of(Lang::En).msg(&up).contains("1.500e-9 rad"));
+    }
+
+    #[test]
+    fn a_long_message_is_cut_in_its_middle_in_each_language() {
+        // 400 characters: 150 kept at each end, 400 − 300 = 100 cut
+        let m = format!("{}{}{}", "a".repeat(150), "b".repeat(100), "c".repeat(150));
+        let (head, tail) = ("a".repeat(150), "c".repeat(150));
+        assert_eq!(
+            cut_message(&m, Lang::En),
+            format!("{head} … (100 characters cut) … {tail}")
+        );
+        assert_eq!(
+            cut_message(&m, Lang::Id),
+            format!("{head} … (100 karakter dipotong) … {tail}")
+        );
+        let short = "x".repeat(300);
+        assert_eq!(cut_message(&short, Lang::Id), short);
     }
 
     #[test]

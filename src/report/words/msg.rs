@@ -4,7 +4,7 @@
 //! parts, a capital first letter), written once for every language.
 
 use crate::msg::{Erratum, LightPart, Msg, Printed, Term};
-use crate::report::lang::NumStyle;
+use crate::report::lang::{NumStyle, MAX_MESSAGE};
 
 /// The words of the messages themselves ([`Msg`]) and the number style
 /// they are written in.
@@ -25,6 +25,9 @@ pub trait MsgWords {
     fn term(&self, t: Term) -> &'static str;
     /// One light's step of the lighting sum.
     fn light_part(&self, p: LightPart) -> &'static str;
+    /// What a message cut in its middle says in the cut: `(412
+    /// characters cut)`.
+    fn cut(&self, n: usize) -> String;
 }
 
 /// The words of one message as `place: words` (`p.toml:3:7: …`).
@@ -64,4 +67,17 @@ pub fn capitalised(s: &str) -> String {
 /// (`1.000e-9`), in the style `nums`.
 pub fn exponent(nums: NumStyle, a: f64) -> String {
     nums.number(&format!("{a:.3e}"))
+}
+
+/// `message` cut to [`MAX_MESSAGE`] characters, its middle replaced by the
+/// number of characters left out (`head … (412 characters cut) … tail`).
+pub fn cut_message<W: MsgWords + ?Sized>(w: &W, message: &str) -> String {
+    let n = message.chars().count();
+    if n <= MAX_MESSAGE {
+        return message.to_string();
+    }
+    let keep = MAX_MESSAGE / 2;
+    let head: String = message.chars().take(keep).collect();
+    let tail: String = message.chars().skip(n - keep).collect();
+    format!("{head} … {} … {tail}", w.cut(n - 2 * keep))
 }

@@ -230,6 +230,10 @@ impl MsgWords for En {
         }
     }
 
+    fn cut(&self, n: usize) -> String {
+        format!("({n} characters cut)")
+    }
+
     fn term(&self, t: Term) -> &'static str {
         match t {
             Term::Ambient => "ambient",

@@ -225,6 +225,10 @@ impl MsgWords for Id {
         }
     }
 
+    fn cut(&self, n: usize) -> String {
+        format!("({n} karakter dipotong)")
+    }
+
     fn term(&self, t: Term) -> &'static str {
         match t {
             Term::Ambient => "ambient",
