@@ -15,7 +15,7 @@ pub mod lang;
 mod pixel;
 mod render;
 mod said;
-pub use drawn::{CameraText, DrawnTitle, ShadeAsked, Statement};
+pub use drawn::{DrawnTitle, NamedPoint, Number, ShadeAsked, StatedCamera, Statement, Triple};
 pub use errors::{Bound, ClapErr, ErrMsg, IoWhy, NumErr, Thing, TomlErr, Twice, Want};
 pub use figure::{FigWord, FigureMsg, Panel};
 pub use lang::Lang;

@@ -333,14 +333,14 @@ mod tests {
 
     /// Every title and statement of a generated problem.
     fn drawn_messages() -> Vec<Msg> {
-        use crate::msg::{CameraText, DrawnTitle as T, ShadeAsked, Statement as S};
-        let c = || CameraText {
-            eye: "(3, 4, 0)".into(),
-            look: "(0, 0, 0)".into(),
-            up: "(0, 1, 0)".into(),
+        use crate::msg::{DrawnTitle as T, Number, ShadeAsked, StatedCamera, Statement as S};
+        let c = || StatedCamera {
+            eye: [3, 4, 0],
+            look: [0, 0, 0],
+            up: [0, 1, 0],
         };
-        let p = || "A(1, 0.5, 2)".to_string();
-        let x = |s: &str| s.to_string();
+        let p = || vec![("A".to_string(), [1, -2, 2])];
+        let half = Number::dec(5, 1);
         let mut v: Vec<Msg> = [
             T::Basis,
             T::EyeCoordinates,
@@ -354,33 +354,28 @@ mod tests {
         .map(Msg::DrawnTitle)
         .collect();
         let shade = |asked| S::Shade {
-            normal: x("(0, 3, 4)"),
-            color: x("(1, 0.5, 0)"),
-            light: x("(0, 0, 1)"),
-            view: x("(0, 0, 1)"),
-            model: x("phong"),
-            constants: x("ka = 0.4, kd = 0.6"),
+            normal: [0, 3, 4],
+            color: [Number::int(1), half, Number::int(0)],
+            light: [0, 0, 1],
+            view: [0, 0, 1],
+            model: "phong".into(),
+            constants: vec![("ka", Number::dec(4, 1)), ("kd", Number::dec(6, 1))],
             asked,
         };
         for st in [
             S::Basis(c()),
             S::View(c(), p()),
-            S::Project(c(), p(), x("0.5")),
+            S::Project(c(), p(), half),
             S::Pipeline {
                 camera: c(),
                 points: p(),
-                near: x("0.5"),
-                fovy: x("45"),
-                aspect: x("1.5"),
-                viewport: x("200x100"),
+                near: half,
+                fovy: 45,
+                aspect: Number::dec(15, 1),
+                viewport: (200, 100),
             },
-            S::Window(x("90"), x("1.5"), x("2")),
-            S::Clip(
-                x("(0, 0, 0)"),
-                x("(2, 2, 2)"),
-                x("(1, 1, 1)"),
-                x("(3, 1, 1)"),
-            ),
+            S::Window(90, Number::Fraction(4, 3), Number::int(2)),
+            S::Clip([0, 0, 0], [2, 2, 2], [1, 1, 1], [3, 1, 1]),
             shade(ShadeAsked::Lambert),
             shade(ShadeAsked::Blinn),
             shade(ShadeAsked::Phong),
@@ -388,6 +383,48 @@ mod tests {
             v.push(Msg::Statement(Box::new(st)));
         }
         v
+    }
+
+    #[test]
+    fn a_statement_writes_its_numbers_in_the_style_asked() {
+        use crate::msg::{Number, ShadeAsked, Statement as S};
+        let shade = S::Shade {
+            normal: [0, -3, 4],
+            color: [Number::int(1), Number::dec(5, 1), Number::int(0)],
+            light: [0, 0, 1],
+            view: [0, 0, 1],
+            model: "lambert".into(),
+            constants: vec![("ka", Number::dec(4, 1)), ("kd", Number::dec(6, 1))],
+            asked: ShadeAsked::Lambert,
+        };
+        let id = of(Lang::Id).statement(&shade, NumStyle::COMMA);
+        assert!(
+            id.contains("N = (0; -3; 4) dan warna Cs = (1; 0,5; 0)"),
+            "{id}"
+        );
+        assert!(id.contains("(ka = 0,4; kd = 0,6)"), "{id}");
+        assert!(id.contains("[0; 1]"), "{id}");
+        // a quiz with --decimal point in Indonesian, comma in English
+        let id_point = of(Lang::Id).statement(&shade, NumStyle::POINT);
+        assert!(id_point.contains("Cs = (1, 0.5, 0)") && id_point.contains("ka = 0.4, kd = 0.6"));
+        let en_comma = of(Lang::En).statement(&shade, NumStyle::COMMA);
+        assert!(en_comma.contains("color Cs = (1; 0,5; 0)"), "{en_comma}");
+        let window = S::Window(90, Number::Fraction(16, 9), Number::dec(25, 2));
+        let id = of(Lang::Id).statement(&window, NumStyle::COMMA);
+        assert!(id.contains("aspect ratio 16/9 dan near = 0,25."), "{id}");
+        let pts = S::View(
+            crate::msg::StatedCamera {
+                eye: [3, 4, 0],
+                look: [0, 0, 0],
+                up: [0, 1, 0],
+            },
+            vec![("A".into(), [1, 0, 2]), ("B".into(), [-1, 2, 0])],
+        );
+        let id = of(Lang::Id).statement(&pts, NumStyle::COMMA);
+        assert!(
+            id.contains("Pref = (0; 0; 0)") && id.ends_with("titik-titik A(1; 0; 2); B(-1; 2; 0)."),
+            "{id}"
+        );
     }
 
     /// Fails to compile when a key is added without being listed above.

@@ -1,8 +1,9 @@
 //! A generated problem's title and statement in English.
 
 use super::En;
-use crate::msg::{CameraText, DrawnTitle, ShadeAsked, Statement};
+use crate::msg::{DrawnTitle, Number, ShadeAsked, StatedCamera, Statement, Triple};
 use crate::report::lang::NumStyle;
+use crate::report::words::drawn::{self, number, numbers, triple};
 use crate::report::words::DrawnWords;
 
 impl DrawnWords for En {
@@ -20,13 +21,14 @@ impl DrawnWords for En {
 
     /// A word table: long on purpose.
     fn statement(&self, s: &Statement, nums: NumStyle) -> String {
-        let n = |x: &str| nums.values(x);
-        let camera = |c: &CameraText| {
+        let n = |x: &Number| number(*x, nums);
+        let t = |v: &Triple| triple(*v, nums);
+        let camera = |c: &StatedCamera| {
             format!(
                 "A camera at Pe = {} looks at Pr = {} with up vector Vup = {}.",
-                n(&c.eye),
-                n(&c.look),
-                n(&c.up)
+                t(&c.eye),
+                t(&c.look),
+                t(&c.up)
             )
         };
         match s {
@@ -34,13 +36,13 @@ impl DrawnWords for En {
             Statement::View(c, pts) => format!(
                 "{} Find the camera axes n, u, v and the eye coordinates of the points {}.",
                 camera(c),
-                n(pts)
+                drawn::points(pts, nums)
             ),
             Statement::Project(c, pts, near) => format!(
                 "{} With near = {}, project the points {} onto the near plane z = d = −near (centre of projection at the eye); give (xp{s}yp{s}zp).",
                 camera(c),
                 n(near),
-                n(pts),
+                drawn::points(pts, nums),
                 s = nums.sep
             ),
             Statement::Pipeline {
@@ -51,11 +53,13 @@ impl DrawnWords for En {
                 aspect,
                 viewport,
             } => format!(
-                "{} The perspective set-up is near = {}, fovy = {fovy}°, aspect = {}, viewport {viewport} pixels. For the points {}: (1) find n, u, v and the eye coordinates; (2) project them onto the near plane z = −near; (3) find the viewing window (top, bottom, left, right, height, width); (4) find the pixel coordinates of the projected points.",
+                "{} The perspective set-up is near = {}, fovy = {fovy}°, aspect = {}, viewport {}x{} pixels. For the points {}: (1) find n, u, v and the eye coordinates; (2) project them onto the near plane z = −near; (3) find the viewing window (top, bottom, left, right, height, width); (4) find the pixel coordinates of the projected points.",
                 camera(c),
                 n(near),
                 n(aspect),
-                n(points)
+                viewport.0,
+                viewport.1,
+                drawn::points(points, nums)
             ),
             Statement::Window(fovy, aspect, near) => format!(
                 "A perspective camera has fovy = {fovy}°, aspect ratio {} and near = {}. Find the viewing window on the near plane: top, bottom, left, right, height and width.",
@@ -64,10 +68,10 @@ impl DrawnWords for En {
             ),
             Statement::Clip(min, max, p0, p1) => format!(
                 "The view volume is the box with corners {} and {}. For the segment P0{} P1{}: (a) give the region codes of P0 and P1 (6 bits, bit 1 rightmost: left, right, bottom, top, front, back); (b) is the segment accepted, rejected or clipped, and what is left of it?",
-                n(min),
-                n(max),
-                n(p0),
-                n(p1)
+                t(min),
+                t(max),
+                t(p0),
+                t(p1)
             ),
             Statement::Shade {
                 normal,
@@ -79,11 +83,11 @@ impl DrawnWords for En {
                 asked,
             } => format!(
                 "A surface point with normal N = {} and color Cs = {} is lit by one white directional light from L = {} and seen from V = {}. With the {model} model ({}), find {} and the color (each channel clamped to [0{}1]).",
-                n(normal),
-                n(color),
-                n(light),
-                n(view),
-                n(constants),
+                t(normal),
+                numbers(*color, nums),
+                t(light),
+                t(view),
+                drawn::constants(constants, nums),
                 shade_asked(*asked),
                 nums.sep
             ),

@@ -2,8 +2,9 @@
 //! course text's terms).
 
 use super::Id;
-use crate::msg::{CameraText, DrawnTitle, ShadeAsked, Statement};
+use crate::msg::{DrawnTitle, Number, ShadeAsked, StatedCamera, Statement, Triple};
 use crate::report::lang::NumStyle;
+use crate::report::words::drawn::{self, number, numbers, triple};
 use crate::report::words::DrawnWords;
 
 impl DrawnWords for Id {
@@ -21,13 +22,14 @@ impl DrawnWords for Id {
 
     /// A word table: long on purpose.
     fn statement(&self, s: &Statement, nums: NumStyle) -> String {
-        let n = |x: &str| nums.values(x);
-        let camera = |c: &CameraText| {
+        let n = |x: &Number| number(*x, nums);
+        let t = |v: &Triple| triple(*v, nums);
+        let camera = |c: &StatedCamera| {
             format!(
                 "Sebuah kamera di posisi mata Peye = {} melihat ke titik referensi Pref = {} dengan vektor Vup = {}.",
-                n(&c.eye),
-                n(&c.look),
-                n(&c.up)
+                t(&c.eye),
+                t(&c.look),
+                t(&c.up)
             )
         };
         match s {
@@ -35,13 +37,13 @@ impl DrawnWords for Id {
             Statement::View(c, pts) => format!(
                 "{} Tentukan sumbu kamera n, u, v dan koordinat kamera titik-titik {}.",
                 camera(c),
-                n(pts)
+                drawn::points(pts, nums)
             ),
             Statement::Project(c, pts, near) => format!(
                 "{} Dengan near = {}, proyeksikan titik-titik {} ke near plane z = d = −near (pusat proyeksi di mata); berikan (xp{s}yp{s}zp).",
                 camera(c),
                 n(near),
-                n(pts),
+                drawn::points(pts, nums),
                 s = nums.sep
             ),
             Statement::Pipeline {
@@ -52,11 +54,13 @@ impl DrawnWords for Id {
                 aspect,
                 viewport,
             } => format!(
-                "{} Pengaturan perspektifnya near = {}, fovy = {fovy}°, aspect = {}, viewport {viewport} piksel. Untuk titik-titik {}: (1) tentukan n, u, v dan koordinat kamera; (2) proyeksikan ke near plane z = −near; (3) tentukan viewing window (top, bottom, left, right, tinggi, lebar); (4) tentukan koordinat piksel titik-titik hasil proyeksi.",
+                "{} Pengaturan perspektifnya near = {}, fovy = {fovy}°, aspect = {}, viewport {}x{} piksel. Untuk titik-titik {}: (1) tentukan n, u, v dan koordinat kamera; (2) proyeksikan ke near plane z = −near; (3) tentukan viewing window (top, bottom, left, right, tinggi, lebar); (4) tentukan koordinat piksel titik-titik hasil proyeksi.",
                 camera(c),
                 n(near),
                 n(aspect),
-                n(points)
+                viewport.0,
+                viewport.1,
+                drawn::points(points, nums)
             ),
             Statement::Window(fovy, aspect, near) => format!(
                 "Sebuah kamera perspektif memiliki fovy = {fovy}°, aspect ratio {} dan near = {}. Tentukan viewing window pada near plane: top, bottom, left, right, tinggi dan lebar.",
@@ -65,10 +69,10 @@ impl DrawnWords for Id {
             ),
             Statement::Clip(min, max, p0, p1) => format!(
                 "View volume berupa balok dengan sudut {} dan {}. Untuk segmen garis P0{} P1{}: (a) berikan region code P0 dan P1 (6 bit, bit 1 paling kanan: kiri, kanan, bawah, atas, depan, belakang); (b) apakah segmen garis diterima, ditolak atau di-clip, dan bagian mana yang tersisa?",
-                n(min),
-                n(max),
-                n(p0),
-                n(p1)
+                t(min),
+                t(max),
+                t(p0),
+                t(p1)
             ),
             Statement::Shade {
                 normal,
@@ -80,11 +84,11 @@ impl DrawnWords for Id {
                 asked,
             } => format!(
                 "Sebuah titik pada permukaan dengan vektor normal N = {} dan warna Cs = {} disinari satu sumber cahaya putih berarah dari L = {} dan dilihat dari V = {}. Dengan model {model} ({}), tentukan {} dan warnanya (tiap kanal dibatasi ke [0{}1]).",
-                n(normal),
-                n(color),
-                n(light),
-                n(view),
-                n(constants),
+                t(normal),
+                numbers(*color, nums),
+                t(light),
+                t(view),
+                drawn::constants(constants, nums),
                 shade_asked(*asked),
                 nums.sep
             ),
