@@ -10,8 +10,8 @@ pub trait FigureWords {
     fn figure(&self, m: &FigureMsg) -> String;
 }
 
-/// The name of light `k` (from 1) in a figure: `L` when it is the only one
-/// the text would draw, else `L2`, `L3`, ….
+/// The name of light `k` (from 1) in a figure: `L` for the first, as the
+/// text names its one light, then `L2`, `L3`, ….
 pub fn light_name(k: usize) -> String {
     if k == 1 {
         "L".to_string()

@@ -1,29 +1,30 @@
 //! The words of every message key (`crate::msg::Msg`), in English and in
 //! Bahasa Indonesia, with the course text's own terms (docs/glossary.md).
-//! One exhaustive match: a key without both languages does not compile.
 //!
 //! Each language is one module ([`en`], [`id`]) holding one type that
 //! implements [`Words`]: one trait per family of keys, each method one
-//! exhaustive match over that family in that language. A third language is
-//! a third module and a `Lang` variant; the compiler names every family it
-//! has not yet written.
+//! exhaustive match over that family in that language, and the language's
+//! number style ([`MsgWords::nums`]). A third language is a third module
+//! and a `Lang` variant; the compiler names every family and every key it
+//! has not yet written. A family's file (`msg.rs`, `drawn.rs`, …) holds its
+//! trait and the language-neutral joining its words share.
 
 use super::lang::Lang;
 use crate::msg::Msg;
 
-pub mod drawn;
+mod drawn;
 mod en;
 pub mod errors;
-pub mod figure;
+mod figure;
 mod id;
 pub mod keys;
 pub mod labels;
-pub mod msg;
+mod msg;
 pub mod names;
-pub mod pixel;
+mod pixel;
 pub mod render;
 pub mod report;
-pub mod said;
+mod said;
 
 pub use drawn::DrawnWords;
 pub use figure::FigureWords;
