@@ -65,7 +65,7 @@ impl Style {
     }
     /// How this style's language writes numbers.
     pub fn nums(&self) -> NumStyle {
-        NumStyle::of(self.lang)
+        words::of(self.lang).nums()
     }
     /// Values formatted the English way written in this style's language
     /// ([`NumStyle::values`]): `(0.8, 0.6, 0)` → `(0,8; 0,6; 0)` in Indonesian.
@@ -332,7 +332,7 @@ impl Report {
     /// as a render, it answers nothing.
     pub fn answer_heading(&self, lang: Lang) -> &'static str {
         match &self.asked {
-            Asked::Render(_) => words::render::heading(lang),
+            Asked::Render(_) => words::of(lang).render_heading(),
             _ => tr(lang, "Answer", "Jawaban"),
         }
     }
@@ -342,7 +342,7 @@ impl Report {
         match &self.asked {
             Asked::Render(run) => render::summary(run)
                 .into_iter()
-                .map(|(k, v)| (k.key(), words::render::summary(k, lang), v))
+                .map(|(k, v)| (k.key(), words::of(lang).summary(k), v))
                 .collect(),
             _ => self
                 .result

@@ -28,7 +28,7 @@ use crate::msg::Msg;
 use crate::report::figure::{drawings::drawings, svg::to_svg};
 use crate::report::lang::{tr, Lang, NumStyle};
 use crate::report::mistakes::mistake_text;
-use crate::report::words::{statement, words};
+use crate::report::words::words;
 use crate::report::Style;
 use crate::stages::trace::Val;
 use crate::tutor::generate::quiz::{Blank, Question, Quiz, Typed, Typing, Wrong};
@@ -163,7 +163,7 @@ pub fn question_name(g: &Generated, i: usize, v: usize, lang: Lang) -> String {
 pub fn intro_html(question: &Question, q: &Quiz, w: &Written) -> String {
     let lang = w.style.lang;
     let statement = match &question.problem.statement {
-        Msg::Statement(s) => statement(s, lang, w.decimal.nums()),
+        Msg::Statement(s) => crate::report::words::of(lang).statement(s, w.decimal.nums()),
         other => words(other, lang),
     };
     format!(

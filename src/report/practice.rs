@@ -408,7 +408,7 @@ fn hint_text(level: u8, step: Option<&Step>, look: &Look) -> String {
 fn summary_text(s: &Summary, look: &Look) -> String {
     let lang = look.style.lang;
     let pts = crate::report::fmt_dec(s.points, 4);
-    let pts = crate::report::lang::NumStyle::of(lang).number(&pts);
+    let pts = crate::report::words::of(lang).nums().number(&pts);
     let mut out = match lang {
         Lang::En => format!(
             "\nSummary: {pts}/{} points\n  correct {} ({} by follow-through), too coarse {}, wrong {},\n  skipped {}, revealed {}, not reached {}; hints used {}\n",

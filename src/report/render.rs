@@ -2,7 +2,7 @@
 //! same in every language; only the text shows the labels in Bahasa
 //! Indonesia), the `--stats` table and the JSON's `stats`.
 
-use super::lang::{Lang, NumStyle};
+use super::lang::Lang;
 use super::words;
 use crate::input::scene::Shading;
 pub use crate::msg::{PerPixel, Summary};
@@ -72,7 +72,7 @@ pub fn stats_json(run: &RenderRun) -> Value {
 pub fn stats_text(run: &RenderRun, lang: Lang) -> String {
     let (st, t) = (&run.stats, &run.times);
     let id = lang == Lang::Id;
-    let per_pixel = words::render::per_pixel(&per_pixel_of(&run.shadings), lang);
+    let per_pixel = words::of(lang).per_pixel(&per_pixel_of(&run.shadings));
     let rows: Vec<(String, String)> = counts(st, per_pixel)
         .into_iter()
         .chain(times(t, lang))
@@ -158,7 +158,7 @@ fn counts(st: &Stats, per_pixel: String) -> Vec<Row> {
 /// The median times of `--stats`, in milliseconds.
 fn times(t: &Times, lang: Lang) -> Vec<Row> {
     let r = |en: &str, ind: &str, ms: f64| {
-        let v = NumStyle::of(lang).number(&format!("{ms:.2} ms"));
+        let v = words::of(lang).nums().number(&format!("{ms:.2} ms"));
         (en.to_string(), ind.to_string(), v)
     };
     let (en, ind) = match t.runs {

@@ -8,7 +8,8 @@ mod page;
 
 use crate::error::Error;
 use crate::report::check::to_json;
-use crate::report::lang::{cut_message, tr, Lang};
+use crate::report::lang::{tr, Lang};
+use crate::report::words::cut_message;
 use crate::tutor::check::{Marking, Verdict};
 use crate::tutor::class::{Class, Note, Sheet, Skip};
 use serde_json::{json, Value};

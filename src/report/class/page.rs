@@ -5,7 +5,7 @@
 
 use super::histogram;
 use crate::report::doc::Doc;
-use crate::report::lang::{tr, Lang, NumStyle};
+use crate::report::lang::{tr, Lang};
 use crate::report::mistakes::mistake_text;
 use crate::report::Style;
 use crate::tutor::check::Settings;
@@ -18,7 +18,8 @@ fn num(x: Option<f64>, lang: Lang) -> String {
     x.map_or("—".to_string(), |x| {
         // −0.001 is written 0.00, not −0.00
         let x = if x.abs() < 0.005 { 0.0 } else { x };
-        NumStyle::of(lang)
+        crate::report::words::of(lang)
+            .nums()
             .number(&format!("{x:.2}"))
             .replacen('-', "−", 1)
     })
@@ -133,7 +134,9 @@ pub(super) fn document(
 }
 
 fn summary(doc: Doc, class: &Class, s: &Stats, settings: &Settings, lang: Lang) -> String {
-    let tol = NumStyle::of(lang).number(&crate::report::fmt_dec(settings.tolerance * 100.0, 4));
+    let tol = crate::report::words::of(lang)
+        .nums()
+        .number(&crate::report::fmt_dec(settings.tolerance * 100.0, 4));
     let ft = if settings.follow_through {
         tr(lang, "on", "aktif")
     } else {
@@ -550,8 +553,9 @@ fn students_section(doc: Doc, class: &Class, s: &Stats, lang: Lang) -> String {
             if class.exam {
                 row.push(sh.variant.map(|v| v.to_string()).unwrap_or_default());
             }
-            let score =
-                NumStyle::of(lang).number(&crate::report::fmt_dec(sh.score().unwrap_or(0.0), 4));
+            let score = crate::report::words::of(lang)
+                .nums()
+                .number(&crate::report::fmt_dec(sh.score().unwrap_or(0.0), 4));
             row.push(format!("{score}/{}", sh.total().unwrap_or(0)));
             let codes: Vec<&str> = s
                 .mistakes
