@@ -350,3 +350,29 @@ impl Trace for Recorder {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The keys of a step's JSON, as docs/spec.md §3's scripts read them.
+    #[test]
+    fn a_name_is_spelled_in_english_as_its_json_key() {
+        let a = || "A".to_string();
+        let keys = [
+            (Name::math("|Pe − Pr|"), "|Pe − Pr|"),
+            (Name::Eye(a()), "A'"),
+            (Name::Image(a()), "A''"),
+            (Name::EyeZ(a()), "z' of A'"),
+            (Name::Pixel(a()), "A pixel"),
+            (Name::Bit(0, "kiri (left)"), "bit 1 (kiri (left))"),
+            (Name::Vertex(0), "vertex 0 (X, Y)"),
+            (Name::InEyeSpace("P"), "P (eye space)"),
+            (Name::TKept, "t kept"),
+            (Name::SameAsRasterizer, "same as the rasterizer's"),
+        ];
+        for (name, key) in keys {
+            assert_eq!(name.to_string(), key);
+        }
+    }
+}

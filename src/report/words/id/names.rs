@@ -46,3 +46,30 @@ impl super::super::names::NameWords for Id {
         word.to_string()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::words::names::NameWords;
+
+    #[test]
+    fn names_in_the_texts_words() {
+        let id = |n: Name| Id.name(&n);
+        let a = || "A".to_string();
+        assert_eq!(id(Name::EyeZ(a())), "z' dari A'");
+        assert_eq!(id(Name::Pixel(a())), "piksel A");
+        assert_eq!(id(Name::Bit(0, "kiri (left)")), "bit 1 (kiri)");
+        assert_eq!(id(Name::Bit(5, "belakang (back)")), "bit 6 (belakang)");
+        assert_eq!(id(Name::Vertex(2)), "verteks 2 (X, Y)");
+        assert_eq!(id(Name::InEyeSpace("N")), "N (ruang kamera)");
+        assert_eq!(id(Name::FaceCentre), "pusat face");
+        assert_eq!(id(Name::From), "ujung awal");
+        assert_eq!(id(Name::ClippedPolygon), "poligon hasil clipping");
+        // Notation is the same in every language.
+        assert_eq!(id(Name::Eye(a())), "A'");
+        assert_eq!(id(Name::Image(a())), "A''");
+        for same in ["Pe − Pr", "cos α", "code0 AND code1", "top", "n"] {
+            assert_eq!(id(Name::math(same)), same);
+        }
+    }
+}
