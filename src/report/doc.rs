@@ -53,7 +53,8 @@ impl Doc {
         }
     }
 
-    /// `name = value` (a matrix is set as a matrix).
+    /// `name = value` (a matrix is set as a matrix), `name` in the
+    /// reader's words.
     pub fn named(self, st: &Style, name: &str, v: &Val, arrow: bool) -> String {
         let lead = if arrow { "⇒ " } else { "" };
         match (self, v) {

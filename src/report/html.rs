@@ -78,7 +78,7 @@ pub fn step(k: usize, s: &Step, st: &Style) -> String {
 }
 
 /// `name = substitution = value` in MathML when the step shows how the
-/// value was worked, else as [`named`].
+/// value was worked, else as [`named`]; `name` in the reader's words.
 pub fn line(st: &Style, name: &str, sub: Option<&Subst>, v: &Val, arrow: bool) -> String {
     match sub {
         Some(sub) if !v.is_matrix() => {

@@ -1,7 +1,8 @@
 //! The names of a step's values in Bahasa Indonesia, with the course
 //! text's own terms (region code, face, viewing window): one exhaustive
 //! match, so a new name without its words does not compile. Notation is
-//! written as it is (`u`, `cos α`, `A'`). A word table: long on purpose.
+//! written as its key spells it (`u`, `cos α`, `A'`). A word table: long
+//! on purpose.
 
 use super::Id;
 use crate::stages::trace::Name;
@@ -9,9 +10,8 @@ use crate::stages::trace::Name;
 impl super::super::names::NameWords for Id {
     fn name(&self, n: &Name) -> String {
         let word = match n {
-            Name::Math(s) => s,
-            Name::Eye(p) => return format!("{p}'"),
-            Name::Image(p) => return format!("{p}''"),
+            // notation, the same in every language: as its key spells it
+            Name::Math(_) | Name::Eye(_) | Name::Image(_) => return n.to_string(),
             Name::EyeZ(p) => return format!("z' dari {p}'"),
             Name::Pixel(p) => return format!("piksel {p}"),
             Name::Bit(bit, _) => {
