@@ -145,6 +145,64 @@ pub enum Twice {
     Answers,
 }
 
+/// A colour channel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Channel {
+    /// Red.
+    Red,
+    /// Green.
+    Green,
+    /// Blue.
+    Blue,
+}
+
+impl Channel {
+    /// The channels in the order of a colour's components (R, G, B).
+    pub const RGB: [Channel; 3] = [Channel::Red, Channel::Green, Channel::Blue];
+}
+
+/// Why the OBJ reader (the `tobj` crate) refused a file: one case per
+/// reason it gives (`input::mesh` maps its error to these).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ObjWhy {
+    /// A file (a material library) could not be opened.
+    OpenFileFailed,
+    /// The file could not be read.
+    ReadError,
+    /// A character it does not know.
+    UnrecognizedCharacter,
+    /// A vertex position that cannot be read.
+    PositionParse,
+    /// A vertex scaled by w = 0.
+    ScalingByZero,
+    /// A vertex colour with too many or too few components.
+    ColorParse,
+    /// A vertex normal that cannot be read.
+    NormalParse,
+    /// A texture coordinate that cannot be read.
+    TexcoordParse,
+    /// A face that cannot be read.
+    FaceParse,
+    /// A material that cannot be read.
+    MaterialParse,
+    /// An object name that is not valid.
+    InvalidObjectName,
+    /// A polygon that is not valid.
+    InvalidPolygon,
+    /// A face refers to a vertex that does not exist.
+    FaceVertexOutOfBounds,
+    /// A face refers to a texture coordinate that does not exist.
+    FaceTexCoordOutOfBounds,
+    /// A face refers to a normal that does not exist.
+    FaceNormalOutOfBounds,
+    /// A face refers to a vertex colour that does not exist.
+    FaceColorOutOfBounds,
+    /// Load options that exclude each other.
+    LoadOptions,
+    /// A failure it does not name.
+    Generic,
+}
+
 /// What needs a key: a light of a kind, or an object of a type (as spelled
 /// in the file: `spot`, `sphere`, `obj`).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -188,7 +246,7 @@ pub enum ErrMsg {
     /// Given twice.
     Twice(Twice),
     /// A colour channel outside [0, 1]: channel, value.
-    Channel(String, String),
+    Channel(Channel, String),
     /// Attenuation a0, a1, a2 negative or all 0.
     Attenuation(String, String, String),
     /// Spot cones not 0 ≤ theta ≤ phi ≤ 180°: theta, phi.
@@ -261,9 +319,8 @@ pub enum ErrMsg {
     NeededToRender,
     /// An OBJ file that cannot be read: path, why.
     ObjUnreadable(String, IoWhy),
-    /// An OBJ file that is not valid: path, the reader's error by name
-    /// (`FaceParseError`) and as it says it.
-    ObjInvalid(String, String, String),
+    /// An OBJ file that is not valid: path, the OBJ reader's reason.
+    ObjInvalid(String, ObjWhy),
     /// An OBJ file without faces.
     ObjNoFaces(String),
     /// An OBJ file with a vertex not finite.
