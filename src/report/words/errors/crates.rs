@@ -225,11 +225,30 @@ pub enum SyntaxWhat {
     RedundantSign,
     DuplicateKey,
     TooDeep,
+    CarriageReturn,
+    SignedRadix,
+    MultiLineBasicKey,
+    MultiLineLiteralKey,
+    MissingCommentStart,
+    RadixLowercase,
+    RedundantPrefix,
+    FewUnicodeDigits,
+    IntegerOverflow,
+    InvalidBinary,
+    InvalidOctal,
+    InvalidHex,
+    InvalidMantissa,
+    InvalidFraction,
+    InvalidExponent,
+    InvalidLiteralString,
+    InvalidMultiLineLiteralString,
+    InvalidDatetime,
+    WantedStringOrTable,
 }
 
 impl SyntaxWhat {
     /// Every description.
-    pub const ALL: [SyntaxWhat; 47] = {
+    pub const ALL: [SyntaxWhat; 66] = {
         use SyntaxWhat::*;
         [
             InvalidFloat,
@@ -279,6 +298,25 @@ impl SyntaxWhat {
             RedundantSign,
             DuplicateKey,
             TooDeep,
+            CarriageReturn,
+            SignedRadix,
+            MultiLineBasicKey,
+            MultiLineLiteralKey,
+            MissingCommentStart,
+            RadixLowercase,
+            RedundantPrefix,
+            FewUnicodeDigits,
+            IntegerOverflow,
+            InvalidBinary,
+            InvalidOctal,
+            InvalidHex,
+            InvalidMantissa,
+            InvalidFraction,
+            InvalidExponent,
+            InvalidLiteralString,
+            InvalidMultiLineLiteralString,
+            InvalidDatetime,
+            WantedStringOrTable,
         ]
     };
 }
@@ -334,6 +372,25 @@ pub fn syntax_text(w: SyntaxWhat) -> &'static str {
         RedundantSign => "redundant numeric sign",
         DuplicateKey => "duplicate key",
         TooDeep => "cannot recurse further; max recursion depth met",
+        CarriageReturn => "carriage return must be followed by newline",
+        SignedRadix => "integers with a radix cannot be signed",
+        MultiLineBasicKey => "keys cannot be multi-line basic strings",
+        MultiLineLiteralKey => "keys cannot be multi-line literal strings",
+        MissingCommentStart => "missing comment start",
+        RadixLowercase => "radix must be lowercase",
+        RedundantPrefix => "redundant integer number prefix",
+        FewUnicodeDigits => "too few unicode value digits",
+        IntegerOverflow => "integer number overflowed",
+        InvalidBinary => "invalid binary number",
+        InvalidOctal => "invalid octal number",
+        InvalidHex => "invalid hexadecimal number",
+        InvalidMantissa => "invalid mantissa",
+        InvalidFraction => "invalid fraction",
+        InvalidExponent => "invalid exponent",
+        InvalidLiteralString => "invalid literal string",
+        InvalidMultiLineLiteralString => "invalid multi-line literal string",
+        InvalidDatetime => "invalid datetime",
+        WantedStringOrTable => "wanted string or table",
     }
 }
 
@@ -352,11 +409,15 @@ pub enum ExpectWord {
     LiteralString,
     MultiLineBasicString,
     UnicodeHex,
+    NonDoubleQuoteVisible,
+    NonSingleQuote,
+    NonSingleQuoteVisible,
+    Newline,
 }
 
 impl ExpectWord {
     /// Every kind.
-    pub const ALL: [ExpectWord; 11] = [
+    pub const ALL: [ExpectWord; 15] = [
         ExpectWord::Digits,
         ExpectWord::Letters,
         ExpectWord::Numbers,
@@ -368,6 +429,10 @@ impl ExpectWord {
         ExpectWord::LiteralString,
         ExpectWord::MultiLineBasicString,
         ExpectWord::UnicodeHex,
+        ExpectWord::NonDoubleQuoteVisible,
+        ExpectWord::NonSingleQuote,
+        ExpectWord::NonSingleQuoteVisible,
+        ExpectWord::Newline,
     ];
 }
 
@@ -385,6 +450,10 @@ pub fn expect_text(w: ExpectWord) -> &'static str {
         ExpectWord::LiteralString => "literal string",
         ExpectWord::MultiLineBasicString => "multi-line basic string",
         ExpectWord::UnicodeHex => "unicode hexadecimal value",
+        ExpectWord::NonDoubleQuoteVisible => "non-double-quote visible characters",
+        ExpectWord::NonSingleQuote => "non-single-quote characters",
+        ExpectWord::NonSingleQuoteVisible => "non-single-quote visible characters",
+        ExpectWord::Newline => "newline",
     }
 }
 

@@ -421,6 +421,25 @@ impl ErrorWords for Id {
             RedundantSign => "tanda bilangan berlebih",
             DuplicateKey => "kunci ganda",
             TooDeep => "bersarang terlalu dalam",
+            CarriageReturn => "carriage return harus diikuti akhir baris",
+            SignedRadix => "bilangan bulat berbasis (0x, 0o, 0b) tidak boleh bertanda",
+            MultiLineBasicKey => "kunci tidak boleh berupa string multi-baris",
+            MultiLineLiteralKey => "kunci tidak boleh berupa string literal multi-baris",
+            MissingCommentStart => "awal komentar `#` tidak ada",
+            RadixLowercase => "awalan basis harus huruf kecil (0x, 0o, 0b)",
+            RedundantPrefix => "awalan bilangan bulat berlebih",
+            FewUnicodeDigits => "digit nilai unicode terlalu sedikit",
+            IntegerOverflow => "bilangan bulat terlalu besar",
+            InvalidBinary => "bilangan biner tidak sah",
+            InvalidOctal => "bilangan oktal tidak sah",
+            InvalidHex => "bilangan heksadesimal tidak sah",
+            InvalidMantissa => "mantisa tidak sah",
+            InvalidFraction => "bagian pecahan tidak sah",
+            InvalidExponent => "eksponen tidak sah",
+            InvalidLiteralString => "string literal tidak sah",
+            InvalidMultiLineLiteralString => "string literal multi-baris tidak sah",
+            InvalidDatetime => "tanggal-waktu tidak sah",
+            WantedStringOrTable => "seharusnya string atau tabel",
         }
     }
 
@@ -437,6 +456,10 @@ impl ErrorWords for Id {
             ExpectWord::LiteralString => "string literal",
             ExpectWord::MultiLineBasicString => "string multi-baris",
             ExpectWord::UnicodeHex => "nilai heksadesimal unicode",
+            ExpectWord::NonDoubleQuoteVisible => "karakter terlihat selain tanda kutip ganda",
+            ExpectWord::NonSingleQuote => "karakter selain tanda kutip tunggal",
+            ExpectWord::NonSingleQuoteVisible => "karakter terlihat selain tanda kutip tunggal",
+            ExpectWord::Newline => "akhir baris",
         }
     }
 
