@@ -1,8 +1,8 @@
 //! Why an input was refused, as data: every error a person can meet is one
 //! of these keys with its parameters (numbers as notation, `.` for the
-//! decimal point), and `report::words::errors` says it in English and in
-//! Bahasa Indonesia. The field at fault is not here: `Error` holds it, as
-//! the flag or key is spelled.
+//! decimal point), and each language's module of `report::words` says it
+//! (`ErrorWords`, one exhaustive match per key enum). The field at fault is
+//! not here: `Error` holds it, as the flag or key is spelled.
 
 /// Why a number expression (a flag, a file value, an answer) or a plane's
 /// height formula could not be read or evaluated.
