@@ -267,8 +267,10 @@ pub enum ErrMsg {
     TranslationTooLarge(String),
     /// A point's eye coordinates too large: point, precision.
     EyeCoordsTooLarge(String, String),
-    /// A result not finite at a precision.
+    /// A result not finite at a float precision (`f64`, `f32`).
     ResultNotFinite(String),
+    /// An exact result beyond the range of f64 (no decimal to give).
+    ExactBeyondF64,
     /// A file that cannot be read: path, why.
     CannotRead(String, IoWhy),
     /// Standard input cannot be read: why.

@@ -79,7 +79,7 @@ impl ErrorWords for En {
             ErrMsg::EyeLookTooLarge(d, prec) => format!("Pe − Pr = {d} is too large for {prec} precision"),
             ErrMsg::TranslationTooLarge(prec) => format!("the view matrix's translation −(u·Pe, v·Pe, n·Pe) is too large for {prec} precision"),
             ErrMsg::EyeCoordsTooLarge(p, prec) => format!("the eye coordinates of {p} are too large for {prec} precision"),
-            ErrMsg::ResultNotFinite(prec) if prec == "exact" => "the result is exact but beyond the range of f64 (about 1.8e308), so it has no decimal or JSON number to give (scale the inputs)".into(),
+            ErrMsg::ExactBeyondF64 => "the result is exact but beyond the range of f64 (about 1.8e308), so it has no decimal or JSON number to give (scale the inputs)".into(),
             ErrMsg::ResultNotFinite(prec) => format!("the result is not a finite number at {prec} precision: an input overflows or underflows the floats (scale the inputs, or use --precision exact)"),
             ErrMsg::UnknownPart(a, all) => format!("unknown part `{a}`; the parts are {all}"),
             ErrMsg::ExpectedXyz(e) => format!("expected [x, y, z]: {}", self.toml(e)),

@@ -47,7 +47,7 @@ pub fn every_error() -> Vec<ErrMsg> {
         ErrMsg::TranslationTooLarge(s("f32")),
         ErrMsg::EyeCoordsTooLarge(s("A"), s("f32")),
         ErrMsg::ResultNotFinite(s("f32")),
-        ErrMsg::ResultNotFinite(s("exact")),
+        ErrMsg::ExactBeyondF64,
         ErrMsg::ExistsForce(s("out/problem-01.toml")),
         ErrMsg::StdoutClosed,
         ErrMsg::NamesFolder(s("figs/")),
@@ -286,6 +286,7 @@ fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want,
         | E::TranslationTooLarge(_)
         | E::EyeCoordsTooLarge(..)
         | E::ResultNotFinite(_)
+        | E::ExactBeyondF64
         | E::CannotRead(..)
         | E::CannotReadStdin(_)
         | E::CannotWrite(..)

@@ -95,7 +95,7 @@ impl ErrorWords for Id {
             ErrMsg::EyeLookTooLarge(d, prec) => format!("Peye − Pref = {} terlalu besar untuk presisi {prec}", n(d)),
             ErrMsg::TranslationTooLarge(prec) => format!("translasi matriks pandang −(u·Pe; v·Pe; n·Pe) terlalu besar untuk presisi {prec}"),
             ErrMsg::EyeCoordsTooLarge(p, prec) => format!("koordinat kamera titik {p} terlalu besar untuk presisi {prec}"),
-            ErrMsg::ResultNotFinite(prec) if prec == "exact" => "hasilnya eksak tetapi di luar jangkauan f64 (sekitar 1,8e308), jadi tidak ada desimal atau bilangan JSON untuknya (skalakan masukan)".into(),
+            ErrMsg::ExactBeyondF64 => "hasilnya eksak tetapi di luar jangkauan f64 (sekitar 1,8e308), jadi tidak ada desimal atau bilangan JSON untuknya (skalakan masukan)".into(),
             ErrMsg::ResultNotFinite(prec) => format!("hasilnya bukan bilangan berhingga pada presisi {prec}: sebuah masukan melampaui batas bilangan floating point (skalakan masukan, atau gunakan --precision exact)"),
             ErrMsg::UnknownPart(a, all) => format!("bagian `{a}` tidak dikenal; bagian-bagiannya adalah {all}"),
             ErrMsg::ExpectedXyz(e) => format!("seharusnya [x, y, z]: {}", self.toml(e)),
