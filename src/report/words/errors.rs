@@ -86,19 +86,10 @@ pub fn component(k: usize) -> &'static str {
     ["x", "y", "z"][k % 3]
 }
 
-/// A piece of a crate's message in words: a phrase recognised in `word`'s
-/// words, text as written.
-pub fn shaped<K: Copy>(s: &Shape<K>, word: impl Fn(K) -> &'static str) -> &str {
-    match s {
-        Shape::Known(k) => word(*k),
-        Shape::AsWritten(t) => t,
-    }
-}
-
 /// The TOML reader's list of what it expected, each in `word`'s words,
 /// joined as the reader joins them (`, `).
 pub fn one_of(items: &[Shape<ExpectWord>], word: impl Fn(ExpectWord) -> &'static str) -> String {
-    let words: Vec<&str> = items.iter().map(|i| shaped(i, &word)).collect();
+    let words: Vec<&str> = items.iter().map(|i| i.words(&word)).collect();
     words.join(", ")
 }
 

@@ -295,7 +295,7 @@ impl ErrorWords for En {
     }
 
     fn syntax(&self, s: &Syntax) -> String {
-        let what = errors::shaped(&s.what, |w| self.syntax_what(w));
+        let what = s.what.words(|w| self.syntax_what(w));
         match &s.expected {
             None => what.to_string(),
             Some(Expected::Nothing) => format!("{what}, expected nothing"),

@@ -18,6 +18,17 @@ pub enum Shape<K> {
     AsWritten(String),
 }
 
+impl<K: Copy> Shape<K> {
+    /// This piece in words: a phrase recognised in `word`'s words, text as
+    /// written.
+    pub fn words(&self, word: impl Fn(K) -> &'static str) -> &str {
+        match self {
+            Shape::Known(k) => word(*k),
+            Shape::AsWritten(t) => t,
+        }
+    }
+}
+
 /// serde's names of kinds of values (and grafika's own `expecting` words),
 /// in its messages "invalid type: {found}, expected {wanted}".
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -123,13 +134,7 @@ pub fn serde_pieces(s: &str) -> Vec<Shape<SerdeWord>> {
 /// `s` read by [`serde_pieces`] and written back with `word` for each
 /// phrase; the text between the phrases as written.
 pub fn serde_words(s: &str, word: impl Fn(SerdeWord) -> &'static str) -> String {
-    serde_pieces(s)
-        .iter()
-        .map(|p| match p {
-            Shape::Known(w) => word(*w),
-            Shape::AsWritten(t) => t.as_str(),
-        })
-        .collect()
+    serde_pieces(s).iter().map(|p| p.words(&word)).collect()
 }
 
 /// The TOML reader's syntax error: `description[, expected a, b]`

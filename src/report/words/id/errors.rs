@@ -361,7 +361,7 @@ impl ErrorWords for Id {
 
     /// "expected nothing" (the line should have ended) is left unsaid.
     fn syntax(&self, s: &Syntax) -> String {
-        let what = errors::shaped(&s.what, |w| self.syntax_what(w));
+        let what = s.what.words(|w| self.syntax_what(w));
         match &s.expected {
             None | Some(Expected::Nothing) => what.to_string(),
             Some(Expected::OneOf(items)) => format!(
