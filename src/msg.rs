@@ -16,7 +16,9 @@ mod pixel;
 mod render;
 mod said;
 pub use drawn::{DrawnTitle, NamedPoint, Number, ShadeAsked, StatedCamera, Statement, Triple};
-pub use errors::{Bound, ClapErr, ErrMsg, IoWhy, NumErr, Thing, TomlErr, Twice, Want};
+pub use errors::{
+    Bound, Channel, ClapErr, ErrMsg, IoWhy, NumErr, ObjWhy, Thing, TomlErr, Twice, Want,
+};
 pub use figure::{FigWord, FigureMsg, Panel};
 pub use lang::Lang;
 pub use pixel::PixelMsg;

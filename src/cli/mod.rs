@@ -59,7 +59,10 @@ fn run_writing(cli: &Cli, outputs: &Outputs) -> Result<Report> {
     match report.non_finite_result().or_else(step) {
         Some(key) => Err(Error::why(
             key,
-            ErrMsg::ResultNotFinite(format!("{:?}", cli.common.precision).to_lowercase()),
+            match cli.common.precision {
+                Precision::Exact => ErrMsg::ExactBeyondF64,
+                p => ErrMsg::ResultNotFinite(format!("{p:?}").to_lowercase()),
+            },
         )),
         None => Ok(report),
     }

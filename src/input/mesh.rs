@@ -8,7 +8,7 @@
 //! index (the text's `i%2`, `i%3`, `i%5`); triangles remember their polygon.
 
 use crate::error::{Error, Result};
-use crate::msg::{ErrMsg, IoWhy, NumErr};
+use crate::msg::{ErrMsg, IoWhy, NumErr, ObjWhy};
 use std::collections::HashMap;
 use std::f64::consts::PI;
 use std::path::Path;
@@ -180,6 +180,31 @@ pub fn plane(nx: u32, nz: u32, dx: f64, dz: f64, height: impl Fn(f64, f64) -> f6
     m
 }
 
+/// The OBJ reader's reason as a key (one case per `tobj::LoadError`).
+fn obj_why(e: tobj::LoadError) -> ObjWhy {
+    use tobj::LoadError as L;
+    match e {
+        L::OpenFileFailed => ObjWhy::OpenFileFailed,
+        L::ReadError => ObjWhy::ReadError,
+        L::UnrecognizedCharacter => ObjWhy::UnrecognizedCharacter,
+        L::PositionParseError => ObjWhy::PositionParse,
+        L::ScalingByZeroError => ObjWhy::ScalingByZero,
+        L::ColorParseError => ObjWhy::ColorParse,
+        L::NormalParseError => ObjWhy::NormalParse,
+        L::TexcoordParseError => ObjWhy::TexcoordParse,
+        L::FaceParseError => ObjWhy::FaceParse,
+        L::MaterialParseError => ObjWhy::MaterialParse,
+        L::InvalidObjectName => ObjWhy::InvalidObjectName,
+        L::InvalidPolygon => ObjWhy::InvalidPolygon,
+        L::FaceVertexOutOfBounds => ObjWhy::FaceVertexOutOfBounds,
+        L::FaceTexCoordOutOfBounds => ObjWhy::FaceTexCoordOutOfBounds,
+        L::FaceNormalOutOfBounds => ObjWhy::FaceNormalOutOfBounds,
+        L::FaceColorOutOfBounds => ObjWhy::FaceColorOutOfBounds,
+        L::InvalidLoadOptionConfig => ObjWhy::LoadOptions,
+        L::GenericFailure => ObjWhy::Generic,
+    }
+}
+
 /// Loads a Wavefront OBJ file (all its objects, one mesh; normals when every
 /// vertex has one). `field` names the scene entry in errors.
 pub fn load_obj(path: &Path, field: &str) -> Result<Mesh> {
@@ -195,12 +220,7 @@ pub fn load_obj(path: &Path, field: &str) -> Result<Mesh> {
     let (models, _) = tobj::load_obj_buf(&mut std::io::Cursor::new(text), &opts, |_| {
         Err(tobj::LoadError::OpenFileFailed)
     })
-    .map_err(|e| {
-        Error::why(
-            field,
-            ErrMsg::ObjInvalid(shown.clone(), format!("{e:?}"), e.to_string()),
-        )
-    })?;
+    .map_err(|e| Error::why(field, ErrMsg::ObjInvalid(shown.clone(), obj_why(e))))?;
     let mut m = Mesh::default();
     let mut normals = Vec::new();
     let mut all_normals = true;

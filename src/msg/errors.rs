@@ -1,8 +1,8 @@
 //! Why an input was refused, as data: every error a person can meet is one
 //! of these keys with its parameters (numbers as notation, `.` for the
-//! decimal point), and `report::words::errors` says it in English and in
-//! Bahasa Indonesia. The field at fault is not here: `Error` holds it, as
-//! the flag or key is spelled.
+//! decimal point), and each language's module of `report::words` says it
+//! (`ErrorWords`, one exhaustive match per key enum). The field at fault is
+//! not here: `Error` holds it, as the flag or key is spelled.
 
 /// Why a number expression (a flag, a file value, an answer) or a plane's
 /// height formula could not be read or evaluated.
@@ -145,6 +145,64 @@ pub enum Twice {
     Answers,
 }
 
+/// A colour channel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Channel {
+    /// Red.
+    Red,
+    /// Green.
+    Green,
+    /// Blue.
+    Blue,
+}
+
+impl Channel {
+    /// The channels in the order of a colour's components (R, G, B).
+    pub const RGB: [Channel; 3] = [Channel::Red, Channel::Green, Channel::Blue];
+}
+
+/// Why the OBJ reader (the `tobj` crate) refused a file: one case per
+/// reason it gives (`input::mesh` maps its error to these).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ObjWhy {
+    /// A file (a material library) could not be opened.
+    OpenFileFailed,
+    /// The file could not be read.
+    ReadError,
+    /// A character it does not know.
+    UnrecognizedCharacter,
+    /// A vertex position that cannot be read.
+    PositionParse,
+    /// A vertex scaled by w = 0.
+    ScalingByZero,
+    /// A vertex colour with too many or too few components.
+    ColorParse,
+    /// A vertex normal that cannot be read.
+    NormalParse,
+    /// A texture coordinate that cannot be read.
+    TexcoordParse,
+    /// A face that cannot be read.
+    FaceParse,
+    /// A material that cannot be read.
+    MaterialParse,
+    /// An object name that is not valid.
+    InvalidObjectName,
+    /// A polygon that is not valid.
+    InvalidPolygon,
+    /// A face refers to a vertex that does not exist.
+    FaceVertexOutOfBounds,
+    /// A face refers to a texture coordinate that does not exist.
+    FaceTexCoordOutOfBounds,
+    /// A face refers to a normal that does not exist.
+    FaceNormalOutOfBounds,
+    /// A face refers to a vertex colour that does not exist.
+    FaceColorOutOfBounds,
+    /// Load options that exclude each other.
+    LoadOptions,
+    /// A failure it does not name.
+    Generic,
+}
+
 /// What needs a key: a light of a kind, or an object of a type (as spelled
 /// in the file: `spot`, `sphere`, `obj`).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -188,7 +246,7 @@ pub enum ErrMsg {
     /// Given twice.
     Twice(Twice),
     /// A colour channel outside [0, 1]: channel, value.
-    Channel(String, String),
+    Channel(Channel, String),
     /// Attenuation a0, a1, a2 negative or all 0.
     Attenuation(String, String, String),
     /// Spot cones not 0 ≤ theta ≤ phi ≤ 180°: theta, phi.
@@ -209,8 +267,10 @@ pub enum ErrMsg {
     TranslationTooLarge(String),
     /// A point's eye coordinates too large: point, precision.
     EyeCoordsTooLarge(String, String),
-    /// A result not finite at a precision.
+    /// A result not finite at a float precision (`f64`, `f32`).
     ResultNotFinite(String),
+    /// An exact result beyond the range of f64 (no decimal to give).
+    ExactBeyondF64,
     /// A file that cannot be read: path, why.
     CannotRead(String, IoWhy),
     /// Standard input cannot be read: why.
@@ -261,9 +321,8 @@ pub enum ErrMsg {
     NeededToRender,
     /// An OBJ file that cannot be read: path, why.
     ObjUnreadable(String, IoWhy),
-    /// An OBJ file that is not valid: path, the reader's error by name
-    /// (`FaceParseError`) and as it says it.
-    ObjInvalid(String, String, String),
+    /// An OBJ file that is not valid: path, the OBJ reader's reason.
+    ObjInvalid(String, ObjWhy),
     /// An OBJ file without faces.
     ObjNoFaces(String),
     /// An OBJ file with a vertex not finite.

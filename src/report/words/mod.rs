@@ -82,12 +82,6 @@ pub fn cut_message(message: &str, lang: Lang) -> String {
     msg::cut_message(of(lang), message)
 }
 
-/// Numbers in a message parameter written in `lang` (`(1.5, 2, 3)` →
-/// `(1,5; 2; 3)` in Indonesian; [`super::lang::NumStyle::values`]).
-fn nums(s: &str, lang: Lang) -> String {
-    of(lang).nums().values(s)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -188,11 +188,11 @@ impl<T: Scalar> Material<T> {
 
 /// Errors unless every channel is in [0, 1].
 pub fn check_color<T: Scalar>(field: &str, c: &Rgb<T>) -> Result<()> {
-    for (ch, v) in ["red", "green", "blue"].iter().zip(c) {
+    for (ch, v) in crate::msg::Channel::RGB.into_iter().zip(c) {
         if !v.is_finite() || *v < T::zero() || *v > T::one() {
             return Err(Error::why(
                 field,
-                crate::msg::ErrMsg::Channel(ch.to_string(), v.to_f64().to_string()),
+                crate::msg::ErrMsg::Channel(ch, v.to_f64().to_string()),
             ));
         }
     }

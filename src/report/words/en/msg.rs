@@ -5,9 +5,10 @@
 
 use super::En;
 use crate::msg::{Erratum, LightPart, Msg, Printed, SpotZone, Term, Trivial};
-use crate::report::lang::{Lang, NumStyle};
+use crate::report::lang::NumStyle;
+use crate::report::words::errors::ErrorWords;
 use crate::report::words::msg::{self, MsgWords};
-use crate::report::words::{errors, DrawnWords, FigureWords, PixelWords, SaidWords, PLANE_NAMES};
+use crate::report::words::{DrawnWords, FigureWords, PixelWords, SaidWords, PLANE_NAMES};
 
 impl MsgWords for En {
     /// A word table: long on purpose.
@@ -23,7 +24,7 @@ impl MsgWords for En {
             Msg::Statement(s) => self.statement(s, self.nums()),
             Msg::Figure(f) => self.figure(f),
             Msg::At(place, m) => msg::at(self, place, m),
-            Msg::Err(e) => errors::error(e, Lang::En),
+            Msg::Err(e) => self.error(e),
             Msg::Said(s) => self.said(s),
             Msg::SecModeling => "Stage 1: modeling transformation".into(),
             Msg::SecViewing => "Stage 2: viewing transformation (world → eye coordinates)".into(),
@@ -153,7 +154,7 @@ impl MsgWords for En {
             Msg::ErrUnknownPoint(p, None) => format!("unknown point `{p}`: the problem has no [points]"),
             Msg::ErrUnknownPoint(p, Some(known)) => format!("unknown point `{p}`; the points are {known}"),
             Msg::ErrBoxInverted(a, lo, hi) => format!("{a}min = {lo} is greater than {a}max = {hi}"),
-            Msg::ErrCannotRead(path, why) => format!("cannot read {path}: {}", errors::io_why(why, Lang::En)),
+            Msg::ErrCannotRead(path, why) => format!("cannot read {path}: {}", self.io_why(why)),
             Msg::ErrZeroUnit(v) => format!("{v} is the zero vector (0, 0, 0): it has no direction, so it cannot be made a unit vector"),
             Msg::ErrNamedPoint(t) => format!("`{t}`: expected NAME=X,Y,Z, e.g. A=0,0,0"),
             Msg::ErrPointName(t) => format!("`{t}` is not a point name (letters, digits, _ and ')"),
@@ -194,7 +195,7 @@ impl MsgWords for En {
             Msg::ErrHtmlCommand => "writes the worked solution of basis, view, project, window, clip, shade, solve and render; for exams use generate --format html".into(),
             Msg::Parts(parts) => msg::parts(self, parts),
             Msg::Expected(v) => format!("expected {}", self.nums().values(v)),
-            Msg::Unreadable(why) => format!("cannot be read: {}", errors::number(why, Lang::En)),
+            Msg::Unreadable(why) => format!("cannot be read: {}", self.number(why)),
             Msg::WithinPct(p) => format!("within {}%", self.nums().number(p)),
         }
     }

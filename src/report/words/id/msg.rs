@@ -5,9 +5,10 @@
 
 use super::Id;
 use crate::msg::{Erratum, LightPart, Msg, Printed, SpotZone, Term, Trivial};
-use crate::report::lang::{Lang, NumStyle};
+use crate::report::lang::NumStyle;
+use crate::report::words::errors::ErrorWords;
 use crate::report::words::msg::{self, MsgWords};
-use crate::report::words::{errors, DrawnWords, FigureWords, PixelWords, SaidWords, PLANE_NAMES};
+use crate::report::words::{DrawnWords, FigureWords, PixelWords, SaidWords, PLANE_NAMES};
 
 impl MsgWords for Id {
     /// A word table: long on purpose.
@@ -24,7 +25,7 @@ impl MsgWords for Id {
             Msg::Statement(s) => self.statement(s, self.nums()),
             Msg::Figure(f) => self.figure(f),
             Msg::At(place, m) => msg::at(self, place, m),
-            Msg::Err(e) => errors::error(e, Lang::Id),
+            Msg::Err(e) => self.error(e),
             Msg::Said(s) => self.said(s),
             Msg::SecModeling => "Tahap 1: transformasi pemodelan".into(),
             Msg::SecViewing => "Tahap 2: transformasi sistem pandang (koordinat dunia → koordinat kamera)".into(),
@@ -151,7 +152,7 @@ impl MsgWords for Id {
             Msg::ErrUnknownPoint(p, None) => format!("titik `{p}` tidak dikenal: soal ini tidak memiliki [points]"),
             Msg::ErrUnknownPoint(p, Some(known)) => format!("titik `{p}` tidak dikenal; titik-titiknya adalah {known}"),
             Msg::ErrBoxInverted(a, lo, hi) => format!("{a}min = {} lebih besar daripada {a}max = {}", n(lo), n(hi)),
-            Msg::ErrCannotRead(path, why) => format!("tidak dapat membaca {path}: {}", errors::io_why(why, Lang::Id)),
+            Msg::ErrCannotRead(path, why) => format!("tidak dapat membaca {path}: {}", self.io_why(why)),
             Msg::ErrZeroUnit(v) => format!("{v} adalah vektor nol (0; 0; 0): tidak memiliki arah, sehingga tidak dapat dijadikan vektor satuan"),
             Msg::ErrNamedPoint(t) => format!("`{t}`: seharusnya NAMA=X,Y,Z, misalnya A=0,0,0"),
             Msg::ErrPointName(t) => format!("`{t}` bukan nama titik (huruf, angka, _ dan ')"),
@@ -189,7 +190,7 @@ impl MsgWords for Id {
             Msg::ErrHtmlCommand => "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html".into(),
             Msg::Parts(parts) => msg::parts(self, parts),
             Msg::Expected(v) => format!("seharusnya {}", self.nums().values(v)),
-            Msg::Unreadable(why) => format!("tidak dapat dibaca: {}", errors::number(why, Lang::Id)),
+            Msg::Unreadable(why) => format!("tidak dapat dibaca: {}", self.number(why)),
             Msg::WithinPct(p) => format!("dalam batas {}%", self.nums().number(p)),
         }
     }

@@ -1,0 +1,518 @@
+//! The messages of the crates grafika reads with (serde and the TOML reader
+//! for files, Rust's number parsing under clap for flags) are English text
+//! by nature. Here they are read once, each into a typed key of the shapes
+//! recognised (with their parameters); each language gives those keys its
+//! words. A piece of a shape not recognised is itself a case, quoted as the
+//! crate wrote it ([`Shape::AsWritten`]).
+//!
+//! The crates' own words are written once, in the `*_text` functions: what
+//! the readers match, and the English words (English is what the crates
+//! write).
+
+/// A piece of a crate's message: a phrase recognised, or text as written.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Shape<K> {
+    /// A phrase recognised.
+    Known(K),
+    /// Text as the crate wrote it (a literal, a value, a phrase not known).
+    AsWritten(String),
+}
+
+impl<K: Copy> Shape<K> {
+    /// This piece in words: a phrase recognised in `word`'s words, text as
+    /// written.
+    pub fn words(&self, word: impl Fn(K) -> &'static str) -> &str {
+        match self {
+            Shape::Known(k) => word(*k),
+            Shape::AsWritten(t) => t,
+        }
+    }
+}
+
+/// serde's names of kinds of values (and grafika's own `expecting` words),
+/// in its messages "invalid type: {found}, expected {wanted}".
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SerdeWord {
+    NumberOrExpression,
+    Vector,
+    ArrayOfLength,
+    ASequence,
+    Sequence,
+    AString,
+    String,
+    Integer,
+    FloatingPoint,
+    Boolean,
+    AMap,
+    Map,
+    ElementsInSequence,
+    ANumber,
+    AnInteger,
+    ABoolean,
+    UnitVariant,
+    Elements,
+}
+
+impl SerdeWord {
+    /// Every phrase, longest first (so `an integer` is read whole, not as
+    /// `an` + `integer`).
+    pub const ALL: [SerdeWord; 18] = [
+        SerdeWord::NumberOrExpression,
+        SerdeWord::Vector,
+        SerdeWord::ElementsInSequence,
+        SerdeWord::ArrayOfLength,
+        SerdeWord::FloatingPoint,
+        SerdeWord::UnitVariant,
+        SerdeWord::ASequence,
+        SerdeWord::AnInteger,
+        SerdeWord::ABoolean,
+        SerdeWord::Sequence,
+        SerdeWord::AString,
+        SerdeWord::ANumber,
+        SerdeWord::Elements,
+        SerdeWord::Integer,
+        SerdeWord::Boolean,
+        SerdeWord::String,
+        SerdeWord::AMap,
+        SerdeWord::Map,
+    ];
+}
+
+/// serde's words for `w`.
+pub fn serde_text(w: SerdeWord) -> &'static str {
+    match w {
+        SerdeWord::NumberOrExpression => "a number or a string with a number expression such as",
+        SerdeWord::Vector => "a vector: an array [x, y, z] or a string",
+        SerdeWord::ArrayOfLength => "an array of length",
+        SerdeWord::ASequence => "a sequence",
+        SerdeWord::Sequence => "sequence",
+        SerdeWord::AString => "a string",
+        SerdeWord::String => "string",
+        SerdeWord::Integer => "integer",
+        SerdeWord::FloatingPoint => "floating point",
+        SerdeWord::Boolean => "boolean",
+        SerdeWord::AMap => "a map",
+        SerdeWord::Map => "map",
+        SerdeWord::ElementsInSequence => "elements in sequence",
+        SerdeWord::ANumber => "a number",
+        SerdeWord::AnInteger => "an integer",
+        SerdeWord::ABoolean => "a boolean",
+        SerdeWord::UnitVariant => "unit variant",
+        SerdeWord::Elements => "elements",
+    }
+}
+
+/// serde's description of a value or of what was expected (`string "a"`,
+/// `an array of length 3`), as phrases and text between them: at each
+/// place the longest phrase that starts there.
+pub fn serde_pieces(s: &str) -> Vec<Shape<SerdeWord>> {
+    let mut out = Vec::new();
+    let mut text = String::new();
+    let mut rest = s;
+    while let Some(c) = rest.chars().next() {
+        let hit = (SerdeWord::ALL.iter()).find(|w| rest.starts_with(serde_text(**w)));
+        match hit {
+            Some(w) => {
+                if !text.is_empty() {
+                    out.push(Shape::AsWritten(std::mem::take(&mut text)));
+                }
+                out.push(Shape::Known(*w));
+                rest = &rest[serde_text(*w).len()..];
+            }
+            None => {
+                text.push(c);
+                rest = &rest[c.len_utf8()..];
+            }
+        }
+    }
+    if !text.is_empty() {
+        out.push(Shape::AsWritten(text));
+    }
+    out
+}
+
+/// `s` read by [`serde_pieces`] and written back with `word` for each
+/// phrase; the text between the phrases as written.
+pub fn serde_words(s: &str, word: impl Fn(SerdeWord) -> &'static str) -> String {
+    serde_pieces(s).iter().map(|p| p.words(&word)).collect()
+}
+
+/// The TOML reader's syntax error: `description[, expected a, b]`
+/// (`expected nothing`: nothing more may follow).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Syntax {
+    /// What is wrong.
+    pub what: Shape<SyntaxWhat>,
+    /// What the reader expected there, if it says.
+    pub expected: Option<Expected>,
+}
+
+/// What the TOML reader expected.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Expected {
+    /// Nothing (the line should have ended).
+    Nothing,
+    /// One of these (a literal such as `` `=` `` as written).
+    OneOf(Vec<Shape<ExpectWord>>),
+}
+
+/// The TOML reader's message `s` as a [`Syntax`].
+pub fn syntax(s: &str) -> Syntax {
+    let (desc, expected) = match s.split_once(", expected ") {
+        Some((d, e)) => (d, Some(e)),
+        None => (s, None),
+    };
+    let what = match SyntaxWhat::ALL
+        .into_iter()
+        .find(|w| syntax_text(*w) == desc)
+    {
+        Some(w) => Shape::Known(w),
+        None => Shape::AsWritten(desc.to_string()),
+    };
+    let item = |e: &str| match ExpectWord::ALL.into_iter().find(|w| expect_text(*w) == e) {
+        Some(w) => Shape::Known(w),
+        None => Shape::AsWritten(e.to_string()),
+    };
+    let expected = expected.map(|e| match e {
+        "nothing" => Expected::Nothing,
+        _ => Expected::OneOf(e.split(", ").map(item).collect()),
+    });
+    Syntax { what, expected }
+}
+
+/// A description of a syntax error the TOML reader gives.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SyntaxWhat {
+    InvalidFloat,
+    InvalidNumber,
+    InvalidInteger,
+    InvalidString,
+    InvalidBoolean,
+    InvalidDateTime,
+    InvalidKey,
+    InvalidTable,
+    InvalidValue,
+    InvalidInlineTableElement,
+    InvalidKeyValuePair,
+    InvalidBasicString,
+    InvalidMultiLineBasicString,
+    InvalidCommentCharacter,
+    InvalidUnquotedKey,
+    KeyWithNoValue,
+    MissingValueForKey,
+    MissingValue,
+    MissingAssignment,
+    MissingCommaInArray,
+    MissingCommaBetweenPairs,
+    MissingOpeningQuote,
+    MissingTableOpen,
+    MissingArrayOpening,
+    MissingInlineTableOpening,
+    MissingInlineTableKey,
+    MissingEscapedValue,
+    ExtraEquals,
+    ExtraCommaInArray,
+    ExtraCommaInInlineTable,
+    ExtraAssignment,
+    StringsMustBeQuoted,
+    UnclosedArray,
+    UnclosedArrayTable,
+    UnclosedInlineTable,
+    UnclosedTable,
+    UnexpectedContent,
+    UnexpectedBeforeNewline,
+    UnexpectedKeyOrValue,
+    UnexpectedLeadingZero,
+    UnexpectedSign,
+    UnexpectedEqualsInArray,
+    UnderscoreBetweenDigits,
+    EmptyUnquotedKey,
+    RedundantSign,
+    DuplicateKey,
+    TooDeep,
+    CarriageReturn,
+    SignedRadix,
+    MultiLineBasicKey,
+    MultiLineLiteralKey,
+    MissingCommentStart,
+    RadixLowercase,
+    RedundantPrefix,
+    FewUnicodeDigits,
+    IntegerOverflow,
+    InvalidBinary,
+    InvalidOctal,
+    InvalidHex,
+    InvalidMantissa,
+    InvalidFraction,
+    InvalidExponent,
+    InvalidLiteralString,
+    InvalidMultiLineLiteralString,
+    InvalidDatetime,
+    WantedStringOrTable,
+}
+
+impl SyntaxWhat {
+    /// Every description.
+    pub const ALL: [SyntaxWhat; 66] = {
+        use SyntaxWhat::*;
+        [
+            InvalidFloat,
+            InvalidNumber,
+            InvalidInteger,
+            InvalidString,
+            InvalidBoolean,
+            InvalidDateTime,
+            InvalidKey,
+            InvalidTable,
+            InvalidValue,
+            InvalidInlineTableElement,
+            InvalidKeyValuePair,
+            InvalidBasicString,
+            InvalidMultiLineBasicString,
+            InvalidCommentCharacter,
+            InvalidUnquotedKey,
+            KeyWithNoValue,
+            MissingValueForKey,
+            MissingValue,
+            MissingAssignment,
+            MissingCommaInArray,
+            MissingCommaBetweenPairs,
+            MissingOpeningQuote,
+            MissingTableOpen,
+            MissingArrayOpening,
+            MissingInlineTableOpening,
+            MissingInlineTableKey,
+            MissingEscapedValue,
+            ExtraEquals,
+            ExtraCommaInArray,
+            ExtraCommaInInlineTable,
+            ExtraAssignment,
+            StringsMustBeQuoted,
+            UnclosedArray,
+            UnclosedArrayTable,
+            UnclosedInlineTable,
+            UnclosedTable,
+            UnexpectedContent,
+            UnexpectedBeforeNewline,
+            UnexpectedKeyOrValue,
+            UnexpectedLeadingZero,
+            UnexpectedSign,
+            UnexpectedEqualsInArray,
+            UnderscoreBetweenDigits,
+            EmptyUnquotedKey,
+            RedundantSign,
+            DuplicateKey,
+            TooDeep,
+            CarriageReturn,
+            SignedRadix,
+            MultiLineBasicKey,
+            MultiLineLiteralKey,
+            MissingCommentStart,
+            RadixLowercase,
+            RedundantPrefix,
+            FewUnicodeDigits,
+            IntegerOverflow,
+            InvalidBinary,
+            InvalidOctal,
+            InvalidHex,
+            InvalidMantissa,
+            InvalidFraction,
+            InvalidExponent,
+            InvalidLiteralString,
+            InvalidMultiLineLiteralString,
+            InvalidDatetime,
+            WantedStringOrTable,
+        ]
+    };
+}
+
+/// The TOML reader's words for `w`.
+pub fn syntax_text(w: SyntaxWhat) -> &'static str {
+    use SyntaxWhat::*;
+    match w {
+        InvalidFloat => "invalid float",
+        InvalidNumber => "invalid number",
+        InvalidInteger => "invalid integer number",
+        InvalidString => "invalid string",
+        InvalidBoolean => "invalid boolean",
+        InvalidDateTime => "invalid date-time",
+        InvalidKey => "invalid key",
+        InvalidTable => "invalid table",
+        InvalidValue => "invalid value",
+        InvalidInlineTableElement => "invalid inline table element",
+        InvalidKeyValuePair => "invalid key-value pair",
+        InvalidBasicString => "invalid basic string",
+        InvalidMultiLineBasicString => "invalid multi-line basic string",
+        InvalidCommentCharacter => "invalid comment character",
+        InvalidUnquotedKey => "invalid unquoted key",
+        KeyWithNoValue => "key with no value",
+        MissingValueForKey => "missing value for key",
+        MissingValue => "missing value",
+        MissingAssignment => "missing assignment between key-value pairs",
+        MissingCommaInArray => "missing comma between array elements",
+        MissingCommaBetweenPairs => "missing comma between key-value pairs",
+        MissingOpeningQuote => "missing opening quote",
+        MissingTableOpen => "missing table open",
+        MissingArrayOpening => "missing array opening",
+        MissingInlineTableOpening => "missing inline table opening",
+        MissingInlineTableKey => "missing key for inline table element",
+        MissingEscapedValue => "missing escaped value",
+        ExtraEquals => "extra `=`",
+        ExtraCommaInArray => "extra comma in array",
+        ExtraCommaInInlineTable => "extra comma in inline table",
+        ExtraAssignment => "extra assignment between key-value pairs",
+        StringsMustBeQuoted => "string values must be quoted",
+        UnclosedArray => "unclosed array",
+        UnclosedArrayTable => "unclosed array table",
+        UnclosedInlineTable => "unclosed inline table",
+        UnclosedTable => "unclosed table",
+        UnexpectedContent => "unexpected content",
+        UnexpectedBeforeNewline => "unexpected content between comment and newline",
+        UnexpectedKeyOrValue => "unexpected key or value",
+        UnexpectedLeadingZero => "unexpected leading zero",
+        UnexpectedSign => "unexpected sign",
+        UnexpectedEqualsInArray => "unexpected `=` in array",
+        UnderscoreBetweenDigits => "`_` may only go between digits",
+        EmptyUnquotedKey => "unquoted keys cannot be empty",
+        RedundantSign => "redundant numeric sign",
+        DuplicateKey => "duplicate key",
+        TooDeep => "cannot recurse further; max recursion depth met",
+        CarriageReturn => "carriage return must be followed by newline",
+        SignedRadix => "integers with a radix cannot be signed",
+        MultiLineBasicKey => "keys cannot be multi-line basic strings",
+        MultiLineLiteralKey => "keys cannot be multi-line literal strings",
+        MissingCommentStart => "missing comment start",
+        RadixLowercase => "radix must be lowercase",
+        RedundantPrefix => "redundant integer number prefix",
+        FewUnicodeDigits => "too few unicode value digits",
+        IntegerOverflow => "integer number overflowed",
+        InvalidBinary => "invalid binary number",
+        InvalidOctal => "invalid octal number",
+        InvalidHex => "invalid hexadecimal number",
+        InvalidMantissa => "invalid mantissa",
+        InvalidFraction => "invalid fraction",
+        InvalidExponent => "invalid exponent",
+        InvalidLiteralString => "invalid literal string",
+        InvalidMultiLineLiteralString => "invalid multi-line literal string",
+        InvalidDatetime => "invalid datetime",
+        WantedStringOrTable => "wanted string or table",
+    }
+}
+
+/// A kind of thing the TOML reader expected (a literal is not one: it is
+/// written as it is).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ExpectWord {
+    Digits,
+    Letters,
+    Numbers,
+    Value,
+    Key,
+    Characters,
+    PrintableCharacters,
+    BasicString,
+    LiteralString,
+    MultiLineBasicString,
+    UnicodeHex,
+    NonDoubleQuoteVisible,
+    NonSingleQuote,
+    NonSingleQuoteVisible,
+    Newline,
+}
+
+impl ExpectWord {
+    /// Every kind.
+    pub const ALL: [ExpectWord; 15] = [
+        ExpectWord::Digits,
+        ExpectWord::Letters,
+        ExpectWord::Numbers,
+        ExpectWord::Value,
+        ExpectWord::Key,
+        ExpectWord::Characters,
+        ExpectWord::PrintableCharacters,
+        ExpectWord::BasicString,
+        ExpectWord::LiteralString,
+        ExpectWord::MultiLineBasicString,
+        ExpectWord::UnicodeHex,
+        ExpectWord::NonDoubleQuoteVisible,
+        ExpectWord::NonSingleQuote,
+        ExpectWord::NonSingleQuoteVisible,
+        ExpectWord::Newline,
+    ];
+}
+
+/// The TOML reader's words for `w`.
+pub fn expect_text(w: ExpectWord) -> &'static str {
+    match w {
+        ExpectWord::Digits => "digits",
+        ExpectWord::Letters => "letters",
+        ExpectWord::Numbers => "numbers",
+        ExpectWord::Value => "value",
+        ExpectWord::Key => "key",
+        ExpectWord::Characters => "characters",
+        ExpectWord::PrintableCharacters => "printable characters",
+        ExpectWord::BasicString => "basic string",
+        ExpectWord::LiteralString => "literal string",
+        ExpectWord::MultiLineBasicString => "multi-line basic string",
+        ExpectWord::UnicodeHex => "unicode hexadecimal value",
+        ExpectWord::NonDoubleQuoteVisible => "non-double-quote visible characters",
+        ExpectWord::NonSingleQuote => "non-single-quote characters",
+        ExpectWord::NonSingleQuoteVisible => "non-single-quote visible characters",
+        ExpectWord::Newline => "newline",
+    }
+}
+
+/// Why a flag's value parser refused a value (Rust's number parsing,
+/// clap's ranges).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ValueWhy {
+    /// A reason of Rust's number parsing.
+    Parse(ParseWhy),
+    /// `{value} is not in {range}` (clap's ranges).
+    NotInRange(String, String),
+    /// A reason not recognised, as written.
+    AsWritten(String),
+}
+
+/// A reason Rust's number parsing gives.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ParseWhy {
+    InvalidDigit,
+    Empty,
+    TooLarge,
+    TooSmall,
+    InvalidFloat,
+}
+
+impl ParseWhy {
+    /// Every reason.
+    pub const ALL: [ParseWhy; 5] = [
+        ParseWhy::InvalidDigit,
+        ParseWhy::Empty,
+        ParseWhy::TooLarge,
+        ParseWhy::TooSmall,
+        ParseWhy::InvalidFloat,
+    ];
+}
+
+/// Rust's words for `w`.
+pub fn parse_text(w: ParseWhy) -> &'static str {
+    match w {
+        ParseWhy::InvalidDigit => "invalid digit found in string",
+        ParseWhy::Empty => "cannot parse integer from empty string",
+        ParseWhy::TooLarge => "number too large to fit in target type",
+        ParseWhy::TooSmall => "number too small to fit in target type",
+        ParseWhy::InvalidFloat => "invalid float literal",
+    }
+}
+
+/// A value parser's reason `s` as a [`ValueWhy`].
+pub fn value_why(s: &str) -> ValueWhy {
+    if let Some(w) = ParseWhy::ALL.into_iter().find(|w| parse_text(*w) == s) {
+        return ValueWhy::Parse(w);
+    }
+    match s.split_once(" is not in ") {
+        Some((v, range)) => ValueWhy::NotInRange(v.to_string(), range.to_string()),
+        None => ValueWhy::AsWritten(s.to_string()),
+    }
+}

@@ -1,0 +1,120 @@
+//! Refusals whose reason comes from a crate (the TOML reader, serde, the
+//! OBJ reader) or from the size of an exact result, in both languages:
+//! the English as the crate words it, the Indonesian from the reason's key.
+
+mod common;
+
+use common::grafika;
+use std::path::{Path, PathBuf};
+
+/// `grafika --lang LANG ARGS` in `dir`: exit status 2 and one line on
+/// stderr, which is returned.
+fn refused(dir: &Path, lang: &str, args: &[&str]) -> String {
+    let out = grafika()
+        .current_dir(dir)
+        .args(["--lang", lang])
+        .args(args)
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(2), "{args:?}");
+    let err = String::from_utf8(out.stderr).expect("UTF-8");
+    assert_eq!(err.lines().count(), 1, "{args:?}: one line: {err}");
+    err.trim_end().to_string()
+}
+
+/// A fresh directory for one test's files.
+fn scratch(name: &str) -> PathBuf {
+    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).expect("creates the directory");
+    d
+}
+
+#[test]
+fn an_exact_result_beyond_f64_has_its_own_reason() {
+    // xp = x·d/z = 1e300 · (−1e300) / (−1e−300) = 1e900, beyond f64's
+    // largest (about 1.8e308): exact, but with no decimal to print; in f64
+    // the image itself is too large.
+    let d = common::root();
+    let args = [
+        "project",
+        "--d",
+        "-1e300",
+        "--point",
+        "A=1e300,1e300,-1e-300",
+    ];
+    assert_eq!(
+        refused(&d, "en", &args),
+        "error: points.A: the result is exact but beyond the range of f64 (about 1.8e308), \
+         so it has no decimal or JSON number to give (scale the inputs)"
+    );
+    assert_eq!(
+        refused(&d, "id", &args),
+        "kesalahan: points.A: hasilnya eksak tetapi di luar jangkauan f64 (sekitar 1,8e308), \
+         jadi tidak ada desimal atau bilangan JSON untuknya (skalakan masukan)"
+    );
+    let f64 = [&["--precision", "f64"][..], &args].concat();
+    assert!(refused(&d, "en", &f64).ends_with("the image of A is too large for f64 precision (the point is too near the plane of the centre of projection)"));
+}
+
+#[test]
+fn the_toml_readers_reasons_in_both_languages() {
+    let d = scratch("refusals-toml");
+    let camera = "look = [0, 0, 0]\nup = [0, 1, 0]\n";
+    // two values on one line: the reader wants the line to end there
+    std::fs::write(d.join("a.toml"), "[camera]\neye = 1 look = 2\n").expect("writes");
+    let (en, id) = (
+        refused(&d, "en", &["solve", "a.toml"]),
+        refused(&d, "id", &["solve", "a.toml"]),
+    );
+    assert!(en.starts_with("error: eye: a.toml:2:"), "{en}");
+    assert!(
+        en.ends_with(": unexpected key or value, expected newline, `#`"),
+        "{en}"
+    );
+    assert!(
+        id.ends_with(": sintaks TOML tidak sah: kunci atau nilai yang tidak diharapkan, seharusnya akhir baris, `#`"),
+        "{id}"
+    );
+    // a point with two components: serde's words, said in Indonesian
+    std::fs::write(
+        d.join("b.toml"),
+        format!("[camera]\neye = [1, 2]\n{camera}"),
+    )
+    .expect("writes");
+    assert_eq!(
+        refused(&d, "en", &["solve", "b.toml"]),
+        "error: eye: b.toml:2:7: invalid length 2, expected an array of length 3"
+    );
+    assert_eq!(
+        refused(&d, "id", &["solve", "b.toml"]),
+        "kesalahan: eye: b.toml:2:7: panjang salah: 2, seharusnya array dengan panjang 3"
+    );
+    // a description the reader's number decoder gives (`1.` has no fraction)
+    std::fs::write(d.join("c.toml"), format!("[camera]\neye = 1.\n{camera}")).expect("writes");
+    let id = refused(&d, "id", &["solve", "c.toml"]);
+    assert!(
+        id.ends_with(": sintaks TOML tidak sah: bagian pecahan tidak sah, seharusnya angka"),
+        "{id}"
+    );
+}
+
+#[test]
+fn the_obj_readers_reasons_in_both_languages() {
+    let d = scratch("refusals-obj");
+    let scene = "[[object]]\ntype = \"obj\"\npath = \"m.obj\"\n";
+    std::fs::write(d.join("s.toml"), scene).expect("writes");
+    // a vertex with w = 0 (x/w, y/w, z/w would divide by zero)
+    std::fs::write(d.join("m.obj"), "v 0 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").expect("writes");
+    let args = ["render", "s.toml", "-o", "s.png"];
+    let (en, id) = (refused(&d, "en", &args), refused(&d, "id", &args));
+    assert!(
+        en.ends_with("m.obj is not a valid OBJ file: scaling (w) by zero"),
+        "{en}"
+    );
+    assert!(
+        id.ends_with("m.obj bukan berkas OBJ yang sah: koordinat w sebuah verteks bernilai nol"),
+        "{id}"
+    );
+    assert!(!d.join("s.png").exists());
+}
