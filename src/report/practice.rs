@@ -7,6 +7,7 @@ use crate::msg::Msg;
 use crate::num::Real;
 use crate::report::lang::{tr, Lang};
 use crate::report::mistakes::mistake_text;
+use crate::report::words;
 use crate::report::{exact_json, fmt_dec, step_json, value_json, Style};
 use crate::stages::trace::{Step, Val};
 use crate::tutor::practice::{Again, Event, Outcome, Plan, Summary};
@@ -460,10 +461,9 @@ fn name(x: &impl std::fmt::Debug) -> String {
 
 /// What a key asks for, in a few words, and the key.
 pub fn label(key: &str, lang: Lang) -> String {
-    let words = crate::report::words::labels::answer_words(key, lang);
-    match words == key {
-        true => words,
-        false => format!("{words} ({key})"),
+    match key.parse::<crate::tutor::key::Key>() {
+        Ok(k) => format!("{} ({key})", words::of(lang).answer_words(&k)),
+        Err(_) => key.to_string(),
     }
 }
 
