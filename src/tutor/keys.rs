@@ -11,6 +11,7 @@ use crate::stages::clip::{self, ClipBox};
 use crate::stages::lighting::{self, rgb_val, LightTerm, Material, Model};
 use crate::stages::trace::{NoTrace, Recorder, Step, Trace, Val};
 use crate::stages::window;
+use crate::tutor::key::{Axis, Cut, Field, Key, Node, Part, Shading, Value};
 
 /// The basis as named results.
 pub fn basis_result<T: Scalar>(b: &camera::Basis<T>) -> Vec<(String, Val)> {
@@ -233,83 +234,169 @@ fn light_factors<T: Scalar>(s: &Setup<T>, i: usize, view: &V3<T>) -> Val {
 /// t, intersection point and that point's outcode, the text's deciding
 /// step), the clipped segment and the status; the lighting's unit L and
 /// N, cos α, R (H and N·H for Blinn), cos β, the terms, their sum and the
-/// clamped colour.
+/// clamped colour. Each key is a [`Key`] written by its `Display`; a new
+/// part is a new arm here (the match is over every [`Part`]).
 pub fn ordered_keys(result: &[(String, Val)]) -> Vec<String> {
-    let mut keys = Vec::new();
-    for (part, v) in result {
-        match (part.as_str(), v) {
-            ("view", Val::Map(kv)) => {
-                keys.extend(in_order(kv, "view", &["n", "u", "v", "matrix"]));
-                keys.extend(named(kv, "view.points", "points"));
+    let mut keys: Vec<Key> = Vec::new();
+    for (name, v) in result {
+        let Some(Node::Part(part)) = Node::read(name, None) else {
+            continue;
+        };
+        let kv = match v {
+            Val::Map(kv) => &kv[..],
+            _ => &[],
+        };
+        let fields = fields(part, kv);
+        let key = |v: Value| Key::new(part, v);
+        match part {
+            Part::View => {
+                let axes = [Axis::N, Axis::U, Axis::V].map(Field::Axis);
+                let order = [axes[0], axes[1], axes[2], Field::Matrix];
+                keys.extend(in_order(&fields, &order).map(|f| key(Value::Field(f))));
+                keys.extend(named(kv, Field::Points).map(|n| key(Value::Point(n))));
             }
-            ("project", Val::Map(kv)) => keys.extend(named(kv, "project.points", "points")),
-            ("viewport", Val::Map(kv)) => keys.extend(named(kv, "viewport.pixels", "pixels")),
-            ("window", Val::Map(kv)) => keys.extend(
-                kv.iter()
-                    .filter(|(k, _)| !k.starts_with("far_"))
-                    .map(|(k, _)| format!("window.{k}")),
+            Part::Project => keys.extend(named(kv, Field::Points).map(|n| key(Value::Point(n)))),
+            Part::Viewport => keys.extend(named(kv, Field::Pixels).map(|n| key(Value::Pixel(n)))),
+            Part::Window => keys.extend(
+                (fields.iter())
+                    .filter(|f| matches!(f, Field::Edge(_, false)))
+                    .map(|f| key(Value::Field(*f))),
             ),
-            ("clip", Val::Map(kv)) => keys.extend(clip_keys("clip", kv)),
-            ("clip", Val::List(runs)) => {
-                for (i, r) in runs.iter().enumerate() {
-                    if let Val::Map(kv) = r {
-                        keys.extend(clip_keys(&format!("clip.{i}"), kv));
+            Part::Clip => match v {
+                Val::List(runs) => {
+                    for (i, r) in runs.iter().enumerate() {
+                        if let Val::Map(kv) = r {
+                            keys.extend(clip_keys(kv).map(|k| k.of_segment(Some(i))));
+                        }
                     }
                 }
+                _ => keys.extend(clip_keys(kv)),
+            },
+            Part::Shade => {
+                let order = SHADE_ORDER.map(Field::Shading);
+                keys.extend(in_order(&fields, &order).map(|f| key(Value::Field(f))));
             }
-            ("shade", Val::Map(kv)) => keys.extend(in_order(
-                kv,
-                "shade",
-                &[
-                    "L",
-                    "N",
-                    "cos_alpha",
-                    "R",
-                    "H",
-                    "N_dot_H",
-                    "cos_beta",
-                    "ambient",
-                    "diffuse",
-                    "specular",
-                    "unclamped",
-                    "color",
-                ],
-            )),
-            _ => {}
         }
     }
-    keys
+    keys.iter().map(Key::to_string).collect()
 }
 
-/// `prefix.K` for each of `order` the map holds, in that order.
-fn in_order(kv: &[(String, Val)], prefix: &str, order: &[&str]) -> Vec<String> {
-    order
-        .iter()
-        .filter(|k| kv.iter().any(|(x, _)| x == *k))
-        .map(|k| format!("{prefix}.{k}"))
+/// The lighting's values in the order of the text's solution (the
+/// emissive term is the material's own, not asked).
+const SHADE_ORDER: [Shading; 12] = [
+    Shading::L,
+    Shading::N,
+    Shading::CosAlpha,
+    Shading::R,
+    Shading::H,
+    Shading::NDotH,
+    Shading::CosBeta,
+    Shading::Ambient,
+    Shading::Diffuse,
+    Shading::Specular,
+    Shading::Unclamped,
+    Shading::Color,
+];
+
+/// The fields of a part's map (names that are no field of the part left out).
+fn fields(part: Part, kv: &[(String, Val)]) -> Vec<Field> {
+    let under = Node::Part(part);
+    (kv.iter())
+        .filter_map(|(k, _)| match Node::read(k, Some(&under)) {
+            Some(Node::Field(f)) => Some(f),
+            _ => None,
+        })
         .collect()
 }
 
-/// `prefix.NAME` for each name of the map held at `inner`.
-fn named(kv: &[(String, Val)], prefix: &str, inner: &str) -> Vec<String> {
-    match kv.iter().find(|(k, _)| k == inner) {
-        Some((_, Val::Map(m))) => m.iter().map(|(n, _)| format!("{prefix}.{n}")).collect(),
-        _ => vec![],
-    }
+/// Each of `order` the part holds, in that order.
+fn in_order<'a>(fields: &'a [Field], order: &'a [Field]) -> impl Iterator<Item = Field> + 'a {
+    order.iter().copied().filter(|f| fields.contains(f))
+}
+
+/// The names of the map held at `inner` (the points, the pixels).
+fn named(kv: &[(String, Val)], inner: Field) -> impl Iterator<Item = String> + '_ {
+    let inner = Node::Field(inner).to_string();
+    let map = match kv.iter().find(|(k, _)| *k == inner) {
+        Some((_, Val::Map(m))) => &m[..],
+        _ => &[],
+    };
+    map.iter().map(|(n, _)| n.clone())
 }
 
 /// The outcodes, each plane tried (t, intersection, its outcode), the
 /// clipped segment, the status.
-fn clip_keys(prefix: &str, kv: &[(String, Val)]) -> Vec<String> {
-    let mut keys = vec![format!("{prefix}.code0"), format!("{prefix}.code1")];
-    if let Some((_, Val::Map(planes))) = kv.iter().find(|(k, _)| k == "intersections") {
-        for (pl, _) in planes {
-            for k in ["t", "point", "code"] {
-                keys.push(format!("{prefix}.intersections.{pl}.{k}"));
+fn clip_keys(kv: &[(String, Val)]) -> impl Iterator<Item = Key> {
+    let key = |v: Value| Key::new(Part::Clip, v);
+    let mut keys = vec![
+        key(Value::Field(Field::Code0)),
+        key(Value::Field(Field::Code1)),
+    ];
+    let planes = Node::Field(Field::Intersections);
+    if let Some((_, Val::Map(tried))) = kv.iter().find(|(k, _)| *k == planes.to_string()) {
+        for (pl, _) in tried {
+            if let Some(Node::Plane(p)) = Node::read(pl, Some(&planes)) {
+                keys.extend([Cut::T, Cut::Point, Cut::Code].map(|c| key(Value::Cut(p, c))));
             }
         }
     }
-    keys.push(format!("{prefix}.segment"));
-    keys.push(format!("{prefix}.status"));
-    keys
+    keys.push(key(Value::Field(Field::Segment)));
+    keys.push(key(Value::Field(Field::Status)));
+    keys.into_iter()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn map(keys: &[&str]) -> Val {
+        Val::Map(keys.iter().map(|k| (k.to_string(), Val::Null)).collect())
+    }
+
+    #[test]
+    fn keys_come_in_the_order_of_the_texts_solution() {
+        let view = Val::Map(vec![
+            ("u".into(), Val::Null),
+            ("v".into(), Val::Null),
+            ("n".into(), Val::Null),
+            ("matrix".into(), Val::Null),
+            ("points".into(), map(&["A", "B"])),
+        ]);
+        let run = Val::Map(vec![
+            ("code0".into(), Val::Null),
+            ("status".into(), Val::Null),
+            ("intersections".into(), map(&["top"])),
+        ]);
+        let result = vec![
+            ("view".to_string(), view),
+            ("window".into(), map(&["top", "far_top", "width"])),
+            ("clip".into(), Val::List(vec![map(&["code0"]), run])),
+            ("shade".into(), map(&["color", "cos_alpha", "L"])),
+        ];
+        let want = [
+            "view.n",
+            "view.u",
+            "view.v",
+            "view.matrix",
+            "view.points.A",
+            "view.points.B",
+            "window.top",
+            "window.width",
+            "clip.0.code0",
+            "clip.0.code1",
+            "clip.0.segment",
+            "clip.0.status",
+            "clip.1.code0",
+            "clip.1.code1",
+            "clip.1.intersections.top.t",
+            "clip.1.intersections.top.point",
+            "clip.1.intersections.top.code",
+            "clip.1.segment",
+            "clip.1.status",
+            "shade.L",
+            "shade.cos_alpha",
+            "shade.color",
+        ];
+        assert_eq!(ordered_keys(&result), want);
+    }
 }
