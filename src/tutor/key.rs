@@ -196,7 +196,19 @@ pub enum Field {
     Lights,
 }
 
+impl Part {
+    /// Its key in a result tree (`view`, …).
+    pub fn key(self) -> String {
+        Node::Part(self).to_string()
+    }
+}
+
 impl Field {
+    /// Its key in a result tree (`u`, `far_top`, `cos_alpha`, …).
+    pub fn key(self) -> String {
+        Node::Field(self).to_string()
+    }
+
     /// Every field, each once (the far edges as well as the near).
     pub fn all() -> Vec<Field> {
         use Field::*;
@@ -352,6 +364,20 @@ impl fmt::Display for Node {
     }
 }
 
+impl Cut {
+    /// Its key in a result tree (`t`, …).
+    pub fn key(self) -> String {
+        Node::Cut(self).to_string()
+    }
+}
+
+impl Factor {
+    /// Its key in a result tree (`in_range`, …).
+    pub fn key(self) -> String {
+        Node::Factor(self).to_string()
+    }
+}
+
 impl Node {
     /// The name `s` under `under` (`None`: at the top of a result, a part
     /// or a calculator command's field); `None` if no key has it there.
@@ -423,15 +449,21 @@ impl Key {
     }
 }
 
+/// A part's key with the segment of a clip with several: `view`,
+/// `clip.1` (the start of its answers' keys).
+pub fn prefix(part: Part, segment: Option<usize>) -> String {
+    match segment {
+        Some(i) => format!("{}.{i}", Node::Part(part)),
+        None => part.key(),
+    }
+}
+
 impl fmt::Display for Key {
     /// The key as the result tree spells it: `clip.2.intersections.left.t`,
     /// `shade.lights.0.attenuation`.
     fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
         if let Some(p) = self.part {
-            write!(f, "{}.", Node::Part(p))?;
-        }
-        if let Some(i) = self.segment {
-            write!(f, "{i}.")?;
+            write!(f, "{}.", prefix(p, self.segment))?;
         }
         let field = |x| Node::Field(x);
         match &self.value {

@@ -11,29 +11,30 @@ use crate::stages::clip::{self, ClipBox};
 use crate::stages::lighting::{self, rgb_val, LightTerm, Material, Model};
 use crate::stages::trace::{NoTrace, Recorder, Step, Trace, Val};
 use crate::stages::window;
-use crate::tutor::key::{Axis, Cut, Field, Key, Node, Part, Shading, Value};
+use crate::tutor::key::{Axis, Cut, Edge, Factor, Field, Key, Node, Part, Plane, Shading, Value};
 
 /// The basis as named results.
 pub fn basis_result<T: Scalar>(b: &camera::Basis<T>) -> Vec<(String, Val)> {
+    let axis = |a| Field::Axis(a).key();
     vec![
-        ("u".into(), Val::vec3(&b.u)),
-        ("v".into(), Val::vec3(&b.v)),
-        ("n".into(), Val::vec3(&b.n)),
+        (axis(Axis::U), Val::vec3(&b.u)),
+        (axis(Axis::V), Val::vec3(&b.v)),
+        (axis(Axis::N), Val::vec3(&b.n)),
     ]
 }
 
-/// The window's named results, keys prefixed (`far_top`, ...).
-pub fn window_result<T: Scalar>(w: &window::Window<T>, prefix: &str) -> Vec<(String, Val)> {
+/// The window's named results (`top`, …; on the far plane `far_top`, …).
+pub fn window_result<T: Scalar>(w: &window::Window<T>, far: bool) -> Vec<(String, Val)> {
     [
-        ("top", &w.top),
-        ("bottom", &w.bottom),
-        ("left", &w.left),
-        ("right", &w.right),
-        ("height", &w.height),
-        ("width", &w.width),
+        (Edge::Top, &w.top),
+        (Edge::Bottom, &w.bottom),
+        (Edge::Left, &w.left),
+        (Edge::Right, &w.right),
+        (Edge::Height, &w.height),
+        (Edge::Width, &w.width),
     ]
     .into_iter()
-    .map(|(k, v)| (format!("{prefix}{k}"), Val::num(v)))
+    .map(|(e, v)| (Field::Edge(e, far).key(), Val::num(v)))
     .collect()
 }
 
@@ -73,18 +74,18 @@ pub fn clip_checked<T: Scalar>(
 /// docs/spec.md's clip result keys of a clipping.
 pub fn clip_result<T: Scalar>(r: &clip::Clipped<T>) -> Vec<(String, Val)> {
     vec![
-        ("code0".into(), Val::text(clip::code_str(r.code0))),
-        ("code1".into(), Val::text(clip::code_str(r.code1))),
-        ("status".into(), Val::text(r.status.as_str())),
+        (Field::Code0.key(), Val::text(clip::code_str(r.code0))),
+        (Field::Code1.key(), Val::text(clip::code_str(r.code1))),
+        (Field::Status.key(), Val::text(r.status.as_str())),
         (
-            "segment".into(),
+            Field::Segment.key(),
             match &r.segment {
                 Some((a, z)) => Val::List(vec![Val::vec3(a), Val::vec3(z)]),
                 None => Val::Null,
             },
         ),
         (
-            "intersections".into(),
+            Field::Intersections.key(),
             Val::Map(r.intersections.iter().map(intersection_val).collect()),
         ),
     ]
@@ -93,14 +94,19 @@ pub fn clip_result<T: Scalar>(r: &clip::Clipped<T>) -> Vec<(String, Val)> {
 /// One tried intersection as a result: its plane's key and t, point, code, kept.
 fn intersection_val<T: Scalar>(i: &clip::Intersection<T>) -> (String, Val) {
     (
-        clip::PLANE_KEYS[i.bit].to_string(),
+        Node::Plane(Plane::ALL[i.bit]).to_string(),
         Val::Map(vec![
-            ("t".into(), Val::num(&i.t)),
-            ("point".into(), Val::vec3(&i.point)),
-            ("code".into(), Val::text(clip::code_str(i.code))),
-            ("kept".into(), Val::Bool(i.code == 0)),
+            (Cut::T.key(), Val::num(&i.t)),
+            (Cut::Point.key(), Val::vec3(&i.point)),
+            (Cut::Code.key(), Val::text(clip::code_str(i.code))),
+            (Cut::Kept.key(), Val::Bool(i.code == 0)),
         ]),
     )
+}
+
+/// A lighting value's key in the result (`color`, `cos_alpha`, …).
+fn key(s: Shading) -> String {
+    Field::Shading(s).key()
 }
 
 /// Equal up to rounding (exact values compare exactly).
@@ -134,30 +140,30 @@ pub fn shade_run<T: Scalar, R: lighting::RuleSet<T>>(
     rec.step(|| material_step(m));
     let sh = lighting::shade_with_rules(m, &s.lights, &s.global_ambient, &s.surface, rules, rec);
     let mut out: Vec<(String, Val)> = vec![
-        ("color".into(), rgb_val(&sh.color)),
-        ("unclamped".into(), rgb_val(&sh.unclamped)),
-        ("ambient".into(), rgb_val(&sh.ambient)),
-        ("diffuse".into(), rgb_val(&sh.diffuse)),
-        ("specular".into(), rgb_val(&sh.specular)),
+        (key(Shading::Color), rgb_val(&sh.color)),
+        (key(Shading::Unclamped), rgb_val(&sh.unclamped)),
+        (key(Shading::Ambient), rgb_val(&sh.ambient)),
+        (key(Shading::Diffuse), rgb_val(&sh.diffuse)),
+        (key(Shading::Specular), rgb_val(&sh.specular)),
     ];
     if sh.emissive.iter().any(|x| !x.is_zero_value()) {
-        out.push(("emissive".into(), rgb_val(&sh.emissive)));
+        out.push((key(Shading::Emissive), rgb_val(&sh.emissive)));
     }
     let blinn = m.model == Model::Blinn;
     if s.lights.len() == 1 {
-        out.push(("R".into(), opt_vec(&sh.r)));
+        out.push((key(Shading::R), opt_vec(&sh.r)));
         if blinn {
-            out.push(("H".into(), opt_vec(&sh.h)));
-            out.push(("N_dot_H".into(), opt_num(&sh.cos_nh)));
+            out.push((key(Shading::H), opt_vec(&sh.h)));
+            out.push((key(Shading::NDotH), opt_num(&sh.cos_nh)));
         }
-        out.push(("cos_alpha".into(), opt_num(&sh.cos_alpha)));
-        out.push(("cos_beta".into(), opt_num(&sh.cos_beta)));
+        out.push((key(Shading::CosAlpha), opt_num(&sh.cos_alpha)));
+        out.push((key(Shading::CosBeta), opt_num(&sh.cos_beta)));
     } else {
         out.extend(vectors_per_light(s, &sh.view, rules));
     }
     if !s.text_light {
         let per = (0..s.lights.len()).map(|i| light_factors(s, i, &sh.view));
-        out.push(("lights".into(), Val::List(per.collect())));
+        out.push((Field::Lights.key(), Val::List(per.collect())));
     }
     out
 }
@@ -203,13 +209,13 @@ fn vectors_per_light<T: Scalar, R: lighting::RuleSet<T>>(
                 .collect(),
         )
     };
-    let mut out = vec![("R".to_string(), list(&|t| opt_vec(&t.r)))];
+    let mut out = vec![(key(Shading::R), list(&|t| opt_vec(&t.r)))];
     if m.model == Model::Blinn {
-        out.push(("H".into(), list(&|t| opt_vec(&t.h))));
-        out.push(("N_dot_H".into(), list(&|t| opt_num(&t.cos_nh))));
+        out.push((key(Shading::H), list(&|t| opt_vec(&t.h))));
+        out.push((key(Shading::NDotH), list(&|t| opt_num(&t.cos_nh))));
     }
-    out.push(("cos_alpha".into(), list(&|t| Val::num(&t.cos_alpha))));
-    out.push(("cos_beta".into(), list(&|t| opt_num(&t.cos_beta))));
+    out.push((key(Shading::CosAlpha), list(&|t| Val::num(&t.cos_alpha))));
+    out.push((key(Shading::CosBeta), list(&|t| opt_num(&t.cos_beta))));
     out
 }
 
@@ -220,10 +226,13 @@ fn light_factors<T: Scalar>(s: &Setup<T>, i: usize, view: &V3<T>) -> Val {
     let t = lighting::light_term_with(m, l, (i, n), &s.surface, view, false, rules, &mut NoTrace);
     let or_null = |f: &dyn Fn(&LightTerm<T>) -> Val| t.as_ref().map(f).unwrap_or(Val::Null);
     Val::Map(vec![
-        ("in_range".into(), Val::Bool(t.is_some())),
-        ("distance".into(), or_null(&|t| opt_num(&t.distance))),
-        ("attenuation".into(), or_null(&|t| Val::num(&t.attenuation))),
-        ("spot".into(), or_null(&|t| Val::num(&t.spot))),
+        (Factor::InRange.key(), Val::Bool(t.is_some())),
+        (Factor::Distance.key(), or_null(&|t| opt_num(&t.distance))),
+        (
+            Factor::Attenuation.key(),
+            or_null(&|t| Val::num(&t.attenuation)),
+        ),
+        (Factor::Spot.key(), or_null(&|t| Val::num(&t.spot))),
     ])
 }
 
