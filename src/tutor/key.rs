@@ -33,14 +33,33 @@ pub enum Part {
 
 impl Part {
     /// Every part, in the order of the text's solution.
-    pub const ALL: [Part; 6] = [
-        Part::View,
-        Part::Project,
-        Part::Window,
-        Part::Viewport,
-        Part::Clip,
-        Part::Shade,
-    ];
+    pub fn all() -> Vec<Part> {
+        every(Part::View, Part::next)
+    }
+
+    /// The part after this one: an exhaustive match, so a new part is
+    /// listed (and read from a key) as soon as it compiles.
+    fn next(self) -> Option<Part> {
+        match self {
+            Part::View => Some(Part::Project),
+            Part::Project => Some(Part::Window),
+            Part::Window => Some(Part::Viewport),
+            Part::Viewport => Some(Part::Clip),
+            Part::Clip => Some(Part::Shade),
+            Part::Shade => None,
+        }
+    }
+}
+
+/// The one after `x` in `all`.
+fn after<T: PartialEq + Copy>(all: &[T], x: T) -> Option<T> {
+    let i = all.iter().position(|y| *y == x)?;
+    all.get(i + 1).copied()
+}
+
+/// `first` and each `next` after it.
+fn every<T: Copy>(first: T, next: fn(T) -> Option<T>) -> Vec<T> {
+    std::iter::successors(Some(first), |x| next(*x)).collect()
 }
 
 /// A camera axis: `u`, `v`, `n`.
@@ -154,6 +173,34 @@ pub enum Shading {
     Color,
 }
 
+impl Shading {
+    /// Every value of the lighting.
+    pub fn all() -> Vec<Shading> {
+        every(Shading::L, Shading::next)
+    }
+
+    /// The value after this one: an exhaustive match, so a new value is
+    /// listed (and read from a key) as soon as it compiles.
+    fn next(self) -> Option<Shading> {
+        use Shading::*;
+        match self {
+            L => Some(N),
+            N => Some(CosAlpha),
+            CosAlpha => Some(R),
+            R => Some(H),
+            H => Some(NDotH),
+            NDotH => Some(CosBeta),
+            CosBeta => Some(Ambient),
+            Ambient => Some(Diffuse),
+            Diffuse => Some(Specular),
+            Specular => Some(Emissive),
+            Emissive => Some(Unclamped),
+            Unclamped => Some(Color),
+            Color => None,
+        }
+    }
+}
+
 /// One light's factors (a light from a file).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Factor {
@@ -211,15 +258,31 @@ impl Field {
 
     /// Every field, each once (the far edges as well as the near).
     pub fn all() -> Vec<Field> {
+        every(Field::Axis(Axis::U), Field::next)
+    }
+
+    /// The field after this one: an exhaustive match, so a new field is
+    /// listed (and read from a key) as soon as it compiles.
+    fn next(self) -> Option<Field> {
         use Field::*;
-        let mut all = vec![Matrix, Points, Pixels, Code0, Code1, Status, Segment];
-        all.extend([Intersections, Lights]);
-        all.extend(AXES.map(Axis));
-        for far in [false, true] {
-            all.extend(EDGES.map(|e| Edge(e, far)));
-        }
-        all.extend(SHADINGS.map(Shading));
-        all
+        Some(match self {
+            Axis(a) => after(&AXES, a).map_or(Matrix, Axis),
+            Matrix => Points,
+            Points => Pixels,
+            Pixels => Edge(EDGES[0], false),
+            Edge(e, far) => match (after(&EDGES, e), far) {
+                (Some(e), _) => Edge(e, far),
+                (None, false) => Edge(EDGES[0], true),
+                (None, true) => Code0,
+            },
+            Code0 => Code1,
+            Code1 => Status,
+            Status => Segment,
+            Segment => Intersections,
+            Intersections => Shading(self::Shading::L),
+            Shading(s) => s.next().map_or(Lights, Shading),
+            Lights => return None,
+        })
     }
 
     /// The parts a field belongs to.
@@ -245,22 +308,6 @@ const EDGES: [Edge; 6] = [
     Edge::Right,
     Edge::Height,
     Edge::Width,
-];
-
-const SHADINGS: [Shading; 13] = [
-    Shading::L,
-    Shading::N,
-    Shading::CosAlpha,
-    Shading::R,
-    Shading::H,
-    Shading::NDotH,
-    Shading::CosBeta,
-    Shading::Ambient,
-    Shading::Diffuse,
-    Shading::Specular,
-    Shading::Emissive,
-    Shading::Unclamped,
-    Shading::Color,
 ];
 
 const CUTS: [Cut; 4] = [Cut::T, Cut::Point, Cut::Code, Cut::Kept];
@@ -384,7 +431,7 @@ impl Node {
     pub fn read(s: &str, under: Option<&Node>) -> Option<Node> {
         let one = |cands: Vec<Node>| cands.into_iter().find(|n| n.to_string() == s);
         match under {
-            None => one(Part::ALL.map(Node::Part).to_vec())
+            None => one(Part::all().into_iter().map(Node::Part).collect())
                 .or_else(|| one(Field::all().into_iter().map(Node::Field).collect())),
             Some(Node::Part(p)) => one((Field::all().into_iter())
                 .filter(|f| f.in_part(*p))
@@ -623,6 +670,19 @@ mod tests {
         ] {
             assert_eq!(s.parse::<Key>(), Err(NotAKey), "{s}");
         }
+    }
+
+    #[test]
+    fn every_field_is_listed_once() {
+        // 3 axes, matrix, points, pixels, 6 + 6 window edges, code0, code1,
+        // status, segment, intersections, 13 lighting values, lights
+        let all: Vec<String> = Field::all().into_iter().map(Field::key).collect();
+        assert_eq!(all.len(), 37);
+        let mut once = all.clone();
+        once.sort();
+        once.dedup();
+        assert_eq!(once.len(), all.len(), "{all:?}");
+        assert_eq!(Part::all().len(), 6);
     }
 
     #[test]

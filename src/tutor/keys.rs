@@ -363,6 +363,17 @@ mod tests {
     }
 
     #[test]
+    fn every_lighting_value_is_asked_in_order() {
+        for s in Shading::all() {
+            let asked = SHADE_ORDER.contains(&s);
+            assert!(
+                asked != (s == Shading::Emissive),
+                "{s:?}: add it to SHADE_ORDER"
+            );
+        }
+    }
+
+    #[test]
     fn keys_come_in_the_order_of_the_texts_solution() {
         let view = Val::Map(vec![
             ("u".into(), Val::Null),
