@@ -118,11 +118,6 @@ impl Plane {
         Plane::Back,
     ];
 
-    /// The plane of outcode bit `bit + 1` (0-based, as `clip::Intersection::bit`).
-    pub fn of_bit(bit: usize) -> Option<Plane> {
-        Plane::ALL.get(bit).copied()
-    }
-
     /// Its 0-based outcode bit.
     pub fn bit(self) -> usize {
         self as usize
@@ -688,9 +683,8 @@ mod tests {
     #[test]
     fn a_planes_spelling_is_its_outcode_bits_key() {
         for (bit, p) in Plane::ALL.iter().enumerate() {
-            assert_eq!(Plane::of_bit(bit), Some(*p));
+            assert_eq!(p.bit(), bit);
             assert_eq!(Node::Plane(*p).to_string(), PLANE_KEYS[bit]);
         }
-        assert_eq!(Plane::of_bit(6), None);
     }
 }
