@@ -5,9 +5,9 @@
 
 use super::figure::xml_escape;
 use super::mathml;
+use super::words::{self, keys};
 use super::Style;
 use crate::msg::Msg;
-use crate::report::words;
 use crate::stages::trace::{Step, Subst, Val};
 
 /// The page's style: readable on a screen, one column, and A4 in print
@@ -153,7 +153,7 @@ pub fn answers(st: &Style, items: &[(String, Val)]) -> String {
     let named: Vec<(String, String, Val)> = rows
         .into_iter()
         .map(|(k, v)| {
-            let name = crate::report::words::labels::answer_name(&k, st.lang);
+            let name = keys::name_of(words::of(st.lang), &k);
             (k, name, v)
         })
         .collect();

@@ -25,6 +25,7 @@ pub mod words;
 use crate::msg::{Msg, Printed};
 use crate::num::Shown;
 use crate::stages::trace::{Name, Step, Subst, Val};
+use crate::tutor::key::{Field, Node};
 use crate::tutor::solution::{Asked, Compared, Comparison, Report};
 use comfy_table::{presets, Table};
 use lang::{tr, Lang, NumStyle};
@@ -348,11 +349,8 @@ impl Report {
                 .result
                 .iter()
                 .map(|(k, v)| {
-                    (
-                        k.clone(),
-                        words::labels::answer_key(k, None, lang),
-                        v.clone(),
-                    )
+                    let (_, named) = words::keys::node_of(words::of(lang), k, None);
+                    (k.clone(), named, v.clone())
                 })
                 .collect(),
         }
@@ -393,8 +391,10 @@ impl Report {
             out.push_str(&style.step_body(s));
         }
         out.push_str(&format!("\n{}\n", self.answer_heading(style.lang)));
+        let render = matches!(self.asked, Asked::Render(_));
         for (k, named, v) in self.answer_named(style.lang) {
-            push_answer(&mut out, style, "  ", (&k, &named), &v);
+            let node = (!render).then(|| Node::read(&k, None)).flatten();
+            push_answer(&mut out, style, "  ", (node.as_ref(), &named), &v);
         }
         for n in self.all_notes(style) {
             out.push_str(&format!("\n{n}\n"));
@@ -505,7 +505,7 @@ fn comparison_text(c: &Comparison, lang: Lang) -> String {
     let mut lines = vec![format!("{head} {src}:")];
     let printed = t("printed", "tercetak");
     for r in &c.rows {
-        let name = words::labels::answer_name(&r.key, lang);
+        let name = words::keys::name_of(words::of(lang), &r.key);
         let (key, shown) = (format!("{name} ({})", r.key), &r.printed);
         let verdict = style.w(&Msg::Printed(r.verdict()));
         let why = (r.why.as_ref())
@@ -542,10 +542,11 @@ fn compared_json(r: &Compared, lang: Lang) -> Value {
 
 /// Writes one answer, opening maps (e.g. points) into one line per entry
 /// and a list of maps (the segments of a clip) into one numbered block per
-/// map, `clip[1]:`, `clip[2]:`, …; an empty map is `none`. `k` is the key
-/// and the words it is shown with (`answer_key`).
-fn push_answer(out: &mut String, style: &Style, indent: &str, k: (&str, &str), v: &Val) {
-    let (key, shown) = k;
+/// map, `clip[1]:`, `clip[2]:`, …; an empty map is `none`. `k` is the
+/// answer tree's name (none for a render's summary) and the words it is
+/// shown with ([`words::keys::KeyWords::node`]).
+fn push_answer(out: &mut String, style: &Style, indent: &str, k: (Option<&Node>, &str), v: &Val) {
+    let (node, shown) = k;
     match v {
         Val::Map(kv) if kv.is_empty() => {
             out.push_str(&style.named(indent, shown, &Val::Null));
@@ -554,19 +555,28 @@ fn push_answer(out: &mut String, style: &Style, indent: &str, k: (&str, &str), v
         Val::List(items) if is_list_of_maps(items) => {
             for (i, item) in items.iter().enumerate() {
                 let numbered = format!("{shown}[{}]", i + 1);
-                push_answer(out, style, indent, (key, &numbered), item);
+                push_answer(out, style, indent, (node, &numbered), item);
             }
         }
         Val::Map(kv) => {
             out.push_str(&format!("{indent}{shown}:\n"));
             for (k2, v2) in kv {
-                let named = words::labels::answer_key(k2, Some(key), style.lang);
-                push_answer(out, style, &format!("{indent}  "), (k2, &named), v2);
+                let (inner, named) = match node {
+                    Some(n) => words::keys::node_of(words::of(style.lang), k2, Some(n)),
+                    None => (None, k2.clone()),
+                };
+                push_answer(
+                    out,
+                    style,
+                    &format!("{indent}  "),
+                    (inner.as_ref(), &named),
+                    v2,
+                );
             }
         }
         // A clipping status is a code (check compares it); the text
         // glosses it in the chosen language.
-        Val::Text(t) if key == "status" => {
+        Val::Text(t) if node == Some(&Node::Field(Field::Status)) => {
             let said = Val::said(crate::msg::Said::Status(t.clone()));
             out.push_str(&style.named(indent, shown, &said));
             out.push('\n');

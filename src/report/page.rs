@@ -6,6 +6,7 @@
 use super::doc::Doc;
 use super::figure::xml_escape;
 use super::html::{answers, figure, heading, named_answers, page};
+use super::words::{self, keys};
 use super::{mathml, Report, Style};
 use crate::msg::{Msg, Printed};
 use crate::tutor::solution::{Asked, Compared, Comparison};
@@ -120,7 +121,7 @@ fn comparison(c: &Comparison, st: &Style) -> String {
 /// value's name is text, which wraps in the narrow first column (MathML
 /// would not).
 fn compared_row(row: &Compared, st: &Style) -> String {
-    let name = crate::report::words::labels::answer_name(&row.key, st.lang);
+    let name = keys::name_of(words::of(st.lang), &row.key);
     let correct = match (&row.computed, row.verdict()) {
         (Some(v), Printed::Differs(_) | Printed::NotComparable) => {
             mathml::inline(&st.val_inline(v))

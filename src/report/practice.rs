@@ -462,10 +462,9 @@ fn name(x: &impl std::fmt::Debug) -> String {
 
 /// What a key asks for, in a few words, and the key.
 pub fn label(key: &str, lang: Lang) -> String {
-    let words = crate::report::words::labels::answer_words(key, lang);
-    match words == key {
-        true => words,
-        false => format!("{words} ({key})"),
+    match key.parse::<crate::tutor::key::Key>() {
+        Ok(k) => format!("{} ({key})", words::of(lang).answer_words(&k)),
+        Err(_) => key.to_string(),
     }
 }
 

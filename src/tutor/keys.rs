@@ -11,28 +11,30 @@ use crate::stages::clip::{self, ClipBox};
 use crate::stages::lighting::{self, rgb_val, LightTerm, Material, Model};
 use crate::stages::trace::{Name, NoTrace, Recorder, Step, Trace, Val};
 use crate::stages::window;
+use crate::tutor::key::{Axis, Cut, Edge, Factor, Field, Key, Node, Part, Plane, Shading, Value};
 
 /// The basis as named results.
 pub fn basis_result<T: Scalar>(b: &camera::Basis<T>) -> Vec<(String, Val)> {
+    let axis = |a| Field::Axis(a).key();
     vec![
-        ("u".into(), Val::vec3(&b.u)),
-        ("v".into(), Val::vec3(&b.v)),
-        ("n".into(), Val::vec3(&b.n)),
+        (axis(Axis::U), Val::vec3(&b.u)),
+        (axis(Axis::V), Val::vec3(&b.v)),
+        (axis(Axis::N), Val::vec3(&b.n)),
     ]
 }
 
-/// The window's named results, keys prefixed (`far_top`, ...).
-pub fn window_result<T: Scalar>(w: &window::Window<T>, prefix: &str) -> Vec<(String, Val)> {
+/// The window's named results (`top`, …; on the far plane `far_top`, …).
+pub fn window_result<T: Scalar>(w: &window::Window<T>, far: bool) -> Vec<(String, Val)> {
     [
-        ("top", &w.top),
-        ("bottom", &w.bottom),
-        ("left", &w.left),
-        ("right", &w.right),
-        ("height", &w.height),
-        ("width", &w.width),
+        (Edge::Top, &w.top),
+        (Edge::Bottom, &w.bottom),
+        (Edge::Left, &w.left),
+        (Edge::Right, &w.right),
+        (Edge::Height, &w.height),
+        (Edge::Width, &w.width),
     ]
     .into_iter()
-    .map(|(k, v)| (format!("{prefix}{k}"), Val::num(v)))
+    .map(|(e, v)| (Field::Edge(e, far).key(), Val::num(v)))
     .collect()
 }
 
@@ -72,18 +74,18 @@ pub fn clip_checked<T: Scalar>(
 /// docs/spec.md's clip result keys of a clipping.
 pub fn clip_result<T: Scalar>(r: &clip::Clipped<T>) -> Vec<(String, Val)> {
     vec![
-        ("code0".into(), Val::text(clip::code_str(r.code0))),
-        ("code1".into(), Val::text(clip::code_str(r.code1))),
-        ("status".into(), Val::text(r.status.as_str())),
+        (Field::Code0.key(), Val::text(clip::code_str(r.code0))),
+        (Field::Code1.key(), Val::text(clip::code_str(r.code1))),
+        (Field::Status.key(), Val::text(r.status.as_str())),
         (
-            "segment".into(),
+            Field::Segment.key(),
             match &r.segment {
                 Some((a, z)) => Val::List(vec![Val::vec3(a), Val::vec3(z)]),
                 None => Val::Null,
             },
         ),
         (
-            "intersections".into(),
+            Field::Intersections.key(),
             Val::Map(r.intersections.iter().map(intersection_val).collect()),
         ),
     ]
@@ -92,14 +94,19 @@ pub fn clip_result<T: Scalar>(r: &clip::Clipped<T>) -> Vec<(String, Val)> {
 /// One tried intersection as a result: its plane's key and t, point, code, kept.
 fn intersection_val<T: Scalar>(i: &clip::Intersection<T>) -> (String, Val) {
     (
-        clip::PLANE_KEYS[i.bit].to_string(),
+        Node::Plane(Plane::ALL[i.bit]).to_string(),
         Val::Map(vec![
-            ("t".into(), Val::num(&i.t)),
-            ("point".into(), Val::vec3(&i.point)),
-            ("code".into(), Val::text(clip::code_str(i.code))),
-            ("kept".into(), Val::Bool(i.code == 0)),
+            (Cut::T.key(), Val::num(&i.t)),
+            (Cut::Point.key(), Val::vec3(&i.point)),
+            (Cut::Code.key(), Val::text(clip::code_str(i.code))),
+            (Cut::Kept.key(), Val::Bool(i.code == 0)),
         ]),
     )
+}
+
+/// A lighting value's key in the result (`color`, `cos_alpha`, …).
+fn key(s: Shading) -> String {
+    Field::Shading(s).key()
 }
 
 /// Equal up to rounding (exact values compare exactly).
@@ -133,30 +140,30 @@ pub fn shade_run<T: Scalar, R: lighting::RuleSet<T>>(
     rec.step(|| material_step(m));
     let sh = lighting::shade_with_rules(m, &s.lights, &s.global_ambient, &s.surface, rules, rec);
     let mut out: Vec<(String, Val)> = vec![
-        ("color".into(), rgb_val(&sh.color)),
-        ("unclamped".into(), rgb_val(&sh.unclamped)),
-        ("ambient".into(), rgb_val(&sh.ambient)),
-        ("diffuse".into(), rgb_val(&sh.diffuse)),
-        ("specular".into(), rgb_val(&sh.specular)),
+        (key(Shading::Color), rgb_val(&sh.color)),
+        (key(Shading::Unclamped), rgb_val(&sh.unclamped)),
+        (key(Shading::Ambient), rgb_val(&sh.ambient)),
+        (key(Shading::Diffuse), rgb_val(&sh.diffuse)),
+        (key(Shading::Specular), rgb_val(&sh.specular)),
     ];
     if sh.emissive.iter().any(|x| !x.is_zero_value()) {
-        out.push(("emissive".into(), rgb_val(&sh.emissive)));
+        out.push((key(Shading::Emissive), rgb_val(&sh.emissive)));
     }
     let blinn = m.model == Model::Blinn;
     if s.lights.len() == 1 {
-        out.push(("R".into(), opt_vec(&sh.r)));
+        out.push((key(Shading::R), opt_vec(&sh.r)));
         if blinn {
-            out.push(("H".into(), opt_vec(&sh.h)));
-            out.push(("N_dot_H".into(), opt_num(&sh.cos_nh)));
+            out.push((key(Shading::H), opt_vec(&sh.h)));
+            out.push((key(Shading::NDotH), opt_num(&sh.cos_nh)));
         }
-        out.push(("cos_alpha".into(), opt_num(&sh.cos_alpha)));
-        out.push(("cos_beta".into(), opt_num(&sh.cos_beta)));
+        out.push((key(Shading::CosAlpha), opt_num(&sh.cos_alpha)));
+        out.push((key(Shading::CosBeta), opt_num(&sh.cos_beta)));
     } else {
         out.extend(vectors_per_light(s, &sh.view, rules));
     }
     if !s.text_light {
         let per = (0..s.lights.len()).map(|i| light_factors(s, i, &sh.view));
-        out.push(("lights".into(), Val::List(per.collect())));
+        out.push((Field::Lights.key(), Val::List(per.collect())));
     }
     out
 }
@@ -202,13 +209,13 @@ fn vectors_per_light<T: Scalar, R: lighting::RuleSet<T>>(
                 .collect(),
         )
     };
-    let mut out = vec![("R".to_string(), list(&|t| opt_vec(&t.r)))];
+    let mut out = vec![(key(Shading::R), list(&|t| opt_vec(&t.r)))];
     if m.model == Model::Blinn {
-        out.push(("H".into(), list(&|t| opt_vec(&t.h))));
-        out.push(("N_dot_H".into(), list(&|t| opt_num(&t.cos_nh))));
+        out.push((key(Shading::H), list(&|t| opt_vec(&t.h))));
+        out.push((key(Shading::NDotH), list(&|t| opt_num(&t.cos_nh))));
     }
-    out.push(("cos_alpha".into(), list(&|t| Val::num(&t.cos_alpha))));
-    out.push(("cos_beta".into(), list(&|t| opt_num(&t.cos_beta))));
+    out.push((key(Shading::CosAlpha), list(&|t| Val::num(&t.cos_alpha))));
+    out.push((key(Shading::CosBeta), list(&|t| opt_num(&t.cos_beta))));
     out
 }
 
@@ -219,10 +226,13 @@ fn light_factors<T: Scalar>(s: &Setup<T>, i: usize, view: &V3<T>) -> Val {
     let t = lighting::light_term_with(m, l, (i, n), &s.surface, view, false, rules, &mut NoTrace);
     let or_null = |f: &dyn Fn(&LightTerm<T>) -> Val| t.as_ref().map(f).unwrap_or(Val::Null);
     Val::Map(vec![
-        ("in_range".into(), Val::Bool(t.is_some())),
-        ("distance".into(), or_null(&|t| opt_num(&t.distance))),
-        ("attenuation".into(), or_null(&|t| Val::num(&t.attenuation))),
-        ("spot".into(), or_null(&|t| Val::num(&t.spot))),
+        (Factor::InRange.key(), Val::Bool(t.is_some())),
+        (Factor::Distance.key(), or_null(&|t| opt_num(&t.distance))),
+        (
+            Factor::Attenuation.key(),
+            or_null(&|t| Val::num(&t.attenuation)),
+        ),
+        (Factor::Spot.key(), or_null(&|t| Val::num(&t.spot))),
     ])
 }
 
@@ -233,83 +243,180 @@ fn light_factors<T: Scalar>(s: &Setup<T>, i: usize, view: &V3<T>) -> Val {
 /// t, intersection point and that point's outcode, the text's deciding
 /// step), the clipped segment and the status; the lighting's unit L and
 /// N, cos α, R (H and N·H for Blinn), cos β, the terms, their sum and the
-/// clamped colour.
+/// clamped colour. Each key is a [`Key`] written by its `Display`; a new
+/// part is a new arm here (the match is over every [`Part`]).
 pub fn ordered_keys(result: &[(String, Val)]) -> Vec<String> {
-    let mut keys = Vec::new();
-    for (part, v) in result {
-        match (part.as_str(), v) {
-            ("view", Val::Map(kv)) => {
-                keys.extend(in_order(kv, "view", &["n", "u", "v", "matrix"]));
-                keys.extend(named(kv, "view.points", "points"));
+    let mut keys: Vec<Key> = Vec::new();
+    for (name, v) in result {
+        let Some(Node::Part(part)) = Node::read(name, None) else {
+            continue;
+        };
+        let kv = match v {
+            Val::Map(kv) => &kv[..],
+            _ => &[],
+        };
+        let fields = fields(part, kv);
+        let key = |v: Value| Key::new(part, v);
+        match part {
+            Part::View => {
+                let axes = [Axis::N, Axis::U, Axis::V].map(Field::Axis);
+                let order = [axes[0], axes[1], axes[2], Field::Matrix];
+                keys.extend(in_order(&fields, &order).map(|f| key(Value::Field(f))));
+                keys.extend(named(kv, Field::Points).map(|n| key(Value::Point(n))));
             }
-            ("project", Val::Map(kv)) => keys.extend(named(kv, "project.points", "points")),
-            ("viewport", Val::Map(kv)) => keys.extend(named(kv, "viewport.pixels", "pixels")),
-            ("window", Val::Map(kv)) => keys.extend(
-                kv.iter()
-                    .filter(|(k, _)| !k.starts_with("far_"))
-                    .map(|(k, _)| format!("window.{k}")),
+            Part::Project => keys.extend(named(kv, Field::Points).map(|n| key(Value::Point(n)))),
+            Part::Viewport => keys.extend(named(kv, Field::Pixels).map(|n| key(Value::Pixel(n)))),
+            Part::Window => keys.extend(
+                (fields.iter())
+                    .filter(|f| matches!(f, Field::Edge(_, false)))
+                    .map(|f| key(Value::Field(*f))),
             ),
-            ("clip", Val::Map(kv)) => keys.extend(clip_keys("clip", kv)),
-            ("clip", Val::List(runs)) => {
-                for (i, r) in runs.iter().enumerate() {
-                    if let Val::Map(kv) = r {
-                        keys.extend(clip_keys(&format!("clip.{i}"), kv));
+            Part::Clip => match v {
+                Val::List(runs) => {
+                    for (i, r) in runs.iter().enumerate() {
+                        if let Val::Map(kv) = r {
+                            keys.extend(clip_keys(kv).map(|k| k.of_segment(Some(i))));
+                        }
                     }
                 }
+                _ => keys.extend(clip_keys(kv)),
+            },
+            Part::Shade => {
+                let order = SHADE_ORDER.map(Field::Shading);
+                keys.extend(in_order(&fields, &order).map(|f| key(Value::Field(f))));
             }
-            ("shade", Val::Map(kv)) => keys.extend(in_order(
-                kv,
-                "shade",
-                &[
-                    "L",
-                    "N",
-                    "cos_alpha",
-                    "R",
-                    "H",
-                    "N_dot_H",
-                    "cos_beta",
-                    "ambient",
-                    "diffuse",
-                    "specular",
-                    "unclamped",
-                    "color",
-                ],
-            )),
-            _ => {}
         }
     }
-    keys
+    keys.iter().map(Key::to_string).collect()
 }
 
-/// `prefix.K` for each of `order` the map holds, in that order.
-fn in_order(kv: &[(String, Val)], prefix: &str, order: &[&str]) -> Vec<String> {
-    order
-        .iter()
-        .filter(|k| kv.iter().any(|(x, _)| x == *k))
-        .map(|k| format!("{prefix}.{k}"))
+/// The lighting's values in the order of the text's solution (the
+/// emissive term is the material's own, not asked).
+const SHADE_ORDER: [Shading; 12] = [
+    Shading::L,
+    Shading::N,
+    Shading::CosAlpha,
+    Shading::R,
+    Shading::H,
+    Shading::NDotH,
+    Shading::CosBeta,
+    Shading::Ambient,
+    Shading::Diffuse,
+    Shading::Specular,
+    Shading::Unclamped,
+    Shading::Color,
+];
+
+/// The fields of a part's map (names that are no field of the part left out).
+fn fields(part: Part, kv: &[(String, Val)]) -> Vec<Field> {
+    let under = Node::Part(part);
+    (kv.iter())
+        .filter_map(|(k, _)| match Node::read(k, Some(&under)) {
+            Some(Node::Field(f)) => Some(f),
+            _ => None,
+        })
         .collect()
 }
 
-/// `prefix.NAME` for each name of the map held at `inner`.
-fn named(kv: &[(String, Val)], prefix: &str, inner: &str) -> Vec<String> {
-    match kv.iter().find(|(k, _)| k == inner) {
-        Some((_, Val::Map(m))) => m.iter().map(|(n, _)| format!("{prefix}.{n}")).collect(),
-        _ => vec![],
-    }
+/// Each of `order` the part holds, in that order.
+fn in_order<'a>(fields: &'a [Field], order: &'a [Field]) -> impl Iterator<Item = Field> + 'a {
+    order.iter().copied().filter(|f| fields.contains(f))
+}
+
+/// The names of the map held at `inner` (the points, the pixels).
+fn named(kv: &[(String, Val)], inner: Field) -> impl Iterator<Item = String> + '_ {
+    let inner = Node::Field(inner).to_string();
+    let map = match kv.iter().find(|(k, _)| *k == inner) {
+        Some((_, Val::Map(m))) => &m[..],
+        _ => &[],
+    };
+    map.iter().map(|(n, _)| n.clone())
 }
 
 /// The outcodes, each plane tried (t, intersection, its outcode), the
 /// clipped segment, the status.
-fn clip_keys(prefix: &str, kv: &[(String, Val)]) -> Vec<String> {
-    let mut keys = vec![format!("{prefix}.code0"), format!("{prefix}.code1")];
-    if let Some((_, Val::Map(planes))) = kv.iter().find(|(k, _)| k == "intersections") {
-        for (pl, _) in planes {
-            for k in ["t", "point", "code"] {
-                keys.push(format!("{prefix}.intersections.{pl}.{k}"));
+fn clip_keys(kv: &[(String, Val)]) -> impl Iterator<Item = Key> {
+    let key = |v: Value| Key::new(Part::Clip, v);
+    let mut keys = vec![
+        key(Value::Field(Field::Code0)),
+        key(Value::Field(Field::Code1)),
+    ];
+    let planes = Node::Field(Field::Intersections);
+    if let Some((_, Val::Map(tried))) = kv.iter().find(|(k, _)| *k == planes.to_string()) {
+        for (pl, _) in tried {
+            if let Some(Node::Plane(p)) = Node::read(pl, Some(&planes)) {
+                keys.extend([Cut::T, Cut::Point, Cut::Code].map(|c| key(Value::Cut(p, c))));
             }
         }
     }
-    keys.push(format!("{prefix}.segment"));
-    keys.push(format!("{prefix}.status"));
-    keys
+    keys.push(key(Value::Field(Field::Segment)));
+    keys.push(key(Value::Field(Field::Status)));
+    keys.into_iter()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn map(keys: &[&str]) -> Val {
+        Val::Map(keys.iter().map(|k| (k.to_string(), Val::Null)).collect())
+    }
+
+    #[test]
+    fn every_lighting_value_is_asked_in_order() {
+        for s in Shading::all() {
+            let asked = SHADE_ORDER.contains(&s);
+            assert!(
+                asked != (s == Shading::Emissive),
+                "{s:?}: add it to SHADE_ORDER"
+            );
+        }
+    }
+
+    #[test]
+    fn keys_come_in_the_order_of_the_texts_solution() {
+        let view = Val::Map(vec![
+            ("u".into(), Val::Null),
+            ("v".into(), Val::Null),
+            ("n".into(), Val::Null),
+            ("matrix".into(), Val::Null),
+            ("points".into(), map(&["A", "B"])),
+        ]);
+        let run = Val::Map(vec![
+            ("code0".into(), Val::Null),
+            ("status".into(), Val::Null),
+            ("intersections".into(), map(&["top"])),
+        ]);
+        let result = vec![
+            ("view".to_string(), view),
+            ("window".into(), map(&["top", "far_top", "width"])),
+            ("clip".into(), Val::List(vec![map(&["code0"]), run])),
+            ("shade".into(), map(&["color", "cos_alpha", "L"])),
+        ];
+        let want = [
+            "view.n",
+            "view.u",
+            "view.v",
+            "view.matrix",
+            "view.points.A",
+            "view.points.B",
+            "window.top",
+            "window.width",
+            "clip.0.code0",
+            "clip.0.code1",
+            "clip.0.segment",
+            "clip.0.status",
+            "clip.1.code0",
+            "clip.1.code1",
+            "clip.1.intersections.top.t",
+            "clip.1.intersections.top.point",
+            "clip.1.intersections.top.code",
+            "clip.1.segment",
+            "clip.1.status",
+            "shade.L",
+            "shade.cos_alpha",
+            "shade.color",
+        ];
+        assert_eq!(ordered_keys(&result), want);
+    }
 }

@@ -10,6 +10,7 @@ pub mod class;
 pub mod diagnose;
 pub mod follow;
 pub mod generate;
+pub mod key;
 pub mod keys;
 pub mod part;
 pub mod pixel;

@@ -16,6 +16,7 @@ use crate::stages::clip::ClipBox;
 use crate::stages::projection::Projection;
 use crate::stages::trace::{Recorder, Val};
 use crate::stages::window;
+use crate::tutor::key::Field;
 use crate::tutor::keys::basis_result;
 use crate::tutor::run::{self, Hooks, Named};
 use crate::tutor::solution::{at, p3, Asked, CameraAt, Given, Report, ShadeAt, WindowAt};
@@ -111,7 +112,7 @@ fn project<T: Scalar>(
         points: pts.iter().map(|(n, p)| (n.clone(), Val::vec3(p))).collect(),
         chained: false,
     };
-    Ok((given, vec![("points".into(), run::points_val(&images))]))
+    Ok((given, vec![(Field::Points.key(), run::points_val(&images))]))
 }
 
 /// `window`: the window (and the far one), and the pixels of the points.
@@ -136,7 +137,7 @@ fn window_part<T: Scalar>(w: &WindowIn, rec: &mut Recorder) -> Result<Solved> {
         let on_window = pts.iter().map(|(n, (x, y))| (n, (x, y)));
         let px = run::pixels(&win, (vw, vh), on_window, rec);
         if !px.is_empty() {
-            result.push(("pixels".into(), Val::Map(px)));
+            result.push((Field::Pixels.key(), Val::Map(px)));
         }
     }
     let given = Given::Window(WindowAt {

@@ -26,6 +26,7 @@ use crate::stages::trace::{Name, Step, Val};
 use crate::tutor::check::{agrees, Marker, Settings, Verdict, FOLLOW_THROUGH};
 use crate::tutor::diagnose::Mistake;
 use crate::tutor::generate::{Difficulty, Topic};
+use crate::tutor::key::{Field, Key, Part, Value};
 use crate::tutor::solution::lookup;
 
 /// One value the student is asked for.
@@ -679,16 +680,20 @@ fn figures(x: f64) -> usize {
     mantissa.chars().filter(|c| c.is_ascii_digit()).count()
 }
 
-/// The topic a key belongs to.
+/// The topic a key belongs to (a string that is no answer key: the
+/// pipeline).
 pub fn topic_of(key: &str) -> Topic {
-    match key.split('.').collect::<Vec<_>>()[..] {
-        ["view", "points", ..] => Topic::View,
-        ["view", ..] => Topic::Basis,
-        ["project", ..] => Topic::Project,
-        ["window", ..] => Topic::Window,
-        ["clip", ..] => Topic::Clip,
-        ["shade", ..] => Topic::Shade,
-        _ => Topic::Pipeline,
+    let Ok(k) = key.parse::<Key>() else {
+        return Topic::Pipeline;
+    };
+    match (k.part, k.value) {
+        (Some(Part::View), Value::Point(_) | Value::Field(Field::Points)) => Topic::View,
+        (Some(Part::View), _) => Topic::Basis,
+        (Some(Part::Project), _) => Topic::Project,
+        (Some(Part::Window), _) => Topic::Window,
+        (Some(Part::Clip), _) => Topic::Clip,
+        (Some(Part::Shade), _) => Topic::Shade,
+        (Some(Part::Viewport) | None, _) => Topic::Pipeline,
     }
 }
 

@@ -18,6 +18,7 @@ use crate::stages::projection::{self, Projection};
 use crate::stages::trace::{Recorder, Val};
 use crate::stages::window::{self, Window};
 use crate::tutor::follow;
+use crate::tutor::key::Field;
 use crate::tutor::keys::{basis_result, clip_checked, clip_result, shade_run, window_result};
 use crate::tutor::solution::Tree;
 use nalgebra::Matrix4;
@@ -113,8 +114,8 @@ pub fn view_result<T: Scalar>(
     eye: &[Named<T>],
 ) -> Vec<(String, Val)> {
     let mut r = basis_result(b);
-    r.push(("matrix".into(), Val::mat4(m)));
-    r.push(("points".into(), points_val(eye)));
+    r.push((Field::Matrix.key(), Val::mat4(m)));
+    r.push((Field::Points.key(), points_val(eye)));
     r
 }
 
@@ -151,7 +152,7 @@ pub fn window_run<T: Scalar>(
     if let Some(g) = hooks.givens() {
         follow::window(g, aspect, &mut w);
     }
-    let mut r = window_result(&w, "");
+    let mut r = window_result(&w, false);
     if let Some(f) = far {
         if f <= near {
             let near = near.to_f64().to_string();
@@ -163,7 +164,7 @@ pub fn window_run<T: Scalar>(
         }
         let fw = window::window(fovy, aspect, f, "far", rec)?;
         r.extend(
-            window_result(&fw, "far_")
+            window_result(&fw, true)
                 .into_iter()
                 .filter(|(k, _)| !k.ends_with("height") && !k.ends_with("width")),
         );

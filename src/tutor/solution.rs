@@ -14,6 +14,7 @@ use crate::stages::camera::Camera;
 use crate::stages::clip::ClipBox;
 use crate::stages::projection::Projection;
 use crate::stages::trace::{Recorder, Step, Val};
+use crate::tutor::key::{self, Part};
 
 /// A point or vector of the inputs, as the stages took it (f64 of the
 /// precision's value).
@@ -202,16 +203,25 @@ impl Given {
         }
     }
 
+    /// The part of a problem file it is.
+    pub fn part(&self) -> Part {
+        match self {
+            Given::Basis(_) | Given::View(..) => Part::View,
+            Given::Project { .. } => Part::Project,
+            Given::Window(_) => Part::Window,
+            Given::Clip(_) => Part::Clip,
+            Given::Shade(_) => Part::Shade,
+        }
+    }
+
     /// The part's key in a problem file's results (`view`, `clip`, or
     /// `clip.1` for the second of several segments).
     pub fn key(&self) -> String {
-        match self {
-            Given::Basis(_) | Given::View(..) => "view".into(),
-            Given::Clip(ClipAt {
-                segment: Some(i), ..
-            }) => format!("clip.{i}"),
-            other => other.command().into(),
-        }
+        let segment = match self {
+            Given::Clip(c) => c.segment,
+            _ => None,
+        };
+        key::prefix(self.part(), segment)
     }
 
     /// The part's name in figure files (`view`, `clip-2`).

@@ -18,6 +18,7 @@ use crate::stages::clip::ClipBox;
 use crate::stages::projection::Projection;
 use crate::stages::trace::{Name, Recorder, Step, Subst, Trace, Val};
 use crate::stages::window;
+use crate::tutor::key::{Field, Part};
 use crate::tutor::run::{
     basis_run, clip_run, eye_run, light_run, pixels, points_val, project_run, view_result,
     window_run, Hooks, Named,
@@ -117,7 +118,7 @@ fn view_part<T: Scalar>(
     let b = basis_run(&cam, hooks, rec).map_err(camera_field)?;
     let (m, eye_pts) = eye_run(&b, &cam, points, (hooks, camera_field), rec)?;
     if p.asks("view") {
-        result.push(("view".into(), Val::Map(view_result(&b, &m, &eye_pts))));
+        result.push((Part::View.key(), Val::Map(view_result(&b, &m, &eye_pts))));
         let world = points.iter().map(|(n, q)| (n.clone(), p3(q))).collect();
         parts.push(Given::View(CameraAt::of(&cam), world));
     }
@@ -155,8 +156,8 @@ fn project_part<T: Scalar>(
     proj.validate().map_err(|e| e.in_field("perspective.d"))?;
     let projected = project_run(&proj, eye_pts, hooks, rec)?;
     if p.asks("project") {
-        let r = vec![("points".into(), points_val(&projected))];
-        result.push(("project".into(), Val::Map(r)));
+        let r = vec![(Field::Points.key(), points_val(&projected))];
+        result.push((Part::Project.key(), Val::Map(r)));
         parts.push(Given::Project {
             projection: Given::projection(&proj),
             points: eye_pts
@@ -208,7 +209,7 @@ fn window_part<T: Scalar>(
         point_inside_step(rec, n, q, e, &w, near, far.as_ref());
     }
     if p.asks("window") {
-        result.push(("window".into(), Val::Map(r)));
+        result.push((Part::Window.key(), Val::Map(r)));
         parts.push(Given::Window(WindowAt {
             fovy: at(&fovy),
             aspect: at(&aspect),
@@ -253,8 +254,8 @@ fn viewport_part<T: Scalar>(
     let on_window = projected.iter().map(|(n, q)| (n, (&q[0], &q[1])));
     let px = pixels(w, (&vw, &vh), on_window, rec);
     result.push((
-        "viewport".into(),
-        Val::Map(vec![("pixels".into(), Val::Map(px))]),
+        Part::Viewport.key(),
+        Val::Map(vec![(Field::Pixels.key(), Val::Map(px))]),
     ));
     Ok(())
 }
@@ -293,8 +294,8 @@ fn clip_part<T: Scalar>(
     }
     match all.len() {
         0 => {}
-        1 => result.push(("clip".into(), all.remove(0))),
-        _ => result.push(("clip".into(), Val::List(all))),
+        1 => result.push((Part::Clip.key(), all.remove(0))),
+        _ => result.push((Part::Clip.key(), Val::List(all))),
     }
     Ok(())
 }
@@ -311,7 +312,7 @@ fn shade_part<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>, out: &mut Out) -> Resu
                 light: p.light.clone(),
             };
             let (setup, r) = light_run((sh, &file, "shade."), hooks, rec)?;
-            result.push(("shade".into(), Val::Map(r)));
+            result.push((Part::Shade.key(), Val::Map(r)));
             parts.push(Given::Shade(ShadeAt::of(&setup, None)));
             Ok(())
         }

@@ -18,7 +18,6 @@ pub mod errors;
 mod figure;
 mod id;
 pub mod keys;
-pub mod labels;
 mod msg;
 pub mod names;
 mod pixel;
@@ -65,16 +64,6 @@ pub fn of(lang: Lang) -> &'static dyn Words {
 pub fn words(m: &Msg, lang: Lang) -> String {
     of(lang).msg(m)
 }
-
-/// The planes in `clip::PLANES` order: the English name and the text's.
-pub const PLANE_NAMES: [(&str, &str); 6] = [
-    ("left", "kiri"),
-    ("right", "kanan"),
-    ("bottom", "bawah"),
-    ("top", "atas"),
-    ("front", "depan"),
-    ("back", "belakang"),
-];
 
 /// `message` cut to `MAX_MESSAGE` characters in `lang`
 /// ([`msg::cut_message`]).

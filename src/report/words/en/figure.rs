@@ -4,7 +4,9 @@
 
 use super::En;
 use crate::msg::{FigWord, FigureMsg, Panel};
-use crate::report::words::{figure, FigureWords, PLANE_NAMES};
+use crate::report::words::keys::KeyWords;
+use crate::report::words::{figure, FigureWords};
+use crate::tutor::key::Plane;
 
 impl FigureWords for En {
     fn figure(&self, m: &FigureMsg) -> String {
@@ -23,7 +25,7 @@ impl FigureWords for En {
                 "{name} is not in this plane (it leaves it by {deg}°): drawn in its own plane below"
             ),
             FigureMsg::Plane(bit, eq) => {
-                let name = PLANE_NAMES[(*bit).min(5)].0;
+                let name = self.plane(Plane::ALL[(*bit).min(5)]);
                 match eq {
                     Some(eq) => format!("{eq} ({name})"),
                     None => name.into(),

@@ -7,8 +7,10 @@ use super::En;
 use crate::msg::{Erratum, LightPart, Msg, Printed, SpotZone, Term, Trivial};
 use crate::report::lang::NumStyle;
 use crate::report::words::errors::ErrorWords;
+use crate::report::words::keys::{text_plane, KeyWords};
 use crate::report::words::msg::{self, MsgWords};
-use crate::report::words::{DrawnWords, FigureWords, PixelWords, SaidWords, PLANE_NAMES};
+use crate::report::words::{DrawnWords, FigureWords, PixelWords, SaidWords};
+use crate::tutor::key::Plane;
 
 impl MsgWords for En {
     /// A word table: long on purpose.
@@ -55,8 +57,8 @@ impl MsgWords for En {
             Msg::OutcodeOf(n) => format!("Outcode of {n}"),
             Msg::TrivialTests => "Trivial tests".into(),
             Msg::Intersection(i, plane) => {
-                let (en, id) = PLANE_NAMES[*i % 6];
-                format!("Intersection with the {id} ({en}) plane {plane}")
+                let p = Plane::ALL[*i % 6];
+                format!("Intersection with the {} ({}) plane {plane}", text_plane(p), self.plane(p))
             }
             Msg::ClippedSegment => "Clipped segment".into(),
             Msg::LiangBarsky => "Cross-check by Liang–Barsky".into(),

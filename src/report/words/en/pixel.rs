@@ -2,7 +2,9 @@
 
 use super::En;
 use crate::msg::PixelMsg;
-use crate::report::words::{PixelWords, PLANE_NAMES};
+use crate::report::words::keys::KeyWords;
+use crate::report::words::PixelWords;
+use crate::tutor::key::Plane;
 
 impl PixelWords for En {
     /// A word table: long on purpose.
@@ -20,7 +22,7 @@ impl PixelWords for En {
             PixelMsg::Outcode(n) => format!("Outcode of {n} in clip space"),
             PixelMsg::ClipPlane(b) => format!(
                 "Clipping against the {} plane (bit {})",
-                PLANE_NAMES[(*b).min(5)].0,
+                self.plane(Plane::ALL[(*b).min(5)]),
                 b + 1
             ),
             PixelMsg::Divide(n) => format!("Perspective division of {n}"),

@@ -4,7 +4,9 @@
 
 use super::Id;
 use crate::msg::{FigWord, FigureMsg, Panel};
-use crate::report::words::{figure, FigureWords, PLANE_NAMES};
+use crate::report::words::keys::KeyWords;
+use crate::report::words::{figure, FigureWords};
+use crate::tutor::key::Plane;
 
 impl FigureWords for Id {
     fn figure(&self, m: &FigureMsg) -> String {
@@ -23,7 +25,7 @@ impl FigureWords for Id {
                 "{name} tidak terletak pada bidang ini (menyimpang {deg}°): digambar pada bidangnya sendiri di bawah"
             ),
             FigureMsg::Plane(bit, eq) => {
-                let name = PLANE_NAMES[(*bit).min(5)].1;
+                let name = self.plane(Plane::ALL[(*bit).min(5)]);
                 match eq {
                     Some(eq) => format!("{eq} {name}"),
                     None => name.into(),

@@ -7,8 +7,10 @@ use super::Id;
 use crate::msg::{Erratum, LightPart, Msg, Printed, SpotZone, Term, Trivial};
 use crate::report::lang::NumStyle;
 use crate::report::words::errors::ErrorWords;
+use crate::report::words::keys::KeyWords;
 use crate::report::words::msg::{self, MsgWords};
-use crate::report::words::{DrawnWords, FigureWords, PixelWords, SaidWords, PLANE_NAMES};
+use crate::report::words::{DrawnWords, FigureWords, PixelWords, SaidWords};
+use crate::tutor::key::Plane;
 
 impl MsgWords for Id {
     /// A word table: long on purpose.
@@ -55,7 +57,7 @@ impl MsgWords for Id {
             Msg::ViewportOf(n) => format!("Koordinat viewport titik {n}"),
             Msg::OutcodeOf(n) => format!("Region code titik {n}"),
             Msg::TrivialTests => "Uji trivial dengan operasi logika AND".into(),
-            Msg::Intersection(i, plane) => format!("Titik potong dengan bidang {} {plane}", PLANE_NAMES[*i % 6].1),
+            Msg::Intersection(i, plane) => format!("Titik potong dengan bidang {} {plane}", self.plane(Plane::ALL[*i % 6])),
             Msg::ClippedSegment => "Segmen garis hasil clipping".into(),
             Msg::LiangBarsky => "Pemeriksaan silang dengan Liang–Barsky".into(),
             Msg::MethodsAgree => "Apakah kedua metode sama hasilnya?".into(),

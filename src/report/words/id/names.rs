@@ -5,6 +5,7 @@
 //! on purpose.
 
 use super::Id;
+use crate::report::words::keys::KeyWords;
 use crate::stages::trace::Name;
 
 impl super::super::names::NameWords for Id {
@@ -15,7 +16,7 @@ impl super::super::names::NameWords for Id {
             Name::EyeZ(p) => return format!("z' dari {p}'"),
             Name::Pixel(p) => return format!("piksel {p}"),
             Name::Bit(bit, _) => {
-                let kiri = crate::report::words::PLANE_NAMES[*bit].1;
+                let kiri = self.plane(crate::tutor::key::Plane::ALL[*bit]);
                 return format!("bit {} ({kiri})", bit + 1);
             }
             Name::Vertex(k) => return format!("verteks {k} (X, Y)"),

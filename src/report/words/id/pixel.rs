@@ -2,7 +2,9 @@
 
 use super::Id;
 use crate::msg::PixelMsg;
-use crate::report::words::{PixelWords, PLANE_NAMES};
+use crate::report::words::keys::KeyWords;
+use crate::report::words::PixelWords;
+use crate::tutor::key::Plane;
 
 impl PixelWords for Id {
     /// A word table: long on purpose.
@@ -20,7 +22,7 @@ impl PixelWords for Id {
             PixelMsg::Outcode(n) => format!("Region code titik {n} di ruang clip"),
             PixelMsg::ClipPlane(b) => format!(
                 "Clipping terhadap bidang {} (bit {})",
-                PLANE_NAMES[(*b).min(5)].1,
+                self.plane(Plane::ALL[(*b).min(5)]),
                 b + 1
             ),
             PixelMsg::Divide(n) => format!("Pembagian perspektif titik {n}"),

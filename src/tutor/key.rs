@@ -1,0 +1,690 @@
+//! An answer's key as a typed value: `view.points.A`, `window.far_top`,
+//! `clip[2].intersections.left.t`, `shade.lights[1].attenuation`, or a
+//! calculator command's own key without its part (`top`, `points.A`).
+//!
+//! The keys are a contract (docs/spec.md §3's JSON, answer and problem
+//! files), so each name is spelled in ONE place, [`Node`]'s `Display`;
+//! a [`Key`] is written from its nodes and read back by [`Key::from_str`]
+//! (`clip.2.status` and `clip[2].status` alike). The words people read for
+//! a key are `report::words::keys`, one exhaustive match per language over
+//! these types: a new part's keys are new variants here, and the compiler
+//! then asks for their words.
+
+use crate::stages::clip::PLANE_KEYS;
+use std::fmt;
+use std::str::FromStr;
+
+/// A part of a problem: the first name of a `solve` key.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Part {
+    /// `view`: the camera basis, the view matrix, the eye coordinates.
+    View,
+    /// `project`: the points projected onto the near plane.
+    Project,
+    /// `window`: the viewing window's edges and size.
+    Window,
+    /// `viewport`: the pixels of the projected points.
+    Viewport,
+    /// `clip`: the outcodes, intersections and clipped segment.
+    Clip,
+    /// `shade`: the lighting of one point.
+    Shade,
+}
+
+impl Part {
+    /// Every part, in the order of the text's solution.
+    pub fn all() -> Vec<Part> {
+        every(Part::View, Part::next)
+    }
+
+    /// The part after this one: an exhaustive match, so a new part is
+    /// listed (and read from a key) as soon as it compiles.
+    fn next(self) -> Option<Part> {
+        match self {
+            Part::View => Some(Part::Project),
+            Part::Project => Some(Part::Window),
+            Part::Window => Some(Part::Viewport),
+            Part::Viewport => Some(Part::Clip),
+            Part::Clip => Some(Part::Shade),
+            Part::Shade => None,
+        }
+    }
+}
+
+/// The one after `x` in `all`.
+fn after<T: PartialEq + Copy>(all: &[T], x: T) -> Option<T> {
+    let i = all.iter().position(|y| *y == x)?;
+    all.get(i + 1).copied()
+}
+
+/// `first` and each `next` after it.
+fn every<T: Copy>(first: T, next: fn(T) -> Option<T>) -> Vec<T> {
+    std::iter::successors(Some(first), |x| next(*x)).collect()
+}
+
+/// A camera axis: `u`, `v`, `n`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Axis {
+    /// u, to the right.
+    U,
+    /// v, up in the picture.
+    V,
+    /// n, from the look-at point back to the eye.
+    N,
+}
+
+/// An edge or a size of the viewing window.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Edge {
+    /// `top`, the text's h.
+    Top,
+    /// `bottom` = −top.
+    Bottom,
+    /// `left` = −right.
+    Left,
+    /// `right` = aspect · top.
+    Right,
+    /// `height` = 2 · top.
+    Height,
+    /// `width` = 2 · right.
+    Width,
+}
+
+/// One of the six planes of the clipping box, in outcode bit order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Plane {
+    /// bit 1, x = xmin.
+    Left,
+    /// bit 2, x = xmax.
+    Right,
+    /// bit 3, y = ymin.
+    Bottom,
+    /// bit 4, y = ymax.
+    Top,
+    /// bit 5, z = zmin.
+    Front,
+    /// bit 6, z = zmax.
+    Back,
+}
+
+impl Plane {
+    /// The planes in outcode bit order (bit 1 first).
+    pub const ALL: [Plane; 6] = [
+        Plane::Left,
+        Plane::Right,
+        Plane::Bottom,
+        Plane::Top,
+        Plane::Front,
+        Plane::Back,
+    ];
+
+    /// Its 0-based outcode bit.
+    pub fn bit(self) -> usize {
+        self as usize
+    }
+}
+
+/// What is asked of one tried intersection.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Cut {
+    /// `t`, the segment's parameter at the plane.
+    T,
+    /// `point`, P(t).
+    Point,
+    /// `code`, P(t)'s outcode.
+    Code,
+    /// `kept`, whether P(t) is inside (code 000000).
+    Kept,
+}
+
+/// A value of the lighting.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shading {
+    /// `L`, the unit vector to the light.
+    L,
+    /// `N`, the unit normal.
+    N,
+    /// `cos_alpha` = L·N.
+    CosAlpha,
+    /// `R`, the reflection of L.
+    R,
+    /// `H`, the half-way vector (Blinn–Phong).
+    H,
+    /// `N_dot_H` (Blinn–Phong).
+    NDotH,
+    /// `cos_beta` = R·V.
+    CosBeta,
+    /// `ambient`, the ambient term.
+    Ambient,
+    /// `diffuse`, the diffuse term.
+    Diffuse,
+    /// `specular`, the specular term.
+    Specular,
+    /// `emissive`, the material's own light.
+    Emissive,
+    /// `unclamped`, the sum of the terms.
+    Unclamped,
+    /// `color`, the sum clamped to [0, 1].
+    Color,
+}
+
+impl Shading {
+    /// Every value of the lighting.
+    pub fn all() -> Vec<Shading> {
+        every(Shading::L, Shading::next)
+    }
+
+    /// The value after this one: an exhaustive match, so a new value is
+    /// listed (and read from a key) as soon as it compiles.
+    fn next(self) -> Option<Shading> {
+        use Shading::*;
+        match self {
+            L => Some(N),
+            N => Some(CosAlpha),
+            CosAlpha => Some(R),
+            R => Some(H),
+            H => Some(NDotH),
+            NDotH => Some(CosBeta),
+            CosBeta => Some(Ambient),
+            Ambient => Some(Diffuse),
+            Diffuse => Some(Specular),
+            Specular => Some(Emissive),
+            Emissive => Some(Unclamped),
+            Unclamped => Some(Color),
+            Color => None,
+        }
+    }
+}
+
+/// One light's factors (a light from a file).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Factor {
+    /// `in_range`: d ≤ range.
+    InRange,
+    /// `distance`, d.
+    Distance,
+    /// `attenuation`, Att.
+    Attenuation,
+    /// `spot`, the spot factor.
+    Spot,
+}
+
+/// A name directly inside a part (a calculator command's result key).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Field {
+    /// `u`, `v`, `n`.
+    Axis(Axis),
+    /// `matrix`, the view matrix V.
+    Matrix,
+    /// `points`, the map of named points.
+    Points,
+    /// `pixels`, the map of named pixels.
+    Pixels,
+    /// `top`, …; `far_top`, … (`true`: on the far plane).
+    Edge(Edge, bool),
+    /// `code0`, P0's outcode.
+    Code0,
+    /// `code1`, P1's outcode.
+    Code1,
+    /// `status`: accepted, rejected or clipped.
+    Status,
+    /// `segment`, the clipped segment.
+    Segment,
+    /// `intersections`, the planes tried.
+    Intersections,
+    /// A value of the lighting.
+    Shading(Shading),
+    /// `lights`, each light's factors.
+    Lights,
+}
+
+impl Part {
+    /// Its key in a result tree (`view`, …).
+    pub fn key(self) -> String {
+        Node::Part(self).to_string()
+    }
+}
+
+impl Field {
+    /// Its key in a result tree (`u`, `far_top`, `cos_alpha`, …).
+    pub fn key(self) -> String {
+        Node::Field(self).to_string()
+    }
+
+    /// Every field, each once (the far edges as well as the near).
+    pub fn all() -> Vec<Field> {
+        every(Field::Axis(Axis::U), Field::next)
+    }
+
+    /// The field after this one: an exhaustive match, so a new field is
+    /// listed (and read from a key) as soon as it compiles.
+    fn next(self) -> Option<Field> {
+        use Field::*;
+        Some(match self {
+            Axis(a) => after(&AXES, a).map_or(Matrix, Axis),
+            Matrix => Points,
+            Points => Pixels,
+            Pixels => Edge(EDGES[0], false),
+            Edge(e, far) => match (after(&EDGES, e), far) {
+                (Some(e), _) => Edge(e, far),
+                (None, false) => Edge(EDGES[0], true),
+                (None, true) => Code0,
+            },
+            Code0 => Code1,
+            Code1 => Status,
+            Status => Segment,
+            Segment => Intersections,
+            Intersections => Shading(self::Shading::L),
+            Shading(s) => s.next().map_or(Lights, Shading),
+            Lights => return None,
+        })
+    }
+
+    /// The parts a field belongs to.
+    fn in_part(self, part: Part) -> bool {
+        use Field::*;
+        match self {
+            Axis(_) | Matrix => part == Part::View,
+            Points => matches!(part, Part::View | Part::Project),
+            Pixels => part == Part::Viewport,
+            Edge(..) => part == Part::Window,
+            Code0 | Code1 | Status | Segment | Intersections => part == Part::Clip,
+            Shading(_) | Lights => part == Part::Shade,
+        }
+    }
+}
+
+const AXES: [Axis; 3] = [Axis::U, Axis::V, Axis::N];
+
+const EDGES: [Edge; 6] = [
+    Edge::Top,
+    Edge::Bottom,
+    Edge::Left,
+    Edge::Right,
+    Edge::Height,
+    Edge::Width,
+];
+
+const CUTS: [Cut; 4] = [Cut::T, Cut::Point, Cut::Code, Cut::Kept];
+
+const FACTORS: [Factor; 4] = [
+    Factor::InRange,
+    Factor::Distance,
+    Factor::Attenuation,
+    Factor::Spot,
+];
+
+/// One name of a result tree, read with the name it is under: a part, a
+/// field of a part, a point's own name (under `points`, `pixels`), a plane
+/// (under `intersections`), what is asked of an intersection (under a
+/// plane), a light's factor (under `lights`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Node {
+    /// `view`, …
+    Part(Part),
+    /// `u`, `top`, `code0`, `color`, …
+    Field(Field),
+    /// `A`: a point's name, as its problem or flag gives it.
+    Point(String),
+    /// `left`, …
+    Plane(Plane),
+    /// `t`, `point`, `code`, `kept`.
+    Cut(Cut),
+    /// `in_range`, `distance`, `attenuation`, `spot`.
+    Factor(Factor),
+}
+
+impl fmt::Display for Node {
+    /// The spelling of every name of every key: the one place it is written.
+    fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        use Shading as S;
+        let s = match self {
+            Node::Part(p) => match p {
+                Part::View => "view",
+                Part::Project => "project",
+                Part::Window => "window",
+                Part::Viewport => "viewport",
+                Part::Clip => "clip",
+                Part::Shade => "shade",
+            },
+            Node::Field(field) => match field {
+                Field::Axis(Axis::U) => "u",
+                Field::Axis(Axis::V) => "v",
+                Field::Axis(Axis::N) => "n",
+                Field::Matrix => "matrix",
+                Field::Points => "points",
+                Field::Pixels => "pixels",
+                Field::Edge(e, far) => {
+                    let edge = match e {
+                        Edge::Top => "top",
+                        Edge::Bottom => "bottom",
+                        Edge::Left => "left",
+                        Edge::Right => "right",
+                        Edge::Height => "height",
+                        Edge::Width => "width",
+                    };
+                    return write!(f, "{}{edge}", if *far { "far_" } else { "" });
+                }
+                Field::Code0 => "code0",
+                Field::Code1 => "code1",
+                Field::Status => "status",
+                Field::Segment => "segment",
+                Field::Intersections => "intersections",
+                Field::Shading(s) => match s {
+                    S::L => "L",
+                    S::N => "N",
+                    S::CosAlpha => "cos_alpha",
+                    S::R => "R",
+                    S::H => "H",
+                    S::NDotH => "N_dot_H",
+                    S::CosBeta => "cos_beta",
+                    S::Ambient => "ambient",
+                    S::Diffuse => "diffuse",
+                    S::Specular => "specular",
+                    S::Emissive => "emissive",
+                    S::Unclamped => "unclamped",
+                    S::Color => "color",
+                },
+                Field::Lights => "lights",
+            },
+            Node::Point(name) => name,
+            Node::Plane(p) => PLANE_KEYS[p.bit()],
+            Node::Cut(c) => match c {
+                Cut::T => "t",
+                Cut::Point => "point",
+                Cut::Code => "code",
+                Cut::Kept => "kept",
+            },
+            Node::Factor(x) => match x {
+                Factor::InRange => "in_range",
+                Factor::Distance => "distance",
+                Factor::Attenuation => "attenuation",
+                Factor::Spot => "spot",
+            },
+        };
+        f.write_str(s)
+    }
+}
+
+impl Cut {
+    /// Its key in a result tree (`t`, …).
+    pub fn key(self) -> String {
+        Node::Cut(self).to_string()
+    }
+}
+
+impl Factor {
+    /// Its key in a result tree (`in_range`, …).
+    pub fn key(self) -> String {
+        Node::Factor(self).to_string()
+    }
+}
+
+impl Node {
+    /// The name `s` under `under` (`None`: at the top of a result, a part
+    /// or a calculator command's field); `None` if no key has it there.
+    pub fn read(s: &str, under: Option<&Node>) -> Option<Node> {
+        let one = |cands: Vec<Node>| cands.into_iter().find(|n| n.to_string() == s);
+        match under {
+            None => one(Part::all().into_iter().map(Node::Part).collect())
+                .or_else(|| one(Field::all().into_iter().map(Node::Field).collect())),
+            Some(Node::Part(p)) => one((Field::all().into_iter())
+                .filter(|f| f.in_part(*p))
+                .map(Node::Field)
+                .collect()),
+            Some(Node::Field(Field::Points | Field::Pixels)) => {
+                (!s.is_empty()).then(|| Node::Point(s.to_string()))
+            }
+            Some(Node::Field(Field::Intersections)) => one(Plane::ALL.map(Node::Plane).to_vec()),
+            Some(Node::Plane(_)) => one(CUTS.map(Node::Cut).to_vec()),
+            Some(Node::Field(Field::Lights)) => one(FACTORS.map(Node::Factor).to_vec()),
+            Some(_) => None,
+        }
+    }
+}
+
+/// What a key names inside its part.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Value {
+    /// A field: `n`, `matrix`, `points` (the whole map), `status`, …
+    Field(Field),
+    /// `points.A`.
+    Point(String),
+    /// `pixels.A`.
+    Pixel(String),
+    /// `intersections.left` (all that is asked of it).
+    Plane(Plane),
+    /// `intersections.left.t`, …
+    Cut(Plane, Cut),
+    /// `lights.1`: one light's factors (the index as written).
+    Light(usize),
+    /// `lights.1.attenuation`, …
+    Factor(usize, Factor),
+}
+
+/// An answer's key: its part (none for a calculator command's own keys),
+/// the segment of a clip with several (the index as written: `clip.0` in
+/// the result tree, `clip[1]` numbered for people), and the value.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Key {
+    /// `view`, …; `None` for a calculator command's key (`top`).
+    pub part: Option<Part>,
+    /// The segment of a clip problem with several.
+    pub segment: Option<usize>,
+    /// What is named inside the part.
+    pub value: Value,
+}
+
+impl Key {
+    /// `part.value`, one segment or none.
+    pub fn new(part: Part, value: Value) -> Key {
+        Key {
+            part: Some(part),
+            segment: None,
+            value,
+        }
+    }
+
+    /// This key for segment `i` of a clip problem.
+    pub fn of_segment(self, i: Option<usize>) -> Key {
+        Key { segment: i, ..self }
+    }
+}
+
+/// A part's key with the segment of a clip with several: `view`,
+/// `clip.1` (the start of its answers' keys).
+pub fn prefix(part: Part, segment: Option<usize>) -> String {
+    match segment {
+        Some(i) => format!("{}.{i}", Node::Part(part)),
+        None => part.key(),
+    }
+}
+
+impl fmt::Display for Key {
+    /// The key as the result tree spells it: `clip.2.intersections.left.t`,
+    /// `shade.lights.0.attenuation`.
+    fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        if let Some(p) = self.part {
+            write!(f, "{}.", prefix(p, self.segment))?;
+        }
+        let field = |x| Node::Field(x);
+        match &self.value {
+            Value::Field(x) => write!(f, "{}", field(*x)),
+            Value::Point(n) => write!(f, "{}.{n}", field(Field::Points)),
+            Value::Pixel(n) => write!(f, "{}.{n}", field(Field::Pixels)),
+            Value::Plane(p) => write!(f, "{}.{}", field(Field::Intersections), Node::Plane(*p)),
+            Value::Cut(p, c) => write!(
+                f,
+                "{}.{}.{}",
+                field(Field::Intersections),
+                Node::Plane(*p),
+                Node::Cut(*c)
+            ),
+            Value::Light(i) => write!(f, "{}.{i}", field(Field::Lights)),
+            Value::Factor(i, x) => write!(f, "{}.{i}.{}", field(Field::Lights), Node::Factor(*x)),
+        }
+    }
+}
+
+/// A string that is no answer key.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct NotAKey;
+
+impl FromStr for Key {
+    type Err = NotAKey;
+
+    /// Reads `clip.2.intersections.left.t` and `clip[2].intersections.left.t`
+    /// alike (an index after a name or as a name of its own), and a
+    /// calculator command's keys without their part (`top`, `points.A`).
+    fn from_str(s: &str) -> Result<Key, NotAKey> {
+        let mut nodes: Vec<Node> = Vec::new();
+        let (mut segment, mut light) = (None, None);
+        for name in s.split('.') {
+            let (name, index) = match name.split_once('[') {
+                Some((n, i)) => {
+                    let i = i.strip_suffix(']').and_then(|i| i.parse().ok());
+                    (n, Some(i.ok_or(NotAKey)?))
+                }
+                None => match name.parse::<usize>() {
+                    Ok(i) => ("", Some(i)),
+                    Err(_) if name.is_empty() => return Err(NotAKey),
+                    Err(_) => (name, None),
+                },
+            };
+            if !name.is_empty() {
+                nodes.push(Node::read(name, nodes.last()).ok_or(NotAKey)?);
+            }
+            if let Some(i) = index {
+                let slot = match nodes.last() {
+                    Some(Node::Part(Part::Clip)) if segment.is_none() => &mut segment,
+                    Some(Node::Field(Field::Lights)) if light.is_none() => &mut light,
+                    _ => return Err(NotAKey),
+                };
+                *slot = Some(i);
+            }
+        }
+        key_of(&nodes, segment, light)
+    }
+}
+
+/// The key of the names read, with the indices they carried.
+fn key_of(nodes: &[Node], segment: Option<usize>, light: Option<usize>) -> Result<Key, NotAKey> {
+    let (part, rest) = match nodes {
+        [Node::Part(p), rest @ ..] => (Some(*p), rest),
+        rest => (None, rest),
+    };
+    let value = match (rest, light) {
+        ([Node::Field(Field::Lights)], Some(i)) => Value::Light(i),
+        ([Node::Field(Field::Lights), Node::Factor(x)], Some(i)) => Value::Factor(i, *x),
+        (_, Some(_)) => return Err(NotAKey),
+        ([Node::Field(f)], None) => Value::Field(*f),
+        ([Node::Field(Field::Points), Node::Point(n)], None) => Value::Point(n.clone()),
+        ([Node::Field(Field::Pixels), Node::Point(n)], None) => Value::Pixel(n.clone()),
+        ([Node::Field(Field::Intersections), Node::Plane(p)], None) => Value::Plane(*p),
+        ([_, Node::Plane(p), Node::Cut(c)], None) => Value::Cut(*p, *c),
+        _ => return Err(NotAKey),
+    };
+    Ok(Key {
+        part,
+        segment,
+        value,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn key(s: &str) -> Key {
+        s.parse().unwrap_or_else(|_| panic!("{s} is a key"))
+    }
+
+    #[test]
+    fn keys_are_read_in_both_spellings_of_a_segment() {
+        let t = Key::new(Part::Clip, Value::Cut(Plane::Left, Cut::T)).of_segment(Some(2));
+        assert_eq!(key("clip.2.intersections.left.t"), t);
+        assert_eq!(key("clip[2].intersections.left.t"), t);
+        assert_eq!(t.to_string(), "clip.2.intersections.left.t");
+        let att = key("shade.lights[1].attenuation");
+        assert_eq!(
+            att,
+            Key::new(Part::Shade, Value::Factor(1, Factor::Attenuation))
+        );
+        assert_eq!(att.to_string(), "shade.lights.1.attenuation");
+    }
+
+    #[test]
+    fn every_spelling_reads_back_to_its_key() {
+        let spelled = [
+            "view.u",
+            "view.n",
+            "view.matrix",
+            "view.points",
+            "view.points.A",
+            "project.points.P0",
+            "window.top",
+            "window.far_width",
+            "viewport.pixels.B",
+            "clip.code0",
+            "clip.status",
+            "clip.segment",
+            "clip.intersections.back",
+            "clip.0.intersections.front.kept",
+            "shade.N_dot_H",
+            "shade.cos_alpha",
+            "shade.color",
+            "shade.lights.0",
+            "shade.lights.2.in_range",
+            "top",
+            "far_bottom",
+            "points.A",
+            "intersections.top.point",
+            "lights.0.spot",
+        ];
+        for s in spelled {
+            assert_eq!(key(s).to_string(), s);
+        }
+    }
+
+    #[test]
+    fn names_that_are_no_key_are_refused() {
+        for s in [
+            "",
+            "view.top",
+            "view.2.n",
+            "window.far_",
+            "clip.intersections.middle.t",
+            "clip.intersections.left.x",
+            "clip[x].status",
+            "clip[1",
+            "clip.1.2.status",
+            "shade.lights.attenuation",
+            "shade.cos",
+            "view.points.",
+            "View.n",
+        ] {
+            assert_eq!(s.parse::<Key>(), Err(NotAKey), "{s}");
+        }
+    }
+
+    #[test]
+    fn every_field_is_listed_once() {
+        // 3 axes, matrix, points, pixels, 6 + 6 window edges, code0, code1,
+        // status, segment, intersections, 13 lighting values, lights
+        let all: Vec<String> = Field::all().into_iter().map(Field::key).collect();
+        assert_eq!(all.len(), 37);
+        let mut once = all.clone();
+        once.sort();
+        once.dedup();
+        assert_eq!(once.len(), all.len(), "{all:?}");
+        assert_eq!(Part::all().len(), 6);
+    }
+
+    #[test]
+    fn a_planes_spelling_is_its_outcode_bits_key() {
+        for (bit, p) in Plane::ALL.iter().enumerate() {
+            assert_eq!(p.bit(), bit);
+            assert_eq!(Node::Plane(*p).to_string(), PLANE_KEYS[bit]);
+        }
+    }
+}
