@@ -14,6 +14,7 @@ mod figure;
 pub mod lang;
 mod pixel;
 mod render;
+mod report;
 mod said;
 pub use drawn::{CameraText, DrawnTitle, ShadeAsked, Statement};
 pub use errors::{Bound, ClapErr, ErrMsg, IoWhy, NumErr, Thing, TomlErr, Twice, Want};
@@ -21,6 +22,7 @@ pub use figure::{FigWord, FigureMsg, Panel};
 pub use lang::Lang;
 pub use pixel::PixelMsg;
 pub use render::{PerPixel, Summary};
+pub use report::ClassWord;
 pub use said::Said;
 
 /// A term of the lighting sum.

@@ -8,41 +8,21 @@ mod page;
 
 use crate::error::Error;
 use crate::report::check::to_json;
-use crate::report::lang::{cut_message, tr, Lang};
+use crate::msg::ClassWord as C;
+use crate::report::lang::{cut_message, Lang};
+use crate::report::words;
 use crate::tutor::check::{Marking, Verdict};
 use crate::tutor::class::{Class, Note, Sheet, Skip};
 use serde_json::{json, Value};
 
 /// What was done with an unusual answer file, in words.
 pub fn note_words(n: Note, lang: Lang) -> &'static str {
-    match n {
-        Note::Empty => tr(
-            lang,
-            "holds no answers: marked with every answer missing",
-            "tidak berisi jawaban: dinilai dengan semua jawaban kosong",
-        ),
-        Note::NotMarked => tr(
-            lang,
-            "not marked: the file is not a valid answer file (see the error in its row)",
-            "tidak dinilai: berkas ini bukan berkas jawaban yang sah (lihat galat di barisnya)",
-        ),
-    }
+    words::of(lang).note(n)
 }
 
 /// Why an entry of the answers folder was skipped, in words.
 pub fn skip_words(s: Skip, lang: Lang) -> &'static str {
-    match s {
-        Skip::Subdirectory => tr(
-            lang,
-            "skipped: a subdirectory (its files are not read)",
-            "dilewati: subdirektori (berkas di dalamnya tidak dibaca)",
-        ),
-        Skip::NotToml => tr(
-            lang,
-            "skipped: not a .toml file",
-            "dilewati: bukan berkas .toml",
-        ),
-    }
+    words::of(lang).skip(s)
 }
 
 /// An error as a person reads it: `field: words`, cut when long.
@@ -82,33 +62,21 @@ fn counts(ms: &[(String, Marking)]) -> (f64, usize, [usize; 6]) {
 }
 
 /// The headings of a class's table (`check --answers DIR`), one per column.
-pub fn class_header(lang: Lang) -> Vec<&'static str> {
-    let en = [
-        "student",
-        "score",
-        "correct",
-        "too coarse",
-        "wrong",
-        "missing",
-        "unparseable",
-        "follow-through",
-        "mistakes",
-    ];
-    let id = [
-        "mahasiswa",
-        "nilai",
-        "benar",
-        "terlalu kasar",
-        "salah",
-        "tidak dijawab",
-        "tidak terbaca",
-        "follow-through",
-        "kesalahan konsep",
-    ];
-    match lang {
-        Lang::En => en.to_vec(),
-        Lang::Id => id.to_vec(),
-    }
+pub fn class_header(lang: Lang) -> Vec<String> {
+    [
+        C::Student,
+        C::Score,
+        C::Correct,
+        C::TooCoarse,
+        C::Wrong,
+        C::Missing,
+        C::Unparseable,
+        C::FollowThrough,
+        C::Mistakes,
+    ]
+    .iter()
+    .map(|k| words::of(lang).class(k))
+    .collect()
 }
 
 /// One row per student, then the notes on unusual files and the entries
@@ -117,7 +85,7 @@ pub fn table(class: &Class, lang: Lang) -> String {
     use comfy_table::{presets, Table};
     let mut header = class_header(lang);
     if class.exam {
-        header.insert(1, tr(lang, "variant", "varian"));
+        header.insert(1, words::of(lang).class(&C::Variant));
     }
     let mut t = Table::new();
     t.load_preset(presets::UTF8_FULL_CONDENSED)
@@ -139,7 +107,7 @@ pub fn table(class: &Class, lang: Lang) -> String {
                 cells.extend(std::iter::repeat_n(String::new(), 6));
                 cells.push(format!(
                     "{}: {}",
-                    tr(lang, "error", "kesalahan"),
+                    words::of(lang).class(&C::Error),
                     said(e, lang)
                 ));
             }

@@ -1,4 +1,28 @@
-//! The words of the report writers' own headings, columns and notes (class report, practice, check, Moodle, GIFT, …).
+//! The words of the report writers' own headings, columns and notes (class
+//! report, practice, check, Moodle, GIFT, …): one method per writer's key
+//! enum (`crate::msg::report`), and per tutor enum a writer names, each one
+//! exhaustive match in every language. The language-neutral parts (a
+//! number written in a language's style) are plain functions here.
 
-/// The words of the report writers' own headings, columns and notes (class report, practice, check, Moodle, GIFT, …).
-pub trait ReportWords {}
+use crate::msg::ClassWord;
+use crate::num::format::fmt_dec;
+use crate::report::lang::NumStyle;
+use crate::tutor::class::stats::Flag;
+use crate::tutor::class::{Note, Skip};
+
+/// The words of the report writers' own headings, columns and notes.
+pub trait ReportWords {
+    /// A word of the class report.
+    fn class(&self, w: &ClassWord) -> String;
+    /// What was done with an unusual answer file.
+    fn note(&self, n: Note) -> &'static str;
+    /// Why an entry of the answers folder was skipped.
+    fn skip(&self, s: Skip) -> &'static str;
+    /// A flag on a key of the class report.
+    fn flag(&self, f: Flag) -> &'static str;
+}
+
+/// `x` with at most `digits` decimals, in `style`: `0.5` or `0,5`.
+pub fn dec(x: f64, digits: usize, style: NumStyle) -> String {
+    style.number(&fmt_dec(x, digits))
+}

@@ -1,0 +1,122 @@
+//! The report writers' own words as typed keys, one enum per writer: the
+//! headings, column names and sentences the writers (class report,
+//! practice, check, Moodle, GIFT, …) put around the steps and values. Their
+//! words are in report/words/{en,id}/report.rs; numbers travel as numbers
+//! and are written through `NumStyle` there.
+
+/// A word of the class report (`check --answers DIR`, `--report`): the
+/// text table's columns, the lecturer's document's headings, columns and
+/// sentences, the histogram's labels.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ClassWord {
+    /// The report's title, before the class's title.
+    ClassReport,
+    /// Column: one student.
+    Student,
+    /// Column: several students (also the histogram's count axis).
+    Students,
+    /// Column: a student's score.
+    Score,
+    /// Column: answers correct.
+    Correct,
+    /// Column: answers marked by follow-through.
+    FollowThrough,
+    /// Column: answers rounded too coarsely.
+    TooCoarse,
+    /// Column: wrong answers.
+    Wrong,
+    /// Column: answers missing.
+    Missing,
+    /// Column: answers that could not be read.
+    Unparseable,
+    /// Column: the mistakes' codes.
+    Mistakes,
+    /// Column: one mistake.
+    Mistake,
+    /// Column: an exam's variant.
+    Variant,
+    /// Before a sheet's error in its row.
+    Error,
+    /// Column: an answer key.
+    Key,
+    /// Column: the flags of a key.
+    Flag,
+    /// Column: an exam's problem.
+    Problem,
+    /// Column: a problem's title.
+    Title,
+    /// Column: a problem's facility.
+    Facility,
+    /// Column: a variant's facility over the whole exam.
+    WholeExam,
+    /// Column: the value the key expects.
+    Expected,
+    /// Column: the value students gave.
+    Given,
+    /// A variant below its siblings.
+    Harder,
+    /// A variant above its siblings.
+    Easier,
+    /// Heading: the key table.
+    AnswerKeys,
+    /// Heading: per problem.
+    Problems,
+    /// Heading: per variant.
+    Variants,
+    /// Heading: the mistakes.
+    MistakesHeading,
+    /// Heading: the wrong answers no mistake explains.
+    WrongHeading,
+    /// Heading: the students.
+    StudentsHeading,
+    /// Heading: who made which mistake.
+    WhoWhich,
+    /// Heading: the scores.
+    Scores,
+    /// The summary's sentence.
+    Summary {
+        /// Students marked.
+        students: usize,
+        /// The tolerance, in per cent.
+        tolerance_pct: f64,
+        /// The least number of significant figures.
+        sig_figs: u32,
+        /// Whether follow-through marks are given.
+        follow_through: bool,
+    },
+    /// Before the list of the sheets not marked.
+    NotMarked,
+    /// The definitions of the key table's columns and indices.
+    Definitions,
+    /// What a variant table's cell holds.
+    VariantsNote,
+    /// No mistake explains a wrong answer.
+    NoMistake,
+    /// How the wrong answers are counted.
+    WrongNote,
+    /// An empty section.
+    NoneFound,
+    /// `n student(s)`'s word.
+    StudentCount(usize),
+    /// Before the keys a mistake explains.
+    Explains,
+    /// Before the step to teach again.
+    TeachAgain,
+    /// Before the other mistakes giving the same values.
+    AlsoFollow,
+    /// `problem-02, step 3 of the worked solution: Title`.
+    StepOf {
+        /// The problem's name and `, `, or nothing.
+        part: String,
+        /// The step's number.
+        number: usize,
+        /// The step's title, in words.
+        title: String,
+    },
+    /// The histogram's caption in the HTML report.
+    DistributionPct,
+    /// The histogram's title.
+    Distribution,
+    /// The histogram's horizontal axis.
+    ScoreAxis,
+}
