@@ -120,3 +120,81 @@ pub enum ClassWord {
     /// The histogram's horizontal axis.
     ScoreAxis,
 }
+
+/// A word of `grafika practice` for people: the session's heading, the
+/// verdicts, hints, the shape of an answer, the summary's headings.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PracticeWord {
+    /// The session's first line.
+    Title {
+        /// The problem's title.
+        title: String,
+        /// How many values are asked.
+        values: usize,
+        /// The seed of a drawn problem.
+        seed: Option<u64>,
+    },
+    /// How to answer, and the commands.
+    HowToAnswer,
+    /// Before the answer shown.
+    Answer,
+    /// A value skipped.
+    Skipped,
+    /// An empty line was typed.
+    AgainEmpty,
+    /// `back` on the first value.
+    FirstValue,
+    /// `hint` after the last hint.
+    NoMoreHints,
+    /// Verdict: exactly right.
+    Exact,
+    /// Verdict: right within the tolerance.
+    Tolerance,
+    /// Verdict: right, rounded.
+    Rounded,
+    /// Verdict: right given the earlier answers.
+    FollowThrough,
+    /// Verdict: rounded too coarsely.
+    TooCoarse,
+    /// Verdict: wrong.
+    Wrong,
+    /// Verdict: the answer could not be read.
+    Unreadable {
+        /// Why, with its leading space and `;`, or nothing.
+        why: String,
+        /// The shape to write.
+        how: String,
+    },
+    /// Before how an answer was read.
+    ReadAs,
+    /// A second try, counted apart.
+    SecondTry,
+    /// Before a mistake that explains the answer.
+    LikelyMistake,
+    /// Before why the source's printed value is wrong.
+    SourceWrong,
+    /// No mistake explains a wrong answer.
+    NoMistakeTip,
+    /// A value without a hint.
+    NoHint,
+    /// The first hint: the step's title.
+    Hint1(String),
+    /// The second hint's heading.
+    Hint2,
+    /// The second hint of a step without values.
+    NoValues,
+    /// The summary's mistakes' heading.
+    MistakesMade,
+    /// Before the command to practise next.
+    PractiseNext,
+    /// The shape of a clipped segment.
+    SegmentShape,
+    /// The shape of an outcode.
+    BitsShape,
+    /// The shape of a matrix.
+    MatrixShape,
+    /// The shape of a number.
+    NumberShape,
+    /// The shape of a list of `n` values.
+    ValuesShape(usize),
+}

@@ -4,11 +4,12 @@
 //! exhaustive match in every language. The language-neutral parts (a
 //! number written in a language's style) are plain functions here.
 
-use crate::msg::ClassWord;
+use crate::msg::{ClassWord, PracticeWord};
 use crate::num::format::fmt_dec;
 use crate::report::lang::NumStyle;
 use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
+use crate::tutor::practice::Summary;
 
 /// The words of the report writers' own headings, columns and notes.
 pub trait ReportWords {
@@ -20,6 +21,11 @@ pub trait ReportWords {
     fn skip(&self, s: Skip) -> &'static str;
     /// A flag on a key of the class report.
     fn flag(&self, f: Flag) -> &'static str;
+    /// A word of `grafika practice`.
+    fn practice(&self, w: &PracticeWord) -> String;
+    /// A practice session's summary: the points, the counts, the second
+    /// tries (each line ends with a newline).
+    fn practice_summary(&self, s: &Summary) -> String;
 }
 
 /// `x` with at most `digits` decimals, in `style`: `0.5` or `0,5`.

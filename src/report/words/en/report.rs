@@ -4,10 +4,12 @@
 
 use super::En;
 use crate::msg::ClassWord as C;
+use crate::msg::PracticeWord as P;
 use crate::report::lang::NumStyle;
 use crate::report::words::report::{dec, ReportWords};
 use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
+use crate::tutor::practice::Summary;
 
 impl ReportWords for En {
     fn class(&self, w: &C) -> String {
@@ -105,5 +107,68 @@ impl ReportWords for En {
             Flag::VeryHard => "very hard",
             Flag::Negative => "negative",
         }
+    }
+
+    fn practice(&self, w: &P) -> String {
+        match w {
+            P::Title {
+                title,
+                values,
+                seed: Some(s),
+            } => format!("Practice: {title} ({values} values, seed {s})"),
+            P::Title {
+                title,
+                values,
+                seed: None,
+            } => format!("Practice: {title} ({values} values)"),
+            P::HowToAnswer => "Answer each value when asked. Numbers: 0.8, 4/5, sqrt(2)/2; points: \
+                 (x, y, z). With decimal commas, separate the parts by ; (0,8; 0,6; 0). \
+                 Commands: hint, show, skip, back, quit.".into(),
+            P::Answer => "Answer".into(),
+            P::Skipped => "Skipped.".into(),
+            P::AgainEmpty => "Type an answer, or a command: hint, show, skip, back, quit.".into(),
+            P::FirstValue => "This is the first value: there is nothing to go back to.".into(),
+            P::NoMoreHints => "No more hints: type show to see the step worked out.".into(),
+            P::Exact => "✓ correct".into(),
+            P::Tolerance => "✓ correct (within the tolerance)".into(),
+            P::Rounded => "✓ correct (rounded)".into(),
+            P::FollowThrough => "✓ correct given your earlier answers (follow-through)".into(),
+            P::TooCoarse => "½ right, but rounded too coarsely: write more significant figures".into(),
+            P::Wrong => "✗ wrong".into(),
+            P::Unreadable { why, how } => {
+                format!("✗ cannot read this answer:{why} write {how}, or a command")
+            }
+            P::ReadAs => "read as".into(),
+            P::SecondTry => "(a second try: shown, and counted apart; the first verdict stands for the score)".into(),
+            P::LikelyMistake => "Likely mistake".into(),
+            P::SourceWrong => "The source printed this, and it is wrong".into(),
+            P::NoMistakeTip => "No known mistake explains this answer. Type back to try this value again (hint and show help there).".into(),
+            P::NoHint => "No hint for this value.".into(),
+            P::Hint1(title) => format!("Hint 1: {title}"),
+            P::Hint2 => "Hint 2: the values to substitute (the last step is yours)".into(),
+            P::NoValues => "(every value of this step would give the answer away: substitute the problem's own numbers, or type show)".into(),
+            P::MistakesMade => "Mistakes made:".into(),
+            P::PractiseNext => "Practise next".into(),
+            P::SegmentShape => "(x0, y0, z0); (x1, y1, z1), or none".into(),
+            P::BitsShape => "6 bits, bit 1 rightmost".into(),
+            P::MatrixShape => "4 rows (a, b, c, d); (…); …".into(),
+            P::NumberShape => "a number".into(),
+            P::ValuesShape(n) => format!("({n} values)"),
+        }
+    }
+
+    fn practice_summary(&self, s: &Summary) -> String {
+        let pts = dec(s.points, 4, NumStyle::POINT);
+        let mut out = format!(
+            "Summary: {pts}/{} points\n  correct {} ({} by follow-through), too coarse {}, wrong {},\n  skipped {}, revealed {}, not reached {}; hints used {}\n",
+            s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
+        );
+        if s.retries > 0 {
+            out.push_str(&format!(
+                "  second tries {} ({} right), not in the score\n",
+                s.retries, s.retries_correct
+            ));
+        }
+        out
     }
 }

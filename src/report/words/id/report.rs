@@ -4,10 +4,12 @@
 
 use super::Id;
 use crate::msg::ClassWord as C;
+use crate::msg::PracticeWord as P;
 use crate::report::lang::NumStyle;
 use crate::report::words::report::{dec, ReportWords};
 use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
+use crate::tutor::practice::Summary;
 
 impl ReportWords for Id {
     fn class(&self, w: &C) -> String {
@@ -104,5 +106,69 @@ impl ReportWords for Id {
             Flag::VeryHard => "sangat sulit",
             Flag::Negative => "negatif",
         }
+    }
+
+    fn practice(&self, w: &P) -> String {
+        match w {
+            P::Title {
+                title,
+                values,
+                seed: Some(s),
+            } => format!("Latihan: {title} ({values} nilai, seed {s})"),
+            P::Title {
+                title,
+                values,
+                seed: None,
+            } => format!("Latihan: {title} ({values} nilai)"),
+            P::HowToAnswer => "Jawab setiap nilai yang ditanyakan. Angka: 0,8, 4/5, sqrt(2)/2; titik: \
+                 (x, y, z). Dengan koma desimal, pisahkan komponen dengan ; (0,8; 0,6; 0). \
+                 Perintah: hint (petunjuk), show (lihat), skip (lewati), back (kembali), \
+                 quit (keluar).".into(),
+            P::Answer => "Jawaban".into(),
+            P::Skipped => "Dilewati.".into(),
+            P::AgainEmpty => "Ketik jawaban, atau perintah: hint, show, skip, back, quit.".into(),
+            P::FirstValue => "Ini nilai pertama: tidak ada langkah sebelumnya.".into(),
+            P::NoMoreHints => "Petunjuk sudah habis: ketik show untuk melihat langkahnya.".into(),
+            P::Exact => "✓ benar".into(),
+            P::Tolerance => "✓ benar (dalam toleransi)".into(),
+            P::Rounded => "✓ benar (dibulatkan)".into(),
+            P::FollowThrough => "✓ benar menurut jawabanmu sebelumnya (follow-through)".into(),
+            P::TooCoarse => "½ benar, tetapi pembulatannya terlalu kasar: tulis lebih banyak angka penting".into(),
+            P::Wrong => "✗ salah".into(),
+            P::Unreadable { why, how } => {
+                format!("✗ jawaban ini tidak terbaca:{why} tulis {how}, atau sebuah perintah")
+            }
+            P::ReadAs => "dibaca sebagai".into(),
+            P::SecondTry => "(percobaan kedua: ditampilkan dan dihitung terpisah; penilaian pertama yang dipakai untuk nilai)".into(),
+            P::LikelyMistake => "Kemungkinan kesalahan".into(),
+            P::SourceWrong => "Sumber mencetak nilai ini, dan nilai itu salah".into(),
+            P::NoMistakeTip => "Tidak ada kesalahan yang dikenal yang menjelaskan jawaban ini. Ketik back untuk mencoba nilai ini lagi (hint dan show membantu di sana).".into(),
+            P::NoHint => "Tidak ada petunjuk untuk nilai ini.".into(),
+            P::Hint1(title) => format!("Petunjuk 1: {title}"),
+            P::Hint2 => "Petunjuk 2: nilai-nilai yang disubstitusikan (langkah terakhir milikmu)".into(),
+            P::NoValues => "(setiap nilai langkah ini akan membocorkan jawabannya: substitusikan bilangan dari soal, atau ketik show)".into(),
+            P::MistakesMade => "Kesalahan yang dibuat:".into(),
+            P::PractiseNext => "Latihan berikutnya".into(),
+            P::SegmentShape => "(x0, y0, z0); (x1, y1, z1), atau none".into(),
+            P::BitsShape => "6 bit, bit 1 paling kanan".into(),
+            P::MatrixShape => "4 baris (a; b; c; d); (…); …".into(),
+            P::NumberShape => "sebuah bilangan".into(),
+            P::ValuesShape(n) => format!("({n} nilai)"),
+        }
+    }
+
+    fn practice_summary(&self, s: &Summary) -> String {
+        let pts = dec(s.points, 4, NumStyle::COMMA);
+        let mut out = format!(
+            "Ringkasan: {pts}/{} poin\n  benar {} ({} karena follow-through), terlalu kasar {}, salah {},\n  dilewati {}, dilihat {}, belum dijawab {}; petunjuk dipakai {}\n",
+            s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
+        );
+        if s.retries > 0 {
+            out.push_str(&format!(
+                "  percobaan kedua {} ({} benar), tidak masuk nilai\n",
+                s.retries, s.retries_correct
+            ));
+        }
+        out
     }
 }
