@@ -17,18 +17,8 @@ pub enum ClassWord {
     Students,
     /// Column: a student's score.
     Score,
-    /// Column: answers correct.
-    Correct,
     /// Column: answers marked by follow-through.
     FollowThrough,
-    /// Column: answers rounded too coarsely.
-    TooCoarse,
-    /// Column: wrong answers.
-    Wrong,
-    /// Column: answers missing.
-    Missing,
-    /// Column: answers that could not be read.
-    Unparseable,
     /// Column: the mistakes' codes.
     Mistakes,
     /// Column: one mistake.
@@ -49,10 +39,6 @@ pub enum ClassWord {
     Facility,
     /// Column: a variant's facility over the whole exam.
     WholeExam,
-    /// Column: the value the key expects.
-    Expected,
-    /// Column: the value students gave.
-    Given,
     /// A variant below its siblings.
     Harder,
     /// A variant above its siblings.
@@ -102,8 +88,6 @@ pub enum ClassWord {
     Explains,
     /// Before the step to teach again.
     TeachAgain,
-    /// Before the other mistakes giving the same values.
-    AlsoFollow,
     /// `problem-02, step 3 of the worked solution: Title`.
     StepOf {
         /// The problem's name and `, `, or nothing.
@@ -197,4 +181,38 @@ pub enum PracticeWord {
     NumberShape,
     /// The shape of a list of `n` values.
     ValuesShape(usize),
+}
+
+/// A word of a marked answer file (`grafika check --answers FILE`) as
+/// text; the class report shares its columns and notes.
+#[derive(Clone, Debug, PartialEq)]
+pub enum CheckWord {
+    /// Column: the answer's key.
+    Answer,
+    /// Column: the verdict.
+    Verdict,
+    /// Column: the value given.
+    Given,
+    /// Column: the value expected.
+    Expected,
+    /// Column: the note on the verdict.
+    Note,
+    /// Between the title and the student: `Title — answers of budi`.
+    AnswersOf,
+    /// Heading: why the source's printed answers differ.
+    Errata,
+    /// Heading: the mistakes found.
+    Diagnosis,
+    /// Before the keys a mistake reproduces.
+    Reproduces,
+    /// Before the other mistakes giving the same values.
+    AlsoFollow,
+    /// Before the wrong answers no mistake explains.
+    NoMistakeExplains,
+    /// Before the keys that are not this problem's.
+    NotAnswers,
+    /// Before the score.
+    Score,
+    /// How many correct answers were credited by follow-through.
+    FollowThroughCount(usize),
 }

@@ -7,7 +7,7 @@ pub mod lecturer;
 mod page;
 
 use crate::error::Error;
-use crate::report::check::to_json;
+use crate::report::check::{to_json, VERDICTS};
 use crate::msg::ClassWord as C;
 use crate::report::lang::{cut_message, Lang};
 use crate::report::words;
@@ -63,20 +63,11 @@ fn counts(ms: &[(String, Marking)]) -> (f64, usize, [usize; 6]) {
 
 /// The headings of a class's table (`check --answers DIR`), one per column.
 pub fn class_header(lang: Lang) -> Vec<String> {
-    [
-        C::Student,
-        C::Score,
-        C::Correct,
-        C::TooCoarse,
-        C::Wrong,
-        C::Missing,
-        C::Unparseable,
-        C::FollowThrough,
-        C::Mistakes,
-    ]
-    .iter()
-    .map(|k| words::of(lang).class(k))
-    .collect()
+    let w = words::of(lang);
+    let mut header = vec![w.class(&C::Student), w.class(&C::Score)];
+    header.extend(VERDICTS.map(|v| w.verdict(v).to_string()));
+    header.extend([C::FollowThrough, C::Mistakes].map(|k| w.class(&k)));
+    header
 }
 
 /// One row per student, then the notes on unusual files and the entries

@@ -4,8 +4,9 @@
 //! wrong answers no mistake explains, the students with the histogram.
 
 use super::histogram;
+use crate::report::check::VERDICTS;
 use crate::report::doc::Doc;
-use crate::msg::ClassWord as C;
+use crate::msg::{CheckWord, ClassWord as C};
 use crate::report::lang::{Lang, NumStyle};
 use crate::report::mistakes::mistake_text;
 use crate::report::words;
@@ -13,6 +14,7 @@ use crate::report::words::report::dec;
 use crate::report::Style;
 use crate::tutor::check::Settings;
 use crate::tutor::class::stats::{Gap, MistakeStats, Stats, StepRef};
+use crate::tutor::check::Verdict;
 use crate::tutor::class::Class;
 
 /// A share or an index with two decimals, in the language's decimal mark,
@@ -170,19 +172,11 @@ fn summary(doc: Doc, class: &Class, s: &Stats, settings: &Settings, lang: Lang) 
 /// The key table and the definitions of its indices.
 fn keys_section(doc: Doc, s: &Stats, lang: Lang) -> String {
     let mut out = doc.heading(1, &w(lang, C::AnswerKeys));
-    let mut head = header(
-        doc,
-        lang,
-        [
-            C::Key,
-            C::Correct,
-            C::FollowThrough,
-            C::TooCoarse,
-            C::Wrong,
-            C::Missing,
-            C::Unparseable,
-        ],
-    );
+    let verdict = |v: Verdict| esc(doc, words::of(lang).verdict(v));
+    let mut head = header(doc, lang, [C::Key]);
+    head.push(verdict(Verdict::Correct));
+    head.extend(header(doc, lang, [C::FollowThrough]));
+    head.extend(VERDICTS[1..].iter().map(|v| verdict(*v)));
     // the indices' letters are the same in every language
     head.extend(["p", "D", "r"].map(String::from));
     head.push(esc(doc, &w(lang, C::Flag)));
@@ -341,7 +335,7 @@ fn mistake_item(doc: Doc, m: &MistakeStats, st: &Style) -> String {
         let codes: Vec<&str> = m.also.iter().map(|a| a.code).collect();
         out.push_str(&format!(
             " ({}: {})",
-            esc(doc, &w(lang, C::AlsoFollow)),
+            esc(doc, &words::of(lang).check(&CheckWord::AlsoFollow)),
             esc(doc, &codes.join(", "))
         ));
     }
@@ -356,7 +350,10 @@ fn wrong_section(doc: Doc, s: &Stats, st: &Style) -> String {
         return out + &para(doc, &esc(doc, &w(lang, C::NoneFound)));
     }
     out.push_str(&para(doc, &esc(doc, &w(lang, C::WrongNote))));
-    let head = header(doc, lang, [C::Key, C::Expected, C::Given, C::Students]);
+    let check = |k: CheckWord| esc(doc, &words::of(lang).check(&k));
+    let mut head = header(doc, lang, [C::Key]);
+    head.extend([check(CheckWord::Expected), check(CheckWord::Given)]);
+    head.extend(header(doc, lang, [C::Students]));
     let mut rows = Vec::new();
     for wa in &s.wrong_answers {
         let key = match wa.variant {

@@ -4,10 +4,11 @@
 //! exhaustive match in every language. The language-neutral parts (a
 //! number written in a language's style) are plain functions here.
 
-use crate::msg::{ClassWord, PracticeWord};
+use crate::msg::{CheckWord, ClassWord, PracticeWord};
 use crate::num::format::fmt_dec;
 use crate::report::lang::NumStyle;
 use crate::tutor::class::stats::Flag;
+use crate::tutor::check::Verdict;
 use crate::tutor::class::{Note, Skip};
 use crate::tutor::practice::Summary;
 
@@ -21,6 +22,10 @@ pub trait ReportWords {
     fn skip(&self, s: Skip) -> &'static str;
     /// A flag on a key of the class report.
     fn flag(&self, f: Flag) -> &'static str;
+    /// A verdict on an answer (also a column of the class's tables).
+    fn verdict(&self, v: Verdict) -> &'static str;
+    /// A word of a marked answer file.
+    fn check(&self, w: &CheckWord) -> String;
     /// A word of `grafika practice`.
     fn practice(&self, w: &PracticeWord) -> String;
     /// A practice session's summary: the points, the counts, the second

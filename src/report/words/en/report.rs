@@ -3,11 +3,13 @@
 //! match per key enum; a word table, long on purpose).
 
 use super::En;
+use crate::msg::CheckWord as K;
 use crate::msg::ClassWord as C;
 use crate::msg::PracticeWord as P;
 use crate::report::lang::NumStyle;
 use crate::report::words::report::{dec, ReportWords};
 use crate::tutor::class::stats::Flag;
+use crate::tutor::check::Verdict;
 use crate::tutor::class::{Note, Skip};
 use crate::tutor::practice::Summary;
 
@@ -18,12 +20,7 @@ impl ReportWords for En {
             C::Student => "student".into(),
             C::Students => "students".into(),
             C::Score => "score".into(),
-            C::Correct => "correct".into(),
             C::FollowThrough => "follow-through".into(),
-            C::TooCoarse => "too coarse".into(),
-            C::Wrong => "wrong".into(),
-            C::Missing => "missing".into(),
-            C::Unparseable => "unparseable".into(),
             C::Mistakes => "mistakes".into(),
             C::Mistake => "mistake".into(),
             C::Variant => "variant".into(),
@@ -34,8 +31,6 @@ impl ReportWords for En {
             C::Title => "title".into(),
             C::Facility => "facility p".into(),
             C::WholeExam => "whole exam".into(),
-            C::Expected => "expected".into(),
-            C::Given => "given".into(),
             C::Harder => "harder".into(),
             C::Easier => "easier".into(),
             C::AnswerKeys => "Answer keys".into(),
@@ -73,7 +68,6 @@ impl ReportWords for En {
             C::StudentCount(_) => "students".into(),
             C::Explains => "Explains".into(),
             C::TeachAgain => "Teach again".into(),
-            C::AlsoFollow => "some of these also follow from".into(),
             C::StepOf {
                 part,
                 number,
@@ -106,6 +100,35 @@ impl ReportWords for En {
             Flag::VeryEasy => "very easy",
             Flag::VeryHard => "very hard",
             Flag::Negative => "negative",
+        }
+    }
+
+    fn verdict(&self, v: Verdict) -> &'static str {
+        match v {
+            Verdict::Correct => "correct",
+            Verdict::TooCoarse => "too coarse",
+            Verdict::Wrong => "wrong",
+            Verdict::Missing => "missing",
+            Verdict::Unparseable => "unparseable",
+        }
+    }
+
+    fn check(&self, w: &K) -> String {
+        match w {
+            K::Answer => "answer".into(),
+            K::Verdict => "verdict".into(),
+            K::Given => "given".into(),
+            K::Expected => "expected".into(),
+            K::Note => "note".into(),
+            K::AnswersOf => "answers of".into(),
+            K::Errata => "Why the printed answers differ (the problem file's errata):".into(),
+            K::Diagnosis => "Diagnosis:".into(),
+            K::Reproduces => "reproduces".into(),
+            K::AlsoFollow => "some of these also follow from".into(),
+            K::NoMistakeExplains => "No known mistake explains".into(),
+            K::NotAnswers => "Not answers to this problem (ignored)".into(),
+            K::Score => "Score".into(),
+            K::FollowThroughCount(n) => format!("({n} of the correct answers by follow-through: right given the student's own earlier answers)"),
         }
     }
 

@@ -3,11 +3,13 @@
 //! exhaustive match per key enum; a word table, long on purpose).
 
 use super::Id;
+use crate::msg::CheckWord as K;
 use crate::msg::ClassWord as C;
 use crate::msg::PracticeWord as P;
 use crate::report::lang::NumStyle;
 use crate::report::words::report::{dec, ReportWords};
 use crate::tutor::class::stats::Flag;
+use crate::tutor::check::Verdict;
 use crate::tutor::class::{Note, Skip};
 use crate::tutor::practice::Summary;
 
@@ -18,12 +20,7 @@ impl ReportWords for Id {
             C::Student => "mahasiswa".into(),
             C::Students => "mahasiswa".into(),
             C::Score => "nilai".into(),
-            C::Correct => "benar".into(),
             C::FollowThrough => "follow-through".into(),
-            C::TooCoarse => "terlalu kasar".into(),
-            C::Wrong => "salah".into(),
-            C::Missing => "tidak dijawab".into(),
-            C::Unparseable => "tidak terbaca".into(),
             C::Mistakes => "kesalahan konsep".into(),
             C::Mistake => "kesalahan".into(),
             C::Variant => "varian".into(),
@@ -34,8 +31,6 @@ impl ReportWords for Id {
             C::Title => "judul".into(),
             C::Facility => "tingkat kemudahan p".into(),
             C::WholeExam => "seluruh ujian".into(),
-            C::Expected => "seharusnya".into(),
-            C::Given => "diberikan".into(),
             C::Harder => "lebih sulit".into(),
             C::Easier => "lebih mudah".into(),
             C::AnswerKeys => "Kunci jawaban".into(),
@@ -72,7 +67,6 @@ impl ReportWords for Id {
             C::StudentCount(_) => "mahasiswa".into(),
             C::Explains => "Menjelaskan".into(),
             C::TeachAgain => "Ajarkan lagi".into(),
-            C::AlsoFollow => "sebagian juga dapat berasal dari".into(),
             C::StepOf {
                 part,
                 number,
@@ -105,6 +99,35 @@ impl ReportWords for Id {
             Flag::VeryEasy => "sangat mudah",
             Flag::VeryHard => "sangat sulit",
             Flag::Negative => "negatif",
+        }
+    }
+
+    fn verdict(&self, v: Verdict) -> &'static str {
+        match v {
+            Verdict::Correct => "benar",
+            Verdict::TooCoarse => "terlalu kasar",
+            Verdict::Wrong => "salah",
+            Verdict::Missing => "tidak dijawab",
+            Verdict::Unparseable => "tidak terbaca",
+        }
+    }
+
+    fn check(&self, w: &K) -> String {
+        match w {
+            K::Answer => "jawaban".into(),
+            K::Verdict => "penilaian".into(),
+            K::Given => "diberikan".into(),
+            K::Expected => "seharusnya".into(),
+            K::Note => "catatan".into(),
+            K::AnswersOf => "jawaban dari".into(),
+            K::Errata => "Mengapa jawaban yang tercetak berbeda (errata dalam berkas soal):".into(),
+            K::Diagnosis => "Diagnosis:".into(),
+            K::Reproduces => "menghasilkan ulang".into(),
+            K::AlsoFollow => "sebagian juga dapat berasal dari".into(),
+            K::NoMistakeExplains => "Tidak ada kesalahan yang dikenal yang menjelaskan".into(),
+            K::NotAnswers => "Bukan jawaban untuk soal ini (diabaikan)".into(),
+            K::Score => "Nilai".into(),
+            K::FollowThroughCount(n) => format!("({n} jawaban benar karena follow-through: benar menurut jawaban mahasiswa sendiri sebelumnya)"),
         }
     }
 
