@@ -23,10 +23,6 @@ pub enum ClassWord {
     Mistakes,
     /// Column: one mistake.
     Mistake,
-    /// Column: an exam's variant.
-    Variant,
-    /// Before a sheet's error in its row.
-    Error,
     /// Column: an answer key.
     Key,
     /// Column: the flags of a key.
@@ -215,4 +211,147 @@ pub enum CheckWord {
     Score,
     /// How many correct answers were credited by follow-through.
     FollowThroughCount(usize),
+}
+
+/// A word the documents share (the worked solution as text, HTML,
+/// Markdown, LaTeX; the exam's sheets; a Moodle question): headings,
+/// labels, the comparison with a source's printed answers.
+#[derive(Clone, Debug, PartialEq)]
+pub enum DocWord {
+    /// Before a step's number.
+    Step,
+    /// Heading: the answer.
+    Answer,
+    /// Heading: the answers.
+    Answers,
+    /// Heading: the figures.
+    Figures,
+    /// Heading: the worked solution.
+    WorkedSolution,
+    /// Before a problem's number.
+    Problem,
+    /// Before a variant's number.
+    Variant,
+    /// Before a warning.
+    Warning,
+    /// Before an error (a sheet's in its row, the program's on stderr).
+    Error,
+    /// Heading: the notes on the source.
+    NotesOnSource,
+    /// A true value.
+    Yes,
+    /// A false value.
+    No,
+    /// No value.
+    NoValue,
+    /// Before the source the answers are compared with.
+    ComparedWith,
+    /// The source, when the problem file does not name it.
+    TheSource,
+    /// Before the value the source printed; a column.
+    Printed,
+    /// Before the correct value; a column.
+    CorrectValue,
+    /// Before the value computed, when the printed one cannot be compared.
+    Computed,
+    /// Column: the value's name.
+    Value,
+    /// Before why the source's value differs.
+    Why,
+    /// An exam's title.
+    ExamTitle {
+        /// The topics' names.
+        topics: String,
+        /// The difficulty's name.
+        difficulty: String,
+        /// The seed (a key's title only).
+        seed: Option<u64>,
+        /// The variant, when there are several.
+        variant: Option<u32>,
+    },
+    /// An answer key's title, after the exam's.
+    KeyTitle(String),
+    /// Before an answer-key file's title.
+    AnswerKey,
+    /// What `generate --out` wrote.
+    Wrote {
+        /// Files written.
+        files: usize,
+        /// Variants of each problem.
+        variants: u32,
+        /// Problems.
+        count: u32,
+        /// The topics' names.
+        topics: String,
+        /// The seed.
+        seed: u64,
+        /// The folder.
+        out: String,
+    },
+    /// `… and n more` files.
+    More(usize),
+}
+
+/// The decimal mark students type: a Moodle reads a typed number by the
+/// mark of its interface language (English: `0,5` is 5, the comma a
+/// thousands separator; Indonesian: both `0,5` and `0.5` are 0.5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Decimal {
+    /// `0.5`: for a Moodle in English (the common case).
+    #[default]
+    Point,
+    /// `0,5`: for a Moodle with the Indonesian language pack.
+    Comma,
+}
+
+/// A word of a quiz (Moodle XML, GIFT): how to type the answers, the
+/// feedback, the parts of a question, the names of a value's components.
+#[derive(Clone, Debug, PartialEq)]
+pub enum QuizWord {
+    /// How to type the numbers.
+    Instructions {
+        /// Significant figures asked.
+        figures: u32,
+        /// The tolerance in per cent, written with the site's mark.
+        pct: String,
+        /// The mark to type.
+        mark: Decimal,
+        /// Whether pixel positions are asked.
+        pixels: bool,
+    },
+    /// How to type an outcode.
+    TypeOutcodes,
+    /// How to type the clipping status and a missing segment.
+    TypeStatus,
+    /// Before the mistakes that give a wrong value.
+    KnownMistake,
+    /// Between two such mistakes.
+    OrMistake,
+    /// Before a part's number.
+    Part,
+    /// GIFT carries no figures.
+    FiguresInMoodle,
+    /// Before a component's axis.
+    Component,
+    /// Before a point's number.
+    Point,
+}
+
+/// A word of the command line itself: progress bars, a page's title, the
+/// field of an error that names none.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CliWord {
+    /// A page's title after the command: `grafika view — worked solution`.
+    WorkedSolution,
+    /// The benchmark's progress bar.
+    Measuring,
+    /// The render's progress bar.
+    Frames,
+    /// An exam's progress bar.
+    Variants,
+    /// The field of an error in the arguments that names none.
+    Arguments,
+    /// Whose answers the text's printed ones are, when the file names no
+    /// source.
+    TheText,
 }

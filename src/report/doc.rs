@@ -4,6 +4,7 @@
 //! command). Used for exam answer keys.
 
 use crate::report::html;
+use crate::msg::DocWord;
 use crate::report::lang::Lang;
 use crate::report::latex::{latex_math, latex_text};
 use crate::report::{Report, Style};
@@ -175,7 +176,7 @@ impl Doc {
         }
         match self {
             Doc::Markdown => {
-                let step = st.tr("Step", "Langkah");
+                let step = st.doc(DocWord::Step);
                 let mut out = format!("**{step} {k}. {}**\n\n", self.text(&st.w(&s.title)));
                 for l in lines {
                     if l.contains('\n') {
@@ -190,7 +191,7 @@ impl Doc {
             _ => {
                 let mut out = format!(
                     "\\paragraph{{{} {k}. {}}}\n\\begin{{itemize}}\n",
-                    st.tr("Step", "Langkah"),
+                    st.doc(DocWord::Step),
                     latex_text(&st.w(&s.title))
                 );
                 for l in lines {

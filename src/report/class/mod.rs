@@ -76,7 +76,7 @@ pub fn table(class: &Class, lang: Lang) -> String {
     use comfy_table::{presets, Table};
     let mut header = class_header(lang);
     if class.exam {
-        header.insert(1, words::of(lang).class(&C::Variant));
+        header.insert(1, words::of(lang).doc(&crate::msg::DocWord::Variant));
     }
     let mut t = Table::new();
     t.load_preset(presets::UTF8_FULL_CONDENSED)
@@ -98,7 +98,7 @@ pub fn table(class: &Class, lang: Lang) -> String {
                 cells.extend(std::iter::repeat_n(String::new(), 6));
                 cells.push(format!(
                     "{}: {}",
-                    words::of(lang).class(&C::Error),
+                    words::of(lang).doc(&crate::msg::DocWord::Error),
                     said(e, lang)
                 ));
             }

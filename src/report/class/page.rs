@@ -6,7 +6,7 @@
 use super::histogram;
 use crate::report::check::VERDICTS;
 use crate::report::doc::Doc;
-use crate::msg::{CheckWord, ClassWord as C};
+use crate::msg::{CheckWord, ClassWord as C, DocWord};
 use crate::report::lang::{Lang, NumStyle};
 use crate::report::mistakes::mistake_text;
 use crate::report::words;
@@ -32,6 +32,11 @@ fn num(x: Option<f64>, lang: Lang) -> String {
 /// The class report's word `w` in `lang`.
 fn w(lang: Lang, w: C) -> String {
     words::of(lang).class(&w)
+}
+
+/// The column of an exam's variant, escaped.
+fn variant(doc: Doc, lang: Lang) -> String {
+    esc(doc, &words::of(lang).doc(&DocWord::Variant))
 }
 
 /// The cells of a table's header, escaped.
@@ -246,7 +251,8 @@ fn exam_section(doc: Doc, s: &Stats, lang: Lang) -> String {
         return out;
     }
     out.push_str(&doc.heading(1, &w(lang, C::Variants)));
-    let mut head = header(doc, lang, [C::Variant, C::Students, C::WholeExam]);
+    let mut head = vec![variant(doc, lang)];
+    head.extend(header(doc, lang, [C::Students, C::WholeExam]));
     head.extend(s.problems.iter().map(|p| esc(doc, &p.name)));
     let rows: Vec<Vec<String>> = s
         .variants
@@ -357,7 +363,7 @@ fn wrong_section(doc: Doc, s: &Stats, st: &Style) -> String {
     let mut rows = Vec::new();
     for wa in &s.wrong_answers {
         let key = match wa.variant {
-            Some(v) => format!("{} ({} {v})", wa.key, w(lang, C::Variant)),
+            Some(v) => format!("{} ({} {v})", wa.key, words::of(lang).doc(&DocWord::Variant)),
             None => wa.key.clone(),
         };
         let expected = wa
@@ -407,9 +413,11 @@ fn students_section(doc: Doc, class: &Class, s: &Stats, lang: Lang) -> String {
         out.push_str(&table(doc, &head, &rows));
     }
     out.push_str(&doc.heading(2, &w(lang, C::Scores)));
-    let variant = class.exam.then_some(C::Variant);
-    let keys = [Some(C::Student), variant, Some(C::Score), Some(C::Mistakes)];
-    let head = header(doc, lang, keys.into_iter().flatten());
+    let mut head = header(doc, lang, [C::Student]);
+    if class.exam {
+        head.push(variant(doc, lang));
+    }
+    head.extend(header(doc, lang, [C::Score, C::Mistakes]));
     let rows: Vec<Vec<String>> = class
         .marked()
         .map(|sh| {

@@ -4,7 +4,7 @@
 //! exhaustive match in every language. The language-neutral parts (a
 //! number written in a language's style) are plain functions here.
 
-use crate::msg::{CheckWord, ClassWord, PracticeWord};
+use crate::msg::{CheckWord, ClassWord, CliWord, DocWord, PracticeWord, QuizWord};
 use crate::num::format::fmt_dec;
 use crate::report::lang::NumStyle;
 use crate::tutor::class::stats::Flag;
@@ -26,6 +26,12 @@ pub trait ReportWords {
     fn verdict(&self, v: Verdict) -> &'static str;
     /// A word of a marked answer file.
     fn check(&self, w: &CheckWord) -> String;
+    /// A word the documents share.
+    fn doc(&self, w: &DocWord) -> String;
+    /// A word of a quiz (Moodle XML, GIFT).
+    fn quiz(&self, w: &QuizWord) -> String;
+    /// A word of the command line itself.
+    fn cli(&self, w: CliWord) -> &'static str;
     /// A word of `grafika practice`.
     fn practice(&self, w: &PracticeWord) -> String;
     /// A practice session's summary: the points, the counts, the second
@@ -36,4 +42,21 @@ pub trait ReportWords {
 /// `x` with at most `digits` decimals, in `style`: `0.5` or `0,5`.
 pub fn dec(x: f64, digits: usize, style: NumStyle) -> String {
     style.number(&fmt_dec(x, digits))
+}
+
+/// An exam's title: `name: topics (difficulty), seed s, variant v`, the
+/// variant with its word.
+pub fn exam_title(
+    name: &str,
+    (topics, difficulty): (&str, &str),
+    seed: Option<u64>,
+    variant: Option<(String, u32)>,
+) -> String {
+    format!(
+        "{name}: {topics} ({difficulty}){}{}",
+        seed.map(|s| format!(", seed {s}")).unwrap_or_default(),
+        variant
+            .map(|(word, v)| format!(", {word} {v}"))
+            .unwrap_or_default()
+    )
 }

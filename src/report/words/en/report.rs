@@ -4,10 +4,12 @@
 
 use super::En;
 use crate::msg::CheckWord as K;
+use crate::msg::CliWord as L;
+use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
 use crate::msg::ClassWord as C;
 use crate::msg::PracticeWord as P;
 use crate::report::lang::NumStyle;
-use crate::report::words::report::{dec, ReportWords};
+use crate::report::words::report::{dec, exam_title, ReportWords};
 use crate::tutor::class::stats::Flag;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::{Note, Skip};
@@ -23,8 +25,6 @@ impl ReportWords for En {
             C::FollowThrough => "follow-through".into(),
             C::Mistakes => "mistakes".into(),
             C::Mistake => "mistake".into(),
-            C::Variant => "variant".into(),
-            C::Error => "error".into(),
             C::Key => "key".into(),
             C::Flag => "flag".into(),
             C::Problem => "problem".into(),
@@ -132,6 +132,93 @@ impl ReportWords for En {
         }
     }
 
+    fn doc(&self, w: &D) -> String {
+        match w {
+            D::Step => "Step".into(),
+            D::Answer => "Answer".into(),
+            D::Answers => "Answers".into(),
+            D::Figures => "Figures".into(),
+            D::WorkedSolution => "Worked solution".into(),
+            D::Problem => "Problem".into(),
+            D::Variant => "variant".into(),
+            D::Error => "error".into(),
+            D::Warning => "warning".into(),
+            D::NotesOnSource => "Notes on the source".into(),
+            D::Yes => "yes".into(),
+            D::No => "no".into(),
+            D::NoValue => "none".into(),
+            D::ComparedWith => "Compared with the answers printed in".into(),
+            D::TheSource => "the source".into(),
+            D::Printed => "printed".into(),
+            D::CorrectValue => "correct".into(),
+            D::Computed => "computed".into(),
+            D::Value => "value".into(),
+            D::Why => "why".into(),
+            D::ExamTitle {
+                topics,
+                difficulty,
+                seed,
+                variant,
+            } => exam_title("grafika exam", (topics, difficulty), *seed, variant.map(|v| (self.doc(&D::Variant), v))),
+            D::KeyTitle(title) => format!("{title} — answer key"),
+            D::AnswerKey => "Answer key".into(),
+            D::Wrote {
+                files,
+                variants,
+                count,
+                topics,
+                seed,
+                out,
+            } => format!(
+                "wrote {files} file{} ({variants} variant{} of {count} {topics} problem{}, seed {seed}) to {out}",
+                plural(*files),
+                plural(*variants as usize),
+                plural(*count as usize),
+            ),
+            D::More(n) => format!("… and {n} more"),
+        }
+    }
+
+    fn quiz(&self, w: &Q) -> String {
+        match w {
+            Q::Instructions {
+                figures,
+                pct,
+                mark,
+                pixels,
+            } => {
+                let mark = match mark {
+                    Decimal::Point => "a decimal point (0.5, not 0,5)",
+                    Decimal::Comma => "a decimal comma (0,5)",
+                };
+                let pixel = match pixels {
+                    true => "; a pixel position within half a pixel, so a whole pixel is right",
+                    false => "",
+                };
+                format!("Type each number as a decimal with at least {figures} significant figures, not as an exact form such as (√2−1)/2, and with {mark} (a number within {pct} % of the key's is right{pixel}).")
+            }
+            Q::TypeOutcodes => "Type outcodes as six bits, bit 1 rightmost (e.g. 000010).".into(),
+            Q::TypeStatus => "Type the clipping status as accepted, rejected or clipped, and the segment that is left as none when there is none.".into(),
+            Q::KnownMistake => "Known mistake: ".into(),
+            Q::OrMistake => "; or: ".into(),
+            Q::Part => "Part".into(),
+            Q::FiguresInMoodle => "The figures of this problem are in the Moodle XML of the same exam (grafika generate … --format moodle): GIFT cannot carry files.".into(),
+            Q::Component => "component".into(),
+            Q::Point => "point".into(),
+        }
+    }
+
+    fn cli(&self, w: L) -> &'static str {
+        match w {
+            L::WorkedSolution => "worked solution",
+            L::Measuring => "measuring",
+            L::Frames => "frames",
+            L::Variants => "variants",
+            L::Arguments => "arguments",
+            L::TheText => "the text",
+        }
+    }
+
     fn practice(&self, w: &P) -> String {
         match w {
             P::Title {
@@ -193,5 +280,14 @@ impl ReportWords for En {
             ));
         }
         out
+    }
+}
+
+/// The English plural's `s`: none for one.
+fn plural(n: usize) -> &'static str {
+    if n == 1 {
+        ""
+    } else {
+        "s"
     }
 }

@@ -4,10 +4,12 @@
 
 use super::Id;
 use crate::msg::CheckWord as K;
+use crate::msg::CliWord as L;
+use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
 use crate::msg::ClassWord as C;
 use crate::msg::PracticeWord as P;
 use crate::report::lang::NumStyle;
-use crate::report::words::report::{dec, ReportWords};
+use crate::report::words::report::{dec, exam_title, ReportWords};
 use crate::tutor::class::stats::Flag;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::{Note, Skip};
@@ -23,8 +25,6 @@ impl ReportWords for Id {
             C::FollowThrough => "follow-through".into(),
             C::Mistakes => "kesalahan konsep".into(),
             C::Mistake => "kesalahan".into(),
-            C::Variant => "varian".into(),
-            C::Error => "kesalahan".into(),
             C::Key => "kunci".into(),
             C::Flag => "tanda".into(),
             C::Problem => "soal".into(),
@@ -128,6 +128,90 @@ impl ReportWords for Id {
             K::NotAnswers => "Bukan jawaban untuk soal ini (diabaikan)".into(),
             K::Score => "Nilai".into(),
             K::FollowThroughCount(n) => format!("({n} jawaban benar karena follow-through: benar menurut jawaban mahasiswa sendiri sebelumnya)"),
+        }
+    }
+
+    fn doc(&self, w: &D) -> String {
+        match w {
+            D::Step => "Langkah".into(),
+            D::Answer => "Jawaban".into(),
+            D::Answers => "Jawaban".into(),
+            D::Figures => "Gambar".into(),
+            D::WorkedSolution => "Penyelesaian".into(),
+            D::Problem => "Soal".into(),
+            D::Variant => "varian".into(),
+            D::Error => "kesalahan".into(),
+            D::Warning => "peringatan".into(),
+            D::NotesOnSource => "Catatan tentang sumber".into(),
+            D::Yes => "ya".into(),
+            D::No => "tidak".into(),
+            D::NoValue => "tidak ada".into(),
+            D::ComparedWith => "Dibandingkan dengan jawaban yang tercetak di".into(),
+            D::TheSource => "sumber".into(),
+            D::Printed => "tercetak".into(),
+            D::CorrectValue => "yang benar".into(),
+            D::Computed => "hasil hitung".into(),
+            D::Value => "nilai".into(),
+            D::Why => "alasan".into(),
+            D::ExamTitle {
+                topics,
+                difficulty,
+                seed,
+                variant,
+            } => exam_title("ujian grafika", (topics, difficulty), *seed, variant.map(|v| (self.doc(&D::Variant), v))),
+            D::KeyTitle(title) => format!("{title} — kunci jawaban"),
+            D::AnswerKey => "Kunci jawaban".into(),
+            D::Wrote {
+                files,
+                variants,
+                count,
+                topics,
+                seed,
+                out,
+            } => format!(
+                "{files} berkas ditulis ({variants} varian dari {count} soal {topics}, seed {seed}) ke {out}"
+            ),
+            D::More(n) => format!("… dan {n} lagi"),
+        }
+    }
+
+    fn quiz(&self, w: &Q) -> String {
+        match w {
+            Q::Instructions {
+                figures,
+                pct,
+                mark,
+                pixels,
+            } => {
+                let mark = match mark {
+                    Decimal::Point => "titik desimal (0.5, bukan 0,5)",
+                    Decimal::Comma => "koma desimal (0,5)",
+                };
+                let pixel = match pixels {
+                    true => "; posisi piksel boleh berselisih setengah piksel, jadi piksel bulat dinilai benar",
+                    false => "",
+                };
+                format!("Tulis setiap bilangan sebagai desimal dengan sedikitnya {figures} angka penting, bukan sebagai bentuk eksak seperti (√2−1)/2, dengan {mark} (bilangan yang berselisih paling banyak {pct} % dari kunci dinilai benar{pixel}).")
+            }
+            Q::TypeOutcodes => "Tulis outcode sebagai enam bit, bit 1 paling kanan (mis. 000010).".into(),
+            Q::TypeStatus => "Tulis status clipping sebagai accepted, rejected atau clipped, dan sisa segmen sebagai none bila tidak ada.".into(),
+            Q::KnownMistake => "Kesalahan yang dikenal: ".into(),
+            Q::OrMistake => "; atau: ".into(),
+            Q::Part => "Bagian".into(),
+            Q::FiguresInMoodle => "Gambar soal ini ada di Moodle XML dari ujian yang sama (grafika generate … --format moodle): GIFT tidak dapat membawa berkas.".into(),
+            Q::Component => "komponen".into(),
+            Q::Point => "titik".into(),
+        }
+    }
+
+    fn cli(&self, w: L) -> &'static str {
+        match w {
+            L::WorkedSolution => "penyelesaian",
+            L::Measuring => "mengukur",
+            L::Frames => "bingkai",
+            L::Variants => "varian",
+            L::Arguments => "argumen",
+            L::TheText => "teks",
         }
     }
 
