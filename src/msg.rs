@@ -22,7 +22,9 @@ pub use figure::{FigWord, FigureMsg, Panel};
 pub use lang::Lang;
 pub use pixel::PixelMsg;
 pub use render::{PerPixel, Summary};
-pub use report::{CheckWord, ClassWord, CliWord, Decimal, DocWord, PracticeWord, QuizWord};
+pub use report::{
+    BenchWord, CheckWord, ClassWord, CliWord, Decimal, DocWord, PracticeWord, QuizWord, StatWord,
+};
 pub use said::Said;
 
 /// A term of the lighting sum.

@@ -355,3 +355,91 @@ pub enum CliWord {
     /// source.
     TheText,
 }
+
+/// A line of `render --stats`: a count of the pipeline's work or a stage's
+/// median time.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StatWord {
+    /// The table's heading.
+    Heading,
+    /// Triangles read.
+    TrianglesIn,
+    /// Back faces culled.
+    Culled,
+    /// Triangles rejected by their outcodes.
+    Rejected,
+    /// Triangles clipped.
+    Clipped,
+    /// Triangles set up and rasterized.
+    Drawn,
+    /// Triangles covering no pixel centre.
+    NoPixels,
+    /// Objects rejected whole.
+    ObjectsRejected,
+    /// Objects inside whole.
+    ObjectsInside,
+    /// Pixels shaded.
+    PixelsShaded,
+    /// Lighting evaluations.
+    LightingEvals,
+    /// Whether lighting is per pixel.
+    PerPixel,
+    /// Lights skipped out of range.
+    LightsSkipped,
+    /// Objects without specular work.
+    SpecularSkipped,
+    /// Time: geometry, a median of `runs` frames when more than one.
+    Geometry {
+        /// Frames rendered.
+        runs: usize,
+    },
+    /// Time: binning.
+    Binning,
+    /// Time: the bands.
+    Bands,
+    /// Thread time: raster.
+    Raster,
+    /// Thread time: shading.
+    Shading,
+    /// Time: the frame.
+    Frame,
+    /// Time: PNG encoding.
+    Png,
+}
+
+/// A word of `grafika bench`'s table: its columns, a row's verdict and
+/// the notes below it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BenchWord {
+    /// Column: the stage.
+    Stage,
+    /// Column: the precision.
+    Precision,
+    /// Column: the cases measured.
+    Cases,
+    /// Column: the median time per operation.
+    TimePerOp,
+    /// Column: the largest error on integer inputs.
+    MaxUlpsInt,
+    /// Column: the median error on integer inputs.
+    MedianUlpsInt,
+    /// Column: the largest error on wide inputs.
+    MaxUlpsWide,
+    /// Column: the target.
+    Target,
+    /// Verdict: the exact path.
+    Exact,
+    /// Verdict: a stage without a target.
+    NoTarget,
+    /// Verdict: the target met.
+    Met,
+    /// Verdict: the target not met.
+    NotMet,
+    /// What an ulp is measured against (two lines, each ending with a
+    /// newline).
+    UlpsNote,
+    /// Before the count of runs where float and exact disagree on failing.
+    Disagreements,
+    /// Before the count of components without an exact reference.
+    Unreferenced,
+}

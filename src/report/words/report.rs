@@ -4,7 +4,9 @@
 //! exhaustive match in every language. The language-neutral parts (a
 //! number written in a language's style) are plain functions here.
 
-use crate::msg::{CheckWord, ClassWord, CliWord, DocWord, PracticeWord, QuizWord};
+use crate::msg::{
+    BenchWord, CheckWord, ClassWord, CliWord, DocWord, PracticeWord, QuizWord, StatWord,
+};
 use crate::num::format::fmt_dec;
 use crate::report::lang::NumStyle;
 use crate::tutor::class::stats::Flag;
@@ -32,6 +34,10 @@ pub trait ReportWords {
     fn quiz(&self, w: &QuizWord) -> String;
     /// A word of the command line itself.
     fn cli(&self, w: CliWord) -> &'static str;
+    /// A line of `render --stats`.
+    fn stat(&self, w: StatWord) -> String;
+    /// A word of `grafika bench`'s table.
+    fn bench(&self, w: BenchWord) -> &'static str;
     /// A word of `grafika practice`.
     fn practice(&self, w: &PracticeWord) -> String;
     /// A practice session's summary: the points, the counts, the second

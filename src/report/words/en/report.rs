@@ -3,11 +3,13 @@
 //! match per key enum; a word table, long on purpose).
 
 use super::En;
+use crate::msg::BenchWord as B;
 use crate::msg::CheckWord as K;
 use crate::msg::CliWord as L;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
 use crate::msg::ClassWord as C;
 use crate::msg::PracticeWord as P;
+use crate::msg::StatWord as S;
 use crate::report::lang::NumStyle;
 use crate::report::words::report::{dec, exam_title, ReportWords};
 use crate::tutor::class::stats::Flag;
@@ -216,6 +218,54 @@ impl ReportWords for En {
             L::Variants => "variants",
             L::Arguments => "arguments",
             L::TheText => "the text",
+        }
+    }
+
+    fn stat(&self, w: S) -> String {
+        match w {
+            S::Heading => "Stats".into(),
+            S::TrianglesIn => "triangles in".into(),
+            S::Culled => "back faces culled (closed meshes)".into(),
+            S::Rejected => "rejected by outcodes".into(),
+            S::Clipped => "clipped (crossing a plane)".into(),
+            S::Drawn => "set up and rasterized".into(),
+            S::NoPixels => "covering no pixel centre".into(),
+            S::ObjectsRejected => "objects rejected whole (bounding box)".into(),
+            S::ObjectsInside => "objects inside whole (no clip tests)".into(),
+            S::PixelsShaded => "pixels shaded".into(),
+            S::LightingEvals => "lighting evaluations".into(),
+            S::PerPixel => "per-pixel lighting".into(),
+            S::LightsSkipped => "lights skipped (out of range)".into(),
+            S::SpecularSkipped => "objects without specular work".into(),
+            S::Geometry { runs: 0 | 1 } => "time: geometry".into(),
+            S::Geometry { runs } => format!("time: geometry (median of {runs})"),
+            S::Binning => "time: binning".into(),
+            S::Bands => "time: bands (raster + shading)".into(),
+            S::Raster => "thread time: raster".into(),
+            S::Shading => "thread time: shading".into(),
+            S::Frame => "time: frame".into(),
+            S::Png => "time: PNG encoding".into(),
+        }
+    }
+
+    fn bench(&self, w: B) -> &'static str {
+        match w {
+            B::Stage => "stage",
+            B::Precision => "precision",
+            B::Cases => "cases",
+            B::TimePerOp => "time/op (median)",
+            B::MaxUlpsInt => "max ulps (int ≤ 2^20)",
+            B::MedianUlpsInt => "median ulps (int ≤ 2^20)",
+            B::MaxUlpsWide => "max ulps (1e-30…1e30)",
+            B::Target => "target ≤ 4 ulps",
+            B::Exact => "exact",
+            B::NoTarget => "(no target)",
+            B::Met => "met",
+            B::NotMet => "NOT met",
+            B::UlpsNote => "ulps: of the exact value (of 1 for the unit vectors u, v, n), at the row's precision;\n\
+                 the exact path's results are the reference (correctly rounded to f64 first).\n",
+            B::Disagreements => "cases where a float run failed but the exact one did not, or the reverse (an overflow at f32 is an error)",
+            B::Unreferenced => "components without an exact reference (a square root `Real` cannot factor; not counted)",
         }
     }
 

@@ -3,11 +3,13 @@
 //! exhaustive match per key enum; a word table, long on purpose).
 
 use super::Id;
+use crate::msg::BenchWord as B;
 use crate::msg::CheckWord as K;
 use crate::msg::CliWord as L;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
 use crate::msg::ClassWord as C;
 use crate::msg::PracticeWord as P;
+use crate::msg::StatWord as S;
 use crate::report::lang::NumStyle;
 use crate::report::words::report::{dec, exam_title, ReportWords};
 use crate::tutor::class::stats::Flag;
@@ -212,6 +214,54 @@ impl ReportWords for Id {
             L::Variants => "varian",
             L::Arguments => "argumen",
             L::TheText => "teks",
+        }
+    }
+
+    fn stat(&self, w: S) -> String {
+        match w {
+            S::Heading => "Statistik".into(),
+            S::TrianglesIn => "segitiga masuk".into(),
+            S::Culled => "sisi belakang dibuang (mesh tertutup)".into(),
+            S::Rejected => "ditolak oleh region code".into(),
+            S::Clipped => "di-clip (memotong bidang)".into(),
+            S::Drawn => "disiapkan dan dirasterisasi".into(),
+            S::NoPixels => "tidak menutupi pusat piksel".into(),
+            S::ObjectsRejected => "objek ditolak utuh (kotak pembatas)".into(),
+            S::ObjectsInside => "objek di dalam utuh (tanpa uji clip)".into(),
+            S::PixelsShaded => "piksel diwarnai".into(),
+            S::LightingEvals => "evaluasi pencahayaan".into(),
+            S::PerPixel => "pencahayaan per piksel".into(),
+            S::LightsSkipped => "sumber cahaya dilewati (di luar jangkauan)".into(),
+            S::SpecularSkipped => "objek tanpa perhitungan specular".into(),
+            S::Geometry { runs: 0 | 1 } => "waktu: geometri".into(),
+            S::Geometry { runs } => format!("waktu: geometri (median dari {runs})"),
+            S::Binning => "waktu: binning".into(),
+            S::Bands => "waktu: pita (raster + shading)".into(),
+            S::Raster => "waktu thread: raster".into(),
+            S::Shading => "waktu thread: shading".into(),
+            S::Frame => "waktu: bingkai".into(),
+            S::Png => "waktu: encoding PNG".into(),
+        }
+    }
+
+    fn bench(&self, w: B) -> &'static str {
+        match w {
+            B::Stage => "tahap",
+            B::Precision => "presisi",
+            B::Cases => "kasus",
+            B::TimePerOp => "waktu/operasi (median)",
+            B::MaxUlpsInt => "ulps maks (bulat ≤ 2^20)",
+            B::MedianUlpsInt => "ulps median (bulat ≤ 2^20)",
+            B::MaxUlpsWide => "ulps maks (1e-30…1e30)",
+            B::Target => "target ≤ 4 ulps",
+            B::Exact => "eksak",
+            B::NoTarget => "(tanpa target)",
+            B::Met => "tercapai",
+            B::NotMet => "TIDAK tercapai",
+            B::UlpsNote => "ulps: dari nilai eksak (dari 1 untuk vektor satuan u, v, n), pada presisi barisnya;\n\
+                 hasil jalur eksak adalah acuannya (dibulatkan benar ke f64 lebih dulu).\n",
+            B::Disagreements => "kasus ketika jalur float gagal tetapi jalur eksak tidak, atau sebaliknya (overflow pada f32 adalah kesalahan)",
+            B::Unreferenced => "komponen tanpa acuan eksak (akar kuadrat yang tidak dapat difaktorkan `Real`; tidak dihitung)",
         }
     }
 
