@@ -43,7 +43,7 @@ pub fn fmt_ulps(x: f64) -> String {
 /// The table.
 pub fn table(inp: &Inputs, rows: &[Row], lang: crate::report::lang::Lang) -> String {
     use crate::msg::BenchWord as B;
-    let tr = |k: B| crate::report::words::of(lang).bench(k);
+    let w = |k: B| crate::report::words::of(lang).bench(k);
     let mut t = Table::new();
     t.load_preset(presets::UTF8_FULL_CONDENSED);
     t.set_header(
@@ -57,7 +57,7 @@ pub fn table(inp: &Inputs, rows: &[Row], lang: crate::report::lang::Lang) -> Str
             B::MaxUlpsWide,
             B::Target,
         ]
-        .map(tr),
+        .map(w),
     );
     for r in rows {
         // Numbers with the language's decimal mark (`56,99 ms` in Indonesian).
@@ -70,13 +70,13 @@ pub fn table(inp: &Inputs, rows: &[Row], lang: crate::report::lang::Lang) -> Str
         let exact = r.precision == Precision::Exact;
         let dash = || right("—".into());
         let verdict = if exact {
-            tr(B::Exact)
+            w(B::Exact)
         } else if !r.stage.has_target() {
-            tr(B::NoTarget)
+            w(B::NoTarget)
         } else if tmax <= 4.0 && r.errors.target_disagreements == 0 {
-            tr(B::Met)
+            w(B::Met)
         } else {
-            tr(B::NotMet)
+            w(B::NotMet)
         };
         t.add_row(vec![
             Cell::new(r.stage.name()),
@@ -91,10 +91,10 @@ pub fn table(inp: &Inputs, rows: &[Row], lang: crate::report::lang::Lang) -> Str
     }
     let mut out = t.to_string();
     out.push('\n');
-    out.push_str(tr(B::UlpsNote));
+    out.push_str(w(B::UlpsNote));
     let dis: usize = rows.iter().map(|r| r.errors.disagreements).sum();
     let unref: usize = rows.iter().map(|r| r.errors.unreferenced).sum();
-    let (a, b) = (tr(B::Disagreements), tr(B::Unreferenced));
+    let (a, b) = (w(B::Disagreements), w(B::Unreferenced));
     out.push_str(&format!("{a}: {dis}\n{b}: {unref}\n"));
     out
 }

@@ -15,6 +15,7 @@ use crate::report::words::report::{dec, exam_title, ReportWords};
 use crate::tutor::class::stats::Flag;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::{Note, Skip};
+use crate::tutor::diagnose::Mistake;
 use crate::tutor::practice::Summary;
 
 impl ReportWords for En {
@@ -267,6 +268,11 @@ impl ReportWords for En {
             B::Disagreements => "cases where a float run failed but the exact one did not, or the reverse (an overflow at f32 is an error)",
             B::Unreferenced => "components without an exact reference (a square root `Real` cannot factor; not counted)",
         }
+    }
+
+    fn mistake(&self, m: &Mistake) -> &'static str {
+        // the catalog's own words are English
+        m.description
     }
 
     fn practice(&self, w: &P) -> String {

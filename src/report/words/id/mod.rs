@@ -3,6 +3,7 @@
 
 mod errors;
 mod keys;
+mod mistakes;
 mod msg;
 mod names;
 mod report;

@@ -15,6 +15,7 @@ use crate::report::words::report::{dec, exam_title, ReportWords};
 use crate::tutor::class::stats::Flag;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::{Note, Skip};
+use crate::tutor::diagnose::Mistake;
 use crate::tutor::practice::Summary;
 
 impl ReportWords for Id {
@@ -263,6 +264,11 @@ impl ReportWords for Id {
             B::Disagreements => "kasus ketika jalur float gagal tetapi jalur eksak tidak, atau sebaliknya (overflow pada f32 adalah kesalahan)",
             B::Unreferenced => "komponen tanpa acuan eksak (akar kuadrat yang tidak dapat difaktorkan `Real`; tidak dihitung)",
         }
+    }
+
+    fn mistake(&self, m: &Mistake) -> &'static str {
+        // every code of the catalog has its words (a test in mistakes.rs)
+        super::mistakes::mistake(m.code).unwrap_or(m.description)
     }
 
     fn practice(&self, w: &P) -> String {
