@@ -18,9 +18,9 @@ use crate::error::{Error, Result};
 use crate::input::part::Problem;
 use crate::input::problem::ProblemIn;
 use crate::msg::{CliWord, DocWord, ErrMsg, Msg};
-use crate::report::words;
 use crate::num::Precision;
 use crate::report::lang::Lang;
+use crate::report::words;
 use crate::report::Style;
 use crate::tutor::solution::Report;
 use args::{Cli, Command};
@@ -375,11 +375,7 @@ fn style_of(cli: &Cli) -> Style {
 /// A report as JSON or as the worked solution; its warnings go to stderr.
 fn report_text(report: &Report, json: bool, style: &Style) -> String {
     for w in &report.warnings {
-        print::stderr_line(&format!(
-            "{}: {}",
-            style.doc(DocWord::Warning),
-            style.w(w)
-        ));
+        print::stderr_line(&format!("{}: {}", style.doc(DocWord::Warning), style.w(w)));
     }
     if json {
         serde_json::to_string_pretty(&report.to_json(style.lang)).unwrap_or_default() + "\n"
@@ -398,7 +394,10 @@ fn bench(quick: bool, cases: Option<u16>, json: bool, lang: Lang) -> String {
     if let Some(n) = cases {
         set.cases = n as usize;
     }
-    let bar = terminal_bar(Stage::ALL.len() as u64, words::of(lang).cli(CliWord::Measuring));
+    let bar = terminal_bar(
+        Stage::ALL.len() as u64,
+        words::of(lang).cli(CliWord::Measuring),
+    );
     let (inp, rows) = crate::bench::measure_with(&set, &mut |k, _| {
         if let Some(b) = &bar {
             b.set_position(k as u64);

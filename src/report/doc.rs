@@ -3,8 +3,8 @@
 //! compiles (ASCII only: every symbol the steps use is mapped to a LaTeX
 //! command). Used for exam answer keys.
 
-use crate::report::html;
 use crate::msg::DocWord;
+use crate::report::html;
 use crate::report::lang::Lang;
 use crate::report::latex::{latex_math, latex_text};
 use crate::report::{Report, Style};

@@ -18,14 +18,14 @@
 //! preceded by a backslash. Each question is one line (a blank line ends a
 //! question).
 
-use crate::report::escape;
 use crate::msg::QuizWord as Q;
+use crate::report::escape;
 use crate::report::lang::Lang;
-use crate::report::words;
 use crate::report::moodle::{
     category, esc, esc_text, feedback, intro_html, number, question_name, solution_html,
     tolerance_text, Written,
 };
+use crate::report::words;
 use crate::stages::trace::Val;
 use crate::tutor::generate::quiz::{Blank, Question, Quiz, Typed};
 use std::fmt::Write as _;

@@ -297,11 +297,7 @@ pub fn solution_html(question: &Question, figures: &str, st: &Style) -> String {
             let _ = write!(s, "<li>{line}</li>");
         }
     }
-    let _ = write!(
-        s,
-        "</ul>{figures}<h3>{}</h3>",
-        w(D::WorkedSolution)
-    );
+    let _ = write!(s, "</ul>{figures}<h3>{}</h3>", w(D::WorkedSolution));
     let mut section: Option<&crate::msg::Msg> = None;
     let mut parts = 0;
     for (k, step) in question.problem.report.steps.iter().enumerate() {

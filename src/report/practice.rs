@@ -244,11 +244,7 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
         out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
     }
     if let Some(why) = &o.why {
-        let line = format!(
-            "{}: {}",
-            look.w(P::SourceWrong),
-            look.style.w(why)
-        );
+        let line = format!("{}: {}", look.w(P::SourceWrong), look.style.w(why));
         out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
     }
     if o.code == "wrong" && o.mistakes.is_empty() {
@@ -328,10 +324,7 @@ fn summary_text(s: &Summary, look: &Look) -> String {
     let lang = look.style.lang;
     let mut out = format!("\n{}", words::of(lang).practice_summary(s));
     if !s.mistakes.is_empty() {
-        out.push_str(&format!(
-            "  {}\n",
-            look.w(P::MistakesMade)
-        ));
+        out.push_str(&format!("  {}\n", look.w(P::MistakesMade)));
         for (m, keys) in &s.mistakes {
             let line = format!(
                 "• {} [{}]: {}",

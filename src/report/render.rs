@@ -5,8 +5,8 @@
 use super::lang::{Lang, NumStyle};
 use super::words;
 use crate::input::scene::Shading;
-pub use crate::msg::{PerPixel, Summary};
 use crate::msg::StatWord;
+pub use crate::msg::{PerPixel, Summary};
 use crate::render::Stats;
 use crate::stages::trace::Val;
 use crate::tutor::solution::{RenderRun, Times};
@@ -117,9 +117,8 @@ fn counts(st: &Stats, per_pixel: String) -> Vec<Row> {
 /// The median times of `--stats`, in milliseconds.
 fn times(t: &Times, lang: Lang) -> Vec<Row> {
     use StatWord as S;
-    let r = |depth: usize, k: S, ms: f64| {
-        (depth, k, NumStyle::of(lang).number(&format!("{ms:.2} ms")))
-    };
+    let r =
+        |depth: usize, k: S, ms: f64| (depth, k, NumStyle::of(lang).number(&format!("{ms:.2} ms")));
     vec![
         r(0, S::Geometry { runs: t.runs }, t.geometry),
         r(0, S::Binning, t.binning),

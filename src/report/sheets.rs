@@ -2,9 +2,9 @@
 //! the worked solutions) of a generated exam, as Markdown or LaTeX bodies,
 //! and the whole exam as JSON.
 
+use crate::msg::DocWord;
 use crate::report::doc::Doc;
 use crate::report::lang::Lang;
-use crate::msg::DocWord;
 use crate::report::words::{self, words};
 use crate::report::{exact_json, value_json, Style};
 use crate::stages::trace::Val;

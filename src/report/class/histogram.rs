@@ -1,8 +1,8 @@
 //! The class's score distribution drawn: an SVG bar chart for the HTML
 //! report, bars of text for Markdown.
 
-use crate::report::figure::xml_escape;
 use crate::msg::ClassWord as C;
+use crate::report::figure::xml_escape;
 use crate::report::lang::Lang;
 use crate::report::words;
 use crate::tutor::class::stats::Bin;

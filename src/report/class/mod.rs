@@ -7,8 +7,8 @@ pub mod lecturer;
 mod page;
 
 use crate::error::Error;
-use crate::report::check::{to_json, VERDICTS};
 use crate::msg::ClassWord as C;
+use crate::report::check::{to_json, VERDICTS};
 use crate::report::lang::{cut_message, Lang};
 use crate::report::words;
 use crate::tutor::check::{Marking, Verdict};

@@ -4,17 +4,17 @@
 //! wrong answers no mistake explains, the students with the histogram.
 
 use super::histogram;
+use crate::msg::{CheckWord, ClassWord as C, DocWord};
 use crate::report::check::VERDICTS;
 use crate::report::doc::Doc;
-use crate::msg::{CheckWord, ClassWord as C, DocWord};
 use crate::report::lang::{Lang, NumStyle};
 use crate::report::mistakes::mistake_text;
 use crate::report::words;
 use crate::report::words::report::dec;
 use crate::report::Style;
 use crate::tutor::check::Settings;
-use crate::tutor::class::stats::{Gap, MistakeStats, Stats, StepRef};
 use crate::tutor::check::Verdict;
+use crate::tutor::class::stats::{Gap, MistakeStats, Stats, StepRef};
 use crate::tutor::class::Class;
 
 /// A share or an index with two decimals, in the language's decimal mark,
@@ -165,10 +165,7 @@ fn summary(doc: Doc, class: &Class, s: &Stats, settings: &Settings, lang: Lang) 
         })
         .collect();
     if !failed.is_empty() {
-        out.push_str(&para(
-            doc,
-            &esc(doc, &w(lang, C::NotMarked)),
-        ));
+        out.push_str(&para(doc, &esc(doc, &w(lang, C::NotMarked))));
         out.push_str(&list(doc, &failed));
     }
     out
@@ -363,7 +360,11 @@ fn wrong_section(doc: Doc, s: &Stats, st: &Style) -> String {
     let mut rows = Vec::new();
     for wa in &s.wrong_answers {
         let key = match wa.variant {
-            Some(v) => format!("{} ({} {v})", wa.key, words::of(lang).doc(&DocWord::Variant)),
+            Some(v) => format!(
+                "{} ({} {v})",
+                wa.key,
+                words::of(lang).doc(&DocWord::Variant)
+            ),
             None => wa.key.clone(),
         };
         let expected = wa

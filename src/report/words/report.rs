@@ -9,8 +9,8 @@ use crate::msg::{
 };
 use crate::num::format::fmt_dec;
 use crate::report::lang::NumStyle;
-use crate::tutor::class::stats::Flag;
 use crate::tutor::check::Verdict;
+use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
 use crate::tutor::diagnose::Mistake;
 use crate::tutor::practice::Summary;
@@ -362,12 +362,43 @@ mod tests {
     fn listed(c: &C, k: &K, d: &D, q: &Q, p: &P, (s, b, l): (S, B, L)) {
         use C::*;
         match c {
-            ClassReport | Student | Students | Score | FollowThrough | Mistakes | Mistake
-            | Key | Flag | Problem | Title | Facility | WholeExam | Harder | Easier
-            | AnswerKeys | Problems | Variants | MistakesHeading | WrongHeading
-            | StudentsHeading | WhoWhich | Scores | Summary { .. } | NotMarked | Definitions
-            | VariantsNote | NoMistake | WrongNote | NoneFound | StudentCount(_) | Explains
-            | TeachAgain | StepOf { .. } | DistributionPct | Distribution | ScoreAxis => {}
+            ClassReport
+            | Student
+            | Students
+            | Score
+            | FollowThrough
+            | Mistakes
+            | Mistake
+            | Key
+            | Flag
+            | Problem
+            | Title
+            | Facility
+            | WholeExam
+            | Harder
+            | Easier
+            | AnswerKeys
+            | Problems
+            | Variants
+            | MistakesHeading
+            | WrongHeading
+            | StudentsHeading
+            | WhoWhich
+            | Scores
+            | Summary { .. }
+            | NotMarked
+            | Definitions
+            | VariantsNote
+            | NoMistake
+            | WrongNote
+            | NoneFound
+            | StudentCount(_)
+            | Explains
+            | TeachAgain
+            | StepOf { .. }
+            | DistributionPct
+            | Distribution
+            | ScoreAxis => {}
         }
         match k {
             K::Answer
@@ -537,9 +568,15 @@ mod tests {
         };
         let en = of(Lang::En).class(&summary);
         let id = of(Lang::Id).class(&summary);
-        assert!(en.starts_with("12 students marked; tolerance 0.5 %"), "{en}");
+        assert!(
+            en.starts_with("12 students marked; tolerance 0.5 %"),
+            "{en}"
+        );
         assert!(en.ends_with("follow-through off."), "{en}");
-        assert!(id.starts_with("12 mahasiswa dinilai; toleransi 0,5 %"), "{id}");
+        assert!(
+            id.starts_with("12 mahasiswa dinilai; toleransi 0,5 %"),
+            "{id}"
+        );
         assert!(id.ends_with("follow-through tidak aktif."), "{id}");
     }
 

@@ -5,15 +5,15 @@
 use super::Id;
 use crate::msg::BenchWord as B;
 use crate::msg::CheckWord as K;
-use crate::msg::CliWord as L;
-use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
 use crate::msg::ClassWord as C;
+use crate::msg::CliWord as L;
 use crate::msg::PracticeWord as P;
 use crate::msg::StatWord as S;
+use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
 use crate::report::lang::NumStyle;
 use crate::report::words::report::{dec, exam_title, ReportWords};
-use crate::tutor::class::stats::Flag;
 use crate::tutor::check::Verdict;
+use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
 use crate::tutor::diagnose::Mistake;
 use crate::tutor::practice::Summary;
