@@ -11,7 +11,7 @@ use crate::msg::ClassWord as C;
 use crate::report::check::{to_json, VERDICTS};
 use crate::report::lang::{cut_message, Lang};
 use crate::report::words;
-use crate::tutor::check::{Marking, Verdict};
+use crate::tutor::check::Marking;
 use crate::tutor::class::{Class, Note, Sheet, Skip};
 use serde_json::{json, Value};
 
@@ -42,22 +42,19 @@ fn mistakes(ms: &[(String, Marking)]) -> String {
     codes.join(" ")
 }
 
-/// A sheet's counts over all its parts: score, total, correct, too coarse,
-/// wrong, missing, unparseable, follow-through.
+/// A sheet's counts over all its parts: score, total, each verdict's (in
+/// the order of [`VERDICTS`], the columns'), follow-through.
 fn counts(ms: &[(String, Marking)]) -> (f64, usize, [usize; 6]) {
     let sum = |f: &dyn Fn(&Marking) -> usize| ms.iter().map(|(_, m)| f(m)).sum::<usize>();
-    let c = |v: Verdict| sum(&|m: &Marking| m.count(v));
+    let mut n = [0; 6];
+    for (i, v) in VERDICTS.iter().enumerate() {
+        n[i] = sum(&|m: &Marking| m.count(*v));
+    }
+    n[5] = sum(&|m: &Marking| m.follow_through());
     (
         ms.iter().fold(0.0, |s, (_, m)| s + m.score()),
         sum(&|m: &Marking| m.total()),
-        [
-            c(Verdict::Correct),
-            c(Verdict::TooCoarse),
-            c(Verdict::Wrong),
-            c(Verdict::Missing),
-            c(Verdict::Unparseable),
-            sum(&|m: &Marking| m.follow_through()),
-        ],
+        n,
     )
 }
 
