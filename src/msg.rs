@@ -1,8 +1,8 @@
 //! Message keys: what the stages, the tutor and the commands want to say to
 //! a person, as data with its parameters. They never hold words of any
 //! language; `report::words` turns each key into English or Bahasa Indonesia
-//! with one exhaustive match, so a key without both translations does not
-//! compile. Only [`Msg::Math`] carries text, and that text is notation
+//! with one exhaustive match per language, so a key without its words in
+//! every language does not compile. Only [`Msg::Math`] carries text, and that text is notation
 //! (`n = (Pe − Pr) / |Pe − Pr|`), the same in every language.
 //!
 //! This file sits at the base beside `error.rs`, so every layer can name a
@@ -16,7 +16,7 @@ mod pixel;
 mod render;
 mod report;
 mod said;
-pub use drawn::{CameraText, DrawnTitle, ShadeAsked, Statement};
+pub use drawn::{DrawnTitle, NamedPoint, Number, ShadeAsked, StatedCamera, Statement, Triple};
 pub use errors::{Bound, ClapErr, ErrMsg, IoWhy, NumErr, Thing, TomlErr, Twice, Want};
 pub use figure::{FigWord, FigureMsg, Panel};
 pub use lang::Lang;

@@ -735,7 +735,9 @@ fn no_english_sentence_under_lang_id() {
         }
         let f = path.to_str().unwrap();
         runs.push((own(&["solve", f, "--html", &page_arg]), String::new(), true));
-        runs.push((own(&["practice", f]), "show\n".repeat(60), false));
+        // both hints before each answer: the second names the step's values
+        let hinted = "hint\nhint\nshow\n".repeat(60);
+        runs.push((own(&["practice", f]), hinted, false));
         let text = std::fs::read_to_string(&path).expect("reads");
         if text.contains("[printed]") {
             runs.push((

@@ -643,6 +643,38 @@ fn explain_pixel_shows_the_clipping_of_a_triangle_that_crosses_a_plane() {
         .any(|s| s["title"] == "Snapping Q0 to 1/256 pixel"));
 }
 
+/// The values of a step are named in the reader's words in the text (the
+/// polygon clipped plane by plane was named in English under `--lang id`)
+/// and under the same English keys in the JSON of every language.
+#[test]
+fn explain_pixel_names_the_clipped_polygon_in_indonesian_and_keys_it_in_english() {
+    let scene = "problems/render/camera-triangle-scene.toml";
+    let id = explain_steps(scene, "10,195", &["--lang", "id"]);
+    let clipped = id
+        .iter()
+        .filter(|s| s["result"]["clipped polygon"].is_array());
+    assert!(clipped.count() >= 1);
+    assert!(id
+        .iter()
+        .any(|s| s["values"]["polygon (x, y, z, w)"].is_array()));
+    let dir = std::env::temp_dir().join(format!("grafika-poligon-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let out = grafika()
+        .args(["--lang", "id", "render"])
+        .arg(root.join(scene))
+        .arg("-o")
+        .arg(dir.join("cut.png"))
+        .args(["--explain-pixel", "10,195", "--force"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("\n    poligon (x, y, z, w) =\n"), "{text}");
+    assert!(text.contains("\n  ⇒ poligon hasil clipping =\n"), "{text}");
+    assert!(!text.contains("polygon"), "{text}");
+}
+
 #[test]
 fn explain_pixel_speaks_indonesian_with_the_same_numbers() {
     let en = explain_steps("problems/render/cone-flat.toml", "330,150", &[]);

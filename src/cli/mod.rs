@@ -493,7 +493,8 @@ fn clap_message(rendered: &str, kind: &str) -> String {
     format!("{first}{tip} (see --help)")
 }
 
-pub use crate::report::lang::{cut_message, MAX_MESSAGE};
+pub use crate::report::lang::MAX_MESSAGE;
+pub use crate::report::words::cut_message;
 
 /// Prints an error on one line (stderr; and JSON on stdout with `--json`),
 /// a long echoed input cut; returns 2.

@@ -28,7 +28,7 @@ use crate::num::Scalar;
 use crate::stages::lighting::{
     self, check_color, gray, Light, LightKind, Material, Model, Rgb, Surface,
 };
-use crate::stages::trace::{Step, Trace, Val};
+use crate::stages::trace::{Name, Step, Trace, Val};
 use serde::Deserialize;
 use std::path::Path;
 use toml::Spanned;
@@ -437,7 +437,7 @@ fn surface<T: Scalar>(
             let v = v3(T::zero(), T::zero(), T::one());
             tr.step(|| {
                 Step::new(Msg::UnitVector("V".into()), "")
-                    .res("V", Val::vec3(&v))
+                    .res(Name::math("V"), Val::vec3(&v))
                     .note(Msg::DefaultView)
             });
             v

@@ -154,7 +154,7 @@ pub struct TiltIn {
 #[derive(Clone, Debug, Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 pub struct MaterialIn {
-    model: Option<ModelIn>,
+    model: Option<Model>,
     ka: Option<F>,
     kd: Option<F>,
     ks: Option<F>,
@@ -162,17 +162,6 @@ pub struct MaterialIn {
     specular: Option<Rgb>,
     emissive: Option<Rgb>,
     specular_requires_lit: Option<bool>,
-}
-
-#[derive(Clone, Copy, Debug, Deserialize)]
-#[serde(rename_all = "lowercase")]
-enum ModelIn {
-    Ambient,
-    Diffuse,
-    Specular,
-    Lambert,
-    Phong,
-    Blinn,
 }
 
 /// One step of an object's transform list.
@@ -538,14 +527,7 @@ fn camera_view(c: &CameraIn, p: &PerspectiveIn) -> Result<View> {
 fn material(m: &MaterialIn, base: Material<f32>) -> Result<Material<f32>> {
     let mut out = base;
     if let Some(model) = m.model {
-        out.model = match model {
-            ModelIn::Ambient => Model::Ambient,
-            ModelIn::Diffuse => Model::Diffuse,
-            ModelIn::Specular => Model::Specular,
-            ModelIn::Lambert => Model::Lambert,
-            ModelIn::Phong => Model::Phong,
-            ModelIn::Blinn => Model::Blinn,
-        };
+        out.model = model;
     }
     for (name, v, slot) in [
         ("ka", m.ka, &mut out.ka),

@@ -6,7 +6,7 @@
 use crate::input::scene::{Colors, Normals, Object, Scene, Shading};
 use crate::num::Fast32;
 use crate::render::raster::{self, ScreenVert, Tri, BAND};
-use crate::stages::lighting::{Light, LightKind, Material, Model};
+use crate::stages::lighting::{Light, LightKind, Material};
 use crate::stages::trace::{NoTrace, Trace};
 use crate::stages::window::{self, Window};
 use crate::stages::{camera, clip, projection};
@@ -297,10 +297,7 @@ fn material_of(obj: &Object, stats: &mut Stats) -> Material<Fast32> {
     if let Colors::One(c) = obj.colors {
         material.color = c.map(Fast32);
     }
-    let has_spec = matches!(
-        material.model,
-        Model::Phong | Model::Blinn | Model::Specular
-    );
+    let (_, _, has_spec) = material.model.terms();
     if material.ks.0 == 0.0 || !material.specular_on || !has_spec {
         material.specular_on = false;
         stats.specular_skipped += 1;

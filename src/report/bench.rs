@@ -62,7 +62,7 @@ pub fn table(inp: &Inputs, rows: &[Row], lang: crate::report::lang::Lang) -> Str
     for r in rows {
         // Numbers with the language's decimal mark (`56,99 ms` in Indonesian).
         let right = |s: String| {
-            Cell::new(crate::report::lang::NumStyle::of(lang).number(&s))
+            Cell::new(crate::report::words::of(lang).nums().number(&s))
                 .set_alignment(CellAlignment::Right)
         };
         let (tmax, tmed) = r.target_max_median();

@@ -7,8 +7,9 @@ use crate::msg::DocWord;
 use crate::report::html;
 use crate::report::lang::Lang;
 use crate::report::latex::{latex_math, latex_text};
+use crate::report::words;
 use crate::report::{Report, Style};
-use crate::stages::trace::{Step, Val};
+use crate::stages::trace::{Name, Step, Val};
 
 /// The output format of a document.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -53,9 +54,9 @@ impl Doc {
         }
     }
 
-    /// `name = value` (a matrix is set as a matrix).
+    /// `name = value` (a matrix is set as a matrix), `name` in the
+    /// reader's words.
     pub fn named(self, st: &Style, name: &str, v: &Val, arrow: bool) -> String {
-        let name = &crate::report::words::labels::label(name, st.lang);
         let lead = if arrow { "⇒ " } else { "" };
         match (self, v) {
             (Doc::Html, _) => html::named(st, name, v, arrow),
@@ -157,13 +158,15 @@ impl Doc {
         if !s.formula.is_empty() {
             lines.push(self.formula(&st.w(&s.formula)));
         }
-        let line = |(n, v): &(String, Val), arrow| match s.sub_of(n) {
-            Some(sub) if !v.is_matrix() => {
-                let lead = if arrow { "⇒ " } else { "" };
-                let name = crate::report::words::labels::label(n, st.lang);
-                self.text(&format!("{lead}{}", st.worked(&name, sub, v)))
+        let line = |(n, v): &(Name, Val), arrow| {
+            let name = words::of(st.lang).name(n);
+            match s.sub_of(n) {
+                Some(sub) if !v.is_matrix() => {
+                    let lead = if arrow { "⇒ " } else { "" };
+                    self.text(&format!("{lead}{}", st.worked(&name, sub, v)))
+                }
+                _ => self.named(st, &name, v, arrow),
             }
-            _ => self.named(st, n, v, arrow),
         };
         lines.extend(s.values.iter().map(|nv| line(nv, false)));
         lines.extend(s.result.iter().map(|nv| line(nv, true)));

@@ -7,6 +7,7 @@ use super::figure::xml_escape;
 use super::mathml;
 use super::Style;
 use crate::msg::{DocWord, Msg};
+use crate::report::words;
 use crate::stages::trace::{Step, Subst, Val};
 
 /// The page's style: readable on a screen, one column, and A4 in print
@@ -57,14 +58,14 @@ pub fn step(k: usize, s: &Step, st: &Style) -> String {
         words => out.push_str(&format!("<p>{}</p>", xml_escape(&st.w(words)))),
     }
     out.push_str("\n<ul>\n");
+    let names = words::of(st.lang);
     for (n, v) in &s.values {
-        out.push_str(&format!(
-            "<li>{}</li>\n",
-            line(st, n, s.sub_of(n), v, false)
-        ));
+        let line = line(st, &names.name(n), s.sub_of(n), v, false);
+        out.push_str(&format!("<li>{line}</li>\n"));
     }
     for (n, v) in &s.result {
-        out.push_str(&format!("<li>{}</li>\n", line(st, n, s.sub_of(n), v, true)));
+        let line = line(st, &names.name(n), s.sub_of(n), v, true);
+        out.push_str(&format!("<li>{line}</li>\n"));
     }
     out.push_str("</ul>\n");
     if let Some(n) = &s.note {
@@ -77,13 +78,12 @@ pub fn step(k: usize, s: &Step, st: &Style) -> String {
 }
 
 /// `name = substitution = value` in MathML when the step shows how the
-/// value was worked, else as [`named`].
+/// value was worked, else as [`named`]; `name` in the reader's words.
 pub fn line(st: &Style, name: &str, sub: Option<&Subst>, v: &Val, arrow: bool) -> String {
     match sub {
         Some(sub) if !v.is_matrix() => {
-            let name = crate::report::words::labels::label(name, st.lang);
             let lead = if arrow { "⇒ " } else { "" };
-            mathml::inline(&format!("{lead}{}", st.worked(&name, sub, v)))
+            mathml::inline(&format!("{lead}{}", st.worked(name, sub, v)))
         }
         _ => named(st, name, v, arrow),
     }
@@ -92,7 +92,6 @@ pub fn line(st: &Style, name: &str, sub: Option<&Subst>, v: &Val, arrow: bool) -
 /// `name = value` in MathML: a matrix as a table, numbers and vectors as
 /// notation, words (a status, yes/no) as text.
 pub fn named(st: &Style, name: &str, v: &Val, arrow: bool) -> String {
-    let name = &crate::report::words::labels::label(name, st.lang);
     let lead = if arrow { "⇒ " } else { "" };
     match v {
         Val::List(rows) if v.is_matrix() => format!(

@@ -16,10 +16,11 @@ pub fn tr<'a>(lang: Lang, en: &'a str, id: &'a str) -> &'a str {
 }
 
 /// How numbers are written for people: the decimal mark and the separator
-/// between the components of a vector. The one place either is chosen:
-/// English (and a Moodle quiz with `--decimal point`) writes `(0.5, 2, 3)`;
-/// Indonesian (and `--decimal comma`) writes `(0,5; 2; 3)`, so a comma never
-/// reads both as a decimal mark and as a separator.
+/// between the components of a vector. Each language declares its own
+/// (`report::words`' `MsgWords::nums`): English (and a Moodle quiz with
+/// `--decimal point`) writes `(0.5, 2, 3)`; Indonesian (and `--decimal
+/// comma`) writes `(0,5; 2; 3)`, so a comma never reads both as a decimal
+/// mark and as a separator.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct NumStyle {
     /// The decimal mark: `.` or `,`.
@@ -39,14 +40,6 @@ impl NumStyle {
         mark: ',',
         sep: "; ",
     };
-
-    /// The numbers of `lang`: the point in English, the comma in Indonesian.
-    pub fn of(lang: Lang) -> NumStyle {
-        match lang {
-            Lang::En => NumStyle::POINT,
-            Lang::Id => NumStyle::COMMA,
-        }
-    }
 
     /// One number (or a formula of numbers: `−√2/60 ≈ −0.02357`, `1.5e-3`,
     /// `12.35 ms`) that was formatted with the point, written with this mark.
@@ -72,23 +65,9 @@ impl NumStyle {
 }
 
 /// At most this many characters of a message are printed: an error about
-/// a 100 KB input quotes its start and end, not all of it.
+/// a 100 KB input quotes its start and end, not all of it
+/// (`report::words::cut_message`).
 pub const MAX_MESSAGE: usize = 300;
-
-/// `message` cut to [`MAX_MESSAGE`] characters, its middle replaced by the
-/// number of characters left out.
-pub fn cut_message(message: &str, lang: Lang) -> String {
-    let n = message.chars().count();
-    if n <= MAX_MESSAGE {
-        return message.to_string();
-    }
-    let keep = MAX_MESSAGE / 2;
-    let head: String = message.chars().take(keep).collect();
-    let tail: String = message.chars().skip(n - keep).collect();
-    let cut = n - 2 * keep;
-    let said = tr(lang, "characters cut", "karakter dipotong");
-    format!("{head} … ({cut} {said}) … {tail}")
-}
 
 #[cfg(test)]
 mod tests {
@@ -97,8 +76,8 @@ mod tests {
     #[test]
     fn numbers_take_the_mark_and_separator_of_their_style() {
         let v = "(1.5, -2, 0.25)";
-        assert_eq!(NumStyle::of(Lang::En).values(v), "(1.5, -2, 0.25)");
-        assert_eq!(NumStyle::of(Lang::Id).values(v), "(1,5; -2; 0,25)");
+        assert_eq!(NumStyle::POINT.values(v), "(1.5, -2, 0.25)");
+        assert_eq!(NumStyle::COMMA.values(v), "(1,5; -2; 0,25)");
         assert_eq!(
             NumStyle::COMMA.number("−√2/60 ≈ −0.02357"),
             "−√2/60 ≈ −0,02357"

@@ -24,7 +24,7 @@ pub mod words;
 
 use crate::msg::{DocWord, Msg, Printed};
 use crate::num::Shown;
-use crate::stages::trace::{Step, Subst, Val};
+use crate::stages::trace::{Name, Step, Subst, Val};
 use crate::tutor::solution::{Asked, Compared, Comparison, Report};
 use comfy_table::{presets, Table};
 use lang::{Lang, NumStyle};
@@ -65,7 +65,7 @@ impl Style {
     }
     /// How this style's language writes numbers.
     pub fn nums(&self) -> NumStyle {
-        NumStyle::of(self.lang)
+        words::of(self.lang).nums()
     }
     /// Values formatted the English way written in this style's language
     /// ([`NumStyle::values`]): `(0.8, 0.6, 0)` → `(0,8; 0,6; 0)` in Indonesian.
@@ -194,7 +194,7 @@ impl Style {
         if !s.formula.is_empty() {
             out.push_str(&format!("    {}\n", self.w(&s.formula)));
         }
-        let name = |k: &str| words::labels::label(k, self.lang);
+        let name = |k: &Name| words::of(self.lang).name(k);
         for (k, v) in &s.values {
             out.push_str(&self.line("    ", &name(k), s.sub_of(k), v));
             out.push('\n');
@@ -327,7 +327,7 @@ impl Report {
     /// as a render, it answers nothing.
     pub fn answer_heading(&self, lang: Lang) -> String {
         match &self.asked {
-            Asked::Render(_) => words::render::heading(lang).to_string(),
+            Asked::Render(_) => words::of(lang).render_heading().to_string(),
             _ => words::of(lang).doc(&DocWord::Answer),
         }
     }
@@ -337,7 +337,7 @@ impl Report {
         match &self.asked {
             Asked::Render(run) => render::summary(run)
                 .into_iter()
-                .map(|(k, v)| (k.key(), words::render::summary(k, lang), v))
+                .map(|(k, v)| (k.key(), words::of(lang).summary(k), v))
                 .collect(),
             _ => self
                 .result
@@ -657,8 +657,8 @@ pub fn exact_json(v: &Val) -> Value {
 /// A step as JSON (docs/spec.md §3); its title, formula, section and note in `lang`.
 pub fn step_json(s: &Step, lang: Lang) -> Value {
     let w = |m: &Msg| words::words(m, lang);
-    let obj = |kv: &[(String, Val)], f: fn(&Val) -> Value| {
-        Value::Object(kv.iter().map(|(k, v)| (k.clone(), f(v))).collect())
+    let obj = |kv: &[(Name, Val)], f: fn(&Val) -> Value| {
+        Value::Object(kv.iter().map(|(k, v)| (k.to_string(), f(v))).collect())
     };
     let mut o = json!({
         "title": w(&s.title),
@@ -670,7 +670,10 @@ pub fn step_json(s: &Step, lang: Lang) -> Value {
     if !s.subs.is_empty() {
         // notation with the numbers written the English way, like `exact`
         let en = Style::new(4, true, Lang::En);
-        let subs = s.subs.iter().map(|(k, x)| (k.clone(), json!(en.subst(x))));
+        let subs = s
+            .subs
+            .iter()
+            .map(|(k, x)| (k.to_string(), json!(en.subst(x))));
         o["substituted"] = Value::Object(subs.collect());
     }
     if let Some(sec) = &s.section {

@@ -28,7 +28,7 @@ use crate::msg::{DocWord as D, Msg, QuizWord as Q};
 use crate::report::figure::{drawings::drawings, svg::to_svg};
 use crate::report::lang::{Lang, NumStyle};
 use crate::report::mistakes::mistake_text;
-use crate::report::words::{self as said, statement, words};
+use crate::report::words::{self as said, words};
 use crate::report::Style;
 use crate::stages::trace::Val;
 use crate::tutor::generate::quiz::{Blank, Question, Quiz, Typed, Typing, Wrong};
@@ -154,7 +154,7 @@ pub fn question_name(g: &Generated, i: usize, v: usize, lang: Lang) -> String {
 pub fn intro_html(question: &Question, q: &Quiz, w: &Written) -> String {
     let lang = w.style.lang;
     let statement = match &question.problem.statement {
-        Msg::Statement(s) => statement(s, lang, w.decimal.nums()),
+        Msg::Statement(s) => crate::report::words::of(lang).statement(s, w.decimal.nums()),
         other => words(other, lang),
     };
     format!(

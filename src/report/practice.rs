@@ -308,8 +308,9 @@ fn hint_text(level: u8, step: Option<&Step>, look: &Look) -> String {
         out.push_str(&format!("    {}\n", look.style.w(&s.formula)));
     }
     if level >= 2 {
+        let names = words::of(look.style.lang);
         for (k, v) in &s.values {
-            out.push_str(&look.style.named("    ", k, v));
+            out.push_str(&look.style.named("    ", &names.name(k), v));
             out.push('\n');
         }
         if s.values.is_empty() {
@@ -421,7 +422,7 @@ pub fn event_json(ev: &Event, lang: Lang) -> Value {
             "title": step.as_ref().map(|s| w(&s.title)),
             "formula": step.as_ref().map(|s| w(&s.formula)),
             "values": step.as_ref().filter(|_| *level >= 2).map(|s| {
-                Value::Object(s.values.iter().map(|(k, v)| (k.clone(), value_json(v))).collect())
+                Value::Object(s.values.iter().map(|(k, v)| (k.to_string(), value_json(v))).collect())
             }),
         }),
         Event::Show {

@@ -2,7 +2,7 @@
 //! same in every language; only the text shows the labels in Bahasa
 //! Indonesia), the `--stats` table and the JSON's `stats`.
 
-use super::lang::{Lang, NumStyle};
+use super::lang::Lang;
 use super::words;
 use crate::input::scene::Shading;
 use crate::msg::StatWord;
@@ -73,7 +73,7 @@ pub fn stats_json(run: &RenderRun) -> Value {
 pub fn stats_text(run: &RenderRun, lang: Lang) -> String {
     let (st, t) = (&run.stats, &run.times);
     let said = words::of(lang);
-    let per_pixel = words::render::per_pixel(&per_pixel_of(&run.shadings), lang);
+    let per_pixel = words::of(lang).per_pixel(&per_pixel_of(&run.shadings));
     let rows: Vec<(String, String)> = counts(st, per_pixel)
         .into_iter()
         .chain(times(t, lang))
@@ -117,8 +117,13 @@ fn counts(st: &Stats, per_pixel: String) -> Vec<Row> {
 /// The median times of `--stats`, in milliseconds.
 fn times(t: &Times, lang: Lang) -> Vec<Row> {
     use StatWord as S;
-    let r =
-        |depth: usize, k: S, ms: f64| (depth, k, NumStyle::of(lang).number(&format!("{ms:.2} ms")));
+    let r = |depth: usize, k: S, ms: f64| {
+        (
+            depth,
+            k,
+            words::of(lang).nums().number(&format!("{ms:.2} ms")),
+        )
+    };
     vec![
         r(0, S::Geometry { runs: t.runs }, t.geometry),
         r(0, S::Binning, t.binning),

@@ -6,7 +6,7 @@ use crate::error::{Error, Result};
 use crate::msg::{Msg, PixelMsg};
 use crate::num::vec::{self, V3};
 use crate::num::Scalar;
-use crate::stages::trace::{Step, Subst, Trace, Val};
+use crate::stages::trace::{Name, Step, Subst, Trace, Val};
 use nalgebra::{Matrix4, Vector4};
 
 /// An up vector closer than this to the view direction (radians) gets a warning.
@@ -102,11 +102,11 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
     };
     tr.step(|| {
         Step::new(Msg::CamAxisV, "v = n × u")
-            .val("n", Val::vec3(&n))
-            .val("u", Val::vec3(&u))
-            .res("v", Val::vec3(&v))
+            .val(Name::math("n"), Val::vec3(&n))
+            .val(Name::math("u"), Val::vec3(&u))
+            .res(Name::math("v"), Val::vec3(&v))
             .sub(
-                "v",
+                Name::math("v"),
                 Subst::new("{} × {}", vec![Val::vec3(&n), Val::vec3(&u)]),
             )
     });
@@ -149,14 +149,14 @@ fn view_direction<T: Scalar>(pe: &V3<T>, d: &V3<T>) -> Result<(V3<T>, T)> {
 /// The step of the axis n.
 fn n_step<T: Scalar>(cam: &Camera<T>, d: &V3<T>, dn: &T, n: &V3<T>) -> Step {
     Step::new(Msg::CamAxisN, "n = (Pe − Pr) / |Pe − Pr|")
-        .val("Pe", Val::vec3(&cam.pe))
-        .val("Pr", Val::vec3(&cam.pr))
-        .val("Pe − Pr", Val::vec3(d))
-        .sub("Pe − Pr", Subst::difference(&cam.pe, &cam.pr))
-        .val("|Pe − Pr|", Val::num(dn))
-        .sub("|Pe − Pr|", Subst::norm(d))
-        .res("n", Val::vec3(n))
-        .sub("n", Subst::quotient(Val::vec3(d), Val::num(dn)))
+        .val(Name::math("Pe"), Val::vec3(&cam.pe))
+        .val(Name::math("Pr"), Val::vec3(&cam.pr))
+        .val(Name::math("Pe − Pr"), Val::vec3(d))
+        .sub(Name::math("Pe − Pr"), Subst::difference(&cam.pe, &cam.pr))
+        .val(Name::math("|Pe − Pr|"), Val::num(dn))
+        .sub(Name::math("|Pe − Pr|"), Subst::norm(d))
+        .res(Name::math("n"), Val::vec3(n))
+        .sub(Name::math("n"), Subst::quotient(Val::vec3(d), Val::num(dn)))
 }
 
 /// Warns when Vup is nearly parallel to d: sin of the angle between them =
@@ -174,17 +174,17 @@ fn u_step<T: Scalar>(vup: &V3<T>, n: &V3<T>, u: &V3<T>) -> Step {
     let vxn = vec::cross(vup, n);
     let len = vec::norm(&vxn);
     Step::new(Msg::CamAxisU, "u = (Vup × n) / |Vup × n|")
-        .val("Vup", Val::vec3(vup))
-        .val("Vup × n", Val::vec3(&vxn))
+        .val(Name::math("Vup"), Val::vec3(vup))
+        .val(Name::math("Vup × n"), Val::vec3(&vxn))
         .sub(
-            "Vup × n",
+            Name::math("Vup × n"),
             Subst::new("{} × {}", vec![Val::vec3(vup), Val::vec3(n)]),
         )
-        .val("|Vup × n|", Val::num(&len))
-        .sub("|Vup × n|", Subst::norm(&vxn))
-        .res("u", Val::vec3(u))
+        .val(Name::math("|Vup × n|"), Val::num(&len))
+        .sub(Name::math("|Vup × n|"), Subst::norm(&vxn))
+        .res(Name::math("u"), Val::vec3(u))
         .sub(
-            "u",
+            Name::math("u"),
             match len == T::one() {
                 true => Subst::default(),
                 false => Subst::quotient(Val::vec3(&vxn), Val::num(&len)),
@@ -206,13 +206,13 @@ fn check_step<T: Scalar>(b: &Basis<T>) -> Step {
         Msg::CamCheck,
         "u·v = v·n = n·u = 0,  |u| = |v| = |n| = 1,  (u × v)·n = 1",
     )
-    .val("u·v", Val::num(&dots[0]))
-    .val("v·n", Val::num(&dots[1]))
-    .val("n·u", Val::num(&dots[2]))
-    .val("u·u", Val::num(&lens[0]))
-    .val("v·v", Val::num(&lens[1]))
-    .val("n·n", Val::num(&lens[2]))
-    .res("(u × v)·n", Val::num(&handed))
+    .val(Name::math("u·v"), Val::num(&dots[0]))
+    .val(Name::math("v·n"), Val::num(&dots[1]))
+    .val(Name::math("n·u"), Val::num(&dots[2]))
+    .val(Name::math("u·u"), Val::num(&lens[0]))
+    .val(Name::math("v·v"), Val::num(&lens[1]))
+    .val(Name::math("n·n"), Val::num(&lens[2]))
+    .res(Name::math("(u × v)·n"), Val::num(&handed))
     .note(if good {
         Msg::Orthonormal(true)
     } else {
@@ -257,17 +257,17 @@ pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> 
     }
     tr.step(|| {
         Step::new(Msg::CamMatrix, Msg::FCamMatrix)
-            .val("u", Val::vec3(&b.u))
-            .val("v", Val::vec3(&b.v))
-            .val("n", Val::vec3(&b.n))
-            .val("Pe", Val::vec3(pe))
-            .res("Mcam", Val::mat4(&camera_matrix(b, pe)))
+            .val(Name::math("u"), Val::vec3(&b.u))
+            .val(Name::math("v"), Val::vec3(&b.v))
+            .val(Name::math("n"), Val::vec3(&b.n))
+            .val(Name::math("Pe"), Val::vec3(pe))
+            .res(Name::math("Mcam"), Val::mat4(&camera_matrix(b, pe)))
     });
     tr.step(|| {
         Step::new(Msg::ViewMatrix, Msg::FViewMatrix)
-            .val("R", Val::mat4(&rot))
-            .val("T(−Pe)", Val::mat4(&trans))
-            .res("V", Val::mat4(&view))
+            .val(Name::math("R"), Val::mat4(&rot))
+            .val(Name::math("T(−Pe)"), Val::mat4(&trans))
+            .res(Name::math("V"), Val::mat4(&view))
     });
     Ok(view)
 }
@@ -341,16 +341,25 @@ pub fn to_eye<T: Scalar>(
             Msg::EyeCoords(name.to_string()),
             format!("{name}' = V·{name} = (u·({name} − Pe), v·({name} − Pe), n·({name} − Pe))"),
         )
-        .val(name.to_string(), Val::vec3(p))
-        .val(format!("{name} − Pe"), Val::vec3(&rel))
-        .sub(format!("{name} − Pe"), Subst::difference(p, pe))
-        .val(format!("u·({name} − Pe)"), Val::num(&e[0]))
-        .sub(format!("u·({name} − Pe)"), Subst::dot(&b.u, &rel))
-        .val(format!("v·({name} − Pe)"), Val::num(&e[1]))
-        .sub(format!("v·({name} − Pe)"), Subst::dot(&b.v, &rel))
-        .val(format!("n·({name} − Pe)"), Val::num(&e[2]))
-        .sub(format!("n·({name} − Pe)"), Subst::dot(&b.n, &rel))
-        .res(format!("{name}'"), Val::vec3(&e))
+        .val(Name::math(name), Val::vec3(p))
+        .val(Name::math(format!("{name} − Pe")), Val::vec3(&rel))
+        .sub(Name::math(format!("{name} − Pe")), Subst::difference(p, pe))
+        .val(Name::math(format!("u·({name} − Pe)")), Val::num(&e[0]))
+        .sub(
+            Name::math(format!("u·({name} − Pe)")),
+            Subst::dot(&b.u, &rel),
+        )
+        .val(Name::math(format!("v·({name} − Pe)")), Val::num(&e[1]))
+        .sub(
+            Name::math(format!("v·({name} − Pe)")),
+            Subst::dot(&b.v, &rel),
+        )
+        .val(Name::math(format!("n·({name} − Pe)")), Val::num(&e[2]))
+        .sub(
+            Name::math(format!("n·({name} − Pe)")),
+            Subst::dot(&b.n, &rel),
+        )
+        .res(Name::Eye(name.to_string()), Val::vec3(&e))
     });
     if !vec::is_finite(&e) {
         return Err(Error::why(
@@ -378,8 +387,8 @@ pub fn to_world<T: Scalar>(m: &Matrix4<T>, name: &str, p: &V3<T>, tr: &mut impl 
             Msg::Pixel(PixelMsg::World(name.to_string())),
             format!("{name}w = M·{name}"),
         )
-        .val(name.to_string(), Val::vec3(p))
-        .res(format!("{name}w"), Val::vec3(&w))
+        .val(Name::math(name), Val::vec3(p))
+        .res(Name::math(format!("{name}w")), Val::vec3(&w))
     });
     w
 }
@@ -399,8 +408,8 @@ pub fn eye_by_matrix<T: Scalar>(
             Msg::Pixel(PixelMsg::Eye(name.to_string())),
             format!("{name}' = V·{name}w = (V·M)·{name}"),
         )
-        .val(name.to_string(), Val::vec3(p))
-        .res(format!("{name}'"), Val::vec3(&e))
+        .val(Name::math(name), Val::vec3(p))
+        .res(Name::Eye(name.to_string()), Val::vec3(&e))
         .note(Msg::Pixel(PixelMsg::Composed))
     });
     e

@@ -7,7 +7,7 @@ use crate::error::{Error, Result};
 use crate::msg::{Msg, PixelMsg, Trivial};
 use crate::num::vec::{self, V3};
 use crate::num::Scalar;
-use crate::stages::trace::{Step, Subst, Trace, Val};
+use crate::stages::trace::{Name, Step, Subst, Trace, Val};
 
 /// The box xmin ≤ x ≤ xmax, ymin ≤ y ≤ ymax, zmin ≤ z ≤ zmax (boundary inside).
 #[derive(Clone, Debug, PartialEq)]
@@ -147,7 +147,7 @@ pub fn outcode_clip<T: Scalar>(c: &nalgebra::Vector4<T>, name: &str, tr: &mut im
             Msg::Pixel(PixelMsg::Outcode(name.to_string())),
             Msg::Pixel(PixelMsg::FOutcode),
         )
-        .val("c", crate::stages::projection::vec4(c));
+        .val(Name::math("c"), crate::stages::projection::vec4(c));
         for (bit, &(axis, is_max, _, side)) in PLANES.iter().enumerate() {
             let a = ["x", "y", "z"][axis];
             let (op, lim) = if is_max { (">", "w") } else { ("<", "−w") };
@@ -155,7 +155,7 @@ pub fn outcode_clip<T: Scalar>(c: &nalgebra::Vector4<T>, name: &str, tr: &mut im
             let bound = if is_max { c[3].clone() } else { -c[3].clone() };
             let values = format!("{} {op} {}", short(&c[axis]), short(&bound));
             s = s.val(
-                format!("bit {} ({side})", bit + 1),
+                Name::Bit(bit, side),
                 Val::said(crate::msg::Said::BitTest(
                     set,
                     format!("{a} {op} {lim}"),
@@ -163,7 +163,7 @@ pub fn outcode_clip<T: Scalar>(c: &nalgebra::Vector4<T>, name: &str, tr: &mut im
                 )),
             );
         }
-        s.res("code", Val::text(code_str(code)))
+        s.res(Name::math("code"), Val::text(code_str(code)))
     });
     code
 }
@@ -249,9 +249,9 @@ fn clip_plane_step<T: Scalar, const N: usize>(
         Msg::Pixel(PixelMsg::ClipPlane(bit)),
         format!("d = {d} (≥ 0 inside),  t = d₀/(d₀ − d₁),  R = P₀ + t·(P₁ − P₀)"),
     )
-    .val("polygon (x, y, z, w)", pts(before))
-    .res("t", Val::List(ts))
-    .res("clipped polygon", pts(after))
+    .val(Name::Polygon, pts(before))
+    .res(Name::math("t"), Val::List(ts))
+    .res(Name::ClippedPolygon, pts(after))
 }
 
 /// An outcode written bit 6 first, as the text writes it (`001001`).
@@ -366,9 +366,9 @@ fn kept_points<T: Scalar>(
 fn trivial_step(code0: u8, code1: u8) -> Step {
     let and = code0 & code1;
     Step::new(Msg::TrivialTests, Msg::FTrivial)
-        .val("code0", Val::text(code_str(code0)))
-        .val("code1", Val::text(code_str(code1)))
-        .res("code0 AND code1", Val::text(code_str(and)))
+        .val(Name::math("code0"), Val::text(code_str(code0)))
+        .val(Name::math("code1"), Val::text(code_str(code1)))
+        .res(Name::math("code0 AND code1"), Val::text(code_str(and)))
         .note(if code0 | code1 == 0 {
             Msg::TrivialNote(Trivial::Accept)
         } else if and != 0 {
@@ -430,17 +430,17 @@ fn intersection_step<T: Scalar>(i: &Intersection<T>, p0: &V3<T>, p1: &V3<T>) -> 
             a = ["x", "y", "z"][axis]
         ),
     )
-    .val("t", Val::num(&i.t))
-    .sub("t", Subst::new("({} − {})/({} − {})", t_values))
-    .res("P(t)", Val::vec3(&i.point))
+    .val(Name::math("t"), Val::num(&i.t))
+    .sub(Name::math("t"), Subst::new("({} − {})/({} − {})", t_values))
+    .res(Name::math("P(t)"), Val::vec3(&i.point))
     .sub(
-        "P(t)",
+        Name::math("P(t)"),
         Subst::new(
             "{} + {}·{}",
             vec![Val::vec3(p0), Val::num(&i.t), Val::vec3(&vec::sub(p1, p0))],
         ),
     )
-    .res("code", Val::text(code_str(i.code)))
+    .res(Name::math("code"), Val::text(code_str(i.code)))
     .note(if i.code == 0 {
         Msg::Kept(true)
     } else {
@@ -455,17 +455,17 @@ fn segment_step<T: Scalar>(segment: &Option<(V3<T>, V3<T>)>, kept: &[T]) -> Step
         [] => Val::Null,
         _ => Val::List(kept.iter().map(Val::num).collect()),
     };
-    let s = Step::new(Msg::ClippedSegment, Msg::FSegment).val("t kept", ts);
+    let s = Step::new(Msg::ClippedSegment, Msg::FSegment).val(Name::TKept, ts);
     match segment {
         Some((a, z)) => s
-            .res("from", Val::vec3(a))
-            .res("to", Val::vec3(z))
+            .res(Name::From, Val::vec3(a))
+            .res(Name::To, Val::vec3(z))
             .note(if a == z {
                 Msg::TouchesPoint
             } else {
                 Msg::InsidePart
             }),
-        None => s.res("segment", Val::Null).note(Msg::Misses),
+        None => s.res(Name::Segment, Val::Null).note(Msg::Misses),
     }
 }
 
@@ -516,7 +516,7 @@ fn intersection_point<T: Scalar>(
 /// The step explaining one endpoint's outcode, bit by bit.
 fn code_step<T: Scalar>(name: &str, b: &ClipBox<T>, p: &V3<T>, code: u8) -> Step {
     let mut s = Step::new(Msg::OutcodeOf(name.to_string()), Msg::FOutcode)
-        .val(name.to_string(), Val::vec3(p));
+        .val(Name::math(name), Val::vec3(p));
     for (bit, &(axis, is_max, _, side)) in PLANES.iter().enumerate() {
         let a = ["x", "y", "z"][axis];
         let (op, lim) = if is_max {
@@ -528,11 +528,11 @@ fn code_step<T: Scalar>(name: &str, b: &ClipBox<T>, p: &V3<T>, code: u8) -> Step
         let test = format!("{a} {op} {a}{}", if is_max { "max" } else { "min" });
         let values = format!("{} {op} {}", short(&p[axis]), short(lim));
         s = s.val(
-            format!("bit {} ({side})", bit + 1),
+            Name::Bit(bit, side),
             Val::said(crate::msg::Said::BitTest(set, test, values)),
         );
     }
-    s.res("code", Val::text(code_str(code)))
+    s.res(Name::math("code"), Val::text(code_str(code)))
 }
 
 /// A number for a one-line remark: its exact form, else a short decimal.
@@ -603,11 +603,11 @@ pub fn liang_barsky<T: Scalar>(
     };
     tr.step(|| {
         let s = Step::new(Msg::LiangBarsky, Msg::FLiangBarsky)
-            .val("t0", Val::num(&t0))
-            .val("t1", Val::num(&t1));
+            .val(Name::math("t0"), Val::num(&t0))
+            .val(Name::math("t1"), Val::num(&t1));
         match &result {
-            Some((a, z)) => s.res("from", Val::vec3(a)).res("to", Val::vec3(z)),
-            None => s.res("segment", Val::Null),
+            Some((a, z)) => s.res(Name::From, Val::vec3(a)).res(Name::To, Val::vec3(z)),
+            None => s.res(Name::Segment, Val::Null),
         }
     });
     result

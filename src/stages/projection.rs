@@ -7,7 +7,7 @@ use crate::error::{Error, Result};
 use crate::msg::{Msg, PixelMsg};
 use crate::num::vec::{self, V3};
 use crate::num::Scalar;
-use crate::stages::trace::{Step, Subst, Trace, Val};
+use crate::stages::trace::{Name, Step, Subst, Trace, Val};
 
 /// A projection set-up.
 #[derive(Clone, Debug, PartialEq)]
@@ -103,8 +103,8 @@ pub fn project<T: Scalar>(
         let r = vec::v3(x.clone(), y.clone(), T::zero());
         tr.step(|| {
             Step::new(Msg::OrthoProj(name.to_string()), "xp = x,  yp = y,  zp = 0")
-                .val(name.to_string(), Val::vec3(p))
-                .res(format!("{name}''"), Val::vec3(&r))
+                .val(Name::math(name), Val::vec3(p))
+                .res(Name::Image(name.to_string()), Val::vec3(&r))
         });
         return Ok(r);
     };
@@ -142,11 +142,14 @@ pub fn project<T: Scalar>(
         };
         let image = [x, &k, y, &k, &r[2]].map(Val::num).to_vec();
         let mut s = Step::new(Msg::PerspProj(name.to_string()), formula)
-            .val(name.to_string(), Val::vec3(p))
-            .val(scale_name, Val::num(&k))
-            .sub(scale_name, Subst::new(scale_sub.0, scale_sub.1))
-            .res(format!("{name}''"), Val::vec3(&r))
-            .sub(format!("{name}''"), Subst::new("({}·{}, {}·{}, {})", image));
+            .val(Name::math(name), Val::vec3(p))
+            .val(Name::math(scale_name), Val::num(&k))
+            .sub(Name::math(scale_name), Subst::new(scale_sub.0, scale_sub.1))
+            .res(Name::Image(name.to_string()), Val::vec3(&r))
+            .sub(
+                Name::Image(name.to_string()),
+                Subst::new("({}·{}, {}·{}, {})", image),
+            );
         if behind {
             s = s.note(Msg::BehindCentre);
         }
@@ -238,7 +241,7 @@ pub fn projection_step<T: Scalar>(p: &nalgebra::Matrix4<T>, ortho: bool, tr: &mu
         } else {
             "P = [near/right 0 0 0; 0 near/top 0 0; 0 0 −(far+near)/(far−near) −2·far·near/(far−near); 0 0 −1 0]"
         };
-        Step::new(Msg::Pixel(PixelMsg::ProjMatrix), f).res("P", Val::mat4(p))
+        Step::new(Msg::Pixel(PixelMsg::ProjMatrix), f).res(Name::math("P"), Val::mat4(p))
     });
 }
 
@@ -257,8 +260,8 @@ pub fn to_clip<T: Scalar>(
             Msg::Pixel(PixelMsg::Clip(name.to_string())),
             format!("c = (x, y, z, w) = P·V·M·{name}"),
         )
-        .val(name.to_string(), Val::vec3(p))
-        .res("c", vec4(&c))
+        .val(Name::math(name), Val::vec3(p))
+        .res(Name::math("c"), vec4(&c))
     });
     c
 }
@@ -283,9 +286,9 @@ pub fn divide<T: Scalar>(c: &nalgebra::Vector4<T>, name: &str, tr: &mut impl Tra
             Msg::Pixel(PixelMsg::Divide(name.to_string())),
             "1/w,  (xn, yn, zn) = (x·(1/w), y·(1/w), z·(1/w))",
         )
-        .val("c", vec4(c))
-        .res("1/w", Val::num(&q))
-        .res("(xn, yn, zn)", Val::vec3(&n))
+        .val(Name::math("c"), vec4(c))
+        .res(Name::math("1/w"), Val::num(&q))
+        .res(Name::math("(xn, yn, zn)"), Val::vec3(&n))
     });
     (n, q)
 }

@@ -8,6 +8,125 @@ pub use crate::msg::Msg;
 use crate::num::vec::V3;
 use crate::num::{Scalar, Shown};
 use nalgebra::Matrix4;
+use std::fmt;
+
+/// The name of a value in a step. Notation, the same in every language,
+/// is [`Name::Math`] (`u`, `|Pe − Pr|`, `cos α`, `code0 AND code1`,
+/// `A − Pe`); a name made of words, or one a reader looks for, is its own
+/// variant, its parts as data, so every language must say it. Its English
+/// spelling ([`Display`](fmt::Display)) is the key of the step's JSON
+/// `values` and `result` (docs/spec.md §3), written here once.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Name {
+    /// Notation: the same in every language.
+    Math(String),
+    /// A point's eye coordinates: `A'`.
+    Eye(String),
+    /// A point's projection: `A''`.
+    Image(String),
+    /// A point's eye-space depth: `z' of A'`.
+    EyeZ(String),
+    /// A point's pixel: `A pixel`.
+    Pixel(String),
+    /// An outcode's bit (from 0) and its side as the clipping planes
+    /// name it: `bit 1 (kiri (left))`.
+    Bit(usize, &'static str),
+    /// Vertex k of the set-up triangle in 1/256 pixel: `vertex 0 (X, Y)`.
+    Vertex(usize),
+    /// A vector in eye space (`N`, `P`): `N (eye space)`.
+    InEyeSpace(&'static str),
+    /// The colour before the clamp: `unclamped`.
+    Unclamped,
+    /// The colour after the clamp: `color`.
+    Color,
+    /// The specular highlight factor: `highlight`.
+    Highlight,
+    /// Whether a light contributes (in range): `contributes`.
+    Contributes,
+    /// Half the field of view in degrees: `fovy/2 (degrees)`.
+    HalfFovy,
+    /// The segment clipped by outcodes: `outcodes`.
+    Outcodes,
+    /// Whether the two clippings agree: `agree`.
+    Agree,
+    /// The t of the points kept: `t kept`.
+    TKept,
+    /// The first end of the clipped segment: `from`.
+    From,
+    /// The last end of the clipped segment: `to`.
+    To,
+    /// The clipped segment (none): `segment`.
+    Segment,
+    /// Whether a point is inside the view volume: `inside`.
+    Inside,
+    /// A polygon in clip coordinates: `polygon (x, y, z, w)`.
+    Polygon,
+    /// The polygon after a plane's clip: `clipped polygon`.
+    ClippedPolygon,
+    /// The object a pixel shows: `object`.
+    Object,
+    /// The face of the mesh: `polygon face`.
+    PolygonFace,
+    /// The triangle's number in its object: `object's triangle`.
+    ObjectTriangle,
+    /// The triangle a pixel shows: `triangle`.
+    Triangle,
+    /// The depths at a triangle's vertices: `z at the vertices`.
+    ZAtVertices,
+    /// The centre of a face: `face centre`.
+    FaceCentre,
+    /// The colour of a surface: `surface colour`.
+    SurfaceColour,
+    /// Whether a triangle made again is the rasterizer's:
+    /// `same as the rasterizer's`.
+    SameAsRasterizer,
+}
+
+impl Name {
+    /// Notation (`u`, `cos α`, `A − Pe`): the same in every language.
+    pub fn math(s: impl Into<String>) -> Name {
+        Name::Math(s.into())
+    }
+}
+
+impl fmt::Display for Name {
+    /// The English spelling: the key of the step's JSON (docs/spec.md §3).
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let word = match self {
+            Name::Math(s) => s,
+            Name::Eye(p) => return write!(f, "{p}'"),
+            Name::Image(p) => return write!(f, "{p}''"),
+            Name::EyeZ(p) => return write!(f, "z' of {p}'"),
+            Name::Pixel(p) => return write!(f, "{p} pixel"),
+            Name::Bit(bit, side) => return write!(f, "bit {} ({side})", bit + 1),
+            Name::Vertex(k) => return write!(f, "vertex {k} (X, Y)"),
+            Name::InEyeSpace(v) => return write!(f, "{v} (eye space)"),
+            Name::Unclamped => "unclamped",
+            Name::Color => "color",
+            Name::Highlight => "highlight",
+            Name::Contributes => "contributes",
+            Name::HalfFovy => "fovy/2 (degrees)",
+            Name::Outcodes => "outcodes",
+            Name::Agree => "agree",
+            Name::TKept => "t kept",
+            Name::From => "from",
+            Name::To => "to",
+            Name::Segment => "segment",
+            Name::Inside => "inside",
+            Name::Polygon => "polygon (x, y, z, w)",
+            Name::ClippedPolygon => "clipped polygon",
+            Name::Object => "object",
+            Name::PolygonFace => "polygon face",
+            Name::ObjectTriangle => "object's triangle",
+            Name::Triangle => "triangle",
+            Name::ZAtVertices => "z at the vertices",
+            Name::FaceCentre => "face centre",
+            Name::SurfaceColour => "surface colour",
+            Name::SameAsRasterizer => "same as the rasterizer's",
+        };
+        f.write_str(word)
+    }
+}
 
 /// A value inside a step or a result.
 #[derive(Clone, Debug, PartialEq)]
@@ -125,14 +244,14 @@ pub struct Step {
     /// The formula, in the text's notation.
     pub formula: Msg,
     /// The values substituted.
-    pub values: Vec<(String, Val)>,
+    pub values: Vec<(Name, Val)>,
     /// What came out.
-    pub result: Vec<(String, Val)>,
+    pub result: Vec<(Name, Val)>,
     /// A remark: a check, a warning, a note on the text.
     pub note: Option<Msg>,
     /// The substitution shown before a value or result of that name
     /// (`t = (0 − 4)/(−2 − 4) = 2/3`).
-    pub subs: Vec<(String, Subst)>,
+    pub subs: Vec<(Name, Subst)>,
 }
 
 impl Step {
@@ -146,13 +265,13 @@ impl Step {
         }
     }
     /// Adds a substituted value.
-    pub fn val(mut self, name: impl Into<String>, v: Val) -> Step {
-        self.values.push((name.into(), v));
+    pub fn val(mut self, name: Name, v: Val) -> Step {
+        self.values.push((name, v));
         self
     }
     /// Adds a result.
-    pub fn res(mut self, name: impl Into<String>, v: Val) -> Step {
-        self.result.push((name.into(), v));
+    pub fn res(mut self, name: Name, v: Val) -> Step {
+        self.result.push((name, v));
         self
     }
     /// Adds a note.
@@ -162,14 +281,14 @@ impl Step {
     }
     /// Shows how the value or result `name` was worked (`t = (0 − 4)/(−2 −
     /// 4)`); an empty form shows nothing (a term the model does not have).
-    pub fn sub(mut self, name: impl Into<String>, worked: Subst) -> Step {
+    pub fn sub(mut self, name: Name, worked: Subst) -> Step {
         if !worked.form.is_empty() {
-            self.subs.push((name.into(), worked));
+            self.subs.push((name, worked));
         }
         self
     }
     /// The substitution of the value or result `name`, if the step shows one.
-    pub fn sub_of(&self, name: &str) -> Option<&Subst> {
+    pub fn sub_of(&self, name: &Name) -> Option<&Subst> {
         self.subs.iter().find(|(n, _)| n == name).map(|(_, s)| s)
     }
 }
@@ -228,6 +347,32 @@ impl Trace for Recorder {
         let w = f();
         if !self.warnings.contains(&w) {
             self.warnings.push(w);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The keys of a step's JSON, as docs/spec.md §3's scripts read them.
+    #[test]
+    fn a_name_is_spelled_in_english_as_its_json_key() {
+        let a = || "A".to_string();
+        let keys = [
+            (Name::math("|Pe − Pr|"), "|Pe − Pr|"),
+            (Name::Eye(a()), "A'"),
+            (Name::Image(a()), "A''"),
+            (Name::EyeZ(a()), "z' of A'"),
+            (Name::Pixel(a()), "A pixel"),
+            (Name::Bit(0, "kiri (left)"), "bit 1 (kiri (left))"),
+            (Name::Vertex(0), "vertex 0 (X, Y)"),
+            (Name::InEyeSpace("P"), "P (eye space)"),
+            (Name::TKept, "t kept"),
+            (Name::SameAsRasterizer, "same as the rasterizer's"),
+        ];
+        for (name, key) in keys {
+            assert_eq!(name.to_string(), key);
         }
     }
 }

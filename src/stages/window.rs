@@ -4,7 +4,7 @@
 use crate::error::{Error, Result};
 use crate::msg::{Msg, PixelMsg};
 use crate::num::Scalar;
-use crate::stages::trace::{Step, Subst, Trace, Val};
+use crate::stages::trace::{Name, Step, Subst, Trace, Val};
 
 /// A window on a plane z = −dist: its edges and size.
 #[derive(Clone, Debug, PartialEq)]
@@ -106,17 +106,17 @@ pub fn window<T: Scalar>(
             Msg::WindowTop(label.to_string()),
             format!("top = {label}·tan(fovy/2)"),
         )
-        .val(label.to_string(), Val::num(dist))
-        .val("fovy/2 (degrees)", Val::num(&half))
+        .val(Name::math(label), Val::num(dist))
+        .val(Name::HalfFovy, Val::num(&half))
+        .sub(Name::HalfFovy, Subst::new("{}/2", vec![Val::num(fovy_deg)]))
+        .val(Name::math("tan(fovy/2)"), Val::num(&t))
         .sub(
-            "fovy/2 (degrees)",
-            Subst::new("{}/2", vec![Val::num(fovy_deg)]),
+            Name::math("tan(fovy/2)"),
+            Subst::new("tan({}°)", vec![Val::num(&half)]),
         )
-        .val("tan(fovy/2)", Val::num(&t))
-        .sub("tan(fovy/2)", Subst::new("tan({}°)", vec![Val::num(&half)]))
-        .res("top", Val::num(&w.top))
+        .res(Name::math("top"), Val::num(&w.top))
         .sub(
-            "top",
+            Name::math("top"),
             Subst::new("{}·{}", vec![Val::num(dist), Val::num(&t)]),
         )
         .note(Msg::TextH)
@@ -126,21 +126,33 @@ pub fn window<T: Scalar>(
             Msg::WindowEdges(label.to_string()),
             "right = aspect·top,  bottom = −top,  left = −right,  height = 2·top,  width = 2·right",
         )
-        .val("aspect", Val::num(aspect))
-        .val("top", Val::num(&w.top))
-        .res("right", Val::num(&w.right))
+        .val(Name::math("aspect"), Val::num(aspect))
+        .val(Name::math("top"), Val::num(&w.top))
+        .res(Name::math("right"), Val::num(&w.right))
         .sub(
-            "right",
+            Name::math("right"),
             Subst::new("{}·{}", vec![Val::num(aspect), Val::num(&w.top)]),
         )
-        .res("bottom", Val::num(&w.bottom))
-        .sub("bottom", Subst::new("−{}", vec![Val::num(&w.top)]))
-        .res("left", Val::num(&w.left))
-        .sub("left", Subst::new("−{}", vec![Val::num(&w.right)]))
-        .res("height", Val::num(&w.height))
-        .sub("height", Subst::new("2·{}", vec![Val::num(&w.top)]))
-        .res("width", Val::num(&w.width))
-        .sub("width", Subst::new("2·{}", vec![Val::num(&w.right)]))
+        .res(Name::math("bottom"), Val::num(&w.bottom))
+        .sub(
+            Name::math("bottom"),
+            Subst::new("−{}", vec![Val::num(&w.top)]),
+        )
+        .res(Name::math("left"), Val::num(&w.left))
+        .sub(
+            Name::math("left"),
+            Subst::new("−{}", vec![Val::num(&w.right)]),
+        )
+        .res(Name::math("height"), Val::num(&w.height))
+        .sub(
+            Name::math("height"),
+            Subst::new("2·{}", vec![Val::num(&w.top)]),
+        )
+        .res(Name::math("width"), Val::num(&w.width))
+        .sub(
+            Name::math("width"),
+            Subst::new("2·{}", vec![Val::num(&w.right)]),
+        )
     });
     Ok(w)
 }
@@ -191,25 +203,28 @@ pub fn to_viewport<T: Scalar>(
             Msg::ViewportOf(name.to_string()),
             "px = (xp − left)/(right − left)·W,  py = (yp − bottom)/(top − bottom)·H",
         )
-        .val(format!("({name}x, {name}y)"), Val::vec2(p.0, p.1))
-        .val("W × H", Val::vec2(size.0, size.1))
-        .val("px", n(&px))
+        .val(
+            Name::math(format!("({name}x, {name}y)")),
+            Val::vec2(p.0, p.1),
+        )
+        .val(Name::math("W × H"), Val::vec2(size.0, size.1))
+        .val(Name::math("px"), n(&px))
         .sub(
-            "px",
+            Name::math("px"),
             Subst::new(
                 form,
                 vec![n(p.0), n(&w.left), n(&w.right), n(&w.left), n(size.0)],
             ),
         )
-        .val("py", n(&py))
+        .val(Name::math("py"), n(&py))
         .sub(
-            "py",
+            Name::math("py"),
             Subst::new(
                 form,
                 vec![n(p.1), n(&w.bottom), n(&w.top), n(&w.bottom), n(size.1)],
             ),
         )
-        .res(format!("{name} pixel"), Val::vec2(&px, &py))
+        .res(Name::Pixel(name.to_string()), Val::vec2(&px, &py))
     });
     (px, py)
 }
@@ -254,18 +269,18 @@ pub fn to_pixel<T: Scalar>(
             Msg::Pixel(PixelMsg::WindowPoint(name.to_string())),
             "xp = left + (xn + 1)·½·width,  yp = bottom + (yn + 1)·½·height",
         )
-        .val("(xn, yn)", Val::vec2(n.0, n.1))
-        .val("(left, bottom)", Val::vec2(&w.left, &w.bottom))
-        .val("width × height", Val::vec2(&w.width, &w.height))
-        .res("(xp, yp)", Val::vec2(&xp, &yp))
+        .val(Name::math("(xn, yn)"), Val::vec2(n.0, n.1))
+        .val(Name::math("(left, bottom)"), Val::vec2(&w.left, &w.bottom))
+        .val(Name::math("width × height"), Val::vec2(&w.width, &w.height))
+        .res(Name::math("(xp, yp)"), Val::vec2(&xp, &yp))
     });
     let (px, py) = to_viewport(w, size, name, (&xp, &yp), tr);
     let row = size.1.clone() - py.clone();
     tr.step(|| {
         Step::new(Msg::Pixel(PixelMsg::Row(name.to_string())), "row = H − py")
-            .val("H", Val::num(size.1))
-            .val("py", Val::num(&py))
-            .res("(x, row)", Val::vec2(&px, &row))
+            .val(Name::math("H"), Val::num(size.1))
+            .val(Name::math("py"), Val::num(&py))
+            .res(Name::math("(x, row)"), Val::vec2(&px, &row))
     });
     (px, row)
 }
@@ -292,10 +307,13 @@ pub fn snap_pixel(p: (f32, f32), name: &str, tr: &mut impl Trace) -> [i64; 2] {
             Msg::Pixel(PixelMsg::Snap(name.to_string())),
             "X = round(256·x),  Y = round(256·row),  round(±(k + ½)) = ±(k + 1)",
         )
-        .val("(x, row)", Val::vec2(&p.0, &p.1))
-        .res("(X, Y)", Val::text(format!("({}, {})", s[0], s[1])))
+        .val(Name::math("(x, row)"), Val::vec2(&p.0, &p.1))
         .res(
-            "(X/256, Y/256)",
+            Name::math("(X, Y)"),
+            Val::text(format!("({}, {})", s[0], s[1])),
+        )
+        .res(
+            Name::math("(X/256, Y/256)"),
             Val::vec2(&(s[0] as f64 / 256.0), &(s[1] as f64 / 256.0)),
         )
     });

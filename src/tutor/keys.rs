@@ -9,7 +9,7 @@ use crate::num::Scalar;
 use crate::stages::camera;
 use crate::stages::clip::{self, ClipBox};
 use crate::stages::lighting::{self, rgb_val, LightTerm, Material, Model};
-use crate::stages::trace::{NoTrace, Recorder, Step, Trace, Val};
+use crate::stages::trace::{Name, NoTrace, Recorder, Step, Trace, Val};
 use crate::stages::window;
 
 /// The basis as named results.
@@ -57,9 +57,9 @@ pub fn clip_checked<T: Scalar>(
     };
     rec.step(|| {
         Step::new(Msg::MethodsAgree, Msg::FMethods)
-            .val("outcodes", segment(&r.segment))
-            .val("Liang–Barsky", segment(&lb))
-            .res("agree", Val::Bool(agree))
+            .val(Name::Outcodes, segment(&r.segment))
+            .val(Name::math("Liang–Barsky"), segment(&lb))
+            .res(Name::Agree, Val::Bool(agree))
             .note(if agree {
                 Msg::Agree(true)
             } else {
@@ -164,12 +164,12 @@ pub fn shade_run<T: Scalar, R: lighting::RuleSet<T>>(
 /// The step that shows the material and the model.
 fn material_step<T: Scalar>(m: &Material<T>) -> Step {
     Step::new(Msg::Material, format!("model = {}", m.model.name()))
-        .val("ka", Val::num(&m.ka))
-        .val("kd", Val::num(&m.kd))
-        .val("ks", Val::num(&m.ks))
-        .val("n", Val::num(&m.shininess))
-        .val("Cs", rgb_val(&m.color))
-        .val("Cspecular", rgb_val(&m.specular))
+        .val(Name::math("ka"), Val::num(&m.ka))
+        .val(Name::math("kd"), Val::num(&m.kd))
+        .val(Name::math("ks"), Val::num(&m.ks))
+        .val(Name::math("n"), Val::num(&m.shininess))
+        .val(Name::math("Cs"), rgb_val(&m.color))
+        .val(Name::math("Cspecular"), rgb_val(&m.specular))
         .note(
             if m.ka == T::one() && m.kd == T::one() && m.ks == T::one() {
                 Msg::MaterialD3d

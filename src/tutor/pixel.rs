@@ -11,7 +11,7 @@ use crate::msg::{Msg, PixelMsg};
 use crate::render::geometry::{self, ClipVert, VertBufs};
 use crate::render::raster::{self, ScreenVert, Tri};
 use crate::render::{self, Corner, Frame, Options, Stats};
-use crate::stages::trace::{NoTrace, Recorder, Step, Trace, Val};
+use crate::stages::trace::{Name, NoTrace, Recorder, Step, Trace, Val};
 use crate::stages::{camera, clip};
 use nalgebra::{Matrix4, Vector3, Vector4};
 
@@ -36,7 +36,7 @@ pub fn explain(
     if id == crate::render::raster::NONE {
         rec.step(|| {
             Step::new(Msg::WhichTriangle, Msg::FPixelCentre)
-                .res("triangle", Val::text("none"))
+                .res(Name::Triangle, Val::text("none"))
                 .note(Msg::NoTriangle)
         });
         return Ok(());
@@ -45,13 +45,13 @@ pub fn explain(
     let obj = &scene.objects[t.obj as usize];
     rec.step(|| {
         Step::new(Msg::WhichTriangle, Msg::FEdges)
-            .val("object", Val::text(obj.name.clone()))
+            .val(Name::Object, Val::text(obj.name.clone()))
             .val(
-                "polygon face",
+                Name::PolygonFace,
                 Val::text(obj.tris.face[t.src as usize].to_string()),
             )
-            .val("object's triangle", Val::text(t.src.to_string()))
-            .res("triangle", Val::text(format!("#{id}")))
+            .val(Name::ObjectTriangle, Val::text(t.src.to_string()))
+            .res(Name::Triangle, Val::text(format!("#{id}")))
     });
     let g = explain_geometry(scene, opt, f, id, rec)?;
     rec.section(Msg::SecPixel(x, y));
@@ -59,15 +59,15 @@ pub fn explain(
     let zs = g.verts.map(|v| v.z);
     rec.step(|| {
         Step::new(Msg::Depth, Msg::FDepth)
-            .val("z at the vertices", Val::vec3(&Vector3::from(zs)))
-            .res("z", Val::num(&z))
+            .val(Name::ZAtVertices, Val::vec3(&Vector3::from(zs)))
+            .res(Name::math("z"), Val::num(&z))
             .note(Msg::Nearest)
     });
     rec.step(|| {
         Step::new(Msg::Barycentric, Msg::FBarycentric)
-            .val("λ", Val::vec3(&Vector3::from(l)))
-            .val("1/w", Val::vec3(&Vector3::from(t.inv_w)))
-            .res("μ", Val::vec3(&Vector3::from(m)))
+            .val(Name::math("λ"), Val::vec3(&Vector3::from(l)))
+            .val(Name::math("1/w"), Val::vec3(&Vector3::from(t.inv_w)))
+            .res(Name::math("μ"), Val::vec3(&Vector3::from(m)))
     });
     let c = &g.corners;
     shading(f, (t, c), (x, y), m, rec);
@@ -76,9 +76,9 @@ pub fn explain(
     let col = render::pixel_color(t, c, x, y, &f.looks, f.ortho, &mut NoTrace);
     rec.step(|| {
         Step::new(Msg::PixelColour, Msg::FByte)
-            .val("C", Val::vec3(&Vector3::from(col)))
+            .val(Name::math("C"), Val::vec3(&Vector3::from(col)))
             .res(
-                "RGB",
+                Name::math("RGB"),
                 Val::text(format!("({}, {}, {})", px[0], px[1], px[2])),
             )
     });
@@ -106,9 +106,9 @@ fn shading(
         Shading::Flat => {
             rec.step(|| {
                 Step::new(Msg::FlatShading, Msg::FFlat)
-                    .val("N (eye space)", Val::vec3(&v3(&c[0], 3)))
-                    .val("face centre", Val::vec3(&v3(&c[0], 6)))
-                    .val("surface colour", Val::vec3(&v3(&c[0], 9)))
+                    .val(Name::InEyeSpace("N"), Val::vec3(&v3(&c[0], 3)))
+                    .val(Name::FaceCentre, Val::vec3(&v3(&c[0], 6)))
+                    .val(Name::SurfaceColour, Val::vec3(&v3(&c[0], 9)))
             });
             rec.section(Msg::SecLightFace);
             light(&c[0], rec);
@@ -121,10 +121,13 @@ fn shading(
             rec.section(Msg::SecPixel(x, y));
             rec.step(|| {
                 Step::new(Msg::Gouraud, "C = μ₀C₀ + μ₁C₁ + μ₂C₂")
-                    .val("C₀", Val::vec3(&v3(&c[0], 0)))
-                    .val("C₁", Val::vec3(&v3(&c[1], 0)))
-                    .val("C₂", Val::vec3(&v3(&c[2], 0)))
-                    .res("C", Val::vec3(&Vector3::new(at(0), at(1), at(2))))
+                    .val(Name::math("C₀"), Val::vec3(&v3(&c[0], 0)))
+                    .val(Name::math("C₁"), Val::vec3(&v3(&c[1], 0)))
+                    .val(Name::math("C₂"), Val::vec3(&v3(&c[2], 0)))
+                    .res(
+                        Name::math("C"),
+                        Val::vec3(&Vector3::new(at(0), at(1), at(2))),
+                    )
             });
         }
         Shading::Phong => {
@@ -137,12 +140,12 @@ fn shading(
                     "N = Σ μₖNₖ,  P = Σ μₖPₖ,  C = Σ μₖCₖ  (as Σ λₖaₖ/wₖ ÷ Σ λₖ/wₖ)",
                 )
                 .val(
-                    "N₀, N₁, N₂",
+                    Name::math("N₀, N₁, N₂"),
                     Val::List(c.iter().map(|k| Val::vec3(&v3(k, 3))).collect()),
                 )
-                .res("N", Val::vec3(&Vector3::from(n)))
-                .res("P (eye space)", Val::vec3(&Vector3::from(p)))
-                .res("C", Val::vec3(&Vector3::from(col)))
+                .res(Name::math("N"), Val::vec3(&Vector3::from(n)))
+                .res(Name::InEyeSpace("P"), Val::vec3(&Vector3::from(p)))
+                .res(Name::math("C"), Val::vec3(&Vector3::from(col)))
             });
             rec.section(Msg::SecLightPixel);
             render::pixel_color(t, c, x, y, &f.looks, f.ortho, rec);
@@ -262,9 +265,9 @@ fn vertex_steps(p: &geometry::Prep, idx: [usize; 3], rec: &mut Recorder) -> [Vec
             Msg::Pixel(PixelMsg::Matrices(obj.name.clone())),
             "M,  V·M,  P·V·M = P·(V·M)  (f32)",
         )
-        .res("M", Val::mat4(&model))
-        .res("V·M", Val::mat4(&p.x.e32))
-        .res("P·V·M", Val::mat4(&p.x.c32))
+        .res(Name::math("M"), Val::mat4(&model))
+        .res(Name::math("V·M"), Val::mat4(&p.x.e32))
+        .res(Name::math("P·V·M"), Val::mat4(&p.x.c32))
     });
     let mut clip = [Vector4::zeros(); 3];
     for (k, c) in clip.iter_mut().enumerate() {
@@ -307,12 +310,9 @@ fn set_up_step(sv: &[(ScreenVert, [i64; 2]); 3], same: bool, rec: &mut Recorder)
             "E_k(X, Y) = a_k·X + b_k·Y + c_k,  X = 256·x,  Y = 256·row",
         );
         for (k, (_, q)) in sv.iter().enumerate() {
-            s = s.val(
-                format!("vertex {k} (X, Y)"),
-                Val::text(format!("({}, {})", q[0], q[1])),
-            );
+            s = s.val(Name::Vertex(k), Val::text(format!("({}, {})", q[0], q[1])));
         }
-        s.res("same as the rasterizer's", Val::Bool(same))
+        s.res(Name::SameAsRasterizer, Val::Bool(same))
             .note(Msg::Pixel(PixelMsg::SameAsRaster(same)))
     });
 }

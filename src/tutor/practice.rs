@@ -22,7 +22,7 @@ use crate::error::Result;
 use crate::input::answer::Read;
 use crate::input::problem::ProblemIn;
 use crate::msg::{Msg, Said};
-use crate::stages::trace::{Step, Val};
+use crate::stages::trace::{Name, Step, Val};
 use crate::tutor::check::{agrees, Marker, Settings, Verdict, FOLLOW_THROUGH};
 use crate::tutor::diagnose::Mistake;
 use crate::tutor::generate::{Difficulty, Topic};
@@ -99,15 +99,18 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
 pub(crate) fn step_for(key: &str, steps: &[Step]) -> Option<Step> {
     let parts: Vec<&str> = key.split('.').collect();
     let name = match parts[..] {
-        ["view", "matrix"] => "V".to_string(),
-        ["view", "points", p] => format!("{p}'"),
-        ["project", "points", p] => format!("{p}''"),
-        ["viewport", "pixels", p] => format!("{p} pixel"),
-        ["shade", "cos_alpha"] => "cos α".to_string(),
-        ["shade", "cos_beta"] => "cos β".to_string(),
-        ["shade", "N_dot_H"] => "N·H".to_string(),
+        ["view", "matrix"] => Name::math("V"),
+        ["view", "points", p] => Name::Eye(p.to_string()),
+        ["project", "points", p] => Name::Image(p.to_string()),
+        ["viewport", "pixels", p] => Name::Pixel(p.to_string()),
+        ["shade", "cos_alpha"] => Name::math("cos α"),
+        ["shade", "cos_beta"] => Name::math("cos β"),
+        ["shade", "N_dot_H"] => Name::math("N·H"),
+        ["shade", "color"] => Name::Color,
+        ["shade", "unclamped"] => Name::Unclamped,
         ["clip", ..] => return clip_step(&parts[1..], steps),
-        [_, k] => k.to_string(),
+        // the step's name is the key's notation (`n`, `top`, `ambient`, `R`)
+        [_, k] => Name::math(k),
         _ => return None,
     };
     steps
@@ -123,9 +126,12 @@ fn clip_step(rest: &[&str], steps: &[Step]) -> Option<Step> {
         Ok(i) => (i, &rest[1..]),
         Err(_) => (0, rest),
     };
+    let code = Name::math("code");
     let starts = |s: &Step| {
-        s.result.iter().any(|(n, _)| n == "code")
-            && s.values.first().is_some_and(|(n, _)| n == "P0")
+        s.result.iter().any(|(n, _)| *n == code)
+            && s.values
+                .first()
+                .is_some_and(|(n, _)| *n == Name::math("P0"))
     };
     let begin = steps
         .iter()
@@ -138,25 +144,27 @@ fn clip_step(rest: &[&str], steps: &[Step]) -> Option<Step> {
         .position(starts)
         .map_or(steps.len(), |k| begin + 1 + k);
     let run = &steps[begin..end];
-    let has = |s: &&Step, n: &str| s.result.iter().any(|(x, _)| x == n);
+    let has = |s: &&Step, n: &Name| s.result.iter().any(|(x, _)| x == n);
     let found = match rest {
-        [code] if code.starts_with("code") => {
-            let point = format!("P{}", &code[4..]);
+        [end] if end.starts_with("code") => {
+            let point = Name::math(format!("P{}", &end[4..]));
             run.iter()
-                .find(|s| has(s, "code") && s.values.first().is_some_and(|(n, _)| *n == point))
+                .find(|s| has(s, &code) && s.values.first().is_some_and(|(n, _)| *n == point))
         }
         ["intersections", _, _] => {
             // the intersections are recorded in the order of the result's map
             let planes = ["left", "right", "bottom", "top", "front", "back"];
-            let tried = run.iter().filter(|s| has(s, "P(t)"));
+            let tried = run.iter().filter(|s| has(s, &Name::math("P(t)")));
             let wanted = planes.iter().position(|p| *p == rest[1])?;
             tried
                 .clone()
                 .find(|s| matches!(s.title, crate::msg::Msg::Intersection(i, _) if i == wanted))
                 .or_else(|| tried.clone().next())
         }
-        ["segment"] => run.iter().find(|s| has(s, "from") && has(s, "to")),
-        ["status"] => run.iter().find(|s| has(s, "code0 AND code1")),
+        ["segment"] => run
+            .iter()
+            .find(|s| has(s, &Name::From) && has(s, &Name::To)),
+        ["status"] => run.iter().find(|s| has(s, &Name::math("code0 AND code1"))),
         _ => None,
     };
     found.cloned()

@@ -430,6 +430,6 @@ impl Report {
         self.steps
             .iter()
             .flat_map(|s| s.values.iter().chain(&s.result))
-            .find_map(|(k, v)| first_not_finite(k, v, true))
+            .find_map(|(k, v)| first_not_finite(&k.to_string(), v, true))
     }
 }

@@ -16,7 +16,7 @@ use crate::num::{Expr, Scalar};
 use crate::stages::camera::Camera;
 use crate::stages::clip::ClipBox;
 use crate::stages::projection::Projection;
-use crate::stages::trace::{Recorder, Step, Subst, Trace, Val};
+use crate::stages::trace::{Name, Recorder, Step, Subst, Trace, Val};
 use crate::stages::window;
 use crate::tutor::run::{
     basis_run, clip_run, eye_run, light_run, pixels, points_val, project_run, view_result,
@@ -146,10 +146,10 @@ fn project_part<T: Scalar>(
     rec.section(Msg::SecProjection);
     rec.step(|| match (given, near) {
         (None, Some(n)) => Step::new(Msg::ProjPlane, Msg::FProjPlane)
-            .val("near", Val::num(n))
-            .res("d", Val::num(&d))
-            .sub("d", Subst::new("−{}", vec![Val::num(n)])),
-        _ => Step::new(Msg::ProjPlane, "z = d").val("d", Val::num(&d)),
+            .val(Name::math("near"), Val::num(n))
+            .res(Name::math("d"), Val::num(&d))
+            .sub(Name::math("d"), Subst::new("−{}", vec![Val::num(n)])),
+        _ => Step::new(Msg::ProjPlane, "z = d").val(Name::math("d"), Val::num(&d)),
     });
     let proj = Projection::Plane { d };
     proj.validate().map_err(|e| e.in_field("perspective.d"))?;
@@ -372,9 +372,9 @@ fn point_inside_step<T: Scalar>(
     let in_depth = e[2] <= -near.clone() && far.is_none_or(|f| e[2] >= -f.clone());
     rec.step(|| {
         Step::new(Msg::InsideVolume(name.to_string()), Msg::FInside)
-            .val(format!("{name}''"), Val::vec2(&q[0], &q[1]))
-            .val(format!("z' of {name}'"), Val::num(&e[2]))
-            .res("inside", Val::Bool(in_window && in_depth))
+            .val(Name::Image(name.to_string()), Val::vec2(&q[0], &q[1]))
+            .val(Name::EyeZ(name.to_string()), Val::num(&e[2]))
+            .res(Name::Inside, Val::Bool(in_window && in_depth))
             .note(match (in_window, in_depth) {
                 (true, true) => Msg::Inside(true, true),
                 (false, w) => Msg::Inside(false, w),

@@ -7,7 +7,7 @@ use super::histogram;
 use crate::msg::{CheckWord, ClassWord as C, DocWord};
 use crate::report::check::VERDICTS;
 use crate::report::doc::Doc;
-use crate::report::lang::{Lang, NumStyle};
+use crate::report::lang::Lang;
 use crate::report::mistakes::mistake_text;
 use crate::report::words;
 use crate::report::words::report::dec;
@@ -23,7 +23,8 @@ fn num(x: Option<f64>, lang: Lang) -> String {
     x.map_or("—".to_string(), |x| {
         // −0.001 is written 0.00, not −0.00
         let x = if x.abs() < 0.005 { 0.0 } else { x };
-        NumStyle::of(lang)
+        crate::report::words::of(lang)
+            .nums()
             .number(&format!("{x:.2}"))
             .replacen('-', "−", 1)
     })
@@ -426,7 +427,7 @@ fn students_section(doc: Doc, class: &Class, s: &Stats, lang: Lang) -> String {
             if class.exam {
                 row.push(sh.variant.map(|v| v.to_string()).unwrap_or_default());
             }
-            let score = dec(sh.score().unwrap_or(0.0), 4, NumStyle::of(lang));
+            let score = dec(sh.score().unwrap_or(0.0), 4, words::of(lang).nums());
             row.push(format!("{score}/{}", sh.total().unwrap_or(0)));
             let codes: Vec<&str> = s
                 .mistakes

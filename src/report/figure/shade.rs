@@ -17,7 +17,7 @@ use super::builders::{cross, dot, num_val, panel, result, say, unit, vec_of, Par
 use super::{label_short, label_toward, labelled, mark, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
-use crate::stages::trace::Val;
+use crate::stages::trace::{Name, Val};
 
 /// The length every unit vector is drawn with (page units).
 pub const LENGTH: f64 = 1.5;
@@ -35,7 +35,7 @@ fn step_vectors<'a>(p: &'a Part, name: &str) -> Vec<&'a Val> {
     p.steps
         .iter()
         .flat_map(|s| &s.result)
-        .filter(|(k, v)| k == name && vec_of(v).is_some())
+        .filter(|(k, v)| *k == Name::math(name) && vec_of(v).is_some())
         .map(|(_, v)| v)
         .collect()
 }

@@ -15,7 +15,7 @@ use super::{
 use crate::msg::{LightPart, Msg, SpotZone};
 use crate::num::vec::{add, dot, sub, V3};
 use crate::num::{Mask, Scalar};
-use crate::stages::trace::{Step, Subst, Trace, Val};
+use crate::stages::trace::{Name, Step, Subst, Trace, Val};
 
 /// One light's geometry and factors at the point; `None` when the point is
 /// beyond the light's range (the light is not evaluated at all) or at the
@@ -102,9 +102,9 @@ fn toward<T: Scalar>(
         if !in_range.any() {
             tr.step(|| {
                 Step::new(label(at, LightPart::OutOfRange), Msg::FOutOfRange)
-                    .val("d²", Val::num(&d2))
-                    .val("range²", Val::num(&r2))
-                    .res("contributes", Val::Bool(false))
+                    .val(Name::math("d²"), Val::num(&d2))
+                    .val(Name::math("range²"), Val::num(&r2))
+                    .res(Name::Contributes, Val::Bool(false))
                     .note(Msg::BeyondRange)
             });
             return None;
@@ -121,14 +121,17 @@ fn toward<T: Scalar>(
             label(at, LightPart::Direction),
             "d = |Pl − P|,  L = (Pl − P)/d",
         )
-        .val("Pl", Val::vec3(pos))
-        .val("P", Val::vec3(&s.position))
-        .val("Pl − P", Val::vec3(&to))
-        .sub("Pl − P", Subst::difference(pos, &s.position))
-        .val("d", Val::num(&d))
-        .sub("d", Subst::norm(&to))
-        .res("L", Val::vec3(&l))
-        .sub("L", Subst::quotient(Val::vec3(&to), Val::num(&d)))
+        .val(Name::math("Pl"), Val::vec3(pos))
+        .val(Name::math("P"), Val::vec3(&s.position))
+        .val(Name::math("Pl − P"), Val::vec3(&to))
+        .sub(Name::math("Pl − P"), Subst::difference(pos, &s.position))
+        .val(Name::math("d"), Val::num(&d))
+        .sub(Name::math("d"), Subst::norm(&to))
+        .res(Name::math("L"), Val::vec3(&l))
+        .sub(
+            Name::math("L"),
+            Subst::quotient(Val::vec3(&to), Val::num(&d)),
+        )
         .note(match &light.range {
             Some(_) => Msg::WithinRange,
             None => Msg::NoRange,
@@ -154,18 +157,21 @@ fn attenuation<T: Scalar>(
             label(at, LightPart::Attenuation),
             "Att = 1/(a0 + a1·d + a2·d²)",
         )
-        .val("(a0, a1, a2)", Val::List(a.iter().map(Val::num).collect()))
-        .val("d", Val::num(d))
-        .val("a0 + a1·d + a2·d²", Val::num(&den))
+        .val(
+            Name::math("(a0, a1, a2)"),
+            Val::List(a.iter().map(Val::num).collect()),
+        )
+        .val(Name::math("d"), Val::num(d))
+        .val(Name::math("a0 + a1·d + a2·d²"), Val::num(&den))
         .sub(
-            "a0 + a1·d + a2·d²",
+            Name::math("a0 + a1·d + a2·d²"),
             Subst::new(
                 "{} + {}·{} + {}·{}²",
                 [&a[0], &a[1], d, &a[2], d].map(Val::num).to_vec(),
             ),
         )
-        .res("Att", Val::num(&att))
-        .sub("Att", Subst::new("1/{}", vec![Val::num(&den)]))
+        .res(Name::math("Att"), Val::num(&att))
+        .sub(Name::math("Att"), Subst::new("1/{}", vec![Val::num(&den)]))
     });
     att
 }
@@ -180,13 +186,13 @@ fn incidence_step<T: Scalar>(
 ) -> Step {
     let cos_alpha = &term.cos_alpha;
     let s = Step::new(label(at, LightPart::Incidence), Msg::FIncidence)
-        .val("L", Val::vec3(&term.l))
-        .val("N", Val::vec3(n))
-        .res("cos α", Val::num(cos_alpha))
-        .sub("cos α", Subst::dot(&term.l, n))
-        .res("max(cos α, 0)", Val::num(&max0(cos_alpha)))
+        .val(Name::math("L"), Val::vec3(&term.l))
+        .val(Name::math("N"), Val::vec3(n))
+        .res(Name::math("cos α"), Val::num(cos_alpha))
+        .sub(Name::math("cos α"), Subst::dot(&term.l, n))
+        .res(Name::math("max(cos α, 0)"), Val::num(&max0(cos_alpha)))
         .sub(
-            "max(cos α, 0)",
+            Name::math("max(cos α, 0)"),
             Subst::new("max({}, 0)", vec![Val::num(cos_alpha)]),
         );
     if *cos_alpha < T::zero() {
@@ -231,22 +237,22 @@ fn specular<T: Scalar, R: RuleSet<T>>(
             label(at, LightPart::Reflection),
             "R = 2N(L·N) − L,  cos β = R·V",
         )
-        .val("2(L·N)", Val::num(&two_ln))
+        .val(Name::math("2(L·N)"), Val::num(&two_ln))
         .sub(
-            "2(L·N)",
+            Name::math("2(L·N)"),
             Subst::new("2·{}", vec![Val::num(&term.cos_alpha)]),
         )
-        .val("V", Val::vec3(v))
-        .res("R", Val::vec3(&r))
+        .val(Name::math("V"), Val::vec3(v))
+        .res(Name::math("R"), Val::vec3(&r))
         .sub(
-            "R",
+            Name::math("R"),
             Subst::new(
                 "{}·{} − {}",
                 vec![Val::num(&two_ln), Val::vec3(n), Val::vec3(&term.l)],
             ),
         )
-        .res("cos β", Val::num(&cos_beta))
-        .sub("cos β", Subst::dot(&r, v))
+        .res(Name::math("cos β"), Val::num(&cos_beta))
+        .sub(Name::math("cos β"), Subst::dot(&r, v))
     });
     let cos_spec = if mat.model == Model::Blinn {
         let (h, nh) = half_vector(n, &term.l, v, s.camera.is_some(), at, tr);
@@ -265,7 +271,7 @@ fn specular<T: Scalar, R: RuleSet<T>>(
     } else {
         tr.step(|| {
             Step::new(label(at, LightPart::Highlight), "")
-                .res("highlight", Val::num(&T::zero()))
+                .res(Name::Highlight, Val::num(&T::zero()))
                 .note(if !want_spec {
                     Msg::SpecularOff
                 } else {
@@ -306,17 +312,20 @@ fn half_vector<T: Scalar>(
                 "H = norm((0,0,1) + Ldir) = norm(V + L),  cos = N·H"
             },
         )
-        .val("V + L", Val::vec3(&sum))
+        .val(Name::math("V + L"), Val::vec3(&sum))
         .sub(
-            "V + L",
+            Name::math("V + L"),
             Subst::new("{} + {}", vec![Val::vec3(v), Val::vec3(l)]),
         )
-        .val("|V + L|", Val::num(&len))
-        .sub("|V + L|", Subst::norm(&sum))
-        .res("H", Val::vec3(&h))
-        .sub("H", Subst::quotient(Val::vec3(&sum), Val::num(&len)))
-        .res("N·H", Val::num(&nh))
-        .sub("N·H", Subst::dot(n, &h))
+        .val(Name::math("|V + L|"), Val::num(&len))
+        .sub(Name::math("|V + L|"), Subst::norm(&sum))
+        .res(Name::math("H"), Val::vec3(&h))
+        .sub(
+            Name::math("H"),
+            Subst::quotient(Val::vec3(&sum), Val::num(&len)),
+        )
+        .res(Name::math("N·H"), Val::num(&nh))
+        .sub(Name::math("N·H"), Subst::dot(n, &h))
         .note(if local {
             Msg::LocalViewer
         } else {
@@ -342,10 +351,10 @@ fn highlight_step<T: Scalar>(
             "max(cos β, 0)ⁿ"
         },
     )
-    .val("n", Val::num(&mat.shininess))
-    .res("highlight", Val::num(highlight))
+    .val(Name::math("n"), Val::num(&mat.shininess))
+    .res(Name::Highlight, Val::num(highlight))
     .sub(
-        "highlight",
+        Name::Highlight,
         Subst::new(
             "max({}, 0)^{}",
             vec![Val::num(cos), Val::num(&mat.shininess)],
@@ -393,26 +402,26 @@ pub fn spot_factor<T: Scalar>(
             SpotZone::Penumbra
         };
         let s = Step::new(label(at, LightPart::Spot), Msg::FSpot)
-            .val("ρ", Val::num(&rho))
-            .sub("ρ", Subst::dot(l, axis).within("−(", ")"))
-            .val("cos(θ/2)", Val::num(&cos_t))
+            .val(Name::math("ρ"), Val::num(&rho))
+            .sub(Name::math("ρ"), Subst::dot(l, axis).within("−(", ")"))
+            .val(Name::math("cos(θ/2)"), Val::num(&cos_t))
             .sub(
-                "cos(θ/2)",
+                Name::math("cos(θ/2)"),
                 Subst::new(
                     "cos({}°)",
                     vec![Val::num(&(theta.clone() / T::from_i64(2)))],
                 ),
             )
-            .val("cos(φ/2)", Val::num(&cos_p))
+            .val(Name::math("cos(φ/2)"), Val::num(&cos_p))
             .sub(
-                "cos(φ/2)",
+                Name::math("cos(φ/2)"),
                 Subst::new("cos({}°)", vec![Val::num(&(phi.clone() / T::from_i64(2)))]),
             )
-            .val("falloff", Val::num(falloff))
-            .res("Spot", Val::num(&f));
+            .val(Name::math("falloff"), Val::num(falloff))
+            .res(Name::math("Spot"), Val::num(&f));
         let s = match zone {
             SpotZone::Penumbra => s.sub(
-                "Spot",
+                Name::math("Spot"),
                 Subst::new(
                     "(({} − {})/({} − {}))^{}",
                     [&rho, &cos_p, &cos_t, &cos_p, falloff]

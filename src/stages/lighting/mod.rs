@@ -34,7 +34,7 @@ use crate::error::{Error, Result};
 use crate::msg::{LightPart, Msg, Term};
 use crate::num::vec::{normalize, sub, v3, V3};
 use crate::num::Scalar;
-use crate::stages::trace::{Step, Subst, Trace, Val};
+use crate::stages::trace::{Name, Step, Subst, Trace, Val};
 
 mod light;
 pub use light::{light_term_with, spot_factor};
@@ -430,12 +430,12 @@ pub fn unit<T: Scalar>(name: &str, field: &str, v: &V3<T>, tr: &mut impl Trace) 
             Msg::UnitVector(name.to_string()),
             format!("{name} = v/|v|,  |v| = √(v₀² + v₁² + v₂²)"),
         )
-        .val("v", Val::vec3(v))
-        .val("|v|", Val::num(&len))
-        .sub("|v|", Subst::norm(v))
-        .res(name, Val::vec3(&u))
+        .val(Name::math("v"), Val::vec3(v))
+        .val(Name::math("|v|"), Val::num(&len))
+        .sub(Name::math("|v|"), Subst::norm(v))
+        .res(Name::math(name), Val::vec3(&u))
         .sub(
-            name,
+            Name::math(name),
             match len == T::one() {
                 true => Subst::default(),
                 false => Subst::quotient(Val::vec3(v), Val::num(&len)),
@@ -821,19 +821,19 @@ fn sum_step<T: Scalar>(terms: [&Rgb<T>; 4], unclamped: &Rgb<T>) -> Step {
         Msg::SumOfTerms,
         "C = ambient + diffuse + specular + emissive",
     )
-    .val("ambient", rgb_val(terms[0]))
-    .val("diffuse", rgb_val(terms[1]))
-    .val("specular", rgb_val(terms[2]))
-    .val("emissive", rgb_val(terms[3]))
-    .res("unclamped", rgb_val(unclamped))
+    .val(Name::math("ambient"), rgb_val(terms[0]))
+    .val(Name::math("diffuse"), rgb_val(terms[1]))
+    .val(Name::math("specular"), rgb_val(terms[2]))
+    .val(Name::math("emissive"), rgb_val(terms[3]))
+    .res(Name::Unclamped, rgb_val(unclamped))
 }
 
 /// The step of the clamp to [0, 1].
 fn clamp_step<T: Scalar>(unclamped: &Rgb<T>, color: &Rgb<T>) -> Step {
     let clipped = unclamped.iter().any(|x| *x > T::one() || *x < T::zero());
     Step::new(Msg::Clamp, Msg::FClamp)
-        .val("C", rgb_val(unclamped))
-        .res("color", rgb_val(color))
+        .val(Name::math("C"), rgb_val(unclamped))
+        .res(Name::Color, rgb_val(color))
         .note(if clipped {
             Msg::Saturates
         } else {
@@ -851,14 +851,17 @@ fn view_vector<T: Scalar>(s: &Surface<T>, tr: &mut impl Trace) -> V3<T> {
     let (v, len) = normalize(&d).unwrap_or_else(|| (s.view.clone(), T::one()));
     tr.step(|| {
         Step::new(Msg::ViewerLocal, "V = norm(Cp − Vp)")
-            .val("Cp", Val::vec3(cp))
-            .val("Vp", Val::vec3(&s.position))
-            .val("Cp − Vp", Val::vec3(&d))
-            .sub("Cp − Vp", Subst::difference(cp, &s.position))
-            .val("|Cp − Vp|", Val::num(&len))
-            .sub("|Cp − Vp|", Subst::norm(&d))
-            .res("V", Val::vec3(&v))
-            .sub("V", Subst::quotient(Val::vec3(&d), Val::num(&len)))
+            .val(Name::math("Cp"), Val::vec3(cp))
+            .val(Name::math("Vp"), Val::vec3(&s.position))
+            .val(Name::math("Cp − Vp"), Val::vec3(&d))
+            .sub(Name::math("Cp − Vp"), Subst::difference(cp, &s.position))
+            .val(Name::math("|Cp − Vp|"), Val::num(&len))
+            .sub(Name::math("|Cp − Vp|"), Subst::norm(&d))
+            .res(Name::math("V"), Val::vec3(&v))
+            .sub(
+                Name::math("V"),
+                Subst::quotient(Val::vec3(&d), Val::num(&len)),
+            )
     });
     v
 }
@@ -910,13 +913,13 @@ fn record_totals<T: Scalar>(
             Msg::TermStep(Term::Ambient),
             "ambient = ka · (Ga + Σ Att·Spot·La) · Ca",
         )
-        .val("ka", Val::num(&mat.ka))
-        .val("Ga + Σ Att·Spot·La", rgb_val(sum_a))
-        .sub("Ga + Σ Att·Spot·La", wa)
-        .val("Ca", rgb_val(ca))
-        .res("ambient", rgb_val(ra))
+        .val(Name::math("ka"), Val::num(&mat.ka))
+        .val(Name::math("Ga + Σ Att·Spot·La"), rgb_val(sum_a))
+        .sub(Name::math("Ga + Σ Att·Spot·La"), wa)
+        .val(Name::math("Ca"), rgb_val(ca))
+        .res(Name::math("ambient"), rgb_val(ra))
         .sub(
-            "ambient",
+            Name::math("ambient"),
             Subst::new(
                 product(on.0),
                 vec![Val::num(&mat.ka), rgb_val(sum_a), rgb_val(ca)],
@@ -929,13 +932,13 @@ fn record_totals<T: Scalar>(
             Msg::TermStep(Term::Diffuse),
             "diffuse = kd · Σ Att·Spot·Ld·max(cos α, 0) · Cs",
         )
-        .val("kd", Val::num(&mat.kd))
-        .val("Σ Att·Spot·Ld·max(cos α, 0)", rgb_val(sum_d))
-        .sub("Σ Att·Spot·Ld·max(cos α, 0)", wd)
-        .val("Cs", rgb_val(&mat.color))
-        .res("diffuse", rgb_val(rd))
+        .val(Name::math("kd"), Val::num(&mat.kd))
+        .val(Name::math("Σ Att·Spot·Ld·max(cos α, 0)"), rgb_val(sum_d))
+        .sub(Name::math("Σ Att·Spot·Ld·max(cos α, 0)"), wd)
+        .val(Name::math("Cs"), rgb_val(&mat.color))
+        .res(Name::math("diffuse"), rgb_val(rd))
         .sub(
-            "diffuse",
+            Name::math("diffuse"),
             Subst::new(
                 product(on.1),
                 vec![Val::num(&mat.kd), rgb_val(sum_d), rgb_val(&mat.color)],
@@ -948,13 +951,13 @@ fn record_totals<T: Scalar>(
             Msg::TermStep(Term::Specular),
             "specular = ks · Σ Att·Spot·Ls·highlight · Cspecular",
         )
-        .val("ks", Val::num(&mat.ks))
-        .val("Σ Att·Spot·Ls·highlight", rgb_val(sum_s))
-        .sub("Σ Att·Spot·Ls·highlight", ws)
-        .val("Cspecular", rgb_val(&mat.specular))
-        .res("specular", rgb_val(rs))
+        .val(Name::math("ks"), Val::num(&mat.ks))
+        .val(Name::math("Σ Att·Spot·Ls·highlight"), rgb_val(sum_s))
+        .sub(Name::math("Σ Att·Spot·Ls·highlight"), ws)
+        .val(Name::math("Cspecular"), rgb_val(&mat.specular))
+        .res(Name::math("specular"), rgb_val(rs))
         .sub(
-            "specular",
+            Name::math("specular"),
             Subst::new(
                 product(on.2),
                 vec![Val::num(&mat.ks), rgb_val(sum_s), rgb_val(&mat.specular)],

@@ -23,7 +23,7 @@ use crate::input::answer::{self, Read};
 use crate::input::problem::ProblemIn;
 use crate::msg::Msg;
 use crate::num::Real;
-use crate::stages::trace::{Step, Val};
+use crate::stages::trace::{Name, Step, Val};
 use crate::tutor::diagnose::{Mistake, CATALOG};
 use crate::tutor::follow::Given;
 use crate::tutor::keys::ordered_keys;
@@ -338,7 +338,7 @@ fn given(read: &Read) -> Option<Given<Real>> {
 fn step_result(step: &Step, name: &str) -> Option<Val> {
     step.result
         .iter()
-        .find(|(n, _)| n == name)
+        .find(|(n, _)| *n == Name::math(name))
         .map(|(_, v)| v.clone())
 }
 

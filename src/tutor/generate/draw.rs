@@ -4,7 +4,7 @@
 use super::{Difficulty, Generated, Topic};
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
-use crate::msg::{CameraText, DrawnTitle, Msg, ShadeAsked, Statement};
+use crate::msg::{DrawnTitle, Msg, NamedPoint, Number, ShadeAsked, StatedCamera, Statement};
 use crate::num::rng::SplitMix64;
 use crate::num::Real;
 use crate::stages::trace::Val;
@@ -226,9 +226,16 @@ fn tstr(s: &str) -> String {
     toml::Value::String(s.to_string()).to_string()
 }
 
-/// (x, y, z) for a statement.
-fn tuple(v: [i64; 3]) -> String {
-    format!("({}, {}, {})", v[0], v[1], v[2])
+/// The integer `n`, the decimal `units · 10^−places` and the fraction
+/// `p/q` as a statement states them.
+const fn int(n: i64) -> Number {
+    Number::int(n)
+}
+const fn dec(units: i64, places: u32) -> Number {
+    Number::dec(units, places)
+}
+const fn frac(p: i64, q: i64) -> Number {
+    Number::Fraction(p, q)
 }
 
 const TRIPLES: [(i64, i64); 6] = [(3, 4), (4, 3), (5, 12), (12, 5), (6, 8), (8, 6)];
@@ -274,22 +281,14 @@ fn camera_problem(topic: Topic, diff: Difficulty, rng: &mut SplitMix64) -> Optio
     let look = [rng.range(-2, 2), rng.range(-2, 2), rng.range(-2, 2)];
     let eye = [look[0] + d[0], look[1] + d[1], look[2] + d[2]];
     let pts = camera_points(topic, diff, look, rng);
-    let nears: &[&str] = match diff {
-        Difficulty::Easy => &["1", "2"],
-        Difficulty::Medium => &["0.5", "1", "2"],
-        Difficulty::Hard => &["0.1", "0.25", "0.5"],
+    let nears: &[Number] = match diff {
+        Difficulty::Easy => &[int(1), int(2)],
+        Difficulty::Medium => &[dec(5, 1), int(1), int(2)],
+        Difficulty::Hard => &[dec(1, 1), dec(25, 2), dec(5, 1)],
     };
     let near = *rng.pick(nears);
-    let points = pts
-        .iter()
-        .map(|(n, p)| format!("{n}{}", tuple(*p)))
-        .collect::<Vec<_>>()
-        .join(", ");
-    let camera = CameraText {
-        eye: tuple(eye),
-        look: tuple(look),
-        up: tuple(up),
-    };
+    let points = pts.clone();
+    let camera = StatedCamera { eye, look, up };
     let (title, ask, statement, per) = match topic {
         Topic::Basis => (
             DrawnTitle::Basis,
@@ -306,7 +305,7 @@ fn camera_problem(topic: Topic, diff: Difficulty, rng: &mut SplitMix64) -> Optio
         Topic::Project => (
             DrawnTitle::Projection,
             "project",
-            Statement::Project(camera, points, near.to_string()),
+            Statement::Project(camera, points, near),
             format!("[perspective]\nnear = {near}\n\n"),
         ),
         _ => {
@@ -379,28 +378,28 @@ fn camera_points(
 /// for the difficulty): its statement and its `[perspective]` table.
 fn pipeline_setup(
     diff: Difficulty,
-    near: &str,
-    camera: CameraText,
-    points: String,
+    near: Number,
+    camera: StatedCamera,
+    points: Vec<NamedPoint>,
     rng: &mut SplitMix64,
 ) -> (Statement, String) {
-    let fovy = *rng.pick(match diff {
+    let fovy: i64 = *rng.pick(match diff {
         Difficulty::Easy => &[90][..],
         Difficulty::Medium => &[45, 60, 90][..],
         Difficulty::Hard => &[40, 50, 70][..],
     });
-    let aspect = *rng.pick(&["1", "2", "1.5"]);
-    let vp = *rng.pick(&["[200, 100]", "[400, 200]", "[300, 200]"]);
+    let aspect = *rng.pick(&[int(1), int(2), dec(15, 1)]);
+    let (w, h) = *rng.pick(&[(200, 100), (400, 200), (300, 200)]);
     let statement = Statement::Pipeline {
         camera,
         points,
-        near: near.to_string(),
-        fovy: fovy.to_string(),
-        aspect: aspect.to_string(),
-        viewport: vp.trim_matches(['[', ']']).replace(", ", "x"),
+        near,
+        fovy,
+        aspect,
+        viewport: (w, h),
     };
     let per = format!(
-        "[perspective]\nnear = {near}\nfovy = {fovy}\naspect = {aspect}\nviewport = {vp}\n\n"
+        "[perspective]\nnear = {near}\nfovy = {fovy}\naspect = {aspect}\nviewport = [{w}, {h}]\n\n"
     );
     (statement, per)
 }
@@ -409,31 +408,31 @@ fn pipeline_setup(
 /// 20 different problems; medium: a fovy whose tangent has one surd; hard:
 /// a fovy whose half has no tangent in square roots (20°, 25°, 35°, 40°).
 fn window_problem(diff: Difficulty, rng: &mut SplitMix64) -> Option<Draft> {
-    let (fovy, aspect, near): (i64, &str, &str) = match diff {
+    let (fovy, aspect, near): (i64, Number, Number) = match diff {
         Difficulty::Easy => (
             90,
-            *rng.pick(&["1", "2", "1.5", "0.5"]),
-            *rng.pick(&["1", "2", "3", "4", "5"]),
+            *rng.pick(&[int(1), int(2), dec(15, 1), dec(5, 1)]),
+            *rng.pick(&[int(1), int(2), int(3), int(4), int(5)]),
         ),
         Difficulty::Medium => (
             *rng.pick(&[30, 45, 60, 120]),
-            *rng.pick(&["1.5", "2", "4/3"]),
-            *rng.pick(&["0.5", "1", "0.1"]),
+            *rng.pick(&[dec(15, 1), int(2), frac(4, 3)]),
+            *rng.pick(&[dec(5, 1), int(1), dec(1, 1)]),
         ),
         Difficulty::Hard => (
             *rng.pick(&[40, 50, 70, 80]),
-            *rng.pick(&["16/9", "1.6", "1.25"]),
-            *rng.pick(&["0.1", "0.25", "0.3"]),
+            *rng.pick(&[frac(16, 9), dec(16, 1), dec(125, 2)]),
+            *rng.pick(&[dec(1, 1), dec(25, 2), dec(3, 1)]),
         ),
     };
-    let aspect_toml = if aspect.contains('/') {
-        tstr(aspect)
-    } else {
-        aspect.to_string()
+    // a fraction is a string of the file (an expression), a decimal a number
+    let aspect_toml = match aspect {
+        Number::Fraction(..) => tstr(&aspect.to_string()),
+        Number::Decimal(..) => aspect.to_string(),
     };
     Some(Draft {
         title: DrawnTitle::Window,
-        statement: Statement::Window(fovy.to_string(), aspect.to_string(), near.to_string()),
+        statement: Statement::Window(fovy, aspect, near),
         body: format!(
             "ask = [\"window\"]\n\n[perspective]\nnear = {near}\nfovy = {fovy}\naspect = {aspect_toml}\n"
         ),
@@ -540,7 +539,7 @@ fn clip_problem(diff: Difficulty, status: usize, rng: &mut SplitMix64) -> Option
     }
     Some(Draft {
         title: DrawnTitle::Clipping,
-        statement: Statement::Clip(tuple(min), tuple(max), tuple(p0), tuple(p1)),
+        statement: Statement::Clip(min, max, p0, p1),
         body: format!(
             "ask = [\"clip\"]\n\n[clip]\nmin = {}\nmax = {}\n\n[[clip.segment]]\nfrom = {}\nto = {}\n",
             ints(min),
@@ -558,7 +557,7 @@ type Draw = (
     [i64; 3],
     [i64; 3],
     &'static str,
-    Option<[&'static str; 4]>,
+    Option<[Number; 4]>,
 );
 
 /// Draws N, L, V, the model and (hard) the constants.
@@ -595,10 +594,10 @@ fn shade_draw(diff: Difficulty, rng: &mut SplitMix64) -> Draw {
         Difficulty::Hard => {
             let vec = |r: &mut SplitMix64| [r.range(-2, 3), r.range(-2, 3), r.range(1, 3)];
             let k = [
-                *rng.pick(&["0.2", "0.3", "0.4"]),
-                *rng.pick(&["0.5", "0.6", "0.7"]),
-                *rng.pick(&["0.5", "0.7", "0.9"]),
-                *rng.pick(&["3", "5", "8", "10"]),
+                *rng.pick(&[dec(2, 1), dec(3, 1), dec(4, 1)]),
+                *rng.pick(&[dec(5, 1), dec(6, 1), dec(7, 1)]),
+                *rng.pick(&[dec(5, 1), dec(7, 1), dec(9, 1)]),
+                *rng.pick(&[int(3), int(5), int(8), int(10)]),
             ];
             (
                 vec(rng),
@@ -615,21 +614,21 @@ fn shade_draw(diff: Difficulty, rng: &mut SplitMix64) -> Draw {
 /// model: (the constants as stated, what is asked, the check keys).
 fn shade_asked(
     model: &str,
-    (ka, kd, ks, sh): (&str, &str, &str, &str),
-) -> (String, ShadeAsked, &'static str) {
+    [ka, kd, ks, sh]: [Number; 4],
+) -> (Vec<(&'static str, Number)>, ShadeAsked, &'static str) {
     match model {
         "lambert" => (
-            format!("ka = {ka}, kd = {kd}"),
+            vec![("ka", ka), ("kd", kd)],
             ShadeAsked::Lambert,
             r#"["shade.cos_alpha", "shade.ambient", "shade.diffuse", "shade.color"]"#,
         ),
         "blinn" => (
-            format!("ka = {ka}, kd = {kd}, ks = {ks}, n = {sh}"),
+            vec![("ka", ka), ("kd", kd), ("ks", ks), ("n", sh)],
             ShadeAsked::Blinn,
             r#"["shade.cos_alpha", "shade.H", "shade.N_dot_H", "shade.ambient", "shade.diffuse", "shade.specular", "shade.color"]"#,
         ),
         _ => (
-            format!("ka = {ka}, kd = {kd}, ks = {ks}, n = {sh}"),
+            vec![("ka", ka), ("kd", kd), ("ks", ks), ("n", sh)],
             ShadeAsked::Phong,
             r#"["shade.cos_alpha", "shade.R", "shade.cos_beta", "shade.ambient", "shade.diffuse", "shade.specular", "shade.color"]"#,
         ),
@@ -642,12 +641,13 @@ fn shade_asked(
 /// medium: normals like (0, 1, 1) with one surd, the models phong, lambert
 /// and blinn; hard: any small vectors and coefficients. Always lit (N·L > 0).
 fn shade_problem(diff: Difficulty, rng: &mut SplitMix64) -> Option<Draft> {
-    let colors: [[&str; 3]; 5] = [
-        ["1", "1", "0"],
-        ["1", "0", "0"],
-        ["0", "0.5", "1"],
-        ["1", "0.5", "0"],
-        ["0.5", "0.5", "0.5"],
+    let half = dec(5, 1);
+    let colors: [[Number; 3]; 5] = [
+        [int(1), int(1), int(0)],
+        [int(1), int(0), int(0)],
+        [int(0), half, int(1)],
+        [int(1), half, int(0)],
+        [half, half, half],
     ];
     let color = *rng.pick(&colors);
     let (n, l, v, model, k) = shade_draw(diff, rng);
@@ -657,13 +657,14 @@ fn shade_problem(diff: Difficulty, rng: &mut SplitMix64) -> Option<Draft> {
             k[0], k[1], k[2], k[3]
         )
     });
-    let (ka, kd, ks, sh) = k.map_or(("0.4", "0.6", "0.7", "4"), |k| (k[0], k[1], k[2], k[3]));
-    let (constants, asked, keys) = shade_asked(model, (ka, kd, ks, sh));
+    // the text's constants unless drawn
+    let text = [dec(4, 1), dec(6, 1), dec(7, 1), int(4)];
+    let (constants, asked, keys) = shade_asked(model, k.unwrap_or(text));
     let statement = Statement::Shade {
-        normal: tuple(n),
-        color: format!("({})", color.join(", ")),
-        light: tuple(l),
-        view: tuple(v),
+        normal: n,
+        color,
+        light: l,
+        view: v,
         model: model.to_string(),
         constants,
         asked,

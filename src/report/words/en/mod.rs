@@ -1,11 +1,16 @@
 //! Every word in English: one type, [`En`], implementing each family's
 //! trait of [`super::Words`] in its own file.
 
+mod drawn;
 mod errors;
+mod figure;
 mod keys;
 mod msg;
 mod names;
+mod pixel;
+mod render;
 mod report;
+mod said;
 
 /// English.
 pub struct En;

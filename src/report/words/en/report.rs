@@ -10,8 +10,8 @@ use crate::msg::CliWord as L;
 use crate::msg::PracticeWord as P;
 use crate::msg::StatWord as S;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
-use crate::report::lang::NumStyle;
 use crate::report::words::report::{dec, exam_title, ReportWords};
+use crate::report::words::MsgWords;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
@@ -51,7 +51,7 @@ impl ReportWords for En {
                 follow_through,
             } => format!(
                 "{students} students marked; tolerance {} %, at least {sig_figs} significant figures, follow-through {}.",
-                dec(*tolerance_pct, 4, NumStyle::POINT),
+                dec(*tolerance_pct, 4, self.nums()),
                 if *follow_through { "on" } else { "off" }
             ),
             C::NotMarked => "Not marked (not counted below):".into(),
@@ -324,7 +324,7 @@ impl ReportWords for En {
     }
 
     fn practice_summary(&self, s: &Summary) -> String {
-        let pts = dec(s.points, 4, NumStyle::POINT);
+        let pts = dec(s.points, 4, self.nums());
         let mut out = format!(
             "Summary: {pts}/{} points\n  correct {} ({} by follow-through), too coarse {}, wrong {},\n  skipped {}, revealed {}, not reached {}; hints used {}\n",
             s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints

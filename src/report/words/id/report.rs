@@ -10,8 +10,8 @@ use crate::msg::CliWord as L;
 use crate::msg::PracticeWord as P;
 use crate::msg::StatWord as S;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
-use crate::report::lang::NumStyle;
 use crate::report::words::report::{dec, exam_title, ReportWords};
+use crate::report::words::MsgWords;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
@@ -51,7 +51,7 @@ impl ReportWords for Id {
                 follow_through,
             } => format!(
                 "{students} mahasiswa dinilai; toleransi {} %, paling sedikit {sig_figs} angka penting, follow-through {}.",
-                dec(*tolerance_pct, 4, NumStyle::COMMA),
+                dec(*tolerance_pct, 4, self.nums()),
                 if *follow_through { "aktif" } else { "tidak aktif" }
             ),
             C::NotMarked => "Tidak dinilai (tidak dihitung di bawah):".into(),
@@ -321,7 +321,7 @@ impl ReportWords for Id {
     }
 
     fn practice_summary(&self, s: &Summary) -> String {
-        let pts = dec(s.points, 4, NumStyle::COMMA);
+        let pts = dec(s.points, 4, self.nums());
         let mut out = format!(
             "Ringkasan: {pts}/{} poin\n  benar {} ({} karena follow-through), terlalu kasar {}, salah {},\n  dilewati {}, dilihat {}, belum dijawab {}; petunjuk dipakai {}\n",
             s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints

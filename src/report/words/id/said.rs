@@ -1,0 +1,30 @@
+//! Values given as words, in Bahasa Indonesia (numbers with the decimal
+//! comma, a clipping status glossed with the text's word).
+
+use super::Id;
+use crate::msg::Said;
+use crate::report::words::{said, MsgWords, SaidWords};
+use crate::stages::clip::Status;
+
+impl SaidWords for Id {
+    fn said(&self, s: &Said) -> String {
+        let n = |x: &str| self.nums().values(x);
+        match s {
+            Said::BitTest(true, test, values) => format!("1 — {test}: {} benar", n(values)),
+            Said::BitTest(false, test, values) => format!("0 — {test}: {} salah", n(values)),
+            Said::BitQuestion(test, values) => format!("{test}: apakah {} benar?", n(values)),
+            Said::FrameTime(ms, mpix, png) => format!(
+                "{} ms ({} Mpiksel/s); encoding PNG {} ms",
+                n(ms),
+                n(mpix),
+                n(png)
+            ),
+            Said::Status(code) => match said::status(code) {
+                Some(Status::Clipped) => format!("{code} (di-clip)"),
+                Some(Status::Accepted) => format!("{code} (diterima)"),
+                Some(Status::Rejected) => format!("{code} (ditolak)"),
+                None => code.clone(),
+            },
+        }
+    }
+}
