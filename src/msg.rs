@@ -14,6 +14,7 @@ mod figure;
 pub mod lang;
 mod pixel;
 mod render;
+mod report;
 mod said;
 pub use drawn::{DrawnTitle, NamedPoint, Number, ShadeAsked, StatedCamera, Statement, Triple};
 pub use errors::{
@@ -23,6 +24,9 @@ pub use figure::{FigWord, FigureMsg, Panel};
 pub use lang::Lang;
 pub use pixel::PixelMsg;
 pub use render::{PerPixel, Summary};
+pub use report::{
+    BenchWord, CheckWord, ClassWord, CliWord, Decimal, DocWord, PracticeWord, QuizWord, StatWord,
+};
 pub use said::Said;
 
 /// A term of the lighting sum.

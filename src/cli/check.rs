@@ -10,10 +10,11 @@ use crate::cli::args::CheckArgs;
 use crate::cli::write::Outputs;
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
-use crate::msg::{Bound, ErrMsg, Twice};
+use crate::msg::{Bound, CliWord, DocWord, ErrMsg, Twice};
 use crate::report::check::{to_json, to_text};
 use crate::report::class::lecturer::{self, Format};
-use crate::report::lang::{tr, Lang};
+use crate::report::lang::Lang;
+use crate::report::words;
 use crate::report::Style;
 use crate::tutor::check::{self, Marking};
 use crate::tutor::class::{self, exam, stats, Paper, Sheet};
@@ -129,7 +130,8 @@ fn from_text(
         ));
     }
     let (_, answers) = check::answers_from_table(&p.printed);
-    let who = (p.source.clone()).unwrap_or_else(|| tr(style.lang, "the text", "teks").into());
+    let who =
+        (p.source.clone()).unwrap_or_else(|| words::of(style.lang).cli(CliWord::TheText).into());
     let m = check::mark(p, &who, &answers, settings, true)?;
     one_sheet(lone_sheet(&a.file, who, m), false, a, json, style, outputs)
 }
@@ -204,7 +206,7 @@ fn not_marked(sheets: &[Sheet], lang: Lang) {
         );
         crate::cli::print::stderr_line(&format!(
             "{}: {}",
-            tr(lang, "error", "kesalahan"),
+            words::of(lang).doc(&DocWord::Error),
             crate::report::class::said(&e, lang)
         ));
     }

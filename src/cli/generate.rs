@@ -139,7 +139,7 @@ pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<Vec<P
 /// second).
 fn progress(a: &GenerateArgs, style: &Style) -> Option<indicatif::ProgressBar> {
     let n = a.count as u64 * a.variants as u64;
-    let msg = crate::report::lang::tr(style.lang, "variants", "varian");
+    let msg = crate::report::words::of(style.lang).cli(crate::msg::CliWord::Variants);
     (n > 100)
         .then(|| super::terminal_bar(a.variants as u64, msg))
         .flatten()

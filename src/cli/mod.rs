@@ -17,9 +17,10 @@ use crate::bench::accuracy::Stage;
 use crate::error::{Error, Result};
 use crate::input::part::Problem;
 use crate::input::problem::ProblemIn;
-use crate::msg::{ErrMsg, Msg};
+use crate::msg::{CliWord, DocWord, ErrMsg, Msg};
 use crate::num::Precision;
-use crate::report::lang::{tr, Lang};
+use crate::report::lang::Lang;
+use crate::report::words;
 use crate::report::Style;
 use crate::tutor::solution::Report;
 use args::{Cli, Command};
@@ -358,7 +359,7 @@ fn page_title(report: &Report, style: &Style) -> String {
         None => format!(
             "grafika {} — {}",
             report.command(),
-            style.tr("worked solution", "penyelesaian")
+            words::of(style.lang).cli(CliWord::WorkedSolution)
         ),
     }
 }
@@ -377,11 +378,7 @@ fn style_of(cli: &Cli) -> Style {
 /// A report as JSON or as the worked solution; its warnings go to stderr.
 fn report_text(report: &Report, json: bool, style: &Style) -> String {
     for w in &report.warnings {
-        print::stderr_line(&format!(
-            "{}: {}",
-            style.tr("warning", "peringatan"),
-            style.w(w)
-        ));
+        print::stderr_line(&format!("{}: {}", style.doc(DocWord::Warning), style.w(w)));
     }
     if json {
         serde_json::to_string_pretty(&report.to_json(style.lang)).unwrap_or_default() + "\n"
@@ -400,7 +397,10 @@ fn bench(quick: bool, cases: Option<u16>, json: bool, lang: Lang) -> String {
     if let Some(n) = cases {
         set.cases = n as usize;
     }
-    let bar = terminal_bar(Stage::ALL.len() as u64, tr(lang, "measuring", "mengukur"));
+    let bar = terminal_bar(
+        Stage::ALL.len() as u64,
+        words::of(lang).cli(CliWord::Measuring),
+    );
     let (inp, rows) = crate::bench::measure_with(&set, &mut |k, _| {
         if let Some(b) = &bar {
             b.set_position(k as u64);
@@ -457,7 +457,7 @@ fn clap_error(e: clap::Error, wants_json: bool, lang: Option<Lang>) -> i32 {
             let field = e
                 .get(ContextKind::InvalidArg)
                 .map(|v| v.to_string())
-                .unwrap_or_else(|| tr(lang, "arguments", "argumen").into());
+                .unwrap_or_else(|| words::of(lang).cli(CliWord::Arguments).into());
             let english = clap_message(&e.render().to_string(), &kind.to_string());
             let err = Error::why(field, refused::clap_refused(&e, english));
             report_error(&err, wants_json, lang)
@@ -506,7 +506,7 @@ fn report_error(e: &Error, json: bool, lang: Lang) -> i32 {
     let field = cut_message(&e.field, lang);
     let words = crate::report::words::words(&e.message, lang);
     let message = cut_message(&words, lang).replace('\n', " ");
-    let label = crate::report::lang::tr(lang, "error", "kesalahan");
+    let label = words::of(lang).doc(&DocWord::Error);
     print::stderr_line(&format!("{label}: {field}: {message}"));
     if json {
         let j = serde_json::json!({ "error": { "field": field, "message": message } });

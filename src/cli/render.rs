@@ -9,7 +9,7 @@ use crate::error::{Error, Result};
 use crate::input::scene::{Scene, Shading};
 use crate::msg::ErrMsg;
 use crate::render::{self, Frame, Options, Stats};
-use crate::report::lang::{tr, Lang};
+use crate::report::lang::Lang;
 use crate::stages::trace::Recorder;
 use crate::tutor::solution::{Asked, RenderRun, Report, Times};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -78,7 +78,12 @@ fn frames(a: &RenderArgs, scene: &Scene, opt: &Options, lang: Lang) -> Result<(F
     // --repeat shows its progress on a terminal (a big scene × 10,000 runs
     // for minutes); one frame has the renderer's own bar.
     let bar = (a.repeat > 1)
-        .then(|| crate::cli::terminal_bar(a.repeat as u64, tr(lang, "frames", "bingkai")))
+        .then(|| {
+            crate::cli::terminal_bar(
+                a.repeat as u64,
+                crate::report::words::of(lang).cli(crate::msg::CliWord::Frames),
+            )
+        })
         .flatten();
     let bands = (opt.height as usize).div_ceil(render::raster::BAND) as u64;
     let progress = Progress::new(a.repeat == 1, bands);

@@ -42,19 +42,23 @@ pub fn fmt_ulps(x: f64) -> String {
 
 /// The table.
 pub fn table(inp: &Inputs, rows: &[Row], lang: crate::report::lang::Lang) -> String {
-    let tr = |en, id| crate::report::lang::tr(lang, en, id);
+    use crate::msg::BenchWord as B;
+    let w = |k: B| crate::report::words::of(lang).bench(k);
     let mut t = Table::new();
     t.load_preset(presets::UTF8_FULL_CONDENSED);
-    t.set_header(vec![
-        tr("stage", "tahap"),
-        tr("precision", "presisi"),
-        tr("cases", "kasus"),
-        tr("time/op (median)", "waktu/operasi (median)"),
-        tr("max ulps (int ≤ 2^20)", "ulps maks (bulat ≤ 2^20)"),
-        tr("median ulps (int ≤ 2^20)", "ulps median (bulat ≤ 2^20)"),
-        tr("max ulps (1e-30…1e30)", "ulps maks (1e-30…1e30)"),
-        tr("target ≤ 4 ulps", "target ≤ 4 ulps"),
-    ]);
+    t.set_header(
+        [
+            B::Stage,
+            B::Precision,
+            B::Cases,
+            B::TimePerOp,
+            B::MaxUlpsInt,
+            B::MedianUlpsInt,
+            B::MaxUlpsWide,
+            B::Target,
+        ]
+        .map(w),
+    );
     for r in rows {
         // Numbers with the language's decimal mark (`56,99 ms` in Indonesian).
         let right = |s: String| {
@@ -66,13 +70,13 @@ pub fn table(inp: &Inputs, rows: &[Row], lang: crate::report::lang::Lang) -> Str
         let exact = r.precision == Precision::Exact;
         let dash = || right("—".into());
         let verdict = if exact {
-            tr("exact", "eksak")
+            w(B::Exact)
         } else if !r.stage.has_target() {
-            tr("(no target)", "(tanpa target)")
+            w(B::NoTarget)
         } else if tmax <= 4.0 && r.errors.target_disagreements == 0 {
-            tr("met", "tercapai")
+            w(B::Met)
         } else {
-            tr("NOT met", "TIDAK tercapai")
+            w(B::NotMet)
         };
         t.add_row(vec![
             Cell::new(r.stage.name()),
@@ -87,24 +91,10 @@ pub fn table(inp: &Inputs, rows: &[Row], lang: crate::report::lang::Lang) -> Str
     }
     let mut out = t.to_string();
     out.push('\n');
-    out.push_str(tr(
-        "ulps: of the exact value (of 1 for the unit vectors u, v, n), at the row's precision;\n\
-         the exact path's results are the reference (correctly rounded to f64 first).\n",
-        "ulps: dari nilai eksak (dari 1 untuk vektor satuan u, v, n), pada presisi barisnya;\n\
-         hasil jalur eksak adalah acuannya (dibulatkan benar ke f64 lebih dulu).\n",
-    ));
+    out.push_str(w(B::UlpsNote));
     let dis: usize = rows.iter().map(|r| r.errors.disagreements).sum();
     let unref: usize = rows.iter().map(|r| r.errors.unreferenced).sum();
-    let (a, b) = (
-        tr(
-            "cases where a float run failed but the exact one did not, or the reverse (an overflow at f32 is an error)",
-            "kasus ketika jalur float gagal tetapi jalur eksak tidak, atau sebaliknya (overflow pada f32 adalah kesalahan)",
-        ),
-        tr(
-            "components without an exact reference (a square root `Real` cannot factor; not counted)",
-            "komponen tanpa acuan eksak (akar kuadrat yang tidak dapat difaktorkan `Real`; tidak dihitung)",
-        ),
-    );
+    let (a, b) = (w(B::Disagreements), w(B::Unreferenced));
     out.push_str(&format!("{a}: {dis}\n{b}: {unref}\n"));
     out
 }

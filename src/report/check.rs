@@ -1,8 +1,9 @@
 //! A marking as text (a table, the diagnosis, the score) or as JSON for
 //! autograders.
 
+use crate::msg::CheckWord as K;
 use crate::report::lang::Lang;
-use crate::report::words::words;
+use crate::report::words::{self, words};
 use crate::report::{exact_json, value_json, Style};
 use crate::tutor::check::{Marking, Verdict};
 use serde_json::{json, Value};
@@ -48,37 +49,34 @@ pub fn to_json(m: &Marking, lang: Lang) -> Value {
     })
 }
 
-/// A verdict's words.
-fn verdict_words(v: Verdict, lang: Lang) -> String {
-    match (v, lang) {
-        (_, Lang::En) => v.as_str().replace('_', " "),
-        (Verdict::Correct, Lang::Id) => "benar".into(),
-        (Verdict::TooCoarse, Lang::Id) => "terlalu kasar".into(),
-        (Verdict::Wrong, Lang::Id) => "salah".into(),
-        (Verdict::Missing, Lang::Id) => "tidak dijawab".into(),
-        (Verdict::Unparseable, Lang::Id) => "tidak terbaca".into(),
-    }
+/// The verdicts, in the order the score line and the class's tables count
+/// them.
+pub const VERDICTS: [Verdict; 5] = [
+    Verdict::Correct,
+    Verdict::TooCoarse,
+    Verdict::Wrong,
+    Verdict::Missing,
+    Verdict::Unparseable,
+];
+
+/// A word of a marked answer file, in `style`'s language.
+fn w(style: &Style, k: K) -> String {
+    words::of(style.lang).check(&k)
 }
 
 /// The marking as text: a table of answers, the mistakes found, the score.
 pub fn to_text(m: &Marking, style: &Style) -> String {
     use comfy_table::{presets, ContentArrangement, Table};
-    let t_ = |en, id| style.tr(en, id);
     let mut t = Table::new();
+    let header = [K::Answer, K::Verdict, K::Given, K::Expected, K::Note];
     t.load_preset(presets::UTF8_FULL_CONDENSED)
         .set_content_arrangement(ContentArrangement::Dynamic)
         .set_width(120)
-        .set_header(vec![
-            t_("answer", "jawaban"),
-            t_("verdict", "penilaian"),
-            t_("given", "diberikan"),
-            t_("expected", "seharusnya"),
-            t_("note", "catatan"),
-        ]);
+        .set_header(header.map(|k| w(style, k)));
     for a in &m.answers {
         t.add_row(vec![
             a.key.clone(),
-            verdict_words(a.verdict, style.lang),
+            words::of(style.lang).verdict(a.verdict).to_string(),
             a.given.clone().unwrap_or_else(|| "—".into()),
             a.expected
                 .as_ref()
@@ -87,18 +85,15 @@ pub fn to_text(m: &Marking, style: &Style) -> String {
             style.w(&a.note),
         ]);
     }
-    let of = t_("answers of", "jawaban dari");
+    let of = w(style, K::AnswersOf);
     let mut out = format!("{} — {of} {}\n{t}\n", m.title, m.who);
     let whys: Vec<String> = m
         .answers
         .iter()
-        .filter_map(|a| (a.why.as_ref()).map(|w| format!("  • {}: {}\n", a.key, style.w(w))))
+        .filter_map(|a| (a.why.as_ref()).map(|why| format!("  • {}: {}\n", a.key, style.w(why))))
         .collect();
     if !whys.is_empty() {
-        out.push_str(t_(
-            "\nWhy the printed answers differ (the problem file's errata):\n",
-            "\nMengapa jawaban yang tercetak berbeda (errata dalam berkas soal):\n",
-        ));
+        out.push_str(&format!("\n{}\n", w(style, K::Errata)));
         out.push_str(&whys.concat());
     }
     out.push_str(&diagnoses_text(m, style));
@@ -108,25 +103,22 @@ pub fn to_text(m: &Marking, style: &Style) -> String {
 
 /// The mistakes found, the wrong answers no mistake explains, the unknown keys.
 fn diagnoses_text(m: &Marking, style: &Style) -> String {
-    let t_ = |en, id| style.tr(en, id);
+    let t_ = |k| w(style, k);
     let mut out = String::new();
     if !m.diagnoses.is_empty() {
-        out.push_str(t_("\nDiagnosis:\n", "\nDiagnosis:\n"));
+        out.push_str(&format!("\n{}\n", t_(K::Diagnosis)));
         for d in &m.diagnoses {
             out.push_str(&format!(
                 "  • {} [{}]\n    {}: {}\n",
                 crate::report::mistakes::mistake_text(d.mistake, style.lang),
                 d.mistake.code,
-                t_("reproduces", "menghasilkan ulang"),
+                t_(K::Reproduces),
                 d.keys.join(", ")
             ));
             for a in &d.also {
                 out.push_str(&format!(
                     "    ({}: {} [{}])\n",
-                    t_(
-                        "some of these also follow from",
-                        "sebagian juga dapat berasal dari"
-                    ),
+                    t_(K::AlsoFollow),
                     crate::report::mistakes::mistake_text(a, style.lang),
                     a.code
                 ));
@@ -143,20 +135,14 @@ fn diagnoses_text(m: &Marking, style: &Style) -> String {
     if !undiagnosed.is_empty() {
         out.push_str(&format!(
             "\n{} {}\n",
-            t_(
-                "No known mistake explains",
-                "Tidak ada kesalahan yang dikenal yang menjelaskan"
-            ),
+            t_(K::NoMistakeExplains),
             undiagnosed.join(", "),
         ));
     }
     if !m.unknown.is_empty() {
         out.push_str(&format!(
             "\n{}: {}\n",
-            t_(
-                "Not answers to this problem (ignored)",
-                "Bukan jawaban untuk soal ini (diabaikan)"
-            ),
+            t_(K::NotAnswers),
             m.unknown.join(", ")
         ));
     }
@@ -167,36 +153,19 @@ fn diagnoses_text(m: &Marking, style: &Style) -> String {
 fn score_text(m: &Marking, style: &Style) -> String {
     let c = |v| m.count(v);
     let score = style.dec(crate::report::fmt_dec(m.score(), 4));
-    let verdicts = [
-        Verdict::Correct,
-        Verdict::TooCoarse,
-        Verdict::Wrong,
-        Verdict::Missing,
-        Verdict::Unparseable,
-    ];
-    let words = match style.lang {
-        Lang::En => ["correct", "too coarse", "wrong", "missing", "unparseable"],
-        Lang::Id => [
-            "benar",
-            "terlalu kasar",
-            "salah",
-            "tidak dijawab",
-            "tidak terbaca",
-        ],
-    };
-    let counts: Vec<String> = (verdicts.iter().zip(words))
-        .map(|(v, w)| format!("{} {w}", c(*v)))
+    let said = words::of(style.lang);
+    let counts: Vec<String> = (VERDICTS.iter())
+        .map(|v| format!("{} {}", c(*v), said.verdict(*v)))
         .collect();
     let score = format!(
         "\n{}: {score}/{} ({})\n",
-        style.tr("Score", "Nilai"),
+        w(style, K::Score),
         m.total(),
         counts.join(", ")
     );
     let n = m.follow_through();
-    match (n, style.lang) {
-        (0, _) => score,
-        (_, Lang::En) => score + &format!("({n} of the correct answers by follow-through: right given the student's own earlier answers)\n"),
-        (_, Lang::Id) => score + &format!("({n} jawaban benar karena follow-through: benar menurut jawaban mahasiswa sendiri sebelumnya)\n"),
+    match n {
+        0 => score,
+        _ => score + &w(style, K::FollowThroughCount(n)) + "\n",
     }
 }

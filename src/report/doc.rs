@@ -3,6 +3,7 @@
 //! compiles (ASCII only: every symbol the steps use is mapped to a LaTeX
 //! command). Used for exam answer keys.
 
+use crate::msg::DocWord;
 use crate::report::html;
 use crate::report::lang::Lang;
 use crate::report::latex::{latex_math, latex_text};
@@ -178,7 +179,7 @@ impl Doc {
         }
         match self {
             Doc::Markdown => {
-                let step = st.tr("Step", "Langkah");
+                let step = st.doc(DocWord::Step);
                 let mut out = format!("**{step} {k}. {}**\n\n", self.text(&st.w(&s.title)));
                 for l in lines {
                     if l.contains('\n') {
@@ -193,7 +194,7 @@ impl Doc {
             _ => {
                 let mut out = format!(
                     "\\paragraph{{{} {k}. {}}}\n\\begin{{itemize}}\n",
-                    st.tr("Step", "Langkah"),
+                    st.doc(DocWord::Step),
                     latex_text(&st.w(&s.title))
                 );
                 for l in lines {

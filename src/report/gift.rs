@@ -18,12 +18,14 @@
 //! preceded by a backslash. Each question is one line (a blank line ends a
 //! question).
 
+use crate::msg::QuizWord as Q;
 use crate::report::escape;
-use crate::report::lang::{tr, Lang};
+use crate::report::lang::Lang;
 use crate::report::moodle::{
     category, esc, esc_text, feedback, intro_html, number, question_name, solution_html,
     tolerance_text, Written,
 };
+use crate::report::words;
 use crate::stages::trace::Val;
 use crate::tutor::generate::quiz::{Blank, Question, Quiz, Typed};
 use std::fmt::Write as _;
@@ -70,11 +72,7 @@ fn variant_questions(question: &Question, (i, v): (usize, usize), q: &Quiz, w: &
 fn figures_note(lang: Lang) -> String {
     format!(
         "<p><i>{}</i></p>",
-        tr(
-            lang,
-            "The figures of this problem are in the Moodle XML of the same exam (grafika generate … --format moodle): GIFT cannot carry files.",
-            "Gambar soal ini ada di Moodle XML dari ujian yang sama (grafika generate … --format moodle): GIFT tidak dapat membawa berkas.",
-        )
+        words::of(lang).quiz(&Q::FiguresInMoodle)
     )
 }
 
@@ -107,13 +105,13 @@ fn labels(name: &str, v: &Val, colour: bool, lang: Lang, out: &mut Vec<String>) 
                 let axis = axes.get(k).map_or((k + 1).to_string(), |a| a.to_string());
                 out.push(format!(
                     "{name}, {} {axis}",
-                    tr(lang, "component", "komponen")
+                    words::of(lang).quiz(&Q::Component)
                 ));
             }
         }
         Val::List(items) => {
             for (k, x) in items.iter().enumerate() {
-                let part = format!("{name}, {} {}", tr(lang, "point", "titik"), k + 1);
+                let part = format!("{name}, {} {}", words::of(lang).quiz(&Q::Point), k + 1);
                 labels(&part, x, colour, lang, out);
             }
         }

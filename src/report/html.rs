@@ -7,7 +7,7 @@ use super::figure::xml_escape;
 use super::mathml;
 use super::words::{self, keys};
 use super::Style;
-use crate::msg::Msg;
+use crate::msg::{DocWord, Msg};
 use crate::stages::trace::{Step, Subst, Val};
 
 /// The page's style: readable on a screen, one column, and A4 in print
@@ -49,7 +49,7 @@ pub fn heading(level: usize, s: &str) -> String {
 pub fn step(k: usize, s: &Step, st: &Style) -> String {
     let mut out = format!(
         "<section class=\"step\">\n<h5>{} {k}. {}</h5>\n",
-        st.tr("Step", "Langkah"),
+        st.doc(DocWord::Step),
         xml_escape(&st.w(&s.title))
     );
     match &s.formula {

@@ -1,73 +1,15 @@
 //! The mistake catalog's descriptions for people, in the chosen language.
-//! The catalog (`tutor::diagnose::CATALOG`) keeps the English line; the
-//! Indonesian one is here, by code.
+//! The catalog (`tutor::diagnose::CATALOG`) keeps the English line; each
+//! language's words say it (`ReportWords::mistake`), the Indonesian ones
+//! by the mistake's code.
 
 use crate::report::lang::Lang;
+use crate::report::words;
 use crate::tutor::diagnose::Mistake;
 
 /// What the student did, in `lang`.
 pub fn mistake_text(m: &Mistake, lang: Lang) -> &'static str {
-    match lang {
-        Lang::En => m.description,
-        Lang::Id => indonesian(m.code).unwrap_or(m.description),
-    }
-}
-
-/// The Indonesian description of a catalog code.
-pub fn indonesian(code: &str) -> Option<&'static str> {
-    Some(match code {
-        "cross_order" => {
-            "u = n × Vup, bukan Vup × n (u, dan bersamanya v = n × u, berganti tanda)"
-        }
-        "n_reversed" => {
-            "n dihitung dari Pr − Pe, bukan Pe − Pr (kamera menghadap ke arah yang salah)"
-        }
-        "n_not_normalized" => {
-            "n = Pe − Pr tidak dibagi dengan |Pe − Pr| (v = n × u pun ikut memiliki panjang itu)"
-        }
-        "u_not_normalized" => {
-            "u = Vup × n tidak dibagi dengan |Vup × n| (v = n × u pun ikut memiliki panjang itu)"
-        }
-        "fovy_not_halved" => "tan(fovy) dipakai untuk viewing window, bukan tan(fovy/2)",
-        "degrees_as_radians" => "sudut dalam derajat dimasukkan ke tan seolah-olah dalam radian",
-        "height_is_half_extent" => {
-            "setengah ukuran near·tan(fovy/2) (h pada teks) diberikan sebagai tinggi viewing window (dan aspect·h sebagai lebarnya)"
-        }
-        "height_as_half_extent" => {
-            "near·tan(fovy/2) dianggap tinggi penuh, sehingga tepi-tepi viewing window berada pada setengah jarak yang benar"
-        }
-        "d_sign" => "tanda d salah (bidang proyeksi z = +near, bukan z = −near)",
-        "matrix_transposed" => "matriks pandang ditulis tertranspos (konvensi vektor baris P·M)",
-        "outcode_reversed" => {
-            "bit-bit outcode ditulis dengan urutan terbalik (bit 1 paling kiri, bukan paling kanan)"
-        }
-        "endpoint_kept" => {
-            "titik ujung di luar kotak dipertahankan, bukan titik potong yang menggantikannya"
-        }
-        "reflect_plus_l" => "R dihitung sebagai 2N(L·N) + L, bukan 2N(L·N) − L",
-        "specular_no_max" => {
-            "komponen specular tanpa max(·, 0): cos β yang negatif dipangkatkan n"
-        }
-        "pixel_y_from_top" => {
-            "py piksel diukur dari tepi atas (H − py), seperti baris berkas gambar dihitung, bukan dari tepi bawah"
-        }
-        "eye_no_translation" => {
-            "koordinat kamera diambil sebagai (u·P, v·P, n·P), Peye tidak dikurangkan (matriks transformasi pandang tanpa translasinya, serta proyeksi dan piksel yang mengikutinya)"
-        }
-        "aspect_inverted" => {
-            "tepi kanan viewing window diambil sebagai top / aspect, bukan aspect·top (lebarnya 2·top/aspect, dan piksel yang mengikutinya)"
-        }
-        "light_not_normalized" => {
-            "L tidak dibagi dengan |L|: cos α = L·N dengan vektor cahaya apa adanya (serta R = 2N(L·N) − L, cos β dan komponen-komponen yang mengikutinya)"
-        }
-        "normal_not_normalized" => {
-            "N tidak dibagi dengan |N|: cos α = L·N dengan normal apa adanya (serta R, cos β dan komponen-komponen yang mengikutinya)"
-        }
-        "copied_misprint" => {
-            "nilai yang dicetak sumber, yang menurut erratanya salah (lihat erratanya)"
-        }
-        _ => return None,
-    })
+    words::of(lang).mistake(m)
 }
 
 #[cfg(test)]
@@ -78,9 +20,8 @@ mod tests {
     #[test]
     fn every_mistake_has_both_languages() {
         for m in CATALOG {
-            let id = indonesian(m.code);
-            assert!(id.is_some(), "no Indonesian text for {}", m.code);
-            assert_ne!(id, Some(m.description), "{}", m.code);
+            let id = mistake_text(m, Lang::Id);
+            assert_ne!(id, m.description, "no Indonesian text for {}", m.code);
             assert_eq!(mistake_text(m, Lang::En), m.description);
         }
     }

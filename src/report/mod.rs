@@ -22,13 +22,13 @@ pub mod render;
 pub mod sheets;
 pub mod words;
 
-use crate::msg::{Msg, Printed};
+use crate::msg::{DocWord, Msg, Printed};
 use crate::num::Shown;
 use crate::stages::trace::{Name, Step, Subst, Val};
 use crate::tutor::key::{Field, Node};
 use crate::tutor::solution::{Asked, Compared, Comparison, Report};
 use comfy_table::{presets, Table};
-use lang::{tr, Lang, NumStyle};
+use lang::{Lang, NumStyle};
 use serde_json::{json, Map, Value};
 
 /// How numbers are written in text output.
@@ -60,9 +60,9 @@ impl Style {
     pub fn w(&self, m: &Msg) -> String {
         words::words(m, self.lang)
     }
-    /// English or Indonesian, by this style's language.
-    pub fn tr<'a>(&self, en: &'a str, id: &'a str) -> &'a str {
-        tr(self.lang, en, id)
+    /// A word the documents share, in this style's language.
+    pub fn doc(&self, w: DocWord) -> String {
+        words::of(self.lang).doc(&w)
     }
     /// How this style's language writes numbers.
     pub fn nums(&self) -> NumStyle {
@@ -165,13 +165,8 @@ impl Style {
                 .join(";  "),
             Val::Text(t) => t.clone(),
             Val::Said(m) => self.w(m),
-            Val::Bool(b) => if *b {
-                self.tr("yes", "ya")
-            } else {
-                self.tr("no", "tidak")
-            }
-            .into(),
-            Val::Null => self.tr("none", "tidak ada").into(),
+            Val::Bool(b) => self.doc(if *b { DocWord::Yes } else { DocWord::No }),
+            Val::Null => self.doc(DocWord::NoValue),
         }
     }
 
@@ -331,10 +326,10 @@ impl Report {
 
     /// The heading of the answer in `lang`: a render's summary is headed
     /// as a render, it answers nothing.
-    pub fn answer_heading(&self, lang: Lang) -> &'static str {
+    pub fn answer_heading(&self, lang: Lang) -> String {
         match &self.asked {
-            Asked::Render(_) => words::of(lang).render_heading(),
-            _ => tr(lang, "Answer", "Jawaban"),
+            Asked::Render(_) => words::of(lang).render_heading().to_string(),
+            _ => words::of(lang).doc(&DocWord::Answer),
         }
     }
 
@@ -379,7 +374,7 @@ impl Report {
             out.push_str(&format!("\n{}\n", practice::wrap(&style.w(&asked), "")));
         }
         let mut section: Option<&Msg> = None;
-        let step_word = style.tr("Step", "Langkah");
+        let step_word = style.doc(DocWord::Step);
         for (i, s) in self.steps.iter().enumerate() {
             if s.section.as_ref() != section {
                 section = s.section.as_ref();
@@ -400,7 +395,7 @@ impl Report {
             out.push_str(&format!("\n{n}\n"));
         }
         for w in &self.warnings {
-            let label = style.tr("warning", "peringatan");
+            let label = style.doc(DocWord::Warning);
             out.push_str(&format!("\n{label}: {}\n", style.w(w)));
         }
         out
@@ -473,7 +468,7 @@ impl Report {
                 .iter()
                 .map(|n| format!("  - {n}"))
                 .collect();
-            let head = style.tr("Notes on the source", "Catatan tentang sumber");
+            let head = style.doc(DocWord::NotesOnSource);
             notes.push(format!("{head}:\n{}", lines.join("\n")));
         }
         notes
@@ -496,14 +491,11 @@ impl Compared {
 /// The comparison with the printed answers, one line per answer.
 fn comparison_text(c: &Comparison, lang: Lang) -> String {
     let style = Style::new(4, true, lang);
-    let t = |en, id| tr(lang, en, id);
-    let src = c.source.as_deref().unwrap_or(t("the source", "sumber"));
-    let head = t(
-        "Compared with the answers printed in",
-        "Dibandingkan dengan jawaban yang tercetak di",
-    );
+    let t = |w: DocWord| style.doc(w);
+    let src = (c.source.clone()).unwrap_or_else(|| t(DocWord::TheSource));
+    let head = t(DocWord::ComparedWith);
     let mut lines = vec![format!("{head} {src}:")];
-    let printed = t("printed", "tercetak");
+    let printed = t(DocWord::Printed);
     for r in &c.rows {
         let name = words::keys::name_of(words::of(lang), &r.key);
         let (key, shown) = (format!("{name} ({})", r.key), &r.printed);
@@ -514,12 +506,12 @@ fn comparison_text(c: &Comparison, lang: Lang) -> String {
         lines.push(match (&r.computed, r.verdict()) {
             (Some(v), Printed::Differs(_)) => format!(
                 "  {key}: {printed} {shown}, {} {} — {verdict}{why}",
-                t("correct", "yang benar"),
+                t(DocWord::CorrectValue),
                 style.val_inline(v)
             ),
             (Some(v), Printed::NotComparable) => format!(
                 "  {key}: {printed} {shown}, {} {} — {verdict}",
-                t("computed", "hasil hitung"),
+                t(DocWord::Computed),
                 style.val_inline(v)
             ),
             _ => format!("  {key}: {printed} {shown} — {verdict}"),

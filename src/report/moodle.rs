@@ -24,11 +24,11 @@
 //! text and general feedback go into CDATA sections, a `]]>` inside split
 //! across two sections.
 
-use crate::msg::Msg;
+use crate::msg::{DocWord as D, Msg, QuizWord as Q};
 use crate::report::figure::{drawings::drawings, svg::to_svg};
-use crate::report::lang::{tr, Lang, NumStyle};
+use crate::report::lang::{Lang, NumStyle};
 use crate::report::mistakes::mistake_text;
-use crate::report::words::words;
+use crate::report::words::{self as said, words};
 use crate::report::Style;
 use crate::stages::trace::Val;
 use crate::tutor::generate::quiz::{Blank, Question, Quiz, Typed, Typing, Wrong};
@@ -40,17 +40,7 @@ use std::fmt::Write as _;
 /// review fits a 1100-px window with the course's side panels open.
 pub const WIDTH: usize = 72;
 
-/// The decimal mark students type: a Moodle reads a typed number by the
-/// mark of its interface language (English: `0,5` is 5, the comma a
-/// thousands separator; Indonesian: both `0,5` and `0.5` are 0.5).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum Decimal {
-    /// `0.5`: for a Moodle in English (the common case).
-    #[default]
-    Point,
-    /// `0,5`: for a Moodle with the Indonesian language pack.
-    Comma,
-}
+pub use crate::msg::Decimal;
 
 impl Decimal {
     /// How the quiz writes its numbers for students: with the mark they
@@ -138,7 +128,7 @@ fn embedded_figures(g: &Generated, st: &Style) -> (String, String) {
             "      <file name=\"{name}\" path=\"/\" encoding=\"base64\">{b64}</file>"
         );
     }
-    let heading = tr(st.lang, "Figures", "Gambar");
+    let heading = said::of(st.lang).doc(&D::Figures);
     let html = if html.is_empty() {
         html
     } else {
@@ -149,11 +139,12 @@ fn embedded_figures(g: &Generated, st: &Style) -> (String, String) {
 
 /// The question's name: `Problem 01, variant 03: <title>`.
 pub fn question_name(g: &Generated, i: usize, v: usize, lang: Lang) -> String {
+    let w = |k: D| said::of(lang).doc(&k);
     format!(
         "{} {:02}, {} {:02}: {}",
-        tr(lang, "Problem", "Soal"),
+        w(D::Problem),
         i + 1,
-        tr(lang, "variant", "varian"),
+        w(D::Variant),
         v + 1,
         words(&g.title, lang)
     )
@@ -178,44 +169,21 @@ pub fn intro_html(question: &Question, q: &Quiz, w: &Written) -> String {
 /// half a pixel for pixel positions; outcodes and the clipping status where
 /// the question asks for them.
 pub fn instructions(kinds: &Typing, q: &Quiz, lang: Lang, mark: Decimal) -> String {
-    let figs = q.figures;
-    let pct = mark.nums().number(&number(q.rel * 100.0));
-    let pixel = match (kinds.pixels, lang) {
-        (false, _) => "",
-        (true, Lang::En) => "; a pixel position within half a pixel, so a whole pixel is right",
-        (true, Lang::Id) => {
-            "; posisi piksel boleh berselisih setengah piksel, jadi piksel bulat dinilai benar"
-        }
-    };
-    let mark = match (mark, lang) {
-        (Decimal::Point, Lang::En) => "a decimal point (0.5, not 0,5)",
-        (Decimal::Comma, Lang::En) => "a decimal comma (0,5)",
-        (Decimal::Point, Lang::Id) => "titik desimal (0.5, bukan 0,5)",
-        (Decimal::Comma, Lang::Id) => "koma desimal (0,5)",
-    };
-    let mut s = match lang {
-        Lang::En => format!(
-            "Type each number as a decimal with at least {figs} significant figures, not as an exact form such as (√2−1)/2, and with {mark} (a number within {pct} % of the key's is right{pixel})."
-        ),
-        Lang::Id => format!(
-            "Tulis setiap bilangan sebagai desimal dengan sedikitnya {figs} angka penting, bukan sebagai bentuk eksak seperti (√2−1)/2, dengan {mark} (bilangan yang berselisih paling banyak {pct} % dari kunci dinilai benar{pixel})."
-        ),
-    };
+    let w = |k: Q| said::of(lang).quiz(&k);
+    let mut s = w(Q::Instructions {
+        figures: q.figures,
+        // the tolerance as students type numbers
+        pct: mark.nums().number(&number(q.rel * 100.0)),
+        mark,
+        pixels: kinds.pixels,
+    });
     if kinds.outcodes {
         s.push(' ');
-        s.push_str(tr(
-            lang,
-            "Type outcodes as six bits, bit 1 rightmost (e.g. 000010).",
-            "Tulis outcode sebagai enam bit, bit 1 paling kanan (mis. 000010).",
-        ));
+        s.push_str(&w(Q::TypeOutcodes));
     }
     if kinds.status {
         s.push(' ');
-        s.push_str(tr(
-            lang,
-            "Type the clipping status as accepted, rejected or clipped, and the segment that is left as none when there is none.",
-            "Tulis status clipping sebagai accepted, rejected atau clipped, dan sisa segmen sebagai none bila tidak ada.",
-        ));
+        s.push_str(&w(Q::TypeStatus));
     }
     s
 }
@@ -310,18 +278,16 @@ pub fn cloze_escape(s: &str) -> String {
 /// The feedback of a wrong value: the mistakes that give it.
 pub fn feedback(w: &Wrong, lang: Lang) -> String {
     let names: Vec<&str> = w.mistakes.iter().map(|m| mistake_text(m, lang)).collect();
-    format!(
-        "{}{}",
-        tr(lang, "Known mistake: ", "Kesalahan yang dikenal: "),
-        names.join(tr(lang, "; or: ", "; atau: "))
-    )
+    let w = |k: Q| said::of(lang).quiz(&k);
+    format!("{}{}", w(Q::KnownMistake), names.join(&w(Q::OrMistake)))
 }
 
 /// The general feedback: the answers, the figures (HTML given), then the
 /// worked solution, its sections numbered from 1 within the question and
 /// its lines wrapped to [`WIDTH`] characters.
 pub fn solution_html(question: &Question, figures: &str, st: &Style) -> String {
-    let mut s = format!("<h3>{}</h3><ul>", tr(st.lang, "Answers", "Jawaban"));
+    let w = |k: D| said::of(st.lang).doc(&k);
+    let mut s = format!("<h3>{}</h3><ul>", w(D::Answers));
     for a in &question.asked {
         // one line flows in the list; a matrix keeps its lines
         let line = esc(&st.named("", &a.key, &a.value));
@@ -331,11 +297,7 @@ pub fn solution_html(question: &Question, figures: &str, st: &Style) -> String {
             let _ = write!(s, "<li>{line}</li>");
         }
     }
-    let _ = write!(
-        s,
-        "</ul>{figures}<h3>{}</h3>",
-        tr(st.lang, "Worked solution", "Penyelesaian")
-    );
+    let _ = write!(s, "</ul>{figures}<h3>{}</h3>", w(D::WorkedSolution));
     let mut section: Option<&crate::msg::Msg> = None;
     let mut parts = 0;
     for (k, step) in question.problem.report.steps.iter().enumerate() {
@@ -353,7 +315,7 @@ pub fn solution_html(question: &Question, figures: &str, st: &Style) -> String {
         let _ = write!(
             s,
             "<p><b>{} {}. {}</b></p><pre>{}</pre>",
-            tr(st.lang, "Step", "Langkah"),
+            w(D::Step),
             k + 1,
             esc(&st.w(&step.title)),
             esc(&wrap(st.step_body(step).trim_end()))
@@ -376,7 +338,7 @@ pub fn part_heading(k: usize, section: &str, lang: Lang) -> String {
             word.is_some() && num.is_some_and(|n| n.parse::<u32>().is_ok()) && rest.is_none()
         })
         .map_or(section, |(_, name)| name);
-    format!("{} {k}: {name}", tr(lang, "Part", "Bagian"))
+    format!("{} {k}: {name}", said::of(lang).quiz(&Q::Part))
 }
 
 /// Text wrapped to [`WIDTH`] characters, each wrapped line's continuation

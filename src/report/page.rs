@@ -8,7 +8,7 @@ use super::figure::xml_escape;
 use super::html::{answers, figure, heading, named_answers, page};
 use super::words::{self, keys};
 use super::{mathml, Report, Style};
-use crate::msg::{Msg, Printed};
+use crate::msg::{CheckWord, DocWord, Msg, Printed};
 use crate::tutor::solution::{Asked, Compared, Comparison};
 
 /// The drawing's part (`view`, `clip-2`, …) a section of `solve` shows.
@@ -43,7 +43,7 @@ pub fn report_page(
     for w in &r.warnings {
         body.push_str(&format!(
             "<p class=\"warning\">{}: {}</p>\n",
-            st.tr("warning", "peringatan"),
+            st.doc(DocWord::Warning),
             xml_escape(&st.w(w))
         ));
     }
@@ -68,7 +68,7 @@ pub fn report_page(
             .collect()
     };
     body.push_str(&Doc::Html.steps_with(r, st, &mut under));
-    body.push_str(&heading(1, r.answer_heading(st.lang)));
+    body.push_str(&heading(1, &r.answer_heading(st.lang)));
     body.push_str(&match &r.asked {
         Asked::Render(_) => named_answers(st, &r.answer_named(st.lang)),
         _ => answers(st, &r.answer()),
@@ -80,10 +80,7 @@ pub fn report_page(
         body.push_str(&comparison(c, st));
     }
     if !r.source_notes.is_empty() {
-        body.push_str(&heading(
-            2,
-            st.tr("Notes on the source", "Catatan tentang sumber"),
-        ));
+        body.push_str(&heading(2, &st.doc(DocWord::NotesOnSource)));
         let items: String = (r.source_notes.iter())
             .map(|n| format!("<li>{}</li>\n", xml_escape(n)))
             .collect();
@@ -98,16 +95,13 @@ pub fn report_page(
 /// why, where the problem file says, in a row of its own beneath, so the
 /// table keeps to the page's width.
 fn comparison(c: &Comparison, st: &Style) -> String {
-    let src = c.source.as_deref().unwrap_or(st.tr("the source", "sumber"));
-    let head = st.tr(
-        "Compared with the answers printed in",
-        "Dibandingkan dengan jawaban yang tercetak di",
-    );
+    let src = (c.source.clone()).unwrap_or_else(|| st.doc(DocWord::TheSource));
+    let head = st.doc(DocWord::ComparedWith);
     let cols = [
-        st.tr("value", "nilai"),
-        st.tr("printed", "tercetak"),
-        st.tr("correct", "yang benar"),
-        st.tr("verdict", "penilaian"),
+        st.doc(DocWord::Value),
+        st.doc(DocWord::Printed),
+        st.doc(DocWord::CorrectValue),
+        words::of(st.lang).check(&CheckWord::Verdict),
     ];
     let th: String = cols.iter().map(|c| format!("<th>{c}</th>")).collect();
     let rows: String = c.rows.iter().map(|row| compared_row(row, st)).collect();
@@ -136,7 +130,7 @@ fn compared_row(row: &Compared, st: &Style) -> String {
     let why = row.why.as_ref().map(|w| {
         format!(
             "<tr class=\"{class} why\"><td colspan=\"3\"><em>{}:</em> {}</td></tr>\n",
-            st.tr("why", "alasan"),
+            st.doc(DocWord::Why),
             xml_escape(&st.w(w))
         )
     });

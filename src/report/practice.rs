@@ -4,8 +4,9 @@
 
 use crate::input::answer::Read;
 use crate::msg::Msg;
+use crate::msg::PracticeWord as P;
 use crate::num::Real;
-use crate::report::lang::{tr, Lang};
+use crate::report::lang::Lang;
 use crate::report::mistakes::mistake_text;
 use crate::report::words;
 use crate::report::{exact_json, fmt_dec, step_json, value_json, Style};
@@ -47,8 +48,9 @@ impl Look {
         };
         format!("\x1b[{code}m{text}\x1b[0m")
     }
-    fn tr<'a>(&self, en: &'a str, id: &'a str) -> &'a str {
-        tr(self.style.lang, en, id)
+    /// The words of `w` in this look's language.
+    fn w(&self, w: P) -> String {
+        words::of(self.style.lang).practice(&w)
     }
 }
 
@@ -98,26 +100,18 @@ fn wrap_lines(text: &str) -> String {
 /// The heading of a session: the title, the statement, how to answer.
 pub fn intro(plan: &Plan, look: &Look, seed: Option<u64>) -> String {
     let n = plan.items.len();
-    let mut out = match (look.style.lang, seed) {
-        (Lang::En, Some(s)) => format!("Practice: {} ({n} values, seed {s})\n", plan.title),
-        (Lang::En, None) => format!("Practice: {} ({n} values)\n", plan.title),
-        (Lang::Id, Some(s)) => format!("Latihan: {} ({n} nilai, seed {s})\n", plan.title),
-        (Lang::Id, None) => format!("Latihan: {} ({n} nilai)\n", plan.title),
+    let title = P::Title {
+        title: plan.title.clone(),
+        values: n,
+        seed,
     };
+    let mut out = format!("{}\n", look.w(title));
     if let Some(st) = &plan.statement {
         out.push_str(&wrap(st, ""));
         out.push('\n');
     }
-    let how = look.tr(
-        "Answer each value when asked. Numbers: 0.8, 4/5, sqrt(2)/2; points: \
-         (x, y, z). With decimal commas, separate the parts by ; (0,8; 0,6; 0). \
-         Commands: hint, show, skip, back, quit.",
-        "Jawab setiap nilai yang ditanyakan. Angka: 0,8, 4/5, sqrt(2)/2; titik: \
-         (x, y, z). Dengan koma desimal, pisahkan komponen dengan ; (0,8; 0,6; 0). \
-         Perintah: hint (petunjuk), show (lihat), skip (lewati), back (kembali), \
-         quit (keluar).",
-    );
-    out.push_str(&look.paint(Tone::Quiet, &wrap(how, "")));
+    let how = look.w(P::HowToAnswer);
+    out.push_str(&look.paint(Tone::Quiet, &wrap(&how, "")));
     out.push('\n');
     out
 }
@@ -165,97 +159,47 @@ pub fn event_text(ev: &Event, look: &Look) -> String {
                 out.push_str(&format!("  {}\n", look.style.w(&s.title)));
                 out.push_str(&look.style.step_body(s));
             }
-            let answer = look.tr("Answer", "Jawaban");
+            let answer = look.w(P::Answer);
             out.push_str(&look.style.named(&format!("  {answer}: "), key, expected));
             out.push('\n');
             wrap_lines(&out)
         }
-        Event::Skip { .. } => format!("  {}\n", look.tr("Skipped.", "Dilewati.")),
+        Event::Skip { .. } => format!("  {}\n", look.w(P::Skipped)),
         Event::Summary(s) => summary_text(s, look),
     }
 }
 
 fn again_text(a: &Again, look: &Look) -> String {
     let t = match a {
-        Again::Empty => look.tr(
-            "Type an answer, or a command: hint, show, skip, back, quit.",
-            "Ketik jawaban, atau perintah: hint, show, skip, back, quit.",
-        ),
+        Again::Empty => look.w(P::AgainEmpty),
         Again::Unreadable => return String::new(),
-        Again::NothingBefore => look.tr(
-            "This is the first value: there is nothing to go back to.",
-            "Ini nilai pertama: tidak ada langkah sebelumnya.",
-        ),
-        Again::NoMoreHints => look.tr(
-            "No more hints: type show to see the step worked out.",
-            "Petunjuk sudah habis: ketik show untuk melihat langkahnya.",
-        ),
+        Again::NothingBefore => look.w(P::FirstValue),
+        Again::NoMoreHints => look.w(P::NoMoreHints),
     };
-    format!("{}\n", wrap_after("  ", t, "  "))
+    format!("{}\n", wrap_after("  ", &t, "  "))
 }
 
 /// The verdict's first line, and its colour.
 fn verdict_head(o: &Outcome, lang: Lang) -> (Tone, String) {
-    match o.code {
-        "correct.exact" => (Tone::Good, tr(lang, "✓ correct", "✓ benar").to_string()),
-        "correct.tolerance" => (
-            Tone::Good,
-            tr(
-                lang,
-                "✓ correct (within the tolerance)",
-                "✓ benar (dalam toleransi)",
-            )
-            .to_string(),
-        ),
-        "correct.rounded" => (
-            Tone::Good,
-            tr(lang, "✓ correct (rounded)", "✓ benar (dibulatkan)").to_string(),
-        ),
-        "correct.follow_through" => (
-            Tone::Partial,
-            tr(
-                lang,
-                "✓ correct given your earlier answers (follow-through)",
-                "✓ benar menurut jawabanmu sebelumnya (follow-through)",
-            )
-            .to_string(),
-        ),
-        "too_coarse" => (
-            Tone::Partial,
-            match lang {
-                Lang::En => {
-                    "½ right, but rounded too coarsely: write more significant figures".to_string()
-                }
-                Lang::Id => {
-                    "½ benar, tetapi pembulatannya terlalu kasar: tulis lebih banyak angka penting"
-                        .to_string()
-                }
-            },
-        ),
-        "wrong" => (Tone::Bad, tr(lang, "✗ wrong", "✗ salah").to_string()),
+    let (tone, w) = match o.code {
+        "correct.exact" => (Tone::Good, P::Exact),
+        "correct.tolerance" => (Tone::Good, P::Tolerance),
+        "correct.rounded" => (Tone::Good, P::Rounded),
+        "correct.follow_through" => (Tone::Partial, P::FollowThrough),
+        "too_coarse" => (Tone::Partial, P::TooCoarse),
+        "wrong" => (Tone::Bad, P::Wrong),
         _ => {
-            let how = shape(&o.key, &o.expected, lang);
             let why = unread_why(&o.note, lang);
             let why = if why.is_empty() {
                 String::new()
             } else {
                 format!(" {why};")
             };
-            (
-                Tone::Bad,
-                match lang {
-                    Lang::En => {
-                        format!("✗ cannot read this answer:{why} write {how}, or a command")
-                    }
-                    Lang::Id => {
-                        format!(
-                            "✗ jawaban ini tidak terbaca:{why} tulis {how}, atau sebuah perintah"
-                        )
-                    }
-                },
-            )
+            let how = shape(&o.key, &o.expected, lang);
+            (Tone::Bad, P::Unreadable { why, how })
         }
-    }
+    };
+    (tone, words::of(lang).practice(&w))
 }
 
 /// Why an answer could not be read, without the words "cannot be read"
@@ -277,7 +221,7 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
     if let Some(r) = &o.read {
         let read = read_as(r, &look.style);
         if !same_text(&read, o.given.as_deref().unwrap_or_default()) {
-            let line = format!("{} {read}", look.tr("read as", "dibaca sebagai"));
+            let line = format!("{} {read}", look.w(P::ReadAs));
             out.push_str(&look.paint(Tone::Quiet, &wrap_after("  ", &line, "    ")));
             out.push('\n');
         }
@@ -286,41 +230,26 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
     out.push_str(&look.paint(tone, &wrap_after("  ", &head, "    ")));
     out.push('\n');
     if o.retry {
-        let line = look.tr(
-            "(a second try: shown, and counted apart; the first verdict stands for the score)",
-            "(percobaan kedua: ditampilkan dan dihitung terpisah; penilaian pertama yang dipakai untuk nilai)",
-        );
-        out.push_str(&look.paint(Tone::Quiet, &wrap_after("    ", line, "    ")));
+        let line = look.w(P::SecondTry);
+        out.push_str(&look.paint(Tone::Quiet, &wrap_after("    ", &line, "    ")));
         out.push('\n');
     }
     for m in &o.mistakes {
         let line = format!(
             "{}: {} [{}]",
-            tr(lang, "Likely mistake", "Kemungkinan kesalahan"),
+            look.w(P::LikelyMistake),
             mistake_text(m, lang),
             m.code
         );
         out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
     }
     if let Some(why) = &o.why {
-        let line = format!(
-            "{}: {}",
-            tr(
-                lang,
-                "The source printed this, and it is wrong",
-                "Sumber mencetak nilai ini, dan nilai itu salah"
-            ),
-            look.style.w(why)
-        );
+        let line = format!("{}: {}", look.w(P::SourceWrong), look.style.w(why));
         out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
     }
     if o.code == "wrong" && o.mistakes.is_empty() {
-        let tip = tr(
-            lang,
-            "No known mistake explains this answer. Type back to try this value again (hint and show help there).",
-            "Tidak ada kesalahan yang dikenal yang menjelaskan jawaban ini. Ketik back untuk mencoba nilai ini lagi (hint dan show membantu di sana).",
-        );
-        out.push_str(&look.paint(Tone::Quiet, &wrap_after("    ", tip, "    ")));
+        let tip = look.w(P::NoMistakeTip);
+        out.push_str(&look.paint(Tone::Quiet, &wrap_after("    ", &tip, "    ")));
         out.push('\n');
     }
     out
@@ -368,25 +297,13 @@ fn same_text(read: &str, typed: &str) -> bool {
 
 fn hint_text(level: u8, step: Option<&Step>, look: &Look) -> String {
     let Some(s) = step else {
-        return format!(
-            "  {}\n",
-            look.tr(
-                "No hint for this value.",
-                "Tidak ada petunjuk untuk nilai ini."
-            )
-        );
+        return format!("  {}\n", look.w(P::NoHint));
     };
-    let mut out = match (look.style.lang, level) {
-        (Lang::En, 1) => format!("  Hint 1: {}\n", look.style.w(&s.title)),
-        (Lang::Id, 1) => format!("  Petunjuk 1: {}\n", look.style.w(&s.title)),
-        (Lang::En, _) => {
-            "  Hint 2: the values to substitute (the last step is yours)\n".to_string()
-        }
-        (Lang::Id, _) => {
-            "  Petunjuk 2: nilai-nilai yang disubstitusikan (langkah terakhir milikmu)\n"
-                .to_string()
-        }
+    let hint = match level {
+        1 => P::Hint1(look.style.w(&s.title)),
+        _ => P::Hint2,
     };
+    let mut out = format!("  {}\n", look.w(hint));
     if !s.formula.is_empty() {
         out.push_str(&format!("    {}\n", look.style.w(&s.formula)));
     }
@@ -397,11 +314,8 @@ fn hint_text(level: u8, step: Option<&Step>, look: &Look) -> String {
             out.push('\n');
         }
         if s.values.is_empty() {
-            let none = look.tr(
-                "(every value of this step would give the answer away: substitute the problem's own numbers, or type show)",
-                "(setiap nilai langkah ini akan membocorkan jawabannya: substitusikan bilangan dari soal, atau ketik show)",
-            );
-            out.push_str(&format!("{}\n", wrap_after("    ", none, "    ")));
+            let none = look.w(P::NoValues);
+            out.push_str(&format!("{}\n", wrap_after("    ", &none, "    ")));
         }
     }
     out
@@ -409,35 +323,9 @@ fn hint_text(level: u8, step: Option<&Step>, look: &Look) -> String {
 
 fn summary_text(s: &Summary, look: &Look) -> String {
     let lang = look.style.lang;
-    let pts = crate::report::fmt_dec(s.points, 4);
-    let pts = crate::report::words::of(lang).nums().number(&pts);
-    let mut out = match lang {
-        Lang::En => format!(
-            "\nSummary: {pts}/{} points\n  correct {} ({} by follow-through), too coarse {}, wrong {},\n  skipped {}, revealed {}, not reached {}; hints used {}\n",
-            s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
-        ),
-        Lang::Id => format!(
-            "\nRingkasan: {pts}/{} poin\n  benar {} ({} karena follow-through), terlalu kasar {}, salah {},\n  dilewati {}, dilihat {}, belum dijawab {}; petunjuk dipakai {}\n",
-            s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
-        ),
-    };
-    if s.retries > 0 {
-        out.push_str(&match lang {
-            Lang::En => format!(
-                "  second tries {} ({} right), not in the score\n",
-                s.retries, s.retries_correct
-            ),
-            Lang::Id => format!(
-                "  percobaan kedua {} ({} benar), tidak masuk nilai\n",
-                s.retries, s.retries_correct
-            ),
-        });
-    }
+    let mut out = format!("\n{}", words::of(lang).practice_summary(s));
     if !s.mistakes.is_empty() {
-        out.push_str(&format!(
-            "  {}\n",
-            tr(lang, "Mistakes made:", "Kesalahan yang dibuat:")
-        ));
+        out.push_str(&format!("  {}\n", look.w(P::MistakesMade)));
         for (m, keys) in &s.mistakes {
             let line = format!(
                 "• {} [{}]: {}",
@@ -451,7 +339,7 @@ fn summary_text(s: &Summary, look: &Look) -> String {
     let (topic, diff) = (name(&s.next.0), name(&s.next.1));
     out.push_str(&format!(
         "  {}: grafika practice --topic {topic} --difficulty {diff}\n",
-        tr(lang, "Practise next", "Latihan berikutnya")
+        look.w(P::PractiseNext)
     ));
     out
 }
@@ -470,24 +358,18 @@ pub fn label(key: &str, lang: Lang) -> String {
 
 /// How to write the answer: its shape.
 fn shape(key: &str, expected: &Val, lang: Lang) -> String {
-    let t = |en: &str, id: &str| tr(lang, en, id).to_string();
+    let t = |w: P| words::of(lang).practice(&w);
     if key.ends_with(".segment") {
-        return t(
-            "(x0, y0, z0); (x1, y1, z1), or none",
-            "(x0, y0, z0); (x1, y1, z1), atau none",
-        );
+        return t(P::SegmentShape);
     }
     if key.ends_with(".status") {
         return "accepted | rejected | clipped".to_string();
     }
     match expected {
-        Val::Text(_) => t("6 bits, bit 1 rightmost", "6 bit, bit 1 paling kanan"),
+        Val::Text(_) => t(P::BitsShape),
         // with decimal commas `;` separates the numbers, so each row in
         // brackets: (0,6; 0; −0,8; 0); (…)
-        v if v.is_matrix() => t(
-            "4 rows (a, b, c, d); (…); …",
-            "4 baris (a; b; c; d); (…); …",
-        ),
+        v if v.is_matrix() => t(P::MatrixShape),
         Val::List(items)
             if key.starts_with("shade.") && items.len() == 3 && !key.ends_with(['L', 'N', 'R']) =>
         {
@@ -495,8 +377,8 @@ fn shape(key: &str, expected: &Val, lang: Lang) -> String {
         }
         Val::List(items) => ["(x)", "(x, y)", "(x, y, z)"]
             .get(items.len().saturating_sub(1))
-            .map_or_else(|| format!("({} values)", items.len()), |s| s.to_string()),
-        _ => t("a number", "sebuah bilangan"),
+            .map_or_else(|| t(P::ValuesShape(items.len())), |s| s.to_string()),
+        _ => t(P::NumberShape),
     }
 }
 

@@ -5,6 +5,7 @@
 use super::lang::Lang;
 use super::words;
 use crate::input::scene::Shading;
+use crate::msg::StatWord;
 pub use crate::msg::{PerPixel, Summary};
 use crate::render::Stats;
 use crate::stages::trace::Val;
@@ -71,119 +72,66 @@ pub fn stats_json(run: &RenderRun) -> Value {
 /// stage, one line each.
 pub fn stats_text(run: &RenderRun, lang: Lang) -> String {
     let (st, t) = (&run.stats, &run.times);
-    let id = lang == Lang::Id;
+    let said = words::of(lang);
     let per_pixel = words::of(lang).per_pixel(&per_pixel_of(&run.shadings));
     let rows: Vec<(String, String)> = counts(st, per_pixel)
         .into_iter()
         .chain(times(t, lang))
-        .map(|(en, ind, v)| (if id { ind } else { en }, v))
+        .map(|(depth, k, v)| ("  ".repeat(depth) + &said.stat(k), v))
         .collect();
     // Every value starts in one column: after the longest label.
     let width = rows.iter().map(|(k, _)| k.chars().count()).max();
     let width = width.unwrap_or(0);
-    let mut s = format!("{}\n", if id { "Statistik" } else { "Stats" });
+    let mut s = format!("{}\n", said.stat(StatWord::Heading));
     for (k, v) in rows {
         s.push_str(&format!("  {k:<width$} {v}\n"));
     }
     s
 }
 
-/// A line of the table: its English label, its Indonesian label, the value.
-type Row = (String, String, String);
+/// A line of the table: its depth (a part of the line above is indented
+/// under it), its name, the value.
+type Row = (usize, StatWord, String);
 
 /// The counts of `--stats`, with the per-pixel line's words.
 fn counts(st: &Stats, per_pixel: String) -> Vec<Row> {
-    let r = |en: &str, ind: &str, v: u64| (en.to_string(), ind.to_string(), v.to_string());
+    use StatWord as S;
+    let r = |depth: usize, k: S, v: u64| (depth, k, v.to_string());
     vec![
-        r("triangles in", "segitiga masuk", st.tris_in),
-        r(
-            "  back faces culled (closed meshes)",
-            "  sisi belakang dibuang (mesh tertutup)",
-            st.culled,
-        ),
-        r(
-            "  rejected by outcodes",
-            "  ditolak oleh region code",
-            st.rejected,
-        ),
-        r(
-            "  clipped (crossing a plane)",
-            "  di-clip (memotong bidang)",
-            st.clipped,
-        ),
-        r(
-            "  set up and rasterized",
-            "  disiapkan dan dirasterisasi",
-            st.drawn,
-        ),
-        r(
-            "  covering no pixel centre",
-            "  tidak menutupi pusat piksel",
-            st.no_pixels,
-        ),
-        r(
-            "objects rejected whole (bounding box)",
-            "objek ditolak utuh (kotak pembatas)",
-            st.objects_rejected,
-        ),
-        r(
-            "objects inside whole (no clip tests)",
-            "objek di dalam utuh (tanpa uji clip)",
-            st.objects_inside,
-        ),
-        r("pixels shaded", "piksel diwarnai", st.pixels_shaded),
-        r(
-            "lighting evaluations",
-            "evaluasi pencahayaan",
-            st.lighting_evals,
-        ),
-        (
-            "per-pixel lighting".into(),
-            "pencahayaan per piksel".into(),
-            per_pixel,
-        ),
-        r(
-            "lights skipped (out of range)",
-            "sumber cahaya dilewati (di luar jangkauan)",
-            st.lights_skipped,
-        ),
-        r(
-            "objects without specular work",
-            "objek tanpa perhitungan specular",
-            st.specular_skipped,
-        ),
+        r(0, S::TrianglesIn, st.tris_in),
+        r(1, S::Culled, st.culled),
+        r(1, S::Rejected, st.rejected),
+        r(1, S::Clipped, st.clipped),
+        r(1, S::Drawn, st.drawn),
+        r(1, S::NoPixels, st.no_pixels),
+        r(0, S::ObjectsRejected, st.objects_rejected),
+        r(0, S::ObjectsInside, st.objects_inside),
+        r(0, S::PixelsShaded, st.pixels_shaded),
+        r(0, S::LightingEvals, st.lighting_evals),
+        (0, S::PerPixel, per_pixel),
+        r(0, S::LightsSkipped, st.lights_skipped),
+        r(0, S::SpecularSkipped, st.specular_skipped),
     ]
 }
 
 /// The median times of `--stats`, in milliseconds.
 fn times(t: &Times, lang: Lang) -> Vec<Row> {
-    let r = |en: &str, ind: &str, ms: f64| {
-        let v = words::of(lang).nums().number(&format!("{ms:.2} ms"));
-        (en.to_string(), ind.to_string(), v)
+    use StatWord as S;
+    let r = |depth: usize, k: S, ms: f64| {
+        (
+            depth,
+            k,
+            words::of(lang).nums().number(&format!("{ms:.2} ms")),
+        )
     };
-    let (en, ind) = match t.runs {
-        0 | 1 => (String::new(), String::new()),
-        n => (format!(" (median of {n})"), format!(" (median dari {n})")),
-    };
-    let mut geometry = r("time: geometry", "waktu: geometri", t.geometry);
-    geometry.0.push_str(&en);
-    geometry.1.push_str(&ind);
     vec![
-        geometry,
-        r("time: binning", "waktu: binning", t.binning),
-        r(
-            "time: bands (raster + shading)",
-            "waktu: pita (raster + shading)",
-            t.bands,
-        ),
-        r("  thread time: raster", "  waktu thread: raster", t.raster),
-        r(
-            "  thread time: shading",
-            "  waktu thread: shading",
-            t.shading,
-        ),
-        r("time: frame", "waktu: bingkai", t.frame),
-        r("time: PNG encoding", "waktu: encoding PNG", t.png),
+        r(0, S::Geometry { runs: t.runs }, t.geometry),
+        r(0, S::Binning, t.binning),
+        r(0, S::Bands, t.bands),
+        r(1, S::Raster, t.raster),
+        r(1, S::Shading, t.shading),
+        r(0, S::Frame, t.frame),
+        r(0, S::Png, t.png),
     ]
 }
 

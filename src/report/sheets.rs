@@ -2,9 +2,10 @@
 //! the worked solutions) of a generated exam, as Markdown or LaTeX bodies,
 //! and the whole exam as JSON.
 
+use crate::msg::DocWord;
 use crate::report::doc::Doc;
 use crate::report::lang::Lang;
-use crate::report::words::words;
+use crate::report::words::{self, words};
 use crate::report::{exact_json, value_json, Style};
 use crate::stages::trace::Val;
 use crate::tutor::generate::{key_lines, topics_name, Difficulty, Generated, Topic};
@@ -22,25 +23,18 @@ pub fn exam_title(
     variant: Option<u32>,
     lang: Lang,
 ) -> String {
-    let t = |en, id| crate::report::lang::tr(lang, en, id);
-    format!(
-        "{}: {} ({}){}{}",
-        t("grafika exam", "ujian grafika"),
-        topics_name(topics),
-        format!("{diff:?}").to_lowercase(),
-        seed.map(|s| format!(", seed {s}")).unwrap_or_default(),
-        variant
-            .map(|v| format!(", {} {v}", t("variant", "varian")))
-            .unwrap_or_default()
-    )
+    let title = DocWord::ExamTitle {
+        topics: topics_name(topics),
+        difficulty: format!("{diff:?}").to_lowercase(),
+        seed,
+        variant,
+    };
+    words::of(lang).doc(&title)
 }
 
 /// The key's title for an exam title.
 pub fn key_title(title: &str, lang: Lang) -> String {
-    format!(
-        "{title} — {}",
-        crate::report::lang::tr(lang, "answer key", "kunci jawaban")
-    )
+    words::of(lang).doc(&DocWord::KeyTitle(title.to_string()))
 }
 
 /// A generated problem's file: its title and statement in `lang`, then
@@ -60,7 +54,7 @@ pub fn problem_file(g: &Generated, lang: Lang) -> String {
 pub fn key_file(g: &Generated, lang: Lang) -> String {
     format!(
         "# {}: {}\n{}",
-        crate::report::lang::tr(lang, "Answer key", "Kunci jawaban"),
+        words::of(lang).doc(&DocWord::AnswerKey),
         words(&g.title, lang),
         key_lines(g)
     )
@@ -79,7 +73,7 @@ pub fn sheets(doc: Doc, exam: &[Generated], st: &Style) -> (String, String) {
     let mut q = String::new();
     let mut k = String::new();
     for (i, g) in exam.iter().enumerate() {
-        let problem = st.tr("Problem", "Soal");
+        let problem = st.doc(DocWord::Problem);
         let title = &format!("{problem} {}: {}", i + 1, st.w(&g.title));
         let statement = st.w(&g.statement);
         for sheet in [&mut q, &mut k] {
@@ -87,14 +81,14 @@ pub fn sheets(doc: Doc, exam: &[Generated], st: &Style) -> (String, String) {
             sheet.push_str(&doc.text(&statement));
             sheet.push_str("\n\n");
         }
-        k.push_str(&doc.heading(2, st.tr("Answers", "Jawaban")));
+        k.push_str(&doc.heading(2, &st.doc(DocWord::Answers)));
         k.push_str(&doc.answers(st, &answers(g)));
         let figures = doc.figures(&g.report, st);
         if !figures.is_empty() {
-            k.push_str(&doc.heading(2, st.tr("Figures", "Gambar")));
+            k.push_str(&doc.heading(2, &st.doc(DocWord::Figures)));
             k.push_str(&figures);
         }
-        k.push_str(&doc.heading(2, st.tr("Worked solution", "Penyelesaian")));
+        k.push_str(&doc.heading(2, &st.doc(DocWord::WorkedSolution)));
         k.push_str(&doc.steps(&g.report, st));
     }
     (q, k)
@@ -138,31 +132,21 @@ pub fn written_summary(
     out: (&Path, Lang),
 ) -> String {
     let (out, lang) = out;
-    let plural = |n: u32| if n == 1 { "" } else { "s" };
-    let mut s = match lang {
-        Lang::En => format!(
-            "wrote {} file{} ({variants} variant{} of {count} {} problem{}, seed {seed}) to {}\n",
-            files.len(),
-            plural(files.len() as u32),
-            plural(variants),
-            topics_name(topics),
-            plural(count),
-            out.display()
-        ),
-        Lang::Id => format!(
-            "{} berkas ditulis ({variants} varian dari {count} soal {}, seed {seed}) ke {}\n",
-            files.len(),
-            topics_name(topics),
-            out.display()
-        ),
+    let wrote = DocWord::Wrote {
+        files: files.len(),
+        variants,
+        count,
+        topics: topics_name(topics),
+        seed,
+        out: out.display().to_string(),
     };
+    let mut s = format!("{}\n", words::of(lang).doc(&wrote));
     for f in files.iter().take(12) {
         let _ = writeln!(s, "  {}", f.display());
     }
     if files.len() > 12 {
-        let more = crate::report::lang::tr(lang, "and", "dan");
-        let more2 = crate::report::lang::tr(lang, "more", "lagi");
-        let _ = writeln!(s, "  … {more} {} {more2}", files.len() - 12);
+        let more = words::of(lang).doc(&DocWord::More(files.len() - 12));
+        let _ = writeln!(s, "  {more}");
     }
     s
 }

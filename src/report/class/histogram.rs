@@ -1,8 +1,10 @@
 //! The class's score distribution drawn: an SVG bar chart for the HTML
 //! report, bars of text for Markdown.
 
+use crate::msg::ClassWord as C;
 use crate::report::figure::xml_escape;
-use crate::report::lang::{tr, Lang};
+use crate::report::lang::Lang;
+use crate::report::words;
 use crate::tutor::class::stats::Bin;
 
 /// Width and height of the chart, in px.
@@ -26,8 +28,9 @@ pub fn svg(bins: &[Bin], lang: Lang) -> String {
     let most = bins.iter().map(|b| b.count).max().unwrap_or(0).max(1) as f64;
     let plot_h = H - TOP - BOTTOM;
     let slot = (W - LEFT - 8.0) / bins.len().max(1) as f64;
-    let students = tr(lang, "students", "mahasiswa");
-    let title = tr(lang, "Score distribution", "Sebaran nilai");
+    let w = |k: C| words::of(lang).class(&k);
+    let students = w(C::Students);
+    let title = w(C::Distribution);
     let desc: Vec<String> = bins
         .iter()
         .map(|b| format!("{} %: {} {students}", label(b), b.count))
@@ -35,7 +38,7 @@ pub fn svg(bins: &[Bin], lang: Lang) -> String {
     let mut out = format!(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {W} {H}\" width=\"{W}\" height=\"{H}\" role=\"img\" aria-labelledby=\"hist-title hist-desc\" font-family=\"system-ui,sans-serif\" font-size=\"13\">\n\
          <title id=\"hist-title\">{}</title>\n<desc id=\"hist-desc\">{}</desc>\n",
-        xml_escape(title),
+        xml_escape(&title),
         xml_escape(&desc.join("; "))
     );
     let base = H - BOTTOM;
@@ -66,7 +69,7 @@ pub fn svg(bins: &[Bin], lang: Lang) -> String {
          <text x=\"14\" y=\"{:.1}\" text-anchor=\"middle\" transform=\"rotate(-90 14 {:.1})\">{students}</text>\n</svg>\n",
         LEFT + (W - LEFT) / 2.0,
         H - 12.0,
-        xml_escape(tr(lang, "score, % of the marks", "nilai, % dari nilai penuh")),
+        xml_escape(&w(C::ScoreAxis)),
         TOP + plot_h / 2.0,
         TOP + plot_h / 2.0,
     ));

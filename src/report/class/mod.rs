@@ -7,43 +7,23 @@ pub mod lecturer;
 mod page;
 
 use crate::error::Error;
-use crate::report::check::to_json;
-use crate::report::lang::{tr, Lang};
+use crate::msg::ClassWord as C;
+use crate::report::check::{to_json, VERDICTS};
+use crate::report::lang::Lang;
+use crate::report::words;
 use crate::report::words::cut_message;
-use crate::tutor::check::{Marking, Verdict};
+use crate::tutor::check::Marking;
 use crate::tutor::class::{Class, Note, Sheet, Skip};
 use serde_json::{json, Value};
 
 /// What was done with an unusual answer file, in words.
 pub fn note_words(n: Note, lang: Lang) -> &'static str {
-    match n {
-        Note::Empty => tr(
-            lang,
-            "holds no answers: marked with every answer missing",
-            "tidak berisi jawaban: dinilai dengan semua jawaban kosong",
-        ),
-        Note::NotMarked => tr(
-            lang,
-            "not marked: the file is not a valid answer file (see the error in its row)",
-            "tidak dinilai: berkas ini bukan berkas jawaban yang sah (lihat galat di barisnya)",
-        ),
-    }
+    words::of(lang).note(n)
 }
 
 /// Why an entry of the answers folder was skipped, in words.
 pub fn skip_words(s: Skip, lang: Lang) -> &'static str {
-    match s {
-        Skip::Subdirectory => tr(
-            lang,
-            "skipped: a subdirectory (its files are not read)",
-            "dilewati: subdirektori (berkas di dalamnya tidak dibaca)",
-        ),
-        Skip::NotToml => tr(
-            lang,
-            "skipped: not a .toml file",
-            "dilewati: bukan berkas .toml",
-        ),
-    }
+    words::of(lang).skip(s)
 }
 
 /// An error as a person reads it: `field: words`, cut when long.
@@ -63,53 +43,29 @@ fn mistakes(ms: &[(String, Marking)]) -> String {
     codes.join(" ")
 }
 
-/// A sheet's counts over all its parts: score, total, correct, too coarse,
-/// wrong, missing, unparseable, follow-through.
+/// A sheet's counts over all its parts: score, total, each verdict's (in
+/// the order of [`VERDICTS`], the columns'), follow-through.
 fn counts(ms: &[(String, Marking)]) -> (f64, usize, [usize; 6]) {
     let sum = |f: &dyn Fn(&Marking) -> usize| ms.iter().map(|(_, m)| f(m)).sum::<usize>();
-    let c = |v: Verdict| sum(&|m: &Marking| m.count(v));
+    let mut n = [0; 6];
+    for (i, v) in VERDICTS.iter().enumerate() {
+        n[i] = sum(&|m: &Marking| m.count(*v));
+    }
+    n[5] = sum(&|m: &Marking| m.follow_through());
     (
         ms.iter().fold(0.0, |s, (_, m)| s + m.score()),
         sum(&|m: &Marking| m.total()),
-        [
-            c(Verdict::Correct),
-            c(Verdict::TooCoarse),
-            c(Verdict::Wrong),
-            c(Verdict::Missing),
-            c(Verdict::Unparseable),
-            sum(&|m: &Marking| m.follow_through()),
-        ],
+        n,
     )
 }
 
 /// The headings of a class's table (`check --answers DIR`), one per column.
-pub fn class_header(lang: Lang) -> Vec<&'static str> {
-    let en = [
-        "student",
-        "score",
-        "correct",
-        "too coarse",
-        "wrong",
-        "missing",
-        "unparseable",
-        "follow-through",
-        "mistakes",
-    ];
-    let id = [
-        "mahasiswa",
-        "nilai",
-        "benar",
-        "terlalu kasar",
-        "salah",
-        "tidak dijawab",
-        "tidak terbaca",
-        "follow-through",
-        "kesalahan konsep",
-    ];
-    match lang {
-        Lang::En => en.to_vec(),
-        Lang::Id => id.to_vec(),
-    }
+pub fn class_header(lang: Lang) -> Vec<String> {
+    let w = words::of(lang);
+    let mut header = vec![w.class(&C::Student), w.class(&C::Score)];
+    header.extend(VERDICTS.map(|v| w.verdict(v).to_string()));
+    header.extend([C::FollowThrough, C::Mistakes].map(|k| w.class(&k)));
+    header
 }
 
 /// One row per student, then the notes on unusual files and the entries
@@ -118,7 +74,7 @@ pub fn table(class: &Class, lang: Lang) -> String {
     use comfy_table::{presets, Table};
     let mut header = class_header(lang);
     if class.exam {
-        header.insert(1, tr(lang, "variant", "varian"));
+        header.insert(1, words::of(lang).doc(&crate::msg::DocWord::Variant));
     }
     let mut t = Table::new();
     t.load_preset(presets::UTF8_FULL_CONDENSED)
@@ -140,7 +96,7 @@ pub fn table(class: &Class, lang: Lang) -> String {
                 cells.extend(std::iter::repeat_n(String::new(), 6));
                 cells.push(format!(
                     "{}: {}",
-                    tr(lang, "error", "kesalahan"),
+                    words::of(lang).doc(&crate::msg::DocWord::Error),
                     said(e, lang)
                 ));
             }

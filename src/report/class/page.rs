@@ -4,12 +4,17 @@
 //! wrong answers no mistake explains, the students with the histogram.
 
 use super::histogram;
+use crate::msg::{CheckWord, ClassWord as C, DocWord};
+use crate::report::check::VERDICTS;
 use crate::report::doc::Doc;
-use crate::report::lang::{tr, Lang};
+use crate::report::lang::Lang;
 use crate::report::mistakes::mistake_text;
+use crate::report::words;
+use crate::report::words::report::dec;
 use crate::report::Style;
 use crate::tutor::check::Settings;
-use crate::tutor::class::stats::{Flag, Gap, MistakeStats, Stats, StepRef};
+use crate::tutor::check::Verdict;
+use crate::tutor::class::stats::{Gap, MistakeStats, Stats, StepRef};
 use crate::tutor::class::Class;
 
 /// A share or an index with two decimals, in the language's decimal mark,
@@ -25,12 +30,19 @@ fn num(x: Option<f64>, lang: Lang) -> String {
     })
 }
 
-fn flag_words(f: Flag, lang: Lang) -> &'static str {
-    match f {
-        Flag::VeryEasy => tr(lang, "very easy", "sangat mudah"),
-        Flag::VeryHard => tr(lang, "very hard", "sangat sulit"),
-        Flag::Negative => tr(lang, "negative", "negatif"),
-    }
+/// The class report's word `w` in `lang`.
+fn w(lang: Lang, w: C) -> String {
+    words::of(lang).class(&w)
+}
+
+/// The column of an exam's variant, escaped.
+fn variant(doc: Doc, lang: Lang) -> String {
+    esc(doc, &words::of(lang).doc(&DocWord::Variant))
+}
+
+/// The cells of a table's header, escaped.
+fn header(doc: Doc, lang: Lang, keys: impl IntoIterator<Item = C>) -> Vec<String> {
+    keys.into_iter().map(|k| esc(doc, &w(lang, k))).collect()
 }
 
 /// Text for a cell of either document: escaped; a line break (in a name)
@@ -114,11 +126,7 @@ pub(super) fn document(
     st: &Style,
 ) -> String {
     let lang = st.lang;
-    let title = format!(
-        "{}: {}",
-        tr(lang, "Class report", "Laporan kelas"),
-        class.title
-    );
+    let title = format!("{}: {}", w(lang, C::ClassReport), class.title);
     let mut body = if doc == Doc::Html {
         CSS.to_string()
     } else {
@@ -134,27 +142,13 @@ pub(super) fn document(
 }
 
 fn summary(doc: Doc, class: &Class, s: &Stats, settings: &Settings, lang: Lang) -> String {
-    let tol = crate::report::words::of(lang)
-        .nums()
-        .number(&crate::report::fmt_dec(settings.tolerance * 100.0, 4));
-    let ft = if settings.follow_through {
-        tr(lang, "on", "aktif")
-    } else {
-        tr(lang, "off", "tidak aktif")
+    let said = C::Summary {
+        students: s.students,
+        tolerance_pct: settings.tolerance * 100.0,
+        sig_figs: settings.sig_figs,
+        follow_through: settings.follow_through,
     };
-    let mut out = para(
-        doc,
-        &esc(doc, &match lang {
-            Lang::En => format!(
-                "{} students marked; tolerance {tol} %, at least {} significant figures, follow-through {ft}.",
-                s.students, settings.sig_figs
-            ),
-            Lang::Id => format!(
-                "{} mahasiswa dinilai; toleransi {tol} %, paling sedikit {} angka penting, follow-through {ft}.",
-                s.students, settings.sig_figs
-            ),
-        }),
-    );
+    let mut out = para(doc, &esc(doc, &w(lang, said)));
     let failed: Vec<String> = class
         .sheets
         .iter()
@@ -172,17 +166,7 @@ fn summary(doc: Doc, class: &Class, s: &Stats, settings: &Settings, lang: Lang) 
         })
         .collect();
     if !failed.is_empty() {
-        out.push_str(&para(
-            doc,
-            &esc(
-                doc,
-                tr(
-                    lang,
-                    "Not marked (not counted below):",
-                    "Tidak dinilai (tidak dihitung di bawah):",
-                ),
-            ),
-        ));
+        out.push_str(&para(doc, &esc(doc, &w(lang, C::NotMarked))));
         out.push_str(&list(doc, &failed));
     }
     out
@@ -190,45 +174,22 @@ fn summary(doc: Doc, class: &Class, s: &Stats, settings: &Settings, lang: Lang) 
 
 /// The key table and the definitions of its indices.
 fn keys_section(doc: Doc, s: &Stats, lang: Lang) -> String {
-    let mut out = doc.heading(1, tr(lang, "Answer keys", "Kunci jawaban"));
-    let header: Vec<String> = match lang {
-        Lang::En => [
-            "key",
-            "correct",
-            "follow-through",
-            "too coarse",
-            "wrong",
-            "missing",
-            "unparseable",
-            "p",
-            "D",
-            "r",
-            "flag",
-        ],
-        Lang::Id => [
-            "kunci",
-            "benar",
-            "follow-through",
-            "terlalu kasar",
-            "salah",
-            "tidak dijawab",
-            "tidak terbaca",
-            "p",
-            "D",
-            "r",
-            "tanda",
-        ],
-    }
-    .iter()
-    .map(|h| esc(doc, h))
-    .collect();
+    let mut out = doc.heading(1, &w(lang, C::AnswerKeys));
+    let verdict = |v: Verdict| esc(doc, words::of(lang).verdict(v));
+    let mut head = header(doc, lang, [C::Key]);
+    head.push(verdict(Verdict::Correct));
+    head.extend(header(doc, lang, [C::FollowThrough]));
+    head.extend(VERDICTS[1..].iter().map(|v| verdict(*v)));
+    // the indices' letters are the same in every language
+    head.extend(["p", "D", "r"].map(String::from));
+    head.push(esc(doc, &w(lang, C::Flag)));
     let rows: Vec<Vec<String>> = s
         .keys
         .iter()
         .map(|k| {
             let c = |code: &str| k.count(code);
             let right = c("correct.exact") + c("correct.rounded") + c("correct.tolerance");
-            let flags: Vec<&str> = k.flags.iter().map(|f| flag_words(*f, lang)).collect();
+            let flags: Vec<&str> = k.flags.iter().map(|f| words::of(lang).flag(*f)).collect();
             let flag = if flags.is_empty() {
                 String::new()
             } else if doc == Doc::Html {
@@ -259,32 +220,9 @@ fn keys_section(doc: Doc, s: &Stats, lang: Lang) -> String {
             ]
         })
         .collect();
-    out.push_str(&table(doc, &header, &rows));
-    out.push_str(&para(doc, &esc(doc, definitions(lang))));
+    out.push_str(&table(doc, &head, &rows));
+    out.push_str(&para(doc, &esc(doc, &w(lang, C::Definitions))));
     out
-}
-
-/// The definitions of p, D and r, as the report states them.
-fn definitions(lang: Lang) -> &'static str {
-    tr(
-        lang,
-        "Correct: how many, and in brackets how many exact / correctly rounded / within the tolerance. \
-         A key's mark is 1 when correct, ½ when too coarse, 0 otherwise; a student's score is the sum of the marks. \
-         Facility p: the mean mark, the share of full marks (very easy above 0.90, very hard below 0.20). \
-         Discrimination D: the mean mark of the upper 27 % of the class by score minus that of the lower 27 % \
-         (students tied at a group's edge share its places); from −1 to 1. \
-         Point-biserial r: the correlation of the key's mark with the rest of the score (the score without this key); \
-         — when everyone has the same mark. A key with D or r below 0 discriminates negatively (flag: negative): \
-         the weaker students do better on it, so check its key or its question.",
-        "Benar: jumlahnya, dan dalam kurung berapa yang eksak / dibulatkan dengan benar / dalam batas toleransi. \
-         Nilai sebuah kunci 1 bila benar, ½ bila terlalu kasar, 0 bila tidak; nilai mahasiswa adalah jumlahnya. \
-         Tingkat kemudahan p: rata-rata nilai kunci, bagian dari nilai penuh (sangat mudah di atas 0,90, sangat sulit di bawah 0,20). \
-         Daya beda D: rata-rata nilai 27 % kelas teratas menurut nilai dikurangi rata-rata 27 % terbawah \
-         (mahasiswa dengan nilai sama di batas kelompok berbagi tempatnya); dari −1 sampai 1. \
-         Point-biserial r: korelasi nilai kunci dengan sisa nilai (nilai tanpa kunci ini); \
-         — bila semua mendapat nilai yang sama. Kunci dengan D atau r di bawah 0 memiliki daya beda negatif (tanda: negatif): \
-         mahasiswa yang lebih lemah justru lebih baik, jadi periksa kunci atau soalnya.",
-    )
 }
 
 /// Per problem and per variant (an exam only).
@@ -292,16 +230,8 @@ fn exam_section(doc: Doc, s: &Stats, lang: Lang) -> String {
     if s.variants.is_empty() && s.problems.iter().all(|p| p.name.is_empty()) {
         return String::new();
     }
-    let mut out = doc.heading(1, tr(lang, "Problems", "Soal"));
-    let header: Vec<String> = [
-        tr(lang, "problem", "soal"),
-        tr(lang, "title", "judul"),
-        tr(lang, "students", "mahasiswa"),
-        tr(lang, "facility p", "tingkat kemudahan p"),
-    ]
-    .iter()
-    .map(|h| esc(doc, h))
-    .collect();
+    let mut out = doc.heading(1, &w(lang, C::Problems));
+    let head = header(doc, lang, [C::Problem, C::Title, C::Students, C::Facility]);
     let rows: Vec<Vec<String>> = s
         .problems
         .iter()
@@ -314,17 +244,14 @@ fn exam_section(doc: Doc, s: &Stats, lang: Lang) -> String {
             ]
         })
         .collect();
-    out.push_str(&table(doc, &header, &rows));
+    out.push_str(&table(doc, &head, &rows));
     if s.variants.is_empty() {
         return out;
     }
-    out.push_str(&doc.heading(1, tr(lang, "Variants", "Varian")));
-    let mut header: Vec<String> = vec![
-        esc(doc, tr(lang, "variant", "varian")),
-        esc(doc, tr(lang, "students", "mahasiswa")),
-        esc(doc, tr(lang, "whole exam", "seluruh ujian")),
-    ];
-    header.extend(s.problems.iter().map(|p| esc(doc, &p.name)));
+    out.push_str(&doc.heading(1, &w(lang, C::Variants)));
+    let mut head = vec![variant(doc, lang)];
+    head.extend(header(doc, lang, [C::Students, C::WholeExam]));
+    head.extend(s.problems.iter().map(|p| esc(doc, &p.name)));
     let rows: Vec<Vec<String>> = s
         .variants
         .iter()
@@ -336,8 +263,8 @@ fn exam_section(doc: Doc, s: &Stats, lang: Lang) -> String {
             ];
             row.extend(v.problems.iter().map(|(_, f, gap)| {
                 let mark = match gap {
-                    Some(Gap::Harder) => format!(" ▼ {}", tr(lang, "harder", "lebih sulit")),
-                    Some(Gap::Easier) => format!(" ▲ {}", tr(lang, "easier", "lebih mudah")),
+                    Some(Gap::Harder) => format!(" ▼ {}", w(lang, C::Harder)),
+                    Some(Gap::Easier) => format!(" ▲ {}", w(lang, C::Easier)),
                     None => String::new(),
                 };
                 format!("{}{}", num(*f, lang), esc(doc, &mark))
@@ -345,10 +272,8 @@ fn exam_section(doc: Doc, s: &Stats, lang: Lang) -> String {
             row
         })
         .collect();
-    out.push_str(&table(doc, &header, &rows));
-    out.push_str(&para(doc, &esc(doc, tr(lang,
-        "Each cell is the variant's facility on the problem; ▼ marks a variant more than 0.20 below the median of its siblings on that problem (▲ above).",
-        "Setiap sel adalah tingkat kemudahan varian pada soal itu; ▼ menandai varian yang lebih dari 0,20 di bawah median varian lainnya pada soal itu (▲ di atasnya)."))));
+    out.push_str(&table(doc, &head, &rows));
+    out.push_str(&para(doc, &esc(doc, &w(lang, C::VariantsNote))));
     out
 }
 
@@ -360,31 +285,20 @@ fn step_words(step: &StepRef, st: &Style) -> String {
     } else {
         format!("{}, ", step.part)
     };
-    let n = step.number;
-    let title = st.w(&step.title);
-    match st.lang {
-        Lang::En => format!("{part}step {n} of the worked solution: {title}"),
-        Lang::Id => format!("{part}langkah {n} dari penyelesaian: {title}"),
-    }
+    let said = C::StepOf {
+        part,
+        number: step.number,
+        title: st.w(&step.title),
+    };
+    w(st.lang, said)
 }
 
 /// Each mistake with its students, keys and step, the most students first.
 fn mistakes_section(doc: Doc, s: &Stats, st: &Style) -> String {
     let lang = st.lang;
-    let mut out = doc.heading(1, tr(lang, "Mistakes", "Kesalahan konsep"));
+    let mut out = doc.heading(1, &w(lang, C::MistakesHeading));
     if s.mistakes.is_empty() {
-        return out
-            + &para(
-                doc,
-                &esc(
-                    doc,
-                    tr(
-                        lang,
-                        "No known mistake explains a wrong answer.",
-                        "Tidak ada kesalahan yang dikenal yang menjelaskan jawaban salah.",
-                    ),
-                ),
-            );
+        return out + &para(doc, &esc(doc, &w(lang, C::NoMistake)));
     }
     let items: Vec<String> = s
         .mistakes
@@ -398,10 +312,7 @@ fn mistakes_section(doc: Doc, s: &Stats, st: &Style) -> String {
 fn mistake_item(doc: Doc, m: &MistakeStats, st: &Style) -> String {
     let lang = st.lang;
     let n = m.students.len();
-    let who = match n {
-        1 => tr(lang, "student", "mahasiswa"),
-        _ => tr(lang, "students", "mahasiswa"),
-    };
+    let who = w(lang, C::StudentCount(n));
     let strong = |s: String| {
         if doc == Doc::Html {
             format!("<strong>{s}</strong>")
@@ -414,13 +325,13 @@ fn mistake_item(doc: Doc, m: &MistakeStats, st: &Style) -> String {
         strong(esc(doc, mistake_text(m.mistake, lang))),
         esc(doc, m.mistake.code),
         esc(doc, &m.students.join(", ")),
-        esc(doc, tr(lang, "Explains", "Menjelaskan")),
+        esc(doc, &w(lang, C::Explains)),
         esc(doc, &m.keys.join(", ")),
     );
     if let Some(step) = &m.step {
         out.push_str(&format!(
             " {}: {}.",
-            esc(doc, tr(lang, "Teach again", "Ajarkan lagi")),
+            esc(doc, &w(lang, C::TeachAgain)),
             esc(doc, &step_words(step, st))
         ));
     }
@@ -428,14 +339,7 @@ fn mistake_item(doc: Doc, m: &MistakeStats, st: &Style) -> String {
         let codes: Vec<&str> = m.also.iter().map(|a| a.code).collect();
         out.push_str(&format!(
             " ({}: {})",
-            esc(
-                doc,
-                tr(
-                    lang,
-                    "some of these also follow from",
-                    "sebagian juga dapat berasal dari"
-                )
-            ),
+            esc(doc, &words::of(lang).check(&CheckWord::AlsoFollow)),
             esc(doc, &codes.join(", "))
         ));
     }
@@ -445,41 +349,31 @@ fn mistake_item(doc: Doc, m: &MistakeStats, st: &Style) -> String {
 /// The wrong answers no mistake explains, per key.
 fn wrong_section(doc: Doc, s: &Stats, st: &Style) -> String {
     let lang = st.lang;
-    let mut out = doc.heading(
-        1,
-        tr(
-            lang,
-            "Wrong answers no mistake explains",
-            "Jawaban salah yang tidak dijelaskan kesalahan yang dikenal",
-        ),
-    );
+    let mut out = doc.heading(1, &w(lang, C::WrongHeading));
     if s.wrong_answers.is_empty() {
-        return out + &para(doc, &esc(doc, tr(lang, "None.", "Tidak ada.")));
+        return out + &para(doc, &esc(doc, &w(lang, C::NoneFound)));
     }
-    out.push_str(&para(doc, &esc(doc, tr(lang,
-        "Values equal within the tolerance are counted together; the most common first. A value many students share may be a mistake the catalog does not know yet, or a wrong key.",
-        "Nilai yang sama dalam batas toleransi dihitung bersama; yang paling sering lebih dulu. Nilai yang sama pada banyak mahasiswa bisa jadi kesalahan yang belum dikenal katalog, atau kunci yang salah."))));
-    let header: Vec<String> = [
-        tr(lang, "key", "kunci"),
-        tr(lang, "expected", "seharusnya"),
-        tr(lang, "given", "diberikan"),
-        tr(lang, "students", "mahasiswa"),
-    ]
-    .iter()
-    .map(|h| esc(doc, h))
-    .collect();
+    out.push_str(&para(doc, &esc(doc, &w(lang, C::WrongNote))));
+    let check = |k: CheckWord| esc(doc, &words::of(lang).check(&k));
+    let mut head = header(doc, lang, [C::Key]);
+    head.extend([check(CheckWord::Expected), check(CheckWord::Given)]);
+    head.extend(header(doc, lang, [C::Students]));
     let mut rows = Vec::new();
-    for w in &s.wrong_answers {
-        let key = match w.variant {
-            Some(v) => format!("{} ({} {v})", w.key, tr(lang, "variant", "varian")),
-            None => w.key.clone(),
+    for wa in &s.wrong_answers {
+        let key = match wa.variant {
+            Some(v) => format!(
+                "{} ({} {v})",
+                wa.key,
+                words::of(lang).doc(&DocWord::Variant)
+            ),
+            None => wa.key.clone(),
         };
-        let expected = w
+        let expected = wa
             .expected
             .as_ref()
             .map(|e| st.val_inline(e))
             .unwrap_or_default();
-        for (i, v) in w.values.iter().enumerate() {
+        for (i, v) in wa.values.iter().enumerate() {
             let (k, e) = if i == 0 {
                 (esc(doc, &key), esc(doc, &expected))
             } else {
@@ -496,56 +390,36 @@ fn wrong_section(doc: Doc, s: &Stats, st: &Style) -> String {
             ]);
         }
     }
-    out.push_str(&table(doc, &header, &rows));
+    out.push_str(&table(doc, &head, &rows));
     out
 }
 
 /// The histogram, and the students grouped by the mistake they share.
 fn students_section(doc: Doc, class: &Class, s: &Stats, lang: Lang) -> String {
-    let mut out = doc.heading(1, tr(lang, "Students", "Mahasiswa"));
+    let mut out = doc.heading(1, &w(lang, C::StudentsHeading));
     out.push_str(&match doc {
         Doc::Html => crate::report::html::figure(
             &histogram::svg(&s.histogram, lang),
-            tr(
-                lang,
-                "Score distribution (% of the marks)",
-                "Sebaran nilai (% dari nilai penuh)",
-            ),
+            &w(lang, C::DistributionPct),
         ),
         _ => format!("```\n{}```\n\n", histogram::text(&s.histogram)),
     });
     if !s.mistakes.is_empty() {
-        out.push_str(&doc.heading(
-            2,
-            tr(
-                lang,
-                "Who made which mistake",
-                "Siapa membuat kesalahan apa",
-            ),
-        ));
-        let header: Vec<String> = [
-            tr(lang, "mistake", "kesalahan"),
-            tr(lang, "students", "mahasiswa"),
-        ]
-        .iter()
-        .map(|h| esc(doc, h))
-        .collect();
+        out.push_str(&doc.heading(2, &w(lang, C::WhoWhich)));
+        let head = header(doc, lang, [C::Mistake, C::Students]);
         let rows: Vec<Vec<String>> = s
             .mistakes
             .iter()
             .map(|m| vec![esc(doc, m.mistake.code), esc(doc, &m.students.join(", "))])
             .collect();
-        out.push_str(&table(doc, &header, &rows));
+        out.push_str(&table(doc, &head, &rows));
     }
-    out.push_str(&doc.heading(2, tr(lang, "Scores", "Nilai")));
-    let mut header: Vec<String> = vec![esc(doc, tr(lang, "student", "mahasiswa"))];
+    out.push_str(&doc.heading(2, &w(lang, C::Scores)));
+    let mut head = header(doc, lang, [C::Student]);
     if class.exam {
-        header.push(esc(doc, tr(lang, "variant", "varian")));
+        head.push(variant(doc, lang));
     }
-    header.extend([
-        esc(doc, tr(lang, "score", "nilai")),
-        esc(doc, tr(lang, "mistakes", "kesalahan konsep")),
-    ]);
+    head.extend(header(doc, lang, [C::Score, C::Mistakes]));
     let rows: Vec<Vec<String>> = class
         .marked()
         .map(|sh| {
@@ -553,9 +427,7 @@ fn students_section(doc: Doc, class: &Class, s: &Stats, lang: Lang) -> String {
             if class.exam {
                 row.push(sh.variant.map(|v| v.to_string()).unwrap_or_default());
             }
-            let score = crate::report::words::of(lang)
-                .nums()
-                .number(&crate::report::fmt_dec(sh.score().unwrap_or(0.0), 4));
+            let score = dec(sh.score().unwrap_or(0.0), 4, words::of(lang).nums());
             row.push(format!("{score}/{}", sh.total().unwrap_or(0)));
             let codes: Vec<&str> = s
                 .mistakes
@@ -567,6 +439,6 @@ fn students_section(doc: Doc, class: &Class, s: &Stats, lang: Lang) -> String {
             row
         })
         .collect();
-    out.push_str(&table(doc, &header, &rows));
+    out.push_str(&table(doc, &head, &rows));
     out
 }

@@ -1,4 +1,627 @@
-//! The words of the report writers' own headings, columns and notes (class report, practice, check, Moodle, GIFT, …).
+//! The words of the report writers' own headings, columns and notes (class
+//! report, practice, check, Moodle, GIFT, …): one method per writer's key
+//! enum (`crate::msg::report`), and per tutor enum a writer names, each one
+//! exhaustive match in every language. The language-neutral parts (a
+//! number written in a language's style) are plain functions here.
 
-/// The words of the report writers' own headings, columns and notes (class report, practice, check, Moodle, GIFT, …).
-pub trait ReportWords {}
+use crate::msg::{
+    BenchWord, CheckWord, ClassWord, CliWord, DocWord, PracticeWord, QuizWord, StatWord,
+};
+use crate::num::format::fmt_dec;
+use crate::report::lang::NumStyle;
+use crate::tutor::check::Verdict;
+use crate::tutor::class::stats::Flag;
+use crate::tutor::class::{Note, Skip};
+use crate::tutor::diagnose::Mistake;
+use crate::tutor::practice::Summary;
+
+/// The words of the report writers' own headings, columns and notes.
+pub trait ReportWords {
+    /// A word of the class report.
+    fn class(&self, w: &ClassWord) -> String;
+    /// What was done with an unusual answer file.
+    fn note(&self, n: Note) -> &'static str;
+    /// Why an entry of the answers folder was skipped.
+    fn skip(&self, s: Skip) -> &'static str;
+    /// A flag on a key of the class report.
+    fn flag(&self, f: Flag) -> &'static str;
+    /// A verdict on an answer (also a column of the class's tables).
+    fn verdict(&self, v: Verdict) -> &'static str;
+    /// A word of a marked answer file.
+    fn check(&self, w: &CheckWord) -> String;
+    /// A word the documents share.
+    fn doc(&self, w: &DocWord) -> String;
+    /// A word of a quiz (Moodle XML, GIFT).
+    fn quiz(&self, w: &QuizWord) -> String;
+    /// A word of the command line itself.
+    fn cli(&self, w: CliWord) -> &'static str;
+    /// A line of `render --stats`.
+    fn stat(&self, w: StatWord) -> String;
+    /// A word of `grafika bench`'s table.
+    fn bench(&self, w: BenchWord) -> &'static str;
+    /// What the student did, by a mistake of the catalog.
+    fn mistake(&self, m: &Mistake) -> &'static str;
+    /// A word of `grafika practice`.
+    fn practice(&self, w: &PracticeWord) -> String;
+    /// A practice session's summary: the points, the counts, the second
+    /// tries (each line ends with a newline).
+    fn practice_summary(&self, s: &Summary) -> String;
+}
+
+/// `x` with at most `digits` decimals, in `style`: `0.5` or `0,5`.
+pub fn dec(x: f64, digits: usize, style: NumStyle) -> String {
+    style.number(&fmt_dec(x, digits))
+}
+
+/// An exam's title: `name: topics (difficulty), seed s, variant v`, the
+/// variant with its word.
+pub fn exam_title(
+    name: &str,
+    (topics, difficulty): (&str, &str),
+    seed: Option<u64>,
+    variant: Option<(String, u32)>,
+) -> String {
+    format!(
+        "{name}: {topics} ({difficulty}){}{}",
+        seed.map(|s| format!(", seed {s}")).unwrap_or_default(),
+        variant
+            .map(|(word, v)| format!(", {word} {v}"))
+            .unwrap_or_default()
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::msg::{
+        BenchWord as B, CheckWord as K, ClassWord as C, CliWord as L, Decimal, DocWord as D,
+        PracticeWord as P, QuizWord as Q, StatWord as S,
+    };
+    use crate::report::lang::Lang;
+    use crate::report::words::of;
+    use crate::tutor::check::Verdict;
+    use crate::tutor::class::stats::Flag;
+    use crate::tutor::class::{Note, Skip};
+
+    /// Every key's words in one language, one string per key (each
+    /// enum's keys listed by `listed`, so a key added and not listed here
+    /// does not compile).
+    fn every_word(lang: Lang) -> Vec<String> {
+        let w = of(lang);
+        let mut v: Vec<String> = every_class().iter().map(|k| w.class(k)).collect();
+        v.extend(every_check().iter().map(|k| w.check(k)));
+        v.extend(every_doc().iter().map(|k| w.doc(k)));
+        v.extend(every_quiz().iter().map(|k| w.quiz(k)));
+        v.extend(every_practice().iter().map(|k| w.practice(k)));
+        v.extend(every_stat().map(|k| w.stat(k)));
+        v.extend(every_bench().map(|k| w.bench(k).to_string()));
+        v.extend(every_cli().map(|k| w.cli(k).to_string()));
+        let verdicts = [
+            Verdict::Correct,
+            Verdict::TooCoarse,
+            Verdict::Wrong,
+            Verdict::Missing,
+            Verdict::Unparseable,
+        ];
+        v.extend(verdicts.map(|k| w.verdict(k).to_string()));
+        v.extend([Note::Empty, Note::NotMarked].map(|k| w.note(k).to_string()));
+        v.extend([Skip::Subdirectory, Skip::NotToml].map(|k| w.skip(k).to_string()));
+        let flags = [Flag::VeryEasy, Flag::VeryHard, Flag::Negative];
+        v.extend(flags.map(|k| w.flag(k).to_string()));
+        v
+    }
+
+    fn every_class() -> Vec<C> {
+        let summary = |follow_through| C::Summary {
+            students: 3,
+            tolerance_pct: 0.5,
+            sig_figs: 3,
+            follow_through,
+        };
+        let step = C::StepOf {
+            part: "problem-02, ".into(),
+            number: 3,
+            title: "Unit vector n".into(),
+        };
+        vec![
+            C::ClassReport,
+            C::Student,
+            C::Students,
+            C::Score,
+            C::FollowThrough,
+            C::Mistakes,
+            C::Mistake,
+            C::Key,
+            C::Flag,
+            C::Problem,
+            C::Title,
+            C::Facility,
+            C::WholeExam,
+            C::Harder,
+            C::Easier,
+            C::AnswerKeys,
+            C::Problems,
+            C::Variants,
+            C::MistakesHeading,
+            C::WrongHeading,
+            C::StudentsHeading,
+            C::WhoWhich,
+            C::Scores,
+            summary(true),
+            summary(false),
+            C::NotMarked,
+            C::Definitions,
+            C::VariantsNote,
+            C::NoMistake,
+            C::WrongNote,
+            C::NoneFound,
+            C::StudentCount(1),
+            C::StudentCount(2),
+            C::Explains,
+            C::TeachAgain,
+            step,
+            C::DistributionPct,
+            C::Distribution,
+            C::ScoreAxis,
+        ]
+    }
+
+    fn every_check() -> Vec<K> {
+        vec![
+            K::Answer,
+            K::Verdict,
+            K::Given,
+            K::Expected,
+            K::Note,
+            K::AnswersOf,
+            K::Errata,
+            K::Diagnosis,
+            K::Reproduces,
+            K::AlsoFollow,
+            K::NoMistakeExplains,
+            K::NotAnswers,
+            K::Score,
+            K::FollowThroughCount(2),
+        ]
+    }
+
+    fn every_doc() -> Vec<D> {
+        let title = |seed, variant| D::ExamTitle {
+            topics: "view".into(),
+            difficulty: "easy".into(),
+            seed,
+            variant,
+        };
+        let wrote = |files| D::Wrote {
+            files,
+            variants: 1,
+            count: 2,
+            topics: "view".into(),
+            seed: 7,
+            out: "exam".into(),
+        };
+        vec![
+            D::Step,
+            D::Answer,
+            D::Answers,
+            D::Figures,
+            D::WorkedSolution,
+            D::Problem,
+            D::Variant,
+            D::Warning,
+            D::Error,
+            D::NotesOnSource,
+            D::Yes,
+            D::No,
+            D::NoValue,
+            D::ComparedWith,
+            D::TheSource,
+            D::Printed,
+            D::CorrectValue,
+            D::Computed,
+            D::Value,
+            D::Why,
+            title(None, None),
+            title(Some(7), Some(2)),
+            D::KeyTitle("grafika exam: view (easy)".into()),
+            D::AnswerKey,
+            wrote(1),
+            wrote(14),
+            D::More(2),
+        ]
+    }
+
+    fn every_quiz() -> Vec<Q> {
+        let mut v = Vec::new();
+        for mark in [Decimal::Point, Decimal::Comma] {
+            for pixels in [false, true] {
+                v.push(Q::Instructions {
+                    figures: 3,
+                    pct: "0.5".into(),
+                    mark,
+                    pixels,
+                });
+            }
+        }
+        v.extend([
+            Q::TypeOutcodes,
+            Q::TypeStatus,
+            Q::KnownMistake,
+            Q::OrMistake,
+            Q::Part,
+            Q::FiguresInMoodle,
+            Q::Component,
+            Q::Point,
+        ]);
+        v
+    }
+
+    fn every_practice() -> Vec<P> {
+        let title = |seed| P::Title {
+            title: "Camera basis".into(),
+            values: 3,
+            seed,
+        };
+        vec![
+            title(None),
+            title(Some(7)),
+            P::HowToAnswer,
+            P::Answer,
+            P::Skipped,
+            P::AgainEmpty,
+            P::FirstValue,
+            P::NoMoreHints,
+            P::Exact,
+            P::Tolerance,
+            P::Rounded,
+            P::FollowThrough,
+            P::TooCoarse,
+            P::Wrong,
+            P::Unreadable {
+                why: String::new(),
+                how: "a number".into(),
+            },
+            P::ReadAs,
+            P::SecondTry,
+            P::LikelyMistake,
+            P::SourceWrong,
+            P::NoMistakeTip,
+            P::NoHint,
+            P::Hint1("Unit vector n".into()),
+            P::Hint2,
+            P::NoValues,
+            P::MistakesMade,
+            P::PractiseNext,
+            P::SegmentShape,
+            P::BitsShape,
+            P::MatrixShape,
+            P::NumberShape,
+            P::ValuesShape(5),
+        ]
+    }
+
+    fn every_stat() -> [S; 22] {
+        [
+            S::Heading,
+            S::TrianglesIn,
+            S::Culled,
+            S::Rejected,
+            S::Clipped,
+            S::Drawn,
+            S::NoPixels,
+            S::ObjectsRejected,
+            S::ObjectsInside,
+            S::PixelsShaded,
+            S::LightingEvals,
+            S::PerPixel,
+            S::LightsSkipped,
+            S::SpecularSkipped,
+            S::Geometry { runs: 1 },
+            S::Geometry { runs: 5 },
+            S::Binning,
+            S::Bands,
+            S::Raster,
+            S::Shading,
+            S::Frame,
+            S::Png,
+        ]
+    }
+
+    fn every_bench() -> [B; 15] {
+        [
+            B::Stage,
+            B::Precision,
+            B::Cases,
+            B::TimePerOp,
+            B::MaxUlpsInt,
+            B::MedianUlpsInt,
+            B::MaxUlpsWide,
+            B::Target,
+            B::Exact,
+            B::NoTarget,
+            B::Met,
+            B::NotMet,
+            B::UlpsNote,
+            B::Disagreements,
+            B::Unreferenced,
+        ]
+    }
+
+    fn every_cli() -> [L; 6] {
+        [
+            L::WorkedSolution,
+            L::Measuring,
+            L::Frames,
+            L::Variants,
+            L::Arguments,
+            L::TheText,
+        ]
+    }
+
+    /// Fails to compile when a key is added and not listed above.
+    #[allow(dead_code)]
+    fn listed(c: &C, k: &K, d: &D, q: &Q, p: &P, (s, b, l): (S, B, L)) {
+        use C::*;
+        match c {
+            ClassReport
+            | Student
+            | Students
+            | Score
+            | FollowThrough
+            | Mistakes
+            | Mistake
+            | Key
+            | Flag
+            | Problem
+            | Title
+            | Facility
+            | WholeExam
+            | Harder
+            | Easier
+            | AnswerKeys
+            | Problems
+            | Variants
+            | MistakesHeading
+            | WrongHeading
+            | StudentsHeading
+            | WhoWhich
+            | Scores
+            | Summary { .. }
+            | NotMarked
+            | Definitions
+            | VariantsNote
+            | NoMistake
+            | WrongNote
+            | NoneFound
+            | StudentCount(_)
+            | Explains
+            | TeachAgain
+            | StepOf { .. }
+            | DistributionPct
+            | Distribution
+            | ScoreAxis => {}
+        }
+        match k {
+            K::Answer
+            | K::Verdict
+            | K::Given
+            | K::Expected
+            | K::Note
+            | K::AnswersOf
+            | K::Errata
+            | K::Diagnosis
+            | K::Reproduces
+            | K::AlsoFollow
+            | K::NoMistakeExplains
+            | K::NotAnswers
+            | K::Score
+            | K::FollowThroughCount(_) => {}
+        }
+        match d {
+            D::Step
+            | D::Answer
+            | D::Answers
+            | D::Figures
+            | D::WorkedSolution
+            | D::Problem
+            | D::Variant
+            | D::Warning
+            | D::Error
+            | D::NotesOnSource
+            | D::Yes
+            | D::No
+            | D::NoValue
+            | D::ComparedWith
+            | D::TheSource
+            | D::Printed
+            | D::CorrectValue
+            | D::Computed
+            | D::Value
+            | D::Why
+            | D::ExamTitle { .. }
+            | D::KeyTitle(_)
+            | D::AnswerKey
+            | D::Wrote { .. }
+            | D::More(_) => {}
+        }
+        match q {
+            Q::Instructions { .. }
+            | Q::TypeOutcodes
+            | Q::TypeStatus
+            | Q::KnownMistake
+            | Q::OrMistake
+            | Q::Part
+            | Q::FiguresInMoodle
+            | Q::Component
+            | Q::Point => {}
+        }
+        match p {
+            P::Title { .. }
+            | P::HowToAnswer
+            | P::Answer
+            | P::Skipped
+            | P::AgainEmpty
+            | P::FirstValue
+            | P::NoMoreHints
+            | P::Exact
+            | P::Tolerance
+            | P::Rounded
+            | P::FollowThrough
+            | P::TooCoarse
+            | P::Wrong
+            | P::Unreadable { .. }
+            | P::ReadAs
+            | P::SecondTry
+            | P::LikelyMistake
+            | P::SourceWrong
+            | P::NoMistakeTip
+            | P::NoHint
+            | P::Hint1(_)
+            | P::Hint2
+            | P::NoValues
+            | P::MistakesMade
+            | P::PractiseNext
+            | P::SegmentShape
+            | P::BitsShape
+            | P::MatrixShape
+            | P::NumberShape
+            | P::ValuesShape(_) => {}
+        }
+        match s {
+            S::Heading
+            | S::TrianglesIn
+            | S::Culled
+            | S::Rejected
+            | S::Clipped
+            | S::Drawn
+            | S::NoPixels
+            | S::ObjectsRejected
+            | S::ObjectsInside
+            | S::PixelsShaded
+            | S::LightingEvals
+            | S::PerPixel
+            | S::LightsSkipped
+            | S::SpecularSkipped
+            | S::Geometry { .. }
+            | S::Binning
+            | S::Bands
+            | S::Raster
+            | S::Shading
+            | S::Frame
+            | S::Png => {}
+        }
+        match b {
+            B::Stage
+            | B::Precision
+            | B::Cases
+            | B::TimePerOp
+            | B::MaxUlpsInt
+            | B::MedianUlpsInt
+            | B::MaxUlpsWide
+            | B::Target
+            | B::Exact
+            | B::NoTarget
+            | B::Met
+            | B::NotMet
+            | B::UlpsNote
+            | B::Disagreements
+            | B::Unreferenced => {}
+        }
+        match l {
+            L::WorkedSolution
+            | L::Measuring
+            | L::Frames
+            | L::Variants
+            | L::Arguments
+            | L::TheText => {}
+        }
+    }
+
+    #[test]
+    fn every_report_word_is_written_in_both_languages() {
+        for lang in Lang::ALL {
+            for w in every_word(lang) {
+                assert!(!w.trim().is_empty() && w != "?", "{lang:?}: {w:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn most_report_words_differ_between_languages() {
+        let (en, id) = (every_word(Lang::En), every_word(Lang::Id));
+        assert_eq!(en.len(), id.len());
+        let same: Vec<&String> = (en.iter().zip(&id))
+            .filter(|(e, i)| e == i)
+            .map(|(e, _)| e)
+            .collect();
+        // the course's own loanwords and notation: follow-through,
+        // Diagnosis:, the bench's target in ulps
+        assert!(same.len() <= 3, "{same:?}");
+    }
+
+    #[test]
+    fn sentences_write_their_numbers_in_the_language_style() {
+        let summary = C::Summary {
+            students: 12,
+            tolerance_pct: 0.5,
+            sig_figs: 3,
+            follow_through: false,
+        };
+        let en = of(Lang::En).class(&summary);
+        let id = of(Lang::Id).class(&summary);
+        assert!(
+            en.starts_with("12 students marked; tolerance 0.5 %"),
+            "{en}"
+        );
+        assert!(en.ends_with("follow-through off."), "{en}");
+        assert!(
+            id.starts_with("12 mahasiswa dinilai; toleransi 0,5 %"),
+            "{id}"
+        );
+        assert!(id.ends_with("follow-through tidak aktif."), "{id}");
+    }
+
+    #[test]
+    fn english_counts_take_their_plural() {
+        let wrote = |files, variants, count| D::Wrote {
+            files,
+            variants,
+            count,
+            topics: "view".into(),
+            seed: 7,
+            out: "exam".into(),
+        };
+        assert_eq!(
+            of(Lang::En).doc(&wrote(1, 1, 1)),
+            "wrote 1 file (1 variant of 1 view problem, seed 7) to exam"
+        );
+        assert_eq!(
+            of(Lang::En).doc(&wrote(4, 2, 2)),
+            "wrote 4 files (2 variants of 2 view problems, seed 7) to exam"
+        );
+        assert_eq!(
+            of(Lang::Id).doc(&wrote(4, 2, 2)),
+            "4 berkas ditulis (2 varian dari 2 soal view, seed 7) ke exam"
+        );
+        assert_eq!(of(Lang::En).class(&C::StudentCount(1)), "student");
+        assert_eq!(of(Lang::En).class(&C::StudentCount(0)), "students");
+        assert_eq!(of(Lang::Id).class(&C::StudentCount(3)), "mahasiswa");
+    }
+
+    #[test]
+    fn an_exam_title_names_its_seed_and_variant_in_the_language() {
+        let title = D::ExamTitle {
+            topics: "view, clip".into(),
+            difficulty: "hard".into(),
+            seed: Some(42),
+            variant: Some(3),
+        };
+        assert_eq!(
+            of(Lang::En).doc(&title),
+            "grafika exam: view, clip (hard), seed 42, variant 3"
+        );
+        assert_eq!(
+            of(Lang::Id).doc(&title),
+            "ujian grafika: view, clip (hard), seed 42, varian 3"
+        );
+    }
+}

@@ -1,3 +1,349 @@
-use super::En;
+//! The report writers' own words in English: the class report's headings,
+//! columns and sentences, the notes on answer files, … (one exhaustive
+//! match per key enum; a word table, long on purpose).
 
-impl super::super::report::ReportWords for En {}
+use super::En;
+use crate::msg::BenchWord as B;
+use crate::msg::CheckWord as K;
+use crate::msg::ClassWord as C;
+use crate::msg::CliWord as L;
+use crate::msg::PracticeWord as P;
+use crate::msg::StatWord as S;
+use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
+use crate::report::words::report::{dec, exam_title, ReportWords};
+use crate::report::words::MsgWords;
+use crate::tutor::check::Verdict;
+use crate::tutor::class::stats::Flag;
+use crate::tutor::class::{Note, Skip};
+use crate::tutor::diagnose::Mistake;
+use crate::tutor::practice::Summary;
+
+impl ReportWords for En {
+    fn class(&self, w: &C) -> String {
+        match w {
+            C::ClassReport => "Class report".into(),
+            C::Student => "student".into(),
+            C::Students => "students".into(),
+            C::Score => "score".into(),
+            C::FollowThrough => "follow-through".into(),
+            C::Mistakes => "mistakes".into(),
+            C::Mistake => "mistake".into(),
+            C::Key => "key".into(),
+            C::Flag => "flag".into(),
+            C::Problem => "problem".into(),
+            C::Title => "title".into(),
+            C::Facility => "facility p".into(),
+            C::WholeExam => "whole exam".into(),
+            C::Harder => "harder".into(),
+            C::Easier => "easier".into(),
+            C::AnswerKeys => "Answer keys".into(),
+            C::Problems => "Problems".into(),
+            C::Variants => "Variants".into(),
+            C::MistakesHeading => "Mistakes".into(),
+            C::WrongHeading => "Wrong answers no mistake explains".into(),
+            C::StudentsHeading => "Students".into(),
+            C::WhoWhich => "Who made which mistake".into(),
+            C::Scores => "Scores".into(),
+            C::Summary {
+                students,
+                tolerance_pct,
+                sig_figs,
+                follow_through,
+            } => format!(
+                "{students} students marked; tolerance {} %, at least {sig_figs} significant figures, follow-through {}.",
+                dec(*tolerance_pct, 4, self.nums()),
+                if *follow_through { "on" } else { "off" }
+            ),
+            C::NotMarked => "Not marked (not counted below):".into(),
+            C::Definitions => "Correct: how many, and in brackets how many exact / correctly rounded / within the tolerance. \
+                 A key's mark is 1 when correct, ½ when too coarse, 0 otherwise; a student's score is the sum of the marks. \
+                 Facility p: the mean mark, the share of full marks (very easy above 0.90, very hard below 0.20). \
+                 Discrimination D: the mean mark of the upper 27 % of the class by score minus that of the lower 27 % \
+                 (students tied at a group's edge share its places); from −1 to 1. \
+                 Point-biserial r: the correlation of the key's mark with the rest of the score (the score without this key); \
+                 — when everyone has the same mark. A key with D or r below 0 discriminates negatively (flag: negative): \
+                 the weaker students do better on it, so check its key or its question.".into(),
+            C::VariantsNote => "Each cell is the variant's facility on the problem; ▼ marks a variant more than 0.20 below the median of its siblings on that problem (▲ above).".into(),
+            C::NoMistake => "No known mistake explains a wrong answer.".into(),
+            C::WrongNote => "Values equal within the tolerance are counted together; the most common first. A value many students share may be a mistake the catalog does not know yet, or a wrong key.".into(),
+            C::NoneFound => "None.".into(),
+            C::StudentCount(1) => "student".into(),
+            C::StudentCount(_) => "students".into(),
+            C::Explains => "Explains".into(),
+            C::TeachAgain => "Teach again".into(),
+            C::StepOf {
+                part,
+                number,
+                title,
+            } => format!("{part}step {number} of the worked solution: {title}"),
+            C::DistributionPct => "Score distribution (% of the marks)".into(),
+            C::Distribution => "Score distribution".into(),
+            C::ScoreAxis => "score, % of the marks".into(),
+        }
+    }
+
+    fn note(&self, n: Note) -> &'static str {
+        match n {
+            Note::Empty => "holds no answers: marked with every answer missing",
+            Note::NotMarked => {
+                "not marked: the file is not a valid answer file (see the error in its row)"
+            }
+        }
+    }
+
+    fn skip(&self, s: Skip) -> &'static str {
+        match s {
+            Skip::Subdirectory => "skipped: a subdirectory (its files are not read)",
+            Skip::NotToml => "skipped: not a .toml file",
+        }
+    }
+
+    fn flag(&self, f: Flag) -> &'static str {
+        match f {
+            Flag::VeryEasy => "very easy",
+            Flag::VeryHard => "very hard",
+            Flag::Negative => "negative",
+        }
+    }
+
+    fn verdict(&self, v: Verdict) -> &'static str {
+        match v {
+            Verdict::Correct => "correct",
+            Verdict::TooCoarse => "too coarse",
+            Verdict::Wrong => "wrong",
+            Verdict::Missing => "missing",
+            Verdict::Unparseable => "unparseable",
+        }
+    }
+
+    fn check(&self, w: &K) -> String {
+        match w {
+            K::Answer => "answer".into(),
+            K::Verdict => "verdict".into(),
+            K::Given => "given".into(),
+            K::Expected => "expected".into(),
+            K::Note => "note".into(),
+            K::AnswersOf => "answers of".into(),
+            K::Errata => "Why the printed answers differ (the problem file's errata):".into(),
+            K::Diagnosis => "Diagnosis:".into(),
+            K::Reproduces => "reproduces".into(),
+            K::AlsoFollow => "some of these also follow from".into(),
+            K::NoMistakeExplains => "No known mistake explains".into(),
+            K::NotAnswers => "Not answers to this problem (ignored)".into(),
+            K::Score => "Score".into(),
+            K::FollowThroughCount(n) => format!("({n} of the correct answers by follow-through: right given the student's own earlier answers)"),
+        }
+    }
+
+    fn doc(&self, w: &D) -> String {
+        match w {
+            D::Step => "Step".into(),
+            D::Answer => "Answer".into(),
+            D::Answers => "Answers".into(),
+            D::Figures => "Figures".into(),
+            D::WorkedSolution => "Worked solution".into(),
+            D::Problem => "Problem".into(),
+            D::Variant => "variant".into(),
+            D::Error => "error".into(),
+            D::Warning => "warning".into(),
+            D::NotesOnSource => "Notes on the source".into(),
+            D::Yes => "yes".into(),
+            D::No => "no".into(),
+            D::NoValue => "none".into(),
+            D::ComparedWith => "Compared with the answers printed in".into(),
+            D::TheSource => "the source".into(),
+            D::Printed => "printed".into(),
+            D::CorrectValue => "correct".into(),
+            D::Computed => "computed".into(),
+            D::Value => "value".into(),
+            D::Why => "why".into(),
+            D::ExamTitle {
+                topics,
+                difficulty,
+                seed,
+                variant,
+            } => exam_title("grafika exam", (topics, difficulty), *seed, variant.map(|v| (self.doc(&D::Variant), v))),
+            D::KeyTitle(title) => format!("{title} — answer key"),
+            D::AnswerKey => "Answer key".into(),
+            D::Wrote {
+                files,
+                variants,
+                count,
+                topics,
+                seed,
+                out,
+            } => format!(
+                "wrote {files} file{} ({variants} variant{} of {count} {topics} problem{}, seed {seed}) to {out}",
+                plural(*files),
+                plural(*variants as usize),
+                plural(*count as usize),
+            ),
+            D::More(n) => format!("… and {n} more"),
+        }
+    }
+
+    fn quiz(&self, w: &Q) -> String {
+        match w {
+            Q::Instructions {
+                figures,
+                pct,
+                mark,
+                pixels,
+            } => {
+                let mark = match mark {
+                    Decimal::Point => "a decimal point (0.5, not 0,5)",
+                    Decimal::Comma => "a decimal comma (0,5)",
+                };
+                let pixel = match pixels {
+                    true => "; a pixel position within half a pixel, so a whole pixel is right",
+                    false => "",
+                };
+                format!("Type each number as a decimal with at least {figures} significant figures, not as an exact form such as (√2−1)/2, and with {mark} (a number within {pct} % of the key's is right{pixel}).")
+            }
+            Q::TypeOutcodes => "Type outcodes as six bits, bit 1 rightmost (e.g. 000010).".into(),
+            Q::TypeStatus => "Type the clipping status as accepted, rejected or clipped, and the segment that is left as none when there is none.".into(),
+            Q::KnownMistake => "Known mistake: ".into(),
+            Q::OrMistake => "; or: ".into(),
+            Q::Part => "Part".into(),
+            Q::FiguresInMoodle => "The figures of this problem are in the Moodle XML of the same exam (grafika generate … --format moodle): GIFT cannot carry files.".into(),
+            Q::Component => "component".into(),
+            Q::Point => "point".into(),
+        }
+    }
+
+    fn cli(&self, w: L) -> &'static str {
+        match w {
+            L::WorkedSolution => "worked solution",
+            L::Measuring => "measuring",
+            L::Frames => "frames",
+            L::Variants => "variants",
+            L::Arguments => "arguments",
+            L::TheText => "the text",
+        }
+    }
+
+    fn stat(&self, w: S) -> String {
+        match w {
+            S::Heading => "Stats".into(),
+            S::TrianglesIn => "triangles in".into(),
+            S::Culled => "back faces culled (closed meshes)".into(),
+            S::Rejected => "rejected by outcodes".into(),
+            S::Clipped => "clipped (crossing a plane)".into(),
+            S::Drawn => "set up and rasterized".into(),
+            S::NoPixels => "covering no pixel centre".into(),
+            S::ObjectsRejected => "objects rejected whole (bounding box)".into(),
+            S::ObjectsInside => "objects inside whole (no clip tests)".into(),
+            S::PixelsShaded => "pixels shaded".into(),
+            S::LightingEvals => "lighting evaluations".into(),
+            S::PerPixel => "per-pixel lighting".into(),
+            S::LightsSkipped => "lights skipped (out of range)".into(),
+            S::SpecularSkipped => "objects without specular work".into(),
+            S::Geometry { runs: 0 | 1 } => "time: geometry".into(),
+            S::Geometry { runs } => format!("time: geometry (median of {runs})"),
+            S::Binning => "time: binning".into(),
+            S::Bands => "time: bands (raster + shading)".into(),
+            S::Raster => "thread time: raster".into(),
+            S::Shading => "thread time: shading".into(),
+            S::Frame => "time: frame".into(),
+            S::Png => "time: PNG encoding".into(),
+        }
+    }
+
+    fn bench(&self, w: B) -> &'static str {
+        match w {
+            B::Stage => "stage",
+            B::Precision => "precision",
+            B::Cases => "cases",
+            B::TimePerOp => "time/op (median)",
+            B::MaxUlpsInt => "max ulps (int ≤ 2^20)",
+            B::MedianUlpsInt => "median ulps (int ≤ 2^20)",
+            B::MaxUlpsWide => "max ulps (1e-30…1e30)",
+            B::Target => "target ≤ 4 ulps",
+            B::Exact => "exact",
+            B::NoTarget => "(no target)",
+            B::Met => "met",
+            B::NotMet => "NOT met",
+            B::UlpsNote => "ulps: of the exact value (of 1 for the unit vectors u, v, n), at the row's precision;\n\
+                 the exact path's results are the reference (correctly rounded to f64 first).\n",
+            B::Disagreements => "cases where a float run failed but the exact one did not, or the reverse (an overflow at f32 is an error)",
+            B::Unreferenced => "components without an exact reference (a square root `Real` cannot factor; not counted)",
+        }
+    }
+
+    fn mistake(&self, m: &Mistake) -> &'static str {
+        // the catalog's own words are English
+        m.description
+    }
+
+    fn practice(&self, w: &P) -> String {
+        match w {
+            P::Title {
+                title,
+                values,
+                seed: Some(s),
+            } => format!("Practice: {title} ({values} values, seed {s})"),
+            P::Title {
+                title,
+                values,
+                seed: None,
+            } => format!("Practice: {title} ({values} values)"),
+            P::HowToAnswer => "Answer each value when asked. Numbers: 0.8, 4/5, sqrt(2)/2; points: \
+                 (x, y, z). With decimal commas, separate the parts by ; (0,8; 0,6; 0). \
+                 Commands: hint, show, skip, back, quit.".into(),
+            P::Answer => "Answer".into(),
+            P::Skipped => "Skipped.".into(),
+            P::AgainEmpty => "Type an answer, or a command: hint, show, skip, back, quit.".into(),
+            P::FirstValue => "This is the first value: there is nothing to go back to.".into(),
+            P::NoMoreHints => "No more hints: type show to see the step worked out.".into(),
+            P::Exact => "✓ correct".into(),
+            P::Tolerance => "✓ correct (within the tolerance)".into(),
+            P::Rounded => "✓ correct (rounded)".into(),
+            P::FollowThrough => "✓ correct given your earlier answers (follow-through)".into(),
+            P::TooCoarse => "½ right, but rounded too coarsely: write more significant figures".into(),
+            P::Wrong => "✗ wrong".into(),
+            P::Unreadable { why, how } => {
+                format!("✗ cannot read this answer:{why} write {how}, or a command")
+            }
+            P::ReadAs => "read as".into(),
+            P::SecondTry => "(a second try: shown, and counted apart; the first verdict stands for the score)".into(),
+            P::LikelyMistake => "Likely mistake".into(),
+            P::SourceWrong => "The source printed this, and it is wrong".into(),
+            P::NoMistakeTip => "No known mistake explains this answer. Type back to try this value again (hint and show help there).".into(),
+            P::NoHint => "No hint for this value.".into(),
+            P::Hint1(title) => format!("Hint 1: {title}"),
+            P::Hint2 => "Hint 2: the values to substitute (the last step is yours)".into(),
+            P::NoValues => "(every value of this step would give the answer away: substitute the problem's own numbers, or type show)".into(),
+            P::MistakesMade => "Mistakes made:".into(),
+            P::PractiseNext => "Practise next".into(),
+            P::SegmentShape => "(x0, y0, z0); (x1, y1, z1), or none".into(),
+            P::BitsShape => "6 bits, bit 1 rightmost".into(),
+            P::MatrixShape => "4 rows (a, b, c, d); (…); …".into(),
+            P::NumberShape => "a number".into(),
+            P::ValuesShape(n) => format!("({n} values)"),
+        }
+    }
+
+    fn practice_summary(&self, s: &Summary) -> String {
+        let pts = dec(s.points, 4, self.nums());
+        let mut out = format!(
+            "Summary: {pts}/{} points\n  correct {} ({} by follow-through), too coarse {}, wrong {},\n  skipped {}, revealed {}, not reached {}; hints used {}\n",
+            s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
+        );
+        if s.retries > 0 {
+            out.push_str(&format!(
+                "  second tries {} ({} right), not in the score\n",
+                s.retries, s.retries_correct
+            ));
+        }
+        out
+    }
+}
+
+/// The English plural's `s`: none for one.
+fn plural(n: usize) -> &'static str {
+    if n == 1 {
+        ""
+    } else {
+        "s"
+    }
+}

@@ -1,3 +1,337 @@
-use super::Id;
+//! The report writers' own words in Bahasa Indonesia: the class report's
+//! headings, columns and sentences, the notes on answer files, … (one
+//! exhaustive match per key enum; a word table, long on purpose).
 
-impl super::super::report::ReportWords for Id {}
+use super::Id;
+use crate::msg::BenchWord as B;
+use crate::msg::CheckWord as K;
+use crate::msg::ClassWord as C;
+use crate::msg::CliWord as L;
+use crate::msg::PracticeWord as P;
+use crate::msg::StatWord as S;
+use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
+use crate::report::words::report::{dec, exam_title, ReportWords};
+use crate::report::words::MsgWords;
+use crate::tutor::check::Verdict;
+use crate::tutor::class::stats::Flag;
+use crate::tutor::class::{Note, Skip};
+use crate::tutor::diagnose::Mistake;
+use crate::tutor::practice::Summary;
+
+impl ReportWords for Id {
+    fn class(&self, w: &C) -> String {
+        match w {
+            C::ClassReport => "Laporan kelas".into(),
+            C::Student => "mahasiswa".into(),
+            C::Students => "mahasiswa".into(),
+            C::Score => "nilai".into(),
+            C::FollowThrough => "follow-through".into(),
+            C::Mistakes => "kesalahan konsep".into(),
+            C::Mistake => "kesalahan".into(),
+            C::Key => "kunci".into(),
+            C::Flag => "tanda".into(),
+            C::Problem => "soal".into(),
+            C::Title => "judul".into(),
+            C::Facility => "tingkat kemudahan p".into(),
+            C::WholeExam => "seluruh ujian".into(),
+            C::Harder => "lebih sulit".into(),
+            C::Easier => "lebih mudah".into(),
+            C::AnswerKeys => "Kunci jawaban".into(),
+            C::Problems => "Soal".into(),
+            C::Variants => "Varian".into(),
+            C::MistakesHeading => "Kesalahan konsep".into(),
+            C::WrongHeading => "Jawaban salah yang tidak dijelaskan kesalahan yang dikenal".into(),
+            C::StudentsHeading => "Mahasiswa".into(),
+            C::WhoWhich => "Siapa membuat kesalahan apa".into(),
+            C::Scores => "Nilai".into(),
+            C::Summary {
+                students,
+                tolerance_pct,
+                sig_figs,
+                follow_through,
+            } => format!(
+                "{students} mahasiswa dinilai; toleransi {} %, paling sedikit {sig_figs} angka penting, follow-through {}.",
+                dec(*tolerance_pct, 4, self.nums()),
+                if *follow_through { "aktif" } else { "tidak aktif" }
+            ),
+            C::NotMarked => "Tidak dinilai (tidak dihitung di bawah):".into(),
+            C::Definitions => "Benar: jumlahnya, dan dalam kurung berapa yang eksak / dibulatkan dengan benar / dalam batas toleransi. \
+                 Nilai sebuah kunci 1 bila benar, ½ bila terlalu kasar, 0 bila tidak; nilai mahasiswa adalah jumlahnya. \
+                 Tingkat kemudahan p: rata-rata nilai kunci, bagian dari nilai penuh (sangat mudah di atas 0,90, sangat sulit di bawah 0,20). \
+                 Daya beda D: rata-rata nilai 27 % kelas teratas menurut nilai dikurangi rata-rata 27 % terbawah \
+                 (mahasiswa dengan nilai sama di batas kelompok berbagi tempatnya); dari −1 sampai 1. \
+                 Point-biserial r: korelasi nilai kunci dengan sisa nilai (nilai tanpa kunci ini); \
+                 — bila semua mendapat nilai yang sama. Kunci dengan D atau r di bawah 0 memiliki daya beda negatif (tanda: negatif): \
+                 mahasiswa yang lebih lemah justru lebih baik, jadi periksa kunci atau soalnya.".into(),
+            C::VariantsNote => "Setiap sel adalah tingkat kemudahan varian pada soal itu; ▼ menandai varian yang lebih dari 0,20 di bawah median varian lainnya pada soal itu (▲ di atasnya).".into(),
+            C::NoMistake => "Tidak ada kesalahan yang dikenal yang menjelaskan jawaban salah.".into(),
+            C::WrongNote => "Nilai yang sama dalam batas toleransi dihitung bersama; yang paling sering lebih dulu. Nilai yang sama pada banyak mahasiswa bisa jadi kesalahan yang belum dikenal katalog, atau kunci yang salah.".into(),
+            C::NoneFound => "Tidak ada.".into(),
+            C::StudentCount(_) => "mahasiswa".into(),
+            C::Explains => "Menjelaskan".into(),
+            C::TeachAgain => "Ajarkan lagi".into(),
+            C::StepOf {
+                part,
+                number,
+                title,
+            } => format!("{part}langkah {number} dari penyelesaian: {title}"),
+            C::DistributionPct => "Sebaran nilai (% dari nilai penuh)".into(),
+            C::Distribution => "Sebaran nilai".into(),
+            C::ScoreAxis => "nilai, % dari nilai penuh".into(),
+        }
+    }
+
+    fn note(&self, n: Note) -> &'static str {
+        match n {
+            Note::Empty => "tidak berisi jawaban: dinilai dengan semua jawaban kosong",
+            Note::NotMarked => {
+                "tidak dinilai: berkas ini bukan berkas jawaban yang sah (lihat galat di barisnya)"
+            }
+        }
+    }
+
+    fn skip(&self, s: Skip) -> &'static str {
+        match s {
+            Skip::Subdirectory => "dilewati: subdirektori (berkas di dalamnya tidak dibaca)",
+            Skip::NotToml => "dilewati: bukan berkas .toml",
+        }
+    }
+
+    fn flag(&self, f: Flag) -> &'static str {
+        match f {
+            Flag::VeryEasy => "sangat mudah",
+            Flag::VeryHard => "sangat sulit",
+            Flag::Negative => "negatif",
+        }
+    }
+
+    fn verdict(&self, v: Verdict) -> &'static str {
+        match v {
+            Verdict::Correct => "benar",
+            Verdict::TooCoarse => "terlalu kasar",
+            Verdict::Wrong => "salah",
+            Verdict::Missing => "tidak dijawab",
+            Verdict::Unparseable => "tidak terbaca",
+        }
+    }
+
+    fn check(&self, w: &K) -> String {
+        match w {
+            K::Answer => "jawaban".into(),
+            K::Verdict => "penilaian".into(),
+            K::Given => "diberikan".into(),
+            K::Expected => "seharusnya".into(),
+            K::Note => "catatan".into(),
+            K::AnswersOf => "jawaban dari".into(),
+            K::Errata => "Mengapa jawaban yang tercetak berbeda (errata dalam berkas soal):".into(),
+            K::Diagnosis => "Diagnosis:".into(),
+            K::Reproduces => "menghasilkan ulang".into(),
+            K::AlsoFollow => "sebagian juga dapat berasal dari".into(),
+            K::NoMistakeExplains => "Tidak ada kesalahan yang dikenal yang menjelaskan".into(),
+            K::NotAnswers => "Bukan jawaban untuk soal ini (diabaikan)".into(),
+            K::Score => "Nilai".into(),
+            K::FollowThroughCount(n) => format!("({n} jawaban benar karena follow-through: benar menurut jawaban mahasiswa sendiri sebelumnya)"),
+        }
+    }
+
+    fn doc(&self, w: &D) -> String {
+        match w {
+            D::Step => "Langkah".into(),
+            D::Answer => "Jawaban".into(),
+            D::Answers => "Jawaban".into(),
+            D::Figures => "Gambar".into(),
+            D::WorkedSolution => "Penyelesaian".into(),
+            D::Problem => "Soal".into(),
+            D::Variant => "varian".into(),
+            D::Error => "kesalahan".into(),
+            D::Warning => "peringatan".into(),
+            D::NotesOnSource => "Catatan tentang sumber".into(),
+            D::Yes => "ya".into(),
+            D::No => "tidak".into(),
+            D::NoValue => "tidak ada".into(),
+            D::ComparedWith => "Dibandingkan dengan jawaban yang tercetak di".into(),
+            D::TheSource => "sumber".into(),
+            D::Printed => "tercetak".into(),
+            D::CorrectValue => "yang benar".into(),
+            D::Computed => "hasil hitung".into(),
+            D::Value => "nilai".into(),
+            D::Why => "alasan".into(),
+            D::ExamTitle {
+                topics,
+                difficulty,
+                seed,
+                variant,
+            } => exam_title("ujian grafika", (topics, difficulty), *seed, variant.map(|v| (self.doc(&D::Variant), v))),
+            D::KeyTitle(title) => format!("{title} — kunci jawaban"),
+            D::AnswerKey => "Kunci jawaban".into(),
+            D::Wrote {
+                files,
+                variants,
+                count,
+                topics,
+                seed,
+                out,
+            } => format!(
+                "{files} berkas ditulis ({variants} varian dari {count} soal {topics}, seed {seed}) ke {out}"
+            ),
+            D::More(n) => format!("… dan {n} lagi"),
+        }
+    }
+
+    fn quiz(&self, w: &Q) -> String {
+        match w {
+            Q::Instructions {
+                figures,
+                pct,
+                mark,
+                pixels,
+            } => {
+                let mark = match mark {
+                    Decimal::Point => "titik desimal (0.5, bukan 0,5)",
+                    Decimal::Comma => "koma desimal (0,5)",
+                };
+                let pixel = match pixels {
+                    true => "; posisi piksel boleh berselisih setengah piksel, jadi piksel bulat dinilai benar",
+                    false => "",
+                };
+                format!("Tulis setiap bilangan sebagai desimal dengan sedikitnya {figures} angka penting, bukan sebagai bentuk eksak seperti (√2−1)/2, dengan {mark} (bilangan yang berselisih paling banyak {pct} % dari kunci dinilai benar{pixel}).")
+            }
+            Q::TypeOutcodes => "Tulis outcode sebagai enam bit, bit 1 paling kanan (mis. 000010).".into(),
+            Q::TypeStatus => "Tulis status clipping sebagai accepted, rejected atau clipped, dan sisa segmen sebagai none bila tidak ada.".into(),
+            Q::KnownMistake => "Kesalahan yang dikenal: ".into(),
+            Q::OrMistake => "; atau: ".into(),
+            Q::Part => "Bagian".into(),
+            Q::FiguresInMoodle => "Gambar soal ini ada di Moodle XML dari ujian yang sama (grafika generate … --format moodle): GIFT tidak dapat membawa berkas.".into(),
+            Q::Component => "komponen".into(),
+            Q::Point => "titik".into(),
+        }
+    }
+
+    fn cli(&self, w: L) -> &'static str {
+        match w {
+            L::WorkedSolution => "penyelesaian",
+            L::Measuring => "mengukur",
+            L::Frames => "bingkai",
+            L::Variants => "varian",
+            L::Arguments => "argumen",
+            L::TheText => "teks",
+        }
+    }
+
+    fn stat(&self, w: S) -> String {
+        match w {
+            S::Heading => "Statistik".into(),
+            S::TrianglesIn => "segitiga masuk".into(),
+            S::Culled => "sisi belakang dibuang (mesh tertutup)".into(),
+            S::Rejected => "ditolak oleh region code".into(),
+            S::Clipped => "di-clip (memotong bidang)".into(),
+            S::Drawn => "disiapkan dan dirasterisasi".into(),
+            S::NoPixels => "tidak menutupi pusat piksel".into(),
+            S::ObjectsRejected => "objek ditolak utuh (kotak pembatas)".into(),
+            S::ObjectsInside => "objek di dalam utuh (tanpa uji clip)".into(),
+            S::PixelsShaded => "piksel diwarnai".into(),
+            S::LightingEvals => "evaluasi pencahayaan".into(),
+            S::PerPixel => "pencahayaan per piksel".into(),
+            S::LightsSkipped => "sumber cahaya dilewati (di luar jangkauan)".into(),
+            S::SpecularSkipped => "objek tanpa perhitungan specular".into(),
+            S::Geometry { runs: 0 | 1 } => "waktu: geometri".into(),
+            S::Geometry { runs } => format!("waktu: geometri (median dari {runs})"),
+            S::Binning => "waktu: binning".into(),
+            S::Bands => "waktu: pita (raster + shading)".into(),
+            S::Raster => "waktu thread: raster".into(),
+            S::Shading => "waktu thread: shading".into(),
+            S::Frame => "waktu: bingkai".into(),
+            S::Png => "waktu: encoding PNG".into(),
+        }
+    }
+
+    fn bench(&self, w: B) -> &'static str {
+        match w {
+            B::Stage => "tahap",
+            B::Precision => "presisi",
+            B::Cases => "kasus",
+            B::TimePerOp => "waktu/operasi (median)",
+            B::MaxUlpsInt => "ulps maks (bulat ≤ 2^20)",
+            B::MedianUlpsInt => "ulps median (bulat ≤ 2^20)",
+            B::MaxUlpsWide => "ulps maks (1e-30…1e30)",
+            B::Target => "target ≤ 4 ulps",
+            B::Exact => "eksak",
+            B::NoTarget => "(tanpa target)",
+            B::Met => "tercapai",
+            B::NotMet => "TIDAK tercapai",
+            B::UlpsNote => "ulps: dari nilai eksak (dari 1 untuk vektor satuan u, v, n), pada presisi barisnya;\n\
+                 hasil jalur eksak adalah acuannya (dibulatkan benar ke f64 lebih dulu).\n",
+            B::Disagreements => "kasus ketika jalur float gagal tetapi jalur eksak tidak, atau sebaliknya (overflow pada f32 adalah kesalahan)",
+            B::Unreferenced => "komponen tanpa acuan eksak (akar kuadrat yang tidak dapat difaktorkan `Real`; tidak dihitung)",
+        }
+    }
+
+    fn mistake(&self, m: &Mistake) -> &'static str {
+        // every code of the catalog has its words (a test in mistakes.rs)
+        super::mistakes::mistake(m.code).unwrap_or(m.description)
+    }
+
+    fn practice(&self, w: &P) -> String {
+        match w {
+            P::Title {
+                title,
+                values,
+                seed: Some(s),
+            } => format!("Latihan: {title} ({values} nilai, seed {s})"),
+            P::Title {
+                title,
+                values,
+                seed: None,
+            } => format!("Latihan: {title} ({values} nilai)"),
+            P::HowToAnswer => "Jawab setiap nilai yang ditanyakan. Angka: 0,8, 4/5, sqrt(2)/2; titik: \
+                 (x, y, z). Dengan koma desimal, pisahkan komponen dengan ; (0,8; 0,6; 0). \
+                 Perintah: hint (petunjuk), show (lihat), skip (lewati), back (kembali), \
+                 quit (keluar).".into(),
+            P::Answer => "Jawaban".into(),
+            P::Skipped => "Dilewati.".into(),
+            P::AgainEmpty => "Ketik jawaban, atau perintah: hint, show, skip, back, quit.".into(),
+            P::FirstValue => "Ini nilai pertama: tidak ada langkah sebelumnya.".into(),
+            P::NoMoreHints => "Petunjuk sudah habis: ketik show untuk melihat langkahnya.".into(),
+            P::Exact => "✓ benar".into(),
+            P::Tolerance => "✓ benar (dalam toleransi)".into(),
+            P::Rounded => "✓ benar (dibulatkan)".into(),
+            P::FollowThrough => "✓ benar menurut jawabanmu sebelumnya (follow-through)".into(),
+            P::TooCoarse => "½ benar, tetapi pembulatannya terlalu kasar: tulis lebih banyak angka penting".into(),
+            P::Wrong => "✗ salah".into(),
+            P::Unreadable { why, how } => {
+                format!("✗ jawaban ini tidak terbaca:{why} tulis {how}, atau sebuah perintah")
+            }
+            P::ReadAs => "dibaca sebagai".into(),
+            P::SecondTry => "(percobaan kedua: ditampilkan dan dihitung terpisah; penilaian pertama yang dipakai untuk nilai)".into(),
+            P::LikelyMistake => "Kemungkinan kesalahan".into(),
+            P::SourceWrong => "Sumber mencetak nilai ini, dan nilai itu salah".into(),
+            P::NoMistakeTip => "Tidak ada kesalahan yang dikenal yang menjelaskan jawaban ini. Ketik back untuk mencoba nilai ini lagi (hint dan show membantu di sana).".into(),
+            P::NoHint => "Tidak ada petunjuk untuk nilai ini.".into(),
+            P::Hint1(title) => format!("Petunjuk 1: {title}"),
+            P::Hint2 => "Petunjuk 2: nilai-nilai yang disubstitusikan (langkah terakhir milikmu)".into(),
+            P::NoValues => "(setiap nilai langkah ini akan membocorkan jawabannya: substitusikan bilangan dari soal, atau ketik show)".into(),
+            P::MistakesMade => "Kesalahan yang dibuat:".into(),
+            P::PractiseNext => "Latihan berikutnya".into(),
+            P::SegmentShape => "(x0, y0, z0); (x1, y1, z1), atau none".into(),
+            P::BitsShape => "6 bit, bit 1 paling kanan".into(),
+            P::MatrixShape => "4 baris (a; b; c; d); (…); …".into(),
+            P::NumberShape => "sebuah bilangan".into(),
+            P::ValuesShape(n) => format!("({n} nilai)"),
+        }
+    }
+
+    fn practice_summary(&self, s: &Summary) -> String {
+        let pts = dec(s.points, 4, self.nums());
+        let mut out = format!(
+            "Ringkasan: {pts}/{} poin\n  benar {} ({} karena follow-through), terlalu kasar {}, salah {},\n  dilewati {}, dilihat {}, belum dijawab {}; petunjuk dipakai {}\n",
+            s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
+        );
+        if s.retries > 0 {
+            out.push_str(&format!(
+                "  percobaan kedua {} ({} benar), tidak masuk nilai\n",
+                s.retries, s.retries_correct
+            ));
+        }
+        out
+    }
+}

@@ -1,0 +1,445 @@
+//! The report writers' own words as typed keys, one enum per writer: the
+//! headings, column names and sentences the writers (class report,
+//! practice, check, Moodle, GIFT, …) put around the steps and values. Their
+//! words are in report/words/{en,id}/report.rs; numbers travel as numbers
+//! and are written through `NumStyle` there.
+
+/// A word of the class report (`check --answers DIR`, `--report`): the
+/// text table's columns, the lecturer's document's headings, columns and
+/// sentences, the histogram's labels.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ClassWord {
+    /// The report's title, before the class's title.
+    ClassReport,
+    /// Column: one student.
+    Student,
+    /// Column: several students (also the histogram's count axis).
+    Students,
+    /// Column: a student's score.
+    Score,
+    /// Column: answers marked by follow-through.
+    FollowThrough,
+    /// Column: the mistakes' codes.
+    Mistakes,
+    /// Column: one mistake.
+    Mistake,
+    /// Column: an answer key.
+    Key,
+    /// Column: the flags of a key.
+    Flag,
+    /// Column: an exam's problem.
+    Problem,
+    /// Column: a problem's title.
+    Title,
+    /// Column: a problem's facility.
+    Facility,
+    /// Column: a variant's facility over the whole exam.
+    WholeExam,
+    /// A variant below its siblings.
+    Harder,
+    /// A variant above its siblings.
+    Easier,
+    /// Heading: the key table.
+    AnswerKeys,
+    /// Heading: per problem.
+    Problems,
+    /// Heading: per variant.
+    Variants,
+    /// Heading: the mistakes.
+    MistakesHeading,
+    /// Heading: the wrong answers no mistake explains.
+    WrongHeading,
+    /// Heading: the students.
+    StudentsHeading,
+    /// Heading: who made which mistake.
+    WhoWhich,
+    /// Heading: the scores.
+    Scores,
+    /// The summary's sentence.
+    Summary {
+        /// Students marked.
+        students: usize,
+        /// The tolerance, in per cent.
+        tolerance_pct: f64,
+        /// The least number of significant figures.
+        sig_figs: u32,
+        /// Whether follow-through marks are given.
+        follow_through: bool,
+    },
+    /// Before the list of the sheets not marked.
+    NotMarked,
+    /// The definitions of the key table's columns and indices.
+    Definitions,
+    /// What a variant table's cell holds.
+    VariantsNote,
+    /// No mistake explains a wrong answer.
+    NoMistake,
+    /// How the wrong answers are counted.
+    WrongNote,
+    /// An empty section.
+    NoneFound,
+    /// `n student(s)`'s word.
+    StudentCount(usize),
+    /// Before the keys a mistake explains.
+    Explains,
+    /// Before the step to teach again.
+    TeachAgain,
+    /// `problem-02, step 3 of the worked solution: Title`.
+    StepOf {
+        /// The problem's name and `, `, or nothing.
+        part: String,
+        /// The step's number.
+        number: usize,
+        /// The step's title, in words.
+        title: String,
+    },
+    /// The histogram's caption in the HTML report.
+    DistributionPct,
+    /// The histogram's title.
+    Distribution,
+    /// The histogram's horizontal axis.
+    ScoreAxis,
+}
+
+/// A word of `grafika practice` for people: the session's heading, the
+/// verdicts, hints, the shape of an answer, the summary's headings.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PracticeWord {
+    /// The session's first line.
+    Title {
+        /// The problem's title.
+        title: String,
+        /// How many values are asked.
+        values: usize,
+        /// The seed of a drawn problem.
+        seed: Option<u64>,
+    },
+    /// How to answer, and the commands.
+    HowToAnswer,
+    /// Before the answer shown.
+    Answer,
+    /// A value skipped.
+    Skipped,
+    /// An empty line was typed.
+    AgainEmpty,
+    /// `back` on the first value.
+    FirstValue,
+    /// `hint` after the last hint.
+    NoMoreHints,
+    /// Verdict: exactly right.
+    Exact,
+    /// Verdict: right within the tolerance.
+    Tolerance,
+    /// Verdict: right, rounded.
+    Rounded,
+    /// Verdict: right given the earlier answers.
+    FollowThrough,
+    /// Verdict: rounded too coarsely.
+    TooCoarse,
+    /// Verdict: wrong.
+    Wrong,
+    /// Verdict: the answer could not be read.
+    Unreadable {
+        /// Why, with its leading space and `;`, or nothing.
+        why: String,
+        /// The shape to write.
+        how: String,
+    },
+    /// Before how an answer was read.
+    ReadAs,
+    /// A second try, counted apart.
+    SecondTry,
+    /// Before a mistake that explains the answer.
+    LikelyMistake,
+    /// Before why the source's printed value is wrong.
+    SourceWrong,
+    /// No mistake explains a wrong answer.
+    NoMistakeTip,
+    /// A value without a hint.
+    NoHint,
+    /// The first hint: the step's title.
+    Hint1(String),
+    /// The second hint's heading.
+    Hint2,
+    /// The second hint of a step without values.
+    NoValues,
+    /// The summary's mistakes' heading.
+    MistakesMade,
+    /// Before the command to practise next.
+    PractiseNext,
+    /// The shape of a clipped segment.
+    SegmentShape,
+    /// The shape of an outcode.
+    BitsShape,
+    /// The shape of a matrix.
+    MatrixShape,
+    /// The shape of a number.
+    NumberShape,
+    /// The shape of a list of `n` values.
+    ValuesShape(usize),
+}
+
+/// A word of a marked answer file (`grafika check --answers FILE`) as
+/// text; the class report shares its columns and notes.
+#[derive(Clone, Debug, PartialEq)]
+pub enum CheckWord {
+    /// Column: the answer's key.
+    Answer,
+    /// Column: the verdict.
+    Verdict,
+    /// Column: the value given.
+    Given,
+    /// Column: the value expected.
+    Expected,
+    /// Column: the note on the verdict.
+    Note,
+    /// Between the title and the student: `Title — answers of budi`.
+    AnswersOf,
+    /// Heading: why the source's printed answers differ.
+    Errata,
+    /// Heading: the mistakes found.
+    Diagnosis,
+    /// Before the keys a mistake reproduces.
+    Reproduces,
+    /// Before the other mistakes giving the same values.
+    AlsoFollow,
+    /// Before the wrong answers no mistake explains.
+    NoMistakeExplains,
+    /// Before the keys that are not this problem's.
+    NotAnswers,
+    /// Before the score.
+    Score,
+    /// How many correct answers were credited by follow-through.
+    FollowThroughCount(usize),
+}
+
+/// A word the documents share (the worked solution as text, HTML,
+/// Markdown, LaTeX; the exam's sheets; a Moodle question): headings,
+/// labels, the comparison with a source's printed answers.
+#[derive(Clone, Debug, PartialEq)]
+pub enum DocWord {
+    /// Before a step's number.
+    Step,
+    /// Heading: the answer.
+    Answer,
+    /// Heading: the answers.
+    Answers,
+    /// Heading: the figures.
+    Figures,
+    /// Heading: the worked solution.
+    WorkedSolution,
+    /// Before a problem's number.
+    Problem,
+    /// Before a variant's number.
+    Variant,
+    /// Before a warning.
+    Warning,
+    /// Before an error (a sheet's in its row, the program's on stderr).
+    Error,
+    /// Heading: the notes on the source.
+    NotesOnSource,
+    /// A true value.
+    Yes,
+    /// A false value.
+    No,
+    /// No value.
+    NoValue,
+    /// Before the source the answers are compared with.
+    ComparedWith,
+    /// The source, when the problem file does not name it.
+    TheSource,
+    /// Before the value the source printed; a column.
+    Printed,
+    /// Before the correct value; a column.
+    CorrectValue,
+    /// Before the value computed, when the printed one cannot be compared.
+    Computed,
+    /// Column: the value's name.
+    Value,
+    /// Before why the source's value differs.
+    Why,
+    /// An exam's title.
+    ExamTitle {
+        /// The topics' names.
+        topics: String,
+        /// The difficulty's name.
+        difficulty: String,
+        /// The seed (a key's title only).
+        seed: Option<u64>,
+        /// The variant, when there are several.
+        variant: Option<u32>,
+    },
+    /// An answer key's title, after the exam's.
+    KeyTitle(String),
+    /// Before an answer-key file's title.
+    AnswerKey,
+    /// What `generate --out` wrote.
+    Wrote {
+        /// Files written.
+        files: usize,
+        /// Variants of each problem.
+        variants: u32,
+        /// Problems.
+        count: u32,
+        /// The topics' names.
+        topics: String,
+        /// The seed.
+        seed: u64,
+        /// The folder.
+        out: String,
+    },
+    /// `… and n more` files.
+    More(usize),
+}
+
+/// The decimal mark students type: a Moodle reads a typed number by the
+/// mark of its interface language (English: `0,5` is 5, the comma a
+/// thousands separator; Indonesian: both `0,5` and `0.5` are 0.5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Decimal {
+    /// `0.5`: for a Moodle in English (the common case).
+    #[default]
+    Point,
+    /// `0,5`: for a Moodle with the Indonesian language pack.
+    Comma,
+}
+
+/// A word of a quiz (Moodle XML, GIFT): how to type the answers, the
+/// feedback, the parts of a question, the names of a value's components.
+#[derive(Clone, Debug, PartialEq)]
+pub enum QuizWord {
+    /// How to type the numbers.
+    Instructions {
+        /// Significant figures asked.
+        figures: u32,
+        /// The tolerance in per cent, written with the site's mark.
+        pct: String,
+        /// The mark to type.
+        mark: Decimal,
+        /// Whether pixel positions are asked.
+        pixels: bool,
+    },
+    /// How to type an outcode.
+    TypeOutcodes,
+    /// How to type the clipping status and a missing segment.
+    TypeStatus,
+    /// Before the mistakes that give a wrong value.
+    KnownMistake,
+    /// Between two such mistakes.
+    OrMistake,
+    /// Before a part's number.
+    Part,
+    /// GIFT carries no figures.
+    FiguresInMoodle,
+    /// Before a component's axis.
+    Component,
+    /// Before a point's number.
+    Point,
+}
+
+/// A word of the command line itself: progress bars, a page's title, the
+/// field of an error that names none.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CliWord {
+    /// A page's title after the command: `grafika view — worked solution`.
+    WorkedSolution,
+    /// The benchmark's progress bar.
+    Measuring,
+    /// The render's progress bar.
+    Frames,
+    /// An exam's progress bar.
+    Variants,
+    /// The field of an error in the arguments that names none.
+    Arguments,
+    /// Whose answers the text's printed ones are, when the file names no
+    /// source.
+    TheText,
+}
+
+/// A line of `render --stats`: a count of the pipeline's work or a stage's
+/// median time.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StatWord {
+    /// The table's heading.
+    Heading,
+    /// Triangles read.
+    TrianglesIn,
+    /// Back faces culled.
+    Culled,
+    /// Triangles rejected by their outcodes.
+    Rejected,
+    /// Triangles clipped.
+    Clipped,
+    /// Triangles set up and rasterized.
+    Drawn,
+    /// Triangles covering no pixel centre.
+    NoPixels,
+    /// Objects rejected whole.
+    ObjectsRejected,
+    /// Objects inside whole.
+    ObjectsInside,
+    /// Pixels shaded.
+    PixelsShaded,
+    /// Lighting evaluations.
+    LightingEvals,
+    /// Whether lighting is per pixel.
+    PerPixel,
+    /// Lights skipped out of range.
+    LightsSkipped,
+    /// Objects without specular work.
+    SpecularSkipped,
+    /// Time: geometry, a median of `runs` frames when more than one.
+    Geometry {
+        /// Frames rendered.
+        runs: usize,
+    },
+    /// Time: binning.
+    Binning,
+    /// Time: the bands.
+    Bands,
+    /// Thread time: raster.
+    Raster,
+    /// Thread time: shading.
+    Shading,
+    /// Time: the frame.
+    Frame,
+    /// Time: PNG encoding.
+    Png,
+}
+
+/// A word of `grafika bench`'s table: its columns, a row's verdict and
+/// the notes below it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BenchWord {
+    /// Column: the stage.
+    Stage,
+    /// Column: the precision.
+    Precision,
+    /// Column: the cases measured.
+    Cases,
+    /// Column: the median time per operation.
+    TimePerOp,
+    /// Column: the largest error on integer inputs.
+    MaxUlpsInt,
+    /// Column: the median error on integer inputs.
+    MedianUlpsInt,
+    /// Column: the largest error on wide inputs.
+    MaxUlpsWide,
+    /// Column: the target.
+    Target,
+    /// Verdict: the exact path.
+    Exact,
+    /// Verdict: a stage without a target.
+    NoTarget,
+    /// Verdict: the target met.
+    Met,
+    /// Verdict: the target not met.
+    NotMet,
+    /// What an ulp is measured against (two lines, each ending with a
+    /// newline).
+    UlpsNote,
+    /// Before the count of runs where float and exact disagree on failing.
+    Disagreements,
+    /// Before the count of components without an exact reference.
+    Unreferenced,
+}
