@@ -6,15 +6,6 @@
 
 pub use crate::msg::Lang;
 
-/// The words for `lang`: both languages must be given, so a sentence without
-/// its translation does not compile.
-pub fn tr<'a>(lang: Lang, en: &'a str, id: &'a str) -> &'a str {
-    match lang {
-        Lang::En => en,
-        Lang::Id => id,
-    }
-}
-
 /// How numbers are written for people: the decimal mark and the separator
 /// between the components of a vector. Each language declares its own
 /// (`report::words`' `MsgWords::nums`): English (and a Moodle quiz with
@@ -85,11 +76,5 @@ mod tests {
         assert_eq!(NumStyle::POINT.number("0.1"), "0.1");
         // a formula's separators change, its numbers do not
         assert_eq!(NumStyle::COMMA.separated("max(0.8, 0)"), "max(0.8; 0)");
-    }
-
-    #[test]
-    fn tr_picks_the_language() {
-        assert_eq!(tr(Lang::En, "Answer", "Jawaban"), "Answer");
-        assert_eq!(tr(Lang::Id, "Answer", "Jawaban"), "Jawaban");
     }
 }
