@@ -9,7 +9,7 @@
 //! | [`cli`] | the command line: clap arguments, flags read into the typed problem, dispatch, printing, exit codes |
 //! | [`report`] | the one place where words for people are made: a report written as text, JSON, Markdown, LaTeX, HTML and figures, in every language; each language is one module of [`report::words`] implementing its [`report::words::Words`] (one trait per family of keys, every method an exhaustive match), so a third language is one more module the compiler checks (docs/contributing.md) |
 //! | [`tutor`] | the one solver (a problem's parts run through the stages, [`tutor::run`]), the report as data ([`tutor::solution`]), mark answers (check), the mistake catalog, generate exams |
-//! | [`bench`] | run time against error of the float stages |
+//! | [`bench`](mod@bench) | run time against error of the float stages |
 //! | [`render`] | the renderer: geometry, rasterization, shading, drawn with the stages |
 //! | [`input`] | the typed problem ([`input::part::Problem`]: a problem file, or a calculator command's one part), scene, lights and mesh files, and flag values, read and validated |
 //! | [`stages`] | the math the text teaches: camera, projection, window, clip, lighting; each writes its steps to a [`stages::trace::Trace`] |

@@ -40,7 +40,7 @@ fn p3(x: f64, y: f64, z: f64) -> [f32; 3] {
 
 /// The text's cone `createCone(n, r, h)`: base circle of radius r in the
 /// plane y = 0, apex at (0, h, 0). Faces 0..n are the sides (triangles
-/// base[i], base[i+1], apex), face n is the base (one n-gon with its own
+/// `base[i]`, `base[i+1]`, apex), face n is the base (one n-gon with its own
 /// vertices, so the rim stays a crease under smooth shading).
 pub fn cone(n: u32, r: f64, h: f64) -> Mesh {
     let mut m = Mesh::default();

@@ -123,9 +123,9 @@ pub enum Bound {
 /// Something given twice where once is wanted.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Twice {
-    /// The global ambient, in the lights file and in [shade].
+    /// The global ambient, in the lights file and in `[shade]`.
     GlobalAmbient,
-    /// The material, in the lights file and in [shade].
+    /// The material, in the lights file and in `[shade]`.
     Material,
     /// color and material.diffuse.
     Color,
@@ -133,11 +133,11 @@ pub enum Twice {
     Shininess,
     /// V and the camera position.
     View,
-    /// L and [[light]] tables.
+    /// L and `[[light]]` tables.
     Light,
     /// A spot light's axis and its old name, direction.
     Axis,
-    /// [tilt] and [camera].
+    /// `[tilt]` and `[camera]`.
     TiltCamera,
     /// color, face_colors, vertex_colors.
     Colors,
@@ -299,7 +299,7 @@ pub enum ErrMsg {
     AnswerFileTooLarge(String, usize, usize),
     /// Files of a class that could not be marked: how many, of how many, which.
     NotMarked(usize, usize, String),
-    /// A lights file without [[light]]: path.
+    /// A lights file without `[[light]]`: path.
     NoLightTable(String),
     /// Cs missing.
     ColorMissing,
@@ -339,7 +339,7 @@ pub enum ErrMsg {
     NeedsColour,
     /// A scene without objects.
     NoObjects,
-    /// A [camera] without [perspective].
+    /// A `[camera]` without `[perspective]`.
     CameraNeedsPerspective,
     /// An image size out of 1..=8192: width, height.
     ImageSize(String, String),
@@ -351,13 +351,13 @@ pub enum ErrMsg {
     Toml(TomlErr),
     /// Nothing to solve.
     NothingToSolve,
-    /// The view asked without [camera].
+    /// The view asked without `[camera]`.
     NoCameraTable,
     /// Projection without near.
     ProjectionNeedsNear,
     /// The window without fovy, aspect, near.
     WindowNeeds,
-    /// [[light]] without [shade].
+    /// `[[light]]` without `[shade]`.
     LightsNeedShade,
     /// No topic.
     NoTopic,
@@ -374,7 +374,7 @@ pub enum ErrMsg {
     TooManyProblems(u64, u64, u64, u64, u64),
     /// Problem and answers both from standard input.
     BothStdin,
-    /// No [printed] table: the file.
+    /// No `[printed]` table: the file.
     NoPrinted(String),
     /// --csv - with --json.
     CsvAndJson,

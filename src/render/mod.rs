@@ -132,7 +132,7 @@ pub struct Frame {
     pub height: u32,
     /// RGB, 8 bits each, rows from the top.
     pub rgb: Vec<u8>,
-    /// The visible triangle per pixel ([`NONE`] for background).
+    /// The visible triangle per pixel (`NONE` for background).
     pub ids: Vec<u32>,
     /// The set-up triangles.
     pub tris: Vec<Tri>,

@@ -611,7 +611,7 @@ fn gouraud(t: &Tri, c: &[Corner; 3], i: u32, j: u32) -> [f32; 3] {
     [ch(0), ch(1), ch(2)]
 }
 
-/// A colour 0…1 as 8-bit: [`byte`] of each channel, truncated.
+/// A colour 0…1 as 8-bit: `byte` of each channel, truncated.
 #[inline]
 pub fn to_u8(c: [f32; 3]) -> [u8; 3] {
     c.map(|x| byte(&Fast32(x)).0 as u8)

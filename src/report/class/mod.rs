@@ -1,5 +1,5 @@
 //! A class marked by `grafika check --answers DIR`: one row per student as
-//! a text table, a CSV summary and JSON ([`rows`] view), and the lecturer's
+//! a text table, a CSV summary and JSON (`rows` view), and the lecturer's
 //! report of the class ([`lecturer`]: HTML, Markdown, JSON, CSV).
 
 pub mod histogram;

@@ -4,7 +4,7 @@
 //! 15 cm wide).
 //!
 //! The scale is the largest that fits the marks and the labels' text in the
-//! width. Each label is then put beside its own mark by [`place`]'s search,
+//! width. Each label is then put beside its own mark by `place`'s search,
 //! in the order of the figure, and placed again once the others stand
 //! (twice), where that costs less; one that still cannot stand clear is
 //! written short (its mark's name) with its whole text in a note, or, when

@@ -1,15 +1,15 @@
 //! One figure description — plain data: named marks (arrows, points,
 //! segments, planes, boxes, arcs, axes, windows), the labels that name
 //! them, and notes — and the small writers that turn it into SVG
-//! ([`svg`]) and TikZ ([`tikz`]). The figure kinds ([`camera`],
-//! [`project`], [`window`], [`clip`], [`shade`]) make the description from
+//! ([`svg`]) and TikZ ([`tikz`]). The figure kinds (`camera`,
+//! `project`, `window`, `clip`, `shade`) make the description from
 //! the same results the worked steps show; [`drawings`] picks them for a
 //! report.
 //!
 //! Every mark has the name the steps use (`N`, `u`, `Peye`, `A''`,
 //! `near window`, `xmax`, …) and a kind; a label says which mark it names
 //! (`for`), and [`layout`] puts it beside that mark by a small search over
-//! candidate places ([`place`]). The SVG carries them as `data-name`,
+//! candidate places (`place`). The SVG carries them as `data-name`,
 //! `data-kind` and `data-for` (docs/spec.md §4).
 //!
 //! 3D panels are drawn in an axonometric (orthographic) view chosen per

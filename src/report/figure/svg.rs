@@ -2,7 +2,7 @@
 //! first, its panels one below the other (each a group with its own
 //! `<title>` and `<desc>`, and its title written above it), every mark an
 //! element with `data-name` and `data-kind`, labels as `<text>` (selectable)
-//! with `data-for`. Where things go is [`layout`]'s.
+//! with `data-for`. Where things go is `layout`'s.
 
 use super::layout::{lay_out, Anchor, Laid, FONT, WIDTH};
 use super::{xml_escape, Drawing, Item, Mark, Pen, Shape};

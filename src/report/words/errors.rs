@@ -2,7 +2,7 @@
 //! the trait [`ErrorWords`] that each language implements (`en/errors.rs`,
 //! `id/errors.rs`: one exhaustive match per key enum, no wildcard arm), and
 //! the parts every language shares, written once here: the crates' English
-//! messages read into typed keys ([`crates`]), a folder's example prefix,
+//! messages read into typed keys (`crates`), a folder's example prefix,
 //! a component's letter. Field names, keys, flags and paths are printed as
 //! they are spelled.
 

@@ -1,7 +1,7 @@
 //! The words of every message key (`crate::msg::Msg`), in English and in
 //! Bahasa Indonesia, with the course text's own terms (docs/glossary.md).
 //!
-//! Each language is one module ([`en`], [`id`]) holding one type that
+//! Each language is one module (`en`, `id`) holding one type that
 //! implements [`Words`]: one trait per family of keys, each method one
 //! exhaustive match over that family in that language, and the language's
 //! number style ([`MsgWords::nums`]). A third language is a third module
@@ -66,7 +66,7 @@ pub fn words(m: &Msg, lang: Lang) -> String {
 }
 
 /// `message` cut to `MAX_MESSAGE` characters in `lang`
-/// ([`msg::cut_message`]).
+/// (`msg::cut_message`).
 pub fn cut_message(message: &str, lang: Lang) -> String {
     msg::cut_message(of(lang), message)
 }

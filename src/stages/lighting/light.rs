@@ -23,7 +23,7 @@ use crate::stages::trace::{Name, Step, Subst, Trace, Val};
 ///
 /// Under the given rules ([`super::Rules`] or [`super::TextRules`]):
 /// L (and d), Att, Spot, cos α = L·N, then the specular part
-/// ([`specular`]); always inlined (into `shade`'s body too).
+/// (`specular`); always inlined (into `shade`'s body too).
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 pub fn light_term_with<T: Scalar, R: RuleSet<T>>(

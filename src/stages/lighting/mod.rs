@@ -28,7 +28,7 @@
 //! built for explanation unless the recorder listens, the specular term
 //! skipped when it cannot contribute, and lights out of range never
 //! evaluated. Inputs are checked once beforehand ([`Material::validate`],
-//! [`Light::validate`], [`unit`]).
+//! [`Light::validate`], [`unit`](fn@unit)).
 
 use crate::error::{Error, Result};
 use crate::msg::{LightPart, Msg, Term};
