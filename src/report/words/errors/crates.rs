@@ -9,6 +9,32 @@
 //! the readers match, and the English words (English is what the crates
 //! write).
 
+/// A typed key for a crate's phrases: the enum, its variants in order as
+/// `ALL`, and its text (the crate's own English, which the reader matches
+/// and English says), each variant written once.
+macro_rules! listed {
+    ($(#[$m:meta])* $name:ident, $all:literal, $text:ident, $text_doc:literal,
+     $($v:ident => $t:literal,)*) => {
+        $(#[$m])*
+        #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+        pub enum $name {
+            $($v,)*
+        }
+
+        impl $name {
+            #[doc = $all]
+            pub const ALL: [$name; [$($t),*].len()] = [$($name::$v),*];
+        }
+
+        #[doc = $text_doc]
+        pub fn $text(w: $name) -> &'static str {
+            match w {
+                $($name::$v => $t,)*
+            }
+        }
+    };
+}
+
 /// A piece of a crate's message: a phrase recognised, or text as written.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Shape<K> {
@@ -180,286 +206,96 @@ pub fn syntax(s: &str) -> Syntax {
     Syntax { what, expected }
 }
 
-/// A description of a syntax error the TOML reader gives.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum SyntaxWhat {
-    InvalidFloat,
-    InvalidNumber,
-    InvalidInteger,
-    InvalidString,
-    InvalidBoolean,
-    InvalidDateTime,
-    InvalidKey,
-    InvalidTable,
-    InvalidValue,
-    InvalidInlineTableElement,
-    InvalidKeyValuePair,
-    InvalidBasicString,
-    InvalidMultiLineBasicString,
-    InvalidCommentCharacter,
-    InvalidUnquotedKey,
-    KeyWithNoValue,
-    MissingValueForKey,
-    MissingValue,
-    MissingAssignment,
-    MissingCommaInArray,
-    MissingCommaBetweenPairs,
-    MissingOpeningQuote,
-    MissingTableOpen,
-    MissingArrayOpening,
-    MissingInlineTableOpening,
-    MissingInlineTableKey,
-    MissingEscapedValue,
-    ExtraEquals,
-    ExtraCommaInArray,
-    ExtraCommaInInlineTable,
-    ExtraAssignment,
-    StringsMustBeQuoted,
-    UnclosedArray,
-    UnclosedArrayTable,
-    UnclosedInlineTable,
-    UnclosedTable,
-    UnexpectedContent,
-    UnexpectedBeforeNewline,
-    UnexpectedKeyOrValue,
-    UnexpectedLeadingZero,
-    UnexpectedSign,
-    UnexpectedEqualsInArray,
-    UnderscoreBetweenDigits,
-    EmptyUnquotedKey,
-    RedundantSign,
-    DuplicateKey,
-    TooDeep,
-    CarriageReturn,
-    SignedRadix,
-    MultiLineBasicKey,
-    MultiLineLiteralKey,
-    MissingCommentStart,
-    RadixLowercase,
-    RedundantPrefix,
-    FewUnicodeDigits,
-    IntegerOverflow,
-    InvalidBinary,
-    InvalidOctal,
-    InvalidHex,
-    InvalidMantissa,
-    InvalidFraction,
-    InvalidExponent,
-    InvalidLiteralString,
-    InvalidMultiLineLiteralString,
-    InvalidDatetime,
-    WantedStringOrTable,
+listed! {
+    /// A description of a syntax error the TOML reader gives.
+    SyntaxWhat, "Every description.", syntax_text, "The TOML reader's words for `w`.",
+    InvalidFloat => "invalid float",
+    InvalidNumber => "invalid number",
+    InvalidInteger => "invalid integer number",
+    InvalidString => "invalid string",
+    InvalidBoolean => "invalid boolean",
+    InvalidDateTime => "invalid date-time",
+    InvalidKey => "invalid key",
+    InvalidTable => "invalid table",
+    InvalidValue => "invalid value",
+    InvalidInlineTableElement => "invalid inline table element",
+    InvalidKeyValuePair => "invalid key-value pair",
+    InvalidBasicString => "invalid basic string",
+    InvalidMultiLineBasicString => "invalid multi-line basic string",
+    InvalidCommentCharacter => "invalid comment character",
+    InvalidUnquotedKey => "invalid unquoted key",
+    KeyWithNoValue => "key with no value",
+    MissingValueForKey => "missing value for key",
+    MissingValue => "missing value",
+    MissingAssignment => "missing assignment between key-value pairs",
+    MissingCommaInArray => "missing comma between array elements",
+    MissingCommaBetweenPairs => "missing comma between key-value pairs",
+    MissingOpeningQuote => "missing opening quote",
+    MissingTableOpen => "missing table open",
+    MissingArrayOpening => "missing array opening",
+    MissingInlineTableOpening => "missing inline table opening",
+    MissingInlineTableKey => "missing key for inline table element",
+    MissingEscapedValue => "missing escaped value",
+    ExtraEquals => "extra `=`",
+    ExtraCommaInArray => "extra comma in array",
+    ExtraCommaInInlineTable => "extra comma in inline table",
+    ExtraAssignment => "extra assignment between key-value pairs",
+    StringsMustBeQuoted => "string values must be quoted",
+    UnclosedArray => "unclosed array",
+    UnclosedArrayTable => "unclosed array table",
+    UnclosedInlineTable => "unclosed inline table",
+    UnclosedTable => "unclosed table",
+    UnexpectedContent => "unexpected content",
+    UnexpectedBeforeNewline => "unexpected content between comment and newline",
+    UnexpectedKeyOrValue => "unexpected key or value",
+    UnexpectedLeadingZero => "unexpected leading zero",
+    UnexpectedSign => "unexpected sign",
+    UnexpectedEqualsInArray => "unexpected `=` in array",
+    UnderscoreBetweenDigits => "`_` may only go between digits",
+    EmptyUnquotedKey => "unquoted keys cannot be empty",
+    RedundantSign => "redundant numeric sign",
+    DuplicateKey => "duplicate key",
+    TooDeep => "cannot recurse further; max recursion depth met",
+    CarriageReturn => "carriage return must be followed by newline",
+    SignedRadix => "integers with a radix cannot be signed",
+    MultiLineBasicKey => "keys cannot be multi-line basic strings",
+    MultiLineLiteralKey => "keys cannot be multi-line literal strings",
+    MissingCommentStart => "missing comment start",
+    RadixLowercase => "radix must be lowercase",
+    RedundantPrefix => "redundant integer number prefix",
+    FewUnicodeDigits => "too few unicode value digits",
+    IntegerOverflow => "integer number overflowed",
+    InvalidBinary => "invalid binary number",
+    InvalidOctal => "invalid octal number",
+    InvalidHex => "invalid hexadecimal number",
+    InvalidMantissa => "invalid mantissa",
+    InvalidFraction => "invalid fraction",
+    InvalidExponent => "invalid exponent",
+    InvalidLiteralString => "invalid literal string",
+    InvalidMultiLineLiteralString => "invalid multi-line literal string",
+    InvalidDatetime => "invalid datetime",
+    WantedStringOrTable => "wanted string or table",
 }
 
-impl SyntaxWhat {
-    /// Every description.
-    pub const ALL: [SyntaxWhat; 66] = {
-        use SyntaxWhat::*;
-        [
-            InvalidFloat,
-            InvalidNumber,
-            InvalidInteger,
-            InvalidString,
-            InvalidBoolean,
-            InvalidDateTime,
-            InvalidKey,
-            InvalidTable,
-            InvalidValue,
-            InvalidInlineTableElement,
-            InvalidKeyValuePair,
-            InvalidBasicString,
-            InvalidMultiLineBasicString,
-            InvalidCommentCharacter,
-            InvalidUnquotedKey,
-            KeyWithNoValue,
-            MissingValueForKey,
-            MissingValue,
-            MissingAssignment,
-            MissingCommaInArray,
-            MissingCommaBetweenPairs,
-            MissingOpeningQuote,
-            MissingTableOpen,
-            MissingArrayOpening,
-            MissingInlineTableOpening,
-            MissingInlineTableKey,
-            MissingEscapedValue,
-            ExtraEquals,
-            ExtraCommaInArray,
-            ExtraCommaInInlineTable,
-            ExtraAssignment,
-            StringsMustBeQuoted,
-            UnclosedArray,
-            UnclosedArrayTable,
-            UnclosedInlineTable,
-            UnclosedTable,
-            UnexpectedContent,
-            UnexpectedBeforeNewline,
-            UnexpectedKeyOrValue,
-            UnexpectedLeadingZero,
-            UnexpectedSign,
-            UnexpectedEqualsInArray,
-            UnderscoreBetweenDigits,
-            EmptyUnquotedKey,
-            RedundantSign,
-            DuplicateKey,
-            TooDeep,
-            CarriageReturn,
-            SignedRadix,
-            MultiLineBasicKey,
-            MultiLineLiteralKey,
-            MissingCommentStart,
-            RadixLowercase,
-            RedundantPrefix,
-            FewUnicodeDigits,
-            IntegerOverflow,
-            InvalidBinary,
-            InvalidOctal,
-            InvalidHex,
-            InvalidMantissa,
-            InvalidFraction,
-            InvalidExponent,
-            InvalidLiteralString,
-            InvalidMultiLineLiteralString,
-            InvalidDatetime,
-            WantedStringOrTable,
-        ]
-    };
-}
-
-/// The TOML reader's words for `w`.
-pub fn syntax_text(w: SyntaxWhat) -> &'static str {
-    use SyntaxWhat::*;
-    match w {
-        InvalidFloat => "invalid float",
-        InvalidNumber => "invalid number",
-        InvalidInteger => "invalid integer number",
-        InvalidString => "invalid string",
-        InvalidBoolean => "invalid boolean",
-        InvalidDateTime => "invalid date-time",
-        InvalidKey => "invalid key",
-        InvalidTable => "invalid table",
-        InvalidValue => "invalid value",
-        InvalidInlineTableElement => "invalid inline table element",
-        InvalidKeyValuePair => "invalid key-value pair",
-        InvalidBasicString => "invalid basic string",
-        InvalidMultiLineBasicString => "invalid multi-line basic string",
-        InvalidCommentCharacter => "invalid comment character",
-        InvalidUnquotedKey => "invalid unquoted key",
-        KeyWithNoValue => "key with no value",
-        MissingValueForKey => "missing value for key",
-        MissingValue => "missing value",
-        MissingAssignment => "missing assignment between key-value pairs",
-        MissingCommaInArray => "missing comma between array elements",
-        MissingCommaBetweenPairs => "missing comma between key-value pairs",
-        MissingOpeningQuote => "missing opening quote",
-        MissingTableOpen => "missing table open",
-        MissingArrayOpening => "missing array opening",
-        MissingInlineTableOpening => "missing inline table opening",
-        MissingInlineTableKey => "missing key for inline table element",
-        MissingEscapedValue => "missing escaped value",
-        ExtraEquals => "extra `=`",
-        ExtraCommaInArray => "extra comma in array",
-        ExtraCommaInInlineTable => "extra comma in inline table",
-        ExtraAssignment => "extra assignment between key-value pairs",
-        StringsMustBeQuoted => "string values must be quoted",
-        UnclosedArray => "unclosed array",
-        UnclosedArrayTable => "unclosed array table",
-        UnclosedInlineTable => "unclosed inline table",
-        UnclosedTable => "unclosed table",
-        UnexpectedContent => "unexpected content",
-        UnexpectedBeforeNewline => "unexpected content between comment and newline",
-        UnexpectedKeyOrValue => "unexpected key or value",
-        UnexpectedLeadingZero => "unexpected leading zero",
-        UnexpectedSign => "unexpected sign",
-        UnexpectedEqualsInArray => "unexpected `=` in array",
-        UnderscoreBetweenDigits => "`_` may only go between digits",
-        EmptyUnquotedKey => "unquoted keys cannot be empty",
-        RedundantSign => "redundant numeric sign",
-        DuplicateKey => "duplicate key",
-        TooDeep => "cannot recurse further; max recursion depth met",
-        CarriageReturn => "carriage return must be followed by newline",
-        SignedRadix => "integers with a radix cannot be signed",
-        MultiLineBasicKey => "keys cannot be multi-line basic strings",
-        MultiLineLiteralKey => "keys cannot be multi-line literal strings",
-        MissingCommentStart => "missing comment start",
-        RadixLowercase => "radix must be lowercase",
-        RedundantPrefix => "redundant integer number prefix",
-        FewUnicodeDigits => "too few unicode value digits",
-        IntegerOverflow => "integer number overflowed",
-        InvalidBinary => "invalid binary number",
-        InvalidOctal => "invalid octal number",
-        InvalidHex => "invalid hexadecimal number",
-        InvalidMantissa => "invalid mantissa",
-        InvalidFraction => "invalid fraction",
-        InvalidExponent => "invalid exponent",
-        InvalidLiteralString => "invalid literal string",
-        InvalidMultiLineLiteralString => "invalid multi-line literal string",
-        InvalidDatetime => "invalid datetime",
-        WantedStringOrTable => "wanted string or table",
-    }
-}
-
-/// A kind of thing the TOML reader expected (a literal is not one: it is
-/// written as it is).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ExpectWord {
-    Digits,
-    Letters,
-    Numbers,
-    Value,
-    Key,
-    Characters,
-    PrintableCharacters,
-    BasicString,
-    LiteralString,
-    MultiLineBasicString,
-    UnicodeHex,
-    NonDoubleQuoteVisible,
-    NonSingleQuote,
-    NonSingleQuoteVisible,
-    Newline,
-}
-
-impl ExpectWord {
-    /// Every kind.
-    pub const ALL: [ExpectWord; 15] = [
-        ExpectWord::Digits,
-        ExpectWord::Letters,
-        ExpectWord::Numbers,
-        ExpectWord::Value,
-        ExpectWord::Key,
-        ExpectWord::Characters,
-        ExpectWord::PrintableCharacters,
-        ExpectWord::BasicString,
-        ExpectWord::LiteralString,
-        ExpectWord::MultiLineBasicString,
-        ExpectWord::UnicodeHex,
-        ExpectWord::NonDoubleQuoteVisible,
-        ExpectWord::NonSingleQuote,
-        ExpectWord::NonSingleQuoteVisible,
-        ExpectWord::Newline,
-    ];
-}
-
-/// The TOML reader's words for `w`.
-pub fn expect_text(w: ExpectWord) -> &'static str {
-    match w {
-        ExpectWord::Digits => "digits",
-        ExpectWord::Letters => "letters",
-        ExpectWord::Numbers => "numbers",
-        ExpectWord::Value => "value",
-        ExpectWord::Key => "key",
-        ExpectWord::Characters => "characters",
-        ExpectWord::PrintableCharacters => "printable characters",
-        ExpectWord::BasicString => "basic string",
-        ExpectWord::LiteralString => "literal string",
-        ExpectWord::MultiLineBasicString => "multi-line basic string",
-        ExpectWord::UnicodeHex => "unicode hexadecimal value",
-        ExpectWord::NonDoubleQuoteVisible => "non-double-quote visible characters",
-        ExpectWord::NonSingleQuote => "non-single-quote characters",
-        ExpectWord::NonSingleQuoteVisible => "non-single-quote visible characters",
-        ExpectWord::Newline => "newline",
-    }
+listed! {
+    /// A kind of thing the TOML reader expected (a literal is not one: it is
+    /// written as it is).
+    ExpectWord, "Every kind.", expect_text, "The TOML reader's words for `w`.",
+    Digits => "digits",
+    Letters => "letters",
+    Numbers => "numbers",
+    Value => "value",
+    Key => "key",
+    Characters => "characters",
+    PrintableCharacters => "printable characters",
+    BasicString => "basic string",
+    LiteralString => "literal string",
+    MultiLineBasicString => "multi-line basic string",
+    UnicodeHex => "unicode hexadecimal value",
+    NonDoubleQuoteVisible => "non-double-quote visible characters",
+    NonSingleQuote => "non-single-quote characters",
+    NonSingleQuoteVisible => "non-single-quote visible characters",
+    Newline => "newline",
 }
 
 /// Why a flag's value parser refused a value (Rust's number parsing,
@@ -474,36 +310,14 @@ pub enum ValueWhy {
     AsWritten(String),
 }
 
-/// A reason Rust's number parsing gives.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ParseWhy {
-    InvalidDigit,
-    Empty,
-    TooLarge,
-    TooSmall,
-    InvalidFloat,
-}
-
-impl ParseWhy {
-    /// Every reason.
-    pub const ALL: [ParseWhy; 5] = [
-        ParseWhy::InvalidDigit,
-        ParseWhy::Empty,
-        ParseWhy::TooLarge,
-        ParseWhy::TooSmall,
-        ParseWhy::InvalidFloat,
-    ];
-}
-
-/// Rust's words for `w`.
-pub fn parse_text(w: ParseWhy) -> &'static str {
-    match w {
-        ParseWhy::InvalidDigit => "invalid digit found in string",
-        ParseWhy::Empty => "cannot parse integer from empty string",
-        ParseWhy::TooLarge => "number too large to fit in target type",
-        ParseWhy::TooSmall => "number too small to fit in target type",
-        ParseWhy::InvalidFloat => "invalid float literal",
-    }
+listed! {
+    /// A reason Rust's number parsing gives.
+    ParseWhy, "Every reason.", parse_text, "Rust's words for `w`.",
+    InvalidDigit => "invalid digit found in string",
+    Empty => "cannot parse integer from empty string",
+    TooLarge => "number too large to fit in target type",
+    TooSmall => "number too small to fit in target type",
+    InvalidFloat => "invalid float literal",
 }
 
 /// A value parser's reason `s` as a [`ValueWhy`].
