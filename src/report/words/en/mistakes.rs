@@ -6,9 +6,7 @@ use crate::tutor::diagnose::Code;
 /// The English description of a mistake.
 pub(super) fn mistake(c: Code) -> &'static str {
     match c {
-        Code::CrossOrder => {
-            "u = n × Vup instead of Vup × n (u, and with it v = n × u, flip sign)"
-        }
+        Code::CrossOrder => "u = n × Vup instead of Vup × n (u, and with it v = n × u, flip sign)",
         Code::NReversed => {
             "n computed from Pr − Pe instead of Pe − Pr (the camera looks the wrong way)"
         }
@@ -18,21 +16,15 @@ pub(super) fn mistake(c: Code) -> &'static str {
         Code::UNotNormalized => {
             "u = Vup × n not divided by |Vup × n| (v = n × u then has the same length)"
         }
-        Code::FovyNotHalved => {
-            "tan(fovy) used instead of tan(fovy/2) for the window"
-        }
-        Code::DegreesAsRadians => {
-            "the angle in degrees given to tan as if it were radians"
-        }
+        Code::FovyNotHalved => "tan(fovy) used instead of tan(fovy/2) for the window",
+        Code::DegreesAsRadians => "the angle in degrees given to tan as if it were radians",
         Code::HeightIsHalfExtent => {
             "the half extent near·tan(fovy/2) (the text's h) given as the window height (and aspect·h as the width)"
         }
         Code::HeightAsHalfExtent => {
             "near·tan(fovy/2) taken as the full height, so the window edges are at half the right distance"
         }
-        Code::DSign => {
-            "the wrong sign of d (the projection plane z = +near instead of z = −near)"
-        }
+        Code::DSign => "the wrong sign of d (the projection plane z = +near instead of z = −near)",
         Code::MatrixTransposed => {
             "the view matrix written transposed (the row-vector convention P·M)"
         }
@@ -42,9 +34,7 @@ pub(super) fn mistake(c: Code) -> &'static str {
         Code::EndpointKept => {
             "an endpoint outside the box kept instead of the intersection that replaces it"
         }
-        Code::ReflectPlusL => {
-            "R computed as 2N(L·N) + L instead of 2N(L·N) − L"
-        }
+        Code::ReflectPlusL => "R computed as 2N(L·N) + L instead of 2N(L·N) − L",
         Code::SpecularNoMax => {
             "the specular term without max(·, 0): a negative cos β raised to the power n"
         }
