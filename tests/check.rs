@@ -3,6 +3,7 @@
 
 mod common;
 use common::*;
+use grafika::tutor::diagnose::Code;
 use serde_json::Value;
 use std::path::PathBuf;
 
@@ -487,6 +488,18 @@ fn a_one_figure_answer_is_not_explained_by_a_mistake() {
     let one = mark("-6");
     assert_eq!(one["verdict"], "wrong", "{one}");
     assert!(codes(&one).is_empty(), "{one}");
+}
+
+#[test]
+fn the_spec_lists_every_mistake_code_in_the_catalogs_order() {
+    // docs/spec.md §5 names the codes a diagnosis can give: every one the
+    // catalog has, spelled as the JSON and CSV write it.
+    let spec = std::fs::read_to_string(root().join("docs/spec.md")).unwrap();
+    let (_, rest) = spec.split_once("The codes: ").unwrap();
+    let (list, _) = rest.split_once(" (the value the source printed").unwrap();
+    let listed: Vec<&str> = list.split('`').skip(1).step_by(2).collect();
+    let codes: Vec<&str> = Code::all().into_iter().map(Code::as_str).collect();
+    assert_eq!(listed, codes);
 }
 
 #[test]

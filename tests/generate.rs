@@ -171,7 +171,7 @@ fn a_planted_mistake_is_caught_and_named() {
                             g.body
                         );
                     }
-                    planted.insert(m.code);
+                    planted.insert(m.code.as_str());
                 }
             }
         }

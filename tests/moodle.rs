@@ -14,10 +14,11 @@ use grafika::msg::Msg;
 use grafika::num::expr::parse_expr;
 use grafika::num::Real;
 use grafika::report::lang::Lang;
+use grafika::report::mistakes::mistake_text;
 use grafika::report::moodle::{moodle_xml, Decimal, Written};
 use grafika::report::Style;
 use grafika::tutor::check::default_keys;
-use grafika::tutor::diagnose::CATALOG;
+use grafika::tutor::diagnose::{find, Code, CATALOG};
 use grafika::tutor::generate::quiz::Quiz;
 use grafika::tutor::generate::{Generated, Topic};
 use grafika::tutor::solution::lookup;
@@ -223,7 +224,7 @@ fn the_camera_example_has_the_keys_tolerances_and_mistakes_derived_by_hand() {
         assert_eq!(num_tol(&b.alts[0].answer), (x, t), "{b:?}");
     }
     let wrong = |i: usize, x: f64, code: &str| {
-        let m = CATALOG.iter().find(|m| m.code == code).unwrap();
+        let m = CATALOG.iter().find(|m| m.code.as_str() == code).unwrap();
         let alt = blanks[i]
             .alts
             .iter()
@@ -240,7 +241,7 @@ fn the_camera_example_has_the_keys_tolerances_and_mistakes_derived_by_hand() {
             alt.feedback
         );
         assert!(
-            alt.feedback.contains(m.description),
+            alt.feedback.contains(mistake_text(m, Lang::En)),
             "{code}: {}",
             alt.feedback
         );
@@ -449,7 +450,7 @@ fn check_wrong(p: &ProblemIn, key: &str, idx: usize, b: &Blank, w: &Alt) {
     for name in names.split("; or: ") {
         let m = CATALOG
             .iter()
-            .find(|m| m.description == name)
+            .find(|m| mistake_text(m, Lang::En) == name)
             .unwrap_or_else(|| panic!("not in the catalog: {name}"));
         let trees = (m.apply)(p).expect("the mistake applies");
         let given = trees.iter().any(|t| {
@@ -698,13 +699,10 @@ fn an_absurd_mistaken_value_is_left_out() {
     let blanks = cloze_blanks(&qs[1].2);
     let top = &blanks[0];
     assert_eq!(num_tol(&top.alts[0].answer), (1.0, 0.001));
-    let fovy = CATALOG
-        .iter()
-        .find(|m| m.code == "fovy_not_halved")
-        .unwrap();
+    let fovy = find(Code::FovyNotHalved).unwrap();
     for b in &blanks {
         for a in &b.alts[1..] {
-            assert!(!a.feedback.contains(fovy.description), "{a:?}");
+            assert!(!a.feedback.contains(mistake_text(fovy, Lang::En)), "{a:?}");
             assert!(num_tol(&a.answer).0.abs() < 1e6, "{a:?}");
         }
     }

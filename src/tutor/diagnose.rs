@@ -3,9 +3,12 @@
 //! (`altered`), or with one stage result altered between stages
 //! ([`run::Hooks`](crate::tutor::run::Hooks)), or with one documented change to the result tree —
 //! so that `grafika check` can say which mistake reproduces a wrong answer.
-//! No pipeline math is repeated here.
+//! No pipeline math is repeated here, and no words: a mistake is said by
+//! its [`Code`] in each language's words (`ReportWords::mistake`).
 //!
-//! Adding a mistake is one entry in [`CATALOG`].
+//! Adding a mistake is a [`Code`] (the compiler then asks for its
+//! spelling, its place in the order and its words) and one entry in
+//! [`CATALOG`] (a test asks for it).
 
 use crate::input::answer;
 use crate::input::fields::{Num, Vec3In};
@@ -23,12 +26,131 @@ use crate::tutor::solve;
 
 pub use crate::tutor::solution::Tree;
 
+/// A mistake of the catalog: what `check` and `practice` name, and what
+/// the words say in each language (`ReportWords::mistake`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Code {
+    /// `cross_order`: u = n × Vup instead of Vup × n.
+    CrossOrder,
+    /// `n_reversed`: n from Pr − Pe instead of Pe − Pr.
+    NReversed,
+    /// `n_not_normalized`: n = Pe − Pr not divided by |Pe − Pr|.
+    NNotNormalized,
+    /// `u_not_normalized`: u = Vup × n not divided by |Vup × n|.
+    UNotNormalized,
+    /// `fovy_not_halved`: tan(fovy) instead of tan(fovy/2).
+    FovyNotHalved,
+    /// `degrees_as_radians`: The angle in degrees given to tan as radians.
+    DegreesAsRadians,
+    /// `height_is_half_extent`: h = near·tan(fovy/2) written as the height.
+    HeightIsHalfExtent,
+    /// `height_as_half_extent`: near·tan(fovy/2) taken as the full height.
+    HeightAsHalfExtent,
+    /// `d_sign`: The projection plane at z = +near instead of z = −near.
+    DSign,
+    /// `matrix_transposed`: The view matrix transposed (P·M).
+    MatrixTransposed,
+    /// `outcode_reversed`: The outcode bits in reverse order.
+    OutcodeReversed,
+    /// `endpoint_kept`: An endpoint outside the box kept instead of its intersection.
+    EndpointKept,
+    /// `reflect_plus_l`: R = 2N(L·N) + L instead of 2N(L·N) − L.
+    ReflectPlusL,
+    /// `specular_no_max`: The specular term without max(·, 0).
+    SpecularNoMax,
+    /// `pixel_y_from_top`: py counted from the top edge, H − py.
+    PixelYFromTop,
+    /// `eye_no_translation`: The eye coordinates (u·P, v·P, n·P), Peye not subtracted.
+    EyeNoTranslation,
+    /// `aspect_inverted`: right = top / aspect instead of aspect·top.
+    AspectInverted,
+    /// `light_not_normalized`: L not divided by |L|.
+    LightNotNormalized,
+    /// `normal_not_normalized`: N not divided by |N|.
+    NormalNotNormalized,
+    /// `copied_misprint`: The value the source printed, wrong by its errata.
+    CopiedMisprint,
+}
+
+impl Code {
+    /// The code's spelling, the only place it is written: stable, as
+    /// autograders count it (JSON, CSV, the class report, docs).
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Code::CrossOrder => "cross_order",
+            Code::NReversed => "n_reversed",
+            Code::NNotNormalized => "n_not_normalized",
+            Code::UNotNormalized => "u_not_normalized",
+            Code::FovyNotHalved => "fovy_not_halved",
+            Code::DegreesAsRadians => "degrees_as_radians",
+            Code::HeightIsHalfExtent => "height_is_half_extent",
+            Code::HeightAsHalfExtent => "height_as_half_extent",
+            Code::DSign => "d_sign",
+            Code::MatrixTransposed => "matrix_transposed",
+            Code::OutcodeReversed => "outcode_reversed",
+            Code::EndpointKept => "endpoint_kept",
+            Code::ReflectPlusL => "reflect_plus_l",
+            Code::SpecularNoMax => "specular_no_max",
+            Code::PixelYFromTop => "pixel_y_from_top",
+            Code::EyeNoTranslation => "eye_no_translation",
+            Code::AspectInverted => "aspect_inverted",
+            Code::LightNotNormalized => "light_not_normalized",
+            Code::NormalNotNormalized => "normal_not_normalized",
+            Code::CopiedMisprint => "copied_misprint",
+        }
+    }
+
+    /// Every code, in the catalog's order.
+    pub fn all() -> Vec<Code> {
+        std::iter::successors(Some(Code::CrossOrder), |c| c.next()).collect()
+    }
+
+    /// The code after this one: an exhaustive match, so a new code is
+    /// listed (and its place in [`CATALOG`] tested) as soon as it compiles.
+    fn next(self) -> Option<Code> {
+        use Code::*;
+        match self {
+            CrossOrder => Some(NReversed),
+            NReversed => Some(NNotNormalized),
+            NNotNormalized => Some(UNotNormalized),
+            UNotNormalized => Some(FovyNotHalved),
+            FovyNotHalved => Some(DegreesAsRadians),
+            DegreesAsRadians => Some(HeightIsHalfExtent),
+            HeightIsHalfExtent => Some(HeightAsHalfExtent),
+            HeightAsHalfExtent => Some(DSign),
+            DSign => Some(MatrixTransposed),
+            MatrixTransposed => Some(OutcodeReversed),
+            OutcodeReversed => Some(EndpointKept),
+            EndpointKept => Some(ReflectPlusL),
+            ReflectPlusL => Some(SpecularNoMax),
+            SpecularNoMax => Some(PixelYFromTop),
+            PixelYFromTop => Some(EyeNoTranslation),
+            EyeNoTranslation => Some(AspectInverted),
+            AspectInverted => Some(LightNotNormalized),
+            LightNotNormalized => Some(NormalNotNormalized),
+            NormalNotNormalized => Some(CopiedMisprint),
+            CopiedMisprint => None,
+        }
+    }
+}
+
+impl std::fmt::Display for Code {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// A code in JSON is its spelling ([`Code::as_str`]).
+impl serde::Serialize for Code {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.as_str())
+    }
+}
+
 /// One known mistake.
 pub struct Mistake {
-    /// A stable code (autograders count it).
-    pub code: &'static str,
-    /// What the student did, in one line.
-    pub description: &'static str,
+    /// Which mistake (its words are the report's, by this code).
+    pub code: Code,
     /// The problem's results computed with this mistake (several variants
     /// when the mistake can be made in more than one place), or None when
     /// the mistake does not apply to the problem.
@@ -44,13 +166,11 @@ impl std::fmt::Debug for Mistake {
 /// Every known mistake.
 pub static CATALOG: &[Mistake] = &[
     Mistake {
-        code: "cross_order",
-        description: "u = n × Vup instead of Vup × n (u, and with it v = n × u, flip sign)",
+        code: Code::CrossOrder,
         apply: |p| altered(p, |q| map_camera(q, |c| c.up = neg3(&c.up))),
     },
     Mistake {
-        code: "n_reversed",
-        description: "n computed from Pr − Pe instead of Pe − Pr (the camera looks the wrong way)",
+        code: Code::NReversed,
         // Pe − (2Pe − Pr) = Pr − Pe: the look-at point reflected through the eye.
         apply: |p| {
             altered(p, |q| {
@@ -70,8 +190,7 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "n_not_normalized",
-        description: "n = Pe − Pr not divided by |Pe − Pr| (v = n × u then has the same length)",
+        code: Code::NNotNormalized,
         apply: |p| {
             hooked_exact(
                 p,
@@ -86,8 +205,7 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "u_not_normalized",
-        description: "u = Vup × n not divided by |Vup × n| (v = n × u then has the same length)",
+        code: Code::UNotNormalized,
         apply: |p| {
             hooked_exact(
                 p,
@@ -103,8 +221,7 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "fovy_not_halved",
-        description: "tan(fovy) used instead of tan(fovy/2) for the window",
+        code: Code::FovyNotHalved,
         // The window scaled by tan(fovy)/tan(fovy/2), not fovy doubled as an
         // input: over 90° the doubled angle is refused, yet the mistake gives
         // a window (top = near·tan(fovy) < 0) a student can write.
@@ -122,8 +239,7 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "degrees_as_radians",
-        description: "the angle in degrees given to tan as if it were radians",
+        code: Code::DegreesAsRadians,
         // As an input this would be an angle of thousands of degrees, which
         // the window rejects; so the window is scaled by the ratio of the tangents.
         apply: |p| {
@@ -148,8 +264,7 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "height_is_half_extent",
-        description: "the half extent near·tan(fovy/2) (the text's h) given as the window height (and aspect·h as the width)",
+        code: Code::HeightIsHalfExtent,
         // Written as the height and width, not used as them: the window's
         // edges and the pixels stay right (the text's own h and W).
         apply: |p| {
@@ -162,8 +277,7 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "height_as_half_extent",
-        description: "near·tan(fovy/2) taken as the full height, so the window edges are at half the right distance",
+        code: Code::HeightAsHalfExtent,
         apply: |p| {
             hooked(
                 p,
@@ -179,8 +293,7 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "d_sign",
-        description: "the wrong sign of d (the projection plane z = +near instead of z = −near)",
+        code: Code::DSign,
         apply: |p| {
             let per = p.perspective.as_ref()?;
             let d = match (&per.d, &per.near) {
@@ -196,8 +309,7 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "matrix_transposed",
-        description: "the view matrix written transposed (the row-vector convention P·M)",
+        code: Code::MatrixTransposed,
         apply: |p| {
             let mut t = solved(p)?;
             let m = find_mut(&mut t, &["view", "matrix"])?;
@@ -218,8 +330,7 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "outcode_reversed",
-        description: "outcode bits written in the wrong order (bit 1 leftmost instead of rightmost)",
+        code: Code::OutcodeReversed,
         // every outcode: the ends' and each intersection's
         apply: |p| {
             fn reverse(kv: &mut [(String, Val)]) {
@@ -237,8 +348,7 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "endpoint_kept",
-        description: "an endpoint outside the box kept instead of the intersection that replaces it",
+        code: Code::EndpointKept,
         apply: |p| {
             let base = solved(p)?;
             let c = p.clip.as_ref()?;
@@ -251,7 +361,11 @@ pub static CATALOG: &[Mistake] = &[
                     e.map(|e| (n.clone(), crate::num::vec::v3(e[0], e[1], e[2])))
                 })
                 .collect::<Option<_>>()?;
-            let end = |r| solve::point_ref("clip", r, &points).ok().map(|q| Val::vec3(&q));
+            let end = |r| {
+                solve::point_ref("clip", r, &points)
+                    .ok()
+                    .map(|q| Val::vec3(&q))
+            };
             let ends: Vec<(Val, Val)> = c
                 .segment
                 .iter()
@@ -270,7 +384,8 @@ pub static CATALOG: &[Mistake] = &[
                             for (k, v) in kv.iter_mut() {
                                 if let (true, Val::List(pts)) = (k == "segment", &mut *v) {
                                     if pts.len() == 2 {
-                                        pts[which] = if which == 0 { p0.clone() } else { p1.clone() };
+                                        pts[which] =
+                                            if which == 0 { p0.clone() } else { p1.clone() };
                                     }
                                 }
                             }
@@ -284,8 +399,7 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "reflect_plus_l",
-        description: "R computed as 2N(L·N) + L instead of 2N(L·N) − L",
+        code: Code::ReflectPlusL,
         apply: |p| {
             p.shade.as_ref()?;
             hooked(
@@ -301,8 +415,7 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "specular_no_max",
-        description: "the specular term without max(·, 0): a negative cos β raised to the power n",
+        code: Code::SpecularNoMax,
         apply: |p| {
             p.shade.as_ref()?;
             hooked(
@@ -318,11 +431,13 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "pixel_y_from_top",
-        description: "the pixel's py measured from the top edge (H − py), as an image file counts its rows, instead of from the bottom",
+        code: Code::PixelYFromTop,
         // One documented change to the results: each pixel's py becomes H − py.
         apply: |p| {
-            let h = p.perspective.as_ref()?.viewport.as_ref()?[1].0.eval::<f64>().ok()?;
+            let h = p.perspective.as_ref()?.viewport.as_ref()?[1]
+                .0
+                .eval::<f64>()
+                .ok()?;
             let mut t = solved(p)?;
             let Val::Map(pixels) = find_mut(&mut t, &["viewport", "pixels"])? else {
                 return None;
@@ -338,14 +453,16 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "eye_no_translation",
-        description: "the eye coordinates taken as (u·P, v·P, n·P), Peye not subtracted (the view matrix without its translation, and the projection and pixels that follow)",
+        code: Code::EyeNoTranslation,
         // The same camera axes with the eye at the origin: Pe' = 0 and
         // Pr' = Pr − Pe keep n, u, v, and drop the translation by −Pe.
         apply: |p| {
             let c = p.camera.as_ref()?;
             let look = Vec3In(std::array::from_fn(|k| {
-                Num(Expr::Sub(Box::new(c.look[k].0.clone()), Box::new(c.eye[k].0.clone())))
+                Num(Expr::Sub(
+                    Box::new(c.look[k].0.clone()),
+                    Box::new(c.eye[k].0.clone()),
+                ))
             }));
             let zero = Vec3In(std::array::from_fn(|_| Num(Expr::Lit("0".into()))));
             altered_points(p, |q| {
@@ -357,8 +474,7 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "aspect_inverted",
-        description: "the window's right edge taken as top / aspect instead of aspect·top (the width 2·top/aspect, and the pixels that follow)",
+        code: Code::AspectInverted,
         apply: |p| {
             let aspect = p.perspective.as_ref()?.aspect.as_ref()?.0.clone();
             altered(p, |q| {
@@ -370,18 +486,15 @@ pub static CATALOG: &[Mistake] = &[
         },
     },
     Mistake {
-        code: "light_not_normalized",
-        description: "L not divided by |L|: cos α = L·N with the light vector as given (and R = 2N(L·N) − L, cos β and the terms that follow)",
+        code: Code::LightNotNormalized,
         apply: |p| unnormalized(p, p.shade.as_ref()?.light.as_ref()?, "L"),
     },
     Mistake {
-        code: "normal_not_normalized",
-        description: "N not divided by |N|: cos α = L·N with the normal as given (and R, cos β and the terms that follow)",
+        code: Code::NormalNotNormalized,
         apply: |p| unnormalized(p, p.shade.as_ref()?.normal.as_ref()?, "N"),
     },
     Mistake {
-        code: "copied_misprint",
-        description: "the value the source printed, which its errata say is wrong (see the erratum)",
+        code: Code::CopiedMisprint,
         // One variant per erratum: a student who copies one printed answer
         // has not copied the others, so a right answer to another erratum's
         // key must not rule this one out.
@@ -402,8 +515,8 @@ pub static CATALOG: &[Mistake] = &[
     },
 ];
 
-/// Looks up a mistake by code.
-pub fn find(code: &str) -> Option<&'static Mistake> {
+/// The catalog's entry of a code.
+pub fn find(code: Code) -> Option<&'static Mistake> {
     CATALOG.iter().find(|m| m.code == code)
 }
 
@@ -610,11 +723,30 @@ mod tests {
     use super::*;
 
     #[test]
-    fn codes_are_unique_and_found() {
-        for (i, m) in CATALOG.iter().enumerate() {
-            assert!(!m.code.is_empty() && !m.description.is_empty());
-            assert!(CATALOG[..i].iter().all(|o| o.code != m.code), "{}", m.code);
-            assert_eq!(find(m.code).map(|x| x.code), Some(m.code));
+    fn the_catalog_has_every_code_once_in_order() {
+        let codes: Vec<Code> = CATALOG.iter().map(|m| m.code).collect();
+        assert_eq!(codes, Code::all());
+        for c in Code::all() {
+            assert_eq!(find(c).map(|x| x.code), Some(c));
+        }
+    }
+
+    #[test]
+    fn the_spellings_are_the_snake_case_of_the_names_and_distinct() {
+        // CrossOrder is written cross_order: derived by hand here, from the
+        // Debug name, so a typo in `as_str` shows.
+        let mut seen = std::collections::HashSet::new();
+        for c in Code::all() {
+            let mut snake = String::new();
+            for (i, ch) in format!("{c:?}").chars().enumerate() {
+                if ch.is_ascii_uppercase() && i > 0 {
+                    snake.push('_');
+                }
+                snake.push(ch.to_ascii_lowercase());
+            }
+            assert_eq!(c.as_str(), snake);
+            assert_eq!(c.to_string(), snake);
+            assert!(seen.insert(c.as_str()), "{c}");
         }
     }
 
@@ -627,7 +759,7 @@ mod tests {
             "t",
         )
         .unwrap();
-        let m = find("fovy_not_halved").unwrap();
+        let m = find(Code::FovyNotHalved).unwrap();
         let t = &(m.apply)(&p).unwrap()[0];
         let Some(Val::Num(top)) = lookup(t, "window.top") else {
             panic!()
@@ -645,7 +777,7 @@ mod tests {
         };
         assert!((top.value + 3f64.sqrt()).abs() < 1e-12, "{}", top.value);
         // degrees as radians: tan(30 rad) = −6.405331196646276
-        let m = find("degrees_as_radians").unwrap();
+        let m = find(Code::DegreesAsRadians).unwrap();
         let t = &(m.apply)(&p).unwrap()[0];
         let Some(Val::Num(top)) = lookup(t, "window.top") else {
             panic!()

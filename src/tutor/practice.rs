@@ -24,7 +24,7 @@ use crate::input::problem::ProblemIn;
 use crate::msg::{Msg, Said};
 use crate::stages::trace::{Name, Step, Val};
 use crate::tutor::check::{agrees, Marker, Settings, Verdict, FOLLOW_THROUGH};
-use crate::tutor::diagnose::Mistake;
+use crate::tutor::diagnose::{Code, Mistake};
 use crate::tutor::generate::{Difficulty, Topic};
 use crate::tutor::key::{Field, Key, Part, Value};
 use crate::tutor::solution::lookup;
@@ -534,7 +534,7 @@ impl<'a> Session<'a> {
             .filter_map(|o| Some((o.key.as_str(), o.read.as_ref()?)))
             .collect();
         out.mistakes = m.fitting(&item.key, &read, &j.mistakes, &agreed);
-        if out.mistakes.iter().any(|x| x.code == "copied_misprint") {
+        if out.mistakes.iter().any(|x| x.code == Code::CopiedMisprint) {
             out.why = m.erratum(&item.key);
         }
         out

@@ -174,7 +174,7 @@ fn explaining<'a>(s: &'a Stats, key: &str) -> Vec<&'a str> {
     s.mistakes
         .iter()
         .filter(|m| m.keys.iter().any(|k| k == key))
-        .map(|m| m.mistake.code)
+        .map(|m| m.mistake.code.as_str())
         .collect()
 }
 

@@ -12,7 +12,7 @@ use crate::report::lang::NumStyle;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
-use crate::tutor::diagnose::Mistake;
+use crate::tutor::diagnose::Code;
 use crate::tutor::practice::Summary;
 
 /// The words of the report writers' own headings, columns and notes.
@@ -40,7 +40,7 @@ pub trait ReportWords {
     /// A word of `grafika bench`'s table.
     fn bench(&self, w: BenchWord) -> &'static str;
     /// What the student did, by a mistake of the catalog.
-    fn mistake(&self, m: &Mistake) -> &'static str;
+    fn mistake(&self, c: Code) -> &'static str;
     /// A word of `grafika practice`.
     fn practice(&self, w: &PracticeWord) -> String;
     /// A practice session's summary: the points, the counts, the second

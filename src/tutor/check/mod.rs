@@ -39,7 +39,7 @@ use crate::error::Result;
 use crate::input::answer::Read;
 use crate::input::problem::ProblemIn;
 use crate::stages::trace::Val;
-use crate::tutor::diagnose::Mistake;
+use crate::tutor::diagnose::{Code, Mistake};
 
 pub use crate::tutor::solution::Tree;
 
@@ -124,7 +124,7 @@ pub struct Marked {
     /// A short note: how it was judged, or what was expected.
     pub note: crate::msg::Msg,
     /// Codes of the mistakes that reproduce this (wrong) answer.
-    pub diagnosis: Vec<&'static str>,
+    pub diagnosis: Vec<Code>,
     /// Why the source's printed answer is wrong (its `[[errata]]`), when
     /// checking the source's own answers, or when the answer is the
     /// source's misprint (`copied_misprint`).

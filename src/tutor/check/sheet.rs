@@ -8,6 +8,7 @@ use super::marker::{agrees, Marker};
 use super::{Diagnosis, Marked, Marking, Verdict, FOLLOW_THROUGH};
 use crate::input::answer::Read;
 use crate::msg::Msg;
+use crate::tutor::diagnose::Code;
 use crate::tutor::solution::lookup;
 
 impl Marker {
@@ -53,7 +54,7 @@ impl Marker {
             let mut mistakes = j.mistakes;
             if from_text {
                 // the source's own answers: that it printed them is no diagnosis
-                mistakes.retain(|m| m.code != "copied_misprint");
+                mistakes.retain(|m| m.code != Code::CopiedMisprint);
             }
             marked.push(Marked {
                 key: key.clone(),
@@ -73,7 +74,7 @@ impl Marker {
         }
         let diagnoses = self.diagnose(&mut marked);
         for m in &mut marked {
-            let misprint = m.diagnosis.contains(&"copied_misprint");
+            let misprint = m.diagnosis.contains(&Code::CopiedMisprint);
             if (from_text && m.verdict == Verdict::Wrong) || misprint {
                 m.why = self.erratum(&m.key);
             }
@@ -143,7 +144,7 @@ impl Marker {
             let candidates: Vec<_> = m
                 .diagnosis
                 .iter()
-                .filter_map(|c| crate::tutor::diagnose::find(c))
+                .filter_map(|c| crate::tutor::diagnose::find(*c))
                 .collect();
             let fits = self.fitting(&m.key, read, &candidates, &agreed);
             m.diagnosis = fits.iter().map(|f| f.code).collect();

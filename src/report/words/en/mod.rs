@@ -5,6 +5,7 @@ mod drawn;
 mod errors;
 mod figure;
 mod keys;
+mod mistakes;
 mod msg;
 mod names;
 mod pixel;

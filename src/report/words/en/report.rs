@@ -15,7 +15,7 @@ use crate::report::words::MsgWords;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
-use crate::tutor::diagnose::Mistake;
+use crate::tutor::diagnose::Code;
 use crate::tutor::practice::Summary;
 
 impl ReportWords for En {
@@ -270,9 +270,8 @@ impl ReportWords for En {
         }
     }
 
-    fn mistake(&self, m: &Mistake) -> &'static str {
-        // the catalog's own words are English
-        m.description
+    fn mistake(&self, c: Code) -> &'static str {
+        super::mistakes::mistake(c)
     }
 
     fn practice(&self, w: &P) -> String {

@@ -15,7 +15,7 @@ use crate::report::words::MsgWords;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
-use crate::tutor::diagnose::Mistake;
+use crate::tutor::diagnose::Code;
 use crate::tutor::practice::Summary;
 
 impl ReportWords for Id {
@@ -266,9 +266,8 @@ impl ReportWords for Id {
         }
     }
 
-    fn mistake(&self, m: &Mistake) -> &'static str {
-        // every code of the catalog has its words (a test in mistakes.rs)
-        super::mistakes::mistake(m.code).unwrap_or(m.description)
+    fn mistake(&self, c: Code) -> &'static str {
+        super::mistakes::mistake(c)
     }
 
     fn practice(&self, w: &P) -> String {
