@@ -282,7 +282,7 @@ impl ReportWords for Id {
                 values,
                 seed: None,
             } => format!("Latihan: {title} ({values} nilai)"),
-            P::HowToAnswer => "Jawab setiap nilai yang ditanyakan. Angka: 0,8, 4/5, sqrt(2)/2; titik: \
+            P::HowToAnswer => "Jawab setiap nilai yang ditanyakan. Angka: 0,8 atau 4/5 atau sqrt(2)/2; titik: \
                  (x, y, z). Dengan koma desimal, pisahkan komponen dengan ; (0,8; 0,6; 0). \
                  Perintah: hint (petunjuk), show (lihat), skip (lewati), back (kembali), \
                  quit (keluar).".into(),
