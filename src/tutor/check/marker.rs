@@ -26,6 +26,7 @@ use crate::num::Real;
 use crate::stages::trace::{Name, Step, Val};
 use crate::tutor::diagnose::{Mistake, CATALOG};
 use crate::tutor::follow::Given;
+use crate::tutor::key::Key;
 use crate::tutor::keys::ordered_keys;
 use crate::tutor::run::Hooks;
 use crate::tutor::solution::lookup;
@@ -255,7 +256,7 @@ impl Marker {
         if givens.is_empty() {
             return None;
         }
-        let look = |k: &str| givens.get(k).cloned();
+        let look = |k: &Key| givens.get(k.to_string().as_str()).cloned();
         let hooks = Hooks {
             given: Some(&look),
             ..Hooks::default()
