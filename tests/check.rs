@@ -1014,3 +1014,31 @@ fn the_texts_answers_go_to_a_csv_and_their_errata_explain_them() {
     assert_eq!(e["field"], "report");
     assert!(!report.exists());
 }
+
+#[test]
+fn a_segments_own_outcodes_carry_to_its_status_and_no_other_segment() {
+    // clip-cases.toml's 6th segment (clip.5): P0 = (1, 1, 1) is inside,
+    // P1 = (1, 1, 5) is behind z = 3, code1 = 100000, so it is clipped. A
+    // student who reads P1 as inside (code1 = 000000) gets AND = 0 and OR = 0:
+    // accepted, right given their own codes. The 5th segment (clip.4) is
+    // given nothing of the kind, so its status stays simply wrong.
+    let f = answers_file(
+        "segment",
+        "clip.5.code0 = \"000000\"\nclip.5.code1 = \"000000\"\nclip.5.status = \"accepted\"\n\
+         clip.4.status = \"accepted\"\n",
+    );
+    let v = json_ok(&[
+        "check",
+        "problems/clip-cases.toml",
+        "--answers",
+        f.to_str().unwrap(),
+        "--follow-through",
+    ]);
+    assert_eq!(answer(&v, "clip.5.code0")["verdict"], "correct");
+    assert_eq!(answer(&v, "clip.5.code1")["verdict"], "wrong");
+    assert_eq!(
+        answer(&v, "clip.5.status")["code"],
+        "correct.follow_through"
+    );
+    assert_eq!(answer(&v, "clip.4.status")["verdict"], "wrong");
+}

@@ -1088,3 +1088,18 @@ fn a_matrix_with_decimal_commas_is_read_as_the_prompt_shows() {
     let after = text.split("[4/19]").nth(1).unwrap_or_default();
     assert!(after.contains("✓ benar"), "{text}");
 }
+
+#[test]
+fn the_half_way_vector_is_asked_as_a_vector_and_the_terms_as_colours() {
+    // H = (L + V)/|L + V| is a direction (x, y, z); the terms and the
+    // colour are (r, g, b). The three are all 3-vectors under `shade.`.
+    let out = grafika()
+        .args(["practice", "problems/shade-blinn.toml"])
+        .write_stdin("skip\n".repeat(12))
+        .output()
+        .expect("runs");
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("H (shade.H)  (x, y, z)"), "{text}");
+    assert!(text.contains("(shade.specular)  (r, g, b)"), "{text}");
+    assert!(text.contains("(shade.L)  (x, y, z)"), "{text}");
+}

@@ -28,6 +28,7 @@ use crate::report::moodle::{
 use crate::report::words;
 use crate::stages::trace::Val;
 use crate::tutor::generate::quiz::{Blank, Question, Quiz, Typed};
+use crate::tutor::key::{Field, Key, Value};
 use std::fmt::Write as _;
 
 /// The whole GIFT file.
@@ -80,14 +81,13 @@ fn figures_note(lang: Lang) -> String {
 /// answer's name (`n` for `view.n`; the whole key where the last name alone
 /// would not say which answer, `view.points.A`), then the component
 /// (`n, component y`; `clip.segment, point 2, component z`).
-pub fn leaf_labels(key: &str, v: &Val, lang: Lang) -> Vec<String> {
-    let name = match key.split('.').collect::<Vec<_>>()[..] {
-        [_, last] => last.to_string(),
-        _ => key.to_string(),
+pub fn leaf_labels(key: &Key, v: &Val, lang: Lang) -> Vec<String> {
+    let (name, colour) = match (key.part, key.segment, &key.value) {
+        (Some(_), None, Value::Field(f)) => {
+            (f.key(), matches!(f, Field::Shading(s) if s.is_colour()))
+        }
+        _ => (key.to_string(), false),
     };
-    let colour = ["ambient", "diffuse", "specular", "color"]
-        .iter()
-        .any(|c| key == format!("shade.{c}"));
     let mut out = Vec::new();
     labels(&name, v, colour, lang, &mut out);
     out
@@ -189,6 +189,7 @@ mod tests {
 
     #[test]
     fn leaves_are_named_as_the_steps_name_them() {
+        let key = |s: &str| s.parse::<Key>().expect("a key");
         let num = |x: f64| {
             Val::Num(crate::num::Shown {
                 value: x,
@@ -197,18 +198,22 @@ mod tests {
             })
         };
         let v3 = Val::List(vec![num(0.0), num(1.0), num(0.0)]);
-        let id = leaf_labels("view.n", &v3, Lang::Id);
+        let id = leaf_labels(&key("view.n"), &v3, Lang::Id);
         assert_eq!(id, ["n, komponen x", "n, komponen y", "n, komponen z"]);
-        let c = leaf_labels("shade.color", &v3, Lang::En);
+        let c = leaf_labels(&key("shade.color"), &v3, Lang::En);
         assert_eq!(c[2], "color, component b");
-        let p = leaf_labels("view.points.A", &v3, Lang::En);
+        let u = leaf_labels(&key("shade.unclamped"), &v3, Lang::En);
+        assert_eq!(u[0], "unclamped, component r");
+        let clipped = leaf_labels(&key("clip.1.segment"), &v3, Lang::En);
+        assert_eq!(clipped[0], "clip.1.segment, component x");
+        let p = leaf_labels(&key("view.points.A"), &v3, Lang::En);
         assert_eq!(p[0], "view.points.A, component x");
         let seg = Val::List(vec![v3.clone(), v3]);
-        let s = leaf_labels("clip.segment", &seg, Lang::Id);
+        let s = leaf_labels(&key("clip.segment"), &seg, Lang::Id);
         assert_eq!(s.len(), 6);
         assert_eq!(s[5], "segment, titik 2, komponen z");
         assert_eq!(
-            leaf_labels("clip.status", &Val::Text("clipped".into()), Lang::En),
+            leaf_labels(&key("clip.status"), &Val::Text("clipped".into()), Lang::En),
             ["status"]
         );
     }

@@ -97,7 +97,7 @@ fn cloze_question(question: &Question, (i, v): (usize, usize), q: &Quiz, w: &Wri
     for a in &question.asked {
         let mut next = a.blanks.iter().map(|b| cloze_blank(b, lang));
         let shape = shape_html(&a.value, &mut || next.next().unwrap_or_default());
-        let _ = write!(text, "<p>{} = {shape}</p>", esc_text(&a.key));
+        let _ = write!(text, "<p>{} = {shape}</p>", esc_text(&a.key.to_string()));
     }
     let (figures, files) = embedded_figures(&question.problem, w.style);
     format!(
@@ -290,7 +290,7 @@ pub fn solution_html(question: &Question, figures: &str, st: &Style) -> String {
     let mut s = format!("<h3>{}</h3><ul>", w(D::Answers));
     for a in &question.asked {
         // one line flows in the list; a matrix keeps its lines
-        let line = esc(&st.named("", &a.key, &a.value));
+        let line = esc(&st.named("", &a.key.to_string(), &a.value));
         if line.contains('\n') {
             let _ = write!(s, "<li><pre>{line}</pre></li>");
         } else {

@@ -11,6 +11,7 @@ use crate::report::mistakes::mistake_text;
 use crate::report::words;
 use crate::report::{exact_json, fmt_dec, step_json, value_json, Style};
 use crate::stages::trace::{Step, Val};
+use crate::tutor::key::{self, Field, Key};
 use crate::tutor::practice::{Again, Event, Outcome, Plan, Summary};
 use serde_json::{json, Value};
 
@@ -359,11 +360,14 @@ pub fn label(key: &str, lang: Lang) -> String {
 /// How to write the answer: its shape.
 fn shape(key: &str, expected: &Val, lang: Lang) -> String {
     let t = |w: P| words::of(lang).practice(&w);
-    if key.ends_with(".segment") {
-        return t(P::SegmentShape);
-    }
-    if key.ends_with(".status") {
-        return "accepted | rejected | clipped".to_string();
+    let field = match key.parse::<Key>().map(|k| k.value) {
+        Ok(key::Value::Field(f)) => Some(f),
+        _ => None,
+    };
+    match field {
+        Some(Field::Segment) => return t(P::SegmentShape),
+        Some(Field::Status) => return "accepted | rejected | clipped".to_string(),
+        _ => {}
     }
     match expected {
         Val::Text(_) => t(P::BitsShape),
@@ -371,7 +375,7 @@ fn shape(key: &str, expected: &Val, lang: Lang) -> String {
         // brackets: (0,6; 0; −0,8; 0); (…)
         v if v.is_matrix() => t(P::MatrixShape),
         Val::List(items)
-            if key.starts_with("shade.") && items.len() == 3 && !key.ends_with(['L', 'N', 'R']) =>
+            if items.len() == 3 && matches!(field, Some(Field::Shading(s)) if s.is_colour()) =>
         {
             "(r, g, b)".to_string()
         }

@@ -29,10 +29,11 @@ use crate::input::lights::Setup;
 use crate::num::vec::{self, V3};
 use crate::num::Scalar;
 use crate::stages::camera::{self, Basis, Camera};
-use crate::stages::clip::{self, ClipBox, Clipped, Status, PLANES, PLANE_KEYS};
+use crate::stages::clip::{self, ClipBox, Clipped, Status, PLANES};
 use crate::stages::lighting::{LightKind, Part, Rgb, RuleSet, Rules};
 use crate::stages::trace::NoTrace;
 use crate::stages::window::{self, Window};
+use crate::tutor::key::{self, Axis, Cut, Edge, Field, Key, Plane, Shading, Value};
 
 /// A value given in place of one a stage computes: its numbers (a point's
 /// coordinates, a matrix by rows) or its word (an outcode).
@@ -46,7 +47,7 @@ pub enum Given<T> {
 
 /// The values given, by result key (`view.n`, `clip.code0`,
 /// `shade.cos_alpha`); None for a key the stages compute.
-pub type Lookup<'a, T> = dyn Fn(&str) -> Option<Given<T>> + 'a;
+pub type Lookup<'a, T> = dyn Fn(&Key) -> Option<Given<T>> + 'a;
 
 /// Typed access to the values given.
 pub struct Givens<'a, T>(pub &'a Lookup<'a, T>);
@@ -60,32 +61,32 @@ impl<T> Clone for Givens<'_, T> {
 impl<T> Copy for Givens<'_, T> {}
 
 impl<T: Scalar> Givens<'_, T> {
-    fn nums(&self, key: &str) -> Option<Vec<T>> {
+    fn nums(&self, key: &Key) -> Option<Vec<T>> {
         match (self.0)(key)? {
             Given::Nums(v) => Some(v),
             Given::Word(_) => None,
         }
     }
     /// A given number.
-    pub fn num(&self, key: &str) -> Option<T> {
+    pub fn num(&self, key: &Key) -> Option<T> {
         match &self.nums(key)?[..] {
             [x] => Some(x.clone()),
             _ => None,
         }
     }
     /// A given vector.
-    pub fn vec3(&self, key: &str) -> Option<V3<T>> {
+    pub fn vec3(&self, key: &Key) -> Option<V3<T>> {
         match &self.nums(key)?[..] {
             [x, y, z] => Some(vec::v3(x.clone(), y.clone(), z.clone())),
             _ => None,
         }
     }
-    fn rgb(&self, key: &str) -> Option<Rgb<T>> {
+    fn rgb(&self, key: &Key) -> Option<Rgb<T>> {
         let v = self.vec3(key)?;
         Some([v[0].clone(), v[1].clone(), v[2].clone()])
     }
     /// A given outcode.
-    fn code(&self, key: &str) -> Option<u8> {
+    fn code(&self, key: &Key) -> Option<u8> {
         match (self.0)(key)? {
             Given::Word(w) => u8::from_str_radix(&w, 2).ok(),
             Given::Nums(_) => None,
@@ -97,7 +98,8 @@ impl<T: Scalar> Givens<'_, T> {
 /// takes u from the basis of a camera looking along it; v = n × u from the
 /// n and u in use (the student's where given), unless v is given too.
 pub fn basis<T: Scalar>(g: Givens<T>, cam: &Camera<T>, b: &mut Basis<T>) {
-    let [n, u, v] = ["view.n", "view.u", "view.v"].map(|k| g.vec3(k));
+    let axis = |a| g.vec3(&Key::new(key::Part::View, Value::Field(Field::Axis(a))));
+    let [n, u, v] = [Axis::N, Axis::U, Axis::V].map(axis);
     if n.is_none() && u.is_none() && v.is_none() {
         return;
     }
@@ -121,7 +123,13 @@ pub fn basis<T: Scalar>(g: Givens<T>, cam: &Camera<T>, b: &mut Basis<T>) {
 /// The window with the student's edges where they are given: a given top
 /// makes the others by [`window::edges`], and each edge given stands.
 pub fn window<T: Scalar>(g: Givens<T>, aspect: &T, w: &mut Window<T>) {
-    if let Some(top) = g.num("window.top") {
+    let edge = |e| {
+        g.num(&Key::new(
+            key::Part::Window,
+            Value::Field(Field::Edge(e, false)),
+        ))
+    };
+    if let Some(top) = edge(Edge::Top) {
         *w = window::edges(top, aspect);
     }
     let Window {
@@ -132,34 +140,35 @@ pub fn window<T: Scalar>(g: Givens<T>, aspect: &T, w: &mut Window<T>) {
         width,
         ..
     } = w;
-    for (k, slot) in [
-        ("bottom", bottom),
-        ("left", left),
-        ("right", right),
-        ("height", height),
-        ("width", width),
+    for (e, slot) in [
+        (Edge::Bottom, bottom),
+        (Edge::Left, left),
+        (Edge::Right, right),
+        (Edge::Height, height),
+        (Edge::Width, width),
     ] {
-        if let Some(x) = g.num(&format!("window.{k}")) {
+        if let Some(x) = edge(e) {
             *slot = x;
         }
     }
 }
 
 /// One segment's clipping with the student's outcodes, intersection points
-/// and their codes where given (`prefix`: `clip` or `clip.I`): the status
+/// and their codes where given (in `segment` of a clip with several): the status
 /// by the trivial tests of the codes in use (clipped when neither holds),
 /// each given point that lies on its plane with its own outcode, and the
 /// segment kept between them.
 pub fn clipping<T: Scalar>(
     g: Givens<T>,
-    prefix: &str,
+    segment: Option<usize>,
     b: &ClipBox<T>,
     ends: (&V3<T>, &V3<T>),
     r: &mut Clipped<T>,
 ) {
+    let at = |v| Key::new(key::Part::Clip, v).of_segment(segment);
     let codes = (
-        g.code(&format!("{prefix}.code0")),
-        g.code(&format!("{prefix}.code1")),
+        g.code(&at(Value::Field(Field::Code0))),
+        g.code(&at(Value::Field(Field::Code1))),
     );
     if codes.0.is_some() || codes.1.is_some() {
         let (c0, c1) = (codes.0.unwrap_or(r.code0), codes.1.unwrap_or(r.code1));
@@ -170,15 +179,18 @@ pub fn clipping<T: Scalar>(
     }
     let mut moved = false;
     for i in &mut r.intersections {
-        let at = format!("{prefix}.intersections.{}", PLANE_KEYS[i.bit]);
+        let plane = Plane::ALL[i.bit];
         let (axis, is_max, _, _) = PLANES[i.bit];
         let bound = if is_max { &b.max[axis] } else { &b.min[axis] };
-        if let Some(q) = g.vec3(&format!("{at}.point")).filter(|q| q[axis] == *bound) {
+        if let Some(q) = g
+            .vec3(&at(Value::Cut(plane, Cut::Point)))
+            .filter(|q| q[axis] == *bound)
+        {
             i.code = clip::outcode(b, &q);
             i.point = q;
             moved = true;
         }
-        if let Some(c) = g.code(&format!("{at}.code")) {
+        if let Some(c) = g.code(&at(Value::Cut(plane, Cut::Code))) {
             i.code = c;
             moved = true;
         }
@@ -191,10 +203,11 @@ pub fn clipping<T: Scalar>(
 /// The lighting set-up with the student's unit vectors where given: N as
 /// the surface's normal, L as the direction of the one directional light.
 pub fn setup<T: Scalar>(g: Givens<T>, s: &mut Setup<T>) {
-    if let Some(n) = g.vec3("shade.N") {
+    let shade = |x| Key::new(key::Part::Shade, Value::Field(Field::Shading(x)));
+    if let Some(n) = g.vec3(&shade(Shading::N)) {
         s.surface.normal = n;
     }
-    if let (Some(l), [light]) = (g.vec3("shade.L"), &mut s.lights[..]) {
+    if let (Some(l), [light]) = (g.vec3(&shade(Shading::L)), &mut s.lights[..]) {
         if let LightKind::Directional { dir } = &mut light.kind {
             *dir = l;
         }
@@ -218,18 +231,26 @@ impl<T: Scalar> RuleSet<T> for GivenRules<'_, T> {
         self.rules.highlight_base(cos)
     }
     fn given_num(&self, part: Part, computed: T) -> T {
-        self.given
-            .num(&format!("shade.{}", part.key()))
-            .unwrap_or(computed)
+        self.given.num(&shade_key(part)).unwrap_or(computed)
     }
     fn given_vec(&self, part: Part, computed: V3<T>) -> V3<T> {
-        self.given
-            .vec3(&format!("shade.{}", part.key()))
-            .unwrap_or(computed)
+        self.given.vec3(&shade_key(part)).unwrap_or(computed)
     }
     fn given_rgb(&self, part: Part, computed: Rgb<T>) -> Rgb<T> {
-        self.given
-            .rgb(&format!("shade.{}", part.key()))
-            .unwrap_or(computed)
+        self.given.rgb(&shade_key(part)).unwrap_or(computed)
     }
+}
+
+/// The key of a value of the lighting stage: `shade.cos_alpha`, …
+fn shade_key(part: Part) -> Key {
+    let value = match part {
+        Part::CosAlpha => Shading::CosAlpha,
+        Part::R => Shading::R,
+        Part::CosBeta => Shading::CosBeta,
+        Part::Ambient => Shading::Ambient,
+        Part::Diffuse => Shading::Diffuse,
+        Part::Specular => Shading::Specular,
+        Part::Unclamped => Shading::Unclamped,
+    };
+    Key::new(key::Part::Shade, Value::Field(Field::Shading(value)))
 }

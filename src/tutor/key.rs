@@ -196,6 +196,18 @@ impl Shading {
     }
 }
 
+impl Shading {
+    /// Whether the value is a colour (its components r, g, b) rather than
+    /// a vector (x, y, z) or a number.
+    pub fn is_colour(self) -> bool {
+        use Shading::*;
+        match self {
+            Ambient | Diffuse | Specular | Emissive | Unclamped | Color => true,
+            L | N | CosAlpha | R | H | NDotH | CosBeta => false,
+        }
+    }
+}
+
 /// One light's factors (a light from a file).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Factor {

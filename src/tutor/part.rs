@@ -41,7 +41,7 @@ pub fn solve_part<T: Scalar>(part: &PartIn) -> Result<Report> {
             b.validate()?;
             let ends: (V3<T>, V3<T>) = (eval3("from", from)?, eval3("to", to)?);
             let given = Given::clip(&b, (&ends.0, &ends.1), None);
-            let hooks = (&Hooks::default(), "clip");
+            let hooks = (&Hooks::default(), None);
             let r = run::clip_run(&b, (&ends.0, &ends.1), hooks, &mut rec);
             (given, r)
         }

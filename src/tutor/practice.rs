@@ -26,7 +26,7 @@ use crate::stages::trace::{Name, Step, Val};
 use crate::tutor::check::{agrees, Marker, Settings, Verdict, FOLLOW_THROUGH};
 use crate::tutor::diagnose::{Code, Mistake};
 use crate::tutor::generate::{Difficulty, Topic};
-use crate::tutor::key::{Field, Key, Part, Value};
+use crate::tutor::key::{Field, Key, Part, Shading, Value};
 use crate::tutor::solution::lookup;
 
 /// One value the student is asked for.
@@ -81,7 +81,7 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
             Some(Item {
                 key: key.clone(),
                 expected: lookup(&marker.result, key)?.clone(),
-                step: step_for(key, &marker.steps),
+                step: key.parse().ok().and_then(|k| step_for(&k, &marker.steps)),
             })
         })
         .collect();
@@ -96,23 +96,43 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
     })
 }
 
-/// The worked step that computes a key.
-pub(crate) fn step_for(key: &str, steps: &[Step]) -> Option<Step> {
-    let parts: Vec<&str> = key.split('.').collect();
-    let name = match parts[..] {
-        ["view", "matrix"] => Name::math("V"),
-        ["view", "points", p] => Name::Eye(p.to_string()),
-        ["project", "points", p] => Name::Image(p.to_string()),
-        ["viewport", "pixels", p] => Name::Pixel(p.to_string()),
-        ["shade", "cos_alpha"] => Name::math("cos α"),
-        ["shade", "cos_beta"] => Name::math("cos β"),
-        ["shade", "N_dot_H"] => Name::math("N·H"),
-        ["shade", "color"] => Name::Color,
-        ["shade", "unclamped"] => Name::Unclamped,
-        ["clip", ..] => return clip_step(&parts[1..], steps),
-        // the step's name is the key's notation (`n`, `top`, `ambient`, `R`)
-        [_, k] => Name::math(k),
-        _ => return None,
+/// The worked step that computes a key: the step whose result bears the
+/// key's name (the eye point `A'` for `view.points.A`, `cos α` for
+/// `shade.cos_alpha`, …). An exhaustive match, so a new field or value
+/// is given its step name (or none) as soon as it compiles.
+pub(crate) fn step_for(key: &Key, steps: &[Step]) -> Option<Step> {
+    use Shading as S;
+    let name = match (key.part?, &key.value) {
+        (Part::Clip, _) => return clip_step(key.segment.unwrap_or(0), &key.value, steps),
+        (Part::View, Value::Point(p)) => Name::Eye(p.clone()),
+        (Part::Project, Value::Point(p)) => Name::Image(p.clone()),
+        (Part::Viewport, Value::Pixel(p)) => Name::Pixel(p.clone()),
+        (_, Value::Field(f)) => match f {
+            Field::Matrix => Name::math("V"),
+            Field::Shading(S::CosAlpha) => Name::math("cos α"),
+            Field::Shading(S::CosBeta) => Name::math("cos β"),
+            Field::Shading(S::NDotH) => Name::math("N·H"),
+            Field::Shading(S::Color) => Name::Color,
+            Field::Shading(S::Unclamped) => Name::Unclamped,
+            // the step's name is the key's notation (`n`, `top`, `ambient`,
+            // `R`); the far window's edges and the emissive term have no
+            // step of their own, so none is found
+            Field::Axis(_)
+            | Field::Edge(..)
+            | Field::Shading(
+                S::L | S::N | S::R | S::H | S::Ambient | S::Diffuse | S::Specular | S::Emissive,
+            ) => Name::math(f.key()),
+            Field::Points
+            | Field::Pixels
+            | Field::Lights
+            | Field::Code0
+            | Field::Code1
+            | Field::Status
+            | Field::Segment
+            | Field::Intersections => return None,
+        },
+        (_, Value::Point(_) | Value::Pixel(_)) => return None,
+        (_, Value::Plane(_) | Value::Cut(..) | Value::Light(_) | Value::Factor(..)) => return None,
     };
     steps
         .iter()
@@ -120,13 +140,9 @@ pub(crate) fn step_for(key: &str, steps: &[Step]) -> Option<Step> {
         .cloned()
 }
 
-/// The clipping step of a key: steps are split into one run per segment at
-/// each outcode step of P0.
-fn clip_step(rest: &[&str], steps: &[Step]) -> Option<Step> {
-    let (run, rest) = match rest.first()?.parse::<usize>() {
-        Ok(i) => (i, &rest[1..]),
-        Err(_) => (0, rest),
-    };
+/// The clipping step of a key in segment `run`: steps are split into one
+/// run per segment at each outcode step of P0.
+fn clip_step(run: usize, value: &Value, steps: &[Step]) -> Option<Step> {
     let code = Name::math("code");
     let starts = |s: &Step| {
         s.result.iter().any(|(n, _)| *n == code)
@@ -146,27 +162,30 @@ fn clip_step(rest: &[&str], steps: &[Step]) -> Option<Step> {
         .map_or(steps.len(), |k| begin + 1 + k);
     let run = &steps[begin..end];
     let has = |s: &&Step, n: &Name| s.result.iter().any(|(x, _)| x == n);
-    let found = match rest {
-        [end] if end.starts_with("code") => {
-            let point = Name::math(format!("P{}", &end[4..]));
+    let found = match value {
+        Value::Field(f @ (Field::Code0 | Field::Code1)) => {
+            let point = Name::math(if *f == Field::Code0 { "P0" } else { "P1" });
             run.iter()
                 .find(|s| has(s, &code) && s.values.first().is_some_and(|(n, _)| *n == point))
         }
-        ["intersections", _, _] => {
+        Value::Cut(plane, _) => {
             // the intersections are recorded in the order of the result's map
-            let planes = ["left", "right", "bottom", "top", "front", "back"];
             let tried = run.iter().filter(|s| has(s, &Name::math("P(t)")));
-            let wanted = planes.iter().position(|p| *p == rest[1])?;
             tried
                 .clone()
-                .find(|s| matches!(s.title, crate::msg::Msg::Intersection(i, _) if i == wanted))
+                .find(|s| matches!(s.title, Msg::Intersection(i, _) if i == plane.bit()))
                 .or_else(|| tried.clone().next())
         }
-        ["segment"] => run
+        Value::Field(Field::Segment) => run
             .iter()
             .find(|s| has(s, &Name::From) && has(s, &Name::To)),
-        ["status"] => run.iter().find(|s| has(s, &Name::math("code0 AND code1"))),
-        _ => None,
+        Value::Field(Field::Status) => run.iter().find(|s| has(s, &Name::math("code0 AND code1"))),
+        Value::Field(_)
+        | Value::Point(_)
+        | Value::Pixel(_)
+        | Value::Plane(_)
+        | Value::Light(_)
+        | Value::Factor(..) => None,
     };
     found.cloned()
 }

@@ -18,7 +18,7 @@ use crate::stages::projection::{self, Projection};
 use crate::stages::trace::{Recorder, Val};
 use crate::stages::window::{self, Window};
 use crate::tutor::follow;
-use crate::tutor::key::Field;
+use crate::tutor::key::{Field, Key, Part, Value};
 use crate::tutor::keys::{basis_result, clip_checked, clip_result, shade_run, window_result};
 use crate::tutor::solution::Tree;
 use nalgebra::Matrix4;
@@ -96,7 +96,7 @@ pub fn eye_run<T: Scalar>(
         let e = camera::to_eye(b, &cam.pe, n, q, rec)?;
         let given = hooks
             .givens()
-            .and_then(|g| g.vec3(&format!("view.points.{n}")));
+            .and_then(|g| g.vec3(&Key::new(Part::View, Value::Point(n.clone()))));
         eye.push((n.clone(), given.unwrap_or(e)));
     }
     Ok((m, eye))
@@ -132,7 +132,7 @@ pub fn project_run<T: Scalar>(
         let q = projection::project(proj, n, e, rec)?;
         let given = hooks
             .givens()
-            .and_then(|g| g.vec3(&format!("project.points.{n}")));
+            .and_then(|g| g.vec3(&Key::new(Part::Project, Value::Point(n.clone()))));
         out.push((n.clone(), given.unwrap_or(q)));
     }
     Ok(out)
@@ -188,17 +188,17 @@ pub fn pixels<'p, T: Scalar + 'p>(
 }
 
 /// Segment (P0, P1) clipped by outcodes against box `b` (cross-checked by
-/// Liang–Barsky), the clipping under `key` given by `hooks`: its result
-/// keys.
+/// Liang–Barsky), the clipping of `segment` (of a clip with several)
+/// given by `hooks`: its result keys.
 pub fn clip_run<T: Scalar>(
     b: &ClipBox<T>,
     (p0, p1): (&V3<T>, &V3<T>),
-    (hooks, key): (&Hooks<T>, &str),
+    (hooks, segment): (&Hooks<T>, Option<usize>),
     rec: &mut Recorder,
 ) -> Vec<(String, Val)> {
     let mut r = clip_checked(b, p0, p1, rec);
     if let Some(g) = hooks.givens() {
-        follow::clipping(g, key, b, (p0, p1), &mut r);
+        follow::clipping(g, segment, b, (p0, p1), &mut r);
     }
     clip_result(&r)
 }

@@ -14,7 +14,7 @@ use crate::stages::camera::Camera;
 use crate::stages::clip::ClipBox;
 use crate::stages::projection::Projection;
 use crate::stages::trace::{Recorder, Step, Val};
-use crate::tutor::key::{self, Part};
+use crate::tutor::key::{self, Key, Part};
 
 /// A point or vector of the inputs, as the stages took it (f64 of the
 /// precision's value).
@@ -33,6 +33,11 @@ pub fn at<T: Scalar>(x: &T) -> f64 {
 /// Named results, in order (docs/spec.md §3's keys; a part's results
 /// nest under its key in a problem file's).
 pub type Tree = Vec<(String, Val)>;
+
+/// The value of an answer key in the results.
+pub fn value_of<'a>(result: &'a [(String, Val)], key: &Key) -> Option<&'a Val> {
+    lookup(result, &key.to_string())
+}
 
 /// Looks up `a.b.c` (a list index may be a number) in the results.
 pub fn lookup<'a>(result: &'a [(String, Val)], key: &str) -> Option<&'a Val> {

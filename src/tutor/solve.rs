@@ -284,12 +284,7 @@ fn clip_part<T: Scalar>(
         rec.section(Msg::SecLineClip((c.segment.len() > 1).then_some(i + 1)));
         let segment = (c.segment.len() > 1).then_some(i);
         let given = Given::clip(&b, (&p0, &p1), segment);
-        all.push(Val::Map(clip_run(
-            &b,
-            (&p0, &p1),
-            (hooks, &given.key()),
-            rec,
-        )));
+        all.push(Val::Map(clip_run(&b, (&p0, &p1), (hooks, segment), rec)));
         parts.push(given);
     }
     match all.len() {

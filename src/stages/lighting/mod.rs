@@ -524,21 +524,6 @@ pub enum Part {
     Unclamped,
 }
 
-impl Part {
-    /// The result key of the value (`cos_alpha`, `R`, ...).
-    pub fn key(self) -> &'static str {
-        match self {
-            Part::CosAlpha => "cos_alpha",
-            Part::R => "R",
-            Part::CosBeta => "cos_beta",
-            Part::Ambient => "ambient",
-            Part::Diffuse => "diffuse",
-            Part::Specular => "specular",
-            Part::Unclamped => "unclamped",
-        }
-    }
-}
-
 /// The two replaceable rules as a trait: [`Rules`] (functions chosen at run
 /// time, for `diagnose`) or [`TextRules`] (the text's, known at compile
 /// time, so the renderer's per-pixel call inlines them).

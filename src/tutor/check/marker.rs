@@ -26,6 +26,7 @@ use crate::num::Real;
 use crate::stages::trace::{Name, Step, Val};
 use crate::tutor::diagnose::{Mistake, CATALOG};
 use crate::tutor::follow::Given;
+use crate::tutor::key::{Key, Part};
 use crate::tutor::keys::ordered_keys;
 use crate::tutor::run::Hooks;
 use crate::tutor::solution::lookup;
@@ -255,7 +256,7 @@ impl Marker {
         if givens.is_empty() {
             return None;
         }
-        let look = |k: &str| givens.get(k).cloned();
+        let look = |k: &Key| givens.get(k.to_string().as_str()).cloned();
         let hooks = Hooks {
             given: Some(&look),
             ..Hooks::default()
@@ -299,7 +300,10 @@ fn judgement(j: Judged, read: Option<Read>) -> Judgement {
 fn completed(key: &str, read: Read, right: &Val) -> Read {
     match (read, right) {
         (Read::List(mut xy), Val::List(want))
-            if key.starts_with("project.") && xy.len() + 1 == want.len() =>
+            if key
+                .parse::<Key>()
+                .is_ok_and(|k| k.part == Some(Part::Project))
+                && xy.len() + 1 == want.len() =>
         {
             if let Some(Val::Num(zp)) = want.last() {
                 if let Ok(n) = answer::number(zp.exact.as_deref().unwrap_or(&zp.value.to_string()))

@@ -40,6 +40,7 @@ use crate::input::answer::Read;
 use crate::input::problem::ProblemIn;
 use crate::stages::trace::Val;
 use crate::tutor::diagnose::{Code, Mistake};
+use crate::tutor::key::{Field, Key, Node, Part, Value};
 
 pub use crate::tutor::solution::Tree;
 
@@ -186,37 +187,72 @@ impl Marking {
 }
 
 /// The answer keys a problem expects by default: every answer of the parts
-/// it solves, except the view matrix, the far-plane window and the clipping
-/// intersections tried (checked when
-/// given, not required).
+/// it solves, except those [`asked_by_default`] leaves out; the fields of
+/// a clip with several segments are each asked, all of them.
 pub fn default_keys(result: &Tree) -> Vec<String> {
     let mut keys = Vec::new();
-    for (part, v) in result {
-        match (part.as_str(), v) {
-            ("clip", Val::List(items)) => {
+    for (name, v) in result {
+        match (Node::read(name, None), v) {
+            (Some(Node::Part(Part::Clip)), Val::List(items)) => {
                 for (i, it) in items.iter().enumerate() {
                     if let Val::Map(kv) = it {
-                        keys.extend(kv.iter().map(|(k, _)| format!("clip.{i}.{k}")));
+                        keys.extend(fields(Part::Clip, kv).map(|(f, _)| {
+                            Key::new(Part::Clip, Value::Field(f)).of_segment(Some(i))
+                        }));
                     }
                 }
             }
-            (_, Val::Map(kv)) => {
-                for (k, x) in kv {
-                    if k == "matrix" || k == "intersections" || k.starts_with("far_") {
-                        continue;
-                    }
-                    match x {
-                        Val::Map(inner) if k == "points" || k == "pixels" => {
-                            keys.extend(inner.iter().map(|(n, _)| format!("{part}.{k}.{n}")))
-                        }
-                        _ => keys.push(format!("{part}.{k}")),
+            (Some(Node::Part(part)), Val::Map(kv)) => {
+                for (f, x) in fields(part, kv).filter(|(f, _)| asked_by_default(*f)) {
+                    match (f, x) {
+                        (Field::Points, Val::Map(inner)) => keys.extend(
+                            (inner.iter()).map(|(n, _)| Key::new(part, Value::Point(n.clone()))),
+                        ),
+                        (Field::Pixels, Val::Map(inner)) => keys.extend(
+                            (inner.iter()).map(|(n, _)| Key::new(part, Value::Pixel(n.clone()))),
+                        ),
+                        _ => keys.push(Key::new(part, Value::Field(f))),
                     }
                 }
             }
-            _ => keys.push(part.clone()),
+            (Some(Node::Field(f)), _) => keys.push(Key {
+                part: None,
+                segment: None,
+                value: Value::Field(f),
+            }),
+            _ => {}
         }
     }
-    keys
+    keys.iter().map(Key::to_string).collect()
+}
+
+/// The fields of a part's map in a result tree, with their values.
+fn fields(part: Part, kv: &[(String, Val)]) -> impl Iterator<Item = (Field, &Val)> {
+    kv.iter().filter_map(
+        move |(k, x)| match Node::read(k, Some(&Node::Part(part)))? {
+            Node::Field(f) => Some((f, x)),
+            _ => None,
+        },
+    )
+}
+
+/// Whether a part's field is asked by default: the view matrix, the
+/// far-plane window and the clipping intersections tried are checked when
+/// given, not required. An exhaustive match, so a new field is decided.
+fn asked_by_default(f: Field) -> bool {
+    match f {
+        Field::Matrix | Field::Intersections | Field::Edge(_, true) => false,
+        Field::Axis(_)
+        | Field::Points
+        | Field::Pixels
+        | Field::Edge(_, false)
+        | Field::Code0
+        | Field::Code1
+        | Field::Status
+        | Field::Segment
+        | Field::Shading(_)
+        | Field::Lights => true,
+    }
 }
 
 /// The largest answer file read, in bytes (a class's files are a few KB;

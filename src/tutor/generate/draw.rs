@@ -9,7 +9,8 @@ use crate::num::rng::SplitMix64;
 use crate::num::Real;
 use crate::stages::trace::Val;
 use crate::tutor::check::default_keys;
-use crate::tutor::solution::lookup;
+use crate::tutor::key::{Axis, Field, Key, Part, Shading, Value};
+use crate::tutor::solution::{lookup, value_of};
 use crate::tutor::solve;
 use std::collections::{BTreeSet, HashSet};
 use std::fmt::Write as _;
@@ -109,7 +110,12 @@ fn nice_enough(result: &[(String, Val)], keys: &[String], diff: Difficulty) -> b
         let mut ok = true;
         for_each_num(v, &mut |n| match &n.exact {
             Some(e) => radicands.extend(radicands_of(e)),
-            None => ok &= k.starts_with("window.") || k.starts_with("viewport."),
+            None => {
+                ok &= matches!(
+                    k.parse::<Key>().map(|k| k.part),
+                    Ok(Some(Part::Window | Part::Viewport))
+                )
+            }
         });
         if !ok {
             return false;
@@ -150,7 +156,7 @@ fn screen(p: &ProblemIn, r: &[(String, Val)], topic: Topic, status: usize) -> bo
     };
     // Points strictly beyond the near plane (never on the projection plane
     // z' = −near, never behind the eye), and not grazing it.
-    if let Some(Val::Map(pts)) = lookup(r, "view.points") {
+    if let Some(Val::Map(pts)) = value_of(r, &Key::new(Part::View, Value::Field(Field::Points))) {
         let near = p
             .perspective
             .as_ref()
@@ -168,7 +174,9 @@ fn screen(p: &ProblemIn, r: &[(String, Val)], topic: Topic, status: usize) -> bo
     }
     // Projected points inside the window for the pipeline (a clean exam).
     if topic == Topic::Pipeline {
-        if let Some(Val::Map(px)) = lookup(r, "viewport.pixels") {
+        if let Some(Val::Map(px)) =
+            value_of(r, &Key::new(Part::Viewport, Value::Field(Field::Pixels)))
+        {
             let vp: Vec<f64> = p
                 .perspective
                 .as_ref()
@@ -189,20 +197,22 @@ fn screen(p: &ProblemIn, r: &[(String, Val)], topic: Topic, status: usize) -> bo
     }
     // Lighting: the light clearly in front of the surface.
     if topic == Topic::Shade {
-        match lookup(r, "shade.cos_alpha").and_then(num) {
+        match value_of(r, &shade(Shading::CosAlpha)).and_then(num) {
             Some(c) if c > 0.05 => {}
             _ => return false,
         }
     }
     if topic == Topic::Clip {
         let want = ["clipped", "accepted", "rejected"][status % 3];
-        let ok = matches!(lookup(r, "clip.status"), Some(Val::Text(s)) if s == want);
+        let ok = matches!(value_of(r, &Key::new(Part::Clip, Value::Field(Field::Status))), Some(Val::Text(s)) if s == want);
         if !ok {
             return false;
         }
         if want == "clipped" {
             // a real piece, not a single point
-            if let Some(Val::List(seg)) = lookup(r, "clip.segment") {
+            if let Some(Val::List(seg)) =
+                value_of(r, &Key::new(Part::Clip, Value::Field(Field::Segment)))
+            {
                 if seg.first() == seg.get(1) {
                     return false;
                 }
@@ -210,6 +220,17 @@ fn screen(p: &ProblemIn, r: &[(String, Val)], topic: Topic, status: usize) -> bo
         }
     }
     true
+}
+
+/// The key of a value of the lighting: `shade.cos_alpha`, …
+fn shade(x: Shading) -> Key {
+    Key::new(Part::Shade, Value::Field(Field::Shading(x)))
+}
+
+/// A `[check]` table's keys for a TOML file: `["view.n", "view.u"]`.
+fn toml_keys(keys: impl IntoIterator<Item = Key>) -> String {
+    let quoted: Vec<String> = keys.into_iter().map(|k| format!("\"{k}\"")).collect();
+    arr(&quoted)
 }
 
 /// `[a, b, c]` for a TOML file.
@@ -334,7 +355,9 @@ fn camera_problem(topic: Topic, diff: Difficulty, rng: &mut SplitMix64) -> Optio
         t.push('\n');
     }
     if topic == Topic::Basis {
-        t.push_str("[check]\nkeys = [\"view.n\", \"view.u\", \"view.v\"]\n");
+        let axis = |a| Key::new(Part::View, Value::Field(Field::Axis(a)));
+        let keys = toml_keys([Axis::N, Axis::U, Axis::V].map(axis));
+        let _ = writeln!(t, "[check]\nkeys = {keys}");
     }
     Some(Draft {
         title,
@@ -615,22 +638,24 @@ fn shade_draw(diff: Difficulty, rng: &mut SplitMix64) -> Draw {
 fn shade_asked(
     model: &str,
     [ka, kd, ks, sh]: [Number; 4],
-) -> (Vec<(&'static str, Number)>, ShadeAsked, &'static str) {
+) -> (Vec<(&'static str, Number)>, ShadeAsked, String) {
+    use Shading::*;
+    let keys = |v: &[Shading]| toml_keys(v.iter().map(|x| shade(*x)));
     match model {
         "lambert" => (
             vec![("ka", ka), ("kd", kd)],
             ShadeAsked::Lambert,
-            r#"["shade.cos_alpha", "shade.ambient", "shade.diffuse", "shade.color"]"#,
+            keys(&[CosAlpha, Ambient, Diffuse, Color]),
         ),
         "blinn" => (
             vec![("ka", ka), ("kd", kd), ("ks", ks), ("n", sh)],
             ShadeAsked::Blinn,
-            r#"["shade.cos_alpha", "shade.H", "shade.N_dot_H", "shade.ambient", "shade.diffuse", "shade.specular", "shade.color"]"#,
+            keys(&[CosAlpha, H, NDotH, Ambient, Diffuse, Specular, Color]),
         ),
         _ => (
             vec![("ka", ka), ("kd", kd), ("ks", ks), ("n", sh)],
             ShadeAsked::Phong,
-            r#"["shade.cos_alpha", "shade.R", "shade.cos_beta", "shade.ambient", "shade.diffuse", "shade.specular", "shade.color"]"#,
+            keys(&[CosAlpha, R, CosBeta, Ambient, Diffuse, Specular, Color]),
         ),
     }
 }

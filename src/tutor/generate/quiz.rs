@@ -28,6 +28,7 @@ use crate::input::problem::ProblemIn;
 use crate::stages::trace::Val;
 use crate::tutor::check::tolerance;
 use crate::tutor::diagnose::{Mistake, Tree, CATALOG};
+use crate::tutor::key::{Field, Key, Part, Value};
 use crate::tutor::solution::lookup;
 
 /// A mistaken value more than this many times the key's magnitude is left
@@ -76,8 +77,8 @@ impl Typing {
         let any = |f: &dyn Fn(&Asked) -> bool| asked.iter().any(f);
         Typing {
             pixels: any(&|a| a.blanks.iter().any(|b| b.pixel)),
-            outcodes: any(&|a| a.key.starts_with("clip.code")),
-            status: any(&|a| a.key == "clip.status"),
+            outcodes: any(&|a| a.asks(&[Field::Code0, Field::Code1])),
+            status: any(&|a| a.asks(&[Field::Status])),
         }
     }
 }
@@ -164,12 +165,20 @@ pub struct Blank {
 /// blanks, in the order of the value's leaves (depth first).
 #[derive(Clone, Debug)]
 pub struct Asked {
-    /// The answer key, as `grafika check` spells it.
-    pub key: String,
+    /// The answer key (`grafika check` spells it by its `Display`).
+    pub key: Key,
     /// The exact value.
     pub value: Val,
     /// The blanks, one per leaf.
     pub blanks: Vec<Blank>,
+}
+
+impl Asked {
+    /// Whether it asks one of the clip's `fields` (of any segment).
+    fn asks(&self, fields: &[Field]) -> bool {
+        self.key.part == Some(Part::Clip)
+            && matches!(self.key.value, Value::Field(f) if fields.contains(&f))
+    }
 }
 
 /// The blanks of a generated problem with relative tolerance `rel` (> 0),
@@ -182,7 +191,7 @@ pub fn blanks(g: &Generated, rel: f64, figs: u32) -> Vec<Asked> {
             let value = lookup(&g.report.result, key)?.clone();
             let blanks = key_blanks(key, &value, &trees, rel, figs);
             Some(Asked {
-                key: key.clone(),
+                key: key.parse().ok()?,
                 value,
                 blanks,
             })

@@ -78,7 +78,7 @@ fn step_of(key: &str, parts: &[Solved]) -> Option<StepRef> {
         _ => (String::new(), key, 0),
     };
     let steps = &parts.get(i)?.steps;
-    let step = step_for(rest, steps)?;
+    let step = step_for(&rest.parse().ok()?, steps)?;
     let number = steps.iter().position(|s| *s == step)? + 1;
     Some(StepRef {
         part,
