@@ -20,7 +20,7 @@
 //!   intersection) or its code: the clipped segment ([`clip::kept_part`]);
 //! - L or N given: the lighting stage with them; cos α, R, cos β, the terms
 //!   and their sum given: the stage goes on from them
-//!   ([`lighting::RuleSet`]'s `given_*`).
+//!   ([`crate::stages::lighting::RuleSet`]'s `given_*`).
 //!
 //! The problem's own inputs (Pe, Pr, Vup, the points, d, the viewport, the
 //! segment's ends, the lighting constants) are never the student's.

@@ -187,7 +187,7 @@ impl Marking {
 }
 
 /// The answer keys a problem expects by default: every answer of the parts
-/// it solves, except those [`asked_by_default`] leaves out; the fields of
+/// it solves, except those `asked_by_default` leaves out; the fields of
 /// a clip with several segments are each asked, all of them.
 pub fn default_keys(result: &Tree) -> Vec<String> {
     let mut keys = Vec::new();
