@@ -13,19 +13,21 @@ use crate::msg::ErrMsg;
 use crate::report::practice::{event_json, event_text, intro, Look, PROMPT};
 use crate::report::Style;
 use crate::tutor::check;
-use crate::tutor::generate;
+use crate::tutor::generate::{self, Difficulty, Topic};
 use crate::tutor::practice::{self, Event};
 use std::cell::RefCell;
 use std::io::{BufRead, IsTerminal};
 
-/// Runs `grafika practice`, printing as it goes.
-pub fn run(a: &PracticeArgs, json: bool, style: &Style) -> Result<()> {
-    valid_tolerance(a.tolerance)?;
-    let (p, drawn, seed) = match (&a.file, a.topic) {
-        (Some(f), _) if f.as_os_str() == "-" => {
-            return Err(Error::why("file", ErrMsg::StdinHoldsAnswers))
-        }
-        (Some(f), _) => (ProblemIn::read(f)?.localized(style.lang), None, None),
+/// A problem to practise, the topic and difficulty it was drawn at, and
+/// its seed (both `None` for a file).
+type Drawn = (ProblemIn, Option<(Topic, Difficulty)>, Option<u64>);
+
+/// The problem to practise: the file named, or one drawn for `--topic`
+/// (with the topic and difficulty it was drawn at, and its seed).
+fn problem(a: &PracticeArgs, style: &Style) -> Result<Drawn> {
+    match (&a.file, a.topic) {
+        (Some(f), _) if f.as_os_str() == "-" => Err(Error::why("file", ErrMsg::StdinHoldsAnswers)),
+        (Some(f), _) => Ok((ProblemIn::read(f)?.localized(style.lang), None, None)),
         (None, Some(t)) => {
             let seed = a.seed.unwrap_or_else(clock_seed);
             let mut exam = generate::exam(&[t], a.difficulty, 1, seed)?;
@@ -35,10 +37,16 @@ pub fn run(a: &PracticeArgs, json: bool, style: &Style) -> Result<()> {
             let mut p = g.problem;
             p.title = style.w(&g.title);
             p.statement = Some(style.w(&g.statement));
-            (p, Some((t, a.difficulty)), Some(seed))
+            Ok((p, Some((t, a.difficulty)), Some(seed)))
         }
-        (None, None) => return Err(Error::why("file", ErrMsg::GiveProblem)),
-    };
+        (None, None) => Err(Error::why("file", ErrMsg::GiveProblem)),
+    }
+}
+
+/// Runs `grafika practice`, printing as it goes.
+pub fn run(a: &PracticeArgs, json: bool, style: &Style) -> Result<()> {
+    valid_tolerance(a.tolerance)?;
+    let (p, drawn, seed) = problem(a, style)?;
     let settings = check::settings_for(&p, a.tolerance, a.sig_figs);
     let plan = practice::plan(&p, settings, drawn)?;
     let terminal = std::io::stdin().is_terminal();

@@ -882,8 +882,6 @@ fn record_totals<T: Scalar>(
     tr: &mut impl Trace,
 ) {
     let ca = mat.ambient_color.as_ref().unwrap_or(&mat.color);
-    let [sum_a, sum_d, sum_s] = sums;
-    let [wa, wd, ws] = worked;
     let one_note = |on: bool, what: Term| {
         if !on {
             Msg::NoTermInModel(mat.model.name().to_string(), what)
@@ -893,70 +891,75 @@ fn record_totals<T: Scalar>(
             Msg::SummedInRange
         }
     };
-    tr.step(|| {
-        Step::new(
-            Msg::TermStep(Term::Ambient),
-            "ambient = ka · (Ga + Σ Att·Spot·La) · Ca",
-        )
-        .val(Name::math("ka"), Val::num(&mat.ka))
-        .val(Name::math("Ga + Σ Att·Spot·La"), rgb_val(sum_a))
-        .sub(Name::math("Ga + Σ Att·Spot·La"), wa)
-        .val(Name::math("Ca"), rgb_val(ca))
-        .res(Name::math("ambient"), rgb_val(ra))
-        .sub(
-            Name::math("ambient"),
-            Subst::new(
-                product(on.0),
-                vec![Val::num(&mat.ka), rgb_val(sum_a), rgb_val(ca)],
-            ),
-        )
-        .note(one_note(on.0, Term::Ambient))
-    });
-    tr.step(|| {
-        Step::new(
-            Msg::TermStep(Term::Diffuse),
-            "diffuse = kd · Σ Att·Spot·Ld·max(cos α, 0) · Cs",
-        )
-        .val(Name::math("kd"), Val::num(&mat.kd))
-        .val(Name::math("Σ Att·Spot·Ld·max(cos α, 0)"), rgb_val(sum_d))
-        .sub(Name::math("Σ Att·Spot·Ld·max(cos α, 0)"), wd)
-        .val(Name::math("Cs"), rgb_val(&mat.color))
-        .res(Name::math("diffuse"), rgb_val(rd))
-        .sub(
-            Name::math("diffuse"),
-            Subst::new(
-                product(on.1),
-                vec![Val::num(&mat.kd), rgb_val(sum_d), rgb_val(&mat.color)],
-            ),
-        )
-        .note(one_note(on.1, Term::Diffuse))
-    });
-    tr.step(|| {
-        Step::new(
-            Msg::TermStep(Term::Specular),
-            "specular = ks · Σ Att·Spot·Ls·highlight · Cspecular",
-        )
-        .val(Name::math("ks"), Val::num(&mat.ks))
-        .val(Name::math("Σ Att·Spot·Ls·highlight"), rgb_val(sum_s))
-        .sub(Name::math("Σ Att·Spot·Ls·highlight"), ws)
-        .val(Name::math("Cspecular"), rgb_val(&mat.specular))
-        .res(Name::math("specular"), rgb_val(rs))
-        .sub(
-            Name::math("specular"),
-            Subst::new(
-                product(on.2),
-                vec![Val::num(&mat.ks), rgb_val(sum_s), rgb_val(&mat.specular)],
-            ),
-        )
-        .note(if on.2 {
-            one_note(true, Term::Specular)
-        } else if !mat.model.terms().2 {
-            one_note(false, Term::Specular)
-        } else {
-            Msg::SpecularSkipped
-        })
-    });
+    let coefficients = [&mat.ka, &mat.kd, &mat.ks];
+    let colours = [ca, &mat.color, &mat.specular];
+    let results = [ra, rd, rs];
+    let on = [on.0, on.1, on.2];
+    for (i, w) in worked.into_iter().enumerate() {
+        let (term, formula, k, sum, c, name) = TERMS[i];
+        let note = match term {
+            Term::Specular if !on[i] && mat.model.terms().2 => Msg::SpecularSkipped,
+            _ => one_note(on[i], term),
+        };
+        let given = || {
+            vec![
+                Val::num(coefficients[i]),
+                rgb_val(sums[i]),
+                rgb_val(colours[i]),
+            ]
+        };
+        tr.step(|| {
+            Step::new(Msg::TermStep(term), formula)
+                .val(Name::math(k), Val::num(coefficients[i]))
+                .val(Name::math(sum), rgb_val(sums[i]))
+                .sub(Name::math(sum), w)
+                .val(Name::math(c), rgb_val(colours[i]))
+                .res(Name::math(name), rgb_val(results[i]))
+                .sub(Name::math(name), Subst::new(product(on[i]), given()))
+                .note(note)
+        });
+    }
 }
+
+/// The three terms as the text writes them: the term, its formula, and the
+/// names of its coefficient, of its sum over the lights, of its colour and
+/// of itself.
+type TermNames = (
+    Term,
+    &'static str,
+    &'static str,
+    &'static str,
+    &'static str,
+    &'static str,
+);
+
+/// [`TermNames`] of ambient, diffuse and specular.
+const TERMS: [TermNames; 3] = [
+    (
+        Term::Ambient,
+        "ambient = ka · (Ga + Σ Att·Spot·La) · Ca",
+        "ka",
+        "Ga + Σ Att·Spot·La",
+        "Ca",
+        "ambient",
+    ),
+    (
+        Term::Diffuse,
+        "diffuse = kd · Σ Att·Spot·Ld·max(cos α, 0) · Cs",
+        "kd",
+        "Σ Att·Spot·Ld·max(cos α, 0)",
+        "Cs",
+        "diffuse",
+    ),
+    (
+        Term::Specular,
+        "specular = ks · Σ Att·Spot·Ls·highlight · Cspecular",
+        "ks",
+        "Σ Att·Spot·Ls·highlight",
+        "Cspecular",
+        "specular",
+    ),
+];
 
 #[cfg(test)]
 mod tests;
