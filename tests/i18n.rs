@@ -6,7 +6,7 @@
 //! Indonesian, and the shipped problems' Indonesian titles and errata.
 
 mod common;
-use common::{grafika, root};
+use common::{grafika, root, scratch};
 use serde_json::Value;
 
 /// The output of `grafika --lang LANG ARGS`, expecting success.
@@ -357,14 +357,6 @@ fn refused_in_indonesian(dir: &std::path::Path, args: &[&str]) -> String {
     let err = String::from_utf8(out.stderr).expect("UTF-8");
     assert_eq!(err.lines().count(), 1, "{args:?}: one line: {err}");
     err.trim_end().to_string()
-}
-
-/// A fresh directory for one test's files.
-fn scratch(name: &str) -> std::path::PathBuf {
-    let d = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("creates the directory");
-    d
 }
 
 #[test]

@@ -4,8 +4,8 @@
 
 mod common;
 
-use common::grafika;
-use std::path::{Path, PathBuf};
+use common::{grafika, scratch};
+use std::path::Path;
 
 /// `grafika --lang LANG ARGS` in `dir`: exit status 2 and one line on
 /// stderr, which is returned.
@@ -20,14 +20,6 @@ fn refused(dir: &Path, lang: &str, args: &[&str]) -> String {
     let err = String::from_utf8(out.stderr).expect("UTF-8");
     assert_eq!(err.lines().count(), 1, "{args:?}: one line: {err}");
     err.trim_end().to_string()
-}
-
-/// A fresh directory for one test's files.
-fn scratch(name: &str) -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("creates the directory");
-    d
 }
 
 #[test]

@@ -12,6 +12,15 @@ pub fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
+/// An empty scratch folder `name` under cargo's temporary folder for
+/// integration tests (emptied first).
+pub fn scratch(name: &str) -> PathBuf {
+    let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).expect("creates the directory");
+    d
+}
+
 /// A command for the grafika binary, run from the repository root.
 pub fn grafika() -> Command {
     let mut c = Command::cargo_bin("grafika").expect("binary builds");
