@@ -28,8 +28,8 @@ impl KeyWords for En {
         let name = match &k.value {
             Value::Field(Field::Matrix) if k.part == Some(Part::View) => "V".to_string(),
             Value::Point(n) => match k.part {
-                Some(Part::View) => format!("{n}'"),
-                Some(Part::Project) => format!("{n}''"),
+                Some(Part::View) => self.name(&Name::Eye(n.clone())),
+                Some(Part::Project) => self.name(&Name::Image(n.clone())),
                 Some(Part::Window | Part::Viewport | Part::Clip | Part::Shade) | None => n.clone(),
             },
             Value::Pixel(n) => self.name(&Name::Pixel(n.clone())),
