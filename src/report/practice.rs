@@ -207,7 +207,7 @@ fn verdict_head(o: &Outcome, lang: Lang) -> (Tone, String) {
 /// that its line already starts with (each part's reason after its name).
 fn unread_why(m: &Msg, lang: Lang) -> String {
     match m {
-        Msg::Unreadable(e) => crate::report::words::errors::number(e, lang),
+        Msg::Unreadable(e) => crate::report::words::of(lang).number(e),
         Msg::Parts(parts) => (parts.iter())
             .map(|(part, why)| format!("{part}: {}", unread_why(why, lang)))
             .collect::<Vec<_>>()

@@ -15,7 +15,6 @@ pub use crates::{
 use crate::msg::{
     Bound, Channel, ClapErr, ErrMsg, IoWhy, NumErr, ObjWhy, Thing, TomlErr, Twice, Want,
 };
-use crate::report::lang::Lang;
 
 /// The words of the error keys ([`ErrMsg`] and its families), in one
 /// language. Each method is one exhaustive match over its key.
@@ -54,21 +53,6 @@ pub trait ErrorWords {
     fn expect_word(&self, w: ExpectWord) -> &'static str;
     /// A phrase of serde's (`a sequence`, `an integer`).
     fn serde_word(&self, w: SerdeWord) -> &'static str;
-}
-
-/// The words of `e` in `lang`.
-pub fn error(e: &ErrMsg, lang: Lang) -> String {
-    super::of(lang).error(e)
-}
-
-/// Why a number cannot be read or evaluated, in `lang`.
-pub fn number(e: &NumErr, lang: Lang) -> String {
-    super::of(lang).number(e)
-}
-
-/// The system's reason a file could not be read or written, in `lang`.
-pub fn io_why(w: &IoWhy, lang: Lang) -> String {
-    super::of(lang).io_why(w)
 }
 
 /// `dir/` for a path that is a folder (`dir/` itself when it ends in `/`),

@@ -3,6 +3,7 @@
 //! again in English are the crates' messages.
 
 use super::*;
+use crate::report::lang::Lang;
 use crate::report::words::of;
 use proptest::prelude::*;
 
@@ -460,7 +461,7 @@ fn every_error_has_words_in_both_languages_and_they_differ() {
     let all = every_error();
     assert!(all.len() > 150, "{}", all.len());
     for e in &all {
-        let (en, id) = (error(e, Lang::En), error(e, Lang::Id));
+        let (en, id) = (of(Lang::En).error(e), of(Lang::Id).error(e));
         assert!(!en.trim().is_empty(), "{e:?} has no English");
         assert!(!id.trim().is_empty(), "{e:?} has no Indonesian");
         assert_ne!(en, id, "{e:?} is not translated");
@@ -472,15 +473,15 @@ fn indonesian_errors_write_numbers_with_the_decimal_comma() {
     // -0,5 for the value given; 0,5 for near; the path keeps its dot.
     let e = ErrMsg::MustBe(Bound::AboveNear("0.5".into()), "-0.5".into());
     assert_eq!(
-        error(&e, Lang::Id),
+        of(Lang::Id).error(&e),
         "harus lebih besar daripada near = 0,5, diberikan -0,5"
     );
     assert_eq!(
-        error(&e, Lang::En),
+        of(Lang::En).error(&e),
         "must be greater than near = 0.5, got -0.5"
     );
     let e = ErrMsg::Attenuation("0.5".into(), "-1".into(), "0".into());
-    assert!(error(&e, Lang::Id).ends_with("diberikan (0,5; -1; 0)"));
+    assert!(of(Lang::Id).error(&e).ends_with("diberikan (0,5; -1; 0)"));
     let e = TomlErr::InvalidType("string \"a\"".into(), "an integer".into());
     assert_eq!(
         of(Lang::Id).toml(&e),
@@ -488,7 +489,7 @@ fn indonesian_errors_write_numbers_with_the_decimal_comma() {
     );
     let e = ErrMsg::CannotRead("p.toml".into(), IoWhy::NotFound);
     assert_eq!(
-        error(&e, Lang::Id),
+        of(Lang::Id).error(&e),
         "tidak dapat membaca p.toml: berkas atau direktori tidak ada"
     );
 }
