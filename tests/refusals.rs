@@ -110,3 +110,19 @@ fn the_obj_readers_reasons_in_both_languages() {
     );
     assert!(!d.join("s.png").exists());
 }
+
+#[test]
+fn a_path_through_a_file_is_said_in_the_readers_language() {
+    // `solve notes.txt/view.toml`: the system's reason is ENOTDIR, which
+    // each language words itself (before, the system's English was quoted
+    // under --lang id too).
+    let d = scratch("path-through-a-file");
+    std::fs::write(d.join("notes.txt"), "not a folder").expect("writes");
+    let en = refused(&d, "en", &["solve", "notes.txt/view.toml"]);
+    assert!(en.ends_with("a folder on its path is a file"), "{en}");
+    let id = refused(&d, "id", &["solve", "notes.txt/view.toml"]);
+    assert!(
+        id.ends_with("sebuah folder pada jalurnya adalah berkas"),
+        "{id}"
+    );
+}

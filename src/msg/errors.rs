@@ -78,7 +78,17 @@ pub enum IoWhy {
     IsDirectory,
     /// Not UTF-8 text.
     NotText,
-    /// Another reason, as the system says it.
+    /// A folder on the path is a file.
+    NotADirectory,
+    /// The file system is mounted read-only.
+    ReadOnly,
+    /// No space is left on the device.
+    Full,
+    /// The file is larger than the file system allows.
+    TooLarge,
+    /// The name is not one the file system accepts.
+    BadName,
+    /// Another reason, as the system says it (in the system's language).
     Other(String),
 }
 
@@ -92,6 +102,11 @@ impl IoWhy {
             K::AlreadyExists => IoWhy::Exists,
             K::IsADirectory => IoWhy::IsDirectory,
             K::InvalidData => IoWhy::NotText,
+            K::NotADirectory => IoWhy::NotADirectory,
+            K::ReadOnlyFilesystem => IoWhy::ReadOnly,
+            K::StorageFull | K::QuotaExceeded => IoWhy::Full,
+            K::FileTooLarge => IoWhy::TooLarge,
+            K::InvalidFilename => IoWhy::BadName,
             _ => IoWhy::Other(e.to_string()),
         }
     }

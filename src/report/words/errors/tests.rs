@@ -262,7 +262,12 @@ fn every_io() -> Vec<IoWhy> {
         Exists,
         IsDirectory,
         NotText,
-        Other("disk full".into()),
+        NotADirectory,
+        ReadOnly,
+        Full,
+        TooLarge,
+        BadName,
+        Other("device not configured".into()),
     ]
 }
 
@@ -425,6 +430,11 @@ fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want,
         | IoWhy::Exists
         | IoWhy::IsDirectory
         | IoWhy::NotText
+        | IoWhy::NotADirectory
+        | IoWhy::ReadOnly
+        | IoWhy::Full
+        | IoWhy::TooLarge
+        | IoWhy::BadName
         | IoWhy::Other(_) => {}
     }
 }

@@ -263,7 +263,13 @@ impl ErrorWords for Id {
             IoWhy::Exists => "sudah ada".into(),
             IoWhy::IsDirectory => "itu sebuah direktori".into(),
             IoWhy::NotText => "isinya bukan teks UTF-8".into(),
-            IoWhy::Other(s) => s.clone(),
+            IoWhy::NotADirectory => "sebuah folder pada jalurnya adalah berkas".into(),
+            IoWhy::ReadOnly => "sistem berkas hanya bisa dibaca".into(),
+            IoWhy::Full => "ruang penyimpanan sudah penuh".into(),
+            IoWhy::TooLarge => "berkas terlalu besar untuk sistem berkas".into(),
+            IoWhy::BadName => "sistem berkas tidak menerima nama itu".into(),
+            // The system's own words (often English): quoted as such.
+            IoWhy::Other(s) => format!("pesan sistem: {s}"),
         }
     }
 
