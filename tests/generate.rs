@@ -176,24 +176,13 @@ fn a_planted_mistake_is_caught_and_named() {
             }
         }
     }
-    // Every mistake of the catalog was planted somewhere.
-    for code in [
-        "cross_order",
-        "n_reversed",
-        "n_not_normalized",
-        "u_not_normalized",
-        "fovy_not_halved",
-        "degrees_as_radians",
-        "height_is_half_extent",
-        "height_as_half_extent",
-        "d_sign",
-        "matrix_transposed",
-        "outcode_reversed",
-        "endpoint_kept",
-        "reflect_plus_l",
-        "specular_no_max",
-    ] {
-        assert!(planted.contains(code), "{code} never planted: {planted:?}");
+    // Every mistake of the catalog was planted somewhere, and caught, but
+    // the copied misprint: a generated problem has no errata.
+    let not_drawn = ["copied_misprint"];
+    for code in Code::all() {
+        let code = code.as_str();
+        let drawn = !not_drawn.contains(&code);
+        assert_eq!(planted.contains(code), drawn, "{code}: planted {planted:?}");
     }
 }
 
