@@ -437,8 +437,9 @@ mod tests {
         );
         for s in Shading::all() {
             let given = matches!(s, Shading::L | Shading::N);
-            assert_eq!(one.contains(&s), !given, "{s:?} with one light");
-            assert_eq!(two.contains(&s), !given, "{s:?} with two lights");
+            let missing = "no model's run puts it in the results (shade_run)";
+            assert_eq!(one.contains(&s), !given, "{s:?}, one light: {missing}");
+            assert_eq!(two.contains(&s), !given, "{s:?}, two lights: {missing}");
         }
     }
 
