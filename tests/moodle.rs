@@ -18,7 +18,7 @@ use grafika::report::mistakes::mistake_text;
 use grafika::report::moodle::{moodle_xml, Decimal, Written};
 use grafika::report::Style;
 use grafika::tutor::check::default_keys;
-use grafika::tutor::diagnose::{find, Code, CATALOG};
+use grafika::tutor::diagnose::Code;
 use grafika::tutor::generate::quiz::Quiz;
 use grafika::tutor::generate::{Generated, Topic};
 use grafika::tutor::solution::lookup;
@@ -224,7 +224,10 @@ fn the_camera_example_has_the_keys_tolerances_and_mistakes_derived_by_hand() {
         assert_eq!(num_tol(&b.alts[0].answer), (x, t), "{b:?}");
     }
     let wrong = |i: usize, x: f64, code: &str| {
-        let m = CATALOG.iter().find(|m| m.code.as_str() == code).unwrap();
+        let m = Code::all()
+            .into_iter()
+            .find(|m| m.as_str() == code)
+            .unwrap();
         let alt = blanks[i]
             .alts
             .iter()
@@ -448,11 +451,11 @@ fn check_wrong(p: &ProblemIn, key: &str, idx: usize, b: &Blank, w: &Alt) {
         .strip_prefix("Known mistake: ")
         .expect("names a mistake");
     for name in names.split("; or: ") {
-        let m = CATALOG
-            .iter()
-            .find(|m| mistake_text(m, Lang::En) == name)
+        let m = Code::all()
+            .into_iter()
+            .find(|m| mistake_text(*m, Lang::En) == name)
             .unwrap_or_else(|| panic!("not in the catalog: {name}"));
-        let trees = (m.apply)(p).expect("the mistake applies");
+        let trees = m.apply(p).expect("the mistake applies");
         let given = trees.iter().any(|t| {
             let mut l = Vec::new();
             if let Some(v) = lookup(t, key) {
@@ -467,11 +470,7 @@ fn check_wrong(p: &ProblemIn, key: &str, idx: usize, b: &Blank, w: &Alt) {
                 _ => false,
             }
         });
-        assert!(
-            given,
-            "{} does not give {} at {key}[{idx}]",
-            m.code, w.answer
-        );
+        assert!(given, "{} does not give {} at {key}[{idx}]", m, w.answer);
     }
     if b.kind == "NUMERICAL" {
         let ((x, t), (y, u)) = (num_tol(&b.alts[0].answer), num_tol(&w.answer));
@@ -699,7 +698,7 @@ fn an_absurd_mistaken_value_is_left_out() {
     let blanks = cloze_blanks(&qs[1].2);
     let top = &blanks[0];
     assert_eq!(num_tol(&top.alts[0].answer), (1.0, 0.001));
-    let fovy = find(Code::FovyNotHalved).unwrap();
+    let fovy = Code::FovyNotHalved;
     for b in &blanks {
         for a in &b.alts[1..] {
             assert!(!a.feedback.contains(mistake_text(fovy, Lang::En)), "{a:?}");

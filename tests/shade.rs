@@ -323,3 +323,27 @@ fn blinn_explains_the_d3d_viewer_axis() {
         "{text}"
     );
 }
+
+#[test]
+fn every_model_is_taken_by_its_name_and_listed_in_the_docs() {
+    // `--model` takes each model by the name the reports print, and
+    // docs/spec.md's synopsis and README's shade section list them all.
+    use grafika::stages::lighting::Model;
+    let names: std::collections::BTreeSet<&str> =
+        Model::all().into_iter().map(Model::name).collect();
+    for name in &names {
+        let j = json(&[
+            "shade", "--model", name, "--light", "0,0,1", "--normal", "0,0,1", "--view", "0,0,1",
+            "--color", "1,1,1",
+        ]);
+        assert_eq!(j["input"]["model"], *name);
+    }
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    for (file, start) in [("docs/spec.md", "[--model "), ("README.md", "`--model ")] {
+        let text = std::fs::read_to_string(root.join(file)).unwrap();
+        let (_, rest) = text.split_once(start).expect("the --model choices");
+        let list = rest.split([']', '`']).next().unwrap_or_default();
+        let listed: std::collections::BTreeSet<&str> = list.split('|').collect();
+        assert_eq!(listed, names, "{file}");
+    }
+}

@@ -88,6 +88,12 @@ pub struct StatedCamera {
 /// What a lighting problem asks for, by model.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ShadeAsked {
+    /// The ambient term.
+    Ambient,
+    /// cos α, the diffuse term.
+    Diffuse,
+    /// cos α, R and cos β, the specular term.
+    Specular,
     /// cos α, the ambient and diffuse terms.
     Lambert,
     /// cos α, H and N·H, the three terms.

@@ -42,8 +42,8 @@ pub fn to_json(m: &Marking, lang: Lang) -> Value {
         },
         "answers": answers,
         "diagnosis": m.diagnoses.iter().map(|d| json!({
-            "code": d.mistake.code, "mistake": crate::report::mistakes::mistake_text(d.mistake, lang), "keys": d.keys,
-            "also": d.also.iter().map(|a| a.code).collect::<Vec<_>>(),
+            "code": d.mistake, "mistake": crate::report::mistakes::mistake_text(d.mistake, lang), "keys": d.keys,
+            "also": d.also,
         })).collect::<Vec<_>>(),
         "unknown_keys": m.unknown,
     })
@@ -111,7 +111,7 @@ fn diagnoses_text(m: &Marking, style: &Style) -> String {
             out.push_str(&format!(
                 "  • {} [{}]\n    {}: {}\n",
                 crate::report::mistakes::mistake_text(d.mistake, style.lang),
-                d.mistake.code,
+                d.mistake,
                 t_(K::Reproduces),
                 d.keys.join(", ")
             ));
@@ -119,8 +119,8 @@ fn diagnoses_text(m: &Marking, style: &Style) -> String {
                 out.push_str(&format!(
                     "    ({}: {} [{}])\n",
                     t_(K::AlsoFollow),
-                    crate::report::mistakes::mistake_text(a, style.lang),
-                    a.code
+                    crate::report::mistakes::mistake_text(*a, style.lang),
+                    a
                 ));
             }
         }

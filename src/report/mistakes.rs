@@ -4,24 +4,23 @@
 
 use crate::report::lang::Lang;
 use crate::report::words;
-use crate::tutor::diagnose::Mistake;
+use crate::tutor::diagnose::Code;
 
 /// What the student did, in `lang`.
-pub fn mistake_text(m: &Mistake, lang: Lang) -> &'static str {
-    words::of(lang).mistake(m.code)
+pub fn mistake_text(m: Code, lang: Lang) -> &'static str {
+    words::of(lang).mistake(m)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::tutor::diagnose::CATALOG;
 
     #[test]
     fn every_mistake_reads_differently_in_each_language() {
-        for m in CATALOG {
+        for m in Code::all() {
             let (en, id) = (mistake_text(m, Lang::En), mistake_text(m, Lang::Id));
-            assert!(!en.trim().is_empty(), "{}", m.code);
-            assert_ne!(id, en, "no Indonesian text for {}", m.code);
+            assert!(!en.trim().is_empty(), "{m}");
+            assert_ne!(id, en, "no Indonesian text for {m}");
         }
     }
 }

@@ -277,7 +277,7 @@ pub fn cloze_escape(s: &str) -> String {
 
 /// The feedback of a wrong value: the mistakes that give it.
 pub fn feedback(w: &Wrong, lang: Lang) -> String {
-    let names: Vec<&str> = w.mistakes.iter().map(|m| mistake_text(m, lang)).collect();
+    let names: Vec<&str> = w.mistakes.iter().map(|m| mistake_text(*m, lang)).collect();
     let w = |k: Q| said::of(lang).quiz(&k);
     format!("{}{}", w(Q::KnownMistake), names.join(&w(Q::OrMistake)))
 }

@@ -239,8 +239,8 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
         let line = format!(
             "{}: {} [{}]",
             look.w(P::LikelyMistake),
-            mistake_text(m, lang),
-            m.code
+            mistake_text(*m, lang),
+            m
         );
         out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
     }
@@ -328,12 +328,7 @@ fn summary_text(s: &Summary, look: &Look) -> String {
     if !s.mistakes.is_empty() {
         out.push_str(&format!("  {}\n", look.w(P::MistakesMade)));
         for (m, keys) in &s.mistakes {
-            let line = format!(
-                "• {} [{}]: {}",
-                mistake_text(m, lang),
-                m.code,
-                keys.join(", ")
-            );
+            let line = format!("• {} [{}]: {}", mistake_text(*m, lang), m, keys.join(", "));
             out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
         }
     }
@@ -415,7 +410,7 @@ pub fn event_json(ev: &Event, lang: Lang) -> Value {
             "read": o.read.as_ref().map(|r| value_json(&r.value())),
             "verdict": o.verdict.as_str(), "code": o.code,
             "expected": value(&o.expected), "note": w(&o.note),
-            "mistakes": o.mistakes.iter().map(|m| m.code).collect::<Vec<_>>(),
+            "mistakes": o.mistakes,
             "why": o.why.as_ref().map(w),
             "follow_through": o.follow_through.as_ref().map(value_json),
             "retry": o.retry,
@@ -454,7 +449,7 @@ fn summary_json(s: &Summary, lang: Lang) -> Value {
         "hints": s.hints,
         "retries": { "answered": s.retries, "correct": s.retries_correct },
         "mistakes": s.mistakes.iter().map(|(m, keys)| json!({
-            "code": m.code, "mistake": mistake_text(m, lang), "keys": keys,
+            "code": m, "mistake": mistake_text(*m, lang), "keys": keys,
         })).collect::<Vec<_>>(),
         "next": { "topic": name(&s.next.0), "difficulty": name(&s.next.1) },
     })

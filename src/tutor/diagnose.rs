@@ -1,4 +1,4 @@
-//! The catalog of known mistakes, in one place. Each entry recomputes a
+//! The catalog of known mistakes, in one place. Each mistake recomputes a
 //! problem the wrong way — by running the real stages on altered inputs
 //! (`altered`), or with one stage result altered between stages
 //! ([`run::Hooks`](crate::tutor::run::Hooks)), or with one documented change to the result tree —
@@ -6,9 +6,10 @@
 //! No pipeline math is repeated here, and no words: a mistake is said by
 //! its [`Code`] in each language's words (`ReportWords::mistake`).
 //!
-//! Adding a mistake is a [`Code`] (the compiler then asks for its
-//! spelling, its place in the order and its words) and one entry in
-//! [`CATALOG`] (a test asks for it).
+//! Adding a mistake is a [`Code`]: the compiler then asks for its
+//! spelling, its place in the order ([`Code::all`], the catalog's order),
+//! its words, and how the problem is recomputed with it ([`Code::apply`],
+//! one function per mistake below).
 
 use crate::input::answer;
 use crate::input::fields::{Num, Vec3In};
@@ -17,11 +18,13 @@ use crate::input::problem::ProblemIn;
 use crate::num::vec;
 use crate::num::{AngleUnit, Expr, Real, Scalar};
 use crate::stages::camera::Basis;
+use crate::stages::clip::Status;
 use crate::stages::lighting::{LightKind, Rules};
 use crate::stages::trace::Val;
 use crate::stages::window::Window;
+use crate::tutor::key::{Cut, Edge, Field, Key, Part, Shading, Value};
 use crate::tutor::run::Hooks;
-use crate::tutor::solution::lookup;
+use crate::tutor::solution::value_of;
 use crate::tutor::solve;
 
 pub use crate::tutor::solution::Tree;
@@ -106,7 +109,7 @@ impl Code {
     }
 
     /// The code after this one: an exhaustive match, so a new code is
-    /// listed (and its place in [`CATALOG`] tested) as soon as it compiles.
+    /// listed (in the catalog's order) as soon as it compiles.
     fn next(self) -> Option<Code> {
         use Code::*;
         match self {
@@ -147,377 +150,371 @@ impl serde::Serialize for Code {
     }
 }
 
-/// One known mistake.
-pub struct Mistake {
-    /// Which mistake (its words are the report's, by this code).
-    pub code: Code,
+impl Code {
     /// The problem's results computed with this mistake (several variants
     /// when the mistake can be made in more than one place), or None when
-    /// the mistake does not apply to the problem.
-    pub apply: fn(&ProblemIn) -> Option<Vec<Tree>>,
-}
-
-impl std::fmt::Debug for Mistake {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "Mistake({})", self.code)
+    /// the mistake does not apply to the problem. One arm per code and no
+    /// other: a new code stops the build here until it says how the
+    /// problem is recomputed with it.
+    pub fn apply(self, p: &ProblemIn) -> Option<Vec<Tree>> {
+        match self {
+            Code::CrossOrder => cross_order(p),
+            Code::NReversed => n_reversed(p),
+            Code::NNotNormalized => n_not_normalized(p),
+            Code::UNotNormalized => u_not_normalized(p),
+            Code::FovyNotHalved => fovy_not_halved(p),
+            Code::DegreesAsRadians => degrees_as_radians(p),
+            Code::HeightIsHalfExtent => height_is_half_extent(p),
+            Code::HeightAsHalfExtent => height_as_half_extent(p),
+            Code::DSign => d_sign(p),
+            Code::MatrixTransposed => matrix_transposed(p),
+            Code::OutcodeReversed => outcode_reversed(p),
+            Code::EndpointKept => endpoint_kept(p),
+            Code::ReflectPlusL => reflect_plus_l(p),
+            Code::SpecularNoMax => specular_no_max(p),
+            Code::PixelYFromTop => pixel_y_from_top(p),
+            Code::EyeNoTranslation => eye_no_translation(p),
+            Code::AspectInverted => aspect_inverted(p),
+            Code::LightNotNormalized => unnormalized(p, Unit::L),
+            Code::NormalNotNormalized => unnormalized(p, Unit::N),
+            Code::CopiedMisprint => copied_misprint(p),
+        }
     }
 }
 
-/// Every known mistake.
-pub static CATALOG: &[Mistake] = &[
-    Mistake {
-        code: Code::CrossOrder,
-        apply: |p| altered(p, |q| map_camera(q, |c| c.up = neg3(&c.up))),
-    },
-    Mistake {
-        code: Code::NReversed,
-        // Pe − (2Pe − Pr) = Pr − Pe: the look-at point reflected through the eye.
-        apply: |p| {
-            altered(p, |q| {
-                map_camera(q, |c| {
-                    let look = std::array::from_fn(|k| {
-                        Num(Expr::Sub(
-                            Box::new(Expr::Mul(
-                                Box::new(Expr::Lit("2".into())),
-                                Box::new(c.eye[k].0.clone()),
-                            )),
-                            Box::new(c.look[k].0.clone()),
-                        ))
-                    });
-                    c.look = Vec3In(look);
-                })
+/// u = n × Vup instead of Vup × n: the view-up vector negated.
+fn cross_order(p: &ProblemIn) -> Option<Vec<Tree>> {
+    altered(p, |q| map_camera(q, |c| c.up = neg3(&c.up)))
+}
+
+/// n from Pr − Pe instead of Pe − Pr: Pe − (2Pe − Pr) = Pr − Pe, the
+/// look-at point reflected through the eye.
+fn n_reversed(p: &ProblemIn) -> Option<Vec<Tree>> {
+    altered(p, |q| {
+        map_camera(q, |c| {
+            let look = std::array::from_fn(|k| {
+                Num(Expr::Sub(
+                    Box::new(Expr::Mul(
+                        Box::new(Expr::Lit("2".into())),
+                        Box::new(c.eye[k].0.clone()),
+                    )),
+                    Box::new(c.look[k].0.clone()),
+                ))
+            });
+            c.look = Vec3In(look);
+        })
+    })
+}
+
+/// n = Pe − Pr not divided by |Pe − Pr|: n (and v = n × u with it)
+/// scaled by |Pe − Pr|.
+fn n_not_normalized(p: &ProblemIn) -> Option<Vec<Tree>> {
+    hooked_exact(
+        p,
+        Hooks {
+            basis: |b| {
+                let s = b.dist.clone();
+                scale_axes(b, [Real::from_i64(1), s.clone(), s]);
+            },
+            ..Hooks::default()
+        },
+    )
+}
+
+/// u = Vup × n not divided by |Vup × n|: Vup × n = (Vup × d)/|d|, of
+/// length |Vup × d|/|d|, scales u (and v = n × u with it).
+fn u_not_normalized(p: &ProblemIn) -> Option<Vec<Tree>> {
+    hooked_exact(
+        p,
+        Hooks {
+            basis: |b| {
+                let s = b.vxn_norm.clone();
+                scale_axes(b, [s.clone(), s, Real::from_i64(1)]);
+            },
+            ..Hooks::default()
+        },
+    )
+}
+
+/// tan(fovy) instead of tan(fovy/2): the window scaled by
+/// tan(fovy)/tan(fovy/2), not fovy doubled as an input (over 90° the
+/// doubled angle is refused, yet the mistake gives a window, top =
+/// near·tan(fovy) < 0, a student can write).
+fn fovy_not_halved(p: &ProblemIn) -> Option<Vec<Tree>> {
+    hooked(
+        p,
+        Hooks {
+            window: |w, fovy| {
+                let half = (fovy / 2.0).to_radians();
+                scale_window(w, fovy.to_radians().tan() / half.tan());
+            },
+            ..Hooks::default()
+        },
+    )
+}
+
+/// The angle in degrees given to tan as radians: as an input this would
+/// be an angle of thousands of degrees, which the window rejects, so the
+/// window is scaled by the ratio of the tangents, tan(fovy/2 rad) /
+/// tan(fovy/2 °). Only for a fovy given in degrees.
+fn degrees_as_radians(p: &ProblemIn) -> Option<Vec<Tree>> {
+    let deg = p
+        .perspective
+        .as_ref()
+        .and_then(|x| x.fovy.as_ref())
+        .is_some_and(|f| f.0.unit == AngleUnit::Deg);
+    if !deg {
+        return None;
+    }
+    hooked(
+        p,
+        Hooks {
+            window: |w, fovy| {
+                let half = fovy / 2.0;
+                scale_window(w, half.tan() / half.to_radians().tan());
+            },
+            ..Hooks::default()
+        },
+    )
+}
+
+/// h = near·tan(fovy/2) written as the height (and right as the width):
+/// written, not used, so the window's edges and the pixels stay right
+/// (the text's own h and W).
+fn height_is_half_extent(p: &ProblemIn) -> Option<Vec<Tree>> {
+    let mut t = solved(p)?;
+    for (size, half) in [(Edge::Height, Edge::Top), (Edge::Width, Edge::Right)] {
+        let edge = |e| Key::new(Part::Window, Value::Field(Field::Edge(e, false)));
+        let h = value_at(&mut t, &edge(half))?.clone();
+        *value_at(&mut t, &edge(size))? = h;
+    }
+    Some(vec![t])
+}
+
+/// near·tan(fovy/2) taken as the full height: the window of half the top
+/// (right/top is the aspect).
+fn height_as_half_extent(p: &ProblemIn) -> Option<Vec<Tree>> {
+    hooked(
+        p,
+        Hooks {
+            window: |w, _| {
+                let aspect = w.right / w.top;
+                *w = crate::stages::window::edges(w.top / 2.0, &aspect);
+            },
+            ..Hooks::default()
+        },
+    )
+}
+
+/// The projection plane at z = +near instead of z = −near: d negated (or
+/// d = near where only near is given).
+fn d_sign(p: &ProblemIn) -> Option<Vec<Tree>> {
+    let per = p.perspective.as_ref()?;
+    let d = match (&per.d, &per.near) {
+        (Some(d), _) => Expr::Neg(Box::new(d.0.clone())),
+        (None, Some(n)) => n.0.clone(),
+        _ => return None,
+    };
+    altered(p, |q| {
+        if let Some(x) = q.perspective.as_mut() {
+            x.d = Some(Num(d.clone()));
+        }
+    })
+}
+
+/// The view matrix transposed (P·M): one documented change to the
+/// results, the matrix's rows written as its columns.
+fn matrix_transposed(p: &ProblemIn) -> Option<Vec<Tree>> {
+    let mut t = solved(p)?;
+    let m = value_at(&mut t, &Key::new(Part::View, Value::Field(Field::Matrix)))?;
+    if let Val::List(rows) = m {
+        let cells: Vec<Vec<Val>> = rows
+            .iter()
+            .map(|r| match r {
+                Val::List(c) => c.clone(),
+                _ => vec![],
             })
-        },
-    },
-    Mistake {
-        code: Code::NNotNormalized,
-        apply: |p| {
-            hooked_exact(
-                p,
-                Hooks {
-                    basis: |b| {
-                        let s = b.dist.clone();
-                        scale_axes(b, [Real::from_i64(1), s.clone(), s]);
-                    },
-                    ..Hooks::default()
-                },
-            )
-        },
-    },
-    Mistake {
-        code: Code::UNotNormalized,
-        apply: |p| {
-            hooked_exact(
-                p,
-                Hooks {
-                    // Vup × n = (Vup × d)/|d|, of length |Vup × d|/|d|.
-                    basis: |b| {
-                        let s = b.vxn_norm.clone();
-                        scale_axes(b, [s.clone(), s, Real::from_i64(1)]);
-                    },
-                    ..Hooks::default()
-                },
-            )
-        },
-    },
-    Mistake {
-        code: Code::FovyNotHalved,
-        // The window scaled by tan(fovy)/tan(fovy/2), not fovy doubled as an
-        // input: over 90° the doubled angle is refused, yet the mistake gives
-        // a window (top = near·tan(fovy) < 0) a student can write.
-        apply: |p| {
-            hooked(
-                p,
-                Hooks {
-                    window: |w, fovy| {
-                        let half = (fovy / 2.0).to_radians();
-                        scale_window(w, fovy.to_radians().tan() / half.tan());
-                    },
-                    ..Hooks::default()
-                },
-            )
-        },
-    },
-    Mistake {
-        code: Code::DegreesAsRadians,
-        // As an input this would be an angle of thousands of degrees, which
-        // the window rejects; so the window is scaled by the ratio of the tangents.
-        apply: |p| {
-            let deg = p
-                .perspective
-                .as_ref()
-                .and_then(|x| x.fovy.as_ref())
-                .is_some_and(|f| f.0.unit == AngleUnit::Deg);
-            if !deg {
-                return None;
+            .collect();
+        let n = cells.len();
+        *rows = (0..n)
+            .map(|c| Val::List((0..n).map(|r| cells[r][c].clone()).collect()))
+            .collect();
+    }
+    Some(vec![t])
+}
+
+/// The outcode bits in reverse order: every outcode, the ends' (code0,
+/// code1) and each intersection's (code), read backwards.
+fn outcode_reversed(p: &ProblemIn) -> Option<Vec<Tree>> {
+    let codes = [Field::Code0.key(), Field::Code1.key(), Cut::Code.key()];
+    fn reverse(kv: &mut [(String, Val)], codes: &[String]) {
+        for (k, v) in kv.iter_mut() {
+            match (codes.contains(k), &mut *v) {
+                (true, Val::Text(s)) => *s = s.chars().rev().collect(),
+                (_, Val::Map(inner)) => reverse(inner, codes),
+                _ => {}
             }
-            hooked(
-                p,
-                Hooks {
-                    window: |w, fovy| {
-                        let half = fovy / 2.0;
-                        scale_window(w, half.tan() / half.to_radians().tan());
-                    },
-                    ..Hooks::default()
-                },
-            )
-        },
-    },
-    Mistake {
-        code: Code::HeightIsHalfExtent,
-        // Written as the height and width, not used as them: the window's
-        // edges and the pixels stay right (the text's own h and W).
-        apply: |p| {
-            let mut t = solved(p)?;
-            for (size, half) in [("height", "top"), ("width", "right")] {
-                let h = find_key(&mut t, &format!("window.{half}"))?.clone();
-                *find_key(&mut t, &format!("window.{size}"))? = h;
-            }
-            Some(vec![t])
-        },
-    },
-    Mistake {
-        code: Code::HeightAsHalfExtent,
-        apply: |p| {
-            hooked(
-                p,
-                Hooks {
-                    // the window of half the top (right/top is the aspect)
-                    window: |w, _| {
-                        let aspect = w.right / w.top;
-                        *w = crate::stages::window::edges(w.top / 2.0, &aspect);
-                    },
-                    ..Hooks::default()
-                },
-            )
-        },
-    },
-    Mistake {
-        code: Code::DSign,
-        apply: |p| {
-            let per = p.perspective.as_ref()?;
-            let d = match (&per.d, &per.near) {
-                (Some(d), _) => Expr::Neg(Box::new(d.0.clone())),
-                (None, Some(n)) => n.0.clone(),
-                _ => return None,
-            };
-            altered(p, |q| {
-                if let Some(x) = q.perspective.as_mut() {
-                    x.d = Some(Num(d.clone()));
-                }
-            })
-        },
-    },
-    Mistake {
-        code: Code::MatrixTransposed,
-        apply: |p| {
-            let mut t = solved(p)?;
-            let m = find_mut(&mut t, &["view", "matrix"])?;
-            if let Val::List(rows) = m {
-                let cells: Vec<Vec<Val>> = rows
-                    .iter()
-                    .map(|r| match r {
-                        Val::List(c) => c.clone(),
-                        _ => vec![],
-                    })
-                    .collect();
-                let n = cells.len();
-                *rows = (0..n)
-                    .map(|c| Val::List((0..n).map(|r| cells[r][c].clone()).collect()))
-                    .collect();
-            }
-            Some(vec![t])
-        },
-    },
-    Mistake {
-        code: Code::OutcodeReversed,
-        // every outcode: the ends' and each intersection's
-        apply: |p| {
-            fn reverse(kv: &mut [(String, Val)]) {
-                for (k, v) in kv.iter_mut() {
-                    match (k.starts_with("code"), &mut *v) {
-                        (true, Val::Text(s)) => *s = s.chars().rev().collect(),
-                        (_, Val::Map(inner)) => reverse(inner),
-                        _ => {}
-                    }
-                }
-            }
-            let mut t = solved(p)?;
-            for_each_clip(&mut t, |kv| reverse(kv));
-            Some(vec![t])
-        },
-    },
-    Mistake {
-        code: Code::EndpointKept,
-        apply: |p| {
-            let base = solved(p)?;
-            let c = p.clip.as_ref()?;
-            let points: Vec<(String, crate::num::vec::V3<f64>)> = p
-                .points()
-                .ok()?
-                .iter()
-                .map(|(n, v)| {
-                    let e: Option<Vec<f64>> = v.iter().map(|x| x.0.eval::<f64>().ok()).collect();
-                    e.map(|e| (n.clone(), crate::num::vec::v3(e[0], e[1], e[2])))
-                })
-                .collect::<Option<_>>()?;
-            let end = |r| {
-                solve::point_ref("clip", r, &points)
-                    .ok()
-                    .map(|q| Val::vec3(&q))
-            };
-            let ends: Vec<(Val, Val)> = c
-                .segment
-                .iter()
-                .map(|s| Some((end(&s.from)?, end(&s.to)?)))
-                .collect::<Option<_>>()?;
-            // Variant 0 keeps P0, variant 1 keeps P1, in every clipped segment.
-            let variants = (0..2)
-                .map(|which| {
-                    let mut t = base.clone();
-                    let mut i = 0;
-                    for_each_clip(&mut t, |kv| {
-                        let clipped = kv
-                            .iter()
-                            .any(|(k, v)| k == "status" && *v == Val::text("clipped"));
-                        if let (true, Some((p0, p1))) = (clipped, ends.get(i)) {
-                            for (k, v) in kv.iter_mut() {
-                                if let (true, Val::List(pts)) = (k == "segment", &mut *v) {
-                                    if pts.len() == 2 {
-                                        pts[which] =
-                                            if which == 0 { p0.clone() } else { p1.clone() };
-                                    }
-                                }
+        }
+    }
+    let mut t = solved(p)?;
+    for_each_clip(&mut t, |kv| reverse(kv, &codes));
+    Some(vec![t])
+}
+
+/// An endpoint outside the box kept instead of its intersection: variant
+/// 0 keeps P0, variant 1 keeps P1, in every clipped segment.
+fn endpoint_kept(p: &ProblemIn) -> Option<Vec<Tree>> {
+    let base = solved(p)?;
+    let ends = segment_ends(p)?;
+    let (status, segment) = (Field::Status.key(), Field::Segment.key());
+    let clipped = Val::text(Status::Clipped.as_str());
+    let variants = (0..2)
+        .map(|which| {
+            let mut t = base.clone();
+            let mut i = 0;
+            for_each_clip(&mut t, |kv| {
+                let cut = kv.iter().any(|(k, v)| *k == status && *v == clipped);
+                if let (true, Some(kept)) = (cut, ends.get(i)) {
+                    for (k, v) in kv.iter_mut() {
+                        if let (true, Val::List(pts)) = (*k == segment, &mut *v) {
+                            if pts.len() == 2 {
+                                pts[which] = kept[which].clone();
                             }
                         }
-                        i += 1;
-                    });
-                    t
-                })
-                .collect();
-            Some(variants)
-        },
-    },
-    Mistake {
-        code: Code::ReflectPlusL,
-        apply: |p| {
-            p.shade.as_ref()?;
-            hooked(
-                p,
-                Hooks {
-                    shade: Rules {
-                        reflect: |n, l, two_ln| vec::add(&vec::scale(n, two_ln), l),
-                        ..Rules::default()
-                    },
-                    ..Hooks::default()
-                },
-            )
-        },
-    },
-    Mistake {
-        code: Code::SpecularNoMax,
-        apply: |p| {
-            p.shade.as_ref()?;
-            hooked(
-                p,
-                Hooks {
-                    shade: Rules {
-                        highlight_base: |c| *c,
-                        ..Rules::default()
-                    },
-                    ..Hooks::default()
-                },
-            )
-        },
-    },
-    Mistake {
-        code: Code::PixelYFromTop,
-        // One documented change to the results: each pixel's py becomes H − py.
-        apply: |p| {
-            let h = p.perspective.as_ref()?.viewport.as_ref()?[1]
-                .0
-                .eval::<f64>()
-                .ok()?;
-            let mut t = solved(p)?;
-            let Val::Map(pixels) = find_mut(&mut t, &["viewport", "pixels"])? else {
-                return None;
-            };
-            for (_, px) in pixels.iter_mut() {
-                if let Val::List(xy) = px {
-                    if let Some(Val::Num(y)) = xy.get(1) {
-                        xy[1] = Val::num(&(h - y.value));
                     }
                 }
-            }
-            Some(vec![t])
-        },
-    },
-    Mistake {
-        code: Code::EyeNoTranslation,
-        // The same camera axes with the eye at the origin: Pe' = 0 and
-        // Pr' = Pr − Pe keep n, u, v, and drop the translation by −Pe.
-        apply: |p| {
-            let c = p.camera.as_ref()?;
-            let look = Vec3In(std::array::from_fn(|k| {
-                Num(Expr::Sub(
-                    Box::new(c.look[k].0.clone()),
-                    Box::new(c.eye[k].0.clone()),
-                ))
-            }));
-            let zero = Vec3In(std::array::from_fn(|_| Num(Expr::Lit("0".into()))));
-            altered_points(p, |q| {
-                map_camera(q, |c| {
-                    c.look = look;
-                    c.eye = zero;
-                })
-            })
-        },
-    },
-    Mistake {
-        code: Code::AspectInverted,
-        apply: |p| {
-            let aspect = p.perspective.as_ref()?.aspect.as_ref()?.0.clone();
-            altered(p, |q| {
-                if let Some(x) = q.perspective.as_mut() {
-                    let one = Box::new(Expr::Lit("1".into()));
-                    x.aspect = Some(Num(Expr::Div(one, Box::new(aspect))));
-                }
-            })
-        },
-    },
-    Mistake {
-        code: Code::LightNotNormalized,
-        apply: |p| unnormalized(p, p.shade.as_ref()?.light.as_ref()?, "L"),
-    },
-    Mistake {
-        code: Code::NormalNotNormalized,
-        apply: |p| unnormalized(p, p.shade.as_ref()?.normal.as_ref()?, "N"),
-    },
-    Mistake {
-        code: Code::CopiedMisprint,
-        // One variant per erratum: a student who copies one printed answer
-        // has not copied the others, so a right answer to another erratum's
-        // key must not rule this one out.
-        apply: |p| {
-            let base = solved(p)?;
-            let variants: Vec<Tree> = p
-                .errata
-                .iter()
-                .filter_map(|e| {
-                    let mut t = base.clone();
-                    let v = find_key(&mut t, &e.key)?;
-                    *v = printed_value(printed(p, &e.key)?, v)?;
-                    Some(t)
-                })
-                .collect();
-            (!variants.is_empty()).then_some(variants)
-        },
-    },
-];
+                i += 1;
+            });
+            t
+        })
+        .collect();
+    Some(variants)
+}
 
-/// The catalog's entry of a code.
-pub fn find(code: Code) -> Option<&'static Mistake> {
-    CATALOG.iter().find(|m| m.code == code)
+/// Each segment's ends [P0, P1] as results, in the problem's order.
+fn segment_ends(p: &ProblemIn) -> Option<Vec<[Val; 2]>> {
+    let c = p.clip.as_ref()?;
+    let points: Vec<(String, vec::V3<f64>)> = p
+        .points()
+        .ok()?
+        .iter()
+        .map(|(n, v)| {
+            let e: Option<Vec<f64>> = v.iter().map(|x| x.0.eval::<f64>().ok()).collect();
+            e.map(|e| (n.clone(), vec::v3(e[0], e[1], e[2])))
+        })
+        .collect::<Option<_>>()?;
+    let field = Part::Clip.key();
+    let end = |r| {
+        solve::point_ref(&field, r, &points)
+            .ok()
+            .map(|q| Val::vec3(&q))
+    };
+    c.segment
+        .iter()
+        .map(|s| Some([end(&s.from)?, end(&s.to)?]))
+        .collect()
+}
+
+/// R = 2N(L·N) + L instead of 2N(L·N) − L: the reflection rule replaced.
+fn reflect_plus_l(p: &ProblemIn) -> Option<Vec<Tree>> {
+    p.shade.as_ref()?;
+    hooked(
+        p,
+        Hooks {
+            shade: Rules {
+                reflect: |n, l, two_ln| vec::add(&vec::scale(n, two_ln), l),
+                ..Rules::default()
+            },
+            ..Hooks::default()
+        },
+    )
+}
+
+/// The specular term without max(·, 0): the highlight's base as it is.
+fn specular_no_max(p: &ProblemIn) -> Option<Vec<Tree>> {
+    p.shade.as_ref()?;
+    hooked(
+        p,
+        Hooks {
+            shade: Rules {
+                highlight_base: |c| *c,
+                ..Rules::default()
+            },
+            ..Hooks::default()
+        },
+    )
+}
+
+/// py counted from the top edge: one documented change to the results,
+/// each pixel's py becomes H − py.
+fn pixel_y_from_top(p: &ProblemIn) -> Option<Vec<Tree>> {
+    let h = p.perspective.as_ref()?.viewport.as_ref()?[1]
+        .0
+        .eval::<f64>()
+        .ok()?;
+    let mut t = solved(p)?;
+    let pixels = Key::new(Part::Viewport, Value::Field(Field::Pixels));
+    let Val::Map(pixels) = value_at(&mut t, &pixels)? else {
+        return None;
+    };
+    for (_, px) in pixels.iter_mut() {
+        if let Val::List(xy) = px {
+            if let Some(Val::Num(y)) = xy.get(1) {
+                xy[1] = Val::num(&(h - y.value));
+            }
+        }
+    }
+    Some(vec![t])
+}
+
+/// The eye coordinates (u·P, v·P, n·P), Peye not subtracted: the same
+/// camera axes with the eye at the origin, Pe' = 0 and Pr' = Pr − Pe keep
+/// n, u, v and drop the translation by −Pe.
+fn eye_no_translation(p: &ProblemIn) -> Option<Vec<Tree>> {
+    let c = p.camera.as_ref()?;
+    let look = Vec3In(std::array::from_fn(|k| {
+        Num(Expr::Sub(
+            Box::new(c.look[k].0.clone()),
+            Box::new(c.eye[k].0.clone()),
+        ))
+    }));
+    let zero = Vec3In(std::array::from_fn(|_| Num(Expr::Lit("0".into()))));
+    altered_points(p, |q| {
+        map_camera(q, |c| {
+            c.look = look;
+            c.eye = zero;
+        })
+    })
+}
+
+/// right = top / aspect instead of aspect·top: the aspect inverted.
+fn aspect_inverted(p: &ProblemIn) -> Option<Vec<Tree>> {
+    let aspect = p.perspective.as_ref()?.aspect.as_ref()?.0.clone();
+    altered(p, |q| {
+        if let Some(x) = q.perspective.as_mut() {
+            let one = Box::new(Expr::Lit("1".into()));
+            x.aspect = Some(Num(Expr::Div(one, Box::new(aspect))));
+        }
+    })
+}
+
+/// The value the source printed, wrong by its errata: one variant per
+/// erratum, since a student who copies one printed answer has not copied
+/// the others (a right answer to another erratum's key must not rule this
+/// one out).
+fn copied_misprint(p: &ProblemIn) -> Option<Vec<Tree>> {
+    let base = solved(p)?;
+    let variants: Vec<Tree> = p
+        .errata
+        .iter()
+        .filter_map(|e| {
+            let mut t = base.clone();
+            let v = value_at(&mut t, &e.key.parse().ok()?)?;
+            *v = printed_value(printed(p, &e.key)?, v)?;
+            Some(t)
+        })
+        .collect();
+    (!variants.is_empty()).then_some(variants)
 }
 
 /// The problem's results (f64; a mistaken value needs no exact form).
@@ -552,8 +549,9 @@ fn altered_points(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<T
     let mut t = solved(&kept)?;
     // the eye coordinates of every point (the view part alone projects none)
     q.ask = Some(vec!["view".into()]);
-    if let (Some(all), Some(Val::Map(eye))) = (solved(&q), find_key(&mut t, "view.points")) {
-        if let Some(Val::Map(every)) = lookup(&all, "view.points") {
+    let points = Key::new(Part::View, Value::Field(Field::Points));
+    if let (Some(all), Some(Val::Map(eye))) = (solved(&q), value_at(&mut t, &points)) {
+        if let Some(Val::Map(every)) = value_of(&all, &points) {
             for (name, e) in every {
                 if !eye.iter().any(|(k, _)| k == name) {
                     eye.push((name.clone(), e.clone()));
@@ -577,22 +575,49 @@ fn hooked_exact(p: &ProblemIn, hooks: Hooks<Real>) -> Option<Vec<Tree>> {
     Some(vec![solve::solve_with::<Real>(p, &hooks).ok()?.result])
 }
 
-/// The lighting with the vector `raw` (the light L or the normal N as the
-/// problem gives it) used without dividing it by its length: the unit
-/// vector the set-up holds is scaled back by |raw|. The results gain the
-/// vector itself (`shade.L`, `shade.N`), which `practice` asks for.
-fn unnormalized(p: &ProblemIn, raw: &Vec3In, name: &'static str) -> Option<Vec<Tree>> {
-    let v: Vec<f64> = raw
-        .iter()
+/// A vector of a lighting problem that the text divides by its length.
+#[derive(Clone, Copy)]
+enum Unit {
+    /// L, the direction to the light.
+    L,
+    /// N, the normal.
+    N,
+}
+
+impl Unit {
+    /// The vector as the problem gives it.
+    fn given(self, p: &ProblemIn) -> Option<&Vec3In> {
+        let s = p.shade.as_ref()?;
+        match self {
+            Unit::L => s.light.as_ref(),
+            Unit::N => s.normal.as_ref(),
+        }
+    }
+
+    /// Its value in the results (`shade.L`, `shade.N`).
+    fn shading(self) -> Shading {
+        match self {
+            Unit::L => Shading::L,
+            Unit::N => Shading::N,
+        }
+    }
+}
+
+/// L or N not divided by its length: the lighting with the vector `raw`
+/// the problem gives used as it is, the unit vector the set-up holds
+/// scaled back by |raw|. The results gain the vector itself (`shade.L`,
+/// `shade.N`), which `practice` asks for.
+fn unnormalized(p: &ProblemIn, which: Unit) -> Option<Vec<Tree>> {
+    let v: Vec<f64> = (which.given(p)?.iter())
         .map(|x| x.0.eval::<f64>().ok())
         .collect::<Option<_>>()?;
     let len = v.iter().map(|x| x * x).sum::<f64>().sqrt();
     if len.is_nan() || len <= 0.0 || (len - 1.0).abs() < 1e-12 || !p.light.is_empty() {
         return None;
     }
-    let scale = move |s: &mut Setup<f64>| match name {
-        "N" => s.surface.normal *= len,
-        _ => {
+    let scale = move |s: &mut Setup<f64>| match which {
+        Unit::N => s.surface.normal *= len,
+        Unit::L => {
             if let [l] = &mut s.lights[..] {
                 if let LightKind::Directional { dir } = &mut l.kind {
                     *dir *= len;
@@ -605,14 +630,10 @@ fn unnormalized(p: &ProblemIn, raw: &Vec3In, name: &'static str) -> Option<Vec<T
         ..Hooks::default()
     };
     let mut t = solve::solve_with::<f64>(p, &hooks).ok()?.result;
-    if let Some(Val::Map(kv)) = find_mut(&mut t, &["shade"]) {
-        kv.insert(
-            0,
-            (
-                name.to_string(),
-                Val::List(v.iter().map(Val::num).collect()),
-            ),
-        );
+    let shade = Part::Shade.key();
+    if let Some((_, Val::Map(kv))) = t.iter_mut().find(|(k, _)| *k == shade) {
+        let raw = Val::List(v.iter().map(Val::num).collect());
+        kv.insert(0, (Field::Shading(which.shading()).key(), raw));
     }
     Some(vec![t])
 }
@@ -643,8 +664,10 @@ fn printed_value(printed: &toml::Value, like: &Val) -> Option<Val> {
     Some(v)
 }
 
-/// The value at a dotted result key (a list index may be a number).
-fn find_key<'a>(t: &'a mut Tree, key: &str) -> Option<&'a mut Val> {
+/// The value of an answer key in the results, to alter (as
+/// [`value_of`] reads it).
+fn value_at<'a>(t: &'a mut Tree, key: &Key) -> Option<&'a mut Val> {
+    let key = key.to_string();
     let mut parts = key.split('.');
     let first = parts.next()?;
     let mut cur = &mut t.iter_mut().find(|(k, _)| k == first)?.1;
@@ -696,14 +719,10 @@ fn map_camera(q: &mut ProblemIn, f: impl FnOnce(&mut crate::input::problem::Came
     }
 }
 
-/// The value at a path of map keys.
-fn find_mut<'a>(t: &'a mut Tree, path: &[&str]) -> Option<&'a mut Val> {
-    find_key(t, &path.join("."))
-}
-
 /// Calls `f` on each clip result (one, or each of a list).
 fn for_each_clip(t: &mut Tree, mut f: impl FnMut(&mut Vec<(String, Val)>)) {
-    if let Some((_, v)) = t.iter_mut().find(|(k, _)| k == "clip") {
+    let clip = Part::Clip.key();
+    if let Some((_, v)) = t.iter_mut().find(|(k, _)| *k == clip) {
         match v {
             Val::Map(kv) => f(kv),
             Val::List(items) => {
@@ -721,15 +740,6 @@ fn for_each_clip(t: &mut Tree, mut f: impl FnMut(&mut Vec<(String, Val)>)) {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn the_catalog_has_every_code_once_in_order() {
-        let codes: Vec<Code> = CATALOG.iter().map(|m| m.code).collect();
-        assert_eq!(codes, Code::all());
-        for c in Code::all() {
-            assert_eq!(find(c).map(|x| x.code), Some(c));
-        }
-    }
 
     #[test]
     fn the_spellings_are_the_snake_case_of_the_names_and_distinct() {
@@ -750,6 +760,16 @@ mod tests {
         }
     }
 
+    /// The window's top in the results computed with a mistake.
+    fn top_with(code: Code, p: &ProblemIn) -> f64 {
+        let t = &code.apply(p).expect("the mistake applies")[0];
+        let top = Key::new(Part::Window, Value::Field(Field::Edge(Edge::Top, false)));
+        match value_of(t, &top) {
+            Some(Val::Num(top)) => top.value,
+            v => panic!("window.top is {v:?}"),
+        }
+    }
+
     #[test]
     fn fovy_not_halved_is_diagnosed_over_90_degrees_too() {
         // fovy = 60°, near = 1: the right top is tan 30° = 0.57735; with
@@ -759,29 +779,18 @@ mod tests {
             "t",
         )
         .unwrap();
-        let m = find(Code::FovyNotHalved).unwrap();
-        let t = &(m.apply)(&p).unwrap()[0];
-        let Some(Val::Num(top)) = lookup(t, "window.top") else {
-            panic!()
-        };
-        assert!((top.value - 3f64.sqrt()).abs() < 1e-12);
+        let top = top_with(Code::FovyNotHalved, &p);
+        assert!((top - 3f64.sqrt()).abs() < 1e-12, "{top}");
         // Over 90°: fovy = 120°, tan 120° = −√3, so top = −√3 (near = 1).
         let p120 = ProblemIn::parse(
             "title = 't'\nask = ['window']\n[perspective]\nnear = 1\nfovy = 120\naspect = 1\n",
             "t",
         )
         .unwrap();
-        let t = &(m.apply)(&p120).expect("fovy_not_halved applies over 90°")[0];
-        let Some(Val::Num(top)) = lookup(t, "window.top") else {
-            panic!()
-        };
-        assert!((top.value + 3f64.sqrt()).abs() < 1e-12, "{}", top.value);
+        let top = top_with(Code::FovyNotHalved, &p120);
+        assert!((top + 3f64.sqrt()).abs() < 1e-12, "{top}");
         // degrees as radians: tan(30 rad) = −6.405331196646276
-        let m = find(Code::DegreesAsRadians).unwrap();
-        let t = &(m.apply)(&p).unwrap()[0];
-        let Some(Val::Num(top)) = lookup(t, "window.top") else {
-            panic!()
-        };
-        assert!((top.value - 30f64.tan()).abs() < 1e-9, "{}", top.value);
+        let top = top_with(Code::DegreesAsRadians, &p);
+        assert!((top - 30f64.tan()).abs() < 1e-9, "{top}");
     }
 }

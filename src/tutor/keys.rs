@@ -8,7 +8,7 @@ use crate::num::vec::V3;
 use crate::num::Scalar;
 use crate::stages::camera;
 use crate::stages::clip::{self, ClipBox};
-use crate::stages::lighting::{self, rgb_val, LightTerm, Material, Model};
+use crate::stages::lighting::{self, rgb_val, Highlight, LightTerm, Material};
 use crate::stages::trace::{Name, NoTrace, Recorder, Step, Trace, Val};
 use crate::stages::window;
 use crate::tutor::key::{Axis, Cut, Edge, Factor, Field, Key, Node, Part, Plane, Shading, Value};
@@ -149,15 +149,10 @@ pub fn shade_run<T: Scalar, R: lighting::RuleSet<T>>(
     if sh.emissive.iter().any(|x| !x.is_zero_value()) {
         out.push((key(Shading::Emissive), rgb_val(&sh.emissive)));
     }
-    let blinn = m.model == Model::Blinn;
     if s.lights.len() == 1 {
-        out.push((key(Shading::R), opt_vec(&sh.r)));
-        if blinn {
-            out.push((key(Shading::H), opt_vec(&sh.h)));
-            out.push((key(Shading::NDotH), opt_num(&sh.cos_nh)));
-        }
-        out.push((key(Shading::CosAlpha), opt_num(&sh.cos_alpha)));
-        out.push((key(Shading::CosBeta), opt_num(&sh.cos_beta)));
+        let (hl, ca) = (m.model.highlight(), opt_num(&sh.cos_alpha));
+        let vs = vectors(hl, &sh.r, &sh.h, &sh.cos_nh, ca, &sh.cos_beta);
+        out.extend(vs.into_iter().map(|(s, v)| (key(s), v)));
     } else {
         out.extend(vectors_per_light(s, &sh.view, rules));
     }
@@ -186,37 +181,69 @@ fn material_step<T: Scalar>(m: &Material<T>) -> Step {
         )
 }
 
-/// With several lights: R (H, N·H), cos α and cos β as lists, one entry per
-/// light (recomputed without steps: they are recorded already).
+/// One light's vectors and cosines in the results' order: R, the values
+/// of the model's highlight base ([`Highlight`]: none of their own for
+/// R·V, whose R and cos β every model shows; H and N·H for Blinn–Phong's
+/// N·H), cos α, cos β. An exhaustive match: a new base says here which
+/// values it adds.
+fn vectors<T: Scalar>(
+    hl: Highlight,
+    r: &Option<V3<T>>,
+    h: &Option<V3<T>>,
+    cos_nh: &Option<T>,
+    cos_alpha: Val,
+    cos_beta: &Option<T>,
+) -> Vec<(Shading, Val)> {
+    let mut out = vec![(Shading::R, opt_vec(r))];
+    match hl {
+        Highlight::RDotV => {}
+        Highlight::NDotH => {
+            out.push((Shading::H, opt_vec(h)));
+            out.push((Shading::NDotH, opt_num(cos_nh)));
+        }
+    }
+    out.push((Shading::CosAlpha, cos_alpha));
+    out.push((Shading::CosBeta, opt_num(cos_beta)));
+    out
+}
+
+/// With several lights: [`vectors`] as lists, one entry per light (null
+/// for a light out of range; recomputed without steps: they are recorded
+/// already).
 fn vectors_per_light<T: Scalar, R: lighting::RuleSet<T>>(
     s: &Setup<T>,
     view: &V3<T>,
     rules: &R,
 ) -> Vec<(String, Val)> {
-    let m = &s.material;
-    let n = s.lights.len();
-    let terms: Vec<Option<LightTerm<T>>> = (s.lights.iter().enumerate())
+    let (m, n) = (&s.material, s.lights.len());
+    let hl = m.model.highlight();
+    let none = vectors::<T>(hl, &None, &None, &None, Val::Null, &None);
+    let per: Vec<Vec<(Shading, Val)>> = (s.lights.iter().enumerate())
         .map(|(i, l)| {
             let at = (i, n);
-            lighting::light_term_with(m, l, at, &s.surface, view, true, rules, &mut NoTrace)
+            let t =
+                lighting::light_term_with(m, l, at, &s.surface, view, true, rules, &mut NoTrace);
+            match t {
+                Some(t) => vectors(
+                    hl,
+                    &t.r,
+                    &t.h,
+                    &t.cos_nh,
+                    Val::num(&t.cos_alpha),
+                    &t.cos_beta,
+                ),
+                None => none.clone(),
+            }
         })
         .collect();
-    let list = |f: &dyn Fn(&LightTerm<T>) -> Val| {
-        Val::List(
-            terms
-                .iter()
-                .map(|t| t.as_ref().map(f).unwrap_or(Val::Null))
-                .collect(),
-        )
-    };
-    let mut out = vec![(key(Shading::R), list(&|t| opt_vec(&t.r)))];
-    if m.model == Model::Blinn {
-        out.push((key(Shading::H), list(&|t| opt_vec(&t.h))));
-        out.push((key(Shading::NDotH), list(&|t| opt_num(&t.cos_nh))));
-    }
-    out.push((key(Shading::CosAlpha), list(&|t| Val::num(&t.cos_alpha))));
-    out.push((key(Shading::CosBeta), list(&|t| opt_num(&t.cos_beta))));
-    out
+    (none.iter().enumerate())
+        .map(|(j, (s, _))| {
+            (
+                key(*s),
+                Val::List(per.iter().map(|v| v[j].1.clone()).collect()),
+            )
+        })
+        .collect()
 }
 
 /// Light i's range, distance, attenuation and spot factor.
@@ -370,6 +397,49 @@ mod tests {
                 asked != (s == Shading::Emissive),
                 "{s:?}: add it to SHADE_ORDER"
             );
+        }
+    }
+
+    /// The lighting values in the results of a problem with `lights`
+    /// (and an emissive material), under every model.
+    fn shown_by_some_model(lights: &str) -> Vec<Shading> {
+        let mut shown = Vec::new();
+        for m in lighting::Model::all() {
+            let text = format!(
+                "title = 't'\n[shade]\nmodel = '{}'\nnormal = [0, 0, 1]\ncolor = [1, 0, 0]\n{lights}\n[shade.material]\nemissive = [0.1, 0, 0]\n",
+                m.name()
+            );
+            let p = crate::input::problem::ProblemIn::parse(&text, "t").unwrap();
+            let result = crate::tutor::solve::solve::<f64>(&p).unwrap().result;
+            let shade = Node::Part(Part::Shade);
+            let Some((_, Val::Map(kv))) = result.iter().find(|(k, _)| *k == shade.to_string())
+            else {
+                panic!("no shade results under {m:?}")
+            };
+            for (k, _) in kv {
+                if let Some(Node::Field(Field::Shading(s))) = Node::read(k, Some(&shade)) {
+                    shown.push(s);
+                }
+            }
+        }
+        shown
+    }
+
+    #[test]
+    fn every_lighting_value_is_in_some_models_results() {
+        // With one light and with two, some model's run must put each
+        // value in the results (L and N, the unit vectors, are steps of the
+        // solution that check reads from the steps): a new value no run
+        // produces fails here.
+        let one = shown_by_some_model("light = [1, 0, 1]");
+        let two = shown_by_some_model(
+            "[[light]]\ntype = 'directional'\ndirection = [0, 0, 1]\n[[light]]\ntype = 'point'\nposition = [0, 3, 4]\n",
+        );
+        for s in Shading::all() {
+            let given = matches!(s, Shading::L | Shading::N);
+            let missing = "no model's run puts it in the results (shade_run)";
+            assert_eq!(one.contains(&s), !given, "{s:?}, one light: {missing}");
+            assert_eq!(two.contains(&s), !given, "{s:?}, two lights: {missing}");
         }
     }
 

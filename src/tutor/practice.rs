@@ -24,7 +24,7 @@ use crate::input::problem::ProblemIn;
 use crate::msg::{Msg, Said};
 use crate::stages::trace::{Name, Step, Val};
 use crate::tutor::check::{agrees, Marker, Settings, Verdict, FOLLOW_THROUGH};
-use crate::tutor::diagnose::{Code, Mistake};
+use crate::tutor::diagnose::Code;
 use crate::tutor::generate::{Difficulty, Topic};
 use crate::tutor::key::{Field, Key, Part, Shading, Value};
 use crate::tutor::solution::lookup;
@@ -257,7 +257,7 @@ pub struct Outcome {
     /// the answer was credited by follow-through.
     pub follow_through: Option<Val>,
     /// The mistakes of the catalog that reproduce a wrong answer.
-    pub mistakes: Vec<&'static Mistake>,
+    pub mistakes: Vec<Code>,
     /// Why the source's printed value is wrong, when the answer is that
     /// misprint (`copied_misprint`).
     pub why: Option<Msg>,
@@ -342,7 +342,7 @@ pub struct Summary {
     /// Of those, right.
     pub retries_correct: usize,
     /// Each mistake made, with the keys it explains.
-    pub mistakes: Vec<(&'static Mistake, Vec<String>)>,
+    pub mistakes: Vec<(Code, Vec<String>)>,
     /// What to practise next.
     pub next: (Topic, Difficulty),
 }
@@ -553,7 +553,7 @@ impl<'a> Session<'a> {
             .filter_map(|o| Some((o.key.as_str(), o.read.as_ref()?)))
             .collect();
         out.mistakes = m.fitting(&item.key, &read, &j.mistakes, &agreed);
-        if out.mistakes.iter().any(|x| x.code == Code::CopiedMisprint) {
+        if out.mistakes.contains(&Code::CopiedMisprint) {
             out.why = m.erratum(&item.key);
         }
         out
@@ -564,12 +564,12 @@ impl<'a> Session<'a> {
     pub fn summary(&self) -> Summary {
         let done: Vec<&Outcome> = self.scored.iter().flatten().collect();
         let count = |f: &dyn Fn(&Outcome) -> bool| done.iter().filter(|o| f(o)).count();
-        let mut mistakes: Vec<(&'static Mistake, Vec<String>)> = Vec::new();
+        let mut mistakes: Vec<(Code, Vec<String>)> = Vec::new();
         for o in &done {
             for m in &o.mistakes {
-                match mistakes.iter_mut().find(|(x, _)| x.code == m.code) {
+                match mistakes.iter_mut().find(|(x, _)| x == m) {
                     Some((_, keys)) => keys.push(o.key.clone()),
-                    None => mistakes.push((m, vec![o.key.clone()])),
+                    None => mistakes.push((*m, vec![o.key.clone()])),
                 }
             }
         }

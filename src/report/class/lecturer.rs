@@ -88,11 +88,17 @@ pub fn to_json(class: &Class, s: &Stats, settings: &Settings, lang: Lang) -> Val
             "counts": counts, "flags": k.flags.iter().map(|f| flag_code(*f)).collect::<Vec<_>>(),
         })
     }).collect();
-    let mistakes: Vec<Value> = s.mistakes.iter().map(|m| json!({
-        "code": m.mistake.code, "description": mistake_text(m.mistake, lang),
-        "students": m.students, "keys": m.keys,
-        "also": m.also.iter().map(|a| a.code).collect::<Vec<_>>(), "step": step_json(&m.step, lang),
-    })).collect();
+    let mistakes: Vec<Value> = s
+        .mistakes
+        .iter()
+        .map(|m| {
+            json!({
+                "code": m.mistake, "description": mistake_text(m.mistake, lang),
+                "students": m.students, "keys": m.keys,
+                "also": m.also, "step": step_json(&m.step, lang),
+            })
+        })
+        .collect();
     let wrong: Vec<Value> = s.wrong_answers.iter().map(|w| json!({
         "key": w.key, "variant": w.variant,
         "expected": w.expected.as_ref().map(|e| json!({ "decimal": value_json(e), "exact": exact_json(e) })),
@@ -174,7 +180,7 @@ fn explaining<'a>(s: &'a Stats, key: &str) -> Vec<&'a str> {
     s.mistakes
         .iter()
         .filter(|m| m.keys.iter().any(|k| k == key))
-        .map(|m| m.mistake.code.as_str())
+        .map(|m| m.mistake.as_str())
         .collect()
 }
 

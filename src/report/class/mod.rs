@@ -36,8 +36,8 @@ pub fn said(e: &Error, lang: Lang) -> String {
 fn mistakes(ms: &[(String, Marking)]) -> String {
     let mut codes: Vec<&str> = Vec::new();
     for d in ms.iter().flat_map(|(_, m)| &m.diagnoses) {
-        if !codes.contains(&d.mistake.code.as_str()) {
-            codes.push(d.mistake.code.as_str());
+        if !codes.contains(&d.mistake.as_str()) {
+            codes.push(d.mistake.as_str());
         }
     }
     codes.join(" ")

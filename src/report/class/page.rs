@@ -323,7 +323,7 @@ fn mistake_item(doc: Doc, m: &MistakeStats, st: &Style) -> String {
     let mut out = format!(
         "{} [{}] — {n} {who}: {}. {}: {}.",
         strong(esc(doc, mistake_text(m.mistake, lang))),
-        esc(doc, m.mistake.code.as_str()),
+        esc(doc, m.mistake.as_str()),
         esc(doc, &m.students.join(", ")),
         esc(doc, &w(lang, C::Explains)),
         esc(doc, &m.keys.join(", ")),
@@ -336,7 +336,7 @@ fn mistake_item(doc: Doc, m: &MistakeStats, st: &Style) -> String {
         ));
     }
     if !m.also.is_empty() {
-        let codes: Vec<&str> = m.also.iter().map(|a| a.code.as_str()).collect();
+        let codes: Vec<&str> = m.also.iter().map(|a| a.as_str()).collect();
         out.push_str(&format!(
             " ({}: {})",
             esc(doc, &words::of(lang).check(&CheckWord::AlsoFollow)),
@@ -412,7 +412,7 @@ fn students_section(doc: Doc, class: &Class, s: &Stats, lang: Lang) -> String {
             .iter()
             .map(|m| {
                 vec![
-                    esc(doc, m.mistake.code.as_str()),
+                    esc(doc, m.mistake.as_str()),
                     esc(doc, &m.students.join(", ")),
                 ]
             })
@@ -438,7 +438,7 @@ fn students_section(doc: Doc, class: &Class, s: &Stats, lang: Lang) -> String {
                 .mistakes
                 .iter()
                 .filter(|m| m.students.contains(&sh.who))
-                .map(|m| m.mistake.code.as_str())
+                .map(|m| m.mistake.as_str())
                 .collect();
             row.push(esc(doc, &codes.join(" ")));
             row

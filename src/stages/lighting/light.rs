@@ -9,7 +9,7 @@
 //! a listening recorder calls them, and lane types are never recorded).
 
 use super::{
-    label, listening, max0, pow, Light, LightKind, LightTerm, Material, Model, Part, RuleSet,
+    label, listening, max0, pow, Highlight, Light, LightKind, LightTerm, Material, Part, RuleSet,
     Surface,
 };
 use crate::msg::{LightPart, Msg, SpotZone};
@@ -203,8 +203,8 @@ fn incidence_step<T: Scalar>(
 }
 
 /// The specular part of one light: R = 2N(L·N) − L and cos β = R·V
-/// (Blinn: H = norm(V + L) and N·H), then the highlight max(cos β, 0)ⁿ
-/// (Blinn: max(N·H, 0)ⁿ) where the term is added: everywhere, or only
+/// (with the model's [`Highlight::NDotH`], Blinn's: H = norm(V + L) and
+/// N·H), then the highlight max(cos β, 0)ⁿ (max(N·H, 0)ⁿ) where the term is added: everywhere, or only
 /// where cos α > 0 when the material's specular needs a lit surface.
 /// Evaluated when the term is added in some lane, or explained.
 #[allow(clippy::too_many_arguments)]
@@ -254,13 +254,14 @@ fn specular<T: Scalar, R: RuleSet<T>>(
         .res(Name::math("cos β"), Val::num(&cos_beta))
         .sub(Name::math("cos β"), Subst::dot(&r, v))
     });
-    let cos_spec = if mat.model == Model::Blinn {
-        let (h, nh) = half_vector(n, &term.l, v, s.camera.is_some(), at, tr);
-        term.h = Some(h);
-        term.cos_nh = Some(nh.clone());
-        nh
-    } else {
-        cos_beta.clone()
+    let cos_spec = match mat.model.highlight() {
+        Highlight::NDotH => {
+            let (h, nh) = half_vector(n, &term.l, v, s.camera.is_some(), at, tr);
+            term.h = Some(h);
+            term.cos_nh = Some(nh.clone());
+            nh
+        }
+        Highlight::RDotV => cos_beta.clone(),
     };
     term.r = Some(r);
     term.cos_beta = Some(cos_beta);
@@ -345,10 +346,9 @@ fn highlight_step<T: Scalar>(
 ) -> Step {
     let s = Step::new(
         label(at, LightPart::Highlight),
-        if mat.model == Model::Blinn {
-            "max(N·H, 0)ⁿ"
-        } else {
-            "max(cos β, 0)ⁿ"
+        match mat.model.highlight() {
+            Highlight::NDotH => "max(N·H, 0)ⁿ",
+            Highlight::RDotV => "max(cos β, 0)ⁿ",
         },
     )
     .val(Name::math("n"), Val::num(&mat.shininess))

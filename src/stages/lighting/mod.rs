@@ -58,7 +58,47 @@ pub enum Model {
     Blinn,
 }
 
+/// The base of a model's highlight max(·, 0)ⁿ.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Highlight {
+    /// The text's cos β = R·V, R = 2N(L·N) − L.
+    RDotV,
+    /// Blinn–Phong's N·H, H = norm(L + V) (Direct3D 9).
+    NDotH,
+}
+
 impl Model {
+    /// Every model, in `--model`'s order.
+    pub fn all() -> Vec<Model> {
+        std::iter::successors(Some(Model::Ambient), |m| m.next()).collect()
+    }
+
+    /// The model after this one: an exhaustive match, so a new model is
+    /// listed as soon as it compiles.
+    fn next(self) -> Option<Model> {
+        match self {
+            Model::Ambient => Some(Model::Diffuse),
+            Model::Diffuse => Some(Model::Specular),
+            Model::Specular => Some(Model::Lambert),
+            Model::Lambert => Some(Model::Phong),
+            Model::Phong => Some(Model::Blinn),
+            Model::Blinn => None,
+        }
+    }
+
+    /// The base of the model's highlight (where it has a specular term):
+    /// R·V, or N·H for Blinn–Phong. The stage computes it and the
+    /// results show its values (H and N·H) by this, so a new model says
+    /// here which it uses.
+    pub fn highlight(self) -> Highlight {
+        match self {
+            Model::Blinn => Highlight::NDotH,
+            Model::Ambient | Model::Diffuse | Model::Specular | Model::Lambert | Model::Phong => {
+                Highlight::RDotV
+            }
+        }
+    }
+
     /// Which terms the model adds: (ambient, diffuse, specular).
     pub fn terms(self) -> (bool, bool, bool) {
         match self {

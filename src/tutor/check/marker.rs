@@ -24,7 +24,7 @@ use crate::input::problem::ProblemIn;
 use crate::msg::Msg;
 use crate::num::Real;
 use crate::stages::trace::{Name, Step, Val};
-use crate::tutor::diagnose::{Mistake, CATALOG};
+use crate::tutor::diagnose::Code;
 use crate::tutor::follow::Given;
 use crate::tutor::key::{Key, Part};
 use crate::tutor::keys::ordered_keys;
@@ -51,7 +51,7 @@ pub struct Marker {
     /// How answers are marked.
     pub settings: Settings,
     /// Each mistake of the catalog that applies, with its results.
-    variants: Vec<(&'static Mistake, Vec<Tree>)>,
+    variants: Vec<(Code, Vec<Tree>)>,
     /// Exact forms already turned into exact numbers.
     exact: RefCell<HashMap<String, Option<Real>>>,
 }
@@ -68,7 +68,7 @@ pub struct Judgement {
     /// The answer as read (None when it could not be).
     pub read: Option<Read>,
     /// The mistakes of the catalog whose value it is (of a wrong answer).
-    pub mistakes: Vec<&'static Mistake>,
+    pub mistakes: Vec<Code>,
 }
 
 impl Marker {
@@ -91,9 +91,9 @@ impl Marker {
                 }
             }
         }
-        let variants = CATALOG
-            .iter()
-            .filter_map(|m| Some((m, (m.apply)(p)?)))
+        let variants = Code::all()
+            .into_iter()
+            .filter_map(|m| Some((m, m.apply(p)?)))
             .collect();
         Ok(Marker {
             problem: p.clone(),
@@ -143,7 +143,7 @@ impl Marker {
         &'a self,
         key: &'a str,
         right: &'a Val,
-    ) -> impl Iterator<Item = (&'static Mistake, &'a Val)> + 'a {
+    ) -> impl Iterator<Item = (Code, &'a Val)> + 'a {
         self.variants.iter().flat_map(move |(m, trees)| {
             trees
                 .iter()
@@ -175,11 +175,11 @@ impl Marker {
         // a mistake's value itself is wrong, however it rounds (where the
         // tolerance can tell it from grafika's)
         let rel = self.settings.tolerance;
-        let mut mistakes: Vec<&'static Mistake> = Vec::new();
+        let mut mistakes: Vec<Code> = Vec::new();
         for (m, v) in self.mistaken(key, right) {
             if apart(v, right, key, rel)
                 && matches_closely(&read, v, key, rel)
-                && !mistakes.iter().any(|x| x.code == m.code)
+                && !mistakes.contains(&m)
             {
                 mistakes.push(m);
             }
@@ -192,7 +192,7 @@ impl Marker {
         // a wrong answer: every mistake whose value it rounds
         for (m, v) in self.mistaken(key, right) {
             if self.judged(&read, v, key, true).verdict == Verdict::Correct
-                && !mistakes.iter().any(|x| x.code == m.code)
+                && !mistakes.contains(&m)
             {
                 mistakes.push(m);
             }
@@ -211,9 +211,9 @@ impl Marker {
         &self,
         key: &str,
         read: &Read,
-        candidates: &[&'static Mistake],
+        candidates: &[Code],
         agreed: &[(&str, &Read)],
-    ) -> Vec<&'static Mistake> {
+    ) -> Vec<Code> {
         let Some(right) = lookup(&self.result, key) else {
             return vec![];
         };
@@ -232,7 +232,7 @@ impl Marker {
         };
         self.variants
             .iter()
-            .filter(|(m, _)| candidates.iter().any(|c| c.code == m.code))
+            .filter(|(m, _)| candidates.contains(m))
             .filter(|(_, trees)| {
                 trees
                     .iter()

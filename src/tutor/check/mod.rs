@@ -39,7 +39,7 @@ use crate::error::Result;
 use crate::input::answer::Read;
 use crate::input::problem::ProblemIn;
 use crate::stages::trace::Val;
-use crate::tutor::diagnose::{Code, Mistake};
+use crate::tutor::diagnose::Code;
 use crate::tutor::key::{Field, Key, Node, Part, Value};
 
 pub use crate::tutor::solution::Tree;
@@ -138,12 +138,12 @@ pub struct Marked {
 #[derive(Clone, Debug)]
 pub struct Diagnosis {
     /// The mistake.
-    pub mistake: &'static Mistake,
+    pub mistake: Code,
     /// The answers it reproduces.
     pub keys: Vec<String>,
     /// Other mistakes that reproduce only some of these answers, with the
     /// same values (the answers given cannot tell them apart).
-    pub also: Vec<&'static Mistake>,
+    pub also: Vec<Code>,
 }
 
 /// The marking of a whole answer file.

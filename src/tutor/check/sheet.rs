@@ -54,7 +54,7 @@ impl Marker {
             let mut mistakes = j.mistakes;
             if from_text {
                 // the source's own answers: that it printed them is no diagnosis
-                mistakes.retain(|m| m.code != Code::CopiedMisprint);
+                mistakes.retain(|m| *m != Code::CopiedMisprint);
             }
             marked.push(Marked {
                 key: key.clone(),
@@ -64,7 +64,7 @@ impl Marker {
                 given_value: given.cloned(),
                 expected: Some(expected.clone()),
                 note: j.note,
-                diagnosis: mistakes.iter().map(|m| m.code).collect(),
+                diagnosis: mistakes,
                 why: None,
                 read: j.read,
             });
@@ -141,15 +141,10 @@ impl Marker {
                 m.diagnosis.clear();
                 continue;
             };
-            let candidates: Vec<_> = m
-                .diagnosis
-                .iter()
-                .filter_map(|c| crate::tutor::diagnose::find(*c))
-                .collect();
-            let fits = self.fitting(&m.key, read, &candidates, &agreed);
-            m.diagnosis = fits.iter().map(|f| f.code).collect();
+            let fits = self.fitting(&m.key, read, &m.diagnosis, &agreed);
+            m.diagnosis = fits.clone();
             for f in fits {
-                match out.iter_mut().find(|d| d.mistake.code == f.code) {
+                match out.iter_mut().find(|d| d.mistake == f) {
                     Some(d) => d.keys.push(m.key.clone()),
                     None => out.push(Diagnosis {
                         mistake: f,
@@ -175,7 +170,7 @@ impl Marker {
             m.diagnosis.sort_by_key(|c| {
                 folded
                     .iter()
-                    .position(|d| d.mistake.code == *c || d.also.iter().any(|a| a.code == *c))
+                    .position(|d| d.mistake == *c || d.also.contains(c))
             });
         }
         folded

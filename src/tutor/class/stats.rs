@@ -36,7 +36,7 @@ use crate::msg::Msg;
 use crate::num::Real;
 use crate::stages::trace::{Step, Val};
 use crate::tutor::check::{Marked, Settings};
-use crate::tutor::diagnose::Mistake;
+use crate::tutor::diagnose::Code;
 use crate::tutor::keys::ordered_keys;
 use crate::tutor::solve;
 
@@ -121,13 +121,13 @@ pub struct StepRef {
 #[derive(Clone, Debug)]
 pub struct MistakeStats {
     /// The mistake.
-    pub mistake: &'static Mistake,
+    pub mistake: Code,
     /// The students who made it, in file order.
     pub students: Vec<String>,
     /// The keys it explains, in the solution's order.
     pub keys: Vec<String>,
     /// Other mistakes that give the same values for some of these answers.
-    pub also: Vec<&'static Mistake>,
+    pub also: Vec<Code>,
     /// The step where it is made: the step of its first key.
     pub step: Option<StepRef>,
 }

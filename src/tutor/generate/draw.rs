@@ -7,6 +7,7 @@ use crate::input::problem::ProblemIn;
 use crate::msg::{DrawnTitle, Msg, NamedPoint, Number, ShadeAsked, StatedCamera, Statement};
 use crate::num::rng::SplitMix64;
 use crate::num::Real;
+use crate::stages::lighting::Model;
 use crate::stages::trace::Val;
 use crate::tutor::check::default_keys;
 use crate::tutor::key::{Axis, Field, Key, Part, Shading, Value};
@@ -575,13 +576,7 @@ fn clip_problem(diff: Difficulty, status: usize, rng: &mut SplitMix64) -> Option
 
 /// A lighting problem's vectors, model and constants for the difficulty:
 /// (N, L, V, model, [ka, kd, ks, n] unless the text's).
-type Draw = (
-    [i64; 3],
-    [i64; 3],
-    [i64; 3],
-    &'static str,
-    Option<[Number; 4]>,
-);
+type Draw = ([i64; 3], [i64; 3], [i64; 3], Model, Option<[Number; 4]>);
 
 /// Draws N, L, V, the model and (hard) the constants.
 fn shade_draw(diff: Difficulty, rng: &mut SplitMix64) -> Draw {
@@ -597,7 +592,7 @@ fn shade_draw(diff: Difficulty, rng: &mut SplitMix64) -> Draw {
             ]),
             [0, 0, 1],
             [0, 0, 1],
-            "phong",
+            Model::Phong,
             None,
         ),
         Difficulty::Medium => (
@@ -611,7 +606,7 @@ fn shade_draw(diff: Difficulty, rng: &mut SplitMix64) -> Draw {
             ]),
             [0, 0, 1],
             *rng.pick(&[[0, 0, 1], [0, 1, 1], [1, 0, 1]]),
-            *rng.pick(&["phong", "lambert", "blinn"]),
+            *rng.pick(&[Model::Phong, Model::Lambert, Model::Blinn]),
             None,
         ),
         Difficulty::Hard => {
@@ -626,7 +621,7 @@ fn shade_draw(diff: Difficulty, rng: &mut SplitMix64) -> Draw {
                 vec(rng),
                 vec(rng),
                 vec(rng),
-                *rng.pick(&["phong", "blinn", "lambert"]),
+                *rng.pick(&[Model::Phong, Model::Blinn, Model::Lambert]),
                 Some(k),
             )
         }
@@ -634,26 +629,44 @@ fn shade_draw(diff: Difficulty, rng: &mut SplitMix64) -> Draw {
 }
 
 /// What a lighting problem asks for, and the answers checked, follow the
-/// model: (the constants as stated, what is asked, the check keys).
+/// model: (the constants as stated, what is asked, the check keys). One
+/// arm per model, so an exam can draw any model and a new one is asked
+/// here what its problem asks.
 fn shade_asked(
-    model: &str,
+    model: Model,
     [ka, kd, ks, sh]: [Number; 4],
 ) -> (Vec<(&'static str, Number)>, ShadeAsked, String) {
     use Shading::*;
     let keys = |v: &[Shading]| toml_keys(v.iter().map(|x| shade(*x)));
+    let all = || vec![("ka", ka), ("kd", kd), ("ks", ks), ("n", sh)];
     match model {
-        "lambert" => (
+        Model::Ambient => (
+            vec![("ka", ka)],
+            ShadeAsked::Ambient,
+            keys(&[Ambient, Color]),
+        ),
+        Model::Diffuse => (
+            vec![("kd", kd)],
+            ShadeAsked::Diffuse,
+            keys(&[CosAlpha, Diffuse, Color]),
+        ),
+        Model::Specular => (
+            vec![("ks", ks), ("n", sh)],
+            ShadeAsked::Specular,
+            keys(&[CosAlpha, R, CosBeta, Specular, Color]),
+        ),
+        Model::Lambert => (
             vec![("ka", ka), ("kd", kd)],
             ShadeAsked::Lambert,
             keys(&[CosAlpha, Ambient, Diffuse, Color]),
         ),
-        "blinn" => (
-            vec![("ka", ka), ("kd", kd), ("ks", ks), ("n", sh)],
+        Model::Blinn => (
+            all(),
             ShadeAsked::Blinn,
             keys(&[CosAlpha, H, NDotH, Ambient, Diffuse, Specular, Color]),
         ),
-        _ => (
-            vec![("ka", ka), ("kd", kd), ("ks", ks), ("n", sh)],
+        Model::Phong => (
+            all(),
             ShadeAsked::Phong,
             keys(&[CosAlpha, R, CosBeta, Ambient, Diffuse, Specular, Color]),
         ),
@@ -675,7 +688,11 @@ fn shade_problem(diff: Difficulty, rng: &mut SplitMix64) -> Option<Draft> {
         [half, half, half],
     ];
     let color = *rng.pick(&colors);
-    let (n, l, v, model, k) = shade_draw(diff, rng);
+    Some(shade_draft(color, shade_draw(diff, rng)))
+}
+
+/// The lighting problem of a surface colour and what was drawn.
+fn shade_draft(color: [Number; 3], (n, l, v, model, k): Draw) -> Draft {
     let coeffs = k.map_or(String::new(), |k| {
         format!(
             "ka = {}\nkd = {}\nks = {}\nshininess = {}\n",
@@ -690,20 +707,44 @@ fn shade_problem(diff: Difficulty, rng: &mut SplitMix64) -> Option<Draft> {
         color,
         light: l,
         view: v,
-        model: model.to_string(),
+        model: model.name().to_string(),
         constants,
         asked,
     };
     let body = format!(
-        "ask = [\"shade\"]\n\n[shade]\nmodel = \"{model}\"\nlight = {}\nnormal = {}\nview = {}\ncolor = {}\n{coeffs}\n[check]\nkeys = {keys}\n",
+        "ask = [\"shade\"]\n\n[shade]\nmodel = \"{}\"\nlight = {}\nnormal = {}\nview = {}\ncolor = {}\n{coeffs}\n[check]\nkeys = {keys}\n",
+        model.name(),
         ints(l),
         ints(n),
         ints(v),
         arr(&color.iter().map(|c| c.to_string()).collect::<Vec<_>>()),
     );
-    Some(Draft {
+    Draft {
         title: DrawnTitle::Lighting,
         statement,
         body,
-    })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_exam_can_ask_about_every_model() {
+        // N = (0, 3, 4)/5, L = V = (0, 0, 1): cos α = 4/5, lit, every
+        // answer rational. Each model's problem is accepted as a drawn one
+        // is, and each answer it checks is in its results.
+        for m in Model::all() {
+            let draw = ([0, 3, 4], [0, 0, 1], [0, 0, 1], m, None);
+            let d = shade_draft([int(1), int(1), int(0)], draw);
+            let g = accept(d, Topic::Shade, Difficulty::Easy, 0)
+                .unwrap_or_else(|| panic!("{m:?}: the drawn problem is refused"));
+            assert!(!g.keys.is_empty(), "{m:?}");
+            for k in &g.keys {
+                let v = lookup(&g.report.result, k);
+                assert!(v.is_some_and(|v| *v != Val::Null), "{m:?}: no {k}");
+            }
+        }
+    }
 }

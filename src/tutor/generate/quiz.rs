@@ -27,7 +27,7 @@ use super::{Generated, Topic};
 use crate::input::problem::ProblemIn;
 use crate::stages::trace::Val;
 use crate::tutor::check::tolerance;
-use crate::tutor::diagnose::{Mistake, Tree, CATALOG};
+use crate::tutor::diagnose::{Code, Tree};
 use crate::tutor::key::{Field, Key, Part, Value};
 use crate::tutor::solution::lookup;
 
@@ -145,7 +145,7 @@ pub struct Wrong {
     /// Its absolute tolerance (0 for text).
     pub tolerance: f64,
     /// The mistakes that give this value (they cannot be told apart by it).
-    pub mistakes: Vec<&'static Mistake>,
+    pub mistakes: Vec<Code>,
 }
 
 /// One blank: the key's value, its tolerance, the known wrong values.
@@ -200,10 +200,10 @@ pub fn blanks(g: &Generated, rel: f64, figs: u32) -> Vec<Asked> {
 }
 
 /// The results of every catalog mistake that applies to the problem.
-fn mistaken_trees(p: &ProblemIn) -> Vec<(&'static Mistake, Tree)> {
-    CATALOG
-        .iter()
-        .filter_map(|m| (m.apply)(p).map(|ts| (m, ts)))
+fn mistaken_trees(p: &ProblemIn) -> Vec<(Code, Tree)> {
+    Code::all()
+        .into_iter()
+        .filter_map(|m| m.apply(p).map(|ts| (m, ts)))
         .flat_map(|(m, ts)| ts.into_iter().map(move |t| (m, t)))
         .collect()
 }
@@ -212,13 +212,7 @@ fn mistaken_trees(p: &ProblemIn) -> Vec<(&'static Mistake, Tree)> {
 /// each leaf the mistaken values that differ from it (beyond both
 /// tolerances: the intervals do not overlap) and are not absurd, merged
 /// when two mistakes give the same value.
-fn key_blanks(
-    key: &str,
-    value: &Val,
-    trees: &[(&'static Mistake, Tree)],
-    rel: f64,
-    figs: u32,
-) -> Vec<Blank> {
+fn key_blanks(key: &str, value: &Val, trees: &[(Code, Tree)], rel: f64, figs: u32) -> Vec<Blank> {
     let right = typed_leaves(key, value, rel);
     let scale = magnitude(&right);
     let mut blanks: Vec<Blank> = right
@@ -245,7 +239,7 @@ fn key_blanks(
             }
             let (w, wt) = written(w, wt, figs);
             if apart(&b.value, b.tolerance, &w, wt) {
-                add_wrong(b, w, wt, m);
+                add_wrong(b, w, wt, *m);
             }
         }
     }
@@ -306,14 +300,14 @@ pub fn round_sig(x: f64, n: u32) -> f64 {
 
 /// Adds a mistaken value to a blank, or the mistake to the wrong value it
 /// falls within.
-fn add_wrong(b: &mut Blank, value: Typed, tolerance: f64, m: &'static Mistake) {
+fn add_wrong(b: &mut Blank, value: Typed, tolerance: f64, m: Code) {
     match b
         .wrong
         .iter_mut()
         .find(|w| !apart(&w.value, w.tolerance, &value, tolerance))
     {
         Some(w) => {
-            if !w.mistakes.iter().any(|x| x.code == m.code) {
+            if !w.mistakes.contains(&m) {
                 w.mistakes.push(m);
             }
         }

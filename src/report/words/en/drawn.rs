@@ -98,6 +98,9 @@ impl DrawnWords for En {
 /// What a lighting problem asks for.
 fn shade_asked(a: ShadeAsked) -> &'static str {
     match a {
+        ShadeAsked::Ambient => "the ambient term",
+        ShadeAsked::Diffuse => "cos α = L·N, the diffuse term",
+        ShadeAsked::Specular => "cos α = L·N, R = 2N(L·N) − L, cos β = R·V, the specular term",
         ShadeAsked::Lambert => "cos α = L·N, the ambient and diffuse terms",
         ShadeAsked::Blinn => "cos α = L·N, the half vector H = norm(L + V) and N·H, the ambient, diffuse and specular terms",
         ShadeAsked::Phong => "cos α = L·N, R = 2N(L·N) − L, cos β = R·V, the ambient, diffuse and specular terms",

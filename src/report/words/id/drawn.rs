@@ -99,6 +99,9 @@ impl DrawnWords for Id {
 /// What a lighting problem asks for.
 fn shade_asked(a: ShadeAsked) -> &'static str {
     match a {
+        ShadeAsked::Ambient => "komponen ambient",
+        ShadeAsked::Diffuse => "cos α = L·N, komponen diffuse",
+        ShadeAsked::Specular => "cos α = L·N, vektor pantulan R = 2N(L·N) − L, cos β = R·V, komponen specular",
         ShadeAsked::Lambert => "cos α = L·N, komponen ambient dan diffuse",
         ShadeAsked::Blinn => "cos α = L·N, vektor setengah jalan H = norm(L + V) dan N·H, komponen ambient, diffuse dan specular",
         ShadeAsked::Phong => "cos α = L·N, vektor pantulan R = 2N(L·N) − L, cos β = R·V, komponen ambient, diffuse dan specular",

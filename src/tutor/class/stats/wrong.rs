@@ -8,7 +8,7 @@ use crate::stages::trace::Val;
 use crate::tutor::check::tolerance;
 use crate::tutor::check::{written, Marked, Settings, Verdict};
 use crate::tutor::class::{full_key, Paper, Sheet};
-use crate::tutor::diagnose::{Mistake, CATALOG};
+use crate::tutor::diagnose::Code;
 use crate::tutor::practice::step_for;
 
 /// Each catalog mistake named in the class with its students and keys, the
@@ -24,9 +24,7 @@ pub(super) fn mistakes(
         let v = s.variant.unwrap_or(1);
         for (part, m) in s.outcome.iter().flatten() {
             for d in &m.diagnoses {
-                let at = out
-                    .iter()
-                    .position(|(x, _, _)| x.mistake.code == d.mistake.code);
+                let at = out.iter().position(|(x, _, _)| x.mistake == d.mistake);
                 let at = at.unwrap_or_else(|| {
                     let stats = MistakeStats {
                         mistake: d.mistake,
@@ -50,15 +48,15 @@ pub(super) fn mistakes(
                     }
                 }
                 for a in &d.also {
-                    if !x.also.iter().any(|b| b.code == a.code) {
-                        x.also.push(a);
+                    if !x.also.contains(a) {
+                        x.also.push(*a);
                     }
                 }
             }
         }
     }
     let rank = |k: &String| keys.iter().position(|x| x == k).unwrap_or(usize::MAX);
-    let catalog = |m: &Mistake| CATALOG.iter().position(|c| c.code == m.code);
+    let catalog = |m: Code| Code::all().iter().position(|c| *c == m);
     for (x, v, _) in &mut out {
         x.keys.sort_by_key(|k| rank(k));
         x.step = x.keys.first().and_then(|k| step_of(k, solved.get(*v - 1)?));
