@@ -41,14 +41,19 @@ pub fn value_of<'a>(result: &'a [(String, Val)], key: &Key) -> Option<&'a Val> {
     let Some(p) = key.part else {
         return inside(result, &key.value);
     };
-    let part = named(result, &Node::Part(p))?;
-    let part = match key.segment {
-        Some(i) => nth(part, i)?,
-        None => part,
-    };
-    match part {
+    match part_value(result, p, key.segment)? {
         Val::Map(kv) => inside(kv, &key.value),
         _ => None,
+    }
+}
+
+/// The results of a part in a problem file's results (of one segment of
+/// a clip with several: an index into its list).
+pub fn part_value(result: &[(String, Val)], part: Part, segment: Option<usize>) -> Option<&Val> {
+    let v = named(result, &Node::Part(part))?;
+    match segment {
+        Some(i) => nth(v, i),
+        None => Some(v),
     }
 }
 
@@ -271,11 +276,15 @@ impl Given {
     /// The part's key in a problem file's results (`view`, `clip`, or
     /// `clip.1` for the second of several segments).
     pub fn key(&self) -> String {
-        let segment = match self {
+        key::prefix(self.part(), self.segment())
+    }
+
+    /// The segment of a clip problem with several.
+    fn segment(&self) -> Option<usize> {
+        match self {
             Given::Clip(c) => c.segment,
             _ => None,
-        };
-        key::prefix(self.part(), segment)
+        }
     }
 
     /// The part's name in figure files (`view`, `clip-2`).
@@ -470,7 +479,7 @@ impl Report {
     /// the part's key.
     pub fn part_result(&self, g: &Given) -> &[(String, Val)] {
         match &self.asked {
-            Asked::File(_) => match lookup(&self.result, &g.key()) {
+            Asked::File(_) => match part_value(&self.result, g.part(), g.segment()) {
                 Some(Val::Map(kv)) => kv,
                 _ => &[],
             },
