@@ -161,7 +161,8 @@ pub fn event_text(ev: &Event, look: &Look) -> String {
                 out.push_str(&look.style.step_body(s));
             }
             let answer = look.w(P::Answer);
-            out.push_str(&look.style.named(&format!("  {answer}: "), key, expected));
+            let (head, spelled) = (format!("  {answer}: "), key.to_string());
+            out.push_str(&look.style.named(&head, &spelled, expected));
             out.push('\n');
             wrap_lines(&out)
         }
@@ -328,6 +329,7 @@ fn summary_text(s: &Summary, look: &Look) -> String {
     if !s.mistakes.is_empty() {
         out.push_str(&format!("  {}\n", look.w(P::MistakesMade)));
         for (m, keys) in &s.mistakes {
+            let keys: Vec<String> = keys.iter().map(Key::to_string).collect();
             let line = format!("• {} [{}]: {}", mistake_text(*m, lang), m, keys.join(", "));
             out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
         }
@@ -345,18 +347,15 @@ fn name(x: &impl std::fmt::Debug) -> String {
 }
 
 /// What a key asks for, in a few words, and the key.
-pub fn label(key: &str, lang: Lang) -> String {
-    match key.parse::<crate::tutor::key::Key>() {
-        Ok(k) => format!("{} ({key})", words::of(lang).answer_words(&k)),
-        Err(_) => key.to_string(),
-    }
+pub fn label(key: &Key, lang: Lang) -> String {
+    format!("{} ({key})", words::of(lang).answer_words(key))
 }
 
 /// How to write the answer: its shape.
-fn shape(key: &str, expected: &Val, lang: Lang) -> String {
+fn shape(key: &Key, expected: &Val, lang: Lang) -> String {
     let t = |w: P| words::of(lang).practice(&w);
-    let field = match key.parse::<Key>().map(|k| k.value) {
-        Ok(key::Value::Field(f)) => Some(f),
+    let field = match key.value {
+        key::Value::Field(f) => Some(f),
         _ => None,
     };
     match field {
@@ -397,7 +396,7 @@ pub fn event_json(ev: &Event, lang: Lang) -> Value {
             again,
             ..
         } => json!({
-            "event": "ask", "key": key, "index": index + 1, "total": total,
+            "event": "ask", "key": key.to_string(), "index": index + 1, "total": total,
             "again": again.as_ref().map(|a| match a {
                 Again::Empty => "empty",
                 Again::Unreadable => "unreadable",
@@ -406,7 +405,7 @@ pub fn event_json(ev: &Event, lang: Lang) -> Value {
             }),
         }),
         Event::Verdict(o) => json!({
-            "event": "verdict", "key": o.key, "given": o.given,
+            "event": "verdict", "key": o.key.to_string(), "given": o.given,
             "read": o.read.as_ref().map(|r| value_json(&r.value())),
             "verdict": o.verdict.as_str(), "code": o.code,
             "expected": value(&o.expected), "note": w(&o.note),
@@ -416,7 +415,7 @@ pub fn event_json(ev: &Event, lang: Lang) -> Value {
             "retry": o.retry,
         }),
         Event::Hint { key, level, step } => json!({
-            "event": "hint", "key": key, "level": level,
+            "event": "hint", "key": key.to_string(), "level": level,
             "title": step.as_ref().map(|s| w(&s.title)),
             "formula": step.as_ref().map(|s| w(&s.formula)),
             "values": step.as_ref().filter(|_| *level >= 2).map(|s| {
@@ -428,10 +427,10 @@ pub fn event_json(ev: &Event, lang: Lang) -> Value {
             expected,
             step,
         } => json!({
-            "event": "show", "key": key, "expected": value(expected),
+            "event": "show", "key": key.to_string(), "expected": value(expected),
             "step": step.as_ref().map(|s| step_json(s, lang)),
         }),
-        Event::Skip { key } => json!({ "event": "skip", "key": key }),
+        Event::Skip { key } => json!({ "event": "skip", "key": key.to_string() }),
         Event::Summary(s) => summary_json(s, lang),
     }
 }
@@ -449,7 +448,7 @@ fn summary_json(s: &Summary, lang: Lang) -> Value {
         "hints": s.hints,
         "retries": { "answered": s.retries, "correct": s.retries_correct },
         "mistakes": s.mistakes.iter().map(|(m, keys)| json!({
-            "code": m, "mistake": mistake_text(*m, lang), "keys": keys,
+            "code": m, "mistake": mistake_text(*m, lang), "keys": keys.iter().map(Key::to_string).collect::<Vec<_>>(),
         })).collect::<Vec<_>>(),
         "next": { "topic": name(&s.next.0), "difficulty": name(&s.next.1) },
     })

@@ -270,9 +270,9 @@ fn light_factors<T: Scalar>(s: &Setup<T>, i: usize, view: &V3<T>) -> Val {
 /// t, intersection point and that point's outcode, the text's deciding
 /// step), the clipped segment and the status; the lighting's unit L and
 /// N, cos α, R (H and N·H for Blinn), cos β, the terms, their sum and the
-/// clamped colour. Each key is a [`Key`] written by its `Display`; a new
+/// clamped colour. Each key is a typed [`Key`] (spelled by its `Display`); a new
 /// part is a new arm here (the match is over every [`Part`]).
-pub fn ordered_keys(result: &[(String, Val)]) -> Vec<String> {
+pub fn ordered_keys(result: &[(String, Val)]) -> Vec<Key> {
     let mut keys: Vec<Key> = Vec::new();
     for (name, v) in result {
         let Some(Node::Part(part)) = Node::read(name, None) else {
@@ -314,7 +314,7 @@ pub fn ordered_keys(result: &[(String, Val)]) -> Vec<String> {
             }
         }
     }
-    keys.iter().map(Key::to_string).collect()
+    keys
 }
 
 /// The lighting's values in the order of the text's solution (the
@@ -487,6 +487,7 @@ mod tests {
             "shade.cos_alpha",
             "shade.color",
         ];
-        assert_eq!(ordered_keys(&result), want);
+        let got: Vec<String> = ordered_keys(&result).iter().map(Key::to_string).collect();
+        assert_eq!(got, want);
     }
 }

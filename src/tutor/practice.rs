@@ -27,13 +27,13 @@ use crate::tutor::check::{agrees, Marker, Settings, Verdict, FOLLOW_THROUGH};
 use crate::tutor::diagnose::Code;
 use crate::tutor::generate::{Difficulty, Topic};
 use crate::tutor::key::{Field, Key, Part, Shading, Value};
-use crate::tutor::solution::lookup;
+use crate::tutor::solution::value_of;
 
 /// One value the student is asked for.
 #[derive(Clone, Debug)]
 pub struct Item {
     /// The answer key, as in `check` (`view.n`, `project.points.A`).
-    pub key: String,
+    pub key: Key,
     /// grafika's exact value.
     pub expected: Val,
     /// The worked step that computes it (formula, values substituted, result).
@@ -73,15 +73,22 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
         .order
         .iter()
         .filter(|k| {
-            wanted
-                .as_ref()
-                .is_none_or(|w| w.contains(k) || *k == "shade.L" || *k == "shade.N")
+            let unit = matches!(
+                (k.part, &k.value),
+                (
+                    Some(Part::Shade),
+                    Value::Field(Field::Shading(Shading::L | Shading::N))
+                )
+            );
+            // `[check] keys` as the file spells them: one that is no key
+            // of the solution asks nothing, as `check` reports it unknown
+            unit || wanted.as_ref().is_none_or(|w| w.contains(&k.to_string()))
         })
         .filter_map(|key| {
             Some(Item {
                 key: key.clone(),
-                expected: lookup(&marker.result, key)?.clone(),
-                step: key.parse().ok().and_then(|k| step_for(&k, &marker.steps)),
+                expected: value_of(&marker.result, key)?.clone(),
+                step: step_for(key, &marker.steps),
             })
         })
         .collect();
@@ -240,7 +247,7 @@ pub enum Again {
 #[derive(Clone, Debug)]
 pub struct Outcome {
     /// The key.
-    pub key: String,
+    pub key: Key,
     /// The answer as typed (None when skipped or revealed).
     pub given: Option<String>,
     /// The answer as read (None when it could not be read, or none given).
@@ -276,7 +283,7 @@ pub enum Event {
         /// How many values the problem asks.
         total: usize,
         /// The key.
-        key: String,
+        key: Key,
         /// grafika's value (for its shape: a number, a point, a matrix).
         expected: Val,
         /// Why it is asked again.
@@ -288,7 +295,7 @@ pub enum Event {
     /// substituted, a step short of the value ([`hint_step`]).
     Hint {
         /// The key.
-        key: String,
+        key: Key,
         /// 1 or 2.
         level: u8,
         /// The hint's step: the step's title and formula, and at level 2
@@ -298,7 +305,7 @@ pub enum Event {
     /// The step worked out and the value (counted as revealed).
     Show {
         /// The key.
-        key: String,
+        key: Key,
         /// grafika's value.
         expected: Val,
         /// The step.
@@ -307,7 +314,7 @@ pub enum Event {
     /// A value skipped.
     Skip {
         /// The key.
-        key: String,
+        key: Key,
     },
     /// The end: the summary.
     Summary(Summary),
@@ -342,7 +349,7 @@ pub struct Summary {
     /// Of those, right.
     pub retries_correct: usize,
     /// Each mistake made, with the keys it explains.
-    pub mistakes: Vec<(Code, Vec<String>)>,
+    pub mistakes: Vec<(Code, Vec<Key>)>,
     /// What to practise next.
     pub next: (Topic, Difficulty),
 }
@@ -503,7 +510,10 @@ impl<'a> Session<'a> {
         self.latest
             .iter()
             .flatten()
-            .find(|o| o.key == key && (o.verdict == Verdict::Wrong || o.code == FOLLOW_THROUGH))
+            .find(|o| {
+                o.key.to_string() == key
+                    && (o.verdict == Verdict::Wrong || o.code == FOLLOW_THROUGH)
+            })
             .and_then(|o| o.read.clone())
     }
 
@@ -513,7 +523,9 @@ impl<'a> Session<'a> {
     /// that reproduce it and that the earlier right answers allow.
     fn judge(&self, item: &Item, text: &str) -> Outcome {
         let m = &self.plan.marker;
-        let j = m.judge(&item.key, &toml::Value::String(text.to_string()));
+        // the marker reads keys as answer files spell them
+        let spelled = item.key.to_string();
+        let j = m.judge(&spelled, &toml::Value::String(text.to_string()));
         let mut out = Outcome {
             key: item.key.clone(),
             given: Some(text.to_string()),
@@ -536,8 +548,8 @@ impl<'a> Session<'a> {
             return out;
         };
         let own = |k: &str| self.own(k);
-        if let Some(ft) = m.carried(&item.key, &own) {
-            if m.follows(&read, &ft, &item.key) {
+        if let Some(ft) = m.carried(&spelled, &own) {
+            if m.follows(&read, &ft, &spelled) {
                 out.verdict = Verdict::Correct;
                 out.code = FOLLOW_THROUGH;
                 out.note = Msg::FollowThrough;
@@ -545,16 +557,17 @@ impl<'a> Session<'a> {
                 return out;
             }
         }
-        let agreed: Vec<(&str, &Read)> = self
+        let agreed: Vec<(String, &Read)> = self
             .latest
             .iter()
             .flatten()
             .filter(|o| agrees(o.verdict, o.code))
-            .filter_map(|o| Some((o.key.as_str(), o.read.as_ref()?)))
+            .filter_map(|o| Some((o.key.to_string(), o.read.as_ref()?)))
             .collect();
-        out.mistakes = m.fitting(&item.key, &read, &j.mistakes, &agreed);
+        let agreed: Vec<(&str, &Read)> = agreed.iter().map(|(k, r)| (k.as_str(), *r)).collect();
+        out.mistakes = m.fitting(&spelled, &read, &j.mistakes, &agreed);
         if out.mistakes.contains(&Code::CopiedMisprint) {
-            out.why = m.erratum(&item.key);
+            out.why = m.erratum(&spelled);
         }
         out
     }
@@ -564,7 +577,7 @@ impl<'a> Session<'a> {
     pub fn summary(&self) -> Summary {
         let done: Vec<&Outcome> = self.scored.iter().flatten().collect();
         let count = |f: &dyn Fn(&Outcome) -> bool| done.iter().filter(|o| f(o)).count();
-        let mut mistakes: Vec<(Code, Vec<String>)> = Vec::new();
+        let mut mistakes: Vec<(Code, Vec<Key>)> = Vec::new();
         for o in &done {
             for m in &o.mistakes {
                 match mistakes.iter_mut().find(|(x, _)| x == m) {
@@ -699,13 +712,9 @@ fn figures(x: f64) -> usize {
     mantissa.chars().filter(|c| c.is_ascii_digit()).count()
 }
 
-/// The topic a key belongs to (a string that is no answer key: the
-/// pipeline).
-pub fn topic_of(key: &str) -> Topic {
-    let Ok(k) = key.parse::<Key>() else {
-        return Topic::Pipeline;
-    };
-    match (k.part, k.value) {
+/// The topic a key belongs to (a calculator command's key: the pipeline).
+pub fn topic_of(k: &Key) -> Topic {
+    match (k.part, &k.value) {
         (Some(Part::View), Value::Point(_) | Value::Field(Field::Points)) => Topic::View,
         (Some(Part::View), _) => Topic::Basis,
         (Some(Part::Project), _) => Topic::Project,
@@ -851,11 +860,15 @@ mod tests {
         ));
     }
 
+    fn key(s: &str) -> Key {
+        s.parse().unwrap_or_else(|_| panic!("{s} is a key"))
+    }
+
     #[test]
     fn the_topic_of_a_key() {
-        assert_eq!(topic_of("view.n"), Topic::Basis);
-        assert_eq!(topic_of("view.points.A"), Topic::View);
-        assert_eq!(topic_of("viewport.pixels.A"), Topic::Pipeline);
-        assert_eq!(topic_of("clip.0.status"), Topic::Clip);
+        assert_eq!(topic_of(&key("view.n")), Topic::Basis);
+        assert_eq!(topic_of(&key("view.points.A")), Topic::View);
+        assert_eq!(topic_of(&key("viewport.pixels.A")), Topic::Pipeline);
+        assert_eq!(topic_of(&key("clip.0.status")), Topic::Clip);
     }
 }

@@ -14,7 +14,7 @@ use crate::stages::camera::Camera;
 use crate::stages::clip::ClipBox;
 use crate::stages::projection::Projection;
 use crate::stages::trace::{Recorder, Step, Val};
-use crate::tutor::key::{self, Key, Part};
+use crate::tutor::key::{self, Field, Key, Node, Part, Value};
 
 /// A point or vector of the inputs, as the stages took it (f64 of the
 /// precision's value).
@@ -34,9 +34,63 @@ pub fn at<T: Scalar>(x: &T) -> f64 {
 /// nest under its key in a problem file's).
 pub type Tree = Vec<(String, Val)>;
 
-/// The value of an answer key in the results.
+/// The value of an answer key in the results, found by walking its typed
+/// names: the part, the segment (an index into a clip's list of
+/// segments), then the names and the light's index inside the part.
 pub fn value_of<'a>(result: &'a [(String, Val)], key: &Key) -> Option<&'a Val> {
-    lookup(result, &key.to_string())
+    let Some(p) = key.part else {
+        return inside(result, &key.value);
+    };
+    match part_value(result, p, key.segment)? {
+        Val::Map(kv) => inside(kv, &key.value),
+        _ => None,
+    }
+}
+
+/// The results of a part in a problem file's results (of one segment of
+/// a clip with several: an index into its list).
+pub fn part_value(result: &[(String, Val)], part: Part, segment: Option<usize>) -> Option<&Val> {
+    let v = named(result, &Node::Part(part))?;
+    match segment {
+        Some(i) => nth(v, i),
+        None => Some(v),
+    }
+}
+
+/// The value a key names inside its part's map: an exhaustive match, so a
+/// new kind of value is walked as soon as it compiles.
+fn inside<'a>(kv: &'a [(String, Val)], value: &Value) -> Option<&'a Val> {
+    let field = |f: Field| named(kv, &Node::Field(f));
+    let under = |v: &'a Val, n: Node| match v {
+        Val::Map(m) => named(m, &n),
+        _ => None,
+    };
+    match value {
+        Value::Field(f) => field(*f),
+        Value::Point(n) => under(field(Field::Points)?, Node::Point(n.clone())),
+        Value::Pixel(n) => under(field(Field::Pixels)?, Node::Point(n.clone())),
+        Value::Plane(p) => under(field(Field::Intersections)?, Node::Plane(*p)),
+        Value::Cut(p, c) => under(
+            under(field(Field::Intersections)?, Node::Plane(*p))?,
+            Node::Cut(*c),
+        ),
+        Value::Light(i) => nth(field(Field::Lights)?, *i),
+        Value::Factor(i, x) => under(nth(field(Field::Lights)?, *i)?, Node::Factor(*x)),
+    }
+}
+
+/// The value named `name` in a map of results (its spelling is `Node`'s).
+fn named<'a>(kv: &'a [(String, Val)], name: &Node) -> Option<&'a Val> {
+    let name = name.to_string();
+    kv.iter().find(|(k, _)| *k == name).map(|(_, v)| v)
+}
+
+/// Item `i` of a list of results.
+fn nth(v: &Val, i: usize) -> Option<&Val> {
+    match v {
+        Val::List(items) => items.get(i),
+        _ => None,
+    }
 }
 
 /// Looks up `a.b.c` (a list index may be a number) in the results.
@@ -222,11 +276,15 @@ impl Given {
     /// The part's key in a problem file's results (`view`, `clip`, or
     /// `clip.1` for the second of several segments).
     pub fn key(&self) -> String {
-        let segment = match self {
+        key::prefix(self.part(), self.segment())
+    }
+
+    /// The segment of a clip problem with several.
+    fn segment(&self) -> Option<usize> {
+        match self {
             Given::Clip(c) => c.segment,
             _ => None,
-        };
-        key::prefix(self.part(), segment)
+        }
     }
 
     /// The part's name in figure files (`view`, `clip-2`).
@@ -421,7 +479,7 @@ impl Report {
     /// the part's key.
     pub fn part_result(&self, g: &Given) -> &[(String, Val)] {
         match &self.asked {
-            Asked::File(_) => match lookup(&self.result, &g.key()) {
+            Asked::File(_) => match part_value(&self.result, g.part(), g.segment()) {
                 Some(Val::Map(kv)) => kv,
                 _ => &[],
             },
@@ -446,5 +504,69 @@ impl Report {
             .iter()
             .flat_map(|s| s.values.iter().chain(&s.result))
             .find_map(|(k, v)| first_not_finite(&k.to_string(), v, true))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn text(s: &str) -> Val {
+        Val::Text(s.to_string())
+    }
+
+    fn map(kv: &[(&str, Val)]) -> Val {
+        Val::Map(kv.iter().map(|(k, v)| (k.to_string(), v.clone())).collect())
+    }
+
+    fn key(s: &str) -> Key {
+        s.parse().unwrap_or_else(|_| panic!("{s} is a key"))
+    }
+
+    #[test]
+    fn a_typed_key_walks_to_its_value() {
+        let seg = |status: &str| {
+            map(&[
+                ("status", text(status)),
+                (
+                    "intersections",
+                    map(&[("left", map(&[("code", text("000000"))]))]),
+                ),
+            ])
+        };
+        let tree: Tree = vec![
+            ("view".into(), map(&[("points", map(&[("A", text("a"))]))])),
+            (
+                "clip".into(),
+                Val::List(vec![seg("accepted"), seg("clipped")]),
+            ),
+            (
+                "shade".into(),
+                map(&[(
+                    "lights",
+                    Val::List(vec![text("l0"), map(&[("spot", text("s1"))])]),
+                )]),
+            ),
+            ("top".into(), text("h")),
+        ];
+        let at = |k: &str| value_of(&tree, &key(k)).cloned();
+        assert_eq!(at("view.points.A"), Some(text("a")));
+        assert_eq!(at("clip.1.status"), Some(text("clipped")));
+        assert_eq!(at("clip[0].status"), Some(text("accepted")));
+        assert_eq!(at("clip.0.intersections.left.code"), Some(text("000000")));
+        assert_eq!(at("shade.lights.0"), Some(text("l0")));
+        assert_eq!(at("shade.lights[1].spot"), Some(text("s1")));
+        assert_eq!(at("top"), Some(text("h")));
+        // not in the results: no segment 2, no point B, a clip of several
+        // segments asked without one, a light's factor not computed
+        for k in [
+            "clip.2.status",
+            "view.points.B",
+            "clip.status",
+            "shade.lights.0.spot",
+            "window.top",
+        ] {
+            assert_eq!(at(k), None, "{k}");
+        }
     }
 }

@@ -6,8 +6,8 @@ use super::builders::Part;
 use super::{camera, clip, project, shade, window, Drawing, Figure};
 use crate::report::Style;
 use crate::stages::trace::Val;
-use crate::tutor::solution::lookup;
-use crate::tutor::solution::{Given, Report};
+use crate::tutor::key;
+use crate::tutor::solution::{part_value, Given, Report};
 
 /// The drawings of a report, in the order of its parts.
 pub fn drawings(r: &Report, st: &Style) -> Vec<Drawing> {
@@ -40,7 +40,7 @@ fn figures(r: &Report, g: &Given, st: &Style) -> Option<Vec<Figure>> {
         Given::Window(w) => {
             // the pixels of a problem file's viewport part join the window's
             let mut res = p.res.to_vec();
-            if let Some(Val::Map(vp)) = lookup(&r.result, "viewport") {
+            if let Some(Val::Map(vp)) = part_value(&r.result, key::Part::Viewport, None) {
                 res.extend(vp.iter().cloned());
             }
             let p = Part { res: &res, ..p };

@@ -29,7 +29,7 @@ use crate::tutor::follow::Given;
 use crate::tutor::key::{Key, Part};
 use crate::tutor::keys::ordered_keys;
 use crate::tutor::run::Hooks;
-use crate::tutor::solution::lookup;
+use crate::tutor::solution::{lookup, value_of};
 use crate::tutor::solve;
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -44,7 +44,7 @@ pub struct Marker {
     /// The worked steps of the solution.
     pub steps: Vec<Step>,
     /// The keys in the order of the text's solution.
-    pub order: Vec<String>,
+    pub order: Vec<Key>,
     /// The keys `check` expects: the problem's `[check] keys`, else
     /// [`default_keys`].
     pub keys: Vec<String>,
@@ -247,16 +247,19 @@ impl Marker {
     /// answer where it was wrong) given in place of grafika's; None when no
     /// earlier answer changes it.
     pub fn carried(&self, key: &str, own: &dyn Fn(&str) -> Option<Read>) -> Option<Val> {
-        let pos = self.order.iter().position(|k| k == key)?;
+        // a key read from a file: one that is no key (or not of this
+        // problem) is in no order, so nothing is carried to it
+        let key: Key = key.parse().ok()?;
+        let pos = self.order.iter().position(|k| *k == key)?;
         let earlier = &self.order[..pos];
-        let givens: HashMap<&str, Given<Real>> = earlier
+        let givens: Vec<(&Key, Given<Real>)> = earlier
             .iter()
-            .filter_map(|k| Some((k.as_str(), given(&own(k)?)?)))
+            .filter_map(|k| Some((k, given(&own(&k.to_string())?)?)))
             .collect();
         if givens.is_empty() {
             return None;
         }
-        let look = |k: &Key| givens.get(k.to_string().as_str()).cloned();
+        let look = |k: &Key| givens.iter().find(|(g, _)| *g == k).map(|(_, v)| v.clone());
         let hooks = Hooks {
             given: Some(&look),
             ..Hooks::default()
@@ -264,8 +267,8 @@ impl Marker {
         let result = solve::solve_with::<Real>(&self.problem, &hooks)
             .ok()?
             .result;
-        let v = lookup(&result, key)?;
-        let right = lookup(&self.result, key)?;
+        let v = value_of(&result, &key)?;
+        let right = value_of(&self.result, &key)?;
         differs(v, right).then(|| v.clone())
     }
 

@@ -38,6 +38,11 @@ impl Marker {
         let mut unknown = Vec::new();
         for key in &keys {
             let given = first.get(key.as_str()).copied();
+            // a key as the answer file (or `[check] keys`) spells it, looked
+            // up by its string: besides every `Key` it reaches a whole part
+            // (`view`, `clip.0`) and one component (`view.points.A.1`),
+            // which `check` marks as well; a key that reaches nothing is
+            // reported unknown
             let Some(expected) = lookup(&self.result, key) else {
                 if given.is_some() {
                     unknown.push(key.clone());

@@ -37,6 +37,7 @@ use crate::num::Real;
 use crate::stages::trace::{Step, Val};
 use crate::tutor::check::{Marked, Settings};
 use crate::tutor::diagnose::Code;
+use crate::tutor::key::Key;
 use crate::tutor::keys::ordered_keys;
 use crate::tutor::solve;
 
@@ -226,7 +227,7 @@ pub struct Stats {
 /// One problem of one variant solved once: its keys in the solution's order
 /// and its steps.
 struct Solved {
-    order: Vec<String>,
+    order: Vec<Key>,
     steps: Vec<Step>,
 }
 
@@ -278,12 +279,19 @@ fn key_order(paper: &Paper, solved: &[Vec<Solved>], sheets: &[&Sheet]) -> Vec<St
                 }
             }
         }
-        let order: Vec<&String> = solved
+        let order: Vec<&Key> = solved
             .iter()
             .filter_map(|v| v.get(i))
             .flat_map(|s| &s.order)
             .collect();
-        let rank = |k: &String| order.iter().position(|o| *o == k).unwrap_or(usize::MAX);
+        // a key as the answer files spell it: one that is no key is in no
+        // solution's order, and comes after them in the order first marked
+        let rank = |k: &String| {
+            let k = k.parse::<Key>().ok();
+            (order.iter())
+                .position(|o| Some(*o) == k.as_ref())
+                .unwrap_or(usize::MAX)
+        };
         let mut ranked: Vec<(usize, usize, String)> = marked
             .into_iter()
             .enumerate()
