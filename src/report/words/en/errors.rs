@@ -225,7 +225,7 @@ impl ErrorWords for En {
             IoWhy::NotText => "it is not UTF-8 text".into(),
             IoWhy::NotADirectory => "a folder on its path is a file".into(),
             IoWhy::ReadOnly => "the file system is read-only".into(),
-            IoWhy::Full => "no space is left on the device".into(),
+            IoWhy::Full => "no space left on the device".into(),
             IoWhy::TooLarge => "the file is too large for the file system".into(),
             IoWhy::BadName => "the file system does not accept that name".into(),
             IoWhy::Other(s) => s.clone(),
