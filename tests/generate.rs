@@ -7,7 +7,8 @@ use grafika::stages::trace::Val;
 use grafika::tutor::check::{self, Settings, Verdict};
 use grafika::tutor::diagnose::Code;
 use grafika::tutor::generate::{self, answer_toml, Difficulty, Topic};
-use grafika::tutor::solution::lookup;
+use grafika::tutor::key::{Key, Part};
+use grafika::tutor::solution::{lookup, value_of};
 use std::path::{Path, PathBuf};
 
 const TOPICS: [Topic; 7] = [
@@ -99,7 +100,12 @@ fn every_generated_problem_solves_and_its_key_scores_full_marks() {
                 let answers: Vec<(String, toml::Value)> = g
                     .keys
                     .iter()
-                    .map(|k| (k.clone(), answer_toml(lookup(&g.report.result, k).unwrap())))
+                    .map(|k| {
+                        (
+                            k.to_string(),
+                            answer_toml(value_of(&g.report.result, k).unwrap()),
+                        )
+                    })
                     .collect();
                 assert!(!answers.is_empty());
                 let m =
@@ -131,7 +137,7 @@ fn a_planted_mistake_is_caught_and_named() {
                     };
                     // The key with the mistaken value wherever the mistake
                     // changes an answer (the view matrix too, when it does).
-                    let mut keys = g.keys.clone();
+                    let mut keys: Vec<String> = g.keys.iter().map(Key::to_string).collect();
                     keys.push("view.matrix".into());
                     let tree = &variants[0];
                     let mut answers = Vec::new();
@@ -576,8 +582,8 @@ fn hard_keys_are_exact_where_an_exact_form_exists() {
                     assert!(!dyadic, "tan({f}°/2) has an exact form: {}", g.body);
                 }
                 for k in &g.keys {
-                    let v = lookup(&g.report.result, k).unwrap();
-                    let allowed = k.starts_with("window.") || k.starts_with("viewport.");
+                    let v = value_of(&g.report.result, k).unwrap();
+                    let allowed = matches!(k.part, Some(Part::Window | Part::Viewport));
                     assert!(allowed || !has_inexact(v), "{k} inexact in\n{}", g.body);
                 }
             }

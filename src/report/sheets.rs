@@ -8,8 +8,9 @@ use crate::report::lang::Lang;
 use crate::report::words::{self, words};
 use crate::report::{exact_json, value_json, Style};
 use crate::stages::trace::Val;
-use crate::tutor::generate::{key_lines, topics_name, Difficulty, Generated, Topic};
-use crate::tutor::solution::lookup;
+use crate::tutor::generate::{key_lines, problem_name, topics_name, Difficulty, Generated, Topic};
+use crate::tutor::key::Key;
+use crate::tutor::solution::value_of;
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -64,7 +65,7 @@ pub fn key_file(g: &Generated, lang: Lang) -> String {
 fn answers(g: &Generated) -> Vec<(String, Val)> {
     g.keys
         .iter()
-        .filter_map(|key| lookup(&g.report.result, key).map(|v| (key.clone(), v.clone())))
+        .filter_map(|key| value_of(&g.report.result, key).map(|v| (key.to_string(), v.clone())))
         .collect()
 }
 
@@ -109,10 +110,10 @@ pub fn exam_json(title: &str, seed: u64, variant: u32, exam: &[Generated], lang:
                 })
                 .collect();
             json!({
-                "file": format!("problem-{:02}.toml", i + 1),
+                "file": format!("{}.toml", problem_name(i + 1)),
                 "title": words(&g.title, lang),
                 "statement": words(&g.statement, lang),
-                "keys": g.keys,
+                "keys": g.keys.iter().map(Key::to_string).collect::<Vec<_>>(),
                 "answers": answers,
                 "solution": g.report.to_json(lang),
             })

@@ -80,7 +80,7 @@ impl Marker {
             .check
             .as_ref()
             .and_then(|c| c.keys.clone())
-            .unwrap_or_else(|| default_keys(&result));
+            .unwrap_or_else(|| default_keys(&result).iter().map(Key::to_string).collect());
         if let Some((_, Val::Map(kv))) = result.iter_mut().find(|(k, _)| k == "shade") {
             // the unit vectors are steps of the solution, not results of
             // `solve`; with one light there is one of each

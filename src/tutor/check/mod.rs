@@ -189,7 +189,7 @@ impl Marking {
 /// The answer keys a problem expects by default: every answer of the parts
 /// it solves, except those `asked_by_default` leaves out; the fields of
 /// a clip with several segments are each asked, all of them.
-pub fn default_keys(result: &Tree) -> Vec<String> {
+pub fn default_keys(result: &Tree) -> Vec<Key> {
     let mut keys = Vec::new();
     for (name, v) in result {
         match (Node::read(name, None), v) {
@@ -223,7 +223,7 @@ pub fn default_keys(result: &Tree) -> Vec<String> {
             _ => {}
         }
     }
-    keys.iter().map(Key::to_string).collect()
+    keys
 }
 
 /// The fields of a part's map in a result tree, with their values.

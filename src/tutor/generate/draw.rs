@@ -11,7 +11,7 @@ use crate::stages::lighting::Model;
 use crate::stages::trace::Val;
 use crate::tutor::check::default_keys;
 use crate::tutor::key::{Axis, Field, Key, Part, Shading, Value};
-use crate::tutor::solution::{lookup, value_of};
+use crate::tutor::solution::value_of;
 use crate::tutor::solve;
 use std::collections::{BTreeSet, HashSet};
 use std::fmt::Write as _;
@@ -82,7 +82,9 @@ fn accept(d: Draft, topic: Topic, diff: Difficulty, status: usize) -> Option<Gen
     let keys = problem
         .check
         .as_ref()
-        .and_then(|c| c.keys.clone())
+        .and_then(|c| c.keys.as_ref())
+        // written by the generator from typed keys (`toml_keys`), so each reads back
+        .map(|ks| ks.iter().filter_map(|k| k.parse().ok()).collect())
         .unwrap_or_else(|| default_keys(&report.result));
     if !nice_enough(&report.result, &keys, diff) {
         return None;
@@ -102,21 +104,16 @@ fn accept(d: Draft, topic: Topic, diff: Difficulty, status: usize) -> Option<Gen
 /// across the problem's answers), and at every level an answer has an exact
 /// form unless it rests on the tangent of an angle that has none in square
 /// roots (the hard window's fovy/2 of 20°, 25°, 35° or 40°: not of the form 3°·m/2^k).
-fn nice_enough(result: &[(String, Val)], keys: &[String], diff: Difficulty) -> bool {
+fn nice_enough(result: &[(String, Val)], keys: &[Key], diff: Difficulty) -> bool {
     let mut radicands = BTreeSet::new();
     for k in keys {
-        let Some(v) = lookup(result, k) else {
+        let Some(v) = value_of(result, k) else {
             continue;
         };
         let mut ok = true;
         for_each_num(v, &mut |n| match &n.exact {
             Some(e) => radicands.extend(radicands_of(e)),
-            None => {
-                ok &= matches!(
-                    k.parse::<Key>().map(|k| k.part),
-                    Ok(Some(Part::Window | Part::Viewport))
-                )
-            }
+            None => ok &= matches!(k.part, Some(Part::Window | Part::Viewport)),
         });
         if !ok {
             return false;
@@ -742,7 +739,7 @@ mod tests {
                 .unwrap_or_else(|| panic!("{m:?}: the drawn problem is refused"));
             assert!(!g.keys.is_empty(), "{m:?}");
             for k in &g.keys {
-                let v = lookup(&g.report.result, k);
+                let v = value_of(&g.report.result, k);
                 assert!(v.is_some_and(|v| *v != Val::Null), "{m:?}: no {k}");
             }
         }

@@ -27,8 +27,8 @@ use crate::msg::Msg;
 use crate::num::format::fmt_dec;
 use crate::num::rng::SplitMix64;
 use crate::stages::trace::Val;
-use crate::tutor::solution::lookup;
-use crate::tutor::solution::Report;
+use crate::tutor::key::Key;
+use crate::tutor::solution::{value_of, Report};
 
 use std::collections::HashSet;
 use std::fmt::Write as _;
@@ -78,7 +78,7 @@ pub struct Generated {
     /// The exact solution.
     pub report: Report,
     /// The answers asked for.
-    pub keys: Vec<String>,
+    pub keys: Vec<Key>,
 }
 
 /// The name of problem i (1-based) of an exam, as its files are named
@@ -152,7 +152,7 @@ pub fn topics_name(t: &[Topic]) -> String {
 pub fn key_lines(g: &Generated) -> String {
     let mut s = String::new();
     for k in &g.keys {
-        if let Some(v) = lookup(&g.report.result, k) {
+        if let Some(v) = value_of(&g.report.result, k) {
             let _ = writeln!(s, "{k} = {}", answer_toml(v));
         }
     }

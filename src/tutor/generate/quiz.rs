@@ -29,7 +29,7 @@ use crate::stages::trace::Val;
 use crate::tutor::check::tolerance;
 use crate::tutor::diagnose::{Code, Tree};
 use crate::tutor::key::{Field, Key, Part, Value};
-use crate::tutor::solution::lookup;
+use crate::tutor::solution::value_of;
 
 /// A mistaken value more than this many times the key's magnitude is left
 /// out of its blank.
@@ -188,10 +188,10 @@ pub fn blanks(g: &Generated, rel: f64, figs: u32) -> Vec<Asked> {
     g.keys
         .iter()
         .filter_map(|key| {
-            let value = lookup(&g.report.result, key)?.clone();
+            let value = value_of(&g.report.result, key)?.clone();
             let blanks = key_blanks(key, &value, &trees, rel, figs);
             Some(Asked {
-                key: key.parse().ok()?,
+                key: key.clone(),
                 value,
                 blanks,
             })
@@ -212,8 +212,9 @@ fn mistaken_trees(p: &ProblemIn) -> Vec<(Code, Tree)> {
 /// each leaf the mistaken values that differ from it (beyond both
 /// tolerances: the intervals do not overlap) and are not absurd, merged
 /// when two mistakes give the same value.
-fn key_blanks(key: &str, value: &Val, trees: &[(Code, Tree)], rel: f64, figs: u32) -> Vec<Blank> {
-    let right = typed_leaves(key, value, rel);
+fn key_blanks(key: &Key, value: &Val, trees: &[(Code, Tree)], rel: f64, figs: u32) -> Vec<Blank> {
+    let spelled = key.to_string();
+    let right = typed_leaves(&spelled, value, rel);
     let scale = magnitude(&right);
     let mut blanks: Vec<Blank> = right
         .into_iter()
@@ -222,14 +223,14 @@ fn key_blanks(key: &str, value: &Val, trees: &[(Code, Tree)], rel: f64, figs: u3
             Blank {
                 value,
                 tolerance,
-                pixel: tolerance::is_pixel(key),
+                pixel: tolerance::is_pixel(&spelled),
                 wrong: Vec::new(),
             }
         })
         .collect();
     for (m, t) in trees {
-        let Some(v) = lookup(t, key) else { continue };
-        let leaves = typed_leaves(key, v, rel);
+        let Some(v) = value_of(t, key) else { continue };
+        let leaves = typed_leaves(&spelled, v, rel);
         if leaves.len() != blanks.len() {
             continue; // another shape (a rejected segment): not comparable
         }
