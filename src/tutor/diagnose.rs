@@ -24,7 +24,7 @@ use crate::stages::trace::Val;
 use crate::stages::window::Window;
 use crate::tutor::key::{Cut, Edge, Field, Key, Part, Shading, Value};
 use crate::tutor::run::Hooks;
-use crate::tutor::solution::value_of;
+use crate::tutor::solution::{value_of, value_of_mut};
 use crate::tutor::solve;
 
 pub use crate::tutor::solution::Tree;
@@ -285,8 +285,8 @@ fn height_is_half_extent(p: &ProblemIn) -> Option<Vec<Tree>> {
     let mut t = solved(p)?;
     for (size, half) in [(Edge::Height, Edge::Top), (Edge::Width, Edge::Right)] {
         let edge = |e| Key::new(Part::Window, Value::Field(Field::Edge(e, false)));
-        let h = value_at(&mut t, &edge(half))?.clone();
-        *value_at(&mut t, &edge(size))? = h;
+        let h = value_of_mut(&mut t, &edge(half))?.clone();
+        *value_of_mut(&mut t, &edge(size))? = h;
     }
     Some(vec![t])
 }
@@ -326,7 +326,7 @@ fn d_sign(p: &ProblemIn) -> Option<Vec<Tree>> {
 /// results, the matrix's rows written as its columns.
 fn matrix_transposed(p: &ProblemIn) -> Option<Vec<Tree>> {
     let mut t = solved(p)?;
-    let m = value_at(&mut t, &Key::new(Part::View, Value::Field(Field::Matrix)))?;
+    let m = value_of_mut(&mut t, &Key::new(Part::View, Value::Field(Field::Matrix)))?;
     if let Val::List(rows) = m {
         let cells: Vec<Vec<Val>> = rows
             .iter()
@@ -454,7 +454,7 @@ fn pixel_y_from_top(p: &ProblemIn) -> Option<Vec<Tree>> {
         .ok()?;
     let mut t = solved(p)?;
     let pixels = Key::new(Part::Viewport, Value::Field(Field::Pixels));
-    let Val::Map(pixels) = value_at(&mut t, &pixels)? else {
+    let Val::Map(pixels) = value_of_mut(&mut t, &pixels)? else {
         return None;
     };
     for (_, px) in pixels.iter_mut() {
@@ -509,7 +509,7 @@ fn copied_misprint(p: &ProblemIn) -> Option<Vec<Tree>> {
         .iter()
         .filter_map(|e| {
             let mut t = base.clone();
-            let v = value_at(&mut t, &e.key.parse().ok()?)?;
+            let v = value_of_mut(&mut t, &e.key.parse().ok()?)?;
             *v = printed_value(printed(p, &e.key)?, v)?;
             Some(t)
         })
@@ -550,7 +550,7 @@ fn altered_points(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<T
     // the eye coordinates of every point (the view part alone projects none)
     q.ask = Some(vec!["view".into()]);
     let points = Key::new(Part::View, Value::Field(Field::Points));
-    if let (Some(all), Some(Val::Map(eye))) = (solved(&q), value_at(&mut t, &points)) {
+    if let (Some(all), Some(Val::Map(eye))) = (solved(&q), value_of_mut(&mut t, &points)) {
         if let Some(Val::Map(every)) = value_of(&all, &points) {
             for (name, e) in every {
                 if !eye.iter().any(|(k, _)| k == name) {
@@ -662,23 +662,6 @@ fn printed_value(printed: &toml::Value, like: &Val) -> Option<Val> {
         }
     }
     Some(v)
-}
-
-/// The value of an answer key in the results, to alter (as
-/// [`value_of`] reads it).
-fn value_at<'a>(t: &'a mut Tree, key: &Key) -> Option<&'a mut Val> {
-    let key = key.to_string();
-    let mut parts = key.split('.');
-    let first = parts.next()?;
-    let mut cur = &mut t.iter_mut().find(|(k, _)| k == first)?.1;
-    for part in parts {
-        cur = match cur {
-            Val::Map(kv) => &mut kv.iter_mut().find(|(k, _)| k == part)?.1,
-            Val::List(items) => items.get_mut(part.parse::<usize>().ok()?)?,
-            _ => return None,
-        };
-    }
-    Some(cur)
 }
 
 /// Multiplies the axes u, v, n by the factors given, keeping the basis

@@ -38,45 +38,84 @@ pub type Tree = Vec<(String, Val)>;
 /// names: the part, the segment (an index into a clip's list of
 /// segments), then the names and the light's index inside the part.
 pub fn value_of<'a>(result: &'a [(String, Val)], key: &Key) -> Option<&'a Val> {
-    let Some(p) = key.part else {
-        return inside(result, &key.value);
+    let hops = hops(key);
+    let (Hop::Name(first), rest) = hops.split_first()? else {
+        return None;
     };
-    match part_value(result, p, key.segment)? {
-        Val::Map(kv) => inside(kv, &key.value),
-        _ => None,
+    let mut cur = named(result, first)?;
+    for hop in rest {
+        cur = match (hop, cur) {
+            (Hop::Name(n), Val::Map(kv)) => named(kv, n)?,
+            (Hop::Nth(i), Val::List(items)) => items.get(*i)?,
+            _ => return None,
+        };
     }
+    Some(cur)
+}
+
+/// The value of an answer key in the results, to change it (a mistake's
+/// results are the right ones with one value changed).
+pub fn value_of_mut<'a>(result: &'a mut [(String, Val)], key: &Key) -> Option<&'a mut Val> {
+    let hops = hops(key);
+    let (Hop::Name(first), rest) = hops.split_first()? else {
+        return None;
+    };
+    let mut cur = named_mut(result, first)?;
+    for hop in rest {
+        cur = match (hop, cur) {
+            (Hop::Name(n), Val::Map(kv)) => named_mut(kv, n)?,
+            (Hop::Nth(i), Val::List(items)) => items.get_mut(*i)?,
+            _ => return None,
+        };
+    }
+    Some(cur)
 }
 
 /// The results of a part in a problem file's results (of one segment of
 /// a clip with several: an index into its list).
 pub fn part_value(result: &[(String, Val)], part: Part, segment: Option<usize>) -> Option<&Val> {
     let v = named(result, &Node::Part(part))?;
-    match segment {
-        Some(i) => nth(v, i),
-        None => Some(v),
+    match (segment, v) {
+        (Some(i), Val::List(items)) => items.get(i),
+        (Some(_), _) => None,
+        (None, v) => Some(v),
     }
 }
 
-/// The value a key names inside its part's map: an exhaustive match, so a
-/// new kind of value is walked as soon as it compiles.
-fn inside<'a>(kv: &'a [(String, Val)], value: &Value) -> Option<&'a Val> {
-    let field = |f: Field| named(kv, &Node::Field(f));
-    let under = |v: &'a Val, n: Node| match v {
-        Val::Map(m) => named(m, &n),
-        _ => None,
-    };
-    match value {
-        Value::Field(f) => field(*f),
-        Value::Point(n) => under(field(Field::Points)?, Node::Point(n.clone())),
-        Value::Pixel(n) => under(field(Field::Pixels)?, Node::Point(n.clone())),
-        Value::Plane(p) => under(field(Field::Intersections)?, Node::Plane(*p)),
-        Value::Cut(p, c) => under(
-            under(field(Field::Intersections)?, Node::Plane(*p))?,
-            Node::Cut(*c),
-        ),
-        Value::Light(i) => nth(field(Field::Lights)?, *i),
-        Value::Factor(i, x) => under(nth(field(Field::Lights)?, *i)?, Node::Factor(*x)),
+/// One step of the walk from the results to a key's value: a name in a
+/// map, or an item of a list.
+enum Hop {
+    Name(Node),
+    Nth(usize),
+}
+
+/// The walk to a key's value: its part (and segment), then what it names
+/// inside; an exhaustive match, so a new kind of value is walked as soon as
+/// it compiles.
+fn hops(key: &Key) -> Vec<Hop> {
+    let mut h = Vec::new();
+    if let Some(p) = key.part {
+        h.push(Hop::Name(Node::Part(p)));
+        h.extend(key.segment.map(Hop::Nth));
     }
+    let field = |f: Field| Hop::Name(Node::Field(f));
+    let name = |n: Node| Hop::Name(n);
+    match &key.value {
+        Value::Field(f) => h.push(field(*f)),
+        Value::Point(n) => h.extend([field(Field::Points), name(Node::Point(n.clone()))]),
+        Value::Pixel(n) => h.extend([field(Field::Pixels), name(Node::Point(n.clone()))]),
+        Value::Plane(p) => h.extend([field(Field::Intersections), name(Node::Plane(*p))]),
+        Value::Cut(p, c) => h.extend([
+            field(Field::Intersections),
+            name(Node::Plane(*p)),
+            name(Node::Cut(*c)),
+        ]),
+        Value::Light(i) => h.extend([field(Field::Lights), Hop::Nth(*i)]),
+        Value::Factor(i, x) => {
+            h.extend([field(Field::Lights), Hop::Nth(*i), name(Node::Factor(*x))])
+        }
+    }
+    h
 }
 
 /// The value named `name` in a map of results (its spelling is `Node`'s).
@@ -85,12 +124,10 @@ fn named<'a>(kv: &'a [(String, Val)], name: &Node) -> Option<&'a Val> {
     kv.iter().find(|(k, _)| *k == name).map(|(_, v)| v)
 }
 
-/// Item `i` of a list of results.
-fn nth(v: &Val, i: usize) -> Option<&Val> {
-    match v {
-        Val::List(items) => items.get(i),
-        _ => None,
-    }
+/// [`named`], to change it.
+fn named_mut<'a>(kv: &'a mut [(String, Val)], name: &Node) -> Option<&'a mut Val> {
+    let name = name.to_string();
+    kv.iter_mut().find(|(k, _)| *k == name).map(|(_, v)| v)
 }
 
 /// Looks up `a.b.c` (a list index may be a number) in the results.
