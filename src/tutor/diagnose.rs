@@ -551,7 +551,7 @@ fn altered_points(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<T
     }
     let mut t = solved(&kept)?;
     // the eye coordinates of every point (the view part alone projects none)
-    q.ask = Some(vec!["view".into()]);
+    q.ask = Some(vec![crate::tutor::key::Part::View]);
     if let (Some(all), Some(Val::Map(eye))) = (solved(&q), find_key(&mut t, "view.points")) {
         if let Some(Val::Map(every)) = lookup(&all, "view.points") {
             for (name, e) in every {
