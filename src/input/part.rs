@@ -36,7 +36,7 @@ impl Part {
 
     /// The part after this one: an exhaustive match, so a new part is
     /// listed (asked, solved and read from a key) as soon as it compiles.
-    pub fn next(self) -> Option<Part> {
+    fn next(self) -> Option<Part> {
         match self {
             Part::View => Some(Part::Project),
             Part::Project => Some(Part::Window),

@@ -211,11 +211,9 @@ impl ProblemIn {
     pub fn parse(text: &str, origin: &str) -> Result<ProblemIn> {
         let mut p: ProblemIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
         crate::input::lights::place(&mut p.light, text, origin)?;
-        p.ask = (p
-            .ask_names
-            .take()
-            .map(|names| names.iter().map(|a| part(a)).collect()))
-        .transpose()?;
+        if let Some(names) = p.ask_names.take() {
+            p.ask = Some(names.iter().map(|a| part(a)).collect::<Result<_>>()?);
+        }
         Ok(p)
     }
 
