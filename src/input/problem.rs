@@ -3,6 +3,7 @@
 
 use crate::error::{Error, Result};
 use crate::input::fields::{toml_error, toml_reason, AngleIn, Num, Vec3In};
+use crate::input::part::Part;
 use crate::msg::{ErrMsg, Erratum, Lang, Msg};
 use serde::de::{self, Deserializer};
 use serde::Deserialize;
@@ -161,8 +162,14 @@ pub struct ProblemIn {
     /// The statement in Bahasa Indonesia (shown with `--lang id`).
     #[serde(default)]
     pub statement_id: Option<String>,
-    /// The parts asked for; default: all the data allow.
-    pub ask: Option<Vec<String>>,
+    /// The parts asked for, in the file's order; default: all the data
+    /// allow. Read from the file's names by [`ProblemIn::parse`].
+    #[serde(skip)]
+    pub ask: Option<Vec<Part>>,
+    /// `ask` as the file writes it (names), read into `ask` by `parse`,
+    /// which refuses an unknown name.
+    #[serde(rename = "ask", default)]
+    ask_names: Option<Vec<String>>,
     /// The camera.
     pub camera: Option<CameraIn>,
     /// The perspective set-up.
@@ -198,24 +205,14 @@ pub struct ProblemIn {
     pub other: BTreeMap<String, toml::Value>,
 }
 
-/// The parts a problem can ask for, in the order solve runs them.
-pub const PARTS: [&str; 6] = ["view", "project", "window", "viewport", "clip", "shade"];
-
 impl ProblemIn {
     /// Parses a problem from TOML text; syntax and type errors carry the line
     /// and column (`file:line:col`).
     pub fn parse(text: &str, origin: &str) -> Result<ProblemIn> {
         let mut p: ProblemIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
         crate::input::lights::place(&mut p.light, text, origin)?;
-        if let Some(ask) = &p.ask {
-            for a in ask {
-                if !PARTS.contains(&a.as_str()) {
-                    return Err(Error::why(
-                        "ask",
-                        ErrMsg::UnknownPart(a.clone(), PARTS.join(", ")),
-                    ));
-                }
-            }
+        if let Some(names) = p.ask_names.take() {
+            p.ask = Some(names.iter().map(|a| part(a)).collect::<Result<_>>()?);
         }
         Ok(p)
     }
@@ -316,12 +313,20 @@ impl ProblemIn {
     }
 
     /// Whether the part is asked for (explicitly, or by default when the data allow it).
-    pub fn asks(&self, part: &str) -> bool {
+    pub fn asks(&self, part: Part) -> bool {
         match &self.ask {
-            Some(a) => a.iter().any(|x| x == part),
+            Some(a) => a.contains(&part),
             None => true,
         }
     }
+}
+
+/// The part `ask` names, or the error naming the parts there are.
+fn part(name: &str) -> Result<Part> {
+    Part::named(name).ok_or_else(|| {
+        let all: Vec<&str> = Part::all().into_iter().map(Part::name).collect();
+        Error::why("ask", ErrMsg::UnknownPart(name.to_string(), all.join(", ")))
+    })
 }
 
 #[cfg(test)]

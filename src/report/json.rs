@@ -81,8 +81,9 @@ fn problem(p: &ProblemIn) -> Value {
         PointRef::At(v) => v3(v),
         PointRef::Named(name) => json!(name),
     };
+    let ask: Option<Vec<&str>> = (p.ask.as_ref()).map(|a| a.iter().map(|x| x.name()).collect());
     let mut o = json!({
-        "title": p.title, "statement": p.statement, "source": p.source, "ask": p.ask,
+        "title": p.title, "statement": p.statement, "source": p.source, "ask": ask,
     });
     if let Some(c) = &p.camera {
         o["camera"] = json!({ "eye": v3(&c.eye), "look": v3(&c.look), "up": v3(&c.up) });

@@ -548,7 +548,7 @@ fn altered_points(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<T
     }
     let mut t = solved(&kept)?;
     // the eye coordinates of every point (the view part alone projects none)
-    q.ask = Some(vec!["view".into()]);
+    q.ask = Some(vec![Part::View]);
     let points = Key::new(Part::View, Value::Field(Field::Points));
     if let (Some(all), Some(Val::Map(eye))) = (solved(&q), value_of_mut(&mut t, &points)) {
         if let Some(Val::Map(every)) = value_of(&all, &points) {

@@ -3,53 +3,19 @@
 //! calculator command's own key without its part (`top`, `points.A`).
 //!
 //! The keys are a contract (docs/spec.md §3's JSON, answer and problem
-//! files), so each name is spelled in ONE place, [`Node`]'s `Display`;
+//! files), so each name is spelled in ONE place, [`Node`]'s `Display`
+//! (a part's by [`Part::name`], beside the part in the input layer, where
+//! a problem file's `ask` reads it);
 //! a [`Key`] is written from its nodes and read back by [`Key::from_str`]
 //! (`clip.2.status` and `clip[2].status` alike). The words people read for
 //! a key are `report::words::keys`, one exhaustive match per language over
 //! these types: a new part's keys are new variants here, and the compiler
 //! then asks for their words.
 
+pub use crate::input::part::Part;
 use crate::stages::clip::PLANE_KEYS;
 use std::fmt;
 use std::str::FromStr;
-
-/// A part of a problem: the first name of a `solve` key.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Part {
-    /// `view`: the camera basis, the view matrix, the eye coordinates.
-    View,
-    /// `project`: the points projected onto the near plane.
-    Project,
-    /// `window`: the viewing window's edges and size.
-    Window,
-    /// `viewport`: the pixels of the projected points.
-    Viewport,
-    /// `clip`: the outcodes, intersections and clipped segment.
-    Clip,
-    /// `shade`: the lighting of one point.
-    Shade,
-}
-
-impl Part {
-    /// Every part, in the order of the text's solution.
-    pub fn all() -> Vec<Part> {
-        every(Part::View, Part::next)
-    }
-
-    /// The part after this one: an exhaustive match, so a new part is
-    /// listed (and read from a key) as soon as it compiles.
-    fn next(self) -> Option<Part> {
-        match self {
-            Part::View => Some(Part::Project),
-            Part::Project => Some(Part::Window),
-            Part::Window => Some(Part::Viewport),
-            Part::Viewport => Some(Part::Clip),
-            Part::Clip => Some(Part::Shade),
-            Part::Shade => None,
-        }
-    }
-}
 
 /// The one after `x` in `all`.
 fn after<T: PartialEq + Copy>(all: &[T], x: T) -> Option<T> {
@@ -351,14 +317,7 @@ impl fmt::Display for Node {
     fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
         use Shading as S;
         let s = match self {
-            Node::Part(p) => match p {
-                Part::View => "view",
-                Part::Project => "project",
-                Part::Window => "window",
-                Part::Viewport => "viewport",
-                Part::Clip => "clip",
-                Part::Shade => "shade",
-            },
+            Node::Part(p) => p.name(),
             Node::Field(field) => match field {
                 Field::Axis(Axis::U) => "u",
                 Field::Axis(Axis::V) => "v",

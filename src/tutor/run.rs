@@ -18,7 +18,7 @@ use crate::stages::projection::{self, Projection};
 use crate::stages::trace::{Recorder, Val};
 use crate::stages::window::{self, Window};
 use crate::tutor::follow;
-use crate::tutor::key::{Field, Key, Part, Value};
+use crate::tutor::key::{Edge, Field, Key, Part, Value};
 use crate::tutor::keys::{basis_result, clip_checked, clip_result, shade_run, window_result};
 use crate::tutor::solution::Tree;
 use nalgebra::Matrix4;
@@ -163,10 +163,12 @@ pub fn window_run<T: Scalar>(
             ));
         }
         let fw = window::window(fovy, aspect, f, "far", rec)?;
+        // the far window's edges, not its size
+        let size = [Edge::Height, Edge::Width].map(|e| Field::Edge(e, true).key());
         r.extend(
             window_result(&fw, true)
                 .into_iter()
-                .filter(|(k, _)| !k.ends_with("height") && !k.ends_with("width")),
+                .filter(|(k, _)| !size.contains(k)),
         );
     }
     Ok((w, r))
