@@ -11,7 +11,7 @@
 //! | [`tutor`] | the one solver (a problem's parts run through the stages, [`tutor::run`]), the report as data ([`tutor::solution`]), mark answers (check), the mistake catalog, generate exams |
 //! | [`bench`](mod@bench) | run time against error of the float stages |
 //! | [`render`] | the renderer: geometry, rasterization, shading, drawn with the stages |
-//! | [`input`] | the typed problem ([`input::part::Problem`]: a problem file, or a calculator command's one part; the parts a file asks, [`input::part::Part`], named once), scene, lights and mesh files, and flag values, read and validated |
+//! | [`input`] | the typed problem ([`input::part::Problem`]: a problem file, or a calculator command's one part; the parts a file asks, [`input::ask::Part`], named once), scene, lights and mesh files, and flag values, read and validated |
 //! | [`stages`] | the math the text teaches: camera, projection, window, clip, lighting; each writes its steps to a [`stages::trace::Trace`] |
 //! | [`num`] | numbers: the `Scalar` trait, the exact type, floats, lanes, vectors, expressions, formatting |
 //! | [`msg`] | message keys: what is said to a person, as data (`report::words` gives the words); the language, [`msg::Lang`], passed as itself to every layer |

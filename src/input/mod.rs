@@ -5,6 +5,7 @@
 //! field (and, for files, the line and column).
 
 pub mod answer;
+pub mod ask;
 pub mod fields;
 pub mod lights;
 pub mod mesh;

@@ -2,8 +2,8 @@
 //! every syntax error, into plain expressions that any precision evaluates.
 
 use crate::error::{Error, Result};
+use crate::input::ask::Part;
 use crate::input::fields::{toml_error, toml_reason, AngleIn, Num, Vec3In};
-use crate::input::part::Part;
 use crate::msg::{ErrMsg, Erratum, Lang, Msg};
 use serde::de::{self, Deserializer};
 use serde::Deserialize;
