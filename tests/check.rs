@@ -1042,3 +1042,38 @@ fn a_segments_own_outcodes_carry_to_its_status_and_no_other_segment() {
     );
     assert_eq!(answer(&v, "clip.4.status")["verdict"], "wrong");
 }
+
+#[test]
+fn several_segments_are_asked_what_one_segment_is() {
+    // A lone segment is not asked the planes it tried (text-clip.toml);
+    // neither is each of clip-cases.toml's seven: a student is marked on
+    // code0, code1, segment and status of each. Segment 1 (clip.0) runs
+    // from (1, 1, 1) to (2, 3, 2), inside the box: both codes 000000.
+    let file = answers_file(
+        "segments",
+        "\"clip.0.code0\" = \"000 000\"\n\"clip[0].code1\" = \"000000\"\n",
+    );
+    let v = json_ok(&[
+        "check",
+        "problems/clip-cases.toml",
+        "--answers",
+        file.to_str().unwrap(),
+    ]);
+    let keys: Vec<&str> = (v["answers"].as_array().unwrap().iter())
+        .map(|a| a["key"].as_str().unwrap())
+        .collect();
+    assert!(
+        keys.iter().all(|k| !k.contains("intersections")),
+        "{keys:?}"
+    );
+    for i in 0..7 {
+        for f in ["code0", "code1", "segment", "status"] {
+            assert!(
+                keys.contains(&format!("clip.{i}.{f}").as_str()),
+                "clip.{i}.{f}: {keys:?}"
+            );
+        }
+    }
+    assert_eq!(answer(&v, "clip.0.code0")["code"], "correct.exact");
+    assert_eq!(answer(&v, "clip.0.code1")["code"], "correct.exact");
+}

@@ -17,7 +17,7 @@
 //!    ([`Marker::fitting`] keeps those the rest of the sheet allows).
 
 use super::judge::{apart, judge, matches_closely, Ctx, Judged};
-use super::{default_keys, Settings, Tree, Verdict, FOLLOW_THROUGH};
+use super::{canonical, default_keys, Settings, Tree, Verdict, FOLLOW_THROUGH};
 use crate::error::Result;
 use crate::input::answer::{self, Read};
 use crate::input::problem::ProblemIn;
@@ -26,7 +26,7 @@ use crate::num::Real;
 use crate::stages::trace::{Name, Step, Val};
 use crate::tutor::diagnose::Code;
 use crate::tutor::follow::Given;
-use crate::tutor::key::{Key, Part};
+use crate::tutor::key::{Field, Key, Part, Shading};
 use crate::tutor::keys::ordered_keys;
 use crate::tutor::run::Hooks;
 use crate::tutor::solution::{lookup, value_of};
@@ -79,15 +79,17 @@ impl Marker {
         let keys = p
             .check
             .as_ref()
-            .and_then(|c| c.keys.clone())
+            .and_then(|c| c.keys.as_ref())
+            .map(|ks| ks.iter().map(|k| canonical(k)).collect())
             .unwrap_or_else(|| default_keys(&result).iter().map(Key::to_string).collect());
-        if let Some((_, Val::Map(kv))) = result.iter_mut().find(|(k, _)| k == "shade") {
+        if let Some((_, Val::Map(kv))) = result.iter_mut().find(|(k, _)| *k == Part::Shade.key()) {
             // the unit vectors are steps of the solution, not results of
             // `solve`; with one light there is one of each
-            for name in ["N", "L"] {
-                let mut found = report.steps.iter().filter_map(|s| step_result(s, name));
+            for unit in [Shading::N, Shading::L] {
+                let name = Field::Shading(unit).key();
+                let mut found = report.steps.iter().filter_map(|s| step_result(s, &name));
                 if let (Some(v), None) = (found.next(), found.next()) {
-                    kv.insert(0, (name.to_string(), v));
+                    kv.insert(0, (name, v));
                 }
             }
         }

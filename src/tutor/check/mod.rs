@@ -187,8 +187,8 @@ impl Marking {
 }
 
 /// The answer keys a problem expects by default: every answer of the parts
-/// it solves, except those `asked_by_default` leaves out; the fields of
-/// a clip with several segments are each asked, all of them.
+/// it solves, except those `asked_by_default` leaves out, for each segment
+/// of a clip with several as for a lone one.
 pub fn default_keys(result: &Tree) -> Vec<Key> {
     let mut keys = Vec::new();
     for (name, v) in result {
@@ -196,7 +196,8 @@ pub fn default_keys(result: &Tree) -> Vec<Key> {
             (Some(Node::Part(Part::Clip)), Val::List(items)) => {
                 for (i, it) in items.iter().enumerate() {
                     if let Val::Map(kv) = it {
-                        keys.extend(fields(Part::Clip, kv).map(|(f, _)| {
+                        let asked = fields(Part::Clip, kv).filter(|(f, _)| asked_by_default(*f));
+                        keys.extend(asked.map(|(f, _)| {
                             Key::new(Part::Clip, Value::Field(f)).of_segment(Some(i))
                         }));
                     }
@@ -271,6 +272,15 @@ pub(crate) fn answer_len(v: &toml::Value) -> usize {
         toml::Value::Array(a) => a.iter().map(answer_len).sum(),
         other => other.to_string().len(),
     }
+}
+
+/// An answer key from a file as the results spell it: `clip[2].status` and
+/// `clip.2.status` alike are `clip.2.status` (a key's one spelling, its
+/// `Display`). A key that is no [`Key`] (a whole part, one component such
+/// as `view.points.A.1`) is kept as written and looked up as written.
+pub fn canonical(key: &str) -> String {
+    key.parse::<Key>()
+        .map_or_else(|_| key.to_string(), |k| k.to_string())
 }
 
 /// Answers keyed by dotted result keys, in the order given.

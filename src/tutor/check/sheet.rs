@@ -17,19 +17,11 @@ impl Marker {
     /// gets the reason from the file's `[[errata]]`; otherwise the keys
     /// expected are [`Marker::keys`] plus any other key given.
     pub fn mark(&self, who: &str, answers: &[(String, toml::Value)], from_text: bool) -> Marking {
-        let keys: Vec<String> = if from_text {
-            answers.iter().map(|(k, _)| k.clone()).collect()
-        } else {
-            let mut k = self.keys.clone();
-            // A set, so that many keys cost linear time (100,000 took 27 s).
-            let mut seen: std::collections::HashSet<String> = k.iter().cloned().collect();
-            for (given, _) in answers {
-                if seen.insert(given.clone()) {
-                    k.push(given.clone());
-                }
-            }
-            k
-        };
+        let answers: Vec<(String, toml::Value)> = (answers.iter())
+            .map(|(k, v)| (super::canonical(k), v.clone()))
+            .collect();
+        let answers = &answers[..];
+        let keys = self.keys_marked(answers, from_text);
         let mut first: std::collections::HashMap<&str, &toml::Value> = Default::default();
         for (k, v) in answers {
             first.entry(k.as_str()).or_insert(v);
@@ -91,6 +83,24 @@ impl Marker {
             diagnoses,
             unknown,
             settings: self.settings,
+        }
+    }
+
+    /// The keys marked: with `from_text` those of the answers, otherwise
+    /// [`Marker::keys`] and then any other key given, each once.
+    fn keys_marked(&self, answers: &[(String, toml::Value)], from_text: bool) -> Vec<String> {
+        if from_text {
+            answers.iter().map(|(k, _)| k.clone()).collect()
+        } else {
+            let mut k = self.keys.clone();
+            // A set, so that many keys cost linear time (100,000 took 27 s).
+            let mut seen: std::collections::HashSet<String> = k.iter().cloned().collect();
+            for (given, _) in answers {
+                if seen.insert(given.clone()) {
+                    k.push(given.clone());
+                }
+            }
+            k
         }
     }
 
