@@ -377,6 +377,24 @@ impl fmt::Display for Node {
     }
 }
 
+impl From<Field> for Node {
+    fn from(f: Field) -> Node {
+        Node::Field(f)
+    }
+}
+
+impl From<Cut> for Node {
+    fn from(c: Cut) -> Node {
+        Node::Cut(c)
+    }
+}
+
+impl From<Factor> for Node {
+    fn from(x: Factor) -> Node {
+        Node::Factor(x)
+    }
+}
+
 impl Cut {
     /// Its key in a result tree (`t`, …).
     pub fn key(self) -> String {

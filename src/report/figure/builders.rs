@@ -10,6 +10,7 @@ use crate::msg::{FigureMsg, Msg, Panel};
 use crate::num::vec::{self, V3};
 use crate::report::Style;
 use crate::stages::trace::{Step, Val};
+use crate::tutor::key::Node;
 
 /// What one part's drawing is made from besides its inputs: the named
 /// results and the steps.
@@ -20,9 +21,11 @@ pub(super) struct Part<'a> {
     pub steps: &'a [Step],
 }
 
-/// A result by key.
-pub(super) fn result<'a>(res: &'a [(String, Val)], key: &str) -> Option<&'a Val> {
-    res.iter().find(|(k, _)| k == key).map(|(_, v)| v)
+/// A result by its typed name (a field of the part, a point's name, what
+/// is asked of an intersection, a light's factor), spelled as the key.
+pub(super) fn result(res: &[(String, Val)], name: impl Into<Node>) -> Option<&Val> {
+    let name = name.into().to_string();
+    res.iter().find(|(k, _)| *k == name).map(|(_, v)| v)
 }
 
 /// The numbers of a value that is a list of numbers.

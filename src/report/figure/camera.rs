@@ -13,6 +13,7 @@ use super::{label, label_toward, labelled, mark, Figure, Item, Kind, Pen, Shape}
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
 use crate::stages::trace::Val;
+use crate::tutor::key::{Axis, Field, Node};
 use crate::tutor::solution::{CameraAt, P3};
 
 /// The length Vup is drawn with: 1 for a scene within 8 of the origin,
@@ -27,7 +28,11 @@ pub fn arrow_length(extent: f64) -> f64 {
 
 /// The pens of u, v, n: bluish green solid, reddish purple dash-dot,
 /// vermillion dashed (Okabe–Ito, one pattern each).
-pub const AXIS_PENS: [(&str, Pen); 3] = [("u", Pen::Vector), ("v", Pen::Other), ("n", Pen::Cut)];
+pub const AXIS_PENS: [(Axis, Pen); 3] = [
+    (Axis::U, Pen::Vector),
+    (Axis::V, Pen::Other),
+    (Axis::N, Pen::Cut),
+];
 
 /// u, v, n are drawn this many times [`arrow_length`] (Vup once).
 pub const AXIS_SCALE: f64 = 2.0;
@@ -44,8 +49,8 @@ pub fn camera_view(uvn: &[[f64; 3]; 3]) -> Axo {
 pub fn figure(p: &Part, st: &Style, c: &CameraAt, named: &[(String, P3)]) -> Option<Vec<Figure>> {
     let (pe, pr, up) = (c.eye, c.look, c.up);
     let mut uvn = [[0.0; 3]; 3];
-    for (k, (key, _)) in AXIS_PENS.iter().enumerate() {
-        uvn[k] = vec_of(result(p.res, key)?)?;
+    for (k, (axis, _)) in AXIS_PENS.iter().enumerate() {
+        uvn[k] = vec_of(result(p.res, Field::Axis(*axis))?)?;
     }
     let axo = camera_view(&uvn);
     let extent = [pe, pr]
@@ -83,9 +88,10 @@ pub fn figure(p: &Part, st: &Style, c: &CameraAt, named: &[(String, P3)]) -> Opt
     ));
     // u, v, n: each its own colour and pattern, twice the length (the
     // note says so).
-    for (k, (key, pen)) in AXIS_PENS.iter().enumerate() {
-        let text = labelled(st, key, result(p.res, key)?);
-        let at = (*key, Kind::Arrow);
+    for (k, (axis, pen)) in AXIS_PENS.iter().enumerate() {
+        let key = Field::Axis(*axis).key();
+        let text = labelled(st, &key, result(p.res, Field::Axis(*axis))?);
+        let at = (key.as_str(), Kind::Arrow);
         items.extend(arrow3(&axo, at, pe, uvn[k], AXIS_SCALE * len, *pen, text));
     }
     let n = st.val_inline(&num_val(AXIS_SCALE * len));
@@ -99,7 +105,7 @@ pub fn figure(p: &Part, st: &Style, c: &CameraAt, named: &[(String, P3)]) -> Opt
 /// drawn already: Peye, Pref), and a note under the drawing with its
 /// world coordinates and its eye coordinates `A' = …` from the results.
 fn points(p: &Part, st: &Style, axo: &Axo, named: &[(String, [f64; 3])], items: &mut Vec<Item>) {
-    let eye = match result(p.res, "points") {
+    let eye = match result(p.res, Field::Points) {
         Some(Val::Map(m)) => m.clone(),
         _ => vec![],
     };
@@ -117,7 +123,7 @@ fn points(p: &Part, st: &Style, axo: &Axo, named: &[(String, [f64; 3])], items: 
             items.push(label(name, name.clone()));
         }
         let mut text = format!("{name} {}", st.val_inline(&vec_val(q)));
-        if let Some(e) = result(&eye, name) {
+        if let Some(e) = result(&eye, Node::Point(name.clone())) {
             text = format!("{text}: {}", labelled(st, &format!("{name}'"), e));
         }
         items.push(Item::Note(text));

@@ -19,6 +19,7 @@ use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
 use crate::stages::clip::{PLANES, PLANE_KEYS};
 use crate::stages::trace::Val;
+use crate::tutor::key::{Cut, Field};
 use crate::tutor::solution::ClipAt;
 
 /// One intersection tried, as the results give it.
@@ -51,20 +52,20 @@ struct Clip {
 }
 
 fn read(p: &Part, st: &Style, g: &ClipAt) -> Option<Clip> {
-    let code = |k: &str| {
+    let code = |k: Field| {
         result(p.res, k)
             .map(|v| st.val_inline(v))
             .unwrap_or_default()
     };
     let mut tried = Vec::new();
-    if let Some(Val::Map(m)) = result(p.res, "intersections") {
+    if let Some(Val::Map(m)) = result(p.res, Field::Intersections) {
         for (key, v) in m {
             let Val::Map(f) = v else { continue };
             let (Some(bit), Some(t_val), Some(point_val), Some(c)) = (
                 PLANE_KEYS.iter().position(|k| k == key),
-                result(f, "t"),
-                result(f, "point"),
-                result(f, "code"),
+                result(f, Cut::T),
+                result(f, Cut::Point),
+                result(f, Cut::Code),
             ) else {
                 continue;
             };
@@ -76,11 +77,11 @@ fn read(p: &Part, st: &Style, g: &ClipAt) -> Option<Clip> {
                 point: vec_of(point_val)?,
                 point_val: point_val.clone(),
                 code: st.val_inline(c),
-                kept: matches!(result(f, "kept"), Some(Val::Bool(true))),
+                kept: matches!(result(f, Cut::Kept), Some(Val::Bool(true))),
             });
         }
     }
-    let kept = match result(p.res, "segment") {
+    let kept = match result(p.res, Field::Segment) {
         Some(Val::List(e)) if e.len() == 2 => Some([vec_of(&e[0])?, vec_of(&e[1])?]),
         _ => None,
     };
@@ -88,7 +89,7 @@ fn read(p: &Part, st: &Style, g: &ClipAt) -> Option<Clip> {
         lo: g.min,
         hi: g.max,
         ends: g.ends,
-        codes: [code("code0"), code("code1")],
+        codes: [code(Field::Code0), code(Field::Code1)],
         tried,
         kept,
     })

@@ -11,6 +11,7 @@ use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
 use crate::stages::projection::Projection;
 use crate::stages::trace::Val;
+use crate::tutor::key::{Field, Node};
 
 /// The projection asked for.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -82,13 +83,13 @@ struct Projected {
 /// The points: eye coordinates as given (the view part's results when
 /// `chained`), images from the results.
 fn projected(p: &Part, eyes: &[(String, Val)], chained: bool) -> Vec<Projected> {
-    let Some(Val::Map(images)) = result(p.res, "points") else {
+    let Some(Val::Map(images)) = result(p.res, Field::Points) else {
         return vec![];
     };
     images
         .iter()
         .filter_map(|(name, img_val)| {
-            let eye_val = result(eyes, name)?.clone();
+            let eye_val = result(eyes, Node::Point(name.clone()))?.clone();
             let (e, i) = (nums_of(&eye_val)?, nums_of(img_val)?);
             Some(Projected {
                 name: if chained {

@@ -10,28 +10,34 @@ use super::{label, label_toward, labelled, mark, short, Figure, Item, Kind, Pen,
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
 use crate::stages::trace::Val;
+use crate::tutor::key::{Edge, Field};
 use crate::tutor::solution::WindowAt;
 
 /// The window's numbers: (left, right, bottom, top) at z = −near.
 type Win = [f64; 4];
 
-/// The window results with this prefix (`` or `far_`).
-fn win(p: &Part, prefix: &str) -> Option<Win> {
-    let n = |k: &str| match result(p.res, &format!("{prefix}{k}"))? {
+/// The window's edges on the near plane, or (`far`) on the far one.
+fn win(p: &Part, far: bool) -> Option<Win> {
+    let n = |e: Edge| match result(p.res, Field::Edge(e, far))? {
         Val::Num(s) => Some(s.value),
         _ => None,
     };
-    Some([n("left")?, n("right")?, n("bottom")?, n("top")?])
+    Some([
+        n(Edge::Left)?,
+        n(Edge::Right)?,
+        n(Edge::Bottom)?,
+        n(Edge::Top)?,
+    ])
 }
 
 /// A result's value as a label writes it.
-fn shown(p: &Part, st: &Style, key: &str) -> String {
+fn shown(p: &Part, st: &Style, key: Field) -> String {
     result(p.res, key).map(|v| short(st, v)).unwrap_or_default()
 }
 
 /// A result as a label in a crowded panel: its exact form when that is
 /// at most 12 characters, else its decimal.
-fn tiny(p: &Part, st: &Style, key: &str) -> String {
+fn tiny(p: &Part, st: &Style, key: Field) -> String {
     let Some(Val::Num(s)) = result(p.res, key) else {
         return String::new();
     };
@@ -51,7 +57,7 @@ fn tiny(p: &Part, st: &Style, key: &str) -> String {
 /// The window panels of the window part `g`.
 pub fn figures(p: &Part, st: &Style, g: &WindowAt) -> Option<Vec<Figure>> {
     let near = g.near;
-    let w = win(p, "")?;
+    let w = win(p, false)?;
     let mut out = vec![frustum(p, st, g, w), side_view(p, st, near, g.fovy, w)];
     let pts = window_points(g);
     if !pts.is_empty() {
@@ -88,7 +94,7 @@ fn seg(a: [f64; 2], b: [f64; 2]) -> Shape {
 /// window.
 fn frustum(p: &Part, st: &Style, g: &WindowAt, w: Win) -> Figure {
     let near = g.near;
-    let far = g.far.zip(win(p, "far_"));
+    let far = g.far.zip(win(p, true));
     let to_scale = far.filter(|(f, _)| *f <= FAR_TO_SCALE * near);
     let mut windows = vec![rect(w, -near)];
     windows.extend(to_scale.map(|(f, fw)| rect(fw, -f)));
@@ -119,7 +125,7 @@ fn frustum(p: &Part, st: &Style, g: &WindowAt, w: Win) -> Figure {
         let text = format!(
             "far = {}, far_top = {}",
             st.val_inline(&num_val(f)),
-            shown(p, st, "far_top")
+            shown(p, st, Field::Edge(Edge::Top, true))
         );
         match to_scale {
             Some(_) => {
@@ -137,15 +143,17 @@ fn frustum(p: &Part, st: &Style, g: &WindowAt, w: Win) -> Figure {
     // top and right beside their edges, on the window's outer side.
     let r = rect(w, -near);
     let centre = page(&[(w[0] + w[1]) / 2.0, (w[2] + w[3]) / 2.0, -near]);
-    for (edge, a, b) in [("top", 2, 3), ("right", 1, 2)] {
+    for (edge, a, b) in [(Edge::Top, 2, 3), (Edge::Right, 1, 2)] {
+        let key = Field::Edge(edge, false);
+        let edge = key.key();
         let (pa, pb) = (page(&r[a]), page(&r[b]));
-        items.push(mark(edge, Kind::Segment, Pen::Kept, seg(pa, pb)));
+        items.push(mark(&edge, Kind::Segment, Pen::Kept, seg(pa, pb)));
         let out = [
             (pa[0] + pb[0]) / 2.0 - centre[0],
             (pa[1] + pb[1]) / 2.0 - centre[1],
         ];
-        let text = format!("{edge} = {}", shown(p, st, edge));
-        items.push(label_toward(edge, text, Some(out)));
+        let text = format!("{edge} = {}", shown(p, st, key));
+        items.push(label_toward(&edge, text, Some(out)));
     }
     panel3(st, Panel::Frustum, &axo, items)
 }
@@ -180,7 +188,8 @@ fn side_view(p: &Part, st: &Style, near: f64, fovy: f64, w: Win) -> Figure {
     eye_at_origin(st, &mut items);
     let top = seg([near, 0.0], [near, w[3]]);
     items.push(mark("top", Kind::Segment, Pen::Kept, top));
-    let text = format!("top = near·tan(fovy/2) = {}", shown(p, st, "top"));
+    let top = shown(p, st, Field::Edge(Edge::Top, false));
+    let text = format!("top = near·tan(fovy/2) = {top}");
     items.push(label("top", text));
     let dist = seg([0.0, 0.0], [near, 0.0]);
     items.push(mark("near", Kind::Segment, Pen::Frame, dist));
@@ -223,14 +232,16 @@ fn near_window(p: &Part, st: &Style, w: Win, pts: &[(String, [f64; 2], Val)]) ->
     ] {
         items.push(mark(name, Kind::Axis, Pen::Tried, seg(a, b)));
     }
-    for (edge, key, a, b) in [
-        ("right", "right", [w[1], w[2]], [w[1], w[3]]),
-        ("top", "top", [w[0], w[3]], [w[1], w[3]]),
-        ("left", "left", [w[0], w[2]], [w[0], w[3]]),
-        ("bottom", "bottom", [w[0], w[2]], [w[1], w[2]]),
+    for (edge, a, b) in [
+        (Edge::Right, [w[1], w[2]], [w[1], w[3]]),
+        (Edge::Top, [w[0], w[3]], [w[1], w[3]]),
+        (Edge::Left, [w[0], w[2]], [w[0], w[3]]),
+        (Edge::Bottom, [w[0], w[2]], [w[1], w[2]]),
     ] {
-        items.push(mark(edge, Kind::Segment, Pen::Kept, seg(a, b)));
-        items.push(label(edge, format!("{key} = {}", tiny(p, st, key))));
+        let key = Field::Edge(edge, false);
+        let edge = key.key();
+        items.push(mark(&edge, Kind::Segment, Pen::Kept, seg(a, b)));
+        items.push(label(&edge, format!("{edge} = {}", tiny(p, st, key))));
     }
     for (name, at, v) in pts {
         items.push(mark(name, Kind::Point, Pen::Frame, Shape::Dot(*at)));
@@ -242,7 +253,7 @@ fn near_window(p: &Part, st: &Style, w: Win, pts: &[(String, [f64; 2], Val)]) ->
 /// The viewport W × H with each point at its pixel position.
 fn viewport(p: &Part, st: &Style, g: &WindowAt) -> Option<Figure> {
     let (vw, vh) = g.viewport?;
-    let Some(Val::Map(px)) = result(p.res, "pixels") else {
+    let Some(Val::Map(px)) = result(p.res, Field::Pixels) else {
         return None;
     };
     let corners = vec![[0.0, 0.0], [vw, 0.0], [vw, vh], [0.0, vh]];
