@@ -825,18 +825,12 @@ fn every_subcommand_help_has_examples() {
 /// Runs grafika in English (whatever the machine's locale), expects exit 2,
 /// returns its one line on stderr.
 fn english_error(args: &[&str]) -> String {
-    let out = grafika()
-        .args(args)
-        .env_remove("GRAFIKA_LANG")
+    let mut cmd = grafika();
+    cmd.env_remove("GRAFIKA_LANG")
         .env_remove("LC_ALL")
         .env_remove("LC_MESSAGES")
-        .env("LANG", "C")
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(2), "{args:?}");
-    let err = String::from_utf8(out.stderr).unwrap();
-    assert_eq!(err.lines().count(), 1, "{err}");
-    err
+        .env("LANG", "C");
+    refusal(cmd, args)
 }
 
 #[test]

@@ -6,7 +6,7 @@
 //! Indonesian, and the shipped problems' Indonesian titles and errata.
 
 mod common;
-use common::{grafika, root, scratch};
+use common::{grafika, refusal, root, scratch};
 use serde_json::Value;
 
 /// The output of `grafika --lang LANG ARGS`, expecting success.
@@ -344,19 +344,13 @@ fn count(v: &toml::Value) -> usize {
 /// Runs grafika with `LANG=id_ID.UTF-8` (and no other language setting)
 /// in `dir`, expects exit status 2 and one line on stderr; returns it.
 fn refused_in_indonesian(dir: &std::path::Path, args: &[&str]) -> String {
-    let out = grafika()
-        .current_dir(dir)
+    let mut cmd = grafika();
+    cmd.current_dir(dir)
         .env_remove("GRAFIKA_LANG")
         .env_remove("LC_ALL")
         .env_remove("LC_MESSAGES")
-        .env("LANG", "id_ID.UTF-8")
-        .args(args)
-        .output()
-        .expect("runs");
-    assert_eq!(out.status.code(), Some(2), "{args:?}");
-    let err = String::from_utf8(out.stderr).expect("UTF-8");
-    assert_eq!(err.lines().count(), 1, "{args:?}: one line: {err}");
-    err.trim_end().to_string()
+        .env("LANG", "id_ID.UTF-8");
+    refusal(cmd, args).trim_end().to_string()
 }
 
 #[test]

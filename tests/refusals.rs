@@ -4,22 +4,15 @@
 
 mod common;
 
-use common::{grafika, scratch};
+use common::{grafika, refusal, scratch};
 use std::path::Path;
 
 /// `grafika --lang LANG ARGS` in `dir`: exit status 2 and one line on
 /// stderr, which is returned.
 fn refused(dir: &Path, lang: &str, args: &[&str]) -> String {
-    let out = grafika()
-        .current_dir(dir)
-        .args(["--lang", lang])
-        .args(args)
-        .output()
-        .expect("runs");
-    assert_eq!(out.status.code(), Some(2), "{args:?}");
-    let err = String::from_utf8(out.stderr).expect("UTF-8");
-    assert_eq!(err.lines().count(), 1, "{args:?}: one line: {err}");
-    err.trim_end().to_string()
+    let mut cmd = grafika();
+    cmd.current_dir(dir).args(["--lang", lang]);
+    refusal(cmd, args).trim_end().to_string()
 }
 
 #[test]

@@ -28,6 +28,16 @@ pub fn grafika() -> Command {
     c
 }
 
+/// Runs `cmd` (a [`grafika`] command with its settings) with `args`,
+/// expects exit status 2 and one line on stderr; returns stderr as written.
+pub fn refusal(mut cmd: Command, args: &[&str]) -> String {
+    let out = cmd.args(args).output().expect("runs");
+    assert_eq!(out.status.code(), Some(2), "{args:?}");
+    let err = String::from_utf8(out.stderr).expect("UTF-8");
+    assert_eq!(err.lines().count(), 1, "{args:?}: one line: {err}");
+    err
+}
+
 /// Runs grafika with `args` plus `--json`, expects success, returns the JSON.
 pub fn json_ok(args: &[&str]) -> Value {
     let out = grafika().args(args).arg("--json").output().expect("runs");
