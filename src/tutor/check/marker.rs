@@ -283,10 +283,11 @@ impl Marker {
 
     /// The erratum of `key`, if the problem has one.
     pub fn erratum(&self, key: &str) -> Option<Msg> {
+        let key = canonical(key);
         self.problem
             .errata
             .iter()
-            .find(|e| e.key == key)
+            .find(|e| canonical(&e.key) == key)
             .map(|e| e.reason())
     }
 }
@@ -371,4 +372,25 @@ pub(crate) fn differs(a: &Val, b: &Val) -> bool {
 /// not by follow-through, or too coarse).
 pub fn agrees(verdict: Verdict, code: &str) -> bool {
     matches!(verdict, Verdict::Correct | Verdict::TooCoarse) && code != FOLLOW_THROUGH
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An erratum is found whichever spelling of a segment the problem
+    /// file and the marked key use (answers are marked by the key's one
+    /// spelling, `clip.1.status`).
+    #[test]
+    fn an_erratum_is_found_in_either_spelling_of_a_segment() {
+        let text = "title = 't'\n[clip]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n\
+            [[clip.segment]]\nfrom = [0.5, 0.5, 0.5]\nto = [0.2, 0.2, 0.2]\n\
+            [[clip.segment]]\nfrom = [2, 2, 2]\nto = [3, 3, 3]\n\
+            [[errata]]\nkey = 'clip[1].status'\nwhy = 'misprinted'\n";
+        let p = ProblemIn::parse(text, "t.toml").expect("parses");
+        let m = Marker::new(&p, Settings::default()).expect("solves");
+        assert!(m.erratum("clip.1.status").is_some());
+        assert!(m.erratum("clip[1].status").is_some());
+        assert!(m.erratum("clip.0.status").is_none());
+    }
 }
