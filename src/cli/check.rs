@@ -11,7 +11,7 @@ use crate::cli::write::Outputs;
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
 use crate::msg::{Bound, CliWord, DocWord, ErrMsg, Twice};
-use crate::report::check::{to_json, to_text};
+use crate::report::check::marked;
 use crate::report::class::lecturer::{self, Format};
 use crate::report::lang::Lang;
 use crate::report::words;
@@ -161,7 +161,7 @@ fn one_sheet(
     if let Some(out) = csv_out(a, std::slice::from_ref(&sheet), exam, style.lang, outputs)? {
         return Ok((out, status));
     }
-    Ok((output(&sheet.outcome?, json, style), 0))
+    Ok((marked(&sheet.outcome?, json, style), 0))
 }
 
 /// The report's format by the file's extension.
@@ -238,28 +238,6 @@ pub(crate) fn valid_tolerance(t: Option<f64>) -> Result<()> {
             ErrMsg::MustBe(Bound::FiniteAtLeastZero, t.to_string()),
         )),
         _ => Ok(()),
-    }
-}
-
-/// One student's marking as text or JSON: a lone problem as always; an
-/// exam's problems one after another (JSON: under `problems`).
-fn output(marked: &[(String, Marking)], json: bool, style: &Style) -> String {
-    match (marked, json) {
-        ([(name, m)], true) if name.is_empty() => pretty(&to_json(m, style.lang)),
-        ([(name, m)], false) if name.is_empty() => to_text(m, style),
-        (_, true) => pretty(&serde_json::json!({
-            "command": "check",
-            "problems": marked.iter().map(|(name, m)| {
-                let mut j = to_json(m, style.lang);
-                j["problem"] = serde_json::json!(name);
-                j
-            }).collect::<Vec<_>>(),
-        })),
-        (_, false) => marked
-            .iter()
-            .map(|(name, m)| format!("== {name} ==\n{}", to_text(m, style)))
-            .collect::<Vec<_>>()
-            .join("\n"),
     }
 }
 

@@ -9,22 +9,19 @@ use crate::report::doc::Doc;
 use crate::report::gift::gift;
 use crate::report::moodle::{moodle_xml, Written};
 use crate::report::sheets::{
-    exam_json, exam_title, key_file, key_title, problem_file, sheets, written_summary,
+    exam_json, exam_title, key_file, key_title, problem_file, sheets, written_json, written_summary,
 };
 use crate::report::Style;
 use crate::tutor::check::DEFAULT_TOLERANCE;
 use crate::tutor::generate::quiz::Quiz;
 use crate::tutor::generate::{exam, problem_name, variant_name, variant_seed, Generated};
-use serde_json::json;
 use std::path::PathBuf;
 
 /// Runs `grafika generate`; returns what to print. `force`: `--force`.
 pub fn run(a: &GenerateArgs, force: bool, json: bool, style: &Style) -> Result<String> {
     let files = write_exams(a, force, style)?;
     Ok(if json {
-        let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
-        let j = json!({ "command": "generate", "seed": a.seed, "files": names });
-        serde_json::to_string_pretty(&j).unwrap_or_default() + "\n"
+        written_json(&files, a.seed)
     } else {
         written_summary(
             &files,

@@ -509,7 +509,7 @@ fn report_error(e: &Error, json: bool, lang: Lang) -> i32 {
     let label = words::of(lang).doc(&DocWord::Error);
     print::stderr_line(&format!("{label}: {field}: {message}"));
     if json {
-        let j = serde_json::json!({ "error": { "field": field, "message": message } });
+        let j = crate::report::json::error(&field, &message);
         // Nothing more can be said if this fails too: the error is on stderr.
         let _ = print::stdout(&format!("{j}\n"), Kind::Json);
     }

@@ -59,6 +59,31 @@ pub const VERDICTS: [Verdict; 5] = [
     Verdict::Unparseable,
 ];
 
+/// One student's marking of a lone problem or an exam, as text or JSON: a
+/// lone problem (named "") as [`to_text`] / [`to_json`]; an exam's problems
+/// one after another, each under `== problem-01 ==` (JSON: under
+/// `problems`, each with its `problem`).
+pub fn marked(marked: &[(String, Marking)], json: bool, style: &Style) -> String {
+    let pretty = |v: &Value| serde_json::to_string_pretty(v).unwrap_or_default() + "\n";
+    match (marked, json) {
+        ([(name, m)], true) if name.is_empty() => pretty(&to_json(m, style.lang)),
+        ([(name, m)], false) if name.is_empty() => to_text(m, style),
+        (_, true) => pretty(&json!({
+            "command": "check",
+            "problems": marked.iter().map(|(name, m)| {
+                let mut j = to_json(m, style.lang);
+                j["problem"] = json!(name);
+                j
+            }).collect::<Vec<_>>(),
+        })),
+        (_, false) => marked
+            .iter()
+            .map(|(name, m)| format!("== {name} ==\n{}", to_text(m, style)))
+            .collect::<Vec<_>>()
+            .join("\n"),
+    }
+}
+
 /// A word of a marked answer file, in `style`'s language.
 fn w(style: &Style, k: K) -> String {
     words::of(style.lang).check(&k)

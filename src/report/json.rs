@@ -1,13 +1,19 @@
 //! The JSON of a report's inputs (docs/spec.md §3's `input`): a calculator
 //! command's one part as the stages took it, a problem file's tables (the
 //! f64 values of the numbers written; names for named segment ends), a
-//! render's scene and settings, and the render's `stats`.
+//! render's scene and settings, and the render's `stats`; a refusal.
 
 use crate::input::fields::{Num, Vec3In};
 use crate::input::problem::{PointRef, ProblemIn};
 use crate::stages::projection::Projection;
 use crate::tutor::solution::{Asked, Given, RenderRun, Report, P3};
 use serde_json::{json, Map, Value};
+
+/// A refusal as JSON (`--json`, docs/spec.md): the field at fault as it
+/// is spelled and the reason in the chosen language.
+pub fn error(field: &str, message: &str) -> Value {
+    json!({ "error": { "field": field, "message": message } })
+}
 
 /// The `input` object of a report.
 pub fn input(r: &Report) -> Value {

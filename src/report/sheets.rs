@@ -122,6 +122,13 @@ pub fn exam_json(title: &str, seed: u64, variant: u32, exam: &[Generated], lang:
     json!({ "title": title, "seed": seed, "variant": variant, "problems": problems })
 }
 
+/// What `generate --json` prints: the files written, with the seed.
+pub fn written_json(files: &[PathBuf], seed: u64) -> String {
+    let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
+    let j = json!({ "command": "generate", "seed": seed, "files": names });
+    serde_json::to_string_pretty(&j).unwrap_or_default() + "\n"
+}
+
 /// What `generate` prints: how many files of what went where, and the first
 /// twelve of them.
 pub fn written_summary(
