@@ -204,7 +204,7 @@ fn report(
         output: a.output.display().to_string(),
         size: (opt.width, opt.height),
         shadings: shadings_drawn(scene, opt),
-        normals: format!("{:?}", opt.normals).to_lowercase(),
+        normals: opt.normals.name().to_string(),
         explain_pixel: pixel,
         stats_asked: a.stats,
         stats: frame.stats.clone(),

@@ -131,6 +131,16 @@ pub enum Normals {
     Position,
 }
 
+impl Normals {
+    /// The name in a scene file (`average`), as serde reads it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Normals::Average => "average",
+            Normals::Position => "position",
+        }
+    }
+}
+
 /// `[image]`.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -800,6 +810,19 @@ mod tests {
         assert_eq!(e.field, "height", "{e}");
         let e = parse("[image]\n# a comment\n=\n").unwrap_err();
         assert_eq!(e.field, "file", "{e}");
+    }
+
+    /// A scene file's `normals` is read by the name the render's JSON
+    /// writes (`Normals::name`), for every choice.
+    #[test]
+    fn normals_are_read_by_the_name_they_are_written_by() {
+        for n in [Normals::Average, Normals::Position] {
+            let text = format!(
+                "normals = \"{}\"\n[[object]]\ntype = \"sphere\"\nn = 8\nr = 1\n",
+                n.name()
+            );
+            assert_eq!(parse(&text).map(|s| s.normals).ok(), Some(n), "{text}");
+        }
     }
 
     #[test]
