@@ -84,6 +84,49 @@ fn the_toml_readers_reasons_in_both_languages() {
     );
 }
 
+/// A number field of the wrong kind or out of what it takes: serde names
+/// the Rust type (`u32`, `i64`); a student reads what the field takes.
+#[test]
+fn a_number_field_says_what_it_takes_not_a_rust_type() {
+    let d = scratch("refusals-serde-types");
+    let sphere = "[[object]]\ntype = \"sphere\"\n";
+    let cases = [
+        (
+            "w.toml",
+            format!("[image]\nwidth = -5\nheight = 10\n{sphere}n = 8\nr = 1\n"),
+        ),
+        (
+            "h.toml",
+            format!("[image]\nwidth = 10\nheight = 1.5\n{sphere}n = 8\nr = 1\n"),
+        ),
+        ("n.toml", format!("{sphere}n = \"x\"\nr = 1\n")),
+    ];
+    for (file, text) in &cases {
+        std::fs::write(d.join(file), text).expect("writes");
+    }
+    let said = |lang, file| refused(&d, lang, &["render", file, "-o", "o.png"]);
+    assert_eq!(
+        said("en", "w.toml"),
+        "error: width: w.toml:2:9: invalid value: integer `-5`, \
+         expected a whole number from 0 to 4294967295"
+    );
+    assert_eq!(
+        said("id", "w.toml"),
+        "kesalahan: width: w.toml:2:9: nilai tidak sah: bilangan bulat `-5`, \
+         seharusnya bilangan bulat dari 0 sampai 4294967295"
+    );
+    assert_eq!(
+        said("id", "h.toml"),
+        "kesalahan: height: h.toml:3:10: jenis nilai salah: bilangan desimal `1.5`, \
+         seharusnya bilangan bulat dari 0 sampai 4294967295"
+    );
+    assert_eq!(
+        said("en", "n.toml"),
+        "error: n: n.toml:3:5: invalid type: string \"x\", expected a whole number"
+    );
+    assert!(!d.join("o.png").exists(), "nothing is drawn");
+}
+
 #[test]
 fn the_obj_readers_reasons_in_both_languages() {
     let d = scratch("refusals-obj");

@@ -191,6 +191,7 @@ pub fn toml_reason(msg: &str) -> TomlErr {
             TomlErr::InvalidType as fn(String, String) -> TomlErr,
         ),
         ("invalid length", TomlErr::InvalidLength),
+        ("invalid value:", TomlErr::InvalidValue),
     ] {
         if let Some((found, expected)) = msg
             .strip_prefix(head)

@@ -443,6 +443,9 @@ pub enum TomlErr {
     InvalidType(String, String),
     /// An array of the wrong length: the length, the one expected.
     InvalidLength(String, String),
+    /// A value of the right type out of what the field takes (a negative
+    /// width): what was found, what was expected.
+    InvalidValue(String, String),
     /// A number that cannot be read.
     Num(NumErr),
     /// A value out of its bound: the bound, the value given.

@@ -174,6 +174,9 @@ impl ErrorWords for En {
             TomlErr::InvalidLength(found, want) => {
                 format!("invalid length {}, expected {}", serde(found), serde(want))
             }
+            TomlErr::InvalidValue(found, want) => {
+                format!("invalid value: {}, expected {}", serde(found), serde(want))
+            }
             TomlErr::Num(n) => self.number(n),
             TomlErr::MustBe(b, got) => self.must_be(b, got),
             TomlErr::WholeRange(lo, hi, got) => {
@@ -320,6 +323,32 @@ impl ErrorWords for En {
     }
 
     fn serde_word(&self, w: SerdeWord) -> &'static str {
-        errors::serde_text(w)
+        use SerdeWord as S;
+        match w {
+            S::U8 => "a whole number from 0 to 255",
+            S::U16 => "a whole number from 0 to 65535",
+            S::U32 => "a whole number from 0 to 4294967295",
+            S::U64 | S::Usize => "a whole number ≥ 0",
+            S::I32 | S::I64 => "a whole number",
+            S::F32 | S::F64 => "a number",
+            S::NumberOrExpression
+            | S::Vector
+            | S::ArrayOfLength
+            | S::ASequence
+            | S::Sequence
+            | S::AString
+            | S::String
+            | S::Integer
+            | S::FloatingPoint
+            | S::Boolean
+            | S::AMap
+            | S::Map
+            | S::ElementsInSequence
+            | S::ANumber
+            | S::AnInteger
+            | S::ABoolean
+            | S::UnitVariant
+            | S::Elements => errors::serde_text(w),
+        }
     }
 }

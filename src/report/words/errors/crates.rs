@@ -56,7 +56,9 @@ impl<K: Copy> Shape<K> {
 }
 
 /// serde's names of kinds of values (and grafika's own `expecting` words),
-/// in its messages "invalid type: {found}, expected {wanted}".
+/// in its messages "invalid type: {found}, expected {wanted}"; for a
+/// number field serde names the Rust type (`u32`, `i64`, `f64`), which
+/// no student should have to read: every language says what it takes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SerdeWord {
     NumberOrExpression,
@@ -77,12 +79,21 @@ pub enum SerdeWord {
     ABoolean,
     UnitVariant,
     Elements,
+    U8,
+    U16,
+    U32,
+    U64,
+    Usize,
+    I32,
+    I64,
+    F32,
+    F64,
 }
 
 impl SerdeWord {
     /// Every phrase, longest first (so `an integer` is read whole, not as
     /// `an` + `integer`).
-    pub const ALL: [SerdeWord; 18] = [
+    pub const ALL: [SerdeWord; 27] = [
         SerdeWord::NumberOrExpression,
         SerdeWord::Vector,
         SerdeWord::ElementsInSequence,
@@ -100,7 +111,16 @@ impl SerdeWord {
         SerdeWord::Boolean,
         SerdeWord::String,
         SerdeWord::AMap,
+        SerdeWord::Usize,
         SerdeWord::Map,
+        SerdeWord::U16,
+        SerdeWord::U32,
+        SerdeWord::U64,
+        SerdeWord::I32,
+        SerdeWord::I64,
+        SerdeWord::F32,
+        SerdeWord::F64,
+        SerdeWord::U8,
     ];
 }
 
@@ -125,6 +145,15 @@ pub fn serde_text(w: SerdeWord) -> &'static str {
         SerdeWord::ABoolean => "a boolean",
         SerdeWord::UnitVariant => "unit variant",
         SerdeWord::Elements => "elements",
+        SerdeWord::U8 => "u8",
+        SerdeWord::U16 => "u16",
+        SerdeWord::U32 => "u32",
+        SerdeWord::U64 => "u64",
+        SerdeWord::Usize => "usize",
+        SerdeWord::I32 => "i32",
+        SerdeWord::I64 => "i64",
+        SerdeWord::F32 => "f32",
+        SerdeWord::F64 => "f64",
     }
 }
 

@@ -190,6 +190,7 @@ fn every_toml() -> Vec<TomlErr> {
         TomlErr::UnknownVariant(s("pyramid"), s("`cone`, `sphere`")),
         TomlErr::InvalidType(s("string \"a\""), s("a sequence")),
         TomlErr::InvalidLength(s("2"), s("an array of length 3")),
+        TomlErr::InvalidValue(s("integer `-5`"), s("u32")),
         TomlErr::Num(NumErr::DivZero(s("1/0"))),
         TomlErr::MustBe(Bound::Positive, s("-1.5")),
         TomlErr::WholeRange(3, 4096, s("2")),
@@ -393,6 +394,7 @@ fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want,
         | TomlErr::UnknownVariant(..)
         | TomlErr::InvalidType(..)
         | TomlErr::InvalidLength(..)
+        | TomlErr::InvalidValue(..)
         | TomlErr::Num(_)
         | TomlErr::MustBe(..)
         | TomlErr::WholeRange(..)

@@ -197,6 +197,13 @@ impl ErrorWords for Id {
                     serde(want)
                 )
             }
+            TomlErr::InvalidValue(found, want) => {
+                format!(
+                    "nilai tidak sah: {}, seharusnya {}",
+                    serde(found),
+                    serde(want)
+                )
+            }
             TomlErr::Num(e) => self.number(e),
             TomlErr::MustBe(b, got) => self.must_be(b, got),
             TomlErr::WholeRange(lo, hi, got) => {
@@ -490,6 +497,12 @@ impl ErrorWords for Id {
             SerdeWord::ABoolean => "boolean",
             SerdeWord::UnitVariant => "nilai tanpa data",
             SerdeWord::Elements => "elemen",
+            SerdeWord::U8 => "bilangan bulat dari 0 sampai 255",
+            SerdeWord::U16 => "bilangan bulat dari 0 sampai 65535",
+            SerdeWord::U32 => "bilangan bulat dari 0 sampai 4294967295",
+            SerdeWord::U64 | SerdeWord::Usize => "bilangan bulat ≥ 0",
+            SerdeWord::I32 | SerdeWord::I64 => "bilangan bulat",
+            SerdeWord::F32 | SerdeWord::F64 => "bilangan",
         }
     }
 }
