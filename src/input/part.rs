@@ -146,6 +146,21 @@ impl PartIn {
     }
 }
 
+impl PartIn {
+    /// Whether it takes the projected points (worked from the view's eye
+    /// coordinates by earlier steps).
+    pub fn takes_projected(&self, shared: &Shared) -> bool {
+        match self {
+            PartIn::Project(ProjectIn::Chained) => true,
+            PartIn::Project(ProjectIn::Given(_)) => false,
+            PartIn::Viewport => shared.on_window.is_none(),
+            PartIn::Basis | PartIn::View | PartIn::Window | PartIn::Clip(_) | PartIn::Shade(_) => {
+                false
+            }
+        }
+    }
+}
+
 impl Problem {
     /// A calculator command's one part (or, for `window` with a viewport,
     /// the window and the viewport parts), on the inputs `shared`.

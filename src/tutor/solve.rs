@@ -9,6 +9,7 @@
 //! comparison with the answers the source printed; a command's are not.
 
 use crate::error::{Error, Result};
+use crate::input::fields::Num;
 use crate::input::part::{ClipIn, PartIn, Problem, ProjectIn, ProjectionIn, ShadePartIn, Table};
 use crate::input::problem::{PerspectiveIn, PointRef, ProblemIn};
 use crate::input::{eval, eval3};
@@ -220,12 +221,8 @@ impl<T: Scalar> Solver<'_, '_, T> {
     /// Whether a part asked takes the projected points (a problem file's
     /// project or viewport).
     fn projects(&self) -> bool {
-        let chained = |t: &PartIn| match t {
-            PartIn::Project(how) => matches!(how, ProjectIn::Chained),
-            PartIn::Viewport => self.p.shared.on_window.is_none(),
-            _ => false,
-        };
-        self.p.parts.iter().any(chained)
+        let shared = &self.p.shared;
+        self.p.parts.iter().any(|t| t.takes_projected(shared))
     }
 
     /// `basis`: the camera basis u, v, n.
@@ -513,7 +510,7 @@ fn projection<T: Scalar>(given: &ProjectionIn) -> Result<Projection<T>> {
 
 /// Points (x, y) given on the window, evaluated (each error naming its field).
 fn given_on_window<T: Scalar>(
-    given: &[(String, String, [crate::input::fields::Num; 2])],
+    given: &[(String, String, [Num; 2])],
 ) -> Result<Vec<(String, (T, T))>> {
     (given.iter())
         .map(|(n, f, [x, y])| Ok((n.clone(), (eval(f, x)?, eval(f, y)?))))
