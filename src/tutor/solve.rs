@@ -4,7 +4,7 @@
 //! near plane, window and clipping, viewport — by one exhaustive match
 //! over the typed part, each part run by the functions of
 //! [`crate::tutor::run`]. What a part takes from earlier parts is worked
-//! once, when first needed ([`Earlier`]); a problem file's results are
+//! once, when first needed (`Earlier`); a problem file's results are
 //! nested under each part's key, with its section headers and a
 //! comparison with the answers the source printed; a command's are not.
 
@@ -52,7 +52,7 @@ pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> 
 
 /// Solves a typed problem at precision `T`, with stage results altered by
 /// `hooks`: each part asked, in [`Part::all`]'s order, by one exhaustive
-/// match over the typed part ([`Solver::part`]: a new part stops the
+/// match over the typed part (`Solver::part`: a new part stops the
 /// build there). The view is worked before the projection reads near,
 /// which is read whatever is asked (a near that does not evaluate is
 /// refused).
