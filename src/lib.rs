@@ -11,16 +11,16 @@
 //! | [`tutor`] | the one solver (a problem's parts run through the stages, [`tutor::run`]), the report as data ([`tutor::solution`]), mark answers (check), the mistake catalog, generate exams |
 //! | [`bench`](mod@bench) | run time against error of the float stages |
 //! | [`render`] | the renderer: geometry, rasterization, shading, drawn with the stages |
-//! | [`input`] | the typed problem ([`input::part::Problem`]: a problem file, or a calculator command's one part; the parts a file asks, [`input::ask::Part`], named once), scene, lights and mesh files, and flag values, read and validated |
+//! | [`input`] | the typed problem ([`input::part::Problem`]: the parts asked, each with its inputs, given or taken from an earlier part, whether from a problem file or a calculator command's flags; the parts a file asks, [`input::ask::Part`], named once), scene, lights and mesh files, and flag values, read and validated |
 //! | [`stages`] | the math the text teaches: camera, projection, window, clip, lighting; each writes its steps to a [`stages::trace::Trace`] |
 //! | [`num`] | numbers: the `Scalar` trait, the exact type, floats, lanes, vectors, expressions, formatting |
 //! | [`msg`] | message keys: what is said to a person, as data (`report::words` gives the words); the language, [`msg::Lang`], passed as itself to every layer |
 //! | [`error`] | the error value every layer returns |
 //!
 //! Data flows one way: command-line flags or a problem file become one
-//! typed problem; the solver ([`tutor::solve::solve_problem`]) evaluates it
-//! at the chosen precision and runs each part through the stage functions
-//! (the same [`tutor::run`] functions for flags and files), which write
+//! typed problem; the one solver ([`tutor::solve::solve_problem`]) evaluates
+//! it at the chosen precision and runs each part, by one match over the
+//! typed part, through the stage functions ([`tutor::run`]), which write
 //! their steps to a trace; it returns a typed report
 //! ([`tutor::solution::Report`]: what was asked, what each part was given,
 //! the named results, the steps), and [`report`] writes that as text, JSON,

@@ -1050,3 +1050,89 @@ fn a_window_point_takes_the_decimal_comma_as_a_vector_does() {
         assert!(text.contains("    A = (75, 50)\n"), "{point}: {text}");
     }
 }
+
+/// A calculator command is the same part of a problem file, solved by the
+/// same solver: for the same inputs, typed as people type them, the
+/// command's (unnested) results are the file's results under the part's
+/// key. By hand for the view: eye (0, 0, 5) looking at the origin, up y:
+/// n = (0, 0, 1), u = (1, 0, 0), v = (0, 1, 0); P = (1, 2, 3) is
+/// (1, 2, −2) in eye coordinates. The window: fovy 90°, aspect 2, near 1:
+/// top = tan 45° = 1, right = 2.
+#[test]
+fn a_calculator_command_gives_the_results_of_the_same_part_of_a_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("same.toml");
+    let toml = "title = 'same'\n\
+        [camera]\neye = '(0; 0; 5)'\nlook = [0, 0, 0]\nup = '0, 1, 0'\n\
+        [points]\nP = '(1, 2, 3)'\n\
+        [perspective]\nnear = 1\nfovy = 90\naspect = '4/2'\n\
+        [clip]\nmin = [0, 0, 0]\nmax = [3, 4, 3]\n\
+        [[clip.segment]]\nfrom = [4, 2, 2]\nto = '(−2, 6, 1)'\n\
+        [shade]\nlight = [0, 0, 1]\nnormal = '(0, 1/√2, 1/√2)'\nview = [0, 0, 1]\ncolor = [1, 1, 0]\n";
+    std::fs::write(&file, toml).unwrap();
+    let solved = json_ok(&["solve", file.to_str().unwrap()]);
+    let cases: [(&str, Vec<&str>); 4] = [
+        (
+            "view",
+            vec![
+                "view",
+                "--eye",
+                "(0; 0; 5)",
+                "--look",
+                "0,0,0",
+                "--up",
+                "0,1,0",
+                "--point",
+                "P=(1, 2, 3)",
+            ],
+        ),
+        (
+            "window",
+            vec!["window", "--fovy", "90", "--aspect", "4/2", "--near", "1"],
+        ),
+        (
+            "clip",
+            vec![
+                "clip",
+                "--min",
+                "0,0,0",
+                "--max",
+                "3,4,3",
+                "--from",
+                "4,2,2",
+                "--to",
+                "(−2, 6, 1)",
+            ],
+        ),
+        (
+            "shade",
+            vec![
+                "shade",
+                "--light",
+                "0,0,1",
+                "--normal",
+                "(0, 1/√2, 1/√2)",
+                "--view",
+                "0,0,1",
+                "--color",
+                "1,1,0",
+            ],
+        ),
+    ];
+    for (part, args) in cases {
+        let command = json_ok(&args);
+        assert_eq!(command["command"], part);
+        assert_eq!(command["result"], solved["result"][part], "{part}");
+    }
+    let view = &solved["result"]["view"];
+    for (key, want) in [
+        ("u", [1.0, 0.0, 0.0]),
+        ("v", [0.0, 1.0, 0.0]),
+        ("n", [0.0, 0.0, 1.0]),
+    ] {
+        assert_eq!(view[key], serde_json::json!(want), "{key}");
+    }
+    assert_eq!(view["points"]["P"], serde_json::json!([1.0, 2.0, -2.0]));
+    assert_eq!(solved["result"]["window"]["top"], 1.0);
+    assert_eq!(solved["result"]["window"]["right"], 2.0);
+}

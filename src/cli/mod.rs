@@ -72,9 +72,9 @@ fn run_writing(cli: &Cli, outputs: &Outputs) -> Result<Report> {
 fn run_unchecked(cli: &Cli, outputs: &Outputs) -> Result<Report> {
     let p = cli.common.precision;
     let problem = match &cli.command {
-        Command::Solve { file, .. } => Problem::File(Box::new(
-            ProblemIn::read(file)?.localized(style_of(cli).lang),
-        )),
+        Command::Solve { file, .. } => {
+            Problem::of_file(ProblemIn::read(file)?.localized(style_of(cli).lang))?
+        }
         // The renderer computes at f32 (the calculator's precisions are for
         // explaining): another --precision is refused, not ignored.
         Command::Render(_) if p != Precision::Exact => {
@@ -82,7 +82,7 @@ fn run_unchecked(cli: &Cli, outputs: &Outputs) -> Result<Report> {
         }
         Command::Render(a) => return crate::cli::render::run(a, style_of(cli).lang, outputs),
         c => match calc::part_of(c) {
-            Some(part) => Problem::Part(Box::new(part?)),
+            Some(problem) => problem?,
             None => return Err(Error::why("command", ErrMsg::OwnOutput)),
         },
     };

@@ -148,24 +148,35 @@ fn render_input(run: &RenderRun) -> Value {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::input::part::{PartIn, WindowIn};
-    use crate::input::{angle, num, points2, size};
-    use crate::tutor::part::solve_part;
+    use crate::input::part::{PartIn, Problem, Shared, Table};
+    use crate::input::problem::PerspectiveIn;
+    use crate::input::{angle, num, size};
+    use crate::tutor::solve::solve_problem;
 
     /// A calculator command's input is its one part as the stages took it:
     /// at f32, near typed `0,1` is the f32 nearest 1/10, written by the
     /// shortest decimal that reads back to it (0.1); no far is null.
     #[test]
     fn a_calculator_part_gives_its_inputs_at_the_precision() {
-        let w = WindowIn {
-            fovy: angle("fovy", "45").unwrap(),
-            aspect: num("aspect", "2").unwrap(),
-            near: num("near", "0,1").unwrap(),
+        let table = PerspectiveIn {
+            fovy: Some(angle("fovy", "45").unwrap()),
+            aspect: Some(num("aspect", "2").unwrap()),
+            near: Some(num("near", "0,1").unwrap()),
             far: None,
             viewport: Some(size("viewport", "200x100").unwrap()),
-            points: points2("point", &["A=(0; 0,01)".to_string()]).unwrap(),
+            d: None,
         };
-        let r = solve_part::<f32>(&PartIn::Window(w)).unwrap();
+        let xy = [
+            num("point A", "0").unwrap(),
+            num("point A", "0,01").unwrap(),
+        ];
+        let shared = Shared {
+            perspective: Some(Table { prefix: "", table }),
+            on_window: Some(vec![("A".into(), "point A".into(), xy)]),
+            ..Shared::default()
+        };
+        let problem = Problem::command(vec![PartIn::Window, PartIn::Viewport], shared);
+        let r = solve_problem::<f32>(&problem).unwrap();
         assert_eq!(r.command(), "window");
         let want = json!({
             "fovy": 45.0, "aspect": 2.0, "near": 0.1, "far": null,

@@ -12,7 +12,6 @@ pub mod follow;
 pub mod generate;
 pub mod key;
 pub mod keys;
-pub mod part;
 pub mod pixel;
 pub mod practice;
 pub mod run;

@@ -81,16 +81,17 @@ pub fn basis_run<T: Scalar>(
     Ok(b)
 }
 
-/// The view matrix (its errors named by `field`) and the eye coordinates
-/// of `points` (each `view.points.A` given by `hooks` in place of its own).
+/// The view matrix (its errors' fields under `prefix`: `camera.eye`) and
+/// the eye coordinates of `points` (each `view.points.A` given by `hooks`
+/// in place of its own).
 pub fn eye_run<T: Scalar>(
     b: &Basis<T>,
     cam: &Camera<T>,
     points: &[Named<T>],
-    (hooks, field): (&Hooks<T>, fn(Error) -> Error),
+    (hooks, prefix): (&Hooks<T>, &str),
     rec: &mut Recorder,
 ) -> Result<(Matrix4<T>, Vec<Named<T>>)> {
-    let m = camera::view_matrix(b, &cam.pe, rec).map_err(field)?;
+    let m = camera::view_matrix(b, &cam.pe, rec).map_err(|e| in_table(prefix, e))?;
     let mut eye = Vec::new();
     for (n, q) in points {
         let e = camera::to_eye(b, &cam.pe, n, q, rec)?;
@@ -100,6 +101,13 @@ pub fn eye_run<T: Scalar>(
         eye.push((n.clone(), given.unwrap_or(e)));
     }
     Ok((m, eye))
+}
+
+/// A stage's error reported against the field of the table its input came
+/// from (`up` → `camera.up` in a problem file; no prefix for a flag).
+pub fn in_table(prefix: &str, e: Error) -> Error {
+    let f = format!("{prefix}{}", e.field);
+    e.in_field(f)
 }
 
 /// Named points as a result map.

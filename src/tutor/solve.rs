@@ -1,13 +1,17 @@
-//! The solver: a problem ([`solve_problem`]) is a calculator command's one
-//! part ([`crate::tutor::part`]) or a whole problem file, solved here
-//! through the text's steps — modeling, viewing transformation, projection
-//! onto the near plane, window and clipping, viewport — with a comparison
-//! with the answers the source printed. Both run their parts by the same
-//! functions ([`crate::tutor::run`]).
+//! The one solver: a typed problem ([`Problem`]: a calculator command's
+//! one part, or a problem file's parts) solved part by part through the
+//! text's steps — modeling, viewing transformation, projection onto the
+//! near plane, window and clipping, viewport — by one exhaustive match
+//! over the typed part, each part run by the functions of
+//! [`crate::tutor::run`]. What a part takes from earlier parts is worked
+//! once, when first needed (`Earlier`); a problem file's results are
+//! nested under each part's key, with its section headers and a
+//! comparison with the answers the source printed; a command's are not.
 
 use crate::error::{Error, Result};
-use crate::input::part::Problem;
-use crate::input::problem::{PointRef, ProblemIn};
+use crate::input::fields::Num;
+use crate::input::part::{ClipIn, PartIn, Problem, ProjectIn, ProjectionIn, ShadePartIn, Table};
+use crate::input::problem::{PerspectiveIn, PointRef, ProblemIn};
 use crate::input::{eval, eval3};
 use crate::msg::{ErrMsg, Msg};
 use crate::num::format::fmt_dec;
@@ -19,44 +23,53 @@ use crate::stages::projection::Projection;
 use crate::stages::trace::{Name, Recorder, Step, Subst, Trace, Val};
 use crate::stages::window;
 use crate::tutor::key::{Field, Part};
+use crate::tutor::keys::basis_result;
 use crate::tutor::run::{
-    basis_run, clip_run, eye_run, light_run, pixels, points_val, project_run, view_result,
-    window_run, Hooks, Named,
+    basis_run, clip_run, eye_run, in_table, light_run, pixels, points_val, project_run,
+    view_result, window_run, Hooks, Named,
 };
 use crate::tutor::solution::{
     at, lookup, p3, Asked, CameraAt, Compared, Comparison, Given, Report, ShadeAt, Tree, WindowAt,
 };
 use nalgebra::Matrix4;
 
-/// Solves a problem at precision `T`: a calculator command's one part or
-/// a problem file's parts.
+/// Solves a typed problem at precision `T`: a calculator command's one
+/// part or a problem file's parts.
 pub fn solve_problem<T: Scalar>(p: &Problem) -> Result<Report> {
-    match p {
-        Problem::Part(part) => crate::tutor::part::solve_part::<T>(part),
-        Problem::File(file) => solve::<T>(file),
-    }
+    solve_typed::<T>(p, &Hooks::default())
 }
 
-/// Solves a parsed problem at precision `T`.
+/// Solves a parsed problem file at precision `T`.
 pub fn solve<T: Scalar>(p: &ProblemIn) -> Result<Report> {
     solve_with::<T>(p, &Hooks::default())
 }
 
-/// Solves a parsed problem at precision `T`, with stage results altered by
-/// `hooks`: each part asked, in [`Part::all`]'s order, by one exhaustive
-/// match (a new part stops the build here).
+/// Solves a parsed problem file at precision `T`, with stage results
+/// altered by `hooks` (the mistake catalog, follow-through).
 pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> {
-    let points: Vec<Named<T>> = p
-        .points()?
-        .iter()
-        .map(|(n, v)| Ok((n.clone(), eval3(&format!("points.{n}"), v)?)))
+    solve_typed::<T>(&Problem::of_file(p.clone())?, hooks)
+}
+
+/// Solves a typed problem at precision `T`, with stage results altered by
+/// `hooks`: each part asked, in [`Part::all`]'s order, by one exhaustive
+/// match over the typed part (`Solver::part`: a new part stops the
+/// build there). The view is worked before the projection reads near,
+/// which is read whatever is asked (a near that does not evaluate is
+/// refused).
+pub fn solve_typed<T: Scalar>(p: &Problem, hooks: &Hooks<T>) -> Result<Report> {
+    let points: Vec<Named<T>> = (p.shared.points.iter())
+        .map(|(n, field, v)| Ok((n.clone(), eval3(field, v)?)))
         .collect::<Result<_>>()?;
     let mut s = Solver {
         p,
         hooks,
-        out: Out::default(),
+        out: Out {
+            sections: p.file.is_some(),
+            ..Out::default()
+        },
         earlier: Earlier {
             points,
+            based: None,
             viewed: None,
             near: None,
             projected: None,
@@ -64,20 +77,43 @@ pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> 
         },
     };
     for part in Part::all() {
-        match part {
-            Part::View => s.view()?,
-            Part::Project => s.project()?,
-            Part::Window => s.window()?,
-            Part::Viewport => s.viewport()?,
-            Part::Clip => s.clip()?,
-            Part::Shade => s.shade()?,
+        if part == Part::Project {
+            if s.projects() {
+                s.viewed()?;
+            }
+            s.near()?;
+        }
+        for typed in p.parts.iter().filter(|t| t.part() == part) {
+            s.part(typed)?;
         }
     }
-    let Out { rec, result, parts } = s.out;
+    let Out {
+        rec, result, parts, ..
+    } = s.out;
+    match &p.file {
+        None => Ok(Report::from_recorder::<T>(
+            Asked::Command,
+            parts,
+            result,
+            rec,
+        )),
+        Some(file) => file_report::<T>(file, (rec, result, parts)),
+    }
+}
+
+/// A problem file's report: lights without a `[shade]` table are refused
+/// whatever is asked, and so is a file that asks nothing it can solve;
+/// the printed answers compared with the results.
+fn file_report<T: Scalar>(
+    p: &ProblemIn,
+    (rec, result, parts): (Recorder, Tree, Vec<Given>),
+) -> Result<Report> {
+    if !p.light.is_empty() && p.shade.is_none() {
+        return Err(Error::why("shade", ErrMsg::LightsNeedShade));
+    }
     if result.is_empty() {
         return Err(Error::why("ask", ErrMsg::NothingToSolve));
     }
-
     // Exact printed forms are compared to 1e-9 relative, or to what the
     // precision itself can hold (f32 rounds at about 1e-7).
     let rel = match T::PRECISION {
@@ -92,19 +128,32 @@ pub fn solve_with<T: Scalar>(p: &ProblemIn, hooks: &Hooks<T>) -> Result<Report> 
     Ok(report)
 }
 
-/// Where the parts write: the steps, the named results, what each part was given.
+/// Where the parts write: the steps, the named results, what each part
+/// was given; whether section headers are written (a problem file's).
 #[derive(Default)]
 struct Out {
     rec: Recorder,
     result: Tree,
     parts: Vec<Given>,
+    sections: bool,
+}
+
+impl Out {
+    /// A section header, for a problem file.
+    fn section(&mut self, m: Msg) {
+        if self.sections {
+            self.rec.section(m);
+        }
+    }
 }
 
 /// What the stages produced for the parts after them, each worked (its
 /// steps written) once, when a part first needs it; `None`: not yet.
 struct Earlier<T> {
-    /// The world points, in file order (read for every problem).
+    /// The shared points, in order (read for every problem).
     points: Vec<Named<T>>,
+    /// The camera and its basis (inside, `None`: no camera).
+    based: Option<Option<(Camera<T>, Basis<T>)>>,
     /// The camera's view (inside, `None`: no camera to view with).
     viewed: Option<Option<Viewed<T>>>,
     /// near, when given.
@@ -137,95 +186,121 @@ struct Windowed<T> {
     given: WindowAt,
 }
 
-/// A problem file being solved: the problem, the hooks, what is written
-/// and what earlier stages produced.
+/// A problem being solved: the problem, the hooks, what is written and
+/// what earlier stages produced.
 struct Solver<'a, 'h, T> {
-    p: &'a ProblemIn,
+    p: &'a Problem,
     hooks: &'a Hooks<'h, T>,
     out: Out,
     earlier: Earlier<T>,
 }
 
 impl<T: Scalar> Solver<'_, '_, T> {
-    /// Whether a part asked needs the projected points (project, viewport).
-    fn projects(&self) -> bool {
-        self.p.asks(Part::Project) || self.p.asks(Part::Viewport)
+    /// One part, by the one exhaustive match over the typed part.
+    fn part(&mut self, part: &PartIn) -> Result<()> {
+        match part {
+            PartIn::Basis => self.basis(),
+            PartIn::View => self.view(),
+            PartIn::Project(how) => self.project(how),
+            PartIn::Window => self.window(),
+            PartIn::Viewport => self.viewport(),
+            PartIn::Clip(c) => self.clip(c),
+            PartIn::Shade(s) => self.shade(s),
+        }
     }
 
-    /// `view`: the basis, the view matrix and the eye coordinates, worked
-    /// here whenever a part asked needs them (view, project, viewport).
-    fn view(&mut self) -> Result<()> {
-        if !(self.p.asks(Part::View) || self.projects()) {
-            return Ok(());
+    /// A part's results: a problem file's under the part's key, a
+    /// command's (one part's map) unnested (docs/spec.md §3).
+    fn put(&mut self, part: Part, v: Val) {
+        match (&self.p.file, v) {
+            (None, Val::Map(kv)) => self.out.result.extend(kv),
+            (_, v) => self.out.result.push((part.key(), v)),
         }
-        let (Some(v), true) = (self.viewed()?, self.p.asks(Part::View)) else {
+    }
+
+    /// Whether a part asked takes the projected points (a problem file's
+    /// project or viewport).
+    fn projects(&self) -> bool {
+        let shared = &self.p.shared;
+        self.p.parts.iter().any(|t| t.takes_projected(shared))
+    }
+
+    /// `basis`: the camera basis u, v, n.
+    fn basis(&mut self) -> Result<()> {
+        if let Some((cam, b)) = self.based()? {
+            self.put(Part::View, Val::Map(basis_result(&b)));
+            self.out.parts.push(Given::Basis(CameraAt::of(&cam)));
+        }
+        Ok(())
+    }
+
+    /// `view`: the basis, the view matrix and the eye coordinates.
+    fn view(&mut self) -> Result<()> {
+        let Some(v) = self.viewed()? else {
             return Ok(());
         };
-        let r = view_result(&v.basis, &v.matrix, &v.eye);
-        self.out.result.push((Part::View.key(), Val::Map(r)));
+        self.put(
+            Part::View,
+            Val::Map(view_result(&v.basis, &v.matrix, &v.eye)),
+        );
         let world = (self.earlier.points.iter()).map(|(n, q)| (n.clone(), p3(q)));
         let given = Given::View(CameraAt::of(&v.cam), world.collect());
         self.out.parts.push(given);
         Ok(())
     }
 
-    /// `project`: the points projected onto the near plane. near is read
-    /// here whatever is asked (a near that does not evaluate is refused).
-    fn project(&mut self) -> Result<()> {
-        self.near()?;
-        if !self.p.asks(Part::Project) {
-            return Ok(());
-        }
-        let (Some((proj, projected)), Some(v)) = (self.projected()?, self.viewed()?) else {
-            return Ok(());
+    /// `project`: the points projected, by a projection given or onto
+    /// the near plane (the view's eye coordinates).
+    fn project(&mut self, how: &ProjectIn) -> Result<()> {
+        let (proj, points, projected) = match how {
+            ProjectIn::Given(given) => {
+                let proj = projection::<T>(given)?;
+                let pts = &self.earlier.points;
+                let images = project_run(&proj, pts, self.hooks, &mut self.out.rec)?;
+                (proj, pts.clone(), images)
+            }
+            ProjectIn::Chained => {
+                let (Some((proj, projected)), Some(v)) = (self.projected()?, self.viewed()?) else {
+                    return Ok(());
+                };
+                (proj, v.eye, projected)
+            }
         };
         let r = vec![(Field::Points.key(), points_val(&projected))];
-        self.out.result.push((Part::Project.key(), Val::Map(r)));
+        self.put(Part::Project, Val::Map(r));
         self.out.parts.push(Given::Project {
             projection: Given::projection(&proj),
-            points: (v.eye.iter())
+            points: (points.iter())
                 .map(|(n, e)| (n.clone(), Val::vec3(e)))
                 .collect(),
-            chained: true,
+            chained: matches!(how, ProjectIn::Chained),
         });
         Ok(())
     }
 
     /// `window`: the window's edges (and the far one's).
     fn window(&mut self) -> Result<()> {
-        if !self.p.asks(Part::Window) {
-            return Ok(());
-        }
         if let Some(w) = self.windowed()? {
-            self.out
-                .result
-                .push((Part::Window.key(), Val::Map(w.result)));
+            self.put(Part::Window, Val::Map(w.result));
             self.out.parts.push(Given::Window(w.given));
         }
         Ok(())
     }
 
-    /// `viewport`: the pixels of the projected points (window → pixels).
+    /// `viewport`: the pixels of the points on the window (given, or the
+    /// projected points); a command given no points writes no pixels.
     fn viewport(&mut self) -> Result<()> {
-        let vp = self
-            .p
-            .perspective
-            .as_ref()
-            .and_then(|x| x.viewport.as_ref());
-        if !self.p.asks(Part::Viewport) {
-            return Ok(());
-        }
-        let (Some(w), Some(vp)) = (self.windowed()?, vp) else {
+        let per = self.p.shared.perspective.as_ref();
+        let vp = per.and_then(|x| x.table.viewport.as_ref().map(|v| (x, v)));
+        let (Some(w), Some((per, vp))) = (self.windowed()?, vp) else {
             return Ok(());
         };
-        let projected = self.projected()?.map(|(_, q)| q).unwrap_or_default();
-        let (vw, vh): (T, T) = (
-            eval("perspective.viewport", &vp[0])?,
-            eval("perspective.viewport", &vp[1])?,
-        );
-        window::validate_viewport(&vw, &vh).map_err(|e| e.in_field("perspective.viewport"))?;
-        let Out { rec, result, parts } = &mut self.out;
-        rec.section(Msg::SecViewport);
+        let shown = self.on_window()?;
+        let field = per.field("viewport");
+        let (vw, vh): (T, T) = (eval(&field, &vp[0])?, eval(&field, &vp[1])?);
+        window::validate_viewport(&vw, &vh).map_err(|e| e.in_field(field))?;
+        self.out.section(Msg::SecViewport);
+        let Out { rec, parts, .. } = &mut self.out;
         let windows = parts.iter_mut().filter_map(|g| match g {
             Given::Window(w) => Some(w),
             _ => None,
@@ -233,68 +308,63 @@ impl<T: Scalar> Solver<'_, '_, T> {
         for given in windows {
             given.viewport = Some((at(&vw), at(&vh)));
         }
-        let on_window = projected.iter().map(|(n, q)| (n, (&q[0], &q[1])));
+        let on_window = shown.iter().map(|(n, (x, y))| (n, (x, y)));
         let px = pixels(&w.w, (&vw, &vh), on_window, rec);
-        let r = vec![(Field::Pixels.key(), Val::Map(px))];
-        result.push((Part::Viewport.key(), Val::Map(r)));
+        if !(px.is_empty() && self.p.shared.on_window.is_some()) {
+            let r = vec![(Field::Pixels.key(), Val::Map(px))];
+            self.put(Part::Viewport, Val::Map(r));
+        }
         Ok(())
+    }
+
+    /// The points (x, y) on the window: given, or the projected points.
+    fn on_window(&mut self) -> Result<Vec<(String, (T, T))>> {
+        match &self.p.shared.on_window {
+            Some(given) => given_on_window(given),
+            None => {
+                let projected = self.projected()?.map(|(_, q)| q).unwrap_or_default();
+                let xy = |(n, q): Named<T>| (n, (q[0].clone(), q[1].clone()));
+                Ok(projected.into_iter().map(xy).collect())
+            }
+        }
     }
 
     /// `clip`: the clipping of each segment against the box.
-    fn clip(&mut self) -> Result<()> {
-        let (true, Some(c)) = (self.p.asks(Part::Clip), &self.p.clip) else {
-            return Ok(());
-        };
-        let Out { rec, result, parts } = &mut self.out;
+    fn clip(&mut self, c: &ClipIn) -> Result<()> {
+        let [min, max] = &c.bounds.table;
         let b = ClipBox {
-            min: eval3("clip.min", &c.min)?,
-            max: eval3("clip.max", &c.max)?,
+            min: eval3(&c.bounds.field("min"), min)?,
+            max: eval3(&c.bounds.field("max"), max)?,
         };
-        b.validate().map_err(|e| e.in_field("clip.min"))?;
+        b.validate().map_err(|e| in_table(c.bounds.prefix, e))?;
         let mut all = Vec::new();
-        let several = c.segment.len() > 1;
-        for (i, s) in c.segment.iter().enumerate() {
-            let f = format!("clip.segment[{i}]");
-            let p0: V3<T> = point_ref(&format!("{f}.from"), &s.from, &self.earlier.points)?;
-            let p1: V3<T> = point_ref(&format!("{f}.to"), &s.to, &self.earlier.points)?;
-            rec.section(Msg::SecLineClip(several.then_some(i + 1)));
+        let several = c.segments.len() > 1;
+        for (i, [(ff, from), (tf, to)]) in c.segments.iter().enumerate() {
+            let p0: V3<T> = point_ref(ff, from, &self.earlier.points)?;
+            let p1: V3<T> = point_ref(tf, to, &self.earlier.points)?;
+            self.out.section(Msg::SecLineClip(several.then_some(i + 1)));
             let segment = several.then_some(i);
             let given = Given::clip(&b, (&p0, &p1), segment);
             let hooks = (self.hooks, segment);
-            all.push(Val::Map(clip_run(&b, (&p0, &p1), hooks, rec)));
-            parts.push(given);
+            all.push(Val::Map(clip_run(&b, (&p0, &p1), hooks, &mut self.out.rec)));
+            self.out.parts.push(given);
         }
         match all.len() {
             0 => {}
-            1 => result.push((Part::Clip.key(), all.remove(0))),
-            _ => result.push((Part::Clip.key(), Val::List(all))),
+            1 => self.put(Part::Clip, all.remove(0)),
+            _ => self.put(Part::Clip, Val::List(all)),
         }
         Ok(())
     }
 
-    /// `shade`: the lighting at the `[shade]` point; lights without a
-    /// `[shade]` table are refused whatever is asked.
-    fn shade(&mut self) -> Result<()> {
-        let p = self.p;
-        let Out { rec, result, parts } = &mut self.out;
-        match (p.asks(Part::Shade), &p.shade) {
-            (true, Some(sh)) => {
-                rec.section(Msg::SecLighting);
-                let file = crate::input::lights::LightsFileIn {
-                    global_ambient: p.global_ambient.clone(),
-                    material: None,
-                    light: p.light.clone(),
-                };
-                let (setup, r) = light_run((sh, &file, "shade."), self.hooks, rec)?;
-                result.push((Part::Shade.key(), Val::Map(r)));
-                parts.push(Given::Shade(ShadeAt::of(&setup, None)));
-                Ok(())
-            }
-            _ if !p.light.is_empty() && p.shade.is_none() => {
-                Err(Error::why("shade", ErrMsg::LightsNeedShade))
-            }
-            _ => Ok(()),
-        }
+    /// `shade`: the lighting at the set-up's point.
+    fn shade(&mut self, s: &ShadePartIn) -> Result<()> {
+        self.out.section(Msg::SecLighting);
+        let set_up = (&s.shade.table, &s.lights, s.shade.prefix);
+        let (setup, r) = light_run(set_up, self.hooks, &mut self.out.rec)?;
+        self.put(Part::Shade, Val::Map(r));
+        (self.out.parts).push(Given::Shade(ShadeAt::of(&setup, s.file.clone())));
+        Ok(())
     }
 
     /// near, when given (read once).
@@ -302,44 +372,60 @@ impl<T: Scalar> Solver<'_, '_, T> {
         if let Some(near) = &self.earlier.near {
             return Ok(near.clone());
         }
-        let near = (self.p.perspective.as_ref())
-            .and_then(|x| x.near.as_ref())
-            .map(|n| eval("perspective.near", n))
+        let near = (self.p.shared.perspective.as_ref())
+            .and_then(|x| x.table.near.as_ref().map(|n| eval(&x.field("near"), n)))
             .transpose()?;
         self.earlier.near = Some(near.clone());
         Ok(near)
     }
 
-    /// Steps 1 and 2, modeling and viewing transformation, worked once:
-    /// the basis, the view matrix and the eye coordinates of the points;
-    /// `None` without a camera (refused when points need one and the parts
-    /// are asked by name).
-    fn viewed(&mut self) -> Result<Option<Viewed<T>>> {
-        if let Some(v) = &self.earlier.viewed {
-            return Ok(v.clone());
+    /// Step 1 and the start of step 2, worked once: the camera and its
+    /// basis (a problem file's modeling section says the points are in
+    /// world coordinates already); `None` without a camera (refused when
+    /// points need one and the parts are asked by name).
+    fn based(&mut self) -> Result<Option<(Camera<T>, Basis<T>)>> {
+        if let Some(b) = &self.earlier.based {
+            return Ok(b.clone());
         }
-        let (p, hooks, points) = (self.p, self.hooks, &self.earlier.points);
-        let rec = &mut self.out.rec;
-        let c = match &p.camera {
+        let c = match &self.p.shared.camera {
             Some(c) => c,
-            None if !points.is_empty() && p.ask.is_some() => {
+            None if !self.earlier.points.is_empty() && self.p.by_name() => {
                 return Err(Error::why("camera", ErrMsg::NoCameraTable))
             }
             None => {
-                self.earlier.viewed = Some(None);
+                self.earlier.based = Some(None);
                 return Ok(None);
             }
         };
         let cam = Camera {
-            pe: eval3("camera.eye", &c.eye)?,
-            pr: eval3("camera.look", &c.look)?,
-            vup: eval3("camera.up", &c.up)?,
+            pe: eval3(&c.field("eye"), &c.table.eye)?,
+            pr: eval3(&c.field("look"), &c.table.look)?,
+            vup: eval3(&c.field("up"), &c.table.up)?,
         };
-        rec.section(Msg::SecModeling);
-        rec.step(|| Step::new(Msg::NothingToDo, "").note(Msg::AlreadyWorld));
-        rec.section(Msg::SecViewing);
-        let basis = basis_run(&cam, hooks, rec).map_err(camera_field)?;
-        let (matrix, eye) = eye_run(&basis, &cam, points, (hooks, camera_field), rec)?;
+        let out = &mut self.out;
+        out.section(Msg::SecModeling);
+        if out.sections {
+            (out.rec).step(|| Step::new(Msg::NothingToDo, "").note(Msg::AlreadyWorld));
+        }
+        out.section(Msg::SecViewing);
+        let basis = basis_run(&cam, self.hooks, &mut out.rec).map_err(|e| in_table(c.prefix, e))?;
+        self.earlier.based = Some(Some((cam.clone(), basis.clone())));
+        Ok(Some((cam, basis)))
+    }
+
+    /// Step 2, worked once: the basis, the view matrix and the eye
+    /// coordinates of the points; `None` without a camera.
+    fn viewed(&mut self) -> Result<Option<Viewed<T>>> {
+        if let Some(v) = &self.earlier.viewed {
+            return Ok(v.clone());
+        }
+        let Some((cam, basis)) = self.based()? else {
+            self.earlier.viewed = Some(None);
+            return Ok(None);
+        };
+        let prefix = self.p.shared.camera.as_ref().map_or("", |c| c.prefix);
+        let (hooks, points, rec) = (self.hooks, &self.earlier.points, &mut self.out.rec);
+        let (matrix, eye) = eye_run(&basis, &cam, points, (hooks, prefix), rec)?;
         let v = Viewed {
             cam,
             basis,
@@ -358,14 +444,15 @@ impl<T: Scalar> Solver<'_, '_, T> {
         }
         let eye = self.viewed()?.map(|v| v.eye).unwrap_or_default();
         let near = self.near()?;
+        let per = self.p.shared.perspective.as_ref();
         let done = match eye.is_empty() {
             true => None,
             false => Some(project_steps(
-                self.p,
+                per,
                 self.hooks,
                 &eye,
                 near.as_ref(),
-                &mut self.out.rec,
+                &mut self.out,
             )?),
         };
         self.earlier.projected = Some(done.clone());
@@ -388,9 +475,17 @@ impl<T: Scalar> Solver<'_, '_, T> {
             false => (vec![], vec![]),
         };
         let near = self.near()?;
-        let rec = &mut self.out.rec;
-        let done = match &self.p.perspective {
-            Some(_) => window_steps(self.p, self.hooks, near.as_ref(), (&eye, &shown), rec)?,
+        let done = match &self.p.shared.perspective {
+            Some(per) => {
+                let eyes = (eye.as_slice(), shown.as_slice());
+                window_steps(
+                    self.p,
+                    per,
+                    (self.hooks, near.as_ref()),
+                    eyes,
+                    &mut self.out,
+                )?
+            }
             None => None,
         };
         self.earlier.window = Some(done.clone());
@@ -398,23 +493,51 @@ impl<T: Scalar> Solver<'_, '_, T> {
     }
 }
 
+/// A projection given, its numbers evaluated (each error naming its flag)
+/// and checked.
+fn projection<T: Scalar>(given: &ProjectionIn) -> Result<Projection<T>> {
+    let proj = match given {
+        ProjectionIn::Plane((f, d)) => Projection::Plane { d: eval(f, d)? },
+        ProjectionIn::General((fc, c), (fp, p)) => Projection::General {
+            zprp: eval(fc, c)?,
+            zvp: eval(fp, p)?,
+        },
+        ProjectionIn::Ortho => Projection::Ortho,
+    };
+    proj.validate()?;
+    Ok(proj)
+}
+
+/// Points (x, y) given on the window, evaluated (each error naming its field).
+fn given_on_window<T: Scalar>(
+    given: &[(String, String, [Num; 2])],
+) -> Result<Vec<(String, (T, T))>> {
+    (given.iter())
+        .map(|(n, f, [x, y])| Ok((n.clone(), (eval(f, x)?, eval(f, y)?))))
+        .collect()
+}
+
 /// Step 3's steps: d (−near unless given), the projection, the images of
 /// the eye points.
 fn project_steps<T: Scalar>(
-    p: &ProblemIn,
+    per: Option<&Table<PerspectiveIn>>,
     hooks: &Hooks<T>,
     eye_pts: &[Named<T>],
     near: Option<&T>,
-    rec: &mut Recorder,
+    out: &mut Out,
 ) -> Result<Projected<T>> {
-    let given = p.perspective.as_ref().and_then(|x| x.d.as_ref());
+    let prefix = per.map_or("perspective.", |x| x.prefix);
+    let given = per.and_then(|x| x.table.d.as_ref());
     let d: T = match (given, near) {
-        (Some(d), _) => eval("perspective.d", d)?,
+        (Some(d), _) => eval(&format!("{prefix}d"), d)?,
         (None, Some(n)) => -n.clone(),
-        (None, None) => return Err(Error::why("perspective.near", ErrMsg::ProjectionNeedsNear)),
+        (None, None) => {
+            let field = format!("{prefix}near");
+            return Err(Error::why(field, ErrMsg::ProjectionNeedsNear));
+        }
     };
-    rec.section(Msg::SecProjection);
-    rec.step(|| match (given, near) {
+    out.section(Msg::SecProjection);
+    out.rec.step(|| match (given, near) {
         (None, Some(n)) => Step::new(Msg::ProjPlane, Msg::FProjPlane)
             .val(Name::math("near"), Val::num(n))
             .res(Name::math("d"), Val::num(&d))
@@ -422,8 +545,9 @@ fn project_steps<T: Scalar>(
         _ => Step::new(Msg::ProjPlane, "z = d").val(Name::math("d"), Val::num(&d)),
     });
     let proj = Projection::Plane { d };
-    proj.validate().map_err(|e| e.in_field("perspective.d"))?;
-    let projected = project_run(&proj, eye_pts, hooks, rec)?;
+    proj.validate()
+        .map_err(|e| e.in_field(format!("{prefix}d")))?;
+    let projected = project_run(&proj, eye_pts, hooks, &mut out.rec)?;
     Ok((proj, projected))
 }
 
@@ -432,50 +556,51 @@ fn project_steps<T: Scalar>(
 /// points); `None` when fovy, aspect or near is missing (refused when the
 /// parts are asked by name).
 fn window_steps<T: Scalar>(
-    p: &ProblemIn,
-    hooks: &Hooks<T>,
-    near: Option<&T>,
+    p: &Problem,
+    per: &Table<PerspectiveIn>,
+    (hooks, near): (&Hooks<T>, Option<&T>),
     eyes: (&[Named<T>], &[Named<T>]),
-    rec: &mut Recorder,
+    out: &mut Out,
 ) -> Result<Option<Windowed<T>>> {
-    let Some(per) = &p.perspective else {
-        return Ok(None);
-    };
-    let (Some(fovy), Some(aspect), Some(near)) = (&per.fovy, &per.aspect, near) else {
-        return match p.ask {
-            Some(_) => Err(Error::why("perspective", ErrMsg::WindowNeeds)),
-            None => Ok(None),
+    let t = &per.table;
+    let (Some(fovy), Some(aspect), Some(near)) = (&t.fovy, &t.aspect, near) else {
+        return match p.by_name() {
+            true => Err(Error::why("perspective", ErrMsg::WindowNeeds)),
+            false => Ok(None),
         };
     };
-    let fovy: T = fovy
-        .0
-        .degrees()
-        .map_err(|m| Error::why("perspective.fovy", m))?;
-    let aspect: T = eval("perspective.aspect", aspect)?;
-    let far: Option<T> = per
-        .far
-        .as_ref()
-        .map(|f| eval("perspective.far", f))
+    let fovy: T = (fovy.0.degrees()).map_err(|m| Error::why(per.field("fovy"), m))?;
+    let aspect: T = eval(&per.field("aspect"), aspect)?;
+    let far: Option<T> = (t.far.as_ref())
+        .map(|f| eval(&per.field("far"), f))
         .transpose()?;
-    rec.section(Msg::SecWindowClip);
+    let given = (p.shared.on_window.as_deref())
+        .map(given_on_window::<T>)
+        .transpose()?;
+    out.section(Msg::SecWindowClip);
+    let rec = &mut out.rec;
     let set_up = (&fovy, &aspect, near, far.as_ref());
-    let (w, result) = window_run(set_up, hooks, rec).map_err(perspective_field)?;
+    let (w, result) = window_run(set_up, hooks, rec).map_err(|e| in_table(per.prefix, e))?;
     for ((n, q), (_, e)) in eyes.1.iter().zip(eyes.0) {
         point_inside_step(rec, n, q, e, &w, near, far.as_ref());
     }
+    let points = match &given {
+        Some(g) => (g.iter())
+            .map(|(n, (x, y))| (n.clone(), Val::vec2(x, y)))
+            .collect(),
+        None if p.asks(Part::Project) => (eyes.1.iter())
+            .map(|(n, q)| (n.clone(), Val::vec3(q)))
+            .collect(),
+        None => vec![],
+    };
     let given = WindowAt {
         fovy: at(&fovy),
         aspect: at(&aspect),
         near: at(near),
         far: far.as_ref().map(at),
         viewport: None,
-        points: match p.asks(Part::Project) {
-            true => (eyes.1.iter())
-                .map(|(n, q)| (n.clone(), Val::vec3(q)))
-                .collect(),
-            false => vec![],
-        },
-        projected: true,
+        points,
+        projected: p.shared.on_window.is_none(),
     };
     Ok(Some(Windowed { w, result, given }))
 }
@@ -503,16 +628,6 @@ pub fn point_ref<T: Scalar>(
                 )
             }),
     }
-}
-
-fn camera_field(e: Error) -> Error {
-    let f = format!("camera.{}", e.field);
-    e.in_field(f)
-}
-
-fn perspective_field(e: Error) -> Error {
-    let f = format!("perspective.{}", e.field);
-    e.in_field(f)
 }
 
 /// The text's point-clipping test after projection: inside the window and
@@ -655,6 +770,7 @@ mod tests {
     use super::*;
     use crate::tutor::key::Key;
     use crate::tutor::keys::ordered_keys;
+    use crate::tutor::solution::part_value;
 
     /// Every shipped problem (problems/*.toml), by file name, solved.
     fn shipped() -> Vec<(String, ProblemIn, Report)> {
@@ -707,6 +823,101 @@ mod tests {
             assert_eq!(mine(&a.result), mine(&r.result), "{name}, {part} alone");
             assert_eq!(keys_of(part, &a.result), keys, "{name}, {part} alone");
         }
+    }
+
+    /// A command's flags as a table (fields unprefixed).
+    fn flags<X>(table: X) -> Table<X> {
+        Table { prefix: "", table }
+    }
+
+    /// The numbers of a result (a number, or a vector's or a matrix's).
+    fn nums(v: Option<&Val>) -> Vec<f64> {
+        match v {
+            Some(Val::Num(x)) => vec![x.value],
+            Some(Val::List(xs)) => xs.iter().flat_map(|x| nums(Some(x))).collect(),
+            other => panic!("not numbers: {other:?}"),
+        }
+    }
+
+    /// A calculator command and the same part of a problem file run through
+    /// the one solver and give the same results and inputs. By hand: eye
+    /// (0, 0, 5) looking at the origin, up y: n = (Pe − Pr)/|Pe − Pr| =
+    /// (0, 0, 1), u = Vup × n/|…| = (1, 0, 0), v = n × u = (0, 1, 0); the
+    /// view matrix translates by −Pe·(u, v, n) = (0, 0, −5); P = (1, 2, 3)
+    /// is (1, 2, 3 − 5) = (1, 2, −2) in eye coordinates. Projected onto
+    /// z = d = −near = −1: (x·d/z, y·d/z, d) = (0.5, 1, −1). fovy 90°,
+    /// aspect 2, near 1: top = near·tan 45° = 1, right = aspect·top = 2.
+    #[test]
+    fn a_command_and_a_file_give_the_same_part_by_the_one_solver() {
+        use crate::input::part::{ProjectionIn, Shared};
+        use crate::input::problem::CameraIn;
+        use crate::input::{num, vec3};
+        use crate::num::Real;
+        let text = "title = 't'\nask = ['view', 'project', 'window']\n\
+            [camera]\neye = '(0, 0, 5)'\nlook = [0, 0, 0]\nup = [0, 1, 0]\n\
+            [points]\nP = [1, 2, 3]\n\
+            [perspective]\nnear = 1\nfovy = 90\naspect = 2\n";
+        let file = solve::<Real>(&ProblemIn::parse(text, "t.toml").unwrap()).unwrap();
+        let of_file = |part| Some(part_value(&file.result, part, None).unwrap().clone());
+        let camera = CameraIn {
+            eye: vec3("eye", "0,0,5").unwrap(),
+            look: vec3("look", "0,0,0").unwrap(),
+            up: vec3("up", "0,1,0").unwrap(),
+        };
+        let view = Shared {
+            points: vec![(
+                "P".into(),
+                "point P".into(),
+                vec3("point P", "1,2,3").unwrap(),
+            )],
+            camera: Some(flags(camera)),
+            ..Shared::default()
+        };
+        let c = solve_problem::<Real>(&Problem::command(vec![PartIn::View], view)).unwrap();
+        assert_eq!(nums(lookup(&c.result, "u")), [1.0, 0.0, 0.0]);
+        assert_eq!(nums(lookup(&c.result, "v")), [0.0, 1.0, 0.0]);
+        assert_eq!(nums(lookup(&c.result, "n")), [0.0, 0.0, 1.0]);
+        let m = [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, -5.0];
+        assert_eq!(nums(lookup(&c.result, "matrix"))[..12], m);
+        assert_eq!(nums(lookup(&c.result, "points.P")), [1.0, 2.0, -2.0]);
+        assert_eq!(of_file(Part::View), Some(Val::Map(c.result)));
+        assert_eq!(c.parts, file.parts[..1]);
+
+        let d = ProjectionIn::Plane(("d".into(), num("d", "-1").unwrap()));
+        let project = Shared {
+            points: vec![(
+                "P".into(),
+                "point P".into(),
+                vec3("point P", "1,2,-2").unwrap(),
+            )],
+            ..Shared::default()
+        };
+        let part = PartIn::Project(ProjectIn::Given(d));
+        let c = solve_problem::<Real>(&Problem::command(vec![part], project)).unwrap();
+        assert_eq!(nums(lookup(&c.result, "points.P")), [0.5, 1.0, -1.0]);
+        assert_eq!(of_file(Part::Project), Some(Val::Map(c.result)));
+
+        let table = PerspectiveIn {
+            near: Some(num("near", "1").unwrap()),
+            far: None,
+            fovy: Some(crate::input::angle("fovy", "90").unwrap()),
+            aspect: Some(num("aspect", "2").unwrap()),
+            viewport: None,
+            d: None,
+        };
+        let window = Shared {
+            perspective: Some(flags(table)),
+            on_window: Some(vec![]),
+            ..Shared::default()
+        };
+        let c = solve_problem::<Real>(&Problem::command(vec![PartIn::Window], window)).unwrap();
+        let edges = ["top", "bottom", "left", "right", "height", "width"];
+        let got: Vec<f64> = edges
+            .iter()
+            .flat_map(|e| nums(lookup(&c.result, e)))
+            .collect();
+        assert_eq!(got, [1.0, -1.0, -2.0, 2.0, 2.0, 4.0]);
+        assert_eq!(of_file(Part::Window), Some(Val::Map(c.result)));
     }
 
     /// `ask` names the parts by their one spelling, in the file's order;
