@@ -139,7 +139,10 @@ pub(crate) fn step_for(key: &Key, steps: &[Step]) -> Option<Step> {
             | Field::Intersections => return None,
         },
         (_, Value::Point(_) | Value::Pixel(_)) => return None,
-        (_, Value::Plane(_) | Value::Cut(..) | Value::Light(_) | Value::Factor(..)) => return None,
+        (
+            _,
+            Value::Whole | Value::Plane(_) | Value::Cut(..) | Value::Light(_) | Value::Factor(..),
+        ) => return None,
     };
     steps
         .iter()
@@ -187,7 +190,8 @@ fn clip_step(run: usize, value: &Value, steps: &[Step]) -> Option<Step> {
             .iter()
             .find(|s| has(s, &Name::From) && has(s, &Name::To)),
         Value::Field(Field::Status) => run.iter().find(|s| has(s, &Name::math("code0 AND code1"))),
-        Value::Field(_)
+        Value::Whole
+        | Value::Field(_)
         | Value::Point(_)
         | Value::Pixel(_)
         | Value::Plane(_)

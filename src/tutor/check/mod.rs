@@ -220,6 +220,7 @@ pub fn default_keys(result: &Tree) -> Vec<Key> {
                 part: None,
                 segment: None,
                 value: Value::Field(f),
+                component: Vec::new(),
             }),
             _ => {}
         }
