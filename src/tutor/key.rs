@@ -541,6 +541,13 @@ impl Key {
     }
 }
 
+impl serde::Serialize for Key {
+    /// JSON writes a key as its one spelling ([`Key`]'s `Display`).
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_str(self)
+    }
+}
+
 /// A string that is no answer key.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct NotAKey;
