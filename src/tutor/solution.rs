@@ -133,19 +133,11 @@ fn named_mut<'a>(kv: &'a mut [(String, Val)], name: &Node) -> Option<&'a mut Val
     kv.iter_mut().find(|(k, _)| *k == name).map(|(_, v)| v)
 }
 
-/// Looks up `a.b.c` (a list index may be a number) in the results.
+/// The value of a key a file spells (a problem file's `[printed]` table):
+/// read as a [`Key`] (`clip[1].status` as `clip.1.status`), found by
+/// [`value_of`]; None for a name that is no key.
 pub fn lookup<'a>(result: &'a [(String, Val)], key: &str) -> Option<&'a Val> {
-    let mut parts = key.split('.');
-    let first = parts.next()?;
-    let mut cur = &result.iter().find(|(k, _)| k == first)?.1;
-    for part in parts {
-        cur = match cur {
-            Val::Map(kv) => &kv.iter().find(|(k, _)| k == part)?.1,
-            Val::List(items) => items.get(part.parse::<usize>().ok()?)?,
-            _ => return None,
-        };
-    }
-    Some(cur)
+    value_of(result, &key.parse().ok()?)
 }
 
 /// What was asked.
