@@ -852,6 +852,27 @@ mod tests {
         assert!(n > 300, "{n}");
     }
 
+    proptest::proptest! {
+        /// A point's or a pixel's name as a point may be named (letters,
+        /// digits, `_`, `'`; all digits too), with any component, reads
+        /// back from its spelling.
+        #[test]
+        fn a_named_point_and_its_component_read_back(
+            name in "[A-Za-z0-9_']{1,8}",
+            component in proptest::collection::vec(0usize..20, 0..3),
+            pixel in proptest::bool::ANY,
+        ) {
+            let k = Key {
+                component,
+                ..match pixel {
+                    true => Key::new(Part::Viewport, Value::Pixel(name)),
+                    false => Key::new(Part::View, Value::Point(name)),
+                }
+            };
+            proptest::prop_assert_eq!(key(&k.to_string()), k);
+        }
+    }
+
     #[test]
     fn every_field_is_listed_once() {
         // 3 axes, matrix, points, pixels, 6 + 6 window edges, code0, code1,

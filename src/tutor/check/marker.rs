@@ -81,7 +81,11 @@ impl Marker {
             .check
             .as_ref()
             .and_then(|c| c.keys.as_ref())
-            .map(|ks| ks.iter().filter_map(|k| k.parse().ok()).collect())
+            .map(|ks| {
+                ks.iter()
+                    .filter_map(|k| super::answer_key(k).ok())
+                    .collect()
+            })
             .unwrap_or_else(|| default_keys(&result));
         if let Some((_, Val::Map(kv))) = result.iter_mut().find(|(k, _)| *k == Part::Shade.key()) {
             // the unit vectors are steps of the solution, not results of
