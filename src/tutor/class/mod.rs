@@ -54,9 +54,7 @@ impl Paper {
             exam: false,
         }
     }
-}
 
-impl Paper {
     /// The `i`th problem (0-based) as a class key names it: an exam's
     /// problem, none for a lone problem.
     pub fn problem(&self, i: usize) -> Option<usize> {
