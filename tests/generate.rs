@@ -210,7 +210,7 @@ fn differs(a: &Val, b: &Val) -> bool {
         return a != b;
     }
     let scale = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    let t = |x: f64, s: f64| check::tolerance::for_key("", x, s, 1e-3);
+    let t = |x: f64, s: f64| check::tolerance::absolute(x, s, 1e-3);
     let (sx, sy) = (scale(&x), scale(&y));
     x.iter()
         .zip(&y)

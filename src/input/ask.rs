@@ -7,7 +7,7 @@ use std::fmt;
 
 /// A part of a problem: what a problem file's `ask` names, and the first
 /// name of a `solve` key (`tutor::key` re-exports it).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Part {
     /// `view`: the camera basis, the view matrix, the eye coordinates.
     View,

@@ -4,8 +4,9 @@
 use crate::msg::CheckWord as K;
 use crate::report::lang::Lang;
 use crate::report::words::{self, words};
-use crate::report::{exact_json, value_json, Style};
+use crate::report::{exact_json, joined, value_json, Style};
 use crate::tutor::check::{Marking, Verdict};
+use crate::tutor::key::Key;
 use serde_json::{json, Value};
 
 /// The marking as JSON for autograders.
@@ -100,7 +101,7 @@ pub fn to_text(m: &Marking, style: &Style) -> String {
         .set_header(header.map(|k| w(style, k)));
     for a in &m.answers {
         t.add_row(vec![
-            a.key.clone(),
+            a.key.to_string(),
             words::of(style.lang).verdict(a.verdict).to_string(),
             a.given.clone().unwrap_or_else(|| "—".into()),
             a.expected
@@ -138,7 +139,7 @@ fn diagnoses_text(m: &Marking, style: &Style) -> String {
                 crate::report::mistakes::mistake_text(d.mistake, style.lang),
                 d.mistake,
                 t_(K::Reproduces),
-                d.keys.join(", ")
+                joined(&d.keys)
             ));
             for a in &d.also {
                 out.push_str(&format!(
@@ -150,18 +151,18 @@ fn diagnoses_text(m: &Marking, style: &Style) -> String {
             }
         }
     }
-    let undiagnosed: Vec<&str> = m
+    let undiagnosed: Vec<&Key> = m
         .answers
         .iter()
         // an erratum of the source (listed above) explains its printed answer
         .filter(|a| a.verdict == Verdict::Wrong && a.diagnosis.is_empty() && a.why.is_none())
-        .map(|a| a.key.as_str())
+        .map(|a| &a.key)
         .collect();
     if !undiagnosed.is_empty() {
         out.push_str(&format!(
             "\n{} {}\n",
             t_(K::NoMistakeExplains),
-            undiagnosed.join(", "),
+            joined(undiagnosed),
         ));
     }
     if !m.unknown.is_empty() {

@@ -622,6 +622,13 @@ fn parenthesized(text: &str, before: Option<char>, after: Option<char>) -> Strin
     }
 }
 
+/// Keys (answer keys, a class report's keys) in a line, each in its one
+/// spelling, separated by `, `.
+pub fn joined<T: std::fmt::Display>(keys: impl IntoIterator<Item = T>) -> String {
+    let spelled: Vec<String> = keys.into_iter().map(|k| k.to_string()).collect();
+    spelled.join(", ")
+}
+
 /// Whether a list holds maps only (and at least one): each is an answer of
 /// its own (one clipped segment), written as a numbered block.
 pub fn is_list_of_maps(items: &[Val]) -> bool {

@@ -1,6 +1,8 @@
 //! An answer's key as a typed value: `view.points.A`, `window.far_top`,
-//! `clip[2].intersections.left.t`, `shade.lights[1].attenuation`, or a
-//! calculator command's own key without its part (`top`, `points.A`).
+//! `clip[2].intersections.left.t`, `shade.lights[1].attenuation`, a whole
+//! part (`view`, `clip[1]`), one component of a value (`view.points.A.1`,
+//! `view.matrix.2.3`), or a calculator command's own key without its part
+//! (`top`, `points.A`).
 //!
 //! The keys are a contract (docs/spec.md §3's JSON, answer and problem
 //! files), so each name is spelled in ONE place, [`Node`]'s `Display`
@@ -29,7 +31,7 @@ fn every<T: Copy>(first: T, next: fn(T) -> Option<T>) -> Vec<T> {
 }
 
 /// A camera axis: `u`, `v`, `n`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Axis {
     /// u, to the right.
     U,
@@ -40,7 +42,7 @@ pub enum Axis {
 }
 
 /// An edge or a size of the viewing window.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Edge {
     /// `top`, the text's h.
     Top,
@@ -57,7 +59,7 @@ pub enum Edge {
 }
 
 /// One of the six planes of the clipping box, in outcode bit order.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Plane {
     /// bit 1, x = xmin.
     Left,
@@ -91,7 +93,7 @@ impl Plane {
 }
 
 /// What is asked of one tried intersection.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Cut {
     /// `t`, the segment's parameter at the plane.
     T,
@@ -104,7 +106,7 @@ pub enum Cut {
 }
 
 /// A value of the lighting.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Shading {
     /// `L`, the unit vector to the light.
     L,
@@ -175,7 +177,7 @@ impl Shading {
 }
 
 /// One light's factors (a light from a file).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Factor {
     /// `in_range`: d ≤ range.
     InRange,
@@ -188,7 +190,7 @@ pub enum Factor {
 }
 
 /// A name directly inside a part (a calculator command's result key).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Field {
     /// `u`, `v`, `n`.
     Axis(Axis),
@@ -259,7 +261,7 @@ impl Field {
     }
 
     /// The parts a field belongs to.
-    fn in_part(self, part: Part) -> bool {
+    pub(crate) fn in_part(self, part: Part) -> bool {
         use Field::*;
         match self {
             Axis(_) | Matrix => part == Part::View,
@@ -296,7 +298,7 @@ const FACTORS: [Factor; 4] = [
 /// field of a part, a point's own name (under `points`, `pixels`), a plane
 /// (under `intersections`), what is asked of an intersection (under a
 /// plane), a light's factor (under `lights`).
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Node {
     /// `view`, …
     Part(Part),
@@ -433,8 +435,11 @@ impl Node {
 }
 
 /// What a key names inside its part.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Value {
+    /// The whole part: `view`, `clip.1` (one segment of a clip with
+    /// several).
+    Whole,
     /// A field: `n`, `matrix`, `points` (the whole map), `status`, …
     Field(Field),
     /// `points.A`.
@@ -454,7 +459,7 @@ pub enum Value {
 /// An answer's key: its part (none for a calculator command's own keys),
 /// the segment of a clip with several (the index as written: `clip.0` in
 /// the result tree, `clip[1]` numbered for people), and the value.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Key {
     /// `view`, …; `None` for a calculator command's key (`top`).
     pub part: Option<Part>,
@@ -462,6 +467,12 @@ pub struct Key {
     pub segment: Option<usize>,
     /// What is named inside the part.
     pub value: Value,
+    /// One component of the value: the indices into its lists, outermost
+    /// first (`view.points.A.1` is A's y, `view.matrix.2` the matrix's
+    /// row 2 and `view.matrix.2.3` one entry, `clip.segment.0` the clipped
+    /// segment's first end, `viewport.pixels.A.0` the pixel's x); empty
+    /// for the whole value.
+    pub component: Vec<usize>,
 }
 
 impl Key {
@@ -471,6 +482,7 @@ impl Key {
             part: Some(part),
             segment: None,
             value,
+            component: Vec::new(),
         }
     }
 
@@ -491,13 +503,27 @@ pub fn prefix(part: Part, segment: Option<usize>) -> String {
 
 impl fmt::Display for Key {
     /// The key as the result tree spells it: `clip.2.intersections.left.t`,
-    /// `shade.lights.0.attenuation`.
+    /// `shade.lights.0.attenuation`, `clip.1` (a whole part),
+    /// `view.points.A.1` (a component; a whole part without its part is no
+    /// key, and spelled empty).
     fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
         if let Some(p) = self.part {
-            write!(f, "{}.", prefix(p, self.segment))?;
+            f.write_str(&prefix(p, self.segment))?;
+            if self.value != Value::Whole {
+                f.write_str(".")?;
+            }
         }
+        self.fmt_value(f)?;
+        self.component.iter().try_for_each(|i| write!(f, ".{i}"))
+    }
+}
+
+impl Key {
+    /// The value's names inside its part (`points.A`).
+    fn fmt_value(&self, f: &mut fmt::Formatter) -> fmt::Result {
         let field = |x| Node::Field(x);
         match &self.value {
+            Value::Whole => Ok(()),
             Value::Field(x) => write!(f, "{}", field(*x)),
             Value::Point(n) => write!(f, "{}.{n}", field(Field::Points)),
             Value::Pixel(n) => write!(f, "{}.{n}", field(Field::Pixels)),
@@ -515,6 +541,13 @@ impl fmt::Display for Key {
     }
 }
 
+impl serde::Serialize for Key {
+    /// JSON writes a key as its one spelling ([`Key`]'s `Display`).
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_str(self)
+    }
+}
+
 /// A string that is no answer key.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct NotAKey;
@@ -523,61 +556,102 @@ impl FromStr for Key {
     type Err = NotAKey;
 
     /// Reads `clip.2.intersections.left.t` and `clip[2].intersections.left.t`
-    /// alike (an index after a name or as a name of its own), and a
-    /// calculator command's keys without their part (`top`, `points.A`).
+    /// alike (an index after a name or as a name of its own), a whole part
+    /// (`view`, `clip[1]`), a component (`view.points.A.1`,
+    /// `view.points.A[1]`), and a calculator command's keys without their
+    /// part (`top`, `points.A`). A number under `points` or `pixels` is a
+    /// point's name (`view.points.1`).
     fn from_str(s: &str) -> Result<Key, NotAKey> {
-        let mut nodes: Vec<Node> = Vec::new();
-        let (mut segment, mut light) = (None, None);
+        let mut read = Read::default();
         for name in s.split('.') {
             let (name, index) = match name.split_once('[') {
                 Some((n, i)) => {
                     let i = i.strip_suffix(']').and_then(|i| i.parse().ok());
                     (n, Some(i.ok_or(NotAKey)?))
                 }
-                None => match name.parse::<usize>() {
-                    Ok(i) => ("", Some(i)),
-                    Err(_) if name.is_empty() => return Err(NotAKey),
-                    Err(_) => (name, None),
+                None if name.is_empty() => return Err(NotAKey),
+                None => match (name.parse::<usize>(), read.nodes.last()) {
+                    (Ok(_), Some(Node::Field(Field::Points | Field::Pixels))) => (name, None),
+                    (Ok(i), _) => ("", Some(i)),
+                    (Err(_), _) => (name, None),
                 },
             };
             if !name.is_empty() {
-                nodes.push(Node::read(name, nodes.last()).ok_or(NotAKey)?);
+                read.name(name)?;
             }
             if let Some(i) = index {
-                let slot = match nodes.last() {
-                    Some(Node::Part(Part::Clip)) if segment.is_none() => &mut segment,
-                    Some(Node::Field(Field::Lights)) if light.is_none() => &mut light,
-                    _ => return Err(NotAKey),
-                };
-                *slot = Some(i);
+                read.index(i)?;
             }
         }
-        key_of(&nodes, segment, light)
+        read.key()
     }
 }
 
-/// The key of the names read, with the indices they carried.
-fn key_of(nodes: &[Node], segment: Option<usize>, light: Option<usize>) -> Result<Key, NotAKey> {
-    let (part, rest) = match nodes {
-        [Node::Part(p), rest @ ..] => (Some(*p), rest),
-        rest => (None, rest),
-    };
-    let value = match (rest, light) {
-        ([Node::Field(Field::Lights)], Some(i)) => Value::Light(i),
-        ([Node::Field(Field::Lights), Node::Factor(x)], Some(i)) => Value::Factor(i, *x),
-        (_, Some(_)) => return Err(NotAKey),
-        ([Node::Field(f)], None) => Value::Field(*f),
-        ([Node::Field(Field::Points), Node::Point(n)], None) => Value::Point(n.clone()),
-        ([Node::Field(Field::Pixels), Node::Point(n)], None) => Value::Pixel(n.clone()),
-        ([Node::Field(Field::Intersections), Node::Plane(p)], None) => Value::Plane(*p),
-        ([_, Node::Plane(p), Node::Cut(c)], None) => Value::Cut(*p, *c),
-        _ => return Err(NotAKey),
-    };
-    Ok(Key {
-        part,
-        segment,
-        value,
-    })
+/// A key's names and indices as read so far.
+#[derive(Default)]
+struct Read {
+    nodes: Vec<Node>,
+    segment: Option<usize>,
+    light: Option<usize>,
+    component: Vec<usize>,
+}
+
+impl Read {
+    /// A name under the last one read (none after a component).
+    fn name(&mut self, name: &str) -> Result<(), NotAKey> {
+        if !self.component.is_empty() {
+            return Err(NotAKey);
+        }
+        let node = Node::read(name, self.nodes.last()).ok_or(NotAKey)?;
+        self.nodes.push(node);
+        Ok(())
+    }
+
+    /// An index after the last name: a clip's segment, a light, or a
+    /// component of a value that is a list (a vector, point, matrix,
+    /// segment; a map of names has none).
+    fn index(&mut self, i: usize) -> Result<(), NotAKey> {
+        match self.nodes.last() {
+            Some(Node::Part(Part::Clip)) if self.segment.is_none() => self.segment = Some(i),
+            Some(Node::Field(Field::Lights)) if self.light.is_none() => self.light = Some(i),
+            None
+            | Some(Node::Part(_))
+            | Some(Node::Plane(_))
+            | Some(Node::Field(
+                Field::Lights | Field::Points | Field::Pixels | Field::Intersections,
+            )) => return Err(NotAKey),
+            Some(Node::Field(_) | Node::Point(_) | Node::Cut(_) | Node::Factor(_)) => {
+                self.component.push(i)
+            }
+        }
+        Ok(())
+    }
+
+    /// The key of the names read, with the indices they carried.
+    fn key(self) -> Result<Key, NotAKey> {
+        let (part, rest) = match &self.nodes[..] {
+            [Node::Part(p), rest @ ..] => (Some(*p), rest),
+            rest => (None, rest),
+        };
+        let value = match (rest, self.light) {
+            ([Node::Field(Field::Lights)], Some(i)) => Value::Light(i),
+            ([Node::Field(Field::Lights), Node::Factor(x)], Some(i)) => Value::Factor(i, *x),
+            (_, Some(_)) => return Err(NotAKey),
+            ([], None) if part.is_some() => Value::Whole,
+            ([Node::Field(f)], None) => Value::Field(*f),
+            ([Node::Field(Field::Points), Node::Point(n)], None) => Value::Point(n.clone()),
+            ([Node::Field(Field::Pixels), Node::Point(n)], None) => Value::Pixel(n.clone()),
+            ([Node::Field(Field::Intersections), Node::Plane(p)], None) => Value::Plane(*p),
+            ([_, Node::Plane(p), Node::Cut(c)], None) => Value::Cut(*p, *c),
+            _ => return Err(NotAKey),
+        };
+        Ok(Key {
+            part,
+            segment: self.segment,
+            value,
+            component: self.component,
+        })
+    }
 }
 
 #[cfg(test)]
@@ -629,6 +703,20 @@ mod tests {
             "points.A",
             "intersections.top.point",
             "lights.0.spot",
+            // a whole part, a component
+            "view",
+            "clip.1",
+            "view.points.A.1",
+            "view.points.1",
+            "view.points.1.2",
+            "view.matrix.2",
+            "view.matrix.2.3",
+            "view.n.0",
+            "clip.segment.1.2",
+            "clip.0.intersections.left.point.2",
+            "viewport.pixels.A.0",
+            "shade.color.2",
+            "points.A.1",
         ];
         for s in spelled {
             assert_eq!(key(s).to_string(), s);
@@ -651,8 +739,137 @@ mod tests {
             "shade.cos",
             "view.points.",
             "View.n",
+            "view.1",
+            "view.points.A.1.x",
+            "view.points[1]",
+            "view.matrix[1][2]",
+            "clip.intersections.left.1",
+            "shade.lights.0.0",
+            "0",
+            "[1]",
         ] {
             assert_eq!(s.parse::<Key>(), Err(NotAKey), "{s}");
+        }
+    }
+
+    #[test]
+    fn a_whole_part_and_a_component_are_read_in_both_spellings() {
+        let whole = Key::new(Part::Clip, Value::Whole).of_segment(Some(1));
+        assert_eq!(key("clip[1]"), whole);
+        assert_eq!(key("clip.1"), whole);
+        assert_eq!(whole.to_string(), "clip.1");
+        assert_eq!(key("view"), Key::new(Part::View, Value::Whole));
+        let y = Key {
+            component: vec![1],
+            ..Key::new(Part::View, Value::Point("A".into()))
+        };
+        assert_eq!(key("view.points.A.1"), y);
+        assert_eq!(key("view.points.A[1]"), y);
+        assert_eq!(y.to_string(), "view.points.A.1");
+        // a number under `points` is a point's name, then a component
+        let named = Key {
+            component: vec![2],
+            ..Key::new(Part::View, Value::Point("1".into()))
+        };
+        assert_eq!(key("view.points.1.2"), named);
+        let entry = Key {
+            component: vec![2, 3],
+            ..Key::new(Part::View, Value::Field(Field::Matrix))
+        };
+        assert_eq!(key("view.matrix.2.3"), entry);
+        let end = Key {
+            component: vec![0, 2],
+            ..Key::new(Part::Clip, Value::Cut(Plane::Left, Cut::Point)).of_segment(Some(2))
+        };
+        assert_eq!(key("clip[2].intersections.left.point[0].2"), end);
+        assert_eq!(end.to_string(), "clip.2.intersections.left.point.0.2");
+    }
+
+    /// `Display` then `FromStr` gives the key back, for keys made of any
+    /// part, segment, value and component.
+    #[test]
+    fn every_key_reads_back_from_its_spelling() {
+        let values = || {
+            let mut v = vec![
+                Value::Whole,
+                Value::Point("A".into()),
+                Value::Point("7".into()),
+                Value::Pixel("B".into()),
+                Value::Light(0),
+                Value::Light(3),
+            ];
+            v.extend(Field::all().into_iter().map(Value::Field));
+            v.extend(Plane::ALL.map(Value::Plane));
+            for p in Plane::ALL {
+                v.extend(CUTS.map(|c| Value::Cut(p, c)));
+            }
+            v.extend(FACTORS.map(|x| Value::Factor(1, x)));
+            v
+        };
+        let mut n = 0;
+        for part in Part::all() {
+            for value in values() {
+                // only what a part has, and a component only of a value
+                // that is a list (or may be)
+                let fits = match &value {
+                    Value::Whole => true,
+                    Value::Field(f) => f.in_part(part),
+                    Value::Point(_) => Field::Points.in_part(part),
+                    Value::Pixel(_) => Field::Pixels.in_part(part),
+                    Value::Plane(_) | Value::Cut(..) => part == Part::Clip,
+                    Value::Light(_) | Value::Factor(..) => part == Part::Shade,
+                };
+                let lists = !matches!(
+                    value,
+                    Value::Whole
+                        | Value::Plane(_)
+                        | Value::Light(_)
+                        | Value::Field(
+                            Field::Points | Field::Pixels | Field::Intersections | Field::Lights
+                        )
+                );
+                let segments: &[Option<usize>] = match part {
+                    Part::Clip => &[None, Some(0), Some(12)],
+                    _ => &[None],
+                };
+                let components: &[&[usize]] = if lists { &[&[], &[1], &[2, 0]] } else { &[&[]] };
+                for (seg, comp) in segments
+                    .iter()
+                    .flat_map(|s| components.iter().map(move |c| (s, c)))
+                {
+                    if !fits {
+                        continue;
+                    }
+                    let k = Key {
+                        component: comp.to_vec(),
+                        ..Key::new(part, value.clone()).of_segment(*seg)
+                    };
+                    assert_eq!(key(&k.to_string()), k, "{k}");
+                    n += 1;
+                }
+            }
+        }
+        assert!(n > 300, "{n}");
+    }
+
+    proptest::proptest! {
+        /// A point's or a pixel's name as a point may be named (letters,
+        /// digits, `_`, `'`; all digits too), with any component, reads
+        /// back from its spelling.
+        #[test]
+        fn a_named_point_and_its_component_read_back(
+            name in "[A-Za-z0-9_']{1,8}",
+            component in proptest::collection::vec(0usize..20, 0..3),
+            pixel in proptest::bool::ANY,
+        ) {
+            let k = Key {
+                component,
+                ..match pixel {
+                    true => Key::new(Part::Viewport, Value::Pixel(name)),
+                    false => Key::new(Part::View, Value::Point(name)),
+                }
+            };
+            proptest::prop_assert_eq!(key(&k.to_string()), k);
         }
     }
 

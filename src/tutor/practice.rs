@@ -68,7 +68,12 @@ impl Plan {
 /// problem), else every key of the solution in the text's order.
 pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)>) -> Result<Plan> {
     let marker = Marker::new(p, settings)?;
-    let wanted = p.check.as_ref().and_then(|c| c.keys.clone());
+    // `[check] keys`, read as keys (`clip[0].status` is `clip.0.status`)
+    let wanted = p
+        .check
+        .as_ref()
+        .and_then(|c| c.keys.as_ref())
+        .map(|_| &marker.keys);
     let items = marker
         .order
         .iter()
@@ -80,9 +85,9 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
                     Value::Field(Field::Shading(Shading::L | Shading::N))
                 )
             );
-            // `[check] keys` as the file spells them: one that is no key
-            // of the solution asks nothing, as `check` reports it unknown
-            unit || wanted.as_ref().is_none_or(|w| w.contains(&k.to_string()))
+            // a `[check] key` that is no key of the solution asks
+            // nothing, as `check` reports it unknown
+            unit || wanted.is_none_or(|w| w.contains(k))
         })
         .filter_map(|key| {
             Some(Item {
@@ -139,7 +144,10 @@ pub(crate) fn step_for(key: &Key, steps: &[Step]) -> Option<Step> {
             | Field::Intersections => return None,
         },
         (_, Value::Point(_) | Value::Pixel(_)) => return None,
-        (_, Value::Plane(_) | Value::Cut(..) | Value::Light(_) | Value::Factor(..)) => return None,
+        (
+            _,
+            Value::Whole | Value::Plane(_) | Value::Cut(..) | Value::Light(_) | Value::Factor(..),
+        ) => return None,
     };
     steps
         .iter()
@@ -187,7 +195,8 @@ fn clip_step(run: usize, value: &Value, steps: &[Step]) -> Option<Step> {
             .iter()
             .find(|s| has(s, &Name::From) && has(s, &Name::To)),
         Value::Field(Field::Status) => run.iter().find(|s| has(s, &Name::math("code0 AND code1"))),
-        Value::Field(_)
+        Value::Whole
+        | Value::Field(_)
         | Value::Point(_)
         | Value::Pixel(_)
         | Value::Plane(_)
@@ -506,14 +515,11 @@ impl<'a> Session<'a> {
     /// The student's latest answer to an earlier key, where it was wrong
     /// (credited by follow-through or not): what follow-through goes on
     /// from; a right answer, maybe rounded, carries grafika's value.
-    fn own(&self, key: &str) -> Option<Read> {
+    fn own(&self, key: &Key) -> Option<Read> {
         self.latest
             .iter()
             .flatten()
-            .find(|o| {
-                o.key.to_string() == key
-                    && (o.verdict == Verdict::Wrong || o.code == FOLLOW_THROUGH)
-            })
+            .find(|o| o.key == *key && (o.verdict == Verdict::Wrong || o.code == FOLLOW_THROUGH))
             .and_then(|o| o.read.clone())
     }
 
@@ -523,9 +529,8 @@ impl<'a> Session<'a> {
     /// that reproduce it and that the earlier right answers allow.
     fn judge(&self, item: &Item, text: &str) -> Outcome {
         let m = &self.plan.marker;
-        // the marker reads keys as answer files spell them
-        let spelled = item.key.to_string();
-        let j = m.judge(&spelled, &toml::Value::String(text.to_string()));
+        let key = &item.key;
+        let j = m.judge(key, &toml::Value::String(text.to_string()));
         let mut out = Outcome {
             key: item.key.clone(),
             given: Some(text.to_string()),
@@ -547,9 +552,9 @@ impl<'a> Session<'a> {
         let Some(read) = out.read.clone().filter(|_| out.verdict == Verdict::Wrong) else {
             return out;
         };
-        let own = |k: &str| self.own(k);
-        if let Some(ft) = m.carried(&spelled, &own) {
-            if m.follows(&read, &ft, &spelled) {
+        let own = |k: &Key| self.own(k);
+        if let Some(ft) = m.carried(key, &own) {
+            if m.follows(&read, &ft, key) {
                 out.verdict = Verdict::Correct;
                 out.code = FOLLOW_THROUGH;
                 out.note = Msg::FollowThrough;
@@ -557,17 +562,16 @@ impl<'a> Session<'a> {
                 return out;
             }
         }
-        let agreed: Vec<(String, &Read)> = self
+        let agreed: Vec<(&Key, &Read)> = self
             .latest
             .iter()
             .flatten()
             .filter(|o| agrees(o.verdict, o.code))
-            .filter_map(|o| Some((o.key.to_string(), o.read.as_ref()?)))
+            .filter_map(|o| Some((&o.key, o.read.as_ref()?)))
             .collect();
-        let agreed: Vec<(&str, &Read)> = agreed.iter().map(|(k, r)| (k.as_str(), *r)).collect();
-        out.mistakes = m.fitting(&spelled, &read, &j.mistakes, &agreed);
+        out.mistakes = m.fitting(key, &read, &j.mistakes, &agreed);
         if out.mistakes.contains(&Code::CopiedMisprint) {
-            out.why = m.erratum(&spelled);
+            out.why = m.erratum(key);
         }
         out
     }

@@ -36,7 +36,8 @@ pub type Tree = Vec<(String, Val)>;
 
 /// The value of an answer key in the results, found by walking its typed
 /// names: the part, the segment (an index into a clip's list of
-/// segments), then the names and the light's index inside the part.
+/// segments), then the names and the light's index inside the part, then
+/// the component's indices (a whole part stops at the part).
 pub fn value_of<'a>(result: &'a [(String, Val)], key: &Key) -> Option<&'a Val> {
     let hops = hops(key);
     let (Hop::Name(first), rest) = hops.split_first()? else {
@@ -101,6 +102,7 @@ fn hops(key: &Key) -> Vec<Hop> {
     let field = |f: Field| Hop::Name(Node::Field(f));
     let name = |n: Node| Hop::Name(n);
     match &key.value {
+        Value::Whole => {}
         Value::Field(f) => h.push(field(*f)),
         Value::Point(n) => h.extend([field(Field::Points), name(Node::Point(n.clone()))]),
         Value::Pixel(n) => h.extend([field(Field::Pixels), name(Node::Point(n.clone()))]),
@@ -115,6 +117,7 @@ fn hops(key: &Key) -> Vec<Hop> {
             h.extend([field(Field::Lights), Hop::Nth(*i), name(Node::Factor(*x))])
         }
     }
+    h.extend(key.component.iter().map(|i| Hop::Nth(*i)));
     h
 }
 
@@ -130,19 +133,11 @@ fn named_mut<'a>(kv: &'a mut [(String, Val)], name: &Node) -> Option<&'a mut Val
     kv.iter_mut().find(|(k, _)| *k == name).map(|(_, v)| v)
 }
 
-/// Looks up `a.b.c` (a list index may be a number) in the results.
+/// The value of a key a file spells (a problem file's `[printed]` table):
+/// read as a [`Key`] (`clip[1].status` as `clip.1.status`), found by
+/// [`value_of`]; None for a name that is no key.
 pub fn lookup<'a>(result: &'a [(String, Val)], key: &str) -> Option<&'a Val> {
-    let mut parts = key.split('.');
-    let first = parts.next()?;
-    let mut cur = &result.iter().find(|(k, _)| k == first)?.1;
-    for part in parts {
-        cur = match cur {
-            Val::Map(kv) => &kv.iter().find(|(k, _)| k == part)?.1,
-            Val::List(items) => items.get(part.parse::<usize>().ok()?)?,
-            _ => return None,
-        };
-    }
-    Some(cur)
+    value_of(result, &key.parse().ok()?)
 }
 
 /// What was asked.
@@ -605,5 +600,48 @@ mod tests {
         ] {
             assert_eq!(at(k), None, "{k}");
         }
+    }
+
+    /// Every name and index of a shipped problem's results, spelled as a
+    /// dotted key (`view.points.A.1`, `clip.0`, `view`), is a `Key`, and
+    /// `value_of` walks it to that very value: an answer file can name
+    /// nothing in the results that no `Key` names.
+    #[test]
+    fn every_place_in_the_results_is_a_key() {
+        fn places<'a>(at: String, v: &'a Val, out: &mut Vec<(String, &'a Val)>) {
+            out.push((at.clone(), v));
+            match v {
+                Val::Map(kv) => kv
+                    .iter()
+                    .for_each(|(k, x)| places(format!("{at}.{k}"), x, out)),
+                Val::List(items) => (items.iter().enumerate())
+                    .for_each(|(i, x)| places(format!("{at}.{i}"), x, out)),
+                _ => {}
+            }
+        }
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("problems");
+        let mut files: Vec<_> = std::fs::read_dir(&dir)
+            .expect("problems/")
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+            .collect();
+        files.sort();
+        let mut n = 0;
+        for f in &files {
+            let p = ProblemIn::read(f).expect("a shipped problem reads");
+            let tree = crate::tutor::solve::solve::<crate::num::Real>(&p)
+                .expect("a shipped problem solves")
+                .result;
+            let mut all = Vec::new();
+            for (k, v) in &tree {
+                places(k.clone(), v, &mut all);
+            }
+            for (at, v) in all {
+                let found = value_of(&tree, &key(&at));
+                assert!(found.is_some_and(|x| std::ptr::eq(x, v)), "{at} in {f:?}");
+                n += 1;
+            }
+        }
+        assert!(n > 500, "{n}");
     }
 }

@@ -16,6 +16,7 @@ use crate::report::{exact_json, value_json, Style};
 use crate::tutor::check::Settings;
 use crate::tutor::class::stats::{Flag, Gap, Stats, StepRef, CODES};
 use crate::tutor::class::Class;
+use crate::tutor::class::ClassKey;
 use serde_json::{json, Value};
 
 /// The formats of a report, chosen by the file's extension.
@@ -155,7 +156,7 @@ pub fn to_csv(s: &Stats) -> String {
         .keys
         .iter()
         .map(|k| {
-            let mut row = vec![k.key.clone(), k.students.to_string()];
+            let mut row = vec![k.key.to_string(), k.students.to_string()];
             row.extend(codes.iter().map(|c| k.count(c).to_string()));
             row.extend([
                 round4(k.facility).to_string(),
@@ -176,7 +177,7 @@ pub fn to_csv(s: &Stats) -> String {
 }
 
 /// The codes of the mistakes that explain a key.
-fn explaining<'a>(s: &'a Stats, key: &str) -> Vec<&'a str> {
+fn explaining<'a>(s: &'a Stats, key: &ClassKey) -> Vec<&'a str> {
     s.mistakes
         .iter()
         .filter(|m| m.keys.iter().any(|k| k == key))
@@ -185,10 +186,10 @@ fn explaining<'a>(s: &'a Stats, key: &str) -> Vec<&'a str> {
 }
 
 /// How many wrong answers to a key no mistake explains.
-fn unexplained(s: &Stats, key: &str) -> usize {
+fn unexplained(s: &Stats, key: &ClassKey) -> usize {
     s.wrong_answers
         .iter()
-        .filter(|w| w.key == key)
+        .filter(|w| w.key == *key)
         .flat_map(|w| &w.values)
         .map(|v| v.students.len())
         .sum()

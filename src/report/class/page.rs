@@ -201,7 +201,7 @@ fn keys_section(doc: Doc, s: &Stats, lang: Lang) -> String {
                 format!("**{}**", esc(doc, &flags.join("; ")))
             };
             vec![
-                esc(doc, &k.key),
+                esc(doc, &k.key.to_string()),
                 format!(
                     "{right} ({}/{}/{})",
                     c("correct.exact"),
@@ -326,7 +326,7 @@ fn mistake_item(doc: Doc, m: &MistakeStats, st: &Style) -> String {
         esc(doc, m.mistake.as_str()),
         esc(doc, &m.students.join(", ")),
         esc(doc, &w(lang, C::Explains)),
-        esc(doc, &m.keys.join(", ")),
+        esc(doc, &crate::report::joined(&m.keys)),
     );
     if let Some(step) = &m.step {
         out.push_str(&format!(
@@ -366,7 +366,7 @@ fn wrong_section(doc: Doc, s: &Stats, st: &Style) -> String {
                 wa.key,
                 words::of(lang).doc(&DocWord::Variant)
             ),
-            None => wa.key.clone(),
+            None => wa.key.to_string(),
         };
         let expected = wa
             .expected

@@ -6,7 +6,7 @@
 //! ([`crate::tutor::key`]) per method; the plain functions here are the
 //! language-neutral part (reading a key's string, numbering a segment).
 
-use crate::tutor::key::{Key, Node, Plane};
+use crate::tutor::key::{Key, Node, Plane, Value};
 
 /// A plane of the clipping box by the text's own name (`kiri`, …, after
 /// the outcode's bits), which English quotes beside its own word.
@@ -35,7 +35,9 @@ pub trait KeyWords {
     /// The name the worked steps give the value of a key (`view.n` → `n`,
     /// `view.points.A` → `A'`, `project.points.A` → `A''`,
     /// `viewport.pixels.A` → `piksel A`, `view.matrix` → `V`,
-    /// `clip.intersections.left.t` → `t (kiri)`): the answer table of a page.
+    /// `clip.intersections.left.t` → `t (kiri)`; a whole part: the part,
+    /// `view` → `transformasi pandang`; a component: its value's name):
+    /// the answer table of a page.
     fn answer_name(&self, k: &Key) -> String;
 
     /// What a key asks for, in a few words (`view.points.A` → `koordinat
@@ -44,12 +46,13 @@ pub trait KeyWords {
 }
 
 /// The name of the answer spelled `key` ([`KeyWords::answer_name`]); a
-/// string that is no answer key (a `[printed]` key no part computes) is
-/// shown as it is written.
+/// string that is no answer key (a `[printed]` key no part computes), a
+/// whole part and one component (`view.points.A.1`), which the steps give
+/// no name of their own, are shown as written.
 pub fn name_of(words: &dyn KeyWords, key: &str) -> String {
     match key.parse::<Key>() {
-        Ok(k) => words.answer_name(&k),
-        Err(_) => key.to_string(),
+        Ok(k) if k.component.is_empty() && k.value != Value::Whole => words.answer_name(&k),
+        _ => key.to_string(),
     }
 }
 

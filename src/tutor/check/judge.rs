@@ -24,6 +24,7 @@ use crate::input::answer::{Number, Read};
 use crate::msg::Msg;
 use crate::num::{Real, Shown};
 use crate::stages::trace::Val;
+use crate::tutor::key::Key;
 
 /// A judged answer: its verdict, stable code and note.
 #[derive(Clone, Debug, PartialEq)]
@@ -62,7 +63,7 @@ pub(crate) type ExactOf<'a> = &'a dyn Fn(&str) -> Option<Real>;
 pub(crate) struct Ctx<'a> {
     pub settings: &'a Settings,
     /// The answer key (a pixel position takes half a pixel).
-    pub key: &'a str,
+    pub key: &'a Key,
     /// Also accept a decimal within one unit of its last written digit:
     /// students carry rounded values forward (the text's 2 × 0.041 =
     /// 0.082), so a mistaken or carried value is matched this loosely.
@@ -223,9 +224,9 @@ fn fmt_pct(t: f64) -> String {
 /// Whether an answer is a mistaken value itself: every number equal to it
 /// (as doubles can tell), or, written as a decimal, within its tolerance;
 /// every word the same.
-pub(crate) fn matches_closely(read: &Read, v: &Val, key: &str, rel: f64) -> bool {
+pub(crate) fn matches_closely(read: &Read, v: &Val, key: &Key, rel: f64) -> bool {
     let sc = scale(v);
-    fn go(read: &Read, v: &Val, key: &str, rel: f64, sc: f64) -> bool {
+    fn go(read: &Read, v: &Val, key: &Key, rel: f64, sc: f64) -> bool {
         match (read, v) {
             (Read::Num(n), Val::Num(m)) => {
                 same(n.value, m.value)
@@ -245,9 +246,9 @@ pub(crate) fn matches_closely(read: &Read, v: &Val, key: &str, rel: f64) -> bool
 
 /// Whether two values can be told apart at the tolerance: a number whose
 /// tolerance intervals do not meet, a different word, another shape.
-pub(crate) fn apart(a: &Val, b: &Val, key: &str, rel: f64) -> bool {
+pub(crate) fn apart(a: &Val, b: &Val, key: &Key, rel: f64) -> bool {
     let (sa, sb) = (scale(a), scale(b));
-    fn go(a: &Val, b: &Val, key: &str, rel: f64, s: (f64, f64)) -> bool {
+    fn go(a: &Val, b: &Val, key: &Key, rel: f64, s: (f64, f64)) -> bool {
         match (a, b) {
             (Val::Num(x), Val::Num(y)) => tolerance::apart(
                 x.value,
@@ -340,9 +341,10 @@ mod tests {
     }
     fn j_at(text: &str, e: &Val, key: &str) -> Judged {
         let s = Settings::default();
+        let key: Key = key.parse().expect("a key");
         let ctx = Ctx {
             settings: &s,
-            key,
+            key: &key,
             carry: false,
             exact: &exact,
         };
@@ -364,17 +366,17 @@ mod tests {
         assert_eq!(j("0,041", top).code, "correct.rounded"); // decimal comma
                                                              // −6/√2 = −3√2, written either way
         let a = shown(-3.0 * 2f64.sqrt(), Some("-3*sqrt(2)"));
-        assert_eq!(j_at("-6/sqrt(2)", &a, "k").code, "correct.exact");
-        assert_eq!(j_at("-3√2", &a, "k").code, "correct.exact");
-        assert_eq!(j_at("-4.24", &a, "k").code, "correct.tolerance"); // 0.06% off
-        assert_eq!(j_at("-4.2", &a, "k").code, "correct.rounded");
+        assert_eq!(j_at("-6/sqrt(2)", &a, "top").code, "correct.exact");
+        assert_eq!(j_at("-3√2", &a, "top").code, "correct.exact");
+        assert_eq!(j_at("-4.24", &a, "top").code, "correct.tolerance"); // 0.06% off
+        assert_eq!(j_at("-4.2", &a, "top").code, "correct.rounded");
         // 7/5 is 1% from √2: an expression is not a rounding
         let r2 = shown(2f64.sqrt(), Some("sqrt(2)"));
-        assert_eq!(j_at("7/5", &r2, "k").verdict, Verdict::Wrong);
+        assert_eq!(j_at("7/5", &r2, "top").verdict, Verdict::Wrong);
         // 50 digits of √2 − 1, truncated: close, but not the exact value
         let t = "0.41421356237309504880168872420969807856967187537694";
         let v = shown(2f64.sqrt() - 1.0, Some("sqrt(2)-1"));
-        assert_eq!(j_at(t, &v, "k").code, "correct.tolerance");
+        assert_eq!(j_at(t, &v, "top").code, "correct.tolerance");
     }
 
     #[test]
@@ -452,17 +454,13 @@ mod tests {
     fn a_mistaken_value_is_matched_exactly_or_within_the_tolerance_of_a_decimal() {
         let m = Val::List(vec![shown(1.0, None), shown(0.0, None), shown(1.0, None)]);
         let read = |t: &str| answer::read(&toml::Value::String(t.into()), &m).unwrap();
-        assert!(matches_closely(&read("1, 0, 1"), &m, "view.n", 1e-3));
-        assert!(matches_closely(
-            &read("1.0004, 0, 0.9996"),
-            &m,
-            "view.n",
-            1e-3
-        ));
-        assert!(!matches_closely(&read("1.01, 0, 1"), &m, "view.n", 1e-3));
+        let n: &Key = &"view.n".parse().unwrap();
+        assert!(matches_closely(&read("1, 0, 1"), &m, n, 1e-3));
+        assert!(matches_closely(&read("1.0004, 0, 0.9996"), &m, n, 1e-3));
+        assert!(!matches_closely(&read("1.01, 0, 1"), &m, n, 1e-3));
         let r = std::f64::consts::FRAC_1_SQRT_2;
         let right = Val::List(vec![shown(r, None), shown(0.0, None), shown(r, None)]);
-        assert!(apart(&m, &right, "view.n", 1e-3));
-        assert!(!apart(&right, &right, "view.n", 1e-3));
+        assert!(apart(&m, &right, n, 1e-3));
+        assert!(!apart(&right, &right, n, 1e-3));
     }
 }

@@ -17,7 +17,7 @@
 //!    ([`Marker::fitting`] keeps those the rest of the sheet allows).
 
 use super::judge::{apart, judge, matches_closely, Ctx, Judged};
-use super::{canonical, default_keys, Settings, Tree, Verdict, FOLLOW_THROUGH};
+use super::{default_keys, Settings, Tree, Verdict, FOLLOW_THROUGH};
 use crate::error::Result;
 use crate::input::answer::{self, Read};
 use crate::input::problem::ProblemIn;
@@ -29,7 +29,7 @@ use crate::tutor::follow::Given;
 use crate::tutor::key::{Field, Key, Part, Shading};
 use crate::tutor::keys::ordered_keys;
 use crate::tutor::run::Hooks;
-use crate::tutor::solution::{lookup, value_of};
+use crate::tutor::solution::value_of;
 use crate::tutor::solve;
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -45,9 +45,10 @@ pub struct Marker {
     pub steps: Vec<Step>,
     /// The keys in the order of the text's solution.
     pub order: Vec<Key>,
-    /// The keys `check` expects: the problem's `[check] keys`, else
+    /// The keys `check` expects: the problem's `[check] keys` (those that
+    /// are keys: another name is no answer of the problem), else
     /// [`default_keys`].
-    pub keys: Vec<String>,
+    pub keys: Vec<Key>,
     /// How answers are marked.
     pub settings: Settings,
     /// Each mistake of the catalog that applies, with its results.
@@ -80,8 +81,12 @@ impl Marker {
             .check
             .as_ref()
             .and_then(|c| c.keys.as_ref())
-            .map(|ks| ks.iter().map(|k| canonical(k)).collect())
-            .unwrap_or_else(|| default_keys(&result).iter().map(Key::to_string).collect());
+            .map(|ks| {
+                ks.iter()
+                    .filter_map(|k| super::answer_key(k).ok())
+                    .collect()
+            })
+            .unwrap_or_else(|| default_keys(&result));
         if let Some((_, Val::Map(kv))) = result.iter_mut().find(|(k, _)| *k == Part::Shade.key()) {
             // the unit vectors are steps of the solution, not results of
             // `solve`; with one light there is one of each
@@ -128,7 +133,7 @@ impl Marker {
     }
 
     /// Judges `read` against `v` for `key`.
-    fn judged(&self, read: &Read, v: &Val, key: &str, carry: bool) -> Judged {
+    fn judged(&self, read: &Read, v: &Val, key: &Key, carry: bool) -> Judged {
         let exact = |t: &str| self.exact_of(t);
         let ctx = Ctx {
             settings: &self.settings,
@@ -143,21 +148,21 @@ impl Marker {
     /// from grafika's `right`.
     fn mistaken<'a>(
         &'a self,
-        key: &'a str,
+        key: &'a Key,
         right: &'a Val,
     ) -> impl Iterator<Item = (Code, &'a Val)> + 'a {
         self.variants.iter().flat_map(move |(m, trees)| {
             trees
                 .iter()
-                .filter_map(move |t| lookup(t, key))
+                .filter_map(move |t| value_of(t, key))
                 .filter(move |v| differs(v, right))
                 .map(move |v| (*m, v))
         })
     }
 
     /// Judges one answer to `key` in the order of judgment (module docs).
-    pub fn judge(&self, key: &str, given: &toml::Value) -> Judgement {
-        let Some(right) = lookup(&self.result, key) else {
+    pub fn judge(&self, key: &Key, given: &toml::Value) -> Judgement {
+        let Some(right) = value_of(&self.result, key) else {
             return judgement(Judged::new(Verdict::Wrong, "wrong", Msg::default()), None);
         };
         if matches!(given, toml::Value::String(s) if s.trim().is_empty()) {
@@ -211,27 +216,27 @@ impl Marker {
     /// would have made a right answer wrong is not the one made.
     pub fn fitting(
         &self,
-        key: &str,
+        key: &Key,
         read: &Read,
         candidates: &[Code],
-        agreed: &[(&str, &Read)],
+        agreed: &[(&Key, &Read)],
     ) -> Vec<Code> {
-        let Some(right) = lookup(&self.result, key) else {
+        let Some(right) = value_of(&self.result, key) else {
             return vec![];
         };
         let rel = self.settings.tolerance;
         let gives = |t: &Tree| {
-            lookup(t, key).is_some_and(|v| {
+            value_of(t, key).is_some_and(|v| {
                 differs(v, right)
                     && (matches_closely(read, v, key, rel)
                         || self.judged(read, v, key, true).verdict == Verdict::Correct)
             })
         };
-        let keeps = |t: &Tree, (k, r): &(&str, &Read)| match (lookup(t, k), lookup(&self.result, k))
-        {
-            (Some(v), Some(rk)) if apart(v, rk, k, rel) => self.judged(r, v, k, true).agrees(),
-            _ => true,
-        };
+        let keeps =
+            |t: &Tree, (k, r): &(&Key, &Read)| match (value_of(t, k), value_of(&self.result, k)) {
+                (Some(v), Some(rk)) if apart(v, rk, k, rel) => self.judged(r, v, k, true).agrees(),
+                _ => true,
+            };
         self.variants
             .iter()
             .filter(|(m, _)| candidates.contains(m))
@@ -248,15 +253,14 @@ impl Marker {
     /// computed by the stages with each earlier key in `own` (the student's
     /// answer where it was wrong) given in place of grafika's; None when no
     /// earlier answer changes it.
-    pub fn carried(&self, key: &str, own: &dyn Fn(&str) -> Option<Read>) -> Option<Val> {
-        // a key read from a file: one that is no key (or not of this
-        // problem) is in no order, so nothing is carried to it
-        let key: Key = key.parse().ok()?;
-        let pos = self.order.iter().position(|k| *k == key)?;
+    pub fn carried(&self, key: &Key, own: &dyn Fn(&Key) -> Option<Read>) -> Option<Val> {
+        // a key not of this problem's solution (a component, a whole part)
+        // is in no order, so nothing is carried to it
+        let pos = self.order.iter().position(|k| k == key)?;
         let earlier = &self.order[..pos];
         let givens: Vec<(&Key, Given<Real>)> = earlier
             .iter()
-            .filter_map(|k| Some((k, given(&own(&k.to_string())?)?)))
+            .filter_map(|k| Some((k, given(&own(k)?)?)))
             .collect();
         if givens.is_empty() {
             return None;
@@ -269,25 +273,25 @@ impl Marker {
         let result = solve::solve_with::<Real>(&self.problem, &hooks)
             .ok()?
             .result;
-        let v = value_of(&result, &key)?;
-        let right = value_of(&self.result, &key)?;
+        let v = value_of(&result, key)?;
+        let right = value_of(&self.result, key)?;
         differs(v, right).then(|| v.clone())
     }
 
     /// Whether an answer is right against the value `ft` carried through
     /// from the student's own answers (rounded values carried forward are
     /// accepted, and too few figures are not held against it).
-    pub fn follows(&self, read: &Read, ft: &Val, key: &str) -> bool {
+    pub fn follows(&self, read: &Read, ft: &Val, key: &Key) -> bool {
         self.judged(read, ft, key, true).agrees()
     }
 
-    /// The erratum of `key`, if the problem has one.
-    pub fn erratum(&self, key: &str) -> Option<Msg> {
-        let key = canonical(key);
+    /// The erratum of `key`, if the problem has one (the file's key read
+    /// as a key: `clip[1].status` is `clip.1.status`).
+    pub fn erratum(&self, key: &Key) -> Option<Msg> {
         self.problem
             .errata
             .iter()
-            .find(|e| canonical(&e.key) == key)
+            .find(|e| e.key.parse::<Key>().as_ref() == Ok(key))
             .map(|e| e.reason())
     }
 }
@@ -303,13 +307,10 @@ fn judgement(j: Judged, read: Option<Read>) -> Judgement {
 }
 
 /// A projected point written as (xp, yp) takes zp = d from grafika's value.
-fn completed(key: &str, read: Read, right: &Val) -> Read {
+fn completed(key: &Key, read: Read, right: &Val) -> Read {
     match (read, right) {
         (Read::List(mut xy), Val::List(want))
-            if key
-                .parse::<Key>()
-                .is_ok_and(|k| k.part == Some(Part::Project))
-                && xy.len() + 1 == want.len() =>
+            if key.part == Some(Part::Project) && xy.len() + 1 == want.len() =>
         {
             if let Some(Val::Num(zp)) = want.last() {
                 if let Ok(n) = answer::number(zp.exact.as_deref().unwrap_or(&zp.value.to_string()))
@@ -389,8 +390,9 @@ mod tests {
             [[errata]]\nkey = 'clip[1].status'\nwhy = 'misprinted'\n";
         let p = ProblemIn::parse(text, "t.toml").expect("parses");
         let m = Marker::new(&p, Settings::default()).expect("solves");
-        assert!(m.erratum("clip.1.status").is_some());
-        assert!(m.erratum("clip[1].status").is_some());
-        assert!(m.erratum("clip.0.status").is_none());
+        let key = |s: &str| s.parse::<Key>().expect("a key");
+        assert!(m.erratum(&key("clip.1.status")).is_some());
+        assert!(m.erratum(&key("clip[1].status")).is_some());
+        assert!(m.erratum(&key("clip.0.status")).is_none());
     }
 }

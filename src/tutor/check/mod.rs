@@ -111,7 +111,7 @@ impl Verdict {
 #[derive(Clone, Debug)]
 pub struct Marked {
     /// The answer key (`view.points.A`).
-    pub key: String,
+    pub key: Key,
     /// The verdict.
     pub verdict: Verdict,
     /// The stable code (see the module docs and README).
@@ -140,7 +140,7 @@ pub struct Diagnosis {
     /// The mistake.
     pub mistake: Code,
     /// The answers it reproduces.
-    pub keys: Vec<String>,
+    pub keys: Vec<Key>,
     /// Other mistakes that reproduce only some of these answers, with the
     /// same values (the answers given cannot tell them apart).
     pub also: Vec<Code>,
@@ -157,7 +157,8 @@ pub struct Marking {
     pub answers: Vec<Marked>,
     /// The mistakes found, each once, with the answers they explain.
     pub diagnoses: Vec<Diagnosis>,
-    /// Keys given that grafika does not compute (typos, unasked parts).
+    /// Keys given that grafika does not compute (typos, unasked parts): a
+    /// key in its one spelling, a name that is no key as written.
     pub unknown: Vec<String>,
     /// The settings used.
     pub settings: Settings,
@@ -220,6 +221,7 @@ pub fn default_keys(result: &Tree) -> Vec<Key> {
                 part: None,
                 segment: None,
                 value: Value::Field(f),
+                component: Vec::new(),
             }),
             _ => {}
         }
@@ -274,13 +276,12 @@ pub(crate) fn answer_len(v: &toml::Value) -> usize {
     }
 }
 
-/// An answer key from a file as the results spell it: `clip[2].status` and
-/// `clip.2.status` alike are `clip.2.status` (a key's one spelling, its
-/// `Display`). A key that is no [`Key`] (a whole part, one component such
-/// as `view.points.A.1`) is kept as written and looked up as written.
-pub fn canonical(key: &str) -> String {
-    key.parse::<Key>()
-        .map_or_else(|_| key.to_string(), |k| k.to_string())
+/// An answer file's (or `[check] keys`') key read as a [`Key`]:
+/// `clip[2].status` and `clip.2.status` alike, a whole part (`view`), one
+/// component (`view.points.A.1`); a name that is no key is refused with
+/// the name as written (`check` reports it unknown).
+pub fn answer_key(name: &str) -> std::result::Result<Key, String> {
+    name.parse().map_err(|_| name.to_string())
 }
 
 /// Answers keyed by dotted result keys, in the order given.

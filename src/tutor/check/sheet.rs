@@ -9,7 +9,13 @@ use super::{Diagnosis, Marked, Marking, Verdict, FOLLOW_THROUGH};
 use crate::input::answer::Read;
 use crate::msg::Msg;
 use crate::tutor::diagnose::Code;
-use crate::tutor::solution::lookup;
+use crate::tutor::key::Key;
+use crate::tutor::solution::value_of;
+use std::collections::{HashMap, HashSet};
+
+/// An answer file's key as read: a [`Key`], or a name that is none, as
+/// written ([`super::answer_key`]).
+type Named = std::result::Result<Key, String>;
 
 impl Marker {
     /// Marks an answer sheet. With `from_text` the answers are the
@@ -17,29 +23,31 @@ impl Marker {
     /// gets the reason from the file's `[[errata]]`; otherwise the keys
     /// expected are [`Marker::keys`] plus any other key given.
     pub fn mark(&self, who: &str, answers: &[(String, toml::Value)], from_text: bool) -> Marking {
-        let answers: Vec<(String, toml::Value)> = (answers.iter())
-            .map(|(k, v)| (super::canonical(k), v.clone()))
+        let answers: Vec<(Named, &toml::Value)> = (answers.iter())
+            .map(|(k, v)| (super::answer_key(k), v))
             .collect();
-        let answers = &answers[..];
-        let keys = self.keys_marked(answers, from_text);
-        let mut first: std::collections::HashMap<&str, &toml::Value> = Default::default();
-        for (k, v) in answers {
-            first.entry(k.as_str()).or_insert(v);
+        let keys = self.keys_marked(&answers, from_text);
+        let mut first: HashMap<&Named, &toml::Value> = HashMap::new();
+        for (k, v) in &answers {
+            first.entry(k).or_insert(v);
         }
         let mut marked = Vec::new();
         let mut unknown = Vec::new();
-        for key in &keys {
-            let given = first.get(key.as_str()).copied();
-            // a key as the answer file (or `[check] keys`) spells it, looked
-            // up by its string: besides every `Key` it reaches a whole part
-            // (`view`, `clip.0`) and one component (`view.points.A.1`),
-            // which `check` marks as well; a key that reaches nothing is
-            // reported unknown
-            let Some(expected) = lookup(&self.result, key) else {
-                if given.is_some() {
-                    unknown.push(key.clone());
+        for named in &keys {
+            let given = first.get(named).copied();
+            // a name that is no key, or a key (a value, a whole part, one
+            // component) not in the results, is reported unknown
+            let found = named.as_ref().map(|k| (k, value_of(&self.result, k)));
+            let (key, expected) = match found {
+                Ok((key, Some(expected))) => (key, expected),
+                Ok((key, None)) => {
+                    unknown.extend(given.map(|_| key.to_string()));
+                    continue;
                 }
-                continue;
+                Err(name) => {
+                    unknown.extend(given.map(|_| name.clone()));
+                    continue;
+                }
             };
             let j = match given {
                 None => self.missing(),
@@ -88,13 +96,13 @@ impl Marker {
 
     /// The keys marked: with `from_text` those of the answers, otherwise
     /// [`Marker::keys`] and then any other key given, each once.
-    fn keys_marked(&self, answers: &[(String, toml::Value)], from_text: bool) -> Vec<String> {
+    fn keys_marked(&self, answers: &[(Named, &toml::Value)], from_text: bool) -> Vec<Named> {
         if from_text {
             answers.iter().map(|(k, _)| k.clone()).collect()
         } else {
-            let mut k = self.keys.clone();
+            let mut k: Vec<Named> = self.keys.iter().cloned().map(Ok).collect();
             // A set, so that many keys cost linear time (100,000 took 27 s).
-            let mut seen: std::collections::HashSet<String> = k.iter().cloned().collect();
+            let mut seen: HashSet<Named> = k.iter().cloned().collect();
             for (given, _) in answers {
                 if seen.insert(given.clone()) {
                     k.push(given.clone());
@@ -119,12 +127,12 @@ impl Marker {
     /// wrong answers carry forward (a right one, maybe rounded, carries
     /// grafika's value).
     fn credit_follow_through(&self, marked: &mut [Marked]) {
-        let own: Vec<(String, Read)> = marked
+        let own: Vec<(Key, Read)> = marked
             .iter()
             .filter(|m| m.verdict == Verdict::Wrong)
             .filter_map(|m| Some((m.key.clone(), m.read.clone()?)))
             .collect();
-        let own_of = |k: &str| own.iter().find(|(x, _)| x == k).map(|(_, r)| r.clone());
+        let own_of = |k: &Key| own.iter().find(|(x, _)| x == k).map(|(_, r)| r.clone());
         for m in marked.iter_mut().filter(|m| m.verdict == Verdict::Wrong) {
             let Some(read) = &m.read else { continue };
             if let Some(ft) = self.carried(&m.key, &own_of) {
@@ -143,13 +151,12 @@ impl Marker {
     /// it explains: the mistakes that explain the most first; one whose
     /// answers are all explained by an earlier one is named with it.
     fn diagnose(&self, marked: &mut [Marked]) -> Vec<Diagnosis> {
-        let agreed_reads: Vec<(String, Read)> = marked
+        let agreed_reads: Vec<(Key, Read)> = marked
             .iter()
             .filter(|m| agrees(m.verdict, m.code))
             .filter_map(|m| Some((m.key.clone(), m.read.clone()?)))
             .collect();
-        let agreed: Vec<(&str, &Read)> =
-            agreed_reads.iter().map(|(k, r)| (k.as_str(), r)).collect();
+        let agreed: Vec<(&Key, &Read)> = agreed_reads.iter().map(|(k, r)| (k, r)).collect();
         let mut out: Vec<Diagnosis> = Vec::new();
         for m in marked.iter_mut() {
             let (Verdict::Wrong, Some(read)) = (m.verdict, &m.read) else {
@@ -200,5 +207,54 @@ fn too_long(n: usize) -> super::marker::Judgement {
         note: Msg::AnswerTooLong(n, super::MAX_ANSWER),
         read: None,
         mistakes: vec![],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::problem::ProblemIn;
+    use crate::tutor::check::Settings;
+
+    /// One component and a whole part are marked as keys; a name that is
+    /// no key is unknown as written, a key not in the results in its one
+    /// spelling. By hand (eye (3, 4, 12) at the origin, up y): n = (3, 4,
+    /// 12)/13 and A' = (4/√17, −4/(13√17), −166/13) for A = (1, 0, 0).
+    #[test]
+    fn a_component_and_a_whole_part_are_marked_and_other_names_unknown() {
+        let text = "title = 't'\nask = ['view']\n\
+            [camera]\neye = [3, 4, 12]\nlook = [0, 0, 0]\nup = [0, 1, 0]\n\
+            [points]\nA = [1, 0, 0]\n";
+        let p = ProblemIn::parse(text, "t.toml").expect("parses");
+        let m = Marker::new(&p, Settings::default()).expect("solves");
+        let s = |x: &str| toml::Value::String(x.into());
+        let answers: Vec<(String, toml::Value)> = [
+            ("view.points.A.0", s("4/sqrt(17)")),
+            ("view.points.A[2]", s("-166/13")),
+            ("view.n.2", s("0.5")),
+            ("view", s("1")),
+            ("view.bogus", s("1")),
+            ("view.points.A.9", s("1")),
+            ("window.top", s("1")),
+        ]
+        .into_iter()
+        .map(|(k, v)| (k.to_string(), v))
+        .collect();
+        let marking = m.mark("s", &answers, false);
+        let code = |k: &str| {
+            let k: Key = k.parse().expect("a key");
+            (marking.answers.iter())
+                .find(|a| a.key == k)
+                .map(|a| a.code)
+        };
+        assert_eq!(code("view.points.A.0"), Some("correct.exact"));
+        assert_eq!(code("view.points.A.2"), Some("correct.exact"));
+        assert_eq!(code("view.n.2"), Some("wrong"));
+        assert_eq!(code("view"), Some("unparseable"));
+        assert_eq!(code("view.n"), Some("missing"));
+        assert_eq!(
+            marking.unknown,
+            ["view.bogus", "view.points.A.9", "window.top"]
+        );
     }
 }

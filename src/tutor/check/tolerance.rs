@@ -9,8 +9,12 @@
 //! - t = r·m for x = 0, with m the largest magnitude in the same answer (the
 //!   other components of the vector, point or matrix), or t = r when the
 //!   whole answer is zero; so t is never 0;
-//! - a pixel position (a key under `viewport.pixels`) takes at least
-//!   t = 0.5 px: a whole pixel within half a pixel names the same pixel.
+//! - a pixel position (a key of the viewport part: `viewport.pixels.A`,
+//!   one of its components, all the pixels, the whole part; a calculator's
+//!   `pixels.A`) takes at least t = 0.5 px: a whole pixel within half a
+//!   pixel names the same pixel.
+
+use crate::tutor::key::{Key, Part, Value};
 
 /// The least tolerance of a pixel position, in pixels.
 pub const PIXEL: f64 = 0.5;
@@ -27,14 +31,25 @@ pub fn absolute(x: f64, scale: f64, rel: f64) -> f64 {
     }
 }
 
-/// Whether an answer key is a pixel position (`viewport.pixels.A`).
-pub fn is_pixel(key: &str) -> bool {
-    key.starts_with("viewport.pixels")
+/// Whether an answer key is a pixel position (`viewport.pixels.A`): an
+/// exhaustive match, so a new kind of value is decided as soon as it
+/// compiles, and a new field of the viewport part is a pixel position.
+pub fn is_pixel(key: &Key) -> bool {
+    match &key.value {
+        Value::Pixel(_) => true,
+        Value::Field(f) => f.in_part(Part::Viewport),
+        Value::Whole => key.part == Some(Part::Viewport),
+        Value::Point(_)
+        | Value::Plane(_)
+        | Value::Cut(..)
+        | Value::Light(_)
+        | Value::Factor(..) => false,
+    }
 }
 
 /// The absolute tolerance of x in the answer `key` whose largest magnitude
 /// is `scale` ([`absolute`], at least [`PIXEL`] for a pixel position).
-pub fn for_key(key: &str, x: f64, scale: f64, rel: f64) -> f64 {
+pub fn for_key(key: &Key, x: f64, scale: f64, rel: f64) -> f64 {
     let t = absolute(x, scale, rel);
     if is_pixel(key) {
         t.max(PIXEL)
@@ -64,19 +79,43 @@ mod tests {
         assert!(near(absolute(0.0, 0.0, 1e-3), 1e-3));
     }
 
+    fn key(s: &str) -> Key {
+        s.parse().unwrap_or_else(|_| panic!("{s} is a key"))
+    }
+
     #[test]
     fn a_pixel_takes_half_a_pixel() {
-        // 0.1 % of 133.32 is 0.133 px: a whole pixel 133 is 0.32 px away
-        assert!(near(
-            for_key("viewport.pixels.A", 133.32, 133.32, 1e-3),
-            0.5
-        ));
-        assert!((133.0f64 - 133.32).abs() <= for_key("viewport.pixels.A", 133.32, 133.32, 1e-3));
+        // 0.1 % of 133.32 is 0.133 px < 0.5 px: a whole pixel 133 is
+        // 0.32 px away, and named right
+        for k in [
+            "viewport.pixels.A",
+            "viewport.pixels.A.0",
+            "viewport.pixels[B]",
+            "viewport.pixels",
+            "viewport",
+            "pixels.A",
+        ] {
+            if let Ok(k) = k.parse::<Key>() {
+                assert!(is_pixel(&k), "{k}");
+                assert!(near(for_key(&k, 133.32, 133.32, 1e-3), 0.5), "{k}");
+                assert!((133.0f64 - 133.32).abs() <= for_key(&k, 133.32, 133.32, 1e-3));
+            }
+        }
         // a large pixel coordinate keeps its relative tolerance
-        assert!(near(
-            for_key("viewport.pixels.A", 1000.0, 1000.0, 1e-3),
-            1.0
-        ));
-        assert!(near(for_key("window.top", 0.2, 0.2, 1e-3), 2e-4));
+        let px = key("viewport.pixels.A.1");
+        assert!(near(for_key(&px, 1000.0, 1000.0, 1e-3), 1.0));
+        // not a pixel: the window's top, 133.32 units: 0.1 % is 0.133
+        for k in [
+            "window.top",
+            "view.points.A.0",
+            "project.points.A",
+            "window",
+            "top",
+        ] {
+            let k = key(k);
+            assert!(!is_pixel(&k), "{k}");
+            assert!(near(for_key(&k, 133.32, 133.32, 1e-3), 0.13332), "{k}");
+        }
+        assert!(near(for_key(&key("window.top"), 0.2, 0.2, 1e-3), 2e-4));
     }
 }

@@ -14,7 +14,11 @@ use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
 use crate::msg::{ErrMsg, IoWhy, Msg};
 use crate::tutor::check::{self, Answers, Marker, Marking, Settings};
+use crate::tutor::generate::{problem_name, problem_number};
+use crate::tutor::key::{Key, NotAKey};
+use std::fmt;
 use std::path::{Path, PathBuf};
+use std::str::FromStr;
 
 /// What a class answers: one problem, or an exam's variants, each a list of
 /// problems named as `generate` names their files (`problem-01`, …).
@@ -50,16 +54,72 @@ impl Paper {
             exam: false,
         }
     }
+
+    /// The `i`th problem (0-based) as a class key names it: an exam's
+    /// problem, none for a lone problem.
+    pub fn problem(&self, i: usize) -> Option<usize> {
+        self.exam.then_some(i)
+    }
 }
 
-/// An answer key of a part as the class report names it: `problem-01.view.n`
-/// in an exam, `view.n` for a lone problem.
-pub fn full_key(part: &str, key: &str) -> String {
-    if part.is_empty() {
-        key.to_string()
-    } else {
-        format!("{part}.{key}")
+/// An answer key as the class report names it: `problem-01.view.n` in an
+/// exam (the problem's name as `generate` writes its file), `view.n` for a
+/// lone problem.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct ClassKey {
+    /// The problem of an exam, 0-based (`problem-01` is 0); none for a
+    /// lone problem.
+    pub problem: Option<usize>,
+    /// The answer key within the problem.
+    pub key: Key,
+}
+
+impl ClassKey {
+    /// The problem's name (`problem-01`; empty for a lone problem).
+    pub fn problem_name(&self) -> String {
+        self.problem
+            .map_or_else(String::new, |i| problem_name(i + 1))
     }
+}
+
+impl fmt::Display for ClassKey {
+    /// `problem-01.view.n`, or `view.n` for a lone problem.
+    fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        match self.problem {
+            Some(_) => write!(f, "{}.{}", self.problem_name(), self.key),
+            None => write!(f, "{}", self.key),
+        }
+    }
+}
+
+impl serde::Serialize for ClassKey {
+    /// JSON writes a class key as its one spelling (its `Display`).
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        s.collect_str(self)
+    }
+}
+
+impl FromStr for ClassKey {
+    type Err = NotAKey;
+
+    /// Reads `problem-01.view.n` (a problem of an exam) and `view.n`.
+    fn from_str(s: &str) -> std::result::Result<ClassKey, NotAKey> {
+        let (problem, key) = match of_problem(s) {
+            Some((i, rest)) => (Some(i), rest),
+            None => (None, s),
+        };
+        Ok(ClassKey {
+            problem,
+            key: key.parse()?,
+        })
+    }
+}
+
+/// The problem (0-based) an exam's answer names first (`problem-01.view.n`
+/// → 0) and the rest of the name (`view.n`).
+fn of_problem(name: &str) -> Option<(usize, &str)> {
+    let (head, rest) = name.split_once('.')?;
+    Some((problem_number(head)?.checked_sub(1)?, rest))
 }
 
 /// One answer file of a class.
@@ -213,18 +273,13 @@ fn split(paper: &Paper, answers: &Answers) -> Result<(usize, Vec<Answers>)> {
     let problems = &paper.variants[v - 1];
     let mut parts: Vec<Answers> = vec![Vec::new(); problems.len()];
     for (k, val) in answers.iter().filter(|(k, _)| k != "variant") {
-        let at = problems.iter().position(|p| {
-            k.strip_prefix(&p.name)
-                .is_some_and(|rest| rest.starts_with('.'))
-        });
-        let Some(i) = at else {
+        let Some((i, rest)) = of_problem(k).filter(|(i, _)| *i < problems.len()) else {
             let names: Vec<&str> = problems.iter().map(|p| p.name.as_str()).collect();
             return Err(Error::why(
                 k.as_str(),
                 ErrMsg::NotAProblemOfExam(k.clone(), names.join(", ")),
             ));
         };
-        let rest = &k[problems[i].name.len() + 1..];
         parts[i].push((rest.to_string(), val.clone()));
     }
     Ok((v, parts))
@@ -265,4 +320,45 @@ fn answer_files(dir: &Path) -> Result<(Vec<PathBuf>, Skipped)> {
         ));
     }
     Ok((files, skipped))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tutor::key::{Field, Part, Value};
+
+    #[test]
+    fn a_class_key_reads_back_from_its_spelling() {
+        for s in [
+            "problem-01.view.n",
+            "problem-12.clip.1.status",
+            "problem-100.view.points.A.1",
+            "view.n",
+            "viewport",
+        ] {
+            let k: ClassKey = s.parse().unwrap_or_else(|_| panic!("{s}"));
+            assert_eq!(k.to_string(), s);
+        }
+        let n = ClassKey {
+            problem: Some(0),
+            key: Key::new(
+                Part::View,
+                Value::Field(Field::Axis(crate::tutor::key::Axis::N)),
+            ),
+        };
+        assert_eq!(n.to_string(), "problem-01.view.n");
+        assert_eq!(n.problem_name(), "problem-01");
+        let seg: ClassKey = "problem-02.clip[1].status".parse().expect("a key");
+        assert_eq!(seg.problem, Some(1));
+        assert_eq!(seg.to_string(), "problem-02.clip.1.status");
+        // not a problem's name as `generate` writes it, nor a key
+        for s in [
+            "problem-1.view.n",
+            "problem-00.view.n",
+            "problem-01",
+            "problem-01.top.x",
+        ] {
+            assert!(s.parse::<ClassKey>().is_err(), "{s}");
+        }
+    }
 }

@@ -31,7 +31,7 @@
 //! [`VARIANT_GAP`] below the median of the other variants' facilities on it
 //! is flagged harder than its siblings (above it: easier).
 
-use super::{full_key, Class, Paper, Sheet};
+use super::{Class, ClassKey, Paper, Sheet};
 use crate::msg::Msg;
 use crate::num::Real;
 use crate::stages::trace::{Step, Val};
@@ -83,7 +83,7 @@ pub enum Flag {
 #[derive(Clone, Debug)]
 pub struct KeyStats {
     /// The key (`view.n`; `problem-01.view.n` in an exam).
-    pub key: String,
+    pub key: ClassKey,
     /// How many students were asked it.
     pub students: usize,
     /// How many answers got each verdict code ([`CODES`] first, then any other).
@@ -126,7 +126,7 @@ pub struct MistakeStats {
     /// The students who made it, in file order.
     pub students: Vec<String>,
     /// The keys it explains, in the solution's order.
-    pub keys: Vec<String>,
+    pub keys: Vec<ClassKey>,
     /// Other mistakes that give the same values for some of these answers.
     pub also: Vec<Code>,
     /// The step where it is made: the step of its first key.
@@ -149,7 +149,7 @@ pub struct WrongValue {
 #[derive(Clone, Debug)]
 pub struct WrongAnswers {
     /// The key.
-    pub key: String,
+    pub key: ClassKey,
     /// The variant, in an exam of several.
     pub variant: Option<usize>,
     /// The right value.
@@ -243,7 +243,7 @@ pub fn of(class: &Class, paper: &Paper, settings: &Settings) -> Stats {
     Stats {
         students: sheets.len(),
         keys: keys.iter().map(|k| key_stats(k, &sheets)).collect(),
-        mistakes: wrong::mistakes(&sheets, &keys, &solved),
+        mistakes: wrong::mistakes(&sheets, &keys, paper, &solved),
         wrong_answers: wrong::wrong_answers(&sheets, &keys, paper, settings),
         histogram: histogram(&sheets),
         problems: problems(paper, &sheets),
@@ -266,10 +266,10 @@ fn solved(p: &crate::input::problem::ProblemIn) -> Solved {
 
 /// Every key marked in the class, problem by problem, in the solution's
 /// order (keys the solution does not list, in the order first marked).
-fn key_order(paper: &Paper, solved: &[Vec<Solved>], sheets: &[&Sheet]) -> Vec<String> {
-    let mut seen: Vec<String> = Vec::new();
+fn key_order(paper: &Paper, solved: &[Vec<Solved>], sheets: &[&Sheet]) -> Vec<ClassKey> {
+    let mut seen: Vec<ClassKey> = Vec::new();
     for (i, part) in paper.variants[0].iter().enumerate() {
-        let mut marked: Vec<String> = Vec::new();
+        let mut marked: Vec<Key> = Vec::new();
         for s in sheets {
             for m in parts_named(s, &part.name) {
                 for a in &m.answers {
@@ -284,22 +284,20 @@ fn key_order(paper: &Paper, solved: &[Vec<Solved>], sheets: &[&Sheet]) -> Vec<St
             .filter_map(|v| v.get(i))
             .flat_map(|s| &s.order)
             .collect();
-        // a key as the answer files spell it: one that is no key is in no
-        // solution's order, and comes after them in the order first marked
-        let rank = |k: &String| {
-            let k = k.parse::<Key>().ok();
-            (order.iter())
-                .position(|o| Some(*o) == k.as_ref())
-                .unwrap_or(usize::MAX)
-        };
-        let mut ranked: Vec<(usize, usize, String)> = marked
+        // a key no solution lists (a component, a whole part) comes after
+        // them, in the order first marked
+        let rank = |k: &Key| (order.iter()).position(|o| *o == k).unwrap_or(usize::MAX);
+        let mut ranked: Vec<(usize, usize, Key)> = marked
             .into_iter()
             .enumerate()
             .map(|(first, k)| (rank(&k), first, k))
             .collect();
-        ranked.sort();
-        for (_, _, k) in ranked {
-            let full = full_key(&part.name, &k);
+        ranked.sort_by_key(|(rank, first, _)| (*rank, *first));
+        for (_, _, key) in ranked {
+            let full = ClassKey {
+                problem: paper.problem(i),
+                key,
+            };
             if !seen.contains(&full) {
                 seen.push(full);
             }
@@ -320,20 +318,15 @@ fn parts_named<'a>(
         .map(|(_, m)| m)
 }
 
-/// A sheet's marked answer to a full key.
-fn answer<'a>(s: &'a Sheet, key: &str) -> Option<&'a Marked> {
-    s.outcome.as_ref().ok()?.iter().find_map(|(part, m)| {
-        let rest = if part.is_empty() {
-            key
-        } else {
-            key.strip_prefix(part.as_str())?.strip_prefix('.')?
-        };
-        m.answers.iter().find(|a| a.key == rest)
-    })
+/// A sheet's marked answer to a class key (the markings of a sheet are
+/// its paper's problems in order).
+fn answer<'a>(s: &'a Sheet, key: &ClassKey) -> Option<&'a Marked> {
+    let (_, m) = s.outcome.as_ref().ok()?.get(key.problem.unwrap_or(0))?;
+    m.answers.iter().find(|a| a.key == key.key)
 }
 
 /// Counts, facility, D and r of one key.
-fn key_stats(key: &str, sheets: &[&Sheet]) -> KeyStats {
+fn key_stats(key: &ClassKey, sheets: &[&Sheet]) -> KeyStats {
     let asked: Vec<(&Marked, f64, usize)> = sheets
         .iter()
         .filter_map(|s| Some((answer(s, key)?, s.score()?, s.total()?)))
@@ -366,7 +359,7 @@ fn key_stats(key: &str, sheets: &[&Sheet]) -> KeyStats {
         flags.push(Flag::Negative);
     }
     KeyStats {
-        key: key.to_string(),
+        key: key.clone(),
         students: asked.len(),
         counts,
         facility,

@@ -88,6 +88,13 @@ pub fn problem_name(i: usize) -> String {
     format!("problem-{i:02}")
 }
 
+/// The number of the problem named `name` (`problem-01` → 1): the inverse
+/// of [`problem_name`], so `problem-1` is no problem's name.
+pub fn problem_number(name: &str) -> Option<usize> {
+    let n = name.rsplit('-').next()?.parse().ok()?;
+    (problem_name(n) == name).then_some(n)
+}
+
 /// The folder of variant v (1-based) of an exam: `variant-01`.
 pub fn variant_name(v: usize) -> String {
     format!("variant-{v:02}")

@@ -213,8 +213,7 @@ fn mistaken_trees(p: &ProblemIn) -> Vec<(Code, Tree)> {
 /// tolerances: the intervals do not overlap) and are not absurd, merged
 /// when two mistakes give the same value.
 fn key_blanks(key: &Key, value: &Val, trees: &[(Code, Tree)], rel: f64, figs: u32) -> Vec<Blank> {
-    let spelled = key.to_string();
-    let right = typed_leaves(&spelled, value, rel);
+    let right = typed_leaves(key, value, rel);
     let scale = magnitude(&right);
     let mut blanks: Vec<Blank> = right
         .into_iter()
@@ -223,14 +222,14 @@ fn key_blanks(key: &Key, value: &Val, trees: &[(Code, Tree)], rel: f64, figs: u3
             Blank {
                 value,
                 tolerance,
-                pixel: tolerance::is_pixel(&spelled),
+                pixel: tolerance::is_pixel(key),
                 wrong: Vec::new(),
             }
         })
         .collect();
     for (m, t) in trees {
         let Some(v) = value_of(t, key) else { continue };
-        let leaves = typed_leaves(&spelled, v, rel);
+        let leaves = typed_leaves(key, v, rel);
         if leaves.len() != blanks.len() {
             continue; // another shape (a rejected segment): not comparable
         }
@@ -334,7 +333,7 @@ fn apart(a: &Typed, ta: f64, b: &Typed, tb: f64) -> bool {
 /// The leaves of a value, depth first, each with its absolute tolerance
 /// (see the module docs); a non-finite number keeps a tolerance of 0 (it is
 /// left out as absurd).
-pub fn typed_leaves(key: &str, v: &Val, rel: f64) -> Vec<(Typed, f64)> {
+pub fn typed_leaves(key: &Key, v: &Val, rel: f64) -> Vec<(Typed, f64)> {
     let mut leaves = Vec::new();
     collect(v, &mut leaves);
     let scale = leaves

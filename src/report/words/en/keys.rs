@@ -26,6 +26,9 @@ impl KeyWords for En {
 
     fn answer_name(&self, k: &Key) -> String {
         let name = match &k.value {
+            Value::Whole => k
+                .part
+                .map_or_else(String::new, |p| self.node(&Node::Part(p))),
             Value::Field(Field::Matrix) if k.part == Some(Part::View) => "V".to_string(),
             Value::Point(n) => match k.part {
                 Some(Part::View) => self.name(&Name::Eye(n.clone())),
@@ -60,6 +63,12 @@ impl KeyWords for En {
     fn answer_words(&self, k: &Key) -> String {
         let pl = |p: &Plane| self.plane(*p);
         match &k.value {
+            Value::Whole => {
+                let part = k
+                    .part
+                    .map_or_else(String::new, |p| self.node(&Node::Part(p)));
+                format!("the answers of {part}")
+            }
             Value::Field(f) => match f {
                 Field::Axis(a) => {
                     format!("camera axis {}", self.node(&Node::Field(Field::Axis(*a))))

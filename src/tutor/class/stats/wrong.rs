@@ -7,22 +7,24 @@ use crate::input::answer::read as read_answer;
 use crate::stages::trace::Val;
 use crate::tutor::check::tolerance;
 use crate::tutor::check::{written, Marked, Settings, Verdict};
-use crate::tutor::class::{full_key, Paper, Sheet};
+use crate::tutor::class::{ClassKey, Paper, Sheet};
 use crate::tutor::diagnose::Code;
+use crate::tutor::key::Key;
 use crate::tutor::practice::step_for;
 
 /// Each catalog mistake named in the class with its students and keys, the
 /// most students first (ties in the catalog's order).
 pub(super) fn mistakes(
     sheets: &[&Sheet],
-    keys: &[String],
+    keys: &[ClassKey],
+    paper: &Paper,
     solved: &[Vec<Solved>],
 ) -> Vec<MistakeStats> {
     // each mistake with the variant of its first student and its last sheet
     let mut out: Vec<(MistakeStats, usize, usize)> = Vec::new();
     for (i, s) in sheets.iter().enumerate() {
         let v = s.variant.unwrap_or(1);
-        for (part, m) in s.outcome.iter().flatten() {
+        for (problem, (_, m)) in s.outcome.iter().flatten().enumerate() {
             for d in &m.diagnoses {
                 let at = out.iter().position(|(x, _, _)| x.mistake == d.mistake);
                 let at = at.unwrap_or_else(|| {
@@ -41,8 +43,11 @@ pub(super) fn mistakes(
                     x.students.push(s.who.clone());
                     *last = i;
                 }
-                for k in &d.keys {
-                    let k = full_key(part, k);
+                for key in &d.keys {
+                    let k = ClassKey {
+                        problem: paper.problem(problem),
+                        key: key.clone(),
+                    };
                     if !x.keys.contains(&k) {
                         x.keys.push(k);
                     }
@@ -55,7 +60,7 @@ pub(super) fn mistakes(
             }
         }
     }
-    let rank = |k: &String| keys.iter().position(|x| x == k).unwrap_or(usize::MAX);
+    let rank = |k: &ClassKey| keys.iter().position(|x| x == k).unwrap_or(usize::MAX);
     let catalog = |m: Code| Code::all().iter().position(|c| *c == m);
     for (x, v, _) in &mut out {
         x.keys.sort_by_key(|k| rank(k));
@@ -66,20 +71,13 @@ pub(super) fn mistakes(
     out
 }
 
-/// The step of the worked solution that computes a full key.
-fn step_of(key: &str, parts: &[Solved]) -> Option<StepRef> {
-    let (part, rest, i) = match key.split_once('.') {
-        Some((p, rest)) if p.starts_with("problem-") => {
-            let i: usize = p.trim_start_matches("problem-").parse().ok()?;
-            (p.to_string(), rest, i.checked_sub(1)?)
-        }
-        _ => (String::new(), key, 0),
-    };
-    let steps = &parts.get(i)?.steps;
-    let step = step_for(&rest.parse().ok()?, steps)?;
+/// The step of the worked solution that computes a class key.
+fn step_of(key: &ClassKey, parts: &[Solved]) -> Option<StepRef> {
+    let steps = &parts.get(key.problem.unwrap_or(0))?.steps;
+    let step = step_for(&key.key, steps)?;
     let number = steps.iter().position(|s| *s == step)? + 1;
     Some(StepRef {
-        part,
+        part: key.problem_name(),
         number,
         title: step.title,
     })
@@ -90,7 +88,7 @@ fn step_of(key: &str, parts: &[Solved]) -> Option<StepRef> {
 /// the most such answers first.
 pub(super) fn wrong_answers(
     sheets: &[&Sheet],
-    keys: &[String],
+    keys: &[ClassKey],
     paper: &Paper,
     settings: &Settings,
 ) -> Vec<WrongAnswers> {
@@ -152,7 +150,7 @@ fn same_value(first: &toml::Value, given: &toml::Value, a: &Marked, rel: f64) ->
     }
 }
 
-fn close(x: &Val, y: &Val, key: &str, rel: f64) -> bool {
+fn close(x: &Val, y: &Val, key: &Key, rel: f64) -> bool {
     let (xs, ys) = (numbers(x), numbers(y));
     if xs.is_empty() || xs.len() != ys.len() {
         return x == y;
