@@ -445,6 +445,9 @@ pub enum Msg {
     BehindWarn(String),
     /// Exact values that grew past this many terms were left approximate.
     ExactTooLarge(usize),
+    /// `--figure` was asked, but no part asked has a figure of its own
+    /// (a problem file asking `viewport` alone).
+    NoFigure,
 }
 
 impl Default for Msg {

@@ -1386,3 +1386,44 @@ fn a_problem_that_gives_d_draws_its_projection_on_z_equals_d() {
     let svg = to_svg(&drawn(&args)[0]);
     assert!(svg.contains("z = d = −2"), "the plane is named by d");
 }
+
+/// `--figure` on a problem whose parts have no figure of their own (the
+/// viewport asked alone: its pixels are drawn on the window's figure)
+/// writes no file and says so on stderr, in the language asked, instead
+/// of finishing silently; the solution is still printed (exit 0).
+#[test]
+fn a_figure_of_nothing_drawable_is_said_not_silent() {
+    let dir = std::env::temp_dir().join(format!("grafika-nofig-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let triangle = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("problems/text-triangle.toml"),
+    )
+    .unwrap();
+    let problem = dir.join("viewport.toml");
+    std::fs::write(&problem, format!("ask = [\"viewport\"]\n{triangle}")).unwrap();
+    // A's pixel: x = 200·(0 + r)/(2r) = 100, y = (100−25√2)/3 ≈ 21.55
+    for (lang, said, pixel) in [
+        ("en", "warning: no figure was written", "(100, 21.55)"),
+        ("id", "peringatan: tidak ada gambar yang ditulis", "(100; 21,55)"),
+    ] {
+        let out = Command::cargo_bin("grafika")
+            .unwrap()
+            .args(["--lang", lang, "solve"])
+            .arg(&problem)
+            .arg("--figure")
+            .arg(dir.join("vp.svg"))
+            .assert()
+            .success();
+        let err = String::from_utf8_lossy(&out.get_output().stderr).to_string();
+        assert!(err.starts_with(said), "{lang}: {err}");
+        assert!(err.contains("`window`"), "{lang}: {err}");
+        let stdout = String::from_utf8_lossy(&out.get_output().stdout).to_string();
+        assert!(stdout.contains(pixel), "{lang}: {stdout}");
+    }
+    let svgs = std::fs::read_dir(&dir).unwrap().filter(|e| {
+        e.as_ref()
+            .is_ok_and(|e| e.path().extension().is_some_and(|x| x == "svg"))
+    });
+    assert_eq!(svgs.count(), 0, "no figure file");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

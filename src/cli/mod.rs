@@ -124,8 +124,10 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
         Command::Check(a) => check::run(a, json, &style, &outputs),
         Command::Generate(a) => generate::run(a, cli.common.force, json, &style).map(|t| (t, 0)),
         Command::Practice(a) => practice::run(a, json, &style).map(|()| (String::new(), 0)),
-        _ => run_writing(&cli, &outputs).and_then(|report| {
-            write_figure(&cli.command, &report, &style, &outputs)?;
+        _ => run_writing(&cli, &outputs).and_then(|mut report| {
+            if write_figure(&cli.command, &report, &style, &outputs)? == Some(0) {
+                report.warnings.push(Msg::NoFigure);
+            }
             write_html(&cli, &report, &style, &outputs)?;
             Ok((report_text(&report, json, &style), 0))
         }),
@@ -294,15 +296,21 @@ fn sections(part: &str, level: &str) -> String {
 
 /// `--figure FILE.svg`: the report's drawing as an SVG file; for
 /// `solve`, one file per part, FILE-1-view.svg, FILE-2-project.svg, …
-/// (docs/spec.md §4), all or none.
-fn write_figure(cmd: &Command, report: &Report, style: &Style, outputs: &Outputs) -> Result<()> {
+/// (docs/spec.md §4), all or none. How many files were written, if a
+/// figure was asked.
+fn write_figure(
+    cmd: &Command,
+    report: &Report,
+    style: &Style,
+    outputs: &Outputs,
+) -> Result<Option<usize>> {
     use crate::report::figure::{drawings::drawings, svg::to_svg};
     let path = match cmd {
         Command::Solve { figure, .. } => figure.as_ref(),
         c => figure_path(c),
     };
     let Some(path) = path else {
-        return Ok(());
+        return Ok(None);
     };
     let all = drawings(report, style);
     let files: Vec<(std::path::PathBuf, String)> = match cmd {
@@ -313,7 +321,8 @@ fn write_figure(cmd: &Command, report: &Report, style: &Style, outputs: &Outputs
             .collect(),
         _ => all.iter().map(|d| (path.clone(), to_svg(d))).collect(),
     };
-    outputs.write_all(&files, "figure")
+    outputs.write_all(&files, "figure")?;
+    Ok(Some(files.len()))
 }
 
 /// `solve`'s file for part k: FILE.svg → FILE-k-PART.svg.

@@ -183,6 +183,7 @@ mod tests {
             Msg::UpParallel(1e-9),
             Msg::BehindWarn(s()),
             Msg::ExactTooLarge(64),
+            Msg::NoFigure,
             Msg::ExpectOne,
             Msg::ExpectList(3),
             Msg::CountMismatch(3, 2),
@@ -525,6 +526,7 @@ mod tests {
             | UpParallel(_)
             | BehindWarn(_)
             | ExactTooLarge(_)
+            | NoFigure
             | ExpectOne
             | ExpectList(_)
             | CountMismatch(..)
