@@ -1404,7 +1404,11 @@ fn a_figure_of_nothing_drawable_is_said_not_silent() {
     // A's pixel: x = 200·(0 + r)/(2r) = 100, y = (100−25√2)/3 ≈ 21.55
     for (lang, said, pixel) in [
         ("en", "warning: no figure was written", "(100, 21.55)"),
-        ("id", "peringatan: tidak ada gambar yang ditulis", "(100; 21,55)"),
+        (
+            "id",
+            "peringatan: tidak ada gambar yang ditulis",
+            "(100; 21,55)",
+        ),
     ] {
         let out = Command::cargo_bin("grafika")
             .unwrap()

@@ -651,64 +651,89 @@ pub struct GenerateArgs {
     pub decimal: Decimal,
 }
 
-/// Gives a type of a lower layer its command-line choices: each variant's
-/// name as typed and its help.
+/// Gives a type of a lower layer its command-line choices: each variant
+/// with its help; its name as typed is the type's own (`$name`: `name`,
+/// or `code` for a language), spelled once beside the type.
 macro_rules! choices {
-    ($ty:ident { $($variant:ident => $name:literal : $help:literal),* $(,)? }) => {
+    ($ty:ident, $name:ident { $($variant:ident : $help:literal),* $(,)? }) => {
         impl ValueEnum for $ty {
             fn value_variants<'a>() -> &'a [Self] {
                 &[$($ty::$variant),*]
             }
             fn to_possible_value(&self) -> Option<PossibleValue> {
-                Some(match self {
-                    $($ty::$variant => PossibleValue::new($name).help($help)),*
-                })
+                Some(PossibleValue::new(self.$name()).help(match self {
+                    $($ty::$variant => $help),*
+                }))
             }
         }
     };
 }
 
-choices!(Precision {
-    Exact => "exact": "Exact sums of surds where the mathematics is exact, marked ≈ otherwise",
-    F64 => "f64": "IEEE double precision with stable formulas",
-    F32 => "f32": "IEEE single precision with stable formulas",
-});
-choices!(Decimal {
-    Point => "point": "0.5: a Moodle in English (a typed comma is a thousands separator there)",
-    Comma => "comma": "0,5: a Moodle with the Indonesian language pack",
-});
-choices!(Lang {
-    Id => "id": "Bahasa Indonesia",
-    En => "en": "English",
-});
-choices!(Model {
-    Ambient => "ambient": "Ambient only: ka·Cs",
-    Diffuse => "diffuse": "Diffuse scattering only: kd·max(cos α, 0)·Cs",
-    Specular => "specular": "Specular reflection only: ks·max(cos β, 0)ⁿ·white",
-    Lambert => "lambert": "Lambert's law: diffuse + ambient",
-    Phong => "phong": "The Phong model: diffuse + specular + ambient (the text's default)",
-    Blinn => "blinn": "Blinn–Phong (Direct3D 9): the specular term uses N·H",
-});
-choices!(Shading {
-    Flat => "flat": "One lighting evaluation per face, with the face normal",
-    Gouraud => "gouraud": "Lighting per vertex, colours interpolated",
-    Phong => "phong": "Normals interpolated, lighting per pixel",
-});
-choices!(Normals {
-    Average => "average": "The normalised average of the adjacent face normals",
-    Position => "position": "The transformed vertex position, normalised, as the text's draw3Dcg",
-});
-choices!(Topic {
-    Basis => "basis": "The camera basis u, v, n",
-    View => "view": "The basis and eye coordinates of points",
-    Project => "project": "Projection onto the near plane",
-    Window => "window": "The viewing window from fovy, aspect and near",
-    Clip => "clip": "Line clipping with outcodes",
-    Shade => "shade": "Lighting at one point",
-    Pipeline => "pipeline": "The whole chain: view, projection, window, viewport",
-});
-choices!(Difficulty {
-    Easy => "easy": "Integer norms, rational answers",
-    Medium => "medium": "One surd in the answers",
-    Hard => "hard": "General",
-});
+choices!(
+    Precision,
+    name {
+        Exact: "Exact sums of surds where the mathematics is exact, marked ≈ otherwise",
+        F64: "IEEE double precision with stable formulas",
+        F32: "IEEE single precision with stable formulas",
+    }
+);
+choices!(
+    Decimal,
+    name {
+        Point: "0.5: a Moodle in English (a typed comma is a thousands separator there)",
+        Comma: "0,5: a Moodle with the Indonesian language pack",
+    }
+);
+choices!(
+    Lang,
+    code {
+        Id: "Bahasa Indonesia",
+        En: "English",
+    }
+);
+choices!(
+    Model,
+    name {
+        Ambient: "Ambient only: ka·Cs",
+        Diffuse: "Diffuse scattering only: kd·max(cos α, 0)·Cs",
+        Specular: "Specular reflection only: ks·max(cos β, 0)ⁿ·white",
+        Lambert: "Lambert's law: diffuse + ambient",
+        Phong: "The Phong model: diffuse + specular + ambient (the text's default)",
+        Blinn: "Blinn–Phong (Direct3D 9): the specular term uses N·H",
+    }
+);
+choices!(
+    Shading,
+    name {
+        Flat: "One lighting evaluation per face, with the face normal",
+        Gouraud: "Lighting per vertex, colours interpolated",
+        Phong: "Normals interpolated, lighting per pixel",
+    }
+);
+choices!(
+    Normals,
+    name {
+        Average: "The normalised average of the adjacent face normals",
+        Position: "The transformed vertex position, normalised, as the text's draw3Dcg",
+    }
+);
+choices!(
+    Topic,
+    name {
+        Basis: "The camera basis u, v, n",
+        View: "The basis and eye coordinates of points",
+        Project: "Projection onto the near plane",
+        Window: "The viewing window from fovy, aspect and near",
+        Clip: "Line clipping with outcodes",
+        Shade: "Lighting at one point",
+        Pipeline: "The whole chain: view, projection, window, viewport",
+    }
+);
+choices!(
+    Difficulty,
+    name {
+        Easy: "Integer norms, rational answers",
+        Medium: "One surd in the answers",
+        Hard: "General",
+    }
+);

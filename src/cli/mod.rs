@@ -62,7 +62,7 @@ fn run_writing(cli: &Cli, outputs: &Outputs) -> Result<Report> {
             key,
             match cli.common.precision {
                 Precision::Exact => ErrMsg::ExactBeyondF64,
-                p => ErrMsg::ResultNotFinite(format!("{p:?}").to_lowercase()),
+                p => ErrMsg::ResultNotFinite(p.name().to_string()),
             },
         )),
         None => Ok(report),

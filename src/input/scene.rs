@@ -211,6 +211,20 @@ enum ObjectType {
     Obj,
 }
 
+impl ObjectType {
+    /// Its name as a scene file's `type` spells it (`sphere`).
+    fn name(self) -> &'static str {
+        match self {
+            ObjectType::Cone => "cone",
+            ObjectType::Sphere => "sphere",
+            ObjectType::Cylinder => "cylinder",
+            ObjectType::Box => "box",
+            ObjectType::Plane => "plane",
+            ObjectType::Obj => "obj",
+        }
+    }
+}
+
 /// `[[object]]`.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -581,11 +595,11 @@ pub fn transform_matrix(t: &TransformIn) -> Matrix4<f64> {
 }
 
 fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Object> {
-    let tname = format!("{:?}", o.kind).to_lowercase();
+    let tname = o.kind.name();
     let field = format!("object[{i}]");
     let f = |k: &str| format!("{field}.{k}");
-    check_fields(o, &tname, &f)?;
-    let mesh = object_mesh(o, &tname, &f, dir)?;
+    check_fields(o, tname, &f)?;
+    let mesh = object_mesh(o, tname, &f, dir)?;
     mesh.validate(&field)?;
     let mut model = Matrix4::identity();
     for t in &o.transform {
@@ -822,6 +836,23 @@ mod tests {
                 n.name()
             );
             assert_eq!(parse(&text).map(|s| s.normals).ok(), Some(n), "{text}");
+        }
+    }
+
+    /// The names the program writes (errors, `--shading`'s choices) are
+    /// the ones a scene file is read by: serde's lowercase spelling.
+    #[test]
+    fn every_choice_is_read_by_the_name_it_is_written_by() {
+        fn reads<X: serde::de::DeserializeOwned + PartialEq + std::fmt::Debug>(x: X, name: &str) {
+            let read: X = toml::Value::String(name.into()).try_into().expect(name);
+            assert_eq!(read, x, "{name}");
+        }
+        use ObjectType as O;
+        for t in [O::Cone, O::Sphere, O::Cylinder, O::Box, O::Plane, O::Obj] {
+            reads(t, t.name());
+        }
+        for s in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+            reads(s, s.name());
         }
     }
 

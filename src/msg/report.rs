@@ -304,6 +304,16 @@ pub enum Decimal {
     Comma,
 }
 
+impl Decimal {
+    /// Its name as `--decimal` spells it (`point`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Decimal::Point => "point",
+            Decimal::Comma => "comma",
+        }
+    }
+}
+
 /// A word of a quiz (Moodle XML, GIFT): how to type the answers, the
 /// feedback, the parts of a question, the names of a value's components.
 #[derive(Clone, Debug, PartialEq)]

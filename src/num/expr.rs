@@ -60,7 +60,7 @@ impl Expr {
         if v.is_finite() && v.to_f64().is_finite() {
             Ok(v)
         } else {
-            let precision = format!("{:?}", T::PRECISION).to_lowercase();
+            let precision = T::PRECISION.name().to_string();
             Err(NumErr::NotFinite(self.to_string(), precision))
         }
     }

@@ -38,6 +38,17 @@ pub enum Precision {
     F32,
 }
 
+impl Precision {
+    /// Its name as `--precision` and the JSON spell it (`exact`, `f64`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Precision::Exact => "exact",
+            Precision::F64 => "f64",
+            Precision::F32 => "f32",
+        }
+    }
+}
+
 /// A number shown to the user: its value (at the precision it was computed)
 /// and, where known, an exact form.
 #[derive(Clone, Debug, PartialEq)]
@@ -274,4 +285,20 @@ pub trait Scalar:
     }
     /// The number for display and JSON.
     fn shown(&self) -> Shown;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Precision;
+
+    /// `--precision`, the errors and the JSON spell a precision one way:
+    /// `name`, which is also serde's spelling.
+    #[test]
+    fn a_precision_is_spelled_by_its_name_everywhere() {
+        for p in [Precision::Exact, Precision::F64, Precision::F32] {
+            assert_eq!(serde_json::to_value(p).ok(), Some(p.name().into()));
+        }
+        let names = [Precision::Exact, Precision::F64, Precision::F32].map(Precision::name);
+        assert_eq!(names, ["exact", "f64", "f32"]);
+    }
 }

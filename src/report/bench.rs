@@ -7,15 +7,6 @@ use crate::num::Precision;
 use comfy_table::{presets, Cell, CellAlignment, Table};
 use serde_json::{json, Value};
 
-/// The precision as `--precision` spells it.
-fn prec_name(p: Precision) -> &'static str {
-    match p {
-        Precision::Exact => "exact",
-        Precision::F64 => "f64",
-        Precision::F32 => "f32",
-    }
-}
-
 /// A time for people: `12.3 ns`, `4.56 µs`, `7.89 ms`.
 pub fn fmt_time(ns: f64) -> String {
     if ns < 1e3 {
@@ -80,7 +71,7 @@ pub fn table(inp: &Inputs, rows: &[Row], lang: crate::report::lang::Lang) -> Str
         };
         t.add_row(vec![
             Cell::new(r.stage.name()),
-            Cell::new(prec_name(r.precision)),
+            Cell::new(r.precision.name()),
             right(inp.len(r.stage).to_string()),
             right(fmt_time(r.ns_per_op)),
             if exact { dash() } else { right(fmt_ulps(tmax)) },
@@ -110,7 +101,7 @@ pub fn to_json(inp: &Inputs, rows: &[Row]) -> Value {
             let num = |x: f64| if x.is_finite() { json!(x) } else { json!("inf") };
             json!({
                 "stage": r.stage.name(),
-                "precision": prec_name(r.precision),
+                "precision": r.precision.name(),
                 "cases": inp.len(r.stage),
                 "ns_per_op": r.ns_per_op,
                 "passes": r.passes,

@@ -334,16 +334,12 @@ fn summary_text(s: &Summary, look: &Look) -> String {
             out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
         }
     }
-    let (topic, diff) = (name(&s.next.0), name(&s.next.1));
+    let (topic, diff) = (s.next.0.name(), s.next.1.name());
     out.push_str(&format!(
         "  {}: grafika practice --topic {topic} --difficulty {diff}\n",
         look.w(P::PractiseNext)
     ));
     out
-}
-
-fn name(x: &impl std::fmt::Debug) -> String {
-    format!("{x:?}").to_lowercase()
 }
 
 /// What a key asks for, in a few words, and the key.
@@ -450,6 +446,6 @@ fn summary_json(s: &Summary, lang: Lang) -> Value {
         "mistakes": s.mistakes.iter().map(|(m, keys)| json!({
             "code": m, "mistake": mistake_text(*m, lang), "keys": keys.iter().map(Key::to_string).collect::<Vec<_>>(),
         })).collect::<Vec<_>>(),
-        "next": { "topic": name(&s.next.0), "difficulty": name(&s.next.1) },
+        "next": { "topic": s.next.0.name(), "difficulty": s.next.1.name() },
     })
 }

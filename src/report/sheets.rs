@@ -26,7 +26,7 @@ pub fn exam_title(
 ) -> String {
     let title = DocWord::ExamTitle {
         topics: topics_name(topics),
-        difficulty: format!("{diff:?}").to_lowercase(),
+        difficulty: diff.name().to_string(),
         seed,
         variant,
     };

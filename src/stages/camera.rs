@@ -140,7 +140,7 @@ fn view_direction<T: Scalar>(pe: &V3<T>, d: &V3<T>) -> Result<(V3<T>, T)> {
     if !vec::is_finite(d) {
         return Err(Error::why(
             "look",
-            crate::msg::ErrMsg::EyeLookTooLarge(fmt3(d), precision_name::<T>().into()),
+            crate::msg::ErrMsg::EyeLookTooLarge(fmt3(d), T::PRECISION.name().into()),
         ));
     }
     vec::normalize(d).ok_or_else(|| Error::said("look", Msg::ErrSamePoint(fmt3(pe))))
@@ -252,7 +252,7 @@ pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> 
     if !(0..3).all(|r| view[(r, 3)].is_finite()) {
         return Err(Error::why(
             "eye",
-            crate::msg::ErrMsg::TranslationTooLarge(precision_name::<T>().into()),
+            crate::msg::ErrMsg::TranslationTooLarge(T::PRECISION.name().into()),
         ));
     }
     tr.step(|| {
@@ -364,7 +364,7 @@ pub fn to_eye<T: Scalar>(
     if !vec::is_finite(&e) {
         return Err(Error::why(
             format!("points.{name}"),
-            crate::msg::ErrMsg::EyeCoordsTooLarge(name.to_string(), precision_name::<T>().into()),
+            crate::msg::ErrMsg::EyeCoordsTooLarge(name.to_string(), T::PRECISION.name().into()),
         ));
     }
     Ok(e)
@@ -413,15 +413,6 @@ pub fn eye_by_matrix<T: Scalar>(
         .note(Msg::Pixel(PixelMsg::Composed))
     });
     e
-}
-
-/// The precision's name as `--precision` spells it.
-fn precision_name<T: Scalar>() -> &'static str {
-    match T::PRECISION {
-        crate::num::Precision::Exact => "exact",
-        crate::num::Precision::F64 => "f64",
-        crate::num::Precision::F32 => "f32",
-    }
 }
 
 /// The components of a vector by reference.

@@ -119,10 +119,7 @@ pub fn project<T: Scalar>(
     if !vec::is_finite(&r) {
         return Err(Error::why(
             format!("points.{name}"),
-            crate::msg::ErrMsg::ImageTooLarge(
-                name.to_string(),
-                format!("{:?}", T::PRECISION).to_lowercase(),
-            ),
+            crate::msg::ErrMsg::ImageTooLarge(name.to_string(), T::PRECISION.name().to_string()),
         ));
     }
     // Behind: the point and the plane are on opposite sides of the COP.

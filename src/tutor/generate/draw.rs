@@ -59,7 +59,7 @@ pub fn problem(
             "count",
             Msg::ErrFewDistinct(
                 super::topics_name(&[topic]),
-                format!("{diff:?}").to_lowercase(),
+                diff.name().to_string(),
                 seen.len(),
             ),
         ));

@@ -52,6 +52,21 @@ pub enum Topic {
     Pipeline,
 }
 
+impl Topic {
+    /// Its name as `--topic` and the exam titles spell it (`basis`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Topic::Basis => "basis",
+            Topic::View => "view",
+            Topic::Project => "project",
+            Topic::Window => "window",
+            Topic::Clip => "clip",
+            Topic::Shade => "shade",
+            Topic::Pipeline => "pipeline",
+        }
+    }
+}
+
 /// How nice the numbers are.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Difficulty {
@@ -61,6 +76,17 @@ pub enum Difficulty {
     Medium,
     /// General.
     Hard,
+}
+
+impl Difficulty {
+    /// Its name as `--difficulty` and the exam titles spell it (`easy`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Difficulty::Easy => "easy",
+            Difficulty::Medium => "medium",
+            Difficulty::Hard => "hard",
+        }
+    }
 }
 
 /// One generated problem.
@@ -148,10 +174,7 @@ pub fn clip_order(seed: u64) -> [usize; 3] {
 
 /// `view,clip` for the titles.
 pub fn topics_name(t: &[Topic]) -> String {
-    t.iter()
-        .map(|x| format!("{x:?}").to_lowercase())
-        .collect::<Vec<_>>()
-        .join(",")
+    t.iter().map(|x| x.name()).collect::<Vec<_>>().join(",")
 }
 
 /// The answers of the answer-key file: `key = value` lines in `grafika
