@@ -178,12 +178,14 @@ struct Viewed<T> {
 /// Step 3 done: the projection and the projected points.
 type Projected<T> = (Projection<T>, Vec<Named<T>>);
 
-/// Step 4 done: the window, its result keys and what it was given.
+/// Step 4 done: the window, its result keys, what it was given, and the
+/// points given on it (a `window` command's), evaluated.
 #[derive(Clone)]
 struct Windowed<T> {
     w: window::Window<T>,
     result: Tree,
     given: WindowAt,
+    on_window: Option<Vec<(String, (T, T))>>,
 }
 
 /// A problem being solved: the problem, the hooks, what is written and
@@ -295,7 +297,10 @@ impl<T: Scalar> Solver<'_, '_, T> {
         let (Some(w), Some((per, vp))) = (self.windowed()?, vp) else {
             return Ok(());
         };
-        let shown = self.on_window()?;
+        let shown = match w.on_window {
+            Some(given) => given,
+            None => self.projected_xy()?,
+        };
         let field = per.field("viewport");
         let (vw, vh): (T, T) = (eval(&field, &vp[0])?, eval(&field, &vp[1])?);
         window::validate_viewport(&vw, &vh).map_err(|e| e.in_field(field))?;
@@ -317,16 +322,11 @@ impl<T: Scalar> Solver<'_, '_, T> {
         Ok(())
     }
 
-    /// The points (x, y) on the window: given, or the projected points.
-    fn on_window(&mut self) -> Result<Vec<(String, (T, T))>> {
-        match &self.p.shared.on_window {
-            Some(given) => given_on_window(given),
-            None => {
-                let projected = self.projected()?.map(|(_, q)| q).unwrap_or_default();
-                let xy = |(n, q): Named<T>| (n, (q[0].clone(), q[1].clone()));
-                Ok(projected.into_iter().map(xy).collect())
-            }
-        }
+    /// The projected points as points (x, y) on the window.
+    fn projected_xy(&mut self) -> Result<Vec<(String, (T, T))>> {
+        let projected = self.projected()?.map(|(_, q)| q).unwrap_or_default();
+        let xy = |(n, q): Named<T>| (n, (q[0].clone(), q[1].clone()));
+        Ok(projected.into_iter().map(xy).collect())
     }
 
     /// `clip`: the clipping of each segment against the box.
@@ -528,8 +528,9 @@ fn project_steps<T: Scalar>(
 ) -> Result<Projected<T>> {
     let prefix = per.map_or("perspective.", |x| x.prefix);
     let given = per.and_then(|x| x.table.d.as_ref());
+    let d_field = format!("{prefix}d");
     let d: T = match (given, near) {
-        (Some(d), _) => eval(&format!("{prefix}d"), d)?,
+        (Some(d), _) => eval(&d_field, d)?,
         (None, Some(n)) => -n.clone(),
         (None, None) => {
             let field = format!("{prefix}near");
@@ -545,8 +546,7 @@ fn project_steps<T: Scalar>(
         _ => Step::new(Msg::ProjPlane, "z = d").val(Name::math("d"), Val::num(&d)),
     });
     let proj = Projection::Plane { d };
-    proj.validate()
-        .map_err(|e| e.in_field(format!("{prefix}d")))?;
+    proj.validate().map_err(|e| e.in_field(d_field))?;
     let projected = project_run(&proj, eye_pts, hooks, &mut out.rec)?;
     Ok((proj, projected))
 }
@@ -574,7 +574,7 @@ fn window_steps<T: Scalar>(
     let far: Option<T> = (t.far.as_ref())
         .map(|f| eval(&per.field("far"), f))
         .transpose()?;
-    let given = (p.shared.on_window.as_deref())
+    let on_window = (p.shared.on_window.as_deref())
         .map(given_on_window::<T>)
         .transpose()?;
     out.section(Msg::SecWindowClip);
@@ -584,7 +584,7 @@ fn window_steps<T: Scalar>(
     for ((n, q), (_, e)) in eyes.1.iter().zip(eyes.0) {
         point_inside_step(rec, n, q, e, &w, near, far.as_ref());
     }
-    let points = match &given {
+    let points = match &on_window {
         Some(g) => (g.iter())
             .map(|(n, (x, y))| (n.clone(), Val::vec2(x, y)))
             .collect(),
@@ -602,7 +602,12 @@ fn window_steps<T: Scalar>(
         points,
         projected: p.shared.on_window.is_none(),
     };
-    Ok(Some(Windowed { w, result, given }))
+    Ok(Some(Windowed {
+        w,
+        result,
+        given,
+        on_window,
+    }))
 }
 
 /// A segment end: its coordinates, or the named point's.
