@@ -211,6 +211,16 @@ pub enum CheckWord {
     Score,
     /// How many correct answers were credited by follow-through.
     FollowThroughCount(usize),
+    /// Column: the marks earned of those an answer is worth.
+    Marks,
+    /// In the marks column: an answer the scheme does not ask (working).
+    Working,
+    /// The working shown: how many answers, how many right.
+    WorkingCount(usize, usize),
+    /// Heading: the marks the working earned for values not right.
+    MethodMarks,
+    /// Before a method mark's keys: the marks earned (as shown), of how many.
+    MethodEarned(String, u32),
 }
 
 /// A word the documents share (the worked solution as text, HTML,

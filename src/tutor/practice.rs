@@ -23,6 +23,7 @@ use crate::input::answer::Read;
 use crate::input::problem::ProblemIn;
 use crate::msg::{Msg, Said};
 use crate::stages::trace::{Name, Step, Val};
+use crate::tutor::check::Follow;
 use crate::tutor::check::{agrees, Marker, Settings, Verdict, FOLLOW_THROUGH};
 use crate::tutor::diagnose::Code;
 use crate::tutor::generate::{Difficulty, Topic};
@@ -73,7 +74,7 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
         .check
         .as_ref()
         .and_then(|c| c.keys.as_ref())
-        .map(|_| &marker.keys);
+        .map(|_| marker.scheme.keys().cloned().collect::<Vec<Key>>());
     let items = marker
         .order
         .iter()
@@ -87,7 +88,7 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
             );
             // a `[check] key` that is no key of the solution asks
             // nothing, as `check` reports it unknown
-            unit || wanted.is_none_or(|w| w.contains(k))
+            unit || wanted.as_ref().is_none_or(|w| w.contains(k))
         })
         .filter_map(|key| {
             Some(Item {
@@ -553,13 +554,17 @@ impl<'a> Session<'a> {
             return out;
         };
         let own = |k: &Key| self.own(k);
-        if let Some(ft) = m.carried(key, &own) {
-            if m.follows(&read, &ft, key) {
-                out.verdict = Verdict::Correct;
-                out.code = FOLLOW_THROUGH;
-                out.note = Msg::FollowThrough;
-                out.follow_through = Some(ft);
-                return out;
+        if !j.mistakes.contains(&Code::CopiedMisprint) {
+            match m.follow(key, &read, &own) {
+                Follow::Credited(ft) => {
+                    out.verdict = Verdict::Correct;
+                    out.code = FOLLOW_THROUGH;
+                    out.note = Msg::FollowThrough;
+                    out.follow_through = Some(ft);
+                    return out;
+                }
+                Follow::Blocked(why) => out.note = why,
+                Follow::Not => {}
             }
         }
         let agreed: Vec<(&Key, &Read)> = self

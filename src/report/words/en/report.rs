@@ -132,6 +132,11 @@ impl ReportWords for En {
             K::NotAnswers => "Not answers to this problem (ignored)".into(),
             K::Score => "Score".into(),
             K::FollowThroughCount(n) => format!("({n} of the correct answers by follow-through: right given the student's own earlier answers)"),
+            K::Marks => "marks".into(),
+            K::Working => "working".into(),
+            K::WorkingCount(n, right) => format!("Working shown, not counted in the total: {n} answers, {right} of them right"),
+            K::MethodMarks => "Marks for the working (method marks), where the value itself is not right:".into(),
+            K::MethodEarned(e, of) => format!("{e} of {of} marks, for"),
         }
     }
 

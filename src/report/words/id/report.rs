@@ -131,6 +131,11 @@ impl ReportWords for Id {
             K::NotAnswers => "Bukan jawaban untuk soal ini (diabaikan)".into(),
             K::Score => "Nilai".into(),
             K::FollowThroughCount(n) => format!("({n} jawaban benar karena follow-through: benar menurut jawaban mahasiswa sendiri sebelumnya)"),
+            K::Marks => "poin".into(),
+            K::Working => "langkah".into(),
+            K::WorkingCount(n, right) => format!("Langkah pengerjaan yang ditulis, tidak dihitung dalam nilai: {n} jawaban, {right} di antaranya benar"),
+            K::MethodMarks => "Poin untuk langkah pengerjaan, bila jawabannya sendiri tidak benar:".into(),
+            K::MethodEarned(e, of) => format!("{e} dari {of} poin, untuk"),
         }
     }
 
