@@ -36,7 +36,7 @@ pub fn to_json(m: &Marking, lang: Lang) -> Value {
         "settings": { "tolerance": m.settings.tolerance, "sig_figs": m.settings.sig_figs,
                       "follow_through": m.settings.follow_through },
         "score": { "points": m.score(), "total": m.total(), "fraction": m.fraction(),
-                   "percent": (m.fraction() * 1000.0).round() / 10.0,
+                   "percent": crate::report::words::report::percent(m.score(), m.total()),
                    "method": m.method_marks() },
         "counts": {
             "correct": m.count(Verdict::Correct), "too_coarse": m.count(Verdict::TooCoarse),
@@ -237,7 +237,7 @@ fn score_text(m: &Marking, style: &Style) -> String {
         "\n{}: {score}/{} = {} ({})\n",
         w(style, K::Score),
         m.total(),
-        percent(m.fraction(), style),
+        percent(m, style),
         counts.join(", ")
     );
     let n = m.follow_through();
@@ -257,7 +257,7 @@ fn score_text(m: &Marking, style: &Style) -> String {
 
 /// A share as a percentage to one decimal, without a trailing `.0`:
 /// `100%`, `88.9%` (`88,9%`).
-pub fn percent(share: f64, style: &Style) -> String {
-    let p = (share * 1000.0).round() / 10.0;
+pub fn percent(m: &Marking, style: &Style) -> String {
+    let p = crate::report::words::report::percent(m.score(), m.total());
     format!("{}%", style.dec(crate::report::fmt_dec(p, 6)))
 }

@@ -435,7 +435,8 @@ fn summary_json(s: &Summary, lang: Lang) -> Value {
     json!({
         "event": "summary",
         "score": { "points": s.points, "total": s.total,
-                   "fraction": if s.total == 0 { 1.0 } else { s.points / s.total as f64 } },
+                   "fraction": if s.total == 0 { 1.0 } else { s.points / f64::from(s.total) } },
+        "steps": s.steps,
         "counts": {
             "correct": s.correct, "follow_through": s.follow_through,
             "too_coarse": s.too_coarse, "wrong": s.wrong, "skipped": s.skipped,

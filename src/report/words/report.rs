@@ -53,6 +53,15 @@ pub fn dec(x: f64, digits: usize, style: NumStyle) -> String {
     style.number(&fmt_dec(x, digits))
 }
 
+/// A share of a total as a percentage to one decimal (`88.9` for 8 of
+/// 9; 100 for a total of 0).
+pub fn percent(points: f64, total: u32) -> f64 {
+    match total {
+        0 => 100.0,
+        t => (points / f64::from(t) * 1000.0).round() / 10.0,
+    }
+}
+
 /// An exam's title: `name: topics (difficulty), seed s, variant v`, the
 /// variant with its word.
 pub fn exam_title(

@@ -26,7 +26,7 @@ use crate::input::part::Problem;
 use crate::input::problem::ProblemIn;
 use crate::msg::Implausible;
 use crate::msg::Msg;
-use crate::num::Real;
+use crate::num::{Real, Scalar};
 use crate::stages::trace::{Name, Step, Val};
 use crate::tutor::diagnose::Code;
 use crate::tutor::follow::Given;
@@ -333,6 +333,21 @@ impl Marker {
         differs(v, right).then(|| v.clone())
     }
 
+    /// The worked steps with the student's own values `own` in place of
+    /// grafika's, exactly: what a hint after a wrong answer substitutes,
+    /// so it goes on from the student's values, not the right ones.
+    pub fn steps_given(&self, own: &[(Key, Read)]) -> Option<Vec<Step>> {
+        let givens: Vec<(&Key, Given<Real>)> = (own.iter())
+            .filter_map(|(k, r)| Some((k, given(r)?)))
+            .collect();
+        let look = |k: &Key| givens.iter().find(|(g, _)| *g == k).map(|(_, v)| v.clone());
+        let hooks = Hooks {
+            given: Some(&look),
+            ..Hooks::default()
+        };
+        Some(solve::solve_typed::<Real>(&self.typed, &hooks).ok()?.steps)
+    }
+
     /// Whether an answer is right against the value `ft` carried through
     /// from the student's own answers (rounded values carried forward are
     /// accepted, and too few figures are not held against it).
@@ -379,11 +394,11 @@ fn completed(key: &Key, read: Read, right: &Val) -> Read {
     }
 }
 
-/// An answer as a value given to the stages: its numbers, in doubles.
-fn given(read: &Read) -> Option<Given<f64>> {
-    fn nums(r: &Read, out: &mut Vec<f64>) -> Option<()> {
+/// An answer as a value given to the stages: its numbers at precision `T`.
+fn given<T: Scalar>(read: &Read) -> Option<Given<T>> {
+    fn nums<T: Scalar>(r: &Read, out: &mut Vec<T>) -> Option<()> {
         match r {
-            Read::Num(n) => out.push(n.value),
+            Read::Num(n) => out.push(n.expr.eval::<T>().ok()?),
             Read::List(items) => items.iter().try_for_each(|x| nums(x, out))?,
             Read::Word(_) | Read::None => return None,
         }

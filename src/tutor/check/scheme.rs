@@ -45,6 +45,32 @@ pub struct Item {
     pub method: Vec<(Key, u32)>,
 }
 
+impl Item {
+    /// The marks this value earns with the verdict `verdict`: its share of
+    /// its marks, or, when it is not right, what its working earns as
+    /// method marks (each method key's verdict, from `of`, earning its
+    /// share of that key's marks), whichever is more, at most its marks;
+    /// with the working keys that earned them when they count.
+    pub fn earned(&self, verdict: Verdict, of: &dyn Fn(&Key) -> Option<Verdict>) -> (f64, Vec<Key>) {
+        let own = share(verdict, self.marks);
+        if verdict == Verdict::Correct {
+            return (own, Vec::new());
+        }
+        let earning: Vec<(&Key, f64)> = (self.method.iter())
+            .filter_map(|(k, marks)| Some((k, share(of(k)?, *marks))))
+            .filter(|(_, e)| *e > 0.0)
+            .collect();
+        let method: f64 = earning.iter().map(|(_, e)| e).sum();
+        match method > own {
+            true => (
+                method.min(f64::from(self.marks)),
+                earning.into_iter().map(|(k, _)| k.clone()).collect(),
+            ),
+            false => (own, Vec::new()),
+        }
+    }
+}
+
 /// What a problem asks, in order, and what each answer is worth.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Scheme {

@@ -5,7 +5,6 @@
 //! by how many answers they explain.
 
 use super::marker::{agrees, Follow, Marker};
-use super::scheme::share;
 use super::{Diagnosis, Marked, Marking, Verdict, FOLLOW_THROUGH};
 use crate::input::answer::Read;
 use crate::msg::Msg;
@@ -170,21 +169,8 @@ impl Marker {
             marked.iter().map(|m| (m.key.clone(), m.verdict)).collect();
         let verdict = |k: &Key| verdicts.iter().find(|(x, _)| x == k).map(|(_, v)| *v);
         for m in marked.iter_mut() {
-            let Some(item) = self.scheme.item(&m.key) else {
-                continue;
-            };
-            m.earned = share(m.verdict, item.marks);
-            if m.verdict == Verdict::Correct {
-                continue;
-            }
-            let earning: Vec<(&Key, f64)> = (item.method.iter())
-                .filter_map(|(k, marks)| Some((k, share(verdict(k)?, *marks))))
-                .filter(|(_, e)| *e > 0.0)
-                .collect();
-            let method: f64 = earning.iter().map(|(_, e)| e).sum();
-            if method > m.earned {
-                m.earned = method.min(f64::from(item.marks));
-                m.method = earning.into_iter().map(|(k, _)| k.clone()).collect();
+            if let Some(item) = self.scheme.item(&m.key) {
+                (m.earned, m.method) = item.earned(m.verdict, &verdict);
             }
         }
     }

@@ -10,7 +10,7 @@ use crate::msg::CliWord as L;
 use crate::msg::PracticeWord as P;
 use crate::msg::StatWord as S;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
-use crate::report::words::report::{dec, exam_title, ReportWords};
+use crate::report::words::report::{dec, exam_title, percent, ReportWords};
 use crate::report::words::MsgWords;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::stats::Flag;
@@ -329,9 +329,10 @@ impl ReportWords for En {
 
     fn practice_summary(&self, s: &Summary) -> String {
         let pts = dec(s.points, 4, self.nums());
+        let pct = dec(percent(s.points, s.total), 4, self.nums());
         let mut out = format!(
-            "Summary: {pts}/{} points\n  correct {} ({} by follow-through), too coarse {}, wrong {},\n  skipped {}, revealed {}, not reached {}; hints used {}\n",
-            s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
+            "Summary: {pts}/{} marks = {pct}% for the values the problem asks, over {} steps\n  correct {} ({} by follow-through), too coarse {}, wrong {},\n  skipped {}, revealed {}, not reached {}; hints used {}\n",
+            s.total, s.steps, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
         );
         if s.retries > 0 {
             out.push_str(&format!(

@@ -10,7 +10,7 @@ use crate::msg::CliWord as L;
 use crate::msg::PracticeWord as P;
 use crate::msg::StatWord as S;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
-use crate::report::words::report::{dec, exam_title, ReportWords};
+use crate::report::words::report::{dec, exam_title, percent, ReportWords};
 use crate::report::words::MsgWords;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::stats::Flag;
@@ -326,9 +326,10 @@ impl ReportWords for Id {
 
     fn practice_summary(&self, s: &Summary) -> String {
         let pts = dec(s.points, 4, self.nums());
+        let pct = dec(percent(s.points, s.total), 4, self.nums());
         let mut out = format!(
-            "Ringkasan: {pts}/{} poin\n  benar {} ({} karena follow-through), terlalu kasar {}, salah {},\n  dilewati {}, dilihat {}, belum dijawab {}; petunjuk dipakai {}\n",
-            s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
+            "Ringkasan: {pts}/{} poin = {pct}% untuk jawaban yang ditanyakan soal, dari {} langkah\n  benar {} ({} karena follow-through), terlalu kasar {}, salah {},\n  dilewati {}, dilihat {}, belum dijawab {}; petunjuk dipakai {}\n",
+            s.total, s.steps, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
         );
         if s.retries > 0 {
             out.push_str(&format!(
