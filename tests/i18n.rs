@@ -158,7 +158,7 @@ fn a_check_report_in_indonesian() {
         "seharusnya",
         "Diagnosis:",
         "menghasilkan ulang",
-        "Nilai: 7/18 (7 benar",
+        "Nilai: 7/18 = 38,9% (7 benar",
         "salah",
     ] {
         assert!(t.contains(w), "{w} missing in:\n{t}");

@@ -17,7 +17,7 @@ use grafika::report::lang::Lang;
 use grafika::report::mistakes::mistake_text;
 use grafika::report::moodle::{moodle_xml, Decimal, Written};
 use grafika::report::Style;
-use grafika::tutor::check::default_keys;
+use grafika::tutor::check::scheme::Scheme;
 use grafika::tutor::diagnose::Code;
 use grafika::tutor::generate::quiz::Quiz;
 use grafika::tutor::generate::{Generated, Topic};
@@ -159,7 +159,9 @@ fn xml_questions(xml: &str) -> Vec<(String, String, String, String)> {
 fn generated(toml: &str) -> Generated {
     let problem = ProblemIn::parse(toml, "test").expect("parses");
     let report = solve::solve::<Real>(&problem).expect("solves");
-    let keys = default_keys(&report.result);
+    let order = grafika::tutor::keys::ordered_keys(&report.result);
+    let scheme = Scheme::of(&problem, &report.result, &order).expect("a scheme");
+    let keys = scheme.keys().cloned().collect();
     // The problem's own words stand for the drawn title and statement.
     Generated {
         title: Msg::Math(problem.title.clone()),
@@ -168,6 +170,7 @@ fn generated(toml: &str) -> Generated {
         problem,
         report,
         keys,
+        scheme,
     }
 }
 

@@ -281,6 +281,8 @@ pub enum DocWord {
     },
     /// An answer key's title, after the exam's.
     KeyTitle(String),
+    /// A question's marks on an exam sheet: `(3 marks)`.
+    Marks(u32),
     /// Before an answer-key file's title.
     AnswerKey,
     /// What `generate --out` wrote.

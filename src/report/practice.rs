@@ -249,6 +249,11 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
         let line = format!("{}: {}", look.w(P::SourceWrong), look.style.w(why));
         out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
     }
+    // why it does not follow from the student's own earlier answer
+    if let Msg::NoFollowFrom(..) = &o.note {
+        let line = look.style.w(&o.note);
+        out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
+    }
     if o.code == "wrong" && o.mistakes.is_empty() {
         let tip = look.w(P::NoMistakeTip);
         out.push_str(&look.paint(Tone::Quiet, &wrap_after("    ", &tip, "    ")));

@@ -648,7 +648,9 @@ impl<'a> Session<'a> {
         };
         // from +0: an empty f64 sum is −0, which would print as -0
         let points = items.iter().fold(0.0, |s, i| {
-            s + i.earned(verdict(&i.key).unwrap_or(Verdict::Missing), &verdict).0
+            s + i
+                .earned(verdict(&i.key).unwrap_or(Verdict::Missing), &verdict)
+                .0
         });
         (points, items.iter().map(|i| i.marks).sum())
     }

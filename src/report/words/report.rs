@@ -190,6 +190,11 @@ mod tests {
             K::NotAnswers,
             K::Score,
             K::FollowThroughCount(2),
+            K::Marks,
+            K::Working,
+            K::WorkingCount(12, 9),
+            K::MethodMarks,
+            K::MethodEarned("2".into(), 4),
         ]
     }
 
@@ -232,6 +237,8 @@ mod tests {
             title(None, None),
             title(Some(7), Some(2)),
             D::KeyTitle("grafika exam: view (easy)".into()),
+            D::Marks(1),
+            D::Marks(3),
             D::AnswerKey,
             wrote(1),
             wrote(14),
@@ -423,7 +430,12 @@ mod tests {
             | K::NoMistakeExplains
             | K::NotAnswers
             | K::Score
-            | K::FollowThroughCount(_) => {}
+            | K::FollowThroughCount(_)
+            | K::Marks
+            | K::Working
+            | K::WorkingCount(..)
+            | K::MethodMarks
+            | K::MethodEarned(..) => {}
         }
         match d {
             D::Step
@@ -448,6 +460,7 @@ mod tests {
             | D::Why
             | D::ExamTitle { .. }
             | D::KeyTitle(_)
+            | D::Marks(_)
             | D::AnswerKey
             | D::Wrote { .. }
             | D::More(_) => {}

@@ -209,14 +209,15 @@ mod tests {
         s.parse().expect("a key")
     }
 
-    /// u = (1, 2, 3) is no unit vector (|u| = √14); (0.71, 0, −0.71) is
-    /// √2/2 rounded to two figures (|u| = 1.0041, within the rounding of
-    /// its digits); a u of length 1 at 45° to n = (0, 0, 1) is no axis
-    /// beside n (u·n = 0.7071 ≠ 0).
+    /// With n = (√2/2, 0, √2/2): u = (1, 2, 3) is no unit vector (|u| =
+    /// √14); (0.71, 0, −0.71) is (√2/2, 0, −√2/2) rounded to two figures
+    /// (|u| = 1.0041, within the rounding of its digits; u·n = 0); n itself
+    /// is of length 1 but no axis beside n (u·n = 1 ≠ 0); (0, −1, 0) is.
     #[test]
     fn a_camera_axis_is_a_unit_vector_perpendicular_to_the_axes_before_it() {
         let like = v3(0.0, 0.0, 0.0);
-        let n = v3(0.0, 0.0, 1.0);
+        let r = std::f64::consts::FRAC_1_SQRT_2;
+        let n = v3(r, 0.0, r);
         let right = |k: &Key| (k.to_string() == "view.n").then(|| n.clone());
         let own = |_: &Key| None;
         let cx = Context {
@@ -267,10 +268,11 @@ mod tests {
     fn a_cosine_lies_in_minus_one_to_one_and_a_colour_in_zero_to_one() {
         let num = Val::num(&0.0f64);
         let none = |_: &Key| None;
+        let no_own = |_: &Key| None;
         let cx = Context {
             rel: 1e-3,
             right: &none,
-            own: &none,
+            own: &no_own,
         };
         let cos = key("shade.cos_alpha");
         assert_eq!(

@@ -51,7 +51,11 @@ impl Item {
     /// method marks (each method key's verdict, from `of`, earning its
     /// share of that key's marks), whichever is more, at most its marks;
     /// with the working keys that earned them when they count.
-    pub fn earned(&self, verdict: Verdict, of: &dyn Fn(&Key) -> Option<Verdict>) -> (f64, Vec<Key>) {
+    pub fn earned(
+        &self,
+        verdict: Verdict,
+        of: &dyn Fn(&Key) -> Option<Verdict>,
+    ) -> (f64, Vec<Key>) {
         let own = share(verdict, self.marks);
         if verdict == Verdict::Correct {
             return (own, Vec::new());

@@ -3,12 +3,14 @@
 //! mistake explains, the score distribution, and for an exam per problem
 //! and per variant.
 //!
-//! Definitions (N students marked; a key's mark x is 1 for a correct
-//! answer, ½ too coarse, 0 otherwise; a student's score S is the sum of the
-//! marks over the T keys asked, taken as the share S/T, and the rest of the
-//! score as (S − x)/(T − 1): for a class that answers one problem, all with
-//! the same T, these order and correlate exactly as S and S − x do, and the
-//! variants of an exam, of different lengths, compare):
+//! Definitions (N students marked; the keys are those the marking scheme
+//! asks, [`crate::tutor::check::scheme`]; a key's mark x is the share of
+//! its m marks earned: 1 for a correct answer, ½ too coarse, 0 otherwise,
+//! or its method marks' share; a student's score S is the marks earned of
+//! the total T, taken as the share S/T, and the rest of the score as
+//! (S − x·m)/(T − m): for a class that answers one problem, all with the
+//! same T, these order and correlate exactly as S and S − x·m do, and the
+//! variants of an exam, of different totals, compare):
 //!
 //! - **facility** p = mean of x over the N students: the share of full
 //!   marks (Moodle's facility index). Flagged very easy above 0.9, very

@@ -169,6 +169,7 @@ impl ReportWords for En {
                 variant,
             } => exam_title("grafika exam", (topics, difficulty), *seed, variant.map(|v| (self.doc(&D::Variant), v))),
             D::KeyTitle(title) => format!("{title} — answer key"),
+            D::Marks(n) => format!("({n} mark{})", plural(*n as usize)),
             D::AnswerKey => "Answer key".into(),
             D::Wrote {
                 files,
@@ -331,7 +332,7 @@ impl ReportWords for En {
         let pts = dec(s.points, 4, self.nums());
         let pct = dec(percent(s.points, s.total), 4, self.nums());
         let mut out = format!(
-            "Summary: {pts}/{} marks = {pct}% for the values the problem asks, over {} steps\n  correct {} ({} by follow-through), too coarse {}, wrong {},\n  skipped {}, revealed {}, not reached {}; hints used {}\n",
+            "Summary: {pts}/{} marks = {pct}% (the values the problem asks; {} steps)\n  correct {} ({} by follow-through), too coarse {}, wrong {},\n  skipped {}, revealed {}, not reached {}; hints used {}\n",
             s.total, s.steps, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
         );
         if s.retries > 0 {

@@ -168,6 +168,7 @@ impl ReportWords for Id {
                 variant,
             } => exam_title("ujian grafika", (topics, difficulty), *seed, variant.map(|v| (self.doc(&D::Variant), v))),
             D::KeyTitle(title) => format!("{title} — kunci jawaban"),
+            D::Marks(n) => format!("({n} poin)"),
             D::AnswerKey => "Kunci jawaban".into(),
             D::Wrote {
                 files,
@@ -328,7 +329,7 @@ impl ReportWords for Id {
         let pts = dec(s.points, 4, self.nums());
         let pct = dec(percent(s.points, s.total), 4, self.nums());
         let mut out = format!(
-            "Ringkasan: {pts}/{} poin = {pct}% untuk jawaban yang ditanyakan soal, dari {} langkah\n  benar {} ({} karena follow-through), terlalu kasar {}, salah {},\n  dilewati {}, dilihat {}, belum dijawab {}; petunjuk dipakai {}\n",
+            "Ringkasan: {pts}/{} poin = {pct}% (jawaban yang ditanyakan soal; {} langkah)\n  benar {} ({} karena follow-through), terlalu kasar {}, salah {},\n  dilewati {}, dilihat {}, belum dijawab {}; petunjuk dipakai {}\n",
             s.total, s.steps, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
         );
         if s.retries > 0 {
