@@ -154,30 +154,16 @@ fn keys_the_question_never_asks_are_not_counted() {
 fn the_text_shows_marks_and_a_percentage() {
     // Siti (problems/answers/triangle): 16 of the 18 values the triangle
     // example asks, 16/18 = 88.9 %
-    let out = grafika()
-        .args([
-            "check",
-            "problems/text-triangle.toml",
-            "--answers",
-            "problems/answers/triangle/siti.toml",
-        ])
-        .output()
-        .unwrap();
-    let text = String::from_utf8(out.stdout).unwrap();
+    let siti = [
+        "check",
+        "problems/text-triangle.toml",
+        "--answers",
+        "problems/answers/triangle/siti.toml",
+    ];
+    let text = text("en", &siti);
     assert!(text.contains("Score: 16/18 = 88.9% (16 correct"), "{text}");
     assert!(text.contains("┆ marks ┆"), "{text}");
-    let out = grafika()
-        .args([
-            "--lang",
-            "id",
-            "check",
-            "problems/text-triangle.toml",
-            "--answers",
-            "problems/answers/triangle/siti.toml",
-        ])
-        .output()
-        .unwrap();
-    let text = String::from_utf8(out.stdout).unwrap();
+    let text = common::text("id", &siti);
     assert!(text.contains("Nilai: 16/18 = 88,9% (16 benar"), "{text}");
 }
 
