@@ -130,7 +130,9 @@ fn a_planted_mistake_is_caught_and_named() {
     let mut planted = std::collections::BTreeSet::new();
     for topic in [Topic::View, Topic::Pipeline, Topic::Clip, Topic::Shade] {
         for level in LEVELS {
-            for g in generate::exam(&[topic], level, 3, 5).unwrap() {
+            // `--clip mixed`: the clipping mistakes of every status
+            let mixed = generate::ClipCase::Mixed;
+            for g in drawn(&[topic], level, (3, 1), 5, mixed).remove(0) {
                 for m in Code::all() {
                     let Some(variants) = m.apply(&g.problem) else {
                         continue;
@@ -217,10 +219,32 @@ fn differs(a: &Val, b: &Val) -> bool {
         .any(|(p, q)| check::tolerance::apart(*p, t(*p, sx), *q, t(*q, sy)))
 }
 
+/// The problems of every variant of an exam, `[variant][position]`.
+fn drawn(
+    topics: &[Topic],
+    level: Difficulty,
+    (count, variants): (u32, u32),
+    seed: u64,
+    clip: generate::ClipCase,
+) -> Vec<Vec<generate::Generated>> {
+    let spec = generate::Spec {
+        topics: topics.to_vec(),
+        difficulty: level,
+        count,
+        variants,
+        seed,
+        clip,
+    };
+    generate::exams(&spec, &mut |_| {})
+        .expect("generates")
+        .variants
+}
+
 #[test]
 fn clipping_covers_accept_reject_and_partial_at_every_level() {
+    // `--clip mixed`: three clipping problems take the three statuses.
     for level in LEVELS {
-        let exam = generate::exam(&[Topic::Clip], level, 3, 1).unwrap();
+        let exam = drawn(&[Topic::Clip], level, (3, 1), 1, generate::ClipCase::Mixed).remove(0);
         let mut statuses = clip_statuses(&exam);
         statuses.sort();
         assert_eq!(statuses, ["accepted", "clipped", "rejected"], "{level:?}");
@@ -453,11 +477,13 @@ fn clip_statuses(exam: &[generate::Generated]) -> Vec<String> {
 
 #[test]
 fn a_two_clip_exam_can_have_a_rejected_segment() {
-    // The statuses follow an order drawn from the seed, not the position:
-    // over 30 seeds every status comes first and second at least once.
+    // `--clip mixed`: the statuses follow an order drawn from the seed,
+    // not the position: over 30 seeds every status comes first and second
+    // at least once.
     let mut seen = std::collections::BTreeSet::new();
     for seed in 0..30 {
-        let exam = generate::exam(&[Topic::Clip], Difficulty::Easy, 2, seed).unwrap();
+        let mixed = generate::ClipCase::Mixed;
+        let exam = drawn(&[Topic::Clip], Difficulty::Easy, (2, 1), seed, mixed).remove(0);
         let st = clip_statuses(&exam);
         assert_ne!(st[0], st[1], "seed {seed}");
         seen.insert((0, st[0].clone()));
@@ -476,12 +502,11 @@ fn distinct(exam: &[generate::Generated]) -> usize {
 
 #[test]
 fn problems_do_not_repeat_within_an_exam() {
-    // The case: easy window problems, 6 per exam, 3 variants.
-    for v in 0..3 {
-        let seed = generate::variant_seed(20261, v);
-        let exam = generate::exam(&[Topic::Window], Difficulty::Easy, 6, seed).unwrap();
-        assert_eq!(distinct(&exam), 6, "variant {v} repeats a problem");
-    }
+    // The case: easy window problems, 6 per exam, 3 variants: no
+    // statement twice in the 18 problems of the exam.
+    let clipped = generate::ClipCase::Clipped;
+    let all = drawn(&[Topic::Window], Difficulty::Easy, (6, 3), 20261, clipped);
+    assert_eq!(distinct(&all.into_iter().flatten().collect::<Vec<_>>()), 18);
     for t in TOPICS {
         for level in LEVELS {
             let exam = generate::exam(&[t], level, 12, 5).unwrap();
@@ -492,24 +517,43 @@ fn problems_do_not_repeat_within_an_exam() {
 
 #[test]
 fn an_exam_larger_than_the_distinct_problems_is_refused() {
-    // Easy windows: fovy = 90°, aspect ∈ {1, 2, 1.5, 0.5}, near ∈ {1, …, 5}:
-    // 4 × 5 = 20 different problems. 20 are drawn; a 21st cannot be.
-    let twenty = generate::exam(&[Topic::Window], Difficulty::Easy, 20, 1).unwrap();
-    assert_eq!(distinct(&twenty), 20);
+    // Easy windows: fovy = 90° (tan 45° = 1, every answer rational), 10
+    // aspects × 10 nears: 100 different problems. 100 variants are drawn,
+    // all different; a 101st cannot be, and generate says how many it can
+    // make, in each language.
+    let clipped = generate::ClipCase::Clipped;
+    let hundred = drawn(&[Topic::Window], Difficulty::Easy, (1, 100), 1, clipped);
+    assert_eq!(
+        distinct(&hundred.into_iter().flatten().collect::<Vec<_>>()),
+        100
+    );
     let out = tmp("few");
-    let e = json_err(&[
-        "generate",
-        "--topic",
-        "window",
-        "--difficulty",
-        "easy",
-        "--count",
-        "21",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert_eq!(e["field"], "count", "{e}");
-    assert!(e["message"].as_str().unwrap().contains("--count"), "{e}");
+    let args = |lang| {
+        vec![
+            "generate",
+            "--topic",
+            "window",
+            "--difficulty",
+            "easy",
+            "--variants",
+            "101",
+            "--lang",
+            lang,
+            "--out",
+            out.to_str().unwrap(),
+        ]
+    };
+    let e = json_err(&args("en"));
+    assert_eq!(e["field"], "variants", "{e}");
+    let m = e["message"].as_str().unwrap();
+    assert!(
+        m.contains("only 100 different variants") && m.contains("101"),
+        "{e}"
+    );
+    let e = json_err(&args("id"));
+    let m = e["message"].as_str().unwrap();
+    assert!(m.contains("100 varian berbeda") && m.contains("101"), "{e}");
+    assert!(!out.exists(), "a refused exam wrote files");
 }
 
 #[test]
@@ -586,6 +630,77 @@ fn hard_keys_are_exact_where_an_exact_form_exists() {
                     let allowed = matches!(k.part, Some(Part::Window | Part::Viewport));
                     assert!(allowed || !has_inexact(v), "{k} inexact in\n{}", g.body);
                 }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_variants_of_a_position_are_parallel_forms() {
+    // Over 40 variants of several seeds, the variants of each position
+    // ask the same keys with the same marks, of the same number class
+    // (numbers::classify), with the same clipping status and outcodes'
+    // bits; no two statements of the exam are equal; and the default clip
+    // case is a real clipping problem (status clipped, at least one
+    // intersection computed).
+    use grafika::tutor::generate::numbers::classes;
+    let topics = [
+        Topic::Basis,
+        Topic::View,
+        Topic::Project,
+        Topic::Window,
+        Topic::Clip,
+        Topic::Shade,
+    ];
+    for level in LEVELS {
+        for seed in [4242, 7] {
+            let clipped = generate::ClipCase::Clipped;
+            let all = drawn(&topics, level, (6, 40), seed, clipped);
+            let sig = |g: &generate::Generated| {
+                let marks: Vec<(String, Option<u32>, usize)> = (g.keys.iter())
+                    .map(|k| {
+                        let item = g.scheme.item(k);
+                        (
+                            k.to_string(),
+                            item.map(|i| i.marks),
+                            item.map_or(0, |i| i.method.len()),
+                        )
+                    })
+                    .collect();
+                // the status, and how many planes each end lies beyond
+                let clip = ["clip.status", "clip.code0", "clip.code1"].map(|k| {
+                    match lookup(&g.report.result, k) {
+                        Some(Val::Text(s)) if k == "clip.status" => s.clone(),
+                        Some(Val::Text(s)) => s.matches('1').count().to_string(),
+                        _ => String::new(),
+                    }
+                });
+                let points = g.problem.points.len();
+                (marks, classes(&g.report.result, &g.keys), clip, points)
+            };
+            for i in 0..6 {
+                let first = sig(&all[0][i]);
+                for (v, exam) in all.iter().enumerate() {
+                    assert_eq!(
+                        sig(&exam[i]),
+                        first,
+                        "{level:?} seed {seed} problem {i} variant {v}"
+                    );
+                }
+            }
+            let mut statements: Vec<&str> = all.iter().flatten().map(|g| g.body.as_str()).collect();
+            statements.sort();
+            statements.dedup();
+            assert_eq!(statements.len(), 6 * 40, "{level:?} seed {seed}");
+            for exam in &all {
+                let st = clip_statuses(exam);
+                assert_eq!(st, ["clipped"], "{level:?} seed {seed}");
+                let cuts = lookup(&exam[4].report.result, "clip.intersections");
+                assert!(
+                    matches!(cuts, Some(Val::Map(m)) if !m.is_empty()),
+                    "{}",
+                    exam[4].body
+                );
             }
         }
     }

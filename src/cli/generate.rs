@@ -14,7 +14,7 @@ use crate::report::sheets::{
 use crate::report::Style;
 use crate::tutor::check::DEFAULT_TOLERANCE;
 use crate::tutor::generate::quiz::Quiz;
-use crate::tutor::generate::{exam, problem_name, variant_name, variant_seed, Generated};
+use crate::tutor::generate::{exams, problem_name, variant_name, Exams, Generated, Spec};
 use std::path::PathBuf;
 
 /// Runs `grafika generate`; returns what to print. `force`: `--force`.
@@ -108,38 +108,51 @@ pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<Vec<P
     check_size(a, force)?;
     if matches!(a.format, Format::Moodle | Format::Gift) {
         let rel = quiz_tolerance(a)?;
+        // drawn before anything is written: an exam that cannot be made
+        // leaves the output directory as it was
+        let drawn = draw(a, style)?;
         let mut stage = Stage::begin(&a.out, entries(a), force)?;
-        let file = write_quiz(a, rel, &mut stage, style)?;
+        let file = write_quiz(a, rel, drawn, &mut stage, style)?;
         stage.commit()?;
         return Ok(vec![file]);
     }
+    let drawn = draw(a, style)?;
     let mut stage = Stage::begin(&a.out, entries(a), force)?;
     let mut files = Vec::new();
-    let bar = progress(a, style);
-    for v in 0..a.variants {
+    for (v, exam) in drawn.variants.iter().enumerate() {
         let dir = if a.variants == 1 {
             String::new()
         } else {
-            format!("{}/", variant_name(v as usize + 1))
+            format!("{}/", variant_name(v + 1))
         };
-        let exam = exam(&a.topic, a.difficulty, a.count, variant_seed(a.seed, v))?;
-        files.extend(write_exam(&mut stage, &dir, a, v + 1, &exam, style)?);
-        bar.iter().for_each(|b| b.inc(1));
+        files.extend(write_exam(&mut stage, &dir, a, v as u32 + 1, exam, style)?);
     }
-    bar.iter().for_each(|b| b.finish_and_clear());
     stage.commit()?;
     Ok(files)
 }
 
-/// A progress bar over the variants, on a terminal, when there are more
-/// than 100 problems in all (smaller exams are written in well under a
-/// second).
-fn progress(a: &GenerateArgs, style: &Style) -> Option<indicatif::ProgressBar> {
+/// The exam the arguments ask for.
+fn spec(a: &GenerateArgs) -> Spec {
+    Spec {
+        topics: a.topic.clone(),
+        difficulty: a.difficulty,
+        count: a.count,
+        variants: a.variants,
+        seed: a.seed,
+        clip: a.clip,
+    }
+}
+
+/// Draws every variant of the exam, with a progress bar over its problems
+/// on a terminal when there are more than 100 (smaller exams are drawn in
+/// well under a second).
+fn draw(a: &GenerateArgs, style: &Style) -> Result<Exams> {
     let n = a.count as u64 * a.variants as u64;
-    let msg = crate::report::words::of(style.lang).cli(crate::msg::CliWord::Variants);
-    (n > 100)
-        .then(|| super::terminal_bar(a.variants as u64, msg))
-        .flatten()
+    let msg = crate::report::words::of(style.lang).cli(crate::msg::CliWord::Problems);
+    let bar = (n > 100).then(|| super::terminal_bar(n, msg)).flatten();
+    let drawn = exams(&spec(a), &mut |k| bar.iter().for_each(|b| b.inc(k)));
+    bar.iter().for_each(|b| b.finish_and_clear());
+    drawn
 }
 
 /// Writes one exam's files (into `dir`, `` or `variant-NN/`): the problem
@@ -216,16 +229,14 @@ fn quiz_tolerance(a: &GenerateArgs) -> Result<f64> {
 
 /// Writes every variant into one Moodle XML or GIFT file in the output
 /// directory: quiz.xml or quiz.gift.
-fn write_quiz(a: &GenerateArgs, rel: f64, stage: &mut Stage, style: &Style) -> Result<PathBuf> {
-    let bar = progress(a, style);
-    let exams = (0..a.variants)
-        .map(|v| {
-            bar.iter().for_each(|b| b.inc(1));
-            exam(&a.topic, a.difficulty, a.count, variant_seed(a.seed, v))
-        })
-        .collect::<Result<Vec<_>>>()?;
-    bar.iter().for_each(|b| b.finish_and_clear());
-    let quiz = Quiz::new(exams, &a.topic, rel);
+fn write_quiz(
+    a: &GenerateArgs,
+    rel: f64,
+    drawn: Exams,
+    stage: &mut Stage,
+    style: &Style,
+) -> Result<PathBuf> {
+    let quiz = Quiz::new(drawn.variants, &a.topic, rel);
     let w = Written {
         style,
         decimal: a.decimal,

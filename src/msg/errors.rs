@@ -376,8 +376,6 @@ pub enum ErrMsg {
     LightsNeedShade,
     /// No topic.
     NoTopic,
-    /// No non-degenerate problem in 500 tries.
-    NoDrawing,
     /// No problem drawn (practice).
     NoProblemDrawn,
     /// Standard input holds the answers (practice).

@@ -369,8 +369,8 @@ pub enum CliWord {
     Measuring,
     /// The render's progress bar.
     Frames,
-    /// An exam's progress bar.
-    Variants,
+    /// The problems drawn, on an exam's progress bar.
+    Problems,
     /// The field of an error in the arguments that names none.
     Arguments,
     /// Whose answers the text's printed ones are, when the file names no

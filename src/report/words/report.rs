@@ -367,7 +367,7 @@ mod tests {
             L::WorkedSolution,
             L::Measuring,
             L::Frames,
-            L::Variants,
+            L::Problems,
             L::Arguments,
             L::TheText,
         ]
@@ -552,7 +552,7 @@ mod tests {
             L::WorkedSolution
             | L::Measuring
             | L::Frames
-            | L::Variants
+            | L::Problems
             | L::Arguments
             | L::TheText => {}
         }

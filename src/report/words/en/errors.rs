@@ -89,7 +89,6 @@ impl ErrorWords for En {
             ErrMsg::WindowNeeds => "the window needs perspective.fovy, perspective.aspect and perspective.near".into(),
             ErrMsg::LightsNeedShade => "[[light]] tables need a [shade] table (normal, color, ...)".into(),
             ErrMsg::NoTopic => "give at least one topic".into(),
-            ErrMsg::NoDrawing => "could not draw a non-degenerate problem in 500 tries".into(),
             ErrMsg::NoProblemDrawn => "no problem drawn".into(),
             ErrMsg::StdinHoldsAnswers => "standard input holds the answers: give the problem as a file".into(),
             ErrMsg::GiveProblem => "give a problem file or --topic".into(),

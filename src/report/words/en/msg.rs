@@ -209,7 +209,11 @@ impl MsgWords for En {
             Msg::BehindWarn(n) => format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen"),
             Msg::NoFigure => "no figure was written: no part asked has a figure of its own (the pixels of `viewport` are drawn on the window's figure: ask `window` with it)".into(),
             Msg::ExactTooLarge(n) => format!("exact values that would hold more than {n} terms (many different square roots) were computed in f64 and are marked ≈, as is what follows from them"),
-            Msg::ErrFewDistinct(topic, level, n) => format!("could not draw a {topic} problem at {level} level unlike the {n} before it: there are few different ones at this level; ask for fewer problems (--count) or another --difficulty"),
+            Msg::ErrFewDistinct { topic, level, problem, found, asked, all } => format!(
+                "problem {problem} ({topic}, {level}) can have only {found} different variant{}{}, not the {asked} asked (no problem is stated twice in an exam): ask for fewer (--variants, --count) or another --difficulty",
+                if *found == 1 { "" } else { "s" },
+                if *all { " (every problem of its kind was tried)" } else { " (found in 200,000 tries)" }
+            ),
             Msg::ErrHtmlCommand => "writes the worked solution of basis, view, project, window, clip, shade, solve and render; for exams use generate --format html".into(),
             Msg::Parts(parts) => msg::parts(self, parts),
             Msg::Expected(v) => format!("expected {}", self.nums().values(v)),

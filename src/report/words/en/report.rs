@@ -222,7 +222,7 @@ impl ReportWords for En {
             L::WorkedSolution => "worked solution",
             L::Measuring => "measuring",
             L::Frames => "frames",
-            L::Variants => "variants",
+            L::Problems => "problems",
             L::Arguments => "arguments",
             L::TheText => "the text",
         }

@@ -88,7 +88,6 @@ pub fn every_error() -> Vec<ErrMsg> {
         ErrMsg::WindowNeeds,
         ErrMsg::LightsNeedShade,
         ErrMsg::NoTopic,
-        ErrMsg::NoDrawing,
         ErrMsg::NoProblemDrawn,
         ErrMsg::StdinHoldsAnswers,
         ErrMsg::GiveProblem,
@@ -346,7 +345,6 @@ fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want,
         | E::WindowNeeds
         | E::LightsNeedShade
         | E::NoTopic
-        | E::NoDrawing
         | E::NoProblemDrawn
         | E::StdinHoldsAnswers
         | E::GiveProblem

@@ -104,7 +104,6 @@ impl ErrorWords for Id {
             ErrMsg::WindowNeeds => "viewing window memerlukan perspective.fovy, perspective.aspect dan perspective.near".into(),
             ErrMsg::LightsNeedShade => "tabel [[light]] memerlukan tabel [shade] (normal, color, ...)".into(),
             ErrMsg::NoTopic => "berikan paling sedikit satu topik".into(),
-            ErrMsg::NoDrawing => "tidak dapat membuat soal yang tidak degenerate dalam 500 percobaan".into(),
             ErrMsg::NoProblemDrawn => "tidak ada soal yang dibuat".into(),
             ErrMsg::StdinHoldsAnswers => "masukan standar berisi jawaban: berikan soal sebagai berkas".into(),
             ErrMsg::GiveProblem => "berikan berkas soal atau --topic".into(),

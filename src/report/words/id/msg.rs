@@ -204,7 +204,10 @@ impl MsgWords for Id {
             Msg::BehindWarn(n) => format!("{n} berada di belakang pusat proyeksi: bayangannya terbalik dan tidak terlihat"),
             Msg::NoFigure => "tidak ada gambar yang ditulis: tidak ada bagian yang ditanyakan yang punya gambar sendiri (piksel `viewport` digambar pada gambar window: tanyakan `window` juga)".into(),
             Msg::ExactTooLarge(n) => format!("nilai eksak yang akan memuat lebih dari {n} suku (banyak akar kuadrat yang berbeda) dihitung dengan f64 dan ditandai ≈, begitu pula yang diturunkan darinya"),
-            Msg::ErrFewDistinct(topic, level, n) => format!("tidak dapat menarik soal {topic} tingkat {level} yang berbeda dari {n} soal sebelumnya: soal yang berbeda di tingkat ini tidak banyak; minta lebih sedikit soal (--count) atau tingkat lain (--difficulty)"),
+            Msg::ErrFewDistinct { topic, level, problem, found, asked, all } => format!(
+                "soal {problem} ({topic}, {level}) hanya dapat dibuat dalam {found} varian berbeda{}, bukan {asked} seperti diminta (tidak ada soal yang dinyatakan dua kali dalam satu ujian): minta lebih sedikit (--variants, --count) atau tingkat lain (--difficulty)",
+                if *all { " (semua soal jenis ini sudah dicoba)" } else { " (ditemukan dalam 200.000 percobaan)" }
+            ),
             Msg::ErrHtmlCommand => "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html".into(),
             Msg::Parts(parts) => msg::parts(self, parts),
             Msg::Expected(v) => format!("seharusnya {}", self.nums().values(v)),

@@ -218,7 +218,7 @@ impl ReportWords for Id {
             L::WorkedSolution => "penyelesaian",
             L::Measuring => "mengukur",
             L::Frames => "bingkai",
-            L::Variants => "varian",
+            L::Problems => "soal",
             L::Arguments => "argumen",
             L::TheText => "teks",
         }
