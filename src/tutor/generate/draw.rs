@@ -158,13 +158,16 @@ fn basis_class(d: [i64; 3], up: [i64; 3]) -> Option<NumberClass> {
     })
 }
 
+/// A direction Pe − Pr and its Vup.
+type Direction = ([i64; 3], [i64; 3]);
+
 /// The directions Pe − Pr (with their Vup) whose camera basis is of the
 /// class: rational ones up to 12 (|d| and |Vup × d| whole: (3, 0, 4),
 /// (3, 12, 4), …), one surd and several surds up to 4; never along an
 /// axis, no two of the same direction; Vup = (0, 1, 0) but for several
 /// surds, which also tilt it.
-fn directions(class: NumberClass) -> &'static [([i64; 3], [i64; 3])] {
-    static LISTS: OnceLock<[Vec<([i64; 3], [i64; 3])>; 3]> = OnceLock::new();
+fn directions(class: NumberClass) -> &'static [Direction] {
+    static LISTS: OnceLock<[Vec<Direction>; 3]> = OnceLock::new();
     let lists = LISTS.get_or_init(|| {
         let list = |c: NumberClass, r: i64, ups: &[[i64; 3]]| {
             let mut out = Vec::new();
