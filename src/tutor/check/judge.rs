@@ -379,6 +379,69 @@ mod tests {
         assert_eq!(j_at(t, &v, "top").code, "correct.tolerance");
     }
 
+    /// A value as grafika shows it: its double and its exact form.
+    fn exact_value(form: &str) -> Val {
+        let x = exact(form).expect("an exact form");
+        Val::Num(Shown {
+            value: x.to_f64(),
+            exact: x.exact_ascii(),
+            pretty: None,
+        })
+    }
+
+    #[test]
+    fn an_unrationalized_form_is_exact() {
+        // −17/(17√17) = −1/√17 = −√17/17; −36652/(187√2618): 36652 =
+        // 14·2618, so it is −14·2618/(187√2618) = −14√2618/187
+        for (given, value) in [
+            ("-17/(17*sqrt(17))", "-sqrt(17)/17"),
+            ("−17/(17√17)", "-sqrt(17)/17"),
+            ("-36652/(187*sqrt(2618))", "-14*sqrt(2618)/187"),
+            ("-4/(13*sqrt(17))", "-4*sqrt(17)/221"),
+        ] {
+            let got = j_at(given, &exact_value(value), "view.u.2");
+            assert_eq!(got.code, "correct.exact", "{given}: {got:?}");
+        }
+    }
+
+    proptest::proptest! {
+        /// a·√m/b written every way students write it: rationalized or
+        /// not, a product of roots for a composite m, a square factor
+        /// under the root, a common factor in numerator and denominator,
+        /// implicit products, `√` and `−`: each is exact, never "within
+        /// the tolerance".
+        #[test]
+        fn every_form_of_a_surd_is_exact(
+            a in 1i64..40,
+            negative in proptest::bool::ANY,
+            b in 1i64..40,
+            k in 2i64..6,
+            pq in proptest::sample::select(vec![(1i64, 2i64), (1, 3), (1, 5), (2, 3), (2, 5), (3, 5), (2, 7), (7, 17), (2, 1309), (11, 238)]),
+        ) {
+            let (p, q) = pq;
+            let m = p * q;
+            let sign = if negative { "-" } else { "" };
+            let value = exact_value(&format!("{sign}{a}*sqrt({m})/{b}"));
+            let forms = [
+                format!("{sign}{a}*sqrt({m})/{b}"),
+                format!("{sign}{}/({b}*sqrt({m}))", a * m),
+                format!("{sign}{a}/({b}/sqrt({m}))"),
+                format!("{sign}{}*sqrt({m})/({})", a * k, b * k),
+                format!("{sign}{a}*sqrt({})/({})", m * k * k, b * k),
+                format!("{sign}{a}*sqrt({p})*sqrt({q})/{b}"),
+                format!("{sign}{a}/{b}*sqrt({p})*sqrt({q})"),
+                format!("{}({a}/{b})sqrt({m})", if negative { "−" } else { "" }),
+                format!("{}{a}√{m}/{b}", if negative { "−" } else { "" }),
+                format!("{sign}{}/({b}*sqrt({p})*sqrt({q}))", a * m),
+                format!("{sign}sqrt({})/{b}", a * a * m),
+            ];
+            for form in forms {
+                let got = j_at(&form, &value, "view.u.0");
+                proptest::prop_assert_eq!(got.code, "correct.exact", "{} for {:?}: {:?}", form, value, got);
+            }
+        }
+    }
+
     #[test]
     fn figures_are_counted_from_the_values_leading_digit() {
         // 0.7071 to the units is 1, which keeps no figure of it: wrong
