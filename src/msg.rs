@@ -361,8 +361,6 @@ pub enum Msg {
     Rounded(u32),
     /// Rounded to n significant figures, at least m required.
     RoundedCoarse(u32, u32),
-    /// n significant figures, at least m required.
-    SigCoarse(u32, u32),
     /// Within this percentage.
     WithinPct(String),
     /// Within half a pixel (a pixel position).

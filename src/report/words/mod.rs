@@ -198,7 +198,6 @@ mod tests {
             Msg::Exact,
             Msg::Rounded(4),
             Msg::RoundedCoarse(1, 3),
-            Msg::SigCoarse(2, 3),
             Msg::WithinPct("0.5".into()),
             Msg::Parts(vec![("x".into(), Msg::Exact)]),
             Msg::WithinPixel,
@@ -541,7 +540,6 @@ mod tests {
             | Exact
             | Rounded(_)
             | RoundedCoarse(..)
-            | SigCoarse(..)
             | WithinPct(_)
             | Parts(_)
             | WithinPixel

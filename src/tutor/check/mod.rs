@@ -8,10 +8,11 @@
 //! An answer is correct when it equals the exact value (any equivalent
 //! form), when it is within the tolerance ([`tolerance::for_key`]: 0.1% by
 //! default, a zero by its answer's largest magnitude, a pixel within half a
-//! pixel), or when it is the exact value correctly rounded to the digits
-//! written. A rounded decimal with fewer significant figures than required
-//! is "too coarse"; figures are counted from the value's leading digit. An
-//! answer that is a catalog mistake's value is wrong and names the mistake.
+//! pixel) whatever figures it is written with, or when it is the exact
+//! value correctly rounded to the digits written. A rounding outside the
+//! tolerance with fewer significant figures than required is "too
+//! coarse"; figures are counted from the value's leading digit. An answer
+//! that is a catalog mistake's value is wrong and names the mistake.
 //!
 //! Verdicts and their stable codes (for autograders):
 //!
@@ -21,7 +22,7 @@
 //! | correct | `correct.tolerance` | within the tolerance | 1 |
 //! | correct | `correct.rounded` | the exact value rounded to the digits written | 1 |
 //! | correct | `correct.follow_through` | wrong, but right given the student's own earlier answers (`--follow-through`) | 1 |
-//! | too_coarse | `too_coarse` | right, but fewer significant figures than required | ½ |
+//! | too_coarse | `too_coarse` | a rounding of the value, outside the tolerance, with fewer significant figures than required | ½ |
 //! | wrong | `wrong` | none of the above (diagnosed where a known mistake reproduces it) | 0 |
 //! | missing | `missing` | no answer | 0 |
 //! | unparseable | `unparseable` | not a number, list or code grafika can read | 0 |

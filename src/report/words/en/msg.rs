@@ -186,7 +186,6 @@ impl MsgWords for En {
                 "rounded to {s} significant figure{}, at least {need} required",
                 if *s == 1 { "" } else { "s" }
             ),
-            Msg::SigCoarse(s, need) => format!("{s} significant figure(s), at least {need} required"),
             Msg::UpParallel(a) => format!(
                 "the up vector is nearly parallel to the view direction (angle {} rad): u and v are very sensitive to the inputs",
                 msg::exponent(self.nums(), *a)

@@ -181,7 +181,6 @@ impl MsgWords for Id {
             Msg::Exact => "tepat".into(),
             Msg::Rounded(s) => format!("dibulatkan ke {s} angka penting"),
             Msg::RoundedCoarse(s, need) => format!("dibulatkan ke {s} angka penting, paling sedikit {need} diperlukan"),
-            Msg::SigCoarse(s, need) => format!("{s} angka penting, paling sedikit {need} diperlukan"),
             Msg::UpParallel(a) => format!(
                 "vektor up (Vup) hampir sejajar dengan arah pandang (sudut {} rad): u dan v sangat peka terhadap masukan",
                 msg::exponent(self.nums(), *a)
