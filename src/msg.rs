@@ -369,6 +369,10 @@ pub enum Msg {
     NotAnOutcode(String),
     /// Not a clipping status (the text as written).
     NotAStatus(String),
+    /// Not yes or no (the text as written).
+    NotYesOrNo(String),
+    /// Commas both as decimal marks and as separators: ambiguous.
+    AmbiguousCommas,
     /// Right given the student's earlier answers (follow-through).
     FollowThrough,
     /// Notes of components: (label, note), joined.

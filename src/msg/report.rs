@@ -175,6 +175,8 @@ pub enum PracticeWord {
     MatrixShape,
     /// The shape of a number.
     NumberShape,
+    /// The shape of a yes or no.
+    YesNoShape,
     /// The shape of a list of `n` values.
     ValuesShape(usize),
 }

@@ -321,7 +321,7 @@ pub fn components(text: &str) -> Vec<Part<'_>> {
 
 /// Splits on `sep` outside parentheses and brackets, keeping where each part
 /// starts (in characters).
-fn split_at(text: &str, sep: char) -> Vec<Part<'_>> {
+pub fn split_at(text: &str, sep: char) -> Vec<Part<'_>> {
     let mut parts = Vec::new();
     let mut depth = 0i32;
     let (mut start, mut start_chars) = (0, 0);

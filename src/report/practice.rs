@@ -3,8 +3,8 @@
 //! per event, JSON Lines, with the keys of `check`).
 
 use crate::input::answer::Read;
-use crate::msg::Msg;
 use crate::msg::PracticeWord as P;
+use crate::msg::{DocWord, Msg};
 use crate::num::Real;
 use crate::report::lang::Lang;
 use crate::report::mistakes::mistake_text;
@@ -261,6 +261,12 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
 /// exact form (`√2/2` for `1/sqrt(2)`) or as the decimal written, a list
 /// in parentheses, a code or status as grafika spells it.
 pub fn read_as(r: &Read, style: &Style) -> String {
+    // yes or no (read as grafika's true or false) in the student's language
+    match r {
+        Read::Word(w) if w == "true" => return style.doc(DocWord::Yes),
+        Read::Word(w) if w == "false" => return style.doc(DocWord::No),
+        _ => {}
+    }
     fn en(r: &Read) -> String {
         match r {
             Read::Num(n) if n.last_digit.is_some() => n.expr.to_string(),
@@ -361,6 +367,7 @@ fn shape(key: &Key, expected: &Val, lang: Lang) -> String {
     }
     match expected {
         Val::Text(_) => t(P::BitsShape),
+        Val::Bool(_) => t(P::YesNoShape),
         // with decimal commas `;` separates the numbers, so each row in
         // brackets: (0,6; 0; −0,8; 0); (…)
         v if v.is_matrix() => t(P::MatrixShape),

@@ -203,6 +203,8 @@ mod tests {
             Msg::WithinPixel,
             Msg::NotAnOutcode(s()),
             Msg::NotAStatus(s()),
+            Msg::NotYesOrNo(s()),
+            Msg::AmbiguousCommas,
             Msg::FollowThrough,
             Msg::ErrSamePoint("(1, 2, 3)".into()),
             Msg::ErrUpZero,
@@ -545,6 +547,8 @@ mod tests {
             | WithinPixel
             | NotAnOutcode(_)
             | NotAStatus(_)
+            | NotYesOrNo(_)
+            | AmbiguousCommas
             | FollowThrough
             | At(..)
             | Err(_)

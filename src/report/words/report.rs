@@ -295,6 +295,7 @@ mod tests {
             P::BitsShape,
             P::MatrixShape,
             P::NumberShape,
+            P::YesNoShape,
             P::ValuesShape(5),
         ]
     }
@@ -484,6 +485,7 @@ mod tests {
             | P::BitsShape
             | P::MatrixShape
             | P::NumberShape
+            | P::YesNoShape
             | P::ValuesShape(_) => {}
         }
         match s {

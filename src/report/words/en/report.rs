@@ -318,6 +318,7 @@ impl ReportWords for En {
             P::BitsShape => "6 bits, bit 1 rightmost".into(),
             P::MatrixShape => "4 rows (a, b, c, d); (…); …".into(),
             P::NumberShape => "a number".into(),
+            P::YesNoShape => "yes | no".into(),
             P::ValuesShape(n) => format!("({n} values)"),
         }
     }

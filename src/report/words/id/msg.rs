@@ -177,6 +177,8 @@ impl MsgWords for Id {
             Msg::WithinPixel => "dalam setengah piksel".into(),
             Msg::NotAnOutcode(t) => format!("`{t}` bukan region code: tulis enam digit biner, bit 1 paling kanan (001000)"),
             Msg::NotAStatus(t) => format!("`{t}` bukan status: tulis diterima, ditolak atau di-clip (accepted, rejected, clipped)"),
+            Msg::NotYesOrNo(t) => format!("`{t}` bukan ya atau tidak: tulis ya atau tidak (yes, no)"),
+            Msg::AmbiguousCommas => "koma di sini dipakai sebagai tanda desimal sekaligus pemisah, sehingga bilangannya tidak dapat dibedakan: tulis 0,7071; 0; 0,7071 (koma desimal, bagian dipisahkan ;) atau 0.7071, 0, 0.7071".into(),
             Msg::FollowThrough => "benar menurut jawaban sebelumnya (follow-through)".into(),
             Msg::Exact => "tepat".into(),
             Msg::Rounded(s) => format!("dibulatkan ke {s} angka penting"),

@@ -315,6 +315,7 @@ impl ReportWords for Id {
             P::BitsShape => "6 bit, bit 1 paling kanan".into(),
             P::MatrixShape => "4 baris (a; b; c; d); (…); …".into(),
             P::NumberShape => "sebuah bilangan".into(),
+            P::YesNoShape => "ya | tidak".into(),
             P::ValuesShape(n) => format!("({n} nilai)"),
         }
     }
