@@ -149,6 +149,11 @@ pub enum PracticeWord {
     ReadAs,
     /// A second try, counted apart.
     SecondTry,
+    /// An answer to a value already shown, counted apart.
+    ShownBefore,
+    /// The other values a `show` or a hint printed (their keys, joined),
+    /// now counted as revealed.
+    AlsoShown(String),
     /// Before a mistake that explains the answer.
     LikelyMistake,
     /// Before why the source's printed value is wrong.

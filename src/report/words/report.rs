@@ -282,6 +282,8 @@ mod tests {
             },
             P::ReadAs,
             P::SecondTry,
+            P::ShownBefore,
+            P::AlsoShown("window.left, window.right".into()),
             P::LikelyMistake,
             P::SourceWrong,
             P::NoMistakeTip,
@@ -472,6 +474,8 @@ mod tests {
             | P::Unreadable { .. }
             | P::ReadAs
             | P::SecondTry
+            | P::ShownBefore
+            | P::AlsoShown(_)
             | P::LikelyMistake
             | P::SourceWrong
             | P::NoMistakeTip

@@ -305,6 +305,8 @@ impl ReportWords for En {
             }
             P::ReadAs => "read as".into(),
             P::SecondTry => "(a second try: shown, and counted apart; the first verdict stands for the score)".into(),
+            P::ShownBefore => "(this value was shown already: the answer is judged and counted apart; the value counts as revealed)".into(),
+            P::AlsoShown(keys) => format!("(this also shows {keys}: they count as revealed)"),
             P::LikelyMistake => "Likely mistake".into(),
             P::SourceWrong => "The source printed this, and it is wrong".into(),
             P::NoMistakeTip => "No known mistake explains this answer. Type back to try this value again (hint and show help there).".into(),

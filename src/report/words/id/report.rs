@@ -302,6 +302,8 @@ impl ReportWords for Id {
             }
             P::ReadAs => "dibaca sebagai".into(),
             P::SecondTry => "(percobaan kedua: ditampilkan dan dihitung terpisah; penilaian pertama yang dipakai untuk nilai)".into(),
+            P::ShownBefore => "(nilai ini sudah ditampilkan: jawabannya dinilai dan dihitung terpisah; nilainya dihitung sebagai dilihat)".into(),
+            P::AlsoShown(keys) => format!("(langkah ini juga menampilkan {keys}: nilai-nilai itu dihitung sebagai dilihat)"),
             P::LikelyMistake => "Kemungkinan kesalahan".into(),
             P::SourceWrong => "Sumber mencetak nilai ini, dan nilai itu salah".into(),
             P::NoMistakeTip => "Tidak ada kesalahan yang dikenal yang menjelaskan jawaban ini. Ketik back untuk mencoba nilai ini lagi (hint dan show membantu di sana).".into(),
