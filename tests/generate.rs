@@ -152,7 +152,7 @@ fn a_planted_mistake_is_caught_and_named() {
     for path in shipped {
         let p = grafika::input::problem::ProblemIn::read(&path).unwrap();
         let marker = check::Marker::new(&p, Settings::default()).unwrap();
-        let keys: Vec<String> = marker.keys.iter().map(Key::to_string).collect();
+        let keys: Vec<String> = marker.order.iter().map(Key::to_string).collect();
         let name = path.display().to_string();
         for m in Code::all() {
             if plant(m, &p, &keys, &marker.result, &name) {

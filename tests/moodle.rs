@@ -17,7 +17,7 @@ use grafika::report::lang::Lang;
 use grafika::report::mistakes::mistake_text;
 use grafika::report::moodle::{moodle_xml, Decimal, Written};
 use grafika::report::Style;
-use grafika::tutor::check::default_keys;
+use grafika::tutor::check::scheme::Scheme;
 use grafika::tutor::diagnose::Code;
 use grafika::tutor::generate::quiz::Quiz;
 use grafika::tutor::generate::{Generated, Topic};
@@ -159,7 +159,9 @@ fn xml_questions(xml: &str) -> Vec<(String, String, String, String)> {
 fn generated(toml: &str) -> Generated {
     let problem = ProblemIn::parse(toml, "test").expect("parses");
     let report = solve::solve::<Real>(&problem).expect("solves");
-    let keys = default_keys(&report.result);
+    let order = grafika::tutor::keys::ordered_keys(&report.result);
+    let scheme = Scheme::of(&problem, &report.result, &order).expect("a scheme");
+    let keys = scheme.keys().cloned().collect();
     // The problem's own words stand for the drawn title and statement.
     Generated {
         title: Msg::Math(problem.title.clone()),
@@ -168,6 +170,7 @@ fn generated(toml: &str) -> Generated {
         problem,
         report,
         keys,
+        scheme,
     }
 }
 
@@ -195,7 +198,8 @@ const CAMERA: &str = "title = 'Camera'\nstatement = 'The camera example.'\nask =
 /// u = (0, 0, −1); v = n × u = (−0.6, 0.8, 0); Pref' = (0, 0, −5).
 /// Mistakes by hand: u = n × Vup flips u and v; n from Pr − Pe flips n and
 /// u (v = n × u stays); n not normalized is (4, 3, 0) and v = n × u then
-/// (−3, 4, 0); u not normalized is Vup × n = (0, 0, −0.8) and v (−0.48, 0.64, 0).
+/// (−3, 4, 0); u not normalized is Vup × n = (0, 0, −0.8) and v (−0.48, 0.64, 0);
+/// u and v swapped writes u = (−0.6, 0.8, 0) and v = (0, 0, −1).
 #[test]
 fn the_camera_example_has_the_keys_tolerances_and_mistakes_derived_by_hand() {
     let qs = one_problem_xml(CAMERA, Lang::En);
@@ -262,10 +266,11 @@ fn the_camera_example_has_the_keys_tolerances_and_mistakes_derived_by_hand() {
     wrong(6, 4.0, "n_not_normalized");
     wrong(7, -0.6, "n_reversed");
     wrong(7, 3.0, "n_not_normalized");
-    // zeros that every mistake keeps zero have no wrong answers
-    for i in [0, 1, 5, 8] {
-        assert_eq!(blanks[i].alts.len(), 1, "{:?}", blanks[i]);
-    }
+    wrong(0, -0.6, "uv_swapped");
+    wrong(1, 0.8, "uv_swapped");
+    wrong(5, -1.0, "uv_swapped");
+    // n's zero, that every mistake keeps zero, has no wrong answers
+    assert_eq!(blanks[8].alts.len(), 1, "{:?}", blanks[8]);
     // the general feedback holds the answers and the worked solution
     assert!(qs[1].3.contains("view.u = (0, 0, −1)"), "{}", qs[1].3);
     assert!(qs[1].3.contains("Worked solution"));

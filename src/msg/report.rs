@@ -218,6 +218,16 @@ pub enum CheckWord {
     Score,
     /// How many correct answers were credited by follow-through.
     FollowThroughCount(usize),
+    /// Column: the marks earned of those an answer is worth.
+    Marks,
+    /// In the marks column: an answer the scheme does not ask (working).
+    Working,
+    /// The working shown: how many answers, how many right.
+    WorkingCount(usize, usize),
+    /// Heading: the marks the working earned for values not right.
+    MethodMarks,
+    /// Before a method mark's keys: the marks earned (as shown), of how many.
+    MethodEarned(String, u32),
 }
 
 /// A word the documents share (the worked solution as text, HTML,
@@ -278,6 +288,8 @@ pub enum DocWord {
     },
     /// An answer key's title, after the exam's.
     KeyTitle(String),
+    /// A question's marks on an exam sheet: `(3 marks)`.
+    Marks(u32),
     /// Before an answer-key file's title.
     AnswerKey,
     /// What `generate --out` wrote.

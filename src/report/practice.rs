@@ -276,6 +276,11 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
         let line = format!("{}: {}", look.w(P::SourceWrong), look.style.w(why));
         out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
     }
+    // why it does not follow from the student's own earlier answer
+    if let Msg::NoFollowFrom(..) = &o.note {
+        let line = look.style.w(&o.note);
+        out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
+    }
     if o.code == "wrong" && o.mistakes.is_empty() {
         let tip = look.w(P::NoMistakeTip);
         out.push_str(&look.paint(Tone::Quiet, &wrap_after("    ", &tip, "    ")));
@@ -477,7 +482,8 @@ fn summary_json(s: &Summary, lang: Lang) -> Value {
     json!({
         "event": "summary",
         "score": { "points": s.points, "total": s.total,
-                   "fraction": if s.total == 0 { 1.0 } else { s.points / s.total as f64 } },
+                   "fraction": if s.total == 0 { 1.0 } else { s.points / f64::from(s.total) } },
+        "steps": s.steps,
         "counts": {
             "correct": s.correct, "follow_through": s.follow_through,
             "too_coarse": s.too_coarse, "wrong": s.wrong, "skipped": s.skipped,

@@ -26,6 +26,7 @@ use crate::input::answer::Read;
 use crate::input::problem::ProblemIn;
 use crate::msg::{Msg, Said};
 use crate::stages::trace::{Name, Step, Val};
+use crate::tutor::check::Follow;
 use crate::tutor::check::{agrees, Marker, Settings, Verdict, FOLLOW_THROUGH};
 use crate::tutor::diagnose::Code;
 use crate::tutor::generate::{Difficulty, Topic};
@@ -76,7 +77,7 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
         .check
         .as_ref()
         .and_then(|c| c.keys.as_ref())
-        .map(|_| &marker.keys);
+        .map(|_| marker.scheme.keys().cloned().collect::<Vec<Key>>());
     let items = marker
         .order
         .iter()
@@ -90,7 +91,7 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
             );
             // a `[check] key` that is no key of the solution asks
             // nothing, as `check` reports it unknown
-            unit || wanted.is_none_or(|w| w.contains(k))
+            unit || wanted.as_ref().is_none_or(|w| w.contains(k))
         })
         .filter_map(|key| {
             Some(Item {
@@ -353,11 +354,15 @@ pub enum Event {
 /// The end of a session.
 #[derive(Clone, Debug)]
 pub struct Summary {
-    /// Points earned by each value's first verdict: 1 per correct answer
-    /// (follow-through included), ½ per too coarse.
+    /// Marks earned by the marking scheme (`check`'s), from each value's
+    /// first verdict: the values the problem asks earn their marks (½ too
+    /// coarse), or method marks from their working; the steps between earn
+    /// none of their own.
     pub points: f64,
-    /// Values asked.
-    pub total: usize,
+    /// The marks of the values the problem asks that the session asks.
+    pub total: u32,
+    /// Values asked in the session (every step).
+    pub steps: usize,
     /// Correct answers, follow-through included.
     pub correct: usize,
     /// Of those, credited by follow-through.
@@ -482,7 +487,9 @@ impl<'a> Session<'a> {
             Input::Hint => {
                 self.hints[self.pos] += 1;
                 let level = self.hints[self.pos];
-                let step = hint_step(item, level, &self.plan.stated);
+                let own = self.own_step(item);
+                let from = own.as_ref().or(item.step.as_ref());
+                let step = hint_step(from, &item.expected, level, &self.plan.stated);
                 let also = step.as_ref().map_or(vec![], |s| self.reveal(s, false));
                 vec![Event::Hint {
                     key,
@@ -548,6 +555,19 @@ impl<'a> Session<'a> {
         also
     }
 
+    /// The item's step worked from the student's own earlier values where
+    /// they were wrong (None when none was): a hint goes on from them.
+    fn own_step(&self, item: &Item) -> Option<Step> {
+        let earlier = &self.plan.items[..self.pos];
+        let own: Vec<(Key, Read)> = (earlier.iter())
+            .filter_map(|i| Some((i.key.clone(), self.own(&i.key)?)))
+            .collect();
+        if own.is_empty() {
+            return None;
+        }
+        step_for(&item.key, &self.plan.marker.steps_given(&own)?)
+    }
+
     /// The student's latest answer to an earlier key, where it was wrong
     /// (credited by follow-through or not): what follow-through goes on
     /// from; a right answer, maybe rounded, carries grafika's value.
@@ -590,13 +610,17 @@ impl<'a> Session<'a> {
             return out;
         };
         let own = |k: &Key| self.own(k);
-        if let Some(ft) = m.carried(key, &own) {
-            if m.follows(&read, &ft, key) {
-                out.verdict = Verdict::Correct;
-                out.code = FOLLOW_THROUGH;
-                out.note = Msg::FollowThrough;
-                out.follow_through = Some(ft);
-                return out;
+        if !j.mistakes.contains(&Code::CopiedMisprint) {
+            match m.follow(key, &read, &own) {
+                Follow::Credited(ft) => {
+                    out.verdict = Verdict::Correct;
+                    out.code = FOLLOW_THROUGH;
+                    out.note = Msg::FollowThrough;
+                    out.follow_through = Some(ft);
+                    return out;
+                }
+                Follow::Blocked(why) => out.note = why,
+                Follow::Not => {}
             }
         }
         let agreed: Vec<(&Key, &Read)> = self
@@ -627,11 +651,11 @@ impl<'a> Session<'a> {
                 }
             }
         }
-        // from +0: an empty f64 sum is −0, which would print as -0
-        let points: f64 = done.iter().fold(0.0, |s, o| s + o.verdict.points());
+        let (points, total) = self.marks(&done);
         Summary {
             points,
-            total: self.plan.items.len(),
+            total,
+            steps: self.plan.items.len(),
             correct: count(&|o| o.verdict == Verdict::Correct),
             follow_through: count(&|o| o.code == FOLLOW_THROUGH),
             too_coarse: count(&|o| o.verdict == Verdict::TooCoarse),
@@ -647,6 +671,25 @@ impl<'a> Session<'a> {
             next: self.next(points, &done),
             mistakes,
         }
+    }
+
+    /// The marks earned and possible by the scheme, over the values it asks
+    /// that the session asks (all of them, when the session asks none).
+    fn marks(&self, done: &[&Outcome]) -> (f64, u32) {
+        let verdict = |k: &Key| done.iter().find(|o| o.key == *k).map(|o| o.verdict);
+        let scheme = &self.plan.marker.scheme;
+        let asked = |k: &Key| self.plan.items.iter().any(|i| i.key == *k);
+        let items: Vec<_> = match scheme.items.iter().any(|i| asked(&i.key)) {
+            true => scheme.items.iter().filter(|i| asked(&i.key)).collect(),
+            false => scheme.items.iter().collect(),
+        };
+        // from +0: an empty f64 sum is −0, which would print as -0
+        let points = items.iter().fold(0.0, |s, i| {
+            s + i
+                .earned(verdict(&i.key).unwrap_or(Verdict::Missing), &verdict)
+                .0
+        });
+        (points, items.iter().map(|i| i.marks).sum())
     }
 
     /// What to practise next: the topic of the most values missed (wrong,
@@ -677,7 +720,7 @@ impl<'a> Session<'a> {
                 )
             })
             .copied();
-        let total = self.plan.items.len().max(1) as f64;
+        let total = f64::from(self.marks(done).1.max(1));
         match weakest {
             None if done.len() == self.plan.items.len() => (topic, harder(diff)),
             None => (topic, diff),
@@ -723,14 +766,19 @@ fn prints(printed: &Step, item: &Item, whole: bool) -> bool {
 /// formula; level 2 also the values substituted, but a step short of the
 /// answer: a value that would give it away ([`leaks`]) is left out, and an
 /// outcode's bit tests are asked, not answered.
-pub fn hint_step(item: &Item, level: u8, stated: &[f64]) -> Option<Step> {
-    let s = item.step.as_ref()?;
+pub fn hint_step(step: Option<&Step>, expected: &Val, level: u8, stated: &[f64]) -> Option<Step> {
+    let s = step?;
     let mut h = Step::new(s.title.clone(), s.formula.clone());
+    // the step's own results (from the student's values, they may differ
+    // from grafika's) are kept back too
+    let results: Vec<&Val> = s.result.iter().map(|(_, v)| v).collect();
     if level >= 2 {
         h.values = s
             .values
             .iter()
-            .filter(|(_, v)| !leaks(v, &item.expected, stated))
+            .filter(|(_, v)| {
+                !leaks(v, expected, stated) && !results.iter().any(|r| leaks(v, r, stated))
+            })
             .map(|(k, v)| (k.clone(), asked_not_answered(v)))
             .collect();
     }

@@ -58,6 +58,8 @@ pub struct Hooks<'a, T> {
     /// Values given in place of the stages' own, by result key
     /// (follow-through): the steps after them go on from them.
     pub given: Option<&'a follow::Lookup<'a, T>>,
+    /// Make no steps: only the results are wanted (follow-through).
+    pub quiet: bool,
 }
 
 impl<T: Scalar> Default for Hooks<'_, T> {
@@ -70,6 +72,7 @@ impl<T: Scalar> Default for Hooks<'_, T> {
             shade: crate::stages::lighting::Rules::default(),
             setup: None,
             given: None,
+            quiet: false,
         }
     }
 }

@@ -206,6 +206,21 @@ mod tests {
             Msg::NotYesOrNo(s()),
             Msg::AmbiguousCommas,
             Msg::FollowThrough,
+            Msg::NoFollowFrom(
+                "view.u".into(),
+                crate::msg::Implausible::NotUnit,
+                "view.v".into(),
+            ),
+            Msg::NoFollowFrom(
+                "view.v".into(),
+                crate::msg::Implausible::NotPerpendicular("view.n".into()),
+                "view.points.A".into(),
+            ),
+            Msg::NoFollowFrom(
+                "clip.intersections.right.point".into(),
+                crate::msg::Implausible::OffSegment,
+                "clip.segment".into(),
+            ),
             Msg::ErrSamePoint("(1, 2, 3)".into()),
             Msg::ErrUpZero,
             Msg::ErrUpParallel("(0, 1, 0)".into(), "(0, 5, 0)".into()),
@@ -550,6 +565,7 @@ mod tests {
             | NotYesOrNo(_)
             | AmbiguousCommas
             | FollowThrough
+            | NoFollowFrom(..)
             | At(..)
             | Err(_)
             | Said(_)

@@ -10,7 +10,7 @@ use crate::msg::CliWord as L;
 use crate::msg::PracticeWord as P;
 use crate::msg::StatWord as S;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
-use crate::report::words::report::{dec, exam_title, ReportWords};
+use crate::report::words::report::{dec, exam_title, percent, ReportWords};
 use crate::report::words::MsgWords;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::stats::Flag;
@@ -132,6 +132,11 @@ impl ReportWords for En {
             K::NotAnswers => "Not answers to this problem (ignored)".into(),
             K::Score => "Score".into(),
             K::FollowThroughCount(n) => format!("({n} of the correct answers by follow-through: right given the student's own earlier answers)"),
+            K::Marks => "marks".into(),
+            K::Working => "working".into(),
+            K::WorkingCount(n, right) => format!("Working shown, not counted in the total: {n} answers, {right} of them right"),
+            K::MethodMarks => "Marks for the working (method marks), where the value itself is not right:".into(),
+            K::MethodEarned(e, of) => format!("{e} of {of} marks, for"),
         }
     }
 
@@ -164,6 +169,7 @@ impl ReportWords for En {
                 variant,
             } => exam_title("grafika exam", (topics, difficulty), *seed, variant.map(|v| (self.doc(&D::Variant), v))),
             D::KeyTitle(title) => format!("{title} — answer key"),
+            D::Marks(n) => format!("({n} mark{})", plural(*n as usize)),
             D::AnswerKey => "Answer key".into(),
             D::Wrote {
                 files,
@@ -327,9 +333,10 @@ impl ReportWords for En {
 
     fn practice_summary(&self, s: &Summary) -> String {
         let pts = dec(s.points, 4, self.nums());
+        let pct = dec(percent(s.points, s.total), 4, self.nums());
         let mut out = format!(
-            "Summary: {pts}/{} points\n  correct {} ({} by follow-through), too coarse {}, wrong {},\n  skipped {}, revealed {}, not reached {}; hints used {}\n",
-            s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
+            "Summary: {pts}/{} marks = {pct}% (the values the problem asks; {} steps)\n  correct {} ({} by follow-through), too coarse {}, wrong {},\n  skipped {}, revealed {}, not reached {}; hints used {}\n",
+            s.total, s.steps, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
         );
         if s.retries > 0 {
             out.push_str(&format!(

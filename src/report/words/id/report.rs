@@ -10,7 +10,7 @@ use crate::msg::CliWord as L;
 use crate::msg::PracticeWord as P;
 use crate::msg::StatWord as S;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
-use crate::report::words::report::{dec, exam_title, ReportWords};
+use crate::report::words::report::{dec, exam_title, percent, ReportWords};
 use crate::report::words::MsgWords;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::stats::Flag;
@@ -131,6 +131,11 @@ impl ReportWords for Id {
             K::NotAnswers => "Bukan jawaban untuk soal ini (diabaikan)".into(),
             K::Score => "Nilai".into(),
             K::FollowThroughCount(n) => format!("({n} jawaban benar karena follow-through: benar menurut jawaban mahasiswa sendiri sebelumnya)"),
+            K::Marks => "poin".into(),
+            K::Working => "langkah".into(),
+            K::WorkingCount(n, right) => format!("Langkah pengerjaan yang ditulis, tidak dihitung dalam nilai: {n} jawaban, {right} di antaranya benar"),
+            K::MethodMarks => "Poin untuk langkah pengerjaan, bila jawabannya sendiri tidak benar:".into(),
+            K::MethodEarned(e, of) => format!("{e} dari {of} poin, untuk"),
         }
     }
 
@@ -163,6 +168,7 @@ impl ReportWords for Id {
                 variant,
             } => exam_title("ujian grafika", (topics, difficulty), *seed, variant.map(|v| (self.doc(&D::Variant), v))),
             D::KeyTitle(title) => format!("{title} — kunci jawaban"),
+            D::Marks(n) => format!("({n} poin)"),
             D::AnswerKey => "Kunci jawaban".into(),
             D::Wrote {
                 files,
@@ -324,9 +330,10 @@ impl ReportWords for Id {
 
     fn practice_summary(&self, s: &Summary) -> String {
         let pts = dec(s.points, 4, self.nums());
+        let pct = dec(percent(s.points, s.total), 4, self.nums());
         let mut out = format!(
-            "Ringkasan: {pts}/{} poin\n  benar {} ({} karena follow-through), terlalu kasar {}, salah {},\n  dilewati {}, dilihat {}, belum dijawab {}; petunjuk dipakai {}\n",
-            s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
+            "Ringkasan: {pts}/{} poin = {pct}% (jawaban yang ditanyakan soal; {} langkah)\n  benar {} ({} karena follow-through), terlalu kasar {}, salah {},\n  dilewati {}, dilihat {}, belum dijawab {}; petunjuk dipakai {}\n",
+            s.total, s.steps, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
         );
         if s.retries > 0 {
             out.push_str(&format!(
