@@ -106,7 +106,7 @@ pub fn to_text(m: &Marking, style: &Style) -> String {
             a.given.clone().unwrap_or_else(|| "—".into()),
             a.expected
                 .as_ref()
-                .map(|e| style.val_inline(e))
+                .map(|e| expected_text(&a.key, e, style))
                 .unwrap_or_default(),
             style.w(&a.note),
         ]);
@@ -125,6 +125,19 @@ pub fn to_text(m: &Marking, style: &Style) -> String {
     out.push_str(&diagnoses_text(m, style));
     out.push_str(&score_text(m, style));
     out
+}
+
+/// The expected value as the text writes it: a clipping status in the
+/// chosen language's word (`di-clip`), the code staying in the JSON.
+fn expected_text(key: &Key, e: &crate::stages::trace::Val, style: &Style) -> String {
+    use crate::stages::trace::Val;
+    use crate::tutor::key::{Field, Value};
+    match e {
+        Val::Text(t) if key.value == Value::Field(Field::Status) => {
+            style.val_inline(&Val::said(crate::msg::Said::Status(t.clone())))
+        }
+        _ => style.val_inline(e),
+    }
 }
 
 /// The mistakes found, the wrong answers no mistake explains, the unknown keys.

@@ -261,6 +261,14 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
 /// exact form (`√2/2` for `1/sqrt(2)`) or as the decimal written, a list
 /// in parentheses, a code or status as grafika spells it.
 pub fn read_as(r: &Read, style: &Style) -> String {
+    match r {
+        // a status and "nothing" in the student's words (`di-clip`, `tidak ada`)
+        Read::Word(w) if crate::report::words::said::status(w).is_some() => {
+            return style.val_inline(&Val::said(crate::msg::Said::Status(w.clone())));
+        }
+        Read::None => return style.val_inline(&Val::Null),
+        _ => {}
+    }
     fn en(r: &Read) -> String {
         match r {
             Read::Num(n) if n.last_digit.is_some() => n.expr.to_string(),
