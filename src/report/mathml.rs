@@ -69,8 +69,16 @@ pub fn row(s: &str) -> String {
             i = next;
             items.push(item);
         } else {
+            // a sign (not a difference): first, or after a bracket, a
+            // separator or another operator: `(−2 − 4)`, `= −√2/60`
+            let before = chars[..i].iter().rev().find(|c| !c.is_whitespace());
+            let sign = matches!(c, '−' | '-' | '+')
+                && before.is_none_or(|b| "([{,;=≈≤≥<>·×/−+⇒".contains(*b));
             i += 1;
-            items.push(operator(c));
+            items.push(match sign {
+                true => format!("<mo lspace=\"0\" rspace=\"0\">{c}</mo>"),
+                false => operator(c),
+            });
         }
     }
     format!("<mrow>{}</mrow>", items.concat())
@@ -331,8 +339,19 @@ mod tests {
     fn a_surd_with_its_decimal() {
         assert_eq!(
             row("−√2/60 ≈ −0.02357"),
-            "<mrow><mo>−</mo><msqrt><mn>2</mn></msqrt><mo lspace=\"0\" rspace=\"0\">/</mo><mn>60</mn>\
-             <mo form=\"infix\">≈</mo><mo>−</mo><mn>0.02357</mn></mrow>"
+            "<mrow><mo lspace=\"0\" rspace=\"0\">−</mo><msqrt><mn>2</mn></msqrt><mo lspace=\"0\" rspace=\"0\">/</mo><mn>60</mn>\
+             <mo form=\"infix\">≈</mo><mo lspace=\"0\" rspace=\"0\">−</mo><mn>0.02357</mn></mrow>"
+        );
+    }
+
+    #[test]
+    fn a_sign_is_set_close_and_a_difference_apart() {
+        // (−2 − 4): the first minus is the sign of 2, the second a difference
+        assert_eq!(
+            row("(−2 − 4)"),
+            "<mrow><mo stretchy=\"false\" lspace=\"0\" rspace=\"0\">(</mo>\
+             <mo lspace=\"0\" rspace=\"0\">−</mo><mn>2</mn><mo>−</mo><mn>4</mn>\
+             <mo stretchy=\"false\" lspace=\"0\" rspace=\"0\">)</mo></mrow>"
         );
     }
 
@@ -341,7 +360,7 @@ mod tests {
         assert_eq!(
             row("v₀² + Mcam⁻¹"),
             "<mrow><msup><msub><mi>v</mi><mn>0</mn></msub><mn>2</mn></msup><mo>+</mo>\
-             <msup><mi>Mcam</mi><mrow><mo>−</mo><mn>1</mn></mrow></msup></mrow>"
+             <msup><mi>Mcam</mi><mrow><mo lspace=\"0\" rspace=\"0\">−</mo><mn>1</mn></mrow></msup></mrow>"
         );
     }
 
