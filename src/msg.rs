@@ -285,6 +285,8 @@ pub enum Msg {
     FSpot,
     /// The clamp of the colour.
     FClamp,
+    /// The window's other edges and its size from top and the aspect.
+    FWindowEdges,
 
     // ---- notes ----
     /// Already a unit vector.
@@ -297,6 +299,8 @@ pub enum Msg {
     NoTermInModel(String, Term),
     /// The text's single white light.
     TextSetting,
+    /// The text's own formula of a term (Iₐ = Is·ka, …), with Is = 1.
+    TextTerm(Term),
     /// Summed over the lights in range.
     SummedInRange,
     /// The specular term is skipped.

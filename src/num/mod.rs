@@ -285,6 +285,13 @@ pub trait Scalar:
     }
     /// The number for display and JSON.
     fn shown(&self) -> Shown;
+    /// √self for display: [`shown`](Scalar::shown) of the root, and, where
+    /// the root has no exact form but self has (an exact run), `√(s)` as
+    /// its form for people beside the decimal (|V + L| = √(2+√2) ≈ 1.848;
+    /// `exact` stays `None`: the JSON's forms take `sqrt` of integers only).
+    fn root_shown(&self) -> Shown {
+        self.sqrt().shown()
+    }
 }
 
 #[cfg(test)]

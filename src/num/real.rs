@@ -425,6 +425,14 @@ impl Scalar for Real {
             pretty: self.exact_pretty().filter(|p| super::format::helps(p)),
         }
     }
+    fn root_shown(&self) -> Shown {
+        let root = Real::sqrt(self);
+        let mut s = Scalar::shown(&root);
+        if !root.is_exact() && Real::to_f64(self) > 0.0 {
+            s.pretty = Scalar::shown(self).pretty.map(|p| format!("√({p})"));
+        }
+        s
+    }
 }
 
 #[cfg(test)]

@@ -14,6 +14,17 @@ pub fn inline(s: &str) -> String {
     format!("<math>{}</math>", row(s))
 }
 
+/// Inline MathML for a line of notation that ends in words (`⇒ status =`
+/// and `di-clip`): the words as `<mtext>` in the same row.
+pub fn inline_then_text(notation: &str, text: &str) -> String {
+    let r = row(notation);
+    let inner = &r["<mrow>".len()..r.len() - "</mrow>".len()];
+    format!(
+        "<math><mrow>{inner}<mspace width=\"0.3em\"/><mtext>{}</mtext></mrow></math>",
+        xml_escape(text)
+    )
+}
+
 /// Display (block) MathML for a formula.
 pub fn block(s: &str) -> String {
     format!("<math display=\"block\">{}</math>", row(s))
@@ -58,8 +69,16 @@ pub fn row(s: &str) -> String {
             i = next;
             items.push(item);
         } else {
+            // a sign (not a difference): first, or after a bracket, a
+            // separator or another operator: `(−2 − 4)`, `= −√2/60`
+            let before = chars[..i].iter().rev().find(|c| !c.is_whitespace());
+            let sign = matches!(c, '−' | '-' | '+')
+                && before.is_none_or(|b| "([{,;=≈≤≥<>·×/−+⇒".contains(*b));
             i += 1;
-            items.push(operator(c));
+            items.push(match sign {
+                true => format!("<mo lspace=\"0\" rspace=\"0\">{c}</mo>"),
+                false => operator(c),
+            });
         }
     }
     format!("<mrow>{}</mrow>", items.concat())
@@ -143,6 +162,10 @@ fn operator(c: char) -> String {
             format!("<mo stretchy=\"false\" lspace=\"0\" rspace=\"0\">{c}</mo>")
         }
         '/' => "<mo lspace=\"0\" rspace=\"0\">/</mo>".to_string(),
+        // a relation keeps its spaces at either end of a row (`⇒ code0 =`
+        // before a word, or first in the line)
+        '=' | '≈' => format!("<mo form=\"infix\">{c}</mo>"),
+        '⇒' => "<mo lspace=\"0\" rspace=\"0.5em\">⇒</mo>".to_string(),
         ';' | ',' => format!("<mo separator=\"true\" lspace=\"0\" rspace=\"0.35em\">{c}</mo>"),
         _ => format!("<mo>{}</mo>", xml_escape(&c.to_string())),
     }
@@ -280,17 +303,17 @@ mod tests {
     fn words_are_one_text_and_names_stay_identifiers() {
         assert_eq!(
             row("polygon face ="),
-            "<mrow><mtext>polygon face</mtext><mo>=</mo></mrow>"
+            "<mrow><mtext>polygon face</mtext><mo form=\"infix\">=</mo></mrow>"
         );
         assert_eq!(
             row("object's triangle = 17"),
-            "<mrow><mtext>object's triangle</mtext><mo>=</mo><mn>17</mn></mrow>"
+            "<mrow><mtext>object's triangle</mtext><mo form=\"infix\">=</mo><mn>17</mn></mrow>"
         );
         // notation keeps its names: one-letter names, and names apart
         // from words by operators
         assert_eq!(
             row("top = near·tan"),
-            "<mrow><mi>top</mi><mo>=</mo><mi>near</mi><mo>·</mo><mi>tan</mi></mrow>"
+            "<mrow><mi>top</mi><mo form=\"infix\">=</mo><mi>near</mi><mo>·</mo><mi>tan</mi></mrow>"
         );
         // a space between two names is kept, and a lone word beside a
         // name is text: `z' dari C'`, `piksel A`
@@ -300,7 +323,7 @@ mod tests {
         );
         assert_eq!(
             row("Liang–Barsky ="),
-            "<mrow><mi>Liang–Barsky</mi><mo>=</mo></mrow>"
+            "<mrow><mi>Liang–Barsky</mi><mo form=\"infix\">=</mo></mrow>"
         );
         assert_eq!(
             row("piksel A"),
@@ -316,8 +339,19 @@ mod tests {
     fn a_surd_with_its_decimal() {
         assert_eq!(
             row("−√2/60 ≈ −0.02357"),
-            "<mrow><mo>−</mo><msqrt><mn>2</mn></msqrt><mo lspace=\"0\" rspace=\"0\">/</mo><mn>60</mn>\
-             <mo>≈</mo><mo>−</mo><mn>0.02357</mn></mrow>"
+            "<mrow><mo lspace=\"0\" rspace=\"0\">−</mo><msqrt><mn>2</mn></msqrt><mo lspace=\"0\" rspace=\"0\">/</mo><mn>60</mn>\
+             <mo form=\"infix\">≈</mo><mo lspace=\"0\" rspace=\"0\">−</mo><mn>0.02357</mn></mrow>"
+        );
+    }
+
+    #[test]
+    fn a_sign_is_set_close_and_a_difference_apart() {
+        // (−2 − 4): the first minus is the sign of 2, the second a difference
+        assert_eq!(
+            row("(−2 − 4)"),
+            "<mrow><mo stretchy=\"false\" lspace=\"0\" rspace=\"0\">(</mo>\
+             <mo lspace=\"0\" rspace=\"0\">−</mo><mn>2</mn><mo>−</mo><mn>4</mn>\
+             <mo stretchy=\"false\" lspace=\"0\" rspace=\"0\">)</mo></mrow>"
         );
     }
 
@@ -326,7 +360,7 @@ mod tests {
         assert_eq!(
             row("v₀² + Mcam⁻¹"),
             "<mrow><msup><msub><mi>v</mi><mn>0</mn></msub><mn>2</mn></msup><mo>+</mo>\
-             <msup><mi>Mcam</mi><mrow><mo>−</mo><mn>1</mn></mrow></msup></mrow>"
+             <msup><mi>Mcam</mi><mrow><mo lspace=\"0\" rspace=\"0\">−</mo><mn>1</mn></mrow></msup></mrow>"
         );
     }
 

@@ -76,6 +76,13 @@ impl Style {
 }
 
 impl Style {
+    /// A value as a source printed it (a `[printed]` entry of a problem
+    /// file), in the text's notation and this style's numbers: `(0, -1,
+    /// -6/sqrt(2))` → `(0; −1; −6/√2)` in Indonesian.
+    pub fn printed(&self, typed: &str) -> String {
+        self.dec(notation(typed))
+    }
+
     /// One number: `−√2/60 ≈ −0.02357`, `1/50 = 0.02`, `5`, `≈ 0.4142`, `0.4142`.
     pub fn num(&self, s: &Shown) -> String {
         self.dec(crate::num::format::shown(s, self.digits, self.exact_mode))
@@ -488,6 +495,65 @@ impl Compared {
     }
 }
 
+/// An expression as a file writes it (`-6/sqrt(2)`, `(0.0067, -0.0283)`)
+/// in the text's notation, not simplified: `−6/√2`, roots, π, `·` and
+/// the minus sign; the decimal mark and separator are the style's
+/// ([`Style::printed`]).
+pub fn notation(typed: &str) -> String {
+    let chars: Vec<char> = typed.chars().collect();
+    let mut out = String::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let rest: String = chars[i..].iter().take(4).collect();
+        if rest.eq_ignore_ascii_case("sqrt") {
+            i += 4;
+            if chars.get(i) == Some(&'(') {
+                // the root's argument, to its matching parenthesis
+                let (mut depth, start) = (0, i);
+                while i < chars.len() {
+                    depth += match chars[i] {
+                        '(' => 1,
+                        ')' => -1,
+                        _ => 0,
+                    };
+                    i += 1;
+                    if depth == 0 {
+                        break;
+                    }
+                }
+                let inner: String = chars[start + 1..i.saturating_sub(1).max(start + 1)]
+                    .iter()
+                    .collect();
+                let inner = notation(&inner);
+                if inner.chars().all(|c| c.is_ascii_digit()) && !inner.is_empty() {
+                    out.push_str(&format!("√{inner}"));
+                } else {
+                    out.push_str(&format!("√({inner})"));
+                }
+            } else {
+                out.push('√');
+            }
+            continue;
+        }
+        if rest.len() >= 2
+            && rest[..2].eq_ignore_ascii_case("pi")
+            && !chars.get(i + 2).is_some_and(|c| c.is_alphabetic())
+            && !(i > 0 && chars[i - 1].is_alphabetic())
+        {
+            out.push('π');
+            i += 2;
+            continue;
+        }
+        out.push(match chars[i] {
+            '-' => '−',
+            '*' => '·',
+            c => c,
+        });
+        i += 1;
+    }
+    out
+}
+
 /// The comparison with the printed answers, one line per answer.
 fn comparison_text(c: &Comparison, lang: Lang) -> String {
     let style = Style::new(4, true, lang);
@@ -498,7 +564,7 @@ fn comparison_text(c: &Comparison, lang: Lang) -> String {
     let printed = t(DocWord::Printed);
     for r in &c.rows {
         let name = words::keys::name_of(words::of(lang), &r.key);
-        let (key, shown) = (format!("{name} ({})", r.key), &r.printed);
+        let (key, shown) = (format!("{name} ({})", r.key), style.printed(&r.printed));
         let verdict = style.w(&Msg::Printed(r.verdict()));
         let why = (r.why.as_ref())
             .map(|w| format!(": {}", style.w(w)))
@@ -609,7 +675,7 @@ fn parenthesized(text: &str, before: Option<char>, after: Option<char>) -> Strin
     let wrap = power
         || factor
         || match before {
-            None | Some('(' | '[' | ';' | ',' | '=' | '|') => false,
+            None | Some('(' | '[' | ';' | ',' | '=' | '|' | '≤' | '<' | '>' | '≥') => false,
             Some('+') => negative,
             Some('−' | '·' | '×') => negative || sum,
             Some('/' | '^') => negative || op || (body.contains('√') && !body.starts_with('√')),

@@ -297,6 +297,11 @@ pub fn read_as(r: &Read, style: &Style) -> String {
     match r {
         Read::Word(w) if w == "true" => return style.doc(DocWord::Yes),
         Read::Word(w) if w == "false" => return style.doc(DocWord::No),
+        // a status and "nothing" in the student's words (`di-clip`, `tidak ada`)
+        Read::Word(w) if crate::report::words::said::status(w).is_some() => {
+            return style.val_inline(&Val::said(crate::msg::Said::Status(w.clone())));
+        }
+        Read::None => return style.val_inline(&Val::Null),
         _ => {}
     }
     fn en(r: &Read) -> String {

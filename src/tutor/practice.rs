@@ -30,7 +30,7 @@ use crate::tutor::check::Follow;
 use crate::tutor::check::{agrees, Marker, Settings, Verdict, FOLLOW_THROUGH};
 use crate::tutor::diagnose::Code;
 use crate::tutor::generate::{Difficulty, Topic};
-use crate::tutor::key::{Field, Key, Part, Shading, Value};
+use crate::tutor::key::{Edge, Field, Key, Part, Shading, Value};
 use crate::tutor::solution::value_of;
 
 /// One value the student is asked for.
@@ -144,6 +144,8 @@ fn step_name(key: &Key) -> Option<Name> {
             Field::Shading(S::NDotH) => Name::math("N·H"),
             Field::Shading(S::Color) => Name::Color,
             Field::Shading(S::Unclamped) => Name::Unclamped,
+            Field::Edge(Edge::Height, false) => Name::Height,
+            Field::Edge(Edge::Width, false) => Name::Width,
             // the step's name is the key's notation (`n`, `top`, `ambient`,
             // `R`); the far window's edges and the emissive term have no
             // step of their own, so none is found

@@ -605,7 +605,12 @@ mod tests {
             id.starts_with("12 mahasiswa dinilai; toleransi 0,5 %"),
             "{id}"
         );
-        assert!(id.ends_with("follow-through tidak aktif."), "{id}");
+        assert!(
+            id.ends_with(
+                "penilaian lanjutan (benar menurut jawaban sendiri sebelumnya) tidak aktif."
+            ),
+            "{id}"
+        );
     }
 
     #[test]

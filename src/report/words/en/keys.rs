@@ -43,6 +43,10 @@ impl KeyWords for En {
                 )
             }
             Value::Field(Field::Segment) => "clipped segment".to_string(),
+            // the steps' notation, not the keys' spelling
+            Value::Field(Field::Shading(Shading::CosAlpha)) => "cos α".to_string(),
+            Value::Field(Field::Shading(Shading::CosBeta)) => "cos β".to_string(),
+            Value::Field(Field::Shading(Shading::NDotH)) => "N·H".to_string(),
             Value::Field(f) => self.node(&Node::Field(*f)),
             Value::Plane(p) => self.plane(*p).to_string(),
             Value::Cut(p, c) => {
@@ -55,7 +59,15 @@ impl KeyWords for En {
                 format!("{what} ({})", self.plane(*p))
             }
             Value::Light(i) => return format!("light {i}"),
-            Value::Factor(i, f) => return format!("{} (light {i})", self.node(&Node::Factor(*f))),
+            Value::Factor(i, f) => {
+                let said = match f {
+                    Factor::InRange => "in range",
+                    Factor::Distance => "d",
+                    Factor::Attenuation => "Att",
+                    Factor::Spot => "Spot",
+                };
+                return format!("{said} (light {i})");
+            }
         };
         in_segment("segment", k, name)
     }
@@ -155,12 +167,14 @@ mod tests {
         assert_eq!(en("project.points.A"), "A''");
         assert_eq!(en("viewport.pixels.A"), "A pixel");
         assert_eq!(en("window.far_top"), "top (far plane)");
-        assert_eq!(en("shade.cos_alpha"), "cos_alpha");
+        assert_eq!(en("shade.cos_alpha"), "cos α");
+        assert_eq!(en("shade.N_dot_H"), "N·H");
+        assert_eq!(en("shade.lights[1].in_range"), "in range (light 1)");
         assert_eq!(
             en("clip[2].intersections.top.point"),
             "segment 2: P(t) (top)"
         );
-        assert_eq!(en("shade.lights[1].attenuation"), "attenuation (light 1)");
+        assert_eq!(en("shade.lights[1].attenuation"), "Att (light 1)");
     }
 
     #[test]

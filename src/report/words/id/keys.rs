@@ -28,7 +28,14 @@ impl KeyWords for Id {
                 Field::Matrix => "matriks pandang V",
                 Field::Points => "titik",
                 Field::Pixels => "piksel",
-                Field::Edge(..) | Field::Code0 | Field::Code1 | Field::Status => {
+                // the text's tinggi h and lebar w; the edges are notation,
+                // as the text's (l, b) – (r, t)
+                Field::Edge(Edge::Height, _) => "tinggi",
+                Field::Edge(Edge::Width, _) => "lebar",
+                Field::Edge(e, true) => {
+                    return format!("{} (far plane)", Node::Field(Field::Edge(*e, false)))
+                }
+                Field::Edge(_, false) | Field::Code0 | Field::Code1 | Field::Status => {
                     return n.to_string()
                 }
                 Field::Segment => "segmen garis hasil clipping",
@@ -123,7 +130,7 @@ impl KeyWords for Id {
                 Field::Matrix => "matriks transformasi pandang V".to_string(),
                 Field::Points => "semua titik".to_string(),
                 Field::Pixels => "semua piksel".to_string(),
-                Field::Edge(e, far) => window(*e, *far, &Node::Field(*f)),
+                Field::Edge(e, far) => window(*e, *far),
                 Field::Code0 => "region code P0".to_string(),
                 Field::Code1 => "region code P1".to_string(),
                 Field::Status => "status".to_string(),
@@ -156,8 +163,9 @@ impl KeyWords for Id {
 }
 
 /// An edge or size of the window in words (`top` → `batas atas viewing
-/// window (top)`; on the far plane, `… pada far plane (far_top)`).
-fn window(e: Edge, far: bool, key: &Node) -> String {
+/// window (top)`; on the far plane, `… pada far plane (top)`; the size as
+/// the text says it, `tinggi viewing window`).
+fn window(e: Edge, far: bool) -> String {
     let what = match e {
         Edge::Top => "batas atas",
         Edge::Bottom => "batas bawah",
@@ -166,13 +174,22 @@ fn window(e: Edge, far: bool, key: &Node) -> String {
         Edge::Height => "tinggi",
         Edge::Width => "lebar",
     };
-    let far = if far { " pada far plane" } else { "" };
-    format!("{what} viewing window{far} ({key})")
+    let at = if far { " pada far plane" } else { "" };
+    match e {
+        Edge::Height | Edge::Width => format!("{what} viewing window{at}"),
+        Edge::Top | Edge::Bottom | Edge::Left | Edge::Right => {
+            let notation = Node::Field(Field::Edge(e, false));
+            format!("{what} viewing window{at} ({notation})")
+        }
+    }
 }
 
 /// What a value of the lighting is.
 fn shading(s: Shading) -> String {
     let term = |s: Shading| format!("komponen {}", Node::Field(Field::Shading(s)));
+    if s == Shading::Unclamped {
+        return "jumlah komponen, sebelum dibatasi ke [0, 1]".to_string();
+    }
     match s {
         Shading::L => "vektor satuan L".to_string(),
         Shading::N => "vektor satuan N".to_string(),
@@ -218,6 +235,8 @@ mod tests {
         assert_eq!(id("viewport.pixels.A"), "piksel A");
         assert_eq!(id("window.top"), "top");
         assert_eq!(id("window.far_top"), "top (far plane)");
+        assert_eq!(id("window.height"), "tinggi");
+        assert_eq!(id("window.width"), "lebar");
         assert_eq!(id("clip.intersections.left.point"), "P(t) (kiri)");
         assert_eq!(
             id("clip[2].intersections.top.kept"),
@@ -234,8 +253,13 @@ mod tests {
         let id = |s| Id.answer_words(&key(s));
         assert_eq!(id("window.top"), "batas atas viewing window (top)");
         assert_eq!(
-            id("window.far_width"),
-            "lebar viewing window pada far plane (far_width)"
+            id("window.far_top"),
+            "batas atas viewing window pada far plane (top)"
+        );
+        assert_eq!(id("window.height"), "tinggi viewing window");
+        assert_eq!(
+            id("shade.unclamped"),
+            "jumlah komponen, sebelum dibatasi ke [0, 1]"
         );
         assert_eq!(id("view.points.A"), "koordinat kamera A'");
         assert_eq!(id("project.points.A"), "hasil proyeksi A''");

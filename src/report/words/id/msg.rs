@@ -95,7 +95,8 @@ impl MsgWords for Id {
             Msg::FDepth => "z = λ₀z₀ + λ₁z₁ + λ₂z₂ (z/w linear di layar); makin kecil makin dekat".into(),
             Msg::FBarycentric => "λₖ = Eₖ(pusat)/luas di layar;  koreksi perspektif μₖ = (λₖ/wₖ) / Σ λₘ/wₘ".into(),
             Msg::FFlat => "warna = lighting::shade(normal face N; pusat face)".into(),
-            Msg::FLiangBarsky => "t0 = nilai q/p terbesar di antara bidang yang dimasuki,  t1 = nilai q/p terkecil di antara bidang yang ditinggalkan,  terlihat bila t0 ≤ t1".into(),
+            Msg::FWindowEdges => "right = aspect·top,  bottom = −top,  left = −right,  tinggi = 2·top,  lebar = 2·right".into(),
+            Msg::FLiangBarsky => "p = −Δx, Δx, −Δy, Δy, −Δz, Δz dan q = x0 − xmin, xmax − x0, y0 − ymin, ymax − y0, z0 − zmin, zmax − z0 pada bidang x = xmin … z = zmax;  t0 = max(0, q/p untuk p < 0) (bidang yang dimasuki),  t1 = min(1, q/p untuk p > 0) (bidang yang ditinggalkan);  p = 0 dengan q < 0: di luar;  terlihat bila t0 ≤ t1, dari P0 + t0·Δ sampai P0 + t1·Δ".into(),
             Msg::FInside => "left ≤ xp ≤ right,  bottom ≤ yp ≤ top,  dan −far ≤ z' ≤ −near".into(),
             Msg::FSpot => "ρ = (−L)·axis;  Spot = 1 bila ρ ≥ cos(θ/2), 0 bila ρ ≤ cos(φ/2), selain itu ((ρ − cos(φ/2))/(cos(θ/2) − cos(φ/2)))^falloff".into(),
             Msg::FClamp => "warna = min(max(C; 0); 1)".into(),
@@ -105,6 +106,9 @@ impl MsgWords for Id {
             Msg::InRange => "setiap kanal sudah berada di [0, 1]".into(),
             Msg::NoTermInModel(model, t) => format!("model {model} tidak memiliki komponen {}", self.term(*t)),
             Msg::TextSetting => "satu sumber cahaya putih seperti di teks dan tanpa ambient global: jumlahnya 1·(faktor dalam teks)".into(),
+            Msg::TextTerm(Term::Ambient) => "Ia = Is·ka pada teks, dengan intensitas sumber cahaya Is = 1 (satu sumber cahaya putih), dikalikan warna permukaan Cs".into(),
+            Msg::TextTerm(Term::Diffuse) => "Id = Is·kd·MAX(cos α, 0) pada teks, dengan Is = 1, dikalikan warna permukaan Cs".into(),
+            Msg::TextTerm(Term::Specular) => "Isp = Is·ksp·MAX(cosⁿ β, 0) pada teks (ksp adalah ks), dengan Is = 1, dikalikan warna specular putih Cwhite".into(),
             Msg::SummedInRange => "dijumlahkan atas semua sumber cahaya dalam jangkauan".into(),
             Msg::SpecularSkipped => "komponen specular dilewati (ks = 0 atau --specular off)".into(),
             Msg::BeyondRange => "di luar jangkauannya sumber cahaya tidak menyumbang apa pun, ambient pun tidak".into(),
@@ -179,7 +183,7 @@ impl MsgWords for Id {
             Msg::NotAStatus(t) => format!("`{t}` bukan status: tulis diterima, ditolak atau di-clip (accepted, rejected, clipped)"),
             Msg::NotYesOrNo(t) => format!("`{t}` bukan ya atau tidak: tulis ya atau tidak (yes, no)"),
             Msg::AmbiguousCommas => "koma di sini dipakai sebagai tanda desimal sekaligus pemisah, sehingga bilangannya tidak dapat dibedakan: tulis 0,7071; 0; 0,7071 (koma desimal, bagian dipisahkan ;) atau 0.7071, 0, 0.7071".into(),
-            Msg::FollowThrough => "benar menurut jawaban sebelumnya (follow-through)".into(),
+            Msg::FollowThrough => "benar menurut jawaban sebelumnya (benar lanjutan)".into(),
             Msg::NoFollowFrom(a, why, b) => {
                 let name = |k: &str| crate::report::words::keys::name_of(self, k);
                 let (a, b) = (name(a), name(b));

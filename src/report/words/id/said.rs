@@ -20,9 +20,9 @@ impl SaidWords for Id {
                 n(png)
             ),
             Said::Status(code) => match said::status(code) {
-                Some(Status::Clipped) => format!("{code} (di-clip)"),
-                Some(Status::Accepted) => format!("{code} (diterima)"),
-                Some(Status::Rejected) => format!("{code} (ditolak)"),
+                Some(Status::Clipped) => "di-clip".to_string(),
+                Some(Status::Accepted) => "diterima".to_string(),
+                Some(Status::Rejected) => "ditolak".to_string(),
                 None => code.clone(),
             },
         }
