@@ -15,6 +15,7 @@ use grafika::report::figure::{
 };
 use grafika::report::lang::Lang;
 use grafika::report::Style;
+use grafika::tutor::generate::{self, Difficulty, Topic};
 use proptest::prelude::*;
 
 // ---- reading a figure back ----
@@ -45,6 +46,8 @@ struct M {
     dashed: Vec<bool>,
     /// Whether it is drawn (a face of the box is not).
     stroked: bool,
+    /// Whether it is a line with a head at its tip (`marker-end`).
+    head: bool,
 }
 
 /// One text read back: its kind (`label`, `note`, `title`), the mark it
@@ -183,12 +186,14 @@ fn read_svg(svg: &str) -> Vec<P> {
                 t => panic!("unexpected mark element {t}"),
             }
             let stroked = n.attribute("stroke") != Some("none");
+            let head = n.attribute("marker-end").is_some();
             p.marks.push(M {
                 name,
                 kind: kind.into(),
                 pts,
                 dashed,
                 stroked,
+                head,
             });
         }
         out.push(p);
@@ -834,64 +839,287 @@ fn distance(t: &T, m: &M) -> f64 {
         .fold(f64::MAX, f64::min)
 }
 
-/// Over every figure of every shipped problem, in both languages: each
-/// label within 40 px of its own mark, no two texts overlapping, no other
-/// mark's line through a label, every text on the page (text widths as
-/// the layout estimates them for DejaVu Sans, the widest common font).
-#[test]
-fn labels_stand_beside_their_own_marks_in_every_shipped_figure() {
-    let mut files: Vec<_> = std::fs::read_dir("problems")
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-        .collect();
-    files.sort();
-    let mut checked = 0;
-    for f in &files {
-        let f = f.to_string_lossy();
-        for lang in [Lang::En, Lang::Id] {
-            for d in drawn_in(lang, &["solve", &f]) {
-                let svg = to_svg(&d);
-                let width: f64 = 600.0;
-                let all: Vec<P> = read_svg(&svg);
-                let texts: Vec<&T> = all.iter().flat_map(|p| &p.texts).collect();
-                for (i, a) in texts.iter().enumerate() {
-                    assert!(
-                        a.bx.0 >= 0.0 && a.bx.1 <= width,
-                        "{f}: {:?} leaves the page",
-                        a.text
-                    );
-                    for b in &texts[..i] {
-                        let apart = a.bx.1 <= b.bx.0
-                            || b.bx.1 <= a.bx.0
-                            || a.bx.3 <= b.bx.2
-                            || b.bx.3 <= a.bx.2;
-                        assert!(apart, "{f}: {:?} overlaps {:?}", a.text, b.text);
+/// The points a label may name: a dot's centre, the tip of a line with a
+/// head (an arrow, an axis).
+fn spots(m: &M) -> Vec<(f64, f64)> {
+    match (m.kind.as_str(), m.head) {
+        ("point", _) => m.pts.clone(),
+        (_, true) => vec![m.pts[1]],
+        _ => vec![],
+    }
+}
+
+/// The ends of a mark's lines: both ends of a line (each of the box's
+/// edges), an arc's first and last point, an outline's corners.
+fn ends(m: &M) -> Vec<(f64, f64)> {
+    match m.kind.as_str() {
+        _ if !m.stroked || m.pts.len() < 2 => vec![],
+        "arc" => vec![m.pts[0], m.pts[m.pts.len() - 1]],
+        _ => m.pts.clone(),
+    }
+}
+
+/// The distance from a box to a point.
+fn box_to_point(b: (f64, f64, f64, f64), p: (f64, f64)) -> f64 {
+    box_to_segment(b, p, p)
+}
+
+/// The marks a label names: its own (`data-for`) and those its text
+/// names, the pieces between ` = ` and ` ≈ ` but the last that are marks'
+/// names (`N = V = (0, 0, 1)` names N and V).
+fn named_by<'a>(t: &'a T, p: &P) -> Vec<&'a str> {
+    let mut pieces: Vec<&str> = t.text.split(" = ").flat_map(|x| x.split(" ≈ ")).collect();
+    pieces.pop();
+    let mut out = vec![t.of.as_str()];
+    out.extend(pieces.into_iter().filter(|x| p.has(x)));
+    out
+}
+
+/// What is wrong with the labels of one drawing's SVG, measured from its
+/// own geometry (text extents estimated as the layout estimates them, for
+/// DejaVu Sans, the widest common sans-serif font; the SVG's coordinates
+/// are rounded to 0.1 px, so each bound is taken 0.5 to 1 px looser than
+/// the layout's own): each label
+/// - within 40 px of its own mark (a dot's centre, an arrow's or axis's
+///   tip, a segment, an arc, an outline, a face);
+/// - nearer its own mark than any other mark's dot or tip, by 2 px at
+///   least (the marks its text names excepted: `N = V = …`);
+/// - over no dot, no line and no line's end (1.5 px clear of it);
+/// - 9 px clear of every other label side by side, or 1.5 px above or
+///   below (closer, `fovy = 60°` and `near = 1` read as one phrase);
+/// and no two texts (labels, notes) overlap or leave the 600 px page.
+fn label_faults(svg: &str) -> Vec<String> {
+    let mut faults = Vec::new();
+    let all = read_svg(svg);
+    let texts: Vec<&T> = all.iter().flat_map(|p| &p.texts).collect();
+    for (i, a) in texts.iter().enumerate() {
+        if a.bx.0 < 0.0 || a.bx.1 > 600.0 {
+            faults.push(format!("{:?} leaves the page", a.text));
+        }
+        for b in &texts[..i] {
+            let (gx, gy) = match (a.kind.as_str(), b.kind.as_str()) {
+                ("label", "label") => (9.0, 1.5),
+                _ => (0.0, 0.0),
+            };
+            let apart = a.bx.1 + gx <= b.bx.0
+                || b.bx.1 + gx <= a.bx.0
+                || a.bx.3 + gy <= b.bx.2
+                || b.bx.3 + gy <= a.bx.2;
+            if !apart {
+                faults.push(format!("{:?} runs into {:?}", a.text, b.text));
+            }
+        }
+    }
+    for p in &all {
+        for t in p.texts.iter().filter(|t| t.kind == "label") {
+            let m = p.mark(&t.of);
+            let own = distance(t, m);
+            if own > 40.0 {
+                faults.push(format!("{:?} is {own:.1} px from {:?}", t.text, t.of));
+            }
+            let names = named_by(t, p);
+            for o in &p.marks {
+                for s in spots(o) {
+                    let d = box_to_point(t.bx, s);
+                    if !names.contains(&o.name.as_str()) && d < own + 2.0 {
+                        faults.push(format!(
+                            "{:?} is {d:.1} px from {:?}, {own:.1} from its own {:?}",
+                            t.text, o.name, t.of
+                        ));
                     }
                 }
-                for p in &all {
-                    for t in p.texts.iter().filter(|t| t.kind == "label") {
-                        let m = p.mark(&t.of);
-                        let d = distance(t, m);
-                        assert!(d <= 40.0, "{f}: {:?} is {d} px from {:?}", t.text, t.of);
-                        let inner = (t.bx.0 + 1.0, t.bx.1 - 1.0, t.bx.2 + 1.0, t.bx.3 - 1.0);
-                        for o in p.marks.iter().filter(|o| o.name != m.name && o.stroked) {
-                            for (a, b) in lines(o) {
-                                assert!(
-                                    !crosses(inner, a, b),
-                                    "{f}: {} crosses {:?}",
-                                    o.name,
-                                    t.text
-                                );
-                            }
+                for e in ends(o) {
+                    if box_to_point(t.bx, e) < 1.5 {
+                        faults.push(format!("{:?} is over an end of {:?}", t.text, o.name));
+                    }
+                }
+                if o.name == m.name || !o.stroked {
+                    continue;
+                }
+                let inner = (t.bx.0 + 1.0, t.bx.1 - 1.0, t.bx.2 + 1.0, t.bx.3 - 1.0);
+                if lines(o).iter().any(|(a, b)| crosses(inner, *a, *b)) {
+                    faults.push(format!("{:?} crosses {:?}", o.name, t.text));
+                }
+            }
+        }
+    }
+    faults
+}
+
+/// A few command lines of every calculator command with a figure, as
+/// README and students write them: README's examples, the other
+/// projections and lighting models, a far plane, and a student's own
+/// camera with a point near Pref.
+const COMMANDS: &[&[&str]] = &[
+    &[
+        "basis", "--eye", "3,1,3", "--look", "2,1,2", "--up", "0,1,0",
+    ],
+    &[
+        "view",
+        "--eye",
+        "4,4,4",
+        "--look",
+        "0,1,4",
+        "--up",
+        "0,1,0",
+        "--point",
+        "Pref=0,1,4",
+    ],
+    &[
+        "view",
+        "--eye",
+        "(0, 0, 5)",
+        "--look",
+        "0,0,0",
+        "--up",
+        "0,1,0",
+        "--point",
+        "P=0.3,0.2,0",
+    ],
+    &[
+        "project",
+        "--d",
+        "-0.1",
+        "--point",
+        "A=0,-1,-6/sqrt(2)",
+        "--point",
+        "B=1/sqrt(2),-1,-5/sqrt(2)",
+    ],
+    &[
+        "project", "--cop", "5", "--plane", "0", "--point", "A=1,2,-3",
+    ],
+    &[
+        "project",
+        "--ortho",
+        "--point",
+        "A=1,2,-3",
+        "--point",
+        "B=−1,0,−2",
+    ],
+    &[
+        "window",
+        "--fovy",
+        "45",
+        "--aspect",
+        "2",
+        "--near",
+        "0,1",
+        "--viewport",
+        "200x100",
+        "--point",
+        "A=0,-sqrt(2)/60",
+    ],
+    &[
+        "window",
+        "--fovy",
+        "90",
+        "--aspect",
+        "2",
+        "--near",
+        "1",
+        "--far",
+        "3",
+        "--viewport",
+        "200x100",
+        "--point",
+        "A=0.5,0.5",
+    ],
+    &[
+        "clip", "--min", "0,0,0", "--max", "3,4,3", "--from", "4,2,2", "--to", "-2,6,1",
+    ],
+    &[
+        "clip",
+        "--min",
+        "0,0,0",
+        "--max",
+        "1,1,1",
+        "--from",
+        "-1,0.5,0.5",
+        "--to",
+        "2,0.5,0.5",
+    ],
+    &[
+        "shade", "--light", "0,0,1", "--normal", "0,1,1", "--view", "0,0,1", "--color", "1,1,0",
+    ],
+    &[
+        "shade", "--model", "blinn", "--light", "1,1,1", "--normal", "0,1,0", "--view", "0,0,1",
+        "--color", "1,0.5,0",
+    ],
+    &[
+        "shade", "--normal", "0,0,1", "--light", "1,0,1", "--view", "0,1,1", "--color", "1,1,1",
+    ],
+];
+
+/// Every figure grafika draws from the shipped problems (`solve`), from
+/// the calculator commands above and from generated exams (every topic at
+/// every difficulty, two seeds), in both languages: no label fault
+/// ([`label_faults`]).
+#[test]
+fn labels_stand_on_their_own_marks_in_every_figure() {
+    let mut files: Vec<_> = std::fs::read_dir("problems")
+        .unwrap()
+        .map(|e| e.unwrap().path().to_string_lossy().into_owned())
+        .filter(|p| p.ends_with(".toml"))
+        .collect();
+    files.sort();
+    let mut runs: Vec<Vec<String>> = files
+        .iter()
+        .map(|f| vec!["solve".into(), f.clone()])
+        .collect();
+    runs.extend(
+        COMMANDS
+            .iter()
+            .map(|c| c.iter().map(|a| a.to_string()).collect()),
+    );
+    let mut faults = Vec::new();
+    let mut labels = 0;
+    let mut check = |what: &str, d: &Drawing| {
+        let svg = to_svg(d);
+        labels += svg.matches(r#"data-kind="label""#).count();
+        faults.extend(
+            label_faults(&svg)
+                .into_iter()
+                .map(|f| format!("{what}: {f}")),
+        );
+    };
+    for lang in [Lang::En, Lang::Id] {
+        for args in &runs {
+            let args: Vec<&str> = args.iter().map(String::as_str).collect();
+            for d in drawn_in(lang, &args) {
+                check(&format!("{lang:?} {args:?} {}", d.part), &d);
+            }
+        }
+        for topic in [
+            Topic::Basis,
+            Topic::View,
+            Topic::Project,
+            Topic::Window,
+            Topic::Clip,
+            Topic::Shade,
+            Topic::Pipeline,
+        ] {
+            for level in [Difficulty::Easy, Difficulty::Medium, Difficulty::Hard] {
+                for seed in [3, 2026] {
+                    for (k, g) in generate::exam(&[topic], level, 2, seed)
+                        .unwrap()
+                        .iter()
+                        .enumerate()
+                    {
+                        for d in drawings(&g.report, &Style::new(4, true, lang)) {
+                            check(&format!("{lang:?} {topic:?} {level:?} {seed} #{k}"), &d);
                         }
-                        checked += 1;
                     }
                 }
             }
         }
     }
-    assert!(checked > 300, "{checked} labels checked");
+    assert!(
+        faults.is_empty(),
+        "{} faults:\n{}",
+        faults.len(),
+        faults.join("\n")
+    );
+    assert!(labels > 2000, "{labels} labels checked");
 }
 
 // ---- words ----
@@ -1431,3 +1659,4 @@ fn a_figure_of_nothing_drawable_is_said_not_silent() {
     assert_eq!(svgs.count(), 0, "no figure file");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
