@@ -755,6 +755,117 @@ fn the_clip_box_names_its_planes_codes_and_intersections() {
 
 // ---- every label beside its own mark ----
 
+/// The centre of a face of the clip box on the page (px, y down).
+fn centre(m: &M) -> (f64, f64) {
+    let n = m.pts.len() as f64;
+    let (x, y) = m.pts.iter().fold((0.0, 0.0), |a, p| (a.0 + p.0, a.1 + p.1));
+    (x / n, y / n)
+}
+
+/// The clip box of one panel drawn as the text's region codes read it
+/// (bit 1 left x < xmin, bit 2 right x > xmax, bit 3 bottom y < ymin, bit 4
+/// top y > ymax, bit 5 front z < zmin, bit 6 back z > zmax; spec §1): the
+/// front face z = zmin toward the reader, the back face z = zmax away.
+/// Read from the SVG alone: the corner where the three dashed (hidden)
+/// edges meet is the box's corner farthest from the reader, so it is a
+/// corner of the back face and of no corner of the front face; the right
+/// face's centre lies right of the left face's on the page, the top
+/// face's above the bottom face's; and the words on the faces say so.
+fn clip_faces_read(p: &P, lang: Lang, what: &str) {
+    let b = p.mark("box");
+    let hidden: Vec<((f64, f64), (f64, f64))> = (0..12)
+        .filter(|i| b.dashed[*i])
+        .map(|i| (b.pts[2 * i], b.pts[2 * i + 1]))
+        .collect();
+    assert_eq!(hidden.len(), 3, "{what}: three hidden edges");
+    let near = |a: (f64, f64), c: (f64, f64)| (a.0 - c.0).hypot(a.1 - c.1) < 0.5;
+    let corner = [hidden[0].0, hidden[0].1]
+        .into_iter()
+        .find(|c| hidden.iter().all(|(a, e)| near(*a, *c) || near(*e, *c)))
+        .unwrap_or_else(|| panic!("{what}: the hidden edges meet at no corner"));
+    let has = |face: &str| p.mark(face).pts.iter().any(|q| near(*q, corner));
+    assert!(
+        has("z = zmax"),
+        "{what}: the back face is not away from the reader"
+    );
+    assert!(
+        !has("z = zmin"),
+        "{what}: the front face is not toward the reader"
+    );
+    let (l, r) = (centre(p.mark("x = xmin")), centre(p.mark("x = xmax")));
+    assert!(r.0 > l.0, "{what}: x = xmax is not right of x = xmin");
+    let (bt, tp) = (centre(p.mark("y = ymin")), centre(p.mark("y = ymax")));
+    assert!(tp.1 < bt.1, "{what}: y = ymax is not above y = ymin");
+    let words = match lang {
+        Lang::En => [
+            "(left)", "(right)", "(bottom)", "(top)", "(front)", "(back)",
+        ],
+        Lang::Id => ["kiri", "kanan", "bawah", "atas", "depan", "belakang"],
+    };
+    let planes = [
+        "x = xmin", "x = xmax", "y = ymin", "y = ymax", "z = zmin", "z = zmax",
+    ];
+    for (plane, word) in planes.iter().zip(words) {
+        // A face's label may be written short, its text in a note.
+        let text = p.label(plane).map_or_else(|| p.notes(), str::to_string);
+        assert!(
+            text.contains(word),
+            "{what}: {plane} is not {word}: {text:?}"
+        );
+    }
+}
+
+/// Every clip box grafika draws (the shipped problems, README's command
+/// and a segment along x, generated exams at every difficulty, both
+/// languages) has its face words where the drawing puts those faces
+/// ([`clip_faces_read`]).
+#[test]
+fn the_clip_boxs_face_words_agree_with_the_drawing() {
+    let mut files: Vec<String> = std::fs::read_dir("problems")
+        .unwrap()
+        .map(|e| e.unwrap().path().to_string_lossy().into_owned())
+        .filter(|p| p.ends_with(".toml"))
+        .collect();
+    files.sort();
+    let mut runs: Vec<Vec<String>> = files
+        .iter()
+        .map(|f| vec!["solve".into(), f.clone()])
+        .collect();
+    runs.extend(
+        COMMANDS
+            .iter()
+            .filter(|c| c[0] == "clip")
+            .map(|c| c.iter().map(|a| a.to_string()).collect()),
+    );
+    let mut boxes = 0;
+    let mut check = |lang: Lang, what: &str, d: &Drawing| {
+        for p in read_svg(&to_svg(d)).iter().filter(|p| p.has("box")) {
+            clip_faces_read(p, lang, what);
+            boxes += 1;
+        }
+    };
+    for lang in [Lang::En, Lang::Id] {
+        for args in &runs {
+            let args: Vec<&str> = args.iter().map(String::as_str).collect();
+            for d in drawn_in(lang, &args) {
+                check(lang, &format!("{args:?}"), &d);
+            }
+        }
+        for level in [Difficulty::Easy, Difficulty::Medium, Difficulty::Hard] {
+            for (k, g) in generate::exam(&[Topic::Clip], level, 4, 7)
+                .unwrap()
+                .iter()
+                .enumerate()
+            {
+                for d in drawings(&g.report, &Style::new(4, true, lang)) {
+                    check(lang, &format!("{level:?} #{k}"), &d);
+                }
+            }
+        }
+    }
+    assert!(boxes >= 30, "{boxes} boxes checked");
+}
+
 /// The distance from a box to a segment (0 when it crosses).
 fn box_to_segment(b: (f64, f64, f64, f64), p: (f64, f64), q: (f64, f64)) -> f64 {
     if crosses(b, p, q) {
@@ -1659,4 +1770,3 @@ fn a_figure_of_nothing_drawable_is_said_not_silent() {
     assert_eq!(svgs.count(), 0, "no figure file");
     std::fs::remove_dir_all(&dir).unwrap();
 }
-
