@@ -416,6 +416,105 @@ fn shading_diagrams_of_the_shipped_problems_at_true_angles() {
     }
 }
 
+/// The angles a report's steps name, in the figure's names: each step
+/// whose result holds `cos α` names α (α2, α3, … for the second, third
+/// light: the steps are in the lights' order), `cos β` names β, and
+/// Blinn's `N·H` names N·H.
+fn angles_named(report: &grafika::tutor::solution::Report) -> Vec<String> {
+    let json = serde_json::to_value(report.to_json(Lang::En)).unwrap();
+    let mut steps = Vec::new();
+    fn walk<'a>(v: &'a serde_json::Value, out: &mut Vec<&'a serde_json::Value>) {
+        match v {
+            serde_json::Value::Object(m) => {
+                if let Some(serde_json::Value::Array(s)) = m.get("steps") {
+                    out.extend(s.iter());
+                }
+                m.values().for_each(|x| walk(x, out));
+            }
+            serde_json::Value::Array(a) => a.iter().for_each(|x| walk(x, out)),
+            _ => {}
+        }
+    }
+    walk(&json, &mut steps);
+    let (mut a, mut b) = (0, 0);
+    let mut out = Vec::new();
+    let tag = |k: usize| if k == 1 { String::new() } else { k.to_string() };
+    for s in steps {
+        let r = &s["result"];
+        if !r["cos α"].is_null() {
+            a += 1;
+            out.push(format!("α{}", tag(a)));
+        }
+        if !r["cos β"].is_null() {
+            b += 1;
+            out.push(format!("β{}", tag(b)));
+        }
+        if !r["N·H"].is_null() {
+            out.push("N·H".into());
+        }
+    }
+    out
+}
+
+/// Every angle the steps name has its arc in the figure: the shipped
+/// lighting problems (shade-blinn-local's α = 0°, L along N, drawn as a
+/// short arc across the two arrows side by side), the shading command
+/// lines above and generated lighting exams at every difficulty.
+#[test]
+fn every_angle_the_steps_name_has_its_arc() {
+    let mut files: Vec<String> = std::fs::read_dir("problems")
+        .unwrap()
+        .map(|e| e.unwrap().path().to_string_lossy().into_owned())
+        .filter(|p| p.contains("/shade-"))
+        .collect();
+    files.sort();
+    let mut reports: Vec<(String, grafika::tutor::solution::Report)> = Vec::new();
+    let mut runs: Vec<Vec<String>> = files
+        .iter()
+        .map(|f| vec!["solve".into(), f.clone()])
+        .collect();
+    runs.extend(
+        COMMANDS
+            .iter()
+            .filter(|c| c[0] == "shade")
+            .map(|c| c.iter().map(|a| a.to_string()).collect()),
+    );
+    for args in runs {
+        let mut all = vec!["grafika".to_string()];
+        all.extend(args.iter().cloned());
+        let cli = Cli::try_parse_from(all).expect("arguments parse");
+        reports.push((format!("{args:?}"), grafika::cli::run(&cli).unwrap()));
+    }
+    for level in [Difficulty::Easy, Difficulty::Medium, Difficulty::Hard] {
+        for (k, g) in generate::exam(&[Topic::Shade], level, 4, 11)
+            .unwrap()
+            .into_iter()
+            .enumerate()
+        {
+            reports.push((format!("{level:?} #{k}"), g.report));
+        }
+    }
+    let mut arcs = 0;
+    for (what, report) in &reports {
+        let named = angles_named(report);
+        assert!(!named.is_empty(), "{what}: no angle named");
+        for lang in [Lang::En, Lang::Id] {
+            let drawn: Vec<String> = drawings(report, &Style::new(4, true, lang))
+                .iter()
+                .flat_map(|d| read_svg(&to_svg(d)))
+                .flat_map(|p| p.marks)
+                .filter(|m| m.kind == "arc")
+                .map(|m| m.name)
+                .collect();
+            for a in &named {
+                assert!(drawn.contains(a), "{what} {lang:?}: no arc {a}: {drawn:?}");
+                arcs += 1;
+            }
+        }
+    }
+    assert!(arcs > 60, "{arcs} arcs");
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
     /// Random N and L, with V in their plane (V = a·N + b·L): the diagram
@@ -768,7 +867,7 @@ fn centre(m: &M) -> (f64, f64) {
 /// front face z = zmin toward the reader, the back face z = zmax away.
 /// Read from the SVG alone: the corner where the three dashed (hidden)
 /// edges meet is the box's corner farthest from the reader, so it is a
-/// corner of the back face and of no corner of the front face; the right
+/// corner of the back face and not one of the front face; the right
 /// face's centre lies right of the left face's on the page, the top
 /// face's above the bottom face's; and the words on the faces say so.
 fn clip_faces_read(p: &P, lang: Lang, what: &str) {
