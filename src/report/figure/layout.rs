@@ -439,4 +439,66 @@ mod tests {
         assert!((text_width("0") - 9.54).abs() < 1e-9);
         assert!((text_width("x −") - (8.88 + 4.77 + 12.57)).abs() < 1e-9);
     }
+
+    /// A panel of n dots P1 … Pn scattered over a 6 × 4 page area (a
+    /// fixed pseudo-random sequence), each labelled `Pk = (x, y)`.
+    fn dots(n: usize) -> Figure {
+        let mut seed: u64 = 12345;
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut items = Vec::new();
+        for k in 1..=n {
+            let (x, y) = (6.0 * next(), 4.0 * next());
+            let name = format!("P{k}");
+            items.push(super::super::mark(
+                &name,
+                super::super::Kind::Point,
+                super::super::Pen::Given,
+                Shape::Dot([x, y]),
+            ));
+            items.push(super::super::label(
+                &name,
+                format!("{name} = ({x:.2}, {y:.2})"),
+            ));
+        }
+        Figure {
+            items,
+            ..Figure::default()
+        }
+    }
+
+    /// Beyond MAX_LABELS labels a panel places at most the first 40 (those
+    /// that stand clear among 400 dots) and lists the
+    /// others' texts in its notes; the work stays bounded: a dot's label
+    /// is tried at 4 gaps × 20 boxes = 80 candidates, placed once and
+    /// again at most 3 times (two rounds and its short form), so at most
+    /// 40 × 4 × 80 = 12,800 candidates are costed however many points
+    /// there are; the obstacles tested grow with the points near the
+    /// labels, not with the square of the points (5 × the points: less
+    /// than 8 × the tests; testing every label against every mark would
+    /// be 25 ×).
+    #[test]
+    fn labels_beyond_forty_are_listed_and_the_work_is_bounded() {
+        let small = lay_out(&dots(400));
+        let big = lay_out(&dots(2000));
+        for laid in [&small, &big] {
+            assert!(laid.labels[MAX_LABELS..].iter().all(Option::is_none));
+            let placed = laid.labels.iter().flatten().count();
+            assert!((1..=MAX_LABELS).contains(&placed), "{placed} placed");
+            assert!(laid.work.candidates <= 12_800, "{:?}", laid.work);
+        }
+        let notes: Vec<&str> = big.notes.iter().map(|n| n.text.as_str()).collect();
+        let notes = notes.join(" ");
+        for k in [41, 1000, 2000] {
+            assert!(notes.contains(&format!("P{k} = (")), "P{k} listed");
+        }
+        assert!(
+            big.work.tests < 8 * small.work.tests,
+            "{:?} {:?}",
+            small.work,
+            big.work
+        );
+    }
 }
