@@ -88,7 +88,7 @@ impl MsgWords for En {
             Msg::FCamMatrix => "Mcam = T(Pe) · [u v n]   (columns u, v, n, Pe)".into(),
             Msg::FViewMatrix => "V = R · T(−Pe),  R = [uᵀ; vᵀ; nᵀ],  last column (−u·Pe, −v·Pe, −n·Pe)".into(),
             Msg::FTrivial => "both codes 000000 → accept;  code0 AND code1 ≠ 000000 → reject;  otherwise clip".into(),
-            Msg::FOutcode => "bit 1 x<xmin (kiri) · bit 2 x>xmax (kanan) · bit 3 y<ymin (bawah) · bit 4 y>ymax (atas) · bit 5 z<zmin (depan) · bit 6 z>zmax (belakang); the code is written bit 6 … bit 1 (bit 1 rightmost)".into(),
+            Msg::FOutcode => "bit 1 x<xmin (left) · bit 2 x>xmax (right) · bit 3 y<ymin (bottom) · bit 4 y>ymax (top) · bit 5 z<zmin (front) · bit 6 z>zmax (back); the code is written bit 6 … bit 1 (bit 1 rightmost)".into(),
             Msg::FSegment => "from the kept point with the smallest t to the one with the largest t (inside ends count as t = 0 and t = 1)".into(),
             Msg::FMethods => "outcode clipping against Liang–Barsky".into(),
             Msg::FProjPlane => "z = d,  d = −near (the camera looks along −z in eye coordinates)".into(),
