@@ -18,6 +18,7 @@ pub mod mistakes;
 pub mod moodle;
 pub mod page;
 pub mod practice;
+pub mod quizfile;
 pub mod render;
 pub mod sheets;
 pub mod words;
@@ -38,35 +39,49 @@ pub struct Style {
     pub digits: usize,
     /// Whether the run was exact (approximate values are then marked ≈).
     pub exact_mode: bool,
-    /// The language of the words (and the decimal mark).
+    /// The language of the words.
     pub lang: Lang,
+    /// How numbers are written: the language's own decimal mark and
+    /// separator ([`Style::new`]), or a quiz's `--decimal`
+    /// ([`Style::with_nums`]).
+    pub nums: NumStyle,
 }
 
 impl Style {
-    /// `digits` significant digits, approximate values marked ≈ when `exact_mode`, in `lang`.
+    /// `digits` significant digits, approximate values marked ≈ when
+    /// `exact_mode`, in `lang` with its own decimal mark.
     pub fn new(digits: usize, exact_mode: bool, lang: Lang) -> Style {
         Style {
             digits,
             exact_mode,
             lang,
+            nums: words::of(lang).nums(),
         }
+    }
+
+    /// The same style with its numbers written in `nums` (one decimal mark
+    /// for a whole quiz, whatever its language: every number of the
+    /// solution, its figures and the words that hold numbers).
+    pub fn with_nums(self, nums: NumStyle) -> Style {
+        Style { nums, ..self }
     }
 }
 
 pub use crate::num::format::fmt_dec;
 
 impl Style {
-    /// The words of a message key in this style's language.
+    /// The words of a message key in this style's language, its numbers in
+    /// this style's ([`words::words_in`]).
     pub fn w(&self, m: &Msg) -> String {
-        words::words(m, self.lang)
+        words::words_in(m, self.lang, self.nums)
     }
     /// A word the documents share, in this style's language.
     pub fn doc(&self, w: DocWord) -> String {
         words::of(self.lang).doc(&w)
     }
-    /// How this style's language writes numbers.
+    /// How this style writes numbers.
     pub fn nums(&self) -> NumStyle {
-        words::of(self.lang).nums()
+        self.nums
     }
     /// Values formatted the English way written in this style's language
     /// ([`NumStyle::values`]): `(0.8, 0.6, 0)` → `(0,8; 0,6; 0)` in Indonesian.
