@@ -111,6 +111,28 @@ pub enum Printed {
     NotComparable,
 }
 
+/// Why a student's earlier value cannot start follow-through: it is not
+/// what its step could give (`tutor::check::plausible`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Implausible {
+    /// Not a unit vector (a camera axis, L, N, H, R).
+    NotUnit,
+    /// Not perpendicular to the axis before it (that axis's key).
+    NotPerpendicular(String),
+    /// An intersection point off the segment (or off its plane).
+    OffSegment,
+    /// A cosine outside [−1, 1].
+    NotACosine,
+    /// A colour outside [0, 1].
+    NotAColour,
+    /// A term of the lighting below 0.
+    Negative,
+    /// A window edge that must be positive.
+    NotPositive,
+    /// A window edge that must be negative.
+    NotNegative,
+}
+
 /// One message for a person.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Msg {
@@ -364,8 +386,6 @@ pub enum Msg {
     Rounded(u32),
     /// Rounded to n significant figures, at least m required.
     RoundedCoarse(u32, u32),
-    /// n significant figures, at least m required.
-    SigCoarse(u32, u32),
     /// Within this percentage.
     WithinPct(String),
     /// Within half a pixel (a pixel position).
@@ -374,8 +394,15 @@ pub enum Msg {
     NotAnOutcode(String),
     /// Not a clipping status (the text as written).
     NotAStatus(String),
+    /// Not yes or no (the text as written).
+    NotYesOrNo(String),
+    /// Commas both as decimal marks and as separators: ambiguous.
+    AmbiguousCommas,
     /// Right given the student's earlier answers (follow-through).
     FollowThrough,
+    /// Would follow from an earlier answer that cannot be (no
+    /// follow-through): that answer's key, why it cannot be, this key.
+    NoFollowFrom(String, Implausible, String),
     /// Notes of components: (label, note), joined.
     Parts(Vec<(String, Msg)>),
 

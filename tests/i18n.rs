@@ -6,24 +6,8 @@
 //! Indonesian, and the shipped problems' Indonesian titles and errata.
 
 mod common;
-use common::{grafika, refusal, root, scratch};
+use common::{grafika, refusal, root, scratch, text};
 use serde_json::Value;
-
-/// The output of `grafika --lang LANG ARGS`, expecting success.
-fn text(lang: &str, args: &[&str]) -> String {
-    let out = grafika()
-        .env_remove("GRAFIKA_LANG")
-        .args(["--lang", lang])
-        .args(args)
-        .output()
-        .expect("runs");
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).expect("UTF-8")
-}
 
 /// Compares with tests/snapshots/NAME; `GRAFIKA_SNAPSHOTS=write` writes it.
 fn snapshot(name: &str, got: &str) {
@@ -158,7 +142,7 @@ fn a_check_report_in_indonesian() {
         "seharusnya",
         "Diagnosis:",
         "menghasilkan ulang",
-        "Nilai: 7/18 (7 benar",
+        "Nilai: 7/18 = 38,9% (7 benar",
         "salah",
     ] {
         assert!(t.contains(w), "{w} missing in:\n{t}");

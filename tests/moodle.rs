@@ -22,7 +22,7 @@ use grafika::report::lang::Lang;
 use grafika::report::mistakes::mistake_text;
 use grafika::report::moodle::{moodle_xml, typeable, Decimal, Written};
 use grafika::report::Style;
-use grafika::tutor::check::default_keys;
+use grafika::tutor::check::scheme::Scheme;
 use grafika::tutor::diagnose::Code;
 use grafika::tutor::generate::quiz::Quiz;
 use grafika::tutor::generate::{Generated, Topic};
@@ -164,7 +164,9 @@ fn xml_questions(xml: &str) -> Vec<(String, String, String, String)> {
 fn generated(toml: &str) -> Generated {
     let problem = ProblemIn::parse(toml, "test").expect("parses");
     let report = solve::solve::<Real>(&problem).expect("solves");
-    let keys = default_keys(&report.result);
+    let order = grafika::tutor::keys::ordered_keys(&report.result);
+    let scheme = Scheme::of(&problem, &report.result, &order).expect("a scheme");
+    let keys = scheme.keys().cloned().collect();
     // The problem's own words stand for the drawn title and statement.
     Generated {
         title: Msg::Math(problem.title.clone()),
@@ -173,6 +175,7 @@ fn generated(toml: &str) -> Generated {
         problem,
         report,
         keys,
+        scheme,
     }
 }
 
@@ -194,7 +197,8 @@ const CAMERA: &str = "title = 'Camera'\nstatement = 'The camera example.'\nask =
 /// u = (0, 0, −1); v = n × u = (−0.6, 0.8, 0); Pref' = (0, 0, −5).
 /// Mistakes by hand: u = n × Vup flips u and v; n from Pr − Pe flips n and
 /// u (v = n × u stays); n not normalized is (4, 3, 0) and v = n × u then
-/// (−3, 4, 0); u not normalized is Vup × n = (0, 0, −0.8) and v (−0.48, 0.64, 0).
+/// (−3, 4, 0); u not normalized is Vup × n = (0, 0, −0.8) and v (−0.48, 0.64, 0);
+/// u and v swapped writes u = (−0.6, 0.8, 0) and v = (0, 0, −1).
 #[test]
 fn the_camera_example_has_the_keys_tolerances_and_mistakes_derived_by_hand() {
     let qs = one_problem_xml(CAMERA, Lang::En);
@@ -261,10 +265,11 @@ fn the_camera_example_has_the_keys_tolerances_and_mistakes_derived_by_hand() {
     wrong(6, 4.0, "n_not_normalized");
     wrong(7, -0.6, "n_reversed");
     wrong(7, 3.0, "n_not_normalized");
-    // zeros that every mistake keeps zero have no wrong answers
-    for i in [0, 1, 5, 8] {
-        assert_eq!(blanks[i].alts.len(), 1, "{:?}", blanks[i]);
-    }
+    wrong(0, -0.6, "uv_swapped");
+    wrong(1, 0.8, "uv_swapped");
+    wrong(5, -1.0, "uv_swapped");
+    // n's zero, that every mistake keeps zero, has no wrong answers
+    assert_eq!(blanks[8].alts.len(), 1, "{:?}", blanks[8]);
     // the general feedback holds the answers, named as the steps name
     // them, with a minus Moodle reads, and the worked solution
     assert!(qs[1].3.contains("<li>u = (0, 0, -1)</li>"), "{}", qs[1].3);
@@ -723,7 +728,10 @@ fn an_absurd_mistaken_value_is_left_out() {
     let fovy = Code::FovyNotHalved;
     for b in &blanks {
         for a in &b.alts[1..] {
-            assert!(!a.feedback.contains(&typeable(mistake_text(fovy, Lang::En))), "{a:?}");
+            assert!(
+                !a.feedback.contains(&typeable(mistake_text(fovy, Lang::En))),
+                "{a:?}"
+            );
             assert!(num_tol(&a.answer).0.abs() < 1e6, "{a:?}");
         }
     }
@@ -972,7 +980,9 @@ fn cloze_labels(xml: &str) -> Vec<String> {
         for p in text.split("<p>").skip(1) {
             let p = p.split("</p>").next().unwrap();
             if let Some((label, _)) = p.split_once(" = ").filter(|(_, r)| {
-                r.starts_with("{1:") || r.starts_with("({1:") || r.starts_with("<table>")
+                r.starts_with("{1:")
+                    || r.starts_with("({1:")
+                    || r.starts_with("<table>")
                     || r.starts_with("(({1:")
             }) {
                 out.push(decode(label));
@@ -987,7 +997,10 @@ fn cloze_labels(xml: &str) -> Vec<String> {
 fn spells_a_key(label: &str) -> bool {
     let dotted = label.split(' ').any(|w| {
         let parts: Vec<&str> = w.split('.').collect();
-        parts.len() > 1 && parts.iter().all(|p| !p.is_empty() && p.chars().all(|c| c.is_alphanumeric() || c == '_'))
+        parts.len() > 1
+            && parts
+                .iter()
+                .all(|p| !p.is_empty() && p.chars().all(|c| c.is_alphanumeric() || c == '_'))
     });
     dotted || label.contains('_') || label.contains("code0") || label.contains("code1")
 }
@@ -1009,13 +1022,25 @@ fn no_label_spells_a_json_key_and_indonesian_labels_are_the_texts() {
             if let Gift::Question { name, text, .. } = q {
                 let label = name.split(" — ").nth(1).unwrap();
                 assert!(!spells_a_key(label), "{lang}: {name}");
-                assert!(text.ends_with(&format!("{} = ?</p>", escaped(label))), "{text}");
+                assert!(
+                    text.ends_with(&format!("{} = ?</p>", escaped(label))),
+                    "{text}"
+                );
             }
         }
         let has = |l: &str| labels.iter().any(|x| x == l);
         match lang {
             "en" => {
-                for l in ["n", "A'", "A''", "A pixel", "top", "width", "outcode of P0", "cos α"] {
+                for l in [
+                    "n",
+                    "A'",
+                    "A''",
+                    "A pixel",
+                    "top",
+                    "width",
+                    "outcode of P0",
+                    "cos α",
+                ] {
                     assert!(has(l), "{l}: {labels:?}");
                 }
             }
@@ -1045,7 +1070,9 @@ fn no_label_spells_a_json_key_and_indonesian_labels_are_the_texts() {
 
 /// A label as the question text escapes it.
 fn escaped(s: &str) -> String {
-    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
 }
 
 #[test]
@@ -1053,8 +1080,20 @@ fn gift_names_its_blanks_as_the_steps_do_and_speaks_to_students_only() {
     let out = tmp("names");
     let run = grafika()
         .args(["--lang", "id", "generate", "--topic"])
-        .args(["basis,view,project,window,clip,shade,pipeline", "--count", "7"])
-        .args(["--variants", "2", "--seed", "11", "--format", "gift", "--out"])
+        .args([
+            "basis,view,project,window,clip,shade,pipeline",
+            "--count",
+            "7",
+        ])
+        .args([
+            "--variants",
+            "2",
+            "--seed",
+            "11",
+            "--format",
+            "gift",
+            "--out",
+        ])
         .arg(&out)
         .output()
         .unwrap();
@@ -1102,8 +1141,22 @@ fn a_clip_question_accepts_the_words_of_its_language_and_the_codes() {
     // three clipping problems of one exam take the three statuses
     let args = ["--topic", "clip", "--count", "3", "--variants", "4"];
     for (lang, words) in [
-        ("id", [("clipped", "di-clip"), ("accepted", "diterima"), ("rejected", "ditolak")]),
-        ("en", [("clipped", "clipped"), ("accepted", "accepted"), ("rejected", "rejected")]),
+        (
+            "id",
+            [
+                ("clipped", "di-clip"),
+                ("accepted", "diterima"),
+                ("rejected", "ditolak"),
+            ],
+        ),
+        (
+            "en",
+            [
+                ("clipped", "clipped"),
+                ("accepted", "accepted"),
+                ("rejected", "rejected"),
+            ],
+        ),
     ] {
         let out = tmp(&format!("words-{lang}"));
         let run = grafika()
@@ -1127,12 +1180,20 @@ fn a_clip_question_accepts_the_words_of_its_language_and_the_codes() {
                     .collect();
                 // the language's word first (the answer Moodle shows), then
                 // the code when it differs
-                let want = if code == word { vec![code] } else { vec![word, code] };
+                let want = if code == word {
+                    vec![code]
+                } else {
+                    vec![word, code]
+                };
                 assert_eq!(full, want, "{lang}");
             }
         }
         // a rejected segment leaves none: "tidak ada" or "none"
-        let segment = if lang == "id" { "segmen garis hasil clipping" } else { "clipped segment" };
+        let segment = if lang == "id" {
+            "segmen garis hasil clipping"
+        } else {
+            "clipped segment"
+        };
         let none: Vec<Blank> = blanks_labelled(&xml, segment)
             .into_iter()
             .filter(|b| b.kind == "SHORTANSWER")
@@ -1143,14 +1204,22 @@ fn a_clip_question_accepts_the_words_of_its_language_and_the_codes() {
                 .filter(|a| a.fraction == 1.0)
                 .map(|a| a.answer.as_str())
                 .collect();
-            let want = if lang == "id" { vec!["tidak ada", "none"] } else { vec!["none"] };
+            let want = if lang == "id" {
+                vec!["tidak ada", "none"]
+            } else {
+                vec!["none"]
+            };
             assert_eq!(full, want);
         }
         // the instruction names the words it takes
         let texts: Vec<String> = xml_questions(&xml).into_iter().map(|q| q.2).collect();
         if lang == "id" {
-            assert!(texts.iter().all(|t| t.is_empty() || t.contains("diterima, ditolak atau di-clip")));
-            assert!(texts.iter().all(|t| t.is_empty() || t.contains("tidak ada (atau none)")));
+            assert!(texts
+                .iter()
+                .all(|t| t.is_empty() || t.contains("diterima, ditolak atau di-clip")));
+            assert!(texts
+                .iter()
+                .all(|t| t.is_empty() || t.contains("tidak ada (atau none)")));
         }
     }
 }
@@ -1190,7 +1259,9 @@ fn has_decimal(s: &str, mark: char) -> bool {
 fn read_by_students(xml: &str) -> Vec<String> {
     let mut out = Vec::new();
     for (_, _, text, feedback) in xml_questions(xml).iter().filter(|q| q.0 == "cloze") {
-        let mut t = text.replace("(0.5, not 0,5)", "").replace("(0.5, bukan 0,5)", "");
+        let mut t = text
+            .replace("(0.5, not 0,5)", "")
+            .replace("(0.5, bukan 0,5)", "");
         while let Some(k) = t.find("{1:") {
             let end = k + t[k..].find('}').unwrap();
             t.replace_range(k..=end, "_");
@@ -1254,7 +1325,10 @@ fn a_quiz_writes_every_number_with_the_mark_it_tells_students_to_type() {
             // coefficient, the worked steps), all written the same way
             assert!(read.iter().any(|s| has_decimal(s, mark)));
             for s in &read {
-                assert!(!has_decimal(s, other), "--lang {lang} --decimal {flag}: {s}");
+                assert!(
+                    !has_decimal(s, other),
+                    "--lang {lang} --decimal {flag}: {s}"
+                );
             }
             let texts: Vec<String> = xml_questions(&xml).into_iter().map(|q| q.2).collect();
             assert!(texts.iter().any(|t| t.contains(pct)), "--decimal {flag}");
@@ -1281,7 +1355,10 @@ fn a_hard_window_has_no_empty_exact_form() {
         .unwrap();
     assert!(run.status.success());
     let xml = std::fs::read_to_string(out.join("quiz.xml")).unwrap();
-    let qs: Vec<_> = xml_questions(&xml).into_iter().filter(|q| q.0 == "cloze").collect();
+    let qs: Vec<_> = xml_questions(&xml)
+        .into_iter()
+        .filter(|q| q.0 == "cloze")
+        .collect();
     assert_eq!(qs.len(), 60);
     // some of them have no exact form (their answers are marked ≈)
     assert!(qs.iter().any(|q| q.3.contains("bottom ≈ ")));
@@ -1297,8 +1374,10 @@ fn a_hard_window_has_no_empty_exact_form() {
 /// and V = (1, 0, 1)/√2: R·V = 1/√2, and with n = 64 and ks = 0.5 the
 /// term is 0.5·2⁻³² = 1.164·10⁻¹⁰ in each channel (white specular): below
 /// what a student computes by hand (r·S = 0.001 of full intensity), so it
-/// is asked as 0 ± 0.001, and 0 and the value itself are both right.
-const TINY: &str = "title = 'Tiny'\nstatement = 'A far highlight.'\nask = ['shade']\n\n[shade]\nmodel = 'specular'\nlight = [0, 0, 1]\nnormal = [0, 0, 1]\nview = [1, 0, 1]\ncolor = [1, 1, 1]\nks = 0.5\nshininess = 64\n";
+/// is asked as 0 ± 0.001, and 0 and the value itself are both right (the
+/// problem asks the term: a lighting problem asks only its colour unless
+/// its `[check] keys` say more).
+const TINY: &str = "title = 'Tiny'\nstatement = 'A far highlight.'\nask = ['shade']\n\n[shade]\nmodel = 'specular'\nlight = [0, 0, 1]\nnormal = [0, 0, 1]\nview = [1, 0, 1]\ncolor = [1, 1, 1]\nks = 0.5\nshininess = 64\n\n[check]\nkeys = ['shade.specular', 'shade.color']\n";
 
 #[test]
 fn a_number_below_what_a_student_computes_by_hand_is_asked_as_zero() {
@@ -1386,7 +1465,10 @@ fn a_quiz_split_under_a_size_holds_the_same_questions() {
         assert_eq!(qs[0].0, "category", "{n} names its category first");
         questions.extend(qs.into_iter().filter(|q| q.0 == "cloze"));
     }
-    let all: Vec<_> = xml_questions(&xml).into_iter().filter(|q| q.0 == "cloze").collect();
+    let all: Vec<_> = xml_questions(&xml)
+        .into_iter()
+        .filter(|q| q.0 == "cloze")
+        .collect();
     assert!(questions == all, "the same questions, in order");
     // GIFT too
     let gift = generate("split-gift", "gift", &["--split-mb", "0.2"]);
@@ -1394,7 +1476,12 @@ fn a_quiz_split_under_a_size_holds_the_same_questions() {
     assert!(files > 2, "{files}");
     // a question that cannot fit, a size that is no size, a format that is
     // no quiz: one-line errors naming the flag, exit status 2
-    for (format, mb) in [("moodle", "0.001"), ("moodle", "0"), ("moodle", "-1"), ("md", "2")] {
+    for (format, mb) in [
+        ("moodle", "0.001"),
+        ("moodle", "0"),
+        ("moodle", "-1"),
+        ("md", "2"),
+    ] {
         let out = grafika()
             .args(["generate", "--topic", "view", "--format", format])
             .arg(format!("--split-mb={mb}"))
@@ -1410,8 +1497,21 @@ fn a_quiz_split_under_a_size_holds_the_same_questions() {
     // a split quiz refuses to write over an earlier quiz file unless
     // --force, which replaces it (and no more of the earlier files stay)
     let again = grafika()
-        .args(["generate", "--topic", "basis,view,project,window,clip,shade,pipeline"])
-        .args(["--count", "7", "--variants", "2", "--seed", "11", "--format", "moodle"])
+        .args([
+            "generate",
+            "--topic",
+            "basis,view,project,window,clip,shade,pipeline",
+        ])
+        .args([
+            "--count",
+            "7",
+            "--variants",
+            "2",
+            "--seed",
+            "11",
+            "--format",
+            "moodle",
+        ])
         .args(["--split-mb", "0.5", "--out"])
         .arg(&split)
         .output()
@@ -1419,13 +1519,33 @@ fn a_quiz_split_under_a_size_holds_the_same_questions() {
     assert_eq!(again.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&again.stderr).contains("quiz-01.xml"));
     let forced = grafika()
-        .args(["generate", "--topic", "basis,view,project,window,clip,shade,pipeline"])
-        .args(["--count", "7", "--variants", "2", "--seed", "11", "--format", "moodle"])
+        .args([
+            "generate",
+            "--topic",
+            "basis,view,project,window,clip,shade,pipeline",
+        ])
+        .args([
+            "--count",
+            "7",
+            "--variants",
+            "2",
+            "--seed",
+            "11",
+            "--format",
+            "moodle",
+        ])
         .args(["--split-mb", "0.5", "--force", "--out"])
         .arg(&split)
         .output()
         .unwrap();
-    assert!(forced.status.success(), "{}", String::from_utf8_lossy(&forced.stderr));
+    assert!(
+        forced.status.success(),
+        "{}",
+        String::from_utf8_lossy(&forced.stderr)
+    );
     let left = std::fs::read_dir(&split).unwrap().count();
-    assert!(left < names.len() + 1, "{left} entries: the stale files are gone");
+    assert!(
+        left < names.len() + 1,
+        "{left} entries: the stale files are gone"
+    );
 }

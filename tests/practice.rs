@@ -142,7 +142,10 @@ fn summary(events: &[Value]) -> &Value {
     s
 }
 
-fn all_correct(events: &[Value], n: usize) {
+/// Every one of the `n` values right, and every one of the scheme's
+/// `marks` earned (the steps between the values a problem asks are
+/// working, worth nothing of their own).
+fn all_correct(events: &[Value], n: usize, marks: u32) {
     let c = codes(events);
     assert_eq!(c.len(), n, "{c:?}");
     assert!(
@@ -151,8 +154,9 @@ fn all_correct(events: &[Value], n: usize) {
         "{c:?}"
     );
     let s = summary(events);
-    assert_eq!(s["score"]["points"], n as f64);
-    assert_eq!(s["score"]["total"], n);
+    assert_eq!(s["score"]["points"], f64::from(marks));
+    assert_eq!(s["score"]["total"], marks);
+    assert_eq!(s["steps"], n);
     assert_eq!(s["counts"]["follow_through"], 0);
 }
 
@@ -177,47 +181,72 @@ fn pipeline_all_correct_in_the_texts_order() {
             "viewport.pixels.A"
         ]
     );
-    all_correct(&ev, 13);
+    // the view matrix is working: the other 12 values are asked
+    all_correct(&ev, 13, 12);
 }
 
 #[test]
-fn pipeline_follow_through_from_an_unnormalized_n() {
-    // n given as (0, 0, 5): v = n × u = (0, 0, 5) × (1, 0, 0) = (0, 5, 0);
-    // V rows (1, 0, 0, 0), (0, 5, 0, 0), (0, 0, 5, −25); A − Pe = (1, 2, −5):
-    // A' = (1, 10, −25); A'' = (−1·1/−25, −1·10/−25, −1) = (1/25, 2/5, −1);
-    // px = (1/25 + 2)/4·400 = 204, py = (2/5 + 1)/2·200 = 140.
+fn pipeline_follow_through_from_a_reversed_n() {
+    // n given as Pr − Pe normalized, (0, 0, −1): a unit vector, so later
+    // steps may follow from it. u = Vup × n = (1·(−1) − 0·0, 0·0 − 0·(−1),
+    // 0·0 − 1·0) = (−1, 0, 0); v = n × u = (0·0 − (−1)·0, (−1)(−1) − 0·0,
+    // 0·0 − 0·(−1)) = (0, 1, 0), which is right. V rows (−1, 0, 0, 0),
+    // (0, 1, 0, 0), (0, 0, −1, 5); A − Pe = (1, 2, −5): A' = (−1, 2, 5);
+    // A'' = (−1·(−1)/5, −1·2/5, −1) = (1/5, −2/5, −1); px = (1/5 + 2)/4·400
+    // = 220, py = (−2/5 + 1)/2·200 = 60.
     let ev = session_on(
         "pipeline-ft.toml",
         PIPELINE,
         &[
-            "0, 0, 5",
-            "1, 0, 0",
-            "0, 5, 0",
-            "1, 0, 0, 0; 0, 5, 0, 0; 0, 0, 5, -25; 0, 0, 0, 1",
-            "1, 10, -25",
-            "0.04, 0.4, -1",
+            "0, 0, -1",
+            "-1, 0, 0",
+            "0, 1, 0",
+            "-1, 0, 0, 0; 0, 1, 0, 0; 0, 0, -1, 5; 0, 0, 0, 1",
+            "-1, 2, 5",
+            "0.2; -0,4; -1",
             "1",
             "-1",
             "-2",
             "2",
             "2",
             "4",
-            "204, 140",
+            "220, 60",
         ],
     );
     let c = codes(&ev);
     assert_eq!(c[0], "wrong");
-    assert_eq!(c[1], "correct.exact");
-    for k in [2, 3, 4, 5, 12] {
+    assert_eq!(c[2], "correct.exact");
+    for k in [1, 3, 4, 5, 12] {
         assert_eq!(c[k], "correct.follow_through", "answer {k}: {c:?}");
     }
     let v = of_kind(&ev, "verdict");
-    assert_eq!(v[0]["mistakes"], serde_json::json!(["n_not_normalized"]));
-    assert_eq!(v[2]["follow_through"], serde_json::json!([0.0, 5.0, 0.0]));
+    assert_eq!(v[1]["follow_through"], serde_json::json!([-1.0, 0.0, 0.0]));
     let s = summary(&ev);
     assert_eq!(s["counts"]["follow_through"], 5);
     assert_eq!(s["counts"]["correct"], 12);
     assert_eq!(s["counts"]["wrong"], 1);
+    // every value asked but n: 11 of the 12 marks (the matrix is working)
+    assert_eq!(s["score"]["points"], 11.0);
+}
+
+#[test]
+fn no_follow_through_from_an_unnormalized_n() {
+    // n given as Pe − Pr = (0, 0, 5), not divided by |Pe − Pr| = 5: no
+    // unit vector, so nothing follows from it, and the note says why. v =
+    // n × u = (0, 0, 5) × (1, 0, 0) = (0, 5, 0) would.
+    let ev = session_on(
+        "pipeline-no-ft.toml",
+        PIPELINE,
+        &["0, 0, 5", "1, 0, 0", "0, 5, 0", "quit"],
+    );
+    assert_eq!(codes(&ev), ["wrong", "correct.exact", "wrong"]);
+    let v = of_kind(&ev, "verdict");
+    let note = v[2]["note"].as_str().unwrap();
+    assert!(
+        note.contains("n is not a unit vector, so v can't follow from it"),
+        "{note}"
+    );
+    assert_eq!(v[0]["mistakes"], serde_json::json!(["n_not_normalized"]));
 }
 
 #[test]
@@ -271,7 +300,7 @@ fn basis_all_correct_with_decimals_and_decimal_commas() {
         &["0,8; 0; 0,6", "0.6, 0, -0.8", "0, 1, 0"],
     );
     assert_eq!(keys(&ev, "ask"), ["view.n", "view.u", "view.v"]);
-    all_correct(&ev, 3);
+    all_correct(&ev, 3, 3);
 }
 
 #[test]
@@ -290,7 +319,8 @@ fn view_all_correct() {
             "0, 0, -5",
         ],
     );
-    all_correct(&ev, 5);
+    // the view matrix is working: u, v, n and Q' are asked
+    all_correct(&ev, 5, 4);
 }
 
 #[test]
@@ -303,7 +333,7 @@ fn project_all_correct_with_or_without_zp() {
     );
     let ev = session_on("project.toml", &p, &["0, 0, -1", "0, 0.4"]);
     assert_eq!(keys(&ev, "ask"), ["project.points.Q", "project.points.R"]);
-    all_correct(&ev, 2);
+    all_correct(&ev, 2, 2);
 }
 
 #[test]
@@ -323,7 +353,7 @@ fn window_all_correct() {
             "3,464",
         ],
     );
-    all_correct(&ev, 6);
+    all_correct(&ev, 6, 6);
 }
 
 #[test]
@@ -382,15 +412,18 @@ fn clip_all_correct() {
             "clip.status"
         ]
     );
-    all_correct(&ev, 13);
+    // the intersections are working: the codes, the segment and the
+    // status are asked
+    all_correct(&ev, 13, 4);
 }
 
 #[test]
-fn clip_follow_through_from_a_wrong_code_and_a_misprinted_point() {
+fn clip_follow_through_from_a_wrong_code_but_not_a_misprinted_point() {
     // code0 001000 (wrong): AND with 001001 is 001000 ≠ 0, so "rejected"
     // follows. The right intersection as the text printed it, (3, 20/6,
-    // 11/6): on its plane x = 3 and inside (code 000000), so the segment
-    // from it to (1, 4, 3/2) follows.
+    // 11/6), is on its plane x = 3 but not on the segment (at t = 1/6 the
+    // segment is at (3, 8/3, 11/6)): the clipped segment from it to (1, 4,
+    // 3/2) does not follow, and the note says why.
     let mut lines = CLIP_RIGHT.to_vec();
     lines[0] = "001000";
     lines[6] = "3, 20/6, 11/6";
@@ -404,10 +437,11 @@ fn clip_follow_through_from_a_wrong_code_and_a_misprinted_point() {
     let v = of_kind(&ev, "verdict");
     assert_eq!(v[6]["mistakes"], serde_json::json!(["copied_misprint"]));
     assert!(v[6]["why"].as_str().unwrap().contains("20/6"), "{}", v[6]);
-    for k in [11, 12] {
-        assert_eq!(c[k], "correct.follow_through", "answer {k}: {c:?}");
-    }
-    assert_eq!(summary(&ev)["counts"]["follow_through"], 2);
+    assert_eq!(c[11], "wrong");
+    let note = v[11]["note"].as_str().unwrap();
+    assert!(note.contains("is not on the segment P0P1"), "{note}");
+    assert_eq!(c[12], "correct.follow_through");
+    assert_eq!(summary(&ev)["counts"]["follow_through"], 1);
 }
 
 #[test]
@@ -464,30 +498,32 @@ fn shade_all_correct() {
             "shade.color"
         ]
     );
-    all_correct(&ev, 10);
+    // a lighting problem asks its colour; the rest is working
+    all_correct(&ev, 10, 1);
 }
 
 #[test]
-fn shade_follow_through_from_an_unnormalized_n() {
-    // N given as (4, 0, 3): cos α = L·N = 3; R = 2·3·(4, 0, 3) − (0, 0, 1) =
-    // (24, 0, 17); cos β = R·V = 17; diffuse = 0.6·3·Cs = (1.8, 0.9, 0);
-    // specular = 0.7·17⁴ = 0.7·83521 = 58464.7 per channel; their sum
-    // (0.4 + 1.8 + 58464.7, 0.2 + 0.9 + 58464.7, 58464.7) = (58466.9,
-    // 58465.8, 58464.7), which the colour clamps to (1, 1, 1).
+fn shade_follow_through_from_a_wrong_unit_normal() {
+    // N given as (0.6, 0, 0.8), a unit vector but not (4, 0, 3)/5:
+    // cos α = L·N = 0.8; R = 2·0.8·(0.6, 0, 0.8) − (0, 0, 1) = (0.96, 0,
+    // 0.28); cos β = R·V = 0.28; diffuse = 0.6·0.8·Cs = (0.48, 0.24, 0);
+    // specular = 0.7·0.28⁴ = 0.7·0.00614656 = 0.004302592 per channel;
+    // the sum (0.4 + 0.48 + 0.0043026, 0.2 + 0.24 + 0.0043026, 0.0043026)
+    // = (0.8843026, 0.4443026, 0.0043026), which needs no clamping.
     let ev = session_on(
         "shade-ft.toml",
         SHADE,
         &[
             "0, 0, 1",
-            "4, 0, 3",
-            "3",
-            "24, 0, 17",
-            "17",
+            "0.6, 0, 0.8",
+            "0.8",
+            "0.96, 0, 0.28",
+            "0.28",
             "0.4, 0.2, 0",
-            "1.8, 0.9, 0",
-            "58464.7, 58464.7, 58464.7",
-            "58466.9; 58465.8; 58464.7",
-            "1, 1, 1",
+            "0.48, 0.24, 0",
+            "0.0043026, 0.0043026, 0.0043026",
+            "0,8843; 0,4443; 0,004303",
+            "0.8843, 0.4443, 0.004303",
         ],
     );
     let c = codes(&ev);
@@ -496,6 +532,23 @@ fn shade_follow_through_from_an_unnormalized_n() {
     for k in [2, 3, 4, 6, 7, 8, 9] {
         assert_eq!(c[k], "correct.follow_through", "answer {k}: {c:?}");
     }
+}
+
+#[test]
+fn no_follow_through_from_an_unnormalized_normal() {
+    // N given as (4, 0, 3), not divided by 5: cos α = L·N = 3 would follow
+    // from it, but it is no unit vector.
+    let ev = session_on(
+        "shade-no-ft.toml",
+        SHADE,
+        &["0, 0, 1", "4, 0, 3", "3", "quit"],
+    );
+    assert_eq!(codes(&ev), ["correct.exact", "wrong", "wrong"]);
+    let note = of_kind(&ev, "verdict")[2]["note"]
+        .as_str()
+        .unwrap()
+        .to_string();
+    assert!(note.contains("N is not a unit vector"), "{note}");
 }
 
 #[test]
@@ -601,7 +654,7 @@ fn a_drawn_problem_for_every_topic() {
             &["skip"; 40],
         );
         let s = summary(&ev);
-        let n = s["score"]["total"].as_u64().unwrap();
+        let n = s["steps"].as_u64().unwrap();
         assert!(n >= 2, "{topic}: {n} values");
         assert_eq!(s["counts"]["skipped"], n, "{topic}");
         assert_eq!(
@@ -614,7 +667,8 @@ fn a_drawn_problem_for_every_topic() {
 #[test]
 fn text_session_fits_80_columns_and_speaks_indonesian() {
     let f = temp_file("text.toml", PIPELINE);
-    let input = "0,0,5\n1,0,0\n0;5;0\nhint\nhint\nshow\nfoo\nquit\n";
+    // n reversed (Pr − Pe): u follows from it, v is right
+    let input = "0,0,-1\n-1,0,0\n0;1;0\nhint\nhint\nshow\nfoo\nquit\n";
     for lang in ["en", "id"] {
         let out = grafika()
             .args(["practice", f.to_str().unwrap(), "--lang", lang])
@@ -629,13 +683,19 @@ fn text_session_fits_80_columns_and_speaks_indonesian() {
         }
         assert!(!text.contains('\x1b'), "no colour off a terminal");
         let (ft, sum) = match lang {
-            "en" => ("correct given your earlier answers", "Summary: 2/13 points"),
-            _ => ("benar menurut jawabanmu sebelumnya", "Ringkasan: 2/13 poin"),
+            "en" => (
+                "correct given your earlier answers",
+                "Summary: 2/12 marks = 16.7% (the values the problem asks; 13 steps)",
+            ),
+            _ => (
+                "benar menurut jawabanmu sebelumnya",
+                "Ringkasan: 2/12 poin = 16,7% (jawaban yang ditanyakan soal; 13 langkah)",
+            ),
         };
         assert!(text.contains(ft), "{lang}: {text}");
         assert!(text.contains(sum), "{lang}: {text}");
         assert!(
-            text.contains("> 0;5;0"),
+            text.contains("> 0;1;0"),
             "answers are echoed off a terminal"
         );
     }

@@ -4,9 +4,9 @@
 use crate::cli::args::{Format, GenerateArgs};
 use crate::cli::stage::Stage;
 use crate::error::{Error, Result};
+use crate::msg::QuizWord;
 use crate::msg::{Bound, ErrMsg};
 use crate::report::doc::Doc;
-use crate::msg::QuizWord;
 use crate::report::gift::{gift_units, GIFT};
 use crate::report::moodle::{moodle_units, Written, XML};
 use crate::report::quizfile::pack;
@@ -240,7 +240,11 @@ fn split_limit(a: &GenerateArgs) -> Result<Option<usize>> {
 /// A quiz file's name: `quiz.xml` (`quiz.gift`), or file k (from 1) of a
 /// split quiz, `quiz-01.xml`.
 pub fn quiz_name(format: Format, k: Option<usize>) -> String {
-    let ext = if format == Format::Gift { "gift" } else { "xml" };
+    let ext = if format == Format::Gift {
+        "gift"
+    } else {
+        "xml"
+    };
     match k {
         None => format!("quiz.{ext}"),
         Some(k) => format!("quiz-{k:02}.{ext}"),
@@ -269,7 +273,11 @@ fn write_quiz(
     let texts = quiz_files(a, rel, limit, style)?;
     let mut stage = match early {
         Some(stage) => stage,
-        None => Stage::begin(&a.out, texts.iter().map(|(n, _)| n.clone()).collect(), force)?,
+        None => Stage::begin(
+            &a.out,
+            texts.iter().map(|(n, _)| n.clone()).collect(),
+            force,
+        )?,
     };
     let files = (texts.iter())
         .map(|(name, text)| stage.write(name, text))
@@ -331,7 +339,8 @@ fn quiz_files(
     };
     let texts = pack(&units, frame, limit).map_err(|i| {
         let mb = |bytes: usize| format!("{:.3}", bytes as f64 / 1e6);
-        let size = units[i].text.len() + units[i].category.len() + frame.head.len() + frame.foot.len();
+        let size =
+            units[i].text.len() + units[i].category.len() + frame.head.len() + frame.foot.len();
         let limit = mb(limit.unwrap_or(0));
         Error::why(
             "split-mb",
@@ -339,7 +348,10 @@ fn quiz_files(
         )
     })?;
     Ok(match limit {
-        None => texts.into_iter().map(|t| (quiz_name(a.format, None), t)).collect(),
+        None => texts
+            .into_iter()
+            .map(|t| (quiz_name(a.format, None), t))
+            .collect(),
         Some(_) => (texts.into_iter().enumerate())
             .map(|(k, t)| (quiz_name(a.format, Some(k + 1)), t))
             .collect(),

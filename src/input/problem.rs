@@ -194,6 +194,10 @@ pub struct ProblemIn {
     pub errata: Vec<ErratumIn>,
     /// Settings for `grafika check` (tolerance, significant figures, the answers expected).
     pub check: Option<CheckIn>,
+    /// The marking scheme's weights: answer key → marks, or `{ marks, method
+    /// }` (read by `tutor::check::scheme`, which knows the keys).
+    #[serde(default)]
+    pub marks: toml::Table,
     /// Remarks on the source beyond single answers (misprinted rules).
     #[serde(default)]
     pub source_notes: Vec<String>,

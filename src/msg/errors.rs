@@ -406,6 +406,20 @@ pub enum ErrMsg {
     NoVariant(usize),
     /// A variant that is not one of the exam's: as given, the exam's variants.
     NotAVariant(String, usize),
+    /// A `[marks]` key that is no answer of the problem: the key as written.
+    MarksNotAKey(String),
+    /// A `[marks]` entry's table with another field than `marks` and `method`.
+    MarksUnknownField(String),
+    /// A `[marks]` entry's table without `marks`.
+    MarksMissing,
+    /// Marks that are not a whole number from 0 to the most: as written, the most.
+    MarksNotWhole(String, u32),
+    /// A `[marks]` entry's `method` that is not a table.
+    MarksMethodTable,
+    /// Method marks adding up to more than the value's: their sum, its marks.
+    MarksMethodOver(u32, u32),
+    /// A method key that the scheme asks itself: the key.
+    MarksMethodAsked(String),
     /// An answer in an exam's file outside its problems' tables: the key, the problems.
     NotAProblemOfExam(String, String),
     /// `--report` with an unknown extension: the path.

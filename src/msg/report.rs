@@ -149,6 +149,11 @@ pub enum PracticeWord {
     ReadAs,
     /// A second try, counted apart.
     SecondTry,
+    /// An answer to a value already shown, counted apart.
+    ShownBefore,
+    /// The other values a `show` or a hint printed (their keys, joined),
+    /// now counted as revealed.
+    AlsoShown(String),
     /// Before a mistake that explains the answer.
     LikelyMistake,
     /// Before why the source's printed value is wrong.
@@ -175,6 +180,8 @@ pub enum PracticeWord {
     MatrixShape,
     /// The shape of a number.
     NumberShape,
+    /// The shape of a yes or no.
+    YesNoShape,
     /// The shape of a list of `n` values.
     ValuesShape(usize),
 }
@@ -211,6 +218,16 @@ pub enum CheckWord {
     Score,
     /// How many correct answers were credited by follow-through.
     FollowThroughCount(usize),
+    /// Column: the marks earned of those an answer is worth.
+    Marks,
+    /// In the marks column: an answer the scheme does not ask (working).
+    Working,
+    /// The working shown: how many answers, how many right.
+    WorkingCount(usize, usize),
+    /// Heading: the marks the working earned for values not right.
+    MethodMarks,
+    /// Before a method mark's keys: the marks earned (as shown), of how many.
+    MethodEarned(String, u32),
 }
 
 /// A word the documents share (the worked solution as text, HTML,
@@ -271,6 +288,8 @@ pub enum DocWord {
     },
     /// An answer key's title, after the exam's.
     KeyTitle(String),
+    /// A question's marks on an exam sheet: `(3 marks)`.
+    Marks(u32),
     /// Before an answer-key file's title.
     AnswerKey,
     /// What `generate --out` wrote.

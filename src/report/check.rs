@@ -5,7 +5,7 @@ use crate::msg::CheckWord as K;
 use crate::report::lang::Lang;
 use crate::report::words::{self, words};
 use crate::report::{exact_json, joined, value_json, Style};
-use crate::tutor::check::{Marking, Verdict};
+use crate::tutor::check::{Marked, Marking, Verdict};
 use crate::tutor::key::Key;
 use serde_json::{json, Value};
 
@@ -24,6 +24,8 @@ pub fn to_json(m: &Marking, lang: Lang) -> Value {
                 "note": words(&a.note, lang),
                 "diagnosis": a.diagnosis,
                 "why": a.why.as_ref().map(|w| words(w, lang)),
+                "marks": a.worth.map(|of| json!({ "earned": a.earned, "of": of })),
+                "method": a.method,
             })
         })
         .collect();
@@ -33,13 +35,18 @@ pub fn to_json(m: &Marking, lang: Lang) -> Value {
         "who": m.who,
         "settings": { "tolerance": m.settings.tolerance, "sig_figs": m.settings.sig_figs,
                       "follow_through": m.settings.follow_through },
-        "score": { "points": m.score(), "total": m.total(),
-                   "fraction": if m.total() == 0 { 1.0 } else { m.score() / m.total() as f64 } },
+        "score": { "points": m.score(), "total": m.total(), "fraction": m.fraction(),
+                   "percent": crate::report::words::report::percent(m.score(), m.total()),
+                   "method": m.method_marks() },
         "counts": {
             "correct": m.count(Verdict::Correct), "too_coarse": m.count(Verdict::TooCoarse),
             "wrong": m.count(Verdict::Wrong), "missing": m.count(Verdict::Missing),
             "unparseable": m.count(Verdict::Unparseable),
             "follow_through": m.follow_through(),
+        },
+        "working": {
+            "answers": m.working().count(),
+            "correct": m.working().filter(|a| a.verdict == Verdict::Correct).count(),
         },
         "answers": answers,
         "diagnosis": m.diagnoses.iter().map(|d| json!({
@@ -94,7 +101,14 @@ fn w(style: &Style, k: K) -> String {
 pub fn to_text(m: &Marking, style: &Style) -> String {
     use comfy_table::{presets, ContentArrangement, Table};
     let mut t = Table::new();
-    let header = [K::Answer, K::Verdict, K::Given, K::Expected, K::Note];
+    let header = [
+        K::Answer,
+        K::Verdict,
+        K::Marks,
+        K::Given,
+        K::Expected,
+        K::Note,
+    ];
     t.load_preset(presets::UTF8_FULL_CONDENSED)
         .set_content_arrangement(ContentArrangement::Dynamic)
         .set_width(120)
@@ -103,6 +117,7 @@ pub fn to_text(m: &Marking, style: &Style) -> String {
         t.add_row(vec![
             a.key.to_string(),
             words::of(style.lang).verdict(a.verdict).to_string(),
+            marks_cell(a, style),
             a.given.clone().unwrap_or_else(|| "—".into()),
             a.expected
                 .as_ref()
@@ -122,9 +137,44 @@ pub fn to_text(m: &Marking, style: &Style) -> String {
         out.push_str(&format!("\n{}\n", w(style, K::Errata)));
         out.push_str(&whys.concat());
     }
+    out.push_str(&method_text(m, style));
     out.push_str(&diagnoses_text(m, style));
     out.push_str(&score_text(m, style));
     out
+}
+
+/// An answer's marks: earned of its worth (`0.5/1`), or the word for
+/// working, which the scheme does not count.
+fn marks_cell(a: &Marked, style: &Style) -> String {
+    match a.worth {
+        Some(of) => format!("{}/{of}", marks(a.earned, style)),
+        None => w(style, K::Working),
+    }
+}
+
+/// Marks as shown: `2`, `0.5` (`0,5`).
+fn marks(x: f64, style: &Style) -> String {
+    style.dec(crate::report::fmt_dec(x, 4))
+}
+
+/// The marks the working earned for values that are not right.
+fn method_text(m: &Marking, style: &Style) -> String {
+    let lines: Vec<String> = (m.asked())
+        .filter(|a| !a.method.is_empty())
+        .map(|a| {
+            let earned = K::MethodEarned(marks(a.earned, style), a.worth.unwrap_or(0));
+            format!(
+                "  • {}: {} {}\n",
+                a.key,
+                w(style, earned),
+                joined(&a.method)
+            )
+        })
+        .collect();
+    match lines.is_empty() {
+        true => String::new(),
+        false => format!("\n{}\n{}", w(style, K::MethodMarks), lines.concat()),
+    }
 }
 
 /// The mistakes found, the wrong answers no mistake explains, the unknown keys.
@@ -183,15 +233,31 @@ fn score_text(m: &Marking, style: &Style) -> String {
     let counts: Vec<String> = (VERDICTS.iter())
         .map(|v| format!("{} {}", c(*v), said.verdict(*v)))
         .collect();
-    let score = format!(
-        "\n{}: {score}/{} ({})\n",
+    let mut out = format!(
+        "\n{}: {score}/{} = {} ({})\n",
         w(style, K::Score),
         m.total(),
+        percent(m, style),
         counts.join(", ")
     );
     let n = m.follow_through();
-    match n {
-        0 => score,
-        _ => score + &w(style, K::FollowThroughCount(n)) + "\n",
+    if n > 0 {
+        out += &(w(style, K::FollowThroughCount(n)) + "\n");
     }
+    let working: Vec<&Marked> = m.working().collect();
+    if !working.is_empty() {
+        let right = working
+            .iter()
+            .filter(|a| a.verdict == Verdict::Correct)
+            .count();
+        out += &(w(style, K::WorkingCount(working.len(), right)) + "\n");
+    }
+    out
+}
+
+/// A share as a percentage to one decimal, without a trailing `.0`:
+/// `100%`, `88.9%` (`88,9%`).
+pub fn percent(m: &Marking, style: &Style) -> String {
+    let p = crate::report::words::report::percent(m.score(), m.total());
+    format!("{}%", style.dec(crate::report::fmt_dec(p, 6)))
 }

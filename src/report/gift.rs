@@ -21,12 +21,12 @@
 
 use crate::msg::QuizWord as Q;
 use crate::report::escape;
-use crate::report::quizfile::{pack, Frame, Unit};
 use crate::report::lang::Lang;
 use crate::report::moodle::{
     category, esc, esc_text, feedback, intro_html, label, number, question_name, solution_html,
     spellings, tolerance_text, Written,
 };
+use crate::report::quizfile::{pack, Frame, Unit};
 use crate::report::words;
 use crate::stages::trace::Val;
 use crate::tutor::generate::quiz::{Blank, Question, Quiz, Typed};
@@ -38,7 +38,9 @@ pub const GIFT: Frame = Frame { head: "", foot: "" };
 
 /// The whole GIFT file.
 pub fn gift(q: &Quiz, w: &Written) -> String {
-    pack(&gift_units(q, w), GIFT, None).unwrap_or_default().concat()
+    pack(&gift_units(q, w), GIFT, None)
+        .unwrap_or_default()
+        .concat()
 }
 
 /// The questions of a GIFT file, each after its variant's `$CATEGORY:`

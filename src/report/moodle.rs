@@ -111,7 +111,9 @@ pub const XML: Frame = Frame {
 
 /// The whole Moodle XML file.
 pub fn moodle_xml(q: &Quiz, w: &Written) -> String {
-    pack(&moodle_units(q, w), XML, None).unwrap_or_default().concat()
+    pack(&moodle_units(q, w), XML, None)
+        .unwrap_or_default()
+        .concat()
 }
 
 /// The questions of a Moodle XML file, each after its problem's category
@@ -596,7 +598,8 @@ mod tests {
         let html = body_html(&body);
         // the long line is one block, unbroken, its 4 spaces of indent as
         // padding and a hanging indent of 2 more
-        let line = format!("<div style=\"padding-left:6ch;text-indent:-2ch\">{legend}</div>");
+        let shown = legend.replace('<', "&lt;").replace('>', "&gt;");
+        let line = format!("<div style=\"padding-left:6ch;text-indent:-2ch\">{shown}</div>");
         assert!(html.contains(&line), "{html}");
         assert!(html.contains("padding-left:4ch;text-indent:-2ch\">⇒ V =</div>"));
         // the matrix's three lines together, as drawn, in a block that does

@@ -75,7 +75,8 @@ pub fn sheets(doc: Doc, exam: &[Generated], st: &Style) -> (String, String) {
     let mut k = String::new();
     for (i, g) in exam.iter().enumerate() {
         let problem = st.doc(DocWord::Problem);
-        let title = &format!("{problem} {}: {}", i + 1, st.w(&g.title));
+        let marks = st.doc(DocWord::Marks(g.scheme.total()));
+        let title = &format!("{problem} {}: {} {marks}", i + 1, st.w(&g.title));
         let statement = st.w(&g.statement);
         for sheet in [&mut q, &mut k] {
             sheet.push_str(&doc.heading(1, title));
@@ -114,6 +115,8 @@ pub fn exam_json(title: &str, seed: u64, variant: u32, exam: &[Generated], lang:
                 "title": words(&g.title, lang),
                 "statement": words(&g.statement, lang),
                 "keys": g.keys.iter().map(Key::to_string).collect::<Vec<_>>(),
+                "marks": g.scheme.items.iter().map(|i| (i.key.to_string(), json!(i.marks))).collect::<serde_json::Map<String, Value>>(),
+                "total": g.scheme.total(),
                 "answers": answers,
                 "solution": g.report.to_json(lang),
             })

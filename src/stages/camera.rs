@@ -51,6 +51,10 @@ pub struct Basis<T> {
     pub dist: T,
     /// |Vup × n| = |Vup × (Pe − Pr)|/|Pe − Pr|, unscaled.
     pub vxn_norm: T,
+    /// u, v, n were given in place of the computed ones (follow-through):
+    /// eye coordinates and the view matrix use them as they are, not the
+    /// unnormalized d and Vup they no longer follow from.
+    pub given: bool,
 }
 
 /// The camera basis:
@@ -121,6 +125,7 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
         up: ups,
         su,
         sv,
+        given: false,
     };
     tr.step(|| check_step(&b));
     Ok(b)
@@ -279,7 +284,7 @@ pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> 
 /// each is within 2.8 ulps at f64 (0.5 + 2^−26 at f32) even when it is a
 /// small difference of products of size |Pe|.
 fn translation<T: Scalar>(b: &Basis<T>, pe: &V3<T>) -> [T; 3] {
-    if T::PRECISION == crate::num::Precision::Exact {
+    if T::PRECISION == crate::num::Precision::Exact || b.given {
         return [vec::dot(&b.u, pe), vec::dot(&b.v, pe), vec::dot(&b.n, pe)];
     }
     let f = |a: &V3<T>| [a[0].to_f64(), a[1].to_f64(), a[2].to_f64()];
@@ -323,7 +328,7 @@ pub fn to_eye<T: Scalar>(
 ) -> Result<V3<T>> {
     let rel = vec::sub(p, pe);
     let (up, d, w) = (refs(&b.up), refs(&b.d), refs(&rel));
-    let e = if T::PRECISION == crate::num::Precision::Exact {
+    let e = if T::PRECISION == crate::num::Precision::Exact || b.given {
         vec::v3(
             vec::dot(&b.u, &rel),
             vec::dot(&b.v, &rel),

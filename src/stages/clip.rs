@@ -310,6 +310,11 @@ pub fn clip_segment<T: Scalar>(
     result
 }
 
+/// The point of the line at t: the text's P(t) = P0 + t·(P1 − P0).
+pub fn point_at<T: Scalar>(p0: &V3<T>, p1: &V3<T>, t: &T) -> V3<T> {
+    vec::add(p0, &vec::scale(&vec::sub(p1, p0), t))
+}
+
 /// The trivial tests of the two outcodes: both 000000, accepted;
 /// code0 AND code1 ≠ 0, rejected; otherwise None: the segment is clipped.
 pub fn trivial(code0: u8, code1: u8) -> Option<Status> {

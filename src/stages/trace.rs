@@ -323,12 +323,22 @@ pub struct Recorder {
     /// The warnings, in order.
     pub warnings: Vec<Msg>,
     section: Option<Msg>,
+    /// Keeps no step (a solve whose results alone are wanted: the steps
+    /// are never made).
+    pub quiet: bool,
 }
 
 impl Recorder {
     /// A new, empty recorder.
     pub fn new() -> Recorder {
         Recorder::default()
+    }
+    /// A new recorder that keeps no step when `quiet`.
+    pub fn quiet(quiet: bool) -> Recorder {
+        Recorder {
+            quiet,
+            ..Recorder::default()
+        }
     }
     /// Starts a section: the steps that follow belong to it.
     pub fn section(&mut self, name: Msg) {
@@ -339,6 +349,9 @@ impl Recorder {
 impl Trace for Recorder {
     const ON: bool = true;
     fn step(&mut self, f: impl FnOnce() -> Step) {
+        if self.quiet {
+            return;
+        }
         let mut s = f();
         s.section = self.section.clone();
         self.steps.push(s);

@@ -118,6 +118,7 @@ pub fn basis<T: Scalar>(g: Givens<T>, cam: &Camera<T>, b: &mut Basis<T>) {
         b.u = u;
     }
     b.v = v.unwrap_or_else(|| camera::v_axis(&b.n, &b.u));
+    b.given = true;
 }
 
 /// The window with the student's edges where they are given: a given top

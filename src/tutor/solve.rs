@@ -65,6 +65,7 @@ pub fn solve_typed<T: Scalar>(p: &Problem, hooks: &Hooks<T>) -> Result<Report> {
         hooks,
         out: Out {
             sections: p.file.is_some(),
+            rec: Recorder::quiet(hooks.quiet),
             ..Out::default()
         },
         earlier: Earlier {

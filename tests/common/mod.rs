@@ -38,6 +38,22 @@ pub fn refusal(mut cmd: Command, args: &[&str]) -> String {
     err
 }
 
+/// The output of `grafika --lang LANG ARGS`, expecting success.
+pub fn text(lang: &str, args: &[&str]) -> String {
+    let out = grafika()
+        .env_remove("GRAFIKA_LANG")
+        .args(["--lang", lang])
+        .args(args)
+        .output()
+        .expect("runs");
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).expect("UTF-8")
+}
+
 /// Runs grafika with `args` plus `--json`, expects success, returns the JSON.
 pub fn json_ok(args: &[&str]) -> Value {
     let out = grafika().args(args).arg("--json").output().expect("runs");

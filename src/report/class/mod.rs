@@ -54,7 +54,7 @@ fn counts(ms: &[(String, Marking)]) -> (f64, usize, [usize; 6]) {
     n[5] = sum(&|m: &Marking| m.follow_through());
     (
         ms.iter().fold(0.0, |s, (_, m)| s + m.score()),
-        sum(&|m: &Marking| m.total()),
+        sum(&|m: &Marking| m.total() as usize),
         n,
     )
 }

@@ -207,13 +207,29 @@ mod tests {
             Msg::Exact,
             Msg::Rounded(4),
             Msg::RoundedCoarse(1, 3),
-            Msg::SigCoarse(2, 3),
             Msg::WithinPct("0.5".into()),
             Msg::Parts(vec![("x".into(), Msg::Exact)]),
             Msg::WithinPixel,
             Msg::NotAnOutcode(s()),
             Msg::NotAStatus(s()),
+            Msg::NotYesOrNo(s()),
+            Msg::AmbiguousCommas,
             Msg::FollowThrough,
+            Msg::NoFollowFrom(
+                "view.u".into(),
+                crate::msg::Implausible::NotUnit,
+                "view.v".into(),
+            ),
+            Msg::NoFollowFrom(
+                "view.v".into(),
+                crate::msg::Implausible::NotPerpendicular("view.n".into()),
+                "view.points.A".into(),
+            ),
+            Msg::NoFollowFrom(
+                "clip.intersections.right.point".into(),
+                crate::msg::Implausible::OffSegment,
+                "clip.segment".into(),
+            ),
             Msg::ErrSamePoint("(1, 2, 3)".into()),
             Msg::ErrUpZero,
             Msg::ErrUpParallel("(0, 1, 0)".into(), "(0, 5, 0)".into()),
@@ -551,13 +567,15 @@ mod tests {
             | Exact
             | Rounded(_)
             | RoundedCoarse(..)
-            | SigCoarse(..)
             | WithinPct(_)
             | Parts(_)
             | WithinPixel
             | NotAnOutcode(_)
             | NotAStatus(_)
+            | NotYesOrNo(_)
+            | AmbiguousCommas
             | FollowThrough
+            | NoFollowFrom(..)
             | At(..)
             | Err(_)
             | Said(_)

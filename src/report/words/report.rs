@@ -53,6 +53,15 @@ pub fn dec(x: f64, digits: usize, style: NumStyle) -> String {
     style.number(&fmt_dec(x, digits))
 }
 
+/// A share of a total as a percentage to one decimal (`88.9` for 8 of
+/// 9; 100 for a total of 0).
+pub fn percent(points: f64, total: u32) -> f64 {
+    match total {
+        0 => 100.0,
+        t => (points / f64::from(t) * 1000.0).round() / 10.0,
+    }
+}
+
 /// An exam's title: `name: topics (difficulty), seed s, variant v`, the
 /// variant with its word.
 pub fn exam_title(
@@ -181,6 +190,11 @@ mod tests {
             K::NotAnswers,
             K::Score,
             K::FollowThroughCount(2),
+            K::Marks,
+            K::Working,
+            K::WorkingCount(12, 9),
+            K::MethodMarks,
+            K::MethodEarned("2".into(), 4),
         ]
     }
 
@@ -223,6 +237,8 @@ mod tests {
             title(None, None),
             title(Some(7), Some(2)),
             D::KeyTitle("grafika exam: view (easy)".into()),
+            D::Marks(1),
+            D::Marks(3),
             D::AnswerKey,
             wrote(1),
             wrote(14),
@@ -284,6 +300,8 @@ mod tests {
             },
             P::ReadAs,
             P::SecondTry,
+            P::ShownBefore,
+            P::AlsoShown("window.left, window.right".into()),
             P::LikelyMistake,
             P::SourceWrong,
             P::NoMistakeTip,
@@ -297,6 +315,7 @@ mod tests {
             P::BitsShape,
             P::MatrixShape,
             P::NumberShape,
+            P::YesNoShape,
             P::ValuesShape(5),
         ]
     }
@@ -416,7 +435,12 @@ mod tests {
             | K::NoMistakeExplains
             | K::NotAnswers
             | K::Score
-            | K::FollowThroughCount(_) => {}
+            | K::FollowThroughCount(_)
+            | K::Marks
+            | K::Working
+            | K::WorkingCount(..)
+            | K::MethodMarks
+            | K::MethodEarned(..) => {}
         }
         match d {
             D::Step
@@ -441,6 +465,7 @@ mod tests {
             | D::Why
             | D::ExamTitle { .. }
             | D::KeyTitle(_)
+            | D::Marks(_)
             | D::AnswerKey
             | D::Wrote { .. }
             | D::More(_) => {}
@@ -474,6 +499,8 @@ mod tests {
             | P::Unreadable { .. }
             | P::ReadAs
             | P::SecondTry
+            | P::ShownBefore
+            | P::AlsoShown(_)
             | P::LikelyMistake
             | P::SourceWrong
             | P::NoMistakeTip
@@ -487,6 +514,7 @@ mod tests {
             | P::BitsShape
             | P::MatrixShape
             | P::NumberShape
+            | P::YesNoShape
             | P::ValuesShape(_) => {}
         }
         match s {

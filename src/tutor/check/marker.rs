@@ -11,18 +11,23 @@
 //! 2. exactly grafika's value: correct;
 //! 3. a catalog mistake's value, exactly or (a decimal) within the
 //!    tolerance: wrong, and that mistake named — never "rounded";
-//! 4. within the tolerance, or rounded to the digits written: correct or
-//!    too coarse;
+//! 4. within the tolerance: correct (whatever figures are written); else
+//!    rounded to the digits written: correct, or too coarse with fewer
+//!    figures than asked;
 //! 5. otherwise wrong, with the mistakes whose values it rounds
 //!    ([`Marker::fitting`] keeps those the rest of the sheet allows).
 
 use super::judge::{apart, judge, matches_closely, Ctx, Judged};
-use super::{default_keys, Settings, Tree, Verdict, FOLLOW_THROUGH};
+use super::plausible;
+use super::scheme::Scheme;
+use super::{Settings, Tree, Verdict, FOLLOW_THROUGH};
 use crate::error::Result;
 use crate::input::answer::{self, Read};
+use crate::input::part::Problem;
 use crate::input::problem::ProblemIn;
+use crate::msg::Implausible;
 use crate::msg::Msg;
-use crate::num::Real;
+use crate::num::{Real, Scalar};
 use crate::stages::trace::{Name, Step, Val};
 use crate::tutor::diagnose::Code;
 use crate::tutor::follow::Given;
@@ -37,6 +42,8 @@ use std::collections::HashMap;
 /// A problem ready to mark.
 pub struct Marker {
     problem: ProblemIn,
+    /// The problem typed once, for follow-through's many solves.
+    typed: Problem,
     /// grafika's exact results, with the unit vectors L and N of a
     /// lighting problem with one light (steps of the solution that
     /// `practice` asks for).
@@ -45,16 +52,27 @@ pub struct Marker {
     pub steps: Vec<Step>,
     /// The keys in the order of the text's solution.
     pub order: Vec<Key>,
-    /// The keys `check` expects: the problem's `[check] keys` (those that
-    /// are keys: another name is no answer of the problem), else
-    /// [`default_keys`].
-    pub keys: Vec<Key>,
+    /// What the problem asks and what each answer is worth ([`Scheme`]:
+    /// the problem's `[check] keys` or [`super::default_keys`], weighted by
+    /// its `[marks]`).
+    pub scheme: Scheme,
     /// How answers are marked.
     pub settings: Settings,
     /// Each mistake of the catalog that applies, with its results.
     variants: Vec<(Code, Vec<Tree>)>,
     /// Exact forms already turned into exact numbers.
     exact: RefCell<HashMap<String, Option<Real>>>,
+}
+
+/// What follow-through makes of a wrong answer ([`Marker::follow`]).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Follow {
+    /// Right given the student's own earlier answers: the value they lead to.
+    Credited(Val),
+    /// It would be, but only from an earlier answer that cannot be: why.
+    Blocked(Msg),
+    /// Neither.
+    Not,
 }
 
 /// One answer judged.
@@ -77,16 +95,6 @@ impl Marker {
     pub fn new(p: &ProblemIn, settings: Settings) -> Result<Marker> {
         let report = solve::solve::<Real>(p)?;
         let mut result = report.result;
-        let keys = p
-            .check
-            .as_ref()
-            .and_then(|c| c.keys.as_ref())
-            .map(|ks| {
-                ks.iter()
-                    .filter_map(|k| super::answer_key(k).ok())
-                    .collect()
-            })
-            .unwrap_or_else(|| default_keys(&result));
         if let Some((_, Val::Map(kv))) = result.iter_mut().find(|(k, _)| *k == Part::Shade.key()) {
             // the unit vectors are steps of the solution, not results of
             // `solve`; with one light there is one of each
@@ -102,12 +110,15 @@ impl Marker {
             .into_iter()
             .filter_map(|m| Some((m, m.apply(p)?)))
             .collect();
+        let order = ordered_keys(&result);
+        let scheme = Scheme::of(p, &result, &order)?;
         Ok(Marker {
+            typed: Problem::of_file(p.clone())?,
             problem: p.clone(),
-            order: ordered_keys(&result),
+            order,
             result,
             steps: report.steps,
-            keys,
+            scheme,
             settings,
             variants,
             exact: RefCell::new(HashMap::new()),
@@ -249,18 +260,64 @@ impl Marker {
             .collect()
     }
 
-    /// The value of `key` that the student's own earlier answers lead to,
-    /// computed by the stages with each earlier key in `own` (the student's
-    /// answer where it was wrong) given in place of grafika's; None when no
-    /// earlier answer changes it.
-    pub fn carried(&self, key: &Key, own: &dyn Fn(&Key) -> Option<Read>) -> Option<Val> {
+    /// What follow-through makes of the wrong answer `read` to `key`: right
+    /// against the value the student's own earlier answers (`own`, where
+    /// they were wrong) lead to, computed by the stages; only earlier
+    /// values that could be what their step gives start it
+    /// ([`super::plausible`]). When the answer follows only from one that
+    /// cannot be, the note says which and why.
+    pub fn follow(&self, key: &Key, read: &Read, own: &dyn Fn(&Key) -> Option<Read>) -> Follow {
         // a key not of this problem's solution (a component, a whole part)
         // is in no order, so nothing is carried to it
-        let pos = self.order.iter().position(|k| k == key)?;
-        let earlier = &self.order[..pos];
-        let givens: Vec<(&Key, Given<Real>)> = earlier
-            .iter()
-            .filter_map(|k| Some((k, given(&own(k)?)?)))
+        let Some(pos) = self.order.iter().position(|k| k == key) else {
+            return Follow::Not;
+        };
+        let earlier: Vec<(&Key, Read)> = (self.order[..pos].iter())
+            .filter_map(|k| Some((k, own(k)?)))
+            .collect();
+        if earlier.is_empty() {
+            return Follow::Not;
+        }
+        let right = |k: &Key| value_of(&self.result, k).cloned();
+        let cx = plausible::Context {
+            rel: self.settings.tolerance,
+            right: &right,
+            own,
+        };
+        let why: Vec<Option<Implausible>> = (earlier.iter())
+            .map(|(k, r)| plausible::why_not(k, r, &cx))
+            .collect();
+        let fine: Vec<(&Key, Read)> = (earlier.iter().zip(&why))
+            .filter(|(_, w)| w.is_none())
+            .map(|((k, r), _)| (*k, r.clone()))
+            .collect();
+        if let Some(ft) = self.carried(key, &fine) {
+            if self.follows(read, &ft, key) {
+                return Follow::Credited(ft);
+            }
+        }
+        let Some(((from, _), Some(why))) = earlier.iter().zip(&why).find(|(_, w)| w.is_some())
+        else {
+            return Follow::Not;
+        };
+        match self.carried(key, &earlier) {
+            Some(ft) if self.follows(read, &ft, key) => Follow::Blocked(Msg::NoFollowFrom(
+                from.to_string(),
+                why.clone(),
+                key.to_string(),
+            )),
+            _ => Follow::Not,
+        }
+    }
+
+    /// The value of `key` that the values `givens` lead to, computed by
+    /// the stages with each given in place of grafika's; None when they do
+    /// not change it. Worked in doubles without steps: follow-through
+    /// judges within the tolerance, and exact sums of many surds would
+    /// cost seconds a sheet.
+    fn carried(&self, key: &Key, givens: &[(&Key, Read)]) -> Option<Val> {
+        let givens: Vec<(&Key, Given<f64>)> = (givens.iter())
+            .filter_map(|(k, r)| Some((*k, given(r)?)))
             .collect();
         if givens.is_empty() {
             return None;
@@ -268,14 +325,28 @@ impl Marker {
         let look = |k: &Key| givens.iter().find(|(g, _)| *g == k).map(|(_, v)| v.clone());
         let hooks = Hooks {
             given: Some(&look),
+            quiet: true,
             ..Hooks::default()
         };
-        let result = solve::solve_with::<Real>(&self.problem, &hooks)
-            .ok()?
-            .result;
+        let result = solve::solve_typed::<f64>(&self.typed, &hooks).ok()?.result;
         let v = value_of(&result, key)?;
         let right = value_of(&self.result, key)?;
         differs(v, right).then(|| v.clone())
+    }
+
+    /// The worked steps with the student's own values `own` in place of
+    /// grafika's, exactly: what a hint after a wrong answer substitutes,
+    /// so it goes on from the student's values, not the right ones.
+    pub fn steps_given(&self, own: &[(Key, Read)]) -> Option<Vec<Step>> {
+        let givens: Vec<(&Key, Given<Real>)> = (own.iter())
+            .filter_map(|(k, r)| Some((k, given(r)?)))
+            .collect();
+        let look = |k: &Key| givens.iter().find(|(g, _)| *g == k).map(|(_, v)| v.clone());
+        let hooks = Hooks {
+            given: Some(&look),
+            ..Hooks::default()
+        };
+        Some(solve::solve_typed::<Real>(&self.typed, &hooks).ok()?.steps)
     }
 
     /// Whether an answer is right against the value `ft` carried through
@@ -324,11 +395,11 @@ fn completed(key: &Key, read: Read, right: &Val) -> Read {
     }
 }
 
-/// An answer as a value given to the stages: its numbers, exactly.
-fn given(read: &Read) -> Option<Given<Real>> {
-    fn nums(r: &Read, out: &mut Vec<Real>) -> Option<()> {
+/// An answer as a value given to the stages: its numbers at precision `T`.
+fn given<T: Scalar>(read: &Read) -> Option<Given<T>> {
+    fn nums<T: Scalar>(r: &Read, out: &mut Vec<T>) -> Option<()> {
         match r {
-            Read::Num(n) => out.push(n.expr.eval::<Real>().ok()?),
+            Read::Num(n) => out.push(n.expr.eval::<T>().ok()?),
             Read::List(items) => items.iter().try_for_each(|x| nums(x, out))?,
             Read::Word(_) | Read::None => return None,
         }

@@ -8,10 +8,11 @@
 //! An answer is correct when it equals the exact value (any equivalent
 //! form), when it is within the tolerance ([`tolerance::for_key`]: 0.1% by
 //! default, a zero by its answer's largest magnitude, a pixel within half a
-//! pixel), or when it is the exact value correctly rounded to the digits
-//! written. A rounded decimal with fewer significant figures than required
-//! is "too coarse"; figures are counted from the value's leading digit. An
-//! answer that is a catalog mistake's value is wrong and names the mistake.
+//! pixel) whatever figures it is written with, or when it is the exact
+//! value correctly rounded to the digits written. A rounding outside the
+//! tolerance with fewer significant figures than required is "too
+//! coarse"; figures are counted from the value's leading digit. An answer
+//! that is a catalog mistake's value is wrong and names the mistake.
 //!
 //! Verdicts and their stable codes (for autograders):
 //!
@@ -21,7 +22,7 @@
 //! | correct | `correct.tolerance` | within the tolerance | 1 |
 //! | correct | `correct.rounded` | the exact value rounded to the digits written | 1 |
 //! | correct | `correct.follow_through` | wrong, but right given the student's own earlier answers (`--follow-through`) | 1 |
-//! | too_coarse | `too_coarse` | right, but fewer significant figures than required | ½ |
+//! | too_coarse | `too_coarse` | a rounding of the value, outside the tolerance, with fewer significant figures than required | ½ |
 //! | wrong | `wrong` | none of the above (diagnosed where a known mistake reproduces it) | 0 |
 //! | missing | `missing` | no answer | 0 |
 //! | unparseable | `unparseable` | not a number, list or code grafika can read | 0 |
@@ -30,17 +31,19 @@
 
 mod judge;
 mod marker;
+mod plausible;
+pub mod scheme;
 mod sheet;
 pub mod tolerance;
 
-pub use marker::{agrees, Judgement, Marker};
+pub use marker::{agrees, Follow, Judgement, Marker};
 
 use crate::error::Result;
 use crate::input::answer::Read;
 use crate::input::problem::ProblemIn;
 use crate::stages::trace::Val;
 use crate::tutor::diagnose::Code;
-use crate::tutor::key::{Field, Key, Node, Part, Value};
+use crate::tutor::key::{Field, Key, Node, Part, Shading, Value};
 
 pub use crate::tutor::solution::Tree;
 
@@ -132,6 +135,21 @@ pub struct Marked {
     pub why: Option<crate::msg::Msg>,
     /// The answer as read (None when missing or unreadable).
     pub read: Option<Read>,
+    /// The marks the scheme gives this answer; None for working (an
+    /// answer to a key the scheme does not ask: marked, never counted).
+    pub worth: Option<u32>,
+    /// The marks earned (method marks included); 0 for working.
+    pub earned: f64,
+    /// The working that earned method marks for this answer (when they
+    /// are more than its own verdict's share).
+    pub method: Vec<Key>,
+}
+
+impl Marked {
+    /// Whether the scheme asks this answer (it counts in the total).
+    pub fn asked(&self) -> bool {
+        self.worth.is_some()
+    }
 }
 
 /// One mistake that explains some wrong answers.
@@ -165,25 +183,46 @@ pub struct Marking {
 }
 
 impl Marking {
-    /// Points earned.
+    /// Marks earned: the scheme's answers' marks, method marks included.
     pub fn score(&self) -> f64 {
-        self.answers.iter().fold(0.0, |s, a| s + a.verdict.points())
+        self.asked().fold(0.0, |s, a| s + a.earned)
     }
-    /// Points possible.
-    pub fn total(&self) -> usize {
-        self.answers.len()
+    /// Marks possible: the scheme's total (of the answers marked: every
+    /// key asked, or with the source's printed answers those printed).
+    pub fn total(&self) -> u32 {
+        self.asked().filter_map(|a| a.worth).sum()
     }
-    /// How many answers got the verdict.
+    /// The score as a share of the total (1 when nothing is worth marks).
+    pub fn fraction(&self) -> f64 {
+        match self.total() {
+            0 => 1.0,
+            t => self.score() / f64::from(t),
+        }
+    }
+    /// The answers the scheme asks.
+    pub fn asked(&self) -> impl Iterator<Item = &Marked> {
+        self.answers.iter().filter(|a| a.asked())
+    }
+    /// The working: answers to keys the scheme does not ask.
+    pub fn working(&self) -> impl Iterator<Item = &Marked> {
+        self.answers.iter().filter(|a| !a.asked())
+    }
+    /// How many answers asked got the verdict.
     pub fn count(&self, v: Verdict) -> usize {
-        self.answers.iter().filter(|a| a.verdict == v).count()
+        self.asked().filter(|a| a.verdict == v).count()
     }
-    /// How many answers were credited by follow-through (counted among the
-    /// correct ones too).
+    /// How many answers asked were credited by follow-through (counted
+    /// among the correct ones too).
     pub fn follow_through(&self) -> usize {
-        self.answers
-            .iter()
-            .filter(|a| a.code == FOLLOW_THROUGH)
-            .count()
+        self.asked().filter(|a| a.code == FOLLOW_THROUGH).count()
+    }
+    /// The marks earned by working (method marks) beyond the answers' own.
+    pub fn method_marks(&self) -> f64 {
+        self.asked()
+            .filter(|a| !a.method.is_empty())
+            .fold(0.0, |s, a| {
+                s + a.earned - scheme::share(a.verdict, a.worth.unwrap_or(0))
+            })
     }
 }
 
@@ -239,12 +278,16 @@ fn fields(part: Part, kv: &[(String, Val)]) -> impl Iterator<Item = (Field, &Val
     )
 }
 
-/// Whether a part's field is asked by default: the view matrix, the
-/// far-plane window and the clipping intersections tried are checked when
-/// given, not required. An exhaustive match, so a new field is decided.
+/// Whether a part's field is asked by default (a final value of the
+/// scheme): the view matrix, the far-plane window, the clipping
+/// intersections tried, and a lighting problem's working (the unit
+/// vectors, cos α, R, cos β, each term, their unclamped sum, a light's
+/// factors) are marked when given, never counted; of a lighting problem
+/// the colour is asked. An exhaustive match, so a new field is decided.
 fn asked_by_default(f: Field) -> bool {
     match f {
-        Field::Matrix | Field::Intersections | Field::Edge(_, true) => false,
+        Field::Matrix | Field::Intersections | Field::Edge(_, true) | Field::Lights => false,
+        Field::Shading(s) => s == Shading::Color,
         Field::Axis(_)
         | Field::Points
         | Field::Pixels
@@ -252,9 +295,7 @@ fn asked_by_default(f: Field) -> bool {
         | Field::Code0
         | Field::Code1
         | Field::Status
-        | Field::Segment
-        | Field::Shading(_)
-        | Field::Lights => true,
+        | Field::Segment => true,
     }
 }
 

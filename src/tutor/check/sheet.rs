@@ -4,7 +4,7 @@
 //! answer and changes no answer the student got right; several are ranked
 //! by how many answers they explain.
 
-use super::marker::{agrees, Marker};
+use super::marker::{agrees, Follow, Marker};
 use super::{Diagnosis, Marked, Marking, Verdict, FOLLOW_THROUGH};
 use crate::input::answer::Read;
 use crate::msg::Msg;
@@ -72,12 +72,16 @@ impl Marker {
                 diagnosis: mistakes,
                 why: None,
                 read: j.read,
+                worth: self.scheme.item(key).map(|i| i.marks),
+                earned: 0.0,
+                method: Vec::new(),
             });
         }
         if self.settings.follow_through {
-            self.credit_follow_through(&mut marked);
+            self.credit_follow_through(&mut marked, from_text);
         }
         let diagnoses = self.diagnose(&mut marked);
+        self.credit(&mut marked);
         for m in &mut marked {
             let misprint = m.diagnosis.contains(&Code::CopiedMisprint);
             if (from_text && m.verdict == Verdict::Wrong) || misprint {
@@ -100,7 +104,7 @@ impl Marker {
         if from_text {
             answers.iter().map(|(k, _)| k.clone()).collect()
         } else {
-            let mut k: Vec<Named> = self.keys.iter().cloned().map(Ok).collect();
+            let mut k: Vec<Named> = self.scheme.keys().cloned().map(Ok).collect();
             // A set, so that many keys cost linear time (100,000 took 27 s).
             let mut seen: HashSet<Named> = k.iter().cloned().collect();
             for (given, _) in answers {
@@ -123,10 +127,12 @@ impl Marker {
     }
 
     /// Credits, as `correct.follow_through`, each wrong answer that is right
-    /// given the student's own earlier answers ([`Marker::carried`]): only
+    /// given the student's own earlier answers ([`Marker::follow`]): only
     /// wrong answers carry forward (a right one, maybe rounded, carries
-    /// grafika's value).
-    fn credit_follow_through(&self, marked: &mut [Marked]) {
+    /// grafika's value), and only those that could be what their step
+    /// gives; a source's misprint (copied, or the source's own answers
+    /// marked) is never credited.
+    fn credit_follow_through(&self, marked: &mut [Marked], from_text: bool) {
         let own: Vec<(Key, Read)> = marked
             .iter()
             .filter(|m| m.verdict == Verdict::Wrong)
@@ -135,13 +141,36 @@ impl Marker {
         let own_of = |k: &Key| own.iter().find(|(x, _)| x == k).map(|(_, r)| r.clone());
         for m in marked.iter_mut().filter(|m| m.verdict == Verdict::Wrong) {
             let Some(read) = &m.read else { continue };
-            if let Some(ft) = self.carried(&m.key, &own_of) {
-                if self.follows(read, &ft, &m.key) {
+            let misprint = m.diagnosis.contains(&Code::CopiedMisprint)
+                || (from_text && self.erratum(&m.key).is_some());
+            if misprint {
+                continue;
+            }
+            match self.follow(&m.key, read, &own_of) {
+                Follow::Credited(_) => {
                     m.verdict = Verdict::Correct;
                     m.code = FOLLOW_THROUGH;
                     m.note = Msg::FollowThrough;
                     m.diagnosis.clear();
                 }
+                Follow::Blocked(why) => m.note = why,
+                Follow::Not => {}
+            }
+        }
+    }
+
+    /// The marks each answer asked earns by the scheme: its verdict's share
+    /// of its marks, or, when it is not right, what its working earns as
+    /// method marks (each method key right, by follow-through too, earns
+    /// its marks, a too coarse one half), whichever is more, at most its
+    /// marks. Working earns nothing of its own.
+    fn credit(&self, marked: &mut [Marked]) {
+        let verdicts: Vec<(Key, Verdict)> =
+            marked.iter().map(|m| (m.key.clone(), m.verdict)).collect();
+        let verdict = |k: &Key| verdicts.iter().find(|(x, _)| x == k).map(|(_, v)| *v);
+        for m in marked.iter_mut() {
+            if let Some(item) = self.scheme.item(&m.key) {
+                (m.earned, m.method) = item.earned(m.verdict, &verdict);
             }
         }
     }

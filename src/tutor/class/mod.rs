@@ -144,8 +144,8 @@ impl Sheet {
         let m = self.outcome.as_ref().ok()?;
         Some(m.iter().fold(0.0, |s, (_, m)| s + m.score()))
     }
-    /// Points possible over every part.
-    pub fn total(&self) -> Option<usize> {
+    /// Marks possible over every part (the schemes' totals).
+    pub fn total(&self) -> Option<u32> {
         let m = self.outcome.as_ref().ok()?;
         Some(m.iter().map(|(_, m)| m.total()).sum())
     }

@@ -3,12 +3,14 @@
 //! mistake explains, the score distribution, and for an exam per problem
 //! and per variant.
 //!
-//! Definitions (N students marked; a key's mark x is 1 for a correct
-//! answer, ½ too coarse, 0 otherwise; a student's score S is the sum of the
-//! marks over the T keys asked, taken as the share S/T, and the rest of the
-//! score as (S − x)/(T − 1): for a class that answers one problem, all with
-//! the same T, these order and correlate exactly as S and S − x do, and the
-//! variants of an exam, of different lengths, compare):
+//! Definitions (N students marked; the keys are those the marking scheme
+//! asks, [`crate::tutor::check::scheme`]; a key's mark x is the share of
+//! its m marks earned: 1 for a correct answer, ½ too coarse, 0 otherwise,
+//! or its method marks' share; a student's score S is the marks earned of
+//! the total T, taken as the share S/T, and the rest of the score as
+//! (S − x·m)/(T − m): for a class that answers one problem, all with the
+//! same T, these order and correlate exactly as S and S − x·m do, and the
+//! variants of an exam, of different totals, compare):
 //!
 //! - **facility** p = mean of x over the N students: the share of full
 //!   marks (Moodle's facility index). Flagged very easy above 0.9, very
@@ -272,7 +274,8 @@ fn key_order(paper: &Paper, solved: &[Vec<Solved>], sheets: &[&Sheet]) -> Vec<Cl
         let mut marked: Vec<Key> = Vec::new();
         for s in sheets {
             for m in parts_named(s, &part.name) {
-                for a in &m.answers {
+                // the keys the scheme asks: working is never counted
+                for a in m.asked() {
                     if !marked.contains(&a.key) {
                         marked.push(a.key.clone());
                     }
@@ -327,9 +330,10 @@ fn answer<'a>(s: &'a Sheet, key: &ClassKey) -> Option<&'a Marked> {
 
 /// Counts, facility, D and r of one key.
 fn key_stats(key: &ClassKey, sheets: &[&Sheet]) -> KeyStats {
-    let asked: Vec<(&Marked, f64, usize)> = sheets
+    let asked: Vec<(&Marked, f64, f64)> = sheets
         .iter()
-        .filter_map(|s| Some((answer(s, key)?, s.score()?, s.total()?)))
+        .filter_map(|s| Some((answer(s, key)?, s.score()?, f64::from(s.total()?))))
+        .filter(|(a, _, _)| a.asked())
         .collect();
     let mut counts: Vec<(String, usize)> = CODES.iter().map(|c| (c.to_string(), 0)).collect();
     for (a, _, _) in &asked {
@@ -338,12 +342,16 @@ fn key_stats(key: &ClassKey, sheets: &[&Sheet]) -> KeyStats {
             None => counts.push((a.code.to_string(), 1)),
         }
     }
-    let x: Vec<f64> = asked.iter().map(|(a, _, _)| a.verdict.points()).collect();
+    // the key's mark x: the share of its marks earned
+    let worth = |a: &Marked| f64::from(a.worth.unwrap_or(0));
+    let x: Vec<f64> = (asked.iter())
+        .map(|(a, _, _)| a.earned / worth(a).max(1.0))
+        .collect();
     // shares of each student's own marks, so variants of different lengths compare
-    let share = |points: f64, of: usize| if of == 0 { 0.0 } else { points / of as f64 };
+    let share = |points: f64, of: f64| if of <= 0.0 { 0.0 } else { points / of };
     let score: Vec<f64> = asked.iter().map(|(_, s, t)| share(*s, *t)).collect();
-    let rest: Vec<f64> = (asked.iter().zip(&x))
-        .map(|((_, s, t), x)| share(s - x, t.saturating_sub(1)))
+    let rest: Vec<f64> = (asked.iter())
+        .map(|(a, s, t)| share(s - a.earned, t - worth(a)))
         .collect();
     let facility = mean(&x).unwrap_or(0.0);
     let discrimination = upper_minus_lower(&x, &score);
@@ -441,7 +449,9 @@ fn histogram(sheets: &[&Sheet]) -> Vec<Bin> {
         };
         // in halves, so the bar is found in whole numbers: ⌊10·S/T⌋
         let halves = (score * 2.0).round() as usize;
-        let b = (halves * BINS).checked_div(2 * total).unwrap_or(BINS);
+        let b = (halves * BINS)
+            .checked_div(2 * total as usize)
+            .unwrap_or(BINS);
         bins[b.min(BINS - 1)].count += 1;
     }
     bins
@@ -480,11 +490,7 @@ fn median(mut x: Vec<f64>) -> Option<f64> {
 }
 
 fn share(m: &crate::tutor::check::Marking) -> f64 {
-    if m.total() == 0 {
-        1.0
-    } else {
-        m.score() / m.total() as f64
-    }
+    m.fraction()
 }
 
 /// Per variant of an exam: its students, their facility on each problem,
@@ -505,7 +511,7 @@ fn variants(paper: &Paper, sheets: &[&Sheet]) -> Vec<VariantStats> {
     (1..=paper.variants.len())
         .map(|v| {
             let whole: Vec<f64> = of_variant(v)
-                .filter_map(|s| Some(s.score()? / s.total()?.max(1) as f64))
+                .filter_map(|s| Some(s.score()? / f64::from(s.total()?.max(1))))
                 .collect();
             let problems = names
                 .iter()

@@ -9,8 +9,9 @@ use crate::num::rng::SplitMix64;
 use crate::num::Real;
 use crate::stages::lighting::Model;
 use crate::stages::trace::Val;
-use crate::tutor::check::default_keys;
+use crate::tutor::check::scheme::Scheme;
 use crate::tutor::key::{Axis, Field, Key, Part, Shading, Value};
+use crate::tutor::keys::ordered_keys;
 use crate::tutor::solution::value_of;
 use crate::tutor::solve;
 use std::collections::{BTreeSet, HashSet};
@@ -79,13 +80,12 @@ fn accept(d: Draft, topic: Topic, diff: Difficulty, status: usize) -> Option<Gen
     if !report.warnings.is_empty() {
         return None;
     }
-    let keys = problem
-        .check
-        .as_ref()
-        .and_then(|c| c.keys.as_ref())
-        // written by the generator from typed keys (`toml_keys`), so each reads back
-        .map(|ks| ks.iter().filter_map(|k| k.parse().ok()).collect())
-        .unwrap_or_else(|| default_keys(&report.result));
+    // the marking scheme `check` marks it by: its `[check] keys` (written
+    // by the generator from typed keys, `toml_keys`, so each reads back),
+    // weighted by its `[marks]`
+    let order = ordered_keys(&report.result);
+    let scheme = Scheme::of(&problem, &report.result, &order).ok()?;
+    let keys: Vec<Key> = scheme.keys().cloned().collect();
     if !nice_enough(&report.result, &keys, diff) {
         return None;
     }
@@ -96,6 +96,7 @@ fn accept(d: Draft, topic: Topic, diff: Difficulty, status: usize) -> Option<Gen
         problem,
         report,
         keys,
+        scheme,
     })
 }
 

@@ -103,8 +103,10 @@ pub struct Generated {
     pub problem: ProblemIn,
     /// The exact solution.
     pub report: Report,
-    /// The answers asked for.
+    /// The answers asked for (the scheme's keys, in order).
     pub keys: Vec<Key>,
+    /// What each answer is worth (`check`'s marking scheme).
+    pub scheme: crate::tutor::check::scheme::Scheme,
 }
 
 /// The name of problem i (1-based) of an exam, as its files are named

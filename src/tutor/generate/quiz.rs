@@ -325,7 +325,7 @@ fn add_wrong(b: &mut Blank, value: Typed, tolerance: f64, m: Code) {
     match b
         .wrong
         .iter_mut()
-        .find(|w| !apart(&w.value, w.tolerance, &value, tolerance))
+        .find(|w| within(&value, &w.value, w.tolerance))
     {
         Some(w) => {
             if !w.mistakes.contains(&m) {
@@ -337,6 +337,18 @@ fn add_wrong(b: &mut Blank, value: Typed, tolerance: f64, m: Code) {
             tolerance,
             mistakes: vec![m],
         }),
+    }
+}
+
+/// Whether a mistaken value is read by an answer already written (the
+/// answer's own interval [x − t, x + t] holds it, or the same text): only
+/// then does the answer's feedback name its mistake too, as a student who
+/// makes that mistake and types its value gets that answer's feedback.
+fn within(value: &Typed, written: &Typed, t: f64) -> bool {
+    match (value, written) {
+        (Typed::Num(y), Typed::Num(x)) => (y - x).abs() <= t,
+        (Typed::Text(y), Typed::Text(x)) => x == y,
+        _ => false,
     }
 }
 

@@ -4,7 +4,7 @@
 //! style, `0.5` and `(0.5, 2, 3)`.
 
 use super::En;
-use crate::msg::{Erratum, LightPart, Msg, Printed, SpotZone, Term, Trivial};
+use crate::msg::{Erratum, Implausible, LightPart, Msg, Printed, SpotZone, Term, Trivial};
 use crate::report::lang::NumStyle;
 use crate::report::words::errors::ErrorWords;
 use crate::report::words::keys::{text_plane, KeyWords};
@@ -172,7 +172,7 @@ impl MsgWords for En {
             Msg::ExpectList(n) => format!("expected a list of {n} values"),
             Msg::CountMismatch(n, k) => format!("expected {n} values, got {k}"),
             Msg::ExpectedNone => "expected none (nothing is left)".into(),
-            Msg::ExpectedBool(b) => format!("expected {b}"),
+            Msg::ExpectedBool(b) => format!("expected {}", if *b { "yes" } else { "no" }),
             Msg::SeveralAnswers => "this key holds several answers: give them one by one".into(),
             Msg::EmptyAnswer => "empty answer".into(),
             Msg::NoAnswer => "no answer given".into(),
@@ -180,14 +180,30 @@ impl MsgWords for En {
             Msg::WithinPixel => "within half a pixel".into(),
             Msg::NotAnOutcode(t) => format!("`{t}` is not an outcode: write six binary digits, bit 1 rightmost (001000)"),
             Msg::NotAStatus(t) => format!("`{t}` is not a status: write accepted, rejected or clipped"),
+            Msg::NotYesOrNo(t) => format!("`{t}` is not yes or no: write yes or no (ya or tidak)"),
+            Msg::AmbiguousCommas => "commas here are both decimal marks and separators, so the numbers cannot be told apart: write 0,7071; 0; 0,7071 (decimal commas, parts separated by ;) or 0.7071, 0, 0.7071".into(),
             Msg::FollowThrough => "right given the earlier answers (follow-through)".into(),
+            Msg::NoFollowFrom(a, why, b) => {
+                let name = |k: &str| crate::report::words::keys::name_of(self, k);
+                let (a, b) = (name(a), name(b));
+                let not = match why {
+                    Implausible::NotUnit => format!("{a} is not a unit vector"),
+                    Implausible::NotPerpendicular(o) => format!("{a} is not perpendicular to {}", name(o)),
+                    Implausible::OffSegment => format!("{a} is not on the segment P0P1"),
+                    Implausible::NotACosine => format!("{a} is not a cosine (it lies outside −1 to 1)"),
+                    Implausible::NotAColour => format!("{a} is not a colour (a channel lies outside 0 to 1)"),
+                    Implausible::Negative => format!("{a} is negative"),
+                    Implausible::NotPositive => format!("{a} is not positive"),
+                    Implausible::NotNegative => format!("{a} is not negative"),
+                };
+                format!("{not}, so {b} can't follow from it (no follow-through)")
+            }
             Msg::Exact => "exact".into(),
             Msg::Rounded(s) => format!("rounded to {s} significant figures"),
             Msg::RoundedCoarse(s, need) => format!(
                 "rounded to {s} significant figure{}, at least {need} required",
                 if *s == 1 { "" } else { "s" }
             ),
-            Msg::SigCoarse(s, need) => format!("{s} significant figure(s), at least {need} required"),
             Msg::UpParallel(a) => format!(
                 "the up vector is nearly parallel to the view direction (angle {} rad): u and v are very sensitive to the inputs",
                 msg::exponent(nums, *a)

@@ -10,7 +10,7 @@ use crate::msg::CliWord as L;
 use crate::msg::PracticeWord as P;
 use crate::msg::StatWord as S;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
-use crate::report::words::report::{dec, exam_title, ReportWords};
+use crate::report::words::report::{dec, exam_title, percent, ReportWords};
 use crate::report::words::MsgWords;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::stats::Flag;
@@ -132,6 +132,11 @@ impl ReportWords for En {
             K::NotAnswers => "Not answers to this problem (ignored)".into(),
             K::Score => "Score".into(),
             K::FollowThroughCount(n) => format!("({n} of the correct answers by follow-through: right given the student's own earlier answers)"),
+            K::Marks => "marks".into(),
+            K::Working => "working".into(),
+            K::WorkingCount(n, right) => format!("Working shown, not counted in the total: {n} answers, {right} of them right"),
+            K::MethodMarks => "Marks for the working (method marks), where the value itself is not right:".into(),
+            K::MethodEarned(e, of) => format!("{e} of {of} marks, for"),
         }
     }
 
@@ -164,6 +169,7 @@ impl ReportWords for En {
                 variant,
             } => exam_title("grafika exam", (topics, difficulty), *seed, variant.map(|v| (self.doc(&D::Variant), v))),
             D::KeyTitle(title) => format!("{title} — answer key"),
+            D::Marks(n) => format!("({n} mark{})", plural(*n as usize)),
             D::AnswerKey => "Answer key".into(),
             D::Wrote {
                 files,
@@ -306,6 +312,8 @@ impl ReportWords for En {
             }
             P::ReadAs => "read as".into(),
             P::SecondTry => "(a second try: shown, and counted apart; the first verdict stands for the score)".into(),
+            P::ShownBefore => "(this value was shown already: the answer is judged and counted apart; the value counts as revealed)".into(),
+            P::AlsoShown(keys) => format!("(this also shows {keys}: they count as revealed)"),
             P::LikelyMistake => "Likely mistake".into(),
             P::SourceWrong => "The source printed this, and it is wrong".into(),
             P::NoMistakeTip => "No known mistake explains this answer. Type back to try this value again (hint and show help there).".into(),
@@ -319,15 +327,17 @@ impl ReportWords for En {
             P::BitsShape => "6 bits, bit 1 rightmost".into(),
             P::MatrixShape => "4 rows (a, b, c, d); (…); …".into(),
             P::NumberShape => "a number".into(),
+            P::YesNoShape => "yes | no".into(),
             P::ValuesShape(n) => format!("({n} values)"),
         }
     }
 
     fn practice_summary(&self, s: &Summary) -> String {
         let pts = dec(s.points, 4, self.nums());
+        let pct = dec(percent(s.points, s.total), 4, self.nums());
         let mut out = format!(
-            "Summary: {pts}/{} points\n  correct {} ({} by follow-through), too coarse {}, wrong {},\n  skipped {}, revealed {}, not reached {}; hints used {}\n",
-            s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
+            "Summary: {pts}/{} marks = {pct}% (the values the problem asks; {} steps)\n  correct {} ({} by follow-through), too coarse {}, wrong {},\n  skipped {}, revealed {}, not reached {}; hints used {}\n",
+            s.total, s.steps, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
         );
         if s.retries > 0 {
             out.push_str(&format!(

@@ -13,7 +13,12 @@ impl SaidWords for En {
             Said::BitTest(false, test, values) => format!("0 — {test}: {} is false", n(values)),
             Said::BitQuestion(test, values) => format!("{test}: is {} true?", n(values)),
             Said::FrameTime(ms, mpix, png) => {
-                format!("{} ms ({} Mpixels/s); PNG encoding {} ms", n(ms), n(mpix), n(png))
+                format!(
+                    "{} ms ({} Mpixels/s); PNG encoding {} ms",
+                    n(ms),
+                    n(mpix),
+                    n(png)
+                )
             }
             Said::Status(code) => code.clone(),
         }

@@ -94,7 +94,11 @@ pub fn every_error() -> Vec<ErrMsg> {
         ErrMsg::GiveProblem,
         ErrMsg::TooManyProblems(3000, 1000, 3, 48, 2000),
         ErrMsg::SplitNotQuiz,
-        ErrMsg::QuestionTooLarge(s("Problem 01, variant 02: Eye coordinates"), s("0.031"), s("0.01")),
+        ErrMsg::QuestionTooLarge(
+            s("Problem 01, variant 02: Eye coordinates"),
+            s("0.031"),
+            s("0.01"),
+        ),
         ErrMsg::BothStdin,
         ErrMsg::NoPrinted(s("p.toml")),
         ErrMsg::CsvAndJson,
@@ -102,6 +106,13 @@ pub fn every_error() -> Vec<ErrMsg> {
         ErrMsg::NoExam(s("exam")),
         ErrMsg::NoVariant(4),
         ErrMsg::NotAVariant(s("7"), 4),
+        ErrMsg::MarksNotAKey(s("view.bogus")),
+        ErrMsg::MarksUnknownField(s("weight")),
+        ErrMsg::MarksMissing,
+        ErrMsg::MarksNotWhole(s("1.5"), 100),
+        ErrMsg::MarksMethodTable,
+        ErrMsg::MarksMethodOver(5, 4),
+        ErrMsg::MarksMethodAsked(s("shade.diffuse")),
         ErrMsg::NotAProblemOfExam(s("view.n"), s("problem-01, problem-02")),
         ErrMsg::ReportFormat(s("class.txt")),
         ErrMsg::ReportNeedsClass,
@@ -355,6 +366,13 @@ fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want,
         | E::NoExam(_)
         | E::NoVariant(_)
         | E::NotAVariant(..)
+        | E::MarksNotAKey(_)
+        | E::MarksUnknownField(_)
+        | E::MarksMissing
+        | E::MarksNotWhole(..)
+        | E::MarksMethodTable
+        | E::MarksMethodOver(..)
+        | E::MarksMethodAsked(_)
         | E::NotAProblemOfExam(..)
         | E::ReportFormat(_)
         | E::ReportNeedsClass

@@ -124,10 +124,9 @@ impl KeyWords for Id {
                 format!("{what}{far}")
             }
             Value::Field(Field::Shading(s)) => match s {
-                Shading::Ambient
-                | Shading::Diffuse
-                | Shading::Specular
-                | Shading::Emissive => format!("komponen {}", Node::Field(Field::Shading(*s))),
+                Shading::Ambient | Shading::Diffuse | Shading::Specular | Shading::Emissive => {
+                    format!("komponen {}", Node::Field(Field::Shading(*s)))
+                }
                 Shading::Unclamped => "warna sebelum dibatasi".to_string(),
                 Shading::L
                 | Shading::N

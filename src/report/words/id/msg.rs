@@ -4,7 +4,7 @@
 //! style, `0,5` and `(0,5; 2; 3)`.
 
 use super::Id;
-use crate::msg::{Erratum, LightPart, Msg, Printed, SpotZone, Term, Trivial};
+use crate::msg::{Erratum, Implausible, LightPart, Msg, Printed, SpotZone, Term, Trivial};
 use crate::report::lang::NumStyle;
 use crate::report::words::errors::ErrorWords;
 use crate::report::words::keys::KeyWords;
@@ -178,11 +178,27 @@ impl MsgWords for Id {
             Msg::WithinPixel => "dalam setengah piksel".into(),
             Msg::NotAnOutcode(t) => format!("`{t}` bukan region code: tulis enam digit biner, bit 1 paling kanan (001000)"),
             Msg::NotAStatus(t) => format!("`{t}` bukan status: tulis diterima, ditolak atau di-clip (accepted, rejected, clipped)"),
+            Msg::NotYesOrNo(t) => format!("`{t}` bukan ya atau tidak: tulis ya atau tidak (yes, no)"),
+            Msg::AmbiguousCommas => "koma di sini dipakai sebagai tanda desimal sekaligus pemisah, sehingga bilangannya tidak dapat dibedakan: tulis 0,7071; 0; 0,7071 (koma desimal, bagian dipisahkan ;) atau 0.7071, 0, 0.7071".into(),
             Msg::FollowThrough => "benar menurut jawaban sebelumnya (follow-through)".into(),
+            Msg::NoFollowFrom(a, why, b) => {
+                let name = |k: &str| crate::report::words::keys::name_of(self, k);
+                let (a, b) = (name(a), name(b));
+                let not = match why {
+                    Implausible::NotUnit => format!("{a} bukan vektor satuan"),
+                    Implausible::NotPerpendicular(o) => format!("{a} tidak tegak lurus {}", name(o)),
+                    Implausible::OffSegment => format!("{a} tidak terletak pada segmen garis P0P1"),
+                    Implausible::NotACosine => format!("{a} bukan nilai cosinus (di luar −1 sampai 1)"),
+                    Implausible::NotAColour => format!("{a} bukan warna (ada kanal di luar 0 sampai 1)"),
+                    Implausible::Negative => format!("{a} negatif"),
+                    Implausible::NotPositive => format!("{a} tidak positif"),
+                    Implausible::NotNegative => format!("{a} tidak negatif"),
+                };
+                format!("{not}, sehingga {b} tidak dapat dinilai menurut nilai itu")
+            }
             Msg::Exact => "tepat".into(),
             Msg::Rounded(s) => format!("dibulatkan ke {s} angka penting"),
             Msg::RoundedCoarse(s, need) => format!("dibulatkan ke {s} angka penting, paling sedikit {need} diperlukan"),
-            Msg::SigCoarse(s, need) => format!("{s} angka penting, paling sedikit {need} diperlukan"),
             Msg::UpParallel(a) => format!(
                 "vektor up (Vup) hampir sejajar dengan arah pandang (sudut {} rad): u dan v sangat peka terhadap masukan",
                 msg::exponent(nums, *a)

@@ -10,7 +10,7 @@ use crate::msg::CliWord as L;
 use crate::msg::PracticeWord as P;
 use crate::msg::StatWord as S;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
-use crate::report::words::report::{dec, exam_title, ReportWords};
+use crate::report::words::report::{dec, exam_title, percent, ReportWords};
 use crate::report::words::MsgWords;
 use crate::stages::clip::Status;
 use crate::tutor::check::Verdict;
@@ -132,6 +132,11 @@ impl ReportWords for Id {
             K::NotAnswers => "Bukan jawaban untuk soal ini (diabaikan)".into(),
             K::Score => "Nilai".into(),
             K::FollowThroughCount(n) => format!("({n} jawaban benar karena follow-through: benar menurut jawaban mahasiswa sendiri sebelumnya)"),
+            K::Marks => "poin".into(),
+            K::Working => "langkah".into(),
+            K::WorkingCount(n, right) => format!("Langkah pengerjaan yang ditulis, tidak dihitung dalam nilai: {n} jawaban, {right} di antaranya benar"),
+            K::MethodMarks => "Poin untuk langkah pengerjaan, bila jawabannya sendiri tidak benar:".into(),
+            K::MethodEarned(e, of) => format!("{e} dari {of} poin, untuk"),
         }
     }
 
@@ -164,6 +169,7 @@ impl ReportWords for Id {
                 variant,
             } => exam_title("ujian grafika", (topics, difficulty), *seed, variant.map(|v| (self.doc(&D::Variant), v))),
             D::KeyTitle(title) => format!("{title} — kunci jawaban"),
+            D::Marks(n) => format!("({n} poin)"),
             D::AnswerKey => "Kunci jawaban".into(),
             D::Wrote {
                 files,
@@ -310,6 +316,8 @@ impl ReportWords for Id {
             }
             P::ReadAs => "dibaca sebagai".into(),
             P::SecondTry => "(percobaan kedua: ditampilkan dan dihitung terpisah; penilaian pertama yang dipakai untuk nilai)".into(),
+            P::ShownBefore => "(nilai ini sudah ditampilkan: jawabannya dinilai dan dihitung terpisah; nilainya dihitung sebagai dilihat)".into(),
+            P::AlsoShown(keys) => format!("(langkah ini juga menampilkan {keys}: nilai-nilai itu dihitung sebagai dilihat)"),
             P::LikelyMistake => "Kemungkinan kesalahan".into(),
             P::SourceWrong => "Sumber mencetak nilai ini, dan nilai itu salah".into(),
             P::NoMistakeTip => "Tidak ada kesalahan yang dikenal yang menjelaskan jawaban ini. Ketik back untuk mencoba nilai ini lagi (hint dan show membantu di sana).".into(),
@@ -323,15 +331,17 @@ impl ReportWords for Id {
             P::BitsShape => "6 bit, bit 1 paling kanan".into(),
             P::MatrixShape => "4 baris (a; b; c; d); (…); …".into(),
             P::NumberShape => "sebuah bilangan".into(),
+            P::YesNoShape => "ya | tidak".into(),
             P::ValuesShape(n) => format!("({n} nilai)"),
         }
     }
 
     fn practice_summary(&self, s: &Summary) -> String {
         let pts = dec(s.points, 4, self.nums());
+        let pct = dec(percent(s.points, s.total), 4, self.nums());
         let mut out = format!(
-            "Ringkasan: {pts}/{} poin\n  benar {} ({} karena follow-through), terlalu kasar {}, salah {},\n  dilewati {}, dilihat {}, belum dijawab {}; petunjuk dipakai {}\n",
-            s.total, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
+            "Ringkasan: {pts}/{} poin = {pct}% (jawaban yang ditanyakan soal; {} langkah)\n  benar {} ({} karena follow-through), terlalu kasar {}, salah {},\n  dilewati {}, dilihat {}, belum dijawab {}; petunjuk dipakai {}\n",
+            s.total, s.steps, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
         );
         if s.retries > 0 {
             out.push_str(&format!(
