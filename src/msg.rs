@@ -157,8 +157,11 @@ pub enum Msg {
     SecViewing,
     /// solve, part 3.
     SecProjection,
-    /// solve, part 4.
+    /// solve, part 4: the window, and which points are inside its view
+    /// volume.
     SecWindowClip,
+    /// solve, part 4, when there are no points to test: the window alone.
+    SecWindow,
     /// solve: the viewport.
     SecViewport,
     /// Line clipping (segment number when there are several).

@@ -649,6 +649,11 @@ pub struct GenerateArgs {
     /// a Moodle in English, comma for one with the Indonesian language pack.
     #[arg(long, value_enum, default_value_t = Decimal::Point)]
     pub decimal: Decimal,
+    /// Split a Moodle or GIFT quiz into files of at most MB megabytes
+    /// (10⁶ bytes) each, quiz-01.xml, quiz-02.xml, …: PHP's default upload
+    /// limit is 2 MB.
+    #[arg(long, value_name = "MB")]
+    pub split_mb: Option<f64>,
 }
 
 /// Gives a type of a lower layer its command-line choices: each variant

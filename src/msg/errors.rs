@@ -387,6 +387,11 @@ pub enum ErrMsg {
     /// More problems than written without --force: problems, count,
     /// variants, megabytes, the most.
     TooManyProblems(u64, u64, u64, u64, u64),
+    /// `--split-mb` with a format that writes no quiz file.
+    SplitNotQuiz,
+    /// One question of a quiz larger than `--split-mb` allows: the
+    /// question's name, its size and the limit (MB, `.` decimals).
+    QuestionTooLarge(String, String, String),
     /// Problem and answers both from standard input.
     BothStdin,
     /// No `[printed]` table: the file.

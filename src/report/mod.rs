@@ -18,6 +18,7 @@ pub mod mistakes;
 pub mod moodle;
 pub mod page;
 pub mod practice;
+pub mod quizfile;
 pub mod render;
 pub mod sheets;
 pub mod words;
@@ -38,35 +39,49 @@ pub struct Style {
     pub digits: usize,
     /// Whether the run was exact (approximate values are then marked ≈).
     pub exact_mode: bool,
-    /// The language of the words (and the decimal mark).
+    /// The language of the words.
     pub lang: Lang,
+    /// How numbers are written: the language's own decimal mark and
+    /// separator ([`Style::new`]), or a quiz's `--decimal`
+    /// ([`Style::with_nums`]).
+    pub nums: NumStyle,
 }
 
 impl Style {
-    /// `digits` significant digits, approximate values marked ≈ when `exact_mode`, in `lang`.
+    /// `digits` significant digits, approximate values marked ≈ when
+    /// `exact_mode`, in `lang` with its own decimal mark.
     pub fn new(digits: usize, exact_mode: bool, lang: Lang) -> Style {
         Style {
             digits,
             exact_mode,
             lang,
+            nums: words::of(lang).nums(),
         }
+    }
+
+    /// The same style with its numbers written in `nums` (one decimal mark
+    /// for a whole quiz, whatever its language: every number of the
+    /// solution, its figures and the words that hold numbers).
+    pub fn with_nums(self, nums: NumStyle) -> Style {
+        Style { nums, ..self }
     }
 }
 
 pub use crate::num::format::fmt_dec;
 
 impl Style {
-    /// The words of a message key in this style's language.
+    /// The words of a message key in this style's language, its numbers in
+    /// this style's ([`words::words_in`]).
     pub fn w(&self, m: &Msg) -> String {
-        words::words(m, self.lang)
+        words::words_in(m, self.lang, self.nums)
     }
     /// A word the documents share, in this style's language.
     pub fn doc(&self, w: DocWord) -> String {
         words::of(self.lang).doc(&w)
     }
-    /// How this style's language writes numbers.
+    /// How this style writes numbers.
     pub fn nums(&self) -> NumStyle {
-        words::of(self.lang).nums()
+        self.nums
     }
     /// Values formatted the English way written in this style's language
     /// ([`NumStyle::values`]): `(0.8, 0.6, 0)` → `(0,8; 0,6; 0)` in Indonesian.
@@ -230,12 +245,14 @@ impl Style {
 
     /// `name = substitution = value` (`t = (0 − 4)/(−2 − 4) = 2/3 ≈
     /// 0.6667`), `≈` before a value without an exact form; the
-    /// substitution is left out when it reads as the value itself.
+    /// substitution is left out when it reads as the value itself, and the
+    /// line is then written as [`named`](Style::named) writes it (`bottom ≈
+    /// −0.0364` for −top with top ≈ 0.0364, never `bottom = ≈ −0.0364`).
     pub fn worked(&self, name: &str, sub: &Subst, v: &Val) -> String {
         let (val, sub) = (self.val_inline(v), self.subst(sub));
         let shown = |s: &str| s.split([' ']).any(|p| p == sub) || s == sub;
         match val.strip_prefix("≈ ") {
-            _ if shown(&val.replace(" ≈ ", " ").replace(" = ", " ")) => format!("{name} = {val}"),
+            _ if shown(&val.replace(" ≈ ", " ").replace(" = ", " ")) => self.named("", name, v),
             Some(rest) => format!("{name} = {sub} ≈ {rest}"),
             None => format!("{name} = {sub} = {val}"),
         }
@@ -803,6 +820,39 @@ mod tests {
             pretty: None,
         };
         assert_eq!(st.num(&approx), "≈ 0.4142");
+    }
+
+    /// bottom = −top with top = 0.1·tan 20° (no exact form in square
+    /// roots): the substitution −0.0364 reads as the value itself, so the
+    /// line is the value alone, `≈` after the name, and no `= ≈` with an
+    /// empty exact form between them.
+    #[test]
+    fn a_substitution_that_reads_as_its_value_leaves_no_empty_exact_form() {
+        let top = 0.1 * 20f64.to_radians().tan();
+        let approx = |value: f64| {
+            Val::Num(Shown {
+                value,
+                exact: None,
+                pretty: None,
+            })
+        };
+        for (lang, want) in [
+            (lang::Lang::En, "bottom ≈ −0.0364"),
+            (lang::Lang::Id, "bottom ≈ −0,0364"),
+        ] {
+            let st = Style::new(4, true, lang);
+            let sub = Subst::new("−{}", vec![approx(top)]);
+            assert_eq!(st.worked("bottom", &sub, &approx(-top)), want);
+        }
+        // an exact value whose substitution is itself keeps its one `=`
+        let st = Style::new(4, true, lang::Lang::En);
+        let half = Val::Num(Shown {
+            value: 0.5,
+            exact: Some("1/2".into()),
+            pretty: Some("1/2".into()),
+        });
+        let sub = Subst::new("{}", vec![half.clone()]);
+        assert_eq!(st.worked("t", &sub, &half), "t = 1/2 = 0.5");
     }
 
     #[test]

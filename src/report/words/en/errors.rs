@@ -94,6 +94,8 @@ impl ErrorWords for En {
             ErrMsg::StdinHoldsAnswers => "standard input holds the answers: give the problem as a file".into(),
             ErrMsg::GiveProblem => "give a problem file or --topic".into(),
             ErrMsg::TooManyProblems(n, c, v, mb, max) => format!("{n} problems ({c} × {v}, about {mb} MB) is more than the {max} written without --force"),
+            ErrMsg::SplitNotQuiz => "splits a quiz file: it is taken with --format moodle or --format gift only".into(),
+            ErrMsg::QuestionTooLarge(q, size, limit) => format!("the question \"{q}\" alone takes {size} MB, more than the {limit} MB a file may have: give a larger --split-mb"),
             ErrMsg::BothStdin => "the problem and the answers cannot both come from standard input (-)".into(),
             ErrMsg::NoPrinted(p) => format!("{p} has no [printed] table"),
             ErrMsg::CsvAndJson => "--csv - and --json would both write to standard output: give --csv a file name".into(),

@@ -93,6 +93,12 @@ pub fn every_error() -> Vec<ErrMsg> {
         ErrMsg::StdinHoldsAnswers,
         ErrMsg::GiveProblem,
         ErrMsg::TooManyProblems(3000, 1000, 3, 48, 2000),
+        ErrMsg::SplitNotQuiz,
+        ErrMsg::QuestionTooLarge(
+            s("Problem 01, variant 02: Eye coordinates"),
+            s("0.031"),
+            s("0.01"),
+        ),
         ErrMsg::BothStdin,
         ErrMsg::NoPrinted(s("p.toml")),
         ErrMsg::CsvAndJson,
@@ -351,6 +357,8 @@ fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want,
         | E::StdinHoldsAnswers
         | E::GiveProblem
         | E::TooManyProblems(..)
+        | E::SplitNotQuiz
+        | E::QuestionTooLarge(..)
         | E::BothStdin
         | E::NoPrinted(_)
         | E::CsvAndJson

@@ -109,6 +109,8 @@ impl ErrorWords for Id {
             ErrMsg::StdinHoldsAnswers => "masukan standar berisi jawaban: berikan soal sebagai berkas".into(),
             ErrMsg::GiveProblem => "berikan berkas soal atau --topic".into(),
             ErrMsg::TooManyProblems(n, c, v, mb, max) => format!("{n} soal ({c} × {v}, sekitar {mb} MB) lebih dari {max} yang ditulis tanpa --force"),
+            ErrMsg::SplitNotQuiz => "memecah berkas kuis: hanya dipakai dengan --format moodle atau --format gift".into(),
+            ErrMsg::QuestionTooLarge(q, size, limit) => format!("pertanyaan \"{q}\" sendiri berukuran {} MB, lebih dari {} MB yang boleh dimiliki satu berkas: berikan --split-mb yang lebih besar", n(size), n(limit)),
             ErrMsg::BothStdin => "soal dan jawaban tidak dapat sama-sama berasal dari masukan standar (-)".into(),
             ErrMsg::NoPrinted(p) => format!("{p} tidak memiliki tabel [printed]"),
             ErrMsg::CsvAndJson => "--csv - dan --json sama-sama akan menulis ke keluaran standar: berikan nama berkas untuk --csv".into(),
