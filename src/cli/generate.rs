@@ -108,12 +108,12 @@ pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<Vec<P
     check_size(a, force)?;
     if matches!(a.format, Format::Moodle | Format::Gift) {
         let rel = quiz_tolerance(a)?;
-        let mut stage = Stage::begin(&a.out, entries(a), force)?;
+        let mut stage = Stage::begin(&a.out, entries(a), force, run_of(a))?;
         let file = write_quiz(a, rel, &mut stage, style)?;
         stage.commit()?;
         return Ok(vec![file]);
     }
-    let mut stage = Stage::begin(&a.out, entries(a), force)?;
+    let mut stage = Stage::begin(&a.out, entries(a), force, run_of(a))?;
     let mut files = Vec::new();
     let bar = progress(a, style);
     for v in 0..a.variants {
@@ -129,6 +129,23 @@ pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<Vec<P
     bar.iter().for_each(|b| b.finish_and_clear());
     stage.commit()?;
     Ok(files)
+}
+
+/// The run, as the list of generate's own files says it: what it was
+/// asked, so that the same command writes the same list.
+fn run_of(a: &GenerateArgs) -> String {
+    use clap::ValueEnum;
+    let topics: Vec<&str> = a.topic.iter().map(|t| t.name()).collect();
+    let format = a.format.to_possible_value();
+    format!(
+        "(seed {}, topic {}, difficulty {}, count {}, variants {}, format {})",
+        a.seed,
+        topics.join(","),
+        a.difficulty.name(),
+        a.count,
+        a.variants,
+        format.as_ref().map_or("", |v| v.get_name()),
+    )
 }
 
 /// A progress bar over the variants, on a terminal, when there are more

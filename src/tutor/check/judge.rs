@@ -337,6 +337,7 @@ mod tests {
             value: v,
             exact: exact.map(str::to_string),
             pretty: None,
+            beyond: None,
         })
     }
     fn j_at(text: &str, e: &Val, key: &str) -> Judged {
