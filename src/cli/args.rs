@@ -597,6 +597,12 @@ pub struct RenderArgs {
     /// Worker threads (default: one per core).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
     pub threads: Option<u32>,
+    /// The most work allowed, in millions of steps (about a pixel test
+    /// each): a render estimated at more, all its frames together, is
+    /// refused before it starts (docs/spec.md §7).
+    #[arg(long, value_name = "MILLIONS", default_value_t = crate::input::scene::WORK_LIMIT,
+          value_parser = clap::value_parser!(u64).range(1..))]
+    pub work_limit: u64,
 }
 
 /// The format of the question sheet and the key.

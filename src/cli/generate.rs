@@ -118,7 +118,7 @@ pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<Vec<P
     if matches!(a.format, Format::Moodle | Format::Gift) {
         return write_quiz(a, quiz_tolerance(a)?, limit, force, style);
     }
-    let mut stage = Stage::begin(&a.out, entries(a), force)?;
+    let mut stage = Stage::begin(&a.out, entries(a), force, run_of(a))?;
     let mut files = Vec::new();
     let bar = progress(a, style);
     for v in 0..a.variants {
@@ -134,6 +134,23 @@ pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<Vec<P
     bar.iter().for_each(|b| b.finish_and_clear());
     stage.commit()?;
     Ok(files)
+}
+
+/// The run, as the list of generate's own files says it: what it was
+/// asked, so that the same command writes the same list.
+fn run_of(a: &GenerateArgs) -> String {
+    use clap::ValueEnum;
+    let topics: Vec<&str> = a.topic.iter().map(|t| t.name()).collect();
+    let format = a.format.to_possible_value();
+    format!(
+        "(seed {}, topic {}, difficulty {}, count {}, variants {}, format {})",
+        a.seed,
+        topics.join(","),
+        a.difficulty.name(),
+        a.count,
+        a.variants,
+        format.as_ref().map_or("", |v| v.get_name()),
+    )
 }
 
 /// A progress bar over the variants, on a terminal, when there are more
@@ -264,7 +281,7 @@ fn write_quiz(
     style: &Style,
 ) -> Result<Vec<PathBuf>> {
     let early = match limit {
-        None => Some(Stage::begin(&a.out, entries(a), force)?),
+        None => Some(Stage::begin(&a.out, entries(a), force, run_of(a))?),
         Some(_) => {
             refuse_quiz_files(a, force)?;
             None
@@ -277,6 +294,7 @@ fn write_quiz(
             &a.out,
             texts.iter().map(|(n, _)| n.clone()).collect(),
             force,
+            run_of(a),
         )?,
     };
     let files = (texts.iter())

@@ -212,6 +212,7 @@ mod tests {
                 value: x,
                 exact: None,
                 pretty: None,
+                beyond: None,
             })
         };
         let v3 = Val::List(vec![num(0.0), num(1.0), num(0.0)]);

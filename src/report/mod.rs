@@ -127,11 +127,11 @@ impl Style {
                 });
                 let decs: Vec<String> = ns
                     .iter()
-                    .map(|s| fmt_dec(s.value, self.digits).replace('-', "−"))
+                    .map(|s| crate::num::format::decimal(s, self.digits).replace('-', "−"))
                     .collect();
                 let approx = ns
                     .iter()
-                    .any(|s| fmt_dec(s.value, self.digits).parse::<f64>().ok() != Some(s.value));
+                    .any(|s| crate::num::format::is_approx(s, self.digits, self.exact_mode));
                 let beyond = ns.iter().any(|s| {
                     (s.value == 0.0 && s.pretty.as_deref().is_some_and(|p| p != "0"))
                         || !s.value.is_finite()
@@ -201,7 +201,7 @@ impl Style {
                 t.add_row(cells.iter().map(|c| match c {
                     Val::Num(s) => self.dec(match &s.pretty {
                         Some(p) => p.replace('-', "−"),
-                        None => fmt_dec(s.value, self.digits).replace('-', "−"),
+                        None => crate::num::format::decimal(s, self.digits).replace('-', "−"),
                     }),
                     other => self.val_inline(other),
                 }));
@@ -294,9 +294,12 @@ impl Style {
     fn operand(&self, v: &Val) -> String {
         match v {
             Val::Num(s) => {
-                let dec = fmt_dec(s.value, self.digits);
+                let dec = crate::num::format::decimal(s, self.digits);
                 let text = match &s.pretty {
-                    Some(p) if p.contains('√') || dec.parse::<f64>().ok() != Some(s.value) => {
+                    Some(p)
+                        if p.contains('√')
+                            || crate::num::format::is_approx(s, self.digits, false) =>
+                    {
                         p.clone()
                     }
                     _ => dec,
@@ -806,18 +809,21 @@ mod tests {
             value: -0.023570226039551584,
             exact: Some("-sqrt(2)/60".into()),
             pretty: Some("−√2/60".into()),
+            beyond: None,
         };
         assert_eq!(st.num(&s), "−√2/60 ≈ −0.02357");
         let fifty = Shown {
             value: 0.02,
             exact: Some("1/50".into()),
             pretty: Some("1/50".into()),
+            beyond: None,
         };
         assert_eq!(st.num(&fifty), "1/50 = 0.02");
         let approx = Shown {
             value: 0.41421356,
             exact: None,
             pretty: None,
+            beyond: None,
         };
         assert_eq!(st.num(&approx), "≈ 0.4142");
     }
@@ -834,6 +840,7 @@ mod tests {
                 value,
                 exact: None,
                 pretty: None,
+                beyond: None,
             })
         };
         for (lang, want) in [
@@ -850,6 +857,7 @@ mod tests {
             value: 0.5,
             exact: Some("1/2".into()),
             pretty: Some("1/2".into()),
+            beyond: None,
         });
         let sub = Subst::new("{}", vec![half.clone()]);
         assert_eq!(st.worked("t", &sub, &half), "t = 1/2 = 0.5");
@@ -865,6 +873,7 @@ mod tests {
                 value,
                 exact: Some(p.into()),
                 pretty: Some(p.into()),
+                beyond: None,
             })
         };
         let v = [n(0.0, "1/1000"), n(0.0, "0")];

@@ -56,6 +56,7 @@ pub(super) fn num_val(x: f64) -> Val {
         value: x,
         exact: None,
         pretty: None,
+        beyond: None,
     })
 }
 

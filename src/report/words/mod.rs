@@ -193,6 +193,8 @@ mod tests {
             Msg::UpParallel(1e-9),
             Msg::BehindWarn(s()),
             Msg::ExactTooLarge(64),
+            Msg::ExactTooLong(16_384),
+            Msg::StaleTempRemoved("out/.grafika-tmp-123-4567-ab".into(), 123),
             Msg::NoFigure,
             Msg::ExpectOne,
             Msg::ExpectList(3),
@@ -556,6 +558,8 @@ mod tests {
             | UpParallel(_)
             | BehindWarn(_)
             | ExactTooLarge(_)
+            | ExactTooLong(_)
+            | StaleTempRemoved(..)
             | NoFigure
             | ExpectOne
             | ExpectList(_)

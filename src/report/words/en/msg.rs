@@ -215,6 +215,8 @@ impl MsgWords for En {
             Msg::BehindWarn(n) => format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen"),
             Msg::NoFigure => "no figure was written: no part asked has a figure of its own (the pixels of `viewport` are drawn on the window's figure: ask `window` with it)".into(),
             Msg::ExactTooLarge(n) => format!("exact values that would hold more than {n} terms (many different square roots) were computed in f64 and are marked ≈, as is what follows from them"),
+            Msg::ExactTooLong(bits) => format!("exact values whose numerator or denominator would pass {bits} bits (a high power, such as a large shininess) were computed in f64 and are marked ≈, as is what follows from them"),
+            Msg::StaleTempRemoved(p, pid) => format!("removed {p}, a temporary file left by grafika process {pid}, which is no longer running (it was stopped before it could clean up)"),
             Msg::ErrFewDistinct(topic, level, n) => format!("could not draw a {topic} problem at {level} level unlike the {n} before it: there are few different ones at this level; ask for fewer problems (--count) or another --difficulty"),
             Msg::ErrHtmlCommand => "writes the worked solution of basis, view, project, window, clip, shade, solve and render; for exams use generate --format html".into(),
             Msg::Parts(parts) => msg::parts(self, parts),

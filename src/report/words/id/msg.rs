@@ -210,6 +210,8 @@ impl MsgWords for Id {
             Msg::BehindWarn(n) => format!("{n} berada di belakang pusat proyeksi: bayangannya terbalik dan tidak terlihat"),
             Msg::NoFigure => "tidak ada gambar yang ditulis: tidak ada bagian yang ditanyakan yang punya gambar sendiri (piksel `viewport` digambar pada gambar window: tanyakan `window` juga)".into(),
             Msg::ExactTooLarge(n) => format!("nilai eksak yang akan memuat lebih dari {n} suku (banyak akar kuadrat yang berbeda) dihitung dengan f64 dan ditandai ≈, begitu pula yang diturunkan darinya"),
+            Msg::ExactTooLong(bits) => format!("nilai eksak yang pembilang atau penyebutnya akan melebihi {bits} bit (pangkat yang tinggi, seperti shininess yang besar) dihitung dengan f64 dan ditandai ≈, begitu pula yang diturunkan darinya"),
+            Msg::StaleTempRemoved(p, pid) => format!("{p} dihapus: berkas sementara yang ditinggalkan proses grafika {pid}, yang sudah tidak berjalan (dihentikan sebelum sempat membersihkan)"),
             Msg::ErrFewDistinct(topic, level, n) => format!("tidak dapat menarik soal {topic} tingkat {level} yang berbeda dari {n} soal sebelumnya: soal yang berbeda di tingkat ini tidak banyak; minta lebih sedikit soal (--count) atau tingkat lain (--difficulty)"),
             Msg::ErrHtmlCommand => "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html".into(),
             Msg::Parts(parts) => msg::parts(self, parts),
