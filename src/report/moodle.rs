@@ -143,17 +143,18 @@ fn cloze_question(question: &Question, (i, v): (usize, usize), q: &Quiz, w: &Wri
     let lang = w.style.lang;
     let mut text = intro_html(question, q, w);
     let sep = w.style.nums().sep;
-    for a in &question.asked {
-        let mut next = a.blanks.iter().map(|b| cloze_blank(b, lang));
+    for (a, weight) in question.asked.iter().zip(question.weights()) {
+        let mut next = a.blanks.iter().map(|b| cloze_blank(b, weight, lang));
         let shape = shape_html(&a.value, sep, &mut || next.next().unwrap_or_default());
         let _ = write!(text, "<p>{} = {shape}</p>", esc_text(&label(&a.key, lang)));
     }
     let (figures, files) = embedded_figures(&question.problem, &w.style);
     format!(
-        "  <question type=\"cloze\">\n    <name>\n      <text>{}</text>\n    </name>\n    <questiontext format=\"html\">\n      <text>{}</text>\n    </questiontext>\n    <generalfeedback format=\"html\">\n      <text>{}</text>\n{files}    </generalfeedback>\n    <penalty>0.3333333</penalty>\n    <hidden>0</hidden>\n  </question>\n",
+        "  <question type=\"cloze\">\n    <name>\n      <text>{}</text>\n    </name>\n    <questiontext format=\"html\">\n      <text>{}</text>\n    </questiontext>\n    <generalfeedback format=\"html\">\n      <text>{}</text>\n{files}    </generalfeedback>\n    <defaultgrade>{}</defaultgrade>\n    <penalty>0.3333333</penalty>\n    <hidden>0</hidden>\n  </question>\n",
         xml_text(&question_name(&question.problem, i, v, lang)),
         cdata(&text),
         cdata(&solution_html(question, &figures, &w.style)),
+        question.marks(),
     )
 }
 
@@ -277,10 +278,10 @@ fn is_square_matrix(rows: &[Val]) -> bool {
         })
 }
 
-/// One blank in Cloze syntax: the right answers (a word in each of its
-/// spellings, [`spellings`]), then each mistaken value at 0 % with its
-/// feedback.
-fn cloze_blank(b: &Blank, lang: Lang) -> String {
+/// One blank in Cloze syntax, of `weight` ([`Question::weights`]): the
+/// right answers (a word in each of its spellings, [`spellings`]), then
+/// each mistaken value at 0 % with its feedback.
+fn cloze_blank(b: &Blank, weight: u32, lang: Lang) -> String {
     let kind = match b.value {
         Typed::Num(_) => "NUMERICAL",
         Typed::Text(_) => "SHORTANSWER",
@@ -289,7 +290,7 @@ fn cloze_blank(b: &Blank, lang: Lang) -> String {
         .into_iter()
         .map(|a| format!("={a}"))
         .collect();
-    let mut s = format!("{{1:{kind}:{}", right.join("~"));
+    let mut s = format!("{{{weight}:{kind}:{}", right.join("~"));
     for w in &b.wrong {
         let fb = cloze_escape(&esc(&feedback(w, lang)));
         for a in cloze_answers(&w.value, w.tolerance, lang) {

@@ -69,6 +69,38 @@ pub struct Question {
     pub typing: Typing,
 }
 
+impl Question {
+    /// The question's marks: the scheme's total over the answers asked (a
+    /// Moodle question's default mark).
+    pub fn marks(&self) -> u32 {
+        self.asked.iter().map(|a| a.marks).sum()
+    }
+
+    /// The weight of each answer's every blank, so that an answer weighs
+    /// its marks whatever its number of blanks: with L the least common
+    /// multiple of the answers' blank counts, an answer of m marks and k
+    /// blanks gives each blank m·L/k (n = (0.8, 0.6, 0) worth 1 and a
+    /// status worth 1: L = 3, each of n's blanks 1, the status 3). Moodle
+    /// grades a Cloze question as Σ weight·fraction / Σ weight of its
+    /// default mark, so a right answer earns its marks exactly.
+    pub fn weights(&self) -> Vec<u32> {
+        let count = |a: &Asked| a.blanks.len().max(1) as u32;
+        let l = self.asked.iter().map(count).fold(1, lcm);
+        self.asked.iter().map(|a| a.marks * l / count(a)).collect()
+    }
+}
+
+/// The least common multiple of two positive numbers.
+fn lcm(a: u32, b: u32) -> u32 {
+    let gcd = |mut x: u32, mut y: u32| {
+        while y != 0 {
+            (x, y) = (y, x % y);
+        }
+        x
+    };
+    a / gcd(a, b) * b
+}
+
 /// What kinds of blanks a question has, for its instruction line: the
 /// rules of typing a pixel, an outcode or a status are stated only where
 /// they are asked.
@@ -182,6 +214,8 @@ pub struct Asked {
     pub value: Val,
     /// The blanks, one per leaf.
     pub blanks: Vec<Blank>,
+    /// Its marks in the scheme ([`Generated::scheme`]).
+    pub marks: u32,
 }
 
 impl Asked {
@@ -205,6 +239,7 @@ pub fn blanks(g: &Generated, rel: f64, figs: u32) -> Vec<Asked> {
                 key: key.clone(),
                 value,
                 blanks,
+                marks: g.scheme.item(key).map_or(1, |i| i.marks),
             })
         })
         .collect()
