@@ -46,11 +46,34 @@ struct Alt {
     feedback: String,
 }
 
-/// One blank `{1:TYPE:alt~alt…}`.
+/// One blank `{W:TYPE:alt~alt…}` of weight W.
 #[derive(Debug, Clone, PartialEq)]
 struct Blank {
+    weight: u32,
     kind: String,
     alts: Vec<Alt>,
+}
+
+/// Where the next blank of a Cloze text starts: `{`, the weight's digits
+/// (none reads as 1, as Moodle's `ANSWER_REGEX_NORM` does), `:`, an upper
+/// case type and `:`; with its weight and where its type starts.
+fn next_blank(text: &str) -> Option<(usize, u32, usize)> {
+    let mut from = 0;
+    while let Some(k) = text[from..].find('{').map(|k| k + from) {
+        let digits = text[k + 1..].bytes().take_while(u8::is_ascii_digit).count();
+        let colon = k + 1 + digits;
+        let kind = text[colon..].strip_prefix(':').map(|r| {
+            r.bytes()
+                .take_while(|b| b.is_ascii_uppercase() || *b == b'_')
+                .count()
+        });
+        if kind.is_some_and(|n| n > 0 && text[colon + 1 + n..].starts_with(':')) {
+            let weight = text[k + 1..colon].parse().unwrap_or(1);
+            return Some((k, weight, colon + 1));
+        }
+        from = k + 1;
+    }
+    None
 }
 
 /// Moodle's html_entity_decode, for the entities the writer uses.
@@ -87,8 +110,8 @@ fn decode(s: &str) -> String {
 fn cloze_blanks(text: &str) -> Vec<Blank> {
     let mut out = Vec::new();
     let mut rest = text;
-    while let Some(k) = rest.find("{1:") {
-        let body = &rest[k + 3..];
+    while let Some((_, weight, start)) = next_blank(rest) {
+        let body = &rest[start..];
         let end = body.find('}').expect("a blank ends");
         let (kind, alts) = body[..end].split_once(':').expect("a type");
         let alts = alts
@@ -113,6 +136,7 @@ fn cloze_blanks(text: &str) -> Vec<Blank> {
             })
             .collect();
         out.push(Blank {
+            weight,
             kind: kind.to_string(),
             alts,
         });
@@ -980,10 +1004,8 @@ fn cloze_labels(xml: &str) -> Vec<String> {
         for p in text.split("<p>").skip(1) {
             let p = p.split("</p>").next().unwrap();
             if let Some((label, _)) = p.split_once(" = ").filter(|(_, r)| {
-                r.starts_with("{1:")
-                    || r.starts_with("({1:")
-                    || r.starts_with("<table>")
-                    || r.starts_with("(({1:")
+                let r = r.trim_start_matches('(');
+                next_blank(r).is_some_and(|(k, ..)| k == 0) || r.starts_with("<table>")
             }) {
                 out.push(decode(label));
             }
@@ -1262,7 +1284,7 @@ fn read_by_students(xml: &str) -> Vec<String> {
         let mut t = text
             .replace("(0.5, not 0,5)", "")
             .replace("(0.5, bukan 0,5)", "");
-        while let Some(k) = t.find("{1:") {
+        while let Some((k, ..)) = next_blank(&t) {
             let end = k + t[k..].find('}').unwrap();
             t.replace_range(k..=end, "_");
         }
@@ -1548,4 +1570,26 @@ fn a_quiz_split_under_a_size_holds_the_same_questions() {
         left < names.len() + 1,
         "{left} entries: the stale files are gone"
     );
+}
+
+/// Marks by hand: the camera example with `"view.n" = 3` and
+/// `"view.points.Pref" = 2` (u and v 1 each) is worth 1 + 1 + 3 + 2 = 7.
+/// Each answer has 3 blanks; m·L/3 must be whole for m = 1, 1, 3, 2, so
+/// L = 3 and the blanks weigh 1 (u, v), 3 (n), 2 (Pref′): each answer's
+/// blanks together weigh 3·m, its marks in a total of 21 = 3·7. Without
+/// `[marks]`, every blank weighs 1. The statement says "(7 marks)".
+#[test]
+fn a_blank_weighs_its_share_of_the_answers_marks() {
+    let marked = format!("{CAMERA}\n[marks]\n\"view.n\" = 3\n\"view.points.Pref\" = 2\n");
+    let qs = one_problem_xml(&marked, Lang::En);
+    let weights: Vec<u32> = cloze_blanks(&qs[1].2).iter().map(|b| b.weight).collect();
+    assert_eq!(weights, [1, 1, 1, 1, 1, 1, 3, 3, 3, 2, 2, 2]);
+    assert!(
+        qs[1].2.contains("The camera example. (7 marks)"),
+        "{}",
+        qs[1].2
+    );
+    let plain = one_problem_xml(CAMERA, Lang::Id);
+    assert!(cloze_blanks(&plain[1].2).iter().all(|b| b.weight == 1));
+    assert!(plain[1].2.contains("(4 poin)"));
 }

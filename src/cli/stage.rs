@@ -399,7 +399,7 @@ fn parse_list(text: &str) -> std::result::Result<List, ListWhy> {
 }
 
 /// Whether generate ever writes a file by this name in DIR: `quiz.xml`,
-/// `quiz.gift`, or an exam's file (`problem-NN.toml`,
+/// `quiz.gift` (or their parts under `--split-mb`, `quiz-NN.xml`), or an exam's file (`problem-NN.toml`,
 /// `problem-NN.key.toml`, `questions.EXT`, `key.EXT`, `exam.json`) at the
 /// top or in a `variant-NN/` folder.
 pub fn generated_name(name: &str) -> bool {
@@ -420,13 +420,20 @@ pub fn generated_name(name: &str) -> bool {
         sheet || problem || f == "exam.json"
     };
     match parts.as_slice() {
-        [a] => text(a).is_some_and(|f| exam_file(&f) || f == "quiz.xml" || f == "quiz.gift"),
+        [a] => text(a).is_some_and(|f| exam_file(&f) || quiz_file(&f, &numbered)),
         [v, f] => {
             text(v).is_some_and(|v| numbered(&v, "variant-"))
                 && text(f).is_some_and(|f| exam_file(&f))
         }
         _ => false,
     }
+}
+
+/// Whether `f` is a quiz file: `quiz.EXT` or `quiz-NN.EXT`, EXT `xml` or
+/// `gift`.
+fn quiz_file(f: &str, numbered: &dyn Fn(&str, &str) -> bool) -> bool {
+    let stem = f.strip_suffix(".xml").or_else(|| f.strip_suffix(".gift"));
+    stem.is_some_and(|s| s == "quiz" || numbered(s, "quiz-"))
 }
 
 /// The list's text: its heading with the run, then each file's SHA-256 and
@@ -524,6 +531,8 @@ mod tests {
             "exam.json",
             "quiz.xml",
             "quiz.gift",
+            "quiz-01.xml",
+            "quiz-12.gift",
             "variant-07/key.html",
             "variant-07/problem-02.key.toml",
         ] {
@@ -538,6 +547,8 @@ mod tests {
             "variant-01",
             "variant-1/key.md",
             "variant-01/quiz.xml",
+            "quiz-1.xml",
+            "quiz-01.txt",
             "variant-01/variant-02/key.md",
             "problem-01.csv",
             "problem-x1.toml",

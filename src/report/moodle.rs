@@ -6,7 +6,7 @@
 //! The writer only writes: the blanks (values, tolerances, mistaken values)
 //! are the tutor's ([`crate::tutor::generate::quiz`]), the figures the
 //! figure module's (`report::figure`). Each number is a NUMERICAL blank
-//! `{1:NUMERICAL:=x:t#…~%0%w:t'#feedback}`, each 0 % answer's feedback
+//! `{W:NUMERICAL:=x:t#…~%0%w:t'#feedback}`, each 0 % answer's feedback
 //! naming the catalog mistakes that give it; outcodes and the clipping
 //! status are SHORTANSWER blanks. The instruction line says how to type:
 //! significant figures, the decimal mark ([`Decimal`]: Moodle reads a
@@ -16,6 +16,14 @@
 //! A`, `cos α`), never by a JSON key. A status or a missing segment is
 //! right in the quiz language's words and in the English codes (`di-clip`
 //! or `clipped`, `tidak ada` or `none`).
+//!
+//! Marks: the statement ends with the question's marks in the scheme of
+//! `check` (`(4 marks)`), and each blank weighs W so that an answer's
+//! blanks together weigh its share of those marks ([`Question::weights`]).
+//! Moodle reads a Cloze question's default mark as the sum of its blanks'
+//! weights (it ignores `<defaultgrade>`), and gives a random question's
+//! slot 1 mark: the proportions are the scheme's, the quiz's maximum mark
+//! of each slot is the lecturer's to set to the stated marks.
 //!
 //! One decimal mark for the whole quiz: the statement, the instruction,
 //! the answers, the worked solution and the figures write their numbers
@@ -150,11 +158,10 @@ fn cloze_question(question: &Question, (i, v): (usize, usize), q: &Quiz, w: &Wri
     }
     let (figures, files) = embedded_figures(&question.problem, &w.style);
     format!(
-        "  <question type=\"cloze\">\n    <name>\n      <text>{}</text>\n    </name>\n    <questiontext format=\"html\">\n      <text>{}</text>\n    </questiontext>\n    <generalfeedback format=\"html\">\n      <text>{}</text>\n{files}    </generalfeedback>\n    <defaultgrade>{}</defaultgrade>\n    <penalty>0.3333333</penalty>\n    <hidden>0</hidden>\n  </question>\n",
+        "  <question type=\"cloze\">\n    <name>\n      <text>{}</text>\n    </name>\n    <questiontext format=\"html\">\n      <text>{}</text>\n    </questiontext>\n    <generalfeedback format=\"html\">\n      <text>{}</text>\n{files}    </generalfeedback>\n    <penalty>0.3333333</penalty>\n    <hidden>0</hidden>\n  </question>\n",
         xml_text(&question_name(&question.problem, i, v, lang)),
         cdata(&text),
         cdata(&solution_html(question, &figures, &w.style)),
-        question.marks(),
     )
 }
 
@@ -200,12 +207,13 @@ pub fn question_name(g: &Generated, i: usize, v: usize, lang: Lang) -> String {
     )
 }
 
-/// The statement and how to type the answers, as HTML.
+/// The statement with its marks, and how to type the answers, as HTML.
 pub fn intro_html(question: &Question, q: &Quiz, w: &Written) -> String {
     let lang = w.style.lang;
     let statement = w.style.w(&question.problem.statement);
+    let marks = w.style.doc(D::Marks(question.marks()));
     format!(
-        "<p>{}</p><p><i>{}</i></p>",
+        "<p>{} {marks}</p><p><i>{}</i></p>",
         esc_text(statement.trim()),
         esc(&instructions(&question.typing, q, lang, w.decimal))
     )

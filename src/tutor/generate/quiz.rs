@@ -77,27 +77,32 @@ impl Question {
     }
 
     /// The weight of each answer's every blank, so that an answer weighs
-    /// its marks whatever its number of blanks: with L the least common
-    /// multiple of the answers' blank counts, an answer of m marks and k
-    /// blanks gives each blank m·L/k (n = (0.8, 0.6, 0) worth 1 and a
-    /// status worth 1: L = 3, each of n's blanks 1, the status 3). Moodle
-    /// grades a Cloze question as Σ weight·fraction / Σ weight of its
-    /// default mark, so a right answer earns its marks exactly.
+    /// its marks whatever its number of blanks: an answer of m marks and k
+    /// blanks needs a multiple of k/gcd(m, k) for m·L/k to be whole; with L
+    /// the least common multiple of these over the answers, each of its
+    /// blanks weighs m·L/k (n = (0.8, 0.6, 0) worth 1 and a status worth 1:
+    /// L = 3, each of n's blanks 1, the status 3; n worth 3: L = 1). Moodle
+    /// grades a Cloze question as Σ weight·fraction / Σ weight, so a right
+    /// answer earns its share of the marks exactly.
     pub fn weights(&self) -> Vec<u32> {
         let count = |a: &Asked| a.blanks.len().max(1) as u32;
-        let l = self.asked.iter().map(count).fold(1, lcm);
+        let l = (self.asked.iter())
+            .map(|a| count(a) / gcd(a.marks.max(1), count(a)))
+            .fold(1, lcm);
         self.asked.iter().map(|a| a.marks * l / count(a)).collect()
     }
 }
 
+/// The greatest common divisor of two numbers.
+fn gcd(mut x: u32, mut y: u32) -> u32 {
+    while y != 0 {
+        (x, y) = (y, x % y);
+    }
+    x
+}
+
 /// The least common multiple of two positive numbers.
 fn lcm(a: u32, b: u32) -> u32 {
-    let gcd = |mut x: u32, mut y: u32| {
-        while y != 0 {
-            (x, y) = (y, x % y);
-        }
-        x
-    };
     a / gcd(a, b) * b
 }
 
