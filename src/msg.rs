@@ -18,7 +18,8 @@ mod report;
 mod said;
 pub use drawn::{DrawnTitle, NamedPoint, Number, ShadeAsked, StatedCamera, Statement, Triple};
 pub use errors::{
-    Bound, Channel, ClapErr, ErrMsg, IoWhy, NumErr, ObjWhy, Thing, TomlErr, Twice, Want,
+    Bound, Channel, ClapErr, ErrMsg, FileKind, IoWhy, ListWhy, NumErr, ObjWhy, Thing, TomlErr,
+    Twice, Want,
 };
 pub use figure::{FigWord, FigureMsg, Panel};
 pub use lang::Lang;
@@ -157,8 +158,11 @@ pub enum Msg {
     SecViewing,
     /// solve, part 3.
     SecProjection,
-    /// solve, part 4.
+    /// solve, part 4: the window, and which points are inside its view
+    /// volume.
     SecWindowClip,
+    /// solve, part 4, when there are no points to test: the window alone.
+    SecWindow,
     /// solve: the viewport.
     SecViewport,
     /// Line clipping (segment number when there are several).
@@ -285,6 +289,8 @@ pub enum Msg {
     FSpot,
     /// The clamp of the colour.
     FClamp,
+    /// The window's other edges and its size from top and the aspect.
+    FWindowEdges,
 
     // ---- notes ----
     /// Already a unit vector.
@@ -297,6 +303,8 @@ pub enum Msg {
     NoTermInModel(String, Term),
     /// The text's single white light.
     TextSetting,
+    /// The text's own formula of a term (Iₐ = Is·ka, …), with Is = 1.
+    TextTerm(Term),
     /// Summed over the lights in range.
     SummedInRange,
     /// The specular term is skipped.
@@ -383,8 +391,6 @@ pub enum Msg {
     Rounded(u32),
     /// Rounded to n significant figures, at least m required.
     RoundedCoarse(u32, u32),
-    /// n significant figures, at least m required.
-    SigCoarse(u32, u32),
     /// Within this percentage.
     WithinPct(String),
     /// Within half a pixel (a pixel position).
@@ -393,6 +399,10 @@ pub enum Msg {
     NotAnOutcode(String),
     /// Not a clipping status (the text as written).
     NotAStatus(String),
+    /// Not yes or no (the text as written).
+    NotYesOrNo(String),
+    /// Commas both as decimal marks and as separators: ambiguous.
+    AmbiguousCommas,
     /// Right given the student's earlier answers (follow-through).
     FollowThrough,
     /// Would follow from an earlier answer that cannot be (no
@@ -485,6 +495,12 @@ pub enum Msg {
     BehindWarn(String),
     /// Exact values that grew past this many terms were left approximate.
     ExactTooLarge(usize),
+    /// Exact values whose numerators or denominators grew past this many
+    /// bits were left approximate.
+    ExactTooLong(u64),
+    /// A temporary file or folder left by a grafika process that no longer
+    /// runs was removed: its path, the process.
+    StaleTempRemoved(String, u32),
     /// `--figure` was asked, but no part asked has a figure of its own
     /// (a problem file asking `viewport` alone).
     NoFigure,

@@ -899,7 +899,8 @@ fn the_new_mistakes_reach_the_quiz_feedback() {
     );
     let xml = std::fs::read_to_string(dir.join("quiz.xml")).unwrap();
     for words in [
-        "measured from the top edge (H − py)",
+        // the quiz writes a minus Moodle reads back
+        "measured from the top edge (H - py)",
         "Peye not subtracted",
         "top / aspect instead of aspect·top",
         "L not divided by |L|",
@@ -1080,4 +1081,196 @@ fn several_segments_are_asked_what_one_segment_is() {
     }
     assert_eq!(answer(&v, "clip.0.code0")["code"], "correct.exact");
     assert_eq!(answer(&v, "clip.0.code1")["code"], "correct.exact");
+}
+
+/// Marks `answers` (an answer file's text) against `problem` in JSON.
+fn marked(problem: &str, name: &str, answers: &str, more: &[&str]) -> Value {
+    let f = answers_file(name, answers);
+    let mut args = vec!["check", problem, "--answers", f.to_str().unwrap()];
+    args.extend(more);
+    json_ok(&args)
+}
+
+/// The answers of issue 35, as students and the text write them, each
+/// judged by what it is (values by hand in the comments).
+#[test]
+fn answers_in_the_forms_students_and_the_text_write() {
+    // the text's clipping example: right (x = 3) at t = 1/6, (3, 8/3,
+    // 11/6), kept; left (x = 0) at (0, 14/3, 4/3), y > 4, not kept; top
+    // (y = 4) at (1, 4, 3/2), kept
+    let v = marked(
+        "problems/text-clip.toml",
+        "clip-words",
+        "\"clip.intersections.right.point\" = \"A(3; 8/3; 11/6)\"\n\
+         \"clip.intersections.right.kept\" = \"ya\"\n\
+         \"clip.intersections.left.kept\" = \"tidak\"\n\
+         \"clip.intersections.top.kept\" = \"yes\"\n\
+         \"clip.intersections.top.point\" = \"B(1; 4; 3/2)\"\n\
+         \"clip.segment\" = \"A(3; 8/3; 11/6), B(1; 4; 3/2)\"\n",
+        &[],
+    );
+    for k in [
+        "right.point",
+        "right.kept",
+        "left.kept",
+        "top.kept",
+        "top.point",
+    ] {
+        let a = answer(&v, &format!("clip.intersections.{k}"));
+        assert_eq!(a["code"], "correct.exact", "{a}");
+    }
+    assert_eq!(answer(&v, "clip.segment")["code"], "correct.exact");
+    let v = marked(
+        "problems/text-clip.toml",
+        "clip-bools",
+        "\"clip.intersections.right.kept\" = true\n\"clip.intersections.left.kept\" = \"no\"\n\
+         \"clip.intersections.top.kept\" = \"false\"\n",
+        &[],
+    );
+    assert_eq!(
+        answer(&v, "clip.intersections.right.kept")["code"],
+        "correct.exact"
+    );
+    assert_eq!(
+        answer(&v, "clip.intersections.left.kept")["code"],
+        "correct.exact"
+    );
+    let top = answer(&v, "clip.intersections.top.kept");
+    assert_eq!(
+        (&top["verdict"], &top["note"]),
+        (&"wrong".into(), &"expected yes".into())
+    );
+
+    // eye (3, 4, 12) at the origin: u = (4√17/17, 0, −√17/17), v =
+    // (−4, 51, −16)/(13√17), n = (3, 4, 12)/13: exact in every form
+    let v = marked(
+        "problems/view-surds.toml",
+        "surds",
+        "\"view.u\" = \"(4/sqrt(17), 0, -17/(17*sqrt(17)))\"\n\
+         \"view.v\" = \"(−4/(13√17), 3√17/13, −16/(13√17))\"\n\
+         \"view.n\" = \"(3, 4, 12)/13\"\n",
+        &[],
+    );
+    for k in ["view.u", "view.v", "view.n"] {
+        assert_eq!(answer(&v, k)["code"], "correct.exact", "{}", answer(&v, k));
+    }
+
+    // the text's example 6.1: V = [0 0 −1 4; −3/5 4/5 0 −4/5; 4/5 3/5 0
+    // −28/5; 0 0 0 1], as rows of numbers by spaces with decimal commas
+    let v = marked(
+        "problems/text-camera.toml",
+        "rows",
+        "\"view.matrix\" = \"0 0 -1 4; -0,6 0,8 0 -0,8; 0,8 0,6 0 -5,6; 0 0 0 1\"\n\
+         \"view.n\" = \"0,8, 0,6, 0\"\n",
+        &[],
+    );
+    assert_eq!(answer(&v, "view.matrix")["code"], "correct.exact");
+    let n = answer(&v, "view.n");
+    assert_eq!(n["verdict"], "unparseable", "{n}");
+    let note = n["note"].as_str().unwrap();
+    assert!(
+        note.contains("0,7071; 0; 0,7071") && note.contains("0.7071, 0, 0.7071"),
+        "{note}"
+    );
+    let f = answers_file("ambiguous-id", "\"view.n\" = \"0,8, 0,6, 0\"\n");
+    let id = json_ok(&[
+        "--lang",
+        "id",
+        "check",
+        "problems/text-camera.toml",
+        "--answers",
+        f.to_str().unwrap(),
+    ]);
+    let note = answer(&id, "view.n")["note"].as_str().unwrap().to_string();
+    assert!(
+        note.contains("koma") && note.contains("0,7071; 0; 0,7071"),
+        "{note}"
+    );
+
+    // the triangle's n = (1, 0, 1)/√2 and u = (1, 0, −1)/√2, as grafika prints them
+    let v = marked(
+        "problems/text-triangle.toml",
+        "over-root",
+        "\"view.n\" = \"(1, 0, 1)/√2\"\n\"view.u\" = \"√2/2·(1, 0, −1)\"\n",
+        &[],
+    );
+    assert_eq!(answer(&v, "view.n")["code"], "correct.exact");
+    assert_eq!(answer(&v, "view.u")["code"], "correct.exact");
+
+    // cos α = 26/√677 = 0.99926 for L = (1, 0, 26), N = (0, 0, 1): 1.0 is
+    // 0.074 % off, within the tolerance: correct, not too coarse
+    let dir = scratch("issue-35-problems");
+    let cos = dir.join("cos.toml");
+    std::fs::write(
+        &cos,
+        "title = 'c'\n[shade]\nmodel = 'diffuse'\nlight = [1, 0, 26]\nnormal = [0, 0, 1]\n\
+         view = [0, 0, 1]\ncolor = [1, 1, 1]\n",
+    )
+    .unwrap();
+    let v = marked(
+        cos.to_str().unwrap(),
+        "cos",
+        "\"shade.cos_alpha\" = \"1.0\"\n",
+        &[],
+    );
+    assert_eq!(answer(&v, "shade.cos_alpha")["code"], "correct.tolerance");
+    // A = (3, −1, −√10) onto z = −1: (3/√10, −1/√10) = (0.9487, −0.3162);
+    // (0.9, −0.3) keeps one figure of each: too coarse
+    let proj = dir.join("proj.toml");
+    std::fs::write(
+        &proj,
+        "title = 'p'\nask = ['project']\n[perspective]\nd = -1\nnear = 1\n\
+         [camera]\neye = [0, 0, 0]\nlook = [0, 0, -1]\nup = [0, 1, 0]\n\
+         [points]\nA = ['3', '-1', '-sqrt(10)']\n",
+    )
+    .unwrap();
+    let v = marked(
+        proj.to_str().unwrap(),
+        "proj",
+        "\"project.points.A\" = \"(0.9, −0.3)\"\n",
+        &[],
+    );
+    assert_eq!(answer(&v, "project.points.A")["verdict"], "too_coarse");
+}
+
+/// The four mistakes issue 35 adds, each made on a shipped problem and
+/// named (values by hand).
+#[test]
+fn the_new_mistakes_are_named() {
+    // example 6.1 with u and v swapped: u = (−3/5, 4/5, 0), v = (0, 0, −1)
+    let v = marked(
+        "problems/text-camera.toml",
+        "uv",
+        "\"view.n\" = \"4/5, 3/5, 0\"\n\"view.u\" = \"-3/5, 4/5, 0\"\n\"view.v\" = \"0, 0, -1\"\n",
+        &[],
+    );
+    assert!(codes(answer(&v, "view.u")).contains(&"uv_swapped".to_string()));
+    // Mcam (columns u, v, n, Pe = (4, 4, 4)) as the view matrix
+    let v = marked(
+        "problems/text-camera.toml",
+        "mcam",
+        "\"view.matrix\" = \"0, -0.6, 0.8, 4; 0, 0.8, 0.6, 4; -1, 0, 0, 4; 0, 0, 0, 1\"\n",
+        &[],
+    );
+    assert_eq!(codes(answer(&v, "view.matrix")), ["mcam_as_view"]);
+    // t from P1 in the clipping example: 5/6 for x = 3, 1/3 for x = 0
+    let v = marked(
+        "problems/text-clip.toml",
+        "t",
+        "\"clip.intersections.right.t\" = \"5/6\"\n\"clip.intersections.left.t\" = \"1/3\"\n\
+         \"clip.intersections.right.point\" = \"(3, 8/3, 11/6)\"\n",
+        &[],
+    );
+    assert_eq!(
+        codes(answer(&v, "clip.intersections.right.t")),
+        ["t_from_p1"]
+    );
+    // the penumbra spot with cos taken in radians: spot 1, colour 0.48
+    let v = marked(
+        "problems/shade-spot-penumbra.toml",
+        "rad",
+        "\"shade.color\" = \"0.48, 0.48, 0.48\"\n",
+        &[],
+    );
+    assert!(codes(answer(&v, "shade.color")).contains(&"cos_in_radians".to_string()));
 }

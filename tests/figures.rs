@@ -15,6 +15,7 @@ use grafika::report::figure::{
 };
 use grafika::report::lang::Lang;
 use grafika::report::Style;
+use grafika::tutor::generate::{self, Difficulty, Topic};
 use proptest::prelude::*;
 
 // ---- reading a figure back ----
@@ -45,6 +46,8 @@ struct M {
     dashed: Vec<bool>,
     /// Whether it is drawn (a face of the box is not).
     stroked: bool,
+    /// Whether it is a line with a head at its tip (`marker-end`).
+    head: bool,
 }
 
 /// One text read back: its kind (`label`, `note`, `title`), the mark it
@@ -183,12 +186,14 @@ fn read_svg(svg: &str) -> Vec<P> {
                 t => panic!("unexpected mark element {t}"),
             }
             let stroked = n.attribute("stroke") != Some("none");
+            let head = n.attribute("marker-end").is_some();
             p.marks.push(M {
                 name,
                 kind: kind.into(),
                 pts,
                 dashed,
                 stroked,
+                head,
             });
         }
         out.push(p);
@@ -409,6 +414,105 @@ fn shading_diagrams_of_the_shipped_problems_at_true_angles() {
             .expect("a plane of incidence");
         true_angles(first, n, step_vec(&args, "L").unwrap(), v, &f);
     }
+}
+
+/// The angles a report's steps name, in the figure's names: each step
+/// whose result holds `cos α` names α (α2, α3, … for the second, third
+/// light: the steps are in the lights' order), `cos β` names β, and
+/// Blinn's `N·H` names N·H.
+fn angles_named(report: &grafika::tutor::solution::Report) -> Vec<String> {
+    let json = serde_json::to_value(report.to_json(Lang::En)).unwrap();
+    let mut steps = Vec::new();
+    fn walk<'a>(v: &'a serde_json::Value, out: &mut Vec<&'a serde_json::Value>) {
+        match v {
+            serde_json::Value::Object(m) => {
+                if let Some(serde_json::Value::Array(s)) = m.get("steps") {
+                    out.extend(s.iter());
+                }
+                m.values().for_each(|x| walk(x, out));
+            }
+            serde_json::Value::Array(a) => a.iter().for_each(|x| walk(x, out)),
+            _ => {}
+        }
+    }
+    walk(&json, &mut steps);
+    let (mut a, mut b) = (0, 0);
+    let mut out = Vec::new();
+    let tag = |k: usize| if k == 1 { String::new() } else { k.to_string() };
+    for s in steps {
+        let r = &s["result"];
+        if !r["cos α"].is_null() {
+            a += 1;
+            out.push(format!("α{}", tag(a)));
+        }
+        if !r["cos β"].is_null() {
+            b += 1;
+            out.push(format!("β{}", tag(b)));
+        }
+        if !r["N·H"].is_null() {
+            out.push("N·H".into());
+        }
+    }
+    out
+}
+
+/// Every angle the steps name has its arc in the figure: the shipped
+/// lighting problems (shade-blinn-local's α = 0°, L along N, drawn as a
+/// short arc across the two arrows side by side), the shading command
+/// lines above and generated lighting exams at every difficulty.
+#[test]
+fn every_angle_the_steps_name_has_its_arc() {
+    let mut files: Vec<String> = std::fs::read_dir("problems")
+        .unwrap()
+        .map(|e| e.unwrap().path().to_string_lossy().into_owned())
+        .filter(|p| p.contains("/shade-"))
+        .collect();
+    files.sort();
+    let mut reports: Vec<(String, grafika::tutor::solution::Report)> = Vec::new();
+    let mut runs: Vec<Vec<String>> = files
+        .iter()
+        .map(|f| vec!["solve".into(), f.clone()])
+        .collect();
+    runs.extend(
+        COMMANDS
+            .iter()
+            .filter(|c| c[0] == "shade")
+            .map(|c| c.iter().map(|a| a.to_string()).collect()),
+    );
+    for args in runs {
+        let mut all = vec!["grafika".to_string()];
+        all.extend(args.iter().cloned());
+        let cli = Cli::try_parse_from(all).expect("arguments parse");
+        reports.push((format!("{args:?}"), grafika::cli::run(&cli).unwrap()));
+    }
+    for level in [Difficulty::Easy, Difficulty::Medium, Difficulty::Hard] {
+        for (k, g) in generate::exam(&[Topic::Shade], level, 4, 11)
+            .unwrap()
+            .into_iter()
+            .enumerate()
+        {
+            reports.push((format!("{level:?} #{k}"), g.report));
+        }
+    }
+    let mut arcs = 0;
+    for (what, report) in &reports {
+        let named = angles_named(report);
+        assert!(!named.is_empty(), "{what}: no angle named");
+        for lang in [Lang::En, Lang::Id] {
+            let drawn: Vec<String> = drawings(report, &Style::new(4, true, lang))
+                .iter()
+                .flat_map(|d| read_svg(&to_svg(d)))
+                .flat_map(|p| p.marks)
+                .filter(|m| m.kind == "arc")
+                .map(|m| m.name)
+                .collect();
+            for a in &named {
+                assert!(drawn.contains(a), "{what} {lang:?}: no arc {a}: {drawn:?}");
+                arcs += 1;
+            }
+        }
+    }
+    assert!(arcs > 60, "{arcs} arcs");
 }
 
 proptest! {
@@ -750,6 +854,117 @@ fn the_clip_box_names_its_planes_codes_and_intersections() {
 
 // ---- every label beside its own mark ----
 
+/// The centre of a face of the clip box on the page (px, y down).
+fn centre(m: &M) -> (f64, f64) {
+    let n = m.pts.len() as f64;
+    let (x, y) = m.pts.iter().fold((0.0, 0.0), |a, p| (a.0 + p.0, a.1 + p.1));
+    (x / n, y / n)
+}
+
+/// The clip box of one panel drawn as the text's region codes read it
+/// (bit 1 left x < xmin, bit 2 right x > xmax, bit 3 bottom y < ymin, bit 4
+/// top y > ymax, bit 5 front z < zmin, bit 6 back z > zmax; spec §1): the
+/// front face z = zmin toward the reader, the back face z = zmax away.
+/// Read from the SVG alone: the corner where the three dashed (hidden)
+/// edges meet is the box's corner farthest from the reader, so it is a
+/// corner of the back face and not one of the front face; the right
+/// face's centre lies right of the left face's on the page, the top
+/// face's above the bottom face's; and the words on the faces say so.
+fn clip_faces_read(p: &P, lang: Lang, what: &str) {
+    let b = p.mark("box");
+    let hidden: Vec<((f64, f64), (f64, f64))> = (0..12)
+        .filter(|i| b.dashed[*i])
+        .map(|i| (b.pts[2 * i], b.pts[2 * i + 1]))
+        .collect();
+    assert_eq!(hidden.len(), 3, "{what}: three hidden edges");
+    let near = |a: (f64, f64), c: (f64, f64)| (a.0 - c.0).hypot(a.1 - c.1) < 0.5;
+    let corner = [hidden[0].0, hidden[0].1]
+        .into_iter()
+        .find(|c| hidden.iter().all(|(a, e)| near(*a, *c) || near(*e, *c)))
+        .unwrap_or_else(|| panic!("{what}: the hidden edges meet at no corner"));
+    let has = |face: &str| p.mark(face).pts.iter().any(|q| near(*q, corner));
+    assert!(
+        has("z = zmax"),
+        "{what}: the back face is not away from the reader"
+    );
+    assert!(
+        !has("z = zmin"),
+        "{what}: the front face is not toward the reader"
+    );
+    let (l, r) = (centre(p.mark("x = xmin")), centre(p.mark("x = xmax")));
+    assert!(r.0 > l.0, "{what}: x = xmax is not right of x = xmin");
+    let (bt, tp) = (centre(p.mark("y = ymin")), centre(p.mark("y = ymax")));
+    assert!(tp.1 < bt.1, "{what}: y = ymax is not above y = ymin");
+    let words = match lang {
+        Lang::En => [
+            "(left)", "(right)", "(bottom)", "(top)", "(front)", "(back)",
+        ],
+        Lang::Id => ["kiri", "kanan", "bawah", "atas", "depan", "belakang"],
+    };
+    let planes = [
+        "x = xmin", "x = xmax", "y = ymin", "y = ymax", "z = zmin", "z = zmax",
+    ];
+    for (plane, word) in planes.iter().zip(words) {
+        // A face's label may be written short, its text in a note.
+        let text = p.label(plane).map_or_else(|| p.notes(), str::to_string);
+        assert!(
+            text.contains(word),
+            "{what}: {plane} is not {word}: {text:?}"
+        );
+    }
+}
+
+/// Every clip box grafika draws (the shipped problems, README's command
+/// and a segment along x, generated exams at every difficulty, both
+/// languages) has its face words where the drawing puts those faces
+/// ([`clip_faces_read`]).
+#[test]
+fn the_clip_boxs_face_words_agree_with_the_drawing() {
+    let mut files: Vec<String> = std::fs::read_dir("problems")
+        .unwrap()
+        .map(|e| e.unwrap().path().to_string_lossy().into_owned())
+        .filter(|p| p.ends_with(".toml"))
+        .collect();
+    files.sort();
+    let mut runs: Vec<Vec<String>> = files
+        .iter()
+        .map(|f| vec!["solve".into(), f.clone()])
+        .collect();
+    runs.extend(
+        COMMANDS
+            .iter()
+            .filter(|c| c[0] == "clip")
+            .map(|c| c.iter().map(|a| a.to_string()).collect()),
+    );
+    let mut boxes = 0;
+    let mut check = |lang: Lang, what: &str, d: &Drawing| {
+        for p in read_svg(&to_svg(d)).iter().filter(|p| p.has("box")) {
+            clip_faces_read(p, lang, what);
+            boxes += 1;
+        }
+    };
+    for lang in [Lang::En, Lang::Id] {
+        for args in &runs {
+            let args: Vec<&str> = args.iter().map(String::as_str).collect();
+            for d in drawn_in(lang, &args) {
+                check(lang, &format!("{args:?}"), &d);
+            }
+        }
+        for level in [Difficulty::Easy, Difficulty::Medium, Difficulty::Hard] {
+            for (k, g) in generate::exam(&[Topic::Clip], level, 4, 7)
+                .unwrap()
+                .iter()
+                .enumerate()
+            {
+                for d in drawings(&g.report, &Style::new(4, true, lang)) {
+                    check(lang, &format!("{level:?} #{k}"), &d);
+                }
+            }
+        }
+    }
+    assert!(boxes >= 30, "{boxes} boxes checked");
+}
+
 /// The distance from a box to a segment (0 when it crosses).
 fn box_to_segment(b: (f64, f64, f64, f64), p: (f64, f64), q: (f64, f64)) -> f64 {
     if crosses(b, p, q) {
@@ -834,64 +1049,288 @@ fn distance(t: &T, m: &M) -> f64 {
         .fold(f64::MAX, f64::min)
 }
 
-/// Over every figure of every shipped problem, in both languages: each
-/// label within 40 px of its own mark, no two texts overlapping, no other
-/// mark's line through a label, every text on the page (text widths as
-/// the layout estimates them for DejaVu Sans, the widest common font).
-#[test]
-fn labels_stand_beside_their_own_marks_in_every_shipped_figure() {
-    let mut files: Vec<_> = std::fs::read_dir("problems")
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-        .collect();
-    files.sort();
-    let mut checked = 0;
-    for f in &files {
-        let f = f.to_string_lossy();
-        for lang in [Lang::En, Lang::Id] {
-            for d in drawn_in(lang, &["solve", &f]) {
-                let svg = to_svg(&d);
-                let width: f64 = 600.0;
-                let all: Vec<P> = read_svg(&svg);
-                let texts: Vec<&T> = all.iter().flat_map(|p| &p.texts).collect();
-                for (i, a) in texts.iter().enumerate() {
-                    assert!(
-                        a.bx.0 >= 0.0 && a.bx.1 <= width,
-                        "{f}: {:?} leaves the page",
-                        a.text
-                    );
-                    for b in &texts[..i] {
-                        let apart = a.bx.1 <= b.bx.0
-                            || b.bx.1 <= a.bx.0
-                            || a.bx.3 <= b.bx.2
-                            || b.bx.3 <= a.bx.2;
-                        assert!(apart, "{f}: {:?} overlaps {:?}", a.text, b.text);
+/// The points a label may name: a dot's centre, the tip of a line with a
+/// head (an arrow, an axis).
+fn spots(m: &M) -> Vec<(f64, f64)> {
+    match (m.kind.as_str(), m.head) {
+        ("point", _) => m.pts.clone(),
+        (_, true) => vec![m.pts[1]],
+        _ => vec![],
+    }
+}
+
+/// The ends of a mark's lines: both ends of a line (each of the box's
+/// edges), an arc's first and last point, an outline's corners.
+fn ends(m: &M) -> Vec<(f64, f64)> {
+    match m.kind.as_str() {
+        _ if !m.stroked || m.pts.len() < 2 => vec![],
+        "arc" => vec![m.pts[0], m.pts[m.pts.len() - 1]],
+        _ => m.pts.clone(),
+    }
+}
+
+/// The distance from a box to a point.
+fn box_to_point(b: (f64, f64, f64, f64), p: (f64, f64)) -> f64 {
+    box_to_segment(b, p, p)
+}
+
+/// The marks a label names: its own (`data-for`) and those its text
+/// names, the pieces between ` = ` and ` ≈ ` but the last that are marks'
+/// names (`N = V = (0, 0, 1)` names N and V).
+fn named_by<'a>(t: &'a T, p: &P) -> Vec<&'a str> {
+    let mut pieces: Vec<&str> = t.text.split(" = ").flat_map(|x| x.split(" ≈ ")).collect();
+    pieces.pop();
+    let mut out = vec![t.of.as_str()];
+    out.extend(pieces.into_iter().filter(|x| p.has(x)));
+    out
+}
+
+/// What is wrong with the labels of one drawing's SVG, measured from its
+/// own geometry (text extents estimated as the layout estimates them, for
+/// DejaVu Sans, the widest common sans-serif font; the SVG's coordinates
+/// are rounded to 0.1 px, so each bound is taken 0.5 to 1 px looser than
+/// the layout's own): each label
+/// - within 40 px of its own mark (a dot's centre, an arrow's or axis's
+///   tip, a segment, an arc, an outline, a face);
+/// - nearer its own mark than any other mark's dot or tip, by 2 px at
+///   least (the marks its text names excepted: `N = V = …`);
+/// - over no dot, no line and no line's end (1.5 px clear of it);
+/// - 9 px clear of every other label side by side, or 1.5 px above or
+///   below (closer, `fovy = 60°` and `near = 1` read as one phrase);
+///
+/// and no two texts (labels, notes) overlap or leave the 600 px page.
+fn label_faults(svg: &str) -> Vec<String> {
+    let mut faults = Vec::new();
+    let all = read_svg(svg);
+    let texts: Vec<&T> = all.iter().flat_map(|p| &p.texts).collect();
+    for (i, a) in texts.iter().enumerate() {
+        if a.bx.0 < 0.0 || a.bx.1 > 600.0 {
+            faults.push(format!("{:?} leaves the page", a.text));
+        }
+        for b in &texts[..i] {
+            let (gx, gy) = match (a.kind.as_str(), b.kind.as_str()) {
+                ("label", "label") => (9.0, 1.5),
+                _ => (0.0, 0.0),
+            };
+            let apart = a.bx.1 + gx <= b.bx.0
+                || b.bx.1 + gx <= a.bx.0
+                || a.bx.3 + gy <= b.bx.2
+                || b.bx.3 + gy <= a.bx.2;
+            if !apart {
+                faults.push(format!("{:?} runs into {:?}", a.text, b.text));
+            }
+        }
+    }
+    for p in &all {
+        for t in p.texts.iter().filter(|t| t.kind == "label") {
+            let m = p.mark(&t.of);
+            let own = distance(t, m);
+            if own > 40.0 {
+                faults.push(format!("{:?} is {own:.1} px from {:?}", t.text, t.of));
+            }
+            let names = named_by(t, p);
+            for o in &p.marks {
+                for s in spots(o) {
+                    let d = box_to_point(t.bx, s);
+                    if !names.contains(&o.name.as_str()) && d < own + 2.0 {
+                        faults.push(format!(
+                            "{:?} is {d:.1} px from {:?}, {own:.1} from its own {:?}",
+                            t.text, o.name, t.of
+                        ));
                     }
                 }
-                for p in &all {
-                    for t in p.texts.iter().filter(|t| t.kind == "label") {
-                        let m = p.mark(&t.of);
-                        let d = distance(t, m);
-                        assert!(d <= 40.0, "{f}: {:?} is {d} px from {:?}", t.text, t.of);
-                        let inner = (t.bx.0 + 1.0, t.bx.1 - 1.0, t.bx.2 + 1.0, t.bx.3 - 1.0);
-                        for o in p.marks.iter().filter(|o| o.name != m.name && o.stroked) {
-                            for (a, b) in lines(o) {
-                                assert!(
-                                    !crosses(inner, a, b),
-                                    "{f}: {} crosses {:?}",
-                                    o.name,
-                                    t.text
-                                );
-                            }
+                for e in ends(o) {
+                    if box_to_point(t.bx, e) < 1.5 {
+                        faults.push(format!("{:?} is over an end of {:?}", t.text, o.name));
+                    }
+                }
+                if o.name == m.name || !o.stroked {
+                    continue;
+                }
+                let inner = (t.bx.0 + 1.0, t.bx.1 - 1.0, t.bx.2 + 1.0, t.bx.3 - 1.0);
+                if lines(o).iter().any(|(a, b)| crosses(inner, *a, *b)) {
+                    faults.push(format!("{:?} crosses {:?}", o.name, t.text));
+                }
+            }
+        }
+    }
+    faults
+}
+
+/// A few command lines of every calculator command with a figure, as
+/// README and students write them: README's examples, the other
+/// projections and lighting models, a far plane, and a student's own
+/// camera with a point near Pref.
+const COMMANDS: &[&[&str]] = &[
+    &[
+        "basis", "--eye", "3,1,3", "--look", "2,1,2", "--up", "0,1,0",
+    ],
+    &[
+        "view",
+        "--eye",
+        "4,4,4",
+        "--look",
+        "0,1,4",
+        "--up",
+        "0,1,0",
+        "--point",
+        "Pref=0,1,4",
+    ],
+    &[
+        "view",
+        "--eye",
+        "(0, 0, 5)",
+        "--look",
+        "0,0,0",
+        "--up",
+        "0,1,0",
+        "--point",
+        "P=0.3,0.2,0",
+    ],
+    &[
+        "project",
+        "--d",
+        "-0.1",
+        "--point",
+        "A=0,-1,-6/sqrt(2)",
+        "--point",
+        "B=1/sqrt(2),-1,-5/sqrt(2)",
+    ],
+    &[
+        "project", "--cop", "5", "--plane", "0", "--point", "A=1,2,-3",
+    ],
+    &[
+        "project",
+        "--ortho",
+        "--point",
+        "A=1,2,-3",
+        "--point",
+        "B=−1,0,−2",
+    ],
+    &[
+        "window",
+        "--fovy",
+        "45",
+        "--aspect",
+        "2",
+        "--near",
+        "0,1",
+        "--viewport",
+        "200x100",
+        "--point",
+        "A=0,-sqrt(2)/60",
+    ],
+    &[
+        "window",
+        "--fovy",
+        "90",
+        "--aspect",
+        "2",
+        "--near",
+        "1",
+        "--far",
+        "3",
+        "--viewport",
+        "200x100",
+        "--point",
+        "A=0.5,0.5",
+    ],
+    &[
+        "clip", "--min", "0,0,0", "--max", "3,4,3", "--from", "4,2,2", "--to", "-2,6,1",
+    ],
+    &[
+        "clip",
+        "--min",
+        "0,0,0",
+        "--max",
+        "1,1,1",
+        "--from",
+        "-1,0.5,0.5",
+        "--to",
+        "2,0.5,0.5",
+    ],
+    &[
+        "shade", "--light", "0,0,1", "--normal", "0,1,1", "--view", "0,0,1", "--color", "1,1,0",
+    ],
+    &[
+        "shade", "--model", "blinn", "--light", "1,1,1", "--normal", "0,1,0", "--view", "0,0,1",
+        "--color", "1,0.5,0",
+    ],
+    &[
+        "shade", "--normal", "0,0,1", "--light", "1,0,1", "--view", "0,1,1", "--color", "1,1,1",
+    ],
+];
+
+/// Every figure grafika draws from the shipped problems (`solve`), from
+/// the calculator commands above and from generated exams (every topic at
+/// every difficulty, two seeds), in both languages: no label fault
+/// ([`label_faults`]).
+#[test]
+fn labels_stand_on_their_own_marks_in_every_figure() {
+    let mut files: Vec<_> = std::fs::read_dir("problems")
+        .unwrap()
+        .map(|e| e.unwrap().path().to_string_lossy().into_owned())
+        .filter(|p| p.ends_with(".toml"))
+        .collect();
+    files.sort();
+    let mut runs: Vec<Vec<String>> = files
+        .iter()
+        .map(|f| vec!["solve".into(), f.clone()])
+        .collect();
+    runs.extend(
+        COMMANDS
+            .iter()
+            .map(|c| c.iter().map(|a| a.to_string()).collect()),
+    );
+    let mut faults = Vec::new();
+    let mut labels = 0;
+    let mut check = |what: &str, d: &Drawing| {
+        let svg = to_svg(d);
+        labels += svg.matches(r#"data-kind="label""#).count();
+        faults.extend(
+            label_faults(&svg)
+                .into_iter()
+                .map(|f| format!("{what}: {f}")),
+        );
+    };
+    for lang in [Lang::En, Lang::Id] {
+        for args in &runs {
+            let args: Vec<&str> = args.iter().map(String::as_str).collect();
+            for d in drawn_in(lang, &args) {
+                check(&format!("{lang:?} {args:?} {}", d.part), &d);
+            }
+        }
+        for topic in [
+            Topic::Basis,
+            Topic::View,
+            Topic::Project,
+            Topic::Window,
+            Topic::Clip,
+            Topic::Shade,
+            Topic::Pipeline,
+        ] {
+            for level in [Difficulty::Easy, Difficulty::Medium, Difficulty::Hard] {
+                for seed in [3, 2026] {
+                    for (k, g) in generate::exam(&[topic], level, 2, seed)
+                        .unwrap()
+                        .iter()
+                        .enumerate()
+                    {
+                        for d in drawings(&g.report, &Style::new(4, true, lang)) {
+                            check(&format!("{lang:?} {topic:?} {level:?} {seed} #{k}"), &d);
                         }
-                        checked += 1;
                     }
                 }
             }
         }
     }
-    assert!(checked > 300, "{checked} labels checked");
+    assert!(
+        faults.is_empty(),
+        "{} faults:\n{}",
+        faults.len(),
+        faults.join("\n")
+    );
+    assert!(labels > 2000, "{labels} labels checked");
 }
 
 // ---- words ----

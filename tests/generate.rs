@@ -133,75 +133,124 @@ fn a_planted_mistake_is_caught_and_named() {
             // `--clip mixed`: the clipping mistakes of every status
             let mixed = generate::ClipCase::Mixed;
             for g in drawn(&[topic], level, (3, 1), 5, mixed).remove(0) {
+                let keys: Vec<String> = g.keys.iter().map(Key::to_string).collect();
                 for m in Code::all() {
-                    let Some(variants) = m.apply(&g.problem) else {
-                        continue;
-                    };
-                    // The key with the mistaken value wherever the mistake
-                    // changes an answer (the view matrix too, when it does).
-                    let mut keys: Vec<String> = g.keys.iter().map(Key::to_string).collect();
-                    keys.push("view.matrix".into());
-                    let tree = &variants[0];
-                    let mut answers = Vec::new();
-                    let mut changed = 0;
-                    for k in &keys {
-                        let (Some(right), Some(wrong)) =
-                            (lookup(&g.report.result, k), lookup(tree, k))
-                        else {
-                            continue;
-                        };
-                        if differs(right, wrong) {
-                            changed += 1;
-                            answers.push((k.clone(), answer_toml(wrong)));
-                        } else if k != "view.matrix" {
-                            answers.push((k.clone(), answer_toml(right)));
-                        }
+                    if plant(m, &g.problem, &keys, &g.report.result, &g.body) {
+                        planted.insert(m.as_str());
                     }
-                    if changed == 0 {
-                        continue;
-                    }
-                    let mk =
-                        check::mark(&g.problem, "planted", &answers, Settings::default(), false)
-                            .unwrap();
-                    let wrong: Vec<_> = mk
-                        .answers
-                        .iter()
-                        .filter(|a| a.verdict == Verdict::Wrong)
-                        .collect();
-                    assert!(!wrong.is_empty(), "{} not caught in {}", m, g.body);
-                    for a in &wrong {
-                        assert!(
-                            a.diagnosis.contains(&m),
-                            "{}: {} diagnosed as {:?} in\n{}",
-                            m,
-                            a.key,
-                            a.diagnosis,
-                            g.body
-                        );
-                    }
-                    planted.insert(m.as_str());
                 }
             }
         }
     }
-    // Every mistake of the catalog was planted somewhere, and caught, but
-    // the copied misprint (a generated problem has no errata) and leaving
-    // out max(0, cos β) (a generated problem's specular term shows, so cos
-    // β > 0 and the max changes nothing).
-    let not_drawn = ["copied_misprint", "specular_no_max"];
+    // The shipped problems too: the text's misprints (a generated problem
+    // has no errata), the spot lights (generated lighting problems have
+    // none) and a specular term that max(0, cos β) clamps (a generated
+    // problem's specular term shows, so cos β > 0) show the mistakes no
+    // generated problem can.
+    let mut shipped: Vec<PathBuf> = std::fs::read_dir(root().join("problems"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    shipped.sort();
+    for path in shipped {
+        let p = grafika::input::problem::ProblemIn::read(&path).unwrap();
+        let marker = check::Marker::new(&p, Settings::default()).unwrap();
+        let keys: Vec<String> = marker.order.iter().map(Key::to_string).collect();
+        let name = path.display().to_string();
+        for m in Code::all() {
+            if plant(m, &p, &keys, &marker.result, &name) {
+                planted.insert(m.as_str());
+            }
+        }
+    }
+    // Every mistake of the catalog was planted somewhere, and caught.
     for code in Code::all() {
-        let code = code.as_str();
-        let drawn = !not_drawn.contains(&code);
-        assert_eq!(planted.contains(code), drawn, "{code}: planted {planted:?}");
+        assert!(
+            planted.contains(code.as_str()),
+            "{code}: planted {planted:?}"
+        );
     }
 }
 
-/// The numbers of a value.
+/// Plants mistake `m` in a sheet of the problem's `keys` (the view matrix
+/// too, when the mistake changes it): its first variant's value wherever
+/// it differs from the right one, the right value elsewhere. Asserts that
+/// `check` marks some answer wrong and names `m` for every wrong one;
+/// false when the mistake does not apply or changes no answer.
+fn plant(
+    m: Code,
+    p: &grafika::input::problem::ProblemIn,
+    keys: &[String],
+    right: &check::Tree,
+    what: &str,
+) -> bool {
+    let Some(variants) = m.apply(p) else {
+        return false;
+    };
+    let mut keys = keys.to_vec();
+    keys.push("view.matrix".into());
+    let tree = &variants[0];
+    let mut answers = Vec::new();
+    let mut changed = 0;
+    for k in &keys {
+        let (Some(right), Some(wrong)) = (lookup(right, k), lookup(tree, k)) else {
+            continue;
+        };
+        if differs(right, wrong) {
+            changed += 1;
+            answers.push((k.clone(), answer_toml(wrong)));
+        } else if k != "view.matrix" {
+            answers.push((k.clone(), answer_toml(right)));
+        }
+    }
+    if changed == 0 {
+        return false;
+    }
+    let mk = check::mark(p, "planted", &answers, Settings::default(), false).unwrap();
+    let wrong: Vec<_> = mk
+        .answers
+        .iter()
+        .filter(|a| a.verdict == Verdict::Wrong)
+        .collect();
+    assert!(!wrong.is_empty(), "{m} not caught in {what}");
+    for a in &wrong {
+        assert!(
+            a.diagnosis.contains(&m),
+            "{m}: {} diagnosed as {:?} in\n{what}",
+            a.key,
+            a.diagnosis
+        );
+    }
+    true
+}
+
+/// The numbers of a value (of a list or a map, in order).
 fn leaves(v: &Val) -> Vec<f64> {
     match v {
         Val::Num(x) => vec![x.value],
         Val::List(items) => items.iter().flat_map(leaves).collect(),
+        Val::Map(kv) => kv.iter().flat_map(|(_, x)| leaves(x)).collect(),
         _ => vec![],
+    }
+}
+
+/// The value with its numbers left out: its shape, words and yes or no.
+fn shape(v: &Val) -> String {
+    match v {
+        Val::Num(_) => "#".into(),
+        Val::List(items) => format!(
+            "[{}]",
+            items.iter().map(shape).collect::<Vec<_>>().join(",")
+        ),
+        Val::Map(kv) => format!(
+            "{{{}}}",
+            kv.iter()
+                .map(|(k, x)| format!("{k}:{}", shape(x)))
+                .collect::<Vec<_>>()
+                .join(",")
+        ),
+        other => format!("{other:?}"),
     }
 }
 
@@ -210,8 +259,8 @@ fn leaves(v: &Val) -> Vec<f64> {
 /// marker can see. Other values are planted, and differ, as right ones.
 fn differs(a: &Val, b: &Val) -> bool {
     let (x, y) = (leaves(a), leaves(b));
-    if x.is_empty() || x.len() != y.len() {
-        return a != b;
+    if shape(a) != shape(b) {
+        return true;
     }
     let scale = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     let t = |x: f64, s: f64| check::tolerance::absolute(x, s, 1e-3);

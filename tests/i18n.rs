@@ -599,7 +599,7 @@ const KEPT: &str = "viewing window view volume clipping clip clipped accepted re
     quit none eye exact follow through seed Cspecular Cwhite D3DRS_LOCALVIEWER TRUE diagnosis \
     kiri kanan bawah atas depan belakang contoh bab budi abc axis zprp zvp off \
     basis errata global per trivial face linear render renderer rasterizer raster binning thread \
-    encoding png buffer rgb row pipeline";
+    encoding png buffer rgb row pipeline Is Ia Id Isp ksp cosⁿ";
 
 /// The words of a text, with what is not a sentence's word taken out: the
 /// keys of answers (`view.points.A`), the mistake codes
@@ -672,9 +672,16 @@ fn run_in(lang: &str, args: &[&str], stdin: &str, page: Option<&std::path::Path>
             .map(|s| s.split_once("</svg>").map_or(s, |x| x.1));
         for part in html {
             let mut inside = false;
-            for c in part.chars() {
+            let chars: Vec<char> = part.chars().collect();
+            for (i, &c) in chars.iter().enumerate() {
+                // a tag opens with a name or `/` (a formula's `q < 0` is text)
+                let tag = |k: usize| {
+                    chars
+                        .get(k)
+                        .is_some_and(|n| n.is_alphabetic() || *n == '/' || *n == '!')
+                };
                 match c {
-                    '<' => inside = true,
+                    '<' if tag(i + 1) => inside = true,
                     '>' => {
                         inside = false;
                         text.push(' ');

@@ -200,6 +200,119 @@ fn every_step_substitutes_its_values_before_its_result() {
     assert!(worked > 300, "{worked} substitutions");
 }
 
+/// Whether a JSON value is a number (not a yes/no).
+fn is_number(v: &serde_json::Value) -> bool {
+    v.is_number()
+}
+
+/// Whether a JSON value is a number or a list of numbers (a vector, a
+/// colour, a point), not a matrix.
+fn is_numeric(v: &serde_json::Value) -> bool {
+    is_number(v) || v.as_array().is_some_and(|a| a.iter().all(is_number))
+}
+
+/// Whether a value is zero (a term a model does not have, a spot factor
+/// outside its cone: decided, not computed).
+fn is_zero(v: &serde_json::Value) -> bool {
+    v.as_f64() == Some(0.0)
+        || v.as_array()
+            .is_some_and(|a| a.iter().all(|x| x.as_f64() == Some(0.0)))
+}
+
+/// Why a step with a formula shows a result (or a product) without the
+/// line of its numbers, or `None` when every one is worked: each numeric
+/// result (not a matrix) is substituted unless it is one of the step's
+/// values (or made of their components), a value shown in an earlier
+/// step (a point chosen, not computed), or zero; each product named with
+/// `·` or `×` (u·v, Vup × n, −u·Pe) is substituted unless shown earlier;
+/// a yes/no decided on numbers (inside, contributes) shows the
+/// comparison; and a cross product is worked by its components, never
+/// left as `a × b`.
+fn unworked(s: &serde_json::Value, earlier: &[serde_json::Value]) -> Option<String> {
+    let formula = s["formula"].as_str().unwrap_or_default();
+    if formula.trim().is_empty() {
+        return None;
+    }
+    let values = s["values"].as_object().expect("values");
+    let result = s["result"].as_object().expect("result");
+    let empty = serde_json::Map::new();
+    let subs = s["substituted"].as_object().unwrap_or(&empty);
+    let seen = |v: &serde_json::Value| earlier.contains(v);
+    let sizes = ["W × H", "width × height"];
+    for (name, v) in values.iter().chain(result) {
+        let product = (name.contains('·') || name.contains('×')) && !sizes.contains(&name.as_str());
+        if product && is_numeric(v) && !subs.contains_key(name) && !seen(v) {
+            return Some(format!("the product {name} has no line of numbers"));
+        }
+    }
+    let components: Vec<&serde_json::Value> = values
+        .values()
+        .flat_map(|v| match v.as_array() {
+            Some(a) => a.iter().collect(),
+            None => vec![v],
+        })
+        .filter(|v| is_number(v))
+        .collect();
+    for (name, v) in result {
+        if subs.contains_key(name) {
+            continue;
+        }
+        if v.is_boolean() {
+            if values.values().any(is_numeric) {
+                return Some(format!(
+                    "{name} is decided with no comparison of its numbers"
+                ));
+            }
+            continue;
+        }
+        let copied = values.values().any(|x| x == v)
+            || v.as_array()
+                .is_some_and(|a| a.iter().all(|x| components.contains(&x)));
+        if is_numeric(v) && !copied && !seen(v) && !is_zero(v) {
+            return Some(format!("{name} has no line of substituted numbers"));
+        }
+    }
+    subs.iter()
+        .find(|(_, sub)| sub.as_str().is_some_and(|t| t.contains(" × ")))
+        .map(|(name, _)| format!("{name} is a cross product not worked by its components"))
+}
+
+/// Every step of every shipped problem (and of the calculator's set-ups
+/// no problem file asks: the orthographic projection, Blinn–Phong with a
+/// local viewer and a clamp) that has a formula and a result shows the
+/// line of its numbers: the orthonormality check, the sums of the terms,
+/// Liang–Barsky, the cross products by their components, the clamp.
+#[test]
+fn every_step_with_a_formula_shows_its_numbers() {
+    let mut runs: Vec<Vec<String>> = problems()
+        .into_iter()
+        .map(|f| vec!["solve".to_string(), f])
+        .collect();
+    for extra in [
+        "project --ortho --point A=1,2,-3",
+        "shade --model blinn --light 1,0,1 --normal 0,0,1 --color 1,0,0 --camera -3,0,4 --position 0,0,0",
+        "window --fovy 45 --aspect 2 --near 0.1 --far 10 --viewport 200x100 --point A=0,-0.02",
+    ] {
+        runs.push(extra.split(' ').map(String::from).collect());
+    }
+    let mut checked = 0;
+    for args in runs {
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let v = json_ok(&args);
+        let mut earlier = Vec::new();
+        for s in v["steps"].as_array().expect("steps") {
+            if let Some(why) = unworked(s, &earlier) {
+                panic!("{args:?}: step \"{}\": {why}\n{s:#}", s["title"]);
+            }
+            checked += 1;
+            for part in ["values", "result"] {
+                earlier.extend(s[part].as_object().expect("map").values().cloned());
+            }
+        }
+    }
+    assert!(checked > 300, "{checked} steps");
+}
+
 #[test]
 fn the_texts_examples_substitute_as_a_tutor_writes_them() {
     // Clipping P0(4, 2, 2)–P1(−2, 6, 1) at x = xmin = 0:
@@ -226,9 +339,54 @@ fn the_texts_examples_substitute_as_a_tutor_writes_them() {
     let phong = solved("id", "problems/shade-phong.toml");
     for line in [
         "  ⇒ cos α = 0·0 + 0·√2/2 + 1·√2/2 = √2/2 ≈ 0,7071",
-        "  ⇒ ambient = 0,4·(1; 1; 1)·(1; 1; 0) = (2/5; 2/5; 0) = (0,4; 0,4; 0)",
+        // the text's own model, in its notation: Ia = Is·ka on Cs, no Direct3D sums
+        "    ambient = ka·Cs",
+        "  ⇒ ambient = 0,4·(1; 1; 0) = (2/5; 2/5; 0) = (0,4; 0,4; 0)",
+        "  ⇒ diffuse = 0,6·(√2/2)·(1; 1; 0) = (3√2/10; 3√2/10; 0) ≈ (0,4243; 0,4243; 0)",
+        "    C = Cs·(kd·max(cos α, 0) + ka) + Cwhite·ks·max(cos β, 0)ⁿ = ambient + diffuse + specular",
+        // the sum, substituted: 2/5 + 3√2/10 = (4+3√2)/10
+        "  ⇒ sebelum dibatasi = (0,4; 0,4; 0) + (3√2/10; 3√2/10; 0) + (0; 0; 0) = ((4+3√2)/10; (4+3√2)/10; 0) ≈ (0,8243; 0,8243; 0)",
     ] {
         assert!(phong.contains(line), "{line}\n{phong}");
+    }
+    assert!(
+        !phong.contains("Ga + Σ") && !phong.contains("emissive"),
+        "{phong}"
+    );
+    // Contoh 6.1's basis checked by its numbers: u = (0, 0, −1), v = (−3/5, 4/5, 0).
+    for line in [
+        // (a short decimal is written where it is exact: 0.6 for 3/5)
+        "    u·v = 0·(−0.6) + 0·0.8 + (−1)·0 = 0",
+        "    u × v = (0·0 − (−1)·0.8, (−1)·(−0.6) − 0·0, 0·0.8 − 0·(−0.6)) = (4/5, 3/5, 0) = (0.8, 0.6, 0)",
+        "  ⇒ (u × v)·n = 0.8·0.8 + 0.6·0.6 + 0·0 = 1",
+        // Vup × n with Vup = (0, 1, 0), n = (4/5, 3/5, 0): (1·0 − 0·3/5, 0·4/5 − 0·0, 0·3/5 − 1·4/5)
+        "    Vup × n = (1·0 − 0·0.6, 0·0.8 − 0·0, 0·0.6 − 1·0.8) = (0, 0, −4/5) = (0, 0, −0.8)",
+    ] {
+        assert!(camera.contains(line), "{line}\n{camera}");
+    }
+    // Liang–Barsky on P0(4, 2, 2)–P1(−2, 6, 1), Δ = (−6, 4, −1): at x = xmax,
+    // p = Δx = −6, q = 3 − 4 = −1 (entering, t = 1/6); at y = ymax, p = 4,
+    // q = 4 − 2 = 2 (leaving, t = 1/2).
+    let clip_en = solved("en", "problems/text-clip.toml");
+    for line in [
+        "    Δ = P1 − P0 = (−2 − 4, 6 − 2, 1 − 2) = (−6, 4, −1)",
+        "    p, q (x = xmax) = (−6, 3 − 4) = (−6, −1)",
+        "    p, q (y = ymax) = (4, 4 − 2) = (4, 2)",
+        "    t0 = max(0, −1/(−6), 2/(−4), 1/(−1)) = 1/6 ≈ 0.1667",
+        "    t1 = min(1, 4/6, 2/4, 2/1) = 1/2 = 0.5",
+        "  ⇒ from = (4, 2, 2) + (1/6)·(−6, 4, −1) = (3, 8/3, 11/6) ≈ (3, 2.667, 1.833)",
+        "  ⇒ code0 AND code1 = 000010 AND 001001 = 000000",
+    ] {
+        assert!(clip_en.contains(line), "{line}\n{clip_en}");
+    }
+    // Blinn without a local viewer: V + L = (√2/2, 0, 1 + √2/2),
+    // |V + L|² = 1/2 + 3/2 + √2 = 2 + √2, which has no square root in surds.
+    let blinn = solved("en", "problems/shade-blinn.toml");
+    for line in [
+        "    |V + L| = √((√2/2)² + 0² + ((2+√2)/2)²) = √(2+√2) ≈ 1.848",
+        "  ⇒ H = (√2/2, 0, (2+√2)/2)/√(2+√2) ≈ (0.3827, 0, 0.9239)",
+    ] {
+        assert!(blinn.contains(line), "{line}\n{blinn}");
     }
     // The window: top = 0.1·tan 22.5° = 0.1·(√2 − 1); right = 2·top.
     let tri = solved("en", "problems/text-triangle.toml");

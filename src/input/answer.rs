@@ -17,6 +17,17 @@
 //! - A status is a word in either language, any case: `clipped`, `di-clip`,
 //!   `accepted`, `diterima`, `rejected`, `ditolak` (or grafika's own
 //!   `clipped (di-clip)`).
+//! - Yes or no (whether an intersection is kept, a light in range): `yes`,
+//!   `no`, `ya`, `tidak`, `true`, `false` (a TOML boolean too), `kept`,
+//!   `dipertahankan`, `dibuang`, any case.
+//! - A point may carry its name, as the text writes it: `A(3; 8/3; 11/6)`.
+//!   A vector may be written times or over a number, as grafika prints it:
+//!   `(1, 0, 1)/√2`, `−(4, 3, 0)/5`, `√2/2·(1, 0, 1)`.
+//! - A row of numbers may be separated by spaces: a matrix as
+//!   `0 0 -1 4; -0,6 0,8 0 -0,8; …`.
+//! - Decimal commas and comma separators together (`0,7071, 0, 0,7071`)
+//!   cannot be told apart: such an answer is not read, and the note says
+//!   how to write it.
 //!
 //! The shape expected (a value like grafika's answer) says how deep the
 //! lists go, so that `;` separates a vector's parts but a matrix's rows.
@@ -25,7 +36,7 @@
 //! and what was expected there.
 
 use crate::msg::{Msg, NumErr, Want};
-use crate::num::expr::{components, missing_close, Part};
+use crate::num::expr::{components, missing_close, split_at, strip_outer, Part};
 use crate::num::{parse_expr, Expr};
 use crate::stages::trace::Val;
 
@@ -128,7 +139,8 @@ fn read_at(given: &toml::Value, like: &Val, offset: usize) -> Result<Read, Msg> 
         },
         Val::List(items) if is_none(given) && items.iter().all(|x| depth(x) >= 1) => Ok(Read::None),
         Val::List(_) => list(given, like, offset),
-        Val::Bool(_) | Val::Map(_) | Val::Said(_) => Err(Msg::SeveralAnswers),
+        Val::Bool(_) => yes_no(&scalar_text(given).unwrap_or_default()),
+        Val::Map(_) | Val::Said(_) => Err(Msg::SeveralAnswers),
     }
 }
 
@@ -217,10 +229,18 @@ fn list(given: &toml::Value, like: &Val, offset: usize) -> Result<Read, Msg> {
     let element = |i: usize| items.get(i).or(items.last()).unwrap_or(&Val::Null);
     let parts: Vec<(toml::Value, usize)> = match given {
         toml::Value::Array(a) => a.iter().map(|v| (v.clone(), offset)).collect(),
-        toml::Value::String(t) => text_parts(t, items)
-            .into_iter()
-            .map(|p| (toml::Value::String(p.text.to_string()), offset + p.at))
-            .collect(),
+        toml::Value::String(t) => {
+            let (t, offset) = unnamed(t, offset);
+            if depth(like) == 1 {
+                if let Some(read) = numbers_written_otherwise(t, like, offset) {
+                    return read;
+                }
+            }
+            text_parts(t, items)
+                .into_iter()
+                .map(|p| (toml::Value::String(p.text.to_string()), offset + p.at))
+                .collect()
+        }
         _ => return Err(Msg::ExpectList(items.len())),
     };
     let mut read = Vec::with_capacity(parts.len());
@@ -247,6 +267,200 @@ fn list(given: &toml::Value, like: &Val, offset: usize) -> Result<Read, Msg> {
     } else {
         Err(unclosed(given, like, offset).unwrap_or(Msg::Parts(bad)))
     }
+}
+
+/// A point written with its name before its coordinates, as the text
+/// writes it (`A(3; 8/3; 11/6)`, `P1 (1, 4, 3/2)`): the coordinates, and
+/// where they start. A name starts with a letter and holds letters,
+/// digits, primes and `_` (not `sqrt` or `pi`, which take a bracket as
+/// numbers do); the brackets after it hold the rest of the text.
+fn unnamed(t: &str, offset: usize) -> (&str, usize) {
+    let lead = t.len() - t.trim_start().len();
+    let rest = &t[lead..];
+    let name_len: usize = rest
+        .char_indices()
+        .take_while(|(i, c)| {
+            if *i == 0 {
+                c.is_alphabetic() && *c != 'π'
+            } else {
+                c.is_alphanumeric() || "_'′″".contains(*c)
+            }
+        })
+        .map(|(_, c)| c.len_utf8())
+        .sum();
+    let (name, after) = rest.split_at(name_len);
+    let coords = after.trim_start();
+    let bracketed = coords.starts_with(['(', '[']) && strip_outer(coords).len() < coords.len();
+    if name_len == 0 || matches!(name, "sqrt" | "pi") || !bracketed {
+        return (t, offset);
+    }
+    let skipped = t[..t.len() - coords.len()].chars().count();
+    (coords, offset + skipped)
+}
+
+/// A vector's numbers written otherwise than as parts separated by
+/// commas or `;`: times or over a number (`(1, 0, 1)/√2`), or separated by
+/// spaces (`0 0 -1 4`, `-0,6 0,8 0 -0,8`). None when the text is no such
+/// vector (then it is read as parts); commas that may be decimal marks
+/// and separators alike, with a count unlike the vector's
+/// (`0,7071, 0, 0,7071` for three numbers), are an error that says how to
+/// write them.
+fn numbers_written_otherwise(t: &str, like: &Val, offset: usize) -> Option<Result<Read, Msg>> {
+    let n = match like {
+        Val::List(items) => items.len(),
+        _ => return None,
+    };
+    // each part a number; an unreadable one named as a list's part is
+    let numbers = |parts: Vec<(String, usize)>| -> Option<Result<Read, Msg>> {
+        let mut read = Vec::with_capacity(parts.len());
+        let mut bad = Vec::new();
+        for (i, (p, at)) in parts.iter().enumerate() {
+            match number_value(&toml::Value::String(p.clone()), offset + at) {
+                Ok(x) => read.push(Read::Num(x)),
+                Err(m) => bad.push((label(i, parts.len(), false), m)),
+            }
+        }
+        Some(if bad.is_empty() {
+            Ok(Read::List(read))
+        } else {
+            Err(Msg::Parts(bad))
+        })
+    };
+    if let Some(parts) = scaled(t) {
+        return numbers(parts);
+    }
+    let split = components(t);
+    let read_as_parts = split.len() == n && split.iter().all(|p| number(p.text).is_ok());
+    if read_as_parts {
+        return None;
+    }
+    if let Some(parts) = spaced(t).filter(|p| p.len() == n) {
+        if parts.iter().all(|(p, _)| number(p).is_ok()) {
+            return numbers(parts);
+        }
+    }
+    if split.len() != n && split_at(strip_outer(t), ';').len() == 1 && mixed_commas(t) {
+        return Some(Err(Msg::AmbiguousCommas));
+    }
+    None
+}
+
+/// Whether commas are written two ways: one between two digits (a
+/// decimal mark, or a separator without a space: `0,7071`) and one that is
+/// not (a separator: `, `).
+fn mixed_commas(t: &str) -> bool {
+    let c: Vec<char> = t.chars().collect();
+    let between = |i: usize| {
+        i > 0 && c[i - 1].is_ascii_digit() && c.get(i + 1).is_some_and(char::is_ascii_digit)
+    };
+    let commas: Vec<bool> = (0..c.len()).filter(|&i| c[i] == ',').map(between).collect();
+    commas.contains(&true) && commas.contains(&false)
+}
+
+/// The numbers of a vector separated by spaces outside brackets (`0 0 -1
+/// 4`, `(0,8 0,6 0)`), each with where it starts; None when there are no
+/// spaces between numbers.
+fn spaced(t: &str) -> Option<Vec<(String, usize)>> {
+    let inner = strip_outer(t);
+    let lead = t[..t.len() - t.trim_start().len()].chars().count()
+        + usize::from(inner.len() < t.trim().len());
+    let mut parts = Vec::new();
+    let mut depth = 0i32;
+    let mut cur = String::new();
+    let mut at = 0;
+    for (n, c) in inner.chars().enumerate() {
+        match c {
+            '(' | '[' => depth += 1,
+            ')' | ']' => depth -= 1,
+            _ => {}
+        }
+        if c.is_whitespace() && depth == 0 {
+            if !cur.is_empty() {
+                parts.push((std::mem::take(&mut cur), lead + at));
+            }
+            continue;
+        }
+        if cur.is_empty() {
+            at = n;
+        }
+        cur.push(c);
+    }
+    if !cur.is_empty() {
+        parts.push((cur, lead + at));
+    }
+    (parts.len() > 1).then_some(parts)
+}
+
+/// A vector times or over a number, as grafika prints one: `(1, 0, 1)/√2`,
+/// `−(4, 3, 0)/5`, `√2/2·(1, 0, 1)`, `1/√2 (1, 0, 1)`, `2*(1; 0,5; 0)`:
+/// each component as an expression with the number (`(1)/(√2)`), and
+/// where the component starts. The vector is the one bracketed group of
+/// the text whose parts are separated by commas or `;`; what stands before
+/// it multiplies it (a sign, a factor with or without `*`, `·`, `×`), what
+/// follows divides or multiplies it (`/`, `*`, `·`, `×` and a number).
+fn scaled(t: &str) -> Option<Vec<(String, usize)>> {
+    let (open, close) = vector_group(t)?;
+    let (before, inner, after) = (&t[..open], &t[open + 1..close], &t[close + 1..]);
+    let (before, after) = (before.trim(), after.trim());
+    if before.is_empty() && after.is_empty() {
+        return None;
+    }
+    let lead = match before {
+        "" => String::new(),
+        "-" | "−" => "-".to_string(),
+        "+" => String::new(),
+        b => format!("({})*", b.trim_end_matches(['*', '·', '×']).trim()),
+    };
+    let tail = match after.chars().next() {
+        None => String::new(),
+        Some('/') => format!("/({})", &after[1..]),
+        Some(c @ ('*' | '·' | '×')) => format!("*({})", &after[c.len_utf8()..]),
+        Some(_) => return None,
+    };
+    // a column in a component's error counts from the written part
+    let start = t[..open + 1].chars().count();
+    let written_from = |at: usize| (start + at).saturating_sub(lead.chars().count() + 1);
+    let parts = components(inner);
+    (parts.len() > 1).then(|| {
+        parts
+            .iter()
+            .map(|p| (format!("{lead}({}){tail}", p.text), written_from(p.at)))
+            .collect()
+    })
+}
+
+/// The bracketed group of `t` (its bracket's byte positions) that holds a
+/// comma or `;` of its own, when there is exactly one and nothing outside
+/// it does.
+fn vector_group(t: &str) -> Option<(usize, usize)> {
+    let mut found = None;
+    let mut depth = 0i32;
+    let mut open = 0;
+    let mut holds = false;
+    for (i, c) in t.char_indices() {
+        match c {
+            '(' | '[' => {
+                if depth == 0 {
+                    open = i;
+                    holds = false;
+                }
+                depth += 1;
+            }
+            ')' | ']' => {
+                depth -= 1;
+                if depth == 0 && holds {
+                    if found.is_some() {
+                        return None;
+                    }
+                    found = Some((open, i));
+                }
+            }
+            ',' | ';' if depth == 0 => return None,
+            ',' | ';' if depth == 1 => holds = true,
+            _ => {}
+        }
+    }
+    found
 }
 
 /// A list written as text whose only fault is its missing last `)`
@@ -346,6 +560,19 @@ fn status_word(w: &str) -> Option<&'static str> {
         }
         _ => return None,
     })
+}
+
+/// Yes or no in either language, any case, as grafika's `true` or
+/// `false`: `yes`, `ya`, `iya`, `true`, `kept`, `dipertahankan`; `no`,
+/// `tidak`, `false`, `dibuang`, `discarded` (and TOML's booleans).
+fn yes_no(text: &str) -> Result<Read, Msg> {
+    let t = text.trim().to_lowercase();
+    let b = match t.as_str() {
+        "yes" | "y" | "ya" | "iya" | "true" | "kept" | "dipertahankan" => true,
+        "no" | "n" | "tidak" | "false" | "discarded" | "dibuang" => false,
+        _ => return Err(Msg::NotYesOrNo(text.trim().to_string())),
+    };
+    Ok(Read::Word(b.to_string()))
 }
 
 #[cfg(test)]
@@ -482,6 +709,125 @@ mod tests {
         }
         assert!(read(&text("clipped (ditolak)"), &st).is_err());
         assert!(read(&text("maybe"), &st).is_err());
+    }
+
+    #[test]
+    fn yes_and_no_in_either_language() {
+        let kept = Val::Bool(true);
+        let word = |b: bool| Read::Word(b.to_string());
+        for (t, b) in [
+            ("ya", true),
+            ("Tidak", false),
+            ("yes", true),
+            ("NO", false),
+            ("true", true),
+            ("false", false),
+            ("dipertahankan", true),
+            ("dibuang", false),
+        ] {
+            assert_eq!(read(&text(t), &kept).unwrap(), word(b), "{t}");
+        }
+        assert_eq!(
+            read(&toml::Value::Boolean(false), &kept).unwrap(),
+            word(false)
+        );
+        let e = read(&text("mungkin"), &kept).unwrap_err();
+        assert_eq!(e, Msg::NotYesOrNo("mungkin".into()));
+        assert!(en(&e).contains("yes or no"), "{}", en(&e));
+    }
+
+    /// Each number of a list read exactly, as an exact value.
+    fn exact(r: &Read) -> Vec<crate::num::Real> {
+        match r {
+            Read::Num(n) => vec![n.expr.eval::<crate::num::Real>().unwrap()],
+            Read::List(items) => items.iter().flat_map(exact).collect(),
+            _ => vec![],
+        }
+    }
+    fn real(t: &str) -> crate::num::Real {
+        parse_expr(t).unwrap().eval().unwrap()
+    }
+
+    #[test]
+    fn a_point_with_its_name_and_a_vector_times_a_number() {
+        // the text's intersection A(3; 8/3; 11/6), and a segment of two
+        let a = read(&text("A(3; 8/3; 11/6)"), &vec3()).unwrap();
+        assert_eq!(exact(&a), [real("3"), real("8/3"), real("11/6")]);
+        let seg = Val::List(vec![vec3(), vec3()]);
+        for t in [
+            "A(3; 8/3; 11/6), B(1; 4; 3/2)",
+            "A(3, 8/3, 11/6); B(1, 4, 3/2)",
+            "P′ (3, 8/3, 11/6), P″ [1, 4, 3/2]",
+        ] {
+            let r = read(&text(t), &seg).unwrap();
+            assert_eq!(exact(&r).len(), 6, "{t}");
+            assert_eq!(exact(&r)[3], real("1"), "{t}");
+        }
+        // (1, 0, 1)/√2 = (√2/2, 0, √2/2), exactly, in every way it is written
+        let half = real("sqrt(2)/2");
+        for t in [
+            "(1, 0, 1)/√2",
+            "(1; 0; 1)/sqrt(2)",
+            "1/√2 (1, 0, 1)",
+            "√2/2·(1, 0, 1)",
+            "sqrt(2)/2 * [1, 0, 1]",
+            "(2, 0, 2)*(√2/4)",
+            "n = (1, 0, 1)/√2",
+        ] {
+            let r = read(&text(t), &vec3()).unwrap();
+            assert_eq!(exact(&r), [half.clone(), real("0"), half.clone()], "{t}");
+        }
+        // −(4, 3, 0)/5 = (−4/5, −3/5, 0); decimal commas inside
+        let r = read(&text("−(4, 3, 0)/5"), &vec3()).unwrap();
+        assert_eq!(exact(&r), [real("-4/5"), real("-3/5"), real("0")]);
+        let r = read(&text("2·(0,5; 0; 0,25)"), &vec3()).unwrap();
+        assert_eq!(exact(&r), [real("1"), real("0"), real("1/2")]);
+        // sqrt and pi before a bracket are numbers, not names
+        assert!(read(&text("sqrt(2)"), &vec3()).is_ok());
+        let e = read(&text("(1, x, 1)/√2"), &vec3()).unwrap_err();
+        assert!(en(&e).starts_with("y: "), "{}", en(&e));
+    }
+
+    #[test]
+    fn rows_of_numbers_separated_by_spaces() {
+        // the text's example 6.1: V = [0 0 −1 4; −3/5 4/5 0 −4/5; 4/5 3/5 0 −28/5; 0 0 0 1]
+        let row = Val::List(vec![num(1.0); 4]);
+        let m = Val::List(vec![row; 4]);
+        let t = "0 0 -1 4; -0,6 0,8 0 -0,8; 0,8 0,6 0 -5,6; 0 0 0 1";
+        let got = values(&read(&text(t), &m).unwrap());
+        assert_eq!(
+            got,
+            [0.0, 0.0, -1.0, 4.0, -0.6, 0.8, 0.0, -0.8, 0.8, 0.6, 0.0, -5.6, 0.0, 0.0, 0.0, 1.0]
+        );
+        let got = values(&read(&text("(0,8 0,6 0)"), &vec3()).unwrap());
+        assert_eq!(got, [0.8, 0.6, 0.0]);
+        // an expression with spaces is still one number of a list
+        let got = values(&read(&text("1 - 2, 3, 4"), &vec3()).unwrap());
+        assert_eq!(got, [-1.0, 3.0, 4.0]);
+    }
+
+    #[test]
+    fn decimal_commas_beside_comma_separators_are_not_read() {
+        let e = read(&text("0,7071, 0, 0,7071"), &vec3()).unwrap_err();
+        assert_eq!(e, Msg::AmbiguousCommas);
+        let words = en(&e);
+        assert!(
+            words.contains("0,7071; 0; 0,7071") && words.contains("0.7071, 0, 0.7071"),
+            "{words}"
+        );
+        let id = crate::report::words::words(&e, crate::report::lang::Lang::Id);
+        assert!(id.contains("0,7071; 0; 0,7071"), "{id}");
+        // one way each: read
+        for t in [
+            "0,7071; 0; 0,7071",
+            "0.7071, 0, 0.7071",
+            "3,1,3",
+            "(0,5;1;2)",
+        ] {
+            assert_eq!(values(&read(&text(t), &vec3()).unwrap()).len(), 3, "{t}");
+        }
+        // xp, yp of a projected point without zp: two numbers, not ambiguous
+        assert_eq!(values(&read(&text("1,5"), &vec3()).unwrap()).len(), 2);
     }
 
     #[test]

@@ -149,6 +149,11 @@ pub enum PracticeWord {
     ReadAs,
     /// A second try, counted apart.
     SecondTry,
+    /// An answer to a value already shown, counted apart.
+    ShownBefore,
+    /// The other values a `show` or a hint printed (their keys, joined),
+    /// now counted as revealed.
+    AlsoShown(String),
     /// Before a mistake that explains the answer.
     LikelyMistake,
     /// Before why the source's printed value is wrong.
@@ -175,6 +180,8 @@ pub enum PracticeWord {
     MatrixShape,
     /// The shape of a number.
     NumberShape,
+    /// The shape of a yes or no.
+    YesNoShape,
     /// The shape of a list of `n` values.
     ValuesShape(usize),
 }
@@ -351,8 +358,13 @@ pub enum QuizWord {
     OrMistake,
     /// Before a part's number.
     Part,
-    /// GIFT carries no figures.
+    /// GIFT carries no figures: said to the lecturer when a GIFT file is
+    /// written (never in a question, which students read).
     FiguresInMoodle,
+    /// A clipping status's code (`clipped`) or `none` as a student of this
+    /// language types it (`di-clip`, `tidak ada`); a blank accepts it beside
+    /// the code.
+    Word(String),
     /// Before a component's axis.
     Component,
     /// Before a point's number.

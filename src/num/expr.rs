@@ -115,29 +115,72 @@ impl Expr {
     }
 }
 
+/// An expression written so that [`parse_expr`] reads it back to the same
+/// value: each operand in parentheses where the reader would otherwise
+/// group it another way. A sum or a sign under a product or a power; a
+/// product or quotient after `/` (`a/(b*c)`, not `a/b*c`, which is
+/// (a/b)·c); anything but a number, `pi` or a root as the base of a power
+/// (`(2*3)^2`, not `2*3^2`). Where the grouping cannot change the value
+/// (`a*b*c`, `a+b-c`) none is added.
 impl fmt::Display for Expr {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use Wrap::{Base, Divisor, Factor, Left};
         match self {
             Expr::Lit(s) => write!(f, "{s}"),
             Expr::Pi => write!(f, "pi"),
             Expr::Sqrt(x) => write!(f, "sqrt({x})"),
-            Expr::Neg(x) => write!(f, "-{}", Paren(x)),
+            Expr::Neg(x) => write!(f, "-{}", Paren(x, Factor)),
             Expr::Add(a, b) => write!(f, "{a}+{b}"),
-            Expr::Sub(a, b) => write!(f, "{a}-{}", Paren(b)),
-            Expr::Mul(a, b) => write!(f, "{}*{}", Paren(a), Paren(b)),
-            Expr::Div(a, b) => write!(f, "{}/{}", Paren(a), Paren(b)),
-            Expr::Pow(a, b) => write!(f, "{}^{}", Paren(a), Paren(b)),
+            Expr::Sub(a, b) => write!(f, "{a}-{}", Paren(b, Factor)),
+            Expr::Mul(a, b) => write!(f, "{}*{}", Paren(a, Left), Paren(b, Factor)),
+            Expr::Div(a, b) => write!(f, "{}/{}", Paren(a, Left), Paren(b, Divisor)),
+            Expr::Pow(a, b) => write!(f, "{}^{}", Paren(a, Base), Paren(b, Divisor)),
         }
     }
 }
 
-/// Writes a sub-expression, in parentheses when it is a sum or difference.
-struct Paren<'a>(&'a Expr);
+/// Where an operand stands, which says what must be wrapped in
+/// parentheses there.
+#[derive(Clone, Copy)]
+enum Wrap {
+    /// The first operand of a product or quotient: sums (a sign is read
+    /// first, `-a*b` is (−a)·b).
+    Left,
+    /// A factor after `*`, a negated term or a subtrahend: sums and
+    /// what starts with a sign.
+    Factor,
+    /// After `/`, or an exponent: sums, signs, products and quotients.
+    Divisor,
+    /// The base of a power: everything but a number, `pi` and a root.
+    Base,
+}
+
+/// Whether an expression is written starting with a sign: a negation,
+/// or a product or quotient whose first operand is one (`-a*b`).
+fn signed(e: &Expr) -> bool {
+    match e {
+        Expr::Neg(_) => true,
+        Expr::Mul(a, _) | Expr::Div(a, _) => signed(a),
+        _ => false,
+    }
+}
+
+/// Writes an operand, in parentheses where [`Wrap`] says it needs them.
+struct Paren<'a>(&'a Expr, Wrap);
 impl fmt::Display for Paren<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.0 {
-            Expr::Add(..) | Expr::Sub(..) | Expr::Neg(..) => write!(f, "({})", self.0),
-            e => write!(f, "{e}"),
+        let sum = matches!(self.0, Expr::Add(..) | Expr::Sub(..)) || signed(self.0);
+        let product = matches!(self.0, Expr::Mul(..) | Expr::Div(..));
+        let wrap = match self.1 {
+            Wrap::Left => matches!(self.0, Expr::Add(..) | Expr::Sub(..)),
+            Wrap::Factor => sum,
+            Wrap::Divisor => sum || product,
+            Wrap::Base => sum || product || matches!(self.0, Expr::Pow(..)),
+        };
+        if wrap {
+            write!(f, "({})", self.0)
+        } else {
+            write!(f, "{}", self.0)
         }
     }
 }
@@ -278,7 +321,7 @@ pub fn components(text: &str) -> Vec<Part<'_>> {
 
 /// Splits on `sep` outside parentheses and brackets, keeping where each part
 /// starts (in characters).
-fn split_at(text: &str, sep: char) -> Vec<Part<'_>> {
+pub fn split_at(text: &str, sep: char) -> Vec<Part<'_>> {
     let mut parts = Vec::new();
     let mut depth = 0i32;
     let (mut start, mut start_chars) = (0, 0);
@@ -721,6 +764,76 @@ mod tests {
         assert!(parse_expr("sqrt(-1)").unwrap().eval::<f64>().is_err());
         assert!(parse_expr("2^0.5").unwrap().eval::<f64>().is_err());
         assert!(parse_expr("1e999").unwrap().eval::<f64>().is_err());
+    }
+
+    /// Random expressions of small integers, `pi`, roots, signs and the
+    /// five operators, nested up to four levels (the exponent a small
+    /// whole number, so that every power can be evaluated).
+    fn any_expr() -> impl proptest::strategy::Strategy<Value = Expr> {
+        use proptest::prelude::*;
+        let leaf = prop_oneof![
+            (0u32..40).prop_map(|n| Expr::Lit(n.to_string())),
+            Just(Expr::Lit("0.5".into())),
+            Just(Expr::Pi),
+        ];
+        leaf.prop_recursive(4, 24, 2, |inner| {
+            let b = Box::new;
+            prop_oneof![
+                inner.clone().prop_map(move |x| Expr::Sqrt(b(x))),
+                inner.clone().prop_map(move |x| Expr::Neg(b(x))),
+                (inner.clone(), inner.clone()).prop_map(move |(x, y)| Expr::Add(b(x), b(y))),
+                (inner.clone(), inner.clone()).prop_map(move |(x, y)| Expr::Sub(b(x), b(y))),
+                (inner.clone(), inner.clone()).prop_map(move |(x, y)| Expr::Mul(b(x), b(y))),
+                (inner.clone(), inner.clone()).prop_map(move |(x, y)| Expr::Div(b(x), b(y))),
+                (inner, 0u32..4)
+                    .prop_map(move |(x, k)| Expr::Pow(b(x), b(Expr::Lit(k.to_string())))),
+            ]
+        })
+    }
+
+    proptest::proptest! {
+        /// An expression written out reads back to the same value: exactly
+        /// where it is exact (`-17/(17*sqrt(17))` was written
+        /// `-17/17*sqrt(17)`, which is −√17, before), within rounding where
+        /// π or a root without an exact form makes it approximate; an
+        /// expression that cannot be evaluated (a zero divisor, a negative
+        /// root) cannot be after reading either. Read and written again, it
+        /// keeps its text.
+        #[test]
+        fn an_expression_written_out_reads_back_to_its_value(e in any_expr()) {
+            let text = e.to_string();
+            let back = parse_expr(&text).map_err(|err| format!("{text}: {err:?}"));
+            proptest::prop_assert!(back.is_ok(), "{:?}", back);
+            let back = back.unwrap_or(Expr::Pi);
+            // once read, it is written the same way ever after
+            let again = back.to_string();
+            let third = parse_expr(&again).map(|x| x.to_string());
+            proptest::prop_assert_eq!(third, Ok(again));
+            match (e.eval::<Real>(), back.eval::<Real>()) {
+                (Ok(x), Ok(y)) if x.is_exact() && y.is_exact() => {
+                    proptest::prop_assert!(x == y, "{}: {:?} then {:?}", text, x, y);
+                }
+                (Ok(x), Ok(y)) => {
+                    let (x, y) = (x.to_f64(), y.to_f64());
+                    proptest::prop_assert!(
+                        (x - y).abs() <= 1e-9 * x.abs().max(1.0),
+                        "{}: {} then {}", text, x, y
+                    );
+                }
+                (x, y) => proptest::prop_assert_eq!(x.is_ok(), y.is_ok(), "{}", text),
+            }
+        }
+    }
+
+    #[test]
+    fn a_quotient_by_a_product_is_written_with_its_parentheses() {
+        let e = parse_expr("-17/(17*sqrt(17))").unwrap();
+        assert_eq!(e.to_string(), "-17/(17*sqrt(17))");
+        let e = parse_expr("(2*3)^2").unwrap();
+        assert_eq!(e.to_string(), "(2*3)^2");
+        assert_eq!(f(&e.to_string()), 36.0);
+        // a*b*c and a*b/c need none: the grouping cannot change the value
+        assert_eq!(parse_expr("2*(3*4)").unwrap().to_string(), "2*3*4");
     }
 
     #[test]

@@ -121,7 +121,7 @@ pub fn to_text(m: &Marking, style: &Style) -> String {
             a.given.clone().unwrap_or_else(|| "—".into()),
             a.expected
                 .as_ref()
-                .map(|e| style.val_inline(e))
+                .map(|e| expected_text(&a.key, e, style))
                 .unwrap_or_default(),
             style.w(&a.note),
         ]);
@@ -174,6 +174,19 @@ fn method_text(m: &Marking, style: &Style) -> String {
     match lines.is_empty() {
         true => String::new(),
         false => format!("\n{}\n{}", w(style, K::MethodMarks), lines.concat()),
+    }
+}
+
+/// The expected value as the text writes it: a clipping status in the
+/// chosen language's word (`di-clip`), the code staying in the JSON.
+fn expected_text(key: &Key, e: &crate::stages::trace::Val, style: &Style) -> String {
+    use crate::stages::trace::Val;
+    use crate::tutor::key::{Field, Value};
+    match e {
+        Val::Text(t) if key.value == Value::Field(Field::Status) => {
+            style.val_inline(&Val::said(crate::msg::Said::Status(t.clone())))
+        }
+        _ => style.val_inline(e),
     }
 }
 

@@ -95,7 +95,7 @@ pub fn named(st: &Style, name: &str, v: &Val, arrow: bool) -> String {
     let lead = if arrow { "⇒ " } else { "" };
     match v {
         Val::List(rows) if v.is_matrix() => format!(
-            "<math display=\"block\"><mrow>{}<mo>=</mo>{}</mrow></math>",
+            "<math display=\"block\"><mrow>{}<mo form=\"infix\">=</mo>{}</mrow></math>",
             mathml::row(&format!("{lead}{name}")),
             matrix(st, rows)
         ),
@@ -108,11 +108,7 @@ pub fn named(st: &Style, name: &str, v: &Val, arrow: bool) -> String {
             };
             mathml::inline(&line)
         }
-        _ => format!(
-            "{} {}",
-            mathml::inline(&format!("{lead}{name} =")),
-            xml_escape(&st.val_inline(v))
-        ),
+        _ => mathml::inline_then_text(&format!("{lead}{name} ="), &st.val_inline(v)),
     }
 }
 
@@ -134,7 +130,7 @@ fn matrix_row(st: &Style, r: &Val) -> String {
                 Val::Num(s) => st.dec(
                     s.pretty
                         .clone()
-                        .unwrap_or_else(|| super::fmt_dec(s.value, st.digits)),
+                        .unwrap_or_else(|| crate::num::format::decimal(s, st.digits)),
                 ),
                 other => st.val_inline(other),
             };

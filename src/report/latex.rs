@@ -133,6 +133,7 @@ fn symbol(c: char) -> Piece {
         'ᵀ' => math("^{T}"),
         'ⁿ' => math("^{n}"),
         'Σ' => math("\\Sigma "),
+        'Δ' => math("\\Delta "),
         '₀' => math("_0"),
         '₁' => math("_1"),
         '₂' => math("_2"),

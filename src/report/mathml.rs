@@ -14,13 +14,35 @@ pub fn inline(s: &str) -> String {
     format!("<math>{}</math>", row(s))
 }
 
+/// Inline MathML for a line of notation that ends in words (`⇒ status =`
+/// and `di-clip`): the words as `<mtext>` in the same row.
+pub fn inline_then_text(notation: &str, text: &str) -> String {
+    let r = row(notation);
+    let inner = &r["<mrow>".len()..r.len() - "</mrow>".len()];
+    format!(
+        "<math><mrow>{inner}<mspace width=\"0.3em\"/><mtext>{}</mtext></mrow></math>",
+        xml_escape(text)
+    )
+}
+
 /// Display (block) MathML for a formula.
 pub fn block(s: &str) -> String {
     format!("<math display=\"block\">{}</math>", row(s))
 }
 
+/// The deepest nesting of roots and scripts set as MathML; a group nested
+/// deeper (a point named `√(√(√(…`, 20,000 deep, took 10 GB and overflowed
+/// the stack) is set as its text, so a row costs at most this many passes
+/// over its characters.
+pub const MAX_MATH_DEPTH: usize = 16;
+
 /// The notation as one `<mrow>`.
 pub fn row(s: &str) -> String {
+    row_at(s, 0)
+}
+
+/// [`row`] of a group nested `depth` deep.
+fn row_at(s: &str, depth: usize) -> String {
     let chars: Vec<char> = s.chars().collect();
     let mut items: Vec<String> = Vec::new();
     let mut i = 0;
@@ -40,13 +62,13 @@ pub fn row(s: &str) -> String {
         } else if superscript(c).is_some() {
             let (text, next) = run(&chars, i, superscript);
             i = next;
-            attach(&mut items, "msup", &script(&text));
+            attach(&mut items, "msup", &script(&text, depth));
         } else if subscript(c).is_some() {
             let (text, next) = run(&chars, i, subscript);
             i = next;
-            attach(&mut items, "msub", &script(&text));
+            attach(&mut items, "msub", &script(&text, depth));
         } else if c == '√' {
-            let (inner, next) = radicand(&chars, i + 1);
+            let (inner, next) = radicand(&chars, i + 1, depth);
             i = next;
             items.push(format!("<msqrt>{inner}</msqrt>"));
         } else if c.is_ascii_digit() {
@@ -58,8 +80,16 @@ pub fn row(s: &str) -> String {
             i = next;
             items.push(item);
         } else {
+            // a sign (not a difference): first, or after a bracket, a
+            // separator or another operator: `(−2 − 4)`, `= −√2/60`
+            let before = chars[..i].iter().rev().find(|c| !c.is_whitespace());
+            let sign = matches!(c, '−' | '-' | '+')
+                && before.is_none_or(|b| "([{,;=≈≤≥<>·×/−+⇒".contains(*b));
             i += 1;
-            items.push(operator(c));
+            items.push(match sign {
+                true => format!("<mo lspace=\"0\" rspace=\"0\">{c}</mo>"),
+                false => operator(c),
+            });
         }
     }
     format!("<mrow>{}</mrow>", items.concat())
@@ -143,6 +173,10 @@ fn operator(c: char) -> String {
             format!("<mo stretchy=\"false\" lspace=\"0\" rspace=\"0\">{c}</mo>")
         }
         '/' => "<mo lspace=\"0\" rspace=\"0\">/</mo>".to_string(),
+        // a relation keeps its spaces at either end of a row (`⇒ code0 =`
+        // before a word, or first in the line)
+        '=' | '≈' => format!("<mo form=\"infix\">{c}</mo>"),
+        '⇒' => "<mo lspace=\"0\" rspace=\"0.5em\">⇒</mo>".to_string(),
         ';' | ',' => format!("<mo separator=\"true\" lspace=\"0\" rspace=\"0.35em\">{c}</mo>"),
         _ => format!("<mo>{}</mo>", xml_escape(&c.to_string())),
     }
@@ -159,17 +193,21 @@ fn run(chars: &[char], mut i: usize, class: fn(char) -> Option<char>) -> (String
 }
 
 /// A script's content: a number, a name or a sign and a number.
-fn script(t: &str) -> String {
+fn script(t: &str, depth: usize) -> String {
     match t {
         "°" => "<mo>°</mo>".into(),
         _ if t.chars().all(|c| c.is_ascii_digit()) => format!("<mn>{t}</mn>"),
-        _ => format!("<mrow>{}</mrow>", row_inner(t)),
+        _ => format!("<mrow>{}</mrow>", row_inner(t, depth + 1)),
     }
 }
 
-/// A row's items without the surrounding `<mrow>`.
-fn row_inner(t: &str) -> String {
-    let r = row(t);
+/// A row's items without the surrounding `<mrow>`, nested `depth` deep:
+/// past [`MAX_MATH_DEPTH`], the text itself.
+fn row_inner(t: &str, depth: usize) -> String {
+    if depth > MAX_MATH_DEPTH {
+        return format!("<mtext>{}</mtext>", xml_escape(t));
+    }
+    let r = row_at(t, depth);
     r["<mrow>".len()..r.len() - "</mrow>".len()].to_string()
 }
 
@@ -181,16 +219,16 @@ fn attach(items: &mut Vec<String>, tag: &str, script: &str) {
 
 /// What `√` applies to from `i`: a parenthesized group or a number or a
 /// name; its MathML and where it ends.
-fn radicand(chars: &[char], i: usize) -> (String, usize) {
+fn radicand(chars: &[char], i: usize, depth: usize) -> (String, usize) {
     if chars.get(i) == Some(&'(') {
-        let mut depth = 0;
+        let mut open = 0;
         let mut j = i;
         while j < chars.len() {
             match chars[j] {
-                '(' => depth += 1,
+                '(' => open += 1,
                 ')' => {
-                    depth -= 1;
-                    if depth == 0 {
+                    open -= 1;
+                    if open == 0 {
                         break;
                     }
                 }
@@ -199,7 +237,7 @@ fn radicand(chars: &[char], i: usize) -> (String, usize) {
             j += 1;
         }
         let inner: String = chars[i + 1..j.min(chars.len())].iter().collect();
-        (row_inner(&inner), (j + 1).min(chars.len()))
+        (row_inner(&inner, depth + 1), (j + 1).min(chars.len()))
     } else if chars.get(i).is_some_and(|c| c.is_ascii_digit()) {
         number(chars, i)
     } else {
@@ -280,17 +318,17 @@ mod tests {
     fn words_are_one_text_and_names_stay_identifiers() {
         assert_eq!(
             row("polygon face ="),
-            "<mrow><mtext>polygon face</mtext><mo>=</mo></mrow>"
+            "<mrow><mtext>polygon face</mtext><mo form=\"infix\">=</mo></mrow>"
         );
         assert_eq!(
             row("object's triangle = 17"),
-            "<mrow><mtext>object's triangle</mtext><mo>=</mo><mn>17</mn></mrow>"
+            "<mrow><mtext>object's triangle</mtext><mo form=\"infix\">=</mo><mn>17</mn></mrow>"
         );
         // notation keeps its names: one-letter names, and names apart
         // from words by operators
         assert_eq!(
             row("top = near·tan"),
-            "<mrow><mi>top</mi><mo>=</mo><mi>near</mi><mo>·</mo><mi>tan</mi></mrow>"
+            "<mrow><mi>top</mi><mo form=\"infix\">=</mo><mi>near</mi><mo>·</mo><mi>tan</mi></mrow>"
         );
         // a space between two names is kept, and a lone word beside a
         // name is text: `z' dari C'`, `piksel A`
@@ -300,7 +338,7 @@ mod tests {
         );
         assert_eq!(
             row("Liang–Barsky ="),
-            "<mrow><mi>Liang–Barsky</mi><mo>=</mo></mrow>"
+            "<mrow><mi>Liang–Barsky</mi><mo form=\"infix\">=</mo></mrow>"
         );
         assert_eq!(
             row("piksel A"),
@@ -316,8 +354,19 @@ mod tests {
     fn a_surd_with_its_decimal() {
         assert_eq!(
             row("−√2/60 ≈ −0.02357"),
-            "<mrow><mo>−</mo><msqrt><mn>2</mn></msqrt><mo lspace=\"0\" rspace=\"0\">/</mo><mn>60</mn>\
-             <mo>≈</mo><mo>−</mo><mn>0.02357</mn></mrow>"
+            "<mrow><mo lspace=\"0\" rspace=\"0\">−</mo><msqrt><mn>2</mn></msqrt><mo lspace=\"0\" rspace=\"0\">/</mo><mn>60</mn>\
+             <mo form=\"infix\">≈</mo><mo lspace=\"0\" rspace=\"0\">−</mo><mn>0.02357</mn></mrow>"
+        );
+    }
+
+    #[test]
+    fn a_sign_is_set_close_and_a_difference_apart() {
+        // (−2 − 4): the first minus is the sign of 2, the second a difference
+        assert_eq!(
+            row("(−2 − 4)"),
+            "<mrow><mo stretchy=\"false\" lspace=\"0\" rspace=\"0\">(</mo>\
+             <mo lspace=\"0\" rspace=\"0\">−</mo><mn>2</mn><mo>−</mo><mn>4</mn>\
+             <mo stretchy=\"false\" lspace=\"0\" rspace=\"0\">)</mo></mrow>"
         );
     }
 
@@ -326,7 +375,7 @@ mod tests {
         assert_eq!(
             row("v₀² + Mcam⁻¹"),
             "<mrow><msup><msub><mi>v</mi><mn>0</mn></msub><mn>2</mn></msup><mo>+</mo>\
-             <msup><mi>Mcam</mi><mrow><mo>−</mo><mn>1</mn></mrow></msup></mrow>"
+             <msup><mi>Mcam</mi><mrow><mo lspace=\"0\" rspace=\"0\">−</mo><mn>1</mn></mrow></msup></mrow>"
         );
     }
 
@@ -346,6 +395,25 @@ mod tests {
         assert_eq!(
             row("7.071e−309"),
             "<mrow><mn>7.071</mn><mo>×</mo><msup><mn>10</mn><mn>−309</mn></msup></mrow>"
+        );
+    }
+
+    #[test]
+    fn a_deep_nesting_is_set_as_text_past_the_bound() {
+        // √(√(…√(2)…)) 20,000 deep: MAX_MATH_DEPTH + 1 roots as MathML,
+        // the rest as one text (it used to nest 20,000 rows: 10 GB, then a
+        // stack overflow).
+        let n = 20_000;
+        let deep = format!("{}2{}", "√(".repeat(n), ")".repeat(n));
+        let m = row(&deep);
+        assert_eq!(m.matches("<msqrt>").count(), MAX_MATH_DEPTH + 1);
+        assert_eq!(m.matches("<mtext>").count(), 1);
+        // the size stays linear: the text once, and the roots' markup
+        assert!(m.len() < 2 * deep.len() + 1000, "{}", m.len());
+        // a shallow root is unchanged
+        assert_eq!(
+            row("√(√2)"),
+            "<mrow><msqrt><msqrt><mn>2</mn></msqrt></msqrt></mrow>"
         );
     }
 

@@ -16,7 +16,7 @@ fn part_of(section: &Msg) -> Option<String> {
     Some(match section {
         Msg::SecViewing => "view".into(),
         Msg::SecProjection => "project".into(),
-        Msg::SecWindowClip => "window".into(),
+        Msg::SecWindowClip | Msg::SecWindow => "window".into(),
         Msg::SecLineClip(None) => "clip".into(),
         Msg::SecLineClip(Some(k)) => format!("clip-{k}"),
         Msg::SecLighting => "shade".into(),
@@ -139,7 +139,7 @@ fn compared_row(row: &Compared, st: &Style) -> String {
         if why.is_some() { 2 } else { 1 },
         xml_escape(&row.key),
         xml_escape(&name),
-        xml_escape(&row.printed),
+        xml_escape(&st.printed(&row.printed)),
         xml_escape(&st.w(&Msg::Printed(row.verdict()))),
         why.unwrap_or_default()
     )

@@ -3,8 +3,8 @@
 //! per event, JSON Lines, with the keys of `check`).
 
 use crate::input::answer::Read;
-use crate::msg::Msg;
 use crate::msg::PracticeWord as P;
+use crate::msg::{DocWord, Msg};
 use crate::num::Real;
 use crate::report::lang::Lang;
 use crate::report::mistakes::mistake_text;
@@ -149,11 +149,18 @@ pub fn event_text(ev: &Event, look: &Look) -> String {
             out
         }
         Event::Verdict(o) => verdict_text(o, look),
-        Event::Hint { level, step, .. } => wrap_lines(&hint_text(*level, step.as_ref(), look)),
+        Event::Hint {
+            level, step, also, ..
+        } => {
+            let mut out = hint_text(*level, step.as_ref(), look);
+            out.push_str(&also_text(also, look));
+            wrap_lines(&out)
+        }
         Event::Show {
             key,
             expected,
             step,
+            also,
         } => {
             let mut out = String::new();
             if let Some(s) = step {
@@ -164,11 +171,27 @@ pub fn event_text(ev: &Event, look: &Look) -> String {
             let (head, spelled) = (format!("  {answer}: "), key.to_string());
             out.push_str(&look.style.named(&head, &spelled, expected));
             out.push('\n');
+            out.push_str(&also_text(also, look));
             wrap_lines(&out)
         }
         Event::Skip { .. } => format!("  {}\n", look.w(P::Skipped)),
         Event::Summary(s) => summary_text(s, look),
     }
+}
+
+/// The other values a `show` or a hint printed, which now count as
+/// revealed (nothing when there are none).
+fn also_text(also: &[Key], look: &Look) -> String {
+    if also.is_empty() {
+        return String::new();
+    }
+    let keys = also
+        .iter()
+        .map(Key::to_string)
+        .collect::<Vec<_>>()
+        .join(", ");
+    let line = look.w(P::AlsoShown(keys));
+    format!("{}\n", look.paint(Tone::Quiet, &format!("  {line}")))
 }
 
 fn again_text(a: &Again, look: &Look) -> String {
@@ -232,7 +255,11 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
     out.push_str(&look.paint(tone, &wrap_after("  ", &head, "    ")));
     out.push('\n');
     if o.retry {
-        let line = look.w(P::SecondTry);
+        let line = look.w(if o.shown {
+            P::ShownBefore
+        } else {
+            P::SecondTry
+        });
         out.push_str(&look.paint(Tone::Quiet, &wrap_after("    ", &line, "    ")));
         out.push('\n');
     }
@@ -266,6 +293,17 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
 /// exact form (`√2/2` for `1/sqrt(2)`) or as the decimal written, a list
 /// in parentheses, a code or status as grafika spells it.
 pub fn read_as(r: &Read, style: &Style) -> String {
+    // yes or no (read as grafika's true or false) in the student's language
+    match r {
+        Read::Word(w) if w == "true" => return style.doc(DocWord::Yes),
+        Read::Word(w) if w == "false" => return style.doc(DocWord::No),
+        // a status and "nothing" in the student's words (`di-clip`, `tidak ada`)
+        Read::Word(w) if crate::report::words::said::status(w).is_some() => {
+            return style.val_inline(&Val::said(crate::msg::Said::Status(w.clone())));
+        }
+        Read::None => return style.val_inline(&Val::Null),
+        _ => {}
+    }
     fn en(r: &Read) -> String {
         match r {
             Read::Num(n) if n.last_digit.is_some() => n.expr.to_string(),
@@ -366,6 +404,7 @@ fn shape(key: &Key, expected: &Val, lang: Lang) -> String {
     }
     match expected {
         Val::Text(_) => t(P::BitsShape),
+        Val::Bool(_) => t(P::YesNoShape),
         // with decimal commas `;` separates the numbers, so each row in
         // brackets: (0,6; 0; −0,8; 0); (…)
         v if v.is_matrix() => t(P::MatrixShape),
@@ -413,10 +452,16 @@ pub fn event_json(ev: &Event, lang: Lang) -> Value {
             "mistakes": o.mistakes,
             "why": o.why.as_ref().map(w),
             "follow_through": o.follow_through.as_ref().map(value_json),
-            "retry": o.retry,
+            "retry": o.retry, "shown": o.shown,
         }),
-        Event::Hint { key, level, step } => json!({
+        Event::Hint {
+            key,
+            level,
+            step,
+            also,
+        } => json!({
             "event": "hint", "key": key.to_string(), "level": level,
+            "revealed": also.iter().map(Key::to_string).collect::<Vec<_>>(),
             "title": step.as_ref().map(|s| w(&s.title)),
             "formula": step.as_ref().map(|s| w(&s.formula)),
             "values": step.as_ref().filter(|_| *level >= 2).map(|s| {
@@ -427,8 +472,10 @@ pub fn event_json(ev: &Event, lang: Lang) -> Value {
             key,
             expected,
             step,
+            also,
         } => json!({
             "event": "show", "key": key.to_string(), "expected": value(expected),
+            "revealed": also.iter().map(Key::to_string).collect::<Vec<_>>(),
             "step": step.as_ref().map(|s| step_json(s, lang)),
         }),
         Event::Skip { key } => json!({ "event": "skip", "key": key.to_string() }),

@@ -109,10 +109,7 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
             .val(Name::math("n"), Val::vec3(&n))
             .val(Name::math("u"), Val::vec3(&u))
             .res(Name::math("v"), Val::vec3(&v))
-            .sub(
-                Name::math("v"),
-                Subst::new("{} × {}", vec![Val::vec3(&n), Val::vec3(&u)]),
-            )
+            .sub(Name::math("v"), Subst::cross(&n, &u))
     });
     let b = Basis {
         u,
@@ -158,10 +155,13 @@ fn n_step<T: Scalar>(cam: &Camera<T>, d: &V3<T>, dn: &T, n: &V3<T>) -> Step {
         .val(Name::math("Pr"), Val::vec3(&cam.pr))
         .val(Name::math("Pe − Pr"), Val::vec3(d))
         .sub(Name::math("Pe − Pr"), Subst::difference(&cam.pe, &cam.pr))
-        .val(Name::math("|Pe − Pr|"), Val::num(dn))
+        .val(Name::math("|Pe − Pr|"), Val::length(d, dn))
         .sub(Name::math("|Pe − Pr|"), Subst::norm(d))
         .res(Name::math("n"), Val::vec3(n))
-        .sub(Name::math("n"), Subst::quotient(Val::vec3(d), Val::num(dn)))
+        .sub(
+            Name::math("n"),
+            Subst::quotient(Val::vec3(d), Val::length(d, dn)),
+        )
 }
 
 /// Warns when Vup is nearly parallel to d: sin of the angle between them =
@@ -181,18 +181,15 @@ fn u_step<T: Scalar>(vup: &V3<T>, n: &V3<T>, u: &V3<T>) -> Step {
     Step::new(Msg::CamAxisU, "u = (Vup × n) / |Vup × n|")
         .val(Name::math("Vup"), Val::vec3(vup))
         .val(Name::math("Vup × n"), Val::vec3(&vxn))
-        .sub(
-            Name::math("Vup × n"),
-            Subst::new("{} × {}", vec![Val::vec3(vup), Val::vec3(n)]),
-        )
-        .val(Name::math("|Vup × n|"), Val::num(&len))
+        .sub(Name::math("Vup × n"), Subst::cross(vup, n))
+        .val(Name::math("|Vup × n|"), Val::length(&vxn, &len))
         .sub(Name::math("|Vup × n|"), Subst::norm(&vxn))
         .res(Name::math("u"), Val::vec3(u))
         .sub(
             Name::math("u"),
             match len == T::one() {
                 true => Subst::default(),
-                false => Subst::quotient(Val::vec3(&vxn), Val::num(&len)),
+                false => Subst::quotient(Val::vec3(&vxn), Val::length(&vxn, &len)),
             },
         )
 }
@@ -201,7 +198,8 @@ fn u_step<T: Scalar>(vup: &V3<T>, n: &V3<T>, u: &V3<T>) -> Step {
 /// |n| and (u × v)·n (+1 for a right-handed frame).
 fn check_step<T: Scalar>(b: &Basis<T>) -> Step {
     let Basis { u, v, n, .. } = b;
-    let handed = vec::dot(&vec::cross(u, v), n);
+    let uxv = vec::cross(u, v);
+    let handed = vec::dot(&uxv, n);
     let ok = |x: &T, want: f64| (x.to_f64() - want).abs() < 1e-6;
     let dots = [vec::dot(u, v), vec::dot(v, n), vec::dot(n, u)];
     let lens = [vec::dot(u, u), vec::dot(v, v), vec::dot(n, n)];
@@ -212,12 +210,21 @@ fn check_step<T: Scalar>(b: &Basis<T>) -> Step {
         "u·v = v·n = n·u = 0,  |u| = |v| = |n| = 1,  (u × v)·n = 1",
     )
     .val(Name::math("u·v"), Val::num(&dots[0]))
+    .sub(Name::math("u·v"), Subst::dot(u, v))
     .val(Name::math("v·n"), Val::num(&dots[1]))
+    .sub(Name::math("v·n"), Subst::dot(v, n))
     .val(Name::math("n·u"), Val::num(&dots[2]))
+    .sub(Name::math("n·u"), Subst::dot(n, u))
     .val(Name::math("u·u"), Val::num(&lens[0]))
+    .sub(Name::math("u·u"), Subst::dot(u, u))
     .val(Name::math("v·v"), Val::num(&lens[1]))
+    .sub(Name::math("v·v"), Subst::dot(v, v))
     .val(Name::math("n·n"), Val::num(&lens[2]))
+    .sub(Name::math("n·n"), Subst::dot(n, n))
+    .val(Name::math("u × v"), Val::vec3(&uxv))
+    .sub(Name::math("u × v"), Subst::cross(u, v))
     .res(Name::math("(u × v)·n"), Val::num(&handed))
+    .sub(Name::math("(u × v)·n"), Subst::dot(&uxv, n))
     .note(if good {
         Msg::Orthonormal(true)
     } else {
@@ -269,9 +276,20 @@ pub fn view_matrix<T: Scalar>(b: &Basis<T>, pe: &V3<T>, tr: &mut impl Trace) -> 
             .res(Name::math("Mcam"), Val::mat4(&camera_matrix(b, pe)))
     });
     tr.step(|| {
-        Step::new(Msg::ViewMatrix, Msg::FViewMatrix)
+        let last = |name: &str, axis: &V3<T>, r: usize| {
+            (
+                Name::math(format!("−{name}·Pe")),
+                Val::num(&view[(r, 3)]),
+                Subst::dot(axis, pe).within("−(", ")"),
+            )
+        };
+        let column = [last("u", &b.u, 0), last("v", &b.v, 1), last("n", &b.n, 2)];
+        let s = Step::new(Msg::ViewMatrix, Msg::FViewMatrix)
             .val(Name::math("R"), Val::mat4(&rot))
-            .val(Name::math("T(−Pe)"), Val::mat4(&trans))
+            .val(Name::math("T(−Pe)"), Val::mat4(&trans));
+        column
+            .into_iter()
+            .fold(s, |s, (name, v, sub)| s.val(name.clone(), v).sub(name, sub))
             .res(Name::math("V"), Val::mat4(&view))
     });
     Ok(view)

@@ -310,6 +310,11 @@ pub fn clip_segment<T: Scalar>(
     result
 }
 
+/// The point of the line at t: the text's P(t) = P0 + t·(P1 − P0).
+pub fn point_at<T: Scalar>(p0: &V3<T>, p1: &V3<T>, t: &T) -> V3<T> {
+    vec::add(p0, &vec::scale(&vec::sub(p1, p0), t))
+}
+
 /// The trivial tests of the two outcodes: both 000000, accepted;
 /// code0 AND code1 ≠ 0, rejected; otherwise None: the segment is clipped.
 pub fn trivial(code0: u8, code1: u8) -> Option<Status> {
@@ -369,6 +374,13 @@ fn trivial_step(code0: u8, code1: u8) -> Step {
         .val(Name::math("code0"), Val::text(code_str(code0)))
         .val(Name::math("code1"), Val::text(code_str(code1)))
         .res(Name::math("code0 AND code1"), Val::text(code_str(and)))
+        .sub(
+            Name::math("code0 AND code1"),
+            Subst::new(
+                "{} AND {}",
+                vec![Val::text(code_str(code0)), Val::text(code_str(code1))],
+            ),
+        )
         .note(if code0 | code1 == 0 {
             Msg::TrivialNote(Trivial::Accept)
         } else if and != 0 {
@@ -557,6 +569,7 @@ pub fn liang_barsky<T: Scalar>(
     let (b, p0h) = (&hb, &hp0);
     let (mut t0, mut t1) = (T::zero(), T::one());
     let mut inside = true;
+    let mut pqs = Vec::with_capacity(6);
     for axis in 0..3 {
         for (p, q) in [
             (
@@ -565,6 +578,7 @@ pub fn liang_barsky<T: Scalar>(
             ),
             (delta[axis].clone(), b.max[axis].clone() - p0h[axis].clone()),
         ] {
+            pqs.push((p.clone(), q.clone()));
             if p.is_zero_value() {
                 if q < T::zero() {
                     inside = false;
@@ -602,15 +616,90 @@ pub fn liang_barsky<T: Scalar>(
         None
     };
     tr.step(|| {
-        let s = Step::new(Msg::LiangBarsky, Msg::FLiangBarsky)
-            .val(Name::math("t0"), Val::num(&t0))
-            .val(Name::math("t1"), Val::num(&t1));
-        match &result {
-            Some((a, z)) => s.res(Name::From, Val::vec3(a)).res(Name::To, Val::vec3(z)),
-            None => s.res(Name::Segment, Val::Null),
-        }
+        let worked = LbWorked {
+            b,
+            p0: p0h,
+            p1: &hp1,
+            delta: &delta,
+            pqs: &pqs,
+        };
+        lb_step(&worked, (&t0, &t1), &result)
     });
     result
+}
+
+/// What Liang–Barsky worked with, for its step: the box and the ends (as
+/// the stage took them), Δ = P1 − P0 and each plane's (p, q) in the order
+/// of [`PLANES`].
+struct LbWorked<'a, T> {
+    b: &'a ClipBox<T>,
+    p0: &'a V3<T>,
+    p1: &'a V3<T>,
+    delta: &'a V3<T>,
+    pqs: &'a [(T, T)],
+}
+
+/// The step of Liang–Barsky: Δ, each plane's p and q substituted (p = −Δx,
+/// q = x0 − xmin at x = xmin; p = Δx, q = xmax − x0 at x = xmax; …), then
+/// t0 = max(0, q/p where p < 0) and t1 = min(1, q/p where p > 0) with
+/// their quotients, and the ends P0 + t·Δ.
+fn lb_step<T: Scalar>(
+    w: &LbWorked<'_, T>,
+    (t0, t1): (&T, &T),
+    result: &Option<(V3<T>, V3<T>)>,
+) -> Step {
+    let delta_name = Name::math("Δ = P1 − P0");
+    let mut s = Step::new(Msg::LiangBarsky, Msg::FLiangBarsky)
+        .val(delta_name.clone(), Val::vec3(w.delta))
+        .sub(delta_name, Subst::difference(w.p1, w.p0));
+    let (mut entering, mut leaving) = (Vec::new(), Vec::new());
+    for (k, (p, q)) in w.pqs.iter().enumerate() {
+        let (axis, is_max, plane, _) = PLANES[k];
+        let name = Name::math(format!("p, q ({plane})"));
+        let d = Val::num(&w.delta[axis]);
+        let sub = if is_max {
+            Subst::new(
+                "({}, {} − {})",
+                vec![d, Val::num(&w.b.max[axis]), Val::num(&w.p0[axis])],
+            )
+        } else {
+            Subst::new(
+                "(−{}, {} − {})",
+                vec![d, Val::num(&w.p0[axis]), Val::num(&w.b.min[axis])],
+            )
+        };
+        s = s.val(name.clone(), Val::vec2(p, q)).sub(name, sub);
+        if *p < T::zero() {
+            entering.extend([Val::num(q), Val::num(p)]);
+        } else if *p > T::zero() {
+            leaving.extend([Val::num(q), Val::num(p)]);
+        }
+    }
+    let bound = |first: &str, args: Vec<Val>| {
+        let form = format!("{first}(0{})", ", {}/{}".repeat(args.len() / 2));
+        Subst::new(form, args)
+    };
+    let t1_form = bound("min", leaving);
+    let t1_form = Subst::new(t1_form.form.replacen("(0", "(1", 1), t1_form.args);
+    s = s
+        .val(Name::math("t0"), Val::num(t0))
+        .sub(Name::math("t0"), bound("max", entering))
+        .val(Name::math("t1"), Val::num(t1))
+        .sub(Name::math("t1"), t1_form);
+    let at = |t: &T| {
+        Subst::new(
+            "{} + {}·{}",
+            vec![Val::vec3(w.p0), Val::num(t), Val::vec3(w.delta)],
+        )
+    };
+    match result {
+        Some((a, z)) => s
+            .res(Name::From, Val::vec3(a))
+            .sub(Name::From, at(t0))
+            .res(Name::To, Val::vec3(z))
+            .sub(Name::To, at(t1)),
+        None => s.res(Name::Segment, Val::Null),
+    }
 }
 
 /// The box and the ends halved (exactly, barring subnormals) when P1 − P0

@@ -105,6 +105,10 @@ pub fn project<T: Scalar>(
             Step::new(Msg::OrthoProj(name.to_string()), "xp = x,  yp = y,  zp = 0")
                 .val(Name::math(name), Val::vec3(p))
                 .res(Name::Image(name.to_string()), Val::vec3(&r))
+                .sub(
+                    Name::Image(name.to_string()),
+                    Subst::new("({}, {}, 0)", vec![Val::num(x), Val::num(y)]),
+                )
         });
         return Ok(r);
     };

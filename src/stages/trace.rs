@@ -37,6 +37,10 @@ pub enum Name {
     InEyeSpace(&'static str),
     /// The colour before the clamp: `unclamped`.
     Unclamped,
+    /// The window's full height, 2·top (the text's tinggi): `height`.
+    Height,
+    /// The window's full width, 2·right (the text's lebar): `width`.
+    Width,
     /// The colour after the clamp: `color`.
     Color,
     /// The specular highlight factor: `highlight`.
@@ -102,6 +106,8 @@ impl fmt::Display for Name {
             Name::Vertex(k) => return write!(f, "vertex {k} (X, Y)"),
             Name::InEyeSpace(v) => return write!(f, "{v} (eye space)"),
             Name::Unclamped => "unclamped",
+            Name::Height => "height",
+            Name::Width => "width",
             Name::Color => "color",
             Name::Highlight => "highlight",
             Name::Contributes => "contributes",
@@ -153,6 +159,16 @@ impl Val {
     /// A number.
     pub fn num<T: Scalar>(x: &T) -> Val {
         Val::Num(x.shown())
+    }
+    /// The length `len` = |v| of a vector, with √(v·v) as its form where
+    /// the length has none of its own but v·v has (an exact run: |V + L| =
+    /// √(2+√2) ≈ 1.848; [`Scalar::root_shown`]).
+    pub fn length<T: Scalar>(v: &V3<T>, len: &T) -> Val {
+        let mut s = len.shown();
+        if s.pretty.is_none() && !len.is_exact() {
+            s.pretty = crate::num::vec::dot(v, v).root_shown().pretty;
+        }
+        Val::Num(s)
     }
     /// A 3-vector.
     pub fn vec3<T: Scalar>(a: &V3<T>) -> Val {
@@ -212,6 +228,15 @@ impl Subst {
     /// a·b by components: `a₀·b₀ + a₁·b₁ + a₂·b₂`.
     pub fn dot<T: Scalar>(a: &V3<T>, b: &V3<T>) -> Subst {
         Subst::new("{}·{} + {}·{} + {}·{}", pairs(a, b))
+    }
+    /// a × b by components: `(a₁·b₂ − a₂·b₁, a₂·b₀ − a₀·b₂, a₀·b₁ −
+    /// a₁·b₀)`.
+    pub fn cross<T: Scalar>(a: &V3<T>, b: &V3<T>) -> Subst {
+        let args = [(1, 2), (2, 1), (2, 0), (0, 2), (0, 1), (1, 0)]
+            .iter()
+            .flat_map(|&(i, j)| [Val::num(&a[i]), Val::num(&b[j])])
+            .collect();
+        Subst::new("({}·{} − {}·{}, {}·{} − {}·{}, {}·{} − {}·{})", args)
     }
     /// a/b (a vector or a number over a number).
     pub fn quotient(a: Val, b: Val) -> Subst {

@@ -122,37 +122,28 @@ pub fn window<T: Scalar>(
         .note(Msg::TextH)
     });
     tr.step(|| {
-        Step::new(
-            Msg::WindowEdges(label.to_string()),
-            "right = aspect·top,  bottom = −top,  left = −right,  height = 2·top,  width = 2·right",
-        )
-        .val(Name::math("aspect"), Val::num(aspect))
-        .val(Name::math("top"), Val::num(&w.top))
-        .res(Name::math("right"), Val::num(&w.right))
-        .sub(
-            Name::math("right"),
-            Subst::new("{}·{}", vec![Val::num(aspect), Val::num(&w.top)]),
-        )
-        .res(Name::math("bottom"), Val::num(&w.bottom))
-        .sub(
-            Name::math("bottom"),
-            Subst::new("−{}", vec![Val::num(&w.top)]),
-        )
-        .res(Name::math("left"), Val::num(&w.left))
-        .sub(
-            Name::math("left"),
-            Subst::new("−{}", vec![Val::num(&w.right)]),
-        )
-        .res(Name::math("height"), Val::num(&w.height))
-        .sub(
-            Name::math("height"),
-            Subst::new("2·{}", vec![Val::num(&w.top)]),
-        )
-        .res(Name::math("width"), Val::num(&w.width))
-        .sub(
-            Name::math("width"),
-            Subst::new("2·{}", vec![Val::num(&w.right)]),
-        )
+        Step::new(Msg::WindowEdges(label.to_string()), Msg::FWindowEdges)
+            .val(Name::math("aspect"), Val::num(aspect))
+            .val(Name::math("top"), Val::num(&w.top))
+            .res(Name::math("right"), Val::num(&w.right))
+            .sub(
+                Name::math("right"),
+                Subst::new("{}·{}", vec![Val::num(aspect), Val::num(&w.top)]),
+            )
+            .res(Name::math("bottom"), Val::num(&w.bottom))
+            .sub(
+                Name::math("bottom"),
+                Subst::new("−{}", vec![Val::num(&w.top)]),
+            )
+            .res(Name::math("left"), Val::num(&w.left))
+            .sub(
+                Name::math("left"),
+                Subst::new("−{}", vec![Val::num(&w.right)]),
+            )
+            .res(Name::Height, Val::num(&w.height))
+            .sub(Name::Height, Subst::new("2·{}", vec![Val::num(&w.top)]))
+            .res(Name::Width, Val::num(&w.width))
+            .sub(Name::Width, Subst::new("2·{}", vec![Val::num(&w.right)]))
     });
     Ok(w)
 }

@@ -13,12 +13,13 @@
 
 use crate::input::answer;
 use crate::input::fields::{Num, Vec3In};
+use crate::input::lights::LightType;
 use crate::input::lights::Setup;
 use crate::input::problem::ProblemIn;
 use crate::num::vec;
 use crate::num::{AngleUnit, Expr, Real, Scalar};
-use crate::stages::camera::Basis;
-use crate::stages::clip::Status;
+use crate::stages::camera::{self, Basis};
+use crate::stages::clip::{self, Status};
 use crate::stages::lighting::{LightKind, Rules};
 use crate::stages::trace::Val;
 use crate::stages::window::Window;
@@ -41,6 +42,8 @@ pub enum Code {
     NNotNormalized,
     /// `u_not_normalized`: u = Vup × n not divided by |Vup × n|.
     UNotNormalized,
+    /// `uv_swapped`: u and v swapped (the camera's x axis written as y).
+    UvSwapped,
     /// `fovy_not_halved`: tan(fovy) instead of tan(fovy/2).
     FovyNotHalved,
     /// `degrees_as_radians`: The angle in degrees given to tan as radians.
@@ -53,10 +56,14 @@ pub enum Code {
     DSign,
     /// `matrix_transposed`: The view matrix transposed (P·M).
     MatrixTransposed,
+    /// `mcam_as_view`: Mcam (camera to world) handed in as the view matrix.
+    McamAsView,
     /// `outcode_reversed`: The outcode bits in reverse order.
     OutcodeReversed,
     /// `endpoint_kept`: An endpoint outside the box kept instead of its intersection.
     EndpointKept,
+    /// `t_from_p1`: t measured from P1 instead of P0.
+    TFromP1,
     /// `reflect_plus_l`: R = 2N(L·N) + L instead of 2N(L·N) − L.
     ReflectPlusL,
     /// `specular_no_max`: The specular term without max(·, 0).
@@ -71,6 +78,8 @@ pub enum Code {
     LightNotNormalized,
     /// `normal_not_normalized`: N not divided by |N|.
     NormalNotNormalized,
+    /// `cos_in_radians`: cos of an angle in degrees taken in radian mode.
+    CosInRadians,
     /// `copied_misprint`: The value the source printed, wrong by its errata.
     CopiedMisprint,
 }
@@ -84,14 +93,17 @@ impl Code {
             Code::NReversed => "n_reversed",
             Code::NNotNormalized => "n_not_normalized",
             Code::UNotNormalized => "u_not_normalized",
+            Code::UvSwapped => "uv_swapped",
             Code::FovyNotHalved => "fovy_not_halved",
             Code::DegreesAsRadians => "degrees_as_radians",
             Code::HeightIsHalfExtent => "height_is_half_extent",
             Code::HeightAsHalfExtent => "height_as_half_extent",
             Code::DSign => "d_sign",
             Code::MatrixTransposed => "matrix_transposed",
+            Code::McamAsView => "mcam_as_view",
             Code::OutcodeReversed => "outcode_reversed",
             Code::EndpointKept => "endpoint_kept",
+            Code::TFromP1 => "t_from_p1",
             Code::ReflectPlusL => "reflect_plus_l",
             Code::SpecularNoMax => "specular_no_max",
             Code::PixelYFromTop => "pixel_y_from_top",
@@ -99,6 +111,7 @@ impl Code {
             Code::AspectInverted => "aspect_inverted",
             Code::LightNotNormalized => "light_not_normalized",
             Code::NormalNotNormalized => "normal_not_normalized",
+            Code::CosInRadians => "cos_in_radians",
             Code::CopiedMisprint => "copied_misprint",
         }
     }
@@ -116,22 +129,26 @@ impl Code {
             CrossOrder => Some(NReversed),
             NReversed => Some(NNotNormalized),
             NNotNormalized => Some(UNotNormalized),
-            UNotNormalized => Some(FovyNotHalved),
+            UNotNormalized => Some(UvSwapped),
+            UvSwapped => Some(FovyNotHalved),
             FovyNotHalved => Some(DegreesAsRadians),
             DegreesAsRadians => Some(HeightIsHalfExtent),
             HeightIsHalfExtent => Some(HeightAsHalfExtent),
             HeightAsHalfExtent => Some(DSign),
             DSign => Some(MatrixTransposed),
-            MatrixTransposed => Some(OutcodeReversed),
+            MatrixTransposed => Some(McamAsView),
+            McamAsView => Some(OutcodeReversed),
             OutcodeReversed => Some(EndpointKept),
-            EndpointKept => Some(ReflectPlusL),
+            EndpointKept => Some(TFromP1),
+            TFromP1 => Some(ReflectPlusL),
             ReflectPlusL => Some(SpecularNoMax),
             SpecularNoMax => Some(PixelYFromTop),
             PixelYFromTop => Some(EyeNoTranslation),
             EyeNoTranslation => Some(AspectInverted),
             AspectInverted => Some(LightNotNormalized),
             LightNotNormalized => Some(NormalNotNormalized),
-            NormalNotNormalized => Some(CopiedMisprint),
+            NormalNotNormalized => Some(CosInRadians),
+            CosInRadians => Some(CopiedMisprint),
             CopiedMisprint => None,
         }
     }
@@ -162,14 +179,17 @@ impl Code {
             Code::NReversed => n_reversed(p),
             Code::NNotNormalized => n_not_normalized(p),
             Code::UNotNormalized => u_not_normalized(p),
+            Code::UvSwapped => uv_swapped(p),
             Code::FovyNotHalved => fovy_not_halved(p),
             Code::DegreesAsRadians => degrees_as_radians(p),
             Code::HeightIsHalfExtent => height_is_half_extent(p),
             Code::HeightAsHalfExtent => height_as_half_extent(p),
             Code::DSign => d_sign(p),
             Code::MatrixTransposed => matrix_transposed(p),
+            Code::McamAsView => mcam_as_view(p),
             Code::OutcodeReversed => outcode_reversed(p),
             Code::EndpointKept => endpoint_kept(p),
+            Code::TFromP1 => t_from_p1(p),
             Code::ReflectPlusL => reflect_plus_l(p),
             Code::SpecularNoMax => specular_no_max(p),
             Code::PixelYFromTop => pixel_y_from_top(p),
@@ -177,6 +197,7 @@ impl Code {
             Code::AspectInverted => aspect_inverted(p),
             Code::LightNotNormalized => unnormalized(p, Unit::L),
             Code::NormalNotNormalized => unnormalized(p, Unit::N),
+            Code::CosInRadians => cos_in_radians(p),
             Code::CopiedMisprint => copied_misprint(p),
         }
     }
@@ -230,6 +251,23 @@ fn u_not_normalized(p: &ProblemIn) -> Option<Vec<Tree>> {
             basis: |b| {
                 let s = b.vxn_norm.clone();
                 scale_axes(b, [s.clone(), s, Real::from_i64(1)]);
+            },
+            ..Hooks::default()
+        },
+    )
+}
+
+/// u and v swapped: the camera's x axis written where its y axis goes,
+/// and the other way round; the view matrix's first two rows and the eye
+/// coordinates' x and y follow (and the projection and pixels after them).
+fn uv_swapped(p: &ProblemIn) -> Option<Vec<Tree>> {
+    hooked_exact(
+        p,
+        Hooks {
+            basis: |b| {
+                std::mem::swap(&mut b.u, &mut b.v);
+                std::mem::swap(&mut b.su, &mut b.sv);
+                b.norms.swap(1, 2);
             },
             ..Hooks::default()
         },
@@ -343,6 +381,25 @@ fn matrix_transposed(p: &ProblemIn) -> Option<Vec<Tree>> {
     Some(vec![t])
 }
 
+/// Mcam = T(Pe)·[u v n], the camera-to-world matrix, handed in as the view
+/// matrix V = Mcam⁻¹ ([`camera::camera_matrix`], the stage's own): variant
+/// 0 writes it and takes the eye coordinates right, variant 1 also takes
+/// the eye coordinates as Mcam·P (and the projection and pixels after
+/// them).
+fn mcam_as_view(p: &ProblemIn) -> Option<Vec<Tree>> {
+    p.camera.as_ref()?;
+    let with = |points| Hooks {
+        view: Some((camera::camera_matrix, points)),
+        ..Hooks::default()
+    };
+    let written = hooked(p, with(false))?;
+    let mut variants = written;
+    if let Some(mut used) = hooked(p, with(true)) {
+        variants.append(&mut used);
+    }
+    Some(variants)
+}
+
 /// The outcode bits in reverse order: every outcode, the ends' (code0,
 /// code1) and each intersection's (code), read backwards.
 fn outcode_reversed(p: &ProblemIn) -> Option<Vec<Tree>> {
@@ -389,6 +446,50 @@ fn endpoint_kept(p: &ProblemIn) -> Option<Vec<Tree>> {
         })
         .collect();
     Some(variants)
+}
+
+/// t measured from P1 instead of P0: each intersection's t is 1 − t.
+/// Variant 0 puts it into the text's P(t) = P0 + t·(P1 − P0), so each
+/// intersection lands at its mirror image about the segment's midpoint,
+/// with the codes, the kept points and the clipped segment that follow;
+/// variant 1 writes the t only (its points from P1, P(t) = P1 + t·(P0 −
+/// P1), are right).
+fn t_from_p1(p: &ProblemIn) -> Option<Vec<Tree>> {
+    p.clip.as_ref()?;
+    let through = hooked(
+        p,
+        Hooks {
+            clip: |r, b, ends| {
+                for i in &mut r.intersections {
+                    i.t = 1.0 - i.t;
+                    i.point = clip::point_at(ends.0, ends.1, &i.t);
+                    i.code = clip::outcode(b, &i.point);
+                }
+                if !r.intersections.is_empty() {
+                    r.segment =
+                        clip::kept_part(&r.intersections, (ends.0, r.code0), (ends.1, r.code1));
+                    r.status = if r.segment.is_some() {
+                        Status::Clipped
+                    } else {
+                        Status::Rejected
+                    };
+                }
+            },
+            ..Hooks::default()
+        },
+    )?;
+    let written = hooked(
+        p,
+        Hooks {
+            clip: |r, _, _| {
+                for i in &mut r.intersections {
+                    i.t = 1.0 - i.t;
+                }
+            },
+            ..Hooks::default()
+        },
+    )?;
+    Some([through, written].concat())
 }
 
 /// Each segment's ends [P0, P1] as results, in the problem's order.
@@ -638,6 +739,29 @@ fn unnormalized(p: &ProblemIn, which: Unit) -> Option<Vec<Tree>> {
     Some(vec![t])
 }
 
+/// cos of an angle in degrees taken in radian mode (cos 45 read as 45
+/// rad): a spot light's cone angles, whose halves the spot factor takes
+/// the cosines of, given to the stage as θ·180/π degrees, so that
+/// cos(θ/2 ·180/π °) = cos(θ/2 rad). Only for a problem with a spot light.
+fn cos_in_radians(p: &ProblemIn) -> Option<Vec<Tree>> {
+    if !p.light.iter().any(|l| l.kind == LightType::Spot) {
+        return None;
+    }
+    let radians = |s: &mut Setup<f64>| {
+        for l in &mut s.lights {
+            if let LightKind::Spot { theta, phi, .. } = &mut l.kind {
+                *theta = theta.to_degrees();
+                *phi = phi.to_degrees();
+            }
+        }
+    };
+    let hooks = Hooks {
+        setup: Some(&radians),
+        ..Hooks::default()
+    };
+    hooked(p, hooks)
+}
+
 /// The value the source printed for a result key (`[printed]`, keyed as
 /// one dotted string or as nested tables).
 fn printed<'a>(p: &'a ProblemIn, key: &str) -> Option<&'a toml::Value> {
@@ -775,5 +899,142 @@ mod tests {
         // degrees as radians: tan(30 rad) = −6.405331196646276
         let top = top_with(Code::DegreesAsRadians, &p);
         assert!((top - 30f64.tan()).abs() < 1e-9, "{top}");
+    }
+
+    /// A shipped problem.
+    fn shipped(name: &str) -> ProblemIn {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("problems")
+            .join(name);
+        ProblemIn::read(&path).expect("a shipped problem")
+    }
+
+    /// The numbers of `key` in variant `i` of a mistake's results.
+    fn nums(code: Code, p: &ProblemIn, i: usize, key: &str) -> Vec<f64> {
+        fn leaves(v: &Val, out: &mut Vec<f64>) {
+            match v {
+                Val::Num(x) => out.push(x.value),
+                Val::List(items) => items.iter().for_each(|x| leaves(x, out)),
+                _ => {}
+            }
+        }
+        let trees = code.apply(p).expect("the mistake applies");
+        let v = crate::tutor::solution::lookup(&trees[i], key).expect(key);
+        let mut out = Vec::new();
+        leaves(v, &mut out);
+        out
+    }
+
+    fn close(got: &[f64], want: &[f64]) -> bool {
+        got.len() == want.len() && got.iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-9)
+    }
+
+    #[test]
+    fn u_and_v_swapped() {
+        // eye (3, 4, 12) at the origin: u = (4, 0, −1)/√17, v = (−4, 51,
+        // −16)/(13√17), A' = (4/√17, −4/(13√17), −166/13) for A = (1, 0, 0);
+        // swapped, u and v trade places and so do A′'s x and y
+        let p = shipped("view-surds.toml");
+        let r17 = 17f64.sqrt();
+        let u = nums(Code::UvSwapped, &p, 0, "view.u");
+        assert!(
+            close(
+                &u,
+                &[
+                    -4.0 / (13.0 * r17),
+                    51.0 / (13.0 * r17),
+                    -16.0 / (13.0 * r17)
+                ]
+            ),
+            "{u:?}"
+        );
+        let v = nums(Code::UvSwapped, &p, 0, "view.v");
+        assert!(close(&v, &[4.0 / r17, 0.0, -1.0 / r17]), "{v:?}");
+        let a = nums(Code::UvSwapped, &p, 0, "view.points.A");
+        assert!(
+            close(&a, &[-4.0 / (13.0 * r17), 4.0 / r17, -166.0 / 13.0]),
+            "{a:?}"
+        );
+    }
+
+    #[test]
+    fn mcam_handed_in_as_the_view_matrix() {
+        // the text's example 6.1: u = (0, 0, −1), v = (−3/5, 4/5, 0),
+        // n = (4/5, 3/5, 0), Pe = (4, 4, 4); Mcam has them as columns
+        let p = shipped("text-camera.toml");
+        let mcam = [
+            0.0, -0.6, 0.8, 4.0, //
+            0.0, 0.8, 0.6, 4.0, //
+            -1.0, 0.0, 0.0, 4.0, //
+            0.0, 0.0, 0.0, 1.0,
+        ];
+        for variant in [0, 1] {
+            let m = nums(Code::McamAsView, &p, variant, "view.matrix");
+            assert!(close(&m, &mcam), "{variant}: {m:?}");
+        }
+        // variant 0 keeps the eye coordinates: Pref' = (0, 0, −5)
+        assert!(close(
+            &nums(Code::McamAsView, &p, 0, "view.points.Pref"),
+            &[0.0, 0.0, -5.0]
+        ));
+        // variant 1 takes Mcam·Pref, Pref = (0, 1, 4): (−3/5 + 16/5 + 4,
+        // 4/5 + 12/5 + 4, 4) = (6.6, 7.2, 4)
+        let e = nums(Code::McamAsView, &p, 1, "view.points.Pref");
+        assert!(close(&e, &[6.6, 7.2, 4.0]), "{e:?}");
+    }
+
+    #[test]
+    fn t_measured_from_p1() {
+        // P(t) = (4 − 6t, 2 + 4t, 2 − t): x = 3 at t = 1/6, x = 0 at 2/3,
+        // y = 4 at 1/2. From P1 these are 5/6, 1/3, 1/2; put into P(t),
+        // x = 3's lands at (−1, 16/3, 7/6) (code 001001), x = 0's at
+        // (2, 10/3, 5/3) (inside), y = 4's where it was, (1, 4, 3/2); the
+        // segment runs from t = 1/3 to t = 1/2
+        let p = shipped("text-clip.toml");
+        let t = |i, plane: &str| {
+            nums(
+                Code::TFromP1,
+                &p,
+                i,
+                &format!("clip.intersections.{plane}.t"),
+            )
+        };
+        for i in [0, 1] {
+            assert!(close(&t(i, "right"), &[5.0 / 6.0]));
+            assert!(close(&t(i, "left"), &[1.0 / 3.0]));
+        }
+        let right = nums(Code::TFromP1, &p, 0, "clip.intersections.right.point");
+        assert!(close(&right, &[-1.0, 16.0 / 3.0, 7.0 / 6.0]), "{right:?}");
+        let seg = nums(Code::TFromP1, &p, 0, "clip.segment");
+        assert!(
+            close(&seg, &[2.0, 10.0 / 3.0, 5.0 / 3.0, 1.0, 4.0, 1.5]),
+            "{seg:?}"
+        );
+        let trees = Code::TFromP1.apply(&p).unwrap();
+        let code = crate::tutor::solution::lookup(&trees[0], "clip.intersections.right.code");
+        assert_eq!(code, Some(&Val::text("001001")));
+        // variant 1: the t only, the points right
+        let right = nums(Code::TFromP1, &p, 1, "clip.intersections.right.point");
+        assert!(close(&right, &[3.0, 8.0 / 3.0, 11.0 / 6.0]), "{right:?}");
+    }
+
+    #[test]
+    fn cos_of_a_spot_cone_in_radians() {
+        // the spot at (3, 0, 4) shines down: ρ = 4/5, inside φ/2 = 45°
+        // (cos 0.707) but not θ/2 = 30° (cos 0.866): a penumbra. In
+        // radian mode cos(30 rad) = 0.1543 and cos(45 rad) = 0.5253, so
+        // ρ is inside the inner cone: spot 1, the diffuse colour kd·cos α =
+        // 0.6·4/5 = 0.48 on each channel
+        let p = shipped("shade-spot-penumbra.toml");
+        assert!(close(
+            &nums(Code::CosInRadians, &p, 0, "shade.lights.0.spot"),
+            &[1.0]
+        ));
+        let c = nums(Code::CosInRadians, &p, 0, "shade.color");
+        assert!(close(&c, &[0.48, 0.48, 0.48]), "{c:?}");
+        // no spot light, no such mistake
+        assert!(Code::CosInRadians
+            .apply(&shipped("shade-phong.toml"))
+            .is_none());
     }
 }

@@ -137,7 +137,8 @@ pub fn shade_run<T: Scalar, R: lighting::RuleSet<T>>(
     rec: &mut Recorder,
 ) -> Vec<(String, Val)> {
     let m = &s.material;
-    rec.step(|| material_step(m));
+    let text = lighting::is_text_model(m, &s.lights, &s.global_ambient);
+    rec.step(|| material_step(m, text));
     let sh = lighting::shade_with_rules(m, &s.lights, &s.global_ambient, &s.surface, rules, rec);
     let mut out: Vec<(String, Val)> = vec![
         (key(Shading::Color), rgb_val(&sh.color)),
@@ -163,15 +164,19 @@ pub fn shade_run<T: Scalar, R: lighting::RuleSet<T>>(
     out
 }
 
-/// The step that shows the material and the model.
-fn material_step<T: Scalar>(m: &Material<T>) -> Step {
+/// The step that shows the material and the model; the specular colour
+/// is the text's Cwhite in the text's own model (`text`).
+fn material_step<T: Scalar>(m: &Material<T>, text: bool) -> Step {
     Step::new(Msg::Material, format!("model = {}", m.model.name()))
         .val(Name::math("ka"), Val::num(&m.ka))
         .val(Name::math("kd"), Val::num(&m.kd))
         .val(Name::math("ks"), Val::num(&m.ks))
         .val(Name::math("n"), Val::num(&m.shininess))
         .val(Name::math("Cs"), rgb_val(&m.color))
-        .val(Name::math("Cspecular"), rgb_val(&m.specular))
+        .val(
+            Name::math(if text { "Cwhite" } else { "Cspecular" }),
+            rgb_val(&m.specular),
+        )
         .note(
             if m.ka == T::one() && m.kd == T::one() && m.ks == T::one() {
                 Msg::MaterialD3d

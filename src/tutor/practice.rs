@@ -10,8 +10,11 @@
 //! allow are named.
 //!
 //! The score is honest: the first verdict on each value counts, and a value
-//! revealed with `show` stays revealed; an answer given again after `back`
-//! is judged and shown, and counted apart as a retry.
+//! revealed with `show` stays revealed; so does every value a `show` or a
+//! hint prints, whichever step printed it (`show` on the window's bottom
+//! prints its right, left, height and width too); an answer given again
+//! after `back`, or to a value already shown, is judged and shown, and
+//! counted apart as a retry.
 //!
 //! Plain functions over plain data: [`plan`] solves the problem, a
 //! [`Session`] takes one [`Input`] at a time and returns the [`Event`]s it
@@ -27,7 +30,7 @@ use crate::tutor::check::Follow;
 use crate::tutor::check::{agrees, Marker, Settings, Verdict, FOLLOW_THROUGH};
 use crate::tutor::diagnose::Code;
 use crate::tutor::generate::{Difficulty, Topic};
-use crate::tutor::key::{Field, Key, Part, Shading, Value};
+use crate::tutor::key::{Edge, Field, Key, Part, Shading, Value};
 use crate::tutor::solution::value_of;
 
 /// One value the student is asked for.
@@ -114,9 +117,23 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
 /// `shade.cos_alpha`, …). An exhaustive match, so a new field or value
 /// is given its step name (or none) as soon as it compiles.
 pub(crate) fn step_for(key: &Key, steps: &[Step]) -> Option<Step> {
+    if key.part? == Part::Clip {
+        return clip_step(key.segment.unwrap_or(0), &key.value, steps);
+    }
+    let name = step_name(key)?;
+    steps
+        .iter()
+        .find(|s| s.result.iter().any(|(n, _)| *n == name))
+        .cloned()
+}
+
+/// The name a key's value bears in the worked steps (`A'` for
+/// `view.points.A`, `cos α` for `shade.cos_alpha`), where it has one of its
+/// own: a clipping's values (t, code, P(t) of each plane) share theirs.
+fn step_name(key: &Key) -> Option<Name> {
     use Shading as S;
-    let name = match (key.part?, &key.value) {
-        (Part::Clip, _) => return clip_step(key.segment.unwrap_or(0), &key.value, steps),
+    Some(match (key.part?, &key.value) {
+        (Part::Clip, _) => return None,
         (Part::View, Value::Point(p)) => Name::Eye(p.clone()),
         (Part::Project, Value::Point(p)) => Name::Image(p.clone()),
         (Part::Viewport, Value::Pixel(p)) => Name::Pixel(p.clone()),
@@ -127,6 +144,8 @@ pub(crate) fn step_for(key: &Key, steps: &[Step]) -> Option<Step> {
             Field::Shading(S::NDotH) => Name::math("N·H"),
             Field::Shading(S::Color) => Name::Color,
             Field::Shading(S::Unclamped) => Name::Unclamped,
+            Field::Edge(Edge::Height, false) => Name::Height,
+            Field::Edge(Edge::Width, false) => Name::Width,
             // the step's name is the key's notation (`n`, `top`, `ambient`,
             // `R`); the far window's edges and the emissive term have no
             // step of their own, so none is found
@@ -149,11 +168,7 @@ pub(crate) fn step_for(key: &Key, steps: &[Step]) -> Option<Step> {
             _,
             Value::Whole | Value::Plane(_) | Value::Cut(..) | Value::Light(_) | Value::Factor(..),
         ) => return None,
-    };
-    steps
-        .iter()
-        .find(|s| s.result.iter().any(|(n, _)| *n == name))
-        .cloned()
+    })
 }
 
 /// The clipping step of a key in segment `run`: steps are split into one
@@ -278,9 +293,13 @@ pub struct Outcome {
     /// Why the source's printed value is wrong, when the answer is that
     /// misprint (`copied_misprint`).
     pub why: Option<Msg>,
-    /// An answer given again after `back`: shown, counted apart (the
-    /// value's first verdict, or its revealing, stands for the score).
+    /// An answer given again after `back`, or to a value already shown:
+    /// shown, counted apart (the value's first verdict, or its revealing,
+    /// stands for the score).
     pub retry: bool,
+    /// The value had been shown (by `show` or a hint, of this step or
+    /// another) before this answer: it counts as revealed.
+    pub shown: bool,
 }
 
 /// What happened, for the report to put into words or JSON.
@@ -311,6 +330,8 @@ pub enum Event {
         /// The hint's step: the step's title and formula, and at level 2
         /// the values that do not give the answer away.
         step: Option<Step>,
+        /// The other values the hint prints, now counted as revealed.
+        also: Vec<Key>,
     },
     /// The step worked out and the value (counted as revealed).
     Show {
@@ -320,6 +341,8 @@ pub enum Event {
         expected: Val,
         /// The step.
         step: Option<Step>,
+        /// The other values the step prints, now counted as revealed.
+        also: Vec<Key>,
     },
     /// A value skipped.
     Skip {
@@ -467,35 +490,29 @@ impl<'a> Session<'a> {
                 self.hints[self.pos] += 1;
                 let level = self.hints[self.pos];
                 let own = self.own_step(item);
-                let step = own.as_ref().or(item.step.as_ref());
+                let from = own.as_ref().or(item.step.as_ref());
+                let step = hint_step(from, &item.expected, level, &self.plan.stated);
+                let also = step.as_ref().map_or(vec![], |s| self.reveal(s, false));
                 vec![Event::Hint {
                     key,
                     level,
-                    step: hint_step(step, &item.expected, level, &self.plan.stated),
+                    step,
+                    also,
                 }]
             }
             Input::Show | Input::Skip => {
                 let show = input == Input::Show;
                 if !self.scored_here() {
-                    self.scored[self.pos] = Some(Outcome {
-                        key: key.clone(),
-                        given: None,
-                        read: None,
-                        verdict: Verdict::Missing,
-                        code: if show { "revealed" } else { "skipped" },
-                        note: Msg::default(),
-                        expected: item.expected.clone(),
-                        follow_through: None,
-                        mistakes: vec![],
-                        why: None,
-                        retry: false,
-                    });
+                    let code = if show { "revealed" } else { "skipped" };
+                    self.scored[self.pos] = Some(unanswered(item, code));
                 }
                 let ev = if show {
+                    let also = item.step.as_ref().map_or(vec![], |s| self.reveal(s, true));
                     Event::Show {
                         key,
                         expected: item.expected.clone(),
                         step: item.step.clone(),
+                        also,
                     }
                 } else {
                     Event::Skip { key }
@@ -509,6 +526,9 @@ impl<'a> Session<'a> {
                 }
                 if self.scored_here() {
                     outcome.retry = true;
+                    outcome.shown = self.scored[self.pos]
+                        .as_ref()
+                        .is_some_and(|o| o.code == "revealed");
                     self.retries.push(outcome.clone());
                 } else {
                     self.scored[self.pos] = Some(outcome.clone());
@@ -517,6 +537,24 @@ impl<'a> Session<'a> {
                 self.advance(vec![Event::Verdict(outcome)])
             }
         }
+    }
+
+    /// Counts as revealed every other value that `printed` shows and that
+    /// has no verdict yet (a skip is none): a value the step computes
+    /// (`whole`: its results are printed), or one it prints under the
+    /// value's own name (`top` in the window's edges, `n` and `u` beside
+    /// v). Returns their keys, in the order asked.
+    fn reveal(&mut self, printed: &Step, whole: bool) -> Vec<Key> {
+        let mut also = Vec::new();
+        for (i, item) in self.plan.items.iter().enumerate() {
+            let open = self.scored[i].as_ref().is_none_or(|o| o.code == "skipped");
+            if i == self.pos || !open || !prints(printed, item, whole) {
+                continue;
+            }
+            self.scored[i] = Some(unanswered(item, "revealed"));
+            also.push(item.key.clone());
+        }
+        also
     }
 
     /// The item's step worked from the student's own earlier values where
@@ -563,6 +601,7 @@ impl<'a> Session<'a> {
             mistakes: vec![],
             why: None,
             retry: false,
+            shown: false,
         };
         if out.verdict == Verdict::Wrong && matches!(out.note, Msg::CountMismatch(..)) {
             out.verdict = Verdict::Unparseable;
@@ -691,6 +730,38 @@ impl<'a> Session<'a> {
             Some(t) => (t, diff),
         }
     }
+}
+
+/// A value with no answer: `revealed` or `skipped`.
+fn unanswered(item: &Item, code: &'static str) -> Outcome {
+    Outcome {
+        key: item.key.clone(),
+        given: None,
+        read: None,
+        verdict: Verdict::Missing,
+        code,
+        note: Msg::default(),
+        expected: item.expected.clone(),
+        follow_through: None,
+        mistakes: vec![],
+        why: None,
+        retry: false,
+        shown: false,
+    }
+}
+
+/// Whether a printed step shows an item's value: it is the item's own
+/// step and its results are printed (`whole`), or it holds the value under
+/// the value's own name.
+fn prints(printed: &Step, item: &Item, whole: bool) -> bool {
+    if whole && item.step.as_ref() == Some(printed) {
+        return true;
+    }
+    let Some(name) = step_name(&item.key) else {
+        return false;
+    };
+    let named = |(n, v): &(Name, Val)| *n == name && *v == item.expected;
+    printed.values.iter().any(named) || (whole && printed.result.iter().any(named))
 }
 
 /// The step of a hint: level 1 the idea (the step's title) and the
@@ -877,6 +948,68 @@ mod tests {
             (1.0, 1, 1, 1)
         );
         assert_eq!((sum.retries, sum.retries_correct, sum.skipped), (2, 2, 0));
+    }
+
+    #[test]
+    fn a_value_a_show_printed_counts_as_revealed() {
+        // near 0.1, fovy 45°, aspect 2: top = 0.1·tan 22.5° = (√2 − 1)/10;
+        // the step of bottom = −top prints right, left, height and width too
+        let p = ProblemIn::parse(
+            "title = 't'\nask = ['window']\n[perspective]\nnear = 0.1\nfovy = 45\naspect = 2\n",
+            "t",
+        )
+        .unwrap();
+        let plan = plan(&p, Settings::default(), None).unwrap();
+        let keys: Vec<String> = plan.items.iter().map(|i| i.key.to_string()).collect();
+        assert_eq!(keys[..2], ["window.top", "window.bottom"]);
+        let mut s = Session::new(&plan);
+        s.start();
+        assert_eq!(
+            verdict(&s.handle(Input::Answer("0.0414".into()))).verdict,
+            Verdict::Correct
+        );
+        let shown = s.handle(Input::Show);
+        let also = shown.iter().find_map(|e| match e {
+            Event::Show { also, .. } => Some(also.iter().map(Key::to_string).collect::<Vec<_>>()),
+            _ => None,
+        });
+        let mut others = keys[2..].to_vec();
+        others.sort();
+        let mut got = also.unwrap();
+        got.sort();
+        assert_eq!(got, others);
+        // right, left, height, width typed next: judged, not scored
+        for t in ["-0.0828", "0.0828", "0.0828", "0.1657"] {
+            let o = s.handle(Input::Answer(t.into()));
+            let o = verdict(&o);
+            assert!(
+                o.verdict == Verdict::Correct && o.retry && o.shown,
+                "{t}: {o:?}"
+            );
+        }
+        let sum = s.summary();
+        assert_eq!((sum.points, sum.correct, sum.revealed), (1.0, 1, 5));
+    }
+
+    #[test]
+    fn a_value_a_hint_printed_counts_as_revealed() {
+        // the hint on v = n × u, at level 2, prints n = (4/5, 3/5, 0) and
+        // u = (0, 0, −1): both skipped, both now revealed
+        let plan = camera_plan();
+        let mut s = Session::new(&plan);
+        s.start();
+        s.handle(Input::Skip);
+        s.handle(Input::Skip);
+        s.handle(Input::Hint);
+        let hint = s.handle(Input::Hint);
+        let also = hint.iter().find_map(|e| match e {
+            Event::Hint { also, level: 2, .. } => Some(also.clone()),
+            _ => None,
+        });
+        assert_eq!(also, Some(vec![key("view.n"), key("view.u")]));
+        s.handle(Input::Answer("-3/5, 4/5, 0".into()));
+        let sum = s.summary();
+        assert_eq!((sum.correct, sum.revealed, sum.skipped), (1, 2, 0));
     }
 
     #[test]

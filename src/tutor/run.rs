@@ -29,6 +29,12 @@ pub type Named<T> = (String, V3<T>);
 /// An alteration of the lighting set-up.
 pub type SetupHook<T> = dyn Fn(&mut crate::input::lights::Setup<T>);
 
+/// A matrix from the camera basis and Pe (Mcam: [`camera::camera_matrix`]).
+pub type ViewHook<T> = fn(&Basis<T>, &V3<T>) -> Matrix4<T>;
+
+/// An alteration of a segment's clipping, given the box and its ends.
+pub type ClipHook<T> = fn(&mut crate::stages::clip::Clipped<T>, &ClipBox<T>, (&V3<T>, &V3<T>));
+
 /// Alterations applied to stage results between stages. Solving uses none;
 /// the mistake catalog (`diagnose`) sets one to re-run the real stages with
 /// one step done the wrong way, instead of copying the pipeline's math;
@@ -37,8 +43,14 @@ pub type SetupHook<T> = dyn Fn(&mut crate::input::lights::Setup<T>);
 pub struct Hooks<'a, T> {
     /// Applied to the camera basis before it is used.
     pub basis: fn(&mut camera::Basis<T>),
+    /// A matrix written in place of the view matrix, from the basis and
+    /// Pe, and whether the eye coordinates are then that matrix times the
+    /// point (P' = M·P) instead of the text's (u·(P − Pe), …).
+    pub view: Option<(ViewHook<T>, bool)>,
     /// Applied to the near-plane window before it is used (given fovy in degrees).
     pub window: fn(&mut window::Window<T>, &T),
+    /// Applied to a segment's clipping, given the box and the ends P0, P1.
+    pub clip: ClipHook<T>,
     /// The lighting stage's rules (the text's by default).
     pub shade: crate::stages::lighting::Rules<T>,
     /// Applied to the lighting set-up (its lights, its surface) before it is used.
@@ -54,7 +66,9 @@ impl<T: Scalar> Default for Hooks<'_, T> {
     fn default() -> Self {
         Hooks {
             basis: |_| {},
+            view: None,
             window: |_, _| {},
+            clip: |_, _, _| {},
             shade: crate::stages::lighting::Rules::default(),
             setup: None,
             given: None,
@@ -94,10 +108,19 @@ pub fn eye_run<T: Scalar>(
     (hooks, prefix): (&Hooks<T>, &str),
     rec: &mut Recorder,
 ) -> Result<(Matrix4<T>, Vec<Named<T>>)> {
-    let m = camera::view_matrix(b, &cam.pe, rec).map_err(|e| in_table(prefix, e))?;
+    let mut m = camera::view_matrix(b, &cam.pe, rec).map_err(|e| in_table(prefix, e))?;
+    let mut by_matrix = false;
+    if let Some((written, used)) = hooks.view {
+        m = written(b, &cam.pe);
+        by_matrix = used;
+    }
     let mut eye = Vec::new();
     for (n, q) in points {
-        let e = camera::to_eye(b, &cam.pe, n, q, rec)?;
+        let e = if by_matrix {
+            camera::apply(&m, q).xyz()
+        } else {
+            camera::to_eye(b, &cam.pe, n, q, rec)?
+        };
         let given = hooks
             .givens()
             .and_then(|g| g.vec3(&Key::new(Part::View, Value::Point(n.clone()))));
@@ -210,6 +233,7 @@ pub fn clip_run<T: Scalar>(
     rec: &mut Recorder,
 ) -> Vec<(String, Val)> {
     let mut r = clip_checked(b, p0, p1, rec);
+    (hooks.clip)(&mut r, b, (p0, p1));
     if let Some(g) = hooks.givens() {
         follow::clipping(g, segment, b, (p0, p1), &mut r);
     }

@@ -578,7 +578,12 @@ fn window_steps<T: Scalar>(
     let on_window = (p.shared.on_window.as_deref())
         .map(given_on_window::<T>)
         .transpose()?;
-    out.section(Msg::SecWindowClip);
+    // "window and clipping" only where points are tested against the view
+    // volume; a problem that asks the window alone is headed by it
+    out.section(match eyes.1.is_empty() {
+        true => Msg::SecWindow,
+        false => Msg::SecWindowClip,
+    });
     let rec = &mut out.rec;
     let set_up = (&fovy, &aspect, near, far.as_ref());
     let (w, result) = window_run(set_up, hooks, rec).map_err(|e| in_table(per.prefix, e))?;
@@ -650,10 +655,22 @@ fn point_inside_step<T: Scalar>(
     let in_window = window::inside(w, &q[0], &q[1]);
     let in_depth = e[2] <= -near.clone() && far.is_none_or(|f| e[2] >= -f.clone());
     rec.step(|| {
+        // left ≤ xp ≤ right, bottom ≤ yp ≤ top, −far ≤ z' ≤ −near
+        let mut args = [&w.left, &q[0], &w.right, &w.bottom, &q[1], &w.top]
+            .map(Val::num)
+            .to_vec();
+        let mut form = "{} ≤ {} ≤ {},  {} ≤ {} ≤ {},  ".to_string();
+        if let Some(f) = far {
+            form.push_str("{} ≤ ");
+            args.push(Val::num(&-f.clone()));
+        }
+        form.push_str("{} ≤ {}");
+        args.extend([Val::num(&e[2]), Val::num(&-near.clone())]);
         Step::new(Msg::InsideVolume(name.to_string()), Msg::FInside)
             .val(Name::Image(name.to_string()), Val::vec2(&q[0], &q[1]))
             .val(Name::EyeZ(name.to_string()), Val::num(&e[2]))
             .res(Name::Inside, Val::Bool(in_window && in_depth))
+            .sub(Name::Inside, Subst::new(form, args))
             .note(match (in_window, in_depth) {
                 (true, true) => Msg::Inside(true, true),
                 (false, w) => Msg::Inside(false, w),

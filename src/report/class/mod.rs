@@ -43,6 +43,25 @@ fn mistakes(ms: &[(String, Marking)]) -> String {
     codes.join(" ")
 }
 
+/// The width of the class table's column of mistakes, in characters.
+const MISTAKES_WIDTH: u16 = 44;
+
+/// The mistakes found in a sheet in words, in `lang` (the table's column;
+/// the CSV and JSON keep the codes), one per line.
+fn mistakes_said(ms: &[(String, Marking)], lang: Lang) -> String {
+    let mut codes = Vec::new();
+    for d in ms.iter().flat_map(|(_, m)| &m.diagnoses) {
+        if !codes.contains(&d.mistake) {
+            codes.push(d.mistake);
+        }
+    }
+    let said: Vec<&str> = codes
+        .into_iter()
+        .map(|c| crate::report::mistakes::mistake_text(c, lang))
+        .collect();
+    said.join("\n")
+}
+
 /// A sheet's counts over all its parts: score, total, each verdict's (in
 /// the order of [`VERDICTS`], the columns'), follow-through.
 fn counts(ms: &[(String, Marking)]) -> (f64, usize, [usize; 6]) {
@@ -77,8 +96,17 @@ pub fn table(class: &Class, lang: Lang) -> String {
         header.insert(1, words::of(lang).doc(&crate::msg::DocWord::Variant));
     }
     let mut t = Table::new();
+    let columns = header.len();
     t.load_preset(presets::UTF8_FULL_CONDENSED)
+        .set_content_arrangement(comfy_table::ContentArrangement::Dynamic)
+        .set_width(400)
         .set_header(header);
+    // the mistakes in words wrap in their column; the counts never do
+    if let Some(c) = t.column_mut(columns - 1) {
+        c.set_constraint(comfy_table::ColumnConstraint::UpperBoundary(
+            comfy_table::Width::Fixed(MISTAKES_WIDTH),
+        ));
+    }
     for s in &class.sheets {
         let mut cells = vec![s.who.clone()];
         if class.exam {
@@ -89,7 +117,7 @@ pub fn table(class: &Class, lang: Lang) -> String {
                 let (score, total, n) = counts(ms);
                 cells.push(format!("{}/{total}", crate::report::fmt_dec(score, 4)));
                 cells.extend(n.iter().map(|x| x.to_string()));
-                cells.push(mistakes(ms));
+                cells.push(mistakes_said(ms, lang));
             }
             Err(e) => {
                 cells.push("—".to_string());

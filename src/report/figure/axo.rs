@@ -28,6 +28,10 @@ pub struct Axo {
     right: [f64; 3],
     up: [f64; 3],
     w: [f64; 3],
+    /// Whether z is drawn mirrored (away from the viewer where the view
+    /// would draw it toward them): the clip box as the text's front
+    /// (z < zmin) and back (z > zmax) read.
+    mirror: bool,
 }
 
 impl Axo {
@@ -41,6 +45,26 @@ impl Axo {
             right: [ca, 0.0, -sa],
             up: [-se * sa, ce, -se * ca],
             w: [ce * sa, se, ce * ca],
+            mirror: false,
+        }
+    }
+    /// The same view of the world mirrored in z (z drawn away from the
+    /// viewer): a point p is drawn where the view draws (x, y, −z), and
+    /// the viewer stands on the −z side. The text's clipping box reads so:
+    /// x to the right, y up, z away, its front face z = zmin toward the
+    /// reader (a left-handed drawing, as the text's region codes are).
+    pub fn mirrored(self) -> Axo {
+        Axo {
+            mirror: true,
+            ..self
+        }
+    }
+    /// p, mirrored in z when the view is.
+    fn seen(&self, p: [f64; 3]) -> [f64; 3] {
+        if self.mirror {
+            [p[0], p[1], -p[2]]
+        } else {
+            p
         }
     }
     /// The usual view ([`USUAL`]).
@@ -49,27 +73,40 @@ impl Axo {
     }
     /// A 3D point on the page: (p·right, p·up).
     pub fn page(&self, p: [f64; 3]) -> [f64; 2] {
+        let p = self.seen(p);
         [dot(p, self.right), dot(p, self.up)]
     }
     /// How near a point is to the viewer (p·w): of two points on one page
     /// spot, the one with the larger depth is in front.
     pub fn depth(&self, p: [f64; 3]) -> f64 {
-        dot(p, self.w)
+        dot(self.seen(p), self.w)
     }
-    /// The unit direction w from the scene toward the viewer.
+    /// The unit direction w from the scene toward the viewer (in world
+    /// coordinates: on the −z side for a mirrored view).
     pub fn toward(&self) -> [f64; 3] {
-        self.w
+        self.seen(self.w)
+    }
+    /// Whether z is drawn mirrored ([`Axo::mirrored`]).
+    pub fn is_mirrored(&self) -> bool {
+        self.mirror
     }
     /// The view of the least cost among azimuths every 5° and elevations
     /// from −30° to 60° every 5°: `quality` is at least 1 for a view that
     /// shows what it must (more is better, up to 1.5), and each degree
     /// away from the view `usual` (azimuth, elevation) costs 0.004.
     pub fn choose(usual: (f64, f64), quality: impl Fn(&Axo) -> f64) -> Axo {
+        Axo::choose_in(usual, false, quality)
+    }
+    /// As [`Axo::choose`], among mirrored views when `mirror`.
+    pub fn choose_in(usual: (f64, f64), mirror: bool, quality: impl Fn(&Axo) -> f64) -> Axo {
         let usual = Axo::new(usual.0, usual.1);
         let mut best = (f64::MIN, usual);
         for el in (-6..=12).map(|k| 5.0 * f64::from(k)) {
             for az in (-36..36).map(|k| 5.0 * f64::from(k)) {
-                let a = Axo::new(az, el);
+                let a = Axo {
+                    mirror,
+                    ..Axo::new(az, el)
+                };
                 let away = dot(a.w, usual.w).clamp(-1.0, 1.0).acos().to_degrees();
                 let score = quality(&a).min(1.5) - 0.004 * away;
                 if score > best.0 + 1e-12 {

@@ -56,6 +56,7 @@ pub(super) fn num_val(x: f64) -> Val {
         value: x,
         exact: None,
         pretty: None,
+        beyond: None,
     })
 }
 
@@ -82,11 +83,16 @@ pub(super) fn panel(st: &Style, which: Panel, items: Vec<Item>) -> Figure {
 /// A 3D panel: as [`panel`], its description ending with the view it is
 /// drawn in (the direction toward the viewer, azimuth and elevation).
 pub(super) fn panel3(st: &Style, which: Panel, axo: &Axo, items: Vec<Item>) -> Figure {
-    let w = axo.toward().map(|c| (c * 100.0).round() / 100.0 + 0.0);
+    // The direction toward the viewer, its azimuth and elevation (for a
+    // view mirrored in z, the −z side the reader stands on: azimuth
+    // 180° − az).
+    let t = axo.toward();
+    let w = t.map(|c| (c * 100.0).round() / 100.0 + 0.0);
+    let deg = |x: f64| (x.to_degrees() * 100.0).round() / 100.0 + 0.0;
     let view = FigureMsg::View {
         from: st.val_inline(&vec_val(&w)),
-        az: st.val_inline(&num_val(axo.az)),
-        el: st.val_inline(&num_val(axo.el)),
+        az: st.val_inline(&num_val(deg(t[0].atan2(t[2])))),
+        el: st.val_inline(&num_val(deg(t[1].clamp(-1.0, 1.0).asin()))),
     };
     let mut f = panel(st, which, items);
     f.desc = format!("{} {}", say(st, view), f.desc);

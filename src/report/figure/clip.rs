@@ -102,17 +102,21 @@ pub(super) fn figures(p: &Part, st: &Style, g: &ClipAt) -> Option<Vec<Figure>> {
     Some(vec![three_d(&c, &axo, st), along(&c, st)])
 }
 
-/// The view of the box: the axes readable, no face seen edge-on
-/// (|w_k| ≥ 0.15), and the ends and intersections apart (each distance
-/// drawn at no less than 40 % of its length).
+/// The view of the box, mirrored in z as the text's planes read (x to the
+/// right, y up, z away from the reader: the front face z = zmin toward
+/// the reader, [`Axo::mirrored`]): the axes readable, no face seen
+/// edge-on (|w_k| ≥ 0.15), and the ends and intersections apart (each
+/// distance drawn at no less than 40 % of its length).
 fn view(c: &Clip) -> Axo {
     let mut pts: Vec<[f64; 3]> = c.ends.to_vec();
     pts.extend(c.tried.iter().map(|t| t.point));
     let xyz = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-    Axo::choose(super::axo::USUAL, |a| {
+    Axo::choose_in(super::axo::USUAL, true, |a| {
         let w = a.toward();
         let mut q = a.readable(&xyz);
         q = q.min(w.iter().fold(f64::MAX, |m, x| m.min(x.abs())) / 0.15);
+        // The reader on the front's side (z < zmin), so x runs right.
+        q = q.min(-w[2] / 0.15);
         for (i, p) in pts.iter().enumerate() {
             for r in &pts[..i] {
                 let d = minus(*p, *r);

@@ -22,6 +22,7 @@ pub mod builders;
 mod camera;
 mod clip;
 pub mod drawings;
+mod index;
 pub mod layout;
 mod metrics;
 mod place;

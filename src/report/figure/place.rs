@@ -7,16 +7,20 @@
 //!
 //! | what | cost |
 //! |---|---|
-//! | over another label (or within 3 px of it), or off the page | 1000 each |
-//! | a line crossing it, or over a dot or an arrow head | 60 each |
+//! | over another label (or nearer it than 10 px side by side, 2 px above or below), or off the page | 1000 each |
+//! | a line crossing it, over a dot or an arrow head, or within 2 px of a line's end | 60 each |
+//! | another mark's dot or tip as near as its own mark (or less than 3 px farther) | 60 each |
 //! | each px from its mark | 1 |
 //! | away from the side asked for (beyond an arrow's tip) | up to 12 |
 //! | each px along the mark from the point asked for (or its middle) | 0.08 |
 //!
 //! Only places within [`REACH`] px of the mark are tried, so every label
-//! stands beside its own mark.
+//! stands beside its own mark, and nearer it than any other mark's dot or
+//! tip (the marks its text names too, `N = V = …`, excepted). The
+//! obstacles are found through a spatial index ([`super::index`]).
 
-use super::metrics::{Anchor, Placed, ASCENT, DESCENT, WIDTH};
+use super::index::Obstacles;
+use super::metrics::{Anchor, Placed, ASCENT, DESCENT};
 
 /// A point in px (y down).
 pub type Pt = (f64, f64);
@@ -34,15 +38,40 @@ pub struct Bx {
     pub b: f64,
 }
 
+/// The length of (x, y) (px, far from overflow: a plain square root,
+/// cheaper than `hypot` in the placer's inner loop).
+fn len(x: f64, y: f64) -> f64 {
+    (x * x + y * y).sqrt()
+}
+
 impl Bx {
-    fn overlaps(&self, o: &Bx) -> bool {
+    /// The box of the point c grown by r each way.
+    pub fn around(c: Pt, r: f64) -> Bx {
+        Bx {
+            l: c.0 - r,
+            r: c.0 + r,
+            t: c.1 - r,
+            b: c.1 + r,
+        }
+    }
+    /// The box grown by dx left and right, dy up and down.
+    pub fn grown(&self, dx: f64, dy: f64) -> Bx {
+        Bx {
+            l: self.l - dx,
+            r: self.r + dx,
+            t: self.t - dy,
+            b: self.b + dy,
+        }
+    }
+    /// Whether two boxes overlap.
+    pub fn overlaps(&self, o: &Bx) -> bool {
         self.l < o.r && o.l < self.r && self.t < o.b && o.t < self.b
     }
     /// The distance from the box to a point (0 inside).
     pub fn dist_point(&self, p: Pt) -> f64 {
         let dx = (self.l - p.0).max(p.0 - self.r).max(0.0);
         let dy = (self.t - p.1).max(p.1 - self.b).max(0.0);
-        dx.hypot(dy)
+        len(dx, dy)
     }
     /// Whether the segment a–b crosses the box (or lies in it).
     pub fn crossed_by(&self, a: Pt, b: Pt) -> bool {
@@ -80,10 +109,39 @@ impl Bx {
         ];
         let mut d = self.dist_point(a).min(self.dist_point(b));
         for c in corners {
-            d = d.min(super::axo::to_segment([c.0, c.1], [a.0, a.1], [b.0, b.1]));
+            d = d.min(to_segment(c, a, b));
         }
         d
     }
+}
+
+/// The distance from p to the segment a–b.
+fn to_segment(p: Pt, a: Pt, b: Pt) -> f64 {
+    let (ux, uy) = (b.0 - a.0, b.1 - a.1);
+    let l2 = ux * ux + uy * uy;
+    let t = if l2 > 0.0 {
+        (((p.0 - a.0) * ux + (p.1 - a.1) * uy) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    len(p.0 - a.0 - t * ux, p.1 - a.1 - t * uy)
+}
+
+/// Whether p lies in the convex polygon `pts` (or on its outline).
+fn inside(p: Pt, pts: &[Pt]) -> bool {
+    let n = pts.len();
+    let mut sign = 0.0;
+    for i in 0..n {
+        let (a, b) = (pts[i], pts[(i + 1) % n]);
+        let c = (b.0 - a.0) * (p.1 - a.1) - (b.1 - a.1) * (p.0 - a.0);
+        if c != 0.0 {
+            if sign != 0.0 && c.signum() != sign {
+                return false;
+            }
+            sign = c.signum();
+        }
+    }
+    n >= 3
 }
 
 /// The farthest a label stands from its mark, px (the promise is 40).
@@ -113,8 +171,7 @@ impl Geom {
                 .fold(f64::MAX, f64::min),
             Geom::Region(pts) => {
                 let c = ((bx.l + bx.r) / 2.0, (bx.t + bx.b) / 2.0);
-                let poly: Vec<[f64; 2]> = pts.iter().map(|p| [p.0, p.1]).collect();
-                if super::axo::outside_by([c.0, c.1], &poly) == 0.0 {
+                if inside(c, pts) {
                     return 0.0;
                 }
                 let n = pts.len();
@@ -151,19 +208,7 @@ impl Geom {
 }
 
 fn dist(a: Pt, b: Pt) -> f64 {
-    (a.0 - b.0).hypot(a.1 - b.1)
-}
-
-/// What a label must keep clear of: the marks' lines, their dots and
-/// arrow heads (centre and radius), and the labels placed before it.
-#[derive(Clone, Debug, Default)]
-pub struct Obstacles {
-    /// Lines.
-    pub lines: Vec<(Pt, Pt)>,
-    /// Dots and arrow heads.
-    pub blobs: Vec<(Pt, f64)>,
-    /// Labels placed.
-    pub boxes: Vec<Bx>,
+    len(a.0 - b.0, a.1 - b.1)
 }
 
 /// The candidate boxes of a text of width w about `at` with a gap of `g`
@@ -202,47 +247,33 @@ fn candidates(at: Pt, g: f64, w: f64) -> Vec<(Bx, Anchor)> {
     out
 }
 
-/// The cost of the obstacles a box meets: see the module's table.
-fn cost(bx: &Bx, obs: &Obstacles) -> f64 {
-    // Labels keep 3 px apart (so two never read as one).
-    let apart = Bx {
-        l: bx.l - 3.0,
-        r: bx.r + 3.0,
-        t: bx.t - 1.0,
-        b: bx.b + 1.0,
-    };
-    let on_labels = obs.boxes.iter().filter(|o| o.overlaps(&apart)).count();
-    let off_page = usize::from(bx.l < 1.0 || bx.r > WIDTH - 1.0);
-    let lines = obs
-        .lines
-        .iter()
-        .filter(|(a, b)| bx.crossed_by(*a, *b))
-        .count();
-    let blobs = obs
-        .blobs
-        .iter()
-        .filter(|(c, r)| bx.dist_point(*c) < *r)
-        .count();
-    1000.0 * (on_labels + off_page) as f64 + 60.0 * (lines + blobs) as f64
+/// What a label is placed for: its mark's shape, the side `toward` it
+/// asks for (a page direction, y up) and the point `near` (px) it asks
+/// to stand beside, if any, and the marks it may stand near (its own, and
+/// those its text names), by number.
+pub struct Job<'a> {
+    /// The mark's shape.
+    pub geom: &'a Geom,
+    /// The side asked for.
+    pub toward: Option<[f64; 2]>,
+    /// The point asked for.
+    pub near: Option<Pt>,
+    /// Its mark and the marks its text names.
+    pub own: &'a [usize],
 }
 
-/// The best place for a text of width w beside the mark g, preferring the
-/// side `toward` (a page direction, y up) and the point `near` (px) if
-/// given, else the middle of the mark: each px of the anchor from that
-/// point costs 0.08. Returns the label and its cost.
-pub fn place(
-    text: &str,
-    w: f64,
-    g: &Geom,
-    (toward, near): (Option<[f64; 2]>, Option<Pt>),
-    obs: &Obstacles,
-) -> (Placed, f64) {
+/// The best place for a text of width w beside the mark of `job`,
+/// preferring the side asked for and the point asked for, else the
+/// middle of the mark: each px of the anchor from that point costs 0.08.
+/// Returns the label and its cost.
+pub fn place(text: &str, w: f64, job: &Job, obs: &mut Obstacles) -> (Placed, f64) {
+    let (g, toward, near) = (job.geom, job.toward, job.near);
     let gaps: [f64; 4] = match g {
         Geom::Point(_) => [6.0, 12.0, 20.0, 30.0],
         _ => [3.0, 8.0, 16.0, 26.0],
     };
     let want = toward.map(|t| {
-        let n = t[0].hypot(t[1]).max(1e-300);
+        let n = len(t[0], t[1]).max(1e-300);
         (t[0] / n, -t[1] / n)
     });
     let (found, mid) = g.anchors();
@@ -253,20 +284,22 @@ pub fn place(
         let along = 0.08 * dist(*at, pref);
         for gap in gaps {
             for (bx, anchor) in candidates(*at, gap, w) {
-                let near_mark = g.distance(&bx);
-                if near_mark > REACH {
-                    continue;
-                }
                 let off = ((bx.l + bx.r) / 2.0 - at.0, (bx.t + bx.b) / 2.0 - at.1);
-                let n = off.0.hypot(off.1).max(1e-300);
+                let n = len(off.0, off.1).max(1e-300);
                 let d = (off.0 / n, off.1 / n);
                 let side = want.map_or(0.0, |t| 6.0 * (1.0 - (t.0 * d.0 + t.1 * d.1)));
-                // What it costs at least; the obstacles only add to it.
-                let least = near_mark + side + along;
-                if best.as_ref().is_some_and(|(b, ..)| least >= *b - 1e-9) {
+                // What it costs at least; the distance to the mark and the
+                // obstacles only add to it.
+                let beaten = |least: f64| best.as_ref().is_some_and(|(b, ..)| least >= *b - 1e-9);
+                if beaten(side + along) {
                     continue;
                 }
-                let c = least + cost(&bx, obs);
+                let near_mark = g.distance(&bx);
+                let least = near_mark + side + along;
+                if near_mark > REACH || beaten(least) {
+                    continue;
+                }
+                let c = least + obs.cost(&bx, job.own, near_mark);
                 if best.as_ref().is_none_or(|(b, ..)| c < *b - 1e-9) {
                     best = Some((c, bx, anchor));
                 }
@@ -295,19 +328,33 @@ pub fn place(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::report::figure::index::Scene;
+
+    fn area() -> Bx {
+        Bx {
+            l: 0.0,
+            r: 600.0,
+            t: 0.0,
+            b: 400.0,
+        }
+    }
+
+    fn job<'a>(g: &'a Geom, own: &'a [usize]) -> Job<'a> {
+        Job {
+            geom: g,
+            toward: Some([1.0, 0.0]),
+            near: None,
+            own,
+        }
+    }
 
     /// Nothing in the way: the label stands on the side asked for, at the
     /// least gap (6 px from a dot), and costs that distance.
     #[test]
     fn a_free_label_stands_on_its_side() {
         let g = Geom::Point((100.0, 100.0));
-        let (p, c) = place(
-            "A",
-            10.0,
-            &g,
-            (Some([1.0, 0.0]), None),
-            &Obstacles::default(),
-        );
+        let mut obs = Obstacles::new(Scene::default(), 1, area());
+        let (p, c) = place("A", 10.0, &job(&g, &[0]), &mut obs);
         assert_eq!((p.x, p.anchor), (106.0, Anchor::Start));
         assert!((c - 6.0).abs() < 1e-9, "{c}");
     }
@@ -317,15 +364,79 @@ mod tests {
     #[test]
     fn a_label_steps_around_a_line() {
         let g = Geom::Point((100.0, 100.0));
-        let obs = Obstacles {
+        let scene = Scene {
             lines: vec![((110.0, 0.0), (110.0, 200.0))],
-            ..Obstacles::default()
+            ..Scene::default()
         };
+        let mut obs = Obstacles::new(scene, 1, area());
         let w = crate::report::figure::layout::text_width("A = (1, 2)");
-        let (p, c) = place("A = (1, 2)", w, &g, (Some([1.0, 0.0]), None), &obs);
+        let (p, c) = place("A = (1, 2)", w, &job(&g, &[0]), &mut obs);
         let (l, r, t, b) = p.bounds();
         let bx = Bx { l, r, t, b };
         assert!(!bx.crossed_by((110.0, 0.0), (110.0, 200.0)), "{p:?}");
         assert!(c < 60.0 && g.distance(&bx) <= REACH, "{c}");
+    }
+
+    /// Another mark's dot 14 px to the right of A's (mark 1 at (114,
+    /// 100)): the label of A may not stand to the right, where it would be
+    /// as near B's dot as A's (at the least gap, 6 px from A's centre, it
+    /// would reach over B's dot); it stands on the other side, nearer its
+    /// own dot than B's by at least 3 px.
+    #[test]
+    fn a_label_stands_nearer_its_own_dot_than_another() {
+        let (a, b) = ((100.0, 100.0), (114.0, 100.0));
+        let g = Geom::Point(a);
+        let scene = Scene {
+            spots: vec![(a, 0), (b, 1)],
+            ..Scene::default()
+        };
+        let mut obs = Obstacles::new(scene, 1, area());
+        let (p, c) = place("A", 10.0, &job(&g, &[0]), &mut obs);
+        let (l, r, t, bt) = p.bounds();
+        let bx = Bx { l, r, t, b: bt };
+        assert!(c < 60.0, "{c}");
+        assert!(bx.dist_point(b) >= bx.dist_point(a) + 3.0, "{p:?}");
+        // the same dot named by the label's text (`A = B = …`) is no
+        // obstacle: the label stands on the side asked for.
+        let mut obs = Obstacles::new(
+            Scene {
+                spots: vec![(a, 0), (b, 1)],
+                ..Scene::default()
+            },
+            1,
+            area(),
+        );
+        let (p, _) = place("A = B", 40.0, &job(&g, &[0, 1]), &mut obs);
+        assert_eq!(p.anchor, Anchor::Start);
+    }
+
+    /// The work of placing a label does not grow with the marks away from
+    /// it: a dot at (100, 100) alone, then with 500 vertical lines and 500
+    /// dots from x = 300 to 550 (more than REACH + a label's width away):
+    /// the same candidates are costed and the same obstacles tested
+    /// (before the index, each candidate was tested against all 1,000).
+    #[test]
+    fn far_marks_add_no_work() {
+        let a = (100.0, 100.0);
+        let g = Geom::Point(a);
+        let work = |far: usize| {
+            let mut scene = Scene {
+                spots: vec![(a, 0)],
+                blobs: vec![(a, 5.5)],
+                ..Scene::default()
+            };
+            for k in 0..far {
+                let x = 300.0 + 0.5 * k as f64;
+                scene.lines.push(((x, 0.0), (x, 400.0)));
+                scene.blobs.push(((x, 200.0), 5.5));
+                scene.spots.push(((x, 200.0), k + 1));
+            }
+            let mut obs = Obstacles::new(scene, 1, area());
+            let (p, c) = place("A = (1, 2)", 75.0, &job(&g, &[0]), &mut obs);
+            (p, c, obs.work)
+        };
+        let (alone, with) = (work(0), work(500));
+        assert_eq!(alone, with);
+        assert!(alone.2.candidates > 0 && alone.2.tests > 0, "{:?}", alone.2);
     }
 }

@@ -130,11 +130,23 @@ impl<'a> Vector<'a> {
     }
 }
 
+/// Where each vector's arrow starts on the page, by name.
+type Tails = Vec<(String, [f64; 2])>;
+
+/// The tail of the arrow of `name` (the surface point if not drawn).
+fn tail(tails: &Tails, name: &str) -> [f64; 2] {
+    tails
+        .iter()
+        .find(|(n, _)| n == name)
+        .map_or([0.0, 0.0], |(_, t)| *t)
+}
+
 /// The arrows of the vectors in a plane, each from the surface point,
 /// [`LENGTH`] long: vectors along one direction are drawn side by side
 /// ([`BESIDE`] apart) under one label `L = V = (…)`, and a note says
-/// they coincide.
-fn arrows(plane: &Plane, vs: &[Vector], st: &Style, items: &mut Vec<Item>) {
+/// they coincide. Returns where each arrow starts.
+fn arrows(plane: &Plane, vs: &[Vector], st: &Style, items: &mut Vec<Item>) -> Tails {
+    let mut tails = Vec::new();
     let mut groups: Vec<(String, [f64; 2], Vec<&Vector>)> = Vec::new();
     for v in vs {
         let Some(d) = vec_of(v.val) else { continue };
@@ -151,6 +163,7 @@ fn arrows(plane: &Plane, vs: &[Vector], st: &Style, items: &mut Vec<Item>) {
         for (k, v) in members.iter().enumerate() {
             let s = k as f64 * BESIDE;
             let a = [side[0] * s, side[1] * s];
+            tails.push((v.name.clone(), a));
             let b = [a[0] + LENGTH * d[0], a[1] + LENGTH * d[1]];
             items.push(mark(
                 &v.name,
@@ -167,15 +180,20 @@ fn arrows(plane: &Plane, vs: &[Vector], st: &Style, items: &mut Vec<Item>) {
             items.push(Item::Note(format!("{}: {word}", names.join(", "))));
         }
     }
+    tails
 }
 
 /// The arc of the angle `name` from direction a to direction b at radius
 /// `r`·[`LENGTH`], labelled `α = 45°`, and a note with its cosine
-/// (`cos α = √2/2 ≈ 0.7071`; Blinn's `N·H = …` for the angle of N and H);
-/// for an angle under 1° the note alone.
+/// (`cos α = √2/2 ≈ 0.7071`; Blinn's `N·H = …` for the angle of N and H).
+/// An angle under 1° (vectors that coincide, drawn side by side) is
+/// marked where it would be: a short arc across, at radius r, from a's
+/// arrow to b's, drawn from their tails; and by the note alone
+/// when the two arrows are drawn one over the other.
 fn angle(
     plane: &Plane,
     (a, b): ([f64; 3], [f64; 3]),
+    (tail_a, tail_b): ([f64; 2], [f64; 2]),
     (name, r): (&str, f64),
     cos: &Val,
     st: &Style,
@@ -205,16 +223,28 @@ fn angle(
             labelled(st, &format!("cos {name}"), cos),
         ),
     };
-    if sweep.abs().to_degrees() < 1.0 {
-        return vec![Item::Note(format!("{text}: {note}"))];
-    }
     let r = r * LENGTH;
-    let pts: Vec<[f64; 2]> = (0..=32)
-        .map(|i| {
-            let t = ta + sweep * f64::from(i) / 32.0;
-            [r * t.cos(), r * t.sin()]
-        })
-        .collect();
+    let pts: Vec<[f64; 2]> = if sweep.abs().to_degrees() < 1.0 {
+        // Across the arrows drawn side by side, at radius r along them.
+        let at = |t: [f64; 2], d: [f64; 2]| [t[0] + r * d[0], t[1] + r * d[1]];
+        let (p, q) = (at(tail_a, pa), at(tail_b, pb));
+        if (p[0] - q[0]).hypot(p[1] - q[1]) < 1e-9 {
+            return vec![Item::Note(format!("{text}: {note}"))];
+        }
+        (0..=32)
+            .map(|i| {
+                let t = f64::from(i) / 32.0;
+                [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])]
+            })
+            .collect()
+    } else {
+        (0..=32)
+            .map(|i| {
+                let t = ta + sweep * f64::from(i) / 32.0;
+                [r * t.cos(), r * t.sin()]
+            })
+            .collect()
+    };
     let mid = pts[16];
     vec![
         mark(name, Kind::Arc, Pen::Other, Shape::Path(pts)),
@@ -350,17 +380,21 @@ fn incidence(
             leave.push(name);
         }
     }
-    arrows(&plane, &vs, st, &mut items);
+    let tails = arrows(&plane, &vs, st, &mut items);
+    let at = |a: &str, b: &str| (tail(&tails, a), tail(&tails, b));
     if let Some(c) = light.cos_a {
-        items.extend(angle(&plane, (l, n), (&named("α"), 0.3), c, st));
+        let ends = at(&named("L"), "N");
+        items.extend(angle(&plane, (l, n), ends, (&named("α"), 0.3), c, st));
     }
     let r = light.r.and_then(vec_of);
     if let (Some(r), Some(vd), Some(c), false) = (r, vd, light.cos_b, leave.contains(&"V")) {
-        items.extend(angle(&plane, (r, vd), (&named("β"), 0.45), c, st));
+        let ends = at(&named("R"), "V");
+        items.extend(angle(&plane, (r, vd), ends, (&named("β"), 0.45), c, st));
     }
     if let (Some((hv, nh)), false) = (blinn, leave.contains(&"H")) {
         let h = vec_of(hv).unwrap_or(n);
-        items.extend(angle(&plane, (n, h), ("N·H", 0.6), nh, st));
+        let ends = at("N", "H");
+        items.extend(angle(&plane, (n, h), ends, ("N·H", 0.6), nh, st));
     }
     let mut out = vec![panel(st, which, items)];
     if let (true, Some(rv), Some(vv), Some(c)) = (leave.contains(&"V"), light.r, v, light.cos_b) {
@@ -387,7 +421,8 @@ fn pair(st: &Style, which: Panel, vs: [Vector; 2], (name, cos): (&str, &Val)) ->
     let plane = Plane::of(a, b, None, false);
     let dot = Shape::Dot([0.0, 0.0]);
     let mut items = vec![mark("surface point", Kind::Point, Pen::Frame, dot)];
-    arrows(&plane, &vs, st, &mut items);
-    items.extend(angle(&plane, (a, b), (name, 0.45), cos, st));
+    let tails = arrows(&plane, &vs, st, &mut items);
+    let ends = (tail(&tails, &vs[0].name), tail(&tails, &vs[1].name));
+    items.extend(angle(&plane, (a, b), ends, (name, 0.45), cos, st));
     panel(st, which, items)
 }

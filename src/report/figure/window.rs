@@ -47,6 +47,7 @@ fn tiny(p: &Part, st: &Style, key: Field) -> String {
             let plain = crate::stages::trace::Val::Num(crate::num::Shown {
                 exact: None,
                 pretty: None,
+                beyond: None,
                 ..s.clone()
             });
             st.val_inline(&plain)
@@ -276,7 +277,14 @@ fn viewport(p: &Part, st: &Style, g: &WindowAt) -> Option<Figure> {
         let n = nums_of(v)?;
         let at = [*n.first()?, *n.get(1)?];
         items.push(mark(name, Kind::Point, Pen::Kept, Shape::Dot(at)));
-        items.push(label(name, labelled(st, name, v)));
+        // a pixel with the decimal beside its exact form, as the steps
+        // write it: (100, (100−25√2)/3) ≈ (100, 21.55)
+        let full = st.val_inline(v);
+        let text = match full.strip_prefix("≈ ") {
+            Some(rest) => format!("{name} ≈ {rest}"),
+            None => format!("{name} = {full}"),
+        };
+        items.push(label(name, text));
     }
     Some(panel(st, Panel::Viewport, items))
 }

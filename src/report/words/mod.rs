@@ -23,7 +23,7 @@ pub mod names;
 mod pixel;
 pub mod render;
 pub mod report;
-mod said;
+pub mod said;
 
 pub use drawn::DrawnWords;
 pub use figure::FigureWords;
@@ -65,6 +65,14 @@ pub fn words(m: &Msg, lang: Lang) -> String {
     of(lang).msg(m)
 }
 
+/// The words of `m` in `lang` with its numbers in the style `nums`, which
+/// may be another language's: a quiz's `--decimal` (`--lang id --decimal
+/// point`) writes the whole exam with one decimal mark
+/// ([`MsgWords::msg_in`]).
+pub fn words_in(m: &Msg, lang: Lang, nums: super::lang::NumStyle) -> String {
+    of(lang).msg_in(m, nums)
+}
+
 /// `message` cut to `MAX_MESSAGE` characters in `lang`
 /// (`msg::cut_message`).
 pub fn cut_message(message: &str, lang: Lang) -> String {
@@ -85,6 +93,7 @@ mod tests {
             Msg::SecViewing,
             Msg::SecProjection,
             Msg::SecWindowClip,
+            Msg::SecWindow,
             Msg::SecViewport,
             Msg::SecLineClip(None),
             Msg::SecLineClip(Some(2)),
@@ -128,6 +137,7 @@ mod tests {
             Msg::FOutOfRange,
             Msg::FIncidence,
             Msg::FCamMatrix,
+            Msg::FWindowEdges,
             Msg::FViewMatrix,
             Msg::FTrivial,
             Msg::FOutcode,
@@ -183,6 +193,8 @@ mod tests {
             Msg::UpParallel(1e-9),
             Msg::BehindWarn(s()),
             Msg::ExactTooLarge(64),
+            Msg::ExactTooLong(16_384),
+            Msg::StaleTempRemoved("out/.grafika-tmp-123-4567-ab".into(), 123),
             Msg::NoFigure,
             Msg::ExpectOne,
             Msg::ExpectList(3),
@@ -198,12 +210,13 @@ mod tests {
             Msg::Exact,
             Msg::Rounded(4),
             Msg::RoundedCoarse(1, 3),
-            Msg::SigCoarse(2, 3),
             Msg::WithinPct("0.5".into()),
             Msg::Parts(vec![("x".into(), Msg::Exact)]),
             Msg::WithinPixel,
             Msg::NotAnOutcode(s()),
             Msg::NotAStatus(s()),
+            Msg::NotYesOrNo(s()),
+            Msg::AmbiguousCommas,
             Msg::FollowThrough,
             Msg::NoFollowFrom(
                 "view.u".into(),
@@ -249,6 +262,7 @@ mod tests {
         for t in [Term::Ambient, Term::Diffuse, Term::Specular] {
             v.push(Msg::TermStep(t));
             v.push(Msg::NoTermInModel("lambert".into(), t));
+            v.push(Msg::TextTerm(t));
         }
         for p in [
             LightPart::OutOfRange,
@@ -453,6 +467,7 @@ mod tests {
             | SecViewing
             | SecProjection
             | SecWindowClip
+            | SecWindow
             | SecViewport
             | SecLineClip(_)
             | SecLighting
@@ -508,6 +523,7 @@ mod tests {
             | FInside
             | FSpot
             | FClamp
+            | FWindowEdges
             | FPixelCentre
             | FEdges
             | FDepth
@@ -519,6 +535,7 @@ mod tests {
             | InRange
             | NoTermInModel(..)
             | TextSetting
+            | TextTerm(_)
             | SummedInRange
             | SpecularSkipped
             | BeyondRange
@@ -550,6 +567,8 @@ mod tests {
             | UpParallel(_)
             | BehindWarn(_)
             | ExactTooLarge(_)
+            | ExactTooLong(_)
+            | StaleTempRemoved(..)
             | NoFigure
             | ExpectOne
             | ExpectList(_)
@@ -565,12 +584,13 @@ mod tests {
             | Exact
             | Rounded(_)
             | RoundedCoarse(..)
-            | SigCoarse(..)
             | WithinPct(_)
             | Parts(_)
             | WithinPixel
             | NotAnOutcode(_)
             | NotAStatus(_)
+            | NotYesOrNo(_)
+            | AmbiguousCommas
             | FollowThrough
             | NoFollowFrom(..)
             | At(..)
@@ -739,17 +759,19 @@ mod tests {
     }
 
     #[test]
-    fn a_clipping_status_is_glossed_in_indonesian_by_its_code() {
+    fn a_clipping_status_is_said_in_the_texts_word() {
         use crate::msg::Said;
         use crate::stages::clip::Status;
-        for s in [Status::Accepted, Status::Rejected, Status::Clipped] {
+        // the code is the JSON's; Indonesian text says the text's word alone
+        let words = [
+            (Status::Accepted, "diterima"),
+            (Status::Rejected, "ditolak"),
+            (Status::Clipped, "di-clip"),
+        ];
+        for (s, word) in words {
             let said = Said::Status(s.as_str().into());
-            assert_eq!(of(Lang::En).said(&said), s.as_str());
-            let id = of(Lang::Id).said(&said);
-            assert!(
-                id.starts_with(s.as_str()) && id.len() > s.as_str().len(),
-                "{id}"
-            );
+            assert_eq!(of(Lang::En).said(&said, NumStyle::POINT), s.as_str());
+            assert_eq!(of(Lang::Id).said(&said, NumStyle::COMMA), word);
         }
     }
 

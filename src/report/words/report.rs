@@ -267,6 +267,8 @@ mod tests {
             Q::FiguresInMoodle,
             Q::Component,
             Q::Point,
+            Q::Word("clipped".into()),
+            Q::Word("none".into()),
         ]);
         v
     }
@@ -298,6 +300,8 @@ mod tests {
             },
             P::ReadAs,
             P::SecondTry,
+            P::ShownBefore,
+            P::AlsoShown("window.left, window.right".into()),
             P::LikelyMistake,
             P::SourceWrong,
             P::NoMistakeTip,
@@ -311,6 +315,7 @@ mod tests {
             P::BitsShape,
             P::MatrixShape,
             P::NumberShape,
+            P::YesNoShape,
             P::ValuesShape(5),
         ]
     }
@@ -474,7 +479,8 @@ mod tests {
             | Q::Part
             | Q::FiguresInMoodle
             | Q::Component
-            | Q::Point => {}
+            | Q::Point
+            | Q::Word(_) => {}
         }
         match p {
             P::Title { .. }
@@ -493,6 +499,8 @@ mod tests {
             | P::Unreadable { .. }
             | P::ReadAs
             | P::SecondTry
+            | P::ShownBefore
+            | P::AlsoShown(_)
             | P::LikelyMistake
             | P::SourceWrong
             | P::NoMistakeTip
@@ -506,6 +514,7 @@ mod tests {
             | P::BitsShape
             | P::MatrixShape
             | P::NumberShape
+            | P::YesNoShape
             | P::ValuesShape(_) => {}
         }
         match s {
@@ -599,7 +608,12 @@ mod tests {
             id.starts_with("12 mahasiswa dinilai; toleransi 0,5 %"),
             "{id}"
         );
-        assert!(id.ends_with("follow-through tidak aktif."), "{id}");
+        assert!(
+            id.ends_with(
+                "penilaian lanjutan (benar menurut jawaban sendiri sebelumnya) tidak aktif."
+            ),
+            "{id}"
+        );
     }
 
     #[test]

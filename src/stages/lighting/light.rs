@@ -102,9 +102,20 @@ fn toward<T: Scalar>(
         if !in_range.any() {
             tr.step(|| {
                 Step::new(label(at, LightPart::OutOfRange), Msg::FOutOfRange)
+                    .val(Name::math("Pl − P"), Val::vec3(&to))
+                    .sub(Name::math("Pl − P"), Subst::difference(pos, &s.position))
                     .val(Name::math("d²"), Val::num(&d2))
+                    .sub(
+                        Name::math("d²"),
+                        Subst::new("{}² + {}² + {}²", to.iter().map(Val::num).collect()),
+                    )
                     .val(Name::math("range²"), Val::num(&r2))
+                    .sub(Name::math("range²"), Subst::new("{}²", vec![Val::num(r)]))
                     .res(Name::Contributes, Val::Bool(false))
+                    .sub(
+                        Name::Contributes,
+                        Subst::new("{} > {}", vec![Val::num(&d2), Val::num(&r2)]),
+                    )
                     .note(Msg::BeyondRange)
             });
             return None;
@@ -125,12 +136,12 @@ fn toward<T: Scalar>(
         .val(Name::math("P"), Val::vec3(&s.position))
         .val(Name::math("Pl − P"), Val::vec3(&to))
         .sub(Name::math("Pl − P"), Subst::difference(pos, &s.position))
-        .val(Name::math("d"), Val::num(&d))
+        .val(Name::math("d"), Val::length(&to, &d))
         .sub(Name::math("d"), Subst::norm(&to))
         .res(Name::math("L"), Val::vec3(&l))
         .sub(
             Name::math("L"),
-            Subst::quotient(Val::vec3(&to), Val::num(&d)),
+            Subst::quotient(Val::vec3(&to), Val::length(&to, &d)),
         )
         .note(match &light.range {
             Some(_) => Msg::WithinRange,
@@ -310,7 +321,7 @@ fn half_vector<T: Scalar>(
             if local {
                 "H = norm(norm(Cp − Vp) + Ldir) = norm(V + L),  cos = N·H"
             } else {
-                "H = norm((0,0,1) + Ldir) = norm(V + L),  cos = N·H"
+                "H = norm((0, 0, 1) + Ldir) = norm(V + L),  cos = N·H"
             },
         )
         .val(Name::math("V + L"), Val::vec3(&sum))
@@ -318,12 +329,12 @@ fn half_vector<T: Scalar>(
             Name::math("V + L"),
             Subst::new("{} + {}", vec![Val::vec3(v), Val::vec3(l)]),
         )
-        .val(Name::math("|V + L|"), Val::num(&len))
+        .val(Name::math("|V + L|"), Val::length(&sum, &len))
         .sub(Name::math("|V + L|"), Subst::norm(&sum))
         .res(Name::math("H"), Val::vec3(&h))
         .sub(
             Name::math("H"),
-            Subst::quotient(Val::vec3(&sum), Val::num(&len)),
+            Subst::quotient(Val::vec3(&sum), Val::length(&sum, &len)),
         )
         .res(Name::math("N·H"), Val::num(&nh))
         .sub(Name::math("N·H"), Subst::dot(n, &h))

@@ -471,14 +471,14 @@ pub fn unit<T: Scalar>(name: &str, field: &str, v: &V3<T>, tr: &mut impl Trace) 
             format!("{name} = v/|v|,  |v| = √(v₀² + v₁² + v₂²)"),
         )
         .val(Name::math("v"), Val::vec3(v))
-        .val(Name::math("|v|"), Val::num(&len))
+        .val(Name::math("|v|"), Val::length(v, &len))
         .sub(Name::math("|v|"), Subst::norm(v))
         .res(Name::math(name), Val::vec3(&u))
         .sub(
             Name::math(name),
             match len == T::one() {
                 true => Subst::default(),
-                false => Subst::quotient(Val::vec3(v), Val::num(&len)),
+                false => Subst::quotient(Val::vec3(v), Val::length(v, &len)),
             },
         );
         if len == T::one() {
@@ -707,7 +707,14 @@ pub fn shade_with_rules<T: Scalar, R: RuleSet<T>>(
         // min(x, 1), then max(·, 0): 1 above, 0 below (and for NaN).
         max0(&x.min_of(&T::one()))
     });
-    if listening(tr) {
+    let text = listening(tr) && is_text_model(mat, lights, global_ambient);
+    if text {
+        let on = [want_a, want_d, want_spec];
+        let results = [&ambient, &diffuse, &specular];
+        for (i, result) in results.into_iter().enumerate() {
+            tr.step(|| text_term_step(mat, i, on[i], first.as_ref(), result));
+        }
+    } else if listening(tr) {
         let worked = worked_sums(mat, lights, global_ambient, s, &v, want_spec, rules);
         record_totals(
             mat,
@@ -720,7 +727,7 @@ pub fn shade_with_rules<T: Scalar, R: RuleSet<T>>(
         );
     }
     let terms = [&ambient, &diffuse, &specular, &emissive];
-    tr.step(|| sum_step(terms, &unclamped));
+    tr.step(|| sum_step(mat.model, text, terms, &unclamped));
     tr.step(|| clamp_step(&unclamped, &color));
 
     let (r, h, cos_alpha, cos_beta, cos_nh) = match first {
@@ -840,30 +847,130 @@ fn term<T: Scalar>(on: bool, k: &T, sum: &Rgb<T>, col: &Rgb<T>) -> Rgb<T> {
     })
 }
 
-/// The step of the sum C = ambient + diffuse + specular + emissive.
-fn sum_step<T: Scalar>(terms: [&Rgb<T>; 4], unclamped: &Rgb<T>) -> Step {
-    Step::new(
-        Msg::SumOfTerms,
-        "C = ambient + diffuse + specular + emissive",
-    )
-    .val(Name::math("ambient"), rgb_val(terms[0]))
-    .val(Name::math("diffuse"), rgb_val(terms[1]))
-    .val(Name::math("specular"), rgb_val(terms[2]))
-    .val(Name::math("emissive"), rgb_val(terms[3]))
-    .res(Name::Unclamped, rgb_val(unclamped))
+/// The step of the sum: Direct3D's C = ambient + diffuse + specular +
+/// emissive, or, for the text's model (`text`), the terms it has, as the
+/// text writes them: Phong's C = Cs·(kd·max(cos α, 0) + ka) +
+/// Cwhite·ks·max(cos β, 0)ⁿ, Lambert's C = Cs·(kd·max(cos α, 0) + ka).
+fn sum_step<T: Scalar>(model: Model, text: bool, terms: [&Rgb<T>; 4], unclamped: &Rgb<T>) -> Step {
+    let (a, d, s) = model.terms();
+    let names = ["ambient", "diffuse", "specular", "emissive"];
+    let on = if text { [a, d, s, false] } else { [true; 4] };
+    let shown: Vec<usize> = (0..4).filter(|&i| on[i]).collect();
+    let sum = shown
+        .iter()
+        .map(|&i| names[i])
+        .collect::<Vec<_>>()
+        .join(" + ");
+    let texts = match model {
+        Model::Phong => "Cs·(kd·max(cos α, 0) + ka) + Cwhite·ks·max(cos β, 0)ⁿ = ",
+        Model::Lambert => "Cs·(kd·max(cos α, 0) + ka) = ",
+        Model::Ambient | Model::Diffuse | Model::Specular | Model::Blinn => "",
+    };
+    let formula = format!("C = {}{sum}", if text { texts } else { "" });
+    let step = shown
+        .iter()
+        .fold(Step::new(Msg::SumOfTerms, formula), |st, &i| {
+            st.val(Name::math(names[i]), rgb_val(terms[i]))
+        });
+    let form = vec!["{}"; shown.len()].join(" + ");
+    let args = shown.iter().map(|&i| rgb_val(terms[i])).collect();
+    let step = step.res(Name::Unclamped, rgb_val(unclamped));
+    match shown.len() {
+        1 => step,
+        _ => step.sub(Name::Unclamped, Subst::new(form, args)),
+    }
 }
 
-/// The step of the clamp to [0, 1].
+/// Whether the lighting is the text's own model: one of its five models
+/// with its single white directional light, no global ambient, and a
+/// material of the text's (white specular, no Direct3D ambient colour, no
+/// emission). Its steps are then written in the text's notation.
+pub fn is_text_model<T: Scalar>(mat: &Material<T>, lights: &[Light<T>], ga: &Rgb<T>) -> bool {
+    let text_model = match mat.model {
+        Model::Ambient | Model::Diffuse | Model::Specular | Model::Lambert | Model::Phong => true,
+        Model::Blinn => false,
+    };
+    text_model
+        && is_text_setting(lights, ga)
+        && mat.ambient_color.is_none()
+        && mat.emissive.iter().all(|x| x.is_zero_value())
+        && mat.specular.iter().all(|x| *x == T::one())
+}
+
+/// One term of the text's model (`i`: ambient, diffuse, specular) as the
+/// text writes it: ka·Cs, kd·max(cos α, 0)·Cs, ks·max(cos β, 0)ⁿ·Cwhite
+/// with its light's cos α and highlight (`lit`); a term the model does
+/// not have is 0, and a skipped specular term too (`on` false).
+fn text_term_step<T: Scalar>(
+    mat: &Material<T>,
+    i: usize,
+    on: bool,
+    lit: Option<&LightTerm<T>>,
+    result: &Rgb<T>,
+) -> Step {
+    let (term, _, k, _, _, name) = TERMS[i];
+    let step = Step::new(Msg::TermStep(term), "");
+    if !on {
+        let note = match mat.model.terms() {
+            (_, _, true) if i == 2 => Msg::SpecularSkipped,
+            _ => Msg::NoTermInModel(mat.model.name().to_string(), term),
+        };
+        return step.res(Name::math(name), rgb_val(result)).note(note);
+    }
+    let zero = T::zero();
+    let (formula, coefficient, factor, colour) = match term {
+        Term::Ambient => ("ambient = ka·Cs", &mat.ka, None, ("Cs", &mat.color)),
+        Term::Diffuse => (
+            "diffuse = kd·max(cos α, 0)·Cs",
+            &mat.kd,
+            Some((
+                "max(cos α, 0)",
+                lit.map_or(zero.clone(), |t| max0(&t.cos_alpha)),
+            )),
+            ("Cs", &mat.color),
+        ),
+        Term::Specular => (
+            "specular = ks·max(cos β, 0)ⁿ·Cwhite",
+            &mat.ks,
+            Some(("max(cos β, 0)ⁿ", lit.map_or(zero, |t| t.highlight.clone()))),
+            ("Cwhite", &mat.specular),
+        ),
+    };
+    let mut args = vec![Val::num(coefficient)];
+    let mut step = Step {
+        formula: formula.into(),
+        ..step
+    }
+    .val(Name::math(k), Val::num(coefficient));
+    if let Some((f, x)) = factor {
+        step = step.val(Name::math(f), Val::num(&x));
+        args.push(Val::num(&x));
+    }
+    args.push(rgb_val(colour.1));
+    let form = vec!["{}"; args.len()].join("·");
+    step.val(Name::math(colour.0), rgb_val(colour.1))
+        .res(Name::math(name), rgb_val(result))
+        .sub(Name::math(name), Subst::new(form, args))
+        .note(Msg::TextTerm(term))
+}
+
+/// The step of the clamp to [0, 1], each channel worked where one is
+/// clamped.
 fn clamp_step<T: Scalar>(unclamped: &Rgb<T>, color: &Rgb<T>) -> Step {
     let clipped = unclamped.iter().any(|x| *x > T::one() || *x < T::zero());
-    Step::new(Msg::Clamp, Msg::FClamp)
+    let step = Step::new(Msg::Clamp, Msg::FClamp)
         .val(Name::math("C"), rgb_val(unclamped))
-        .res(Name::Color, rgb_val(color))
-        .note(if clipped {
-            Msg::Saturates
-        } else {
-            Msg::InRange
-        })
+        .res(Name::Color, rgb_val(color));
+    if clipped {
+        let form = "(min(max({}, 0), 1), min(max({}, 0), 1), min(max({}, 0), 1))";
+        step.sub(
+            Name::Color,
+            Subst::new(form, unclamped.iter().map(Val::num).collect()),
+        )
+        .note(Msg::Saturates)
+    } else {
+        step.note(Msg::InRange)
+    }
 }
 
 /// V: the given unit view vector, or norm(Cp − Vp) with a local viewer.
@@ -880,12 +987,12 @@ fn view_vector<T: Scalar>(s: &Surface<T>, tr: &mut impl Trace) -> V3<T> {
             .val(Name::math("Vp"), Val::vec3(&s.position))
             .val(Name::math("Cp − Vp"), Val::vec3(&d))
             .sub(Name::math("Cp − Vp"), Subst::difference(cp, &s.position))
-            .val(Name::math("|Cp − Vp|"), Val::num(&len))
+            .val(Name::math("|Cp − Vp|"), Val::length(&d, &len))
             .sub(Name::math("|Cp − Vp|"), Subst::norm(&d))
             .res(Name::math("V"), Val::vec3(&v))
             .sub(
                 Name::math("V"),
-                Subst::quotient(Val::vec3(&d), Val::num(&len)),
+                Subst::quotient(Val::vec3(&d), Val::length(&d, &len)),
             )
     });
     v

@@ -3,21 +3,23 @@
 //! answers lead to. A number is, in this order:
 //!
 //! 1. exact: equal to the value (any equivalent form, decided exactly);
-//! 2. within the tolerance ([`tolerance::for_key`]): correct, or too coarse
-//!    when written as a decimal with fewer significant figures than asked;
+//! 2. within the tolerance ([`tolerance::for_key`]): correct, whatever
+//!    figures it is written with (1.0 for 0.99926, 0.074 % off, is right);
 //! 3. the value rounded to the digits written (a whole number is rounded to
-//!    the units): correct, or too coarse. Figures are counted from the
-//!    value's own leading digit, so a rounding past it keeps none (1 for
-//!    0.7071 is wrong; 1 for 0.96 and 0.1 for 0.096 keep one figure);
+//!    the units): correct, or too coarse with fewer significant figures
+//!    than asked. Figures are counted from the value's own leading digit,
+//!    so a rounding past it keeps none (1 for 0.7071 is wrong; 1 for 0.96
+//!    and 0.1 for 0.096 keep one figure);
 //! 4. wrong.
 //!
-//! An expression that is not exactly the value (`7/5` for √2) can only be
-//! saved by the tolerance. A pixel position within its tolerance (half a
-//! pixel) is never too coarse: it names the pixel. A list takes its worst
-//! component's verdict; a zero component takes the tolerance of its
-//! list's largest magnitude. Before step 2, the caller sets the answer
-//! beside the catalog's mistaken values ([`matches_closely`]): an answer
-//! equal to one is wrong, whatever it rounds.
+//! So "too coarse" is a rounding of the value that keeps too few of its
+//! figures to come within the tolerance: right as far as it goes, worth
+//! half. An expression that is not exactly the value (`7/5` for √2) can
+//! only be saved by the tolerance. A list takes its worst component's
+//! verdict; a zero component takes the tolerance of its list's largest
+//! magnitude. Before step 2, the caller sets the answer beside the
+//! catalog's mistaken values ([`matches_closely`]): an answer equal to one
+//! is wrong, whatever it rounds.
 
 use super::{tolerance, Settings, Verdict};
 use crate::input::answer::{Number, Read};
@@ -167,28 +169,18 @@ fn number(n: &Number, e: &Shown, sc: f64, ctx: &Ctx) -> Judged {
             return Judged::new(Verdict::Correct, "correct.exact", Msg::Exact);
         }
     }
-    let pixel = tolerance::is_pixel(ctx.key);
     let figures = n.last_digit.map(|last| leading_digit(ev) - last + 1);
-    let coarse = |k: i32| !pixel && ev != 0.0 && k < s.sig_figs as i32;
-    // 2. Within the tolerance (an expression that is not the value: only this).
+    let coarse = |k: i32| ev != 0.0 && k < s.sig_figs as i32;
+    // 2. Within the tolerance (an expression that is not the value: only
+    // this), however many figures are written.
     let off = (g - ev).abs();
     if off <= tolerance::for_key(ctx.key, ev, sc, s.tolerance) {
-        let relative = tolerance::absolute(ev, sc, s.tolerance);
-        return match figures {
-            Some(k) if coarse(k) => Judged::new(
-                Verdict::TooCoarse,
-                "too_coarse",
-                Msg::SigCoarse(k.max(1) as u32, s.sig_figs),
-            ),
-            _ if off > relative => {
-                Judged::new(Verdict::Correct, "correct.tolerance", Msg::WithinPixel)
-            }
-            _ => Judged::new(
-                Verdict::Correct,
-                "correct.tolerance",
-                Msg::WithinPct(fmt_pct(s.tolerance)),
-            ),
+        let note = if off > tolerance::absolute(ev, sc, s.tolerance) {
+            Msg::WithinPixel
+        } else {
+            Msg::WithinPct(fmt_pct(s.tolerance))
         };
+        return Judged::new(Verdict::Correct, "correct.tolerance", note);
     }
     let (Some(last), Some(k)) = (n.last_digit, figures) else {
         return Judged::wrong(expected_note(&Val::Num(e.clone())));
@@ -337,6 +329,7 @@ mod tests {
             value: v,
             exact: exact.map(str::to_string),
             pretty: None,
+            beyond: None,
         })
     }
     fn j_at(text: &str, e: &Val, key: &str) -> Judged {
@@ -379,6 +372,70 @@ mod tests {
         assert_eq!(j_at(t, &v, "top").code, "correct.tolerance");
     }
 
+    /// A value as grafika shows it: its double and its exact form.
+    fn exact_value(form: &str) -> Val {
+        let x = exact(form).expect("an exact form");
+        Val::Num(Shown {
+            value: x.to_f64(),
+            exact: x.exact_ascii(),
+            pretty: None,
+            beyond: None,
+        })
+    }
+
+    #[test]
+    fn an_unrationalized_form_is_exact() {
+        // −17/(17√17) = −1/√17 = −√17/17; −36652/(187√2618): 36652 =
+        // 14·2618, so it is −14·2618/(187√2618) = −14√2618/187
+        for (given, value) in [
+            ("-17/(17*sqrt(17))", "-sqrt(17)/17"),
+            ("−17/(17√17)", "-sqrt(17)/17"),
+            ("-36652/(187*sqrt(2618))", "-14*sqrt(2618)/187"),
+            ("-4/(13*sqrt(17))", "-4*sqrt(17)/221"),
+        ] {
+            let got = j_at(given, &exact_value(value), "view.u.2");
+            assert_eq!(got.code, "correct.exact", "{given}: {got:?}");
+        }
+    }
+
+    proptest::proptest! {
+        /// a·√m/b written every way students write it: rationalized or
+        /// not, a product of roots for a composite m, a square factor
+        /// under the root, a common factor in numerator and denominator,
+        /// implicit products, `√` and `−`: each is exact, never "within
+        /// the tolerance".
+        #[test]
+        fn every_form_of_a_surd_is_exact(
+            a in 1i64..40,
+            negative in proptest::bool::ANY,
+            b in 1i64..40,
+            k in 2i64..6,
+            pq in proptest::sample::select(vec![(1i64, 2i64), (1, 3), (1, 5), (2, 3), (2, 5), (3, 5), (2, 7), (7, 17), (2, 1309), (11, 238)]),
+        ) {
+            let (p, q) = pq;
+            let m = p * q;
+            let sign = if negative { "-" } else { "" };
+            let value = exact_value(&format!("{sign}{a}*sqrt({m})/{b}"));
+            let forms = [
+                format!("{sign}{a}*sqrt({m})/{b}"),
+                format!("{sign}{}/({b}*sqrt({m}))", a * m),
+                format!("{sign}{a}/({b}/sqrt({m}))"),
+                format!("{sign}{}*sqrt({m})/({})", a * k, b * k),
+                format!("{sign}{a}*sqrt({})/({})", m * k * k, b * k),
+                format!("{sign}{a}*sqrt({p})*sqrt({q})/{b}"),
+                format!("{sign}{a}/{b}*sqrt({p})*sqrt({q})"),
+                format!("{}({a}/{b})sqrt({m})", if negative { "−" } else { "" }),
+                format!("{}{a}√{m}/{b}", if negative { "−" } else { "" }),
+                format!("{sign}{}/({b}*sqrt({p})*sqrt({q}))", a * m),
+                format!("{sign}sqrt({})/{b}", a * a * m),
+            ];
+            for form in forms {
+                let got = j_at(&form, &value, "view.u.0");
+                proptest::prop_assert_eq!(got.code, "correct.exact", "{} for {:?}: {:?}", form, value, got);
+            }
+        }
+    }
+
     #[test]
     fn figures_are_counted_from_the_values_leading_digit() {
         // 0.7071 to the units is 1, which keeps no figure of it: wrong
@@ -397,6 +454,30 @@ mod tests {
     }
 
     #[test]
+    fn within_the_tolerance_is_correct_whatever_the_figures() {
+        // 26/√677 = 0.999261…: 1.0 is 0.074 % off, inside 0.1 %
+        let cos = 26.0 / 677f64.sqrt();
+        assert_eq!(j("1.0", cos).code, "correct.tolerance");
+        assert_eq!(j("1", cos).code, "correct.tolerance");
+        assert_eq!(j("1,0", cos).code, "correct.tolerance");
+        assert_eq!(j("1.00", cos).code, "correct.tolerance");
+        // 0.99 is no rounding of it (to two decimals it is 1.00), and
+        // 0.93 % off: wrong
+        assert_eq!(j("0.99", cos).verdict, Verdict::Wrong);
+        // (0.9, −0.3) for (3/√10, −1/√10) = (0.9487, −0.3162): each a
+        // rounding to one figure, 5 % off: too coarse, not wrong
+        let r10 = 10f64.sqrt();
+        let v = Val::List(vec![
+            shown(3.0 / r10, Some("3*sqrt(10)/10")),
+            shown(-1.0 / r10, Some("-sqrt(10)/10")),
+        ]);
+        for given in ["(0.9, −0.3)", "0,9; −0,3", "[0.9, -0.3]"] {
+            let got = j_at(given, &v, "view.u");
+            assert_eq!(got.verdict, Verdict::TooCoarse, "{given}: {got:?}");
+        }
+    }
+
+    #[test]
     fn a_pixel_within_half_a_pixel_names_the_pixel() {
         let px = Val::List(vec![shown(8.2, None), shown(78.45, None)]);
         let got = j_at("8, 78", &px, "viewport.pixels.A");
@@ -409,10 +490,10 @@ mod tests {
 
     proptest::proptest! {
         /// A value rounded to 2 to 6 significant figures (the default asks
-        /// for 2) is correct; rounded to one it is at best too coarse,
-        /// unless that one figure is the value itself or within the
-        /// tolerance of it; moved by two units of its last digit beyond the
-        /// tolerance, it is wrong.
+        /// for 2) is correct; rounded to one, it is correct exactly when
+        /// that rounding is within the tolerance (0.1 %) of the value, and
+        /// too coarse otherwise; moved by two units of its last digit
+        /// beyond the tolerance, it is wrong.
         #[test]
         fn a_rounding_is_judged_by_its_figures(
             m in 1.0f64..10.0,
@@ -427,10 +508,14 @@ mod tests {
             // 1.0e1) keeps one figure fewer of the value's own
             let written: i32 = text.split_once('e').unwrap().1.parse().unwrap();
             let figures = k as i32 - i32::from(written > leading_digit(x));
-            if figures >= 2 {
-                proptest::prop_assert_eq!(got.verdict, Verdict::Correct, "{} for {}", text, x);
-            } else if got.verdict == Verdict::Correct {
-                proptest::prop_assert!(got.code != "correct.rounded", "{} for {}: {:?}", text, x, got);
+            let within = (text.parse::<f64>().unwrap() - x).abs() <= 1e-3 * x.abs();
+            if within {
+                proptest::prop_assert!(
+                    matches!(got.code, "correct.tolerance" | "correct.exact"),
+                    "{} for {}: {:?}", text, x, got
+                );
+            } else if figures >= 2 {
+                proptest::prop_assert_eq!(got.code, "correct.rounded", "{} for {}", text, x);
             } else {
                 proptest::prop_assert_eq!(got.verdict, Verdict::TooCoarse, "{} for {}", text, x);
             }

@@ -11,8 +11,9 @@
 //! 2. exactly grafika's value: correct;
 //! 3. a catalog mistake's value, exactly or (a decimal) within the
 //!    tolerance: wrong, and that mistake named — never "rounded";
-//! 4. within the tolerance, or rounded to the digits written: correct or
-//!    too coarse;
+//! 4. within the tolerance: correct (whatever figures are written); else
+//!    rounded to the digits written: correct, or too coarse with fewer
+//!    figures than asked;
 //! 5. otherwise wrong, with the mistakes whose values it rounds
 //!    ([`Marker::fitting`] keeps those the rest of the sheet allows).
 

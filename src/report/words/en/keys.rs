@@ -43,6 +43,10 @@ impl KeyWords for En {
                 )
             }
             Value::Field(Field::Segment) => "clipped segment".to_string(),
+            // the steps' notation, not the keys' spelling
+            Value::Field(Field::Shading(Shading::CosAlpha)) => "cos α".to_string(),
+            Value::Field(Field::Shading(Shading::CosBeta)) => "cos β".to_string(),
+            Value::Field(Field::Shading(Shading::NDotH)) => "N·H".to_string(),
             Value::Field(f) => self.node(&Node::Field(*f)),
             Value::Plane(p) => self.plane(*p).to_string(),
             Value::Cut(p, c) => {
@@ -55,9 +59,41 @@ impl KeyWords for En {
                 format!("{what} ({})", self.plane(*p))
             }
             Value::Light(i) => return format!("light {i}"),
-            Value::Factor(i, f) => return format!("{} (light {i})", self.node(&Node::Factor(*f))),
+            Value::Factor(i, f) => {
+                let said = match f {
+                    Factor::InRange => "in range",
+                    Factor::Distance => "d",
+                    Factor::Attenuation => "Att",
+                    Factor::Spot => "Spot",
+                };
+                return format!("{said} (light {i})");
+            }
         };
         in_segment("segment", k, name)
+    }
+
+    fn blank_label(&self, k: &Key) -> String {
+        let name = match &k.value {
+            Value::Field(Field::Code0) => "outcode of P0",
+            Value::Field(Field::Code1) => "outcode of P1",
+            Value::Field(Field::Shading(s)) => match s {
+                Shading::CosAlpha => "cos α",
+                Shading::CosBeta => "cos β",
+                Shading::NDotH => "N·H",
+                Shading::L => "L",
+                Shading::N => "N",
+                Shading::R => "R",
+                Shading::H => "H",
+                Shading::Ambient => "ambient term",
+                Shading::Diffuse => "diffuse term",
+                Shading::Specular => "specular term",
+                Shading::Emissive => "emissive term",
+                Shading::Unclamped => "color before clamping",
+                Shading::Color => "color",
+            },
+            _ => return self.answer_name(k),
+        };
+        in_segment("segment", k, name.to_string())
     }
 
     fn answer_words(&self, k: &Key) -> String {
@@ -155,12 +191,33 @@ mod tests {
         assert_eq!(en("project.points.A"), "A''");
         assert_eq!(en("viewport.pixels.A"), "A pixel");
         assert_eq!(en("window.far_top"), "top (far plane)");
-        assert_eq!(en("shade.cos_alpha"), "cos_alpha");
+        assert_eq!(en("shade.cos_alpha"), "cos α");
+        assert_eq!(en("shade.N_dot_H"), "N·H");
+        assert_eq!(en("shade.lights[1].in_range"), "in range (light 1)");
         assert_eq!(
             en("clip[2].intersections.top.point"),
             "segment 2: P(t) (top)"
         );
-        assert_eq!(en("shade.lights[1].attenuation"), "attenuation (light 1)");
+        assert_eq!(en("shade.lights[1].attenuation"), "Att (light 1)");
+    }
+
+    /// A quiz labels its blanks with no JSON key: the steps' names, and
+    /// words where the name is notation (code0, cos_alpha).
+    #[test]
+    fn a_quiz_labels_its_blanks_in_words_not_keys() {
+        let en = |s| En.blank_label(&key(s));
+        assert_eq!(en("view.n"), "n");
+        assert_eq!(en("view.points.A"), "A'");
+        assert_eq!(en("project.points.A"), "A''");
+        assert_eq!(en("viewport.pixels.A"), "A pixel");
+        assert_eq!(en("window.top"), "top");
+        assert_eq!(en("clip.code0"), "outcode of P0");
+        assert_eq!(en("clip[2].code1"), "segment 2: outcode of P1");
+        assert_eq!(en("clip.segment"), "clipped segment");
+        assert_eq!(en("shade.cos_alpha"), "cos α");
+        assert_eq!(en("shade.N_dot_H"), "N·H");
+        assert_eq!(en("shade.specular"), "specular term");
+        assert_eq!(en("shade.color"), "color");
     }
 
     #[test]

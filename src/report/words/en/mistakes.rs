@@ -16,6 +16,9 @@ pub(super) fn mistake(c: Code) -> &'static str {
         Code::UNotNormalized => {
             "u = Vup × n not divided by |Vup × n| (v = n × u then has the same length)"
         }
+        Code::UvSwapped => {
+            "u and v swapped: the camera's x axis (right) written as its y axis (up) and the other way round (and the view matrix's rows and the eye coordinates that follow)"
+        }
         Code::FovyNotHalved => "tan(fovy) used instead of tan(fovy/2) for the window",
         Code::DegreesAsRadians => "the angle in degrees given to tan as if it were radians",
         Code::HeightIsHalfExtent => {
@@ -28,11 +31,17 @@ pub(super) fn mistake(c: Code) -> &'static str {
         Code::MatrixTransposed => {
             "the view matrix written transposed (the row-vector convention P·M)"
         }
+        Code::McamAsView => {
+            "Mcam, the camera-to-world matrix (columns u, v, n, Pe), handed in as the view matrix V = Mcam⁻¹ (rows u, v, n and −u·Pe, −v·Pe, −n·Pe)"
+        }
         Code::OutcodeReversed => {
             "outcode bits written in the wrong order (bit 1 leftmost instead of rightmost)"
         }
         Code::EndpointKept => {
             "an endpoint outside the box kept instead of the intersection that replaces it"
+        }
+        Code::TFromP1 => {
+            "t measured from P1 instead of P0 (1 − t), and the intersection, its code and the clipped segment that follow from P(t) = P0 + t·(P1 − P0)"
         }
         Code::ReflectPlusL => "R computed as 2N(L·N) + L instead of 2N(L·N) − L",
         Code::SpecularNoMax => {
@@ -52,6 +61,9 @@ pub(super) fn mistake(c: Code) -> &'static str {
         }
         Code::NormalNotNormalized => {
             "N not divided by |N|: cos α = L·N with the normal as given (and R, cos β and the terms that follow)"
+        }
+        Code::CosInRadians => {
+            "the cosine of an angle in degrees taken in radian mode (cos 45 read as the cosine of 45 rad): the spot light's cos(θ/2) and cos(φ/2), and the spot factor and the terms that follow"
         }
         Code::CopiedMisprint => {
             "the value the source printed, which its errata say is wrong (see the erratum)"

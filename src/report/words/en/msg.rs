@@ -14,7 +14,7 @@ use crate::tutor::key::Plane;
 
 impl MsgWords for En {
     /// A word table: long on purpose.
-    fn msg(&self, m: &Msg) -> String {
+    fn msg_in(&self, m: &Msg, nums: NumStyle) -> String {
         match m {
             Msg::Math(s) => s.clone(),
             Msg::Written(en, _) => en.clone(),
@@ -23,15 +23,16 @@ impl MsgWords for En {
             Msg::Asked(parts) => msg::asked(self, parts),
             Msg::DrawnTitle(t) => self.drawn_title(*t).into(),
             Msg::Pixel(p) => self.pixel(p),
-            Msg::Statement(s) => self.statement(s, self.nums()),
+            Msg::Statement(s) => self.statement(s, nums),
             Msg::Figure(f) => self.figure(f),
             Msg::At(place, m) => msg::at(self, place, m),
             Msg::Err(e) => self.error(e),
-            Msg::Said(s) => self.said(s),
+            Msg::Said(s) => self.said(s, nums),
             Msg::SecModeling => "Stage 1: modeling transformation".into(),
             Msg::SecViewing => "Stage 2: viewing transformation (world → eye coordinates)".into(),
             Msg::SecProjection => "Stage 3: projection onto the near plane".into(),
             Msg::SecWindowClip => "Stage 4: window and clipping".into(),
+            Msg::SecWindow => "Stage 4: viewing window".into(),
             Msg::SecViewport => "Viewport mapping (window → pixels)".into(),
             Msg::SecLineClip(None) => "Line clipping".into(),
             Msg::SecLineClip(Some(i)) => format!("Line clipping, segment {i}"),
@@ -88,7 +89,7 @@ impl MsgWords for En {
             Msg::FCamMatrix => "Mcam = T(Pe) · [u v n]   (columns u, v, n, Pe)".into(),
             Msg::FViewMatrix => "V = R · T(−Pe),  R = [uᵀ; vᵀ; nᵀ],  last column (−u·Pe, −v·Pe, −n·Pe)".into(),
             Msg::FTrivial => "both codes 000000 → accept;  code0 AND code1 ≠ 000000 → reject;  otherwise clip".into(),
-            Msg::FOutcode => "bit 1 x<xmin (kiri) · bit 2 x>xmax (kanan) · bit 3 y<ymin (bawah) · bit 4 y>ymax (atas) · bit 5 z<zmin (depan) · bit 6 z>zmax (belakang); the code is written bit 6 … bit 1 (bit 1 rightmost)".into(),
+            Msg::FOutcode => "bit 1 x<xmin (left) · bit 2 x>xmax (right) · bit 3 y<ymin (bottom) · bit 4 y>ymax (top) · bit 5 z<zmin (front) · bit 6 z>zmax (back); the code is written bit 6 … bit 1 (bit 1 rightmost)".into(),
             Msg::FSegment => "from the kept point with the smallest t to the one with the largest t (inside ends count as t = 0 and t = 1)".into(),
             Msg::FMethods => "outcode clipping against Liang–Barsky".into(),
             Msg::FProjPlane => "z = d,  d = −near (the camera looks along −z in eye coordinates)".into(),
@@ -97,7 +98,8 @@ impl MsgWords for En {
             Msg::FDepth => "z = λ₀z₀ + λ₁z₁ + λ₂z₂ (z/w is linear on the screen); smaller is nearer".into(),
             Msg::FBarycentric => "λₖ = Eₖ(centre)/area on the screen;  perspective-correct μₖ = (λₖ/wₖ) / Σ λₘ/wₘ".into(),
             Msg::FFlat => "colour = lighting::shade(face normal N, face centre)".into(),
-            Msg::FLiangBarsky => "t0 = max over entering planes of q/p,  t1 = min over leaving planes of q/p,  visible if t0 ≤ t1".into(),
+            Msg::FWindowEdges => "right = aspect·top,  bottom = −top,  left = −right,  height = 2·top,  width = 2·right".into(),
+            Msg::FLiangBarsky => "p = −Δx, Δx, −Δy, Δy, −Δz, Δz and q = x0 − xmin, xmax − x0, y0 − ymin, ymax − y0, z0 − zmin, zmax − z0 at the planes x = xmin … z = zmax;  t0 = max(0, q/p where p < 0) (planes entered),  t1 = min(1, q/p where p > 0) (planes left);  p = 0 with q < 0: outside;  visible if t0 ≤ t1, from P0 + t0·Δ to P0 + t1·Δ".into(),
             Msg::FInside => "left ≤ xp ≤ right,  bottom ≤ yp ≤ top,  and −far ≤ z' ≤ −near".into(),
             Msg::FSpot => "ρ = (−L)·axis;  Spot = 1 if ρ ≥ cos(θ/2), 0 if ρ ≤ cos(φ/2), else ((ρ − cos(φ/2))/(cos(θ/2) − cos(φ/2)))^falloff".into(),
             Msg::FClamp => "color = min(max(C, 0), 1)".into(),
@@ -107,6 +109,9 @@ impl MsgWords for En {
             Msg::InRange => "every channel is already in [0, 1]".into(),
             Msg::NoTermInModel(model, t) => format!("the {model} model has no {} term", self.term(*t)),
             Msg::TextSetting => "the text's single white light and no global ambient: the sum is 1·(the text's factor)".into(),
+            Msg::TextTerm(Term::Ambient) => "the text's Ia = Is·ka, with the light's intensity Is = 1 (its one white light), on the surface colour Cs".into(),
+            Msg::TextTerm(Term::Diffuse) => "the text's Id = Is·kd·MAX(cos α, 0), with Is = 1, on the surface colour Cs".into(),
+            Msg::TextTerm(Term::Specular) => "the text's Isp = Is·ksp·MAX(cosⁿ β, 0) (its ksp is ks), with Is = 1, in the specular colour Cwhite".into(),
             Msg::SummedInRange => "summed over the lights in range".into(),
             Msg::SpecularSkipped => "the specular term is skipped (ks = 0 or --specular off)".into(),
             Msg::BeyondRange => "beyond its range a light adds nothing, not even ambient".into(),
@@ -136,7 +141,7 @@ impl MsgWords for En {
             Msg::Misses => "no intersection is inside the box: the segment misses it (rejected)".into(),
             Msg::DefaultView => "not given: the text's viewVector (0, 0, 1), a viewer far along +z".into(),
             Msg::MaterialD3d => "Direct3D material: its colors carry the coefficients, so ka = kd = ks = 1".into(),
-            Msg::MaterialText => "the text's constants unless given: ka = 0.4, kd = 0.6, ks = 0.7, n = 4, white specular".into(),
+            Msg::MaterialText => format!("the text's constants unless given: {}", nums.values("ka = 0.4, kd = 0.6, ks = 0.7, n = 4, white specular")),
             Msg::NoTriangle => "no triangle covers the pixel centre: it keeps the background colour".into(),
             Msg::Nearest => "the nearest of all triangles covering this pixel".into(),
             Msg::Agree(true) => "both methods give the same segment".into(),
@@ -171,7 +176,7 @@ impl MsgWords for En {
             Msg::ExpectList(n) => format!("expected a list of {n} values"),
             Msg::CountMismatch(n, k) => format!("expected {n} values, got {k}"),
             Msg::ExpectedNone => "expected none (nothing is left)".into(),
-            Msg::ExpectedBool(b) => format!("expected {b}"),
+            Msg::ExpectedBool(b) => format!("expected {}", if *b { "yes" } else { "no" }),
             Msg::SeveralAnswers => "this key holds several answers: give them one by one".into(),
             Msg::EmptyAnswer => "empty answer".into(),
             Msg::NoAnswer => "no answer given".into(),
@@ -179,6 +184,8 @@ impl MsgWords for En {
             Msg::WithinPixel => "within half a pixel".into(),
             Msg::NotAnOutcode(t) => format!("`{t}` is not an outcode: write six binary digits, bit 1 rightmost (001000)"),
             Msg::NotAStatus(t) => format!("`{t}` is not a status: write accepted, rejected or clipped"),
+            Msg::NotYesOrNo(t) => format!("`{t}` is not yes or no: write yes or no (ya or tidak)"),
+            Msg::AmbiguousCommas => "commas here are both decimal marks and separators, so the numbers cannot be told apart: write 0,7071; 0; 0,7071 (decimal commas, parts separated by ;) or 0.7071, 0, 0.7071".into(),
             Msg::FollowThrough => "right given the earlier answers (follow-through)".into(),
             Msg::NoFollowFrom(a, why, b) => {
                 let name = |k: &str| crate::report::words::keys::name_of(self, k);
@@ -201,10 +208,9 @@ impl MsgWords for En {
                 "rounded to {s} significant figure{}, at least {need} required",
                 if *s == 1 { "" } else { "s" }
             ),
-            Msg::SigCoarse(s, need) => format!("{s} significant figure(s), at least {need} required"),
             Msg::UpParallel(a) => format!(
                 "the up vector is nearly parallel to the view direction (angle {} rad): u and v are very sensitive to the inputs",
-                msg::exponent(self.nums(), *a)
+                msg::exponent(nums, *a)
             ),
             Msg::BehindWarn(n) => format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen"),
             Msg::NoFigure => "no figure was written: no part asked has a figure of its own (the pixels of `viewport` are drawn on the window's figure: ask `window` with it)".into(),
@@ -214,11 +220,13 @@ impl MsgWords for En {
                 if *found == 1 { "" } else { "s" },
                 if *all { " (every problem of its kind was tried)" } else { " (found in 200,000 tries)" }
             ),
+            Msg::ExactTooLong(bits) => format!("exact values whose numerator or denominator would pass {bits} bits (a high power, such as a large shininess) were computed in f64 and are marked ≈, as is what follows from them"),
+            Msg::StaleTempRemoved(p, pid) => format!("removed {p}, a temporary file left by grafika process {pid}, which is no longer running (it was stopped before it could clean up)"),
             Msg::ErrHtmlCommand => "writes the worked solution of basis, view, project, window, clip, shade, solve and render; for exams use generate --format html".into(),
             Msg::Parts(parts) => msg::parts(self, parts),
-            Msg::Expected(v) => format!("expected {}", self.nums().values(v)),
+            Msg::Expected(v) => format!("expected {}", nums.values(v)),
             Msg::Unreadable(why) => format!("cannot be read: {}", self.number(why)),
-            Msg::WithinPct(p) => format!("within {}%", self.nums().number(p)),
+            Msg::WithinPct(p) => format!("within {}%", nums.number(p)),
         }
     }
 

@@ -211,7 +211,8 @@ impl ReportWords for En {
             Q::KnownMistake => "Known mistake: ".into(),
             Q::OrMistake => "; or: ".into(),
             Q::Part => "Part".into(),
-            Q::FiguresInMoodle => "The figures of this problem are in the Moodle XML of the same exam (grafika generate … --format moodle): GIFT cannot carry files.".into(),
+            Q::FiguresInMoodle => "GIFT carries no files: the figures of the worked solutions are in the Moodle XML of the same exam only (--format moodle).".into(),
+            Q::Word(code) => code.clone(),
             Q::Component => "component".into(),
             Q::Point => "point".into(),
         }
@@ -311,6 +312,8 @@ impl ReportWords for En {
             }
             P::ReadAs => "read as".into(),
             P::SecondTry => "(a second try: shown, and counted apart; the first verdict stands for the score)".into(),
+            P::ShownBefore => "(this value was shown already: the answer is judged and counted apart; the value counts as revealed)".into(),
+            P::AlsoShown(keys) => format!("(this also shows {keys}: they count as revealed)"),
             P::LikelyMistake => "Likely mistake".into(),
             P::SourceWrong => "The source printed this, and it is wrong".into(),
             P::NoMistakeTip => "No known mistake explains this answer. Type back to try this value again (hint and show help there).".into(),
@@ -324,6 +327,7 @@ impl ReportWords for En {
             P::BitsShape => "6 bits, bit 1 rightmost".into(),
             P::MatrixShape => "4 rows (a, b, c, d); (…); …".into(),
             P::NumberShape => "a number".into(),
+            P::YesNoShape => "yes | no".into(),
             P::ValuesShape(n) => format!("({n} values)"),
         }
     }

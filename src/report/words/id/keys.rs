@@ -28,7 +28,14 @@ impl KeyWords for Id {
                 Field::Matrix => "matriks pandang V",
                 Field::Points => "titik",
                 Field::Pixels => "piksel",
-                Field::Edge(..) | Field::Code0 | Field::Code1 | Field::Status => {
+                // the text's tinggi h and lebar w; the edges are notation,
+                // as the text's (l, b) – (r, t)
+                Field::Edge(Edge::Height, _) => "tinggi",
+                Field::Edge(Edge::Width, _) => "lebar",
+                Field::Edge(e, true) => {
+                    return format!("{} (far plane)", Node::Field(Field::Edge(*e, false)))
+                }
+                Field::Edge(_, false) | Field::Code0 | Field::Code1 | Field::Status => {
                     return n.to_string()
                 }
                 Field::Segment => "segmen garis hasil clipping",
@@ -107,6 +114,41 @@ impl KeyWords for Id {
         in_segment("segmen", k, name)
     }
 
+    fn blank_label(&self, k: &Key) -> String {
+        let name = match &k.value {
+            Value::Field(Field::Code0) => "region code P0".to_string(),
+            Value::Field(Field::Code1) => "region code P1".to_string(),
+            Value::Field(Field::Edge(e, far)) => {
+                let what = match e {
+                    Edge::Top => "batas atas (top)",
+                    Edge::Bottom => "batas bawah (bottom)",
+                    Edge::Left => "batas kiri (left)",
+                    Edge::Right => "batas kanan (right)",
+                    Edge::Height => "tinggi",
+                    Edge::Width => "lebar",
+                };
+                let far = if *far { " pada far plane" } else { "" };
+                format!("{what}{far}")
+            }
+            Value::Field(Field::Shading(s)) => match s {
+                Shading::Ambient | Shading::Diffuse | Shading::Specular | Shading::Emissive => {
+                    format!("komponen {}", Node::Field(Field::Shading(*s)))
+                }
+                Shading::Unclamped => "warna sebelum dibatasi".to_string(),
+                Shading::L
+                | Shading::N
+                | Shading::R
+                | Shading::H
+                | Shading::CosAlpha
+                | Shading::CosBeta
+                | Shading::NDotH
+                | Shading::Color => return self.answer_name(k),
+            },
+            _ => return self.answer_name(k),
+        };
+        in_segment("segmen", k, name)
+    }
+
     fn answer_words(&self, k: &Key) -> String {
         let pl = |p: &Plane| self.plane(*p);
         match &k.value {
@@ -123,7 +165,7 @@ impl KeyWords for Id {
                 Field::Matrix => "matriks transformasi pandang V".to_string(),
                 Field::Points => "semua titik".to_string(),
                 Field::Pixels => "semua piksel".to_string(),
-                Field::Edge(e, far) => window(*e, *far, &Node::Field(*f)),
+                Field::Edge(e, far) => window(*e, *far),
                 Field::Code0 => "region code P0".to_string(),
                 Field::Code1 => "region code P1".to_string(),
                 Field::Status => "status".to_string(),
@@ -156,8 +198,9 @@ impl KeyWords for Id {
 }
 
 /// An edge or size of the window in words (`top` → `batas atas viewing
-/// window (top)`; on the far plane, `… pada far plane (far_top)`).
-fn window(e: Edge, far: bool, key: &Node) -> String {
+/// window (top)`; on the far plane, `… pada far plane (top)`; the size as
+/// the text says it, `tinggi viewing window`).
+fn window(e: Edge, far: bool) -> String {
     let what = match e {
         Edge::Top => "batas atas",
         Edge::Bottom => "batas bawah",
@@ -166,13 +209,22 @@ fn window(e: Edge, far: bool, key: &Node) -> String {
         Edge::Height => "tinggi",
         Edge::Width => "lebar",
     };
-    let far = if far { " pada far plane" } else { "" };
-    format!("{what} viewing window{far} ({key})")
+    let at = if far { " pada far plane" } else { "" };
+    match e {
+        Edge::Height | Edge::Width => format!("{what} viewing window{at}"),
+        Edge::Top | Edge::Bottom | Edge::Left | Edge::Right => {
+            let notation = Node::Field(Field::Edge(e, false));
+            format!("{what} viewing window{at} ({notation})")
+        }
+    }
 }
 
 /// What a value of the lighting is.
 fn shading(s: Shading) -> String {
     let term = |s: Shading| format!("komponen {}", Node::Field(Field::Shading(s)));
+    if s == Shading::Unclamped {
+        return "jumlah komponen, sebelum dibatasi ke [0, 1]".to_string();
+    }
     match s {
         Shading::L => "vektor satuan L".to_string(),
         Shading::N => "vektor satuan N".to_string(),
@@ -218,6 +270,8 @@ mod tests {
         assert_eq!(id("viewport.pixels.A"), "piksel A");
         assert_eq!(id("window.top"), "top");
         assert_eq!(id("window.far_top"), "top (far plane)");
+        assert_eq!(id("window.height"), "tinggi");
+        assert_eq!(id("window.width"), "lebar");
         assert_eq!(id("clip.intersections.left.point"), "P(t) (kiri)");
         assert_eq!(
             id("clip[2].intersections.top.kept"),
@@ -229,13 +283,39 @@ mod tests {
         assert_eq!(id("shade.lights[1].attenuation"), "Att (cahaya 1)");
     }
 
+    /// An Indonesian quiz labels its blanks in the text's words: no JSON
+    /// key, no English word where the text has its own (tinggi, lebar,
+    /// region code, komponen).
+    #[test]
+    fn a_quiz_labels_its_blanks_in_the_texts_words() {
+        let id = |s| Id.blank_label(&key(s));
+        assert_eq!(id("view.n"), "n");
+        assert_eq!(id("view.points.A"), "A'");
+        assert_eq!(id("viewport.pixels.A"), "piksel A");
+        assert_eq!(id("window.top"), "batas atas (top)");
+        assert_eq!(id("window.height"), "tinggi");
+        assert_eq!(id("window.far_width"), "lebar pada far plane");
+        assert_eq!(id("clip.code0"), "region code P0");
+        assert_eq!(id("clip[2].status"), "segmen 2: status");
+        assert_eq!(id("clip.segment"), "segmen garis hasil clipping");
+        assert_eq!(id("shade.cos_alpha"), "cos α");
+        assert_eq!(id("shade.diffuse"), "komponen diffuse");
+        assert_eq!(id("shade.unclamped"), "warna sebelum dibatasi");
+        assert_eq!(id("shade.color"), "warna");
+    }
+
     #[test]
     fn practice_asks_in_the_texts_words() {
         let id = |s| Id.answer_words(&key(s));
         assert_eq!(id("window.top"), "batas atas viewing window (top)");
         assert_eq!(
-            id("window.far_width"),
-            "lebar viewing window pada far plane (far_width)"
+            id("window.far_top"),
+            "batas atas viewing window pada far plane (top)"
+        );
+        assert_eq!(id("window.height"), "tinggi viewing window");
+        assert_eq!(
+            id("shade.unclamped"),
+            "jumlah komponen, sebelum dibatasi ke [0, 1]"
         );
         assert_eq!(id("view.points.A"), "koordinat kamera A'");
         assert_eq!(id("project.points.A"), "hasil proyeksi A''");

@@ -19,6 +19,9 @@ pub(super) fn mistake(c: Code) -> &'static str {
         Code::UNotNormalized => {
             "u = Vup × n tidak dibagi dengan |Vup × n| (v = n × u pun ikut memiliki panjang itu)"
         }
+        Code::UvSwapped => {
+            "u dan v tertukar: sumbu x kamera (kanan) ditulis sebagai sumbu y-nya (atas) dan sebaliknya (serta baris matriks transformasi pandang dan koordinat kamera yang mengikutinya)"
+        }
         Code::FovyNotHalved => "tan(fovy) dipakai untuk viewing window, bukan tan(fovy/2)",
         Code::DegreesAsRadians => "sudut dalam derajat dimasukkan ke tan seolah-olah dalam radian",
         Code::HeightIsHalfExtent => {
@@ -29,11 +32,17 @@ pub(super) fn mistake(c: Code) -> &'static str {
         }
         Code::DSign => "tanda d salah (bidang proyeksi z = +near, bukan z = −near)",
         Code::MatrixTransposed => "matriks pandang ditulis tertranspos (konvensi vektor baris P·M)",
+        Code::McamAsView => {
+            "Mcam, matriks transformasi kamera (koordinat kamera ke koordinat dunia; kolom u, v, n, Pe), diberikan sebagai matriks transformasi pandang V = Mcam⁻¹ (baris u, v, n dan −u·Pe, −v·Pe, −n·Pe)"
+        }
         Code::OutcodeReversed => {
             "bit-bit outcode ditulis dengan urutan terbalik (bit 1 paling kiri, bukan paling kanan)"
         }
         Code::EndpointKept => {
             "titik ujung di luar kotak dipertahankan, bukan titik potong yang menggantikannya"
+        }
+        Code::TFromP1 => {
+            "t diukur dari P1, bukan dari P0 (1 − t), serta titik potong, region code-nya dan segmen garis hasil clipping yang mengikutinya dari P(t) = P0 + t·(P1 − P0)"
         }
         Code::ReflectPlusL => "R dihitung sebagai 2N(L·N) + L, bukan 2N(L·N) − L",
         Code::SpecularNoMax => {
@@ -53,6 +62,9 @@ pub(super) fn mistake(c: Code) -> &'static str {
         }
         Code::NormalNotNormalized => {
             "N tidak dibagi dengan |N|: cos α = L·N dengan normal apa adanya (serta R, cos β dan komponen-komponen yang mengikutinya)"
+        }
+        Code::CosInRadians => {
+            "kosinus sudut dalam derajat dihitung dalam mode radian (cos 45 dibaca sebagai kosinus 45 rad): cos(θ/2) dan cos(φ/2) sumber cahaya spot, serta faktor spot dan komponen-komponen yang mengikutinya"
         }
         Code::CopiedMisprint => {
             "nilai yang dicetak sumber, yang menurut erratanya salah (lihat erratanya)"

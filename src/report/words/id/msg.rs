@@ -14,8 +14,8 @@ use crate::tutor::key::Plane;
 
 impl MsgWords for Id {
     /// A word table: long on purpose.
-    fn msg(&self, m: &Msg) -> String {
-        let n = |s: &str| self.nums().values(s);
+    fn msg_in(&self, m: &Msg, nums: NumStyle) -> String {
+        let n = |s: &str| nums.values(s);
         match m {
             Msg::Math(s) => s.clone(),
             Msg::Written(en, ind) => ind.clone().unwrap_or_else(|| en.clone()),
@@ -24,15 +24,16 @@ impl MsgWords for Id {
             Msg::Asked(parts) => msg::asked(self, parts),
             Msg::DrawnTitle(t) => self.drawn_title(*t).into(),
             Msg::Pixel(p) => self.pixel(p),
-            Msg::Statement(s) => self.statement(s, self.nums()),
+            Msg::Statement(s) => self.statement(s, nums),
             Msg::Figure(f) => self.figure(f),
             Msg::At(place, m) => msg::at(self, place, m),
             Msg::Err(e) => self.error(e),
-            Msg::Said(s) => self.said(s),
+            Msg::Said(s) => self.said(s, nums),
             Msg::SecModeling => "Tahap 1: transformasi pemodelan".into(),
             Msg::SecViewing => "Tahap 2: transformasi sistem pandang (koordinat dunia → koordinat kamera)".into(),
             Msg::SecProjection => "Tahap 3: proyeksi terhadap near clipping plane".into(),
             Msg::SecWindowClip => "Tahap 4: viewing window dan clipping".into(),
+            Msg::SecWindow => "Tahap 4: viewing window".into(),
             Msg::SecViewport => "Pemetaan viewport (viewing window → piksel)".into(),
             Msg::SecLineClip(None) => "Clipping garis".into(),
             Msg::SecLineClip(Some(i)) => format!("Clipping garis, segmen {i}"),
@@ -95,7 +96,8 @@ impl MsgWords for Id {
             Msg::FDepth => "z = λ₀z₀ + λ₁z₁ + λ₂z₂ (z/w linear di layar); makin kecil makin dekat".into(),
             Msg::FBarycentric => "λₖ = Eₖ(pusat)/luas di layar;  koreksi perspektif μₖ = (λₖ/wₖ) / Σ λₘ/wₘ".into(),
             Msg::FFlat => "warna = lighting::shade(normal face N; pusat face)".into(),
-            Msg::FLiangBarsky => "t0 = nilai q/p terbesar di antara bidang yang dimasuki,  t1 = nilai q/p terkecil di antara bidang yang ditinggalkan,  terlihat bila t0 ≤ t1".into(),
+            Msg::FWindowEdges => "right = aspect·top,  bottom = −top,  left = −right,  tinggi = 2·top,  lebar = 2·right".into(),
+            Msg::FLiangBarsky => "p = −Δx, Δx, −Δy, Δy, −Δz, Δz dan q = x0 − xmin, xmax − x0, y0 − ymin, ymax − y0, z0 − zmin, zmax − z0 pada bidang x = xmin … z = zmax;  t0 = max(0, q/p untuk p < 0) (bidang yang dimasuki),  t1 = min(1, q/p untuk p > 0) (bidang yang ditinggalkan);  p = 0 dengan q < 0: di luar;  terlihat bila t0 ≤ t1, dari P0 + t0·Δ sampai P0 + t1·Δ".into(),
             Msg::FInside => "left ≤ xp ≤ right,  bottom ≤ yp ≤ top,  dan −far ≤ z' ≤ −near".into(),
             Msg::FSpot => "ρ = (−L)·axis;  Spot = 1 bila ρ ≥ cos(θ/2), 0 bila ρ ≤ cos(φ/2), selain itu ((ρ − cos(φ/2))/(cos(θ/2) − cos(φ/2)))^falloff".into(),
             Msg::FClamp => "warna = min(max(C; 0); 1)".into(),
@@ -105,6 +107,9 @@ impl MsgWords for Id {
             Msg::InRange => "setiap kanal sudah berada di [0, 1]".into(),
             Msg::NoTermInModel(model, t) => format!("model {model} tidak memiliki komponen {}", self.term(*t)),
             Msg::TextSetting => "satu sumber cahaya putih seperti di teks dan tanpa ambient global: jumlahnya 1·(faktor dalam teks)".into(),
+            Msg::TextTerm(Term::Ambient) => "Ia = Is·ka pada teks, dengan intensitas sumber cahaya Is = 1 (satu sumber cahaya putih), dikalikan warna permukaan Cs".into(),
+            Msg::TextTerm(Term::Diffuse) => "Id = Is·kd·MAX(cos α, 0) pada teks, dengan Is = 1, dikalikan warna permukaan Cs".into(),
+            Msg::TextTerm(Term::Specular) => "Isp = Is·ksp·MAX(cosⁿ β, 0) pada teks (ksp adalah ks), dengan Is = 1, dikalikan warna specular putih Cwhite".into(),
             Msg::SummedInRange => "dijumlahkan atas semua sumber cahaya dalam jangkauan".into(),
             Msg::SpecularSkipped => "komponen specular dilewati (ks = 0 atau --specular off)".into(),
             Msg::BeyondRange => "di luar jangkauannya sumber cahaya tidak menyumbang apa pun, ambient pun tidak".into(),
@@ -134,7 +139,7 @@ impl MsgWords for Id {
             Msg::Misses => "tidak ada titik potong di dalam view volume: segmen garis tidak mengenainya (ditolak)".into(),
             Msg::DefaultView => "tidak diberikan: viewVector dari teks (0; 0; 1), pengamat jauh di arah +z".into(),
             Msg::MaterialD3d => "material Direct3D: warnanya sudah memuat koefisien, jadi ka = kd = ks = 1".into(),
-            Msg::MaterialText => "konstanta dari teks bila tidak diberikan: ka = 0,4; kd = 0,6; ks = 0,7 (ksp dalam teks); n = 4; specular putih (Cwhite)".into(),
+            Msg::MaterialText => format!("konstanta dari teks bila tidak diberikan: {}", nums.values("ka = 0.4, kd = 0.6, ks = 0.7 (ksp dalam teks), n = 4, specular putih (Cwhite)")),
             Msg::NoTriangle => "tidak ada segitiga yang menutupi pusat piksel: warnanya tetap warna latar".into(),
             Msg::Nearest => "yang terdekat dari semua segitiga yang menutupi piksel ini".into(),
             Msg::Agree(true) => "kedua metode menghasilkan segmen garis yang sama".into(),
@@ -177,7 +182,9 @@ impl MsgWords for Id {
             Msg::WithinPixel => "dalam setengah piksel".into(),
             Msg::NotAnOutcode(t) => format!("`{t}` bukan region code: tulis enam digit biner, bit 1 paling kanan (001000)"),
             Msg::NotAStatus(t) => format!("`{t}` bukan status: tulis diterima, ditolak atau di-clip (accepted, rejected, clipped)"),
-            Msg::FollowThrough => "benar menurut jawaban sebelumnya (follow-through)".into(),
+            Msg::NotYesOrNo(t) => format!("`{t}` bukan ya atau tidak: tulis ya atau tidak (yes, no)"),
+            Msg::AmbiguousCommas => "koma di sini dipakai sebagai tanda desimal sekaligus pemisah, sehingga bilangannya tidak dapat dibedakan: tulis 0,7071; 0; 0,7071 (koma desimal, bagian dipisahkan ;) atau 0.7071, 0, 0.7071".into(),
+            Msg::FollowThrough => "benar menurut jawaban sebelumnya (benar lanjutan)".into(),
             Msg::NoFollowFrom(a, why, b) => {
                 let name = |k: &str| crate::report::words::keys::name_of(self, k);
                 let (a, b) = (name(a), name(b));
@@ -196,10 +203,9 @@ impl MsgWords for Id {
             Msg::Exact => "tepat".into(),
             Msg::Rounded(s) => format!("dibulatkan ke {s} angka penting"),
             Msg::RoundedCoarse(s, need) => format!("dibulatkan ke {s} angka penting, paling sedikit {need} diperlukan"),
-            Msg::SigCoarse(s, need) => format!("{s} angka penting, paling sedikit {need} diperlukan"),
             Msg::UpParallel(a) => format!(
                 "vektor up (Vup) hampir sejajar dengan arah pandang (sudut {} rad): u dan v sangat peka terhadap masukan",
-                msg::exponent(self.nums(), *a)
+                msg::exponent(nums, *a)
             ),
             Msg::BehindWarn(n) => format!("{n} berada di belakang pusat proyeksi: bayangannya terbalik dan tidak terlihat"),
             Msg::NoFigure => "tidak ada gambar yang ditulis: tidak ada bagian yang ditanyakan yang punya gambar sendiri (piksel `viewport` digambar pada gambar window: tanyakan `window` juga)".into(),
@@ -208,11 +214,13 @@ impl MsgWords for Id {
                 "soal {problem} ({topic}, {level}) hanya dapat dibuat dalam {found} varian berbeda{}, bukan {asked} seperti diminta (tidak ada soal yang dinyatakan dua kali dalam satu ujian): minta lebih sedikit (--variants, --count) atau tingkat lain (--difficulty)",
                 if *all { " (semua soal jenis ini sudah dicoba)" } else { " (ditemukan dalam 200.000 percobaan)" }
             ),
+            Msg::ExactTooLong(bits) => format!("nilai eksak yang pembilang atau penyebutnya akan melebihi {bits} bit (pangkat yang tinggi, seperti shininess yang besar) dihitung dengan f64 dan ditandai ≈, begitu pula yang diturunkan darinya"),
+            Msg::StaleTempRemoved(p, pid) => format!("{p} dihapus: berkas sementara yang ditinggalkan proses grafika {pid}, yang sudah tidak berjalan (dihentikan sebelum sempat membersihkan)"),
             Msg::ErrHtmlCommand => "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html".into(),
             Msg::Parts(parts) => msg::parts(self, parts),
-            Msg::Expected(v) => format!("seharusnya {}", self.nums().values(v)),
+            Msg::Expected(v) => format!("seharusnya {}", nums.values(v)),
             Msg::Unreadable(why) => format!("tidak dapat dibaca: {}", self.number(why)),
-            Msg::WithinPct(p) => format!("dalam batas {}%", self.nums().number(p)),
+            Msg::WithinPct(p) => format!("dalam batas {}%", nums.number(p)),
         }
     }
 

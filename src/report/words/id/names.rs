@@ -22,6 +22,8 @@ impl super::super::names::NameWords for Id {
             Name::Vertex(k) => return format!("verteks {k} (X, Y)"),
             Name::InEyeSpace(v) => return format!("{v} (ruang kamera)"),
             Name::Unclamped => "sebelum dibatasi",
+            Name::Height => "tinggi",
+            Name::Width => "lebar",
             Name::Color => "warna",
             Name::Highlight => "sorotan (highlight)",
             Name::Contributes => "menyumbang",

@@ -12,6 +12,7 @@ use crate::msg::StatWord as S;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
 use crate::report::words::report::{dec, exam_title, percent, ReportWords};
 use crate::report::words::MsgWords;
+use crate::stages::clip::Status;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
@@ -25,7 +26,7 @@ impl ReportWords for Id {
             C::Student => "mahasiswa".into(),
             C::Students => "mahasiswa".into(),
             C::Score => "nilai".into(),
-            C::FollowThrough => "follow-through".into(),
+            C::FollowThrough => "benar lanjutan".into(),
             C::Mistakes => "kesalahan konsep".into(),
             C::Mistake => "kesalahan".into(),
             C::Key => "kunci".into(),
@@ -50,7 +51,7 @@ impl ReportWords for Id {
                 sig_figs,
                 follow_through,
             } => format!(
-                "{students} mahasiswa dinilai; toleransi {} %, paling sedikit {sig_figs} angka penting, follow-through {}.",
+                "{students} mahasiswa dinilai; toleransi {} %, paling sedikit {sig_figs} angka penting, penilaian lanjutan (benar menurut jawaban sendiri sebelumnya) {}.",
                 dec(*tolerance_pct, 4, self.nums()),
                 if *follow_through { "aktif" } else { "tidak aktif" }
             ),
@@ -130,7 +131,9 @@ impl ReportWords for Id {
             K::NoMistakeExplains => "Tidak ada kesalahan yang dikenal yang menjelaskan".into(),
             K::NotAnswers => "Bukan jawaban untuk soal ini (diabaikan)".into(),
             K::Score => "Nilai".into(),
-            K::FollowThroughCount(n) => format!("({n} jawaban benar karena follow-through: benar menurut jawaban mahasiswa sendiri sebelumnya)"),
+            K::FollowThroughCount(n) => format!(
+                "({n} jawaban benar lanjutan: benar menurut jawaban mahasiswa sendiri sebelumnya)"
+            ),
             K::Marks => "poin".into(),
             K::Working => "langkah".into(),
             K::WorkingCount(n, right) => format!("Langkah pengerjaan yang ditulis, tidak dihitung dalam nilai: {n} jawaban, {right} di antaranya benar"),
@@ -203,11 +206,18 @@ impl ReportWords for Id {
                 format!("Tulis setiap bilangan sebagai desimal dengan sedikitnya {figures} angka penting, bukan sebagai bentuk eksak seperti (√2−1)/2, dengan {mark} (bilangan yang berselisih paling banyak {pct} % dari kunci dinilai benar{pixel}).")
             }
             Q::TypeOutcodes => "Tulis outcode sebagai enam bit, bit 1 paling kanan (mis. 000010).".into(),
-            Q::TypeStatus => "Tulis status clipping sebagai accepted, rejected atau clipped, dan sisa segmen sebagai none bila tidak ada.".into(),
+            Q::TypeStatus => "Tulis status clipping sebagai diterima, ditolak atau di-clip (kata Inggrisnya, accepted, rejected atau clipped, juga dinilai benar), dan segmen garis yang tersisa sebagai tidak ada (atau none) bila tidak ada yang tersisa.".into(),
             Q::KnownMistake => "Kesalahan yang dikenal: ".into(),
             Q::OrMistake => "; atau: ".into(),
             Q::Part => "Bagian".into(),
-            Q::FiguresInMoodle => "Gambar soal ini ada di Moodle XML dari ujian yang sama (grafika generate … --format moodle): GIFT tidak dapat membawa berkas.".into(),
+            Q::FiguresInMoodle => "GIFT tidak dapat membawa berkas: gambar penyelesaian hanya ada di Moodle XML dari ujian yang sama (--format moodle).".into(),
+            Q::Word(code) => match crate::report::words::said::status(code) {
+                Some(Status::Accepted) => "diterima".into(),
+                Some(Status::Rejected) => "ditolak".into(),
+                Some(Status::Clipped) => "di-clip".into(),
+                None if code == "none" => self.doc(&D::NoValue),
+                None => code.clone(),
+            },
             Q::Component => "komponen".into(),
             Q::Point => "titik".into(),
         }
@@ -290,17 +300,17 @@ impl ReportWords for Id {
             } => format!("Latihan: {title} ({values} nilai)"),
             P::HowToAnswer => "Jawab setiap nilai yang ditanyakan. Angka: 0,8 atau 4/5 atau sqrt(2)/2; titik: \
                  (x, y, z). Dengan koma desimal, pisahkan komponen dengan ; (0,8; 0,6; 0). \
-                 Perintah: hint (petunjuk), show (lihat), skip (lewati), back (kembali), \
-                 quit (keluar).".into(),
+                 Perintah: petunjuk, lihat (langkahnya), lewati, kembali (ke nilai sebelumnya), \
+                 keluar.".into(),
             P::Answer => "Jawaban".into(),
             P::Skipped => "Dilewati.".into(),
-            P::AgainEmpty => "Ketik jawaban, atau perintah: hint, show, skip, back, quit.".into(),
+            P::AgainEmpty => "Ketik jawaban, atau perintah: petunjuk, lihat, lewati, kembali, keluar.".into(),
             P::FirstValue => "Ini nilai pertama: tidak ada langkah sebelumnya.".into(),
-            P::NoMoreHints => "Petunjuk sudah habis: ketik show untuk melihat langkahnya.".into(),
+            P::NoMoreHints => "Petunjuk sudah habis: ketik lihat untuk melihat langkahnya.".into(),
             P::Exact => "✓ benar".into(),
             P::Tolerance => "✓ benar (dalam toleransi)".into(),
             P::Rounded => "✓ benar (dibulatkan)".into(),
-            P::FollowThrough => "✓ benar menurut jawabanmu sebelumnya (follow-through)".into(),
+            P::FollowThrough => "✓ benar menurut jawabanmu sebelumnya".into(),
             P::TooCoarse => "½ benar, tetapi pembulatannya terlalu kasar: tulis lebih banyak angka penting".into(),
             P::Wrong => "✗ salah".into(),
             P::Unreadable { why, how } => {
@@ -308,19 +318,22 @@ impl ReportWords for Id {
             }
             P::ReadAs => "dibaca sebagai".into(),
             P::SecondTry => "(percobaan kedua: ditampilkan dan dihitung terpisah; penilaian pertama yang dipakai untuk nilai)".into(),
+            P::ShownBefore => "(nilai ini sudah ditampilkan: jawabannya dinilai dan dihitung terpisah; nilainya dihitung sebagai dilihat)".into(),
+            P::AlsoShown(keys) => format!("(langkah ini juga menampilkan {keys}: nilai-nilai itu dihitung sebagai dilihat)"),
             P::LikelyMistake => "Kemungkinan kesalahan".into(),
             P::SourceWrong => "Sumber mencetak nilai ini, dan nilai itu salah".into(),
-            P::NoMistakeTip => "Tidak ada kesalahan yang dikenal yang menjelaskan jawaban ini. Ketik back untuk mencoba nilai ini lagi (hint dan show membantu di sana).".into(),
+            P::NoMistakeTip => "Tidak ada kesalahan yang dikenal yang menjelaskan jawaban ini. Ketik kembali untuk mencoba nilai ini lagi (petunjuk dan lihat membantu di sana).".into(),
             P::NoHint => "Tidak ada petunjuk untuk nilai ini.".into(),
             P::Hint1(title) => format!("Petunjuk 1: {title}"),
             P::Hint2 => "Petunjuk 2: nilai-nilai yang disubstitusikan (langkah terakhir milikmu)".into(),
-            P::NoValues => "(setiap nilai langkah ini akan membocorkan jawabannya: substitusikan bilangan dari soal, atau ketik show)".into(),
+            P::NoValues => "(setiap nilai langkah ini akan membocorkan jawabannya: substitusikan bilangan dari soal, atau ketik lihat)".into(),
             P::MistakesMade => "Kesalahan yang dibuat:".into(),
             P::PractiseNext => "Latihan berikutnya".into(),
-            P::SegmentShape => "(x0, y0, z0); (x1, y1, z1), atau none".into(),
+            P::SegmentShape => "(x0, y0, z0); (x1, y1, z1), atau tidak ada".into(),
             P::BitsShape => "6 bit, bit 1 paling kanan".into(),
             P::MatrixShape => "4 baris (a; b; c; d); (…); …".into(),
             P::NumberShape => "sebuah bilangan".into(),
+            P::YesNoShape => "ya | tidak".into(),
             P::ValuesShape(n) => format!("({n} nilai)"),
         }
     }
@@ -329,7 +342,7 @@ impl ReportWords for Id {
         let pts = dec(s.points, 4, self.nums());
         let pct = dec(percent(s.points, s.total), 4, self.nums());
         let mut out = format!(
-            "Ringkasan: {pts}/{} poin = {pct}% (jawaban yang ditanyakan soal; {} langkah)\n  benar {} ({} karena follow-through), terlalu kasar {}, salah {},\n  dilewati {}, dilihat {}, belum dijawab {}; petunjuk dipakai {}\n",
+            "Ringkasan: {pts}/{} poin = {pct}% (jawaban yang ditanyakan soal; {} langkah)\n  benar {} ({} benar lanjutan), terlalu kasar {}, salah {},\n  dilewati {}, dilihat {}, belum dijawab {}; petunjuk dipakai {}\n",
             s.total, s.steps, s.correct, s.follow_through, s.too_coarse, s.wrong, s.skipped, s.revealed, s.unanswered, s.hints
         );
         if s.retries > 0 {

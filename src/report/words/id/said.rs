@@ -3,12 +3,13 @@
 
 use super::Id;
 use crate::msg::Said;
-use crate::report::words::{said, MsgWords, SaidWords};
+use crate::report::lang::NumStyle;
+use crate::report::words::{said, SaidWords};
 use crate::stages::clip::Status;
 
 impl SaidWords for Id {
-    fn said(&self, s: &Said) -> String {
-        let n = |x: &str| self.nums().values(x);
+    fn said(&self, s: &Said, nums: NumStyle) -> String {
+        let n = |x: &str| nums.values(x);
         match s {
             Said::BitTest(true, test, values) => format!("1 — {test}: {} benar", n(values)),
             Said::BitTest(false, test, values) => format!("0 — {test}: {} salah", n(values)),
@@ -20,9 +21,9 @@ impl SaidWords for Id {
                 n(png)
             ),
             Said::Status(code) => match said::status(code) {
-                Some(Status::Clipped) => format!("{code} (di-clip)"),
-                Some(Status::Accepted) => format!("{code} (diterima)"),
-                Some(Status::Rejected) => format!("{code} (ditolak)"),
+                Some(Status::Clipped) => "di-clip".to_string(),
+                Some(Status::Accepted) => "diterima".to_string(),
+                Some(Status::Rejected) => "ditolak".to_string(),
                 None => code.clone(),
             },
         }
