@@ -1097,6 +1097,7 @@ fn named_by<'a>(t: &'a T, p: &P) -> Vec<&'a str> {
 /// - over no dot, no line and no line's end (1.5 px clear of it);
 /// - 9 px clear of every other label side by side, or 1.5 px above or
 ///   below (closer, `fovy = 60°` and `near = 1` read as one phrase);
+///
 /// and no two texts (labels, notes) overlap or leave the 600 px page.
 fn label_faults(svg: &str) -> Vec<String> {
     let mut faults = Vec::new();
