@@ -14,7 +14,7 @@ fn scene(name: &str) -> Scene {
     let p = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("problems/render")
         .join(name);
-    Scene::read(&p).expect("scene")
+    Scene::read(&p, grafika::input::scene::WORK_LIMIT).expect("scene")
 }
 
 #[divan::bench(args = [Shading::Flat, Shading::Gouraud, Shading::Phong], sample_count = 20)]

@@ -18,7 +18,8 @@ mod report;
 mod said;
 pub use drawn::{DrawnTitle, NamedPoint, Number, ShadeAsked, StatedCamera, Statement, Triple};
 pub use errors::{
-    Bound, Channel, ClapErr, ErrMsg, IoWhy, NumErr, ObjWhy, Thing, TomlErr, Twice, Want,
+    Bound, Channel, ClapErr, ErrMsg, FileKind, IoWhy, ListWhy, NumErr, ObjWhy, Thing, TomlErr,
+    Twice, Want,
 };
 pub use figure::{FigWord, FigureMsg, Panel};
 pub use lang::Lang;
@@ -157,8 +158,11 @@ pub enum Msg {
     SecViewing,
     /// solve, part 3.
     SecProjection,
-    /// solve, part 4.
+    /// solve, part 4: the window, and which points are inside its view
+    /// volume.
     SecWindowClip,
+    /// solve, part 4, when there are no points to test: the window alone.
+    SecWindow,
     /// solve: the viewport.
     SecViewport,
     /// Line clipping (segment number when there are several).
@@ -476,6 +480,12 @@ pub enum Msg {
     BehindWarn(String),
     /// Exact values that grew past this many terms were left approximate.
     ExactTooLarge(usize),
+    /// Exact values whose numerators or denominators grew past this many
+    /// bits were left approximate.
+    ExactTooLong(u64),
+    /// A temporary file or folder left by a grafika process that no longer
+    /// runs was removed: its path, the process.
+    StaleTempRemoved(String, u32),
     /// `--figure` was asked, but no part asked has a figure of its own
     /// (a problem file asking `viewport` alone).
     NoFigure,

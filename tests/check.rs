@@ -899,7 +899,8 @@ fn the_new_mistakes_reach_the_quiz_feedback() {
     );
     let xml = std::fs::read_to_string(dir.join("quiz.xml")).unwrap();
     for words in [
-        "measured from the top edge (H − py)",
+        // the quiz writes a minus Moodle reads back
+        "measured from the top edge (H - py)",
         "Peye not subtracted",
         "top / aspect instead of aspect·top",
         "L not divided by |L|",

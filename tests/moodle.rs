@@ -1,11 +1,16 @@
 //! `generate --format moodle|gift`: the files parse back (a real XML parser;
 //! readings of the Cloze syntax and of GIFT that follow Moodle's import),
 //! every answer and tolerance agrees with the key (the quiz accepts every
-//! number `check` accepts: r·|x|, a whole pixel within half a pixel), every
-//! 0 % answer is the value a catalog mistake gives and names it, no absurd
-//! value is offered, the instruction names the decimal mark to type, the
-//! figures embedded decode to the SVG `solve --figure` writes, and the
-//! categories come before their questions.
+//! number `check` accepts: r·|x|, a whole pixel within half a pixel; a
+//! number below the resolution asked is asked as 0), every 0 % answer is
+//! the value a catalog mistake gives and names it, no absurd value is
+//! offered, the instruction names the decimal mark to type, the figures
+//! embedded decode to the SVG `solve --figure` writes, and the categories
+//! come before their questions. What students read: no JSON key in any
+//! label, one decimal mark per quiz, no empty exact form, no broken
+//! matrix, the words of the quiz's language accepted, no word to the
+//! lecturer, nothing Moodle would misread if typed back; a quiz split
+//! under a size (`--split-mb`) holds the same questions.
 
 mod common;
 use common::*;
@@ -15,7 +20,7 @@ use grafika::num::expr::parse_expr;
 use grafika::num::Real;
 use grafika::report::lang::Lang;
 use grafika::report::mistakes::mistake_text;
-use grafika::report::moodle::{moodle_xml, Decimal, Written};
+use grafika::report::moodle::{moodle_xml, typeable, Decimal, Written};
 use grafika::report::Style;
 use grafika::tutor::check::scheme::Scheme;
 use grafika::tutor::diagnose::Code;
@@ -41,11 +46,34 @@ struct Alt {
     feedback: String,
 }
 
-/// One blank `{1:TYPE:alt~alt…}`.
+/// One blank `{W:TYPE:alt~alt…}` of weight W.
 #[derive(Debug, Clone, PartialEq)]
 struct Blank {
+    weight: u32,
     kind: String,
     alts: Vec<Alt>,
+}
+
+/// Where the next blank of a Cloze text starts: `{`, the weight's digits
+/// (none reads as 1, as Moodle's `ANSWER_REGEX_NORM` does), `:`, an upper
+/// case type and `:`; with its weight and where its type starts.
+fn next_blank(text: &str) -> Option<(usize, u32, usize)> {
+    let mut from = 0;
+    while let Some(k) = text[from..].find('{').map(|k| k + from) {
+        let digits = text[k + 1..].bytes().take_while(u8::is_ascii_digit).count();
+        let colon = k + 1 + digits;
+        let kind = text[colon..].strip_prefix(':').map(|r| {
+            r.bytes()
+                .take_while(|b| b.is_ascii_uppercase() || *b == b'_')
+                .count()
+        });
+        if kind.is_some_and(|n| n > 0 && text[colon + 1 + n..].starts_with(':')) {
+            let weight = text[k + 1..colon].parse().unwrap_or(1);
+            return Some((k, weight, colon + 1));
+        }
+        from = k + 1;
+    }
+    None
 }
 
 /// Moodle's html_entity_decode, for the entities the writer uses.
@@ -82,8 +110,8 @@ fn decode(s: &str) -> String {
 fn cloze_blanks(text: &str) -> Vec<Blank> {
     let mut out = Vec::new();
     let mut rest = text;
-    while let Some(k) = rest.find("{1:") {
-        let body = &rest[k + 3..];
+    while let Some((_, weight, start)) = next_blank(rest) {
+        let body = &rest[start..];
         let end = body.find('}').expect("a blank ends");
         let (kind, alts) = body[..end].split_once(':').expect("a type");
         let alts = alts
@@ -108,6 +136,7 @@ fn cloze_blanks(text: &str) -> Vec<Blank> {
             })
             .collect();
         out.push(Blank {
+            weight,
             kind: kind.to_string(),
             alts,
         });
@@ -183,13 +212,7 @@ fn one_problem_xml(toml: &str, lang: Lang) -> Vec<(String, String, String, Strin
 fn one_problem_file(toml: &str, lang: Lang, decimal: Decimal) -> String {
     let quiz = Quiz::new(vec![vec![generated(toml)]], &[Topic::View], R);
     let style = Style::new(4, true, lang);
-    moodle_xml(
-        &quiz,
-        &Written {
-            style: &style,
-            decimal,
-        },
-    )
+    moodle_xml(&quiz, &Written::new(&style, decimal))
 }
 
 const CAMERA: &str = "title = 'Camera'\nstatement = 'The camera example.'\nask = ['view']\n\n[camera]\neye = [4, 4, 4]\nlook = [0, 1, 4]\nup = [0, 1, 0]\n\n[points]\nPref = [0, 1, 4]\n";
@@ -248,7 +271,7 @@ fn the_camera_example_has_the_keys_tolerances_and_mistakes_derived_by_hand() {
             alt.feedback
         );
         assert!(
-            alt.feedback.contains(mistake_text(m, Lang::En)),
+            alt.feedback.contains(&typeable(mistake_text(m, Lang::En))),
             "{code}: {}",
             alt.feedback
         );
@@ -271,8 +294,9 @@ fn the_camera_example_has_the_keys_tolerances_and_mistakes_derived_by_hand() {
     wrong(5, -1.0, "uv_swapped");
     // n's zero, that every mistake keeps zero, has no wrong answers
     assert_eq!(blanks[8].alts.len(), 1, "{:?}", blanks[8]);
-    // the general feedback holds the answers and the worked solution
-    assert!(qs[1].3.contains("view.u = (0, 0, −1)"), "{}", qs[1].3);
+    // the general feedback holds the answers, named as the steps name
+    // them, with a minus Moodle reads, and the worked solution
+    assert!(qs[1].3.contains("<li>u = (0, 0, -1)</li>"), "{}", qs[1].3);
     assert!(qs[1].3.contains("Worked solution"));
 }
 
@@ -397,7 +421,7 @@ fn check_question(text: &str, key: &Path, problem: &Path) {
             .iter()
             .filter_map(|s| parse_expr(s).ok()?.eval::<f64>().ok())
             .collect();
-        let scale = all.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let scale = answer_scale(k, &all);
         for (idx, leaf) in leaves.iter().enumerate() {
             let b = blanks.next().unwrap();
             let right = &b.alts[0];
@@ -407,16 +431,12 @@ fn check_question(text: &str, key: &Path, problem: &Path) {
             } else {
                 let want = parse_expr(leaf).unwrap().eval::<f64>().unwrap();
                 let (x, t) = num_tol(&right.answer);
-                // shown to 5 significant figures (4 asked, plus one)
+                // shown to 5 significant figures (4 asked, plus one); below
+                // the resolution r·S a student works to, asked as 0
                 let five: f64 = format!("{want:.4e}").parse().unwrap();
-                assert_eq!(x, five, "{k}: {x} for {leaf}");
-                let floor = if want != 0.0 {
-                    R * want.abs()
-                } else if scale > 0.0 {
-                    R * scale
-                } else {
-                    R
-                };
+                let tiny = want.abs() < R * scale;
+                assert_eq!(x, if tiny { 0.0 } else { five }, "{k}: {x} for {leaf}");
+                let floor = if tiny { R * scale } else { R * want.abs() };
                 // a pixel position takes at least half a pixel, as in check
                 let pixel = k.starts_with("viewport.pixels");
                 let floor = if pixel { floor.max(0.5) } else { floor };
@@ -437,9 +457,33 @@ fn check_question(text: &str, key: &Path, problem: &Path) {
                 }
             }
             for w in &b.alts[1..] {
-                check_wrong(&p, k, idx, b, w);
+                check_wrong(&p, (k, idx), b, w, scale);
             }
         }
+    }
+}
+
+/// The scale S of an answer by hand: its largest magnitude; a colour's (a
+/// lighting term, the colour before or after clamping) at least 1, full
+/// intensity; 1 for an answer all zero.
+fn answer_scale(key: &str, leaves: &[f64]) -> f64 {
+    let largest = leaves.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let colour = [
+        "ambient",
+        "diffuse",
+        "specular",
+        "emissive",
+        "unclamped",
+        "color",
+    ]
+    .iter()
+    .any(|c| key.ends_with(&format!(".{c}")));
+    if colour {
+        largest.max(1.0)
+    } else if largest > 0.0 {
+        largest
+    } else {
+        1.0
     }
 }
 
@@ -448,8 +492,9 @@ fn text_has_pixel_rule(text: &str) -> bool {
     text.contains("a pixel position within half a pixel, so a whole pixel is right")
 }
 
-/// A 0 % answer: apart from the key's, and given by each mistake it names.
-fn check_wrong(p: &ProblemIn, key: &str, idx: usize, b: &Blank, w: &Alt) {
+/// A 0 % answer: apart from the key's, and given by each mistake it names
+/// (in the words of the catalog, with the minus a student can type back).
+fn check_wrong(p: &ProblemIn, (key, idx): (&str, usize), b: &Blank, w: &Alt, scale: f64) {
     assert_eq!(w.fraction, 0.0);
     let names = w
         .feedback
@@ -458,7 +503,7 @@ fn check_wrong(p: &ProblemIn, key: &str, idx: usize, b: &Blank, w: &Alt) {
     for name in names.split("; or: ") {
         let m = Code::all()
             .into_iter()
-            .find(|m| mistake_text(*m, Lang::En) == name)
+            .find(|m| typeable(mistake_text(*m, Lang::En)) == name)
             .unwrap_or_else(|| panic!("not in the catalog: {name}"));
         let trees = m.apply(p).expect("the mistake applies");
         let given = trees.iter().any(|t| {
@@ -483,10 +528,11 @@ fn check_wrong(p: &ProblemIn, key: &str, idx: usize, b: &Blank, w: &Alt) {
             (x - y).abs() > t + u,
             "{key}: wrong {y} overlaps the key {x}"
         );
-        // nothing absurd: finite, at most 10⁶ times the key's magnitude
+        // nothing absurd: finite, at most 10³ times the larger of the
+        // key's magnitude and its answer's scale
         assert!(
-            y.is_finite() && y.abs() <= 1e6 * x.abs().max(t / R),
-            "{key}: {y}"
+            y.is_finite() && y.abs() <= 1e3 * x.abs().max(scale),
+            "{key}: {y} for {x} (scale {scale})"
         );
     }
     // Moodle sizes a box by its longest answer: none is long
@@ -706,7 +752,10 @@ fn an_absurd_mistaken_value_is_left_out() {
     let fovy = Code::FovyNotHalved;
     for b in &blanks {
         for a in &b.alts[1..] {
-            assert!(!a.feedback.contains(mistake_text(fovy, Lang::En)), "{a:?}");
+            assert!(
+                !a.feedback.contains(&typeable(mistake_text(fovy, Lang::En))),
+                "{a:?}"
+            );
             assert!(num_tol(&a.answer).0.abs() < 1e6, "{a:?}");
         }
     }
@@ -811,11 +860,14 @@ fn embedded_figures_decode_to_the_svg_solve_writes() {
     let args = ["--topic", "view,window,clip", "--count", "3", "--seed", "3"];
     let quiz = tmp("fig-quiz");
     let keys = tmp("fig-keys");
+    // an Indonesian quiz typed with decimal commas: its figures are those
+    // of `solve --lang id` (with the mark of --decimal, as every number of
+    // the quiz)
     for (dir, format) in [(&quiz, "moodle"), (&keys, "toml")] {
         let run = grafika()
             .args(["--lang", "id", "generate"])
             .args(args)
-            .args(["--format", format, "--out"])
+            .args(["--decimal", "comma", "--format", format, "--out"])
             .arg(dir)
             .output()
             .unwrap();
@@ -865,21 +917,55 @@ fn embedded_figures_decode_to_the_svg_solve_writes() {
     }
 }
 
+/// The blocks of a worked solution's steps (the writer's `body_html`):
+/// each line a `<div>` of its own, a matrix's lines together in a `<div>`
+/// that does not wrap; returns (text lines, matrices).
+fn step_blocks(feedback: &str) -> (Vec<String>, Vec<Vec<String>>) {
+    let (mut lines, mut tables) = (Vec::new(), Vec::new());
+    for body in feedback
+        .split("<div style=\"font-family:monospace;white-space:pre-wrap\">")
+        .skip(1)
+    {
+        for block in body.split("<div style=\"").skip(1) {
+            let (style, rest) = block.split_once("\">").unwrap();
+            let text = decode(rest.split("</div>").next().unwrap());
+            if style == "white-space:pre;overflow-x:auto" {
+                tables.push(text.lines().map(str::to_string).collect());
+            } else {
+                assert!(style.ends_with("ch;text-indent:-2ch"), "{style}");
+                assert!(!text.contains('\n'), "one line per block: {text}");
+                lines.push(text);
+            }
+        }
+    }
+    (lines, tables)
+}
+
 #[test]
-fn what_students_see_is_short_wrapped_and_in_one_language() {
+fn what_students_see_is_laid_out_by_the_browser_and_in_one_language() {
     let en = std::fs::read_to_string(generate("see-en", "moodle", &[]).join("quiz.xml")).unwrap();
     let id_dir = generate("see-id", "moodle", &["--lang", "id"]);
     let id = std::fs::read_to_string(id_dir.join("quiz.xml")).unwrap();
+    let mut matrices = 0;
     for (xml, lang) in [(&en, Lang::En), (&id, Lang::Id)] {
         for (_, _, text, feedback) in xml_questions(xml).iter().filter(|q| q.0 == "cloze") {
             // no "= ≈": a value without an exact form is "top ≈ 0.04663"
             assert!(!feedback.contains("= ≈"), "{feedback}");
-            // the worked solution fits the question: no line over 72
-            for pre in feedback.split("<pre>").skip(1) {
-                let body = pre.split("</pre>").next().unwrap();
-                for line in decode(body).lines() {
-                    assert!(line.chars().count() <= 72, "{line}");
-                }
+            // no line is broken by the writer: a step's lines are blocks the
+            // browser wraps, and a matrix's borders are whole (every line of
+            // its table as wide as the others, its corners where they belong)
+            // (only an answer that is a matrix is a <pre> of its own)
+            let pres = feedback.matches("<pre>").count();
+            assert_eq!(pres, feedback.matches("<li><pre>").count(), "{feedback}");
+            let (lines, tables) = step_blocks(feedback);
+            assert!(!lines.is_empty());
+            for t in &tables {
+                let width = t[0].chars().count();
+                assert!(t.iter().all(|l| l.chars().count() == width), "{t:?}");
+                let (first, last) = (t[0].trim(), t[t.len() - 1].trim());
+                assert!(first.starts_with('┌') && first.ends_with('┐'), "{t:?}");
+                assert!(last.starts_with('└') && last.ends_with('┘'), "{t:?}");
+                matrices += 1;
             }
             // the parts are numbered within the question, from 1
             let part = if lang == Lang::En { "Part" } else { "Bagian" };
@@ -899,14 +985,142 @@ fn what_students_see_is_short_wrapped_and_in_one_language() {
                 let digits = x.trim_start_matches(['-', '0', '.']).replace('.', "");
                 assert!(digits.len() <= 5, "{x}");
             }
+            // every number typed back reads as written: no U+2212 minus (no
+            // number to Moodle) and no exponent with one (1.6e−10 is 1.6)
+            assert!(!feedback.contains('−'), "{feedback}");
+            for b in cloze_blanks(text) {
+                assert!(b.alts.iter().all(|a| !a.feedback.contains('−')), "{b:?}");
+            }
+        }
+    }
+    assert!(matrices > 0, "the pipeline's matrices are drawn");
+}
+
+/// The labels before the blanks of every Cloze question (`<p>n = (…`) and
+/// after the dash of every GIFT question's name.
+fn cloze_labels(xml: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for (_, _, text, _) in xml_questions(xml).iter().filter(|q| q.0 == "cloze") {
+        for p in text.split("<p>").skip(1) {
+            let p = p.split("</p>").next().unwrap();
+            if let Some((label, _)) = p.split_once(" = ").filter(|(_, r)| {
+                let r = r.trim_start_matches('(');
+                next_blank(r).is_some_and(|(k, ..)| k == 0) || r.starts_with("<table>")
+            }) {
+                out.push(decode(label));
+            }
+        }
+    }
+    out
+}
+
+/// Whether a label spells a JSON key or a key's name: `view.points.A`,
+/// `cos_alpha`, `code0`, `N_dot_H`.
+fn spells_a_key(label: &str) -> bool {
+    let dotted = label.split(' ').any(|w| {
+        let parts: Vec<&str> = w.split('.').collect();
+        parts.len() > 1
+            && parts
+                .iter()
+                .all(|p| !p.is_empty() && p.chars().all(|c| c.is_alphanumeric() || c == '_'))
+    });
+    dotted || label.contains('_') || label.contains("code0") || label.contains("code1")
+}
+
+#[test]
+fn no_label_spells_a_json_key_and_indonesian_labels_are_the_texts() {
+    for lang in ["en", "id"] {
+        let dir = generate(&format!("labels-{lang}"), "moodle", &["--lang", lang]);
+        let xml = std::fs::read_to_string(dir.join("quiz.xml")).unwrap();
+        let labels = cloze_labels(&xml);
+        // 7 problems, 2 variants, every answer asked labelled
+        assert!(labels.len() >= 14 * 3, "{labels:?}");
+        for l in &labels {
+            assert!(!spells_a_key(l), "{lang}: {l}");
+        }
+        let gift_dir = generate(&format!("labels-g-{lang}"), "gift", &["--lang", lang]);
+        let gift = std::fs::read_to_string(gift_dir.join("quiz.gift")).unwrap();
+        for q in gift_questions(&gift) {
+            if let Gift::Question { name, text, .. } = q {
+                let label = name.split(" — ").nth(1).unwrap();
+                assert!(!spells_a_key(label), "{lang}: {name}");
+                assert!(
+                    text.ends_with(&format!("{} = ?</p>", escaped(label))),
+                    "{text}"
+                );
+            }
+        }
+        let has = |l: &str| labels.iter().any(|x| x == l);
+        match lang {
+            "en" => {
+                for l in [
+                    "n",
+                    "A'",
+                    "A''",
+                    "A pixel",
+                    "top",
+                    "width",
+                    "outcode of P0",
+                    "cos α",
+                ] {
+                    assert!(has(l), "{l}: {labels:?}");
+                }
+            }
+            _ => {
+                for l in [
+                    "n",
+                    "A'",
+                    "piksel A",
+                    "batas atas (top)",
+                    "tinggi",
+                    "lebar",
+                    "region code P0",
+                    "cos α",
+                    "komponen diffuse",
+                    "warna",
+                ] {
+                    assert!(has(l), "{l}: {labels:?}");
+                }
+                // no English word where the text has its own
+                for l in ["top", "height", "width", "diffuse", "color"] {
+                    assert!(!has(l), "{l}: {labels:?}");
+                }
+            }
         }
     }
 }
 
+/// A label as the question text escapes it.
+fn escaped(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
 #[test]
-fn gift_names_its_blanks_as_the_steps_do_and_says_where_the_figures_are() {
-    let gift_dir = generate("names", "gift", &["--lang", "id"]);
-    let gift = std::fs::read_to_string(gift_dir.join("quiz.gift")).unwrap();
+fn gift_names_its_blanks_as_the_steps_do_and_speaks_to_students_only() {
+    let out = tmp("names");
+    let run = grafika()
+        .args(["--lang", "id", "generate", "--topic"])
+        .args([
+            "basis,view,project,window,clip,shade,pipeline",
+            "--count",
+            "7",
+        ])
+        .args([
+            "--variants",
+            "2",
+            "--seed",
+            "11",
+            "--format",
+            "gift",
+            "--out",
+        ])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(run.status.success());
+    let gift = std::fs::read_to_string(out.join("quiz.gift")).unwrap();
     let mut names = 0;
     for q in gift_questions(&gift) {
         if let Gift::Question { name, .. } = q {
@@ -919,7 +1133,117 @@ fn gift_names_its_blanks_as_the_steps_do_and_says_where_the_figures_are() {
         gift.contains("— n, komponen y::"),
         "view.n[2] is named n, komponen y"
     );
-    assert!(gift.contains("Gambar soal ini ada di Moodle XML"));
+    // students read the feedback: no word to the lecturer, no command
+    for lecturer in ["grafika generate", "--format", "Moodle XML", "GIFT"] {
+        assert!(!gift.contains(lecturer), "{lecturer}");
+    }
+    // the lecturer is told where the figures are, when the file is written
+    let said = String::from_utf8_lossy(&run.stdout);
+    assert!(said.contains("GIFT tidak dapat membawa berkas"), "{said}");
+    assert!(said.contains("--format moodle"), "{said}");
+}
+
+/// The Cloze blanks of every question whose key says `key` (`clip.status`),
+/// by the label the language gives it.
+fn blanks_labelled(xml: &str, label: &str) -> Vec<Blank> {
+    let mut out = Vec::new();
+    for (_, _, text, _) in xml_questions(xml).iter().filter(|q| q.0 == "cloze") {
+        for p in text.split("<p>").skip(1) {
+            let p = p.split("</p>").next().unwrap();
+            if let Some(rest) = p.strip_prefix(&format!("{label} = ")) {
+                out.extend(cloze_blanks(rest));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn a_clip_question_accepts_the_words_of_its_language_and_the_codes() {
+    // three clipping problems of one exam take the three statuses
+    let args = ["--topic", "clip", "--count", "3", "--variants", "4"];
+    for (lang, words) in [
+        (
+            "id",
+            [
+                ("clipped", "di-clip"),
+                ("accepted", "diterima"),
+                ("rejected", "ditolak"),
+            ],
+        ),
+        (
+            "en",
+            [
+                ("clipped", "clipped"),
+                ("accepted", "accepted"),
+                ("rejected", "rejected"),
+            ],
+        ),
+    ] {
+        let out = tmp(&format!("words-{lang}"));
+        let run = grafika()
+            .args(["--lang", lang, "generate"])
+            .args(args)
+            .args(["--format", "moodle", "--out"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert!(run.status.success());
+        let xml = std::fs::read_to_string(out.join("quiz.xml")).unwrap();
+        let status = blanks_labelled(&xml, "status");
+        assert_eq!(status.len(), 12, "3 problems, 4 variants");
+        for (code, word) in words {
+            let right: Vec<&Blank> = status.iter().filter(|b| b.alts[0].answer == word).collect();
+            assert!(!right.is_empty(), "{lang}: {word}");
+            for b in right {
+                let full: Vec<&str> = (b.alts.iter())
+                    .filter(|a| a.fraction == 1.0)
+                    .map(|a| a.answer.as_str())
+                    .collect();
+                // the language's word first (the answer Moodle shows), then
+                // the code when it differs
+                let want = if code == word {
+                    vec![code]
+                } else {
+                    vec![word, code]
+                };
+                assert_eq!(full, want, "{lang}");
+            }
+        }
+        // a rejected segment leaves none: "tidak ada" or "none"
+        let segment = if lang == "id" {
+            "segmen garis hasil clipping"
+        } else {
+            "clipped segment"
+        };
+        let none: Vec<Blank> = blanks_labelled(&xml, segment)
+            .into_iter()
+            .filter(|b| b.kind == "SHORTANSWER")
+            .collect();
+        assert!(!none.is_empty(), "{lang}");
+        for b in none {
+            let full: Vec<&str> = (b.alts.iter())
+                .filter(|a| a.fraction == 1.0)
+                .map(|a| a.answer.as_str())
+                .collect();
+            let want = if lang == "id" {
+                vec!["tidak ada", "none"]
+            } else {
+                vec!["none"]
+            };
+            assert_eq!(full, want);
+        }
+        // the instruction names the words it takes
+        let texts: Vec<String> = xml_questions(&xml).into_iter().map(|q| q.2).collect();
+        if lang == "id" {
+            assert!(texts
+                .iter()
+                .all(|t| t.is_empty() || t.contains("diterima, ditolak atau di-clip")));
+            assert!(texts
+                .iter()
+                .all(|t| t.is_empty() || t.contains("tidak ada (atau none)")));
+        }
+    }
 }
 
 #[test]
@@ -950,24 +1274,322 @@ fn has_decimal(s: &str, mark: char) -> bool {
         .any(|w| w[0].is_ascii_digit() && w[1] == mark && w[2].is_ascii_digit())
 }
 
-#[test]
-fn an_indonesian_quiz_writes_its_numbers_with_the_mark_it_tells_students_to_type() {
-    for (flag, mark, other, pct) in [("point", '.', ',', "0.1 %"), ("comma", ',', '.', "0,1 %")] {
-        let dir = generate(
-            &format!("id-{flag}"),
-            "moodle",
-            &["--lang", "id", "--decimal", flag],
-        );
-        let xml = std::fs::read_to_string(dir.join("quiz.xml")).unwrap();
-        let all = statements(&xml);
-        assert_eq!(all.len(), 14, "7 problems, 2 variants");
-        // every problem of seed 11 has a decimal (a near plane, a
-        // coefficient) or at least vectors, all written the same way
-        assert!(all.iter().any(|s| has_decimal(s, mark)), "{all:?}");
-        for s in &all {
-            assert!(!has_decimal(s, other), "--decimal {flag}: {s}");
+/// Everything a student reads of a quiz with its numbers: each question's
+/// text but its blanks' answers (Moodle's, always with a point) and the
+/// instruction's "not 0,5", its general feedback, each 0 % answer's
+/// feedback, and the text of its figures (the SVG files embedded).
+fn read_by_students(xml: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for (_, _, text, feedback) in xml_questions(xml).iter().filter(|q| q.0 == "cloze") {
+        let mut t = text
+            .replace("(0.5, not 0,5)", "")
+            .replace("(0.5, bukan 0,5)", "");
+        while let Some((k, ..)) = next_blank(&t) {
+            let end = k + t[k..].find('}').unwrap();
+            t.replace_range(k..=end, "_");
         }
-        let texts: Vec<String> = xml_questions(&xml).into_iter().map(|q| q.2).collect();
-        assert!(texts.iter().any(|t| t.contains(pct)), "--decimal {flag}");
+        out.push(t);
+        out.push(feedback.clone());
+        for b in cloze_blanks(text) {
+            out.extend(b.alts.iter().map(|a| a.feedback.clone()));
+        }
     }
+    for files in feedback_files(xml) {
+        for (_, bytes) in files {
+            out.push(String::from_utf8(bytes).unwrap());
+        }
+    }
+    // the text, not the markup (an SVG's points="1,2 3,4"); the Direct3D
+    // page's own "(0,0,1)", quoted, is no decimal
+    out.iter()
+        .map(|s| without_tags(s).replace("(0,0,1)", ""))
+        .collect()
+}
+
+/// `s` without its tags (`<…>`).
+fn without_tags(s: &str) -> String {
+    let mut out = String::new();
+    let mut inside = false;
+    for c in s.chars() {
+        match c {
+            '<' => inside = true,
+            '>' if inside => {
+                inside = false;
+                out.push(' ');
+            }
+            c if !inside => out.push(c),
+            _ => {}
+        }
+    }
+    out
+}
+
+/// One exam, one decimal mark: whatever the language, every number of the
+/// statement, the blanks, the answers, the worked solution and the figures
+/// is written with the mark of `--decimal`, and a comma quiz separates the
+/// blanks of a vector with `;`, as its statement separates components.
+#[test]
+fn a_quiz_writes_every_number_with_the_mark_it_tells_students_to_type() {
+    for lang in ["id", "en"] {
+        for (flag, mark, other, pct, sep) in [
+            ("point", '.', ',', "0.1 %", "}, {"),
+            ("comma", ',', '.', "0,1 %", "}; {"),
+        ] {
+            let dir = generate(
+                &format!("marks-{lang}-{flag}"),
+                "moodle",
+                &["--lang", lang, "--decimal", flag],
+            );
+            let xml = std::fs::read_to_string(dir.join("quiz.xml")).unwrap();
+            assert_eq!(statements(&xml).len(), 14, "7 problems, 2 variants");
+            let read = read_by_students(&xml);
+            // every problem of seed 11 has decimals (a near plane, a
+            // coefficient, the worked steps), all written the same way
+            assert!(read.iter().any(|s| has_decimal(s, mark)));
+            for s in &read {
+                assert!(
+                    !has_decimal(s, other),
+                    "--lang {lang} --decimal {flag}: {s}"
+                );
+            }
+            let texts: Vec<String> = xml_questions(&xml).into_iter().map(|q| q.2).collect();
+            assert!(texts.iter().any(|t| t.contains(pct)), "--decimal {flag}");
+            // a vector's blanks are parted as its components are
+            let other_sep = if sep == "}, {" { "}; {" } else { "}, {" };
+            assert!(texts.iter().any(|t| t.contains(sep)), "{flag}");
+            assert!(texts.iter().all(|t| !t.contains(other_sep)), "{flag}");
+        }
+    }
+}
+
+/// Hard windows rest on tan 20°, 25°, 35° or 40°, with no exact form:
+/// bottom = −top is then worked as `bottom ≈ −0.0364`, never `bottom = ≈
+/// −0.0364` with an empty exact form between.
+#[test]
+fn a_hard_window_has_no_empty_exact_form() {
+    let out = tmp("hard-window");
+    let run = grafika()
+        .args(["generate", "--topic", "window", "--difficulty", "hard"])
+        .args(["--count", "10", "--variants", "6", "--seed", "2026"])
+        .args(["--format", "moodle", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(run.status.success());
+    let xml = std::fs::read_to_string(out.join("quiz.xml")).unwrap();
+    let qs: Vec<_> = xml_questions(&xml)
+        .into_iter()
+        .filter(|q| q.0 == "cloze")
+        .collect();
+    assert_eq!(qs.len(), 60);
+    // some of them have no exact form (their answers are marked ≈)
+    assert!(qs.iter().any(|q| q.3.contains("bottom ≈ ")));
+    for q in &qs {
+        assert!(!q.3.contains("= ≈"), "{}", q.3);
+        // a window asked alone is headed by what it asks
+        assert!(q.3.contains("<h4>Part 1: viewing window</h4>"), "{}", q.3);
+        assert!(!q.3.contains("clipping"), "{}", q.1);
+    }
+}
+
+/// specular = ks·max(R·V, 0)ⁿ with L = N = (0, 0, 1), so R = (0, 0, 1),
+/// and V = (1, 0, 1)/√2: R·V = 1/√2, and with n = 64 and ks = 0.5 the
+/// term is 0.5·2⁻³² = 1.164·10⁻¹⁰ in each channel (white specular): below
+/// what a student computes by hand (r·S = 0.001 of full intensity), so it
+/// is asked as 0 ± 0.001, and 0 and the value itself are both right (the
+/// problem asks the term: a lighting problem asks only its colour unless
+/// its `[check] keys` say more).
+const TINY: &str = "title = 'Tiny'\nstatement = 'A far highlight.'\nask = ['shade']\n\n[shade]\nmodel = 'specular'\nlight = [0, 0, 1]\nnormal = [0, 0, 1]\nview = [1, 0, 1]\ncolor = [1, 1, 1]\nks = 0.5\nshininess = 64\n\n[check]\nkeys = ['shade.specular', 'shade.color']\n";
+
+#[test]
+fn a_number_below_what_a_student_computes_by_hand_is_asked_as_zero() {
+    let xml = one_problem_file(TINY, Lang::En, Decimal::Point);
+    let qs = xml_questions(&xml);
+    let text = &qs[1].2;
+    let specular = blanks_labelled(&xml, "specular term");
+    assert_eq!(specular.len(), 3, "{text}");
+    let exact = 0.5 * 2f64.powi(-32);
+    for b in &specular {
+        assert_eq!(num_tol(&b.alts[0].answer), (0.0, 0.001), "{b:?}");
+        let (x, t) = num_tol(&b.alts[0].answer);
+        assert!((exact - x).abs() <= t && (0.0 - x).abs() <= t);
+        // every wrong answer is apart from it, and none absurd for a
+        // channel of colour: at most 1,000 times full intensity
+        for a in &b.alts[1..] {
+            let (y, u) = num_tol(&a.answer);
+            assert!((y - x).abs() > t + u && y.abs() <= 1e3, "{a:?}");
+        }
+    }
+    // the feedback shows no exponent Moodle misreads: 1.164e-10 if any,
+    // never 1.164e−10
+    assert!(!qs[1].3.contains("e−"), "{}", qs[1].3);
+}
+
+/// A zero key's mistaken values are kept within 1,000 times its answer's
+/// scale: easy shading exams of seed 2026 had 661,230 and 58,465 for a
+/// specular term of 0 (a normal not divided by |N| raised to the nth).
+#[test]
+fn a_zero_key_gets_no_absurd_mistaken_value() {
+    let out = tmp("zero-keys");
+    let run = grafika()
+        .args(["generate", "--topic", "shade", "--difficulty", "easy"])
+        .args(["--count", "7", "--variants", "20", "--seed", "2026"])
+        .args(["--format", "moodle", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(run.status.success());
+    let xml = std::fs::read_to_string(out.join("quiz.xml")).unwrap();
+    let mut zeros = 0;
+    for (_, _, text, _) in xml_questions(&xml).iter().filter(|q| q.0 == "cloze") {
+        for p in text.split("<p>").skip(1) {
+            let blanks = cloze_blanks(p.split("</p>").next().unwrap());
+            let keys: Vec<f64> = (blanks.iter())
+                .filter(|b| b.kind == "NUMERICAL")
+                .map(|b| num_tol(&b.alts[0].answer).0)
+                .collect();
+            // every shading answer here is a colour or at most a unit
+            // vector's: a scale of at least 1
+            let scale = keys.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+            for b in blanks.iter().filter(|b| b.kind == "NUMERICAL") {
+                let x = num_tol(&b.alts[0].answer).0;
+                zeros += (x == 0.0) as usize;
+                for a in &b.alts[1..] {
+                    let y = num_tol(&a.answer).0;
+                    assert!(y.abs() <= 1e3 * x.abs().max(scale), "{y} for {x}");
+                }
+            }
+        }
+    }
+    assert!(zeros > 0);
+}
+
+/// `--split-mb`: files under the size, every question once, in order, each
+/// file naming the category before its first question.
+#[test]
+fn a_quiz_split_under_a_size_holds_the_same_questions() {
+    let whole = generate("split-whole", "moodle", &[]);
+    let split = generate("split", "moodle", &["--split-mb", "0.1"]);
+    let xml = std::fs::read_to_string(whole.join("quiz.xml")).unwrap();
+    let mut names: Vec<String> = std::fs::read_dir(&split)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| !n.starts_with('.'))
+        .collect();
+    names.sort();
+    assert!(names.len() > 2, "{names:?}");
+    let mut questions = Vec::new();
+    for (k, n) in names.iter().enumerate() {
+        assert_eq!(n, &format!("quiz-{:02}.xml", k + 1));
+        let text = std::fs::read_to_string(split.join(n)).unwrap();
+        assert!(text.len() <= 100_000, "{n}: {} bytes", text.len());
+        let qs = xml_questions(&text);
+        assert_eq!(qs[0].0, "category", "{n} names its category first");
+        questions.extend(qs.into_iter().filter(|q| q.0 == "cloze"));
+    }
+    let all: Vec<_> = xml_questions(&xml)
+        .into_iter()
+        .filter(|q| q.0 == "cloze")
+        .collect();
+    assert!(questions == all, "the same questions, in order");
+    // GIFT too
+    let gift = generate("split-gift", "gift", &["--split-mb", "0.2"]);
+    let files = std::fs::read_dir(&gift).unwrap().count();
+    assert!(files > 2, "{files}");
+    // a question that cannot fit, a size that is no size, a format that is
+    // no quiz: one-line errors naming the flag, exit status 2
+    for (format, mb) in [
+        ("moodle", "0.001"),
+        ("moodle", "0"),
+        ("moodle", "-1"),
+        ("md", "2"),
+    ] {
+        let out = grafika()
+            .args(["generate", "--topic", "view", "--format", format])
+            .arg(format!("--split-mb={mb}"))
+            .arg("--out")
+            .arg(tmp(&format!("bad-split-{format}-{mb}")))
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{format} {mb}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains("split-mb"), "{err}");
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+    }
+    // a split quiz refuses to write over an earlier quiz file unless
+    // --force, which replaces it (and no more of the earlier files stay)
+    let again = grafika()
+        .args([
+            "generate",
+            "--topic",
+            "basis,view,project,window,clip,shade,pipeline",
+        ])
+        .args([
+            "--count",
+            "7",
+            "--variants",
+            "2",
+            "--seed",
+            "11",
+            "--format",
+            "moodle",
+        ])
+        .args(["--split-mb", "0.5", "--out"])
+        .arg(&split)
+        .output()
+        .unwrap();
+    assert_eq!(again.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&again.stderr).contains("quiz-01.xml"));
+    let forced = grafika()
+        .args([
+            "generate",
+            "--topic",
+            "basis,view,project,window,clip,shade,pipeline",
+        ])
+        .args([
+            "--count",
+            "7",
+            "--variants",
+            "2",
+            "--seed",
+            "11",
+            "--format",
+            "moodle",
+        ])
+        .args(["--split-mb", "0.5", "--force", "--out"])
+        .arg(&split)
+        .output()
+        .unwrap();
+    assert!(
+        forced.status.success(),
+        "{}",
+        String::from_utf8_lossy(&forced.stderr)
+    );
+    let left = std::fs::read_dir(&split).unwrap().count();
+    assert!(
+        left < names.len() + 1,
+        "{left} entries: the stale files are gone"
+    );
+}
+
+/// Marks by hand: the camera example with `"view.n" = 3` and
+/// `"view.points.Pref" = 2` (u and v 1 each) is worth 1 + 1 + 3 + 2 = 7.
+/// Each answer has 3 blanks; m·L/3 must be whole for m = 1, 1, 3, 2, so
+/// L = 3 and the blanks weigh 1 (u, v), 3 (n), 2 (Pref′): each answer's
+/// blanks together weigh 3·m, its marks in a total of 21 = 3·7. Without
+/// `[marks]`, every blank weighs 1. The statement says "(7 marks)".
+#[test]
+fn a_blank_weighs_its_share_of_the_answers_marks() {
+    let marked = format!("{CAMERA}\n[marks]\n\"view.n\" = 3\n\"view.points.Pref\" = 2\n");
+    let qs = one_problem_xml(&marked, Lang::En);
+    let weights: Vec<u32> = cloze_blanks(&qs[1].2).iter().map(|b| b.weight).collect();
+    assert_eq!(weights, [1, 1, 1, 1, 1, 1, 3, 3, 3, 2, 2, 2]);
+    assert!(
+        qs[1].2.contains("The camera example. (7 marks)"),
+        "{}",
+        qs[1].2
+    );
+    let plain = one_problem_xml(CAMERA, Lang::Id);
+    assert!(cloze_blanks(&plain[1].2).iter().all(|b| b.weight == 1));
+    assert!(plain[1].2.contains("(4 poin)"));
 }

@@ -597,6 +597,12 @@ pub struct RenderArgs {
     /// Worker threads (default: one per core).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
     pub threads: Option<u32>,
+    /// The most work allowed, in millions of steps (about a pixel test
+    /// each): a render estimated at more, all its frames together, is
+    /// refused before it starts (docs/spec.md §7).
+    #[arg(long, value_name = "MILLIONS", default_value_t = crate::input::scene::WORK_LIMIT,
+          value_parser = clap::value_parser!(u64).range(1..))]
+    pub work_limit: u64,
 }
 
 /// The format of the question sheet and the key.
@@ -649,6 +655,11 @@ pub struct GenerateArgs {
     /// a Moodle in English, comma for one with the Indonesian language pack.
     #[arg(long, value_enum, default_value_t = Decimal::Point)]
     pub decimal: Decimal,
+    /// Split a Moodle or GIFT quiz into files of at most MB megabytes
+    /// (10⁶ bytes) each, quiz-01.xml, quiz-02.xml, …: PHP's default upload
+    /// limit is 2 MB.
+    #[arg(long, value_name = "MB")]
+    pub split_mb: Option<f64>,
 }
 
 /// Gives a type of a lower layer its command-line choices: each variant

@@ -62,7 +62,7 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
                 class::mark_file(&paper, path, settings)
             } else {
                 let (student, answers) = check::read_answers(path)?;
-                let who = student.unwrap_or_else(|| path.display().to_string());
+                let who = student.unwrap_or_else(|| check::shown_name(&path.display().to_string()));
                 let m = check::mark(
                     &paper.variants[0][0].problem,
                     &who,

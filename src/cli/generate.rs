@@ -4,10 +4,12 @@
 use crate::cli::args::{Format, GenerateArgs};
 use crate::cli::stage::Stage;
 use crate::error::{Error, Result};
+use crate::msg::QuizWord;
 use crate::msg::{Bound, ErrMsg};
 use crate::report::doc::Doc;
-use crate::report::gift::gift;
-use crate::report::moodle::{moodle_xml, Written};
+use crate::report::gift::{gift_units, GIFT};
+use crate::report::moodle::{moodle_units, Written, XML};
+use crate::report::quizfile::pack;
 use crate::report::sheets::{
     exam_json, exam_title, key_file, key_title, problem_file, sheets, written_json, written_summary,
 };
@@ -23,14 +25,21 @@ pub fn run(a: &GenerateArgs, force: bool, json: bool, style: &Style) -> Result<S
     Ok(if json {
         written_json(&files, a.seed)
     } else {
-        written_summary(
+        let mut s = written_summary(
             &files,
             a.variants,
             a.count,
             &a.topic,
             a.seed,
             (&a.out, style.lang),
-        )
+        );
+        if a.format == Format::Gift {
+            // said to the lecturer here, never to students in a question
+            let note = crate::report::words::of(style.lang).quiz(&QuizWord::FiguresInMoodle);
+            s.push_str(&note);
+            s.push('\n');
+        }
+        s
     })
 }
 
@@ -60,11 +69,10 @@ fn check_size(a: &GenerateArgs, force: bool) -> Result<()> {
 }
 
 /// The names the output has in `--out`: `quiz.xml`, `variant-01` …, or one
-/// exam's files.
+/// exam's files (a quiz split by `--split-mb`: [`quiz_name`]).
 fn entries(a: &GenerateArgs) -> Vec<String> {
     match a.format {
-        Format::Moodle => vec!["quiz.xml".into()],
-        Format::Gift => vec!["quiz.gift".into()],
+        Format::Moodle | Format::Gift => vec![quiz_name(a.format, None)],
         _ if a.variants == 1 => exam_files(a.count, a.format),
         _ => (1..=a.variants).map(|v| variant_name(v as usize)).collect(),
     }
@@ -106,14 +114,11 @@ fn sheet_ext(format: Format) -> Option<&'static str> {
 /// [`Stage`]); returns the files written.
 pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<Vec<PathBuf>> {
     check_size(a, force)?;
+    let limit = split_limit(a)?;
     if matches!(a.format, Format::Moodle | Format::Gift) {
-        let rel = quiz_tolerance(a)?;
-        let mut stage = Stage::begin(&a.out, entries(a), force)?;
-        let file = write_quiz(a, rel, &mut stage, style)?;
-        stage.commit()?;
-        return Ok(vec![file]);
+        return write_quiz(a, quiz_tolerance(a)?, limit, force, style);
     }
-    let mut stage = Stage::begin(&a.out, entries(a), force)?;
+    let mut stage = Stage::begin(&a.out, entries(a), force, run_of(a))?;
     let mut files = Vec::new();
     let bar = progress(a, style);
     for v in 0..a.variants {
@@ -129,6 +134,23 @@ pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<Vec<P
     bar.iter().for_each(|b| b.finish_and_clear());
     stage.commit()?;
     Ok(files)
+}
+
+/// The run, as the list of generate's own files says it: what it was
+/// asked, so that the same command writes the same list.
+fn run_of(a: &GenerateArgs) -> String {
+    use clap::ValueEnum;
+    let topics: Vec<&str> = a.topic.iter().map(|t| t.name()).collect();
+    let format = a.format.to_possible_value();
+    format!(
+        "(seed {}, topic {}, difficulty {}, count {}, variants {}, format {})",
+        a.seed,
+        topics.join(","),
+        a.difficulty.name(),
+        a.count,
+        a.variants,
+        format.as_ref().map_or("", |v| v.get_name()),
+    )
 }
 
 /// A progress bar over the variants, on a terminal, when there are more
@@ -214,9 +236,111 @@ fn quiz_tolerance(a: &GenerateArgs) -> Result<f64> {
     }
 }
 
+/// The bytes a quiz file may have, from `--split-mb` (megabytes of 10⁶
+/// bytes, a number above 0), given only with a quiz's format.
+fn split_limit(a: &GenerateArgs) -> Result<Option<usize>> {
+    let Some(mb) = a.split_mb else {
+        return Ok(None);
+    };
+    if !matches!(a.format, Format::Moodle | Format::Gift) {
+        return Err(Error::why("split-mb", ErrMsg::SplitNotQuiz));
+    }
+    if !(mb.is_finite() && mb > 0.0) {
+        return Err(Error::why(
+            "split-mb",
+            ErrMsg::MustBe(Bound::AboveZero, mb.to_string()),
+        ));
+    }
+    Ok(Some((mb * 1e6).floor().min(usize::MAX as f64) as usize))
+}
+
+/// A quiz file's name: `quiz.xml` (`quiz.gift`), or file k (from 1) of a
+/// split quiz, `quiz-01.xml`.
+pub fn quiz_name(format: Format, k: Option<usize>) -> String {
+    let ext = if format == Format::Gift {
+        "gift"
+    } else {
+        "xml"
+    };
+    match k {
+        None => format!("quiz.{ext}"),
+        Some(k) => format!("quiz-{k:02}.{ext}"),
+    }
+}
+
 /// Writes every variant into one Moodle XML or GIFT file in the output
-/// directory: quiz.xml or quiz.gift.
-fn write_quiz(a: &GenerateArgs, rel: f64, stage: &mut Stage, style: &Style) -> Result<PathBuf> {
+/// directory (quiz.xml or quiz.gift), or, with a `limit` in bytes, into
+/// as many files as it takes, none larger (quiz-01.xml, …). An existing
+/// entry is refused before the work (the names of a split quiz are known
+/// once it is written: any quiz file is refused then, without `--force`).
+fn write_quiz(
+    a: &GenerateArgs,
+    rel: f64,
+    limit: Option<usize>,
+    force: bool,
+    style: &Style,
+) -> Result<Vec<PathBuf>> {
+    let early = match limit {
+        None => Some(Stage::begin(&a.out, entries(a), force, run_of(a))?),
+        Some(_) => {
+            refuse_quiz_files(a, force)?;
+            None
+        }
+    };
+    let texts = quiz_files(a, rel, limit, style)?;
+    let mut stage = match early {
+        Some(stage) => stage,
+        None => Stage::begin(
+            &a.out,
+            texts.iter().map(|(n, _)| n.clone()).collect(),
+            force,
+            run_of(a),
+        )?,
+    };
+    let files = (texts.iter())
+        .map(|(name, text)| stage.write(name, text))
+        .collect::<Result<Vec<_>>>()?;
+    stage.commit()?;
+    Ok(files)
+}
+
+/// Without `--force`, an error naming a quiz file already in `--out`
+/// (`quiz.xml` or `quiz-NN.xml`; `.gift`): a split quiz's names are known
+/// only once it is written, so any of them is refused before the work.
+fn refuse_quiz_files(a: &GenerateArgs, force: bool) -> Result<()> {
+    if force {
+        return Ok(());
+    }
+    let ext = quiz_name(a.format, None).replace("quiz.", ".");
+    let Ok(dir) = std::fs::read_dir(&a.out) else {
+        return Ok(());
+    };
+    let quiz = |name: &String| {
+        let numbered = (name.strip_prefix("quiz-"))
+            .and_then(|r| r.strip_suffix(&ext))
+            .is_some_and(|k| !k.is_empty() && k.chars().all(|c| c.is_ascii_digit()));
+        numbered || *name == quiz_name(a.format, None)
+    };
+    let first = (dir.flatten())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(quiz)
+        .min();
+    match first {
+        Some(name) => {
+            let shown = a.out.join(&name).display().to_string();
+            Err(Error::why("out", ErrMsg::ExistsForce(shown)))
+        }
+        None => Ok(()),
+    }
+}
+
+/// The quiz's files, (name, text): one, or split under `limit` bytes.
+fn quiz_files(
+    a: &GenerateArgs,
+    rel: f64,
+    limit: Option<usize>,
+    style: &Style,
+) -> Result<Vec<(String, String)>> {
     let bar = progress(a, style);
     let exams = (0..a.variants)
         .map(|v| {
@@ -226,13 +350,28 @@ fn write_quiz(a: &GenerateArgs, rel: f64, stage: &mut Stage, style: &Style) -> R
         .collect::<Result<Vec<_>>>()?;
     bar.iter().for_each(|b| b.finish_and_clear());
     let quiz = Quiz::new(exams, &a.topic, rel);
-    let w = Written {
-        style,
-        decimal: a.decimal,
+    let w = Written::new(style, a.decimal);
+    let (units, frame) = match a.format {
+        Format::Gift => (gift_units(&quiz, &w), GIFT),
+        _ => (moodle_units(&quiz, &w), XML),
     };
-    let (name, text) = match a.format {
-        Format::Gift => ("quiz.gift", gift(&quiz, &w)),
-        _ => ("quiz.xml", moodle_xml(&quiz, &w)),
-    };
-    stage.write(name, &text)
+    let texts = pack(&units, frame, limit).map_err(|i| {
+        let mb = |bytes: usize| format!("{:.3}", bytes as f64 / 1e6);
+        let size =
+            units[i].text.len() + units[i].category.len() + frame.head.len() + frame.foot.len();
+        let limit = mb(limit.unwrap_or(0));
+        Error::why(
+            "split-mb",
+            ErrMsg::QuestionTooLarge(units[i].name.clone(), mb(size), limit),
+        )
+    })?;
+    Ok(match limit {
+        None => texts
+            .into_iter()
+            .map(|t| (quiz_name(a.format, None), t))
+            .collect(),
+        Some(_) => (texts.into_iter().enumerate())
+            .map(|(k, t)| (quiz_name(a.format, Some(k + 1)), t))
+            .collect(),
+    })
 }

@@ -51,9 +51,15 @@ pub fn run(cli: &Cli) -> Result<Report> {
 fn run_writing(cli: &Cli, outputs: &Outputs) -> Result<Report> {
     crate::num::real::take_grew_too_large();
     let mut report = run_unchecked(cli, outputs)?;
-    if crate::num::real::take_grew_too_large() {
+    let grew = crate::num::real::take_grew_too_large();
+    if grew.terms {
         let n = crate::num::real::MAX_EXACT_TERMS;
         report.warnings.push(Msg::ExactTooLarge(n));
+    }
+    if grew.bits {
+        report
+            .warnings
+            .push(Msg::ExactTooLong(crate::num::real::MAX_EXACT_BITS));
     }
     // A NaN or ∞ in a step is refused as one in the results is.
     let step = || report.non_finite_step_value();
@@ -133,6 +139,14 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
         }),
     };
     // `render -o -` writes the PNG on standard output: the summary goes to stderr.
+    // What the writers did besides (a stale temporary file removed).
+    for note in write::take_notes() {
+        print::stderr_line(&format!(
+            "{}: {}",
+            style.doc(DocWord::Warning),
+            style.w(&note)
+        ));
+    }
     let png_on_stdout = matches!(&cli.command, Command::Render(a) if a.output.as_os_str() == "-");
     match printed {
         Ok((text, status)) if png_on_stdout => {
@@ -207,14 +221,20 @@ fn before_any_work(cli: &Cli, outputs: &Outputs) -> Result<()> {
         }
         c => planned.extend(figure_path(c).map(|f| (f.as_path(), "figure"))),
     }
+    // The same file given to two flags (by any name) is refused before
+    // anything is written; a device such as /dev/null may take several.
     for (i, (p, field)) in planned.iter().enumerate() {
-        outputs.check(p, field)?;
-        if planned[..i].iter().any(|(q, _)| q == p) {
+        let twice = planned[..i].iter().find(|(q, _)| write::same_path(q, p));
+        if let Some((_, other)) = twice.filter(|_| !write::is_device(p)) {
+            let shown = p.display().to_string();
             return Err(Error::why(
                 *field,
-                ErrMsg::ExistsForce(p.display().to_string()),
+                ErrMsg::SameOutput(shown, other.to_string()),
             ));
         }
+    }
+    for (p, field) in &planned {
+        outputs.check(p, field)?;
     }
     Ok(())
 }

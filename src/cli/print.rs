@@ -73,32 +73,13 @@ pub fn stderr_line(text: &str) {
     let _ = writeln!(err, "{}", escape::terminal(text, false));
 }
 
-/// Refuses a closed standard output: at start-up the Rust runtime opens
-/// `/dev/null` (read-write) on a closed descriptor 1, where every result
-/// would vanish without an error. A shell's `> /dev/null` opens it
-/// write-only, and is allowed (Linux; elsewhere nothing is refused).
+/// Refuses a closed standard output (`>&-`), where every result would
+/// vanish without an error. Only a descriptor closed when the process
+/// started counts ([`crate::input::streams`]): `> /dev/null` and
+/// `1<>/dev/null` discard the output as asked.
 pub fn refuse_closed_stdout() -> Result<()> {
-    if stdout_was_closed() {
+    if crate::input::streams::stdout_closed() {
         return Err(Error::why("stdout", ErrMsg::StdoutClosed));
     }
     Ok(())
-}
-
-#[cfg(target_os = "linux")]
-fn stdout_was_closed() -> bool {
-    let target = std::fs::read_link("/proc/self/fd/1");
-    if !target.is_ok_and(|t| t == std::path::Path::new("/dev/null")) {
-        return false;
-    }
-    // The access mode in the flags (octal): 2 is O_RDWR.
-    let info = std::fs::read_to_string("/proc/self/fdinfo/1").unwrap_or_default();
-    info.lines()
-        .find_map(|l| l.strip_prefix("flags:"))
-        .and_then(|f| u32::from_str_radix(f.trim(), 8).ok())
-        .is_some_and(|flags| flags & 3 == 2)
-}
-
-#[cfg(not(target_os = "linux"))]
-fn stdout_was_closed() -> bool {
-    false
 }

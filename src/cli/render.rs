@@ -18,12 +18,13 @@ use std::time::{Duration, Instant};
 /// Runs `render`; the PNG is written through `outputs` (the scene's mesh
 /// files are among the inputs it never writes over).
 pub fn run(a: &RenderArgs, lang: Lang, outputs: &Outputs) -> Result<Report> {
-    let mut scene = Scene::read(&a.scene)?;
+    let mut scene = Scene::read(&a.scene, a.work_limit)?;
     outputs.reads(scene.files.iter().map(|p| p.as_path()));
     if a.output.as_os_str() != "-" {
         outputs.check(&a.output, "output")?;
     }
     let opt = options(a, &scene);
+    within_limit(a, &scene, &opt)?;
     render::release_unused(&mut scene, &opt);
     let pixel = a.explain_pixel.as_deref().map(parse_pixel).transpose()?;
     if let Some((x, y)) = pixel {
@@ -59,6 +60,18 @@ pub fn run(a: &RenderArgs, lang: Lang, outputs: &Outputs) -> Result<Report> {
         pixel,
         rec,
     ))
+}
+
+/// Refuses a render whose estimated work ([`render::work`]), all its
+/// `--repeat` frames together, passes `--work-limit`.
+fn within_limit(a: &RenderArgs, scene: &Scene, opt: &Options) -> Result<()> {
+    let frame = render::work::estimate(scene, opt)?.total();
+    let total = frame.saturating_mul(u64::from(a.repeat));
+    if total > a.work_limit.saturating_mul(1_000_000) {
+        let e = ErrMsg::RenderWork(total.div_ceil(1_000_000), a.repeat, a.work_limit);
+        return Err(Error::why("work-limit", e));
+    }
+    Ok(())
 }
 
 /// The scene's settings with the flags' changes.

@@ -2,7 +2,8 @@
 //! expressions ([`Num`]), vectors of them, angles in degrees or radians, and
 //! TOML errors turned into `file:line:column: message` naming the field.
 
-use crate::error::Error;
+use crate::error::{Error, Result};
+use crate::msg::ErrMsg;
 use crate::msg::TomlErr;
 use crate::num::{parse_expr, Expr};
 use serde::de::{self, Deserializer};
@@ -243,4 +244,140 @@ pub fn line_col(text: &str, offset: usize) -> (usize, usize) {
         .unwrap_or(before.chars().count())
         + 1;
     (line, col)
+}
+
+/// The most values the arrays of one TOML file may hold together (and
+/// `[[…]]` tables), counted before the file is read: a problem of 2,000
+/// points holds 6,000. Each value read costs the TOML reader about 300
+/// bytes, so this bounds its memory (a 20 MB array of 10 million integers
+/// took 2.7 GB).
+pub const MAX_TOML_VALUES: usize = 100_000;
+
+/// The deepest nesting of arrays and inline tables a TOML file may have
+/// (a point is one level, a matrix two).
+pub const MAX_TOML_DEPTH: usize = 32;
+
+/// Reads TOML text as `T` after [`toml_bounds`]; errors carry
+/// `origin:line:col`.
+pub fn parse_toml<T: serde::de::DeserializeOwned>(text: &str, origin: &str) -> Result<T> {
+    toml_bounds(text, origin)?;
+    toml::from_str(text).map_err(|e| toml_error(origin, text, &e))
+}
+
+/// Refuses, before the TOML reader allocates anything, a file whose arrays
+/// hold more than [`MAX_TOML_VALUES`] values or nest deeper than
+/// [`MAX_TOML_DEPTH`]: one pass over the text that skips strings and
+/// comments and counts the commas of arrays (a value follows each) and the
+/// arrays and `[[…]]` headers opened. The error is at the place the bound
+/// is passed.
+pub fn toml_bounds(text: &str, origin: &str) -> Result<()> {
+    match scan(text.as_bytes()) {
+        Ok(()) => Ok(()),
+        Err((at, why)) => {
+            let (line, col) = line_col(text, at);
+            Err(Error::why("file", why).at(format!("{origin}:{line}:{col}")))
+        }
+    }
+}
+
+/// The pass of [`toml_bounds`]: `Err` with the byte offset and the bound
+/// passed.
+fn scan(b: &[u8]) -> std::result::Result<(), (usize, ErrMsg)> {
+    // `open`: the brackets and braces of values open at this point;
+    // `value`: on this line a `=` has started a value (at depth 0).
+    let (mut open, mut value, mut count, mut i) = (Vec::new(), false, 0usize, 0usize);
+    let mut add = |n: usize, at: usize| {
+        count += n;
+        if count > MAX_TOML_VALUES {
+            return Err((at, ErrMsg::TomlTooManyValues(MAX_TOML_VALUES)));
+        }
+        Ok(())
+    };
+    while i < b.len() {
+        match b[i] {
+            b'"' | b'\'' => i = skip_string(b, i),
+            b'#' => {
+                i = skip_line(b, i);
+                continue;
+            }
+            b'\n' if open.is_empty() => value = false,
+            b'=' if open.is_empty() => value = true,
+            // A table header (`[a]`, `[[a]]`): not a value; a `[[…]]` is
+            // one more table.
+            b'[' if open.is_empty() && !value => {
+                if b.get(i + 1) == Some(&b'[') {
+                    add(1, i)?;
+                }
+                i = skip_header(b, i);
+                continue;
+            }
+            c @ (b'[' | b'{') => {
+                open.push(c);
+                if open.len() > MAX_TOML_DEPTH {
+                    return Err((i, ErrMsg::TomlTooDeep(MAX_TOML_DEPTH)));
+                }
+                if c == b'[' {
+                    add(1, i)?;
+                }
+            }
+            b']' | b'}' => {
+                open.pop();
+            }
+            b',' if open.last() == Some(&b'[') => add(1, i)?,
+            _ => {}
+        }
+        i += 1;
+    }
+    Ok(())
+}
+
+/// The index of the newline ending the comment or line at `i` (or the end).
+fn skip_line(b: &[u8], i: usize) -> usize {
+    b[i..]
+        .iter()
+        .position(|&c| c == b'\n')
+        .map_or(b.len(), |k| i + k)
+}
+
+/// The index of the last byte of the string starting at `i` (`"…"` with
+/// escapes, `'…'`, and the multi-line `"""…"""` and `'''…'''`); an
+/// unterminated string runs to the end (the TOML reader then says why).
+fn skip_string(b: &[u8], i: usize) -> usize {
+    let q = b[i];
+    let triple = b.get(i + 1) == Some(&q) && b.get(i + 2) == Some(&q);
+    let (mut k, close) = if triple { (i + 3, 3) } else { (i + 1, 1) };
+    while k < b.len() {
+        match b[k] {
+            b'\\' if q == b'"' => k += 1,
+            b'\n' if !triple => return k.saturating_sub(1),
+            c if c == q && (close == 1 || b[k..].starts_with(&[q; 3])) => {
+                // a closing `"""` may be followed by up to two more quotes
+                let mut end = k + close - 1;
+                while close == 3 && b.get(end + 1) == Some(&q) && end + 1 < k + 5 {
+                    end += 1;
+                }
+                return end;
+            }
+            _ => {}
+        }
+        k += 1;
+    }
+    b.len()
+}
+
+/// The index just past a table header starting at `i` (its closing `]` or
+/// `]]`, quoted names skipped), or the line's end.
+fn skip_header(b: &[u8], i: usize) -> usize {
+    let mut k = i + 1;
+    while k < b.len() && b[k] != b'\n' {
+        match b[k] {
+            b'"' | b'\'' => k = skip_string(b, k),
+            b']' => {
+                return k + 1 + usize::from(b.get(k + 1) == Some(&b']'));
+            }
+            _ => {}
+        }
+        k += 1;
+    }
+    k
 }

@@ -20,7 +20,7 @@
 //! ```                              # diffuse, specular (white by default)
 
 use crate::error::{Error, Result};
-use crate::input::fields::{line_col, toml_error, AngleIn, Num, Vec3In};
+use crate::input::fields::{line_col, AngleIn, Num, Vec3In};
 use crate::input::{eval as ev, eval3 as ev3};
 use crate::msg::{ErrMsg, Msg, Thing, Twice};
 use crate::num::vec::{normalize, sub, v3, V3};
@@ -266,7 +266,7 @@ impl LightsFileIn {
 
     /// Parses lights-file text; `origin` names it in messages.
     pub fn parse(text: &str, origin: &str) -> Result<LightsFileIn> {
-        let mut f: LightsFileIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
+        let mut f: LightsFileIn = crate::input::fields::parse_toml(text, origin)?;
         if f.light.is_empty() {
             return Err(Error::why(
                 "lights",

@@ -3,7 +3,7 @@
 
 use crate::error::{Error, Result};
 use crate::input::ask::Part;
-use crate::input::fields::{toml_error, toml_reason, AngleIn, Num, Vec3In};
+use crate::input::fields::{toml_reason, AngleIn, Num, Vec3In};
 use crate::msg::{ErrMsg, Erratum, Lang, Msg};
 use serde::de::{self, Deserializer};
 use serde::Deserialize;
@@ -213,7 +213,7 @@ impl ProblemIn {
     /// Parses a problem from TOML text; syntax and type errors carry the line
     /// and column (`file:line:col`).
     pub fn parse(text: &str, origin: &str) -> Result<ProblemIn> {
-        let mut p: ProblemIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
+        let mut p: ProblemIn = crate::input::fields::parse_toml(text, origin)?;
         crate::input::lights::place(&mut p.light, text, origin)?;
         if let Some(names) = p.ask_names.take() {
             p.ask = Some(names.iter().map(|a| part(a)).collect::<Result<_>>()?);

@@ -3,7 +3,7 @@
 //! the file, line and column, and the validated [`Scene`] the renderer draws.
 
 use crate::error::{Error, Result};
-use crate::input::fields::{line_col, toml_error, value_error, Num};
+use crate::input::fields::{line_col, value_error, Num};
 use crate::input::lights::{light, place, LightIn};
 use crate::input::mesh::{self, Height, Mesh};
 use crate::input::problem::{CameraIn, PerspectiveIn};
@@ -20,6 +20,18 @@ use toml::Spanned;
 /// The most triangles one scene may have, all its objects together
 /// (memory: about 350 bytes each; checked before any mesh is built).
 pub const MAX_TRIANGLES: usize = 4_000_000;
+
+/// The most work a render may take unless `render --work-limit` allows
+/// more, in millions of steps: a step is about one pixel test of the
+/// rasterizer (2 ns of wall time on 2 cores; 4,000 million, about 10 s).
+/// Height formulas count 4 steps per operation evaluated (checked here,
+/// before any is evaluated); the renderer's estimate of a frame, the rest
+/// (`render::work`).
+pub const WORK_LIMIT: u64 = 4_000;
+
+/// Steps per height-formula operation evaluated (a tree walk of about 10
+/// ns per node, single-threaded, against 2 ns of wall time per pixel test).
+pub const FORMULA_STEP: u64 = 4;
 
 /// A finite number, evaluated from a TOML number or an expression string
 /// while the file is read (so a bad value is reported at its position).
@@ -344,16 +356,23 @@ pub struct Scene {
 
 impl Scene {
     /// Reads and validates a scene file; paths inside are relative to it.
-    pub fn read(path: &Path) -> Result<Scene> {
+    /// Its height formulas may take up to `work_limit` million steps.
+    pub fn read(path: &Path, work_limit: u64) -> Result<Scene> {
         let text = crate::input::read_text("scene", path)?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        Scene::parse(&text, &path.display().to_string(), &dir)
+        Scene::parse_within(&text, &path.display().to_string(), &dir, work_limit)
     }
 
     /// Parses and validates scene text; `origin` names it in messages and
-    /// `dir` is where relative OBJ paths start.
+    /// `dir` is where relative OBJ paths start (within [`WORK_LIMIT`]).
     pub fn parse(text: &str, origin: &str, dir: &Path) -> Result<Scene> {
-        let mut s: SceneIn = toml::from_str(text).map_err(|e| toml_error(origin, text, &e))?;
+        Scene::parse_within(text, origin, dir, WORK_LIMIT)
+    }
+
+    /// [`Scene::parse`] with height formulas of up to `work_limit` million
+    /// steps.
+    pub fn parse_within(text: &str, origin: &str, dir: &Path, work_limit: u64) -> Result<Scene> {
+        let mut s: SceneIn = crate::input::fields::parse_toml(text, origin)?;
         place(&mut s.light, text, origin)?;
         let at = |span: std::ops::Range<usize>| {
             let (l, c) = line_col(text, span.start);
@@ -377,7 +396,7 @@ impl Scene {
             Some(m) => material(m, Material::text_default([1.0, 1.0, 1.0]))?,
             None => Material::text_default([1.0, 1.0, 1.0]),
         };
-        budget(&s).map_err(|e| e.at(origin))?;
+        budget(&s, work_limit).map_err(|e| e.at(origin))?;
         let mut lights = Vec::new();
         for (i, l) in s.light.iter().enumerate() {
             // At the renderer's precision: the light `shade --precision f32`
@@ -625,9 +644,10 @@ fn object(i: usize, o: &ObjectIn, base: &Material<f32>, dir: &Path) -> Result<Ob
 
 /// The scene's triangle budget, checked before any mesh or height formula
 /// is evaluated: at most [`MAX_TRIANGLES`] triangles from the shapes' own
-/// counts (an OBJ file's are counted when it is read). Its lights were
-/// counted when they were placed (`lights::MAX_LIGHTS`).
-fn budget(s: &SceneIn) -> Result<()> {
+/// counts (an OBJ file's are counted when it is read), and height formulas
+/// of at most `work_limit` million steps ([`formula_steps`]). Its lights
+/// were counted when they were placed (`lights::MAX_LIGHTS`).
+fn budget(s: &SceneIn, work_limit: u64) -> Result<()> {
     let total = (s.object.iter()).fold(0u64, |t, o| t.saturating_add(shape_triangles(o.get_ref())));
     if total > MAX_TRIANGLES as u64 {
         return Err(Error::why(
@@ -635,7 +655,37 @@ fn budget(s: &SceneIn) -> Result<()> {
             ErrMsg::TooManyTriangles(total as usize, MAX_TRIANGLES),
         ));
     }
+    let (evals, size, steps) = formula_steps(s);
+    if steps > work_limit.saturating_mul(1_000_000) {
+        let need = steps.div_ceil(1_000_000);
+        return Err(Error::why(
+            "object",
+            ErrMsg::FormulaWork(evals, size, need, work_limit),
+        ));
+    }
     Ok(())
+}
+
+/// The height formulas' work: how many evaluations (nx·nz per plane), the
+/// size of the largest formula (its operations and operands) and the
+/// steps of them all, [`FORMULA_STEP`] per node evaluated. A formula that
+/// does not parse counts nothing (its error comes when it is built).
+fn formula_steps(s: &SceneIn) -> (u64, usize, u64) {
+    let (mut evals, mut size, mut steps) = (0u64, 0usize, 0u64);
+    for o in s.object.iter().map(|o| o.get_ref()) {
+        let Some(h) = o
+            .height
+            .as_ref()
+            .and_then(|h| Height::parse(h.get_ref()).ok())
+        else {
+            continue;
+        };
+        let n = u64::from(o.nx.map_or(0, |c| c.0)) * u64::from(o.nz.map_or(0, |c| c.0));
+        evals = evals.saturating_add(n);
+        size = size.max(h.size());
+        steps = steps.saturating_add(n.saturating_mul(h.size() as u64 * FORMULA_STEP));
+    }
+    (evals, size, steps)
 }
 
 /// The triangles a shape's mesh will have, from its counts alone (0 for an
@@ -748,13 +798,9 @@ fn plane_mesh(o: &ObjectIn, f: &dyn Fn(&str) -> String) -> Result<Mesh> {
         ),
         None => None,
     };
-    let m = mesh::plane(nx, nz, dx, dz, |x, z| {
-        h.as_ref().map_or(0.0, |h| h.eval(x, z))
-    });
-    if m.positions.iter().flatten().any(|v| !v.is_finite()) {
-        return Err(Error::why(f("height"), ErrMsg::FormulaNotFinite));
-    }
-    Ok(m)
+    let height = |x, z| h.as_ref().map_or(0.0, |h| h.eval(x, z));
+    mesh::finite_plane(nx, nz, dx, dz, height)
+        .ok_or_else(|| Error::why(f("height"), ErrMsg::FormulaNotFinite))
 }
 
 /// The object's colours: one of `color`, `face_colors`, `vertex_colors`

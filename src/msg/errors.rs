@@ -65,6 +65,68 @@ pub enum Want {
     Number,
 }
 
+/// What a path names, when it is not a regular file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FileKind {
+    /// A FIFO (named pipe).
+    Fifo,
+    /// A socket.
+    Socket,
+    /// A character device (`/dev/null`, a terminal).
+    CharDevice,
+    /// A block device (a disk).
+    BlockDevice,
+    /// A folder.
+    Folder,
+    /// Anything else.
+    Other,
+}
+
+impl FileKind {
+    /// What `meta` (of the file itself, links followed) names.
+    pub fn of(meta: &std::fs::Metadata) -> FileKind {
+        let t = meta.file_type();
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::FileTypeExt;
+            if t.is_fifo() {
+                return FileKind::Fifo;
+            }
+            if t.is_socket() {
+                return FileKind::Socket;
+            }
+            if t.is_char_device() {
+                return FileKind::CharDevice;
+            }
+            if t.is_block_device() {
+                return FileKind::BlockDevice;
+            }
+        }
+        if t.is_dir() {
+            FileKind::Folder
+        } else {
+            FileKind::Other
+        }
+    }
+}
+
+/// Why a folder's `.grafika-generated` is not a list `generate` wrote.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ListWhy {
+    /// It is not a regular file (a link, a folder).
+    NotAFile,
+    /// Its first line is not the one generate writes.
+    Heading,
+    /// A line that is not `SHA-256  NAME`: the line number.
+    Line(usize),
+    /// A name generate never writes: the line number, the name.
+    Name(usize, String),
+    /// It belongs to another user.
+    Owner,
+    /// It is larger than any list generate writes.
+    TooLarge,
+}
+
 /// Why a file could not be read or written (the system's reason, by kind).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum IoWhy {
@@ -298,6 +360,15 @@ pub enum ErrMsg {
     CannotWriteStdout(IoWhy),
     /// Standard output is closed (`>&-`).
     StdoutClosed,
+    /// Standard input is closed (`<&-`) where `-` asks to read it.
+    StdinClosed,
+    /// An input that is not a regular file (a FIFO, a device): path, what it is.
+    InputNotRegular(String, FileKind),
+    /// An output that exists and is neither a regular file nor a device
+    /// grafika writes to directly: path, what it is.
+    OutputNotRegular(String, FileKind),
+    /// The same output file given to two flags: path, the other flag.
+    SameOutput(String, String),
     /// A file that exists; --force overwrites: path.
     ExistsForce(String),
     /// An output that names a folder, not a file: path.
@@ -308,10 +379,23 @@ pub enum ErrMsg {
     IsInput(String),
     /// An entry of generate's output folder it did not write: path, marker.
     NotOwn(String, String),
+    /// A file generate wrote whose content has changed since: path.
+    ChangedSince(String),
+    /// A `.grafika-generated` that is not a list generate wrote: path, why.
+    NotOwnList(String, ListWhy),
+    /// A `.grafika-generated` already in the folder, without `--force`: path.
+    ListExists(String),
+    /// Another `generate` is writing into the folder: the folder, the lock file.
+    Locked(String, String),
     /// Not a directory: path.
     NotDirectory(String),
-    /// An answer file larger than the most read: path, size, the most.
-    AnswerFileTooLarge(String, usize, usize),
+    /// A file read as TOML larger than the most read: path, its size (when
+    /// known: standard input's is not), the most.
+    FileTooLarge(String, Option<u64>, usize),
+    /// A TOML file whose arrays hold more values than read: the most.
+    TomlTooManyValues(usize),
+    /// A TOML file nesting arrays or inline tables deeper than read: the most.
+    TomlTooDeep(usize),
     /// Files of a class that could not be marked: how many, of how many, which.
     NotMarked(usize, usize, String),
     /// A lights file without `[[light]]`: path.
@@ -350,6 +434,13 @@ pub enum ErrMsg {
     TooManyTriangles(usize, usize),
     /// More lights in a scene than the renderer takes: how many, the most.
     TooManyLights(usize, usize),
+    /// A render whose estimated work passes the limit: the estimate, the
+    /// frames, the limit (millions of steps).
+    RenderWork(u64, u32, u64),
+    /// Height formulas whose evaluation passes the work limit: evaluations,
+    /// the formula's size, the limit that would allow it, the limit
+    /// (millions of steps).
+    FormulaWork(u64, usize, u64, u64),
     /// A colour list that is empty.
     NeedsColour,
     /// A scene without objects.
@@ -387,6 +478,11 @@ pub enum ErrMsg {
     /// More problems than written without --force: problems, count,
     /// variants, megabytes, the most.
     TooManyProblems(u64, u64, u64, u64, u64),
+    /// `--split-mb` with a format that writes no quiz file.
+    SplitNotQuiz,
+    /// One question of a quiz larger than `--split-mb` allows: the
+    /// question's name, its size and the limit (MB, `.` decimals).
+    QuestionTooLarge(String, String, String),
     /// Problem and answers both from standard input.
     BothStdin,
     /// No `[printed]` table: the file.

@@ -358,8 +358,13 @@ pub enum QuizWord {
     OrMistake,
     /// Before a part's number.
     Part,
-    /// GIFT carries no figures.
+    /// GIFT carries no figures: said to the lecturer when a GIFT file is
+    /// written (never in a question, which students read).
     FiguresInMoodle,
+    /// A clipping status's code (`clipped`) or `none` as a student of this
+    /// language types it (`di-clip`, `tidak ada`); a blank accepts it beside
+    /// the code.
+    Word(String),
     /// Before a component's axis.
     Component,
     /// Before a point's number.

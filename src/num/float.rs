@@ -145,6 +145,7 @@ macro_rules! float_scalar {
                     value,
                     exact: None,
                     pretty: None,
+                    beyond: None,
                 }
             }
         }

@@ -61,25 +61,63 @@ pub fn helps(p: &str) -> bool {
             .all(|run| run.len() <= FORM_DIGITS)
 }
 
+/// The decimal of a number shown, with `digits` significant digits: its
+/// value's, or for an exact value beyond the doubles ([`Shown::beyond`])
+/// the exact value's own (`1e−400` for 1/10^400, whose double is 0).
+pub fn decimal(s: &Shown, digits: usize) -> String {
+    match s.beyond {
+        Some((m, e)) => scientific(m, e, digits),
+        None => fmt_dec(s.value, digits),
+    }
+}
+
+/// Whether the decimal shown of `s` is not its value itself, so that it is
+/// marked ≈: a decimal rounded, an exact value beyond the doubles, and in an
+/// exact run a value without exact form that is 0 as a double (an
+/// approximation that underflowed is not an exact 0).
+pub fn is_approx(s: &Shown, digits: usize, exact_mode: bool) -> bool {
+    s.beyond.is_some()
+        || fmt_dec(s.value, digits).parse::<f64>().ok() != Some(s.value)
+        || (exact_mode && s.exact.is_none() && s.value == 0.0)
+}
+
+/// m·10^e written `m e E` with `digits` significant digits of m
+/// (1 ≤ |m| < 10), trailing zeros trimmed.
+fn scientific(m: f64, e: i64, digits: usize) -> String {
+    let digits = digits.clamp(1, 17);
+    let mut text = format!("{:.*}", digits - 1, m);
+    let mut e = e;
+    // rounding may carry to 10 (9.99996 with 4 digits)
+    if text.trim_start_matches('-').starts_with("10") {
+        text = format!("{:.*}", digits - 1, m / 10.0);
+        e += 1;
+    }
+    let text = if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    };
+    format!("{text}e{e}")
+}
+
 /// One number for people: `−√2/60 ≈ −0.02357`, `1/50 = 0.02`, `5`,
 /// `≈ 0.4142` (an approximation in an exact run), `0.4142`; decimals with
-/// `digits` significant digits.
+/// `digits` significant digits. An exact value is never written `= 0`
+/// unless it is 0: beyond the doubles it is its exact form, or, when that
+/// is too long to help, `≈` its decimal (`≈ 1.567e−5283`).
 pub fn shown(s: &Shown, digits: usize, exact_mode: bool) -> String {
-    let dec = fmt_dec(s.value, digits);
+    let dec = decimal(s, digits);
+    let approx = is_approx(s, digits, exact_mode);
     match &s.pretty {
         Some(p) if is_plain_decimal(p) => p.replace('-', "−"),
         // Beyond the doubles (1/10^400 is 0 as a double, 10^400 is ∞): the
         // exact form alone, never a decimal that says `= 0`.
         Some(p) if (s.value == 0.0 && p != "0") || !s.value.is_finite() => p.replace('-', "−"),
         Some(p) => {
-            let sep = if dec.parse::<f64>().ok() == Some(s.value) {
-                "="
-            } else {
-                "≈"
-            };
+            let sep = if approx { "≈" } else { "=" };
             format!("{p} {sep} {}", dec.replace('-', "−"))
         }
-        None if exact_mode && dec.parse::<f64>().ok() != Some(s.value) => {
+        None if s.beyond.is_some() || (exact_mode && approx) => {
             format!("≈ {}", dec.replace('-', "−"))
         }
         None => dec.replace('-', "−"),
@@ -109,13 +147,44 @@ mod tests {
             value: 0.0,
             exact: Some("1/1e400".into()),
             pretty: Some("√3/30000".into()),
+            beyond: None,
         };
         assert_eq!(shown(&tiny, 4, true), "√3/30000");
         let zero = Shown {
             value: 0.0,
             exact: Some("0".into()),
             pretty: Some("0".into()),
+            beyond: None,
         };
         assert_eq!(shown(&zero, 4, true), "0");
+    }
+
+    #[test]
+    fn an_exact_value_too_long_to_show_is_its_decimal_marked_approximate() {
+        // (2/3)^3000 = 2^3000/3^3000: log10 = 3000·log10(2/3) = −528.27…,
+        // so 10^−528.27… = 5.3…e−529 (by hand: 10^0.7294 = 5.36).
+        let tiny = Shown {
+            value: 0.0,
+            exact: Some("2^3000/3^3000".into()),
+            pretty: None,
+            beyond: Some((5.3621, -529)),
+        };
+        assert_eq!(shown(&tiny, 4, true), "≈ 5.362e−529");
+        // A mantissa that rounds up carries into the exponent.
+        assert_eq!(scientific(9.99996, -10, 4), "1e-9");
+        assert_eq!(scientific(-2.5, 400, 4), "-2.5e400");
+    }
+
+    #[test]
+    fn an_approximation_that_underflowed_is_not_an_exact_zero() {
+        let under = Shown {
+            value: 0.0,
+            exact: None,
+            pretty: None,
+            beyond: None,
+        };
+        assert_eq!(shown(&under, 4, true), "≈ 0");
+        // At f64 a zero is the double 0.
+        assert_eq!(shown(&under, 4, false), "0");
     }
 }

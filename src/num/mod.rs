@@ -60,6 +60,10 @@ pub struct Shown {
     pub exact: Option<String>,
     /// Unicode exact form (`−√2/60`) for people.
     pub pretty: Option<String>,
+    /// An exact value beyond the doubles (1/10^400, whose nearest double
+    /// is 0): its decimal as a mantissa in [1, 10) and a power of ten, so
+    /// that it is shown as `≈ 1e−400`, never as 0.
+    pub beyond: Option<(f64, i64)>,
 }
 
 /// The truth value of a comparison, one per lane: `bool` for a number of

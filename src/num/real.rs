@@ -12,7 +12,7 @@ mod format;
 mod surd;
 mod trig;
 
-pub use surd::{Surd, MAX_EXACT_TERMS};
+pub use surd::{Surd, MAX_EXACT_BITS, MAX_EXACT_TERMS};
 
 use std::cmp::Ordering;
 use std::fmt;
@@ -181,27 +181,52 @@ impl From<i64> for Real {
 }
 
 thread_local! {
-    /// Whether an exact result was left approximate for its size since
-    /// [`take_grew_too_large`] last looked (on this thread).
-    static GREW: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    /// Why exact results were left approximate since [`take_grew_too_large`]
+    /// last looked (on this thread): bit 0, too many terms; bit 1, numbers
+    /// too long.
+    static GREW: std::cell::Cell<u8> = const { std::cell::Cell::new(0) };
+}
+
+/// Why exact values were left approximate.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Grew {
+    /// A value grew past [`surd::MAX_EXACT_TERMS`] terms.
+    pub terms: bool,
+    /// A value's numbers grew past [`surd::MAX_EXACT_BITS`] bits.
+    pub bits: bool,
+}
+
+const TERMS: u8 = 1;
+const BITS: u8 = 2;
+
+fn grew(why: u8) {
+    GREW.with(|g| g.set(g.get() | why));
 }
 
 /// Whether, since the last call, an exact value grew past
-/// [`surd::MAX_EXACT_TERMS`] terms and was left approximate (so the
-/// caller can say so); clears the mark.
-pub fn take_grew_too_large() -> bool {
-    GREW.with(|g| g.replace(false))
+/// [`surd::MAX_EXACT_TERMS`] terms or [`surd::MAX_EXACT_BITS`] bits and
+/// was left approximate (so the caller can say so); clears the marks.
+pub fn take_grew_too_large() -> Grew {
+    let g = GREW.with(|g| g.replace(0));
+    Grew {
+        terms: g & TERMS != 0,
+        bits: g & BITS != 0,
+    }
 }
 
 /// An exact result kept exact while it has at most
-/// [`surd::MAX_EXACT_TERMS`] terms; beyond that its f64 value, marked
+/// [`surd::MAX_EXACT_TERMS`] terms and no number longer than
+/// [`surd::MAX_EXACT_BITS`] bits; beyond that its f64 value, marked
 /// approximate (the precision ladder's step down, noted by [`GREW`]).
 fn bounded(s: Surd) -> Real {
-    if s.len() <= surd::MAX_EXACT_TERMS {
-        Real::Exact(s)
-    } else {
-        GREW.with(|g| g.set(true));
+    if s.len() > surd::MAX_EXACT_TERMS {
+        grew(TERMS);
         Real::Approx(s.to_f64())
+    } else if s.bits() > surd::MAX_EXACT_BITS {
+        grew(BITS);
+        Real::Approx(s.to_f64())
+    } else {
+        Real::Exact(s)
     }
 }
 
@@ -225,7 +250,7 @@ fn mul_ref(a: &Real, b: &Real) -> Real {
             bounded(x * y)
         }
         (Real::Exact(_), Real::Exact(_)) => {
-            GREW.with(|g| g.set(true));
+            grew(TERMS);
             Real::Approx(a.to_f64() * b.to_f64())
         }
         _ => Real::Approx(a.to_f64() * b.to_f64()),
@@ -240,7 +265,7 @@ fn div_ref(a: &Real, b: &Real) -> Real {
             None if y.is_empty() => Real::Approx(a.to_f64() / b.to_f64()),
             // Too large to rationalize within the bound.
             None => {
-                GREW.with(|g| g.set(true));
+                grew(TERMS);
                 Real::Approx(a.to_f64() / b.to_f64())
             }
         },
@@ -394,6 +419,30 @@ impl Scalar for Real {
     fn abs(&self) -> Self {
         Real::abs(self)
     }
+    /// xⁿ by repeated squaring (as the other precisions), each product
+    /// [`bounded`]; a power whose numbers would pass
+    /// [`surd::MAX_EXACT_BITS`] bits even in the best case
+    /// ([`Surd::power_bits`]) is not formed at all: its f64 value,
+    /// approximate (`shade --shininess 1e9` is no slower than 4).
+    fn powi(&self, n: u32) -> Self {
+        if let Real::Exact(s) = self {
+            if s.power_bits(n) > surd::MAX_EXACT_BITS {
+                grew(BITS);
+                return Real::Approx(s.to_f64().powi(n.min(i32::MAX as u32) as i32));
+            }
+        }
+        let (mut acc, mut base, mut e) = (Real::from_i64(1), self.clone(), n);
+        while e > 0 {
+            if e & 1 == 1 {
+                acc *= base.clone();
+            }
+            e >>= 1;
+            if e > 0 {
+                base = &base * &base;
+            }
+        }
+        acc
+    }
     fn pi() -> Self {
         Real::Approx(std::f64::consts::PI)
     }
@@ -419,10 +468,18 @@ impl Scalar for Real {
         Zero::is_zero(self)
     }
     fn shown(&self) -> Shown {
+        let value = Real::to_f64(self);
+        let beyond = match self {
+            Real::Exact(s) if !s.is_empty() && (value == 0.0 || !value.is_finite()) => {
+                scientific(s)
+            }
+            _ => None,
+        };
         Shown {
-            value: Real::to_f64(self),
+            value,
             exact: self.exact_ascii(),
             pretty: self.exact_pretty().filter(|p| super::format::helps(p)),
+            beyond,
         }
     }
     fn root_shown(&self) -> Shown {
@@ -437,6 +494,31 @@ impl Scalar for Real {
 
 #[cfg(test)]
 mod tests;
+
+/// A nonzero surd beyond the doubles as m·10^e, 1 ≤ |m| < 10: s scaled
+/// exactly by a power of ten into the doubles' range, its exponent first
+/// estimated from the largest term's bit lengths, q·√r ≈ 2^(bits(numerator)
+/// − bits(denominator) + bits(r)/2), and corrected when the scaled value is
+/// still out of range (a sum whose terms cancel is smaller than its largest).
+fn scientific(s: &Surd) -> Option<(f64, i64)> {
+    let log2 = (s.terms())
+        .map(|(r, q)| q.numer().bits() as f64 - q.denom().bits() as f64 + r.bits() as f64 / 2.0)
+        .fold(f64::NEG_INFINITY, f64::max);
+    let mut e10 = (log2 * std::f64::consts::LOG10_2).floor() as i64;
+    for _ in 0..8 {
+        let ten = BigRational::from_integer(BigInt::from(10)).pow(i32::try_from(-e10).ok()?);
+        let y = s.scale(&ten).to_f64();
+        if y == 0.0 {
+            e10 -= 300;
+        } else if !y.is_finite() {
+            e10 += 300;
+        } else {
+            let k = y.abs().log10().floor();
+            return Some((y / 10f64.powi(k as i32), e10 + k as i64));
+        }
+    }
+    None
+}
 
 /// √s of a positive surd as the nearest double, also when s itself is
 /// outside the range of doubles (|v|² of v = (1e308, 1e308, 1) is 2e616):

@@ -28,6 +28,7 @@ use std::time::{Duration, Instant};
 pub(crate) mod geometry;
 pub mod raster;
 mod shade;
+pub mod work;
 
 use geometry::{prepare, triangles};
 use shade::Planes;

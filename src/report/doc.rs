@@ -293,7 +293,7 @@ fn cell(st: &Style, c: &Val) -> String {
         Val::Num(s) => s
             .pretty
             .clone()
-            .unwrap_or_else(|| crate::report::fmt_dec(s.value, st.digits)),
+            .unwrap_or_else(|| crate::num::format::decimal(s, st.digits)),
         other => st.val_inline(other),
     }
 }

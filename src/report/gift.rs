@@ -9,9 +9,10 @@
 //! category whole (the Moodle XML export keeps each variant in one question).
 //!
 //! The writer only writes: the blanks are the tutor's
-//! ([`crate::tutor::generate::quiz`]), the words those of the Moodle XML
-//! writer. GIFT carries no files, so the general feedback says where the
-//! figures are (in the Moodle XML of the same exam).
+//! ([`crate::tutor::generate::quiz`]), the words, labels, spellings and
+//! decimal mark those of the Moodle XML writer. GIFT carries no files: the
+//! general feedback has no figures and says nothing of them (students read
+//! it); `generate` tells the lecturer where the figures are.
 //!
 //! Escaping: text is HTML (`[html]`, with `&`, `<`, `>` escaped), then every
 //! character GIFT reads as syntax, `~ = # { } :` and the backslash, is
@@ -22,72 +23,83 @@ use crate::msg::QuizWord as Q;
 use crate::report::escape;
 use crate::report::lang::Lang;
 use crate::report::moodle::{
-    category, esc, esc_text, feedback, intro_html, number, question_name, solution_html,
-    tolerance_text, Written,
+    category, esc, esc_text, feedback, intro_html, label, number, question_name, solution_html,
+    spellings, tolerance_text, Written,
 };
+use crate::report::quizfile::{pack, Frame, Unit};
 use crate::report::words;
 use crate::stages::trace::Val;
 use crate::tutor::generate::quiz::{Blank, Question, Quiz, Typed};
 use crate::tutor::key::{Field, Key, Value};
 use std::fmt::Write as _;
 
+/// The frame of a GIFT file: nothing around its questions.
+pub const GIFT: Frame = Frame { head: "", foot: "" };
+
 /// The whole GIFT file.
 pub fn gift(q: &Quiz, w: &Written) -> String {
-    let mut s = String::new();
+    pack(&gift_units(q, w), GIFT, None)
+        .unwrap_or_default()
+        .concat()
+}
+
+/// The questions of a GIFT file, each after its variant's `$CATEGORY:`
+/// line ([`crate::report::quizfile`]).
+pub fn gift_units(q: &Quiz, w: &Written) -> Vec<Unit> {
+    let mut units = Vec::new();
     for i in 0..q.count() {
         for (v, exam) in q.variants.iter().enumerate() {
             if let Some(question) = exam.get(i) {
-                let _ = write!(s, "$CATEGORY: {}/{:02}\n\n", category(q, i), v + 1);
-                s.push_str(&variant_questions(question, (i, v), q, w));
+                let cat = format!("$CATEGORY: {}/{:02}\n\n", category(q, i), v + 1);
+                units.extend(variant_questions(question, (i, v), q, w).into_iter().map(
+                    |(name, text)| Unit {
+                        category: cat.clone(),
+                        text,
+                        name,
+                    },
+                ));
             }
         }
     }
-    s
+    units
 }
 
-/// The questions of one variant of one problem: one per blank.
-fn variant_questions(question: &Question, (i, v): (usize, usize), q: &Quiz, w: &Written) -> String {
+/// The questions of one variant of one problem, one per blank: (name,
+/// text).
+fn variant_questions(
+    question: &Question,
+    (i, v): (usize, usize),
+    q: &Quiz,
+    w: &Written,
+) -> Vec<(String, String)> {
     let lang = w.style.lang;
-    let general = gift_escape(&solution_html(question, &figures_note(lang), w.style));
+    let general = gift_escape(&solution_html(question, "", &w.style));
     let intro = intro_html(question, q, w);
     let name = question_name(&question.problem, i, v, lang);
-    let mut s = String::new();
+    let mut out = Vec::new();
     for a in &question.asked {
         for (label, b) in leaf_labels(&a.key, &a.value, lang).iter().zip(&a.blanks) {
             let text = format!("{intro}<p>{} = ?</p>", esc_text(label));
-            let _ = write!(
-                s,
+            let named = format!("{name} — {label}");
+            let q = format!(
                 "::{}::[html]{}{{{} ####{}}}\n\n",
-                gift_escape(&format!("{name} — {label}")),
+                gift_escape(&named),
                 gift_escape(&text),
                 answers(b, lang),
                 general
             );
+            out.push((named, q));
         }
     }
-    s
+    out
 }
 
-/// Where the figures are: GIFT carries no files, the Moodle XML of the same
-/// exam does.
-fn figures_note(lang: Lang) -> String {
-    format!(
-        "<p><i>{}</i></p>",
-        words::of(lang).quiz(&Q::FiguresInMoodle)
-    )
-}
-
-/// The names of a value's leaves, depth first, as the steps name them: the
-/// answer's name (`n` for `view.n`; the whole key where the last name alone
-/// would not say which answer, `view.points.A`), then the component
-/// (`n, component y`; `clip.segment, point 2, component z`).
+/// The names of a value's leaves, depth first: the answer's label as the
+/// Cloze question labels it ([`label`]: `n`, `A'`, `cos α`), then the
+/// component (`n, component y`; `clipped segment, point 2, component z`).
 pub fn leaf_labels(key: &Key, v: &Val, lang: Lang) -> Vec<String> {
-    let (name, colour) = match (key.part, key.segment, &key.value) {
-        (Some(_), None, Value::Field(f)) => {
-            (f.key(), matches!(f, Field::Shading(s) if s.is_colour()))
-        }
-        _ => (key.to_string(), false),
-    };
+    let colour = matches!(key.value, Value::Field(Field::Shading(s)) if s.is_colour());
+    let name = label(key, lang);
     let mut out = Vec::new();
     labels(&name, v, colour, lang, &mut out);
     out
@@ -122,19 +134,24 @@ fn labels(name: &str, v: &Val, colour: bool, lang: Lang, out: &mut Vec<String>) 
     }
 }
 
-/// The answers of one blank, right first.
+/// The answers of one blank, right first (a word in each of its
+/// spellings, [`spellings`]).
 fn answers(b: &Blank, lang: Lang) -> String {
-    let right = match &b.value {
+    let mut s = match &b.value {
         Typed::Num(x) => format!("#={}:{}", number(*x), tolerance_text(b.tolerance)),
-        Typed::Text(t) => format!("={}", gift_escape(t)),
+        Typed::Text(t) => (spellings(t, lang).iter())
+            .map(|w| format!("={}", gift_escape(w)))
+            .collect::<Vec<_>>()
+            .join(" "),
     };
-    let mut s = right;
     for w in &b.wrong {
-        let value = match &w.value {
-            Typed::Num(x) => format!("{}:{}", number(*x), tolerance_text(w.tolerance)),
-            Typed::Text(t) => gift_escape(t),
+        let values = match &w.value {
+            Typed::Num(x) => vec![format!("{}:{}", number(*x), tolerance_text(w.tolerance))],
+            Typed::Text(t) => spellings(t, lang).iter().map(|x| gift_escape(x)).collect(),
         };
-        let _ = write!(s, " =%0%{value}#{}", gift_escape(&esc(&feedback(w, lang))));
+        for value in values {
+            let _ = write!(s, " =%0%{value}#{}", gift_escape(&esc(&feedback(w, lang))));
+        }
     }
     s
 }
@@ -195,6 +212,7 @@ mod tests {
                 value: x,
                 exact: None,
                 pretty: None,
+                beyond: None,
             })
         };
         let v3 = Val::List(vec![num(0.0), num(1.0), num(0.0)]);
@@ -203,18 +221,26 @@ mod tests {
         let c = leaf_labels(&key("shade.color"), &v3, Lang::En);
         assert_eq!(c[2], "color, component b");
         let u = leaf_labels(&key("shade.unclamped"), &v3, Lang::En);
-        assert_eq!(u[0], "unclamped, component r");
+        assert_eq!(u[0], "color before clamping, component r");
+        let a = leaf_labels(&key("shade.cos_alpha"), &Val::List(vec![]), Lang::En);
+        assert!(a.is_empty());
         let clipped = leaf_labels(&key("clip.1.segment"), &v3, Lang::En);
-        assert_eq!(clipped[0], "clip.1.segment, component x");
+        assert_eq!(clipped[0], "segment 1: clipped segment, component x");
         let p = leaf_labels(&key("view.points.A"), &v3, Lang::En);
-        assert_eq!(p[0], "view.points.A, component x");
+        assert_eq!(p[0], "A', component x");
+        let px = leaf_labels(&key("viewport.pixels.A"), &v3, Lang::Id);
+        assert_eq!(px[1], "piksel A, komponen y");
         let seg = Val::List(vec![v3.clone(), v3]);
         let s = leaf_labels(&key("clip.segment"), &seg, Lang::Id);
         assert_eq!(s.len(), 6);
-        assert_eq!(s[5], "segment, titik 2, komponen z");
+        assert_eq!(s[5], "segmen garis hasil clipping, titik 2, komponen z");
         assert_eq!(
             leaf_labels(&key("clip.status"), &Val::Text("clipped".into()), Lang::En),
             ["status"]
+        );
+        assert_eq!(
+            leaf_labels(&key("clip.code0"), &Val::Text("000010".into()), Lang::Id),
+            ["region code P0"]
         );
     }
 }

@@ -130,7 +130,7 @@ fn matrix_row(st: &Style, r: &Val) -> String {
                 Val::Num(s) => st.dec(
                     s.pretty
                         .clone()
-                        .unwrap_or_else(|| super::fmt_dec(s.value, st.digits)),
+                        .unwrap_or_else(|| crate::num::format::decimal(s, st.digits)),
                 ),
                 other => st.val_inline(other),
             };

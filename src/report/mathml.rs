@@ -30,8 +30,19 @@ pub fn block(s: &str) -> String {
     format!("<math display=\"block\">{}</math>", row(s))
 }
 
+/// The deepest nesting of roots and scripts set as MathML; a group nested
+/// deeper (a point named `√(√(√(…`, 20,000 deep, took 10 GB and overflowed
+/// the stack) is set as its text, so a row costs at most this many passes
+/// over its characters.
+pub const MAX_MATH_DEPTH: usize = 16;
+
 /// The notation as one `<mrow>`.
 pub fn row(s: &str) -> String {
+    row_at(s, 0)
+}
+
+/// [`row`] of a group nested `depth` deep.
+fn row_at(s: &str, depth: usize) -> String {
     let chars: Vec<char> = s.chars().collect();
     let mut items: Vec<String> = Vec::new();
     let mut i = 0;
@@ -51,13 +62,13 @@ pub fn row(s: &str) -> String {
         } else if superscript(c).is_some() {
             let (text, next) = run(&chars, i, superscript);
             i = next;
-            attach(&mut items, "msup", &script(&text));
+            attach(&mut items, "msup", &script(&text, depth));
         } else if subscript(c).is_some() {
             let (text, next) = run(&chars, i, subscript);
             i = next;
-            attach(&mut items, "msub", &script(&text));
+            attach(&mut items, "msub", &script(&text, depth));
         } else if c == '√' {
-            let (inner, next) = radicand(&chars, i + 1);
+            let (inner, next) = radicand(&chars, i + 1, depth);
             i = next;
             items.push(format!("<msqrt>{inner}</msqrt>"));
         } else if c.is_ascii_digit() {
@@ -182,17 +193,21 @@ fn run(chars: &[char], mut i: usize, class: fn(char) -> Option<char>) -> (String
 }
 
 /// A script's content: a number, a name or a sign and a number.
-fn script(t: &str) -> String {
+fn script(t: &str, depth: usize) -> String {
     match t {
         "°" => "<mo>°</mo>".into(),
         _ if t.chars().all(|c| c.is_ascii_digit()) => format!("<mn>{t}</mn>"),
-        _ => format!("<mrow>{}</mrow>", row_inner(t)),
+        _ => format!("<mrow>{}</mrow>", row_inner(t, depth + 1)),
     }
 }
 
-/// A row's items without the surrounding `<mrow>`.
-fn row_inner(t: &str) -> String {
-    let r = row(t);
+/// A row's items without the surrounding `<mrow>`, nested `depth` deep:
+/// past [`MAX_MATH_DEPTH`], the text itself.
+fn row_inner(t: &str, depth: usize) -> String {
+    if depth > MAX_MATH_DEPTH {
+        return format!("<mtext>{}</mtext>", xml_escape(t));
+    }
+    let r = row_at(t, depth);
     r["<mrow>".len()..r.len() - "</mrow>".len()].to_string()
 }
 
@@ -204,16 +219,16 @@ fn attach(items: &mut Vec<String>, tag: &str, script: &str) {
 
 /// What `√` applies to from `i`: a parenthesized group or a number or a
 /// name; its MathML and where it ends.
-fn radicand(chars: &[char], i: usize) -> (String, usize) {
+fn radicand(chars: &[char], i: usize, depth: usize) -> (String, usize) {
     if chars.get(i) == Some(&'(') {
-        let mut depth = 0;
+        let mut open = 0;
         let mut j = i;
         while j < chars.len() {
             match chars[j] {
-                '(' => depth += 1,
+                '(' => open += 1,
                 ')' => {
-                    depth -= 1;
-                    if depth == 0 {
+                    open -= 1;
+                    if open == 0 {
                         break;
                     }
                 }
@@ -222,7 +237,7 @@ fn radicand(chars: &[char], i: usize) -> (String, usize) {
             j += 1;
         }
         let inner: String = chars[i + 1..j.min(chars.len())].iter().collect();
-        (row_inner(&inner), (j + 1).min(chars.len()))
+        (row_inner(&inner, depth + 1), (j + 1).min(chars.len()))
     } else if chars.get(i).is_some_and(|c| c.is_ascii_digit()) {
         number(chars, i)
     } else {
@@ -380,6 +395,25 @@ mod tests {
         assert_eq!(
             row("7.071e−309"),
             "<mrow><mn>7.071</mn><mo>×</mo><msup><mn>10</mn><mn>−309</mn></msup></mrow>"
+        );
+    }
+
+    #[test]
+    fn a_deep_nesting_is_set_as_text_past_the_bound() {
+        // √(√(…√(2)…)) 20,000 deep: MAX_MATH_DEPTH + 1 roots as MathML,
+        // the rest as one text (it used to nest 20,000 rows: 10 GB, then a
+        // stack overflow).
+        let n = 20_000;
+        let deep = format!("{}2{}", "√(".repeat(n), ")".repeat(n));
+        let m = row(&deep);
+        assert_eq!(m.matches("<msqrt>").count(), MAX_MATH_DEPTH + 1);
+        assert_eq!(m.matches("<mtext>").count(), 1);
+        // the size stays linear: the text once, and the roots' markup
+        assert!(m.len() < 2 * deep.len() + 1000, "{}", m.len());
+        // a shallow root is unchanged
+        assert_eq!(
+            row("√(√2)"),
+            "<mrow><msqrt><msqrt><mn>2</mn></msqrt></msqrt></mrow>"
         );
     }
 

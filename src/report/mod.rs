@@ -18,6 +18,7 @@ pub mod mistakes;
 pub mod moodle;
 pub mod page;
 pub mod practice;
+pub mod quizfile;
 pub mod render;
 pub mod sheets;
 pub mod words;
@@ -38,35 +39,49 @@ pub struct Style {
     pub digits: usize,
     /// Whether the run was exact (approximate values are then marked ≈).
     pub exact_mode: bool,
-    /// The language of the words (and the decimal mark).
+    /// The language of the words.
     pub lang: Lang,
+    /// How numbers are written: the language's own decimal mark and
+    /// separator ([`Style::new`]), or a quiz's `--decimal`
+    /// ([`Style::with_nums`]).
+    pub nums: NumStyle,
 }
 
 impl Style {
-    /// `digits` significant digits, approximate values marked ≈ when `exact_mode`, in `lang`.
+    /// `digits` significant digits, approximate values marked ≈ when
+    /// `exact_mode`, in `lang` with its own decimal mark.
     pub fn new(digits: usize, exact_mode: bool, lang: Lang) -> Style {
         Style {
             digits,
             exact_mode,
             lang,
+            nums: words::of(lang).nums(),
         }
+    }
+
+    /// The same style with its numbers written in `nums` (one decimal mark
+    /// for a whole quiz, whatever its language: every number of the
+    /// solution, its figures and the words that hold numbers).
+    pub fn with_nums(self, nums: NumStyle) -> Style {
+        Style { nums, ..self }
     }
 }
 
 pub use crate::num::format::fmt_dec;
 
 impl Style {
-    /// The words of a message key in this style's language.
+    /// The words of a message key in this style's language, its numbers in
+    /// this style's ([`words::words_in`]).
     pub fn w(&self, m: &Msg) -> String {
-        words::words(m, self.lang)
+        words::words_in(m, self.lang, self.nums)
     }
     /// A word the documents share, in this style's language.
     pub fn doc(&self, w: DocWord) -> String {
         words::of(self.lang).doc(&w)
     }
-    /// How this style's language writes numbers.
+    /// How this style writes numbers.
     pub fn nums(&self) -> NumStyle {
-        words::of(self.lang).nums()
+        self.nums
     }
     /// Values formatted the English way written in this style's language
     /// ([`NumStyle::values`]): `(0.8, 0.6, 0)` → `(0,8; 0,6; 0)` in Indonesian.
@@ -112,11 +127,11 @@ impl Style {
                 });
                 let decs: Vec<String> = ns
                     .iter()
-                    .map(|s| fmt_dec(s.value, self.digits).replace('-', "−"))
+                    .map(|s| crate::num::format::decimal(s, self.digits).replace('-', "−"))
                     .collect();
                 let approx = ns
                     .iter()
-                    .any(|s| fmt_dec(s.value, self.digits).parse::<f64>().ok() != Some(s.value));
+                    .any(|s| crate::num::format::is_approx(s, self.digits, self.exact_mode));
                 let beyond = ns.iter().any(|s| {
                     (s.value == 0.0 && s.pretty.as_deref().is_some_and(|p| p != "0"))
                         || !s.value.is_finite()
@@ -186,7 +201,7 @@ impl Style {
                 t.add_row(cells.iter().map(|c| match c {
                     Val::Num(s) => self.dec(match &s.pretty {
                         Some(p) => p.replace('-', "−"),
-                        None => fmt_dec(s.value, self.digits).replace('-', "−"),
+                        None => crate::num::format::decimal(s, self.digits).replace('-', "−"),
                     }),
                     other => self.val_inline(other),
                 }));
@@ -230,12 +245,14 @@ impl Style {
 
     /// `name = substitution = value` (`t = (0 − 4)/(−2 − 4) = 2/3 ≈
     /// 0.6667`), `≈` before a value without an exact form; the
-    /// substitution is left out when it reads as the value itself.
+    /// substitution is left out when it reads as the value itself, and the
+    /// line is then written as [`named`](Style::named) writes it (`bottom ≈
+    /// −0.0364` for −top with top ≈ 0.0364, never `bottom = ≈ −0.0364`).
     pub fn worked(&self, name: &str, sub: &Subst, v: &Val) -> String {
         let (val, sub) = (self.val_inline(v), self.subst(sub));
         let shown = |s: &str| s.split([' ']).any(|p| p == sub) || s == sub;
         match val.strip_prefix("≈ ") {
-            _ if shown(&val.replace(" ≈ ", " ").replace(" = ", " ")) => format!("{name} = {val}"),
+            _ if shown(&val.replace(" ≈ ", " ").replace(" = ", " ")) => self.named("", name, v),
             Some(rest) => format!("{name} = {sub} ≈ {rest}"),
             None => format!("{name} = {sub} = {val}"),
         }
@@ -277,9 +294,12 @@ impl Style {
     fn operand(&self, v: &Val) -> String {
         match v {
             Val::Num(s) => {
-                let dec = fmt_dec(s.value, self.digits);
+                let dec = crate::num::format::decimal(s, self.digits);
                 let text = match &s.pretty {
-                    Some(p) if p.contains('√') || dec.parse::<f64>().ok() != Some(s.value) => {
+                    Some(p)
+                        if p.contains('√')
+                            || crate::num::format::is_approx(s, self.digits, false) =>
+                    {
                         p.clone()
                     }
                     _ => dec,
@@ -789,20 +809,58 @@ mod tests {
             value: -0.023570226039551584,
             exact: Some("-sqrt(2)/60".into()),
             pretty: Some("−√2/60".into()),
+            beyond: None,
         };
         assert_eq!(st.num(&s), "−√2/60 ≈ −0.02357");
         let fifty = Shown {
             value: 0.02,
             exact: Some("1/50".into()),
             pretty: Some("1/50".into()),
+            beyond: None,
         };
         assert_eq!(st.num(&fifty), "1/50 = 0.02");
         let approx = Shown {
             value: 0.41421356,
             exact: None,
             pretty: None,
+            beyond: None,
         };
         assert_eq!(st.num(&approx), "≈ 0.4142");
+    }
+
+    /// bottom = −top with top = 0.1·tan 20° (no exact form in square
+    /// roots): the substitution −0.0364 reads as the value itself, so the
+    /// line is the value alone, `≈` after the name, and no `= ≈` with an
+    /// empty exact form between them.
+    #[test]
+    fn a_substitution_that_reads_as_its_value_leaves_no_empty_exact_form() {
+        let top = 0.1 * 20f64.to_radians().tan();
+        let approx = |value: f64| {
+            Val::Num(Shown {
+                value,
+                exact: None,
+                pretty: None,
+                beyond: None,
+            })
+        };
+        for (lang, want) in [
+            (lang::Lang::En, "bottom ≈ −0.0364"),
+            (lang::Lang::Id, "bottom ≈ −0,0364"),
+        ] {
+            let st = Style::new(4, true, lang);
+            let sub = Subst::new("−{}", vec![approx(top)]);
+            assert_eq!(st.worked("bottom", &sub, &approx(-top)), want);
+        }
+        // an exact value whose substitution is itself keeps its one `=`
+        let st = Style::new(4, true, lang::Lang::En);
+        let half = Val::Num(Shown {
+            value: 0.5,
+            exact: Some("1/2".into()),
+            pretty: Some("1/2".into()),
+            beyond: None,
+        });
+        let sub = Subst::new("{}", vec![half.clone()]);
+        assert_eq!(st.worked("t", &sub, &half), "t = 1/2 = 0.5");
     }
 
     #[test]
@@ -815,6 +873,7 @@ mod tests {
                 value,
                 exact: Some(p.into()),
                 pretty: Some(p.into()),
+                beyond: None,
             })
         };
         let v = [n(0.0, "1/1000"), n(0.0, "0")];

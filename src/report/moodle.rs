@@ -6,15 +6,40 @@
 //! The writer only writes: the blanks (values, tolerances, mistaken values)
 //! are the tutor's ([`crate::tutor::generate::quiz`]), the figures the
 //! figure module's (`report::figure`). Each number is a NUMERICAL blank
-//! `{1:NUMERICAL:=x:t#…~%0%w:t'#feedback}`, each 0 % answer's feedback
+//! `{W:NUMERICAL:=x:t#…~%0%w:t'#feedback}`, each 0 % answer's feedback
 //! naming the catalog mistakes that give it; outcodes and the clipping
 //! status are SHORTANSWER blanks. The instruction line says how to type:
 //! significant figures, the decimal mark ([`Decimal`]: Moodle reads a
 //! typed number by its interface language's mark), half a pixel for pixel
-//! positions. The general feedback holds the answers, the problem's
-//! figures (SVG files embedded as Moodle exports them, `<file
-//! encoding="base64">` referred to as `@@PLUGINFILE@@/name`) and the worked
-//! solution, its lines wrapped to [`WIDTH`] characters.
+//! positions. Each answer's blanks are labelled as the steps name its value
+//! in the quiz's language ([`blank_label`](crate::report::words::keys::KeyWords::blank_label): `n`, `A'`, `piksel
+//! A`, `cos α`), never by a JSON key. A status or a missing segment is
+//! right in the quiz language's words and in the English codes (`di-clip`
+//! or `clipped`, `tidak ada` or `none`).
+//!
+//! Marks: the statement ends with the question's marks in the scheme of
+//! `check` (`(4 marks)`), and each blank weighs W so that an answer's
+//! blanks together weigh its share of those marks ([`Question::weights`]).
+//! Moodle reads a Cloze question's default mark as the sum of its blanks'
+//! weights (it ignores `<defaultgrade>`), and gives a random question's
+//! slot 1 mark: the proportions are the scheme's, the quiz's maximum mark
+//! of each slot is the lecturer's to set to the stated marks.
+//!
+//! One decimal mark for the whole quiz: the statement, the instruction,
+//! the answers, the worked solution and the figures write their numbers
+//! with the mark of `--decimal` ([`Written::new`] gives the style its
+//! [`NumStyle`]), and a comma-decimal quiz separates a vector's blanks
+//! with `;` as its statement separates the components.
+//!
+//! The general feedback holds the answers, the problem's figures (SVG files
+//! embedded as Moodle exports them, `<file encoding="base64">` referred to
+//! as `@@PLUGINFILE@@/name`) and the worked solution. The writer breaks no
+//! line: each line of a step is a block the browser wraps at the width of
+//! the question, with its indentation and a hanging indent ([`body_html`]),
+//! and a matrix keeps its lines whole in a block that scrolls rather than
+//! wraps. Every number in the feedback is one Moodle reads back as written
+//! when a student types it: a minus is the ASCII `-` (Moodle reads
+//! `−0.5` as no number and `1.6e−10` as 1.6), see [`typeable`].
 //!
 //! Escaping, in the order Moodle undoes it: text is HTML-escaped (`&`, `<`,
 //! `>`); inside a blank, Moodle decodes HTML entities once before storing the
@@ -24,21 +49,19 @@
 //! text and general feedback go into CDATA sections, a `]]>` inside split
 //! across two sections.
 
-use crate::msg::{DocWord as D, Msg, QuizWord as Q};
+use crate::msg::{DocWord as D, QuizWord as Q};
 use crate::report::figure::{drawings::drawings, svg::to_svg};
 use crate::report::lang::{Lang, NumStyle};
 use crate::report::mistakes::mistake_text;
+use crate::report::quizfile::{pack, Frame, Unit};
 use crate::report::words::{self as said, words};
 use crate::report::Style;
 use crate::stages::trace::Val;
 use crate::tutor::generate::quiz::{Blank, Question, Quiz, Typed, Typing, Wrong};
 use crate::tutor::generate::{topics_name, Generated};
+use crate::tutor::key::Key;
 use base64::Engine as _;
 use std::fmt::Write as _;
-
-/// The widest line of the worked solution, in characters: a question in
-/// review fits a 1100-px window with the course's side panels open.
-pub const WIDTH: usize = 72;
 
 pub use crate::msg::Decimal;
 
@@ -54,12 +77,29 @@ impl Decimal {
 }
 
 /// How a quiz is written: the words' style and the decimal mark to type.
-#[derive(Clone, Debug)]
-pub struct Written<'a> {
-    /// Language, digits of the worked solution.
-    pub style: &'a Style,
+#[derive(Clone, Copy, Debug)]
+pub struct Written {
+    /// Language, digits of the worked solution, and the numbers written
+    /// with the decimal mark to type.
+    pub style: Style,
     /// The mark the instruction line tells students to type.
     pub decimal: Decimal,
+}
+
+impl Written {
+    /// A quiz in `style`'s language and digits whose every number is
+    /// written with the mark `decimal` (one decimal mark for the exam).
+    pub fn new(style: &Style, decimal: Decimal) -> Written {
+        Written {
+            style: style.with_nums(decimal.nums()),
+            decimal,
+        }
+    }
+}
+
+/// The label of an answer's blanks in `lang` ([`blank_label`](crate::report::words::keys::KeyWords::blank_label)).
+pub fn label(key: &Key, lang: Lang) -> String {
+    said::of(lang).blank_label(key)
 }
 
 /// The category of problem i (from 0): `$course$/grafika/<topic>/<NN>`.
@@ -71,40 +111,57 @@ pub fn category(q: &Quiz, i: usize) -> String {
     )
 }
 
+/// The frame of a Moodle XML file.
+pub const XML: Frame = Frame {
+    head: "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<quiz>\n",
+    foot: "</quiz>\n",
+};
+
 /// The whole Moodle XML file.
 pub fn moodle_xml(q: &Quiz, w: &Written) -> String {
-    let mut s = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<quiz>\n");
+    pack(&moodle_units(q, w), XML, None)
+        .unwrap_or_default()
+        .concat()
+}
+
+/// The questions of a Moodle XML file, each after its problem's category
+/// ([`crate::report::quizfile`]).
+pub fn moodle_units(q: &Quiz, w: &Written) -> Vec<Unit> {
+    let mut units = Vec::new();
     for i in 0..q.count() {
-        let _ = write!(
-            s,
+        let cat = format!(
             "  <question type=\"category\">\n    <category>\n      <text>{}</text>\n    </category>\n    <info format=\"html\">\n      <text></text>\n    </info>\n  </question>\n",
             xml_text(&category(q, i))
         );
         for (v, exam) in q.variants.iter().enumerate() {
             if let Some(question) = exam.get(i) {
-                s.push_str(&cloze_question(question, (i, v), q, w));
+                units.push(Unit {
+                    category: cat.clone(),
+                    text: cloze_question(question, (i, v), q, w),
+                    name: question_name(&question.problem, i, v, w.style.lang),
+                });
             }
         }
     }
-    s.push_str("</quiz>\n");
-    s
+    units
 }
 
 /// One Cloze question: problem i of variant v.
 fn cloze_question(question: &Question, (i, v): (usize, usize), q: &Quiz, w: &Written) -> String {
     let lang = w.style.lang;
     let mut text = intro_html(question, q, w);
-    for a in &question.asked {
-        let mut next = a.blanks.iter().map(|b| cloze_blank(b, lang));
-        let shape = shape_html(&a.value, &mut || next.next().unwrap_or_default());
-        let _ = write!(text, "<p>{} = {shape}</p>", esc_text(&a.key.to_string()));
+    let sep = w.style.nums().sep;
+    for (a, weight) in question.asked.iter().zip(question.weights()) {
+        let mut next = a.blanks.iter().map(|b| cloze_blank(b, weight, lang));
+        let shape = shape_html(&a.value, sep, &mut || next.next().unwrap_or_default());
+        let _ = write!(text, "<p>{} = {shape}</p>", esc_text(&label(&a.key, lang)));
     }
-    let (figures, files) = embedded_figures(&question.problem, w.style);
+    let (figures, files) = embedded_figures(&question.problem, &w.style);
     format!(
         "  <question type=\"cloze\">\n    <name>\n      <text>{}</text>\n    </name>\n    <questiontext format=\"html\">\n      <text>{}</text>\n    </questiontext>\n    <generalfeedback format=\"html\">\n      <text>{}</text>\n{files}    </generalfeedback>\n    <penalty>0.3333333</penalty>\n    <hidden>0</hidden>\n  </question>\n",
         xml_text(&question_name(&question.problem, i, v, lang)),
         cdata(&text),
-        cdata(&solution_html(question, &figures, w.style)),
+        cdata(&solution_html(question, &figures, &w.style)),
     )
 }
 
@@ -150,15 +207,13 @@ pub fn question_name(g: &Generated, i: usize, v: usize, lang: Lang) -> String {
     )
 }
 
-/// The statement and how to type the answers, as HTML.
+/// The statement with its marks, and how to type the answers, as HTML.
 pub fn intro_html(question: &Question, q: &Quiz, w: &Written) -> String {
     let lang = w.style.lang;
-    let statement = match &question.problem.statement {
-        Msg::Statement(s) => crate::report::words::of(lang).statement(s, w.decimal.nums()),
-        other => words(other, lang),
-    };
+    let statement = w.style.w(&question.problem.statement);
+    let marks = w.style.doc(D::Marks(question.marks()));
     format!(
-        "<p>{}</p><p><i>{}</i></p>",
+        "<p>{} {marks}</p><p><i>{}</i></p>",
         esc_text(statement.trim()),
         esc(&instructions(&question.typing, q, lang, w.decimal))
     )
@@ -189,8 +244,10 @@ pub fn instructions(kinds: &Typing, q: &Quiz, lang: Lang, mark: Decimal) -> Stri
 }
 
 /// A value's shape with its leaves drawn by `leaf`: a number or code, a
-/// vector `(a, b, c)`, a matrix as a table, a list of points, named values.
-pub fn shape_html(v: &Val, leaf: &mut dyn FnMut() -> String) -> String {
+/// vector `(a, b, c)` (its components parted by `sep`, `, ` or `; ` as the
+/// quiz's numbers are written), a matrix as a table, a list of points,
+/// named values.
+pub fn shape_html(v: &Val, sep: &str, leaf: &mut dyn FnMut() -> String) -> String {
     match v {
         Val::List(rows) if is_square_matrix(rows) => {
             let mut s = String::from("<table>");
@@ -198,7 +255,7 @@ pub fn shape_html(v: &Val, leaf: &mut dyn FnMut() -> String) -> String {
                 s.push_str("<tr>");
                 if let Val::List(cells) = r {
                     for c in cells {
-                        let _ = write!(s, "<td>{}</td>", shape_html(c, leaf));
+                        let _ = write!(s, "<td>{}</td>", shape_html(c, sep, leaf));
                     }
                 }
                 s.push_str("</tr>");
@@ -206,13 +263,13 @@ pub fn shape_html(v: &Val, leaf: &mut dyn FnMut() -> String) -> String {
             s + "</table>"
         }
         Val::List(items) => {
-            let parts: Vec<String> = items.iter().map(|x| shape_html(x, leaf)).collect();
-            format!("({})", parts.join(", "))
+            let parts: Vec<String> = items.iter().map(|x| shape_html(x, sep, leaf)).collect();
+            format!("({})", parts.join(sep))
         }
         Val::Map(kv) => {
             let parts: Vec<String> = kv
                 .iter()
-                .map(|(k, x)| format!("{} = {}", esc(k), shape_html(x, leaf)))
+                .map(|(k, x)| format!("{} = {}", esc(k), shape_html(x, sep, leaf)))
                 .collect();
             parts.join("; ")
         }
@@ -229,29 +286,46 @@ fn is_square_matrix(rows: &[Val]) -> bool {
         })
 }
 
-/// One blank in Cloze syntax.
-fn cloze_blank(b: &Blank, lang: Lang) -> String {
+/// One blank in Cloze syntax, of `weight` ([`Question::weights`]): the
+/// right answers (a word in each of its spellings, [`spellings`]), then
+/// each mistaken value at 0 % with its feedback.
+fn cloze_blank(b: &Blank, weight: u32, lang: Lang) -> String {
     let kind = match b.value {
         Typed::Num(_) => "NUMERICAL",
         Typed::Text(_) => "SHORTANSWER",
     };
-    let mut s = format!("{{1:{kind}:={}", cloze_answer(&b.value, b.tolerance));
+    let right: Vec<String> = cloze_answers(&b.value, b.tolerance, lang)
+        .into_iter()
+        .map(|a| format!("={a}"))
+        .collect();
+    let mut s = format!("{{{weight}:{kind}:{}", right.join("~"));
     for w in &b.wrong {
-        let _ = write!(
-            s,
-            "~%0%{}#{}",
-            cloze_answer(&w.value, w.tolerance),
-            cloze_escape(&esc(&feedback(w, lang)))
-        );
+        let fb = cloze_escape(&esc(&feedback(w, lang)));
+        for a in cloze_answers(&w.value, w.tolerance, lang) {
+            let _ = write!(s, "~%0%{a}#{fb}");
+        }
     }
     s + "}"
 }
 
-/// An answer in a blank: `x:t` for a number, the code for a text.
-fn cloze_answer(v: &Typed, t: f64) -> String {
+/// A value's answers in a blank: `x:t` for a number, each spelling of a
+/// word.
+fn cloze_answers(v: &Typed, t: f64, lang: Lang) -> Vec<String> {
     match v {
-        Typed::Num(x) => format!("{}:{}", number(*x), tolerance_text(t)),
-        Typed::Text(s) => cloze_escape(s),
+        Typed::Num(x) => vec![format!("{}:{}", number(*x), tolerance_text(t))],
+        Typed::Text(s) => spellings(s, lang).iter().map(|w| cloze_escape(w)).collect(),
+    }
+}
+
+/// The spellings a blank takes for a word (a status's code, `none`, an
+/// outcode): the quiz language's word first (the answer Moodle shows as
+/// right), then the code when it differs (`di-clip`, `clipped`).
+pub fn spellings(code: &str, lang: Lang) -> Vec<String> {
+    let word = said::of(lang).quiz(&Q::Word(code.to_string()));
+    if word == code {
+        vec![word]
+    } else {
+        vec![word, code.to_string()]
     }
 }
 
@@ -275,22 +349,43 @@ pub fn cloze_escape(s: &str) -> String {
     out
 }
 
-/// The feedback of a wrong value: the mistakes that give it.
+/// The feedback of a wrong value: the mistakes that give it ([`typeable`]).
 pub fn feedback(w: &Wrong, lang: Lang) -> String {
     let names: Vec<&str> = w.mistakes.iter().map(|m| mistake_text(*m, lang)).collect();
     let w = |k: Q| said::of(lang).quiz(&k);
-    format!("{}{}", w(Q::KnownMistake), names.join(&w(Q::OrMistake)))
+    typeable(&format!(
+        "{}{}",
+        w(Q::KnownMistake),
+        names.join(&w(Q::OrMistake))
+    ))
+}
+
+/// Text a student may copy into a blank, written so that Moodle reads
+/// each number in it as it is written: the minus sign `−` (U+2212) as the
+/// ASCII `-`. Moodle's number reader takes only `-`: `−0.5` is no number
+/// to it, and `1.587e−10` is read as 1.587 (the `e−10` taken for a unit).
+pub fn typeable(s: &str) -> String {
+    s.replace('\u{2212}', "-")
 }
 
 /// The general feedback: the answers, the figures (HTML given), then the
 /// worked solution, its sections numbered from 1 within the question and
-/// its lines wrapped to [`WIDTH`] characters.
+/// its lines laid out by [`body_html`]; every number [`typeable`].
 pub fn solution_html(question: &Question, figures: &str, st: &Style) -> String {
+    typeable(&solution(question, figures, st))
+}
+
+fn solution(question: &Question, figures: &str, st: &Style) -> String {
     let w = |k: D| said::of(st.lang).doc(&k);
     let mut s = format!("<h3>{}</h3><ul>", w(D::Answers));
     for a in &question.asked {
-        // one line flows in the list; a matrix keeps its lines
-        let line = esc(&st.named("", &a.key.to_string(), &a.value));
+        // one line flows in the list; a matrix keeps its lines; a word is
+        // the quiz language's (`ditolak`), as its blank shows it
+        let name = label(&a.key, st.lang);
+        let line = esc(&match &a.value {
+            Val::Text(code) => format!("{name} = {}", spellings(code, st.lang)[0]),
+            v => st.named("", &name, v),
+        });
         if line.contains('\n') {
             let _ = write!(s, "<li><pre>{line}</pre></li>");
         } else {
@@ -314,11 +409,11 @@ pub fn solution_html(question: &Question, figures: &str, st: &Style) -> String {
         }
         let _ = write!(
             s,
-            "<p><b>{} {}. {}</b></p><pre>{}</pre>",
+            "<p><b>{} {}. {}</b></p>{}",
             w(D::Step),
             k + 1,
             esc(&st.w(&step.title)),
-            esc(&wrap(st.step_body(step).trim_end()))
+            body_html(st.step_body(step).trim_end())
         );
     }
     s
@@ -341,20 +436,42 @@ pub fn part_heading(k: usize, section: &str, lang: Lang) -> String {
     format!("{} {k}: {name}", said::of(lang).quiz(&Q::Part))
 }
 
-/// Text wrapped to [`WIDTH`] characters, each wrapped line's continuation
-/// indented by two spaces more than the line.
-pub fn wrap(text: &str) -> String {
-    let mut out: Vec<String> = Vec::new();
-    for line in text.lines() {
-        let indent = " ".repeat(line.len() - line.trim_start().len() + 2);
-        let opts = textwrap::Options::new(WIDTH).subsequent_indent(&indent);
-        out.extend(
-            textwrap::wrap(line, opts)
-                .into_iter()
-                .map(|l| l.into_owned()),
+/// A step's lines as HTML that the browser lays out in the width it has,
+/// in monospace: each line a block of its own, its indentation kept and,
+/// where the browser wraps it, its continuation indented two characters
+/// more; a matrix's lines (a table drawn with box characters, ┌ │ ├ └)
+/// together in a block that never wraps and scrolls sideways in a narrow
+/// window. The writer breaks no line.
+pub fn body_html(body: &str) -> String {
+    let mut out = String::from("<div style=\"font-family:monospace;white-space:pre-wrap\">");
+    let mut table: Vec<&str> = Vec::new();
+    let flush = |out: &mut String, table: &mut Vec<&str>| {
+        if !table.is_empty() {
+            let _ = write!(
+                out,
+                "<div style=\"white-space:pre;overflow-x:auto\">{}</div>",
+                esc(&table.join("\n"))
+            );
+            table.clear();
+        }
+    };
+    for line in body.lines() {
+        let text = line.trim_start();
+        if text.starts_with(['┌', '│', '├', '└']) {
+            table.push(line);
+            continue;
+        }
+        flush(&mut out, &mut table);
+        let indent = line.chars().count() - text.chars().count();
+        let _ = write!(
+            out,
+            "<div style=\"padding-left:{}ch;text-indent:-2ch\">{}</div>",
+            indent + 2,
+            esc(text)
         );
     }
-    out.join("\n")
+    flush(&mut out, &mut table);
+    out + "</div>"
 }
 
 /// HTML (and XML) text: `&`, `<`, `>` escaped, control characters shown
@@ -482,20 +599,33 @@ mod tests {
     }
 
     #[test]
-    fn long_lines_wrap_with_a_hanging_indent() {
+    fn a_step_is_laid_out_by_the_browser_and_a_matrix_kept_whole() {
         let legend = "bit 1 x<xmin (left) · bit 2 x>xmax (right) · bit 3 y<ymin (bottom) · bit 4 y>ymax (top) · bit 5 z<zmin (front) · bit 6 z>zmax (back)";
-        let w = wrap(&format!("short\n{legend}"));
-        let lines: Vec<&str> = w.lines().collect();
-        assert_eq!(lines[0], "short");
-        assert!(lines.len() >= 3, "{w}");
-        assert!(lines.iter().all(|l| l.chars().count() <= WIDTH), "{w}");
-        assert!(
-            lines[2].starts_with("  ") && !lines[2].starts_with("   "),
-            "{w}"
+        let body = format!(
+            "    {legend}\n  ⇒ V =\n      ┌───┬───┐\n      │ 1 ┆ 0 │\n      └───┴───┘\n    (a < b)"
         );
-        // no word is lost or split
-        let words = |s: &str| s.split_whitespace().map(String::from).collect::<Vec<_>>();
-        assert_eq!(words(&w)[1..], words(legend)[..]);
+        let html = body_html(&body);
+        // the long line is one block, unbroken, its 4 spaces of indent as
+        // padding and a hanging indent of 2 more
+        let shown = legend.replace('<', "&lt;").replace('>', "&gt;");
+        let line = format!("<div style=\"padding-left:6ch;text-indent:-2ch\">{shown}</div>");
+        assert!(html.contains(&line), "{html}");
+        assert!(html.contains("padding-left:4ch;text-indent:-2ch\">⇒ V =</div>"));
+        // the matrix's three lines together, as drawn, in a block that does
+        // not wrap
+        assert!(
+            html.contains(
+                "white-space:pre;overflow-x:auto\">      ┌───┬───┐\n      │ 1 ┆ 0 │\n      └───┴───┘</div>"
+            ),
+            "{html}"
+        );
+        assert!(html.contains("(a &lt; b)"));
+        assert!(html.starts_with("<div") && html.ends_with("</div></div>"));
+    }
+
+    #[test]
+    fn typed_back_every_number_reads_as_written() {
+        assert_eq!(typeable("x = −0.5 ≈ 1.587e−10"), "x = -0.5 ≈ 1.587e-10");
     }
 
     #[test]

@@ -16,7 +16,7 @@ fn part_of(section: &Msg) -> Option<String> {
     Some(match section {
         Msg::SecViewing => "view".into(),
         Msg::SecProjection => "project".into(),
-        Msg::SecWindowClip => "window".into(),
+        Msg::SecWindowClip | Msg::SecWindow => "window".into(),
         Msg::SecLineClip(None) => "clip".into(),
         Msg::SecLineClip(Some(k)) => format!("clip-{k}"),
         Msg::SecLighting => "shade".into(),

@@ -578,7 +578,12 @@ fn window_steps<T: Scalar>(
     let on_window = (p.shared.on_window.as_deref())
         .map(given_on_window::<T>)
         .transpose()?;
-    out.section(Msg::SecWindowClip);
+    // "window and clipping" only where points are tested against the view
+    // volume; a problem that asks the window alone is headed by it
+    out.section(match eyes.1.is_empty() {
+        true => Msg::SecWindow,
+        false => Msg::SecWindowClip,
+    });
     let rec = &mut out.rec;
     let set_up = (&fovy, &aspect, near, far.as_ref());
     let (w, result) = window_run(set_up, hooks, rec).map_err(|e| in_table(per.prefix, e))?;

@@ -40,6 +40,14 @@ const MAX_FIELD_STEPS: usize = 64;
 /// quotient by a sum of k roots) is left approximate by [`super::Real`].
 pub const MAX_EXACT_TERMS: usize = 64;
 
+/// The longest exact value kept: no numerator, denominator or radicand of
+/// more than this many bits (2466 decimal digits; as the input reader's
+/// powers, 2^±8192). Beyond it the arithmetic itself grows costly (the
+/// gcds of a product are quadratic in its length: (√5/5)^100000 took
+/// 11 s), and no decimal shown needs it; [`super::Real`] leaves such a
+/// value approximate.
+pub const MAX_EXACT_BITS: u64 = 8192;
+
 /// The most term products one multiplication may form (the product of two
 /// sums of [`MAX_EXACT_TERMS`] terms); a larger product is not formed.
 pub const MAX_PRODUCTS: usize = MAX_EXACT_TERMS * MAX_EXACT_TERMS;
@@ -86,6 +94,31 @@ impl Surd {
     /// ascending.
     pub fn terms(&self) -> impl Iterator<Item = (&BigUint, &BigRational)> {
         self.terms.iter()
+    }
+
+    /// The length in bits of its longest number: numerator, denominator
+    /// or radicand of any term.
+    pub fn bits(&self) -> u64 {
+        (self.terms.iter())
+            .map(|(r, q)| r.bits().max(q.numer().bits()).max(q.denom().bits()))
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// A lower bound on [`Surd::bits`] of the n-th power, without forming
+    /// it: each factor multiplies the largest term's numerator or
+    /// denominator by at least 2^(bits − 1), and its radicand's root by
+    /// 2^((bits − 1)/2) more (for one term; a sum of terms grows faster).
+    pub fn power_bits(&self, n: u32) -> u64 {
+        let floor_log2 = |b: u64| b.saturating_sub(1);
+        let per = (self.terms.iter())
+            .map(|(r, q)| {
+                let q_bits = floor_log2(q.numer().bits()).max(floor_log2(q.denom().bits()));
+                2 * q_bits + floor_log2(r.bits())
+            })
+            .max()
+            .unwrap_or(0);
+        (per * u64::from(n)) / 2
     }
 
     /// The number of nonzero terms.

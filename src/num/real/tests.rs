@@ -465,11 +465,54 @@ fn an_exact_value_past_64_terms_is_left_approximate_and_marked() {
     assert!(!q.is_exact());
     let want: f64 = 1.0 / primes.iter().map(|&p| (p as f64).sqrt()).sum::<f64>();
     assert!((q.to_f64() - want).abs() <= 4.0 * f64::EPSILON * want);
-    assert!(take_grew_too_large());
-    assert!(!take_grew_too_large(), "the mark is cleared when read");
+    assert!(take_grew_too_large().terms);
+    assert_eq!(
+        take_grew_too_large(),
+        Grew::default(),
+        "the mark is cleared when read"
+    );
     // Three roots stay exact: 1/(√2 + √3 + √5) has 4 terms.
     let small = Real::from_i64(1)
         / (Real::from_i64(2).sqrt() + Real::from_i64(3).sqrt() + Real::from_i64(5).sqrt());
     assert!(small.is_exact());
-    assert!(!take_grew_too_large());
+    assert_eq!(take_grew_too_large(), Grew::default());
+}
+
+#[test]
+fn a_power_past_8192_bits_is_left_approximate_without_forming_it() {
+    take_grew_too_large();
+    // (2/3)^5000 = 2^5000/3^5000: 3^5000 has ⌊5000·log2 3⌋ + 1 = 7925 bits,
+    // within the bound: exact, and its decimal is found from it although
+    // the double is 0: log10 = 5000·log10(2/3) = 5000·(−0.1760912…) =
+    // −880.4563…, so 10^(1 − 0.4563) = 10^0.5437 = 3.4971 times 10^−881.
+    let two_thirds = Real::from_ratio(2, 3);
+    let p = Scalar::powi(&two_thirds, 5000);
+    assert!(p.is_exact(), "{p}");
+    assert_eq!(p.to_f64(), 0.0);
+    let shown = Scalar::shown(&p);
+    let (m, e) = shown.beyond.expect("beyond the doubles");
+    assert_eq!(e, -881);
+    assert!((m - 3.4971).abs() < 1e-3, "{m}");
+    assert_eq!(take_grew_too_large(), Grew::default());
+    // (2/3)^30000: 3^30000 has 47,549 bits. Not formed: the f64 power.
+    let p = Scalar::powi(&two_thirds, 30_000);
+    assert!(!p.is_exact());
+    assert!(take_grew_too_large().bits);
+    // (√5/5)^100000 and ^10^9 likewise (the exponent costs nothing).
+    let b = Real::from_i64(5).sqrt() / Real::from_i64(5);
+    for n in [100_000, 1_000_000_000] {
+        assert!(!Scalar::powi(&b, n).is_exact());
+        assert!(take_grew_too_large().bits, "(√5/5)^{n}");
+    }
+    // 1ⁿ, 0ⁿ and (−1)ⁿ stay exact for any n; 2^8000 too (8001 bits).
+    for (x, n, want) in [(1, 1_000_000_000u32, 1.0), (0, 7, 0.0), (-1, 999_999, -1.0)] {
+        let p = Scalar::powi(&Real::from_i64(x), n);
+        assert!(p.is_exact() && p.to_f64() == want, "{x}^{n}");
+    }
+    assert!(Scalar::powi(&Real::from_i64(2), 8000).is_exact());
+    assert_eq!(take_grew_too_large(), Grew::default());
+    // A sum that grows past the bound is left approximate too.
+    let big = Real::from_bigint(BigInt::from(1) << 8191usize);
+    assert!((&big * &big).to_f64().is_infinite());
+    assert!(take_grew_too_large().bits);
 }

@@ -312,24 +312,30 @@ fn place_all(
         }
     }
     // A label written short, or left out because even short it cannot
-    // stand clear, has its whole text in a note.
+    // stand clear, has its whole text in a note. In a panel of more than
+    // MAX_LABELS labels these notes and the texts of the labels beyond
+    // are listed together, packed, leaving out a text that is only its
+    // mark's name (it says nothing the panel does not).
+    let crowded = labels.len() > MAX_LABELS;
     let mut notes = Vec::new();
     let mut out = Vec::new();
     for (i, (p, c)) in placed.into_iter().enumerate() {
         let said_elsewhere = labels[i].short.as_deref() == Some("");
-        if short[i] || (c >= 60.0 && !said_elsewhere) {
+        let bare = crowded && labels[i].text == labels[i].of;
+        if !bare && (short[i] || (c >= 60.0 && !said_elsewhere)) {
             notes.push(labels[i].text.clone());
         }
         out.push((c < 60.0).then_some(p));
     }
-    // Beyond MAX_LABELS: listed, unless the text is only the mark's name
-    // or said elsewhere.
-    let rest: Vec<String> = labels[shown..]
-        .iter()
-        .filter(|l| l.text != l.of && l.short.as_deref() != Some(""))
-        .map(|l| l.text.clone())
-        .collect();
-    notes.extend(pack(&rest, WIDTH - 2.0 * PAD));
+    if crowded {
+        notes.extend(
+            labels[shown..]
+                .iter()
+                .filter(|l| l.text != l.of && l.short.as_deref() != Some(""))
+                .map(|l| l.text.clone()),
+        );
+        notes = pack(&notes, WIDTH - 2.0 * PAD);
+    }
     out.extend(labels[shown..].iter().map(|_| None));
     (out, notes, obs.work)
 }
@@ -443,6 +449,11 @@ mod tests {
     /// A panel of n dots P1 … Pn scattered over a 6 × 4 page area (a
     /// fixed pseudo-random sequence), each labelled `Pk = (x, y)`.
     fn dots(n: usize) -> Figure {
+        dots_labelled(n, |name, x, y| format!("{name} = ({x:.2}, {y:.2})"))
+    }
+
+    /// As [`dots`], each labelled `text(name, x, y)`.
+    fn dots_labelled(n: usize, text: impl Fn(&str, f64, f64) -> String) -> Figure {
         let mut seed: u64 = 12345;
         let mut next = || {
             seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1);
@@ -458,10 +469,7 @@ mod tests {
                 super::super::Pen::Given,
                 Shape::Dot([x, y]),
             ));
-            items.push(super::super::label(
-                &name,
-                format!("{name} = ({x:.2}, {y:.2})"),
-            ));
+            items.push(super::super::label(&name, text(&name, x, y)));
         }
         Figure {
             items,
@@ -494,6 +502,12 @@ mod tests {
         for k in [41, 1000, 2000] {
             assert!(notes.contains(&format!("P{k} = (")), "P{k} listed");
         }
+        // The notes are packed, two or more texts to a line.
+        assert!(big.notes.len() <= 2000 / 2, "{} lines", big.notes.len());
+        // Labels that are only their dots' names are not listed: a list
+        // of names would say nothing the panel does not.
+        let bare = lay_out(&dots_labelled(400, |name, _, _| name.to_string()));
+        assert!(bare.notes.is_empty(), "{:?}", bare.notes);
         assert!(
             big.work.tests < 8 * small.work.tests,
             "{:?} {:?}",

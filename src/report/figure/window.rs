@@ -47,6 +47,7 @@ fn tiny(p: &Part, st: &Style, key: Field) -> String {
             let plain = crate::stages::trace::Val::Num(crate::num::Shown {
                 exact: None,
                 pretty: None,
+                beyond: None,
                 ..s.clone()
             });
             st.val_inline(&plain)

@@ -43,6 +43,14 @@ pub trait KeyWords {
     /// What a key asks for, in a few words (`view.points.A` → `koordinat
     /// kamera A'`): the prompt of a practice session.
     fn answer_words(&self, k: &Key) -> String;
+
+    /// The label of a quiz's blanks for a key, the steps' name read alone
+    /// before its blanks, never a JSON key: [`answer_name`](KeyWords::answer_name)
+    /// (`n`, `A'`, `piksel A`), with the text's words where that name is
+    /// notation a student would not know from the question (`cos α` for
+    /// `cos_alpha`, `region code P0` for `code0`; in Indonesian `batas atas
+    /// (top)`, `tinggi`, `komponen diffuse`).
+    fn blank_label(&self, k: &Key) -> String;
 }
 
 /// The name of the answer spelled `key` ([`KeyWords::answer_name`]); a

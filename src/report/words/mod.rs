@@ -65,6 +65,14 @@ pub fn words(m: &Msg, lang: Lang) -> String {
     of(lang).msg(m)
 }
 
+/// The words of `m` in `lang` with its numbers in the style `nums`, which
+/// may be another language's: a quiz's `--decimal` (`--lang id --decimal
+/// point`) writes the whole exam with one decimal mark
+/// ([`MsgWords::msg_in`]).
+pub fn words_in(m: &Msg, lang: Lang, nums: super::lang::NumStyle) -> String {
+    of(lang).msg_in(m, nums)
+}
+
 /// `message` cut to `MAX_MESSAGE` characters in `lang`
 /// (`msg::cut_message`).
 pub fn cut_message(message: &str, lang: Lang) -> String {
@@ -85,6 +93,7 @@ mod tests {
             Msg::SecViewing,
             Msg::SecProjection,
             Msg::SecWindowClip,
+            Msg::SecWindow,
             Msg::SecViewport,
             Msg::SecLineClip(None),
             Msg::SecLineClip(Some(2)),
@@ -184,6 +193,8 @@ mod tests {
             Msg::UpParallel(1e-9),
             Msg::BehindWarn(s()),
             Msg::ExactTooLarge(64),
+            Msg::ExactTooLong(16_384),
+            Msg::StaleTempRemoved("out/.grafika-tmp-123-4567-ab".into(), 123),
             Msg::NoFigure,
             Msg::ExpectOne,
             Msg::ExpectList(3),
@@ -447,6 +458,7 @@ mod tests {
             | SecViewing
             | SecProjection
             | SecWindowClip
+            | SecWindow
             | SecViewport
             | SecLineClip(_)
             | SecLighting
@@ -546,6 +558,8 @@ mod tests {
             | UpParallel(_)
             | BehindWarn(_)
             | ExactTooLarge(_)
+            | ExactTooLong(_)
+            | StaleTempRemoved(..)
             | NoFigure
             | ExpectOne
             | ExpectList(_)
@@ -747,8 +761,8 @@ mod tests {
         ];
         for (s, word) in words {
             let said = Said::Status(s.as_str().into());
-            assert_eq!(of(Lang::En).said(&said), s.as_str());
-            assert_eq!(of(Lang::Id).said(&said), word);
+            assert_eq!(of(Lang::En).said(&said, NumStyle::POINT), s.as_str());
+            assert_eq!(of(Lang::Id).said(&said, NumStyle::COMMA), word);
         }
     }
 

@@ -9,8 +9,14 @@ use crate::report::lang::{NumStyle, MAX_MESSAGE};
 /// The words of the messages themselves ([`Msg`]) and the number style
 /// they are written in.
 pub trait MsgWords {
-    /// The words of `m`: one exhaustive match over every key.
-    fn msg(&self, m: &Msg) -> String;
+    /// The words of `m`, its numbers in this language's style.
+    fn msg(&self, m: &Msg) -> String {
+        self.msg_in(m, self.nums())
+    }
+    /// The words of `m` with its numbers in the style `nums` (the
+    /// language's own, or a quiz's `--decimal`): one exhaustive match over
+    /// every key.
+    fn msg_in(&self, m: &Msg, nums: NumStyle) -> String;
     /// How this language writes numbers: its decimal mark and the
     /// separator between a vector's components.
     fn nums(&self) -> NumStyle;

@@ -267,6 +267,8 @@ mod tests {
             Q::FiguresInMoodle,
             Q::Component,
             Q::Point,
+            Q::Word("clipped".into()),
+            Q::Word("none".into()),
         ]);
         v
     }
@@ -477,7 +479,8 @@ mod tests {
             | Q::Part
             | Q::FiguresInMoodle
             | Q::Component
-            | Q::Point => {}
+            | Q::Point
+            | Q::Word(_) => {}
         }
         match p {
             P::Title { .. }

@@ -3,12 +3,14 @@
 //! en/said.rs and id/said.rs.
 
 use crate::msg::Said;
+use crate::report::lang::NumStyle;
 use crate::stages::clip::Status;
 
 /// The words of values given as words.
 pub trait SaidWords {
-    /// The words of `s`, its numbers in this language's style.
-    fn said(&self, s: &Said) -> String;
+    /// The words of `s`, its numbers in the style `nums` (the language's
+    /// own, or a quiz's `--decimal`).
+    fn said(&self, s: &Said, nums: NumStyle) -> String;
 }
 
 /// The clipping status whose code (docs/spec.md's word, `clipped`) is

@@ -321,7 +321,7 @@ fn half_vector<T: Scalar>(
             if local {
                 "H = norm(norm(Cp − Vp) + Ldir) = norm(V + L),  cos = N·H"
             } else {
-                "H = norm((0,0,1) + Ldir) = norm(V + L),  cos = N·H"
+                "H = norm((0, 0, 1) + Ldir) = norm(V + L),  cos = N·H"
             },
         )
         .val(Name::math("V + L"), Val::vec3(&sum))

@@ -329,6 +329,7 @@ mod tests {
             value: v,
             exact: exact.map(str::to_string),
             pretty: None,
+            beyond: None,
         })
     }
     fn j_at(text: &str, e: &Val, key: &str) -> Judged {
@@ -378,6 +379,7 @@ mod tests {
             value: x.to_f64(),
             exact: x.exact_ascii(),
             pretty: None,
+            beyond: None,
         })
     }
 

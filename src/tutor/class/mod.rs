@@ -231,7 +231,7 @@ fn mark_with(paper: &Paper, markers: &Markers, f: &Path) -> Sheet {
         Ok((Some(s), _)) => s.clone(),
         _ => f
             .file_stem()
-            .map(|s| s.to_string_lossy().into_owned())
+            .map(|s| check::shown_name(&s.to_string_lossy()))
             .unwrap_or_default(),
     };
     let empty = matches!(&read, Ok((_, answers)) if answers.is_empty());

@@ -18,10 +18,21 @@
 //! (at 0.1 %, |a − x| ≤ 5·10⁻⁵·|x|, a twentieth of t). Mistaken values are
 //! written the same way.
 //!
+//! A number below what a student computes by hand is asked as 0: working
+//! to the significant figures asked, a student resolves an answer to r·S,
+//! S its scale ([`scale`]: the largest magnitude among the answer's
+//! numbers; for a colour, at least 1, full intensity, whatever its
+//! channels), so a number |x| < r·S (a zero included) is written 0 with the
+//! tolerance r·S, which holds x too: 0 and x are both right. A specular
+//! term of 1.6·10⁻¹⁰ (cos β⁸ of a far highlight) is asked as 0 ± 0.001;
+//! `check`'s rule, r·|x|, would take nothing but 1.587·10⁻¹⁰ itself, so
+//! the quiz accepts every number `check` accepts, and 0 besides.
+//!
 //! A mistaken value a student could not reasonably type is left out of its
-//! blank: one that is not finite, or more than [`ABSURD`] times the key's
-//! magnitude (for a zero key, its answer's largest magnitude): `tan 90°`
-//! for a window at fovy = 90° gives 1.6·10¹⁶.
+//! blank: one that is not finite, or more than [`ABSURD`] times the larger
+//! of the key's magnitude and its answer's scale: `tan 90°` for a window at
+//! fovy = 90° gives 1.6·10¹⁶; a normal not divided by |N| raises a cos β
+//! of 4 to the 8th, a colour channel of 58,465.
 
 use super::{Generated, Topic};
 use crate::input::problem::ProblemIn;
@@ -31,9 +42,9 @@ use crate::tutor::diagnose::{Code, Tree};
 use crate::tutor::key::{Field, Key, Part, Value};
 use crate::tutor::solution::value_of;
 
-/// A mistaken value more than this many times the key's magnitude is left
-/// out of its blank.
-pub const ABSURD: f64 = 1e6;
+/// A mistaken value more than this many times the larger of the key's
+/// magnitude and its answer's scale is left out of its blank.
+pub const ABSURD: f64 = 1e3;
 
 /// A quiz: the problems of every variant with their blanks.
 pub struct Quiz {
@@ -56,6 +67,43 @@ pub struct Question {
     pub asked: Vec<Asked>,
     /// What kinds of blanks it has (for the instruction line).
     pub typing: Typing,
+}
+
+impl Question {
+    /// The question's marks: the scheme's total over the answers asked (a
+    /// Moodle question's default mark).
+    pub fn marks(&self) -> u32 {
+        self.asked.iter().map(|a| a.marks).sum()
+    }
+
+    /// The weight of each answer's every blank, so that an answer weighs
+    /// its marks whatever its number of blanks: an answer of m marks and k
+    /// blanks needs a multiple of k/gcd(m, k) for m·L/k to be whole; with L
+    /// the least common multiple of these over the answers, each of its
+    /// blanks weighs m·L/k (n = (0.8, 0.6, 0) worth 1 and a status worth 1:
+    /// L = 3, each of n's blanks 1, the status 3; n worth 3: L = 1). Moodle
+    /// grades a Cloze question as Σ weight·fraction / Σ weight, so a right
+    /// answer earns its share of the marks exactly.
+    pub fn weights(&self) -> Vec<u32> {
+        let count = |a: &Asked| a.blanks.len().max(1) as u32;
+        let l = (self.asked.iter())
+            .map(|a| count(a) / gcd(a.marks.max(1), count(a)))
+            .fold(1, lcm);
+        self.asked.iter().map(|a| a.marks * l / count(a)).collect()
+    }
+}
+
+/// The greatest common divisor of two numbers.
+fn gcd(mut x: u32, mut y: u32) -> u32 {
+    while y != 0 {
+        (x, y) = (y, x % y);
+    }
+    x
+}
+
+/// The least common multiple of two positive numbers.
+fn lcm(a: u32, b: u32) -> u32 {
+    a / gcd(a, b) * b
 }
 
 /// What kinds of blanks a question has, for its instruction line: the
@@ -171,6 +219,8 @@ pub struct Asked {
     pub value: Val,
     /// The blanks, one per leaf.
     pub blanks: Vec<Blank>,
+    /// Its marks in the scheme ([`Generated::scheme`]).
+    pub marks: u32,
 }
 
 impl Asked {
@@ -194,6 +244,7 @@ pub fn blanks(g: &Generated, rel: f64, figs: u32) -> Vec<Asked> {
                 key: key.clone(),
                 value,
                 blanks,
+                marks: g.scheme.item(key).map_or(1, |i| i.marks),
             })
         })
         .collect()
@@ -214,10 +265,11 @@ fn mistaken_trees(p: &ProblemIn) -> Vec<(Code, Tree)> {
 /// when two mistakes give the same value.
 fn key_blanks(key: &Key, value: &Val, trees: &[(Code, Tree)], rel: f64, figs: u32) -> Vec<Blank> {
     let right = typed_leaves(key, value, rel);
-    let scale = magnitude(&right);
+    let scale = scale(key, &right);
     let mut blanks: Vec<Blank> = right
         .into_iter()
         .map(|(value, tolerance)| {
+            let (value, tolerance) = by_hand(value, tolerance, scale * rel);
             let (value, tolerance) = written(value, tolerance, figs);
             Blank {
                 value,
@@ -246,32 +298,41 @@ fn key_blanks(key: &Key, value: &Val, trees: &[(Code, Tree)], rel: f64, figs: u3
     blanks
 }
 
-/// The largest magnitude among an answer's numbers.
-fn magnitude(leaves: &[(Typed, f64)]) -> f64 {
-    leaves
+/// The scale S of an answer: the largest magnitude among its finite
+/// numbers; for a colour (a lighting term, the colour before and after
+/// clamping) at least 1, the full intensity of a channel; 1 when the whole
+/// answer is zero.
+pub fn scale(key: &Key, leaves: &[(Typed, f64)]) -> f64 {
+    let largest = leaves
         .iter()
         .filter_map(|(l, _)| match l {
-            Typed::Num(x) => Some(x.abs()),
-            Typed::Text(_) => None,
+            Typed::Num(x) if x.is_finite() => Some(x.abs()),
+            _ => None,
         })
-        .fold(0.0, f64::max)
+        .fold(0.0, f64::max);
+    let colour = matches!(key.value, Value::Field(Field::Shading(s)) if s.is_colour());
+    match (colour, largest > 0.0) {
+        (true, _) => largest.max(1.0),
+        (false, true) => largest,
+        (false, false) => 1.0,
+    }
+}
+
+/// A number as a student computes it by hand (see the module docs): below
+/// `resolution` (r·S) it is 0, with that tolerance; otherwise as it is.
+fn by_hand(v: Typed, t: f64, resolution: f64) -> (Typed, f64) {
+    match v {
+        Typed::Num(x) if x.abs() < resolution => (Typed::Num(0.0), t.max(resolution)),
+        other => (other, t),
+    }
 }
 
 /// Whether a mistaken value is no number a student would type: not finite,
-/// or more than [`ABSURD`] times the key's magnitude (a zero key's: its
-/// answer's largest, `scale`; 1 when the whole answer is zero).
+/// or more than [`ABSURD`] times the larger of the key's magnitude and its
+/// answer's scale.
 fn absurd(key: &Typed, w: &Typed, scale: f64) -> bool {
     match (key, w) {
-        (Typed::Num(x), Typed::Num(y)) => {
-            let m = if *x != 0.0 {
-                x.abs()
-            } else if scale > 0.0 {
-                scale
-            } else {
-                1.0
-            };
-            !y.is_finite() || y.abs() > ABSURD * m
-        }
+        (Typed::Num(x), Typed::Num(y)) => !y.is_finite() || y.abs() > ABSURD * x.abs().max(scale),
         _ => false,
     }
 }
@@ -422,9 +483,53 @@ mod tests {
         assert!(absurd(&k, &Typed::Num(0.5 * 1.633e16), 0.5));
         assert!(absurd(&k, &Typed::Num(f64::INFINITY), 0.5));
         assert!(absurd(&k, &Typed::Num(f64::NAN), 0.5));
-        assert!(!absurd(&k, &Typed::Num(-4e5), 0.5));
-        // a zero key goes by its answer's largest magnitude
-        assert!(absurd(&Typed::Num(0.0), &Typed::Num(2e6), 1.0));
-        assert!(!absurd(&Typed::Num(0.0), &Typed::Num(2e5), 1.0));
+        // 1,000 times the key, 500, is the last value kept
+        assert!(!absurd(&k, &Typed::Num(-500.0), 0.5));
+        assert!(absurd(&k, &Typed::Num(-501.0), 0.5));
+        // a zero key goes by its answer's scale: a colour channel's is 1,
+        // so 58,465 (a normal of length 3 not divided by |N|: cos β = 4,
+        // 4⁸ = 65,536, times ks) is out, and 324.9 stays
+        assert!(absurd(&Typed::Num(0.0), &Typed::Num(58465.0), 1.0));
+        assert!(!absurd(&Typed::Num(0.0), &Typed::Num(324.94), 1.0));
+        // a small component of a large vector goes by the vector
+        assert!(!absurd(&Typed::Num(0.001), &Typed::Num(-2.0), 13.0));
+    }
+
+    fn key(s: &str) -> Key {
+        s.parse().unwrap_or_else(|_| panic!("{s} is a key"))
+    }
+
+    #[test]
+    fn a_colour_has_the_scale_of_full_intensity() {
+        let n = |x: f64| (Typed::Num(x), 0.0);
+        // specular = cos β⁸·ks ≈ 1.6·10⁻¹⁰ in each channel: scale 1
+        let tiny = [n(1.6e-10), n(1.6e-10), n(1.6e-10)];
+        assert_eq!(scale(&key("shade.specular"), &tiny), 1.0);
+        // a vector keeps its own largest component
+        let v = [n(0.0), n(-13.0), n(0.5)];
+        assert_eq!(scale(&key("view.points.A"), &v), 13.0);
+        // a colour brighter than 1 (before clamping) keeps its own
+        assert_eq!(scale(&key("shade.unclamped"), &[n(1.4), n(0.2)]), 1.4);
+        // all zero: 1
+        assert_eq!(scale(&key("view.u"), &[n(0.0), n(0.0)]), 1.0);
+    }
+
+    #[test]
+    fn a_number_below_the_resolution_asked_is_asked_as_zero() {
+        // r·S = 0.001·1 for a colour: 1.5873·10⁻¹⁰ is 0 ± 0.001, and
+        // both 0 and the value itself lie within it
+        let (v, t) = by_hand(Typed::Num(1.5873e-10), 1.5873e-13, 1e-3);
+        assert_eq!((v, t), (Typed::Num(0.0), 1e-3));
+        assert!(1.5873e-10 <= t);
+        // at the resolution and above: as it is
+        assert_eq!(
+            by_hand(Typed::Num(0.001), 1e-6, 1e-3),
+            (Typed::Num(0.001), 1e-6)
+        );
+        // a zero takes the resolution as its tolerance (check's rule: r·S)
+        assert_eq!(by_hand(Typed::Num(0.0), 0.0, 2e-4), (Typed::Num(0.0), 2e-4));
+        // a word is no number
+        let w = Typed::Text("clipped".into());
+        assert_eq!(by_hand(w.clone(), 0.0, 1e-3), (w, 0.0));
     }
 }

@@ -5,7 +5,8 @@
 
 use super::En;
 use crate::msg::{
-    Bound, Channel, ClapErr, ErrMsg, IoWhy, NumErr, ObjWhy, Thing, TomlErr, Twice, Want,
+    Bound, Channel, ClapErr, ErrMsg, FileKind, IoWhy, ListWhy, NumErr, ObjWhy, Thing, TomlErr,
+    Twice, Want,
 };
 use crate::report::words::errors::{
     self, folder_prefix, ErrorWords, ExpectWord, Expected, ParseWhy, SerdeWord, Syntax, SyntaxWhat,
@@ -36,7 +37,18 @@ impl ErrorWords for En {
             ErrMsg::IsInput(p) => format!("{p} is one of this command's own inputs (the same file, links followed): it is never overwritten, even with --force"),
             ErrMsg::NotOwn(p, marker) => format!("{p} was not written by grafika generate (it is not listed in {marker}, or holds other files): --force replaces only generate's own earlier output; move it away or choose another --out"),
             ErrMsg::NotDirectory(p) => format!("{p} exists and is not a directory"),
-            ErrMsg::AnswerFileTooLarge(p, n, max) => format!("{p} has {n} bytes; an answer file may have at most {max} (it is refused before it is read as TOML)"),
+            ErrMsg::FileTooLarge(p, Some(n), max) => format!("{p} has {n} bytes; a problem, scene, lights or answer file may have at most {max} (it is refused before it is read as TOML)"),
+            ErrMsg::FileTooLarge(p, None, max) => format!("{p} has more than {max} bytes; a problem, scene, lights or answer file may have at most {max} (it is refused before it is read as TOML)"),
+            ErrMsg::TomlTooManyValues(max) => format!("the file's arrays hold more than {max} values together, more than grafika reads (refused before the file is read as TOML)"),
+            ErrMsg::TomlTooDeep(max) => format!("arrays or inline tables nested more than {max} deep (refused before the file is read as TOML)"),
+            ErrMsg::StdinClosed => "standard input is closed (<&-), so there is nothing to read: give a file, or send the input with < FILE or a pipe".into(),
+            ErrMsg::InputNotRegular(p, k) => format!("{p} is {}, not a regular file: grafika reads only regular files (and standard input, -), so that a read never waits forever", file_kind(*k)),
+            ErrMsg::OutputNotRegular(p, k) => format!("{p} is {}: grafika writes only regular files (and character devices such as /dev/null, directly), never replacing anything else; choose another name", file_kind(*k)),
+            ErrMsg::SameOutput(p, other) => format!("{p} is also the file of --{other}: one file cannot hold both outputs (nothing was written); give each its own name"),
+            ErrMsg::ChangedSince(p) => format!("{p} has changed since grafika generate wrote it (its content is not what grafika wrote): --force replaces only generate's own output as it was written; move it away or choose another --out"),
+            ErrMsg::NotOwnList(p, why) => format!("{p} is not a list that grafika generate wrote ({}), so nothing it names is replaced or removed: if this folder holds only an earlier generate's output, remove {p} and give --force, or choose another --out", list_why(why)),
+            ErrMsg::ListExists(p) => format!("{p} already exists (an earlier grafika generate wrote into this folder): give --force to replace that output, or choose another --out"),
+            ErrMsg::Locked(d, lock) => format!("another grafika generate is writing into {d} now (it holds {lock}): wait until it has finished, or choose another --out"),
             ErrMsg::NotMarked(n, of, which) => format!("{n} of the {of} answer files could not be marked (see the error in each one's row): {which}"),
             ErrMsg::Man(why) => format!("cannot write the manual page: {why}"),
             ErrMsg::ObjUnreadable(p, why) => {
@@ -51,6 +63,8 @@ impl ErrorWords for En {
             ErrMsg::FormulaNotFinite => "the formula gives a value that is not a finite number".into(),
             ErrMsg::TooManyTriangles(n, max) => format!("the scene's objects have {n} triangles together; the renderer takes at most {max} per scene (refused before any mesh is built)"),
             ErrMsg::TooManyLights(n, max) => format!("the file has {n} lights; grafika takes at most {max} per file (as Direct3D 9 does)"),
+            ErrMsg::RenderWork(est, frames, max) => format!("this render is estimated at {est} million steps (the pixels each triangle's box covers, lighting, over {frames} frame(s)), more than the limit of {max} million (about 10 s on 2 cores): give --work-limit {est} to render it anyway, or lower --width, --height or --repeat"),
+            ErrMsg::FormulaWork(n, size, need, max) => format!("the height formulas would be evaluated {n} times, {size} operations and numbers each, more than the work limit of {max} million steps (refused before any is evaluated): give render --work-limit {need} to evaluate them anyway, or use fewer grid points (nx, nz) or a shorter formula"),
             ErrMsg::NeedsColour => "needs at least one colour".into(),
             ErrMsg::NoObjects => "the scene has no objects: add at least one [[object]] table (cone, sphere, cylinder, box, plane or obj)".into(),
             ErrMsg::CameraNeedsPerspective => "a [camera] needs a [perspective] with fovy, near and far".into(),
@@ -94,6 +108,8 @@ impl ErrorWords for En {
             ErrMsg::StdinHoldsAnswers => "standard input holds the answers: give the problem as a file".into(),
             ErrMsg::GiveProblem => "give a problem file or --topic".into(),
             ErrMsg::TooManyProblems(n, c, v, mb, max) => format!("{n} problems ({c} × {v}, about {mb} MB) is more than the {max} written without --force"),
+            ErrMsg::SplitNotQuiz => "splits a quiz file: it is taken with --format moodle or --format gift only".into(),
+            ErrMsg::QuestionTooLarge(q, size, limit) => format!("the question \"{q}\" alone takes {size} MB, more than the {limit} MB a file may have: give a larger --split-mb"),
             ErrMsg::BothStdin => "the problem and the answers cannot both come from standard input (-)".into(),
             ErrMsg::NoPrinted(p) => format!("{p} has no [printed] table"),
             ErrMsg::CsvAndJson => "--csv - and --json would both write to standard output: give --csv a file name".into(),
@@ -357,5 +373,29 @@ impl ErrorWords for En {
             | S::UnitVariant
             | S::Elements => errors::serde_text(w),
         }
+    }
+}
+
+/// What a path that is not a regular file names, with its article.
+fn file_kind(k: FileKind) -> &'static str {
+    match k {
+        FileKind::Fifo => "a FIFO (named pipe)",
+        FileKind::Socket => "a socket",
+        FileKind::CharDevice => "a character device",
+        FileKind::BlockDevice => "a block device (a disk)",
+        FileKind::Folder => "a folder",
+        FileKind::Other => "not a file grafika reads or writes",
+    }
+}
+
+/// Why a `.grafika-generated` is not generate's own list.
+fn list_why(w: &ListWhy) -> String {
+    match w {
+        ListWhy::NotAFile => "it is not a regular file".into(),
+        ListWhy::Heading => "its first line is not the one generate writes".into(),
+        ListWhy::Line(n) => format!("line {n} is not a SHA-256 and a file name"),
+        ListWhy::Name(n, name) => format!("line {n} names {name}, which generate never writes"),
+        ListWhy::Owner => "it belongs to another user".into(),
+        ListWhy::TooLarge => "it is larger than any list generate writes".into(),
     }
 }

@@ -72,6 +72,30 @@ impl KeyWords for En {
         in_segment("segment", k, name)
     }
 
+    fn blank_label(&self, k: &Key) -> String {
+        let name = match &k.value {
+            Value::Field(Field::Code0) => "outcode of P0",
+            Value::Field(Field::Code1) => "outcode of P1",
+            Value::Field(Field::Shading(s)) => match s {
+                Shading::CosAlpha => "cos α",
+                Shading::CosBeta => "cos β",
+                Shading::NDotH => "N·H",
+                Shading::L => "L",
+                Shading::N => "N",
+                Shading::R => "R",
+                Shading::H => "H",
+                Shading::Ambient => "ambient term",
+                Shading::Diffuse => "diffuse term",
+                Shading::Specular => "specular term",
+                Shading::Emissive => "emissive term",
+                Shading::Unclamped => "color before clamping",
+                Shading::Color => "color",
+            },
+            _ => return self.answer_name(k),
+        };
+        in_segment("segment", k, name.to_string())
+    }
+
     fn answer_words(&self, k: &Key) -> String {
         let pl = |p: &Plane| self.plane(*p);
         match &k.value {
@@ -175,6 +199,25 @@ mod tests {
             "segment 2: P(t) (top)"
         );
         assert_eq!(en("shade.lights[1].attenuation"), "Att (light 1)");
+    }
+
+    /// A quiz labels its blanks with no JSON key: the steps' names, and
+    /// words where the name is notation (code0, cos_alpha).
+    #[test]
+    fn a_quiz_labels_its_blanks_in_words_not_keys() {
+        let en = |s| En.blank_label(&key(s));
+        assert_eq!(en("view.n"), "n");
+        assert_eq!(en("view.points.A"), "A'");
+        assert_eq!(en("project.points.A"), "A''");
+        assert_eq!(en("viewport.pixels.A"), "A pixel");
+        assert_eq!(en("window.top"), "top");
+        assert_eq!(en("clip.code0"), "outcode of P0");
+        assert_eq!(en("clip[2].code1"), "segment 2: outcode of P1");
+        assert_eq!(en("clip.segment"), "clipped segment");
+        assert_eq!(en("shade.cos_alpha"), "cos α");
+        assert_eq!(en("shade.N_dot_H"), "N·H");
+        assert_eq!(en("shade.specular"), "specular term");
+        assert_eq!(en("shade.color"), "color");
     }
 
     #[test]

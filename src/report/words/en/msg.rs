@@ -14,7 +14,7 @@ use crate::tutor::key::Plane;
 
 impl MsgWords for En {
     /// A word table: long on purpose.
-    fn msg(&self, m: &Msg) -> String {
+    fn msg_in(&self, m: &Msg, nums: NumStyle) -> String {
         match m {
             Msg::Math(s) => s.clone(),
             Msg::Written(en, _) => en.clone(),
@@ -23,15 +23,16 @@ impl MsgWords for En {
             Msg::Asked(parts) => msg::asked(self, parts),
             Msg::DrawnTitle(t) => self.drawn_title(*t).into(),
             Msg::Pixel(p) => self.pixel(p),
-            Msg::Statement(s) => self.statement(s, self.nums()),
+            Msg::Statement(s) => self.statement(s, nums),
             Msg::Figure(f) => self.figure(f),
             Msg::At(place, m) => msg::at(self, place, m),
             Msg::Err(e) => self.error(e),
-            Msg::Said(s) => self.said(s),
+            Msg::Said(s) => self.said(s, nums),
             Msg::SecModeling => "Stage 1: modeling transformation".into(),
             Msg::SecViewing => "Stage 2: viewing transformation (world → eye coordinates)".into(),
             Msg::SecProjection => "Stage 3: projection onto the near plane".into(),
             Msg::SecWindowClip => "Stage 4: window and clipping".into(),
+            Msg::SecWindow => "Stage 4: viewing window".into(),
             Msg::SecViewport => "Viewport mapping (window → pixels)".into(),
             Msg::SecLineClip(None) => "Line clipping".into(),
             Msg::SecLineClip(Some(i)) => format!("Line clipping, segment {i}"),
@@ -88,7 +89,7 @@ impl MsgWords for En {
             Msg::FCamMatrix => "Mcam = T(Pe) · [u v n]   (columns u, v, n, Pe)".into(),
             Msg::FViewMatrix => "V = R · T(−Pe),  R = [uᵀ; vᵀ; nᵀ],  last column (−u·Pe, −v·Pe, −n·Pe)".into(),
             Msg::FTrivial => "both codes 000000 → accept;  code0 AND code1 ≠ 000000 → reject;  otherwise clip".into(),
-            Msg::FOutcode => "bit 1 x<xmin (kiri) · bit 2 x>xmax (kanan) · bit 3 y<ymin (bawah) · bit 4 y>ymax (atas) · bit 5 z<zmin (depan) · bit 6 z>zmax (belakang); the code is written bit 6 … bit 1 (bit 1 rightmost)".into(),
+            Msg::FOutcode => "bit 1 x<xmin (left) · bit 2 x>xmax (right) · bit 3 y<ymin (bottom) · bit 4 y>ymax (top) · bit 5 z<zmin (front) · bit 6 z>zmax (back); the code is written bit 6 … bit 1 (bit 1 rightmost)".into(),
             Msg::FSegment => "from the kept point with the smallest t to the one with the largest t (inside ends count as t = 0 and t = 1)".into(),
             Msg::FMethods => "outcode clipping against Liang–Barsky".into(),
             Msg::FProjPlane => "z = d,  d = −near (the camera looks along −z in eye coordinates)".into(),
@@ -140,7 +141,7 @@ impl MsgWords for En {
             Msg::Misses => "no intersection is inside the box: the segment misses it (rejected)".into(),
             Msg::DefaultView => "not given: the text's viewVector (0, 0, 1), a viewer far along +z".into(),
             Msg::MaterialD3d => "Direct3D material: its colors carry the coefficients, so ka = kd = ks = 1".into(),
-            Msg::MaterialText => "the text's constants unless given: ka = 0.4, kd = 0.6, ks = 0.7, n = 4, white specular".into(),
+            Msg::MaterialText => format!("the text's constants unless given: {}", nums.values("ka = 0.4, kd = 0.6, ks = 0.7, n = 4, white specular")),
             Msg::NoTriangle => "no triangle covers the pixel centre: it keeps the background colour".into(),
             Msg::Nearest => "the nearest of all triangles covering this pixel".into(),
             Msg::Agree(true) => "both methods give the same segment".into(),
@@ -209,17 +210,19 @@ impl MsgWords for En {
             ),
             Msg::UpParallel(a) => format!(
                 "the up vector is nearly parallel to the view direction (angle {} rad): u and v are very sensitive to the inputs",
-                msg::exponent(self.nums(), *a)
+                msg::exponent(nums, *a)
             ),
             Msg::BehindWarn(n) => format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen"),
             Msg::NoFigure => "no figure was written: no part asked has a figure of its own (the pixels of `viewport` are drawn on the window's figure: ask `window` with it)".into(),
             Msg::ExactTooLarge(n) => format!("exact values that would hold more than {n} terms (many different square roots) were computed in f64 and are marked ≈, as is what follows from them"),
+            Msg::ExactTooLong(bits) => format!("exact values whose numerator or denominator would pass {bits} bits (a high power, such as a large shininess) were computed in f64 and are marked ≈, as is what follows from them"),
+            Msg::StaleTempRemoved(p, pid) => format!("removed {p}, a temporary file left by grafika process {pid}, which is no longer running (it was stopped before it could clean up)"),
             Msg::ErrFewDistinct(topic, level, n) => format!("could not draw a {topic} problem at {level} level unlike the {n} before it: there are few different ones at this level; ask for fewer problems (--count) or another --difficulty"),
             Msg::ErrHtmlCommand => "writes the worked solution of basis, view, project, window, clip, shade, solve and render; for exams use generate --format html".into(),
             Msg::Parts(parts) => msg::parts(self, parts),
-            Msg::Expected(v) => format!("expected {}", self.nums().values(v)),
+            Msg::Expected(v) => format!("expected {}", nums.values(v)),
             Msg::Unreadable(why) => format!("cannot be read: {}", self.number(why)),
-            Msg::WithinPct(p) => format!("within {}%", self.nums().number(p)),
+            Msg::WithinPct(p) => format!("within {}%", nums.number(p)),
         }
     }
 

@@ -211,7 +211,8 @@ impl ReportWords for En {
             Q::KnownMistake => "Known mistake: ".into(),
             Q::OrMistake => "; or: ".into(),
             Q::Part => "Part".into(),
-            Q::FiguresInMoodle => "The figures of this problem are in the Moodle XML of the same exam (grafika generate … --format moodle): GIFT cannot carry files.".into(),
+            Q::FiguresInMoodle => "GIFT carries no files: the figures of the worked solutions are in the Moodle XML of the same exam only (--format moodle).".into(),
+            Q::Word(code) => code.clone(),
             Q::Component => "component".into(),
             Q::Point => "point".into(),
         }

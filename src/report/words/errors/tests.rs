@@ -3,6 +3,7 @@
 //! again in English are the crates' messages.
 
 use super::*;
+use crate::msg::{FileKind, ListWhy};
 use crate::report::lang::Lang;
 use crate::report::words::of;
 use proptest::prelude::*;
@@ -57,7 +58,17 @@ pub fn every_error() -> Vec<ErrMsg> {
         ErrMsg::NotOwn(s("exam/key.md"), s(".grafika-generated")),
         ErrMsg::NotDirectory(s("out")),
         ErrMsg::NotMarked(1, 4, s("class/broken.toml")),
-        ErrMsg::AnswerFileTooLarge(s("a.toml"), 2_000_000, 1 << 20),
+        ErrMsg::FileTooLarge(s("a.toml"), Some(2_000_000), 1 << 20),
+        ErrMsg::FileTooLarge(s("-"), None, 1 << 20),
+        ErrMsg::TomlTooManyValues(100_000),
+        ErrMsg::TomlTooDeep(32),
+        ErrMsg::StdinClosed,
+        ErrMsg::SameOutput(s("same.csv"), s("csv")),
+        ErrMsg::ChangedSince(s("exam/key.md")),
+        ErrMsg::ListExists(s("exam/.grafika-generated")),
+        ErrMsg::Locked(s("exam"), s("exam/.grafika-lock")),
+        ErrMsg::RenderWork(6_710, 1, 4_000),
+        ErrMsg::FormulaWork(1_988_100, 961, 7_643, 4_000),
         ErrMsg::NoLightTable(s("l.toml")),
         ErrMsg::ColorMissing,
         ErrMsg::NormalMissing,
@@ -93,6 +104,12 @@ pub fn every_error() -> Vec<ErrMsg> {
         ErrMsg::StdinHoldsAnswers,
         ErrMsg::GiveProblem,
         ErrMsg::TooManyProblems(3000, 1000, 3, 48, 2000),
+        ErrMsg::SplitNotQuiz,
+        ErrMsg::QuestionTooLarge(
+            s("Problem 01, variant 02: Eye coordinates"),
+            s("0.031"),
+            s("0.01"),
+        ),
         ErrMsg::BothStdin,
         ErrMsg::NoPrinted(s("p.toml")),
         ErrMsg::CsvAndJson,
@@ -119,6 +136,27 @@ pub fn every_error() -> Vec<ErrMsg> {
         ErrMsg::OwnOutput,
         ErrMsg::Man(s("why")),
     ]);
+    for k in [
+        FileKind::Fifo,
+        FileKind::Socket,
+        FileKind::CharDevice,
+        FileKind::BlockDevice,
+        FileKind::Folder,
+        FileKind::Other,
+    ] {
+        v.push(ErrMsg::InputNotRegular(s("p.toml"), k));
+        v.push(ErrMsg::OutputNotRegular(s("a.png"), k));
+    }
+    for w in [
+        ListWhy::NotAFile,
+        ListWhy::Heading,
+        ListWhy::Line(3),
+        ListWhy::Name(3, s("notes.txt")),
+        ListWhy::Owner,
+        ListWhy::TooLarge,
+    ] {
+        v.push(ErrMsg::NotOwnList(s("exam/.grafika-generated"), w));
+    }
     v.extend(
         every_obj()
             .into_iter()
@@ -314,7 +352,19 @@ fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want,
         | E::NotOwn(..)
         | E::NotDirectory(_)
         | E::NotMarked(..)
-        | E::AnswerFileTooLarge(..)
+        | E::FileTooLarge(..)
+        | E::TomlTooManyValues(_)
+        | E::TomlTooDeep(_)
+        | E::StdinClosed
+        | E::InputNotRegular(..)
+        | E::OutputNotRegular(..)
+        | E::SameOutput(..)
+        | E::ChangedSince(_)
+        | E::NotOwnList(..)
+        | E::ListExists(_)
+        | E::Locked(..)
+        | E::RenderWork(..)
+        | E::FormulaWork(..)
         | E::NoLightTable(_)
         | E::ColorMissing
         | E::NormalMissing
@@ -351,6 +401,8 @@ fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want,
         | E::StdinHoldsAnswers
         | E::GiveProblem
         | E::TooManyProblems(..)
+        | E::SplitNotQuiz
+        | E::QuestionTooLarge(..)
         | E::BothStdin
         | E::NoPrinted(_)
         | E::CsvAndJson

@@ -5,7 +5,8 @@
 
 use super::Id;
 use crate::msg::{
-    Bound, Channel, ClapErr, ErrMsg, IoWhy, NumErr, ObjWhy, Thing, TomlErr, Twice, Want,
+    Bound, Channel, ClapErr, ErrMsg, FileKind, IoWhy, ListWhy, NumErr, ObjWhy, Thing, TomlErr,
+    Twice, Want,
 };
 use crate::report::words::errors::{
     self, folder_prefix, ErrorWords, ExpectWord, Expected, ParseWhy, SerdeWord, Syntax, SyntaxWhat,
@@ -41,7 +42,18 @@ impl ErrorWords for Id {
             ErrMsg::IsInput(p) => format!("{p} adalah salah satu masukan perintah ini (berkas yang sama, tautan diikuti): tidak pernah ditimpa, juga dengan --force"),
             ErrMsg::NotOwn(p, marker) => format!("{p} tidak ditulis oleh grafika generate (tidak tercantum di {marker}, atau berisi berkas lain): --force hanya mengganti keluaran generate sendiri sebelumnya; pindahkan atau pilih --out yang lain"),
             ErrMsg::NotDirectory(p) => format!("{p} sudah ada dan bukan direktori"),
-            ErrMsg::AnswerFileTooLarge(p, n, max) => format!("{p} berukuran {n} bita; berkas jawaban paling besar {max} bita (ditolak sebelum dibaca sebagai TOML)"),
+            ErrMsg::FileTooLarge(p, Some(n), max) => format!("{p} berukuran {n} bita; berkas soal, scene, cahaya atau jawaban paling besar {max} bita (ditolak sebelum dibaca sebagai TOML)"),
+            ErrMsg::FileTooLarge(p, None, max) => format!("{p} berukuran lebih dari {max} bita; berkas soal, scene, cahaya atau jawaban paling besar {max} bita (ditolak sebelum dibaca sebagai TOML)"),
+            ErrMsg::TomlTooManyValues(max) => format!("larik-larik (array) dalam berkas ini bersama-sama memuat lebih dari {max} nilai, lebih dari yang dibaca grafika (ditolak sebelum berkas dibaca sebagai TOML)"),
+            ErrMsg::TomlTooDeep(max) => format!("larik (array) atau tabel sebaris bersarang lebih dari {max} tingkat (ditolak sebelum berkas dibaca sebagai TOML)"),
+            ErrMsg::StdinClosed => "masukan standar tertutup (<&-), jadi tidak ada yang bisa dibaca: berikan sebuah berkas, atau kirim masukan dengan < BERKAS atau pipa".into(),
+            ErrMsg::InputNotRegular(p, k) => format!("{p} adalah {}, bukan berkas biasa: grafika hanya membaca berkas biasa (dan masukan standar, -), agar pembacaan tidak pernah menunggu selamanya", file_kind(*k)),
+            ErrMsg::OutputNotRegular(p, k) => format!("{p} adalah {}: grafika hanya menulis berkas biasa (dan perangkat karakter seperti /dev/null, secara langsung), tidak pernah mengganti yang lain; pilih nama lain", file_kind(*k)),
+            ErrMsg::SameOutput(p, other) => format!("{p} juga berkas untuk --{other}: satu berkas tidak dapat memuat kedua keluaran (tidak ada yang ditulis); berikan nama sendiri untuk masing-masing"),
+            ErrMsg::ChangedSince(p) => format!("{p} telah berubah sejak ditulis oleh grafika generate (isinya bukan yang ditulis grafika): --force hanya mengganti keluaran generate sendiri seperti saat ditulis; pindahkan atau pilih --out yang lain"),
+            ErrMsg::NotOwnList(p, why) => format!("{p} bukan daftar yang ditulis oleh grafika generate ({}), jadi tidak ada yang disebutnya diganti atau dihapus: jika folder ini hanya berisi keluaran generate sebelumnya, hapus {p} lalu berikan --force, atau pilih --out yang lain", list_why(why)),
+            ErrMsg::ListExists(p) => format!("{p} sudah ada (grafika generate sebelumnya menulis ke folder ini): berikan --force untuk mengganti keluaran itu, atau pilih --out yang lain"),
+            ErrMsg::Locked(d, lock) => format!("grafika generate lain sedang menulis ke {d} (ia memegang {lock}): tunggu sampai selesai, atau pilih --out yang lain"),
             ErrMsg::NotMarked(n, of, which) => format!("{n} dari {of} berkas jawaban tidak dapat dinilai (lihat galat di baris masing-masing): {which}"),
             ErrMsg::Man(why) => format!("tidak dapat menulis halaman manual: {why}"),
             ErrMsg::ObjUnreadable(p, why) => {
@@ -56,6 +68,8 @@ impl ErrorWords for Id {
             ErrMsg::FormulaNotFinite => "rumus menghasilkan nilai yang bukan bilangan berhingga".into(),
             ErrMsg::TooManyTriangles(n, max) => format!("objek-objek scene ini bersama-sama memiliki {n} segitiga; renderer menerima paling banyak {max} per scene (ditolak sebelum mesh dibuat)"),
             ErrMsg::TooManyLights(n, max) => format!("file ini memiliki {n} cahaya; grafika menerima paling banyak {max} per file (seperti Direct3D 9)"),
+            ErrMsg::RenderWork(est, frames, max) => format!("render ini diperkirakan {est} juta langkah (piksel yang dicakup kotak setiap segitiga, pencahayaan, untuk {frames} frame), melebihi batas {max} juta (sekitar 10 detik dengan 2 core): berikan --work-limit {est} untuk tetap me-render, atau kecilkan --width, --height atau --repeat"),
+            ErrMsg::FormulaWork(n, size, need, max) => format!("rumus ketinggian akan dievaluasi {n} kali, masing-masing {size} operasi dan bilangan, melebihi batas kerja {max} juta langkah (ditolak sebelum ada yang dievaluasi): berikan render --work-limit {need} untuk tetap mengevaluasinya, atau pakai lebih sedikit titik grid (nx, nz) atau rumus yang lebih pendek"),
             ErrMsg::NeedsColour => "memerlukan paling sedikit satu warna".into(),
             ErrMsg::NoObjects => "scene tidak memiliki objek: tambahkan paling sedikit satu tabel [[object]] (cone, sphere, cylinder, box, plane atau obj)".into(),
             ErrMsg::CameraNeedsPerspective => "[camera] memerlukan [perspective] dengan fovy, near dan far".into(),
@@ -109,6 +123,8 @@ impl ErrorWords for Id {
             ErrMsg::StdinHoldsAnswers => "masukan standar berisi jawaban: berikan soal sebagai berkas".into(),
             ErrMsg::GiveProblem => "berikan berkas soal atau --topic".into(),
             ErrMsg::TooManyProblems(n, c, v, mb, max) => format!("{n} soal ({c} × {v}, sekitar {mb} MB) lebih dari {max} yang ditulis tanpa --force"),
+            ErrMsg::SplitNotQuiz => "memecah berkas kuis: hanya dipakai dengan --format moodle atau --format gift".into(),
+            ErrMsg::QuestionTooLarge(q, size, limit) => format!("pertanyaan \"{q}\" sendiri berukuran {} MB, lebih dari {} MB yang boleh dimiliki satu berkas: berikan --split-mb yang lebih besar", n(size), n(limit)),
             ErrMsg::BothStdin => "soal dan jawaban tidak dapat sama-sama berasal dari masukan standar (-)".into(),
             ErrMsg::NoPrinted(p) => format!("{p} tidak memiliki tabel [printed]"),
             ErrMsg::CsvAndJson => "--csv - dan --json sama-sama akan menulis ke keluaran standar: berikan nama berkas untuk --csv".into(),
@@ -511,5 +527,31 @@ impl ErrorWords for Id {
             SerdeWord::I32 | SerdeWord::I64 => "bilangan bulat",
             SerdeWord::F32 | SerdeWord::F64 => "bilangan",
         }
+    }
+}
+
+/// Apa yang dinamai sebuah jalur yang bukan berkas biasa.
+fn file_kind(k: FileKind) -> &'static str {
+    match k {
+        FileKind::Fifo => "FIFO (pipa bernama)",
+        FileKind::Socket => "soket",
+        FileKind::CharDevice => "perangkat karakter",
+        FileKind::BlockDevice => "perangkat blok (disk)",
+        FileKind::Folder => "folder",
+        FileKind::Other => "bukan berkas yang dibaca atau ditulis grafika",
+    }
+}
+
+/// Mengapa sebuah `.grafika-generated` bukan daftar milik generate.
+fn list_why(w: &ListWhy) -> String {
+    match w {
+        ListWhy::NotAFile => "ia bukan berkas biasa".into(),
+        ListWhy::Heading => "baris pertamanya bukan yang ditulis generate".into(),
+        ListWhy::Line(n) => format!("baris {n} bukan SHA-256 dan nama berkas"),
+        ListWhy::Name(n, name) => {
+            format!("baris {n} menyebut {name}, yang tidak pernah ditulis generate")
+        }
+        ListWhy::Owner => "ia milik pengguna lain".into(),
+        ListWhy::TooLarge => "ia lebih besar dari daftar mana pun yang ditulis generate".into(),
     }
 }

@@ -114,6 +114,41 @@ impl KeyWords for Id {
         in_segment("segmen", k, name)
     }
 
+    fn blank_label(&self, k: &Key) -> String {
+        let name = match &k.value {
+            Value::Field(Field::Code0) => "region code P0".to_string(),
+            Value::Field(Field::Code1) => "region code P1".to_string(),
+            Value::Field(Field::Edge(e, far)) => {
+                let what = match e {
+                    Edge::Top => "batas atas (top)",
+                    Edge::Bottom => "batas bawah (bottom)",
+                    Edge::Left => "batas kiri (left)",
+                    Edge::Right => "batas kanan (right)",
+                    Edge::Height => "tinggi",
+                    Edge::Width => "lebar",
+                };
+                let far = if *far { " pada far plane" } else { "" };
+                format!("{what}{far}")
+            }
+            Value::Field(Field::Shading(s)) => match s {
+                Shading::Ambient | Shading::Diffuse | Shading::Specular | Shading::Emissive => {
+                    format!("komponen {}", Node::Field(Field::Shading(*s)))
+                }
+                Shading::Unclamped => "warna sebelum dibatasi".to_string(),
+                Shading::L
+                | Shading::N
+                | Shading::R
+                | Shading::H
+                | Shading::CosAlpha
+                | Shading::CosBeta
+                | Shading::NDotH
+                | Shading::Color => return self.answer_name(k),
+            },
+            _ => return self.answer_name(k),
+        };
+        in_segment("segmen", k, name)
+    }
+
     fn answer_words(&self, k: &Key) -> String {
         let pl = |p: &Plane| self.plane(*p);
         match &k.value {
@@ -246,6 +281,27 @@ mod tests {
         assert_eq!(id("shade.color"), "warna");
         assert_eq!(id("shade.cos_alpha"), "cos α");
         assert_eq!(id("shade.lights[1].attenuation"), "Att (cahaya 1)");
+    }
+
+    /// An Indonesian quiz labels its blanks in the text's words: no JSON
+    /// key, no English word where the text has its own (tinggi, lebar,
+    /// region code, komponen).
+    #[test]
+    fn a_quiz_labels_its_blanks_in_the_texts_words() {
+        let id = |s| Id.blank_label(&key(s));
+        assert_eq!(id("view.n"), "n");
+        assert_eq!(id("view.points.A"), "A'");
+        assert_eq!(id("viewport.pixels.A"), "piksel A");
+        assert_eq!(id("window.top"), "batas atas (top)");
+        assert_eq!(id("window.height"), "tinggi");
+        assert_eq!(id("window.far_width"), "lebar pada far plane");
+        assert_eq!(id("clip.code0"), "region code P0");
+        assert_eq!(id("clip[2].status"), "segmen 2: status");
+        assert_eq!(id("clip.segment"), "segmen garis hasil clipping");
+        assert_eq!(id("shade.cos_alpha"), "cos α");
+        assert_eq!(id("shade.diffuse"), "komponen diffuse");
+        assert_eq!(id("shade.unclamped"), "warna sebelum dibatasi");
+        assert_eq!(id("shade.color"), "warna");
     }
 
     #[test]

@@ -14,8 +14,8 @@ use crate::tutor::key::Plane;
 
 impl MsgWords for Id {
     /// A word table: long on purpose.
-    fn msg(&self, m: &Msg) -> String {
-        let n = |s: &str| self.nums().values(s);
+    fn msg_in(&self, m: &Msg, nums: NumStyle) -> String {
+        let n = |s: &str| nums.values(s);
         match m {
             Msg::Math(s) => s.clone(),
             Msg::Written(en, ind) => ind.clone().unwrap_or_else(|| en.clone()),
@@ -24,15 +24,16 @@ impl MsgWords for Id {
             Msg::Asked(parts) => msg::asked(self, parts),
             Msg::DrawnTitle(t) => self.drawn_title(*t).into(),
             Msg::Pixel(p) => self.pixel(p),
-            Msg::Statement(s) => self.statement(s, self.nums()),
+            Msg::Statement(s) => self.statement(s, nums),
             Msg::Figure(f) => self.figure(f),
             Msg::At(place, m) => msg::at(self, place, m),
             Msg::Err(e) => self.error(e),
-            Msg::Said(s) => self.said(s),
+            Msg::Said(s) => self.said(s, nums),
             Msg::SecModeling => "Tahap 1: transformasi pemodelan".into(),
             Msg::SecViewing => "Tahap 2: transformasi sistem pandang (koordinat dunia → koordinat kamera)".into(),
             Msg::SecProjection => "Tahap 3: proyeksi terhadap near clipping plane".into(),
             Msg::SecWindowClip => "Tahap 4: viewing window dan clipping".into(),
+            Msg::SecWindow => "Tahap 4: viewing window".into(),
             Msg::SecViewport => "Pemetaan viewport (viewing window → piksel)".into(),
             Msg::SecLineClip(None) => "Clipping garis".into(),
             Msg::SecLineClip(Some(i)) => format!("Clipping garis, segmen {i}"),
@@ -138,7 +139,7 @@ impl MsgWords for Id {
             Msg::Misses => "tidak ada titik potong di dalam view volume: segmen garis tidak mengenainya (ditolak)".into(),
             Msg::DefaultView => "tidak diberikan: viewVector dari teks (0; 0; 1), pengamat jauh di arah +z".into(),
             Msg::MaterialD3d => "material Direct3D: warnanya sudah memuat koefisien, jadi ka = kd = ks = 1".into(),
-            Msg::MaterialText => "konstanta dari teks bila tidak diberikan: ka = 0,4; kd = 0,6; ks = 0,7 (ksp dalam teks); n = 4; specular putih (Cwhite)".into(),
+            Msg::MaterialText => format!("konstanta dari teks bila tidak diberikan: {}", nums.values("ka = 0.4, kd = 0.6, ks = 0.7 (ksp dalam teks), n = 4, specular putih (Cwhite)")),
             Msg::NoTriangle => "tidak ada segitiga yang menutupi pusat piksel: warnanya tetap warna latar".into(),
             Msg::Nearest => "yang terdekat dari semua segitiga yang menutupi piksel ini".into(),
             Msg::Agree(true) => "kedua metode menghasilkan segmen garis yang sama".into(),
@@ -204,17 +205,19 @@ impl MsgWords for Id {
             Msg::RoundedCoarse(s, need) => format!("dibulatkan ke {s} angka penting, paling sedikit {need} diperlukan"),
             Msg::UpParallel(a) => format!(
                 "vektor up (Vup) hampir sejajar dengan arah pandang (sudut {} rad): u dan v sangat peka terhadap masukan",
-                msg::exponent(self.nums(), *a)
+                msg::exponent(nums, *a)
             ),
             Msg::BehindWarn(n) => format!("{n} berada di belakang pusat proyeksi: bayangannya terbalik dan tidak terlihat"),
             Msg::NoFigure => "tidak ada gambar yang ditulis: tidak ada bagian yang ditanyakan yang punya gambar sendiri (piksel `viewport` digambar pada gambar window: tanyakan `window` juga)".into(),
             Msg::ExactTooLarge(n) => format!("nilai eksak yang akan memuat lebih dari {n} suku (banyak akar kuadrat yang berbeda) dihitung dengan f64 dan ditandai ≈, begitu pula yang diturunkan darinya"),
+            Msg::ExactTooLong(bits) => format!("nilai eksak yang pembilang atau penyebutnya akan melebihi {bits} bit (pangkat yang tinggi, seperti shininess yang besar) dihitung dengan f64 dan ditandai ≈, begitu pula yang diturunkan darinya"),
+            Msg::StaleTempRemoved(p, pid) => format!("{p} dihapus: berkas sementara yang ditinggalkan proses grafika {pid}, yang sudah tidak berjalan (dihentikan sebelum sempat membersihkan)"),
             Msg::ErrFewDistinct(topic, level, n) => format!("tidak dapat menarik soal {topic} tingkat {level} yang berbeda dari {n} soal sebelumnya: soal yang berbeda di tingkat ini tidak banyak; minta lebih sedikit soal (--count) atau tingkat lain (--difficulty)"),
             Msg::ErrHtmlCommand => "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html".into(),
             Msg::Parts(parts) => msg::parts(self, parts),
-            Msg::Expected(v) => format!("seharusnya {}", self.nums().values(v)),
+            Msg::Expected(v) => format!("seharusnya {}", nums.values(v)),
             Msg::Unreadable(why) => format!("tidak dapat dibaca: {}", self.number(why)),
-            Msg::WithinPct(p) => format!("dalam batas {}%", self.nums().number(p)),
+            Msg::WithinPct(p) => format!("dalam batas {}%", nums.number(p)),
         }
     }
 

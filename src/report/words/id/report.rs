@@ -12,6 +12,7 @@ use crate::msg::StatWord as S;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
 use crate::report::words::report::{dec, exam_title, percent, ReportWords};
 use crate::report::words::MsgWords;
+use crate::stages::clip::Status;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
@@ -205,11 +206,18 @@ impl ReportWords for Id {
                 format!("Tulis setiap bilangan sebagai desimal dengan sedikitnya {figures} angka penting, bukan sebagai bentuk eksak seperti (√2−1)/2, dengan {mark} (bilangan yang berselisih paling banyak {pct} % dari kunci dinilai benar{pixel}).")
             }
             Q::TypeOutcodes => "Tulis outcode sebagai enam bit, bit 1 paling kanan (mis. 000010).".into(),
-            Q::TypeStatus => "Tulis status clipping sebagai accepted, rejected atau clipped, dan sisa segmen sebagai none bila tidak ada.".into(),
+            Q::TypeStatus => "Tulis status clipping sebagai diterima, ditolak atau di-clip (kata Inggrisnya, accepted, rejected atau clipped, juga dinilai benar), dan segmen garis yang tersisa sebagai tidak ada (atau none) bila tidak ada yang tersisa.".into(),
             Q::KnownMistake => "Kesalahan yang dikenal: ".into(),
             Q::OrMistake => "; atau: ".into(),
             Q::Part => "Bagian".into(),
-            Q::FiguresInMoodle => "Gambar soal ini ada di Moodle XML dari ujian yang sama (grafika generate … --format moodle): GIFT tidak dapat membawa berkas.".into(),
+            Q::FiguresInMoodle => "GIFT tidak dapat membawa berkas: gambar penyelesaian hanya ada di Moodle XML dari ujian yang sama (--format moodle).".into(),
+            Q::Word(code) => match crate::report::words::said::status(code) {
+                Some(Status::Accepted) => "diterima".into(),
+                Some(Status::Rejected) => "ditolak".into(),
+                Some(Status::Clipped) => "di-clip".into(),
+                None if code == "none" => self.doc(&D::NoValue),
+                None => code.clone(),
+            },
             Q::Component => "komponen".into(),
             Q::Point => "titik".into(),
         }

@@ -3,12 +3,13 @@
 
 use super::Id;
 use crate::msg::Said;
-use crate::report::words::{said, MsgWords, SaidWords};
+use crate::report::lang::NumStyle;
+use crate::report::words::{said, SaidWords};
 use crate::stages::clip::Status;
 
 impl SaidWords for Id {
-    fn said(&self, s: &Said) -> String {
-        let n = |x: &str| self.nums().values(x);
+    fn said(&self, s: &Said, nums: NumStyle) -> String {
+        let n = |x: &str| nums.values(x);
         match s {
             Said::BitTest(true, test, values) => format!("1 — {test}: {} benar", n(values)),
             Said::BitTest(false, test, values) => format!("0 — {test}: {} salah", n(values)),
