@@ -546,9 +546,22 @@ fn no_file_of_the_project_reaches_outside_the_repository() {
 
 #[test]
 fn render_scene_with_no_objects_is_an_error() {
-    let out = std::env::temp_dir().join(format!("grafika-empty-{}.png", std::process::id()));
-    let e = json_err(&["render", "/dev/null", "-o", out.to_str().unwrap()]);
+    // an empty file (a device such as /dev/null is refused as a scene
+    // before it is read: not a regular file)
+    let dir = std::env::temp_dir().join(format!("grafika-empty-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("empty.toml");
+    std::fs::write(&scene, "").unwrap();
+    let out = dir.join("empty.png");
+    let e = json_err(&[
+        "render",
+        scene.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
     assert_eq!(e["field"], "object");
+    let e = json_err(&["render", "/dev/null", "-o", out.to_str().unwrap()]);
+    assert_eq!(e["field"], "scene");
 }
 
 #[test]

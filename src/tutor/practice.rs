@@ -590,18 +590,12 @@ impl<'a> Session<'a> {
         let key = &item.key;
         let j = m.judge(key, &toml::Value::String(text.to_string()));
         let mut out = Outcome {
-            key: item.key.clone(),
             given: Some(text.to_string()),
             read: j.read,
             verdict: j.verdict,
             code: j.code,
             note: j.note,
-            expected: item.expected.clone(),
-            follow_through: None,
-            mistakes: vec![],
-            why: None,
-            retry: false,
-            shown: false,
+            ..unanswered(item, "")
         };
         if out.verdict == Verdict::Wrong && matches!(out.note, Msg::CountMismatch(..)) {
             out.verdict = Verdict::Unparseable;
@@ -732,7 +726,8 @@ impl<'a> Session<'a> {
     }
 }
 
-/// A value with no answer: `revealed` or `skipped`.
+/// A value with no answer: `revealed` or `skipped` (and the outcome a
+/// judged answer starts from).
 fn unanswered(item: &Item, code: &'static str) -> Outcome {
     Outcome {
         key: item.key.clone(),

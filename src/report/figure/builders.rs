@@ -52,9 +52,12 @@ pub(super) fn vec_of(v: &Val) -> Option<[f64; 3]> {
 
 /// An input number as a value for a label.
 pub(super) fn num_val(x: f64) -> Val {
+    // a whole number is its own exact form: a box's `x = 0` is 0, not an
+    // approximation that underflowed (`≈ 0`, [`crate::num::format::is_approx`])
+    let whole = x.is_finite() && x.fract() == 0.0 && x.abs() < 9e15;
     Val::Num(crate::num::Shown {
         value: x,
-        exact: None,
+        exact: whole.then(|| (x as i64).to_string()),
         pretty: None,
         beyond: None,
     })
