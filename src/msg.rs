@@ -26,7 +26,8 @@ pub use lang::Lang;
 pub use pixel::PixelMsg;
 pub use render::{PerPixel, Summary};
 pub use report::{
-    BenchWord, CheckWord, ClassWord, CliWord, Decimal, DocWord, PracticeWord, QuizWord, StatWord,
+    BenchWord, CheckWord, ClassWord, CliWord, Decimal, DocWord, PlanWord, PracticeWord, QuizWord,
+    StatWord,
 };
 pub use said::Said;
 

@@ -11,19 +11,21 @@ use crate::report::gift::{gift_units, GIFT};
 use crate::report::moodle::{moodle_units, Written, XML};
 use crate::report::quizfile::pack;
 use crate::report::sheets::{
-    exam_json, exam_title, key_file, key_title, problem_file, sheets, written_json, written_summary,
+    exam_json, exam_title, key_file, key_title, problem_file, sheet_title, sheets, written_json,
+    written_summary,
 };
 use crate::report::Style;
 use crate::tutor::check::DEFAULT_TOLERANCE;
+use crate::tutor::generate::blueprint::blueprint;
 use crate::tutor::generate::quiz::Quiz;
 use crate::tutor::generate::{exams, problem_name, variant_name, Exams, Generated, Spec};
 use std::path::PathBuf;
 
 /// Runs `grafika generate`; returns what to print. `force`: `--force`.
 pub fn run(a: &GenerateArgs, force: bool, json: bool, style: &Style) -> Result<String> {
-    let files = write_exams(a, force, style)?;
+    let (files, plan) = write_exams(a, force, style)?;
     Ok(if json {
-        written_json(&files, a.seed)
+        written_json(&files, a.seed, plan.json)
     } else {
         let mut s = written_summary(
             &files,
@@ -39,9 +41,53 @@ pub fn run(a: &GenerateArgs, force: bool, json: bool, style: &Style) -> Result<S
             s.push_str(&note);
             s.push('\n');
         }
+        s.push('\n');
+        s.push_str(&plan.table);
         s
     })
 }
+
+/// An exam's blueprint as `generate` prints it (the table) and writes it
+/// (blueprint.md, blueprint.json).
+pub struct Plan {
+    /// The Markdown table printed.
+    pub table: String,
+    /// blueprint.json's value.
+    pub json: serde_json::Value,
+    /// blueprint.md.
+    pub markdown: String,
+}
+
+/// The blueprint of a drawn exam in the user's language.
+fn plan(drawn: &Exams, style: &Style) -> Plan {
+    let bp = blueprint(drawn);
+    let first = drawn.variants.first();
+    let titles: Vec<String> = (first.iter().flat_map(|v| v.iter()))
+        .map(|g| style.w(&g.title))
+        .collect();
+    let topics: Vec<&str> = drawn.forms.iter().map(|f| f.topic.name()).collect();
+    Plan {
+        table: crate::report::blueprint::table(&bp, &titles, style.lang),
+        json: crate::report::blueprint::json(&bp, &topics),
+        markdown: crate::report::blueprint::markdown(&bp, &titles, style),
+    }
+}
+
+/// The blueprint's files, (name, text), written beside the exam.
+fn plan_files(plan: &Plan) -> [(String, String); 2] {
+    [
+        (BLUEPRINT_MD.to_string(), plan.markdown.clone()),
+        (
+            BLUEPRINT_JSON.to_string(),
+            serde_json::to_string_pretty(&plan.json).unwrap_or_default() + "\n",
+        ),
+    ]
+}
+
+/// The blueprint's file names.
+pub const BLUEPRINT_MD: &str = "blueprint.md";
+/// See [`BLUEPRINT_MD`].
+pub const BLUEPRINT_JSON: &str = "blueprint.json";
 
 /// More problems than this (count × variants) are written only with `--force`.
 pub const MAX_PROBLEMS: u64 = 2_000;
@@ -71,11 +117,13 @@ fn check_size(a: &GenerateArgs, force: bool) -> Result<()> {
 /// The names the output has in `--out`: `quiz.xml`, `variant-01` …, or one
 /// exam's files (a quiz split by `--split-mb`: [`quiz_name`]).
 fn entries(a: &GenerateArgs) -> Vec<String> {
-    match a.format {
+    let mut names = match a.format {
         Format::Moodle | Format::Gift => vec![quiz_name(a.format, None)],
         _ if a.variants == 1 => exam_files(a.count, a.format),
         _ => (1..=a.variants).map(|v| variant_name(v as usize)).collect(),
-    }
+    };
+    names.extend([BLUEPRINT_MD, BLUEPRINT_JSON].map(String::from));
+    names
 }
 
 /// The files of one exam: problem and key files, then the sheets.
@@ -111,8 +159,9 @@ fn sheet_ext(format: Format) -> Option<&'static str> {
 }
 
 /// Generates and writes every variant, the whole output or nothing (see
-/// [`Stage`]); returns the files written.
-pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<Vec<PathBuf>> {
+/// [`Stage`], the blueprint beside it); returns the files written and the
+/// blueprint.
+pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<(Vec<PathBuf>, Plan)> {
     check_size(a, force)?;
     let limit = split_limit(a)?;
     if matches!(a.format, Format::Moodle | Format::Gift) {
@@ -120,9 +169,12 @@ pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<Vec<P
         // drawn before anything is written: an exam that cannot be made
         // leaves the output directory as it was
         let drawn = draw(a, style)?;
-        return write_quiz(a, (rel, limit), drawn, force, style);
+        let plan = plan(&drawn, style);
+        let files = write_quiz(a, (rel, limit), (drawn, plan_files(&plan)), force, style)?;
+        return Ok((files, plan));
     }
     let drawn = draw(a, style)?;
+    let plan = plan(&drawn, style);
     let mut stage = Stage::begin(&a.out, entries(a), force, run_of(a))?;
     let mut files = Vec::new();
     for (v, exam) in drawn.variants.iter().enumerate() {
@@ -133,8 +185,11 @@ pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<Vec<P
         };
         files.extend(write_exam(&mut stage, &dir, a, v as u32 + 1, exam, style)?);
     }
+    for (name, text) in plan_files(&plan) {
+        files.push(stage.write(&name, &text)?);
+    }
     stage.commit()?;
-    Ok(files)
+    Ok((files, plan))
 }
 
 /// The run, as the list of generate's own files says it: what it was
@@ -217,9 +272,10 @@ fn write_exam(
         return Ok(files);
     };
     let (q, k) = sheets(doc, exam, style);
+    let sheet = sheet_title(a.difficulty, numbered, style.lang);
     put(
         format!("questions.{ext}"),
-        doc.document(&title(None), &q, style.lang),
+        doc.document(&sheet, &q, style.lang),
     )?;
     let key = key_title(&title(Some(a.seed)), style.lang);
     put(format!("key.{ext}"), doc.document(&key, &k, style.lang))?;
@@ -290,7 +346,7 @@ pub fn quiz_name(format: Format, k: Option<usize>) -> String {
 fn write_quiz(
     a: &GenerateArgs,
     (rel, limit): (f64, Option<usize>),
-    drawn: Exams,
+    (drawn, beside): (Exams, [(String, String); 2]),
     force: bool,
     style: &Style,
 ) -> Result<Vec<PathBuf>> {
@@ -301,7 +357,8 @@ fn write_quiz(
             None
         }
     };
-    let texts = quiz_files(a, (rel, limit), drawn, style)?;
+    let mut texts = quiz_files(a, (rel, limit), drawn, style)?;
+    texts.extend(beside);
     let mut stage = match early {
         Some(stage) => stage,
         None => Stage::begin(

@@ -309,6 +309,18 @@ pub enum DocWord {
     },
     /// `… and n more` files.
     More(usize),
+    /// A question sheet's title: the level in words and the variant, no
+    /// internal codes and no seed.
+    SheetTitle {
+        /// The difficulty's name (`medium`).
+        difficulty: String,
+        /// The variant, when there are several.
+        variant: Option<u32>,
+    },
+    /// The line a student writes their name and student number (NIM) on.
+    NameLine,
+    /// The marks of the whole sheet: `Total: 24 marks`.
+    TotalMarks(u32),
 }
 
 /// The decimal mark students type: a Moodle reads a typed number by the
@@ -439,6 +451,57 @@ pub enum StatWord {
     Frame,
     /// Time: PNG encoding.
     Png,
+}
+
+/// A word of an exam's blueprint (`generate`): its heading, columns and
+/// cells.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum PlanWord {
+    /// blueprint.md's title.
+    Title,
+    /// The table's heading: the variants and the marks of each.
+    Heading {
+        /// How many variants.
+        variants: usize,
+        /// The marks of one variant.
+        total: u32,
+    },
+    /// Column: the topic.
+    Topic,
+    /// Column: the case every variant asks.
+    Case,
+    /// Column: the number class.
+    Numbers,
+    /// Column: the marks.
+    Marks,
+    /// Column: the statements.
+    Statements,
+    /// A camera problem's points.
+    Points(usize),
+    /// A lighting model, by its file name (`phong`, `blinn`, `lambert`).
+    Model(String),
+    /// A clipping case: the status (`clipped`, …), the planes each end is
+    /// beyond, the intersections tried and kept.
+    Clip {
+        /// The status's code.
+        status: String,
+        /// How many planes P0 and P1 lie beyond.
+        bits: [u32; 2],
+        /// Intersections tried.
+        tried: u32,
+        /// Intersections kept.
+        kept: u32,
+    },
+    /// A number class, by its JSON name (`one_surd`).
+    Class(String),
+    /// k of the n variants.
+    OfVariants(usize, usize),
+    /// The marks differ between variants.
+    MarksVary,
+    /// k distinct statements of n.
+    Distinct(usize, usize),
+    /// The heading of the answers' ranges.
+    Spread,
 }
 
 /// A word of `grafika bench`'s table: its columns, a row's verdict and

@@ -5,7 +5,7 @@
 //! number written in a language's style) are plain functions here.
 
 use crate::msg::{
-    BenchWord, CheckWord, ClassWord, CliWord, DocWord, PracticeWord, QuizWord, StatWord,
+    BenchWord, CheckWord, ClassWord, CliWord, DocWord, PlanWord, PracticeWord, QuizWord, StatWord,
 };
 use crate::num::format::fmt_dec;
 use crate::report::lang::NumStyle;
@@ -39,6 +39,8 @@ pub trait ReportWords {
     fn stat(&self, w: StatWord) -> String;
     /// A word of `grafika bench`'s table.
     fn bench(&self, w: BenchWord) -> &'static str;
+    /// A word of an exam's blueprint.
+    fn plan(&self, w: &PlanWord) -> String;
     /// What the student did, by a mistake of the catalog.
     fn mistake(&self, c: Code) -> &'static str;
     /// A word of `grafika practice`.
@@ -59,6 +61,20 @@ pub fn percent(points: f64, total: u32) -> f64 {
     match total {
         0 => 100.0,
         t => (points / f64::from(t) * 1000.0).round() / 10.0,
+    }
+}
+
+/// A lighting model's name as the text writes it, by its file name:
+/// `Phong`, `Blinn–Phong`, `Lambert`.
+pub fn model_name(file: &str) -> &str {
+    match file {
+        "phong" => "Phong",
+        "blinn" => "Blinn–Phong",
+        "lambert" => "Lambert",
+        "ambient" => "ambient",
+        "diffuse" => "diffuse",
+        "specular" => "specular",
+        other => other,
     }
 }
 
@@ -103,6 +119,7 @@ mod tests {
         v.extend(every_practice().iter().map(|k| w.practice(k)));
         v.extend(every_stat().map(|k| w.stat(k)));
         v.extend(every_bench().map(|k| w.bench(k).to_string()));
+        v.extend(every_plan().iter().map(|k| w.plan(k)));
         v.extend(every_cli().map(|k| w.cli(k).to_string()));
         let verdicts = [
             Verdict::Correct,
@@ -243,6 +260,16 @@ mod tests {
             wrote(1),
             wrote(14),
             D::More(2),
+            D::SheetTitle {
+                difficulty: "hard".into(),
+                variant: Some(3),
+            },
+            D::SheetTitle {
+                difficulty: "easy".into(),
+                variant: None,
+            },
+            D::NameLine,
+            D::TotalMarks(24),
         ]
     }
 
@@ -367,6 +394,59 @@ mod tests {
         ]
     }
 
+    fn every_plan() -> Vec<crate::msg::PlanWord> {
+        use crate::msg::PlanWord as N;
+        let clip = |status: &str| N::Clip {
+            status: status.into(),
+            bits: [0, 2],
+            tried: 2,
+            kept: 1,
+        };
+        let mut v = vec![
+            N::Title,
+            N::Heading {
+                variants: 40,
+                total: 24,
+            },
+            N::Topic,
+            N::Case,
+            N::Numbers,
+            N::Marks,
+            N::Statements,
+            N::Points(2),
+            N::Model("blinn".into()),
+            clip("clipped"),
+            clip("accepted"),
+            clip("rejected"),
+            N::OfVariants(39, 40),
+            N::MarksVary,
+            N::Distinct(40, 40),
+            N::Spread,
+        ];
+        let classes = ["rational", "one_surd", "several_surds", "no_closed_form"];
+        v.extend(classes.map(|c| N::Class(c.into())));
+        for k in &v {
+            match k {
+                N::Title
+                | N::Heading { .. }
+                | N::Topic
+                | N::Case
+                | N::Numbers
+                | N::Marks
+                | N::Statements
+                | N::Points(_)
+                | N::Model(_)
+                | N::Clip { .. }
+                | N::Class(_)
+                | N::OfVariants(..)
+                | N::MarksVary
+                | N::Distinct(..)
+                | N::Spread => {}
+            }
+        }
+        v
+    }
+
     fn every_cli() -> [L; 6] {
         [
             L::WorkedSolution,
@@ -468,7 +548,10 @@ mod tests {
             | D::Marks(_)
             | D::AnswerKey
             | D::Wrote { .. }
-            | D::More(_) => {}
+            | D::More(_)
+            | D::SheetTitle { .. }
+            | D::NameLine
+            | D::TotalMarks(_) => {}
         }
         match q {
             Q::Instructions { .. }

@@ -19,6 +19,7 @@
 //! position's space has fewer new problems than variants asked, that is an
 //! error saying how many it could make.
 
+pub mod blueprint;
 mod draw;
 pub mod form;
 pub mod numbers;

@@ -7,10 +7,11 @@ use crate::msg::BenchWord as B;
 use crate::msg::CheckWord as K;
 use crate::msg::ClassWord as C;
 use crate::msg::CliWord as L;
+use crate::msg::PlanWord as N;
 use crate::msg::PracticeWord as P;
 use crate::msg::StatWord as S;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
-use crate::report::words::report::{dec, exam_title, percent, ReportWords};
+use crate::report::words::report::{dec, exam_title, model_name, percent, ReportWords};
 use crate::report::words::MsgWords;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::stats::Flag;
@@ -185,6 +186,17 @@ impl ReportWords for En {
                 plural(*count as usize),
             ),
             D::More(n) => format!("… and {n} more"),
+            D::SheetTitle { difficulty, variant } => format!(
+                "Computer graphics exam — {} level{}",
+                match difficulty.as_str() {
+                    "easy" => "easy",
+                    "hard" => "hard",
+                    _ => "medium",
+                },
+                variant.map(|v| format!(", variant {v}")).unwrap_or_default()
+            ),
+            D::NameLine => "Name: ______________________________   Student number (NIM): ________________".into(),
+            D::TotalMarks(n) => format!("Total: {n} mark{}", plural(*n as usize)),
         }
     }
 
@@ -253,6 +265,44 @@ impl ReportWords for En {
             S::Shading => "thread time: shading".into(),
             S::Frame => "time: frame".into(),
             S::Png => "time: PNG encoding".into(),
+        }
+    }
+
+    fn plan(&self, w: &N) -> String {
+        let s = |n: usize| if n == 1 { "" } else { "s" };
+        match w {
+            N::Title => "Exam blueprint".into(),
+            N::Heading { variants, total } => format!(
+                "Blueprint: {variants} variant{}, each worth {total} mark{}; every variant of a problem asks the same case, number class and marks",
+                s(*variants),
+                s(*total as usize)
+            ),
+            N::Topic => "Topic".into(),
+            N::Case => "Case".into(),
+            N::Numbers => "Numbers".into(),
+            N::Marks => "Marks".into(),
+            N::Statements => "Statements".into(),
+            N::Points(n) => format!("{n} point{}", s(*n)),
+            N::Model(m) => format!("{} model", model_name(m)),
+            N::Clip { status, bits, tried, kept } => format!(
+                "{status}: P0 beyond {} plane{}, P1 beyond {}; {tried} intersection{} tried, {kept} kept",
+                bits[0],
+                s(bits[0] as usize),
+                bits[1],
+                s(*tried as usize)
+            ),
+            N::Class(c) => match c.as_str() {
+                "rational" => "rational",
+                "one_surd" => "one surd",
+                "several_surds" => "several surds",
+                _ => "no closed form",
+            }
+            .into(),
+            N::OfVariants(k, n) if k == n => format!("all {n}"),
+            N::OfVariants(k, n) => format!("{k} of {n}"),
+            N::MarksVary => "not the same in every variant".into(),
+            N::Distinct(k, n) => format!("{k} different of {n}"),
+            N::Spread => "Range of each answer's numbers over the variants".into(),
         }
     }
 

@@ -7,10 +7,11 @@ use crate::msg::BenchWord as B;
 use crate::msg::CheckWord as K;
 use crate::msg::ClassWord as C;
 use crate::msg::CliWord as L;
+use crate::msg::PlanWord as N;
 use crate::msg::PracticeWord as P;
 use crate::msg::StatWord as S;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
-use crate::report::words::report::{dec, exam_title, percent, ReportWords};
+use crate::report::words::report::{dec, exam_title, model_name, percent, ReportWords};
 use crate::report::words::MsgWords;
 use crate::stages::clip::Status;
 use crate::tutor::check::Verdict;
@@ -184,6 +185,17 @@ impl ReportWords for Id {
                 "{files} berkas ditulis ({variants} varian dari {count} soal {topics}, seed {seed}) ke {out}"
             ),
             D::More(n) => format!("… dan {n} lagi"),
+            D::SheetTitle { difficulty, variant } => format!(
+                "Ujian grafika komputer — tingkat {}{}",
+                match difficulty.as_str() {
+                    "easy" => "mudah",
+                    "hard" => "sulit",
+                    _ => "sedang",
+                },
+                variant.map(|v| format!(", varian {v}")).unwrap_or_default()
+            ),
+            D::NameLine => "Nama: ______________________________   NIM: ________________".into(),
+            D::TotalMarks(n) => format!("Jumlah: {n} poin"),
         }
     }
 
@@ -258,6 +270,44 @@ impl ReportWords for Id {
             S::Shading => "waktu thread: shading".into(),
             S::Frame => "waktu: bingkai".into(),
             S::Png => "waktu: encoding PNG".into(),
+        }
+    }
+
+    fn plan(&self, w: &N) -> String {
+        match w {
+            N::Title => "Kisi-kisi ujian".into(),
+            N::Heading { variants, total } => format!(
+                "Kisi-kisi: {variants} varian, masing-masing bernilai {total} poin; setiap varian sebuah soal menanyakan kasus, kelas bilangan dan poin yang sama"
+            ),
+            N::Topic => "Topik".into(),
+            N::Case => "Kasus".into(),
+            N::Numbers => "Bilangan".into(),
+            N::Marks => "Poin".into(),
+            N::Statements => "Teks soal".into(),
+            N::Points(n) => format!("{n} titik"),
+            N::Model(m) => format!("model {}", model_name(m)),
+            N::Clip { status, bits, tried, kept } => format!(
+                "{}: P0 di luar {} bidang, P1 di luar {}; {tried} perpotongan dihitung, {kept} dipakai",
+                match status.as_str() {
+                    "accepted" => "diterima",
+                    "rejected" => "ditolak",
+                    _ => "di-clip",
+                },
+                bits[0],
+                bits[1]
+            ),
+            N::Class(c) => match c.as_str() {
+                "rational" => "rasional",
+                "one_surd" => "satu bentuk akar",
+                "several_surds" => "beberapa bentuk akar",
+                _ => "tanpa bentuk eksak",
+            }
+            .into(),
+            N::OfVariants(k, n) if k == n => format!("semua {n}"),
+            N::OfVariants(k, n) => format!("{k} dari {n}"),
+            N::MarksVary => "tidak sama di setiap varian".into(),
+            N::Distinct(k, n) => format!("{k} berbeda dari {n}"),
+            N::Spread => "Rentang bilangan setiap jawaban pada semua varian".into(),
         }
     }
 
