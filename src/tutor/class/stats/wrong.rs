@@ -151,7 +151,7 @@ fn same_value(first: &toml::Value, given: &toml::Value, a: &Marked, rel: f64) ->
 }
 
 fn close(x: &Val, y: &Val, key: &Key, rel: f64) -> bool {
-    let (xs, ys) = (numbers(x), numbers(y));
+    let (xs, ys) = (x.numbers(), y.numbers());
     if xs.is_empty() || xs.len() != ys.len() {
         return x == y;
     }
@@ -159,13 +159,4 @@ fn close(x: &Val, y: &Val, key: &Key, rel: f64) -> bool {
     xs.iter()
         .zip(&ys)
         .all(|(a, b)| (a - b).abs() <= tolerance::for_key(key, *a, scale, rel))
-}
-
-/// The numbers of a value, flattened.
-fn numbers(v: &Val) -> Vec<f64> {
-    match v {
-        Val::Num(n) => vec![n.value],
-        Val::List(items) => items.iter().flat_map(numbers).collect(),
-        _ => vec![],
-    }
 }
