@@ -769,23 +769,6 @@ fn the_variants_of_a_position_are_parallel_forms() {
     }
 }
 
-/// A key file's answers by their dotted keys (`view.points.A`).
-fn dotted(prefix: &str, v: &toml::Value, out: &mut Vec<(String, toml::Value)>) {
-    match v {
-        toml::Value::Table(t) => {
-            for (k, x) in t {
-                let key = if prefix.is_empty() {
-                    k.clone()
-                } else {
-                    format!("{prefix}.{k}")
-                };
-                dotted(&key, x, out);
-            }
-        }
-        other => out.push((prefix.to_string(), other.clone())),
-    }
-}
-
 /// The numbers of a key file's answer (a TOML string expression, or a
 /// list of them), evaluated.
 fn key_numbers(v: &toml::Value, out: &mut Vec<f64>) {
@@ -844,13 +827,11 @@ fn the_blueprint_says_what_every_variant_asks_alike() {
         for v in 1..=40 {
             let var = dir.join(format!("variant-{v:02}"));
             statements.insert(std::fs::read_to_string(var.join(format!("{name}.toml"))).unwrap());
-            let key: toml::Table = toml::from_str(
-                &std::fs::read_to_string(var.join(format!("{name}.key.toml"))).unwrap(),
-            )
-            .unwrap();
-            let mut flat = Vec::new();
-            dotted("", &toml::Value::Table(key.clone()), &mut flat);
-            for (k, v) in &flat {
+            let key_path = var.join(format!("{name}.key.toml"));
+            let key_path = var.join(format!("{name}.key.toml"));
+            let key: toml::Table =
+                toml::from_str(&std::fs::read_to_string(&key_path).unwrap()).unwrap();
+            for (k, v) in &key_entries(&key_path) {
                 let mut nums = Vec::new();
                 key_numbers(v, &mut nums);
                 for x in nums {
