@@ -828,7 +828,6 @@ fn the_blueprint_says_what_every_variant_asks_alike() {
             let var = dir.join(format!("variant-{v:02}"));
             statements.insert(std::fs::read_to_string(var.join(format!("{name}.toml"))).unwrap());
             let key_path = var.join(format!("{name}.key.toml"));
-            let key_path = var.join(format!("{name}.key.toml"));
             let key: toml::Table =
                 toml::from_str(&std::fs::read_to_string(&key_path).unwrap()).unwrap();
             for (k, v) in &key_entries(&key_path) {
