@@ -10,7 +10,7 @@ use crate::cli::args::CheckArgs;
 use crate::cli::write::Outputs;
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
-use crate::msg::{Bound, CliWord, DocWord, ErrMsg, Twice};
+use crate::msg::{Bound, CliWord, DocWord, ErrMsg, IoWhy, Twice};
 use crate::report::check::marked;
 use crate::report::class::lecturer::{self, Format};
 use crate::report::lang::Lang;
@@ -54,9 +54,7 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
         (Some(path), false) if path.is_dir() => {
             class(&paper, path, settings, a, json, style, outputs)
         }
-        (Some(_), false) if a.report.is_some() => {
-            Err(Error::why("report", ErrMsg::ReportNeedsClass))
-        }
+        (Some(path), false) if a.report.is_some() => Err(not_a_class(path)),
         (Some(path), false) => {
             let sheet = if paper.exam {
                 class::mark_file(&paper, path, settings)
@@ -144,6 +142,9 @@ fn lone_sheet(file: &Path, who: String, m: Marking) -> Sheet {
         variant: Some(1),
         outcome: Ok(vec![(String::new(), m)]),
         note: None,
+        identity: Default::default(),
+        duplicate: None,
+        fits: None,
     }
 }
 
@@ -162,6 +163,19 @@ fn one_sheet(
         return Ok((out, status));
     }
     Ok((marked(&sheet.outcome?, json, style), 0))
+}
+
+/// Why `--answers PATH` with `--report` is no class: a path that cannot be
+/// read (missing, or not allowed) is named as the folder of answers that
+/// cannot be read; a file is one student, not a class.
+fn not_a_class(path: &Path) -> Error {
+    match std::fs::metadata(path) {
+        Err(e) => Error::why(
+            "answers",
+            ErrMsg::AnswersFolder(path.display().to_string(), IoWhy::of(&e)),
+        ),
+        Ok(_) => Error::why("report", ErrMsg::ReportNeedsClass),
+    }
 }
 
 /// The report's format by the file's extension.

@@ -517,6 +517,9 @@ pub enum ErrMsg {
     ReportFormat(String),
     /// `--report` without a folder of answers.
     ReportNeedsClass,
+    /// `--report` or `--roster` with an answers folder that cannot be read:
+    /// the path, why.
+    AnswersFolder(String, crate::msg::IoWhy),
     /// A pixel outside the image: x, y, width, height.
     PixelOutside(u32, u32, u32, u32),
     /// Not X,Y.

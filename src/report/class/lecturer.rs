@@ -14,7 +14,7 @@ use crate::report::lang::Lang;
 use crate::report::mistakes::mistake_text;
 use crate::report::{exact_json, value_json, Style};
 use crate::tutor::check::Settings;
-use crate::tutor::class::stats::{Flag, Gap, Stats, StepRef, CODES};
+use crate::tutor::class::stats::{compare, Flag, Gap, Stats, StepRef, CODES};
 use crate::tutor::class::Class;
 use crate::tutor::class::ClassKey;
 use serde_json::{json, Value};
@@ -107,9 +107,9 @@ pub fn to_json(class: &Class, s: &Stats, settings: &Settings, lang: Lang) -> Val
     })).collect();
     let variants: Vec<Value> = s.variants.iter().map(|v| json!({
         "variant": v.variant, "students": v.students, "facility": v.facility.map(round4),
-        "problems": v.problems.iter().map(|(name, f, gap)| json!({
-            "problem": name, "facility": f.map(round4),
-            "flag": gap.map(|g| match g { Gap::Harder => "harder", Gap::Easier => "easier" }),
+        "problems": v.problems.iter().map(|c| json!({
+            "problem": c.problem, "facility": c.facility.map(round4), "p_value": c.p_value.map(round4),
+            "flag": c.gap.map(|g| match g { Gap::Harder => "harder", Gap::Easier => "easier" }),
         })).collect::<Vec<_>>(),
     })).collect();
     json!({
@@ -124,6 +124,14 @@ pub fn to_json(class: &Class, s: &Stats, settings: &Settings, lang: Lang) -> Val
         "histogram": s.histogram.iter().map(|b| json!({ "from": b.from, "to": b.to, "count": b.count })).collect::<Vec<_>>(),
         "problems": s.problems.iter().map(|p| json!({ "problem": p.name, "title": p.title, "students": p.students, "facility": p.facility.map(round4) })).collect::<Vec<_>>(),
         "variants": variants,
+        "variant_test": { "min_students": compare::MIN_STUDENTS, "level": compare::LEVEL },
+        "duplicates": class.sheets.iter().filter_map(|sh| sh.duplicate.as_ref().map(|(kept, why)| json!({
+            "student": sh.who, "file": sh.file.display().to_string(), "kept": kept.display().to_string(), "same": why.code(),
+        }))).collect::<Vec<_>>(),
+        "fits": class.marked().filter_map(|sh| sh.fits.map(|f| json!({
+            "student": sh.who, "file": sh.file.display().to_string(), "variant": sh.variant,
+            "fits_variant": f.variant, "there": round4(f.there), "own": round4(f.own),
+        }))).collect::<Vec<_>>(),
         "not_marked": class.sheets.iter().filter_map(|sh| sh.outcome.as_ref().err().map(|e| json!({
             "student": sh.who, "file": sh.file.display().to_string(),
             "error": { "field": e.field, "message": crate::report::words::words(&e.message, lang) },

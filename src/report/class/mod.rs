@@ -137,10 +137,57 @@ pub fn table(class: &Class, lang: Lang) -> String {
             out.push_str(&format!("{}: {}\n", s.file.display(), note_words(n, lang)));
         }
     }
+    for s in &class.sheets {
+        for said in [duplicate_words(s, lang), fits_words(s, lang)]
+            .into_iter()
+            .flatten()
+        {
+            out.push_str(&format!("{}: {said}\n", s.file.display()));
+        }
+    }
     for (f, why) in &class.skipped {
         out.push_str(&format!("{}: {}\n", f.display(), skip_words(*why, lang)));
     }
     out
+}
+
+/// `the same student as adi (1).toml (same name): not counted`, for a
+/// sheet that is a duplicate.
+pub fn duplicate_words(s: &Sheet, lang: Lang) -> Option<String> {
+    let (kept, why) = s.duplicate.as_ref()?;
+    let w = words::of(lang);
+    let kept = kept.file_name().map_or_else(
+        || kept.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    Some(w.class(&C::DuplicateOf {
+        kept,
+        why: w.same(*why).to_string(),
+    }))
+}
+
+/// `these answers fit variant 4's key (…)`, for a sheet that does.
+pub fn fits_words(s: &Sheet, lang: Lang) -> Option<String> {
+    let f = s.fits?;
+    Some(words::of(lang).class(&C::Fits {
+        variant: f.variant,
+        there: f.there * 100.0,
+        own: f.own * 100.0,
+    }))
+}
+
+/// A sheet's duplicate and fits as JSON fields (`duplicate_of`, `fits`).
+fn checks_json(s: &Sheet, j: &mut Value) {
+    if let Some((kept, why)) = &s.duplicate {
+        j["duplicate_of"] = json!({ "file": kept.display().to_string(), "same": why.code() });
+    }
+    if let Some(f) = s.fits {
+        j["fits"] = json!({ "variant": f.variant, "there": round4(f.there), "own": round4(f.own) });
+    }
+}
+
+fn round4(x: f64) -> f64 {
+    (x * 1e4).round() / 1e4
 }
 
 /// The CSV columns (docs/spec.md §5); an exam's CSV has `variant` after `file`.
@@ -205,6 +252,12 @@ pub fn json(class: &Class, lang: Lang) -> Value {
 }
 
 fn sheet_json(s: &Sheet, exam: bool, lang: Lang) -> Value {
+    let mut j = sheet_marks_json(s, exam, lang);
+    checks_json(s, &mut j);
+    j
+}
+
+fn sheet_marks_json(s: &Sheet, exam: bool, lang: Lang) -> Value {
     let file = s.file.display().to_string();
     match (&s.outcome, exam) {
         (Ok(ms), false) if ms.len() == 1 => {

@@ -127,6 +127,7 @@ pub fn every_error() -> Vec<ErrMsg> {
         ErrMsg::NotAProblemOfExam(s("view.n"), s("problem-01, problem-02")),
         ErrMsg::ReportFormat(s("class.txt")),
         ErrMsg::ReportNeedsClass,
+        ErrMsg::AnswersFolder(s("nosuchdir"), crate::msg::IoWhy::NotFound),
         ErrMsg::PixelOutside(10, 20, 8, 8),
         ErrMsg::PixelText(s("a,b")),
         ErrMsg::NothingRendered,
@@ -420,6 +421,7 @@ fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want,
         | E::NotAProblemOfExam(..)
         | E::ReportFormat(_)
         | E::ReportNeedsClass
+        | E::AnswersFolder(..)
         | E::PixelOutside(..)
         | E::PixelText(_)
         | E::NothingRendered
