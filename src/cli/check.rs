@@ -32,8 +32,15 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
     if a.file == stdin && a.answers.as_deref() == Some(stdin) {
         return Err(Error::why("answers", ErrMsg::BothStdin));
     }
-    // a report's format is known before any marking
+    // a report's format, and the class list, are known before any marking
     a.report.as_deref().map(report_format).transpose()?;
+    let listed = a.roster.as_deref().map(class::roster::read).transpose()?;
+    if listed.is_some() && !a.answers.as_deref().is_some_and(Path::is_dir) {
+        return Err(match &a.answers {
+            Some(path) if std::fs::metadata(path).is_err() => not_a_class(path),
+            _ => Error::why("roster", ErrMsg::RosterNeedsClass),
+        });
+    }
     let paper = if a.file.is_dir() {
         exam::read(&a.file, style.lang)?
     } else {
@@ -52,7 +59,7 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
         (None, true) if a.report.is_some() => Err(Error::why("report", ErrMsg::ReportNeedsClass)),
         (None, true) => from_text(&paper, a, settings, json, style, outputs),
         (Some(path), false) if path.is_dir() => {
-            class(&paper, path, settings, a, json, style, outputs)
+            class(&paper, (path, listed), settings, a, json, style, outputs)
         }
         (Some(path), false) if a.report.is_some() => Err(not_a_class(path)),
         (Some(path), false) => {
@@ -79,14 +86,15 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
 /// lecturer's report; exit status 2 when a file could not be marked.
 fn class(
     paper: &Paper,
-    dir: &Path,
+    (dir, listed): (&Path, Option<Vec<class::roster::Listed>>),
     settings: check::Settings,
     a: &CheckArgs,
     json: bool,
     style: &Style,
     outputs: &Outputs,
 ) -> Result<(String, i32)> {
-    let class = class::mark_dir(paper, dir, settings)?;
+    let mut class = class::mark_dir(paper, dir, settings)?;
+    class.roster = listed.map(|l| class::roster::against(l, &class.sheets));
     if let Some(file) = &a.report {
         let format = report_format(file)?;
         let stats = stats::of(&class, paper, &settings);

@@ -72,6 +72,14 @@ pub enum ClassWord {
     Definitions,
     /// What a variant table's cell holds, and the test behind its flags.
     VariantsNote,
+    /// Heading: the class list.
+    RosterHeading,
+    /// Before the students of the class list with no answer file: how many.
+    RosterMissing(usize),
+    /// Before the answer files of no one on the class list: how many.
+    RosterNotListed(usize),
+    /// Everyone on the class list handed in, and every file is on it.
+    RosterAll(usize),
     /// Heading: the same student twice.
     DuplicatesHeading,
     /// How duplicates are found and which file is kept.

@@ -125,6 +125,7 @@ pub fn to_json(class: &Class, s: &Stats, settings: &Settings, lang: Lang) -> Val
         "problems": s.problems.iter().map(|p| json!({ "problem": p.name, "title": p.title, "students": p.students, "facility": p.facility.map(round4) })).collect::<Vec<_>>(),
         "variants": variants,
         "variant_test": { "min_students": compare::MIN_STUDENTS, "level": compare::LEVEL },
+        "roster": super::roster_json(class),
         "duplicates": class.sheets.iter().filter_map(|sh| sh.duplicate.as_ref().map(|(kept, why)| json!({
             "student": sh.who, "file": sh.file.display().to_string(), "kept": kept.display().to_string(), "same": why.code(),
         }))).collect::<Vec<_>>(),

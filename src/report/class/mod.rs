@@ -148,7 +148,54 @@ pub fn table(class: &Class, lang: Lang) -> String {
     for (f, why) in &class.skipped {
         out.push_str(&format!("{}: {}\n", f.display(), skip_words(*why, lang)));
     }
+    for (head, names) in roster_lists(class, lang) {
+        out.push_str(&format!("{head} {}\n", names.join(", ")));
+    }
     out
+}
+
+/// The class list's two lists, each with its heading, when not empty: who
+/// on it handed nothing in (`Adi Nugroho (NIM 2106001)`), and the answer
+/// files of no one on it (`Budi (budi.toml)`); or the sentence that
+/// everyone handed in, with no list.
+pub fn roster_lists(class: &Class, lang: Lang) -> Vec<(String, Vec<String>)> {
+    let Some(r) = &class.roster else {
+        return vec![];
+    };
+    let w = words::of(lang);
+    if r.missing.is_empty() && r.not_listed.is_empty() {
+        return vec![(w.class(&C::RosterAll(r.listed.len())), vec![])];
+    }
+    let mut out = Vec::new();
+    if !r.missing.is_empty() {
+        let names = (r.missing.iter())
+            .map(|l| match &l.nim {
+                Some(n) => format!("{} (NIM {n})", l.name),
+                None => l.name.clone(),
+            })
+            .collect();
+        out.push((w.class(&C::RosterMissing(r.missing.len())), names));
+    }
+    if !r.not_listed.is_empty() {
+        let files = (r.not_listed.iter())
+            .map(|(who, f)| format!("{who} ({})", f.display()))
+            .collect();
+        out.push((w.class(&C::RosterNotListed(r.not_listed.len())), files));
+    }
+    out
+}
+
+/// The class list as JSON (`roster`): `listed` (how many), `missing`
+/// (`name`, `nim`), `not_listed` (`student`, `file`); null without one.
+pub fn roster_json(class: &Class) -> Value {
+    let Some(r) = &class.roster else {
+        return Value::Null;
+    };
+    json!({
+        "listed": r.listed.len(),
+        "missing": r.missing.iter().map(|l| json!({ "name": l.name, "nim": l.nim })).collect::<Vec<_>>(),
+        "not_listed": r.not_listed.iter().map(|(who, f)| json!({ "student": who, "file": f.display().to_string() })).collect::<Vec<_>>(),
+    })
 }
 
 /// `the same student as adi (1).toml (same name): not counted`, for a
@@ -248,6 +295,7 @@ pub fn json(class: &Class, lang: Lang) -> Value {
         "title": class.title,
         "students": class.sheets.iter().map(|s| sheet_json(s, class.exam, lang)).collect::<Vec<_>>(),
         "skipped": class.skipped.iter().map(|(f, why)| json!({ "file": f.display().to_string(), "reason": skip_words(*why, lang) })).collect::<Vec<_>>(),
+        "roster": roster_json(class),
     })
 }
 

@@ -133,6 +133,7 @@ pub(super) fn document(
         String::new()
     };
     body.push_str(&summary(doc, class, s, settings, lang));
+    body.push_str(&roster_section(doc, class, lang));
     body.push_str(&duplicates_section(doc, class, lang));
     body.push_str(&fits_section(doc, class, lang));
     body.push_str(&keys_section(doc, s, lang));
@@ -170,6 +171,23 @@ fn summary(doc: Doc, class: &Class, s: &Stats, settings: &Settings, lang: Lang) 
     if !failed.is_empty() {
         out.push_str(&para(doc, &esc(doc, &w(lang, C::NotMarked))));
         out.push_str(&list(doc, &failed));
+    }
+    out
+}
+
+/// The class list against the files, with `--roster`.
+fn roster_section(doc: Doc, class: &Class, lang: Lang) -> String {
+    let lists = super::roster_lists(class, lang);
+    if lists.is_empty() {
+        return String::new();
+    }
+    let mut out = doc.heading(1, &w(lang, C::RosterHeading));
+    for (head, names) in lists {
+        out.push_str(&para(doc, &esc(doc, &head)));
+        if !names.is_empty() {
+            let items: Vec<String> = names.iter().map(|n| esc(doc, n)).collect();
+            out.push_str(&list(doc, &items));
+        }
     }
     out
 }

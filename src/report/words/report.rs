@@ -165,6 +165,10 @@ mod tests {
             C::NotMarked,
             C::Definitions,
             C::VariantsNote,
+            C::RosterHeading,
+            C::RosterMissing(2),
+            C::RosterNotListed(1),
+            C::RosterAll(40),
             C::DuplicatesHeading,
             C::DuplicatesNote,
             C::DuplicateOf {
@@ -439,6 +443,10 @@ mod tests {
             | Definitions
             | VariantsNote
             | TooFewPerVariant { .. }
+            | RosterHeading
+            | RosterMissing(_)
+            | RosterNotListed(_)
+            | RosterAll(_)
             | DuplicatesHeading
             | DuplicatesNote
             | DuplicateOf { .. }

@@ -9,6 +9,7 @@
 
 pub mod exam;
 pub mod fits;
+pub mod roster;
 pub mod same;
 pub mod stats;
 
@@ -191,6 +192,8 @@ pub struct Class {
     pub sheets: Vec<Sheet>,
     /// Entries of the folder not read, with the reason.
     pub skipped: Skipped,
+    /// The class list set against the files (`--roster`).
+    pub roster: Option<roster::Roster>,
 }
 
 impl Class {
@@ -229,6 +232,7 @@ pub fn mark_dir(paper: &Paper, dir: &Path, settings: Settings) -> Result<Class> 
         exam: paper.exam,
         sheets,
         skipped,
+        roster: None,
     })
 }
 

@@ -130,6 +130,9 @@ impl ErrorWords for En {
                 "the folder of answer files {d} cannot be read: {} (a class report needs --answers DIR)",
                 self.io_why(why)
             ),
+            ErrMsg::RosterNeedsClass => "a class list is set against a class: --roster needs --answers DIR (a folder of answer files)".into(),
+            ErrMsg::EmptyRoster(f) => format!("the class list {f} holds no name"),
+            ErrMsg::RosterRow(line, why) => format!("line {line} of the class list cannot be read as CSV: {why}"),
             ErrMsg::ReportNeedsClass => "a class report needs --answers DIR (a folder of answer files)".into(),
             ErrMsg::PixelOutside(x, y, w, h) => format!("({x}, {y}) is outside the {w}x{h} image"),
             ErrMsg::PixelText(s) => format!("expected X,Y (whole pixel numbers), got `{s}`"),

@@ -67,6 +67,10 @@ impl ReportWords for En {
             C::VariantsNote => "Each cell is the variant's facility on the problem; n is the number of students who answered the variant. \
                  A variant is compared with the rest of the class only when both have at least 5 students: a two-proportion z-test of its facility \
                  against the rest's, the p-values of one problem's variants corrected together by Holm's method; ▼ harder (▲ easier) marks a corrected p below 0.05.".into(),
+            C::RosterHeading => "Class list".into(),
+            C::RosterMissing(n) => format!("On the class list, no answer file ({n}):"),
+            C::RosterNotListed(n) => format!("Answer files of no one on the class list ({n}):"),
+            C::RosterAll(n) => format!("Each of the {n} students on the class list handed in one answer file, and every file is theirs."),
             C::DuplicatesHeading => "The same student twice".into(),
             C::DuplicatesNote => "Two files are the same student when their names are the same (the file's student, else its file name without a copy's ending such as \" (1)\"; case and spaces ignored), \
                  or both give the same NIM, or their answers are the same as typed and one of them names no student; two different NIMs are two students. \

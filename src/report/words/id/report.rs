@@ -68,6 +68,10 @@ impl ReportWords for Id {
             C::VariantsNote => "Setiap sel adalah tingkat kemudahan varian pada soal itu; n adalah banyaknya mahasiswa yang mengerjakan varian itu. \
                  Sebuah varian dibandingkan dengan sisa kelas hanya bila keduanya memiliki paling sedikit 5 mahasiswa: uji z dua proporsi untuk tingkat kemudahannya \
                  terhadap tingkat kemudahan sisa kelas, nilai p varian-varian satu soal dikoreksi bersama dengan metode Holm; ▼ lebih sulit (▲ lebih mudah) menandai nilai p terkoreksi di bawah 0,05.".into(),
+            C::RosterHeading => "Daftar kelas".into(),
+            C::RosterMissing(n) => format!("Ada di daftar kelas, tanpa berkas jawaban ({n}):"),
+            C::RosterNotListed(n) => format!("Berkas jawaban yang tidak ada di daftar kelas ({n}):"),
+            C::RosterAll(n) => format!("Setiap {n} mahasiswa di daftar kelas mengumpulkan satu berkas jawaban, dan setiap berkas milik mereka."),
             C::DuplicatesHeading => "Mahasiswa yang sama dua kali".into(),
             C::DuplicatesNote => "Dua berkas dianggap mahasiswa yang sama bila namanya sama (student di berkas, atau nama berkas tanpa akhiran salinan seperti \" (1)\"; huruf besar-kecil dan spasi diabaikan), \
                  atau keduanya memberi NIM yang sama, atau jawabannya sama persis seperti diketik dan salah satunya tidak menyebut nama mahasiswa; dua NIM yang berbeda adalah dua mahasiswa. \
