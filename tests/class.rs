@@ -348,7 +348,7 @@ fn the_mistakes_are_named_with_their_students_keys_and_step_largest_first() {
         assert_eq!(m["code"], *code);
         assert_eq!(m["students"], serde_json::json!(students), "{code}");
         assert_eq!(m["keys"], serde_json::json!(keys), "{code}");
-        // the step is the one of solve's worked solution that computes the first key
+        // the step is one of solve's worked solution (where the mistake is made)
         let n = m["step"]["number"].as_u64().unwrap() as usize;
         assert_eq!(m["step"]["title"], solve["steps"][n - 1]["title"], "{code}");
     }

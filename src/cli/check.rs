@@ -66,7 +66,9 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
             let sheet = if paper.exam {
                 class::mark_file(&paper, path, settings)
             } else {
-                let (student, answers) = check::read_answers(path)?;
+                let (student, mut answers) = check::read_answers(path)?;
+                // a file's `nim` says who, as its `student` does
+                answers.retain(|(k, _)| k != "nim");
                 let who = student.unwrap_or_else(|| check::shown_name(&path.display().to_string()));
                 let m = check::mark(
                     &paper.variants[0][0].problem,

@@ -59,6 +59,15 @@ pub fn write(f: Format, class: &Class, stats: &Stats, settings: &Settings, st: &
     }
 }
 
+/// A p-value to 4 significant digits (a small one is not rounded to 0).
+fn sig4(x: f64) -> f64 {
+    if x <= 0.0 {
+        return 0.0;
+    }
+    let scale = 10f64.powi(3 - x.log10().floor() as i32);
+    (x * scale).round() / scale
+}
+
 /// A number rounded to 4 decimals for JSON (no float noise in a report).
 fn round4(x: f64) -> f64 {
     (x * 1e4).round() / 1e4
@@ -108,7 +117,7 @@ pub fn to_json(class: &Class, s: &Stats, settings: &Settings, lang: Lang) -> Val
     let variants: Vec<Value> = s.variants.iter().map(|v| json!({
         "variant": v.variant, "students": v.students, "facility": v.facility.map(round4),
         "problems": v.problems.iter().map(|c| json!({
-            "problem": c.problem, "facility": c.facility.map(round4), "p_value": c.p_value.map(round4),
+            "problem": c.problem, "facility": c.facility.map(round4), "p_value": c.p_value.map(sig4),
             "flag": c.gap.map(|g| match g { Gap::Harder => "harder", Gap::Easier => "easier" }),
         })).collect::<Vec<_>>(),
     })).collect();

@@ -46,6 +46,7 @@ use crate::tutor::keys::ordered_keys;
 use crate::tutor::solve;
 
 pub mod compare;
+pub mod made;
 mod wrong;
 
 /// Above this facility a key is very easy.
@@ -131,7 +132,7 @@ pub struct MistakeStats {
     pub keys: Vec<ClassKey>,
     /// Other mistakes that give the same values for some of these answers.
     pub also: Vec<Code>,
-    /// The step where it is made: the step of its first key.
+    /// The step where it is made ([`made`]; else the step of its first key).
     pub step: Option<StepRef>,
 }
 
