@@ -352,3 +352,72 @@ fn an_answers_folder_that_cannot_be_read_is_named() {
         assert!(!dir.join("x.html").exists());
     }
 }
+
+#[test]
+fn the_class_list_names_who_handed_nothing_in() {
+    let dir = scratch("fair-roster");
+    let exam = exam(&dir);
+    let answers = dir.join("answers");
+    std::fs::create_dir_all(&answers).unwrap();
+    // Adi's file gives his NIM; Sari's name differs from the list's only in
+    // case and spaces; Tono is on no list; Joko handed nothing in
+    let adi = sheet(&exam, "A. Nugroho", 1, 1, &[1, 2, 3]).replacen(
+        "\nvariant",
+        "\nnim = \"2106001\"\nvariant",
+        1,
+    );
+    std::fs::write(answers.join("adi.toml"), adi).unwrap();
+    std::fs::write(
+        answers.join("sari.toml"),
+        sheet(&exam, "sari  LESTARI", 2, 2, &[1, 2, 3]),
+    )
+    .unwrap();
+    std::fs::write(answers.join("tono.toml"), sheet(&exam, "Tono", 3, 3, &[1])).unwrap();
+    // a spreadsheet's export: semicolons, a NIM with a space
+    let list = dir.join("kelas.csv");
+    std::fs::write(
+        &list,
+        "No;NIM;Nama\n1;2106 001;Adi Nugroho\n2;;Sari Lestari\n3;2106003;Joko Widodo\n",
+    )
+    .unwrap();
+    let report = dir.join("class.json");
+    let out = grafika()
+        .env_remove("GRAFIKA_LANG")
+        .args(["--lang", "id", "check"])
+        .arg(&exam)
+        .arg("--answers")
+        .arg(&answers)
+        .arg("--roster")
+        .arg(&list)
+        .arg("--report")
+        .arg(&report)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        stdout.contains("Ada di daftar kelas, tanpa berkas jawaban (1): Joko Widodo (NIM 2106003)"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("Berkas jawaban yang tidak ada di daftar kelas (1): Tono"),
+        "{stdout}"
+    );
+    let j = json(&report);
+    assert_eq!(j["roster"]["listed"], 3);
+    assert_eq!(j["roster"]["missing"][0]["name"], "Joko Widodo");
+    assert_eq!(j["roster"]["missing"].as_array().unwrap().len(), 1);
+    assert_eq!(j["roster"]["not_listed"][0]["student"], "Tono");
+    // a class list needs a class
+    let out = grafika()
+        .args(["check"])
+        .arg(&exam)
+        .arg("--answers")
+        .arg(answers.join("tono.toml"))
+        .arg("--roster")
+        .arg(&list)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("roster"));
+}
