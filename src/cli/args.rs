@@ -533,6 +533,12 @@ pub struct CheckArgs {
     /// extension.
     #[arg(long, value_name = "FILE")]
     pub report: Option<PathBuf>,
+    /// With a directory of answers: the class list, one name per line or
+    /// CSV with a `nama` (or `name`) column and optionally `nim`; the
+    /// table and the report list who handed nothing in and the files of
+    /// no one on the list.
+    #[arg(long, value_name = "FILE")]
+    pub roster: Option<PathBuf>,
     /// Credit a wrong answer that is right given the student's own earlier
     /// answers (pixels from their window and projected points, ...) as
     /// correct.follow_through.

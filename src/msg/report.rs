@@ -70,8 +70,51 @@ pub enum ClassWord {
     NotMarked,
     /// The definitions of the key table's columns and indices.
     Definitions,
-    /// What a variant table's cell holds.
+    /// What a variant table's cell holds, and the test behind its flags.
     VariantsNote,
+    /// Heading: the class list.
+    RosterHeading,
+    /// Before the students of the class list with no answer file: how many.
+    RosterMissing(usize),
+    /// Before the answer files of no one on the class list: how many.
+    RosterNotListed(usize),
+    /// Everyone on the class list handed in, and every file is on it.
+    RosterAll(usize),
+    /// Heading: the same student twice.
+    DuplicatesHeading,
+    /// How duplicates are found and which file is kept.
+    DuplicatesNote,
+    /// A file that is the same student as a kept one: the file kept, why
+    /// in words.
+    DuplicateOf {
+        /// The file kept.
+        kept: String,
+        /// Why the two are the same student, in words.
+        why: String,
+    },
+    /// Heading: sheets that fit another variant's key better.
+    FitsHeading,
+    /// How "fits another variant's key" is decided.
+    FitsNote,
+    /// A sheet fits another variant's key: that variant, the share of the
+    /// marks there and on its own, in per cent.
+    Fits {
+        /// The variant whose key the answers fit.
+        variant: usize,
+        /// The share of the marks against that variant's key, in per cent.
+        there: f64,
+        /// The share against its own variant's key, in per cent.
+        own: f64,
+    },
+    /// No variant has enough students to be compared with the others.
+    TooFewPerVariant {
+        /// The fewest students on one variant.
+        min: usize,
+        /// The most.
+        max: usize,
+        /// The fewest a variant needs.
+        need: usize,
+    },
     /// No mistake explains a wrong answer.
     NoMistake,
     /// How the wrong answers are counted.

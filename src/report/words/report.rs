@@ -10,6 +10,7 @@ use crate::msg::{
 use crate::num::format::fmt_dec;
 use crate::report::lang::NumStyle;
 use crate::tutor::check::Verdict;
+use crate::tutor::class::same::Same;
 use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
 use crate::tutor::diagnose::Code;
@@ -25,6 +26,8 @@ pub trait ReportWords {
     fn skip(&self, s: Skip) -> &'static str;
     /// A flag on a key of the class report.
     fn flag(&self, f: Flag) -> &'static str;
+    /// Why two answer files are the same student.
+    fn same(&self, s: Same) -> &'static str;
     /// A verdict on an answer (also a column of the class's tables).
     fn verdict(&self, v: Verdict) -> &'static str;
     /// A word of a marked answer file.
@@ -104,6 +107,7 @@ mod tests {
     use crate::report::lang::Lang;
     use crate::report::words::of;
     use crate::tutor::check::Verdict;
+    use crate::tutor::class::same::Same;
     use crate::tutor::class::stats::Flag;
     use crate::tutor::class::{Note, Skip};
 
@@ -131,6 +135,7 @@ mod tests {
         v.extend(verdicts.map(|k| w.verdict(k).to_string()));
         v.extend([Note::Empty, Note::NotMarked].map(|k| w.note(k).to_string()));
         v.extend([Skip::Subdirectory, Skip::NotToml].map(|k| w.skip(k).to_string()));
+        v.extend([Same::Name, Same::Nim, Same::Answers].map(|k| w.same(k).to_string()));
         let flags = [Flag::VeryEasy, Flag::VeryHard, Flag::Negative];
         v.extend(flags.map(|k| w.flag(k).to_string()));
         v
@@ -177,6 +182,33 @@ mod tests {
             C::NotMarked,
             C::Definitions,
             C::VariantsNote,
+            C::RosterHeading,
+            C::RosterMissing(2),
+            C::RosterNotListed(1),
+            C::RosterAll(40),
+            C::DuplicatesHeading,
+            C::DuplicatesNote,
+            C::DuplicateOf {
+                kept: "adi (1).toml".into(),
+                why: "same name".into(),
+            },
+            C::FitsHeading,
+            C::FitsNote,
+            C::Fits {
+                variant: 4,
+                there: 95.0,
+                own: 4.5,
+            },
+            C::TooFewPerVariant {
+                min: 1,
+                max: 1,
+                need: 5,
+            },
+            C::TooFewPerVariant {
+                min: 1,
+                max: 3,
+                need: 5,
+            },
             C::NoMistake,
             C::WrongNote,
             C::NoneFound,
@@ -490,6 +522,17 @@ mod tests {
             | NotMarked
             | Definitions
             | VariantsNote
+            | TooFewPerVariant { .. }
+            | RosterHeading
+            | RosterMissing(_)
+            | RosterNotListed(_)
+            | RosterAll(_)
+            | DuplicatesHeading
+            | DuplicatesNote
+            | DuplicateOf { .. }
+            | FitsHeading
+            | FitsNote
+            | Fits { .. }
             | NoMistake
             | WrongNote
             | NoneFound

@@ -125,6 +125,13 @@ impl ErrorWords for En {
             ErrMsg::MarksMethodAsked(k) => format!("`{k}` is asked for its own marks, so it cannot also earn method marks for another value"),
             ErrMsg::NotAProblemOfExam(k, names) => format!("`{k}` is not in a table of a problem of the exam ([{names}])"),
             ErrMsg::ReportFormat(p) => format!("{p}: the report's format comes from its extension: .html, .md, .json or .csv"),
+            ErrMsg::AnswersFolder(d, why) => format!(
+                "the folder of answer files {d} cannot be read: {} (a class report needs --answers DIR)",
+                self.io_why(why)
+            ),
+            ErrMsg::RosterNeedsClass => "a class list is set against a class: --roster needs --answers DIR (a folder of answer files)".into(),
+            ErrMsg::EmptyRoster(f) => format!("the class list {f} holds no name"),
+            ErrMsg::RosterRow(line, why) => format!("line {line} of the class list cannot be read as CSV: {why}"),
             ErrMsg::ReportNeedsClass => "a class report needs --answers DIR (a folder of answer files)".into(),
             ErrMsg::PixelOutside(x, y, w, h) => format!("({x}, {y}) is outside the {w}x{h} image"),
             ErrMsg::PixelText(s) => format!("expected X,Y (whole pixel numbers), got `{s}`"),

@@ -126,6 +126,10 @@ pub fn every_error() -> Vec<ErrMsg> {
         ErrMsg::NotAProblemOfExam(s("view.n"), s("problem-01, problem-02")),
         ErrMsg::ReportFormat(s("class.txt")),
         ErrMsg::ReportNeedsClass,
+        ErrMsg::RosterNeedsClass,
+        ErrMsg::EmptyRoster(s("kelas.txt")),
+        ErrMsg::RosterRow(3, s("found record with 2 fields")),
+        ErrMsg::AnswersFolder(s("nosuchdir"), crate::msg::IoWhy::NotFound),
         ErrMsg::PixelOutside(10, 20, 8, 8),
         ErrMsg::PixelText(s("a,b")),
         ErrMsg::NothingRendered,
@@ -418,6 +422,10 @@ fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want,
         | E::NotAProblemOfExam(..)
         | E::ReportFormat(_)
         | E::ReportNeedsClass
+        | E::RosterNeedsClass
+        | E::EmptyRoster(_)
+        | E::RosterRow(..)
+        | E::AnswersFolder(..)
         | E::PixelOutside(..)
         | E::PixelText(_)
         | E::NothingRendered

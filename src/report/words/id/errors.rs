@@ -140,6 +140,13 @@ impl ErrorWords for Id {
             ErrMsg::MarksMethodAsked(k) => format!("`{k}` sudah ditanyakan dengan poinnya sendiri, sehingga tidak dapat juga memberi poin langkah untuk jawaban lain"),
             ErrMsg::NotAProblemOfExam(k, names) => format!("`{k}` tidak berada di tabel soal ujian ini ([{names}])"),
             ErrMsg::ReportFormat(p) => format!("{p}: format laporan ditentukan oleh ekstensinya: .html, .md, .json atau .csv"),
+            ErrMsg::AnswersFolder(d, why) => format!(
+                "folder berkas jawaban {d} tidak dapat dibaca: {} (laporan kelas memerlukan --answers DIR)",
+                self.io_why(why)
+            ),
+            ErrMsg::RosterNeedsClass => "daftar kelas dicocokkan dengan satu kelas: --roster memerlukan --answers DIR (folder berkas jawaban)".into(),
+            ErrMsg::EmptyRoster(f) => format!("daftar kelas {f} tidak berisi nama"),
+            ErrMsg::RosterRow(line, why) => format!("baris {line} daftar kelas tidak dapat dibaca sebagai CSV: {why}"),
             ErrMsg::ReportNeedsClass => "laporan kelas memerlukan --answers DIR (folder berkas jawaban)".into(),
             ErrMsg::PixelOutside(x, y, w, h) => format!("({x}; {y}) berada di luar gambar {w}x{h}"),
             ErrMsg::PixelText(s) => format!("seharusnya X,Y (nomor piksel bulat), diberikan `{s}`"),
