@@ -107,7 +107,10 @@ impl MsgWords for En {
             Msg::AlreadyUnit => "already a unit vector".into(),
             Msg::Saturates => "a channel went past 1 (or below 0) and is clamped: the highlight saturates".into(),
             Msg::InRange => "every channel is already in [0, 1]".into(),
-            Msg::NoTermInModel(model, t) => format!("the {model} model has no {} term", self.term(*t)),
+            Msg::NoTermInModel(model, t) => {
+                let model = crate::report::words::report::model_name(model);
+                format!("the {model} model has no {} term", self.term(*t))
+            }
             Msg::TextSetting => "the text's single white light and no global ambient: the sum is 1·(the text's factor)".into(),
             Msg::TextTerm(Term::Ambient) => "the text's Ia = Is·ka, with the light's intensity Is = 1 (its one white light), on the surface colour Cs".into(),
             Msg::TextTerm(Term::Diffuse) => "the text's Id = Is·kd·MAX(cos α, 0), with Is = 1, on the surface colour Cs".into(),

@@ -105,7 +105,10 @@ impl MsgWords for Id {
             Msg::AlreadyUnit => "sudah merupakan vektor satuan".into(),
             Msg::Saturates => "sebuah kanal melewati 1 (atau di bawah 0) dan dibatasi: sorotan (highlight) menjadi jenuh".into(),
             Msg::InRange => "setiap kanal sudah berada di [0, 1]".into(),
-            Msg::NoTermInModel(model, t) => format!("model {model} tidak memiliki komponen {}", self.term(*t)),
+            Msg::NoTermInModel(model, t) => {
+                let model = crate::report::words::report::model_name(model);
+                format!("model {model} tidak memiliki komponen {}", self.term(*t))
+            }
             Msg::TextSetting => "satu sumber cahaya putih seperti di teks dan tanpa ambient global: jumlahnya 1·(faktor dalam teks)".into(),
             Msg::TextTerm(Term::Ambient) => "Ia = Is·ka pada teks, dengan intensitas sumber cahaya Is = 1 (satu sumber cahaya putih), dikalikan warna permukaan Cs".into(),
             Msg::TextTerm(Term::Diffuse) => "Id = Is·kd·MAX(cos α, 0) pada teks, dengan Is = 1, dikalikan warna permukaan Cs".into(),
