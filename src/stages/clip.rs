@@ -163,7 +163,7 @@ pub fn outcode_clip<T: Scalar>(c: &nalgebra::Vector4<T>, name: &str, tr: &mut im
                 )),
             );
         }
-        s.res(Name::math("code"), Val::text(code_str(code)))
+        s.res(Name::RegionCode, Val::text(code_str(code)))
     });
     code
 }
@@ -452,7 +452,7 @@ fn intersection_step<T: Scalar>(i: &Intersection<T>, p0: &V3<T>, p1: &V3<T>) -> 
             vec![Val::vec3(p0), Val::num(&i.t), Val::vec3(&vec::sub(p1, p0))],
         ),
     )
-    .res(Name::math("code"), Val::text(code_str(i.code)))
+    .res(Name::RegionCode, Val::text(code_str(i.code)))
     .note(if i.code == 0 {
         Msg::Kept(true)
     } else {
@@ -544,7 +544,7 @@ fn code_step<T: Scalar>(name: &str, b: &ClipBox<T>, p: &V3<T>, code: u8) -> Step
             Val::said(crate::msg::Said::BitTest(set, test, values)),
         );
     }
-    s.res(Name::math("code"), Val::text(code_str(code)))
+    s.res(Name::RegionCode, Val::text(code_str(code)))
 }
 
 /// A number for a one-line remark: its exact form, else a short decimal.

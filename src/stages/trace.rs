@@ -51,6 +51,8 @@ pub enum Name {
     HalfFovy,
     /// The segment clipped by outcodes: `outcodes`.
     Outcodes,
+    /// A point's outcode (the text's region code): `code`.
+    RegionCode,
     /// Whether the two clippings agree: `agree`.
     Agree,
     /// The t of the points kept: `t kept`.
@@ -113,6 +115,7 @@ impl fmt::Display for Name {
             Name::Contributes => "contributes",
             Name::HalfFovy => "fovy/2 (degrees)",
             Name::Outcodes => "outcodes",
+            Name::RegionCode => "code",
             Name::Agree => "agree",
             Name::TKept => "t kept",
             Name::From => "from",
@@ -416,6 +419,7 @@ mod tests {
             (Name::Vertex(0), "vertex 0 (X, Y)"),
             (Name::InEyeSpace("P"), "P (eye space)"),
             (Name::TKept, "t kept"),
+            (Name::RegionCode, "code"),
             (Name::SameAsRasterizer, "same as the rasterizer's"),
         ];
         for (name, key) in keys {

@@ -174,7 +174,7 @@ fn step_name(key: &Key) -> Option<Name> {
 /// The clipping step of a key in segment `run`: steps are split into one
 /// run per segment at each outcode step of P0.
 fn clip_step(run: usize, value: &Value, steps: &[Step]) -> Option<Step> {
-    let code = Name::math("code");
+    let code = Name::RegionCode;
     let starts = |s: &Step| {
         s.result.iter().any(|(n, _)| *n == code)
             && s.values

@@ -93,7 +93,7 @@ fn word(w: FigWord) -> &'static str {
         FigWord::Kept => "dipertahankan",
         FigWord::CutOff => "dibuang",
         FigWord::AngleNH => "sudut(N, H)",
-        FigWord::Accepted => "kedua code 000000: segmen garis di dalam, diterima utuh",
+        FigWord::Accepted => "kedua region code 000000: segmen garis di dalam, diterima utuh",
         FigWord::Missed => {
             "tidak ada titik potong di dalam balok: segmen garis melewatinya, ditolak"
         }

@@ -62,7 +62,7 @@ impl KeyWords for Id {
             Node::Cut(c) => match c {
                 Cut::T => "t",
                 Cut::Point => "titik potong",
-                Cut::Code => "code",
+                Cut::Code => "region code",
                 Cut::Kept => "dipertahankan",
             },
             Node::Factor(f) => match f {

@@ -29,6 +29,7 @@ impl super::super::names::NameWords for Id {
             Name::Contributes => "menyumbang",
             Name::HalfFovy => "fovy/2 (derajat)",
             Name::Outcodes => "region code",
+            Name::RegionCode => "region code",
             Name::Agree => "sama",
             Name::TKept => "t titik yang dipertahankan",
             Name::From => "ujung awal",
