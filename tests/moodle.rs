@@ -1511,48 +1511,22 @@ fn a_quiz_split_under_a_size_holds_the_same_questions() {
     }
     // a split quiz refuses to write over an earlier quiz file unless
     // --force, which replaces it (and no more of the earlier files stay)
-    let again = grafika()
-        .args([
-            "generate",
-            "--topic",
-            "basis,view,project,window,clip,shade,pipeline",
-        ])
-        .args([
-            "--count",
-            "7",
-            "--variants",
-            "2",
-            "--seed",
-            "11",
-            "--format",
-            "moodle",
-        ])
-        .args(["--split-mb", "0.5", "--out"])
-        .arg(&split)
-        .output()
-        .unwrap();
+    let run_split = |force: &[&str]| {
+        grafika()
+            .args(["generate", "--topic"])
+            .arg("basis,view,project,window,clip,shade,pipeline")
+            .args(["--count", "7", "--variants", "2", "--seed", "11"])
+            .args(["--format", "moodle", "--split-mb", "0.5"])
+            .args(force)
+            .arg("--out")
+            .arg(&split)
+            .output()
+            .unwrap()
+    };
+    let again = run_split(&[]);
     assert_eq!(again.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&again.stderr).contains("quiz-01.xml"));
-    let forced = grafika()
-        .args([
-            "generate",
-            "--topic",
-            "basis,view,project,window,clip,shade,pipeline",
-        ])
-        .args([
-            "--count",
-            "7",
-            "--variants",
-            "2",
-            "--seed",
-            "11",
-            "--format",
-            "moodle",
-        ])
-        .args(["--split-mb", "0.5", "--force", "--out"])
-        .arg(&split)
-        .output()
-        .unwrap();
+    let forced = run_split(&["--force"]);
     assert!(
         forced.status.success(),
         "{}",
