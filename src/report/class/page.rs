@@ -192,6 +192,17 @@ fn roster_section(doc: Doc, class: &Class, lang: Lang) -> String {
     out
 }
 
+/// A section of items under its heading, the note after them; nothing
+/// when there are no items.
+fn listed(doc: Doc, items: &[String], (heading, note): (C, C), lang: Lang) -> String {
+    if items.is_empty() {
+        return String::new();
+    }
+    let mut out = doc.heading(1, &w(lang, heading));
+    out.push_str(&list(doc, items));
+    out + &para(doc, &esc(doc, &w(lang, note)))
+}
+
 /// The files that are the same student as another, when there are any:
 /// the rule, and each with the file kept.
 fn duplicates_section(doc: Doc, class: &Class, lang: Lang) -> String {
@@ -204,12 +215,7 @@ fn duplicates_section(doc: Doc, class: &Class, lang: Lang) -> String {
             ))
         })
         .collect();
-    if items.is_empty() {
-        return String::new();
-    }
-    let mut out = doc.heading(1, &w(lang, C::DuplicatesHeading));
-    out.push_str(&list(doc, &items));
-    out + &para(doc, &esc(doc, &w(lang, C::DuplicatesNote)))
+    listed(doc, &items, (C::DuplicatesHeading, C::DuplicatesNote), lang)
 }
 
 /// The sheets whose answers fit another variant's key, when there are any.
@@ -227,12 +233,7 @@ fn fits_section(doc: Doc, class: &Class, lang: Lang) -> String {
             ))
         })
         .collect();
-    if items.is_empty() {
-        return String::new();
-    }
-    let mut out = doc.heading(1, &w(lang, C::FitsHeading));
-    out.push_str(&list(doc, &items));
-    out + &para(doc, &esc(doc, &w(lang, C::FitsNote)))
+    listed(doc, &items, (C::FitsHeading, C::FitsNote), lang)
 }
 
 /// The key table and the definitions of its indices.
