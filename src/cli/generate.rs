@@ -66,10 +66,11 @@ fn plan(drawn: &Exams, style: &Style) -> Plan {
         .map(|g| style.w(&g.title))
         .collect();
     let topics: Vec<&str> = drawn.forms.iter().map(|f| f.topic.name()).collect();
+    let table = crate::report::blueprint::table(&bp, &titles, style.lang);
     Plan {
-        table: crate::report::blueprint::table(&bp, &titles, style.lang),
         json: crate::report::blueprint::json(&bp, &topics),
-        markdown: crate::report::blueprint::markdown(&bp, &titles, style),
+        markdown: crate::report::blueprint::markdown(&bp, &table, style),
+        table,
     }
 }
 

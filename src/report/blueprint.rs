@@ -111,12 +111,12 @@ pub fn table(bp: &Blueprint, titles: &[String], lang: Lang) -> String {
     s
 }
 
-/// blueprint.md: the table, then per position the range of each answer's
-/// numbers over the variants.
-pub fn markdown(bp: &Blueprint, titles: &[String], st: &Style) -> String {
+/// blueprint.md: the `table` ([`table`]), then per position the range of
+/// each answer's numbers over the variants.
+pub fn markdown(bp: &Blueprint, table: &str, st: &Style) -> String {
     let lang = st.lang;
     let mut s = format!("# {}\n\n", w(lang, P::Title));
-    s.push_str(&table(bp, titles, lang));
+    s.push_str(table);
     let _ = write!(s, "\n## {}\n\n", w(lang, P::Spread));
     for (i, p) in bp.positions.iter().enumerate() {
         let spans: Vec<String> = (p.spread.iter())
