@@ -47,6 +47,9 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
         exact_mode: true,
         ..*style
     };
+    if let Some(file) = &a.moodle_responses {
+        return crate::cli::moodle::run(&paper, file, settings, a, json, style, outputs);
+    }
     match (&a.answers, a.answers_from_text) {
         (Some(_), true) | (None, false) => Err(Error::why("answers", Twice::Answers)),
         (None, true) if a.report.is_some() => Err(Error::why("report", ErrMsg::ReportNeedsClass)),
@@ -89,6 +92,20 @@ fn class(
     outputs: &Outputs,
 ) -> Result<(String, i32)> {
     let class = class::mark_dir(paper, dir, settings)?;
+    class_out(paper, &class, settings, a, json, style, outputs)
+}
+
+/// A class's outputs: the lecturer's report, the CSV, the rows (text or
+/// JSON); exit status 2 when a sheet could not be marked.
+pub(crate) fn class_out(
+    paper: &Paper,
+    class: &class::Class,
+    settings: check::Settings,
+    a: &CheckArgs,
+    json: bool,
+    style: &Style,
+    outputs: &Outputs,
+) -> Result<(String, i32)> {
     if let Some(file) = &a.report {
         let format = report_format(file)?;
         let stats = stats::of(&class, paper, &settings);

@@ -253,6 +253,16 @@ pub enum DocWord {
     Warning,
     /// Before an error (a sheet's in its row, the program's on stderr).
     Error,
+    /// `check --moodle-responses`: attempts marked, of the report's attempts.
+    MoodleMarked(usize, usize),
+    /// An attempt not finished, not marked: the student, Moodle's state.
+    MoodleUnfinished(String, String),
+    /// A slot holding no question of the exam, skipped: the slot, the
+    /// beginning of its text.
+    MoodleForeign(usize, String),
+    /// A part that cannot be read: the student, the answer key, what was
+    /// typed (empty for an empty part).
+    MoodleUnreadable(String, String, String),
     /// Heading: the notes on the source.
     NotesOnSource,
     /// A true value.

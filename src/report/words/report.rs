@@ -223,6 +223,11 @@ mod tests {
             D::Variant,
             D::Warning,
             D::Error,
+            D::MoodleMarked(29, 30),
+            D::MoodleUnfinished("Eko".into(), "In progress".into()),
+            D::MoodleForeign(4, "What is a pixel?".into()),
+            D::MoodleUnreadable("Dewi".into(), "problem-01.view.u".into(), "tidak tahu".into()),
+            D::MoodleUnreadable("Dewi".into(), "problem-01.view.u".into(), String::new()),
             D::NotesOnSource,
             D::Yes,
             D::No,
@@ -452,6 +457,10 @@ mod tests {
             | D::Variant
             | D::Warning
             | D::Error
+            | D::MoodleMarked(..)
+            | D::MoodleUnfinished(..)
+            | D::MoodleForeign(..)
+            | D::MoodleUnreadable(..)
             | D::NotesOnSource
             | D::Yes
             | D::No

@@ -8,6 +8,7 @@
 //! sheets marked.
 
 pub mod exam;
+pub mod moodle;
 pub mod stats;
 
 use crate::error::{Error, Result};
@@ -234,6 +235,32 @@ fn mark_with(paper: &Paper, markers: &Markers, f: &Path) -> Sheet {
             .map(|s| check::shown_name(&s.to_string_lossy()))
             .unwrap_or_default(),
     };
+    mark_read(paper, markers, f, who, read)
+}
+
+/// Marks answers given in memory (a Moodle quiz's attempts, [`moodle`]),
+/// each named and split as an answer file is.
+pub fn mark_given(
+    paper: &Paper,
+    settings: Settings,
+    given: impl Iterator<Item = (PathBuf, String, Answers)>,
+) -> Vec<Sheet> {
+    let markers = markers(paper, settings);
+    given
+        .map(|(f, who, answers)| {
+            let who = check::shown_name(&who);
+            mark_read(paper, &markers, &f, who, Ok((None, answers)))
+        })
+        .collect()
+}
+
+fn mark_read(
+    paper: &Paper,
+    markers: &Markers,
+    f: &Path,
+    who: String,
+    read: Result<(Option<String>, Answers)>,
+) -> Sheet {
     let empty = matches!(&read, Ok((_, answers)) if answers.is_empty());
     let split = read.and_then(|(_, answers)| split(paper, &answers));
     let note = match &split {

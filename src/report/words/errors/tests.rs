@@ -126,6 +126,8 @@ pub fn every_error() -> Vec<ErrMsg> {
         ErrMsg::MarksMethodAsked(s("shade.diffuse")),
         ErrMsg::NotAProblemOfExam(s("view.n"), s("problem-01, problem-02")),
         ErrMsg::ReportFormat(s("class.txt")),
+        ErrMsg::NotResponses(s("no column Response 1")),
+        ErrMsg::NoQuestionText,
         ErrMsg::ReportNeedsClass,
         ErrMsg::PixelOutside(10, 20, 8, 8),
         ErrMsg::PixelText(s("a,b")),
@@ -419,6 +421,8 @@ fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want,
         | E::MarksMethodAsked(_)
         | E::NotAProblemOfExam(..)
         | E::ReportFormat(_)
+        | E::NotResponses(_)
+        | E::NoQuestionText
         | E::ReportNeedsClass
         | E::PixelOutside(..)
         | E::PixelText(_)
