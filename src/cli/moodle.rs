@@ -37,7 +37,8 @@ pub fn run(
         ));
     }
     let r = moodle_responses::read(file)?;
-    let (given, findings) = moodle::given(paper, settings, &r)?;
+    let (drawn, given, findings) = moodle::given(paper, settings, &r)?;
+    let paper = &drawn;
     let sheets = moodle::sheets(paper, settings, &given);
     if let Some(g) = &a.grades {
         let grades = moodle_grades::grades(&r, &given, &sheets);
@@ -61,8 +62,7 @@ pub fn run(
 /// attempt's order in the report; the name kept to letters, digits, `-`
 /// and `_`), all written or none.
 fn write_sheets(dir: &Path, sheets: &[Sheet], style: &Style, outputs: &Outputs) -> Result<()> {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| crate::cli::write::cannot_write("sheets", dir, &e))?;
+    std::fs::create_dir_all(dir).map_err(|e| crate::cli::write::cannot_write("sheets", dir, &e))?;
     let files: Vec<(PathBuf, String)> = sheets
         .iter()
         .enumerate()
@@ -79,7 +79,13 @@ fn write_sheets(dir: &Path, sheets: &[Sheet], style: &Style, outputs: &Outputs) 
 /// most 40 characters.
 fn safe(name: &str) -> String {
     name.chars()
-        .map(|c| if c.is_alphanumeric() || c == '-' { c } else { '_' })
+        .map(|c| {
+            if c.is_alphanumeric() || c == '-' {
+                c
+            } else {
+                '_'
+            }
+        })
         .take(40)
         .collect()
 }

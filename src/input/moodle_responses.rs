@@ -15,7 +15,6 @@ use std::path::Path;
 /// is about 25 KB (the question texts), so 64 MB holds 2,500 attempts.
 pub const MAX_REPORT: u64 = 64 << 20;
 
-
 /// A Responses report.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Responses {
@@ -61,17 +60,25 @@ pub fn read(path: &Path) -> Result<Responses> {
     let json = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("json"));
-    let rows = if json { json_rows(&text)? } else { csv_rows(&text)? };
+    let rows = if json {
+        json_rows(&text)?
+    } else {
+        csv_rows(&text)?
+    };
     of_rows(rows)
 }
 
 fn read_report(path: &Path) -> Result<String> {
     let shown = path.display().to_string();
     let field = "moodle-responses";
-    let why = |e: std::io::Error| Error::said(field, Msg::ErrCannotRead(shown.clone(), IoWhy::of(&e)));
+    let why =
+        |e: std::io::Error| Error::said(field, Msg::ErrCannotRead(shown.clone(), IoWhy::of(&e)));
     let meta = std::fs::metadata(path).map_err(why)?;
     if !meta.is_file() {
-        return Err(Error::why(field, ErrMsg::InputNotRegular(shown, FileKind::of(&meta))));
+        return Err(Error::why(
+            field,
+            ErrMsg::InputNotRegular(shown, FileKind::of(&meta)),
+        ));
     }
     if meta.len() > MAX_REPORT {
         let (size, most) = (Some(meta.len()), MAX_REPORT as usize);
@@ -106,7 +113,8 @@ fn csv_rows(text: &str) -> Result<Rows> {
 /// (one array per sheet; the keys are the column names in lower case
 /// without spaces). The header is rebuilt as the CSV names its columns.
 fn json_rows(text: &str) -> Result<Rows> {
-    let v: serde_json::Value = serde_json::from_str(text).map_err(|e| not_responses(&e.to_string()))?;
+    let v: serde_json::Value =
+        serde_json::from_str(text).map_err(|e| not_responses(&e.to_string()))?;
     let objects: Vec<&serde_json::Map<String, serde_json::Value>> = v
         .as_array()
         .into_iter()
@@ -114,7 +122,10 @@ fn json_rows(text: &str) -> Result<Rows> {
         .flat_map(|sheet| sheet.as_array().into_iter().flatten())
         .filter_map(|o| o.as_object())
         .collect();
-    let keys: Vec<String> = objects.first().map(|o| o.keys().cloned().collect()).unwrap_or_default();
+    let keys: Vec<String> = objects
+        .first()
+        .map(|o| o.keys().cloned().collect())
+        .unwrap_or_default();
     let header = keys.iter().map(|k| json_column(k)).collect();
     let rows = objects
         .iter()
@@ -169,7 +180,9 @@ fn columns(header: &[String]) -> Result<Columns> {
     let at = |name: &str| header.iter().position(|h| h.trim() == name);
     let mut slots = Vec::new();
     for n in 1.. {
-        let Some(r) = at(&format!("Response {n}")) else { break };
+        let Some(r) = at(&format!("Response {n}")) else {
+            break;
+        };
         slots.push((at(&format!("Question {n}")), r));
     }
     if slots.is_empty() {
@@ -180,7 +193,9 @@ fn columns(header: &[String]) -> Result<Columns> {
         first: at("First name"),
         email: at("Email address"),
         id_number: at("ID number"),
-        status: at("Status").or_else(|| at("State")).ok_or_else(|| not_responses("no column Status"))?,
+        status: at("Status")
+            .or_else(|| at("State"))
+            .ok_or_else(|| not_responses("no column Status"))?,
         grade: header.iter().position(|h| h.starts_with("Grade/")),
         slots,
     })
@@ -191,7 +206,11 @@ fn of_rows((header, rows): Rows) -> Result<Responses> {
     let out_of = c
         .grade
         .and_then(|g| header[g].trim_start_matches("Grade/").trim().parse().ok());
-    let cell = |row: &[String], i: Option<usize>| i.and_then(|i| row.get(i)).map_or("", |s| s.trim()).to_string();
+    let cell = |row: &[String], i: Option<usize>| {
+        i.and_then(|i| row.get(i))
+            .map_or("", |s| s.trim())
+            .to_string()
+    };
     let attempts = rows
         .iter()
         .enumerate()
@@ -240,7 +259,11 @@ fn is_finished(state: &str) -> bool {
 /// `44,00`); none for `-` or an empty cell.
 pub fn decimal(s: &str) -> Option<f64> {
     let s = s.trim();
-    let s = if s.contains('.') { s.to_string() } else { s.replace(',', ".") };
+    let s = if s.contains('.') {
+        s.to_string()
+    } else {
+        s.replace(',', ".")
+    };
     s.parse::<f64>().ok().filter(|x| x.is_finite())
 }
 

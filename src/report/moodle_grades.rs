@@ -15,8 +15,8 @@
 
 use crate::input::moodle_responses::Responses;
 use crate::msg::DocWord;
-use crate::report::words;
 use crate::report::lang::Lang;
+use crate::report::words;
 use crate::tutor::class::moodle::{Findings, Given};
 use crate::tutor::class::Sheet;
 
@@ -44,16 +44,29 @@ pub fn grades(r: &Responses, given: &[Given], sheets: &[Sheet]) -> Vec<Grade> {
     let out_of = r.out_of.unwrap_or(100.0);
     let mut out: Vec<Grade> = Vec::new();
     for (g, s) in given.iter().zip(sheets) {
-        let (Some(score), Some(total)) = (s.score(), s.total()) else { continue };
+        let (Some(score), Some(total)) = (s.score(), s.total()) else {
+            continue;
+        };
         let a = &r.attempts[g.attempt];
         let grade = Grade {
             email: a.email.clone(),
             id_number: a.id_number.clone(),
             name: g.who.clone(),
-            grafika: if total == 0 { 0.0 } else { score / f64::from(total) * out_of },
+            grafika: if total == 0 {
+                0.0
+            } else {
+                score / f64::from(total) * out_of
+            },
             moodle: a.grade,
         };
-        let same = |o: &Grade| (o.email.clone(), o.id_number.clone(), o.name.clone()) == (grade.email.clone(), grade.id_number.clone(), grade.name.clone());
+        let same = |o: &Grade| {
+            (o.email.clone(), o.id_number.clone(), o.name.clone())
+                == (
+                    grade.email.clone(),
+                    grade.id_number.clone(),
+                    grade.name.clone(),
+                )
+        };
         match out.iter_mut().find(|o| same(o)) {
             Some(o) if o.grafika < grade.grafika => *o = grade,
             Some(_) => {}
@@ -84,8 +97,16 @@ pub fn csv(grades: &[Grade]) -> String {
 pub fn notes(marked: usize, attempts: usize, f: &Findings, lang: Lang) -> Vec<String> {
     let w = |d: DocWord| words::of(lang).doc(&d);
     let mut out = vec![w(DocWord::MoodleMarked(marked, attempts))];
-    out.extend(f.unfinished.iter().map(|(who, st)| w(DocWord::MoodleUnfinished(who.clone(), st.clone()))));
-    out.extend(f.foreign.iter().map(|(n, h)| w(DocWord::MoodleForeign(*n, h.clone()))));
+    out.extend(
+        f.unfinished
+            .iter()
+            .map(|(who, st)| w(DocWord::MoodleUnfinished(who.clone(), st.clone()))),
+    );
+    out.extend(
+        f.foreign
+            .iter()
+            .map(|(n, h)| w(DocWord::MoodleForeign(*n, h.clone()))),
+    );
     out.extend(
         f.unreadable
             .iter()

@@ -226,7 +226,11 @@ mod tests {
             D::MoodleMarked(29, 30),
             D::MoodleUnfinished("Eko".into(), "In progress".into()),
             D::MoodleForeign(4, "What is a pixel?".into()),
-            D::MoodleUnreadable("Dewi".into(), "problem-01.view.u".into(), "tidak tahu".into()),
+            D::MoodleUnreadable(
+                "Dewi".into(),
+                "problem-01.view.u".into(),
+                "tidak tahu".into(),
+            ),
             D::MoodleUnreadable("Dewi".into(), "problem-01.view.u".into(), String::new()),
             D::NotesOnSource,
             D::Yes,

@@ -74,23 +74,35 @@ fn shapes(paper: &Paper, settings: Settings) -> Result<Shapes> {
         .collect()
 }
 
-/// The finished attempts of a report as answers to the paper (an exam),
-/// and what was found besides.
-pub fn given(paper: &Paper, settings: Settings, r: &Responses) -> Result<(Vec<Given>, Findings)> {
+/// The finished attempts of a report as answers, and what was found
+/// besides; with the paper they answer: a random slot draws each
+/// problem's variant by itself, so an attempt answers a draw (problem 1 of
+/// variant 2, problem 2 of variant 1, …), and each different draw is one
+/// variant of the paper returned, in the order first met.
+pub fn given(
+    paper: &Paper,
+    settings: Settings,
+    r: &Responses,
+) -> Result<(Paper, Vec<Given>, Findings)> {
     let shapes = shapes(paper, settings)?;
     let statements = statements(paper);
-    let shown = r.attempts.iter().any(|a| a.slots.iter().any(|s| !s.question.is_empty()));
+    let shown = r
+        .attempts
+        .iter()
+        .any(|a| a.slots.iter().any(|s| !s.question.is_empty()));
     if !shown && paper.variants.len() > 1 {
         return Err(Error::why("moodle-responses", ErrMsg::NoQuestionText));
     }
     let mut f = Findings::default();
     let mut out = Vec::new();
+    let mut draws: Vec<Vec<usize>> = Vec::new();
     for (i, a) in r.attempts.iter().enumerate() {
         if !a.finished {
             f.unfinished.push((who(a), a.state.clone()));
             continue;
         }
-        let mut variant = None;
+        let mut draw: Vec<usize> = vec![0; shapes[0].len()];
+        let mut any = false;
         let mut answers: Answers = Vec::new();
         for (s, slot) in a.slots.iter().enumerate() {
             let found = match shown {
@@ -104,14 +116,28 @@ pub fn given(paper: &Paper, settings: Settings, r: &Responses) -> Result<(Vec<Gi
                 }
                 continue;
             };
-            // An attempt's slots draw from one exam variant when the quiz
-            // is made as README says; a mixed draw is marked by the first.
-            let v = *variant.get_or_insert(v);
+            draw[p] = v;
+            any = true;
             let typed = slot.response.as_deref().and_then(parts).unwrap_or_default();
             let name = &paper.variants[v][p].name;
-            answers.extend(answers_of(&shapes[v][p], &typed, name, &who(a), &mut f.unreadable));
+            answers.extend(answers_of(
+                &shapes[v][p],
+                &typed,
+                name,
+                &who(a),
+                &mut f.unreadable,
+            ));
         }
-        let Some(v) = variant else { continue };
+        if !any {
+            continue;
+        }
+        let v = match draws.iter().position(|d| *d == draw) {
+            Some(v) => v,
+            None => {
+                draws.push(draw);
+                draws.len() - 1
+            }
+        };
         answers.insert(0, ("variant".into(), toml::Value::Integer(v as i64 + 1)));
         out.push(Given {
             attempt: i,
@@ -120,7 +146,22 @@ pub fn given(paper: &Paper, settings: Settings, r: &Responses) -> Result<(Vec<Gi
             answers,
         });
     }
-    Ok((out, f))
+    if draws.is_empty() {
+        draws.push(vec![0; shapes[0].len()]); // no attempt marked: the first variant
+    }
+    let drawn = Paper {
+        title: paper.title.clone(),
+        variants: (draws.iter())
+            .map(|d| {
+                d.iter()
+                    .enumerate()
+                    .map(|(p, &v)| paper.variants[v][p].clone())
+                    .collect()
+            })
+            .collect(),
+        exam: true,
+    };
+    Ok((drawn, out, f))
 }
 
 /// How a student is named: the name, else the email, else the ID number.
@@ -156,7 +197,10 @@ fn find(statements: &[Vec<String>], question: &str, slot: usize) -> Option<(usiz
         .filter(|(_, _, s)| !s.is_empty() && q.starts_with(s.as_str()))
         .map(|(v, p, _)| (v, p))
         .collect();
-    all.iter().find(|(_, p)| *p == slot).or(all.first()).copied()
+    all.iter()
+        .find(|(_, p)| *p == slot)
+        .or(all.first())
+        .copied()
 }
 
 /// The answers of one problem from its parts in order: `problem-01.view.u`
@@ -206,6 +250,8 @@ pub fn sheets(paper: &Paper, settings: Settings, given: &[Given]) -> Vec<Sheet> 
     super::mark_given(
         paper,
         settings,
-        given.iter().map(|g| (g.label.clone(), g.who.clone(), g.answers.clone())),
+        given
+            .iter()
+            .map(|g| (g.label.clone(), g.who.clone(), g.answers.clone())),
     )
 }
