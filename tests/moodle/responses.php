@@ -289,7 +289,7 @@ function import_grades(object $run): void {
     $text = file_get_contents($run->import);
     $importcode = get_new_importcode();
     $csv = new gradeimport_csv_load_data();
-    $csv->load_csv_content($text, 'UTF-8', 'comma', 0, $importcode);
+    $csv->load_csv_content($text, "UTF-8", "comma", 0);
     $header = $csv->get_headers();
     if ($csv->get_error()) {
         fwrite(STDERR, 'import: ' . $csv->get_error() . "\n");
@@ -302,7 +302,8 @@ function import_grades(object $run): void {
     foreach ($header as $i => $h) {
         $form->{"mapping_$i"} = $i == $grade ? $item->id : '0';
     }
-    $ok = $csv->prepare_import_grade_data($header, $form, $csv->get_iid(), $course->id, '', '', 0);
+    $reader = new csv_import_reader($csv->get_iid(), "grade");
+    $ok = $csv->prepare_import_grade_data($header, $form, $reader, $course->id, 0, 0, 0);
     if (!$ok) {
         fwrite(STDERR, 'import: ' . implode('; ', $csv->get_gradebookerrors()) . "\n");
         exit(1);
