@@ -26,7 +26,8 @@ pub use lang::Lang;
 pub use pixel::PixelMsg;
 pub use render::{PerPixel, Summary};
 pub use report::{
-    BenchWord, CheckWord, ClassWord, CliWord, Decimal, DocWord, PracticeWord, QuizWord, StatWord,
+    BenchWord, CheckWord, ClassWord, CliWord, Decimal, DocWord, PlanWord, PracticeWord, QuizWord,
+    StatWord,
 };
 pub use said::Said;
 
@@ -466,8 +467,23 @@ pub enum Msg {
     Pixel(PixelMsg),
     /// The statement of a generated problem.
     Statement(Box<Statement>),
-    /// `generate`: only n different problems of a topic at a difficulty.
-    ErrFewDistinct(String, String, usize),
+    /// `generate`: a problem position has fewer different variants than
+    /// asked.
+    ErrFewDistinct {
+        /// The topic's name.
+        topic: String,
+        /// The difficulty's name.
+        level: String,
+        /// The problem's number (1-based).
+        problem: usize,
+        /// How many different variants it has (new to the exam).
+        found: usize,
+        /// How many were asked.
+        asked: usize,
+        /// Whether every problem of its form was tried (else the search
+        /// stopped at its limit).
+        all: bool,
+    },
     /// `--html` given to a command that writes no worked solution.
     ErrHtmlCommand,
     /// A figure's words, or an error of a `--figure`/`--html` file.

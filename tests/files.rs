@@ -303,7 +303,12 @@ fn generate_force_replaces_its_own_output_whole_and_nothing_else() {
     std::fs::write(out.join("notes.txt"), "mine").unwrap();
     let o = generate(&out, "2", "2", &["--force"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let mut want = vec![".grafika-generated".to_string(), "notes.txt".into()];
+    let mut want = vec![
+        ".grafika-generated".to_string(),
+        "blueprint.json".into(),
+        "blueprint.md".into(),
+        "notes.txt".into(),
+    ];
     for v in 1..=2 {
         want.push(format!("variant-0{v}"));
         for f in [

@@ -193,6 +193,45 @@ fn the_clip_page_has_its_figure_inline() {
     assert!(html.contains("<figcaption>"));
 }
 
+/// A step's line too long for the column (view-surds' v = n × u, its
+/// components sums of √17 over 221) scrolls within its own line: seen in
+/// Chromium at 1,200 px, the page grew wider than the window and the line
+/// was cut at its edge. Each line of a step is an `<li>` whose style lets
+/// it scroll, and the long line is one; the answer table scrolls too.
+#[test]
+fn a_long_line_of_a_step_scrolls_within_itself() {
+    let html = page("surds.html", &["solve", "problems/view-surds.toml"]);
+    well_formed(&html);
+    let style = &html[html.find("<style>").unwrap()..html.find("</style>").unwrap()];
+    let rule = style
+        .split('}')
+        .find(|r| r.starts_with("section.step li{"))
+        .expect("a rule for a step's lines");
+    assert!(
+        rule.contains("overflow-x:auto") && rule.contains("max-width:100%"),
+        "{rule}"
+    );
+    let long = html
+        .split("<li>")
+        .skip(1)
+        .map(|li| &li[..li.find("</li>").unwrap_or(li.len())])
+        .any(|li| li.contains("<mi>v</mi>") && li.matches("221").count() >= 2);
+    assert!(
+        long,
+        "the line of v with its /221 components is a step's line"
+    );
+    // shade-spot-penumbra's answer table (its colour, sums of √2, √3 and
+    // √6 over 125) scrolls within itself likewise.
+    let table = style
+        .split('}')
+        .find(|r| r.starts_with("table.answers{"))
+        .expect("a rule for the answer table");
+    assert!(
+        table.contains("overflow-x:auto") && table.contains("display:block"),
+        "{table}"
+    );
+}
+
 #[test]
 fn a_page_in_indonesian() {
     let html = page(

@@ -44,6 +44,29 @@ fn indonesian_text_uses_the_decimal_comma_and_the_texts_terms() {
 }
 
 /// Drops the human-readable strings of a report's JSON.
+/// A model without a term says so with the model's name as the text writes
+/// it (`Lambert`, `Phong`, `Blinn–Phong`), never the file's key (`lambert`):
+/// problems/shade-lambert.toml has no specular term, in both languages.
+#[test]
+fn a_model_without_a_term_is_named_as_the_text_names_it() {
+    let en = text("en", &["solve", "problems/shade-lambert.toml"]);
+    assert!(
+        en.contains("(the Lambert model has no specular term)"),
+        "{en}"
+    );
+    let id = text("id", &["solve", "problems/shade-lambert.toml"]);
+    assert!(
+        id.contains("(model Lambert tidak memiliki komponen specular)"),
+        "{id}"
+    );
+    for t in [&en, &id] {
+        assert!(
+            !t.contains("lambert model") && !t.contains("model lambert"),
+            "{t}"
+        );
+    }
+}
+
 fn without_words(v: &Value) -> Value {
     const WORDS: [&str; 11] = [
         "title",

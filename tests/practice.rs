@@ -883,9 +883,10 @@ fn interactive_terminal_through_tmux() {
 
 #[test]
 fn practice_says_the_likely_mistake_in_indonesian() {
-    // seed 3, basis, easy: Pe = (6, 1, 14), Pr = (1, 1, 2), so
-    // Pe − Pr = (5, 0, 12), |Pe − Pr| = √(25 + 144) = 13 and n = (5/13, 0, 12/13).
-    // Answering (5, 0, 12) is the catalog's n_not_normalized; under an
+    // seed 3, basis, easy: Pe = (5, −10, −1), Pr = (1, 2, 2), so
+    // Pe − Pr = (4, −12, −3), |Pe − Pr| = √(16 + 144 + 9) = 13 and n =
+    // (4/13, −12/13, −3/13). Answering (4, −12, −3) is the catalog's
+    // n_not_normalized; under an
     // Indonesian locale its description is said in Indonesian, both in the
     // verdict and in the summary (an earlier version said it in English).
     let out = grafika()
@@ -902,11 +903,11 @@ fn practice_says_the_likely_mistake_in_indonesian() {
         .env_remove("LC_ALL")
         .env_remove("LC_MESSAGES")
         .env("LANG", "id_ID.UTF-8")
-        .write_stdin("5, 0, 12\n")
+        .write_stdin("4, -12, -3\n")
         .output()
         .unwrap();
     let text = String::from_utf8(out.stdout).unwrap();
-    assert!(text.contains("Peye = (6; 1; 14)"), "{text}");
+    assert!(text.contains("Peye = (5; -10; -1)"), "{text}");
     assert!(text.contains("[n_not_normalized]"), "{text}");
     assert!(!text.contains("not divided"), "{text}");
     let unwrapped = text.split_whitespace().collect::<Vec<_>>().join(" ");

@@ -676,7 +676,8 @@ fn generate_lists_each_file_with_its_sha256_and_replaces_only_unchanged_ones() {
         .into_iter()
         .filter(|(n, _)| n != ".grafika-generated")
         .collect();
-    assert_eq!(files.len(), 12);
+    // 2 variants × 6 files, and the blueprint (.md, .json)
+    assert_eq!(files.len(), 14);
     for (name, bytes) in &files {
         use sha2::Digest;
         let h: String = sha2::Sha256::digest(bytes)

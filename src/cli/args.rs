@@ -8,7 +8,7 @@ use crate::num::Precision;
 use crate::report::lang::Lang;
 use crate::report::moodle::Decimal;
 use crate::stages::lighting::Model;
-use crate::tutor::generate::{Difficulty, Topic};
+use crate::tutor::generate::{ClipCase, Difficulty, Topic};
 use clap::builder::PossibleValue;
 use clap::{
     Arg, ArgAction, ArgMatches, Args, CommandFactory, FromArgMatches, Parser, Subcommand, ValueEnum,
@@ -533,6 +533,12 @@ pub struct CheckArgs {
     /// extension.
     #[arg(long, value_name = "FILE")]
     pub report: Option<PathBuf>,
+    /// With a directory of answers: the class list, one name per line or
+    /// CSV with a `nama` (or `name`) column and optionally `nim`; the
+    /// table and the report list who handed nothing in and the files of
+    /// no one on the list.
+    #[arg(long, value_name = "FILE")]
+    pub roster: Option<PathBuf>,
     /// Credit a wrong answer that is right given the student's own earlier
     /// answers (pixels from their window and projected points, ...) as
     /// correct.follow_through.
@@ -658,9 +664,14 @@ pub struct GenerateArgs {
     /// The output directory (created if needed).
     #[arg(long)]
     pub out: PathBuf,
-    /// Versions of the exam (one per student), each with its own key.
+    /// Versions of the exam (one per student), each with its own key; the
+    /// variants of a problem are parallel forms (the same keys, marks,
+    /// case and number class).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=500))]
     pub variants: u32,
+    /// The case of the clipping problems, the same in every variant.
+    #[arg(long, value_enum, default_value_t = ClipCase::Clipped)]
+    pub clip: ClipCase,
     /// Relative tolerance of the numbers in Moodle and GIFT (default 0.001, i.e. 0.1%).
     #[arg(long, value_name = "R")]
     pub tolerance: Option<f64>,
@@ -756,8 +767,17 @@ choices!(
 choices!(
     Difficulty,
     name {
-        Easy: "Integer norms, rational answers",
-        Medium: "One surd in the answers",
-        Hard: "General",
+        Easy: "Every answer rational (integer norms, fovy 90°)",
+        Medium: "Square roots of one radicand (fovy 30°, 45°, 60°, 120°); clipping: two planes cut",
+        Hard: "Square roots of several radicands; a fovy whose tangent has no closed form; clipping: both ends outside",
+    }
+);
+choices!(
+    ClipCase,
+    name {
+        Clipped: "Cut by the box: at least one intersection to compute and keep",
+        Accepted: "Inside the box: accepted whole",
+        Rejected: "Beyond one plane at both ends: rejected by the AND test",
+        Mixed: "Clipping problems take clipped, accepted, rejected in turn (each problem's variants alike)",
     }
 );

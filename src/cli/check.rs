@@ -10,7 +10,7 @@ use crate::cli::args::CheckArgs;
 use crate::cli::write::Outputs;
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
-use crate::msg::{Bound, CliWord, DocWord, ErrMsg, Twice};
+use crate::msg::{Bound, CliWord, DocWord, ErrMsg, IoWhy, Twice};
 use crate::report::check::marked;
 use crate::report::class::lecturer::{self, Format};
 use crate::report::lang::Lang;
@@ -32,8 +32,15 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
     if a.file == stdin && a.answers.as_deref() == Some(stdin) {
         return Err(Error::why("answers", ErrMsg::BothStdin));
     }
-    // a report's format is known before any marking
+    // a report's format, and the class list, are known before any marking
     a.report.as_deref().map(report_format).transpose()?;
+    let listed = a.roster.as_deref().map(class::roster::read).transpose()?;
+    if listed.is_some() && !a.answers.as_deref().is_some_and(Path::is_dir) {
+        return Err(match &a.answers {
+            Some(path) if std::fs::metadata(path).is_err() => not_a_class(path),
+            _ => Error::why("roster", ErrMsg::RosterNeedsClass),
+        });
+    }
     let paper = if a.file.is_dir() {
         exam::read(&a.file, style.lang)?
     } else {
@@ -55,16 +62,16 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
         (None, true) if a.report.is_some() => Err(Error::why("report", ErrMsg::ReportNeedsClass)),
         (None, true) => from_text(&paper, a, settings, json, style, outputs),
         (Some(path), false) if path.is_dir() => {
-            class(&paper, path, settings, a, json, style, outputs)
+            class(&paper, (path, listed), settings, a, json, style, outputs)
         }
-        (Some(_), false) if a.report.is_some() => {
-            Err(Error::why("report", ErrMsg::ReportNeedsClass))
-        }
+        (Some(path), false) if a.report.is_some() => Err(not_a_class(path)),
         (Some(path), false) => {
             let sheet = if paper.exam {
                 class::mark_file(&paper, path, settings)
             } else {
-                let (student, answers) = check::read_answers(path)?;
+                let (student, mut answers) = check::read_answers(path)?;
+                // a file's `nim` says who, as its `student` does
+                answers.retain(|(k, _)| k != "nim");
                 let who = student.unwrap_or_else(|| check::shown_name(&path.display().to_string()));
                 let m = check::mark(
                     &paper.variants[0][0].problem,
@@ -84,14 +91,15 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
 /// lecturer's report; exit status 2 when a file could not be marked.
 fn class(
     paper: &Paper,
-    dir: &Path,
+    (dir, listed): (&Path, Option<Vec<class::roster::Listed>>),
     settings: check::Settings,
     a: &CheckArgs,
     json: bool,
     style: &Style,
     outputs: &Outputs,
 ) -> Result<(String, i32)> {
-    let class = class::mark_dir(paper, dir, settings)?;
+    let mut class = class::mark_dir(paper, dir, settings)?;
+    class.roster = listed.map(|l| class::roster::against(l, &class.sheets));
     class_out(paper, &class, settings, a, json, style, outputs)
 }
 
@@ -161,6 +169,9 @@ fn lone_sheet(file: &Path, who: String, m: Marking) -> Sheet {
         variant: Some(1),
         outcome: Ok(vec![(String::new(), m)]),
         note: None,
+        identity: Default::default(),
+        duplicate: None,
+        fits: None,
     }
 }
 
@@ -179,6 +190,19 @@ fn one_sheet(
         return Ok((out, status));
     }
     Ok((marked(&sheet.outcome?, json, style), 0))
+}
+
+/// Why `--answers PATH` with `--report` is no class: a path that cannot be
+/// read (missing, or not allowed) is named as the folder of answers that
+/// cannot be read; a file is one student, not a class.
+fn not_a_class(path: &Path) -> Error {
+    match std::fs::metadata(path) {
+        Err(e) => Error::why(
+            "answers",
+            ErrMsg::AnswersFolder(path.display().to_string(), IoWhy::of(&e)),
+        ),
+        Ok(_) => Error::why("report", ErrMsg::ReportNeedsClass),
+    }
 }
 
 /// The report's format by the file's extension.

@@ -11,19 +11,21 @@ use crate::report::gift::{gift_units, GIFT};
 use crate::report::moodle::{moodle_units, Written, XML};
 use crate::report::quizfile::pack;
 use crate::report::sheets::{
-    exam_json, exam_title, key_file, key_title, problem_file, sheets, written_json, written_summary,
+    exam_json, exam_title, key_file, key_title, problem_file, sheet_title, sheets, written_json,
+    written_summary,
 };
 use crate::report::Style;
 use crate::tutor::check::DEFAULT_TOLERANCE;
+use crate::tutor::generate::blueprint::blueprint;
 use crate::tutor::generate::quiz::Quiz;
-use crate::tutor::generate::{exam, problem_name, variant_name, variant_seed, Generated};
+use crate::tutor::generate::{exams, problem_name, variant_name, Exams, Generated, Spec};
 use std::path::PathBuf;
 
 /// Runs `grafika generate`; returns what to print. `force`: `--force`.
 pub fn run(a: &GenerateArgs, force: bool, json: bool, style: &Style) -> Result<String> {
-    let files = write_exams(a, force, style)?;
+    let (files, plan) = write_exams(a, force, style)?;
     Ok(if json {
-        written_json(&files, a.seed)
+        written_json(&files, a.seed, plan.json)
     } else {
         let mut s = written_summary(
             &files,
@@ -39,9 +41,53 @@ pub fn run(a: &GenerateArgs, force: bool, json: bool, style: &Style) -> Result<S
             s.push_str(&note);
             s.push('\n');
         }
+        s.push('\n');
+        s.push_str(&plan.table);
         s
     })
 }
+
+/// An exam's blueprint as `generate` prints it (the table) and writes it
+/// (blueprint.md, blueprint.json).
+pub struct Plan {
+    /// The Markdown table printed.
+    pub table: String,
+    /// blueprint.json's value.
+    pub json: serde_json::Value,
+    /// blueprint.md.
+    pub markdown: String,
+}
+
+/// The blueprint of a drawn exam in the user's language.
+fn plan(drawn: &Exams, style: &Style) -> Plan {
+    let bp = blueprint(drawn);
+    let first = drawn.variants.first();
+    let titles: Vec<String> = (first.iter().flat_map(|v| v.iter()))
+        .map(|g| style.w(&g.title))
+        .collect();
+    let topics: Vec<&str> = drawn.forms.iter().map(|f| f.topic.name()).collect();
+    Plan {
+        table: crate::report::blueprint::table(&bp, &titles, style.lang),
+        json: crate::report::blueprint::json(&bp, &topics),
+        markdown: crate::report::blueprint::markdown(&bp, &titles, style),
+    }
+}
+
+/// The blueprint's files, (name, text), written beside the exam.
+fn plan_files(plan: &Plan) -> [(String, String); 2] {
+    [
+        (BLUEPRINT_MD.to_string(), plan.markdown.clone()),
+        (
+            BLUEPRINT_JSON.to_string(),
+            serde_json::to_string_pretty(&plan.json).unwrap_or_default() + "\n",
+        ),
+    ]
+}
+
+/// The blueprint's file names.
+pub const BLUEPRINT_MD: &str = "blueprint.md";
+/// See [`BLUEPRINT_MD`].
+pub const BLUEPRINT_JSON: &str = "blueprint.json";
 
 /// More problems than this (count × variants) are written only with `--force`.
 pub const MAX_PROBLEMS: u64 = 2_000;
@@ -71,11 +117,13 @@ fn check_size(a: &GenerateArgs, force: bool) -> Result<()> {
 /// The names the output has in `--out`: `quiz.xml`, `variant-01` …, or one
 /// exam's files (a quiz split by `--split-mb`: [`quiz_name`]).
 fn entries(a: &GenerateArgs) -> Vec<String> {
-    match a.format {
+    let mut names = match a.format {
         Format::Moodle | Format::Gift => vec![quiz_name(a.format, None)],
         _ if a.variants == 1 => exam_files(a.count, a.format),
         _ => (1..=a.variants).map(|v| variant_name(v as usize)).collect(),
-    }
+    };
+    names.extend([BLUEPRINT_MD, BLUEPRINT_JSON].map(String::from));
+    names
 }
 
 /// The files of one exam: problem and key files, then the sheets.
@@ -111,29 +159,37 @@ fn sheet_ext(format: Format) -> Option<&'static str> {
 }
 
 /// Generates and writes every variant, the whole output or nothing (see
-/// [`Stage`]); returns the files written.
-pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<Vec<PathBuf>> {
+/// [`Stage`], the blueprint beside it); returns the files written and the
+/// blueprint.
+pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<(Vec<PathBuf>, Plan)> {
     check_size(a, force)?;
     let limit = split_limit(a)?;
     if matches!(a.format, Format::Moodle | Format::Gift) {
-        return write_quiz(a, quiz_tolerance(a)?, limit, force, style);
+        let rel = quiz_tolerance(a)?;
+        // drawn before anything is written: an exam that cannot be made
+        // leaves the output directory as it was
+        let drawn = draw(a, style)?;
+        let plan = plan(&drawn, style);
+        let files = write_quiz(a, (rel, limit), (drawn, plan_files(&plan)), force, style)?;
+        return Ok((files, plan));
     }
+    let drawn = draw(a, style)?;
+    let plan = plan(&drawn, style);
     let mut stage = Stage::begin(&a.out, entries(a), force, run_of(a))?;
     let mut files = Vec::new();
-    let bar = progress(a, style);
-    for v in 0..a.variants {
+    for (v, exam) in drawn.variants.iter().enumerate() {
         let dir = if a.variants == 1 {
             String::new()
         } else {
-            format!("{}/", variant_name(v as usize + 1))
+            format!("{}/", variant_name(v + 1))
         };
-        let exam = exam(&a.topic, a.difficulty, a.count, variant_seed(a.seed, v))?;
-        files.extend(write_exam(&mut stage, &dir, a, v + 1, &exam, style)?);
-        bar.iter().for_each(|b| b.inc(1));
+        files.extend(write_exam(&mut stage, &dir, a, v as u32 + 1, exam, style)?);
     }
-    bar.iter().for_each(|b| b.finish_and_clear());
+    for (name, text) in plan_files(&plan) {
+        files.push(stage.write(&name, &text)?);
+    }
     stage.commit()?;
-    Ok(files)
+    Ok((files, plan))
 }
 
 /// The run, as the list of generate's own files says it: what it was
@@ -153,15 +209,28 @@ fn run_of(a: &GenerateArgs) -> String {
     )
 }
 
-/// A progress bar over the variants, on a terminal, when there are more
-/// than 100 problems in all (smaller exams are written in well under a
-/// second).
-fn progress(a: &GenerateArgs, style: &Style) -> Option<indicatif::ProgressBar> {
+/// The exam the arguments ask for.
+fn spec(a: &GenerateArgs) -> Spec {
+    Spec {
+        topics: a.topic.clone(),
+        difficulty: a.difficulty,
+        count: a.count,
+        variants: a.variants,
+        seed: a.seed,
+        clip: a.clip,
+    }
+}
+
+/// Draws every variant of the exam, with a progress bar over its problems
+/// on a terminal when there are more than 100 (smaller exams are drawn in
+/// well under a second).
+fn draw(a: &GenerateArgs, style: &Style) -> Result<Exams> {
     let n = a.count as u64 * a.variants as u64;
-    let msg = crate::report::words::of(style.lang).cli(crate::msg::CliWord::Variants);
-    (n > 100)
-        .then(|| super::terminal_bar(a.variants as u64, msg))
-        .flatten()
+    let msg = crate::report::words::of(style.lang).cli(crate::msg::CliWord::Problems);
+    let bar = (n > 100).then(|| super::terminal_bar(n, msg)).flatten();
+    let drawn = exams(&spec(a), &mut |k| bar.iter().for_each(|b| b.inc(k)));
+    bar.iter().for_each(|b| b.finish_and_clear());
+    drawn
 }
 
 /// Writes one exam's files (into `dir`, `` or `variant-NN/`): the problem
@@ -203,9 +272,10 @@ fn write_exam(
         return Ok(files);
     };
     let (q, k) = sheets(doc, exam, style);
+    let sheet = sheet_title(a.difficulty, numbered, style.lang);
     put(
         format!("questions.{ext}"),
-        doc.document(&title(None), &q, style.lang),
+        doc.document(&sheet, &q, style.lang),
     )?;
     let key = key_title(&title(Some(a.seed)), style.lang);
     put(format!("key.{ext}"), doc.document(&key, &k, style.lang))?;
@@ -275,8 +345,8 @@ pub fn quiz_name(format: Format, k: Option<usize>) -> String {
 /// once it is written: any quiz file is refused then, without `--force`).
 fn write_quiz(
     a: &GenerateArgs,
-    rel: f64,
-    limit: Option<usize>,
+    (rel, limit): (f64, Option<usize>),
+    (drawn, beside): (Exams, [(String, String); 2]),
     force: bool,
     style: &Style,
 ) -> Result<Vec<PathBuf>> {
@@ -287,7 +357,8 @@ fn write_quiz(
             None
         }
     };
-    let texts = quiz_files(a, rel, limit, style)?;
+    let mut texts = quiz_files(a, (rel, limit), drawn, style)?;
+    texts.extend(beside);
     let mut stage = match early {
         Some(stage) => stage,
         None => Stage::begin(
@@ -337,19 +408,11 @@ fn refuse_quiz_files(a: &GenerateArgs, force: bool) -> Result<()> {
 /// The quiz's files, (name, text): one, or split under `limit` bytes.
 fn quiz_files(
     a: &GenerateArgs,
-    rel: f64,
-    limit: Option<usize>,
+    (rel, limit): (f64, Option<usize>),
+    drawn: Exams,
     style: &Style,
 ) -> Result<Vec<(String, String)>> {
-    let bar = progress(a, style);
-    let exams = (0..a.variants)
-        .map(|v| {
-            bar.iter().for_each(|b| b.inc(1));
-            exam(&a.topic, a.difficulty, a.count, variant_seed(a.seed, v))
-        })
-        .collect::<Result<Vec<_>>>()?;
-    bar.iter().for_each(|b| b.finish_and_clear());
-    let quiz = Quiz::new(exams, &a.topic, rel);
+    let quiz = Quiz::new(drawn.variants, &a.topic, rel);
     let w = Written::new(style, a.decimal);
     let (units, frame) = match a.format {
         Format::Gift => (gift_units(&quiz, &w), GIFT),

@@ -417,7 +417,7 @@ pub fn generated_name(name: &str) -> bool {
             .strip_suffix(".key.toml")
             .or_else(|| f.strip_suffix(".toml"))
             .is_some_and(|p| numbered(p, "problem-"));
-        sheet || problem || f == "exam.json"
+        sheet || problem || f == "exam.json" || f == "blueprint.md" || f == "blueprint.json"
     };
     match parts.as_slice() {
         [a] => text(a).is_some_and(|f| exam_file(&f) || quiz_file(&f, &numbered)),

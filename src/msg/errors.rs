@@ -467,8 +467,6 @@ pub enum ErrMsg {
     LightsNeedShade,
     /// No topic.
     NoTopic,
-    /// No non-degenerate problem in 500 tries.
-    NoDrawing,
     /// No problem drawn (practice).
     NoProblemDrawn,
     /// Standard input holds the answers (practice).
@@ -523,6 +521,15 @@ pub enum ErrMsg {
     NoQuestionText,
     /// `--report` without a folder of answers.
     ReportNeedsClass,
+    /// `--roster` without a folder of answers.
+    RosterNeedsClass,
+    /// A class list with no name: the file.
+    EmptyRoster(String),
+    /// A class list's CSV row that cannot be read: the line, why.
+    RosterRow(usize, String),
+    /// `--report` or `--roster` with an answers folder that cannot be read:
+    /// the path, why.
+    AnswersFolder(String, crate::msg::IoWhy),
     /// A pixel outside the image: x, y, width, height.
     PixelOutside(u32, u32, u32, u32),
     /// Not X,Y.

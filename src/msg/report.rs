@@ -70,8 +70,51 @@ pub enum ClassWord {
     NotMarked,
     /// The definitions of the key table's columns and indices.
     Definitions,
-    /// What a variant table's cell holds.
+    /// What a variant table's cell holds, and the test behind its flags.
     VariantsNote,
+    /// Heading: the class list.
+    RosterHeading,
+    /// Before the students of the class list with no answer file: how many.
+    RosterMissing(usize),
+    /// Before the answer files of no one on the class list: how many.
+    RosterNotListed(usize),
+    /// Everyone on the class list handed in, and every file is on it.
+    RosterAll(usize),
+    /// Heading: the same student twice.
+    DuplicatesHeading,
+    /// How duplicates are found and which file is kept.
+    DuplicatesNote,
+    /// A file that is the same student as a kept one: the file kept, why
+    /// in words.
+    DuplicateOf {
+        /// The file kept.
+        kept: String,
+        /// Why the two are the same student, in words.
+        why: String,
+    },
+    /// Heading: sheets that fit another variant's key better.
+    FitsHeading,
+    /// How "fits another variant's key" is decided.
+    FitsNote,
+    /// A sheet fits another variant's key: that variant, the share of the
+    /// marks there and on its own, in per cent.
+    Fits {
+        /// The variant whose key the answers fit.
+        variant: usize,
+        /// The share of the marks against that variant's key, in per cent.
+        there: f64,
+        /// The share against its own variant's key, in per cent.
+        own: f64,
+    },
+    /// No variant has enough students to be compared with the others.
+    TooFewPerVariant {
+        /// The fewest students on one variant.
+        min: usize,
+        /// The most.
+        max: usize,
+        /// The fewest a variant needs.
+        need: usize,
+    },
     /// No mistake explains a wrong answer.
     NoMistake,
     /// How the wrong answers are counted.
@@ -319,6 +362,18 @@ pub enum DocWord {
     },
     /// `… and n more` files.
     More(usize),
+    /// A question sheet's title: the level in words and the variant, no
+    /// internal codes and no seed.
+    SheetTitle {
+        /// The difficulty's name (`medium`).
+        difficulty: String,
+        /// The variant, when there are several.
+        variant: Option<u32>,
+    },
+    /// The line a student writes their name and student number (NIM) on.
+    NameLine,
+    /// The marks of the whole sheet: `Total: 24 marks`.
+    TotalMarks(u32),
 }
 
 /// The decimal mark students type: a Moodle reads a typed number by the
@@ -391,8 +446,8 @@ pub enum CliWord {
     Measuring,
     /// The render's progress bar.
     Frames,
-    /// An exam's progress bar.
-    Variants,
+    /// The problems drawn, on an exam's progress bar.
+    Problems,
     /// The field of an error in the arguments that names none.
     Arguments,
     /// Whose answers the text's printed ones are, when the file names no
@@ -449,6 +504,57 @@ pub enum StatWord {
     Frame,
     /// Time: PNG encoding.
     Png,
+}
+
+/// A word of an exam's blueprint (`generate`): its heading, columns and
+/// cells.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum PlanWord {
+    /// blueprint.md's title.
+    Title,
+    /// The table's heading: the variants and the marks of each.
+    Heading {
+        /// How many variants.
+        variants: usize,
+        /// The marks of one variant.
+        total: u32,
+    },
+    /// Column: the topic.
+    Topic,
+    /// Column: the case every variant asks.
+    Case,
+    /// Column: the number class.
+    Numbers,
+    /// Column: the marks.
+    Marks,
+    /// Column: the statements.
+    Statements,
+    /// A camera problem's points.
+    Points(usize),
+    /// A lighting model, by its file name (`phong`, `blinn`, `lambert`).
+    Model(String),
+    /// A clipping case: the status (`clipped`, …), the planes each end is
+    /// beyond, the intersections tried and kept.
+    Clip {
+        /// The status's code.
+        status: String,
+        /// How many planes P0 and P1 lie beyond.
+        bits: [u32; 2],
+        /// Intersections tried.
+        tried: u32,
+        /// Intersections kept.
+        kept: u32,
+    },
+    /// A number class, by its JSON name (`one_surd`).
+    Class(String),
+    /// k of the n variants.
+    OfVariants(usize, usize),
+    /// The marks differ between variants.
+    MarksVary,
+    /// k distinct statements of n.
+    Distinct(usize, usize),
+    /// The heading of the answers' ranges.
+    Spread,
 }
 
 /// A word of `grafika bench`'s table: its columns, a row's verdict and

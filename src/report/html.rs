@@ -11,16 +11,20 @@ use crate::msg::{DocWord, Msg};
 use crate::stages::trace::{Step, Subst, Val};
 
 /// The page's style: readable on a screen, one column, and A4 in print
-/// (steps are not split across pages).
+/// (steps are not split across pages); a line of a step too long for the
+/// column (a cross product of surds) scrolls within its line, and a wide
+/// answer table within itself, so the page itself never grows wider than
+/// the window.
 const CSS: &str = "\
 body{font-family:system-ui,sans-serif;line-height:1.5;max-width:48rem;margin:2rem auto;padding:0 1rem;color:#111}\
 h1{font-size:1.6rem}h2{font-size:1.3rem;border-bottom:1px solid #999}h3{font-size:1.15rem}\
 h4{font-size:1.05rem;margin:1rem 0 .2rem}h5{font-size:1rem;margin:.2rem 0}\
 section.step{border-left:3px solid #0072B2;padding:.2rem .8rem;margin:.8rem 0;break-inside:avoid}\
 section.step ul{list-style:none;padding-left:.5rem;margin:.2rem 0}\
+section.step li{max-width:100%;overflow-x:auto;overflow-y:hidden}\
 .note{font-style:italic;color:#333}.warning{border:1px solid #D55E00;padding:.4rem}\
 math[display=block]{margin:.3rem 0;padding:.15em 0;max-width:100%;overflow-x:auto;overflow-y:hidden}\
-table.answers{border-collapse:collapse;margin:.5rem 0}\
+table.answers{border-collapse:collapse;margin:.5rem 0;display:block;max-width:100%;overflow-x:auto}\
 table.answers th,table.answers td{border:1px solid #999;padding:.2rem .6rem;text-align:left;vertical-align:top}\
 table.comparison{font-size:.9rem}table.comparison tr.differs{background:#fdf1e6}\
 p.statement{font-size:1.05rem}\

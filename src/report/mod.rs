@@ -2,6 +2,7 @@
 //! for matrices) or JSON (docs/spec.md §3). Stages only produce data.
 
 pub mod bench;
+pub mod blueprint;
 pub mod check;
 pub mod class;
 pub mod csv;

@@ -33,6 +33,16 @@ pub fn exam_title(
     words::of(lang).doc(&title)
 }
 
+/// A question sheet's title: the level in words and the variant (no
+/// topics' codes, no seed: anyone could regenerate the key from it).
+pub fn sheet_title(diff: Difficulty, variant: Option<u32>, lang: Lang) -> String {
+    let title = DocWord::SheetTitle {
+        difficulty: diff.name().to_string(),
+        variant,
+    };
+    words::of(lang).doc(&title)
+}
+
 /// The key's title for an exam title.
 pub fn key_title(title: &str, lang: Lang) -> String {
     words::of(lang).doc(&DocWord::KeyTitle(title.to_string()))
@@ -71,7 +81,12 @@ fn answers(g: &Generated) -> Vec<(String, Val)> {
 
 /// The question sheet and the key bodies.
 pub fn sheets(doc: Doc, exam: &[Generated], st: &Style) -> (String, String) {
+    let total = exam.iter().map(|g| g.scheme.total()).sum();
     let mut q = String::new();
+    for line in [DocWord::NameLine, DocWord::TotalMarks(total)] {
+        q.push_str(&doc.text(&st.doc(line)));
+        q.push_str("\n\n");
+    }
     let mut k = String::new();
     for (i, g) in exam.iter().enumerate() {
         let problem = st.doc(DocWord::Problem);
@@ -126,9 +141,9 @@ pub fn exam_json(title: &str, seed: u64, variant: u32, exam: &[Generated], lang:
 }
 
 /// What `generate --json` prints: the files written, with the seed.
-pub fn written_json(files: &[PathBuf], seed: u64) -> String {
+pub fn written_json(files: &[PathBuf], seed: u64, blueprint: Value) -> String {
     let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
-    let j = json!({ "command": "generate", "seed": seed, "files": names });
+    let j = json!({ "command": "generate", "seed": seed, "files": names, "blueprint": blueprint });
     serde_json::to_string_pretty(&j).unwrap_or_default() + "\n"
 }
 

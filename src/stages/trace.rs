@@ -194,6 +194,15 @@ impl Val {
     pub fn text(s: impl Into<String>) -> Val {
         Val::Text(s.into())
     }
+    /// The numbers of a value: a number, or the numbers of a list (of
+    /// lists), in order; words, maps and nothing give none.
+    pub fn numbers(&self) -> Vec<f64> {
+        match self {
+            Val::Num(n) => vec![n.value],
+            Val::List(items) => items.iter().flat_map(Val::numbers).collect(),
+            _ => vec![],
+        }
+    }
     /// Whether this is a matrix (a list of lists of numbers).
     pub fn is_matrix(&self) -> bool {
         matches!(self, Val::List(rows) if !rows.is_empty() && rows.iter().all(|r| matches!(r, Val::List(_))))

@@ -911,18 +911,9 @@ mod tests {
 
     /// The numbers of `key` in variant `i` of a mistake's results.
     fn nums(code: Code, p: &ProblemIn, i: usize, key: &str) -> Vec<f64> {
-        fn leaves(v: &Val, out: &mut Vec<f64>) {
-            match v {
-                Val::Num(x) => out.push(x.value),
-                Val::List(items) => items.iter().for_each(|x| leaves(x, out)),
-                _ => {}
-            }
-        }
         let trees = code.apply(p).expect("the mistake applies");
         let v = crate::tutor::solution::lookup(&trees[i], key).expect(key);
-        let mut out = Vec::new();
-        leaves(v, &mut out);
-        out
+        v.numbers()
     }
 
     fn close(got: &[f64], want: &[f64]) -> bool {

@@ -590,18 +590,12 @@ impl<'a> Session<'a> {
         let key = &item.key;
         let j = m.judge(key, &toml::Value::String(text.to_string()));
         let mut out = Outcome {
-            key: item.key.clone(),
             given: Some(text.to_string()),
             read: j.read,
             verdict: j.verdict,
             code: j.code,
             note: j.note,
-            expected: item.expected.clone(),
-            follow_through: None,
-            mistakes: vec![],
-            why: None,
-            retry: false,
-            shown: false,
+            ..unanswered(item, "")
         };
         if out.verdict == Verdict::Wrong && matches!(out.note, Msg::CountMismatch(..)) {
             out.verdict = Verdict::Unparseable;
@@ -732,7 +726,8 @@ impl<'a> Session<'a> {
     }
 }
 
-/// A value with no answer: `revealed` or `skipped`.
+/// A value with no answer: `revealed` or `skipped` (and the outcome a
+/// judged answer starts from).
 fn unanswered(item: &Item, code: &'static str) -> Outcome {
     Outcome {
         key: item.key.clone(),
@@ -802,27 +797,16 @@ fn asked_not_answered(v: &Val) -> Val {
 /// sign) that has three or more significant figures and is none of 0, ±1
 /// and the numbers the problem states.
 pub fn leaks(shown: &Val, asked: &Val, stated: &[f64]) -> bool {
-    fn numbers(v: &Val, out: &mut Vec<f64>) {
-        match v {
-            Val::Num(s) => out.push(s.value),
-            Val::List(items) => items.iter().for_each(|x| numbers(x, out)),
-            _ => {}
-        }
-    }
     let same = |a: f64, b: f64| (a.abs() - b.abs()).abs() <= 1e-9 * a.abs().max(b.abs());
     if shown == asked
         || matches!((shown, asked), (Val::List(_), Val::List(_)) if {
-            let (mut a, mut b) = (vec![], vec![]);
-            numbers(shown, &mut a);
-            numbers(asked, &mut b);
+            let (a, b) = (shown.numbers(), asked.numbers());
             a.len() == b.len() && a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= 1e-12 * x.abs().max(1.0))
         })
     {
         return true;
     }
-    let (mut own, mut its) = (vec![], vec![]);
-    numbers(asked, &mut own);
-    numbers(shown, &mut its);
+    let (own, its) = (asked.numbers(), shown.numbers());
     own.iter()
         .filter(|x| figures(**x) >= 3 && !stated.iter().any(|s| same(*s, **x)))
         .any(|x| its.iter().any(|y| same(*x, *y)))

@@ -679,21 +679,6 @@ fn point_inside_step<T: Scalar>(
     });
 }
 
-/// Flattens a nested TOML table into dotted keys.
-fn flatten(prefix: &str, t: &toml::Table, out: &mut Vec<(String, toml::Value)>) {
-    for (k, v) in t {
-        let key = if prefix.is_empty() {
-            k.clone()
-        } else {
-            format!("{prefix}.{k}")
-        };
-        match v {
-            toml::Value::Table(inner) => flatten(&key, inner, out),
-            other => out.push((key, other.clone())),
-        }
-    }
-}
-
 /// Whether a printed value agrees with a computed one: texts equal; numbers
 /// equal to the digits the text wrote (a printed 0.041 agrees with 0.04142),
 /// or to `rel` (relative, at least absolute near zero) when the printed form
@@ -750,7 +735,7 @@ fn written_tolerance(text: &str) -> f64 {
 /// Compares every `[printed]` answer with the computed results.
 fn compare_printed(p: &ProblemIn, result: &[(String, Val)], rel: f64) -> Option<Comparison> {
     let mut flat = Vec::new();
-    flatten("", &p.printed, &mut flat);
+    crate::input::values::dotted("", &toml::Value::Table(p.printed.clone()), &mut flat);
     if flat.is_empty() {
         return None;
     }

@@ -97,3 +97,28 @@ pub fn close_vec(v: &Value, want: &[f64], tol: f64) {
         close(f(x), *w, tol);
     }
 }
+
+/// A key file's answers by their dotted keys, in order: `view.points.A`
+/// with its value (a string, a number or a list of them).
+pub fn key_entries(path: &std::path::Path) -> Vec<(String, toml::Value)> {
+    fn dotted(prefix: &str, v: &toml::Value, out: &mut Vec<(String, toml::Value)>) {
+        match v {
+            toml::Value::Table(t) => {
+                for (k, x) in t {
+                    let key = if prefix.is_empty() {
+                        k.clone()
+                    } else {
+                        format!("{prefix}.{k}")
+                    };
+                    dotted(&key, x, out);
+                }
+            }
+            other => out.push((prefix.to_string(), other.clone())),
+        }
+    }
+    let text = std::fs::read_to_string(path).expect("a key file");
+    let t: toml::Value = toml::from_str(&text).expect("a key file's TOML");
+    let mut out = Vec::new();
+    dotted("", &t, &mut out);
+    out
+}

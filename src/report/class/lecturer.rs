@@ -14,7 +14,7 @@ use crate::report::lang::Lang;
 use crate::report::mistakes::mistake_text;
 use crate::report::{exact_json, value_json, Style};
 use crate::tutor::check::Settings;
-use crate::tutor::class::stats::{Flag, Gap, Stats, StepRef, CODES};
+use crate::tutor::class::stats::{compare, Flag, Gap, Stats, StepRef, CODES};
 use crate::tutor::class::Class;
 use crate::tutor::class::ClassKey;
 use serde_json::{json, Value};
@@ -57,6 +57,15 @@ pub fn write(f: Format, class: &Class, stats: &Stats, settings: &Settings, st: &
         Format::Html => document(Doc::Html, class, stats, settings, st),
         Format::Markdown => document(Doc::Markdown, class, stats, settings, st),
     }
+}
+
+/// A p-value to 4 significant digits (a small one is not rounded to 0).
+fn sig4(x: f64) -> f64 {
+    if x <= 0.0 {
+        return 0.0;
+    }
+    let scale = 10f64.powi(3 - x.log10().floor() as i32);
+    (x * scale).round() / scale
 }
 
 /// A number rounded to 4 decimals for JSON (no float noise in a report).
@@ -107,9 +116,9 @@ pub fn to_json(class: &Class, s: &Stats, settings: &Settings, lang: Lang) -> Val
     })).collect();
     let variants: Vec<Value> = s.variants.iter().map(|v| json!({
         "variant": v.variant, "students": v.students, "facility": v.facility.map(round4),
-        "problems": v.problems.iter().map(|(name, f, gap)| json!({
-            "problem": name, "facility": f.map(round4),
-            "flag": gap.map(|g| match g { Gap::Harder => "harder", Gap::Easier => "easier" }),
+        "problems": v.problems.iter().map(|c| json!({
+            "problem": c.problem, "facility": c.facility.map(round4), "p_value": c.p_value.map(sig4),
+            "flag": c.gap.map(|g| match g { Gap::Harder => "harder", Gap::Easier => "easier" }),
         })).collect::<Vec<_>>(),
     })).collect();
     json!({
@@ -124,6 +133,15 @@ pub fn to_json(class: &Class, s: &Stats, settings: &Settings, lang: Lang) -> Val
         "histogram": s.histogram.iter().map(|b| json!({ "from": b.from, "to": b.to, "count": b.count })).collect::<Vec<_>>(),
         "problems": s.problems.iter().map(|p| json!({ "problem": p.name, "title": p.title, "students": p.students, "facility": p.facility.map(round4) })).collect::<Vec<_>>(),
         "variants": variants,
+        "variant_test": { "min_students": compare::MIN_STUDENTS, "level": compare::LEVEL },
+        "roster": super::roster_json(class),
+        "duplicates": class.sheets.iter().filter_map(|sh| sh.duplicate.as_ref().map(|(kept, why)| json!({
+            "student": sh.who, "file": sh.file.display().to_string(), "kept": kept.display().to_string(), "same": why.code(),
+        }))).collect::<Vec<_>>(),
+        "fits": class.marked().filter_map(|sh| sh.fits.map(|f| json!({
+            "student": sh.who, "file": sh.file.display().to_string(), "variant": sh.variant,
+            "fits_variant": f.variant, "there": round4(f.there), "own": round4(f.own),
+        }))).collect::<Vec<_>>(),
         "not_marked": class.sheets.iter().filter_map(|sh| sh.outcome.as_ref().err().map(|e| json!({
             "student": sh.who, "file": sh.file.display().to_string(),
             "error": { "field": e.field, "message": crate::report::words::words(&e.message, lang) },

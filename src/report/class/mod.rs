@@ -137,10 +137,104 @@ pub fn table(class: &Class, lang: Lang) -> String {
             out.push_str(&format!("{}: {}\n", s.file.display(), note_words(n, lang)));
         }
     }
+    for s in &class.sheets {
+        for said in [duplicate_words(s, lang), fits_words(s, lang)]
+            .into_iter()
+            .flatten()
+        {
+            out.push_str(&format!("{}: {said}\n", s.file.display()));
+        }
+    }
     for (f, why) in &class.skipped {
         out.push_str(&format!("{}: {}\n", f.display(), skip_words(*why, lang)));
     }
+    for (head, names) in roster_lists(class, lang) {
+        out.push_str(&format!("{head} {}\n", names.join(", ")));
+    }
     out
+}
+
+/// The class list's two lists, each with its heading, when not empty: who
+/// on it handed nothing in (`Adi Nugroho (NIM 2106001)`), and the answer
+/// files of no one on it (`Budi (budi.toml)`); or the sentence that
+/// everyone handed in, with no list.
+pub fn roster_lists(class: &Class, lang: Lang) -> Vec<(String, Vec<String>)> {
+    let Some(r) = &class.roster else {
+        return vec![];
+    };
+    let w = words::of(lang);
+    if r.missing.is_empty() && r.not_listed.is_empty() {
+        return vec![(w.class(&C::RosterAll(r.listed.len())), vec![])];
+    }
+    let mut out = Vec::new();
+    if !r.missing.is_empty() {
+        let names = (r.missing.iter())
+            .map(|l| match &l.nim {
+                Some(n) => format!("{} (NIM {n})", l.name),
+                None => l.name.clone(),
+            })
+            .collect();
+        out.push((w.class(&C::RosterMissing(r.missing.len())), names));
+    }
+    if !r.not_listed.is_empty() {
+        let files = (r.not_listed.iter())
+            .map(|(who, f)| format!("{who} ({})", f.display()))
+            .collect();
+        out.push((w.class(&C::RosterNotListed(r.not_listed.len())), files));
+    }
+    out
+}
+
+/// The class list as JSON (`roster`): `listed` (how many), `missing`
+/// (`name`, `nim`), `not_listed` (`student`, `file`); null without one.
+pub fn roster_json(class: &Class) -> Value {
+    let Some(r) = &class.roster else {
+        return Value::Null;
+    };
+    json!({
+        "listed": r.listed.len(),
+        "missing": r.missing.iter().map(|l| json!({ "name": l.name, "nim": l.nim })).collect::<Vec<_>>(),
+        "not_listed": r.not_listed.iter().map(|(who, f)| json!({ "student": who, "file": f.display().to_string() })).collect::<Vec<_>>(),
+    })
+}
+
+/// `the same student as adi (1).toml (same name): not counted`, for a
+/// sheet that is a duplicate.
+pub fn duplicate_words(s: &Sheet, lang: Lang) -> Option<String> {
+    let (kept, why) = s.duplicate.as_ref()?;
+    let w = words::of(lang);
+    let kept = kept.file_name().map_or_else(
+        || kept.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    Some(w.class(&C::DuplicateOf {
+        kept,
+        why: w.same(*why).to_string(),
+    }))
+}
+
+/// `these answers fit variant 4's key (…)`, for a sheet that does.
+pub fn fits_words(s: &Sheet, lang: Lang) -> Option<String> {
+    let f = s.fits?;
+    Some(words::of(lang).class(&C::Fits {
+        variant: f.variant,
+        there: f.there * 100.0,
+        own: f.own * 100.0,
+    }))
+}
+
+/// A sheet's duplicate and fits as JSON fields (`duplicate_of`, `fits`).
+fn checks_json(s: &Sheet, j: &mut Value) {
+    if let Some((kept, why)) = &s.duplicate {
+        j["duplicate_of"] = json!({ "file": kept.display().to_string(), "same": why.code() });
+    }
+    if let Some(f) = s.fits {
+        j["fits"] = json!({ "variant": f.variant, "there": round4(f.there), "own": round4(f.own) });
+    }
+}
+
+fn round4(x: f64) -> f64 {
+    (x * 1e4).round() / 1e4
 }
 
 /// The CSV columns (docs/spec.md §5); an exam's CSV has `variant` after `file`.
@@ -201,10 +295,17 @@ pub fn json(class: &Class, lang: Lang) -> Value {
         "title": class.title,
         "students": class.sheets.iter().map(|s| sheet_json(s, class.exam, lang)).collect::<Vec<_>>(),
         "skipped": class.skipped.iter().map(|(f, why)| json!({ "file": f.display().to_string(), "reason": skip_words(*why, lang) })).collect::<Vec<_>>(),
+        "roster": roster_json(class),
     })
 }
 
 fn sheet_json(s: &Sheet, exam: bool, lang: Lang) -> Value {
+    let mut j = sheet_marks_json(s, exam, lang);
+    checks_json(s, &mut j);
+    j
+}
+
+fn sheet_marks_json(s: &Sheet, exam: bool, lang: Lang) -> Value {
     let file = s.file.display().to_string();
     match (&s.outcome, exam) {
         (Ok(ms), false) if ms.len() == 1 => {

@@ -14,7 +14,7 @@ use crate::report::words::report::dec;
 use crate::report::Style;
 use crate::tutor::check::Settings;
 use crate::tutor::check::Verdict;
-use crate::tutor::class::stats::{Gap, MistakeStats, Stats, StepRef};
+use crate::tutor::class::stats::{compare, Gap, MistakeStats, Stats, StepRef, VariantProblem};
 use crate::tutor::class::Class;
 
 /// A share or an index with two decimals, in the language's decimal mark,
@@ -133,6 +133,9 @@ pub(super) fn document(
         String::new()
     };
     body.push_str(&summary(doc, class, s, settings, lang));
+    body.push_str(&roster_section(doc, class, lang));
+    body.push_str(&duplicates_section(doc, class, lang));
+    body.push_str(&fits_section(doc, class, lang));
     body.push_str(&keys_section(doc, s, lang));
     body.push_str(&exam_section(doc, s, lang));
     body.push_str(&mistakes_section(doc, s, st));
@@ -170,6 +173,66 @@ fn summary(doc: Doc, class: &Class, s: &Stats, settings: &Settings, lang: Lang) 
         out.push_str(&list(doc, &failed));
     }
     out
+}
+
+/// The class list against the files, with `--roster`.
+fn roster_section(doc: Doc, class: &Class, lang: Lang) -> String {
+    let lists = super::roster_lists(class, lang);
+    if lists.is_empty() {
+        return String::new();
+    }
+    let mut out = doc.heading(1, &w(lang, C::RosterHeading));
+    for (head, names) in lists {
+        out.push_str(&para(doc, &esc(doc, &head)));
+        if !names.is_empty() {
+            let items: Vec<String> = names.iter().map(|n| esc(doc, n)).collect();
+            out.push_str(&list(doc, &items));
+        }
+    }
+    out
+}
+
+/// The files that are the same student as another, when there are any:
+/// the rule, and each with the file kept.
+fn duplicates_section(doc: Doc, class: &Class, lang: Lang) -> String {
+    let items: Vec<String> = (class.sheets.iter())
+        .filter_map(|sh| {
+            let said = super::duplicate_words(sh, lang)?;
+            Some(esc(
+                doc,
+                &format!("{} ({}): {said}", sh.who, sh.file.display()),
+            ))
+        })
+        .collect();
+    if items.is_empty() {
+        return String::new();
+    }
+    let mut out = doc.heading(1, &w(lang, C::DuplicatesHeading));
+    out.push_str(&list(doc, &items));
+    out + &para(doc, &esc(doc, &w(lang, C::DuplicatesNote)))
+}
+
+/// The sheets whose answers fit another variant's key, when there are any.
+fn fits_section(doc: Doc, class: &Class, lang: Lang) -> String {
+    let items: Vec<String> = (class.sheets.iter())
+        .filter(|sh| sh.duplicate.is_none())
+        .filter_map(|sh| {
+            let said = super::fits_words(sh, lang)?;
+            let v = sh.variant.map_or(String::new(), |v| {
+                format!(", {} {v}", words::of(lang).doc(&DocWord::Variant))
+            });
+            Some(esc(
+                doc,
+                &format!("{} ({}{v}): {said}", sh.who, sh.file.display()),
+            ))
+        })
+        .collect();
+    if items.is_empty() {
+        return String::new();
+    }
+    let mut out = doc.heading(1, &w(lang, C::FitsHeading));
+    out.push_str(&list(doc, &items));
+    out + &para(doc, &esc(doc, &w(lang, C::FitsNote)))
 }
 
 /// The key table and the definitions of its indices.
@@ -249,8 +312,15 @@ fn exam_section(doc: Doc, s: &Stats, lang: Lang) -> String {
         return out;
     }
     out.push_str(&doc.heading(1, &w(lang, C::Variants)));
-    let mut head = vec![variant(doc, lang)];
-    head.extend(header(doc, lang, [C::Students, C::WholeExam]));
+    if let Some((min, max)) = s.too_few_per_variant() {
+        let need = compare::MIN_STUDENTS;
+        out.push_str(&para(
+            doc,
+            &esc(doc, &w(lang, C::TooFewPerVariant { min, max, need })),
+        ));
+    }
+    let mut head = vec![variant(doc, lang), "n".to_string()];
+    head.extend(header(doc, lang, [C::WholeExam]));
     head.extend(s.problems.iter().map(|p| esc(doc, &p.name)));
     let rows: Vec<Vec<String>> = s
         .variants
@@ -261,20 +331,40 @@ fn exam_section(doc: Doc, s: &Stats, lang: Lang) -> String {
                 v.students.to_string(),
                 num(v.facility, lang),
             ];
-            row.extend(v.problems.iter().map(|(_, f, gap)| {
-                let mark = match gap {
-                    Some(Gap::Harder) => format!(" ▼ {}", w(lang, C::Harder)),
-                    Some(Gap::Easier) => format!(" ▲ {}", w(lang, C::Easier)),
-                    None => String::new(),
-                };
-                format!("{}{}", num(*f, lang), esc(doc, &mark))
-            }));
+            row.extend(v.problems.iter().map(|c| variant_cell(doc, c, lang)));
             row
         })
         .collect();
     out.push_str(&table(doc, &head, &rows));
     out.push_str(&para(doc, &esc(doc, &w(lang, C::VariantsNote))));
     out
+}
+
+/// A variant's facility on a problem, and when flagged, which way and the
+/// corrected p: `0.20 ▼ harder (p = 0.003)`.
+fn variant_cell(doc: Doc, c: &VariantProblem, lang: Lang) -> String {
+    let mark = match (c.gap, c.p_value) {
+        (Some(g), Some(p)) => {
+            let (arrow, word) = match g {
+                Gap::Harder => ("▼", C::Harder),
+                Gap::Easier => ("▲", C::Easier),
+            };
+            format!(" {arrow} {} ({})", w(lang, word), p_words(p, lang))
+        }
+        _ => String::new(),
+    };
+    format!("{}{}", num(c.facility, lang), esc(doc, &mark))
+}
+
+/// A p-value as a report writes it: `p = 0.012`, or `p < 0.001`, in the
+/// language's decimal mark.
+fn p_words(p: f64, lang: Lang) -> String {
+    let nums = crate::report::words::of(lang).nums();
+    if p < 0.001 {
+        format!("p < {}", nums.number("0.001"))
+    } else {
+        format!("p = {}", nums.number(&format!("{p:.3}")))
+    }
 }
 
 /// `step 16 of the worked solution: Window edges …` (an exam's:
@@ -434,12 +524,13 @@ fn students_section(doc: Doc, class: &Class, s: &Stats, lang: Lang) -> String {
             }
             let score = dec(sh.score().unwrap_or(0.0), 4, words::of(lang).nums());
             row.push(format!("{score}/{}", sh.total().unwrap_or(0)));
-            let codes: Vec<&str> = s
+            let mut codes: Vec<String> = s
                 .mistakes
                 .iter()
                 .filter(|m| m.students.contains(&sh.who))
-                .map(|m| m.mistake.as_str())
+                .map(|m| m.mistake.as_str().to_string())
                 .collect();
+            codes.extend(super::fits_words(sh, lang));
             row.push(esc(doc, &codes.join(" ")));
             row
         })

@@ -194,12 +194,13 @@ fn bx(p: &Placed) -> Bx {
 }
 
 /// The short form of a label: the one it was given, else, for a label
-/// `NAME = value` (or `NAME ≈ …`, `NAME: …`) of the mark NAME, its name.
+/// `NAME = value` (or `NAME ≈ …`, `NAME: …`, `NAME (x, y, z)` as Peye and
+/// Pref are labelled) of the mark NAME, its name.
 fn brief(l: &super::Label) -> Option<&str> {
     if let Some(s) = &l.short {
         return Some(s);
     }
-    [" = ", " ≈ ", ": "]
+    [" = ", " ≈ ", ": ", " ("]
         .iter()
         .filter_map(|sep| l.text.split_once(sep).map(|(name, _)| name))
         .find(|name| *name == l.of)
@@ -214,6 +215,22 @@ fn named(l: &super::Label, by_name: &HashMap<&str, usize>) -> Vec<usize> {
     pieces.pop();
     let mut own: Vec<usize> = by_name.get(l.of.as_str()).copied().into_iter().collect();
     own.extend(pieces.iter().filter_map(|p| by_name.get(p)).copied());
+    own
+}
+
+/// The marks a label may stand near, `own`, with every mark whose dot or
+/// tip lies on the label's own point (within 1 px): two marks drawn at one
+/// place (Pref and a point Q both at the origin, a segment's two
+/// intersections at a corner of the box) are one place on the page, and
+/// each label stands beside it, as near the other mark as its own.
+fn with_coincident(g: &Geom, mut own: Vec<usize>, sc: &Scene) -> Vec<usize> {
+    if let Geom::Point(p) = g {
+        for (q, k) in &sc.spots {
+            if (q.0 - p.0).hypot(q.1 - p.1) <= 1.0 && !own.contains(k) {
+                own.push(*k);
+            }
+        }
+    }
     own
 }
 
@@ -252,7 +269,11 @@ fn area(sc: &Scene) -> Bx {
 /// still meets an obstacle and has a short form ([`brief`]) is written
 /// short, its whole text going to a note, and left out when even that
 /// cannot stand clear (with a note, unless its short form is empty: the
-/// figure says it elsewhere). Only the first [`MAX_LABELS`] are placed;
+/// figure says it elsewhere, or its text is only its mark's name: such a
+/// note says nothing); one with no short form is tried whole once more
+/// in the last round, among the others written short. A label stands as
+/// near a mark drawn on its own point as its own ([`with_coincident`]).
+/// Only the first [`MAX_LABELS`] are placed;
 /// the texts of the others are listed in the notes ([`pack`]). Returns
 /// the labels, those notes and the work done.
 fn place_all(
@@ -272,13 +293,17 @@ fn place_all(
             (g, named(l, by_name), l.near.as_ref().map(at))
         })
         .collect();
+    let sc = scene(f, at);
+    let jobs: Vec<(Geom, Vec<usize>, Option<Pt>)> = jobs
+        .into_iter()
+        .map(|(g, own, near)| (g.clone(), with_coincident(&g, own, &sc), near))
+        .collect();
     let job = |k: usize| Job {
         geom: &jobs[k].0,
         toward: labels[k].toward,
         near: jobs[k].2,
         own: &jobs[k].1,
     };
-    let sc = scene(f, at);
     let room = area(&sc);
     let mut obs = Obstacles::new(sc, shown, room);
     let mut placed: Vec<(Placed, f64)> = Vec::new();
@@ -293,8 +318,11 @@ fn place_all(
             if placed[i].1 < 60.0 {
                 continue;
             }
+            // The last round writes a label short; one with no short
+            // form (a bare name: the inset's C″) is tried once more
+            // whole, now that the others stand where they end.
             let text = match (round, brief(l)) {
-                (0 | 1, _) => &l.text,
+                (0 | 1, _) | (_, None) => &l.text,
                 (_, Some(b)) if !b.is_empty() => b,
                 _ => {
                     obs.set_box(i, None);
@@ -305,23 +333,23 @@ fn place_all(
             let (p, c) = place(text, text_width(text), &job(i), &mut obs);
             if c < placed[i].1 - 1e-9 || round == 2 {
                 placed[i] = (p, c);
-                short[i] = round == 2;
+                short[i] = round == 2 && *text != l.text;
             }
             let stays = round < 2 || placed[i].1 < 60.0;
             obs.set_box(i, stays.then(|| bx(&placed[i].0)));
         }
     }
     // A label written short, or left out because even short it cannot
-    // stand clear, has its whole text in a note. In a panel of more than
-    // MAX_LABELS labels these notes and the texts of the labels beyond
-    // are listed together, packed, leaving out a text that is only its
-    // mark's name (it says nothing the panel does not).
+    // stand clear, has its whole text in a note, unless that text is only
+    // its mark's name (it says nothing the panel does not). In a panel of
+    // more than MAX_LABELS labels these notes and the texts of the labels
+    // beyond are listed together, packed, likewise.
     let crowded = labels.len() > MAX_LABELS;
     let mut notes = Vec::new();
     let mut out = Vec::new();
     for (i, (p, c)) in placed.into_iter().enumerate() {
         let said_elsewhere = labels[i].short.as_deref() == Some("");
-        let bare = crowded && labels[i].text == labels[i].of;
+        let bare = labels[i].text == labels[i].of;
         if !bare && (short[i] || (c >= 60.0 && !said_elsewhere)) {
             notes.push(labels[i].text.clone());
         }

@@ -283,7 +283,16 @@ mod tests {
         for t in [Trivial::Accept, Trivial::Reject, Trivial::Clip] {
             v.push(Msg::TrivialNote(t));
         }
-        v.push(Msg::ErrFewDistinct("window".into(), "easy".into(), 20));
+        for all in [true, false] {
+            v.push(Msg::ErrFewDistinct {
+                topic: "window".into(),
+                level: "easy".into(),
+                problem: 2,
+                found: 20,
+                asked: 40,
+                all,
+            });
+        }
         v.push(Msg::ErrHtmlCommand);
         v.extend(figure_messages());
         v.extend(drawn_messages());
@@ -610,7 +619,7 @@ mod tests {
             | DrawnTitle(_)
             | Pixel(_)
             | Statement(_)
-            | ErrFewDistinct(..)
+            | ErrFewDistinct { .. }
             | ErrHtmlCommand
             | Figure(_) => {}
         }

@@ -5,11 +5,12 @@
 //! number written in a language's style) are plain functions here.
 
 use crate::msg::{
-    BenchWord, CheckWord, ClassWord, CliWord, DocWord, PracticeWord, QuizWord, StatWord,
+    BenchWord, CheckWord, ClassWord, CliWord, DocWord, PlanWord, PracticeWord, QuizWord, StatWord,
 };
 use crate::num::format::fmt_dec;
 use crate::report::lang::NumStyle;
 use crate::tutor::check::Verdict;
+use crate::tutor::class::same::Same;
 use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
 use crate::tutor::diagnose::Code;
@@ -25,6 +26,8 @@ pub trait ReportWords {
     fn skip(&self, s: Skip) -> &'static str;
     /// A flag on a key of the class report.
     fn flag(&self, f: Flag) -> &'static str;
+    /// Why two answer files are the same student.
+    fn same(&self, s: Same) -> &'static str;
     /// A verdict on an answer (also a column of the class's tables).
     fn verdict(&self, v: Verdict) -> &'static str;
     /// A word of a marked answer file.
@@ -39,6 +42,8 @@ pub trait ReportWords {
     fn stat(&self, w: StatWord) -> String;
     /// A word of `grafika bench`'s table.
     fn bench(&self, w: BenchWord) -> &'static str;
+    /// A word of an exam's blueprint.
+    fn plan(&self, w: &PlanWord) -> String;
     /// What the student did, by a mistake of the catalog.
     fn mistake(&self, c: Code) -> &'static str;
     /// A word of `grafika practice`.
@@ -59,6 +64,20 @@ pub fn percent(points: f64, total: u32) -> f64 {
     match total {
         0 => 100.0,
         t => (points / f64::from(t) * 1000.0).round() / 10.0,
+    }
+}
+
+/// A lighting model's name as the text writes it, by its file name:
+/// `Phong`, `Blinn–Phong`, `Lambert`.
+pub fn model_name(file: &str) -> &str {
+    match file {
+        "phong" => "Phong",
+        "blinn" => "Blinn–Phong",
+        "lambert" => "Lambert",
+        "ambient" => "ambient",
+        "diffuse" => "diffuse",
+        "specular" => "specular",
+        other => other,
     }
 }
 
@@ -88,6 +107,7 @@ mod tests {
     use crate::report::lang::Lang;
     use crate::report::words::of;
     use crate::tutor::check::Verdict;
+    use crate::tutor::class::same::Same;
     use crate::tutor::class::stats::Flag;
     use crate::tutor::class::{Note, Skip};
 
@@ -103,6 +123,7 @@ mod tests {
         v.extend(every_practice().iter().map(|k| w.practice(k)));
         v.extend(every_stat().map(|k| w.stat(k)));
         v.extend(every_bench().map(|k| w.bench(k).to_string()));
+        v.extend(every_plan().iter().map(|k| w.plan(k)));
         v.extend(every_cli().map(|k| w.cli(k).to_string()));
         let verdicts = [
             Verdict::Correct,
@@ -114,6 +135,7 @@ mod tests {
         v.extend(verdicts.map(|k| w.verdict(k).to_string()));
         v.extend([Note::Empty, Note::NotMarked].map(|k| w.note(k).to_string()));
         v.extend([Skip::Subdirectory, Skip::NotToml].map(|k| w.skip(k).to_string()));
+        v.extend([Same::Name, Same::Nim, Same::Answers].map(|k| w.same(k).to_string()));
         let flags = [Flag::VeryEasy, Flag::VeryHard, Flag::Negative];
         v.extend(flags.map(|k| w.flag(k).to_string()));
         v
@@ -160,6 +182,33 @@ mod tests {
             C::NotMarked,
             C::Definitions,
             C::VariantsNote,
+            C::RosterHeading,
+            C::RosterMissing(2),
+            C::RosterNotListed(1),
+            C::RosterAll(40),
+            C::DuplicatesHeading,
+            C::DuplicatesNote,
+            C::DuplicateOf {
+                kept: "adi (1).toml".into(),
+                why: "same name".into(),
+            },
+            C::FitsHeading,
+            C::FitsNote,
+            C::Fits {
+                variant: 4,
+                there: 95.0,
+                own: 4.5,
+            },
+            C::TooFewPerVariant {
+                min: 1,
+                max: 1,
+                need: 5,
+            },
+            C::TooFewPerVariant {
+                min: 1,
+                max: 3,
+                need: 5,
+            },
             C::NoMistake,
             C::WrongNote,
             C::NoneFound,
@@ -252,6 +301,16 @@ mod tests {
             wrote(1),
             wrote(14),
             D::More(2),
+            D::SheetTitle {
+                difficulty: "hard".into(),
+                variant: Some(3),
+            },
+            D::SheetTitle {
+                difficulty: "easy".into(),
+                variant: None,
+            },
+            D::NameLine,
+            D::TotalMarks(24),
         ]
     }
 
@@ -376,12 +435,65 @@ mod tests {
         ]
     }
 
+    fn every_plan() -> Vec<crate::msg::PlanWord> {
+        use crate::msg::PlanWord as N;
+        let clip = |status: &str| N::Clip {
+            status: status.into(),
+            bits: [0, 2],
+            tried: 2,
+            kept: 1,
+        };
+        let mut v = vec![
+            N::Title,
+            N::Heading {
+                variants: 40,
+                total: 24,
+            },
+            N::Topic,
+            N::Case,
+            N::Numbers,
+            N::Marks,
+            N::Statements,
+            N::Points(2),
+            N::Model("blinn".into()),
+            clip("clipped"),
+            clip("accepted"),
+            clip("rejected"),
+            N::OfVariants(39, 40),
+            N::MarksVary,
+            N::Distinct(40, 40),
+            N::Spread,
+        ];
+        let classes = ["rational", "one_surd", "several_surds", "no_closed_form"];
+        v.extend(classes.map(|c| N::Class(c.into())));
+        for k in &v {
+            match k {
+                N::Title
+                | N::Heading { .. }
+                | N::Topic
+                | N::Case
+                | N::Numbers
+                | N::Marks
+                | N::Statements
+                | N::Points(_)
+                | N::Model(_)
+                | N::Clip { .. }
+                | N::Class(_)
+                | N::OfVariants(..)
+                | N::MarksVary
+                | N::Distinct(..)
+                | N::Spread => {}
+            }
+        }
+        v
+    }
+
     fn every_cli() -> [L; 6] {
         [
             L::WorkedSolution,
             L::Measuring,
             L::Frames,
-            L::Variants,
+            L::Problems,
             L::Arguments,
             L::TheText,
         ]
@@ -419,6 +531,17 @@ mod tests {
             | NotMarked
             | Definitions
             | VariantsNote
+            | TooFewPerVariant { .. }
+            | RosterHeading
+            | RosterMissing(_)
+            | RosterNotListed(_)
+            | RosterAll(_)
+            | DuplicatesHeading
+            | DuplicatesNote
+            | DuplicateOf { .. }
+            | FitsHeading
+            | FitsNote
+            | Fits { .. }
             | NoMistake
             | WrongNote
             | NoneFound
@@ -481,7 +604,10 @@ mod tests {
             | D::Marks(_)
             | D::AnswerKey
             | D::Wrote { .. }
-            | D::More(_) => {}
+            | D::More(_)
+            | D::SheetTitle { .. }
+            | D::NameLine
+            | D::TotalMarks(_) => {}
         }
         match q {
             Q::Instructions { .. }
@@ -574,7 +700,7 @@ mod tests {
             L::WorkedSolution
             | L::Measuring
             | L::Frames
-            | L::Variants
+            | L::Problems
             | L::Arguments
             | L::TheText => {}
         }

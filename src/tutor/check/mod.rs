@@ -350,21 +350,10 @@ pub fn answers_from_table(t: &toml::Table) -> (Option<String>, Answers) {
     for (k, v) in t {
         match (k.as_str(), v) {
             ("student", toml::Value::String(s)) => student = Some(shown_name(s)),
-            _ => flatten(k, v, &mut out),
+            _ => crate::input::values::dotted(k, v, &mut out),
         }
     }
     (student, out)
-}
-
-fn flatten(key: &str, v: &toml::Value, out: &mut Vec<(String, toml::Value)>) {
-    match v {
-        toml::Value::Table(t) => {
-            for (k, x) in t {
-                flatten(&format!("{key}.{k}"), x, out);
-            }
-        }
-        other => out.push((key.to_string(), other.clone())),
-    }
 }
 
 /// Reads an answer file (at most [`crate::input::MAX_FILE`] bytes, refused

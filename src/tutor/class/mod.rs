@@ -8,7 +8,10 @@
 //! sheets marked.
 
 pub mod exam;
+pub mod fits;
 pub mod moodle;
+pub mod roster;
+pub mod same;
 pub mod stats;
 
 use crate::error::{Error, Result};
@@ -137,6 +140,15 @@ pub struct Sheet {
     pub outcome: Result<Vec<(String, Marking)>>,
     /// What was done with an unusual file.
     pub note: Option<Note>,
+    /// Who the file says it is (its name, `nim`, answers as typed), to
+    /// find the same student twice ([`same`]).
+    pub identity: same::Identity,
+    /// The file kept when this one is the same student as another, and
+    /// why: then this one is not counted.
+    pub duplicate: Option<(PathBuf, same::Same)>,
+    /// Another variant whose key the answers fit far better than their
+    /// own ([`fits`]).
+    pub fits: Option<fits::Fits>,
 }
 
 impl Sheet {
@@ -181,12 +193,14 @@ pub struct Class {
     pub sheets: Vec<Sheet>,
     /// Entries of the folder not read, with the reason.
     pub skipped: Skipped,
+    /// The class list set against the files (`--roster`).
+    pub roster: Option<roster::Roster>,
 }
 
 impl Class {
-    /// The sheets marked (the statistics count these).
+    /// The sheets marked, each student once (the statistics count these).
     pub fn marked(&self) -> impl Iterator<Item = &Sheet> {
-        self.sheets.iter().filter(|s| s.outcome.is_ok())
+        (self.sheets.iter()).filter(|s| s.outcome.is_ok() && s.duplicate.is_none())
     }
 }
 
@@ -208,15 +222,18 @@ fn markers(paper: &Paper, settings: Settings) -> Markers {
 pub fn mark_dir(paper: &Paper, dir: &Path, settings: Settings) -> Result<Class> {
     let (files, skipped) = answer_files(dir)?;
     let markers = markers(paper, settings);
-    let sheets = files
+    let mut sheets: Vec<Sheet> = files
         .iter()
         .map(|f| mark_with(paper, &markers, f))
         .collect();
+    same::mark_duplicates(&mut sheets);
+    fits::mark_fits(paper, &markers, &mut sheets);
     Ok(Class {
         title: paper.title.clone(),
         exam: paper.exam,
         sheets,
         skipped,
+        roster: None,
     })
 }
 
@@ -227,15 +244,18 @@ pub fn mark_file(paper: &Paper, f: &Path, settings: Settings) -> Sheet {
 }
 
 fn mark_with(paper: &Paper, markers: &Markers, f: &Path) -> Sheet {
-    let read = check::read_answers(f);
+    let read = check::read_answers(f).map(|(s, answers)| {
+        let (nim, answers): (Answers, Answers) = answers.into_iter().partition(|(k, _)| k == "nim");
+        (s, answers, nim.into_iter().next().map(|(_, v)| v))
+    });
+    let stem = (f.file_stem()).map_or_else(String::new, |s| s.to_string_lossy().into_owned());
     let who = match &read {
-        Ok((Some(s), _)) => s.clone(),
-        _ => f
-            .file_stem()
-            .map(|s| check::shown_name(&s.to_string_lossy()))
-            .unwrap_or_default(),
+        Ok((Some(s), _, _)) => s.clone(),
+        _ => check::shown_name(&stem),
     };
-    mark_read(paper, markers, f, who, read)
+    let identity = identity(&read, &stem);
+    let read = read.map(|(s, answers, _)| (s, answers));
+    mark_read(paper, markers, f, (who, identity), read)
 }
 
 /// Marks answers given in memory (a Moodle quiz's attempts, [`moodle`]),
@@ -249,16 +269,21 @@ pub fn mark_given(
     given
         .map(|(f, who, answers)| {
             let who = check::shown_name(&who);
-            mark_read(paper, &markers, &f, who, Ok((None, answers)))
+            let read = Ok((Some(who.clone()), answers, None));
+            let identity = identity(&read, &who);
+            let read = read.map(|(s, answers, _)| (s, answers));
+            mark_read(paper, &markers, &f, (who, identity), read)
         })
         .collect()
 }
 
+/// Marks answers read (from a file or given), for the student `who`
+/// with the identity that finds them twice.
 fn mark_read(
     paper: &Paper,
     markers: &Markers,
     f: &Path,
-    who: String,
+    (who, identity): (String, same::Identity),
     read: Result<(Option<String>, Answers)>,
 ) -> Sheet {
     let empty = matches!(&read, Ok((_, answers)) if answers.is_empty());
@@ -285,6 +310,35 @@ fn mark_read(
         variant,
         outcome,
         note,
+        identity,
+        duplicate: None,
+        fits: None,
+    }
+}
+
+/// Who a file says it is: its `student` (else its file's name without a
+/// copy's ending), its `nim`, its answers as typed.
+fn identity(
+    read: &Result<(Option<String>, Answers, Option<toml::Value>)>,
+    stem: &str,
+) -> same::Identity {
+    let Ok((student, answers, nim)) = read else {
+        return same::Identity {
+            name: same::name_key(same::without_copy(stem)),
+            ..Default::default()
+        };
+    };
+    let nim = nim.as_ref().map(|v| match v {
+        toml::Value::String(s) => s.split_whitespace().collect::<String>(),
+        other => other.to_string(),
+    });
+    let mut typed: Vec<String> = answers.iter().map(|(k, v)| format!("{k}={v}")).collect();
+    typed.sort();
+    same::Identity {
+        name: same::name_key(student.as_deref().unwrap_or(same::without_copy(stem))),
+        declared: student.is_some(),
+        nim: nim.filter(|n| !n.is_empty()),
+        answers: typed.join("\n"),
     }
 }
 
@@ -297,9 +351,15 @@ fn split(paper: &Paper, answers: &Answers) -> Result<(usize, Vec<Answers>)> {
         return Ok((1, vec![answers.clone()]));
     }
     let v = exam::variant_of(answers, paper.variants.len())?;
+    Ok((v, split_as(paper, answers, v)?))
+}
+
+/// An exam file's answers to each problem of variant `v` (1-based), by the
+/// names of its tables, whatever variant it says.
+fn split_as(paper: &Paper, answers: &Answers, v: usize) -> Result<Vec<Answers>> {
     let problems = &paper.variants[v - 1];
     let mut parts: Vec<Answers> = vec![Vec::new(); problems.len()];
-    for (k, val) in answers.iter().filter(|(k, _)| k != "variant") {
+    for (k, val) in (answers.iter()).filter(|(k, _)| k != "variant" && k != "nim") {
         let Some((i, rest)) = of_problem(k).filter(|(i, _)| *i < problems.len()) else {
             let names: Vec<&str> = problems.iter().map(|p| p.name.as_str()).collect();
             return Err(Error::why(
@@ -309,7 +369,7 @@ fn split(paper: &Paper, answers: &Answers) -> Result<(usize, Vec<Answers>)> {
         };
         parts[i].push((rest.to_string(), val.clone()));
     }
-    Ok((v, parts))
+    Ok(parts)
 }
 
 /// Entries of a folder not read, with the reason.

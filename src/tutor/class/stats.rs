@@ -29,9 +29,11 @@
 //!
 //! In an exam every student answers one variant; a key (`problem-01.view.n`)
 //! is counted over the students whose variant asks it, S is the student's
-//! whole exam, and a variant whose facility on a problem lies more than
-//! [`VARIANT_GAP`] below the median of the other variants' facilities on it
-//! is flagged harder than its siblings (above it: easier).
+//! whole exam, and a variant is flagged harder (or easier) on a problem than
+//! the rest of the class only with enough students to tell
+//! ([`compare`]: at least 5 students on it and in the rest, a
+//! two-proportion z-test of its facility against the rest's, p < 0.05
+//! after Holm's correction over the problem's variants).
 
 use super::{Class, ClassKey, Paper, Sheet};
 use crate::msg::Msg;
@@ -43,6 +45,8 @@ use crate::tutor::key::Key;
 use crate::tutor::keys::ordered_keys;
 use crate::tutor::solve;
 
+pub mod compare;
+pub mod made;
 mod wrong;
 
 /// Above this facility a key is very easy.
@@ -51,9 +55,6 @@ pub const VERY_EASY: f64 = 0.9;
 pub const VERY_HARD: f64 = 0.2;
 /// The share of the class in each of the upper and lower groups.
 pub const GROUP_SHARE: f64 = 0.27;
-/// How far a variant's facility on a problem may lie from its siblings'
-/// mean before it is flagged.
-pub const VARIANT_GAP: f64 = 0.2;
 /// The number of bins of the score histogram (10 % of the marks each).
 pub const BINS: usize = 10;
 
@@ -131,7 +132,7 @@ pub struct MistakeStats {
     pub keys: Vec<ClassKey>,
     /// Other mistakes that give the same values for some of these answers.
     pub also: Vec<Code>,
-    /// The step where it is made: the step of its first key.
+    /// The step where it is made ([`made`]; else the step of its first key).
     pub step: Option<StepRef>,
 }
 
@@ -185,13 +186,29 @@ pub struct ProblemStats {
     pub facility: Option<f64>,
 }
 
-/// A variant's facility on a problem set against its siblings'.
+/// A variant's facility on a problem set against the rest of the class's
+/// ([`compare`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Gap {
-    /// More than [`VARIANT_GAP`] below the other variants' median.
+    /// Significantly below the rest of the class.
     Harder,
-    /// More than [`VARIANT_GAP`] above it.
+    /// Significantly above it.
     Easier,
+}
+
+/// One problem of one variant: its facility over the variant's students
+/// and the comparison with the rest of the class.
+#[derive(Clone, Debug)]
+pub struct VariantProblem {
+    /// `problem-01`.
+    pub problem: String,
+    /// The mean share of the problem's marks over the variant's students.
+    pub facility: Option<f64>,
+    /// The Holm-corrected p-value of the test against the rest of the
+    /// class, when the variant was compared (enough students on both sides).
+    pub p_value: Option<f64>,
+    /// Harder or easier, when the corrected p is below [`compare::LEVEL`].
+    pub gap: Option<Gap>,
 }
 
 /// One variant of an exam over the students who answered it.
@@ -203,8 +220,8 @@ pub struct VariantStats {
     pub students: usize,
     /// The mean share of the whole exam's marks.
     pub facility: Option<f64>,
-    /// Per problem: its name, the facility, and the gap to the siblings.
-    pub problems: Vec<(String, Option<f64>, Option<Gap>)>,
+    /// Per problem: the facility and the comparison with the rest.
+    pub problems: Vec<VariantProblem>,
 }
 
 /// The whole class.
@@ -477,66 +494,97 @@ fn problems(paper: &Paper, sheets: &[&Sheet]) -> Vec<ProblemStats> {
         .collect()
 }
 
-/// The median (None for none): one much harder variant does not make its
-/// siblings look easier, as it would move their mean.
-fn median(mut x: Vec<f64>) -> Option<f64> {
-    x.sort_by(f64::total_cmp);
-    let n = x.len();
-    match n {
-        0 => None,
-        _ if n % 2 == 1 => Some(x[n / 2]),
-        _ => Some((x[n / 2 - 1] + x[n / 2]) / 2.0),
-    }
-}
-
 fn share(m: &crate::tutor::check::Marking) -> f64 {
     m.fraction()
 }
 
 /// Per variant of an exam: its students, their facility on each problem,
-/// and the problems where it is much harder or easier than its siblings.
+/// and the problems where it is harder or easier than the rest of the
+/// class by the test of [`compare`].
 fn variants(paper: &Paper, sheets: &[&Sheet]) -> Vec<VariantStats> {
     if !paper.exam || paper.variants.len() < 2 {
         return vec![];
     }
-    let names: Vec<&str> = paper.variants[0].iter().map(|p| p.name.as_str()).collect();
-    let of_variant = |v: usize| sheets.iter().filter(move |s| s.variant == Some(v));
-    let facility = |v: usize, name: &str| {
-        let shares: Vec<f64> = of_variant(v)
-            .flat_map(|s| parts_named(s, name))
-            .map(share)
-            .collect();
-        mean(&shares)
-    };
-    (1..=paper.variants.len())
+    let count = paper.variants.len();
+    let mut out: Vec<VariantStats> = (1..=count)
         .map(|v| {
-            let whole: Vec<f64> = of_variant(v)
+            let whole: Vec<f64> = (sheets.iter())
+                .filter(|s| s.variant == Some(v))
                 .filter_map(|s| Some(s.score()? / f64::from(s.total()?.max(1))))
-                .collect();
-            let problems = names
-                .iter()
-                .map(|name| {
-                    let f = facility(v, name);
-                    let others: Vec<f64> = (1..=paper.variants.len())
-                        .filter(|&o| o != v)
-                        .filter_map(|o| facility(o, name))
-                        .collect();
-                    let gap = match (f, median(others)) {
-                        (Some(f), Some(m)) if f < m - VARIANT_GAP => Some(Gap::Harder),
-                        (Some(f), Some(m)) if f > m + VARIANT_GAP => Some(Gap::Easier),
-                        _ => None,
-                    };
-                    (name.to_string(), f, gap)
-                })
                 .collect();
             VariantStats {
                 variant: v,
                 students: whole.len(),
                 facility: mean(&whole),
-                problems,
+                problems: vec![],
+            }
+        })
+        .collect();
+    for part in &paper.variants[0] {
+        for (v, cell) in compared(&part.name, count, sheets).into_iter().enumerate() {
+            out[v].problems.push(cell);
+        }
+    }
+    out
+}
+
+/// One problem's cells of every variant: each variant's facility, and its
+/// test against the rest of the class (the students of the other
+/// variants), the p-values of the variants tested corrected together.
+fn compared(name: &str, count: usize, sheets: &[&Sheet]) -> Vec<VariantProblem> {
+    // each student's share of the problem's marks, by variant
+    let mut shares: Vec<Vec<f64>> = vec![vec![]; count];
+    for s in sheets {
+        let Some(v) = s.variant.filter(|v| (1..=count).contains(v)) else {
+            continue;
+        };
+        shares[v - 1].extend(parts_named(s, name).map(share));
+    }
+    let all: usize = shares.iter().map(Vec::len).sum();
+    let sum: f64 = shares.iter().flatten().sum();
+    let tests: Vec<Option<f64>> = (shares.iter())
+        .map(|x| {
+            let (n, rest) = (x.len(), all - x.len());
+            if n < compare::MIN_STUDENTS || rest < compare::MIN_STUDENTS {
+                return None;
+            }
+            let own: f64 = x.iter().sum();
+            let p_rest = (sum - own) / rest as f64;
+            compare::two_proportion_p(own / n as f64, n, p_rest, rest)
+        })
+        .collect();
+    let tested: Vec<f64> = tests.iter().flatten().copied().collect();
+    let mut corrected = compare::holm(&tested).into_iter();
+    (shares.iter().zip(&tests))
+        .map(|(x, test)| {
+            let facility = mean(x);
+            let p_value = test.and_then(|_| corrected.next());
+            let rest = (all - x.len()).max(1) as f64;
+            let p_rest = (sum - x.iter().sum::<f64>()) / rest;
+            let gap = match (facility, p_value) {
+                (Some(f), Some(p)) if p < compare::LEVEL && f < p_rest => Some(Gap::Harder),
+                (Some(_), Some(p)) if p < compare::LEVEL => Some(Gap::Easier),
+                _ => None,
+            };
+            VariantProblem {
+                problem: name.to_string(),
+                facility,
+                p_value,
+                gap,
             }
         })
         .collect()
+}
+
+impl Stats {
+    /// The fewest and the most students on one variant, when no variant
+    /// has enough to be compared ([`compare::MIN_STUDENTS`]): then no
+    /// variant is flagged, and the report says why.
+    pub fn too_few_per_variant(&self) -> Option<(usize, usize)> {
+        let n = self.variants.iter().map(|v| v.students);
+        let (min, max) = (n.clone().min()?, n.max()?);
+        (max < compare::MIN_STUDENTS).then_some((min, max))
+    }
 }
 
 #[cfg(test)]

@@ -1,25 +1,33 @@
-//! `grafika generate`: exams with answer keys. Each problem is a problem file
-//! (docs/spec.md §5) drawn from a seeded [`SplitMix64`] with nice numbers for its
-//! difficulty, checked to be non-degenerate and solvable, and solved exactly
-//! for its key; the question sheet and the key (with the full worked
-//! solution) are rendered as Markdown, LaTeX or JSON. Titles and statements
-//! are message keys, written in the user's language by `report`.
+//! `grafika generate`: exams with answer keys, whose variants are
+//! parallel forms. Each problem is a problem file (docs/spec.md §5),
+//! solved exactly for its key; the question sheet and the key (with the
+//! full worked solution) are rendered as Markdown, LaTeX or JSON. Titles
+//! and statements are message keys, written in the user's language by
+//! `report`.
 //!
-//! Nice numbers, screened on the exact key: at easy level every answer is
-//! rational (Pythagorean directions, fovy = 90°, boxes at the origin); at
-//! medium level the answers have at most one square root between them; at
-//! hard level anything goes, but every answer has its exact form except a
-//! window resting on tan(fovy/2) for an angle with no form in square roots.
-//! Never degenerate: the up vector is not parallel to the view direction,
-//! points are different and lie beyond the near plane, clipping endpoints
-//! are off the box planes. No problem repeats within an exam. The clipping
-//! problems of an exam take the statuses clipped, accepted and rejected in
-//! an order drawn from the seed.
+//! An exam is drawn position by position. A position's form ([`form`]) is
+//! drawn once from the seed: the number of points, the lighting model, the
+//! clipping case (`--clip`). Every variant of the position then draws its
+//! numbers within that form from a numbered space ([`space`]), visited in
+//! an order drawn from the seed, and is kept only when it solves, its
+//! case is the form's, nothing in it is trivial (a point not beyond the
+//! near plane, a light along the normal, a specular term of 0), each
+//! part's answers are of the number class the difficulty names
+//! ([`numbers`]: rational, one surd, several surds, no closed form), and
+//! its statement is new to the exam. So the variants of a position ask the
+//! same keys with the same marks, of the same case and class. When a
+//! position's space has fewer new problems than variants asked, that is an
+//! error saying how many it could make.
 
+pub mod blueprint;
 mod draw;
+pub mod form;
+pub mod numbers;
 pub mod quiz;
+mod screen;
+pub mod space;
 
-pub use draw::problem;
+pub use form::Form;
 
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
@@ -128,47 +136,112 @@ pub fn variant_name(v: usize) -> String {
     format!("variant-{v:02}")
 }
 
-/// The seed of variant v (variant 0 of seed S is S itself).
-pub fn variant_seed(seed: u64, v: u32) -> u64 {
-    if v == 0 {
-        seed
-    } else {
-        SplitMix64::fork(seed, 0x5641_5249_0000_0000 | v as u64).next_u64()
+/// The clipping case an exam asks (`--clip`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum ClipCase {
+    /// A segment cut by the box: at least one intersection computed and
+    /// kept (the default: a real clipping problem).
+    #[default]
+    Clipped,
+    /// A segment inside the box: accepted whole.
+    Accepted,
+    /// A segment beyond one plane of the box at both ends: rejected by
+    /// the AND test.
+    Rejected,
+    /// The exam's clipping problems take clipped, accepted and rejected
+    /// in turn, in an order drawn from the seed (each problem's variants
+    /// all the same case).
+    Mixed,
+}
+
+impl ClipCase {
+    /// Its name as `--clip` and the blueprint spell it (`clipped`).
+    pub fn name(self) -> &'static str {
+        match self {
+            ClipCase::Clipped => "clipped",
+            ClipCase::Accepted => "accepted",
+            ClipCase::Rejected => "rejected",
+            ClipCase::Mixed => "mixed",
+        }
     }
 }
 
-/// The problems of one exam: problem i is on topic i mod (number of
-/// topics), drawn from its own fork of the seed, and unlike every earlier
-/// problem of the exam. The k-th clipping problem wants status
-/// `order[k mod 3]`, `order` a permutation of (clipped, accepted, rejected)
-/// drawn from the seed: three clipping problems show all three, and two
-/// may show any two.
-pub fn exam(topics: &[Topic], diff: Difficulty, count: u32, seed: u64) -> Result<Vec<Generated>> {
-    if topics.is_empty() {
+/// What an exam is asked to be.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Spec {
+    /// The topics, in turn through the exam.
+    pub topics: Vec<Topic>,
+    /// The difficulty.
+    pub difficulty: Difficulty,
+    /// Problems per exam.
+    pub count: u32,
+    /// Variants of each problem (one per student).
+    pub variants: u32,
+    /// The seed.
+    pub seed: u64,
+    /// The clipping case.
+    pub clip: ClipCase,
+}
+
+/// An exam drawn: each position's form, and its variants.
+pub struct Exams {
+    /// The form of each problem position.
+    pub forms: Vec<Form>,
+    /// The variants, each its problems in order (`variants[v][i]`).
+    pub variants: Vec<Vec<Generated>>,
+}
+
+/// Draws every variant of an exam: problem i on topic i mod (number of
+/// topics), its form drawn from the seed, its variants from the form's
+/// space, no statement twice in the whole exam.
+/// `tick` is told how many problems each position adds, as it is drawn.
+pub fn exams(spec: &Spec, tick: &mut dyn FnMut(u64)) -> Result<Exams> {
+    if spec.topics.is_empty() {
         return Err(Error::why("topic", crate::msg::ErrMsg::NoTopic));
     }
-    let order = clip_order(seed);
     let mut seen = HashSet::new();
-    let mut out = Vec::with_capacity(count.min(10_000) as usize);
-    for i in 0..count as usize {
-        let mut rng = SplitMix64::fork(seed, i as u64);
-        // k: the problem's index among those of its topic
-        let k = i / topics.len();
-        let g = problem(
-            topics[i % topics.len()],
-            diff,
-            order[k % 3],
-            &seen,
-            &mut rng,
-        )?;
-        seen.insert(g.body.clone());
-        out.push(g);
+    let mut forms = Vec::new();
+    let mut by_position = Vec::new();
+    let mut clips = 0;
+    for i in 0..spec.count as usize {
+        let topic = spec.topics[i % spec.topics.len()];
+        let f = form::form(topic, spec.difficulty, spec.clip, (i, clips), spec.seed);
+        clips += usize::from(topic == Topic::Clip);
+        let key = SplitMix64::fork(spec.seed, i as u64).next_u64();
+        by_position.push(screen::variants(
+            &f,
+            (i, spec.variants as usize),
+            &mut seen,
+            key,
+        )?);
+        forms.push(f);
+        tick(u64::from(spec.variants));
     }
-    Ok(out)
+    let mut variants: Vec<Vec<Generated>> = (0..spec.variants).map(|_| Vec::new()).collect();
+    for position in by_position {
+        for (v, g) in position.into_iter().enumerate() {
+            variants[v].push(g);
+        }
+    }
+    Ok(Exams { forms, variants })
 }
 
-/// The order of the clipping statuses in an exam (0 clipped, 1 accepted,
-/// 2 rejected): one of the six permutations, drawn from the seed.
+/// One exam of one variant (a real clipping case, `--clip clipped`): the
+/// problems `generate` writes for these topics, difficulty, count and seed.
+pub fn exam(topics: &[Topic], diff: Difficulty, count: u32, seed: u64) -> Result<Vec<Generated>> {
+    let spec = Spec {
+        topics: topics.to_vec(),
+        difficulty: diff,
+        count,
+        variants: 1,
+        seed,
+        clip: ClipCase::Clipped,
+    };
+    Ok(exams(&spec, &mut |_| {})?.variants.swap_remove(0))
+}
+
+/// The order of the clipping statuses of `--clip mixed` (0 clipped, 1
+/// accepted, 2 rejected): one of the six permutations, drawn from the seed.
 pub fn clip_order(seed: u64) -> [usize; 3] {
     let mut rng = SplitMix64::fork(seed, 0x434c_4950); // "CLIP"
     *rng.pick(&crate::num::rng::PERMUTATIONS_OF_3)

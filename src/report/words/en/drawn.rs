@@ -82,11 +82,12 @@ impl DrawnWords for En {
                 constants,
                 asked,
             } => format!(
-                "A surface point with normal N = {} and color Cs = {} is lit by one white directional light from L = {} and seen from V = {}. With the {model} model ({}), find {} and the color (each channel clamped to [0{}1]).",
+                "A surface point with normal N = {} and color Cs = {} is lit by one white directional light from L = {} and seen from V = {}. With the {} model ({}), find {} and the color (each channel clamped to [0{}1]).",
                 t(normal),
                 numbers(*color, nums),
                 t(light),
                 t(view),
+                crate::report::words::report::model_name(model),
                 drawn::constants(constants, nums),
                 shade_asked(*asked),
                 nums.sep

@@ -103,7 +103,6 @@ impl ErrorWords for En {
             ErrMsg::WindowNeeds => "the window needs perspective.fovy, perspective.aspect and perspective.near".into(),
             ErrMsg::LightsNeedShade => "[[light]] tables need a [shade] table (normal, color, ...)".into(),
             ErrMsg::NoTopic => "give at least one topic".into(),
-            ErrMsg::NoDrawing => "could not draw a non-degenerate problem in 500 tries".into(),
             ErrMsg::NoProblemDrawn => "no problem drawn".into(),
             ErrMsg::StdinHoldsAnswers => "standard input holds the answers: give the problem as a file".into(),
             ErrMsg::GiveProblem => "give a problem file or --topic".into(),
@@ -128,6 +127,13 @@ impl ErrorWords for En {
             ErrMsg::ReportFormat(p) => format!("{p}: the report's format comes from its extension: .html, .md, .json or .csv"),
             ErrMsg::NotResponses(c) => format!("not Moodle's quiz Responses report ({c}): download it from Quiz → Results → Responses, \"Download table data as\" CSV or JSON"),
             ErrMsg::NoQuestionText => "the Responses report does not show which question each student drew: tick \"Question text\" in the report's options and download it again".into(),
+            ErrMsg::AnswersFolder(d, why) => format!(
+                "the folder of answer files {d} cannot be read: {} (a class report needs --answers DIR)",
+                self.io_why(why)
+            ),
+            ErrMsg::RosterNeedsClass => "a class list is set against a class: --roster needs --answers DIR (a folder of answer files)".into(),
+            ErrMsg::EmptyRoster(f) => format!("the class list {f} holds no name"),
+            ErrMsg::RosterRow(line, why) => format!("line {line} of the class list cannot be read as CSV: {why}"),
             ErrMsg::ReportNeedsClass => "a class report needs --answers DIR (a folder of answer files)".into(),
             ErrMsg::PixelOutside(x, y, w, h) => format!("({x}, {y}) is outside the {w}x{h} image"),
             ErrMsg::PixelText(s) => format!("expected X,Y (whole pixel numbers), got `{s}`"),

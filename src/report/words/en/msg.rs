@@ -107,7 +107,10 @@ impl MsgWords for En {
             Msg::AlreadyUnit => "already a unit vector".into(),
             Msg::Saturates => "a channel went past 1 (or below 0) and is clamped: the highlight saturates".into(),
             Msg::InRange => "every channel is already in [0, 1]".into(),
-            Msg::NoTermInModel(model, t) => format!("the {model} model has no {} term", self.term(*t)),
+            Msg::NoTermInModel(model, t) => {
+                let model = crate::report::words::report::model_name(model);
+                format!("the {model} model has no {} term", self.term(*t))
+            }
             Msg::TextSetting => "the text's single white light and no global ambient: the sum is 1·(the text's factor)".into(),
             Msg::TextTerm(Term::Ambient) => "the text's Ia = Is·ka, with the light's intensity Is = 1 (its one white light), on the surface colour Cs".into(),
             Msg::TextTerm(Term::Diffuse) => "the text's Id = Is·kd·MAX(cos α, 0), with Is = 1, on the surface colour Cs".into(),
@@ -215,9 +218,13 @@ impl MsgWords for En {
             Msg::BehindWarn(n) => format!("{n} is behind the centre of projection: its image is inverted and it cannot be seen"),
             Msg::NoFigure => "no figure was written: no part asked has a figure of its own (the pixels of `viewport` are drawn on the window's figure: ask `window` with it)".into(),
             Msg::ExactTooLarge(n) => format!("exact values that would hold more than {n} terms (many different square roots) were computed in f64 and are marked ≈, as is what follows from them"),
+            Msg::ErrFewDistinct { topic, level, problem, found, asked, all } => format!(
+                "problem {problem} ({topic}, {level}) can have only {found} different variant{}{}, not the {asked} asked (no problem is stated twice in an exam): ask for fewer (--variants, --count) or another --difficulty",
+                if *found == 1 { "" } else { "s" },
+                if *all { " (every problem of its kind was tried)" } else { " (found in 200,000 tries)" }
+            ),
             Msg::ExactTooLong(bits) => format!("exact values whose numerator or denominator would pass {bits} bits (a high power, such as a large shininess) were computed in f64 and are marked ≈, as is what follows from them"),
             Msg::StaleTempRemoved(p, pid) => format!("removed {p}, a temporary file left by grafika process {pid}, which is no longer running (it was stopped before it could clean up)"),
-            Msg::ErrFewDistinct(topic, level, n) => format!("could not draw a {topic} problem at {level} level unlike the {n} before it: there are few different ones at this level; ask for fewer problems (--count) or another --difficulty"),
             Msg::ErrHtmlCommand => "writes the worked solution of basis, view, project, window, clip, shade, solve and render; for exams use generate --format html".into(),
             Msg::Parts(parts) => msg::parts(self, parts),
             Msg::Expected(v) => format!("expected {}", nums.values(v)),

@@ -7,12 +7,14 @@ use crate::msg::BenchWord as B;
 use crate::msg::CheckWord as K;
 use crate::msg::ClassWord as C;
 use crate::msg::CliWord as L;
+use crate::msg::PlanWord as N;
 use crate::msg::PracticeWord as P;
 use crate::msg::StatWord as S;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
-use crate::report::words::report::{dec, exam_title, percent, ReportWords};
+use crate::report::words::report::{dec, exam_title, model_name, percent, ReportWords};
 use crate::report::words::MsgWords;
 use crate::tutor::check::Verdict;
+use crate::tutor::class::same::Same;
 use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
 use crate::tutor::diagnose::Code;
@@ -63,7 +65,31 @@ impl ReportWords for En {
                  Point-biserial r: the correlation of the key's mark with the rest of the score (the score without this key); \
                  — when everyone has the same mark. A key with D or r below 0 discriminates negatively (flag: negative): \
                  the weaker students do better on it, so check its key or its question.".into(),
-            C::VariantsNote => "Each cell is the variant's facility on the problem; ▼ marks a variant more than 0.20 below the median of its siblings on that problem (▲ above).".into(),
+            C::VariantsNote => "Each cell is the variant's facility on the problem; n is the number of students who answered the variant. \
+                 A variant is compared with the rest of the class only when both have at least 5 students: a two-proportion z-test of its facility \
+                 against the rest's, the p-values of one problem's variants corrected together by Holm's method; ▼ harder (▲ easier) marks a corrected p below 0.05.".into(),
+            C::RosterHeading => "Class list".into(),
+            C::RosterMissing(n) => format!("On the class list, no answer file ({n}):"),
+            C::RosterNotListed(n) => format!("Answer files of no one on the class list ({n}):"),
+            C::RosterAll(n) => format!("Each of the {n} students on the class list handed in one answer file, and every file is theirs."),
+            C::DuplicatesHeading => "The same student twice".into(),
+            C::DuplicatesNote => "Two files are the same student when their names are the same (the file's student, else its file name without a copy's ending such as \" (1)\"; case and spaces ignored), \
+                 or both give the same NIM, or their answers are the same as typed and one of them names no student; two different NIMs are two students. \
+                 Of each group the marked file modified last is kept (the same time: the last by name); the others are not counted.".into(),
+            C::DuplicateOf { kept, why } => format!("the same student as {kept} ({why}): not counted"),
+            C::FitsHeading => "Answers that fit another variant's key".into(),
+            C::FitsNote => "Each sheet that scores half the marks or less is marked again against every other variant of the exam; \
+                 when another variant's key gives it at least half the marks more, the answers fit that key: copied from a student of that variant, or the file says the wrong variant. \
+                 The score counted is still the one against its own variant.".into(),
+            C::Fits { variant, there, own } => format!(
+                "these answers fit variant {variant}'s key ({} % of the marks there, {} % on its own variant)",
+                there.round(),
+                own.round()
+            ),
+            C::TooFewPerVariant { min, max, need } => {
+                let n = if min == max { min.to_string() } else { format!("{min}–{max}") };
+                format!("Too few students per variant to compare variants: n = {n} (at least {need} per variant are needed), so no variant is flagged harder or easier.")
+            }
             C::NoMistake => "No known mistake explains a wrong answer.".into(),
             C::WrongNote => "Values equal within the tolerance are counted together; the most common first. A value many students share may be a mistake the catalog does not know yet, or a wrong key.".into(),
             C::NoneFound => "None.".into(),
@@ -95,6 +121,14 @@ impl ReportWords for En {
         match s {
             Skip::Subdirectory => "skipped: a subdirectory (its files are not read)",
             Skip::NotToml => "skipped: not a .toml file",
+        }
+    }
+
+    fn same(&self, s: Same) -> &'static str {
+        match s {
+            Same::Name => "same name",
+            Same::Nim => "same NIM",
+            Same::Answers => "same answers, one file naming no student",
         }
     }
 
@@ -190,6 +224,17 @@ impl ReportWords for En {
                 plural(*count as usize),
             ),
             D::More(n) => format!("… and {n} more"),
+            D::SheetTitle { difficulty, variant } => format!(
+                "Computer graphics exam — {} level{}",
+                match difficulty.as_str() {
+                    "easy" => "easy",
+                    "hard" => "hard",
+                    _ => "medium",
+                },
+                variant.map(|v| format!(", variant {v}")).unwrap_or_default()
+            ),
+            D::NameLine => "Name: ______________________________   Student number (NIM): ________________".into(),
+            D::TotalMarks(n) => format!("Total: {n} mark{}", plural(*n as usize)),
         }
     }
 
@@ -228,7 +273,7 @@ impl ReportWords for En {
             L::WorkedSolution => "worked solution",
             L::Measuring => "measuring",
             L::Frames => "frames",
-            L::Variants => "variants",
+            L::Problems => "problems",
             L::Arguments => "arguments",
             L::TheText => "the text",
         }
@@ -258,6 +303,44 @@ impl ReportWords for En {
             S::Shading => "thread time: shading".into(),
             S::Frame => "time: frame".into(),
             S::Png => "time: PNG encoding".into(),
+        }
+    }
+
+    fn plan(&self, w: &N) -> String {
+        let s = |n: usize| if n == 1 { "" } else { "s" };
+        match w {
+            N::Title => "Exam blueprint".into(),
+            N::Heading { variants, total } => format!(
+                "Blueprint: {variants} variant{}, each worth {total} mark{}; every variant of a problem asks the same case, number class and marks",
+                s(*variants),
+                s(*total as usize)
+            ),
+            N::Topic => "Topic".into(),
+            N::Case => "Case".into(),
+            N::Numbers => "Numbers".into(),
+            N::Marks => "Marks".into(),
+            N::Statements => "Statements".into(),
+            N::Points(n) => format!("{n} point{}", s(*n)),
+            N::Model(m) => format!("{} model", model_name(m)),
+            N::Clip { status, bits, tried, kept } => format!(
+                "{status}: P0 beyond {} plane{}, P1 beyond {}; {tried} intersection{} tried, {kept} kept",
+                bits[0],
+                s(bits[0] as usize),
+                bits[1],
+                s(*tried as usize)
+            ),
+            N::Class(c) => match c.as_str() {
+                "rational" => "rational",
+                "one_surd" => "one surd",
+                "several_surds" => "several surds",
+                _ => "no closed form",
+            }
+            .into(),
+            N::OfVariants(k, n) if k == n => format!("all {n}"),
+            N::OfVariants(k, n) => format!("{k} of {n}"),
+            N::MarksVary => "not the same in every variant".into(),
+            N::Distinct(k, n) => format!("{k} different of {n}"),
+            N::Spread => "Range of each answer's numbers over the variants".into(),
         }
     }
 

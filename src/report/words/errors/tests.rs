@@ -99,7 +99,6 @@ pub fn every_error() -> Vec<ErrMsg> {
         ErrMsg::WindowNeeds,
         ErrMsg::LightsNeedShade,
         ErrMsg::NoTopic,
-        ErrMsg::NoDrawing,
         ErrMsg::NoProblemDrawn,
         ErrMsg::StdinHoldsAnswers,
         ErrMsg::GiveProblem,
@@ -129,6 +128,10 @@ pub fn every_error() -> Vec<ErrMsg> {
         ErrMsg::NotResponses(s("no column Response 1")),
         ErrMsg::NoQuestionText,
         ErrMsg::ReportNeedsClass,
+        ErrMsg::RosterNeedsClass,
+        ErrMsg::EmptyRoster(s("kelas.txt")),
+        ErrMsg::RosterRow(3, s("found record with 2 fields")),
+        ErrMsg::AnswersFolder(s("nosuchdir"), crate::msg::IoWhy::NotFound),
         ErrMsg::PixelOutside(10, 20, 8, 8),
         ErrMsg::PixelText(s("a,b")),
         ErrMsg::NothingRendered,
@@ -398,7 +401,6 @@ fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want,
         | E::WindowNeeds
         | E::LightsNeedShade
         | E::NoTopic
-        | E::NoDrawing
         | E::NoProblemDrawn
         | E::StdinHoldsAnswers
         | E::GiveProblem
@@ -424,6 +426,10 @@ fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want,
         | E::NotResponses(_)
         | E::NoQuestionText
         | E::ReportNeedsClass
+        | E::RosterNeedsClass
+        | E::EmptyRoster(_)
+        | E::RosterRow(..)
+        | E::AnswersFolder(..)
         | E::PixelOutside(..)
         | E::PixelText(_)
         | E::NothingRendered

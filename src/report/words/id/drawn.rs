@@ -83,11 +83,12 @@ impl DrawnWords for Id {
                 constants,
                 asked,
             } => format!(
-                "Sebuah titik pada permukaan dengan vektor normal N = {} dan warna Cs = {} disinari satu sumber cahaya putih berarah dari L = {} dan dilihat dari V = {}. Dengan model {model} ({}), tentukan {} dan warnanya (tiap kanal dibatasi ke [0{}1]).",
+                "Sebuah titik pada permukaan dengan vektor normal N = {} dan warna Cs = {} disinari satu sumber cahaya putih berarah dari L = {} dan dilihat dari V = {}. Dengan model {} ({}), tentukan {} dan warnanya (tiap kanal dibatasi ke [0{}1]).",
                 t(normal),
                 numbers(*color, nums),
                 t(light),
                 t(view),
+                crate::report::words::report::model_name(model),
                 drawn::constants(constants, nums),
                 shade_asked(*asked),
                 nums.sep

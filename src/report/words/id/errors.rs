@@ -118,7 +118,6 @@ impl ErrorWords for Id {
             ErrMsg::WindowNeeds => "viewing window memerlukan perspective.fovy, perspective.aspect dan perspective.near".into(),
             ErrMsg::LightsNeedShade => "tabel [[light]] memerlukan tabel [shade] (normal, color, ...)".into(),
             ErrMsg::NoTopic => "berikan paling sedikit satu topik".into(),
-            ErrMsg::NoDrawing => "tidak dapat membuat soal yang tidak degenerate dalam 500 percobaan".into(),
             ErrMsg::NoProblemDrawn => "tidak ada soal yang dibuat".into(),
             ErrMsg::StdinHoldsAnswers => "masukan standar berisi jawaban: berikan soal sebagai berkas".into(),
             ErrMsg::GiveProblem => "berikan berkas soal atau --topic".into(),
@@ -143,6 +142,13 @@ impl ErrorWords for Id {
             ErrMsg::ReportFormat(p) => format!("{p}: format laporan ditentukan oleh ekstensinya: .html, .md, .json atau .csv"),
             ErrMsg::NotResponses(c) => format!("bukan laporan Responses kuis Moodle ({c}): unduh dari Kuis → Hasil → Responses, \"Download table data as\" CSV atau JSON"),
             ErrMsg::NoQuestionText => "laporan Responses tidak menunjukkan soal yang didapat tiap mahasiswa: centang \"Question text\" di pilihan laporan lalu unduh lagi".into(),
+            ErrMsg::AnswersFolder(d, why) => format!(
+                "folder berkas jawaban {d} tidak dapat dibaca: {} (laporan kelas memerlukan --answers DIR)",
+                self.io_why(why)
+            ),
+            ErrMsg::RosterNeedsClass => "daftar kelas dicocokkan dengan satu kelas: --roster memerlukan --answers DIR (folder berkas jawaban)".into(),
+            ErrMsg::EmptyRoster(f) => format!("daftar kelas {f} tidak berisi nama"),
+            ErrMsg::RosterRow(line, why) => format!("baris {line} daftar kelas tidak dapat dibaca sebagai CSV: {why}"),
             ErrMsg::ReportNeedsClass => "laporan kelas memerlukan --answers DIR (folder berkas jawaban)".into(),
             ErrMsg::PixelOutside(x, y, w, h) => format!("({x}; {y}) berada di luar gambar {w}x{h}"),
             ErrMsg::PixelText(s) => format!("seharusnya X,Y (nomor piksel bulat), diberikan `{s}`"),

@@ -105,7 +105,10 @@ impl MsgWords for Id {
             Msg::AlreadyUnit => "sudah merupakan vektor satuan".into(),
             Msg::Saturates => "sebuah kanal melewati 1 (atau di bawah 0) dan dibatasi: sorotan (highlight) menjadi jenuh".into(),
             Msg::InRange => "setiap kanal sudah berada di [0, 1]".into(),
-            Msg::NoTermInModel(model, t) => format!("model {model} tidak memiliki komponen {}", self.term(*t)),
+            Msg::NoTermInModel(model, t) => {
+                let model = crate::report::words::report::model_name(model);
+                format!("model {model} tidak memiliki komponen {}", self.term(*t))
+            }
             Msg::TextSetting => "satu sumber cahaya putih seperti di teks dan tanpa ambient global: jumlahnya 1·(faktor dalam teks)".into(),
             Msg::TextTerm(Term::Ambient) => "Ia = Is·ka pada teks, dengan intensitas sumber cahaya Is = 1 (satu sumber cahaya putih), dikalikan warna permukaan Cs".into(),
             Msg::TextTerm(Term::Diffuse) => "Id = Is·kd·MAX(cos α, 0) pada teks, dengan Is = 1, dikalikan warna permukaan Cs".into(),
@@ -210,9 +213,12 @@ impl MsgWords for Id {
             Msg::BehindWarn(n) => format!("{n} berada di belakang pusat proyeksi: bayangannya terbalik dan tidak terlihat"),
             Msg::NoFigure => "tidak ada gambar yang ditulis: tidak ada bagian yang ditanyakan yang punya gambar sendiri (piksel `viewport` digambar pada gambar window: tanyakan `window` juga)".into(),
             Msg::ExactTooLarge(n) => format!("nilai eksak yang akan memuat lebih dari {n} suku (banyak akar kuadrat yang berbeda) dihitung dengan f64 dan ditandai ≈, begitu pula yang diturunkan darinya"),
+            Msg::ErrFewDistinct { topic, level, problem, found, asked, all } => format!(
+                "soal {problem} ({topic}, {level}) hanya dapat dibuat dalam {found} varian berbeda{}, bukan {asked} seperti diminta (tidak ada soal yang dinyatakan dua kali dalam satu ujian): minta lebih sedikit (--variants, --count) atau tingkat lain (--difficulty)",
+                if *all { " (semua soal jenis ini sudah dicoba)" } else { " (ditemukan dalam 200.000 percobaan)" }
+            ),
             Msg::ExactTooLong(bits) => format!("nilai eksak yang pembilang atau penyebutnya akan melebihi {bits} bit (pangkat yang tinggi, seperti shininess yang besar) dihitung dengan f64 dan ditandai ≈, begitu pula yang diturunkan darinya"),
             Msg::StaleTempRemoved(p, pid) => format!("{p} dihapus: berkas sementara yang ditinggalkan proses grafika {pid}, yang sudah tidak berjalan (dihentikan sebelum sempat membersihkan)"),
-            Msg::ErrFewDistinct(topic, level, n) => format!("tidak dapat menarik soal {topic} tingkat {level} yang berbeda dari {n} soal sebelumnya: soal yang berbeda di tingkat ini tidak banyak; minta lebih sedikit soal (--count) atau tingkat lain (--difficulty)"),
             Msg::ErrHtmlCommand => "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html".into(),
             Msg::Parts(parts) => msg::parts(self, parts),
             Msg::Expected(v) => format!("seharusnya {}", nums.values(v)),

@@ -7,13 +7,15 @@ use crate::msg::BenchWord as B;
 use crate::msg::CheckWord as K;
 use crate::msg::ClassWord as C;
 use crate::msg::CliWord as L;
+use crate::msg::PlanWord as N;
 use crate::msg::PracticeWord as P;
 use crate::msg::StatWord as S;
 use crate::msg::{Decimal, DocWord as D, QuizWord as Q};
-use crate::report::words::report::{dec, exam_title, percent, ReportWords};
+use crate::report::words::report::{dec, exam_title, model_name, percent, ReportWords};
 use crate::report::words::MsgWords;
 use crate::stages::clip::Status;
 use crate::tutor::check::Verdict;
+use crate::tutor::class::same::Same;
 use crate::tutor::class::stats::Flag;
 use crate::tutor::class::{Note, Skip};
 use crate::tutor::diagnose::Code;
@@ -64,7 +66,31 @@ impl ReportWords for Id {
                  Point-biserial r: korelasi nilai kunci dengan sisa nilai (nilai tanpa kunci ini); \
                  — bila semua mendapat nilai yang sama. Kunci dengan D atau r di bawah 0 memiliki daya beda negatif (tanda: negatif): \
                  mahasiswa yang lebih lemah justru lebih baik, jadi periksa kunci atau soalnya.".into(),
-            C::VariantsNote => "Setiap sel adalah tingkat kemudahan varian pada soal itu; ▼ menandai varian yang lebih dari 0,20 di bawah median varian lainnya pada soal itu (▲ di atasnya).".into(),
+            C::VariantsNote => "Setiap sel adalah tingkat kemudahan varian pada soal itu; n adalah banyaknya mahasiswa yang mengerjakan varian itu. \
+                 Sebuah varian dibandingkan dengan sisa kelas hanya bila keduanya memiliki paling sedikit 5 mahasiswa: uji z dua proporsi untuk tingkat kemudahannya \
+                 terhadap tingkat kemudahan sisa kelas, nilai p varian-varian satu soal dikoreksi bersama dengan metode Holm; ▼ lebih sulit (▲ lebih mudah) menandai nilai p terkoreksi di bawah 0,05.".into(),
+            C::RosterHeading => "Daftar kelas".into(),
+            C::RosterMissing(n) => format!("Ada di daftar kelas, tanpa berkas jawaban ({n}):"),
+            C::RosterNotListed(n) => format!("Berkas jawaban yang tidak ada di daftar kelas ({n}):"),
+            C::RosterAll(n) => format!("Setiap {n} mahasiswa di daftar kelas mengumpulkan satu berkas jawaban, dan setiap berkas milik mereka."),
+            C::DuplicatesHeading => "Mahasiswa yang sama dua kali".into(),
+            C::DuplicatesNote => "Dua berkas dianggap mahasiswa yang sama bila namanya sama (student di berkas, atau nama berkas tanpa akhiran salinan seperti \" (1)\"; huruf besar-kecil dan spasi diabaikan), \
+                 atau keduanya memberi NIM yang sama, atau jawabannya sama persis seperti diketik dan salah satunya tidak menyebut nama mahasiswa; dua NIM yang berbeda adalah dua mahasiswa. \
+                 Dari setiap kelompok, berkas yang dinilai dan terakhir diubah yang dipakai (waktu sama: yang terakhir menurut nama); yang lain tidak dihitung.".into(),
+            C::DuplicateOf { kept, why } => format!("mahasiswa yang sama dengan {kept} ({why}): tidak dihitung"),
+            C::FitsHeading => "Jawaban yang cocok dengan kunci varian lain".into(),
+            C::FitsNote => "Setiap lembar jawaban yang mendapat setengah nilai atau kurang dinilai lagi terhadap setiap varian lain dari ujian ini; \
+                 bila kunci varian lain memberinya paling sedikit setengah nilai lebih banyak, jawaban itu cocok dengan kunci tersebut: disalin dari mahasiswa varian itu, atau berkasnya menyebut varian yang salah. \
+                 Nilai yang dihitung tetap nilai terhadap variannya sendiri.".into(),
+            C::Fits { variant, there, own } => format!(
+                "jawaban ini cocok dengan kunci varian {variant} ({} % nilai di sana, {} % pada variannya sendiri)",
+                there.round(),
+                own.round()
+            ),
+            C::TooFewPerVariant { min, max, need } => {
+                let n = if min == max { min.to_string() } else { format!("{min}–{max}") };
+                format!("Terlalu sedikit mahasiswa per varian untuk membandingkan varian: n = {n} (perlu paling sedikit {need} per varian), jadi tidak ada varian yang ditandai lebih sulit atau lebih mudah.")
+            }
             C::NoMistake => "Tidak ada kesalahan yang dikenal yang menjelaskan jawaban salah.".into(),
             C::WrongNote => "Nilai yang sama dalam batas toleransi dihitung bersama; yang paling sering lebih dulu. Nilai yang sama pada banyak mahasiswa bisa jadi kesalahan yang belum dikenal katalog, atau kunci yang salah.".into(),
             C::NoneFound => "Tidak ada.".into(),
@@ -95,6 +121,14 @@ impl ReportWords for Id {
         match s {
             Skip::Subdirectory => "dilewati: subdirektori (berkas di dalamnya tidak dibaca)",
             Skip::NotToml => "dilewati: bukan berkas .toml",
+        }
+    }
+
+    fn same(&self, s: Same) -> &'static str {
+        match s {
+            Same::Name => "nama sama",
+            Same::Nim => "NIM sama",
+            Same::Answers => "jawaban sama, satu berkas tanpa nama mahasiswa",
         }
     }
 
@@ -189,6 +223,17 @@ impl ReportWords for Id {
                 "{files} berkas ditulis ({variants} varian dari {count} soal {topics}, seed {seed}) ke {out}"
             ),
             D::More(n) => format!("… dan {n} lagi"),
+            D::SheetTitle { difficulty, variant } => format!(
+                "Ujian grafika komputer — tingkat {}{}",
+                match difficulty.as_str() {
+                    "easy" => "mudah",
+                    "hard" => "sulit",
+                    _ => "sedang",
+                },
+                variant.map(|v| format!(", varian {v}")).unwrap_or_default()
+            ),
+            D::NameLine => "Nama: ______________________________   NIM: ________________".into(),
+            D::TotalMarks(n) => format!("Jumlah: {n} poin"),
         }
     }
 
@@ -233,7 +278,7 @@ impl ReportWords for Id {
             L::WorkedSolution => "penyelesaian",
             L::Measuring => "mengukur",
             L::Frames => "bingkai",
-            L::Variants => "varian",
+            L::Problems => "soal",
             L::Arguments => "argumen",
             L::TheText => "teks",
         }
@@ -263,6 +308,44 @@ impl ReportWords for Id {
             S::Shading => "waktu thread: shading".into(),
             S::Frame => "waktu: bingkai".into(),
             S::Png => "waktu: encoding PNG".into(),
+        }
+    }
+
+    fn plan(&self, w: &N) -> String {
+        match w {
+            N::Title => "Kisi-kisi ujian".into(),
+            N::Heading { variants, total } => format!(
+                "Kisi-kisi: {variants} varian, masing-masing bernilai {total} poin; setiap varian sebuah soal menanyakan kasus, kelas bilangan dan poin yang sama"
+            ),
+            N::Topic => "Topik".into(),
+            N::Case => "Kasus".into(),
+            N::Numbers => "Bilangan".into(),
+            N::Marks => "Poin".into(),
+            N::Statements => "Teks soal".into(),
+            N::Points(n) => format!("{n} titik"),
+            N::Model(m) => format!("model {}", model_name(m)),
+            N::Clip { status, bits, tried, kept } => format!(
+                "{}: P0 di luar {} bidang, P1 di luar {}; {tried} perpotongan dihitung, {kept} dipakai",
+                match status.as_str() {
+                    "accepted" => "diterima",
+                    "rejected" => "ditolak",
+                    _ => "di-clip",
+                },
+                bits[0],
+                bits[1]
+            ),
+            N::Class(c) => match c.as_str() {
+                "rational" => "rasional",
+                "one_surd" => "satu bentuk akar",
+                "several_surds" => "beberapa bentuk akar",
+                _ => "tanpa bentuk eksak",
+            }
+            .into(),
+            N::OfVariants(k, n) if k == n => format!("semua {n}"),
+            N::OfVariants(k, n) => format!("{k} dari {n}"),
+            N::MarksVary => "tidak sama di setiap varian".into(),
+            N::Distinct(k, n) => format!("{k} berbeda dari {n}"),
+            N::Spread => "Rentang bilangan setiap jawaban pada semua varian".into(),
         }
     }
 

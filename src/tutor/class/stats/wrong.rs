@@ -64,11 +64,26 @@ pub(super) fn mistakes(
     let catalog = |m: Code| Code::all().iter().position(|c| *c == m);
     for (x, v, _) in &mut out {
         x.keys.sort_by_key(|k| rank(k));
-        x.step = x.keys.first().and_then(|k| step_of(k, solved.get(*v - 1)?));
+        x.step = x.keys.first().and_then(|k| {
+            let parts = solved.get(*v - 1)?;
+            made_step(x.mistake, k, parts).or_else(|| step_of(k, parts))
+        });
     }
     let mut out: Vec<MistakeStats> = out.into_iter().map(|(x, _, _)| x).collect();
     out.sort_by_key(|x| (std::cmp::Reverse(x.students.len()), catalog(x.mistake)));
     out
+}
+
+/// The step of the worked solution where a mistake is made
+/// ([`super::made`]), in the problem of the first key it spoils.
+fn made_step(code: Code, key: &ClassKey, parts: &[Solved]) -> Option<StepRef> {
+    let steps = &parts.get(key.problem.unwrap_or(0))?.steps;
+    let i = super::made::step_made(code, steps)?;
+    Some(StepRef {
+        part: key.problem_name(),
+        number: i + 1,
+        title: steps[i].title.clone(),
+    })
 }
 
 /// The step of the worked solution that computes a class key.
@@ -151,7 +166,7 @@ fn same_value(first: &toml::Value, given: &toml::Value, a: &Marked, rel: f64) ->
 }
 
 fn close(x: &Val, y: &Val, key: &Key, rel: f64) -> bool {
-    let (xs, ys) = (numbers(x), numbers(y));
+    let (xs, ys) = (x.numbers(), y.numbers());
     if xs.is_empty() || xs.len() != ys.len() {
         return x == y;
     }
@@ -159,13 +174,4 @@ fn close(x: &Val, y: &Val, key: &Key, rel: f64) -> bool {
     xs.iter()
         .zip(&ys)
         .all(|(a, b)| (a - b).abs() <= tolerance::for_key(key, *a, scale, rel))
-}
-
-/// The numbers of a value, flattened.
-fn numbers(v: &Val) -> Vec<f64> {
-    match v {
-        Val::Num(n) => vec![n.value],
-        Val::List(items) => items.iter().flat_map(numbers).collect(),
-        _ => vec![],
-    }
 }
