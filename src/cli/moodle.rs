@@ -54,6 +54,7 @@ pub fn run(
         exam: true,
         sheets,
         skipped: Vec::new(),
+        roster: None,
     };
     class_out(paper, &class, settings, a, json, style, outputs)
 }
