@@ -167,6 +167,7 @@ fn lone_sheet(file: &Path, who: String, m: Marking) -> Sheet {
         file: file.to_path_buf(),
         who,
         variant: Some(1),
+        drawn: Vec::new(),
         outcome: Ok(vec![(String::new(), m)]),
         note: None,
         identity: Default::default(),

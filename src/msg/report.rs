@@ -72,6 +72,9 @@ pub enum ClassWord {
     Definitions,
     /// What a variant table's cell holds, and the test behind its flags.
     VariantsNote,
+    /// How the variants are counted when each problem's was drawn by
+    /// itself (a Moodle quiz's random slots).
+    DrawnNote,
     /// Heading: the class list.
     RosterHeading,
     /// Before the students of the class list with no answer file: how many.

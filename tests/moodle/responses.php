@@ -10,9 +10,10 @@
 // with Moodle's own importer ("Get category from file" on), enrols
 // --students students (fake names), makes a quiz with one random slot per
 // problem category (grafika/<topic>/<NN>), each slot's maximum mark the
-// question's default mark, and submits one attempt per student through
-// the quiz attempt API (quiz_attempt, the question usage), the deferred
-// feedback behaviour, as the attempt page posts them. Student k answers by
+// marks its statement states (as README has the lecturer set them), and
+// submits one attempt per student through the quiz attempt API
+// (quiz_attempt, the question usage), the deferred feedback behaviour, as
+// the attempt page posts them. Student k answers by
 // the pattern k mod 8:
 //
 //   0 right: each blank's first 100 % answer as Moodle shows it
@@ -126,7 +127,12 @@ foreach ($qformat->questionids as $qid) {
     $q = question_bank::load_question_data($qid);
     if (!isset($categories[$q->category])) {
         $categories[$q->category] = count($categories);
-        $marks[$q->category] = (float) $q->defaultmark;
+        // The marks the statement states, as README tells the lecturer
+        // to set them: a Cloze's default mark is the sum of its blanks'
+        // weights, not its marks.
+        $stated = preg_match_all('/\\((\\d+) (?:marks?|poin)\\)/', html_to_text($q->questiontext, 0, false), $m)
+            ? (float) end($m[1]) : (float) $q->defaultmark;
+        $marks[$q->category] = $stated;
     }
 }
 
@@ -146,7 +152,8 @@ foreach (array_keys($categories) as $catid) {
         'filteroptions' => ['includesubcategories' => false],
     ]]]);
 }
-// Each slot's maximum mark: the problem's marks (a random slot gets 1).
+// Each slot's maximum mark: the problem's stated marks (a random slot
+// gets 1).
 $quizobj = \mod_quiz\quiz_settings::create($quiz->id);
 $structure = $quizobj->get_structure();
 foreach ($structure->get_slots() as $slot) {

@@ -182,6 +182,7 @@ mod tests {
             C::NotMarked,
             C::Definitions,
             C::VariantsNote,
+            C::DrawnNote,
             C::RosterHeading,
             C::RosterMissing(2),
             C::RosterNotListed(1),
@@ -531,6 +532,7 @@ mod tests {
             | NotMarked
             | Definitions
             | VariantsNote
+            | DrawnNote
             | TooFewPerVariant { .. }
             | RosterHeading
             | RosterMissing(_)

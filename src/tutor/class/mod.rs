@@ -135,6 +135,11 @@ pub struct Sheet {
     pub who: String,
     /// The variant answered (1-based; 1 for a lone problem), when known.
     pub variant: Option<usize>,
+    /// The exam's variant (1-based) of each problem, when the problems
+    /// come from different variants: a Moodle quiz's random slots draw
+    /// each problem's variant by itself, and `variant` is then the draw.
+    /// Empty when the whole sheet is `variant`.
+    pub drawn: Vec<usize>,
     /// The marking of each part (named as [`Part::name`]), or why the file
     /// could not be marked.
     pub outcome: Result<Vec<(String, Marking)>>,
@@ -161,6 +166,23 @@ impl Sheet {
     pub fn total(&self) -> Option<u32> {
         let m = self.outcome.as_ref().ok()?;
         Some(m.iter().map(|(_, m)| m.total()).sum())
+    }
+    /// The exam's variant of problem `p` (0-based) as the student had it.
+    pub fn variant_of(&self, p: usize) -> Option<usize> {
+        match self.drawn.is_empty() {
+            true => self.variant,
+            false => self.drawn.get(p).copied(),
+        }
+    }
+    /// The exam's variants the student had, once each problem's when they
+    /// differ: `3`, or `2/1/2` (problem 1 of variant 2, problem 2 of
+    /// variant 1, …).
+    pub fn variant_label(&self) -> String {
+        match self.drawn.first() {
+            Some(first) if self.drawn.iter().all(|d| d == first) => first.to_string(),
+            Some(_) => (self.drawn.iter()).map(usize::to_string).collect::<Vec<_>>().join("/"),
+            None => self.variant.map(|v| v.to_string()).unwrap_or_default(),
+        }
     }
 }
 
@@ -308,6 +330,7 @@ fn mark_read(
         file: f.to_path_buf(),
         who,
         variant,
+        drawn: Vec::new(),
         outcome,
         note,
         identity,

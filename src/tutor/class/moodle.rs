@@ -53,6 +53,8 @@ pub struct Given {
     pub who: String,
     /// The answers, as an exam's answer file gives them.
     pub answers: Answers,
+    /// The exam's variant (1-based) of each problem the attempt drew.
+    pub drawn: Vec<usize>,
 }
 
 /// The blanks of each problem of each variant: every key with its value.
@@ -144,6 +146,7 @@ pub fn given(
             label: PathBuf::from(format!("row {}", a.row)),
             who: who(a),
             answers,
+            drawn: draws[v].iter().map(|d| d + 1).collect(),
         });
     }
     if draws.is_empty() {
@@ -245,13 +248,18 @@ fn shaped<'a>(like: &Val, texts: &mut impl Iterator<Item = &'a str>) -> toml::Va
     }
 }
 
-/// Marks the given attempts as a class (see [`super::mark_given`]).
+/// Marks the given attempts as a class (see [`super::mark_given`]), each
+/// sheet with the exam's variant of each problem it drew.
 pub fn sheets(paper: &Paper, settings: Settings, given: &[Given]) -> Vec<Sheet> {
-    super::mark_given(
+    let mut sheets = super::mark_given(
         paper,
         settings,
         given
             .iter()
             .map(|g| (g.label.clone(), g.who.clone(), g.answers.clone())),
-    )
+    );
+    for (s, g) in sheets.iter_mut().zip(given) {
+        s.drawn.clone_from(&g.drawn);
+    }
+    sheets
 }
