@@ -172,7 +172,10 @@ fn each_problem_counts_under_the_variant_its_slot_drew() {
     assert_eq!(first["student"], "Siti Rahayu");
     assert_eq!(first["variant"], serde_json::json!([1, 2, 2]));
     let html = std::fs::read_to_string(dir.join("class.html")).expect("report");
-    let table = html.split("<h2>Variants</h2>").nth(1).expect("a variants table");
+    let table = html
+        .split("<h2>Variants</h2>")
+        .nth(1)
+        .expect("a variants table");
     let table = table.split("</table>").next().expect("its end");
     assert_eq!(table.matches("<tr><td>").count(), 2, "{table}");
     assert!(html.contains("each problem's variant was drawn by itself"));

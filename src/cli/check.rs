@@ -116,8 +116,8 @@ pub(crate) fn class_out(
 ) -> Result<(String, i32)> {
     if let Some(file) = &a.report {
         let format = report_format(file)?;
-        let stats = stats::of(&class, paper, &settings);
-        let text = lecturer::write(format, &class, &stats, &settings, style);
+        let stats = stats::of(class, paper, &settings);
+        let text = lecturer::write(format, class, &stats, &settings, style);
         outputs.write(file, "report", text.as_bytes())?;
     }
     let status = if class.sheets.iter().any(|s| s.outcome.is_err()) {
@@ -130,9 +130,9 @@ pub(crate) fn class_out(
         return Ok((out, status));
     }
     let out = if json {
-        pretty(&crate::report::class::json(&class, style.lang))
+        pretty(&crate::report::class::json(class, style.lang))
     } else {
-        crate::report::class::table(&class, style.lang)
+        crate::report::class::table(class, style.lang)
     };
     Ok((out, status))
 }

@@ -352,4 +352,3 @@ pub(super) fn variant_json(s: &Sheet) -> Value {
         None => json!(s.variant),
     }
 }
-

@@ -180,7 +180,10 @@ impl Sheet {
     pub fn variant_label(&self) -> String {
         match self.drawn.first() {
             Some(first) if self.drawn.iter().all(|d| d == first) => first.to_string(),
-            Some(_) => (self.drawn.iter()).map(usize::to_string).collect::<Vec<_>>().join("/"),
+            Some(_) => (self.drawn.iter())
+                .map(usize::to_string)
+                .collect::<Vec<_>>()
+                .join("/"),
             None => self.variant.map(|v| v.to_string()).unwrap_or_default(),
         }
     }

@@ -511,7 +511,11 @@ fn share(m: &crate::tutor::check::Marking) -> f64 {
 fn variants(paper: &Paper, sheets: &[&Sheet]) -> Vec<VariantStats> {
     let drawn = sheets.iter().any(|s| !s.drawn.is_empty());
     let count = match drawn {
-        true => sheets.iter().flat_map(|s| s.drawn.iter().copied()).max().unwrap_or(1),
+        true => sheets
+            .iter()
+            .flat_map(|s| s.drawn.iter().copied())
+            .max()
+            .unwrap_or(1),
         false => paper.variants.len(),
     };
     if !paper.exam || count < 2 {
@@ -533,7 +537,10 @@ fn variants(paper: &Paper, sheets: &[&Sheet]) -> Vec<VariantStats> {
         })
         .collect();
     for (p, part) in paper.variants[0].iter().enumerate() {
-        for (v, cell) in compared(p, &part.name, count, sheets).into_iter().enumerate() {
+        for (v, cell) in compared(p, &part.name, count, sheets)
+            .into_iter()
+            .enumerate()
+        {
             out[v].problems.push(cell);
         }
     }
