@@ -544,6 +544,19 @@ pub struct CheckArgs {
     /// correct.follow_through.
     #[arg(long)]
     pub follow_through: bool,
+    /// Re-mark a Moodle quiz made from this exam: its Responses report as
+    /// downloaded (Quiz → Results → Responses, CSV or JSON), each finished
+    /// attempt marked as an answer file of the class.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["answers", "answers_from_text"])]
+    pub moodle_responses: Option<PathBuf>,
+    /// With --moodle-responses: write the grades for Moodle's gradebook
+    /// import (CSV: email, ID number, name, grafika's grade, Moodle's).
+    #[arg(long, value_name = "FILE", requires = "moodle_responses")]
+    pub grades: Option<PathBuf>,
+    /// With --moodle-responses: write each student's marked sheet (text)
+    /// into this folder.
+    #[arg(long, value_name = "DIR", requires = "moodle_responses")]
+    pub sheets: Option<PathBuf>,
 }
 
 /// The `practice` flags.

@@ -54,6 +54,9 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
         exact_mode: true,
         ..*style
     };
+    if let Some(file) = &a.moodle_responses {
+        return crate::cli::moodle::run(&paper, file, settings, a, json, style, outputs);
+    }
     match (&a.answers, a.answers_from_text) {
         (Some(_), true) | (None, false) => Err(Error::why("answers", Twice::Answers)),
         (None, true) if a.report.is_some() => Err(Error::why("report", ErrMsg::ReportNeedsClass)),
@@ -97,10 +100,24 @@ fn class(
 ) -> Result<(String, i32)> {
     let mut class = class::mark_dir(paper, dir, settings)?;
     class.roster = listed.map(|l| class::roster::against(l, &class.sheets));
+    class_out(paper, &class, settings, a, json, style, outputs)
+}
+
+/// A class's outputs: the lecturer's report, the CSV, the rows (text or
+/// JSON); exit status 2 when a sheet could not be marked.
+pub(crate) fn class_out(
+    paper: &Paper,
+    class: &class::Class,
+    settings: check::Settings,
+    a: &CheckArgs,
+    json: bool,
+    style: &Style,
+    outputs: &Outputs,
+) -> Result<(String, i32)> {
     if let Some(file) = &a.report {
         let format = report_format(file)?;
-        let stats = stats::of(&class, paper, &settings);
-        let text = lecturer::write(format, &class, &stats, &settings, style);
+        let stats = stats::of(class, paper, &settings);
+        let text = lecturer::write(format, class, &stats, &settings, style);
         outputs.write(file, "report", text.as_bytes())?;
     }
     let status = if class.sheets.iter().any(|s| s.outcome.is_err()) {
@@ -113,9 +130,9 @@ fn class(
         return Ok((out, status));
     }
     let out = if json {
-        pretty(&crate::report::class::json(&class, style.lang))
+        pretty(&crate::report::class::json(class, style.lang))
     } else {
-        crate::report::class::table(&class, style.lang)
+        crate::report::class::table(class, style.lang)
     };
     Ok((out, status))
 }
@@ -150,6 +167,7 @@ fn lone_sheet(file: &Path, who: String, m: Marking) -> Sheet {
         file: file.to_path_buf(),
         who,
         variant: Some(1),
+        drawn: Vec::new(),
         outcome: Ok(vec![(String::new(), m)]),
         note: None,
         identity: Default::default(),

@@ -5,6 +5,7 @@ pub mod args;
 pub mod calc;
 pub mod check;
 pub mod generate;
+pub mod moodle;
 pub mod practice;
 pub mod print;
 mod refused;
@@ -192,7 +193,9 @@ fn before_any_work(cli: &Cli, outputs: &Outputs) -> Result<()> {
         Command::Shade(a) => outputs.reads(a.lights.iter().map(PathBuf::as_path)),
         Command::Render(a) => outputs.reads([a.scene.as_path()]),
         Command::Check(a) => {
-            let inputs: Vec<PathBuf> = (a.answers.iter().chain([&a.file]))
+            let inputs: Vec<PathBuf> = (a.answers.iter())
+                .chain(a.moodle_responses.iter())
+                .chain([&a.file])
                 .flat_map(check::input_paths)
                 .collect();
             outputs.reads([a.file.as_path()]);

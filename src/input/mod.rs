@@ -9,6 +9,7 @@ pub mod ask;
 pub mod fields;
 pub mod lights;
 pub mod mesh;
+pub mod moodle_responses;
 pub mod part;
 pub mod problem;
 pub mod scene;

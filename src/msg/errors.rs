@@ -513,6 +513,12 @@ pub enum ErrMsg {
     NotAProblemOfExam(String, String),
     /// `--report` with an unknown extension: the path.
     ReportFormat(String),
+    /// A `--moodle-responses` file that is not Moodle's Responses report:
+    /// the column missing, or why it cannot be read.
+    NotResponses(String),
+    /// A Responses report without the question of each slot, for a quiz
+    /// whose problems have several variants.
+    NoQuestionText,
     /// `--report` without a folder of answers.
     ReportNeedsClass,
     /// `--roster` without a folder of answers.

@@ -72,6 +72,9 @@ pub enum ClassWord {
     Definitions,
     /// What a variant table's cell holds, and the test behind its flags.
     VariantsNote,
+    /// How the variants are counted when each problem's was drawn by
+    /// itself (a Moodle quiz's random slots).
+    DrawnNote,
     /// Heading: the class list.
     RosterHeading,
     /// Before the students of the class list with no answer file: how many.
@@ -296,6 +299,16 @@ pub enum DocWord {
     Warning,
     /// Before an error (a sheet's in its row, the program's on stderr).
     Error,
+    /// `check --moodle-responses`: attempts marked, of the report's attempts.
+    MoodleMarked(usize, usize),
+    /// An attempt not finished, not marked: the student, Moodle's state.
+    MoodleUnfinished(String, String),
+    /// A slot holding no question of the exam, skipped: the slot, the
+    /// beginning of its text.
+    MoodleForeign(usize, String),
+    /// A part that cannot be read: the student, the answer key, what was
+    /// typed (empty for an empty part).
+    MoodleUnreadable(String, String, String),
     /// Heading: the notes on the source.
     NotesOnSource,
     /// A true value.

@@ -17,6 +17,7 @@ pub mod latex;
 pub mod mathml;
 pub mod mistakes;
 pub mod moodle;
+pub mod moodle_grades;
 pub mod page;
 pub mod practice;
 pub mod quizfile;

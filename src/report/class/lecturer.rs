@@ -139,7 +139,7 @@ pub fn to_json(class: &Class, s: &Stats, settings: &Settings, lang: Lang) -> Val
             "student": sh.who, "file": sh.file.display().to_string(), "kept": kept.display().to_string(), "same": why.code(),
         }))).collect::<Vec<_>>(),
         "fits": class.marked().filter_map(|sh| sh.fits.map(|f| json!({
-            "student": sh.who, "file": sh.file.display().to_string(), "variant": sh.variant,
+            "student": sh.who, "file": sh.file.display().to_string(), "variant": super::variant_json(sh),
             "fits_variant": f.variant, "there": round4(f.there), "own": round4(f.own),
         }))).collect::<Vec<_>>(),
         "not_marked": class.sheets.iter().filter_map(|sh| sh.outcome.as_ref().err().map(|e| json!({

@@ -110,7 +110,7 @@ pub fn table(class: &Class, lang: Lang) -> String {
     for s in &class.sheets {
         let mut cells = vec![s.who.clone()];
         if class.exam {
-            cells.push(s.variant.map(|v| v.to_string()).unwrap_or_default());
+            cells.push(s.variant_label());
         }
         match &s.outcome {
             Ok(ms) => {
@@ -266,7 +266,7 @@ pub fn csv(sheets: &[Sheet], exam: bool, lang: Lang) -> String {
         .map(|s| {
             let mut row = vec![s.who.clone(), s.file.display().to_string()];
             if exam {
-                row.push(s.variant.map(|v| v.to_string()).unwrap_or_default());
+                row.push(s.variant_label());
             }
             match &s.outcome {
                 Ok(ms) => {
@@ -324,7 +324,7 @@ fn sheet_marks_json(s: &Sheet, exam: bool, lang: Lang) -> Value {
                 })
                 .collect();
             json!({
-                "student": s.who, "file": file, "variant": s.variant,
+                "student": s.who, "file": file, "variant": variant_json(s),
                 "score": { "points": score, "total": total },
                 "problems": problems,
             })
@@ -336,9 +336,19 @@ fn sheet_marks_json(s: &Sheet, exam: bool, lang: Lang) -> Value {
                 "error": { "field": e.field, "message": crate::report::words::words(&e.message, lang) },
             });
             if exam {
-                j["variant"] = json!(s.variant);
+                j["variant"] = variant_json(s);
             }
             j
         }
+    }
+}
+
+/// A sheet's variant in JSON: its number, or the list of each problem's
+/// variant when they were drawn from different variants (`[2, 1, 2]`).
+pub(super) fn variant_json(s: &Sheet) -> Value {
+    match s.drawn.first() {
+        Some(first) if s.drawn.iter().any(|d| d != first) => json!(s.drawn),
+        Some(first) => json!(first),
+        None => json!(s.variant),
     }
 }

@@ -338,6 +338,9 @@ fn exam_section(doc: Doc, s: &Stats, lang: Lang) -> String {
         .collect();
     out.push_str(&table(doc, &head, &rows));
     out.push_str(&para(doc, &esc(doc, &w(lang, C::VariantsNote))));
+    if s.drawn {
+        out.push_str(&para(doc, &esc(doc, &w(lang, C::DrawnNote))));
+    }
     out
 }
 
@@ -521,7 +524,7 @@ fn students_section(doc: Doc, class: &Class, s: &Stats, lang: Lang) -> String {
         .map(|sh| {
             let mut row = vec![esc(doc, &sh.who)];
             if class.exam {
-                row.push(sh.variant.map(|v| v.to_string()).unwrap_or_default());
+                row.push(sh.variant_label());
             }
             let score = dec(sh.score().unwrap_or(0.0), 4, words::of(lang).nums());
             row.push(format!("{score}/{}", sh.total().unwrap_or(0)));

@@ -182,6 +182,7 @@ mod tests {
             C::NotMarked,
             C::Definitions,
             C::VariantsNote,
+            C::DrawnNote,
             C::RosterHeading,
             C::RosterMissing(2),
             C::RosterNotListed(1),
@@ -272,6 +273,15 @@ mod tests {
             D::Variant,
             D::Warning,
             D::Error,
+            D::MoodleMarked(29, 30),
+            D::MoodleUnfinished("Eko".into(), "In progress".into()),
+            D::MoodleForeign(4, "What is a pixel?".into()),
+            D::MoodleUnreadable(
+                "Dewi".into(),
+                "problem-01.view.u".into(),
+                "tidak tahu".into(),
+            ),
+            D::MoodleUnreadable("Dewi".into(), "problem-01.view.u".into(), String::new()),
             D::NotesOnSource,
             D::Yes,
             D::No,
@@ -522,6 +532,7 @@ mod tests {
             | NotMarked
             | Definitions
             | VariantsNote
+            | DrawnNote
             | TooFewPerVariant { .. }
             | RosterHeading
             | RosterMissing(_)
@@ -575,6 +586,10 @@ mod tests {
             | D::Variant
             | D::Warning
             | D::Error
+            | D::MoodleMarked(..)
+            | D::MoodleUnfinished(..)
+            | D::MoodleForeign(..)
+            | D::MoodleUnreadable(..)
             | D::NotesOnSource
             | D::Yes
             | D::No

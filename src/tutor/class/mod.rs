@@ -9,6 +9,7 @@
 
 pub mod exam;
 pub mod fits;
+pub mod moodle;
 pub mod roster;
 pub mod same;
 pub mod stats;
@@ -134,6 +135,11 @@ pub struct Sheet {
     pub who: String,
     /// The variant answered (1-based; 1 for a lone problem), when known.
     pub variant: Option<usize>,
+    /// The exam's variant (1-based) of each problem, when the problems
+    /// come from different variants: a Moodle quiz's random slots draw
+    /// each problem's variant by itself, and `variant` is then the draw.
+    /// Empty when the whole sheet is `variant`.
+    pub drawn: Vec<usize>,
     /// The marking of each part (named as [`Part::name`]), or why the file
     /// could not be marked.
     pub outcome: Result<Vec<(String, Marking)>>,
@@ -160,6 +166,26 @@ impl Sheet {
     pub fn total(&self) -> Option<u32> {
         let m = self.outcome.as_ref().ok()?;
         Some(m.iter().map(|(_, m)| m.total()).sum())
+    }
+    /// The exam's variant of problem `p` (0-based) as the student had it.
+    pub fn variant_of(&self, p: usize) -> Option<usize> {
+        match self.drawn.is_empty() {
+            true => self.variant,
+            false => self.drawn.get(p).copied(),
+        }
+    }
+    /// The exam's variants the student had, once each problem's when they
+    /// differ: `3`, or `2/1/2` (problem 1 of variant 2, problem 2 of
+    /// variant 1, …).
+    pub fn variant_label(&self) -> String {
+        match self.drawn.first() {
+            Some(first) if self.drawn.iter().all(|d| d == first) => first.to_string(),
+            Some(_) => (self.drawn.iter())
+                .map(usize::to_string)
+                .collect::<Vec<_>>()
+                .join("/"),
+            None => self.variant.map(|v| v.to_string()).unwrap_or_default(),
+        }
     }
 }
 
@@ -254,6 +280,37 @@ fn mark_with(paper: &Paper, markers: &Markers, f: &Path) -> Sheet {
     };
     let identity = identity(&read, &stem);
     let read = read.map(|(s, answers, _)| (s, answers));
+    mark_read(paper, markers, f, (who, identity), read)
+}
+
+/// Marks answers given in memory (a Moodle quiz's attempts, [`moodle`]),
+/// each named and split as an answer file is.
+pub fn mark_given(
+    paper: &Paper,
+    settings: Settings,
+    given: impl Iterator<Item = (PathBuf, String, Answers)>,
+) -> Vec<Sheet> {
+    let markers = markers(paper, settings);
+    given
+        .map(|(f, who, answers)| {
+            let who = check::shown_name(&who);
+            let read = Ok((Some(who.clone()), answers, None));
+            let identity = identity(&read, &who);
+            let read = read.map(|(s, answers, _)| (s, answers));
+            mark_read(paper, &markers, &f, (who, identity), read)
+        })
+        .collect()
+}
+
+/// Marks answers read (from a file or given), for the student `who`
+/// with the identity that finds them twice.
+fn mark_read(
+    paper: &Paper,
+    markers: &Markers,
+    f: &Path,
+    (who, identity): (String, same::Identity),
+    read: Result<(Option<String>, Answers)>,
+) -> Sheet {
     let empty = matches!(&read, Ok((_, answers)) if answers.is_empty());
     let split = read.and_then(|(_, answers)| split(paper, &answers));
     let note = match &split {
@@ -276,6 +333,7 @@ fn mark_with(paper: &Paper, markers: &Markers, f: &Path) -> Sheet {
         file: f.to_path_buf(),
         who,
         variant,
+        drawn: Vec::new(),
         outcome,
         note,
         identity,

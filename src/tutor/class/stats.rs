@@ -241,6 +241,9 @@ pub struct Stats {
     pub problems: Vec<ProblemStats>,
     /// Per variant (an exam of several variants only).
     pub variants: Vec<VariantStats>,
+    /// Whether each problem's variant was drawn by itself (a Moodle quiz's
+    /// random slots, [`Sheet::drawn`]).
+    pub drawn: bool,
 }
 
 /// One problem of one variant solved once: its keys in the solution's order
@@ -267,6 +270,7 @@ pub fn of(class: &Class, paper: &Paper, settings: &Settings) -> Stats {
         histogram: histogram(&sheets),
         problems: problems(paper, &sheets),
         variants: variants(paper, &sheets),
+        drawn: sheets.iter().any(|s| !s.drawn.is_empty()),
     }
 }
 
@@ -500,28 +504,43 @@ fn share(m: &crate::tutor::check::Marking) -> f64 {
 
 /// Per variant of an exam: its students, their facility on each problem,
 /// and the problems where it is harder or easier than the rest of the
-/// class by the test of [`compare`].
+/// class by the test of [`compare`]. A problem's cell of variant v counts
+/// the students who had that problem of variant v, also when the sheet's
+/// problems were drawn from different variants ([`Sheet::drawn`]); the
+/// whole exam's facility is then not one variant's, and is left out.
 fn variants(paper: &Paper, sheets: &[&Sheet]) -> Vec<VariantStats> {
-    if !paper.exam || paper.variants.len() < 2 {
+    let drawn = sheets.iter().any(|s| !s.drawn.is_empty());
+    let count = match drawn {
+        true => sheets
+            .iter()
+            .flat_map(|s| s.drawn.iter().copied())
+            .max()
+            .unwrap_or(1),
+        false => paper.variants.len(),
+    };
+    if !paper.exam || count < 2 {
         return vec![];
     }
-    let count = paper.variants.len();
+    let problems = paper.variants[0].len();
     let mut out: Vec<VariantStats> = (1..=count)
         .map(|v| {
-            let whole: Vec<f64> = (sheets.iter())
-                .filter(|s| s.variant == Some(v))
+            let had = |s: &&&Sheet| (0..problems).any(|p| s.variant_of(p) == Some(v));
+            let whole: Vec<f64> = (sheets.iter().filter(had))
                 .filter_map(|s| Some(s.score()? / f64::from(s.total()?.max(1))))
                 .collect();
             VariantStats {
                 variant: v,
                 students: whole.len(),
-                facility: mean(&whole),
+                facility: mean(&whole).filter(|_| !drawn),
                 problems: vec![],
             }
         })
         .collect();
-    for part in &paper.variants[0] {
-        for (v, cell) in compared(&part.name, count, sheets).into_iter().enumerate() {
+    for (p, part) in paper.variants[0].iter().enumerate() {
+        for (v, cell) in compared(p, &part.name, count, sheets)
+            .into_iter()
+            .enumerate()
+        {
             out[v].problems.push(cell);
         }
     }
@@ -531,11 +550,11 @@ fn variants(paper: &Paper, sheets: &[&Sheet]) -> Vec<VariantStats> {
 /// One problem's cells of every variant: each variant's facility, and its
 /// test against the rest of the class (the students of the other
 /// variants), the p-values of the variants tested corrected together.
-fn compared(name: &str, count: usize, sheets: &[&Sheet]) -> Vec<VariantProblem> {
+fn compared(p: usize, name: &str, count: usize, sheets: &[&Sheet]) -> Vec<VariantProblem> {
     // each student's share of the problem's marks, by variant
     let mut shares: Vec<Vec<f64>> = vec![vec![]; count];
     for s in sheets {
-        let Some(v) = s.variant.filter(|v| (1..=count).contains(v)) else {
+        let Some(v) = s.variant_of(p).filter(|v| (1..=count).contains(v)) else {
             continue;
         };
         shares[v - 1].extend(parts_named(s, name).map(share));

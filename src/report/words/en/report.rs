@@ -68,6 +68,9 @@ impl ReportWords for En {
             C::VariantsNote => "Each cell is the variant's facility on the problem; n is the number of students who answered the variant. \
                  A variant is compared with the rest of the class only when both have at least 5 students: a two-proportion z-test of its facility \
                  against the rest's, the p-values of one problem's variants corrected together by Holm's method; ▼ harder (▲ easier) marks a corrected p below 0.05.".into(),
+            C::DrawnNote => "In the Moodle quiz each problem's variant was drawn by itself, so a student's variant is written per problem \
+                 (2/1/2: problem 1 of variant 2, problem 2 of variant 1, …). A problem's cell counts the students who had that problem \
+                 of that variant, n those who had any problem of it, and the whole exam is no one variant's.".into(),
             C::RosterHeading => "Class list".into(),
             C::RosterMissing(n) => format!("On the class list, no answer file ({n}):"),
             C::RosterNotListed(n) => format!("Answer files of no one on the class list ({n}):"),
@@ -184,6 +187,11 @@ impl ReportWords for En {
             D::Problem => "Problem".into(),
             D::Variant => "variant".into(),
             D::Error => "error".into(),
+            D::MoodleMarked(n, of) => format!("re-marked {n} of {of} attempts"),
+            D::MoodleUnfinished(who, state) => format!("not finished, not marked: {who} ({state})"),
+            D::MoodleForeign(slot, head) => format!("question {slot} is not a problem of this exam, skipped: {head}…"),
+            D::MoodleUnreadable(who, key, t) if t.is_empty() => format!("{who}: {key} left empty"),
+            D::MoodleUnreadable(who, key, t) => format!("{who}: {key} cannot be read as typed: \"{t}\""),
             D::Warning => "warning".into(),
             D::NotesOnSource => "Notes on the source".into(),
             D::Yes => "yes".into(),

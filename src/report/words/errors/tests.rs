@@ -125,6 +125,8 @@ pub fn every_error() -> Vec<ErrMsg> {
         ErrMsg::MarksMethodAsked(s("shade.diffuse")),
         ErrMsg::NotAProblemOfExam(s("view.n"), s("problem-01, problem-02")),
         ErrMsg::ReportFormat(s("class.txt")),
+        ErrMsg::NotResponses(s("no column Response 1")),
+        ErrMsg::NoQuestionText,
         ErrMsg::ReportNeedsClass,
         ErrMsg::RosterNeedsClass,
         ErrMsg::EmptyRoster(s("kelas.txt")),
@@ -421,6 +423,8 @@ fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want,
         | E::MarksMethodAsked(_)
         | E::NotAProblemOfExam(..)
         | E::ReportFormat(_)
+        | E::NotResponses(_)
+        | E::NoQuestionText
         | E::ReportNeedsClass
         | E::RosterNeedsClass
         | E::EmptyRoster(_)

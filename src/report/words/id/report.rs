@@ -69,6 +69,9 @@ impl ReportWords for Id {
             C::VariantsNote => "Setiap sel adalah tingkat kemudahan varian pada soal itu; n adalah banyaknya mahasiswa yang mengerjakan varian itu. \
                  Sebuah varian dibandingkan dengan sisa kelas hanya bila keduanya memiliki paling sedikit 5 mahasiswa: uji z dua proporsi untuk tingkat kemudahannya \
                  terhadap tingkat kemudahan sisa kelas, nilai p varian-varian satu soal dikoreksi bersama dengan metode Holm; ▼ lebih sulit (▲ lebih mudah) menandai nilai p terkoreksi di bawah 0,05.".into(),
+            C::DrawnNote => "Dalam kuis Moodle varian setiap soal diundi sendiri-sendiri, jadi varian seorang mahasiswa ditulis per soal \
+                 (2/1/2: soal 1 dari varian 2, soal 2 dari varian 1, …). Sel sebuah soal menghitung mahasiswa yang mendapat soal itu \
+                 dari varian itu, n mereka yang mendapat soal mana pun dari varian itu, dan ujian utuh bukan milik satu varian.".into(),
             C::RosterHeading => "Daftar kelas".into(),
             C::RosterMissing(n) => format!("Ada di daftar kelas, tanpa berkas jawaban ({n}):"),
             C::RosterNotListed(n) => format!("Berkas jawaban yang tidak ada di daftar kelas ({n}):"),
@@ -186,6 +189,11 @@ impl ReportWords for Id {
             D::Problem => "Soal".into(),
             D::Variant => "varian".into(),
             D::Error => "kesalahan".into(),
+            D::MoodleMarked(n, of) => format!("{n} dari {of} percobaan dinilai ulang"),
+            D::MoodleUnfinished(who, state) => format!("belum selesai, tidak dinilai: {who} ({state})"),
+            D::MoodleForeign(slot, head) => format!("soal {slot} bukan soal ujian ini, dilewati: {head}…"),
+            D::MoodleUnreadable(who, key, t) if t.is_empty() => format!("{who}: {key} dibiarkan kosong"),
+            D::MoodleUnreadable(who, key, t) => format!("{who}: {key} tidak terbaca seperti diketik: \"{t}\""),
             D::Warning => "peringatan".into(),
             D::NotesOnSource => "Catatan tentang sumber".into(),
             D::Yes => "ya".into(),

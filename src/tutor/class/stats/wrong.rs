@@ -116,7 +116,8 @@ pub(super) fn wrong_answers(
             else {
                 continue;
             };
-            let (Some(given), variant) = (&a.given_value, s.variant.filter(|_| several)) else {
+            let variant = s.variant_of(key.problem.unwrap_or(0)).filter(|_| several);
+            let Some(given) = &a.given_value else {
                 continue;
             };
             let at = out

@@ -1,0 +1,265 @@
+//! A Moodle quiz's attempts as a class's sheets: each finished attempt
+//! becomes the answers an exam's answer file would hold (`variant = N`,
+//! each problem's keys), so it is marked by the same judge, scheme,
+//! follow-through and diagnosis as a folder of answer files.
+//!
+//! Which problem and variant a slot holds: the Responses report names no
+//! question (a random slot draws one of the category's variants), but it
+//! gives each slot's question text, which begins with the problem's
+//! statement as `generate` writes it; a slot whose text begins with no
+//! statement of the exam is a foreign question, listed and skipped. When
+//! the report does not show the question text, slot i is problem i, which
+//! only tells the variant when the exam has one.
+//!
+//! Which key a blank answers: a Cloze question's blanks are the scheme's
+//! keys in order, each key's value's leaves depth first (the quiz's
+//! `blanks`), so a key of k leaves takes the next k parts; a one-leaf key
+//! is answered by its part's text, a vector or matrix by the list of its
+//! parts, shaped as the key's value.
+
+use super::{Paper, Sheet};
+use crate::error::{Error, Result};
+use crate::input::answer::number;
+use crate::input::moodle_responses::{parts, Attempt, Responses};
+use crate::msg::ErrMsg;
+use crate::stages::trace::Val;
+use crate::tutor::check::{Answers, Marker, Settings};
+use crate::tutor::generate::quiz::{typed_leaves, Typed};
+use crate::tutor::key::Key;
+use crate::tutor::solution::value_of;
+use std::path::PathBuf;
+
+/// What the marking of a Responses report found besides the marks.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Findings {
+    /// Attempts not finished (not marked): the student and the state.
+    pub unfinished: Vec<(String, String)>,
+    /// Slots holding a question that is not the exam's: the slot (1-based)
+    /// and the beginning of its text, once per different question.
+    pub foreign: Vec<(usize, String)>,
+    /// Parts grafika cannot read: the student, the answer
+    /// (`problem-01.view.u`) and what was typed (empty for an empty part).
+    pub unreadable: Vec<(String, String, String)>,
+}
+
+/// One finished attempt as an answer file would hold it.
+#[derive(Clone, Debug)]
+pub struct Given {
+    /// The attempt (its index in the report).
+    pub attempt: usize,
+    /// How the sheet is named: `row 12` of the report.
+    pub label: PathBuf,
+    /// The student.
+    pub who: String,
+    /// The answers, as an exam's answer file gives them.
+    pub answers: Answers,
+    /// The exam's variant (1-based) of each problem the attempt drew.
+    pub drawn: Vec<usize>,
+}
+
+/// The blanks of each problem of each variant: every key with its value.
+type Shapes = Vec<Vec<Vec<(Key, Val)>>>;
+
+fn shapes(paper: &Paper, settings: Settings) -> Result<Shapes> {
+    (paper.variants.iter())
+        .map(|v| {
+            v.iter()
+                .map(|p| {
+                    let m = Marker::new(&p.problem, settings)?;
+                    let keys = m.scheme.keys();
+                    Ok(keys
+                        .filter_map(|k| Some((k.clone(), value_of(&m.result, k)?.clone())))
+                        .collect())
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// The finished attempts of a report as answers, and what was found
+/// besides; with the paper they answer: a random slot draws each
+/// problem's variant by itself, so an attempt answers a draw (problem 1 of
+/// variant 2, problem 2 of variant 1, …), and each different draw is one
+/// variant of the paper returned, in the order first met.
+pub fn given(
+    paper: &Paper,
+    settings: Settings,
+    r: &Responses,
+) -> Result<(Paper, Vec<Given>, Findings)> {
+    let shapes = shapes(paper, settings)?;
+    let statements = statements(paper);
+    let shown = r
+        .attempts
+        .iter()
+        .any(|a| a.slots.iter().any(|s| !s.question.is_empty()));
+    if !shown && paper.variants.len() > 1 {
+        return Err(Error::why("moodle-responses", ErrMsg::NoQuestionText));
+    }
+    let mut f = Findings::default();
+    let mut out = Vec::new();
+    let mut draws: Vec<Vec<usize>> = Vec::new();
+    for (i, a) in r.attempts.iter().enumerate() {
+        if !a.finished {
+            f.unfinished.push((who(a), a.state.clone()));
+            continue;
+        }
+        let mut draw: Vec<usize> = vec![0; shapes[0].len()];
+        let mut any = false;
+        let mut answers: Answers = Vec::new();
+        for (s, slot) in a.slots.iter().enumerate() {
+            let found = match shown {
+                true => find(&statements, &slot.question, s),
+                false => (s < shapes[0].len()).then_some((0, s)),
+            };
+            let Some((v, p)) = found else {
+                let head: String = slot.question.chars().take(60).collect();
+                if !f.foreign.iter().any(|(n, h)| *n == s + 1 && *h == head) {
+                    f.foreign.push((s + 1, head));
+                }
+                continue;
+            };
+            draw[p] = v;
+            any = true;
+            let typed = slot.response.as_deref().and_then(parts).unwrap_or_default();
+            let name = &paper.variants[v][p].name;
+            answers.extend(answers_of(
+                &shapes[v][p],
+                &typed,
+                name,
+                &who(a),
+                &mut f.unreadable,
+            ));
+        }
+        if !any {
+            continue;
+        }
+        let v = match draws.iter().position(|d| *d == draw) {
+            Some(v) => v,
+            None => {
+                draws.push(draw);
+                draws.len() - 1
+            }
+        };
+        answers.insert(0, ("variant".into(), toml::Value::Integer(v as i64 + 1)));
+        out.push(Given {
+            attempt: i,
+            label: PathBuf::from(format!("row {}", a.row)),
+            who: who(a),
+            answers,
+            drawn: draws[v].iter().map(|d| d + 1).collect(),
+        });
+    }
+    if draws.is_empty() {
+        draws.push(vec![0; shapes[0].len()]); // no attempt marked: the first variant
+    }
+    let drawn = Paper {
+        title: paper.title.clone(),
+        variants: (draws.iter())
+            .map(|d| {
+                d.iter()
+                    .enumerate()
+                    .map(|(p, &v)| paper.variants[v][p].clone())
+                    .collect()
+            })
+            .collect(),
+        exam: true,
+    };
+    Ok((drawn, out, f))
+}
+
+/// How a student is named: the name, else the email, else the ID number.
+pub fn who(a: &Attempt) -> String {
+    [&a.name, &a.email, &a.id_number]
+        .into_iter()
+        .find(|s| !s.is_empty())
+        .cloned()
+        .unwrap_or_else(|| format!("row {}", a.row))
+}
+
+/// Each problem's statement, whitespace collapsed, by variant.
+fn statements(paper: &Paper) -> Vec<Vec<String>> {
+    (paper.variants.iter())
+        .map(|v| {
+            v.iter()
+                .map(|p| collapse(p.problem.statement.as_deref().unwrap_or("")))
+                .collect()
+        })
+        .collect()
+}
+
+fn collapse(s: &str) -> String {
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// The variant and problem (0-based) whose statement begins the question
+/// text; of several, the one whose problem is the slot's.
+fn find(statements: &[Vec<String>], question: &str, slot: usize) -> Option<(usize, usize)> {
+    let q = collapse(question);
+    let all: Vec<(usize, usize)> = (statements.iter().enumerate())
+        .flat_map(|(v, ps)| ps.iter().enumerate().map(move |(p, s)| (v, p, s)))
+        .filter(|(_, _, s)| !s.is_empty() && q.starts_with(s.as_str()))
+        .map(|(v, p, _)| (v, p))
+        .collect();
+    all.iter()
+        .find(|(_, p)| *p == slot)
+        .or(all.first())
+        .copied()
+}
+
+/// The answers of one problem from its parts in order: `problem-01.view.u`
+/// and its value (a part's text, or a list shaped as the key's value);
+/// the parts that cannot be read are noted.
+fn answers_of(
+    keys: &[(Key, Val)],
+    typed: &[String],
+    name: &str,
+    who: &str,
+    unreadable: &mut Vec<(String, String, String)>,
+) -> Answers {
+    let mut next = typed.iter().map(|s| s.trim());
+    let mut out = Vec::new();
+    for (key, val) in keys {
+        let leaves = typed_leaves(key, val, 1e-3);
+        let texts: Vec<&str> = leaves.iter().map(|_| next.next().unwrap_or("")).collect();
+        let full = format!("{name}.{key}");
+        for ((leaf, _), t) in leaves.iter().zip(&texts) {
+            let bad = t.is_empty() || (matches!(leaf, Typed::Num(_)) && number(t).is_err());
+            if bad {
+                unreadable.push((who.to_string(), full.clone(), t.to_string()));
+            }
+        }
+        if texts.iter().all(|t| t.is_empty()) {
+            continue; // not answered: marked as missing
+        }
+        let mut it = texts.into_iter();
+        out.push((full, shaped(val, &mut it)));
+    }
+    out
+}
+
+/// The parts' texts shaped as the key's value: a leaf is its text, a list
+/// the list of its items.
+fn shaped<'a>(like: &Val, texts: &mut impl Iterator<Item = &'a str>) -> toml::Value {
+    match like {
+        Val::List(items) => toml::Value::Array(items.iter().map(|x| shaped(x, texts)).collect()),
+        Val::Map(kv) => toml::Value::Array(kv.iter().map(|(_, x)| shaped(x, texts)).collect()),
+        Val::Said(_) => toml::Value::Array(Vec::new()),
+        _ => toml::Value::String(texts.next().unwrap_or("").to_string()),
+    }
+}
+
+/// Marks the given attempts as a class (see [`super::mark_given`]), each
+/// sheet with the exam's variant of each problem it drew.
+pub fn sheets(paper: &Paper, settings: Settings, given: &[Given]) -> Vec<Sheet> {
+    let mut sheets = super::mark_given(
+        paper,
+        settings,
+        given
+            .iter()
+            .map(|g| (g.label.clone(), g.who.clone(), g.answers.clone())),
+    );
+    for (s, g) in sheets.iter_mut().zip(given) {
+        s.drawn.clone_from(&g.drawn);
+    }
+    sheets
+}
