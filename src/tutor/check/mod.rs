@@ -14,7 +14,8 @@
 //! coarse"; figures are counted from the value's leading digit. An answer
 //! that is a catalog mistake's value is wrong and names the mistake.
 //!
-//! Verdicts and their stable codes (for autograders):
+//! Verdicts ([`Verdict`]) and their stable codes (`Verdict::name`, for
+//! autograders):
 //!
 //! | verdict | code | meaning | marks |
 //! |---|---|---|---|
