@@ -117,7 +117,7 @@ fn every_generated_problem_solves_and_its_key_scores_full_marks() {
                     g.body,
                     m.answers
                         .iter()
-                        .filter(|a| a.verdict != Verdict::Correct)
+                        .filter(|a| !a.verdict.is_correct())
                         .collect::<Vec<_>>()
                 );
             }

@@ -17,8 +17,8 @@ pub fn to_json(m: &Marking, lang: Lang) -> Value {
         .map(|a| {
             json!({
                 "key": a.key,
-                "verdict": a.verdict.as_str(),
-                "code": a.code,
+                "verdict": a.verdict.word(),
+                "code": a.verdict.name(),
                 "given": a.given_value.as_ref().and_then(|g| serde_json::to_value(g).ok()),
                 "expected": a.expected.as_ref().map(|e| json!({ "decimal": value_json(e), "exact": exact_json(e) })),
                 "note": words(&a.note, lang),
@@ -38,15 +38,10 @@ pub fn to_json(m: &Marking, lang: Lang) -> Value {
         "score": { "points": m.score(), "total": m.total(), "fraction": m.fraction(),
                    "percent": crate::report::words::report::percent(m.score(), m.total()),
                    "method": m.method_marks() },
-        "counts": {
-            "correct": m.count(Verdict::Correct), "too_coarse": m.count(Verdict::TooCoarse),
-            "wrong": m.count(Verdict::Wrong), "missing": m.count(Verdict::Missing),
-            "unparseable": m.count(Verdict::Unparseable),
-            "follow_through": m.follow_through(),
-        },
+        "counts": counts_json(m),
         "working": {
             "answers": m.working().count(),
-            "correct": m.working().filter(|a| a.verdict == Verdict::Correct).count(),
+            "correct": m.working().filter(|a| a.verdict.is_correct()).count(),
         },
         "answers": answers,
         "diagnosis": m.diagnoses.iter().map(|d| json!({
@@ -57,15 +52,17 @@ pub fn to_json(m: &Marking, lang: Lang) -> Value {
     })
 }
 
-/// The verdicts, in the order the score line and the class's tables count
-/// them.
-pub const VERDICTS: [Verdict; 5] = [
-    Verdict::Correct,
-    Verdict::TooCoarse,
-    Verdict::Wrong,
-    Verdict::Missing,
-    Verdict::Unparseable,
-];
+/// The answers asked counted by verdict word, in the order of
+/// [`Verdict::words`] (`correct`, `too_coarse`, …), then those credited by
+/// follow-through (counted among the correct ones too).
+fn counts_json(m: &Marking) -> Value {
+    let mut counts = serde_json::Map::new();
+    for v in Verdict::words() {
+        counts.insert(v.word().to_string(), json!(m.count(v)));
+    }
+    counts.insert("follow_through".to_string(), json!(m.follow_through()));
+    Value::Object(counts)
+}
 
 /// One student's marking of a lone problem or an exam, as text or JSON: a
 /// lone problem (named "") as [`to_text`] / [`to_json`]; an exam's problems
@@ -243,8 +240,8 @@ fn score_text(m: &Marking, style: &Style) -> String {
     let c = |v| m.count(v);
     let score = style.dec(crate::report::fmt_dec(m.score(), 4));
     let said = words::of(style.lang);
-    let counts: Vec<String> = (VERDICTS.iter())
-        .map(|v| format!("{} {}", c(*v), said.verdict(*v)))
+    let counts: Vec<String> = (Verdict::words().into_iter())
+        .map(|v| format!("{} {}", c(v), said.verdict(v)))
         .collect();
     let mut out = format!(
         "\n{}: {score}/{} = {} ({})\n",
@@ -259,10 +256,7 @@ fn score_text(m: &Marking, style: &Style) -> String {
     }
     let working: Vec<&Marked> = m.working().collect();
     if !working.is_empty() {
-        let right = working
-            .iter()
-            .filter(|a| a.verdict == Verdict::Correct)
-            .count();
+        let right = working.iter().filter(|a| a.verdict.is_correct()).count();
         out += &(w(style, K::WorkingCount(working.len(), right)) + "\n");
     }
     out

@@ -11,6 +11,7 @@ use crate::report::mistakes::mistake_text;
 use crate::report::words;
 use crate::report::{exact_json, fmt_dec, step_json, value_json, Style};
 use crate::stages::trace::{Step, Val};
+use crate::tutor::check::Verdict;
 use crate::tutor::key::{self, Field, Key};
 use crate::tutor::practice::{Again, Event, Outcome, Plan, Summary};
 use serde_json::{json, Value};
@@ -206,14 +207,16 @@ fn again_text(a: &Again, look: &Look) -> String {
 
 /// The verdict's first line, and its colour.
 fn verdict_head(o: &Outcome, lang: Lang) -> (Tone, String) {
-    let (tone, w) = match o.code {
-        "correct.exact" => (Tone::Good, P::Exact),
-        "correct.tolerance" => (Tone::Good, P::Tolerance),
-        "correct.rounded" => (Tone::Good, P::Rounded),
-        "correct.follow_through" => (Tone::Partial, P::FollowThrough),
-        "too_coarse" => (Tone::Partial, P::TooCoarse),
-        "wrong" => (Tone::Bad, P::Wrong),
-        _ => {
+    let (tone, w) = match o.verdict {
+        Verdict::Exact => (Tone::Good, P::Exact),
+        Verdict::Tolerance => (Tone::Good, P::Tolerance),
+        Verdict::Rounded => (Tone::Good, P::Rounded),
+        Verdict::FollowThrough => (Tone::Partial, P::FollowThrough),
+        Verdict::TooCoarse => (Tone::Partial, P::TooCoarse),
+        Verdict::Wrong => (Tone::Bad, P::Wrong),
+        // an empty answer is asked again before it is judged, so a
+        // missing one is said as one that cannot be read
+        Verdict::Unparseable | Verdict::Missing => {
             let why = unread_why(&o.note, lang);
             let why = if why.is_empty() {
                 String::new()
@@ -281,7 +284,7 @@ fn verdict_text(o: &Outcome, look: &Look) -> String {
         let line = look.style.w(&o.note);
         out.push_str(&format!("{}\n", wrap_after("    ", &line, "      ")));
     }
-    if o.code == "wrong" && o.mistakes.is_empty() {
+    if o.verdict == Verdict::Wrong && o.mistakes.is_empty() {
         let tip = look.w(P::NoMistakeTip);
         out.push_str(&look.paint(Tone::Quiet, &wrap_after("    ", &tip, "    ")));
         out.push('\n');
@@ -447,7 +450,7 @@ pub fn event_json(ev: &Event, lang: Lang) -> Value {
         Event::Verdict(o) => json!({
             "event": "verdict", "key": o.key.to_string(), "given": o.given,
             "read": o.read.as_ref().map(|r| value_json(&r.value())),
-            "verdict": o.verdict.as_str(), "code": o.code,
+            "verdict": o.verdict.word(), "code": o.verdict.name(),
             "expected": value(&o.expected), "note": w(&o.note),
             "mistakes": o.mistakes,
             "why": o.why.as_ref().map(w),

@@ -27,7 +27,7 @@ use crate::input::problem::ProblemIn;
 use crate::msg::{Msg, Said};
 use crate::stages::trace::{Name, Step, Val};
 use crate::tutor::check::Follow;
-use crate::tutor::check::{agrees, Marker, Settings, Verdict, FOLLOW_THROUGH};
+use crate::tutor::check::{Marker, Settings, Verdict};
 use crate::tutor::diagnose::Code;
 use crate::tutor::generate::{Difficulty, Topic};
 use crate::tutor::key::{Edge, Field, Key, Part, Shading, Value};
@@ -268,6 +268,16 @@ pub enum Again {
     NoMoreHints,
 }
 
+/// How a value was left without an answer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unanswered {
+    /// `skip`: it has no verdict yet, and may still be answered.
+    Skipped,
+    /// `show`, or shown by another value's step or hint: it counts as not
+    /// answered.
+    Revealed,
+}
+
 /// How one answer (or `show`, `skip`) ended.
 #[derive(Clone, Debug)]
 pub struct Outcome {
@@ -277,10 +287,11 @@ pub struct Outcome {
     pub given: Option<String>,
     /// The answer as read (None when it could not be read, or none given).
     pub read: Option<Read>,
-    /// The verdict (`Missing` when skipped or revealed).
+    /// The verdict (`check`'s, or follow-through; `Missing` when skipped
+    /// or revealed).
     pub verdict: Verdict,
-    /// `check`'s code, `correct.follow_through`, or `skipped` / `revealed`.
-    pub code: &'static str,
+    /// How the value was left without an answer (None when answered).
+    pub unanswered: Option<Unanswered>,
     /// How it was judged (check's note).
     pub note: Msg,
     /// grafika's value.
@@ -464,7 +475,7 @@ impl<'a> Session<'a> {
     fn scored_here(&self) -> bool {
         self.scored[self.pos]
             .as_ref()
-            .is_some_and(|o| o.code != "skipped")
+            .is_some_and(|o| o.unanswered != Some(Unanswered::Skipped))
     }
 
     /// Takes one input; returns the events it causes.
@@ -503,8 +514,11 @@ impl<'a> Session<'a> {
             Input::Show | Input::Skip => {
                 let show = input == Input::Show;
                 if !self.scored_here() {
-                    let code = if show { "revealed" } else { "skipped" };
-                    self.scored[self.pos] = Some(unanswered(item, code));
+                    let how = match show {
+                        true => Unanswered::Revealed,
+                        false => Unanswered::Skipped,
+                    };
+                    self.scored[self.pos] = Some(unanswered(item, Some(how)));
                 }
                 let ev = if show {
                     let also = item.step.as_ref().map_or(vec![], |s| self.reveal(s, true));
@@ -528,7 +542,7 @@ impl<'a> Session<'a> {
                     outcome.retry = true;
                     outcome.shown = self.scored[self.pos]
                         .as_ref()
-                        .is_some_and(|o| o.code == "revealed");
+                        .is_some_and(|o| o.unanswered == Some(Unanswered::Revealed));
                     self.retries.push(outcome.clone());
                 } else {
                     self.scored[self.pos] = Some(outcome.clone());
@@ -547,11 +561,13 @@ impl<'a> Session<'a> {
     fn reveal(&mut self, printed: &Step, whole: bool) -> Vec<Key> {
         let mut also = Vec::new();
         for (i, item) in self.plan.items.iter().enumerate() {
-            let open = self.scored[i].as_ref().is_none_or(|o| o.code == "skipped");
+            let open = self.scored[i]
+                .as_ref()
+                .is_none_or(|o| o.unanswered == Some(Unanswered::Skipped));
             if i == self.pos || !open || !prints(printed, item, whole) {
                 continue;
             }
-            self.scored[i] = Some(unanswered(item, "revealed"));
+            self.scored[i] = Some(unanswered(item, Some(Unanswered::Revealed)));
             also.push(item.key.clone());
         }
         also
@@ -577,7 +593,7 @@ impl<'a> Session<'a> {
         self.latest
             .iter()
             .flatten()
-            .find(|o| o.key == *key && (o.verdict == Verdict::Wrong || o.code == FOLLOW_THROUGH))
+            .find(|o| o.key == *key && matches!(o.verdict, Verdict::Wrong | Verdict::FollowThrough))
             .and_then(|o| o.read.clone())
     }
 
@@ -593,13 +609,11 @@ impl<'a> Session<'a> {
             given: Some(text.to_string()),
             read: j.read,
             verdict: j.verdict,
-            code: j.code,
             note: j.note,
-            ..unanswered(item, "")
+            ..unanswered(item, None)
         };
         if out.verdict == Verdict::Wrong && matches!(out.note, Msg::CountMismatch(..)) {
             out.verdict = Verdict::Unparseable;
-            out.code = "unparseable";
             return out;
         }
         let Some(read) = out.read.clone().filter(|_| out.verdict == Verdict::Wrong) else {
@@ -609,8 +623,7 @@ impl<'a> Session<'a> {
         if !j.mistakes.contains(&Code::CopiedMisprint) {
             match m.follow(key, &read, &own) {
                 Follow::Credited(ft) => {
-                    out.verdict = Verdict::Correct;
-                    out.code = FOLLOW_THROUGH;
+                    out.verdict = Verdict::FollowThrough;
                     out.note = Msg::FollowThrough;
                     out.follow_through = Some(ft);
                     return out;
@@ -623,7 +636,7 @@ impl<'a> Session<'a> {
             .latest
             .iter()
             .flatten()
-            .filter(|o| agrees(o.verdict, o.code))
+            .filter(|o| o.verdict.agrees())
             .filter_map(|o| Some((&o.key, o.read.as_ref()?)))
             .collect();
         out.mistakes = m.fitting(key, &read, &j.mistakes, &agreed);
@@ -652,17 +665,17 @@ impl<'a> Session<'a> {
             points,
             total,
             steps: self.plan.items.len(),
-            correct: count(&|o| o.verdict == Verdict::Correct),
-            follow_through: count(&|o| o.code == FOLLOW_THROUGH),
+            correct: count(&|o| o.verdict.is_correct()),
+            follow_through: count(&|o| o.verdict == Verdict::FollowThrough),
             too_coarse: count(&|o| o.verdict == Verdict::TooCoarse),
             wrong: count(&|o| o.verdict == Verdict::Wrong),
-            skipped: count(&|o| o.code == "skipped"),
-            revealed: count(&|o| o.code == "revealed"),
+            skipped: count(&|o| o.unanswered == Some(Unanswered::Skipped)),
+            revealed: count(&|o| o.unanswered == Some(Unanswered::Revealed)),
             unanswered: self.plan.items.len() - done.len(),
             hints: self.hints.iter().map(|&h| h as usize).sum(),
             retries: self.retries.len(),
             retries_correct: (self.retries.iter())
-                .filter(|o| o.verdict == Verdict::Correct)
+                .filter(|o| o.verdict.is_correct())
                 .count(),
             next: self.next(points, &done),
             mistakes,
@@ -726,15 +739,15 @@ impl<'a> Session<'a> {
     }
 }
 
-/// A value with no answer: `revealed` or `skipped` (and the outcome a
-/// judged answer starts from).
-fn unanswered(item: &Item, code: &'static str) -> Outcome {
+/// A value with no answer: revealed or skipped (and, with None, the
+/// outcome a judged answer starts from).
+fn unanswered(item: &Item, how: Option<Unanswered>) -> Outcome {
     Outcome {
         key: item.key.clone(),
         given: None,
         read: None,
         verdict: Verdict::Missing,
-        code,
+        unanswered: how,
         note: Msg::default(),
         expected: item.expected.clone(),
         follow_through: None,
@@ -910,13 +923,13 @@ mod tests {
         s.start();
         // n = Pe − Pr = (4, 3, 0) not divided by |Pe − Pr| = 5: wrong
         assert_eq!(
-            verdict(&s.handle(Input::Answer("4, 3, 0".into()))).code,
-            "wrong"
+            verdict(&s.handle(Input::Answer("4, 3, 0".into()))).verdict,
+            Verdict::Wrong
         );
         s.handle(Input::Back);
         // right the second time: shown, counted apart
         let again = s.handle(Input::Answer("4/5, 3/5, 0".into()));
-        assert!(verdict(&again).retry && verdict(&again).verdict == Verdict::Correct);
+        assert!(verdict(&again).retry && verdict(&again).verdict.is_correct());
         // u revealed, then back and answered: still revealed
         s.handle(Input::Show);
         s.handle(Input::Back);
@@ -950,7 +963,7 @@ mod tests {
         s.start();
         assert_eq!(
             verdict(&s.handle(Input::Answer("0.0414".into()))).verdict,
-            Verdict::Correct
+            Verdict::Tolerance // 0.0414 is 0.05 % off (√2 − 1)/10 = 0.041421
         );
         let shown = s.handle(Input::Show);
         let also = shown.iter().find_map(|e| match e {
@@ -966,10 +979,7 @@ mod tests {
         for t in ["-0.0828", "0.0828", "0.0828", "0.1657"] {
             let o = s.handle(Input::Answer(t.into()));
             let o = verdict(&o);
-            assert!(
-                o.verdict == Verdict::Correct && o.retry && o.shown,
-                "{t}: {o:?}"
-            );
+            assert!(o.verdict.is_correct() && o.retry && o.shown, "{t}: {o:?}");
         }
         let sum = s.summary();
         assert_eq!((sum.points, sum.correct, sum.revealed), (1.0, 1, 5));

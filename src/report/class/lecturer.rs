@@ -13,8 +13,8 @@ use crate::report::doc::Doc;
 use crate::report::lang::Lang;
 use crate::report::mistakes::mistake_text;
 use crate::report::{exact_json, value_json, Style};
-use crate::tutor::check::Settings;
-use crate::tutor::class::stats::{compare, Flag, Gap, Stats, StepRef, CODES};
+use crate::tutor::check::{Settings, Verdict};
+use crate::tutor::class::stats::{compare, Flag, Gap, Stats, StepRef};
 use crate::tutor::class::Class;
 use crate::tutor::class::ClassKey;
 use serde_json::{json, Value};
@@ -91,7 +91,7 @@ fn step_json(s: &Option<StepRef>, lang: Lang) -> Value {
 /// `wrong_answers`, `histogram`, and `problems`, `variants`, `not_marked`.
 pub fn to_json(class: &Class, s: &Stats, settings: &Settings, lang: Lang) -> Value {
     let keys: Vec<Value> = s.keys.iter().map(|k| {
-        let counts: serde_json::Map<String, Value> = k.counts.iter().map(|(c, n)| (c.clone(), json!(n))).collect();
+        let counts: serde_json::Map<String, Value> = k.counts.iter().map(|(v, n)| (v.name().to_string(), json!(n))).collect();
         json!({
             "key": k.key, "students": k.students, "facility": round4(k.facility),
             "discrimination": k.discrimination.map(round4), "point_biserial": k.point_biserial.map(round4),
@@ -153,14 +153,8 @@ pub fn to_json(class: &Class, s: &Stats, settings: &Settings, lang: Lang) -> Val
 /// D, r, flags, the mistakes that explain it and how many wrong answers no
 /// mistake explains.
 pub fn to_csv(s: &Stats) -> String {
-    let mut codes: Vec<String> = CODES.iter().map(|c| c.to_string()).collect();
-    for (c, _) in s.keys.iter().flat_map(|k| &k.counts) {
-        if !codes.contains(c) {
-            codes.push(c.clone());
-        }
-    }
     let mut header: Vec<&str> = vec!["key", "students"];
-    header.extend(codes.iter().map(|c| c.as_str()));
+    header.extend(Verdict::ALL.map(Verdict::name));
     header.extend([
         "facility",
         "discrimination",
@@ -175,7 +169,7 @@ pub fn to_csv(s: &Stats) -> String {
         .iter()
         .map(|k| {
             let mut row = vec![k.key.to_string(), k.students.to_string()];
-            row.extend(codes.iter().map(|c| k.count(c).to_string()));
+            row.extend(Verdict::ALL.map(|v| k.count(v).to_string()));
             row.extend([
                 round4(k.facility).to_string(),
                 opt(k.discrimination),

@@ -8,11 +8,11 @@ mod page;
 
 use crate::error::Error;
 use crate::msg::ClassWord as C;
-use crate::report::check::{to_json, VERDICTS};
+use crate::report::check::to_json;
 use crate::report::lang::Lang;
 use crate::report::words;
 use crate::report::words::cut_message;
-use crate::tutor::check::Marking;
+use crate::tutor::check::{Marking, Verdict};
 use crate::tutor::class::{Class, Note, Sheet, Skip};
 use serde_json::{json, Value};
 
@@ -63,12 +63,12 @@ fn mistakes_said(ms: &[(String, Marking)], lang: Lang) -> String {
 }
 
 /// A sheet's counts over all its parts: score, total, each verdict's (in
-/// the order of [`VERDICTS`], the columns'), follow-through.
+/// the order of [`Verdict::words`], the columns'), follow-through.
 fn counts(ms: &[(String, Marking)]) -> (f64, usize, [usize; 6]) {
     let sum = |f: &dyn Fn(&Marking) -> usize| ms.iter().map(|(_, m)| f(m)).sum::<usize>();
     let mut n = [0; 6];
-    for (i, v) in VERDICTS.iter().enumerate() {
-        n[i] = sum(&|m: &Marking| m.count(*v));
+    for (i, v) in Verdict::words().into_iter().enumerate() {
+        n[i] = sum(&|m: &Marking| m.count(v));
     }
     n[5] = sum(&|m: &Marking| m.follow_through());
     (
@@ -82,7 +82,11 @@ fn counts(ms: &[(String, Marking)]) -> (f64, usize, [usize; 6]) {
 pub fn class_header(lang: Lang) -> Vec<String> {
     let w = words::of(lang);
     let mut header = vec![w.class(&C::Student), w.class(&C::Score)];
-    header.extend(VERDICTS.map(|v| w.verdict(v).to_string()));
+    header.extend(
+        Verdict::words()
+            .into_iter()
+            .map(|v| w.verdict(v).to_string()),
+    );
     header.extend([C::FollowThrough, C::Mistakes].map(|k| w.class(&k)));
     header
 }
@@ -237,30 +241,24 @@ fn round4(x: f64) -> f64 {
     (x * 1e4).round() / 1e4
 }
 
-/// The CSV columns (docs/spec.md §5); an exam's CSV has `variant` after `file`.
-pub const CSV_HEADER: [&str; 12] = [
-    "student",
-    "file",
-    "score",
-    "total",
-    "correct",
-    "too_coarse",
-    "wrong",
-    "missing",
-    "unparseable",
-    "follow_through",
-    "mistakes",
-    "error",
-];
+/// The CSV columns (docs/spec.md §5): the student, the score, each
+/// verdict word's count (`correct`, `too_coarse`, …), follow-through, the
+/// mistakes and the error; an exam's CSV has `variant` after `file`.
+fn csv_header(exam: bool) -> Vec<&'static str> {
+    let mut header = vec!["student", "file", "score", "total"];
+    if exam {
+        header.insert(2, "variant");
+    }
+    header.extend(Verdict::words().into_iter().map(Verdict::word));
+    header.extend(["follow_through", "mistakes", "error"]);
+    header
+}
 
 /// The CSV summary, one row per sheet (a file that could not be marked:
 /// empty counts and its error), safe to open in a spreadsheet
 /// ([`crate::report::csv`]).
 pub fn csv(sheets: &[Sheet], exam: bool, lang: Lang) -> String {
-    let mut header: Vec<&str> = CSV_HEADER.to_vec();
-    if exam {
-        header.insert(2, "variant");
-    }
+    let header = csv_header(exam);
     let rows: Vec<Vec<String>> = sheets
         .iter()
         .map(|s| {

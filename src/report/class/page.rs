@@ -5,7 +5,6 @@
 
 use super::histogram;
 use crate::msg::{CheckWord, ClassWord as C, DocWord};
-use crate::report::check::VERDICTS;
 use crate::report::doc::Doc;
 use crate::report::lang::Lang;
 use crate::report::mistakes::mistake_text;
@@ -241,9 +240,11 @@ fn keys_section(doc: Doc, s: &Stats, lang: Lang) -> String {
     let mut out = doc.heading(1, &w(lang, C::AnswerKeys));
     let verdict = |v: Verdict| esc(doc, words::of(lang).verdict(v));
     let mut head = header(doc, lang, [C::Key]);
-    head.push(verdict(Verdict::Correct));
+    // correct (and how), follow-through, then the other verdict words
+    let words = Verdict::words();
+    head.push(verdict(Verdict::Exact));
     head.extend(header(doc, lang, [C::FollowThrough]));
-    head.extend(VERDICTS[1..].iter().map(|v| verdict(*v)));
+    head.extend(words[1..].iter().map(|v| verdict(*v)));
     // the indices' letters are the same in every language
     head.extend(["p", "D", "r"].map(String::from));
     head.push(esc(doc, &w(lang, C::Flag)));
@@ -251,8 +252,8 @@ fn keys_section(doc: Doc, s: &Stats, lang: Lang) -> String {
         .keys
         .iter()
         .map(|k| {
-            let c = |code: &str| k.count(code);
-            let right = c("correct.exact") + c("correct.rounded") + c("correct.tolerance");
+            let c = |v: Verdict| k.count(v);
+            let right = c(Verdict::Exact) + c(Verdict::Rounded) + c(Verdict::Tolerance);
             let flags: Vec<&str> = k.flags.iter().map(|f| words::of(lang).flag(*f)).collect();
             let flag = if flags.is_empty() {
                 String::new()
@@ -264,24 +265,24 @@ fn keys_section(doc: Doc, s: &Stats, lang: Lang) -> String {
             } else {
                 format!("**{}**", esc(doc, &flags.join("; ")))
             };
-            vec![
+            let mut row = vec![
                 esc(doc, &k.key.to_string()),
                 format!(
                     "{right} ({}/{}/{})",
-                    c("correct.exact"),
-                    c("correct.rounded"),
-                    c("correct.tolerance")
+                    c(Verdict::Exact),
+                    c(Verdict::Rounded),
+                    c(Verdict::Tolerance)
                 ),
-                c("correct.follow_through").to_string(),
-                c("too_coarse").to_string(),
-                c("wrong").to_string(),
-                c("missing").to_string(),
-                c("unparseable").to_string(),
+                c(Verdict::FollowThrough).to_string(),
+            ];
+            row.extend(words[1..].iter().map(|v| c(*v).to_string()));
+            row.extend([
                 num(Some(k.facility), lang),
                 num(k.discrimination, lang),
                 num(k.point_biserial, lang),
                 flag,
-            ]
+            ]);
+            row
         })
         .collect();
     out.push_str(&table(doc, &head, &rows));

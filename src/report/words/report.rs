@@ -28,7 +28,8 @@ pub trait ReportWords {
     fn flag(&self, f: Flag) -> &'static str;
     /// Why two answer files are the same student.
     fn same(&self, s: Same) -> &'static str;
-    /// A verdict on an answer (also a column of the class's tables).
+    /// A verdict's word (every way of being correct has one; also a
+    /// column of the class's tables).
     fn verdict(&self, v: Verdict) -> &'static str;
     /// A word of a marked answer file.
     fn check(&self, w: &CheckWord) -> String;
@@ -125,14 +126,11 @@ mod tests {
         v.extend(every_bench().map(|k| w.bench(k).to_string()));
         v.extend(every_plan().iter().map(|k| w.plan(k)));
         v.extend(every_cli().map(|k| w.cli(k).to_string()));
-        let verdicts = [
-            Verdict::Correct,
-            Verdict::TooCoarse,
-            Verdict::Wrong,
-            Verdict::Missing,
-            Verdict::Unparseable,
-        ];
-        v.extend(verdicts.map(|k| w.verdict(k).to_string()));
+        v.extend(
+            Verdict::words()
+                .into_iter()
+                .map(|k| w.verdict(k).to_string()),
+        );
         v.extend([Note::Empty, Note::NotMarked].map(|k| w.note(k).to_string()));
         v.extend([Skip::Subdirectory, Skip::NotToml].map(|k| w.skip(k).to_string()));
         v.extend([Same::Name, Same::Nim, Same::Answers].map(|k| w.same(k).to_string()));

@@ -28,31 +28,25 @@ use crate::num::{Real, Shown};
 use crate::stages::trace::Val;
 use crate::tutor::key::Key;
 
-/// A judged answer: its verdict, stable code and note.
+/// A judged answer: its verdict (exact, within the tolerance, rounded,
+/// too coarse, wrong, unparseable, missing) and note.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Judged {
     pub verdict: Verdict,
-    /// The stable code: `correct.exact`, `correct.tolerance`,
-    /// `correct.rounded`, `too_coarse`, `wrong`, `unparseable`, `missing`.
-    pub code: &'static str,
     pub note: Msg,
 }
 
 impl Judged {
-    pub(crate) fn new(verdict: Verdict, code: &'static str, note: Msg) -> Judged {
-        Judged {
-            verdict,
-            code,
-            note,
-        }
+    pub(crate) fn new(verdict: Verdict, note: Msg) -> Judged {
+        Judged { verdict, note }
     }
     fn wrong(note: Msg) -> Judged {
-        Judged::new(Verdict::Wrong, "wrong", note)
+        Judged::new(Verdict::Wrong, note)
     }
     /// Whether the answer agrees with the value: correct (not by
     /// follow-through) or too coarse.
     pub(crate) fn agrees(&self) -> bool {
-        matches!(self.verdict, Verdict::Correct | Verdict::TooCoarse)
+        self.verdict.agrees()
     }
 }
 
@@ -102,13 +96,11 @@ fn judge_scaled(read: &Read, expected: &Val, sc: f64, ctx: &Ctx) -> Judged {
         (Read::List(items), Val::List(es)) => {
             Judged::wrong(Msg::CountMismatch(es.len(), items.len()))
         }
-        (Read::Word(w), Val::Text(t)) if w == t => {
-            Judged::new(Verdict::Correct, "correct.exact", Msg::Exact)
-        }
+        (Read::Word(w), Val::Text(t)) if w == t => Judged::new(Verdict::Exact, Msg::Exact),
         (Read::Word(w), Val::Bool(b)) if *w == b.to_string() => {
-            Judged::new(Verdict::Correct, "correct.exact", Msg::Exact)
+            Judged::new(Verdict::Exact, Msg::Exact)
         }
-        (Read::None, Val::Null) => Judged::new(Verdict::Correct, "correct.exact", Msg::Exact),
+        (Read::None, Val::Null) => Judged::new(Verdict::Exact, Msg::Exact),
         (_, Val::Null) => Judged::wrong(Msg::ExpectedNone),
         (_, Val::Bool(b)) => Judged::wrong(Msg::ExpectedBool(*b)),
         (_, e) => Judged::wrong(expected_note(e)),
@@ -166,7 +158,7 @@ fn number(n: &Number, e: &Shown, sc: f64, ctx: &Ctx) -> Judged {
             _ => (g - ev).abs() <= 1e-12 * ev.abs().max(1.0),
         };
         if exactly {
-            return Judged::new(Verdict::Correct, "correct.exact", Msg::Exact);
+            return Judged::new(Verdict::Exact, Msg::Exact);
         }
     }
     let figures = n.last_digit.map(|last| leading_digit(ev) - last + 1);
@@ -180,7 +172,7 @@ fn number(n: &Number, e: &Shown, sc: f64, ctx: &Ctx) -> Judged {
         } else {
             Msg::WithinPct(fmt_pct(s.tolerance))
         };
-        return Judged::new(Verdict::Correct, "correct.tolerance", note);
+        return Judged::new(Verdict::Tolerance, note);
     }
     let (Some(last), Some(k)) = (n.last_digit, figures) else {
         return Judged::wrong(expected_note(&Val::Num(e.clone())));
@@ -197,13 +189,9 @@ fn number(n: &Number, e: &Shown, sc: f64, ctx: &Ctx) -> Judged {
     };
     if within(last) && k >= 1 {
         return if coarse(k) {
-            Judged::new(
-                Verdict::TooCoarse,
-                "too_coarse",
-                Msg::RoundedCoarse(k as u32, s.sig_figs),
-            )
+            Judged::new(Verdict::TooCoarse, Msg::RoundedCoarse(k as u32, s.sig_figs))
         } else {
-            Judged::new(Verdict::Correct, "correct.rounded", Msg::Rounded(k as u32))
+            Judged::new(Verdict::Rounded, Msg::Rounded(k as u32))
         };
     }
     Judged::wrong(expected_note(&Val::Num(e.clone())))
@@ -267,41 +255,14 @@ fn combine(parts: Vec<Judged>, n: usize, nested: bool) -> Judged {
             format!("{}", i + 1)
         }
     };
-    let worst = parts
-        .iter()
-        .map(|j| j.verdict)
-        .max()
-        .unwrap_or(Verdict::Correct);
-    let rank = |c: &str| match c {
-        "correct.exact" => 0,
-        "correct.tolerance" => 1,
-        _ => 2,
-    };
-    let code = if worst == Verdict::Correct {
-        parts
-            .iter()
-            .map(|j| j.code)
-            .max_by_key(|c| rank(c))
-            .unwrap_or("correct.exact")
-    } else {
-        parts
-            .iter()
-            .find(|j| j.verdict == worst)
-            .map(|j| j.code)
-            .unwrap_or("wrong")
-    };
+    let worst = (parts.iter().map(|j| j.verdict))
+        .max_by_key(|v| v.badness())
+        .unwrap_or(Verdict::Exact);
     // The notes of the components that decided the verdict.
     let notes: Vec<(String, Msg)> = parts
         .iter()
         .enumerate()
-        .filter(|(_, j)| {
-            !j.note.is_empty()
-                && if worst == Verdict::Correct {
-                    j.code == code
-                } else {
-                    j.verdict == worst
-                }
-        })
+        .filter(|(_, j)| !j.note.is_empty() && j.verdict == worst)
         .map(|(i, j)| (label(i), j.note.clone()))
         .collect();
     // One note when every component says the same.
@@ -313,7 +274,7 @@ fn combine(parts: Vec<Judged>, n: usize, nested: bool) -> Judged {
     } else {
         Msg::Parts(notes)
     };
-    Judged::new(worst, code, note)
+    Judged::new(worst, note)
 }
 
 #[cfg(test)]
@@ -352,24 +313,24 @@ mod tests {
     fn verdicts_on_numbers() {
         // tan 22.5° = √2 − 1, so 0.1·tan 22.5° = 0.0414213562...
         let top = 0.1 * (2f64.sqrt() - 1.0);
-        assert_eq!(j("0.041", top).code, "correct.rounded"); // |0.041 − top| = 0.00042 ≤ 0.0005
-        assert_eq!(j("0.0414", top).code, "correct.tolerance"); // 0.05% off
+        assert_eq!(j("0.041", top).verdict, Verdict::Rounded); // |0.041 − top| = 0.00042 ≤ 0.0005
+        assert_eq!(j("0.0414", top).verdict, Verdict::Tolerance); // 0.05% off
         assert_eq!(j("0.04", top).verdict, Verdict::TooCoarse); // 1 significant figure
         assert_eq!(j("0.042", top).verdict, Verdict::Wrong); // 1.4% off, not the rounding
-        assert_eq!(j("0,041", top).code, "correct.rounded"); // decimal comma
-                                                             // −6/√2 = −3√2, written either way
+        assert_eq!(j("0,041", top).verdict, Verdict::Rounded); // decimal comma
+                                                               // −6/√2 = −3√2, written either way
         let a = shown(-3.0 * 2f64.sqrt(), Some("-3*sqrt(2)"));
-        assert_eq!(j_at("-6/sqrt(2)", &a, "top").code, "correct.exact");
-        assert_eq!(j_at("-3√2", &a, "top").code, "correct.exact");
-        assert_eq!(j_at("-4.24", &a, "top").code, "correct.tolerance"); // 0.06% off
-        assert_eq!(j_at("-4.2", &a, "top").code, "correct.rounded");
+        assert_eq!(j_at("-6/sqrt(2)", &a, "top").verdict, Verdict::Exact);
+        assert_eq!(j_at("-3√2", &a, "top").verdict, Verdict::Exact);
+        assert_eq!(j_at("-4.24", &a, "top").verdict, Verdict::Tolerance); // 0.06% off
+        assert_eq!(j_at("-4.2", &a, "top").verdict, Verdict::Rounded);
         // 7/5 is 1% from √2: an expression is not a rounding
         let r2 = shown(2f64.sqrt(), Some("sqrt(2)"));
         assert_eq!(j_at("7/5", &r2, "top").verdict, Verdict::Wrong);
         // 50 digits of √2 − 1, truncated: close, but not the exact value
         let t = "0.41421356237309504880168872420969807856967187537694";
         let v = shown(2f64.sqrt() - 1.0, Some("sqrt(2)-1"));
-        assert_eq!(j_at(t, &v, "top").code, "correct.tolerance");
+        assert_eq!(j_at(t, &v, "top").verdict, Verdict::Tolerance);
     }
 
     /// A value as grafika shows it: its double and its exact form.
@@ -394,7 +355,7 @@ mod tests {
             ("-4/(13*sqrt(17))", "-4*sqrt(17)/221"),
         ] {
             let got = j_at(given, &exact_value(value), "view.u.2");
-            assert_eq!(got.code, "correct.exact", "{given}: {got:?}");
+            assert_eq!(got.verdict, Verdict::Exact, "{given}: {got:?}");
         }
     }
 
@@ -431,7 +392,7 @@ mod tests {
             ];
             for form in forms {
                 let got = j_at(&form, &value, "view.u.0");
-                proptest::prop_assert_eq!(got.code, "correct.exact", "{} for {:?}: {:?}", form, value, got);
+                proptest::prop_assert_eq!(got.verdict, Verdict::Exact, "{} for {:?}: {:?}", form, value, got);
             }
         }
     }
@@ -445,8 +406,8 @@ mod tests {
         assert_eq!(j("0.1", 0.096).verdict, Verdict::TooCoarse);
         // 124.14 to the units is 124 (3 figures); −3√2 = −4.243 to the
         // units is −4 (1 figure)
-        assert_eq!(j("124", 124.14).code, "correct.rounded");
-        assert_eq!(j("-4", -3.0 * 2f64.sqrt()).code, "too_coarse");
+        assert_eq!(j("124", 124.14).verdict, Verdict::Rounded);
+        assert_eq!(j("-4", -3.0 * 2f64.sqrt()).verdict, Verdict::TooCoarse);
         assert_eq!(j("125", 124.14).verdict, Verdict::Wrong);
         assert_eq!(j("0", 0.3).verdict, Verdict::Wrong);
         // 0.10 for 0.0957 rounds at the second decimal: one figure of it
@@ -457,10 +418,10 @@ mod tests {
     fn within_the_tolerance_is_correct_whatever_the_figures() {
         // 26/√677 = 0.999261…: 1.0 is 0.074 % off, inside 0.1 %
         let cos = 26.0 / 677f64.sqrt();
-        assert_eq!(j("1.0", cos).code, "correct.tolerance");
-        assert_eq!(j("1", cos).code, "correct.tolerance");
-        assert_eq!(j("1,0", cos).code, "correct.tolerance");
-        assert_eq!(j("1.00", cos).code, "correct.tolerance");
+        assert_eq!(j("1.0", cos).verdict, Verdict::Tolerance);
+        assert_eq!(j("1", cos).verdict, Verdict::Tolerance);
+        assert_eq!(j("1,0", cos).verdict, Verdict::Tolerance);
+        assert_eq!(j("1.00", cos).verdict, Verdict::Tolerance);
         // 0.99 is no rounding of it (to two decimals it is 1.00), and
         // 0.93 % off: wrong
         assert_eq!(j("0.99", cos).verdict, Verdict::Wrong);
@@ -481,7 +442,7 @@ mod tests {
     fn a_pixel_within_half_a_pixel_names_the_pixel() {
         let px = Val::List(vec![shown(8.2, None), shown(78.45, None)]);
         let got = j_at("8, 78", &px, "viewport.pixels.A");
-        assert_eq!(got.code, "correct.tolerance", "{got:?}");
+        assert_eq!(got.verdict, Verdict::Tolerance, "{got:?}");
         assert_eq!(
             j_at("9, 78", &px, "viewport.pixels.A").verdict,
             Verdict::Wrong
@@ -511,11 +472,11 @@ mod tests {
             let within = (text.parse::<f64>().unwrap() - x).abs() <= 1e-3 * x.abs();
             if within {
                 proptest::prop_assert!(
-                    matches!(got.code, "correct.tolerance" | "correct.exact"),
+                    matches!(got.verdict, Verdict::Tolerance | Verdict::Exact),
                     "{} for {}: {:?}", text, x, got
                 );
             } else if figures >= 2 {
-                proptest::prop_assert_eq!(got.code, "correct.rounded", "{} for {}", text, x);
+                proptest::prop_assert_eq!(got.verdict, Verdict::Rounded, "{} for {}", text, x);
             } else {
                 proptest::prop_assert_eq!(got.verdict, Verdict::TooCoarse, "{} for {}", text, x);
             }

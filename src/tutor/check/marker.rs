@@ -20,7 +20,7 @@
 use super::judge::{apart, judge, matches_closely, Ctx, Judged};
 use super::plausible;
 use super::scheme::Scheme;
-use super::{Settings, Tree, Verdict, FOLLOW_THROUGH};
+use super::{Settings, Tree, Verdict};
 use crate::error::Result;
 use crate::input::answer::{self, Read};
 use crate::input::part::Problem;
@@ -78,10 +78,8 @@ pub enum Follow {
 /// One answer judged.
 #[derive(Clone, Debug)]
 pub struct Judgement {
-    /// The verdict.
+    /// The verdict, with its stable code.
     pub verdict: Verdict,
-    /// Its stable code.
-    pub code: &'static str,
     /// How it was judged.
     pub note: Msg,
     /// The answer as read (None when it could not be).
@@ -174,20 +172,18 @@ impl Marker {
     /// Judges one answer to `key` in the order of judgment (module docs).
     pub fn judge(&self, key: &Key, given: &toml::Value) -> Judgement {
         let Some(right) = value_of(&self.result, key) else {
-            return judgement(Judged::new(Verdict::Wrong, "wrong", Msg::default()), None);
+            return judgement(Judged::new(Verdict::Wrong, Msg::default()), None);
         };
         if matches!(given, toml::Value::String(s) if s.trim().is_empty()) {
-            let j = Judged::new(Verdict::Missing, "missing", Msg::EmptyAnswer);
+            let j = Judged::new(Verdict::Missing, Msg::EmptyAnswer);
             return judgement(j, None);
         }
         let read = match answer::read(given, right) {
             Ok(r) => completed(key, r, right),
-            Err(note) => {
-                return judgement(Judged::new(Verdict::Unparseable, "unparseable", note), None)
-            }
+            Err(note) => return judgement(Judged::new(Verdict::Unparseable, note), None),
         };
         let j = self.judged(&read, right, key, false);
-        if j.code == "correct.exact" {
+        if j.verdict == Verdict::Exact {
             return judgement(j, Some(read));
         }
         // a mistake's value itself is wrong, however it rounds (where the
@@ -203,15 +199,13 @@ impl Marker {
             }
         }
         let j = match (mistakes.is_empty(), j.verdict) {
-            (false, _) => Judged::new(Verdict::Wrong, "wrong", super::judge::expected_note(right)),
+            (false, _) => Judged::new(Verdict::Wrong, super::judge::expected_note(right)),
             (true, Verdict::Wrong) => j,
             (true, _) => return judgement(j, Some(read)),
         };
         // a wrong answer: every mistake whose value it rounds
         for (m, v) in self.mistaken(key, right) {
-            if self.judged(&read, v, key, true).verdict == Verdict::Correct
-                && !mistakes.contains(&m)
-            {
+            if self.judged(&read, v, key, true).verdict.is_correct() && !mistakes.contains(&m) {
                 mistakes.push(m);
             }
         }
@@ -240,7 +234,7 @@ impl Marker {
             value_of(t, key).is_some_and(|v| {
                 differs(v, right)
                     && (matches_closely(read, v, key, rel)
-                        || self.judged(read, v, key, true).verdict == Verdict::Correct)
+                        || self.judged(read, v, key, true).verdict.is_correct())
             })
         };
         let keeps =
@@ -370,7 +364,6 @@ impl Marker {
 fn judgement(j: Judged, read: Option<Read>) -> Judgement {
     Judgement {
         verdict: j.verdict,
-        code: j.code,
         note: j.note,
         read,
         mistakes: vec![],
@@ -438,12 +431,6 @@ pub(crate) fn differs(a: &Val, b: &Val) -> bool {
         }
         _ => a != b,
     }
-}
-
-/// Whether a judged answer agrees with grafika's value itself (correct,
-/// not by follow-through, or too coarse).
-pub fn agrees(verdict: Verdict, code: &str) -> bool {
-    matches!(verdict, Verdict::Correct | Verdict::TooCoarse) && code != FOLLOW_THROUGH
 }
 
 #[cfg(test)]

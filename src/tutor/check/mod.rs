@@ -14,7 +14,8 @@
 //! coarse"; figures are counted from the value's leading digit. An answer
 //! that is a catalog mistake's value is wrong and names the mistake.
 //!
-//! Verdicts and their stable codes (for autograders):
+//! Verdicts ([`Verdict`]) and their stable codes (`Verdict::name`, for
+//! autograders):
 //!
 //! | verdict | code | meaning | marks |
 //! |---|---|---|---|
@@ -35,8 +36,10 @@ mod plausible;
 pub mod scheme;
 mod sheet;
 pub mod tolerance;
+mod verdict;
 
-pub use marker::{agrees, Follow, Judgement, Marker};
+pub use marker::{Follow, Judgement, Marker};
+pub use verdict::Verdict;
 
 use crate::error::Result;
 use crate::input::answer::Read;
@@ -74,51 +77,13 @@ impl Default for Settings {
     }
 }
 
-/// The verdict on one answer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Verdict {
-    /// Right.
-    Correct,
-    /// Right, but rounded to fewer significant figures than required.
-    TooCoarse,
-    /// Could not be read as a number (or a list of them).
-    Unparseable,
-    /// Not the expected value.
-    Wrong,
-    /// Not answered.
-    Missing,
-}
-
-impl Verdict {
-    /// The verdict's word in output and JSON.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Verdict::Correct => "correct",
-            Verdict::TooCoarse => "too_coarse",
-            Verdict::Unparseable => "unparseable",
-            Verdict::Wrong => "wrong",
-            Verdict::Missing => "missing",
-        }
-    }
-    /// Marks for the verdict: 1 correct, ½ too coarse, 0 otherwise.
-    pub fn points(self) -> f64 {
-        match self {
-            Verdict::Correct => 1.0,
-            Verdict::TooCoarse => 0.5,
-            _ => 0.0,
-        }
-    }
-}
-
 /// The marking of one answer.
 #[derive(Clone, Debug)]
 pub struct Marked {
     /// The answer key (`view.points.A`).
     pub key: Key,
-    /// The verdict.
+    /// The verdict, with its stable code (see the module docs and README).
     pub verdict: Verdict,
-    /// The stable code (see the module docs and README).
-    pub code: &'static str,
     /// The answer as written, on one line (None when missing).
     pub given: Option<String>,
     /// The answer as given in the file.
@@ -207,14 +172,17 @@ impl Marking {
     pub fn working(&self) -> impl Iterator<Item = &Marked> {
         self.answers.iter().filter(|a| !a.asked())
     }
-    /// How many answers asked got the verdict.
+    /// How many answers asked got the verdict's word (every correct one
+    /// for a correct verdict).
     pub fn count(&self, v: Verdict) -> usize {
-        self.asked().filter(|a| a.verdict == v).count()
+        self.asked().filter(|a| a.verdict.alike(v)).count()
     }
     /// How many answers asked were credited by follow-through (counted
     /// among the correct ones too).
     pub fn follow_through(&self) -> usize {
-        self.asked().filter(|a| a.code == FOLLOW_THROUGH).count()
+        self.asked()
+            .filter(|a| a.verdict == Verdict::FollowThrough)
+            .count()
     }
     /// The marks earned by working (method marks) beyond the answers' own.
     pub fn method_marks(&self) -> f64 {
@@ -387,9 +355,6 @@ pub fn mark(
 ) -> Result<Marking> {
     Ok(Marker::new(p, settings)?.mark(who, answers, from_text))
 }
-
-/// The code of an answer credited by follow-through.
-pub const FOLLOW_THROUGH: &str = "correct.follow_through";
 
 /// An answer's text as shown: a long one cut in the middle (at most 200
 /// characters, the middle replaced by `…`).

@@ -57,7 +57,7 @@ impl Item {
         of: &dyn Fn(&Key) -> Option<Verdict>,
     ) -> (f64, Vec<Key>) {
         let own = share(verdict, self.marks);
-        if verdict == Verdict::Correct {
+        if verdict.is_correct() {
             return (own, Vec::new());
         }
         let earning: Vec<(&Key, f64)> = (self.method.iter())

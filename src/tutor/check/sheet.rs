@@ -4,8 +4,8 @@
 //! answer and changes no answer the student got right; several are ranked
 //! by how many answers they explain.
 
-use super::marker::{agrees, Follow, Marker};
-use super::{Diagnosis, Marked, Marking, Verdict, FOLLOW_THROUGH};
+use super::marker::{Follow, Marker};
+use super::{Diagnosis, Marked, Marking, Verdict};
 use crate::input::answer::Read;
 use crate::msg::Msg;
 use crate::tutor::diagnose::Code;
@@ -64,7 +64,6 @@ impl Marker {
             marked.push(Marked {
                 key: key.clone(),
                 verdict: j.verdict,
-                code: j.code,
                 given: given.map(|g| super::shown_cut(&super::written(g))),
                 given_value: given.cloned(),
                 expected: Some(expected.clone()),
@@ -119,7 +118,6 @@ impl Marker {
     fn missing(&self) -> super::marker::Judgement {
         super::marker::Judgement {
             verdict: Verdict::Missing,
-            code: "missing",
             note: Msg::NoAnswer,
             read: None,
             mistakes: vec![],
@@ -148,8 +146,7 @@ impl Marker {
             }
             match self.follow(&m.key, read, &own_of) {
                 Follow::Credited(_) => {
-                    m.verdict = Verdict::Correct;
-                    m.code = FOLLOW_THROUGH;
+                    m.verdict = Verdict::FollowThrough;
                     m.note = Msg::FollowThrough;
                     m.diagnosis.clear();
                 }
@@ -182,7 +179,7 @@ impl Marker {
     fn diagnose(&self, marked: &mut [Marked]) -> Vec<Diagnosis> {
         let agreed_reads: Vec<(Key, Read)> = marked
             .iter()
-            .filter(|m| agrees(m.verdict, m.code))
+            .filter(|m| m.verdict.agrees())
             .filter_map(|m| Some((m.key.clone(), m.read.clone()?)))
             .collect();
         let agreed: Vec<(&Key, &Read)> = agreed_reads.iter().map(|(k, r)| (k, r)).collect();
@@ -232,7 +229,6 @@ impl Marker {
 fn too_long(n: usize) -> super::marker::Judgement {
     super::marker::Judgement {
         verdict: Verdict::Unparseable,
-        code: "unparseable",
         note: Msg::AnswerTooLong(n, super::MAX_ANSWER),
         read: None,
         mistakes: vec![],
@@ -274,13 +270,13 @@ mod tests {
             let k: Key = k.parse().expect("a key");
             (marking.answers.iter())
                 .find(|a| a.key == k)
-                .map(|a| a.code)
+                .map(|a| a.verdict)
         };
-        assert_eq!(code("view.points.A.0"), Some("correct.exact"));
-        assert_eq!(code("view.points.A.2"), Some("correct.exact"));
-        assert_eq!(code("view.n.2"), Some("wrong"));
-        assert_eq!(code("view"), Some("unparseable"));
-        assert_eq!(code("view.n"), Some("missing"));
+        assert_eq!(code("view.points.A.0"), Some(Verdict::Exact));
+        assert_eq!(code("view.points.A.2"), Some(Verdict::Exact));
+        assert_eq!(code("view.n.2"), Some(Verdict::Wrong));
+        assert_eq!(code("view"), Some(Verdict::Unparseable));
+        assert_eq!(code("view.n"), Some(Verdict::Missing));
         assert_eq!(
             marking.unknown,
             ["view.bogus", "view.points.A.9", "window.top"]

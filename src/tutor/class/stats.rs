@@ -39,7 +39,7 @@ use super::{Class, ClassKey, Paper, Sheet};
 use crate::msg::Msg;
 use crate::num::Real;
 use crate::stages::trace::{Step, Val};
-use crate::tutor::check::{Marked, Settings};
+use crate::tutor::check::{Marked, Settings, Verdict};
 use crate::tutor::diagnose::Code;
 use crate::tutor::key::Key;
 use crate::tutor::keys::ordered_keys;
@@ -57,19 +57,6 @@ pub const VERY_HARD: f64 = 0.2;
 pub const GROUP_SHARE: f64 = 0.27;
 /// The number of bins of the score histogram (10 % of the marks each).
 pub const BINS: usize = 10;
-
-/// The verdict codes in the order reports list them (docs/spec.md §5); a
-/// code not listed here (a newer one) follows them.
-pub const CODES: [&str; 8] = [
-    "correct.exact",
-    "correct.rounded",
-    "correct.tolerance",
-    "correct.follow_through",
-    "too_coarse",
-    "wrong",
-    "missing",
-    "unparseable",
-];
 
 /// What is suspect about a key.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -89,8 +76,8 @@ pub struct KeyStats {
     pub key: ClassKey,
     /// How many students were asked it.
     pub students: usize,
-    /// How many answers got each verdict code ([`CODES`] first, then any other).
-    pub counts: Vec<(String, usize)>,
+    /// How many answers got each verdict, in the order of [`Verdict::ALL`].
+    pub counts: Vec<(Verdict, usize)>,
     /// Facility p.
     pub facility: f64,
     /// Upper-minus-lower discrimination D (None for fewer than 2 students).
@@ -102,10 +89,10 @@ pub struct KeyStats {
 }
 
 impl KeyStats {
-    /// How many answers got the verdict `code` (0 when none did).
-    pub fn count(&self, code: &str) -> usize {
+    /// How many answers got the verdict `v` (0 when none did).
+    pub fn count(&self, v: Verdict) -> usize {
         (self.counts.iter())
-            .find(|(c, _)| c == code)
+            .find(|(c, _)| *c == v)
             .map_or(0, |(_, n)| *n)
     }
 }
@@ -356,13 +343,9 @@ fn key_stats(key: &ClassKey, sheets: &[&Sheet]) -> KeyStats {
         .filter_map(|s| Some((answer(s, key)?, s.score()?, f64::from(s.total()?))))
         .filter(|(a, _, _)| a.asked())
         .collect();
-    let mut counts: Vec<(String, usize)> = CODES.iter().map(|c| (c.to_string(), 0)).collect();
-    for (a, _, _) in &asked {
-        match counts.iter_mut().find(|(c, _)| c == a.code) {
-            Some((_, n)) => *n += 1,
-            None => counts.push((a.code.to_string(), 1)),
-        }
-    }
+    let counts: Vec<(Verdict, usize)> = (Verdict::ALL.into_iter())
+        .map(|v| (v, asked.iter().filter(|(a, _, _)| a.verdict == v).count()))
+        .collect();
     // the key's mark x: the share of its marks earned
     let worth = |a: &Marked| f64::from(a.worth.unwrap_or(0));
     let x: Vec<f64> = (asked.iter())

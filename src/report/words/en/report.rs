@@ -145,7 +145,9 @@ impl ReportWords for En {
 
     fn verdict(&self, v: Verdict) -> &'static str {
         match v {
-            Verdict::Correct => "correct",
+            Verdict::Exact | Verdict::Rounded | Verdict::Tolerance | Verdict::FollowThrough => {
+                "correct"
+            }
             Verdict::TooCoarse => "too coarse",
             Verdict::Wrong => "wrong",
             Verdict::Missing => "missing",

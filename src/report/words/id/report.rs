@@ -145,7 +145,9 @@ impl ReportWords for Id {
 
     fn verdict(&self, v: Verdict) -> &'static str {
         match v {
-            Verdict::Correct => "benar",
+            Verdict::Exact | Verdict::Rounded | Verdict::Tolerance | Verdict::FollowThrough => {
+                "benar"
+            }
             Verdict::TooCoarse => "terlalu kasar",
             Verdict::Wrong => "salah",
             Verdict::Missing => "tidak dijawab",
