@@ -2,7 +2,10 @@
 //! `chromium`) opens the worked-solution page and its screenshot is checked
 //! to be non-blank; `pdflatex` (texlive-latex-base, texlive-pictures)
 //! compiles an exam key. `.ci/install-test-tools` installs both where it
-//! can. This file has its own `main` (no test harness), so that a check
+//! can. With `GRAFIKA_MOODLE` set to the root of a Moodle 5.x installed for
+//! testing (docs/contributing.md), a quiz goes the whole way round: Moodle
+//! takes 30 students' attempts, grafika re-marks its Responses download and
+//! Moodle's gradebook imports grafika's grades, read back equal. This file has its own `main` (no test harness), so that a check
 //! that cannot run says SKIPPED on the console instead of passing quietly.
 
 use std::path::Path;
@@ -21,6 +24,10 @@ fn main() {
         (
             "pdflatex compiles an exam key with its TikZ figures",
             pdflatex,
+        ),
+        (
+            "a live Moodle's quiz is re-marked and its grades imported back",
+            moodle,
         ),
     ] {
         match check(&dir) {
@@ -152,6 +159,105 @@ fn pdflatex(dir: &Path) -> Outcome {
         Ok(o) if o.status.success() && out.join("key.pdf").exists() => Outcome::Passed,
         Ok(o) => Outcome::Failed(String::from_utf8_lossy(&o.stdout).into_owned()),
         Err(e) => Outcome::Failed(e.to_string()),
+    }
+}
+
+/// The quiz of seed 2026 through a live Moodle and back: the grades the
+/// gradebook holds after the import are grafika's, for every student
+/// re-marked.
+fn moodle(dir: &Path) -> Outcome {
+    let Some(root) = std::env::var_os("GRAFIKA_MOODLE") else {
+        return Outcome::Skipped(
+            "GRAFIKA_MOODLE is not set (a Moodle 5.x test site's root)".into(),
+        );
+    };
+    if !available("php") {
+        return Outcome::Skipped("no php".into());
+    }
+    match moodle_round_trip(dir, Path::new(&root)) {
+        Ok(()) => Outcome::Passed,
+        Err(e) => Outcome::Failed(e),
+    }
+}
+
+fn moodle_round_trip(dir: &Path, root: &Path) -> Result<(), String> {
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/moodle/responses.php");
+    let php = |args: &[String]| -> Result<String, String> {
+        let out = Command::new("php")
+            .arg(&script)
+            .arg(format!("--moodle={}", s(root)))
+            .args(args)
+            .output()
+            .map_err(|e| e.to_string())?;
+        match out.status.success() {
+            true => Ok(String::from_utf8_lossy(&out.stdout).into_owned()),
+            false => Err(String::from_utf8_lossy(&out.stderr).into_owned()),
+        }
+    };
+    let (quiz, exam) = (dir.join("moodle-quiz"), dir.join("moodle-exam"));
+    for (format, out) in [("moodle", &quiz), ("json", &exam)] {
+        let args = ["generate", "--topic", "view,window,clip", "--count", "3"];
+        let more = [
+            "--variants",
+            "2",
+            "--seed",
+            "2026",
+            "--format",
+            format,
+            "--out",
+        ];
+        grafika(&[&args[..], &more[..], &[&s(out)]].concat())?;
+    }
+    let made = php(&[
+        format!("--file={}", s(&quiz.join("quiz.xml"))),
+        "--students=30".into(),
+    ])?;
+    let made: serde_json::Value = serde_json::from_str(made.trim()).map_err(|e| e.to_string())?;
+    let course = format!("--course={}", made["course"]);
+    let report = dir.join("responses.csv");
+    let csv = php(&["--download=csv".into(), course.clone()])?;
+    std::fs::write(&report, csv).map_err(|e| e.to_string())?;
+    let grades = dir.join("grades.csv");
+    let (e, r, g) = (s(&exam), s(&report), s(&grades));
+    grafika(&[
+        "check",
+        &e,
+        "--moodle-responses",
+        &r,
+        "--follow-through",
+        "--grades",
+        &g,
+    ])?;
+    // Email address,ID number,Name,grafika,Moodle
+    let mut read = csv::Reader::from_path(&grades).map_err(|e| e.to_string())?;
+    let ours: Vec<(String, f64)> = (read.records().flatten())
+        .filter_map(|r| Some((r.get(0)?.to_string(), r.get(3)?.parse().ok()?)))
+        .collect();
+    let back = php(&[format!("--import={g}"), course])?;
+    let mut same = 0;
+    for line in back.lines() {
+        let v: serde_json::Value = serde_json::from_str(line).map_err(|e| e.to_string())?;
+        let Some((_, mine)) = ours.iter().find(|(m, _)| v["email"] == m.as_str()) else {
+            continue;
+        };
+        let theirs: f64 = v["grade"]
+            .as_str()
+            .and_then(|t| t.parse().ok())
+            .unwrap_or(f64::NAN);
+        if (theirs - mine).abs() > 0.005 {
+            return Err(format!(
+                "{}: Moodle holds {theirs}, grafika gave {mine}",
+                v["email"]
+            ));
+        }
+        same += 1;
+    }
+    match same == 29 && ours.len() == 29 {
+        true => Ok(()),
+        false => Err(format!(
+            "{same} grades read back of {} re-marked, not 29",
+            ours.len()
+        )),
     }
 }
 

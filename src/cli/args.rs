@@ -545,7 +545,8 @@ pub struct CheckArgs {
     #[arg(long)]
     pub follow_through: bool,
     /// Re-mark a Moodle quiz made from this exam: its Responses report as
-    /// downloaded (Quiz → Results → Responses, CSV or JSON), each finished
+    /// downloaded (Quiz → Results → Responses, CSV, JSON, Excel or
+    /// OpenDocument; its columns in English or Indonesian), each finished
     /// attempt marked as an answer file of the class.
     #[arg(long, value_name = "FILE", conflicts_with_all = ["answers", "answers_from_text"])]
     pub moodle_responses: Option<PathBuf>,

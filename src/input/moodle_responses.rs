@@ -1,6 +1,7 @@
 //! Moodle's quiz Responses report as a lecturer downloads it (Quiz →
-//! Results → Responses, "Download table data as" CSV or JSON; read as
-//! Moodle 5.1 writes them): one row per attempt, the student's name and
+//! Results → Responses, "Download table data as" CSV, JSON, Excel or
+//! OpenDocument; read as Moodle 5.1 writes them, its column names in
+//! English or Indonesian): one row per attempt, the student's name and
 //! identity fields, the attempt's state and grade, and per slot the
 //! question's text ("Question N", when the report shows it) and the
 //! response summary ("Response N"). A Cloze question's summary lists its
@@ -54,21 +55,35 @@ pub struct Slot {
     pub response: Option<String>,
 }
 
-/// Reads a Responses report: JSON when its name ends in `.json`, else CSV.
+/// The most bytes the sheets of an Excel or OpenDocument report may
+/// unpack to, as the file's own index declares them: 4 × [`MAX_REPORT`]
+/// (the XML of a sheet is about 1.3 times its CSV), refused before a byte
+/// is unpacked.
+pub const MAX_UNPACKED: u64 = 4 * MAX_REPORT;
+
+/// Reads a Responses report by its name's extension: `.json`, `.xlsx`
+/// (Excel), `.ods` (OpenDocument), else CSV.
 pub fn read(path: &Path) -> Result<Responses> {
-    let text = read_report(path)?;
-    let json = path
+    let bytes = read_report(path)?;
+    let ext = path
         .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("json"));
-    let rows = if json {
-        json_rows(&text)?
-    } else {
-        csv_rows(&text)?
+        .map(|e| e.to_string_lossy().to_lowercase())
+        .unwrap_or_default();
+    let rows = match ext.as_str() {
+        "json" => json_rows(&text(&bytes))?,
+        "xlsx" | "ods" => sheet_rows(bytes)?,
+        _ => csv_rows(&text(&bytes))?,
     };
     of_rows(rows)
 }
 
-fn read_report(path: &Path) -> Result<String> {
+/// The file's text, without a byte-order mark.
+fn text(bytes: &[u8]) -> String {
+    let text = String::from_utf8_lossy(bytes);
+    text.trim_start_matches('\u{feff}').to_string()
+}
+
+fn read_report(path: &Path) -> Result<Vec<u8>> {
     let shown = path.display().to_string();
     let field = "moodle-responses";
     let why =
@@ -84,9 +99,58 @@ fn read_report(path: &Path) -> Result<String> {
         let (size, most) = (Some(meta.len()), MAX_REPORT as usize);
         return Err(Error::why(field, ErrMsg::FileTooLarge(shown, size, most)));
     }
-    let bytes = std::fs::read(path).map_err(why)?;
-    let text = String::from_utf8_lossy(&bytes).into_owned();
-    Ok(text.trim_start_matches('\u{feff}').to_string())
+    std::fs::read(path).map_err(why)
+}
+
+/// The bytes a zip file's entries unpack to, as its central directory
+/// declares them.
+fn unpacked_size(bytes: &[u8]) -> Result<u64> {
+    let bad = |e: zip::result::ZipError| not_responses(&e.to_string());
+    let mut zip = zip::ZipArchive::new(std::io::Cursor::new(bytes)).map_err(bad)?;
+    let mut total = 0u64;
+    for i in 0..zip.len() {
+        total = total.saturating_add(zip.by_index_raw(i).map_err(bad)?.size());
+    }
+    Ok(total)
+}
+
+/// The rows of the first sheet of an Excel (`.xlsx`) or OpenDocument
+/// (`.ods`) download, each cell as its text (a number as Rust writes it:
+/// `100`, `73.33`). Moodle writes a text that begins with `=` (a name
+/// such as `=HYPERLINK("x")`) as an Excel formula without a value: its
+/// text is read back from the formula. A file whose index declares more than
+/// [`MAX_UNPACKED`] bytes is refused unread.
+fn sheet_rows(bytes: Vec<u8>) -> Result<Rows> {
+    use calamine::Reader;
+    let unpacked = unpacked_size(&bytes)?;
+    if unpacked > MAX_UNPACKED {
+        return Err(not_responses(&format!(
+            "its sheets unpack to {unpacked} bytes, more than {MAX_UNPACKED}"
+        )));
+    }
+    let mut book = calamine::open_workbook_auto_from_rs(std::io::Cursor::new(bytes))
+        .map_err(|e| not_responses(&e.to_string()))?;
+    let name = book
+        .sheet_names()
+        .first()
+        .cloned()
+        .ok_or_else(|| not_responses("no sheet"))?;
+    let data = (book.worksheet_range(&name)).map_err(|e| not_responses(&e.to_string()))?;
+    let formulas = book.worksheet_formula(&name).unwrap_or_default();
+    let (top, left) = data.start().unwrap_or((0, 0));
+    let mut all = data.rows().enumerate().map(|(r, row)| {
+        (row.iter().enumerate())
+            .map(|(c, cell)| match cell {
+                calamine::Data::Empty => {
+                    let at = (top + r as u32, left + c as u32);
+                    (formulas.get_value(at)).map_or(String::new(), |f| format!("={f}"))
+                }
+                other => other.to_string(),
+            })
+            .collect::<Vec<String>>()
+    });
+    let header = all.next().ok_or_else(|| not_responses("empty"))?;
+    Ok((header, all.collect()))
 }
 
 /// A table: the header, then the rows, each cell by column.
@@ -176,36 +240,60 @@ struct Columns {
     slots: Vec<(Option<usize>, usize)>,
 }
 
+/// The columns' names as Moodle writes them in English and in Indonesian
+/// (its language pack: `Nama akhir`, `Alamat surel`, `Keadaan`, `Nilai/`,
+/// `Soal N`, `Jawaban N`), compared without regard to case.
+const LAST: &[&str] = &["Last name", "Surname", "Nama akhir", "Nama belakang"];
+const FIRST: &[&str] = &["First name", "Nama depan"];
+const EMAIL: &[&str] = &["Email address", "Alamat surel", "Alamat email"];
+const ID_NUMBER: &[&str] = &["ID number", "Nomor ID"];
+const STATUS: &[&str] = &["Status", "State", "Keadaan"];
+const GRADE: &[&str] = &["Grade/", "Nilai/"];
+const QUESTION: &[&str] = &["Question", "Soal"];
+const RESPONSE: &[&str] = &["Response", "Jawaban"];
+
 fn columns(header: &[String]) -> Result<Columns> {
-    let at = |name: &str| header.iter().position(|h| h.trim() == name);
+    let is = |h: &str, name: &str| h.trim().eq_ignore_ascii_case(name);
+    let at = |names: &[&str]| header.iter().position(|h| names.iter().any(|n| is(h, n)));
+    let numbered = |words: &[&str], n: usize| {
+        let names: Vec<String> = words.iter().map(|w| format!("{w} {n}")).collect();
+        at(&names.iter().map(String::as_str).collect::<Vec<_>>())
+    };
     let mut slots = Vec::new();
     for n in 1.. {
-        let Some(r) = at(&format!("Response {n}")) else {
+        let Some(r) = numbered(RESPONSE, n) else {
             break;
         };
-        slots.push((at(&format!("Question {n}")), r));
+        slots.push((numbered(QUESTION, n), r));
     }
     if slots.is_empty() {
         return Err(not_responses("no column Response 1"));
     }
     Ok(Columns {
-        last: at("Last name").or_else(|| at("Surname")),
-        first: at("First name"),
-        email: at("Email address"),
-        id_number: at("ID number"),
-        status: at("Status")
-            .or_else(|| at("State"))
-            .ok_or_else(|| not_responses("no column Status"))?,
-        grade: header.iter().position(|h| h.starts_with("Grade/")),
+        last: at(LAST),
+        first: at(FIRST),
+        email: at(EMAIL),
+        id_number: at(ID_NUMBER),
+        status: at(STATUS).ok_or_else(|| not_responses("no column Status"))?,
+        grade: header.iter().position(|h| grade_max(h).is_some()),
         slots,
+    })
+}
+
+/// The quiz's maximum grade from the grade column's name, `Grade/100.00`
+/// or `Nilai/100,00`; `Some(None)` for `Grade/` with no number after it
+/// (the JSON download's), none for another column.
+fn grade_max(h: &str) -> Option<Option<f64>> {
+    let h = h.trim();
+    GRADE.iter().find_map(|g| {
+        let head = h.get(..g.len())?;
+        head.eq_ignore_ascii_case(g).then(|| decimal(&h[g.len()..]))
     })
 }
 
 fn of_rows((header, rows): Rows) -> Result<Responses> {
     let c = columns(&header)?;
-    let out_of = c
-        .grade
-        .and_then(|g| header[g].trim_start_matches("Grade/").trim().parse().ok());
+    let out_of = c.grade.and_then(|g| grade_max(&header[g]).flatten());
     let cell = |row: &[String], i: Option<usize>| {
         i.and_then(|i| row.get(i))
             .map_or("", |s| s.trim())
@@ -326,5 +414,45 @@ mod tests {
         assert_eq!(a.grade, Some(7.5));
         assert!(a.finished);
         assert_eq!(a.slots[0].response.as_deref(), Some("part 1: a\nb"));
+    }
+
+    /// A zip of one stored entry whose central directory declares
+    /// `size` bytes unpacked (and holds none).
+    fn zip_declaring(size: u32) -> Vec<u8> {
+        let name = b"xl/worksheets/sheet1.xml";
+        let u16s = |v: &[u16]| v.iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>();
+        let u32s = |v: &[u32]| v.iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>();
+        let n = name.len() as u16;
+        let mut local = u32s(&[0x0403_4b50]);
+        local.extend(u16s(&[20, 0, 0, 0, 0]));
+        local.extend(u32s(&[0, 0, size]));
+        local.extend(u16s(&[n, 0]));
+        local.extend(name);
+        let mut central = u32s(&[0x0201_4b50]);
+        central.extend(u16s(&[20, 20, 0, 0, 0, 0]));
+        central.extend(u32s(&[0, 0, size]));
+        central.extend(u16s(&[n, 0, 0, 0, 0]));
+        central.extend(u32s(&[0, 0]));
+        central.extend(name);
+        let mut end = u32s(&[0x0605_4b50]);
+        end.extend(u16s(&[0, 0, 1, 1]));
+        end.extend(u32s(&[central.len() as u32, local.len() as u32]));
+        end.extend(u16s(&[0]));
+        [local, central, end].concat()
+    }
+
+    #[test]
+    fn a_spreadsheet_that_would_unpack_past_the_bound_is_refused_unread() {
+        // 4,000,000,000 bytes declared > 4 × 64 MiB = 268,435,456.
+        let big = zip_declaring(4_000_000_000);
+        assert_eq!(unpacked_size(&big).ok(), Some(4_000_000_000));
+        let err = sheet_rows(big).expect_err("refused");
+        assert_eq!(err.field, "moodle-responses");
+        assert!(
+            format!("{:?}", err.message).contains("268435456"),
+            "{err:?}"
+        );
+        // Within the bound, it is read (and is no sheet).
+        assert_eq!(unpacked_size(&zip_declaring(10)).ok(), Some(10));
     }
 }

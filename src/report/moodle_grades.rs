@@ -39,41 +39,24 @@ pub struct Grade {
     pub moodle: Option<f64>,
 }
 
-/// Each student's grade, by the highest of their marked attempts.
+/// Each student's grade, by the highest of their marked attempts (the
+/// others are marked as another attempt of it: `class::moodle::sheets`).
 pub fn grades(r: &Responses, given: &[Given], sheets: &[Sheet]) -> Vec<Grade> {
     let out_of = r.out_of.unwrap_or(100.0);
-    let mut out: Vec<Grade> = Vec::new();
-    for (g, s) in given.iter().zip(sheets) {
-        let (Some(score), Some(total)) = (s.score(), s.total()) else {
-            continue;
-        };
-        let a = &r.attempts[g.attempt];
-        let grade = Grade {
-            email: a.email.clone(),
-            id_number: a.id_number.clone(),
-            name: g.who.clone(),
-            grafika: if total == 0 {
-                0.0
-            } else {
-                score / f64::from(total) * out_of
-            },
-            moodle: a.grade,
-        };
-        let same = |o: &Grade| {
-            (o.email.clone(), o.id_number.clone(), o.name.clone())
-                == (
-                    grade.email.clone(),
-                    grade.id_number.clone(),
-                    grade.name.clone(),
-                )
-        };
-        match out.iter_mut().find(|o| same(o)) {
-            Some(o) if o.grafika < grade.grafika => *o = grade,
-            Some(_) => {}
-            None => out.push(grade),
-        }
-    }
-    out
+    (given.iter().zip(sheets))
+        .filter(|(_, s)| s.duplicate.is_none())
+        .filter_map(|(g, s)| {
+            let (score, total) = (s.score()?, s.total()?);
+            let a = &r.attempts[g.attempt];
+            Some(Grade {
+                email: a.email.clone(),
+                id_number: a.id_number.clone(),
+                name: g.who.clone(),
+                grafika: score / f64::from(total.max(1)) * out_of,
+                moodle: a.grade,
+            })
+        })
+        .collect()
 }
 
 /// The grades CSV (RFC 4180, CRLF, formulas neutralised).

@@ -33,11 +33,12 @@
 // line: {"course": id, "quiz": id, "students": n,
 // "attempts": n, "finished": n, "grade_item": id}.
 //
-//   php responses.php --moodle=MOODLE_ROOT --download=csv|json --course=ID > FILE
+//   php responses.php --moodle=MOODLE_ROOT --download=csv|json|excel|ods --course=ID [--lang=id] > FILE
 //
 // writes the course's quiz's Responses report to standard output as the
 // report's own "Download table data as" does (the last try, the question
-// text and the response of each slot).
+// text and the response of each slot), in the site's language or --lang's
+// (its language pack installed: `id` writes the columns in Indonesian).
 //
 //   php responses.php --moodle=MOODLE_ROOT --import=GRADES.csv --course=ID
 //
@@ -49,16 +50,17 @@
 
 define('CLI_SCRIPT', true);
 
-$opts = getopt('', ['moodle:', 'file::', 'students::', 'import::', 'course::', 'column::', 'download::']);
+$opts = getopt('', ['moodle:', 'file::', 'students::', 'import::', 'course::', 'column::', 'download::', 'lang::']);
 if (empty($opts['moodle']) || (empty($opts['file']) && empty($opts['import']) && empty($opts['download']))) {
     fwrite(STDERR, "usage: php responses.php --moodle=MOODLE_ROOT --file=QUIZ.xml [--students=30]\n"
-        . "       php responses.php --moodle=MOODLE_ROOT --download=csv|json|excel|ods --course=ID > FILE\n"
+        . "       php responses.php --moodle=MOODLE_ROOT --download=csv|json|excel|ods --course=ID [--lang=id] > FILE\n"
         . "       php responses.php --moodle=MOODLE_ROOT --import=GRADES.csv --course=ID [--column=grafika]\n");
     exit(2);
 }
 $run = (object) [];
 $run->file = isset($opts['file']) ? realpath($opts['file']) : null;
 $run->download = $opts['download'] ?? null;
+$run->lang = $opts['lang'] ?? null;
 $run->students = (int) ($opts['students'] ?? 30);
 $run->import = isset($opts['import']) ? realpath($opts['import']) : null;
 $run->course = (int) ($opts['course'] ?? 0);
@@ -275,6 +277,9 @@ function download(object $run): void {
     $cm = get_coursemodule_from_instance('quiz', $quiz->id, $course->id);
     $_GET = ['download' => $run->download, 'attempts' => 'enrolled_with', 'whichtries' => 'last',
         'qtext' => 1, 'resp' => 1, 'right' => 0, 'id' => $cm->id, 'mode' => 'responses'];
+    if ($run->lang) {
+        force_current_language($run->lang);
+    }
     $PAGE = new moodle_page();
     $PAGE->set_context(context_module::instance($cm->id));
     $PAGE->set_cm($cm, $course);

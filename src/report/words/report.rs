@@ -133,7 +133,9 @@ mod tests {
         );
         v.extend([Note::Empty, Note::NotMarked].map(|k| w.note(k).to_string()));
         v.extend([Skip::Subdirectory, Skip::NotToml].map(|k| w.skip(k).to_string()));
-        v.extend([Same::Name, Same::Nim, Same::Answers].map(|k| w.same(k).to_string()));
+        v.extend(
+            [Same::Name, Same::Nim, Same::Answers, Same::Attempt].map(|k| w.same(k).to_string()),
+        );
         let flags = [Flag::VeryEasy, Flag::VeryHard, Flag::Negative];
         v.extend(flags.map(|k| w.flag(k).to_string()));
         v

@@ -24,6 +24,7 @@ use crate::input::moodle_responses::{parts, Attempt, Responses};
 use crate::msg::ErrMsg;
 use crate::stages::trace::Val;
 use crate::tutor::check::{Answers, Marker, Settings};
+use crate::tutor::class::same::Same;
 use crate::tutor::generate::quiz::{typed_leaves, Typed};
 use crate::tutor::key::Key;
 use crate::tutor::solution::value_of;
@@ -249,8 +250,11 @@ fn shaped<'a>(like: &Val, texts: &mut impl Iterator<Item = &'a str>) -> toml::Va
 }
 
 /// Marks the given attempts as a class (see [`super::mark_given`]), each
-/// sheet with the exam's variant of each problem it drew.
-pub fn sheets(paper: &Paper, settings: Settings, given: &[Given]) -> Vec<Sheet> {
+/// sheet with the exam's variant of each problem it drew; a student with
+/// several attempts is counted once, by the attempt of the highest share
+/// of the marks (the first of equals), the others marked as
+/// [`Same::Attempt`] of it.
+pub fn sheets(paper: &Paper, settings: Settings, r: &Responses, given: &[Given]) -> Vec<Sheet> {
     let mut sheets = super::mark_given(
         paper,
         settings,
@@ -261,5 +265,35 @@ pub fn sheets(paper: &Paper, settings: Settings, given: &[Given]) -> Vec<Sheet> 
     for (s, g) in sheets.iter_mut().zip(given) {
         s.drawn.clone_from(&g.drawn);
     }
+    one_attempt_each(r, given, &mut sheets);
     sheets
+}
+
+/// Marks every attempt but the best of each student as another attempt.
+/// A student is their email, else their ID number, else their name.
+fn one_attempt_each(r: &Responses, given: &[Given], sheets: &mut [Sheet]) {
+    let student = |g: &Given| {
+        let a = &r.attempts[g.attempt];
+        [&a.email, &a.id_number]
+            .into_iter()
+            .find(|s| !s.is_empty())
+            .map_or_else(|| g.who.to_lowercase(), |s| s.to_lowercase())
+    };
+    let share = |s: &Sheet| {
+        s.score()
+            .zip(s.total())
+            .map(|(e, t)| e / f64::from(t.max(1)))
+    };
+    let keys: Vec<String> = given.iter().map(student).collect();
+    for i in 0..sheets.len() {
+        let best = (0..sheets.len())
+            .filter(|&j| keys[j] == keys[i] && share(&sheets[j]).is_some())
+            .fold(None, |b: Option<usize>, j| match b {
+                Some(b) if share(&sheets[b]) >= share(&sheets[j]) => Some(b),
+                _ => Some(j),
+            });
+        if let Some(b) = best.filter(|&b| b != i) {
+            sheets[i].duplicate = Some((sheets[b].file.clone(), Same::Attempt));
+        }
+    }
 }

@@ -29,6 +29,9 @@ pub enum Same {
     Nim,
     /// The same answers, one file naming no student.
     Answers,
+    /// Another attempt of the same student at a Moodle quiz (the one with
+    /// the highest grade is kept, as the gradebook's grade is).
+    Attempt,
 }
 
 impl Same {
@@ -38,6 +41,7 @@ impl Same {
             Same::Name => "name",
             Same::Nim => "nim",
             Same::Answers => "answers",
+            Same::Attempt => "attempt",
         }
     }
 }

@@ -125,7 +125,7 @@ impl ErrorWords for En {
             ErrMsg::MarksMethodAsked(k) => format!("`{k}` is asked for its own marks, so it cannot also earn method marks for another value"),
             ErrMsg::NotAProblemOfExam(k, names) => format!("`{k}` is not in a table of a problem of the exam ([{names}])"),
             ErrMsg::ReportFormat(p) => format!("{p}: the report's format comes from its extension: .html, .md, .json or .csv"),
-            ErrMsg::NotResponses(c) => format!("not Moodle's quiz Responses report ({c}): download it from Quiz → Results → Responses, \"Download table data as\" CSV or JSON"),
+            ErrMsg::NotResponses(c) => format!("not Moodle's quiz Responses report ({c}): download it from Quiz → Results → Responses, \"Download table data as\" CSV, JSON, Excel or OpenDocument"),
             ErrMsg::NoQuestionText => "the Responses report does not show which question each student drew: tick \"Question text\" in the report's options and download it again".into(),
             ErrMsg::AnswersFolder(d, why) => format!(
                 "the folder of answer files {d} cannot be read: {} (a class report needs --answers DIR)",

@@ -132,6 +132,7 @@ impl ReportWords for En {
             Same::Name => "same name",
             Same::Nim => "same NIM",
             Same::Answers => "same answers, one file naming no student",
+            Same::Attempt => "another attempt at the quiz; the highest grade is kept",
         }
     }
 

@@ -140,7 +140,7 @@ impl ErrorWords for Id {
             ErrMsg::MarksMethodAsked(k) => format!("`{k}` sudah ditanyakan dengan poinnya sendiri, sehingga tidak dapat juga memberi poin langkah untuk jawaban lain"),
             ErrMsg::NotAProblemOfExam(k, names) => format!("`{k}` tidak berada di tabel soal ujian ini ([{names}])"),
             ErrMsg::ReportFormat(p) => format!("{p}: format laporan ditentukan oleh ekstensinya: .html, .md, .json atau .csv"),
-            ErrMsg::NotResponses(c) => format!("bukan laporan Responses kuis Moodle ({c}): unduh dari Kuis → Hasil → Responses, \"Download table data as\" CSV atau JSON"),
+            ErrMsg::NotResponses(c) => format!("bukan laporan Jawaban (Responses) kuis Moodle ({c}): unduh dari Kuis → Hasil → Jawaban, \"Unduh data tabel sebagai\" CSV, JSON, Excel atau OpenDocument"),
             ErrMsg::NoQuestionText => "laporan Responses tidak menunjukkan soal yang didapat tiap mahasiswa: centang \"Question text\" di pilihan laporan lalu unduh lagi".into(),
             ErrMsg::AnswersFolder(d, why) => format!(
                 "folder berkas jawaban {d} tidak dapat dibaca: {} (laporan kelas memerlukan --answers DIR)",

@@ -132,6 +132,7 @@ impl ReportWords for Id {
             Same::Name => "nama sama",
             Same::Nim => "NIM sama",
             Same::Answers => "jawaban sama, satu berkas tanpa nama mahasiswa",
+            Same::Attempt => "percobaan lain pada kuis yang sama; nilai tertinggi yang dipakai",
         }
     }
 
