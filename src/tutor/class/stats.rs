@@ -73,6 +73,7 @@ pub const CODES: [&str; 8] = [
 
 /// What is suspect about a key.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Flag {
     /// Facility above [`VERY_EASY`].
     VeryEasy,
