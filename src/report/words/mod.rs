@@ -197,7 +197,8 @@ mod tests {
             .filter(|s| !matches!(s, Said::Status(_)))
             .collect();
         v.push(Said::BitTest(true, "x > xmax".into(), "4.5 > 3".into()));
-        v.extend(["clipped", "accepted", "rejected"].map(|c| Said::Status(c.into())));
+        let codes = crate::stages::clip::Status::iter().map(|s| s.as_str());
+        v.extend(codes.map(|c| Said::Status(c.into())));
         v.into_iter().map(Msg::Said).collect()
     }
 

@@ -106,10 +106,12 @@ mod tests {
     };
     use crate::report::lang::Lang;
     use crate::report::words::of;
+    use crate::stages::clip::Status;
     use crate::tutor::check::Verdict;
     use crate::tutor::class::same::Same;
     use crate::tutor::class::stats::Flag;
     use crate::tutor::class::{Note, Skip};
+    use crate::tutor::generate::numbers::NumberClass;
     use strum::IntoEnumIterator;
 
     /// Every key's words in one language, one string per key (with the
@@ -212,7 +214,8 @@ mod tests {
 
     /// Every quiz key: the instructions in each decimal mark, with and
     /// without pixels; `Word` carries a code whose words it gives (its
-    /// default, the empty code, has none), so only real codes.
+    /// default, the empty code, has none), so each clipping status and
+    /// `none`.
     fn quiz_keys() -> Vec<Q> {
         let mut v: Vec<Q> = Q::iter().filter(|q| !matches!(q, Q::Word(_))).collect();
         for mark in Decimal::iter() {
@@ -225,7 +228,8 @@ mod tests {
                 });
             }
         }
-        v.extend(["clipped", "none"].map(|c| Q::Word(c.into())));
+        let codes = Status::iter().map(Status::as_str).chain(["none"]);
+        v.extend(codes.map(|c| Q::Word(c.into())));
         v
     }
 
@@ -245,14 +249,13 @@ mod tests {
     fn plan_keys() -> Vec<N> {
         let coded = |k: &N| matches!(k, N::Clip { .. } | N::Class(_));
         let mut v: Vec<N> = N::iter().filter(|k| !coded(k)).collect();
-        v.extend(["clipped", "accepted", "rejected"].map(|status| N::Clip {
-            status: status.into(),
+        v.extend(Status::iter().map(|s| N::Clip {
+            status: s.as_str().into(),
             bits: [0, 2],
             tried: 2,
             kept: 1,
         }));
-        let classes = ["rational", "one_surd", "several_surds", "no_closed_form"];
-        v.extend(classes.map(|c| N::Class(c.into())));
+        v.extend(NumberClass::iter().map(|c| N::Class(c.name().into())));
         v
     }
 
