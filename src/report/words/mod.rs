@@ -95,31 +95,17 @@ mod tests {
         Msg::iter().flat_map(with_nested).collect()
     }
 
-    /// `m` once per variant of the key it holds, or with the values its
-    /// words depend on, else `m` itself.
+    /// `m` once per variant of the key it holds, else with the values
+    /// its words depend on ([`with_values`]).
     fn with_nested(m: Msg) -> Vec<Msg> {
         use crate::msg::{DrawnTitle, Implausible};
-        let why = || Msg::Written("as for B".into(), Some("seperti B".into()));
         let errata = || std::iter::once(None).chain(Erratum::iter().map(Some));
         match m {
             Msg::Math(_) => vec![],
-            // a lecturer's own words; none is none to say
-            Msg::Written(..) => vec![why()],
             Msg::Erratum(..) => errata().map(|k| Msg::Erratum(k, Box::new(why()))).collect(),
             Msg::Printed(_) => (Printed::iter().filter(|p| !matches!(p, Printed::Differs(_))))
                 .chain(errata().map(Printed::Differs))
                 .map(Msg::Printed)
-                .collect(),
-            // the parts a problem asks, named in the text's words
-            Msg::Asked(_) => {
-                let parts = ["view", "project", "window", "viewport", "clip", "shade"];
-                vec![Msg::Asked(parts.map(String::from).to_vec())]
-            }
-            // a segment's number when there are several
-            Msg::SecLineClip(_) => vec![Msg::SecLineClip(None), Msg::SecLineClip(Some(2))],
-            // each plane of clip::PLANES by its index
-            Msg::Intersection(..) => (0..6)
-                .map(|i| Msg::Intersection(i, "x = xmin".into()))
                 .collect(),
             // one light (no number) and the first of two
             Msg::Light(..) => LightPart::iter()
@@ -133,6 +119,49 @@ mod tests {
             Msg::SpotIn(_) => SpotZone::iter().map(Msg::SpotIn).collect(),
             Msg::TrivialNote(_) => Trivial::iter().map(Msg::TrivialNote).collect(),
             Msg::DrawnTitle(_) => DrawnTitle::iter().map(Msg::DrawnTitle).collect(),
+            Msg::Unreadable(_) => errors::tests::every_number()
+                .into_iter()
+                .map(Msg::Unreadable)
+                .collect(),
+            Msg::NoFollowFrom(..) => Implausible::iter()
+                .map(|i| Msg::NoFollowFrom("view.u".into(), i, "view.v".into()))
+                .collect(),
+            Msg::Err(_) => errors::tests::every_error()
+                .into_iter()
+                .map(Msg::Err)
+                .collect(),
+            Msg::Said(_) => said_messages(),
+            Msg::Figure(_) => figure_messages(),
+            Msg::Pixel(_) => pixel::every().into_iter().map(Msg::Pixel).collect(),
+            Msg::Statement(_) => statements()
+                .into_iter()
+                .map(|s| Msg::Statement(Box::new(s)))
+                .collect(),
+            other => with_values(other),
+        }
+    }
+
+    /// A lecturer's reason for an erratum, in both languages.
+    fn why() -> Msg {
+        Msg::Written("as for B".into(), Some("seperti B".into()))
+    }
+
+    /// `m` with each value its words depend on, else `m` itself.
+    fn with_values(m: Msg) -> Vec<Msg> {
+        match m {
+            // a lecturer's own words are what is said (the empty default says nothing)
+            Msg::Written(..) => vec![why()],
+            // the parts a problem asks, named in the text's words
+            Msg::Asked(_) => {
+                let parts = ["view", "project", "window", "viewport", "clip", "shade"];
+                vec![Msg::Asked(parts.map(String::from).to_vec())]
+            }
+            // a segment's number when there are several
+            Msg::SecLineClip(_) => vec![Msg::SecLineClip(None), Msg::SecLineClip(Some(2))],
+            // each plane of clip::PLANES by its index
+            Msg::Intersection(..) => (0..6)
+                .map(|i| Msg::Intersection(i, "x = xmin".into()))
+                .collect(),
             Msg::Behind(_) => vec![Msg::Behind(true), Msg::Behind(false)],
             Msg::Orthonormal(_) => vec![Msg::Orthonormal(true), Msg::Orthonormal(false)],
             Msg::Kept(_) => vec![Msg::Kept(true), Msg::Kept(false)],
@@ -163,28 +192,10 @@ mod tests {
                     all,
                 })
                 .to_vec(),
-            Msg::Unreadable(_) => errors::tests::every_number()
-                .into_iter()
-                .map(Msg::Unreadable)
-                .collect(),
-            Msg::NoFollowFrom(..) => Implausible::iter()
-                .map(|i| Msg::NoFollowFrom("view.u".into(), i, "view.v".into()))
-                .collect(),
             // the notes of a value's components
             Msg::Parts(_) => vec![Msg::Parts(vec![("x".into(), Msg::Exact)])],
             // a location before a message
             Msg::At(..) => vec![Msg::At("p.toml:3:7".into(), Box::new(Msg::ErrUpZero))],
-            Msg::Err(_) => errors::tests::every_error()
-                .into_iter()
-                .map(Msg::Err)
-                .collect(),
-            Msg::Said(_) => said_messages(),
-            Msg::Figure(_) => figure_messages(),
-            Msg::Pixel(_) => pixel::every().into_iter().map(Msg::Pixel).collect(),
-            Msg::Statement(_) => statements()
-                .into_iter()
-                .map(|s| Msg::Statement(Box::new(s)))
-                .collect(),
             other => vec![other],
         }
     }
