@@ -33,8 +33,10 @@ pub use said::Said;
 
 /// A term of the lighting sum.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum Term {
     /// The ambient term.
+    #[cfg_attr(test, default)]
     Ambient,
     /// The diffuse term.
     Diffuse,
@@ -45,8 +47,10 @@ pub enum Term {
 /// A part of one light's contribution (a step title, numbered per light when
 /// there is more than one).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum LightPart {
     /// d > range: the light is not evaluated.
+    #[cfg_attr(test, default)]
     OutOfRange,
     /// L and d.
     Direction,
@@ -66,8 +70,10 @@ pub enum LightPart {
 
 /// Where a point lies against a spot light's cones.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum SpotZone {
     /// ρ ≥ cos(θ/2).
+    #[cfg_attr(test, default)]
     Inner,
     /// ρ ≤ cos(φ/2).
     Outer,
@@ -77,8 +83,10 @@ pub enum SpotZone {
 
 /// What the trivial tests of outcode clipping decided.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum Trivial {
     /// Both codes 000000.
+    #[cfg_attr(test, default)]
     Accept,
     /// The codes share a bit.
     Reject,
@@ -90,6 +98,7 @@ pub enum Trivial {
 /// `[[errata]] kind`, docs/spec.md §5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Deserialize, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Erratum {
     /// A wrong number in print (the text's 20/6 for 16/6).
     Misprint,
@@ -102,8 +111,10 @@ pub enum Erratum {
 
 /// How an answer printed in a source compares with the computed one.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum Printed {
     /// It agrees to the digits printed.
+    #[cfg_attr(test, default)]
     Agrees,
     /// It differs: of what kind, where the problem file says.
     Differs(Option<Erratum>),
@@ -116,8 +127,10 @@ pub enum Printed {
 /// Why a student's earlier value cannot start follow-through: it is not
 /// what its step could give (`tutor::check::plausible`).
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum Implausible {
     /// Not a unit vector (a camera axis, L, N, H, R).
+    #[cfg_attr(test, default)]
     NotUnit,
     /// Not perpendicular to the axis before it (that axis's key).
     NotPerpendicular(String),
@@ -137,6 +150,7 @@ pub enum Implausible {
 
 /// One message for a person.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Msg {
     /// Mathematical notation, the same in every language (empty: none).
     Math(String),

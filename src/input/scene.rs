@@ -110,6 +110,7 @@ impl<'de> Deserialize<'de> for Rgb {
 /// Shading mode.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Default)]
 #[serde(rename_all = "lowercase")]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Shading {
     /// One lighting evaluation per face, with the face normal.
     #[default]
@@ -214,6 +215,7 @@ pub enum ScaleIn {
 
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
 #[serde(rename_all = "lowercase")]
+#[cfg_attr(test, derive(strum::EnumIter))]
 enum ObjectType {
     Cone,
     Sphere,
@@ -893,11 +895,11 @@ mod tests {
             let read: X = toml::Value::String(name.into()).try_into().expect(name);
             assert_eq!(read, x, "{name}");
         }
-        use ObjectType as O;
-        for t in [O::Cone, O::Sphere, O::Cylinder, O::Box, O::Plane, O::Obj] {
+        use strum::IntoEnumIterator;
+        for t in ObjectType::iter() {
             reads(t, t.name());
         }
-        for s in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+        for s in Shading::iter() {
             reads(s, s.name());
         }
     }

@@ -5,8 +5,10 @@
 
 /// The title of a generated problem.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum DrawnTitle {
     /// The camera basis u, v, n.
+    #[cfg_attr(test, default)]
     Basis,
     /// Eye coordinates of points.
     EyeCoordinates,
@@ -76,6 +78,7 @@ pub type NamedPoint = (String, Triple);
 
 /// A camera as stated: Pe, Pr and Vup.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(Default))]
 pub struct StatedCamera {
     /// Pe.
     pub eye: Triple,
@@ -87,8 +90,10 @@ pub struct StatedCamera {
 
 /// What a lighting problem asks for, by model.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum ShadeAsked {
     /// The ambient term.
+    #[cfg_attr(test, default)]
     Ambient,
     /// cos α, the diffuse term.
     Diffuse,
@@ -104,6 +109,7 @@ pub enum ShadeAsked {
 
 /// The statement of a generated problem.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Statement {
     /// Find n, u, v.
     Basis(StatedCamera),
@@ -148,6 +154,23 @@ pub enum Statement {
         /// What is asked.
         asked: ShadeAsked,
     },
+}
+
+/// For the tests' iteration over the message keys (`strum::EnumIter`
+/// fills a variant's fields with their defaults).
+#[cfg(test)]
+impl Default for Number {
+    fn default() -> Number {
+        Number::int(0)
+    }
+}
+
+/// For the tests' iteration over the message keys.
+#[cfg(test)]
+impl Default for Statement {
+    fn default() -> Statement {
+        Statement::Basis(StatedCamera::default())
+    }
 }
 
 #[cfg(test)]

@@ -7,12 +7,14 @@
 /// Why a number expression (a flag, a file value, an answer) or a plane's
 /// height formula could not be read or evaluated.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum NumErr {
     /// The text as typed, then why (`` `1+*2`: … ``).
     Quoted(String, Box<NumErr>),
     /// Longer than allowed: characters, the most allowed.
     TooLong(usize, usize),
     /// Nothing where a number should be.
+    #[cfg_attr(test, default)]
     Empty,
     /// Expected this at a 1-based column; the character found (none: the end).
     Expected(Want, usize, Option<char>),
@@ -54,8 +56,10 @@ pub enum NumErr {
 
 /// What the number reader expected.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum Want {
     /// An operator or the end of the number.
+    #[cfg_attr(test, default)]
     OperatorOrEnd,
     /// `)`.
     Close,
@@ -67,8 +71,10 @@ pub enum Want {
 
 /// What a path names, when it is not a regular file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum FileKind {
     /// A FIFO (named pipe).
+    #[cfg_attr(test, default)]
     Fifo,
     /// A socket.
     Socket,
@@ -112,8 +118,10 @@ impl FileKind {
 
 /// Why a folder's `.grafika-generated` is not a list `generate` wrote.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum ListWhy {
     /// It is not a regular file (a link, a folder).
+    #[cfg_attr(test, default)]
     NotAFile,
     /// Its first line is not the one generate writes.
     Heading,
@@ -129,8 +137,10 @@ pub enum ListWhy {
 
 /// Why a file could not be read or written (the system's reason, by kind).
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum IoWhy {
     /// No such file or directory.
+    #[cfg_attr(test, default)]
     NotFound,
     /// Permission denied.
     Denied,
@@ -176,8 +186,10 @@ impl IoWhy {
 
 /// A bound a value must keep, for "must be …, got X".
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum Bound {
     /// A number ≥ 0 (material constants).
+    #[cfg_attr(test, default)]
     NumberAtLeastZero,
     /// ≥ 0.
     AtLeastZero,
@@ -199,8 +211,10 @@ pub enum Bound {
 
 /// Something given twice where once is wanted.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum Twice {
     /// The global ambient, in the lights file and in `[shade]`.
+    #[cfg_attr(test, default)]
     GlobalAmbient,
     /// The material, in the lights file and in `[shade]`.
     Material,
@@ -224,8 +238,10 @@ pub enum Twice {
 
 /// A colour channel.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum Channel {
     /// Red.
+    #[cfg_attr(test, default)]
     Red,
     /// Green.
     Green,
@@ -241,8 +257,10 @@ impl Channel {
 /// Why the OBJ reader (the `tobj` crate) refused a file: one case per
 /// reason it gives (`input::mesh` maps its error to these).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum ObjWhy {
     /// A file (a material library) could not be opened.
+    #[cfg_attr(test, default)]
     OpenFileFailed,
     /// The file could not be read.
     ReadError,
@@ -283,6 +301,7 @@ pub enum ObjWhy {
 /// What needs a key: a light of a kind, or an object of a type (as spelled
 /// in the file: `spot`, `sphere`, `obj`).
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Thing {
     /// A light of this kind.
     Light(String),
@@ -292,6 +311,7 @@ pub enum Thing {
 
 /// What clap refused on the command line.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum ClapErr {
     /// A value not among the possible ones: the value, the possible ones.
     InvalidValue(String, String),
@@ -306,6 +326,7 @@ pub enum ClapErr {
     /// Two arguments that cannot be used together.
     Conflict(String, String),
     /// An argument without its value.
+    #[cfg_attr(test, default)]
     NoValue,
     /// An argument with more or fewer values than it takes.
     ValueCount(String),
@@ -315,6 +336,7 @@ pub enum ClapErr {
 
 /// Why an input was refused.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum ErrMsg {
     /// A number that cannot be read or evaluated.
     Num(NumErr),
@@ -329,6 +351,7 @@ pub enum ErrMsg {
     /// Spot cones not 0 ≤ theta ≤ phi ≤ 180°: theta, phi.
     Cones(String, String),
     /// The view plane z = 0 through the centre of projection at the origin.
+    #[cfg_attr(test, default)]
     PlaneThroughOrigin,
     /// The view plane z = zvp through the centre of projection.
     PlaneThroughCop(String),
@@ -553,6 +576,7 @@ pub enum ErrMsg {
 
 /// A TOML file's error, by kind (the field and place are beside it).
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum TomlErr {
     /// A key the table does not take: the key, the keys it takes.
     UnknownField(String, Option<String>),
@@ -603,5 +627,22 @@ impl NumErr {
     /// This reason after the text it is about (`` `1+*2`: … ``).
     pub fn quoted(self, text: &str) -> NumErr {
         NumErr::Quoted(text.to_string(), Box::new(self))
+    }
+}
+
+/// For the tests' iteration over the error keys (`strum::EnumIter`
+/// fills a variant's fields with their defaults).
+#[cfg(test)]
+impl Default for Thing {
+    fn default() -> Thing {
+        Thing::Light(String::new())
+    }
+}
+
+/// For the tests' iteration over the error keys.
+#[cfg(test)]
+impl Default for TomlErr {
+    fn default() -> TomlErr {
+        TomlErr::MissingField(String::new())
     }
 }

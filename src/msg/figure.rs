@@ -4,8 +4,10 @@
 
 /// A panel of a drawing.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum Panel {
     /// The world axes, Peye, Pref, Vup and u, v, n.
+    #[cfg_attr(test, default)]
     Camera,
     /// Projectors from the centre of projection to the view plane, in 3D.
     Projection,
@@ -37,8 +39,10 @@ pub enum Panel {
 
 /// A word or short phrase written inside a figure.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum FigWord {
     /// The centre of projection.
+    #[cfg_attr(test, default)]
     Cop,
     /// The eye.
     Eye,
@@ -68,6 +72,7 @@ pub enum FigWord {
 
 /// A figure's message.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum FigureMsg {
     /// A panel's title.
     Title(Panel),
@@ -96,4 +101,13 @@ pub enum FigureMsg {
     /// The ends' codes ANDed (not 000000): the segment is rejected without
     /// intersections.
     Rejected(String),
+}
+
+/// For the tests' iteration over the message keys (`strum::EnumIter`
+/// fills a variant's fields with their defaults).
+#[cfg(test)]
+impl Default for FigureMsg {
+    fn default() -> FigureMsg {
+        FigureMsg::Word(FigWord::default())
+    }
 }

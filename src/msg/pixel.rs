@@ -4,10 +4,12 @@
 
 /// A title, section or note of the pixel explainer's geometry steps.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum PixelMsg {
     /// Section: vertex k of the covering triangle, object to clip space.
     SecVertex(usize),
     /// Section: clipping the triangle against the planes it crosses.
+    #[cfg_attr(test, default)]
     SecClip,
     /// Section: the view matrix V and the projection matrix P of the scene.
     SecMatrices,

@@ -5,6 +5,7 @@
 /// same in every language) is [`Summary::key`], its words in the text
 /// `report::words::render::summary`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Summary {
     /// The PNG written.
     Image,
@@ -43,6 +44,7 @@ impl Summary {
 /// Phong-shaded), on the Phong objects only, or nowhere (the shadings
 /// drawn, all per face or per vertex).
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum PerPixel {
     /// Every object is Phong-shaded.
     Everywhere,

@@ -8,6 +8,7 @@
 /// text table's columns, the lecturer's document's headings, columns and
 /// sentences, the histogram's labels.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum ClassWord {
     /// The report's title, before the class's title.
     ClassReport,
@@ -150,6 +151,7 @@ pub enum ClassWord {
 /// A word of `grafika practice` for people: the session's heading, the
 /// verdicts, hints, the shape of an answer, the summary's headings.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum PracticeWord {
     /// The session's first line.
     Title {
@@ -235,6 +237,7 @@ pub enum PracticeWord {
 /// A word of a marked answer file (`grafika check --answers FILE`) as
 /// text; the class report shares its columns and notes.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum CheckWord {
     /// Column: the answer's key.
     Answer,
@@ -280,6 +283,7 @@ pub enum CheckWord {
 /// Markdown, LaTeX; the exam's sheets; a Moodle question): headings,
 /// labels, the comparison with a source's printed answers.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum DocWord {
     /// Before a step's number.
     Step,
@@ -383,6 +387,7 @@ pub enum DocWord {
 /// mark of its interface language (English: `0,5` is 5, the comma a
 /// thousands separator; Indonesian: both `0,5` and `0.5` are 0.5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Decimal {
     /// `0.5`: for a Moodle in English (the common case).
     #[default]
@@ -404,6 +409,7 @@ impl Decimal {
 /// A word of a quiz (Moodle XML, GIFT): how to type the answers, the
 /// feedback, the parts of a question, the names of a value's components.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum QuizWord {
     /// How to type the numbers.
     Instructions {
@@ -442,6 +448,7 @@ pub enum QuizWord {
 /// A word of the command line itself: progress bars, a page's title, the
 /// field of an error that names none.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum CliWord {
     /// A page's title after the command: `grafika view — worked solution`.
     WorkedSolution,
@@ -461,6 +468,7 @@ pub enum CliWord {
 /// A line of `render --stats`: a count of the pipeline's work or a stage's
 /// median time.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum StatWord {
     /// The table's heading.
     Heading,
@@ -512,6 +520,7 @@ pub enum StatWord {
 /// A word of an exam's blueprint (`generate`): its heading, columns and
 /// cells.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum PlanWord {
     /// blueprint.md's title.
     Title,
@@ -563,6 +572,7 @@ pub enum PlanWord {
 /// A word of `grafika bench`'s table: its columns, a row's verdict and
 /// the notes below it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum BenchWord {
     /// Column: the stage.
     Stage,

@@ -4,6 +4,7 @@
 
 /// Words given as a value.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Said {
     /// An outcode bit's test: whether it holds, the comparison (`x > xmax`)
     /// and its values (`4 > 3`).
@@ -16,4 +17,13 @@ pub enum Said {
     FrameTime(String, String, String),
     /// A clipping status as a word (`clipped`, `accepted`, `rejected`).
     Status(String),
+}
+
+/// For the tests' iteration over the message keys (`strum::EnumIter`
+/// fills a variant's fields with their defaults).
+#[cfg(test)]
+impl Default for Said {
+    fn default() -> Said {
+        Said::Status(String::new())
+    }
 }

@@ -28,6 +28,7 @@ use std::ops::{BitAnd, Not};
 /// The precision a calculation runs at (`--precision`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, Default)]
 #[serde(rename_all = "lowercase")]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Precision {
     /// Exact sums of surds where the mathematics is exact, marked `≈` otherwise.
     #[default]
@@ -301,15 +302,16 @@ pub trait Scalar:
 #[cfg(test)]
 mod tests {
     use super::Precision;
+    use strum::IntoEnumIterator;
 
     /// `--precision`, the errors and the JSON spell a precision one way:
     /// `name`, which is also serde's spelling.
     #[test]
     fn a_precision_is_spelled_by_its_name_everywhere() {
-        for p in [Precision::Exact, Precision::F64, Precision::F32] {
+        for p in Precision::iter() {
             assert_eq!(serde_json::to_value(p).ok(), Some(p.name().into()));
         }
-        let names = [Precision::Exact, Precision::F64, Precision::F32].map(Precision::name);
+        let names: Vec<&str> = Precision::iter().map(Precision::name).collect();
         assert_eq!(names, ["exact", "f64", "f32"]);
     }
 }

@@ -39,6 +39,7 @@ impl<T: Scalar> ClipBox<T> {
 
 /// The outcome of clipping a segment.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Status {
     /// Both ends inside: kept whole.
     Accepted,

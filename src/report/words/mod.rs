@@ -84,279 +84,152 @@ mod tests {
     use super::*;
     use crate::msg::{Erratum, LightPart, Printed, SpotZone, Term, Trivial};
     use crate::report::lang::NumStyle;
+    use strum::IntoEnumIterator;
 
-    /// Every key, once, with sample parameters.
+    /// Every key: every variant of `Msg` (`EnumIter`, its fields at
+    /// their defaults, so a key added is tested without being listed),
+    /// a nested key's every variant in its place, and the samples whose
+    /// words depend on their values. `Math` is notation, the same in
+    /// every language, and has no words of its own.
     pub fn every_message() -> Vec<Msg> {
-        let s = || "A".to_string();
-        let mut v = vec![
-            Msg::SecModeling,
-            Msg::SecViewing,
-            Msg::SecProjection,
-            Msg::SecWindowClip,
-            Msg::SecWindow,
-            Msg::SecViewport,
-            Msg::SecLineClip(None),
-            Msg::SecLineClip(Some(2)),
-            Msg::SecLighting,
-            Msg::SecPixel(1, 2),
-            Msg::SecLightFace,
-            Msg::SecLightVertex(1),
-            Msg::SecLightPixel,
-            Msg::CamAxisN,
-            Msg::CamAxisU,
-            Msg::CamAxisV,
-            Msg::CamCheck,
-            Msg::CamMatrix,
-            Msg::ViewMatrix,
-            Msg::EyeCoords(s()),
-            Msg::OrthoProj(s()),
-            Msg::PerspProj(s()),
-            Msg::WindowTop(s()),
-            Msg::WindowEdges(s()),
-            Msg::ViewportOf(s()),
-            Msg::OutcodeOf(s()),
-            Msg::TrivialTests,
-            Msg::ClippedSegment,
-            Msg::LiangBarsky,
-            Msg::MethodsAgree,
-            Msg::NothingToDo,
-            Msg::ProjPlane,
-            Msg::InsideVolume(s()),
-            Msg::UnitVector(s()),
-            Msg::ViewerLocal,
-            Msg::Material,
-            Msg::SumOfTerms,
-            Msg::Clamp,
-            Msg::WhichTriangle,
-            Msg::Depth,
-            Msg::Barycentric,
-            Msg::FlatShading,
-            Msg::Gouraud,
-            Msg::PhongShading,
-            Msg::PixelColour,
-            Msg::FOutOfRange,
-            Msg::FIncidence,
-            Msg::FCamMatrix,
-            Msg::FWindowEdges,
-            Msg::FViewMatrix,
-            Msg::FTrivial,
-            Msg::FOutcode,
-            Msg::FSegment,
-            Msg::FMethods,
-            Msg::FProjPlane,
-            Msg::FPixelCentre,
-            Msg::FEdges,
-            Msg::FDepth,
-            Msg::FBarycentric,
-            Msg::FFlat,
-            Msg::FLiangBarsky,
-            Msg::FInside,
-            Msg::FSpot,
-            Msg::FClamp,
-            Msg::FByte,
-            Msg::AlreadyUnit,
-            Msg::Saturates,
-            Msg::InRange,
-            Msg::TextSetting,
-            Msg::SummedInRange,
-            Msg::SpecularSkipped,
-            Msg::BeyondRange,
-            Msg::WithinRange,
-            Msg::NoRange,
-            Msg::Behind(true),
-            Msg::Behind(false),
-            Msg::LocalViewer,
-            Msg::NoLocalViewer,
-            Msg::ShininessZero,
-            Msg::SpecularOff,
-            Msg::NoHighlightBehind,
-            Msg::BehindCentre,
-            Msg::TextH,
-            Msg::Orthonormal(true),
-            Msg::Orthonormal(false),
-            Msg::Kept(true),
-            Msg::Kept(false),
-            Msg::TouchesPoint,
-            Msg::InsidePart,
-            Msg::Misses,
-            Msg::DefaultView,
-            Msg::MaterialD3d,
-            Msg::MaterialText,
-            Msg::NoTriangle,
-            Msg::Nearest,
-            Msg::Agree(true),
-            Msg::Agree(false),
-            Msg::AlreadyWorld,
-            Msg::Inside(true, true),
-            Msg::Inside(false, true),
-            Msg::Inside(true, false),
-            Msg::UpParallel(1e-9),
-            Msg::BehindWarn(s()),
-            Msg::ExactTooLarge(64),
-            Msg::ExactTooLong(16_384),
-            Msg::StaleTempRemoved("out/.grafika-tmp-123-4567-ab".into(), 123),
-            Msg::NoFigure,
-            Msg::ExpectOne,
-            Msg::ExpectList(3),
-            Msg::CountMismatch(3, 2),
-            Msg::Expected("0.5".into()),
-            Msg::ExpectedNone,
-            Msg::ExpectedBool(true),
-            Msg::SeveralAnswers,
-            Msg::EmptyAnswer,
-            Msg::NoAnswer,
-            Msg::AnswerTooLong(5000, 4000),
-            Msg::Unreadable(crate::msg::NumErr::Empty),
-            Msg::Exact,
-            Msg::Rounded(4),
-            Msg::RoundedCoarse(1, 3),
-            Msg::WithinPct("0.5".into()),
-            Msg::Parts(vec![("x".into(), Msg::Exact)]),
-            Msg::WithinPixel,
-            Msg::NotAnOutcode(s()),
-            Msg::NotAStatus(s()),
-            Msg::NotYesOrNo(s()),
-            Msg::AmbiguousCommas,
-            Msg::FollowThrough,
-            Msg::NoFollowFrom(
-                "view.u".into(),
-                crate::msg::Implausible::NotUnit,
-                "view.v".into(),
-            ),
-            Msg::NoFollowFrom(
-                "view.v".into(),
-                crate::msg::Implausible::NotPerpendicular("view.n".into()),
-                "view.points.A".into(),
-            ),
-            Msg::NoFollowFrom(
-                "clip.intersections.right.point".into(),
-                crate::msg::Implausible::OffSegment,
-                "clip.segment".into(),
-            ),
-            Msg::ErrSamePoint("(1, 2, 3)".into()),
-            Msg::ErrUpZero,
-            Msg::ErrUpParallel("(0, 1, 0)".into(), "(0, 5, 0)".into()),
-            Msg::ErrFovy("180".into()),
-            Msg::ErrAspect("0".into()),
-            Msg::ErrNear("-1".into()),
-            Msg::ErrCopPlane(s(), None),
-            Msg::ErrCopPlane(s(), Some("2".into())),
-            Msg::ErrUnknownPoint(s(), None),
-            Msg::ErrUnknownPoint(s(), Some("A, B".into())),
-            Msg::ErrBoxInverted("y".into(), "5".into(), "4".into()),
-            Msg::ErrCannotRead("p.toml".into(), crate::msg::IoWhy::NotFound),
-            Msg::ErrZeroUnit(s()),
-            Msg::ErrNamedPoint(s()),
-            Msg::ErrPointName(s()),
-            Msg::ErrPointTwice(s()),
-            Msg::ErrNamedPair(s()),
-            Msg::ErrSize(s()),
-            Msg::ErrCopNeedsPlane,
-            Msg::ErrPlaneNeedsCop,
-            Msg::ErrChooseProjection,
-            Msg::ErrPointNeedsViewport,
-        ];
-        for i in 0..6 {
-            v.push(Msg::Intersection(i, "x = xmin".into()));
-        }
-        for t in [Term::Ambient, Term::Diffuse, Term::Specular] {
-            v.push(Msg::TermStep(t));
-            v.push(Msg::NoTermInModel("lambert".into(), t));
-            v.push(Msg::TextTerm(t));
-        }
-        for p in [
-            LightPart::OutOfRange,
-            LightPart::Direction,
-            LightPart::Attenuation,
-            LightPart::Incidence,
-            LightPart::Reflection,
-            LightPart::HalfVector,
-            LightPart::Highlight,
-            LightPart::Spot,
-        ] {
-            v.push(Msg::Light((0, 1), p));
-            v.push(Msg::Light((1, 2), p));
-        }
-        for z in [SpotZone::Inner, SpotZone::Outer, SpotZone::Penumbra] {
-            v.push(Msg::SpotIn(z));
-        }
-        for t in [Trivial::Accept, Trivial::Reject, Trivial::Clip] {
-            v.push(Msg::TrivialNote(t));
-        }
-        for all in [true, false] {
-            v.push(Msg::ErrFewDistinct {
-                topic: "window".into(),
-                level: "easy".into(),
-                problem: 2,
-                found: 20,
-                asked: 40,
-                all,
-            });
-        }
-        v.push(Msg::ErrHtmlCommand);
-        v.extend(figure_messages());
-        v.extend(drawn_messages());
-        v.push(Msg::Unreadable(crate::msg::NumErr::DivZero("1/0".into())));
-        v.push(Msg::Written("as for B".into(), Some("seperti B".into())));
-        for k in [
-            None,
-            Some(Erratum::Misprint),
-            Some(Erratum::Convention),
-            Some(Erratum::Rounding),
-        ] {
-            v.push(Msg::Printed(Printed::Differs(k)));
-            let why = Msg::Written("as for B".into(), Some("seperti B".into()));
-            v.push(Msg::Erratum(k, Box::new(why)));
-        }
-        for p in [Printed::Agrees, Printed::NotAsked, Printed::NotComparable] {
-            v.push(Msg::Printed(p));
-        }
-        let parts = ["view", "project", "window", "viewport", "clip", "shade"];
-        v.push(Msg::Asked(parts.map(String::from).to_vec()));
-        for s in [
-            crate::msg::Said::BitTest(true, "x > xmax".into(), "4.5 > 3".into()),
-            crate::msg::Said::BitTest(false, "x < xmin".into(), "4.5 < 0".into()),
-            crate::msg::Said::BitQuestion("x < xmin".into(), "4.5 < 0".into()),
-            crate::msg::Said::FrameTime("12.30".into(), "25.0".into(), "1.20".into()),
-            crate::msg::Said::Status("clipped".into()),
-            crate::msg::Said::Status("accepted".into()),
-            crate::msg::Said::Status("rejected".into()),
-        ] {
-            v.push(Msg::Said(s));
-        }
-        v.push(Msg::At("p.toml:3:7".into(), Box::new(Msg::ErrUpZero)));
-        v.extend(errors::tests::every_error().into_iter().map(Msg::Err));
-        v.extend(pixel::every().into_iter().map(Msg::Pixel));
-        v
+        Msg::iter().flat_map(with_nested).collect()
     }
 
-    /// Every figure message.
-    fn figure_messages() -> Vec<Msg> {
-        use crate::msg::{FigWord as W, FigureMsg as F, Panel as P};
-        let panels = [
-            P::Camera,
-            P::Projection,
-            P::ProjectionSide,
-            P::ViewPlane,
-            P::Frustum,
-            P::WindowSide,
-            P::NearWindow,
-            P::Viewport,
-            P::Clip,
-            P::Shade,
-        ];
-        let words = [W::Cop, W::Eye, W::NotToScale, W::Surface];
-        let mut v: Vec<F> = panels
-            .iter()
-            .flat_map(|p| [F::Title(*p), F::Desc(*p)])
+    /// `m` once per variant of the key it holds, else with the values
+    /// its words depend on ([`with_values`]).
+    fn with_nested(m: Msg) -> Vec<Msg> {
+        use crate::msg::{DrawnTitle, Implausible};
+        let errata = || std::iter::once(None).chain(Erratum::iter().map(Some));
+        match m {
+            Msg::Math(_) => vec![],
+            Msg::Erratum(..) => errata().map(|k| Msg::Erratum(k, Box::new(why()))).collect(),
+            Msg::Printed(_) => (Printed::iter().filter(|p| !matches!(p, Printed::Differs(_))))
+                .chain(errata().map(Printed::Differs))
+                .map(Msg::Printed)
+                .collect(),
+            // one light (no number) and the first of two
+            Msg::Light(..) => LightPart::iter()
+                .flat_map(|p| [Msg::Light((0, 1), p), Msg::Light((1, 2), p)])
+                .collect(),
+            Msg::TermStep(_) => Term::iter().map(Msg::TermStep).collect(),
+            Msg::TextTerm(_) => Term::iter().map(Msg::TextTerm).collect(),
+            Msg::NoTermInModel(..) => Term::iter()
+                .map(|t| Msg::NoTermInModel("lambert".into(), t))
+                .collect(),
+            Msg::SpotIn(_) => SpotZone::iter().map(Msg::SpotIn).collect(),
+            Msg::TrivialNote(_) => Trivial::iter().map(Msg::TrivialNote).collect(),
+            Msg::DrawnTitle(_) => DrawnTitle::iter().map(Msg::DrawnTitle).collect(),
+            Msg::Unreadable(_) => errors::tests::every_number()
+                .into_iter()
+                .map(Msg::Unreadable)
+                .collect(),
+            Msg::NoFollowFrom(..) => Implausible::iter()
+                .map(|i| Msg::NoFollowFrom("view.u".into(), i, "view.v".into()))
+                .collect(),
+            Msg::Err(_) => errors::tests::every_error()
+                .into_iter()
+                .map(Msg::Err)
+                .collect(),
+            Msg::Said(_) => said_messages(),
+            Msg::Figure(_) => figure_messages(),
+            Msg::Pixel(_) => pixel::every().into_iter().map(Msg::Pixel).collect(),
+            Msg::Statement(_) => statements()
+                .into_iter()
+                .map(|s| Msg::Statement(Box::new(s)))
+                .collect(),
+            other => with_values(other),
+        }
+    }
+
+    /// A lecturer's reason for an erratum, in both languages.
+    fn why() -> Msg {
+        Msg::Written("as for B".into(), Some("seperti B".into()))
+    }
+
+    /// `m` with each value its words depend on, else `m` itself.
+    fn with_values(m: Msg) -> Vec<Msg> {
+        match m {
+            // a lecturer's own words are what is said (the empty default says nothing)
+            Msg::Written(..) => vec![why()],
+            // the parts a problem asks, named in the text's words
+            Msg::Asked(_) => {
+                let parts = ["view", "project", "window", "viewport", "clip", "shade"];
+                vec![Msg::Asked(parts.map(String::from).to_vec())]
+            }
+            // a segment's number when there are several
+            Msg::SecLineClip(_) => vec![Msg::SecLineClip(None), Msg::SecLineClip(Some(2))],
+            // each plane of clip::PLANES by its index
+            Msg::Intersection(..) => (0..6)
+                .map(|i| Msg::Intersection(i, "x = xmin".into()))
+                .collect(),
+            Msg::Behind(_) => vec![Msg::Behind(true), Msg::Behind(false)],
+            Msg::Orthonormal(_) => vec![Msg::Orthonormal(true), Msg::Orthonormal(false)],
+            Msg::Kept(_) => vec![Msg::Kept(true), Msg::Kept(false)],
+            Msg::Agree(_) => vec![Msg::Agree(true), Msg::Agree(false)],
+            Msg::ExpectedBool(_) => vec![Msg::ExpectedBool(true), Msg::ExpectedBool(false)],
+            Msg::Inside(..) => vec![
+                Msg::Inside(true, true),
+                Msg::Inside(false, true),
+                Msg::Inside(true, false),
+            ],
+            // the known points, when there are some
+            Msg::ErrCopPlane(p, _) => vec![
+                Msg::ErrCopPlane(p.clone(), None),
+                Msg::ErrCopPlane(p, Some("2".into())),
+            ],
+            Msg::ErrUnknownPoint(p, _) => vec![
+                Msg::ErrUnknownPoint(p.clone(), None),
+                Msg::ErrUnknownPoint(p, Some("A, B".into())),
+            ],
+            // every problem of its form tried, or the search stopped
+            Msg::ErrFewDistinct { .. } => [true, false]
+                .map(|all| Msg::ErrFewDistinct {
+                    topic: "window".into(),
+                    level: "easy".into(),
+                    problem: 2,
+                    found: 20,
+                    asked: 40,
+                    all,
+                })
+                .to_vec(),
+            // the notes of a value's components
+            Msg::Parts(_) => vec![Msg::Parts(vec![("x".into(), Msg::Exact)])],
+            // a location before a message
+            Msg::At(..) => vec![Msg::At("p.toml:3:7".into(), Box::new(Msg::ErrUpZero))],
+            other => vec![other],
+        }
+    }
+
+    /// Every value said in words: a bit's test true and false; a
+    /// clipping status carries its code, so each real code.
+    fn said_messages() -> Vec<Msg> {
+        use crate::msg::Said;
+        let mut v: Vec<Said> = Said::iter()
+            .filter(|s| !matches!(s, Said::Status(_)))
             .collect();
-        v.extend(words.map(F::Word));
+        v.push(Said::BitTest(true, "x > xmax".into(), "4.5 > 3".into()));
+        let codes = crate::stages::clip::Status::iter().map(|s| s.as_str());
+        v.extend(codes.map(|c| Said::Status(c.into())));
+        v.into_iter().map(Msg::Said).collect()
+    }
+
+    /// Every figure message, a panel's title and description for every
+    /// panel.
+    fn figure_messages() -> Vec<Msg> {
+        use crate::msg::{FigWord, FigureMsg as F, Panel};
+        let mut v: Vec<F> = F::iter()
+            .filter(|f| !matches!(f, F::Title(_) | F::Desc(_) | F::Word(_)))
+            .collect();
+        v.extend(Panel::iter().flat_map(|p| [F::Title(p), F::Desc(p)]));
+        v.extend(FigWord::iter().map(F::Word));
         v.into_iter().map(Msg::Figure).collect()
     }
 
-    /// Every title and statement of a generated problem.
-    fn drawn_messages() -> Vec<Msg> {
-        use crate::msg::{DrawnTitle as T, Number, ShadeAsked, StatedCamera, Statement as S};
+    /// A statement of each kind of generated problem, with numbers whose
+    /// decimal mark shows (each kind of `Statement` is among them, and
+    /// each lighting question).
+    fn statements() -> Vec<crate::msg::Statement> {
+        use crate::msg::{Number, StatedCamera, Statement as S};
         let c = || StatedCamera {
             eye: [3, 4, 0],
             look: [0, 0, 0],
@@ -364,18 +237,6 @@ mod tests {
         };
         let p = || vec![("A".to_string(), [1, -2, 2])];
         let half = Number::dec(5, 1);
-        let mut v: Vec<Msg> = [
-            T::Basis,
-            T::EyeCoordinates,
-            T::Projection,
-            T::Pipeline,
-            T::Window,
-            T::Clipping,
-            T::Lighting,
-        ]
-        .into_iter()
-        .map(Msg::DrawnTitle)
-        .collect();
         let shade = |asked| S::Shade {
             normal: [0, 3, 4],
             color: [Number::int(1), half, Number::int(0)],
@@ -385,7 +246,7 @@ mod tests {
             constants: vec![("ka", Number::dec(4, 1)), ("kd", Number::dec(6, 1))],
             asked,
         };
-        for st in [
+        let mut v = vec![
             S::Basis(c()),
             S::View(c(), p()),
             S::Project(c(), p(), half),
@@ -399,14 +260,11 @@ mod tests {
             },
             S::Window(90, Number::Fraction(4, 3), Number::int(2)),
             S::Clip([0, 0, 0], [2, 2, 2], [1, 1, 1], [3, 1, 1]),
-            shade(ShadeAsked::Ambient),
-            shade(ShadeAsked::Diffuse),
-            shade(ShadeAsked::Specular),
-            shade(ShadeAsked::Lambert),
-            shade(ShadeAsked::Blinn),
-            shade(ShadeAsked::Phong),
-        ] {
-            v.push(Msg::Statement(Box::new(st)));
+        ];
+        v.extend(crate::msg::ShadeAsked::iter().map(shade));
+        let kind = std::mem::discriminant::<S>;
+        for s in S::iter() {
+            assert!(v.iter().any(|x| kind(x) == kind(&s)), "no sample of {s:?}");
         }
         v
     }
@@ -453,200 +311,19 @@ mod tests {
         );
     }
 
-    /// Fails to compile when a key is added without being listed above.
-    #[allow(dead_code)]
-    fn listed(m: &Msg) {
-        use Msg::*;
-        match m {
-            Math(_)
-            | Written(..)
-            | Erratum(..)
-            | Printed(_)
-            | Asked(_)
-            | SecModeling
-            | SecViewing
-            | SecProjection
-            | SecWindowClip
-            | SecWindow
-            | SecViewport
-            | SecLineClip(_)
-            | SecLighting
-            | SecPixel(..)
-            | SecLightFace
-            | SecLightVertex(_)
-            | SecLightPixel
-            | CamAxisN
-            | CamAxisU
-            | CamAxisV
-            | CamCheck
-            | CamMatrix
-            | ViewMatrix
-            | EyeCoords(_)
-            | OrthoProj(_)
-            | PerspProj(_)
-            | WindowTop(_)
-            | WindowEdges(_)
-            | ViewportOf(_)
-            | OutcodeOf(_)
-            | TrivialTests
-            | Intersection(..)
-            | ClippedSegment
-            | LiangBarsky
-            | MethodsAgree
-            | NothingToDo
-            | ProjPlane
-            | InsideVolume(_)
-            | UnitVector(_)
-            | ViewerLocal
-            | Material
-            | Light(..)
-            | TermStep(_)
-            | SumOfTerms
-            | Clamp
-            | WhichTriangle
-            | Depth
-            | Barycentric
-            | FlatShading
-            | Gouraud
-            | PhongShading
-            | PixelColour
-            | FOutOfRange
-            | FIncidence
-            | FCamMatrix
-            | FViewMatrix
-            | FTrivial
-            | FOutcode
-            | FSegment
-            | FMethods
-            | FProjPlane
-            | FLiangBarsky
-            | FInside
-            | FSpot
-            | FClamp
-            | FWindowEdges
-            | FPixelCentre
-            | FEdges
-            | FDepth
-            | FBarycentric
-            | FFlat
-            | FByte
-            | AlreadyUnit
-            | Saturates
-            | InRange
-            | NoTermInModel(..)
-            | TextSetting
-            | TextTerm(_)
-            | SummedInRange
-            | SpecularSkipped
-            | BeyondRange
-            | WithinRange
-            | NoRange
-            | Behind(_)
-            | LocalViewer
-            | NoLocalViewer
-            | ShininessZero
-            | SpecularOff
-            | NoHighlightBehind
-            | SpotIn(_)
-            | BehindCentre
-            | TextH
-            | Orthonormal(_)
-            | TrivialNote(_)
-            | Kept(_)
-            | TouchesPoint
-            | InsidePart
-            | Misses
-            | DefaultView
-            | MaterialD3d
-            | MaterialText
-            | NoTriangle
-            | Nearest
-            | Agree(_)
-            | AlreadyWorld
-            | Inside(..)
-            | UpParallel(_)
-            | BehindWarn(_)
-            | ExactTooLarge(_)
-            | ExactTooLong(_)
-            | StaleTempRemoved(..)
-            | NoFigure
-            | ExpectOne
-            | ExpectList(_)
-            | CountMismatch(..)
-            | Expected(_)
-            | ExpectedNone
-            | ExpectedBool(_)
-            | SeveralAnswers
-            | EmptyAnswer
-            | NoAnswer
-            | AnswerTooLong(..)
-            | Unreadable(_)
-            | Exact
-            | Rounded(_)
-            | RoundedCoarse(..)
-            | WithinPct(_)
-            | Parts(_)
-            | WithinPixel
-            | NotAnOutcode(_)
-            | NotAStatus(_)
-            | NotYesOrNo(_)
-            | AmbiguousCommas
-            | FollowThrough
-            | NoFollowFrom(..)
-            | At(..)
-            | Err(_)
-            | Said(_)
-            | ErrSamePoint(_)
-            | ErrUpZero
-            | ErrUpParallel(..)
-            | ErrFovy(_)
-            | ErrAspect(_)
-            | ErrNear(_)
-            | ErrCopPlane(..)
-            | ErrUnknownPoint(..)
-            | ErrBoxInverted(..)
-            | ErrCannotRead(..)
-            | ErrZeroUnit(_)
-            | ErrNamedPoint(_)
-            | ErrPointName(_)
-            | ErrPointTwice(_)
-            | ErrNamedPair(_)
-            | ErrSize(_)
-            | ErrCopNeedsPlane
-            | ErrPlaneNeedsCop
-            | ErrChooseProjection
-            | ErrPointNeedsViewport
-            | DrawnTitle(_)
-            | Pixel(_)
-            | Statement(_)
-            | ErrFewDistinct { .. }
-            | ErrHtmlCommand
-            | Figure(_) => {}
-        }
-    }
-
-    /// Every name and line of the render summary.
+    /// Every name and line of the render summary: every variant, the
+    /// frame time of one run and the median of five, and the shadings
+    /// drawn named when none is per pixel.
     fn render_words(w: &dyn Words) -> Vec<String> {
         use crate::msg::{PerPixel, Summary};
-        let mut v: Vec<String> = [
-            Summary::Image,
-            Summary::Size,
-            Summary::Shading,
-            Summary::TrianglesDrawn,
-            Summary::PixelsShaded,
+        let runs = [
             Summary::FrameTime { runs: 1 },
             Summary::FrameTime { runs: 5 },
-        ]
-        .into_iter()
-        .map(|k| w.summary(k))
-        .collect();
-        for p in [
-            PerPixel::Everywhere,
-            PerPixel::PhongObjectsOnly,
-            PerPixel::Nowhere(vec!["flat"]),
-        ] {
-            v.push(w.per_pixel(&p));
-        }
+        ];
+        let mut v: Vec<String> = Summary::iter().chain(runs).map(|k| w.summary(k)).collect();
+        let nowhere = PerPixel::Nowhere(vec!["flat"]);
+        let per_pixel = PerPixel::iter().filter(|p| !matches!(p, PerPixel::Nowhere(_)));
+        v.extend(per_pixel.chain([nowhere]).map(|p| w.per_pixel(&p)));
         v.push(w.render_heading().to_string());
         v
     }

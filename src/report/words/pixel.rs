@@ -10,33 +10,14 @@ pub trait PixelWords {
     fn pixel(&self, m: &PixelMsg) -> String;
 }
 
-/// Every message, for the test that each has words in both languages.
+/// Every message, for the test that each has words in both languages:
+/// every variant (`EnumIter`, its fields at their defaults), each plane
+/// of `clip::PLANES` by its index, and both answers of the raster check.
 #[cfg(test)]
 pub fn every() -> Vec<PixelMsg> {
-    let n = || "V0".to_string();
-    let mut v = vec![
-        PixelMsg::SecVertex(0),
-        PixelMsg::SecClip,
-        PixelMsg::SecMatrices,
-        PixelMsg::SecScreen(1),
-        PixelMsg::Matrices(n()),
-        PixelMsg::World(n()),
-        PixelMsg::Eye(n()),
-        PixelMsg::ProjMatrix,
-        PixelMsg::Clip(n()),
-        PixelMsg::Outcode(n()),
-        PixelMsg::Divide(n()),
-        PixelMsg::WindowPoint(n()),
-        PixelMsg::Row(n()),
-        PixelMsg::Snap(n()),
-        PixelMsg::SetUp,
-        PixelMsg::FOutcode,
-        PixelMsg::Composed,
-        PixelMsg::BoxInside,
-        PixelMsg::Outside,
-        PixelMsg::SameAsRaster(true),
-        PixelMsg::SameAsRaster(false),
-    ];
-    v.extend((0..6).map(PixelMsg::ClipPlane));
+    use strum::IntoEnumIterator;
+    let mut v: Vec<PixelMsg> = PixelMsg::iter().collect();
+    v.extend((1..6).map(PixelMsg::ClipPlane));
+    v.push(PixelMsg::SameAsRaster(true));
     v
 }

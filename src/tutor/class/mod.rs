@@ -191,6 +191,7 @@ impl Sheet {
 
 /// What was done with an unusual answer file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Note {
     /// It holds no answers: marked with every answer missing.
     Empty,
@@ -200,6 +201,7 @@ pub enum Note {
 
 /// Why an entry of the answers folder was not read.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Skip {
     /// A subdirectory (its files are not read).
     Subdirectory,

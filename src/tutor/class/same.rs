@@ -22,6 +22,7 @@ use std::time::SystemTime;
 
 /// Why two files are taken for the same student.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Same {
     /// The same name.
     Name,

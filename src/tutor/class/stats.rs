@@ -60,6 +60,7 @@ pub const BINS: usize = 10;
 
 /// What is suspect about a key.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Flag {
     /// Facility above [`VERY_EASY`].
     VeryEasy,

@@ -125,10 +125,11 @@ pub fn form(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use strum::IntoEnumIterator;
 
     #[test]
     fn a_clipped_case_always_has_an_intersection_to_compute() {
-        for diff in [Difficulty::Easy, Difficulty::Medium, Difficulty::Hard] {
+        for diff in Difficulty::iter() {
             for more in [false, true] {
                 let c = ClipShape::of(Status::Clipped, diff, more);
                 assert!(c.tried >= 1 && c.kept >= 1, "{c:?}");
@@ -156,7 +157,7 @@ mod tests {
                     f.clip.expect("a clipping form").status
                 })
                 .collect();
-            for s in [Status::Clipped, Status::Accepted, Status::Rejected] {
+            for s in Status::iter() {
                 assert!(statuses.contains(&s), "seed {seed}: {statuses:?}");
             }
         }

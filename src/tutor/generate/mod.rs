@@ -77,6 +77,7 @@ impl Topic {
 
 /// How nice the numbers are.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Difficulty {
     /// Integer norms, rational answers.
     Easy,

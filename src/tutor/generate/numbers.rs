@@ -24,6 +24,7 @@ use std::collections::BTreeSet;
 /// How the answers of a problem (or of one of its parts) are written
 /// exactly; ordered from the plainest.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum NumberClass {
     /// Every answer rational.
     Rational,

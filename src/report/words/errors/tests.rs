@@ -7,541 +7,119 @@ use crate::msg::{FileKind, ListWhy};
 use crate::report::lang::Lang;
 use crate::report::words::of;
 use proptest::prelude::*;
+use strum::IntoEnumIterator;
 
-/// Every error key, with sample parameters (each variant of every
-/// part at least once; `listed` below fails to compile when one is
-/// added without being listed here).
+/// Every error key: every variant (`EnumIter`, its fields at their
+/// defaults, so a key added is tested without being listed), a nested
+/// key's every variant in its place, and the samples whose words depend
+/// on their values.
 pub fn every_error() -> Vec<ErrMsg> {
-    let s = |x: &str| x.to_string();
-    let mut v: Vec<ErrMsg> = every_number().into_iter().map(ErrMsg::Num).collect();
-    v.extend(every_toml().into_iter().map(ErrMsg::Toml));
-    v.extend(
-        every_clap()
-            .into_iter()
-            .map(|c| ErrMsg::Clap(c, s("clap's line"))),
-    );
-    v.extend(
-        every_bound()
-            .into_iter()
-            .map(|b| ErrMsg::MustBe(b, s("-0.5"))),
-    );
-    v.extend(every_twice().into_iter().map(ErrMsg::Twice));
-    for w in every_io() {
-        v.push(ErrMsg::CannotRead(s("a.toml"), w.clone()));
-        v.push(ErrMsg::CannotReadStdin(w.clone()));
-        v.push(ErrMsg::CannotWrite(s("a.png"), w.clone()));
-        v.push(ErrMsg::CannotCreate(s("out"), w.clone()));
-        v.push(ErrMsg::CannotWriteStdout(w.clone()));
-        v.push(ErrMsg::ObjUnreadable(s("m.obj"), w));
-    }
-    v.extend([
-        ErrMsg::Channel(Channel::Red, s("1.5")),
-        ErrMsg::Channel(Channel::Green, s("1.5")),
-        ErrMsg::Channel(Channel::Blue, s("-0.5")),
-        ErrMsg::Attenuation(s("0"), s("0"), s("0")),
-        ErrMsg::Cones(s("60"), s("30.5")),
-        ErrMsg::PlaneThroughOrigin,
-        ErrMsg::PlaneThroughCop(s("2.5")),
-        ErrMsg::ImageTooLarge(s("A"), s("f32")),
-        ErrMsg::Viewport(s("0"), s("1.5")),
-        ErrMsg::VVanished,
-        ErrMsg::EyeLookTooLarge(s("(1e308, 0, 0)"), s("f64")),
-        ErrMsg::TranslationTooLarge(s("f32")),
-        ErrMsg::EyeCoordsTooLarge(s("A"), s("f32")),
-        ErrMsg::ResultNotFinite(s("f32")),
-        ErrMsg::ExactBeyondF64,
-        ErrMsg::ExistsForce(s("out/problem-01.toml")),
-        ErrMsg::StdoutClosed,
-        ErrMsg::NamesFolder(s("figs/")),
-        ErrMsg::IsLink(s("a.png")),
-        ErrMsg::IsInput(s("scene.toml")),
-        ErrMsg::NotOwn(s("exam/key.md"), s(".grafika-generated")),
-        ErrMsg::NotDirectory(s("out")),
-        ErrMsg::NotMarked(1, 4, s("class/broken.toml")),
-        ErrMsg::FileTooLarge(s("a.toml"), Some(2_000_000), 1 << 20),
-        ErrMsg::FileTooLarge(s("-"), None, 1 << 20),
-        ErrMsg::TomlTooManyValues(100_000),
-        ErrMsg::TomlTooDeep(32),
-        ErrMsg::StdinClosed,
-        ErrMsg::SameOutput(s("same.csv"), s("csv")),
-        ErrMsg::ChangedSince(s("exam/key.md")),
-        ErrMsg::ListExists(s("exam/.grafika-generated")),
-        ErrMsg::Locked(s("exam"), s("exam/.grafika-lock")),
-        ErrMsg::RenderWork(6_710, 1, 4_000),
-        ErrMsg::FormulaWork(1_988_100, 961, 7_643, 4_000),
-        ErrMsg::NoLightTable(s("l.toml")),
-        ErrMsg::ColorMissing,
-        ErrMsg::NormalMissing,
-        ErrMsg::CameraAtPoint,
-        ErrMsg::NoLight,
-        ErrMsg::LightAtPoint,
-        ErrMsg::Needs(Thing::Light(s("point")), s("position")),
-        ErrMsg::Needs(Thing::Object(s("sphere")), s("r")),
-        ErrMsg::Needs(Thing::Object(s("obj")), s("path")),
-        ErrMsg::NotApplicable(s("axis"), s("point")),
-        ErrMsg::NoSuchKey(s("box"), s("r"), s("size")),
-        ErrMsg::NeededToRender,
-        ErrMsg::ObjNoFaces(s("m.obj")),
-        ErrMsg::ObjNotFinite(s("m.obj")),
-        ErrMsg::FaceVertex,
-        ErrMsg::FormulaNotFinite,
-        ErrMsg::TooManyTriangles(5_000_000, 4_000_000),
-        ErrMsg::TooManyLights(9, 8),
-        ErrMsg::NeedsColour,
-        ErrMsg::NoObjects,
-        ErrMsg::CameraNeedsPerspective,
-        ErrMsg::ImageSize(s("0"), s("10")),
-        ErrMsg::UnknownPart(s("views"), s("basis, view")),
-        ErrMsg::ExpectedXyz(TomlErr::InvalidLength(s("2"), s("3 elements"))),
-        ErrMsg::NothingToSolve,
-        ErrMsg::NoCameraTable,
-        ErrMsg::ProjectionNeedsNear,
-        ErrMsg::WindowNeeds,
-        ErrMsg::LightsNeedShade,
-        ErrMsg::NoTopic,
-        ErrMsg::NoProblemDrawn,
-        ErrMsg::StdinHoldsAnswers,
-        ErrMsg::GiveProblem,
-        ErrMsg::TooManyProblems(3000, 1000, 3, 48, 2000),
-        ErrMsg::SplitNotQuiz,
-        ErrMsg::QuestionTooLarge(
-            s("Problem 01, variant 02: Eye coordinates"),
-            s("0.031"),
-            s("0.01"),
-        ),
-        ErrMsg::BothStdin,
-        ErrMsg::NoPrinted(s("p.toml")),
-        ErrMsg::CsvAndJson,
-        ErrMsg::NoAnswerFiles(s("class")),
-        ErrMsg::NoExam(s("exam")),
-        ErrMsg::NoVariant(4),
-        ErrMsg::NotAVariant(s("7"), 4),
-        ErrMsg::MarksNotAKey(s("view.bogus")),
-        ErrMsg::MarksUnknownField(s("weight")),
-        ErrMsg::MarksMissing,
-        ErrMsg::MarksNotWhole(s("1.5"), 100),
-        ErrMsg::MarksMethodTable,
-        ErrMsg::MarksMethodOver(5, 4),
-        ErrMsg::MarksMethodAsked(s("shade.diffuse")),
-        ErrMsg::NotAProblemOfExam(s("view.n"), s("problem-01, problem-02")),
-        ErrMsg::ReportFormat(s("class.txt")),
-        ErrMsg::NotResponses(s("no column Response 1")),
-        ErrMsg::NoQuestionText,
-        ErrMsg::ReportNeedsClass,
-        ErrMsg::RosterNeedsClass,
-        ErrMsg::EmptyRoster(s("kelas.txt")),
-        ErrMsg::RosterRow(3, s("found record with 2 fields")),
-        ErrMsg::AnswersFolder(s("nosuchdir"), crate::msg::IoWhy::NotFound),
-        ErrMsg::PixelOutside(10, 20, 8, 8),
-        ErrMsg::PixelText(s("a,b")),
-        ErrMsg::NothingRendered,
-        ErrMsg::Threads(s("why")),
-        ErrMsg::RenderPrecision,
-        ErrMsg::NotTaken(s("check")),
-        ErrMsg::OwnOutput,
-        ErrMsg::Man(s("why")),
-    ]);
-    for k in [
-        FileKind::Fifo,
-        FileKind::Socket,
-        FileKind::CharDevice,
-        FileKind::BlockDevice,
-        FileKind::Folder,
-        FileKind::Other,
-    ] {
-        v.push(ErrMsg::InputNotRegular(s("p.toml"), k));
-        v.push(ErrMsg::OutputNotRegular(s("a.png"), k));
-    }
-    for w in [
-        ListWhy::NotAFile,
-        ListWhy::Heading,
-        ListWhy::Line(3),
-        ListWhy::Name(3, s("notes.txt")),
-        ListWhy::Owner,
-        ListWhy::TooLarge,
-    ] {
-        v.push(ErrMsg::NotOwnList(s("exam/.grafika-generated"), w));
-    }
-    v.extend(
-        every_obj()
-            .into_iter()
-            .map(|w| ErrMsg::ObjInvalid(s("m.obj"), w)),
-    );
-    v
+    ErrMsg::iter().flat_map(with_nested).collect()
 }
 
-fn every_obj() -> Vec<ObjWhy> {
-    use ObjWhy::*;
-    vec![
-        OpenFileFailed,
-        ReadError,
-        UnrecognizedCharacter,
-        PositionParse,
-        ScalingByZero,
-        ColorParse,
-        NormalParse,
-        TexcoordParse,
-        FaceParse,
-        MaterialParse,
-        InvalidObjectName,
-        InvalidPolygon,
-        FaceVertexOutOfBounds,
-        FaceTexCoordOutOfBounds,
-        FaceNormalOutOfBounds,
-        FaceColorOutOfBounds,
-        LoadOptions,
-        Generic,
-    ]
+/// `e` once per variant of the key it holds (the reason a file cannot
+/// be read, the bound a value breaks, …), else `e` itself.
+fn with_nested(e: ErrMsg) -> Vec<ErrMsg> {
+    use ErrMsg as E;
+    let each = |io: fn(IoWhy) -> ErrMsg| every_io().into_iter().map(io).collect();
+    match e {
+        E::Num(_) => every_number().into_iter().map(E::Num).collect(),
+        E::Toml(_) => every_toml().into_iter().map(E::Toml).collect(),
+        // English says clap's own line, so a line to say
+        E::Clap(..) => (every_clap().into_iter())
+            .map(|c| E::Clap(c, "clap's line".into()))
+            .collect(),
+        E::MustBe(_, got) => Bound::iter().map(|b| E::MustBe(b, got.clone())).collect(),
+        E::Twice(_) => Twice::iter().map(E::Twice).collect(),
+        E::Channel(_, got) => Channel::iter()
+            .map(|c| E::Channel(c, got.clone()))
+            .collect(),
+        E::Needs(_, key) => Thing::iter().map(|t| E::Needs(t, key.clone())).collect(),
+        E::CannotRead(..) => each(|w| E::CannotRead("a.toml".into(), w)),
+        E::CannotReadStdin(_) => each(E::CannotReadStdin),
+        E::CannotWrite(..) => each(|w| E::CannotWrite("a.png".into(), w)),
+        E::CannotCreate(..) => each(|w| E::CannotCreate("out".into(), w)),
+        E::CannotWriteStdout(_) => each(E::CannotWriteStdout),
+        E::ObjUnreadable(..) => each(|w| E::ObjUnreadable("m.obj".into(), w)),
+        E::AnswersFolder(..) => each(|w| E::AnswersFolder("class".into(), w)),
+        E::InputNotRegular(p, _) => FileKind::iter()
+            .map(|k| E::InputNotRegular(p.clone(), k))
+            .collect(),
+        E::OutputNotRegular(p, _) => FileKind::iter()
+            .map(|k| E::OutputNotRegular(p.clone(), k))
+            .collect(),
+        E::NotOwnList(p, _) => ListWhy::iter()
+            .map(|w| E::NotOwnList(p.clone(), w))
+            .collect(),
+        E::ObjInvalid(p, _) => ObjWhy::iter()
+            .map(|w| E::ObjInvalid(p.clone(), w))
+            .collect(),
+        // the file's size when it is known, and when it is not (standard input)
+        E::FileTooLarge(..) => vec![
+            E::FileTooLarge("a.toml".into(), Some(2_000_000), 1 << 20),
+            E::FileTooLarge("-".into(), None, 1 << 20),
+        ],
+        other => vec![other],
+    }
 }
 
-fn every_number() -> Vec<NumErr> {
-    let s = |x: &str| x.to_string();
-    let mut v = vec![
-        NumErr::Quoted(s("1+*2"), Box::new(NumErr::Empty)),
-        NumErr::TooLong(5000, 4000),
-        NumErr::Empty,
-        NumErr::TooDeep(100, 101),
-        NumErr::TooManyOps(500, 1001),
-        NumErr::Count(2, s("1,2")),
-        NumErr::Component(2, s("x"), Box::new(NumErr::NotANumber(s("x")))),
-        NumErr::NotFinite(s("1e999"), s("f64")),
-        NumErr::NotANumber(s("1.2.3")),
-        NumErr::NotFiniteLiteral(s("NaN")),
-        NumErr::NegativeRoot(s("-1")),
-        NumErr::DivZero(s("1/0")),
-        NumErr::Exponent(s("2^0.5")),
-        NumErr::PowerRange(s("10^1000")),
-        NumErr::Unexpected('#', 3),
-        NumErr::OpenAfter(s("sin")),
-        NumErr::UnknownName(s("tan")),
-        NumErr::EndsEarly,
-        NumErr::FormulaDeep(100, 101),
-        NumErr::FormulaOps(500, 1001),
-    ];
-    for w in [
-        Want::OperatorOrEnd,
-        Want::Close,
-        Want::OpenAfterSqrt,
-        Want::Number,
-    ] {
+/// Every reason of the number reader, and what it expected at a
+/// character and at the end.
+pub fn every_number() -> Vec<NumErr> {
+    let mut v: Vec<NumErr> = NumErr::iter().collect();
+    for w in Want::iter() {
         v.push(NumErr::Expected(w, 3, Some('*')));
         v.push(NumErr::Expected(w, 3, None));
     }
     v
 }
 
+/// Every TOML error; a syntax error carries the reader's own message
+/// (read into its words, none for an empty one), so real messages
+/// replace the empty default.
 fn every_toml() -> Vec<TomlErr> {
     let s = |x: &str| x.to_string();
-    vec![
+    let mut v: Vec<TomlErr> = TomlErr::iter()
+        .filter(|t| !matches!(t, TomlErr::Syntax(_)))
+        .collect();
+    v.extend([
+        // the fields it knows, when there are some
         TomlErr::UnknownField(s("eyes"), Some(s("`eye`, `look`, `up`"))),
-        TomlErr::UnknownField(s("eyes"), None),
-        TomlErr::MissingField(s("eye")),
-        TomlErr::Duplicate(s("eye")),
-        TomlErr::UnknownVariant(s("pyramid"), s("`cone`, `sphere`")),
-        TomlErr::InvalidType(s("string \"a\""), s("a sequence")),
-        TomlErr::InvalidLength(s("2"), s("an array of length 3")),
-        TomlErr::InvalidValue(s("integer `-5`"), s("u32")),
         TomlErr::Num(NumErr::DivZero(s("1/0"))),
-        TomlErr::MustBe(Bound::Positive, s("-1.5")),
-        TomlErr::WholeRange(3, 4096, s("2")),
-        TomlErr::Colour(s("[1.5, 0, 0]")),
         TomlErr::Syntax(s("invalid number")),
         TomlErr::Syntax(s("missing comma between array elements, expected `,`")),
         TomlErr::Syntax(s("invalid string, expected basic string, `\\`")),
         TomlErr::Syntax(s("unexpected content, expected nothing")),
         TomlErr::Syntax(s("unexpected Whitespace, expected value")),
-    ]
+    ]);
+    v
 }
 
+/// Every command-line error, and the forms whose words depend on what
+/// clap said: the values allowed or none, each reason a value is bad,
+/// a suggestion or none.
 fn every_clap() -> Vec<ClapErr> {
     let s = |x: &str| x.to_string();
-    vec![
+    let mut v: Vec<ClapErr> = ClapErr::iter().collect();
+    v.extend([
         ClapErr::InvalidValue(s("foo"), s("exact, f64, f32")),
-        ClapErr::InvalidValue(s("foo"), String::new()),
         ClapErr::BadValue(s("abc"), s("invalid digit found in string")),
         ClapErr::BadValue(s("99"), s("99 is not in 1..=17")),
         ClapErr::BadValue(s("-"), s("cannot parse integer from empty string")),
         ClapErr::BadValue(s("x"), s("invalid float literal")),
         ClapErr::BadValue(s("x"), s("the value parser's own words")),
         ClapErr::Unknown(s("--eyes"), Some(s("--eye"))),
-        ClapErr::Unknown(s("--eyes"), None),
         ClapErr::UnknownCommand(s("bassis"), Some(s("basis"))),
-        ClapErr::UnknownCommand(s("bassis"), None),
-        ClapErr::Conflict(s("--ortho"), s("--d")),
-        ClapErr::Missing(s("--eye")),
-        ClapErr::NoValue,
-        ClapErr::ValueCount(s("--point")),
-        ClapErr::Other,
-    ]
+    ]);
+    v
 }
 
-fn every_bound() -> Vec<Bound> {
-    vec![
-        Bound::NumberAtLeastZero,
-        Bound::AtLeastZero,
-        Bound::AboveZero,
-        Bound::Positive,
-        Bound::NotNegative,
-        Bound::FiniteAtLeastZero,
-        Bound::Fraction,
-        Bound::WholePixels,
-        Bound::AboveNear("0.5".into()),
-    ]
-}
-
-fn every_twice() -> Vec<Twice> {
-    use Twice::*;
-    vec![
-        GlobalAmbient,
-        Material,
-        Color,
-        Shininess,
-        View,
-        Light,
-        Axis,
-        TiltCamera,
-        Colors,
-        Answers,
-    ]
-}
-
+/// Every reason a file cannot be read or written, the system's own
+/// words given.
 fn every_io() -> Vec<IoWhy> {
-    use IoWhy::*;
-    vec![
-        NotFound,
-        Denied,
-        Exists,
-        IsDirectory,
-        NotText,
-        NotADirectory,
-        ReadOnly,
-        Full,
-        TooLarge,
-        BadName,
-        Other("device not configured".into()),
-    ]
-}
-
-/// Fails to compile when a key is added to any error enum without
-/// being listed above (no wildcard arm).
-#[allow(dead_code)]
-fn listed(e: &ErrMsg, n: &NumErr, t: &TomlErr, c: &ClapErr, b: &Bound, w: &Want, i: &IoWhy) {
-    use ErrMsg as E;
-    match e {
-        E::Num(_)
-        | E::MustBe(..)
-        | E::Twice(_)
-        | E::Channel(..)
-        | E::Attenuation(..)
-        | E::Cones(..)
-        | E::PlaneThroughOrigin
-        | E::PlaneThroughCop(_)
-        | E::ImageTooLarge(..)
-        | E::Viewport(..)
-        | E::VVanished
-        | E::EyeLookTooLarge(..)
-        | E::TranslationTooLarge(_)
-        | E::EyeCoordsTooLarge(..)
-        | E::ResultNotFinite(_)
-        | E::ExactBeyondF64
-        | E::CannotRead(..)
-        | E::CannotReadStdin(_)
-        | E::CannotWrite(..)
-        | E::CannotCreate(..)
-        | E::CannotWriteStdout(_)
-        | E::StdoutClosed
-        | E::ExistsForce(_)
-        | E::NamesFolder(_)
-        | E::IsLink(_)
-        | E::IsInput(_)
-        | E::NotOwn(..)
-        | E::NotDirectory(_)
-        | E::NotMarked(..)
-        | E::FileTooLarge(..)
-        | E::TomlTooManyValues(_)
-        | E::TomlTooDeep(_)
-        | E::StdinClosed
-        | E::InputNotRegular(..)
-        | E::OutputNotRegular(..)
-        | E::SameOutput(..)
-        | E::ChangedSince(_)
-        | E::NotOwnList(..)
-        | E::ListExists(_)
-        | E::Locked(..)
-        | E::RenderWork(..)
-        | E::FormulaWork(..)
-        | E::NoLightTable(_)
-        | E::ColorMissing
-        | E::NormalMissing
-        | E::CameraAtPoint
-        | E::NoLight
-        | E::LightAtPoint
-        | E::Needs(..)
-        | E::NotApplicable(..)
-        | E::NoSuchKey(..)
-        | E::NeededToRender
-        | E::ObjUnreadable(..)
-        | E::ObjInvalid(..)
-        | E::ObjNoFaces(_)
-        | E::ObjNotFinite(_)
-        | E::FaceVertex
-        | E::FormulaNotFinite
-        | E::TooManyTriangles(..)
-        | E::TooManyLights(..)
-        | E::NeedsColour
-        | E::NoObjects
-        | E::CameraNeedsPerspective
-        | E::ImageSize(..)
-        | E::UnknownPart(..)
-        | E::ExpectedXyz(_)
-        | E::Toml(_)
-        | E::NothingToSolve
-        | E::NoCameraTable
-        | E::ProjectionNeedsNear
-        | E::WindowNeeds
-        | E::LightsNeedShade
-        | E::NoTopic
-        | E::NoProblemDrawn
-        | E::StdinHoldsAnswers
-        | E::GiveProblem
-        | E::TooManyProblems(..)
-        | E::SplitNotQuiz
-        | E::QuestionTooLarge(..)
-        | E::BothStdin
-        | E::NoPrinted(_)
-        | E::CsvAndJson
-        | E::NoAnswerFiles(_)
-        | E::NoExam(_)
-        | E::NoVariant(_)
-        | E::NotAVariant(..)
-        | E::MarksNotAKey(_)
-        | E::MarksUnknownField(_)
-        | E::MarksMissing
-        | E::MarksNotWhole(..)
-        | E::MarksMethodTable
-        | E::MarksMethodOver(..)
-        | E::MarksMethodAsked(_)
-        | E::NotAProblemOfExam(..)
-        | E::ReportFormat(_)
-        | E::NotResponses(_)
-        | E::NoQuestionText
-        | E::ReportNeedsClass
-        | E::RosterNeedsClass
-        | E::EmptyRoster(_)
-        | E::RosterRow(..)
-        | E::AnswersFolder(..)
-        | E::PixelOutside(..)
-        | E::PixelText(_)
-        | E::NothingRendered
-        | E::Threads(_)
-        | E::RenderPrecision
-        | E::NotTaken(_)
-        | E::OwnOutput
-        | E::Man(_)
-        | E::Clap(..) => {}
-    }
-    match n {
-        NumErr::Quoted(..)
-        | NumErr::TooLong(..)
-        | NumErr::Empty
-        | NumErr::Expected(..)
-        | NumErr::TooDeep(..)
-        | NumErr::TooManyOps(..)
-        | NumErr::Count(..)
-        | NumErr::Component(..)
-        | NumErr::NotFinite(..)
-        | NumErr::NotANumber(_)
-        | NumErr::NotFiniteLiteral(_)
-        | NumErr::NegativeRoot(_)
-        | NumErr::DivZero(_)
-        | NumErr::Exponent(_)
-        | NumErr::PowerRange(_)
-        | NumErr::Unexpected(..)
-        | NumErr::OpenAfter(_)
-        | NumErr::UnknownName(_)
-        | NumErr::EndsEarly
-        | NumErr::FormulaDeep(..)
-        | NumErr::FormulaOps(..) => {}
-    }
-    match t {
-        TomlErr::UnknownField(..)
-        | TomlErr::MissingField(_)
-        | TomlErr::Duplicate(_)
-        | TomlErr::UnknownVariant(..)
-        | TomlErr::InvalidType(..)
-        | TomlErr::InvalidLength(..)
-        | TomlErr::InvalidValue(..)
-        | TomlErr::Num(_)
-        | TomlErr::MustBe(..)
-        | TomlErr::WholeRange(..)
-        | TomlErr::Colour(_)
-        | TomlErr::Syntax(_) => {}
-    }
-    match c {
-        ClapErr::InvalidValue(..)
-        | ClapErr::BadValue(..)
-        | ClapErr::Unknown(..)
-        | ClapErr::UnknownCommand(..)
-        | ClapErr::Conflict(..)
-        | ClapErr::Missing(_)
-        | ClapErr::NoValue
-        | ClapErr::ValueCount(_)
-        | ClapErr::Other => {}
-    }
-    match b {
-        Bound::NumberAtLeastZero
-        | Bound::AtLeastZero
-        | Bound::AboveZero
-        | Bound::Positive
-        | Bound::NotNegative
-        | Bound::FiniteAtLeastZero
-        | Bound::Fraction
-        | Bound::WholePixels
-        | Bound::AboveNear(_) => {}
-    }
-    match w {
-        Want::OperatorOrEnd | Want::Close | Want::OpenAfterSqrt | Want::Number => {}
-    }
-    match i {
-        IoWhy::NotFound
-        | IoWhy::Denied
-        | IoWhy::Exists
-        | IoWhy::IsDirectory
-        | IoWhy::NotText
-        | IoWhy::NotADirectory
-        | IoWhy::ReadOnly
-        | IoWhy::Full
-        | IoWhy::TooLarge
-        | IoWhy::BadName
-        | IoWhy::Other(_) => {}
-    }
-}
-
-/// Fails to compile when an OBJ reason is added without being listed in
-/// [`every_obj`].
-#[allow(dead_code)]
-fn obj_listed(o: &ObjWhy) {
-    use ObjWhy::*;
-    match o {
-        OpenFileFailed
-        | ReadError
-        | UnrecognizedCharacter
-        | PositionParse
-        | ScalingByZero
-        | ColorParse
-        | NormalParse
-        | TexcoordParse
-        | FaceParse
-        | MaterialParse
-        | InvalidObjectName
-        | InvalidPolygon
-        | FaceVertexOutOfBounds
-        | FaceTexCoordOutOfBounds
-        | FaceNormalOutOfBounds
-        | FaceColorOutOfBounds
-        | LoadOptions
-        | Generic => {}
-    }
+    let mut v: Vec<IoWhy> = IoWhy::iter().collect();
+    v.push(IoWhy::Other("device not configured".into()));
+    v
 }
 
 #[test]
