@@ -21,24 +21,30 @@ const FIXTURE: &str = "tests/moodle/fixtures/responses-seed2026.csv";
 /// The exam folder the fixture's quiz was generated with.
 const EXAM: &str = "tests/moodle/fixtures/exam-seed2026";
 
-/// Runs check on `report` with `--grades` and `--follow-through`; returns
-/// the grades CSV's rows by email (grafika's grade, Moodle's) and stderr.
-fn remark(dir: &Path, report: &Path, extra: &[&str]) -> (Vec<Vec<String>>, String) {
-    let exam = root().join(EXAM);
-    let grades = dir.join("grades.csv");
+/// Runs `check EXAM --moodle-responses report` with `args` (in English),
+/// expecting success; returns standard output and standard error.
+fn check_responses(report: &Path, args: &[&std::ffi::OsStr]) -> (Vec<u8>, String) {
     let out = grafika()
         .env_remove("GRAFIKA_LANG")
         .arg("check")
-        .arg(&exam)
+        .arg(root().join(EXAM))
         .arg("--moodle-responses")
         .arg(report)
-        .arg("--grades")
-        .arg(&grades)
-        .args(extra)
+        .args(args)
         .output()
         .expect("runs");
     let err = String::from_utf8_lossy(&out.stderr).into_owned();
     assert!(out.status.success(), "{err}");
+    (out.stdout, err)
+}
+
+/// Runs check on `report` with `--grades` and `--follow-through`; returns
+/// the grades CSV's rows by email (grafika's grade, Moodle's) and stderr.
+fn remark(dir: &Path, report: &Path, extra: &[&str]) -> (Vec<Vec<String>>, String) {
+    let grades = dir.join("grades.csv");
+    let mut args = vec!["--grades".as_ref(), grades.as_os_str()];
+    args.extend(extra.iter().map(std::ffi::OsStr::new));
+    let (_, err) = check_responses(report, &args);
     let text = std::fs::read_to_string(&grades).expect("grades written");
     let rows = csv::ReaderBuilder::new()
         .from_reader(text.as_bytes())
@@ -197,17 +203,8 @@ fn a_student_with_two_attempts_counts_once_by_the_higher_grade() {
     assert_eq!(grades.len(), 29, "{grades:?}");
     let r = row(&grades, "student004.");
     assert_eq!((r[3].as_str(), r[4].as_str()), ("100.00", "100.00"));
-    let out = grafika()
-        .env_remove("GRAFIKA_LANG")
-        .arg("check")
-        .arg(root().join(EXAM))
-        .arg("--moodle-responses")
-        .arg(&report)
-        .arg("--report")
-        .arg(dir.join("class.md"))
-        .output()
-        .expect("runs");
-    assert!(out.status.success());
+    let md_file = dir.join("class.md");
+    check_responses(&report, &["--report".as_ref(), md_file.as_os_str()]);
     let md = std::fs::read_to_string(dir.join("class.md")).expect("report");
     assert!(md.contains("29 students marked"), "{md}");
     assert!(md.contains("another attempt at the quiz"), "{md}");
@@ -235,19 +232,14 @@ fn each_problem_counts_under_the_variant_its_slot_drew() {
     // draw's number. The exam has 2 variants, so the variants table has
     // 2 rows, whatever the draws.
     let dir = scratch("moodle-responses-drawn");
-    let out = grafika()
-        .env_remove("GRAFIKA_LANG")
-        .arg("check")
-        .arg(root().join(EXAM))
-        .arg("--moodle-responses")
-        .arg(root().join(FIXTURE))
-        .arg("--json")
-        .args(["--report"])
-        .arg(dir.join("class.html"))
-        .output()
-        .expect("runs");
-    assert!(out.status.success());
-    let j: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let html_file = dir.join("class.html");
+    let args = [
+        "--json".as_ref(),
+        "--report".as_ref(),
+        html_file.as_os_str(),
+    ];
+    let (stdout, _) = check_responses(&root().join(FIXTURE), &args);
+    let j: serde_json::Value = serde_json::from_slice(&stdout).expect("JSON");
     let first = &j["students"][0];
     assert_eq!(first["student"], "Siti Rahayu");
     assert_eq!(first["variant"], serde_json::json!([1, 2, 2]));
