@@ -284,15 +284,20 @@ fn one_attempt_each(r: &Responses, given: &[Given], sheets: &mut [Sheet]) {
             .zip(s.total())
             .map(|(e, t)| e / f64::from(t.max(1)))
     };
-    let keys: Vec<String> = given.iter().map(student).collect();
-    for i in 0..sheets.len() {
-        let best = (0..sheets.len())
-            .filter(|&j| keys[j] == keys[i] && share(&sheets[j]).is_some())
-            .fold(None, |b: Option<usize>, j| match b {
-                Some(b) if share(&sheets[b]) >= share(&sheets[j]) => Some(b),
-                _ => Some(j),
-            });
-        if let Some(b) = best.filter(|&b| b != i) {
+    // each student's best sheet, in one pass (the first of equals)
+    let mut best: std::collections::HashMap<String, usize> = Default::default();
+    for (i, g) in given.iter().enumerate() {
+        let Some(mine) = sheets.get(i).and_then(share) else {
+            continue;
+        };
+        let b = best.entry(student(g)).or_insert(i);
+        if share(&sheets[*b]).is_some_and(|theirs| mine > theirs) {
+            *b = i;
+        }
+    }
+    for (i, g) in given.iter().enumerate() {
+        let kept = best.get(&student(g)).copied().filter(|&b| b != i);
+        if let Some(b) = kept.filter(|_| i < sheets.len()) {
             sheets[i].duplicate = Some((sheets[b].file.clone(), Same::Attempt));
         }
     }
