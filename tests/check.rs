@@ -892,11 +892,7 @@ fn the_new_mistakes_reach_the_quiz_feedback() {
         .arg(&dir)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     let xml = std::fs::read_to_string(dir.join("quiz.xml")).unwrap();
     for words in [
         // the quiz writes a minus Moodle reads back

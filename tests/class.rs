@@ -11,7 +11,7 @@ use common::class::{
     answer_file, Student, CROSS_ORDER_KEYS, FOVY_KEYS, HALF_EXTENT_KEYS, KEYS,
     N_NOT_NORMALIZED_KEYS,
 };
-use common::{grafika, root};
+use common::{assert_success, grafika, root};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
@@ -546,11 +546,7 @@ fn csv_cells_are_quoted_and_formulas_neutralised() {
         .args(["--csv", "-"])
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     let text = String::from_utf8(out.stdout).unwrap();
     let mut r = csv::Reader::from_reader(text.as_bytes());
     let rows: Vec<csv::StringRecord> = r.records().map(|x| x.unwrap()).collect();
@@ -605,11 +601,7 @@ fn exam(name: &str) -> (PathBuf, PathBuf) {
         .arg(&exam)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     let answers = dir.join("answers");
     std::fs::create_dir_all(&answers).unwrap();
     for v in 1..=4 {
@@ -710,11 +702,7 @@ fn one_exam_answer_file_is_marked_problem_by_problem() {
         .arg("--json")
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     let j: Value = serde_json::from_slice(&out.stdout).unwrap();
     let problems = j["problems"].as_array().unwrap();
     assert_eq!(problems.len(), 3);

@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::{grafika, scratch};
+use common::{assert_success, grafika, scratch};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
@@ -29,11 +29,7 @@ fn exam(dir: &Path) -> PathBuf {
         .arg(&exam)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     exam
 }
 

@@ -727,11 +727,7 @@ fn solve_reads_the_problem_from_standard_input() {
         .write_stdin(text)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     let from_stdin: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let from_file = json_ok(&["solve", "problems/text-camera.toml"]);
     assert_eq!(from_stdin["result"], from_file["result"]);
@@ -957,11 +953,7 @@ fn explain_pixel_matrices_are_not_under_the_solve_viewing_heading() {
             .args(["--explain-pixel", "330,150", "--lang", lang])
             .output()
             .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        assert_success(&out);
         let text = String::from_utf8(out.stdout).unwrap();
         assert!(text.contains(heading), "{text}");
         assert!(!text.contains("world → eye coordinates) =="), "{text}");

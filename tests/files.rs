@@ -644,11 +644,7 @@ fn control_characters_from_files_are_shown_escaped() {
         .args(["solve", p(&prob), "--figure", p(&fig), "--html", p(&html)])
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     assert!(!raw_control(&String::from_utf8_lossy(&out.stdout)));
     let svg = std::fs::read_to_string(d.path().join("f-1-view.svg")).unwrap();
     roxmltree::Document::parse(&svg).expect("well-formed SVG");
@@ -667,11 +663,7 @@ fn practice_reads_a_line_of_at_most_4_kb() {
         .write_stdin(input)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(
         text.lines().all(|l| l.len() < 20_000),

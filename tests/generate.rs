@@ -806,11 +806,7 @@ fn the_blueprint_says_what_every_variant_asks_alike() {
         .args(["--format", "json", "--out", dir.to_str().unwrap()])
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     let printed = String::from_utf8(out.stdout).unwrap();
     assert!(printed.contains("| Problem | Topic | Case |"), "{printed}");
     let bp: serde_json::Value =

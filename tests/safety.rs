@@ -128,11 +128,7 @@ fn a_character_device_is_written_directly_and_never_replaced() {
     // /dev/null without --force: written into as `cat > /dev/null` would
     // (a device is not a file grafika replaces, so it needs no --force).
     let out = run(&["solve", TRIANGLE, "--html", "/dev/null"]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     let out = run(&[
         "check",
         TRIANGLE,
@@ -141,11 +137,7 @@ fn a_character_device_is_written_directly_and_never_replaced() {
         "--csv",
         "/dev/null",
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     assert!(std::fs::metadata("/dev/null")
         .unwrap()
         .file_type()
@@ -215,11 +207,7 @@ fn force_keeps_the_files_mode() {
         p(&csv),
         "--force",
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     assert!(std::fs::read_to_string(&csv)
         .unwrap()
         .starts_with("student,"));
@@ -510,11 +498,7 @@ fn a_deeply_nested_name_gives_a_page_in_bounded_size() {
     .unwrap();
     let html = d.path().join("p.html");
     let out = run(&["solve", p(&problem), "--html", p(&html)]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     let page = std::fs::read_to_string(&html).unwrap();
     assert!(page.len() < 40 * name.len(), "{} bytes", page.len());
 }

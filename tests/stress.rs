@@ -713,11 +713,7 @@ fn exact_arithmetic_with_many_roots_falls_back_to_f64_and_says_so() {
         ])
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_success(&out);
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let w = v["warnings"].to_string();
     assert!(w.contains("more than 64 terms"), "{w}");

@@ -28,6 +28,14 @@ pub fn grafika() -> Command {
     c
 }
 
+/// Asserts that a run succeeded, with its standard error as the message
+/// when it did not.
+#[track_caller]
+pub fn assert_success(out: &std::process::Output) {
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+}
+
 /// Runs `cmd` (a [`grafika`] command with its settings) with `args`,
 /// expects exit status 2 and one line on stderr; returns stderr as written.
 pub fn refusal(mut cmd: Command, args: &[&str]) -> String {
