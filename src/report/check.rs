@@ -2,9 +2,10 @@
 //! autograders.
 
 use crate::msg::CheckWord as K;
+use crate::report::json::{exact_json, value_json};
 use crate::report::lang::Lang;
 use crate::report::words::{self, words};
-use crate::report::{exact_json, joined, value_json, Style};
+use crate::report::{joined, Style};
 use crate::tutor::check::{Marked, Marking, Verdict};
 use crate::tutor::key::Key;
 use serde_json::{json, Value};

@@ -3,10 +3,14 @@
 //! f64 values of the numbers written; names for named segment ends), a
 //! render's scene and settings, and the render's `stats`; a refusal.
 
+use super::lang::Lang;
+use super::{words, Style};
 use crate::input::fields::{Num, Vec3In};
 use crate::input::problem::{PointRef, ProblemIn};
+use crate::msg::Msg;
 use crate::stages::projection::Projection;
-use crate::tutor::solution::{Asked, Given, RenderRun, Report, P3};
+use crate::stages::trace::{Name, Step, Val};
+use crate::tutor::solution::{Asked, Compared, Given, RenderRun, Report, P3};
 use serde_json::{json, Map, Value};
 
 /// A refusal as JSON (`--json`, docs/spec.md): the field at fault as it
@@ -50,7 +54,7 @@ fn given(g: &Given) -> Value {
             };
             let pts: Map<String, Value> = points
                 .iter()
-                .map(|(n, v)| (n.clone(), super::value_json(v)))
+                .map(|(n, v)| (n.clone(), value_json(v)))
                 .collect();
             json!({ "projection": kind, "points": pts })
         }
@@ -58,7 +62,7 @@ fn given(g: &Given) -> Value {
             let pts: Map<String, Value> = w
                 .points
                 .iter()
-                .map(|(n, v)| (n.clone(), super::value_json(v)))
+                .map(|(n, v)| (n.clone(), value_json(v)))
                 .collect();
             json!({
                 "fovy": w.fovy, "aspect": w.aspect, "near": w.near, "far": w.far,
@@ -143,6 +147,131 @@ fn render_input(run: &RenderRun) -> Value {
         "normals": run.normals,
         "explain_pixel": run.explain_pixel.map(|(x, y)| [x, y]),
     })
+}
+
+impl Report {
+    /// The docs/spec.md §3 JSON object; only its human-readable strings (titles,
+    /// notes, warnings) depend on `lang`.
+    pub fn to_json(&self, lang: Lang) -> Value {
+        let style = Style::new(4, true, lang);
+        let answer = self.answer();
+        let result = Value::Object(
+            answer
+                .iter()
+                .map(|(k, v)| (k.clone(), value_json(v)))
+                .collect(),
+        );
+        let exact = Value::Object(
+            answer
+                .iter()
+                .map(|(k, v)| (k.clone(), exact_json(v)))
+                .collect(),
+        );
+        let steps: Vec<Value> = self.steps.iter().map(|s| step_json(s, lang)).collect();
+        let warnings: Vec<String> = self.warnings.iter().map(|w| style.w(w)).collect();
+        let mut obj = json!({
+            "command": self.command(),
+            "precision": self.precision,
+            "input": input(self),
+            "result": result,
+            "exact": exact,
+            "steps": steps,
+            "warnings": warnings,
+        });
+        let notes = self.all_notes(&style);
+        if !notes.is_empty() {
+            obj["notes"] = json!(notes);
+        }
+        if let Asked::Render(run) = &self.asked {
+            obj["stats"] = super::render::stats_json(run);
+        }
+        if !self.source_notes.is_empty() {
+            obj["source_notes"] = json!(self.source_notes);
+        }
+        if let Some(c) = &self.comparison {
+            obj["comparison"] = c.rows.iter().map(|r| compared_json(r, lang)).collect();
+        }
+        obj
+    }
+}
+
+/// One compared answer as JSON (`kind`: the erratum's, a code).
+fn compared_json(r: &Compared, lang: Lang) -> Value {
+    json!({
+        "key": r.key,
+        "printed": r.printed,
+        "computed": r.computed.as_ref().map(value_json),
+        "agrees": r.agrees,
+        "kind": r.kind,
+        "why": r.why.as_ref().map(|w| crate::report::words::words(w, lang)),
+    })
+}
+
+/// A value with plain numbers.
+pub fn value_json(v: &Val) -> Value {
+    match v {
+        Val::Num(s) => serde_json::Number::from_f64(s.value)
+            .map(Value::Number)
+            .unwrap_or(Value::Null),
+        Val::List(items) => Value::Array(items.iter().map(value_json).collect()),
+        Val::Map(kv) => Value::Object(
+            kv.iter()
+                .map(|(k, v)| (k.clone(), value_json(v)))
+                .collect::<Map<_, _>>(),
+        ),
+        Val::Text(t) => Value::String(t.clone()),
+        Val::Said(m) => Value::String(words::words(m, Lang::En)),
+        Val::Bool(b) => Value::Bool(*b),
+        Val::Null => Value::Null,
+    }
+}
+
+/// The same shape with each number as its exact expression string (or null).
+pub fn exact_json(v: &Val) -> Value {
+    match v {
+        Val::Num(s) => s.exact.clone().map(Value::String).unwrap_or(Value::Null),
+        Val::List(items) => Value::Array(items.iter().map(exact_json).collect()),
+        Val::Map(kv) => Value::Object(
+            kv.iter()
+                .map(|(k, v)| (k.clone(), exact_json(v)))
+                .collect::<Map<_, _>>(),
+        ),
+        Val::Text(t) => Value::String(t.clone()),
+        Val::Said(m) => Value::String(words::words(m, Lang::En)),
+        Val::Bool(b) => Value::Bool(*b),
+        Val::Null => Value::Null,
+    }
+}
+
+/// A step as JSON (docs/spec.md §3); its title, formula, section and note in `lang`.
+pub fn step_json(s: &Step, lang: Lang) -> Value {
+    let w = |m: &Msg| words::words(m, lang);
+    let obj = |kv: &[(Name, Val)], f: fn(&Val) -> Value| {
+        Value::Object(kv.iter().map(|(k, v)| (k.to_string(), f(v))).collect())
+    };
+    let mut o = json!({
+        "title": w(&s.title),
+        "formula": w(&s.formula),
+        "values": obj(&s.values, value_json),
+        "result": obj(&s.result, value_json),
+        "exact": { "values": obj(&s.values, exact_json), "result": obj(&s.result, exact_json) },
+    });
+    if !s.subs.is_empty() {
+        // notation with the numbers written the English way, like `exact`
+        let en = Style::new(4, true, Lang::En);
+        let subs = s
+            .subs
+            .iter()
+            .map(|(k, x)| (k.to_string(), json!(en.subst(x))));
+        o["substituted"] = Value::Object(subs.collect());
+    }
+    if let Some(sec) = &s.section {
+        o["section"] = json!(w(sec));
+    }
+    if let Some(n) = &s.note {
+        o["note"] = json!(w(n));
+    }
+    o
 }
 
 #[cfg(test)]

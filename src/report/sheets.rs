@@ -4,9 +4,10 @@
 
 use crate::msg::DocWord;
 use crate::report::doc::Doc;
+use crate::report::json::{exact_json, value_json};
 use crate::report::lang::Lang;
 use crate::report::words::{self, words};
-use crate::report::{exact_json, value_json, Style};
+use crate::report::Style;
 use crate::stages::trace::Val;
 use crate::tutor::generate::{key_lines, problem_name, topics_name, Difficulty, Generated, Topic};
 use crate::tutor::key::Key;

@@ -10,9 +10,10 @@
 
 use super::page::document;
 use crate::report::doc::Doc;
+use crate::report::json::{exact_json, value_json};
 use crate::report::lang::Lang;
 use crate::report::mistakes::mistake_text;
-use crate::report::{exact_json, value_json, Style};
+use crate::report::Style;
 use crate::tutor::check::{Settings, Verdict};
 use crate::tutor::class::stats::{compare, Flag, Gap, Stats, StepRef};
 use crate::tutor::class::Class;
