@@ -20,6 +20,23 @@ use proptest::prelude::*;
 
 // ---- reading a figure back ----
 
+/// The shipped problem files (`problems/*.toml`) whose name starts with
+/// `prefix`, sorted, as paths from the repository.
+fn shipped(prefix: &str) -> Vec<String> {
+    let mut files: Vec<String> = std::fs::read_dir("problems")
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .filter(|p| {
+            p.file_name()
+                .is_some_and(|n| n.to_string_lossy().starts_with(prefix))
+        })
+        .map(|p| p.to_string_lossy().into_owned())
+        .collect();
+    files.sort();
+    files
+}
+
 /// The drawings of a command line (`grafika` is prepended), with exact
 /// forms, as the command line writes them.
 fn drawn_in(lang: Lang, args: &[&str]) -> Vec<Drawing> {
@@ -391,20 +408,9 @@ fn true_angles(p: &P, n: [f64; 3], l: [f64; 3], v: Option<[f64; 3]>, what: &str)
 /// (and V, H in the plane) at their true angles.
 #[test]
 fn shading_diagrams_of_the_shipped_problems_at_true_angles() {
-    let mut files: Vec<_> = std::fs::read_dir("problems")
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| {
-            p.file_name()
-                .unwrap()
-                .to_string_lossy()
-                .starts_with("shade-")
-        })
-        .collect();
-    files.sort();
+    let files = shipped("shade-");
     assert!(files.len() >= 12);
     for f in files {
-        let f = f.to_string_lossy().into_owned();
         let args = ["solve", f.as_str()];
         let (n, v) = (step_vec(&args, "N").unwrap(), step_vec(&args, "V"));
         let panels = read_svg(&to_svg(&drawn(&args)[0]));
@@ -462,12 +468,7 @@ fn angles_named(report: &grafika::tutor::solution::Report) -> Vec<String> {
 /// lines above and generated lighting exams at every difficulty.
 #[test]
 fn every_angle_the_steps_name_has_its_arc() {
-    let mut files: Vec<String> = std::fs::read_dir("problems")
-        .unwrap()
-        .map(|e| e.unwrap().path().to_string_lossy().into_owned())
-        .filter(|p| p.contains("/shade-"))
-        .collect();
-    files.sort();
+    let files = shipped("shade-");
     let mut reports: Vec<(String, grafika::tutor::solution::Report)> = Vec::new();
     let mut runs: Vec<Vec<String>> = files
         .iter()
@@ -485,7 +486,7 @@ fn every_angle_the_steps_name_has_its_arc() {
         let cli = Cli::try_parse_from(all).expect("arguments parse");
         reports.push((format!("{args:?}"), grafika::cli::run(&cli).unwrap()));
     }
-    for level in [Difficulty::Easy, Difficulty::Medium, Difficulty::Hard] {
+    for level in Difficulty::ALL {
         for (k, g) in generate::exam(&[Topic::Shade], level, 4, 11)
             .unwrap()
             .into_iter()
@@ -920,12 +921,7 @@ fn clip_faces_read(p: &P, lang: Lang, what: &str) {
 /// ([`clip_faces_read`]).
 #[test]
 fn the_clip_boxs_face_words_agree_with_the_drawing() {
-    let mut files: Vec<String> = std::fs::read_dir("problems")
-        .unwrap()
-        .map(|e| e.unwrap().path().to_string_lossy().into_owned())
-        .filter(|p| p.ends_with(".toml"))
-        .collect();
-    files.sort();
+    let files = shipped("");
     let mut runs: Vec<Vec<String>> = files
         .iter()
         .map(|f| vec!["solve".into(), f.clone()])
@@ -950,7 +946,7 @@ fn the_clip_boxs_face_words_agree_with_the_drawing() {
                 check(lang, &format!("{args:?}"), &d);
             }
         }
-        for level in [Difficulty::Easy, Difficulty::Medium, Difficulty::Hard] {
+        for level in Difficulty::ALL {
             for (k, g) in generate::exam(&[Topic::Clip], level, 4, 7)
                 .unwrap()
                 .iter()
@@ -1273,12 +1269,7 @@ const COMMANDS: &[&[&str]] = &[
 /// ([`label_faults`]).
 #[test]
 fn labels_stand_on_their_own_marks_in_every_figure() {
-    let mut files: Vec<_> = std::fs::read_dir("problems")
-        .unwrap()
-        .map(|e| e.unwrap().path().to_string_lossy().into_owned())
-        .filter(|p| p.ends_with(".toml"))
-        .collect();
-    files.sort();
+    let files = shipped("");
     let mut runs: Vec<Vec<String>> = files
         .iter()
         .map(|f| vec!["solve".into(), f.clone()])
@@ -1306,16 +1297,8 @@ fn labels_stand_on_their_own_marks_in_every_figure() {
                 check(&format!("{lang:?} {args:?} {}", d.part), &d);
             }
         }
-        for topic in [
-            Topic::Basis,
-            Topic::View,
-            Topic::Project,
-            Topic::Window,
-            Topic::Clip,
-            Topic::Shade,
-            Topic::Pipeline,
-        ] {
-            for level in [Difficulty::Easy, Difficulty::Medium, Difficulty::Hard] {
+        for topic in Topic::ALL {
+            for level in Difficulty::ALL {
                 for seed in [3, 2026] {
                     for (k, g) in generate::exam(&[topic], level, 2, seed)
                         .unwrap()
@@ -1349,12 +1332,7 @@ fn labels_stand_on_their_own_marks_in_every_figure() {
 /// nothing.
 #[test]
 fn every_labelled_dot_of_the_shipped_problems_keeps_its_label() {
-    let mut files: Vec<_> = std::fs::read_dir("problems")
-        .unwrap()
-        .map(|e| e.unwrap().path().to_string_lossy().into_owned())
-        .filter(|p| p.ends_with(".toml"))
-        .collect();
-    files.sort();
+    let files = shipped("");
     let mut faults = Vec::new();
     let mut dots = 0;
     for lang in [Lang::En, Lang::Id] {

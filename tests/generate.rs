@@ -11,16 +11,8 @@ use grafika::tutor::key::{Key, Part};
 use grafika::tutor::solution::{lookup, value_of};
 use std::path::{Path, PathBuf};
 
-const TOPICS: [Topic; 7] = [
-    Topic::Shade,
-    Topic::Basis,
-    Topic::View,
-    Topic::Project,
-    Topic::Window,
-    Topic::Clip,
-    Topic::Pipeline,
-];
-const LEVELS: [Difficulty; 3] = [Difficulty::Easy, Difficulty::Medium, Difficulty::Hard];
+const TOPICS: [Topic; 7] = Topic::ALL;
+const LEVELS: [Difficulty; 3] = Difficulty::ALL;
 
 fn tmp(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("grafika-gen-{}-{name}", std::process::id()));
@@ -707,14 +699,10 @@ fn the_variants_of_a_position_are_parallel_forms() {
     // case is a real clipping problem (status clipped, at least one
     // intersection computed).
     use grafika::tutor::generate::numbers::classes;
-    let topics = [
-        Topic::Basis,
-        Topic::View,
-        Topic::Project,
-        Topic::Window,
-        Topic::Clip,
-        Topic::Shade,
-    ];
+    // each topic alone: the pipeline's positions are the others'
+    let topics: Vec<Topic> = (Topic::ALL.into_iter())
+        .filter(|t| *t != Topic::Pipeline)
+        .collect();
     for level in LEVELS {
         for seed in [4242, 7] {
             let clipped = generate::ClipCase::Clipped;

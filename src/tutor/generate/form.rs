@@ -129,7 +129,7 @@ mod tests {
 
     #[test]
     fn a_clipped_case_always_has_an_intersection_to_compute() {
-        for diff in Difficulty::iter() {
+        for diff in Difficulty::ALL {
             for more in [false, true] {
                 let c = ClipShape::of(Status::Clipped, diff, more);
                 assert!(c.tried >= 1 && c.kept >= 1, "{c:?}");

@@ -43,6 +43,7 @@ use std::fmt::Write as _;
 
 /// What the problems are about.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Topic {
     /// The camera basis u, v, n.
     Basis,
@@ -61,6 +62,17 @@ pub enum Topic {
 }
 
 impl Topic {
+    /// Every topic, in the order `--topic` lists them.
+    pub const ALL: [Topic; 7] = [
+        Topic::Basis,
+        Topic::View,
+        Topic::Project,
+        Topic::Window,
+        Topic::Clip,
+        Topic::Shade,
+        Topic::Pipeline,
+    ];
+
     /// Its name as `--topic` and the exam titles spell it (`basis`).
     pub fn name(self) -> &'static str {
         match self {
@@ -88,6 +100,9 @@ pub enum Difficulty {
 }
 
 impl Difficulty {
+    /// Every level, from the nicest numbers to the most general.
+    pub const ALL: [Difficulty; 3] = [Difficulty::Easy, Difficulty::Medium, Difficulty::Hard];
+
     /// Its name as `--difficulty` and the exam titles spell it (`easy`).
     pub fn name(self) -> &'static str {
         match self {
@@ -284,5 +299,22 @@ pub fn answer_toml(v: &Val) -> toml::Value {
                 .map(|(k, x)| (k.clone(), answer_toml(x)))
                 .collect(),
         ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use strum::IntoEnumIterator;
+
+    /// `ALL` lists every variant once (the tests and the exams loop over
+    /// it): a topic or level added to the type and not to its list fails.
+    #[test]
+    fn every_topic_and_level_is_listed_once() {
+        assert_eq!(Topic::ALL.to_vec(), Topic::iter().collect::<Vec<_>>());
+        assert_eq!(
+            Difficulty::ALL.to_vec(),
+            Difficulty::iter().collect::<Vec<_>>()
+        );
     }
 }
