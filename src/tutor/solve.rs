@@ -29,7 +29,7 @@ use crate::tutor::run::{
     view_result, window_run, Hooks, Named,
 };
 use crate::tutor::solution::{
-    at, lookup, p3, Asked, CameraAt, Compared, Comparison, Given, Report, ShadeAt, Tree, WindowAt,
+    at, camera, lookup, p3, Asked, Compared, Comparison, Given, Report, ShadeAt, Tree, WindowAt,
 };
 use nalgebra::Matrix4;
 
@@ -232,7 +232,7 @@ impl<T: Scalar> Solver<'_, '_, T> {
     fn basis(&mut self) -> Result<()> {
         if let Some((cam, b)) = self.based()? {
             self.put(Part::View, Val::Map(basis_result(&b)));
-            self.out.parts.push(Given::Basis(CameraAt::of(&cam)));
+            self.out.parts.push(Given::Basis(camera(&cam)));
         }
         Ok(())
     }
@@ -247,7 +247,7 @@ impl<T: Scalar> Solver<'_, '_, T> {
             Val::Map(view_result(&v.basis, &v.matrix, &v.eye)),
         );
         let world = (self.earlier.points.iter()).map(|(n, q)| (n.clone(), p3(q)));
-        let given = Given::View(CameraAt::of(&v.cam), world.collect());
+        let given = Given::View(camera(&v.cam), world.collect());
         self.out.parts.push(given);
         Ok(())
     }
