@@ -597,17 +597,6 @@ mod tests {
     /// nothing in the results that no `Key` names.
     #[test]
     fn every_place_in_the_results_is_a_key() {
-        fn places<'a>(at: String, v: &'a Val, out: &mut Vec<(String, &'a Val)>) {
-            out.push((at.clone(), v));
-            match v {
-                Val::Map(kv) => kv
-                    .iter()
-                    .for_each(|(k, x)| places(format!("{at}.{k}"), x, out)),
-                Val::List(items) => (items.iter().enumerate())
-                    .for_each(|(i, x)| places(format!("{at}.{i}"), x, out)),
-                _ => {}
-            }
-        }
         let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("problems");
         let mut files: Vec<_> = std::fs::read_dir(&dir)
             .expect("problems/")
@@ -622,8 +611,12 @@ mod tests {
                 .expect("a shipped problem solves")
                 .result;
             let mut all = Vec::new();
+            let index = |at: &str, i: usize| format!("{at}.{i}");
             for (k, v) in &tree {
-                places(k.clone(), v, &mut all);
+                v.walk(k, &index, &mut |at, x| {
+                    all.push((at.to_string(), x));
+                    true
+                });
             }
             for (at, v) in all {
                 let found = value_of(&tree, &key(&at));
