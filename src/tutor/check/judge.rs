@@ -69,16 +69,7 @@ pub(crate) struct Ctx<'a> {
 
 /// Judges an answer against a value.
 pub(crate) fn judge(read: &Read, expected: &Val, ctx: &Ctx) -> Judged {
-    judge_scaled(read, expected, scale(expected), ctx)
-}
-
-/// The largest magnitude among a value's numbers (the tolerance of a zero).
-fn scale(v: &Val) -> f64 {
-    match v {
-        Val::Num(s) => s.value.abs(),
-        Val::List(items) => items.iter().map(scale).fold(0.0, f64::max),
-        _ => 0.0,
-    }
+    judge_scaled(read, expected, tolerance::scale(expected), ctx)
 }
 
 fn judge_scaled(read: &Read, expected: &Val, sc: f64, ctx: &Ctx) -> Judged {
@@ -205,7 +196,7 @@ fn fmt_pct(t: f64) -> String {
 /// (as doubles can tell), or, written as a decimal, within its tolerance;
 /// every word the same.
 pub(crate) fn matches_closely(read: &Read, v: &Val, key: &Key, rel: f64) -> bool {
-    let sc = scale(v);
+    let sc = tolerance::scale(v);
     fn go(read: &Read, v: &Val, key: &Key, rel: f64, sc: f64) -> bool {
         match (read, v) {
             (Read::Num(n), Val::Num(m)) => {
@@ -227,7 +218,7 @@ pub(crate) fn matches_closely(read: &Read, v: &Val, key: &Key, rel: f64) -> bool
 /// Whether two values can be told apart at the tolerance: a number whose
 /// tolerance intervals do not meet, a different word, another shape.
 pub(crate) fn apart(a: &Val, b: &Val, key: &Key, rel: f64) -> bool {
-    let (sa, sb) = (scale(a), scale(b));
+    let (sa, sb) = (tolerance::scale(a), tolerance::scale(b));
     fn go(a: &Val, b: &Val, key: &Key, rel: f64, s: (f64, f64)) -> bool {
         match (a, b) {
             (Val::Num(x), Val::Num(y)) => tolerance::apart(
