@@ -98,6 +98,41 @@ fn judge_scaled(read: &Read, expected: &Val, sc: f64, ctx: &Ctx) -> Judged {
     }
 }
 
+/// Whether an answer a source printed (a problem file's `[printed]`)
+/// agrees with the value computed: read as a student's answer is read
+/// ([`crate::input::answer::read`]), judged by [`judge`] with the
+/// problem's settings, and agreeing when the verdict does
+/// ([`Judged::agrees`]: correct, or too coarse). A printed (x, y) is
+/// judged against the first two of (x, y, z), as a source prints a point
+/// on the plane of projection. None when it cannot be read as such a value
+/// (not comparable).
+pub(crate) fn printed_agrees(
+    printed: &toml::Value,
+    computed: &Val,
+    key: &Key,
+    settings: &Settings,
+) -> Option<bool> {
+    let read = crate::input::answer::read(printed, computed).ok()?;
+    let exact = |t: &str| crate::num::parse_expr(t).ok()?.eval::<Real>().ok();
+    let ctx = Ctx {
+        settings,
+        key,
+        carry: false,
+        exact: &exact,
+    };
+    Some(judge(&read, &first_of(computed, &read), &ctx).agrees())
+}
+
+/// A value's lists cut to the length of an answer's, at every depth.
+fn first_of(v: &Val, read: &Read) -> Val {
+    match (v, read) {
+        (Val::List(vs), Read::List(rs)) if rs.len() <= vs.len() => {
+            Val::List(vs.iter().zip(rs).map(|(v, r)| first_of(v, r)).collect())
+        }
+        _ => v.clone(),
+    }
+}
+
 /// "expected …" with the value in exact and decimal form.
 pub(crate) fn expected_note(e: &Val) -> Msg {
     Msg::Expected(match e {
