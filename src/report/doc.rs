@@ -223,7 +223,7 @@ impl Doc {
         for (k, v) in items {
             match v {
                 Val::List(maps) if crate::report::is_list_of_maps(maps) => {
-                    html::flatten("", &[(k.clone(), v.clone())], &mut rows)
+                    html::flatten(&[(k.clone(), v.clone())], &mut rows)
                 }
                 _ => rows.push((k.clone(), v.clone())),
             }

@@ -149,7 +149,7 @@ fn matrix_row(st: &Style, r: &Val) -> String {
 /// maps of points opened and lists of segments numbered.
 pub fn answers(st: &Style, items: &[(String, Val)]) -> String {
     let mut rows = Vec::new();
-    flatten("", items, &mut rows);
+    flatten(items, &mut rows);
     let named: Vec<(String, String, Val)> = rows
         .into_iter()
         .map(|(k, v)| {
@@ -188,24 +188,19 @@ pub fn named_answers(st: &Style, rows: &[(String, String, Val)]) -> String {
 }
 
 /// `(key, value)` pairs with maps opened: `points` → `points.A`, …, and
-/// lists of maps numbered: `clip` → `clip[1].status`, …; an empty map is
-/// left out.
-pub fn flatten(prefix: &str, items: &[(String, Val)], out: &mut Vec<(String, Val)>) {
+/// lists of maps numbered from 1: `clip` → `clip[1].status`, …; an empty
+/// map is left out.
+pub fn flatten(items: &[(String, Val)], out: &mut Vec<(String, Val)>) {
+    let numbered = |at: &str, i: usize| format!("{at}[{}]", i + 1);
     for (k, v) in items {
-        let key = if prefix.is_empty() {
-            k.clone()
-        } else {
-            format!("{prefix}.{k}")
-        };
-        match v {
-            Val::Map(kv) => flatten(&key, kv, out),
-            Val::List(maps) if crate::report::is_list_of_maps(maps) => {
-                for (i, m) in maps.iter().enumerate() {
-                    flatten("", &[(format!("{key}[{}]", i + 1), m.clone())], out);
-                }
+        v.walk(k, &numbered, &mut |at, x| match x {
+            Val::Map(_) => true,
+            Val::List(maps) if crate::report::is_list_of_maps(maps) => true,
+            _ => {
+                out.push((at.to_string(), x.clone()));
+                false
             }
-            other => out.push((key, other.clone())),
-        }
+        });
     }
 }
 

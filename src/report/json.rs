@@ -35,8 +35,10 @@ fn named(points: &[(String, P3)]) -> Value {
 
 /// A calculator command's part.
 fn given(g: &Given) -> Value {
-    let cam =
-        |c: &crate::tutor::solution::CameraAt| json!({ "eye": c.eye, "look": c.look, "up": c.up });
+    let cam = |c: &crate::stages::camera::Camera<f64>| {
+        let [eye, look, up]: [P3; 3] = [c.pe.into(), c.pr.into(), c.vup.into()];
+        json!({ "eye": eye, "look": look, "up": up })
+    };
     match g {
         Given::Basis(c) => cam(c),
         Given::View(c, points) => {

@@ -206,6 +206,31 @@ impl Val {
             _ => vec![],
         }
     }
+    /// Walks a value's places depth first, each by its dotted key from
+    /// `at`: `visit(key, value)` for each, and into a map (its entries at
+    /// `key.name`) or a list (its items at `index(key, i)`, i from 0) when
+    /// `visit` opens it (returns true). The one walk of a value's places:
+    /// a report's rows (`clip[1].status`) and every answer key
+    /// (`view.points.A.1`) alike.
+    pub fn walk<'a>(
+        &'a self,
+        at: &str,
+        index: &dyn Fn(&str, usize) -> String,
+        visit: &mut dyn FnMut(&str, &'a Val) -> bool,
+    ) {
+        if !visit(at, self) {
+            return;
+        }
+        match self {
+            Val::Map(kv) => {
+                (kv.iter()).for_each(|(k, x)| x.walk(&format!("{at}.{k}"), index, visit))
+            }
+            Val::List(items) => {
+                (items.iter().enumerate()).for_each(|(i, x)| x.walk(&index(at, i), index, visit))
+            }
+            _ => {}
+        }
+    }
     /// Whether this is a matrix (a list of lists of numbers).
     pub fn is_matrix(&self) -> bool {
         matches!(self, Val::List(rows) if !rows.is_empty() && rows.iter().all(|r| matches!(r, Val::List(_))))

@@ -25,6 +25,17 @@ pub fn p3<T: Scalar>(v: &V3<T>) -> P3 {
     [at(&v[0]), at(&v[1]), at(&v[2])]
 }
 
+/// The camera at precision `T` as the stages took it (Pe, Pr, Vup), at
+/// f64 (the values the precision holds).
+pub fn camera<T: Scalar>(c: &Camera<T>) -> Camera<f64> {
+    let at = |v: &V3<T>| V3::from(p3(v));
+    Camera {
+        pe: at(&c.pe),
+        pr: at(&c.pr),
+        vup: at(&c.vup),
+    }
+}
+
 /// A number at f64 (the value the precision holds).
 pub fn at<T: Scalar>(x: &T) -> f64 {
     x.shown().value
@@ -152,28 +163,6 @@ pub enum Asked {
     Render(Box<RenderRun>),
 }
 
-/// The camera as the stages took it: Pe, Pr, Vup.
-#[derive(Clone, Debug, PartialEq)]
-pub struct CameraAt {
-    /// Pe, the eye.
-    pub eye: P3,
-    /// Pr, the point looked at.
-    pub look: P3,
-    /// Vup, the up vector.
-    pub up: P3,
-}
-
-impl CameraAt {
-    /// The camera at precision `T`, at f64.
-    pub fn of<T: Scalar>(c: &Camera<T>) -> CameraAt {
-        CameraAt {
-            eye: p3(&c.pe),
-            look: p3(&c.pr),
-            up: p3(&c.vup),
-        }
-    }
-}
-
 /// The window part's inputs: fovy (degrees), aspect, near, far, the
 /// viewport W × H (when the viewport is asked) and the window points.
 #[derive(Clone, Debug, PartialEq)]
@@ -259,9 +248,9 @@ pub struct ClipAt {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Given {
     /// The camera basis.
-    Basis(CameraAt),
+    Basis(Camera<f64>),
     /// The view: the camera and the world points.
-    View(CameraAt, Vec<(String, P3)>),
+    View(Camera<f64>, Vec<(String, P3)>),
     /// The projection and the eye-coordinate points it projects, as the
     /// steps show them; `chained` when they come from the view part (a
     /// problem file: the figure names them A').
@@ -608,17 +597,6 @@ mod tests {
     /// nothing in the results that no `Key` names.
     #[test]
     fn every_place_in_the_results_is_a_key() {
-        fn places<'a>(at: String, v: &'a Val, out: &mut Vec<(String, &'a Val)>) {
-            out.push((at.clone(), v));
-            match v {
-                Val::Map(kv) => kv
-                    .iter()
-                    .for_each(|(k, x)| places(format!("{at}.{k}"), x, out)),
-                Val::List(items) => (items.iter().enumerate())
-                    .for_each(|(i, x)| places(format!("{at}.{i}"), x, out)),
-                _ => {}
-            }
-        }
         let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("problems");
         let mut files: Vec<_> = std::fs::read_dir(&dir)
             .expect("problems/")
@@ -633,8 +611,12 @@ mod tests {
                 .expect("a shipped problem solves")
                 .result;
             let mut all = Vec::new();
+            let index = |at: &str, i: usize| format!("{at}.{i}");
             for (k, v) in &tree {
-                places(k.clone(), v, &mut all);
+                v.walk(k, &index, &mut |at, x| {
+                    all.push((at.to_string(), x));
+                    true
+                });
             }
             for (at, v) in all {
                 let found = value_of(&tree, &key(&at));

@@ -14,22 +14,22 @@ use crate::input::part::{ClipIn, PartIn, Problem, ProjectIn, ProjectionIn, Shade
 use crate::input::problem::{PerspectiveIn, PointRef, ProblemIn};
 use crate::input::{eval, eval3};
 use crate::msg::{ErrMsg, Msg};
-use crate::num::format::fmt_dec;
 use crate::num::vec::V3;
-use crate::num::{Expr, Scalar};
+use crate::num::Scalar;
 use crate::stages::camera::{Basis, Camera};
 use crate::stages::clip::ClipBox;
 use crate::stages::projection::Projection;
 use crate::stages::trace::{Name, Recorder, Step, Subst, Trace, Val};
 use crate::stages::window;
-use crate::tutor::key::{Field, Part};
+use crate::tutor::check::{printed_agrees, settings_for, written};
+use crate::tutor::key::{Field, Key, Part};
 use crate::tutor::keys::basis_result;
 use crate::tutor::run::{
     basis_run, clip_run, eye_run, in_table, light_run, pixels, points_val, project_run,
     view_result, window_run, Hooks, Named,
 };
 use crate::tutor::solution::{
-    at, lookup, p3, Asked, CameraAt, Compared, Comparison, Given, Report, ShadeAt, Tree, WindowAt,
+    at, camera, p3, value_of, Asked, Compared, Comparison, Given, Report, ShadeAt, Tree, WindowAt,
 };
 use nalgebra::Matrix4;
 
@@ -115,13 +115,7 @@ fn file_report<T: Scalar>(
     if result.is_empty() {
         return Err(Error::why("ask", ErrMsg::NothingToSolve));
     }
-    // Exact printed forms are compared to 1e-9 relative, or to what the
-    // precision itself can hold (f32 rounds at about 1e-7).
-    let rel = match T::PRECISION {
-        crate::num::Precision::F32 => 64.0 * f64::from(f32::EPSILON),
-        _ => 1e-9,
-    };
-    let comparison = compare_printed(p, &result, rel);
+    let comparison = compare_printed(p, &result);
     let asked = Asked::File(Box::new(p.clone()));
     let mut report = Report::from_recorder::<T>(asked, parts, result, rec);
     report.comparison = comparison;
@@ -232,7 +226,7 @@ impl<T: Scalar> Solver<'_, '_, T> {
     fn basis(&mut self) -> Result<()> {
         if let Some((cam, b)) = self.based()? {
             self.put(Part::View, Val::Map(basis_result(&b)));
-            self.out.parts.push(Given::Basis(CameraAt::of(&cam)));
+            self.out.parts.push(Given::Basis(camera(&cam)));
         }
         Ok(())
     }
@@ -247,7 +241,7 @@ impl<T: Scalar> Solver<'_, '_, T> {
             Val::Map(view_result(&v.basis, &v.matrix, &v.eye)),
         );
         let world = (self.earlier.points.iter()).map(|(n, q)| (n.clone(), p3(q)));
-        let given = Given::View(CameraAt::of(&v.cam), world.collect());
+        let given = Given::View(camera(&v.cam), world.collect());
         self.out.parts.push(given);
         Ok(())
     }
@@ -679,75 +673,27 @@ fn point_inside_step<T: Scalar>(
     });
 }
 
-/// Whether a printed value agrees with a computed one: texts equal; numbers
-/// equal to the digits the text wrote (a printed 0.041 agrees with 0.04142),
-/// or to `rel` (relative, at least absolute near zero) when the printed form
-/// is exact (−6/sqrt(2)); lists element by element (a printed (x, y) is
-/// compared with the first two of (x, y, z)).
-pub fn agrees(printed: &toml::Value, computed: &Val, rel: f64) -> Option<bool> {
-    match (printed, computed) {
-        (toml::Value::Array(ps), Val::List(cs)) => {
-            if ps.len() > cs.len() {
-                return Some(false);
-            }
-            let mut all = true;
-            for (p, c) in ps.iter().zip(cs) {
-                all &= agrees(p, c, rel)?;
-            }
-            Some(all)
-        }
-        (toml::Value::String(s), Val::Text(t)) => Some(s == t),
-        (p, Val::Num(c)) => {
-            let text = match p {
-                toml::Value::String(s) => s.clone(),
-                toml::Value::Integer(i) => i.to_string(),
-                toml::Value::Float(f) => format!("{f}"),
-                _ => return None,
-            };
-            let e: Expr = crate::num::parse_expr(&text.replace(',', ".")).ok()?;
-            let v: f64 = e.eval::<f64>().ok()?;
-            Some((v - c.value).abs() <= written_tolerance(&text).max(rel * c.value.abs().max(1.0)))
-        }
-        (toml::Value::String(s), Val::Null) => Some(s == "none" || s == "null"),
-        _ => None,
-    }
-}
-
-/// Half a unit in the last decimal place written (0 for exact forms).
-fn written_tolerance(text: &str) -> f64 {
-    let mut best: f64 = 0.0;
-    let chars: Vec<char> = text.chars().collect();
-    let mut i = 0;
-    while i < chars.len() {
-        if chars[i] == '.' || chars[i] == ',' {
-            let mut k = 0;
-            while i + 1 + k < chars.len() && chars[i + 1 + k].is_ascii_digit() {
-                k += 1;
-            }
-            best = best.max(0.5 * 10f64.powi(-(k as i32)));
-            i += k;
-        }
-        i += 1;
-    }
-    best * 1.000001
-}
-
-/// Compares every `[printed]` answer with the computed results.
-fn compare_printed(p: &ProblemIn, result: &[(String, Val)], rel: f64) -> Option<Comparison> {
+/// Compares every `[printed]` answer with the computed results, each
+/// judged as `check` marks a student's answer, with the problem's
+/// settings ([`printed_agrees`]), and shown as written ([`written`]).
+fn compare_printed(p: &ProblemIn, result: &[(String, Val)]) -> Option<Comparison> {
     let mut flat = Vec::new();
     crate::input::values::dotted("", &toml::Value::Table(p.printed.clone()), &mut flat);
     if flat.is_empty() {
         return None;
     }
+    let settings = settings_for(p, None, None);
     let rows = flat
         .iter()
         .map(|(key, printed)| {
-            let computed = lookup(result, key).cloned();
+            let k: Option<Key> = key.parse().ok();
+            let computed = k.as_ref().and_then(|k| value_of(result, k)).cloned();
+            let judged = k.as_ref().zip(computed.as_ref());
             let erratum = p.errata.iter().find(|e| &e.key == key);
             Compared {
                 key: key.clone(),
-                printed: printed_text(printed),
-                agrees: computed.as_ref().and_then(|v| agrees(printed, v, rel)),
+                printed: written(printed),
+                agrees: judged.and_then(|(k, c)| printed_agrees(printed, c, k, &settings)),
                 computed,
                 kind: erratum.and_then(|e| e.kind),
                 why: erratum.map(|e| e.why()),
@@ -760,25 +706,12 @@ fn compare_printed(p: &ProblemIn, result: &[(String, Val)], rel: f64) -> Option<
     })
 }
 
-/// A printed value as the text wrote it.
-fn printed_text(v: &toml::Value) -> String {
-    match v {
-        toml::Value::String(s) => s.clone(),
-        toml::Value::Array(a) => format!(
-            "({})",
-            a.iter().map(printed_text).collect::<Vec<_>>().join(", ")
-        ),
-        toml::Value::Float(f) => fmt_dec(*f, 17),
-        other => other.to_string(),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::tutor::key::Key;
     use crate::tutor::keys::ordered_keys;
-    use crate::tutor::solution::part_value;
+    use crate::tutor::solution::{lookup, part_value};
 
     /// Every shipped problem (problems/*.toml), by file name, solved.
     fn shipped() -> Vec<(String, ProblemIn, Report)> {
@@ -831,6 +764,66 @@ mod tests {
             assert_eq!(mine(&a.result), mine(&r.result), "{name}, {part} alone");
             assert_eq!(keys_of(part, &a.result), keys, "{name}, {part} alone");
         }
+    }
+
+    /// A source's printed answers are judged as `check` marks a student's:
+    /// the same reader (a decimal comma, `√` and `−`, an Indonesian status,
+    /// a segment written as text), the same tolerance and rounding. By
+    /// hand: fovy 45°, near 0.1, aspect 2: top = 0.1·tan 22.5° =
+    /// 0.1(√2 − 1) = 0.0414214, right = 2·top = 0.0828427 = height, width
+    /// = 2·right = 2(√2 − 1)/5 = 0.1656854. The clip example's segment is
+    /// clipped to (3, 8/3, 11/6)–(1, 4, 3/2) (the hand working in
+    /// problems/text-clip.toml).
+    #[test]
+    fn printed_answers_are_judged_as_a_students_answers_are() {
+        let text = "title = 't'\nask = ['window']\n\
+            [perspective]\nnear = 0.1\nfovy = 45\naspect = 2\n\
+            [printed]\n\
+            'window.top' = '0.041'\n\
+            'window.right' = '0.0829'\n\
+            'window.left' = '-0.082'\n\
+            'window.bottom' = '0.0414'\n\
+            'window.height' = '0,0828'\n\
+            'window.width' = '2(√2 − 1)/5'\n\
+            'window.nowhere' = '1'\n";
+        let p = ProblemIn::parse(text, "t.toml").unwrap();
+        let expected = [
+            ("window.top", Some(true)),     // 0.0414 rounded to 3 decimals
+            ("window.right", Some(true)),   // 0.07 % off: within 0.1 %
+            ("window.left", Some(false)),   // 1 % off; rounded it is −0.083
+            ("window.bottom", Some(false)), // the sign
+            ("window.height", Some(true)),  // 0.05 % off, a decimal comma
+            ("window.width", Some(true)),   // exactly
+            ("window.nowhere", None),       // no such result
+        ];
+        let rows = |r: Report| r.comparison.expect("printed answers").rows;
+        let agrees = |rows: Vec<Compared>| -> Vec<(String, Option<bool>)> {
+            rows.into_iter().map(|c| (c.key, c.agrees)).collect()
+        };
+        let want: Vec<(String, Option<bool>)> = (expected.iter())
+            .map(|(k, a)| (k.to_string(), *a))
+            .collect();
+        let exact = rows(solve::<crate::num::Real>(&p).unwrap());
+        assert_eq!(agrees(exact), want, "exact");
+        assert_eq!(agrees(rows(solve::<f32>(&p).unwrap())), want, "f32");
+
+        let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("problems/text-clip.toml");
+        let mut p = ProblemIn::read(&file).unwrap();
+        p.printed = toml::from_str(
+            "'clip.status' = 'di-clip'\n\
+             'clip.segment' = '(3; 8/3; 11/6), (1; 4; 3/2)'\n\
+             'clip.code0' = '000 010'\n\
+             'clip.code1' = '001000'\n",
+        )
+        .unwrap();
+        p.errata.clear();
+        let got = agrees(rows(solve::<f64>(&p).unwrap()));
+        let want = [Some(true), Some(true), Some(true), Some(false)];
+        assert_eq!(
+            got.iter().map(|(_, a)| *a).collect::<Vec<_>>(),
+            want,
+            "{got:?}"
+        );
     }
 
     /// A command's flags as a table (fields unprefixed).

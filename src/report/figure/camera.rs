@@ -12,9 +12,10 @@ use super::builders::{
 use super::{label, label_toward, labelled, mark, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
+use crate::stages::camera::Camera;
 use crate::stages::trace::Val;
 use crate::tutor::key::{Axis, Field, Node};
-use crate::tutor::solution::{CameraAt, P3};
+use crate::tutor::solution::P3;
 
 /// The length Vup is drawn with: 1 for a scene within 8 of the origin,
 /// else an eighth of the scene's size (so it stays visible).
@@ -46,8 +47,13 @@ pub fn camera_view(uvn: &[[f64; 3]; 3]) -> Axo {
 }
 
 /// The camera panel of camera `c` and the world points `named`.
-pub fn figure(p: &Part, st: &Style, c: &CameraAt, named: &[(String, P3)]) -> Option<Vec<Figure>> {
-    let (pe, pr, up) = (c.eye, c.look, c.up);
+pub fn figure(
+    p: &Part,
+    st: &Style,
+    c: &Camera<f64>,
+    named: &[(String, P3)],
+) -> Option<Vec<Figure>> {
+    let (pe, pr, up): (P3, P3, P3) = (c.pe.into(), c.pr.into(), c.vup.into());
     let mut uvn = [[0.0; 3]; 3];
     for (k, (axis, _)) in AXIS_PENS.iter().enumerate() {
         uvn[k] = vec_of(result(p.res, Field::Axis(*axis))?)?;

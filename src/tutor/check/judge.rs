@@ -69,16 +69,7 @@ pub(crate) struct Ctx<'a> {
 
 /// Judges an answer against a value.
 pub(crate) fn judge(read: &Read, expected: &Val, ctx: &Ctx) -> Judged {
-    judge_scaled(read, expected, scale(expected), ctx)
-}
-
-/// The largest magnitude among a value's numbers (the tolerance of a zero).
-fn scale(v: &Val) -> f64 {
-    match v {
-        Val::Num(s) => s.value.abs(),
-        Val::List(items) => items.iter().map(scale).fold(0.0, f64::max),
-        _ => 0.0,
-    }
+    judge_scaled(read, expected, tolerance::scale(expected), ctx)
 }
 
 fn judge_scaled(read: &Read, expected: &Val, sc: f64, ctx: &Ctx) -> Judged {
@@ -104,6 +95,41 @@ fn judge_scaled(read: &Read, expected: &Val, sc: f64, ctx: &Ctx) -> Judged {
         (_, Val::Null) => Judged::wrong(Msg::ExpectedNone),
         (_, Val::Bool(b)) => Judged::wrong(Msg::ExpectedBool(*b)),
         (_, e) => Judged::wrong(expected_note(e)),
+    }
+}
+
+/// Whether an answer a source printed (a problem file's `[printed]`)
+/// agrees with the value computed: read as a student's answer is read
+/// ([`crate::input::answer::read`]), judged by [`judge`] with the
+/// problem's settings, and agreeing when the verdict does
+/// ([`Judged::agrees`]: correct, or too coarse). A printed (x, y) is
+/// judged against the first two of (x, y, z), as a source prints a point
+/// on the plane of projection. None when it cannot be read as such a value
+/// (not comparable).
+pub(crate) fn printed_agrees(
+    printed: &toml::Value,
+    computed: &Val,
+    key: &Key,
+    settings: &Settings,
+) -> Option<bool> {
+    let read = crate::input::answer::read(printed, computed).ok()?;
+    let exact = |t: &str| crate::num::parse_expr(t).ok()?.eval::<Real>().ok();
+    let ctx = Ctx {
+        settings,
+        key,
+        carry: false,
+        exact: &exact,
+    };
+    Some(judge(&read, &first_of(computed, &read), &ctx).agrees())
+}
+
+/// A value's lists cut to the length of an answer's, at every depth.
+fn first_of(v: &Val, read: &Read) -> Val {
+    match (v, read) {
+        (Val::List(vs), Read::List(rs)) if rs.len() <= vs.len() => {
+            Val::List(vs.iter().zip(rs).map(|(v, r)| first_of(v, r)).collect())
+        }
+        _ => v.clone(),
     }
 }
 
@@ -205,7 +231,7 @@ fn fmt_pct(t: f64) -> String {
 /// (as doubles can tell), or, written as a decimal, within its tolerance;
 /// every word the same.
 pub(crate) fn matches_closely(read: &Read, v: &Val, key: &Key, rel: f64) -> bool {
-    let sc = scale(v);
+    let sc = tolerance::scale(v);
     fn go(read: &Read, v: &Val, key: &Key, rel: f64, sc: f64) -> bool {
         match (read, v) {
             (Read::Num(n), Val::Num(m)) => {
@@ -227,7 +253,7 @@ pub(crate) fn matches_closely(read: &Read, v: &Val, key: &Key, rel: f64) -> bool
 /// Whether two values can be told apart at the tolerance: a number whose
 /// tolerance intervals do not meet, a different word, another shape.
 pub(crate) fn apart(a: &Val, b: &Val, key: &Key, rel: f64) -> bool {
-    let (sa, sb) = (scale(a), scale(b));
+    let (sa, sb) = (tolerance::scale(a), tolerance::scale(b));
     fn go(a: &Val, b: &Val, key: &Key, rel: f64, s: (f64, f64)) -> bool {
         match (a, b) {
             (Val::Num(x), Val::Num(y)) => tolerance::apart(

@@ -38,6 +38,7 @@ mod sheet;
 pub mod tolerance;
 mod verdict;
 
+pub(crate) use judge::printed_agrees;
 pub use marker::{Follow, Judgement, Marker};
 pub use verdict::Verdict;
 
@@ -368,7 +369,8 @@ pub(crate) fn shown_cut(s: &str) -> String {
     format!("{head}…{tail}")
 }
 
-/// A TOML answer as the student wrote it.
+/// A TOML answer as it was written: a student's, or a source's printed
+/// one (a list in brackets, a number or a word as TOML spells it).
 pub fn written(v: &toml::Value) -> String {
     match v {
         toml::Value::String(s) => s.clone(),

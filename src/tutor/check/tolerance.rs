@@ -14,6 +14,7 @@
 //!   `pixels.A`) takes at least t = 0.5 px: a whole pixel within half a
 //!   pixel names the same pixel.
 
+use crate::stages::trace::Val;
 use crate::tutor::key::{Key, Part, Value};
 
 /// The least tolerance of a pixel position, in pixels.
@@ -58,6 +59,27 @@ pub fn for_key(key: &Key, x: f64, scale: f64, rel: f64) -> f64 {
     }
 }
 
+/// The scale of an answer: the largest magnitude among its finite numbers
+/// (in its lists and maps; 0 when it has none), by which a zero takes its
+/// tolerance ([`absolute`]).
+pub fn scale(v: &Val) -> f64 {
+    match v {
+        Val::Num(s) if s.value.is_finite() => s.value.abs(),
+        Val::List(items) => items.iter().map(scale).fold(0.0, f64::max),
+        Val::Map(kv) => kv.iter().map(|(_, x)| scale(x)).fold(0.0, f64::max),
+        _ => 0.0,
+    }
+}
+
+/// The numbers of an answer `v` (a number, a vector's, a matrix's, depth
+/// first), each with its absolute tolerance in the answer `key` at
+/// relative tolerance `rel` ([`for_key`] by the answer's [`scale`]).
+pub fn numbers(key: &Key, v: &Val, rel: f64) -> Vec<(f64, f64)> {
+    let sc = scale(v);
+    let within = |x: f64| (x, for_key(key, x, sc, rel));
+    v.numbers().into_iter().map(within).collect()
+}
+
 /// Whether two numbers, each with its absolute tolerance, can be told
 /// apart: their tolerance intervals [x − t, x + t] do not meet.
 pub fn apart(x: f64, tx: f64, y: f64, ty: f64) -> bool {
@@ -70,6 +92,26 @@ mod tests {
 
     fn near(a: f64, b: f64) -> bool {
         (a - b).abs() <= 1e-15
+    }
+
+    /// One walk for every user: (0, 4, −3) at 0.1 % has scale 4, so its
+    /// zero takes 0.004 and its others 0.1 % of themselves (0.004, 0.003);
+    /// a number that is not finite sets no scale (a mistaken tan 90° does
+    /// not make every zero of its answer match anything).
+    #[test]
+    fn an_answers_numbers_take_their_tolerances_by_its_scale() {
+        let v = |xs: &[f64]| Val::List(xs.iter().map(Val::num).collect());
+        let key: Key = "view.points.A".parse().expect("a key");
+        let got = numbers(&key, &v(&[0.0, 4.0, -3.0]), 1e-3);
+        let want = [(0.0, 0.004), (4.0, 0.004), (-3.0, 0.003)];
+        for ((x, t), (wx, wt)) in got.iter().zip(want) {
+            assert!(*x == wx && near(*t, wt), "{got:?}");
+        }
+        assert_eq!(got.len(), 3);
+        assert_eq!(scale(&v(&[0.0, f64::INFINITY, -2.0])), 2.0);
+        assert_eq!(scale(&v(&[0.0, 0.0])), 0.0);
+        let matrix = Val::List(vec![v(&[1.0, -7.5]), v(&[0.5, 0.0])]);
+        assert_eq!(scale(&matrix), 7.5);
     }
 
     #[test]

@@ -265,7 +265,7 @@ fn mistaken_trees(p: &ProblemIn) -> Vec<(Code, Tree)> {
 /// when two mistakes give the same value.
 fn key_blanks(key: &Key, value: &Val, trees: &[(Code, Tree)], rel: f64, figs: u32) -> Vec<Blank> {
     let right = typed_leaves(key, value, rel);
-    let scale = scale(key, &right);
+    let scale = scale(key, value);
     let mut blanks: Vec<Blank> = right
         .into_iter()
         .map(|(value, tolerance)| {
@@ -299,17 +299,11 @@ fn key_blanks(key: &Key, value: &Val, trees: &[(Code, Tree)], rel: f64, figs: u3
 }
 
 /// The scale S of an answer: the largest magnitude among its finite
-/// numbers; for a colour (a lighting term, the colour before and after
-/// clamping) at least 1, the full intensity of a channel; 1 when the whole
-/// answer is zero.
-pub fn scale(key: &Key, leaves: &[(Typed, f64)]) -> f64 {
-    let largest = leaves
-        .iter()
-        .filter_map(|(l, _)| match l {
-            Typed::Num(x) if x.is_finite() => Some(x.abs()),
-            _ => None,
-        })
-        .fold(0.0, f64::max);
+/// numbers ([`tolerance::scale`]); for a colour (a lighting term, the
+/// colour before and after clamping) at least 1, the full intensity of a
+/// channel; 1 when the whole answer is zero.
+pub fn scale(key: &Key, v: &Val) -> f64 {
+    let largest = tolerance::scale(v);
     let colour = matches!(key.value, Value::Field(Field::Shading(s)) if s.is_colour());
     match (colour, largest > 0.0) {
         (true, _) => largest.max(1.0),
@@ -409,13 +403,7 @@ fn apart(a: &Typed, ta: f64, b: &Typed, tb: f64) -> bool {
 pub fn typed_leaves(key: &Key, v: &Val, rel: f64) -> Vec<(Typed, f64)> {
     let mut leaves = Vec::new();
     collect(v, &mut leaves);
-    let scale = leaves
-        .iter()
-        .filter_map(|l| match l {
-            Typed::Num(x) if x.is_finite() => Some(x.abs()),
-            _ => None,
-        })
-        .fold(0.0, f64::max);
+    let scale = tolerance::scale(v);
     leaves
         .into_iter()
         .map(|l| {
@@ -501,17 +489,18 @@ mod tests {
 
     #[test]
     fn a_colour_has_the_scale_of_full_intensity() {
-        let n = |x: f64| (Typed::Num(x), 0.0);
+        let n = |x: f64| Val::num(&x);
+        let l = |xs: &[Val]| Val::List(xs.to_vec());
         // specular = cos β⁸·ks ≈ 1.6·10⁻¹⁰ in each channel: scale 1
         let tiny = [n(1.6e-10), n(1.6e-10), n(1.6e-10)];
-        assert_eq!(scale(&key("shade.specular"), &tiny), 1.0);
+        assert_eq!(scale(&key("shade.specular"), &l(&tiny)), 1.0);
         // a vector keeps its own largest component
         let v = [n(0.0), n(-13.0), n(0.5)];
-        assert_eq!(scale(&key("view.points.A"), &v), 13.0);
+        assert_eq!(scale(&key("view.points.A"), &l(&v)), 13.0);
         // a colour brighter than 1 (before clamping) keeps its own
-        assert_eq!(scale(&key("shade.unclamped"), &[n(1.4), n(0.2)]), 1.4);
+        assert_eq!(scale(&key("shade.unclamped"), &l(&[n(1.4), n(0.2)])), 1.4);
         // all zero: 1
-        assert_eq!(scale(&key("view.u"), &[n(0.0), n(0.0)]), 1.0);
+        assert_eq!(scale(&key("view.u"), &l(&[n(0.0), n(0.0)])), 1.0);
     }
 
     #[test]

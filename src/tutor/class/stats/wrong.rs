@@ -167,12 +167,9 @@ fn same_value(first: &toml::Value, given: &toml::Value, a: &Marked, rel: f64) ->
 }
 
 fn close(x: &Val, y: &Val, key: &Key, rel: f64) -> bool {
-    let (xs, ys) = (x.numbers(), y.numbers());
+    let (xs, ys) = (tolerance::numbers(key, x, rel), y.numbers());
     if xs.is_empty() || xs.len() != ys.len() {
         return x == y;
     }
-    let scale = xs.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    xs.iter()
-        .zip(&ys)
-        .all(|(a, b)| (a - b).abs() <= tolerance::for_key(key, *a, scale, rel))
+    xs.iter().zip(&ys).all(|((a, t), b)| (a - b).abs() <= *t)
 }
