@@ -12,7 +12,7 @@ use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
 use crate::msg::{Bound, CliWord, DocWord, ErrMsg, IoWhy, Twice};
 use crate::report::check::marked;
-use crate::report::class::lecturer::{self, Format};
+use crate::report::class::lecturer::Format;
 use crate::report::lang::Lang;
 use crate::report::words;
 use crate::report::Style;
@@ -117,7 +117,9 @@ pub(crate) fn class_out(
     if let Some(file) = &a.report {
         let format = report_format(file)?;
         let stats = stats::of(class, paper, &settings);
-        let text = lecturer::write(format, class, &stats, &settings, style);
+        let text = format
+            .writer()
+            .class_report(class, &stats, &settings, style);
         outputs.write(file, "report", text.as_bytes())?;
     }
     let status = if class.sheets.iter().any(|s| s.outcome.is_err()) {
