@@ -9,6 +9,8 @@
 //! | [`SolutionWriter`] | a worked solution (`solve`, the calculator) | text, JSON, HTML |
 //! | [`ExamWriter`] | an exam and its key (`generate`) | TOML, Markdown, LaTeX, HTML, JSON, Moodle XML, GIFT |
 //! | [`QuizWriter`] | every variant of an exam in one quiz file | Moodle XML, GIFT |
+//! | [`MarkingWriter`] | one student's marking (`check`) | text, JSON |
+//! | [`MarksWriter`] | a class's marks, one row per sheet (`check --answers DIR`, `--csv`) | text, JSON, CSV |
 //! | [`ClassWriter`] | the lecturer's report of a class (`check --report`) | HTML, Markdown, JSON, CSV |
 //!
 //! The command line asks a format for its writer once
@@ -19,14 +21,16 @@
 //! other modules of `report/`, which do the writing.
 
 use crate::msg::{CliWord, QuizWord};
+use crate::report::check::{marked_json, marked_text};
 use crate::report::class::lecturer;
 use crate::report::doc::Doc;
 use crate::report::gift::{gift_units, GIFT};
+use crate::report::lang::Lang;
 use crate::report::moodle::{moodle_units, Written, XML};
 use crate::report::quizfile::{Frame, Unit};
 use crate::report::sheets::{exam_json, key_title, sheets};
 use crate::report::{words, Report, Style};
-use crate::tutor::check::Settings;
+use crate::tutor::check::{Marking, Settings};
 use crate::tutor::class::stats::Stats;
 use crate::tutor::class::Class;
 use crate::tutor::generate::quiz::Quiz;
@@ -107,6 +111,20 @@ pub trait QuizWriter: Writer {
     }
 }
 
+/// One student's marking of a lone problem (named "") or of an exam's
+/// problems (each named `problem-01`, …).
+pub trait MarkingWriter: Writer {
+    /// The whole marking.
+    fn marking(&self, marked: &[(String, Marking)], st: &Style) -> String;
+}
+
+/// A class's marks: one row per answer file, marked or with its error.
+pub trait MarksWriter: Writer {
+    /// Every row, with the entries skipped (text, JSON) and the class
+    /// list (JSON).
+    fn marks(&self, class: &Class, lang: Lang) -> String;
+}
+
 /// The lecturer's report of a class (`check --answers DIR --report FILE`).
 pub trait ClassWriter: Writer {
     /// The whole report.
@@ -150,6 +168,18 @@ impl SolutionWriter for Text {
     }
 }
 
+impl MarkingWriter for Text {
+    fn marking(&self, marked: &[(String, Marking)], st: &Style) -> String {
+        marked_text(marked, st)
+    }
+}
+
+impl MarksWriter for Text {
+    fn marks(&self, class: &Class, lang: Lang) -> String {
+        crate::report::class::table(class, lang)
+    }
+}
+
 impl Writer for Json {
     fn extension(&self) -> &'static str {
         "json"
@@ -171,6 +201,18 @@ impl ExamWriter for Json {
         let (title, seed, problems) = (&exam.title, exam.seed, exam.problems);
         let j = exam_json(title, seed, exam.variant, problems, st.lang);
         vec![("exam.json".into(), pretty(&j))]
+    }
+}
+
+impl MarkingWriter for Json {
+    fn marking(&self, marked: &[(String, Marking)], st: &Style) -> String {
+        pretty(&marked_json(marked, st.lang))
+    }
+}
+
+impl MarksWriter for Json {
+    fn marks(&self, class: &Class, lang: Lang) -> String {
+        pretty(&crate::report::class::json(class, lang))
     }
 }
 
@@ -340,6 +382,12 @@ impl QuizWriter for Gift {
 impl Writer for Csv {
     fn extension(&self) -> &'static str {
         "csv"
+    }
+}
+
+impl MarksWriter for Csv {
+    fn marks(&self, class: &Class, lang: Lang) -> String {
+        crate::report::class::csv(&class.sheets, class.exam, lang)
     }
 }
 
