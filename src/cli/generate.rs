@@ -395,3 +395,73 @@ fn quiz_files(
             .collect(),
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cli::args::Format;
+    use crate::report::lang::Lang;
+    use crate::tutor::generate::{ClipCase, Difficulty, Topic};
+    use clap::ValueEnum;
+
+    /// Every `--format`'s writer writes one exam's sheets under the names
+    /// it gives before anything is written (the output's entries, which
+    /// the stage lists), each with the format's extension; a quiz format
+    /// writes no sheets of its own.
+    #[test]
+    fn each_format_writes_the_sheets_it_names() {
+        let spec = Spec {
+            topics: vec![Topic::View, Topic::Clip],
+            difficulty: Difficulty::Easy,
+            count: 2,
+            variants: 1,
+            seed: 7,
+            clip: ClipCase::Clipped,
+        };
+        let drawn = exams(&spec, &mut |_| {}).expect("draws");
+        let style = Style::new(4, true, Lang::Id);
+        for format in Format::value_variants() {
+            let w = format.writer();
+            let paper = ExamPaper {
+                title: "Ujian".into(),
+                sheet_title: "Soal".into(),
+                seed: 7,
+                variant: 1,
+                problems: &drawn.variants[0],
+            };
+            let sheets = w.sheets(&paper, &style);
+            let names: Vec<String> = sheets.iter().map(|(n, _)| n.clone()).collect();
+            assert_eq!(names, w.sheet_names(), "{format:?}");
+            let ext = format!(".{}", w.extension());
+            assert!(
+                names.iter().all(|n| n.ends_with(&ext)),
+                "{format:?}: {names:?}"
+            );
+            assert!(
+                sheets.iter().all(|(_, text)| !text.is_empty()),
+                "{format:?}"
+            );
+            assert!(w.quiz().is_none() || names.is_empty(), "{format:?}");
+        }
+    }
+
+    /// A quiz's files (docs/spec.md §4): `quiz.xml`, `quiz.gift`, and the
+    /// k-th file of a split quiz `quiz-0k.EXT`.
+    #[test]
+    fn a_quiz_is_named_by_its_format() {
+        let quiz = |f: Format| {
+            let w = f.writer();
+            let q = w.quiz().map(|q| (q.file_name(None), q.file_name(Some(3))));
+            q.expect("a quiz format")
+        };
+        assert_eq!(
+            quiz(Format::Moodle),
+            ("quiz.xml".into(), "quiz-03.xml".into())
+        );
+        assert_eq!(
+            quiz(Format::Gift),
+            ("quiz.gift".into(), "quiz-03.gift".into())
+        );
+        assert!(Format::Md.writer().quiz().is_none());
+    }
+}
