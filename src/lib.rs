@@ -7,7 +7,7 @@
 //! | layer | what it holds |
 //! |---|---|
 //! | [`cli`] | the command line: clap arguments, flags read into the typed problem, dispatch, printing, exit codes |
-//! | [`report`] | the one place where words for people are made: a report written as text, JSON, Markdown, LaTeX, HTML and figures, in every language; each language is one module of [`report::words`] implementing its [`report::words::Words`] (one trait per family of keys, every method an exhaustive match), so a third language is one more module the compiler checks (docs/contributing.md) |
+//! | [`report`] | the one place where words for people are made: a report written as text, JSON, Markdown, LaTeX, HTML and figures, in every language, each format one type of [`report::writer`] implementing the traits of what it writes; each language is one module of [`report::words`] implementing its [`report::words::Words`] (one trait per family of keys, every method an exhaustive match), so a third language is one more module the compiler checks (docs/contributing.md) |
 //! | [`tutor`] | the one solver (a problem's parts run through the stages, [`tutor::run`]), the report as data ([`tutor::solution`]), mark answers (check), the mistake catalog, generate exams |
 //! | [`bench`](mod@bench) | run time against error of the float stages |
 //! | [`render`] | the renderer: geometry, rasterization, shading, drawn with the stages |

@@ -7,6 +7,7 @@ use crate::input::scene::{Normals, Shading};
 use crate::num::Precision;
 use crate::report::lang::Lang;
 use crate::report::moodle::Decimal;
+use crate::report::writer::{self, ExamWriter};
 use crate::stages::lighting::Model;
 use crate::tutor::generate::{ClipCase, Difficulty, Topic};
 use clap::builder::PossibleValue;
@@ -642,6 +643,22 @@ pub enum Format {
     Moodle,
     /// quiz.gift: GIFT, one question per value asked.
     Gift,
+}
+
+impl Format {
+    /// The format's writer: the one place `generate` matches on its format
+    /// (what differs between formats is a method of the writer).
+    pub fn writer(self) -> Box<dyn ExamWriter> {
+        match self {
+            Format::Toml => Box::new(writer::Toml),
+            Format::Md => Box::new(writer::Markdown),
+            Format::Latex => Box::new(writer::Latex),
+            Format::Html => Box::new(writer::Html),
+            Format::Json => Box::new(writer::Json),
+            Format::Moodle => Box::new(writer::Moodle),
+            Format::Gift => Box::new(writer::Gift),
+        }
+    }
 }
 
 /// The `generate` flags.

@@ -11,10 +11,10 @@ use crate::cli::write::Outputs;
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
 use crate::msg::{Bound, CliWord, DocWord, ErrMsg, IoWhy, Twice};
-use crate::report::check::marked;
-use crate::report::class::lecturer::{self, Format};
+use crate::report::class::lecturer::Format;
 use crate::report::lang::Lang;
 use crate::report::words;
+use crate::report::writer::{self, MarkingWriter, MarksWriter};
 use crate::report::Style;
 use crate::tutor::check::{self, Marking};
 use crate::tutor::class::{self, exam, stats, Paper, Sheet};
@@ -117,7 +117,9 @@ pub(crate) fn class_out(
     if let Some(file) = &a.report {
         let format = report_format(file)?;
         let stats = stats::of(class, paper, &settings);
-        let text = lecturer::write(format, class, &stats, &settings, style);
+        let text = format
+            .writer()
+            .class_report(class, &stats, &settings, style);
         outputs.write(file, "report", text.as_bytes())?;
     }
     let status = if class.sheets.iter().any(|s| s.outcome.is_err()) {
@@ -126,15 +128,11 @@ pub(crate) fn class_out(
         0
     };
     not_marked(&class.sheets, style.lang);
-    if let Some(out) = csv_out(a, &class.sheets, class.exam, style.lang, outputs)? {
+    if let Some(out) = csv_out(a, class, style.lang, outputs)? {
         return Ok((out, status));
     }
-    let out = if json {
-        pretty(&crate::report::class::json(class, style.lang))
-    } else {
-        crate::report::class::table(class, style.lang)
-    };
-    Ok((out, status))
+    let rows: &dyn MarksWriter = if json { &writer::Json } else { &writer::Text };
+    Ok((rows.marks(class, style.lang), status))
 }
 
 /// Marks the answers the source printed (its `[printed]` table): the
@@ -187,10 +185,15 @@ fn one_sheet(
     outputs: &Outputs,
 ) -> Result<(String, i32)> {
     let status = if sheet.outcome.is_err() { 2 } else { 0 };
-    if let Some(out) = csv_out(a, std::slice::from_ref(&sheet), exam, style.lang, outputs)? {
+    let mut one = class::Class::of_one(sheet, exam);
+    if let Some(out) = csv_out(a, &one, style.lang, outputs)? {
         return Ok((out, status));
     }
-    Ok((marked(&sheet.outcome?, json, style), 0))
+    let Some(sheet) = one.sheets.pop() else {
+        return Ok((String::new(), status)); // a class of one has its sheet
+    };
+    let printed: &dyn MarkingWriter = if json { &writer::Json } else { &writer::Text };
+    Ok((printed.marking(&sheet.outcome?, style), 0))
 }
 
 /// Why `--answers PATH` with `--report` is no class: a path that cannot be
@@ -217,15 +220,14 @@ fn report_format(path: &Path) -> Result<Format> {
 /// standard output (`--csv -`), which then prints nothing else.
 fn csv_out(
     a: &CheckArgs,
-    sheets: &[Sheet],
-    exam: bool,
+    class: &class::Class,
     lang: Lang,
     outputs: &Outputs,
 ) -> Result<Option<String>> {
     let Some(c) = &a.csv else {
         return Ok(None);
     };
-    let csv = crate::report::class::csv(sheets, exam, lang);
+    let csv = writer::Csv.marks(class, lang);
     if c.as_os_str() == "-" {
         return Ok(Some(csv));
     }
@@ -281,8 +283,4 @@ pub(crate) fn valid_tolerance(t: Option<f64>) -> Result<()> {
         )),
         _ => Ok(()),
     }
-}
-
-fn pretty(v: &serde_json::Value) -> String {
-    serde_json::to_string_pretty(v).unwrap_or_default() + "\n"
 }

@@ -1,19 +1,16 @@
 //! `grafika generate`: draws the exams (tutor), has them written as sheets
 //! and keys (report), and writes the files.
 
-use crate::cli::args::{Format, GenerateArgs};
+use crate::cli::args::GenerateArgs;
 use crate::cli::stage::Stage;
 use crate::error::{Error, Result};
-use crate::msg::QuizWord;
 use crate::msg::{Bound, ErrMsg};
-use crate::report::doc::Doc;
-use crate::report::gift::{gift_units, GIFT};
-use crate::report::moodle::{moodle_units, Written, XML};
+use crate::report::moodle::Written;
 use crate::report::quizfile::pack;
 use crate::report::sheets::{
-    exam_json, exam_title, key_file, key_title, problem_file, sheet_title, sheets, written_json,
-    written_summary,
+    exam_title, key_file, problem_file, sheet_title, written_json, written_summary,
 };
+use crate::report::writer::{ExamPaper, ExamWriter, QuizWriter};
 use crate::report::Style;
 use crate::tutor::check::DEFAULT_TOLERANCE;
 use crate::tutor::generate::blueprint::blueprint;
@@ -23,7 +20,8 @@ use std::path::PathBuf;
 
 /// Runs `grafika generate`; returns what to print. `force`: `--force`.
 pub fn run(a: &GenerateArgs, force: bool, json: bool, style: &Style) -> Result<String> {
-    let (files, plan) = write_exams(a, force, style)?;
+    let writer = a.format.writer();
+    let (files, plan) = write_exams(a, &*writer, force, style)?;
     Ok(if json {
         written_json(&files, a.seed, plan.json)
     } else {
@@ -35,10 +33,9 @@ pub fn run(a: &GenerateArgs, force: bool, json: bool, style: &Style) -> Result<S
             a.seed,
             (&a.out, style.lang),
         );
-        if a.format == Format::Gift {
+        if let Some(note) = writer.quiz().and_then(|q| q.note()) {
             // said to the lecturer here, never to students in a question
-            let note = crate::report::words::of(style.lang).quiz(&QuizWord::FiguresInMoodle);
-            s.push_str(&note);
+            s.push_str(&crate::report::words::of(style.lang).quiz(&note));
             s.push('\n');
         }
         s.push('\n');
@@ -116,19 +113,27 @@ fn check_size(a: &GenerateArgs, force: bool) -> Result<()> {
 }
 
 /// The names the output has in `--out`: `quiz.xml`, `variant-01` …, or one
-/// exam's files (a quiz split by `--split-mb`: [`quiz_name`]).
-fn entries(a: &GenerateArgs) -> Vec<String> {
-    let mut names = match a.format {
-        Format::Moodle | Format::Gift => vec![quiz_name(a.format, None)],
-        _ if a.variants == 1 => exam_files(a.count, a.format),
-        _ => (1..=a.variants).map(|v| variant_name(v as usize)).collect(),
+/// exam's files (a quiz split by `--split-mb`: [`QuizWriter::file_name`]).
+fn entries(a: &GenerateArgs, writer: &dyn ExamWriter) -> Vec<String> {
+    let mut names = match writer.quiz() {
+        Some(q) => return quiz_entries(q),
+        None if a.variants == 1 => exam_files(a.count, writer),
+        None => (1..=a.variants).map(|v| variant_name(v as usize)).collect(),
     };
     names.extend([BLUEPRINT_MD, BLUEPRINT_JSON].map(String::from));
     names
 }
 
+/// The names a quiz (not split) has in `--out`: `quiz.xml` and the
+/// blueprint.
+fn quiz_entries(q: &dyn QuizWriter) -> Vec<String> {
+    let mut names = vec![q.file_name(None)];
+    names.extend([BLUEPRINT_MD, BLUEPRINT_JSON].map(String::from));
+    names
+}
+
 /// The files of one exam: problem and key files, then the sheets.
-fn exam_files(count: u32, format: Format) -> Vec<String> {
+fn exam_files(count: u32, writer: &dyn ExamWriter) -> Vec<String> {
     let mut names: Vec<String> = (1..=count)
         .flat_map(|i| {
             [
@@ -137,46 +142,33 @@ fn exam_files(count: u32, format: Format) -> Vec<String> {
             ]
         })
         .collect();
-    names.extend(sheet_ext(format).map_or_else(
-        || {
-            (format == Format::Json)
-                .then(|| "exam.json".to_string())
-                .into_iter()
-                .collect()
-        },
-        |ext| vec![format!("questions.{ext}"), format!("key.{ext}")],
-    ));
+    names.extend(writer.sheet_names());
     names
-}
-
-/// The extension of the question sheet and key, for the formats that have them.
-fn sheet_ext(format: Format) -> Option<&'static str> {
-    match format {
-        Format::Md => Some("md"),
-        Format::Latex => Some("tex"),
-        Format::Html => Some("html"),
-        Format::Toml | Format::Json | Format::Moodle | Format::Gift => None,
-    }
 }
 
 /// Generates and writes every variant, the whole output or nothing (see
 /// [`Stage`], the blueprint beside it); returns the files written and the
 /// blueprint.
-pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<(Vec<PathBuf>, Plan)> {
+pub fn write_exams(
+    a: &GenerateArgs,
+    writer: &dyn ExamWriter,
+    force: bool,
+    style: &Style,
+) -> Result<(Vec<PathBuf>, Plan)> {
     check_size(a, force)?;
-    let limit = split_limit(a)?;
-    if matches!(a.format, Format::Moodle | Format::Gift) {
+    let limit = split_limit(a, writer)?;
+    if let Some(q) = writer.quiz() {
         let rel = quiz_tolerance(a)?;
         // drawn before anything is written: an exam that cannot be made
         // leaves the output directory as it was
         let drawn = draw(a, style)?;
         let plan = plan(&drawn, style);
-        let files = write_quiz(a, (rel, limit), (drawn, plan_files(&plan)), force, style)?;
+        let files = write_quiz(a, q, (rel, limit), (drawn, plan_files(&plan)), force, style)?;
         return Ok((files, plan));
     }
     let drawn = draw(a, style)?;
     let plan = plan(&drawn, style);
-    let mut stage = Stage::begin(&a.out, entries(a), force, run_of(a))?;
+    let mut stage = Stage::begin(&a.out, entries(a, writer), force, run_of(a))?;
     let mut files = Vec::new();
     for (v, exam) in drawn.variants.iter().enumerate() {
         let dir = if a.variants == 1 {
@@ -184,7 +176,8 @@ pub fn write_exams(a: &GenerateArgs, force: bool, style: &Style) -> Result<(Vec<
         } else {
             format!("{}/", variant_name(v + 1))
         };
-        files.extend(write_exam(&mut stage, &dir, a, v as u32 + 1, exam, style)?);
+        let variant = (writer, v as u32 + 1);
+        files.extend(write_exam(&mut stage, &dir, a, variant, exam, style)?);
     }
     for (name, text) in plan_files(&plan) {
         files.push(stage.write(&name, &text)?);
@@ -235,12 +228,12 @@ fn draw(a: &GenerateArgs, style: &Style) -> Result<Exams> {
 }
 
 /// Writes one exam's files (into `dir`, `` or `variant-NN/`): the problem
-/// and key files, then the sheets in the chosen format.
+/// and key files, then the sheets the format's writer writes.
 fn write_exam(
     stage: &mut Stage,
     dir: &str,
     a: &GenerateArgs,
-    variant: u32,
+    (writer, variant): (&dyn ExamWriter, u32),
     exam: &[Generated],
     style: &Style,
 ) -> Result<Vec<PathBuf>> {
@@ -260,37 +253,18 @@ fn write_exam(
         )?;
     }
     let numbered = (a.variants > 1).then_some(variant);
-    // The question sheet does not show the seed (anyone could regenerate the key).
-    let title = |seed| exam_title(&a.topic, a.difficulty, seed, numbered, style.lang);
-    if a.format == Format::Json {
-        let j = exam_json(&title(Some(a.seed)), a.seed, variant, exam, style.lang);
-        put(
-            "exam.json".into(),
-            serde_json::to_string_pretty(&j).unwrap_or_default() + "\n",
-        )?;
-    }
-    let (Some(ext), Some(doc)) = (sheet_ext(a.format), doc_of(a.format)) else {
-        return Ok(files);
+    let paper = ExamPaper {
+        title: exam_title(&a.topic, a.difficulty, Some(a.seed), numbered, style.lang),
+        // The question sheet does not show the seed (anyone could regenerate the key).
+        sheet_title: sheet_title(a.difficulty, numbered, style.lang),
+        seed: a.seed,
+        variant,
+        problems: exam,
     };
-    let (q, k) = sheets(doc, exam, style);
-    let sheet = sheet_title(a.difficulty, numbered, style.lang);
-    put(
-        format!("questions.{ext}"),
-        doc.document(&sheet, &q, style.lang),
-    )?;
-    let key = key_title(&title(Some(a.seed)), style.lang);
-    put(format!("key.{ext}"), doc.document(&key, &k, style.lang))?;
-    Ok(files)
-}
-
-/// The document kind of a format's sheets.
-fn doc_of(format: Format) -> Option<Doc> {
-    match format {
-        Format::Md => Some(Doc::Markdown),
-        Format::Latex => Some(Doc::Latex),
-        Format::Html => Some(Doc::Html),
-        Format::Toml | Format::Json | Format::Moodle | Format::Gift => None,
+    for (name, text) in writer.sheets(&paper, style) {
+        put(name, text)?;
     }
+    Ok(files)
 }
 
 /// The relative tolerance of a quiz: `--tolerance`, else 0.1 %; it must be
@@ -309,11 +283,11 @@ fn quiz_tolerance(a: &GenerateArgs) -> Result<f64> {
 
 /// The bytes a quiz file may have, from `--split-mb` (megabytes of 10⁶
 /// bytes, a number above 0), given only with a quiz's format.
-fn split_limit(a: &GenerateArgs) -> Result<Option<usize>> {
+fn split_limit(a: &GenerateArgs, writer: &dyn ExamWriter) -> Result<Option<usize>> {
     let Some(mb) = a.split_mb else {
         return Ok(None);
     };
-    if !matches!(a.format, Format::Moodle | Format::Gift) {
+    if writer.quiz().is_none() {
         return Err(Error::why("split-mb", ErrMsg::SplitNotQuiz));
     }
     if !(mb.is_finite() && mb > 0.0) {
@@ -325,20 +299,6 @@ fn split_limit(a: &GenerateArgs) -> Result<Option<usize>> {
     Ok(Some((mb * 1e6).floor().min(usize::MAX as f64) as usize))
 }
 
-/// A quiz file's name: `quiz.xml` (`quiz.gift`), or file k (from 1) of a
-/// split quiz, `quiz-01.xml`.
-pub fn quiz_name(format: Format, k: Option<usize>) -> String {
-    let ext = if format == Format::Gift {
-        "gift"
-    } else {
-        "xml"
-    };
-    match k {
-        None => format!("quiz.{ext}"),
-        Some(k) => format!("quiz-{k:02}.{ext}"),
-    }
-}
-
 /// Writes every variant into one Moodle XML or GIFT file in the output
 /// directory (quiz.xml or quiz.gift), or, with a `limit` in bytes, into
 /// as many files as it takes, none larger (quiz-01.xml, …). An existing
@@ -346,19 +306,20 @@ pub fn quiz_name(format: Format, k: Option<usize>) -> String {
 /// once it is written: any quiz file is refused then, without `--force`).
 fn write_quiz(
     a: &GenerateArgs,
+    q: &dyn QuizWriter,
     (rel, limit): (f64, Option<usize>),
     (drawn, beside): (Exams, [(String, String); 2]),
     force: bool,
     style: &Style,
 ) -> Result<Vec<PathBuf>> {
     let early = match limit {
-        None => Some(Stage::begin(&a.out, entries(a), force, run_of(a))?),
+        None => Some(Stage::begin(&a.out, quiz_entries(q), force, run_of(a))?),
         Some(_) => {
-            refuse_quiz_files(a, force)?;
+            refuse_quiz_files(a, q, force)?;
             None
         }
     };
-    let mut texts = quiz_files(a, (rel, limit), drawn, style)?;
+    let mut texts = quiz_files(a, q, (rel, limit), drawn, style)?;
     texts.extend(beside);
     let mut stage = match early {
         Some(stage) => stage,
@@ -379,11 +340,11 @@ fn write_quiz(
 /// Without `--force`, an error naming a quiz file already in `--out`
 /// (`quiz.xml` or `quiz-NN.xml`; `.gift`): a split quiz's names are known
 /// only once it is written, so any of them is refused before the work.
-fn refuse_quiz_files(a: &GenerateArgs, force: bool) -> Result<()> {
+fn refuse_quiz_files(a: &GenerateArgs, q: &dyn QuizWriter, force: bool) -> Result<()> {
     if force {
         return Ok(());
     }
-    let ext = quiz_name(a.format, None).replace("quiz.", ".");
+    let ext = format!(".{}", q.extension());
     let Ok(dir) = std::fs::read_dir(&a.out) else {
         return Ok(());
     };
@@ -391,7 +352,7 @@ fn refuse_quiz_files(a: &GenerateArgs, force: bool) -> Result<()> {
         let numbered = (name.strip_prefix("quiz-"))
             .and_then(|r| r.strip_suffix(&ext))
             .is_some_and(|k| !k.is_empty() && k.chars().all(|c| c.is_ascii_digit()));
-        numbered || *name == quiz_name(a.format, None)
+        numbered || *name == q.file_name(None)
     };
     let first = (dir.flatten())
         .map(|e| e.file_name().to_string_lossy().into_owned())
@@ -409,16 +370,14 @@ fn refuse_quiz_files(a: &GenerateArgs, force: bool) -> Result<()> {
 /// The quiz's files, (name, text): one, or split under `limit` bytes.
 fn quiz_files(
     a: &GenerateArgs,
+    q: &dyn QuizWriter,
     (rel, limit): (f64, Option<usize>),
     drawn: Exams,
     style: &Style,
 ) -> Result<Vec<(String, String)>> {
     let quiz = Quiz::new(drawn.variants, &a.topic, rel);
     let w = Written::new(style, a.decimal);
-    let (units, frame) = match a.format {
-        Format::Gift => (gift_units(&quiz, &w), GIFT),
-        _ => (moodle_units(&quiz, &w), XML),
-    };
+    let (units, frame) = (q.units(&quiz, &w), q.frame());
     let texts = pack(&units, frame, limit).map_err(|i| {
         let mb = |bytes: usize| format!("{:.3}", bytes as f64 / 1e6);
         let size =
@@ -430,12 +389,79 @@ fn quiz_files(
         )
     })?;
     Ok(match limit {
-        None => texts
-            .into_iter()
-            .map(|t| (quiz_name(a.format, None), t))
-            .collect(),
+        None => texts.into_iter().map(|t| (q.file_name(None), t)).collect(),
         Some(_) => (texts.into_iter().enumerate())
-            .map(|(k, t)| (quiz_name(a.format, Some(k + 1)), t))
+            .map(|(k, t)| (q.file_name(Some(k + 1)), t))
             .collect(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cli::args::Format;
+    use crate::report::lang::Lang;
+    use crate::tutor::generate::{ClipCase, Difficulty, Topic};
+    use clap::ValueEnum;
+
+    /// Every `--format`'s writer writes one exam's sheets under the names
+    /// it gives before anything is written (the output's entries, which
+    /// the stage lists), each with the format's extension; a quiz format
+    /// writes no sheets of its own.
+    #[test]
+    fn each_format_writes_the_sheets_it_names() {
+        let spec = Spec {
+            topics: vec![Topic::View, Topic::Clip],
+            difficulty: Difficulty::Easy,
+            count: 2,
+            variants: 1,
+            seed: 7,
+            clip: ClipCase::Clipped,
+        };
+        let drawn = exams(&spec, &mut |_| {}).expect("draws");
+        let style = Style::new(4, true, Lang::Id);
+        for format in Format::value_variants() {
+            let w = format.writer();
+            let paper = ExamPaper {
+                title: "Ujian".into(),
+                sheet_title: "Soal".into(),
+                seed: 7,
+                variant: 1,
+                problems: &drawn.variants[0],
+            };
+            let sheets = w.sheets(&paper, &style);
+            let names: Vec<String> = sheets.iter().map(|(n, _)| n.clone()).collect();
+            assert_eq!(names, w.sheet_names(), "{format:?}");
+            let ext = format!(".{}", w.extension());
+            assert!(
+                names.iter().all(|n| n.ends_with(&ext)),
+                "{format:?}: {names:?}"
+            );
+            assert!(
+                sheets.iter().all(|(_, text)| !text.is_empty()),
+                "{format:?}"
+            );
+            assert!(w.quiz().is_none() || names.is_empty(), "{format:?}");
+        }
+    }
+
+    /// A quiz's files (docs/spec.md §4): `quiz.xml`, `quiz.gift`, and the
+    /// k-th file of a split quiz `quiz-0k.EXT`.
+    #[test]
+    fn a_quiz_is_named_by_its_format() {
+        let quiz = |f: Format| {
+            let w = f.writer();
+            let q = w.quiz().map(|q| (q.file_name(None), q.file_name(Some(3))));
+            q.expect("a quiz format")
+        };
+        assert_eq!(
+            quiz(Format::Moodle),
+            ("quiz.xml".into(), "quiz-03.xml".into())
+        );
+        assert_eq!(
+            quiz(Format::Gift),
+            ("quiz.gift".into(), "quiz-03.gift".into())
+        );
+        assert!(Format::Md.writer().quiz().is_none());
+    }
 }

@@ -22,6 +22,7 @@ use crate::msg::{CliWord, DocWord, ErrMsg, Msg};
 use crate::num::Precision;
 use crate::report::lang::Lang;
 use crate::report::words;
+use crate::report::writer::{self, SolutionWriter};
 use crate::report::Style;
 use crate::tutor::solution::Report;
 use args::{Cli, Command};
@@ -371,29 +372,11 @@ fn misplaced(opt: args::Opt, command: &str) -> Error {
 
 /// `--html FILE.html`: the worked solution as a self-contained page.
 fn write_html(cli: &Cli, report: &Report, style: &Style, outputs: &Outputs) -> Result<()> {
-    use crate::report::figure::{drawings::drawings, svg::to_svg};
     let Some(path) = &cli.common.html else {
         return Ok(());
     };
-    let figures: Vec<(String, String, String)> = drawings(report, style)
-        .iter()
-        .map(|d| (d.part.clone(), to_svg(d), d.title()))
-        .collect();
-    let title = page_title(report, style);
-    let page = crate::report::page::report_page(report, style, &title, &figures);
+    let page = writer::Html.solution(report, style);
     outputs.write(path, "html", page.as_bytes())
-}
-
-/// The page's title: the problem's title for `solve`, else the command.
-fn page_title(report: &Report, style: &Style) -> String {
-    match report.title() {
-        Some(t) => format!("grafika {}: {t}", report.command()),
-        None => format!(
-            "grafika {} — {}",
-            report.command(),
-            words::of(style.lang).cli(CliWord::WorkedSolution)
-        ),
-    }
 }
 
 /// How numbers and words are written: `--digits`, exact or not, `--lang`
@@ -412,11 +395,8 @@ fn report_text(report: &Report, json: bool, style: &Style) -> String {
     for w in &report.warnings {
         print::stderr_line(&format!("{}: {}", style.doc(DocWord::Warning), style.w(w)));
     }
-    if json {
-        serde_json::to_string_pretty(&report.to_json(style.lang)).unwrap_or_default() + "\n"
-    } else {
-        report.to_text(style)
-    }
+    let printed: &dyn SolutionWriter = if json { &writer::Json } else { &writer::Text };
+    printed.solution(report, style)
 }
 
 /// `grafika bench`: the measurement as a table or JSON.

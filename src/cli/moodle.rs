@@ -12,8 +12,8 @@ use crate::cli::write::Outputs;
 use crate::error::{Error, Result};
 use crate::input::moodle_responses;
 use crate::msg::ErrMsg;
-use crate::report::check::marked;
 use crate::report::moodle_grades;
+use crate::report::writer::{self, MarkingWriter};
 use crate::report::Style;
 use crate::tutor::check::Settings;
 use crate::tutor::class::{moodle, Class, Paper, Sheet};
@@ -69,7 +69,7 @@ fn write_sheets(dir: &Path, sheets: &[Sheet], style: &Style, outputs: &Outputs) 
         .enumerate()
         .filter_map(|(i, s)| {
             let parts = s.outcome.as_ref().ok()?;
-            let text = format!("{}\n\n{}", s.who, marked(parts, false, style));
+            let text = format!("{}\n\n{}", s.who, writer::Text.marking(parts, style));
             Some((dir.join(format!("{:03}-{}.txt", i + 1, safe(&s.who))), text))
         })
         .collect();

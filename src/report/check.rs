@@ -65,28 +65,34 @@ fn counts_json(m: &Marking) -> Value {
     Value::Object(counts)
 }
 
-/// One student's marking of a lone problem or an exam, as text or JSON: a
-/// lone problem (named "") as [`to_text`] / [`to_json`]; an exam's problems
-/// one after another, each under `== problem-01 ==` (JSON: under
-/// `problems`, each with its `problem`).
-pub fn marked(marked: &[(String, Marking)], json: bool, style: &Style) -> String {
-    let pretty = |v: &Value| serde_json::to_string_pretty(v).unwrap_or_default() + "\n";
-    match (marked, json) {
-        ([(name, m)], true) if name.is_empty() => pretty(&to_json(m, style.lang)),
-        ([(name, m)], false) if name.is_empty() => to_text(m, style),
-        (_, true) => pretty(&json!({
-            "command": "check",
-            "problems": marked.iter().map(|(name, m)| {
-                let mut j = to_json(m, style.lang);
-                j["problem"] = json!(name);
-                j
-            }).collect::<Vec<_>>(),
-        })),
-        (_, false) => marked
+/// One student's marking of a lone problem or an exam as text: a lone
+/// problem (named "") as [`to_text`]; an exam's problems one after
+/// another, each under `== problem-01 ==`.
+pub fn marked_text(marked: &[(String, Marking)], style: &Style) -> String {
+    match marked {
+        [(name, m)] if name.is_empty() => to_text(m, style),
+        _ => marked
             .iter()
             .map(|(name, m)| format!("== {name} ==\n{}", to_text(m, style)))
             .collect::<Vec<_>>()
             .join("\n"),
+    }
+}
+
+/// One student's marking as JSON: a lone problem (named "") as
+/// [`to_json`]; an exam's problems under `problems`, each with its
+/// `problem`.
+pub fn marked_json(marked: &[(String, Marking)], lang: Lang) -> Value {
+    match marked {
+        [(name, m)] if name.is_empty() => to_json(m, lang),
+        _ => json!({
+            "command": "check",
+            "problems": marked.iter().map(|(name, m)| {
+                let mut j = to_json(m, lang);
+                j["problem"] = json!(name);
+                j
+            }).collect::<Vec<_>>(),
+        }),
     }
 }
 

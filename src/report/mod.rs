@@ -28,6 +28,7 @@ pub mod sheets;
 pub mod style;
 pub mod text;
 pub mod words;
+pub mod writer;
 
 use crate::msg::{DocWord, Msg, Printed};
 use crate::stages::trace::Val;

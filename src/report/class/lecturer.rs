@@ -8,12 +8,10 @@
 //! key), in either language. JSON and CSV keys never depend on the
 //! language.
 
-use super::page::document;
-use crate::report::doc::Doc;
 use crate::report::json::{exact_json, value_json};
 use crate::report::lang::Lang;
 use crate::report::mistakes::mistake_text;
-use crate::report::Style;
+use crate::report::writer::{self, ClassWriter};
 use crate::tutor::check::{Settings, Verdict};
 use crate::tutor::class::stats::{compare, Flag, Gap, Stats, StepRef};
 use crate::tutor::class::Class;
@@ -34,6 +32,16 @@ pub enum Format {
 }
 
 impl Format {
+    /// The format's writer: the one place a report's format is matched.
+    pub fn writer(self) -> Box<dyn ClassWriter> {
+        match self {
+            Format::Html => Box::new(writer::Html),
+            Format::Markdown => Box::new(writer::Markdown),
+            Format::Json => Box::new(writer::Json),
+            Format::Csv => Box::new(writer::Csv),
+        }
+    }
+
     /// The format of an extension (`html`, `htm`, `md`, `json`, `csv`).
     pub fn from_extension(ext: &str) -> Option<Format> {
         match ext {
@@ -43,20 +51,6 @@ impl Format {
             "csv" => Some(Format::Csv),
             _ => None,
         }
-    }
-}
-
-/// The report in a format.
-pub fn write(f: Format, class: &Class, stats: &Stats, settings: &Settings, st: &Style) -> String {
-    match f {
-        Format::Json => {
-            serde_json::to_string_pretty(&to_json(class, stats, settings, st.lang))
-                .unwrap_or_default()
-                + "\n"
-        }
-        Format::Csv => to_csv(stats),
-        Format::Html => document(Doc::Html, class, stats, settings, st),
-        Format::Markdown => document(Doc::Markdown, class, stats, settings, st),
     }
 }
 

@@ -4,7 +4,7 @@
 
 pub mod histogram;
 pub mod lecturer;
-mod page;
+pub(crate) mod page;
 
 use crate::error::Error;
 use crate::msg::ClassWord as C;

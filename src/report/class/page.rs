@@ -117,7 +117,7 @@ table.class td.n{text-align:right}.flag{color:#D55E00;font-weight:bold}\
 
 /// The whole document: summary, keys, problems and variants, mistakes,
 /// unexplained wrong answers, students.
-pub(super) fn document(
+pub(crate) fn document(
     doc: Doc,
     class: &Class,
     s: &Stats,

@@ -225,6 +225,18 @@ pub struct Class {
 }
 
 impl Class {
+    /// One student's sheet as a class of its own (`check --answers FILE
+    /// --csv`: the class's CSV of one row).
+    pub fn of_one(sheet: Sheet, exam: bool) -> Class {
+        Class {
+            title: String::new(),
+            exam,
+            sheets: vec![sheet],
+            skipped: Vec::new(),
+            roster: None,
+        }
+    }
+
     /// The sheets marked, each student once (the statistics count these).
     pub fn marked(&self) -> impl Iterator<Item = &Sheet> {
         (self.sheets.iter()).filter(|s| s.outcome.is_ok() && s.duplicate.is_none())
