@@ -49,10 +49,7 @@ impl<T> Window<T> {
 /// Checks fovy (degrees) ∈ (0°, 180°), aspect > 0 and near > 0.
 pub fn validate<T: Scalar>(fovy_deg: &T, aspect: &T, near: &T) -> Result<()> {
     if !(*fovy_deg > T::zero() && *fovy_deg < T::from_i64(180)) {
-        return Err(Error::said(
-            "fovy",
-            Msg::ErrFovy(fovy_deg.to_f64().to_string()),
-        ));
+        return Err(Error::said("fovy", Msg::ErrFovy(fovy_deg.to_f64())));
     }
     if *aspect <= T::zero() {
         return Err(Error::said("aspect", Msg::ErrAspect(got(aspect))));
@@ -169,7 +166,7 @@ pub fn validate_viewport<T: Scalar>(w: &T, h: &T) -> Result<()> {
     if *w <= T::zero() || *h <= T::zero() {
         return Err(Error::why(
             "viewport",
-            crate::msg::ErrMsg::Viewport(w.to_f64().to_string(), h.to_f64().to_string()),
+            crate::msg::ErrMsg::Viewport(w.to_f64(), h.to_f64()),
         ));
     }
     Ok(())

@@ -69,10 +69,23 @@ pub fn capitalised(s: &str) -> String {
         .unwrap_or_default()
 }
 
+/// The text's constants (ka = 0.4, kd = 0.6, ks = 0.7, n = 4, white
+/// specular) in the style `nums`: `ks_note` after ks's value, the
+/// specular colour said as `white`.
+pub fn material_text(nums: NumStyle, ks_note: &str, white: &str) -> String {
+    let (s, d) = (nums.sep, |x: f64| nums.dec(x, 4));
+    format!(
+        "ka = {}{s}kd = {}{s}ks = {}{ks_note}{s}n = 4{s}{white}",
+        d(0.4),
+        d(0.6),
+        d(0.7)
+    )
+}
+
 /// A small angle in radians with three decimals of exponent notation
 /// (`1.000e-9`), in the style `nums`.
 pub fn exponent(nums: NumStyle, a: f64) -> String {
-    nums.number(&format!("{a:.3e}"))
+    nums.exponent(a, 3)
 }
 
 /// `message` cut to [`MAX_MESSAGE`] characters, its middle replaced by the

@@ -137,7 +137,7 @@ fn every_error_has_words_in_both_languages_and_they_differ() {
 #[test]
 fn indonesian_errors_write_numbers_with_the_decimal_comma() {
     // -0,5 for the value given; 0,5 for near; the path keeps its dot.
-    let e = ErrMsg::MustBe(Bound::AboveNear("0.5".into()), "-0.5".into());
+    let e = ErrMsg::MustBe(Bound::AboveNear(0.5), -0.5);
     assert_eq!(
         of(Lang::Id).error(&e),
         "harus lebih besar daripada near = 0,5, diberikan -0,5"
@@ -146,7 +146,7 @@ fn indonesian_errors_write_numbers_with_the_decimal_comma() {
         of(Lang::En).error(&e),
         "must be greater than near = 0.5, got -0.5"
     );
-    let e = ErrMsg::Attenuation("0.5".into(), "-1".into(), "0".into());
+    let e = ErrMsg::Attenuation(0.5, -1.0, 0.0);
     assert!(of(Lang::Id).error(&e).ends_with("diberikan (0,5; -1; 0)"));
     let e = TomlErr::InvalidType("string \"a\"".into(), "an integer".into());
     assert_eq!(
