@@ -24,7 +24,7 @@ pub use errors::{
 };
 pub use figure::{FigWord, FigureMsg, Panel};
 pub use lang::Lang;
-pub use number::{Compared, Expect, Fixed, Shown};
+pub use number::{Compared, Expect, Fixed, Given, Shown};
 pub use pixel::PixelMsg;
 pub use render::{PerPixel, Summary};
 pub use report::{
@@ -444,9 +444,9 @@ pub enum Msg {
     /// fovy out of (0°, 180°) (the value given).
     ErrFovy(f64),
     /// aspect not positive (the value given).
-    ErrAspect(String),
+    ErrAspect(Given),
     /// near not positive (the value given).
-    ErrNear(String),
+    ErrNear(Given),
     /// A point (name) on the plane of the centre of projection (zprp when general).
     ErrCopPlane(String, Option<f64>),
     /// An unknown point (name); the known ones, if any.

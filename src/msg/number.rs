@@ -49,3 +49,24 @@ pub enum Expect {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(test, derive(Default))]
 pub struct Compared(pub Shown, pub &'static str, pub Shown);
+
+/// A value given that must be positive, as the check saw it: its double,
+/// or the 0 that a tiny positive number written (1e-400) is at a float
+/// precision: the precision's name and about the least positive number
+/// it holds (`f64`, `5e-324`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Given {
+    /// The value.
+    Value(f64),
+    /// 0 at this precision, below about this least positive number.
+    ZeroAt(&'static str, &'static str),
+}
+
+/// For the tests' iteration over the message keys (`strum::EnumIter`
+/// fills a variant's fields with their defaults).
+#[cfg(test)]
+impl Default for Given {
+    fn default() -> Given {
+        Given::Value(0.0)
+    }
+}

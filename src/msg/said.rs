@@ -9,11 +9,11 @@ use super::{Compared, Fixed};
 #[cfg_attr(test, derive(strum::EnumIter))]
 pub enum Said {
     /// An outcode bit's test: whether it holds, the comparison (`x > xmax`)
-    /// and its values (`4 > 3`).
-    BitTest(bool, String, Compared),
+    /// and its values (`4 > 3`; boxed: two numbers with their forms).
+    BitTest(bool, String, Box<Compared>),
     /// An outcode bit's test asked, not answered (a hint): the comparison
     /// and its values.
-    BitQuestion(String, Compared),
+    BitQuestion(String, Box<Compared>),
     /// One frame's time: milliseconds, millions of pixels per second, and
     /// the PNG encoding's milliseconds.
     FrameTime(Fixed, Fixed, Fixed),

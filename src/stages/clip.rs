@@ -154,7 +154,7 @@ pub fn outcode_clip<T: Scalar>(c: &nalgebra::Vector4<T>, name: &str, tr: &mut im
             let (op, lim) = if is_max { (">", "w") } else { ("<", "−w") };
             let set = code & (1 << bit) != 0;
             let bound = if is_max { c[3].clone() } else { -c[3].clone() };
-            let values = Compared(c[axis].shown(), op, bound.shown());
+            let values = Box::new(Compared(c[axis].shown(), op, bound.shown()));
             s = s.val(
                 Name::Bit(bit, side),
                 Val::said(crate::msg::Said::BitTest(
@@ -539,7 +539,7 @@ fn code_step<T: Scalar>(name: &str, b: &ClipBox<T>, p: &V3<T>, code: u8) -> Step
         };
         let set = code & (1 << bit) != 0;
         let test = format!("{a} {op} {a}{}", if is_max { "max" } else { "min" });
-        let values = Compared(p[axis].shown(), op, lim.shown());
+        let values = Box::new(Compared(p[axis].shown(), op, lim.shown()));
         s = s.val(
             Name::Bit(bit, side),
             Val::said(crate::msg::Said::BitTest(set, test, values)),

@@ -62,17 +62,6 @@ pub fn bracketed(v: [f64; 3], nums: NumStyle) -> String {
     format!("[{}]", v.map(|x| nums.shortest(x)).join(nums.sep))
 }
 
-/// An error's parameter that a reader or a stage wrote as Rust writes a
-/// double (`0.5`, `[0.5, 1.2, 0]`, `(1, 0.5, 0)`), in the style `nums`:
-/// its `.` as the decimal mark, its `, ` as the separator. Only numbers
-/// reach here (`f64::to_string`, never text a person typed).
-pub fn rust_numbers(s: &str, nums: NumStyle) -> String {
-    s.replace(", ", nums.sep)
-        .chars()
-        .map(|c| if c == '.' { nums.mark } else { c })
-        .collect()
-}
-
 /// `dir/` for a path that is a folder (`dir/` itself when it ends in `/`),
 /// so that the example is a file name inside it.
 pub fn folder_prefix(p: &str) -> String {

@@ -212,7 +212,7 @@ mod tests {
             ..Default::default()
         };
         let test = crate::msg::Compared(n(4.5), ">", n(3.0));
-        v.push(Said::BitTest(true, "x > xmax".into(), test));
+        v.push(Said::BitTest(true, "x > xmax".into(), Box::new(test)));
         let codes = crate::stages::clip::Status::iter().map(|s| s.as_str());
         v.extend(codes.map(|c| Said::Status(c.into())));
         v.into_iter().map(Msg::Said).collect()

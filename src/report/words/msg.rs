@@ -3,7 +3,7 @@
 //! words of a message are put together (a located message, a list of
 //! parts, a capital first letter), written once for every language.
 
-use crate::msg::{Erratum, LightPart, Msg, Printed, Term};
+use crate::msg::{Erratum, Given, LightPart, Msg, Printed, Term};
 use crate::report::lang::{NumStyle, MAX_MESSAGE};
 
 /// The words of the messages themselves ([`Msg`]) and the number style
@@ -67,6 +67,19 @@ pub fn capitalised(s: &str) -> String {
     c.next()
         .map(|a| a.to_uppercase().chain(c).collect())
         .unwrap_or_default()
+}
+
+/// A value given that must be positive, in the style `nums` (`0,5`); the
+/// 0 that a tiny positive number is at a float precision says so, in
+/// English in every language as it always has (its Indonesian words are
+/// still to be written).
+pub fn given(g: Given, nums: NumStyle) -> String {
+    match g {
+        Given::Value(v) => nums.shortest(v),
+        Given::ZeroAt(p, least) => {
+            format!("0 (at {p} precision: a positive number below about {least} is 0 too)")
+        }
+    }
 }
 
 /// The text's constants (ka = 0.4, kd = 0.6, ks = 0.7, n = 4, white

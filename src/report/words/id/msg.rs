@@ -15,7 +15,6 @@ use crate::tutor::key::Plane;
 impl MsgWords for Id {
     /// A word table: long on purpose.
     fn msg_in(&self, m: &Msg, nums: NumStyle) -> String {
-        let n = |s: &str| crate::report::words::errors::rust_numbers(s, nums);
         match m {
             Msg::Math(s) => s.clone(),
             Msg::Written(en, ind) => ind.clone().unwrap_or_else(|| en.clone()),
@@ -155,8 +154,8 @@ impl MsgWords for Id {
             Msg::ErrUpZero => "vektor Vup adalah vektor nol".into(),
             Msg::ErrUpParallel(up, d) => format!("vektor Vup = {} sejajar dengan arah pandang Peye − Pref = {}, sehingga Vup × n = 0 dan u tidak terdefinisi", nums.shortest3(*up), nums.shortest3(*d)),
             Msg::ErrFovy(v) => format!("harus di antara 0° dan 180° (tidak termasuk keduanya), diberikan {}°", nums.shortest(*v)),
-            Msg::ErrAspect(v) => format!("harus positif (lebar/tinggi), diberikan {}", n(v)),
-            Msg::ErrNear(v) => format!("harus positif (jarak di depan mata), diberikan {}", n(v)),
+            Msg::ErrAspect(v) => format!("harus positif (lebar/tinggi), diberikan {}", msg::given(*v, nums)),
+            Msg::ErrNear(v) => format!("harus positif (jarak di depan mata), diberikan {}", msg::given(*v, nums)),
             Msg::ErrCopPlane(p, None) => format!("{p} memiliki z = 0: titik itu terletak pada bidang pusat proyeksi dan tidak memiliki bayangan"),
             Msg::ErrCopPlane(p, Some(z)) => format!("{p} memiliki z = zprp = {}: titik itu terletak pada bidang pusat proyeksi dan tidak memiliki bayangan", nums.shortest(*z)),
             Msg::ErrUnknownPoint(p, None) => format!("titik `{p}` tidak dikenal: soal ini tidak memiliki [points]"),
