@@ -12,6 +12,7 @@ mod drawn;
 mod errors;
 mod figure;
 pub mod lang;
+mod number;
 mod pixel;
 mod render;
 mod report;
@@ -23,6 +24,7 @@ pub use errors::{
 };
 pub use figure::{FigWord, FigureMsg, Panel};
 pub use lang::Lang;
+pub use number::{Compared, Expect, Fixed, Given, Shown};
 pub use pixel::PixelMsg;
 pub use render::{PerPixel, Summary};
 pub use report::{
@@ -384,8 +386,8 @@ pub enum Msg {
     ExpectList(usize),
     /// Expected n values, got m.
     CountMismatch(usize, usize),
-    /// Expected this value (as notation: a number or a list).
-    Expected(String),
+    /// Expected this value (a number, words or a list).
+    Expected(Expect),
     /// Expected none.
     ExpectedNone,
     /// Expected yes/no.
@@ -406,8 +408,8 @@ pub enum Msg {
     Rounded(u32),
     /// Rounded to n significant figures, at least m required.
     RoundedCoarse(u32, u32),
-    /// Within this percentage.
-    WithinPct(String),
+    /// Within this percentage (written with 3 significant digits).
+    WithinPct(f64),
     /// Within half a pixel (a pixel position).
     WithinPixel,
     /// Not an outcode (the text as written).
@@ -433,24 +435,24 @@ pub enum Msg {
     Err(ErrMsg),
     /// Words given as a value (`msg::said`).
     Said(Said),
-    /// Pe and Pr are the same point (shown).
-    ErrSamePoint(String),
+    /// Pe and Pr are the same point (its coordinates).
+    ErrSamePoint([f64; 3]),
     /// Vup is the zero vector.
     ErrUpZero,
     /// Vup (shown) parallel to Pe − Pr (shown).
-    ErrUpParallel(String, String),
+    ErrUpParallel([f64; 3], [f64; 3]),
     /// fovy out of (0°, 180°) (the value given).
-    ErrFovy(String),
+    ErrFovy(f64),
     /// aspect not positive (the value given).
-    ErrAspect(String),
+    ErrAspect(Given),
     /// near not positive (the value given).
-    ErrNear(String),
+    ErrNear(Given),
     /// A point (name) on the plane of the centre of projection (zprp when general).
-    ErrCopPlane(String, Option<String>),
+    ErrCopPlane(String, Option<f64>),
     /// An unknown point (name); the known ones, if any.
     ErrUnknownPoint(String, Option<String>),
     /// axis min > max: axis, min, max.
-    ErrBoxInverted(String, String, String),
+    ErrBoxInverted(String, f64, f64),
     /// A file that cannot be read: path, the system's reason.
     ErrCannotRead(String, IoWhy),
     /// A zero vector that should be made a unit vector (name).

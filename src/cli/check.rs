@@ -279,7 +279,7 @@ pub(crate) fn valid_tolerance(t: Option<f64>) -> Result<()> {
     match t {
         Some(t) if !(t.is_finite() && t >= 0.0) => Err(Error::why(
             "tolerance",
-            ErrMsg::MustBe(Bound::FiniteAtLeastZero, t.to_string()),
+            ErrMsg::MustBe(Bound::FiniteAtLeastZero, t),
         )),
         _ => Ok(()),
     }

@@ -274,10 +274,7 @@ fn quiz_tolerance(a: &GenerateArgs) -> Result<f64> {
     if r.is_finite() && r > 0.0 && r < 1.0 {
         Ok(r)
     } else {
-        Err(Error::why(
-            "tolerance",
-            ErrMsg::MustBe(Bound::Fraction, r.to_string()),
-        ))
+        Err(Error::why("tolerance", ErrMsg::MustBe(Bound::Fraction, r)))
     }
 }
 
@@ -291,10 +288,7 @@ fn split_limit(a: &GenerateArgs, writer: &dyn ExamWriter) -> Result<Option<usize
         return Err(Error::why("split-mb", ErrMsg::SplitNotQuiz));
     }
     if !(mb.is_finite() && mb > 0.0) {
-        return Err(Error::why(
-            "split-mb",
-            ErrMsg::MustBe(Bound::AboveZero, mb.to_string()),
-        ));
+        return Err(Error::why("split-mb", ErrMsg::MustBe(Bound::AboveZero, mb)));
     }
     Ok(Some((mb * 1e6).floor().min(usize::MAX as f64) as usize))
 }
@@ -379,7 +373,7 @@ fn quiz_files(
     let w = Written::new(style, a.decimal);
     let (units, frame) = (q.units(&quiz, &w), q.frame());
     let texts = pack(&units, frame, limit).map_err(|i| {
-        let mb = |bytes: usize| format!("{:.3}", bytes as f64 / 1e6);
+        let mb = |bytes: usize| crate::msg::Fixed(bytes as f64 / 1e6, 3);
         let size =
             units[i].text.len() + units[i].category.len() + frame.head.len() + frame.foot.len();
         let limit = mb(limit.unwrap_or(0));

@@ -57,7 +57,7 @@ impl<'de> Deserialize<'de> for Pos {
         if v > 0.0 {
             Ok(Pos(v))
         } else {
-            Err(value_error(TomlErr::MustBe(Bound::Positive, v.to_string())))
+            Err(value_error(TomlErr::MustBe(Bound::Positive, v)))
         }
     }
 }
@@ -72,7 +72,7 @@ impl<'de> Deserialize<'de> for Count {
         if (3..=4096).contains(&v) {
             Ok(Count(v as u32))
         } else {
-            Err(value_error(TomlErr::WholeRange(3, 4096, v.to_string())))
+            Err(value_error(TomlErr::WholeRange(3, 4096, v)))
         }
     }
 }
@@ -87,7 +87,7 @@ impl<'de> Deserialize<'de> for GridCount {
         if (2..=4096).contains(&v) {
             Ok(GridCount(v as u32))
         } else {
-            Err(value_error(TomlErr::WholeRange(2, 4096, v.to_string())))
+            Err(value_error(TomlErr::WholeRange(2, 4096, v)))
         }
     }
 }
@@ -100,8 +100,7 @@ impl<'de> Deserialize<'de> for Rgb {
     fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Rgb, D::Error> {
         let c = <[F; 3]>::deserialize(d)?;
         if c.iter().any(|x| !(0.0..=1.0).contains(&x.0)) {
-            let given = format!("[{}, {}, {}]", c[0].0, c[1].0, c[2].0);
-            return Err(value_error(TomlErr::Colour(given)));
+            return Err(value_error(TomlErr::Colour(c.map(|x| x.0))));
         }
         Ok(Rgb(c.map(|x| x.0 as f32)))
     }
@@ -501,10 +500,7 @@ pub fn check_size(w: u32, h: u32) -> Result<()> {
 fn eval_u32(n: &Num, field: &str) -> Result<u32> {
     let v = n.0.eval::<f64>().map_err(|m| Error::why(field, m))?;
     if v.fract() != 0.0 || !(1.0..=16384.0).contains(&v) {
-        return Err(Error::why(
-            field,
-            ErrMsg::MustBe(Bound::WholePixels, v.to_string()),
-        ));
+        return Err(Error::why(field, ErrMsg::MustBe(Bound::WholePixels, v)));
     }
     Ok(v as u32)
 }
@@ -554,7 +550,7 @@ fn camera_view(c: &CameraIn, p: &PerspectiveIn) -> Result<View> {
     if far <= near {
         return Err(Error::why(
             "perspective.far",
-            ErrMsg::MustBe(Bound::AboveNear(near.to_string()), far.to_string()),
+            ErrMsg::MustBe(Bound::AboveNear(near), far),
         ));
     }
     // Fails early on a degenerate camera (Pe = Pr, Vup ∥ view direction).
@@ -584,7 +580,7 @@ fn material(m: &MaterialIn, base: Material<f32>) -> Result<Material<f32>> {
             if x < 0.0 {
                 return Err(Error::why(
                     format!("material.{name}"),
-                    ErrMsg::MustBe(Bound::NotNegative, x.to_string()),
+                    ErrMsg::MustBe(Bound::NotNegative, x),
                 ));
             }
             *slot = x as f32;

@@ -1,8 +1,11 @@
 //! Why an input was refused, as data: every error a person can meet is one
-//! of these keys with its parameters (numbers as notation, `.` for the
-//! decimal point), and each language's module of `report::words` says it
+//! of these keys with its parameters (numbers as numbers, written by the
+//! words in the language's number style; an expression or a text as it
+//! was typed), and each language's module of `report::words` says it
 //! (`ErrorWords`, one exhaustive match per key enum). The field at fault is
 //! not here: `Error` holds it, as the flag or key is spelled.
+
+use super::Fixed;
 
 /// Why a number expression (a flag, a file value, an answer) or a plane's
 /// height formula could not be read or evaluated.
@@ -185,7 +188,7 @@ impl IoWhy {
 }
 
 /// A bound a value must keep, for "must be …, got X".
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum Bound {
     /// A number ≥ 0 (material constants).
@@ -206,7 +209,7 @@ pub enum Bound {
     /// A whole number of pixels.
     WholePixels,
     /// Greater than near (its value).
-    AboveNear(String),
+    AboveNear(f64),
 }
 
 /// Something given twice where once is wanted.
@@ -335,34 +338,34 @@ pub enum ClapErr {
 }
 
 /// Why an input was refused.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(test, derive(strum::EnumIter, Default))]
 pub enum ErrMsg {
     /// A number that cannot be read or evaluated.
     Num(NumErr),
     /// "must be …, got X".
-    MustBe(Bound, String),
+    MustBe(Bound, f64),
     /// Given twice.
     Twice(Twice),
     /// A colour channel outside [0, 1]: channel, value.
-    Channel(Channel, String),
+    Channel(Channel, f64),
     /// Attenuation a0, a1, a2 negative or all 0.
-    Attenuation(String, String, String),
+    Attenuation(f64, f64, f64),
     /// Spot cones not 0 ≤ theta ≤ phi ≤ 180°: theta, phi.
-    Cones(String, String),
+    Cones(f64, f64),
     /// The view plane z = 0 through the centre of projection at the origin.
     #[cfg_attr(test, default)]
     PlaneThroughOrigin,
     /// The view plane z = zvp through the centre of projection.
-    PlaneThroughCop(String),
+    PlaneThroughCop(f64),
     /// A point's image too large for a precision: point, precision.
     ImageTooLarge(String, String),
     /// The viewport not positive: width, height.
-    Viewport(String, String),
+    Viewport(f64, f64),
     /// v = n × u vanished.
     VVanished,
     /// Pe − Pr too large for a precision: Pe − Pr, precision.
-    EyeLookTooLarge(String, String),
+    EyeLookTooLarge([f64; 3], String),
     /// The view matrix's translation too large for a precision.
     TranslationTooLarge(String),
     /// A point's eye coordinates too large: point, precision.
@@ -502,8 +505,8 @@ pub enum ErrMsg {
     /// `--split-mb` with a format that writes no quiz file.
     SplitNotQuiz,
     /// One question of a quiz larger than `--split-mb` allows: the
-    /// question's name, its size and the limit (MB, `.` decimals).
-    QuestionTooLarge(String, String, String),
+    /// question's name, its size and the limit (MB, 3 decimals).
+    QuestionTooLarge(String, Fixed, Fixed),
     /// Problem and answers both from standard input.
     BothStdin,
     /// No `[printed]` table: the file.
@@ -575,7 +578,7 @@ pub enum ErrMsg {
 }
 
 /// A TOML file's error, by kind (the field and place are beside it).
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(test, derive(strum::EnumIter))]
 pub enum TomlErr {
     /// A key the table does not take: the key, the keys it takes.
@@ -596,11 +599,11 @@ pub enum TomlErr {
     /// A number that cannot be read.
     Num(NumErr),
     /// A value out of its bound: the bound, the value given.
-    MustBe(Bound, String),
+    MustBe(Bound, f64),
     /// A whole number out of a range: lowest, highest, the value given.
-    WholeRange(i64, i64, String),
+    WholeRange(i64, i64, i64),
     /// A colour component out of [0, 1]: the colour given.
-    Colour(String),
+    Colour([f64; 3]),
     /// A syntax error, as the TOML reader says it.
     Syntax(String),
 }

@@ -102,26 +102,71 @@ fn scientific(m: f64, e: i64, digits: usize) -> String {
 
 /// One number for people: `−√2/60 ≈ −0.02357`, `1/50 = 0.02`, `5`,
 /// `≈ 0.4142` (an approximation in an exact run), `0.4142`; decimals with
-/// `digits` significant digits. An exact value is never written `= 0`
-/// unless it is 0: beyond the doubles it is its exact form, or, when that
-/// is too long to help, `≈` its decimal (`≈ 1.567e−5283`).
-pub fn shown(s: &Shown, digits: usize, exact_mode: bool) -> String {
-    let dec = decimal(s, digits);
+/// `digits` significant digits and the decimal mark `mark` (`0,02`). An
+/// exact value is never written `= 0` unless it is 0: beyond the doubles
+/// it is its exact form, or, when that is too long to help, `≈` its
+/// decimal (`≈ 1.567e−5283`).
+pub fn shown(s: &Shown, digits: usize, exact_mode: bool, mark: char) -> String {
+    let dec = decimal_in(s, digits, mark).replace('-', "−");
     let approx = is_approx(s, digits, exact_mode);
     match &s.pretty {
-        Some(p) if is_plain_decimal(p) => p.replace('-', "−"),
+        Some(p) if is_plain_decimal(p) => form(&p.replace('-', "−"), mark),
         // Beyond the doubles (1/10^400 is 0 as a double, 10^400 is ∞): the
         // exact form alone, never a decimal that says `= 0`.
-        Some(p) if (s.value == 0.0 && p != "0") || !s.value.is_finite() => p.replace('-', "−"),
+        Some(p) if (s.value == 0.0 && p != "0") || !s.value.is_finite() => {
+            form(&p.replace('-', "−"), mark)
+        }
         Some(p) => {
             let sep = if approx { "≈" } else { "=" };
-            format!("{p} {sep} {}", dec.replace('-', "−"))
+            format!("{} {sep} {dec}", form(p, mark))
         }
-        None if s.beyond.is_some() || (exact_mode && approx) => {
-            format!("≈ {}", dec.replace('-', "−"))
-        }
-        None => dec.replace('-', "−"),
+        None if s.beyond.is_some() || (exact_mode && approx) => format!("≈ {dec}"),
+        None => dec,
     }
+}
+
+/// `text`, a number this module has just written (Rust writes the point),
+/// with the decimal mark `mark`.
+fn marked(text: String, mark: char) -> String {
+    match mark {
+        '.' => text,
+        _ => text.replace('.', mark.encode_utf8(&mut [0; 4])),
+    }
+}
+
+/// x as Rust writes a double, its shortest decimal that reads back to it
+/// (`0.1`, `1e-7` as `0.0000001`), with the decimal mark `mark`: a value
+/// given back as it was read.
+pub fn shortest(x: f64, mark: char) -> String {
+    marked(x.to_string(), mark)
+}
+
+/// [`fmt_dec`] with the decimal mark `mark`: `0.5` or `0,5`.
+pub fn fmt_dec_in(x: f64, digits: usize, mark: char) -> String {
+    marked(fmt_dec(x, digits), mark)
+}
+
+/// [`decimal`] with the decimal mark `mark`.
+pub fn decimal_in(s: &Shown, digits: usize, mark: char) -> String {
+    marked(decimal(s, digits), mark)
+}
+
+/// x with exactly `places` decimals and the decimal mark `mark` (`12.35`
+/// or `12,35` for 12.345 with 2).
+pub fn fixed(x: f64, places: usize, mark: char) -> String {
+    marked(format!("{x:.places$}"), mark)
+}
+
+/// x in exponent notation with `places` decimals of its mantissa and the
+/// decimal mark `mark` (`1.000e-9`, `1,000e-9`).
+pub fn exponent(x: f64, places: usize, mark: char) -> String {
+    marked(format!("{x:.places$e}"), mark)
+}
+
+/// An exact form for people (`−√2/60`, `0.5` → `0,5`) with the decimal
+/// mark `mark` in its decimals.
+pub fn form(p: &str, mark: char) -> String {
+    marked(p.to_string(), mark)
 }
 
 #[cfg(test)]
@@ -149,14 +194,14 @@ mod tests {
             pretty: Some("√3/30000".into()),
             beyond: None,
         };
-        assert_eq!(shown(&tiny, 4, true), "√3/30000");
+        assert_eq!(shown(&tiny, 4, true, '.'), "√3/30000");
         let zero = Shown {
             value: 0.0,
             exact: Some("0".into()),
             pretty: Some("0".into()),
             beyond: None,
         };
-        assert_eq!(shown(&zero, 4, true), "0");
+        assert_eq!(shown(&zero, 4, true, '.'), "0");
     }
 
     #[test]
@@ -169,7 +214,7 @@ mod tests {
             pretty: None,
             beyond: Some((5.3621, -529)),
         };
-        assert_eq!(shown(&tiny, 4, true), "≈ 5.362e−529");
+        assert_eq!(shown(&tiny, 4, true, '.'), "≈ 5.362e−529");
         // A mantissa that rounds up carries into the exponent.
         assert_eq!(scientific(9.99996, -10, 4), "1e-9");
         assert_eq!(scientific(-2.5, 400, 4), "-2.5e400");
@@ -183,8 +228,28 @@ mod tests {
             pretty: None,
             beyond: None,
         };
-        assert_eq!(shown(&under, 4, true), "≈ 0");
+        assert_eq!(shown(&under, 4, true, '.'), "≈ 0");
         // At f64 a zero is the double 0.
-        assert_eq!(shown(&under, 4, false), "0");
+        assert_eq!(shown(&under, 4, false, '.'), "0");
+    }
+
+    #[test]
+    fn numbers_are_written_with_the_mark_given() {
+        // −√2/60 = −0.0235702…, 4 digits: −0.02357; the exact form keeps
+        // its own digits and takes the mark only in a decimal (−0.5).
+        let s = Shown {
+            value: -(2f64.sqrt()) / 60.0,
+            exact: Some("-sqrt(2)/60".into()),
+            pretty: Some("−√2/60".into()),
+            beyond: None,
+        };
+        assert_eq!(shown(&s, 4, true, ','), "−√2/60 ≈ −0,02357");
+        assert_eq!(shown(&s, 4, true, '.'), "−√2/60 ≈ −0.02357");
+        assert_eq!(form("−0.5", ','), "−0,5");
+        assert_eq!(fmt_dec_in(1.5e-7, 3, ','), "1,5e-7");
+        // 12.3456 to two decimals: 12.35 (the third decimal, 5, rounds up)
+        assert_eq!(fixed(12.3456, 2, ','), "12,35");
+        assert_eq!(fixed(12.5, 1, '.'), "12.5");
+        assert_eq!(exponent(1e-9, 3, ','), "1,000e-9");
     }
 }

@@ -50,22 +50,8 @@ impl Precision {
     }
 }
 
-/// A number shown to the user: its value (at the precision it was computed)
-/// and, where known, an exact form.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Shown {
-    /// The value; for f32 results, the f64 nearest the f32's shortest decimal,
-    /// so that it prints as the f32 does and reads back to the same f32.
-    pub value: f64,
-    /// ASCII exact form (`-sqrt(2)/60`), `None` when the value is not exact.
-    pub exact: Option<String>,
-    /// Unicode exact form (`−√2/60`) for people.
-    pub pretty: Option<String>,
-    /// An exact value beyond the doubles (1/10^400, whose nearest double
-    /// is 0): its decimal as a mantissa in [1, 10) and a power of ten, so
-    /// that it is shown as `≈ 1e−400`, never as 0.
-    pub beyond: Option<(f64, i64)>,
-}
+/// A number shown to the user (defined with the messages that carry it).
+pub use crate::msg::Shown;
 
 /// The truth value of a comparison, one per lane: `bool` for a number of
 /// one value, whose `any` and `all` are the value itself.

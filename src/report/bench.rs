@@ -4,30 +4,31 @@
 use crate::bench::accuracy::{self, Inputs};
 use crate::bench::Row;
 use crate::num::Precision;
+use crate::report::lang::NumStyle;
 use comfy_table::{presets, Cell, CellAlignment, Table};
 use serde_json::{json, Value};
 
-/// A time for people: `12.3 ns`, `4.56 µs`, `7.89 ms`.
-pub fn fmt_time(ns: f64) -> String {
+/// A time for people in the style `nums`: `12.3 ns`, `4.56 µs`, `7,89 ms`.
+pub fn fmt_time(ns: f64, nums: NumStyle) -> String {
     if ns < 1e3 {
-        format!("{ns:.1} ns")
+        format!("{} ns", nums.fixed(ns, 1))
     } else if ns < 1e6 {
-        format!("{:.2} µs", ns / 1e3)
+        format!("{} µs", nums.fixed(ns / 1e3, 2))
     } else {
-        format!("{:.2} ms", ns / 1e6)
+        format!("{} ms", nums.fixed(ns / 1e6, 2))
     }
 }
 
-/// An error in ulps for people.
-pub fn fmt_ulps(x: f64) -> String {
+/// An error in ulps for people in the style `nums`.
+pub fn fmt_ulps(x: f64, nums: NumStyle) -> String {
     if x.is_infinite() {
         "inf".into()
     } else if x >= 1e6 {
-        format!("{x:.2e}")
+        nums.exponent(x, 2)
     } else if x >= 10.0 {
-        format!("{x:.0}")
+        nums.fixed(x, 0)
     } else {
-        format!("{x:.2}")
+        nums.fixed(x, 2)
     }
 }
 
@@ -35,6 +36,8 @@ pub fn fmt_ulps(x: f64) -> String {
 pub fn table(inp: &Inputs, rows: &[Row], lang: crate::report::lang::Lang) -> String {
     use crate::msg::BenchWord as B;
     let w = |k: B| crate::report::words::of(lang).bench(k);
+    // numbers with the language's decimal mark (`56,99 ms` in Indonesian)
+    let nums = crate::report::words::of(lang).nums();
     let mut t = Table::new();
     t.load_preset(presets::UTF8_FULL_CONDENSED);
     t.set_header(
@@ -51,11 +54,7 @@ pub fn table(inp: &Inputs, rows: &[Row], lang: crate::report::lang::Lang) -> Str
         .map(w),
     );
     for r in rows {
-        // Numbers with the language's decimal mark (`56,99 ms` in Indonesian).
-        let right = |s: String| {
-            Cell::new(crate::report::words::of(lang).nums().number(&s))
-                .set_alignment(CellAlignment::Right)
-        };
+        let right = |s: String| Cell::new(s).set_alignment(CellAlignment::Right);
         let (tmax, tmed) = r.target_max_median();
         let (wmax, _) = accuracy::max_median(&r.errors.wide);
         let exact = r.precision == Precision::Exact;
@@ -73,10 +72,22 @@ pub fn table(inp: &Inputs, rows: &[Row], lang: crate::report::lang::Lang) -> Str
             Cell::new(r.stage.name()),
             Cell::new(r.precision.name()),
             right(inp.len(r.stage).to_string()),
-            right(fmt_time(r.ns_per_op)),
-            if exact { dash() } else { right(fmt_ulps(tmax)) },
-            if exact { dash() } else { right(fmt_ulps(tmed)) },
-            if exact { dash() } else { right(fmt_ulps(wmax)) },
+            right(fmt_time(r.ns_per_op, nums)),
+            if exact {
+                dash()
+            } else {
+                right(fmt_ulps(tmax, nums))
+            },
+            if exact {
+                dash()
+            } else {
+                right(fmt_ulps(tmed, nums))
+            },
+            if exact {
+                dash()
+            } else {
+                right(fmt_ulps(wmax, nums))
+            },
             Cell::new(verdict),
         ]);
     }

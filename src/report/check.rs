@@ -158,7 +158,7 @@ fn marks_cell(a: &Marked, style: &Style) -> String {
 
 /// Marks as shown: `2`, `0.5` (`0,5`).
 fn marks(x: f64, style: &Style) -> String {
-    style.dec(crate::report::fmt_dec(x, 4))
+    style.nums.dec(x, 4)
 }
 
 /// The marks the working earned for values that are not right.
@@ -245,7 +245,7 @@ fn diagnoses_text(m: &Marking, style: &Style) -> String {
 /// The score line.
 fn score_text(m: &Marking, style: &Style) -> String {
     let c = |v| m.count(v);
-    let score = style.dec(crate::report::fmt_dec(m.score(), 4));
+    let score = style.nums.dec(m.score(), 4);
     let said = words::of(style.lang);
     let counts: Vec<String> = (Verdict::words().into_iter())
         .map(|v| format!("{} {}", c(v), said.verdict(v)))
@@ -273,5 +273,5 @@ fn score_text(m: &Marking, style: &Style) -> String {
 /// `100%`, `88.9%` (`88,9%`).
 pub fn percent(m: &Marking, style: &Style) -> String {
     let p = crate::report::words::report::percent(m.score(), m.total());
-    format!("{}%", style.dec(crate::report::fmt_dec(p, 6)))
+    format!("{}%", style.nums.dec(p, 6))
 }

@@ -131,11 +131,10 @@ fn matrix_row(st: &Style, r: &Val) -> String {
         .iter()
         .map(|c| {
             let text = match c {
-                Val::Num(s) => st.dec(
-                    s.pretty
-                        .clone()
-                        .unwrap_or_else(|| crate::num::format::decimal(s, st.digits)),
-                ),
+                Val::Num(s) => match &s.pretty {
+                    Some(p) => st.nums.form(p),
+                    None => crate::num::format::decimal_in(s, st.digits, st.nums.mark),
+                },
                 other => st.val_inline(other),
             };
             format!("<mtd>{}</mtd>", mathml::row(&text))

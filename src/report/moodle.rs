@@ -228,7 +228,7 @@ pub fn instructions(kinds: &Typing, q: &Quiz, lang: Lang, mark: Decimal) -> Stri
     let mut s = w(Q::Instructions {
         figures: q.figures,
         // the tolerance as students type numbers
-        pct: mark.nums().number(&number(q.rel * 100.0)),
+        pct: number_in(q.rel * 100.0, mark.nums().mark),
         mark,
         pixels: kinds.pixels,
     });
@@ -501,11 +501,16 @@ pub fn cdata(s: &str) -> String {
 /// A number for Moodle: a plain ASCII decimal (no exponent, `.` as the
 /// decimal mark) with 12 significant figures.
 pub fn number(x: f64) -> String {
+    number_in(x, '.')
+}
+
+/// [`number`] with the decimal mark `mark` (a number in a quiz's words).
+fn number_in(x: f64, mark: char) -> String {
     if x == 0.0 || !x.is_finite() {
         return "0".into();
     }
     let (digits, exp) = sci(x.abs(), 11);
-    plain(x < 0.0, &digits, exp)
+    plain(x < 0.0, &digits, exp, mark)
 }
 
 /// A tolerance t as a plain decimal rounded up to three significant
@@ -519,10 +524,10 @@ pub fn tolerance_text(t: f64) -> String {
     let shown: f64 = format!("{digits}e{exp}").parse().unwrap_or(0.0);
     // (rounding noise of the value, a relative 1e-9, does not round up)
     if shown >= t * (1.0 - 1e-9) {
-        return plain(false, &digits, exp);
+        return plain(false, &digits, exp, '.');
     }
     let up = digits.parse::<u64>().unwrap_or(0) + 1;
-    plain(false, &up.to_string(), exp)
+    plain(false, &up.to_string(), exp, '.')
 }
 
 /// x > 0 as an integer of 1 + `after` digits and the power of ten it is
@@ -534,8 +539,9 @@ fn sci(x: f64, after: usize) -> (String, i32) {
     (mant.replace('.', ""), e - after as i32)
 }
 
-/// The plain decimal of ±digits·10^exp, without trailing zeros.
-fn plain(neg: bool, digits: &str, exp: i32) -> String {
+/// The plain decimal of ±digits·10^exp, without trailing zeros, with the
+/// decimal mark `mark`.
+fn plain(neg: bool, digits: &str, exp: i32, mark: char) -> String {
     let mut s = if exp >= 0 {
         format!("{digits}{}", "0".repeat(exp as usize))
     } else {
@@ -549,10 +555,10 @@ fn plain(neg: bool, digits: &str, exp: i32) -> String {
         if frac.is_empty() {
             int.to_string()
         } else {
-            format!("{int}.{frac}")
+            format!("{int}{mark}{frac}")
         }
     };
-    if neg && s.chars().any(|c| c != '0' && c != '.') {
+    if neg && s.chars().any(|c| c != '0' && c != mark) {
         s.insert(0, '-');
     }
     s

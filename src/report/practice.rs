@@ -7,10 +7,10 @@ use crate::msg::PracticeWord as P;
 use crate::msg::{DocWord, Msg};
 use crate::num::Real;
 use crate::report::json::{exact_json, step_json, value_json};
-use crate::report::lang::Lang;
+use crate::report::lang::{Lang, NumStyle};
 use crate::report::mistakes::mistake_text;
 use crate::report::words;
-use crate::report::{fmt_dec, Style};
+use crate::report::Style;
 use crate::stages::trace::{Step, Val};
 use crate::tutor::check::Verdict;
 use crate::tutor::key::{self, Field, Key};
@@ -308,23 +308,25 @@ pub fn read_as(r: &Read, style: &Style) -> String {
         Read::None => return style.val_inline(&Val::Null),
         _ => {}
     }
-    fn en(r: &Read) -> String {
-        match r {
-            Read::Num(n) if n.last_digit.is_some() => n.expr.to_string(),
-            Read::Num(n) => n
-                .expr
-                .eval::<Real>()
-                .ok()
-                .and_then(|x| x.exact_pretty())
-                .unwrap_or_else(|| format!("≈ {}", fmt_dec(n.value, 6))),
-            Read::List(items) => {
-                format!("({})", items.iter().map(en).collect::<Vec<_>>().join(", "))
-            }
-            Read::Word(w) => w.clone(),
-            Read::None => "none".to_string(),
+    read_in(r, style.nums)
+}
+
+/// An answer read, its numbers in the style `nums`: a decimal as written,
+/// another number by its exact form (else `≈` its decimal), a list in
+/// parentheses, a code or word as typed.
+fn read_in(r: &Read, nums: NumStyle) -> String {
+    match r {
+        Read::Num(n) if n.last_digit.is_some() => nums.form(&n.expr.to_string().replace('-', "−")),
+        Read::Num(n) => match n.expr.eval::<Real>().ok().and_then(|x| x.exact_pretty()) {
+            Some(p) => nums.form(&p.replace('-', "−")),
+            None => format!("≈ {}", nums.dec(n.value, 6).replace('-', "−")),
+        },
+        Read::List(items) => {
+            nums.tuple(&items.iter().map(|x| read_in(x, nums)).collect::<Vec<_>>())
         }
+        Read::Word(w) => w.clone(),
+        Read::None => "none".to_string(),
     }
-    style.dec(en(r).replace('-', "−"))
 }
 
 /// Whether the reading says nothing the line typed does not: the same

@@ -5,6 +5,7 @@
 use super::lang::Lang;
 use super::words;
 use crate::input::scene::Shading;
+use crate::msg::Fixed;
 use crate::msg::StatWord;
 pub use crate::msg::{PerPixel, Summary};
 use crate::render::Stats;
@@ -18,9 +19,9 @@ pub fn summary(run: &RenderRun) -> Vec<(Summary, Val)> {
     let count = |n: u64| Val::Num(crate::num::Scalar::shown(&(n as f64)));
     let t = &run.times;
     let time = Val::said(crate::msg::Said::FrameTime(
-        format!("{:.2}", t.frame),
-        format!("{:.1}", run.mpixels_per_s),
-        format!("{:.2}", t.png),
+        Fixed(t.frame, 2),
+        Fixed(run.mpixels_per_s, 1),
+        Fixed(t.png, 2),
     ));
     vec![
         (Summary::Image, Val::text(run.output.clone())),
@@ -121,7 +122,7 @@ fn times(t: &Times, lang: Lang) -> Vec<Row> {
         (
             depth,
             k,
-            words::of(lang).nums().number(&format!("{ms:.2} ms")),
+            format!("{} ms", words::of(lang).nums().fixed(ms, 2)),
         )
     };
     vec![

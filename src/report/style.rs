@@ -58,11 +58,6 @@ impl Style {
     pub fn nums(&self) -> NumStyle {
         self.nums
     }
-    /// Values formatted the English way written in this style's language
-    /// ([`NumStyle::values`]): `(0.8, 0.6, 0)` → `(0,8; 0,6; 0)` in Indonesian.
-    pub fn dec(&self, s: String) -> String {
-        self.nums().values(&s)
-    }
 }
 
 impl Style {
@@ -70,24 +65,17 @@ impl Style {
     /// file), in the text's notation and this style's numbers: `(0, -1,
     /// -6/sqrt(2))` → `(0; −1; −6/√2)` in Indonesian.
     pub fn printed(&self, typed: &str) -> String {
-        self.dec(notation(typed))
+        notation(typed, self.nums)
     }
 
     /// One number: `−√2/60 ≈ −0.02357`, `1/50 = 0.02`, `5`, `≈ 0.4142`, `0.4142`.
     pub fn num(&self, s: &Shown) -> String {
-        self.dec(crate::num::format::shown(s, self.digits, self.exact_mode))
+        self.nums.shown(s, self.digits, self.exact_mode)
     }
 
     /// A vector or list: `(√2/2, 0, √2/2) ≈ (0.7071, 0, 0.7071)`.
     pub fn list(&self, items: &[Val]) -> String {
-        match items.iter().all(|v| matches!(v, Val::Num(_))) {
-            true => self.dec(self.list_en(items)),
-            false => self.list_en(items),
-        }
-    }
-
-    /// A list written the English way (numbers inside are converted by `dec`).
-    fn list_en(&self, items: &[Val]) -> String {
+        let sep = self.nums.sep;
         let nums: Option<Vec<&Shown>> = items
             .iter()
             .map(|v| if let Val::Num(s) = v { Some(s) } else { None })
@@ -102,7 +90,10 @@ impl Style {
                 });
                 let decs: Vec<String> = ns
                     .iter()
-                    .map(|s| crate::num::format::decimal(s, self.digits).replace('-', "−"))
+                    .map(|s| {
+                        crate::num::format::decimal_in(s, self.digits, self.nums.mark)
+                            .replace('-', "−")
+                    })
                     .collect();
                 let approx = ns
                     .iter()
@@ -117,25 +108,25 @@ impl Style {
                         .zip(&decs)
                         .map(|(s, d)| {
                             s.pretty
-                                .clone()
-                                .map(|p| p.replace('-', "−"))
+                                .as_deref()
+                                .map(|p| self.nums.form(&p.replace('-', "−")))
                                 .unwrap_or_else(|| format!("≈{d}"))
                         })
                         .collect();
                     if beyond {
                         // beyond the doubles: the exact forms alone
-                        return format!("({})", forms.join(", "));
+                        return format!("({})", forms.join(sep));
                     }
                     format!(
                         "({}) {} ({})",
-                        forms.join(", "),
+                        forms.join(sep),
                         if approx { "≈" } else { "=" },
-                        decs.join(", ")
+                        decs.join(sep)
                     )
                 } else if self.exact_mode && approx && ns.iter().any(|s| s.pretty.is_none()) {
-                    format!("≈ ({})", decs.join(", "))
+                    format!("≈ ({})", decs.join(sep))
                 } else {
-                    format!("({})", decs.join(", "))
+                    format!("({})", decs.join(sep))
                 }
             }
             // the items are written in this style already: the separator too
@@ -145,7 +136,7 @@ impl Style {
                     .iter()
                     .map(|v| self.val_inline(v))
                     .collect::<Vec<_>>()
-                    .join(self.nums().sep)
+                    .join(sep)
             ),
         }
     }
@@ -174,15 +165,22 @@ impl Style {
         for r in rows {
             if let Val::List(cells) = r {
                 t.add_row(cells.iter().map(|c| match c {
-                    Val::Num(s) => self.dec(match &s.pretty {
-                        Some(p) => p.replace('-', "−"),
-                        None => crate::num::format::decimal(s, self.digits).replace('-', "−"),
-                    }),
+                    Val::Num(s) => self.cell(s),
                     other => self.val_inline(other),
                 }));
             }
         }
         t.to_string()
+    }
+
+    /// A matrix cell: its exact form when it has one, else its decimal.
+    pub fn cell(&self, s: &Shown) -> String {
+        match &s.pretty {
+            Some(p) => self.nums.form(&p.replace('-', "−")),
+            None => {
+                crate::num::format::decimal_in(s, self.digits, self.nums.mark).replace('-', "−")
+            }
+        }
     }
 
     /// A step below its title: the formula, the values substituted, the
@@ -241,7 +239,7 @@ impl Style {
         let mut out = String::new();
         let pieces: Vec<&str> = s.form.split("{}").collect();
         for (i, piece) in pieces.iter().enumerate() {
-            out.push_str(&self.nums().separated(piece));
+            out.push_str(&piece.replace(Subst::SEP, self.nums.sep));
             let Some(a) = s.args.get(i).filter(|_| i + 1 < pieces.len()) else {
                 continue;
             };
@@ -268,19 +266,16 @@ impl Style {
     /// One value of a substitution (a vector in parentheses).
     fn operand(&self, v: &Val) -> String {
         match v {
-            Val::Num(s) => {
-                let dec = crate::num::format::decimal(s, self.digits);
-                let text = match &s.pretty {
-                    Some(p)
-                        if p.contains('√')
-                            || crate::num::format::is_approx(s, self.digits, false) =>
-                    {
-                        p.clone()
-                    }
-                    _ => dec,
-                };
-                self.dec(text.replace('-', "−"))
-            }
+            Val::Num(s) => match &s.pretty {
+                Some(p)
+                    if p.contains('√') || crate::num::format::is_approx(s, self.digits, false) =>
+                {
+                    self.nums.form(&p.replace('-', "−"))
+                }
+                _ => {
+                    crate::num::format::decimal_in(s, self.digits, self.nums.mark).replace('-', "−")
+                }
+            },
             Val::List(items) => {
                 let parts: Vec<String> = items.iter().map(|x| self.operand(x)).collect();
                 format!("({})", parts.join(self.nums().sep))
@@ -313,9 +308,9 @@ impl Style {
 
 /// An expression as a file writes it (`-6/sqrt(2)`, `(0.0067, -0.0283)`)
 /// in the text's notation, not simplified: `−6/√2`, roots, π, `·` and
-/// the minus sign; the decimal mark and separator are the style's
-/// ([`Style::printed`]).
-pub fn notation(typed: &str) -> String {
+/// the minus sign, and the decimal mark and separator of `nums` for the
+/// file's `.` and `, ` (`(0,0067; −0,0283)`) ([`Style::printed`]).
+pub fn notation(typed: &str, nums: NumStyle) -> String {
     let chars: Vec<char> = typed.chars().collect();
     let mut out = String::new();
     let mut i = 0;
@@ -340,7 +335,7 @@ pub fn notation(typed: &str) -> String {
                 let inner: String = chars[start + 1..i.saturating_sub(1).max(start + 1)]
                     .iter()
                     .collect();
-                let inner = notation(&inner);
+                let inner = notation(&inner, nums);
                 if inner.chars().all(|c| c.is_ascii_digit()) && !inner.is_empty() {
                     out.push_str(&format!("√{inner}"));
                 } else {
@@ -360,11 +355,16 @@ pub fn notation(typed: &str) -> String {
             i += 2;
             continue;
         }
-        out.push(match chars[i] {
-            '-' => '−',
-            '*' => '·',
-            c => c,
-        });
+        match chars[i] {
+            '-' => out.push('−'),
+            '*' => out.push('·'),
+            '.' => out.push(nums.mark),
+            ',' if chars.get(i + 1) == Some(&' ') => {
+                out.push_str(nums.sep);
+                i += 1;
+            }
+            c => out.push(c),
+        }
         i += 1;
     }
     out

@@ -90,7 +90,7 @@ pub fn basis<T: Scalar>(cam: &Camera<T>, tr: &mut impl Trace) -> Result<Basis<T>
     let ups = vec::scale(vup, &ku);
     let su = vec::cross(&ups, &ds);
     let (u, sun) = vec::normalize(&su)
-        .ok_or_else(|| Error::said("up", Msg::ErrUpParallel(fmt3(vup), fmt3(&d))))?;
+        .ok_or_else(|| Error::said("up", Msg::ErrUpParallel(f64s(vup), f64s(&d))))?;
     warn_near_parallel(&sun, &ups, &ds, tr);
     tr.step(|| u_step(vup, &n, &u));
 
@@ -142,10 +142,10 @@ fn view_direction<T: Scalar>(pe: &V3<T>, d: &V3<T>) -> Result<(V3<T>, T)> {
     if !vec::is_finite(d) {
         return Err(Error::why(
             "look",
-            crate::msg::ErrMsg::EyeLookTooLarge(fmt3(d), T::PRECISION.name().into()),
+            crate::msg::ErrMsg::EyeLookTooLarge(f64s(d), T::PRECISION.name().into()),
         ));
     }
-    vec::normalize(d).ok_or_else(|| Error::said("look", Msg::ErrSamePoint(fmt3(pe))))
+    vec::normalize(d).ok_or_else(|| Error::said("look", Msg::ErrSamePoint(f64s(pe))))
 }
 
 /// The step of the axis n.
@@ -443,10 +443,9 @@ fn refs<T>(a: &V3<T>) -> [&T; 3] {
     [&a[0], &a[1], &a[2]]
 }
 
-/// A vector written for an error message.
-pub fn fmt3<T: Scalar>(a: &V3<T>) -> String {
-    let s: Vec<String> = a.iter().map(|x| format!("{}", x.to_f64())).collect();
-    format!("({})", s.join(", "))
+/// A vector's components as doubles, for an error message.
+pub fn f64s<T: Scalar>(a: &V3<T>) -> [f64; 3] {
+    [0, 1, 2].map(|k| a[k].to_f64())
 }
 
 #[cfg(test)]

@@ -4,7 +4,7 @@
 //! an independent cross-check.
 
 use crate::error::{Error, Result};
-use crate::msg::{Msg, PixelMsg, Trivial};
+use crate::msg::{Compared, Msg, PixelMsg, Trivial};
 use crate::num::vec::{self, V3};
 use crate::num::Scalar;
 use crate::stages::trace::{Name, Step, Subst, Trace, Val};
@@ -27,8 +27,8 @@ impl<T: Scalar> ClipBox<T> {
                     "min",
                     Msg::ErrBoxInverted(
                         axis.to_string(),
-                        self.min[k].to_f64().to_string(),
-                        self.max[k].to_f64().to_string(),
+                        self.min[k].to_f64(),
+                        self.max[k].to_f64(),
                     ),
                 ));
             }
@@ -154,7 +154,7 @@ pub fn outcode_clip<T: Scalar>(c: &nalgebra::Vector4<T>, name: &str, tr: &mut im
             let (op, lim) = if is_max { (">", "w") } else { ("<", "−w") };
             let set = code & (1 << bit) != 0;
             let bound = if is_max { c[3].clone() } else { -c[3].clone() };
-            let values = format!("{} {op} {}", short(&c[axis]), short(&bound));
+            let values = Box::new(Compared(c[axis].shown(), op, bound.shown()));
             s = s.val(
                 Name::Bit(bit, side),
                 Val::said(crate::msg::Said::BitTest(
@@ -539,20 +539,13 @@ fn code_step<T: Scalar>(name: &str, b: &ClipBox<T>, p: &V3<T>, code: u8) -> Step
         };
         let set = code & (1 << bit) != 0;
         let test = format!("{a} {op} {a}{}", if is_max { "max" } else { "min" });
-        let values = format!("{} {op} {}", short(&p[axis]), short(lim));
+        let values = Box::new(Compared(p[axis].shown(), op, lim.shown()));
         s = s.val(
             Name::Bit(bit, side),
             Val::said(crate::msg::Said::BitTest(set, test, values)),
         );
     }
     s.res(Name::RegionCode, Val::text(code_str(code)))
-}
-
-/// A number for a one-line remark: its exact form, else a short decimal.
-fn short<T: Scalar>(x: &T) -> String {
-    let s = x.shown();
-    s.pretty
-        .unwrap_or_else(|| crate::num::format::fmt_dec(s.value, 6).replace('-', "−"))
 }
 
 /// Liang–Barsky: with Δ = P1 − P0, for each of the six pairs
@@ -660,12 +653,12 @@ fn lb_step<T: Scalar>(
         let d = Val::num(&w.delta[axis]);
         let sub = if is_max {
             Subst::new(
-                "({}, {} − {})",
+                "({}{,}{} − {})",
                 vec![d, Val::num(&w.b.max[axis]), Val::num(&w.p0[axis])],
             )
         } else {
             Subst::new(
-                "(−{}, {} − {})",
+                "(−{}{,}{} − {})",
                 vec![d, Val::num(&w.p0[axis]), Val::num(&w.b.min[axis])],
             )
         };
@@ -677,7 +670,7 @@ fn lb_step<T: Scalar>(
         }
     }
     let bound = |first: &str, args: Vec<Val>| {
-        let form = format!("{first}(0{})", ", {}/{}".repeat(args.len() / 2));
+        let form = format!("{first}(0{})", "{,}{}/{}".repeat(args.len() / 2));
         Subst::new(form, args)
     };
     let t1_form = bound("min", leaving);

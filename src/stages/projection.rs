@@ -38,7 +38,7 @@ impl<T: Scalar> Projection<T> {
             }
             Projection::General { zprp, zvp } if zprp == zvp => Err(Error::why(
                 "plane",
-                crate::msg::ErrMsg::PlaneThroughCop(zvp.to_f64().to_string()),
+                crate::msg::ErrMsg::PlaneThroughCop(zvp.to_f64()),
             )),
             _ => Ok(()),
         }
@@ -107,7 +107,7 @@ pub fn project<T: Scalar>(
                 .res(Name::Image(name.to_string()), Val::vec3(&r))
                 .sub(
                     Name::Image(name.to_string()),
-                    Subst::new("({}, {}, 0)", vec![Val::num(x), Val::num(y)]),
+                    Subst::new("({}{,}{}{,}0)", vec![Val::num(x), Val::num(y)]),
                 )
         });
         return Ok(r);
@@ -149,7 +149,7 @@ pub fn project<T: Scalar>(
             .res(Name::Image(name.to_string()), Val::vec3(&r))
             .sub(
                 Name::Image(name.to_string()),
-                Subst::new("({}·{}, {}·{}, {})", image),
+                Subst::new("({}·{}{,}{}·{}{,}{})", image),
             );
         if behind {
             s = s.note(Msg::BehindCentre);
@@ -189,7 +189,7 @@ fn perspective_form<T: Scalar>(proj: &Projection<T>, name: &str, z: &T) -> Resul
             if den.is_zero_value() {
                 return Err(Error::said(
                     format!("points.{name}"),
-                    Msg::ErrCopPlane(name.to_string(), Some(zprp.to_f64().to_string())),
+                    Msg::ErrCopPlane(name.to_string(), Some(zprp.to_f64())),
                 ));
             }
             (

@@ -244,13 +244,18 @@ impl Val {
 /// they help, a negative value in parentheses after an operator).
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct Subst {
-    /// Notation with a `{}` for each value.
+    /// Notation with a `{}` for each value and [`Subst::SEP`] for the
+    /// separator between a vector's or a function's arguments.
     pub form: String,
     /// The values, in order.
     pub args: Vec<Val>,
 }
 
 impl Subst {
+    /// The separator between the components of a vector or the arguments
+    /// of a function in a form (`max({}{,}0)`), written as the number style
+    /// separates them: `max(0.8, 0)`, `max(0,8; 0)`.
+    pub const SEP: &'static str = "{,}";
     /// `form` with `args` put in its `{}`s.
     pub fn new(form: impl Into<String>, args: Vec<Val>) -> Subst {
         Subst {
@@ -260,7 +265,7 @@ impl Subst {
     }
     /// a − b by components: `(a₀ − b₀, a₁ − b₁, a₂ − b₂)`.
     pub fn difference<T: Scalar>(a: &V3<T>, b: &V3<T>) -> Subst {
-        Subst::new("({} − {}, {} − {}, {} − {})", pairs(a, b))
+        Subst::new("({} − {}{,}{} − {}{,}{} − {})", pairs(a, b))
     }
     /// a·b by components: `a₀·b₀ + a₁·b₁ + a₂·b₂`.
     pub fn dot<T: Scalar>(a: &V3<T>, b: &V3<T>) -> Subst {
@@ -273,7 +278,7 @@ impl Subst {
             .iter()
             .flat_map(|&(i, j)| [Val::num(&a[i]), Val::num(&b[j])])
             .collect();
-        Subst::new("({}·{} − {}·{}, {}·{} − {}·{}, {}·{} − {}·{})", args)
+        Subst::new("({}·{} − {}·{}{,}{}·{} − {}·{}{,}{}·{} − {}·{})", args)
     }
     /// a/b (a vector or a number over a number).
     pub fn quotient(a: Val, b: Val) -> Subst {

@@ -2,7 +2,7 @@
 //! far-plane window), and the viewport mapping from the window to pixels.
 
 use crate::error::{Error, Result};
-use crate::msg::{Msg, PixelMsg};
+use crate::msg::{Given, Msg, PixelMsg};
 use crate::num::Scalar;
 use crate::stages::trace::{Name, Step, Subst, Trace, Val};
 
@@ -49,10 +49,7 @@ impl<T> Window<T> {
 /// Checks fovy (degrees) ∈ (0°, 180°), aspect > 0 and near > 0.
 pub fn validate<T: Scalar>(fovy_deg: &T, aspect: &T, near: &T) -> Result<()> {
     if !(*fovy_deg > T::zero() && *fovy_deg < T::from_i64(180)) {
-        return Err(Error::said(
-            "fovy",
-            Msg::ErrFovy(fovy_deg.to_f64().to_string()),
-        ));
+        return Err(Error::said("fovy", Msg::ErrFovy(fovy_deg.to_f64())));
     }
     if *aspect <= T::zero() {
         return Err(Error::said("aspect", Msg::ErrAspect(got(aspect))));
@@ -65,16 +62,12 @@ pub fn validate<T: Scalar>(fovy_deg: &T, aspect: &T, near: &T) -> Result<()> {
 
 /// A refused value as the message shows it: a float zero says that a tiny
 /// positive number written (1e-400) is 0 at that precision too.
-fn got<T: Scalar>(x: &T) -> String {
+fn got<T: Scalar>(x: &T) -> Given {
     let v = x.to_f64();
     match T::PRECISION {
-        crate::num::Precision::F64 if v == 0.0 => {
-            "0 (at f64 precision: a positive number below about 5e-324 is 0 too)".to_string()
-        }
-        crate::num::Precision::F32 if v == 0.0 => {
-            "0 (at f32 precision: a positive number below about 1e-45 is 0 too)".to_string()
-        }
-        _ => format!("{v}"),
+        crate::num::Precision::F64 if v == 0.0 => Given::ZeroAt("f64", "5e-324"),
+        crate::num::Precision::F32 if v == 0.0 => Given::ZeroAt("f32", "1e-45"),
+        _ => Given::Value(v),
     }
 }
 
@@ -169,7 +162,7 @@ pub fn validate_viewport<T: Scalar>(w: &T, h: &T) -> Result<()> {
     if *w <= T::zero() || *h <= T::zero() {
         return Err(Error::why(
             "viewport",
-            crate::msg::ErrMsg::Viewport(w.to_f64().to_string(), h.to_f64().to_string()),
+            crate::msg::ErrMsg::Viewport(w.to_f64(), h.to_f64()),
         ));
     }
     Ok(())

@@ -189,8 +189,7 @@ pub fn window_run<T: Scalar>(
     let mut r = window_result(&w, false);
     if let Some(f) = far {
         if f <= near {
-            let near = near.to_f64().to_string();
-            let got = f.to_f64().to_string();
+            let (near, got) = (near.to_f64(), f.to_f64());
             return Err(Error::why(
                 "far",
                 ErrMsg::MustBe(Bound::AboveNear(near), got),
@@ -324,7 +323,7 @@ mod tests {
         assert_eq!(e.field, "far");
         assert_eq!(
             e.message,
-            crate::msg::Msg::Err(ErrMsg::MustBe(Bound::AboveNear("1".into()), "1".into()))
+            crate::msg::Msg::Err(ErrMsg::MustBe(Bound::AboveNear(1.0), 1.0))
         );
     }
 }

@@ -653,7 +653,7 @@ fn point_inside_step<T: Scalar>(
         let mut args = [&w.left, &q[0], &w.right, &w.bottom, &q[1], &w.top]
             .map(Val::num)
             .to_vec();
-        let mut form = "{} ≤ {} ≤ {},  {} ≤ {} ≤ {},  ".to_string();
+        let mut form = "{} ≤ {} ≤ {}{,} {} ≤ {} ≤ {}{,} ".to_string();
         if let Some(f) = far {
             form.push_str("{} ≤ ");
             args.push(Val::num(&-f.clone()));

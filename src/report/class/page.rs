@@ -24,7 +24,7 @@ fn num(x: Option<f64>, lang: Lang) -> String {
         let x = if x.abs() < 0.005 { 0.0 } else { x };
         crate::report::words::of(lang)
             .nums()
-            .number(&format!("{x:.2}"))
+            .fixed(x, 2)
             .replacen('-', "−", 1)
     })
 }
@@ -366,9 +366,9 @@ fn variant_cell(doc: Doc, c: &VariantProblem, lang: Lang) -> String {
 fn p_words(p: f64, lang: Lang) -> String {
     let nums = crate::report::words::of(lang).nums();
     if p < 0.001 {
-        format!("p < {}", nums.number("0.001"))
+        format!("p < {}", nums.fixed(0.001, 3))
     } else {
-        format!("p = {}", nums.number(&format!("{p:.3}")))
+        format!("p = {}", nums.fixed(p, 3))
     }
 }
 

@@ -15,6 +15,7 @@ pub use crates::{
 use crate::msg::{
     Bound, Channel, ClapErr, ErrMsg, IoWhy, NumErr, ObjWhy, Thing, TomlErr, Twice, Want,
 };
+use crate::report::lang::NumStyle;
 
 /// The words of the error keys ([`ErrMsg`] and its families), in one
 /// language. Each method is one exhaustive match over its key.
@@ -28,7 +29,7 @@ pub trait ErrorWords {
     /// A TOML file's error.
     fn toml(&self, e: &TomlErr) -> String;
     /// "must be …, got X".
-    fn must_be(&self, b: &Bound, got: &str) -> String;
+    fn must_be(&self, b: &Bound, got: f64) -> String;
     /// Something given twice.
     fn twice(&self, t: Twice) -> &'static str;
     /// The system's reason a file could not be read or written.
@@ -53,6 +54,12 @@ pub trait ErrorWords {
     fn expect_word(&self, w: ExpectWord) -> &'static str;
     /// A phrase of serde's (`a sequence`, `an integer`).
     fn serde_word(&self, w: SerdeWord) -> &'static str;
+}
+
+/// Values given back as they were read in brackets, as a TOML array:
+/// `[0.5, 1.2, 0]`, `[0,5; 1,2; 0]`.
+pub fn bracketed(v: [f64; 3], nums: NumStyle) -> String {
+    format!("[{}]", v.map(|x| nums.shortest(x)).join(nums.sep))
 }
 
 /// `dir/` for a path that is a folder (`dir/` itself when it ends in `/`),

@@ -175,7 +175,7 @@ mod tests {
             // the known points, when there are some
             Msg::ErrCopPlane(p, _) => vec![
                 Msg::ErrCopPlane(p.clone(), None),
-                Msg::ErrCopPlane(p, Some("2".into())),
+                Msg::ErrCopPlane(p, Some(2.5)),
             ],
             Msg::ErrUnknownPoint(p, _) => vec![
                 Msg::ErrUnknownPoint(p.clone(), None),
@@ -207,7 +207,12 @@ mod tests {
         let mut v: Vec<Said> = Said::iter()
             .filter(|s| !matches!(s, Said::Status(_)))
             .collect();
-        v.push(Said::BitTest(true, "x > xmax".into(), "4.5 > 3".into()));
+        let n = |value: f64| crate::msg::Shown {
+            value,
+            ..Default::default()
+        };
+        let test = crate::msg::Compared(n(4.5), ">", n(3.0));
+        v.push(Said::BitTest(true, "x > xmax".into(), Box::new(test)));
         let codes = crate::stages::clip::Status::iter().map(|s| s.as_str());
         v.extend(codes.map(|c| Said::Status(c.into())));
         v.into_iter().map(Msg::Said).collect()

@@ -3,7 +3,7 @@
 //! words of a message are put together (a located message, a list of
 //! parts, a capital first letter), written once for every language.
 
-use crate::msg::{Erratum, LightPart, Msg, Printed, Term};
+use crate::msg::{Erratum, Given, LightPart, Msg, Printed, Term};
 use crate::report::lang::{NumStyle, MAX_MESSAGE};
 
 /// The words of the messages themselves ([`Msg`]) and the number style
@@ -69,10 +69,36 @@ pub fn capitalised(s: &str) -> String {
         .unwrap_or_default()
 }
 
+/// A value given that must be positive, in the style `nums` (`0,5`); the
+/// 0 that a tiny positive number is at a float precision says so, in
+/// English in every language as it always has (its Indonesian words are
+/// still to be written).
+pub fn given(g: Given, nums: NumStyle) -> String {
+    match g {
+        Given::Value(v) => nums.shortest(v),
+        Given::ZeroAt(p, least) => {
+            format!("0 (at {p} precision: a positive number below about {least} is 0 too)")
+        }
+    }
+}
+
+/// The text's constants (ka = 0.4, kd = 0.6, ks = 0.7, n = 4, white
+/// specular) in the style `nums`: `ks_note` after ks's value, the
+/// specular colour said as `white`.
+pub fn material_text(nums: NumStyle, ks_note: &str, white: &str) -> String {
+    let (s, d) = (nums.sep, |x: f64| nums.dec(x, 4));
+    format!(
+        "ka = {}{s}kd = {}{s}ks = {}{ks_note}{s}n = 4{s}{white}",
+        d(0.4),
+        d(0.6),
+        d(0.7)
+    )
+}
+
 /// A small angle in radians with three decimals of exponent notation
 /// (`1.000e-9`), in the style `nums`.
 pub fn exponent(nums: NumStyle, a: f64) -> String {
-    nums.number(&format!("{a:.3e}"))
+    nums.exponent(a, 3)
 }
 
 /// `message` cut to [`MAX_MESSAGE`] characters, its middle replaced by the

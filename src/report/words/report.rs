@@ -7,7 +7,6 @@
 use crate::msg::{
     BenchWord, CheckWord, ClassWord, CliWord, DocWord, PlanWord, PracticeWord, QuizWord, StatWord,
 };
-use crate::num::format::fmt_dec;
 use crate::report::lang::NumStyle;
 use crate::tutor::check::Verdict;
 use crate::tutor::class::same::Same;
@@ -56,7 +55,7 @@ pub trait ReportWords {
 
 /// `x` with at most `digits` decimals, in `style`: `0.5` or `0,5`.
 pub fn dec(x: f64, digits: usize, style: NumStyle) -> String {
-    style.number(&fmt_dec(x, digits))
+    style.dec(x, digits)
 }
 
 /// A share of a total as a percentage to one decimal (`88.9` for 8 of

@@ -2,7 +2,7 @@
 //! bit's test, the render time, a clipping status; each language's in
 //! en/said.rs and id/said.rs.
 
-use crate::msg::Said;
+use crate::msg::{Compared, Said};
 use crate::report::lang::NumStyle;
 use crate::stages::clip::Status;
 
@@ -11,6 +11,14 @@ pub trait SaidWords {
     /// The words of `s`, its numbers in the style `nums` (the language's
     /// own, or a quiz's `--decimal`).
     fn said(&self, s: &Said, nums: NumStyle) -> String;
+}
+
+/// An outcode bit's comparison with its values, each as short as it
+/// reads (its exact form, else 6 digits) in the style `nums`: `4 > 3`,
+/// `0,5 < −1`.
+pub fn compared(c: &Compared, nums: NumStyle) -> String {
+    let Compared(a, op, b) = c;
+    format!("{} {op} {}", nums.short(a), nums.short(b))
 }
 
 /// The clipping status whose code (docs/spec.md's word, `clipped`) is

@@ -204,7 +204,7 @@ fn incidence_step<T: Scalar>(
         .res(Name::math("max(cos α, 0)"), Val::num(&max0(cos_alpha)))
         .sub(
             Name::math("max(cos α, 0)"),
-            Subst::new("max({}, 0)", vec![Val::num(cos_alpha)]),
+            Subst::new("max({}{,}0)", vec![Val::num(cos_alpha)]),
         );
     if *cos_alpha < T::zero() {
         s.note(Msg::Behind(mat.specular_requires_lit))
@@ -367,7 +367,7 @@ fn highlight_step<T: Scalar>(
     .sub(
         Name::Highlight,
         Subst::new(
-            "max({}, 0)^{}",
+            "max({}{,}0)^{}",
             vec![Val::num(cos), Val::num(&mat.shininess)],
         ),
     );

@@ -209,10 +209,7 @@ impl<T: Scalar> Material<T> {
             if !v.is_finite() || *v < T::zero() {
                 return Err(Error::why(
                     format!("{prefix}{k}"),
-                    crate::msg::ErrMsg::MustBe(
-                        crate::msg::Bound::NumberAtLeastZero,
-                        v.to_f64().to_string(),
-                    ),
+                    crate::msg::ErrMsg::MustBe(crate::msg::Bound::NumberAtLeastZero, v.to_f64()),
                 ));
             }
         }
@@ -232,7 +229,7 @@ pub fn check_color<T: Scalar>(field: &str, c: &Rgb<T>) -> Result<()> {
         if !v.is_finite() || *v < T::zero() || *v > T::one() {
             return Err(Error::why(
                 field,
-                crate::msg::ErrMsg::Channel(ch, v.to_f64().to_string()),
+                crate::msg::ErrMsg::Channel(ch, v.to_f64()),
             ));
         }
     }
@@ -345,21 +342,14 @@ impl<T: Scalar> Light<T> {
         {
             return Err(Error::why(
                 format!("{field}.attenuation"),
-                crate::msg::ErrMsg::Attenuation(
-                    a[0].to_f64().to_string(),
-                    a[1].to_f64().to_string(),
-                    a[2].to_f64().to_string(),
-                ),
+                crate::msg::ErrMsg::Attenuation(a[0].to_f64(), a[1].to_f64(), a[2].to_f64()),
             ));
         }
         if let Some(r) = &self.range {
             if *r <= T::zero() {
                 return Err(Error::why(
                     format!("{field}.range"),
-                    crate::msg::ErrMsg::MustBe(
-                        crate::msg::Bound::AboveZero,
-                        r.to_f64().to_string(),
-                    ),
+                    crate::msg::ErrMsg::MustBe(crate::msg::Bound::AboveZero, r.to_f64()),
                 ));
             }
         }
@@ -374,16 +364,13 @@ impl<T: Scalar> Light<T> {
             if *theta < T::zero() || *theta > *phi || *phi > full {
                 return Err(Error::why(
                     format!("{field}.theta"),
-                    crate::msg::ErrMsg::Cones(theta.to_f64().to_string(), phi.to_f64().to_string()),
+                    crate::msg::ErrMsg::Cones(theta.to_f64(), phi.to_f64()),
                 ));
             }
             if *falloff < T::zero() {
                 return Err(Error::why(
                     format!("{field}.falloff"),
-                    crate::msg::ErrMsg::MustBe(
-                        crate::msg::Bound::AtLeastZero,
-                        falloff.to_f64().to_string(),
-                    ),
+                    crate::msg::ErrMsg::MustBe(crate::msg::Bound::AtLeastZero, falloff.to_f64()),
                 ));
             }
         }
@@ -962,7 +949,7 @@ fn clamp_step<T: Scalar>(unclamped: &Rgb<T>, color: &Rgb<T>) -> Step {
         .val(Name::math("C"), rgb_val(unclamped))
         .res(Name::Color, rgb_val(color));
     if clipped {
-        let form = "(min(max({}, 0), 1), min(max({}, 0), 1), min(max({}, 0), 1))";
+        let form = "(min(max({}{,}0){,}1){,}min(max({}{,}0){,}1){,}min(max({}{,}0){,}1))";
         step.sub(
             Name::Color,
             Subst::new(form, unclamped.iter().map(Val::num).collect()),

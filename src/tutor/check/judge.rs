@@ -23,7 +23,7 @@
 
 use super::{tolerance, Settings, Verdict};
 use crate::input::answer::{Number, Read};
-use crate::msg::Msg;
+use crate::msg::{Expect, Msg};
 use crate::num::{Real, Shown};
 use crate::stages::trace::Val;
 use crate::tutor::key::Key;
@@ -135,22 +135,17 @@ fn first_of(v: &Val, read: &Read) -> Val {
 
 /// "expected …" with the value in exact and decimal form.
 pub(crate) fn expected_note(e: &Val) -> Msg {
-    Msg::Expected(match e {
-        Val::Num(s) => crate::num::format::shown(s, 6, true),
-        Val::Text(t) => t.clone(),
-        Val::List(items) => format!(
-            "({})",
-            items
-                .iter()
-                .map(|x| match expected_note(x) {
-                    Msg::Expected(t) => t,
-                    _ => String::new(),
-                })
-                .collect::<Vec<_>>()
-                .join(", ")
-        ),
-        _ => String::new(),
-    })
+    Msg::Expected(expect(e))
+}
+
+/// A value as "expected …" says it: numbers, words as written, lists.
+fn expect(e: &Val) -> Expect {
+    match e {
+        Val::Num(s) => Expect::Num(s.clone()),
+        Val::Text(t) => Expect::Text(t.clone()),
+        Val::List(items) => Expect::List(items.iter().map(expect).collect()),
+        _ => Expect::Nothing,
+    }
 }
 
 /// Whether two numbers are equal as doubles can tell (relative 1e-9).
@@ -196,7 +191,7 @@ fn number(n: &Number, e: &Shown, sc: f64, ctx: &Ctx) -> Judged {
         let note = if off > tolerance::absolute(ev, sc, s.tolerance) {
             Msg::WithinPixel
         } else {
-            Msg::WithinPct(fmt_pct(s.tolerance))
+            Msg::WithinPct(s.tolerance * 100.0)
         };
         return Judged::new(Verdict::Tolerance, note);
     }
@@ -221,10 +216,6 @@ fn number(n: &Number, e: &Shown, sc: f64, ctx: &Ctx) -> Judged {
         };
     }
     Judged::wrong(expected_note(&Val::Num(e.clone())))
-}
-
-fn fmt_pct(t: f64) -> String {
-    crate::num::format::fmt_dec(t * 100.0, 3)
 }
 
 /// Whether an answer is a mistaken value itself: every number equal to it

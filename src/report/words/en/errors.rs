@@ -8,10 +8,21 @@ use crate::msg::{
     Bound, Channel, ClapErr, ErrMsg, FileKind, IoWhy, ListWhy, NumErr, ObjWhy, Thing, TomlErr,
     Twice, Want,
 };
+use crate::report::lang::NumStyle;
 use crate::report::words::errors::{
     self, folder_prefix, ErrorWords, ExpectWord, Expected, ParseWhy, SerdeWord, Syntax, SyntaxWhat,
     ValueWhy,
 };
+
+/// The number style of English words.
+fn nums() -> NumStyle {
+    crate::report::words::MsgWords::nums(&En)
+}
+
+/// A value given back as it was read (`0.5`).
+fn n(x: f64) -> String {
+    nums().shortest(x)
+}
 
 impl ErrorWords for En {
     fn error(&self, m: &ErrMsg) -> String {
@@ -19,7 +30,7 @@ impl ErrorWords for En {
             ErrMsg::Num(e) => self.number(e),
             ErrMsg::Toml(e) => self.toml(e),
             ErrMsg::Clap(e, line) => self.clap(e, line),
-            ErrMsg::MustBe(b, got) => self.must_be(b, got),
+            ErrMsg::MustBe(b, got) => self.must_be(b, *got),
             ErrMsg::Twice(t) => self.twice(*t).to_string(),
             ErrMsg::CannotRead(p, why) => format!("cannot read {p}: {}", self.io_why(why)),
             ErrMsg::CannotReadStdin(why) => {
@@ -80,17 +91,18 @@ impl ErrorWords for En {
             ErrMsg::LightAtPoint => "the light is at the surface point itself: no direction to it".into(),
             ErrMsg::NotApplicable(k, kind) => format!("`{k}` does not apply to a {kind} light"),
             ErrMsg::Channel(ch, v) => format!(
-                "color channels must lie in [0, 1]; {} is {v}",
-                self.channel(*ch)
+                "color channels must lie in [0, 1]; {} is {}",
+                self.channel(*ch),
+                n(*v)
             ),
-            ErrMsg::Attenuation(a0, a1, a2) => format!("a0, a1, a2 must be ≥ 0 and not all 0, got ({a0}, {a1}, {a2})"),
-            ErrMsg::Cones(t, p) => format!("the cone angles need 0 ≤ theta ≤ phi ≤ 180°, got theta = {t}, phi = {p}"),
+            ErrMsg::Attenuation(a0, a1, a2) => format!("a0, a1, a2 must be ≥ 0 and not all 0, got {}", nums().shortest3([*a0, *a1, *a2])),
+            ErrMsg::Cones(t, p) => format!("the cone angles need 0 ≤ theta ≤ phi ≤ 180°, got theta = {}, phi = {}", n(*t), n(*p)),
             ErrMsg::PlaneThroughOrigin => "the view plane z = 0 passes through the centre of projection at the origin".into(),
-            ErrMsg::PlaneThroughCop(z) => format!("the view plane z = {z} passes through the centre of projection"),
+            ErrMsg::PlaneThroughCop(z) => format!("the view plane z = {} passes through the centre of projection", n(*z)),
             ErrMsg::ImageTooLarge(p, prec) => format!("the image of {p} is too large for {prec} precision (the point is too near the plane of the centre of projection)"),
-            ErrMsg::Viewport(w, h) => format!("width and height must be positive, got {w}x{h}"),
+            ErrMsg::Viewport(w, h) => format!("width and height must be positive, got {}x{}", n(*w), n(*h)),
             ErrMsg::VVanished => "v = n × u vanished".into(),
-            ErrMsg::EyeLookTooLarge(d, prec) => format!("Pe − Pr = {d} is too large for {prec} precision"),
+            ErrMsg::EyeLookTooLarge(d, prec) => format!("Pe − Pr = {} is too large for {prec} precision", nums().shortest3(*d)),
             ErrMsg::TranslationTooLarge(prec) => format!("the view matrix's translation −(u·Pe, v·Pe, n·Pe) is too large for {prec} precision"),
             ErrMsg::EyeCoordsTooLarge(p, prec) => format!("the eye coordinates of {p} are too large for {prec} precision"),
             ErrMsg::ExactBeyondF64 => "the result is exact but beyond the range of f64 (about 1.8e308), so it has no decimal or JSON number to give (scale the inputs)".into(),
@@ -108,7 +120,7 @@ impl ErrorWords for En {
             ErrMsg::GiveProblem => "give a problem file or --topic".into(),
             ErrMsg::TooManyProblems(n, c, v, mb, max) => format!("{n} problems ({c} × {v}, about {mb} MB) is more than the {max} written without --force"),
             ErrMsg::SplitNotQuiz => "splits a quiz file: it is taken with --format moodle or --format gift only".into(),
-            ErrMsg::QuestionTooLarge(q, size, limit) => format!("the question \"{q}\" alone takes {size} MB, more than the {limit} MB a file may have: give a larger --split-mb"),
+            ErrMsg::QuestionTooLarge(q, size, limit) => format!("the question \"{q}\" alone takes {} MB, more than the {} MB a file may have: give a larger --split-mb", nums().fixed_of(*size), nums().fixed_of(*limit)),
             ErrMsg::BothStdin => "the problem and the answers cannot both come from standard input (-)".into(),
             ErrMsg::NoPrinted(p) => format!("{p} has no [printed] table"),
             ErrMsg::CsvAndJson => "--csv - and --json would both write to standard output: give --csv a file name".into(),
@@ -209,16 +221,19 @@ impl ErrorWords for En {
                 format!("invalid value: {}, expected {}", serde(found), serde(want))
             }
             TomlErr::Num(n) => self.number(n),
-            TomlErr::MustBe(b, got) => self.must_be(b, got),
+            TomlErr::MustBe(b, got) => self.must_be(b, *got),
             TomlErr::WholeRange(lo, hi, got) => {
                 format!("must be a whole number from {lo} to {hi}, got {got}")
             }
-            TomlErr::Colour(c) => format!("colour components must be from 0 to 1, got {c}"),
+            TomlErr::Colour(c) => format!(
+                "colour components must be from 0 to 1, got {}",
+                errors::bracketed(*c, nums())
+            ),
             TomlErr::Syntax(s) => self.syntax(&errors::syntax(s)),
         }
     }
 
-    fn must_be(&self, b: &Bound, got: &str) -> String {
+    fn must_be(&self, b: &Bound, got: f64) -> String {
         let bound = match b {
             Bound::NumberAtLeastZero => "must be a number ≥ 0".to_string(),
             Bound::AtLeastZero => "must be ≥ 0".into(),
@@ -228,9 +243,9 @@ impl ErrorWords for En {
             Bound::FiniteAtLeastZero => "must be a finite number ≥ 0".into(),
             Bound::Fraction => "must be a number above 0 and below 1 (0.001 is 0.1%)".into(),
             Bound::WholePixels => "must be a whole number of pixels".into(),
-            Bound::AboveNear(near) => format!("must be greater than near = {near}"),
+            Bound::AboveNear(near) => format!("must be greater than near = {}", n(*near)),
         };
-        format!("{bound}, got {got}")
+        format!("{bound}, got {}", n(got))
     }
 
     fn twice(&self, t: Twice) -> &'static str {

@@ -29,11 +29,9 @@ fn with_nested(e: ErrMsg) -> Vec<ErrMsg> {
         E::Clap(..) => (every_clap().into_iter())
             .map(|c| E::Clap(c, "clap's line".into()))
             .collect(),
-        E::MustBe(_, got) => Bound::iter().map(|b| E::MustBe(b, got.clone())).collect(),
+        E::MustBe(_, got) => Bound::iter().map(|b| E::MustBe(b, got)).collect(),
         E::Twice(_) => Twice::iter().map(E::Twice).collect(),
-        E::Channel(_, got) => Channel::iter()
-            .map(|c| E::Channel(c, got.clone()))
-            .collect(),
+        E::Channel(_, got) => Channel::iter().map(|c| E::Channel(c, got)).collect(),
         E::Needs(_, key) => Thing::iter().map(|t| E::Needs(t, key.clone())).collect(),
         E::CannotRead(..) => each(|w| E::CannotRead("a.toml".into(), w)),
         E::CannotReadStdin(_) => each(E::CannotReadStdin),
@@ -137,7 +135,7 @@ fn every_error_has_words_in_both_languages_and_they_differ() {
 #[test]
 fn indonesian_errors_write_numbers_with_the_decimal_comma() {
     // -0,5 for the value given; 0,5 for near; the path keeps its dot.
-    let e = ErrMsg::MustBe(Bound::AboveNear("0.5".into()), "-0.5".into());
+    let e = ErrMsg::MustBe(Bound::AboveNear(0.5), -0.5);
     assert_eq!(
         of(Lang::Id).error(&e),
         "harus lebih besar daripada near = 0,5, diberikan -0,5"
@@ -146,7 +144,7 @@ fn indonesian_errors_write_numbers_with_the_decimal_comma() {
         of(Lang::En).error(&e),
         "must be greater than near = 0.5, got -0.5"
     );
-    let e = ErrMsg::Attenuation("0.5".into(), "-1".into(), "0".into());
+    let e = ErrMsg::Attenuation(0.5, -1.0, 0.0);
     assert!(of(Lang::Id).error(&e).ends_with("diberikan (0,5; -1; 0)"));
     let e = TomlErr::InvalidType("string \"a\"".into(), "an integer".into());
     assert_eq!(
@@ -158,6 +156,26 @@ fn indonesian_errors_write_numbers_with_the_decimal_comma() {
         of(Lang::Id).error(&e),
         "tidak dapat membaca p.toml: berkas atau direktori tidak ada"
     );
+}
+
+/// What a person typed is quoted as typed in every language: the dots of
+/// `1.2.3` are not decimal marks, and the numbers said about it are
+/// written in the language's style (a column, an aspect ratio given).
+#[test]
+fn text_typed_is_quoted_as_typed_and_numbers_take_the_style() {
+    let e = ErrMsg::Num(NumErr::Expected(Want::OperatorOrEnd, 4, Some('.')).quoted("1.2.3"));
+    let id = of(Lang::Id).error(&e);
+    assert!(id.starts_with("`1.2.3`: "), "{id}");
+    assert!(id.ends_with("ditemukan `.`"), "{id}");
+    let m = crate::msg::Msg::ErrNear(crate::msg::Given::Value(-0.5));
+    let id = crate::report::words::words(&m, Lang::Id);
+    assert!(id.ends_with("diberikan -0,5"), "{id}");
+    let en = crate::report::words::words(&m, Lang::En);
+    assert!(en.ends_with("got -0.5"), "{en}");
+    // [0.5, 1.5, 0] as the colour given, in brackets as the file has it
+    let c = TomlErr::Colour([0.5, 1.5, 0.0]);
+    assert!(of(Lang::Id).toml(&c).ends_with("diberikan [0,5; 1,5; 0]"));
+    assert!(of(Lang::En).toml(&c).ends_with("got [0.5, 1.5, 0]"));
 }
 
 /// Messages as the TOML reader writes them (`description[, expected …]`):

@@ -8,14 +8,15 @@ use crate::msg::{
     Bound, Channel, ClapErr, ErrMsg, FileKind, IoWhy, ListWhy, NumErr, ObjWhy, Thing, TomlErr,
     Twice, Want,
 };
+use crate::report::lang::NumStyle;
 use crate::report::words::errors::{
     self, folder_prefix, ErrorWords, ExpectWord, Expected, ParseWhy, SerdeWord, Syntax, SyntaxWhat,
     ValueWhy,
 };
 
-/// Numbers in a parameter with the decimal comma (`(1.5, 2)` → `(1,5; 2)`).
-fn n(s: &str) -> String {
-    crate::report::words::MsgWords::nums(&Id).values(s)
+/// The number style of Indonesian words: the decimal comma.
+fn nums() -> NumStyle {
+    crate::report::words::MsgWords::nums(&Id)
 }
 
 impl ErrorWords for Id {
@@ -24,7 +25,7 @@ impl ErrorWords for Id {
             ErrMsg::Num(e) => self.number(e),
             ErrMsg::Toml(e) => self.toml(e),
             ErrMsg::Clap(e, line) => self.clap(e, line),
-            ErrMsg::MustBe(b, got) => self.must_be(b, got),
+            ErrMsg::MustBe(b, got) => self.must_be(b, *got),
             ErrMsg::Twice(t) => self.twice(*t).to_string(),
             ErrMsg::CannotRead(p, why) => format!("tidak dapat membaca {p}: {}", self.io_why(why)),
             ErrMsg::CannotReadStdin(why) => {
@@ -87,25 +88,23 @@ impl ErrorWords for Id {
             ErrMsg::Channel(ch, v) => format!(
                 "kanal warna harus berada di [0, 1]; {} bernilai {}",
                 self.channel(*ch),
-                n(v)
+                nums().shortest(*v)
             ),
             ErrMsg::Attenuation(a0, a1, a2) => format!(
-                "a0, a1, a2 harus ≥ 0 dan tidak semuanya 0, diberikan ({}; {}; {})",
-                n(a0),
-                n(a1),
-                n(a2)
+                "a0, a1, a2 harus ≥ 0 dan tidak semuanya 0, diberikan {}",
+                nums().shortest3([*a0, *a1, *a2])
             ),
             ErrMsg::Cones(t, p) => format!(
                 "sudut kerucut harus 0 ≤ theta ≤ phi ≤ 180°, diberikan theta = {}, phi = {}",
-                n(t),
-                n(p)
+                nums().shortest(*t),
+                nums().shortest(*p)
             ),
             ErrMsg::PlaneThroughOrigin => "bidang proyeksi z = 0 melalui pusat proyeksi di titik asal".into(),
-            ErrMsg::PlaneThroughCop(z) => format!("bidang proyeksi z = {} melalui pusat proyeksi", n(z)),
+            ErrMsg::PlaneThroughCop(z) => format!("bidang proyeksi z = {} melalui pusat proyeksi", nums().shortest(*z)),
             ErrMsg::ImageTooLarge(p, prec) => format!("bayangan {p} terlalu besar untuk presisi {prec} (titik itu terlalu dekat dengan bidang pusat proyeksi)"),
-            ErrMsg::Viewport(w, h) => format!("lebar dan tinggi harus positif, diberikan {}x{}", n(w), n(h)),
+            ErrMsg::Viewport(w, h) => format!("lebar dan tinggi harus positif, diberikan {}x{}", nums().shortest(*w), nums().shortest(*h)),
             ErrMsg::VVanished => "v = n × u menjadi nol".into(),
-            ErrMsg::EyeLookTooLarge(d, prec) => format!("Peye − Pref = {} terlalu besar untuk presisi {prec}", n(d)),
+            ErrMsg::EyeLookTooLarge(d, prec) => format!("Peye − Pref = {} terlalu besar untuk presisi {prec}", nums().shortest3(*d)),
             ErrMsg::TranslationTooLarge(prec) => format!("translasi matriks pandang −(u·Pe; v·Pe; n·Pe) terlalu besar untuk presisi {prec}"),
             ErrMsg::EyeCoordsTooLarge(p, prec) => format!("koordinat kamera titik {p} terlalu besar untuk presisi {prec}"),
             ErrMsg::ExactBeyondF64 => "hasilnya eksak tetapi di luar jangkauan f64 (sekitar 1,8e308), jadi tidak ada desimal atau bilangan JSON untuknya (skalakan masukan)".into(),
@@ -123,7 +122,7 @@ impl ErrorWords for Id {
             ErrMsg::GiveProblem => "berikan berkas soal atau --topic".into(),
             ErrMsg::TooManyProblems(n, c, v, mb, max) => format!("{n} soal ({c} × {v}, sekitar {mb} MB) lebih dari {max} yang ditulis tanpa --force"),
             ErrMsg::SplitNotQuiz => "memecah berkas kuis: hanya dipakai dengan --format moodle atau --format gift".into(),
-            ErrMsg::QuestionTooLarge(q, size, limit) => format!("pertanyaan \"{q}\" sendiri berukuran {} MB, lebih dari {} MB yang boleh dimiliki satu berkas: berikan --split-mb yang lebih besar", n(size), n(limit)),
+            ErrMsg::QuestionTooLarge(q, size, limit) => format!("pertanyaan \"{q}\" sendiri berukuran {} MB, lebih dari {} MB yang boleh dimiliki satu berkas: berikan --split-mb yang lebih besar", nums().fixed_of(*size), nums().fixed_of(*limit)),
             ErrMsg::BothStdin => "soal dan jawaban tidak dapat sama-sama berasal dari masukan standar (-)".into(),
             ErrMsg::NoPrinted(p) => format!("{p} tidak memiliki tabel [printed]"),
             ErrMsg::CsvAndJson => "--csv - dan --json sama-sama akan menulis ke keluaran standar: berikan nama berkas untuk --csv".into(),
@@ -179,7 +178,7 @@ impl ErrorWords for Id {
             }
             NumErr::NotFinite(x, p) => format!("`{x}` bukan bilangan berhingga pada presisi {p}"),
             NumErr::NotANumber(x) => format!("`{x}` bukan bilangan"),
-            NumErr::NotFiniteLiteral(x) => format!("{} bukan bilangan berhingga", n(x)),
+            NumErr::NotFiniteLiteral(x) => format!("{x} bukan bilangan berhingga"),
             NumErr::NegativeRoot(x) => format!("sqrt({x}) mengambil akar kuadrat dari bilangan negatif"),
             NumErr::DivZero(x) => format!("`{x}` membagi dengan nol"),
             NumErr::Exponent(x) => format!("pangkat dalam `{x}` harus bilangan bulat dari -1024 sampai 1024"),
@@ -236,15 +235,15 @@ impl ErrorWords for Id {
                 )
             }
             TomlErr::Num(e) => self.number(e),
-            TomlErr::MustBe(b, got) => self.must_be(b, got),
+            TomlErr::MustBe(b, got) => self.must_be(b, *got),
             TomlErr::WholeRange(lo, hi, got) => {
-                format!(
-                    "harus bilangan bulat dari {lo} sampai {hi}, diberikan {}",
-                    n(got)
-                )
+                format!("harus bilangan bulat dari {lo} sampai {hi}, diberikan {got}")
             }
             TomlErr::Colour(c) => {
-                format!("komponen warna harus dari 0 sampai 1, diberikan {}", n(c))
+                format!(
+                    "komponen warna harus dari 0 sampai 1, diberikan {}",
+                    errors::bracketed(*c, nums())
+                )
             }
             TomlErr::Syntax(s) => {
                 format!(
@@ -255,7 +254,7 @@ impl ErrorWords for Id {
         }
     }
 
-    fn must_be(&self, b: &Bound, got: &str) -> String {
+    fn must_be(&self, b: &Bound, got: f64) -> String {
         let bound = match b {
             Bound::NumberAtLeastZero => "harus bilangan ≥ 0".to_string(),
             Bound::AtLeastZero => "harus ≥ 0".into(),
@@ -265,9 +264,12 @@ impl ErrorWords for Id {
             Bound::FiniteAtLeastZero => "harus bilangan berhingga ≥ 0".into(),
             Bound::Fraction => "harus bilangan di atas 0 dan di bawah 1 (0,001 adalah 0,1%)".into(),
             Bound::WholePixels => "harus bilangan bulat piksel".into(),
-            Bound::AboveNear(near) => format!("harus lebih besar daripada near = {}", n(near)),
+            Bound::AboveNear(near) => format!(
+                "harus lebih besar daripada near = {}",
+                nums().shortest(*near)
+            ),
         };
-        format!("{bound}, diberikan {}", n(got))
+        format!("{bound}, diberikan {}", nums().shortest(got))
     }
 
     fn twice(&self, t: Twice) -> &'static str {

@@ -15,7 +15,6 @@ use crate::tutor::key::Plane;
 impl MsgWords for Id {
     /// A word table: long on purpose.
     fn msg_in(&self, m: &Msg, nums: NumStyle) -> String {
-        let n = |s: &str| nums.values(s);
         match m {
             Msg::Math(s) => s.clone(),
             Msg::Written(en, ind) => ind.clone().unwrap_or_else(|| en.clone()),
@@ -142,7 +141,7 @@ impl MsgWords for Id {
             Msg::Misses => "tidak ada titik potong di dalam view volume: segmen garis tidak mengenainya (ditolak)".into(),
             Msg::DefaultView => "tidak diberikan: viewVector dari teks (0; 0; 1), pengamat jauh di arah +z".into(),
             Msg::MaterialD3d => "material Direct3D: warnanya sudah memuat koefisien, jadi ka = kd = ks = 1".into(),
-            Msg::MaterialText => format!("konstanta dari teks bila tidak diberikan: {}", nums.values("ka = 0.4, kd = 0.6, ks = 0.7 (ksp dalam teks), n = 4, specular putih (Cwhite)")),
+            Msg::MaterialText => format!("konstanta dari teks bila tidak diberikan: {}", msg::material_text(nums, " (ksp dalam teks)", "specular putih (Cwhite)")),
             Msg::NoTriangle => "tidak ada segitiga yang menutupi pusat piksel: warnanya tetap warna latar".into(),
             Msg::Nearest => "yang terdekat dari semua segitiga yang menutupi piksel ini".into(),
             Msg::Agree(true) => "kedua metode menghasilkan segmen garis yang sama".into(),
@@ -151,17 +150,17 @@ impl MsgWords for Id {
             Msg::Inside(true, true) => "di dalam: tidak di-clip".into(),
             Msg::Inside(false, _) => "di luar viewing window: di-clip".into(),
             Msg::Inside(true, false) => "di luar near/far plane: di-clip".into(),
-            Msg::ErrSamePoint(p) => format!("posisi mata Peye dan titik referensi Pref adalah titik yang sama {}", n(p)),
+            Msg::ErrSamePoint(p) => format!("posisi mata Peye dan titik referensi Pref adalah titik yang sama {}", nums.shortest3(*p)),
             Msg::ErrUpZero => "vektor Vup adalah vektor nol".into(),
-            Msg::ErrUpParallel(up, d) => format!("vektor Vup = {} sejajar dengan arah pandang Peye − Pref = {}, sehingga Vup × n = 0 dan u tidak terdefinisi", n(up), n(d)),
-            Msg::ErrFovy(v) => format!("harus di antara 0° dan 180° (tidak termasuk keduanya), diberikan {}°", n(v)),
-            Msg::ErrAspect(v) => format!("harus positif (lebar/tinggi), diberikan {}", n(v)),
-            Msg::ErrNear(v) => format!("harus positif (jarak di depan mata), diberikan {}", n(v)),
+            Msg::ErrUpParallel(up, d) => format!("vektor Vup = {} sejajar dengan arah pandang Peye − Pref = {}, sehingga Vup × n = 0 dan u tidak terdefinisi", nums.shortest3(*up), nums.shortest3(*d)),
+            Msg::ErrFovy(v) => format!("harus di antara 0° dan 180° (tidak termasuk keduanya), diberikan {}°", nums.shortest(*v)),
+            Msg::ErrAspect(v) => format!("harus positif (lebar/tinggi), diberikan {}", msg::given(*v, nums)),
+            Msg::ErrNear(v) => format!("harus positif (jarak di depan mata), diberikan {}", msg::given(*v, nums)),
             Msg::ErrCopPlane(p, None) => format!("{p} memiliki z = 0: titik itu terletak pada bidang pusat proyeksi dan tidak memiliki bayangan"),
-            Msg::ErrCopPlane(p, Some(z)) => format!("{p} memiliki z = zprp = {}: titik itu terletak pada bidang pusat proyeksi dan tidak memiliki bayangan", n(z)),
+            Msg::ErrCopPlane(p, Some(z)) => format!("{p} memiliki z = zprp = {}: titik itu terletak pada bidang pusat proyeksi dan tidak memiliki bayangan", nums.shortest(*z)),
             Msg::ErrUnknownPoint(p, None) => format!("titik `{p}` tidak dikenal: soal ini tidak memiliki [points]"),
             Msg::ErrUnknownPoint(p, Some(known)) => format!("titik `{p}` tidak dikenal; titik-titiknya adalah {known}"),
-            Msg::ErrBoxInverted(a, lo, hi) => format!("{a}min = {} lebih besar daripada {a}max = {}", n(lo), n(hi)),
+            Msg::ErrBoxInverted(a, lo, hi) => format!("{a}min = {} lebih besar daripada {a}max = {}", nums.shortest(*lo), nums.shortest(*hi)),
             Msg::ErrCannotRead(path, why) => format!("tidak dapat membaca {path}: {}", self.io_why(why)),
             Msg::ErrZeroUnit(v) => format!("{v} adalah vektor nol (0; 0; 0): tidak memiliki arah, sehingga tidak dapat dijadikan vektor satuan"),
             Msg::ErrNamedPoint(t) => format!("`{t}`: seharusnya NAMA=X,Y,Z, misalnya A=0,0,0"),
@@ -221,9 +220,9 @@ impl MsgWords for Id {
             Msg::StaleTempRemoved(p, pid) => format!("{p} dihapus: berkas sementara yang ditinggalkan proses grafika {pid}, yang sudah tidak berjalan (dihentikan sebelum sempat membersihkan)"),
             Msg::ErrHtmlCommand => "menulis penyelesaian basis, view, project, window, clip, shade, solve dan render; untuk ujian gunakan generate --format html".into(),
             Msg::Parts(parts) => msg::parts(self, parts),
-            Msg::Expected(v) => format!("seharusnya {}", nums.values(v)),
+            Msg::Expected(v) => format!("seharusnya {}", nums.expect(v)),
             Msg::Unreadable(why) => format!("tidak dapat dibaca: {}", self.number(why)),
-            Msg::WithinPct(p) => format!("dalam batas {}%", nums.number(p)),
+            Msg::WithinPct(p) => format!("dalam batas {}%", nums.dec(*p, 3)),
         }
     }
 
