@@ -7,7 +7,7 @@ use super::lang::Lang;
 use super::{words, Style};
 use crate::input::fields::{Num, Vec3In};
 use crate::input::problem::{PointRef, ProblemIn};
-use crate::msg::Msg;
+use crate::msg::{Msg, Shown};
 use crate::stages::projection::Projection;
 use crate::stages::trace::{Name, Step, Val};
 use crate::tutor::solution::{Asked, Compared, Given, RenderRun, Report, P3};
@@ -211,31 +211,29 @@ fn compared_json(r: &Compared, lang: Lang) -> Value {
 
 /// A value with plain numbers.
 pub fn value_json(v: &Val) -> Value {
-    match v {
-        Val::Num(s) => serde_json::Number::from_f64(s.value)
+    shaped(v, &|s| {
+        serde_json::Number::from_f64(s.value)
             .map(Value::Number)
-            .unwrap_or(Value::Null),
-        Val::List(items) => Value::Array(items.iter().map(value_json).collect()),
-        Val::Map(kv) => Value::Object(
-            kv.iter()
-                .map(|(k, v)| (k.clone(), value_json(v)))
-                .collect::<Map<_, _>>(),
-        ),
-        Val::Text(t) => Value::String(t.clone()),
-        Val::Said(m) => Value::String(words::words(m, Lang::En)),
-        Val::Bool(b) => Value::Bool(*b),
-        Val::Null => Value::Null,
-    }
+            .unwrap_or(Value::Null)
+    })
 }
 
 /// The same shape with each number as its exact expression string (or null).
 pub fn exact_json(v: &Val) -> Value {
+    shaped(v, &|s| {
+        s.exact.clone().map(Value::String).unwrap_or(Value::Null)
+    })
+}
+
+/// A value as JSON, each number written by `num` (its double or its exact
+/// form): §3's `result` and `exact` are the one shape.
+fn shaped(v: &Val, num: &dyn Fn(&Shown) -> Value) -> Value {
     match v {
-        Val::Num(s) => s.exact.clone().map(Value::String).unwrap_or(Value::Null),
-        Val::List(items) => Value::Array(items.iter().map(exact_json).collect()),
+        Val::Num(s) => num(s),
+        Val::List(items) => Value::Array(items.iter().map(|x| shaped(x, num)).collect()),
         Val::Map(kv) => Value::Object(
             kv.iter()
-                .map(|(k, v)| (k.clone(), exact_json(v)))
+                .map(|(k, x)| (k.clone(), shaped(x, num)))
                 .collect::<Map<_, _>>(),
         ),
         Val::Text(t) => Value::String(t.clone()),

@@ -88,13 +88,7 @@ impl Style {
                         !crate::num::format::is_plain_decimal(p) || !s.value.is_finite()
                     })
                 });
-                let decs: Vec<String> = ns
-                    .iter()
-                    .map(|s| {
-                        crate::num::format::decimal_in(s, self.digits, self.nums.mark)
-                            .replace('-', "−")
-                    })
-                    .collect();
+                let decs: Vec<String> = ns.iter().map(|s| self.decimal(s)).collect();
                 let approx = ns
                     .iter()
                     .any(|s| crate::num::format::is_approx(s, self.digits, self.exact_mode));
@@ -109,7 +103,7 @@ impl Style {
                         .map(|(s, d)| {
                             s.pretty
                                 .as_deref()
-                                .map(|p| self.nums.form(&p.replace('-', "−")))
+                                .map(|p| self.form(p))
                                 .unwrap_or_else(|| format!("≈{d}"))
                         })
                         .collect();
@@ -176,11 +170,20 @@ impl Style {
     /// A matrix cell: its exact form when it has one, else its decimal.
     pub fn cell(&self, s: &Shown) -> String {
         match &s.pretty {
-            Some(p) => self.nums.form(&p.replace('-', "−")),
-            None => {
-                crate::num::format::decimal_in(s, self.digits, self.nums.mark).replace('-', "−")
-            }
+            Some(p) => self.form(p),
+            None => self.decimal(s),
         }
+    }
+
+    /// A number's decimal with this style's digits and mark, and the
+    /// minus sign: `−0,02357`.
+    fn decimal(&self, s: &Shown) -> String {
+        crate::num::format::decimal_in(s, self.digits, self.nums.mark).replace('-', "−")
+    }
+
+    /// An exact form with this style's mark and the minus sign: `−√2/60`.
+    fn form(&self, p: &str) -> String {
+        self.nums.form(&p.replace('-', "−"))
     }
 
     /// A step below its title: the formula, the values substituted, the
@@ -270,11 +273,9 @@ impl Style {
                 Some(p)
                     if p.contains('√') || crate::num::format::is_approx(s, self.digits, false) =>
                 {
-                    self.nums.form(&p.replace('-', "−"))
+                    self.form(p)
                 }
-                _ => {
-                    crate::num::format::decimal_in(s, self.digits, self.nums.mark).replace('-', "−")
-                }
+                _ => self.decimal(s),
             },
             Val::List(items) => {
                 let parts: Vec<String> = items.iter().map(|x| self.operand(x)).collect();
