@@ -89,12 +89,12 @@ fn every_generated_problem_solves_and_its_key_scores_full_marks() {
         for level in LEVELS {
             let exam = generate::exam(&[topic], level, 3, 9).expect("generates");
             for g in &exam {
-                let answers: Vec<(String, toml::Value)> = g
+                let answers: Vec<(check::Name, toml::Value)> = g
                     .keys
                     .iter()
                     .map(|k| {
                         (
-                            k.to_string(),
+                            check::Name::parse(&k.to_string()),
                             answer_toml(value_of(&g.report.result, k).unwrap()),
                         )
                     })
@@ -194,9 +194,9 @@ fn plant(
         };
         if differs(right, wrong) {
             changed += 1;
-            answers.push((k.clone(), answer_toml(wrong)));
+            answers.push((check::Name::parse(k), answer_toml(wrong)));
         } else if k != "view.matrix" {
-            answers.push((k.clone(), answer_toml(right)));
+            answers.push((check::Name::parse(k), answer_toml(right)));
         }
     }
     if changed == 0 {

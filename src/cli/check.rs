@@ -71,7 +71,7 @@ pub fn run(a: &CheckArgs, json: bool, style: &Style, outputs: &Outputs) -> Resul
             } else {
                 let (student, mut answers) = check::read_answers(path)?;
                 // a file's `nim` says who, as its `student` does
-                answers.retain(|(k, _)| k != "nim");
+                answers.retain(|(k, _)| !k.is("nim"));
                 let who = student.unwrap_or_else(|| check::shown_name(&path.display().to_string()));
                 let m = check::mark(
                     &paper.variants[0][0].problem,

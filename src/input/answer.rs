@@ -39,6 +39,7 @@ use crate::msg::{Msg, NumErr, Want};
 use crate::num::expr::{components, missing_close, split_at, strip_outer, Part};
 use crate::num::{parse_expr, Expr};
 use crate::stages::trace::Val;
+use std::borrow::Cow;
 
 /// An answer as read.
 #[derive(Clone, Debug, PartialEq)]
@@ -92,12 +93,31 @@ impl Number {
 /// a code or status word, or none. The error is the note for the student:
 /// which part, at which column, and what was expected there.
 pub fn read(given: &toml::Value, like: &Val) -> Result<Read, Msg> {
-    match given {
-        toml::Value::String(t) => match named(t) {
-            Some((value, at)) => read_at(&toml::Value::String(value.into()), like, at),
-            None => read_at(given, like, 0),
+    match Given::of(given) {
+        Given::Text(t) => match named(t) {
+            Some((value, at)) => read_at(Given::Text(value), like, at),
+            None => read_at(Given::Text(t), like, 0),
         },
-        _ => read_at(given, like, 0),
+        other => read_at(other, like, 0),
+    }
+}
+
+/// What is read: a text (a string of the file, a line typed, or one part
+/// of a list written as text, read from the text itself) or another TOML
+/// value (an array, a number, a boolean).
+#[derive(Clone, Copy)]
+enum Given<'a> {
+    Text(&'a str),
+    Toml(&'a toml::Value),
+}
+
+impl<'a> Given<'a> {
+    /// A TOML value as read: a string is its text.
+    fn of(v: &'a toml::Value) -> Given<'a> {
+        match v {
+            toml::Value::String(s) => Given::Text(s),
+            other => Given::Toml(other),
+        }
     }
 }
 
@@ -123,13 +143,14 @@ fn depth(like: &Val) -> usize {
     }
 }
 
-fn read_at(given: &toml::Value, like: &Val, offset: usize) -> Result<Read, Msg> {
+fn read_at(given: Given, like: &Val, offset: usize) -> Result<Read, Msg> {
+    let text = || scalar_text(given).unwrap_or_default();
     match like {
         Val::Num(_) => number_value(given, offset).map(Read::Num),
-        Val::Text(t) if is_code(t) => code(&scalar_text(given).unwrap_or_default()),
-        Val::Text(_) => status(&scalar_text(given).unwrap_or_default()),
+        Val::Text(t) if is_code(t) => code(&text()),
+        Val::Text(_) => status(&text()),
         Val::Null => match given {
-            toml::Value::Array(a) if a.is_empty() => Ok(Read::None),
+            Given::Toml(toml::Value::Array(a)) if a.is_empty() => Ok(Read::None),
             _ if is_none(given) => Ok(Read::None),
             // a segment where none is left: read as a segment, to be wrong
             _ => {
@@ -139,7 +160,7 @@ fn read_at(given: &toml::Value, like: &Val, offset: usize) -> Result<Read, Msg> 
         },
         Val::List(items) if is_none(given) && items.iter().all(|x| depth(x) >= 1) => Ok(Read::None),
         Val::List(_) => list(given, like, offset),
-        Val::Bool(_) => yes_no(&scalar_text(given).unwrap_or_default()),
+        Val::Bool(_) => yes_no(&text()),
         Val::Map(_) | Val::Said(_) => Err(Msg::SeveralAnswers),
     }
 }
@@ -149,29 +170,36 @@ fn is_code(t: &str) -> bool {
     t.len() == 6 && t.chars().all(|c| c == '0' || c == '1')
 }
 
-fn is_none(given: &toml::Value) -> bool {
-    matches!(given, toml::Value::String(s)
+fn is_none(given: Given) -> bool {
+    matches!(given, Given::Text(s)
         if matches!(s.trim().to_lowercase().as_str(), "none" | "null" | "tidak ada" | "-" | "—"))
 }
 
-/// The text of a scalar TOML value.
-fn scalar_text(v: &toml::Value) -> Option<String> {
-    match v {
-        toml::Value::String(s) => Some(s.clone()),
-        toml::Value::Integer(i) => Some(i.to_string()),
-        toml::Value::Float(f) => Some(format!("{f}")),
-        toml::Value::Boolean(b) => Some(b.to_string()),
-        _ => None,
+/// The text of a scalar: a text as it is, a TOML number or boolean as
+/// TOML writes it.
+fn scalar_text(given: Given) -> Option<Cow<str>> {
+    match given {
+        Given::Text(s) => Some(Cow::Borrowed(s)),
+        Given::Toml(toml::Value::String(s)) => Some(Cow::Borrowed(s)),
+        Given::Toml(toml::Value::Integer(i)) => Some(Cow::Owned(i.to_string())),
+        Given::Toml(toml::Value::Float(f)) => Some(Cow::Owned(format!("{f}"))),
+        Given::Toml(toml::Value::Boolean(b)) => Some(Cow::Owned(b.to_string())),
+        Given::Toml(_) => None,
     }
 }
 
-/// A number from a TOML value; `offset` is where its text starts in the
+/// A number from a scalar; `offset` is where its text starts in the
 /// whole answer (for the column of an error).
-fn number_value(given: &toml::Value, offset: usize) -> Result<Number, Msg> {
+fn number_value(given: Given, offset: usize) -> Result<Number, Msg> {
     match scalar_text(given) {
-        Some(t) => number(&t).map_err(|e| Msg::Unreadable(shift(e, offset))),
+        Some(t) => number_at(&t, offset),
         None => Err(Msg::ExpectOne),
     }
+}
+
+/// A number from its text, which starts at `offset` in the whole answer.
+fn number_at(text: &str, offset: usize) -> Result<Number, Msg> {
+    number(text).map_err(|e| Msg::Unreadable(shift(e, offset)))
 }
 
 /// Reads one number: an expression with an optional decimal comma.
@@ -221,38 +249,36 @@ fn shift(e: NumErr, by: usize) -> NumErr {
 /// commas gets a short note.
 const MAX_BAD_PARTS: usize = 3;
 
-fn list(given: &toml::Value, like: &Val, offset: usize) -> Result<Read, Msg> {
+fn list(given: Given, like: &Val, offset: usize) -> Result<Read, Msg> {
     let items: &[Val] = match like {
         Val::List(items) => items,
         _ => &[],
     };
     let element = |i: usize| items.get(i).or(items.last()).unwrap_or(&Val::Null);
-    let parts: Vec<(toml::Value, usize)> = match given {
-        toml::Value::Array(a) => a.iter().map(|v| (v.clone(), offset)).collect(),
-        toml::Value::String(t) => {
+    let parts: Vec<(Given, usize)> = match given {
+        Given::Toml(toml::Value::Array(a)) => a.iter().map(|v| (Given::of(v), offset)).collect(),
+        Given::Text(t) => {
             let (t, offset) = unnamed(t, offset);
             if depth(like) == 1 {
-                if let Some(read) = numbers_written_otherwise(t, like, offset) {
+                if let Some(read) = vector_numbers(t, like, offset) {
                     return read;
                 }
             }
             text_parts(t, items)
                 .into_iter()
-                .map(|p| (toml::Value::String(p.text.to_string()), offset + p.at))
+                .map(|p| (Given::Text(p.text), offset + p.at))
                 .collect()
         }
         _ => return Err(Msg::ExpectList(items.len())),
     };
     let mut read = Vec::with_capacity(parts.len());
     let mut bad = Vec::new();
-    for (i, (part, at)) in parts.iter().enumerate() {
+    for (i, &(part, at)) in parts.iter().enumerate() {
         let like_i = element(i);
-        let r = if depth(like_i) == 0
-            && matches!(part, toml::Value::String(s) if s.trim().is_empty())
-        {
+        let r = if depth(like_i) == 0 && matches!(part, Given::Text(s) if s.trim().is_empty()) {
             Err(Msg::Unreadable(NumErr::Empty))
         } else {
-            read_at(part, like_i, *at)
+            read_at(part, like_i, at)
         };
         match r {
             Ok(x) => read.push(x),
@@ -298,51 +324,65 @@ fn unnamed(t: &str, offset: usize) -> (&str, usize) {
     (coords, offset + skipped)
 }
 
-/// A vector's numbers written otherwise than as parts separated by
-/// commas or `;`: times or over a number (`(1, 0, 1)/√2`), or separated by
-/// spaces (`0 0 -1 4`, `-0,6 0,8 0 -0,8`). None when the text is no such
-/// vector (then it is read as parts); commas that may be decimal marks
-/// and separators alike, with a count unlike the vector's
+/// A vector's numbers, each read once: its parts separated by commas or
+/// `;` when each is a number (`1/sqrt(2), 0, -1/sqrt(2)`), or its numbers
+/// written otherwise: times or over a number (`(1, 0, 1)/√2`), or
+/// separated by spaces (`0 0 -1 4`, `-0,6 0,8 0 -0,8`). None when the text
+/// is no such vector (then it is read part by part); commas that may be
+/// decimal marks and separators alike, with a count unlike the vector's
 /// (`0,7071, 0, 0,7071` for three numbers), are an error that says how to
 /// write them.
-fn numbers_written_otherwise(t: &str, like: &Val, offset: usize) -> Option<Result<Read, Msg>> {
-    let n = match like {
-        Val::List(items) => items.len(),
-        _ => return None,
+fn vector_numbers(t: &str, like: &Val, offset: usize) -> Option<Result<Read, Msg>> {
+    let Val::List(items) = like else {
+        return None;
     };
-    // each part a number; an unreadable one named as a list's part is
-    let numbers = |parts: Vec<(String, usize)>| -> Option<Result<Read, Msg>> {
-        let mut read = Vec::with_capacity(parts.len());
-        let mut bad = Vec::new();
-        for (i, (p, at)) in parts.iter().enumerate() {
-            match number_value(&toml::Value::String(p.clone()), offset + at) {
-                Ok(x) => read.push(Read::Num(x)),
-                Err(m) => bad.push((label(i, parts.len(), false), m)),
-            }
-        }
-        Some(if bad.is_empty() {
-            Ok(Read::List(read))
-        } else {
-            Err(Msg::Parts(bad))
-        })
-    };
+    let n = items.len();
     if let Some(parts) = scaled(t) {
-        return numbers(parts);
+        return Some(numbers(&parts, offset));
     }
     let split = components(t);
-    let read_as_parts = split.len() == n && split.iter().all(|p| number(p.text).is_ok());
-    if read_as_parts {
-        return None;
+    if split.len() == n {
+        if let Some(read) = all_numbers(split.iter().map(|p| p.text)) {
+            // read as parts; as numbers here when each part is one
+            let each_a_number = (items.iter()).all(|x| matches!(x, Val::Num(_)));
+            return each_a_number.then_some(Ok(read));
+        }
     }
     if let Some(parts) = spaced(t).filter(|p| p.len() == n) {
-        if parts.iter().all(|(p, _)| number(p).is_ok()) {
-            return numbers(parts);
+        if let Some(read) = all_numbers(parts.iter().map(|(p, _)| p.as_str())) {
+            return Some(Ok(read));
         }
     }
     if split.len() != n && split_at(strip_outer(t), ';').len() == 1 && mixed_commas(t) {
         return Some(Err(Msg::AmbiguousCommas));
     }
     None
+}
+
+/// A list of numbers, each part one (where it starts in its text; the
+/// text starts at `offset` in the whole answer); an unreadable one is
+/// named as a list's part is.
+fn numbers(parts: &[(String, usize)], offset: usize) -> Result<Read, Msg> {
+    let mut read = Vec::with_capacity(parts.len());
+    let mut bad = Vec::new();
+    for (i, (p, at)) in parts.iter().enumerate() {
+        match number_at(p, offset + at) {
+            Ok(x) => read.push(Read::Num(x)),
+            Err(m) => bad.push((label(i, parts.len(), false), m)),
+        }
+    }
+    if bad.is_empty() {
+        Ok(Read::List(read))
+    } else {
+        Err(Msg::Parts(bad))
+    }
+}
+
+/// A list of numbers when every text is one, each read once; None at the
+/// first that is not.
+fn all_numbers<'a>(texts: impl Iterator<Item = &'a str>) -> Option<Read> {
+    let read: Option<Vec<Read>> = texts.map(|t| number(t).ok().map(Read::Num)).collect();
+    read.map(Read::List)
 }
 
 /// Whether commas are written two ways: one between two digits (a
@@ -466,13 +506,13 @@ fn vector_group(t: &str) -> Option<(usize, usize)> {
 /// A list written as text whose only fault is its missing last `)`
 /// (`(1/sqrt(2), 0, 1/sqrt(2)`): the reader's words say so (`)` expected
 /// at the end), not what the first part lacks once the `(` swallowed it.
-fn unclosed(given: &toml::Value, like: &Val, offset: usize) -> Option<Msg> {
-    let toml::Value::String(t) = given else {
+fn unclosed(given: Given, like: &Val, offset: usize) -> Option<Msg> {
+    let Given::Text(t) = given else {
         return None;
     };
     let at = missing_close(t)?;
-    let closed = toml::Value::String(format!("{t})"));
-    list(&closed, like, offset).ok()?;
+    let closed = format!("{t})");
+    list(Given::Text(&closed), like, offset).ok()?;
     Some(Msg::Unreadable(NumErr::Expected(
         Want::Close,
         offset + at,
@@ -804,6 +844,37 @@ mod tests {
         // an expression with spaces is still one number of a list
         let got = values(&read(&text("1 - 2, 3, 4"), &vec3()).unwrap());
         assert_eq!(got, [-1.0, 3.0, 4.0]);
+    }
+
+    /// The number of texts parsed while `f` runs.
+    pub(crate) fn parses<T>(f: impl FnOnce() -> T) -> (T, usize) {
+        let parsed = || crate::num::expr::PARSED.with(std::cell::Cell::get);
+        let before = parsed();
+        let out = f();
+        (out, parsed() - before)
+    }
+
+    #[test]
+    fn each_number_of_an_answer_is_parsed_once() {
+        // (1/√2, 0, −1/√2) has three numbers, in each of these forms
+        for t in [
+            "(1/sqrt(2), 0, -1/sqrt(2))",
+            "u = (1/sqrt(2), 0, -1/sqrt(2))",
+            "(1, 0, -1)/√2",
+            "0,7071; 0; -0,7071",
+            "[√2/2, 0, −√2/2]",
+        ] {
+            let (r, n) = parses(|| read(&text(t), &vec3()));
+            assert_eq!(values(&r.unwrap()).len(), 3, "{t}");
+            assert_eq!(n, 3, "{t}");
+        }
+        let array = toml::Value::Array(vec![text("0.7071"), text("0"), text("-0.7071")]);
+        assert_eq!(parses(|| read(&array, &vec3())).1, 3);
+        // a matrix's sixteen numbers, by rows
+        let row = Val::List(vec![num(1.0); 4]);
+        let m = Val::List(vec![row; 4]);
+        let t = "1, 0, 0, -3*sqrt(2); 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1";
+        assert_eq!(parses(|| read(&text(t), &m)).1, 16);
     }
 
     #[test]

@@ -562,8 +562,18 @@ impl FromStr for Key {
     /// part (`top`, `points.A`). A number under `points` or `pixels` is a
     /// point's name (`view.points.1`).
     fn from_str(s: &str) -> Result<Key, NotAKey> {
+        Key::from_names(s.split('.'))
+    }
+}
+
+impl Key {
+    /// A key from its names in order, as a TOML table's path gives them
+    /// (`view.points.A` in an answer file is `view`, `points`, `A`), read
+    /// as [`Key::from_str`] reads the names between its dots: an index as a
+    /// name of its own (`2`) or after one (`clip[2]`).
+    pub fn from_names<'a>(names: impl IntoIterator<Item = &'a str>) -> Result<Key, NotAKey> {
         let mut read = Read::default();
-        for name in s.split('.') {
+        for name in names {
             let (name, index) = match name.split_once('[') {
                 Some((n, i)) => {
                     let i = i.strip_suffix(']').and_then(|i| i.parse().ok());

@@ -604,7 +604,7 @@ impl<'a> Session<'a> {
     fn judge(&self, item: &Item, text: &str) -> Outcome {
         let m = &self.plan.marker;
         let key = &item.key;
-        let j = m.judge(key, &toml::Value::String(text.to_string()));
+        let j = m.judge(key, &item.expected, &toml::Value::String(text.to_string()));
         let mut out = Outcome {
             given: Some(text.to_string()),
             read: j.read,

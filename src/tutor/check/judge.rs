@@ -24,7 +24,7 @@
 use super::{tolerance, Settings, Verdict};
 use crate::input::answer::{Number, Read};
 use crate::msg::{Expect, Msg};
-use crate::num::{Real, Shown};
+use crate::num::{Expr, Real, Shown};
 use crate::stages::trace::Val;
 use crate::tutor::key::Key;
 
@@ -50,9 +50,14 @@ impl Judged {
     }
 }
 
-/// An exact form (the ASCII of a value, or an expression as read) as an
-/// exact number; the caller caches it, since a class writes the same forms.
+/// A value's exact form (its ASCII, as grafika writes it) as an exact
+/// number; the caller caches it, since a class is marked against the same
+/// values.
 pub(crate) type ExactOf<'a> = &'a dyn Fn(&str) -> Option<Real>;
+
+/// An answer's expression, as read, as an exact number; the caller caches
+/// it by the expression, since a class writes the same forms.
+pub(crate) type ExactExpr<'a> = &'a dyn Fn(&Expr) -> Option<Real>;
 
 /// What a judgment needs besides the answer and the value.
 #[derive(Clone, Copy)]
@@ -65,6 +70,7 @@ pub(crate) struct Ctx<'a> {
     /// 0.082), so a mistaken or carried value is matched this loosely.
     pub carry: bool,
     pub exact: ExactOf<'a>,
+    pub given: ExactExpr<'a>,
 }
 
 /// Judges an answer against a value.
@@ -119,6 +125,7 @@ pub(crate) fn printed_agrees(
         key,
         carry: false,
         exact: &exact,
+        given: &|e| e.eval::<Real>().ok(),
     };
     Some(judge(&read, &first_of(computed, &read), &ctx).agrees())
 }
@@ -171,9 +178,7 @@ fn number(n: &Number, e: &Shown, sc: f64, ctx: &Ctx) -> Judged {
     // when the doubles agree: otherwise they cannot be equal), else to 1e-12.
     if same(g, ev) {
         let exact = e.exact.as_deref().and_then(ctx.exact);
-        let given = exact
-            .as_ref()
-            .and_then(|_| (ctx.exact)(&n.expr.to_string()));
+        let given = exact.as_ref().and_then(|_| (ctx.given)(&n.expr));
         let exactly = match (exact, given) {
             (Some(x), Some(y)) if x.is_exact() && y.is_exact() => x == y,
             _ => (g - ev).abs() <= 1e-12 * ev.abs().max(1.0),
@@ -318,6 +323,7 @@ mod tests {
             key: &key,
             carry: false,
             exact: &exact,
+            given: &|e| e.eval::<Real>().ok(),
         };
         let read = answer::read(&toml::Value::String(text.into()), e).unwrap();
         judge(&read, e, &ctx)

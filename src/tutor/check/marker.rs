@@ -27,7 +27,7 @@ use crate::input::part::Problem;
 use crate::input::problem::ProblemIn;
 use crate::msg::Implausible;
 use crate::msg::Msg;
-use crate::num::{Real, Scalar};
+use crate::num::{Expr, Real, Scalar};
 use crate::stages::trace::{Name, Step, Val};
 use crate::tutor::diagnose::Code;
 use crate::tutor::follow::Given;
@@ -60,8 +60,12 @@ pub struct Marker {
     pub settings: Settings,
     /// Each mistake of the catalog that applies, with its results.
     variants: Vec<(Code, Vec<Tree>)>,
-    /// Exact forms already turned into exact numbers.
+    /// The exact forms of grafika's values (and of its mistakes') already
+    /// turned into exact numbers.
     exact: RefCell<HashMap<String, Option<Real>>>,
+    /// The answers' expressions, as read, already turned into exact
+    /// numbers: a class writes the same forms many times.
+    given: RefCell<HashMap<Expr, Option<Real>>>,
 }
 
 /// What follow-through makes of a wrong answer ([`Marker::follow`]).
@@ -120,6 +124,7 @@ impl Marker {
             settings,
             variants,
             exact: RefCell::new(HashMap::new()),
+            given: RefCell::new(HashMap::new()),
         })
     }
 
@@ -128,8 +133,8 @@ impl Marker {
         &self.problem
     }
 
-    /// An exact form as an exact number (cached: a class writes the same
-    /// forms many times).
+    /// A value's exact form as an exact number (cached: a class is judged
+    /// against the same values many times).
     fn exact_of(&self, text: &str) -> Option<Real> {
         if let Some(x) = self.exact.borrow().get(text) {
             return x.clone();
@@ -141,14 +146,26 @@ impl Marker {
         x
     }
 
+    /// An answer's expression as an exact number (cached).
+    fn given_exact(&self, e: &Expr) -> Option<Real> {
+        if let Some(x) = self.given.borrow().get(e) {
+            return x.clone();
+        }
+        let x = e.eval::<Real>().ok();
+        self.given.borrow_mut().insert(e.clone(), x.clone());
+        x
+    }
+
     /// Judges `read` against `v` for `key`.
     fn judged(&self, read: &Read, v: &Val, key: &Key, carry: bool) -> Judged {
         let exact = |t: &str| self.exact_of(t);
+        let given = |e: &Expr| self.given_exact(e);
         let ctx = Ctx {
             settings: &self.settings,
             key,
             carry,
             exact: &exact,
+            given: &given,
         };
         judge(read, v, &ctx)
     }
@@ -169,11 +186,10 @@ impl Marker {
         })
     }
 
-    /// Judges one answer to `key` in the order of judgment (module docs).
-    pub fn judge(&self, key: &Key, given: &toml::Value) -> Judgement {
-        let Some(right) = value_of(&self.result, key) else {
-            return judgement(Judged::new(Verdict::Wrong, Msg::default()), None);
-        };
+    /// Judges one answer to `key`, whose value is `right` (grafika's, as
+    /// the caller found it in [`Marker::result`]), in the order of judgment
+    /// (module docs).
+    pub fn judge(&self, key: &Key, right: &Val, given: &toml::Value) -> Judgement {
         if matches!(given, toml::Value::String(s) if s.trim().is_empty()) {
             let j = Judged::new(Verdict::Missing, Msg::EmptyAnswer);
             return judgement(j, None);

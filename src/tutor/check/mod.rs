@@ -282,7 +282,7 @@ pub(crate) fn answer_len(v: &toml::Value) -> usize {
     }
 }
 
-/// An answer file's (or `[check] keys`') key read as a [`Key`]:
+/// A `[check] keys`' key read as a [`Key`]:
 /// `clip[2].status` and `clip.2.status` alike, a whole part (`view`), one
 /// component (`view.points.A.1`); a name that is no key is refused with
 /// the name as written (`check` reports it unknown).
@@ -290,8 +290,61 @@ pub fn answer_key(name: &str) -> std::result::Result<Key, String> {
     name.parse().map_err(|_| name.to_string())
 }
 
-/// Answers keyed by dotted result keys, in the order given.
-pub type Answers = Vec<(String, toml::Value)>;
+/// Answers by their names as given ([`Name`]), in the order given.
+pub type Answers = Vec<(Name, toml::Value)>;
+
+/// An answer's name as its file gives it: the names of the TOML tables
+/// down to the answer (`view.points.A = …`, or `A = …` under
+/// `[view.points]`, is `view`, `points`, `A`), read into a [`Key`] name by
+/// name ([`Name::key`]); spelled with dots where it is shown.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Name(Vec<String>);
+
+impl Name {
+    /// A name written on one line (`problem-01.view.u`): its names
+    /// between the dots.
+    pub fn parse(s: &str) -> Name {
+        Name(s.split('.').map(str::to_string).collect())
+    }
+
+    /// This name with the TOML key `k` under it: a quoted key with dots
+    /// (`"view.u"`) is its names as `view.u` is; an empty key at the top
+    /// adds none.
+    fn under(&self, k: &str) -> Name {
+        let mut names = self.0.clone();
+        if !(names.is_empty() && k.is_empty()) {
+            names.extend(k.split('.').map(str::to_string));
+        }
+        Name(names)
+    }
+
+    /// Whether it is the one name `s` (`nim`, `variant`).
+    pub fn is(&self, s: &str) -> bool {
+        matches!(&self.0[..], [one] if one == s)
+    }
+
+    /// Its first name and the rest (`problem-01` and `view.u`); None for a
+    /// lone name.
+    pub fn split_first(&self) -> Option<(&str, Name)> {
+        match &self.0[..] {
+            [first, rest @ ..] if !rest.is_empty() => Some((first, Name(rest.to_vec()))),
+            _ => None,
+        }
+    }
+
+    /// The answer key it names; a name that is no key is refused as it is
+    /// spelled (`check` reports it unknown).
+    pub fn key(&self) -> std::result::Result<Key, String> {
+        Key::from_names(self.0.iter().map(String::as_str)).map_err(|_| self.to_string())
+    }
+}
+
+impl std::fmt::Display for Name {
+    /// The names joined by dots (`view.points.A`).
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str(&self.0.join("."))
+    }
+}
 
 /// The longest student's name shown, in characters: a longer one (a
 /// `student` of 1 MB in a class of 10,000 made a table of 658 MB) is cut to
@@ -310,19 +363,30 @@ pub fn shown_name(name: &str) -> String {
     }
 }
 
-/// Answers from a TOML table, flattened to dotted keys (`view.points.A`).
-/// A top-level `student` string names the student (as [`shown_name`]
-/// shows it) and is not an answer.
+/// Answers from a TOML table: each value that is no table, by its
+/// [`Name`] (`view.points.A`). A top-level `student` string names the
+/// student (as [`shown_name`] shows it) and is not an answer.
 pub fn answers_from_table(t: &toml::Table) -> (Option<String>, Answers) {
     let mut out = Vec::new();
     let mut student = None;
     for (k, v) in t {
         match (k.as_str(), v) {
             ("student", toml::Value::String(s)) => student = Some(shown_name(s)),
-            _ => crate::input::values::dotted(k, v, &mut out),
+            _ => leaves(Name::default().under(k), v, &mut out),
         }
     }
     (student, out)
+}
+
+/// The values under `name` that are no tables, each by its name, a
+/// table's entries in order.
+fn leaves(name: Name, v: &toml::Value, out: &mut Answers) {
+    match v {
+        toml::Value::Table(t) => t.iter().for_each(|(k, x)| leaves(name.under(k), x, out)),
+        // a value at an empty name is named by the empty word
+        other if name.0.is_empty() => out.push((Name::parse(""), other.clone())),
+        other => out.push((name, other.clone())),
+    }
 }
 
 /// Reads an answer file (at most [`crate::input::MAX_FILE`] bytes, refused
@@ -350,7 +414,7 @@ pub fn settings_for(p: &ProblemIn, tolerance: Option<f64>, sig_figs: Option<u32>
 pub fn mark(
     p: &ProblemIn,
     who: &str,
-    answers: &[(String, toml::Value)],
+    answers: &[(Name, toml::Value)],
     settings: Settings,
     from_text: bool,
 ) -> Result<Marking> {

@@ -5,7 +5,7 @@
 //! by how many answers they explain.
 
 use super::marker::{Follow, Marker};
-use super::{Diagnosis, Marked, Marking, Verdict};
+use super::{Diagnosis, Marked, Marking, Name, Verdict};
 use crate::input::answer::Read;
 use crate::msg::Msg;
 use crate::tutor::diagnose::Code;
@@ -14,7 +14,7 @@ use crate::tutor::solution::value_of;
 use std::collections::{HashMap, HashSet};
 
 /// An answer file's key as read: a [`Key`], or a name that is none, as
-/// written ([`super::answer_key`]).
+/// written ([`super::Name::key`]).
 type Named = std::result::Result<Key, String>;
 
 impl Marker {
@@ -22,10 +22,9 @@ impl Marker {
     /// source's printed ones: only those keys are marked, and a wrong one
     /// gets the reason from the file's `[[errata]]`; otherwise the keys
     /// expected are [`Marker::keys`] plus any other key given.
-    pub fn mark(&self, who: &str, answers: &[(String, toml::Value)], from_text: bool) -> Marking {
-        let answers: Vec<(Named, &toml::Value)> = (answers.iter())
-            .map(|(k, v)| (super::answer_key(k), v))
-            .collect();
+    pub fn mark(&self, who: &str, answers: &[(Name, toml::Value)], from_text: bool) -> Marking {
+        let answers: Vec<(Named, &toml::Value)> =
+            answers.iter().map(|(k, v)| (k.key(), v)).collect();
         let keys = self.keys_marked(&answers, from_text);
         let mut first: HashMap<&Named, &toml::Value> = HashMap::new();
         for (k, v) in &answers {
@@ -54,7 +53,7 @@ impl Marker {
                 Some(g) if super::answer_len(g) > super::MAX_ANSWER => {
                     too_long(super::answer_len(g))
                 }
-                Some(g) => self.judge(key, g),
+                Some(g) => self.judge(key, expected, g),
             };
             let mut mistakes = j.mistakes;
             if from_text {
@@ -253,7 +252,7 @@ mod tests {
         let p = ProblemIn::parse(text, "t.toml").expect("parses");
         let m = Marker::new(&p, Settings::default()).expect("solves");
         let s = |x: &str| toml::Value::String(x.into());
-        let answers: Vec<(String, toml::Value)> = [
+        let answers: Vec<(Name, toml::Value)> = [
             ("view.points.A.0", s("4/sqrt(17)")),
             ("view.points.A[2]", s("-166/13")),
             ("view.n.2", s("0.5")),
@@ -263,7 +262,7 @@ mod tests {
             ("window.top", s("1")),
         ]
         .into_iter()
-        .map(|(k, v)| (k.to_string(), v))
+        .map(|(k, v)| (Name::parse(k), v))
         .collect();
         let marking = m.mark("s", &answers, false);
         let code = |k: &str| {
@@ -281,5 +280,57 @@ mod tests {
             marking.unknown,
             ["view.bogus", "view.points.A.9", "window.top"]
         );
+    }
+
+    /// The camera of the test above: n = (3, 4, 12)/13, and u = Vup × n
+    /// over its length = (12, 0, −3)/√153 = (4/√17, 0, −1/√17).
+    fn camera() -> Marker {
+        let text = "title = 't'\nask = ['view']\n\
+            [camera]\neye = [3, 4, 12]\nlook = [0, 0, 0]\nup = [0, 1, 0]\n\
+            [points]\nA = [1, 0, 0]\n";
+        let p = ProblemIn::parse(text, "t.toml").expect("parses");
+        Marker::new(&p, Settings::default()).expect("solves")
+    }
+
+    #[test]
+    fn an_answer_files_names_are_read_as_keys_and_an_unknown_one_as_written() {
+        let m = camera();
+        let file = "student = 'S'\nnim = '1'\n\"view.n\" = '(3, 4, 12)/13'\n\
+            [view]\nbogus = '1'\nu = '(4/sqrt(17), 0, -1/sqrt(17))'\n\
+            [view.points]\nA = '(4/√17, -4/(13√17), -166/13)'\n";
+        let t: toml::Table = toml::from_str(file).expect("TOML");
+        let (student, answers) = crate::tutor::check::answers_from_table(&t);
+        assert_eq!(student.as_deref(), Some("S"));
+        let mut names: Vec<String> = answers.iter().map(|(k, _)| k.to_string()).collect();
+        names.sort();
+        let want = ["nim", "view.bogus", "view.n", "view.points.A", "view.u"];
+        assert_eq!(names, want);
+        let (nim, answers): (Vec<_>, Vec<_>) = answers.into_iter().partition(|(k, _)| k.is("nim"));
+        assert_eq!(nim.len(), 1);
+        let marking = m.mark("S", &answers, false);
+        assert_eq!(marking.unknown, ["view.bogus"]);
+        let code = |k: &str| {
+            let k: Key = k.parse().expect("a key");
+            (marking.answers.iter())
+                .find(|a| a.key == k)
+                .map(|a| a.verdict)
+        };
+        assert_eq!(code("view.u"), Some(Verdict::Exact));
+        assert_eq!(code("view.n"), Some(Verdict::Exact));
+        assert_eq!(code("view.points.A"), Some(Verdict::Exact));
+    }
+
+    #[test]
+    fn judging_an_answer_parses_each_of_its_numbers_once() {
+        let m = camera();
+        let key: Key = "view.u".parse().expect("a key");
+        let right = crate::tutor::solution::value_of(&m.result, &key).expect("u");
+        let given = toml::Value::String("(4/sqrt(17), 0, -1/sqrt(17))".into());
+        let parsed = || crate::num::expr::PARSED.with(std::cell::Cell::get);
+        // the first judgment also reads grafika's exact forms (kept)
+        assert_eq!(m.judge(&key, right, &given).verdict, Verdict::Exact);
+        let before = parsed();
+        assert_eq!(m.judge(&key, right, &given).verdict, Verdict::Exact);
+        assert_eq!(parsed() - before, 3);
     }
 }

@@ -73,7 +73,10 @@ pub fn read(dir: &Path, lang: Lang) -> Result<Paper> {
 /// The variant an answer file answers (1-based): its `variant`, which may
 /// be left out when the exam has one variant.
 pub fn variant_of(answers: &Answers, variants: usize) -> Result<usize> {
-    let given = answers.iter().find(|(k, _)| k == "variant").map(|(_, v)| v);
+    let given = answers
+        .iter()
+        .find(|(k, _)| k.is("variant"))
+        .map(|(_, v)| v);
     let text = match given {
         None if variants == 1 => return Ok(1),
         None => return Err(Error::why("variant", ErrMsg::NoVariant(variants))),

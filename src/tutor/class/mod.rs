@@ -126,6 +126,13 @@ fn of_problem(name: &str) -> Option<(usize, &str)> {
     Some((problem_number(head)?.checked_sub(1)?, rest))
 }
 
+/// The problem (0-based) an exam's answer file names first
+/// (`problem-01.view.n` → 0) and the rest of the answer's name (`view.n`).
+fn problem_of(name: &check::Name) -> Option<(usize, check::Name)> {
+    let (head, rest) = name.split_first()?;
+    Some((problem_number(head)?.checked_sub(1)?, rest))
+}
+
 /// One answer file of a class.
 #[derive(Clone, Debug)]
 pub struct Sheet {
@@ -284,7 +291,8 @@ pub fn mark_file(paper: &Paper, f: &Path, settings: Settings) -> Sheet {
 
 fn mark_with(paper: &Paper, markers: &Markers, f: &Path) -> Sheet {
     let read = check::read_answers(f).map(|(s, answers)| {
-        let (nim, answers): (Answers, Answers) = answers.into_iter().partition(|(k, _)| k == "nim");
+        let (nim, answers): (Answers, Answers) =
+            answers.into_iter().partition(|(k, _)| k.is("nim"));
         (s, answers, nim.into_iter().next().map(|(_, v)| v))
     });
     let stem = (f.file_stem()).map_or_else(String::new, |s| s.to_string_lossy().into_owned());
@@ -399,15 +407,16 @@ fn split(paper: &Paper, answers: &Answers) -> Result<(usize, Vec<Answers>)> {
 fn split_as(paper: &Paper, answers: &Answers, v: usize) -> Result<Vec<Answers>> {
     let problems = &paper.variants[v - 1];
     let mut parts: Vec<Answers> = vec![Vec::new(); problems.len()];
-    for (k, val) in (answers.iter()).filter(|(k, _)| k != "variant" && k != "nim") {
-        let Some((i, rest)) = of_problem(k).filter(|(i, _)| *i < problems.len()) else {
+    for (k, val) in (answers.iter()).filter(|(k, _)| !k.is("variant") && !k.is("nim")) {
+        let Some((i, rest)) = problem_of(k).filter(|(i, _)| *i < problems.len()) else {
             let names: Vec<&str> = problems.iter().map(|p| p.name.as_str()).collect();
+            let k = k.to_string();
             return Err(Error::why(
                 k.as_str(),
                 ErrMsg::NotAProblemOfExam(k.clone(), names.join(", ")),
             ));
         };
-        parts[i].push((rest.to_string(), val.clone()));
+        parts[i].push((rest, val.clone()));
     }
     Ok(parts)
 }

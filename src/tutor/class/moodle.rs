@@ -23,7 +23,7 @@ use crate::input::answer::number;
 use crate::input::moodle_responses::{parts, Attempt, Responses};
 use crate::msg::ErrMsg;
 use crate::stages::trace::Val;
-use crate::tutor::check::{Answers, Marker, Settings};
+use crate::tutor::check::{Answers, Marker, Name, Settings};
 use crate::tutor::class::same::Same;
 use crate::tutor::generate::quiz::{typed_leaves, Typed};
 use crate::tutor::key::Key;
@@ -141,7 +141,10 @@ pub fn given(
                 draws.len() - 1
             }
         };
-        answers.insert(0, ("variant".into(), toml::Value::Integer(v as i64 + 1)));
+        answers.insert(
+            0,
+            (Name::parse("variant"), toml::Value::Integer(v as i64 + 1)),
+        );
         out.push(Given {
             attempt: i,
             label: PathBuf::from(format!("row {}", a.row)),
@@ -233,7 +236,7 @@ fn answers_of(
             continue; // not answered: marked as missing
         }
         let mut it = texts.into_iter();
-        out.push((full, shaped(val, &mut it)));
+        out.push((Name::parse(&full), shaped(val, &mut it)));
     }
     out
 }
