@@ -176,3 +176,28 @@ pub fn to_json(inp: &Inputs, rows: &[Row]) -> BenchJson {
         rows: rows.iter().map(row).collect(),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An error in ulps is written as a number while it is finite and as
+    /// `"inf"` otherwise (an infinite error, or NaN), and only the target's
+    /// and the wide reference's say how many cases they are over.
+    #[test]
+    fn an_error_that_is_not_finite_is_written_inf() {
+        let json = |s: &Spread| serde_json::to_string(s).unwrap();
+        let all = Spread {
+            max: f64::INFINITY,
+            median: 0.5,
+            count: None,
+        };
+        assert_eq!(json(&all), r#"{"max":"inf","median":0.5}"#);
+        let target = Spread {
+            max: f64::NAN,
+            median: 2.0,
+            count: Some(3),
+        };
+        assert_eq!(json(&target), r#"{"max":"inf","median":2.0,"count":3}"#);
+    }
+}
