@@ -23,7 +23,7 @@ pub fn run(a: &GenerateArgs, force: bool, json: bool, style: &Style) -> Result<S
     let writer = a.format.writer();
     let (files, plan) = write_exams(a, &*writer, force, style)?;
     Ok(if json {
-        written_json(&files, a.seed, plan.json)
+        written_json(&files, a.seed, &plan.json)
     } else {
         let mut s = written_summary(
             &files,
@@ -50,7 +50,7 @@ pub struct Plan {
     /// The Markdown table printed.
     pub table: String,
     /// blueprint.json's value.
-    pub json: serde_json::Value,
+    pub json: crate::report::blueprint::BlueprintJson,
     /// blueprint.md.
     pub markdown: String,
 }

@@ -523,6 +523,7 @@ fn report_error(e: &Error, json: bool, lang: Lang) -> i32 {
     if json {
         let j = crate::report::json::error(&field, &message);
         // Nothing more can be said if this fails too: the error is on stderr.
+        let j = serde_json::to_string(&j).unwrap_or_default();
         let _ = print::stdout(&format!("{j}\n"), Kind::Json);
     }
     2

@@ -100,7 +100,8 @@ pub fn run(a: &PracticeArgs, json: bool, style: &Style) -> Result<()> {
     };
     let emit = |e: &Event| {
         if json {
-            say(&format!("{}\n", event_json(e, look.style.lang)));
+            let line = serde_json::to_string(&event_json(e, look.style.lang));
+            say(&format!("{}\n", line.unwrap_or_default()));
         } else {
             say(&event_text(e, &look));
         }

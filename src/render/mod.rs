@@ -66,10 +66,12 @@ impl Options {
     }
 }
 
-/// What was done and what was skipped.
-#[derive(Clone, Debug, Default, PartialEq)]
+/// What was done and what was skipped (its counters are the render
+/// JSON's `stats`, docs/spec.md; the times are written from the medians).
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
 pub struct Stats {
     /// Triangles in the scene.
+    #[serde(rename = "triangles_in")]
     pub tris_in: u64,
     /// Back faces of closed meshes, culled.
     pub culled: u64,
@@ -88,6 +90,7 @@ pub struct Stats {
     /// Pixels that got a colour from a triangle.
     pub pixels_shaded: u64,
     /// Calls of `lighting::shade`.
+    #[serde(rename = "lighting_evaluations")]
     pub lighting_evals: u64,
     /// (object, light) pairs skipped because the object is out of range.
     pub lights_skipped: u64,
@@ -95,15 +98,20 @@ pub struct Stats {
     pub specular_skipped: u64,
     /// Time: transforms, culling, clipping, setup, per-face/vertex lighting,
     /// Phong's attribute planes and the index of its objects' triangles.
+    #[serde(skip)]
     pub geometry: Duration,
     /// Time: gathering the triangles of each band (made per chunk in the
     /// geometry stage) in submission order.
+    #[serde(skip)]
     pub binning: Duration,
     /// Thread time (summed over bands): visibility.
+    #[serde(skip)]
     pub raster: Duration,
     /// Thread time (summed over bands): shading.
+    #[serde(skip)]
     pub shading: Duration,
     /// Wall time of the band pass (visibility and shading, in parallel).
+    #[serde(skip)]
     pub pass: Duration,
 }
 

@@ -6,7 +6,7 @@ use crate::bench::Row;
 use crate::num::Precision;
 use crate::report::lang::NumStyle;
 use comfy_table::{presets, Cell, CellAlignment, Table};
-use serde_json::{json, Value};
+use serde::Serialize;
 
 /// A time for people in the style `nums`: `12.3 ns`, `4.56 µs`, `7,89 ms`.
 pub fn fmt_time(ns: f64, nums: NumStyle) -> String {
@@ -102,29 +102,102 @@ pub fn table(inp: &Inputs, rows: &[Row], lang: crate::report::lang::Lang) -> Str
 }
 
 /// The measurement as JSON.
-pub fn to_json(inp: &Inputs, rows: &[Row]) -> Value {
-    let rows: Vec<Value> = rows
-        .iter()
-        .map(|r| {
-            let (tmax, tmed) = r.target_max_median();
-            let (amax, amed) = r.all_max_median();
-            let (wmax, wmed) = accuracy::max_median(&r.errors.wide);
-            let num = |x: f64| if x.is_finite() { json!(x) } else { json!("inf") };
-            json!({
-                "stage": r.stage.name(),
-                "precision": r.precision.name(),
-                "cases": inp.len(r.stage),
-                "ns_per_op": r.ns_per_op,
-                "passes": r.passes,
-                "ulps": {
-                    "target": {"max": num(tmax), "median": num(tmed), "count": r.errors.target.len()},
-                    "wide": {"max": num(wmax), "median": num(wmed), "count": r.errors.wide.len()},
-                    "all": {"max": num(amax), "median": num(amed)},
-                },
-                "disagreements": r.errors.disagreements,
-                "unreferenced": r.errors.unreferenced,
-            })
-        })
-        .collect();
-    json!({ "command": "bench", "seed": accuracy::SEED, "rows": rows })
+#[derive(Serialize)]
+pub struct BenchJson {
+    command: &'static str,
+    seed: u64,
+    rows: Vec<RowJson>,
+}
+
+/// One stage at one precision: its time and its errors in ulps.
+#[derive(Serialize)]
+struct RowJson {
+    stage: &'static str,
+    precision: &'static str,
+    cases: usize,
+    ns_per_op: f64,
+    passes: usize,
+    ulps: UlpsJson,
+    disagreements: usize,
+    unreferenced: usize,
+}
+
+/// The errors against the target, the wide reference and all cases.
+#[derive(Serialize)]
+struct UlpsJson {
+    target: Spread,
+    wide: Spread,
+    all: Spread,
+}
+
+/// The largest and the median error (`"inf"` when not finite), and over
+/// how many cases (not written for all of them).
+#[derive(Serialize)]
+struct Spread {
+    #[serde(serialize_with = "ulps")]
+    max: f64,
+    #[serde(serialize_with = "ulps")]
+    median: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    count: Option<usize>,
+}
+
+/// An error in ulps: a number, or `"inf"`.
+fn ulps<S: serde::Serializer>(x: &f64, s: S) -> Result<S::Ok, S::Error> {
+    match x.is_finite() {
+        true => s.serialize_f64(*x),
+        false => s.serialize_str("inf"),
+    }
+}
+
+/// The measurement as JSON.
+pub fn to_json(inp: &Inputs, rows: &[Row]) -> BenchJson {
+    let spread = |(max, median): (f64, f64), count| Spread { max, median, count };
+    let row = |r: &Row| RowJson {
+        stage: r.stage.name(),
+        precision: r.precision.name(),
+        cases: inp.len(r.stage),
+        ns_per_op: r.ns_per_op,
+        passes: r.passes,
+        ulps: UlpsJson {
+            target: spread(r.target_max_median(), Some(r.errors.target.len())),
+            wide: spread(
+                accuracy::max_median(&r.errors.wide),
+                Some(r.errors.wide.len()),
+            ),
+            all: spread(r.all_max_median(), None),
+        },
+        disagreements: r.errors.disagreements,
+        unreferenced: r.errors.unreferenced,
+    };
+    BenchJson {
+        command: "bench",
+        seed: accuracy::SEED,
+        rows: rows.iter().map(row).collect(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An error in ulps is written as a number while it is finite and as
+    /// `"inf"` otherwise (an infinite error, or NaN), and only the target's
+    /// and the wide reference's say how many cases they are over.
+    #[test]
+    fn an_error_that_is_not_finite_is_written_inf() {
+        let json = |s: &Spread| serde_json::to_string(s).unwrap();
+        let all = Spread {
+            max: f64::INFINITY,
+            median: 0.5,
+            count: None,
+        };
+        assert_eq!(json(&all), r#"{"max":"inf","median":0.5}"#);
+        let target = Spread {
+            max: f64::NAN,
+            median: 2.0,
+            count: Some(3),
+        };
+        assert_eq!(json(&target), r#"{"max":"inf","median":2.0,"count":3}"#);
+    }
 }

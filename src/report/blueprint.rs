@@ -5,13 +5,14 @@
 //! numbers over the variants; and the same as JSON (docs/spec.md §4).
 
 use crate::msg::{DocWord, PlanWord as P};
+use crate::report::json::as_map;
 use crate::report::lang::Lang;
 use crate::report::words;
 use crate::report::words::report::dec;
 use crate::report::Style;
 use crate::tutor::generate::blueprint::{Blueprint, Position};
 use crate::tutor::generate::form::Form;
-use serde_json::{json, Map, Value};
+use serde::Serialize;
 use std::fmt::Write as _;
 
 /// The words of a plan key in `lang`.
@@ -134,52 +135,88 @@ pub fn markdown(bp: &Blueprint, table: &str, st: &Style) -> String {
 }
 
 /// blueprint.json (docs/spec.md §4).
-pub fn json(bp: &Blueprint, topics: &[&str]) -> Value {
-    let positions: Vec<Value> = (bp.positions.iter().enumerate())
-        .map(|(i, p)| position_json(i, p, topics.get(i).copied().unwrap_or("")))
-        .collect();
-    json!({
-        "variants": bp.variants,
-        "total": bp.total(),
-        "positions": positions,
-    })
+#[derive(Serialize)]
+pub struct BlueprintJson {
+    variants: usize,
+    total: u32,
+    positions: Vec<PositionJson>,
+}
+
+/// One position of the exam: its case, the number class of each part,
+/// each key's marks, and the range of each answer's numbers.
+#[derive(Serialize)]
+struct PositionJson {
+    problem: usize,
+    topic: &'static str,
+    case: Option<CaseJson>,
+    #[serde(serialize_with = "as_map")]
+    classes: Vec<(String, &'static str)>,
+    same_class: usize,
+    #[serde(serialize_with = "as_map")]
+    marks: Vec<(String, u32)>,
+    total: u32,
+    same_marks: bool,
+    distinct: usize,
+    #[serde(serialize_with = "as_map")]
+    spread: Vec<(String, Option<(f64, f64)>)>,
+}
+
+/// A position's case: its clipping case, its lighting model, or its
+/// number of points.
+#[derive(Serialize)]
+#[serde(untagged)]
+enum CaseJson {
+    Clip {
+        status: &'static str,
+        bits: [u32; 2],
+        tried: u32,
+        kept: u32,
+    },
+    Model {
+        model: &'static str,
+    },
+    Points {
+        points: usize,
+    },
+}
+
+/// blueprint.json; `topics`: each position's topic.
+pub fn json(bp: &Blueprint, topics: &[&'static str]) -> BlueprintJson {
+    BlueprintJson {
+        variants: bp.variants,
+        total: bp.total(),
+        positions: (bp.positions.iter().enumerate())
+            .map(|(i, p)| position_json(i, p, topics.get(i).copied().unwrap_or("")))
+            .collect(),
+    }
 }
 
 /// One position as JSON.
-fn position_json(i: usize, p: &Position, topic: &str) -> Value {
+fn position_json(i: usize, p: &Position, topic: &'static str) -> PositionJson {
     let f = &p.form;
     let case = match (f.clip, f.model) {
-        (Some(c), _) => json!({
-            "status": c.status.as_str(), "bits": c.bits, "tried": c.tried, "kept": c.kept
+        (Some(c), _) => Some(CaseJson::Clip {
+            status: c.status.as_str(),
+            bits: c.bits,
+            tried: c.tried,
+            kept: c.kept,
         }),
-        (None, Some(m)) => json!({ "model": m.name() }),
-        (None, None) if f.points > 0 => json!({ "points": f.points }),
-        _ => Value::Null,
+        (None, Some(m)) => Some(CaseJson::Model { model: m.name() }),
+        (None, None) if f.points > 0 => Some(CaseJson::Points { points: f.points }),
+        _ => None,
     };
-    let classes: Map<String, Value> = (p.classes.iter())
-        .map(|(part, c)| (part.key().to_string(), json!(c.name())))
-        .collect();
-    let marks: Map<String, Value> = (p.keys.iter())
-        .map(|(k, m)| (k.to_string(), json!(m)))
-        .collect();
-    let spread: Map<String, Value> = (p.spread.iter())
-        .map(|(k, s)| {
-            (
-                k.to_string(),
-                s.map_or(Value::Null, |(lo, hi)| json!([lo, hi])),
-            )
-        })
-        .collect();
-    json!({
-        "problem": i + 1,
-        "topic": topic,
-        "case": case,
-        "classes": classes,
-        "same_class": p.same_class,
-        "marks": marks,
-        "total": p.marks(),
-        "same_marks": p.same_marks,
-        "distinct": p.distinct,
-        "spread": spread,
-    })
+    PositionJson {
+        problem: i + 1,
+        topic,
+        case,
+        classes: (p.classes.iter())
+            .map(|(part, c)| (part.key(), c.name()))
+            .collect(),
+        same_class: p.same_class,
+        marks: p.keys.iter().map(|(k, m)| (k.to_string(), *m)).collect(),
+        total: p.marks(),
+        same_marks: p.same_marks,
+        distinct: p.distinct,
+        spread: p.spread.iter().map(|(k, s)| (k.to_string(), *s)).collect(),
+    }
 }

@@ -2,67 +2,146 @@
 //! autograders.
 
 use crate::msg::CheckWord as K;
-use crate::report::json::{exact_json, value_json};
+use crate::report::json::{as_map, both, Both};
 use crate::report::lang::Lang;
 use crate::report::words::{self, words};
 use crate::report::{joined, Style};
-use crate::tutor::check::{Marked, Marking, Verdict};
+use crate::tutor::check::{Marked, Marking, Settings, Verdict};
+use crate::tutor::diagnose::Code;
 use crate::tutor::key::Key;
-use serde_json::{json, Value};
+use serde::Serialize;
+
+/// A marking as JSON for autograders (docs/spec.md §5); an exam's
+/// problem adds its `problem`, a class's lone sheet its `file`.
+#[derive(Serialize)]
+pub struct MarkingJson<'a> {
+    command: &'static str,
+    title: &'a str,
+    who: &'a str,
+    settings: &'a Settings,
+    score: ScoreJson,
+    #[serde(serialize_with = "as_map")]
+    counts: Vec<(&'static str, usize)>,
+    working: WorkingJson,
+    answers: Vec<MarkedJson<'a>>,
+    diagnosis: Vec<DiagnosisJson<'a>>,
+    unknown_keys: &'a [String],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(crate) problem: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(crate) file: Option<String>,
+}
+
+/// A marking's score.
+#[derive(Serialize)]
+struct ScoreJson {
+    points: f64,
+    total: u32,
+    fraction: f64,
+    percent: f64,
+    method: f64,
+}
+
+/// How many answers to keys not asked were given, and how many are right.
+#[derive(Serialize)]
+struct WorkingJson {
+    answers: usize,
+    correct: usize,
+}
+
+/// One answer marked.
+#[derive(Serialize)]
+struct MarkedJson<'a> {
+    key: &'a Key,
+    verdict: &'static str,
+    code: &'static str,
+    given: &'a Option<toml::Value>,
+    expected: Option<Both>,
+    note: String,
+    diagnosis: &'a [Code],
+    why: Option<String>,
+    marks: Option<MarksJson>,
+    method: &'a [Key],
+}
+
+/// The marks an answer earned of its worth.
+#[derive(Serialize)]
+struct MarksJson {
+    earned: f64,
+    of: u32,
+}
+
+/// A mistake found: its code, its words, the answers it reproduces.
+#[derive(Serialize)]
+pub(crate) struct DiagnosisJson<'a> {
+    code: Code,
+    mistake: &'static str,
+    keys: &'a [Key],
+    also: &'a [Code],
+}
 
 /// The marking as JSON for autograders.
-pub fn to_json(m: &Marking, lang: Lang) -> Value {
-    let answers: Vec<Value> = m
-        .answers
-        .iter()
-        .map(|a| {
-            json!({
-                "key": a.key,
-                "verdict": a.verdict.word(),
-                "code": a.verdict.name(),
-                "given": a.given_value.as_ref().and_then(|g| serde_json::to_value(g).ok()),
-                "expected": a.expected.as_ref().map(|e| json!({ "decimal": value_json(e), "exact": exact_json(e) })),
-                "note": words(&a.note, lang),
-                "diagnosis": a.diagnosis,
-                "why": a.why.as_ref().map(|w| words(w, lang)),
-                "marks": a.worth.map(|of| json!({ "earned": a.earned, "of": of })),
-                "method": a.method,
-            })
-        })
-        .collect();
-    json!({
-        "command": "check",
-        "title": m.title,
-        "who": m.who,
-        "settings": { "tolerance": m.settings.tolerance, "sig_figs": m.settings.sig_figs,
-                      "follow_through": m.settings.follow_through },
-        "score": { "points": m.score(), "total": m.total(), "fraction": m.fraction(),
-                   "percent": crate::report::words::report::percent(m.score(), m.total()),
-                   "method": m.method_marks() },
-        "counts": counts_json(m),
-        "working": {
-            "answers": m.working().count(),
-            "correct": m.working().filter(|a| a.verdict.is_correct()).count(),
+pub fn to_json(m: &Marking, lang: Lang) -> MarkingJson<'_> {
+    MarkingJson {
+        command: "check",
+        title: &m.title,
+        who: &m.who,
+        settings: &m.settings,
+        score: ScoreJson {
+            points: m.score(),
+            total: m.total(),
+            fraction: m.fraction(),
+            percent: crate::report::words::report::percent(m.score(), m.total()),
+            method: m.method_marks(),
         },
-        "answers": answers,
-        "diagnosis": m.diagnoses.iter().map(|d| json!({
-            "code": d.mistake, "mistake": crate::report::mistakes::mistake_text(d.mistake, lang), "keys": d.keys,
-            "also": d.also,
-        })).collect::<Vec<_>>(),
-        "unknown_keys": m.unknown,
-    })
+        counts: counts(m),
+        working: WorkingJson {
+            answers: m.working().count(),
+            correct: m.working().filter(|a| a.verdict.is_correct()).count(),
+        },
+        answers: m.answers.iter().map(|a| answer_json(a, lang)).collect(),
+        diagnosis: (m.diagnoses.iter())
+            .map(|d| DiagnosisJson {
+                code: d.mistake,
+                mistake: crate::report::mistakes::mistake_text(d.mistake, lang),
+                keys: &d.keys,
+                also: &d.also,
+            })
+            .collect(),
+        unknown_keys: &m.unknown,
+        problem: None,
+        file: None,
+    }
+}
+
+/// One answer marked as JSON.
+fn answer_json(a: &Marked, lang: Lang) -> MarkedJson<'_> {
+    MarkedJson {
+        key: &a.key,
+        verdict: a.verdict.word(),
+        code: a.verdict.name(),
+        given: &a.given_value,
+        expected: a.expected.as_ref().map(both),
+        note: words(&a.note, lang),
+        diagnosis: &a.diagnosis,
+        why: a.why.as_ref().map(|w| words(w, lang)),
+        marks: a.worth.map(|of| MarksJson {
+            earned: a.earned,
+            of,
+        }),
+        method: &a.method,
+    }
 }
 
 /// The answers asked counted by verdict word, in the order of
 /// [`Verdict::words`] (`correct`, `too_coarse`, …), then those credited by
 /// follow-through (counted among the correct ones too).
-fn counts_json(m: &Marking) -> Value {
-    let mut counts = serde_json::Map::new();
-    for v in Verdict::words() {
-        counts.insert(v.word().to_string(), json!(m.count(v)));
-    }
-    counts.insert("follow_through".to_string(), json!(m.follow_through()));
-    Value::Object(counts)
+fn counts(m: &Marking) -> Vec<(&'static str, usize)> {
+    let mut counts: Vec<(&str, usize)> = (Verdict::words().into_iter())
+        .map(|v| (v.word(), m.count(v)))
+        .collect();
+    counts.push(("follow_through", m.follow_through()));
+    counts
 }
 
 /// One student's marking of a lone problem or an exam as text: a lone
@@ -82,18 +161,37 @@ pub fn marked_text(marked: &[(String, Marking)], style: &Style) -> String {
 /// One student's marking as JSON: a lone problem (named "") as
 /// [`to_json`]; an exam's problems under `problems`, each with its
 /// `problem`.
-pub fn marked_json(marked: &[(String, Marking)], lang: Lang) -> Value {
+#[derive(Serialize)]
+#[serde(untagged)]
+pub enum MarkedFile<'a> {
+    /// A lone problem's marking.
+    One(MarkingJson<'a>),
+    /// An exam's.
+    Exam {
+        command: &'static str,
+        problems: Vec<MarkingJson<'a>>,
+    },
+}
+
+/// One student's marking as JSON.
+pub fn marked_json(marked: &[(String, Marking)], lang: Lang) -> MarkedFile<'_> {
     match marked {
-        [(name, m)] if name.is_empty() => to_json(m, lang),
-        _ => json!({
-            "command": "check",
-            "problems": marked.iter().map(|(name, m)| {
-                let mut j = to_json(m, lang);
-                j["problem"] = json!(name);
-                j
-            }).collect::<Vec<_>>(),
-        }),
+        [(name, m)] if name.is_empty() => MarkedFile::One(to_json(m, lang)),
+        _ => MarkedFile::Exam {
+            command: "check",
+            problems: problems_json(marked, lang),
+        },
     }
+}
+
+/// An exam's markings, each with its `problem`.
+pub(crate) fn problems_json(marked: &[(String, Marking)], lang: Lang) -> Vec<MarkingJson<'_>> {
+    (marked.iter())
+        .map(|(name, m)| MarkingJson {
+            problem: Some(name),
+            ..to_json(m, lang)
+        })
+        .collect()
 }
 
 /// A word of a marked answer file, in `style`'s language.

@@ -4,209 +4,490 @@
 //! render's scene and settings, and the render's `stats`; a refusal.
 
 use super::lang::Lang;
+use super::render::StatsJson;
 use super::{words, Style};
 use crate::input::fields::{Num, Vec3In};
 use crate::input::problem::{PointRef, ProblemIn};
 use crate::msg::{Msg, Shown};
+use crate::num::Precision;
 use crate::stages::projection::Projection;
-use crate::stages::trace::{Name, Step, Val};
+use crate::stages::trace::{Step, Val};
 use crate::tutor::solution::{Asked, Compared, Given, RenderRun, Report, P3};
-use serde_json::{json, Map, Value};
+use serde::{Serialize, Serializer};
+use serde_json::{Map, Value};
+
+/// A refusal as JSON (`--json`, docs/spec.md): `{"error": {…}}`.
+#[derive(Serialize)]
+pub struct Refusal<'a> {
+    error: Fault<'a>,
+}
+
+/// The field at fault as it is spelled and the reason in the chosen
+/// language (a refusal's, a class's file that could not be marked).
+#[derive(Serialize)]
+pub struct Fault<'a> {
+    /// The field, as spelled.
+    pub field: &'a str,
+    /// The reason, in words.
+    pub message: String,
+}
 
 /// A refusal as JSON (`--json`, docs/spec.md): the field at fault as it
 /// is spelled and the reason in the chosen language.
-pub fn error(field: &str, message: &str) -> Value {
-    json!({ "error": { "field": field, "message": message } })
-}
-
-/// The `input` object of a report.
-pub fn input(r: &Report) -> Value {
-    match &r.asked {
-        Asked::Command => r.parts.first().map(given).unwrap_or(Value::Null),
-        Asked::File(p) => problem(p),
-        Asked::Render(run) => render_input(run),
+pub fn error<'a>(field: &'a str, message: &str) -> Refusal<'a> {
+    let message = message.to_string();
+    Refusal {
+        error: Fault { field, message },
     }
 }
 
-/// Named points as an object.
-fn named(points: &[(String, P3)]) -> Value {
-    Value::Object(points.iter().map(|(n, p)| (n.clone(), json!(p))).collect())
+/// Named values (unique names: points, verdict words) as one JSON
+/// object, in order.
+pub fn as_map<S: Serializer, K: Serialize, V: Serialize>(
+    kv: &[(K, V)],
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    s.collect_map(kv.iter().map(|(k, v)| (k, v)))
+}
+
+/// Named values as one JSON object, each value's numbers written by `f`
+/// (a later value of a name written twice replaces the earlier one).
+pub fn plain<K: ToString>(kv: &[(K, Val)], f: fn(&Val) -> Value) -> Map<String, Value> {
+    kv.iter().map(|(k, v)| (k.to_string(), f(v))).collect()
+}
+
+/// The `input` object of a report: a calculator's part, a problem file,
+/// a render (null when a calculator command has no part).
+#[derive(Serialize)]
+#[serde(untagged)]
+pub enum Input<'a> {
+    /// A calculator command's part.
+    Part(GivenJson<'a>),
+    /// A problem file's tables.
+    File(Box<ProblemJson<'a>>),
+    /// A render's scene and settings.
+    Render(RenderInput<'a>),
+    /// Nothing given.
+    None,
+}
+
+/// The `input` object of a report.
+pub fn input(r: &Report) -> Input<'_> {
+    match &r.asked {
+        Asked::Command => (r.parts.first()).map_or(Input::None, |g| Input::Part(given(g))),
+        Asked::File(p) => Input::File(Box::new(problem(p))),
+        Asked::Render(run) => Input::Render(render_input(run)),
+    }
+}
+
+/// A camera: Pe, Pr, Vup.
+#[derive(Serialize)]
+pub struct CameraJson<T> {
+    eye: T,
+    look: T,
+    up: T,
+}
+
+/// A projection's set-up: onto z = d, the general one, orthographic.
+#[derive(Serialize)]
+#[serde(untagged)]
+pub enum ProjectionJson {
+    /// Onto the plane z = d.
+    Plane { d: f64 },
+    /// The centre of projection's and the plane's z.
+    General { cop: f64, plane: f64 },
+    /// Orthographic.
+    Ortho { ortho: bool },
+}
+
+/// A calculator command's part as the stages took it.
+#[derive(Serialize)]
+#[serde(untagged)]
+pub enum GivenJson<'a> {
+    /// The camera basis.
+    Basis(CameraJson<P3>),
+    /// The camera and the world points.
+    View {
+        #[serde(flatten)]
+        camera: CameraJson<P3>,
+        #[serde(serialize_with = "as_map")]
+        points: &'a [(String, P3)],
+    },
+    /// The projection and the eye-coordinate points.
+    Project {
+        projection: ProjectionJson,
+        points: Map<String, Value>,
+    },
+    /// The window, the viewport and the points on the window.
+    Window {
+        fovy: f64,
+        aspect: f64,
+        near: f64,
+        far: Option<f64>,
+        viewport: Option<(f64, f64)>,
+        points: Map<String, Value>,
+    },
+    /// The clipping box and the segment.
+    Clip { min: P3, max: P3, from: P3, to: P3 },
+    /// The lighting set-up.
+    Shade(ShadeJson<'a>),
+}
+
+/// The lighting part's inputs, its constants each by name.
+#[derive(Serialize)]
+pub struct ShadeJson<'a> {
+    model: &'static str,
+    normal: P3,
+    view: P3,
+    position: P3,
+    camera: Option<P3>,
+    color: P3,
+    ka: f64,
+    kd: f64,
+    ks: f64,
+    shininess: f64,
+    specular: bool,
+    specular_requires_lit: bool,
+    lights: &'a Option<String>,
 }
 
 /// A calculator command's part.
-fn given(g: &Given) -> Value {
-    let cam = |c: &crate::stages::camera::Camera<f64>| {
-        let [eye, look, up]: [P3; 3] = [c.pe.into(), c.pr.into(), c.vup.into()];
-        json!({ "eye": eye, "look": look, "up": up })
+fn given(g: &Given) -> GivenJson<'_> {
+    let cam = |c: &crate::stages::camera::Camera<f64>| CameraJson {
+        eye: c.pe.into(),
+        look: c.pr.into(),
+        up: c.vup.into(),
     };
     match g {
-        Given::Basis(c) => cam(c),
-        Given::View(c, points) => {
-            let mut o = cam(c);
-            o["points"] = named(points);
-            o
-        }
+        Given::Basis(c) => GivenJson::Basis(cam(c)),
+        Given::View(c, points) => GivenJson::View {
+            camera: cam(c),
+            points,
+        },
         Given::Project {
             projection, points, ..
-        } => {
-            let kind = match projection {
-                Projection::Plane { d } => json!({ "d": d }),
-                Projection::General { zprp, zvp } => json!({ "cop": zprp, "plane": zvp }),
-                Projection::Ortho => json!({ "ortho": true }),
-            };
-            let pts: Map<String, Value> = points
-                .iter()
-                .map(|(n, v)| (n.clone(), value_json(v)))
-                .collect();
-            json!({ "projection": kind, "points": pts })
-        }
-        Given::Window(w) => {
-            let pts: Map<String, Value> = w
-                .points
-                .iter()
-                .map(|(n, v)| (n.clone(), value_json(v)))
-                .collect();
-            json!({
-                "fovy": w.fovy, "aspect": w.aspect, "near": w.near, "far": w.far,
-                "viewport": w.viewport.map(|(a, b)| [a, b]), "points": pts,
-            })
-        }
-        Given::Clip(c) => {
-            json!({ "min": c.min, "max": c.max, "from": c.ends[0], "to": c.ends[1] })
-        }
-        Given::Shade(s) => json!({
-            "model": s.model, "normal": s.normal, "view": s.view, "position": s.position,
-            "camera": s.camera, "color": s.color,
-            "ka": s.k[0], "kd": s.k[1], "ks": s.k[2], "shininess": s.k[3],
-            "specular": s.specular, "specular_requires_lit": s.specular_requires_lit,
-            "lights": s.lights,
+        } => GivenJson::Project {
+            projection: match *projection {
+                Projection::Plane { d } => ProjectionJson::Plane { d },
+                Projection::General { zprp, zvp } => ProjectionJson::General {
+                    cop: zprp,
+                    plane: zvp,
+                },
+                Projection::Ortho => ProjectionJson::Ortho { ortho: true },
+            },
+            points: plain(points, value_json),
+        },
+        Given::Window(w) => GivenJson::Window {
+            fovy: w.fovy,
+            aspect: w.aspect,
+            near: w.near,
+            far: w.far,
+            viewport: w.viewport,
+            points: plain(&w.points, value_json),
+        },
+        Given::Clip(c) => GivenJson::Clip {
+            min: c.min,
+            max: c.max,
+            from: c.ends[0],
+            to: c.ends[1],
+        },
+        Given::Shade(s) => GivenJson::Shade(ShadeJson {
+            model: s.model,
+            normal: s.normal,
+            view: s.view,
+            position: s.position,
+            camera: s.camera,
+            color: s.color,
+            ka: s.k[0],
+            kd: s.k[1],
+            ks: s.k[2],
+            shininess: s.k[3],
+            specular: s.specular,
+            specular_requires_lit: s.specular_requires_lit,
+            lights: &s.lights,
         }),
     }
 }
 
+/// A number of a problem file as JSON: its f64 value (null when it has none).
+type N = Option<f64>;
+/// A vector of a problem file.
+type V3 = [N; 3];
+
+/// A problem file's inputs: its f64 values of the numbers written.
+#[derive(Serialize)]
+pub struct ProblemJson<'a> {
+    title: &'a str,
+    statement: &'a Option<String>,
+    source: &'a Option<String>,
+    ask: Option<Vec<&'static str>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    camera: Option<CameraJson<V3>>,
+    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "some_map")]
+    points: Option<Vec<(String, V3)>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    perspective: Option<PerspectiveJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    clip: Option<ClipJson<'a>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    shade: Option<ShadeInJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    light: Option<Vec<LightJson>>,
+}
+
+/// `as_map` of a value that is there (a missing one is skipped).
+fn some_map<S: Serializer>(kv: &Option<Vec<(String, V3)>>, s: S) -> Result<S::Ok, S::Error> {
+    as_map(kv.as_deref().unwrap_or_default(), s)
+}
+
+/// A problem file's `[perspective]`.
+#[derive(Serialize)]
+pub struct PerspectiveJson {
+    near: N,
+    far: N,
+    fovy: N,
+    aspect: N,
+    viewport: Option<[N; 2]>,
+    d: N,
+}
+
+/// A segment's end: a vector, or a point's name.
+#[derive(Serialize)]
+#[serde(untagged)]
+pub enum EndJson<'a> {
+    /// Written as a vector.
+    At(V3),
+    /// A named point.
+    Named(&'a str),
+}
+
+/// A segment to clip.
+#[derive(Serialize)]
+pub struct SegmentJson<'a> {
+    from: EndJson<'a>,
+    to: EndJson<'a>,
+}
+
+/// A problem file's `[clip]`.
+#[derive(Serialize)]
+pub struct ClipJson<'a> {
+    min: V3,
+    max: V3,
+    segment: Vec<SegmentJson<'a>>,
+}
+
+/// A problem file's `[shade]`.
+#[derive(Serialize)]
+pub struct ShadeInJson {
+    model: &'static str,
+    light: Option<V3>,
+    normal: Option<V3>,
+    view: Option<V3>,
+    color: Option<V3>,
+    camera: Option<V3>,
+    position: Option<V3>,
+    ka: N,
+    kd: N,
+    ks: N,
+    shininess: N,
+}
+
+/// One of a problem file's `[[light]]`s.
+#[derive(Serialize)]
+pub struct LightJson {
+    #[serde(rename = "type")]
+    kind: &'static str,
+    direction: Option<V3>,
+    position: Option<V3>,
+    axis: Option<V3>,
+}
+
+fn n(x: &Num) -> N {
+    x.0.eval::<f64>().ok()
+}
+
+fn v3(v: &Vec3In) -> V3 {
+    [n(&v[0]), n(&v[1]), n(&v[2])]
+}
+
+fn ov(v: &Option<Vec3In>) -> Option<V3> {
+    v.as_ref().map(v3)
+}
+
 /// A problem file's inputs as JSON numbers (f64 values of the written
 /// numbers; names for named segment ends).
-fn problem(p: &ProblemIn) -> Value {
-    let n = |x: &Num| x.0.eval::<f64>().map(|v| json!(v)).unwrap_or(Value::Null);
-    let v3 = |v: &Vec3In| json!([n(&v[0]), n(&v[1]), n(&v[2])]);
-    let pref = |r: &PointRef| match r {
-        PointRef::At(v) => v3(v),
-        PointRef::Named(name) => json!(name),
+fn problem<'a>(p: &'a ProblemIn) -> ProblemJson<'a> {
+    let pref = |r: &'a PointRef| match r {
+        PointRef::At(v) => EndJson::At(v3(v)),
+        PointRef::Named(name) => EndJson::Named(name),
     };
-    let ask: Option<Vec<&str>> = (p.ask.as_ref()).map(|a| a.iter().map(|x| x.name()).collect());
-    let mut o = json!({
-        "title": p.title, "statement": p.statement, "source": p.source, "ask": ask,
-    });
-    if let Some(c) = &p.camera {
-        o["camera"] = json!({ "eye": v3(&c.eye), "look": v3(&c.look), "up": v3(&c.up) });
+    let shade = p.shade.as_ref();
+    ProblemJson {
+        title: &p.title,
+        statement: &p.statement,
+        source: &p.source,
+        ask: (p.ask.as_ref()).map(|a| a.iter().map(|x| x.name()).collect()),
+        camera: (p.camera.as_ref()).map(|c| CameraJson {
+            eye: v3(&c.eye),
+            look: v3(&c.look),
+            up: v3(&c.up),
+        }),
+        points: (p.points().ok()).map(|ps| ps.iter().map(|(k, v)| (k.clone(), v3(v))).collect()),
+        perspective: p.perspective.as_ref().map(|per| PerspectiveJson {
+            near: per.near.as_ref().and_then(n),
+            far: per.far.as_ref().and_then(n),
+            fovy: per.fovy.as_ref().and_then(|a| a.0.degrees::<f64>().ok()),
+            aspect: per.aspect.as_ref().and_then(n),
+            viewport: per.viewport.as_ref().map(|v| [n(&v[0]), n(&v[1])]),
+            d: per.d.as_ref().and_then(n),
+        }),
+        clip: p.clip.as_ref().map(|c| ClipJson {
+            min: v3(&c.min),
+            max: v3(&c.max),
+            segment: (c.segment.iter())
+                .map(|s| SegmentJson {
+                    from: pref(&s.from),
+                    to: pref(&s.to),
+                })
+                .collect(),
+        }),
+        shade: shade.map(|sh| ShadeInJson {
+            model: sh.model.unwrap_or_default().name(),
+            light: ov(&sh.light),
+            normal: ov(&sh.normal),
+            view: ov(&sh.view),
+            color: ov(&sh.color),
+            camera: ov(&sh.camera),
+            position: ov(&sh.position),
+            ka: sh.ka.as_ref().and_then(n),
+            kd: sh.kd.as_ref().and_then(n),
+            ks: sh.ks.as_ref().and_then(n),
+            shininess: sh.shininess.as_ref().and_then(n),
+        }),
+        light: (shade.is_some() && !p.light.is_empty()).then(|| lights(p)),
     }
-    if let Ok(points) = p.points() {
-        o["points"] = Value::Object(points.iter().map(|(k, v)| (k.clone(), v3(v))).collect());
-    }
-    if let Some(per) = &p.perspective {
-        o["perspective"] = json!({
-            "near": per.near.as_ref().map(n),
-            "far": per.far.as_ref().map(n),
-            "fovy": per.fovy.as_ref().and_then(|a| a.0.degrees::<f64>().ok()),
-            "aspect": per.aspect.as_ref().map(n),
-            "viewport": per.viewport.as_ref().map(|v| json!([n(&v[0]), n(&v[1])])),
-            "d": per.d.as_ref().map(n),
-        });
-    }
-    if let Some(c) = &p.clip {
-        let segs: Vec<Value> = c
-            .segment
-            .iter()
-            .map(|s| json!({ "from": pref(&s.from), "to": pref(&s.to) }))
-            .collect();
-        o["clip"] = json!({ "min": v3(&c.min), "max": v3(&c.max), "segment": segs });
-    }
-    if let Some(sh) = &p.shade {
-        let ov = |v: &Option<Vec3In>| v.as_ref().map(v3);
-        o["shade"] = json!({
-            "model": sh.model.unwrap_or_default().name(),
-            "light": ov(&sh.light), "normal": ov(&sh.normal), "view": ov(&sh.view),
-            "color": ov(&sh.color), "camera": ov(&sh.camera), "position": ov(&sh.position),
-            "ka": sh.ka.as_ref().map(n), "kd": sh.kd.as_ref().map(n),
-            "ks": sh.ks.as_ref().map(n), "shininess": sh.shininess.as_ref().map(n),
-        });
-        if !p.light.is_empty() {
-            o["light"] =
-                json!(p.light.iter().map(|l| json!({
-                "type": l.kind.name(),
-                "direction": ov(&l.direction), "position": ov(&l.position), "axis": ov(&l.axis),
-            })).collect::<Vec<_>>());
-        }
-    }
-    o
+}
+
+/// A problem file's `[[light]]`s.
+fn lights(p: &ProblemIn) -> Vec<LightJson> {
+    (p.light.iter())
+        .map(|l| LightJson {
+            kind: l.kind.name(),
+            direction: ov(&l.direction),
+            position: ov(&l.position),
+            axis: ov(&l.axis),
+        })
+        .collect()
 }
 
 /// A render's scene and settings.
-fn render_input(run: &RenderRun) -> Value {
-    json!({
-        "scene": run.scene, "output": run.output,
-        "width": run.size.0, "height": run.size.1, "shading": super::render::shading_names(run),
-        "normals": run.normals,
-        "explain_pixel": run.explain_pixel.map(|(x, y)| [x, y]),
-    })
+#[derive(Serialize)]
+pub struct RenderInput<'a> {
+    scene: &'a str,
+    output: &'a str,
+    width: u32,
+    height: u32,
+    shading: String,
+    normals: &'a str,
+    explain_pixel: Option<(u32, u32)>,
+}
+
+/// A render's scene and settings.
+fn render_input(run: &RenderRun) -> RenderInput<'_> {
+    RenderInput {
+        scene: &run.scene,
+        output: &run.output,
+        width: run.size.0,
+        height: run.size.1,
+        shading: super::render::shading_names(run),
+        normals: &run.normals,
+        explain_pixel: run.explain_pixel,
+    }
+}
+
+/// A worked solution as JSON (docs/spec.md §3).
+#[derive(Serialize)]
+pub struct SolutionJson<'a> {
+    command: &'static str,
+    precision: Precision,
+    input: Input<'a>,
+    result: Map<String, Value>,
+    exact: Map<String, Value>,
+    steps: Vec<StepJson>,
+    warnings: Vec<String>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    notes: Vec<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    stats: Option<StatsJson<'a>>,
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    source_notes: &'a [String],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    comparison: Option<Vec<ComparedJson<'a>>>,
 }
 
 impl Report {
     /// The docs/spec.md §3 JSON object; only its human-readable strings (titles,
     /// notes, warnings) depend on `lang`.
-    pub fn to_json(&self, lang: Lang) -> Value {
+    pub fn to_json(&self, lang: Lang) -> SolutionJson<'_> {
         let style = Style::new(4, true, lang);
         let answer = self.answer();
-        let result = Value::Object(
-            answer
-                .iter()
-                .map(|(k, v)| (k.clone(), value_json(v)))
-                .collect(),
-        );
-        let exact = Value::Object(
-            answer
-                .iter()
-                .map(|(k, v)| (k.clone(), exact_json(v)))
-                .collect(),
-        );
-        let steps: Vec<Value> = self.steps.iter().map(|s| step_json(s, lang)).collect();
-        let warnings: Vec<String> = self.warnings.iter().map(|w| style.w(w)).collect();
-        let mut obj = json!({
-            "command": self.command(),
-            "precision": self.precision,
-            "input": input(self),
-            "result": result,
-            "exact": exact,
-            "steps": steps,
-            "warnings": warnings,
-        });
-        let notes = self.all_notes(&style);
-        if !notes.is_empty() {
-            obj["notes"] = json!(notes);
+        SolutionJson {
+            command: self.command(),
+            precision: self.precision,
+            input: input(self),
+            result: plain(&answer, value_json),
+            exact: plain(&answer, exact_json),
+            steps: self.steps.iter().map(|s| step_json(s, lang)).collect(),
+            warnings: self.warnings.iter().map(|w| style.w(w)).collect(),
+            notes: self.all_notes(&style),
+            stats: match &self.asked {
+                Asked::Render(run) => Some(super::render::stats_json(run)),
+                _ => None,
+            },
+            source_notes: &self.source_notes,
+            comparison: (self.comparison.as_ref())
+                .map(|c| c.rows.iter().map(|r| compared_json(r, lang)).collect()),
         }
-        if let Asked::Render(run) = &self.asked {
-            obj["stats"] = super::render::stats_json(run);
-        }
-        if !self.source_notes.is_empty() {
-            obj["source_notes"] = json!(self.source_notes);
-        }
-        if let Some(c) = &self.comparison {
-            obj["comparison"] = c.rows.iter().map(|r| compared_json(r, lang)).collect();
-        }
-        obj
     }
 }
 
 /// One compared answer as JSON (`kind`: the erratum's, a code).
-fn compared_json(r: &Compared, lang: Lang) -> Value {
-    json!({
-        "key": r.key,
-        "printed": r.printed,
-        "computed": r.computed.as_ref().map(value_json),
-        "agrees": r.agrees,
-        "kind": r.kind,
-        "why": r.why.as_ref().map(|w| crate::report::words::words(w, lang)),
-    })
+#[derive(Serialize)]
+pub struct ComparedJson<'a> {
+    key: &'a str,
+    printed: &'a str,
+    computed: Option<Value>,
+    agrees: Option<bool>,
+    kind: Option<crate::msg::Erratum>,
+    why: Option<String>,
+}
+
+/// One compared answer as JSON.
+fn compared_json(r: &Compared, lang: Lang) -> ComparedJson<'_> {
+    ComparedJson {
+        key: &r.key,
+        printed: &r.printed,
+        computed: r.computed.as_ref().map(value_json),
+        agrees: r.agrees,
+        kind: r.kind,
+        why: r.why.as_ref().map(|w| words::words(w, lang)),
+    }
+}
+
+/// A value as `{"decimal": …, "exact": …}` (`check`'s `expected`, an
+/// exam's answers, practice's).
+#[derive(Serialize)]
+pub struct Both {
+    decimal: Value,
+    exact: Value,
+}
+
+/// A value's plain numbers and exact forms.
+pub fn both(v: &Val) -> Both {
+    Both {
+        decimal: value_json(v),
+        exact: exact_json(v),
+    }
 }
 
 /// A value with plain numbers.
@@ -243,35 +524,49 @@ fn shaped(v: &Val, num: &dyn Fn(&Shown) -> Value) -> Value {
     }
 }
 
+/// A step's values and results with their exact forms.
+#[derive(Serialize)]
+pub struct StepExact {
+    values: Map<String, Value>,
+    result: Map<String, Value>,
+}
+
+/// A step as JSON (docs/spec.md §3).
+#[derive(Serialize)]
+pub struct StepJson {
+    title: String,
+    formula: String,
+    values: Map<String, Value>,
+    result: Map<String, Value>,
+    exact: StepExact,
+    /// The notation with the numbers written the English way, like `exact`.
+    #[serde(skip_serializing_if = "Map::is_empty")]
+    substituted: Map<String, Value>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    section: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    note: Option<String>,
+}
+
 /// A step as JSON (docs/spec.md §3); its title, formula, section and note in `lang`.
-pub fn step_json(s: &Step, lang: Lang) -> Value {
+pub fn step_json(s: &Step, lang: Lang) -> StepJson {
     let w = |m: &Msg| words::words(m, lang);
-    let obj = |kv: &[(Name, Val)], f: fn(&Val) -> Value| {
-        Value::Object(kv.iter().map(|(k, v)| (k.to_string(), f(v))).collect())
-    };
-    let mut o = json!({
-        "title": w(&s.title),
-        "formula": w(&s.formula),
-        "values": obj(&s.values, value_json),
-        "result": obj(&s.result, value_json),
-        "exact": { "values": obj(&s.values, exact_json), "result": obj(&s.result, exact_json) },
-    });
-    if !s.subs.is_empty() {
-        // notation with the numbers written the English way, like `exact`
-        let en = Style::new(4, true, Lang::En);
-        let subs = s
-            .subs
-            .iter()
-            .map(|(k, x)| (k.to_string(), json!(en.subst(x))));
-        o["substituted"] = Value::Object(subs.collect());
+    let en = Style::new(4, true, Lang::En);
+    StepJson {
+        title: w(&s.title),
+        formula: w(&s.formula),
+        values: plain(&s.values, value_json),
+        result: plain(&s.result, value_json),
+        exact: StepExact {
+            values: plain(&s.values, exact_json),
+            result: plain(&s.result, exact_json),
+        },
+        substituted: (s.subs.iter())
+            .map(|(k, x)| (k.to_string(), Value::String(en.subst(x))))
+            .collect(),
+        section: s.section.as_ref().map(w),
+        note: s.note.as_ref().map(w),
     }
-    if let Some(sec) = &s.section {
-        o["section"] = json!(w(sec));
-    }
-    if let Some(n) = &s.note {
-        o["note"] = json!(w(n));
-    }
-    o
 }
 
 #[cfg(test)]
@@ -281,6 +576,7 @@ mod tests {
     use crate::input::problem::PerspectiveIn;
     use crate::input::{angle, num, size};
     use crate::tutor::solve::solve_problem;
+    use serde_json::json;
 
     /// A calculator command's input is its one part as the stages took it:
     /// at f32, near typed `0,1` is the f32 nearest 1/10, written by the
@@ -311,7 +607,7 @@ mod tests {
             "fovy": 45.0, "aspect": 2.0, "near": 0.1, "far": null,
             "viewport": [200.0, 100.0], "points": { "A": [0.0, 0.01] },
         });
-        assert_eq!(input(&r), want);
+        assert_eq!(serde_json::to_value(input(&r)).unwrap(), want);
     }
 
     /// A problem file's input is its tables as written, at f64, with the
@@ -322,7 +618,7 @@ mod tests {
                     [perspective]\nnear = '1/10'\nfovy = 90\naspect = 2\n";
         let p = ProblemIn::parse(text, "t.toml").unwrap();
         let r = crate::tutor::solve::solve::<f32>(&p).unwrap();
-        let i = input(&r);
+        let i = serde_json::to_value(input(&r)).unwrap();
         assert_eq!(i["title"], "t");
         assert_eq!(i["statement"], "s");
         assert_eq!(i["perspective"]["near"], json!(0.1));

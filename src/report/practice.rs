@@ -6,16 +6,18 @@ use crate::input::answer::Read;
 use crate::msg::PracticeWord as P;
 use crate::msg::{DocWord, Msg};
 use crate::num::Real;
-use crate::report::json::{exact_json, step_json, value_json};
+use crate::report::json::{both, plain, step_json, value_json, Both, StepJson};
 use crate::report::lang::{Lang, NumStyle};
 use crate::report::mistakes::mistake_text;
 use crate::report::words;
 use crate::report::Style;
 use crate::stages::trace::{Step, Val};
 use crate::tutor::check::Verdict;
+use crate::tutor::diagnose::Code;
 use crate::tutor::key::{self, Field, Key};
 use crate::tutor::practice::{Again, Event, Outcome, Plan, Summary};
-use serde_json::{json, Value};
+use serde::Serialize;
+use serde_json::{Map, Value};
 
 /// Lines are wrapped to this many columns.
 pub const WIDTH: usize = 78;
@@ -426,13 +428,58 @@ fn shape(key: &Key, expected: &Val, lang: Lang) -> String {
     }
 }
 
-/// A value as `{"decimal": ..., "exact": ...}` (as `check` gives `expected`).
-fn value(v: &Val) -> Value {
-    json!({ "decimal": value_json(v), "exact": exact_json(v) })
+/// One event as a JSON object (one line of JSON Lines), its kind first.
+// one event is made and written at a time: its size costs nothing
+#[allow(clippy::large_enum_variant)]
+#[derive(Serialize)]
+#[serde(tag = "event", rename_all = "snake_case")]
+pub enum EventJson<'a> {
+    /// A value asked.
+    Ask {
+        key: &'a Key,
+        index: usize,
+        total: usize,
+        again: &'a Option<Again>,
+    },
+    /// An answer judged.
+    Verdict {
+        key: &'a Key,
+        given: &'a Option<String>,
+        read: Option<Value>,
+        verdict: &'static str,
+        code: &'static str,
+        expected: Both,
+        note: String,
+        mistakes: &'a [Code],
+        why: Option<String>,
+        follow_through: Option<Value>,
+        retry: bool,
+        shown: bool,
+    },
+    /// A hint: the step's title and formula, at level 2 its values.
+    Hint {
+        key: &'a Key,
+        level: u8,
+        revealed: &'a [Key],
+        title: Option<String>,
+        formula: Option<String>,
+        values: Option<Map<String, Value>>,
+    },
+    /// A value shown, with its step.
+    Show {
+        key: &'a Key,
+        expected: Both,
+        revealed: &'a [Key],
+        step: Option<StepJson>,
+    },
+    /// A value skipped.
+    Skip { key: &'a Key },
+    /// The session's summary.
+    Summary(SummaryJson<'a>),
 }
 
 /// One event as a JSON object (one line of JSON Lines).
-pub fn event_json(ev: &Event, lang: Lang) -> Value {
+pub fn event_json(ev: &Event, lang: Lang) -> EventJson<'_> {
     let w = |m: &crate::msg::Msg| crate::report::words::words(m, lang);
     match ev {
         Event::Ask {
@@ -441,70 +488,145 @@ pub fn event_json(ev: &Event, lang: Lang) -> Value {
             key,
             again,
             ..
-        } => json!({
-            "event": "ask", "key": key.to_string(), "index": index + 1, "total": total,
-            "again": again.as_ref().map(|a| match a {
-                Again::Empty => "empty",
-                Again::Unreadable => "unreadable",
-                Again::NothingBefore => "nothing_before",
-                Again::NoMoreHints => "no_more_hints",
-            }),
-        }),
-        Event::Verdict(o) => json!({
-            "event": "verdict", "key": o.key.to_string(), "given": o.given,
-            "read": o.read.as_ref().map(|r| value_json(&r.value())),
-            "verdict": o.verdict.word(), "code": o.verdict.name(),
-            "expected": value(&o.expected), "note": w(&o.note),
-            "mistakes": o.mistakes,
-            "why": o.why.as_ref().map(w),
-            "follow_through": o.follow_through.as_ref().map(value_json),
-            "retry": o.retry, "shown": o.shown,
-        }),
+        } => EventJson::Ask {
+            key,
+            index: index + 1,
+            total: *total,
+            again,
+        },
+        Event::Verdict(o) => EventJson::Verdict {
+            key: &o.key,
+            given: &o.given,
+            read: o.read.as_ref().map(|r| value_json(&r.value())),
+            verdict: o.verdict.word(),
+            code: o.verdict.name(),
+            expected: both(&o.expected),
+            note: w(&o.note),
+            mistakes: &o.mistakes,
+            why: o.why.as_ref().map(w),
+            follow_through: o.follow_through.as_ref().map(value_json),
+            retry: o.retry,
+            shown: o.shown,
+        },
         Event::Hint {
             key,
             level,
             step,
             also,
-        } => json!({
-            "event": "hint", "key": key.to_string(), "level": level,
-            "revealed": also.iter().map(Key::to_string).collect::<Vec<_>>(),
-            "title": step.as_ref().map(|s| w(&s.title)),
-            "formula": step.as_ref().map(|s| w(&s.formula)),
-            "values": step.as_ref().filter(|_| *level >= 2).map(|s| {
-                Value::Object(s.values.iter().map(|(k, v)| (k.to_string(), value_json(v))).collect())
-            }),
-        }),
+        } => EventJson::Hint {
+            key,
+            level: *level,
+            revealed: also,
+            title: step.as_ref().map(|s| w(&s.title)),
+            formula: step.as_ref().map(|s| w(&s.formula)),
+            values: (step.as_ref().filter(|_| *level >= 2)).map(|s| plain(&s.values, value_json)),
+        },
         Event::Show {
             key,
             expected,
             step,
             also,
-        } => json!({
-            "event": "show", "key": key.to_string(), "expected": value(expected),
-            "revealed": also.iter().map(Key::to_string).collect::<Vec<_>>(),
-            "step": step.as_ref().map(|s| step_json(s, lang)),
-        }),
-        Event::Skip { key } => json!({ "event": "skip", "key": key.to_string() }),
-        Event::Summary(s) => summary_json(s, lang),
+        } => EventJson::Show {
+            key,
+            expected: both(expected),
+            revealed: also,
+            step: step.as_ref().map(|s| step_json(s, lang)),
+        },
+        Event::Skip { key } => EventJson::Skip { key },
+        Event::Summary(s) => EventJson::Summary(summary_json(s, lang)),
     }
 }
 
-fn summary_json(s: &Summary, lang: Lang) -> Value {
-    json!({
-        "event": "summary",
-        "score": { "points": s.points, "total": s.total,
-                   "fraction": if s.total == 0 { 1.0 } else { s.points / f64::from(s.total) } },
-        "steps": s.steps,
-        "counts": {
-            "correct": s.correct, "follow_through": s.follow_through,
-            "too_coarse": s.too_coarse, "wrong": s.wrong, "skipped": s.skipped,
-            "revealed": s.revealed, "unanswered": s.unanswered,
+/// A session's summary.
+#[derive(Serialize)]
+pub struct SummaryJson<'a> {
+    score: ScoreJson,
+    steps: usize,
+    counts: CountsJson,
+    hints: usize,
+    retries: RetriesJson,
+    mistakes: Vec<MistakeJson<'a>>,
+    next: NextJson,
+}
+
+/// The marks of a session.
+#[derive(Serialize)]
+struct ScoreJson {
+    points: f64,
+    total: u32,
+    fraction: f64,
+}
+
+/// The values of a session by how they ended.
+#[derive(Serialize)]
+struct CountsJson {
+    correct: usize,
+    follow_through: usize,
+    too_coarse: usize,
+    wrong: usize,
+    skipped: usize,
+    revealed: usize,
+    unanswered: usize,
+}
+
+/// The second tries, and how many of them were right.
+#[derive(Serialize)]
+struct RetriesJson {
+    answered: usize,
+    correct: usize,
+}
+
+/// A mistake made in a session, with the values it explains.
+#[derive(Serialize)]
+struct MistakeJson<'a> {
+    code: Code,
+    mistake: &'static str,
+    keys: &'a [Key],
+}
+
+/// What to practise next.
+#[derive(Serialize)]
+struct NextJson {
+    topic: &'static str,
+    difficulty: &'static str,
+}
+
+fn summary_json(s: &Summary, lang: Lang) -> SummaryJson<'_> {
+    SummaryJson {
+        score: ScoreJson {
+            points: s.points,
+            total: s.total,
+            fraction: if s.total == 0 {
+                1.0
+            } else {
+                s.points / f64::from(s.total)
+            },
         },
-        "hints": s.hints,
-        "retries": { "answered": s.retries, "correct": s.retries_correct },
-        "mistakes": s.mistakes.iter().map(|(m, keys)| json!({
-            "code": m, "mistake": mistake_text(*m, lang), "keys": keys.iter().map(Key::to_string).collect::<Vec<_>>(),
-        })).collect::<Vec<_>>(),
-        "next": { "topic": s.next.0.name(), "difficulty": s.next.1.name() },
-    })
+        steps: s.steps,
+        counts: CountsJson {
+            correct: s.correct,
+            follow_through: s.follow_through,
+            too_coarse: s.too_coarse,
+            wrong: s.wrong,
+            skipped: s.skipped,
+            revealed: s.revealed,
+            unanswered: s.unanswered,
+        },
+        hints: s.hints,
+        retries: RetriesJson {
+            answered: s.retries,
+            correct: s.retries_correct,
+        },
+        mistakes: (s.mistakes.iter())
+            .map(|(m, keys)| MistakeJson {
+                code: *m,
+                mistake: mistake_text(*m, lang),
+                keys,
+            })
+            .collect(),
+        next: NextJson {
+            topic: s.next.0.name(),
+            difficulty: s.next.1.name(),
+        },
+    }
 }

@@ -11,7 +11,6 @@ pub use crate::msg::{PerPixel, Summary};
 use crate::render::Stats;
 use crate::stages::trace::Val;
 use crate::tutor::solution::{RenderRun, Times};
-use serde_json::{json, Value};
 
 /// The summary: image, size, shading, counts and the frame time (frame,
 /// PNG encoding, Mpixels/s).
@@ -53,20 +52,37 @@ pub fn per_pixel_of(shadings: &[Shading]) -> PerPixel {
     }
 }
 
-/// The JSON's `stats`: the counters and the median times.
-pub fn stats_json(run: &RenderRun) -> Value {
-    let (st, t) = (&run.stats, &run.times);
-    json!({
-        "triangles_in": st.tris_in, "culled": st.culled, "rejected": st.rejected,
-        "objects_rejected": st.objects_rejected, "objects_inside": st.objects_inside,
-        "clipped": st.clipped, "drawn": st.drawn, "no_pixels": st.no_pixels,
-        "pixels_shaded": st.pixels_shaded, "lighting_evaluations": st.lighting_evals,
-        "lights_skipped": st.lights_skipped, "specular_skipped": st.specular_skipped,
-        "frame_ms": t.frame, "geometry_ms": t.geometry,
-        "binning_ms": t.binning, "raster_ms": t.raster,
-        "shading_ms": t.shading, "bands_ms": t.bands, "png_ms": t.png,
-        "repeat": t.runs, "mpixels_per_s": run.mpixels_per_s,
-    })
+/// The JSON's `stats`: the counters, then the median times.
+#[derive(serde::Serialize)]
+pub struct StatsJson<'a> {
+    #[serde(flatten)]
+    counts: &'a Stats,
+    frame_ms: f64,
+    geometry_ms: f64,
+    binning_ms: f64,
+    raster_ms: f64,
+    shading_ms: f64,
+    bands_ms: f64,
+    png_ms: f64,
+    repeat: usize,
+    mpixels_per_s: f64,
+}
+
+/// The JSON's `stats` of a render.
+pub fn stats_json(run: &RenderRun) -> StatsJson<'_> {
+    let t = &run.times;
+    StatsJson {
+        counts: &run.stats,
+        frame_ms: t.frame,
+        geometry_ms: t.geometry,
+        binning_ms: t.binning,
+        raster_ms: t.raster,
+        shading_ms: t.shading,
+        bands_ms: t.bands,
+        png_ms: t.png,
+        repeat: t.runs,
+        mpixels_per_s: run.mpixels_per_s,
+    }
 }
 
 /// `--stats`: counts of the pipeline's work and the median time of each

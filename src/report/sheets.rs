@@ -3,8 +3,9 @@
 //! and the whole exam as JSON.
 
 use crate::msg::DocWord;
+use crate::report::blueprint::BlueprintJson;
 use crate::report::doc::Doc;
-use crate::report::json::{exact_json, value_json};
+use crate::report::json::{as_map, both, Both, SolutionJson};
 use crate::report::lang::Lang;
 use crate::report::words::{self, words};
 use crate::report::Style;
@@ -12,7 +13,7 @@ use crate::stages::trace::Val;
 use crate::tutor::generate::{key_lines, problem_name, topics_name, Difficulty, Generated, Topic};
 use crate::tutor::key::Key;
 use crate::tutor::solution::value_of;
-use serde_json::{json, Value};
+use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -114,37 +115,79 @@ pub fn sheets(doc: Doc, exam: &[Generated], st: &Style) -> (String, String) {
 
 /// The whole exam as JSON: statements, answers (decimal and exact) and the
 /// worked solutions.
-pub fn exam_json(title: &str, seed: u64, variant: u32, exam: &[Generated], lang: Lang) -> Value {
-    let problems: Vec<Value> = exam
-        .iter()
-        .enumerate()
-        .map(|(i, g)| {
-            let answers: serde_json::Map<String, Value> = answers(g)
-                .iter()
-                .map(|(k, v)| {
-                    let both = json!({ "decimal": value_json(v), "exact": exact_json(v) });
-                    (k.clone(), both)
-                })
-                .collect();
-            json!({
-                "file": format!("{}.toml", problem_name(i + 1)),
-                "title": words(&g.title, lang),
-                "statement": words(&g.statement, lang),
-                "keys": g.keys.iter().map(Key::to_string).collect::<Vec<_>>(),
-                "marks": g.scheme.items.iter().map(|i| (i.key.to_string(), json!(i.marks))).collect::<serde_json::Map<String, Value>>(),
-                "total": g.scheme.total(),
-                "answers": answers,
-                "solution": g.report.to_json(lang),
-            })
-        })
-        .collect();
-    json!({ "title": title, "seed": seed, "variant": variant, "problems": problems })
+#[derive(Serialize)]
+pub struct ExamJson<'a> {
+    title: &'a str,
+    seed: u64,
+    variant: u32,
+    problems: Vec<ProblemJson<'a>>,
+}
+
+/// One problem of an exam: its file, words, keys and marks, answers and
+/// worked solution.
+#[derive(Serialize)]
+struct ProblemJson<'a> {
+    file: String,
+    title: String,
+    statement: String,
+    keys: &'a [Key],
+    #[serde(serialize_with = "as_map")]
+    marks: Vec<(String, u32)>,
+    total: u32,
+    #[serde(serialize_with = "as_map")]
+    answers: Vec<(String, Both)>,
+    solution: SolutionJson<'a>,
+}
+
+/// The whole exam as JSON.
+pub fn exam_json<'a>(
+    title: &'a str,
+    seed: u64,
+    variant: u32,
+    exam: &'a [Generated],
+    lang: Lang,
+) -> ExamJson<'a> {
+    let problem = |(i, g): (usize, &'a Generated)| ProblemJson {
+        file: format!("{}.toml", problem_name(i + 1)),
+        title: words(&g.title, lang),
+        statement: words(&g.statement, lang),
+        keys: &g.keys,
+        marks: (g.scheme.items.iter())
+            .map(|i| (i.key.to_string(), i.marks))
+            .collect(),
+        total: g.scheme.total(),
+        answers: answers(g)
+            .iter()
+            .map(|(k, v)| (k.clone(), both(v)))
+            .collect(),
+        solution: g.report.to_json(lang),
+    };
+    ExamJson {
+        title,
+        seed,
+        variant,
+        problems: exam.iter().enumerate().map(problem).collect(),
+    }
+}
+
+/// What `generate --json` prints: the files written, with the seed and
+/// the blueprint.
+#[derive(Serialize)]
+struct WrittenJson<'a> {
+    command: &'static str,
+    seed: u64,
+    files: Vec<String>,
+    blueprint: &'a BlueprintJson,
 }
 
 /// What `generate --json` prints: the files written, with the seed.
-pub fn written_json(files: &[PathBuf], seed: u64, blueprint: Value) -> String {
-    let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
-    let j = json!({ "command": "generate", "seed": seed, "files": names, "blueprint": blueprint });
+pub fn written_json(files: &[PathBuf], seed: u64, blueprint: &BlueprintJson) -> String {
+    let j = WrittenJson {
+        command: "generate",
+        seed,
+        files: files.iter().map(|f| f.display().to_string()).collect(),
+        blueprint,
+    };
     serde_json::to_string_pretty(&j).unwrap_or_default() + "\n"
 }
 

@@ -152,7 +152,7 @@ pub struct Gift;
 pub struct Csv;
 
 /// A JSON value as the files and standard output have it.
-fn pretty(v: &serde_json::Value) -> String {
+fn pretty(v: &impl serde::Serialize) -> String {
     serde_json::to_string_pretty(v).unwrap_or_default() + "\n"
 }
 

@@ -255,8 +255,9 @@ pub fn read_input(line: &str) -> Input {
     }
 }
 
-/// Why a value is asked again.
-#[derive(Clone, Debug, PartialEq)]
+/// Why a value is asked again (its JSON: `empty`, `nothing_before`, …).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Again {
     /// An empty line.
     Empty,

@@ -8,13 +8,15 @@ pub(crate) mod page;
 
 use crate::error::Error;
 use crate::msg::ClassWord as C;
-use crate::report::check::to_json;
+use crate::report::check::{problems_json, to_json, MarkingJson};
+use crate::report::json::Fault;
 use crate::report::lang::Lang;
 use crate::report::words;
 use crate::report::words::cut_message;
 use crate::tutor::check::{Marking, Verdict};
+use crate::tutor::class::roster::Listed;
 use crate::tutor::class::{Class, Note, Sheet, Skip};
-use serde_json::{json, Value};
+use serde::Serialize;
 
 /// What was done with an unusual answer file, in words.
 pub fn note_words(n: Note, lang: Lang) -> &'static str {
@@ -190,15 +192,33 @@ pub fn roster_lists(class: &Class, lang: Lang) -> Vec<(String, Vec<String>)> {
 }
 
 /// The class list as JSON (`roster`): `listed` (how many), `missing`
-/// (`name`, `nim`), `not_listed` (`student`, `file`); null without one.
-pub fn roster_json(class: &Class) -> Value {
-    let Some(r) = &class.roster else {
-        return Value::Null;
-    };
-    json!({
-        "listed": r.listed.len(),
-        "missing": r.missing.iter().map(|l| json!({ "name": l.name, "nim": l.nim })).collect::<Vec<_>>(),
-        "not_listed": r.not_listed.iter().map(|(who, f)| json!({ "student": who, "file": f.display().to_string() })).collect::<Vec<_>>(),
+/// (`name`, `nim`), `not_listed` (`student`, `file`).
+#[derive(Serialize)]
+pub struct RosterJson<'a> {
+    listed: usize,
+    missing: &'a [Listed],
+    not_listed: Vec<FileJson<'a>>,
+}
+
+/// A student's answer file.
+#[derive(Serialize)]
+pub struct FileJson<'a> {
+    student: &'a str,
+    file: String,
+}
+
+/// The class list as JSON; null without one.
+pub fn roster_json(class: &Class) -> Option<RosterJson<'_>> {
+    let r = class.roster.as_ref()?;
+    Some(RosterJson {
+        listed: r.listed.len(),
+        missing: &r.missing,
+        not_listed: (r.not_listed.iter())
+            .map(|(who, f)| FileJson {
+                student: who,
+                file: f.display().to_string(),
+            })
+            .collect(),
     })
 }
 
@@ -227,17 +247,23 @@ pub fn fits_words(s: &Sheet, lang: Lang) -> Option<String> {
     }))
 }
 
-/// A sheet's duplicate and fits as JSON fields (`duplicate_of`, `fits`).
-fn checks_json(s: &Sheet, j: &mut Value) {
-    if let Some((kept, why)) = &s.duplicate {
-        j["duplicate_of"] = json!({ "file": kept.display().to_string(), "same": why.code() });
-    }
-    if let Some(f) = s.fits {
-        j["fits"] = json!({ "variant": f.variant, "there": round4(f.there), "own": round4(f.own) });
-    }
+/// The file a duplicate sheet is a copy of, and why.
+#[derive(Serialize)]
+struct DuplicateJson {
+    file: String,
+    same: &'static str,
 }
 
-fn round4(x: f64) -> f64 {
+/// The variant whose key a sheet's answers fit, and how well (to 4
+/// decimals): there and in its own variant.
+#[derive(Serialize)]
+struct FitsJson {
+    variant: usize,
+    there: f64,
+    own: f64,
+}
+
+pub(super) fn round4(x: f64) -> f64 {
     (x * 1e4).round() / 1e4
 }
 
@@ -287,66 +313,146 @@ pub fn csv(sheets: &[Sheet], exam: bool, lang: Lang) -> String {
 /// The class as JSON: each student's marking (an exam's: each problem's,
 /// under `problems`), or the error of a file that could not be marked, and
 /// the entries skipped.
-pub fn json(class: &Class, lang: Lang) -> Value {
-    json!({
-        "command": "check",
-        "title": class.title,
-        "students": class.sheets.iter().map(|s| sheet_json(s, class.exam, lang)).collect::<Vec<_>>(),
-        "skipped": class.skipped.iter().map(|(f, why)| json!({ "file": f.display().to_string(), "reason": skip_words(*why, lang) })).collect::<Vec<_>>(),
-        "roster": roster_json(class),
-    })
+#[derive(Serialize)]
+pub struct ClassJson<'a> {
+    command: &'static str,
+    title: &'a str,
+    students: Vec<SheetJson<'a>>,
+    skipped: Vec<SkippedJson>,
+    roster: Option<RosterJson<'a>>,
 }
 
-fn sheet_json(s: &Sheet, exam: bool, lang: Lang) -> Value {
-    let mut j = sheet_marks_json(s, exam, lang);
-    checks_json(s, &mut j);
-    j
+/// An entry of the answers folder skipped, and why in words.
+#[derive(Serialize)]
+struct SkippedJson {
+    file: String,
+    reason: &'static str,
 }
 
-fn sheet_marks_json(s: &Sheet, exam: bool, lang: Lang) -> Value {
-    let file = s.file.display().to_string();
-    match (&s.outcome, exam) {
-        (Ok(ms), false) if ms.len() == 1 => {
-            let mut j = to_json(&ms[0].1, lang);
-            j["file"] = json!(file);
-            j
-        }
-        (Ok(ms), _) => {
-            let (score, total, _) = counts(ms);
-            let problems: Vec<Value> = ms
-                .iter()
-                .map(|(name, m)| {
-                    let mut j = to_json(m, lang);
-                    j["problem"] = json!(name);
-                    j
-                })
-                .collect();
-            json!({
-                "student": s.who, "file": file, "variant": variant_json(s),
-                "score": { "points": score, "total": total },
-                "problems": problems,
+/// The class as JSON.
+pub fn json(class: &Class, lang: Lang) -> ClassJson<'_> {
+    ClassJson {
+        command: "check",
+        title: &class.title,
+        students: (class.sheets.iter())
+            .map(|s| sheet_json(s, class.exam, lang))
+            .collect(),
+        skipped: (class.skipped.iter())
+            .map(|(f, why)| SkippedJson {
+                file: f.display().to_string(),
+                reason: skip_words(*why, lang),
             })
-        }
-        (Err(e), _) => {
-            let mut j = json!({
-                "student": s.who,
-                "file": file,
-                "error": { "field": e.field, "message": crate::report::words::words(&e.message, lang) },
-            });
-            if exam {
-                j["variant"] = variant_json(s);
-            }
-            j
-        }
+            .collect(),
+        roster: roster_json(class),
     }
 }
 
-/// A sheet's variant in JSON: its number, or the list of each problem's
-/// variant when they were drawn from different variants (`[2, 1, 2]`).
-pub(super) fn variant_json(s: &Sheet) -> Value {
+/// One student's sheet: its marks, then the file it duplicates and the
+/// variant its answers fit, when so.
+#[derive(Serialize)]
+struct SheetJson<'a> {
+    #[serde(flatten)]
+    marks: SheetMarks<'a>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    duplicate_of: Option<DuplicateJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    fits: Option<FitsJson>,
+}
+
+/// A sheet's marks: a lone problem's marking (with its `file`), an
+/// exam's, or the error of a file that could not be marked.
+#[derive(Serialize)]
+#[serde(untagged)]
+enum SheetMarks<'a> {
+    One(MarkingJson<'a>),
+    Exam {
+        student: &'a str,
+        file: String,
+        variant: VariantJson<'a>,
+        score: ScoreJson,
+        problems: Vec<MarkingJson<'a>>,
+    },
+    Failed {
+        student: &'a str,
+        file: String,
+        error: Fault<'a>,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        variant: Option<VariantJson<'a>>,
+    },
+}
+
+/// An exam's score over its problems.
+#[derive(Serialize)]
+struct ScoreJson {
+    points: f64,
+    total: usize,
+}
+
+fn sheet_json(s: &Sheet, exam: bool, lang: Lang) -> SheetJson<'_> {
+    SheetJson {
+        marks: sheet_marks_json(s, exam, lang),
+        duplicate_of: (s.duplicate.as_ref()).map(|(kept, why)| DuplicateJson {
+            file: kept.display().to_string(),
+            same: why.code(),
+        }),
+        fits: s.fits.map(|f| FitsJson {
+            variant: f.variant,
+            there: round4(f.there),
+            own: round4(f.own),
+        }),
+    }
+}
+
+fn sheet_marks_json(s: &Sheet, exam: bool, lang: Lang) -> SheetMarks<'_> {
+    let file = s.file.display().to_string();
+    match (&s.outcome, exam) {
+        (Ok(ms), false) if ms.len() == 1 => {
+            let mut one = to_json(&ms[0].1, lang);
+            one.file = Some(file);
+            SheetMarks::One(one)
+        }
+        (Ok(ms), _) => {
+            let (points, total, _) = counts(ms);
+            SheetMarks::Exam {
+                student: &s.who,
+                file,
+                variant: variant_json(s),
+                score: ScoreJson { points, total },
+                problems: problems_json(ms, lang),
+            }
+        }
+        (Err(e), _) => SheetMarks::Failed {
+            student: &s.who,
+            file,
+            error: fault(e, lang),
+            variant: exam.then(|| variant_json(s)),
+        },
+    }
+}
+
+/// An error of a file that could not be marked: its field and its words.
+pub(super) fn fault(e: &Error, lang: Lang) -> Fault<'_> {
+    Fault {
+        field: &e.field,
+        message: crate::report::words::words(&e.message, lang),
+    }
+}
+
+/// A sheet's variant in JSON: its number (null when none), or the list of
+/// each problem's variant when they were drawn from different variants
+/// (`[2, 1, 2]`).
+#[derive(Serialize)]
+#[serde(untagged)]
+pub(super) enum VariantJson<'a> {
+    Each(&'a [usize]),
+    One(Option<usize>),
+}
+
+/// A sheet's variant in JSON.
+pub(super) fn variant_json(s: &Sheet) -> VariantJson<'_> {
     match s.drawn.first() {
-        Some(first) if s.drawn.iter().any(|d| d != first) => json!(s.drawn),
-        Some(first) => json!(first),
-        None => json!(s.variant),
+        Some(first) if s.drawn.iter().any(|d| d != first) => VariantJson::Each(&s.drawn),
+        Some(first) => VariantJson::One(Some(*first)),
+        None => VariantJson::One(s.variant),
     }
 }

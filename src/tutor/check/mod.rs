@@ -57,7 +57,7 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-3;
 pub const DEFAULT_SIG_FIGS: u32 = 2;
 
 /// How answers are marked.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct Settings {
     /// Relative tolerance.
     pub tolerance: f64,

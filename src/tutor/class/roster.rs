@@ -12,7 +12,7 @@ use crate::msg::ErrMsg;
 use std::path::{Path, PathBuf};
 
 /// One student of the class list.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct Listed {
     /// The name as the list writes it.
     pub name: String,

@@ -151,7 +151,7 @@ pub struct WrongAnswers {
 
 /// One bar of the histogram: the students whose score is at least `from`
 /// and below `to` percent of the marks (the last bar includes 100).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct Bin {
     /// From, in percent.
     pub from: u32,
@@ -176,7 +176,8 @@ pub struct ProblemStats {
 
 /// A variant's facility on a problem set against the rest of the class's
 /// ([`compare`]).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
 pub enum Gap {
     /// Significantly below the rest of the class.
     Harder,
