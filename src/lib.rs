@@ -8,7 +8,7 @@
 //! |---|---|
 //! | [`cli`] | the command line: clap arguments, flags read into the typed problem, dispatch, printing, exit codes |
 //! | [`report`] | the one place where words for people are made: a report written as text, JSON, Markdown, LaTeX, HTML and figures, in every language, each format one type of [`report::writer`] implementing the traits of what it writes; each language is one module of [`report::words`] implementing its [`report::words::Words`] (one trait per family of keys, every method an exhaustive match), so a third language is one more module the compiler checks (docs/contributing.md) |
-//! | [`tutor`] | the one solver (a problem's parts run through the stages, [`tutor::run`]), the report as data ([`tutor::solution`]), mark answers (check), the mistake catalog, generate exams |
+//! | [`tutor`] | the one solver (a problem's parts run through the stages, one module per part, [`tutor::parts`]), the report as data ([`tutor::solution`]), mark answers (check), the mistake catalog, generate exams |
 //! | [`bench`](mod@bench) | run time against error of the float stages |
 //! | [`render`] | the renderer: geometry, rasterization, shading, drawn with the stages |
 //! | [`input`] | the typed problem ([`input::part::Problem`]: the parts asked, each with its inputs, given or taken from an earlier part, whether from a problem file or a calculator command's flags; the parts a file asks, [`input::ask::Part`], named once), scene, lights and mesh files, and flag values, read and validated |
@@ -20,7 +20,7 @@
 //! Data flows one way: command-line flags or a problem file become one
 //! typed problem; the one solver ([`tutor::solve::solve_problem`]) evaluates
 //! it at the chosen precision and runs each part, by one match over the
-//! typed part, through the stage functions ([`tutor::run`]), which write
+//! typed part, through its part's module ([`tutor::parts`]), which write
 //! their steps to a trace; it returns a typed report
 //! ([`tutor::solution::Report`]: what was asked, what each part was given,
 //! the named results, the steps), and [`report`] writes that as text, JSON,

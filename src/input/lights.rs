@@ -2,7 +2,7 @@
 //! files ([`LightIn`], built by [`light`]); the `[shade]` table, lights
 //! files (`--lights FILE.toml`) and the `shade` flags, all turned into one
 //! validated set-up for [`crate::stages::lighting`], which
-//! `tutor::keys::shade_run` lights and keys as docs/spec.md §3 says.
+//! `tutor::parts::shade::shade_run` lights and keys as docs/spec.md §3 says.
 //!
 //! A lights file:
 //!

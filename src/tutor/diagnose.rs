@@ -506,7 +506,7 @@ fn segment_ends(p: &ProblemIn) -> Option<Vec<[Val; 2]>> {
         .collect::<Option<_>>()?;
     let field = Part::Clip.key();
     let end = |r| {
-        solve::point_ref(&field, r, &points)
+        crate::tutor::parts::clip::point_ref(&field, r, &points)
             .ok()
             .map(|q| Val::vec3(&q))
     };

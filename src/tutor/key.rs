@@ -260,17 +260,10 @@ impl Field {
         })
     }
 
-    /// The parts a field belongs to.
+    /// The parts a field belongs to (each part's module says which
+    /// fields its results hold: [`crate::tutor::parts::Solves::holds`]).
     pub(crate) fn in_part(self, part: Part) -> bool {
-        use Field::*;
-        match self {
-            Axis(_) | Matrix => part == Part::View,
-            Points => matches!(part, Part::View | Part::Project),
-            Pixels => part == Part::Viewport,
-            Edge(..) => part == Part::Window,
-            Code0 | Code1 | Status | Segment | Intersections => part == Part::Clip,
-            Shading(_) | Lights => part == Part::Shade,
-        }
+        (crate::tutor::parts::of(part).holds)(self)
     }
 }
 

@@ -12,6 +12,7 @@ pub mod follow;
 pub mod generate;
 pub mod key;
 pub mod keys;
+pub mod parts;
 pub mod pixel;
 pub mod practice;
 pub mod run;

@@ -833,16 +833,13 @@ fn figures(x: f64) -> usize {
     mantissa.chars().filter(|c| c.is_ascii_digit()).count()
 }
 
-/// The topic a key belongs to (a calculator command's key: the pipeline).
+/// The topic a key belongs to (its part's module says which:
+/// [`crate::tutor::parts::Solves::topic`]; a calculator command's key:
+/// the pipeline).
 pub fn topic_of(k: &Key) -> Topic {
-    match (k.part, &k.value) {
-        (Some(Part::View), Value::Point(_) | Value::Field(Field::Points)) => Topic::View,
-        (Some(Part::View), _) => Topic::Basis,
-        (Some(Part::Project), _) => Topic::Project,
-        (Some(Part::Window), _) => Topic::Window,
-        (Some(Part::Clip), _) => Topic::Clip,
-        (Some(Part::Shade), _) => Topic::Shade,
-        (Some(Part::Viewport) | None, _) => Topic::Pipeline,
+    match k.part {
+        Some(part) => (crate::tutor::parts::of(part).topic)(&k.value),
+        None => Topic::Pipeline,
     }
 }
 

@@ -3,6 +3,7 @@
 //! words of a message are put together (a located message, a list of
 //! parts, a capital first letter), written once for every language.
 
+use crate::input::ask::Part;
 use crate::msg::{Erratum, Given, LightPart, Msg, Printed, Term};
 use crate::report::lang::{NumStyle, MAX_MESSAGE};
 
@@ -25,8 +26,9 @@ pub trait MsgWords {
     fn printed(&self, p: Printed) -> &'static str;
     /// `Asked`, the heading of what a problem asks.
     fn asked_heading(&self) -> &'static str;
-    /// What one part of a problem asks (a part of `input::problem::PARTS`).
-    fn asked_part(&self, part: &str) -> &'static str;
+    /// What one part of a problem asks (an exhaustive match: a new part
+    /// says what it asks).
+    fn asked_part(&self, part: Part) -> &'static str;
     /// A term of the lighting sum.
     fn term(&self, t: Term) -> &'static str;
     /// One light's step of the lighting sum.
@@ -57,7 +59,10 @@ pub fn parts<W: MsgWords + ?Sized>(w: &W, parts: &[(String, Msg)]) -> String {
 
 /// What a problem asks, part by part: `Asked: …; ….`
 pub fn asked<W: MsgWords + ?Sized>(w: &W, parts: &[String]) -> String {
-    let list: Vec<&str> = parts.iter().map(|p| w.asked_part(p)).collect();
+    let list: Vec<&str> = (parts.iter())
+        .filter_map(|p| Part::named(p))
+        .map(|p| w.asked_part(p))
+        .collect();
     format!("{}: {}.", w.asked_heading(), list.join("; "))
 }
 

@@ -4,6 +4,7 @@
 //! style, `0.5` and `(0.5, 2, 3)`.
 
 use super::En;
+use crate::input::ask::Part;
 use crate::msg::{Erratum, Implausible, LightPart, Msg, Printed, SpotZone, Term, Trivial};
 use crate::report::lang::NumStyle;
 use crate::report::words::errors::ErrorWords;
@@ -253,14 +254,14 @@ impl MsgWords for En {
         "Asked"
     }
 
-    fn asked_part(&self, part: &str) -> &'static str {
+    fn asked_part(&self, part: Part) -> &'static str {
         match part {
-            "view" => "the camera basis u, v, n, the view matrix and the eye coordinates of the points",
-            "project" => "their projections onto the near plane",
-            "window" => "the viewing window on the near plane (its edges, width and height) and which projected points lie inside the view volume",
-            "viewport" => "the pixel of each point in the viewport",
-            "clip" => "the region codes of the ends and the result of clipping the segment",
-            _ => "the colour at the point, term by term",
+            Part::View => "the camera basis u, v, n, the view matrix and the eye coordinates of the points",
+            Part::Project => "their projections onto the near plane",
+            Part::Window => "the viewing window on the near plane (its edges, width and height) and which projected points lie inside the view volume",
+            Part::Viewport => "the pixel of each point in the viewport",
+            Part::Clip => "the region codes of the ends and the result of clipping the segment",
+            Part::Shade => "the colour at the point, term by term",
         }
     }
 

@@ -4,6 +4,7 @@
 //! style, `0,5` and `(0,5; 2; 3)`.
 
 use super::Id;
+use crate::input::ask::Part;
 use crate::msg::{Erratum, Implausible, LightPart, Msg, Printed, SpotZone, Term, Trivial};
 use crate::report::lang::NumStyle;
 use crate::report::words::errors::ErrorWords;
@@ -246,14 +247,14 @@ impl MsgWords for Id {
         "Ditanyakan"
     }
 
-    fn asked_part(&self, part: &str) -> &'static str {
+    fn asked_part(&self, part: Part) -> &'static str {
         match part {
-            "view" => "basis kamera u, v, n, matriks transformasi pandang, dan posisi titik-titik dalam koordinat kamera",
-            "project" => "hasil proyeksinya terhadap near clipping plane",
-            "window" => "viewing window pada near clipping plane (tepi-tepinya, lebar dan tinggi) dan titik hasil proyeksi mana yang berada di dalam view volume",
-            "viewport" => "posisi piksel tiap titik pada viewport",
-            "clip" => "region code kedua ujung dan hasil clipping segmen garis",
-            _ => "warna hasil pencahayaan pada titik itu, komponen demi komponen",
+            Part::View => "basis kamera u, v, n, matriks transformasi pandang, dan posisi titik-titik dalam koordinat kamera",
+            Part::Project => "hasil proyeksinya terhadap near clipping plane",
+            Part::Window => "viewing window pada near clipping plane (tepi-tepinya, lebar dan tinggi) dan titik hasil proyeksi mana yang berada di dalam view volume",
+            Part::Viewport => "posisi piksel tiap titik pada viewport",
+            Part::Clip => "region code kedua ujung dan hasil clipping segmen garis",
+            Part::Shade => "warna hasil pencahayaan pada titik itu, komponen demi komponen",
         }
     }
 
