@@ -1,5 +1,5 @@
-//! The shade part: the lighting of one point, I = ka·Ia + Σ (kd·Il·cos α
-//! + ks·Il·cosⁿ β) term by term (Blinn–Phong's N·H in place of R·V), per
+//! The shade part: the lighting of one point, I = ka·Ia + Σ (kd·Il·cos α +
+//! ks·Il·cosⁿ β) term by term (Blinn–Phong's N·H in place of R·V), per
 //! light when there are several, with each light's factors (attenuation,
 //! spot) for lights from a file.
 
