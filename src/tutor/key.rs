@@ -260,10 +260,19 @@ impl Field {
         })
     }
 
-    /// The parts a field belongs to (each part's module says which
-    /// fields its results hold: [`crate::tutor::parts::Solves::holds`]).
+    /// The parts a field belongs to: an exhaustive match, so a new field
+    /// stops the build here until it says whose results hold it (here,
+    /// beneath the parts' modules, which read keys).
     pub(crate) fn in_part(self, part: Part) -> bool {
-        (crate::tutor::parts::of(part).holds)(self)
+        use Field::*;
+        match self {
+            Axis(_) | Matrix => part == Part::View,
+            Points => matches!(part, Part::View | Part::Project),
+            Pixels => part == Part::Viewport,
+            Edge(..) => part == Part::Window,
+            Code0 | Code1 | Status | Segment | Intersections => part == Part::Clip,
+            Shading(_) | Lights => part == Part::Shade,
+        }
     }
 }
 

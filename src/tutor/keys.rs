@@ -1,10 +1,8 @@
 //! The answer keys of a result tree in the order of the text's solution
-//! (each part's order is its module's, [`crate::tutor::parts`]), and what
-//! the parts' orders share: a part's fields, in an order, and the names
-//! of its points and pixels.
+//! (each part's order is its module's, [`crate::tutor::parts`]).
 
 use crate::stages::trace::Val;
-use crate::tutor::key::{Field, Key, Node, Part};
+use crate::tutor::key::{Key, Node};
 use crate::tutor::parts;
 
 /// The answer keys of a result tree in the order of the text's solution:
@@ -25,43 +23,6 @@ pub fn ordered_keys(result: &[(String, Val)]) -> Vec<Key> {
         keys.extend((parts::of(part).keys)(v));
     }
     keys
-}
-
-/// A part's map (empty for a list: a clip's several segments).
-pub(crate) fn map_of(v: &Val) -> &[(String, Val)] {
-    match v {
-        Val::Map(kv) => &kv[..],
-        _ => &[],
-    }
-}
-
-/// The fields of a part's map (names that are no field of the part left out).
-pub(crate) fn fields(part: Part, kv: &[(String, Val)]) -> Vec<Field> {
-    let under = Node::Part(part);
-    (kv.iter())
-        .filter_map(|(k, _)| match Node::read(k, Some(&under)) {
-            Some(Node::Field(f)) => Some(f),
-            _ => None,
-        })
-        .collect()
-}
-
-/// Each of `order` the part holds, in that order.
-pub(crate) fn in_order<'a>(
-    fields: &'a [Field],
-    order: &'a [Field],
-) -> impl Iterator<Item = Field> + 'a {
-    order.iter().copied().filter(|f| fields.contains(f))
-}
-
-/// The names of the map held at `inner` (the points, the pixels).
-pub(crate) fn named(kv: &[(String, Val)], inner: Field) -> impl Iterator<Item = String> + '_ {
-    let inner = Node::Field(inner).to_string();
-    let map = match kv.iter().find(|(k, _)| *k == inner) {
-        Some((_, Val::Map(m))) => &m[..],
-        _ => &[],
-    };
-    map.iter().map(|(n, _)| n.clone())
 }
 
 #[cfg(test)]

@@ -18,3 +18,4 @@ pub mod practice;
 pub mod run;
 pub mod solution;
 pub mod solve;
+pub mod topic;

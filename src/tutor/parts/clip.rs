@@ -13,12 +13,11 @@ use crate::num::Scalar;
 use crate::stages::clip::{self, ClipBox};
 use crate::stages::trace::{Name, Recorder, Step, Trace, Val};
 use crate::tutor::follow;
-use crate::tutor::generate::Topic;
 use crate::tutor::key::{Cut, Field, Key, Node, Part, Plane, Value};
-use crate::tutor::keys::map_of;
-use crate::tutor::parts::{Solver, Solves};
+use crate::tutor::parts::{map_of, Solver, Solves};
 use crate::tutor::run::{in_table, Hooks};
 use crate::tutor::solution::Given;
+use crate::tutor::topic::Topic;
 
 /// The clip part.
 pub struct ClipPart;
@@ -50,11 +49,6 @@ impl Solves for ClipPart {
 
     fn topic(_: &Value) -> Topic {
         Topic::Clip
-    }
-
-    fn holds(f: Field) -> bool {
-        use Field::*;
-        matches!(f, Code0 | Code1 | Status | Segment | Intersections)
     }
 }
 

@@ -1,8 +1,8 @@
 //! One module per part of a problem, each holding what the part is: its
 //! solve (its own inputs evaluated, the stages run through the functions
 //! of its module, its results and what it was given written), the order
-//! of its answer keys, the topic they practise and the fields of its
-//! results, behind one trait, [`Solves`]. What the parts share is here:
+//! of its answer keys and the topic they practise, behind one trait,
+//! [`Solves`]. What the parts share is here:
 //! the [`Solver`] they write through ([`Out`]), what earlier stages
 //! produced, each worked once when a part first needs it ([`Earlier`]),
 //! and the list of parts: the one match from a typed part ([`PartIn`]) to
@@ -25,10 +25,10 @@ use crate::num::Scalar;
 use crate::stages::camera::{Basis, Camera};
 use crate::stages::projection::Projection;
 use crate::stages::trace::{Recorder, Val};
-use crate::tutor::generate::Topic;
-use crate::tutor::key::{Field, Key, Part, Value};
+use crate::tutor::key::{Field, Key, Node, Part, Value};
 use crate::tutor::run::{Hooks, Named};
 use crate::tutor::solution::{Given, Tree, WindowAt};
+use crate::tutor::topic::Topic;
 use clip::ClipPart;
 use nalgebra::Matrix4;
 use project::ProjectPart;
@@ -39,7 +39,7 @@ use window::WindowPart;
 
 /// A part of a problem, as its module defines it: how it is solved from
 /// its own inputs and what earlier parts produced, and how its answers
-/// are asked (their order, their topic, the fields of its results).
+/// are asked (their order, their topic).
 pub(crate) trait Solves {
     /// The part it is: its results' key, its name in `ask`.
     const PART: Part;
@@ -56,8 +56,6 @@ pub(crate) trait Solves {
     fn keys(v: &Val) -> Vec<Key>;
     /// The topic a value of its results practises.
     fn topic(value: &Value) -> Topic;
-    /// Whether `f` is a field of its results.
-    fn holds(f: Field) -> bool;
 }
 
 /// A part's definition, as functions: what the tutor asks of a part
@@ -68,8 +66,6 @@ pub(crate) struct Def {
     pub keys: fn(&Val) -> Vec<Key>,
     /// [`Solves::topic`].
     pub topic: fn(&Value) -> Topic,
-    /// [`Solves::holds`].
-    pub holds: fn(Field) -> bool,
 }
 
 /// The definition of part `P`.
@@ -77,7 +73,6 @@ fn def<P: Solves>() -> Def {
     Def {
         keys: P::keys,
         topic: P::topic,
-        holds: P::holds,
     }
 }
 
@@ -207,25 +202,42 @@ impl<T: Scalar> Solver<'_, '_, T> {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
+// What the parts' key orders share: a part's fields, in an order, and
+// the names of its points and pixels.
 
-    /// Each part's module says which fields its results hold: every field
-    /// is held by one part, the points by two (the view's eye coordinates,
-    /// the projected points).
-    #[test]
-    fn every_field_is_held_by_its_parts() {
-        for f in Field::all() {
-            let holders: Vec<Part> = (Part::all().into_iter())
-                .filter(|p| (of(*p).holds)(f))
-                .collect();
-            let want = match f {
-                Field::Points => vec![Part::View, Part::Project],
-                _ => holders.first().map_or(vec![], |p| vec![*p]),
-            };
-            assert!(!holders.is_empty(), "{f:?}: no part's `holds` names it");
-            assert_eq!(holders, want, "{f:?}");
-        }
+/// A part's map (empty for a list: a clip's several segments).
+pub(crate) fn map_of(v: &Val) -> &[(String, Val)] {
+    match v {
+        Val::Map(kv) => &kv[..],
+        _ => &[],
     }
+}
+
+/// The fields of a part's map (names that are no field of the part left out).
+pub(crate) fn fields(part: Part, kv: &[(String, Val)]) -> Vec<Field> {
+    let under = Node::Part(part);
+    (kv.iter())
+        .filter_map(|(k, _)| match Node::read(k, Some(&under)) {
+            Some(Node::Field(f)) => Some(f),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Each of `order` the part holds, in that order.
+pub(crate) fn in_order<'a>(
+    fields: &'a [Field],
+    order: &'a [Field],
+) -> impl Iterator<Item = Field> + 'a {
+    order.iter().copied().filter(|f| fields.contains(f))
+}
+
+/// The names of the map held at `inner` (the points, the pixels).
+pub(crate) fn named(kv: &[(String, Val)], inner: Field) -> impl Iterator<Item = String> + '_ {
+    let inner = Node::Field(inner).to_string();
+    let map = match kv.iter().find(|(k, _)| *k == inner) {
+        Some((_, Val::Map(m))) => &m[..],
+        _ => &[],
+    };
+    map.iter().map(|(n, _)| n.clone())
 }

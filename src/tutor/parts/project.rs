@@ -11,12 +11,11 @@ use crate::msg::{ErrMsg, Msg};
 use crate::num::Scalar;
 use crate::stages::projection::{self, Projection};
 use crate::stages::trace::{Name, Recorder, Step, Subst, Trace, Val};
-use crate::tutor::generate::Topic;
 use crate::tutor::key::{Field, Key, Part, Value};
-use crate::tutor::keys::{map_of, named};
-use crate::tutor::parts::{Out, Projected, Solver, Solves};
+use crate::tutor::parts::{map_of, named, Out, Projected, Solver, Solves};
 use crate::tutor::run::{points_val, Hooks, Named};
 use crate::tutor::solution::Given;
+use crate::tutor::topic::Topic;
 
 /// The project part.
 pub struct ProjectPart;
@@ -39,10 +38,6 @@ impl Solves for ProjectPart {
 
     fn topic(_: &Value) -> Topic {
         Topic::Project
-    }
-
-    fn holds(f: Field) -> bool {
-        f == Field::Points
     }
 }
 

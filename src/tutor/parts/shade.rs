@@ -12,12 +12,11 @@ use crate::num::Scalar;
 use crate::stages::lighting::{self, rgb_val, Highlight, LightTerm, Material};
 use crate::stages::trace::{Name, NoTrace, Recorder, Step, Trace, Val};
 use crate::tutor::follow;
-use crate::tutor::generate::Topic;
 use crate::tutor::key::{Factor, Field, Key, Part, Shading, Value};
-use crate::tutor::keys::{fields, in_order, map_of};
-use crate::tutor::parts::{Solver, Solves};
+use crate::tutor::parts::{fields, in_order, map_of, Solver, Solves};
 use crate::tutor::run::Hooks;
 use crate::tutor::solution::{Given, ShadeAt, Tree};
+use crate::tutor::topic::Topic;
 
 /// The shade part.
 pub struct ShadePart;
@@ -43,10 +42,6 @@ impl Solves for ShadePart {
 
     fn topic(_: &Value) -> Topic {
         Topic::Shade
-    }
-
-    fn holds(f: Field) -> bool {
-        matches!(f, Field::Shading(_) | Field::Lights)
     }
 }
 

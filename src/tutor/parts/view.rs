@@ -9,12 +9,11 @@ use crate::num::Scalar;
 use crate::stages::camera::{self, Basis, Camera};
 use crate::stages::trace::{Recorder, Step, Trace, Val};
 use crate::tutor::follow;
-use crate::tutor::generate::Topic;
 use crate::tutor::key::{Axis, Field, Key, Part, Value};
-use crate::tutor::keys::{fields, in_order, map_of, named};
-use crate::tutor::parts::{Solver, Solves, Viewed};
+use crate::tutor::parts::{fields, in_order, map_of, named, Solver, Solves, Viewed};
 use crate::tutor::run::{in_table, points_val, Hooks, Named};
 use crate::tutor::solution::{camera, p3, Given};
+use crate::tutor::topic::Topic;
 use nalgebra::Matrix4;
 
 /// The view part.
@@ -61,10 +60,6 @@ impl Solves for ViewPart {
             Value::Point(_) | Value::Field(Field::Points) => Topic::View,
             _ => Topic::Basis,
         }
-    }
-
-    fn holds(f: Field) -> bool {
-        matches!(f, Field::Axis(_) | Field::Matrix | Field::Points)
     }
 }
 

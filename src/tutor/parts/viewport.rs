@@ -9,12 +9,11 @@ use crate::msg::Msg;
 use crate::num::Scalar;
 use crate::stages::trace::{Recorder, Val};
 use crate::stages::window::{self, Window};
-use crate::tutor::generate::Topic;
 use crate::tutor::key::{Field, Key, Part, Value};
-use crate::tutor::keys::{map_of, named};
-use crate::tutor::parts::{Out, Solver, Solves};
+use crate::tutor::parts::{map_of, named, Out, Solver, Solves};
 use crate::tutor::run::Named;
 use crate::tutor::solution::{at, Given};
+use crate::tutor::topic::Topic;
 
 /// The viewport part.
 pub struct ViewportPart;
@@ -38,10 +37,6 @@ impl Solves for ViewportPart {
     /// The pixels come at the end of the whole chain.
     fn topic(_: &Value) -> Topic {
         Topic::Pipeline
-    }
-
-    fn holds(f: Field) -> bool {
-        f == Field::Pixels
     }
 }
 

@@ -14,12 +14,11 @@ use crate::num::Scalar;
 use crate::stages::trace::{Name, Recorder, Step, Subst, Trace, Val};
 use crate::stages::window::{self, Window};
 use crate::tutor::follow;
-use crate::tutor::generate::Topic;
 use crate::tutor::key::{Edge, Field, Key, Part, Value};
-use crate::tutor::keys::{fields, map_of};
-use crate::tutor::parts::{Out, Solver, Solves, Windowed};
+use crate::tutor::parts::{fields, map_of, Out, Solver, Solves, Windowed};
 use crate::tutor::run::{in_table, Hooks, Named};
 use crate::tutor::solution::{at, Given, Tree, WindowAt};
+use crate::tutor::topic::Topic;
 
 /// The window part.
 pub struct WindowPart;
@@ -44,10 +43,6 @@ impl Solves for WindowPart {
 
     fn topic(_: &Value) -> Topic {
         Topic::Window
-    }
-
-    fn holds(f: Field) -> bool {
-        matches!(f, Field::Edge(..))
     }
 }
 
