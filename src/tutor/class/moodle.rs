@@ -141,10 +141,8 @@ pub fn given(
                 draws.len() - 1
             }
         };
-        answers.insert(
-            0,
-            (Name::parse("variant"), toml::Value::Integer(v as i64 + 1)),
-        );
+        let variant = toml::Value::Integer(v as i64 + 1);
+        answers.insert(0, (Name::parse("variant"), variant));
         out.push(Given {
             attempt: i,
             label: PathBuf::from(format!("row {}", a.row)),
@@ -156,7 +154,13 @@ pub fn given(
     if draws.is_empty() {
         draws.push(vec![0; shapes[0].len()]); // no attempt marked: the first variant
     }
-    let drawn = Paper {
+    Ok((drawn_paper(paper, &draws), out, f))
+}
+
+/// The paper returned: one variant per different draw, in the order first
+/// met, each problem p of the variant its draw names.
+fn drawn_paper(paper: &Paper, draws: &[Vec<usize>]) -> Paper {
+    Paper {
         title: paper.title.clone(),
         variants: (draws.iter())
             .map(|d| {
@@ -167,8 +171,7 @@ pub fn given(
             })
             .collect(),
         exam: true,
-    };
-    Ok((drawn, out, f))
+    }
 }
 
 /// How a student is named: the name, else the email, else the ID number.
