@@ -107,22 +107,3 @@ pub fn size(field: &str, text: &str) -> Result<[Num; 2]> {
         .ok_or_else(|| Error::said(field, Msg::ErrSize(text.to_string())))?;
     Ok([num(field, w)?, num(field, h)?])
 }
-
-/// A TOML value's leaves by their dotted keys, after `prefix` (`view` and
-/// `{ points = { A = … } }` give `view.points.A`; an empty prefix adds
-/// none): a table's entries in order, anything else is a leaf.
-pub fn dotted(prefix: &str, v: &toml::Value, out: &mut Vec<(String, toml::Value)>) {
-    match v {
-        toml::Value::Table(t) => {
-            for (k, x) in t {
-                let key = if prefix.is_empty() {
-                    k.clone()
-                } else {
-                    format!("{prefix}.{k}")
-                };
-                dotted(&key, x, out);
-            }
-        }
-        other => out.push((prefix.to_string(), other.clone())),
-    }
-}

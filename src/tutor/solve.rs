@@ -15,8 +15,8 @@ use crate::input::problem::ProblemIn;
 use crate::msg::ErrMsg;
 use crate::num::Scalar;
 use crate::stages::trace::{Recorder, Val};
-use crate::tutor::check::{printed_agrees, settings_for, written};
-use crate::tutor::key::{Key, Part};
+use crate::tutor::check::{named_leaves, printed_agrees, settings_for, written};
+use crate::tutor::key::Part;
 use crate::tutor::parts::{Earlier, Out, Solver};
 use crate::tutor::run::{Hooks, Named};
 use crate::tutor::solution::{value_of, Asked, Compared, Comparison, Given, Report, Tree};
@@ -115,21 +115,20 @@ fn file_report<T: Scalar>(
 /// judged as `check` marks a student's answer, with the problem's
 /// settings ([`printed_agrees`]), and shown as written ([`written`]).
 fn compare_printed(p: &ProblemIn, result: &[(String, Val)]) -> Option<Comparison> {
-    let mut flat = Vec::new();
-    crate::input::values::dotted("", &toml::Value::Table(p.printed.clone()), &mut flat);
+    let flat = named_leaves(&p.printed);
     if flat.is_empty() {
         return None;
     }
     let settings = settings_for(p, None, None);
     let rows = flat
         .iter()
-        .map(|(key, printed)| {
-            let k: Option<Key> = key.parse().ok();
+        .map(|(name, printed)| {
+            let (k, key) = (name.key().ok(), name.to_string());
             let computed = k.as_ref().and_then(|k| value_of(result, k)).cloned();
             let judged = k.as_ref().zip(computed.as_ref());
-            let erratum = p.errata.iter().find(|e| &e.key == key);
+            let erratum = p.errata.iter().find(|e| e.key == key);
             Compared {
-                key: key.clone(),
+                key,
                 printed: written(printed),
                 agrees: judged.and_then(|(k, c)| printed_agrees(printed, c, k, &settings)),
                 computed,

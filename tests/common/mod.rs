@@ -110,8 +110,8 @@ pub fn close_vec(v: &Value, want: &[f64], tol: f64) {
 /// with its value (a string, a number or a list of them).
 pub fn key_entries(path: &std::path::Path) -> Vec<(String, toml::Value)> {
     let text = std::fs::read_to_string(path).expect("a key file");
-    let t: toml::Value = toml::from_str(&text).expect("a key file's TOML");
-    let mut out = Vec::new();
-    grafika::input::values::dotted("", &t, &mut out);
-    out
+    let t: toml::Table = toml::from_str(&text).expect("a key file's TOML");
+    (grafika::tutor::check::named_leaves(&t).into_iter())
+        .map(|(name, v)| (name.to_string(), v))
+        .collect()
 }

@@ -378,6 +378,16 @@ pub fn answers_from_table(t: &toml::Table) -> (Option<String>, Answers) {
     (student, out)
 }
 
+/// A TOML table's values that are no tables, each by its [`Name`], in
+/// order (an answer file's answers, a problem's `[printed]` answers).
+pub fn named_leaves(t: &toml::Table) -> Answers {
+    let mut out = Vec::new();
+    for (k, v) in t {
+        leaves(Name::default().under(k), v, &mut out);
+    }
+    out
+}
+
 /// The values under `name` that are no tables, each by its name, a
 /// table's entries in order.
 fn leaves(name: Name, v: &toml::Value, out: &mut Answers) {
