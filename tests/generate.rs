@@ -8,7 +8,6 @@ use grafika::tutor::check::{self, Settings, Verdict};
 use grafika::tutor::diagnose::Code;
 use grafika::tutor::generate::{self, answer_toml, Difficulty, Topic};
 use grafika::tutor::key::{Key, Part};
-use grafika::tutor::solution::{lookup, value_of};
 use std::path::{Path, PathBuf};
 
 const TOPICS: [Topic; 7] = Topic::ALL;
@@ -95,7 +94,7 @@ fn every_generated_problem_solves_and_its_key_scores_full_marks() {
                     .map(|k| {
                         (
                             check::Name::parse(&k.to_string()),
-                            answer_toml(value_of(&g.report.result, k).unwrap()),
+                            answer_toml(&g.report.result.get(k).unwrap()),
                         )
                     })
                     .collect();
@@ -177,7 +176,7 @@ fn plant(
     m: Code,
     p: &grafika::input::problem::ProblemIn,
     keys: &[String],
-    right: &check::Tree,
+    right: &check::Results,
     what: &str,
 ) -> bool {
     let Some(variants) = m.apply(p) else {
@@ -189,14 +188,17 @@ fn plant(
     let mut answers = Vec::new();
     let mut changed = 0;
     for k in &keys {
-        let (Some(right), Some(wrong)) = (lookup(right, k), lookup(tree, k)) else {
+        let (Some(right), Some(wrong)) = (
+            right.lookup(k).map(|v| v.into_owned()),
+            tree.lookup(k).map(|v| v.into_owned()),
+        ) else {
             continue;
         };
-        if differs(right, wrong) {
+        if differs(&right, &wrong) {
             changed += 1;
-            answers.push((check::Name::parse(k), answer_toml(wrong)));
+            answers.push((check::Name::parse(k), answer_toml(&wrong)));
         } else if k != "view.matrix" {
-            answers.push((check::Name::parse(k), answer_toml(right)));
+            answers.push((check::Name::parse(k), answer_toml(&right)));
         }
     }
     if changed == 0 {
@@ -320,7 +322,7 @@ fn easy_cameras_have_rational_axes() {
     // so n, u, v are rational — their exact forms have no square root.
     for g in generate::exam(&[Topic::Basis], Difficulty::Easy, 6, 3).unwrap() {
         for k in ["view.u", "view.v", "view.n"] {
-            let Some(Val::List(c)) = lookup(&g.report.result, k) else {
+            let Some(Val::List(c)) = g.report.result.lookup(k).map(|v| v.into_owned()) else {
                 panic!()
             };
             for x in c {
@@ -523,9 +525,16 @@ fn the_question_sheet_does_not_print_the_seed() {
 /// The clipping statuses of an exam's clipping problems, in order.
 fn clip_statuses(exam: &[generate::Generated]) -> Vec<String> {
     exam.iter()
-        .filter_map(|g| match lookup(&g.report.result, "clip.status") {
-            Some(Val::Text(s)) => Some(s.clone()),
-            _ => None,
+        .filter_map(|g| {
+            match g
+                .report
+                .result
+                .lookup("clip.status")
+                .map(|v| v.into_owned())
+            {
+                Some(Val::Text(s)) => Some(s.clone()),
+                _ => None,
+            }
         })
         .collect()
 }
@@ -681,9 +690,9 @@ fn hard_keys_are_exact_where_an_exact_form_exists() {
                     assert!(!dyadic, "tan({f}°/2) has an exact form: {}", g.body);
                 }
                 for k in &g.keys {
-                    let v = value_of(&g.report.result, k).unwrap();
+                    let v = g.report.result.get(k).unwrap();
                     let allowed = matches!(k.part, Some(Part::Window | Part::Viewport));
-                    assert!(allowed || !has_inexact(v), "{k} inexact in\n{}", g.body);
+                    assert!(allowed || !has_inexact(&v), "{k} inexact in\n{}", g.body);
                 }
             }
         }
@@ -720,7 +729,7 @@ fn the_variants_of_a_position_are_parallel_forms() {
                     .collect();
                 // the status, and how many planes each end lies beyond
                 let clip = ["clip.status", "clip.code0", "clip.code1"].map(|k| {
-                    match lookup(&g.report.result, k) {
+                    match g.report.result.lookup(k).map(|v| v.into_owned()) {
                         Some(Val::Text(s)) if k == "clip.status" => s.clone(),
                         Some(Val::Text(s)) => s.matches('1').count().to_string(),
                         _ => String::new(),
@@ -746,7 +755,11 @@ fn the_variants_of_a_position_are_parallel_forms() {
             for exam in &all {
                 let st = clip_statuses(exam);
                 assert_eq!(st, ["clipped"], "{level:?} seed {seed}");
-                let cuts = lookup(&exam[4].report.result, "clip.intersections");
+                let cuts = exam[4]
+                    .report
+                    .result
+                    .lookup("clip.intersections")
+                    .map(|v| v.into_owned());
                 assert!(
                     matches!(cuts, Some(Val::Map(m)) if !m.is_empty()),
                     "{}",

@@ -26,7 +26,6 @@ use grafika::tutor::check::scheme::Scheme;
 use grafika::tutor::diagnose::Code;
 use grafika::tutor::generate::quiz::Quiz;
 use grafika::tutor::generate::{Generated, Topic};
-use grafika::tutor::solution::lookup;
 use grafika::tutor::solve;
 use std::path::{Path, PathBuf};
 
@@ -491,8 +490,8 @@ fn check_wrong(p: &ProblemIn, (key, idx): (&str, usize), b: &Blank, w: &Alt, sca
         let trees = m.apply(p).expect("the mistake applies");
         let given = trees.iter().any(|t| {
             let mut l = Vec::new();
-            if let Some(v) = lookup(t, key) {
-                tree_leaf(v, &mut l);
+            if let Some(v) = t.lookup(key).map(|v| v.into_owned()) {
+                tree_leaf(&v, &mut l);
             }
             match (b.kind.as_str(), l.get(idx)) {
                 ("NUMERICAL", Some(s)) => {

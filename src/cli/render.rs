@@ -11,7 +11,7 @@ use crate::msg::ErrMsg;
 use crate::render::{self, Frame, Options, Stats};
 use crate::report::lang::Lang;
 use crate::stages::trace::Recorder;
-use crate::tutor::solution::{Asked, RenderRun, Report, Times};
+use crate::tutor::solution::{Asked, RenderRun, Report, Results, Times};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
@@ -225,7 +225,7 @@ fn report(
         mpixels_per_s,
     };
     let asked = Asked::Render(Box::new(run));
-    Report::from_recorder::<f32>(asked, vec![], vec![], rec)
+    Report::from_recorder::<f32>(asked, vec![], Results::default(), rec)
 }
 
 /// The shadings drawn: the one forced by `--shading`, else each object's

@@ -11,8 +11,8 @@ use crate::input::problem::{PointRef, ProblemIn};
 use crate::msg::{Msg, Shown};
 use crate::num::Precision;
 use crate::stages::projection::Projection;
-use crate::stages::trace::{Step, Val};
-use crate::tutor::solution::{Asked, Compared, Given, RenderRun, Report, P3};
+use crate::stages::trace::{exact_forms, Step, Val};
+use crate::tutor::solution::{Asked, Compared, Given, RenderRun, Report, Results, P3};
 use serde::{Serialize, Serializer};
 use serde_json::{Map, Value};
 
@@ -411,8 +411,8 @@ pub struct SolutionJson<'a> {
     command: &'static str,
     precision: Precision,
     input: Input<'a>,
-    result: Map<String, Value>,
-    exact: Map<String, Value>,
+    result: ResultJson<'a>,
+    exact: ResultJson<'a>,
     steps: Vec<StepJson>,
     warnings: Vec<String>,
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -430,13 +430,23 @@ impl Report {
     /// notes, warnings) depend on `lang`.
     pub fn to_json(&self, lang: Lang) -> SolutionJson<'_> {
         let style = Style::new(4, true, lang);
-        let answer = self.answer();
+        let (result, exact) = match &self.asked {
+            Asked::Render(_) => {
+                let answer = self.answer();
+                let summary = |f| ResultJson::Summary(plain(&answer, f));
+                (summary(value_json), summary(exact_json))
+            }
+            _ => (
+                ResultJson::Results(&self.result),
+                ResultJson::Exact(ExactJson(&self.result)),
+            ),
+        };
         SolutionJson {
             command: self.command(),
             precision: self.precision,
             input: input(self),
-            result: plain(&answer, value_json),
-            exact: plain(&answer, exact_json),
+            result,
+            exact,
             steps: self.steps.iter().map(|s| step_json(s, lang)).collect(),
             warnings: self.warnings.iter().map(|w| style.w(w)).collect(),
             notes: self.all_notes(&style),
@@ -448,6 +458,28 @@ impl Report {
             comparison: (self.comparison.as_ref())
                 .map(|c| c.rows.iter().map(|r| compared_json(r, lang)).collect()),
         }
+    }
+}
+
+/// §3's `result` or `exact`: the results' own serialization, or a
+/// render's summary.
+#[derive(Serialize)]
+#[serde(untagged)]
+pub enum ResultJson<'a> {
+    /// The results, numbers as doubles.
+    Results(&'a Results),
+    /// The results, numbers as exact forms.
+    Exact(ExactJson<'a>),
+    /// A render's summary.
+    Summary(Map<String, Value>),
+}
+
+/// The results with each number's exact form (null where it has none).
+pub struct ExactJson<'a>(&'a Results);
+
+impl Serialize for ExactJson<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        exact_forms(move || self.0.serialize(s))
     }
 }
 

@@ -49,7 +49,7 @@ impl Report {
                     .map(|(k, v)| (k.key(), v))
                     .collect(),
             ),
-            _ => std::borrow::Cow::Borrowed(&self.result),
+            _ => std::borrow::Cow::Owned(self.result.tree()),
         }
     }
 
@@ -71,10 +71,11 @@ impl Report {
                 .collect(),
             _ => self
                 .result
-                .iter()
+                .tree()
+                .into_iter()
                 .map(|(k, v)| {
-                    let (_, named) = words::keys::node_of(words::of(lang), k, None);
-                    (k.clone(), named, v.clone())
+                    let (_, named) = words::keys::node_of(words::of(lang), &k, None);
+                    (k, named, v)
                 })
                 .collect(),
         }
@@ -88,7 +89,7 @@ impl Report {
             return None;
         };
         let statement = p.statement.as_ref().map(|s| s.trim().to_string());
-        let parts = self.result.iter().map(|(k, _)| k.clone()).collect();
+        let parts = (self.result.parts.iter()).map(|p| p.part().key()).collect();
         Some((p.title.clone(), statement, Msg::Asked(parts)))
     }
 }

@@ -12,7 +12,6 @@ use crate::report::Style;
 use crate::stages::trace::Val;
 use crate::tutor::generate::{key_lines, problem_name, topics_name, Difficulty, Generated, Topic};
 use crate::tutor::key::Key;
-use crate::tutor::solution::value_of;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -77,7 +76,7 @@ pub fn key_file(g: &Generated, lang: Lang) -> String {
 fn answers(g: &Generated) -> Vec<(String, Val)> {
     g.keys
         .iter()
-        .filter_map(|key| value_of(&g.report.result, key).map(|v| (key.to_string(), v.clone())))
+        .filter_map(|key| Some((key.to_string(), g.report.result.get(key)?.into_owned())))
         .collect()
 }
 

@@ -237,6 +237,52 @@ impl Val {
     }
 }
 
+thread_local! {
+    /// Whether [`Val`]'s `Serialize` writes each number's exact form
+    /// (docs/spec.md §3's `exact`) rather than its double (`result`).
+    static EXACT: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// `f` with every [`Val`] serialized inside it writing its numbers' exact
+/// forms (the ASCII expression, or null for a number with none): §3's
+/// `result` and `exact` are one derive, serialized twice. serde passes no
+/// state down a derive, so the choice is the thread's while `f` runs.
+pub fn exact_forms<R>(f: impl FnOnce() -> R) -> R {
+    struct Restore(bool);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            EXACT.with(|e| e.set(self.0));
+        }
+    }
+    let _restore = Restore(EXACT.with(|e| e.replace(true)));
+    f()
+}
+
+impl serde::Serialize for Val {
+    /// A number as its double (null when not finite) or, inside
+    /// [`exact_forms`], as its exact form (null when it has none); a list
+    /// as an array, a map as an object in order, text as a string. Words
+    /// ([`Val::Said`]) are written by the report in a language, never
+    /// here: a result holds none.
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::{Error, SerializeMap};
+        match self {
+            Val::Num(n) if EXACT.with(|e| e.get()) => s.serialize_some(&n.exact),
+            Val::Num(n) if n.value.is_finite() => s.serialize_f64(n.value),
+            Val::Num(_) | Val::Null => s.serialize_none(),
+            Val::List(items) => s.collect_seq(items),
+            Val::Map(kv) => {
+                let mut m = s.serialize_map(Some(kv.len()))?;
+                kv.iter().try_for_each(|(k, v)| m.serialize_entry(k, v))?;
+                m.end()
+            }
+            Val::Text(t) => s.serialize_str(t),
+            Val::Bool(b) => s.serialize_bool(*b),
+            Val::Said(_) => Err(S::Error::custom("a result holds no words")),
+        }
+    }
+}
+
 /// A formula with the step's numbers put in, as a worked solution writes
 /// it before the value: t = (xmin − x0)/(x1 − x0) becomes `(0 − 4)/(−2 −
 /// 4)`. `form` is notation with `{}` where each value of `args` goes; the

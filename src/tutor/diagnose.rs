@@ -24,11 +24,12 @@ use crate::stages::lighting::{LightKind, Rules};
 use crate::stages::trace::Val;
 use crate::stages::window::Window;
 use crate::tutor::key::{Cut, Edge, Field, Key, Part, Shading, Value};
+use crate::tutor::parts::clip::ClipResult;
 use crate::tutor::run::Hooks;
-use crate::tutor::solution::{value_of, value_of_mut};
+use crate::tutor::solution::PartResult;
 use crate::tutor::solve;
 
-pub use crate::tutor::solution::Tree;
+pub use crate::tutor::solution::Results;
 
 /// A mistake of the catalog: what `check` and `practice` name, and what
 /// the words say in each language (`ReportWords::mistake`).
@@ -173,7 +174,7 @@ impl Code {
     /// the mistake does not apply to the problem. One arm per code and no
     /// other: a new code stops the build here until it says how the
     /// problem is recomputed with it.
-    pub fn apply(self, p: &ProblemIn) -> Option<Vec<Tree>> {
+    pub fn apply(self, p: &ProblemIn) -> Option<Vec<Results>> {
         match self {
             Code::CrossOrder => cross_order(p),
             Code::NReversed => n_reversed(p),
@@ -204,13 +205,13 @@ impl Code {
 }
 
 /// u = n × Vup instead of Vup × n: the view-up vector negated.
-fn cross_order(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn cross_order(p: &ProblemIn) -> Option<Vec<Results>> {
     altered(p, |q| map_camera(q, |c| c.up = neg3(&c.up)))
 }
 
 /// n from Pr − Pe instead of Pe − Pr: Pe − (2Pe − Pr) = Pr − Pe, the
 /// look-at point reflected through the eye.
-fn n_reversed(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn n_reversed(p: &ProblemIn) -> Option<Vec<Results>> {
     altered(p, |q| {
         map_camera(q, |c| {
             let look = std::array::from_fn(|k| {
@@ -229,7 +230,7 @@ fn n_reversed(p: &ProblemIn) -> Option<Vec<Tree>> {
 
 /// n = Pe − Pr not divided by |Pe − Pr|: n (and v = n × u with it)
 /// scaled by |Pe − Pr|.
-fn n_not_normalized(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn n_not_normalized(p: &ProblemIn) -> Option<Vec<Results>> {
     hooked_exact(
         p,
         Hooks {
@@ -244,7 +245,7 @@ fn n_not_normalized(p: &ProblemIn) -> Option<Vec<Tree>> {
 
 /// u = Vup × n not divided by |Vup × n|: Vup × n = (Vup × d)/|d|, of
 /// length |Vup × d|/|d|, scales u (and v = n × u with it).
-fn u_not_normalized(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn u_not_normalized(p: &ProblemIn) -> Option<Vec<Results>> {
     hooked_exact(
         p,
         Hooks {
@@ -260,7 +261,7 @@ fn u_not_normalized(p: &ProblemIn) -> Option<Vec<Tree>> {
 /// u and v swapped: the camera's x axis written where its y axis goes,
 /// and the other way round; the view matrix's first two rows and the eye
 /// coordinates' x and y follow (and the projection and pixels after them).
-fn uv_swapped(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn uv_swapped(p: &ProblemIn) -> Option<Vec<Results>> {
     hooked_exact(
         p,
         Hooks {
@@ -278,7 +279,7 @@ fn uv_swapped(p: &ProblemIn) -> Option<Vec<Tree>> {
 /// tan(fovy)/tan(fovy/2), not fovy doubled as an input (over 90° the
 /// doubled angle is refused, yet the mistake gives a window, top =
 /// near·tan(fovy) < 0, a student can write).
-fn fovy_not_halved(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn fovy_not_halved(p: &ProblemIn) -> Option<Vec<Results>> {
     hooked(
         p,
         Hooks {
@@ -295,7 +296,7 @@ fn fovy_not_halved(p: &ProblemIn) -> Option<Vec<Tree>> {
 /// be an angle of thousands of degrees, which the window rejects, so the
 /// window is scaled by the ratio of the tangents, tan(fovy/2 rad) /
 /// tan(fovy/2 °). Only for a fovy given in degrees.
-fn degrees_as_radians(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn degrees_as_radians(p: &ProblemIn) -> Option<Vec<Results>> {
     let deg = p
         .perspective
         .as_ref()
@@ -319,19 +320,19 @@ fn degrees_as_radians(p: &ProblemIn) -> Option<Vec<Tree>> {
 /// h = near·tan(fovy/2) written as the height (and right as the width):
 /// written, not used, so the window's edges and the pixels stay right
 /// (the text's own h and W).
-fn height_is_half_extent(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn height_is_half_extent(p: &ProblemIn) -> Option<Vec<Results>> {
     let mut t = solved(p)?;
     for (size, half) in [(Edge::Height, Edge::Top), (Edge::Width, Edge::Right)] {
         let edge = |e| Key::new(Part::Window, Value::Field(Field::Edge(e, false)));
-        let h = value_of_mut(&mut t, &edge(half))?.clone();
-        *value_of_mut(&mut t, &edge(size))? = h;
+        let h = t.get_mut(&edge(half))?.clone();
+        *t.get_mut(&edge(size))? = h;
     }
     Some(vec![t])
 }
 
 /// near·tan(fovy/2) taken as the full height: the window of half the top
 /// (right/top is the aspect).
-fn height_as_half_extent(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn height_as_half_extent(p: &ProblemIn) -> Option<Vec<Results>> {
     hooked(
         p,
         Hooks {
@@ -346,7 +347,7 @@ fn height_as_half_extent(p: &ProblemIn) -> Option<Vec<Tree>> {
 
 /// The projection plane at z = +near instead of z = −near: d negated (or
 /// d = near where only near is given).
-fn d_sign(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn d_sign(p: &ProblemIn) -> Option<Vec<Results>> {
     let per = p.perspective.as_ref()?;
     let d = match (&per.d, &per.near) {
         (Some(d), _) => Expr::Neg(Box::new(d.0.clone())),
@@ -362,9 +363,9 @@ fn d_sign(p: &ProblemIn) -> Option<Vec<Tree>> {
 
 /// The view matrix transposed (P·M): one documented change to the
 /// results, the matrix's rows written as its columns.
-fn matrix_transposed(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn matrix_transposed(p: &ProblemIn) -> Option<Vec<Results>> {
     let mut t = solved(p)?;
-    let m = value_of_mut(&mut t, &Key::new(Part::View, Value::Field(Field::Matrix)))?;
+    let m = t.get_mut(&Key::new(Part::View, Value::Field(Field::Matrix)))?;
     if let Val::List(rows) = m {
         let cells: Vec<Vec<Val>> = rows
             .iter()
@@ -386,7 +387,7 @@ fn matrix_transposed(p: &ProblemIn) -> Option<Vec<Tree>> {
 /// 0 writes it and takes the eye coordinates right, variant 1 also takes
 /// the eye coordinates as Mcam·P (and the projection and pixels after
 /// them).
-fn mcam_as_view(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn mcam_as_view(p: &ProblemIn) -> Option<Vec<Results>> {
     p.camera.as_ref()?;
     let with = |points| Hooks {
         view: Some((camera::camera_matrix, points)),
@@ -402,42 +403,45 @@ fn mcam_as_view(p: &ProblemIn) -> Option<Vec<Tree>> {
 
 /// The outcode bits in reverse order: every outcode, the ends' (code0,
 /// code1) and each intersection's (code), read backwards.
-fn outcode_reversed(p: &ProblemIn) -> Option<Vec<Tree>> {
-    let codes = [Field::Code0.key(), Field::Code1.key(), Cut::Code.key()];
-    fn reverse(kv: &mut [(String, Val)], codes: &[String]) {
-        for (k, v) in kv.iter_mut() {
-            match (codes.contains(k), &mut *v) {
-                (true, Val::Text(s)) => *s = s.chars().rev().collect(),
-                (_, Val::Map(inner)) => reverse(inner, codes),
-                _ => {}
+fn outcode_reversed(p: &ProblemIn) -> Option<Vec<Results>> {
+    let code = Cut::Code.key();
+    let reverse = |v: &mut Val| {
+        if let Val::Text(s) = v {
+            *s = s.chars().rev().collect();
+        }
+    };
+    let mut t = solved(p)?;
+    for_each_clip(&mut t, |r| {
+        reverse(&mut r.code0);
+        reverse(&mut r.code1);
+        if let Val::Map(planes) = &mut r.intersections {
+            for (_, cut) in planes.iter_mut() {
+                if let Val::Map(kv) = cut {
+                    kv.iter_mut()
+                        .filter(|(k, _)| *k == code)
+                        .for_each(|(_, v)| reverse(v));
+                }
             }
         }
-    }
-    let mut t = solved(p)?;
-    for_each_clip(&mut t, |kv| reverse(kv, &codes));
+    });
     Some(vec![t])
 }
 
 /// An endpoint outside the box kept instead of its intersection: variant
 /// 0 keeps P0, variant 1 keeps P1, in every clipped segment.
-fn endpoint_kept(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn endpoint_kept(p: &ProblemIn) -> Option<Vec<Results>> {
     let base = solved(p)?;
     let ends = segment_ends(p)?;
-    let (status, segment) = (Field::Status.key(), Field::Segment.key());
     let clipped = Val::text(Status::Clipped.as_str());
     let variants = (0..2)
         .map(|which| {
             let mut t = base.clone();
             let mut i = 0;
-            for_each_clip(&mut t, |kv| {
-                let cut = kv.iter().any(|(k, v)| *k == status && *v == clipped);
-                if let (true, Some(kept)) = (cut, ends.get(i)) {
-                    for (k, v) in kv.iter_mut() {
-                        if let (true, Val::List(pts)) = (*k == segment, &mut *v) {
-                            if pts.len() == 2 {
-                                pts[which] = kept[which].clone();
-                            }
-                        }
+            for_each_clip(&mut t, |r| {
+                let cut = r.status == clipped;
+                if let (true, Some(kept), Val::List(pts)) = (cut, ends.get(i), &mut r.segment) {
+                    if pts.len() == 2 {
+                        pts[which] = kept[which].clone();
                     }
                 }
                 i += 1;
@@ -454,7 +458,7 @@ fn endpoint_kept(p: &ProblemIn) -> Option<Vec<Tree>> {
 /// with the codes, the kept points and the clipped segment that follow;
 /// variant 1 writes the t only (its points from P1, P(t) = P1 + t·(P0 −
 /// P1), are right).
-fn t_from_p1(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn t_from_p1(p: &ProblemIn) -> Option<Vec<Results>> {
     p.clip.as_ref()?;
     let through = hooked(
         p,
@@ -517,7 +521,7 @@ fn segment_ends(p: &ProblemIn) -> Option<Vec<[Val; 2]>> {
 }
 
 /// R = 2N(L·N) + L instead of 2N(L·N) − L: the reflection rule replaced.
-fn reflect_plus_l(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn reflect_plus_l(p: &ProblemIn) -> Option<Vec<Results>> {
     p.shade.as_ref()?;
     hooked(
         p,
@@ -532,7 +536,7 @@ fn reflect_plus_l(p: &ProblemIn) -> Option<Vec<Tree>> {
 }
 
 /// The specular term without max(·, 0): the highlight's base as it is.
-fn specular_no_max(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn specular_no_max(p: &ProblemIn) -> Option<Vec<Results>> {
     p.shade.as_ref()?;
     hooked(
         p,
@@ -548,14 +552,14 @@ fn specular_no_max(p: &ProblemIn) -> Option<Vec<Tree>> {
 
 /// py counted from the top edge: one documented change to the results,
 /// each pixel's py becomes H − py.
-fn pixel_y_from_top(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn pixel_y_from_top(p: &ProblemIn) -> Option<Vec<Results>> {
     let h = p.perspective.as_ref()?.viewport.as_ref()?[1]
         .0
         .eval::<f64>()
         .ok()?;
     let mut t = solved(p)?;
     let pixels = Key::new(Part::Viewport, Value::Field(Field::Pixels));
-    let Val::Map(pixels) = value_of_mut(&mut t, &pixels)? else {
+    let Val::Map(pixels) = t.get_mut(&pixels)? else {
         return None;
     };
     for (_, px) in pixels.iter_mut() {
@@ -571,7 +575,7 @@ fn pixel_y_from_top(p: &ProblemIn) -> Option<Vec<Tree>> {
 /// The eye coordinates (u·P, v·P, n·P), Peye not subtracted: the same
 /// camera axes with the eye at the origin, Pe' = 0 and Pr' = Pr − Pe keep
 /// n, u, v and drop the translation by −Pe.
-fn eye_no_translation(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn eye_no_translation(p: &ProblemIn) -> Option<Vec<Results>> {
     let c = p.camera.as_ref()?;
     let look = Vec3In(std::array::from_fn(|k| {
         Num(Expr::Sub(
@@ -589,7 +593,7 @@ fn eye_no_translation(p: &ProblemIn) -> Option<Vec<Tree>> {
 }
 
 /// right = top / aspect instead of aspect·top: the aspect inverted.
-fn aspect_inverted(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn aspect_inverted(p: &ProblemIn) -> Option<Vec<Results>> {
     let aspect = p.perspective.as_ref()?.aspect.as_ref()?.0.clone();
     altered(p, |q| {
         if let Some(x) = q.perspective.as_mut() {
@@ -603,14 +607,14 @@ fn aspect_inverted(p: &ProblemIn) -> Option<Vec<Tree>> {
 /// erratum, since a student who copies one printed answer has not copied
 /// the others (a right answer to another erratum's key must not rule this
 /// one out).
-fn copied_misprint(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn copied_misprint(p: &ProblemIn) -> Option<Vec<Results>> {
     let base = solved(p)?;
-    let variants: Vec<Tree> = p
+    let variants: Vec<Results> = p
         .errata
         .iter()
         .filter_map(|e| {
             let mut t = base.clone();
-            let v = value_of_mut(&mut t, &e.key.parse().ok()?)?;
+            let v = t.get_mut(&e.key.parse().ok()?)?;
             *v = printed_value(printed(p, &e.key)?, v)?;
             Some(t)
         })
@@ -619,12 +623,12 @@ fn copied_misprint(p: &ProblemIn) -> Option<Vec<Tree>> {
 }
 
 /// The problem's results (f64; a mistaken value needs no exact form).
-fn solved(p: &ProblemIn) -> Option<Tree> {
+fn solved(p: &ProblemIn) -> Option<Results> {
     solve::solve::<f64>(p).ok().map(|r| r.result)
 }
 
 /// The results of the problem with its input altered by `f`.
-fn altered(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<Tree>> {
+fn altered(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<Results>> {
     let mut q = p.clone();
     f(&mut q);
     Some(vec![solved(&q)?])
@@ -633,7 +637,7 @@ fn altered(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<Tree>> {
 /// The results of the problem altered by `f`, for the points that can
 /// go through the altered steps: a point whose image the mistake leaves
 /// undefined (in the plane of the centre of projection) is left out.
-fn altered_points(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<Tree>> {
+fn altered_points(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<Results>> {
     let mut q = p.clone();
     f(&mut q);
     if let Some(t) = solved(&q) {
@@ -651,8 +655,8 @@ fn altered_points(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<T
     // the eye coordinates of every point (the view part alone projects none)
     q.ask = Some(vec![Part::View]);
     let points = Key::new(Part::View, Value::Field(Field::Points));
-    if let (Some(all), Some(Val::Map(eye))) = (solved(&q), value_of_mut(&mut t, &points)) {
-        if let Some(Val::Map(every)) = value_of(&all, &points) {
+    if let (Some(all), Some(Val::Map(eye))) = (solved(&q), t.get_mut(&points)) {
+        if let Some(Val::Map(every)) = all.get(&points).as_deref() {
             for (name, e) in every {
                 if !eye.iter().any(|(k, _)| k == name) {
                     eye.push((name.clone(), e.clone()));
@@ -664,7 +668,7 @@ fn altered_points(p: &ProblemIn, f: impl FnOnce(&mut ProblemIn)) -> Option<Vec<T
 }
 
 /// The results with a stage result altered between stages.
-fn hooked(p: &ProblemIn, hooks: Hooks<f64>) -> Option<Vec<Tree>> {
+fn hooked(p: &ProblemIn, hooks: Hooks<f64>) -> Option<Vec<Results>> {
     Some(vec![solve::solve_with::<f64>(p, &hooks).ok()?.result])
 }
 
@@ -672,7 +676,7 @@ fn hooked(p: &ProblemIn, hooks: Hooks<f64>) -> Option<Vec<Tree>> {
 /// view matrix's translation and the eye coordinates are the text's
 /// formulas on the axes as they are (in floats both come from the
 /// unrounded directions, which scaling an axis does not change).
-fn hooked_exact(p: &ProblemIn, hooks: Hooks<Real>) -> Option<Vec<Tree>> {
+fn hooked_exact(p: &ProblemIn, hooks: Hooks<Real>) -> Option<Vec<Results>> {
     Some(vec![solve::solve_with::<Real>(p, &hooks).ok()?.result])
 }
 
@@ -708,7 +712,7 @@ impl Unit {
 /// the problem gives used as it is, the unit vector the set-up holds
 /// scaled back by |raw|. The results gain the vector itself (`shade.L`,
 /// `shade.N`), which `practice` asks for.
-fn unnormalized(p: &ProblemIn, which: Unit) -> Option<Vec<Tree>> {
+fn unnormalized(p: &ProblemIn, which: Unit) -> Option<Vec<Results>> {
     let v: Vec<f64> = (which.given(p)?.iter())
         .map(|x| x.0.eval::<f64>().ok())
         .collect::<Option<_>>()?;
@@ -731,10 +735,9 @@ fn unnormalized(p: &ProblemIn, which: Unit) -> Option<Vec<Tree>> {
         ..Hooks::default()
     };
     let mut t = solve::solve_with::<f64>(p, &hooks).ok()?.result;
-    let shade = Part::Shade.key();
-    if let Some((_, Val::Map(kv))) = t.iter_mut().find(|(k, _)| *k == shade) {
+    if let Some(PartResult::Shade(shade)) = t.of_mut(Part::Shade) {
         let raw = Val::List(v.iter().map(Val::num).collect());
-        kv.insert(0, (Field::Shading(which.shading()).key(), raw));
+        *shade.value_mut(which.shading()) = Some(raw);
     }
     Some(vec![t])
 }
@@ -743,7 +746,7 @@ fn unnormalized(p: &ProblemIn, which: Unit) -> Option<Vec<Tree>> {
 /// rad): a spot light's cone angles, whose halves the spot factor takes
 /// the cosines of, given to the stage as θ·180/π degrees, so that
 /// cos(θ/2 ·180/π °) = cos(θ/2 rad). Only for a problem with a spot light.
-fn cos_in_radians(p: &ProblemIn) -> Option<Vec<Tree>> {
+fn cos_in_radians(p: &ProblemIn) -> Option<Vec<Results>> {
     if !p.light.iter().any(|l| l.kind == LightType::Spot) {
         return None;
     }
@@ -826,21 +829,10 @@ fn map_camera(q: &mut ProblemIn, f: impl FnOnce(&mut crate::input::problem::Came
     }
 }
 
-/// Calls `f` on each clip result (one, or each of a list).
-fn for_each_clip(t: &mut Tree, mut f: impl FnMut(&mut Vec<(String, Val)>)) {
-    let clip = Part::Clip.key();
-    if let Some((_, v)) = t.iter_mut().find(|(k, _)| *k == clip) {
-        match v {
-            Val::Map(kv) => f(kv),
-            Val::List(items) => {
-                for it in items {
-                    if let Val::Map(kv) = it {
-                        f(kv);
-                    }
-                }
-            }
-            _ => {}
-        }
+/// Calls `f` on each segment's clip results.
+fn for_each_clip(t: &mut Results, f: impl FnMut(&mut ClipResult)) {
+    if let Some(PartResult::Clip(runs)) = t.of_mut(Part::Clip) {
+        runs.iter_mut().for_each(f);
     }
 }
 
@@ -871,7 +863,7 @@ mod tests {
     fn top_with(code: Code, p: &ProblemIn) -> f64 {
         let t = &code.apply(p).expect("the mistake applies")[0];
         let top = Key::new(Part::Window, Value::Field(Field::Edge(Edge::Top, false)));
-        match value_of(t, &top) {
+        match t.get(&top).as_deref() {
             Some(Val::Num(top)) => top.value,
             v => panic!("window.top is {v:?}"),
         }
@@ -912,7 +904,7 @@ mod tests {
     /// The numbers of `key` in variant `i` of a mistake's results.
     fn nums(code: Code, p: &ProblemIn, i: usize, key: &str) -> Vec<f64> {
         let trees = code.apply(p).expect("the mistake applies");
-        let v = crate::tutor::solution::lookup(&trees[i], key).expect(key);
+        let v = trees[i].lookup(key).expect(key);
         v.numbers()
     }
 
@@ -1002,8 +994,8 @@ mod tests {
             "{seg:?}"
         );
         let trees = Code::TFromP1.apply(&p).unwrap();
-        let code = crate::tutor::solution::lookup(&trees[0], "clip.intersections.right.code");
-        assert_eq!(code, Some(&Val::text("001001")));
+        let code = trees[0].lookup("clip.intersections.right.code");
+        assert_eq!(code.as_deref(), Some(&Val::text("001001")));
         // variant 1: the t only, the points right
         let right = nums(Code::TFromP1, &p, 1, "clip.intersections.right.point");
         assert!(close(&right, &[3.0, 8.0 / 3.0, 11.0 / 6.0]), "{right:?}");

@@ -381,6 +381,13 @@ impl fmt::Display for Node {
     }
 }
 
+impl serde::Serialize for Node {
+    /// JSON names a result by its one spelling ([`Node`]'s `Display`).
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_str(self)
+    }
+}
+
 impl From<Field> for Node {
     fn from(f: Field) -> Node {
         Node::Field(f)

@@ -1,9 +1,9 @@
 //! The answer keys of a result tree in the order of the text's solution
 //! (each part's order is its module's, [`crate::tutor::parts`]).
 
-use crate::stages::trace::Val;
-use crate::tutor::key::{Key, Node};
+use crate::tutor::key::Key;
 use crate::tutor::parts;
+use crate::tutor::parts::result::{One, PartResult, Results};
 
 /// The answer keys of a result tree in the order of the text's solution:
 /// n, u, v, the view matrix, the eye coordinates; the projected points;
@@ -14,13 +14,19 @@ use crate::tutor::parts;
 /// N, cos α, R (H and N·H for Blinn), cos β, the terms, their sum and the
 /// clamped colour. Each key is a typed [`Key`] (spelled by its `Display`),
 /// each part's in its module's order ([`parts::Solves::keys`]).
-pub fn ordered_keys(result: &[(String, Val)]) -> Vec<Key> {
+pub fn ordered_keys(result: &Results) -> Vec<Key> {
     let mut keys: Vec<Key> = Vec::new();
-    for (name, v) in result {
-        let Some(Node::Part(part)) = Node::read(name, None) else {
-            continue;
-        };
-        keys.extend((parts::of(part).keys)(v));
+    for r in result.parts.iter().filter(|_| result.nested) {
+        let part_keys = parts::of(r.part()).keys;
+        match r {
+            PartResult::Clip(runs) if runs.len() > 1 => {
+                for (i, one) in runs.iter().enumerate() {
+                    let of = |k: Key| k.of_segment(Some(i));
+                    keys.extend(part_keys(One::Clip(one)).into_iter().map(of));
+                }
+            }
+            _ => keys.extend(r.one(None).map(part_keys).unwrap_or_default()),
+        }
     }
     keys
 }
@@ -28,31 +34,62 @@ pub fn ordered_keys(result: &[(String, Val)]) -> Vec<Key> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::stages::trace::Val;
+    use crate::tutor::parts::clip::ClipResult;
+    use crate::tutor::parts::shade::ShadeResult;
+    use crate::tutor::parts::view::ViewResult;
+    use crate::tutor::parts::window::{Edges, WindowResult};
 
     fn map(keys: &[&str]) -> Val {
         Val::Map(keys.iter().map(|k| (k.to_string(), Val::Null)).collect())
     }
 
+    fn segment(tried: &[&str]) -> ClipResult {
+        ClipResult {
+            code0: Val::Null,
+            code1: Val::Null,
+            status: Val::Null,
+            segment: Val::Null,
+            intersections: map(tried),
+        }
+    }
+
     #[test]
     fn keys_come_in_the_order_of_the_texts_solution() {
-        let view = Val::Map(vec![
-            ("u".into(), Val::Null),
-            ("v".into(), Val::Null),
-            ("n".into(), Val::Null),
-            ("matrix".into(), Val::Null),
-            ("points".into(), map(&["A", "B"])),
-        ]);
-        let run = Val::Map(vec![
-            ("code0".into(), Val::Null),
-            ("status".into(), Val::Null),
-            ("intersections".into(), map(&["top"])),
-        ]);
-        let result = vec![
-            ("view".to_string(), view),
-            ("window".into(), map(&["top", "far_top", "width"])),
-            ("clip".into(), Val::List(vec![map(&["code0"]), run])),
-            ("shade".into(), map(&["color", "cos_alpha", "L"])),
-        ];
+        let view = ViewResult {
+            u: Val::Null,
+            v: Val::Null,
+            n: Val::Null,
+            matrix: Some(Val::Null),
+            points: Some(map(&["A", "B"])),
+        };
+        let edges = || Edges {
+            top: Val::Null,
+            bottom: Val::Null,
+            left: Val::Null,
+            right: Val::Null,
+        };
+        let window = WindowResult {
+            near: edges(),
+            height: Val::Null,
+            width: Val::Null,
+            far: Some(edges()),
+        };
+        let shade = ShadeResult {
+            l: Some(Val::Null),
+            color: Some(Val::Null),
+            cos_alpha: Some(Val::Null),
+            ..ShadeResult::default()
+        };
+        let result = Results {
+            nested: true,
+            parts: vec![
+                PartResult::View(Box::new(view)),
+                PartResult::Window(Box::new(window)),
+                PartResult::Clip(vec![segment(&[]), segment(&["top"])]),
+                PartResult::Shade(Box::new(shade)),
+            ],
+        };
         let want = [
             "view.n",
             "view.u",
@@ -61,6 +98,10 @@ mod tests {
             "view.points.A",
             "view.points.B",
             "window.top",
+            "window.bottom",
+            "window.left",
+            "window.right",
+            "window.height",
             "window.width",
             "clip.0.code0",
             "clip.0.code1",
@@ -79,5 +120,11 @@ mod tests {
         ];
         let got: Vec<String> = ordered_keys(&result).iter().map(Key::to_string).collect();
         assert_eq!(got, want);
+        // a command's results answer no key of a part
+        let command = Results {
+            nested: false,
+            ..result
+        };
+        assert!(ordered_keys(&command).is_empty());
     }
 }

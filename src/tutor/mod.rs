@@ -10,6 +10,7 @@ pub mod class;
 pub mod diagnose;
 pub mod follow;
 pub mod generate;
+pub mod given;
 pub mod key;
 pub mod keys;
 pub mod parts;

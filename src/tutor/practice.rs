@@ -31,7 +31,6 @@ use crate::tutor::check::{Marker, Settings, Verdict};
 use crate::tutor::diagnose::Code;
 use crate::tutor::generate::{Difficulty, Topic};
 use crate::tutor::key::{Edge, Field, Key, Part, Shading, Value};
-use crate::tutor::solution::value_of;
 
 /// One value the student is asked for.
 #[derive(Clone, Debug)]
@@ -96,7 +95,7 @@ pub fn plan(p: &ProblemIn, settings: Settings, drawn: Option<(Topic, Difficulty)
         .filter_map(|key| {
             Some(Item {
                 key: key.clone(),
-                expected: value_of(&marker.result, key)?.clone(),
+                expected: marker.result.get(key)?.into_owned(),
                 step: step_for(key, &marker.steps),
             })
         })

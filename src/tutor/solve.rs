@@ -14,12 +14,13 @@ use crate::input::part::Problem;
 use crate::input::problem::ProblemIn;
 use crate::msg::ErrMsg;
 use crate::num::Scalar;
-use crate::stages::trace::{Recorder, Val};
+use crate::stages::trace::Recorder;
 use crate::tutor::check::{named_leaves, printed_agrees, settings_for, written};
 use crate::tutor::key::Part;
 use crate::tutor::parts::{Earlier, Out, Solver};
 use crate::tutor::run::{Hooks, Named};
-use crate::tutor::solution::{value_of, Asked, Compared, Comparison, Given, Report, Tree};
+use crate::tutor::solution::{Asked, Compared, Comparison, Given, Report, Results};
+use std::borrow::Cow;
 
 /// Solves a typed problem at precision `T`: a calculator command's one
 /// part or a problem file's parts.
@@ -54,7 +55,8 @@ pub fn solve_typed<T: Scalar>(p: &Problem, hooks: &Hooks<T>) -> Result<Report> {
         out: Out {
             sections: p.file.is_some(),
             rec: Recorder::quiet(hooks.quiet),
-            ..Out::default()
+            result: Results::new(p.file.is_some()),
+            parts: Vec::new(),
         },
         earlier: Earlier {
             points,
@@ -95,12 +97,12 @@ pub fn solve_typed<T: Scalar>(p: &Problem, hooks: &Hooks<T>) -> Result<Report> {
 /// the printed answers compared with the results.
 fn file_report<T: Scalar>(
     p: &ProblemIn,
-    (rec, result, parts): (Recorder, Tree, Vec<Given>),
+    (rec, result, parts): (Recorder, Results, Vec<Given>),
 ) -> Result<Report> {
     if !p.light.is_empty() && p.shade.is_none() {
         return Err(Error::why("shade", ErrMsg::LightsNeedShade));
     }
-    if result.is_empty() {
+    if result.parts.is_empty() {
         return Err(Error::why("ask", ErrMsg::NothingToSolve));
     }
     let comparison = compare_printed(p, &result);
@@ -114,7 +116,7 @@ fn file_report<T: Scalar>(
 /// Compares every `[printed]` answer with the computed results, each
 /// judged as `check` marks a student's answer, with the problem's
 /// settings ([`printed_agrees`]), and shown as written ([`written`]).
-fn compare_printed(p: &ProblemIn, result: &[(String, Val)]) -> Option<Comparison> {
+fn compare_printed(p: &ProblemIn, result: &Results) -> Option<Comparison> {
     let flat = named_leaves(&p.printed);
     if flat.is_empty() {
         return None;
@@ -124,7 +126,7 @@ fn compare_printed(p: &ProblemIn, result: &[(String, Val)]) -> Option<Comparison
         .iter()
         .map(|(name, printed)| {
             let (k, key) = (name.key().ok(), name.to_string());
-            let computed = k.as_ref().and_then(|k| value_of(result, k)).cloned();
+            let computed = k.as_ref().and_then(|k| result.get(k)).map(Cow::into_owned);
             let judged = k.as_ref().zip(computed.as_ref());
             let erratum = p.errata.iter().find(|e| e.key == key);
             Compared {
@@ -149,9 +151,9 @@ mod tests {
     use crate::input::part::{PartIn, ProjectIn, Table};
     use crate::input::problem::PerspectiveIn;
     use crate::msg::Msg;
+    use crate::stages::trace::Val;
     use crate::tutor::key::Key;
     use crate::tutor::keys::ordered_keys;
-    use crate::tutor::solution::{lookup, part_value};
 
     /// Every shipped problem (problems/*.toml), by file name, solved.
     fn shipped() -> Vec<(String, ProblemIn, Report)> {
@@ -173,7 +175,7 @@ mod tests {
 
     /// The answer keys of `part` that practice asks and check follows
     /// through, in a result tree.
-    fn keys_of(part: Part, result: &Tree) -> Vec<Key> {
+    fn keys_of(part: Part, result: &Results) -> Vec<Key> {
         let of_part = |k: &Key| k.part == Some(part);
         ordered_keys(result).into_iter().filter(of_part).collect()
     }
@@ -189,8 +191,7 @@ mod tests {
     fn every_part_is_solved_by_a_shipped_problem_alone_or_with_others() {
         let shipped = shipped();
         for part in Part::all() {
-            let mut solvers =
-                (shipped.iter()).filter(|(_, _, r)| r.result.iter().any(|(k, _)| *k == part.key()));
+            let mut solvers = (shipped.iter()).filter(|(_, _, r)| r.result.of(part).is_some());
             let Some((name, p, r)) = solvers.next() else {
                 panic!("no problem in problems/ solves `{part}`: add one that asks it");
             };
@@ -199,8 +200,8 @@ mod tests {
             let mut alone = p.clone();
             alone.ask = Some(vec![part]);
             let a = solve::<f64>(&alone).unwrap_or_else(|e| panic!("{name}, {part} alone: {e}"));
-            let mine = |t: &Tree| t.iter().find(|(k, _)| *k == part.key()).cloned();
-            assert_eq!(a.result.len(), 1, "{name}, {part} alone");
+            let mine = |t: &Results| t.of(part).cloned();
+            assert_eq!(a.result.parts.len(), 1, "{name}, {part} alone");
             assert_eq!(mine(&a.result), mine(&r.result), "{name}, {part} alone");
             assert_eq!(keys_of(part, &a.result), keys, "{name}, {part} alone");
         }
@@ -272,10 +273,13 @@ mod tests {
     }
 
     /// The numbers of a result (a number, or a vector's or a matrix's).
-    fn nums(v: Option<&Val>) -> Vec<f64> {
-        match v {
+    fn nums(v: Option<Cow<'_, Val>>) -> Vec<f64> {
+        match v.as_deref() {
             Some(Val::Num(x)) => vec![x.value],
-            Some(Val::List(xs)) => xs.iter().flat_map(|x| nums(Some(x))).collect(),
+            Some(Val::List(xs)) => xs
+                .iter()
+                .flat_map(|x| nums(Some(Cow::Borrowed(x))))
+                .collect(),
             other => panic!("not numbers: {other:?}"),
         }
     }
@@ -299,7 +303,8 @@ mod tests {
             [points]\nP = [1, 2, 3]\n\
             [perspective]\nnear = 1\nfovy = 90\naspect = 2\n";
         let file = solve::<Real>(&ProblemIn::parse(text, "t.toml").unwrap()).unwrap();
-        let of_file = |part| Some(part_value(&file.result, part, None).unwrap().clone());
+        let of_file = |part| file.result.of(part).cloned();
+        let of_command = |r: Results| r.parts.into_iter().next();
         let camera = CameraIn {
             eye: vec3("eye", "0,0,5").unwrap(),
             look: vec3("look", "0,0,0").unwrap(),
@@ -315,13 +320,13 @@ mod tests {
             ..Shared::default()
         };
         let c = solve_problem::<Real>(&Problem::command(vec![PartIn::View], view)).unwrap();
-        assert_eq!(nums(lookup(&c.result, "u")), [1.0, 0.0, 0.0]);
-        assert_eq!(nums(lookup(&c.result, "v")), [0.0, 1.0, 0.0]);
-        assert_eq!(nums(lookup(&c.result, "n")), [0.0, 0.0, 1.0]);
+        assert_eq!(nums(c.result.lookup("u")), [1.0, 0.0, 0.0]);
+        assert_eq!(nums(c.result.lookup("v")), [0.0, 1.0, 0.0]);
+        assert_eq!(nums(c.result.lookup("n")), [0.0, 0.0, 1.0]);
         let m = [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, -5.0];
-        assert_eq!(nums(lookup(&c.result, "matrix"))[..12], m);
-        assert_eq!(nums(lookup(&c.result, "points.P")), [1.0, 2.0, -2.0]);
-        assert_eq!(of_file(Part::View), Some(Val::Map(c.result)));
+        assert_eq!(nums(c.result.lookup("matrix"))[..12], m);
+        assert_eq!(nums(c.result.lookup("points.P")), [1.0, 2.0, -2.0]);
+        assert_eq!(of_file(Part::View), of_command(c.result));
         assert_eq!(c.parts, file.parts[..1]);
 
         let d = ProjectionIn::Plane(("d".into(), num("d", "-1").unwrap()));
@@ -335,8 +340,8 @@ mod tests {
         };
         let part = PartIn::Project(ProjectIn::Given(d));
         let c = solve_problem::<Real>(&Problem::command(vec![part], project)).unwrap();
-        assert_eq!(nums(lookup(&c.result, "points.P")), [0.5, 1.0, -1.0]);
-        assert_eq!(of_file(Part::Project), Some(Val::Map(c.result)));
+        assert_eq!(nums(c.result.lookup("points.P")), [0.5, 1.0, -1.0]);
+        assert_eq!(of_file(Part::Project), of_command(c.result));
 
         let table = PerspectiveIn {
             near: Some(num("near", "1").unwrap()),
@@ -355,10 +360,10 @@ mod tests {
         let edges = ["top", "bottom", "left", "right", "height", "width"];
         let got: Vec<f64> = edges
             .iter()
-            .flat_map(|e| nums(lookup(&c.result, e)))
+            .flat_map(|e| nums(c.result.lookup(e)))
             .collect();
         assert_eq!(got, [1.0, -1.0, -2.0, 2.0, 2.0, 4.0]);
-        assert_eq!(of_file(Part::Window), Some(Val::Map(c.result)));
+        assert_eq!(of_file(Part::Window), of_command(c.result));
     }
 
     /// `ask` names the parts by their one spelling, in the file's order;

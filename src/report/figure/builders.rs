@@ -10,15 +10,29 @@ use crate::msg::{FigureMsg, Msg, Panel};
 use crate::num::vec::{self, V3};
 use crate::report::Style;
 use crate::stages::trace::{Step, Val};
-use crate::tutor::key::Node;
+use crate::tutor::key::{Field, Node};
+use crate::tutor::solution::One;
 
 /// What one part's drawing is made from besides its inputs: the named
 /// results and the steps.
 pub(super) struct Part<'a> {
-    /// The named results.
-    pub res: &'a [(String, Val)],
+    /// The part's results (none when it has none).
+    pub res: Option<One<'a>>,
+    /// The pixels of a problem file's viewport part, which join the
+    /// window's drawing.
+    pub pixels: Option<&'a Val>,
     /// The worked steps (vectors that are not results: N, L, V).
     pub steps: &'a [Step],
+}
+
+impl<'a> Part<'a> {
+    /// A field of the part's results.
+    pub fn field(&self, f: Field) -> Option<&'a Val> {
+        match f {
+            Field::Pixels if self.pixels.is_some() => self.pixels,
+            _ => self.res?.field(f),
+        }
+    }
 }
 
 /// A result by its typed name (a field of the part, a point's name, what

@@ -56,7 +56,7 @@ pub fn figure(
     let (pe, pr, up): (P3, P3, P3) = (c.pe.into(), c.pr.into(), c.vup.into());
     let mut uvn = [[0.0; 3]; 3];
     for (k, (axis, _)) in AXIS_PENS.iter().enumerate() {
-        uvn[k] = vec_of(result(p.res, Field::Axis(*axis))?)?;
+        uvn[k] = vec_of(p.field(Field::Axis(*axis))?)?;
     }
     let axo = camera_view(&uvn);
     let extent = [pe, pr]
@@ -96,7 +96,7 @@ pub fn figure(
     // note says so).
     for (k, (axis, pen)) in AXIS_PENS.iter().enumerate() {
         let key = Field::Axis(*axis).key();
-        let text = labelled(st, &key, result(p.res, Field::Axis(*axis))?);
+        let text = labelled(st, &key, p.field(Field::Axis(*axis))?);
         let at = (key.as_str(), Kind::Arrow);
         items.extend(arrow3(&axo, at, pe, uvn[k], AXIS_SCALE * len, *pen, text));
     }
@@ -111,7 +111,7 @@ pub fn figure(
 /// drawn already: Peye, Pref), and a note under the drawing with its
 /// world coordinates and its eye coordinates `A' = …` from the results.
 fn points(p: &Part, st: &Style, axo: &Axo, named: &[(String, [f64; 3])], items: &mut Vec<Item>) {
-    let eye = match result(p.res, Field::Points) {
+    let eye = match p.field(Field::Points) {
         Some(Val::Map(m)) => m.clone(),
         _ => vec![],
     };

@@ -52,13 +52,9 @@ struct Clip {
 }
 
 fn read(p: &Part, st: &Style, g: &ClipAt) -> Option<Clip> {
-    let code = |k: Field| {
-        result(p.res, k)
-            .map(|v| st.val_inline(v))
-            .unwrap_or_default()
-    };
+    let code = |k: Field| p.field(k).map(|v| st.val_inline(v)).unwrap_or_default();
     let mut tried = Vec::new();
-    if let Some(Val::Map(m)) = result(p.res, Field::Intersections) {
+    if let Some(Val::Map(m)) = p.field(Field::Intersections) {
         for (key, v) in m {
             let Val::Map(f) = v else { continue };
             let (Some(bit), Some(t_val), Some(point_val), Some(c)) = (
@@ -81,7 +77,7 @@ fn read(p: &Part, st: &Style, g: &ClipAt) -> Option<Clip> {
             });
         }
     }
-    let kept = match result(p.res, Field::Segment) {
+    let kept = match p.field(Field::Segment) {
         Some(Val::List(e)) if e.len() == 2 => Some([vec_of(&e[0])?, vec_of(&e[1])?]),
         _ => None,
     };

@@ -5,9 +5,8 @@
 use super::builders::Part;
 use super::{camera, clip, project, shade, window, Drawing, Figure};
 use crate::report::Style;
-use crate::stages::trace::Val;
 use crate::tutor::key;
-use crate::tutor::solution::{part_value, Given, Report};
+use crate::tutor::solution::{Given, Report};
 
 /// The drawings of a report, in the order of its parts.
 pub fn drawings(r: &Report, st: &Style) -> Vec<Drawing> {
@@ -27,6 +26,7 @@ pub fn drawings(r: &Report, st: &Style) -> Vec<Drawing> {
 fn figures(r: &Report, g: &Given, st: &Style) -> Option<Vec<Figure>> {
     let p = Part {
         res: r.part_result(g),
+        pixels: None,
         steps: &r.steps,
     };
     match g {
@@ -39,11 +39,9 @@ fn figures(r: &Report, g: &Given, st: &Style) -> Option<Vec<Figure>> {
         } => project::figures(&p, st, projection, (points, *chained)),
         Given::Window(w) => {
             // the pixels of a problem file's viewport part join the window's
-            let mut res = p.res.to_vec();
-            if let Some(Val::Map(vp)) = part_value(&r.result, key::Part::Viewport, None) {
-                res.extend(vp.iter().cloned());
-            }
-            let p = Part { res: &res, ..p };
+            let viewport = r.result.of(key::Part::Viewport).and_then(|v| v.one(None));
+            let pixels = viewport.and_then(|v| v.field(key::Field::Pixels));
+            let p = Part { pixels, ..p };
             window::figures(&p, st, w)
         }
         Given::Clip(c) => clip::figures(&p, st, c),

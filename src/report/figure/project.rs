@@ -83,7 +83,7 @@ struct Projected {
 /// The points: eye coordinates as given (the view part's results when
 /// `chained`), images from the results.
 fn projected(p: &Part, eyes: &[(String, Val)], chained: bool) -> Vec<Projected> {
-    let Some(Val::Map(images)) = result(p.res, Field::Points) else {
+    let Some(Val::Map(images)) = p.field(Field::Points) else {
         return vec![];
     };
     images

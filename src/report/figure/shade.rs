@@ -56,7 +56,7 @@ fn per_light(v: Option<&Val>, i: usize) -> Option<&Val> {
 /// The numbers (from 0) of the lights in range, in order: each has an L
 /// step (a light out of range has none).
 fn lit(p: &Part, count: usize) -> Vec<usize> {
-    match result(p.res, Field::Lights) {
+    match p.field(Field::Lights) {
         Some(Val::List(ls)) => (0..ls.len())
             .filter(|i| match &ls[*i] {
                 Val::Map(m) => matches!(result(m, Factor::InRange), Some(Val::Bool(true))),
@@ -296,7 +296,7 @@ pub fn figures(p: &Part, st: &Style) -> Option<Vec<Figure>> {
     let n = vec_of(nv)?;
     let v = step_vectors(p, "V").first().copied();
     let ls = step_vectors(p, "L");
-    let single = !matches!(result(p.res, Field::Lights), Some(Val::List(x)) if x.len() > 1);
+    let single = !matches!(p.field(Field::Lights), Some(Val::List(x)) if x.len() > 1);
     let lights: Vec<Light> = ls
         .iter()
         .zip(lit(p, ls.len()))
@@ -308,17 +308,19 @@ pub fn figures(p: &Part, st: &Style) -> Option<Vec<Figure>> {
             },
             number: i + 1,
             l,
-            r: per_light(result(p.res, Field::Shading(Shading::R)), i),
-            cos_a: per_light(result(p.res, Field::Shading(Shading::CosAlpha)), i),
-            cos_b: per_light(result(p.res, Field::Shading(Shading::CosBeta)), i),
+            r: per_light(p.field(Field::Shading(Shading::R)), i),
+            cos_a: per_light(p.field(Field::Shading(Shading::CosAlpha)), i),
+            cos_b: per_light(p.field(Field::Shading(Shading::CosBeta)), i),
         })
         .collect();
-    let h = result(p.res, Field::Shading(Shading::H)).filter(|h| vec_of(h).is_some());
+    let h = p
+        .field(Field::Shading(Shading::H))
+        .filter(|h| vec_of(h).is_some());
     let mut out = Vec::new();
     for light in &lights {
         let first = light.number == 1;
         let blinn = if first {
-            h.zip(result(p.res, Field::Shading(Shading::NDotH)))
+            h.zip(p.field(Field::Shading(Shading::NDotH)))
         } else {
             None
         };
@@ -330,7 +332,7 @@ pub fn figures(p: &Part, st: &Style) -> Option<Vec<Figure>> {
         out.extend(incidence(st, which, (nv, n), v, light, blinn));
     }
     // The lights out of range: a note on the first panel.
-    let count = match result(p.res, Field::Lights) {
+    let count = match p.field(Field::Lights) {
         Some(Val::List(x)) => x.len(),
         _ => 0,
     };

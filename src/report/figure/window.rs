@@ -5,7 +5,7 @@
 //! projected points, and the viewport with their pixels.
 
 use super::axo::apex_outside;
-use super::builders::{num_val, nums_of, panel, panel3, result, say, vec_val, Part};
+use super::builders::{num_val, nums_of, panel, panel3, say, vec_val, Part};
 use super::{label, label_toward, labelled, mark, short, Figure, Item, Kind, Pen, Shape};
 use crate::msg::{FigWord, FigureMsg, Panel};
 use crate::report::Style;
@@ -18,7 +18,7 @@ type Win = [f64; 4];
 
 /// The window's edges on the near plane, or (`far`) on the far one.
 fn win(p: &Part, far: bool) -> Option<Win> {
-    let n = |e: Edge| match result(p.res, Field::Edge(e, far))? {
+    let n = |e: Edge| match p.field(Field::Edge(e, far))? {
         Val::Num(s) => Some(s.value),
         _ => None,
     };
@@ -32,13 +32,13 @@ fn win(p: &Part, far: bool) -> Option<Win> {
 
 /// A result's value as a label writes it.
 fn shown(p: &Part, st: &Style, key: Field) -> String {
-    result(p.res, key).map(|v| short(st, v)).unwrap_or_default()
+    p.field(key).map(|v| short(st, v)).unwrap_or_default()
 }
 
 /// A result as a label in a crowded panel: its exact form when that is
 /// at most 12 characters, else its decimal.
 fn tiny(p: &Part, st: &Style, key: Field) -> String {
-    let Some(Val::Num(s)) = result(p.res, key) else {
+    let Some(Val::Num(s)) = p.field(key) else {
         return String::new();
     };
     match &s.pretty {
@@ -254,7 +254,7 @@ fn near_window(p: &Part, st: &Style, w: Win, pts: &[(String, [f64; 2], Val)]) ->
 /// The viewport W × H with each point at its pixel position.
 fn viewport(p: &Part, st: &Style, g: &WindowAt) -> Option<Figure> {
     let (vw, vh) = g.viewport?;
-    let Some(Val::Map(px)) = result(p.res, Field::Pixels) else {
+    let Some(Val::Map(px)) = p.field(Field::Pixels) else {
         return None;
     };
     let corners = vec![[0.0, 0.0], [vw, 0.0], [vw, vh], [0.0, vh]];

@@ -20,7 +20,7 @@
 use super::judge::{apart, judge, matches_closely, Ctx, Judged};
 use super::plausible;
 use super::scheme::Scheme;
-use super::{Settings, Tree, Verdict};
+use super::{Results, Settings, Verdict};
 use crate::error::Result;
 use crate::input::answer::{self, Read};
 use crate::input::part::Problem;
@@ -34,8 +34,9 @@ use crate::tutor::follow::Given;
 use crate::tutor::key::{Field, Key, Part, Shading};
 use crate::tutor::keys::ordered_keys;
 use crate::tutor::run::Hooks;
-use crate::tutor::solution::value_of;
+use crate::tutor::solution::PartResult;
 use crate::tutor::solve;
+use std::borrow::Cow;
 use std::cell::RefCell;
 use std::collections::HashMap;
 
@@ -47,7 +48,7 @@ pub struct Marker {
     /// grafika's exact results, with the unit vectors L and N of a
     /// lighting problem with one light (steps of the solution that
     /// `practice` asks for).
-    pub result: Tree,
+    pub result: Results,
     /// The worked steps of the solution.
     pub steps: Vec<Step>,
     /// The keys in the order of the text's solution.
@@ -59,7 +60,7 @@ pub struct Marker {
     /// How answers are marked.
     pub settings: Settings,
     /// Each mistake of the catalog that applies, with its results.
-    variants: Vec<(Code, Vec<Tree>)>,
+    variants: Vec<(Code, Vec<Results>)>,
     /// The exact forms of grafika's values (and of its mistakes') already
     /// turned into exact numbers.
     exact: RefCell<HashMap<String, Option<Real>>>,
@@ -97,14 +98,14 @@ impl Marker {
     pub fn new(p: &ProblemIn, settings: Settings) -> Result<Marker> {
         let report = solve::solve::<Real>(p)?;
         let mut result = report.result;
-        if let Some((_, Val::Map(kv))) = result.iter_mut().find(|(k, _)| *k == Part::Shade.key()) {
+        if let Some(PartResult::Shade(shade)) = result.of_mut(Part::Shade) {
             // the unit vectors are steps of the solution, not results of
             // `solve`; with one light there is one of each
             for unit in [Shading::N, Shading::L] {
                 let name = Field::Shading(unit).key();
                 let mut found = report.steps.iter().filter_map(|s| step_result(s, &name));
                 if let (Some(v), None) = (found.next(), found.next()) {
-                    kv.insert(0, (name, v));
+                    *shade.value_mut(unit) = Some(v);
                 }
             }
         }
@@ -176,11 +177,11 @@ impl Marker {
         &'a self,
         key: &'a Key,
         right: &'a Val,
-    ) -> impl Iterator<Item = (Code, &'a Val)> + 'a {
+    ) -> impl Iterator<Item = (Code, Cow<'a, Val>)> + 'a {
         self.variants.iter().flat_map(move |(m, trees)| {
             trees
                 .iter()
-                .filter_map(move |t| value_of(t, key))
+                .filter_map(move |t| t.get(key))
                 .filter(move |v| differs(v, right))
                 .map(move |v| (*m, v))
         })
@@ -207,8 +208,8 @@ impl Marker {
         let rel = self.settings.tolerance;
         let mut mistakes: Vec<Code> = Vec::new();
         for (m, v) in self.mistaken(key, right) {
-            if apart(v, right, key, rel)
-                && matches_closely(&read, v, key, rel)
+            if apart(&v, right, key, rel)
+                && matches_closely(&read, &v, key, rel)
                 && !mistakes.contains(&m)
             {
                 mistakes.push(m);
@@ -221,7 +222,7 @@ impl Marker {
         };
         // a wrong answer: every mistake whose value it rounds
         for (m, v) in self.mistaken(key, right) {
-            if self.judged(&read, v, key, true).verdict.is_correct() && !mistakes.contains(&m) {
+            if self.judged(&read, &v, key, true).verdict.is_correct() && !mistakes.contains(&m) {
                 mistakes.push(m);
             }
         }
@@ -242,22 +243,21 @@ impl Marker {
         candidates: &[Code],
         agreed: &[(&Key, &Read)],
     ) -> Vec<Code> {
-        let Some(right) = value_of(&self.result, key) else {
+        let Some(right) = self.result.get(key) else {
             return vec![];
         };
         let rel = self.settings.tolerance;
-        let gives = |t: &Tree| {
-            value_of(t, key).is_some_and(|v| {
-                differs(v, right)
-                    && (matches_closely(read, v, key, rel)
-                        || self.judged(read, v, key, true).verdict.is_correct())
+        let gives = |t: &Results| {
+            t.get(key).is_some_and(|v| {
+                differs(&v, &right)
+                    && (matches_closely(read, &v, key, rel)
+                        || self.judged(read, &v, key, true).verdict.is_correct())
             })
         };
-        let keeps =
-            |t: &Tree, (k, r): &(&Key, &Read)| match (value_of(t, k), value_of(&self.result, k)) {
-                (Some(v), Some(rk)) if apart(v, rk, k, rel) => self.judged(r, v, k, true).agrees(),
-                _ => true,
-            };
+        let keeps = |t: &Results, (k, r): &(&Key, &Read)| match (t.get(k), self.result.get(k)) {
+            (Some(v), Some(rk)) if apart(&v, &rk, k, rel) => self.judged(r, &v, k, true).agrees(),
+            _ => true,
+        };
         self.variants
             .iter()
             .filter(|(m, _)| candidates.contains(m))
@@ -288,7 +288,7 @@ impl Marker {
         if earlier.is_empty() {
             return Follow::Not;
         }
-        let right = |k: &Key| value_of(&self.result, k).cloned();
+        let right = |k: &Key| self.result.get(k).map(Cow::into_owned);
         let cx = plausible::Context {
             rel: self.settings.tolerance,
             right: &right,
@@ -339,9 +339,9 @@ impl Marker {
             ..Hooks::default()
         };
         let result = solve::solve_typed::<f64>(&self.typed, &hooks).ok()?.result;
-        let v = value_of(&result, key)?;
-        let right = value_of(&self.result, key)?;
-        differs(v, right).then(|| v.clone())
+        let v = result.get(key)?;
+        let right = self.result.get(key)?;
+        differs(&v, &right).then(|| v.into_owned())
     }
 
     /// The worked steps with the student's own values `own` in place of

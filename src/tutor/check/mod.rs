@@ -47,9 +47,10 @@ use crate::input::answer::Read;
 use crate::input::problem::ProblemIn;
 use crate::stages::trace::Val;
 use crate::tutor::diagnose::Code;
-use crate::tutor::key::{Field, Key, Node, Part, Shading, Value};
+use crate::tutor::key::{Field, Key, Part, Shading, Value};
+use crate::tutor::solution::{One, PartResult};
 
-pub use crate::tutor::solution::Tree;
+pub use crate::tutor::solution::Results;
 
 /// Default relative tolerance (the usual default of online homework systems).
 pub const DEFAULT_TOLERANCE: f64 = 1e-3;
@@ -198,53 +199,58 @@ impl Marking {
 /// The answer keys a problem expects by default: every answer of the parts
 /// it solves, except those `asked_by_default` leaves out, for each segment
 /// of a clip with several as for a lone one.
-pub fn default_keys(result: &Tree) -> Vec<Key> {
+pub fn default_keys(result: &Results) -> Vec<Key> {
     let mut keys = Vec::new();
-    for (name, v) in result {
-        match (Node::read(name, None), v) {
-            (Some(Node::Part(Part::Clip)), Val::List(items)) => {
-                for (i, it) in items.iter().enumerate() {
-                    if let Val::Map(kv) = it {
-                        let asked = fields(Part::Clip, kv).filter(|(f, _)| asked_by_default(*f));
-                        keys.extend(asked.map(|(f, _)| {
+    for p in &result.parts {
+        let part = p.part();
+        match p {
+            _ if !result.nested => {
+                let fields = p.one(None).map(One::entries).unwrap_or_default();
+                keys.extend(fields.into_iter().map(|(f, _)| Key {
+                    part: None,
+                    segment: None,
+                    value: Value::Field(f),
+                    component: Vec::new(),
+                }));
+            }
+            PartResult::Clip(runs) if runs.len() > 1 => {
+                for (i, r) in runs.iter().enumerate() {
+                    keys.extend(
+                        asked(One::Clip(r)).into_iter().map(|(f, _)| {
                             Key::new(Part::Clip, Value::Field(f)).of_segment(Some(i))
-                        }));
-                    }
+                        }),
+                    );
                 }
             }
-            (Some(Node::Part(part)), Val::Map(kv)) => {
-                for (f, x) in fields(part, kv).filter(|(f, _)| asked_by_default(*f)) {
-                    match (f, x) {
-                        (Field::Points, Val::Map(inner)) => keys.extend(
-                            (inner.iter()).map(|(n, _)| Key::new(part, Value::Point(n.clone()))),
-                        ),
-                        (Field::Pixels, Val::Map(inner)) => keys.extend(
-                            (inner.iter()).map(|(n, _)| Key::new(part, Value::Pixel(n.clone()))),
-                        ),
-                        _ => keys.push(Key::new(part, Value::Field(f))),
-                    }
+            _ => {
+                for (f, x) in p.one(None).map(asked).unwrap_or_default() {
+                    keys.extend(field_keys(part, f, x));
                 }
             }
-            (Some(Node::Field(f)), _) => keys.push(Key {
-                part: None,
-                segment: None,
-                value: Value::Field(f),
-                component: Vec::new(),
-            }),
-            _ => {}
         }
     }
     keys
 }
 
-/// The fields of a part's map in a result tree, with their values.
-fn fields(part: Part, kv: &[(String, Val)]) -> impl Iterator<Item = (Field, &Val)> {
-    kv.iter().filter_map(
-        move |(k, x)| match Node::read(k, Some(&Node::Part(part)))? {
-            Node::Field(f) => Some((f, x)),
-            _ => None,
-        },
-    )
+/// The fields of a part (or a segment) asked by default.
+fn asked(o: One<'_>) -> Vec<(Field, &Val)> {
+    let fields = o.entries().into_iter();
+    fields.filter(|(f, _)| asked_by_default(*f)).collect()
+}
+
+/// The keys of field `f` of a part: one per point or pixel of a map of
+/// them, else the field's.
+fn field_keys(part: Part, f: Field, x: &Val) -> Vec<Key> {
+    let names = |inner: &[(String, Val)]| inner.iter().map(|(n, _)| n.clone()).collect::<Vec<_>>();
+    match (f, x) {
+        (Field::Points, Val::Map(inner)) => (names(inner).into_iter())
+            .map(|n| Key::new(part, Value::Point(n)))
+            .collect(),
+        (Field::Pixels, Val::Map(inner)) => (names(inner).into_iter())
+            .map(|n| Key::new(part, Value::Pixel(n)))
+            .collect(),
+        _ => vec![Key::new(part, Value::Field(f))],
+    }
 }
 
 /// Whether a part's field is asked by default (a final value of the

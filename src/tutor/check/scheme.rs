@@ -22,12 +22,11 @@
 //! half, and the value earns the larger of that sum (at most its own
 //! marks) and its own verdict's share.
 
-use super::{answer_key, default_keys, Tree, Verdict};
+use super::{answer_key, default_keys, Results, Verdict};
 use crate::error::{Error, Result};
 use crate::input::problem::ProblemIn;
 use crate::msg::ErrMsg;
 use crate::tutor::key::Key;
-use crate::tutor::solution::value_of;
 
 /// The most marks one key may be worth (a Moodle blank's weight is a small
 /// whole number).
@@ -101,14 +100,14 @@ impl Scheme {
     /// The scheme of a problem whose exact results are `result`, with its
     /// keys in the text's `order`: `[check] keys` (those that are keys of
     /// the results) or the default keys, each one mark, then `[marks]`.
-    pub fn of(p: &ProblemIn, result: &Tree, order: &[Key]) -> Result<Scheme> {
+    pub fn of(p: &ProblemIn, result: &Results, order: &[Key]) -> Result<Scheme> {
         let asked: Vec<Key> = match p.check.as_ref().and_then(|c| c.keys.as_ref()) {
             Some(ks) => ks.iter().filter_map(|k| answer_key(k).ok()).collect(),
             None => default_keys(result),
         };
         // a `[check] key` that is no value of the results asks nothing
         // (an answer to it is reported unknown)
-        let asked = asked.into_iter().filter(|k| value_of(result, k).is_some());
+        let asked = asked.into_iter().filter(|k| result.get(k).is_some());
         let mut items: Vec<Item> = Vec::new();
         for key in asked {
             if !items.iter().any(|i| i.key == key) {
@@ -143,16 +142,16 @@ fn field(name: &str) -> String {
 }
 
 /// The key `name` as a key of the results, or the error naming `field`.
-fn known(field: &str, name: &str, result: &Tree) -> Result<Key> {
+fn known(field: &str, name: &str, result: &Results) -> Result<Key> {
     match answer_key(name) {
-        Ok(k) if value_of(result, &k).is_some() => Ok(k),
+        Ok(k) if result.get(&k).is_some() => Ok(k),
         _ => Err(Error::why(field, ErrMsg::MarksNotAKey(name.to_string()))),
     }
 }
 
 /// A `[marks]` entry: a whole number of marks, or a table with `marks`
 /// and `method` (working keys, each with its marks).
-fn read_spec(name: &str, spec: &toml::Value, result: &Tree) -> Result<(u32, Vec<(Key, u32)>)> {
+fn read_spec(name: &str, spec: &toml::Value, result: &Results) -> Result<(u32, Vec<(Key, u32)>)> {
     let at = field(name);
     match spec {
         toml::Value::Table(t) => {

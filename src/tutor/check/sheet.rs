@@ -10,7 +10,6 @@ use crate::input::answer::Read;
 use crate::msg::Msg;
 use crate::tutor::diagnose::Code;
 use crate::tutor::key::Key;
-use crate::tutor::solution::value_of;
 use std::collections::{HashMap, HashSet};
 
 /// An answer file's key as read: a [`Key`], or a name that is none, as
@@ -36,7 +35,7 @@ impl Marker {
             let given = first.get(named).copied();
             // a name that is no key, or a key (a value, a whole part, one
             // component) not in the results, is reported unknown
-            let found = named.as_ref().map(|k| (k, value_of(&self.result, k)));
+            let found = named.as_ref().map(|k| (k, self.result.get(k)));
             let (key, expected) = match found {
                 Ok((key, Some(expected))) => (key, expected),
                 Ok((key, None)) => {
@@ -53,7 +52,7 @@ impl Marker {
                 Some(g) if super::answer_len(g) > super::MAX_ANSWER => {
                     too_long(super::answer_len(g))
                 }
-                Some(g) => self.judge(key, expected, g),
+                Some(g) => self.judge(key, &expected, g),
             };
             let mut mistakes = j.mistakes;
             if from_text {
@@ -65,7 +64,7 @@ impl Marker {
                 verdict: j.verdict,
                 given: given.map(|g| super::shown_cut(&super::written(g))),
                 given_value: given.cloned(),
-                expected: Some(expected.clone()),
+                expected: Some(expected.into_owned()),
                 note: j.note,
                 diagnosis: mistakes,
                 why: None,
@@ -324,13 +323,13 @@ mod tests {
     fn judging_an_answer_parses_each_of_its_numbers_once() {
         let m = camera();
         let key: Key = "view.u".parse().expect("a key");
-        let right = crate::tutor::solution::value_of(&m.result, &key).expect("u");
+        let right = m.result.get(&key).expect("u");
         let given = toml::Value::String("(4/sqrt(17), 0, -1/sqrt(17))".into());
         let parsed = || crate::num::expr::PARSED.with(std::cell::Cell::get);
         // the first judgment also reads grafika's exact forms (kept)
-        assert_eq!(m.judge(&key, right, &given).verdict, Verdict::Exact);
+        assert_eq!(m.judge(&key, &right, &given).verdict, Verdict::Exact);
         let before = parsed();
-        assert_eq!(m.judge(&key, right, &given).verdict, Verdict::Exact);
+        assert_eq!(m.judge(&key, &right, &given).verdict, Verdict::Exact);
         assert_eq!(parsed() - before, 3);
     }
 }

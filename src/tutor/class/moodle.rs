@@ -27,7 +27,6 @@ use crate::tutor::check::{Answers, Marker, Name, Settings};
 use crate::tutor::class::same::Same;
 use crate::tutor::generate::quiz::{typed_leaves, Typed};
 use crate::tutor::key::Key;
-use crate::tutor::solution::value_of;
 use std::path::PathBuf;
 
 /// What the marking of a Responses report found besides the marks.
@@ -69,7 +68,7 @@ fn shapes(paper: &Paper, settings: Settings) -> Result<Shapes> {
                     let m = Marker::new(&p.problem, settings)?;
                     let keys = m.scheme.keys();
                     Ok(keys
-                        .filter_map(|k| Some((k.clone(), value_of(&m.result, k)?.clone())))
+                        .filter_map(|k| Some((k.clone(), m.result.get(k)?.into_owned())))
                         .collect())
                 })
                 .collect()

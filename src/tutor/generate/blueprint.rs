@@ -9,7 +9,6 @@
 use super::numbers::{self, for_each_num, NumberClass};
 use super::{Exams, Form, Generated};
 use crate::tutor::key::{Key, Part};
-use crate::tutor::solution::value_of;
 use std::collections::HashSet;
 
 /// The blueprint of an exam: one entry per problem position.
@@ -99,11 +98,8 @@ fn position(form: Form, column: &[&Generated]) -> Position {
 /// The least and greatest number of `key` over the variants.
 fn range(column: &[&Generated], key: &Key) -> Option<(f64, f64)> {
     let mut span: Option<(f64, f64)> = None;
-    for v in column
-        .iter()
-        .filter_map(|g| value_of(&g.report.result, key))
-    {
-        for_each_num(v, &mut |n| {
+    for v in column.iter().filter_map(|g| g.report.result.get(key)) {
+        for_each_num(&v, &mut |n| {
             let (lo, hi) = span.unwrap_or((n.value, n.value));
             span = Some((lo.min(n.value), hi.max(n.value)));
         });

@@ -36,7 +36,7 @@ use crate::num::format::fmt_dec;
 use crate::num::rng::SplitMix64;
 use crate::stages::trace::Val;
 use crate::tutor::key::Key;
-use crate::tutor::solution::{value_of, Report};
+use crate::tutor::solution::Report;
 
 use std::collections::HashSet;
 use std::fmt::Write as _;
@@ -229,8 +229,8 @@ pub fn topics_name(t: &[Topic]) -> String {
 pub fn key_lines(g: &Generated) -> String {
     let mut s = String::new();
     for k in &g.keys {
-        if let Some(v) = value_of(&g.report.result, k) {
-            let _ = writeln!(s, "{k} = {}", answer_toml(v));
+        if let Some(v) = g.report.result.get(k) {
+            let _ = writeln!(s, "{k} = {}", answer_toml(&v));
         }
     }
     s

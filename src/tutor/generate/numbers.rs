@@ -18,7 +18,7 @@ use super::{Difficulty, Topic};
 use crate::num::Shown;
 use crate::stages::trace::Val;
 use crate::tutor::key::{Key, Part};
-use crate::tutor::solution::value_of;
+use crate::tutor::solution::Results;
 use std::collections::BTreeSet;
 
 /// How the answers of a problem (or of one of its parts) are written
@@ -69,11 +69,11 @@ pub fn wanted(topic: Topic, diff: Difficulty, part: Part) -> NumberClass {
 }
 
 /// The class of the answers `keys` of a solved problem's results.
-pub fn classify(result: &[(String, Val)], keys: &[Key]) -> NumberClass {
+pub fn classify(result: &Results, keys: &[Key]) -> NumberClass {
     let mut radicands = BTreeSet::new();
     let mut closed = true;
-    for v in keys.iter().filter_map(|k| value_of(result, k)) {
-        for_each_num(v, &mut |n| match &n.exact {
+    for v in keys.iter().filter_map(|k| result.get(k)) {
+        for_each_num(&v, &mut |n| match &n.exact {
             Some(e) => radicands.extend(radicands_of(e)),
             None => closed = false,
         });
@@ -88,7 +88,7 @@ pub fn classify(result: &[(String, Val)], keys: &[Key]) -> NumberClass {
 
 /// The class of each part of a problem the keys ask, in the order the
 /// parts are first asked: `[(view, one surd), (window, rational)]`.
-pub fn classes(result: &[(String, Val)], keys: &[Key]) -> Vec<(Part, NumberClass)> {
+pub fn classes(result: &Results, keys: &[Key]) -> Vec<(Part, NumberClass)> {
     let mut parts: Vec<Part> = Vec::new();
     for p in keys.iter().filter_map(|k| k.part) {
         if !parts.contains(&p) {

@@ -38,9 +38,8 @@ use super::{Generated, Topic};
 use crate::input::problem::ProblemIn;
 use crate::stages::trace::Val;
 use crate::tutor::check::tolerance;
-use crate::tutor::diagnose::{Code, Tree};
+use crate::tutor::diagnose::{Code, Results};
 use crate::tutor::key::{Field, Key, Part, Value};
-use crate::tutor::solution::value_of;
 
 /// A mistaken value more than this many times the larger of the key's
 /// magnitude and its answer's scale is left out of its blank.
@@ -238,7 +237,7 @@ pub fn blanks(g: &Generated, rel: f64, figs: u32) -> Vec<Asked> {
     g.keys
         .iter()
         .filter_map(|key| {
-            let value = value_of(&g.report.result, key)?.clone();
+            let value = g.report.result.get(key)?.into_owned();
             let blanks = key_blanks(key, &value, &trees, rel, figs);
             Some(Asked {
                 key: key.clone(),
@@ -251,7 +250,7 @@ pub fn blanks(g: &Generated, rel: f64, figs: u32) -> Vec<Asked> {
 }
 
 /// The results of every catalog mistake that applies to the problem.
-fn mistaken_trees(p: &ProblemIn) -> Vec<(Code, Tree)> {
+fn mistaken_trees(p: &ProblemIn) -> Vec<(Code, Results)> {
     Code::all()
         .into_iter()
         .filter_map(|m| m.apply(p).map(|ts| (m, ts)))
@@ -263,7 +262,13 @@ fn mistaken_trees(p: &ProblemIn) -> Vec<(Code, Tree)> {
 /// each leaf the mistaken values that differ from it (beyond both
 /// tolerances: the intervals do not overlap) and are not absurd, merged
 /// when two mistakes give the same value.
-fn key_blanks(key: &Key, value: &Val, trees: &[(Code, Tree)], rel: f64, figs: u32) -> Vec<Blank> {
+fn key_blanks(
+    key: &Key,
+    value: &Val,
+    trees: &[(Code, Results)],
+    rel: f64,
+    figs: u32,
+) -> Vec<Blank> {
     let right = typed_leaves(key, value, rel);
     let scale = scale(key, value);
     let mut blanks: Vec<Blank> = right
@@ -280,8 +285,8 @@ fn key_blanks(key: &Key, value: &Val, trees: &[(Code, Tree)], rel: f64, figs: u3
         })
         .collect();
     for (m, t) in trees {
-        let Some(v) = value_of(t, key) else { continue };
-        let leaves = typed_leaves(key, v, rel);
+        let Some(v) = t.get(key) else { continue };
+        let leaves = typed_leaves(key, &v, rel);
         if leaves.len() != blanks.len() {
             continue; // another shape (a rejected segment): not comparable
         }

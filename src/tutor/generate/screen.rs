@@ -17,9 +17,9 @@ use crate::msg::Msg;
 use crate::num::Real;
 use crate::stages::trace::Val;
 use crate::tutor::check::scheme::Scheme;
-use crate::tutor::key::{Field, Key, Part, Shading, Value};
+use crate::tutor::key::{Field, Key, Part, Shading};
 use crate::tutor::keys::ordered_keys;
-use crate::tutor::solution::value_of;
+use crate::tutor::solution::Results;
 use crate::tutor::solve;
 use std::collections::HashSet;
 
@@ -127,13 +127,13 @@ fn nums(v: Option<&Val>) -> Vec<f64> {
 /// light neither grazing nor along the normal) with a specular term that
 /// shows (at least 0.01, where the model has one); a clipping problem of
 /// the form's clipping case.
-fn screen(form: &Form, p: &ProblemIn, r: &[(String, Val)]) -> bool {
+fn screen(form: &Form, p: &ProblemIn, r: &Results) -> bool {
     match form.topic {
         Topic::Pipeline => inside_viewport(p, r),
         Topic::Shade => {
-            let cos_alpha = nums(value_of(r, &shade(Shading::CosAlpha)));
+            let cos_alpha = nums(r.get(&shade(Shading::CosAlpha)).as_deref());
             let slant = matches!(cos_alpha[..], [c] if (0.1..=0.99).contains(&c));
-            let specular = nums(value_of(r, &shade(Shading::Specular)));
+            let specular = nums(r.get(&shade(Shading::Specular)).as_deref());
             let shows = specular.iter().any(|s| *s >= 0.01);
             let has_specular = form.model.is_some_and(|m| m.terms().2);
             slant && (shows || !has_specular)
@@ -144,15 +144,14 @@ fn screen(form: &Form, p: &ProblemIn, r: &[(String, Val)]) -> bool {
 }
 
 /// Every pixel of a pipeline strictly inside its viewport.
-fn inside_viewport(p: &ProblemIn, r: &[(String, Val)]) -> bool {
+fn inside_viewport(p: &ProblemIn, r: &Results) -> bool {
     let vp: Vec<f64> = p
         .perspective
         .as_ref()
         .and_then(|x| x.viewport.as_ref())
         .map(|v| v.iter().filter_map(|n| n.0.eval::<f64>().ok()).collect())
         .unwrap_or_default();
-    let Some(Val::Map(px)) = value_of(r, &Key::new(Part::Viewport, Value::Field(Field::Pixels)))
-    else {
+    let Some(Val::Map(px)) = field_of(r, Part::Viewport, Field::Pixels) else {
         return false;
     };
     px.iter().all(|(_, q)| match (&nums(Some(q))[..], &vp[..]) {
@@ -164,8 +163,8 @@ fn inside_viewport(p: &ProblemIn, r: &[(String, Val)]) -> bool {
 /// Whether a solved clipping problem is of the case: its status, the
 /// bits set in each outcode, the intersections tried and kept; a clipped
 /// segment is more than a point.
-fn clip_case(c: &ClipShape, r: &[(String, Val)]) -> bool {
-    let field = |f| value_of(r, &Key::new(Part::Clip, Value::Field(f)));
+fn clip_case(c: &ClipShape, r: &Results) -> bool {
+    let field = |f| field_of(r, Part::Clip, f);
     let bits = |f| match field(f) {
         Some(Val::Text(code)) => code.chars().filter(|b| *b == '1').count() as u32,
         _ => u32::MAX,
@@ -192,6 +191,11 @@ fn clip_case(c: &ClipShape, r: &[(String, Val)]) -> bool {
         && tried == c.tried
         && kept == c.kept
         && piece
+}
+
+/// Field `f` of the results of `part` (of a clip's one segment).
+fn field_of(r: &Results, part: Part, f: Field) -> Option<&Val> {
+    r.of(part)?.one(None)?.field(f)
 }
 
 #[cfg(test)]
@@ -223,7 +227,7 @@ mod tests {
                 accept(d, &form).unwrap_or_else(|| panic!("{m:?}: the drawn problem is refused"));
             assert!(!g.keys.is_empty(), "{m:?}");
             for k in &g.keys {
-                let v = value_of(&g.report.result, k);
+                let v = g.report.result.get(k);
                 assert!(v.is_some_and(|v| *v != Val::Null), "{m:?}: no {k}");
             }
         }

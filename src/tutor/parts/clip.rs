@@ -14,7 +14,8 @@ use crate::stages::clip::{self, ClipBox};
 use crate::stages::trace::{Name, Recorder, Step, Trace, Val};
 use crate::tutor::follow;
 use crate::tutor::key::{Cut, Field, Key, Node, Part, Plane, Value};
-use crate::tutor::parts::{map_of, Solver, Solves};
+use crate::tutor::parts::result::{Fields, One, PartResult};
+use crate::tutor::parts::{names, Solver, Solves};
 use crate::tutor::run::{in_table, Hooks};
 use crate::tutor::solution::Given;
 use crate::tutor::topic::Topic;
@@ -30,20 +31,22 @@ impl Solves for ClipPart {
         s.clip(c)
     }
 
-    /// Per segment (of several: each its own), the outcodes, each plane
-    /// tried, the clipped segment, the status.
-    fn keys(v: &Val) -> Vec<Key> {
-        let mut keys = Vec::new();
-        match v {
-            Val::List(runs) => {
-                for (i, r) in runs.iter().enumerate() {
-                    if let Val::Map(kv) = r {
-                        keys.extend(clip_keys(kv).map(|k| k.of_segment(Some(i))));
-                    }
-                }
+    /// The outcodes, each plane tried, the clipped segment, the status
+    /// (of each segment of several: the results' order numbers them).
+    fn keys(r: One<'_>) -> Vec<Key> {
+        let key = |v: Value| Key::new(Part::Clip, v);
+        let mut keys = vec![
+            key(Value::Field(Field::Code0)),
+            key(Value::Field(Field::Code1)),
+        ];
+        let under = Node::Field(Field::Intersections);
+        for pl in names(r.field(Field::Intersections)) {
+            if let Some(Node::Plane(p)) = Node::read(&pl, Some(&under)) {
+                keys.extend([Cut::T, Cut::Point, Cut::Code].map(|c| key(Value::Cut(p, c))));
             }
-            _ => keys.extend(clip_keys(map_of(v))),
         }
+        keys.push(key(Value::Field(Field::Segment)));
+        keys.push(key(Value::Field(Field::Status)));
         keys
     }
 
@@ -70,13 +73,11 @@ impl<T: Scalar> Solver<'_, '_, T> {
             let segment = several.then_some(i);
             let given = Given::clip(&b, (&p0, &p1), segment);
             let hooks = (self.hooks, segment);
-            all.push(Val::Map(clip_run(&b, (&p0, &p1), hooks, &mut self.out.rec)));
+            all.push(clip_run(&b, (&p0, &p1), hooks, &mut self.out.rec));
             self.out.parts.push(given);
         }
-        match all.len() {
-            0 => {}
-            1 => self.put(Part::Clip, all.remove(0)),
-            _ => self.put(Part::Clip, Val::List(all)),
+        if !all.is_empty() {
+            self.put(PartResult::Clip(all));
         }
         Ok(())
     }
@@ -115,7 +116,7 @@ pub fn clip_run<T: Scalar>(
     (p0, p1): (&V3<T>, &V3<T>),
     (hooks, segment): (&Hooks<T>, Option<usize>),
     rec: &mut Recorder,
-) -> Vec<(String, Val)> {
+) -> ClipResult {
     let mut r = clip_checked(b, p0, p1, rec);
     (hooks.clip)(&mut r, b, (p0, p1));
     if let Some(g) = hooks.givens() {
@@ -157,24 +158,66 @@ pub fn clip_checked<T: Scalar>(
     r
 }
 
-/// docs/spec.md's clip result keys of a clipping.
-pub fn clip_result<T: Scalar>(r: &clip::Clipped<T>) -> Vec<(String, Val)> {
-    vec![
-        (Field::Code0.key(), Val::text(clip::code_str(r.code0))),
-        (Field::Code1.key(), Val::text(clip::code_str(r.code1))),
-        (Field::Status.key(), Val::text(r.status.as_str())),
-        (
-            Field::Segment.key(),
-            match &r.segment {
-                Some((a, z)) => Val::List(vec![Val::vec3(a), Val::vec3(z)]),
-                None => Val::Null,
-            },
-        ),
-        (
-            Field::Intersections.key(),
-            Val::Map(r.intersections.iter().map(intersection_val).collect()),
-        ),
-    ]
+/// One segment's clipping as results: the outcodes of its ends, the
+/// status, the clipped segment (null when rejected), each plane tried.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ClipResult {
+    /// P0's outcode.
+    pub code0: Val,
+    /// P1's outcode.
+    pub code1: Val,
+    /// accepted, rejected or clipped.
+    pub status: Val,
+    /// The clipped segment's ends.
+    pub segment: Val,
+    /// Each plane tried, by name: t, P(t), its outcode, whether kept.
+    pub intersections: Val,
+}
+
+impl Fields for ClipResult {
+    const ORDER: &'static [Field] = &[
+        Field::Code0,
+        Field::Code1,
+        Field::Status,
+        Field::Segment,
+        Field::Intersections,
+    ];
+
+    fn field(&self, f: Field) -> Option<&Val> {
+        match f {
+            Field::Code0 => Some(&self.code0),
+            Field::Code1 => Some(&self.code1),
+            Field::Status => Some(&self.status),
+            Field::Segment => Some(&self.segment),
+            Field::Intersections => Some(&self.intersections),
+            _ => None,
+        }
+    }
+
+    fn field_mut(&mut self, f: Field) -> Option<&mut Val> {
+        match f {
+            Field::Code0 => Some(&mut self.code0),
+            Field::Code1 => Some(&mut self.code1),
+            Field::Status => Some(&mut self.status),
+            Field::Segment => Some(&mut self.segment),
+            Field::Intersections => Some(&mut self.intersections),
+            _ => None,
+        }
+    }
+}
+
+/// A clipping's results.
+pub fn clip_result<T: Scalar>(r: &clip::Clipped<T>) -> ClipResult {
+    ClipResult {
+        code0: Val::text(clip::code_str(r.code0)),
+        code1: Val::text(clip::code_str(r.code1)),
+        status: Val::text(r.status.as_str()),
+        segment: match &r.segment {
+            Some((a, z)) => Val::List(vec![Val::vec3(a), Val::vec3(z)]),
+            None => Val::Null,
+        },
+        intersections: Val::Map(r.intersections.iter().map(intersection_val).collect()),
+    }
 }
 
 /// One tried intersection as a result: its plane's key and t, point, code, kept.
@@ -196,25 +239,4 @@ fn close<T: Scalar>(a: &V3<T>, b: &V3<T>) -> bool {
         let (x, y) = (a[k].to_f64(), b[k].to_f64());
         a[k] == b[k] || (x - y).abs() <= 1e-5 * (1.0 + x.abs().max(y.abs()))
     })
-}
-
-/// The outcodes, each plane tried (t, intersection, its outcode), the
-/// clipped segment, the status.
-fn clip_keys(kv: &[(String, Val)]) -> impl Iterator<Item = Key> {
-    let key = |v: Value| Key::new(Part::Clip, v);
-    let mut keys = vec![
-        key(Value::Field(Field::Code0)),
-        key(Value::Field(Field::Code1)),
-    ];
-    let planes = Node::Field(Field::Intersections);
-    if let Some((_, Val::Map(tried))) = kv.iter().find(|(k, _)| *k == planes.to_string()) {
-        for (pl, _) in tried {
-            if let Some(Node::Plane(p)) = Node::read(pl, Some(&planes)) {
-                keys.extend([Cut::T, Cut::Point, Cut::Code].map(|c| key(Value::Cut(p, c))));
-            }
-        }
-    }
-    keys.push(key(Value::Field(Field::Segment)));
-    keys.push(key(Value::Field(Field::Status)));
-    keys.into_iter()
 }

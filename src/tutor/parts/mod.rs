@@ -12,6 +12,7 @@
 
 pub mod clip;
 pub mod project;
+pub mod result;
 pub mod shade;
 pub mod view;
 pub mod viewport;
@@ -25,13 +26,14 @@ use crate::num::Scalar;
 use crate::stages::camera::{Basis, Camera};
 use crate::stages::projection::Projection;
 use crate::stages::trace::{Recorder, Val};
-use crate::tutor::key::{Field, Key, Node, Part, Value};
+use crate::tutor::key::{Key, Part, Value};
 use crate::tutor::run::{Hooks, Named};
-use crate::tutor::solution::{Given, Tree, WindowAt};
+use crate::tutor::solution::{Given, WindowAt};
 use crate::tutor::topic::Topic;
 use clip::ClipPart;
 use nalgebra::Matrix4;
 use project::ProjectPart;
+use result::{One, PartResult, Results};
 use shade::ShadePart;
 use view::{Extent, ViewPart};
 use viewport::ViewportPart;
@@ -52,8 +54,8 @@ pub(crate) trait Solves {
     /// and writes its results (`Solver::put`) and what it was given.
     fn solve<T: Scalar>(s: &mut Solver<'_, '_, T>, input: &Self::In) -> Result<()>;
     /// Its answer keys in the order of the text's solution, from its
-    /// results `v` (the order practice asks and check follows through).
-    fn keys(v: &Val) -> Vec<Key>;
+    /// results `r` (the order practice asks and check follows through).
+    fn keys(r: One<'_>) -> Vec<Key>;
     /// The topic a value of its results practises.
     fn topic(value: &Value) -> Topic;
 }
@@ -63,7 +65,7 @@ pub(crate) trait Solves {
 #[derive(Clone, Copy)]
 pub(crate) struct Def {
     /// [`Solves::keys`].
-    pub keys: fn(&Val) -> Vec<Key>,
+    pub keys: fn(One<'_>) -> Vec<Key>,
     /// [`Solves::topic`].
     pub topic: fn(&Value) -> Topic,
 }
@@ -94,7 +96,7 @@ pub(crate) fn of(part: Part) -> Def {
 #[derive(Default)]
 pub(crate) struct Out {
     pub(crate) rec: Recorder,
-    pub(crate) result: Tree,
+    pub(crate) result: Results,
     pub(crate) parts: Vec<Given>,
     pub(crate) sections: bool,
 }
@@ -144,7 +146,7 @@ pub(crate) type Projected<T> = (Projection<T>, Vec<Named<T>>);
 #[derive(Clone)]
 pub(crate) struct Windowed<T> {
     pub(crate) w: crate::stages::window::Window<T>,
-    pub(crate) result: Tree,
+    pub(crate) result: window::WindowResult,
     pub(crate) given: WindowAt,
     pub(crate) on_window: Option<Vec<(String, (T, T))>>,
 }
@@ -173,13 +175,9 @@ impl<T: Scalar> Solver<'_, '_, T> {
         }
     }
 
-    /// A part's results: a problem file's under the part's key, a
-    /// command's (one part's map) unnested (docs/spec.md §3).
-    pub(crate) fn put(&mut self, part: Part, v: Val) {
-        match (&self.p.file, v) {
-            (None, Val::Map(kv)) => self.out.result.extend(kv),
-            (_, v) => self.out.result.push((part.key(), v)),
-        }
+    /// A part's results, after the parts solved before it.
+    pub(crate) fn put(&mut self, r: PartResult) {
+        self.out.result.parts.push(r);
     }
 
     /// Whether a part asked takes the projected points (a problem file's
@@ -202,41 +200,10 @@ impl<T: Scalar> Solver<'_, '_, T> {
     }
 }
 
-// What the parts' key orders share: a part's fields, in an order, and
-// the names of its points and pixels.
-
-/// A part's map (empty for a list: a clip's several segments).
-pub(crate) fn map_of(v: &Val) -> &[(String, Val)] {
-    match v {
-        Val::Map(kv) => &kv[..],
-        _ => &[],
-    }
-}
-
-/// The fields of a part's map (names that are no field of the part left out).
-pub(crate) fn fields(part: Part, kv: &[(String, Val)]) -> Vec<Field> {
-    let under = Node::Part(part);
-    (kv.iter())
-        .filter_map(|(k, _)| match Node::read(k, Some(&under)) {
-            Some(Node::Field(f)) => Some(f),
-            _ => None,
-        })
-        .collect()
-}
-
-/// Each of `order` the part holds, in that order.
-pub(crate) fn in_order<'a>(
-    fields: &'a [Field],
-    order: &'a [Field],
-) -> impl Iterator<Item = Field> + 'a {
-    order.iter().copied().filter(|f| fields.contains(f))
-}
-
-/// The names of the map held at `inner` (the points, the pixels).
-pub(crate) fn named(kv: &[(String, Val)], inner: Field) -> impl Iterator<Item = String> + '_ {
-    let inner = Node::Field(inner).to_string();
-    let map = match kv.iter().find(|(k, _)| *k == inner) {
-        Some((_, Val::Map(m))) => &m[..],
+/// The names of a map of results (a part's points, its pixels), in order.
+pub(crate) fn names(v: Option<&Val>) -> impl Iterator<Item = String> + '_ {
+    let map = match v {
+        Some(Val::Map(m)) => &m[..],
         _ => &[],
     };
     map.iter().map(|(n, _)| n.clone())

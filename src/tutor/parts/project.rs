@@ -12,7 +12,8 @@ use crate::num::Scalar;
 use crate::stages::projection::{self, Projection};
 use crate::stages::trace::{Name, Recorder, Step, Subst, Trace, Val};
 use crate::tutor::key::{Field, Key, Part, Value};
-use crate::tutor::parts::{map_of, named, Out, Projected, Solver, Solves};
+use crate::tutor::parts::result::{Fields, One, PartResult};
+use crate::tutor::parts::{names, Out, Projected, Solver, Solves};
 use crate::tutor::run::{points_val, Hooks, Named};
 use crate::tutor::solution::Given;
 use crate::tutor::topic::Topic;
@@ -29,15 +30,34 @@ impl Solves for ProjectPart {
     }
 
     /// The projected points.
-    fn keys(v: &Val) -> Vec<Key> {
+    fn keys(r: One<'_>) -> Vec<Key> {
         let key = |v: Value| Key::new(Self::PART, v);
-        named(map_of(v), Field::Points)
+        names(r.field(Field::Points))
             .map(|n| key(Value::Point(n)))
             .collect()
     }
 
     fn topic(_: &Value) -> Topic {
         Topic::Project
+    }
+}
+
+/// The project part's results: each point's projection P'', by name.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ProjectResult {
+    /// The projected points.
+    pub points: Val,
+}
+
+impl Fields for ProjectResult {
+    const ORDER: &'static [Field] = &[Field::Points];
+
+    fn field(&self, f: Field) -> Option<&Val> {
+        (f == Field::Points).then_some(&self.points)
+    }
+
+    fn field_mut(&mut self, f: Field) -> Option<&mut Val> {
+        (f == Field::Points).then_some(&mut self.points)
     }
 }
 
@@ -59,8 +79,8 @@ impl<T: Scalar> Solver<'_, '_, T> {
                 (proj, v.eye, projected)
             }
         };
-        let r = vec![(Field::Points.key(), points_val(&projected))];
-        self.put(Part::Project, Val::Map(r));
+        let images = points_val(&projected);
+        self.put(PartResult::Project(ProjectResult { points: images }));
         self.out.parts.push(Given::Project {
             projection: Given::projection(&proj),
             points: (points.iter())

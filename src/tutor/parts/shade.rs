@@ -13,9 +13,10 @@ use crate::stages::lighting::{self, rgb_val, Highlight, LightTerm, Material};
 use crate::stages::trace::{Name, NoTrace, Recorder, Step, Trace, Val};
 use crate::tutor::follow;
 use crate::tutor::key::{Factor, Field, Key, Part, Shading, Value};
-use crate::tutor::parts::{fields, in_order, map_of, Solver, Solves};
+use crate::tutor::parts::result::{Fields, One, PartResult};
+use crate::tutor::parts::{Solver, Solves};
 use crate::tutor::run::Hooks;
-use crate::tutor::solution::{Given, ShadeAt, Tree};
+use crate::tutor::solution::{Given, ShadeAt};
 use crate::tutor::topic::Topic;
 
 /// The shade part.
@@ -31,11 +32,10 @@ impl Solves for ShadePart {
 
     /// The unit L and N, cos α, R (H and N·H for Blinn), cos β, the
     /// terms, their sum and the clamped colour.
-    fn keys(v: &Val) -> Vec<Key> {
+    fn keys(r: One<'_>) -> Vec<Key> {
         let key = |v: Value| Key::new(Self::PART, v);
-        let order = SHADE_ORDER.map(Field::Shading);
-        let fields = fields(Self::PART, map_of(v));
-        in_order(&fields, &order)
+        (SHADE_ORDER.map(Field::Shading).into_iter())
+            .filter(|f| r.field(*f).is_some())
             .map(|f| key(Value::Field(f)))
             .collect()
     }
@@ -51,7 +51,7 @@ impl<T: Scalar> Solver<'_, '_, T> {
         self.out.section(Msg::SecLighting);
         let set_up = (&s.shade.table, &s.lights, s.shade.prefix);
         let (setup, r) = light_run(set_up, self.hooks, &mut self.out.rec)?;
-        self.put(Part::Shade, Val::Map(r));
+        self.put(PartResult::Shade(Box::new(r)));
         (self.out.parts).push(Given::Shade(ShadeAt::of(&setup, s.file.clone())));
         Ok(())
     }
@@ -63,7 +63,7 @@ pub fn light_run<T: Scalar>(
     (sh, file, prefix): (&ShadeIn, &LightsFileIn, &str),
     hooks: &Hooks<T>,
     rec: &mut Recorder,
-) -> Result<(Setup<T>, Tree)> {
+) -> Result<(Setup<T>, ShadeResult)> {
     let mut setup = crate::input::lights::build::<T>(sh, file, prefix, "light", rec)?;
     if let Some(f) = hooks.setup {
         f(&mut setup);
@@ -82,9 +82,121 @@ pub fn light_run<T: Scalar>(
     Ok((setup, r))
 }
 
-/// A lighting value's key in the result (`color`, `cos_alpha`, …).
-fn key(s: Shading) -> String {
-    Field::Shading(s).key()
+/// The lighting's results: the unit L and N (which check takes from
+/// the steps), the terms, their sum and the clamped colour, the emissive
+/// term when the material has one, R (H and N·H for Blinn–Phong), cos α
+/// and cos β (lists, one per light, with several lights), and each
+/// light's factors for lights from a file.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ShadeResult {
+    /// L.
+    pub l: Option<Val>,
+    /// N.
+    pub n: Option<Val>,
+    /// The colour, clamped to [0, 1].
+    pub color: Option<Val>,
+    /// The sum of the terms.
+    pub unclamped: Option<Val>,
+    /// The ambient term.
+    pub ambient: Option<Val>,
+    /// The diffuse term.
+    pub diffuse: Option<Val>,
+    /// The specular term.
+    pub specular: Option<Val>,
+    /// The material's own light.
+    pub emissive: Option<Val>,
+    /// R, the reflection of L.
+    pub r: Option<Val>,
+    /// H, the half-way vector (Blinn–Phong).
+    pub h: Option<Val>,
+    /// N·H (Blinn–Phong).
+    pub n_dot_h: Option<Val>,
+    /// cos α = L·N.
+    pub cos_alpha: Option<Val>,
+    /// cos β = R·V.
+    pub cos_beta: Option<Val>,
+    /// Each light's factors (lights from a file).
+    pub lights: Option<Val>,
+}
+
+impl ShadeResult {
+    /// The place of lighting value `s`.
+    pub fn value_mut(&mut self, s: Shading) -> &mut Option<Val> {
+        match s {
+            Shading::L => &mut self.l,
+            Shading::N => &mut self.n,
+            Shading::Color => &mut self.color,
+            Shading::Unclamped => &mut self.unclamped,
+            Shading::Ambient => &mut self.ambient,
+            Shading::Diffuse => &mut self.diffuse,
+            Shading::Specular => &mut self.specular,
+            Shading::Emissive => &mut self.emissive,
+            Shading::R => &mut self.r,
+            Shading::H => &mut self.h,
+            Shading::NDotH => &mut self.n_dot_h,
+            Shading::CosAlpha => &mut self.cos_alpha,
+            Shading::CosBeta => &mut self.cos_beta,
+        }
+    }
+
+    /// Lighting value `s`, if the results hold it.
+    pub fn value(&self, s: Shading) -> Option<&Val> {
+        match s {
+            Shading::L => self.l.as_ref(),
+            Shading::N => self.n.as_ref(),
+            Shading::Color => self.color.as_ref(),
+            Shading::Unclamped => self.unclamped.as_ref(),
+            Shading::Ambient => self.ambient.as_ref(),
+            Shading::Diffuse => self.diffuse.as_ref(),
+            Shading::Specular => self.specular.as_ref(),
+            Shading::Emissive => self.emissive.as_ref(),
+            Shading::R => self.r.as_ref(),
+            Shading::H => self.h.as_ref(),
+            Shading::NDotH => self.n_dot_h.as_ref(),
+            Shading::CosAlpha => self.cos_alpha.as_ref(),
+            Shading::CosBeta => self.cos_beta.as_ref(),
+        }
+    }
+
+    /// Sets lighting value `s`.
+    fn set(&mut self, s: Shading, v: Val) {
+        *self.value_mut(s) = Some(v);
+    }
+}
+
+impl Fields for ShadeResult {
+    const ORDER: &'static [Field] = &[
+        Field::Shading(Shading::L),
+        Field::Shading(Shading::N),
+        Field::Shading(Shading::Color),
+        Field::Shading(Shading::Unclamped),
+        Field::Shading(Shading::Ambient),
+        Field::Shading(Shading::Diffuse),
+        Field::Shading(Shading::Specular),
+        Field::Shading(Shading::Emissive),
+        Field::Shading(Shading::R),
+        Field::Shading(Shading::H),
+        Field::Shading(Shading::NDotH),
+        Field::Shading(Shading::CosAlpha),
+        Field::Shading(Shading::CosBeta),
+        Field::Lights,
+    ];
+
+    fn field(&self, f: Field) -> Option<&Val> {
+        match f {
+            Field::Shading(s) => self.value(s),
+            Field::Lights => self.lights.as_ref(),
+            _ => None,
+        }
+    }
+
+    fn field_mut(&mut self, f: Field) -> Option<&mut Val> {
+        match f {
+            Field::Shading(s) => self.value_mut(s).as_mut(),
+            Field::Lights => self.lights.as_mut(),
+            _ => None,
+        }
+    }
 }
 
 fn opt_vec<T: Scalar>(v: &Option<V3<T>>) -> Val {
@@ -105,31 +217,30 @@ pub fn shade_run<T: Scalar, R: lighting::RuleSet<T>>(
     s: &Setup<T>,
     rules: &R,
     rec: &mut Recorder,
-) -> Vec<(String, Val)> {
+) -> ShadeResult {
     let m = &s.material;
     let text = lighting::is_text_model(m, &s.lights, &s.global_ambient);
     rec.step(|| material_step(m, text));
     let sh = lighting::shade_with_rules(m, &s.lights, &s.global_ambient, &s.surface, rules, rec);
-    let mut out: Vec<(String, Val)> = vec![
-        (key(Shading::Color), rgb_val(&sh.color)),
-        (key(Shading::Unclamped), rgb_val(&sh.unclamped)),
-        (key(Shading::Ambient), rgb_val(&sh.ambient)),
-        (key(Shading::Diffuse), rgb_val(&sh.diffuse)),
-        (key(Shading::Specular), rgb_val(&sh.specular)),
-    ];
+    let mut out = ShadeResult::default();
+    out.set(Shading::Color, rgb_val(&sh.color));
+    out.set(Shading::Unclamped, rgb_val(&sh.unclamped));
+    out.set(Shading::Ambient, rgb_val(&sh.ambient));
+    out.set(Shading::Diffuse, rgb_val(&sh.diffuse));
+    out.set(Shading::Specular, rgb_val(&sh.specular));
     if sh.emissive.iter().any(|x| !x.is_zero_value()) {
-        out.push((key(Shading::Emissive), rgb_val(&sh.emissive)));
+        out.set(Shading::Emissive, rgb_val(&sh.emissive));
     }
-    if s.lights.len() == 1 {
+    let vs = if s.lights.len() == 1 {
         let (hl, ca) = (m.model.highlight(), opt_num(&sh.cos_alpha));
-        let vs = vectors(hl, &sh.r, &sh.h, &sh.cos_nh, ca, &sh.cos_beta);
-        out.extend(vs.into_iter().map(|(s, v)| (key(s), v)));
+        vectors(hl, &sh.r, &sh.h, &sh.cos_nh, ca, &sh.cos_beta)
     } else {
-        out.extend(vectors_per_light(s, &sh.view, rules));
-    }
+        vectors_per_light(s, &sh.view, rules)
+    };
+    vs.into_iter().for_each(|(s, v)| out.set(s, v));
     if !s.text_light {
         let per = (0..s.lights.len()).map(|i| light_factors(s, i, &sh.view));
-        out.push((Field::Lights.key(), Val::List(per.collect())));
+        out.lights = Some(Val::List(per.collect()));
     }
     out
 }
@@ -189,7 +300,7 @@ fn vectors_per_light<T: Scalar, R: lighting::RuleSet<T>>(
     s: &Setup<T>,
     view: &V3<T>,
     rules: &R,
-) -> Vec<(String, Val)> {
+) -> Vec<(Shading, Val)> {
     let (m, n) = (&s.material, s.lights.len());
     let hl = m.model.highlight();
     let none = vectors::<T>(hl, &None, &None, &None, Val::Null, &None);
@@ -212,12 +323,7 @@ fn vectors_per_light<T: Scalar, R: lighting::RuleSet<T>>(
         })
         .collect();
     (none.iter().enumerate())
-        .map(|(j, (s, _))| {
-            (
-                key(*s),
-                Val::List(per.iter().map(|v| v[j].1.clone()).collect()),
-            )
-        })
+        .map(|(j, (s, _))| (*s, Val::List(per.iter().map(|v| v[j].1.clone()).collect())))
         .collect()
 }
 
@@ -258,7 +364,6 @@ const SHADE_ORDER: [Shading; 12] = [
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::tutor::key::Node;
 
     #[test]
     fn every_lighting_value_is_asked_in_order() {
@@ -282,13 +387,11 @@ mod tests {
             );
             let p = crate::input::problem::ProblemIn::parse(&text, "t").unwrap();
             let result = crate::tutor::solve::solve::<f64>(&p).unwrap().result;
-            let shade = Node::Part(Part::Shade);
-            let Some((_, Val::Map(kv))) = result.iter().find(|(k, _)| *k == shade.to_string())
-            else {
+            let Some(PartResult::Shade(r)) = result.of(Part::Shade) else {
                 panic!("no shade results under {m:?}")
             };
-            for (k, _) in kv {
-                if let Some(Node::Field(Field::Shading(s))) = Node::read(k, Some(&shade)) {
+            for f in crate::tutor::parts::result::entries(&**r) {
+                if let (Field::Shading(s), _) = f {
                     shown.push(s);
                 }
             }

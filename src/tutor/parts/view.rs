@@ -10,7 +10,8 @@ use crate::stages::camera::{self, Basis, Camera};
 use crate::stages::trace::{Recorder, Step, Trace, Val};
 use crate::tutor::follow;
 use crate::tutor::key::{Axis, Field, Key, Part, Value};
-use crate::tutor::parts::{fields, in_order, map_of, named, Solver, Solves, Viewed};
+use crate::tutor::parts::result::{Fields, One, PartResult};
+use crate::tutor::parts::{names, Solver, Solves, Viewed};
 use crate::tutor::run::{in_table, points_val, Hooks, Named};
 use crate::tutor::solution::{camera, p3, Given};
 use crate::tutor::topic::Topic;
@@ -40,16 +41,14 @@ impl Solves for ViewPart {
     }
 
     /// n, u, v, the view matrix, the eye coordinates.
-    fn keys(v: &Val) -> Vec<Key> {
-        let kv = map_of(v);
-        let fields = fields(Self::PART, kv);
+    fn keys(r: One<'_>) -> Vec<Key> {
         let key = |v: Value| Key::new(Self::PART, v);
-        let axes = [Axis::N, Axis::U, Axis::V].map(Field::Axis);
-        let order = [axes[0], axes[1], axes[2], Field::Matrix];
-        let mut keys: Vec<Key> = in_order(&fields, &order)
-            .map(|f| key(Value::Field(f)))
+        let order = [Axis::N, Axis::U, Axis::V].map(Field::Axis);
+        let mut keys: Vec<Key> = (order.iter().chain([&Field::Matrix]))
+            .filter(|f| r.field(**f).is_some())
+            .map(|f| key(Value::Field(*f)))
             .collect();
-        keys.extend(named(kv, Field::Points).map(|n| key(Value::Point(n))));
+        keys.extend(names(r.field(Field::Points)).map(|n| key(Value::Point(n))));
         keys
     }
 
@@ -67,7 +66,7 @@ impl<T: Scalar> Solver<'_, '_, T> {
     /// `basis`: the camera basis u, v, n.
     fn basis(&mut self) -> Result<()> {
         if let Some((cam, b)) = self.based()? {
-            self.put(Part::View, Val::Map(basis_result(&b)));
+            self.put(PartResult::View(Box::new(basis_result(&b))));
             self.out.parts.push(Given::Basis(camera(&cam)));
         }
         Ok(())
@@ -78,10 +77,8 @@ impl<T: Scalar> Solver<'_, '_, T> {
         let Some(v) = self.viewed()? else {
             return Ok(());
         };
-        self.put(
-            Part::View,
-            Val::Map(view_result(&v.basis, &v.matrix, &v.eye)),
-        );
+        let r = view_result(&v.basis, &v.matrix, &v.eye);
+        self.put(PartResult::View(Box::new(r)));
         let world = (self.earlier.points.iter()).map(|(n, q)| (n.clone(), p3(q)));
         let given = Given::View(camera(&v.cam), world.collect());
         self.out.parts.push(given);
@@ -191,24 +188,70 @@ pub fn eye_run<T: Scalar>(
     Ok((m, eye))
 }
 
-/// The view's result keys: u, v, n, the matrix, the eye coordinates.
-pub fn view_result<T: Scalar>(
-    b: &Basis<T>,
-    m: &Matrix4<T>,
-    eye: &[Named<T>],
-) -> Vec<(String, Val)> {
-    let mut r = basis_result(b);
-    r.push((Field::Matrix.key(), Val::mat4(m)));
-    r.push((Field::Points.key(), points_val(eye)));
-    r
+/// The view's results: the basis u, v, n; with the whole view, the view
+/// matrix V and the eye coordinates P' = V·P of the points.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ViewResult {
+    /// u, to the right.
+    pub u: Val,
+    /// v, up in the picture.
+    pub v: Val,
+    /// n, from the look-at point back to the eye.
+    pub n: Val,
+    /// V (the whole view).
+    pub matrix: Option<Val>,
+    /// Each point's P', by name (the whole view).
+    pub points: Option<Val>,
 }
 
-/// The basis as named results.
-pub fn basis_result<T: Scalar>(b: &camera::Basis<T>) -> Vec<(String, Val)> {
-    let axis = |a| Field::Axis(a).key();
-    vec![
-        (axis(Axis::U), Val::vec3(&b.u)),
-        (axis(Axis::V), Val::vec3(&b.v)),
-        (axis(Axis::N), Val::vec3(&b.n)),
-    ]
+impl Fields for ViewResult {
+    const ORDER: &'static [Field] = &[
+        Field::Axis(Axis::U),
+        Field::Axis(Axis::V),
+        Field::Axis(Axis::N),
+        Field::Matrix,
+        Field::Points,
+    ];
+
+    fn field(&self, f: Field) -> Option<&Val> {
+        match f {
+            Field::Axis(Axis::U) => Some(&self.u),
+            Field::Axis(Axis::V) => Some(&self.v),
+            Field::Axis(Axis::N) => Some(&self.n),
+            Field::Matrix => self.matrix.as_ref(),
+            Field::Points => self.points.as_ref(),
+            _ => None,
+        }
+    }
+
+    fn field_mut(&mut self, f: Field) -> Option<&mut Val> {
+        match f {
+            Field::Axis(Axis::U) => Some(&mut self.u),
+            Field::Axis(Axis::V) => Some(&mut self.v),
+            Field::Axis(Axis::N) => Some(&mut self.n),
+            Field::Matrix => self.matrix.as_mut(),
+            Field::Points => self.points.as_mut(),
+            _ => None,
+        }
+    }
+}
+
+/// The view's results: u, v, n, the matrix, the eye coordinates.
+pub fn view_result<T: Scalar>(b: &Basis<T>, m: &Matrix4<T>, eye: &[Named<T>]) -> ViewResult {
+    ViewResult {
+        matrix: Some(Val::mat4(m)),
+        points: Some(points_val(eye)),
+        ..basis_result(b)
+    }
+}
+
+/// The basis as the view's results.
+pub fn basis_result<T: Scalar>(b: &Basis<T>) -> ViewResult {
+    ViewResult {
+        u: Val::vec3(&b.u),
+        v: Val::vec3(&b.v),
+        n: Val::vec3(&b.n),
+        matrix: None,
+        points: None,
+    }
 }

@@ -10,7 +10,8 @@ use crate::num::Scalar;
 use crate::stages::trace::{Recorder, Val};
 use crate::stages::window::{self, Window};
 use crate::tutor::key::{Field, Key, Part, Value};
-use crate::tutor::parts::{map_of, named, Out, Solver, Solves};
+use crate::tutor::parts::result::{Fields, One, PartResult};
+use crate::tutor::parts::{names, Out, Solver, Solves};
 use crate::tutor::run::Named;
 use crate::tutor::solution::{at, Given};
 use crate::tutor::topic::Topic;
@@ -27,9 +28,9 @@ impl Solves for ViewportPart {
     }
 
     /// The pixels.
-    fn keys(v: &Val) -> Vec<Key> {
+    fn keys(r: One<'_>) -> Vec<Key> {
         let key = |v: Value| Key::new(Self::PART, v);
-        named(map_of(v), Field::Pixels)
+        names(r.field(Field::Pixels))
             .map(|n| key(Value::Pixel(n)))
             .collect()
     }
@@ -37,6 +38,25 @@ impl Solves for ViewportPart {
     /// The pixels come at the end of the whole chain.
     fn topic(_: &Value) -> Topic {
         Topic::Pipeline
+    }
+}
+
+/// The viewport part's results: each point's pixel (xv, yv), by name.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ViewportResult {
+    /// The pixels.
+    pub pixels: Val,
+}
+
+impl Fields for ViewportResult {
+    const ORDER: &'static [Field] = &[Field::Pixels];
+
+    fn field(&self, f: Field) -> Option<&Val> {
+        (f == Field::Pixels).then_some(&self.pixels)
+    }
+
+    fn field_mut(&mut self, f: Field) -> Option<&mut Val> {
+        (f == Field::Pixels).then_some(&mut self.pixels)
     }
 }
 
@@ -68,8 +88,8 @@ impl<T: Scalar> Solver<'_, '_, T> {
         let on_window = shown.iter().map(|(n, (x, y))| (n, (x, y)));
         let px = pixels(&w.w, (&vw, &vh), on_window, rec);
         if !(px.is_empty() && self.p.shared.on_window.is_some()) {
-            let r = vec![(Field::Pixels.key(), Val::Map(px))];
-            self.put(Part::Viewport, Val::Map(r));
+            let pixels = Val::Map(px);
+            self.put(PartResult::Viewport(ViewportResult { pixels }));
         }
         Ok(())
     }

@@ -15,9 +15,10 @@ use crate::stages::trace::{Name, Recorder, Step, Subst, Trace, Val};
 use crate::stages::window::{self, Window};
 use crate::tutor::follow;
 use crate::tutor::key::{Edge, Field, Key, Part, Value};
-use crate::tutor::parts::{fields, map_of, Out, Solver, Solves, Windowed};
+use crate::tutor::parts::result::{Fields, One, PartResult};
+use crate::tutor::parts::{Out, Solver, Solves, Windowed};
 use crate::tutor::run::{in_table, Hooks, Named};
-use crate::tutor::solution::{at, Given, Tree, WindowAt};
+use crate::tutor::solution::{at, Given, WindowAt};
 use crate::tutor::topic::Topic;
 
 /// The window part.
@@ -33,11 +34,11 @@ impl Solves for WindowPart {
 
     /// The window's top, bottom, left, right, height, width (not the far
     /// window's).
-    fn keys(v: &Val) -> Vec<Key> {
+    fn keys(r: One<'_>) -> Vec<Key> {
         let key = |v: Value| Key::new(Self::PART, v);
-        (fields(Self::PART, map_of(v)).iter())
-            .filter(|f| matches!(f, Field::Edge(_, false)))
-            .map(|f| key(Value::Field(*f)))
+        (r.entries().into_iter())
+            .filter(|(f, _)| matches!(f, Field::Edge(_, false)))
+            .map(|(f, _)| key(Value::Field(f)))
             .collect()
     }
 
@@ -50,7 +51,7 @@ impl<T: Scalar> Solver<'_, '_, T> {
     /// `window`: the window's edges (and the far one's).
     fn window(&mut self) -> Result<()> {
         if let Some(w) = self.windowed()? {
-            self.put(Part::Window, Val::Map(w.result));
+            self.put(PartResult::Window(Box::new(w.result)));
             self.out.parts.push(Given::Window(w.given));
         }
         Ok(())
@@ -209,13 +210,18 @@ pub fn window_run<T: Scalar>(
     (fovy, aspect, near, far): (&T, &T, &T, Option<&T>),
     hooks: &Hooks<T>,
     rec: &mut Recorder,
-) -> Result<(Window<T>, Tree)> {
+) -> Result<(Window<T>, WindowResult)> {
     let mut w = window::window(fovy, aspect, near, "near", rec)?;
     (hooks.window)(&mut w, fovy);
     if let Some(g) = hooks.givens() {
         follow::window(g, aspect, &mut w);
     }
-    let mut r = window_result(&w, false);
+    let mut r = WindowResult {
+        near: edges(&w),
+        height: Val::num(&w.height),
+        width: Val::num(&w.width),
+        far: None,
+    };
     if let Some(f) = far {
         if f <= near {
             let (near, got) = (near.to_f64(), f.to_f64());
@@ -226,29 +232,105 @@ pub fn window_run<T: Scalar>(
         }
         let fw = window::window(fovy, aspect, f, "far", rec)?;
         // the far window's edges, not its size
-        let size = [Edge::Height, Edge::Width].map(|e| Field::Edge(e, true).key());
-        r.extend(
-            window_result(&fw, true)
-                .into_iter()
-                .filter(|(k, _)| !size.contains(k)),
-        );
+        r.far = Some(edges(&fw));
     }
     Ok((w, r))
 }
 
-/// The window's named results (`top`, …; on the far plane `far_top`, …).
-pub fn window_result<T: Scalar>(w: &window::Window<T>, far: bool) -> Vec<(String, Val)> {
-    [
-        (Edge::Top, &w.top),
-        (Edge::Bottom, &w.bottom),
-        (Edge::Left, &w.left),
-        (Edge::Right, &w.right),
-        (Edge::Height, &w.height),
-        (Edge::Width, &w.width),
-    ]
-    .into_iter()
-    .map(|(e, v)| (Field::Edge(e, far).key(), Val::num(v)))
-    .collect()
+/// A window's edges: top, bottom = −top, left = −right, right = aspect·top.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Edges {
+    /// top, the text's h.
+    pub top: Val,
+    /// bottom.
+    pub bottom: Val,
+    /// left.
+    pub left: Val,
+    /// right.
+    pub right: Val,
+}
+
+/// The window's results: the near window's edges and size, the far
+/// window's edges when far is given (`far_top`, …).
+#[derive(Clone, Debug, PartialEq)]
+pub struct WindowResult {
+    /// The edges on the near plane.
+    pub near: Edges,
+    /// height = 2·top.
+    pub height: Val,
+    /// width = 2·right.
+    pub width: Val,
+    /// The edges on the far plane, when far is given.
+    pub far: Option<Edges>,
+}
+
+/// The edges of window `w`.
+fn edges<T: Scalar>(w: &Window<T>) -> Edges {
+    Edges {
+        top: Val::num(&w.top),
+        bottom: Val::num(&w.bottom),
+        left: Val::num(&w.left),
+        right: Val::num(&w.right),
+    }
+}
+
+impl Edges {
+    /// Edge `e` (none for a size).
+    fn edge(&self, e: Edge) -> Option<&Val> {
+        match e {
+            Edge::Top => Some(&self.top),
+            Edge::Bottom => Some(&self.bottom),
+            Edge::Left => Some(&self.left),
+            Edge::Right => Some(&self.right),
+            Edge::Height | Edge::Width => None,
+        }
+    }
+
+    /// [`Edges::edge`], to change it.
+    fn edge_mut(&mut self, e: Edge) -> Option<&mut Val> {
+        match e {
+            Edge::Top => Some(&mut self.top),
+            Edge::Bottom => Some(&mut self.bottom),
+            Edge::Left => Some(&mut self.left),
+            Edge::Right => Some(&mut self.right),
+            Edge::Height | Edge::Width => None,
+        }
+    }
+}
+
+impl Fields for WindowResult {
+    const ORDER: &'static [Field] = &[
+        Field::Edge(Edge::Top, false),
+        Field::Edge(Edge::Bottom, false),
+        Field::Edge(Edge::Left, false),
+        Field::Edge(Edge::Right, false),
+        Field::Edge(Edge::Height, false),
+        Field::Edge(Edge::Width, false),
+        Field::Edge(Edge::Top, true),
+        Field::Edge(Edge::Bottom, true),
+        Field::Edge(Edge::Left, true),
+        Field::Edge(Edge::Right, true),
+    ];
+
+    fn field(&self, f: Field) -> Option<&Val> {
+        match f {
+            Field::Edge(Edge::Height, false) => Some(&self.height),
+            Field::Edge(Edge::Width, false) => Some(&self.width),
+            Field::Edge(e, false) => self.near.edge(e),
+            Field::Edge(e, true) => self.far.as_ref()?.edge(e),
+            _ => None,
+        }
+    }
+
+    fn field_mut(&mut self, f: Field) -> Option<&mut Val> {
+        match f {
+            Field::Edge(Edge::Height, false) => Some(&mut self.height),
+            Field::Edge(Edge::Width, false) => Some(&mut self.width),
+            Field::Edge(e, false) => self.near.edge_mut(e),
+            Field::Edge(e, true) => self.far.as_mut()?.edge_mut(e),
+            _ => None,
+        }
+    }
 }
 
 #[cfg(test)]
@@ -257,8 +339,9 @@ mod tests {
     use crate::num::Real;
     use crate::stages::trace::Recorder;
 
-    fn num(r: &Tree, key: &str) -> Option<f64> {
-        match crate::tutor::solution::lookup(r, key)? {
+    fn num(r: &WindowResult, key: &str) -> Option<f64> {
+        let f = Field::all().into_iter().find(|f| f.key() == key)?;
+        match r.field(f)? {
             Val::Num(s) => Some(s.value),
             _ => None,
         }
@@ -274,7 +357,9 @@ mod tests {
         let mut rec = Recorder::new();
         let hooks = Hooks::default();
         let (_, r) = window_run((&fovy, &aspect, &near, Some(&far)), &hooks, &mut rec).unwrap();
-        let keys: Vec<&str> = r.iter().map(|(k, _)| k.as_str()).collect();
+        let keys: Vec<String> = (crate::tutor::parts::result::entries(&r).iter())
+            .map(|(f, _)| f.key())
+            .collect();
         assert_eq!(
             keys,
             [
