@@ -2,7 +2,6 @@
 //! (each part's order is its module's, [`crate::tutor::parts`]).
 
 use crate::tutor::key::Key;
-use crate::tutor::parts;
 use crate::tutor::parts::result::{One, PartResult, Results};
 
 /// The answer keys of a result tree in the order of the text's solution:
@@ -17,15 +16,14 @@ use crate::tutor::parts::result::{One, PartResult, Results};
 pub fn ordered_keys(result: &Results) -> Vec<Key> {
     let mut keys: Vec<Key> = Vec::new();
     for r in result.parts.iter().filter(|_| result.nested) {
-        let part_keys = parts::of(r.part()).keys;
         match r {
             PartResult::Clip(runs) if runs.len() > 1 => {
                 for (i, one) in runs.iter().enumerate() {
                     let of = |k: Key| k.of_segment(Some(i));
-                    keys.extend(part_keys(One::Clip(one)).into_iter().map(of));
+                    keys.extend(One::Clip(one).keys().into_iter().map(of));
                 }
             }
-            _ => keys.extend(r.one(None).map(part_keys).unwrap_or_default()),
+            _ => keys.extend(r.one(None).map(One::keys).unwrap_or_default()),
         }
     }
     keys

@@ -14,7 +14,7 @@ use crate::stages::clip::{self, ClipBox};
 use crate::stages::trace::{Name, Recorder, Step, Trace, Val};
 use crate::tutor::follow;
 use crate::tutor::key::{Cut, Field, Key, Node, Part, Plane, Value};
-use crate::tutor::parts::result::{Fields, One, PartResult};
+use crate::tutor::parts::fields::Fields;
 use crate::tutor::parts::{names, Solver, Solves};
 use crate::tutor::run::{in_table, Hooks};
 use crate::tutor::solution::Given;
@@ -26,6 +26,7 @@ pub struct ClipPart;
 impl Solves for ClipPart {
     const PART: Part = Part::Clip;
     type In = ClipIn;
+    type Result = ClipResult;
 
     fn solve<T: Scalar>(s: &mut Solver<'_, '_, T>, c: &ClipIn) -> Result<()> {
         s.clip(c)
@@ -33,7 +34,7 @@ impl Solves for ClipPart {
 
     /// The outcodes, each plane tried, the clipped segment, the status
     /// (of each segment of several: the results' order numbers them).
-    fn keys(r: One<'_>) -> Vec<Key> {
+    fn keys(r: &ClipResult) -> Vec<Key> {
         let key = |v: Value| Key::new(Part::Clip, v);
         let mut keys = vec![
             key(Value::Field(Field::Code0)),
@@ -77,7 +78,7 @@ impl<T: Scalar> Solver<'_, '_, T> {
             self.out.parts.push(given);
         }
         if !all.is_empty() {
-            self.put(PartResult::Clip(all));
+            self.put(all);
         }
         Ok(())
     }

@@ -11,6 +11,7 @@
 //! the two, and its words.
 
 pub mod clip;
+pub mod fields;
 pub mod project;
 pub mod result;
 pub mod shade;
@@ -31,9 +32,10 @@ use crate::tutor::run::{Hooks, Named};
 use crate::tutor::solution::{Given, WindowAt};
 use crate::tutor::topic::Topic;
 use clip::ClipPart;
+use fields::Fields;
 use nalgebra::Matrix4;
 use project::ProjectPart;
-use result::{One, PartResult, Results};
+use result::{PartResult, Results};
 use shade::ShadePart;
 use view::{Extent, ViewPart};
 use viewport::ViewportPart;
@@ -53,9 +55,11 @@ pub(crate) trait Solves {
     /// `windowed`: each worked once, when first needed), runs its stage
     /// and writes its results (`Solver::put`) and what it was given.
     fn solve<T: Scalar>(s: &mut Solver<'_, '_, T>, input: &Self::In) -> Result<()>;
+    /// Its results (of a clip: one segment's).
+    type Result: Fields;
     /// Its answer keys in the order of the text's solution, from its
     /// results `r` (the order practice asks and check follows through).
-    fn keys(r: One<'_>) -> Vec<Key>;
+    fn keys(r: &Self::Result) -> Vec<Key>;
     /// The topic a value of its results practises.
     fn topic(value: &Value) -> Topic;
 }
@@ -64,18 +68,13 @@ pub(crate) trait Solves {
 /// whatever its inputs.
 #[derive(Clone, Copy)]
 pub(crate) struct Def {
-    /// [`Solves::keys`].
-    pub keys: fn(One<'_>) -> Vec<Key>,
     /// [`Solves::topic`].
     pub topic: fn(&Value) -> Topic,
 }
 
 /// The definition of part `P`.
 fn def<P: Solves>() -> Def {
-    Def {
-        keys: P::keys,
-        topic: P::topic,
-    }
+    Def { topic: P::topic }
 }
 
 /// The list of parts: each part's definition. An exhaustive match, so a
@@ -176,8 +175,8 @@ impl<T: Scalar> Solver<'_, '_, T> {
     }
 
     /// A part's results, after the parts solved before it.
-    pub(crate) fn put(&mut self, r: PartResult) {
-        self.out.result.parts.push(r);
+    pub(crate) fn put(&mut self, r: impl Into<PartResult>) {
+        self.out.result.parts.push(r.into());
     }
 
     /// Whether a part asked takes the projected points (a problem file's

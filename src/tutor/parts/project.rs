@@ -12,7 +12,7 @@ use crate::num::Scalar;
 use crate::stages::projection::{self, Projection};
 use crate::stages::trace::{Name, Recorder, Step, Subst, Trace, Val};
 use crate::tutor::key::{Field, Key, Part, Value};
-use crate::tutor::parts::result::{Fields, One, PartResult};
+use crate::tutor::parts::fields::Fields;
 use crate::tutor::parts::{names, Out, Projected, Solver, Solves};
 use crate::tutor::run::{points_val, Hooks, Named};
 use crate::tutor::solution::Given;
@@ -24,13 +24,14 @@ pub struct ProjectPart;
 impl Solves for ProjectPart {
     const PART: Part = Part::Project;
     type In = ProjectIn;
+    type Result = ProjectResult;
 
     fn solve<T: Scalar>(s: &mut Solver<'_, '_, T>, how: &ProjectIn) -> Result<()> {
         s.project(how)
     }
 
     /// The projected points.
-    fn keys(r: One<'_>) -> Vec<Key> {
+    fn keys(r: &ProjectResult) -> Vec<Key> {
         let key = |v: Value| Key::new(Self::PART, v);
         names(r.field(Field::Points))
             .map(|n| key(Value::Point(n)))
@@ -80,7 +81,7 @@ impl<T: Scalar> Solver<'_, '_, T> {
             }
         };
         let images = points_val(&projected);
-        self.put(PartResult::Project(ProjectResult { points: images }));
+        self.put(ProjectResult { points: images });
         self.out.parts.push(Given::Project {
             projection: Given::projection(&proj),
             points: (points.iter())

@@ -11,30 +11,14 @@ use crate::tutor::key::{Field, Key, Node, Part, Value};
 use serde::ser::{Serialize, SerializeMap, Serializer};
 use std::borrow::Cow;
 
-use super::clip::ClipResult;
-use super::project::ProjectResult;
-use super::shade::ShadeResult;
-use super::view::ViewResult;
-use super::viewport::ViewportResult;
-use super::window::WindowResult;
-
-/// A part's results as its fields.
-pub trait Fields {
-    /// Its fields in the order the results show them (docs/spec.md §3).
-    const ORDER: &'static [Field];
-    /// The value of field `f`, if the part holds it: an exhaustive match
-    /// over the part's fields.
-    fn field(&self, f: Field) -> Option<&Val>;
-    /// [`Fields::field`], to change it.
-    fn field_mut(&mut self, f: Field) -> Option<&mut Val>;
-}
-
-/// The fields a part holds, in order, with their values.
-pub fn entries<P: Fields>(p: &P) -> Vec<(Field, &Val)> {
-    (P::ORDER.iter())
-        .filter_map(|f| Some((*f, p.field(*f)?)))
-        .collect()
-}
+use super::clip::{ClipPart, ClipResult};
+pub use super::fields::{entries, Fields};
+use super::project::{ProjectPart, ProjectResult};
+use super::shade::{ShadePart, ShadeResult};
+use super::view::{ViewPart, ViewResult};
+use super::viewport::{ViewportPart, ViewportResult};
+use super::window::{WindowPart, WindowResult};
+use super::Solves;
 
 /// One part's results; a clip's, one per segment.
 #[derive(Clone, Debug, PartialEq)]
@@ -149,6 +133,19 @@ impl<'a> One<'a> {
         }
     }
 
+    /// Its answer keys in the order of the text's solution: its part's
+    /// ([`Solves::keys`]; an exhaustive match, the list of parts).
+    pub fn keys(self) -> Vec<Key> {
+        match self {
+            One::View(r) => ViewPart::keys(r),
+            One::Project(r) => ProjectPart::keys(r),
+            One::Window(r) => WindowPart::keys(r),
+            One::Viewport(r) => ViewportPart::keys(r),
+            One::Clip(r) => ClipPart::keys(r),
+            One::Shade(r) => ShadePart::keys(r),
+        }
+    }
+
     /// Its fields as a map (a whole part's value).
     pub fn whole(self) -> Val {
         Val::Map(
@@ -157,6 +154,42 @@ impl<'a> One<'a> {
                 .map(|(f, v)| (f.key(), v.clone()))
                 .collect(),
         )
+    }
+}
+
+impl From<ViewResult> for PartResult {
+    fn from(r: ViewResult) -> PartResult {
+        PartResult::View(Box::new(r))
+    }
+}
+
+impl From<ProjectResult> for PartResult {
+    fn from(r: ProjectResult) -> PartResult {
+        PartResult::Project(r)
+    }
+}
+
+impl From<WindowResult> for PartResult {
+    fn from(r: WindowResult) -> PartResult {
+        PartResult::Window(Box::new(r))
+    }
+}
+
+impl From<ViewportResult> for PartResult {
+    fn from(r: ViewportResult) -> PartResult {
+        PartResult::Viewport(r)
+    }
+}
+
+impl From<Vec<ClipResult>> for PartResult {
+    fn from(r: Vec<ClipResult>) -> PartResult {
+        PartResult::Clip(r)
+    }
+}
+
+impl From<ShadeResult> for PartResult {
+    fn from(r: ShadeResult) -> PartResult {
+        PartResult::Shade(Box::new(r))
     }
 }
 

@@ -13,7 +13,7 @@ use crate::stages::lighting::{self, rgb_val, Highlight, LightTerm, Material};
 use crate::stages::trace::{Name, NoTrace, Recorder, Step, Trace, Val};
 use crate::tutor::follow;
 use crate::tutor::key::{Factor, Field, Key, Part, Shading, Value};
-use crate::tutor::parts::result::{Fields, One, PartResult};
+use crate::tutor::parts::fields::Fields;
 use crate::tutor::parts::{Solver, Solves};
 use crate::tutor::run::Hooks;
 use crate::tutor::solution::{Given, ShadeAt};
@@ -25,6 +25,7 @@ pub struct ShadePart;
 impl Solves for ShadePart {
     const PART: Part = Part::Shade;
     type In = ShadePartIn;
+    type Result = ShadeResult;
 
     fn solve<T: Scalar>(s: &mut Solver<'_, '_, T>, set_up: &ShadePartIn) -> Result<()> {
         s.shade(set_up)
@@ -32,7 +33,7 @@ impl Solves for ShadePart {
 
     /// The unit L and N, cos α, R (H and N·H for Blinn), cos β, the
     /// terms, their sum and the clamped colour.
-    fn keys(r: One<'_>) -> Vec<Key> {
+    fn keys(r: &ShadeResult) -> Vec<Key> {
         let key = |v: Value| Key::new(Self::PART, v);
         (SHADE_ORDER.map(Field::Shading).into_iter())
             .filter(|f| r.field(*f).is_some())
@@ -51,7 +52,7 @@ impl<T: Scalar> Solver<'_, '_, T> {
         self.out.section(Msg::SecLighting);
         let set_up = (&s.shade.table, &s.lights, s.shade.prefix);
         let (setup, r) = light_run(set_up, self.hooks, &mut self.out.rec)?;
-        self.put(PartResult::Shade(Box::new(r)));
+        self.put(r);
         (self.out.parts).push(Given::Shade(ShadeAt::of(&setup, s.file.clone())));
         Ok(())
     }
@@ -387,13 +388,13 @@ mod tests {
             );
             let p = crate::input::problem::ProblemIn::parse(&text, "t").unwrap();
             let result = crate::tutor::solve::solve::<f64>(&p).unwrap().result;
-            let Some(PartResult::Shade(r)) = result.of(Part::Shade) else {
-                panic!("no shade results under {m:?}")
-            };
-            for f in crate::tutor::parts::result::entries(&**r) {
-                if let (Field::Shading(s), _) = f {
-                    shown.push(s);
-                }
+            assert!(
+                result.of(Part::Shade).is_some(),
+                "no shade results under {m:?}"
+            );
+            for s in Shading::all() {
+                let key = Key::new(Part::Shade, Value::Field(Field::Shading(s)));
+                shown.extend(result.get(&key).map(|_| s));
             }
         }
         shown

@@ -10,7 +10,7 @@ use crate::stages::camera::{self, Basis, Camera};
 use crate::stages::trace::{Recorder, Step, Trace, Val};
 use crate::tutor::follow;
 use crate::tutor::key::{Axis, Field, Key, Part, Value};
-use crate::tutor::parts::result::{Fields, One, PartResult};
+use crate::tutor::parts::fields::Fields;
 use crate::tutor::parts::{names, Solver, Solves, Viewed};
 use crate::tutor::run::{in_table, points_val, Hooks, Named};
 use crate::tutor::solution::{camera, p3, Given};
@@ -32,6 +32,7 @@ pub enum Extent {
 impl Solves for ViewPart {
     const PART: Part = Part::View;
     type In = Extent;
+    type Result = ViewResult;
 
     fn solve<T: Scalar>(s: &mut Solver<'_, '_, T>, asked: &Extent) -> Result<()> {
         match asked {
@@ -41,7 +42,7 @@ impl Solves for ViewPart {
     }
 
     /// n, u, v, the view matrix, the eye coordinates.
-    fn keys(r: One<'_>) -> Vec<Key> {
+    fn keys(r: &ViewResult) -> Vec<Key> {
         let key = |v: Value| Key::new(Self::PART, v);
         let order = [Axis::N, Axis::U, Axis::V].map(Field::Axis);
         let mut keys: Vec<Key> = (order.iter().chain([&Field::Matrix]))
@@ -66,7 +67,7 @@ impl<T: Scalar> Solver<'_, '_, T> {
     /// `basis`: the camera basis u, v, n.
     fn basis(&mut self) -> Result<()> {
         if let Some((cam, b)) = self.based()? {
-            self.put(PartResult::View(Box::new(basis_result(&b))));
+            self.put(basis_result(&b));
             self.out.parts.push(Given::Basis(camera(&cam)));
         }
         Ok(())
@@ -78,7 +79,7 @@ impl<T: Scalar> Solver<'_, '_, T> {
             return Ok(());
         };
         let r = view_result(&v.basis, &v.matrix, &v.eye);
-        self.put(PartResult::View(Box::new(r)));
+        self.put(r);
         let world = (self.earlier.points.iter()).map(|(n, q)| (n.clone(), p3(q)));
         let given = Given::View(camera(&v.cam), world.collect());
         self.out.parts.push(given);

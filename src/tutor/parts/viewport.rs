@@ -10,7 +10,7 @@ use crate::num::Scalar;
 use crate::stages::trace::{Recorder, Val};
 use crate::stages::window::{self, Window};
 use crate::tutor::key::{Field, Key, Part, Value};
-use crate::tutor::parts::result::{Fields, One, PartResult};
+use crate::tutor::parts::fields::Fields;
 use crate::tutor::parts::{names, Out, Solver, Solves};
 use crate::tutor::run::Named;
 use crate::tutor::solution::{at, Given};
@@ -22,13 +22,14 @@ pub struct ViewportPart;
 impl Solves for ViewportPart {
     const PART: Part = Part::Viewport;
     type In = ();
+    type Result = ViewportResult;
 
     fn solve<T: Scalar>(s: &mut Solver<'_, '_, T>, _: &()) -> Result<()> {
         s.viewport()
     }
 
     /// The pixels.
-    fn keys(r: One<'_>) -> Vec<Key> {
+    fn keys(r: &ViewportResult) -> Vec<Key> {
         let key = |v: Value| Key::new(Self::PART, v);
         names(r.field(Field::Pixels))
             .map(|n| key(Value::Pixel(n)))
@@ -89,7 +90,7 @@ impl<T: Scalar> Solver<'_, '_, T> {
         let px = pixels(&w.w, (&vw, &vh), on_window, rec);
         if !(px.is_empty() && self.p.shared.on_window.is_some()) {
             let pixels = Val::Map(px);
-            self.put(PartResult::Viewport(ViewportResult { pixels }));
+            self.put(ViewportResult { pixels });
         }
         Ok(())
     }

@@ -15,7 +15,7 @@ use crate::stages::trace::{Name, Recorder, Step, Subst, Trace, Val};
 use crate::stages::window::{self, Window};
 use crate::tutor::follow;
 use crate::tutor::key::{Edge, Field, Key, Part, Value};
-use crate::tutor::parts::result::{Fields, One, PartResult};
+use crate::tutor::parts::fields::Fields;
 use crate::tutor::parts::{Out, Solver, Solves, Windowed};
 use crate::tutor::run::{in_table, Hooks, Named};
 use crate::tutor::solution::{at, Given, WindowAt};
@@ -27,6 +27,7 @@ pub struct WindowPart;
 impl Solves for WindowPart {
     const PART: Part = Part::Window;
     type In = ();
+    type Result = WindowResult;
 
     fn solve<T: Scalar>(s: &mut Solver<'_, '_, T>, _: &()) -> Result<()> {
         s.window()
@@ -34,9 +35,9 @@ impl Solves for WindowPart {
 
     /// The window's top, bottom, left, right, height, width (not the far
     /// window's).
-    fn keys(r: One<'_>) -> Vec<Key> {
+    fn keys(r: &WindowResult) -> Vec<Key> {
         let key = |v: Value| Key::new(Self::PART, v);
-        (r.entries().into_iter())
+        (crate::tutor::parts::fields::entries(r).into_iter())
             .filter(|(f, _)| matches!(f, Field::Edge(_, false)))
             .map(|(f, _)| key(Value::Field(f)))
             .collect()
@@ -51,7 +52,7 @@ impl<T: Scalar> Solver<'_, '_, T> {
     /// `window`: the window's edges (and the far one's).
     fn window(&mut self) -> Result<()> {
         if let Some(w) = self.windowed()? {
-            self.put(PartResult::Window(Box::new(w.result)));
+            self.put(w.result);
             self.out.parts.push(Given::Window(w.given));
         }
         Ok(())
@@ -357,7 +358,7 @@ mod tests {
         let mut rec = Recorder::new();
         let hooks = Hooks::default();
         let (_, r) = window_run((&fovy, &aspect, &near, Some(&far)), &hooks, &mut rec).unwrap();
-        let keys: Vec<String> = (crate::tutor::parts::result::entries(&r).iter())
+        let keys: Vec<String> = (crate::tutor::parts::fields::entries(&r).iter())
             .map(|(f, _)| f.key())
             .collect();
         assert_eq!(
