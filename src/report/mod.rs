@@ -62,22 +62,15 @@ impl Report {
         }
     }
 
-    /// The answer as the text names it in `lang`: (key, words, value).
+    /// A render's summary as the text names it in `lang`: (key, words,
+    /// value); a solution's results are named by their typed names.
     pub fn answer_named(&self, lang: Lang) -> Vec<(String, String, Val)> {
         match &self.asked {
             Asked::Render(run) => render::summary(run)
                 .into_iter()
                 .map(|(k, v)| (k.key(), words::of(lang).summary(k), v))
                 .collect(),
-            _ => self
-                .result
-                .tree()
-                .into_iter()
-                .map(|(k, v)| {
-                    let (_, named) = words::keys::node_of(words::of(lang), &k, None);
-                    (k, named, v)
-                })
-                .collect(),
+            _ => vec![],
         }
     }
 

@@ -6,7 +6,7 @@ use crate::msg::{DocWord, Msg, Printed};
 use crate::report::lang::Lang;
 use crate::stages::trace::Val;
 use crate::tutor::key::{Field, Node};
-use crate::tutor::solution::{Asked, Comparison, Report};
+use crate::tutor::solution::{Asked, Comparison, One, PartResult, Report, Results};
 
 impl Report {
     /// The worked solution and answer as text, after the problem.
@@ -32,10 +32,13 @@ impl Report {
             out.push_str(&style.step_body(s));
         }
         out.push_str(&format!("\n{}\n", self.answer_heading(style.lang)));
-        let render = matches!(self.asked, Asked::Render(_));
-        for (k, named, v) in self.answer_named(style.lang) {
-            let node = (!render).then(|| Node::read(&k, None)).flatten();
-            push_answer(&mut out, style, "  ", (node.as_ref(), &named), &v);
+        match self.asked {
+            Asked::Render(_) => {
+                for (_, named, v) in self.answer_named(style.lang) {
+                    push_answer(&mut out, style, "  ", (None, &named), &v);
+                }
+            }
+            _ => push_results(&mut out, style, &self.result),
         }
         for n in self.all_notes(style) {
             out.push_str(&format!("\n{n}\n"));
@@ -107,6 +110,52 @@ fn comparison_text(c: &Comparison, lang: Lang) -> String {
         });
     }
     lines.join("\n")
+}
+
+/// Writes the results: a problem file's part by part (a clip's several
+/// segments numbered, `clip[1]:`, …), each field by its typed name; a
+/// command's fields unnested.
+fn push_results(out: &mut String, style: &Style, results: &Results) {
+    let words = words::of(style.lang);
+    for p in &results.parts {
+        let part = Node::Part(p.part());
+        match (results.nested, p) {
+            (false, _) => {
+                let fields = p.one(None).map(One::entries).unwrap_or_default();
+                push_fields(out, style, "  ", &fields);
+            }
+            (true, PartResult::Clip(runs)) if runs.len() != 1 => {
+                for (i, r) in runs.iter().enumerate() {
+                    let numbered = format!("{}[{}]", words.node(&part), i + 1);
+                    push_part(out, style, &numbered, &One::Clip(r).entries());
+                }
+            }
+            (true, _) => {
+                let fields = p.one(None).map(One::entries).unwrap_or_default();
+                push_part(out, style, &words.node(&part), &fields);
+            }
+        }
+    }
+}
+
+/// A part's fields under its name (`none` when it has none).
+fn push_part(out: &mut String, style: &Style, shown: &str, fields: &[(Field, &Val)]) {
+    if fields.is_empty() {
+        out.push_str(&style.named("  ", shown, &Val::Null));
+        out.push('\n');
+        return;
+    }
+    out.push_str(&format!("  {shown}:\n"));
+    push_fields(out, style, "    ", fields);
+}
+
+/// Each field of a part by its typed name.
+fn push_fields(out: &mut String, style: &Style, indent: &str, fields: &[(Field, &Val)]) {
+    for (f, v) in fields {
+        let node = Node::Field(*f);
+        let shown = words::of(style.lang).node(&node);
+        push_answer(out, style, indent, (Some(&node), &shown), v);
+    }
 }
 
 /// Writes one answer, opening maps (e.g. points) into one line per entry
