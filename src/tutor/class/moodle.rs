@@ -228,18 +228,17 @@ fn answers_of(
     for (key, val) in keys {
         let leaves = typed_leaves(key, val, 1e-3);
         let texts: Vec<&str> = leaves.iter().map(|_| next.next().unwrap_or("")).collect();
-        let full = format!("{name}.{key}");
         for ((leaf, _), t) in leaves.iter().zip(&texts) {
             let bad = t.is_empty() || (matches!(leaf, Typed::Num(_)) && number(t).is_err());
             if bad {
-                unreadable.push((who.to_string(), full.clone(), t.to_string()));
+                unreadable.push((who.to_string(), format!("{name}.{key}"), t.to_string()));
             }
         }
         if texts.iter().all(|t| t.is_empty()) {
             continue; // not answered: marked as missing
         }
         let mut it = texts.into_iter();
-        out.push((Name::parse(&full), shaped(val, &mut it)));
+        out.push((Name::keyed(name, key.clone()), shaped(val, &mut it)));
     }
     out
 }
