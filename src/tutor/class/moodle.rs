@@ -17,13 +17,13 @@
 //! is answered by its part's text, a vector or matrix by the list of its
 //! parts, shaped as the key's value.
 
-use super::{Paper, Sheet};
+use super::{Markers, Paper, Sheet};
 use crate::error::{Error, Result};
 use crate::input::answer::number;
 use crate::input::moodle_responses::{parts, Attempt, Responses};
 use crate::msg::ErrMsg;
 use crate::stages::trace::Val;
-use crate::tutor::check::{Answers, Marker, Name, Settings};
+use crate::tutor::check::{Answers, Name, Settings};
 use crate::tutor::class::same::Same;
 use crate::tutor::generate::quiz::{typed_leaves, Typed};
 use crate::tutor::key::Key;
@@ -74,15 +74,24 @@ pub struct Given {
     pub blanks: Vec<Blanks>,
 }
 
+/// The paper a report's attempts answer, one variant per different draw
+/// ([`given`]), with its markers: the exam's own, each problem solved and
+/// its mistakes run once, whatever the draws.
+pub struct Drawn {
+    /// The paper.
+    pub paper: Paper,
+    markers: Markers,
+}
+
 /// The blanks of each problem of each variant: every key with its value.
 type Shapes = Vec<Vec<Vec<(Key, Val)>>>;
 
-fn shapes(paper: &Paper, settings: Settings) -> Result<Shapes> {
-    (paper.variants.iter())
+fn shapes(markers: &Markers) -> Result<Shapes> {
+    (markers.iter())
         .map(|v| {
             v.iter()
-                .map(|p| {
-                    let m = Marker::new(&p.problem, settings)?;
+                .map(|marker| {
+                    let m = marker.as_ref().map_err(Clone::clone)?;
                     let keys = m.scheme.keys();
                     Ok(keys
                         .filter_map(|k| Some((k.clone(), value_of(&m.result, k)?.clone())))
@@ -102,8 +111,9 @@ pub fn given(
     paper: &Paper,
     settings: Settings,
     r: &Responses,
-) -> Result<(Paper, Vec<Given>, Findings)> {
-    let shapes = shapes(paper, settings)?;
+) -> Result<(Drawn, Vec<Given>, Findings)> {
+    let markers = super::markers(paper, settings);
+    let shapes = shapes(&markers)?;
     let statements = statements(paper);
     let shown = r
         .attempts
@@ -166,23 +176,27 @@ pub fn given(
     if draws.is_empty() {
         draws.push(vec![0; shapes[0].len()]); // no attempt marked: the first variant
     }
-    Ok((drawn_paper(paper, &draws), out, f))
+    Ok((drawn_paper(paper, &markers, &draws), out, f))
 }
 
 /// The paper returned: one variant per different draw, in the order first
-/// met, each problem p of the variant its draw names.
-fn drawn_paper(paper: &Paper, draws: &[Vec<usize>]) -> Paper {
-    Paper {
-        title: paper.title.clone(),
-        variants: (draws.iter())
-            .map(|d| {
-                d.iter()
-                    .enumerate()
-                    .map(|(p, &v)| paper.variants[v][p].clone())
-                    .collect()
-            })
+/// met, each problem p of the variant its draw names, with its marker.
+fn drawn_paper(paper: &Paper, markers: &Markers, draws: &[Vec<usize>]) -> Drawn {
+    // each problem p of a draw with its variant v
+    fn each(d: &[usize]) -> impl Iterator<Item = (usize, usize)> + '_ {
+        d.iter().enumerate().map(|(p, &v)| (v, p))
+    }
+    Drawn {
+        paper: Paper {
+            title: paper.title.clone(),
+            variants: (draws.iter())
+                .map(|d| each(d).map(|(v, p)| paper.variants[v][p].clone()).collect())
+                .collect(),
+            exam: true,
+        },
+        markers: (draws.iter())
+            .map(|d| each(d).map(|(v, p)| markers[v][p].clone()).collect())
             .collect(),
-        exam: true,
     }
 }
 
@@ -302,16 +316,10 @@ fn shaped<'a>(like: &Val, texts: &mut impl Iterator<Item = &'a str>) -> toml::Va
 /// of the marks (the first of equals), the others marked as
 /// [`Same::Attempt`] of it. The blanks that cannot be read are added to
 /// `found`'s unreadable ones.
-pub fn sheets(
-    paper: &Paper,
-    settings: Settings,
-    r: &Responses,
-    given: &[Given],
-    found: &mut Findings,
-) -> Vec<Sheet> {
+pub fn sheets(drawn: &Drawn, r: &Responses, given: &[Given], found: &mut Findings) -> Vec<Sheet> {
     let mut sheets = super::mark_given(
-        paper,
-        settings,
+        &drawn.paper,
+        &drawn.markers,
         given
             .iter()
             .map(|g| (g.label.clone(), g.who.clone(), g.answers.clone())),
@@ -364,6 +372,38 @@ mod tests {
     use crate::input::problem::ProblemIn;
     use crate::tutor::class::Part;
 
+    /// The variants of the draws are marked by the exam's markers: each
+    /// problem of the exam is solved and its mistakes run once, not once
+    /// more for every draw that holds it.
+    #[test]
+    fn the_draws_share_the_exams_markers() {
+        let text = "title = 't'\nask = ['view']\n\
+            [camera]\neye = [4, 4, 4]\nlook = [0, 1, 4]\nup = [0, 1, 0]\n";
+        let problem = ProblemIn::parse(text, "t.toml").expect("parses");
+        let part = |name: &str| Part {
+            name: name.into(),
+            problem: problem.clone(),
+        };
+        let variant = || vec![part("problem-01"), part("problem-02")];
+        let paper = Paper {
+            title: "t".into(),
+            variants: vec![variant(), variant()],
+            exam: true,
+        };
+        let markers = super::super::markers(&paper, Settings::default());
+        // three draws: (1, 2), (2, 1), (2, 2), 0-based
+        let draws = [vec![0, 1], vec![1, 0], vec![1, 1]];
+        let drawn = drawn_paper(&paper, &markers, &draws);
+        for (d, draw) in draws.iter().enumerate() {
+            for (p, &v) in draw.iter().enumerate() {
+                let (Ok(mine), Ok(exams)) = (&drawn.markers[d][p], &markers[v][p]) else {
+                    panic!("solves");
+                };
+                assert!(std::rc::Rc::ptr_eq(mine, exams), "draw {d}, problem {p}");
+            }
+        }
+    }
+
     /// Each number an attempt types is parsed once, by the marking: the
     /// blanks are taken as typed, the marking reads them, and only the
     /// blanks of an answer it could not read are read again, to name the
@@ -382,7 +422,8 @@ mod tests {
             exam: true,
         };
         let settings = Settings::default();
-        let keys = &shapes(&paper, settings).expect("solves")[0][0];
+        let markers = super::super::markers(&paper, settings);
+        let keys = &shapes(&markers).expect("solves")[0][0];
         // n right (a decimal comma), u with a blank that is no number, every
         // other key left empty
         let mut typed: Vec<String> = Vec::new();
@@ -414,7 +455,7 @@ mod tests {
         };
         let sheets = super::super::mark_given(
             &paper,
-            settings,
+            &markers,
             std::iter::once((given.label.clone(), given.who.clone(), answers)),
         );
         let before = parsed();

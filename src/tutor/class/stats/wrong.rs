@@ -185,7 +185,7 @@ mod tests {
     use super::*;
     use crate::input::problem::ProblemIn;
     use crate::tutor::check::{Answers, Name};
-    use crate::tutor::class::mark_given;
+    use crate::tutor::class::{mark_given, markers};
     use std::path::PathBuf;
 
     /// The groups of wrong answers to `key` of a class whose students
@@ -200,7 +200,7 @@ mod tests {
         let settings = Settings::default();
         let sheets = mark_given(
             &paper,
-            settings,
+            &markers(&paper, settings),
             given.iter().map(|(who, v)| {
                 let answers: Answers = vec![(Name::parse(key), v.clone())];
                 (PathBuf::from(who), who.to_string(), answers)
