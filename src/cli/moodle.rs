@@ -37,9 +37,9 @@ pub fn run(
         ));
     }
     let r = moodle_responses::read(file)?;
-    let (drawn, given, findings) = moodle::given(paper, settings, &r)?;
-    let paper = &drawn;
-    let sheets = moodle::sheets(paper, settings, &r, &given);
+    let (drawn, given, mut findings) = moodle::given(paper, settings, &r)?;
+    let sheets = moodle::sheets(&drawn, &r, &given, &mut findings);
+    let paper = &drawn.paper;
     if let Some(g) = &a.grades {
         let grades = moodle_grades::grades(&r, &given, &sheets);
         outputs.write(g, "grades", moodle_grades::csv(&grades).as_bytes())?;

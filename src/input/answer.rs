@@ -93,30 +93,44 @@ impl Number {
 /// a code or status word, or none. The error is the note for the student:
 /// which part, at which column, and what was expected there.
 pub fn read(given: &toml::Value, like: &Val) -> Result<Read, Msg> {
-    match Given::of(given) {
-        Given::Text(t) => match named(t) {
-            Some((value, at)) => read_at(Given::Text(value), like, at),
-            None => read_at(Given::Text(t), like, 0),
-        },
-        other => read_at(other, like, 0),
-    }
+    Given::of(given).read(like)
 }
 
 /// What is read: a text (a string of the file, a line typed, or one part
 /// of a list written as text, read from the text itself) or another TOML
 /// value (an array, a number, a boolean).
-#[derive(Clone, Copy)]
-enum Given<'a> {
+#[derive(Clone, Copy, Debug)]
+pub enum Given<'a> {
+    /// A text: a line typed, or a string of an answer file.
     Text(&'a str),
+    /// Any other TOML value of an answer file.
     Toml(&'a toml::Value),
 }
 
 impl<'a> Given<'a> {
     /// A TOML value as read: a string is its text.
-    fn of(v: &'a toml::Value) -> Given<'a> {
+    pub fn of(v: &'a toml::Value) -> Given<'a> {
         match v {
             toml::Value::String(s) => Given::Text(s),
             other => Given::Toml(other),
+        }
+    }
+
+    /// Whether it is a text of nothing but white space (an answer left
+    /// empty).
+    pub fn is_blank(self) -> bool {
+        matches!(self, Given::Text(s) if s.trim().is_empty())
+    }
+
+    /// Reads the answer against a value shaped like `like` ([`read`]): a
+    /// text may start with its name (`n = …`).
+    pub fn read(self, like: &Val) -> Result<Read, Msg> {
+        match self {
+            Given::Text(t) => match named(t) {
+                Some((value, at)) => read_at(Given::Text(value), like, at),
+                None => read_at(Given::Text(t), like, 0),
+            },
+            other => read_at(other, like, 0),
         }
     }
 }

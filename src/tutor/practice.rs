@@ -22,7 +22,7 @@
 //! people are made in `report::practice`.
 
 use crate::error::Result;
-use crate::input::answer::Read;
+use crate::input::answer::{Given, Read};
 use crate::input::problem::ProblemIn;
 use crate::msg::{Msg, Said};
 use crate::stages::trace::{Name, Step, Val};
@@ -604,7 +604,7 @@ impl<'a> Session<'a> {
     fn judge(&self, item: &Item, text: &str) -> Outcome {
         let m = &self.plan.marker;
         let key = &item.key;
-        let j = m.judge(key, &item.expected, &toml::Value::String(text.to_string()));
+        let j = m.judge(key, &item.expected, Given::Text(text));
         let mut out = Outcome {
             given: Some(text.to_string()),
             read: j.read,
@@ -911,6 +911,23 @@ mod tests {
                 _ => None,
             })
             .unwrap()
+    }
+
+    /// A line typed is judged as the text it is: its numbers are parsed
+    /// once (grafika's exact forms are read at the first answer, and kept).
+    #[test]
+    fn a_typed_answer_is_parsed_once() {
+        let plan = camera_plan();
+        let mut s = Session::new(&plan);
+        s.start();
+        s.handle(Input::Answer("4/5, 3/5, 0".into()));
+        s.handle(Input::Back);
+        let parsed = || crate::num::expr::PARSED.with(std::cell::Cell::get);
+        let before = parsed();
+        // n = (4/5, 3/5, 0): three numbers, with the decimal comma
+        let again = s.handle(Input::Answer("n = (0,8; 0,6; 0)".into()));
+        assert_eq!(verdict(&again).verdict, Verdict::Exact);
+        assert_eq!(parsed() - before, 3);
     }
 
     #[test]

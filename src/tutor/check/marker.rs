@@ -189,13 +189,14 @@ impl Marker {
 
     /// Judges one answer to `key`, whose value is `right` (grafika's, as
     /// the caller found it in [`Marker::result`]), in the order of judgment
-    /// (module docs).
-    pub fn judge(&self, key: &Key, right: &Val, given: &toml::Value) -> Judgement {
-        if matches!(given, toml::Value::String(s) if s.trim().is_empty()) {
+    /// (module docs): a value of an answer file ([`answer::Given::of`]) or
+    /// a line typed ([`answer::Given::Text`]), read as it is.
+    pub fn judge(&self, key: &Key, right: &Val, given: answer::Given) -> Judgement {
+        if given.is_blank() {
             let j = Judged::new(Verdict::Missing, Msg::EmptyAnswer);
             return judgement(j, None);
         }
-        let read = match answer::read(given, right) {
+        let read = match given.read(right) {
             Ok(r) => completed(key, r, right),
             Err(note) => return judgement(Judged::new(Verdict::Unparseable, note), None),
         };

@@ -302,38 +302,68 @@ pub type Answers = Vec<(Name, toml::Value)>;
 /// An answer's name as its file gives it: the names of the TOML tables
 /// down to the answer (`view.points.A = …`, or `A = …` under
 /// `[view.points]`, is `view`, `points`, `A`), read into a [`Key`] name by
-/// name ([`Name::key`]); spelled with dots where it is shown.
+/// name ([`Name::key`]); spelled with dots where it is shown. A name
+/// grafika builds from a key it has (a Moodle blank's, [`Name::keyed`])
+/// keeps the key typed, never spelled to be read back.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
-pub struct Name(Vec<String>);
+pub struct Name {
+    /// The names as written; of a name grafika builds, those before its
+    /// key (`problem-01`).
+    names: Vec<String>,
+    /// The answer key after the names, when grafika builds the name from
+    /// a key it has in hand.
+    key: Option<Key>,
+}
 
 impl Name {
     /// A name written on one line (`problem-01.view.u`): its names
     /// between the dots.
     pub fn parse(s: &str) -> Name {
-        Name(s.split('.').map(str::to_string).collect())
+        Name {
+            names: s.split('.').map(str::to_string).collect(),
+            key: None,
+        }
+    }
+
+    /// The key `key` of the problem named `problem` (`problem-01` and
+    /// `view.u`), as typed as it is.
+    pub fn keyed(problem: &str, key: Key) -> Name {
+        Name {
+            names: vec![problem.to_string()],
+            key: Some(key),
+        }
     }
 
     /// This name with the TOML key `k` under it: a quoted key with dots
     /// (`"view.u"`) is its names as `view.u` is; an empty key at the top
     /// adds none.
     fn under(&self, k: &str) -> Name {
-        let mut names = self.0.clone();
+        let mut names = self.names.clone();
         if !(names.is_empty() && k.is_empty()) {
             names.extend(k.split('.').map(str::to_string));
         }
-        Name(names)
+        Name {
+            names,
+            key: self.key.clone(),
+        }
     }
 
     /// Whether it is the one name `s` (`nim`, `variant`).
     pub fn is(&self, s: &str) -> bool {
-        matches!(&self.0[..], [one] if one == s)
+        self.key.is_none() && matches!(&self.names[..], [one] if one == s)
     }
 
     /// Its first name and the rest (`problem-01` and `view.u`); None for a
     /// lone name.
     pub fn split_first(&self) -> Option<(&str, Name)> {
-        match &self.0[..] {
-            [first, rest @ ..] if !rest.is_empty() => Some((first, Name(rest.to_vec()))),
+        match &self.names[..] {
+            [first, rest @ ..] if !rest.is_empty() || self.key.is_some() => {
+                let rest = Name {
+                    names: rest.to_vec(),
+                    key: self.key.clone(),
+                };
+                Some((first, rest))
+            }
             _ => None,
         }
     }
@@ -341,14 +371,25 @@ impl Name {
     /// The answer key it names; a name that is no key is refused as it is
     /// spelled (`check` reports it unknown).
     pub fn key(&self) -> std::result::Result<Key, String> {
-        Key::from_names(self.0.iter().map(String::as_str)).map_err(|_| self.to_string())
+        match &self.key {
+            Some(key) if self.names.is_empty() => Ok(key.clone()),
+            Some(_) => Err(self.to_string()),
+            None => {
+                Key::from_names(self.names.iter().map(String::as_str)).map_err(|_| self.to_string())
+            }
+        }
     }
 }
 
 impl std::fmt::Display for Name {
-    /// The names joined by dots (`view.points.A`).
+    /// The names joined by dots (`view.points.A`), the key after them.
     fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        f.write_str(&self.0.join("."))
+        f.write_str(&self.names.join("."))?;
+        match (&self.key, self.names.is_empty()) {
+            (Some(key), true) => write!(f, "{key}"),
+            (Some(key), false) => write!(f, ".{key}"),
+            (None, _) => Ok(()),
+        }
     }
 }
 
@@ -400,7 +441,7 @@ fn leaves(name: Name, v: &toml::Value, out: &mut Answers) {
     match v {
         toml::Value::Table(t) => t.iter().for_each(|(k, x)| leaves(name.under(k), x, out)),
         // a value at an empty name is named by the empty word
-        other if name.0.is_empty() => out.push((Name::parse(""), other.clone())),
+        other if name.names.is_empty() => out.push((Name::parse(""), other.clone())),
         other => out.push((name, other.clone())),
     }
 }

@@ -6,7 +6,7 @@
 
 use super::marker::{Follow, Marker};
 use super::{Diagnosis, Marked, Marking, Name, Verdict};
-use crate::input::answer::Read;
+use crate::input::answer::{Given, Read};
 use crate::msg::Msg;
 use crate::tutor::diagnose::Code;
 use crate::tutor::key::Key;
@@ -52,7 +52,7 @@ impl Marker {
                 Some(g) if super::answer_len(g) > super::MAX_ANSWER => {
                     too_long(super::answer_len(g))
                 }
-                Some(g) => self.judge(key, &expected, g),
+                Some(g) => self.judge(key, &expected, Given::of(g)),
             };
             let mut mistakes = j.mistakes;
             if from_text {
@@ -327,9 +327,15 @@ mod tests {
         let given = toml::Value::String("(4/sqrt(17), 0, -1/sqrt(17))".into());
         let parsed = || crate::num::expr::PARSED.with(std::cell::Cell::get);
         // the first judgment also reads grafika's exact forms (kept)
-        assert_eq!(m.judge(&key, &right, &given).verdict, Verdict::Exact);
+        assert_eq!(
+            m.judge(&key, &right, Given::of(&given)).verdict,
+            Verdict::Exact
+        );
         let before = parsed();
-        assert_eq!(m.judge(&key, &right, &given).verdict, Verdict::Exact);
+        assert_eq!(
+            m.judge(&key, &right, Given::of(&given)).verdict,
+            Verdict::Exact
+        );
         assert_eq!(parsed() - before, 3);
     }
 }

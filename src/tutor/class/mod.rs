@@ -22,6 +22,7 @@ use crate::tutor::generate::{problem_name, problem_number};
 use crate::tutor::key::{Key, NotAKey};
 use std::fmt;
 use std::path::{Path, PathBuf};
+use std::rc::Rc;
 use std::str::FromStr;
 
 /// What a class answers: one problem, or an exam's variants, each a list of
@@ -251,14 +252,15 @@ impl Class {
 }
 
 /// The markers of a paper's problems, by variant: each problem solved, and
-/// the mistake catalog run on it, once for the whole class.
-type Markers = Vec<Vec<Result<Marker>>>;
+/// the mistake catalog run on it, once for the whole class (shared: the
+/// variants of a Moodle report's draws are marked by the exam's markers).
+type Markers = Vec<Vec<Result<Rc<Marker>>>>;
 
 fn markers(paper: &Paper, settings: Settings) -> Markers {
     (paper.variants.iter())
         .map(|v| {
             v.iter()
-                .map(|p| Marker::new(&p.problem, settings))
+                .map(|p| Marker::new(&p.problem, settings).map(Rc::new))
                 .collect()
         })
         .collect()
@@ -306,20 +308,19 @@ fn mark_with(paper: &Paper, markers: &Markers, f: &Path) -> Sheet {
 }
 
 /// Marks answers given in memory (a Moodle quiz's attempts, [`moodle`]),
-/// each named and split as an answer file is.
-pub fn mark_given(
+/// each named and split as an answer file is, by the paper's markers.
+fn mark_given(
     paper: &Paper,
-    settings: Settings,
+    markers: &Markers,
     given: impl Iterator<Item = (PathBuf, String, Answers)>,
 ) -> Vec<Sheet> {
-    let markers = markers(paper, settings);
     given
         .map(|(f, who, answers)| {
             let who = check::shown_name(&who);
             let read = Ok((Some(who.clone()), answers, None));
             let identity = identity(&read, &who);
             let read = read.map(|(s, answers, _)| (s, answers));
-            mark_read(paper, &markers, &f, (who, identity), read)
+            mark_read(paper, markers, &f, (who, identity), read)
         })
         .collect()
 }

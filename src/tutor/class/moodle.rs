@@ -17,13 +17,13 @@
 //! is answered by its part's text, a vector or matrix by the list of its
 //! parts, shaped as the key's value.
 
-use super::{Paper, Sheet};
+use super::{Markers, Paper, Sheet};
 use crate::error::{Error, Result};
 use crate::input::answer::number;
 use crate::input::moodle_responses::{parts, Attempt, Responses};
 use crate::msg::ErrMsg;
 use crate::stages::trace::Val;
-use crate::tutor::check::{Answers, Marker, Name, Settings};
+use crate::tutor::check::{Answers, Name, Settings};
 use crate::tutor::class::same::Same;
 use crate::tutor::generate::quiz::{typed_leaves, Typed};
 use crate::tutor::key::Key;
@@ -38,8 +38,22 @@ pub struct Findings {
     /// and the beginning of its text, once per different question.
     pub foreign: Vec<(usize, String)>,
     /// Parts grafika cannot read: the student, the answer
-    /// (`problem-01.view.u`) and what was typed (empty for an empty part).
+    /// (`problem-01.view.u`) and what was typed (empty for an empty part);
+    /// found by the marking ([`sheets`]).
     pub unreadable: Vec<(String, String, String)>,
+}
+
+/// One key's blanks as an attempt typed them.
+#[derive(Clone, Debug)]
+pub struct Blanks {
+    /// The problem of the attempt's draw (0-based).
+    pub problem: usize,
+    /// The answer's name (`problem-01.view.u`).
+    pub name: Name,
+    /// The key.
+    pub key: Key,
+    /// Each blank's text, and whether a number is asked there.
+    pub typed: Vec<(String, bool)>,
 }
 
 /// One finished attempt as an answer file would hold it.
@@ -55,17 +69,28 @@ pub struct Given {
     pub answers: Answers,
     /// The exam's variant (1-based) of each problem the attempt drew.
     pub drawn: Vec<usize>,
+    /// Each key's blanks as typed, in the order of the slots.
+    pub blanks: Vec<Blanks>,
+}
+
+/// The paper a report's attempts answer, one variant per different draw
+/// ([`given`]), with its markers: the exam's own, each problem solved and
+/// its mistakes run once, whatever the draws.
+pub struct Drawn {
+    /// The paper.
+    pub paper: Paper,
+    markers: Markers,
 }
 
 /// The blanks of each problem of each variant: every key with its value.
 type Shapes = Vec<Vec<Vec<(Key, Val)>>>;
 
-fn shapes(paper: &Paper, settings: Settings) -> Result<Shapes> {
-    (paper.variants.iter())
+fn shapes(markers: &Markers) -> Result<Shapes> {
+    (markers.iter())
         .map(|v| {
             v.iter()
-                .map(|p| {
-                    let m = Marker::new(&p.problem, settings)?;
+                .map(|marker| {
+                    let m = marker.as_ref().map_err(Clone::clone)?;
                     let keys = m.scheme.keys();
                     Ok(keys
                         .filter_map(|k| Some((k.clone(), m.result.get(k)?.into_owned())))
@@ -85,8 +110,9 @@ pub fn given(
     paper: &Paper,
     settings: Settings,
     r: &Responses,
-) -> Result<(Paper, Vec<Given>, Findings)> {
-    let shapes = shapes(paper, settings)?;
+) -> Result<(Drawn, Vec<Given>, Findings)> {
+    let markers = super::markers(paper, settings);
+    let shapes = shapes(&markers)?;
     let statements = statements(paper);
     let shown = r
         .attempts
@@ -106,6 +132,7 @@ pub fn given(
         let mut draw: Vec<usize> = vec![0; shapes[0].len()];
         let mut any = false;
         let mut answers: Answers = Vec::new();
+        let mut blanks: Vec<Blanks> = Vec::new();
         for (s, slot) in a.slots.iter().enumerate() {
             let found = match shown {
                 true => find(&statements, &slot.question, s),
@@ -122,13 +149,7 @@ pub fn given(
             any = true;
             let typed = slot.response.as_deref().and_then(parts).unwrap_or_default();
             let name = &paper.variants[v][p].name;
-            answers.extend(answers_of(
-                &shapes[v][p],
-                &typed,
-                name,
-                &who(a),
-                &mut f.unreadable,
-            ));
+            answers.extend(answers_of(&shapes[v][p], &typed, (p, name), &mut blanks));
         }
         if !any {
             continue;
@@ -148,28 +169,33 @@ pub fn given(
             who: who(a),
             answers,
             drawn: draws[v].iter().map(|d| d + 1).collect(),
+            blanks,
         });
     }
     if draws.is_empty() {
         draws.push(vec![0; shapes[0].len()]); // no attempt marked: the first variant
     }
-    Ok((drawn_paper(paper, &draws), out, f))
+    Ok((drawn_paper(paper, &markers, &draws), out, f))
 }
 
 /// The paper returned: one variant per different draw, in the order first
-/// met, each problem p of the variant its draw names.
-fn drawn_paper(paper: &Paper, draws: &[Vec<usize>]) -> Paper {
-    Paper {
-        title: paper.title.clone(),
-        variants: (draws.iter())
-            .map(|d| {
-                d.iter()
-                    .enumerate()
-                    .map(|(p, &v)| paper.variants[v][p].clone())
-                    .collect()
-            })
+/// met, each problem p of the variant its draw names, with its marker.
+fn drawn_paper(paper: &Paper, markers: &Markers, draws: &[Vec<usize>]) -> Drawn {
+    // each problem p of a draw with its variant v
+    fn each(d: &[usize]) -> impl Iterator<Item = (usize, usize)> + '_ {
+        d.iter().enumerate().map(|(p, &v)| (v, p))
+    }
+    Drawn {
+        paper: Paper {
+            title: paper.title.clone(),
+            variants: (draws.iter())
+                .map(|d| each(d).map(|(v, p)| paper.variants[v][p].clone()).collect())
+                .collect(),
+            exam: true,
+        },
+        markers: (draws.iter())
+            .map(|d| each(d).map(|(v, p)| markers[v][p].clone()).collect())
             .collect(),
-        exam: true,
     }
 }
 
@@ -214,31 +240,60 @@ fn find(statements: &[Vec<String>], question: &str, slot: usize) -> Option<(usiz
 
 /// The answers of one problem from its parts in order: `problem-01.view.u`
 /// and its value (a part's text, or a list shaped as the key's value);
-/// the parts that cannot be read are noted.
+/// each key's blanks as typed are added to `blanks`.
 fn answers_of(
     keys: &[(Key, Val)],
     typed: &[String],
-    name: &str,
-    who: &str,
-    unreadable: &mut Vec<(String, String, String)>,
+    (problem, name): (usize, &str),
+    blanks: &mut Vec<Blanks>,
 ) -> Answers {
     let mut next = typed.iter().map(|s| s.trim());
     let mut out = Vec::new();
     for (key, val) in keys {
         let leaves = typed_leaves(key, val, 1e-3);
         let texts: Vec<&str> = leaves.iter().map(|_| next.next().unwrap_or("")).collect();
-        let full = format!("{name}.{key}");
-        for ((leaf, _), t) in leaves.iter().zip(&texts) {
-            let bad = t.is_empty() || (matches!(leaf, Typed::Num(_)) && number(t).is_err());
-            if bad {
-                unreadable.push((who.to_string(), full.clone(), t.to_string()));
-            }
-        }
+        let name = Name::keyed(name, key.clone());
+        blanks.push(Blanks {
+            problem,
+            name: name.clone(),
+            key: key.clone(),
+            typed: (texts.iter().zip(&leaves))
+                .map(|(t, (leaf, _))| (t.to_string(), matches!(leaf, Typed::Num(_))))
+                .collect(),
+        });
         if texts.iter().all(|t| t.is_empty()) {
             continue; // not answered: marked as missing
         }
         let mut it = texts.into_iter();
-        out.push((Name::parse(&full), shaped(val, &mut it)));
+        out.push((name, shaped(val, &mut it)));
+    }
+    out
+}
+
+/// The blanks of the attempts that cannot be read: left empty, or not a
+/// number where one is asked. Each number is parsed once, by the marking:
+/// where it read a key's answer, every number of it was read (a one-blank
+/// answer written after a name, `n = 5`, is the one read otherwise, and
+/// its text is read again here); the blanks of a key it could not read
+/// are read one by one to name the bad ones (and those of a problem an
+/// attempt answers twice, where the marking read the first answer).
+fn unreadable(given: &[Given], sheets: &[Sheet]) -> Vec<(String, String, String)> {
+    let mut out = Vec::new();
+    for (g, s) in given.iter().zip(sheets) {
+        let mut seen = std::collections::HashSet::new();
+        for b in &g.blanks {
+            let read = seen.insert((b.problem, &b.key))
+                && (s.outcome.as_ref().ok())
+                    .and_then(|parts| parts.get(b.problem))
+                    .and_then(|(_, m)| m.answers.iter().find(|a| a.key == b.key))
+                    .is_some_and(|a| a.read.is_some());
+            for (t, asked) in &b.typed {
+                let again = *asked && (!read || t.contains('='));
+                if t.is_empty() || (again && number(t).is_err()) {
+                    out.push((g.who.clone(), b.name.to_string(), t.clone()));
+                }
+            }
+        }
     }
     out
 }
@@ -258,11 +313,12 @@ fn shaped<'a>(like: &Val, texts: &mut impl Iterator<Item = &'a str>) -> toml::Va
 /// sheet with the exam's variant of each problem it drew; a student with
 /// several attempts is counted once, by the attempt of the highest share
 /// of the marks (the first of equals), the others marked as
-/// [`Same::Attempt`] of it.
-pub fn sheets(paper: &Paper, settings: Settings, r: &Responses, given: &[Given]) -> Vec<Sheet> {
+/// [`Same::Attempt`] of it. The blanks that cannot be read are added to
+/// `found`'s unreadable ones.
+pub fn sheets(drawn: &Drawn, r: &Responses, given: &[Given], found: &mut Findings) -> Vec<Sheet> {
     let mut sheets = super::mark_given(
-        paper,
-        settings,
+        &drawn.paper,
+        &drawn.markers,
         given
             .iter()
             .map(|g| (g.label.clone(), g.who.clone(), g.answers.clone())),
@@ -271,6 +327,7 @@ pub fn sheets(paper: &Paper, settings: Settings, r: &Responses, given: &[Given])
         s.drawn.clone_from(&g.drawn);
     }
     one_attempt_each(r, given, &mut sheets);
+    found.unreadable.extend(unreadable(given, &sheets));
     sheets
 }
 
@@ -305,5 +362,108 @@ fn one_attempt_each(r: &Responses, given: &[Given], sheets: &mut [Sheet]) {
         if let Some(b) = kept.filter(|_| i < sheets.len()) {
             sheets[i].duplicate = Some((sheets[b].file.clone(), Same::Attempt));
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::problem::ProblemIn;
+    use crate::tutor::class::Part;
+
+    /// The variants of the draws are marked by the exam's markers: each
+    /// problem of the exam is solved and its mistakes run once, not once
+    /// more for every draw that holds it.
+    #[test]
+    fn the_draws_share_the_exams_markers() {
+        let text = "title = 't'\nask = ['view']\n\
+            [camera]\neye = [4, 4, 4]\nlook = [0, 1, 4]\nup = [0, 1, 0]\n";
+        let problem = ProblemIn::parse(text, "t.toml").expect("parses");
+        let part = |name: &str| Part {
+            name: name.into(),
+            problem: problem.clone(),
+        };
+        let variant = || vec![part("problem-01"), part("problem-02")];
+        let paper = Paper {
+            title: "t".into(),
+            variants: vec![variant(), variant()],
+            exam: true,
+        };
+        let markers = super::super::markers(&paper, Settings::default());
+        // three draws: (1, 2), (2, 1), (2, 2), 0-based
+        let draws = [vec![0, 1], vec![1, 0], vec![1, 1]];
+        let drawn = drawn_paper(&paper, &markers, &draws);
+        for (d, draw) in draws.iter().enumerate() {
+            for (p, &v) in draw.iter().enumerate() {
+                let (Ok(mine), Ok(exams)) = (&drawn.markers[d][p], &markers[v][p]) else {
+                    panic!("solves");
+                };
+                assert!(std::rc::Rc::ptr_eq(mine, exams), "draw {d}, problem {p}");
+            }
+        }
+    }
+
+    /// Each number an attempt types is parsed once, by the marking: the
+    /// blanks are taken as typed, the marking reads them, and only the
+    /// blanks of an answer it could not read are read again, to name the
+    /// bad one; an empty blank is named without reading.
+    #[test]
+    fn a_blank_is_parsed_once_and_the_unreadable_are_named() {
+        // the text's example 6.1: Pe − Pr = (4, 3, 0), |Pe − Pr| = 5, so
+        // n = (4/5, 3/5, 0); Vup × n = (0, 0, −4/5), so u = (0, 0, −1)
+        let text = "title = 't'\nask = ['view']\n\
+            [camera]\neye = [4, 4, 4]\nlook = [0, 1, 4]\nup = [0, 1, 0]\n";
+        let problem = ProblemIn::parse(text, "t.toml").expect("parses");
+        let name = "problem-01".to_string();
+        let paper = Paper {
+            title: "t".into(),
+            variants: vec![vec![Part { name, problem }]],
+            exam: true,
+        };
+        let settings = Settings::default();
+        let markers = super::super::markers(&paper, settings);
+        let keys = &shapes(&markers).expect("solves")[0][0];
+        // n right (a decimal comma), u with a blank that is no number, every
+        // other key left empty
+        let mut typed: Vec<String> = Vec::new();
+        let mut empty = Vec::new();
+        for (key, val) in keys {
+            let n = typed_leaves(key, val, 1e-3).len();
+            match key.to_string().as_str() {
+                "view.n" => typed.extend(["0,8", " 0.6", "0"].map(String::from)),
+                "view.u" => typed.extend(["0", "x", "−1"].map(String::from)),
+                k => {
+                    typed.extend(vec![String::new(); n]);
+                    empty.extend(vec![format!("problem-01.{k}"); n]);
+                }
+            }
+        }
+        let parsed = || crate::num::expr::PARSED.with(std::cell::Cell::get);
+        let before = parsed();
+        let mut blanks = Vec::new();
+        let mut answers = answers_of(keys, &typed, (0, "problem-01"), &mut blanks);
+        assert_eq!(parsed() - before, 0, "the blanks are taken as typed");
+        answers.insert(0, (Name::parse("variant"), toml::Value::Integer(1)));
+        let given = Given {
+            attempt: 0,
+            label: PathBuf::from("row 1"),
+            who: "S".into(),
+            answers: answers.clone(),
+            drawn: vec![1],
+            blanks,
+        };
+        let sheets = super::super::mark_given(
+            &paper,
+            &markers,
+            std::iter::once((given.label.clone(), given.who.clone(), answers)),
+        );
+        let before = parsed();
+        let bad = unreadable(std::slice::from_ref(&given), &sheets);
+        // the three blanks of u, read again; none of n
+        assert_eq!(parsed() - before, 3);
+        let mut want = vec![("problem-01.view.u".to_string(), "x".to_string())];
+        want.extend(empty.into_iter().map(|k| (k, String::new())));
+        let got: Vec<(String, String)> = bad.into_iter().map(|(_, k, t)| (k, t)).collect();
+        assert_eq!(got, want);
     }
 }

@@ -130,8 +130,10 @@ pub struct MistakeStats {
 pub struct WrongValue {
     /// The value as the first student wrote it.
     pub value: String,
-    /// The same, as given in the file.
-    pub given: toml::Value,
+    /// The same as marking read it ([`Marked::read`]), as a value: what
+    /// the class's other answers are set beside (None when it could not be
+    /// read, and then its text is).
+    pub read: Option<Val>,
     /// The students who gave it.
     pub students: Vec<String>,
 }

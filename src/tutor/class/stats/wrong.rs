@@ -3,7 +3,7 @@
 //! within `check`'s tolerance.
 
 use super::{answer, MistakeStats, Solved, StepRef, WrongAnswers, WrongValue};
-use crate::input::answer::read as read_answer;
+use crate::input::answer::Read;
 use crate::stages::trace::Val;
 use crate::tutor::check::tolerance;
 use crate::tutor::check::{written, Marked, Settings, Verdict};
@@ -120,6 +120,7 @@ pub(super) fn wrong_answers(
             let Some(given) = &a.given_value else {
                 continue;
             };
+            let read = a.read.as_ref().map(Read::value);
             let at = out
                 .iter()
                 .position(|w| &w.key == key && w.variant == variant);
@@ -133,12 +134,12 @@ pub(super) fn wrong_answers(
                 out.len() - 1
             });
             let w = &mut out[i];
-            let same = |v: &WrongValue| same_value(&v.given, given, a, settings.tolerance);
+            let same = |v: &WrongValue| same_value(v, (&read, given), a, settings.tolerance);
             match w.values.iter_mut().find(|v| same(v)) {
                 Some(v) => v.students.push(s.who.clone()),
                 None => w.values.push(WrongValue {
                     value: written(given),
-                    given: given.clone(),
+                    read,
                     students: vec![s.who.clone()],
                 }),
             }
@@ -153,14 +154,19 @@ pub(super) fn wrong_answers(
     out
 }
 
-/// Whether a wrong answer equals a group's value within the tolerance of
-/// `check` ([`tolerance::for_key`], componentwise), or, for text, as written.
-fn same_value(first: &toml::Value, given: &toml::Value, a: &Marked, rel: f64) -> bool {
-    let like = a.expected.as_ref();
-    let read = |v: &toml::Value| like.and_then(|e| read_answer(v, e).ok()).map(|r| r.value());
-    match (read(first), read(given)) {
-        (Some(x), Some(y)) => close(&x, &y, &a.key, rel),
-        _ => written(first)
+/// Whether a wrong answer (`read` by marking, and as given) equals a
+/// group's value within the tolerance of `check` ([`tolerance::for_key`],
+/// componentwise), or, where either could not be read, as written.
+fn same_value(
+    group: &WrongValue,
+    (read, given): (&Option<Val>, &toml::Value),
+    a: &Marked,
+    rel: f64,
+) -> bool {
+    match (&group.read, read) {
+        (Some(x), Some(y)) => close(x, y, &a.key, rel),
+        _ => group
+            .value
             .trim()
             .eq_ignore_ascii_case(written(given).trim()),
     }
@@ -172,4 +178,101 @@ fn close(x: &Val, y: &Val, key: &Key, rel: f64) -> bool {
         return x == y;
     }
     xs.iter().zip(&ys).all(|((a, t), b)| (a - b).abs() <= *t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::problem::ProblemIn;
+    use crate::tutor::check::{Answers, Name};
+    use crate::tutor::class::{mark_given, markers};
+    use std::path::PathBuf;
+
+    /// The groups of wrong answers to `key` of a class whose students
+    /// answer it `given`: each group's value as first written and its
+    /// students; and how many texts grouping them parsed.
+    fn groups(
+        p: ProblemIn,
+        key: &str,
+        given: &[(&str, toml::Value)],
+    ) -> (Vec<(String, Vec<String>)>, usize) {
+        let paper = Paper::one(p);
+        let settings = Settings::default();
+        let sheets = mark_given(
+            &paper,
+            &markers(&paper, settings),
+            given.iter().map(|(who, v)| {
+                let answers: Answers = vec![(Name::parse(key), v.clone())];
+                (PathBuf::from(who), who.to_string(), answers)
+            }),
+        );
+        let sheets: Vec<&Sheet> = sheets.iter().collect();
+        let keys = [ClassKey {
+            problem: None,
+            key: key.parse().expect("a key"),
+        }];
+        let parsed = || crate::num::expr::PARSED.with(std::cell::Cell::get);
+        let before = parsed();
+        let wrong = wrong_answers(&sheets, &keys, &paper, &settings);
+        let parses = parsed() - before;
+        let groups = (wrong[0].values.iter())
+            .map(|v| (v.value.clone(), v.students.clone()))
+            .collect();
+        (groups, parses)
+    }
+
+    fn text(s: &str) -> toml::Value {
+        toml::Value::String(s.into())
+    }
+
+    /// The wrong answers of a class are grouped by the values marking
+    /// read: no answer is read again, and equal values group whatever
+    /// their form.
+    #[test]
+    fn wrong_answers_group_what_marking_read_without_reading_again() {
+        // Pe − Pr = (4, 3, 0), |Pe − Pr| = 5: n = (4/5, 3/5, 0); the wrong
+        // (0.9, 0.6, 0) written three ways is one value, (0.5, 0.5, 0.5)
+        // another; no mistake of the catalog gives either
+        let p = "title = 't'\nask = ['view']\n\
+            [camera]\neye = [4, 4, 4]\nlook = [0, 1, 4]\nup = [0, 1, 0]\n";
+        let p = ProblemIn::parse(p, "t.toml").expect("parses");
+        let list = |xs: [&str; 3]| toml::Value::Array(xs.iter().map(|x| text(x)).collect());
+        let given = [
+            ("A", text("(0.9, 0.6, 0)")),
+            ("B", text("0,9; 0,6; 0")),
+            ("C", list(["9/10", "3/5", "0"])),
+            ("D", text("n = (0.5, 0.5, 0.5)")),
+            ("E", text("(4/5, 3/5, 0)")),
+        ];
+        let (groups, parses) = groups(p, "view.n", &given);
+        assert_eq!(parses, 0, "no answer is parsed again");
+        let abc = ["A", "B", "C"].map(String::from).to_vec();
+        assert_eq!(
+            groups,
+            [
+                ("(0.9, 0.6, 0)".to_string(), abc),
+                ("n = (0.5, 0.5, 0.5)".to_string(), vec!["D".to_string()])
+            ]
+        );
+    }
+
+    /// A projected point written (xp, yp) is the point (xp, yp, d) as
+    /// marking reads it, so it groups with the same point written whole.
+    #[test]
+    fn a_projected_point_without_its_zp_groups_with_the_whole_point() {
+        // the text's triangle: A in eye coordinates is (0, −1, −3√2) and
+        // the near plane is z = −0.1, so d = −0.1, yp = d·y/z = −√2/60; the
+        // wrong xp = 0.5 with and without zp = −0.1 is one value
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("problems")
+            .join("text-triangle.toml");
+        let p = ProblemIn::read(&path).expect("a shipped problem");
+        let given = [
+            ("A", text("(0.5, −√2/60)")),
+            ("B", text("(0.5, −√2/60, −0.1)")),
+        ];
+        let (groups, _) = groups(p, "project.points.A", &given);
+        let ab = ["A", "B"].map(String::from).to_vec();
+        assert_eq!(groups, [("(0.5, −√2/60)".to_string(), ab)]);
+    }
 }
