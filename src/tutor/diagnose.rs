@@ -1,7 +1,7 @@
 //! The catalog of known mistakes, in one place. Each mistake recomputes a
 //! problem the wrong way — by running the real stages on altered inputs
 //! (`altered`), or with one stage result altered between stages
-//! ([`run::Hooks`](crate::tutor::run::Hooks)), or with one documented change to the result tree —
+//! ([`run::Hooks`](crate::tutor::run::Hooks)), or with one documented change to the results —
 //! so that `grafika check` can say which mistake reproduces a wrong answer.
 //! No pipeline math is repeated here, and no words: a mistake is said by
 //! its [`Code`] in each language's words (`ReportWords::mistake`).
