@@ -10,6 +10,7 @@ use crate::msg::Msg;
 use crate::num::{Precision, Scalar};
 use crate::stages::trace::{Recorder, Step, Val};
 pub use crate::tutor::given::{at, camera, p3, ClipAt, Given, ShadeAt, WindowAt, P3};
+use crate::tutor::key::Field;
 pub use crate::tutor::parts::result::{One, PartResult, Results};
 
 /// What was asked.
@@ -185,10 +186,16 @@ impl Report {
     /// from an overflow or underflow of the floats): such a result is never
     /// printed as an answer.
     pub fn non_finite_result(&self) -> Option<String> {
-        self.result
-            .tree()
-            .iter()
-            .find_map(|(k, v)| first_not_finite(k, v, false))
+        let r = &self.result;
+        r.parts.iter().find_map(|p| {
+            let at = |f: Field| match r.nested {
+                true => format!("{}.{}", p.part().key(), f.key()),
+                false => f.key(),
+            };
+            (p.each().into_iter())
+                .flat_map(One::entries)
+                .find_map(|(f, v)| first_not_finite(&at(f), v, false))
+        })
     }
 
     /// The name of the first value shown in a step that is not a finite

@@ -28,8 +28,30 @@ impl Solves for ClipPart {
     type In = ClipIn;
     type Result = ClipResult;
 
+    /// `clip`: the clipping of each segment against the box.
     fn solve<T: Scalar>(s: &mut Solver<'_, '_, T>, c: &ClipIn) -> Result<()> {
-        s.clip(c)
+        let [min, max] = &c.bounds.table;
+        let b = ClipBox {
+            min: eval3(&c.bounds.field("min"), min)?,
+            max: eval3(&c.bounds.field("max"), max)?,
+        };
+        b.validate().map_err(|e| in_table(c.bounds.prefix, e))?;
+        let mut all = Vec::new();
+        let several = c.segments.len() > 1;
+        for (i, [(ff, from), (tf, to)]) in c.segments.iter().enumerate() {
+            let p0: V3<T> = point_ref(ff, from, &s.earlier.points)?;
+            let p1: V3<T> = point_ref(tf, to, &s.earlier.points)?;
+            s.out.section(Msg::SecLineClip(several.then_some(i + 1)));
+            let segment = several.then_some(i);
+            let given = Given::clip(&b, (&p0, &p1), segment);
+            let hooks = (s.hooks, segment);
+            all.push(clip_run(&b, (&p0, &p1), hooks, &mut s.out.rec));
+            s.out.parts.push(given);
+        }
+        if !all.is_empty() {
+            s.put(all);
+        }
+        Ok(())
     }
 
     /// The outcodes, each plane tried, the clipped segment, the status
@@ -53,34 +75,6 @@ impl Solves for ClipPart {
 
     fn topic(_: &Value) -> Topic {
         Topic::Clip
-    }
-}
-
-impl<T: Scalar> Solver<'_, '_, T> {
-    /// `clip`: the clipping of each segment against the box.
-    fn clip(&mut self, c: &ClipIn) -> Result<()> {
-        let [min, max] = &c.bounds.table;
-        let b = ClipBox {
-            min: eval3(&c.bounds.field("min"), min)?,
-            max: eval3(&c.bounds.field("max"), max)?,
-        };
-        b.validate().map_err(|e| in_table(c.bounds.prefix, e))?;
-        let mut all = Vec::new();
-        let several = c.segments.len() > 1;
-        for (i, [(ff, from), (tf, to)]) in c.segments.iter().enumerate() {
-            let p0: V3<T> = point_ref(ff, from, &self.earlier.points)?;
-            let p1: V3<T> = point_ref(tf, to, &self.earlier.points)?;
-            self.out.section(Msg::SecLineClip(several.then_some(i + 1)));
-            let segment = several.then_some(i);
-            let given = Given::clip(&b, (&p0, &p1), segment);
-            let hooks = (self.hooks, segment);
-            all.push(clip_run(&b, (&p0, &p1), hooks, &mut self.out.rec));
-            self.out.parts.push(given);
-        }
-        if !all.is_empty() {
-            self.put(all);
-        }
-        Ok(())
     }
 }
 

@@ -26,8 +26,33 @@ impl Solves for ProjectPart {
     type In = ProjectIn;
     type Result = ProjectResult;
 
+    /// `project`: the points projected, by a projection given or onto
+    /// the near plane (the view's eye coordinates).
     fn solve<T: Scalar>(s: &mut Solver<'_, '_, T>, how: &ProjectIn) -> Result<()> {
-        s.project(how)
+        let (proj, points, projected) = match how {
+            ProjectIn::Given(given) => {
+                let proj = projection::<T>(given)?;
+                let pts = &s.earlier.points;
+                let images = project_run(&proj, pts, s.hooks, &mut s.out.rec)?;
+                (proj, pts.clone(), images)
+            }
+            ProjectIn::Chained => {
+                let (Some((proj, projected)), Some(v)) = (s.projected()?, s.viewed()?) else {
+                    return Ok(());
+                };
+                (proj, v.eye, projected)
+            }
+        };
+        let images = points_val(&projected);
+        s.put(ProjectResult { points: images });
+        s.out.parts.push(Given::Project {
+            projection: Given::projection(&proj),
+            points: (points.iter())
+                .map(|(n, e)| (n.clone(), Val::vec3(e)))
+                .collect(),
+            chained: matches!(how, ProjectIn::Chained),
+        });
+        Ok(())
     }
 
     /// The projected points.
@@ -63,35 +88,6 @@ impl Fields for ProjectResult {
 }
 
 impl<T: Scalar> Solver<'_, '_, T> {
-    /// `project`: the points projected, by a projection given or onto
-    /// the near plane (the view's eye coordinates).
-    fn project(&mut self, how: &ProjectIn) -> Result<()> {
-        let (proj, points, projected) = match how {
-            ProjectIn::Given(given) => {
-                let proj = projection::<T>(given)?;
-                let pts = &self.earlier.points;
-                let images = project_run(&proj, pts, self.hooks, &mut self.out.rec)?;
-                (proj, pts.clone(), images)
-            }
-            ProjectIn::Chained => {
-                let (Some((proj, projected)), Some(v)) = (self.projected()?, self.viewed()?) else {
-                    return Ok(());
-                };
-                (proj, v.eye, projected)
-            }
-        };
-        let images = points_val(&projected);
-        self.put(ProjectResult { points: images });
-        self.out.parts.push(Given::Project {
-            projection: Given::projection(&proj),
-            points: (points.iter())
-                .map(|(n, e)| (n.clone(), Val::vec3(e)))
-                .collect(),
-            chained: matches!(how, ProjectIn::Chained),
-        });
-        Ok(())
-    }
-
     /// Step 3, worked once: projection of the eye points onto the near
     /// plane (d = −near unless given); `None` without eye points.
     pub(crate) fn projected(&mut self) -> Result<Option<Projected<T>>> {

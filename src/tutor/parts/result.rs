@@ -76,6 +76,14 @@ impl PartResult {
         })
     }
 
+    /// Its results, or each segment's of a clip.
+    pub fn each(&self) -> Vec<One<'_>> {
+        match self {
+            PartResult::Clip(runs) => runs.iter().map(One::Clip).collect(),
+            _ => self.one(None).into_iter().collect(),
+        }
+    }
+
     /// Field `f` of one segment (or the part), to change it.
     fn field_mut(&mut self, segment: Option<usize>, f: Field) -> Option<&mut Val> {
         match (self, segment) {

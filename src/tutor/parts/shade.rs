@@ -27,8 +27,14 @@ impl Solves for ShadePart {
     type In = ShadePartIn;
     type Result = ShadeResult;
 
-    fn solve<T: Scalar>(s: &mut Solver<'_, '_, T>, set_up: &ShadePartIn) -> Result<()> {
-        s.shade(set_up)
+    /// `shade`: the lighting at the set-up's point.
+    fn solve<T: Scalar>(s: &mut Solver<'_, '_, T>, asked: &ShadePartIn) -> Result<()> {
+        s.out.section(Msg::SecLighting);
+        let set_up = (&asked.shade.table, &asked.lights, asked.shade.prefix);
+        let (setup, r) = light_run(set_up, s.hooks, &mut s.out.rec)?;
+        s.put(r);
+        (s.out.parts).push(Given::Shade(ShadeAt::of(&setup, asked.file.clone())));
+        Ok(())
     }
 
     /// The unit L and N, cos α, R (H and N·H for Blinn), cos β, the
@@ -43,18 +49,6 @@ impl Solves for ShadePart {
 
     fn topic(_: &Value) -> Topic {
         Topic::Shade
-    }
-}
-
-impl<T: Scalar> Solver<'_, '_, T> {
-    /// `shade`: the lighting at the set-up's point.
-    fn shade(&mut self, s: &ShadePartIn) -> Result<()> {
-        self.out.section(Msg::SecLighting);
-        let set_up = (&s.shade.table, &s.lights, s.shade.prefix);
-        let (setup, r) = light_run(set_up, self.hooks, &mut self.out.rec)?;
-        self.put(r);
-        (self.out.parts).push(Given::Shade(ShadeAt::of(&setup, s.file.clone())));
-        Ok(())
     }
 }
 

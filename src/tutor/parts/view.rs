@@ -34,11 +34,27 @@ impl Solves for ViewPart {
     type In = Extent;
     type Result = ViewResult;
 
+    /// `basis`: the camera basis u, v, n; `view`: the basis, the view
+    /// matrix and the eye coordinates.
     fn solve<T: Scalar>(s: &mut Solver<'_, '_, T>, asked: &Extent) -> Result<()> {
         match asked {
-            Extent::Basis => s.basis(),
-            Extent::Whole => s.view(),
+            Extent::Basis => {
+                if let Some((cam, b)) = s.based()? {
+                    s.put(basis_result(&b));
+                    s.out.parts.push(Given::Basis(camera(&cam)));
+                }
+            }
+            Extent::Whole => {
+                let Some(v) = s.viewed()? else {
+                    return Ok(());
+                };
+                s.put(view_result(&v.basis, &v.matrix, &v.eye));
+                let world = (s.earlier.points.iter()).map(|(n, q)| (n.clone(), p3(q)));
+                let given = Given::View(camera(&v.cam), world.collect());
+                s.out.parts.push(given);
+            }
         }
+        Ok(())
     }
 
     /// n, u, v, the view matrix, the eye coordinates.
@@ -64,28 +80,6 @@ impl Solves for ViewPart {
 }
 
 impl<T: Scalar> Solver<'_, '_, T> {
-    /// `basis`: the camera basis u, v, n.
-    fn basis(&mut self) -> Result<()> {
-        if let Some((cam, b)) = self.based()? {
-            self.put(basis_result(&b));
-            self.out.parts.push(Given::Basis(camera(&cam)));
-        }
-        Ok(())
-    }
-
-    /// `view`: the basis, the view matrix and the eye coordinates.
-    fn view(&mut self) -> Result<()> {
-        let Some(v) = self.viewed()? else {
-            return Ok(());
-        };
-        let r = view_result(&v.basis, &v.matrix, &v.eye);
-        self.put(r);
-        let world = (self.earlier.points.iter()).map(|(n, q)| (n.clone(), p3(q)));
-        let given = Given::View(camera(&v.cam), world.collect());
-        self.out.parts.push(given);
-        Ok(())
-    }
-
     /// Step 1 and the start of step 2, worked once: the camera and its
     /// basis (a problem file's modeling section says the points are in
     /// world coordinates already); `None` without a camera (refused when

@@ -24,8 +24,37 @@ impl Solves for ViewportPart {
     type In = ();
     type Result = ViewportResult;
 
+    /// `viewport`: the pixels of the points on the window (given, or the
+    /// projected points); a command given no points writes no pixels.
     fn solve<T: Scalar>(s: &mut Solver<'_, '_, T>, _: &()) -> Result<()> {
-        s.viewport()
+        let per = s.p.shared.perspective.as_ref();
+        let vp = per.and_then(|x| x.table.viewport.as_ref().map(|v| (x, v)));
+        let (Some(w), Some((per, vp))) = (s.windowed()?, vp) else {
+            return Ok(());
+        };
+        let shown = match w.on_window {
+            Some(given) => given,
+            None => s.projected_xy()?,
+        };
+        let field = per.field("viewport");
+        let (vw, vh): (T, T) = (eval(&field, &vp[0])?, eval(&field, &vp[1])?);
+        window::validate_viewport(&vw, &vh).map_err(|e| e.in_field(field))?;
+        s.out.section(Msg::SecViewport);
+        let Out { rec, parts, .. } = &mut s.out;
+        let windows = parts.iter_mut().filter_map(|g| match g {
+            Given::Window(w) => Some(w),
+            _ => None,
+        });
+        for given in windows {
+            given.viewport = Some((at(&vw), at(&vh)));
+        }
+        let on_window = shown.iter().map(|(n, (x, y))| (n, (x, y)));
+        let px = pixels(&w.w, (&vw, &vh), on_window, rec);
+        if !(px.is_empty() && s.p.shared.on_window.is_some()) {
+            let pixels = Val::Map(px);
+            s.put(ViewportResult { pixels });
+        }
+        Ok(())
     }
 
     /// The pixels.
@@ -62,39 +91,6 @@ impl Fields for ViewportResult {
 }
 
 impl<T: Scalar> Solver<'_, '_, T> {
-    /// `viewport`: the pixels of the points on the window (given, or the
-    /// projected points); a command given no points writes no pixels.
-    fn viewport(&mut self) -> Result<()> {
-        let per = self.p.shared.perspective.as_ref();
-        let vp = per.and_then(|x| x.table.viewport.as_ref().map(|v| (x, v)));
-        let (Some(w), Some((per, vp))) = (self.windowed()?, vp) else {
-            return Ok(());
-        };
-        let shown = match w.on_window {
-            Some(given) => given,
-            None => self.projected_xy()?,
-        };
-        let field = per.field("viewport");
-        let (vw, vh): (T, T) = (eval(&field, &vp[0])?, eval(&field, &vp[1])?);
-        window::validate_viewport(&vw, &vh).map_err(|e| e.in_field(field))?;
-        self.out.section(Msg::SecViewport);
-        let Out { rec, parts, .. } = &mut self.out;
-        let windows = parts.iter_mut().filter_map(|g| match g {
-            Given::Window(w) => Some(w),
-            _ => None,
-        });
-        for given in windows {
-            given.viewport = Some((at(&vw), at(&vh)));
-        }
-        let on_window = shown.iter().map(|(n, (x, y))| (n, (x, y)));
-        let px = pixels(&w.w, (&vw, &vh), on_window, rec);
-        if !(px.is_empty() && self.p.shared.on_window.is_some()) {
-            let pixels = Val::Map(px);
-            self.put(ViewportResult { pixels });
-        }
-        Ok(())
-    }
-
     /// The projected points as points (x, y) on the window.
     fn projected_xy(&mut self) -> Result<Vec<(String, (T, T))>> {
         let projected = self.projected()?.map(|(_, q)| q).unwrap_or_default();

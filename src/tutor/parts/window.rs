@@ -29,8 +29,13 @@ impl Solves for WindowPart {
     type In = ();
     type Result = WindowResult;
 
+    /// `window`: the window's edges (and the far one's).
     fn solve<T: Scalar>(s: &mut Solver<'_, '_, T>, _: &()) -> Result<()> {
-        s.window()
+        if let Some(w) = s.windowed()? {
+            s.put(w.result);
+            s.out.parts.push(Given::Window(w.given));
+        }
+        Ok(())
     }
 
     /// The window's top, bottom, left, right, height, width (not the far
@@ -49,15 +54,6 @@ impl Solves for WindowPart {
 }
 
 impl<T: Scalar> Solver<'_, '_, T> {
-    /// `window`: the window's edges (and the far one's).
-    fn window(&mut self) -> Result<()> {
-        if let Some(w) = self.windowed()? {
-            self.put(w.result);
-            self.out.parts.push(Given::Window(w.given));
-        }
-        Ok(())
-    }
-
     /// Step 4, worked once: the window on the near plane (and the far one)
     /// and which projected points it contains (when a part asked projects
     /// them); `None` when the perspective sets up no window (refused when
