@@ -219,14 +219,14 @@ pub enum Field {
 }
 
 impl Part {
-    /// Its key in a result tree (`view`, …).
+    /// Its key in the results (`view`, …).
     pub fn key(self) -> String {
         Node::Part(self).to_string()
     }
 }
 
 impl Field {
-    /// Its key in a result tree (`u`, `far_top`, `cos_alpha`, …).
+    /// Its key in the results (`u`, `far_top`, `cos_alpha`, …).
     pub fn key(self) -> String {
         Node::Field(self).to_string()
     }
@@ -296,7 +296,7 @@ const FACTORS: [Factor; 4] = [
     Factor::Spot,
 ];
 
-/// One name of a result tree, read with the name it is under: a part, a
+/// One name of the results (and of their JSON), read with the name it is under: a part, a
 /// field of a part, a point's own name (under `points`, `pixels`), a plane
 /// (under `intersections`), what is asked of an intersection (under a
 /// plane), a light's factor (under `lights`).
@@ -407,14 +407,14 @@ impl From<Factor> for Node {
 }
 
 impl Cut {
-    /// Its key in a result tree (`t`, …).
+    /// Its key in the results (`t`, …).
     pub fn key(self) -> String {
         Node::Cut(self).to_string()
     }
 }
 
 impl Factor {
-    /// Its key in a result tree (`in_range`, …).
+    /// Its key in the results (`in_range`, …).
     pub fn key(self) -> String {
         Node::Factor(self).to_string()
     }
@@ -467,7 +467,7 @@ pub enum Value {
 
 /// An answer's key: its part (none for a calculator command's own keys),
 /// the segment of a clip with several (the index as written: `clip.0` in
-/// the result tree, `clip[1]` numbered for people), and the value.
+/// the results, `clip[1]` numbered for people), and the value.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Key {
     /// `view`, …; `None` for a calculator command's key (`top`).
@@ -511,7 +511,7 @@ pub fn prefix(part: Part, segment: Option<usize>) -> String {
 }
 
 impl fmt::Display for Key {
-    /// The key as the result tree spells it: `clip.2.intersections.left.t`,
+    /// The key as the results spell it: `clip.2.intersections.left.t`,
     /// `shade.lights.0.attenuation`, `clip.1` (a whole part),
     /// `view.points.A.1` (a component; a whole part without its part is no
     /// key, and spelled empty).

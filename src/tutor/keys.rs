@@ -1,10 +1,10 @@
-//! The answer keys of a result tree in the order of the text's solution
+//! The answer keys of the results in the order of the text's solution
 //! (each part's order is its module's, [`crate::tutor::parts`]).
 
 use crate::tutor::key::Key;
 use crate::tutor::parts::result::{One, PartResult, Results};
 
-/// The answer keys of a result tree in the order of the text's solution:
+/// The answer keys of the results in the order of the text's solution:
 /// n, u, v, the view matrix, the eye coordinates; the projected points;
 /// the window's top, bottom, left, right, height, width (not the far
 /// window's); the pixels; per segment the outcodes, each plane tried (its

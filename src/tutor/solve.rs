@@ -174,7 +174,7 @@ mod tests {
     }
 
     /// The answer keys of `part` that practice asks and check follows
-    /// through, in a result tree.
+    /// through, in the results.
     fn keys_of(part: Part, result: &Results) -> Vec<Key> {
         let of_part = |k: &Key| k.part == Some(part);
         ordered_keys(result).into_iter().filter(of_part).collect()

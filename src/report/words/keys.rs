@@ -64,7 +64,7 @@ pub fn name_of(words: &dyn KeyWords, key: &str) -> String {
     }
 }
 
-/// A name of a result tree under `under` (`None`: at the top) and its
+/// A name of the results under `under` (`None`: at the top) and its
 /// words ([`KeyWords::node`]); a name no key has is shown as it is
 /// written, with no node.
 pub fn node_of(words: &dyn KeyWords, name: &str, under: Option<&Node>) -> (Option<Node>, String) {
