@@ -225,7 +225,7 @@ mod tests {
         let a = leaf_labels(&key("shade.cos_alpha"), &Val::List(vec![]), Lang::En);
         assert!(a.is_empty());
         let clipped = leaf_labels(&key("clip.1.segment"), &v3, Lang::En);
-        assert_eq!(clipped[0], "segment 1: clipped segment, component x");
+        assert_eq!(clipped[0], "segment 2: clipped segment, component x");
         let p = leaf_labels(&key("view.points.A"), &v3, Lang::En);
         assert_eq!(p[0], "A', component x");
         let px = leaf_labels(&key("viewport.pixels.A"), &v3, Lang::Id);

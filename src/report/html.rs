@@ -187,10 +187,11 @@ pub fn named_answers(st: &Style, rows: &[(String, String, Val)]) -> String {
 }
 
 /// `(key, value)` pairs with maps opened: `points` → `points.A`, …, and
-/// lists of maps numbered from 1: `clip` → `clip[1].status`, …; an empty
-/// map is left out.
+/// lists of maps by their index: `clip` → `clip.0.status`, …, the key an
+/// answer file writes (the words name the segment from 1); an empty map is
+/// left out.
 pub fn flatten(items: &[(String, Val)], out: &mut Vec<(String, Val)>) {
-    let numbered = |at: &str, i: usize| format!("{at}[{}]", i + 1);
+    let numbered = |at: &str, i: usize| format!("{at}.{i}");
     for (k, v) in items {
         v.walk(k, &numbered, &mut |at, x| match x {
             Val::Map(_) => true,
@@ -209,4 +210,39 @@ pub fn figure(svg: &str, caption: &str) -> String {
         "<figure>\n{svg}<figcaption>{}</figcaption>\n</figure>\n",
         xml_escape(caption)
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::problem::ProblemIn;
+
+    /// Each row of the answer table is titled with the key an answer file
+    /// writes for its value: read back, the key finds that very value.
+    /// A clip's several segments and a file's several lights count from 0
+    /// in a key, as in JSON (`clip.0.status` is the first segment, which
+    /// the words call segment 1); a title numbered from 1 (`clip[1]`)
+    /// named the next segment's value, and a student who copied it was
+    /// marked against the wrong segment.
+    #[test]
+    fn every_rows_title_is_the_key_of_its_value() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("problems");
+        let mut rows_seen = 0;
+        for name in [
+            "clip-cases.toml",
+            "shade-two-lights.toml",
+            "text-camera.toml",
+        ] {
+            let p = ProblemIn::read(&root.join(name)).expect("a shipped problem");
+            let r = crate::tutor::solve::solve::<crate::num::Real>(&p).expect("it solves");
+            let mut rows = Vec::new();
+            flatten(&r.answer(), &mut rows);
+            for (k, v) in rows {
+                let found = r.result.lookup(&k);
+                assert_eq!(found.as_deref(), Some(&v), "{k} in {name}");
+                rows_seen += 1;
+            }
+        }
+        assert!(rows_seen > 60, "{rows_seen}");
+    }
 }

@@ -113,8 +113,9 @@ fn comparison_text(c: &Comparison, lang: Lang) -> String {
 }
 
 /// Writes the results: a problem file's part by part (a clip's several
-/// segments numbered, `clip[1]:`, …), each field by its typed name; a
-/// command's fields unnested.
+/// segments numbered from 1 as the solution numbers them, `clip 1:`, …;
+/// not `clip[1]`, which an answer file reads as the second segment), each
+/// field by its typed name; a command's fields unnested.
 fn push_results(out: &mut String, style: &Style, results: &Results) {
     let words = words::of(style.lang);
     for p in &results.parts {
@@ -126,7 +127,7 @@ fn push_results(out: &mut String, style: &Style, results: &Results) {
             }
             (true, PartResult::Clip(runs)) if runs.len() != 1 => {
                 for (i, r) in runs.iter().enumerate() {
-                    let numbered = format!("{}[{}]", words.node(&part), i + 1);
+                    let numbered = format!("{} {}", words.node(&part), i + 1);
                     push_part(out, style, &numbered, &One::Clip(r).entries());
                 }
             }
@@ -159,8 +160,8 @@ fn push_fields(out: &mut String, style: &Style, indent: &str, fields: &[(Field, 
 }
 
 /// Writes one answer, opening maps (e.g. points) into one line per entry
-/// and a list of maps (the segments of a clip) into one numbered block per
-/// map, `clip[1]:`, `clip[2]:`, …; an empty map is `none`. `k` is the
+/// and a list of maps (a file's lights) into one block per map numbered
+/// from 1, `lights 1:`, `lights 2:`, …; an empty map is `none`. `k` is the
 /// answer tree's name (none for a render's summary) and the words it is
 /// shown with ([`words::keys::KeyWords::node`]).
 fn push_answer(out: &mut String, style: &Style, indent: &str, k: (Option<&Node>, &str), v: &Val) {
@@ -172,7 +173,7 @@ fn push_answer(out: &mut String, style: &Style, indent: &str, k: (Option<&Node>,
         }
         Val::List(items) if is_list_of_maps(items) => {
             for (i, item) in items.iter().enumerate() {
-                let numbered = format!("{shown}[{}]", i + 1);
+                let numbered = format!("{shown} {}", i + 1);
                 push_answer(out, style, indent, (node, &numbered), item);
             }
         }

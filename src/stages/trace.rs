@@ -210,7 +210,7 @@ impl Val {
     /// `at`: `visit(key, value)` for each, and into a map (its entries at
     /// `key.name`) or a list (its items at `index(key, i)`, i from 0) when
     /// `visit` opens it (returns true). The one walk of a value's places:
-    /// a report's rows (`clip[1].status`) and every answer key
+    /// a report's rows (`clip.0.status`) and every answer key
     /// (`view.points.A.1`) alike.
     pub fn walk<'a>(
         &'a self,

@@ -78,10 +78,12 @@ pub fn node_of(words: &dyn KeyWords, name: &str, under: Option<&Node>) -> (Optio
 }
 
 /// `name` prefixed by its segment (`segmen 2: status`) when the clip has
-/// several; `segment` is the language's word.
+/// several; `segment` is the language's word. A key's index counts from 0
+/// as JSON's list does (`clip.1` is the second segment); people count from
+/// 1, as the worked solution's "segment 2" does.
 pub fn in_segment(segment: &str, k: &Key, name: String) -> String {
     match k.segment {
-        Some(i) => format!("{segment} {i}: {name}"),
+        Some(i) => format!("{segment} {}: {name}", i + 1),
         None => name,
     }
 }

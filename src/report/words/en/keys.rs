@@ -58,7 +58,7 @@ impl KeyWords for En {
                 };
                 format!("{what} ({})", self.plane(*p))
             }
-            Value::Light(i) => return format!("light {i}"),
+            Value::Light(i) => return format!("light {}", i + 1),
             Value::Factor(i, f) => {
                 let said = match f {
                     Factor::InRange => "in range",
@@ -66,7 +66,7 @@ impl KeyWords for En {
                     Factor::Attenuation => "Att",
                     Factor::Spot => "Spot",
                 };
-                return format!("{said} (light {i})");
+                return format!("{said} (light {})", i + 1);
             }
         };
         in_segment("segment", k, name)
@@ -138,8 +138,8 @@ impl KeyWords for En {
             Value::Cut(p, Cut::Kept) => {
                 format!("whether the intersection with the plane {} is kept", pl(p))
             }
-            Value::Light(i) => format!("the factors of light {i}"),
-            Value::Factor(i, f) => format!("{} of light {i}", factor(*f)),
+            Value::Light(i) => format!("the factors of light {}", i + 1),
+            Value::Factor(i, f) => format!("{} of light {}", factor(*f), i + 1),
         }
     }
 }
@@ -193,12 +193,12 @@ mod tests {
         assert_eq!(en("window.far_top"), "top (far plane)");
         assert_eq!(en("shade.cos_alpha"), "cos α");
         assert_eq!(en("shade.N_dot_H"), "N·H");
-        assert_eq!(en("shade.lights[1].in_range"), "in range (light 1)");
+        assert_eq!(en("shade.lights[0].in_range"), "in range (light 1)");
         assert_eq!(
-            en("clip[2].intersections.top.point"),
+            en("clip[1].intersections.top.point"),
             "segment 2: P(t) (top)"
         );
-        assert_eq!(en("shade.lights[1].attenuation"), "Att (light 1)");
+        assert_eq!(en("shade.lights[0].attenuation"), "Att (light 1)");
     }
 
     /// A quiz labels its blanks with no JSON key: the steps' names, and
@@ -212,7 +212,7 @@ mod tests {
         assert_eq!(en("viewport.pixels.A"), "A pixel");
         assert_eq!(en("window.top"), "top");
         assert_eq!(en("clip.code0"), "outcode of P0");
-        assert_eq!(en("clip[2].code1"), "segment 2: outcode of P1");
+        assert_eq!(en("clip[1].code1"), "segment 2: outcode of P1");
         assert_eq!(en("clip.segment"), "clipped segment");
         assert_eq!(en("shade.cos_alpha"), "cos α");
         assert_eq!(en("shade.N_dot_H"), "N·H");

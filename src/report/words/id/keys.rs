@@ -108,8 +108,10 @@ impl KeyWords for Id {
                 };
                 format!("{what} ({})", self.plane(*p))
             }
-            Value::Light(i) => return format!("cahaya {i}"),
-            Value::Factor(i, f) => return format!("{} (cahaya {i})", self.node(&Node::Factor(*f))),
+            Value::Light(i) => return format!("cahaya {}", i + 1),
+            Value::Factor(i, f) => {
+                return format!("{} (cahaya {})", self.node(&Node::Factor(*f)), i + 1)
+            }
         };
         in_segment("segmen", k, name)
     }
@@ -191,8 +193,8 @@ impl KeyWords for Id {
             Value::Cut(p, Cut::Kept) => {
                 format!("apakah titik potong dengan bidang {} dipertahankan", pl(p))
             }
-            Value::Light(i) => format!("faktor sumber cahaya {i}"),
-            Value::Factor(i, f) => format!("{} sumber cahaya {i}", factor(*f)),
+            Value::Light(i) => format!("faktor sumber cahaya {}", i + 1),
+            Value::Factor(i, f) => format!("{} sumber cahaya {}", factor(*f), i + 1),
         }
     }
 }
@@ -274,13 +276,13 @@ mod tests {
         assert_eq!(id("window.width"), "lebar");
         assert_eq!(id("clip.intersections.left.point"), "P(t) (kiri)");
         assert_eq!(
-            id("clip[2].intersections.top.kept"),
+            id("clip[1].intersections.top.kept"),
             "segmen 2: dipertahankan (atas)"
         );
-        assert_eq!(id("clip.2.status"), "segmen 2: status");
+        assert_eq!(id("clip.1.status"), "segmen 2: status");
         assert_eq!(id("shade.color"), "warna");
         assert_eq!(id("shade.cos_alpha"), "cos α");
-        assert_eq!(id("shade.lights[1].attenuation"), "Att (cahaya 1)");
+        assert_eq!(id("shade.lights[0].attenuation"), "Att (cahaya 1)");
     }
 
     /// An Indonesian quiz labels its blanks in the text's words: no JSON
@@ -296,7 +298,7 @@ mod tests {
         assert_eq!(id("window.height"), "tinggi");
         assert_eq!(id("window.far_width"), "lebar pada far plane");
         assert_eq!(id("clip.code0"), "region code P0");
-        assert_eq!(id("clip[2].status"), "segmen 2: status");
+        assert_eq!(id("clip[1].status"), "segmen 2: status");
         assert_eq!(id("clip.segment"), "segmen garis hasil clipping");
         assert_eq!(id("shade.cos_alpha"), "cos α");
         assert_eq!(id("shade.diffuse"), "komponen diffuse");
