@@ -2,7 +2,7 @@
 //! (each part's order is its module's, [`crate::tutor::parts`]).
 
 use crate::tutor::key::Key;
-use crate::tutor::parts::result::{One, PartResult, Results};
+use crate::tutor::parts::result::Results;
 
 /// The answer keys of the results in the order of the text's solution:
 /// n, u, v, the view matrix, the eye coordinates; the projected points;
@@ -16,14 +16,8 @@ use crate::tutor::parts::result::{One, PartResult, Results};
 pub fn ordered_keys(result: &Results) -> Vec<Key> {
     let mut keys: Vec<Key> = Vec::new();
     for r in result.parts.iter().filter(|_| result.nested) {
-        match r {
-            PartResult::Clip(runs) if runs.len() > 1 => {
-                for (i, one) in runs.iter().enumerate() {
-                    let of = |k: Key| k.of_segment(Some(i));
-                    keys.extend(One::Clip(one).keys().into_iter().map(of));
-                }
-            }
-            _ => keys.extend(r.one(None).map(One::keys).unwrap_or_default()),
+        for (segment, one) in r.segments() {
+            keys.extend(one.keys().into_iter().map(|k| k.of_segment(segment)));
         }
     }
     keys
@@ -34,6 +28,7 @@ mod tests {
     use super::*;
     use crate::stages::trace::Val;
     use crate::tutor::parts::clip::ClipResult;
+    use crate::tutor::parts::result::PartResult;
     use crate::tutor::parts::shade::ShadeResult;
     use crate::tutor::parts::view::ViewResult;
     use crate::tutor::parts::window::{Edges, WindowResult};

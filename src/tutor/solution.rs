@@ -192,8 +192,8 @@ impl Report {
                 true => format!("{}.{}", p.part().key(), f.key()),
                 false => f.key(),
             };
-            (p.each().into_iter())
-                .flat_map(One::entries)
+            (p.segments().into_iter())
+                .flat_map(|(_, o)| o.entries())
                 .find_map(|(f, v)| first_not_finite(&at(f), v, false))
         })
     }

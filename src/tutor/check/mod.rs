@@ -48,7 +48,7 @@ use crate::input::problem::ProblemIn;
 use crate::stages::trace::Val;
 use crate::tutor::diagnose::Code;
 use crate::tutor::key::{Field, Key, Part, Shading, Value};
-use crate::tutor::solution::{One, PartResult};
+use crate::tutor::solution::One;
 
 pub use crate::tutor::solution::Results;
 
@@ -203,29 +203,20 @@ pub fn default_keys(result: &Results) -> Vec<Key> {
     let mut keys = Vec::new();
     for p in &result.parts {
         let part = p.part();
-        match p {
-            _ if !result.nested => {
-                let fields = p.one(None).map(One::entries).unwrap_or_default();
-                keys.extend(fields.into_iter().map(|(f, _)| Key {
-                    part: None,
-                    segment: None,
-                    value: Value::Field(f),
-                    component: Vec::new(),
-                }));
-            }
-            PartResult::Clip(runs) if runs.len() > 1 => {
-                for (i, r) in runs.iter().enumerate() {
-                    keys.extend(
-                        asked(One::Clip(r)).into_iter().map(|(f, _)| {
-                            Key::new(Part::Clip, Value::Field(f)).of_segment(Some(i))
-                        }),
-                    );
-                }
-            }
-            _ => {
-                for (f, x) in p.one(None).map(asked).unwrap_or_default() {
-                    keys.extend(field_keys(part, f, x));
-                }
+        if !result.nested {
+            let fields = p.one(None).map(One::entries).unwrap_or_default();
+            keys.extend(fields.into_iter().map(|(f, _)| Key {
+                part: None,
+                segment: None,
+                value: Value::Field(f),
+                component: Vec::new(),
+            }));
+            continue;
+        }
+        for (segment, one) in p.segments() {
+            for (f, x) in asked(one) {
+                let of = |k: Key| k.of_segment(segment);
+                keys.extend(field_keys(part, f, x).into_iter().map(of));
             }
         }
     }
@@ -241,14 +232,10 @@ fn asked(o: One<'_>) -> Vec<(Field, &Val)> {
 /// The keys of field `f` of a part: one per point or pixel of a map of
 /// them, else the field's.
 fn field_keys(part: Part, f: Field, x: &Val) -> Vec<Key> {
-    let names = |inner: &[(String, Val)]| inner.iter().map(|(n, _)| n.clone()).collect::<Vec<_>>();
+    let names = || crate::tutor::parts::names(Some(x));
     match (f, x) {
-        (Field::Points, Val::Map(inner)) => (names(inner).into_iter())
-            .map(|n| Key::new(part, Value::Point(n)))
-            .collect(),
-        (Field::Pixels, Val::Map(inner)) => (names(inner).into_iter())
-            .map(|n| Key::new(part, Value::Pixel(n)))
-            .collect(),
+        (Field::Points, Val::Map(_)) => names().map(|n| Key::new(part, Value::Point(n))).collect(),
+        (Field::Pixels, Val::Map(_)) => names().map(|n| Key::new(part, Value::Pixel(n))).collect(),
         _ => vec![Key::new(part, Value::Field(f))],
     }
 }

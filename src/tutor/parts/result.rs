@@ -65,9 +65,8 @@ impl PartResult {
     /// one segment of a clip with one); `None` for no such segment.
     pub fn one(&self, segment: Option<usize>) -> Option<One<'_>> {
         Some(match (self, segment) {
-            (PartResult::Clip(runs), None) if runs.len() == 1 => One::Clip(&runs[0]),
-            (PartResult::Clip(runs), Some(i)) if runs.len() > 1 => One::Clip(runs.get(i)?),
-            (PartResult::Clip(_), _) | (_, Some(_)) => return None,
+            (PartResult::Clip(runs), s) => One::Clip(&runs[segment_index(runs.len(), s)?]),
+            (_, Some(_)) => return None,
             (PartResult::View(r), None) => One::View(r),
             (PartResult::Project(r), None) => One::Project(r),
             (PartResult::Window(r), None) => One::Window(r),
@@ -76,11 +75,14 @@ impl PartResult {
         })
     }
 
-    /// Its results, or each segment's of a clip.
-    pub fn each(&self) -> Vec<One<'_>> {
+    /// Its results, or each segment's of a clip, with the segment's
+    /// index in its keys (none for a part, or a clip's one segment).
+    pub fn segments(&self) -> Vec<(Option<usize>, One<'_>)> {
         match self {
-            PartResult::Clip(runs) => runs.iter().map(One::Clip).collect(),
-            _ => self.one(None).into_iter().collect(),
+            PartResult::Clip(runs) if runs.len() > 1 => (runs.iter().enumerate())
+                .map(|(i, r)| (Some(i), One::Clip(r)))
+                .collect(),
+            _ => self.one(None).map(|o| (None, o)).into_iter().collect(),
         }
     }
 
@@ -88,12 +90,8 @@ impl PartResult {
     fn field_mut(&mut self, segment: Option<usize>, f: Field) -> Option<&mut Val> {
         match (self, segment) {
             (PartResult::Clip(runs), s) => {
-                let i = match (runs.len(), s) {
-                    (1, None) => 0,
-                    (n, Some(i)) if n > 1 => i,
-                    _ => return None,
-                };
-                runs.get_mut(i)?.field_mut(f)
+                let i = segment_index(runs.len(), s)?;
+                runs[i].field_mut(f)
             }
             (_, Some(_)) => None,
             (PartResult::View(r), None) => r.field_mut(f),
@@ -305,6 +303,17 @@ impl Results {
             Val::List(items) => items.get_mut(*i),
             _ => None,
         })
+    }
+}
+
+/// Which of a clip's `n` segments a key's `segment` names: the one of a
+/// clip with one (a key with no segment), the i-th of several (a key with
+/// segment i); none otherwise.
+fn segment_index(n: usize, segment: Option<usize>) -> Option<usize> {
+    match (n, segment) {
+        (1, None) => Some(0),
+        (n, Some(i)) if n > 1 && i < n => Some(i),
+        _ => None,
     }
 }
 
